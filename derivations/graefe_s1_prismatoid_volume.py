@@ -1,0 +1,181 @@
+"""Graefe 1866, §1: the tetrahedron lemma and the volume of the prismatoid.
+
+The prismatoid (two parallel convex bases ``G``, ``g`` at distance ``h``,
+mid-section ``D``) is cut, as Graefe does, into a pyramid over ``g``, one
+pyramid over each triangle of ``G`` and one tetrahedron for each side of
+``g``; the tetrahedra are measured with the lemma
+``V = (1/3) (2 P) d`` (``P`` the mid-section parallelogram, ``d`` the
+distance of the two skew edges).  Result: ``I = h/3 ((G + g)/2 + 2 D)``.
+"""
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, HullWitness
+from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
+
+G, g, D, h, z = sp.symbols("G g D h z", positive=True)
+P, V1, V2, V3, I = sp.symbols("P V_1 V_2 V_3 I", positive=True)
+# the tetrahedron of the lemma: vertices A, B, C, D_ (D is the mid-section)
+XA, XB, XC, XD = (sp.Matrix(sp.symbols(f"x_{n} y_{n} z_{n}")) for n in "ABCD")
+Vt, Ve, Pt, dist, Tri = sp.symbols("V_ABCD V_ABCE P_abcd d T_ABE", positive=True)
+
+coords = [c for v in (XA, XB, XC, XD) for c in v]
+DERIVATION = d = Derivation(
+    id="graefe-s1-prismatoid-volume",
+    source="graefe",
+    title="The tetrahedron lemma and the volume of the prismatoid",
+    locator="§1",
+    summary="Volume of a tetrahedron from its mid-section parallelogram; the prismatoid "
+            "cut into pyramids and tetrahedra; I = h/3 ((G+g)/2 + 2D).",
+    domain={**{s: (1, 20) for s in (G, g, D, h)}, **{c: (-6, 6) for c in coords}, P: (1, 20)},
+    constraints=(D > G / 4 + g / 4,),
+    assumptions=("G, g, D, h > 0",
+                 "the mid-section is larger than the halved bases together (D > G/4 + g/4), "
+                 "as it is for every convex prismatoid",
+                 "the tetrahedron ABCD is non-degenerate"),
+)
+
+# ---- the lemma (its statement is lost; its proof survives) -------------------
+n = (XB - XA).cross(XD - XC)
+XE = XB + (XD - XC)                     # BE parallel to CD
+mid = {"a": (XA + XC) / 2, "b": (XB + XC) / 2, "c": (XB + XD) / 2, "d": (XA + XD) / 2}
+
+d.step("volume-ABCD", sp.Eq(Vt, sp.Abs((XB - XA).dot((XC - XA).cross(XD - XA))) / 6), "definition",
+       note="volume of a tetrahedron: one sixth of the absolute triple product", result=Vt)
+d.step("mid-section-is-parallelogram", (mid["b"] - mid["a"], mid["c"] - mid["d"], (XB - XA) / 2), "geometry",
+       note="the section through the midpoints of AC, BC, BD, AD has opposite sides equal to AB/2")
+d.step("mid-section-area", sp.Eq(Pt, sp.sqrt(((mid["b"] - mid["a"]).cross(mid["d"] - mid["a"])).dot(
+    (mid["b"] - mid["a"]).cross(mid["d"] - mid["a"])))), "definition",
+       note="area of the parallelogram abcd", result=Pt)
+d.step("mid-section-area-in-edges", (Pt, sp.sqrt(n.dot(n)) / 4), "geometry", uses=("mid-section-area",))
+d.step("edge-distance", sp.Eq(dist, sp.Abs((XC - XA).dot(n)) / sp.sqrt(n.dot(n))), "definition",
+       note="shortest distance of the lines AB and CD: projection of AC on their common normal",
+       result=dist)
+d.step("triangle-ABE", sp.Eq(Tri, sp.sqrt(((XB - XA).cross(XE - XA)).dot((XB - XA).cross(XE - XA))) / 2),
+       "definition", note="E = B + (D - C): BE drawn parallel to CD", result=Tri)
+d.step("parallelogram-half-triangle", (Pt, Tri / 2), "geometry", uses=("mid-section-area", "triangle-ABE"))
+d.step("volume-ABCE", sp.Eq(Ve, sp.Abs((XB - XA).dot((XC - XA).cross(XE - XA))) / 6), "definition", result=Ve)
+d.step("equal-tetrahedra", (Vt, Ve), "geometry", uses=("volume-ABCD", "volume-ABCE"),
+       note="D and E lie on a parallel to the base ABC")
+d.step("lemma", (Vt, sp.Rational(1, 3) * (2 * Pt) * dist), "algebra",
+       uses=("equal-tetrahedra", "parallelogram-half-triangle", "edge-distance"))
+
+# ---- the decomposition --------------------------------------------------------
+d.step("pyramid-over-g", sp.Eq(V1, sp.Integral(g * (z / h) ** 2, (z, 0, h))), "definition",
+       note="apex O in the base plane, sections similar to g with ratio z/h", result=V1)
+d.step("pyramid-over-g-value", (V1, g * h / 3), "integration", uses=("pyramid-over-g",))
+d.step("pyramids-over-G", sp.Eq(V2, sp.Integral(G * (1 - z / h) ** 2, (z, 0, h))), "definition",
+       note="the triangles of G with apices on g: together base G, height h", result=V2)
+d.step("pyramids-over-G-value", (V2, G * h / 3), "integration", uses=("pyramids-over-G",))
+d.step("mid-sections", (g * (sp.Rational(1, 2)) ** 2, g / 4), "algebra",
+       note="the mid-section of the pyramid over g is g scaled by 1/2; likewise G/4")
+d.step("parallelograms", sp.Eq(P, D - g / 4 - G / 4), "definition", result=P,
+       note="the mid-section D consists of the polygon klmn (g/4), the triangles (G/4) and the "
+            "parallelograms of the tetrahedra: their sum P is what remains")
+d.step("tetrahedra", sp.Eq(V3, sp.Rational(1, 3) * 2 * P * h), "lemma", uses=("lemma", "parallelograms"),
+       note="every tetrahedron has one edge in G and one in g, at distance h", result=V3)
+d.step("tetrahedra-in-D", (V3, h / 3 * (2 * D - (G + g) / 2)), "substitution", uses=("tetrahedra",))
+d.step("volume", sp.Eq(I, V1 + V2 + V3), "definition", uses=("pyramid-over-g", "pyramids-over-G", "tetrahedra"),
+       note="the prismatoid is the union of the three groups of bodies",
+       result=I)
+d.step("volume-collected", (I, h / 3 * (g + G - G / 2 - g / 2 + 2 * D), h / 3 * ((G + g) / 2 + 2 * D)),
+       "algebra", uses=("volume",))
+
+# ---- printed -------------------------------------------------------------------
+d.quote("lemma-statement", "§1 tetrahedron lemma",
+        r"dessen Höhe gleich dem kürzesten Abstände der beiden übrigen Kanten  $AB$  und  $CD$  des ersten "
+        r"Tetraeders ist.",
+        lost="the statement of the lemma and the start of §1 (with Fig. 2) are missing; only the end of "
+             "the statement survives. Its content is restated at the end of the proof (see 'lemma-conclusion').")
+d.quote("parallelogram-half-triangle", "§1 tetrahedron lemma",
+        r"ist halb so gross als das Dreieck  $ABE$",
+        reading=(Pt, Tri / 2))
+d.quote("lemma-conclusion", "§1 tetrahedron lemma",
+        r"Mithin ist der Inhalt des Tetraeders  $ABCD$  gleich dem des Tetraeders  $ABCE$ , dessen Basis gleich "
+        r"der doppelten Durchschnittsfläche  $abcd$  und dessen Höhe gleich dem kürzesten Abstand der beiden "
+        r"Kanten  $CD$  und  $AB$ .",
+        reading=(Vt, Ve, sp.Rational(1, 3) * 2 * Pt * dist))
+d.quote("pyramid-over-g", "§1 prismatoid volume",
+        r"deren Basis  $g$ , deren Höhe  $h$ , deren Inhalt mithin  $\frac{g h}{3}$", reading=sp.Eq(V1, g * h / 3))
+d.quote("pyramids-over-G", "§1 prismatoid volume",
+        r"deren Basis zusammen  $= G$ , deren Höhen  $= h$ , deren Inhalt zusammen  $= \frac{G h}{3}$",
+        reading=sp.Eq(V2, G * h / 3))
+d.quote("mid-section-g", "§1 prismatoid volume",
+        r"dessen Inhalt, weil auf der halben Höhe der Pyramide  $ABCO$ ,  $= \frac{g}{4}$",
+        reading=(g * sp.Rational(1, 2) ** 2, g / 4))
+
+MINUS_AS_EQUALS = ("The scan read the minus sign (a long dash in the print) as '='. The same term is quoted "
+                   "correctly in §3 ('für deren Inhalt wir zusammen fanden h/3{2D - (G+g)/2}'), so the "
+                   "print had the minus.")
+d.quote("parallelogram-sum", "§1 prismatoid volume",
+        r"$$D = \frac{g}{4} + \frac{G}{4}.$$",
+        reading=sp.Eq(D, g / 4 + G / 4),
+        erratum=Erratum("transcription", "high", r"P = D - \frac{g}{4} - \frac{G}{4}",
+                        "The sum P of the parallelograms is what remains of D after the polygon (g/4) and "
+                        "the triangles (G/4). " + MINUS_AS_EQUALS,
+                        corrected_reading=(P, D - g / 4 - G / 4)))
+d.quote("tetrahedra-volume", "§1 prismatoid volume",
+        r"$$\frac{h}{3} \times 2 \left\{ D = \frac{g}{4} + \frac{G}{4} \right\} \text{ oder}$$",
+        unreadable="'=' inside the braces: the expression is not well formed",
+        erratum=Erratum("transcription", "high",
+                        r"\frac{h}{3} \times 2 \left\{ D - \frac{g}{4} - \frac{G}{4} \right\}",
+                        "Volume of all tetrahedra by the lemma. " + MINUS_AS_EQUALS,
+                        corrected_reading=(V3, h / 3 * 2 * (D - g / 4 - G / 4))))
+d.quote("tetrahedra-volume-2", "§1 prismatoid volume",
+        r"$$\frac{h}{3} \left\{ 2D = \frac{G+g}{2} \right\}.$$",
+        unreadable="'=' inside the braces: the expression is not well formed",
+        erratum=Erratum("transcription", "high", r"\frac{h}{3} \left\{ 2D - \frac{G+g}{2} \right\}",
+                        MINUS_AS_EQUALS, corrected_reading=(V3, h / 3 * (2 * D - (G + g) / 2))))
+d.quote("volume-sum", "§1 prismatoid volume",
+        r"$$I = \frac{gh}{3} + \frac{Gh}{3} + \frac{h}{3} \left\{ 2D = \frac{G+g}{2} \right\}$$",
+        unreadable="'=' inside the braces: the expression is not well formed",
+        erratum=Erratum("transcription", "high",
+                        r"I = \frac{gh}{3} + \frac{Gh}{3} + \frac{h}{3} \left\{ 2D - \frac{G+g}{2} \right\}",
+                        MINUS_AS_EQUALS,
+                        corrected_reading=sp.Eq(I, g * h / 3 + G * h / 3 + h / 3 * (2 * D - (G + g) / 2))))
+d.quote("volume-collected", "§1 prismatoid volume",
+        r"$$I = \frac{h}{3} \left\{ g + G = \frac{G}{2} + \frac{g}{2} + 2D \right\}$$",
+        unreadable="'=' inside the braces: the expression is not well formed",
+        erratum=Erratum("transcription", "high",
+                        r"I = \frac{h}{3} \left\{ g + G - \frac{G}{2} - \frac{g}{2} + 2D \right\}",
+                        MINUS_AS_EQUALS,
+                        corrected_reading=sp.Eq(I, h / 3 * (g + G - G / 2 - g / 2 + 2 * D))))
+d.quote("prismatoid-volume", "§1 prismatoid volume",
+        r"$$I = \frac{h}{3} \left\{ \frac{G+g}{2} + 2D \right\}, \text{ welches die oben erwähnte}$$",
+        reading=sp.Eq(I, h / 3 * ((G + g) / 2 + 2 * D)))
+
+# ---- witnesses -----------------------------------------------------------------
+
+
+def _prismatoid_case(seed):
+    pts = random_prismatoid(seed)
+    Gv, gv, Dv, hv = (sp.Rational(x.numerator, x.denominator) for x in prismatoid_parameters(pts))
+    return Case({G: Gv, g: gv, D: Dv, h: hv}, pts, f"random prismatoid #{seed}")
+
+
+def _tetrahedron_case(seed):
+    import random
+    from fractions import Fraction
+    rng = random.Random(seed)
+    while True:
+        pts = [tuple(Fraction(rng.randint(-6, 6)) for _ in range(3)) for _ in range(4)]
+        values = {c: sp.Integer(v) for X, p in zip((XA, XB, XC, XD), pts) for c, v in zip(X, p)}
+        if (XB - XA).dot((XC - XA).cross(XD - XA)).xreplace(values) != 0 and n.xreplace(values) != sp.zeros(3, 1):
+            return Case(values, pts, f"random tetrahedron #{seed}")
+
+
+def _pyramid_case(seed):
+    pts = random_prismatoid(seed, apex_top=True)
+    Gv, _, _, hv = prismatoid_parameters(pts)
+    apex_down = [(x, y, hv - zz) for x, y, zz in pts]   # base g on top, apex O in the lower plane
+    return Case({g: sp.Rational(Gv.numerator, Gv.denominator), h: sp.Rational(hv.numerator, hv.denominator)},
+                apex_down, f"random pyramid #{seed}")
+
+
+d.witness(HullWitness("tetrahedra", "volume of random tetrahedra (hull and slices)",
+                      ("lemma-conclusion",), tuple(_tetrahedron_case(s) for s in range(3)), quantity="volume"))
+d.witness(HullWitness("pyramids", "volume of random pyramids (hull and slices)",
+                      ("pyramid-over-g",), tuple(_pyramid_case(s) for s in range(3)), quantity="volume"))
+d.witness(HullWitness("prismatoids", "volume of random convex prismatoids (hull and slices)",
+                      ("volume-sum", "volume-collected", "prismatoid-volume"),
+                      tuple(_prismatoid_case(s) for s in range(4)), quantity="volume"))

@@ -1,0 +1,1 @@
+"""The checking engine: identities, witnesses, derivation checks, cache."""

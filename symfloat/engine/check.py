@@ -1,0 +1,230 @@
+"""Checking one derivation: its steps, its printed formulas, its witnesses.
+
+The verdict of a printed formula follows from three pieces of evidence:
+
+* the identity check of its reading against the derivation's results
+  (``verified`` when it holds, refuted when a sample disagrees);
+* the declared erratum, whose corrected reading must itself hold;
+* the first-principles witnesses, which must agree with whatever is
+  accepted as right and disagree with what is refuted.
+
+Anything that contradicts the declarations — a refuted step, an undeclared
+fault, a declared fault that is not there, a witness at odds with the
+algebra — is a *failure*: it is reported with the locator and makes
+``symfloat verify`` exit non-zero.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import asdict, dataclass, field
+
+import sympy as sp
+
+from ..model.claim import as_latex, members
+from ..model.derivation import Derivation, Printed
+from .identity import Domain, IdentityResult, check_identity
+
+__all__ = ["StepReport", "FormulaReport", "DerivationReport", "check_derivation"]
+
+
+@dataclass
+class StepReport:
+    name: str
+    why: str
+    uses: list
+    latex: str
+    note: str
+    status: str                       # definition | applied | proved | sampled | refuted | undecided
+    identity: dict | None = None
+
+
+@dataclass
+class FormulaReport:
+    id: str
+    source: str
+    locator: str
+    verdict: str                      # verified | erratum | unverifiable
+    evidence: str | None
+    numeric: list
+    excerpt: str
+    latex: str
+    reason: str = ""
+    identity: dict | None = None
+    erratum: dict | None = None
+    witness_notes: list = field(default_factory=list)
+    corrected_numeric: list = field(default_factory=list)
+
+
+@dataclass
+class DerivationReport:
+    id: str
+    source: str
+    title: str
+    locator: str
+    key: str
+    seconds: float
+    steps: list
+    formulas: list
+    failures: list
+    cached: bool = False
+
+    def to_json(self) -> dict:
+        return asdict(self)
+
+    @classmethod
+    def from_json(cls, data: dict) -> "DerivationReport":
+        data = dict(data)
+        data["steps"] = [StepReport(**s) for s in data["steps"]]
+        data["formulas"] = [FormulaReport(**f) for f in data["formulas"]]
+        return cls(**data)
+
+
+def _substitute(expr, results):
+    """Insert derived values for result symbols until none is left."""
+    if not results:
+        return expr
+    for _ in range(12):
+        new = expr.xreplace(results) if hasattr(expr, "xreplace") else expr
+        if new == expr:
+            return new
+        expr = new
+    return expr
+
+
+def _resolved(chain, results):
+    """The chain with derived values inserted for the result symbols."""
+    return tuple(_substitute(m, results) for m in members(chain))
+
+
+def _check_chain(chain, names, results, domain, seed, prove, limit) -> IdentityResult:
+    """Check every link of a chain; the weakest link decides."""
+    ms = [m for m in members(chain) if not (isinstance(m, sp.Symbol) and m in names)]
+    if len(ms) < 2:
+        raise ValueError(f"{seed}: nothing to check once the named quantity is removed")
+    ms = [_substitute(m, results) for m in ms]
+    order = {"refuted": 0, "undecided": 1, "sampled": 2, "proved": 3}
+    worst = None
+    total = 0.0
+    for i, (a, b) in enumerate(zip(ms, ms[1:])):
+        r = check_identity(a, b, domain, f"{seed}#{i}", prove=prove, limit=limit)
+        total += r.seconds
+        if worst is None or order[r.status] < order[worst.status]:
+            worst = r
+        if r.status == "refuted":
+            break
+    worst.seconds = total
+    return worst
+
+
+def _latex(p: Printed) -> str:
+    return as_latex(p.reading) if p.reading is not None else ""
+
+
+def check_derivation(d: Derivation, key: str = "", *, prove: bool = True, limit: float = 4.0,
+                     progress=None) -> DerivationReport:
+    """Check *d* completely and return its report (see the module docstring)."""
+    t0 = time.perf_counter()
+    domain = Domain(d.domain, tuple(d.constraints))
+    failures: list[str] = []
+    results: dict = {}
+    step_reports = []
+    for s in d.steps:
+        names = {s.result} if s.result is not None else set()
+        checkable = len([m for m in members(s.claim) if not (isinstance(m, sp.Symbol) and m in names)]) >= 2
+        if s.why == "definition" or (s.why == "lemma" and not checkable):
+            status = "definition" if s.why == "definition" else "applied"
+            rep = StepReport(s.name, s.why, list(s.uses), as_latex(s.claim), s.note, status)
+        else:
+            r = _check_chain(s.claim, names, results, domain, f"{d.id}/{s.name}", prove, limit)
+            rep = StepReport(s.name, s.why, list(s.uses), as_latex(s.claim), s.note, r.status, r.to_json())
+            if r.status == "refuted":
+                failures.append(f"{d.source} {d.locator}: step {s.name!r} is refuted: {r.counterexample}")
+        if s.result is not None:
+            results[s.result] = _substitute(members(s.claim)[-1], results)
+        step_reports.append(rep)
+        if progress:
+            progress()
+
+    readings, identities, corrected = {}, {}, {}
+    for p in d.printed:
+        if p.reading is not None:
+            readings[p.name] = _resolved(p.reading, results)
+            identities[p.name] = _check_chain(p.reading, set(), results, domain,
+                                              f"{d.id}/{p.name}", prove, limit)
+        if p.erratum is not None and p.erratum.corrected_reading is not None:
+            readings[p.name + "#corrected"] = _resolved(p.erratum.corrected_reading, results)
+            corrected[p.name] = _check_chain(p.erratum.corrected_reading, set(), results, domain,
+                                             f"{d.id}/{p.name}#corrected", prove, limit)
+        if progress:
+            progress()
+
+    outcomes: dict = {}
+    for w in d.witnesses:
+        for target, out in w.run(readings).items():
+            outcomes.setdefault(target, []).append(out)
+
+    formulas = [_verdict(d, p, identities.get(p.name), corrected.get(p.name), outcomes, failures)
+                for p in d.printed]
+    return DerivationReport(d.id, d.source, d.title, d.locator, key, time.perf_counter() - t0,
+                            step_reports, formulas, failures)
+
+
+def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
+    where = f"{d.source} {p.locator} ({p.name})"
+    printed_out = outcomes.get(p.name, [])
+    corrected_out = outcomes.get(p.name + "#corrected", [])
+    numeric = [r for o in printed_out for r in o.records]
+    rep = FormulaReport(d.formula_id(p), d.source, p.locator, "unverifiable", None, numeric,
+                        p.excerpt, _latex(p), identity=ident.to_json() if ident else None,
+                        corrected_numeric=[r for o in corrected_out for r in o.records],
+                        witness_notes=[o.note for o in printed_out + corrected_out if o.note])
+    if p.lost:
+        rep.reason = f"text lost in the transcription: {p.lost}"
+        return rep
+    if ident is not None and ident.status == "undecided":
+        rep.reason = "the checks could not decide: tried " + ", ".join(ident.tried)
+        return rep
+    holds = ident is not None and ident.holds
+    if holds:
+        if p.erratum is not None:
+            failures.append(f"{where}: an erratum is declared but the print holds")
+        if not all(o.agrees for o in printed_out):
+            failures.append(f"{where}: derived and printed agree but a witness disagrees")
+        rep.verdict, rep.evidence = "verified", ident.evidence
+        return rep
+    # refuted (or unreadable) print
+    if p.erratum is None:
+        failures.append(f"{where}: the print is refuted ({ident.counterexample}) and no erratum is declared")
+        rep.verdict, rep.evidence = "erratum", "sampled"
+        return rep
+    if printed_out and all(o.agrees for o in printed_out):
+        failures.append(f"{where}: the print is refuted but the witnesses agree with it")
+    if corr is None and p.erratum.corrected_reading is not None:
+        failures.append(f"{where}: the correction was not checked")
+    if corr is not None and not corr.holds:
+        failures.append(f"{where}: the declared correction does not hold ({corr.status}: "
+                        f"{corr.counterexample or corr.residual})")
+    if corrected_out and not all(o.agrees for o in corrected_out):
+        failures.append(f"{where}: a witness disagrees with the declared correction")
+    rep.verdict = "erratum"
+    rep.evidence = corr.evidence if corr is not None and corr.holds else "sampled"
+    found = []
+    if ident is not None and ident.counterexample:
+        cx = ident.counterexample
+        point = ", ".join(f"{k}={v}" for k, v in cx["point"].items())
+        found.append(f"at {point} the print gives {cx['rhs']} where the derivation gives {cx['lhs']}")
+    if p.unreadable:
+        found.append(f"as printed: {p.unreadable}")
+    if corr is not None and corr.holds:
+        found.append(f"the correction is {'proved' if corr.status == 'proved' else 'confirmed by sampling'}"
+                     + (f" ({corr.strategy})" if corr.strategy else ""))
+    for o in corrected_out:
+        if o.records:
+            best = min(o.records, key=lambda r: r["rel_error"])
+            found.append(f"{o.witness} agrees with the correction to {best['rel_error']:.1e} "
+                         f"({best['method']})")
+    rep.erratum = {
+        "kind": p.erratum.kind, "confidence": p.erratum.confidence, "corrected": p.erratum.corrected,
+        "evidence": p.erratum.evidence + (" Engine: " + "; ".join(found) + "." if found else ""),
+    }
+    return rep

@@ -1,0 +1,202 @@
+"""Deciding one identity ``a = b``: sampling first, then symbolic proof.
+
+Cheap evidence comes first.  Both sides are evaluated at seeded random
+rational points inside the derivation's domain: exactly when the values are
+rational (Schwartz–Zippel for rational identities), otherwise with 60-digit
+arithmetic.  A single disagreeing point refutes the identity and is kept as
+the counterexample.  When every sample agrees, symbolic strategies try to
+prove the difference zero, each under a time limit; the residual of the last
+strategy is shown when none succeeds.
+"""
+from __future__ import annotations
+
+import hashlib
+import random
+import time
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import sympy as sp
+
+from .timelimit import TimeLimitExceeded, time_limit
+
+__all__ = ["IdentityResult", "check_identity", "Domain", "DIGITS", "STRATEGIES"]
+
+DIGITS = 60            # working precision of non-rational sampling
+AGREEMENT = 10 ** -45  # relative tolerance of non-rational sampling
+SAMPLES = 6
+
+
+@dataclass
+class IdentityResult:
+    """Outcome of one identity check.
+
+    ``status`` is ``proved`` (a symbolic strategy reduced the difference to
+    zero), ``sampled`` (every sample agreed, no proof), ``refuted`` (a sample
+    disagreed: see ``counterexample``) or ``undecided``.
+    """
+
+    status: str
+    strategy: str = ""
+    samples: int = 0
+    exact: bool = True
+    counterexample: dict | None = None
+    residual: str = ""
+    tried: list = field(default_factory=list)
+    seconds: float = 0.0
+
+    @property
+    def evidence(self) -> str | None:
+        return {"proved": "symbolic", "sampled": "sampled"}.get(self.status)
+
+    @property
+    def holds(self) -> bool:
+        return self.status in ("proved", "sampled")
+
+    def to_json(self) -> dict:
+        return {k: v for k, v in self.__dict__.items()}
+
+    @classmethod
+    def from_json(cls, data: dict) -> "IdentityResult":
+        return cls(**data)
+
+
+def _strategy(name):
+    return {
+        "cancel": lambda e: sp.cancel(sp.together(e)),
+        "expand": lambda e: sp.expand(sp.powsimp(sp.expand(e), force=True)),
+        "radsimp": lambda e: sp.cancel(sp.radsimp(sp.together(e))),
+        "simplify": sp.simplify,
+    }[name]
+
+
+STRATEGIES = ("cancel", "expand", "radsimp", "simplify")
+
+
+@dataclass(frozen=True)
+class Domain:
+    """Where samples are drawn: intervals per symbol and extra constraints."""
+
+    intervals: dict
+    constraints: tuple = ()
+
+    def sampler(self, seed_text: str):
+        seed = int.from_bytes(hashlib.sha256(seed_text.encode()).digest()[:8], "big")
+        rng = random.Random(seed)
+
+        def draw(symbols):
+            point = {}
+            for s in sorted(symbols, key=lambda s: s.name):
+                if s not in self.intervals:
+                    raise ValueError(f"symbol {s} has no sampling interval in the derivation's domain")
+                lo, hi = (Fraction(str(v)) for v in self.intervals[s])
+                den = rng.randint(7, 97)
+                t = Fraction(rng.randint(1, den - 1), den)
+                point[s] = sp.Rational(lo + (hi - lo) * t)
+            return point
+
+        return draw
+
+    def admits(self, point) -> bool:
+        for c in self.constraints:
+            c = sp.sympify(c)
+            if c.free_symbols <= point.keys() and not c.xreplace(point):
+                return False
+        return True
+
+
+def _flatten(a, b):
+    if isinstance(a, sp.MatrixBase) or isinstance(b, sp.MatrixBase):
+        a, b = sp.Matrix(a), sp.Matrix(b)
+        if a.shape != b.shape:
+            raise ValueError(f"cannot compare shapes {a.shape} and {b.shape}")
+        return list(zip(a, b))
+    return [(a, b)]
+
+
+def _evaluate(expr):
+    """Carry out the integrals, limits and derivatives a claim contains."""
+    expr = sp.sympify(expr)
+    if expr.has(sp.Integral, sp.Limit, sp.Derivative, sp.Subs):
+        expr = expr.doit()
+    return expr
+
+
+def _value(expr):
+    """Exact rational value, or a 60-digit float, of a closed expression."""
+    if expr.is_Rational:
+        return expr, True
+    v = sp.N(expr, DIGITS)
+    if not v.is_number or v.has(sp.zoo, sp.nan, sp.oo):
+        raise ArithmeticError("not a finite number")
+    return v, False
+
+
+def _sample(pairs, domain: Domain, seed_text: str, samples: int):
+    symbols = set()
+    for a, b in pairs:
+        symbols |= a.free_symbols | b.free_symbols
+    for c in domain.constraints:  # a constraint on a sampled symbol fixes its partners too
+        if sp.sympify(c).free_symbols & symbols:
+            symbols |= sp.sympify(c).free_symbols
+    draw = domain.sampler(seed_text)
+    good, exact = 0, True
+    for _ in range(samples * 20):
+        if good >= samples:
+            break
+        point = draw(symbols)
+        if not domain.admits(point):
+            continue
+        try:
+            values = [(_value(a.xreplace(point)), _value(b.xreplace(point))) for a, b in pairs]
+        except (ArithmeticError, ZeroDivisionError, TypeError):
+            continue
+        good += 1
+        for ((va, ea), (vb, eb)) in values:
+            exact = exact and ea and eb
+            if ea and eb:
+                agree = va == vb
+            else:
+                scale = max(abs(va), abs(vb), 1)
+                agree = abs(va - vb) <= AGREEMENT * scale
+            if not agree:
+                return "refuted", good, exact, {
+                    "point": {str(k): str(v) for k, v in sorted(point.items(), key=lambda kv: kv[0].name)},
+                    "lhs": _show(va), "rhs": _show(vb)}
+    return ("sampled" if good else "undecided"), good, exact, None
+
+
+def _show(v):
+    return str(v) if v.is_Rational else sp.sstr(sp.N(v, 20))
+
+
+def check_identity(a, b, domain: Domain, seed_text: str, *, prove=True, limit=4.0,
+                   samples: int = SAMPLES, strategies=STRATEGIES) -> IdentityResult:
+    """Decide ``a = b`` inside *domain*; see the module docstring for the order of evidence."""
+    t0 = time.perf_counter()
+    pairs = [(_evaluate(x), _evaluate(y)) for x, y in _flatten(a, b)]
+    status, n, exact, cex = _sample(pairs, domain, seed_text, samples)
+    result = IdentityResult(status, samples=n, exact=exact, counterexample=cex,
+                            tried=[f"sampling ({'exact' if exact else f'{DIGITS} digits'})"])
+    if status == "refuted" or not prove:
+        result.seconds = time.perf_counter() - t0
+        return result
+    diffs = [x - y for x, y in pairs]
+    for name in strategies:
+        fn = _strategy(name)
+        try:
+            with time_limit(limit):
+                rest = [fn(d) for d in diffs]
+        except TimeLimitExceeded:
+            result.tried.append(f"{name} (time limit {limit:g} s)")
+            continue
+        except Exception as exc:  # a strategy that crashes is a strategy that failed
+            result.tried.append(f"{name} ({type(exc).__name__})")
+            continue
+        result.tried.append(name)
+        if all(r == 0 for r in rest):
+            result.status, result.strategy, result.residual = "proved", name, ""
+            break
+        result.residual = sp.sstr(next(r for r in rest if r != 0))[:300]
+    result.seconds = time.perf_counter() - t0
+    return result

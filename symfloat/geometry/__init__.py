@@ -1,0 +1,1 @@
+"""First-principles geometry: exact convex hulls, sections and clipping."""

@@ -1,0 +1,33 @@
+"""Claims: the statements a step or a printed formula makes.
+
+A claim is a chain of members asserted equal, ``a = b = c``.  It may be given
+as a SymPy ``Eq``, a tuple of expressions, or a ``Matrix`` equation (vectors
+are compared component by component).
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+__all__ = ["members", "as_latex", "pairs"]
+
+
+def members(claim) -> tuple:
+    """The members of *claim* (at least two), as SymPy objects."""
+    if isinstance(claim, sp.Equality):
+        return (claim.lhs, claim.rhs)
+    if isinstance(claim, (tuple, list)):
+        if len(claim) < 2:
+            raise ValueError("a chain of equalities needs at least two members")
+        return tuple(sp.sympify(m) if not isinstance(m, sp.MatrixBase) else m for m in claim)
+    raise TypeError(f"a claim is an Eq or a tuple of members, not {type(claim).__name__}")
+
+
+def pairs(claim):
+    """Consecutive pairs ``(a, b)`` of the chain, each one identity to prove."""
+    ms = members(claim)
+    return list(zip(ms, ms[1:]))
+
+
+def as_latex(claim) -> str:
+    """The chain as one LaTeX line ``a = b = c``."""
+    return " = ".join(sp.latex(m) for m in members(claim))

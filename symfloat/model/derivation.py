@@ -1,0 +1,146 @@
+"""Derivations: ordered steps from stated assumptions to results.
+
+A derivation module builds one :class:`Derivation` at import time; building
+only assembles SymPy objects, the engine does all the checking.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from .claim import members
+from .erratum import Erratum
+from .source import get_source
+
+__all__ = ["Step", "Printed", "Derivation", "JUSTIFICATIONS"]
+
+JUSTIFICATIONS = (
+    "definition",      # introduces a quantity or the body: not checked, stated
+    "algebra",         # rearrangement; checked as an identity
+    "substitution",    # an earlier result or value inserted; checked as an identity
+    "integration",     # an integral evaluated; checked as an identity
+    "geometry",        # a geometric fact computed in coordinates; checked as an identity
+    "lemma",           # a result of another derivation applied; checked as an identity
+    "limit",           # a limit taken; checked as an identity
+    "series",          # a series to a given order; checked as an identity
+)
+
+
+@dataclass(frozen=True)
+class Step:
+    """One step: a claim, why it holds, and what it uses.
+
+    ``result`` names the quantity (a SymPy symbol) whose value the step
+    establishes: its last member is substituted for that symbol when printed
+    formulas are checked.
+    """
+
+    name: str
+    claim: object
+    why: str
+    uses: tuple[str, ...] = ()
+    note: str = ""
+    result: sp.Symbol | None = None
+
+    def __post_init__(self):
+        if self.why not in JUSTIFICATIONS:
+            raise ValueError(f"step {self.name!r}: justification {self.why!r} not in {JUSTIFICATIONS}")
+        members(self.claim)
+
+
+@dataclass(frozen=True)
+class Printed:
+    """A printed formula: the verbatim excerpt and its reading as printed.
+
+    ``reading`` is the SymPy claim as printed, faults included, or ``None``
+    when the print cannot be read as a formula (then ``unreadable`` says why)
+    or when the transcription lost it (then ``lost`` says what is missing).
+    """
+
+    name: str
+    locator: str
+    excerpt: str
+    reading: object = None
+    erratum: Erratum | None = None
+    unreadable: str = ""
+    lost: str = ""
+    note: str = ""
+
+    def __post_init__(self):
+        if self.reading is None and not (self.unreadable or self.lost):
+            raise ValueError(f"printed {self.name!r}: no reading, and no reason why")
+        if self.unreadable and self.erratum is None:
+            raise ValueError(f"printed {self.name!r}: unreadable print needs an erratum")
+
+
+@dataclass
+class Derivation:
+    """An ordered derivation of the printed formulas of one source section.
+
+    ``domain`` maps each free symbol to the rational interval ``(lo, hi)``
+    its sampled values are drawn from; ``constraints`` are SymPy relations
+    the samples must satisfy in addition (the stated assumptions).
+    """
+
+    id: str
+    source: str
+    title: str
+    locator: str
+    summary: str = ""
+    requires: tuple[str, ...] = ()
+    domain: dict = field(default_factory=dict)
+    constraints: tuple = ()
+    assumptions: tuple[str, ...] = ()
+    steps: list[Step] = field(default_factory=list)
+    printed: list[Printed] = field(default_factory=list)
+    witnesses: list = field(default_factory=list)
+
+    def __post_init__(self):
+        get_source(self.source)
+
+    # -- builders used by the derivation modules --------------------------
+    def step(self, name, claim, why, uses=(), note="", result=None) -> Step:
+        """Append a step; ``uses`` must name earlier steps or ``derivation-id:step``."""
+        known = {s.name for s in self.steps}
+        for u in uses:
+            if ":" not in u and u not in known:
+                raise ValueError(f"step {name!r} uses {u!r}, which is not an earlier step")
+        if name in known:
+            raise ValueError(f"duplicate step name {name!r} in {self.id}")
+        s = Step(name, claim, why, tuple(uses), note, result)
+        self.steps.append(s)
+        return s
+
+    def quote(self, name, locator, excerpt, reading=None, erratum=None, unreadable="", lost="", note=""):
+        """Append a printed formula; the excerpt must be verbatim in the source."""
+        if not get_source(self.source).contains(excerpt):
+            raise ValueError(f"{self.id}/{name}: excerpt is not verbatim in {self.source}: {excerpt[:60]!r}")
+        if any(p.name == name for p in self.printed):
+            raise ValueError(f"duplicate printed name {name!r} in {self.id}")
+        p = Printed(name, locator, excerpt, reading, erratum, unreadable, lost, note)
+        self.printed.append(p)
+        return p
+
+    def witness(self, w):
+        """Attach a first-principles witness (see :mod:`symfloat.engine.witness`)."""
+        names = {p.name for p in self.printed}
+        missing = [t for t in w.targets if t not in names]
+        if missing:
+            raise ValueError(f"witness {w.name!r} targets unknown printed formulas {missing}")
+        self.witnesses.append(w)
+        return w
+
+    # -- queries ----------------------------------------------------------
+    def get_step(self, name) -> Step:
+        for s in self.steps:
+            if s.name == name:
+                return s
+        raise KeyError(f"{self.id} has no step {name!r}")
+
+    def results(self) -> dict:
+        """Quantity symbol -> derived value, from the steps that establish results."""
+        return {s.result: members(s.claim)[-1] for s in self.steps if s.result is not None}
+
+    def formula_id(self, printed: Printed) -> str:
+        return f"{self.id}/{printed.name}"

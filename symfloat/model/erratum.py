@@ -1,0 +1,35 @@
+"""Errata: what the print (or its transcription) gets wrong, and what is right."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+__all__ = ["Erratum", "KINDS", "CONFIDENCES"]
+
+KINDS = ("transcription", "misprint", "calculation", "consequential", "claim")
+CONFIDENCES = ("high", "medium", "low")
+
+
+@dataclass(frozen=True)
+class Erratum:
+    """A declared fault of one printed formula.
+
+    ``corrected`` is the human-readable correction (LaTeX or words);
+    ``corrected_reading`` is its SymPy reading, which the engine must verify
+    against the derivation before the erratum is accepted.  ``evidence`` says
+    why the fault is of this *kind* (print or scan) and why the correction is
+    right; the engine appends the counterexample it finds.
+    """
+
+    kind: str
+    confidence: str
+    corrected: str
+    evidence: str
+    corrected_reading: object = None
+
+    def __post_init__(self):
+        if self.kind not in KINDS:
+            raise ValueError(f"erratum kind {self.kind!r} not in {KINDS}")
+        if self.confidence not in CONFIDENCES:
+            raise ValueError(f"erratum confidence {self.confidence!r} not in {CONFIDENCES}")
+        if not self.corrected or not self.evidence:
+            raise ValueError("an erratum needs a correction and its evidence")
