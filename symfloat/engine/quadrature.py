@@ -20,7 +20,7 @@ import numpy as np
 
 __all__ = ["QuadMethod", "TanhSinh", "MpGaussLegendre", "GaussLegendre64",
            "TANH_SINH_15", "TANH_SINH_50", "GAUSS_LEGENDRE_MP_30", "GAUSS_LEGENDRE_64_8",
-           "DEFAULT_METHODS"]
+           "DEFAULT_METHODS", "composite_simpson", "composite_trapezoid"]
 
 
 @dataclass(frozen=True)
@@ -82,3 +82,29 @@ TANH_SINH_50 = TanhSinh("tanh-sinh, 50 digits", 1e-45, "mpmath", 50)
 GAUSS_LEGENDRE_MP_30 = MpGaussLegendre("Gauss-Legendre (mpmath), 30 digits", 1e-25, "mpmath", 30)
 GAUSS_LEGENDRE_64_8 = GaussLegendre64("Gauss-Legendre n=8, float64", 1e-12, "float64", 15, 8)
 DEFAULT_METHODS = (TANH_SINH_15, TANH_SINH_50, GAUSS_LEGENDRE_64_8)
+
+
+def composite_simpson(f, a, b, panels: int):
+    """Composite Simpson rule with an even number of *panels* of width
+    ``m = (b - a) / panels``: ``m/3 (f0 + 4 f1 + 2 f2 + ... + 4 f_{n-1} + f_n)``.
+
+    >>> composite_simpson(lambda x: x**3, 0, 2, 2)
+    4.0
+    """
+    if panels <= 0 or panels % 2:
+        raise ValueError("Simpson's rule needs an even, positive number of panels")
+    m = (b - a) / panels
+    inner = sum((4 if k % 2 else 2) * f(a + k * m) for k in range(1, panels))
+    return m / 3 * (f(a) + inner + f(b))
+
+
+def composite_trapezoid(f, a, b, panels: int):
+    """Composite trapezoid rule: ``m (f0/2 + f1 + ... + f_{n-1} + f_n/2)``.
+
+    >>> composite_trapezoid(lambda x: x, 0, 2, 4)
+    2.0
+    """
+    if panels <= 0:
+        raise ValueError("the trapezoid rule needs a positive number of panels")
+    m = (b - a) / panels
+    return m * (f(a) / 2 + sum(f(a + k * m) for k in range(1, panels)) + f(b) / 2)

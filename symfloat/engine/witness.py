@@ -124,18 +124,21 @@ class MeasuredWitness:
 class SectionIntegral(MeasuredWitness):
     """Quadrature of a section area ``A(z)`` over ``bounds``.
 
-    ``quantity`` is ``volume`` (∫A dz), ``moment`` (∫(z - lo) A dz) or
-    ``centroid`` (moment / volume: the distance from the face at ``lo``).
+    ``quantity`` is ``volume`` (∫A dz), ``moment`` (∫(z - o) A dz) or
+    ``centroid`` (moment / volume: the distance of the centroid from the
+    plane ``z = o``); ``o`` is ``origin``, by default the lower bound.
     """
 
     area: sp.Expr = None
     z: sp.Symbol = None
     bounds: tuple = ()
     quantity: str = "volume"
+    origin: object = None
     methods: tuple = DEFAULT_METHODS
 
     def measure(self, case, method):
         lo, hi = (sp.sympify(b).xreplace(case.params) for b in self.bounds)
+        origin = lo if self.origin is None else sp.sympify(self.origin).xreplace(case.params)
         area = self.area.xreplace(case.params)
         modules = "mpmath" if method.arithmetic == "mpmath" else "numpy"
         with mpmath.workdps(method.dps):
@@ -144,7 +147,7 @@ class SectionIntegral(MeasuredWitness):
             volume, _ = method.integrate(f, [lo_n, hi_n])
             if self.quantity == "volume":
                 return volume
-            g = sp.lambdify(self.z, (self.z - lo) * area, modules)
+            g = sp.lambdify(self.z, (self.z - origin) * area, modules)
             moment, _ = method.integrate(g, [lo_n, hi_n])
             return moment if self.quantity == "moment" else moment / volume
 
