@@ -120,7 +120,7 @@ def _latex(p: Printed) -> str:
     return as_latex(p.reading) if p.reading is not None else ""
 
 
-def check_derivation(d: Derivation, key: str = "", *, prove: bool = True, limit: float = 4.0,
+def check_derivation(d: Derivation, key: str = "", *, prove: bool = True, limit: float = 2.0,
                      progress=None) -> DerivationReport:
     """Check *d* completely and return its report (see the module docstring)."""
     t0 = time.perf_counter()

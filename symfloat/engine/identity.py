@@ -61,8 +61,32 @@ class IdentityResult:
         return cls(**data)
 
 
+def _nonnegative(e) -> bool:
+    """Sums, products and quotients of square roots and positive constants:
+    non-negative wherever they are real (lengths, areas and their ratios)."""
+    if e.is_number:
+        return bool(e.is_nonnegative)
+    if e.is_Pow and e.exp in (sp.S.Half, -sp.S.Half):
+        return True
+    if e.is_Pow and e.exp.is_Integer:
+        return _nonnegative(e.base) or e.exp.is_even
+    if e.is_Add or e.is_Mul:
+        return all(_nonnegative(t) for t in e.args)
+    return bool(e.is_nonnegative)
+
+
+def _squares(pair):
+    """``a = b`` from ``a**2 = b**2`` when both sides are manifestly
+    non-negative: removes square roots of different radicands."""
+    a, b = pair
+    if not (_nonnegative(a) and _nonnegative(b)):
+        return a - b
+    return sp.cancel(sp.together(sp.expand(a ** 2 - b ** 2)))
+
+
 def _strategy(name):
     return {
+        "squares": _squares,
         "cancel": lambda e: sp.cancel(sp.together(e)),
         "expand": lambda e: sp.expand(sp.powsimp(sp.expand(e), force=True)),
         "radsimp": lambda e: sp.cancel(sp.radsimp(sp.together(e))),
@@ -70,7 +94,7 @@ def _strategy(name):
     }[name]
 
 
-STRATEGIES = ("cancel", "expand", "radsimp", "simplify")
+STRATEGIES = ("cancel", "squares", "expand", "radsimp", "simplify")
 
 
 @dataclass(frozen=True)
@@ -170,9 +194,10 @@ def _show(v):
     return str(v) if v.is_Rational else sp.sstr(sp.N(v, 20))
 
 
-def check_identity(a, b, domain: Domain, seed_text: str, *, prove=True, limit=4.0,
+def check_identity(a, b, domain: Domain, seed_text: str, *, prove=True, limit=2.0,
                    samples: int = SAMPLES, strategies=STRATEGIES) -> IdentityResult:
-    """Decide ``a = b`` inside *domain*; see the module docstring for the order of evidence."""
+    """Decide ``a = b`` inside *domain*; see the module docstring for the order
+    of evidence.  The symbolic strategies share a budget of *limit* seconds."""
     t0 = time.perf_counter()
     pairs = [(_evaluate(x), _evaluate(y)) for x, y in _flatten(a, b)]
     status, n, exact, cex = _sample(pairs, domain, seed_text, samples)
@@ -182,13 +207,18 @@ def check_identity(a, b, domain: Domain, seed_text: str, *, prove=True, limit=4.
         result.seconds = time.perf_counter() - t0
         return result
     diffs = [x - y for x, y in pairs]
+    deadline = time.perf_counter() + limit
     for name in strategies:
         fn = _strategy(name)
+        budget = deadline - time.perf_counter()
+        if budget <= 0:
+            result.tried.append(f"{name} (not tried: time budget of {limit:g} s spent)")
+            continue
         try:
-            with time_limit(limit):
-                rest = [fn(d) for d in diffs]
+            with time_limit(budget):
+                rest = [fn(p) for p in pairs] if name == "squares" else [fn(d) for d in diffs]
         except TimeLimitExceeded:
-            result.tried.append(f"{name} (time limit {limit:g} s)")
+            result.tried.append(f"{name} (stopped at the time budget of {limit:g} s)")
             continue
         except Exception as exc:  # a strategy that crashes is a strategy that failed
             result.tried.append(f"{name} ({type(exc).__name__})")

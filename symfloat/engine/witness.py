@@ -228,13 +228,14 @@ class HullWitness(MeasuredWitness):
             if self.quantity == "height":
                 return _mpf(centroid[self.axis] - min(p[self.axis] for p in pts))
             return tuple(_mpf(c) for c in centroid)
-        if self.quantity == "volume":
-            return method.integrate(pts, self.axis, 0)
-        if self.quantity == "height":
-            base = min(p[self.axis] for p in pts)
-            return method.integrate(pts, self.axis, 1) / method.integrate(pts, self.axis, 0) - base
-        volume = method.integrate(pts, 0, 0)
-        return tuple(method.integrate(pts, ax, 1) / volume for ax in range(3))
+        with mpmath.workdps(method.dps + 5):
+            if self.quantity == "volume":
+                return method.integrate(pts, self.axis, 0)
+            if self.quantity == "height":
+                base = min(p[self.axis] for p in pts)
+                return method.integrate(pts, self.axis, 1) / method.integrate(pts, self.axis, 0) - _mpf(base)
+            volume = method.integrate(pts, 0, 0)
+            return tuple(method.integrate(pts, ax, 1) / volume for ax in range(3))
 
 
 @dataclass(frozen=True)
