@@ -1,0 +1,116 @@
+"""The ``symfloat`` command line.
+
+    symfloat verify [SELECTOR] [--format table|json]
+    symfloat errata [--format md|json] [--output FILE]
+    symfloat notebooks [SELECTOR] [--output DIR]
+    symfloat run
+
+Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET=1``) silences it.
+Exit status: 0 when every check behaves as declared, 1 when a check fails
+unexpectedly, 2 on bad input.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from collections import Counter
+from pathlib import Path
+
+from .engine.cache import ReportCache
+from .engine.runner import Progress, verify
+from .registry import SelectorError, select
+from .report.errata import errata_json, errata_markdown
+from .report.files import write_if_changed
+from .report.notebooks import write_notebooks
+from .report.record import record_json, verification_table
+
+DOCS = Path("docs")
+
+
+def _parser():
+    common = argparse.ArgumentParser(add_help=False)
+    common.add_argument("--quiet", action="store_true", help="no progress on stderr")
+    common.add_argument("--no-cache", action="store_true", help="re-check every derivation")
+    p = argparse.ArgumentParser(prog="symfloat", description="Machine-checked re-derivation of classical "
+                                "texts on floating bodies and centroids.")
+    sub = p.add_subparsers(dest="command", required=True)
+    v = sub.add_parser("verify", parents=[common], help="check derivations and print verdicts")
+    v.add_argument("selector", nargs="?", help="a source key (graefe) or a derivation-id prefix")
+    v.add_argument("--format", choices=("table", "json"), default="table")
+    e = sub.add_parser("errata", parents=[common], help="write docs/errata.md or print the errata as JSON")
+    e.add_argument("selector", nargs="?")
+    e.add_argument("--format", choices=("md", "json"), default="md")
+    e.add_argument("--output", type=Path, help="file for the Markdown report (default docs/errata.md)")
+    n = sub.add_parser("notebooks", parents=[common], help="build and execute the derivation notebooks")
+    n.add_argument("selector", nargs="?")
+    n.add_argument("--output", type=Path, default=Path("notebooks"))
+    sub.add_parser("run", parents=[common], help="verify everything and write every report and notebook")
+    return p
+
+
+def _progress(args):
+    return Progress(quiet=args.quiet or os.environ.get("SYMFLOAT_QUIET") == "1")
+
+
+def _reports(args, selector=None):
+    return verify(selector, cache=ReportCache(enabled=not args.no_cache), progress=_progress(args))
+
+
+def _failed(reports) -> bool:
+    return any(r.failures for r in reports)
+
+
+def _summary_by_source(reports) -> str:
+    lines = []
+    for source in dict.fromkeys(r.source for r in reports):
+        fs = [f for r in reports if r.source == source for f in r.formulas]
+        c = Counter(f.verdict for f in fs)
+        secs = sum(r.seconds for r in reports if r.source == source)
+        lines.append(f"{source}: {len(fs)} printed formulas — {c['verified']} verified, {c['erratum']} errata, "
+                     f"{c['unverifiable']} unverifiable ({secs:.1f} s)")
+    return "\n".join(lines)
+
+
+def main(argv=None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        if args.command == "verify":
+            reports = _reports(args, args.selector)
+            print(record_json(reports) if args.format == "json" else verification_table(reports), end="")
+        elif args.command == "errata":
+            reports = _reports(args, args.selector)
+            if args.format == "json":
+                print(errata_json(reports), end="")
+            else:
+                out = args.output or DOCS / "errata.md"
+                write_if_changed(out, errata_markdown(reports))
+                print(f"wrote {out}", file=sys.stderr)
+        elif args.command == "notebooks":
+            ids = select(args.selector)
+            _reports(args, args.selector)
+            progress = None if args.quiet else (lambda d: print(f"executing notebook {d}", file=sys.stderr))
+            written = write_notebooks(ids, args.output, progress)
+            print(f"{len(written)} of {len(ids)} notebooks changed in {args.output}", file=sys.stderr)
+            reports = []
+        else:  # run
+            reports = _reports(args)
+            write_if_changed(DOCS / "verification.json", record_json(reports))
+            write_if_changed(DOCS / "errata.json", errata_json(reports))
+            write_if_changed(DOCS / "errata.md", errata_markdown(reports))
+            progress = None if args.quiet else (lambda d: print(f"executing notebook {d}", file=sys.stderr))
+            written = write_notebooks([r.id for r in reports], "notebooks", progress)
+            print(_summary_by_source(reports))
+            print(f"wrote docs/verification.json, docs/errata.json, docs/errata.md; "
+                  f"{len(written)} notebooks changed")
+            for r in reports:
+                for msg in r.failures:
+                    print(f"FAILURE: {msg}")
+    except SelectorError as exc:
+        print(f"symfloat: {exc}", file=sys.stderr)
+        return 2
+    return 1 if _failed(reports) else 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

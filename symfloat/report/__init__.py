@@ -1,0 +1,1 @@
+"""Writers of the verification record, the errata report and the notebooks."""

@@ -1,0 +1,67 @@
+"""The command line and its JSON contracts (design brief, 'Output contracts')."""
+import json
+
+import pytest
+
+from symfloat.cli import main
+
+FORMULA_KEYS = {"id", "source", "locator", "verdict", "evidence", "numeric"}
+RECORD_KEYS = {"method", "abs_error", "rel_error", "seconds"}
+ERRATUM_KEYS = {"id", "source", "locator", "printed", "corrected", "kind", "confidence", "evidence", "derivation"}
+
+
+@pytest.fixture
+def in_tmp(tmp_path, monkeypatch, cache_dir, graefe_reports):
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("SYMFLOAT_CACHE", str(cache_dir))
+    return tmp_path
+
+
+def test_verify_json_contract(in_tmp, capsys):
+    assert main(["verify", "graefe", "--format", "json", "--quiet"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["formulas"] and set(out["summary"]) >= {"verified", "erratum", "unverifiable", "seconds"}
+    for f in out["formulas"]:
+        assert FORMULA_KEYS <= set(f) and f["source"] == "graefe"
+        assert f["verdict"] in ("verified", "erratum", "unverifiable")
+        assert f["evidence"] in ("symbolic", "sampled", "numeric", None)
+        for rec in f["numeric"]:
+            assert RECORD_KEYS <= set(rec) and rec["seconds"] >= 0
+    s = out["summary"]
+    assert s["verified"] + s["erratum"] + s["unverifiable"] == len(out["formulas"]) == s["formulas"]
+
+
+def test_selector_computes_only_what_it_selects_and_its_ancestors(in_tmp, capsys):
+    assert main(["verify", "graefe-s3", "--format", "json", "--quiet"]) == 0
+    derivations = json.loads(capsys.readouterr().out)["summary"]["derivations"]
+    assert derivations == ["graefe-s1-prismatoid-volume", "graefe-s3-prismatoid-centroid"]
+
+
+def test_errata_json_contract(in_tmp, capsys):
+    assert main(["errata", "graefe", "--format", "json", "--quiet"]) == 0
+    entries = json.loads(capsys.readouterr().out)
+    assert entries
+    for e in entries:
+        assert ERRATUM_KEYS <= set(e)
+        assert e["kind"] in ("transcription", "misprint", "calculation", "consequential", "claim")
+        assert e["confidence"] in ("high", "medium", "low") and e["evidence"]
+    assert len({e["id"] for e in entries}) == len(entries)
+
+
+def test_errata_markdown_is_written(in_tmp):
+    assert main(["errata", "graefe", "--quiet"]) == 0
+    text = (in_tmp / "docs" / "errata.md").read_text(encoding="utf-8")
+    assert text.startswith("# Errata") and "## graefe" in text
+
+
+def test_unknown_selector_is_one_clear_message(in_tmp, capsys):
+    assert main(["verify", "nosuchsource", "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("symfloat: selector 'nosuchsource' matches no derivation") and "Traceback" not in err
+
+
+def test_table_is_readable(in_tmp, capsys):
+    assert main(["verify", "graefe-s1", "--quiet"]) == 0
+    out = capsys.readouterr().out
+    assert out.splitlines()[0].split()[:3] == ["formula", "locator", "verdict"]
+    assert "printed formulas:" in out

@@ -1,0 +1,59 @@
+"""The identity checker proves, refutes with a counterexample, and says when
+it cannot decide."""
+import sympy as sp
+
+from symfloat.engine.identity import Domain, check_identity
+from symfloat.engine.timelimit import TimeLimitExceeded, time_limit
+
+x, y, r = sp.symbols("x y r", positive=True)
+DOMAIN = Domain({x: (1, 5), y: (1, 5), r: (1, 3)}, (x < y,))
+
+
+def test_rational_identity_is_proved():
+    res = check_identity((x + y) ** 3, x**3 + 3 * x**2 * y + 3 * x * y**2 + y**3, DOMAIN, "t1")
+    assert res.status == "proved" and res.evidence == "symbolic" and res.exact
+
+
+def test_wrong_coefficient_is_refuted_with_counterexample():
+    res = check_identity((x + y) ** 3, x**3 + 3 * x**2 * y + 4 * x * y**2 + y**3, DOMAIN, "t2")
+    assert res.status == "refuted"
+    point = {sp.Symbol(k, positive=True): sp.Rational(v) for k, v in res.counterexample["point"].items()}
+    assert ((x + y) ** 3 - (x**3 + 3 * x**2 * y + 4 * x * y**2 + y**3)).xreplace(point) != 0
+
+
+def test_transcendental_identity_sampled_at_high_precision():
+    res = check_identity(sp.Integral(sp.pi * (r**2 - x**2), (x, -r, r)), 4 * sp.pi * r**3 / 3, DOMAIN, "t3")
+    assert res.holds and not res.exact
+
+
+def test_transcendental_mismatch_in_the_40th_digit_is_refuted():
+    res = check_identity(sp.pi * r, sp.pi * r * (1 + sp.Rational(1, 10**40)), DOMAIN, "t4")
+    assert res.status == "refuted"
+
+
+def test_constraints_are_honoured():
+    # sqrt(y - x) is real only because the domain says x < y
+    res = check_identity(sp.sqrt(y - x) ** 2, y - x, DOMAIN, "t5")
+    assert res.holds
+
+
+def test_sampling_is_reproducible():
+    a = check_identity(x * y, x * y + 1, DOMAIN, "same-seed")
+    b = check_identity(x * y, x * y + 1, DOMAIN, "same-seed")
+    assert a.counterexample == b.counterexample
+
+
+def test_undecided_when_no_sample_satisfies_the_assumptions():
+    empty = Domain({x: (1, 5), y: (1, 5)}, (x > y + 10,))
+    res = check_identity(x + y, y + x + 1, empty, "t6")  # no sample, no proof
+    assert res.status == "undecided" and res.samples == 0
+
+
+def test_time_limit_interrupts():
+    import time
+    try:
+        with time_limit(0.05):
+            time.sleep(1)
+    except TimeLimitExceeded:
+        return
+    raise AssertionError("the time limit did not fire")

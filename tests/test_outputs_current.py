@@ -1,0 +1,63 @@
+"""The committed reports and notebooks are what the code generates now.
+
+This is the proof check of CI: a verdict that changes, an erratum that
+appears or disappears, or a notebook that no longer matches fails here until
+the outputs are regenerated (``make run``) and committed.
+"""
+import json
+from pathlib import Path
+
+import nbformat
+import pytest
+
+from symfloat.report.errata import errata_json, errata_markdown
+from symfloat.report.files import without_timings
+from symfloat.report.notebooks import write_notebooks
+from symfloat.report.record import verification_record
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _stable_record(record):
+    record = json.loads(json.dumps(record))
+    record["summary"].pop("cached", None)
+    record["summary"].pop("seconds", None)
+    for f in record["formulas"]:
+        for n in f["numeric"]:
+            n.pop("seconds", None)
+    return record
+
+
+def test_no_check_fails(all_reports):
+    failures = [m for r in all_reports for m in r.failures]
+    assert failures == []
+
+
+def test_errata_report_is_current(all_reports):
+    assert (ROOT / "docs" / "errata.md").read_text(encoding="utf-8") == errata_markdown(all_reports), \
+        "docs/errata.md is stale: run `make run` and commit"
+    assert (ROOT / "docs" / "errata.json").read_text(encoding="utf-8") == errata_json(all_reports)
+
+
+def test_verification_record_is_current(all_reports):
+    committed = json.loads((ROOT / "docs" / "verification.json").read_text(encoding="utf-8"))
+    assert _stable_record(committed) == _stable_record(verification_record(all_reports)), \
+        "docs/verification.json is stale: run `make run` and commit"
+
+
+def _cells(path):
+    nb = nbformat.read(path, as_version=4)
+    return [(c.id, c.cell_type, c.source, without_timings(json.dumps(c.get("outputs", []), sort_keys=True)))
+            for c in nb.cells]
+
+
+def test_notebooks_are_current(all_reports, tmp_path, monkeypatch, cache_dir):
+    monkeypatch.setenv("SYMFLOAT_CACHE", str(cache_dir))
+    monkeypatch.chdir(ROOT)
+    ids = [r.id for r in all_reports]
+    write_notebooks(ids, tmp_path)
+    for did in ids:
+        committed = ROOT / "notebooks" / f"{did}.ipynb"
+        assert committed.exists(), f"notebooks/{did}.ipynb is missing: run `make run`"
+        assert _cells(committed) == _cells(tmp_path / f"{did}.ipynb"), f"notebooks/{did}.ipynb is stale"
+    assert sorted(p.stem for p in (ROOT / "notebooks").glob("*.ipynb")) == sorted(ids)
