@@ -19,6 +19,8 @@ The print drops the factor 1/3 from the first slab ``I' = 2m/3 (…)`` on, and
 carries the omission through to ``I = m (a + 4b + … + g)``; §4 relies on the
 wrong factor (see ``graefe-s4-ship-centroid``).
 """
+from dataclasses import replace
+
 import mpmath
 import sympy as sp
 
@@ -96,6 +98,7 @@ d.step("paraboloid-volume-integral", (I_p, sp.Integral(A_p, (z, 0, x))), "integr
 d.step("paraboloid-volume-value", (I_p, x / 3 * (p * x * pi + 2 * p * x * pi), p * x ** 2 * pi), "algebra",
        uses=("paraboloid-volume",))
 
+d.quote("paraboloid-base-radius", "§2 paraboloid", r"$y^2 = 2px$", reading=(A_p.subs(z, 0) / pi, 2 * p * x))
 d.quote("paraboloid-mid-radius", "§2 paraboloid", r"$y'^2 = px$", reading=(A_p.subs(z, x / 2) / pi, p * x))
 d.quote("paraboloid-volume", "§2 paraboloid",
         r"$$I = \frac{x}{3} \left\{ px\pi + 2px\pi \right\} = px^2\pi.$$",
@@ -318,17 +321,31 @@ for name, targets, lo in (("slab-a-c", ("slab-a-c",), 0), ("slab-c-e", ("slab-c-
 d.witness(SectionIntegral("whole-body", "∫ A dz over 6m for bodies with cubic section areas",
                           ("sum-1", "sum-2", "simpson-rule", "simpson-identical"), CUBIC_CASES,
                           area=A3, z=z, bounds=(0, 6 * m)))
-d.witness(SectionIntegral("whole-body-2-slabs", "∫ A dz over 4m (5 sections) for bodies with cubic sections",
-                          ("odd-number-of-sections",), CUBIC_CASES, area=A3, z=z, bounds=(0, 4 * m)))
 
 
-def _runge(u):
-    return 1 / (1 + u ** 2)
+class _Prefixes(SectionIntegral):
+    """The volumes ∫_0^{2nm} A dz for n = 1, 2, 3, 4 (3, 5, 7, 9 sections), one quadrature each."""
+
+    def measure(self, case, method):
+        return tuple(replace(self, bounds=(0, 2 * n * m)).measure_one(case, method) for n in range(1, 5))
+
+    def measure_one(self, case, method):
+        return SectionIntegral.measure(self, case, method)
+
+
+d.witness(_Prefixes("odd-number-of-sections", "∫ A dz over 2m, 4m, 6m, 8m for bodies with cubic section areas",
+                    ("odd-number-of-sections",), CUBIC_CASES, area=A3, z=z))
+
+
+def _reciprocal(u):
+    return 1 / (1 + u)
 
 
 d.witness(ConvergenceOrder("simpson-order-exp", "composite Simpson on ∫_0^1 exp",
                            ("simpson-identical", "odd-number-of-sections"), composite_simpson, mpmath.exp,
                            (mpmath.mpf(0), mpmath.mpf(1)), mpmath.e - 1, 4))
-d.witness(ConvergenceOrder("simpson-order-runge", "composite Simpson on ∫_0^1 1/(1+z²)",
-                           ("simpson-identical", "odd-number-of-sections"), composite_simpson, _runge,
-                           (mpmath.mpf(0), mpmath.mpf(1)), mpmath.pi / 4, 4))
+# (not 1/(1+z²) on [0, 1]: its third derivative vanishes at both ends, which cancels the h⁴ term
+# of the error and makes the measured order 6)
+d.witness(ConvergenceOrder("simpson-order-reciprocal", "composite Simpson on ∫_0^1 1/(1+z)",
+                           ("simpson-identical", "odd-number-of-sections"), composite_simpson, _reciprocal,
+                           (mpmath.mpf(0), mpmath.mpf(1)), mpmath.log(2), 4))

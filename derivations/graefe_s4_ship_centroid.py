@@ -1,0 +1,249 @@
+"""Graefe 1866, end of §4: the centroid of a ship's displacement.
+
+The immersed body is cut by equidistant planes (spacing ``m``) with areas
+``a, b, c, d, e, f, g``; each pair of slabs between ``a`` and ``c``, ``c``
+and ``e``, ``e`` and ``g`` is treated as a prismatoid of height ``2m``.  The
+centroid of each from §3, ``X = h (g/2 + D) / ((G + g)/2 + 2 D)``, and its
+volume from §1 give the moments about the plane ``ABC``; their sum is
+
+    ``X V = m²/3 (a·0 + 4b·1 + 2c·2 + 4d·3 + 2e·4 + 4f·5 + g·6)``
+
+and with ``V = m/3 (a + 4b + 2c + 4d + 2e + 4f + g)``
+
+    ``x = m (a·0 + 4b·1 + … + g·6) / (a + 4b + 2c + 4d + 2e + 4f + g)``.
+
+The print has ``x = m/3 (…)/(…)``: it divides by the ``V = m (…)`` printed
+in §2 (where the factor 1/3 is lost), although §4 itself uses the correct
+slab volumes ``v' = 2m/3 (…)``.
+"""
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, SectionIntegral
+
+G, g, D, h, z = sp.symbols("G g D h z", positive=True)
+a, b, c, dd, e, f, m = sp.symbols("a b c d e f m", positive=True)
+k = sp.symbols("k_0:3", real=True)
+Xp, Vp = sp.symbols("X V_P", positive=True)                    # the prismatoid of §1/§3
+x1, x2, x3 = sp.symbols("x' x'' x'''", positive=True)        # slab centroids from ABC
+x2l, x3l = sp.symbols("xi'' xi'''", positive=True)            # the same from the planes c and e
+v1, v2, v3 = sp.symbols("v' v'' v'''", positive=True)
+M1, M2, M3 = sp.symbols("m' m'' m'''", positive=True)         # the moments (print: m', m'', m''')
+M, V, XS = sp.symbols("M V x", positive=True)                 # the whole body: moment, volume, centroid
+
+
+def centroid(G_, g_, D_, h_):
+    """§3: X = h (g/2 + D) / ((G + g)/2 + 2D), distance of the centroid from the plane G."""
+    return (h * (g / 2 + D) / ((G + g) / 2 + 2 * D)).xreplace({G: G_, g: g_, D: D_, h: h_})
+
+
+def volume(G_, g_, D_, h_):
+    """§1: V = h/3 ((G + g)/2 + 2D)."""
+    return (h / 3 * ((G + g) / 2 + 2 * D)).xreplace({G: G_, g: g_, D: D_, h: h_})
+
+
+DERIVATION = d = Derivation(
+    id="graefe-s4-ship-centroid",
+    source="graefe",
+    title="The centroid of a ship's displacement from equidistant sections",
+    locator="§4 ship displacement centroid",
+    summary="Centroids and volumes of three prismatoid slabs, their moments about the first section, "
+            "and x = m (0a + 4b + 4c + 12d + 8e + 20f + 6g)/(a + 4b + 2c + 4d + 2e + 4f + g) "
+            "(printed with m/3).",
+    requires=("graefe-s2-volumes-simpson", "graefe-s3-prismatoid-centroid"),
+    domain={**{s: (1, 20) for s in (G, g, D, h, a, b, c, dd, e, f, m)}, **{s: (-3, 3) for s in k}},
+    assumptions=("the section areas a, …, g are positive, at spacing m",
+                 "each pair of slabs is a prismatoid (exactly so when the section area is a quadratic "
+                 "polynomial of the distance on it)"),
+)
+
+# ---- the prismatoid formulas applied -----------------------------------------------------
+d.step("prismatoid-centroid", sp.Eq(Xp, centroid(G, g, D, h)), "lemma",
+       uses=("graefe-s3-prismatoid-centroid:centroid-collected",), result=Xp)
+d.step("prismatoid-volume", sp.Eq(Vp, volume(G, g, D, h)), "lemma",
+       uses=("graefe-s1-prismatoid-volume:volume-collected",), result=Vp)
+
+# first slab, a to c
+d.step("x1", sp.Eq(x1, centroid(a, c, b, 2 * m)), "lemma", uses=("prismatoid-centroid",), result=x1,
+       note="G = a, D = b, g = c, h = 2m")
+d.step("v1", sp.Eq(v1, volume(a, c, b, 2 * m)), "lemma", uses=("prismatoid-volume",), result=v1)
+d.step("m1", sp.Eq(M1, x1 * v1), "definition", uses=("x1", "v1"), result=M1,
+       note="moment of the slab about the plane ABC")
+d.step("m1-value", (M1, 4 * m ** 2 / 3 * (c / 2 + b)), "algebra", uses=("m1",))
+
+# second slab, c to e
+d.step("x2-local", sp.Eq(x2l, centroid(c, e, dd, 2 * m)), "lemma", uses=("prismatoid-centroid",), result=x2l,
+       note="distance from the plane c: G = c, D = d, g = e, h = 2m")
+d.step("x2", sp.Eq(x2, 2 * m + x2l), "definition", uses=("x2-local",), result=x2,
+       note="the plane c lies 2m from ABC")
+x2_b = 2 * m * (((c + e) / 2 + 2 * dd + e / 2 + dd) / ((c + e) / 2 + 2 * dd))
+d.step("x2-value", (x2, x2_b), "algebra", uses=("x2",))
+d.step("v2", sp.Eq(v2, volume(c, e, dd, 2 * m)), "lemma", uses=("prismatoid-volume",), result=v2)
+d.step("m2", sp.Eq(M2, x2 * v2), "definition", uses=("x2", "v2"), result=M2)
+m2_v = 4 * m ** 2 / 3 * ((c + e) / 2 + 2 * dd + e / 2 + dd)
+d.step("m2-value", (M2, m2_v), "algebra", uses=("m2",))
+
+# third slab, e to g
+d.step("x3-local", sp.Eq(x3l, centroid(e, g, f, 2 * m)), "lemma", uses=("prismatoid-centroid",), result=x3l)
+d.step("x3", sp.Eq(x3, 4 * m + x3l), "definition", uses=("x3-local",), result=x3,
+       note="the plane e lies 4m from ABC")
+x3_b = (4 * m * ((e + g) / 2 + 2 * f) + 2 * m * (g / 2 + f)) / ((e + g) / 2 + 2 * f)
+d.step("x3-value", (x3, x3_b), "algebra", uses=("x3",))
+d.step("v3", sp.Eq(v3, volume(e, g, f, 2 * m)), "lemma", uses=("prismatoid-volume",), result=v3)
+d.step("m3", sp.Eq(M3, x3 * v3), "definition", uses=("x3", "v3"), result=M3)
+m3_v = 8 * m ** 2 / 3 * ((e + g) / 2 + 2 * f) + 4 * m ** 2 / 3 * (g / 2 + f)
+d.step("m3-value", (M3, m3_v), "algebra", uses=("m3",))
+
+# the whole body
+d.step("moment", sp.Eq(M, M1 + M2 + M3), "definition", uses=("m1", "m2", "m3"), result=M,
+       note="the moment theorem: the moment of the whole is the sum of the moments of the parts")
+xv_1 = m ** 2 / 3 * (2 * c + 4 * b + 2 * c + 2 * e + 8 * dd + 2 * e + 4 * dd + 4 * e + 4 * g + 16 * f + 2 * g + 4 * f)
+xv_2 = m ** 2 / 3 * (4 * b + 4 * c + 12 * dd + 8 * e + 20 * f + 6 * g)
+NUM = a * 0 + 4 * b * 1 + 2 * c * 2 + 4 * dd * 3 + 2 * e * 4 + 4 * f * 5 + g * 6
+DEN = a + 4 * b + 2 * c + 4 * dd + 2 * e + 4 * f + g
+xv_3 = m ** 2 / 3 * NUM
+d.step("moment-value", (M, xv_1, xv_2, xv_3), "algebra", uses=("moment", "m1-value", "m2-value", "m3-value"))
+d.step("volume", sp.Eq(V, v1 + v2 + v3), "definition", uses=("v1", "v2", "v3"), result=V)
+d.step("volume-simpson", (V, m / 3 * DEN), "lemma", uses=("volume", "graefe-s2-volumes-simpson:simpson-7"),
+       note="Simpson's rule as derived in §2 (with the factor m/3)")
+d.step("centroid", sp.Eq(XS, M / V), "definition", uses=("moment", "volume"), result=XS)
+d.step("centroid-value", (XS, xv_3 / (m / 3 * DEN), m * (NUM / DEN)), "algebra",
+       uses=("centroid", "moment-value", "volume-simpson"))
+d.step("centroid-equal-sections", ((m * NUM / DEN).xreplace({s: a for s in (b, c, dd, e, f, g)}), 3 * m),
+       "algebra", uses=("centroid-value",),
+       note="check of the rule: with all sections equal (a prism of length 6m) the centroid lies in the "
+            "middle, 3m from ABC")
+
+# ---- printed -------------------------------------------------------------------------------------
+d.quote("prismatoid-centroid", "§4 ship displacement centroid",
+        r"$$X = h \left\{ \frac{\frac{g}{2} + D}{\frac{G + g}{2} + 2D} \right\}$$",
+        reading=sp.Eq(Xp, h * (g / 2 + D) / ((G + g) / 2 + 2 * D)))
+d.quote("x1", "§4 ship displacement centroid",
+        r"$$x' = 2m \left\{ \frac{\frac{c}{2} + b}{\frac{a + c}{2} + 2b} \right\}$$",
+        reading=sp.Eq(x1, 2 * m * ((c / 2 + b) / ((a + c) / 2 + 2 * b))))
+d.quote("prismatoid-volume", "§4 ship displacement centroid",
+        r"$V = \frac{h}{3} \left\{ \frac{G + g}{2} + 2D \right\}$",
+        reading=sp.Eq(Vp, h / 3 * ((G + g) / 2 + 2 * D)))
+d.quote("v1", "§4 ship displacement centroid",
+        r"$v' = \frac{2m}{3} \left\{ \frac{a + c}{2} + 2b \right\}$",
+        reading=sp.Eq(v1, 2 * m / 3 * ((a + c) / 2 + 2 * b)))
+d.quote("m1", "§4 ship displacement centroid",
+        r"$$m' = x' v' = \frac{4m^2}{3} \left\{ \frac{c}{2} + b \right\} . -$$",
+        reading=(M1, x1 * v1, 4 * m ** 2 / 3 * (c / 2 + b)))
+
+x1_expr = 2 * m * ((c / 2 + b) / ((a + c) / 2 + 2 * b))
+d.quote("substitution", "§4 ship displacement centroid",
+        r"wenn wir für  $a, b, c$  jetzt  $e, d, e$  setzen:",
+        reading=(x2l, x1_expr.xreplace({a: e, b: dd, c: e})),
+        erratum=Erratum("transcription", "medium", r"wenn wir für  $a, b, c$  jetzt  $c, d, e$  setzen",
+                        "The slab from c to e has G = c, D = d, g = e: the next display, 2m{(e/2 + d)/((c+e)/2 + "
+                        "2d)}, is x' with a, b, c replaced by c, d, e, not by e, d, e (which would give "
+                        "2m{(e/2 + d)/(e + 2d)}). c and e are easily confused in the scan of this print; whether "
+                        "the print itself had the slip cannot be told from the transcription.",
+                        corrected_reading=(x2l, x1_expr.xreplace({a: c, b: dd, c: e}))))
+d.quote("x2-local", "§4 ship displacement centroid",
+        r"$$2m \left\{ \frac{\frac{e}{2} + d}{\frac{c+e}{2} + 2d} \right\}$$",
+        reading=(x2l, 2 * m * ((e / 2 + dd) / ((c + e) / 2 + 2 * dd))))
+d.quote("x2-a", "§4 ship displacement centroid",
+        r"$$x'' = 2m + 2m \left\{ \frac{\frac{e}{2} + d}{\frac{c+e}{2} + 2d} \right\} \text{ oder}$$",
+        reading=sp.Eq(x2, 2 * m + 2 * m * ((e / 2 + dd) / ((c + e) / 2 + 2 * dd))))
+d.quote("x2-b", "§4 ship displacement centroid",
+        r"$$x'' = 2m \left\{ \frac{\frac{c+e}{2} + 2d + \frac{e}{2} + d}{\frac{c+e}{2} + 2d} \right\}$$",
+        reading=sp.Eq(x2, x2_b))
+d.quote("v2", "§4 ship displacement centroid",
+        r"$$v'' = \frac{2m}{3} \left\{ \frac{c+e}{2} + 2d \right\},$$",
+        reading=sp.Eq(v2, 2 * m / 3 * ((c + e) / 2 + 2 * dd)))
+d.quote("m2", "§4 ship displacement centroid",
+        r"$$m'' = x'' v'' = \frac{4m^2}{3} \left\{ \frac{c+e}{2} + 2d + \frac{e}{2} + d \right\}.$$",
+        reading=(M2, x2 * v2, m2_v))
+d.quote("x3-local", "§4 ship displacement centroid",
+        r"$$2m \left\{ \frac{\frac{g}{2} + f}{\frac{e+g}{2} + 2f} \right\}$$",
+        reading=(x3l, 2 * m * ((g / 2 + f) / ((e + g) / 2 + 2 * f))))
+d.quote("x3-a", "§4 ship displacement centroid",
+        r"$$x''' = 4m + 2m \left\{ \frac{\frac{g}{2} + f}{\frac{e+g}{2} + 2f} \right\} \text{ oder}$$",
+        reading=sp.Eq(x3, 4 * m + 2 * m * ((g / 2 + f) / ((e + g) / 2 + 2 * f))))
+d.quote("x3-b", "§4 ship displacement centroid",
+        r"$$x''' = \frac{4m \left\{ \frac{e+g}{2} + 2f \right\} + 2m \left\{ \frac{g}{2} + f \right\}}"
+        r"{\frac{e+g}{2} + 2f}$$",
+        reading=sp.Eq(x3, x3_b))
+d.quote("v3", "§4 ship displacement centroid",
+        r"$$v''' = \frac{2m}{3} \left\{ \frac{e+g}{2} + 2f \right\}, \text{ so ist sein Moment in Bezug auf die}$$",
+        reading=sp.Eq(v3, 2 * m / 3 * ((e + g) / 2 + 2 * f)))
+d.quote("m3", "§4 ship displacement centroid",
+        r"$$m''' = x''' v''' = \frac{8m^2}{3} \left\{ \frac{e+g}{2} + 2f \right\} + \frac{4m^2}{3} "
+        r"\left\{ \frac{g}{2} + f \right\}.$$",
+        reading=(M3, x3 * v3, m3_v))
+d.quote("moment-theorem", "§4 ship displacement centroid",
+        r"$M = XV = x'v' + x''v'' + x'''v'''$",
+        reading=(M, XS * V, x1 * v1 + x2 * v2 + x3 * v3))
+d.quote("moment-1", "§4 ship displacement centroid",
+        r"$$XV = \frac{m^2}{3} \left\{ 2c + 4b + 2c + 2e + 8d + 2e + 4d + 4e + 4g + 16f + 2g + 4f \right\}$$",
+        reading=sp.Eq(XS * V, xv_1))
+d.quote("moment-2", "§4 ship displacement centroid",
+        r"$$XV = \frac{m^2}{3} \left\{ 4b + 4c + 12d + 8e + 20f + 6g \right\}.$$",
+        reading=sp.Eq(XS * V, xv_2))
+d.quote("moment-3", "§4 ship displacement centroid",
+        r"$$XV = \frac{m^2}{3} \left\{ a \times 0 + 4b \times 1 + 2c \times 2 + 4d \times 3 + 2e \times 4 + "
+        r"4f \times 5 + g \times 6 \right\}$$",
+        reading=sp.Eq(XS * V, xv_3))
+d.quote("centroid", "§4 ship displacement centroid",
+        r"$$x = \frac{m}{3} \left\{ \frac{a \times 0 + 4b \times 1 + 2c \times 2 + 4d \times 3 + 2e \times 4 + "
+        r"4f \times 5 + g \times 6}{a + 4b + 2c + 4d + 2e + 4f + g} \right\}.$$",
+        reading=sp.Eq(XS, m / 3 * (NUM / DEN)),
+        erratum=Erratum("consequential", "high",
+                        r"x = m \left\{ \frac{a \times 0 + 4b \times 1 + 2c \times 2 + 4d \times 3 + 2e \times 4 + "
+                        r"4f \times 5 + g \times 6}{a + 4b + 2c + 4d + 2e + 4f + g} \right\}",
+                        "x = XV / V with XV = m²/3 {...} and V = v' + v'' + v''' = m/3 {a + 4b + ... + g}; the "
+                        "print divides by the V = m {a + 4b + ... + g} printed in §2, where the factor 1/3 of "
+                        "Simpson's rule is lost (graefe-s2-volumes-simpson/simpson-rule): XV / (m {...}) is "
+                        "exactly the printed m/3 {...}. Check: with all sections equal the body is a prism of "
+                        "length 6m, its centroid lies at 3m; the print gives m.",
+                        corrected_reading=sp.Eq(XS, m * (NUM / DEN))))
+
+# ---- witnesses ----------------------------------------------------------------------------------------
+# Bodies whose section area is a quadratic polynomial of the distance from ABC: every slab is then
+# exactly a prismatoid in the sense of §3 (its z·A(z) is cubic), and so is the whole body.
+A2 = k[0] + k[1] * z + k[2] * z ** 2
+SEC = (a, b, c, dd, e, f, g)
+QUADRATICS = ((sp.Rational(2), sp.Rational(1, 2), sp.Rational(-1, 9), sp.Rational(1, 2)),
+              (sp.Rational(1, 3), sp.Rational(3), sp.Rational(-2, 5), sp.Rational(1, 3)),
+              (sp.Rational(5), sp.Rational(-1, 2), sp.Rational(1, 7), sp.Rational(3, 4)))
+
+
+def _case(coeffs):
+    *ks, mv = coeffs
+    values = dict(zip(k, ks))
+    area = A2.xreplace(values)
+    assert all(area.subs(z, mv * j / 10) > 0 for j in range(61)), "section areas must be positive"
+    sections = {s: area.subs(z, i * mv) for i, s in enumerate(SEC)}
+    return Case({**values, m: mv, **sections}, label=f"A(z) = {area}, m = {mv}")
+
+
+CASES = tuple(_case(q) for q in QUADRATICS)
+PRISMATOID_CASES = tuple(Case({**c_.params, G: c_.params[a], D: c_.params[b], g: c_.params[c], h: 2 * c_.params[m]},
+                              label=c_.label + ", the slab a to c") for c_ in CASES)
+
+d.witness(SectionIntegral("prismatoid-centroid", "centroid of bodies with quadratic A(z) above G",
+                          ("prismatoid-centroid",), PRISMATOID_CASES, area=A2, z=z, bounds=(0, h),
+                          quantity="centroid"))
+d.witness(SectionIntegral("prismatoid-volume", "volume of bodies with quadratic A(z)",
+                          ("prismatoid-volume",), PRISMATOID_CASES, area=A2, z=z, bounds=(0, h)))
+for n, (lo, tc, tv, tm) in enumerate(((0, ("x1",), ("v1",), ("m1",)),
+                                      (2, ("x2-a", "x2-b"), ("v2",), ("m2",)),
+                                      (4, ("x3-a", "x3-b"), ("v3",), ("m3",))), 1):
+    bounds = (lo * m, (lo + 2) * m)
+    d.witness(SectionIntegral(f"slab-{n}-centroid", f"centroid of slab {n} from the plane ABC",
+                              tc, CASES, area=A2, z=z, bounds=bounds, quantity="centroid", origin=0))
+    d.witness(SectionIntegral(f"slab-{n}-volume", f"volume of slab {n}", tv, CASES, area=A2, z=z, bounds=bounds))
+    d.witness(SectionIntegral(f"slab-{n}-moment", f"moment of slab {n} about the plane ABC",
+                              tm, CASES, area=A2, z=z, bounds=bounds, quantity="moment", origin=0))
+d.witness(SectionIntegral("slab-2-local-centroid", "centroid of slab 2 from the plane c",
+                          ("substitution", "x2-local"), CASES, area=A2, z=z, bounds=(2 * m, 4 * m),
+                          quantity="centroid"))
+d.witness(SectionIntegral("slab-3-local-centroid", "centroid of slab 3 from the plane e",
+                          ("x3-local",), CASES, area=A2, z=z, bounds=(4 * m, 6 * m), quantity="centroid"))
+d.witness(SectionIntegral("body-moment", "moment of the whole body about the plane ABC",
+                          ("moment-theorem", "moment-1", "moment-2", "moment-3"), CASES, area=A2, z=z,
+                          bounds=(0, 6 * m), quantity="moment", origin=0))
+d.witness(SectionIntegral("body-centroid", "centroid of the whole body from the plane ABC",
+                          ("centroid",), CASES, area=A2, z=z, bounds=(0, 6 * m), quantity="centroid", origin=0))
