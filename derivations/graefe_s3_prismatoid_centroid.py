@@ -13,7 +13,9 @@ from fractions import Fraction
 import sympy as sp
 
 from symfloat import Derivation, Erratum
-from symfloat.engine.witness import Case, HullSlices, HullWitness
+import mpmath
+
+from symfloat.engine.witness import Case, Computed, HullSlices, HullWitness
 from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
 
 G, g, D, h, z = sp.symbols("G g D h z", positive=True)
@@ -220,3 +222,41 @@ d.witness(HullWitness("tetrahedron-centroid", "centroid of random tetrahedra by 
                       quantity="centroid", methods=SLICES))
 d.witness(HullWitness("prismatoid-centroid", "centroid height of random convex prismatoids",
                       ("centroid",), tuple(_prismatoid_case(s) for s in range(4)), quantity="height"))
+d.witness(HullWitness("prismatoid-moment", "moment about G of random convex prismatoids",
+                      ("moment-1", "moment-2", "moment-3"), tuple(_prismatoid_case(s) for s in range(4)),
+                      quantity="moment"))
+d.witness(HullWitness("prismatoid-volume", "volume of random convex prismatoids",
+                      ("volume",), tuple(_prismatoid_case(s) for s in range(4)), quantity="volume"))
+
+
+def _numeric_construction(case, dps):
+    """Graefe's construction done numerically: the lines CG and AF and the
+    line co meeting AC are intersected by least squares, triangles are
+    measured by Heron's formula from their side lengths."""
+    P = {n: mpmath.matrix([mpmath.mpf(int(v)) for v in case.data[i]]) for i, n in enumerate("ABCD")}
+
+    def line_meet(p1, p2, q1, q2):
+        M = mpmath.matrix([[p2[k] - p1[k], q1[k] - q2[k]] for k in range(3)])
+        t = mpmath.qr_solve(M, q1 - p1)[0]
+        return p1 + t[0] * (p2 - p1)
+
+    def dist(p, q):
+        return mpmath.norm(p - q)
+
+    def heron(p, q, r):
+        x, y, w = dist(p, q), dist(q, r), dist(r, p)
+        half = (x + y + w) / 2
+        return mpmath.sqrt(half * (half - x) * (half - y) * (half - w))
+
+    c = (P["B"] + P["D"]) / 2
+    F, Gq = c + (P["C"] - c) / 3, c + (P["A"] - c) / 3
+    o = line_meet(P["C"], Gq, P["A"], F)
+    return {"Coc:CoA": heron(P["C"], o, c) / heron(P["C"], o, P["A"]),
+            "coA:Coc": heron(c, o, P["A"]) / heron(P["C"], o, c),
+            "coA:CoA": heron(c, o, P["A"]) / heron(P["C"], o, P["A"])}
+
+
+for target, ratio in (("ratio-1", "Coc:CoA"), ("ratio-2", "coA:Coc"), ("ratio-3", "coA:CoA"), ("ratio-4", "coA:CoA")):
+    d.witness(Computed(f"triangles-{target}", f"the ratio {ratio} of triangles by Heron's formula",
+                       (target,), tuple(_tetrahedron_case(s) for s in range(3)),
+                       compute=lambda case, dps, ratio=ratio: _numeric_construction(case, dps)[ratio]))

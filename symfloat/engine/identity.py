@@ -160,6 +160,7 @@ def _sample(pairs, domain: Domain, seed_text: str, samples: int):
     symbols = set()
     for a, b in pairs:
         symbols |= a.free_symbols | b.free_symbols
+    own = set(symbols)
     for c in domain.constraints:  # a constraint on a sampled symbol fixes its partners too
         if sp.sympify(c).free_symbols & symbols:
             symbols |= sp.sympify(c).free_symbols
@@ -185,7 +186,8 @@ def _sample(pairs, domain: Domain, seed_text: str, samples: int):
                 agree = abs(va - vb) <= AGREEMENT * scale
             if not agree:
                 return "refuted", good, exact, {
-                    "point": {str(k): str(v) for k, v in sorted(point.items(), key=lambda kv: kv[0].name)},
+                    "point": {str(k): str(v) for k, v in sorted(point.items(), key=lambda kv: kv[0].name)
+                              if k in own},
                     "lhs": _show(va), "rhs": _show(vb)}
     return ("sampled" if good else "undecided"), good, exact, None
 

@@ -24,8 +24,8 @@ from ..geometry.convex import hull_volume_centroid, section_area
 from ..model.claim import members
 from .quadrature import DEFAULT_METHODS
 
-__all__ = ["Case", "Outcome", "SectionIntegral", "HullWitness", "ExactHull", "HullSlices",
-           "ConvergenceOrder"]
+__all__ = ["Case", "Outcome", "MeasuredWitness", "Computed", "Precision", "SectionIntegral", "HullWitness",
+           "ExactHull", "HullSlices", "ConvergenceOrder"]
 
 REFERENCE_DIGITS = 60
 
@@ -38,6 +38,9 @@ class Case:
     params: dict
     data: object = None
     label: str = ""
+
+    def __post_init__(self):
+        object.__setattr__(self, "params", {k: sp.sympify(v) for k, v in self.params.items()})
 
 
 @dataclass
@@ -59,7 +62,7 @@ def _expected(reading, params):
             if not v.free_symbols:
                 values.append([sp.N(c, REFERENCE_DIGITS) for c in v])
             continue
-        v = sp.sympify(m).xreplace(params)
+        v = sp.sympify(sp.sympify(m).xreplace(params))
         if not v.free_symbols:
             values.append([sp.N(v, REFERENCE_DIGITS)])
     return values
@@ -118,6 +121,33 @@ class MeasuredWitness:
                 out.note = f"{self.description}: disagrees beyond the methods' tolerances"
             outcomes[target] = out
         return outcomes
+
+
+@dataclass(frozen=True)
+class Precision:
+    """Working precision of a :class:`Computed` witness."""
+
+    dps: int
+    tolerance: float
+
+    @property
+    def name(self):
+        return "float64" if self.dps <= 15 else f"mpmath, {self.dps} digits"
+
+
+@dataclass(frozen=True)
+class Computed(MeasuredWitness):
+    """A first-principles computation written for one quantity:
+    ``compute(case, dps)`` returns the value (or a tuple) at ``dps`` digits
+    (float64 for 15).  For constructions that no generic witness covers, such
+    as intersecting lines and measuring triangles by Heron's formula."""
+
+    compute: object = None
+    methods: tuple = (Precision(15, 1e-10), Precision(50, 1e-40))
+
+    def measure(self, case, method):
+        with mpmath.workdps(method.dps):
+            return self.compute(case, method.dps)
 
 
 @dataclass(frozen=True)
@@ -213,7 +243,8 @@ def _to_fraction(x):
 class HullWitness(MeasuredWitness):
     """Volume or centroid of the convex hull of ``case.data`` (3-D rational
     points).  ``quantity``: ``volume``, ``height`` (centroid coordinate along
-    ``axis`` above the lowest vertex) or ``centroid`` (the vector)."""
+    ``axis`` above the lowest vertex), ``moment`` (volume times height) or
+    ``centroid`` (the vector)."""
 
     quantity: str = "volume"
     axis: int = 2
@@ -225,15 +256,18 @@ class HullWitness(MeasuredWitness):
             volume, centroid = hull_volume_centroid(pts)
             if self.quantity == "volume":
                 return _mpf(volume)
-            if self.quantity == "height":
-                return _mpf(centroid[self.axis] - min(p[self.axis] for p in pts))
+            height = centroid[self.axis] - min(p[self.axis] for p in pts)
+            if self.quantity in ("height", "moment"):
+                return _mpf(height if self.quantity == "height" else height * volume)
             return tuple(_mpf(c) for c in centroid)
         with mpmath.workdps(method.dps + 5):
             if self.quantity == "volume":
                 return method.integrate(pts, self.axis, 0)
-            if self.quantity == "height":
-                base = min(p[self.axis] for p in pts)
-                return method.integrate(pts, self.axis, 1) / method.integrate(pts, self.axis, 0) - _mpf(base)
+            if self.quantity in ("height", "moment"):
+                base = _mpf(min(p[self.axis] for p in pts))
+                volume = method.integrate(pts, self.axis, 0)
+                height = method.integrate(pts, self.axis, 1) / volume - base
+                return height if self.quantity == "height" else height * volume
             volume = method.integrate(pts, 0, 0)
             return tuple(method.integrate(pts, ax, 1) / volume for ax in range(3))
 
