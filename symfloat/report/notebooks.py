@@ -10,6 +10,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+import subprocess
+
 import nbformat
 from nbclient import NotebookClient
 
@@ -63,7 +65,9 @@ def build_notebook(derivation_id: str) -> nbformat.NotebookNode:
 def execute_notebook(nb, cwd: str | os.PathLike) -> nbformat.NotebookNode:
     client = NotebookClient(nb, timeout=900, kernel_name="python3", record_timing=False,
                             resources={"metadata": {"path": str(cwd)}})
-    client.execute()
+    # The kernel's own log (a transport warning at start) is noise here; a
+    # failing cell raises CellExecutionError with its traceback regardless.
+    client.execute(stderr=subprocess.DEVNULL)
     return nb
 
 
