@@ -100,3 +100,26 @@ def test_every_step_with_a_changed_coefficient_is_refuted(derivation, step):
     res = _check_chain(mutated, names, results, Domain(derivation.domain, tuple(derivation.constraints)),
                        f"mutant/{step.name}", prove=False, limit=0)
     assert res.status == "refuted" and res.counterexample, (step.name, res)
+
+
+def _example_derivation(printed_value, erratum=None):
+    """A worked-example number: the sphere volume at r = 3/2 printed to 4 decimals."""
+    d = Derivation(id="test-example", source="graefe", title="example", locator="§2", domain={r: (1, 3)})
+    d.step("value", sp.Eq(V, 4 * sp.pi * r**3 / 3), "definition", result=V)
+    d.quote("n", "§2 sphere", SPHERE, reading=(4 * sp.pi * sp.Rational(27, 8) / 3, printed_value),
+            tolerance=sp.Rational(1, 20000), erratum=erratum)
+    return d
+
+
+def test_printed_number_within_its_precision_is_verified_numerically():
+    # 4/3 pi (3/2)^3 = 14.137166941... (independent: 4.5 * pi)
+    rep = check_derivation(_example_derivation(sp.Rational("14.1372")))
+    assert (rep.formulas[0].verdict, rep.formulas[0].evidence, rep.failures) == ("verified", "numeric", [])
+
+
+def test_printed_number_off_in_the_last_digit_is_refuted():
+    err = Erratum("calculation", "high", "14.1372", "test",
+                  corrected_reading=(4 * sp.pi * sp.Rational(27, 8) / 3, sp.Rational("14.1372")))
+    rep = check_derivation(_example_derivation(sp.Rational("14.1374"), err))
+    assert rep.failures == [] and rep.formulas[0].verdict == "erratum"
+    assert "allowed difference" in rep.formulas[0].erratum["evidence"]

@@ -22,7 +22,7 @@ import sympy as sp
 
 from ..model.claim import as_latex, members
 from ..model.derivation import Derivation, Printed
-from .identity import Domain, IdentityResult, check_identity
+from .identity import Domain, IdentityResult, check_identity, check_rounded
 
 __all__ = ["StepReport", "FormulaReport", "DerivationReport", "check_derivation"]
 
@@ -96,17 +96,19 @@ def _resolved(chain, results):
     return tuple(_substitute(m, results) for m in members(chain))
 
 
-def _check_chain(chain, names, results, domain, seed, prove, limit) -> IdentityResult:
-    """Check every link of a chain; the weakest link decides."""
+def _check_chain(chain, names, results, domain, seed, prove, limit, tolerance=None) -> IdentityResult:
+    """Check every link of a chain; the weakest link decides.  With a
+    *tolerance* the links are closed numbers compared to printed precision."""
     ms = [m for m in members(chain) if not (isinstance(m, sp.Symbol) and m in names)]
     if len(ms) < 2:
         raise ValueError(f"{seed}: nothing to check once the named quantity is removed")
     ms = [_substitute(m, results) for m in ms]
-    order = {"refuted": 0, "undecided": 1, "sampled": 2, "proved": 3}
+    order = {"refuted": 0, "undecided": 1, "agrees": 2, "sampled": 2, "proved": 3}
     worst = None
     total = 0.0
     for i, (a, b) in enumerate(zip(ms, ms[1:])):
-        r = check_identity(a, b, domain, f"{seed}#{i}", prove=prove, limit=limit)
+        r = (check_rounded(a, b, tolerance, f"{seed}#{i}") if tolerance is not None else
+             check_identity(a, b, domain, f"{seed}#{i}", prove=prove, limit=limit))
         total += r.seconds
         if worst is None or order[r.status] < order[worst.status]:
             worst = r
@@ -150,11 +152,11 @@ def check_derivation(d: Derivation, key: str = "", *, prove: bool = True, limit:
         if p.reading is not None:
             readings[p.name] = _resolved(p.reading, results)
             identities[p.name] = _check_chain(p.reading, set(), results, domain,
-                                              f"{d.id}/{p.name}", prove, limit)
+                                              f"{d.id}/{p.name}", prove, limit, p.tolerance)
         if p.erratum is not None and p.erratum.corrected_reading is not None:
             readings[p.name + "#corrected"] = _resolved(p.erratum.corrected_reading, results)
             corrected[p.name] = _check_chain(p.erratum.corrected_reading, set(), results, domain,
-                                             f"{d.id}/{p.name}#corrected", prove, limit)
+                                             f"{d.id}/{p.name}#corrected", prove, limit, p.tolerance)
         if progress:
             progress()
 
@@ -162,6 +164,12 @@ def check_derivation(d: Derivation, key: str = "", *, prove: bool = True, limit:
     for w in d.witnesses:
         for target, out in w.run(readings).items():
             outcomes.setdefault(target, []).append(out)
+    for p in d.printed:          # printed numbers agree with a witness to their printed precision
+        if p.tolerance is not None:
+            for key in (p.name, p.name + "#corrected"):
+                for out in outcomes.get(key, []):
+                    out.agrees = all(r["abs_error"] <= float(p.tolerance) * (1 + 1e-9) for r in out.records)
+                    out.note = "" if out.agrees else f"{out.witness}: differs by more than the printed precision"
 
     formulas = [_verdict(d, p, identities.get(p.name), corrected.get(p.name), outcomes, failures)
                 for p in d.printed]
@@ -212,7 +220,9 @@ def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
     if ident is not None and ident.counterexample:
         cx = ident.counterexample
         point = ", ".join(f"{k}={v}" for k, v in cx["point"].items())
-        found.append(f"at {point} the print gives {cx['rhs']} where the derivation gives {cx['lhs']}")
+        where_ = f"at {point} " if point else ""
+        within = f" (allowed difference {cx['tolerance']})" if "tolerance" in cx else ""
+        found.append(f"{where_}the print gives {cx['rhs']} where the derivation gives {cx['lhs']}{within}")
     if p.unreadable:
         found.append(f"as printed: {p.unreadable}")
     if corr is not None and corr.holds:

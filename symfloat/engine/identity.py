@@ -20,7 +20,7 @@ import sympy as sp
 
 from .timelimit import TimeLimitExceeded, time_limit
 
-__all__ = ["IdentityResult", "check_identity", "Domain", "DIGITS", "STRATEGIES"]
+__all__ = ["IdentityResult", "check_identity", "check_rounded", "Domain", "DIGITS", "STRATEGIES"]
 
 DIGITS = 60            # working precision of non-rational sampling
 AGREEMENT = 10 ** -45  # relative tolerance of non-rational sampling
@@ -32,8 +32,9 @@ class IdentityResult:
     """Outcome of one identity check.
 
     ``status`` is ``proved`` (a symbolic strategy reduced the difference to
-    zero), ``sampled`` (every sample agreed, no proof), ``refuted`` (a sample
-    disagreed: see ``counterexample``) or ``undecided``.
+    zero), ``sampled`` (every sample agreed, no proof), ``agrees`` (a printed
+    number matches the computed value to its printed precision), ``refuted``
+    (a sample disagreed: see ``counterexample``) or ``undecided``.
     """
 
     status: str
@@ -47,11 +48,11 @@ class IdentityResult:
 
     @property
     def evidence(self) -> str | None:
-        return {"proved": "symbolic", "sampled": "sampled"}.get(self.status)
+        return {"proved": "symbolic", "sampled": "sampled", "agrees": "numeric"}.get(self.status)
 
     @property
     def holds(self) -> bool:
-        return self.status in ("proved", "sampled")
+        return self.status in ("proved", "sampled", "agrees")
 
     def to_json(self) -> dict:
         return {k: v for k, v in self.__dict__.items()}
@@ -230,5 +231,28 @@ def check_identity(a, b, domain: Domain, seed_text: str, *, prove=True, limit=2.
             result.status, result.strategy, result.residual = "proved", name, ""
             break
         result.residual = sp.sstr(next(r for r in rest if r != 0))[:300]
+    result.seconds = time.perf_counter() - t0
+    return result
+
+
+def check_rounded(a, b, tolerance, seed_text: str = "") -> IdentityResult:
+    """Decide whether the closed numbers *a* and *b* differ by at most
+    *tolerance* (half a unit of the last printed digit), at 60 digits.
+
+    >>> import sympy as sp
+    >>> check_rounded(sp.sqrt(2), sp.Rational(1414, 1000), sp.Rational(1, 2000)).status
+    'agrees'
+    >>> check_rounded(sp.sqrt(2), sp.Rational(1415, 1000), sp.Rational(1, 2000)).status
+    'refuted'
+    """
+    t0 = time.perf_counter()
+    va, vb = (sp.N(_evaluate(x), DIGITS) for x in (a, b))
+    if va.free_symbols or vb.free_symbols:
+        raise ValueError(f"{seed_text}: a rounded comparison needs closed numbers, got {va} and {vb}")
+    ok = abs(va - vb) <= sp.N(tolerance, DIGITS)
+    result = IdentityResult("agrees" if ok else "refuted", samples=1, exact=False,
+                            tried=[f"60-digit comparison within {tolerance}"])
+    if not ok:
+        result.counterexample = {"point": {}, "lhs": _show(va), "rhs": _show(vb), "tolerance": str(tolerance)}
     result.seconds = time.perf_counter() - t0
     return result

@@ -56,6 +56,9 @@ class Printed:
     ``reading`` is the SymPy claim as printed, faults included, or ``None``
     when the print cannot be read as a formula (then ``unreadable`` says why)
     or when the transcription lost it (then ``lost`` says what is missing).
+    ``tolerance`` marks a printed *number* (a worked example): the reading
+    then holds when its members, closed numbers, agree within the tolerance
+    (half a unit of the last printed digit); a correction uses the same one.
     """
 
     name: str
@@ -66,6 +69,7 @@ class Printed:
     unreadable: str = ""
     lost: str = ""
     note: str = ""
+    tolerance: object = None
 
     def __post_init__(self):
         if self.reading is None and not (self.unreadable or self.lost):
@@ -112,13 +116,14 @@ class Derivation:
         self.steps.append(s)
         return s
 
-    def quote(self, name, locator, excerpt, reading=None, erratum=None, unreadable="", lost="", note=""):
+    def quote(self, name, locator, excerpt, reading=None, erratum=None, unreadable="", lost="", note="",
+              tolerance=None):
         """Append a printed formula; the excerpt must be verbatim in the source."""
         if not get_source(self.source).contains(excerpt):
             raise ValueError(f"{self.id}/{name}: excerpt is not verbatim in {self.source}: {excerpt[:60]!r}")
         if any(p.name == name for p in self.printed):
             raise ValueError(f"duplicate printed name {name!r} in {self.id}")
-        p = Printed(name, locator, excerpt, reading, erratum, unreadable, lost, note)
+        p = Printed(name, locator, excerpt, reading, erratum, unreadable, lost, note, tolerance)
         self.printed.append(p)
         return p
 
