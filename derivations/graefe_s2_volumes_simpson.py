@@ -19,14 +19,13 @@ The print drops the factor 1/3 from the first slab ``I' = 2m/3 (…)`` on, and
 carries the omission through to ``I = m (a + 4b + … + g)``; §4 relies on the
 wrong factor (see ``graefe-s4-ship-centroid``).
 """
-from dataclasses import replace
 
 import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Erratum
 from symfloat.engine.quadrature import composite_simpson
-from symfloat.engine.witness import Case, ConvergenceOrder, MeasuredWitness, SectionIntegral
+from symfloat.engine.witness import Case, Computed, ConvergenceOrder, SectionIntegral
 
 G, g, D, h, z, t = sp.symbols("G g D h z t", positive=True)
 r, p, x, m = sp.symbols("r p x m", positive=True)
@@ -245,31 +244,17 @@ d.quote("odd-number-of-sections", "§2 Simpson's rule",
 # ---- witnesses -----------------------------------------------------------------------------------------
 
 
-class _RootMethod:
-    """Half-chord of the ellipse found by root-finding at ``dps`` digits."""
-
-    def __init__(self, dps, tolerance):
-        self.dps, self.tolerance = dps, tolerance
-        self.name = f"root of the centre equation (secant, {dps} digits)"
-
-
-class EllipseChord(MeasuredWitness):
-    """The squared radii y², y'² of the ellipsoid sections at t = x and t = x/2 from the vertex:
-    the half-chord of the ellipse (u/a)² + (y/b)² = 1 (centre at u = 0) at u = t - a, found by
-    root-finding, squared."""
-
-    methods = (_RootMethod(15, 1e-12), _RootMethod(50, 1e-45))
-
-    def measure(self, case, method):
-        av, bv, xv = (case.params[s] for s in (a, b, x))
-        with mpmath.workdps(method.dps + 5):
-            A_, B_ = mpmath.mpf(av.p) / av.q, mpmath.mpf(bv.p) / bv.q
-            out = []
-            for tv in (xv, xv / 2):
-                u = mpmath.mpf(tv.p) / tv.q - A_
-                y = mpmath.findroot(lambda yy: (u / A_) ** 2 + (yy / B_) ** 2 - 1, B_, tol=mpmath.mpf(10) ** (-method.dps))
-                out.append(y ** 2)
-            return tuple(out)
+def _ellipse_chords(case, dps):
+    """The squared radii y², y'² of the ellipsoid sections at t = x and t = x/2
+    from the vertex: the half-chord of the ellipse (u/a)² + (y/b)² = 1 (centre
+    at u = 0) at u = t - a, found by root-finding, squared."""
+    A_, B_, X_ = (mpmath.mpf(case.params[q].p) / case.params[q].q for q in (a, b, x))
+    out = []
+    for tv in (X_, X_ / 2):
+        u = tv - A_
+        y = mpmath.findroot(lambda yy: (u / A_) ** 2 + (yy / B_) ** 2 - 1, B_, tol=mpmath.mpf(10) ** (-dps))
+        out.append(y ** 2)
+    return tuple(out)
 
 
 def _q(v):
@@ -287,8 +272,8 @@ d.witness(SectionIntegral("sphere-volume", "∫ π (r² - (z - r)²) dz over the
                           SPHERE_CASES, area=pi * (r ** 2 - (z - r) ** 2), z=z, bounds=(0, 2 * r)))
 d.witness(SectionIntegral("paraboloid-volume", "∫ π 2p (x - z) dz over the height", ("paraboloid-volume",),
                           PARABOLOID_CASES, area=pi * 2 * p * (x - z), z=z, bounds=(0, x)))
-d.witness(EllipseChord("ellipse-chords", "half-chords of the ellipse at the base and the mid-section",
-                       ("ellipsoid-radii",), ELLIPSOID_CASES))
+d.witness(Computed("ellipse-chords", "half-chords of the ellipse at the base and the mid-section, by root-finding",
+                    ("ellipsoid-radii",), ELLIPSOID_CASES, compute=_ellipse_chords))
 d.witness(SectionIntegral("ellipsoid-volume", "∫ π b² (1 - (t - a)²/a²) dt over the segment (centre equation)",
                           ("ellipsoid-volume-1", "ellipsoid-volume-2", "ellipsoid-volume-3"), ELLIPSOID_CASES,
                           area=A_e_centre, z=z, bounds=(0, x)))
@@ -323,18 +308,15 @@ d.witness(SectionIntegral("whole-body", "∫ A dz over 6m for bodies with cubic 
                           area=A3, z=z, bounds=(0, 6 * m)))
 
 
-class _Prefixes(SectionIntegral):
-    """The volumes ∫_0^{2nm} A dz for n = 1, 2, 3, 4 (3, 5, 7, 9 sections), one quadrature each."""
-
-    def measure(self, case, method):
-        return tuple(replace(self, bounds=(0, 2 * n * m)).measure_one(case, method) for n in range(1, 5))
-
-    def measure_one(self, case, method):
-        return SectionIntegral.measure(self, case, method)
+def _prefix_volumes(case, dps):
+    """The volumes ∫_0^{2nm} A dz for n = 1, 2, 3, 4 (3, 5, 7, 9 sections), by tanh-sinh quadrature."""
+    f = sp.lambdify(z, A3.xreplace(case.params), "mpmath")
+    mv = mpmath.mpf(case.params[m].p) / case.params[m].q
+    return tuple(mpmath.quad(f, [0, 2 * n * mv]) for n in range(1, 5))
 
 
-d.witness(_Prefixes("odd-number-of-sections", "∫ A dz over 2m, 4m, 6m, 8m for bodies with cubic section areas",
-                    ("odd-number-of-sections",), CUBIC_CASES, area=A3, z=z))
+d.witness(Computed("odd-number-of-sections", "∫ A dz over 2m, 4m, 6m, 8m for bodies with cubic section areas",
+                   ("odd-number-of-sections",), CUBIC_CASES, compute=_prefix_volumes))
 
 
 def _reciprocal(u):

@@ -19,14 +19,11 @@ Notation: ``x``, ``x'`` are abscissae from the centre (spheres, ellipsoids,
 ``x < x'``: ``G`` is the larger base); for the paraboloid with two bases the
 abscissae from the vertex are written ``x_v > x'_v``.
 """
-from dataclasses import dataclass
-
 import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Erratum
-from symfloat.engine.quadrature import TANH_SINH_15, TANH_SINH_50
-from symfloat.engine.witness import Case, MeasuredWitness, SectionIntegral
+from symfloat.engine.witness import Case, PlaneSections, SectionIntegral
 
 u, t, xi, P, eta = sp.symbols("u t xi P eta", real=True)
 r, R, h, m, a, b, c, p, k, S, s = sp.symbols("r R h m a b c p k S s", positive=True)
@@ -90,32 +87,6 @@ def sections_witness(slug, description, targets, area, height, *cases):
                               area=area, z=u, bounds=(0, height), quantity="centroid"))
 
 
-@dataclass(frozen=True)
-class PlaneSections(MeasuredWitness):
-    """Areas of plane sections of a solid, each by quadrature of the solid's chord
-    widths across the section: ``width`` (in the plane position ``P`` and the chord
-    coordinate ``eta``) integrated over ``chord``, for each plane of ``planes``;
-    ``combine(areas, params)`` turns the areas into the quantity the targets state.
-    Witnesses the value-free displays (radii, section areas, their ratios)."""
-
-    width: sp.Expr = None
-    chord: tuple = ()
-    planes: tuple = ()
-    combine: object = None
-    methods: tuple = (TANH_SINH_15, TANH_SINH_50)
-
-    def measure(self, case, method):
-        with mpmath.workdps(method.dps):
-            areas = []
-            for plane in self.planes:
-                at = {**case.params, P: sp.sympify(plane).xreplace(case.params)}
-                f = sp.lambdify(eta, self.width.xreplace(at), "mpmath")
-                lo, hi = (mpmath.mpf(sp.N(sp.sympify(e).xreplace(at), method.dps + 10)) for e in self.chord)
-                areas.append(method.integrate(f, [lo, hi])[0])
-            params = {q: mpmath.mpf(sp.N(v, method.dps + 10)) for q, v in case.params.items()}
-            return self.combine(areas, params)
-
-
 def round_sections(rho2):
     """Width and chord of the circular section of radius^2 ``rho2`` (a function of ``P``),
     the chord coordinate written rho sin(eta) so that the integrand stays smooth."""
@@ -126,7 +97,7 @@ def planes_witness(name, description, targets, sections, planes, combine, *cases
     d.witness(PlaneSections(name, description, tuple(targets),
                             tuple(Case({q: sp.Rational(v) for q, v in params.items()}, label=label)
                                   for label, params in cases),
-                            planes=tuple(planes), combine=combine, **sections))
+                            planes=tuple(planes), combine=combine, position=P, across=eta, **sections))
 
 
 # ---- sphere ------------------------------------------------------------------------

@@ -22,9 +22,10 @@ import sympy as sp
 
 from ..geometry.convex import hull_volume_centroid, section_area
 from ..model.claim import members
-from .quadrature import DEFAULT_METHODS
+from .quadrature import DEFAULT_METHODS, TANH_SINH_15, TANH_SINH_50
 
-__all__ = ["Case", "Outcome", "MeasuredWitness", "Computed", "Precision", "SectionIntegral", "HullWitness",
+__all__ = ["Case", "Outcome", "MeasuredWitness", "Computed", "Precision", "SectionIntegral", "PlaneSections",
+           "HullWitness",
            "ExactHull", "HullSlices", "ConvergenceOrder"]
 
 REFERENCE_DIGITS = 60
@@ -180,6 +181,35 @@ class SectionIntegral(MeasuredWitness):
             g = sp.lambdify(self.z, (self.z - origin) * area, modules)
             moment, _ = method.integrate(g, [lo_n, hi_n])
             return moment if self.quantity == "moment" else moment / volume
+
+
+@dataclass(frozen=True)
+class PlaneSections(MeasuredWitness):
+    """Areas of plane sections of a solid, each by quadrature of the solid's chord
+    widths across the section: ``width`` (in the plane position ``position`` and
+    the chord coordinate ``across``) integrated over ``chord``, for each plane of
+    ``planes``;
+    ``combine(areas, params)`` turns the areas into the quantity the targets state.
+    Witnesses the value-free displays (radii, section areas, their ratios)."""
+
+    width: sp.Expr = None
+    position: sp.Symbol = None
+    across: sp.Symbol = None
+    chord: tuple = ()
+    planes: tuple = ()
+    combine: object = None
+    methods: tuple = (TANH_SINH_15, TANH_SINH_50)
+
+    def measure(self, case, method):
+        with mpmath.workdps(method.dps):
+            areas = []
+            for plane in self.planes:
+                at = {**case.params, self.position: sp.sympify(plane).xreplace(case.params)}
+                f = sp.lambdify(self.across, self.width.xreplace(at), "mpmath")
+                lo, hi = (mpmath.mpf(sp.N(sp.sympify(e).xreplace(at), method.dps + 10)) for e in self.chord)
+                areas.append(method.integrate(f, [lo, hi])[0])
+            params = {q: mpmath.mpf(sp.N(v, method.dps + 10)) for q, v in case.params.items()}
+            return self.combine(areas, params)
 
 
 @dataclass(frozen=True)
