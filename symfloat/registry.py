@@ -48,7 +48,7 @@ def select(selector: str | None = None) -> list[str]:
     """
     ids = [m.replace("_", "-") for m in module_names()]
     if selector:
-        picked = [i for i in ids if i == selector or i.startswith(selector + "-") or i.startswith(selector)]
+        picked = [i for i in ids if i.startswith(selector)]
         if not picked:
             raise SelectorError(f"selector {selector!r} matches no derivation; known: {', '.join(ids)}")
     else:

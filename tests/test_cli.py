@@ -65,3 +65,14 @@ def test_table_is_readable(in_tmp, capsys):
     out = capsys.readouterr().out
     assert out.splitlines()[0].split()[:3] == ["formula", "locator", "verdict"]
     assert "printed formulas:" in out
+
+
+def test_unexpected_failure_gives_exit_status_1(in_tmp, monkeypatch, capsys, graefe_reports):
+    import copy
+
+    import symfloat.cli as cli
+    broken = copy.deepcopy(graefe_reports[:1])
+    broken[0].failures = ["graefe §1 (x): the print is refuted and no erratum is declared"]
+    monkeypatch.setattr(cli, "verify", lambda *a, **k: broken)
+    assert cli.main(["verify", "graefe-s1", "--quiet"]) == 1
+    assert "FAILURE: graefe §1 (x)" in capsys.readouterr().out
