@@ -64,25 +64,25 @@ F = c + (PC - c) / 3                    # cF = Cc/3
 Gp = c + (PA - c) / 3                   # cG = Ac/3 (G is a point here, not the base)
 o = meet(PC, Gp, PA, F)                 # intersection of the lines CG and AF
 a = meet(c, o, PA, PC)                  # co extended meets AC in a
-L = meet(a, c, F, Gp)                   # ac meets FG in L
 
 d.step("F-centroid-BCD", (F, (PB + PC + PD) / 3), "geometry", note="F divides the median Cc at 1/3 from c")
 d.step("G-centroid-ABD", (Gp, (PA + PB + PD) / 3), "geometry")
 d.step("o-on-both-lines", (o, (PA + PB + PC + PD) / 4), "geometry",
        note="the lines CG and AF meet in the mean of the vertices")
-d.step("oF-quarter", (length(o - F), length(PA - F) / 4), "geometry")
-d.step("ratio-Coc-CoA", (area(PC, o, c) / area(PC, o, PA), length(Gp - c) / length(Gp - PA),
+# From here on the positions just proved (o, then a and L) are used, as the
+# proof itself proceeds from them; the printed claims are read with them too.
+o_, a_, L_ = (PA + PB + PC + PD) / 4, (PA + PC) / 2, c + ((PA + PC) / 2 - c) / 3
+d.step("oF-quarter", (length(o_ - F), length(PA - F) / 4), "geometry", uses=("o-on-both-lines",))
+d.step("ratio-Coc-CoA", (area(PC, o_, c) / area(PC, o_, PA), length(Gp - c) / length(Gp - PA),
                          sp.Rational(1, 2)), "geometry")
 d.step("a-midpoint", (a, (PA + PC) / 2), "geometry", note="the line co meets AC in its midpoint")
 d.step("FG-parallel-AC", (Gp - F, (PA - PC) / 3), "geometry")
-d.step("L-third-of-ac", (L, c + (a - c) / 3), "geometry", note="L divides ca as F divides cC")
-d.step("o-midpoint-ac", (o, (a + c) / 2), "geometry")
-d.step("o-midpoint-bd", (o, ((PA + PD) / 2 + (PB + PC) / 2) / 2), "geometry",
+L = meet(a_, c, F, Gp)                  # ac meets FG in L (a as just proved)
+d.step("L-third-of-ac", (L, c + (a_ - c) / 3), "geometry", uses=("a-midpoint",),
+       note="L divides ca as F divides cC")
+d.step("o-midpoint-ac", (o_, (a_ + c) / 2), "geometry", uses=("o-on-both-lines", "a-midpoint"))
+d.step("o-midpoint-bd", (o_, ((PA + PD) / 2 + (PB + PC) / 2) / 2), "geometry", uses=("o-on-both-lines",),
        note="the same for the other pair of skew edges AD, BC")
-
-# The printed claims are read with the positions just proved (o, a, L), as the
-# proof itself proceeds from them.
-o_, a_, L_ = (PA + PB + PC + PD) / 4, (PA + PC) / 2, c + ((PA + PC) / 2 - c) / 3
 
 d.quote("lemma", "§3 tetrahedron centroid lemma",
         "Wenn man die Mittelpunkte zweier nicht in einer Ebene liegenden Kanten eines Tetraeders verbindet, "

@@ -122,7 +122,7 @@ def _latex(p: Printed) -> str:
     return as_latex(p.reading) if p.reading is not None else ""
 
 
-def check_derivation(d: Derivation, key: str = "", *, prove: bool = True, limit: float = 2.0,
+def check_derivation(d: Derivation, key: str = "", *, prove: bool = True, limit: float = 5.0,
                      progress=None) -> DerivationReport:
     """Check *d* completely and return its report (see the module docstring)."""
     t0 = time.perf_counter()
@@ -190,7 +190,8 @@ def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
         rep.reason = f"text lost in the transcription: {p.lost}"
         return rep
     if ident is not None and ident.status == "undecided":
-        rep.reason = "the checks could not decide: tried " + ", ".join(ident.tried)
+        rep.reason = (f"the checks could not decide: {ident.samples} valid samples, no symbolic proof "
+                      f"within the time budget (details in the identity record)")
         return rep
     holds = ident is not None and ident.holds
     if holds:

@@ -197,7 +197,7 @@ def _show(v):
     return str(v) if v.is_Rational else sp.sstr(sp.N(v, 20))
 
 
-def check_identity(a, b, domain: Domain, seed_text: str, *, prove=True, limit=2.0,
+def check_identity(a, b, domain: Domain, seed_text: str, *, prove=True, limit=5.0,
                    samples: int = SAMPLES, strategies=STRATEGIES) -> IdentityResult:
     """Decide ``a = b`` inside *domain*; see the module docstring for the order
     of evidence.  The symbolic strategies share a budget of *limit* seconds."""

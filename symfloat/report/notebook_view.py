@@ -29,7 +29,8 @@ def steps_markdown(report) -> str:
         uses = f"; uses {', '.join(s.uses)}" if s.uses else ""
         how = ""
         if s.identity:
-            how = f" — {s.identity['strategy'] or ', '.join(s.identity['tried'])}"
+            # which strategy ran out of time depends on the machine: name the outcome only
+            how = f" — {s.identity['strategy'] or 'no symbolic proof within the time budget'}"
             if s.identity.get("counterexample"):
                 how += f"; counterexample {s.identity['counterexample']}"
         lines.append(f"**{i}. {s.name}** ({s.why}{uses}): {STATUS[s.status]}{how}\n\n$$ {s.latex} $$")
