@@ -40,3 +40,50 @@ def test_no_check_fails(graefe_reports):
 def test_lost_text_is_unverifiable_with_its_reason(formulas):
     lost = [f for f in formulas if f.verdict == "unverifiable"]
     assert lost and all(f.reason.startswith("text lost in the transcription") for f in lost)
+
+
+# The faults of Graefe 1866 found by reading the transcription against the
+# derivations (each is argued in its erratum's evidence and in docs/errata.md):
+EXPECTED_ERRATA = {
+    # §1: the scan reads the minus of "2D - (G+g)/2" as "=" (quoted correctly in §3)
+    ("graefe-s1-prismatoid-volume/parallelogram-sum", "transcription", "high"),
+    ("graefe-s1-prismatoid-volume/tetrahedra-volume", "transcription", "high"),
+    ("graefe-s1-prismatoid-volume/tetrahedra-volume-2", "transcription", "high"),
+    ("graefe-s1-prismatoid-volume/volume-sum", "transcription", "high"),
+    ("graefe-s1-prismatoid-volume/volume-collected", "transcription", "high"),
+    # §2: Simpson's slabs of height 2m have volume 2m/3 {...}, printed 2m {...}
+    ("graefe-s2-volumes-simpson/slab-a-c", "misprint", "high"),
+    ("graefe-s2-volumes-simpson/slab-c-e", "consequential", "high"),
+    ("graefe-s2-volumes-simpson/slab-e-g", "consequential", "high"),
+    ("graefe-s2-volumes-simpson/sum-1", "consequential", "high"),
+    ("graefe-s2-volumes-simpson/sum-2", "consequential", "high"),
+    ("graefe-s2-volumes-simpson/simpson-rule", "consequential", "high"),
+    # §3: CF = 2Cc/3, printed 2Gc/3
+    ("graefe-s3-prismatoid-centroid/CF", "transcription", "medium"),
+    # §4: a lost fraction bar, a factor 2, a lost /2
+    ("graefe-s4-applications/cone-frustum-1", "transcription", "low"),
+    ("graefe-s4-applications/segment-2-2", "misprint", "medium"),
+    ("graefe-s4-applications/truncated-ellipsoid-1", "transcription", "low"),
+    # §4 ship: "e, d, e" for "c, d, e"; x = m/3 {...} from the §2 factor, correct x = m {...}
+    ("graefe-s4-ship-centroid/substitution", "transcription", "medium"),
+    ("graefe-s4-ship-centroid/centroid", "consequential", "high"),
+}
+
+
+def test_the_errata_found_are_exactly_the_expected_ones(formulas):
+    found = {(f.id, f.erratum["kind"], f.erratum["confidence"]) for f in formulas if f.verdict == "erratum"}
+    assert found == EXPECTED_ERRATA
+
+
+def test_displacement_centroid_of_uniform_sections_is_the_middle(graefe_reports):
+    # Provenance: a prism of length 6m (all sections equal) has its centroid at 3m;
+    # the printed x = m/3 {...} gives m, the corrected x = m {...} gives 3m.
+    import sympy as sp
+    from symfloat.model.claim import members
+    from symfloat.registry import load
+    d, module = load("graefe-s4-ship-centroid")
+    p = next(p for p in d.printed if p.name == "centroid")
+    corrected, printed = members(p.erratum.corrected_reading)[-1], members(p.reading)[-1]
+    areas = {s: 1 for s in corrected.free_symbols if s != module.m}
+    assert sp.simplify(corrected.subs(areas)) == 3 * module.m
+    assert sp.simplify(printed.subs(areas)) == module.m
