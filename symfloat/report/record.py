@@ -23,7 +23,10 @@ def _formula_entry(d: DerivationReport, f) -> dict:
 
 
 def verification_record(reports: list[DerivationReport]) -> dict:
-    """``{"formulas": [...], "summary": {...}}`` as in the design brief."""
+    """``{"formulas": [...], "summary": {...}}`` as in the design brief.
+
+    ``summary.seconds`` is the checking time of the derivations (as recorded
+    when they were checked, also for those now read from the cache)."""
     formulas = [_formula_entry(d, f) for d in reports for f in d.formulas]
     steps = Counter(s.status for d in reports for s in d.steps)
     verdicts = Counter(f["verdict"] for f in formulas)
@@ -66,8 +69,9 @@ def verification_table(reports: list[DerivationReport]) -> str:
     s = verification_record(reports)["summary"]
     lines.append("")
     lines.append(f"{s['formulas']} printed formulas: {s['verified']} verified, {s['erratum']} errata, "
-                 f"{s['unverifiable']} unverifiable; steps {s['steps']}; {s['seconds']:.1f} s"
-                 + (f" ({s['cached']} derivations from cache)" if s["cached"] else ""))
+                 f"{s['unverifiable']} unverifiable; steps {s['steps']}; checking time {s['seconds']:.1f} s"
+                 + (f" ({s['cached']} of {len(s['derivations'])} derivations read from the cache)"
+                    if s["cached"] else ""))
     for msg in s["failures"]:
         lines.append(f"FAILURE: {msg}")
     return "\n".join(lines) + "\n"
