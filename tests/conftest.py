@@ -27,3 +27,9 @@ def graefe_reports(cache_dir):
 @pytest.fixture(scope="session")
 def all_reports(cache_dir, graefe_reports):
     return verify(None, cache=ReportCache(cache_dir))
+
+
+@pytest.fixture(scope="session")
+def reports_by_id(all_reports):
+    """The report of every derivation, checked once per session, by id."""
+    return {r.id: r for r in all_reports}

@@ -8,7 +8,6 @@ import json
 from pathlib import Path
 
 import nbformat
-import pytest
 
 from symfloat.report.errata import errata_json, errata_markdown
 from symfloat.report.files import without_timings

@@ -69,11 +69,18 @@ def _expected(reading, params):
     return values
 
 
+def _real(e):
+    """A 60-digit mpf of a closed real SymPy number; a clear error otherwise."""
+    if not (e.is_real or e.is_real is None and sp.im(e) == 0):
+        raise ValueError(f"a witness target evaluates to {e}, which is not a real number")
+    return mpmath.mpf(sp.Float(sp.re(e), REFERENCE_DIGITS)._mpf_)
+
+
 def _errors(measured, expected):
     measured = measured if isinstance(measured, (tuple, list)) else [measured]
     with mpmath.workdps(REFERENCE_DIGITS):
-        ab = max(abs(mpmath.mpf(str(e)) - mpmath.mpf(m)) for m, e in zip(measured, expected))
-        scale = max(abs(mpmath.mpf(str(e))) for e in expected)
+        ab = max(abs(_real(e) - mpmath.mpf(m)) for m, e in zip(measured, expected))
+        scale = max(abs(_real(e)) for e in expected)
         rel = ab / scale if scale else ab
     return float(ab), float(rel)
 

@@ -40,20 +40,21 @@ def steps_markdown(report) -> str:
 
 
 def _records(title, records) -> list[str]:
+    """A title and one Markdown table (one block, rows joined by single newlines)."""
     if not records:
         return []
-    rows = [f"{title}", "", "| method | cases | abs. error | rel. error | time |", "|---|---|---|---|---|"]
+    rows = ["| method | cases | abs. error | rel. error | time |", "|---|---|---|---|---|"]
     for r in records:
         rows.append(f"| {r['method']} | {r.get('cases', 1)} | {r['abs_error']:.2e} | {r['rel_error']:.2e} "
                     f"| {_time(r['seconds'])} |")
-    return rows + [""]
+    return [title, "\n".join(rows)]
 
 
 def formula_markdown(report, name: str) -> str:
     f = next(f for f in report.formulas if f.id.endswith("/" + name))
     out = [f"**Verdict: {f.verdict}**" + (f" (evidence: {f.evidence})" if f.evidence else "")]
     if f.latex:
-        out.append(f"Reading as printed: $$ {f.latex} $$")
+        out.append(f"SymPy reading of the print (SymPy may normalise its arithmetic): $$ {f.latex} $$")
     if f.reason:
         out.append(f"Reason: {f.reason}")
     if f.erratum:

@@ -1,0 +1,329 @@
+"""Hasáb (KöMaL-type solved problem): a long square prism of density rho floating in water, by the energy method.
+
+Cross-section: the unit square, body coordinates xi in [-1/2, 1/2] (across), eta in [0, 1] (up from the
+bottom face); length l >> 1, water density 1.  Heeled by alpha about the long axis, the water line in the
+body frame is eta = s0 + xi tg(alpha); a point lies (eta - s0 - xi tg alpha) cos(alpha) above the water.
+The potential energy of the system is that of the prism plus that of the displaced water (its weight times
+the depth of its centroid: the work to lift it to the surface), both integrated over the section.
+
+The energy is then expanded to second order, the stability condition and its density ranges follow, and
+the energy method is shown equal to the metacentric criterion and to Duhamel's criterion (18) of Scheeffer
+(section III there): the exact energy of the heeled prism is Scheeffer's V1 n of (13).  The remark's second
+position is the prism standing upright (the edges of length l vertical).
+
+Witnesses: exact clipping of the floating prism (``symfloat.geometry.floating``): energies from the
+clipped immersed part (potential = height of G above B), the second-order coefficient by extrapolated
+finite differences of the clipped potential, the density thresholds by root-finding on the clipped
+metacentric height.
+"""
+from fractions import Fraction
+
+import mpmath
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, Computed, Precision
+from symfloat.geometry.floating import box, clip_below, floating_state, volume_centroid
+from symfloat.model.source import get_source
+
+rho, al, l, g = sp.symbols("varrho alpha l g", positive=True)
+xi, et, s0 = sp.symbols("xi eta s_0", real=True)
+s, xs, ys, OF = sp.symbols("s x y OF", real=True)
+E0h, E0v, E0, E1h, E1v, E2v, E1 = sp.symbols(
+    r"E_0^{hasab} E_0^{viz} E_0^{teljes} E_1^{hasab} E_{(1)}^{viz} E_2^{viz} E_1^{teljes}", real=True)
+c0, c2, GM, R1, R2, Ru = sp.symbols("c_0 c_2 GM R_1 R_2 R_u", real=True)
+T1, V1, e1 = sp.symbols("T_1 V_1 e_1", real=True)
+t = sp.tan(al)
+half = sp.Rational(1, 2)
+DISPLAYS = [line for line in get_source("hasab").text().splitlines() if line.startswith("$$")]
+
+DERIVATION = d = Derivation(
+    id="hasab",
+    source="hasab",
+    title="The long square prism by the energy method",
+    locator="solution",
+    summary="Delta E = (rho^2 - rho + 1/6) alpha^2 / 4 (per l g): stable for rho < (3 - sqrt 3)/6 or "
+            "rho > (3 + sqrt 3)/6, the same condition as the metacentric one and Duhamel's (18).",
+    requires=("scheeffer-i-iii",),
+    domain={rho: (sp.Rational(1, 20), sp.Rational(19, 20)), al: (sp.Rational(1, 50), sp.Rational(3, 10)),
+            l: (2, 10), g: (1, 10), s0: (sp.Rational(1, 10), sp.Rational(9, 10))},
+    constraints=(sp.tan(al) < 2 * rho, sp.tan(al) < 2 - 2 * rho),
+    assumptions=("water density 1, edge of the square 1, l >> 1 so that only heel about the long axis matters",
+                 "the water line cuts the two vertical sides: tg alpha < 2 rho and tg alpha < 2 (1 - rho)",
+                 "energies per l g from E_2 on, as the text writes them (see the erratum of E_2)"),
+)
+depth = (s0 + xi * t - et) * sp.cos(al)      # depth of the body point (xi, eta) below the water line
+sec = lambda f, lo, hi: sp.Integral(sp.Integral(f, (et, lo, hi)), (xi, -half, half))
+
+# ---- upright ---------------------------------------------------------------------------------
+d.step("draught", (s, rho), "definition", result=s, note="Archimedes: immersed area s * 1 equals the mass rho")
+d.step("draught-check", (sec(1, 0, s), rho), "integration", uses=("draught",))
+d.step("OF", (OF, half - s), "definition", result=OF, note="G at eta = 1/2, the water at eta = s")
+d.step("E0-prism", (E0h, l * g * rho * OF), "definition", result=E0h,
+       note="weight l g rho times the height of G above the water")
+d.step("E0-water", (E0v, l * g * sec(depth.subs({s0: s, al: 0}), 0, s), l * g * rho ** 2 / 2), "integration",
+       result=E0v, note="the displaced water lifted to the surface: weight times depth, element by element")
+d.step("E0-total", (E0, E0h + E0v, half * l * g * (rho - rho ** 2)), "algebra", result=E0)
+d.quote("s", "solution, upright", DISPLAYS[0], reading=(s, rho))
+d.quote("OF", "solution, upright", r"$\overline{OF} = 1/2 - \varrho$", reading=(OF, half - rho))
+d.quote("E0-prism", "solution, upright", DISPLAYS[1], reading=(E0h, l * g * rho * (half - rho)))
+d.quote("E0-water", "solution, upright", DISPLAYS[2], reading=(E0v, l * g * rho / 2),
+        erratum=Erratum("transcription", "medium", r"E_0^{\text{víz}} = l \cdot g \cdot \varrho^2/2",
+                        "The displaced water has weight l g rho and its centroid lies rho/2 below the surface, as "
+                        "the sentence before the formula says: l g rho * rho/2 = l g rho^2/2. The next line, "
+                        "E_0 = 1/2 l g (rho - rho^2), is the sum with rho^2/2 (with rho/2 it would be "
+                        "l g rho (1 - rho)), so the author had the square: an exponent lost in the "
+                        "transcription (or a misprint; the two cannot be told apart from the text).",
+                        corrected_reading=(E0v, l * g * rho ** 2 / 2)))
+d.quote("E0-total", "solution, upright", DISPLAYS[3], reading=(E0, half * l * g * (rho - rho ** 2)))
+
+# ---- heeled ------------------------------------------------------------------------------------
+d.step("volume-condition", (sec(1, 0, s0 + xi * t), s0), "integration",
+       note="the immersed trapezoid has the area of its midline s0: Archimedes keeps s0 = rho")
+d.step("sides", (xs, (s0 + xi * t).subs({xi: half, s0: rho})), "definition", result=xs,
+       note="x, y: the immersed lengths of the two vertical sides")
+d.step("sides-y", (ys, (s0 + xi * t).subs({xi: -half, s0: rho})), "definition", result=ys)
+d.step("sides-relations", (sp.Matrix([(xs + ys) / 2, xs - ys]), sp.Matrix([rho, t])), "algebra",
+       uses=("sides", "sides-y", "volume-condition"))
+dep = depth.subs(s0, rho)
+d.step("E1-prism", (E1h, l * g * rho * (-dep.subs({xi: 0, et: half})), l * g * rho * (half - rho) * sp.cos(al)),
+       "geometry", result=E1h, note="G = (0, 1/2) lies (1/2 - rho) cos(alpha) above the water")
+d.step("E1-water-rectangle", (E1v, l * g * sec(dep, 0, ys), l * g * ys * (rho - ys / 2) * sp.cos(al),
+                              l * g * (rho ** 2 / 2 - t ** 2 / 8) * sp.cos(al)),
+       "integration", result=E1v, uses=("sides-y",), note="the rectangle ABG1I: 0 <= eta <= y")
+d.step("E2-water-triangle", (E2v, l * g * sec(dep, ys, rho + xi * t),
+                             l * g * (xs - ys) / 2 * (xs - ys) / 3 * sp.cos(al), l * g * t ** 2 / 6 * sp.cos(al)),
+       "integration", result=E2v, uses=("sides", "sides-y"),
+       note="the triangle IG1H1: area (x - y)/2, centroid (x - y) cos(alpha)/3 below the water")
+d.step("E1-total", (E1, E1h + E1v + E2v,
+                    l * g * (rho * (1 - rho) / 2 * sp.cos(al) + sp.sin(al) * t / 24)), "algebra", result=E1)
+d.quote("x+y", "solution, heeled", DISPLAYS[4], reading=((xs + ys) / 2, rho))
+d.quote("x-y", "solution, heeled", DISPLAYS[5], reading=(xs - ys, t))
+d.quote("x", "solution, heeled", DISPLAYS[6], reading=(xs, rho + t / 2))
+d.quote("y", "solution, heeled", DISPLAYS[7], reading=(ys, rho - t / 2))
+d.quote("E1-prism", "solution, heeled", DISPLAYS[8], reading=(E1h, l * g * rho * (half - rho) * sp.cos(al)))
+d.quote("E1-water", "solution, heeled", DISPLAYS[9],
+        reading=(E1v, l * g * ys * (rho - ys / 2) * sp.cos(al), l * g * (rho ** 2 / 2 - t ** 2 / 8) * sp.cos(al)))
+d.quote("E2-water", "solution, heeled", DISPLAYS[10],
+        reading=(E2v, l * g * (xs - ys) / 2 * sp.Rational(1, 3) * (xs - ys) * sp.cos(al), t ** 2 / 6 * sp.cos(al)),
+        erratum=Erratum("misprint", "medium",
+                        r"E_2^{\text{víz}} = l g \frac{x - y}{2} \frac{1}{3} (x - y) \cos\alpha = "
+                        r"l g \frac{\text{tg}^2 \alpha}{6} \cos \alpha",
+                        "The last member drops the factor l g that the first member carries (x - y = tg alpha). "
+                        "From here on the text writes energies per l g (E_1 total, Delta E), so the slip is a "
+                        "change of unit in the middle of an equation, not a wrong value.",
+                        corrected_reading=(E2v, l * g * t ** 2 / 6 * sp.cos(al))))
+
+# ---- second order -------------------------------------------------------------------------------
+d.step("c0", (c0, sp.Subs(E1 / (l * g), al, 0), (rho - rho ** 2) / 2), "substitution", result=c0)
+d.step("c2", (c2, sp.Subs(sp.Derivative(E1 / (l * g), al, 2), al, 0) / 2,
+              sp.Rational(1, 4) * (rho ** 2 - rho + sp.Rational(1, 6))), "series", result=c2,
+       note="cos alpha = 1 - alpha^2/2, tg alpha = alpha + O(alpha^3): the coefficient of alpha^2 per l g; "
+            "the energy is even in alpha")
+d.step("c1", (sp.Subs(sp.Derivative(E1, al), al, 0), 0), "series", note="no linear term: the upright position is "
+                                                                     "an equilibrium")
+d.quote("E1-total", "solution, second order", DISPLAYS[11],
+        reading=(c0 + c2 * al ** 2, half * (rho - rho ** 2) + sp.Rational(1, 4) * (rho ** 2 - rho + sp.Rational(1, 6)) * al ** 2),
+        note="per l g, to second order in alpha")
+d.quote("Delta-E", "solution, second order", DISPLAYS[12],
+        reading=(c2 * al ** 2, sp.Rational(1, 4) * (rho ** 2 - rho + sp.Rational(1, 6)) * al ** 2), note="per l g")
+quad = rho ** 2 - rho + sp.Rational(1, 6)
+d.quote("condition", "solution, stability", DISPLAYS[13], reading=(sp.sign(c2), sp.sign(quad)),
+        note="the energy has a minimum at alpha = 0 exactly when its alpha^2 coefficient is positive")
+r1, r2 = (3 - sp.sqrt(3)) / 6, (3 + sp.sqrt(3)) / 6
+d.step("roots", (sp.Matrix([quad.subs(rho, r1), quad.subs(rho, r2)]), sp.Matrix([0, 0])), "algebra")
+d.step("R1", (R1, r1), "definition", result=R1, uses=("roots",), note="the smaller root of rho^2 - rho + 1/6")
+d.step("R2", (R2, r2), "definition", result=R2, uses=("roots",), note="the larger root")
+d.step("ranges", (sp.sign(quad), sp.sign((rho - R1) * (rho - R2))), "algebra", uses=("roots", "R1", "R2"))
+stable_set = sp.Piecewise((1, (rho < R1) | (rho > R2)), (0, True))
+d.quote("ranges", "solution, stability", DISPLAYS[14],
+        reading=(sp.Piecewise((1, sp.StrictGreaterThan(quad, 0)), (0, True)),
+                 sp.Piecewise((1, (rho < r1) | sp.StrictLessThan(r2, 1)), (0, True))),
+        erratum=Erratum("transcription", "medium",
+                        r"0 < \varrho < \frac{3 - \sqrt{3}}{6} \varrho_{\text{víz}} \quad \text{vagy} \quad "
+                        r"\frac{3 + \sqrt{3}}{6} \varrho_{\text{víz}} < \varrho < \varrho_{\text{víz}}",
+                        "The second range has lost its middle '< rho': as transcribed it reads "
+                        "'(3 + sqrt 3)/6 rho_viz < rho_viz', a true statement without rho, which would make every "
+                        "density stable. The roots of rho^2 - rho + 1/6 are (3 -+ sqrt 3)/6 (printed right) and the "
+                        "condition holds outside them; the layout of the first range shows the intended form. "
+                        "Lost in the transcription rather than the print (the thresholds are correct).",
+                        corrected_reading=(sp.Piecewise((1, sp.StrictGreaterThan(quad, 0)), (0, True)), stable_set)))
+d.quote("thresholds", "solution, stability",
+        r"\frac{3 - \sqrt{3}}{6} \cdot \varrho_{\text{víz}}, \quad \text{vagy} \quad \frac{3 + \sqrt{3}}{6}",
+        reading=(sp.Matrix([R1, R2]), sp.Matrix([r1, r2])), note="rho_viz = 1")
+
+# ---- energy = metacentric = Duhamel -------------------------------------------------------------
+T1p = l * sp.Integral(xi ** 2, (xi, -half, half))     # waterplane l x 1 about the long axis through its centre
+V1p = rho * l
+e1p = half - rho / 2                                   # G at 1/2, B at rho/2 above the bottom
+d.step("T1", (T1, T1p, l / 12), "integration", result=T1)
+d.step("V1", (V1, V1p), "definition", result=V1)
+d.step("e1", (e1, sp.Integral(et, (et, 0, 1)) - sp.Integral(et, (et, 0, rho)) / rho, e1p), "integration",
+       result=e1, note="SS1: height of G above B")
+d.step("GM", (GM, T1 / V1 - e1), "definition", result=GM, note="metacentric height I/V - BG")
+d.step("energy-is-13", (E1 / g, T1 * sp.sin(al) * t / 2 + V1 * e1 * sp.cos(al)), "lemma",
+       uses=("scheeffer-i-iii:moment-13", "E1-total"),
+       note="the exact energy of the heeled prism (per g) is Scheeffer's V1 n of (13): weight times the "
+            "height of S above S2")
+d.step("energy-metacentric", (2 * l * c2, V1 * GM, l * rho * (1 / (12 * rho) - (1 - rho) / 2)), "algebra",
+       uses=("c2", "GM", "T1", "V1", "e1"),
+       note="E''(0) = weight x metacentric height: the energy method and the metacentric criterion decide alike "
+            "(V1 > 0), and with energy-duhamel both equal Duhamel's (18)")
+d.step("energy-duhamel", (2 * l * c2, T1 - V1 * e1), "lemma", uses=("scheeffer-i-iii:energy-curvature", "c2"),
+       note="Scheeffer: the curvature of V1 n at 0 is T1 - V1 e1 = V1 (T1/V1 - e1), criterion (18)")
+
+# ---- remark: the upright prism --------------------------------------------------------------------
+GMu = (sp.Rational(1, 12)) / (rho * l) - (l / 2 - rho * l / 2)
+d.step("upright-GM", (GMu, (6 * l ** 2 * rho ** 2 - 6 * l ** 2 * rho + 1) / (12 * rho * l)), "algebra",
+       note="standing on its square face (edges l vertical): waterplane 1 x 1, I = 1/12, V = rho l, "
+            "G at l/2, B at rho l/2")
+ru2 = (3 * l + sp.sqrt(9 * l ** 2 - 6)) / (6 * l)
+ru1 = (3 * l - sp.sqrt(9 * l ** 2 - 6)) / (6 * l)
+d.step("upright-roots", (sp.Matrix([GMu.subs(rho, ru1), GMu.subs(rho, ru2)]), sp.Matrix([0, 0])), "algebra",
+       uses=("upright-GM",), note="stable for rho < ru1 or rho > ru2 (l > sqrt(2/3))")
+d.step("Ru", (Ru, ru2), "definition", result=Ru, uses=("upright-roots",))
+d.quote("remark", "Megjegyzés", DISPLAYS[15], reading=(Ru, (3 * l + 9 * l ** 2 - 6) / (6 * l)),
+        erratum=Erratum("transcription", "medium",
+                        r"\frac{3l + \sqrt{9l^2 - 6}}{6l} \varrho_{\text{víz}} < \varrho < \varrho_{\text{víz}} "
+                        r"(\text{and } 0 < \varrho < \frac{3l - \sqrt{9l^2 - 6}}{6l})",
+                        "The position meant is the prism standing upright (the OCR's '1 hosszúságú' is 'l "
+                        "hosszúságú': edges of length l vertical; edges of length 1 cannot all be vertical). Its "
+                        "metacentric height 1/(12 rho l) - l (1 - rho)/2 vanishes at rho = (3l +- sqrt(9l^2 - 6))/(6l). "
+                        "The print lost the radical over 9l^2 - 6 (as printed the bound exceeds 1 for every l > 1, "
+                        "no density would be stable) and, as in the main result, the '< rho' of the range; the "
+                        "lower range 0 < rho < (3l - sqrt(9l^2 - 6))/(6l) (about 1/(6 l^2)) is not printed.",
+                        corrected_reading=(Ru, ru2)),
+        note="read as the lower bound of the printed stable range")
+
+
+# ---- witnesses ------------------------------------------------------------------------------------
+
+def _prec(dps):
+    return None if dps <= 15 else dps
+
+
+def _f(v):
+    return Fraction(str(v))
+
+
+def _mpf(q):
+    q = Fraction(q)
+    return mpmath.mpf(q.numerator) / q.denominator
+
+
+def state(case, dps, q=None, tilt=None):
+    """The clipped prism (box 1 x 1 x l) floating at density rho, heeled with tg alpha = q (exact) or by the
+    angle tilt; returns the floating state and the body.  The side xi = +1/2 dips."""
+    body = box(1, 1, _f(case.params[l]), _prec(dps))
+    if tilt is not None:
+        u = (-mpmath.sin(tilt), mpmath.cos(tilt), 0) if dps > 15 else (-__import__("math").sin(tilt),
+                                                                        __import__("math").cos(tilt), 0)
+    else:
+        u = (-(q or 0), 1, 0)
+    return floating_state(body, u, _f(case.params[rho])), body
+
+
+def energies(case, dps):
+    """Energies from the clipped prism: prism weight times the height of G above the water, water weight
+    times the depth of the centroid of the immersed part and of its rectangle (eta <= y)."""
+    q = Fraction(case.data["q"])
+    r, L, G_ = _f(case.params[rho]), _mpf(_f(case.params[l])), _mpf(_f(case.params[g]))
+    st, body = state(case, dps, q)
+    u, tt = st.u, st.t
+    height = lambda p: sum(ui * pi for ui, pi in zip(u, p)) - tt
+    # the immersed lengths of the sides xi = +-1/2 (body y = eta - 1/2): where the plane u.p = t meets them
+    h_ = mpmath.mpf(1) / 2 if dps > 15 else 0.5
+    side = lambda xv: (tt - u[0] * xv) / u[1] + h_
+    xv, yv = side(h_), side(-h_)
+    rect = clip_below(clip_below(body, u, tt), (0, 1, 0), yv - h_)
+    Vr, cr = volume_centroid(rect)
+    E_w = G_ * L * (st.volume / L) * (-height(st.B))        # displaced water: weight * depth of B
+    E_r = G_ * Vr * (-height(cr))
+    return {"prism": G_ * L * _mpf(r) * height(st.G), "water": E_w, "rect": E_r, "tri": E_w - E_r,
+            "x": xv, "y": yv, "pot": st.potential}
+
+
+def second_order(case, dps):
+    """c0 + c2 alpha^2 (per l g) with c0 = rho * potential(0) and c2 = lim (E(h) - E(0))/h^2 from the clipped
+    potential (Neville extrapolation; at 50 digits clipping at 90 digits, h = 1e-10 .. 1e-10/32; in float64
+    h = 1e-2 .. 1e-2/8: the draught's tolerance, 1e-13 of the height, over E(h) - E(0) ~ 1e-6 and the
+    truncation ~h^4 bound the error by about 1e-7 of c2 alpha^2, hence the float64 tolerance 1e-5)."""
+    r = _mpf(_f(case.params[rho]))
+    A = mpmath.atan(_mpf(Fraction(case.data["q"])))
+    p = 90 if dps > 15 else 15
+    with mpmath.workdps(p):
+        E = lambda h: r * state(case, p, tilt=h)[0].potential
+        E0_ = r * state(case, p, q=0)[0].potential
+        hs = [(mpmath.mpf("1e-10") if p > 15 else 1e-2) / 2 ** j for j in range(6 if p > 15 else 4)]
+        ps = [(E(h) - E0_) / h ** 2 for h in hs]
+        for j in range(1, len(hs)):
+            ps = [(hs[i + j] * ps[i] - hs[i] * ps[i + 1]) / (hs[i + j] - hs[i]) for i in range(len(ps) - 1)]
+        return +(E0_ + ps[0] * A ** 2)
+
+
+ECASES = tuple(Case({rho: r, l: 4, g: sp.Rational(981, 100), al: sp.atan(q)}, {"q": q},
+                    f"rho = {r}, l = 4, g = 9.81, tg alpha = {q}")
+               for r, q in ((sp.Rational(1, 2), sp.Rational(1, 5)), (sp.Rational(1, 10), sp.Rational(1, 10)),
+                            (sp.Rational(17, 20), sp.Rational(1, 4))))
+
+
+UPRIGHT = tuple(Case({rho: r, l: 4, g: sp.Rational(981, 100)}, {"q": 0}, f"rho = {r}, l = 4, g = 9.81, upright")
+                for r in (sp.Rational(1, 2), sp.Rational(1, 10), sp.Rational(17, 20)))
+
+
+def W(name, description, targets, f, cases=ECASES, methods=None):
+    kw = {"methods": methods} if methods else {}
+    d.witness(Computed(name, description, targets, cases, compute=f, **kw))
+
+
+W("prism-energy-upright", "prism weight times height of G above the water, clipped prism", ("E0-prism",),
+  lambda case, dps: energies(case, dps)["prism"], UPRIGHT)
+W("prism-energy", "prism weight times height of G above the water, clipped heeled prism", ("E1-prism",),
+  lambda case, dps: energies(case, dps)["prism"])
+W("water-energy", "displaced water's weight times the depth of the clipped immersed part's centroid",
+  ("E0-water",), lambda case, dps: energies(case, dps)["water"], UPRIGHT)
+W("water-rectangle", "energy of the clipped rectangle eta <= y of the immersed part", ("E1-water",),
+  lambda case, dps: energies(case, dps)["rect"])
+W("water-triangle", "energy of the immersed part minus its rectangle, clipped", ("E2-water",),
+  lambda case, dps: energies(case, dps)["tri"])
+W("total-energy", "prism and water energies of the clipped upright prism", ("E0-total",),
+  lambda case, dps: (lambda e: e["prism"] + e["water"])(energies(case, dps)), UPRIGHT)
+W("side-x", "immersed length of the dipping side, clipped plane", ("x",), lambda case, dps: energies(case, dps)["x"])
+W("side-y", "immersed length of the rising side, clipped plane", ("y",), lambda case, dps: energies(case, dps)["y"])
+W("sides-mean", "mean immersed side length, clipped plane", ("x+y",),
+  lambda case, dps: (lambda e: (e["x"] + e["y"]) / 2)(energies(case, dps)))
+W("sides-difference", "difference of the immersed side lengths, clipped plane", ("x-y",),
+  lambda case, dps: (lambda e: e["x"] - e["y"])(energies(case, dps)))
+EXTRAP = (Precision(15, 1e-5), Precision(50, 1e-35))
+W("second-order-energy", "c0 + c2 alpha^2 from the clipped potential by extrapolated finite differences",
+  ("E1-total",), second_order, methods=EXTRAP)
+W("energy-change", "c2 alpha^2 from the clipped potential by extrapolated finite differences", ("Delta-E",),
+  lambda case, dps: second_order(case, dps) - _mpf(_f(case.params[rho])) * state(case, 90 if dps > 15 else 15, q=0)[0].potential,
+  methods=EXTRAP)
+
+
+def threshold(lo, hi, L=None):
+    """Root of the clipped metacentric height in the density, by bisection-safe findroot (Anderson) on
+    [lo, hi]; L given: the prism upright (axis vertical), else lying (heel about the long axis)."""
+    def gm(r, p):
+        if L is None:
+            body = box(1, 1, 4, p)
+            return floating_state(body, (0, 1, 0), r).metacentric_height
+        body = box(1, 1, L, p)
+        return floating_state(body, (0, 0, 1), r).metacentric_height
+
+    def compute(case, dps):
+        p = _prec(dps)
+        if p is None:
+            return mpmath.findroot(lambda r: gm(float(r), None), (lo, hi), solver="anderson")
+        return mpmath.findroot(lambda r: gm(r, p), (mpmath.mpf(lo), mpmath.mpf(hi)), solver="anderson")
+    return compute
+
+
+W("thresholds-lying", "zeros of the clipped metacentric height of the lying prism in rho (root-finding)",
+  ("thresholds",), lambda case, dps: (threshold(0.1, 0.3)(case, dps), threshold(0.7, 0.9)(case, dps)),
+  cases=(Case({}, label="lying prism 1 x 1 x 4"),), methods=(Precision(15, 1e-9), Precision(50, 1e-40)))
+RCASES = (Case({l: 2}, {"L": 2}, "upright prism, l = 2"), Case({l: 5}, {"L": 5}, "upright prism, l = 5"))
+d.witness(Computed("threshold-upright", "upper zero of the clipped metacentric height of the upright prism",
+                   ("remark",), RCASES, methods=(Precision(15, 1e-9), Precision(50, 1e-40)),
+                   compute=lambda case, dps: threshold(0.6, 0.999, case.data["L"])(case, dps)))

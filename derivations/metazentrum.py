@@ -1,0 +1,222 @@
+"""Web lesson "Auftrieb Stabilität": the metacentre of a rectangular hull.
+
+The hull is a homogeneous box 2a x 2b x 2c (length, breadth, height) floating
+upright with draught d; heel about the long axis (a > b).  Coordinates: z up
+from the water surface, y across.  Volumes, centroids and the waterplane's
+moment of inertia are integrated; the shift of the centre of buoyancy on heel
+is computed from the two wedge triangles (the lesson's route, exact in tg phi,
+read to first order in phi as the lesson does), the metacentre from it, and
+the stability function e from z_M >= z_G.  The closing sentence ("größer als
+eins" for stability) and the Vasa remark are checked as claims.
+
+Witnesses: the floating box clipped exactly (``symfloat.geometry.floating``):
+draught, centres of buoyancy and gravity, the waterplane's I_min / V - (G - B)
+upright, and the righting arm at small heels extrapolated to phi -> 0.
+"""
+from fractions import Fraction
+
+import mpmath
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, Computed, Precision
+from symfloat.geometry.floating import clip_below, floating_state, right_prism, volume_centroid
+
+a, b, c, d = sp.symbols("a b c d", positive=True)
+phi = sp.Symbol("phi", positive=True)
+rho_w, rho_s = sp.symbols("rho_w rho_s", positive=True)
+x, y, z = sp.symbols("x y z", real=True)
+V_b, M_b, M_s, z_B, z_G, z_M, I_w, A_q, A_t, x_t, shift, BM, e = sp.symbols(
+    "V_b M_b M_s z_B z_G z_M I_w A_q A_t x_t Delta BM e", real=True)
+
+DERIVATION = dv = Derivation(
+    id="metazentrum",
+    source="metazentrum",
+    title="Metacentre and stability function of a rectangular hull",
+    locator="Vereinfachtes Modell: gerades Parallelepiped",
+    summary="z_B = -d/2, z_G = c - d, z_M = -d/2 + b^2/(3d); stable iff e = b^2/(6c^2) - d/(2c) (1 - d/(2c)) > 0.",
+    domain={a: (3, 6), b: (sp.Rational(1, 2), 3), c: (sp.Rational(1, 2), 3), d: (sp.Rational(1, 10), 5),
+            phi: (sp.Rational(1, 20), 1), rho_w: (sp.Rational(1, 2), 2)},
+    constraints=(d < 2 * c, b < a),
+    assumptions=("homogeneous box 2a x 2b x 2c, centre of mass at its centre, floating upright with draught "
+                 "0 < d < 2c", "heel about the long axis (b < a), angle phi, 0 < phi < pi/2; the wedges stay within "
+                 "the side faces (b tg phi < d and < 2c - d) for the exact wedge formulas",
+                 "z up from the water surface"),
+)
+dv.step("displaced-volume", (V_b, sp.Integral(1, (x, -a, a), (y, -b, b), (z, -d, 0)), 4 * a * b * d), "integration",
+        result=V_b)
+dv.step("displaced-mass", sp.Eq(M_b, rho_w * V_b), "definition", result=M_b)
+dv.step("archimedes", sp.Eq(rho_s, rho_w * V_b / sp.integrate(1, (x, -a, a), (y, -b, b), (z, -d, 2 * c - d))),
+        "definition", result=rho_s, note="the body floats: its mass 8abc rho_s equals the displaced mass M_b")
+dv.step("body-mass", (M_s, rho_s * sp.Integral(1, (x, -a, a), (y, -b, b), (z, -d, 2 * c - d)), rho_w * 4 * a * b * d),
+        "integration", result=M_s, uses=("archimedes",))
+dv.step("density-ratio", (rho_s / rho_w, d / (2 * c)), "algebra", uses=("archimedes", "displaced-volume"))
+dv.step("buoyancy-centre", (z_B, sp.Integral(z, (z, -d, 0)) / d, -d / 2), "integration", result=z_B)
+dv.step("gravity-centre", (z_G, sp.Integral(z, (z, -d, 2 * c - d)) / (2 * c), c - d), "integration", result=z_G)
+dv.step("section", (A_q, sp.Integral(1, (y, -b, b), (z, -d, 0)), 2 * b * d), "integration", result=A_q,
+        note="the immersed cross-section (the 'mass' of the lesson, per unit length)")
+t = sp.tan(phi)
+dv.step("triangles", (A_t, 2 * sp.Integral(y * t, (y, 0, b)), b ** 2 * t), "integration", result=A_t,
+        note="heeled by phi about the centre of the waterline: one wedge triangle of legs b and b tg phi enters "
+             "the water, the same leaves it")
+dv.step("triangle-arm", (x_t, sp.Integral(y * y * t, (y, 0, b)) / sp.Integral(y * t, (y, 0, b)), 2 * b / 3),
+        "integration", result=x_t, note="distance of each triangle's centroid from the axis")
+dv.step("shift", (shift, x_t * A_t / A_q, b ** 2 * t / (3 * d)), "algebra", result=shift,
+        uses=("section", "triangles", "triangle-arm"),
+        note="moment theorem: the triangle entering at +2b/3 and the one leaving at -2b/3 move the centroid of "
+             "the section across the ship by (2b/3) A_t / A_q (exact, in the body frame)")
+dv.step("radius", (BM, sp.Subs(sp.Derivative(shift, phi), phi, 0), b ** 2 / (3 * d)), "series", result=BM,
+        uses=("shift",), note="for small phi the shift is the arc BM * phi about the metacentre")
+dv.step("waterplane-inertia", (I_w, sp.Integral(y ** 2, (x, -a, a), (y, -b, b)), 4 * a * b ** 3 / 3), "integration",
+        result=I_w)
+dv.step("radius-inertia", (BM, I_w / V_b), "algebra", uses=("radius", "waterplane-inertia", "displaced-volume"),
+        note="the same radius as the waterplane's moment of inertia over the displaced volume (Duhamel, Bouguer)")
+dv.step("metacentre", (z_M, z_B + BM, -d / 2 + b ** 2 / (3 * d)), "algebra", result=z_M,
+        uses=("buoyancy-centre", "radius"))
+dv.step("stability-function", sp.Eq(e, d / (2 * c ** 2) * (z_M - z_G)), "definition", result=e,
+        note="the lesson's e is z_M - z_G made dimensionless: times d/(2c^2) > 0, so it has the sign of z_M - z_G")
+e_print = sp.Rational(1, 6) * b ** 2 / c ** 2 - d / (2 * c) * (1 - d / (2 * c))
+dv.step("stability-function-value", (e, e_print), "algebra", uses=("stability-function", "metacentre", "gravity-centre"))
+dv.step("criterion", (sp.sign(z_M - z_G), sp.sign(I_w / V_b - (z_G - z_B)), sp.sign(e)), "algebra",
+        uses=("metacentre", "radius-inertia", "stability-function"),
+        note="z_M >= z_G is Duhamel's criterion T1/V1 - e1 > 0 (Scheeffer (18)) for this body")
+
+L1 = "Vereinfachtes Modell: gerades Parallelepiped"
+L2 = "Berechnung der Lage des Massenschwerpunktes des verdrängten Wassers"
+L3 = "Berechnung der Position des Metazentrums"
+L4 = "Analyse der Stabilitätsbedingung für das Parallelepiped"
+dv.quote("z_G", L1, "$ z_G = c - d $", reading=(z_G, c - d))
+dv.quote("section", L2, "$2b d$", reading=(A_q, 2 * b * d))
+dv.quote("triangles", L2, r"$b^2\phi$", reading=(sp.Subs(sp.Derivative(A_t, phi), phi, 0), b ** 2),
+         note="read to first order in phi, as the lesson does throughout (tg phi = phi): the coefficient of phi")
+dv.quote("triangle-arm", L2, r"$\displaystyle\frac{2b}{3}$", reading=(x_t, 2 * b / 3))
+dv.quote("shift", L2,
+         r"$\displaystyle\frac{\displaystyle\frac{2b}{3} b^2\phi}{2bd}=\displaystyle\frac{b^2\phi}{3d}$",
+         reading=(sp.Subs(sp.Derivative(shift, phi), phi, 0), (2 * b / 3) * b ** 2 / (2 * b * d), b ** 2 / (3 * d)),
+         note="read to first order: the coefficient of phi")
+dv.quote("radius", L3, r"$\displaystyle\frac{b^2}{3d}$", reading=(BM, b ** 2 / (3 * d)))
+dv.quote("z_M", L3, r"$ z_M = -\displaystyle\frac{ d }{2} + \displaystyle\frac{ b ^2}{ 3 d }$",
+         reading=(z_M, -d / 2 + b ** 2 / (3 * d)))
+dv.quote("criterion", L4, r"$ z_M \geq z_G $", reading=(sp.sign(z_M - z_G), sp.sign(I_w / V_b - (z_G - z_B))),
+         note="read as: the position is stable (Duhamel, I/V > z_G - z_B) exactly when z_M > z_G")
+dv.quote("e", L4, r"$ e = \displaystyle\frac{1}{6}\displaystyle\frac{ b ^2}{ c ^2} - \displaystyle\frac{ d }{2 c }"
+         r"\left(1-\displaystyle\frac{ d }{2 c }\right)$", reading=(e, e_print))
+dv.quote("M_b", "formula list", r"$ M_b =4 a b d \rho_w $", reading=(M_b, 4 * a * b * d * rho_w))
+dv.quote("M_s", "formula list", r"$ M_s =8 a b c \rho_s $", reading=(M_s, 8 * a * b * c * rho_s))
+dv.quote("M_b=M_s", "formula list", r"$ M_b = M_s $", reading=(M_b, M_s))
+dv.quote("density", "formula list", r"$ \displaystyle\frac{ \rho_s }{ \rho_w }= \displaystyle\frac{ d }{ 2 c }$",
+         reading=(rho_s / rho_w, d / (2 * c)))
+dv.quote("V_b", "formula list", "$ V_b = 4 a b d $", reading=(V_b, 4 * a * b * d))
+dv.quote("z_B", "formula list", r"$ z_B =-\displaystyle\frac{ d }{2}$", reading=(z_B, -d / 2))
+dv.quote("e-sign", L4, "was größer als eins im Falle einer stabilen Situation und negativ im Falle von Instabilität ist.",
+         reading=(sp.sign(z_M - z_G), sp.sign(e - 1)),
+         erratum=Erratum("claim", "high", "e > 0 in the stable case, e < 0 in the unstable case",
+                         "e = d/(2c^2) (z_M - z_G) has the sign of z_M - z_G, so the boundary of stability is e = 0, "
+                         "not e = 1: e.g. b = c, d = c (half immersed) gives e = 1/6 - 1/4 < 0 (unstable), and "
+                         "b = 3c/2, d = c gives e = 3/8 - 1/4 = 1/8, between 0 and 1 and stable (z_M - z_G = "
+                         "c/4 > 0). e > 1 needs b > sqrt(6) c at least (e <= b^2/(6c^2)), so 'größer als eins' "
+                         "would declare most stable hulls unstable. Probably a slip for 'größer als null' (the German web "
+                         "page is a translation), so a claim fault of the lesson, not of the transcription.",
+                         corrected_reading=(sp.sign(z_M - z_G), sp.sign(e))))
+dv.quote("vasa", L4, "Eine Lösung wäre gewesen, es tiefer zu versenken oder einen höheren $d/c$-Wert zu erreichen, "
+         "um die Zone der Instabilität zu vermeiden.",
+         reading=(sp.sign(sp.Derivative(e, d)), 1),
+         erratum=Erratum("claim", "medium", r"deeper immersion raises e only when d/(2c) > 1/2: "
+                         r"\partial e/\partial d = (d - c)/(2 c^2)",
+                         "Within the lesson's model (homogeneous box, centre of mass at its centre) "
+                         "e = b^2/(6c^2) - delta (1 - delta), delta = d/(2c), is smallest at delta = 1/2: a hull "
+                         "floating less than half immersed becomes LESS stable when it is sunk deeper (e.g. b = c/2, "
+                         "d = c/2: e = 1/24 - 3/16 < 0, and at d = c e = 1/24 - 1/4, lower still). Sinking deeper "
+                         "helps only beyond half immersion, or in a real ship by ballast that lowers G, which the "
+                         "model does not contain.",
+                         corrected_reading=(sp.sign(sp.Derivative(e, d)), sp.sign(d - c))))
+
+# ---- witnesses -------------------------------------------------------------------------------
+
+
+def _hull(case, dps):
+    """The box as a horizontal prism: cross-section 2b x 2c in (x, y), length 2a along z."""
+    B, C, A = (Fraction(str(case.params[s])) for s in (b, c, a))
+    return right_prism([(-B, -C), (B, -C), (B, C), (-B, C)], 2 * A, None if dps <= 15 else dps)
+
+
+def _s(case):
+    return Fraction(str(case.params[d])) / (2 * Fraction(str(case.params[c])))
+
+
+def upright(case, dps):
+    body = _hull(case, dps)
+    st = floating_state(body, (0, 1, 0), _s(case))
+    return st, body
+
+
+def measured(case, dps):
+    st, body = upright(case, dps)
+    zG = st.G[1] - st.t
+    zB = st.B[1] - st.t
+    return {"zG": zG, "zB": zB, "V": st.volume, "GM": st.metacentric_height, "body": body, "t": st.t}
+
+
+def righting_limit(case, dps):
+    """lim m(psi)/psi of the clipped heeled box (Neville from psi = h .. h/2^k), 90 digits at dps 50."""
+    def arm(t, p):
+        body = _hull(case, p)
+        sin, cos = (mpmath.sin, mpmath.cos) if p > 15 else (__import__("math").sin, __import__("math").cos)
+        st = floating_state(body, (sin(t), cos(t), 0), _s(case))
+        return ((st.B[0] - st.G[0]) * (-st.u[1]) + (st.B[1] - st.G[1]) * st.u[0]) / t
+
+    def neville(f, h, levels):
+        xs = [h / 2 ** j for j in range(levels + 1)]
+        ps = [f(q) for q in xs]
+        for j in range(1, levels + 1):
+            ps = [(xs[i + j] * ps[i] - xs[i] * ps[i + 1]) / (xs[i + j] - xs[i]) for i in range(len(ps) - 1)]
+        return ps[0]
+    if dps <= 15:
+        return neville(lambda q: arm(q, 15), 1e-3, 3)
+    with mpmath.workdps(90):
+        val = neville(lambda q: arm(q, 90), mpmath.mpf("1e-10"), 5)
+    return +val
+
+
+CASES = (Case({a: 4, b: 1, c: 1, d: 1, rho_w: 1}, label="a=4, b=1, c=1, d=1 (half immersed, unstable)"),
+         Case({a: 5, b: sp.Rational(3, 2), c: 1, d: sp.Rational(1, 2), rho_w: 1},
+              label="a=5, b=3/2, c=1, d=1/2 (stable)"),
+         Case({a: 3, b: 2, c: sp.Rational(3, 2), d: sp.Rational(5, 2), rho_w: 1},
+              label="a=3, b=2, c=3/2, d=5/2 (stable, deep)"))
+LIMIT = (Precision(15, 1e-7), Precision(50, 1e-35))
+
+
+def W(name, description, targets, f, methods=None):
+    kw = {"methods": methods} if methods else {}
+    dv.witness(Computed(name, description, targets, CASES, compute=f, **kw))
+
+
+W("metacentre-inertia", "z_M = (I_min/V - (G - B)) + z_G of the clipped upright box", ("z_M",),
+  lambda case, dps: (lambda r: r["GM"] + r["zG"])(measured(case, dps)))
+W("metacentre-heel", "z_M = lim m/phi + z_G: righting arm of the clipped heeled box, extrapolated", ("z_M",),
+  lambda case, dps: righting_limit(case, dps) + measured(case, dps)["zG"], LIMIT)
+W("radius-heel", "BM = lim m/phi + (z_G - z_B) from the clipped heeled box", ("radius",),
+  lambda case, dps: (lambda r: righting_limit(case, dps) + r["zG"] - r["zB"])(measured(case, dps)), LIMIT)
+W("stability-function", "e = d/(2c^2) (I_min/V - (G - B)) of the clipped box", ("e",),
+  lambda case, dps: measured(case, dps)["GM"] * mpmath.mpf(_s(case).numerator) / _s(case).denominator
+  / mpmath.mpf(str(case.params[c])))
+W("centre-of-gravity", "height of G above the water plane, clipped box", ("z_G",),
+  lambda case, dps: measured(case, dps)["zG"])
+W("centre-of-buoyancy", "height of B above the water plane, clipped box", ("z_B",),
+  lambda case, dps: measured(case, dps)["zB"])
+W("displaced-volume", "volume of the clipped immersed part", ("V_b",), lambda case, dps: measured(case, dps)["V"])
+W("displaced-mass", "rho_w times the clipped immersed volume", ("M_b", "M_s", "M_b=M_s"),
+  lambda case, dps: measured(case, dps)["V"])
+
+
+def _density(case, dps):
+    """The density ratio at which the box floats with draught d: clipped volume below the plane at depth d
+    over the whole volume."""
+    body = _hull(case, dps)
+    cc, dd = Fraction(str(case.params[c])), Fraction(str(case.params[d]))
+    return volume_centroid(clip_below(body, (0, 1, 0), dd - cc))[0] / volume_centroid(body)[0]
+
+
+W("density-ratio", "clipped volume below depth d over the box volume", ("density",), _density)
+W("section-area", "clipped immersed volume over the length 2a", ("section",),
+  lambda case, dps: measured(case, dps)["V"] / (2 * mpmath.mpf(str(case.params[a]))))

@@ -1,0 +1,493 @@
+"""Scheeffer 1902, sections I-III: equilibrium, the righting moment of a
+body prismatic at the waterline, and Duhamel's criterion.
+
+I.  Body frame of the tilted body: ``v`` across the floating axis (towards
+the side that dips), ``u`` down the floating axis from the centroid S.  The
+new submerged part is the old one (volume V1, centroid S1 at u = e1) less
+the emerged wedge (V3, centroid S4) plus the immersed wedge (V3, centroid
+S3): the moment theorem gives (6); the rotation of the frame by phi gives (5)
+and with it (7).  World frame of the checks: X horizontal towards the dipping
+side, Y vertically down (Scheeffer's SL), so that m (the righting arm SA) is
+the X coordinate and n the Y coordinate of S2.
+
+II.  The wedges of a body prismatic near the waterline are sums of prismatic
+elements over the old waterplane: the element over df at distance x from the
+axis has height x tg phi.  The element integrals are done in general; the
+waterplane is then taken concretely as a trapezoid whose parallel sides P1,
+P2 (at s = 0 and s = Hh) run parallel to the rotation axis: P2 = P1 is a
+rectangle (the box), P2 -> 0 a triangle.  Its wedge volumes, moments and its
+moment of inertia T1 are integrated symbolically, the axis is shown to pass
+through the centroid of the waterplane (V3 = V4), and (10)-(13) follow.
+
+III.  The expansion of (12) in phi gives (16) and Duhamel's criterion (18);
+the curvature of V1 n (the energy of the system in units of the weight,
+Schülen's approach quoted in the preface) gives the same criterion.
+
+Witnesses: exact clipping of floating prisms (``symfloat.geometry.floating``):
+vertical prisms over trapezoids tilted about an axis parallel to the parallel
+sides, wedges cut out of the clipped body; horizontal boxes and an apex-down
+triangular prism (not prismatic at the waterline) for the small-angle limits.
+"""
+import math
+from fractions import Fraction
+
+import mpmath
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, Computed, Precision
+from symfloat.geometry.floating import clip_below, draught, floating_state, right_prism, volume_centroid
+
+phi = sp.Symbol("varphi", positive=True)
+V1, V3, V4 = sp.symbols("V_1 V_3 V_4", positive=True)
+e1 = sp.Symbol("e_1", real=True)
+u, v, m, n, e, k = sp.symbols("u v m n e k", real=True)
+u3, u4, v3, v4 = sp.symbols("u_3 u_4 v_3 v_4", positive=True)
+x3, x4, y3, y4 = sp.symbols("x_3 x_4 y_3 y_4", positive=True)
+P1, P2, Hh = sp.symbols("P_1 P_2 H", positive=True)
+a, a0, c0, h0 = sp.symbols("a a_0 c_0 h_0", real=True)
+x, s, eta = sp.symbols("x s eta", real=True)
+T1, J3, J4 = sp.symbols(r"T_1 \int_3{x^2df} \int_4{x^2df}", positive=True)
+Mx3, My3, Mx4, My4 = sp.symbols(r"V_3x_3 V_3y_3 V_4x_4 V_4y_4", real=True)
+tg = sp.tan(phi)
+
+DERIVATION = d = Derivation(
+    id="scheeffer-i-iii",
+    source="scheeffer",
+    title="Equilibrium, the righting moment of a prismatic body, Duhamel's criterion",
+    locator="I-III",
+    summary="V1 m = sin(phi) {(1 + tg^2(phi)/2) T1 - V1 e1} for a body prismatic at the waterline, the axis "
+            "through the centroid of the old waterplane; for small phi m = phi (T1/V1 - e1), stable iff "
+            "T1/V1 - e1 > 0 (Duhamel), for every body.",
+    domain={phi: (sp.Rational(1, 20), 1), V1: (1, 10), e1: (-2, 3), V3: (sp.Rational(1, 10), 3),
+            u3: (sp.Rational(1, 10), 3), u4: (sp.Rational(1, 10), 3), v3: (sp.Rational(1, 10), 3),
+            v4: (sp.Rational(1, 10), 3), P1: (sp.Rational(1, 2), 4), P2: (sp.Rational(1, 2), 4), Hh: (1, 3),
+            a0: (sp.Rational(1, 10), 1), c0: (-1, 1), h0: (0, 2), x: (0, 3)},
+    constraints=(a0 < Hh,),
+    assumptions=(
+        "homogeneous body of volume-weight ratio such that the submerged volume V1 is constant (water of "
+        "specific weight 1, the water level unchanged)",
+        "0 < phi < pi/2 (sampled in [1/20, 1])",
+        "section II: the body is prismatic between the first and the last waterplane (AA1, BB1 perpendicular "
+        "to A1B1); the concrete waterplane is a trapezoid with parallel sides P1, P2 > 0 parallel to the "
+        "rotation axis at distance H apart (P1 = P2: rectangle; triangles are the limit P2 -> 0 and are "
+        "used in the witnesses)",
+        "T1 = int x^2 df of the trapezoid ranges over all positive values, so the identities of (12)-(18), "
+        "which are linear in T1, are checked in full generality",
+        "Fig. 3 (lost): the wedges lie above S (u3, u4 are the absolute values of their negative u "
+        "coordinates), as the printed signs of (6) require",
+    ),
+)
+
+# ---- I. equilibrium, (2), (5), (6), (7) --------------------------------------------------------
+d.quote("equilibrium", "(1)", "Hieraus erhält man zwei Bedingungsgleichungen für das Gleichgewicht. (1",
+        lost="the two equations (1) (static moments of the submerged part about two vertical planes through S "
+             "equal to zero) are not displayed; only '(1' survives")
+
+d.step("buoyancy-moment-v", sp.Eq(v, (V1 * 0 - V3 * (-v4) + V3 * v3) / V1), "definition", result=v,
+       note="moment theorem across the axis: new submerged part = old (S1 on the axis) - emerged wedge "
+            "(S4 at v = -v4) + immersed wedge (S3 at v = +v3)")
+d.step("buoyancy-moment-u", sp.Eq(u, (V1 * e1 - V3 * (-u4) + V3 * (-u3)) / V1), "definition", result=u,
+       note="moment theorem along the axis (u downwards from S): S1 at u = e1, S3 and S4 above S at "
+            "u = -u3, -u4 (Fig. 3)")
+d.step("moments-6-raw", (sp.Matrix([V1 * v, V1 * u]), sp.Matrix([V3 * (v3 + v4), V1 * e1 - V3 * (u3 - u4)])),
+       "algebra", uses=("buoyancy-moment-v", "buoyancy-moment-u"))
+d.step("e-def", sp.Eq(e, v3 + v4), "definition", result=e, note="e = v3 + v4 = EF")
+d.step("k-def", sp.Eq(k, u3 - u4), "definition", result=k, note="k = u3 - u4 = S3F + S4E")
+d.step("moments-6", (sp.Matrix([V1 * v, V1 * u]), sp.Matrix([V3 * e, V1 * e1 - V3 * k])), "algebra",
+       uses=("moments-6-raw", "e-def", "k-def"))
+
+ev = sp.Matrix([sp.cos(phi), sp.sin(phi)])     # body direction v in the world frame (X, Y down)
+eu = sp.Matrix([-sp.sin(phi), sp.cos(phi)])    # body axis (down) in the world frame
+d.step("frame", (sp.Matrix([ev.dot(ev), eu.dot(eu), ev.dot(eu), eu[1]]), sp.Matrix([1, 1, 0, sp.cos(phi)])),
+       "geometry", note="the body frame (v, u) is orthonormal and its axis SS1 makes the angle phi with the "
+                        "vertical SL")
+S2w = v * ev + u * eu
+d.step("m-def", sp.Eq(m, S2w[0]), "definition", result=m, note="m = SA: horizontal coordinate of S2")
+d.step("n-def", sp.Eq(n, S2w[1]), "definition", result=n, note="n = AS2: depth of S2 below S")
+d.step("rotation-5", (sp.Matrix([m, n]), sp.Matrix([v * sp.cos(phi) - u * sp.sin(phi),
+                                                    v * sp.sin(phi) + u * sp.cos(phi)])),
+       "geometry", uses=("frame", "m-def", "n-def"))
+rhs7 = sp.Matrix([V3 * e * sp.cos(phi) + V3 * k * sp.sin(phi) - V1 * e1 * sp.sin(phi),
+                  V3 * e * sp.sin(phi) - V3 * k * sp.cos(phi) + V1 * e1 * sp.cos(phi)])
+d.step("moments-7", (sp.Matrix([V1 * m, V1 * n]), rhs7), "substitution", uses=("rotation-5", "moments-6"))
+# the couple: buoyancy V1 upwards (-Y) at S2, weight V1 downwards at S; its moment about S in the sense
+# that turns X into Y (the sense of the heel) is X F_Y - Y F_X; restoring is the opposite sense
+torque = m * (-V1) - n * 0
+d.step("couple", (-torque, V1 * m), "algebra", uses=("m-def",),
+       note="the moment of the couple against the heel is V1 m: positive m turns the body back")
+
+d.quote("stability-2", "(2)", r"$$V_1 m > 0. \quad (2)$$", reading=(sp.sign(-torque), sp.sign(V1 * m)),
+        note="read as: the couple restores (its moment against the heel is positive) exactly when V1 m > 0")
+d.quote("rotation-5", "(5)",
+        r"$$\begin{aligned} m &= v \cos \varphi - u \sin \varphi \\ n &= v \sin \varphi + u \cos \varphi "
+        r"\end{aligned} \quad (5)$$",
+        reading=(sp.Matrix([m, n]), sp.Matrix([v * sp.cos(phi) - u * sp.sin(phi), v * sp.sin(phi) + u * sp.cos(phi)])))
+d.quote("moments-raw", "I",
+        r"$$\begin{aligned} V_1 v &= V_3 (v_3 + v_4) \\ V_1 u &= V_1 e_1 - V_3 (u_3 - u_4). \end{aligned}$$",
+        reading=(sp.Matrix([V1 * v, V1 * u]), sp.Matrix([V3 * (v3 + v4), V1 * e1 - V3 * (u3 - u4)])))
+d.quote("moments-6", "(6)",
+        r"$$\begin{aligned} V_1 v &= V_3 e \\ V_1 u &= V_1 e_1 - V_3 k \end{aligned} \quad (6)$$",
+        reading=(sp.Matrix([V1 * v, V1 * u]), sp.Matrix([V3 * e, V1 * e1 - V3 * k])))
+d.quote("moments-7", "(7)",
+        r"$$\begin{aligned} V_1 m &= V_3 e \cos \varphi + V_3 k \sin \varphi - V_1 e_1 \sin \varphi \\ V_1 n &= "
+        r"V_3 e \sin \varphi - V_3 k \cos \varphi + V_1 e_1 \cos \varphi. \end{aligned} \quad (7)$$",
+        reading=(sp.Matrix([V1 * m, V1 * n]), rhs7))
+
+# ---- II. the prismatic body: element integrals -------------------------------------------------
+d.step("element-volume", (sp.Integral(1, (eta, 0, x * tg)), x * tg), "integration",
+       note="the prismatic element PQ over df at distance x from the axis has height y = x tg phi")
+d.step("element-moment-y", (sp.Integral(eta, (eta, 0, x * tg)), x ** 2 * tg ** 2 / 2), "integration",
+       note="its static moment about the old waterplane, per unit df: df y y/2")
+d.step("element-moment-x", (sp.Integral(x, (eta, 0, x * tg)), x ** 2 * tg), "integration",
+       note="its static moment about the plane through the axis perpendicular to the old waterplane: df y x")
+
+W = P1 + (P2 - P1) * s / Hh       # length of the waterplane chord at distance s from the side P1
+area = sp.Integral(W, (s, 0, Hh))
+d.step("trapezoid-area", (area, Hh * (P1 + P2) / 2), "integration")
+sbar = Hh * (P1 + 2 * P2) / (3 * (P1 + P2))
+d.step("trapezoid-centroid", (sp.Integral(s * W, (s, 0, Hh)) / area, sbar), "integration")
+
+
+def wedge(f, axis):
+    """The immersed (3) and emerged (4) wedge integrals of the element quantity f(x, eta) for the axis at
+    s = axis: the element over the chord at s has height |s - axis| tg phi."""
+    g3 = sp.Integral(sp.Integral(f.subs(x, s - axis), (eta, 0, (s - axis) * tg)) * W, (s, axis, Hh))
+    g4 = sp.Integral(sp.Integral(f.subs(x, axis - s), (eta, 0, (axis - s) * tg)) * W, (s, 0, axis))
+    return g3, g4
+
+
+V3g, V4g = wedge(sp.Integer(1), a0)
+d.step("volume-balance", (V3g - V4g, tg * (sp.Integral((s - a0) * W, (s, a0, Hh)) - sp.Integral((a0 - s) * W, (s, 0, a0))),
+                          tg * sp.Integral((s - a0) * W, (s, 0, Hh)), tg * area * (sbar - a0)),
+       "integration", uses=("element-volume", "trapezoid-area", "trapezoid-centroid"),
+       note="for an axis at any distance a0 from the side P1: V3 - V4 = tg phi (int_3 x df - int_4 x df) = "
+            "tg phi * area * (centroid - a0), so V3 = V4 (Archimedes) only for a0 at the centroid")
+d.step("axis", sp.Eq(a, sbar), "definition", result=a, uses=("volume-balance",),
+       note="the rotation axis: the only root a0 of V3 = V4, the centroid line of the old waterplane")
+V3i, V4i = wedge(sp.Integer(1), a)
+Mx3i, Mx4i = wedge(x, a)
+My3i, My4i = wedge(eta, a)
+
+
+def closed(expr):
+    """The closed form of a wedge or waterplane integral (evaluated here; the step checks it)."""
+    return sp.factor(sp.simplify(expr.doit().subs(a, sbar)))
+
+
+K3c, K4c = closed(sp.Integral((s - a) * W, (s, a, Hh))), closed(sp.Integral((a - s) * W, (s, 0, a)))
+J3c, J4c = closed(sp.Integral((s - a) ** 2 * W, (s, a, Hh))), closed(sp.Integral((a - s) ** 2 * W, (s, 0, a)))
+T1c = Hh ** 3 * (P1 ** 2 + 4 * P1 * P2 + P2 ** 2) / (36 * (P1 + P2))
+d.step("V3", (V3, V3i, tg * K3c), "integration", result=V3, uses=("element-volume", "axis"),
+       note="immersed wedge: the sum of the elements over part 3 of the waterplane")
+d.step("V4", (V4, V4i, tg * K4c), "integration", result=V4, uses=("element-volume", "axis"),
+       note="emerged wedge: the sum of the elements over part 4")
+d.step("archimedes", (V3, V4), "algebra", uses=("V3", "V4"))
+for sym, val, clo, nm, el in ((Mx3, Mx3i, tg * J3c, "Mx3", "element-moment-x"),
+                              (My3, My3i, tg ** 2 / 2 * J3c, "My3", "element-moment-y"),
+                              (Mx4, Mx4i, tg * J4c, "Mx4", "element-moment-x"),
+                              (My4, My4i, tg ** 2 / 2 * J4c, "My4", "element-moment-y")):
+    d.step(nm, (sym, val, clo), "integration", result=sym, uses=(el, "axis"),
+           note="static moment of the wedge as the sum of the moments of its prismatic elements")
+d.step("J3", (J3, sp.Integral((s - a) ** 2 * W, (s, a, Hh)), J3c), "integration", result=J3, uses=("axis",))
+d.step("J4", (J4, sp.Integral((a - s) ** 2 * W, (s, 0, a)), J4c), "integration", result=J4, uses=("axis",))
+d.step("T1", (T1, sp.Integral((s - a) ** 2 * W, (s, 0, Hh)), T1c), "integration", result=T1, uses=("axis",),
+       note="moment of inertia of the old waterplane about the rotation axis (density 1)")
+d.step("T1-parts", (T1, J3 + J4), "algebra", uses=("T1", "J3", "J4"))
+d.step("wedge-moments-3", (sp.Matrix([My3, Mx3]), sp.Matrix([tg ** 2 / 2 * J3, tg * J3])), "integration",
+       uses=("element-moment-y", "element-moment-x", "My3", "Mx3", "J3"))
+d.step("wedge-moments-4", (sp.Matrix([My4, Mx4]), sp.Matrix([tg ** 2 / 2 * J4, tg * J4])), "integration",
+       uses=("element-moment-y", "element-moment-x", "My4", "Mx4", "J4"))
+# the wedge centroids in the frame of the old waterline (O the axis), and their body coordinates
+for sym, val, nm in ((x3, Mx3 / V3, "x3"), (y3, My3 / V3, "y3"), (x4, Mx4 / V4, "x4"), (y4, My4 / V4, "y4")):
+    d.step(nm, sp.Eq(sym, val), "definition", result=sym, note="wedge centroid: moment over volume")
+d.step("body-coordinates", sp.Eq(v3, c0 + x3), "definition", result=v3,
+       note="O, the trace of the axis, lies at v = c0 on the old waterline, which lies at the height h0 above S; "
+            "S3 lies beyond O by x3 (OF) and above the old waterline by y3 (S3F)")
+d.step("body-coordinates-4", sp.Eq(v4, x4 - c0), "definition", result=v4, note="S4 lies on the other side, OE = x4")
+d.step("body-coordinates-u3", sp.Eq(u3, h0 + y3), "definition", result=u3)
+d.step("body-coordinates-u4", sp.Eq(u4, h0 - y4), "definition", result=u4, note="S4 lies below the old waterline")
+d.step("e-k-wedges", (sp.Matrix([e, k]), sp.Matrix([x3 + x4, y3 + y4])), "geometry",
+       uses=("e-def", "k-def", "body-coordinates", "body-coordinates-4", "body-coordinates-u3",
+             "body-coordinates-u4"), note="EF = e and S3F + S4E = k, for any position (c0, h0) of O")
+d.step("wedge-moments-10", (sp.Matrix([V3 * e, V3 * k]), sp.Matrix([V3 * x3 + V3 * x4, V3 * y3 + V3 * y4]),
+                            sp.Matrix([T1 * tg, T1 * tg ** 2 / 2])), "integration",
+       uses=("e-k-wedges", "archimedes", "wedge-moments-3", "wedge-moments-4", "T1-parts"))
+rhs12 = sp.sin(phi) * ((1 + tg ** 2 / 2) * T1 - V1 * e1)
+rhs13 = T1 * sp.sin(phi) * tg / 2 + V1 * e1 * sp.cos(phi)
+d.step("righting-moment-12", (V1 * m, rhs12), "substitution", uses=("moments-7", "wedge-moments-10"))
+d.step("moment-13", (V1 * n, rhs13), "substitution", uses=("moments-7", "wedge-moments-10"))
+
+d.quote("moments-10", "(10)",
+        r"$$\begin{aligned} V_3 e &= V_3 x_3 + V_3 x_4 \\ V_3 k &= V_3 y_3 + V_3 y_4 \end{aligned} \quad (10)$$",
+        reading=(sp.Matrix([V3 * e, V3 * k]), sp.Matrix([V3 * x3 + V3 * x4, V3 * y3 + V3 * y4])))
+d.quote("moments-10a", "(10a)",
+        r"$$\begin{aligned} V_3 y_3 &= \int_3 \frac{1}{2} df \cdot x^2 \operatorname{tg}^2 \varphi = \frac{1}{2} "
+        r"\operatorname{tg}^2 \varphi \int_3 x^2 df \\ V_3 x_3 &= \int_3 df \cdot x^2 \operatorname{tg} \varphi = "
+        r"\operatorname{tg} \varphi \int_3 x^2 df \end{aligned} \quad (10a)$$",
+        reading=(sp.Matrix([V3 * y3, V3 * x3]),
+                 sp.Matrix([sp.Integral((s - a) ** 2 * tg ** 2 / 2 * W, (s, a, Hh)),
+                            sp.Integral((s - a) ** 2 * tg * W, (s, a, Hh))]),
+                 sp.Matrix([tg ** 2 / 2 * J3, tg * J3])),
+        note="int_3 ... df over the concrete waterplane: the part s > a of the trapezoid, x = s - a")
+d.quote("moments-10b", "(10b)",
+        r"$$\begin{aligned} V_3 y_4 &= \frac{1}{2} \operatorname{tg}^2 \varphi \int_4 x^2 df \\ V_3 x_4 &= "
+        r"\operatorname{tg} \varphi \int_4 x^2 df \end{aligned} \quad (10b)$$",
+        reading=(sp.Matrix([V3 * y4, V3 * x4]), sp.Matrix([tg ** 2 / 2 * J4, tg * J4])))
+d.quote("moments-sum", "II, after (10b)",
+        r"$$\begin{aligned} V_3 e &= \operatorname{tg} \varphi \int x^2 df \\ V_3 k &= \frac{1}{2} "
+        r"\operatorname{tg}^2 \varphi \int x^2 df \end{aligned}$$",
+        reading=(sp.Matrix([V3 * e, V3 * k]), sp.Matrix([tg * sp.Integral((s - a) ** 2 * W, (s, 0, Hh)),
+                                                          tg ** 2 / 2 * sp.Integral((s - a) ** 2 * W, (s, 0, Hh))])))
+d.quote("moments-11", "(11)",
+        r"$$\begin{aligned} V_3 e &= T_1 \operatorname{tg} \varphi \\ V_3 k &= \frac{1}{2} T_1 \cdot "
+        r"\operatorname{tg}^2 \varphi \end{aligned} \quad (11)$$",
+        reading=(sp.Matrix([V3 * e, V3 * k]), sp.Matrix([T1 * tg, T1 * tg ** 2 / 2])))
+d.quote("volume-V3", "II, wedge volumes",
+        r"Der Rauminhalt des neu eintauchenden Körperteils ist  $V_3 = \int_3 y \cdot df = \int_3 x \cdot df "
+        r"\cdot \operatorname{tg} \varphi$",
+        reading=(V3, sp.Integral((s - a) * tg * W, (s, a, Hh)), tg * sp.Integral((s - a) * W, (s, a, Hh))))
+d.quote("volume-V4", "II, wedge volumes",
+        r"$$\text{und ebenso gross ist } V_4 = \int_4 x \cdot df \cdot \operatorname{tg} \varphi,$$",
+        reading=(V4, V3, tg * sp.Integral((a - s) * W, (s, 0, a))))
+d.quote("moments-equal", "II, wedge volumes", r"$$\int_3 x df = \int_4 x df$$",
+        reading=(sp.Integral((s - a) * W, (s, a, Hh)), sp.Integral((a - s) * W, (s, 0, a))))
+d.quote("axis-centroid", "II, wedge volumes",
+        "Dieses sind aber die statischen Momente der beiden Flächenteile in Bezug auf die Drehungsachse, "
+        "letztere geht folglich durch den Schwerpunkt des alten Wasserschnitts.",
+        reading=(a, sp.Integral(s * W, (s, 0, Hh)) / area),
+        note="the axis (at s = a) and the centroid of the old waterplane coincide")
+d.quote("moment-12", "(12)",
+        r"$$V_1 m = \sin \varphi \left\{ \left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - V_1 e_1 "
+        r"\right\} \quad (12)$$", reading=(V1 * m, rhs12))
+d.quote("moment-13", "(13)",
+        r"$$V_1 n = \frac{1}{2} T_1 \sin \varphi \cdot \operatorname{tg} \varphi + V_1 e_1 \cos \varphi \quad (13)$$",
+        reading=(V1 * n, rhs13))
+crit15 = (1 + tg ** 2 / 2) * T1 - V1 * e1
+d.step("sign-15", (sp.sign(V1 * m), sp.sign(crit15)), "algebra", uses=("righting-moment-12",),
+       note="sin phi > 0 for 0 < phi < pi/2: V1 m and the bracket of (12) have the same sign")
+d.quote("stable-15", "(15)",
+        r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - V_1 e_1 > 0 \text{ sein.} \quad (15)$$",
+        reading=(sp.sign(V1 * m), sp.sign(crit15)),
+        note="read as the equivalence of the signs: V1 m > 0 (stable, (2)) exactly when the bracket is "
+             "positive; the text's reference '(nach 9 und 12)' names an equation (9) that the transcription "
+             "does not display (the stability condition is (2))")
+d.quote("labile-15", "after (15)",
+        r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - V_1 e_1 < 0$$",
+        reading=(sp.sign(V1 * m), sp.sign(crit15)),
+        note="'so ist V1 m [negativ] und daher ... < 0': the same equivalence for the labile case")
+
+# ---- III. small angles: (16), Duhamel (18) ----------------------------------------------------
+m1 = sp.Subs(sp.Derivative(m, phi), phi, 0)
+d.step("m-at-zero", (sp.Subs(m, phi, 0), 0), "series", uses=("righting-moment-12",))
+d.step("series-16", (m1, T1 / V1 - e1), "series", uses=("righting-moment-12",),
+       note="sin phi = phi + O(phi^3), tg^2 phi = O(phi^2)")
+d.step("series-m2", (sp.Subs(sp.Derivative(m, phi, 2), phi, 0), 0), "series", uses=("righting-moment-12",),
+       note="no phi^2 term: the error of (16) is O(phi^3)")
+d.step("series-m3", (sp.Subs(sp.Derivative(m, phi, 3), phi, 0) / 6, T1 / (3 * V1) + e1 / 6), "series",
+       uses=("righting-moment-12",), note="m = phi (T1/V1 - e1) + phi^3 (T1/(3 V1) + e1/6) + O(phi^5)")
+cx3, cy3, cx4, cy4 = sp.symbols("c_{x3} c_{y3} c_{x4} c_{y4}", real=True)
+for sym, expr, val, nm, note in (
+        (cx3, sp.Subs(sp.Derivative(Mx3, phi), phi, 0), J3, "series-x3", "tg phi = phi + O(phi^3)"),
+        (cy3, sp.Subs(sp.Derivative(My3, phi, 2), phi, 0) / 2, J3 / 2, "series-y3", "tg^2 phi = phi^2 + O(phi^4)"),
+        (cx4, sp.Subs(sp.Derivative(Mx4, phi), phi, 0), J4, "series-x4", ""),
+        (cy4, sp.Subs(sp.Derivative(My4, phi, 2), phi, 0) / 2, J4 / 2, "series-y4", "")):
+    d.step(nm, (sym, expr, val), "series", uses=("wedge-moments-3", "wedge-moments-4"), result=sym,
+           note="leading Taylor coefficient in phi (V x of first, V y of second order); " + note)
+d.step("energy-curvature", (sp.Subs(sp.Derivative(V1 * n, phi, 2), phi, 0), T1 - V1 * e1, V1 * m1), "series",
+       uses=("moment-13", "series-16"),
+       note="V1 n is the height of S above S2 times the weight: the potential energy of body and displaced "
+            "water (water level fixed). Its curvature at phi = 0 is V1 (T1/V1 - e1): the energy method "
+            "(Schülen, preface) gives Duhamel's criterion")
+
+d.quote("duhamel-16", "(16)", r"$$m = \varphi \left( \frac{T_1}{V_1} - e_1 \right) \quad (16)$$",
+        reading=(m1, T1 / V1 - e1),
+        note="read as the first-order coefficient of m in phi (m(0) = 0), as the text says: lim m/phi")
+d.quote("series-3", "III, prism on the waterplane",
+        r"$$V_3 x_3 = \varphi \cdot \int_3 x^2 \, d f \quad V_3 y_3 = \frac{1}{2} \varphi^2 \cdot \int_3 x^2 \, d f$$",
+        reading=(sp.Matrix([cx3, cy3]), sp.Matrix([J3, J3 / 2])),
+        note="read as the leading coefficients in phi: lim V3 x3/phi and lim V3 y3/phi^2")
+d.quote("series-4", "III, prism on the waterplane",
+        r"$$V_3 x_4 = \varphi \int_4 x^2 \, d f \quad V_3 y_4 = \frac{1}{2} \varphi^2 \int_4 x^2 \, d f.$$",
+        reading=(sp.Matrix([cx4, cy4]), sp.Matrix([J4, J4 / 2])),
+        note="read as the leading coefficients in phi")
+d.quote("general-body", "III, arbitrary body",
+        "Es behalten daher auch für den allgemeinen Körper die Formeln 11. 12. 16 für sehr kleines  $\\varphi$  "
+        "ihre Giltigkeit.",
+        reading=(m1, T1 / V1 - e1),
+        note="read as lim m/phi; checked symbolically for the prism; the witness measures the first-order righting arm of a body "
+             "that is not prismatic at the waterline (a triangular prism, apex down)")
+d.quote("duhamel-18", "(18)", r"$$\frac{T_1}{V_1} = e_1 > 0. \quad (18)$$",
+        reading=(T1 / V1, e1),
+        erratum=Erratum("transcription", "high", r"\frac{T_1}{V_1} - e_1 > 0",
+                        "The condition follows from (16), m = phi (T1/V1 - e1), whose sign decides: T1/V1 - e1 > 0. "
+                        "The '=' is the scan's reading of a minus (a known fault of this transcription); printed "
+                        "as an equation the line would fix T1/V1 = e1, the boundary case, and '= e1 > 0' would "
+                        "make no condition. Duhamel's sentence quoted right after states the difference.",
+                        corrected_reading=(sp.sign(m1), sp.sign(T1 / V1 - e1))))
+d.quote("duhamel-statement", "III, Duhamel",
+        "nur muss dann die Entfernung dieser beiden Punkte kleiner sein als das kleinste der Trägheitsmomente der "
+        "Schnittfläche des Körpers mit der Wasseroberfläche in Bezug auf die durch ihren Schwerpunkt gezogenen "
+        "Geraden, dividiert durch das eingetauchte Volumen",
+        reading=(sp.sign(m1), sp.sign(T1 / V1 - e1)),
+        note="for the axis of the smallest moment of inertia T1 (the critical one): stable iff e1 < T1/V1")
+
+
+# ---- witnesses ---------------------------------------------------------------------------------
+
+def _prec(dps):
+    return None if dps is None or dps <= 15 else dps
+
+
+def _mp(q):
+    q = Fraction(q)
+    return mpmath.mpf(q.numerator) / q.denominator
+
+
+def _trapezoid_prism(data, dps):
+    """Vertical prism (axis z, length 4) over the trapezoid with the parallel sides P1 (x = 0) and P2
+    (x = H) parallel to y; P2 = 0 gives the triangle."""
+    p1, p2, hh = (Fraction(data[key]) for key in ("P1", "P2", "H"))
+    if p2 == 0:
+        poly = [(0, -p1 / 2), (hh, 0), (0, p1 / 2)]
+    else:
+        poly = [(0, -p1 / 2), (hh, -p2 / 2), (hh, p2 / 2), (0, p1 / 2)]
+    return right_prism(poly, 4, _prec(dps))
+
+
+def _dot(p, q):
+    return sum(pi * qi for pi, qi in zip(p, q))
+
+
+def _sub(p, q):
+    return tuple(pi - qi for pi, qi in zip(p, q))
+
+
+def trapezoid_tilt(case, dps):
+    """The tilted vertical trapezoid prism measured by clipping: tilt about an axis parallel to y with
+    tg phi = q, the side x = H dipping.  Wedges are cut from the body with the new and the old water
+    plane; the axis is taken where the two planes actually meet (not assumed at the centroid)."""
+    body = _trapezoid_prism(case.data, dps)
+    q = Fraction(case.data["q"])
+    t0, _ = draught(body, (0, 0, 1), Fraction(1, 2))
+    st = floating_state(body, (-q, 0, 1), Fraction(1, 2))
+    uu = st.u
+    imm = clip_below(clip_below(body, uu, st.t), (0, 0, -1), -t0)   # below new, above old plane
+    emg = clip_below(clip_below(body, tuple(-c for c in uu), -st.t), (0, 0, 1), t0)
+    V3m, c3 = volume_centroid(imm)
+    V4m, c4 = volume_centroid(emg)
+    xO = (st.t - uu[2] * t0) / uu[0]
+    hor = (uu[2], 0 * uu[0], -uu[0])            # horizontal, towards the dipping side
+    BG = _sub(st.B, st.G)
+    return {"V3": V3m, "V4": V4m, "xO": xO,
+            "Mx3": V3m * (c3[0] - xO), "My3": V3m * (c3[2] - t0),
+            "Mx4": V4m * (xO - c4[0]), "My4": V4m * (t0 - c4[2]),
+            "V1": st.volume, "m": _dot(BG, hor), "n": -_dot(BG, uu), "v": BG[0], "u": -BG[2]}
+
+
+def _trap_case(p1, p2, hh, q):
+    """Parameters of the trapezoid prism (length 4, half immersed): V1 = 2 * area, e1 = 1."""
+    params = {P1: p1, P2: p2, Hh: hh, phi: sp.atan(sp.Rational(q)), V1: 2 * sp.Rational(hh) * (p1 + p2) / 2,
+              e1: 1, c0: 0, h0: 0}
+    return Case(params, {"P1": p1, "P2": p2, "H": hh, "q": q},
+                f"vertical prism over the trapezoid P1={p1}, P2={p2}, H={hh}; tg phi = {q}")
+
+
+TRAP = (_trap_case(3, 3, 2, sp.Rational(1, 5)), _trap_case(2, 1, 2, sp.Rational(1, 2)),
+        _trap_case(2, sp.Rational(1, 2), sp.Rational(3, 2), sp.Rational(3, 4)))
+
+
+def _w(name, description, targets, f):
+    d.witness(Computed(name, description, targets, TRAP, compute=lambda case, dps: f(trapezoid_tilt(case, dps))))
+
+
+_w("wedges-e-k", "V3 e = V3 x3 + V4 x4 and V3 k = V3 y3 + V4 y4 of the clipped wedges",
+   ("moments-10", "moments-sum", "moments-11"), lambda r: (r["Mx3"] + r["Mx4"], r["My3"] + r["My4"]))
+_w("wedge-3", "static moments of the clipped immersed wedge", ("moments-10a",), lambda r: (r["My3"], r["Mx3"]))
+_w("wedge-4", "static moments of the clipped emerged wedge", ("moments-10b",), lambda r: (r["My4"], r["Mx4"]))
+_w("wedge-volume-3", "volume of the clipped immersed wedge", ("volume-V3",), lambda r: r["V3"])
+_w("wedge-volume-4", "volume of the clipped emerged wedge", ("volume-V4",), lambda r: r["V4"])
+d.witness(Computed("wedge-volume-over-tg", "clipped wedge volumes over tg phi (both wedges)", ("moments-equal",),
+                   TRAP, compute=lambda case, dps: (lambda r: r["V4"] / _mp(case.data["q"]))(trapezoid_tilt(case, dps))))
+d.witness(Computed("axis-position", "where the tilted water plane meets the old one (clipping, draught)",
+                   ("axis-centroid",), TRAP, compute=lambda case, dps: trapezoid_tilt(case, dps)["xO"]))
+_w("buoyancy-body-frame", "centre of buoyancy of the clipped tilted body in the body frame, times V1",
+   ("moments-raw", "moments-6"), lambda r: (r["V1"] * r["v"], r["V1"] * r["u"]))
+_w("buoyancy-world-frame", "centre of buoyancy of the clipped tilted body in the world frame",
+   ("rotation-5",), lambda r: (r["m"], r["n"]))
+_w("righting-moment", "V1 m, V1 n of the clipped tilted body", ("moments-7",),
+   lambda r: (r["V1"] * r["m"], r["V1"] * r["n"]))
+_w("righting-moment-m", "V1 m of the clipped tilted body", ("moment-12",), lambda r: r["V1"] * r["m"])
+_w("righting-moment-n", "V1 n (weight times height of S above S2) of the clipped tilted body", ("moment-13",),
+   lambda r: r["V1"] * r["n"])
+
+
+# -- small-angle limits by extrapolation --------------------------------------------------------
+
+def limit_at_zero(f, h, levels):
+    """Neville extrapolation to 0 of f at h, h/2, ..., h/2^levels (polynomial in the step)."""
+    xs = [h / 2 ** j for j in range(levels + 1)]
+    ps = [f(t) for t in xs]
+    for j in range(1, levels + 1):
+        ps = [(xs[i + j] * ps[i] - xs[i] * ps[i + 1]) / (xs[i + j] - xs[i]) for i in range(len(ps) - 1)]
+    return ps[0]
+
+
+def _horizontal_prism(data, dps):
+    return right_prism(data["polygon"], data["L"], _prec(dps))
+
+
+def _heeled(data, dps, psi):
+    """Righting arm and immersed-wedge moments of a horizontal prism heeled by psi about its axis z (the
+    side -x dips), by clipping; x is measured from the centroid x = 0 of the old waterline (symmetric
+    sections), heights from the old waterline."""
+    body = _horizontal_prism(data, dps)
+    sin, cos = (math.sin, math.cos) if dps is None else (mpmath.sin, mpmath.cos)
+    st = floating_state(body, (sin(psi), cos(psi), 0), data["s"])
+    t0, _ = draught(body, (0, 1, 0), data["s"])
+    V3m, c3 = volume_centroid(clip_below(clip_below(body, st.u, st.t), (0, -1, 0), -t0))
+    V4m, c4 = volume_centroid(clip_below(clip_below(body, tuple(-c for c in st.u), -st.t), (0, 1, 0), t0))
+    hor = (-st.u[1], st.u[0], 0)                # horizontal, towards the dipping side
+    return {"m": _dot(_sub(st.B, st.G), hor), "Mx3": V3m * (-c3[0]), "My3": V3m * (c3[1] - t0),
+            "Mx4": V4m * c4[0], "My4": V4m * (t0 - c4[1])}
+
+
+def small_angle(case, dps, key, power):
+    """lim psi->0 of quantity(psi)/psi^power by Neville extrapolation.  At 50 digits the clipping runs at
+    90 digits with steps 1e-10 .. 1e-10/2^5 (truncation ~1e-60, rounding ~1e-70); in float64 at steps
+    1e-3 .. 1e-3/8 (truncation ~1e-12, rounding amplified to ~1e-9 for the second-order moment)."""
+    if dps <= 15:
+        return limit_at_zero(lambda t: _heeled(case.data, None, t)[key] / t ** power, 1e-3, 3)
+    with mpmath.workdps(90):
+        val = limit_at_zero(lambda t: _heeled(case.data, 90, t)[key] / t ** power, mpmath.mpf("1e-10"), 5)
+    return +val
+
+
+def _box(W, H, L, s):
+    hw, hh = Fraction(W) / 2, Fraction(H) / 2
+    return {"polygon": [(-hw, -hh), (hw, -hh), (hw, hh), (-hw, hh)], "L": L, "s": Fraction(s)}
+
+
+def _apex_down(dd, L):
+    """Triangle (0,0), (1,2), (-1,2), apex down, floating at draught dd: s = (dd/2)^2, waterline width dd."""
+    return {"polygon": [(0, 0), (1, 2), (-1, 2)], "L": L, "s": Fraction(dd) ** 2 / 4}
+
+
+SMALL = (
+    Case({P1: 3, P2: 3, Hh: 2, V1: 6, e1: sp.Rational(1, 2)}, _box(2, 2, 3, Fraction(1, 2)),
+         "box 2 x 2 x 3, half immersed (prismatic at the waterline)"),
+    Case({P1: 2, P2: 2, Hh: 1, V1: 1, e1: sp.Rational(2, 3)}, _apex_down(1, 2),
+         "triangular prism apex down, draught 1 (not prismatic at the waterline; unstable)"),
+    Case({P1: 2, P2: 2, Hh: sp.Rational(9, 5), V1: sp.Rational(81, 25), e1: sp.Rational(2, 15)}, _apex_down(Fraction(9, 5), 2),
+         "triangular prism apex down, draught 9/5 (not prismatic at the waterline; stable)"),
+)
+LIMIT_PRECISION = (Precision(15, 1e-7), Precision(50, 1e-35))
+d.witness(Computed("righting-arm-limit", "lim m(psi)/psi from the clipped heeled body (extrapolated)",
+                   ("duhamel-16", "general-body"), SMALL, methods=LIMIT_PRECISION,
+                   compute=lambda case, dps: small_angle(case, dps, "m", 1)))
+d.witness(Computed("wedge-limits", "leading terms of the clipped immersed wedge's moments (extrapolated)",
+                   ("series-3",), SMALL, methods=LIMIT_PRECISION,
+                   compute=lambda case, dps: (small_angle(case, dps, "Mx3", 1), small_angle(case, dps, "My3", 2))))
+d.witness(Computed("wedge-limits-4", "leading terms of the clipped emerged wedge's moments (extrapolated)",
+                   ("series-4",), SMALL, methods=LIMIT_PRECISION,
+                   compute=lambda case, dps: (small_angle(case, dps, "Mx4", 1), small_angle(case, dps, "My4", 2))))

@@ -1,0 +1,885 @@
+"""Scheeffer 1902, sections IV and V: the tilted equilibrium of a right prism.
+
+A right prism of height ``b`` and specific gravity ``s`` floats upright (axis
+vertical) in equilibrium.  When the upright position is unstable for a
+horizontal axis EF through the centroid O of the waterplane I, the prism turns
+about EF until the righting moment vanishes at the angle ``phi_1`` (27).  The
+second equilibrium condition is ``int u v df = 0`` (31), (32); the waterplane II
+is the affine stretch of the waterplane I by ``1/cos phi_1`` across EF, so its
+moments of inertia are ``T_1/cos^3`` and ``T_1^1/cos`` (38), (42); the tilted
+position is stable iff ``T_1^1 > T_1`` (43a).  Section V: for a base with a
+symmetry axis the equilibrium needs ``omega = 0, 90 deg`` or ``T_x = T_y``;
+in the latter (isotropic) case the tilted position exists for every direction
+and is neutral about the axis perpendicular to EF (51); the face-crossing
+limits (53)-(55).
+
+Everything is derived in the body frame ``(u, v, z)``: ``u`` across EF
+(positive on the side that dips), ``v`` along EF, ``z`` along the prism axis
+from the waterplane I.  The prism is ``Omega x [-b s, b (1 - s)]`` with the
+centroid of the base ``Omega`` at O; integrals over ``Omega`` of polynomials in
+``u, v`` are taken termwise with the area moments ``F_1, 0, 0, T_1, T_1^1, P``
+(function ``area_integral``).  Scheeffer's (12) and (13) (section II, module
+``scheeffer-i-iii``, steps ``righting-moment-12``, ``moment-13``) are re-derived
+here from the exact column integrals of the prism, which hold for every tilt of
+the first rotation region, not only for small ones.
+
+The witnesses measure everything on clipped prisms (``symfloat.geometry.
+floating``): tilts are roots of the righting arm or of the face contact,
+found by bracketed root finding on the clipped geometry; the draught comes
+from the submerged volume, never from the plane through EF.
+"""
+from functools import lru_cache
+import math
+
+import mpmath
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, Computed
+from symfloat.geometry.floating import floating_state, right_prism, submerged
+
+# ---- symbols -------------------------------------------------------------------------------------------------
+F1, T1, T11, b, s = sp.symbols("F_1 T_1 T_1^1 b s", positive=True)
+P, P3, J = sp.symbols("P P_3 J", real=True)          # P = int_1 u v df, J = int_1 x y df
+phi, mu, om = sp.symbols("varphi mu omega", positive=True)
+Tx, Ty, T0, w = sp.symbols("T_x T_y T_0 w", positive=True)
+u, v, x, y, z = sp.symbols("u v x y z", real=True)
+u2, v2 = sp.symbols("u_2 v_2", real=True)
+utop, ubot = sp.symbols("u_m u_m'", positive=True)   # farthest points of the upper (dipping) / lower (rising) base
+eprime, c1, phi2 = sp.symbols("e^1 c_1 varphi_2", positive=True)   # the scan's / print's stray symbols
+dfs = sp.Symbol("df", positive=True)
+# results
+V1, e1, zS, zS1, Mu, Mv, Mz = sp.symbols("V_1 e_1 z_S z_{S_1} M_u M_v M_z")
+m, n, wax, phi1, M2, M3, M4, e2 = sp.symbols("m n w varphi_1 M_2 M_3 M_4 e_2")
+rdf, ru, rv, T2, T21, P2, P2e, zeta = sp.symbols("r_{df} r_u r_v T_2 T_2^1 P_2 P_2^{eq} zeta")
+Tmu, Tmue, Tm, Tm1, Tmin, D2, Q = sp.symbols("T(mu) T_eq(mu) T_m T_m^1 T_min D_2 Q")
+Uw, Vw, T1w, T11w, Iuv, Jsym, T1s, T1iso, T11iso, Tmi, Tm1i = sp.symbols(
+    "u_omega v_omega T_1(omega) T_1^1(omega) I_uv J_sym T_1^s T_1^iso T_1^1iso T_m^iso T_m^1iso")
+phtop, phbot, Lim = sp.symbols("varphi_top varphi_bot L")
+
+DERIVATION = d = Derivation(
+    id="scheeffer-iv-v",
+    source="scheeffer",
+    title="The tilted equilibrium of a right prism in the first rotation region; prisms with a symmetric base",
+    locator="IV",
+    summary="tan phi_1 = sqrt(2 (V_1 e_1/T_1 - 1)) with int u v df = 0; waterplane II has T_1/cos^3 and "
+            "T_1^1/cos; the tilted position is stable iff T_1^1 > T_1; isotropic bases tilt in every direction "
+            "(neutral about the axis across EF); the face limits tan phi <= b(1-s)/u_m, b s/u_m'.",
+    requires=("scheeffer-i-iii",),
+    domain={F1: (1, 3), T1: (sp.Rational(1, 10), 1), T11: (sp.Rational(1, 10), 1), b: (1, 4),
+            s: (sp.Rational(1, 10), sp.Rational(9, 10)), P: (-sp.Rational(1, 5), sp.Rational(1, 5)),
+            P3: (-1, 1), J: (-sp.Rational(1, 5), sp.Rational(1, 5)), phi: (sp.Rational(1, 10), 1),
+            mu: (0, sp.Rational(3, 2)), om: (0, sp.Rational(3, 2)), Tx: (sp.Rational(1, 10), 1),
+            Ty: (sp.Rational(1, 10), 1), T0: (sp.Rational(1, 10), 1), w: (sp.Rational(1, 5), 2),
+            u: (-1, 1), v: (-1, 1), x: (-1, 1), y: (-1, 1), z: (-1, 1), u2: (-1, 1), v2: (-1, 1),
+            utop: (sp.Rational(1, 5), 2), ubot: (sp.Rational(1, 5), 2), eprime: (sp.Rational(1, 10), 2),
+            c1: (sp.Rational(1, 10), 2), phi2: (sp.Rational(1, 10), 1), dfs: (sp.Rational(1, 10), 1)},
+    constraints=(F1 * b ** 2 * s * (1 - s) / 2 > T1, F1 * b ** 2 * s * (1 - s) / 2 > T0),
+    assumptions=(
+        "homogeneous right prism, base Omega of area F_1 (any plane figure), height b, specific gravity s "
+        "(0 < s < 1), in water of specific gravity 1; upright it floats with the base horizontal, draught b s",
+        "body frame: O = centroid of the waterplane I (of the base), u across the rotation axis EF (positive "
+        "on the dipping side), v along EF, z along the prism axis; T_1 = int u^2 df, T_1^1 = int v^2 df, "
+        "P = int u v df over the waterplane I",
+        "first rotation region: the waterplane cuts only the side faces, neither base face (Scheeffer: 'bevor "
+        "die obere Grundfläche eintaucht', 'so lange keine der beiden Grundflächen vom Wasserspiegel "
+        "durchschnitten wird'); all formulas are exact there, for finite tilts",
+        "the tilted equilibrium phi_1 exists (upright position unstable about EF): V_1 e_1 > T_1",
+        "stability of a position: Duhamel's criterion (18) restated here: smallest moment of inertia of the "
+        "waterplane about an axis through its centroid, minus V_1 times the height of S above S_2, positive",
+        "section V: the x axis (DC) and y axis (AB) are principal axes of the waterplane I; EF makes the angle "
+        "omega with AB; T_x = int y^2 df, T_y = int x^2 df, J = int x y df",
+    ),
+)
+
+
+def area_integral(expr, a, c, moments):
+    """int_Omega expr df for a polynomial expr in the coordinates a, c, termwise: moments maps the exponent
+    pairs (i, j) of a^i c^j to the area moments (linearity of the integral)."""
+    poly = sp.Poly(sp.expand(expr), a, c)
+    total = sp.Integer(0)
+    for (i, j), coeff in poly.terms():
+        if (i, j) not in moments:
+            raise ValueError(f"no area moment for {a}^{i} {c}^{j}")
+        total += coeff * moments[(i, j)]
+    return total
+
+
+MOM_I = {(0, 0): F1, (1, 0): 0, (0, 1): 0, (2, 0): T1, (0, 2): T11, (1, 1): P}
+MOM_XY = {(0, 0): F1, (1, 0): 0, (0, 1): 0, (2, 0): Ty, (0, 2): Tx, (1, 1): J}
+NOTE_L = ("int over Omega termwise: int df = F_1, int u df = int v df = 0 (O is the centroid), int u^2 df = T_1, "
+          "int v^2 df = T_1^1, int u v df = P")
+tph = sp.tan(phi)
+
+# ---- IV.0  the prism, upright and tilted: (12), (13) restated ------------------------------------------------
+d.step("upright-volume", (V1, area_integral(sp.integrate(1, (z, -b * s, 0)), u, v, MOM_I), F1 * b * s),
+       "integration", note="the part below the waterplane I, draught b s (Archimedes: F_1 b s = weight)", result=V1)
+d.step("centroid-S", (zS, area_integral(sp.integrate(z, (z, -b * s, b * (1 - s))), u, v, MOM_I) / (F1 * b),
+                      b * (1 - 2 * s) / 2), "integration", note="height of the centroid S of the prism above O",
+       result=zS)
+d.step("centroid-S1", (zS1, area_integral(sp.integrate(z, (z, -b * s, 0)), u, v, MOM_I) / V1, -b * s / 2),
+       "integration", result=zS1)
+d.step("e1", (e1, zS - zS1, b * (1 - s) / 2), "algebra", uses=("centroid-S", "centroid-S1"), result=e1)
+d.step("volume-II", (area_integral(sp.integrate(1, (z, -b * s, u * tph)), u, v, MOM_I), V1), "integration",
+       uses=("upright-volume",),
+       note="the waterplane II through EF (z = u tan phi) cuts off the volume V_1 for every tilt of the first "
+            "rotation region: the axis through the centroid O keeps the displacement (section II)")
+d.step("moment-u", (Mu, area_integral(u * sp.integrate(1, (z, -b * s, u * tph)), u, v, MOM_I), T1 * tph),
+       "integration", note=NOTE_L, result=Mu)
+d.step("moment-v", (Mv, area_integral(v * sp.integrate(1, (z, -b * s, u * tph)), u, v, MOM_I), P * tph),
+       "integration", note=NOTE_L, result=Mv)
+d.step("moment-z", (Mz, area_integral(sp.integrate(z, (z, -b * s, u * tph)), u, v, MOM_I),
+                    (T1 * tph ** 2 - F1 * b ** 2 * s ** 2) / 2), "integration", note=NOTE_L, result=Mz)
+kup = sp.Matrix([-sp.sin(phi), 0, sp.cos(phi)])      # upward unit normal of z = u tan phi, in (u, v, z)
+hor = sp.Matrix([sp.cos(phi), 0, sp.sin(phi)])       # horizontal, across EF, towards the dipping side
+d.step("frame", (sp.Matrix([kup.dot(sp.Matrix([1, 0, tph])), kup.dot(sp.Matrix([0, 1, 0])), kup.dot(kup),
+                            hor.dot(kup), hor.dot(hor)]), sp.Matrix([0, 0, 1, 0, 1])), "geometry",
+       note="k is the unit normal of the waterplane II (vertical), h the horizontal across EF")
+MS2 = sp.Matrix([Mu, Mv, Mz])                       # V_1 times the centroid S_2 of the tilted submerged part
+S = sp.Matrix([0, 0, zS])
+d.step("arm-m", sp.Eq(m, hor.dot(MS2 - V1 * S) / V1), "definition", result=m,
+       note="righting arm (Scheeffer's m, section I): horizontal distance of S_2 from S across EF, positive "
+            "when the buoyancy turns the prism back")
+d.step("height-n", sp.Eq(n, kup.dot(V1 * S - MS2) / V1), "definition", result=n,
+       note="n: height of S above S_2 (Scheeffer's A S_2)")
+d.step("axis-w", sp.Eq(wax, (MS2 - V1 * S)[1] / V1), "definition", result=wax,
+       note="offset of S_2 from S along EF")
+d.step("eq12", (V1 * m, sp.sin(phi) * ((1 + tph ** 2 / 2) * T1 - V1 * e1)), "algebra",
+       uses=("moment-u", "moment-z", "arm-m", "e1", "scheeffer-i-iii:righting-moment-12"),
+       note="Scheeffer (12), re-derived here from the exact column integrals of the prism (exact in the first "
+            "rotation region); agrees with scheeffer-i-iii:righting-moment-12")
+d.step("eq13", (V1 * n, T1 * sp.sin(phi) * tph / 2 + V1 * e1 * sp.cos(phi)), "algebra",
+       uses=("moment-u", "moment-z", "height-n", "e1", "scheeffer-i-iii:moment-13"),
+       note="Scheeffer (13), re-derived here; agrees with scheeffer-i-iii:moment-13")
+slope = sp.Symbol("m'(0)")
+d.step("upright-slope", (slope, sp.Limit(m / phi, phi, 0), T1 / V1 - e1), "limit", uses=("eq12",), result=slope,
+       note="the arm grows like phi (T_1/V_1 - e_1): the criterion (18) for the axis EF")
+
+
+def res(expr):
+    """expr with the values established so far inserted (build time)."""
+    r = d.results()
+    for _ in range(30):
+        new = expr.xreplace(r)
+        if new == expr:
+            return new
+        expr = new
+    return expr
+
+
+# ---- IV.1  the first condition: tan phi_1 (27) -----------------------------------------------------------------
+X = sp.Symbol("X", positive=True)
+Qx = (1 + X ** 2 / 2) * T1 - V1 * e1
+roots = [r for r in sp.solve(sp.Eq(Qx.subs({V1: F1 * b * s, e1: b * (1 - s) / 2}), 0), X)]
+root = sp.sqrt(2 * (V1 * e1 / T1 - 1))
+d.step("factor-Q", sp.Eq(Q, (1 + tph ** 2 / 2) * T1 - V1 * e1), "definition", result=Q,
+       note="the factor of sin phi in (12)")
+d.step("Q-increasing", (sp.Derivative(Q, phi), T1 * tph * (1 + tph ** 2)), "algebra", uses=("factor-Q",),
+       note="positive for 0 < phi < 90 deg: Q < 0 near the upright position grows to +oo, one zero")
+d.step("root-check", (Qx.subs(X, root), 0), "algebra",
+       note=f"sp.solve gives the roots {roots} of Q = 0 in tan phi; the positive one is this")
+d.step("phi1", sp.Eq(phi1, sp.atan(root)), "definition", uses=("root-check", "Q-increasing"), result=phi1,
+       note="the tilted position: the zero of the righting moment (12) for phi > 0, provided V_1 e_1 > T_1")
+t1 = sp.tan(phi1)
+
+# ---- IV.2  the second condition (28)-(32) -----------------------------------------------------------------------
+u3, v3 = sp.symbols("u_3 v_3", positive=True)
+d.domain.update({u3: (sp.Rational(1, 10), 1), v3: (-1, 1)})
+zel = sp.Symbol("z_el")
+d.step("column-3", (sp.Integral(v3, (z, 0, u3 * t1)), u3 * v3 * t1), "integration",
+       note="moment of the column over df (height z = u_3 tan phi_1) about the vertical plane through OS "
+            "across EF, per unit df")
+d.step("M3", sp.Eq(M3, t1 * P3), "definition", uses=("column-3",), result=M3,
+       note="P_3 = int_3 u v df over FHE, the dipping part of the waterplane I")
+d.step("M4", sp.Eq(M4, t1 * (P3 - P)), "definition", uses=("column-3",), result=M4,
+       note="int_4 u_4 v_4 df = P_3 - P: the rising part FGE with u_4 = -u (P = int_3 + int_4 u v df)")
+d.step("M2", (M2, res(Mv).subs(phi, phi1), M3 - M4, P * t1), "algebra", uses=("moment-v", "M3", "M4"),
+       note="the old submerged part has the moment V_1 * 0 (v centroid 0); M_2 = V_1 w at phi_1", result=M2)
+d.step("e2", sp.Eq(e2, res(n).subs(phi, phi1)), "definition", result=e2,
+       note="at an equilibrium S lies vertically above S_2, so e_2 = |S S_2| = n (checked next)")
+d.step("e2-vertical", (sp.Matrix([res(m).subs(phi, phi1), res(wax).subs(phi, phi1).subs(P, 0)]), sp.Matrix([0, 0])),
+       "algebra", uses=("arm-m", "axis-w", "phi1"), note="both horizontal offsets vanish at phi_1 when P = 0")
+d.step("eq35", (V1 * e2, T1 * (sp.cos(phi1) + sp.sin(phi1) * t1), T1 / sp.cos(phi1)), "algebra",
+       uses=("eq13", "e2", "phi1"))
+
+# ---- IV.3  the waterplane II (36)-(42) --------------------------------------------------------------------------
+pt = sp.Matrix([u, v, u * sp.tan(phi1)])              # the point of II above (u, v) of I
+hor1, ev = hor.subs(phi, phi1), sp.Matrix([0, 1, 0])
+d.step("coords-II", (sp.Matrix([pt.dot(hor1), pt.dot(ev)]), sp.Matrix([u / sp.cos(phi1), v])), "geometry",
+       note="coordinates of that point in II: u_2 across EF, v_2 along EF")
+jac = sp.Matrix([1, 0, sp.tan(phi1)]).cross(sp.Matrix([0, 1, 0]))
+d.step("area-II", (sp.sqrt(jac.dot(jac)), 1 / sp.cos(phi1)), "geometry",
+       note="area element: df_2 = |d p/du x d p/dv| df = df / cos phi_1")
+d.step("ratio-df", sp.Eq(rdf, sp.cos(phi1)), "definition", uses=("area-II",), result=rdf, note="df/df_2")
+d.step("ratio-u", sp.Eq(ru, sp.cos(phi1)), "definition", uses=("coords-II",), result=ru, note="u/u_2")
+d.step("ratio-v", sp.Eq(rv, 1), "definition", uses=("coords-II",), result=rv, note="v/v_2")
+c = sp.cos(phi1)
+d.step("T2", (T2, area_integral((u / c) ** 2 / c, u, v, MOM_I), T1 / c ** 3), "integration",
+       uses=("coords-II", "area-II"), note="int_2 u_2^2 df_2 pulled back to I: " + NOTE_L, result=T2)
+d.step("T21", (T21, area_integral(v ** 2 / c, u, v, MOM_I), T11 / c), "integration",
+       uses=("coords-II", "area-II"), result=T21)
+d.step("P2", (P2, area_integral((u / c) * v / c, u, v, MOM_I), P / c ** 2), "integration",
+       uses=("coords-II", "area-II"), result=P2)
+d.step("P2-eq", (P2e, sp.Subs(P2, P, 0), 0), "substitution", uses=("P2",), result=P2e,
+       note="at the equilibrium int_1 u v df = 0 (31)")
+MOM_II = {(2, 0): T2, (0, 2): T21, (1, 1): P2}
+zdist = sp.Matrix([u2, v2]).dot(sp.Matrix([sp.cos(mu), sp.sin(mu)]))
+d.step("zeta", sp.Eq(zeta, zdist), "definition", result=zeta,
+       note="distance of (u_2, v_2) from the axis PQ through O with direction (-sin mu, cos mu): PQ makes the "
+            "angle mu with EF, turned towards -u_2 (Fig. 11 is missing: the orientation of mu is free)")
+d.step("T-mu", (Tmu, area_integral(zdist ** 2, u2, v2, MOM_II),
+                T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2), "integration",
+       note="int_2 zeta^2 df_2 termwise with T_2, T_2^1, int_2 u_2 v_2 df_2", result=Tmu)
+d.step("T-mu-eq", (Tmue, sp.Subs(Tmu, P, 0), T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2), "substitution",
+       uses=("T-mu", "P2-eq"), result=Tmue)
+d.step("T-mu-between", (Tmue, T2 + (T21 - T2) * sp.sin(mu) ** 2), "algebra", uses=("T-mu-eq",),
+       note="T(mu) lies between T_2 and T_2^1: its extreme values are taken at mu = 0 and 90 deg")
+d.step("Tm", (Tm, sp.Subs(Tmue, mu, 0), T2), "substitution", uses=("T-mu-eq",), result=Tm)
+d.step("Tm1", (Tm1, sp.Subs(Tmue, mu, sp.pi / 2), T21), "substitution", uses=("T-mu-eq",), result=Tm1)
+d.step("Tmin", sp.Eq(Tmin, sp.Min(Tm, Tm1)), "definition", uses=("T-mu-between",), result=Tmin)
+d.step("D2", sp.Eq(D2, Tmin - V1 * e2), "definition", result=D2,
+       note="Duhamel's criterion (18) for the position phi_1: V_1 times its metacentric height, the smallest "
+            "moment of inertia of II minus V_1 times the height of S above S_2")
+d.step("D2-value", (D2, sp.Min(T1 / c ** 3, T11 / c) - T1 / c), "substitution",
+       uses=("D2", "Tm", "Tm1", "T2", "T21", "eq35"))
+d.step("D2-cases", (D2, sp.Min(T1 * sp.tan(phi1) ** 2, T11 - T1) / c), "algebra", uses=("D2-value",),
+       note="T_1/cos^3 - T_1/cos = T_1 tan^2 phi_1/cos > 0, so D_2 < 0 exactly when T_1^1 < T_1")
+
+# ---- V  principal axes of the waterplane I ------------------------------------------------------------------
+d.step("rotation-44", (sp.Matrix([Uw, Vw]), sp.Matrix([y * sp.sin(om) + x * sp.cos(om),
+                                                      y * sp.cos(om) - x * sp.sin(om)])), "definition",
+       note="u, v in the principal coordinates x (DC), y (AB): EF has the direction (-sin omega, cos omega), "
+            "the angle omega with AB")
+d.step("rotation-orthogonal", ((y * sp.sin(om) + x * sp.cos(om)) ** 2 + (y * sp.cos(om) - x * sp.sin(om)) ** 2,
+                               x ** 2 + y ** 2), "geometry", note="a rotation: lengths are kept")
+d.step("rotation-result-u", sp.Eq(Uw, y * sp.sin(om) + x * sp.cos(om)), "definition", result=Uw)
+d.step("rotation-result-v", sp.Eq(Vw, y * sp.cos(om) - x * sp.sin(om)), "definition", result=Vw)
+Uv, Vv = y * sp.sin(om) + x * sp.cos(om), y * sp.cos(om) - x * sp.sin(om)
+d.step("Iuv", (Iuv, area_integral(Uv * Vv, x, y, MOM_XY),
+               sp.Rational(1, 2) * (Tx - Ty) * sp.sin(2 * om) + J * sp.cos(2 * om)), "integration",
+       note="int_1 u v df in the principal coordinates, termwise (T_x = int y^2, T_y = int x^2, J = int x y)",
+       result=Iuv)
+d.step("T1w", (T1w, area_integral(Uv ** 2, x, y, MOM_XY),
+               Tx * sp.sin(om) ** 2 + Ty * sp.cos(om) ** 2 + J * sp.sin(2 * om)), "integration", result=T1w)
+d.step("T11w", (T11w, area_integral(Vv ** 2, x, y, MOM_XY),
+                Tx * sp.cos(om) ** 2 + Ty * sp.sin(om) ** 2 - J * sp.sin(2 * om)), "integration", result=T11w)
+d.step("symmetric-J", (Jsym, sp.Integral(x, (x, -w, w)), 0), "integration", result=Jsym,
+       note="y axis a symmetry axis: each chord y = const is [-w, w]; int x y df = int y (int_{-w}^{w} x dx) dy")
+d.step("T1-symmetric", (T1s, sp.Subs(T1w, J, Jsym), Tx * sp.sin(om) ** 2 + Ty * sp.cos(om) ** 2),
+       "substitution", uses=("T1w", "symmetric-J"), result=T1s)
+d.step("T1-isotropic", (T1iso, sp.Subs(T1s, (Tx, Ty), (T0, T0)), T0), "substitution", uses=("T1-symmetric",),
+       result=T1iso, note="T_x = T_y = T_0")
+d.step("T11-isotropic", (T11iso, sp.Subs(T11w, (J, Tx, Ty), (0, T0, T0)), T0), "substitution",
+       uses=("T11w", "symmetric-J"), result=T11iso)
+d.step("Tm-isotropic", (Tmi, sp.Subs(Tm, T11, T1), T1 / c ** 3), "substitution", uses=("Tm",), result=Tmi,
+       note="isotropic base: T_1^1 = T_1 for every axis (T_1 the common value)")
+d.step("Tm1-isotropic", (Tm1i, sp.Subs(Tm1, T11, T1), T1 / c), "substitution", uses=("Tm1",), result=Tm1i)
+
+# ---- V  face limits (53)-(55) ----------------------------------------------------------------------------------
+d.step("top-contact", sp.Eq(phtop, sp.atan(b * (1 - s) / utop)), "definition", result=phtop,
+       note="the plane z = u tan phi reaches the upper base z = b (1 - s) first at its farthest dipping point "
+            "u = u_m")
+d.step("top-contact-check", (utop * sp.tan(phtop), b * (1 - s)), "geometry", uses=("top-contact",))
+d.step("bottom-contact", sp.Eq(phbot, sp.atan(b * s / ubot)), "definition", result=phbot,
+       note="the plane z = u tan phi reaches the lower base z = -b s first at its farthest rising point "
+            "u = -u_m'")
+d.step("bottom-contact-check", (-ubot * sp.tan(phbot), -b * s), "geometry", uses=("bottom-contact",))
+d.step("limit", sp.Eq(Lim, sp.Min(sp.tan(phtop), sp.tan(phbot))), "definition", result=Lim,
+       note="the first rotation region: tan phi up to the first contact of either base")
+sstar = sp.Symbol("s^*")
+d.step("threshold", sp.Eq(sstar, sp.solve(sp.Eq(b * (1 - s) / utop, b * s / ubot), s)[0]), "definition",
+       result=sstar, note="the specific gravity at which both bases are reached at the same tilt (sp.solve)")
+d.step("threshold-check", (sp.Subs(b * (1 - s) / utop - b * s / ubot, s, sstar), 0), "algebra",
+       uses=("threshold",))
+d.step("top-first", (sp.sign(sp.tan(phbot) - sp.tan(phtop)), sp.sign(s - sstar)), "algebra",
+       uses=("top-contact", "bottom-contact", "threshold"),
+       note="the upper base is reached first iff s > s^* = u_m'/(u_m + u_m'), which is 1/2 only when u_m = u_m'")
+
+# ==== printed formulas =========================================================================================
+RED = "(18) restated"
+d.quote("stable-18", "IV", r"$$\frac{T_1}{V_1} - e_1 > 0.$$", reading=(slope, T1 / V1 - e1),
+        note="read as the quantity whose sign decides (the slope of the righting arm at the upright position); "
+             + RED)
+d.quote("unstable-18", "IV", r"$$\frac{T_1}{V_1} - e_1 < 0,$$", reading=(slope, T1 / V1 - e1),
+        note="as stable-18, the labile case")
+d.quote("moment-12", "IV (12)",
+        r"$$V_1 m = \sin \varphi \cdot \left\{ \left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - "
+        r"V_1 e_1 \right\}$$",
+        reading=(V1 * m, sp.sin(phi) * ((1 + tph ** 2 / 2) * T1 - V1 * e1)))
+d.quote("moment-zero", "IV (27)",
+        r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi_1 \right) T_1 - V_1 e_1 = 0$$",
+        reading=((1 + t1 ** 2 / 2) * T1 - V1 * e1, 0))
+d.quote("27", "(27)", r"$$\text{oder} \quad \operatorname{tg} \varphi_1 = \sqrt{2 \left( \frac{V_1 e_1}{T_1} - 1 "
+                      r"\right)} \quad (27)$$", reading=(t1, sp.sqrt(2 * (V1 * e1 / T1 - 1))))
+d.quote("28", "(28)", r"$$M_2 = M_3 - M_4 = 0 \text{ sein.} \quad (28)$$", reading=(M2, M3 - M4),
+        note="the '= 0' is the equilibrium condition imposed, read with (32)")
+d.quote("element-moment", "IV (29)",
+        r"$$df \cdot z \cdot v_3 = u_3 \cdot v_3 \cdot df \cdot \operatorname{tg} \varphi_1$$",
+        reading=(dfs * sp.Integral(1, (z, 0, u3 * t1)) * v3, u3 * v3 * dfs * t1))
+d.quote("29", "(29)", r"$$M_3 = \int_3 u_3 v_3 \cdot df \cdot \operatorname{tg} \varphi_1, \quad (29)$$",
+        reading=(M3, P3 * t1))
+d.quote("30-M4", "IV (30)", r"$$M_4 = \int_4 u_4 v_4 \cdot df \cdot \operatorname{tg} \varphi_1$$",
+        reading=(M4, (P3 - P) * t1), note="unnumbered in the transcription; (30) by its place")
+d.quote("M2-difference", "IV (31)",
+        r"$$M_2 = \int_3 u_3 v_3 \cdot df \cdot \operatorname{tg} \varphi_1 - \int_4 u_4 v_4 \cdot df \cdot "
+        r"\operatorname{tg} \varphi_1$$", reading=(M2, P3 * t1 - (P3 - P) * t1))
+d.quote("31", "(31)", r"$$\left. \begin{aligned} M_2 &= \int_1 u v \cdot df \cdot \operatorname{tg} \varphi_1 = 0 "
+                      r"\\ \text{oder } \int_1 u v \cdot df &= 0 \end{aligned} \right\} \quad (31)$$",
+        reading=(M2, P * t1), note="the identity M_2 = tan phi_1 int_1 u v df; '= 0' is the condition imposed")
+d.quote("32", "(32)", r"$$\left. \begin{aligned} T_1 \left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi_1 \right) "
+                      r"- V_1 e^1 &= 0 \\ \int_1 u v \cdot df &= 0 \end{aligned} \right\} \quad (32)$$",
+        reading=(sp.Matrix([V1 * res(m).subs(phi, phi1) / sp.sin(phi1), M2 / t1]),
+                 sp.Matrix([T1 * (1 + t1 ** 2 / 2) - V1 * eprime, P])),
+        note="the two equilibrium moments over their factors sin phi_1, tan phi_1 must vanish",
+        erratum=Erratum("transcription", "medium", r"T_1 \left(1 + \tfrac12 \operatorname{tg}^2\varphi_1\right) - "
+                        r"V_1 e_1 = 0",
+                        "The transcription has V_1 e^1, a quantity never defined; the same condition two lines "
+                        "earlier (and (27), (34)) reads V_1 e_1. Scheeffer writes superscript 1 for a prime "
+                        "(T_1^1), so e^1 is a misplaced index of the scan rather than a new symbol; a slip of the "
+                        "printer cannot be excluded.",
+                        corrected_reading=(sp.Matrix([V1 * res(m).subs(phi, phi1) / sp.sin(phi1), M2 / t1]),
+                                           sp.Matrix([T1 * (1 + t1 ** 2 / 2) - V1 * e1, P]))))
+d.quote("33", "(33)", r"$$T_m - V_1 e_2 > 0 \quad (33)$$", reading=(D2, Tmin - V1 * e2),
+        note="T_m here is the smallest moment of inertia of II; read as the quantity whose sign decides")
+d.quote("13-restated", "IV (13)",
+        r"$$V_1 n = \frac{1}{2} T_1 \sin \varphi \cdot \operatorname{tg} \varphi + V_1 e_1 \cos \varphi$$",
+        reading=(V1 * n, T1 * sp.sin(phi) * tph / 2 + V1 * e1 * sp.cos(phi)))
+d.quote("34", "(34)", r"$$V_1 e_2 = \frac{1}{2} T_1 \sin \varphi_1 \cdot \operatorname{tg} \varphi_1 + V_1 e_1 "
+                      r"\cos \varphi_1 \quad (34)$$",
+        reading=(V1 * e2, T1 * sp.sin(phi1) * t1 / 2 + V1 * e1 * sp.cos(phi1)))
+d.quote("32-restated", "IV (34)",
+        r"$$V_1 e_1 = T_1 \left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi_1 \right)$$",
+        reading=(V1 * e1, T1 * (1 + t1 ** 2 / 2)))
+d.quote("35", "(35)", r"$$\begin{aligned} V_1 e_2 &= T_1 (\cos \varphi_1 + \sin \varphi_1 \cdot \operatorname{tg} "
+                      r"\varphi_1) \\ \text{oder } V_1 e_2 &= \frac{T_1}{\cos \varphi_1} \end{aligned} \quad (35)$$",
+        reading=(V1 * e2, T1 * (sp.cos(phi1) + sp.sin(phi1) * t1), T1 / sp.cos(phi1)))
+d.quote("36", "(36)", r"$$\zeta = u_2 \cos \mu + v_2 \sin \mu, \quad (36)$$", reading=(zeta, u2 * sp.cos(mu) + v2 * sp.sin(mu)),
+        note="holds with mu turned from EF towards -u_2; Fig. 11, which fixes the orientation, is missing")
+d.quote("37", "(37)", r"$$\begin{aligned} T &= \int_2 \zeta^2 df_2 = \cos^2 \mu \int_2 u_2^2 df_2 + \sin^2 \mu "
+                      r"\int_2 v_2^2 df_2 + \sin 2 \mu \int_2 u_2 v_2 \cdot df_2 \\ \text{oder } T &= T_2 \cdot "
+                      r"\cos^2 \mu + T_2^1 \cdot \sin^2 \mu + \sin 2 \mu \int_2 u_2 v_2 \cdot df. \end{aligned} "
+                      r"\quad (37)$$",
+        reading=(Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
+                 T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2),
+        note="the last integral is printed with df for df_2; it is the same integral over II (int_2)")
+d.quote("38-projection", "(38)", r"$$df = \frac{df_2}{\cos \varphi_1} \quad u = \frac{u_2}{\cos \varphi_1} \quad "
+                                 r"v = \frac{v_2}{\cos \varphi_1}$$",
+        reading=(sp.Matrix([rdf, ru, rv]), sp.Matrix([1 / sp.cos(phi1)] * 3)),
+        note="read as the ratios df/df_2, u/u_2, v/v_2",
+        erratum=Erratum("misprint", "medium",
+                        r"df_2 = \frac{df}{\cos\varphi_1},\quad u_2 = \frac{u}{\cos\varphi_1},\quad v_2 = v",
+                        "The waterplane I is the projection of II along the prism axis: lengths across EF shrink "
+                        "by cos phi_1, lengths along EF are kept, so df = df_2 cos phi_1, u = u_2 cos phi_1, "
+                        "v = v_2. The printed relations invert the first two and wrongly scale v; the next lines "
+                        "(38*) are right and need exactly the corrected relations (int_1 v^2 df / cos phi_1 needs "
+                        "v_2 = v). Three consistent inversions are unlikely to be a scan fault: a slip of the "
+                        "author or printer (roles of the planes exchanged), medium confidence.",
+                        corrected_reading=(sp.Matrix([rdf, ru, rv]), sp.Matrix([sp.cos(phi1), sp.cos(phi1), 1]))))
+d.quote("38", "(38)", r"$$\left. \begin{aligned} T_2 &= \int_2 u_2^2 df_2 = \int_1 \frac{u^2 \cdot df}{\cos^3 "
+                      r"\varphi_1} = \frac{T_1}{\cos^3 \varphi_1} \\ T_2^1 &= \int_2 v_2^2 df_2 = \int_1 \frac{v^2 "
+                      r"df}{\cos \varphi_1} = \frac{T_1^1}{\cos \varphi_1} \\ \int_2 u_2 v_2 df_2 &= \frac{1}"
+                      r"{\cos^2 \varphi_1} \cdot \int u \cdot v \cdot df \end{aligned} \right\} (38^*)$$",
+        reading=(sp.Matrix([T2, T21, P2]), sp.Matrix([T1 / c ** 3, T11 / c, P / c ** 2])),
+        note="the star is the footnote mark for T_1^1")
+d.quote("39", "(39)", r"$$\int_2 u_2 v_2 df_2 = 0 \quad (39)$$", reading=(P2e, 0))
+d.quote("40", "(40)", r"$$T = T_2 \cdot \cos^2 \mu + T_2^1 \cdot \sin^2 \mu \quad (40)$$",
+        reading=(Tmue, T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2))
+d.quote("dT", "(40)", r"$$(T_2^1 - T_2) \cdot \sin 2\mu = 0$$",
+        reading=(sp.Derivative(Tmue, mu), (T21 - T2) * sp.sin(2 * mu)), note="the left side is dT/dmu")
+d.quote("mu-0-90", "(40)", r"$$\sin 2\mu = 0, \quad \mu = \begin{cases} 0 \\ 90^\circ \end{cases}$$",
+        reading=(sp.Matrix([sp.Subs(sp.Derivative(Tmue, mu), mu, 0), sp.Subs(sp.Derivative(Tmue, mu), mu, sp.pi / 2)]),
+                 sp.Matrix([0, 0])))
+d.quote("41", "(41)", r"$$\left. \begin{aligned} T_m &= T_2 \\ T_m^1 &= T_2^1 \end{aligned} \right\} (41)$$",
+        reading=(sp.Matrix([Tm, Tm1]), sp.Matrix([T2, T21])),
+        note="T_m, T_m^1: the two extreme values (at mu = 0, 90 deg), not ordered")
+d.quote("42", "(42)", r"$$\left. \begin{aligned} T_m &= \frac{T_1}{\cos^3 \varphi_1} \\ T_m^1 &= \frac{T_1^1}{\cos "
+                      r"\varphi_1} \end{aligned} \right\} (42)$$",
+        reading=(sp.Matrix([Tm, Tm1]), sp.Matrix([T1 / c ** 3, T11 / c])))
+d.quote("43", "(43)", r"$$T - \frac{T_1}{\cos \varphi_1} > 0 \quad (43)$$", reading=(D2, Tmin - T1 / c),
+        note="T the smaller of T_m, T_m^1; read as the quantity whose sign decides")
+d.quote("43-Tm", "(43)", r"$$T - \frac{T_1}{\cos \varphi_1} = \frac{T_1}{\cos^3 \varphi_1} - \frac{T_1}{\cos "
+                         r"\varphi_1} = \frac{T_1}{\cos \varphi_1} \cdot \text{tg}^2 \varphi_1",
+        reading=(Tm - V1 * e2, T1 / c ** 3 - T1 / c, T1 / c * t1 ** 2), note="T = T_m")
+d.quote("43-always", "(43)", r"\text{ d. i. } > 0, \text{ also die Bedingung 43 stets erfüllt.}",
+        reading=(sp.sign(Tm - V1 * e2), 1))
+d.quote("43a", "(43a)", r"$$\frac{T_1^1}{\cos \varphi_2} - \frac{T_1}{\cos \varphi_2} > 0",
+        reading=(Tm1 - V1 * e2, T11 / sp.cos(phi2) - T1 / sp.cos(phi2)),
+        note="read as the quantity whose sign decides, T = T_m^1",
+        erratum=Erratum("misprint", "medium", r"\frac{T_1^1}{\cos\varphi_1} - \frac{T_1}{\cos\varphi_1} > 0",
+                        "phi_2 is never defined; the condition is (43) with T = T_m^1 = T_1^1/cos phi_1 from (42), "
+                        "so both denominators are cos phi_1. The index 2 appears twice, which points to the print "
+                        "(perhaps contaminated by T_2, e_2 nearby) rather than a scan confusion of 1 and 2; the "
+                        "conclusion T_1^1 > T_1 is unaffected.",
+                        corrected_reading=(Tm1 - V1 * e2, T11 / c - T1 / c)))
+d.quote("43a-conclusion", "(43a)", r"\text{ oder } T_1^1 > T_1 \quad (43a)$$",
+        reading=(Tm1 - V1 * e2, (T11 - T1) / c), note="cos phi_1 > 0: the condition is T_1^1 > T_1")
+d.quote("claim-43a", "IV (43a)",
+        "„Die schiefe Gleichgewichtslage eines geraden Prismas (im I. Drehungsgebiet) ist also stabil, wenn das "
+        "Trägheitsmoment des I. Wasserschnitts für die Drehungsachse kleiner ist als für die darauf senkrechte "
+        "Achse“.", reading=(sp.sign(D2), sp.sign(T11 - T1)),
+        note="stable (Duhamel: D_2 > 0) exactly when T_1 < T_1^1; with int_1 u v df = 0 and the tilt phi_1 inside "
+             "the first rotation region")
+
+# ---- V printed ------------------------------------------------------------------------------------------------
+d.quote("44", "(44)", r"$$\begin{aligned} u &= y \sin \omega + x \cos \omega \\ v &= y \cos \omega - x \sin \omega "
+                      r"\end{aligned} \quad (44)$$",
+        reading=(sp.Matrix([Uw, Vw]), sp.Matrix([y * sp.sin(om) + x * sp.cos(om), y * sp.cos(om) - x * sp.sin(om)])))
+d.quote("uv", "(44)", r"$$u \cdot v = (y^2 - x^2) \sin \omega \cos \omega + x y (\cos^2 \omega - \sin^2 \omega)$$",
+        reading=(Uw * Vw, (y ** 2 - x ** 2) * sp.sin(om) * sp.cos(om) + x * y * (sp.cos(om) ** 2 - sp.sin(om) ** 2)))
+d.quote("second-condition", "(45)",
+        r"$$\left( \int_1 y^2 \cdot d f - \int_1 x^2 \cdot d f \right) \sin \omega \cdot \cos \omega + \int_1 x y "
+        r"\cdot d f \cdot (\cos^2 \omega - \sin^2 \omega) = 0$$",
+        reading=(Iuv, (Tx - Ty) * sp.sin(om) * sp.cos(om) + J * (sp.cos(om) ** 2 - sp.sin(om) ** 2)),
+        note="the left side is int_1 u v df; '= 0' is the condition (32)")
+d.quote("Tx-Ty", "(45)", r"$$\int_1 y^2 \cdot d f = T_x \cdot \quad \int_1 x^2 \cdot d f = T_y$$",
+        reading=(sp.Matrix([area_integral(y ** 2, x, y, MOM_XY), area_integral(x ** 2, x, y, MOM_XY)]),
+                 sp.Matrix([Tx, Ty])), note="names; the stray dot after T_x is the scan's")
+d.quote("45", "(45)", r"$$\frac{1}{2} (T_x - T_y) \sin 2 \omega + \int_1 x y \cdot d f \cdot \cos 2 \omega = 0 "
+                      r"\quad (45)$$", reading=(Iuv, (Tx - Ty) * sp.sin(2 * om) / 2 + J * sp.cos(2 * om)))
+d.quote("xy-zero", "V", r"$$\int_1 x y \cdot d f = 0$$", reading=(Jsym, 0))
+d.quote("46", "(46)", r"$$(T_x - T_y) \sin 2 \omega = 0 \quad (46)$$",
+        reading=(2 * sp.Subs(Iuv, J, Jsym), (Tx - Ty) * sp.sin(2 * om)),
+        note="twice the left side of (45) with int x y df = 0; '= 0' is the condition")
+lhs46 = 2 * sp.Subs(Iuv, J, Jsym)
+d.quote("47", "(47)", r"$$\omega = 0, \omega = 90^\circ, T_x = T_y. \quad (47)$$",
+        reading=(sp.Matrix([sp.Subs(lhs46, om, 0), sp.Subs(lhs46, om, sp.pi / 2), sp.Subs(lhs46, Tx, Ty)]),
+                 sp.Matrix([0, 0, 0])),
+        note="each is a solution; sin 2 omega = 0 has no other in 0 <= omega < 180 deg")
+d.quote("T1-def", "(48)", r"$$T_1 = \int_1 u^2 \cdot d f$$", reading=(T1w, area_integral(Uv ** 2, x, y, MOM_XY)))
+d.quote("u-44", "(48)", r"$$u = y \sin \omega + x \cos \omega.$$", reading=(Uw, y * sp.sin(om) + x * sp.cos(om)))
+d.quote("T1-expanded", "(48)", r"$$T_1 = \sin^2 \omega \int_1 y^2 d f + \cos^2 \omega \int_1 x^2 d f + \sin 2 \omega "
+                               r"\int_1 x y \cdot d f$$",
+        reading=(T1w, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty + sp.sin(2 * om) * J))
+d.quote("T1-symmetric", "(48)", r"$$T_1 = T_x \cdot \sin^2 \omega + T_y \cdot \cos^2 \omega$$",
+        reading=(T1s, Tx * sp.sin(om) ** 2 + Ty * sp.cos(om) ** 2))
+d.quote("48", "(48)", r"$$T_1 = T_x = T_y \quad (48)$$", reading=(T1iso, T0, T0),
+        note="T_x = T_y = T_0")
+d.quote("49", "(49)", "dass das Trägheitsmoment des Wasserschnitts I oder der Grundfläche des Prismas für alle "
+                      "durch den Schwerpunkt gehenden Achsen denselben Wert hat, sobald die Trägheitsmomente für die "
+                      "Symmetrieachse und für die darauf senkrechte Achse einander gleich sind. (49)",
+        reading=(sp.Derivative(T1iso, om), 0))
+d.quote("50-T11", "(50)", r"$$T_1^1 = T_1$$", reading=(T11iso, T1iso))
+d.quote("50-Tm", "(50)", r"$$T_m = \frac{T_1}{\cos^3 \varphi_1} \quad T_m^1 = \frac{T_1}{\cos \varphi_1}$$",
+        reading=(sp.Matrix([Tmi, Tm1i]), sp.Matrix([T1 / c ** 3, T1 / c])))
+d.quote("50-ratio", "(50)", r"$$\text{also } T_m \cdot \cos^2 \varphi_1 = T_m^1$$", reading=(Tmi * c ** 2, Tm1i))
+d.quote("50", "(50)", r"$$\text{folglich } T_m^1 < T_m$$", reading=(sp.sign(Tmi - Tm1i), 1))
+d.quote("43-again", "(51)", r"$$T - \frac{T_1}{\cos \varphi_1} > 0$$", reading=(D2, Tmin - T1 / c),
+        note="(43) repeated")
+d.quote("Tm1-min", "(51)", r"$$T_m^1 = \frac{T_1}{\cos \varphi_1}$$", reading=(Tm1i, T1 / c))
+d.quote("51", "(51)", r"$$T_m^1 - \frac{T_1}{\cos \varphi_1} = 0. \quad (51)$$",
+        reading=(Tm1i - V1 * e2, Tm1i - T1 / c, 0))
+d.quote("51-claim", "(51)",
+        "In der Gleichgewichtslage ( $\\varphi_1$ ) ist also das Drehungsmoment für jede durch den Schwerpunkt O des "
+        "Wasserschnitts gehende Drehungsachse positiv und nur für die zur ersten Drehungsachse EF senkrechte Achse  "
+        "$G_2 H_2$  (Fig. 11) ist es Null, folglich das Gleichgewicht stabil.",
+        reading=(res(Tmue).subs(T11, T1) - V1 * e2, T1 * t1 ** 2 * sp.cos(mu) ** 2 / c),
+        note="for the axis at the angle mu with EF: T(mu) - V_1 e_2 = T_1 tan^2 phi_1 cos^2 mu / cos phi_1, positive "
+             "except at mu = 90 deg (G_2 H_2) where it is 0. The zero direction is the turn about the prism axis, "
+             "along which the isotropic prism stays in equilibrium at constant potential energy: a neutral, not "
+             "unstable, direction, so 'stabil' holds in the non-strict sense")
+d.quote("52", "(52)", r"$$\operatorname{tg} \varphi_1 = \sqrt{2 \left( \frac{V_1 c_1}{T_1} - 1 \right)} \quad (52)$$",
+        reading=(t1, sp.sqrt(2 * (V1 * c1 / T1 - 1))),
+        erratum=Erratum("transcription", "high", r"\operatorname{tg}\varphi_1 = \sqrt{2\left(\frac{V_1 e_1}{T_1} - 1\right)}",
+                        "(52) is (27) repeated ('ist zu berechnen aus Gleichung 27'); c_1 is never defined and 'c' "
+                        "for 'e' is a common scan confusion.",
+                        corrected_reading=(t1, sp.sqrt(2 * (V1 * e1 / T1 - 1)))))
+d.quote("52-condition", "(52)", r"$$\frac{T_1}{V_1} - e_1 < 0 \text{ ist.}$$",
+        reading=(slope, T1 / V1 - e1), note="as stable-18")
+law_R = sp.Rational(1, 2) * (Tx - Ty) * sp.sin(2 * om)
+d.quote("law", "V",
+        "„Ein in schiefer Lage stabil schwimmendes gerades Prisma gelangt durch Drehung um seine Hauptachse (die durch "
+        "die Schwerpunkte der Grundflächen geht) in immer neue stabile Gleichgewichtslagen, so lange keine seiner "
+        "Grundflächen von der Wasseroberfläche durchschnitten wird“.",
+        reading=(res(Iuv).subs(J, Jsym), 0),
+        note="read for a symmetric base turned by omega about its axis from a principal tilt: the second "
+             "equilibrium moment int_1 u v df would have to vanish for every omega",
+        erratum=Erratum("claim", "high",
+                        "Only for prisms whose base has equal principal moments (T_x = T_y: isotropic bases such as "
+                        "squares, regular polygons); otherwise int_1 u v df = (T_x - T_y) sin 2 omega / 2 != 0 for "
+                        "0 < omega < 90 deg and the turned position is no equilibrium at all.",
+                        "The law is stated for every obliquely stable right prism, but derived (just before) only for "
+                        "T_x = T_y. Counterexample: the 1 x 6/5 rectangle, b = 5/6, s = 1/2 floats stably tilted about "
+                        "its long axis (tan phi_1 = 1/(2 sqrt 3), T_1 = 1/10 < T_1^1 = 18/125, first rotation region); "
+                        "turned by 15 or 30 deg about its axis, the clipped geometry gives int u v df = tan^-1 phi "
+                        "times the moment of the submerged part about the vertical plane through OS = "
+                        "(T_x - T_y) sin 2 omega / 2, not 0. The text before the law (and section VI) means the "
+                        "isotropic case; the claim holds exactly there.",
+                        corrected_reading=(res(Iuv).subs(J, Jsym), law_R)))
+d.quote("QQ1", "(53)", r"$Q Q_1 = b(1 - s)$", reading=(b - b * s, b * (1 - s)),
+        note="height above water of the upright prism: b minus the draught b s")
+d.quote("53", "(53)", r"$$\operatorname{tg} \varphi_1 = \frac{b(1 - s)}{u_m} \quad (53)$$",
+        reading=(sp.tan(phtop), b * (1 - s) / utop), note="phi_1 is here the limit angle (upper base touched)")
+d.quote("53a", "(53a)", r"$$\operatorname{tg} \varphi_1 = \frac{b s}{u_m} \quad (53a)$$",
+        reading=(sp.tan(phbot), b * s / ubot), note="u_m of the lower base (rising side): u_m' here")
+d.quote("s-half", "(53)", r"Diese Formel giebt den Grenzwert von  $\varphi_1$  an für den Fall, dass die obere "
+                          r"Grundfläche zuerst vom Wasserspiegel durchschnitten wird, d. h. wenn  $s > \frac{1}{2}$  ist.",
+        reading=(sstar, sp.Rational(1, 2)),
+        note="read as the threshold of s above which the upper base is reached first",
+        erratum=Erratum("claim", "high",
+                        r"the upper base is reached first iff s > u_m'/(u_m + u_m'); this is s > 1/2 only when the "
+                        r"base reaches equally far on both sides of EF (u_m = u_m', e.g. centrally symmetric bases, or "
+                        r"EF perpendicular to a symmetry axis)",
+                        "Scheeffer himself distinguishes u_m of the upper (dipping side) and of the lower base (rising "
+                        "side) in (53a), but then decides by s alone. Counterexample: equilateral triangle of side 1, "
+                        "EF parallel to a side, apex dipping (u_m = 1/sqrt 3, u_m' = 1/(2 sqrt 3)), s = 2/5 < 1/2: "
+                        "the clipped prism touches the water with its upper base first (tan = b (1-s) sqrt 3 = 1.039 b "
+                        "< 2 sqrt 3 b s = 1.386 b). Regular prisms with odd n (section VI) are of this kind.",
+                        corrected_reading=(sstar, ubot / (utop + ubot))))
+d.quote("V1-F1", "(54)", r"$V_1 = F_1 \cdot b s$", reading=(V1, F1 * b * s))
+d.quote("e1-b", "(54)", r"$S S_1 = e_1 = \frac{b}{2} - \frac{b s}{2} = \frac{b}{2}(1 - s)$",
+        reading=(e1, b / 2 - b * s / 2, b / 2 * (1 - s)))
+d.quote("54", "(54)", r"$$\operatorname{tg}^2 \varphi_1 = \frac{F_1 b^2}{T_1} \cdot s (1 - s) - 2 \quad (54)$$",
+        reading=(t1 ** 2, F1 * b ** 2 / T1 * s * (1 - s) - 2))
+printed55 = sp.Piecewise((b * (1 - s) / utop, s > sp.Rational(1, 2)), (b * s / ubot, True))
+d.quote("55", "(55)", r"$$\operatorname{tg} \varphi_1 \leq \begin{cases} \frac{b (1 - s)}{u_m} & \text{für } s > "
+                      r"\frac{1}{2} \\ \frac{b s}{u_m} & \text{für } s < \frac{1}{2} \end{cases} \quad (55)$$",
+        reading=(Lim, printed55),
+        note="read as the bound on tan phi_1 (the end of the first rotation region); u_m of the upper base in the "
+             "first line, of the lower base (u_m') in the second, as (53), (53a) define them",
+        erratum=Erratum("claim", "high",
+                        r"\operatorname{tg}\varphi_1 \le \min\left(\frac{b(1-s)}{u_m}, \frac{b s}{u_m'}\right), "
+                        r"u_m, u_m' the farthest points of the base on the dipping and on the rising side of EF; "
+                        r"the case split by s is right only for u_m = u_m'",
+                        "Both bases must stay out of the water, so both bounds apply; which one is smaller depends on "
+                        "s u_m versus (1-s) u_m', not on s alone. Counterexample (from the clipped geometry): "
+                        "equilateral triangle of side 1, EF parallel to a side, apex dipping, b = 17/25, s = 2/5: (55) "
+                        "admits tan phi_1 up to 2 sqrt 3 b s = 0.942, but the upper base is touched at tan = "
+                        "sqrt 3 b (1-s) = 0.707, and (54) gives tan phi_1 = 0.815 in between: the tilted position of "
+                        "(54) is not in the first rotation region although (55) says it is. Same with the apex "
+                        "rising and s = 3/5 > 1/2 (lower base first).",
+                        corrected_reading=(Lim, sp.Min(b * (1 - s) / utop, b * s / ubot))))
+
+# ==== witnesses: the clipped prism ===========================================================================
+
+
+def _poly_moments(poly):
+    """Exact area, centroid and central second moments (int x^2, int x y, int y^2) of a polygon (Green)."""
+    A = Sx = Sy = Sxx = Syy = Sxy = 0
+    k = len(poly)
+    for i in range(k):
+        (xi, yi), (xj, yj) = poly[i], poly[(i + 1) % k]
+        cr = xi * yj - xj * yi
+        A += cr
+        Sx += (xi + xj) * cr
+        Sy += (yi + yj) * cr
+        Sxx += (xi * xi + xi * xj + xj * xj) * cr
+        Syy += (yi * yi + yi * yj + yj * yj) * cr
+        Sxy += (2 * xi * yi + xi * yj + xj * yi + 2 * xj * yj) * cr
+    A = A / 2
+    cx, cy = Sx / 6 / A, Sy / 6 / A
+    return A, (cx, cy), (Sxx / 12 - A * cx * cx, Sxy / 24 - A * cx * cy, Syy / 12 - A * cy * cy)
+
+
+R = sp.Rational
+SQ3 = sp.sqrt(3)
+_QUAD0 = [(R(0), R(0)), (R(3), R(0)), (R(5, 2), R(2)), (R(-1, 2), R(3, 2))]
+_A, _C, _ = _poly_moments(_QUAD0)
+QUAD = [(px - _C[0], py - _C[1]) for px, py in _QUAD0]
+_, _, (QXX, QXY, QYY) = _poly_moments(QUAD)
+Q_THETA = sp.atan(2 * QXY / (QXX - QYY)) / 2           # a principal direction of the quadrilateral
+RECT_LONG = [(R(-1, 2), -1), (R(1, 2), -1), (R(1, 2), 1), (R(-1, 2), 1)]
+RECT_SHORT = [(-1, R(-1, 2)), (1, R(-1, 2)), (1, R(1, 2)), (-1, R(1, 2))]
+RECT_LAW = [(R(-1, 2), R(-3, 5)), (R(1, 2), R(-3, 5)), (R(1, 2), R(3, 5)), (R(-1, 2), R(3, 5))]
+TRI = [(R(-1, 2), R(-2, 3)), (R(1, 2), R(-2, 3)), (0, R(4, 3))]
+SQUARE = [(R(-1, 2), R(-1, 2)), (R(1, 2), R(-1, 2)), (R(1, 2), R(1, 2)), (R(-1, 2), R(1, 2))]
+TRI_EQ = [(R(-1, 2), -SQ3 / 6), (R(1, 2), -SQ3 / 6), (0, SQ3 / 3)]
+
+# name: (polygon, height b, s, axis angle alpha: EF along (cos alpha, sin alpha), the side (sin alpha, -cos alpha) dips)
+BODIES = {
+    "rect-long": (RECT_LONG, R(9, 10), R(2, 5), sp.pi / 2),
+    "rect-short": (RECT_SHORT, R(9, 5), R(2, 5), sp.pi / 2),
+    "tri": (TRI, R(3, 5), R(1, 2), sp.pi / 2),
+    "quad-x": (QUAD, R(8, 5), R(1, 2), sp.Integer(0)),
+    "quad-p": (QUAD, R(8, 5), R(1, 2), Q_THETA),
+    "square-0": (SQUARE, R(17, 20), R(9, 20), sp.pi / 2),
+    "square-30": (SQUARE, R(17, 20), R(9, 20), sp.pi / 2 + sp.pi / 6),
+    "tri-eq": (TRI_EQ, R(16, 25), R(2, 5), sp.pi),
+    "rect-law": (RECT_LAW, R(5, 6), R(1, 2), sp.pi / 2),
+    "tri-eq-apex": (TRI_EQ, R(17, 25), R(2, 5), sp.pi),
+    "tri-eq-apex-up": (TRI_EQ, R(17, 25), R(3, 5), sp.Integer(0)),
+    "square-lim": (SQUARE, R(17, 20), R(9, 20), sp.pi / 2 + sp.pi / 6),
+    "rect-heavy": (RECT_LONG, R(9, 10), R(3, 5), sp.pi / 2),
+}
+
+
+def _params(name, extra=None):
+    """Exact parameters of a body: F_1, T_1, T_1^1, P about its axis EF, b, s, and the face reaches."""
+    poly, bb, ss, alpha = BODIES[name]
+    A, _, (Ixx, Ixy, Iyy) = _poly_moments(poly)
+    nx, ny = sp.sin(alpha), -sp.cos(alpha)               # u = n . p
+    ex, ey = sp.cos(alpha), sp.sin(alpha)                # v = e . p
+    t1_, t11_ = nx * nx * Ixx + 2 * nx * ny * Ixy + ny * ny * Iyy, ex * ex * Ixx + 2 * ex * ey * Ixy + ey * ey * Iyy
+    p_ = nx * ex * Ixx + (nx * ey + ny * ex) * Ixy + ny * ey * Iyy
+    us = [nx * px + ny * py for px, py in poly]
+    simp = (lambda q: q) if name == "quad-p" else sp.simplify
+    out = {F1: A, T1: simp(t1_), T11: simp(t11_), P: simp(p_), b: bb, s: ss,
+           utop: simp(max(us, key=lambda q: float(q))), ubot: simp(-min(us, key=lambda q: float(q)))}
+    out.update(extra or {})
+    return out
+
+
+def _mp(q, dps):
+    if dps <= 15:
+        return float(sp.N(q, 20))
+    return mpmath.mpf(str(sp.N(q, dps + 10)))
+
+
+def _fn(dps):
+    return (math.sin, math.cos, math.tan) if dps <= 15 else (mpmath.sin, mpmath.cos, mpmath.tan)
+
+
+class _Body:
+    """The clipped prism of a body, at float64 (dps 15) or mpmath precision."""
+
+    def __init__(self, name, dps):
+        poly, bb, ss, alpha = BODIES[name]
+        self.dps = dps
+        self.poly = right_prism([(_mp(px, dps), _mp(py, dps)) for px, py in poly], _mp(bb, dps),
+                                None if dps <= 15 else dps)
+        self.s = _mp(ss, dps)
+        self.alpha = _mp(alpha, dps)
+        self.top = [p for p in self.poly.vertices if p[2] > 0]
+        self.bot = [p for p in self.poly.vertices if p[2] < 0]
+
+    def frame(self, phi_, alpha=None):
+        """EF direction, dipping normal, up vector and horizontal across EF for the tilt phi_ about EF."""
+        sin, cos, _ = _fn(self.dps)
+        al = self.alpha if alpha is None else alpha
+        ev = (cos(al), sin(al), 0 * cos(al))
+        nn = (sin(al), -cos(al), 0 * cos(al))
+        up = tuple(cos(phi_) * (k == 2) - sin(phi_) * nn[k] for k in range(3))
+        h = tuple(cos(phi_) * nn[k] + sin(phi_) * (k == 2) for k in range(3))
+        return ev, nn, up, h
+
+    def state(self, phi_, alpha=None):
+        ev, nn, up, h = self.frame(phi_, alpha)
+        return floating_state(self.poly, up, self.s), ev, up, h
+
+    def arm(self, phi_, alpha=None):
+        st, ev, up, h = self.state(phi_, alpha)
+        return sum(h[k] * (st.B[k] - st.G[k]) for k in range(3))
+
+    def contact(self, which, phi_):
+        """Depth below the water of the lowest vertex of the upper base (or height above the water of the
+        highest vertex of the lower base): negative while that base is clear of the water plane, which comes
+        from the submerged volume (draught), not from the axis EF."""
+        st, ev, up, h = self.state(phi_)
+        heights = [sum(up[k] * p[k] for k in range(3)) for p in (self.top if which == "top" else self.bot)]
+        return st.t - min(heights) if which == "top" else max(heights) - st.t
+
+
+def _bracket_root(f, lo, hi, dps):
+    """Illinois regula falsi on a sign change of f in [lo, hi]."""
+    tol = 1e-15 if dps <= 15 else mpmath.mpf(10) ** (4 - dps)
+    flo, fhi = f(lo), f(hi)
+    if not flo * fhi < 0:
+        raise ValueError("no sign change")
+    xm = hi
+    for _ in range(300):
+        xm = (lo * fhi - hi * flo) / (fhi - flo)
+        fm = f(xm)
+        if fm == 0:
+            return xm
+        if fm * fhi < 0:
+            lo, flo = hi, fhi
+        else:
+            flo = flo / 2
+        hi, fhi = xm, fm
+        if abs(hi - lo) < tol:
+            return xm
+    return xm
+
+
+def _scan_root(f, dps, start=0.02, stop=1.4, steps=28):
+    """First sign change of f from - to + on a grid, refined."""
+    one = 1.0 if dps <= 15 else mpmath.mpf(1)
+    prev = one * start
+    fprev = f(prev)
+    for k in range(1, steps + 1):
+        q = one * (start + (stop - start) * k / steps)
+        fq = f(q)
+        if fprev < 0 <= fq:
+            return _bracket_root(f, prev, q, dps)
+        prev, fprev = q, fq
+    raise ValueError("no root found on the grid")
+
+
+def _prec(dps):
+    return mpmath.workdps(dps if dps > 15 else 15)
+
+
+def _refine(f, rough, dps):
+    """The root of f near the float64 root *rough*, at dps digits, from a bracket of width 2e-7 around it."""
+    width = mpmath.mpf("1e-7")
+    for _ in range(8):
+        lo, hi = mpmath.mpf(rough) - width, mpmath.mpf(rough) + width
+        if f(lo) < 0 < f(hi):
+            return _bracket_root(f, lo, hi, dps)
+        width *= 10
+    raise ValueError("no bracket around the float64 root")
+
+
+@lru_cache(maxsize=None)
+def _tilt(name, dps):
+    """The tilted equilibrium: the zero of the righting arm of the clipped prism (scanned at float64, refined
+    at dps digits), its state, and a check that neither base is cut there."""
+    with _prec(dps):
+        B = _Body(name, dps)
+        ph = _scan_root(B.arm, dps) if dps <= 15 else _refine(B.arm, _tilt(name, 15)[1], dps)
+        st, ev, up, h = B.state(ph)
+        if not (B.contact("top", ph) < 0 and B.contact("bot", ph) < 0):
+            raise AssertionError(f"{name}: a base is cut at the tilt")
+        return B, ph, st, ev, up, h
+
+
+@lru_cache(maxsize=None)
+def _contacts(name, dps):
+    """The tilts at which the upper and the lower base first reach the water (clipped prism)."""
+    with _prec(dps):
+        B = _Body(name, dps)
+        top, bot = (lambda q: B.contact("top", q)), (lambda q: B.contact("bot", q))
+        if dps <= 15:
+            return _scan_root(top, dps, stop=1.5, steps=30), _scan_root(bot, dps, stop=1.5, steps=30)
+        rough = _contacts(name, 15)
+        return _refine(top, rough[0], dps), _refine(bot, rough[1], dps)
+
+
+def _in_plane(basis, vec):
+    e1, e2 = basis
+    return (sum(vec[k] * e1[k] for k in range(3)), sum(vec[k] * e2[k] for k in range(3)))
+
+
+def _quad(M, a, c_):
+    return sum(a[i] * M[i][j] * c_[j] for i in range(2) for j in range(2))
+
+
+def _measure(name, what, dps, arg=None):
+    sin, cos, tan = _fn(dps)
+    with _prec(dps):
+        if what in ("arm", "height"):                     # at a given tilt
+            B = _Body(name, dps)
+            st, ev, up, h = B.state(_mp(arg, dps))
+            if what == "height":
+                return st.volume * sum(up[k] * (st.G[k] - st.B[k]) for k in range(3))
+            return st.volume * sum(h[k] * (st.B[k] - st.G[k]) for k in range(3))
+        if what == "upright-Ve1":
+            B = _Body(name, dps)
+            st = floating_state(B.poly, (0, 0, 1), B.s)
+            return st.volume * st.potential
+        if what == "upright-slope":                       # T about EF / V - height of G above B, upright
+            B = _Body(name, dps)
+            st = floating_state(B.poly, (0, 0, 1), B.s)
+            nc = _in_plane(st.basis, B.frame(0 * B.s)[1])
+            return _quad(st.tensor, nc, nc) / st.volume - st.potential
+        if what in ("base-Tw", "base-Iuv"):               # the base's moments for EF at the angle omega (44)
+            B = _Body(name, dps)
+            wp = submerged(B.poly, (0, 0, 1), 0 * B.s).waterplane
+            om_ = _mp(arg, dps)
+            nc = _in_plane(wp.basis, (cos(om_), sin(om_), 0))       # u = n . p
+            ec = _in_plane(wp.basis, (-sin(om_), cos(om_), 0))      # v = e . p
+            return _quad(wp.tensor, nc, nc) if what == "base-Tw" else _quad(wp.tensor, nc, ec)
+        if what in ("top", "bot", "first", "first-sign"):
+            a, b_ = _contacts(name, dps)
+            if what == "first-sign":
+                return 1 if a < b_ else -1
+            return tan({"top": a, "bot": b_, "first": min(a, b_)}[what])
+        if what == "law":                                  # int u v df of the stable tilt turned by omega
+            B, ph, *_ = _tilt(name, dps)
+            st, ev, up, h = B.state(ph, B.alpha + _mp(arg, dps))
+            return st.volume * sum(ev[k] * (st.B[k] - st.G[k]) for k in range(3)) / tan(ph)
+        B, ph, st, ev, up, h = _tilt(name, dps)
+        vol = st.volume
+        hc, ec = _in_plane(st.basis, h), _in_plane(st.basis, ev)
+        T2_, T21_, P2_ = _quad(st.tensor, hc, hc), _quad(st.tensor, ec, ec), _quad(st.tensor, hc, ec)
+        Ve2 = vol * st.potential
+        if what == "Tmu":
+            mu_ = _mp(arg, dps)
+            nc = _in_plane(st.basis, tuple(cos(mu_) * h[k] + sin(mu_) * ev[k] for k in range(3)))
+            return _quad(st.tensor, nc, nc)
+        values = {
+            "tan": lambda: tan(ph), "tan2": lambda: tan(ph) ** 2, "Ve2": lambda: Ve2,
+            "M2": lambda: vol * sum(ev[k] * (st.B[k] - st.G[k]) for k in range(3)),
+            "Q": lambda: vol * sum(h[k] * (st.B[k] - st.G[k]) for k in range(3)) / sin(ph),
+            "wp2": lambda: (T2_, T21_, P2_), "wp2-ext": lambda: (T2_, T21_), "P2": lambda: P2_,
+            "D2": lambda: vol * st.metacentric_height, "D2-sign": lambda: 1 if st.metacentric_height > 0 else -1,
+            "Tm-excess": lambda: T2_ - Ve2, "Tm-excess-sign": lambda: 1 if T2_ > Ve2 else -1,
+            "Tm1-excess": lambda: T21_ - Ve2, "Tm1": lambda: T21_, "Tm1-excess-sign": lambda: 1 if T21_ > Ve2 else -1,
+            "Tm-ratio": lambda: T2_ * cos(ph) ** 2, "Tm-order": lambda: 1 if T2_ > T21_ else -1,
+        }
+        if what == "Tmu-excess":
+            return _measure(name, "Tmu", dps, arg) - Ve2
+        return values[what]()
+
+
+def _cases(names, extra=None):
+    out = []
+    for nm in names:
+        arg, ex = None, {}
+        if isinstance(nm, tuple):
+            nm, arg, ex = nm
+        params = _params(nm, {**(extra or {}), **ex})
+        out.append(Case(params, (nm, arg), nm + (f", {arg}" if arg is not None else "")))
+    return tuple(out)
+
+
+def _w(name, description, targets, what, names, extra=None):
+    d.witness(Computed(name, description, tuple(targets), _cases(names, extra),
+                       compute=lambda case, dps, what=what: _measure(case.data[0], what, dps, case.data[1])))
+
+
+EQ = ("rect-long", "rect-short", "tri", "quad-p", "square-0", "tri-eq")
+NONISO = ("rect-long", "rect-short", "tri", "quad-p")
+ISO = ("square-0", "square-30", "tri-eq")
+LIM = ("tri-eq-apex", "tri-eq-apex-up", "square-lim", "rect-long", "rect-heavy")
+_w("tilt", "tan of the tilt where the righting arm of the clipped prism vanishes", ("27",), "tan", EQ)
+_w("tilt-squared", "tan^2 of the tilt where the righting arm of the clipped prism vanishes", ("54",), "tan2",
+   EQ + ("square-30",))
+_w("Ve2", "V times the height of G above B at that tilt (clipped prism)", ("34", "35"), "Ve2", EQ)
+_w("Ve1", "V times the height of G above B, upright (clipped prism)", ("32-restated",), "upright-Ve1", EQ)
+_w("upright-slope", "T about EF / V minus the height of G above B, upright clipped prism",
+   ("stable-18", "unstable-18", "52-condition"), "upright-slope", ("rect-long", "tri", "quad-x"))
+AT_PHI = (("quad-x", R(3, 10), {phi: R(3, 10)}), ("quad-x", R(1, 2), {phi: R(1, 2)}), ("tri", R(1, 5), {phi: R(1, 5)}))
+_w("arm", "V times the righting arm of the clipped prism at a given tilt", ("moment-12",), "arm", AT_PHI)
+_w("height", "V times the height of G above B of the clipped prism at a given tilt", ("13-restated",), "height",
+   AT_PHI)
+_w("M2", "V times the offset of B from G along EF, clipped prism at the zero of the arm",
+   ("31", "28", "M2-difference"), "M2", ("quad-x", "rect-long", "tri"), {P3: R(1, 3)})
+_w("Q", "V times the arm over sin phi at the zero of the arm (clipped prism)", ("moment-zero",), "Q", EQ)
+_w("wp2", "second moments of the clipped waterplane II about EF, across it, and the product", ("38",), "wp2",
+   ("quad-x", "rect-long", "tri", "quad-p"))
+_w("wp2-ext", "the moments of the clipped waterplane II about EF and across it", ("41", "42"), "wp2-ext", EQ)
+_w("P2", "product moment of the clipped waterplane II at the equilibrium tilt", ("39",), "P2",
+   ("rect-long", "tri", "quad-p"))
+_w("Tmu", "moment of the clipped waterplane II about the axis at the angle mu with EF", ("37", "40"), "Tmu",
+   (("rect-long", R(1, 3), {mu: R(1, 3)}), ("quad-p", R(6, 5), {mu: R(6, 5)}), ("tri", R(7, 10), {mu: R(7, 10)})))
+_w("D2", "V times the metacentric height of the clipped tilted prism", ("33", "43", "43-again"), "D2", EQ)
+_w("D2-sign", "sign of the metacentric height of the clipped tilted prism", ("claim-43a",), "D2-sign", NONISO)
+_w("Tm-excess", "moment of II about EF minus V times the height of G over B (clipped)", ("43-Tm",), "Tm-excess", EQ)
+_w("Tm-excess-sign", "its sign", ("43-always",), "Tm-excess-sign", EQ)
+_w("Tm1-excess", "moment across EF minus V times the height of G over B (clipped)",
+   ("43a-conclusion",), "Tm1-excess", NONISO)
+_w("iso-wp2", "moments of the clipped waterplane II, isotropic bases", ("50-Tm",), "wp2-ext", ISO)
+_w("iso-ratio", "T_m cos^2 phi from the clipped waterplane II, isotropic bases", ("50-ratio",), "Tm-ratio", ISO)
+_w("iso-order", "which moment of the clipped waterplane II is larger, isotropic bases", ("50",), "Tm-order", ISO)
+_w("iso-Tm1-value", "moment of the clipped waterplane II across EF, isotropic bases", ("Tm1-min",), "Tm1", ISO)
+_w("iso-Tm1", "moment across EF minus V e_2 of the clipped waterplane II, isotropic bases", ("51",),
+   "Tm1-excess", ISO)
+_w("iso-Tmu", "moment about the axis at mu minus V e_2, clipped, isotropic bases", ("51-claim",), "Tmu-excess",
+   (("square-0", R(1, 3), {mu: R(1, 3)}), ("tri-eq", R(5, 4), {mu: R(5, 4)}), ("square-30", R(1, 2), {mu: R(1, 2)})))
+QUAD_OM = (("quad-x", R(1, 3), {om: R(1, 3)}), ("quad-x", R(6, 5), {om: R(6, 5)}))
+_w("base-T1", "moment of the clipped upright waterplane about the axis EF at the angle omega",
+   ("T1-expanded", "T1-def"), "base-Tw", QUAD_OM, {Tx: QYY, Ty: QXX, J: QXY})
+_w("base-T1-sym", "moment of the clipped upright waterplane about EF, symmetric bases", ("T1-symmetric",), "base-Tw",
+   (("rect-long", R(1, 3), {om: R(1, 3), Tx: R(2, 3), Ty: R(1, 6)}),
+    ("tri", R(6, 5), {om: R(6, 5), Tx: R(2, 9), Ty: R(1, 24)})))
+_w("base-Iuv", "product moment of the clipped upright waterplane in the axes EF, GH", ("45", "second-condition"),
+   "base-Iuv", QUAD_OM, {Tx: QYY, Ty: QXX, J: QXY})
+_w("law", "int u v df of the stable tilt turned about the prism axis by omega (clipped)", ("law",), "law",
+   (("rect-law", sp.pi / 12, {om: sp.pi / 12}), ("rect-law", sp.pi / 6, {om: sp.pi / 6})),
+   {Tx: R(18, 125), Ty: R(1, 10)})
+# (53) and (53a) hold for the base reached first (afterwards the water plane no longer passes through EF)
+_w("top", "tan of the tilt where the clipped prism's upper base reaches the water, reached first", ("53",), "top",
+   ("tri-eq-apex", "rect-heavy"))
+_w("bot", "tan of the tilt where the clipped prism's lower base reaches the water, reached first", ("53a",), "bot",
+   ("tri-eq-apex-up", "square-lim", "rect-long"))
+_w("first", "tan of the first contact of either base (clipped prism)", ("55",), "first", LIM)

@@ -1,0 +1,1064 @@
+"""Scheeffer 1902, section VI (opening), A and B: the regular polygon, the regular triangular prism and
+the circular cylinder floating with vertical axis, in the first rotation region (no base cut).
+
+Geometry (derived here, not quoted): a right prism (base F, height b, density s) floats upright with the
+submerged height b s; tilted by phi about a horizontal axis through the centre O of the waterplane, the
+water plane is z = b s + x tan(phi) in body coordinates (z along the axis from the bottom, x across the
+rotation axis).  As long as it cuts no base, the submerged part is the set 0 <= z <= b s + x tan(phi) over
+F, whose volume, centroid and righting arm follow from the area, first and second moments of F
+(integrated here over the equilateral triangle and the disc).  The witnesses clip the real polyhedra
+(symfloat.geometry.floating) or integrate the disc by quadrature, and find equilibria as roots of the
+measured righting arm.
+"""
+
+import mpmath
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, Computed, Precision
+from symfloat.geometry.floating import (cylinder_state, floating_state, right_prism, submerged)
+
+x, y, X, Y, th = sp.symbols("x y X Y theta", real=True)
+a, b, s, r = sp.symbols("a b s r", positive=True)
+om = sp.Symbol("omega", real=True)
+tp = sp.Symbol("tau", positive=True)            # tan(phi) of a tilted position
+Tx, Ty, Pxy = sp.symbols("T_x T_y P_xy", real=True)
+u = sp.Symbol("u", real=True)
+T = sp.Symbol("T")
+pi = sp.pi
+deg = pi / 180
+sq3 = sp.sqrt(3)
+
+DERIVATION = d = Derivation(
+    id="scheeffer-vi-ab",
+    source="scheeffer",
+    title="The regular prism: isotropy of regular polygons, the triangular prism and the circular cylinder",
+    locator="VI, VI.A, VI.B",
+    summary="Inertia of a regular polygon about every central axis (56); upright stability, tilted "
+            "equilibrium and first-rotation-region limits of the regular triangular prism (57)-(68) and of "
+            "the circular cylinder (69)-(73), with the worked examples 1-10 recomputed.",
+    requires=(),
+    domain={x: (-1, 1), y: (-1, 1), om: (0, 1), Tx: (1, 2), Ty: (1, 2), Pxy: (-1, 1),
+            a: (sp.Rational(1, 2), 2), b: (1, 2), s: (sp.Rational(1, 20), sp.Rational(19, 20)),
+            r: (sp.Rational(1, 2), 2), tp: (sp.Rational(1, 10), 2)},
+    constraints=(),
+    assumptions=("the body is a homogeneous right prism (or cylinder) of height b and density s (0 < s < 1) "
+                 "in water of density 1; the bases are perpendicular to the axis",
+                 "omega in radians, 0 <= omega <= pi/3 for the triangle (30 degrees written pi/6)",
+                 "first rotation region: the tilted water plane cuts no base",
+                 "inequalities are read through their margins (right side minus left side, or a product "
+                 "with a positive factor) and compared with the derived margin, e.g. the metacentric "
+                 "height; boundary values are compared where the margin is not linear"),
+)
+
+
+def full(expr):
+    """*expr* with every quantity established so far replaced by its derived value."""
+    res = d.results()
+    for _ in range(12):
+        new = sp.sympify(expr).xreplace(res)
+        if new == expr:
+            return new
+        expr = new
+    return expr
+
+
+# =====================================================================================================
+# VI opening: inertia of a polygon about an axis at angle omega, regular polygons
+# =====================================================================================================
+d.step("ordinate", sp.Eq(u, y * sp.sin(om) + x * sp.cos(om)), "definition",
+       note="(44): u is the distance of the point (x, y) from the axis FE through O that makes the angle "
+            "omega with the symmetry axis OB (the Y axis); x, y from the centre O", result=u)
+d.step("ordinate-squared", (u ** 2, y ** 2 * sp.sin(om) ** 2 + x ** 2 * sp.cos(om) ** 2 + x * y * sp.sin(2 * om)),
+       "algebra", uses=("ordinate",))
+Tg = sp.Symbol("T_{gen}")
+d.step("moment-any-axis", sp.Eq(Tg, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty + sp.sin(2 * om) * Pxy),
+       "definition", uses=("ordinate-squared",),
+       note="T = int u^2 df integrated term by term with ordinate-squared; T_x = int y^2 df, T_y = int x^2 df, "
+            "P_xy = int x y df (the names of section V)", result=Tg)
+d.step("moment-symmetric", sp.Eq(T, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty), "definition",
+       uses=("moment-any-axis",),
+       note="the Y axis is a symmetry axis, so P_xy = int x y df = 0: the mirror images (x, y), (-x, y) "
+            "contribute opposite x y (checked by integration for the triangle: triangle-product-moment)",
+       result=T)
+
+d.quote("ordinate", "VI",
+        r"\begin{aligned} u &= y \sin \omega + x \cos \omega \\ u^2 &= y^2 \sin^2 \omega + x^2 \cos^2 \omega "
+        r"+ x y \sin 2 \omega \end{aligned}",
+        reading=(sp.Matrix([u, u ** 2]),
+                 sp.Matrix([y * sp.sin(om) + x * sp.cos(om),
+                            y ** 2 * sp.sin(om) ** 2 + x ** 2 * sp.cos(om) ** 2 + x * y * sp.sin(2 * om)])))
+d.quote("moment-any-axis", "VI",
+        r"$$T = \int u^2 df = \sin^2 \omega \int y^2 df + \cos^2 \omega \int x^2 df + \sin 2 \omega \cdot "
+        r"\int x y df$$",
+        reading=sp.Eq(Tg, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty + sp.sin(2 * om) * Pxy),
+        note="before the symmetry is used: P_xy = int x y df is any value")
+d.quote("56", "(56)", r"$$T = T_x \cdot \sin^2 \omega + T_y \cos^2 \omega \quad (56)$$",
+        reading=sp.Eq(T, Tx * sp.sin(om) ** 2 + Ty * sp.cos(om) ** 2))
+d.quote("other-symmetry-axis", "VI",
+        r"\begin{aligned} T_y &= T_x \sin^2 \omega + T_y \cos^2 \omega \\ T_y \sin^2 \omega &= T_x \sin^2 "
+        r"\omega \\ T_y &= T_x \end{aligned}",
+        reading=(Ty - (Tx * sp.sin(om) ** 2 + Ty * sp.cos(om) ** 2), Ty * sp.sin(om) ** 2 - Tx * sp.sin(om) ** 2,
+                 (Ty - Tx) * sp.sin(om) ** 2),
+        note="each line read as its residual (left minus right side): the residuals are equal, so each line is "
+             "equivalent to the one before; the last step divides by sin^2(omega) != 0, true for the angle "
+             "2 pi/n between two equivalent symmetry axes (n >= 3)")
+d.quote("isotropic", "VI", r"also aus 56:  $T = T_x = T_y$",
+        reading=(Tx * sp.sin(om) ** 2 + Tx * sp.cos(om) ** 2, Tx), note="(56) with T_y = T_x")
+
+
+def ngon_moment(n, side):
+    """Exact second moment of the regular n-gon of edge ``side`` (vertex on the +x axis) about the
+    central axis with normal (cos omega, sin omega): sum over the fan triangles (O, V_k, V_k+1) of
+    area/6 (u_k^2 + u_k u_k+1 + u_k+1^2), u the ordinate of a vertex."""
+    R = side / (2 * sp.sin(pi / n))
+    V = [(R * sp.cos(2 * pi * k / n), R * sp.sin(2 * pi * k / n)) for k in range(n)]
+    total = 0
+    for k in range(n):
+        (x1, y1), (x2, y2) = V[k], V[(k + 1) % n]
+        area = (x1 * y2 - x2 * y1) / 2
+        u1, u2 = x1 * sp.cos(om) + y1 * sp.sin(om), x2 * sp.cos(om) + y2 * sp.sin(om)
+        total += area / 6 * (u1 ** 2 + u1 * u2 + u2 ** 2)
+    return total
+
+
+NGONS = (3, 4, 6)
+ngon_T = sp.Matrix([ngon_moment(n, a) for n in NGONS])
+d.step("regular-polygons-isotropic", (ngon_T, ngon_T.subs(om, 0)), "geometry",
+       note="for n = 3, 4, 5, 6 the moment does not depend on the direction of the axis")
+d.quote("regular-polygon-theorem", "VI",
+        "In jedem regelmässigen Polygon haben die Trägheitsmomente für alle durch seinen Schwerpunkt "
+        "(Mittelpunkt) gehenden Achsen denselben Wert",
+        reading=(ngon_T, ngon_T.subs(om, 0)),
+        note="read for the regular triangle, square and hexagon of edge a; the general n follows "
+             "from other-symmetry-axis")
+
+
+# =====================================================================================================
+# A. The regular triangular prism
+# =====================================================================================================
+F1, T1, V1, e1, hA = sp.symbols("F_1 T_1 V_1 e_1 h_A")
+half_w = (a / sq3 - Y) / sq3                       # half width of the triangle at height Y
+y_lo, y_hi = -a / (2 * sq3), a / sq3
+tri = ((X, -half_w, half_w), (Y, y_lo, y_hi))
+d.step("triangle-area", (F1, sp.Integral(1, *tri), sq3 * a ** 2 / 4), "integration", result=F1,
+       note="the equilateral triangle of edge a with centre O at the origin, BC parallel to the X axis: "
+            "B = (-a/2, -a/(2 sqrt 3)), C = (a/2, -a/(2 sqrt 3)), A = (0, a/sqrt 3); the Y axis is a "
+            "symmetry axis")
+d.step("triangle-Ty", (sp.Integral(X ** 2, *tri), sq3 * a ** 4 / 96), "integration")
+d.step("triangle-Tx", (sp.Integral(Y ** 2, *tri), sq3 * a ** 4 / 96), "integration")
+d.step("triangle-product-moment", (sp.Integral(X * Y, *tri), 0), "integration")
+d.step("triangle-moment", (T1, sp.Integral((Y * sp.sin(om) + X * sp.cos(om)) ** 2, *tri), F1 * a ** 2 / 24),
+       "integration", uses=("triangle-area",),
+       note="the same for every axis through O (isotropy, checked here directly)", result=T1)
+d.step("displacement", sp.Eq(V1, F1 * b * s), "definition",
+       note="Archimedes: the upright prism is submerged to the height b s (weight F_1 b s)", result=V1)
+d.step("centre-distance", sp.Eq(e1, b / 2 - b * s / 2), "definition",
+       note="G at half the height b, the centre of buoyancy at half the draught b s", result=e1)
+d.step("metacentric-height", (hA, T1 / V1 - e1, (a ** 2 - 12 * b ** 2 * s * (1 - s)) / (24 * b * s)), "algebra",
+       uses=("triangle-moment", "displacement", "centre-distance"),
+       note="the upright position is stable when h_A > 0 (Duhamel, (18))", result=hA)
+
+d.quote("triangle-data", "VI.A",
+        r"$$T_1 = F_1 \cdot \frac{a^2}{24} \quad V_1 = F_1 b \cdot s \quad e_1 = \frac{b(1-s)}{2}$$",
+        reading=(sp.Matrix([T1, V1, e1]), sp.Matrix([F1 * a ** 2 / 24, F1 * b * s, b * (1 - s) / 2])))
+d.quote("triangle-condition", "VI.A",
+        r"$$F_1 \cdot \frac{a^2}{24} - F_1 \cdot \frac{b^2}{2} s (1-s) > 0$$",
+        reading=(F1 * a ** 2 / 24 - F1 * b ** 2 / 2 * s * (1 - s), V1 * hA),
+        note="the left side is V_1 h_A, V_1 > 0")
+d.quote("57", "(57)", r"$$\left(\frac{a}{b}\right)^2 > 12 s \cdot (1-s) \tag{57}$$",
+        reading=((a / b) ** 2 - 12 * s * (1 - s), 24 * s / b * hA), note="margin = (24 s / b) h_A")
+d.quote("58", "(58)",
+        r"\frac{1}{12} \left(\frac{a}{b}\right)^2 &> s - s^2 \\ s^2 - s &> -\frac{1}{12} \left(\frac{a}{b}\right)^2 "
+        r"\\ \left(s - \frac{1}{2}\right)^2 &> \frac{1}{4} \left\{1 - \frac{1}{3} \left(\frac{a}{b}\right)^2\right\}",
+        reading=((a / b) ** 2 / 12 - (s - s ** 2), s ** 2 - s + (a / b) ** 2 / 12,
+                 (s - sp.Rational(1, 2)) ** 2 - sp.Rational(1, 4) * (1 - (a / b) ** 2 / 3), 2 * s / b * hA),
+        note="each line read as its margin (left minus right side); all equal (2 s / b) h_A")
+d.step("largest-product", (12 * s * (1 - s), 3 - 12 * (s - sp.Rational(1, 2)) ** 2), "algebra",
+       note="12 s (1 - s) <= 3 with equality only at s = 1/2: for (a/b)^2 > 3 every density is stable")
+d.quote("sqrt3", "VI.A", r"$$\left(\frac{a}{b}\right)^2 > 3 \text{ oder } \frac{a}{b} > 1,7321$$",
+        reading=(sp.sqrt((12 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.7321")),
+        tolerance=sp.Rational(1, 20000), note="the largest value of 12 s (1 - s), at s = 1/2, and its root")
+
+q = sp.Symbol("q", positive=True)
+_roots = sorted(sp.solve(sp.Eq(12 * s * (1 - s), (a / b) ** 2), s), key=lambda e: e.subs({a: 1, b: 1}))
+S_lo, S_hi = sp.symbols("s_-^A s_+^A")
+d.step("density-roots", sp.Eq(S_hi, _roots[1]), "definition",
+       note="the larger root of 12 s (1 - s) = (a/b)^2 (sympy.solve)", result=S_hi)
+d.step("density-roots-lower", sp.Eq(S_lo, _roots[0]), "definition", note="the smaller root", result=S_lo)
+d.step("density-factor", ((a / b) ** 2 - 12 * s * (1 - s), 12 * (s - S_hi) * (s - S_lo)), "algebra",
+       uses=("density-roots", "density-roots-lower"),
+       note="the margin of (57) is positive exactly outside [s_-, s_+]")
+d.quote("density-range", "VI.A",
+        r"$$s \begin{cases} \text{entweder} > \frac{1}{2} \left( 1 + \sqrt{1 - \frac{1}{3} \left( \frac{a}{b} "
+        r"\right)^2} \right) \\ \text{oder} < \frac{1}{2} \left( 1 - \sqrt{1 - \frac{1}{3} \left( \frac{a}{b} "
+        r"\right)^2} \right) \end{cases}$$",
+        reading=(sp.Matrix([(1 + sp.sqrt(1 - (a / b) ** 2 / 3)) / 2, (1 - sp.sqrt(1 - (a / b) ** 2 / 3)) / 2]),
+                 sp.Matrix([S_hi, S_lo])))
+
+# ---- Examples 1 and 2 ------------------------------------------------------------------------------
+ex1_ratio = [e for e in sp.solve(sp.Eq((a ** 2 - 12 * b ** 2 * s * (1 - s)).subs({s: sp.Rational(4, 5), a: q * b}), 0), q)
+             if e.is_positive][0]
+d.step("example-1-threshold", (full(hA).subs({s: sp.Rational(4, 5), a: ex1_ratio * b}), 0), "substitution",
+       uses=("metacentric-height",), note="a/b at which h_A = 0 for s = 0.8 (sympy.solve)")
+d.quote("ex1-root", "Example 1", r"$$\frac{a}{b} > \sqrt{12 \cdot 0,8 \cdot 0,2}$$",
+        reading=(sp.sqrt(12 * sp.Rational(8, 10) * sp.Rational(2, 10)), ex1_ratio))
+d.quote("ex1-value", "Example 1", r"$$\frac{a}{b} > \frac{139}{100}$$",
+        reading=(ex1_ratio, sp.Rational(139, 100)), tolerance=sp.Rational(1, 200),
+        note="'angenaehert': two decimals")
+s_hi_1, s_lo_1 = (e.subs({a: 1, b: 1}) for e in (_roots[1], _roots[0]))
+d.quote("ex2-root", "Example 2",
+        r"\sqrt{1 - \frac{1}{3} \left( \frac{a}{b} \right)^2} = \sqrt{\frac{2}{3}}",
+        reading=(sp.sqrt(1 - (a / b) ** 2 / 3).subs(a, b), sp.sqrt(sp.Rational(2, 3))), note="a/b = 1")
+d.quote("ex2-two-thirds", "Example 2", r"\sqrt{\frac{2}{3}} = \sqrt{0,6667}",
+        reading=(sp.Rational(2, 3), sp.Rational("0.6667")), tolerance=sp.Rational(1, 20000),
+        note="the radicand (2 s_+ - 1)^2 at a = b")
+d.quote("ex2-root-value", "Example 2", r"\sqrt{0,6667} = 0,8165",
+        reading=(2 * s_hi_1 - 1, sp.Rational("0.8165")), tolerance=sp.Rational(1, 20000),
+        note="the root is 2 s_+ - 1 at a = b")
+d.quote("ex2-upper", "Example 2", r"s &> 0,908", reading=(s_hi_1, sp.Rational("0.908")),
+        tolerance=sp.Rational(1, 2000))
+d.quote("ex2-lower", "Example 2", r"\text{oder } s &< 0,092", reading=(s_lo_1, sp.Rational("0.092")),
+        tolerance=sp.Rational(1, 2000))
+
+# ---- the tilted prism in the first rotation region ---------------------------------------------------
+# The rotation axis PQ through O has the direction p = (-cos w, sin w): it makes the angle w with DE || BC,
+# and B lies on the side n = (-sin w, -cos w), which dips (s > 1/2).  xi = coordinate along n, eta along p.
+Bv, Cv, Av = (-a / 2, -a / (2 * sq3)), (a / 2, -a / (2 * sq3)), (0, a / sq3)
+nvec, pvec = (-sp.sin(om), -sp.cos(om)), (-sp.cos(om), sp.sin(om))
+xi = X * nvec[0] + Y * nvec[1]
+eta = X * pvec[0] + Y * pvec[1]
+Vt, Mx, My, Mz, mA, tan1 = sp.symbols("V_t M_xi M_eta M_z m_A t_1")
+cphi, sphi = 1 / sp.sqrt(1 + tp ** 2), tp / sp.sqrt(1 + tp ** 2)
+col = b * s + xi * tp                                 # submerged height over the point (X, Y) of the base
+d.step("tilted-volume", (Vt, sp.Integral(col, *tri), V1), "integration", uses=("displacement",),
+       note="water plane z = b s + xi tan(phi) through O (it keeps the volume since int xi df = 0), "
+            "tau = tan(phi); no base cut", result=Vt)
+d.step("tilted-moment-xi", (Mx, sp.Integral(xi * col, *tri), T1 * tp), "integration",
+       uses=("triangle-moment",), result=Mx)
+d.step("tilted-moment-eta", (My, sp.Integral(eta * col, *tri), 0), "integration",
+       note="(31): the centre of buoyancy stays in the plane of tilt for every omega, since int xi eta df = 0",
+       result=My)
+d.step("tilted-moment-z", (Mz, sp.Integral(col ** 2 / 2, *tri), F1 * b ** 2 * s ** 2 / 2 + T1 * tp ** 2 / 2),
+       "integration", uses=("triangle-moment",), result=Mz)
+d.step("righting-arm", sp.Eq(mA, (cphi * Mx + sphi * (Mz - Vt * b / 2)) / Vt), "definition",
+       note="horizontal distance of B = (M_xi, M_eta, M_z)/V_t from G = (0, 0, b/2) toward the dipping side, "
+            "w = (cos phi, sin phi) in the (xi, z) plane; positive = restoring", result=mA)
+d.step("righting-moment", (V1 * mA, sphi * ((1 + tp ** 2 / 2) * T1 - V1 * e1)), "algebra",
+       uses=("righting-arm", "tilted-volume", "tilted-moment-xi", "tilted-moment-z"), note="(12)")
+_tan_roots = sp.solve(sp.Eq((1 + tp ** 2 / 2) * (sq3 * a ** 4 / 96) - (sq3 * a ** 2 / 4) * b * s * (b / 2 - b * s / 2), 0), tp)
+d.step("tilted-equilibrium", sp.Eq(tan1, _tan_roots[0]), "definition",
+       note="the positive root tau of the bracket of righting-moment (sympy.solve; tau > 0 was assumed)",
+       result=tan1)
+d.step("tilted-equilibrium-check", ((1 + tan1 ** 2 / 2) * T1 - V1 * e1, 0), "algebra",
+       uses=("tilted-equilibrium", "righting-moment"))
+d.step("tilted-equilibrium-54", (tan1 ** 2, F1 * b ** 2 * s * (1 - s) / T1 - 2, 24 * (b / a) ** 2 * s * (1 - s) - 2),
+       "algebra", uses=("tilted-equilibrium",), note="(54) for the triangle")
+d.step("tilted-stable-in-phi", (sp.diff((1 + tp ** 2 / 2) * T1 - V1 * e1, tp), T1 * tp), "algebra",
+       note="the bracket grows with tau: the moment changes from - to + at tau = t_1, so the tilted position "
+            "is stable against a change of phi (against a turn about the prism axis it is indifferent: (51))")
+
+um, umr, Ltop, Lbot = sp.symbols("u_m u_m' L_top L_bot")
+d.quote("BS", "VI.A", r"$B S = \frac{a}{3} \sqrt{3}$", reading=(sp.sqrt(Bv[0] ** 2 + Bv[1] ** 2), a / 3 * sq3))
+d.step("dipping-distance", sp.Eq(um, Bv[0] * nvec[0] + Bv[1] * nvec[1]), "definition",
+       note="distance of the vertex B from the axis PQ, on the dipping side n", result=um)
+d.step("dipping-distance-value", (um, a / sq3 * sp.sin(pi / 6 + om)), "geometry", uses=("dipping-distance",))
+d.step("dipping-vertex-farthest", ((Bv[0] - Cv[0]) * nvec[0] + (Bv[1] - Cv[1]) * nvec[1], a * sp.sin(om)),
+       "geometry", note="B is at least as far as C on the dipping side for 0 <= omega <= 60 degrees (A lies on "
+                        "the other side)")
+d.step("rising-distance", sp.Eq(umr, -(Av[0] * nvec[0] + Av[1] * nvec[1])), "definition",
+       note="the vertex A is the farthest point on the rising side n' = -n (C: (a/sqrt 3) sin(omega - 30 deg) "
+            "<= A's distance for omega <= 60 deg)", result=umr)
+d.step("rising-distance-value", (umr, a / sq3 * sp.cos(om)), "geometry", uses=("rising-distance",))
+d.quote("59", "(59)", r"$$u_m = \frac{a}{3} \sqrt{3} \cdot \sin(30^\circ + \omega) \quad (59)$$",
+        reading=sp.Eq(um, a / 3 * sq3 * sp.sin(30 * deg + om)))
+d.step("top-limit", sp.Eq(Ltop, b * (1 - s) / um), "definition",
+       note="(53): the water height b s + u_m tan(phi) at the dipping vertex reaches the top base b",
+       result=Ltop)
+d.step("top-limit-check", (b * s + um * Ltop, b), "algebra", uses=("top-limit",))
+d.step("bottom-limit", sp.Eq(Lbot, b * s / umr), "definition",
+       note="(53a): the water height b s - u_m' tan(phi) at the rising vertex A reaches the bottom base 0",
+       result=Lbot)
+d.step("bottom-limit-check", (b * s - umr * Lbot, 0), "algebra", uses=("bottom-limit",))
+d.step("bottom-limit-relabelled", (full(Lbot).subs(om, pi / 3 - om), b * s * sq3 / (a * sp.sin(pi / 6 + om))),
+       "geometry", uses=("bottom-limit", "rising-distance-value"),
+       note="for s < 1/2 Scheeffer measures omega on the lower base from its rising vertex: omega -> 60 deg - "
+            "omega turns the bottom limit into b s sqrt3 / (a sin(30 deg + omega))")
+
+d.quote("60-tan", "(60)", r"\text{tg } \varphi_1 &= \sqrt{24 \cdot \frac{b^2}{a^2} s (1-s) - 2}",
+        reading=sp.Eq(tan1, sp.sqrt(24 * b ** 2 / a ** 2 * s * (1 - s) - 2)))
+d.quote("60-bound", "(60)",
+        r"\text{tg } \varphi_1 &\leq \frac{b}{a} \cdot \frac{(1-s) \sqrt{3}}{\sin(30^\circ + \omega)}",
+        reading=sp.Eq(Ltop, b / a * (1 - s) * sq3 / sp.sin(30 * deg + om)),
+        note="read as its bound: the tangent of the tilt at which the upper base meets the water")
+# the claim that one base decides: a counterexample with a = b, s = 3/5, omega = 0
+cx = {a: 1, b: 1, s: sp.Rational(3, 5), om: 0}
+Ltop_cx = (b * (1 - s) / (a / sq3 * sp.sin(pi / 6 + om))).subs(cx)
+Lbot_cx = (b * s / (a / sq3 * sp.cos(om))).subs(cx)
+d.quote("60-one-base", "(60)",
+        r"In der zweiten Bedingung ist  $s$  statt  $1-s$  zu setzen, wenn  $s < \frac{1}{2}$  ist.",
+        reading=(sp.Min(Ltop_cx, Lbot_cx), Ltop_cx),
+        note="read at a = b, s = 3/5, omega = 0: the first-region limit tan(phi) is min(top, bottom limit); "
+             "the text takes the top limit alone for s > 1/2",
+        erratum=Erratum(
+            "claim", "high",
+            r"The first rotation region needs both conditions: \operatorname{tg}\varphi_1 \le \frac{b}{a}"
+            r"\frac{(1-s)\sqrt3}{\sin(30^\circ+\omega)} (upper base, vertex B dipping) and \operatorname{tg}"
+            r"\varphi_1 \le \frac{b}{a}\frac{s\sqrt3}{\cos\omega} (lower base, vertex A rising). For s > 1/2 the "
+            r"lower one is the sharper when s \sin(30^\circ+\omega) < (1-s)\cos\omega, i.e. for "
+            r"1/2 < s < 2/3 and \omega < \operatorname{arctg}\frac{2-3s}{\sqrt3\, s} (and symmetrically for "
+            r"1/3 < s < 1/2); only for s >= 2/3 (s <= 1/3) does one base decide for every omega.",
+            "Section V derived (53)/(55) assuming the upper base is cut first when s > 1/2, which holds when the "
+            "farthest points on both sides of the axis are equally far (circle, square, centrally symmetric "
+            "bases). In the triangle they are not: the rising side holds the vertex A at (a/sqrt3) cos omega, "
+            "up to twice the distance (a/(2 sqrt3) at omega = 0) of the dipping edge BC. At a = b, s = 3/5, "
+            "omega = 0 the lower base meets the water at tan(phi) = 3 sqrt3/5 = 1.039, before the upper "
+            "one (4 sqrt3/5 = 1.386); the clipped prism confirms it.",
+            corrected_reading=(sp.Min(Ltop_cx, Lbot_cx), Lbot_cx)))
+
+# ---- (61)-(65): limits of omega and of a/b ---------------------------------------------------------
+Qsym = sp.Symbol("Q", positive=True)
+
+
+def boundary(limit, at, name, note):
+    """(a/b)^2 at which the tilted equilibrium t_1 meets a first-region limit (sympy.solve)."""
+    expr = full(tan1 ** 2 - limit ** 2).subs(om, at).subs(a, b * sp.sqrt(Qsym))
+    sol = [e for e in sp.solve(sp.simplify(expr), Qsym)]
+    assert len(sol) == 1, sol
+    sym = sp.Symbol(name)
+    d.step(name, sp.Eq(sym, sp.factor(sol[0])), "definition", note=note, result=sym)
+    d.step(name + "-check", (full(tan1 ** 2 - limit ** 2).subs(om, at).subs(a, b * sp.sqrt(sym)), 0),
+           "substitution", uses=(name,))
+    return sym
+
+
+L_top_S = b / a * (1 - s) * sq3 / sp.sin(pi / 6 + om)       # Scheeffer's bound for s > 1/2
+L_bot_S = b / a * s * sq3 / sp.sin(pi / 6 + om)             # and for s < 1/2 (omega on the lower base)
+Q60 = boundary(Ltop, pi / 3, "Q60", "(a/b)^2 at which t_1 = top limit at omega = 60 deg (vertex B straight "
+                                     "across the axis): below it the upper base is cut for some axis")
+Q60l = boundary(L_bot_S, pi / 3, "Q60-lower", "the same for s < 1/2 with the lower base")
+Q0 = boundary(Ltop, 0, "Q0", "(a/b)^2 at which t_1 = top limit at omega = 0 (edge BC across the axis)")
+Q0l = boundary(L_bot_S, 0, "Q0-lower", "the same for s < 1/2 with the lower base")
+
+D61 = sp.sqrt(24 * s * (1 - s) - 2 * (a / b) ** 2)
+d.quote("61-from-60", "VI.A",
+        r"$$\sqrt{24 \cdot \frac{b^2}{a^2} s (1-s) - 2} \leq \frac{b}{a} \frac{(1-s) \sqrt{3}}{\sin(30^\circ + \omega)}$$",
+        reading=(sp.Matrix([sp.sqrt(24 * b ** 2 / a ** 2 * s * (1 - s) - 2), b / a * (1 - s) * sq3 / sp.sin(30 * deg + om)]),
+                 sp.Matrix([tan1, Ltop])), note="the two sides are t_1 and the top limit")
+d.quote("61", "(61)",
+        r"\sin(30^\circ + \omega) &\leq \frac{(1-s) \sqrt{3}}{\sqrt{24 s (1-s) - 2 \left(\frac{a}{b}\right)^2}} "
+        r"\quad \text{für } s > \frac{1}{2} \\ \text{und } \sin(30^\circ + \omega) &\leq \frac{s \sqrt{3}}{\sqrt{24 s "
+        r"(1-s) - 2 \cdot \left(\frac{a}{b}\right)^2}} \quad \text{für } s < \frac{1}{2}",
+        reading=(sp.Matrix([(1 - s) * sq3 / D61, s * sq3 / D61]),
+                 sp.Matrix([b * (1 - s) * sq3 / (a * tan1), b * s * sq3 / (a * tan1)])),
+        note="the bound on sin(30 deg + omega) at which t_1 equals the limit (top for s > 1/2, bottom "
+             "relabelled for s < 1/2)")
+qq = (a / b) ** 2
+d.quote("62-step-1", "VI.A", r"24 s (1-s) - 2 \left(\frac{a}{b}\right)^2 \leq 3 (1-s)^2",
+        reading=(3 * (1 - s) ** 2 - (24 * s * (1 - s) - 2 * qq), 2 * (qq - Q60)), note="margin")
+d.quote("62-step-2", "VI.A", r"$$3 (1-s) \{8 s - (1-s)\} \leq 2 \left(\frac{a}{b}\right)^2$$",
+        reading=(2 * qq - 3 * (1 - s) * (8 * s - (1 - s)), 2 * (qq - Q60)), note="margin")
+d.quote("62-step-3", "VI.A", r"$$\left(\frac{a}{b}\right)^2 \geq \frac{3}{2} (1-s) (9 s - 1)$$",
+        reading=(qq - sp.Rational(3, 2) * (1 - s) * (9 * s - 1), qq - Q60), note="margin")
+P62u, P62l = sp.Rational(3, 2) * (1 - s) * (9 * s - 1), sp.Rational(3, 2) * s * (8 - 9 * s)
+d.quote("62", "(62)",
+        r"\text{also } \frac{a}{b} &\geq \sqrt{\frac{3}{2} \cdot (1-s) (9 s - 1)} \quad \text{für } s > \frac{1}{2} "
+        r"\\ \text{und } \frac{a}{b} &\geq \sqrt{\frac{3}{2} \cdot s (8 - 9 s)} \quad \text{für } s < \frac{1}{2}",
+        reading=(sp.Matrix([(a / b - sp.sqrt(P62u)) * (a / b + sp.sqrt(P62u)), (a / b - sp.sqrt(P62l)) * (a / b + sp.sqrt(P62l))]),
+                 sp.Matrix([qq - Q60, qq - Q60l])), note="margins times the positive a/b + sqrt(...)")
+D63 = 24 * s * (1 - s) - 2 * qq
+d.quote("63", "(63)",
+        r"\sin^2(30^\circ) &> \frac{3 (1-s)^2}{24 s (1-s) - 2 \left(\frac{a}{b}\right)^2} \quad \text{für } s > "
+        r"\frac{1}{2} \\ \text{oder } \sin^2 30^\circ &> \frac{3 s^2}{24 s (1-s) - 2 \left(\frac{a}{b}\right)^2} "
+        r"\quad \text{für } s < \frac{1}{2}",
+        reading=(sp.Matrix([(sp.sin(30 * deg) ** 2 - 3 * (1 - s) ** 2 / D63) * D63, (sp.sin(30 * deg) ** 2 - 3 * s ** 2 / D63) * D63]),
+                 sp.Matrix([(Q0 - qq) / 2, (Q0l - qq) / 2])),
+        note="margins times the positive denominator 24 s(1-s) - 2 (a/b)^2 (a tilted position exists)")
+d.quote("64", "(64)",
+        r"\left(\frac{a}{b}\right)^2 &< 6(1-s)(3s-1) && \text{für } s > \frac{1}{2} \\ \text{und } "
+        r"\left(\frac{a}{b}\right)^2 &< 6s(2-3s) && \text{für } s < \frac{1}{2}",
+        reading=(sp.Matrix([6 * (1 - s) * (3 * s - 1) - qq, 6 * s * (2 - 3 * s) - qq]), sp.Matrix([Q0 - qq, Q0l - qq])))
+d.quote("65-I", "(65)", r"$$I \quad \left(\frac{a}{b}\right)^2 \geq 12s(1-s)$$",
+        reading=(qq - 12 * s * (1 - s), 24 * s / b * hA),
+        note="at equality h_A = 0 but the moment sin(phi) T_1 tan^2(phi)/2 is still restoring: stable")
+d.quote("65-II", "(65)",
+        r"$$II \quad \text{Wenn } 12s(1-s) > \left(\frac{a}{b}\right)^2 \geq \begin{cases} \frac{3}{2}(1-s)(9s-1) & "
+        r"\text{für } s > \frac{1}{2} \\ \frac{3}{2}s(8-9s) & \text{für } s < \frac{1}{2} \end{cases}$$",
+        reading=(sp.Matrix([12 * s * (1 - s) - qq, qq - P62u, qq - P62l]), sp.Matrix([-24 * s / b * hA, qq - Q60, qq - Q60l])),
+        note="II holds for every axis also when the other base is included: over omega the top limit is "
+             "smallest at omega = 60 deg and the bottom limit b s sqrt3/(a cos omega) at omega = 0, where it "
+             "equals b s sqrt3 / a >= b (1-s) sqrt3 / a for s > 1/2")
+d.quote("65-tan", "(65)", r"$$\operatorname{tg}^2 \varphi_1 = 24 \left(\frac{b}{a}\right)^2 s(1-s) - 2$$",
+        reading=sp.Eq(tan1 ** 2, 24 * (b / a) ** 2 * s * (1 - s) - 2))
+d.quote("65-III", "(65)",
+        r"\frac{3}{2}(1-s)(9s-1) > \left(\frac{a}{b}\right)^2 \geq 6(1-s)(3s-1) & \left(\text{für } s > "
+        r"\frac{1}{2}\right) \\ \frac{3}{2}s(8-9s) > \left(\frac{a}{b}\right)^2 \geq 6s(2-3s) & \left(\text{für } s "
+        r"< \frac{1}{2}\right)",
+        reading=(sp.Matrix([P62u - qq, qq - 6 * (1 - s) * (3 * s - 1), P62l - qq, qq - 6 * s * (2 - 3 * s)]),
+                 sp.Matrix([Q60 - qq, qq - Q0, Q60l - qq, qq - Q0l])))
+d.quote("65-III-omega", "(65)",
+        r"\sin^2(30^\circ + \omega) \leq \begin{cases} \frac{3(1-s)^2}{24s(1-s) - 2\left(\frac{a}{b}\right)^2} & "
+        r"\text{für } s > \frac{1}{2} \\ \frac{3s^2}{24s(1-s) - 2\left(\frac{a}{b}\right)^2} & \text{für } s < "
+        r"\frac{1}{2} \end{cases}",
+        reading=(sp.Matrix([3 * (1 - s) ** 2 / D63, 3 * s ** 2 / D63]),
+                 sp.Matrix([(b * (1 - s) * sq3 / (a * tan1)) ** 2, (b * s * sq3 / (a * tan1)) ** 2])),
+        note="(61) squared; as a necessary condition it is right")
+# the existence claim of III: counterexample s = 11/20, (a/b)^2 = 11/5 (inside III)
+cx3 = {s: sp.Rational(11, 20), a: sp.sqrt(sp.Rational(11, 5)), b: 1}
+w_cross = sp.atan((2 - 3 * s) / (sq3 * s))        # where top(omega) = bottom(omega): s sin(30+w) = (1-s) cos w
+best_limit = (b / a * (1 - s) * sq3 / sp.sin(pi / 6 + w_cross)).subs(cx3)
+tan1_cx3 = sp.sqrt(24 * s * (1 - s) / (a / b) ** 2 - 2).subs(cx3)
+Delta3 = sp.nsimplify(0) + full(mA).subs(cx3).subs(tp, best_limit)
+d.quote("65-III-claim", "(65)",
+        r"so schwimmt das Prisma in aufrechter Lage labil und erreicht durch Drehung um eine horizontale Achse "
+        r"(wie in II) eine schiefe stabile Lage.",
+        reading=(sp.Max(Delta3, 0), Delta3),
+        note="read at s = 11/20, (a/b)^2 = 11/5, b = 1 (in III: 1.755 <= 2.2 < 2.666): Delta = the righting "
+             "arm m_A at the tilt where the first base meets the water, for the best axis omega = "
+             "arctg((2-3s)/(sqrt3 s)) = 20.2 deg (there the top and bottom limits coincide, elsewhere the "
+             "first contact comes earlier). The claim needs Delta >= 0: the equilibrium reached before a base "
+             "is cut",
+        erratum=Erratum(
+            "claim", "high",
+            r"In III a tilted position in the first region exists only if also the lower base stays under water: "
+            r"for s > 1/2 an axis \omega must satisfy both \sin(30^\circ+\omega) \le (1-s)K and \cos\omega \le sK, "
+            r"K = \sqrt3\,b/(a\,\operatorname{tg}\varphi_1). For 1/2 < s < 2/3 such \omega exist iff "
+            r"(a/b)^2 \ge 12s(1-s) - \frac{3(1-s)^2}{2\sin^2(30^\circ+\omega_\times)}, \omega_\times = "
+            r"\operatorname{arctg}\frac{2-3s}{\sqrt3\,s} (the best axis); for s >= 2/3 the printed III is right. "
+            r"At s = 0.55 no axis works for 1.755 <= (a/b)^2 < 2.455 (III as printed: 1.755 ... 2.666). For "
+            r"s < 1/2 the same with s and 1-s exchanged.",
+            "At s = 11/20, (a/b)^2 = 11/5: t_1 = sqrt(24 s(1-s)/(a/b)^2 - 2) = 0.8367, but the best axis "
+            "(omega = 20.17 deg, where the top and bottom limits are equal) allows only tan(phi) <= 0.6842: for "
+            "every axis one base is cut before the equilibrium is reached: at that first contact the righting arm is "
+            "still -0.0109 b (capsizing), in the formula of (12) and in the clipped prism alike. The lower-base condition omitted in "
+            "(55)/(60) (see 60-one-base) decides here; (61) is necessary, not sufficient.",
+            corrected_reading=(sp.Min(Delta3, 0), Delta3)))
+
+# ---- Examples 3 and 4 ------------------------------------------------------------------------------
+s3 = sp.Rational(2, 3)
+Q60_3 = sp.factor(full(Q60)).subs(s, s3)
+tan1_expr = full(tan1)
+phi3 = sp.atan(tan1_expr.subs({s: s3, a: sp.sqrt(Q60_3), b: 1}))
+d.quote("ex3-condition", "Example 3", r"$$\left(\frac{a}{b}\right)^2 = \frac{3}{2} (1 - s) (9s - 1)$$",
+        reading=(Q60, P62u), note="an upper vertex in the water: the boundary of 65 II")
+d.quote("ex3-tan", "Example 3",
+        r"$$\operatorname{tg} \varphi_1 = \sqrt{24 \cdot \left(\frac{b}{a}\right)^2 \cdot s (1 - s) - 2}$$",
+        reading=sp.Eq(tan1, sp.sqrt(24 * (b / a) ** 2 * s * (1 - s) - 2)))
+d.quote("ex3-ratio-squared", "Example 3", r"\left(\frac{a}{b}\right)^2 = \frac{5}{2}",
+        reading=(Q60_3, sp.Rational(5, 2)))
+d.quote("ex3-ratio", "Example 3", r"\frac{a}{b} = 1,58 \text{ (angenähert)}",
+        reading=(sp.sqrt(Q60_3), sp.Rational("1.58")), tolerance=sp.Rational(1, 200))
+d.quote("ex3-ratio-fraction", "Example 3", r"$$\text{oder } \frac{a}{b} = \frac{158}{100}$$",
+        reading=(sp.sqrt(Q60_3), sp.Rational(158, 100)), tolerance=sp.Rational(1, 200))
+d.quote("ex3-angle", "Example 3", r"$$\varphi_1 = 20^\circ 3' 35''$$",
+        reading=(phi3 * 180 / pi, 20 + sp.Rational(3, 60) + sp.Rational(35, 3600)), tolerance=sp.Rational(1, 7200),
+        note="degrees; exact 20 deg 3' 34.50''")
+
+w4, t4 = pi / 12, sp.tan(pi / 6)
+Bsq = sp.Symbol("beta", positive=True)          # (b/a)^2
+top4 = (b * (1 - s) / (a / sq3 * sp.sin(pi / 6 + om))).subs(om, w4)
+sol68 = sp.solve(sp.Eq((top4 ** 2).subs(b, a * sp.sqrt(Bsq)), t4 ** 2), Bsq)
+assert len(sol68) == 1
+B68 = sp.Symbol("B_68")
+d.step("example-4-top", sp.Eq(B68, sp.simplify(sol68[0])), "definition",
+       note="(b/a)^2 from: top limit at omega = 15 deg equals tan 30 deg (sympy.solve)", result=B68)
+d.step("example-4-top-check", ((b * (1 - s) / (a / sq3 * sp.sin(pi / 6 + om))).subs(om, w4).subs(b, a * sp.sqrt(B68)) ** 2,
+                               t4 ** 2), "substitution", uses=("example-4-top", "dipping-distance-value"))
+eq4 = sp.Eq((24 * Bsq * s * (1 - s) - 2).subs(Bsq, sol68[0]), t4 ** 2)
+s4 = [e for e in sp.solve(eq4, s) if 0 < e < 1]
+assert len(s4) == 1
+s4 = s4[0]
+q4 = 1 / sp.sqrt(sol68[0].subs(s, s4))
+d.step("example-4-density", (full(24 * B68 * s * (1 - s) - 2).subs(s, s4), t4 ** 2), "substitution",
+       uses=("example-4-top", "tilted-equilibrium-54"), note="t_1 = tan 30 deg with (b/a)^2 = B_68 (sympy.solve)")
+d.quote("67", "(67)",
+        r"\operatorname{tg} 30^\circ &= \sqrt{24 \cdot \frac{b^2}{a^2} s (1 - s) - 2} \\ \text{und } "
+        r"\operatorname{tg} 30^\circ &= \frac{b}{a} \cdot \frac{(1 - s) \sqrt{3}}{\sin 45^\circ}",
+        reading=(sp.Matrix([sp.sqrt(24 * b ** 2 / a ** 2 * s * (1 - s) - 2), b / a * (1 - s) * sq3 / sp.sin(45 * deg)]),
+                 sp.Matrix([tan1, full(Ltop).subs(om, w4)])),
+        note="the two sides of (60) at omega = 15 deg: t_1 and the top limit (both set to tan 30 deg)")
+d.quote("ex4-constants", "Example 4",
+        r"$\operatorname{tg} 30^\circ = \frac{1}{3} \cdot \sqrt{3}$  und  $\sin 45^\circ = \frac{1}{2} \sqrt{2}$",
+        reading=(sp.Matrix([sp.tan(30 * deg), sp.sin(45 * deg)]), sp.Matrix([sq3 / 3, sp.sqrt(2) / 2])))
+d.quote("68", "(68)", r"$$\left(\frac{b}{a}\right)^2 = \frac{1}{18 \cdot (1 - s)^2} \quad (68)$$",
+        reading=(B68, 1 / (18 * (1 - s) ** 2)))
+d.quote("ex4-density", "Example 4", r"$$s = \frac{7}{11} = 0,636$$",
+        reading=(s4, sp.Rational(7, 11), sp.Rational("0.636")), tolerance=sp.Rational(1, 2000))
+d.quote("ex4-ratio", "Example 4", r"$$\frac{a}{b} = (1 - s) \sqrt{181} = \frac{4}{11} \cdot \sqrt{181}$$",
+        reading=(q4, (1 - s4) * sp.sqrt(181), sp.Rational(4, 11) * sp.sqrt(181)),
+        erratum=Erratum(
+            "transcription", "medium", r"\frac{a}{b} = (1 - s) \sqrt{18} = \frac{4}{11} \cdot \sqrt{18}",
+            "From (68), a/b = sqrt(18) (1 - s) = 12 sqrt2 / 11 = 1.5428; the text itself continues 'angenaehert "
+            "a/b = 17/11' = 1.545, which fits sqrt 18 and not sqrt 181 (4.89). The same stray '1' after 18 in "
+            "both places looks like a scan artefact (a footnote mark or the next line's digit) rather than the "
+            "author's arithmetic; from the transcription alone a misprint cannot be excluded.",
+            corrected_reading=(q4, (1 - s4) * sp.sqrt(18), sp.Rational(4, 11) * sp.sqrt(18))))
+d.quote("ex4-ratio-value", "Example 4", r"$$\text{d. i. angenähert } \frac{a}{b} = \frac{17}{11}$$",
+        reading=(q4, sp.Rational(17, 11)), tolerance=sp.Rational(1, 22),
+        note="a fraction with denominator 11: half a unit of the numerator, 1/22")
+
+
+# =====================================================================================================
+# B. The circular cylinder
+# =====================================================================================================
+rho = sp.Symbol("rho", positive=True)
+disc = ((rho, 0, r), (th, 0, 2 * pi))
+F1c, T1c, V1c, hC, tanC, LtopC, LbotC, xC = sp.symbols("F_1^C T_1^C V_1^C h_C t_C L_top^C L_bot^C x_C")
+xi_c = rho * sp.cos(th)
+col_c = b * s + xi_c * tp
+d.step("disc-area", (F1c, sp.Integral(rho, *disc), pi * r ** 2), "integration", result=F1c)
+d.step("disc-moment", (T1c, sp.Integral(xi_c ** 2 * rho, *disc), pi * r ** 4 / 4), "integration", result=T1c,
+       note="about every diameter (the disc is symmetric about its centre in every direction)")
+d.step("cylinder-displacement", sp.Eq(V1c, F1c * b * s), "definition", note="Archimedes", result=V1c)
+d.step("cylinder-metacentric-height", (hC, T1c / V1c - e1, (r ** 2 - 2 * b ** 2 * s * (1 - s)) / (4 * b * s)),
+       "algebra", uses=("disc-moment", "cylinder-displacement", "centre-distance"), result=hC)
+d.step("cylinder-tilted-volume", (sp.Integral(col_c * rho, *disc), V1c), "integration")
+d.step("cylinder-tilted-moments",
+       (sp.Matrix([sp.Integral(xi_c * col_c * rho, *disc), sp.Integral(rho * sp.sin(th) * col_c * rho, *disc),
+                   sp.Integral(col_c ** 2 / 2 * rho, *disc)]),
+        sp.Matrix([T1c * tp, 0, F1c * b ** 2 * s ** 2 / 2 + T1c * tp ** 2 / 2])), "integration",
+       note="the same moments as for the triangle: righting-moment holds with T_1^C, V_1^C")
+_tanC = [e for e in sp.solve(sp.Eq((1 + tp ** 2 / 2) * pi * r ** 4 / 4 - pi * r ** 2 * b * s * (b / 2 - b * s / 2), 0), tp)]
+d.step("cylinder-tilted-equilibrium", sp.Eq(tanC, _tanC[0]), "definition",
+       note="positive root of (1 + tau^2/2) T_1 - V_1 e_1 (sympy.solve)", result=tanC)
+d.step("cylinder-tilted-equilibrium-check", ((1 + tanC ** 2 / 2) * T1c - V1c * e1, 0), "algebra",
+       uses=("cylinder-tilted-equilibrium",))
+d.step("cylinder-limits", (sp.Matrix([b * s + r * LtopC, b * s - r * LbotC]), sp.Matrix([b, 0])), "definition",
+       note="u_m = r on both sides: the top rim dips to the water at b s + r tan(phi) = b, the bottom rim "
+            "rises to it at b s - r tan(phi) = 0")
+d.step("cylinder-top-limit", sp.Eq(LtopC, b * (1 - s) / r), "definition", result=LtopC)
+d.step("cylinder-bottom-limit", sp.Eq(LbotC, b * s / r), "definition", result=LbotC)
+d.step("cylinder-limits-check", (sp.Matrix([b * s + r * LtopC, b * s - r * LbotC]), sp.Matrix([b, 0])), "algebra",
+       uses=("cylinder-top-limit", "cylinder-bottom-limit"),
+       note="the farthest points are at r on both sides, so for s > 1/2 the top limit is the smaller")
+d.step("immersion-height", sp.Eq(xC, b * s + r * tanC), "definition",
+       note="the water height on the dipping generator (xi = r) in the tilted equilibrium", result=xC)
+
+K2 = (2 * r / b) ** 2
+d.quote("cylinder-data", "VI.B", r"$$T_1 = \frac{\pi}{4} r^4 \quad F_1 = \pi r^2 \quad u_m = r \quad e_1 = \frac{b}{2} (1 - s)$$",
+        reading=(sp.Matrix([T1c, F1c, e1]), sp.Matrix([pi / 4 * r ** 4, pi * r ** 2, b / 2 * (1 - s)])))
+d.quote("cylinder-condition", "VI.B",
+        r"\frac{T_1}{V_1} - e_1 &> 0 \\ \frac{r^2}{4 b s} - \frac{b}{2} (1 - s) &> 0 \\ \frac{r^2}{b^2} &> 2 s (1 - s)",
+        reading=(T1c / V1c - e1, r ** 2 / (4 * b * s) - b / 2 * (1 - s), b / (4 * s) * (r ** 2 / b ** 2 - 2 * s * (1 - s)), hC),
+        note="margins; the last line times b/(4 s) > 0")
+d.quote("69", "(69)", r"$$\frac{2r}{b} > \sqrt{8 s (1 - s)} \quad (69)$$",
+        reading=((2 * r / b - sp.sqrt(8 * s * (1 - s))) * (2 * r / b + sp.sqrt(8 * s * (1 - s))), 16 * s / b * hC),
+        note="margin times the positive 2r/b + sqrt(8 s (1-s))")
+d.quote("70", "(70)",
+        r"\left(\frac{2r}{b}\right)^2 &> 8 s - 8 s^2 \\ \left(s - \frac{1}{2}\right)^2 &> \frac{1}{4} \left[1 - "
+        r"\frac{1}{2} \left(\frac{2r}{b}\right)^2\right]",
+        reading=(K2 - 8 * s + 8 * s ** 2, 8 * ((s - sp.Rational(1, 2)) ** 2 - (1 - K2 / 2) / 4), 16 * s / b * hC),
+        note="margins, the second times 8")
+d.quote("sqrt2", "VI.B",
+        r"$$\frac{1}{2} \cdot \left(\frac{2r}{b}\right)^2 > 1 \text{ oder } \frac{2r}{b} > \sqrt{2} \text{ d. i. } > 1,4142.$$",
+        reading=(sp.sqrt((8 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.sqrt(2), sp.Rational("1.4142")),
+        tolerance=sp.Rational(1, 20000), note="the largest 8 s (1-s), at s = 1/2")
+_rootsC = sorted(sp.solve(sp.Eq(8 * s * (1 - s), K2), s), key=lambda e: e.subs({r: 1, b: 4}))
+SC_lo, SC_hi = sp.symbols("s_-^C s_+^C")
+d.step("cylinder-density-upper", sp.Eq(SC_hi, _rootsC[1]), "definition", note="sympy.solve", result=SC_hi)
+d.step("cylinder-density-lower", sp.Eq(SC_lo, _rootsC[0]), "definition", result=SC_lo)
+d.step("cylinder-density-factor", (K2 - 8 * s * (1 - s), 8 * (s - SC_hi) * (s - SC_lo)), "algebra",
+       uses=("cylinder-density-upper", "cylinder-density-lower"))
+d.quote("71", "(71)",
+        r"\text{für } s > \frac{1}{2}: \quad s &> \frac{1}{2} \left(1 + \sqrt{1 - \frac{1}{2} \left(\frac{2r}{b}\right)^2}\right) "
+        r"\\ \text{für } s < \frac{1}{2}: \quad s &< \frac{1}{2} \left(1 - \sqrt{1 - \frac{1}{2} \left(\frac{2r}{b}\right)^2}\right)",
+        reading=(sp.Matrix([(1 + sp.sqrt(1 - K2 / 2)) / 2, (1 - sp.sqrt(1 - K2 / 2)) / 2]), sp.Matrix([SC_hi, SC_lo])))
+
+# Example 5, 6
+d.quote("ex5", "Example 5", r"$\frac{2r}{b} > \sqrt{2}$  oder  $> 1,4142$",
+        reading=(sp.sqrt((8 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.4142")),
+        tolerance=sp.Rational(1, 20000))
+sq_ = {b: 2 * r}                                # square axial section: 2r = b
+d.quote("ex6-ratio", "Example 6", r"In 71 hat man  $\frac{2}{b} = 1$  zu setzen",
+        reading=((2 / b).subs(sq_), 1), note="square axial section: b = 2r",
+        erratum=Erratum("transcription", "medium", r"\frac{2r}{b} = 1",
+                        "The example sets the ratio of diameter to height, 2r/b, to 1 (square axial section); "
+                        "2/b = 1 would fix b = 2 whatever r is. The r is lost here and in the next line, which "
+                        "only gives sqrt(0.50) with 2r/b = 1. Probably the scan lost the letter; a misprint "
+                        "repeated twice is less likely.",
+                        corrected_reading=((2 * r / b).subs(sq_), 1)))
+d.quote("ex6-root", "Example 6", r"\sqrt{1 - \frac{1}{2} \cdot \left(\frac{2}{b}\right)^2} = \sqrt{0,50}",
+        reading=(sp.sqrt(1 - (2 / b) ** 2 / 2).subs(sq_), sp.sqrt(sp.Rational(1, 2))),
+        erratum=Erratum("transcription", "medium", r"\sqrt{1 - \frac{1}{2} \cdot \left(\frac{2r}{b}\right)^2} = \sqrt{0,50}",
+                        "The same lost r as in ex6-ratio; with 2r/b = 1 the radicand is 1/2 as printed.",
+                        corrected_reading=(sp.sqrt(1 - (2 * r / b) ** 2 / 2).subs(sq_), sp.sqrt(sp.Rational(1, 2)))))
+sC_hi1, sC_lo1 = (e.subs(sq_) for e in (_rootsC[1], _rootsC[0]))
+for name, exc, val, printed, tol in (
+        ("ex6-root-value", r"\sqrt{0,50} = 0,7071", 2 * sC_hi1 - 1, "0.7071", sp.Rational(1, 20000)),
+        ("ex6-sum", r"1 + \sqrt{0,50} = 1,7071", 2 * sC_hi1, "1.7071", sp.Rational(1, 20000)),
+        ("ex6-difference", r"1 - \sqrt{0,50} = 0,2929", 2 * sC_lo1, "0.2929", sp.Rational(1, 20000)),
+        ("ex6-upper", r"folglich entweder  $s > 0,8536$", sC_hi1, "0.8536", sp.Rational(1, 20000)),
+        ("ex6-lower", r"oder  $s < 0,1464$", sC_lo1, "0.1464", sp.Rational(1, 20000))):
+    d.quote(name, "Example 6", exc, reading=(val, sp.Rational(printed)), tolerance=tol,
+            note="2r = b: the density roots s_+, s_- of (71) (and 2 s_+ - 1, 2 s_+, 2 s_-)")
+
+d.quote("72", "(72)", r"$$\text{Ist aber} \quad \frac{2r}{b} < \sqrt{8s(1-s)} \quad (72)$$",
+        reading=((sp.sqrt(8 * s * (1 - s)) - 2 * r / b) * (sp.sqrt(8 * s * (1 - s)) + 2 * r / b), -16 * s / b * hC))
+d.quote("cylinder-data-72", "VI.B", r"$$F_1 = \pi r^2 \quad T_1 = \frac{\pi r^4}{4} \quad u_m = r$$",
+        reading=(sp.Matrix([F1c, T1c]), sp.Matrix([pi * r ** 2, pi * r ** 4 / 4])))
+Bc = b / (2 * r)
+d.quote("72a-tan", "(72a)", r"$$\text{tg}^2 \varphi_1 = 16 \left( \frac{b}{2r} \right)^2 \cdot s (1-s) - 2$$",
+        reading=sp.Eq(tanC ** 2, 16 * Bc ** 2 * s * (1 - s) - 2))
+d.quote("72a", "(72a)",
+        r"$$\text{tg} \varphi_1 \leq \begin{cases} 2(1-s) \cdot \frac{b}{2r} & \text{für } s > \frac{1}{2} \\ 2s \cdot "
+        r"\frac{b}{2r} & \text{für } s < \frac{1}{2} \end{cases} \quad (72a)$$",
+        reading=(sp.Matrix([2 * (1 - s) * Bc, 2 * s * Bc]), sp.Matrix([LtopC, LbotC])), note="read as its bounds")
+d.quote("72a-squared", "VI.B",
+        r"$$16 \left( \frac{b}{2r} \right)^2 s (1-s) - 2 \leq \begin{cases} 4(1-s)^2 \cdot \left( \frac{b}{2r} \right)^2 & "
+        r"\left( s > \frac{1}{2} \right) \\ 4s^2 \cdot \left( \frac{b}{2r} \right)^2 & \left( s < \frac{1}{2} \right) "
+        r"\end{cases}$$",
+        reading=(sp.Matrix([4 * (1 - s) ** 2 * Bc ** 2 - (16 * Bc ** 2 * s * (1 - s) - 2), 4 * s ** 2 * Bc ** 2 - (16 * Bc ** 2 * s * (1 - s) - 2)]),
+                 sp.Matrix([LtopC ** 2 - tanC ** 2, LbotC ** 2 - tanC ** 2])), note="margins")
+d.quote("73", "(73)",
+        r"$$8s(1-s) > \left( \frac{2r}{b} \right)^2 \geq \begin{cases} 2(1-s)(5s-1) & \text{für } s > \frac{1}{2} \\ "
+        r"2s(4-5s) & \text{für } s < \frac{1}{2} \end{cases} \quad (73)$$",
+        reading=(sp.Matrix([8 * s * (1 - s) - K2, K2 - 2 * (1 - s) * (5 * s - 1), K2 - 2 * s * (4 - 5 * s)]),
+                 sp.Matrix([-16 * s / b * hC, (LtopC ** 2 - tanC ** 2) * K2 / 2, (LbotC ** 2 - tanC ** 2) * K2 / 2])),
+        note="margins; the last two are the (positive) factor (2r/b)^2/2 times the squared-limit margins")
+
+# Example 7: 2r = b, s < 1/2
+res = d.results()
+hC_e, tanC_e, LbotC_e, LtopC_e = (full(k) for k in (hC, tanC, LbotC, LtopC))
+s_b = [e for e in sp.solve(sp.Eq((LbotC_e ** 2 - tanC_e ** 2).subs(sq_), 0), s)]
+s_b = sorted(s_b, key=lambda e: float(e))
+d.step("example-7-bottom", (full(LbotC ** 2 - tanC ** 2).subs(sq_).subs(s, s_b[0]), 0), "substitution",
+       note="the density at which the tilted equilibrium meets the bottom limit, 2r = b (sympy.solve)")
+d.quote("ex7-conditions", "Example 7", r"$$8s(1-s) > 1 > 2s(4-5s)$$",
+        reading=(sp.Matrix([8 * s * (1 - s) - 1, 1 - 2 * s * (4 - 5 * s)]),
+                 sp.Matrix([full(-16 * s / b * hC).subs(sq_), full((LbotC ** 2 - tanC ** 2) * K2 / 2).subs(sq_)])))
+d.quote("ex7-square", "Example 7", r"$$\left(\frac{1}{2} - s\right)^2 < \frac{1}{8}$$",
+        reading=(sp.Rational(1, 8) - (sp.Rational(1, 2) - s) ** 2, full(-2 * s / b * hC).subs(sq_)))
+d.quote("ex7-lower", "Example 7", r"$$s > \frac{1}{2} \left(1 - \sqrt{\frac{1}{2}}\right) \text{ oder } s > 0,146.$$",
+        reading=(sC_lo1, (1 - sp.sqrt(sp.Rational(1, 2))) / 2, sp.Rational("0.146")), tolerance=sp.Rational(1, 2000))
+d.quote("ex7-second", "Example 7", r"ergibt sich  $(s - 0,4)^2 > 0,06$",
+        reading=((s - sp.Rational(2, 5)) ** 2 - sp.Rational(6, 100), full((LbotC ** 2 - tanC ** 2) * K2 / 20).subs(sq_)))
+for name, exc, val, printed in (
+        ("ex7-root", r"$\sqrt{0,06} = 0,245$", sp.Rational(2, 5) - s_b[0], "0.245"),
+        ("ex7-plus", r"$$0,4 + \sqrt{0,06} = 0,645$$", s_b[1], "0.645"),
+        ("ex7-minus", r"$$0,4 - \sqrt{0,06} = 0,155$$", s_b[0], "0.155")):
+    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=sp.Rational(1, 2000),
+            note="roots s of (2r/b)^2 = 2 s (4 - 5 s) at 2r = b (0.4 -+ sqrt 0.06)")
+for name, exc, val, printed in (("ex7-range-lower", "zwischen 0,146", sC_lo1, "0.146"),
+                                ("ex7-range-upper", "und 0,155 liegen", s_b[0], "0.155")):
+    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=sp.Rational(1, 2000),
+            note="'Folglich muss der Wert von s zwischen 0,146 und 0,155 liegen': right; below 0.146 the "
+                 "cylinder floats upright stably, above 0.155 the lower base emerges before the tilted "
+                 "equilibrium is reached")
+
+# Example 8
+ex8 = {r: 30, b: 40, s: sp.Rational(3, 4)}
+d.quote("ex8-values", "Example 8",
+        r"\left(\frac{2r}{b}\right)^2 = \frac{9}{4} \text{ und } 8s(1-s) = \frac{3}{2}",
+        reading=(sp.Matrix([K2.subs(ex8), (8 * s * (1 - s)).subs(ex8)]), sp.Matrix([sp.Rational(9, 4), sp.Rational(3, 2)])))
+d.quote("ex8-claim", "Example 8",
+        "Der Cylinder schwimmt also in aufrechter Lage stabil und hat unter den angegebenen Bedingungen weiter "
+        "keine Gleichgewichtslage.",
+        reading=(sp.Matrix([sp.sign(hC_e.subs(ex8)), sp.sign(full((1 + tp ** 2 / 2) * T1c - V1c * e1).subs(ex8).subs(tp, LtopC_e.subs(ex8)))]),
+                 sp.Matrix([1, 1])),
+        note="h_C > 0, and the bracket (1 + tau^2/2) T_1 - V_1 e_1 = T_1 tau^2/2 + V_1 h_C stays positive up to the "
+             "top limit: no tilted equilibrium in the first region")
+# Example 9
+ex9 = {r: 15, b: 40, s: sp.Rational(4, 5)}
+d.quote("ex9-values", "Example 9",
+        r"\frac{2r}{b} = \frac{3}{4}, \quad \left(\frac{2r}{b}\right)^2 = \frac{9}{16} \quad 8s(1-s) = 8 \cdot 0,8 \cdot 0,2 = \frac{32}{25}",
+        reading=(sp.Matrix([2 * r / b, K2, 8 * s * (1 - s)]).subs(ex9), sp.Matrix([sp.Rational(3, 4), sp.Rational(9, 16), sp.Rational(32, 25)])))
+d.quote("ex9-bound", "Example 9", r"$$2(1-s) \cdot (5s-1) = 2 \cdot 0,2 \cdot 3 = 1,2$$",
+        reading=((2 * (1 - s) * (5 * s - 1)).subs(ex9), sp.Rational(6, 5)))
+d.quote("ex9-claim", "Example 9",
+        "Der Cylinder hat also bei nicht eintauchender oberer Grundfläche keine stabilen Gleichgewichtslage.",
+        reading=(sp.Matrix([sp.sign(hC_e.subs(ex9)), sp.sign((LtopC_e - tanC_e).subs(ex9))]), sp.Matrix([-1, -1])),
+        note="upright labile (h_C < 0) and the tilted equilibrium lies beyond the top limit")
+# Example 10
+ex10 = {r: sp.Rational(8, 5), b: sp.Rational(5, 2), s: sp.Rational(3, 5)}
+d.quote("ex10-ratio", "Example 10", r"\left(\frac{2r}{b}\right)^2 = \frac{32^2}{25^2}",
+        reading=(K2.subs(ex10), sp.Rational(32 ** 2, 25 ** 2)))
+d.quote("ex10-product", "Example 10", r"8s(1-s) = 8 \cdot 0,6 \cdot 0,4 = \frac{48 \cdot 25}{25^2}",
+        reading=((8 * s * (1 - s)).subs(ex10), sp.Rational(48 * 25, 625)))
+d.quote("ex10-ratio-2", "Example 10",
+        r"\left(\frac{2r}{b}\right)^2 = \frac{16 \cdot 2 \cdot 32}{25^2} = \frac{16 \cdot 64}{25^2}",
+        reading=(K2.subs(ex10), sp.Rational(16 * 2 * 32, 625), sp.Rational(16 * 64, 625)))
+d.quote("ex10-product-2", "Example 10", r"8s \cdot (1-s) = \frac{16 \cdot 3 \cdot 25}{25^2} = \frac{16 \cdot 75}{25^2}",
+        reading=((8 * s * (1 - s)).subs(ex10), sp.Rational(16 * 3 * 25, 625), sp.Rational(16 * 75, 625)))
+d.quote("ex10-bound", "Example 10", r"\left(\frac{32}{25}\right)^2 \geq 2 \cdot 0,4 \cdot 2",
+        reading=(sp.Rational(32, 25) ** 2 - sp.Rational(8, 5), (K2 - 2 * (1 - s) * (5 * s - 1)).subs(ex10)))
+d.quote("ex10-decimal", "Example 10", r"\frac{32}{25} = 1,28", reading=(sp.Rational(32, 25), sp.Rational("1.28")))
+d.quote("ex10-root", "Example 10", r"\sqrt{1,6} = 1,26 \dots", reading=(sp.sqrt(sp.Rational(8, 5)), sp.Rational("1.265")),
+        tolerance=sp.Rational(1, 200), note="'1,26...': the value lies in [1.26, 1.27)")
+d.quote("ex10-tan2", "Example 10",
+        r"\operatorname{tg}^2 \varphi_1 = 16 \cdot \left(\frac{b}{2r}\right)^2 \cdot s(1-s) - 2 = \frac{16 \cdot 25^2}{16 \cdot 64} "
+        r"\cdot \frac{3}{5} \cdot \frac{2}{5} - 2 = \frac{75}{32} - 2 = \frac{11}{32}",
+        reading=((tanC_e ** 2).subs(ex10), (16 * Bc ** 2 * s * (1 - s) - 2).subs(ex10),
+                 sp.Rational(16 * 625, 16 * 64) * sp.Rational(3, 5) * sp.Rational(2, 5) - 2,
+                 sp.Rational(75, 32) - 2, sp.Rational(11, 32)))
+d.quote("ex10-tan", "Example 10", r"also  $\operatorname{tg} \varphi_1 = \sqrt{\frac{11}{32}}$",
+        reading=(tanC_e.subs(ex10), sp.sqrt(sp.Rational(11, 32))))
+phi10 = sp.atan(tanC_e.subs(ex10)) * 180 / pi
+DMS = lambda dg, mi, se: dg + sp.Rational(mi, 60) + sp.Rational(se, 3600)
+d.quote("ex10-angle", "Example 10", r"Die Ausführung der Rechnung ergibt angenähert  $\varphi_1 = 18^\circ 58' 13''$",
+        reading=(phi10, DMS(18, 58, 13)), tolerance=sp.Rational(1, 7200),
+        erratum=Erratum("calculation", "high", r"\varphi_1 = 30^\circ 22' 59''",
+                        "tg phi_1 = sqrt(11/32) = 0.58630 gives 30 deg 22' 59.4''. The printed 18 deg 58' 13'' is "
+                        "arctg(11/32) to the second (18 deg 58' 13.5''): the root was not taken. The limit "
+                        "tg phi_1 <= 2(1-s) b/(2r) = 0.625 still holds, so the position exists.",
+                        corrected_reading=(phi10, DMS(30, 22, 59))))
+d.quote("x-formula", "Example 10", r"x &= b_s + r \operatorname{tg} \varphi",
+        reading=sp.Eq(xC, b * s + r * tanC), note="'b_s' is the OCR of b s (the text says 'diese b s', the draught)")
+x10 = (b * s + r * tanC_e).subs(ex10)
+cons = "follows from the angle of ex10-angle: r tg phi_1 = 1.6 * 11/32 = 0.55 with the unrooted tangent"
+d.quote("ex10-x-sum", "Example 10", r"x &= 1,5 + 0,55", reading=(x10, sp.Rational("1.5") + sp.Rational("0.55")),
+        tolerance=sp.Rational(1, 200),
+        erratum=Erratum("consequential", "high", r"x = 1,5 + 0,94", cons + "; with tg phi_1 = sqrt(11/32) it is "
+                        "1.6 * 0.5863 = 0.938",
+                        corrected_reading=(x10, sp.Rational("1.5") + sp.Rational("0.94"))))
+d.quote("ex10-x", "Example 10", r"x &= 2,05", reading=(x10, sp.Rational("2.05")), tolerance=sp.Rational(1, 200),
+        erratum=Erratum("consequential", "high", r"x = 2,44", cons + "; x = 1.5 + 0.938 = 2.438 m",
+                        corrected_reading=(x10, sp.Rational("2.44"))))
+d.quote("ex10-fraction", "Example 10", r"$\frac{x}{b} = \frac{2,05}{2,50} = \frac{41}{50}$",
+        reading=(x10 / sp.Rational(5, 2), sp.Rational(41, 50)), tolerance=sp.Rational(1, 100),
+        erratum=Erratum("consequential", "high", r"\frac{x}{b} = \frac{2,44}{2,50} = \frac{49}{50} (0.9752)",
+                        cons + "; x/b = 2.438/2.5 = 0.9752", corrected_reading=(x10 / sp.Rational(5, 2), sp.Rational(49, 50))))
+d.quote("ex10-dry", "Example 10", r"der kürzeste über dem Wasser befindliche Teil  $\frac{9}{50}$",
+        reading=(1 - x10 / sp.Rational(5, 2), sp.Rational(9, 50)), tolerance=sp.Rational(1, 100),
+        erratum=Erratum("consequential", "high", r"\frac{1}{50} (0.0248)", cons + "; 1 - 0.9752 = 0.0248",
+                        corrected_reading=(1 - x10 / sp.Rational(5, 2), sp.Rational(1, 50))))
+d.quote("ex10-dry-cm", "Example 10", "der ganzen Höhe oder 45 cm",
+        reading=(250 * (1 - x10 / sp.Rational(5, 2)), 45), tolerance=sp.Rational(1, 2),
+        erratum=Erratum("consequential", "high", "6 cm (6.2 cm)", cons + "; 250 cm * 0.0248 = 6.2 cm",
+                        corrected_reading=(250 * (1 - x10 / sp.Rational(5, 2)), 6)))
+
+
+# =====================================================================================================
+# Witnesses: clipped polyhedra (symfloat.geometry.floating) and quadrature over the disc
+# =====================================================================================================
+def _n(v, dps):
+    return mpmath.mpf(sp.N(sp.sympify(v), dps + 10)) if dps > 15 else mpmath.mpf(float(sp.sympify(v)))
+
+
+def _geo_dps(dps):
+    return None if dps <= 15 else dps
+
+
+def _dot(p, q):
+    return sum(x * y for x, y in zip(p, q))
+
+
+def _root(f, lo, step):
+    """The first sign change of f above lo (scanned with the given step), refined by a bracketing solver."""
+    lo = mpmath.mpf(lo)
+    f_lo = f(lo)
+    hi = lo + step
+    while f(hi) * f_lo > 0:
+        lo, hi = hi, hi + step
+        if hi > 20:
+            raise ValueError("no sign change")
+    return mpmath.findroot(f, (lo, hi), solver="anderson")
+
+
+_CACHE = {}
+
+
+def _cached(key, fn):
+    if key not in _CACHE:
+        _CACHE[key] = fn()
+    return _CACHE[key]
+
+
+def triangle_prism(a_, b_, dps):
+    t = mpmath.sqrt(3)
+    pts = [(-a_ / 2, -a_ / (2 * t)), (a_ / 2, -a_ / (2 * t)), (mpmath.mpf(0), a_ / t)]
+    return right_prism(pts, b_, _geo_dps(dps))
+
+
+def triangle_tilt(a_, b_, s_, w_, phi, dps, flip=False):
+    """Clipped triangular prism (axis z, G at the origin) tilted by phi about the axis PQ at omega = w_;
+    the vertex B side n dips (flip: rises).  Returns the righting arm, the arm along the axis, the top
+    clearance (lowest top vertex above water) and the bottom clearance (highest bottom vertex above water)."""
+    poly = triangle_prism(a_, b_, dps)
+    sgn = -1 if flip else 1
+    n = (-sgn * mpmath.sin(w_), -sgn * mpmath.cos(w_), mpmath.mpf(0))
+    p = (-mpmath.cos(w_), mpmath.sin(w_), mpmath.mpf(0))
+    up = tuple(-mpmath.sin(phi) * n[k] + (mpmath.cos(phi) if k == 2 else 0) for k in range(3))
+    w = tuple(mpmath.cos(phi) * n[k] + (mpmath.sin(phi) if k == 2 else 0) for k in range(3))
+    st = floating_state(poly, up, s_)
+    BG = tuple(mpmath.mpf(st.B[k]) - mpmath.mpf(st.G[k]) for k in range(3))
+    top = [v for v in poly.vertices if v[2] > 0]
+    bot = [v for v in poly.vertices if v[2] < 0]
+    t = mpmath.mpf(st.t)
+    return (_dot(w, BG), _dot(p, BG), min(_dot(up, v) for v in top) - t, max(_dot(up, v) for v in bot) - t, st)
+
+
+def triangle_upright_gm(a_, b_, s_, dps):
+    st = floating_state(triangle_prism(a_, b_, dps), (0, 0, 1), s_)
+    return mpmath.mpf(st.metacentric_height), mpmath.mpf(st.volume)
+
+
+def triangle_equilibrium(a_, b_, s_, w_, dps):
+    """tan(phi_1): the first root of the measured righting arm."""
+    phi = _root(lambda f: triangle_tilt(a_, b_, s_, w_, f, dps)[0], mpmath.mpf("0.02"), mpmath.mpf("0.05"))
+    return mpmath.tan(phi)
+
+
+def triangle_contact(a_, b_, s_, w_, dps, which=2, flip=False):
+    """tan of the tilt at which the top (which=2) or bottom (3) base first meets the water."""
+    phi = _root(lambda f: triangle_tilt(a_, b_, s_, w_, f, dps, flip)[which], mpmath.mpf("0.02"), mpmath.mpf("0.05"))
+    return mpmath.tan(phi)
+
+
+def P(case, dps, *syms):
+    return [_n(case.params[k], dps) for k in syms]
+
+
+def tri_gm(case, dps):
+    return _cached(("gm", tuple(case.params.items()), dps), lambda: triangle_upright_gm(*P(case, dps, a, b, s), dps))
+
+
+def tri_eq(case, dps):
+    return _cached(("eq", tuple(case.params.items()), dps),
+                   lambda: triangle_equilibrium(*P(case, dps, a, b, s, om), dps))
+
+
+def cw(name, description, targets, cases, compute, methods=None):
+    kw = {} if methods is None else {"methods": methods}
+    d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=compute, **kw))
+
+
+# (56): an isosceles trapezoid (symmetric about the Y axis, not regular), moments exact
+def _trapezoid():
+    pts = [(-2, 0), (2, 0), (1, 3), (-1, 3)]
+    A = sp.Rational(0)
+    cy = sp.Rational(0)
+    for (x1, y1), (x2, y2) in zip(pts, pts[1:] + pts[:1]):
+        c = sp.Rational(x1 * y2 - x2 * y1)
+        A += c / 2
+        cy += (y1 + y2) * c / 6
+    cy /= A
+    pts = [(sp.Rational(px), sp.Rational(py) - cy) for px, py in pts]
+    Jxx = Jyy = sp.Rational(0)
+    for (x1, y1), (x2, y2) in zip(pts, pts[1:] + pts[:1]):
+        c = x1 * y2 - x2 * y1
+        Jxx += (x1 ** 2 + x1 * x2 + x2 ** 2) * c / 12
+        Jyy += (y1 ** 2 + y1 * y2 + y2 ** 2) * c / 12
+    return pts, Jyy, Jxx          # T_x = int y^2, T_y = int x^2
+
+
+TRAP, TRAP_TX, TRAP_TY = _trapezoid()
+
+
+def moment_about(points, angle, dps):
+    """int (x cos w + y sin w)^2 df: the polygon turned so that the axis normal becomes x, then the
+    central moment int x^2 of its clipped waterplane."""
+    c, sn = mpmath.cos(angle), mpmath.sin(angle)
+    pts = [(_n(px, dps) * c + _n(py, dps) * sn, -_n(px, dps) * sn + _n(py, dps) * c) for px, py in points]
+    wp = submerged(right_prism(pts, 1, _geo_dps(dps)), (0, 0, 1), 0).waterplane
+    return mpmath.mpf(wp.tensor[0][0])
+
+
+cw("trapezoid-moments", "moment of a symmetric trapezoid about axes through its centroid (clipped waterplane)",
+   ("56",), [Case({Tx: TRAP_TX, Ty: TRAP_TY, om: w_}, label=f"omega = {w_}") for w_ in (sp.Rational(2, 5), 1)],
+   lambda case, dps: moment_about(TRAP, _n(case.params[om], dps), dps))
+
+
+def _ngon_points(n, side, dps):
+    R = side / (2 * mpmath.sin(mpmath.pi / n))
+    return [(R * mpmath.cos(2 * mpmath.pi * k / n), R * mpmath.sin(2 * mpmath.pi * k / n)) for k in range(n)]
+
+
+cw("regular-polygon-moments", "moments of regular polygons about a turned axis (clipped waterplane)",
+   ("regular-polygon-theorem",), [Case({a: 1, om: sp.Rational(1, 3)}), Case({a: sp.Rational(3, 2), om: 1})],
+   lambda case, dps: tuple(moment_about(_ngon_points(n, _n(case.params[a], dps), dps), _n(case.params[om], dps), dps)
+                           for n in NGONS))
+
+up_cases = [Case({a: 1, b: 1, s: sp.Rational(1, 2)}, label="labile"), Case({a: 2, b: 1, s: sp.Rational(4, 5)}, label="stable"),
+            Case({a: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 4)})]
+cw("triangle-upright-57", "24 s/b times the metacentric height of the clipped upright prism", ("57", "65-I"), up_cases,
+   lambda case, dps: 24 * _n(case.params[s], dps) / _n(case.params[b], dps) * tri_gm(case, dps)[0])
+cw("triangle-upright-58", "2 s/b times the metacentric height of the clipped upright prism", ("58",), up_cases,
+   lambda case, dps: 2 * _n(case.params[s], dps) / _n(case.params[b], dps) * tri_gm(case, dps)[0])
+cw("triangle-upright-moment", "displacement times metacentric height (clipped upright prism)",
+   ("triangle-condition",), up_cases, lambda case, dps: tri_gm(case, dps)[0] * tri_gm(case, dps)[1])
+
+tilt_cases = [Case({a: sp.Rational(83, 50), b: 1, s: sp.Rational(11, 20), om: sp.Rational(1, 5)}, label="II, s > 1/2"),
+              Case({a: sp.Rational(33, 20), b: 1, s: sp.Rational(2, 5), om: sp.Rational(9, 10)}, label="II, s < 1/2")]
+cw("triangle-tilted-equilibrium", "tan of the tilt where the righting arm of the clipped prism vanishes",
+   ("60-tan", "ex3-tan"), tilt_cases, tri_eq)
+cw("triangle-tilted-equilibrium-squared", "the same, squared", ("65-tan",), tilt_cases, lambda c, p: tri_eq(c, p) ** 2)
+lim_cases = [Case({a: 1, b: 1, s: sp.Rational(3, 5), om: sp.Rational(3, 10)}),
+             Case({a: sp.Rational(3, 2), b: 2, s: sp.Rational(7, 10), om: 1})]
+
+
+def tri_top(case, dps):
+    return _cached(("top", tuple(case.params.items()), dps),
+                   lambda: triangle_contact(*P(case, dps, a, b, s, om), dps, which=2))
+
+
+cw("triangle-top-contact", "tan of the tilt at which the clipped prism's top base meets the water",
+   ("60-bound",), lim_cases, tri_top)
+cw("triangle-top-contact-distance", "b(1-s) over the measured contact tangent: the distance of the dipping vertex",
+   ("59",), lim_cases,
+   lambda case, dps: _n(case.params[b], dps) * (1 - _n(case.params[s], dps)) / tri_top(case, dps))
+cw("triangle-first-contact", "tan of the tilt at which either base of the clipped prism meets the water",
+   ("60-one-base",), [Case({}, label="a = b = 1, s = 3/5, omega = 0")],
+   lambda case, dps: min(triangle_contact(1, 1, mpmath.mpf(3) / 5, 0, dps, which=2),
+                         triangle_contact(1, 1, mpmath.mpf(3) / 5, 0, dps, which=3)))
+
+
+# ---- the cylinder: quadrature of the defining integrals over the disc (x = r sin(theta)) ---------------
+def _quad(f, dps):
+    return mpmath.quad(f, [-mpmath.pi / 2, mpmath.pi / 2])
+
+
+def cylinder_tilt(r_, b_, s_, phi, dps):
+    """Disc of radius r_, axis z from 0 to b_, water plane z = c + x tan(phi) (no base cut): the draught c
+    from the volume s F b, the centre of buoyancy by quadrature; returns (righting arm, c)."""
+    tn = mpmath.tan(phi)
+    width = lambda t: 2 * r_ ** 2 * mpmath.cos(t) ** 2          # chord width times dx/dtheta
+    A0 = _quad(width, dps)
+    A1 = _quad(lambda t: width(t) * r_ * mpmath.sin(t) * tn, dps)
+    c = (s_ * A0 * b_ - A1) / A0
+    V = s_ * A0 * b_
+    h = lambda t: c + r_ * mpmath.sin(t) * tn
+    xB = _quad(lambda t: width(t) * r_ * mpmath.sin(t) * h(t), dps) / V
+    zB = _quad(lambda t: width(t) * h(t) ** 2 / 2, dps) / V
+    return mpmath.cos(phi) * xB + mpmath.sin(phi) * (zB - b_ / 2), c
+
+
+def cylinder_gm(r_, b_, s_, dps):
+    width = lambda t: 2 * r_ ** 2 * mpmath.cos(t) ** 2
+    A0 = _quad(width, dps)
+    inertia = _quad(lambda t: width(t) * (r_ * mpmath.sin(t)) ** 2, dps)
+    return inertia / (s_ * A0 * b_) - (b_ / 2 - s_ * b_ / 2)
+
+
+def cylinder_equilibrium(r_, b_, s_, dps):
+    return _root(lambda f: cylinder_tilt(r_, b_, s_, f, dps)[0], mpmath.mpf("0.02"), mpmath.mpf("0.05"))
+
+
+cyl_cases = [Case({r: 1, b: 1, s: sp.Rational(1, 2)}), Case({r: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 5)}),
+             Case({r: sp.Rational(1, 2), b: 2, s: sp.Rational(9, 10)})]
+cw("cylinder-upright-69", "16 s/b times the metacentric height (disc inertia by quadrature)", ("69", "70"), cyl_cases,
+   lambda case, dps: 16 * _n(case.params[s], dps) / _n(case.params[b], dps) * cylinder_gm(*P(case, dps, r, b, s), dps))
+cw("cylinder-upright-72", "-16 s/b times the metacentric height (quadrature)", ("72",), cyl_cases,
+   lambda case, dps: -16 * _n(case.params[s], dps) / _n(case.params[b], dps) * cylinder_gm(*P(case, dps, r, b, s), dps))
+cw("cylinder-upright-gm", "metacentric height (quadrature)", ("cylinder-condition",), cyl_cases,
+   lambda case, dps: cylinder_gm(*P(case, dps, r, b, s), dps))
+cw("cylinder-polygon-gm", "metacentric height of inscribed 64/128-gon prisms, Richardson (cylinder_state), float64",
+   ("cylinder-condition",), cyl_cases,
+   lambda case, dps: mpmath.mpf(cylinder_state(*[float(case.params[k]) for k in (r, b)], (0, 0, 1), float(case.params[s]),
+                                               sides=64, phases=1).metacentric_height[0]),
+   methods=(Precision(15, 1e-4),))
+tiltc_cases = [Case({r: sp.Rational(8, 5), b: sp.Rational(5, 2), s: sp.Rational(3, 5)}, label="example 10"),
+               Case({r: sp.Rational(1, 2), b: 1, s: sp.Rational(3, 20)}, label="square section, s = 0.15")]
+cw("cylinder-tilted-equilibrium", "tan^2 of the tilt where the quadrature righting arm vanishes", ("72a-tan",),
+   tiltc_cases, lambda case, dps: mpmath.tan(cylinder_equilibrium(*P(case, dps, r, b, s), dps)) ** 2)
+
+# ---- worked examples: the printed numbers that are geometric quantities ------------------------------------
+one = [Case({}, label="the example's data")]
+
+
+def ex1_ratio_geo(dps):
+    return _root(lambda q_: triangle_upright_gm(q_, 1, mpmath.mpf(4) / 5, dps)[0], mpmath.mpf("1.2"), mpmath.mpf("0.05"))
+
+
+cw("example-1", "a/b at which the clipped upright prism (s = 0.8) has zero metacentric height", ("ex1-root", "ex1-value"),
+   one, lambda case, dps: _cached(("ex1", dps), lambda: ex1_ratio_geo(dps)))
+
+
+def ex2_roots(dps):
+    f = lambda s_: triangle_upright_gm(1, 1, s_, dps)[0]
+    return _root(f, mpmath.mpf("0.5"), mpmath.mpf("0.05")), _root(f, mpmath.mpf("0.01"), mpmath.mpf("0.02"))
+
+
+ex2 = lambda dps: _cached(("ex2", dps), lambda: ex2_roots(dps))
+cw("example-2-upper", "density of zero metacentric height, a = b (clipped prism), upper", ("ex2-upper",), one,
+   lambda c, dps: ex2(dps)[0])
+cw("example-2-lower", "the same, lower", ("ex2-lower",), one, lambda c, dps: ex2(dps)[1])
+cw("example-2-root", "2 s_+ - 1 from the measured density", ("ex2-root-value",), one, lambda c, dps: 2 * ex2(dps)[0] - 1)
+cw("example-2-radicand", "(2 s_+ - 1)^2 from the measured density", ("ex2-two-thirds",), one,
+   lambda c, dps: (2 * ex2(dps)[0] - 1) ** 2)
+
+
+def ex3_angle(dps):
+    q_ = mpmath.sqrt(_n(Q60_3, dps))
+    return mpmath.degrees(mpmath.atan(triangle_equilibrium(q_, 1, mpmath.mpf(2) / 3, mpmath.pi / 3, dps)))
+
+
+cw("example-3-angle", "equilibrium tilt of the clipped prism at s = 2/3, a/b = sqrt(5/2), degrees", ("ex3-angle",), one,
+   lambda c, dps: ex3_angle(dps))
+
+
+def ex4_check(dps):
+    """At s = 7/11, a/b = 12 sqrt2/11, omega = 15 deg: the measured equilibrium tangent and the tangent at which the
+    top vertex meets the water (both tan 30 deg for the example's answer)."""
+    q_ = 12 * mpmath.sqrt(2) / 11
+    s_ = mpmath.mpf(7) / 11
+    return triangle_equilibrium(q_, 1, s_, mpmath.pi / 12, dps), triangle_contact(q_, 1, s_, mpmath.pi / 12, dps)
+
+
+cw("example-4", "clipped prism at the example's answer: equilibrium and contact tangents (omega = 15 deg)", ("67",),
+   [Case({a: 12 * sp.sqrt(2) / 11, b: 1, s: sp.Rational(7, 11)})], lambda c, dps: ex4_check(dps))
+cw("example-5", "2r/b at which the upright cylinder (s = 1/2) has zero metacentric height (quadrature)", ("ex5", "sqrt2"),
+   one, lambda c, dps: 2 * _root(lambda r_: cylinder_gm(r_, 1, mpmath.mpf(1) / 2, dps), mpmath.mpf("0.5"), mpmath.mpf("0.05")))
+
+
+def ex6_roots(dps):
+    f = lambda s_: cylinder_gm(mpmath.mpf(1) / 2, 1, s_, dps)
+    return _root(f, mpmath.mpf("0.5"), mpmath.mpf("0.05")), _root(f, mpmath.mpf("0.01"), mpmath.mpf("0.02"))
+
+
+ex6 = lambda dps: _cached(("ex6", dps), lambda: ex6_roots(dps))
+for nm, tg, fn in (("example-6-root", "ex6-root-value", lambda dps: 2 * ex6(dps)[0] - 1),
+                   ("example-6-sum", "ex6-sum", lambda dps: 2 * ex6(dps)[0]),
+                   ("example-6-difference", "ex6-difference", lambda dps: 2 * ex6(dps)[1]),
+                   ("example-6-upper", "ex6-upper", lambda dps: ex6(dps)[0]),
+                   ("example-6-lower", "ex6-lower", lambda dps: ex6(dps)[1]),
+                   ("example-7-lower", "ex7-lower", lambda dps: ex6(dps)[1]),
+                   ("example-7-range-lower", "ex7-range-lower", lambda dps: ex6(dps)[1])):
+    cw(nm, "density of zero metacentric height of the upright cylinder with 2r = b (quadrature)", (tg,), one,
+       (lambda fn_: lambda c, dps: fn_(dps))(fn))
+
+
+def ex7_bottom(dps):
+    """Density (2r = b = 1, s < 1/2) at which the bottom rim reaches the water in the tilted equilibrium."""
+    def gap(s_):
+        phi = cylinder_equilibrium(mpmath.mpf(1) / 2, 1, s_, dps)
+        c = cylinder_tilt(mpmath.mpf(1) / 2, 1, s_, phi, dps)[1]
+        return c - mpmath.mpf(1) / 2 * mpmath.tan(phi)          # water height over the rising rim
+    return mpmath.findroot(gap, (mpmath.mpf("0.148"), mpmath.mpf("0.165")), solver="anderson")
+
+
+ex7 = lambda dps: _cached(("ex7", dps), lambda: ex7_bottom(dps))
+cw("example-7-minus", "density at which the tilted cylinder's bottom rim meets the water (quadrature)",
+   ("ex7-minus", "ex7-range-upper"), one, lambda c, dps: ex7(dps))
+cw("example-7-root", "0.4 minus that density", ("ex7-root",), one, lambda c, dps: mpmath.mpf(2) / 5 - ex7(dps))
+
+
+def ex10(dps):
+    r_, b_, s_ = mpmath.mpf(8) / 5, mpmath.mpf(5) / 2, mpmath.mpf(3) / 5
+    phi = cylinder_equilibrium(r_, b_, s_, dps)
+    c = cylinder_tilt(r_, b_, s_, phi, dps)[1]
+    return mpmath.degrees(phi), c + r_ * mpmath.tan(phi)
+
+
+ex10c = lambda dps: _cached(("ex10", dps), lambda: ex10(dps))
+cw("example-10-angle", "equilibrium tilt of the cylinder by quadrature, degrees", ("ex10-angle",), one,
+   lambda c, dps: ex10c(dps)[0])
+cw("example-10-x", "water height on the dipping generator (quadrature)", ("ex10-x-sum", "ex10-x"), one,
+   lambda c, dps: ex10c(dps)[1])
+cw("example-10-fraction", "the same over b", ("ex10-fraction",), one, lambda c, dps: ex10c(dps)[1] / mpmath.mpf("2.5"))
+cw("example-10-dry", "the part above water, over b", ("ex10-dry",), one, lambda c, dps: 1 - ex10c(dps)[1] / mpmath.mpf("2.5"))
+cw("example-10-dry-cm", "the part above water in cm", ("ex10-dry-cm",), one,
+   lambda c, dps: 100 * (mpmath.mpf("2.5") - ex10c(dps)[1]))
+
+
+def ex_III_delta(dps):
+    """At s = 11/20, (a/b)^2 = 11/5 (region III): the righting arm of the clipped prism at the first contact of
+    a base, for the axis omega_x (where both contacts coincide)."""
+    q_, s_ = mpmath.sqrt(mpmath.mpf(11) / 5), mpmath.mpf(11) / 20
+    w_ = mpmath.atan((2 - 3 * s_) / (mpmath.sqrt(3) * s_))
+    top = triangle_contact(q_, 1, s_, w_, dps, which=2)
+    bottom = triangle_contact(q_, 1, s_, w_, dps, which=3)
+    return triangle_tilt(q_, 1, s_, w_, mpmath.atan(min(top, bottom)), dps)[0]
+
+
+cw("region-III-counterexample", "righting arm at the first base contact, clipped prism", ("65-III-claim",),
+   one, lambda c, dps: ex_III_delta(dps))

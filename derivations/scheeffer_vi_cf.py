@@ -1,0 +1,1060 @@
+"""Scheeffer 1902, VI.C-F: the square prism, the cube, the regular n-gon prism and their comparison.
+
+A right prism (base F_1, height b, density s) floats upright with its axis vertical; tilted by phi
+about a horizontal axis through the centroid O of the upright waterplane, the plane through O keeps
+the displacement as long as neither base face is cut (Scheeffer's first rotation domain).  The
+submerged part is then the union of vertical columns over the base from the bottom face up to the
+plane z = xi tan(phi) (xi: distance of a base point from the axis), so its volume and moments are
+integrals over the base.  From them: the centre of buoyancy, the righting arm GZ (= d/dphi of the
+potential u.(G - B)), the upright metacentric height (Duhamel), the oblique equilibrium
+tan^2 phi_1 = F_1 b^2 s(1-s)/T_1 - 2, its stability, and the tilt at which a corner of a base face
+reaches the water (the limit of the first domain).  For the square all base integrals are done in
+SymPy for an axis at any angle omega to a side; the cube is a = b.  For the n-gon the moment of the
+base is built from its n isosceles triangles as in the text and compared with the clipped geometry.
+
+Witnesses (``symfloat.geometry.floating``): the prisms are clipped by the water plane at the
+draught found from the submerged volume; moments of the waterplane, the metacentric height and the
+centres B, G come from the clipped polyhedron.  Equilibrium tilts are roots of GZ = h.(B - G) (the
+derivative of the clipped potential, checked against a difference quotient in the tests); the tilt
+at which a base face reaches the water is the root of the lowest top-face (highest bottom-face)
+vertex height above the clipped water plane; density thresholds are roots in s of these
+quantities (nested root-finding).  Nothing there uses a formula of the text.
+
+Conventions: body frame with the prism axis z, base corners (+-a/2, +-a/2); the tilt axis has
+direction (cos w, sin w, 0), w (Scheeffer's omega) measured from a side, 0 < w < 45 deg; the up
+vector is u = (sin phi sin w, -sin phi cos w, cos phi) and xi = -x sin w + y cos w, so the points
+with large xi sink.  Angles are read in radians (45 deg = pi/4).
+"""
+import functools
+import math
+
+import mpmath
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, Computed
+from symfloat.geometry.floating import box, floating_state, right_prism
+
+a, b, s, F = sp.symbols("a b s F", positive=True)
+phi, om, psi = sp.symbols("varphi omega psi", positive=True)
+x, y, z, X, Y, t_, al_, be_ = sp.symbols("x y z X Y t alpha_t beta_t", real=True)
+n, r = sp.symbols("n r", positive=True)
+half = sp.Rational(1, 2)
+pi = sp.pi
+
+# quantities established by steps (result symbols)
+F1, T1, P1, V1, Vt, e1 = sp.symbols("F_1 T_1 P_1 V_1 V_t e_1")
+Mxi, Meta, Mz, GZ, Ez, GM = sp.symbols("M_xi M_eta M_z GZ E GM")
+tan2, tan1, um, OB, tanlim, Sw = sp.symbols("tan^2varphi_1 tanvarphi_1 u_m OB tanvarphi_lim S_omega")
+GMc, shi, slo, s80hi, s80lo, sedhi, sedlo = sp.symbols("GM_c s_+ s_- s_80+ s_80- s_e+ s_e-")
+Ah, Jtri, Dlt, AII = sp.symbols("A_h J_T Delta A_II")
+Fg, Tg, tan2g = sp.symbols("F_g T_g tan^2varphi_g")
+h_, A_, Tx, Ty, TL, aE, alph, Sc, T1n, F1n, umn, rE = sp.symbols(
+    "h A T_x T_y T_L a_E alpha Sigma_c T_1n F_1n u_mn r_E")
+T1F, tan2F = sp.symbols("T_1F tan^2varphi_F")
+
+DERIVATION = d = Derivation(
+    id="scheeffer-vi-cf",
+    source="scheeffer",
+    title="The square prism, the cube, the regular n-gon prism and their comparison",
+    locator="VI.C-F",
+    summary="Upright stability (a/b)^2 > 6s(1-s), the oblique position tan^2 phi_1 = 12 (b/a)^2 s(1-s) - 2 and "
+            "its limits for the square prism; the cube's density ranges; the moment of inertia of the regular "
+            "n-gon F_1 r^2 (2 + cos 2pi/n)/12 and its decrease with n at equal area.",
+    domain={a: (0.5, 2), b: (0.5, 2), s: (0.05, 0.95), phi: (0.05, 1.2), om: (0.01, 0.78), psi: (0.01, 1.5),
+            n: (3, 12), r: (0.5, 2), F: (0.5, 3), x: (-1, 1), y: (-1, 1), t_: (0, 1), X: (-1, 2),
+            al_: (0.1, 3), Fg: (0.5, 3), Tg: (0.1, 2)},
+    constraints=(),
+    assumptions=("a: base edge (square prism; the cube has a = b), b: height (side edge), 0 < s < 1: density "
+                 "relative to the water, the body homogeneous",
+                 "first rotation domain: the water plane cuts no base face (the text's standing assumption)",
+                 "omega: angle of the horizontal tilt axis with a side of the base, 0 < omega < 45 deg "
+                 "(other directions follow by the symmetry of the square)",
+                 "n-gon: circumradius r, n >= 3 sides; n is sampled as a real number in the identities that hold "
+                 "for real n (the cosine sums are checked for n = 3..12)",
+                 "sign identities: a printed condition L > R is read as L - R = (positive factor) x (the "
+                 "quantity whose sign decides: a metacentric height, or tan^2 of the limiting tilt minus "
+                 "tan^2 of the equilibrium tilt); the factor is stated in each note"),
+)
+
+# ==== C. the square prism ===========================================================================
+xi = -x * sp.sin(om) + y * sp.cos(om)
+eta = x * sp.cos(om) + y * sp.sin(om)
+SQ = ((x, -a / 2, a / 2), (y, -a / 2, a / 2))
+
+
+def over_square(f):
+    return sp.Integral(f, *SQ)
+
+
+d.step("square-area", (F1, over_square(1), a ** 2), "integration", result=F1)
+d.step("square-inertia", (T1, over_square(xi ** 2), a ** 4 / 12), "integration", result=T1,
+       note="moment of the base about the tilt axis through O at the angle omega to a side: the same for "
+            "every omega")
+d.step("square-first-moment", (over_square(xi), 0), "integration", note="O is the centroid of the base")
+d.step("square-product-moment", (P1, over_square(xi * eta), 0), "integration", result=P1,
+       note="condition (31)/(46): the product moment vanishes for every omega, so the oblique position is "
+            "independent of the direction of the axis")
+d.step("tilted-volume-def", sp.Eq(Vt, over_square(b * s + xi * sp.tan(phi))), "definition", result=Vt,
+       note="first domain: the submerged part is the set of columns over the base from the bottom face (b s below "
+            "O) up to the plane z = xi tan(phi) through O")
+d.step("upright-volume", sp.Eq(V1, F1 * b * s), "definition", result=V1)
+d.step("tilted-volume", (Vt, a ** 2 * b * s, V1), "integration", uses=("tilted-volume-def", "square-area"),
+       note="the plane through O keeps the displacement at every tilt of the first domain")
+d.step("e1", (e1, b / 2 - sp.Integral(z, (z, 0, b * s)) / (b * s), b * (1 - s) / 2), "integration", result=e1,
+       note="G lies b/2 above the bottom, the upright centre of buoyancy b s/2")
+d.step("moment-xi", (Mxi, over_square(xi * (b * s + xi * sp.tan(phi))), T1 * sp.tan(phi)), "integration",
+       uses=("square-inertia", "square-first-moment"), result=Mxi)
+d.step("moment-eta", (Meta, over_square(eta * (b * s + xi * sp.tan(phi))), P1 * sp.tan(phi), 0), "integration",
+       uses=("square-product-moment",), result=Meta)
+d.step("moment-z", (Mz, over_square(sp.Integral(z, (z, -b * s, xi * sp.tan(phi)))),
+                    T1 * sp.tan(phi) ** 2 / 2 - F1 * b ** 2 * s ** 2 / 2), "integration", result=Mz,
+       note="moments of the submerged part about the planes through O (body frame xi, eta, z)")
+B = sp.Matrix([Mxi, Meta, Mz]) / V1
+G = sp.Matrix([0, 0, b / 2 - b * s])
+u_up = sp.Matrix([-sp.sin(phi), 0, sp.cos(phi)])
+h_dir = sp.Matrix([sp.cos(phi), 0, sp.sin(phi)])
+d.step("righting-arm", sp.Eq(GZ, h_dir.dot(B - G)), "definition", result=GZ,
+       note="horizontal distance of B from G across the tilt axis (u = (-sin phi, 0, cos phi) is up, "
+            "h = (cos phi, 0, sin phi) horizontal)")
+d.step("righting-arm-value", (GZ, sp.sin(phi) / V1 * (T1 * (1 + sp.tan(phi) ** 2 / 2) - V1 * e1)), "algebra",
+       uses=("righting-arm", "moment-xi", "moment-z", "e1"), note="Scheeffer's (12)")
+d.step("second-component", ((sp.Matrix([0, 1, 0])).dot(B - G), 0), "algebra", uses=("moment-eta",),
+       note="the centre of buoyancy stays in the vertical plane through G across the axis: (31) holds")
+d.step("potential", sp.Eq(Ez, u_up.dot(G - B)), "definition", result=Ez,
+       note="height of G above B: the potential energy over the weight, up to a constant")
+d.step("potential-derivative", (sp.Derivative(Ez, phi), GZ), "integration", uses=("potential", "righting-arm"),
+       note="dE/dphi = GZ: equilibria are the stationary points of the potential")
+d.step("potential-independent-of-omega", (sp.Derivative(Ez, om), 0), "integration", uses=("potential",),
+       note="rotation about the main axis changes nothing in the first domain (Scheeffer's law (52a))")
+d.step("upright-metacentric-height", (GM, sp.Limit(GZ / phi, phi, 0), T1 / V1 - e1,
+                                      a ** 2 / (12 * b * s) - b * (1 - s) / 2), "limit",
+       uses=("righting-arm-value",), result=GM, note="Duhamel's condition (18): stable upright iff GM > 0")
+d.step("oblique-equilibrium", sp.Eq(tan2, 2 * (V1 * e1 / T1 - 1)), "definition", result=tan2,
+       note="the non-zero root of GZ: T_1 (1 + tan^2 phi/2) = V_1 e_1 (Scheeffer's (27))")
+d.step("oblique-equilibrium-check", (T1 * (1 + tan2 / 2) - V1 * e1, 0), "algebra", uses=("oblique-equilibrium",))
+d.step("oblique-equilibrium-square", (tan2, F1 * b ** 2 * s * (1 - s) / T1 - 2, 12 * (b / a) ** 2 * s * (1 - s) - 2),
+       "algebra", uses=("oblique-equilibrium", "e1", "square-inertia"), note="(54) for the square")
+d.step("oblique-tan", sp.Eq(tan1, sp.sqrt(tan2)), "definition", result=tan1, note="0 < phi_1 < 90 deg")
+d.step("oblique-stable-in-phi", (sp.diff(sp.sin(phi) / V1 * (T1 * (1 + sp.tan(phi) ** 2 / 2) - V1 * e1), phi)
+                                 .subs(sp.tan(phi), tan1).subs(phi, sp.atan(tan1)),
+                                 T1 * tan2 / (V1 * sp.cos(sp.atan(tan1)))), "algebra",
+       uses=("righting-arm-value", "oblique-equilibrium"),
+       note="E'' = GZ' = T_1 tan^2 phi_1/(V_1 cos phi_1) > 0 at phi_1: stable against tilting; with the "
+            "omega-independence the position is stable, neutral about the main axis ((43), (51))")
+corners = [(sx * a / 2, sy * a / 2) for sx in (-1, 1) for sy in (-1, 1)]
+d.step("corner-distance", (OB, sp.sqrt((a / 2) ** 2 + (a / 2) ** 2), sp.sqrt(2) * a / 2), "geometry", result=OB)
+d.step("largest-ordinate", (um, sp.Max(*[xi.subs({x: cx, y: cy}) for cx, cy in corners]),
+                            a / 2 * (sp.sin(om) + sp.cos(om)), OB * sp.sin(pi / 4 + om)), "geometry", result=um,
+       note="u_m: the largest distance xi of a corner from the axis (the corner (-a/2, a/2) for 0 < omega < 45 deg); "
+            "the smallest is -u_m (central symmetry)")
+d.step("limit-tilt", sp.Eq(tanlim, sp.Min(b * (1 - s), b * s) / um), "definition", result=tanlim,
+       note="the top corner at xi = u_m, z = b(1-s) above O has height b(1-s) cos phi - u_m sin phi over the "
+            "water, the bottom corner at xi = -u_m, z = -b s has u_m sin phi - b s cos phi: the first domain "
+            "ends at the smaller of b(1-s)/u_m, b s/u_m (the text's (53), (53a), (55))")
+d.step("limit-tilt-top", ((b * (1 - s) * sp.cos(phi) - um * sp.sin(phi)).subs(phi, sp.atan(b * (1 - s) / um)), 0),
+       "geometry", uses=("largest-ordinate",))
+d.step("limit-omega", sp.Eq(Sw, 2 * (sp.Min(b * (1 - s), b * s) / tan1) ** 2 / a ** 2), "definition", result=Sw,
+       note="S_omega = sin^2(45 deg + omega*), omega* the axis direction at which the limit tilt equals phi_1: "
+            "u_m(omega*) = min(b(1-s), b s)/tan phi_1 and sin(45 deg + omega*) = sqrt(2) u_m/a")
+d.step("limit-omega-value", (Sw, 2 * b ** 2 * sp.Min(s, 1 - s) ** 2 / (a ** 2 * tan2)), "algebra",
+       uses=("limit-omega", "oblique-tan"))
+
+tl45, tl0 = sp.symbols("tanvarphi_lim45 tanvarphi_lim0")
+d.step("limit-tilt-45", (tl45, sp.Subs(tanlim, om, pi / 4), sp.sqrt(2) * sp.Min(b * (1 - s), b * s) / a), "substitution",
+       uses=("limit-tilt", "largest-ordinate"), result=tl45, note="axis along a diagonal: the smallest limit tilt")
+d.step("limit-tilt-0", (tl0, sp.Subs(tanlim, om, 0), 2 * sp.Min(b * (1 - s), b * s) / a), "substitution",
+       uses=("limit-tilt", "largest-ordinate"), result=tl0, note="axis parallel to a side: the largest limit tilt")
+PW = lambda hi, lo: sp.Piecewise((hi, s > half), (lo, True))  # noqa: E731  (the text's two cases)
+
+d.quote("square-moments", "VI.C",
+        r"ist das Trägheitsmoment  $T_1 = \frac{1}{12} \cdot a^4$  und der Inhalt  $F_1 = a^2$",
+        reading=(sp.Matrix([T1, F1]), sp.Matrix([a ** 4 / 12, a ** 2])))
+d.quote("OB", "VI.C", r"$\text{OB} = \frac{a}{2} \sqrt{2}$", reading=(OB, a / 2 * sp.sqrt(2)))
+d.quote("u-m", "(74)", r"$$u_m = \frac{a}{2} \sqrt{2} \cdot \sin(45^\circ + \omega) \quad (74)$$",
+        reading=(um, a / 2 * sp.sqrt(2) * sp.sin(pi / 4 + om)))
+d.quote("V1", "VI.C", r"$V_1 = F_1 b \cdot s = a^2 b s$", reading=(V1, F1 * b * s, a ** 2 * b * s))
+d.quote("T1-over-V1", "VI.C",
+        r"$\frac{T_1}{V_1} = \frac{\frac{1}{12} a^4}{a^2 b s} = \frac{a^2}{12 b s}$",
+        reading=(T1 / V1, (a ** 4 / 12) / (a ** 2 * b * s), a ** 2 / (12 * b * s)))
+d.quote("e1", "VI.C", r"$e_1 = \frac{b}{2} (1 - s)$", reading=(e1, b / 2 * (1 - s)))
+d.quote("upright-condition", "VI.C", r"$\frac{a^2}{12 b s} - \frac{b}{2} (1 - s) > 0$",
+        reading=(a ** 2 / (12 * b * s) - b / 2 * (1 - s), GM),
+        note="the left side is the upright metacentric height")
+d.quote("75", "(75)", r"oder  $\left(\frac{a}{b}\right)^2 > 6 s (1 - s)^*$  (75)",
+        reading=((a / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GM),
+        note="sign identity, factor 12 s/b > 0; the asterisk is the footnote mark (Schülen)")
+d.quote("75-unstable", "VI.C",
+        r"Ist aber  $\left(\frac{a}{b}\right)^2 < 6 s (1 - s)$ , so ist die aufrechte Lage labil",
+        reading=(6 * s * (1 - s) - (a / b) ** 2, -12 * s / b * GM))
+d.quote("Fb2-over-T1", "VI.C",
+        r"$\frac{F_1 b^2 s (1 - s)}{T_1} = \frac{12 a^2 b^2 s (1 - s)}{a^4} = 12 \left(\frac{b}{a}\right)^2 s (1 - s)$",
+        reading=(F1 * b ** 2 * s * (1 - s) / T1, 12 * a ** 2 * b ** 2 * s * (1 - s) / a ** 4,
+                 12 * (b / a) ** 2 * s * (1 - s)))
+d.quote("limit-top", "VI.C",
+        r"$\frac{b (1 - s)}{u_m} = \frac{b}{a} \cdot \frac{(1 - s) \sqrt{2}}{\sin(45^\circ + \omega)}$",
+        reading=(b * (1 - s) / um, b / a * (1 - s) * sp.sqrt(2) / sp.sin(pi / 4 + om)))
+d.quote("76", "(76)",
+        r"$$\begin{aligned} \text{tg}^2 \varphi_1 &= 12 \left(\frac{b}{a}\right)^2 s (1 - s) - 2 \\ \text{tg} "
+        r"\varphi_1 &\leq \begin{cases} \frac{b}{a} \cdot \frac{(1 - s) \sqrt{2}}{\sin(45^\circ + \omega)} & "
+        r"\text{für } s > \frac{1}{2} \\ \frac{b}{a} \cdot \frac{s \sqrt{2}}{\sin(45^\circ + \omega)} & \text{für } "
+        r"s < \frac{1}{2} \end{cases} \end{aligned} \quad (76)$$",
+        reading=(sp.Matrix([tan2, tanlim]),
+                 sp.Matrix([12 * (b / a) ** 2 * s * (1 - s) - 2,
+                            PW(b / a * (1 - s) * sp.sqrt(2) / sp.sin(pi / 4 + om),
+                               b / a * s * sp.sqrt(2) / sp.sin(pi / 4 + om))])),
+        note="the second line read as its bound: the tilt at which a base face reaches the water; the direction "
+             "of the inequality is checked in (77)")
+d.quote("sin-90", "VI.C", r"Für letzteren wird aber  $\sin(45^\circ + \omega) = 1$",
+        reading=(sp.sin(pi / 4 + pi / 4), 1),
+        note="u_m is largest, the limit tilt smallest, at omega = 45 deg (the axis along a diagonal)")
+d.quote("76-at-45", "VI.C",
+        r"$$\begin{aligned} \text{tg}^2 \varphi_1 &= 12 \left(\frac{b}{a}\right)^2 s (1 - s) - 2 \\ \text{tg} "
+        r"\varphi_1 &\leq \begin{cases} \frac{b}{a} \cdot (1 - s) \sqrt{2} & \text{für } s > \frac{1}{2} \\ "
+        r"\frac{b}{a} s \cdot \sqrt{2} & \text{für } s < \frac{1}{2} \end{cases} \end{aligned}$$",
+        reading=(sp.Matrix([tan2, tl45]), sp.Matrix([12 * (b / a) ** 2 * s * (1 - s) - 2,
+                                                     PW(b / a * (1 - s) * sp.sqrt(2), b / a * s * sp.sqrt(2))])))
+d.quote("76-squared", "VI.C",
+        r"$$12 \left(\frac{b}{a}\right)^2 s (1 - s) - 2 \leq \begin{cases} 2 \left(\frac{b}{a}\right)^2 (1 - s)^2 & "
+        r"\text{wenn } s > \frac{1}{2} \\ 2 \left(\frac{b}{a}\right)^2 s^2 & \text{wenn } s < \frac{1}{2} "
+        r"\end{cases}$$",
+        reading=(PW(2 * (b / a) ** 2 * (1 - s) ** 2, 2 * (b / a) ** 2 * s ** 2)
+                 - (12 * (b / a) ** 2 * s * (1 - s) - 2), tl45 ** 2 - tan2),
+        note="sign identity: right minus left side = tan^2 phi_lim(45 deg) - tan^2 phi_1")
+Q77_sign = (a / b) ** 2 / 2 * (tl45 ** 2 - tan2)
+d.quote("77", "(77)",
+        r"$$\left(\frac{a}{b}\right)^2 \geq \begin{cases} (1 - s)(7s - 1) & \text{wenn } s > \frac{1}{2} \\ "
+        r"s(6 - 7s) & \text{wenn } s < \frac{1}{2} \end{cases} \quad (77)$$",
+        reading=((a / b) ** 2 - PW((1 - s) * (7 * s - 1), s * (6 - 7 * s)), Q77_sign),
+        note="sign identity, factor (a/b)^2/2: (77) holds iff phi_1 does not exceed the limit tilt at 45 deg")
+d.quote("78", "(78)", r"$$\left(\frac{a}{b}\right)^2 > 6s(1 - s) \quad (78)$$",
+        reading=((a / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GM))
+d.quote("78a", "(78a)",
+        r"$$6s(1 - s) > \left(\frac{a}{b}\right)^2 \geq \begin{cases} (1 - s)(7s - 1) & \text{für } s > \frac{1}{2} "
+        r"\\ s(6 - 7s) & \text{für } s < \frac{1}{2} \end{cases} \quad (78a)$$",
+        reading=(sp.Matrix([6 * s * (1 - s) - (a / b) ** 2, (a / b) ** 2 - PW((1 - s) * (7 * s - 1), s * (6 - 7 * s))]),
+                 sp.Matrix([-12 * s / b * GM, Q77_sign])),
+        note="both inequalities as sign identities: unstable upright, and phi_1 within the first domain for every "
+             "omega; the stated conclusions (oblique position stable for every axis direction, stability kept "
+             "under rotation about the main axis) follow from oblique-stable-in-phi and "
+             "potential-independent-of-omega, and are tested on the clipped geometry in the tests")
+d.quote("78b", "(78b)",
+        r"$$\operatorname{tg} \varphi_1 = \sqrt{12 \cdot \left(\frac{b}{a}\right)^2 s (1 - s) - 2} \quad (78b)$$",
+        reading=(tan1, sp.sqrt(12 * (b / a) ** 2 * s * (1 - s) - 2)))
+d.quote("78c", "(78c)",
+        r"$$\text{Ist jedoch } \left(\frac{a}{b}\right)^2 < \begin{cases} (1 - s)(7s - 1) & \text{für } s < "
+        r"\frac{1}{2} \\ s(6 - 7s) & \text{für } s > \frac{1}{2} \end{cases} \quad (78c)$$",
+        reading=(sp.Piecewise((s * (6 - 7 * s), s > half), ((1 - s) * (7 * s - 1), True)) - (a / b) ** 2, -Q77_sign),
+        erratum=Erratum(
+            "misprint", "medium",
+            r"\left(\frac{a}{b}\right)^2 < \begin{cases} (1 - s)(7s - 1) & \text{für } s > \frac{1}{2} \\ "
+            r"s(6 - 7s) & \text{für } s < \frac{1}{2} \end{cases}",
+            "(78c) is meant as the negation of the right half of (78a) (the text goes on: the prism can be turned "
+            "about its main axis only until a base face is cut), so its bounds must be those of (77)/(78a), "
+            "(1-s)(7s-1) for s > 1/2 and s(6-7s) for s < 1/2; the print attaches them to the opposite cases. "
+            "With the swap the condition is wrong, e.g. for s = 0.3 it gives the bound 0.77 instead of 1.17. "
+            "Both case labels are exchanged consistently, which a scan does not do; a misprint of the original "
+            "is the likelier cause (the scan cannot be excluded: medium).",
+            corrected_reading=(PW((1 - s) * (7 * s - 1), s * (6 - 7 * s)) - (a / b) ** 2, -Q77_sign)))
+d.quote("78d", "(78d)",
+        r"$$\sin^2 (45^\circ + \omega) \leq \begin{cases} \frac{(1 - s)^2}{6s(1 - s) - \left(\frac{a}{b}\right)^2} & "
+        r"\text{für } s > \frac{1}{2} \\ \frac{s^2}{6s(1 - s) - \left(\frac{a}{b}\right)^2} & \text{für } s < "
+        r"\frac{1}{2} \end{cases} \quad (78d)$$",
+        reading=(Sw, PW((1 - s) ** 2 / (6 * s * (1 - s) - (a / b) ** 2), s ** 2 / (6 * s * (1 - s) - (a / b) ** 2))),
+        note="read as the bound: S_omega = sin^2(45 deg + omega*) at the limiting axis direction omega*; the limit "
+             "tilt decreases as omega grows, so the condition holds for omega <= omega*")
+d.quote("78e", "(78e)",
+        r"$$\left(\frac{a}{b}\right)^2 < \left\{ \begin{array}{ll} 2(1-s)(4s-1) & \text{für } s > \frac{1}{2} \\ "
+        r"2s(3-4s) & \text{für } s < \frac{1}{2} \end{array} \right\} \quad (78e)$$",
+        reading=(PW(2 * (1 - s) * (4 * s - 1), 2 * s * (3 - 4 * s)) - (a / b) ** 2, (a / b) ** 2 / 2 * (tan2 - tl0 ** 2)),
+        note="sign identity, factor (a/b)^2/2: (78e) holds iff phi_1 exceeds the limit tilt already at omega = 0 "
+             "(sin^2 45 deg = 1/2), the least restrictive direction; then the first domain holds no oblique "
+             "equilibrium for any axis (the text's conclusion)")
+
+# ==== D. the cube ====================================================================================
+d.step("cube-metacentric-height", (GMc, sp.Subs(GM, a, b), b * (1 - 6 * s * (1 - s)) / (12 * s)), "substitution",
+       uses=("upright-metacentric-height",), result=GMc)
+rp, rm = half + sp.sqrt(sp.Rational(1, 12)), half - sp.sqrt(sp.Rational(1, 12))
+Qc, tan2c, Swc = sp.symbols("Q_c tan^2varphi_c S_omegac")
+d.step("cube-oblique-margin", (Qc, sp.Subs((a / b) ** 2 / 2 * (tl45 ** 2 - tan2), a, b),
+                               (2 * sp.Min(s, 1 - s) ** 2 - 12 * s * (1 - s) + 2) / 2), "substitution",
+       uses=("limit-tilt-45", "oblique-equilibrium-square"), result=Qc,
+       note="(tan^2 phi_lim(45 deg) - tan^2 phi_1)/2 for a = b")
+d.step("cube-oblique-tilt", (tan2c, sp.Subs(tan2, a, b), 12 * s * (1 - s) - 2), "substitution",
+       uses=("oblique-equilibrium-square",), result=tan2c)
+d.step("cube-limit-omega", (Swc, sp.Subs(Sw, a, b), 2 * sp.Min(s, 1 - s) ** 2 / (12 * s * (1 - s) - 2)), "substitution",
+       uses=("limit-omega-value",), result=Swc)
+d.step("cube-upright-roots", (sp.Matrix([1 - 6 * rp * (1 - rp), 1 - 6 * rm * (1 - rm)]), sp.zeros(2, 1)), "algebra",
+       note="the two roots of 6 s (1-s) = 1, one on each side of 1/2")
+d.step("cube-upright-threshold-upper", sp.Eq(shi, rp), "definition", result=shi, uses=("cube-upright-roots",))
+d.step("cube-upright-threshold-lower", sp.Eq(slo, rm), "definition", result=slo, uses=("cube-upright-roots",))
+r8p, r8m = (4 + sp.sqrt(2)) / 7, (3 - sp.sqrt(2)) / 7
+d.step("cube-oblique-roots", (sp.Matrix([1 - (1 - r8p) * (7 * r8p - 1), 1 - r8m * (6 - 7 * r8m)]), sp.zeros(2, 1)),
+       "algebra", note="(4 + sqrt 2)/7 > 1/2 is the root of 1 = (1-s)(7s-1) on the branch s > 1/2, "
+                       "(3 - sqrt 2)/7 < 1/2 that of 1 = s(6-7s) on s < 1/2 (the other roots lie on the wrong side)")
+d.step("cube-oblique-threshold-upper", sp.Eq(s80hi, r8p), "definition", result=s80hi, uses=("cube-oblique-roots",))
+d.step("cube-oblique-threshold-lower", sp.Eq(s80lo, r8m), "definition", result=s80lo, uses=("cube-oblique-roots",))
+d.step("cube-edge-axis-factor", (sp.Matrix([2 * (1 - s) ** 2 - (6 * s * (1 - s) - 1), 2 * s ** 2 - (6 * s * (1 - s) - 1)]),
+                                 sp.Matrix([1 - 2 * (1 - s) * (4 * s - 1), 1 - 2 * s * (3 - 4 * s)]),
+                                 sp.Matrix([(2 * s - 1) * (4 * s - 3), (2 * s - 1) * (4 * s - 1)])), "algebra",
+       note="(82) at omega = 0 (sin^2 45 deg = 1/2) holds iff these are >= 0 (denominator 6s(1-s) - 1 > 0 in the "
+            "unstable range): for s > 1/2 iff s >= 3/4, for s < 1/2 iff s <= 1/4 (and at s = 1/2)")
+d.step("cube-edge-threshold-upper", sp.Eq(sedhi, sp.Rational(3, 4)), "definition", result=sedhi,
+       uses=("cube-edge-axis-factor",), note="least s > 1/2 with an oblique equilibrium of the first domain")
+d.step("cube-edge-threshold-lower", sp.Eq(sedlo, sp.Rational(1, 4)), "definition", result=sedlo,
+       uses=("cube-edge-axis-factor",), note="greatest s < 1/2 with an oblique equilibrium of the first domain")
+# s = 1/2: the cube turned about its main axis at phi = 45 deg (exact clipped columns)
+cdel = (sp.sin(om) + sp.cos(om) - 1) / 2
+col = lambda c, w: (-w * (c + a / 2) + (c ** 2 - a ** 2 / 4) / 2) / sp.sqrt(2)  # noqa: E731
+d.step("half-cube-column-top", (col(a / 2, X) - col(X, X), (X - a / 2) ** 2 / (2 * sp.sqrt(2))), "algebra",
+       note="s = 1/2, phi = 45 deg, edge a: the column over a base point with xi = X > a/2 is capped at the top face; "
+            "its contribution to int u.p over the submerged part changes by this amount (central symmetry: the "
+            "plane stays through the centre, the cap at the bottom, xi < -a/2, is the mirror image)")
+d.step("half-cube-corner-triangle", (Jtri, sp.Integral(sp.Integral(
+    (a * cdel * (1 - al_ - be_)) ** 2 * (a * cdel / sp.sin(om)) * (a * cdel / sp.cos(om)), (be_, 0, 1 - al_)), (al_, 0, 1)),
+    a ** 4 * cdel ** 4 / (12 * sp.sin(om) * sp.cos(om))), "integration", result=Jtri,
+       note="J = int (xi - a/2)^2 over the corner triangle where xi > a/2: legs a d/sin(omega), a d/cos(omega) along "
+            "the two edges from the corner (-a/2, a/2), xi - a/2 = a d (1 - alpha - beta), d = (sin w + cos w - 1)/2")
+d.step("half-cube-potential-change", (Dlt, -(2 / a ** 3) * 2 * Jtri / (2 * sp.sqrt(2)),
+                                      -sp.sqrt(2) * a * cdel ** 4 / (12 * sp.sin(om) * sp.cos(om))), "algebra",
+       uses=("half-cube-column-top", "half-cube-corner-triangle"), result=Dlt,
+       note="Delta(omega) = E(45 deg, omega) - E(45 deg, 0) = -(1/V) x (both caps), V = a^3/2: negative for "
+            "every 0 < omega < 90 deg; to lowest order -sqrt(2) a omega^3/192")
+d.step("half-cube-order", (sp.Limit(Dlt / om ** 3, om, 0, "+"), -sp.sqrt(2) * a / 192), "limit",
+       uses=("half-cube-potential-change",))
+d.step("waterplane-area", (AII, over_square(sp.sqrt(1 + sp.tan(phi) ** 2)), F1 / sp.cos(phi)), "integration",
+       result=AII, note="area of the plane z = xi tan(phi) over the base: element sqrt(1 + tan^2 phi) dx dy")
+
+cube = {a: b}
+d.quote("cube-78", "VI.D", r"$$1 > 6s(1-s)$$", reading=(1 - 6 * s * (1 - s), 12 * s / b * GMc))
+d.quote("cube-78-square", "VI.D", r"$$\left(s - \frac{1}{2}\right)^2 > \frac{1}{12}$$",
+        reading=((s - half) ** 2 - sp.Rational(1, 12), 2 * s / b * GMc))
+d.quote("79", "(79)", r"s > \frac{1}{2} + \sqrt{\frac{1}{12}} \text{ d. h. } s > 0,7887 \\ \text{oder} \\ s < "
+                      r"\frac{1}{2} - \sqrt{\frac{1}{12}} \text{ d. h. } s < 0,2113",
+        reading=(sp.Matrix([shi, slo]), sp.Matrix([half + sp.sqrt(sp.Rational(1, 12)), half - sp.sqrt(sp.Rational(1, 12))])))
+d.quote("79-upper-number", "(79)", r"s > \frac{1}{2} + \sqrt{\frac{1}{12}} \text{ d. h. } s > 0,7887",
+        reading=(shi, sp.Rational("0.7887")), tolerance=sp.Rational(1, 20000))
+d.quote("79-lower-number", "(79)", r"s < \frac{1}{2} - \sqrt{\frac{1}{12}} \text{ d. h. } s < 0,2113",
+        reading=(slo, sp.Rational("0.2113")), tolerance=sp.Rational(1, 20000))
+d.quote("cube-78a", "VI.D",
+        r"$$\left\{ \begin{array}{l} s > \frac{1}{2} \text{ und } 1 \geq (1-s)(7s-1) \\ s < \frac{1}{2} \text{ und } "
+        r"1 \geq s(6-7s) \end{array} \right.$$",
+        reading=(1 - PW((1 - s) * (7 * s - 1), s * (6 - 7 * s)), Qc),
+        note="(78a) with a = b; sign identity as in (77)")
+d.quote("cube-78a-square", "VI.D",
+        r"$$\left\{ \begin{array}{l} s > \frac{1}{2} \text{ und } \left(s - \frac{4}{7}\right)^2 > \frac{2}{49} \\ s "
+        r"< \frac{1}{2} \text{ und } \left(s - \frac{3}{7}\right)^2 > \frac{2}{49} \end{array} \right.$$",
+        reading=(PW((s - sp.Rational(4, 7)) ** 2, (s - sp.Rational(3, 7)) ** 2) - sp.Rational(2, 49),
+                 Qc / 7),
+        note="'>' where the line before has '>=': the boundary case is dropped, harmless")
+d.quote("80", "(80)", r"s > \frac{1}{2} \text{ und } s > \frac{1}{7}(4 + \sqrt{2}) \text{ d. i. } > 0,7735 \\ s < "
+                      r"\frac{1}{2} \text{ und } s < \frac{1}{7}(3 - \sqrt{2}^1) \text{ d. i. } < 0,2265",
+        reading=(sp.Matrix([s80hi, s80lo]), sp.Matrix([(4 + sp.sqrt(2)) / 7, (3 - sp.sqrt(2) ** 1) / 7])),
+        note="'sqrt{2}^1': a stray mark of the scan; read literally it is sqrt(2) anyway")
+d.quote("80-upper-number", "(80)", r"s > \frac{1}{7}(4 + \sqrt{2}) \text{ d. i. } > 0,7735",
+        reading=(s80hi, sp.Rational("0.7735")), tolerance=sp.Rational(1, 20000))
+d.quote("80-lower-number", "(80)", r"s < \frac{1}{7}(3 - \sqrt{2}^1) \text{ d. i. } < 0,2265",
+        reading=(s80lo, sp.Rational("0.2265")), tolerance=sp.Rational(1, 20000))
+d.quote("80-roots", "VI.D",
+        r"ist die erste dieser Bedingungen nur erfüllbar für  $s > \frac{4}{7}$  und die zweite nur für  "
+        r"$s < \frac{3}{7}$",
+        reading=(sp.Matrix([s80hi - sp.Rational(4, 7), sp.Rational(3, 7) - s80lo]), sp.Matrix([sp.sqrt(2) / 7] * 2)),
+        note="the admissible root lies sqrt(2)/7 above 4/7 (below 3/7); the other root contradicts s > 1/2 (s < 1/2)")
+d.quote("81-upper", "(81)",
+        r"Ein Würfel schwimmt in aufrechter Lage stabil, wenn sein spec. Gewicht  $s > 0,7887$",
+        reading=(shi, sp.Rational("0.7887")), tolerance=sp.Rational(1, 20000))
+d.quote("81-lower", "(81)", r"$s > 0,7887$  oder  $s < 0,2113$  ist.",
+        reading=(slo, sp.Rational("0.2113")), tolerance=sp.Rational(1, 20000))
+d.quote("81-oblique-upper", "VI.D", "zwischen 0,7735 und 0,7887",
+        reading=(s80hi, sp.Rational("0.7735")), tolerance=sp.Rational(1, 20000),
+        note="the range of the claim 'aufrecht labil, ... durch Drehung um eine beliebige horizontale Achse in eine "
+             "schiefe stabile Lage, in der weder seine obere noch seine untere Fläche ... durchschnitten wird': (78a) "
+             "with a = b, whose conclusions are derived and tested on the clipped cube")
+d.quote("81-oblique-lower", "VI.D", "oder zwischen 0,2113 und 0,2265,",
+        reading=(s80lo, sp.Rational("0.2265")), tolerance=sp.Rational(1, 20000))
+d.quote("81a", "(81a)", r"$$\operatorname{tg}^2 \varphi_1 = 2 \cdot \left\{ b s (1 - s) - 1 \right\} \quad (81 a)$$",
+        reading=(tan2c, 2 * (b * s * (1 - s) - 1)),
+        erratum=Erratum(
+            "transcription", "high", r"\operatorname{tg}^2 \varphi_1 = 2 \cdot \left\{ 6 s (1 - s) - 1 \right\}",
+            "(78b) with a = b gives tan^2 phi_1 = 12 s(1-s) - 2 = 2{6 s(1-s) - 1}. The printed 'b' makes the "
+            "formula depend on a length, which a cube's angle cannot; 'b' for '6' is a typical confusion of "
+            "the scan, and the same 'b s (1 - s) - 1' recurs in (82), where 6s(1-s) - 1 is again required.",
+            corrected_reading=(tan2c, 2 * (6 * s * (1 - s) - 1))))
+d.quote("edge-axis-range", "VI.D",
+        "zwischen 0,2265 und 0,7735,  \n so gelangt er ebenfalls aus der labilen aufrechten Lage in eine schiefe "
+        "stabile (die auch aus Gleichung 81 zu bestimmen ist), wenn die Drehungsachse entweder mit einer Grundkante "
+        "parallel ist oder mit ihr einen Winkel  $\\omega$  bildet, dessen Grenze der Bedingung (s. 78 d)",
+        reading=(sp.Matrix([sedhi, sedlo]), sp.Matrix([half, half])),
+        note="read as: the densities on each side of 1/2 at which the oblique position of the first domain exists "
+             "for an axis parallel to an edge reach up to s = 1/2 from both sides (the claimed range is one "
+             "interval through 1/2)",
+        erratum=Erratum(
+            "claim", "high",
+            "only for 3/4 < s < 0.7735 and 0.2265 < s < 1/4 (at s = 3/4, 1/4 and 1/2 the edge-parallel position "
+            "touches a face: an equilibrium but not stable, see the s = 1/2 claim; on the clipped unit cube at "
+            "s = 3/4 turning by 0.1 about the main axis lowers the potential by 6.4e-7); for 1/4 < s < 3/4, s != 1/2, "
+            "the first domain holds no oblique equilibrium for any axis direction",
+            "(82) at omega = 0 (sin^2 45 deg = 1/2) needs 2(1-s)^2 >= 6s(1-s) - 1, i.e. (2s-1)(4s-3) >= 0 for s > 1/2 "
+            "and (2s-1)(4s-1) >= 0 for s < 1/2: only s >= 3/4 or s <= 1/4. Counterexample s = 0.6: the bound of (82) "
+            "is 0.16/0.44 = 0.364 < 1/2 = sin^2(45 deg + omega) for omega = 0, so no axis works; on the clipped "
+            "cube the root of GZ at 43.2 deg lies beyond the tilt 38.7 deg at which the top face reaches the water for "
+            "an edge-parallel axis (GZ there is -0.0104 for the unit cube). Scheeffer's own case s = 1/2 (omega = 0 only) is the isolated root s = 1/2.",
+            corrected_reading=(sp.Matrix([sedhi, sedlo]), sp.Matrix([sp.Rational(3, 4), sp.Rational(1, 4)]))))
+d.quote("82", "(82)",
+        r"$$\sin^2 (45^\circ + \omega) \leq \begin{cases} \frac{(1 - s)^2}{b s (1 - s) - 1} & \text{für } s > "
+        r"\frac{1}{2} \\ \frac{s^2}{b s (1 - s) - 1} & \text{für } s < \frac{1}{2} \end{cases} \quad (82)$$",
+        reading=(Swc, PW((1 - s) ** 2 / (b * s * (1 - s) - 1), s ** 2 / (b * s * (1 - s) - 1))),
+        erratum=Erratum(
+            "transcription", "high",
+            r"\sin^2 (45^\circ + \omega) \leq \begin{cases} \frac{(1 - s)^2}{6 s (1 - s) - 1} & \text{für } s > "
+            r"\frac{1}{2} \\ \frac{s^2}{6 s (1 - s) - 1} & \text{für } s < \frac{1}{2} \end{cases}",
+            "(78d) with a/b = 1 has the denominator 6s(1-s) - 1; the text's own evaluation at s = 1/2, "
+            "sin^2 = 1/2, follows only with 6 (with the letter b it would depend on the cube's size). The same "
+            "'6' read as 'b' as in (81a).",
+            corrected_reading=(Swc, PW((1 - s) ** 2 / (6 * s * (1 - s) - 1),
+                                                     s ** 2 / (6 * s * (1 - s) - 1)))))
+d.quote("82-half", "VI.D", r"$$\sin^2 (45^\circ + \omega) = \frac{1}{2}$$",
+        reading=(sp.Subs(Sw, (a, s), (b, half)), half))
+d.quote("82-half-omega", "VI.D", r"$$\text{woraus } \sin (45^\circ + \omega) = \frac{1}{2} \sqrt{2}$$",
+        reading=(sp.sqrt(sp.Subs(Sw, (a, s), (b, half))), sp.sqrt(2) / 2, sp.sin(pi / 4 + 0)),
+        note="hence omega = 0")
+d.quote("half-stable", "VI.D",
+        r"D. h. ein Würfel vom spec. Gew.  $\frac{1}{2}$  kann aus der aufrechten labilen Lage nur durch Drehung um "
+        r"eine horizontale Achse, die einer Kante parallel ist, in eine schiefe stabile Lage gelangen.",
+        reading=(Dlt, sp.Abs(Dlt)),
+        note="read as: the potential does not decrease when the cube (s = 1/2, phi = 45 deg) is turned about its "
+             "main axis by omega (Delta(omega) >= 0), the only direction in which the second-order test is "
+             "neutral ((51)); every other direction is stable by oblique-stable-in-phi",
+        erratum=Erratum(
+            "claim", "high",
+            "The 45-deg position of the cube with s = 1/2 (axis parallel to an edge, waterplane the diagonal "
+            "rectangle) is an equilibrium but not stable: turning the cube about its main axis by omega lowers "
+            "the potential by sqrt(2) a d^4/(12 sin w cos w), d = (sin w + cos w - 1)/2 (about sqrt(2) a "
+            "omega^3/192), because the corners of the top and bottom faces then dip through the water plane. "
+            "The equilibrium tilt phi_1 = 45 deg and omega = 0 are right.",
+            "At s = 1/2 the allowed range of omega shrinks to the single value 0 (82), so the neutral rotation about "
+            "the main axis of the first domain immediately leaves it: the columns over the two corner triangles "
+            "with |xi| > a/2 are capped by the faces, and with the plane still through the centre the potential "
+            "changes by Delta = -sqrt(2) J/a^3 x 2 < 0 (steps half-cube-*). On the clipped unit cube: "
+            "Delta(0.1) = -6.0e-6, Delta(0.3) = -1.03e-4 (potential in units of the edge), agreeing with the closed "
+            "form; the metacentric height of that position is exactly 0. Counterexample to 'stabil': any omega "
+            "!= 0.",
+            corrected_reading=(Dlt, -sp.Abs(Dlt))))
+d.quote("half-tilt", "VI.D", r"$\varphi_1 = 45^\circ$",
+        reading=(sp.atan(sp.sqrt(sp.Subs(tan2, (a, s), (b, half)))), pi / 4))
+d.quote("half-waterplane", "VI.D",
+        "der Wasserschnitt fällt also mit einem rechteckigen Diagonalschnitt des Würfels zusammen",
+        reading=(sp.Subs(AII, (a, phi), (b, pi / 4)), b * sp.sqrt(2) * b),
+        note="the waterplane of area F_1/cos 45 deg = a * a sqrt(2) through the centre: the rectangle through two "
+             "opposite edges")
+
+# ==== E. the regular n-gon prism ======================================================================
+d.step("central-angle", sp.Eq(alph, 2 * pi / n), "definition", result=alph, note="the angle AOB = BOC = ...")
+d.step("side", sp.Eq(aE, 2 * r * sp.sin(pi / n)), "definition", result=aE,
+       note="the side a is the chord of the central angle 2 pi/n in the circumcircle of radius r")
+d.step("apothem", sp.Eq(h_, r * sp.cos(pi / n)), "definition", result=h_,
+       note="the height OQ of the triangle BOC from the centre to the midpoint of its side")
+d.step("apothem-from-side", (h_, aE / 2 * sp.cot(pi / n)), "algebra", uses=("side", "apothem"))
+
+
+def over_triangle(f):
+    """The isosceles triangle BOC: apex O at the origin, height h along X (the axis OQ), base a at X = h."""
+    return sp.Integral(sp.Integral(f, (Y, -aE * X / (2 * h_), aE * X / (2 * h_))), (X, 0, h_))
+
+
+d.step("triangle-area", (A_, over_triangle(1), aE * h_ / 2), "integration", result=A_)
+d.step("triangle-Tx", (Tx, over_triangle(Y ** 2), A_ * aE ** 2 / 24), "integration", result=Tx,
+       note="about the symmetry axis OQ")
+d.step("triangle-Ty", (Ty, over_triangle(X ** 2), A_ * h_ ** 2 / 2), "integration", result=Ty,
+       note="about the axis OR through the apex O perpendicular to OQ")
+d.step("triangle-product", (over_triangle(X * Y), 0), "integration", note="OQ is a symmetry axis")
+d.step("triangle-TL", (TL, over_triangle((-X * sp.sin(psi) + Y * sp.cos(psi)) ** 2),
+                       Ty * sp.sin(psi) ** 2 + Tx * sp.cos(psi) ** 2), "integration", result=TL,
+       uses=("triangle-Tx", "triangle-Ty", "triangle-product"),
+       note="about the axis L through O at the angle psi (the text's phi) to OQ")
+k_ = sp.Symbol("k", integer=True, positive=True)
+d.step("cosine-sums", (sp.Matrix([sp.Sum(sp.cos(2 * k_ * al_), (k_, 1, m)).doit()
+                                  - sp.sin(m * al_) * sp.cos((m + 1) * al_) / sp.sin(al_) for m in range(3, 7)]),
+                       sp.zeros(4, 1)), "series",
+       note="Lagrange's sum cos 2x + cos 4x + ... + cos 2mx = sin(mx) cos((m+1)x)/sin x, checked for m = 3..6 at "
+            "any x (alpha_t)")
+d.step("cosine-sum", sp.Eq(Sc, sp.sin(n * alph) * sp.cos((n + 1) * alph) / sp.sin(alph)), "definition", result=Sc,
+       uses=("cosine-sums",), note="Sigma_c = cos 2 alpha + cos 4 alpha + ... + cos 2 n alpha (n terms)")
+d.step("cosine-sum-zero", (Sc, 0), "algebra", uses=("cosine-sum", "central-angle"), note="sin(n alpha) = sin 2 pi = 0")
+d.step("polygon-moment-def", sp.Eq(T1n, n / 2 * (Tx + Ty) + (Tx - Ty) / 2 * Sc), "definition", result=T1n,
+       uses=("triangle-TL",),
+       note="sum of T_L over the n triangles, the k-th turned by psi = k alpha against the symmetry axis MN")
+d.step("polygon-moment", (T1n, n / 2 * (Tx + Ty), n * A_ / 4 * (aE ** 2 / 12 + h_ ** 2)), "algebra",
+       uses=("polygon-moment-def", "cosine-sum-zero", "triangle-Tx", "triangle-Ty"))
+d.step("polygon-perpendicular", (sp.Matrix([n / 2 * (Tx + Ty) + (Tx - Ty) / 2 * sum(
+    sp.cos(pi + 2 * j * 2 * pi / m) for j in range(1, m + 1)) for m in range(3, 9)]),
+    n / 2 * (Tx + Ty) * sp.ones(6, 1)), "algebra",
+       note="the same moment about the axis perpendicular to MN (psi = 90 deg + k alpha): cos(pi + p alpha) = "
+            "-cos(p alpha), the sum vanishes as well (shown for n = 3..8)")
+d.step("polygon-area", (F1n, n * A_, n * r ** 2 / 2 * sp.sin(2 * pi / n)), "algebra", result=F1n,
+       uses=("triangle-area", "side", "apothem"))
+d.step("largest-ordinate-n", sp.Eq(umn, r * sp.cos(pi / n - om)), "definition", result=umn,
+       note="omega from the direction of a side: the vertex B at the end of that side, on the sinking half, lies at "
+            "the angle 90 deg - pi/n + omega from the axis; for 0 <= omega <= 2 pi/n it is the farthest vertex "
+            "there (checked on the clipped polygons)")
+
+d.quote("triangle-axis", "VI.E", r"$$T = T_y \cdot \sin^2 \varphi + T_x \cdot \cos^2 \varphi$$",
+        reading=(TL, Ty * sp.sin(psi) ** 2 + Tx * sp.cos(psi) ** 2), note="the text's phi is psi here")
+d.quote("83", "(83)", r"$$T = \frac{1}{2} (T_x + T_y) + \frac{1}{2} (T_x - T_y) \cos 2 \varphi. \quad (83)$$",
+        reading=(TL, (Tx + Ty) / 2 + (Tx - Ty) / 2 * sp.cos(2 * psi)), note="the text's phi is psi here")
+d.quote("84", "(84)",
+        r"$$T_1 = \frac{n}{2} (T_x + T_y) + \frac{1}{2} (T_x - T_y) \left( \cos 2 \alpha + \cos 4 \alpha + \dots "
+        r"\right) \quad (84)$$", reading=(T1n, n / 2 * (Tx + Ty) + (Tx - Ty) / 2 * Sc))
+d.quote("85", "(85)",
+        r"$$T_1 = \frac{n}{2} (T_x + T_y) + \frac{1}{2} (T_x - T_y) \left\{ \cos (\pi + 2 \alpha) + \cos (\pi + 4 "
+        r"\alpha) + \dots \right\} \quad (85)$$", reading=(T1n, n / 2 * (Tx + Ty) + (Tx - Ty) / 2 * (-Sc)),
+        note="cos(pi + p alpha) = -cos(p alpha): the braces hold -Sigma_c")
+d.quote("86", "(86)",
+        r"$$2 T_1 = n (T_x + T_y) \quad \text{oder} \quad T_1 = \frac{n}{2} (T_x + T_y) \quad (86)$$",
+        reading=(sp.Matrix([2 * T1n, T1n]), sp.Matrix([n * (Tx + Ty), n / 2 * (Tx + Ty)])))
+d.quote("triangle-moments", "VI.E", r"$$T_x = A \cdot \frac{a^2}{24}, \quad T_y = A \cdot \frac{h^2}{2}$$",
+        reading=(sp.Matrix([Tx, Ty]), sp.Matrix([A_ * aE ** 2 / 24, A_ * h_ ** 2 / 2])))
+d.quote("86-nA", "VI.E", r"$$T_1 = \frac{n A}{4} \left( \frac{a^2}{12} + h^2 \right)$$",
+        reading=(T1n, n * A_ / 4 * (aE ** 2 / 12 + h_ ** 2)))
+d.quote("apothem", "VI.E", r"$h = \frac{a}{2} \omega \operatorname{tg} \left( \frac{\pi}{n} \right)$",
+        reading=(h_, aE / 2 * om * sp.tan(pi / n)),
+        erratum=Erratum("transcription", "high", r"h = \frac{a}{2} \operatorname{cotg} \left( \frac{\pi}{n} \right)",
+                        "The apothem of the regular n-gon of side a is (a/2) cot(pi/n) (half the side over the tangent "
+                        "of half the central angle). 'cotg' read as 'omega tg' is a known confusion of the scan; "
+                        "omega (the axis angle) has no place here.",
+                        corrected_reading=(h_, aE / 2 * sp.cot(pi / n))))
+d.quote("86a", "(86a)",
+        r"$$T_1 = \frac{F_1 a^2}{16} \left\{ \frac{1}{3} + \omega \operatorname{tg}^2 \left( \frac{\pi}{n} \right) "
+        r"\right\} \quad (86a)$$",
+        reading=(T1n, F1n * aE ** 2 / 16 * (sp.Rational(1, 3) + om * sp.tan(pi / n) ** 2)),
+        erratum=Erratum("transcription", "high",
+                        r"T_1 = \frac{F_1 a^2}{16} \left\{ \frac{1}{3} + \operatorname{cotg}^2 \left( \frac{\pi}{n} "
+                        r"\right) \right\}",
+                        "With h = (a/2) cot(pi/n), n A (a^2/12 + h^2)/4 = F_1 a^2 (1/3 + cot^2(pi/n))/16; the "
+                        "examples that follow use cot^2 60 deg = 1/3 and cot^2 45 deg = 1, and (87) follows only "
+                        "with cot. The same 'cotg' -> 'omega tg' of the scan as in h.",
+                        corrected_reading=(T1n, F1n * aE ** 2 / 16 * (sp.Rational(1, 3) + sp.cot(pi / n) ** 2))))
+d.quote("side", "VI.E", r"$$a = 2 r \cdot \sin \left( \frac{\pi}{n} \right)$$", reading=(aE, 2 * r * sp.sin(pi / n)))
+d.quote("87", "(87)",
+        r"$$T_1 = \frac{1}{12} \cdot F_1 r^2 \left\{ 1 + 2 \cos^2 \left( \frac{\pi}{n} \right) \right\} \quad (87)$$",
+        reading=(T1n, F1n * r ** 2 / 12 * (1 + 2 * sp.cos(pi / n) ** 2)))
+d.quote("87-cos2", "(87)",
+        r"$$\text{oder} \quad T_1 = \frac{1}{12} \cdot F_1 r^2 \left\{ 2 + \cos \left( \frac{2 \pi}{n} \right) \right\}$$",
+        reading=(T1n, F1n * r ** 2 / 12 * (2 + sp.cos(2 * pi / n))))
+d.quote("triangle-data", "VI.E",
+        r"$$n = 3, F_1 = \frac{a^2}{4} \sqrt{3}, \quad \frac{\pi}{n} = 60^\circ, \quad \omega \operatorname{tg}^2 "
+        r"\left( \frac{\pi}{n} \right) = \frac{1}{3}$$",
+        reading=(sp.Matrix([sp.Subs(F1n, n, 3), sp.Subs(om * sp.tan(pi / n) ** 2, n, 3)]),
+                 sp.Matrix([sp.Subs(aE ** 2 / 4 * sp.sqrt(3), n, 3), sp.Rational(1, 3)])),
+        note="pi/3 = 60 deg needs no check",
+        erratum=Erratum("transcription", "high",
+                        r"\operatorname{cotg}^2 \left( \frac{\pi}{n} \right) = \frac{1}{3}",
+                        "cot^2 60 deg = 1/3, whereas tan^2 60 deg = 3; 'cotg' read as 'omega tg' as in (86a).",
+                        corrected_reading=(sp.Matrix([sp.Subs(F1n, n, 3), sp.Subs(sp.cot(pi / n) ** 2, n, 3)]),
+                                           sp.Matrix([sp.Subs(aE ** 2 / 4 * sp.sqrt(3), n, 3), sp.Rational(1, 3)]))))
+d.quote("triangle-T1", "VI.E",
+        r"$$T_1 = F_1 \cdot \frac{a^2}{24} = \frac{a^4}{96} \cdot \sqrt{3} = \frac{F_1^2}{6 \sqrt{3}}$$",
+        reading=tuple(sp.Subs(e_, n, 3) for e_ in (T1n, F1n * aE ** 2 / 24, aE ** 4 / 96 * sp.sqrt(3),
+                                                   F1n ** 2 / (6 * sp.sqrt(3)))),
+        note="'aus 86' means (86a)")
+d.quote("square-data", "VI.E",
+        r"$n = 4, F_1 = a^2, \frac{\pi}{n} = 45^\circ, \omega \operatorname{tg}^2 \left( \frac{\pi}{n} \right) = 1$",
+        reading=(sp.Matrix([sp.Subs(F1n, n, 4), sp.Subs(om * sp.tan(pi / n) ** 2, n, 4)]),
+                 sp.Matrix([sp.Subs(aE ** 2, n, 4), 1])),
+        erratum=Erratum("transcription", "high", r"\operatorname{cotg}^2 \left( \frac{\pi}{n} \right) = 1",
+                        "cot^2 45 deg = 1; as printed the value would depend on the axis angle omega. 'cotg' read "
+                        "as 'omega tg' as in (86a).",
+                        corrected_reading=(sp.Matrix([sp.Subs(F1n, n, 4), sp.Subs(sp.cot(pi / n) ** 2, n, 4)]),
+                                           sp.Matrix([sp.Subs(aE ** 2, n, 4), 1]))))
+d.quote("square-T1", "VI.E", r"$$T_1 = \frac{F_1 a^2}{12} = \frac{a^4}{12} = \frac{F_1^2}{12}$$",
+        reading=tuple(sp.Subs(e_, n, 4) for e_ in (T1n, F1n * aE ** 2 / 12, aE ** 4 / 12, F1n ** 2 / 12)))
+d.quote("circle-data", "VI.E",
+        r"$$F_1 = \pi r^2, \quad n = \infty, \quad \frac{2 \pi}{n} \rightarrow 0, \quad \cos \frac{2 \pi}{n} = 1$$",
+        reading=(sp.Matrix([sp.Limit(F1n, n, sp.oo), sp.Limit(alph, n, sp.oo), sp.Limit(sp.cos(alph), n, sp.oo)]),
+                 sp.Matrix([pi * r ** 2, 0, 1])))
+d.quote("circle-T1", "VI.E",
+        r"$$T_1 = \frac{1}{12} \cdot \pi r^4 \cdot 3 = \frac{\pi r^4}{4} = \frac{F_1^2}{4 \pi}$$",
+        reading=(sp.Limit(T1n, n, sp.oo), pi * r ** 4 * 3 / 12, pi * r ** 4 / 4, (pi * r ** 2) ** 2 / (4 * pi)),
+        note="the limit n -> infinity at fixed r; it agrees with T_1 = pi r^4/4 of section B")
+d.quote("88", "(88)", r"$$u_m = r \cdot \sin \left( \frac{n-2}{2n} \cdot \pi + \omega \right) \quad (88)$$",
+        reading=(umn, r * sp.sin((n - 2) / (2 * n) * pi + om)))
+
+# ==== F. comparison at equal base area =================================================================
+npos = sp.Integral(2 * sp.sin(t_) * (t_ - sp.sin(t_)), (t_, 0, 2 * pi / n))
+d.step("area-radius", (r ** 2, 2 * F1n / (n * sp.sin(2 * pi / n))), "algebra", uses=("polygon-area",))
+d.step("moment-at-area", (T1F, (F * r ** 2 / 12 * (2 + sp.cos(2 * pi / n))).subs(r ** 2, 2 * F / (n * sp.sin(2 * pi / n))),
+                          F ** 2 / (12 * pi) * (2 * pi / n) / sp.sin(2 * pi / n) * (2 + sp.cos(2 * pi / n))),
+       "algebra", result=T1F, uses=("area-radius",),
+       note="T_1 of the regular n-gon of area F (87 with r^2 from the area)")
+d.step("moment-derivative", (sp.Derivative(T1F, n), -F ** 2 / (12 * pi) * 2 * pi / n ** 2 * npos / sp.sin(2 * pi / n) ** 2),
+       "integration", uses=("moment-at-area",),
+       note="d/dalpha [alpha (2 + cos alpha)/sin alpha] = N(alpha)/sin^2 alpha with N(alpha) = 2 sin alpha + "
+            "sin(2 alpha)/2 - alpha(1 + 2 cos alpha) = int_0^alpha 2 sin t (t - sin t) dt > 0 for 0 < alpha <= "
+            "2pi/3; alpha = 2 pi/n decreases with n")
+d.step("oblique-equilibrium-general", (tan2g, 2 * (Fg * b * s * e1 / Tg - 1), Fg * b ** 2 * s * (1 - s) / Tg - 2),
+       "algebra", result=tan2g, uses=("oblique-equilibrium", "e1"),
+       note="(54) for a prism whose base F_g has the same moment T_g about every axis through its centroid (V_1 = F_g b s)")
+
+d.quote("area", "VI.F", r"$F_1 = n \cdot \frac{r^2}{2} \sin \frac{2 \pi}{n}$",
+        reading=(F1n, n * r ** 2 / 2 * sp.sin(2 * pi / n)))
+d.quote("radius", "VI.F",
+        r"$$r^2 = \frac{2 F_1}{n \cdot \sin \frac{2 \pi}{n}} = \frac{F_1}{\pi} \frac{\frac{2 \pi}{n}}{\sin \frac{2 \pi}{n}}$$",
+        reading=(r ** 2, 2 * F1n / (n * sp.sin(2 * pi / n)), F1n / pi * (2 * pi / n) / sp.sin(2 * pi / n)))
+d.quote("89", "(89)",
+        r"$$T_1 = \frac{F_1^2}{12 \pi} \cdot \frac{\frac{2 \pi}{n}}{\sin \frac{2 \pi}{n}} \cdot \left( 2 + \cos "
+        r"\frac{2 \pi}{n} \right) \quad (89)$$",
+        reading=(T1n, F1n ** 2 / (12 * pi) * (2 * pi / n) / sp.sin(2 * pi / n) * (2 + sp.cos(2 * pi / n))))
+d.quote("89a", "(89a)",
+        r"$$T_1 = \frac{F_1^2}{12 \pi} \cdot \frac{\alpha}{\sin \alpha} \cdot (2 + \cos \alpha) \quad (89a)$$",
+        reading=(T1n, F1n ** 2 / (12 * pi) * alph / sp.sin(alph) * (2 + sp.cos(alph))))
+d.quote("decreasing", "VI.F",
+        "Alle regelmässigen Polygone von gleichem Flächeninhalt haben ein um so kleineres Trägheitsmoment, je grösser "
+        "ihre Seitenzahl ist",
+        reading=(sp.Derivative(T1F, n), -F ** 2 / (12 * pi) * 2 * pi / n ** 2 * npos / sp.sin(2 * pi / n) ** 2),
+        note="the derivative in n at fixed area equals a manifestly negative expression (integrand 2 sin t (t - sin t) "
+             "> 0 on (0, 2pi/3])")
+d.quote("triangle-largest", "VI.F", r"Das grösste Trägheitsmoment hat hiernach das Dreieck, nämlich  "
+                                    r"$\frac{F_1^2}{6\sqrt{3^1}}$",
+        reading=(sp.Subs(T1F, n, 3), F ** 2 / (6 * sp.sqrt(3 ** 1))),
+        note="'3^1': a stray mark of the scan, read literally it is 3")
+d.quote("circle-smallest", "VI.F", r"das kleinste der Kreis, nämlich  $\frac{F_1^2}{4\pi}$",
+        reading=(sp.Limit(T1F, n, sp.oo), F ** 2 / (4 * pi)), note="the infimum over n, reached only in the limit")
+d.quote("duhamel-decreasing", "VI.F", "$$T_1 - V_1 e_1$$\n\nauch um so kleiner, je grösser die Seitenzahl ist.",
+        reading=(sp.Derivative(T1F - F * b * s * e1, n), -F ** 2 / (12 * pi) * 2 * pi / n ** 2 * npos / sp.sin(2 * pi / n) ** 2),
+        note="V_1 e_1 = F b s e_1 does not depend on n")
+tanF = F * b ** 2 * s * (1 - s) / T1F - 2
+d.quote("54-again", "VI.F", r"$$\operatorname{tg}^2 \varphi_1 = \frac{F b^2 s (1 - s)}{T_1} - 2$$",
+        reading=(sp.Subs(tan2g, (Fg, Tg), (F, T1F)), tanF),
+        note="'Nach 55' of the text: the equation is (54) (55 is the bound of the first domain)")
+d.quote("tilt-increasing", "VI.F",
+        r"dass der Winkel  $\varphi_1$ , der die schiefe Stabilitätslage bestimmt, mit wachsender Seitenzahl zunehmen "
+        r"muss",
+        reading=(sp.Derivative(tanF, n),
+                 F * b ** 2 * s * (1 - s) / T1F ** 2 * F ** 2 / (12 * pi) * 2 * pi / n ** 2 * npos / sp.sin(2 * pi / n) ** 2),
+        note="d tan^2 phi_1/dn equals a manifestly positive expression")
+d.quote("cylinder-most-oblique", "VI.F",
+        "Von allen oben erwähnten Prismen schwimmt also der Cylinder in der schiefesten Lage stabil, das dreiseitige "
+        "Prisma ist der aufrechten Lage am nächsten.",
+        reading=(sp.Limit(tanF, n, sp.oo) - sp.Subs(tanF, n, 3), b ** 2 * s * (1 - s) * (4 * pi - 6 * sp.sqrt(3)) / F),
+        note="with the monotony in n, the extremes are the triangle (n = 3) and the cylinder (n -> infinity); "
+             "4 pi > 6 sqrt 3")
+
+
+# ==== witnesses: the clipped floating geometry =========================================================
+def _num(v, dps):
+    v = sp.sympify(v)
+    return float(v) if dps <= 15 else mpmath.mpf(str(sp.N(v, dps + 20)))
+
+
+def _M(dps):
+    return math if dps <= 15 else mpmath
+
+
+def _bd(dps):
+    """Body precision: float64, or mpmath with guard digits."""
+    return None if dps <= 15 else dps + 8
+
+
+def _dot(p, q):
+    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]
+
+
+def _frame(M, ph, w):
+    """Up vector u, horizontal h across the axis, axis direction e (body frame)."""
+    sf, cf, sw, cw = M.sin(ph), M.cos(ph), M.sin(w), M.cos(w)
+    return (sf * sw, -sf * cw, cf), (-cf * sw, cf * cw, sf), (cw, sw, 0 * cw)
+
+
+def _square(av, bv, dps):
+    return box(av, av, bv, dps=_bd(dps))
+
+
+def _gz(body, ph, w, sv, M):
+    """Righting arm h.(B - G): the derivative of the clipped potential in phi (tested in the tests)."""
+    u, h, _ = _frame(M, ph, w)
+    st = floating_state(body, u, sv)
+    return _dot(h, [st.B[k] - st.G[k] for k in range(3)])
+
+
+def _clearance(body, ph, w, sv, M):
+    """Height over the clipped water plane of the lowest top-face vertex (s > 1/2) or minus that of the highest
+    bottom-face vertex (s < 1/2): positive while the face is dry (submerged), zero when it reaches the water."""
+    u, _, _ = _frame(M, ph, w)
+    st = floating_state(body, u, sv)
+    if sv > 0.5:
+        return min(_dot(u, p) - st.t for p in body.vertices if p[2] > 0)
+    return -max(_dot(u, p) - st.t for p in body.vertices if p[2] < 0)
+
+
+def _illinois(f, lo, hi, eps):
+    flo, fhi = f(lo), f(hi)
+    if flo == 0:
+        return lo
+    if fhi == 0:
+        return hi
+    if (flo > 0) == (fhi > 0):
+        raise ValueError("no sign change in the bracket")
+    side, c_old, c = 0, None, lo
+    for _ in range(400):
+        c = (lo * fhi - hi * flo) / (fhi - flo)
+        fc = f(c)
+        if fc == 0:
+            return c
+        if (fc > 0) == (fhi > 0):
+            hi, fhi = c, fc
+            if side == -1:
+                flo /= 2
+            side = -1
+        else:
+            lo, flo = c, fc
+            if side == 1:
+                fhi /= 2
+            side = 1
+        if c_old is not None and abs(c - c_old) <= eps * (1 + abs(c)):
+            return c
+        c_old = c
+    return c
+
+
+def _root(make_f, grid, dps):
+    """First sign change of f on the float grid, refined in float64 and then, for dps > 15, by Illinois at dps
+    digits in a narrow bracket around the float root.  make_f(dps) builds f at that precision."""
+    ff = make_f(15)
+    vals = [ff(g) for g in grid]
+    i = next(i for i in range(len(grid) - 1) if (vals[i] > 0) != (vals[i + 1] > 0))
+    x0 = _illinois(ff, grid[i], grid[i + 1], 1e-15)
+    if dps <= 15:
+        return x0
+    fm = make_f(dps)
+    with mpmath.workdps(dps + 8):
+        dlt = mpmath.mpf("1e-9") * (1 + abs(x0))
+        lo, hi = mpmath.mpf(x0) - dlt, mpmath.mpf(x0) + dlt
+        if (fm(lo) > 0) == (fm(hi) > 0):
+            lo, hi = mpmath.mpf(grid[i]), mpmath.mpf(grid[i + 1])
+        return _illinois(fm, lo, hi, mpmath.mpf(10) ** (-dps - 4))
+
+
+PHI_GRID = [0.005 + 0.025 * k for k in range(62)]
+PHIT_GRID = [0.005 + 0.1 * k for k in range(16)]    # the clearance decreases monotonically in the first domain
+
+
+@functools.lru_cache(maxsize=None)
+def _phi1(av, bv, sv, w, dps):
+    """The oblique equilibrium: first zero of GZ (from negative to positive) in phi."""
+    def make(p):
+        M, body = _M(p), _square(av, bv, p)
+        sw, ww = _num(sv, p), _num(w, p)
+        return lambda ph: _gz(body, ph, ww, sw, M)
+    return _root(make, PHI_GRID, dps)
+
+
+@functools.lru_cache(maxsize=None)
+def _phit(av, bv, sv, w, dps):
+    """The tilt at which the top (s > 1/2) or bottom (s < 1/2) face reaches the water."""
+    def make(p):
+        M, body = _M(p), _square(av, bv, p)
+        sw, ww = _num(sv, p), _num(w, p)
+        return lambda ph: _clearance(body, ph, ww, sw, M)
+    return _root(make, PHIT_GRID, dps)
+
+
+def computed(name, description, targets, cases, fn):
+    d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=fn))
+
+
+def C(label, **kw):
+    syms = {"a": a, "b": b, "s": s, "omega": om, "psi": psi, "n": n, "r": r, "F": F}
+    return Case({syms[k]: sp.Rational(v) for k, v in kw.items()}, label=label)
+
+
+def _upright(case, dps, cube=False):
+    av, bv, sv = (case.params[b] if cube else case.params[a]), case.params[b], case.params[s]
+    body = _square(av, bv, dps)
+    return floating_state(body, (0, 0, 1), _num(sv, dps)), [_num(v, dps) for v in (av, bv, sv)]
+
+
+UP = (C("a = 1, b = 2, s = 3/10", a=1, b=2, s="0.3"), C("a = 3/2, b = 1, s = 4/5", a="1.5", b=1, s="0.8"),
+      C("a = 1, b = 1, s = 1/2", a=1, b=1, s="0.5"))
+computed("square-moments", "waterplane moment and area of the upright square prism (clipped)",
+         ("square-moments",), UP, lambda c, p: (lambda st: (st[0].I_min, st[0].waterplane_area))(_upright(c, p)))
+computed("corner-distance", "largest distance of a vertex of the base from the axis",
+         ("OB",), UP, lambda c, p: max(_M(p).sqrt(v[0] ** 2 + v[1] ** 2) for v in _square(c.params[a], 1, p).vertices))
+OMC = (C("a = 1, omega = 0.3", a=1, omega="0.3"), C("a = 3/2, omega = 0.7", a="1.5", omega="0.7"),
+       C("a = 2, omega = 0.05", a=2, omega="0.05"))
+
+
+def _um_vertices(c, p):
+    M, w = _M(p), _num(c.params[om], p)
+    nvec = (-M.sin(w), M.cos(w), 0)
+    return max(_dot(nvec, v) for v in _square(c.params[a], 1, p).vertices)
+
+
+computed("largest-ordinate", "largest distance xi of a base vertex on the sinking side", ("u-m",), OMC, _um_vertices)
+computed("displacement-tilted", "submerged volume of the clipped prism heeled by 0.2 about an axis at omega = 0.3",
+         ("V1",), UP, lambda c, p: floating_state(_square(c.params[a], c.params[b], p),
+                                                  _frame(_M(p), _num("0.2", p), _num("0.3", p))[0],
+                                                  _num(c.params[s], p)).volume)
+computed("T-over-V", "I_min / submerged volume, upright (clipped)", ("T1-over-V1",), UP,
+         lambda c, p: (lambda st: st.I_min / st.volume)(_upright(c, p)[0]))
+computed("e1-clipped", "height of G above B, upright (clipped)", ("e1",), UP, lambda c, p: _upright(c, p)[0].potential)
+computed("metacentric-height", "metacentric height I_min/V - BG, upright (clipped)", ("upright-condition",), UP,
+         lambda c, p: _upright(c, p)[0].metacentric_height)
+computed("duhamel-75", "12 s/b x metacentric height, upright (clipped)", ("75", "78"), UP,
+         lambda c, p: (lambda st, v: 12 * v[2] / v[1] * st.metacentric_height)(*_upright(c, p)))
+computed("duhamel-75-unstable", "-12 s/b x metacentric height, upright (clipped)", ("75-unstable",), UP,
+         lambda c, p: (lambda st, v: -12 * v[2] / v[1] * st.metacentric_height)(*_upright(c, p)))
+computed("area-b2-over-T", "F_1 b^2 s(1-s)/T_1 from the clipped upright waterplane", ("Fb2-over-T1",), UP,
+         lambda c, p: (lambda st, v: st.waterplane_area * v[1] ** 2 * v[2] * (1 - v[2]) / st.I_min)(*_upright(c, p)))
+TOP = (C("a = 1, b = 1, s = 7/10, omega = 0.3", a=1, b=1, s="0.7", omega="0.3"),
+       C("a = 6/5, b = 1, s = 9/10, omega = 0.7", a="1.2", b=1, s="0.9", omega="0.7"))
+computed("touch-top", "tan of the tilt at which the top face reaches the clipped water plane", ("limit-top",), TOP,
+         lambda c, p: _M(p).tan(_phit(c.params[a], c.params[b], c.params[s], c.params[om], p)))
+# the region of (78a): (1-s)(7s-1) <= (a/b)^2 < 6s(1-s) (s > 1/2), s(6-7s) <= (a/b)^2 < 6s(1-s) (s < 1/2)
+R78A = (C("a = 11/10, b = 1, s = 7/10, omega = 0.3", a="1.1", b=1, s="0.7", omega="0.3"),
+        C("a = 11/10, b = 1, s = 3/10, omega = 0.6", a="1.1", b=1, s="0.3", omega="0.6"),
+        C("a = 97/100, b = 1, s = 4/5, omega = 0.1", a="0.97", b=1, s="0.8", omega="0.1"))
+
+
+def _ph1(c, p, w=None):
+    return _phi1(c.params[a], c.params[b], c.params[s], c.params[om] if w is None else sp.sympify(w), p)
+
+
+def _pht(c, p, w=None):
+    return _phit(c.params[a], c.params[b], c.params[s], c.params[om] if w is None else sp.sympify(w), p)
+
+
+def _q(c, p):
+    return (_num(c.params[a], p) / _num(c.params[b], p)) ** 2
+
+
+computed("oblique-76", "tan^2 of the clipped equilibrium tilt and tan of the clipped touching tilt at omega",
+         ("76",), R78A, lambda c, p: (_M(p).tan(_ph1(c, p)) ** 2, _M(p).tan(_pht(c, p))))
+computed("oblique-78b", "tan of the clipped equilibrium tilt (root of GZ)", ("78b",), R78A,
+         lambda c, p: _M(p).tan(_ph1(c, p)))
+computed("oblique-76-45", "tan^2 phi_1 (at omega = 0.3) and tan of the touching tilt at omega = 45 deg, clipped",
+         ("76-at-45",), R78A, lambda c, p: (_M(p).tan(_ph1(c, p)) ** 2, _M(p).tan(_pht(c, p, pi / 4))))
+computed("oblique-76-squared", "tan^2 phi_t(45 deg) - tan^2 phi_1, clipped", ("76-squared",), R78A,
+         lambda c, p: _M(p).tan(_pht(c, p, pi / 4)) ** 2 - _M(p).tan(_ph1(c, p)) ** 2)
+computed("oblique-77", "(a/b)^2/2 (tan^2 phi_t(45 deg) - tan^2 phi_1), clipped", ("77",), R78A,
+         lambda c, p: _q(c, p) / 2 * (_M(p).tan(_pht(c, p, pi / 4)) ** 2 - _M(p).tan(_ph1(c, p)) ** 2))
+computed("oblique-78a", "-12 s/b GM upright and (a/b)^2/2 (tan^2 phi_t(45 deg) - tan^2 phi_1), clipped", ("78a",),
+         R78A, lambda c, p: (-12 * _num(c.params[s], p) / _num(c.params[b], p)
+                             * floating_state(_square(c.params[a], c.params[b], p), (0, 0, 1),
+                                              _num(c.params[s], p)).metacentric_height,
+                             _q(c, p) / 2 * (_M(p).tan(_pht(c, p, pi / 4)) ** 2 - _M(p).tan(_ph1(c, p)) ** 2)))
+# the region of (78c): 2(1-s)(4s-1) <= (a/b)^2 < (1-s)(7s-1) (s > 1/2) and its mirror
+R78C = (C("a = 53/50, b = 1, s = 7/10", a="1.06", b=1, s="0.7"),
+        C("a = 53/50, b = 1, s = 3/10", a="1.06", b=1, s="0.3"),
+        C("a = 19/20, b = 1, s = 4/5", a="0.95", b=1, s="0.8"))
+computed("oblique-78c", "(a/b)^2/2 (tan^2 phi_1 - tan^2 phi_t(45 deg)), phi_1 at omega = 0, clipped", ("78c",), R78C,
+         lambda c, p: _q(c, p) / 2 * (_M(p).tan(_ph1(c, p, 0)) ** 2 - _M(p).tan(_pht(c, p, pi / 4)) ** 2))
+computed("oblique-78e", "(a/b)^2/2 (tan^2 phi_1 - tan^2 phi_t(0)), clipped", ("78e",), R78C + R78A[:1],
+         lambda c, p: _q(c, p) / 2 * (_M(p).tan(_ph1(c, p, 0)) ** 2 - _M(p).tan(_pht(c, p, 0)) ** 2))
+
+
+def _omega_star(av, bv, sv, p):
+    """The axis direction at which the face reaches the water at the clipped equilibrium tilt (phi_1 at omega = 0)."""
+    ph = _phi1(av, bv, sv, sp.Integer(0), p)
+
+    def make(q):
+        M, body = _M(q), _square(av, bv, q)
+        sw = _num(sv, q)
+        pq = float(_phi1(av, bv, sv, sp.Integer(0), 15)) if q <= 15 else ph
+        return lambda w: _clearance(body, pq, w, sw, M)
+    return _root(make, [0.001 + 0.02 * k for k in range(40)], p)
+
+
+computed("limit-omega", "sin^2(45 deg + omega*), omega* the clipped root of the face clearance at phi_1",
+         ("78d",), R78C, lambda c, p: _M(p).sin(_M(p).pi / 4 + _omega_star(c.params[a], c.params[b], c.params[s], p)) ** 2)
+
+# ---- the cube
+CUBE = (C("b = 1, s = 0.3", b=1, s="0.3"), C("b = 2, s = 0.8", b=2, s="0.8"), C("b = 1/2, s = 0.1", b="0.5", s="0.1"))
+computed("cube-duhamel", "12 s/b x metacentric height of the upright cube (clipped)", ("cube-78",), CUBE,
+         lambda c, p: (lambda st, v: 12 * v[2] / v[1] * st.metacentric_height)(*_upright(c, p, cube=True)))
+computed("cube-duhamel-2", "2 s/b x metacentric height of the upright cube (clipped)", ("cube-78-square",), CUBE,
+         lambda c, p: (lambda st, v: 2 * v[2] / v[1] * st.metacentric_height)(*_upright(c, p, cube=True)))
+
+
+@functools.lru_cache(maxsize=None)
+def _cube_upright(upper, dps):
+    def make(q):
+        body = box(1, 1, 1, dps=_bd(q))
+        return lambda sv: floating_state(body, (0, 0, 1), sv).metacentric_height
+    grid = [0.5 + 0.01 * k for k in range(1, 50)] if upper else [0.5 - 0.01 * k for k in range(1, 50)]
+    return _root(make, grid, dps)
+
+
+@functools.lru_cache(maxsize=None)
+def _cube_touch_equilibrium(upper, w, dps):
+    """The density at which the clipped cube's equilibrium tilt equals its touching tilt at the axis angle w:
+    root in s of GZ at the touching tilt (nested root-finding), scanned from s = 0.55 (0.45) outwards."""
+    def make(q):
+        M, body = _M(q), box(1, 1, 1, dps=_bd(q))
+
+        def f(sv):
+            sr = sp.Rational(str(sv)) if q <= 15 else None
+            if q <= 15:
+                pt = _phit(sp.Integer(1), sp.Integer(1), sr, w, 15)
+            else:
+                pt = _touch_mp(body, sv, w, q)
+            return _gz(body, pt, _num(w, q), sv, M)
+        return f
+    grid = [0.55 + 0.02 * k for k in range(13)] if upper else [0.45 - 0.02 * k for k in range(13)]
+    return _root(make, grid, dps)
+
+
+def _touch_mp(body, sv, w, q):
+    M, ww = mpmath, _num(w, q)
+    f = lambda ph: _clearance(body, ph, ww, sv, M)  # noqa: E731
+    x0 = _phit(sp.Integer(1), sp.Integer(1), sp.Rational(str(float(sv))), w, 15)
+    dlt = mpmath.mpf("1e-6")
+    return _illinois(f, mpmath.mpf(x0) - dlt, mpmath.mpf(x0) + dlt, mpmath.mpf(10) ** (-q - 4))
+
+
+ONE = (Case({}, label="unit cube"),)
+computed("cube-upright-thresholds", "densities where the clipped upright cube's metacentric height vanishes",
+         ("79",), ONE, lambda c, p: (_cube_upright(True, p), _cube_upright(False, p)))
+computed("cube-upright-upper", "upper density where the clipped upright cube's metacentric height vanishes",
+         ("79-upper-number", "81-upper"), ONE, lambda c, p: _cube_upright(True, p))
+computed("cube-upright-lower", "lower density where the clipped upright cube's metacentric height vanishes",
+         ("79-lower-number", "81-lower"), ONE, lambda c, p: _cube_upright(False, p))
+computed("cube-oblique-thresholds", "densities where the clipped cube's equilibrium reaches a face at omega = 45 deg",
+         ("80",), ONE, lambda c, p: (_cube_touch_equilibrium(True, pi / 4, p), _cube_touch_equilibrium(False, pi / 4, p)))
+computed("cube-oblique-roots", "the same thresholds, less 4/7 and from 3/7",
+         ("80-roots",), ONE, lambda c, p: (_cube_touch_equilibrium(True, pi / 4, p) - _num(sp.Rational(4, 7), p),
+                                           _num(sp.Rational(3, 7), p) - _cube_touch_equilibrium(False, pi / 4, p)))
+computed("cube-oblique-upper", "upper density where the clipped equilibrium reaches a face at omega = 45 deg",
+         ("80-upper-number", "81-oblique-upper"), ONE, lambda c, p: _cube_touch_equilibrium(True, pi / 4, p))
+computed("cube-oblique-lower", "lower density where the clipped equilibrium reaches a face at omega = 45 deg",
+         ("80-lower-number", "81-oblique-lower"), ONE, lambda c, p: _cube_touch_equilibrium(False, pi / 4, p))
+computed("cube-edge-thresholds", "densities nearest 1/2 where the clipped equilibrium reaches a face at omega = 0",
+         ("edge-axis-range",), ONE,
+         lambda c, p: (_cube_touch_equilibrium(True, sp.Integer(0), p), _cube_touch_equilibrium(False, sp.Integer(0), p)))
+CUBE_OBL = (C("b = 1, s = 0.78", b=1, s="0.78"), C("b = 2, s = 0.22", b=2, s="0.22"))
+computed("cube-oblique-tilt", "tan^2 of the clipped cube's equilibrium tilt (omega = 0.4)", ("81a",), CUBE_OBL,
+         lambda c, p: _M(p).tan(_phi1(c.params[b], c.params[b], c.params[s], sp.Rational("0.4"), p)) ** 2)
+computed("cube-78a", "1/2 (tan^2 phi_t(45 deg) - tan^2 phi_1) for the clipped cube", ("cube-78a",), CUBE_OBL,
+         lambda c, p: (_M(p).tan(_phit(c.params[b], c.params[b], c.params[s], pi / 4, p)) ** 2
+                       - _M(p).tan(_phi1(c.params[b], c.params[b], c.params[s], sp.Integer(0), p)) ** 2) / 2)
+computed("cube-78a-7", "1/14 (tan^2 phi_t(45 deg) - tan^2 phi_1) for the clipped cube", ("cube-78a-square",), CUBE_OBL,
+         lambda c, p: (_M(p).tan(_phit(c.params[b], c.params[b], c.params[s], pi / 4, p)) ** 2
+                       - _M(p).tan(_phi1(c.params[b], c.params[b], c.params[s], sp.Integer(0), p)) ** 2) / 14)
+computed("cube-limit-omega", "sin^2(45 deg + omega*) for the clipped cube", ("82",),
+         (C("b = 1, s = 0.76", b=1, s="0.76"), C("b = 2, s = 0.24", b=2, s="0.24")),
+         lambda c, p: _M(p).sin(_M(p).pi / 4 + _omega_star(c.params[b], c.params[b], c.params[s], p)) ** 2)
+
+
+def _half_delta(c, p):
+    M, body = _M(p), _square(c.params[a], c.params[a], p)
+    q4, w, h = M.pi / 4, _num(c.params[om], p), _num(half, p)
+    return (floating_state(body, _frame(M, q4, w)[0], h).potential
+            - floating_state(body, _frame(M, q4, 0 * w)[0], h).potential)
+
+
+computed("half-cube-turned", "potential change of the clipped cube (s = 1/2, phi = 45 deg) turned by omega about "
+         "its main axis", ("half-stable",), (C("a = 1, omega = 0.1", a=1, omega="0.1"),
+                                             C("a = 2, omega = 0.3", a=2, omega="0.3")), _half_delta)
+computed("half-tilt-clipped", "clipped equilibrium tilt of the cube at s = 1/2 (root of GZ)", ("half-tilt",), ONE,
+         lambda c, p: _phi1(sp.Integer(1), sp.Integer(1), half, sp.Integer(0), p))
+computed("half-waterplane", "waterplane area of the clipped cube at s = 1/2, phi = 45 deg",
+         ("half-waterplane",), (C("b = 1", b=1), C("b = 3/2", b="1.5")),
+         lambda c, p: floating_state(_square(c.params[b], c.params[b], p), _frame(_M(p), _M(p).pi / 4, 0)[0],
+                                     _num(half, p)).waterplane_area)
+
+
+# ---- the n-gon
+def _polygon(rv, nv, p, turn=0):
+    M = _M(p)
+    R, k = _num(rv, p), int(nv)
+    return [(R * M.cos(2 * M.pi * j / k + turn), R * M.sin(2 * M.pi * j / k + turn)) for j in range(k)]
+
+
+def _plane_moments(poly, p):
+    """Area, centroid and central tensor of a polygon from the clipped upright prism over it."""
+    st = floating_state(right_prism(poly, 1, dps=_bd(p)), (0, 0, 1), _num(half, p))
+    return st.waterplane_area, st.waterplane_centroid, st.tensor, st
+
+
+NG = (C("r = 1, n = 3, omega = 0.3", r=1, n=3, omega="0.3"), C("r = 3/2, n = 5, omega = 0.5", r="1.5", n=5, omega="0.5"),
+      C("r = 1, n = 8, omega = 0.7", r=1, n=8, omega="0.7"))   # omega only enters the misread 'omega tg' prints
+computed("polygon-moment", "moment of the regular polygon about an axis through its centre (clipped waterplane)",
+         ("84", "85", "86-nA", "87", "87-cos2", "89", "89a", "86a"), NG,
+         lambda c, p: _plane_moments(_polygon(c.params[r], c.params[n], p), p)[3].I_min)
+computed("polygon-moment-2", "2 T_1 and T_1 of the regular polygon (clipped waterplane)", ("86",), NG,
+         lambda c, p: (lambda i: (2 * i, i))(_plane_moments(_polygon(c.params[r], c.params[n], p), p)[3].I_min))
+computed("polygon-area", "area of the regular polygon (clipped waterplane)", ("area",), NG,
+         lambda c, p: _plane_moments(_polygon(c.params[r], c.params[n], p), p)[0])
+computed("polygon-radius", "squared distance of the vertices from the centre", ("radius",), NG,
+         lambda c, p: max(v[0] ** 2 + v[1] ** 2 for v in _polygon(c.params[r], c.params[n], p)))
+computed("polygon-side", "distance of adjacent vertices", ("side",), NG,
+         lambda c, p: (lambda v: _M(p).sqrt((v[1][0] - v[0][0]) ** 2 + (v[1][1] - v[0][1]) ** 2))(
+             _polygon(c.params[r], c.params[n], p)))
+computed("polygon-apothem", "distance of the centre from the midpoint of a side", ("apothem",), NG,
+         lambda c, p: (lambda v: _M(p).sqrt(((v[1][0] + v[0][0]) / 2) ** 2 + ((v[1][1] + v[0][1]) / 2) ** 2))(
+             _polygon(c.params[r], c.params[n], p)))
+NG34 = {3: (C("r = 1", r=1), C("r = 3/2", r="1.5")), 4: (C("r = 1", r=1), C("r = 2/3", r="2/3"))}
+computed("triangle-moment", "moment of the equilateral triangle (clipped waterplane)", ("triangle-T1",), NG34[3],
+         lambda c, p: _plane_moments(_polygon(c.params[r], 3, p), p)[3].I_min)
+computed("square-moment", "moment of the square (clipped waterplane)", ("square-T1",), NG34[4],
+         lambda c, p: _plane_moments(_polygon(c.params[r], 4, p), p)[3].I_min)
+
+
+def _triangle(c, p, turn):
+    M = _M(p)
+    R, k = _num(c.params[r], p), int(c.params[n])
+    O, B_, C_ = (0 * R, 0 * R), (R * M.cos(M.pi / k), -R * M.sin(M.pi / k)), (R * M.cos(M.pi / k), R * M.sin(M.pi / k))
+    rot = lambda q: (q[0] * M.cos(turn) - q[1] * M.sin(turn), q[0] * M.sin(turn) + q[1] * M.cos(turn))  # noqa: E731
+    return [rot(q) for q in (O, B_, C_)]
+
+
+def _about_axes(poly, p):
+    """Second moments about the x and y axes through the origin (central tensor plus Steiner)."""
+    A, cen, J, _ = _plane_moments(poly, p)
+    return J[1][1] + A * cen[1] ** 2, J[0][0] + A * cen[0] ** 2
+
+
+TRI = (C("r = 1, n = 3, psi = 0.4", r=1, n=3, psi="0.4"), C("r = 3/2, n = 7, psi = 1.1", r="1.5", n=7, psi="1.1"))
+computed("triangle-axis", "moment of the triangle BOC turned by -psi about the x axis through O (clipped)",
+         ("triangle-axis", "83"), TRI, lambda c, p: _about_axes(_triangle(c, p, -_num(c.params[psi], p)), p)[0])
+computed("triangle-axes", "moments of the triangle BOC about OQ and the perpendicular through O (clipped)",
+         ("triangle-moments",), TRI, lambda c, p: _about_axes(_triangle(c, p, 0), p))
+
+
+def _um_n(c, p):
+    M = _M(p)
+    k, w = int(c.params[n]), _num(c.params[om], p)
+    ang = M.pi / k + w      # normal of the axis that runs at omega to the side from vertex 0 to vertex 1
+    return max(v[0] * M.cos(ang) + v[1] * M.sin(ang) for v in _polygon(c.params[r], k, p))
+
+
+computed("polygon-ordinate", "largest distance of a vertex from the axis on the sinking side", ("88",),
+         (C("r = 1, n = 3, omega = 0.7", r=1, n=3, omega="0.7"), C("r = 3/2, n = 6, omega = 0.3", r="1.5", n=6, omega="0.3"),
+          C("r = 1, n = 4, omega = 0.2", r=1, n=4, omega="0.2")), _um_n)
+
+
+def _scaled_moment(c, p, k):
+    A0, _, _, st = _plane_moments(_polygon(1, k, p), p)
+    return st.I_min * (_num(c.params[F], p) / A0) ** 2
+
+
+computed("triangle-at-area", "moment of the equilateral triangle of area F (clipped, scaled)", ("triangle-largest",),
+         (C("F = 1", F=1), C("F = 5/2", F="2.5")), lambda c, p: _scaled_moment(c, p, 3))
+
+
+def _ngon_tilt(c, p):
+    """tan^2 of the clipped equilibrium tilt of the regular n-gon prism of area F, height b."""
+    k = int(c.params[n])
+
+    def make(q):
+        M = _M(q)
+        A0q = _plane_moments(_polygon(1, k, q), q)[0]
+        Rq = M.sqrt(_num(c.params[F], q) / A0q)
+        body = right_prism([(Rq * x_, Rq * y_) for x_, y_ in _polygon(1, k, q)], _num(c.params[b], q), dps=_bd(q))
+        sv = _num(c.params[s], q)
+        return lambda ph: _gz(body, ph, 0 * ph, sv, M)
+    return _M(p).tan(_root(make, PHI_GRID, p)) ** 2
+
+
+computed("ngon-tilt", "tan^2 of the clipped equilibrium tilt of regular n-gon prisms of area F", ("54-again",),
+         (C("F = 1, n = 6, b = 9/10, s = 7/10", F=1, n=6, b="0.9", s="0.7"),
+          C("F = 1, n = 3, b = 97/100, s = 7/10", F=1, n=3, b="0.97", s="0.7")), _ngon_tilt)

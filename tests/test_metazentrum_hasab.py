@@ -1,0 +1,111 @@
+"""The metacentre lesson (derivations/metazentrum.py) and the square prism by the energy method
+(derivations/hasab.py): verdicts and errata pinned, the density thresholds of hasab recomputed here by
+root-finding on clipped geometry, and mutated coefficients refuted by the engine."""
+import dataclasses
+from fractions import Fraction
+
+import mpmath
+import pytest
+import sympy as sp
+
+from symfloat.engine.check import check_derivation
+from symfloat.geometry.floating import box, floating_state, right_prism
+from symfloat.registry import load
+
+
+@pytest.fixture(scope="module")
+def meta():
+    return load("metazentrum")
+
+
+@pytest.fixture(scope="module")
+def hasab():
+    return load("hasab")
+
+
+@pytest.fixture(scope="module")
+def meta_report(reports_by_id):
+    return reports_by_id["metazentrum"]
+
+
+@pytest.fixture(scope="module")
+def hasab_report(reports_by_id):
+    return reports_by_id["hasab"]
+
+
+def errata(report):
+    return {(f.id.split("/")[1], f.erratum["kind"], f.erratum["confidence"]) for f in report.formulas if f.erratum}
+
+
+def test_metazentrum_checks_clean(meta_report):
+    assert meta_report.failures == []
+    assert errata(meta_report) == {
+        ("e-sign", "claim", "high"),   # "größer als eins" for stability: the boundary is e = 0
+        ("vasa", "claim", "medium"),   # sinking deeper helps only beyond half immersion (d > c)
+    }
+    assert all(f.verdict == "verified" for f in meta_report.formulas if not f.erratum)
+
+
+def test_metacentre_height_of_a_clipped_box():
+    # metazentrum, "Berechnung der Position des Metazentrums": z_M = -d/2 + b^2/(3d).  Box a=5, b=3/2, c=1,
+    # d=1/2 (density d/(2c) = 1/4): z_M = -1/4 + (9/4)/(3/2) = 5/4, by hand.  Independently: the clipped
+    # box's I_min/V - (G - B) plus the height of G above the water.
+    with mpmath.workdps(50):
+        body = right_prism([(Fraction(-3, 2), -1), (Fraction(3, 2), -1), (Fraction(3, 2), 1), (Fraction(-3, 2), 1)],
+                           10, dps=50)
+        st = floating_state(body, (0, 1, 0), Fraction(1, 4))
+        zM = st.metacentric_height + st.G[1] - st.t
+        assert abs(zM - mpmath.mpf(5) / 4) < mpmath.mpf(10) ** -40
+
+
+def test_hasab_checks_clean(hasab_report):
+    assert hasab_report.failures == []
+    assert errata(hasab_report) == {
+        ("E0-water", "transcription", "medium"),   # l g rho/2 for l g rho^2/2 (the total is right)
+        ("E2-water", "misprint", "medium"),        # the factor l g dropped in the last member
+        ("ranges", "transcription", "medium"),     # "< rho" lost in the second range
+        ("remark", "transcription", "medium"),     # radical over 9l^2 - 6 lost; the upright prism
+    }
+    assert all(f.verdict == "verified" for f in hasab_report.formulas if not f.erratum)
+
+
+def _gm_lying(r):
+    return floating_state(box(1, 1, 4, dps=40), (0, 1, 0), r).metacentric_height
+
+
+def _gm_upright(r, L):
+    return floating_state(box(1, 1, L, dps=40), (0, 0, 1), r).metacentric_height
+
+
+def test_hasab_density_thresholds_by_root_finding():
+    # hasab, stability ranges: stable for rho < (3 - sqrt 3)/6 = 0.21132... or rho > (3 + sqrt 3)/6 =
+    # 0.78867... (the text's thresholds, the roots of rho^2 - rho + 1/6).  Recomputed here as the zeros of
+    # the metacentric height of the clipped lying prism 1 x 1 x 4 (no formula used), by the secant method.
+    with mpmath.workdps(40):
+        lo = mpmath.findroot(_gm_lying, (mpmath.mpf("0.2"), mpmath.mpf("0.22")))
+        hi = mpmath.findroot(_gm_lying, (mpmath.mpf("0.78"), mpmath.mpf("0.80")))
+        assert abs(lo - (3 - mpmath.sqrt(3)) / 6) < mpmath.mpf(10) ** -30
+        assert abs(hi - (3 + mpmath.sqrt(3)) / 6) < mpmath.mpf(10) ** -30
+        assert _gm_lying(mpmath.mpf("0.1")) > 0 > _gm_lying(mpmath.mpf("0.5")) and _gm_lying(mpmath.mpf("0.9")) > 0
+
+
+def test_hasab_remark_threshold_upright_prism():
+    # hasab, Megjegyzés: standing upright (edges l vertical), stable above (3l + sqrt(9l^2 - 6))/(6l);
+    # for l = 2: (6 + sqrt 30)/12 = 0.95643...  The printed (3l + 9l^2 - 6)/(6l) = 2.5 (> 1) lost the radical.
+    with mpmath.workdps(40):
+        root = mpmath.findroot(lambda r: _gm_upright(r, 2), (mpmath.mpf("0.94"), mpmath.mpf("0.97")))
+        assert abs(root - (6 + mpmath.sqrt(30)) / 12) < mpmath.mpf(10) ** -30
+
+
+def test_mutated_coefficients_are_refuted(hasab, meta):
+    d, mod = hasab
+    p = next(p for p in d.printed if p.name == "Delta-E")
+    rho, al = mod.rho, mod.al
+    wrong = sp.Rational(1, 5) * (rho ** 2 - rho + sp.Rational(1, 6)) * al ** 2         # 1/4 mutated to 1/5
+    mutated = dataclasses.replace(d, printed=[dataclasses.replace(p, reading=(mod.c2 * al ** 2, wrong))], witnesses=[])
+    assert any("Delta-E" in f and "refuted" in f for f in check_derivation(mutated).failures)
+    d, mod = meta
+    p = next(p for p in d.printed if p.name == "z_M")
+    wrong = -mod.d / 2 + mod.b ** 2 / (2 * mod.d)                                       # 3d mutated to 2d
+    mutated = dataclasses.replace(d, printed=[dataclasses.replace(p, reading=(mod.z_M, wrong))], witnesses=[])
+    assert any("z_M" in f and "refuted" in f for f in check_derivation(mutated).failures)

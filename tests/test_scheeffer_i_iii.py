@@ -1,0 +1,88 @@
+"""Scheeffer 1902, sections I-III (derivations/scheeffer_i_iii.py): every display of the range quoted and
+judged, the erratum of (18) pinned, the small-angle limits pinned against clipped geometry, and a mutated
+coefficient of (12) refuted by the engine."""
+import dataclasses
+import re
+
+import mpmath
+import pytest
+import sympy as sp
+
+from symfloat.engine.check import check_derivation
+from symfloat.model.source import SOURCES
+from symfloat.registry import load
+
+TEXT = SOURCES["scheeffer"].text()
+START, END = TEXT.index("## I.\n"), TEXT.index("#### IV.")
+DISPLAYS = re.findall(r"\$\$.+?\$\$", TEXT[START:END], re.S)
+
+
+@pytest.fixture(scope="module")
+def loaded():
+    return load("scheeffer-i-iii")
+
+
+@pytest.fixture(scope="module")
+def report(reports_by_id):
+    return reports_by_id["scheeffer-i-iii"]
+
+
+def test_no_check_fails(report):
+    assert report.failures == []
+
+
+def test_every_display_of_sections_i_to_iii_is_quoted(report):
+    assert len(DISPLAYS) == 20
+    missing = [d for d in DISPLAYS if not any(d in f.excerpt or f.excerpt in d for f in report.formulas)]
+    assert missing == []
+
+
+def test_verdicts_and_errata(report):
+    verdicts = {f.id.split("/")[1]: f.verdict for f in report.formulas}
+    # (18) is printed "T1/V1 = e1 > 0": the scan's '=' for the minus of T1/V1 - e1 > 0 (from (16))
+    assert {(f.id, f.erratum["kind"], f.erratum["confidence"]) for f in report.formulas if f.erratum} == {
+        ("scheeffer-i-iii/duhamel-18", "transcription", "high")}
+    # (1) is not displayed in the transcription: only "(1" survives
+    assert [k for k, v in verdicts.items() if v == "unverifiable"] == ["equilibrium"]
+    assert sum(v == "verified" for v in verdicts.values()) == len(verdicts) - 2
+
+
+def test_verified_displays_carry_two_witness_records(report):
+    logical = {"stability-2", "stable-15", "labile-15"}     # sign statements, no quantity to measure
+    thin = [f.id for f in report.formulas if f.verdict == "verified" and f.excerpt.startswith("$$")
+            and len(f.numeric) < 2 and f.id.split("/")[1] not in logical]
+    assert thin == []
+
+
+def test_small_angle_limit_of_a_body_not_prismatic_at_the_waterline(loaded):
+    # Section III ("für den allgemeinen Körper", (16)): the triangular prism with apex down, section
+    # (0,0), (1,2), (-1,2), draught 9/5: T1/V1 - e1 = (2 (9/5)^3/12)/(81/25) - (4/3 - 6/5) = 3/10 - 2/15
+    # = 1/6, recomputed here by hand; the righting arm of the clipped heeled body, extrapolated to phi -> 0,
+    # must give the same.
+    mod = loaded[1]
+    case = next(c for c in mod.SMALL if "9/5" in c.label)
+    with mpmath.workdps(50):
+        value = mod.small_angle(case, 50, "m", 1)
+        assert abs(value - mpmath.mpf(1) / 6) < mpmath.mpf(10) ** -40
+    case = next(c for c in mod.SMALL if "draught 1 " in c.label)    # T1/V1 - e1 = 1/6 - 2/3 = -1/2
+    with mpmath.workdps(50):
+        assert abs(mod.small_angle(case, 50, "m", 1) + mpmath.mpf(1) / 2) < mpmath.mpf(10) ** -40
+
+
+def test_axis_passes_through_the_centroid(loaded):
+    # II: the tilted plane of the trapezoid prism P1 = 2, P2 = 1, H = 2 (tg phi = 1/2) meets the old one
+    # at the centroid s = H (P1 + 2 P2) / (3 (P1 + P2)) = 8/9, found here from the clipping alone.
+    mod = loaded[1]
+    case = next(c for c in mod.TRAP if "P1=2, P2=1" in c.label)
+    with mpmath.workdps(50):
+        assert abs(mod.trapezoid_tilt(case, 50)["xO"] - mpmath.mpf(8) / 9) < mpmath.mpf(10) ** -40
+
+
+def test_a_mutated_coefficient_of_12_is_refuted(loaded):
+    d, mod = loaded
+    phi, T1, V1, e1, m = mod.phi, mod.T1, mod.V1, mod.e1, mod.m
+    p = next(p for p in d.printed if p.name == "moment-12")
+    wrong = sp.sin(phi) * ((1 + sp.tan(phi) ** 2 / 3) * T1 - V1 * e1)     # 1/2 mutated to 1/3
+    mutated = dataclasses.replace(d, printed=[dataclasses.replace(p, reading=(V1 * m, wrong))], witnesses=[])
+    rep = check_derivation(mutated)
+    assert any("(12)" in f and "refuted" in f for f in rep.failures)

@@ -1,0 +1,146 @@
+"""Scheeffer 1902, sections IV and V (derivation ``scheeffer-iv-v``): verdicts, errata, pinned values from the
+clipped-prism geometry, the claims in words, and mutations the engine must refute."""
+import copy
+import math
+from dataclasses import replace
+
+import pytest
+import sympy as sp
+
+import derivations.scheeffer_iv_v as M
+from symfloat.engine.check import check_derivation
+from symfloat.geometry.floating import floating_state
+
+ERRATA = {"32": "transcription", "38-projection": "misprint", "43a": "misprint", "52": "transcription",
+          "law": "claim", "s-half": "claim", "55": "claim"}
+
+
+@pytest.fixture(scope="module")
+def report(reports_by_id):
+    return reports_by_id["scheeffer-iv-v"]
+
+
+def test_no_failures_and_the_expected_errata(report):
+    assert report.failures == []
+    found = {f.id.split("/")[1]: f.erratum["kind"] for f in report.formulas if f.verdict == "erratum"}
+    assert found == ERRATA
+    assert all(f.verdict == "verified" for f in report.formulas if f.id.split("/")[1] not in ERRATA)
+
+
+def test_numbered_displays_are_witnessed(report):
+    # every verified display carrying a number (27)-(55) whose quantity is numeric has >= 2 witness records
+    numeric = {"27", "28", "31", "33", "34", "35", "37", "38", "39", "40", "41", "42", "43", "45", "51", "53", "53a",
+               "54"}
+    for f in report.formulas:
+        if f.id.split("/")[1] in numeric:
+            assert f.verdict == "verified" and len(f.numeric) >= 2, f.id
+
+
+# ---- pinned values, all measured on the clipped prism (symfloat.geometry.floating), float64 ------------------
+
+def test_rectangle_tilt_pinned():
+    # (27)/(54), base 1 x 2 turned about its long axis, b = 9/10, s = 2/5: tan^2 phi_1 = 12 b^2 s(1-s) - 2
+    # = 12 * 81/100 * 6/25 - 2 = 208/625 (exact); measured as the zero of the clipped righting arm
+    assert M._measure("rect-long", "tan2", 15) == pytest.approx(208 / 625, rel=1e-12)
+    # (35): V_1 e_2 = T_1 / cos phi_1 = (1/6) sqrt(1 + 208/625) = (1/6)(sqrt 833)/25
+    assert M._measure("rect-long", "Ve2", 15) == pytest.approx(math.sqrt(833) / 150, rel=1e-12)
+    # (42): T_m = T_1/cos^3 = (1/6)(833/625)^(3/2), T_m^1 = T_1^1/cos = (2/3) sqrt(833)/25
+    T2, T21 = M._measure("rect-long", "wp2-ext", 15)
+    assert T2 == pytest.approx((833 / 625) ** 1.5 / 6, rel=1e-12)
+    assert T21 == pytest.approx(2 / 3 * math.sqrt(833) / 25, rel=1e-12)
+
+
+def test_claim_43a_stable_iff_T11_greater():
+    # IV claim: stable iff T_1 < T_1^1. Clipped metacentric height at the tilt: about the long axis (T_1 = 1/6 <
+    # T_1^1 = 2/3) positive, (T_1^1 - T_1)/cos phi_1 / V = (1/2)(sqrt 833/25)/(2 * 9/10 * 2/5); about the short
+    # axis (T_1 = 2/3 > 1/6) negative
+    V = 2 * 9 / 10 * 2 / 5
+    assert M._measure("rect-long", "D2", 15) == pytest.approx(min((1 / 6) * 208 / 625, 1 / 2) * math.sqrt(833) / 25,
+                                                              rel=1e-10)
+    assert M._measure("rect-long", "D2", 15) / V > 0
+    assert M._measure("rect-short", "D2", 15) < 0
+
+
+def test_isotropic_neutral_51_and_independent_of_omega():
+    # (51): T_m^1 - T_1/cos phi_1 = 0 for the square prism (b = 17/20, s = 9/20), EF at 0 and 30 deg
+    for name in ("square-0", "square-30", "tri-eq"):
+        assert abs(M._measure(name, "Tm1-excess", 15)) < 1e-12
+    # the tilt and V e_2 are the same in every direction (47)-(52): tan^2 phi_1 = 12 b^2 s(1-s) - 2 = 0.1458...
+    t0, t30 = M._measure("square-0", "tan2", 15), M._measure("square-30", "tan2", 15)
+    assert t0 == pytest.approx(t30, rel=1e-12) == pytest.approx(12 * 0.85 ** 2 * 0.45 * 0.55 - 2, rel=1e-12)
+
+
+def _potential(body, up):
+    st = floating_state(body.poly, up, body.s)
+    return st.volume * st.potential
+
+
+def _perturbed(up, a, eps):
+    v = [up[k] + eps * a[k] for k in range(3)]
+    n = math.sqrt(sum(x * x for x in v))
+    return tuple(x / n for x in v)
+
+
+def test_claim_51_stable_tilted_square_energy():
+    # (51) claim "folglich das Gleichgewicht stabil": the potential energy V (z_G - z_B) of the clipped square
+    # prism at its tilt is a (non-strict) minimum: no small turn lowers it, and turning about the prism axis
+    # (the spin family: same tilt, other EF) leaves it unchanged
+    body, ph, st, ev, up, h = M._tilt("square-0", 15)
+    U0 = _potential(body, up)
+    for a in (h, ev, tuple((h[k] + ev[k]) / math.sqrt(2) for k in range(3)),
+              tuple((h[k] - 2 * ev[k]) / math.sqrt(5) for k in range(3))):
+        for eps in (0.02, -0.02, 0.05, -0.05):
+            assert _potential(body, _perturbed(up, a, eps)) >= U0 - 1e-12
+    for turn in (0.1, 0.4, 1.0):
+        assert _potential(body, body.frame(ph, body.alpha + turn)[2]) == pytest.approx(U0, abs=1e-12)
+
+
+def test_claim_43a_unstable_tilt_energy():
+    # the short-axis tilt of the 2 x 1 rectangle (T_1 > T_1^1) is a saddle: a turn about the axis across EF
+    # lowers the clipped potential energy
+    body, ph, st, ev, up, h = M._tilt("rect-short", 15)
+    U0 = _potential(body, up)
+    assert _potential(body, _perturbed(up, ev, 0.05)) < U0 - 1e-6
+
+
+def test_law_counterexample_pinned():
+    # erratum 'law': rectangle 1 x 6/5, b = 5/6, s = 1/2, stable tilt about the long axis turned by omega about
+    # the prism axis: int u v df = (T_x - T_y) sin 2 omega / 2 = (18/125 - 1/10)/2 * sin 2 omega != 0
+    for om in (math.pi / 12, math.pi / 6):
+        assert M._measure("rect-law", "law", 15, om) == pytest.approx((18 / 125 - 1 / 10) / 2 * math.sin(2 * om),
+                                                                    rel=1e-10)
+
+
+def test_face_limits_counterexample_pinned():
+    # erratum (55) / 's-half': equilateral triangle side 1, EF parallel to a side, apex dipping, b = 17/25,
+    # s = 2/5 < 1/2. Clipped geometry: the upper base is reached first, at tan = sqrt 3 b (1 - s) = 51 sqrt3/125
+    # = 0.70668; (55) would allow up to 2 sqrt 3 b s = 68 sqrt 3/125 = 0.94224, and (54) puts tan phi_1 at
+    # sqrt(24 b^2 s (1-s) - 2) = sqrt(10366)/125 = 0.81451, between the two
+    assert M._measure("tri-eq-apex", "first", 15) == pytest.approx(51 * math.sqrt(3) / 125, rel=1e-12)
+    assert M._measure("tri-eq-apex", "top", 15) < M._measure("tri-eq-apex", "bot", 15)
+    printed = float(M.printed55.subs(M._params("tri-eq-apex")))
+    assert printed == pytest.approx(68 * math.sqrt(3) / 125, rel=1e-14)
+    assert 51 * math.sqrt(3) / 125 < math.sqrt(10366) / 125 < printed
+    # apex rising, s = 3/5 > 1/2: the lower base is reached first, at tan = sqrt 3 b s = 51 sqrt3/125
+    assert M._measure("tri-eq-apex-up", "first", 15) == pytest.approx(51 * math.sqrt(3) / 125, rel=1e-12)
+    assert M._measure("tri-eq-apex-up", "bot", 15) < M._measure("tri-eq-apex-up", "top", 15)
+
+
+# ---- mutations -------------------------------------------------------------------------------------------------
+
+def _check_only(name, reading):
+    d = copy.copy(M.DERIVATION)
+    p = next(p for p in d.printed if p.name == name)
+    d.printed = [replace(p, reading=reading)]
+    d.witnesses = []
+    return check_derivation(d, prove=False)
+
+
+def test_mutated_coefficients_are_refuted():
+    t1, c = M.t1, sp.cos(M.phi1)
+    rep = _check_only("54", (t1 ** 2, M.F1 * M.b ** 2 / M.T1 * M.s * (1 - M.s) - 3))      # -2 -> -3
+    assert rep.formulas[0].verdict == "erratum" and any("refuted" in f for f in rep.failures)
+    rep = _check_only("42", (sp.Matrix([M.Tm, M.Tm1]), sp.Matrix([M.T1 / c ** 2, M.T11 / c])))   # cos^3 -> cos^2
+    assert any("refuted" in f for f in rep.failures)
+    rep = _check_only("27", (t1, sp.sqrt(3 * (M.V1 * M.e1 / M.T1 - 1))))                   # 2 -> 3
+    assert any("refuted" in f for f in rep.failures)

@@ -1,0 +1,119 @@
+"""Scheeffer 1902, VI, VI.A, VI.B (derivations/scheeffer_vi_ab.py): recomputed worked examples and
+thresholds, each pinned with its provenance, and a mutation test."""
+import dataclasses
+import math
+
+import pytest
+import sympy as sp
+
+from symfloat.engine.check import check_derivation
+from symfloat.registry import load
+
+import derivations.scheeffer_vi_ab as M
+
+
+def deg(x):
+    return math.degrees(x)
+
+
+# ---- Example 1 (VI.A): a/b at which the upright prism with s = 0.8 is neutral.
+# Closed form sqrt(12 * 0.8 * 0.2) (from (57)); independently the root of the metacentric height of the
+# clipped triangular prism (symfloat.geometry.floating).  Printed: 139/100.
+def test_example_1():
+    assert float(M.ex1_ratio) == pytest.approx(math.sqrt(1.92), abs=1e-14)
+    assert float(M.ex1_ratio_geo(15)) == pytest.approx(1.3856406460551018, abs=1e-10)
+    assert abs(1.3856406460551018 - 1.39) < 0.005
+
+
+# ---- Example 2 (VI.A): a = b; the densities of zero metacentric height (roots of 12 s(1-s) = 1),
+# sympy.solve and the clipped prism.  Printed 0.908 / 0.092, sqrt(0.6667) = 0.8165.
+def test_example_2():
+    up, lo = M.ex2_roots(15)
+    assert float(up) == pytest.approx((1 + math.sqrt(2 / 3)) / 2, abs=1e-10)      # 0.90825
+    assert float(lo) == pytest.approx((1 - math.sqrt(2 / 3)) / 2, abs=1e-10)      # 0.09175
+    assert float(M.s_hi_1) == pytest.approx(0.9082482904638630, abs=1e-14)
+    assert round(2 * float(M.s_hi_1) - 1, 4) == 0.8165
+
+
+# ---- Example 3 (VI.A): s = 2/3, (a/b)^2 = (3/2)(1-s)(9s-1) = 5/2, tan(phi_1) = sqrt(2/15):
+# phi_1 = 20 deg 3' 34.50'' (printed 20 deg 3' 35''); the clipped prism's equilibrium at omega = 60 deg agrees.
+def test_example_3():
+    assert M.Q60_3 == sp.Rational(5, 2)
+    phi = math.atan(math.sqrt(2 / 15))
+    assert deg(phi) == pytest.approx(20 + 3 / 60 + 34.5004 / 3600, abs=1e-7)
+    assert float(M.ex3_angle(15)) == pytest.approx(deg(phi), abs=1e-9)
+    assert abs(math.sqrt(2.5) - 1.58) < 0.005
+
+
+# ---- Example 4 (VI.A): omega = 15 deg, phi_1 = 30 deg; sympy.solve of (67): s = 7/11, a/b = 12 sqrt2/11
+# = sqrt(18)(1-s) = 1.5428 (the transcription's sqrt(181) is an erratum), approx 17/11.
+# The clipped prism at that answer: equilibrium and top-vertex contact both at tan 30 deg.
+def test_example_4():
+    assert M.s4 == sp.Rational(7, 11)
+    assert sp.simplify(M.q4 - 12 * sp.sqrt(2) / 11) == 0
+    eq, contact = M.ex4_check(15)
+    assert float(eq) == pytest.approx(1 / math.sqrt(3), abs=1e-10)
+    assert float(contact) == pytest.approx(1 / math.sqrt(3), abs=1e-10)
+
+
+# ---- Examples 5-7 (VI.B): cylinder thresholds, closed forms and quadrature of the disc.
+def test_examples_5_to_7():
+    assert float(M.sC_hi1) == pytest.approx(0.8535533905932737, abs=1e-14)    # (1 + sqrt 0.5)/2, printed 0.8536
+    assert float(M.sC_lo1) == pytest.approx(0.1464466094067262, abs=1e-14)    # printed 0.1464 and 0.146
+    up, lo = M.ex6_roots(15)
+    assert float(up) == pytest.approx(0.8535533905932737, abs=1e-10)
+    assert float(lo) == pytest.approx(0.1464466094067262, abs=1e-10)
+    # Example 7: the bottom rim meets the water at s = 0.4 - sqrt(0.06) = 0.15505
+    assert float(M.s_b[0]) == pytest.approx(0.4 - math.sqrt(0.06), abs=1e-14)
+    assert float(M.ex7_bottom(15)) == pytest.approx(0.4 - math.sqrt(0.06), abs=1e-9)
+
+
+# ---- Example 10 (VI.B): tan(phi_1) = sqrt(11/32): phi_1 = 30 deg 22' 59.45'' (printed 18 deg 58' 13'' =
+# arctg(11/32): calculation erratum), x = 1.5 + 1.6 sqrt(11/32) = 2.4381 m, x/b = 0.9752, dry part 6.2 cm.
+def test_example_10():
+    phi = math.atan(math.sqrt(11 / 32))
+    assert deg(phi) == pytest.approx(30 + 22 / 60 + 59.448 / 3600, abs=1e-6)
+    assert deg(math.atan(11 / 32)) == pytest.approx(18 + 58 / 60 + 13.468 / 3600, abs=1e-6)
+    angle, x = M.ex10(15)
+    assert float(angle) == pytest.approx(deg(phi), abs=1e-9)
+    assert float(x) == pytest.approx(1.5 + 1.6 * math.sqrt(11 / 32), abs=1e-10)     # 2.43808
+    assert 250 * (1 - float(x) / 2.5) == pytest.approx(6.1917, abs=1e-3)
+
+
+# ---- claims: the triangle's lower base (60-one-base) and region III (65-III-claim)
+def test_claim_counterexamples():
+    # a = b, s = 3/5, omega = 0: lower base meets the water first, tan = 3 sqrt3/5, not 4 sqrt3/5
+    assert float(M.Lbot_cx) == pytest.approx(3 * math.sqrt(3) / 5)
+    assert float(M.Ltop_cx) == pytest.approx(4 * math.sqrt(3) / 5)
+    # s = 11/20, (a/b)^2 = 11/5: righting arm at the first contact (best axis) is negative
+    assert float(M.Delta3) == pytest.approx(-0.0109089663071034, abs=1e-12)
+    assert float(M.ex_III_delta(15)) == pytest.approx(-0.0109089663071034, abs=1e-10)
+
+
+@pytest.fixture(scope="module")
+def report(reports_by_id):
+    return reports_by_id["scheeffer-vi-ab"]
+
+
+def test_module_checks_clean(report):
+    assert report.failures == []
+    verdicts = {f.id.split("/")[1]: f.verdict for f in report.formulas}
+    assert verdicts["ex10-angle"] == "erratum" and verdicts["57"] == "verified"
+    assert sum(v == "erratum" for v in verdicts.values()) == 11
+
+
+def test_mutated_coefficient_is_refuted():
+    """(57) with 12 replaced by 11 must be refuted (and the witness disagrees)."""
+    d, _ = load("scheeffer-vi-ab")
+    printed = []
+    for p in d.printed:
+        if p.name == "57":
+            p = dataclasses.replace(p, reading=((M.a / M.b) ** 2 - 11 * M.s * (1 - M.s), 24 * M.s / M.b * M.hA))
+        if p.name in ("57",) or not p.tolerance:
+            printed.append(p)
+    mutated = dataclasses.replace(d, printed=[p for p in printed if p.name in ("57", "triangle-data")],
+                                  witnesses=[w for w in d.witnesses if w.name == "triangle-upright-57"
+                                             and dataclasses.replace(w, targets=("57",))])
+    mutated.witnesses = [dataclasses.replace(w, targets=("57",)) for w in mutated.witnesses]
+    rep = check_derivation(mutated)
+    assert any("(57)" in f and "refuted" in f for f in rep.failures)
