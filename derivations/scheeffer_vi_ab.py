@@ -1062,3 +1062,320 @@ def ex_III_delta(dps):
 
 cw("region-III-counterexample", "righting arm at the first base contact, clipped prism", ("65-III-claim",),
    one, lambda c, dps: ex_III_delta(dps))
+
+
+# =====================================================================================================
+# Witnesses for the limits (61)-(65), (71)-(73) and examples 3, 4, 8, 9
+# =====================================================================================================
+def _polish(fs, x0, dps):
+    """Refine a float solution x0 of the system fs (functions of the same unknowns) at dps digits: Newton steps
+    with a forward-difference Jacobian (step 1e-(dps/2))."""
+    if dps <= 15:
+        return x0
+    x = [mpmath.mpf(v) for v in x0]
+    h = mpmath.mpf(10) ** (-(dps // 2))
+    for _ in range(8):
+        F = fs(*x)
+        cols = []
+        for j in range(len(x)):
+            xj = list(x)
+            xj[j] += h
+            cols.append([(fj - f0) / h for fj, f0 in zip(fs(*xj), F)])
+        J = mpmath.matrix([[cols[j][i] for j in range(len(x))] for i in range(len(x))])
+        dx = mpmath.lu_solve(J, mpmath.matrix(F))
+        x = [xi - dx[i] for i, xi in enumerate(x)]
+        if max(abs(v) for v in dx) < mpmath.mpf(10) ** (-dps - 3):
+            break
+    return tuple(x)
+
+
+def two_stage(make, lo, step, dps, bracket=None):
+    """Root of make(dps): located at float precision (scan from lo, or the bracket), then refined by secant steps."""
+    with mpmath.workdps(15):
+        f15 = make(15)
+        x0 = _root(f15, lo, step) if bracket is None else mpmath.findroot(f15, bracket, solver="anderson")
+    if dps <= 15:
+        return x0
+    x0 = mpmath.mpf(x0)
+    return mpmath.findroot(make(dps), (x0, x0 * (1 + mpmath.mpf(10) ** -9)), solver="secant")
+
+
+def _tri_at(q_, s_, w_, phi, dps, flip):
+    return _cached(("tt", q_, s_, w_, phi, dps, flip), lambda: triangle_tilt(mpmath.sqrt(q_), 1, s_, w_, phi, dps, flip))
+
+
+def clipped_boundary(s_, w_, which, flip, dps):
+    """(a/b)^2 (b = 1) at which the clipped prism's tilted equilibrium reaches the contact of a base (which = 2:
+    top, 3: bottom) for the axis w_: the righting arm at the contact tilt vanishes.  Float: nested roots with
+    scanning; more digits: Newton on (righting arm, clearance) from the float solution."""
+    def key():
+        with mpmath.workdps(15):
+            sf, wf = mpmath.mpf(float(s_)), mpmath.mpf(float(w_))
+            qh = 12 * sf * (1 - sf)
+            def arm_at_contact(q_):
+                t_ = triangle_contact(mpmath.sqrt(q_), 1, sf, wf, 15, which, flip)
+                return triangle_tilt(mpmath.sqrt(q_), 1, sf, wf, mpmath.atan(t_), 15, flip)[0]
+            q0 = mpmath.findroot(arm_at_contact, (qh / 2, qh * mpmath.mpf("0.999")), solver="anderson")
+            p0 = mpmath.atan(triangle_contact(mpmath.sqrt(q0), 1, sf, wf, 15, which, flip))
+        return _polish(lambda q_, p_: [triangle_tilt(mpmath.sqrt(q_), 1, s_, w_, p_, dps, flip)[k] for k in (0, which)],
+                       (q0, p0), dps)[0]
+    return _cached(("cb", s_, w_, which, flip, dps), key)
+
+
+def q60_pair(case, dps):
+    """The clipped boundaries at omega = 60 deg: top base (vertex B dipping) and bottom base (B rising)."""
+    s_ = _n(case.params[s], dps)
+    w_ = mpmath.pi / 3
+    return clipped_boundary(s_, w_, 2, False, dps), clipped_boundary(s_, w_, 3, True, dps)
+
+
+def _qq(case, dps):
+    return (_n(case.params[a], dps) / _n(case.params[b], dps)) ** 2
+
+
+q60_cases = [Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20)}, label="s = 0.55, (a/b)^2 = 2.25"),
+             Case({a: 3, b: 2, s: sp.Rational(9, 20)}, label="s = 0.45, (a/b)^2 = 2.25")]
+cw("triangle-omega60-boundaries", "(a/b)^2 minus the (a/b)^2 at which the clipped prism's equilibrium reaches the "
+   "upper base (B dipping) / lower base (B rising) at omega = 60 deg (righting arm zero at the contact)",
+   ("62", "62-step-3"), q60_cases[:1], lambda c, dps: tuple(_qq(c, dps) - v for v in q60_pair(c, dps)))
+cw("triangle-omega60-boundary-twice", "twice the same margin (top base)", ("62-step-1", "62-step-2"), q60_cases[:1],
+   lambda c, dps: 2 * (_qq(c, dps) - q60_pair(c, dps)[0]))
+cw("triangle-region-II", "-24 s/b times the clipped upright metacentric height, and the two clipped omega = 60 deg "
+   "margins", ("65-II",), q60_cases[:1],
+   lambda c, dps: (-24 * _n(c.params[s], dps) / _n(c.params[b], dps) * tri_gm(c, dps)[0],)
+   + tuple(_qq(c, dps) - v for v in q60_pair(c, dps)))
+ex3_q = lambda dps: clipped_boundary(_n(sp.Rational(2, 3), dps), mpmath.pi / 3, 2, False, dps)
+cw("example-3-boundary", "(a/b)^2 at which the clipped prism (s = 2/3) has its equilibrium at the upper-base "
+   "contact, omega = 60 deg", ("ex3-ratio-squared", "ex3-condition"), [Case({s: sp.Rational(2, 3)})],
+   lambda c, dps: ex3_q(dps))
+cw("example-3-ratio", "its root a/b", ("ex3-ratio", "ex3-ratio-fraction"), one, lambda c, dps: mpmath.sqrt(ex3_q(dps)))
+
+
+def ex4_solve(dps):
+    """(s, a/b) at which the clipped prism tilted by 30 deg about the axis omega = 15 deg is in equilibrium with
+    the upper base just touching the water."""
+    def key():
+        w_, p_ = mpmath.pi / 12, mpmath.pi / 6
+        with mpmath.workdps(15):
+            def q_of(s_):
+                return mpmath.findroot(lambda q_: triangle_tilt(q_, 1, s_, w_, p_, 15)[2], (1, 2), solver="anderson")
+            s0 = mpmath.findroot(lambda s_: triangle_tilt(q_of(s_), 1, s_, w_, p_, 15)[0],
+                                 (mpmath.mpf("0.55"), mpmath.mpf("0.75")), solver="anderson")
+            q0 = q_of(s0)
+        return _polish(lambda s_, q_: [triangle_tilt(q_, 1, s_, w_, p_, dps)[k] for k in (0, 2)], (s0, q0), dps)
+    return _cached(("ex4s", dps), key)
+
+
+cw("example-4-density", "density of the clipped prism in equilibrium at 30 deg with the upper base touching "
+   "(omega = 15 deg)", ("ex4-density",), one, lambda c, dps: ex4_solve(dps)[0])
+cw("example-4-ratio", "a/b of the same clipped solution", ("ex4-ratio", "ex4-ratio-value"), one,
+   lambda c, dps: ex4_solve(dps)[1])
+
+
+# ---- the first-region model of the triangle by quadrature (no base cut, column heights may pass the bases) --
+_GL = None
+
+
+def _gauss3(dps):
+    r = mpmath.sqrt(mpmath.mpf(3) / 5)
+    return [((1 - r) / 2, mpmath.mpf(5) / 18), (mpmath.mpf(1) / 2, mpmath.mpf(8) / 18), ((1 + r) / 2, mpmath.mpf(5) / 18)]
+
+
+def model_tilt(a_, b_, s_, w_, tau, dps, flip=False):
+    """Triangle of edge a_ (B, C, A as in the text), axis PQ at omega = w_, B on the dipping side (flip: rising),
+    water plane z = c + xi tau over the base with the column heights integrated by a collapsed 3x3 Gauss rule
+    (exact for these polynomials); c from the volume s F b.  Returns (righting arm, top clearance, bottom
+    clearance): the clearances are b minus the highest water height at a vertex and the lowest water height."""
+    t3 = mpmath.sqrt(3)
+    P = [(-a_ / 2, -a_ / (2 * t3)), (a_ / 2, -a_ / (2 * t3)), (mpmath.mpf(0), a_ / t3)]
+    sg = -1 if flip else 1
+    n = (-sg * mpmath.sin(w_), -sg * mpmath.cos(w_))
+    xi = lambda X_, Y_: X_ * n[0] + Y_ * n[1]
+    (x0, y0), (x1, y1), (x2, y2) = P
+    J = abs((x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0))
+    g = _gauss3(dps)
+
+    def integ(f):
+        tot = 0
+        for uu, wu in g:
+            for vv, wv in g:
+                X_ = x0 + uu * (x1 - x0) + uu * vv * (x2 - x1)
+                Y_ = y0 + uu * (y1 - y0) + uu * vv * (y2 - y1)
+                tot += wu * wv * uu * J * f(X_, Y_)
+        return tot
+    F = integ(lambda X_, Y_: 1)
+    c = (s_ * F * b_ - tau * integ(xi)) / F
+    col = lambda X_, Y_: c + xi(X_, Y_) * tau
+    V = integ(col)
+    Mxi = integ(lambda X_, Y_: xi(X_, Y_) * col(X_, Y_))
+    Mz = integ(lambda X_, Y_: col(X_, Y_) ** 2 / 2)
+    phi = mpmath.atan(tau)
+    arm = (mpmath.cos(phi) * Mxi + mpmath.sin(phi) * (Mz - V * b_ / 2)) / V
+    heights = [col(*p) for p in P]
+    return arm, b_ - max(heights), min(heights)
+
+
+def model_eq(q_, s_, dps):
+    """tan phi_1 of the model (b = 1): the first root of the righting arm."""
+    return _cached(("meq", q_, s_, dps), lambda: two_stage(
+        lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, 0, t_, p)[0]), mpmath.mpf("0.02"), mpmath.mpf("0.1"), dps))
+
+
+def model_contact(q_, s_, w_, which, flip, dps):
+    return two_stage(lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, w_, t_, p, flip)[which]),
+                     mpmath.mpf("0.02"), mpmath.mpf("0.1"), dps)
+
+
+def model_boundary(s_, w_, which, flip, dps):
+    """(a/b)^2 at which the model's equilibrium tangent equals its contact tangent for the axis w_."""
+    qh = 12 * s_ * (1 - s_)
+    make = lambda p: (lambda q_: model_tilt(mpmath.sqrt(q_), 1, s_, w_, model_eq(q_, s_, p), p, flip)[which])
+    return _cached(("mb", s_, w_, which, flip, dps),
+                   lambda: two_stage(make, 0, 0, dps, bracket=(qh / 10, qh * mpmath.mpf("0.999"))))
+
+
+def model_sin_bound(q_, s_, which, flip, dps):
+    """sin(30 deg + omega) of the axis at which the model's contact tangent equals its equilibrium tangent."""
+    t1_ = model_eq(q_, s_, dps)
+    w_ = mpmath.findroot(lambda w: model_tilt(mpmath.sqrt(q_), 1, s_, w, t1_, dps, flip)[which],
+                         (mpmath.mpf(0), mpmath.pi / 3), solver="anderson")
+    return mpmath.sin(mpmath.pi / 6 + w_)
+
+
+def _qs(c, dps):
+    return _qq(c, dps), _n(c.params[s], dps)
+
+
+def sin_bounds(c, dps):
+    q_, s_ = _qs(c, dps)
+    return _cached(("sb", q_, s_, dps), lambda: (model_sin_bound(q_, s_, 1, False, dps), model_sin_bound(q_, s_, 2, True, dps)))
+
+
+def model_q(c, dps, w_, which, flip):
+    return model_boundary(_qs(c, dps)[1], w_, which, flip, dps)
+
+
+cw("model-61", "sin(30 deg + omega) of the axis where the first-region model's upper-base (B dipping) / lower-base "
+   "(B rising) contact tangent equals its equilibrium tangent (Gauss quadrature over the triangle, roots)",
+   ("61",), q60_cases, sin_bounds)
+cw("model-65-III-omega", "the same, squared", ("65-III-omega",), q60_cases, lambda c, dps: tuple(v ** 2 for v in sin_bounds(c, dps)))
+cw("model-61-from-60", "the model's equilibrium tangent and upper-base contact tangent at the case's axis",
+   ("61-from-60",), [Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20), om: sp.Rational(3, 10)}),
+                     Case({a: 3, b: 2, s: sp.Rational(7, 10), om: 1})],
+   lambda c, dps: (model_eq(_qs(c, dps)[0], _qs(c, dps)[1], dps),
+                   model_contact(_qs(c, dps)[0], _qs(c, dps)[1], _n(c.params[om], dps), 1, False, dps)))
+
+
+def q0_pair(c, dps):
+    return model_q(c, dps, 0, 1, False), model_q(c, dps, 0, 2, True)
+
+
+def q60_model_pair(c, dps):
+    return model_q(c, dps, mpmath.pi / 3, 1, False), model_q(c, dps, mpmath.pi / 3, 2, True)
+
+
+cw("model-omega0-63", "half of the (a/b)^2 at which the model's equilibrium meets the upper (B dipping) / lower "
+   "(B rising) base contact at omega = 0, minus half of (a/b)^2", ("63",), q60_cases,
+   lambda c, dps: tuple((v - _qq(c, dps)) / 2 for v in q0_pair(c, dps)))
+cw("model-omega0-64", "the same margins, not halved", ("64",), q60_cases,
+   lambda c, dps: tuple(v - _qq(c, dps) for v in q0_pair(c, dps)))
+cw("model-region-III", "the model's boundaries at omega = 60 deg and 0 against (a/b)^2", ("65-III",), q60_cases,
+   lambda c, dps: (q60_model_pair(c, dps)[0] - _qq(c, dps), _qq(c, dps) - q0_pair(c, dps)[0],
+                   q60_model_pair(c, dps)[1] - _qq(c, dps), _qq(c, dps) - q0_pair(c, dps)[1]))
+
+
+# ---- the cylinder: quadrature model (as cylinder_tilt) -----------------------------------------------------
+def cyl_contact(r_, b_, s_, which, dps):
+    """tan of the tilt at which the water height c + r tan(phi) on the dipping generator reaches the top (which = 'top')
+    or c - r tan(phi) on the rising one reaches the bottom; c by quadrature (cylinder_tilt)."""
+    def make(p):
+        if which == "top":
+            return lambda f: b_ - (cylinder_tilt(r_, b_, s_, f, p)[1] + r_ * mpmath.tan(f))
+        return lambda f: cylinder_tilt(r_, b_, s_, f, p)[1] - r_ * mpmath.tan(f)
+    return mpmath.tan(two_stage(make, mpmath.mpf("0.02"), mpmath.mpf("0.1"), dps))
+
+
+def cyl_eq(r_, b_, s_, dps):
+    """tan phi_1: the first root of the quadrature righting arm (float scan, then secant steps)."""
+    return mpmath.tan(two_stage(lambda p: (lambda f: cylinder_tilt(r_, b_, s_, f, p)[0]), mpmath.mpf("0.02"),
+                                mpmath.mpf("0.05"), dps))
+
+
+def cyl_limits(c, dps):
+    r_, b_, s_ = P(c, dps, r, b, s)
+    return _cached(("cl", r_, b_, s_, dps), lambda: (cyl_contact(r_, b_, s_, "top", dps), cyl_contact(r_, b_, s_, "bottom", dps),
+                                                   cyl_eq(r_, b_, s_, dps)))
+
+
+cw("cylinder-contacts", "contact tangents of the upper and lower base (quadrature)", ("72a",), tiltc_cases[:1],
+   lambda c, dps: cyl_limits(c, dps)[:2])
+cw("cylinder-contact-margins", "squared contact tangents minus the squared equilibrium tangent (quadrature)",
+   ("72a-squared",), tiltc_cases[:1], lambda c, dps: tuple(v ** 2 - cyl_limits(c, dps)[2] ** 2 for v in cyl_limits(c, dps)[:2]))
+
+
+def _k2(c, dps):
+    return (2 * _n(c.params[r], dps) / _n(c.params[b], dps)) ** 2
+
+
+cw("cylinder-73", "-16 s/b times the metacentric height, and (2r/b)^2/2 times the squared-tangent margins (quadrature)",
+   ("73",), tiltc_cases[:1],
+   lambda c, dps: (-16 * _n(c.params[s], dps) / _n(c.params[b], dps) * cylinder_gm(*P(c, dps, r, b, s), dps),)
+   + tuple((v ** 2 - cyl_limits(c, dps)[2] ** 2) * _k2(c, dps) / 2 for v in cyl_limits(c, dps)[:2]))
+
+
+def cyl_density_roots(c, dps):
+    r_, b_ = P(c, dps, r, b)
+    f = lambda s_: cylinder_gm(r_, b_, s_, dps)
+    return _cached(("cdr", r_, b_, dps), lambda: (_root(f, mpmath.mpf("0.5"), mpmath.mpf("0.05")),
+                                                 _root(f, mpmath.mpf("0.005"), mpmath.mpf("0.02"))))
+
+
+cw("cylinder-71", "densities at which the upright cylinder's metacentric height (quadrature) vanishes", ("71",),
+   [Case({r: sp.Rational(3, 5), b: 1}), Case({r: 1, b: 3})], cyl_density_roots)
+
+
+def cyl_ratio_threshold(b_, s_, dps):
+    """(2r/b)^2 at which the upright cylinder (quadrature) has zero metacentric height."""
+    r0 = _root(lambda r_: cylinder_gm(r_, b_, s_, dps), b_ / 100, b_ / 20) if b_ <= 1 else \
+        b_ * _root(lambda r_: cylinder_gm(r_, 1, s_, dps), mpmath.mpf(1) / 100, mpmath.mpf(1) / 20)
+    return (2 * r0 / b_) ** 2
+
+
+cw("example-8-values", "(2r/b)^2 of the data and the (2r/b)^2 of zero metacentric height at s = 3/4 (quadrature)",
+   ("ex8-values",), one, lambda c, dps: ((mpmath.mpf(2 * 30) / 40) ** 2, cyl_ratio_threshold(mpmath.mpf(40), mpmath.mpf(3) / 4, dps)))
+cw("example-9-values", "2r/b, (2r/b)^2 of the data and the threshold (2r/b)^2 at s = 0.8 (quadrature)", ("ex9-values",),
+   one, lambda c, dps: (mpmath.mpf(2 * 15) / 40, (mpmath.mpf(2 * 15) / 40) ** 2,
+                        cyl_ratio_threshold(mpmath.mpf(40), mpmath.mpf(4) / 5, dps)))
+
+
+def ex9_bound(dps):
+    """(2r/b)^2 (b = 1, s = 0.8) at which the quadrature equilibrium reaches the upper-base contact."""
+    s_ = mpmath.mpf(4) / 5
+    make = lambda p: (lambda r_: cylinder_tilt(r_, 1, s_, mpmath.atan(cyl_contact(r_, 1, s_, "top", p)), p)[0])
+    r0 = two_stage(make, 0, 0, dps, bracket=(mpmath.mpf("0.2"), mpmath.mpf("0.7")))
+    return (2 * r0) ** 2
+
+
+cw("example-9-bound", "(2r/b)^2 at which the tilted equilibrium of the cylinder (s = 0.8) meets the upper base",
+   ("ex9-bound",), one, lambda c, dps: _cached(("ex9b", dps), lambda: ex9_bound(dps)),
+   methods=(Precision(15, 1e-10), Precision(30, 1e-25)))
+
+
+def ex8_signs(dps):
+    r_, b_, s_ = mpmath.mpf(30), mpmath.mpf(40), mpmath.mpf(3) / 4
+    top = cyl_contact(r_, b_, s_, "top", dps)
+    arms = [cylinder_tilt(r_, b_, s_, mpmath.atan(top * k / 8), dps)[0] for k in range(1, 9)]
+    return mpmath.sign(cylinder_gm(r_, b_, s_, dps)), mpmath.sign(min(arms))
+
+
+def ex9_signs(dps):
+    r_, b_, s_ = mpmath.mpf(15), mpmath.mpf(40), mpmath.mpf(4) / 5
+    top = cyl_contact(r_, b_, s_, "top", dps)
+    t1_ = cyl_eq(r_, b_, s_, dps)
+    return mpmath.sign(cylinder_gm(r_, b_, s_, dps)), mpmath.sign(top - t1_)
+
+
+cw("example-8-claim", "signs of the upright metacentric height and of the smallest righting arm on 8 tilts up to the "
+   "upper-base contact (quadrature)", ("ex8-claim",), one, lambda c, dps: ex8_signs(dps))
+cw("example-9-claim", "signs of the upright metacentric height and of (contact tangent - equilibrium tangent) "
+   "(quadrature)", ("ex9-claim",), one, lambda c, dps: ex9_signs(dps))

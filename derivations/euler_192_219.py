@@ -1,0 +1,887 @@
+"""Euler, Scientia navalis (1749), Cap. III "De stabilitate situs aequilibrii", §§192–219.
+
+English summary, paragraph by paragraph group:
+
+* §§192–200: a floating ship must not only be in equilibrium but stable; the stability
+  against a small inclination about a horizontal axis is the restoring moment divided by
+  the (infinitely small) angle.  It must be judged about every horizontal axis; the
+  longitudinal axis (stern to bow) and the latitudinal axis (across) are the principal
+  ones.  Only the waterplane depends on the axis; weight, volume and the distance between
+  the centre of gravity and the centre of buoyancy do not.
+* §201: with weight M, displaced volume V and distance b between the centre of gravity and
+  the centre of buoyancy, the stability about the axis AB through the centroid C of the
+  waterplane is M(∫(PM³ + PN³)Pp/(3V) ± b), + when G lies below B.
+* §§202–203: ∫(PM³ + PN³)Pp/3 is the second moment ("momentum") of the waterplane about AB:
+  the strip Pp of half-widths PM, PN contributes Pp·∫w²dw = Pp(PM³ + PN³)/3.  With I, K the
+  moments about the longitudinal and the latitudinal axis the stabilities are M(I/V + b),
+  M(K/V + b).
+* §§204–209: the moment about an axis PQ through C making with AB an angle of sine m,
+  cosine n, is m²∫x² + n²∫y² − 2mn∫xy; the moments about two perpendicular axes add up to
+  I + K (the polar moment about C).  For a waterplane symmetric about AB, ∫xy = 0, so the
+  moment about PQ is n²I + m²K = I + m²(K − I): the least moment is about AB, the greatest
+  about EF (when K > I), and at 45° it is (I + K)/2.
+* §210: when I = K every axis through C has the same moment (the square).
+* §211: the moments are computed quadrant by quadrant: (1/3)∫y³dx about AB, ∫yx²dx about EF.
+* §212: square of half-side a: moment 4a⁴/3 = AB⁴/12 = AB²D/6 about every axis (area 2D).
+* §213: rectangle 2a × 2b: I = EF²D/6, K = AB²D/6.
+* §214: rhombus with diagonals 2a, 2b: I = EF²D/12, K = AB²D/12, half the rectangle's.
+* §§215–216: the quadrilateral of two isosceles triangles eAf, eBf on a common base ef
+  (Ac = a, ce = b, Bc = c): the centroid C lies (c − a)/3 from c; I = ef²D/12; the moment
+  about ef is D(a² − ac + c²)/3.
+* §217: parallel-axis rule: the moment about EF through C is L − 2D·Cc², L the moment
+  about the parallel ef.
+* §218: hence the quadrilateral's moment about EF is D(a² + ac + c²)/9
+  = D·AB²/12 + D·Cc²/4, larger than for the rhombus of the same length and breadth.
+* §219: the ellipse with semi-axes a, b: K = AB²D/8, I = EF²D/8.
+
+Witnesses: every moment is computed by two-dimensional quadrature over the figure itself
+(nested ``mpmath.quad`` at 50 digits, and fixed-order Gauss–Legendre in float64; for the
+ellipse the float64 rule runs in elliptic polar coordinates).
+"""
+import mpmath
+import numpy as np
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, Computed
+
+x, y, w, s, r = sp.symbols("x y w s r", real=True)
+a, b, c = sp.symbols("a b c", positive=True)
+m = sp.Symbol("m", positive=True)
+n, t, u = sp.symbols("n t u", real=True)
+PM, PN, Pp = sp.symbols("PM PN Pp", positive=True)
+Mw, V, h = sp.symbols("M V b_{GB}", positive=True)
+Iw, Kw, Q, Q2, GMlo, GMhi, GKlo, GKhi = sp.symbols("I_w K_w Q_{AB} Q_{EF} GM_- GM_+ GK_- GK_+")
+Slo, Shi, SKlo, SKhi = sp.symbols("S_{AB-} S_{AB+} S_{EF-} S_{EF+}")
+l = sp.Symbol("l", positive=True)  # the letter the transcription prints for I in §208
+X1, Y1, X2, Y2, xe = sp.symbols("x_1 y_1 x_2 y_2 x_e", real=True)
+
+DERIVATION = d = Derivation(
+    id="euler-192-219",
+    source="euler",
+    title="Stability about any horizontal axis; moments of waterplanes (Euler, Scientia navalis III §§192–219)",
+    locator="§192–§219",
+    summary="Stability M(I/V ± b) about any horizontal axis (§201–203); the moment about an oblique "
+            "axis, the invariant sum I + K and the extreme axes (§205–209); equal principal moments "
+            "(§210); square, rectangle, rhombus, the quadrilateral of two isosceles triangles with its "
+            "centroid and the parallel-axis rule, and the ellipse (§212–219). Every moment is derived by "
+            "integration over the figure and witnessed by two-dimensional quadrature.",
+    requires=("scheeffer-vi-cf",),
+    domain={a: (1, 3), b: (sp.Rational(1, 2), 2), c: (1, 3), m: (sp.Rational(1, 10), sp.Rational(9, 10)),
+            x: (-2, 2), y: (-2, 2), w: (-2, 2), s: (0, 1), r: (0, 1),
+            PM: (1, 3), PN: (1, 3), Pp: (sp.Rational(1, 10), 1), Mw: (1, 5), V: (1, 5), h: (0, 2),
+            Iw: (1, 5), Kw: (1, 5), l: (1, 2),
+            X1: (-2, -1), Y1: (-1, 1), X2: (1, 3), Y2: (2, 3), xe: (-1, 3)},
+    assumptions=("lengths a, b, c and the half-widths PM, PN are positive",
+                 "m = sin ACP with 0 < m < 1, n = cos ACP = sqrt(1 - m^2)",
+                 "b_{GB} >= 0 is Euler's distance b between the centre of gravity G and the centre of "
+                 "buoyancy B (§201); the sign in front of it says whether G lies below (+) or above (-) B",
+                 "the generic figure of §205 and §217 is a rectangle [x_1, x_2] x [y_1, y_2] placed anywhere; the "
+                 "rules are linear in the figure, so they hold for every union of rectangles and, in the limit, "
+                 "every figure",
+                 "the quadrilateral of §215: A at the origin, e = (a, b), B = (a + c, 0), f = (a, -b)"),
+)
+
+# ---------------------------------------------------------------- regions (SymPy)
+
+
+def tri(f):
+    """∫∫ f(x, y) over the generic figure: the rectangle x_1 <= x <= x_2, y_1 <= y <= y_2, placed
+    anywhere (not centred on the origin, so that ∫xy ≠ 0)."""
+    return sp.Integral(f, (y, Y1, Y2), (x, X1, X2))
+
+
+h1, h2 = b * x / a, b * (a + c - x) / c          # half-widths of the quadrilateral of §215
+
+
+def kite(f, lo=None):
+    """∫∫ f over the quadrilateral A e B f (or its upper half when lo == 0)."""
+    l1, l2 = (-h1, -h2) if lo is None else (0, 0)
+    return (sp.Integral(f, (y, l1, h1), (x, 0, a)) + sp.Integral(f, (y, l2, h2), (x, a, a + c)))
+
+
+def rect(f, A, B):
+    return sp.Integral(f, (y, -B, B), (x, -A, A))
+
+
+def rhomb(f):
+    return (sp.Integral(f, (y, -b * (x + a) / a, b * (x + a) / a), (x, -a, 0))
+            + sp.Integral(f, (y, -b * (a - x) / a, b * (a - x) / a), (x, 0, a)))
+
+
+Yel = b * sp.sqrt(1 - x ** 2 / a ** 2)
+
+
+rho, th = sp.symbols("rho theta", positive=True)
+
+
+def ell(f, quadrant=False):
+    """∫∫ f over the ellipse (or its quadrant ACE) in elliptic polar coordinates x = a rho cos(theta),
+    y = b rho sin(theta), dx dy = a b rho drho dtheta (SymPy integrates these at once; the Cartesian
+    form of the print is checked against them in the quote)."""
+    g = sp.sympify(f).xreplace({x: a * rho * sp.cos(th), y: b * rho * sp.sin(th)}) * a * b * rho
+    return sp.Integral(g, (rho, 0, 1), (th, 0, sp.pi / 2 if quadrant else 2 * sp.pi))
+
+
+def integral_step(name, S, integral, note="", uses=()):
+    """S is defined by an integral over the figure; the step carries it out, and the closed value
+    (checked against the integral by the engine) becomes S's value for the later steps and readings."""
+    value = sp.factor(sp.sympify(integral).doit())
+    return d.step(name, (S, integral, value), "integration", uses=uses, note=note, result=S)
+
+
+def claim(text):
+    return "The paragraph claims: " + text
+
+
+# ================================================================ §§192–203: stability
+d.step("stability-definition", sp.Eq(Slo, Mw * GMlo), "definition", result=Slo,
+       note="§194: the stability is the restoring moment divided by the small angle of inclination; the "
+            "restoring moment is the weight M times the righting arm GM*phi; here for G at the depth b below B")
+d.step("stability-definition-G-above", sp.Eq(Shi, Mw * GMhi), "definition", result=Shi,
+       note="the same for G at the height b above B")
+d.step("stability-definition-EF", sp.Eq(SKlo, Mw * GKlo), "definition", result=SKlo)
+d.step("stability-definition-EF-G-above", sp.Eq(SKhi, Mw * GKhi), "definition", result=SKhi)
+d.step("metacentric-height-G-below", sp.Eq(GMlo, Iw / V + h), "lemma",
+       uses=("scheeffer-vi-cf:upright-metacentric-height",), result=GMlo,
+       note="GM = T/V - e with T the moment of the waterplane about the axis and e the height of G above B; "
+            "here e = -b")
+d.step("metacentric-height-G-above", sp.Eq(GMhi, Iw / V - h), "lemma",
+       uses=("scheeffer-vi-cf:upright-metacentric-height",), result=GMhi, note="e = +b")
+d.step("metacentric-height-EF-G-below", sp.Eq(GKlo, Kw / V + h), "lemma",
+       uses=("scheeffer-vi-cf:upright-metacentric-height",), result=GKlo,
+       note="the same about the latitudinal axis EF, whose waterplane moment is K_w")
+d.step("metacentric-height-EF-G-above", sp.Eq(GKhi, Kw / V - h), "lemma",
+       uses=("scheeffer-vi-cf:upright-metacentric-height",), result=GKhi)
+d.step("strip-moment", (sp.Integral(Pp * w ** 2, (w, -PN, PM)), Pp * (PM ** 3 + PN ** 3) / 3), "integration",
+       note="§202: the strip Pp between the ordinates PN (one side of AB) and PM (the other) has the "
+            "second moment Pp ∫ w^2 dw about AB")
+d.step("strip-moment-one-side", (sp.Integral(Pp * w ** 2, (w, 0, PM)), PM ** 3 * Pp / 3), "integration")
+d.step("sum-of-cubes-AB", sp.Eq(Q, 3 * Iw), "definition", uses=("strip-moment",), result=Q,
+       note="Q denotes ∫(PM^3 + PN^3)Pp; summing strip-moment over all strips Pp, Q/3 is the second "
+            "moment I_w of the waterplane about AB (§202)")
+d.step("sum-of-cubes-EF", sp.Eq(Q2, 3 * Kw), "definition", uses=("strip-moment",), result=Q2,
+       note="the same with the ordinates QM, QN to EF")
+
+d.quote("stability-AB", "§201",
+        r"$= M \left(\frac{\int (PM^3 + PN^3) Pp}{3V} \pm b \right)$",
+        reading=(sp.Matrix([Slo, Shi]), sp.Matrix([Mw * (Q / (3 * V) + h), Mw * (Q / (3 * V) - h)])),
+        note=claim("the stability about the axis AB through the waterplane's centroid is "
+                   "M(∫(PM³+PN³)Pp/(3V) ± b), + when the centre of gravity lies below the centre of "
+                   "buoyancy. Read as the pair (G below B, G above B); b is written b_{GB}."))
+d.quote("stability-EF", "§201",
+        r"$= M \left(\frac{\int (QM^3 + QN^3) Qq}{3V} \pm b \right)$",
+        reading=(sp.Matrix([SKlo, SKhi]), sp.Matrix([Mw * (Q2 / (3 * V) + h), Mw * (Q2 / (3 * V) - h)])),
+        note=claim("the stability about the latitudinal axis EF is the same expression with the ordinates "
+                   "QM, QN drawn to EF."))
+d.quote("strip-moment", "§202", r"$\frac{PM^3 \cdot Pp}{3}$",
+        reading=(sp.Integral(Pp * w ** 2, (w, 0, PM)), PM ** 3 * Pp / 3),
+        note=claim("the particle Pp·dw at distance w from AB, times w², integrated up to M, gives PM³·Pp/3, "
+                   "so ∫(PM³+PN³)Pp/3 is the sum of the particles times their squared distances from AB."))
+d.quote("stability-I", "§203", r"$M(\frac{I}{v} + b)$",
+        reading=(Slo, Mw * (Iw / V + h)),
+        note=claim("with I the moment of the waterplane about the longitudinal axis, the stability about it "
+                   "is M(I/V + b). The transcription prints v for V and only the + of §201's ±: read as the "
+                   "case of §201 with G below B (b counted positive downwards)."))
+d.quote("stability-K", "§203", r"$M(\frac{K}{v} + b)$",
+        reading=(SKlo, Mw * (Kw / V + h)),
+        note=claim("the stability about the latitudinal axis EF is M(K/V + b)."))
+
+# ================================================================ §205–206: oblique axis, generic figure
+d.step("cosine", sp.Eq(n, sp.sqrt(1 - m ** 2)), "definition", result=n,
+       note="§205: m = sin ACP, n = cos ACP, m^2 + n^2 = 1")
+d.step("axis-coordinate-t", sp.Eq(t, sp.Matrix([x, y]).dot(sp.Matrix([n, m]))), "definition", result=t,
+       note="t = Cq is the projection of Cw on the axis PQ of direction (n, m)")
+d.step("axis-coordinate-u", sp.Eq(u, sp.Matrix([x, y]).dot(sp.Matrix([m, -n]))), "definition", result=u,
+       note="u = wq is the signed distance of w from PQ, the projection on the unit normal (m, -n)")
+d.step("pythagoras", (t ** 2 + u ** 2, x ** 2 + y ** 2), "algebra", uses=("axis-coordinate-t", "axis-coordinate-u", "cosine"))
+d.step("sine-from-coordinates", ((x * u + y * t) / (x ** 2 + y ** 2), m), "algebra", uses=("axis-coordinate-t", "axis-coordinate-u", "cosine"))
+d.step("cosine-from-coordinates", ((x * t - y * u) / (x ** 2 + y ** 2), n), "algebra",
+       uses=("axis-coordinate-t", "axis-coordinate-u", "cosine"))
+d.quote("unit-circle", "§205", r"ita ut sit $m^2 + n^2 = 1$", reading=(m ** 2 + n ** 2, 1),
+        note=claim("sine and cosine of the angle ACP satisfy m² + n² = 1 (the whole sine being 1)."))
+d.quote("pythagoras", "§205", r"erit tt + uu $= xx + yy$", reading=sp.Eq(t ** 2 + u ** 2, x ** 2 + y ** 2),
+        note=claim("the distances of a particle from C measured in either frame agree: t² + u² = x² + y²."))
+d.quote("sine", "§205", r"$\frac{xy+yt}{xx+yy} = m$", reading=sp.Eq((x * y + y * t) / (x ** 2 + y ** 2), m),
+        erratum=Erratum(
+            "transcription", "medium", r"\frac{xu+yt}{xx+yy} = m",
+            "With t = nx + my, u = mx - ny (printed next) x u + y t = m(x^2 + y^2), whereas x y + y t is not "
+            "m(x^2 + y^2) (counterexample below). The companion formula (xt - yu)/(xx+yy) = n is printed "
+            "correctly with u; a u read as y by the OCR (the letters are close in the italic of 1749). A "
+            "printer's slip cannot be excluded from the transcription alone, hence medium.",
+            corrected_reading=sp.Eq((x * u + y * t) / (x ** 2 + y ** 2), m)),
+        note=claim("the sine of the angle between the axes is (xu + yt)/(x² + y²)."))
+d.quote("cosine", "§205", r"$\frac{xt-yu}{xx+yy} = n$", reading=sp.Eq((x * t - y * u) / (x ** 2 + y ** 2), n),
+        note=claim("the cosine of the angle between the axes is (xt − yu)/(x² + y²)."))
+d.quote("rotated-coordinates", "§205", r"$u = mx - ny$ et $t = nx + my$",
+        reading=sp.Eq(sp.Matrix([u, t]), sp.Matrix([m * x - n * y, n * x + m * y])),
+        note=claim("solving these relations gives u = mx − ny and t = nx + my."))
+
+IT, KT, JT, PT, RT = sp.symbols("I_T K_T J_T P_T R_T")
+integral_step("generic-I", IT, tri(y ** 2),
+       note="generic figure (a rectangle off the origin): I = ∫ y^2 w, the moment about the axis AB (y = 0)")
+integral_step("generic-K", KT, tri(x ** 2), note="K = ∫ x^2 w about EF (x = 0)")
+integral_step("generic-J", JT, tri(x * y), note="the product integral ∫ xy w")
+integral_step("generic-PQ", PT, tri((m * x - n * y) ** 2),
+       note="the moment about PQ: ∫ w u^2 with u = mx - ny from axis-coordinates")
+integral_step("generic-RS", RT, tri((n * x + m * y) ** 2),
+       note="the moment about RS ⟂ PQ: ∫ w t^2")
+d.step("generic-PQ-expanded", (PT, m ** 2 * KT + n ** 2 * IT - 2 * m * n * JT), "integration",
+       uses=("generic-I", "generic-K", "generic-J", "generic-PQ"))
+d.step("generic-RS-expanded", (RT, n ** 2 * KT + m ** 2 * IT + 2 * m * n * JT), "integration",
+       uses=("generic-I", "generic-K", "generic-J", "generic-RS"))
+d.step("generic-sum", (PT + RT, IT + KT, tri(x ** 2 + y ** 2)), "integration",
+       uses=("generic-PQ-expanded", "generic-RS-expanded", "cosine"),
+       note="§206: the sum is the polar moment ∫ w·wC^2 about C, independent of the angle")
+d.quote("moment-PQ", "§205",
+        r"$= \int w \cdot u^2 = \int w (mx - ny)^2 = m^2 \int xx \cdot w + n^2 \int yy \cdot w - 2mn \int xy \cdot w$",
+        reading=(PT, tri((m * x - n * y) ** 2), m ** 2 * tri(x * x) + n ** 2 * tri(y * y) - 2 * m * n * tri(x * y)),
+        note=claim("the moment about the oblique axis PQ is ∫w·u² = m²∫x²w + n²∫y²w − 2mn∫xyw."))
+d.quote("moment-RS", "§205",
+        r"$= \int w \cdot t^2 = n^2 \int x^2 \cdot w + m^2 \int y^2 \cdot w + 2mn \int xy \cdot w$",
+        reading=(RT, tri((n * x + m * y) ** 2), n ** 2 * tri(x ** 2) + m ** 2 * tri(y ** 2) + 2 * m * n * tri(x * y)),
+        note=claim("the moment about the axis RS perpendicular to PQ is n²∫x²w + m²∫y²w + 2mn∫xyw."))
+d.quote("moment-PQ-IK", "§206", r"$= n^2 \cdot I + m^2 \cdot K - 2mn \int xy \cdot w$",
+        reading=(PT, n ** 2 * IT + m ** 2 * KT - 2 * m * n * JT),
+        note=claim("with I = ∫y²w and K = ∫x²w the moment about PQ is n²I + m²K − 2mn∫xyw."))
+d.quote("moment-RS-IK", "§206", r"$= m^2 I + n^2 K + 2mn \int yx \cdot w$",
+        reading=(RT, m ** 2 * IT + n ** 2 * KT + 2 * m * n * JT),
+        note=claim("the moment about RS is m²I + n²K + 2mn∫yxw."))
+d.quote("sum-invariant", "§206", r"erit $= I + K$ ob",
+        reading=(PT + RT, IT + KT),
+        note=claim("the moments about any two perpendicular axes through C add up to I + K, the sum of the "
+                   "particles times their squared distances from C."))
+
+# ================================================================ §215–216: the quadrilateral (also the symmetric figure of §207)
+Dk, xC, Cc, Ce, Ik, Lk, K, I = sp.symbols("D_q x_C Cc Ce I_q L_q K I")
+IAce, IBce, LAce, LBce = sp.symbols("I_{Ace} I_{Bce} L_{Ace} L_{Bce}")
+integral_step("quad-area", Dk, kite(1) / 2, note="2D is the area (§212)")
+d.step("quad-area-value", (Dk, (a + c) * b / 2), "integration", uses=("quad-area",))
+integral_step("quad-centroid", xC, kite(x) / kite(1),
+       note="abscissa of the centroid C measured from A")
+d.step("quad-centroid-value", (xC, (2 * a + c) / 3), "integration", uses=("quad-centroid",))
+d.step("Cc", sp.Eq(Cc, xC - a), "definition", result=Cc, note="Cc, counted from c towards B")
+d.step("Cc-value", (Cc, (c - a) / 3), "algebra", uses=("Cc", "quad-centroid-value"))
+d.step("moment-balance", (kite(x - a), 2 * Dk * Cc, c * b * c / 3 - a * b * a / 3), "integration",
+       uses=("quad-area", "Cc"),
+       note="first moment about ef: the triangle eBf (area Bc·ce, centroid Bc/3 beyond c) minus eAf "
+            "(area Ac·ce, centroid Ac/3 before c)")
+d.step("Ce", sp.Eq(Ce, sp.sqrt(Cc ** 2 + b ** 2)), "definition", result=Ce,
+       note="the distance from C to the vertex e = (a, b)")
+d.quote("centroid-equation", "§215",
+        r"$AB \cdot ce : Cb = Bc \cdot ce : \frac{1}{3} Bc - Ac \cdot ce : \frac{1}{3} Ac$",
+        reading=sp.Eq((a + c) * b / Cc, c * b / (c / 3) - a * b / (a / 3)),
+        erratum=Erratum(
+            "transcription", "medium", r"AB \cdot ce \cdot Cc = Bc \cdot ce \cdot \frac{1}{3} Bc - Ac \cdot ce \cdot \frac{1}{3} Ac",
+            "The balance of first moments about ef (area AB·ce times Cc equals the triangle eBf, area "
+            "Bc·ce, times Bc/3 minus eAf times Ac/3) is what the next printed line solves for Cc. Read with "
+            "the colons as divisions the print is false (its right side vanishes). The colons are the "
+            "multiplication dots of the print read as ':' and 'Cb' is the distance Cc (there is no point b "
+            "in Tab. IX fig. 2); medium, since only the transcription is available.",
+            corrected_reading=sp.Eq((a + c) * b * Cc, c * b * c / 3 - a * b * a / 3)),
+        note=claim("the nature of the centroid gives the balance AB·ce·Cc = Bc·ce·Bc/3 − Ac·ce·Ac/3 "
+                   "(read with Ac = a, ce = b, Bc = c, AB = a + c)."))
+d.quote("centroid", "§215", r"$Ce = \frac{ce(Bc^2 - Ac^2)}{3 AB \cdot ce} = \frac{Bc - Ac}{3}$",
+        reading=(Ce, b * (c ** 2 - a ** 2) / (3 * (a + c) * b), (c - a) / 3),
+        erratum=Erratum(
+            "transcription", "medium", r"Cc = \frac{ce(Bc^2 - Ac^2)}{3 AB \cdot ce} = \frac{Bc - Ac}{3}",
+            "The quantity solved for is the distance Cc between the centroid C and the foot c of the "
+            "breadth ef (§217 ends with L - 2D·Cc^2, §218 uses it as the distance of EF from ef). Ce, the "
+            "distance from C to the vertex e, is sqrt(Cc^2 + ce^2), not (Bc - Ac)/3. An italic c read as e, "
+            "as in D·Ce^2/4 of §218.",
+            corrected_reading=(Cc, b * (c ** 2 - a ** 2) / (3 * (a + c) * b), (c - a) / 3)),
+        note=claim("the centroid C lies at the distance Cc = (Bc − Ac)/3 from c, towards the longer part."))
+
+integral_step("quad-I", Ik, kite(y ** 2), note="moment about AB")
+integral_step("Ace-I", IAce, sp.Integral(y ** 2, (y, 0, h1), (x, 0, a)),
+       note="triangle Ace (x from 0 to a, y from 0 to PM = bx/a) about AB")
+integral_step("Bce-I", IBce, sp.Integral(y ** 2, (y, 0, h2), (x, a, a + c)))
+d.step("Ace-I-value", (IAce, sp.Integral(h1 ** 3, (x, 0, a)) / 3, a * b ** 3 / 12), "integration", uses=("Ace-I",))
+d.step("Bce-I-value", (IBce, c * b ** 3 / 12), "integration", uses=("Bce-I",))
+d.step("quad-I-value", (Ik, 2 * IAce + 2 * IBce, (a + c) * b ** 3 / 6), "integration",
+       uses=("quad-I", "Ace-I-value", "Bce-I-value"), note="the halves below AB mirror those above")
+integral_step("Ace-L", LAce, sp.Integral((x - a) ** 2, (y, 0, h1), (x, 0, a)),
+       note="triangle Ace about ef (x = a)")
+integral_step("Bce-L", LBce, sp.Integral((x - a) ** 2, (y, 0, h2), (x, a, a + c)))
+integral_step("quad-L", Lk, kite((x - a) ** 2), note="moment about ef")
+d.step("quad-L-value", (Lk, 2 * LAce + 2 * LBce, (a ** 3 + c ** 3) * b / 6, Dk * (a ** 2 - a * c + c ** 2) / 3),
+       "integration", uses=("quad-L", "Ace-L", "Bce-L", "quad-area-value"))
+Ye = sp.Symbol("y_{AE}")
+d.step("edge-AE", sp.Eq(Ye, 0 + (b - 0) * (x - 0) / (a - 0)), "definition", result=Ye,
+       note="the side from A = (0, 0) to e (or E) = (a, b) (AP = x from A): two-point form of the line")
+d.quote("Ace-edge", "§216", r"$PM = \frac{bx}{a} = y$", reading=(Ye, b * x / a),
+        note=claim("in the triangle Ace the ordinate is PM = bx/a."))
+d.quote("Ace-cubes", "§216", r"$\int y^2 dx = \frac{ab^3}{4}$",
+        reading=(sp.Integral(h1 ** 2, (x, 0, a)), a * b ** 3 / 4),
+        erratum=Erratum(
+            "transcription", "low", r"\int y^3 dx = \frac{ab^3}{4}",
+            "With y = bx/a, ∫_0^a y^2 dx = ab^2/3, while ∫_0^a y^3 dx = ab^3/4, and a third of it is the "
+            "printed moment ab^3/12 of the next line (the moment of a quadrant about AB is (1/3)∫y^3dx, "
+            "§211). The exponent 3 read as 2, or a misprint of 1749: the transcription cannot tell, low.",
+            corrected_reading=(sp.Integral(h1 ** 3, (x, 0, a)), a * b ** 3 / 4)),
+        note=claim("for the triangle Ace, with PM = bx/a, ∫y³dx = ab³/4."))
+d.quote("Ace-I", "§216", r"$= \frac{ab^3}{12}$", reading=(IAce, a * b ** 3 / 12),
+        note=claim("the triangle Ace has the moment ab³/12 about AB."))
+d.quote("Bce-I", "§216", r"$Bce = \frac{cb^3}{12}$", reading=(IBce, c * b ** 3 / 12),
+        note=claim("the triangle Bce has the moment cb³/12 about AB."))
+d.quote("quad-I", "§216", r"$= \frac{ab^3 + cb^3}{6} = \frac{Dbb}{3} = \frac{ef^2 \cdot D}{12}$",
+        reading=(Ik, (a * b ** 3 + c * b ** 3) / 6, Dk * b ** 2 / 3, (2 * b) ** 2 * Dk / 12),
+        note=claim("the whole quadrilateral has the moment (ab³ + cb³)/6 = Db²/3 = ef²·D/12 about AB, as the "
+                   "rhombus (ef = 2b)."))
+d.quote("Ace-L", "§216", r"$= \frac{a^3 b}{12}$", reading=(LAce, a ** 3 * b / 12),
+        note=claim("about ef the triangle Ace has the moment a³b/12."))
+d.quote("Bce-L", "§216", r"$Bce = \frac{c^3 b}{12}$", reading=(LBce, c ** 3 * b / 12),
+        note=claim("about ef the triangle Bce has the moment c³b/12."))
+d.quote("quad-L", "§216", r"$= \frac{a^3 b + c^3 b}{6} = \frac{D(ac + bc + cc)}{3}$",
+        reading=(Lk, (a ** 3 * b + c ** 3 * b) / 6, Dk * (a * c + b * c + c * c) / 3),
+        erratum=Erratum(
+            "transcription", "medium", r"= \frac{a^3 b + c^3 b}{6} = \frac{D(aa - ac + cc)}{3}",
+            "(a^3 + c^3) b/6 = (a + c) b (a^2 - ac + c^2)/6 = D(a^2 - ac + c^2)/3 with 2D = (a + c) b. §218 "
+            "quotes this very result as D(aa-ac+cc)/3, so Euler had it right; 'ac + bc + cc' is a garbled "
+            "'aa - ac + cc' (a letter and a sign lost).",
+            corrected_reading=(Lk, (a ** 3 * b + c ** 3 * b) / 6, Dk * (a * a - a * c + c * c) / 3)),
+        note=claim("the whole quadrilateral has the moment (a³b + c³b)/6 = D(a² − ac + c²)/3 about ef."))
+
+# ================================================================ §217: parallel axes (generic figure)
+DT, xCT, LT, KTe, Nn = sp.symbols("D_T x_{CT} L_T K_{ET} Nn")
+integral_step("generic-area", DT, tri(1) / 2)
+integral_step("generic-centroid", xCT, tri(x) / tri(1))
+integral_step("generic-L", LT, tri((x - xe) ** 2),
+       note="moment about a line ef: x = x_e; the distance of a particle is wn = x - x_e")
+integral_step("generic-EF", KTe, tri((x - xCT) ** 2),
+       note="moment about the parallel EF through C: wN = x - x_C")
+d.step("axis-distance", sp.Eq(Nn, xe - xCT), "definition", result=Nn, note="wn = wN - Nn")
+d.step("first-moment-vanishes", (tri(x - xCT), 0), "integration", uses=("generic-centroid",))
+d.step("parallel-axes", (LT, KTe + 2 * DT * Nn ** 2), "integration",
+       uses=("generic-L", "generic-EF", "axis-distance", "first-moment-vanishes", "generic-area"))
+d.quote("parallel-expansion", "§217",
+        r"$w n^2 = \int w \cdot w N^2 - 2Nn \int w \cdot w N + Nn^2 \int w$",
+        reading=(LT, tri((x - xCT) ** 2) - 2 * Nn * tri(x - xCT) + Nn ** 2 * tri(1)),
+        note=claim("since wn = wN − Nn, ∫w·wn² = ∫w·wN² − 2Nn∫w·wN + Nn²∫w."))
+d.quote("first-moment", "§217", "$\\int w \\cdot w N$ utrinque sese de-\n struit fitque $= 0$",
+        reading=(tri(x - xCT), 0),
+        note=claim("because EF passes through the centroid, ∫w·wN cancels out and is 0."))
+d.quote("area-2D", "§217", r"atque $\int w$ abit in aream figurae $= 2D$", reading=(tri(1), 2 * DT),
+        note=claim("∫w is the area of the figure, 2D."))
+d.quote("parallel-axis-rule", "§217", r"$- 2D \cdot Nn^2 = L - 2D \cdot Cc^2$",
+        reading=(KTe, LT - 2 * DT * Nn ** 2, LT - 2 * DT * sp.Abs(xe - xCT) ** 2),
+        note=claim("the moment about the axis EF through the centroid is L − 2D·Nn² = L − 2D·Cc², L being the "
+                   "moment about the parallel axis ef and Cc their distance (the excerpt continues '= L')."))
+
+# ================================================================ §218: the quadrilateral about EF
+integral_step("quad-K", K, kite((x - xC) ** 2), note="moment about EF through C")
+d.step("quad-K-parallel", (K, Lk - 2 * Dk * Cc ** 2), "lemma", uses=("parallel-axes", "quad-L", "Cc"),
+       note="§217 applied to the quadrilateral")
+d.step("quad-K-value", (K, Dk * (a ** 2 + a * c + c ** 2) / 9), "integration", uses=("quad-K", "quad-area-value"))
+d.step("quad-K-excess", (K - Dk * (a + c) ** 2 / 12, Dk * (c - a) ** 2 / 36), "algebra",
+       uses=("quad-K-value",),
+       note="D·AB^2/12 is the rhombus of the same length AB = a + c and breadth ef = 2b (same D); the excess "
+            "D(c-a)^2/36 >= 0 vanishes only for Ac = Bc: Euler's claim of §218 holds")
+d.quote("quad-L-again", "§218", r"inuentum sit $= \frac{D(aa-ac+cc)}{3}$",
+        reading=(Lk, Dk * (a * a - a * c + c * c) / 3),
+        note=claim("the moment about ef was found to be D(a² − ac + c²)/3."))
+d.quote("Cc-again", "§218", r"$Cb = \frac{c-a}{3}$", reading=(Cc, (c - a) / 3),
+        note=claim("EF lies at the distance (c − a)/3 from ef. The transcription prints Cb; the figure has no "
+                   "point b and the distance meant is Cc (read so)."))
+d.quote("quad-K", "§218",
+        "EF $= \\frac{D(aa-ac+cc)}{3} -$\n $\\frac{2D(c-a)^2}{9} = \\frac{D(aa+ac+cc)}{9} = \\frac{D(a+c)^2}{12} "
+        "+ \\frac{D(c-a)^2}{36} = \\frac{D \\cdot AB^2}{12} + \\frac{D \\cdot Ce^2}{4}$",
+        reading=(K, Dk * (a * a - a * c + c * c) / 3 - 2 * Dk * (c - a) ** 2 / 9, Dk * (a * a + a * c + c * c) / 9,
+                 Dk * (a + c) ** 2 / 12 + Dk * (c - a) ** 2 / 36, Dk * (a + c) ** 2 / 12 + Dk * Ce ** 2 / 4),
+        erratum=Erratum(
+            "transcription", "medium",
+            r"= \frac{D \cdot AB^2}{12} + \frac{D \cdot Cc^2}{4}",
+            "D(c-a)^2/36 = D·Cc^2/4 with Cc = (c-a)/3; Ce (C to the vertex e) would add D·ce^2/4. The same "
+            "c read as e as in Ce = (Bc - Ac)/3 of §215; all other members are right.",
+            corrected_reading=(K, Dk * (a * a - a * c + c * c) / 3 - 2 * Dk * (c - a) ** 2 / 9,
+                               Dk * (a * a + a * c + c * c) / 9, Dk * (a + c) ** 2 / 12 + Dk * (c - a) ** 2 / 36,
+                               Dk * (a + c) ** 2 / 12 + Dk * Cc ** 2 / 4)),
+        note=claim("by the rule of §217 the moment about EF is D(a² + ac + c²)/9 = D·AB²/12 + D·Cc²/4, larger "
+                   "than for equal parts Ac = Bc."))
+
+d.quote("quad-K-larger", "§218", "Maius igitur est momentum huius figurae respectu axis\n latitudinalis EF, quam si esset $Ac = Bc$",
+        reading=(K - Dk * (a + c) ** 2 / 12, Dk * (c - a) ** 2 / 36),
+        note=claim("the moment about EF exceeds that of the figure with Ac = Bc (the rhombus of the same "
+                   "length and breadth, D·AB²/12) by D(c − a)²/36 ≥ 0; read as this excess, a square."))
+
+# ================================================================ §207–210: symmetric figure (the quadrilateral about C)
+PS, RS_, P45 = sp.symbols("P_S R_S P_{45}")
+Xc = x - xC
+d.step("symmetric-product", (sp.Integral(y, (y, -w ** 2 - 1, w ** 2 + 1)), 0), "integration",
+       note="§207: across any chord symmetric about AB (half-width w^2 + 1 > 0 stands for any) ∫ y dy = 0, "
+            "so ∫ xy w = 0 for every figure symmetric about AB")
+d.step("quad-product", (kite(Xc * y), 0), "integration", uses=("symmetric-product",))
+integral_step("sym-PQ", PS, kite((m * Xc - n * y) ** 2),
+       note="moment of the quadrilateral about PQ through C (u = mX - ny, X = x - x_C)")
+integral_step("sym-RS", RS_, kite((n * Xc + m * y) ** 2))
+d.step("sym-PQ-value", (PS, n ** 2 * Ik + m ** 2 * K), "integration",
+       uses=("sym-PQ", "quad-product", "quad-I", "quad-K", "generic-PQ-expanded"))
+d.step("sym-PQ-monotone", (PS, Ik + m ** 2 * (K - Ik), K - n ** 2 * (K - Ik)), "algebra", uses=("sym-PQ-value",),
+       note="§209: PQ's moment exceeds I by m^2 (K - I) and falls short of K by n^2 (K - I): for K > I every "
+            "axis through C has a moment between I (axis AB, least) and K (axis EF, greatest), increasing "
+            "with the angle")
+d.step("sym-PQ-derivative", (sp.Derivative(Ik + m ** 2 * (K - Ik), m), 2 * m * (K - Ik)), "algebra")
+d.step("equal-moments", ((Ik + m ** 2 * (K - Ik)).subs(K, Ik), Ik), "algebra",
+       note="§210: I = K makes every axis through C equal")
+integral_step("sym-45", P45, kite(((Xc - y) / sp.sqrt(2)) ** 2),
+       note="PQ at 45 degrees: m = n = 1/sqrt(2)")
+d.step("sym-45-value", (P45, (Ik + K) / 2, kite(((Xc + y) / sp.sqrt(2)) ** 2)), "integration",
+       uses=("sym-45", "quad-product"), note="the arithmetic mean, equal to the moment about RS")
+d.quote("moment-PQ-symmetric", "§207", r"$= n^2 \cdot I + m^2 \cdot K$,",
+        reading=(PS, n ** 2 * Ik + m ** 2 * K),
+        note=claim("because a waterplane is symmetric about AB, ∫yxw vanishes and the moment about PQ is "
+                   "n²I + m²K (here for the quadrilateral of §215 about its centroid)."))
+d.quote("moment-RS-symmetric", "§207", r"$= m^2 \cdot I + n^2 \cdot K$;",
+        reading=(RS_, m ** 2 * Ik + n ** 2 * K),
+        note=claim("and the moment about RS is m²I + n²K."))
+d.quote("moment-PQ-restated", "§207", r"$= n^2 \cdot I + m^2 \cdot K - 2mn \int yx \cdot w$, id ex datis",
+        reading=(PT, n ** 2 * IT + m ** 2 * KT - 2 * m * n * JT),
+        note=claim("the moment about PQ, n²I + m²K − 2mn∫yxw, is known from I and K once ∫yxw is known "
+                   "(restating §206, checked on the generic figure)."))
+d.quote("cosine-squared", "§208", r"$nn = 1 - mm$", reading=sp.Eq(n * n, 1 - m * m),
+        note=claim("since nn = 1 − mm the moment can be written with m alone."))
+d.quote("axis-AB", "§208", r"prodibit momentum respectu eius $= I$ ob $m = 0$",
+        reading=(kite((0 * Xc - 1 * y) ** 2), Ik),
+        note=claim("for m = 0 (PQ along AB) the moment is I."))
+d.quote("axis-EF", "§208", r"ob $m = 1$, fiet momentum eius respectu $= K$",
+        reading=(kite((1 * Xc - 0 * y) ** 2), K),
+        note=claim("for m = 1 (PQ along EF) the moment is K."))
+d.quote("moment-PQ-sine", "§208", r"$= l - m^2 (I - K)$",
+        reading=(PS, l - m ** 2 * (Ik - K)),
+        erratum=Erratum(
+            "transcription", "high", r"= I - m^2 (I - K)",
+            "n^2 I + m^2 K with n^2 = 1 - m^2 is I - m^2 (I - K); the print's 'l' is the capital I read as a "
+            "lower-case l (the same letter in (l+K)/2 below; m = 0 gives I, as the text says).",
+            corrected_reading=(PS, Ik - m ** 2 * (Ik - K))),
+        note=claim("with nn = 1 − mm the moment about PQ is I − m²(I − K): I for m = 0, K for m = 1."))
+d.quote("half-right", "§208", r"$m = \frac{1}{\sqrt{2}}$", reading=(sp.sin(sp.pi / 4), 1 / sp.sqrt(2)),
+        note=claim("for the semi-right angle the sine is 1/√2."))
+d.quote("moment-45", "§208", r"$= \frac{l+K}{2}$", reading=(P45, (l + K) / 2),
+        erratum=Erratum(
+            "transcription", "high", r"= \frac{I+K}{2}",
+            "I - (1/2)(I - K) = (I + K)/2, 'the arithmetic mean between the moments about the principal "
+            "axes' as the text says; 'l' is the I read as l, as in l - m^2(I - K) above.",
+            corrected_reading=(P45, (Ik + K) / 2)),
+        note=claim("at 45° the moment is (I + K)/2, the arithmetic mean, equal to the moment about RS."))
+d.quote("moment-PQ-increasing", "§209", r"$= I + m^2 (K - I)$",
+        reading=(PS, Ik + m ** 2 * (K - Ik)),
+        note=claim("when K > I the moment about PQ is I + m²(K − I): it grows from I about AB (the least) to K "
+                   "about EF (the greatest)."))
+
+# ================================================================ §212 square
+Dsq, Isq, Ksq, Psq = sp.symbols("D_{sq} I_{sq} K_{sq} P_{sq}")
+integral_step("square-area", Dsq, rect(1, a, a) / 2)
+integral_step("square-I", Isq, rect(y ** 2, a, a))
+integral_step("square-K", Ksq, rect(x ** 2, a, a))
+integral_step("square-PQ", Psq, rect((m * x - n * y) ** 2, a, a))
+d.step("square-I-value", (Isq, 4 * sp.Integral(sp.Integral(y ** 2, (y, 0, a)), (x, 0, a)), 4 * a ** 4 / 3),
+       "integration", uses=("square-I",), note="four equal quadrants, each (1/3)∫y^3 dx with y = a (§211)")
+d.step("square-equal", (Psq, Ksq, Isq), "integration", uses=("square-PQ", "square-K", "square-I", "cosine"),
+       note="§210/§212: the square has the same moment about every axis through C")
+Iqs, Kqs = sp.symbols("I_{sqq} K_{sqq}")
+integral_step("square-quadrant-I", Iqs, sp.Integral(y ** 2, (y, 0, a), (x, 0, a)), note="the quadrant ACE about AB")
+integral_step("square-quadrant-K", Kqs, sp.Integral(x ** 2, (y, 0, a), (x, 0, a)), note="the quadrant ACE about EF")
+d.quote("square-cubes", "§212", r"$\int y^3 dx = a^4$", reading=(sp.Integral(a ** 3, (x, 0, a)), a ** 4),
+        note=claim("for the quadrant of the square (y = a, x from 0 to a) ∫y³dx = a⁴."))
+d.quote("square-quadrant-I", "§212", r"$\frac{1}{3} \int y^3 dx = \frac{a^4}{3}$",
+        reading=(Iqs, sp.Integral(a ** 3, (x, 0, a)) / 3, a ** 4 / 3),
+        note=claim("the quadrant's moment about AB is (1/3)∫y³dx = a⁴/3."))
+d.quote("square-quadrant-K", "§212", r"$\int y x^2 dx = \frac{ax^3}{3} = \frac{a^4}{3}$",
+        reading=(Kqs, sp.Integral(a * x ** 2, (x, 0, a)),
+                 (a * x ** 3 / 3).subs(x, a), a ** 4 / 3),
+        note=claim("the quadrant's moment about EF is ∫yx²dx = ax³/3, at x = a equal to a⁴/3 (the middle "
+                   "member read at the end x = a)."))
+d.quote("square-I", "§212", r"$= \frac{4a^4}{3} = \frac{AB^4}{12}$",
+        reading=(Isq, 4 * a ** 4 / 3, (2 * a) ** 4 / 12),
+        note=claim("the square's moment about AB (AB = 2a) is 4a⁴/3 = AB⁴/12, and so about EF and about every "
+                   "axis through C."))
+d.quote("square-area", "§212", r"erit $AB^2 = 2D$", reading=sp.Eq((2 * a) ** 2, 2 * Dsq),
+        note=claim("the square's area 2D is AB²."))
+d.quote("square-D", "§212", r"$= \frac{AB^2 \cdot D}{6} =$", reading=(Isq, (2 * a) ** 2 * Dsq / 6),
+        note=claim("hence the quantity about every axis through C is AB²·D/6. Euler calls it the "
+                   "'stabilitas'; it is the moment of the waterplane (the stability is M(moment/V ± b)), "
+                   "read as the moment."))
+
+# ================================================================ §213 rectangle
+Dre, Ire, Kre = sp.symbols("D_{re} I_{re} K_{re}")
+integral_step("rect-area", Dre, rect(1, a, b) / 2)
+integral_step("rect-I", Ire, rect(y ** 2, a, b))
+integral_step("rect-K", Kre, rect(x ** 2, a, b))
+d.step("rect-I-value", (Ire, 4 * sp.Integral(b ** 3, (x, 0, a)) / 3, 4 * a * b ** 3 / 3), "integration",
+       uses=("rect-I",))
+d.step("rect-ratio", (Ire / Kre, (2 * b) ** 2 / (2 * a) ** 2), "integration", uses=("rect-I", "rect-K"),
+       note="§213: I : K = EF^2 : AB^2, inversely as the squares of the axes")
+d.quote("rect-area", "§213", r"$2D = 4ab$", reading=sp.Eq(2 * Dre, 4 * a * b),
+        note=claim("the rectangle with AC = a, CE = b has the area 2D = 4ab."))
+d.quote("rect-cubes", "§213", r"$\int y^3 dx = b^3 x$", reading=(sp.Integral(b ** 3, (s, 0, x)), b ** 3 * x),
+        note=claim("with PM = y = b, ∫y³dx = b³x up to the abscissa CP = x."))
+d.quote("rect-I", "§213", r"$= \frac{4ab^3}{3} = \frac{2D \cdot bb}{3} = \frac{EF^2 \cdot D}{6}$",
+        reading=(Ire, 4 * a * b ** 3 / 3, 2 * Dre * b * b / 3, (2 * b) ** 2 * Dre / 6),
+        note=claim("the rectangle's moment about AB is 4ab³/3 = 2D·b²/3 = EF²·D/6."))
+d.quote("rect-K", "§213", r"latitudinalis $= \frac{AB^2 \cdot D}{6}$", reading=(Kre, (2 * a) ** 2 * Dre / 6),
+        note=claim("and about EF it is AB²·D/6, so the two moments are inversely as the squares of the axes."))
+
+# ================================================================ §214 rhombus
+Drh, Irh, Krh = sp.symbols("D_{rh} I_{rh} K_{rh}")
+integral_step("rhombus-area", Drh, rhomb(1) / 2)
+integral_step("rhombus-I", Irh, rhomb(y ** 2))
+integral_step("rhombus-K", Krh, rhomb(x ** 2))
+d.step("rhombus-I-value", (Irh, 4 * sp.Integral((b * s / a) ** 3, (s, 0, a)) / 3, a * b ** 3 / 3), "integration",
+       uses=("rhombus-I",), note="four quadrants, AP = s from the vertex A, PM = bs/a")
+d.step("rhombus-quarter-of-rectangle", (Ire / Irh, Kre / Krh, 4), "integration",
+       uses=("rect-I", "rect-K", "rhombus-I", "rhombus-K"),
+       note="with the same length AB = 2a and breadth EF = 2b the rectangle's moments are four times the "
+            "rhombus' (its area 2D is also twice as large)")
+d.step("rhombus-half-at-equal-area", ((2 * b) ** 2 * sp.Symbol("D") / 6 / ((2 * b) ** 2 * sp.Symbol("D") / 12), 2),
+       "algebra", note="the factor 2 holds between EF^2 D/6 and EF^2 D/12 at the same D, i.e. for the same "
+                       "length, breadth and area, which the two figures cannot share")
+d.quote("rhombus-edge", "§214", r"erit $y = \frac{bx}{a}$", reading=(Ye, b * x / a),
+        note=claim("on the side AE, with AP = x, the ordinate is PM = y = bx/a."))
+d.quote("rhombus-area", "§214", r"area $2D = 2ab$", reading=sp.Eq(2 * Drh, 2 * a * b),
+        note=claim("the rhombus with diagonals 2a, 2b has the area 2D = 2ab."))
+d.quote("rhombus-cubes", "§214", r"$\int y^3 dx = \frac{b^3}{a^3} \int x^3 dx = \frac{b^3 x^4}{4a^3}$",
+        reading=(sp.Integral((b * s / a) ** 3, (s, 0, x)), b ** 3 / a ** 3 * sp.Integral(s ** 3, (s, 0, x)),
+                 b ** 3 * x ** 4 / (4 * a ** 3)),
+        note=claim("with y = bx/a (AP = x from A), ∫y³dx = b³x⁴/(4a³)."))
+d.quote("rhombus-I", "§214", r"AB $= \frac{ab^3}{3} = \frac{D \cdot bb}{3} = \frac{EF^2 \cdot D}{12}$",
+        reading=(Irh, a * b ** 3 / 3, Drh * b * b / 3, (2 * b) ** 2 * Drh / 12),
+        note=claim("the rhombus' moment about AB is ab³/3 = D·b²/3 = EF²·D/12."))
+d.quote("rhombus-twice", "§214",
+        "Manentibus igitur eadem longitudine ac latitudine, momenta parallelogrammi rectanguli duplo sunt "
+        "maiora quam rhombi.",
+        reading=sp.Eq(sp.Matrix([Ire / Irh, Kre / Krh]), sp.Matrix([2, 2])),
+        erratum=Erratum(
+            "claim", "high",
+            "With the same length AB and breadth EF the moments of the rectangle are four times those of "
+            "the rhombus (4ab^3/3 against ab^3/3); the factor two (divisor 6 against 12) holds only at "
+            "equal area 2D, which a rectangle and a rhombus of the same length and breadth do not have "
+            "(4ab against 2ab).",
+            "Integrating over both figures with AC = a, CE = b: I_rect = 4ab^3/3, I_rhomb = ab^3/3, "
+            "K_rect = 4a^3b/3, K_rhomb = a^3b/3. Euler compared the coefficients of EF^2 D and AB^2 D and "
+            "forgot that D itself doubles; a wrong conclusion, not a misprint.",
+            corrected_reading=sp.Eq(sp.Matrix([Ire / Irh, Kre / Krh]), sp.Matrix([4, 4]))),
+        note=claim("keeping the same length and breadth, the rectangle's moments are twice the rhombus'."))
+d.quote("rhombus-K", "§214", r"EF erit $= \frac{AB^2 \cdot D}{12}$", reading=(Krh, (2 * a) ** 2 * Drh / 12),
+        note=claim("about EF it is AB²·D/12: the denominators 12 instead of the rectangle's 6."))
+
+# ================================================================ §219 ellipse
+Del, Iel, Kel, Kq, Aq, Yq = sp.symbols("D_{el} I_{el} K_{el} K_{qu} A_{qu} Y_{el}")
+d.step("ellipse-ordinate", sp.Eq(Yq, Yel), "definition", result=Yq, note="PM = y on the ellipse")
+d.step("ellipse-equation", (x ** 2 / a ** 2 + Yq ** 2 / b ** 2, 1), "algebra", uses=("ellipse-ordinate",))
+integral_step("ellipse-area", Del, ell(1) / 2)
+d.step("ellipse-area-value", (Del, sp.pi * a * b / 2), "integration", uses=("ellipse-area",))
+integral_step("ellipse-quadrant-K", Kq, ell(x ** 2, quadrant=True))
+integral_step("ellipse-quadrant-area", Aq, ell(1, quadrant=True))
+integral_step("ellipse-K", Kel, ell(x ** 2))
+integral_step("ellipse-I", Iel, ell(y ** 2))
+d.step("ellipse-K-quadrants", (Kel, 4 * Kq, sp.pi * a ** 3 * b / 4), "integration",
+       uses=("ellipse-K", "ellipse-quadrant-K"))
+d.step("ellipse-I-value", (Iel, sp.pi * a * b ** 3 / 4), "integration", uses=("ellipse-I",))
+d.quote("ellipse-ordinate", "§219", r"$y = b \sqrt{1 - \frac{x^2}{a^2}}$", reading=(Yq, b * sp.sqrt(1 - x ** 2 / a ** 2)),
+        note=claim("the ellipse with semi-axes AC = a, CE = b has the ordinate y = b√(1 − x²/a²)."))
+d.quote("ellipse-quadrant-K", "§219",
+        r"$\int b x x dx \sqrt{1 - \frac{x^2}{a^2}} = \frac{a^2 b}{4} \int dx \sqrt{1 - \frac{x^2}{a^2}}$",
+        reading=(sp.Integral(b * x * x * sp.sqrt(1 - x ** 2 / a ** 2), (x, 0, a)),
+                 a ** 2 * b / 4 * sp.Integral(sp.sqrt(1 - x ** 2 / a ** 2), (x, 0, a))),
+        note=claim("the quadrant ACE has the moment ∫bx²√(1 − x²/a²)dx = (a²b/4)∫√(1 − x²/a²)dx about CE "
+                   "(integrals from 0 to a)."))
+d.quote("ellipse-quadrant-area", "§219", r"elliptici ACE = $\frac{\pi}{4}$", reading=(Aq, sp.pi / 4),
+        erratum=Erratum(
+            "transcription", "low", r"= \frac{\pi ab}{4} = \frac{D}{2}",
+            "b∫_0^a sqrt(1 - x^2/a^2) dx = pi ab/4 is the quadrant's area; the next line (moment a^2 D/8 = "
+            "(a^2/4)(D/2)) uses the quadrant area D/2 = pi ab/4. The factor ab (or the D/2 Euler may have "
+            "written) is missing from the transcription; what the print had cannot be told, low.",
+            corrected_reading=(Aq, sp.pi * a * b / 4, Del / 2)),
+        note=claim("b∫dx√(1 − x²/a²) is the area of the elliptic quadrant ACE, πab/4 = D/2."))
+d.quote("ellipse-quadrant-moment", "§219", r"erit = $\frac{a^2 D}{8}$", reading=(Kq, a ** 2 * Del / 8),
+        note=claim("hence the quadrant's moment about EF is a²D/8."))
+d.quote("ellipse-K", "§219", r"ellipsis = $\frac{AB^2 D}{8}$", reading=(Kel, (2 * a) ** 2 * Del / 8),
+        note=claim("and the whole ellipse's is AB²D/8."))
+d.quote("ellipse-I", "§219", r"fore = $\frac{EF^2 D}{8}$", reading=(Iel, (2 * b) ** 2 * Del / 8),
+        note=claim("likewise about AB the moment is EF²D/8: the denominator is 6 for the rectangle, 12 for "
+                   "the rhombus, 8 for the ellipse."))
+
+# ================================================================ witnesses: 2-D quadrature over each figure
+
+
+def _num(v, dps):
+    return mpmath.mpf(sp.N(v, dps + 10)) if dps > 15 else float(v)
+
+
+def _edges_at(poly, xv):
+    ys = []
+    for i in range(len(poly)):
+        (x0, y0), (x1, y1) = poly[i], poly[(i + 1) % len(poly)]
+        if x0 != x1 and min(x0, x1) <= xv <= max(x0, x1):
+            ys.append(y0 + (y1 - y0) * (xv - x0) / (x1 - x0))
+    return min(ys), max(ys)
+
+
+def polygon_integral(f, poly, dps):
+    """∫∫ f over a convex polygon, in strips between the vertices' abscissae, the inner integral across
+    the vertical chord.  dps > 15: nested mpmath.quad; otherwise float64 Gauss-Legendre, 24 x 24 nodes
+    per strip (numpy leggauss)."""
+    if dps > 15:
+        P = [(_num(p, dps), _num(q, dps)) for p, q in poly]
+        xs = sorted({p[0] for p in P})
+
+        def inner(xv):
+            lo, hi = _edges_at(P, xv)
+            return mpmath.quad(lambda yv: f(xv, yv), [lo, hi], method="gauss-legendre")
+        return mpmath.quad(inner, xs, method="gauss-legendre")
+    P = [(float(p), float(q)) for p, q in poly]
+    xs = sorted({p[0] for p in P})
+    nodes, weights = np.polynomial.legendre.leggauss(24)
+    total = 0.0
+    for x0, x1 in zip(xs, xs[1:]):
+        for xi, wi in zip((x1 - x0) / 2 * nodes + (x1 + x0) / 2, weights):
+            lo, hi = _edges_at(P, xi)
+            yv = (hi - lo) / 2 * nodes + (hi + lo) / 2
+            total += wi * (x1 - x0) / 2 * (hi - lo) / 2 * float(np.dot(weights, f(xi, yv) + 0 * yv))
+    return total
+
+
+def ellipse_integral(f, A, B, dps):
+    """∫∫ f over x^2/A^2 + y^2/B^2 <= 1.  dps > 15: nested mpmath.quad (tanh-sinh outside, where the
+    chord has a square-root end); otherwise float64 Gauss-Legendre (32 x 32) in the elliptic polar
+    coordinates x = A rho cos(th), y = B rho sin(th)."""
+    if dps > 15:
+        A, B = _num(A, dps), _num(B, dps)
+
+        def inner(xv):
+            hh = B * mpmath.sqrt(1 - (xv / A) ** 2)
+            return mpmath.quad(lambda yv: f(xv, yv), [-hh, hh], method="gauss-legendre")
+        return mpmath.quad(inner, [-A, A])
+    A, B = float(A), float(B)
+    nodes, weights = np.polynomial.legendre.leggauss(32)
+    rho, wr = (nodes + 1) / 2, weights / 2
+    th, wt = np.pi * (nodes + 1), np.pi * weights
+    R, T = np.meshgrid(rho, th, indexing="ij")
+    return float(np.sum(np.outer(wr, wt) * A * B * R * f(A * R * np.cos(T), B * R * np.sin(T))))
+
+
+def _sqrt(v):
+    return mpmath.sqrt(v) if isinstance(v, mpmath.mpf) else float(np.sqrt(v))
+
+
+def rational_cases(*rows):
+    return tuple(Case({k: sp.Rational(v) for k, v in params.items()}, label=label) for label, params in rows)
+
+
+def figure_witness(name, description, targets, cases, compute):
+    d.witness(Computed(name, description, tuple(targets), cases, compute=compute))
+
+
+def P(case, sym, dps):
+    return _num(case.params[sym], dps)
+
+
+SQ = rational_cases(("a = 1", {a: 1}), ("a = 3/2", {a: "3/2"}))
+AB_CASES = rational_cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
+Q_CASES = rational_cases(("a = 1, b = 1, c = 2", {a: 1, b: 1, c: 2}),
+                         ("a = 5/2, b = 3/4, c = 3/2", {a: "5/2", b: "3/4", c: "3/2"}))
+
+
+def square(case, dps):
+    A = case.params[a]
+    return [(-A, -A), (A, -A), (A, A), (-A, A)]
+
+
+def rectangle(case, dps):
+    A, B = case.params[a], case.params[b]
+    return [(-A, -B), (A, -B), (A, B), (-A, B)]
+
+
+def rhombus(case, dps):
+    A, B = case.params[a], case.params[b]
+    return [(-A, 0), (0, -B), (A, 0), (0, B)]
+
+
+def quadrilateral(case, dps):
+    A, B, C = case.params[a], case.params[b], case.params[c]
+    return [(0, 0), (A, -B), (A + C, 0), (A, B)]
+
+
+figure_witness("square-moment", "∫∫ y^2 over the square by 2-D quadrature", ("square-I", "square-D"), SQ,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, square(cs, dps), dps))
+figure_witness("square-quadrant", "∫∫ y^2 and ∫∫ x^2 over the quadrant ACE of the square",
+               ("square-quadrant-I", "square-quadrant-K"), SQ,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2,
+                                                [(0, 0), (cs.params[a], 0), (cs.params[a], cs.params[a]),
+                                                 (0, cs.params[a])], dps))
+figure_witness("rect-I", "∫∫ y^2 over the rectangle", ("rect-I",), AB_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, rectangle(cs, dps), dps))
+figure_witness("rect-K", "∫∫ x^2 over the rectangle", ("rect-K",), AB_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: X ** 2, rectangle(cs, dps), dps))
+figure_witness("rhombus-I", "∫∫ y^2 over the rhombus", ("rhombus-I",), AB_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, rhombus(cs, dps), dps))
+figure_witness("rhombus-K", "∫∫ x^2 over the rhombus", ("rhombus-K",), AB_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: X ** 2, rhombus(cs, dps), dps))
+figure_witness("quad-I", "∫∫ y^2 over the quadrilateral AeBf", ("quad-I",), Q_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, quadrilateral(cs, dps), dps))
+figure_witness("Ace-I", "∫∫ y^2 over the triangle Ace", ("Ace-I",), Q_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, [(0, 0), (cs.params[a], 0),
+                                                                      (cs.params[a], cs.params[b])], dps))
+figure_witness("Ace-L", "∫∫ (x - a)^2 over the triangle Ace", ("Ace-L",), Q_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: (X - P(cs, a, dps)) ** 2,
+                                                [(0, 0), (cs.params[a], 0), (cs.params[a], cs.params[b])], dps))
+
+
+def _tri_Bce(cs):
+    A, B, C = cs.params[a], cs.params[b], cs.params[c]
+    return [(A, 0), (A + C, 0), (A, B)]
+
+
+figure_witness("Bce-I", "∫∫ y^2 over the triangle Bce", ("Bce-I",), Q_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, _tri_Bce(cs), dps))
+figure_witness("Bce-L", "∫∫ (x - a)^2 over the triangle Bce", ("Bce-L",), Q_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: (X - P(cs, a, dps)) ** 2, _tri_Bce(cs), dps))
+figure_witness("quad-L", "∫∫ (x - a)^2 over the quadrilateral, ef at x = a", ("quad-L", "quad-L-again"), Q_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: (X - P(cs, a, dps)) ** 2, quadrilateral(cs, dps), dps))
+
+
+def _centroid_x(cs, dps):
+    poly = quadrilateral(cs, dps)
+    return (polygon_integral(lambda X, Y: X + 0 * Y, poly, dps)
+            / polygon_integral(lambda X, Y: 1 + 0 * X * Y, poly, dps))
+
+
+figure_witness("quad-centroid", "Cc = ∫∫x / ∫∫1 - a over the quadrilateral", ("centroid", "Cc-again"), Q_CASES,
+               lambda cs, dps: _centroid_x(cs, dps) - P(cs, a, dps))
+
+
+def _quad_K(cs, dps):
+    xc = _centroid_x(cs, dps)
+    return polygon_integral(lambda X, Y: (X - xc) ** 2, quadrilateral(cs, dps), dps)
+
+
+figure_witness("quad-K", "∫∫ (x - x_C)^2 over the quadrilateral, x_C by quadrature", ("quad-K",), Q_CASES, _quad_K)
+
+
+def _sym_rot(cs, dps, normal):
+    xc = _centroid_x(cs, dps)
+    mm = P(cs, m, dps)
+    nn = _sqrt(1 - mm * mm)
+    return polygon_integral(lambda X, Y: normal(mm, nn, X - xc, Y) ** 2, quadrilateral(cs, dps), dps)
+
+
+QM_CASES = rational_cases(("a = 1, b = 1, c = 2, m = 3/5", {a: 1, b: 1, c: 2, m: "3/5"}),
+                          ("a = 5/2, b = 3/4, c = 3/2, m = 1/3", {a: "5/2", b: "3/4", c: "3/2", m: "1/3"}))
+figure_witness("quad-PQ", "∫∫ (m X - n y)^2 over the quadrilateral about its centroid",
+               ("moment-PQ-symmetric", "moment-PQ-increasing"), QM_CASES,
+               lambda cs, dps: _sym_rot(cs, dps, lambda mm, nn, X, Y: mm * X - nn * Y))
+figure_witness("quad-RS", "∫∫ (n X + m y)^2 over the quadrilateral about its centroid",
+               ("moment-RS-symmetric",), QM_CASES,
+               lambda cs, dps: _sym_rot(cs, dps, lambda mm, nn, X, Y: nn * X + mm * Y))
+
+T_CASES = rational_cases(
+    ("rectangle [-3/2, 5/2] x [-1/2, 5/2], m = 3/5, x_e = 2",
+     {X1: "-3/2", Y1: "-1/2", X2: "5/2", Y2: "5/2", m: "3/5", xe: 2}),
+    ("rectangle [-1, 1] x [1/4, 2], m = 1/4, x_e = -1/2",
+     {X1: -1, Y1: "1/4", X2: 1, Y2: 2, m: "1/4", xe: "-1/2"}))
+
+
+def _triangle(cs):
+    X_1, Y_1, X_2, Y_2 = (cs.params[k] for k in (X1, Y1, X2, Y2))
+    return [(X_1, Y_1), (X_2, Y_1), (X_2, Y_2), (X_1, Y_2)]
+
+
+def _tri_rot(cs, dps, normal):
+    mm = P(cs, m, dps)
+    nn = _sqrt(1 - mm * mm)
+    return polygon_integral(lambda X, Y: normal(mm, nn, X, Y) ** 2, _triangle(cs), dps)
+
+
+figure_witness("generic-PQ", "∫∫ (m x - n y)^2 over the generic rectangle", ("moment-PQ-IK", "moment-PQ-restated"), T_CASES,
+               lambda cs, dps: _tri_rot(cs, dps, lambda mm, nn, X, Y: mm * X - nn * Y))
+figure_witness("generic-RS", "∫∫ (n x + m y)^2 over the generic rectangle", ("moment-RS-IK",), T_CASES,
+               lambda cs, dps: _tri_rot(cs, dps, lambda mm, nn, X, Y: nn * X + mm * Y))
+figure_witness("generic-sum", "∫∫ (x^2 + y^2) over the generic rectangle (polar moment about the origin)", ("sum-invariant",),
+               T_CASES, lambda cs, dps: polygon_integral(lambda X, Y: X ** 2 + Y ** 2, _triangle(cs), dps))
+
+
+def _tri_EF(cs, dps):
+    poly = _triangle(cs)
+    xc = (polygon_integral(lambda X, Y: X + 0 * Y, poly, dps)
+          / polygon_integral(lambda X, Y: 1 + 0 * X * Y, poly, dps))
+    return polygon_integral(lambda X, Y: (X - xc) ** 2, poly, dps)
+
+
+figure_witness("generic-parallel", "∫∫ (x - x_C)^2 over the generic rectangle, x_C by quadrature",
+               ("parallel-axis-rule",), T_CASES, _tri_EF)
+
+E_CASES = rational_cases(("a = 3, b = 2", {a: 3, b: 2}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
+figure_witness("ellipse-K", "∫∫ x^2 over the ellipse", ("ellipse-K",), E_CASES,
+               lambda cs, dps: ellipse_integral(lambda X, Y: X ** 2, cs.params[a], cs.params[b], dps))
+figure_witness("ellipse-I", "∫∫ y^2 over the ellipse", ("ellipse-I",), E_CASES,
+               lambda cs, dps: ellipse_integral(lambda X, Y: Y ** 2, cs.params[a], cs.params[b], dps))
+figure_witness("ellipse-quadrant", "a quarter of ∫∫ x^2 over the ellipse (the quadrants are congruent)",
+               ("ellipse-quadrant-K", "ellipse-quadrant-moment"), E_CASES,
+               lambda cs, dps: ellipse_integral(lambda X, Y: X ** 2, cs.params[a], cs.params[b], dps) / 4)
+figure_witness("ellipse-quadrant-area", "a quarter of ∫∫ 1 over the ellipse", ("ellipse-quadrant-area",), E_CASES,
+               lambda cs, dps: ellipse_integral(lambda X, Y: 1 + 0 * X * Y, cs.params[a], cs.params[b], dps) / 4)
+
+
+def _ratios(cs, dps):
+    rc, rh = rectangle(cs, dps), rhombus(cs, dps)
+    return [polygon_integral(lambda X, Y: Y ** 2, rc, dps) / polygon_integral(lambda X, Y: Y ** 2, rh, dps),
+            polygon_integral(lambda X, Y: X ** 2, rc, dps) / polygon_integral(lambda X, Y: X ** 2, rh, dps)]
+
+
+figure_witness("rect-rhombus-ratios", "the rectangle's moments over the rhombus' (same a, b) by quadrature",
+               ("rhombus-twice",), AB_CASES, _ratios)
+figure_witness("quad-K-excess", "∫∫ (x - x_C)^2 over the quadrilateral minus that of the rhombus with the same "
+               "AB and ef, both by quadrature", ("quad-K-larger",), Q_CASES,
+               lambda cs, dps: _quad_K(cs, dps) - polygon_integral(
+                   lambda X, Y: X ** 2,
+                   rhombus(Case({a: (cs.params[a] + cs.params[c]) / 2, b: cs.params[b]}), dps), dps))
+
+
+# ---------------------------------------------------------------- §201/§203: stability of a floating box
+# The box 1 (across, x) x 1 (height, y) x 2 (length, z), homogeneous, floats at the density ratio s; its
+# centre of gravity is moved to the depth b below, or the height b above, the upright centre of buoyancy.
+# The stability per unit angle is M GZ(phi)/phi for phi -> 0, with GZ the horizontal distance between the
+# centre of buoyancy of the clipped (heeled) body and G: computed at two small angles and Richardson-
+# extrapolated (GZ/phi = GM + O(phi^2)); float64 at phi = 1e-3, 50 digits at phi = 1e-11 with the clipping
+# carried out at 80 digits.  Nothing of the formula M(I/V ± b) is used.
+
+def _stability(cs, dps, axis, sign):
+    from symfloat.geometry.floating import box, floating_state
+    big = None if dps <= 15 else dps + 30
+    ctx = mpmath.workdps(big) if big else mpmath.workdps(15)
+    with ctx:
+        def num(v):
+            return mpmath.mpf(sp.N(v, big + 10)) if big else float(v)
+        S = num(cs.data["s"])
+        poly = box(1, 1, 2, dps=big)
+        sin, cos = (mpmath.sin, mpmath.cos) if big else (np.sin, np.cos)
+        B0 = floating_state(poly, (0, 1, 0), S).B
+        G = (B0[0], B0[1] + sign * num(cs.params[h]), B0[2])
+
+        def arm(phi):
+            if axis == "AB":       # heel about the long axis z
+                up, e = (sin(phi), cos(phi), 0), (-cos(phi), sin(phi), 0)
+            else:                  # pitch about the cross axis x
+                up, e = (0, cos(phi), sin(phi)), (0, sin(phi), -cos(phi))
+            Bp = floating_state(poly, up, S, G=G).B
+            return sum((Bp[i] - G[i]) * e[i] for i in range(3)) / phi
+
+        phi = num(sp.Rational(1, 10 ** 3)) if not big else num(sp.Rational(1, 10 ** 11))
+        gm = (4 * arm(phi / 2) - arm(phi)) / 3
+        return num(cs.params[Mw]) * gm
+
+
+B_CASES = (Case({Mw: 1, V: 1, Iw: sp.Rational(1, 6), Kw: sp.Rational(2, 3), h: sp.Rational(1, 10)},
+                data={"s": sp.Rational(1, 2)}, label="box 1 x 1 x 2, s = 1/2, b = 1/10"),
+           Case({Mw: sp.Rational(3, 2), V: sp.Rational(3, 2), Iw: sp.Rational(1, 6), Kw: sp.Rational(2, 3),
+                 h: sp.Rational(1, 20)}, data={"s": sp.Rational(3, 4)}, label="box 1 x 1 x 2, s = 3/4, b = 1/20"))
+d.witness(Computed("stability-AB-box", "M GZ/phi of a heeled box by exact clipping (G below, G above B)",
+                   ("stability-AB",), B_CASES,
+                   compute=lambda cs, dps: [_stability(cs, dps, "AB", -1), _stability(cs, dps, "AB", 1)]))
+d.witness(Computed("stability-EF-box", "M GZ/phi of a pitched box by exact clipping (G below, G above B)",
+                   ("stability-EF",), B_CASES,
+                   compute=lambda cs, dps: [_stability(cs, dps, "EF", -1), _stability(cs, dps, "EF", 1)]))
+d.witness(Computed("stability-I-box", "M GZ/phi of a heeled box by exact clipping, G below B",
+                   ("stability-I",), B_CASES, compute=lambda cs, dps: _stability(cs, dps, "AB", -1)))
+d.witness(Computed("stability-K-box", "M GZ/phi of a pitched box by exact clipping, G below B",
+                   ("stability-K",), B_CASES, compute=lambda cs, dps: _stability(cs, dps, "EF", -1)))
