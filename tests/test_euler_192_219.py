@@ -19,8 +19,8 @@ RANGE = TEXT[TEXT.index("§. 192."):TEXT.index("§. 220.")]
 
 
 @pytest.fixture(scope="module")
-def report():
-    return check_derivation(D)
+def report(reports_by_id):
+    return reports_by_id["euler-192-219"]
 
 
 def test_no_check_fails(report):
