@@ -64,5 +64,5 @@ class ReportCache:
             old.unlink(missing_ok=True)
         path = self._path(derivation_id, key)
         tmp = path.with_suffix(".tmp")
-        tmp.write_text(json.dumps(data, sort_keys=True), encoding="utf-8")
+        tmp.write_text(json.dumps(data), encoding="utf-8")  # insertion order, as a fresh check writes it
         tmp.replace(path)

@@ -18,9 +18,8 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 
-__all__ = ["QuadMethod", "TanhSinh", "MpGaussLegendre", "GaussLegendre64",
-           "TANH_SINH_15", "TANH_SINH_50", "GAUSS_LEGENDRE_MP_30", "GAUSS_LEGENDRE_64_8",
-           "DEFAULT_METHODS", "composite_simpson", "composite_trapezoid"]
+__all__ = ["QuadMethod", "TanhSinh", "GaussLegendre64", "TANH_SINH_15", "TANH_SINH_50",
+           "GAUSS_LEGENDRE_64_8", "DEFAULT_METHODS", "composite_simpson"]
 
 
 @dataclass(frozen=True)
@@ -52,15 +51,6 @@ class TanhSinh(QuadMethod):
 
 
 @dataclass(frozen=True)
-class MpGaussLegendre(QuadMethod):
-    """mpmath's adaptive Gauss–Legendre quadrature at ``dps`` digits."""
-
-    def _integrate(self, f, points):
-        with mpmath.workdps(self.dps):
-            return +mpmath.quad(f, [mpmath.mpf(p) for p in points], method="gauss-legendre")
-
-
-@dataclass(frozen=True)
 class GaussLegendre64(QuadMethod):
     """Fixed-order Gauss–Legendre in float64 on each piece: exact for
     polynomials of degree ``2 n - 1`` up to rounding."""
@@ -79,7 +69,6 @@ class GaussLegendre64(QuadMethod):
 
 TANH_SINH_15 = TanhSinh("tanh-sinh, 15 digits", 1e-12, "mpmath", 15)
 TANH_SINH_50 = TanhSinh("tanh-sinh, 50 digits", 1e-45, "mpmath", 50)
-GAUSS_LEGENDRE_MP_30 = MpGaussLegendre("Gauss-Legendre (mpmath), 30 digits", 1e-25, "mpmath", 30)
 GAUSS_LEGENDRE_64_8 = GaussLegendre64("Gauss-Legendre n=8, float64", 1e-12, "float64", 15, 8)
 DEFAULT_METHODS = (TANH_SINH_15, TANH_SINH_50, GAUSS_LEGENDRE_64_8)
 
@@ -97,14 +86,3 @@ def composite_simpson(f, a, b, panels: int):
     inner = sum((4 if k % 2 else 2) * f(a + k * m) for k in range(1, panels))
     return m / 3 * (f(a) + inner + f(b))
 
-
-def composite_trapezoid(f, a, b, panels: int):
-    """Composite trapezoid rule: ``m (f0/2 + f1 + ... + f_{n-1} + f_n/2)``.
-
-    >>> composite_trapezoid(lambda x: x, 0, 2, 4)
-    2.0
-    """
-    if panels <= 0:
-        raise ValueError("the trapezoid rule needs a positive number of panels")
-    m = (b - a) / panels
-    return m * (f(a) / 2 + sum(f(a + k * m) for k in range(1, panels)) + f(b) / 2)
