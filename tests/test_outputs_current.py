@@ -19,7 +19,6 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def _stable_record(record):
     record = json.loads(json.dumps(record))
-    record["summary"].pop("cached", None)
     record["summary"].pop("seconds", None)
     for f in record["formulas"]:
         for n in f["numeric"]:

@@ -38,7 +38,6 @@ def verification_record(reports: list[DerivationReport]) -> dict:
             "evidence": dict(sorted(Counter(f["evidence"] or "none" for f in formulas).items())),
             "steps": dict(sorted(steps.items())),
             "derivations": [d.id for d in reports],
-            "cached": sum(d.cached for d in reports),
             "failures": [msg for d in reports for msg in d.failures],
             "seconds": round(sum(d.seconds for d in reports), 3),
         },
@@ -67,11 +66,11 @@ def verification_table(reports: list[DerivationReport]) -> str:
     lines = ["  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows]
     lines.insert(1, "  ".join("-" * w for w in widths))
     s = verification_record(reports)["summary"]
+    cached = sum(d.cached for d in reports)
     lines.append("")
     lines.append(f"{s['formulas']} printed formulas: {s['verified']} verified, {s['erratum']} errata, "
                  f"{s['unverifiable']} unverifiable; steps {s['steps']}; checking time {s['seconds']:.1f} s"
-                 + (f" ({s['cached']} of {len(s['derivations'])} derivations read from the cache)"
-                    if s["cached"] else ""))
+                 + (f" ({cached} of {len(s['derivations'])} derivations read from the cache)" if cached else ""))
     for msg in s["failures"]:
         lines.append(f"FAILURE: {msg}")
     return "\n".join(lines) + "\n"
