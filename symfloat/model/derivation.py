@@ -11,6 +11,7 @@ import sympy as sp
 
 from .claim import members
 from .erratum import Erratum
+from .prediction import Predictor
 from .source import get_source
 
 __all__ = ["Step", "Printed", "Derivation", "JUSTIFICATIONS"]
@@ -99,6 +100,7 @@ class Derivation:
     steps: list[Step] = field(default_factory=list)
     printed: list[Printed] = field(default_factory=list)
     witnesses: list = field(default_factory=list)
+    predictor: Predictor | None = None
 
     def __post_init__(self):
         get_source(self.source)
@@ -135,6 +137,14 @@ class Derivation:
             raise ValueError(f"witness {w.name!r} targets unknown printed formulas {missing}")
         self.witnesses.append(w)
         return w
+
+    def predicts(self, bodies, predict):
+        """Register ``predict(scene) -> [Prediction]`` for scenes of ``bodies`` (see
+        :mod:`symfloat.model.prediction`); each prediction names printed formulas of this module."""
+        if self.predictor is not None:
+            raise ValueError(f"{self.id} already has a predictor")
+        self.predictor = Predictor(tuple(bodies), predict)
+        return self.predictor
 
     # -- queries ----------------------------------------------------------
     def get_step(self, name) -> Step:

@@ -7,6 +7,7 @@ which :func:`~symfloat.report.files.write_if_changed` ignores).
 """
 from __future__ import annotations
 
+import inspect
 import os
 from pathlib import Path
 
@@ -30,8 +31,9 @@ def _quote(text: str) -> str:
 
 def build_notebook(derivation_id: str) -> nbformat.NotebookNode:
     """The unexecuted notebook of one derivation."""
-    d, _ = load(derivation_id)
+    d, module = load(derivation_id)
     src = get_source(d.source)
+    about = inspect.cleandoc(module.__doc__ or "")
     cells = [
         nbformat.v4.new_markdown_cell(
             f"# {d.title}\n\n{src.author}, *{src.title}*{', ' + str(src.year) if src.year else ''} — "
@@ -39,6 +41,7 @@ def build_notebook(derivation_id: str) -> nbformat.NotebookNode:
             f"Derivation `{d.id}`" + (f", building on {', '.join(f'`{r}`' for r in d.requires)}" if d.requires
                                       else "") + ".\n\n**Assumptions**\n\n"
             + "\n".join(f"- {a}" for a in d.assumptions)),
+        *([nbformat.v4.new_markdown_cell("## About this section\n\n" + about)] if about else []),
         nbformat.v4.new_code_cell(
             "from symfloat.report.notebook_view import checked, formula_markdown, show, steps_markdown\n"
             f"report = checked({d.id!r})\n"
