@@ -227,11 +227,12 @@ W("section-area", "clipped immersed volume over the length 2a", ("section",),
 def predict(scene):
     """Each edge direction of the box vertical in turn (height 2c, breadth 2b the shorter, length 2a the longer of
     the other two edges, draught d = 2c s): stable iff e = b^2/(6c^2) - d/(2c)(1 - d/(2c)) > 0 (the criterion
-    z_M >= z_G); where 0 < e <= 1 the closing sentence ('größer als eins' when stable) says otherwise."""
+    z_M >= z_G, decided in exact arithmetic); where 0 < e <= 1 the closing sentence ('größer als eins' when
+    stable) says otherwise."""
     if scene.body != "box":
         return []
-    sv = float(scene.density)
-    dims = [float(x_) for x_ in scene.dims]
+    sv = Fraction(scene.density)
+    dims = [Fraction(x_) for x_ in scene.dims]
     out, seen = [], set()
     for k in range(3):
         i, j = [m_ for m_ in range(3) if m_ != k]
@@ -245,11 +246,11 @@ def predict(scene):
         up[k] = 1.0
         out.append(Prediction(("e", "criterion", "z_M"), tuple(up),
                               "stable" if ev > 0 else "unstable" if ev < 0 else None,
-                              note=f"upright, edge {k} vertical: e = {ev:.4g}"))
+                              note=f"upright, edge {k} vertical: e = {float(ev):.4g}"))
         if 0 < ev <= 1:
             out.append(Prediction(("e-sign",), tuple(up), "unstable",
-                                  note=f"e = {ev:.4g} is not 'größer als eins': the closing sentence's stable case "
-                                       "excludes it"))
+                                  note=f"e = {float(ev):.4g} is not 'größer als eins': the closing sentence's "
+                                       "stable case excludes it"))
     return out
 
 

@@ -12,6 +12,7 @@ measured righting arm.
 """
 
 import math
+from fractions import Fraction
 
 import mpmath
 import sympy as sp
@@ -1402,8 +1403,8 @@ def _triangle_predictions(av, bv, sv):
     if margin >= 0:
         return out
     phi1 = math.atan(math.sqrt(24 * p / q - 2))          # (65), (60)
-    upper = sv >= 0.5
-    lim_ring = 1.5 * (1 - sv) * (9 * sv - 1) if upper else 1.5 * sv * (8 - 9 * sv)      # (62), (65) II
+    upper = sv >= Fraction(1, 2)
+    lim_ring = Fraction(3, 2) * ((1 - sv) * (9 * sv - 1) if upper else sv * (8 - 9 * sv))    # (62), (65) II
     lim_arc = 6 * (1 - sv) * (3 * sv - 1) if upper else 6 * sv * (2 - 3 * sv)           # (64), (65) III, IV
     # omega = 0 of the text: an edge on the side of the base that meets the water first (the upper base on the
     # dipping side for s > 1/2, the lower one on the rising side for s < 1/2), the vertex opposite
@@ -1426,7 +1427,7 @@ def _cylinder_predictions(rv, bv, sv):
                       note="upright: (69) 2r/b > sqrt(8 s(1-s)), (72) the labile case")]
     if margin >= 0:
         return out
-    lim = 2 * (1 - sv) * (5 * sv - 1) if sv > 0.5 else 2 * sv * (4 - 5 * sv)          # (73)
+    lim = 2 * (1 - sv) * (5 * sv - 1) if sv > Fraction(1, 2) else 2 * sv * (4 - 5 * sv)          # (73)
     if K2 >= lim:
         phi1 = math.atan(math.sqrt(16 * p / K2 - 2))     # (72a)
         out.append(Prediction(("72a-tan", "72a", "73"), _tilted(phi1, 1), "stable", "ring",
@@ -1435,12 +1436,13 @@ def _cylinder_predictions(rv, bv, sv):
 
 
 def predict(scene):
-    """VI.A: the regular triangular prism (prism, 3 sides); VI.B: the circular cylinder."""
-    sv = float(scene.density)
+    """VI.A: the regular triangular prism (prism, 3 sides); VI.B: the circular cylinder.  The conditions are
+    decided in exact arithmetic (Fractions), the tilts in floating point."""
+    sv, dims = Fraction(scene.density), [Fraction(x_) for x_ in scene.dims]
     if scene.body == "prism" and scene.sides == 3:
-        return _triangle_predictions(float(scene.dims[0]), float(scene.dims[1]), sv)
+        return _triangle_predictions(dims[0], dims[1], sv)
     if scene.body == "cylinder":
-        return _cylinder_predictions(float(scene.dims[0]), float(scene.dims[1]), sv)
+        return _cylinder_predictions(dims[0], dims[1], sv)
     return []
 
 

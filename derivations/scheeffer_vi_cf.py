@@ -27,6 +27,7 @@ with large xi sink.  Angles are read in radians (45 deg = pi/4).
 """
 import functools
 import math
+from fractions import Fraction
 
 import mpmath
 import sympy as sp
@@ -1071,7 +1072,7 @@ def _toward(phi_, k, i):
 def _square_predictions(av, bv, sv, up_of, cube):
     """Upright and oblique positions of the square prism (edge av, height bv) as (75)/(78), (78b), (77)/(78a),
     (78d)/(78e) print them; for the cube (av = bv) as VI.D prints them.  up_of(phi) is the up vector tilted by
-    phi about an axis parallel to a base edge (omega = 0)."""
+    phi about an axis parallel to a base edge (omega = 0).  av, bv, sv are Fractions: the conditions are exact."""
     q, p = (av / bv) ** 2, sv * (1 - sv)
     margin = q - 6 * p                                   # (75): (a/b)^2 > 6 s (1 - s); cube-78: 1 > 6 s (1 - s)
     upright = ("cube-78", "79") if cube else ("75", "78") if margin > 0 else ("75-unstable",) if margin < 0 else ("75",)
@@ -1084,18 +1085,18 @@ def _square_predictions(av, bv, sv, up_of, cube):
     bound = min(sv, 1 - sv) ** 2 / (6 * p - q)           # (78d)/(82): sin^2(45 deg + omega) <= bound
     up = up_of(phi1)
     if bound >= 1:                                       # (77)/(78a): every axis direction, the whole ring
-        names = ("80", "81-oblique-upper" if sv > 0.5 else "81-oblique-lower", "cube-78a", "81a") if cube \
+        names = ("80", "81-oblique-upper" if sv > Fraction(1, 2) else "81-oblique-lower", "cube-78a", "81a") if cube \
             else ("78a", "77", "78b")
         out.append(Prediction(names, up, "stable", "ring",
                               note="oblique ring of the first domain, any horizontal axis (tilt phi_1 of (78b))"))
-    elif cube and sv == 0.5:                             # (82) gives omega = 0 only: phi_1 = 45 deg, edge up
+    elif cube and sv == Fraction(1, 2):                             # (82) gives omega = 0 only: phi_1 = 45 deg, edge up
         out.append(Prediction(("half-stable", "half-tilt", "82-half-omega", "82-half"), up, "stable",
                               note="s = 1/2: the axis parallel to an edge only, phi_1 = 45 deg (the edge up)"))
     elif cube:                                           # the printed claim: 0.2265 < s < 0.7735, edge-parallel axis
         out.append(Prediction(("edge-axis-range", "82", "81a"), up, "stable", "ring",
                               note="the arc |omega| <= omega* of (82) around the edge-parallel axis (omega = 0); "
                                    "81a and 82 read with 6 for the scan's b"))
-    elif bound >= 0.5:                                   # (78c)/(78d): the arc around the edge-parallel axis
+    elif bound >= Fraction(1, 2):                                   # (78c)/(78d): the arc around the edge-parallel axis
         out.append(Prediction(("78d", "78c", "78b"), up, "stable", "ring",
                               note="the arc sin^2(45 deg + omega) <= (78d) around the edge-parallel axis "
                                    "(omega = 0); (78c) printed with its cases exchanged, its corrected range used"))
@@ -1131,14 +1132,12 @@ def _ngon_predictions(n_, av, bv, sv):
 
 def predict(scene):
     """The equilibria of VI.C-F: the square prism (prism with 4 sides, box with a square base), the cube and the
-    regular n-gon prism (n >= 5) in the first rotation domain."""
-    sv = float(scene.density)
-    if scene.body == "cube":
-        return _square_predictions(1.0, 1.0, sv, lambda ph: _toward(ph, 2, 0), cube=True)
+    regular n-gon prism (n >= 5) in the first rotation domain.  The conditions are decided in exact arithmetic."""
+    sv, one = Fraction(scene.density), Fraction(1)
+    dims = [Fraction(x_) for x_ in scene.dims]
+    if scene.body == "cube" or (scene.body == "box" and dims[0] == dims[1] == dims[2]):
+        return _square_predictions(one, one, sv, lambda ph: _toward(ph, 2, 0), cube=True)
     if scene.body == "box":
-        dims = [float(x_) for x_ in scene.dims]
-        if dims[0] == dims[1] == dims[2]:
-            return _square_predictions(1.0, 1.0, sv, lambda ph: _toward(ph, 2, 0), cube=True)
         for k in range(3):
             i, j = [m_ for m_ in range(3) if m_ != k]
             if dims[i] == dims[j]:
@@ -1146,10 +1145,10 @@ def predict(scene):
         return []
     if scene.body == "prism" and scene.sides == 4:
         c45 = math.sqrt(0.5)
-        return _square_predictions(float(scene.dims[0]), float(scene.dims[1]), sv,
+        return _square_predictions(dims[0], dims[1], sv,
                                    lambda ph: (math.sin(ph) * c45, math.sin(ph) * c45, math.cos(ph)), cube=False)
     if scene.body == "prism" and scene.sides >= 5:
-        return _ngon_predictions(scene.sides, float(scene.dims[0]), float(scene.dims[1]), sv)
+        return _ngon_predictions(scene.sides, float(dims[0]), float(dims[1]), float(sv))
     return []
 
 
