@@ -923,6 +923,8 @@ def _isotropic_ring(F_, T_, h_, sv, um2_min, um2_max, up_of):
 
 
 def _box_predictions(dims, sv):
+    """A box is a right prism over a rectangle in three ways: each edge direction e_k vertical in turn (one per
+    class of equal shape), the base the rectangle of the other two edges."""
     out, seen = [], set()
     for k in range(3):
         i, j = [m_ for m_ in range(3) if m_ != k]

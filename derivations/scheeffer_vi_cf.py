@@ -1075,7 +1075,8 @@ def _square_predictions(av, bv, sv, up_of, cube):
     phi about an axis parallel to a base edge (omega = 0).  av, bv, sv are Fractions: the conditions are exact."""
     q, p = (av / bv) ** 2, sv * (1 - sv)
     margin = q - 6 * p                                   # (75): (a/b)^2 > 6 s (1 - s); cube-78: 1 > 6 s (1 - s)
-    upright = ("cube-78", "79") if cube else ("75", "78") if margin > 0 else ("75-unstable",) if margin < 0 else ("75",)
+    upright = ("cube-78", "79") if cube else \
+        ("75", "78") if margin > 0 else ("75-unstable",) if margin < 0 else ("75",)
     out = [Prediction(upright, up_of(0.0),
                       "stable" if margin > 0 else "unstable" if margin < 0 else None,
                       note="upright (axis vertical): Duhamel's condition as printed")]
@@ -1085,18 +1086,18 @@ def _square_predictions(av, bv, sv, up_of, cube):
     bound = min(sv, 1 - sv) ** 2 / (6 * p - q)           # (78d)/(82): sin^2(45 deg + omega) <= bound
     up = up_of(phi1)
     if bound >= 1:                                       # (77)/(78a): every axis direction, the whole ring
-        names = ("80", "81-oblique-upper" if sv > Fraction(1, 2) else "81-oblique-lower", "cube-78a", "81a") if cube \
-            else ("78a", "77", "78b")
+        names = ("78a", "77", "78b") if not cube else \
+            ("80", "81-oblique-upper" if sv > Fraction(1, 2) else "81-oblique-lower", "cube-78a", "81a")
         out.append(Prediction(names, up, "stable", "ring",
                               note="oblique ring of the first domain, any horizontal axis (tilt phi_1 of (78b))"))
-    elif cube and sv == Fraction(1, 2):                             # (82) gives omega = 0 only: phi_1 = 45 deg, edge up
+    elif cube and sv == Fraction(1, 2):                  # (82) gives omega = 0 only: phi_1 = 45 deg, edge up
         out.append(Prediction(("half-stable", "half-tilt", "82-half-omega", "82-half"), up, "stable",
                               note="s = 1/2: the axis parallel to an edge only, phi_1 = 45 deg (the edge up)"))
     elif cube:                                           # the printed claim: 0.2265 < s < 0.7735, edge-parallel axis
         out.append(Prediction(("edge-axis-range", "82", "81a"), up, "stable", "ring",
                               note="the arc |omega| <= omega* of (82) around the edge-parallel axis (omega = 0); "
                                    "81a and 82 read with 6 for the scan's b"))
-    elif bound >= Fraction(1, 2):                                   # (78c)/(78d): the arc around the edge-parallel axis
+    elif bound >= Fraction(1, 2):                        # (78c)/(78d): the arc around the edge-parallel axis
         out.append(Prediction(("78d", "78c", "78b"), up, "stable", "ring",
                               note="the arc sin^2(45 deg + omega) <= (78d) around the edge-parallel axis "
                                    "(omega = 0); (78c) printed with its cases exchanged, its corrected range used"))
