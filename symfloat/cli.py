@@ -31,11 +31,18 @@ from .report.record import record_json, verification_table
 DOCS = Path("docs")
 
 
+class _Parser(argparse.ArgumentParser):
+    """Usage errors as one line, exit status 2 (``--help`` still shows the usage)."""
+
+    def error(self, message):
+        self.exit(2, f"symfloat: {message} (see symfloat {self.prog.split()[-1]} --help)\n")
+
+
 def _parser():
-    common = argparse.ArgumentParser(add_help=False)
+    common = _Parser(add_help=False)
     common.add_argument("--quiet", action="store_true", help="no progress on stderr")
     common.add_argument("--no-cache", action="store_true", help="re-check every derivation")
-    p = argparse.ArgumentParser(prog="symfloat", description="Machine-checked re-derivation of classical "
+    p = _Parser(prog="symfloat", description="Machine-checked re-derivation of classical "
                                 "texts on floating bodies and centroids.")
     sub = p.add_subparsers(dest="command", required=True)
     v = sub.add_parser("verify", parents=[common], help="check derivations and print verdicts")

@@ -116,14 +116,21 @@ def poincare_hopf_sum(points: list[Critical]) -> int:
 
 
 def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
+    """Step along the null direction (by less than the distance to the nearest symmetric copy of
+    the point, so a small ring around an axis is not jumped over) and let Newton settle: on a
+    ring it lands on another equilibrium of the same potential, not in the same class."""
     lam_null, v_null = min(pairs, key=lambda p: abs(p[0]))
     if abs(lam_null) > 1e-6 * scale:
         return False
-    for delta in (0.03, -0.03):
-        moved = tangent_step(loc.u, delta * v_null)
+    copies = [g @ loc.u for g in group]
+    nearest = min((math.acos(max(-1.0, min(1.0, float(np.dot(c, loc.u))))) for c in copies
+                   if np.linalg.norm(c - loc.u) > 1e-12), default=math.pi)
+    delta = min(0.03, nearest / 4)
+    for step in (delta, -delta):
+        moved = tangent_step(loc.u, step * v_null)
         other, ok = newton(poly, moved, s, scale)
-        if ok and np.linalg.norm(other.u - loc.u) > abs(delta) / 3 \
-                and abs(other.U - loc.U) <= 1e-10 * scale and not same_class(other.u, loc.u, group, 1e-6):
+        if ok and np.linalg.norm(other.u - loc.u) > delta / 3 and abs(other.U - loc.U) <= 1e-10 * scale \
+                and not same_class(other.u, loc.u, group, delta / 10):
             return True
     return False
 
@@ -145,7 +152,7 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
         g = float(np.linalg.norm(loc.gradient))
         err = 0.0 if ring else min(g / max(lam_min, 1e-300), (g / scale) ** (1 / 3))
         match = [c for c in found if not c.ring and same_class(c.u, loc.u, group, 1e-7 + 2 * (err + c.error_rad))]
-        if match and (match[0].gradient <= g or ring):
+        if match and not ring and match[0].gradient <= g:
             continue
         found = [c for c in found if not any(c is m for m in match)]
         found.append(Critical(representative(loc.u, group), loc.U, eigen,
@@ -153,6 +160,11 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
     for c in found:
         if not c.ring:
             c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps)
+    # a point of a ring found before the ring was recognised: same potential, not an equilibrium
+    # that symmetry fixes (its residual is not exactly zero), no decided second variation
+    rings = [c for c in found if c.ring]
+    found = [c for c in found if c.ring or c.error_method != "near-bifurcation estimate"
+             or not any(abs(c.U - r.U) <= 1e-10 * scale for r in rings)]
     found.sort(key=lambda c: (round(c.U / scale, 12), -c.u[2], -c.u[0], -c.u[1]))
     return found
 
