@@ -10,8 +10,9 @@ def phase_record(diagram) -> dict:
     return {
         "body": diagram.body, "dims": list(diagram.dims),
         "sweep": [{"density": s, "stable": labels} for s, labels in zip(diagram.densities, diagram.stable)],
-        "thresholds": [{"density": t.density, "bracket": t.bracket, "position": t.label, "change": t.change,
-                        "source": t.source} for t in diagram.thresholds],
+        "thresholds": [{"density": t.density, "error": t.bracket, "position": t.label, "change": t.change,
+                        "note": t.note, "source": t.source} for t in diagram.thresholds],
+        "source_thresholds_not_found": diagram.unmatched_sources,
         "duality_holds": diagram.duality_ok,
         "seconds": diagram.seconds,
     }
@@ -31,9 +32,14 @@ def phase_table(diagram) -> str:
             previous = labels
     lines += ["", "thresholds (bisection with tracking; ± = error bound):"]
     for t in diagram.thresholds:
-        src = "; ".join(f"{k['locator']} {k['expression']} = {k['value']:.12f} ({k['derivation']})"
-                        for k in t.source) or "no closed form in the sources"
-        lines.append(f"  s = {t.density:.13f} ± {t.bracket:.0e}  {t.label}: {t.change}  [{src}]")
+        src = "; ".join(f"{k['derivation']} {', '.join(k['locators'])}"
+                        + (f" {k['expression']}" if k["expression"] else "") + f" = {k['value']:.13f}"
+                        for k in t.source) or "no source prints this threshold"
+        note = f" ({t.note})" if t.note else ""
+        lines.append(f"  s = {t.density:.13f} ± {t.bracket:.0e}  {t.label}: {t.change}{note}  [{src}]")
+    for k in diagram.unmatched_sources:
+        lines.append(f"  DISAGREEMENT: {k['derivation']} {', '.join(k['locators'])} puts a threshold at s = "
+                     f"{k['value']:.13f} ({k['label']}: {k['change']}); the solver finds none there")
     lines.append("")
     lines.append("duality s <-> 1 - s: " + ("holds on the sweep" if diagram.duality_ok else "VIOLATED"))
     return "\n".join(lines)

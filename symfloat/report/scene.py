@@ -28,6 +28,7 @@ def scene_record(solution, evaluated, unmatched, seconds) -> dict:
             "tilt_deg": round(e.tilt_deg, 12),
             "stability": e.stability,
             "family": e.family,
+            **({"ring_shape": e.ring_shape, "ring_length_rad": e.ring_length} if e.family == "ring" else {}),
             "potential": e.potential,
             "waterplane": e.waterplane,
             "formulas": e.formulas,
@@ -62,7 +63,8 @@ def scene_table(record) -> str:
         for p in e["predictions"]:
             mark = "agrees" if p["agrees"] else "DISAGREES: " + p["disagreement"]
             formulas.append(f"{p['derivation']} {', '.join(p['locators'])} ({mark})")
-        lines.append(f"{up:<34} {e['tilt_deg']:>8.4f}° {e['stability']:<12} {e['family']:<9} "
+        family = e["family"] if e["family"] != "ring" else ("ring" if e["ring_shape"] == "closed" else "arc")
+        lines.append(f"{up:<34} {e['tilt_deg']:>8.4f}° {e['stability']:<12} {family:<9} "
                      f"{e['potential']:>12.9f} {e['waterplane']:<18} {e['error_rad']:>8.1e}  "
                      + ("; ".join(formulas) or "-"))
     for p in record["unmatched_predictions"]:

@@ -25,6 +25,7 @@ from .symmetry import orbit, representative, same_class
 __all__ = ["Critical", "newton", "critical_points", "poincare_hopf_sum"]
 
 MAX_STEP = 0.3          # radians: Newton steps are capped (a trust region)
+FLAT = 2e-14            # relative to the size of the body: a ring's potential is constant to rounding
 ZERO_EIGEN = 1e-8       # relative to the size of the body: a null direction of the Hessian
 
 
@@ -42,6 +43,8 @@ class Critical:
     error_rad: float
     orbit: int = 1
     ring: bool = False
+    shape: str = ""             # a ring's shape: "closed" or "arc"
+    length: float = 0.0         # a ring's length on the unit sphere (radians)
     error_method: str = "exact"
     lipschitz: float = 0.0
 
@@ -129,10 +132,41 @@ def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
     for step in (delta, -delta):
         moved = tangent_step(loc.u, step * v_null)
         other, ok = newton(poly, moved, s, scale)
-        if ok and np.linalg.norm(other.u - loc.u) > delta / 3 and abs(other.U - loc.U) <= 1e-10 * scale \
+        if ok and np.linalg.norm(other.u - loc.u) > delta / 3 and abs(other.U - loc.U) <= FLAT * scale \
                 and not same_class(other.u, loc.u, group, delta / 10):
             return True
     return False
+
+
+def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, float]:
+    """Walk along a ring from *u* (steps along the null direction, Newton across) and return
+    ``("closed", length)`` when the walk comes back to *u*, else ``("arc", length)`` with the
+    length (radians on the sphere) of the arc, both directions summed."""
+    start = local(poly, u, s)
+    copies = [g @ start.u for g in group]
+    nearest = min((math.acos(max(-1.0, min(1.0, float(np.dot(c, start.u))))) for c in copies
+                   if np.linalg.norm(c - start.u) > 1e-12), default=math.pi)
+    delta = min(0.005, nearest / 4)      # a gap in the family narrower than this is not seen
+    total = 0.0
+    for direction in (1, -1):
+        loc, previous = start, None
+        for _ in range(max_steps):
+            pairs = _tangent_eigen(loc)
+            v = min(pairs, key=lambda p: abs(p[0]))[1]
+            if previous is not None and np.dot(v, loc.u - previous) < 0:
+                v = -v
+            elif previous is None:
+                v = direction * v
+            nxt, ok = newton(poly, tangent_step(loc.u, delta * v), s, scale)
+            moved = float(np.linalg.norm(nxt.u - loc.u))
+            if not ok or abs(nxt.U - start.U) > FLAT * scale or moved < delta / 3 \
+                    or min(abs(p[0]) for p in _tangent_eigen(nxt)) > 1e-6 * scale:
+                break
+            previous, loc = loc.u, nxt
+            total += moved
+            if total > 2 * delta and np.linalg.norm(loc.u - start.u) < delta / 2:
+                return "closed", total
+    return "arc", total
 
 
 def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps: int = 30) -> list[Critical]:
@@ -158,6 +192,9 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
         found.append(Critical(representative(loc.u, group), loc.U, eigen,
                               np.stack([p[1] for p in pairs]), g, err, len(orbit(loc.u, group)), ring))
     for c in found:
+        if c.ring:
+            c.shape, c.length = trace_family(poly, c.u, s, scale, group)
+            c.ring = c.length > 0          # a "ring" the walk cannot follow is an isolated degenerate point
         if not c.ring:
             c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps)
     # a point of a ring found before the ring was recognised: same potential, not an equilibrium

@@ -48,6 +48,8 @@ class Equilibrium:
     error_rad: float
     error_method: str
     copies: int | None          # symmetric copies of the position; None for a continuous orbit
+    ring_shape: str = ""        # a ring: "closed" (all the way round) or "arc" (a piece of one)
+    ring_length: float = 0.0    # its length on the unit sphere of up vectors (radians)
     formulas: list = field(default_factory=list)
     predictions: list = field(default_factory=list)
 
@@ -129,7 +131,8 @@ def _polyhedral(scene: Scene, seeds, group):
         tol = eigenvalue_error(c.lipschitz, c.error_rad, scale)
         out.append(Equilibrium(_clean(c.u), _tilt(c.u), stability_of(eig, tol, c.ring),
                                "ring" if c.ring else "isolated", c.U, _shape(waterplane_polygon(poly, loc.state), scale),
-                               tuple(float(e) for e in eig), c.error_rad, c.error_method, c.orbit))
+                               tuple(float(e) for e in eig), c.error_rad, c.error_method, c.orbit,
+                               c.shape, c.length))
     families = any(c.ring for c in points)
     return out, {"poincare_hopf_index_sum": None if families else poincare_hopf_sum(points),
                  "expected_index_sum": 2, "seeds": len(seeds),
