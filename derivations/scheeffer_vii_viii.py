@@ -457,3 +457,286 @@ d.quote("122", "(122)", r"$$\left. \begin{aligned} (T - \tau) \operatorname{tg} 
         reading=(sp.Matrix([L122, (x0 + x01) * tg3 - b, (F * xs - f * xs1) * tg3 - F1 * b * (1 - s)]),
                  sp.Matrix([M3c * tg3 / sn3, 0, 0])),
         note="each equation as left minus right side; the first is tan phi_3 M_3/sin phi_3 (zero at equilibrium)")
+
+
+# ==== witnesses ======================================================================================================
+def _green(poly):
+    """Exact area moments of a polygon (Green's theorem): A, int x, int y, int x^2, int y^2, int x y."""
+    out = [sp.Integer(0)] * 6
+    poly = [(sp.sympify(px), sp.sympify(py)) for px, py in poly]
+    for i in range(len(poly)):
+        (x1, y1), (x2, y2) = poly[i], poly[(i + 1) % len(poly)]
+        cr = x1 * y2 - x2 * y1
+        terms = (cr / 2, (x1 + x2) * cr / 6, (y1 + y2) * cr / 6, (x1 ** 2 + x1 * x2 + x2 ** 2) * cr / 12,
+                 (y1 ** 2 + y1 * y2 + y2 ** 2) * cr / 12, (x1 * y2 + 2 * x1 * y1 + 2 * x2 * y2 + x2 * y1) * cr / 24)
+        out = [o + t_ for o, t_ in zip(out, terms)]
+    return [sp.expand(o) for o in out]
+
+
+def _half(poly, c, keep_above=True):
+    """The part of a polygon (coordinates (X, Y)) with X >= c (or X <= c), exact."""
+    out = []
+    for i in range(len(poly)):
+        P, Q = poly[i], poly[(i + 1) % len(poly)]
+        fp, fq = (P[0] - c, Q[0] - c) if keep_above else (c - P[0], c - Q[0])
+        if fp >= 0:
+            out.append(P)
+        if fp * fq < 0:
+            lam = fp / (fp - fq)
+            out.append((P[0] + lam * (Q[0] - P[0]), P[1] + lam * (Q[1] - P[1])))
+    return out
+
+
+def _centred(poly):
+    A, Sx, Sy, *_ = _green(poly)
+    return [(px - Sx / A, py - Sy / A) for px, py in poly]
+
+
+SQUARE = [(-R(1, 2), -R(1, 2)), (R(1, 2), -R(1, 2)), (R(1, 2), R(1, 2)), (-R(1, 2), R(1, 2))]
+RECT = [(-1, -R(1, 2)), (1, -R(1, 2)), (1, R(1, 2)), (-1, R(1, 2))]
+TRI = _centred([(0, 0), (3, 0), (1, 2)])
+EQTRI = [(sp.sqrt(3) / 3 * sp.cos(2 * sp.pi * j / 3), sp.sqrt(3) / 3 * sp.sin(2 * sp.pi * j / 3)) for j in range(3)]
+# the designed pentagon: the dry part beyond x = 0 (raw) has int x y df = 0 about the foot of O (see tests)
+PENT = _centred([(-2, -1), (1, -R(3, 2)), (R(3, 2), R(1, 2)), (0, 2), (-R(3, 2) - R(67, 72), R(1, 2) - R(67, 48))])
+PENT_X0 = -R(349, 2196)      # O from N along NE for the raw cut x = 0
+N0, N1, N2 = (sp.Integer(1), sp.Integer(0)), (R(3, 5), R(4, 5)), (R(4, 5), -R(3, 5))
+
+
+def _box_eq2(A, bb, t):
+    """Box A x C x b, GH parallel to C: the width w of the dry strip where (103b) vanishes, and x_0 = w - A/2."""
+    w = 3 * (bb * t - A) / (2 * (t ** 2 - 1))
+    return w - sp.sympify(A) / 2
+
+
+def _box_eq3(A, bb, t, w):
+    """Box, third region: x_0 from (122) for the dry top strip of width w (linear in x_0)."""
+    w2 = w - bb / t
+    x0_ = sp.Symbol("x0_")
+    eq = ((w ** 3 - w2 ** 3) / 3 * t * (1 + t ** 2 / 2) - (w ** 2 - w2 ** 2) / 2 * t * (x0_ + bb * t / 2)
+          - bb * w2 ** 2 / 2 * (1 + t ** 2))
+    return sp.solve(eq, x0_)[0]
+
+
+CONFIGS = {
+    # name: (polygon, direction n of NE, x_0, tan phi, b, region)
+    "rect": (RECT, N1, R(1, 5), R(1, 2), R(3, 2), 2),
+    "tri": (TRI, N2, R(1, 4), R(2, 3), 2, 2),
+    "square": (SQUARE, N1, R(1, 10), R(3, 4), R(6, 5), 2),
+    "eqtri": (EQTRI, N2, R(1, 10), R(1, 2), R(3, 2), 2),
+    "pent-eq": (PENT, N0, PENT_X0, R(4, 3), R(475, 183), 2),
+    "box-eq": (SQUARE, N0, _box_eq2(1, 1, R(4, 3)), R(4, 3), sp.Integer(1), 2),
+    "rect-3": (RECT, N1, -R(1, 5), R(5, 2), R(1, 2), 3),
+    "tri-3": (TRI, N2, -R(1, 10), sp.Integer(2), R(3, 5), 3),
+    "box3-eq": ([(-R(9, 20), -R(1, 2)), (R(9, 20), -R(1, 2)), (R(9, 20), R(1, 2)), (-R(9, 20), R(1, 2))], N0,
+                R(1, 20), R(5, 2), sp.Integer(1), 3),
+}
+
+
+
+@functools.lru_cache(maxsize=None)
+def _params(name):
+    """Exact case data of a configuration: the area moments of the pieces of the base in the frame of N."""
+    poly, (nx, ny), x0v, t, bb, region = CONFIGS[name]
+    poly = [(sp.sympify(px), sp.sympify(py)) for px, py in poly]
+    base = [(px * nx + py * ny + x0v, -px * ny + py * nx) for px, py in poly]      # (X, Y) from N
+    A, _, _, _, _, _ = _green(poly)
+    PO_ = _green([(X - x0v, Y) for X, Y in base])[5]
+    Fm = _green(_half(base, 0))
+    Wm = _green(_half(base, 0, keep_above=False))
+    out = {F1: A, b: bb, F: Fm[0], xs: Fm[1] / Fm[0], ys: Fm[2] / Fm[0], T: Fm[3], Tp: Fm[4], PO: PO_, Pw: Wm[5],
+           x0: x0v}
+    V3v = t * Fm[1]
+    if region == 3:
+        dd = bb / t
+        fm = _green([(X - dd, Y) for X, Y in _half(base, dd)])
+        out.update({f: fm[0], xs1: fm[1] / fm[0], tau: fm[3], Pf: fm[5]})
+        V3v = t * (Fm[1] - fm[1])
+    out[s] = 1 - V3v / (A * bb)
+    return {k: sp.sympify(v) for k, v in out.items()}
+
+
+def _generic(name):
+    """The params with the waterplane's own central moments as T_2, T_2^1, k of the generic figure."""
+    p = dict(_params(name))
+    for sym, val in ((T2g, T2), (T21g, T21), (kg, Ks)):
+        p[sym] = res(val).xreplace(p)
+    return p
+
+
+def _num(v, dps):
+    return float(sp.N(v, 20)) if dps <= 15 else mpmath.mpf(sp.N(v, dps + 15))
+
+
+def _M(dps):
+    return math if dps <= 15 else mpmath
+
+
+@functools.lru_cache(maxsize=None)
+def _state(name, dps, tilt=None, flip=False):
+    """The clipped configuration at float64 (dps 15) or dps digits: floating state, dry part, frame vectors.
+    tilt: another tan(phi) for the same body and density; flip: density 1 - s with -u up."""
+    poly, (nx, ny), x0v, t, bb, region = CONFIGS[name]
+    bd = None if dps <= 15 else dps
+    M = _M(dps)
+    body = right_prism([(_num(px, dps), _num(py, dps)) for px, py in poly], _num(bb, dps), dps=bd)
+    tt = _num(t if tilt is None else tilt, dps)
+    sv = _num(_params(name)[s], dps)
+    cph, sph = 1 / M.sqrt(1 + tt ** 2), tt / M.sqrt(1 + tt ** 2)
+    n3, e3v = (_num(nx, dps), _num(ny, dps), 0 * tt), (-_num(ny, dps), _num(nx, dps), 0 * tt)
+    up = (sph * n3[0], sph * n3[1], cph)
+    h = (cph * n3[0], cph * n3[1], -sph)
+    if flip:
+        st = floating_state(body, tuple(-q for q in up), 1 - sv, tol=None if bd else 1e-16 * (1 + float(bb)))
+        return st
+    st = floating_state(body, up, sv, tol=None if bd else 1e-16 * (1 + float(bb)))
+    dry = submerged(body, tuple(-q for q in up), -st.t)
+    return dict(st=st, dry=dry, up=up, h=h, n=n3, e=e3v, c=cph, sn=sph, t=tt, b=_num(bb, dps), M=M,
+                lamN=(st.t - cph * _num(bb, dps) / 2) / sph, lamN1=(st.t + cph * _num(bb, dps) / 2) / sph)
+
+
+def _dot(a_, b_):
+    return sum(a_[k] * b_[k] for k in range(3))
+
+
+def _plane(basis, v):
+    return (_dot(basis[0], v), _dot(basis[1], v))
+
+
+def _quad(J, a_, c_):
+    return sum(a_[i] * J[i][j] * c_[j] for i in range(2) for j in range(2))
+
+
+def _measure(name, what, dps, mu_=None):
+    """One quantity of the text, measured on the clipped configuration."""
+    q = _state(name, dps)
+    st, dry, up, h, nv, ev, c, sn = (q[k] for k in ("st", "dry", "up", "h", "n", "e", "c", "sn"))
+    G = st.G
+    rel = [dry.centroid[k] - G[k] for k in range(3)]
+    V3m = dry.volume
+    x0m = -q["lamN"]                                   # O from N along NE
+    xi, eta, zeta = _dot(rel, nv), _dot(rel, ev), rel[2]
+    if what == "V3":
+        return V3m
+    if what == "My":
+        return V3m * eta
+    if what == "Pxy":
+        return V3m * eta / q["t"]
+    if what == "x0":
+        return x0m
+    if what == "balance":                              # V_1 h.(S_2 - S), V_1 e.(S_2 - S)
+        relB = [st.B[k] - G[k] for k in range(3)]
+        return st.volume * _dot(relB, h), st.volume * _dot(relB, ev)
+    if what == "M3":
+        return V3m * _dot(rel, h)
+    if what == "M3sin":
+        return V3m * _dot(rel, h) / sn
+    if what == "M3tan":
+        return V3m * _dot(rel, h) / sn * q["t"]
+    if what == "ZX":                                   # V_3 z_3, V_3 x_3
+        return V3m * (q["b"] / 2 - zeta), V3m * (xi + x0m)
+    if what == "V3zeta":
+        return V3m * zeta
+    if what == "V1e2":
+        return st.volume * st.potential
+    if what == "flip":
+        fl = _state(name, dps, flip=True)
+        return fl.volume * fl.potential
+    if what == "x0x01":
+        return (q["lamN1"] - q["lamN"]) * q["t"]
+    if what == "122":
+        return (V3m * _dot(rel, h) / sn * q["t"], (q["lamN1"] - q["lamN"]) * q["t"] - q["b"],
+                V3m - _num(_params(name)[F1] * _params(name)[b] * (1 - _params(name)[s]), dps))
+    J, basis = st.tensor, st.basis
+    hc, ec = _plane(basis, h), _plane(basis, ev)
+    Nw = [x0m * 0 - q["lamN"] * 0 + q["lamN"] * nv[k] for k in range(2)] + [q["b"] / 2]
+    cw = [st.waterplane_centroid[k] - Nw[k] for k in range(3)]
+    if what == "Tmu":
+        m = _M(dps)
+        mv = _num(mu_, dps)
+        v = tuple(m.cos(mv) * hc[k] - m.sin(mv) * ec[k] for k in range(2))
+        return _quad(J, v, v)
+    if what == "T2":
+        return _quad(J, hc, hc), _quad(J, ec, ec)
+    if what == "Ks":
+        return _quad(J, hc, ec)
+    if what == "wp-int":                               # int_1 y df, int_1 x df over the waterplane from N
+        return st.waterplane_area * _dot(cw, ev), st.waterplane_area * _dot(cw, h)
+    if what == "mnF2":
+        return _dot(cw, h), -_dot(cw, ev), st.waterplane_area
+    if what == "Imin":
+        return st.I_min
+    if what == "extremes":
+        mean = (J[0][0] + J[1][1]) / 2
+        return (st.I_min - mean) ** 2, (st.I_max - mean) ** 2
+    if what == "D":
+        return st.volume * st.metacentric_height
+    if what == "cD":
+        return c * st.volume * st.metacentric_height
+    if what == "2cD":
+        return 2 * c * st.volume * st.metacentric_height
+    if what == "Iminc":
+        return st.I_min * c
+    if what == "V3e3c":
+        return V3m * _dot(rel, up) * c
+    raise ValueError(what)
+
+
+def _w(wname, description, targets, names, what, extra=None, generic=False):
+    cases = []
+    for nm in names:
+        p = _generic(nm) if generic else dict(_params(nm))
+        p.update(extra or {})
+        cases.append(Case(p, (nm, (extra or {}).get(mu)), nm))
+    d.witness(Computed(wname, description, tuple(targets), tuple(cases),
+                       compute=lambda case, dps, what=what: _measure(case.data[0], what, dps, case.data[1])))
+
+
+G2 = ("rect", "tri", "square", "pent-eq", "box-eq")
+E2 = ("pent-eq", "box-eq")
+G3 = ("rect-3", "tri-3", "box3-eq")
+_w("dry-volume", "volume of the clipped body above the water plane", ("V3-F", "100"), G2, "V3")
+_w("dry-moment-y", "V_3 times the offset of the clipped dry part's centroid from the plane through S across GH",
+   ("95", "95-moment"), G2, "My")
+_w("dry-product", "the same over tan phi (int x y df of F by the clipped dry part)",
+   ("95a", "96", "97", "106-projection"), G2, "Pxy")
+_w("dry-product-regular", "int x y df by the clipped dry part, regular bases", ("98",), ("square", "eqtri"), "Pxy")
+_w("balance", "V_1 times the horizontal offsets of the clipped centre of buoyancy from G", ("95-S3",), G2, "balance")
+_w("M3", "V_3 times the horizontal distance of the clipped dry part's centroid from S across GH",
+   ("99", "99-transformation", "102-pre", "102"), G2, "M3")
+_w("M3-sin", "the same over sin phi", ("103b",), G2, "M3sin")
+_w("dry-moments", "V_3 z_3 and V_3 x_3 of the clipped dry part (depth below the upper base, distance from GH)",
+   ("101",), G2, "ZX")
+_w("dry-height", "V_3 times the height of the clipped dry part's centroid above S along the axis", ("116-pre",), G2,
+   "V3zeta")
+_w("x0", "x_0 where the clipped water plane meets EF in the upper base", ("x0-sign",), G2, "x0")
+_w("V1e2", "V_1 times the height of G above the clipped centre of buoyancy", ("104-balance",), G2, "V1e2")
+_w("flip", "the same for density 1 - s with the body upside down (-u up)", ("s-below-half",), G2, "flip")
+for nm_, mv in (("rect", R(2, 5)), ("tri", R(6, 5)), ("pent-eq", R(7, 10))):
+    _w(f"Tmu-{nm_}", "moment of the clipped waterplane about the centroidal axis at mu to GH", ("105", "105-def"),
+       (nm_,), "Tmu", {mu: mv})
+    _w(f"Tg-{nm_}", "the same (T_2, T_2^1, k the clipped waterplane's)", ("109",), (nm_,), "Tmu", {mu: mv},
+       generic=True)
+_w("Tmu-eq", "moment of the clipped waterplane about the axis at mu, at the equilibria", ("107",), E2, "Tmu",
+   {mu: R(1, 3)})
+_w("Ks", "central product moment of the clipped waterplane (axes along h and GH)", ("106-shift", "106-sum"), G2, "Ks")
+_w("Ks-eq", "the same at the equilibria", ("106",), E2, "Ks")
+_w("wp-integrals", "int_1 y df, int_1 x df of the clipped waterplane from N", ("106-moments",), G2, "wp-int")
+_w("wp-mn", "distances m, n of the clipped waterplane's centroid from HN, from N along HN, and its area",
+   ("112-mn",), G2, "mnF2")
+_w("wp-T2", "moments of the clipped waterplane about the centroidal axes along GH and across it", ("111",), G2, "T2")
+_w("k-eq", "central product of the clipped waterplane at the equilibria", ("112",), E2, "Ks")
+_w("Imin", "least moment of the clipped waterplane", ("110",), G2, "Imin", generic=True)
+_w("extremes", "squared deviations of the clipped waterplane's principal moments from their mean",
+   ("109-extremes",), G2, "extremes", generic=True)
+_w("Imin-eq", "least moment of the clipped waterplane times cos phi, equilibria", ("115",), E2, "Iminc")
+_w("D", "V_1 times the metacentric height of the clipped position, equilibria", ("104",), E2, "D")
+_w("cD", "cos phi times V_1 times the metacentric height, equilibria", ("114",), E2, "cD")
+_w("2cD", "2 cos phi times V_1 times the metacentric height, equilibria", ("117",), E2, "2cD")
+_w("e3", "V_3 e_3 cos phi of the clipped dry part, equilibria", ("116", "116-geometry"), E2, "V3e3c")
+_w("dry-volume-3", "volume of the clipped body above the water plane, third region", ("121b", "121-dry"), G3, "V3")
+_w("dry-product-3", "int x y df - int^1 x y df by the clipped dry part, third region", ("118",), G3, "Pxy")
+_w("dry-moments-3", "V_3 z_3, V_3 x_3 of the clipped dry part, third region", ("120",), G3, "ZX")
+_w("M3-3", "M_3 of the clipped dry part, third region", ("119",), G3, "M3")
+_w("M3-3-sin", "M_3/sin phi of the clipped dry part, third region", ("121",), G3, "M3sin")
+_w("x0x01", "(x_0 + x_0^1) tan phi from the clipped water lines in both bases", ("121a",), G3, "x0x01")
+_w("122", "tan phi M_3/sin phi, (x_0 + x_0^1) tan phi - b and V_3 - F_1 b (1 - s), clipped", ("122",), G3, "122")
