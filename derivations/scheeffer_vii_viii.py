@@ -271,7 +271,7 @@ d.quote("99-transformation", "VII",
 d.quote("stability-direction", "VII",
         "dass das für  $M_3 = 0$  eintretende Gleichgewicht ein (wenigstens für die Drehungsachse) stabiles sein "
         "muss, wenn  $M_3$  mit wachsendem  $\\varphi$  aus dem Negativen durch Null in's Positive übergeht",
-        reading=(A_ * C_ * b * s * sp.Derivative(Eb, th), Mb),
+        reading=(A_ * C_ * b * s * sp.diff(res(Eb), th), Mb),
         note="read as M_3 = V_1 dE/dphi (E the height of G above B): a zero where M_3 goes from - to + is a "
              "minimum of E; shown on the rectangular strip (steps box-*), witnessed on clipped boxes")
 d.quote("100", "(100)", r"so ist das  $\frac{1}{2}$  Volumen des über dem Wasser befindlichen Teils"
@@ -740,3 +740,96 @@ _w("M3-3", "M_3 of the clipped dry part, third region", ("119",), G3, "M3")
 _w("M3-3-sin", "M_3/sin phi of the clipped dry part, third region", ("121",), G3, "M3sin")
 _w("x0x01", "(x_0 + x_0^1) tan phi from the clipped water lines in both bases", ("121a",), G3, "x0x01")
 _w("122", "tan phi M_3/sin phi, (x_0 + x_0^1) tan phi - b and V_3 - F_1 b (1 - s), clipped", ("122",), G3, "122")
+
+
+# ---- the stability remark on clipped boxes, the tilt (103a) by root finding, the moments of F (113)
+def _box_potential(A, C, bb, sv, theta, dps):
+    """Height of G above B of the clipped box A x C x b tilted by theta about an axis parallel to the side C."""
+    M, bd = _M(dps), (None if dps <= 15 else dps)
+    body = right_prism([(-A / 2, -C / 2), (A / 2, -C / 2), (A / 2, C / 2), (-A / 2, C / 2)], bb, dps=bd)
+    st = floating_state(body, (M.sin(theta), 0 * theta, M.cos(theta)), sv, tol=None if bd else 1e-16 * (1 + bb))
+    return st.potential
+
+
+def _box_slope(case, dps):
+    """V_1 dE/dtheta of the clipped box: central differences, Richardson-extrapolated (order 4 in float64 with
+    h = 1e-3; order 6 with h = 1e-8 on a 70-digit body for the 50-digit method)."""
+    hi = 15 if dps <= 15 else 70
+    with mpmath.workdps(hi if dps > 15 else 15):
+        A, C, bb, sv, t0 = (_num(case.params[k], hi) for k in (A_, C_, b, s, th))
+        E = lambda q: _box_potential(A, C, bb, sv, q, hi)  # noqa: E731
+        D = lambda h: (E(t0 + h) - E(t0 - h)) / (2 * h)  # noqa: E731
+        if dps <= 15:
+            h = 1e-3
+            slope = (4 * D(h / 2) - D(h)) / 3
+        else:
+            h = mpmath.mpf("1e-8")
+            d1, d2, d4 = D(h), D(h / 2), D(h / 4)
+            r1, r2 = (4 * d2 - d1) / 3, (4 * d4 - d2) / 3
+            slope = (16 * r2 - r1) / 15
+        return sv * A * C * bb * slope
+
+
+BOXES = (Case({A_: 1, C_: 1, b: 1, s: R(3, 4), th: R(3, 5)}, label="cube, s = 3/4, theta = 0.6"),
+         Case({A_: 1, C_: 1, b: 1, s: R(3, 4), th: R(9, 10)}, label="cube, s = 3/4, theta = 0.9"),
+         Case({A_: R(3, 2), C_: R(1, 2), b: 1, s: R(4, 5), th: R(1, 2)}, label="box 3/2 x 1/2 x 1, s = 4/5"))
+d.witness(Computed("box-slope", "V_1 dE/dtheta of clipped boxes (difference quotients of the clipped potential)",
+                   ("stability-direction",), BOXES, compute=_box_slope))
+
+
+@functools.lru_cache(maxsize=None)
+def _tilt_root(name, dps):
+    """tan phi at which the clipped water plane meets EF in the upper base at the given x_0 (secant method on the
+    measured x_0, from tan phi +- 1e-3 of the configuration)."""
+    t = CONFIGS[name][3]
+    target = _num(_params(name)[x0], dps)
+    f = lambda q: _x0_at(name, q, dps) - target  # noqa: E731
+    t0, w = (_num(t, dps), 1e-2) if dps <= 15 else (mpmath.mpf(_tilt_root(name, 15)), mpmath.mpf("1e-9"))
+    a_, c_ = t0 * (1 - w), t0 * (1 + w)
+    fa, fc = f(a_), f(c_)
+    for _ in range(60):
+        if fc == fa:
+            break
+        a_, fa, c_ = c_, fc, c_ - fc * (c_ - a_) / (fc - fa)
+        fc = f(c_)
+        if abs(c_ - a_) < (1e-15 if dps <= 15 else mpmath.mpf(10) ** (-dps - 3)):
+            break
+    return c_
+
+
+def _x0_at(name, q, dps):
+    """x_0 of the clipped water line for the tilt tan phi = q (a number at the working precision)."""
+    poly, (nx, ny), _, _, bb, _ = CONFIGS[name]
+    M, bd = _M(dps), (None if dps <= 15 else dps)
+    body = _bodies(name, dps)
+    cph, sph = 1 / M.sqrt(1 + q ** 2), q / M.sqrt(1 + q ** 2)
+    st = floating_state(body, (sph * _num(nx, dps), sph * _num(ny, dps), cph), _num(_params(name)[s], dps),
+                        tol=None if bd else 1e-16 * (1 + float(bb)))
+    return -(st.t - cph * _num(bb, dps) / 2) / sph
+
+
+@functools.lru_cache(maxsize=None)
+def _bodies(name, dps):
+    poly, _, _, _, bb, _ = CONFIGS[name]
+    return right_prism([(_num(px, dps), _num(py, dps)) for px, py in poly], _num(bb, dps),
+                       dps=None if dps <= 15 else dps)
+
+
+d.witness(Computed("tilt-root", "tan of the tilt at which the clipped water line passes through N (secant method)",
+                   ("103a",), tuple(Case(_params(nm), nm, nm) for nm in ("rect", "tri")),
+                   compute=lambda case, dps: _tilt_root(case.data, dps)))
+
+
+def _dry_face_moments(name, dps):
+    """Central moments of the dry part F of the upper base from the clipped upright prism over it."""
+    poly, (nx, ny), x0v, _, _, _ = CONFIGS[name]
+    base = [(px * nx + py * ny + x0v, -px * ny + py * nx) for px, py in poly]
+    Fp = _half([(sp.sympify(X), sp.sympify(Y)) for X, Y in base], 0)
+    pr = right_prism([(_num(X, dps), _num(Y, dps)) for X, Y in Fp], 1, dps=None if dps <= 15 else dps)
+    J = floating_state(pr, (0, 0, 1), _num(R(1, 2), dps)).tensor
+    return J[0][0], J[1][1]
+
+
+d.witness(Computed("F-moments", "central moments of F (clipped upright prism over the dry part of the base)",
+                   ("113", "117-T"), tuple(Case(_params(nm), nm, nm) for nm in ("rect", "tri", "pent-eq")),
+                   compute=lambda case, dps: _dry_face_moments(case.data, dps)))
