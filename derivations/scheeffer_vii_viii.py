@@ -30,6 +30,7 @@ conditions and then checked on the clipped body (both horizontal offsets of B fr
 box equilibria are also found as roots of the clipped righting arm.
 """
 import functools
+import itertools
 import math
 
 import mpmath
@@ -38,6 +39,7 @@ import sympy as sp
 from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import floating_state, right_prism, submerged
+from symfloat.model.prediction import Prediction
 
 R = sp.Rational
 b, s, F1, F, xs, T, Tp, f, xs1, tau = sp.symbols("b s F_1 F x_s T T^1 f x_s^1 tau", positive=True)
@@ -219,10 +221,10 @@ d.step("D", sp.Eq(D, Tm - V1 * e2), "definition", result=D,
        note="Duhamel: V_1 times the metacentric height of the position; stable iff D > 0 (scheeffer-iv-v (33))")
 d.step("e3-cos", (e3 * c2, b / 2 - Z3 / V3 + sn2 * M3 / V3), "algebra", uses=("e3", "M3"),
        note="so e_3 cos phi_2 = b/2 - z_3 wherever M_3 = 0")
-d.step("balance-h", sp.Eq(sp.Symbol("M_2h"), -hor2.dot(MS3)), "definition", result=sp.Symbol("M_2h"),
+M2h, M2y = sp.symbols("M_2h M_2y")
+d.step("balance-h", sp.Eq(M2h, -hor2.dot(MS3)), "definition", result=M2h,
        note="V_1 h.(S_2 - S) from V S = V_1 S_2 + V_3 S_3")
-d.step("balance-y", sp.Eq(sp.Symbol("M_2y"), -My), "definition", result=sp.Symbol("M_2y"))
-PO0 = {PO: 0}
+d.step("balance-y", sp.Eq(M2y, -My), "definition", result=M2y)
 d.step("regular-product", (sp.Subs(sp.Rational(1, 2) * (sp.Symbol("T_x") - sp.Symbol("T_y")) * sp.sin(2 * sp.Symbol("omega"))
                                    + sp.Symbol("J") * sp.cos(2 * sp.Symbol("omega")),
                                    (sp.Symbol("T_x"), sp.Symbol("J")), (sp.Symbol("T_y"), 0)), 0), "substitution",
@@ -246,7 +248,7 @@ d.quote("95", "(95)", "„Das statische Moment des über dem Wasser befindlichen
         "senkrecht zur Drehungsachse gelegte Vertikalebene (Ebene der Figur 17) ist Null.“ (95)",
         reading=(My, V3 * sp.Matrix([0, 1, 0]).dot(MS3 / V3)), note="the moment itself; 'ist Null' is the condition")
 d.quote("95-S3", "VII", r"Da nun  $S_2$  senkrecht unter  $S$  liegt, so muss auch  $S_3$  senkrecht über  $S$  liegen",
-        reading=(sp.Matrix([sp.Symbol("M_2h"), sp.Symbol("M_2y")]), -sp.Matrix([M3, My])),
+        reading=(sp.Matrix([M2h, M2y]), -sp.Matrix([M3, My])),
         note="read as V_1 (S_2 - S) = -V_3 (S_3 - S) in the two horizontal directions")
 d.quote("95-element", "VII", r"$z \cdot y \cdot df$ , oder da  $z = x \operatorname{tg} \varphi_2$  ist,  "
         r"$x y \cdot df \cdot \operatorname{tg} \varphi_2$",
@@ -260,8 +262,26 @@ d.quote("96-split", "VII", r"$$\int_s (x_0 + x) y df = x_0 \cdot \int_s y df + \
         reading=(Pwh, x0 * 0 + PO), note="int_s y df = 0 (the next sentence)")
 d.quote("97", "(97)", r"$$\int x y df = \int_s x y df + \int_2 x y df = 0. \quad (97)$$", reading=(Pxy, PO + I2),
         note=EQN)
-d.quote("98", "(98)", r"$$\int x y df = \int_2 x y df = 0 \quad (98)$$", reading=(res(Pxy).subs(PO0), res(I2)),
+d.quote("98", "(98)", r"$$\int x y df = \int_2 x y df = 0 \quad (98)$$", reading=(res(Pxy).subs(PO, 0), res(I2)),
         note="regular prism: P_O = 0 (step regular-product); " + EQN)
+d.quote("95a-split", "VII", r"$$\int x y \cdot = \int_1 x y df - \int_2 x y df$$", reading=(Pxy, Pwh - Pw),
+        note="int_2 over BGH still from N; the 'df' of the left side is lost in the transcription (harmless)")
+d.quote("regular-Ps", "VII", r"so ist nach Abschnitt V auch  $\int_s x y df = 0$",
+        reading=(sp.Subs(sp.Rational(1, 2) * (sp.Symbol("T_x") - sp.Symbol("T_y")) * sp.sin(2 * sp.Symbol("omega"))
+                         + sp.Symbol("J") * sp.cos(2 * sp.Symbol("omega")),
+                         (sp.Symbol("T_x"), sp.Symbol("J")), (sp.Symbol("T_y"), 0)), 0),
+        note="the product moment of a regular polygon about central axes in any direction (step regular-product)")
+d.quote("S3-offsets", "VII", "$$S_3 O_3 = P_3 O = x_3 - x_0,$$\n\n$SO$ , die halbe Höhe des Prismas, nach der früheren "
+        "Bezeichnung  $= \\frac{b}{2}$ ,\n\n$$SO_3 = SO - O_3 O = \\frac{b}{2} - z_3.$$",
+        reading=(sp.Matrix([MS3[0] / V3, MS3[2] / V3]), sp.Matrix([X3 / V3 - x0, b / 2 - Z3 / V3])),
+        note="S_3 P_3 = z_3 (depth below the upper base), N P_3 = x_3 (the display before): the offsets of S_3 from S "
+             "along NE and along the axis")
+d.quote("complete", "VII", "No. 95 a, 103 a, b und 117 enthalten die vollständigen Bedingungen des Gleichgewichts "
+        "und der Stabilität eines geraden Prismas (von beliebiger Form) für das zweite Drehungsgebiet.",
+        reading=(sp.Matrix([M2h, M2y]), -sp.Matrix([sn2 * Q2, tg2 * Pxy])),
+        note="read as: the two horizontal offsets of S_2 from S (times V_1) are -sin phi_2 x (103b) and -tan phi_2 x "
+             "(95a), with the tilt from (103a): the position is an equilibrium exactly when (95a) and (103b) hold; "
+             "stability is (117) (sign identity 2 cos phi_2 D, checked with (117))")
 d.quote("99", "(99)", r"$$M_3 = V_3 (x_3 - x_0) \cos \varphi_2 - V_3 \left( \frac{b}{2} - z_3 \right) \cdot \sin "
         r"\varphi_2 = 0. \quad (99)$$", reading=(M3, (X3 - V3 * x0) * c2 - (V3 * b / 2 - Z3) * sn2), note=EQN)
 d.quote("99-transformation", "VII",
@@ -308,6 +328,13 @@ d.quote("s-below-half", "VII", r"Wenn das spec. Gew.  $s < \frac{1}{2}$  ist, so
         note="read as: V_1 (S - S_2) = V_3 (S_3 - S), so V_1 E (the potential times the submerged volume) is the "
              "same for the body of density s with u up and that of density 1 - s with -u up, whose submerged part "
              "is this dry part: the equilibria and their stability correspond (witnessed on clipped prisms)")
+d.quote("s-below-half-95", "VII", "$$\\int x y \\, d f = 0$$\n\nwo nun die Integration auf den eintauchenden Teil "
+        "der unteren Grundfläche auszudehnen ist.", reading=(Pxy, My / tg2),
+        note="for s < 1/2 the body of density 1 - s with -u up: its submerged part is the dry part here, so the "
+             "integral is the same (witnessed on the turned clipped body); '= 0' imposed")
+d.quote("106-first", "VII", r"folglich auch  $\int_1",
+        reading=(res(J1).subs(Pw, PO), 0),
+        note="int_1 x y df = 0 at the first condition (the line break of the transcription splits the formula)")
 d.quote("104", "(104)", r"$$T_m - V_3 e_3 > 0 \quad (104)$$", reading=(Tm - V3 * e3, D),
         note="D = T_m - V_1 e_2 (Duhamel), V_1 e_2 = V_3 e_3 (step e2-e3); T_m the least moment at equilibrium")
 d.quote("104-balance", "VII", r"so ist  $V_1 e_2 = V_3 e_3$", reading=(V1 * e2, V3 * e3))
@@ -404,8 +431,6 @@ d.quote("x0-sign", "VII", r"Wenn der Punkt  $N$  (s. Fig. 17 und 18) zwischen  $
 tg3, c3, sn3 = sp.tan(phi3), sp.cos(phi3), sp.sin(phi3)
 up3, hor3 = sp.Matrix([sn3, 0, c3]), sp.Matrix([c3, 0, -sn3])
 Mf = {(0, 0): f, (1, 0): f * xs1, (2, 0): tau, (1, 1): Pf}
-dML = sp.Symbol("d_ML", positive=True)
-d.domain[dML] = (R(1, 2), 2)
 d.step("tilt-3", sp.Eq(phi3, sp.atan(F1 * b * (1 - s) / (F * xs - f * xs1))), "definition", result=phi3,
        note="the tilt at which the dry volume (121b) is V (1 - s)")
 d.step("x01", sp.Eq(x01, b / tg3 - x0), "definition", result=x01,
@@ -508,13 +533,19 @@ def _box_eq2(A, bb, t):
     return w - sp.sympify(A) / 2
 
 
-def _box_eq3(A, bb, t, w):
+def _box_eq3(bb, t, w):
     """Box, third region: x_0 from (122) for the dry top strip of width w (linear in x_0)."""
     w2 = w - bb / t
     x0_ = sp.Symbol("x0_")
     eq = ((w ** 3 - w2 ** 3) / 3 * t * (1 + t ** 2 / 2) - (w ** 2 - w2 ** 2) / 2 * t * (x0_ + bb * t / 2)
           - bb * w2 ** 2 / 2 * (1 + t ** 2))
     return sp.solve(eq, x0_)[0]
+
+
+def _box3(bb, t, w):
+    """The base A x 1 of the third-region box equilibrium: A = 2 (w - x_0)."""
+    A = 2 * (w - _box_eq3(bb, t, w))
+    return [(-A / 2, -R(1, 2)), (A / 2, -R(1, 2)), (A / 2, R(1, 2)), (-A / 2, R(1, 2))]
 
 
 CONFIGS = {
@@ -527,8 +558,8 @@ CONFIGS = {
     "box-eq": (SQUARE, N0, _box_eq2(1, 1, R(4, 3)), R(4, 3), sp.Integer(1), 2),
     "rect-3": (RECT, N1, -R(1, 5), R(5, 2), R(1, 2), 3),
     "tri-3": (TRI, N2, -R(1, 10), sp.Integer(2), R(3, 5), 3),
-    "box3-eq": ([(-R(9, 20), -R(1, 2)), (R(9, 20), -R(1, 2)), (R(9, 20), R(1, 2)), (-R(9, 20), R(1, 2))], N0,
-                R(1, 20), R(5, 2), sp.Integer(1), 3),
+    "box3-eq": (_box3(sp.Integer(1), R(5, 2), R(1, 2)), N0, _box_eq3(sp.Integer(1), R(5, 2), R(1, 2)), R(5, 2),
+                sp.Integer(1), 3),
 }
 
 
@@ -572,14 +603,14 @@ def _M(dps):
 
 
 @functools.lru_cache(maxsize=None)
-def _state(name, dps, tilt=None, flip=False):
+def _state(name, dps, flip=False):
     """The clipped configuration at float64 (dps 15) or dps digits: floating state, dry part, frame vectors.
-    tilt: another tan(phi) for the same body and density; flip: density 1 - s with -u up."""
+    flip: the state of density 1 - s with -u up."""
     poly, (nx, ny), x0v, t, bb, region = CONFIGS[name]
     bd = None if dps <= 15 else dps
     M = _M(dps)
     body = right_prism([(_num(px, dps), _num(py, dps)) for px, py in poly], _num(bb, dps), dps=bd)
-    tt = _num(t if tilt is None else tilt, dps)
+    tt = _num(t, dps)
     sv = _num(_params(name)[s], dps)
     cph, sph = 1 / M.sqrt(1 + tt ** 2), tt / M.sqrt(1 + tt ** 2)
     n3, e3v = (_num(nx, dps), _num(ny, dps), 0 * tt), (-_num(ny, dps), _num(nx, dps), 0 * tt)
@@ -638,6 +669,11 @@ def _measure(name, what, dps, mu_=None):
         return V3m * zeta
     if what == "V1e2":
         return st.volume * st.potential
+    if what == "offsets":
+        return xi, zeta
+    if what == "flip-product":
+        fl = _state(name, dps, flip=True)
+        return fl.volume * _dot([fl.B[k] - fl.G[k] for k in range(3)], ev) / q["t"]
     if what == "flip":
         fl = _state(name, dps, flip=True)
         return fl.volume * fl.potential
@@ -648,7 +684,7 @@ def _measure(name, what, dps, mu_=None):
                 V3m - _num(_params(name)[F1] * _params(name)[b] * (1 - _params(name)[s]), dps))
     J, basis = st.tensor, st.basis
     hc, ec = _plane(basis, h), _plane(basis, ev)
-    Nw = [x0m * 0 - q["lamN"] * 0 + q["lamN"] * nv[k] for k in range(2)] + [q["b"] / 2]
+    Nw = (q["lamN"] * nv[0], q["lamN"] * nv[1], q["b"] / 2)        # the point N of the upper base
     cw = [st.waterplane_centroid[k] - Nw[k] for k in range(3)]
     if what == "Tmu":
         m = _M(dps)
@@ -698,7 +734,13 @@ _w("dry-volume", "volume of the clipped body above the water plane", ("V3-F", "1
 _w("dry-moment-y", "V_3 times the offset of the clipped dry part's centroid from the plane through S across GH",
    ("95", "95-moment"), G2, "My")
 _w("dry-product", "the same over tan phi (int x y df of F by the clipped dry part)",
-   ("95a", "96", "97", "106-projection"), G2, "Pxy")
+   ("95a", "95a-split", "96", "97", "106-projection"), G2, "Pxy")
+_w("dry-offsets", "offsets of the clipped dry part's centroid from S along NE and along the axis", ("S3-offsets",),
+   G2, "offsets")
+_w("flip-product", "int x y df from the turned body (density 1 - s, -u up): its submerged part's offset along GH",
+   ("s-below-half-95",), G2, "flip-product")
+_w("balance-complete", "V_1 times the horizontal offsets of the clipped centre of buoyancy from G", ("complete",), G2,
+   "balance")
 _w("dry-product-regular", "int x y df by the clipped dry part, regular bases", ("98",), ("square", "eqtri"), "Pxy")
 _w("balance", "V_1 times the horizontal offsets of the clipped centre of buoyancy from G", ("95-S3",), G2, "balance")
 _w("M3", "V_3 times the horizontal distance of the clipped dry part's centroid from S across GH",
@@ -833,3 +875,85 @@ def _dry_face_moments(name, dps):
 d.witness(Computed("F-moments", "central moments of F (clipped upright prism over the dry part of the base)",
                    ("113", "117-T"), tuple(Case(_params(nm), nm, nm) for nm in ("rect", "tri", "pent-eq")),
                    compute=lambda case, dps: _dry_face_moments(case.data, dps)))
+
+
+# ==== predictions: boxes turned about an axis parallel to an edge ====================================================
+def _bisect(f, lo, hi):
+    flo = f(lo)
+    for _ in range(80):
+        mid = (lo + hi) / 2
+        fm = f(mid)
+        if (fm < 0) == (flo < 0):
+            lo, flo = mid, fm
+        else:
+            hi = mid
+    return (lo + hi) / 2
+
+
+def _roots(f, valid):
+    """Sign changes of f on a log grid of tan phi in (0.01, 100) where valid(t) holds, refined by bisection."""
+    grid = [10 ** (-2 + 4 * k / 400) for k in range(401)]
+    out = []
+    for lo, hi in zip(grid, grid[1:]):
+        if valid(lo) and valid(hi) and (f(lo) < 0) != (f(hi) < 0):
+            out.append(_bisect(f, lo, hi))
+    return out
+
+
+def _strip2(A, C, H, sv):
+    """Second region, dry strip of width w across the side C: (103a) gives w, (103b) the tilt; (117) the
+    stability (as printed, k = 0 by symmetry)."""
+    w = lambda t: math.sqrt(2 * A * H * (1 - sv) / t)  # noqa: E731
+    f = lambda t: w(t) * (t * t - 1) / 6 - (H * t - A) / 4  # noqa: E731  (103b) over C w^2/2
+    out = []
+    for t in _roots(f, lambda t: w(t) < A and w(t) * t < H):
+        ww = w(t)
+        T_, Fxs, x0_ = C * ww ** 3 / 3, C * ww ** 2 / 2, ww - A / 2
+        T1_, T11_, c2_ = T_ - Fxs * ww / 2, ww * C ** 3 / 12, 1 / (1 + t * t)
+        lhs = T1_ / c2_ + T11_ + 2 * Fxs * x0_ - 2 * T_ - abs(T1_ / c2_ - T11_)     # (117), y_s = 0
+        out.append((t, "stable" if lhs > 0 else "unstable"))
+    return out
+
+
+def _strip3(A, C, H, sv):
+    """Third region, dry strips of widths w, w - H/t in the two bases: (121b) gives w, (122) the tilt."""
+    w = lambda t: A * (1 - sv) + H / (2 * t)  # noqa: E731  (121b)
+    w2 = lambda t: w(t) - H / t  # noqa: E731
+
+    def f(t):
+        T_, tau_, fx1 = C * w(t) ** 3 / 3, C * w2(t) ** 3 / 3, C * w2(t) ** 2 / 2
+        return ((T_ - tau_) * t * (1 + t * t / 2) - A * C * H * (1 - sv) * (w(t) - A / 2 + H * t / 2)
+                - H * fx1 * (1 + t * t))
+    return [(t, None) for t in _roots(f, lambda t: w2(t) > 0 and w(t) < A)]
+
+
+def _predict(scene):
+    if scene.body not in ("box", "cube"):
+        return []
+    dims = [float(q) for q in scene.dims]
+    s0 = float(scene.density)
+    sv, flip = (s0, 1) if s0 >= 0.5 else (1 - s0, -1)     # s < 1/2: s for 1 - s, dry and wet exchanged
+    preds, seen = [], []
+    perms = [pm for pm in itertools.permutations(range(3)) if all(dims[pm[m]] == dims[m] for m in range(3))]
+    for k in range(3):                                   # prism axis
+        for i in range(3):                               # the base edge across GH (the dry side rises towards +i)
+            if i == k:
+                continue
+            j = 3 - i - k
+            for (t, stab), names in ([(r, ("95a", "103a", "103b", "117")) for r in _strip2(dims[i], dims[j], dims[k], sv)]
+                                     + [(r, ("118", "121a", "121b", "122")) for r in _strip3(dims[i], dims[j], dims[k], sv)]):
+                c_, s_ = 1 / math.sqrt(1 + t * t), t / math.sqrt(1 + t * t)
+                up = [0.0, 0.0, 0.0]
+                up[i], up[k] = flip * s_, flip * c_
+                key = [abs(q) for q in up]
+                if any(max(abs(key[pm[m]] - old[m]) for m in range(3)) < 1e-9 for old in seen for pm in perms):
+                    continue
+                seen.append(key)
+                region = "second" if names[0] == "95a" else "third"
+                preds.append(Prediction(printed=names, up=tuple(up), stability=stab,
+                                        note=f"{region} region, prism axis {'xyz'[k]}, turned about an edge along "
+                                             f"{'xyz'[j]}: tan phi = {t:.12g}"))
+    return preds
+
+
+d.predicts(("box", "cube"), _predict)

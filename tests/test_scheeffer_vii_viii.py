@@ -4,6 +4,7 @@ the engine must refute."""
 import dataclasses
 import math
 import re
+from fractions import Fraction
 
 import pytest
 import sympy as sp
@@ -13,13 +14,14 @@ from symfloat.engine.cache import ReportCache
 from symfloat.engine.check import check_derivation
 from symfloat.engine.runner import verify
 from symfloat.geometry.floating import box, floating_state
+from symfloat.model.prediction import Scene
 from symfloat.model.source import SOURCES
 
 TEXT = SOURCES["scheeffer"].text()
 RANGE = TEXT[TEXT.index("## VII."):TEXT.index("## IX.")]
 ERRATA = {"100": "transcription", "109": "misprint"}
 # printed formulas that are logical or calculus steps on others (no numeric quantity of their own to clip)
-UNWITNESSED = {"95-element", "96-split", "108", "109-cos", "117-cos"}
+UNWITNESSED = {"95-element", "96-split", "108", "109-cos", "117-cos", "regular-Ps", "106-first"}
 
 
 @pytest.fixture(scope="module")
@@ -179,3 +181,35 @@ def test_the_109_correction_must_hold():
     wrong = dataclasses.replace(p.erratum, corrected_reading=p.reading)
     rep = check_derivation(_mutated("109", erratum=wrong), prove=False)
     assert any("correction does not hold" in f for f in rep.failures)
+
+
+# ---- predictions --------------------------------------------------------------------------------------------
+
+SCENES = [Scene("cube", Fraction(71, 98), (Fraction(1),) * 3), Scene("cube", Fraction(1, 5), (Fraction(1),) * 3),
+          Scene("box", Fraction(2, 3), (Fraction(9, 10), Fraction(1), Fraction(1))),
+          Scene("box", Fraction(1, 3), (Fraction(9, 10), Fraction(1), Fraction(1)))]
+
+
+@pytest.mark.parametrize("scene", SCENES, ids=lambda sc: f"{sc.body}-{sc.density}")
+def test_predicted_positions_are_clipped_equilibria_with_the_predicted_stability(scene):
+    preds = M.d.predictor.predict(scene)
+    assert preds and all(set(p.printed) <= {q.name for q in M.d.printed} for p in preds)
+    body = box(*[float(q) for q in scene.dims])
+    for p in preds:
+        st = floating_state(body, p.up, float(scene.density))
+        r = [st.B[k] - st.G[k] for k in range(3)]
+        along = sum(r[k] * p.up[k] for k in range(3))
+        assert max(abs(r[k] - along * p.up[k]) for k in range(3)) < 1e-12      # B vertically below G
+        if p.stability is not None:
+            assert (st.metacentric_height > 0) == (p.stability == "stable")
+
+
+def test_predictions_pinned():
+    # the cube at s = 71/98: the designed second-region position tan phi = 4/3 (one representative, here seen from
+    # the x axis as tan phi = 3/4) and the diagonal one at 45 deg; both labile by (117)
+    ups = sorted(tuple(round(abs(q), 12) for q in p.up) for p in M._predict(SCENES[0]))
+    assert ups == [(0.707106781187, 0.707106781187, 0.0), (0.8, 0.6, 0.0)]
+    # the box 9/10 x 1 x 1 at s = 2/3: the third-region position tan phi = 5/2 of (122), as designed (box3-eq)
+    third = [p for p in M._predict(SCENES[2]) if p.printed[0] == "118"]
+    assert len(third) == 1 and third[0].up[0] == pytest.approx(5 / math.sqrt(29), rel=1e-12)
+    assert M._predict(Scene("prism", Fraction(1, 2), (Fraction(1), Fraction(1)), sides=6)) == []
