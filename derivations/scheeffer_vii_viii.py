@@ -21,13 +21,26 @@ over F are taken termwise.  int x y df over F is the integral over the whole bas
 over the wet part BGH (additivity).  In VIII the lower base's dry part f is measured from ML (x' = x - b
 cot phi_3): f, f x_s^1, tau = int x'^2, int x' y.
 
-Witnesses (``symfloat.geometry.floating``): rectangles, triangles, squares and a pentagon are clipped at
-the tilt with the draught found from the volume; the dry part is the clipped body above the water plane,
-its volume and centroid measured directly; x_0 is read off where the clipped water plane meets the upper
-base, the waterplane moments from the clipped waterplane polygon.  The case data (F, x_s, T, ... of the
-plane pieces) come from exact 2-D polygon moments.  Equilibria: two are designed from the printed
-conditions and then checked on the clipped body (both horizontal offsets of B from G vanish there); the
-box equilibria are also found as roots of the clipped righting arm.
+Claims judged: S_3 lies vertically above S when S_2 lies below it (mass balance); M_3 = V_1 dE/dphi, so an
+equilibrium where M_3 passes from - to + is stable about the axis (shown on the rectangular strip, measured on
+clipped boxes by difference quotients of the potential); for s < 1/2 dry and wet parts exchange (V_1 E is the
+same for the turned body of density 1 - s); x_0 < 0 when N lies between O and E; 'No. 95a, 103a, b und 117
+enthalten die vollständigen Bedingungen' (the two horizontal offsets of S_2 are -sin phi (103b), -tan phi
+(95a)).  Errata: the stray '1/2' before 'Volumen' in (100) (scan), the sign of 2 k tg 2mu in (109) (print).
+The references '102 a', '102 b' in (116), (117) mean (103a), (103b).
+
+Witnesses (``symfloat.geometry.floating``): rectangles, triangles, squares, an equilateral triangle and a
+pentagon are clipped at the tilt with the draught found from the volume; the dry part is the clipped body
+above the water plane, its volume and centroid measured directly; x_0 is read off where the clipped water
+plane meets the upper base, the waterplane moments from the clipped waterplane polygon.  The case data (F,
+x_s, T, ... of the plane pieces) come from exact 2-D polygon moments.  Equilibria: a pentagon (unsymmetric,
+k != 0) and two boxes (second and third region) are designed from the printed conditions in exact arithmetic
+and then checked on the clipped body (both horizontal offsets of B from G vanish); the box tilts are also
+found as roots of the clipped righting arm (tests).
+
+Predictions: boxes and cubes turned about an axis parallel to an edge (the dry part of a base a strip): the
+second-region positions from (103a), (103b) with their stability from (117), the third-region ones from
+(121b), (122) (no stability: the text gives none); s < 1/2 by the exchange of dry and wet parts.
 """
 import functools
 import itertools
