@@ -26,7 +26,9 @@ equilibrium where M_3 passes from - to + is stable about the axis (shown on the 
 clipped boxes by difference quotients of the potential); for s < 1/2 dry and wet parts exchange (V_1 E is the
 same for the turned body of density 1 - s); x_0 < 0 when N lies between O and E; 'No. 95a, 103a, b und 117
 enthalten die vollständigen Bedingungen' (the two horizontal offsets of S_2 are -sin phi (103b), -tan phi
-(95a)).  Errata: the stray '1/2' before 'Volumen' in (100) (scan), the sign of 2 k tg 2mu in (109) (print).
+(95a)); 's > 1/2, sodass also die obere Grundfläche zum Teil eintaucht' holds only for bases reaching equally
+far on both sides of the axis (claim erratum, as in IV).  Errata: the stray '1/2' before 'Volumen' in (100)
+(scan), the sign of 2 k tg 2mu in (109) (print).
 The references '102 a', '102 b' in (116), (117) mean (103a), (103b).
 
 Witnesses (``symfloat.geometry.floating``): rectangles, triangles, squares, an equilateral triangle and a
@@ -246,6 +248,16 @@ d.step("regular-product", (sp.Subs(sp.Rational(1, 2) * (sp.Symbol("T_x") - sp.Sy
             "with T_x = T_y and a symmetry axis (J = 0): every regular polygon (section V), so P_O = 0")
 
 
+# ---- which base is cut first (the opening of VII), as in scheeffer-iv-v (53)-(55)
+um, um1, sst = sp.symbols("u_m u_m' s^*", positive=True)
+d.domain.update({um: (R(1, 5), 2), um1: (R(1, 5), 2)})
+d.step("first-contact", sp.Eq(sst, um1 / (um + um1)), "definition", result=sst,
+       uses=("scheeffer-iv-v:top-contact", "scheeffer-iv-v:bottom-contact", "scheeffer-iv-v:threshold"),
+       note="turned about EF from the upright position, the plane through EF reaches the upper base at tan phi = "
+            "b (1-s)/u_m, the lower one at b s/u_m' (u_m, u_m' the farthest base points on the dipping and the rising "
+            "side): the upper base first iff s > s^*")
+d.step("first-contact-check", ((b * (1 - s) / um - b * s / um1).subs(s, sst), 0), "algebra", uses=("first-contact",))
+
 EQN = "the '= 0' is the equilibrium condition imposed; read as the identity it is imposed on"
 
 
@@ -257,6 +269,20 @@ def at_eq(expr):
     return res(expr).subs(x0, res(X0E))
 
 
+d.quote("s-upper", "VII", "Es soll dabei das spec. Gew.  $s > \\frac{1}{2}$\n\nvorausgesetzt werden, sodass also die "
+        "obere Grundfläche zum Teil eintaucht.", reading=(sst, R(1, 2)),
+        note="read as: beyond the first region the upper base is cut when s > 1/2 (the threshold of s)",
+        erratum=Erratum("claim", "high",
+                        "the upper base is cut first iff s > u_m'/(u_m + u_m'); that is s > 1/2 only when the base "
+                        "reaches equally far on both sides of the axis (u_m = u_m'); otherwise the second region "
+                        "may begin with the lower base although s > 1/2 (and the formulas apply with dry and wet "
+                        "parts exchanged)",
+                        "The same claim as in IV (53) (scheeffer-iv-v, 's-half'). Counterexample: equilateral "
+                        "triangular prism of side 1 and height 1, s = 3/5, turned about an axis parallel to a side with "
+                        "that side dipping (u_m = 1/(2 sqrt 3), u_m' = 1/sqrt 3, s^* = 2/3): the clipped prism's lower "
+                        "base reaches the water at tan phi = 1.0392 (= sqrt 3 s), the upper one only at 1.3856 "
+                        "(= 2 sqrt 3 (1 - s)).",
+                        corrected_reading=(sst, um1 / (um + um1))))
 d.quote("95", "(95)", "„Das statische Moment des über dem Wasser befindlichen Körperteils für die durch  $S$  "
         "senkrecht zur Drehungsachse gelegte Vertikalebene (Ebene der Figur 17) ist Null.“ (95)",
         reading=(My, V3 * sp.Matrix([0, 1, 0]).dot(MS3 / V3)), note="the moment itself; 'ist Null' is the condition")

@@ -13,15 +13,15 @@ import derivations.scheeffer_vii_viii as M
 from symfloat.engine.cache import ReportCache
 from symfloat.engine.check import check_derivation
 from symfloat.engine.runner import verify
-from symfloat.geometry.floating import box, floating_state
+from symfloat.geometry.floating import box, floating_state, right_prism
 from symfloat.model.prediction import Scene
 from symfloat.model.source import SOURCES
 
 TEXT = SOURCES["scheeffer"].text()
 RANGE = TEXT[TEXT.index("## VII."):TEXT.index("## IX.")]
-ERRATA = {"100": "transcription", "109": "misprint"}
+ERRATA = {"100": "transcription", "109": "misprint", "s-upper": "claim"}
 # printed formulas that are logical or calculus steps on others (no numeric quantity of their own to clip)
-UNWITNESSED = {"95-element", "96-split", "108", "109-cos", "117-cos", "regular-Ps", "106-first"}
+UNWITNESSED = {"s-upper", "95-element", "96-split", "108", "109-cos", "117-cos", "regular-Ps", "106-first"}
 
 
 @pytest.fixture(scope="module")
@@ -213,3 +213,23 @@ def test_predictions_pinned():
     third = [p for p in M._predict(SCENES[2]) if p.printed[0] == "118"]
     assert len(third) == 1 and third[0].up[0] == pytest.approx(5 / math.sqrt(29), rel=1e-12)
     assert M._predict(Scene("prism", Fraction(1, 2), (Fraction(1), Fraction(1)), sides=6)) == []
+
+
+def test_claim_s_upper_counterexample():
+    # equilateral triangular prism, side 1, height 1, s = 3/5 > 1/2, turned about an axis parallel to a side with
+    # that side dipping: the clipped water plane reaches the lower base first, at tan phi = sqrt(3) s = 1.0392
+    # (first-region formula b s/u_m', u_m' = 1/sqrt 3), while the upper base is still dry there
+    r3 = math.sqrt(3)
+    body = right_prism([(-0.5, -1 / (2 * r3)), (0.5, -1 / (2 * r3)), (0.0, 1 / r3)], 1)
+    top = [p for p in body.vertices if p[2] > 0]
+    bot = [p for p in body.vertices if p[2] < 0]
+
+    def clearances(phi):
+        u = (0.0, math.sin(phi), math.cos(phi))
+        st = floating_state(body, u, 0.6)
+        hts = lambda ps: [sum(u[k] * p[k] for k in range(3)) - st.t for p in ps]  # noqa: E731
+        return min(hts(top)), max(hts(bot))            # top base dry while > 0, bottom wet while < 0
+
+    ph = _root(lambda q: clearances(q)[1], 0.5, 1.0)
+    assert math.tan(ph) == pytest.approx(r3 * 0.6, rel=1e-10)
+    assert clearances(ph)[0] > 0.05
