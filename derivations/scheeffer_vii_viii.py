@@ -399,7 +399,7 @@ d.quote("107", "(107)", r"$$T_\mu = T_2 \cdot \cos^2 \mu + T_2^1 \sin^2 \mu - k 
         note="at the first condition (P_w = P_O); sin 2mu = 2 sin mu cos mu")
 d.quote("108", "(108)", r"$$\begin{aligned} (T_2^1 - T_2) \sin 2 \mu - 2 k \cdot \cos 2 \mu &= 0 \\ \text{oder } "
         r"\operatorname{tg} 2 \mu &= \frac{2 k}{T_2^1 - T_2} \end{aligned} \quad (108)$$",
-        reading=(sp.Matrix([sp.Derivative(Tg, mu), sp.tan(2 * mus)]),
+        reading=(sp.Matrix([sp.diff(res(Tg), mu), sp.tan(2 * mus)]),
                  sp.Matrix([(T21g - T2g) * SC - 2 * kg * CC, 2 * kg / (T21g - T2g)])),
         note="dT_mu/dmu (the '= 0' imposed) and its root mu^*; T_2, T_2^1, k of any figure (step Tg)")
 d.quote("109", "(109)", r"$$T_\mu = \frac{1}{2} (T_2 + T_2^1) - \frac{1}{2} \cos 2 \mu \left\{ T_2^1 - T_2 - 2 k "
@@ -730,6 +730,20 @@ def _measure(name, what, dps, mu_=None):
         mv = _num(mu_, dps)
         v = tuple(m.cos(mv) * hc[k] - m.sin(mv) * ec[k] for k in range(2))
         return _quad(J, v, v)
+    if what in ("dT", "cos2"):                         # dT_mu/dmu of the clipped tensor, its root by the secant
+        m = _M(dps)
+        v = lambda a: tuple(m.cos(a) * hc[k] - m.sin(a) * ec[k] for k in range(2))  # noqa: E731
+        dv = lambda a: tuple(-m.sin(a) * hc[k] - m.cos(a) * ec[k] for k in range(2))  # noqa: E731
+        g = lambda a: 2 * _quad(J, dv(a), v(a))  # noqa: E731
+        a0, a1 = _num(R(1, 10), dps), _num(R(2, 10), dps)
+        for _ in range(100):
+            g0, g1 = g(a0), g(a1)
+            if g1 == g0 or abs(a1 - a0) < (1e-16 if dps <= 15 else mpmath.mpf(10) ** (-dps - 5)):
+                break
+            a0, a1 = a1, a1 - g1 * (a1 - a0) / (g1 - g0)
+        if what == "cos2":
+            return m.cos(2 * a1) ** 2
+        return g(_num(mu_, dps)), m.tan(2 * a1)
     if what == "T2":
         return _quad(J, hc, hc), _quad(J, ec, ec)
     if what == "Ks":
@@ -797,6 +811,11 @@ for nm_, mv in (("rect", R(2, 5)), ("tri", R(6, 5)), ("pent-eq", R(7, 10))):
        (nm_,), "Tmu", {mu: mv})
     _w(f"Tg-{nm_}", "the same (T_2, T_2^1, k the clipped waterplane's)", ("109",), (nm_,), "Tmu", {mu: mv},
        generic=True)
+for nm_, mv in (("rect", R(2, 5)), ("pent-eq", R(7, 10))):
+    _w(f"dT-{nm_}", "dT_mu/dmu of the clipped waterplane's tensor and tan 2mu at its root (secant method)", ("108",),
+       (nm_,), "dT", {mu: mv}, generic=True)
+_w("cos2", "cos^2 2mu at the root of dT_mu/dmu of the clipped waterplane's tensor", ("109-cos",), G2, "cos2",
+   generic=True)
 _w("Tmu-eq", "moment of the clipped waterplane about the axis at mu, at the equilibria", ("107",), E2, "Tmu",
    {mu: R(1, 3)})
 _w("Ks", "central product moment of the clipped waterplane (axes along h and GH)", ("106-shift", "106-sum"), G2, "Ks")

@@ -21,7 +21,7 @@ TEXT = SOURCES["scheeffer"].text()
 RANGE = TEXT[TEXT.index("## VII."):TEXT.index("## IX.")]
 ERRATA = {"100": "transcription", "109": "misprint", "s-upper": "claim"}
 # printed formulas that are logical or calculus steps on others (no numeric quantity of their own to clip)
-UNWITNESSED = {"s-upper", "95-element", "96-split", "108", "109-cos", "117-cos", "regular-Ps", "106-first"}
+UNWITNESSED = {"s-upper", "95-element", "96-split", "117-cos", "regular-Ps", "106-first"}
 
 
 @pytest.fixture(scope="module")
