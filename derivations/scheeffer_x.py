@@ -49,11 +49,12 @@ from symfloat.model.prediction import Prediction
 a, om, rho, rho1, k, s, L = sp.symbols("a omega rho rho_1 k s L", positive=True)
 x, y, X, Y, Z, w, xl = sp.symbols("x y X Y Z w x_l", real=True)
 half, r2, pi = sp.Rational(1, 2), sp.sqrt(2), sp.pi
-co, si, tg, ctg = sp.cos(om), sp.sin(om), sp.tan(om), sp.cot(om)
+co, si = sp.cos(om), sp.sin(om)
+tg, ctg = si / co, co / si                      # tg, cotg of the text
 
 # quantities established by steps
 u_, v_, h_, h1_, IH, IG, P, P1, rs = sp.symbols("u v h h_1 J_HPB J_GPB P P_1 rho_*")
-Sq, Tb, Td = sp.symbols("J_sq J_top J_bot")
+Sq, Tb, Td, M2, Ar = sp.symbols("J_sq J_top J_bot M_2 A_BHG")
 Tq, zq, V3, kq, MX, Mz, dE, F0, F1v = sp.symbols("T z V_3 k_171 M_X M_z E_theta f_0 f_1")
 s172, Sw45, Vt, s56, It, uD, GMt, Ih, Bh, GMh, k3, Me, NVp, NVd = sp.symbols(
     "s_172 S_45 V_t s_56 I_t uD_t GM_t I_h BG_h GM_h k_3 M_e N_p N_d")
@@ -107,7 +108,8 @@ d.step("167", (P, IH + IG, h_ ** 3 / 6 * (v_ * tg - u_ * ctg) + h_ ** 4 / 8 * (c
        uses=("HPB", "GPB"), result=P)
 FAC = 2 * a * co - rho * (co + si)
 P168 = h_ ** 3 * (co - si) / (24 * si * co ** 2) * FAC
-d.step("168", (P, P168), "algebra", uses=("167", "NH", "NG", "height"))
+d.step("168", (P, h_ ** 3 / 6 * (v_ * tg - u_ * ctg) + h_ ** 4 / 8 * (ctg ** 2 - tg ** 2), P168), "algebra",
+       uses=("167", "NH", "NG", "height"), result=P)
 d.step("factor-positive", (FAC, co * ((a - rho) + (a - rho * tg))), "algebra",
        note="positive whenever rho < a and rho tan w < a: the second factor of (168) never vanishes")
 d.step("rho-star", sp.Eq(rs, 2 * a * co / (co + si)), "definition", result=rs,
@@ -148,6 +150,21 @@ d.quote("168", "(168)",
         reading=(P, h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si))),
         note="'Setzt man diese Werte in 104 ein': the values go into (167), not (104) (the stability condition); "
              "a wrong reference in the words, not in a formula")
+d.step("half-range", (P168.subs(h_, rho * si).subs({om: pi / 2 - om, rho: rho * tg}, simultaneous=True),
+                      -P168.subs(h_, rho * si)), "algebra", uses=("168", "height"),
+       note="the same triangle seen from G (angle 90 deg - w, leg rho tan w) gives -P: the zeros for "
+            "45 deg < w < 90 deg are those of 0 < w < 45 deg")
+d.quote("half-range", "X", r"$$0 < \omega \leq \frac{\pi}{4}$$",
+        reading=(P168.subs(h_, rho * si).subs({om: pi / 2 - om, rho: rho * tg}, simultaneous=True),
+                 -P168.subs(h_, rho * si)),
+        note="'angenommen werden kann': read as the symmetry that allows it")
+d.step("triangle-area", (Ar, sp.Integral(1, (Y, a / 2 - (X - a / 2 + rho) * tg, a / 2), (X, a / 2 - rho, a / 2)),
+                         rho ** 2 * tg / 2), "integration", result=Ar)
+d.quote("area", "X", r"$$\left( \int d f = B H G \right)$$", reading=(Ar, rho * (rho * tg) / 2),
+        note="the integration runs over the triangle BHG, legs rho and rho tan w")
+d.quote("169a-bound", "X", r"$$\frac{2 a \cos \omega}{\cos \omega + \sin \omega} < a$$",
+        reading=(a - 2 * a * co / (co + si), a / (co + si) * (si - co)),
+        note="rho_* < a: sign identity, factor a/(cos w + sin w) > 0")
 d.quote("169", "(169)",
         r"\cos \omega - \sin \omega = 0 \text{ also } \omega = \frac{\pi}{4} \\ \text{und } 2 a \cos \omega - "
         r"\varrho (\cos \omega + \sin \omega) = 0",
@@ -197,19 +214,20 @@ d.step("tilt-grows", (sp.diff(r2 * (1 - s) / (1 - xl + xl ** 3 / 6), xl),
        note="positive: at fixed s the leg x grows with the tilt")
 d.step("mirror", (over_F(Y * col), over_F(X * col)), "integration",
        note="the dry part is symmetric in X <-> Y: its centroid lies in the diagonal plane")
-d.step("moment-X", (MX, over_F(X * col).subs(k, kq), -r2 * kq * (xl ** 4 - 2 * xl ** 3 + 2) / 48), "integration",
-       result=MX, uses=("tilt",))
-d.step("moment-z", (Mz, over_F((col - col ** 2) / 2).subs(k, kq),
-                    kq * (kq * (xl ** 4 - 12 * xl ** 2 + 24 * xl - 14) + 2 * r2 * (xl ** 3 - 6 * xl + 6)) / 48),
-       "integration", result=Mz, uses=("tilt",),
+MXc = -r2 * k * (xl ** 4 - 2 * xl ** 3 + 2) / 48
+Mzc = k * (k * (xl ** 4 - 12 * xl ** 2 + 24 * xl - 14) + 2 * r2 * (xl ** 3 - 6 * xl + 6)) / 48
+d.step("moment-X", (MX, over_F(X * col), MXc), "integration", result=MX)
+d.step("moment-z", (Mz, over_F((col - col ** 2) / 2), Mzc), "integration", result=Mz,
        note="int_{1/2 - c}^{1/2} z dz = (c - c^2)/2 over each column")
-d.step("gradient", sp.Eq(dE, -(r2 * MX + kq * Mz) / (s * sp.sqrt(1 + kq ** 2))), "definition", result=dE,
+d.step("gradient", sp.Eq(dE, (-(r2 * MXc + k * Mzc) / (s * sp.sqrt(1 + k ** 2))).subs(k, kq)), "definition", result=dE,
+       uses=("moment-X", "moment-z", "tilt"),
        note="u = (-sin t/sqrt 2, -sin t/sqrt 2, cos t), tan t = k: dE/dt = (du/dt).(G - B), G - B = M/s with "
-            "M = (M_X, M_X, M_z) the first moment of the dry part about G (total moment zero, volume 1)")
+            "M = (M_X, M_X, M_z) the first moment of the dry part about G (total moment zero, volume 1), at the "
+            "tilt k_171")
 F171 = lambda T2, zz, xx, ss: T2 * (zz ** 2 + (1 - ss) ** 2) - zz ** 3 * (1 - xx) - zz ** 2 * (1 - ss)  # noqa: E731
 KF = r2 * s * zq ** 3 * sp.sqrt(1 + kq ** 2) / (1 - s)
 d.step("171-derived", (F171(2 * Tq, zq, xl, s), KF * dE), "algebra",
-       uses=("gradient", "moment-X", "moment-z", "T", "z"),
+       uses=("gradient", "T", "z"),
        note="the left side of (171) minus its right side is dE/dt times a positive factor: (171) is B below G")
 d.quote("171", "(171)",
         r"2 T \left\{ z^2 + (1 - s)^2 \right\} &= z^3 (1 - x) + z^2 (1 - s) \\ \text{wo} \quad 2 T &= \frac{1}{6} + "
@@ -382,6 +400,13 @@ d.step("third-moment", (Me, -k3 * Sq + k3 * Tb + k3 * Td, k3 * (P + P1)), "algeb
        uses=("third-tilt", "third-square", "third-top", "third-bottom", "bottom-triangle"), result=Me,
        note="moment of the dry part about the vertical plane through G across the axis: columns over the dry part "
             "of the top face of height -k xi, cut to the full height a (k xi + a = k (xi - xi_M)) over LDM")
+d.step("second-moment", (M2, k * (-Sq + Tb), k * P), "algebra", uses=("third-square", "third-top", "168"), result=M2,
+       note="second domain (one face cut): the moment of the dry part about the vertical plane through G across the "
+            "axis, columns of height -k xi over the dry part of the top face")
+d.quote("98", "X (98)", r"$$\int x y \, d f = 0$$", reading=(M2 / k, P),
+        note="the first condition (98): B below G needs this moment to vanish, i.e. P = 0")
+d.quote("118-form", "X", r"$$\int x y \, d f - \int x y \, d f = 0$$", reading=(Me / k3, P + P1),
+        note="with the x axes of the two triangles opposite the second integral is -P_1; (173) turns its y axis too")
 d.quote("173", "(173)", r"$$\int x y \cdot d f + \int x y \, d f = 0 \quad (173)$$",
         reading=(Me / k3, P + P1), note="the first condition: the moment of the dry part, over the tilt")
 d.quote("174", "(174)",
@@ -469,8 +494,43 @@ FACE = (C("a = 1, omega = 0.3, rho = 0.6", a=1, omega="0.3", rho="0.6"),
         C("a = 3/2, omega = 0.6, rho = 1/2", a="1.5", omega="0.6", rho="0.5"),
         C("a = 1, omega = 0.7, rho = 0.9", a=1, omega="0.7", rho="0.9"))
 computed("dry-moment", "moment of the clipped dry part about the vertical plane across the axis / tan phi "
-         "(tan phi = 1/4)", ("167-sum", "167", "168", "174"),
+         "(tan phi = 1/4)", ("98", "167-sum", "167", "168", "174"),
          FACE, lambda c, p: _dry_moment_e(c.params[a], c.params[om], c.params[rho], "0.25", p))
+def _frame_triangles(c, p):
+    """The triangle BHG in the frame of the text (origin N, x towards B, y along GH towards G), built from the
+    square's corners; returns u, v and the sub-triangles HPB, GPB."""
+    M = _M(p)
+    A, W, R = (_n(c.params[q], p) for q in (a, om, rho))
+    e, nn = (M.cos(W), -M.sin(W)), (M.sin(W), M.cos(W))
+    Hq, Gq, Bq = (A / 2 - R, A / 2), (A / 2, A / 2 - R * M.tan(W)), (A / 2, A / 2)
+    fr = lambda q: (q[0] * nn[0] + q[1] * nn[1] - (Hq[0] * nn[0] + Hq[1] * nn[1]), q[0] * e[0] + q[1] * e[1])  # noqa
+    H2, G2, B2 = fr(Hq), fr(Gq), fr(Bq)
+    P2 = (0 * A, B2[1])
+    return -H2[1], G2[1], (H2, P2, B2), (G2, B2, P2)
+
+
+def _flat(tri, p):
+    """The clipped upright prism over a triangle (counter-clockwise), floating half immersed: its waterplane."""
+    pts = list(tri)
+    if (pts[1][0] - pts[0][0]) * (pts[2][1] - pts[0][1]) - (pts[1][1] - pts[0][1]) * (pts[2][0] - pts[0][0]) < 0:
+        pts = pts[::-1]
+    return floating_state(right_prism(pts, 1, dps=_bd(p)), (0, 0, 1), 1 / (2 + 0 * pts[0][1]))
+
+
+def _int_xy(tri, p):
+    """int x y df over a triangle: central product moment plus area x centroid coordinates."""
+    st = _flat(tri, p)
+    return st.tensor[0][1] + st.waterplane_area * st.waterplane_centroid[0] * st.waterplane_centroid[1]
+
+
+computed("frame-u", "distance NH from the square's corners", ("u",), FACE, lambda c, p: _frame_triangles(c, p)[0])
+computed("frame-v", "distance NG from the square's corners", ("v",), FACE, lambda c, p: _frame_triangles(c, p)[1])
+computed("xy-HPB", "int xy df over HPB (clipped prism over the triangle)", ("HPB",), FACE,
+         lambda c, p: _int_xy(_frame_triangles(c, p)[2], p))
+computed("xy-GPB", "int xy df over GPB (clipped prism over the triangle)", ("GPB",), FACE,
+         lambda c, p: _int_xy(_frame_triangles(c, p)[3], p))
+computed("area-BHG", "area of the triangle BHG (clipped prism over it)", ("area",), FACE,
+         lambda c, p: (lambda f: _flat((f[2][0], f[3][0], f[2][2]), p).waterplane_area)(_frame_triangles(c, p)))
 computed("dry-moment-45", "the same with the axis along a face diagonal", ("170",),
          (C("a = 1, rho = 0.6", a=1, rho="0.6"), C("a = 3/2, rho = 1/5", a="1.5", rho="0.2")),
          lambda c, p: _dry_moment_e(c.params[a], _M(p).pi / 4, c.params[rho], "0.25", p))
