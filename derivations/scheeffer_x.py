@@ -167,7 +167,7 @@ d.quote("169a-bound", "X", r"$$\frac{2 a \cos \omega}{\cos \omega + \sin \omega}
         note="rho_* < a: sign identity, factor a/(cos w + sin w) > 0")
 d.quote("169", "(169)",
         r"\cos \omega - \sin \omega = 0 \text{ also } \omega = \frac{\pi}{4} \\ \text{und } 2 a \cos \omega - "
-        r"\varrho (\cos \omega + \sin \omega) = 0",
+        r"\varrho (\cos \omega + \sin \omega) = 0 \end{aligned} \right\} \quad (169)$$",
         reading=(sp.Matrix([sp.cos(pi / 4) - sp.sin(pi / 4), FAC.subs(rho, rs)]), sp.zeros(2, 1)),
         note="the two factors of (168) that can vanish (h > 0); each read at its zero")
 d.quote("rho-star", "X", r"$$\varrho = \frac{2 a \cos \omega}{\cos \omega + \sin \omega}$$",
@@ -177,7 +177,7 @@ d.quote("169a", "(169a)", r"$$\cos \omega < \sin \omega \quad (169a)$$",
         note="from rho_* < a: sign identity, factor a/(cos w + sin w) > 0")
 d.quote("169b", "(169b)",
         r"\text{und} \quad & \frac{2 a \cos \omega \cdot \operatorname{tg} \omega}{\cos \omega + \sin \omega} < a "
-        r"\\ \text{woraus} \quad & \sin \omega < \cos \omega",
+        r"\\ \text{woraus} \quad & \sin \omega < \cos \omega \end{aligned} \quad (169b)$$",
         reading=(a - 2 * a * co * tg / (co + si), a / (co + si) * (co - si)),
         note="from rho_* tan w < a: sign identity, factor a/(cos w + sin w) > 0; with (169a) unsatisfiable")
 d.quote("170", "(170)", r"$$\omega = \frac{\pi}{4} \quad (170)$$", reading=(sp.Subs(P, om, pi / 4), 0),
@@ -231,7 +231,8 @@ d.step("171-derived", (F171(2 * Tq, zq, xl, s), KF * dE), "algebra",
        note="the left side of (171) minus its right side is dE/dt times a positive factor: (171) is B below G")
 d.quote("171", "(171)",
         r"2 T \left\{ z^2 + (1 - s)^2 \right\} &= z^3 (1 - x) + z^2 (1 - s) \\ \text{wo} \quad 2 T &= \frac{1}{6} + "
-        r"(1 - x)^2 - \frac{x^4}{12} \\ \text{und} \quad z &= 1 - x + \frac{x^3}{6}",
+        r"(1 - x)^2 - \frac{x^4}{12} \\ \text{und} \quad z &= 1 - x + \frac{x^3}{6} \end{aligned} \right\} \quad "
+        r"(171)$$",
         reading=(sp.Matrix([2 * Tq, zq, F171(2 * Tq, zq, xl, s)]),
                  sp.Matrix([sp.Rational(1, 6) + (1 - xl) ** 2 - xl ** 4 / 12, 1 - xl + xl ** 3 / 6,
                             F171(sp.Rational(1, 6) + (1 - xl) ** 2 - xl ** 4 / 12, 1 - xl + xl ** 3 / 6, xl, s)]),
