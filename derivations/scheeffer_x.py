@@ -292,11 +292,10 @@ PENT_EVIDENCE = (
     "(172) is right about (171), but (171) describes an equilibrium only while the bottom face stays uncut, "
     "beta = (2 - x)(1 - s)/z < 1. For 1/2 < s < 0.7623 the root of (171) has beta > 1: at s = 3/5 it is "
     "x = 0.5498, beta = 1.214, the bottom corner is dry and the waterplane a hexagon, so (171) does not apply; "
-    "the clipped cube has no pentagonal equilibrium there (its only oblique equilibrium in the diagonal plane is "
-    "the symmetric hexagon, the corner up). Pentagonal equilibria exist only for 0.7623 < s < 5/6 "
+    "the clipped cube has no pentagonal equilibrium there (a search over all orientations finds as its only stable "
+    "position the symmetric hexagon, the corner up). Pentagonal equilibria exist only for 0.7623 < s < 5/6 "
     "(0.7623: the fold of (171), f = df/dx = 0 at x = 0.358); the one that starts at x = 0 at s = (4 + sqrt 2)/7 "
-    "and exists for 0.7623 < s < 0.7735 is stable, the other (0.7623 < s < 5/6) unstable. Below 0.7623 the "
-    "unstable upright cube finds its stable position with a hexagonal waterplane. Scheeffer omitted the "
+    "and exists for 0.7623 < s < 0.7735 is stable, the other (0.7623 < s < 5/6) unstable. Scheeffer omitted the "
     "discussion of (171) for want of space; the check of the bottom face is what is missing.")
 d.quote("pentagon-exists", "X",
         "Hat also ein in aufrechter Lage labil schwimmender Würfel im ersten Drehungsgebiet keine neue "
@@ -495,7 +494,7 @@ FACE = (C("a = 1, omega = 0.3, rho = 0.6", a=1, omega="0.3", rho="0.6"),
         C("a = 3/2, omega = 0.6, rho = 1/2", a="1.5", omega="0.6", rho="0.5"),
         C("a = 1, omega = 0.7, rho = 0.9", a=1, omega="0.7", rho="0.9"))
 computed("dry-moment", "moment of the clipped dry part about the vertical plane across the axis / tan phi "
-         "(tan phi = 1/4)", ("98", "167-sum", "167", "168", "174"),
+         "(tan phi = 1/4)", ("98", "167-sum", "167", "168", "174", "diagonal-claim"),
          FACE, lambda c, p: _dry_moment_e(c.params[a], c.params[om], c.params[rho], "0.25", p))
 def _frame_triangles(c, p):
     """The triangle BHG in the frame of the text (origin N, x towards B, y along GH towards G), built from the
@@ -545,7 +544,7 @@ def _third(c, p):
 
 
 computed("dry-moment-third", "moment of the clipped dry part / tan phi, water plane through both water lines",
-         ("173",), (C("a = 1, omega = 0.3, rho = 0.6, rho_1 = 0.4", a=1, omega="0.3", rho="0.6", rho1="0.4"),
+         ("173", "118-form", "173-only-45"), (C("a = 1, omega = 0.3, rho = 0.6, rho_1 = 0.4", a=1, omega="0.3", rho="0.6", rho1="0.4"),
                     C("a = 3/2, omega = 0.5, rho = 0.7, rho_1 = 0.9", a="1.5", omega="0.5", rho="0.7", rho1="0.9")),
          _third)
 
@@ -738,6 +737,9 @@ computed("five-sixths", "submerged fraction of the unit cube below the plane thr
 computed("tri-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1 - L^3/6", ("tri-unstable",),
          (C("L = 1/2", L="0.5"), C("L = 4/5", L="0.8")),
          lambda c, p: 1 if _diag_state(1 - c.params[L] ** 3 / 6, p).metacentric_height > 0 else -1)
+computed("diagonal-shape", "+1 if the clipped waterplane of the cube turned corner up is a hexagon, -1 if a triangle",
+         ("hex-follows",), (C("s = 4/5", s="0.8"), C("s = 9/10", s="0.9")),
+         lambda c, p: 1 if _vertices(_diag_state(c.params[s], p), p) == 6 else -1)
 computed("hex-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1/2", ("hex-half",), ONE,
          lambda c, p: 1 if _diag_state(half, p).metacentric_height > 0 else -1)
 

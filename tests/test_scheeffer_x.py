@@ -68,6 +68,7 @@ def test_the_errata_are_exactly_the_expected_ones(report):
 
 def test_numeric_displays_carry_witness_records_at_both_precisions(report):
     witnessed = {"HPB", "GPB", "167-sum", "167", "u", "v", "168", "area", "170", "171", "172-number", "98",
+                 "diagonal-claim", "hex-follows", "118-form", "173-only-45",
                  "173", "174", "tetra", "five-sixths", "tri-unstable", "hex-half", "pentagon-exists",
                  "pentagon-stable", "dual-exists"}
     by = {f.id.split("/")[1]: f for f in report.formulas}
