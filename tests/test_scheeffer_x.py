@@ -178,15 +178,40 @@ def test_the_fold_of_171_where_the_pentagonal_equilibria_are_born():
     assert abs(float(s0) - S_FOLD) < 1e-12 and abs(float(x0) - 0.3581293505777) < 1e-10
     assert MODULE.beta(float(x0), float(s0)) < 1            # the fold itself is pentagonal
     # the clipped cube, diagonal plane: no pentagonal equilibrium just below, two just above
-    def roots(s):
-        def g(th):
-            u = (-math.sin(th) / math.sqrt(2), -math.sin(th) / math.sqrt(2), math.cos(th))
-            return _grad((u[0] / u[2], u[1] / u[2]), s)[0]
-        ths = [0.02 * j for j in range(1, 48)]
-        vals = [g(t) for t in ths]
-        return [t for t, v, w in zip(ths, vals, vals[1:]) if (v > 0) != (w > 0)]
-    below, above = roots(S_FOLD - 0.002), roots(S_FOLD + 0.002)
-    assert len(above) == len(below) + 2
+    below, above = _diagonal_roots(S_FOLD - 0.002), _diagonal_roots(S_FOLD + 0.002)
+    assert [nv for _, nv in below] == [6] and [nv for _, nv in above] == [5, 5, 6]
+
+
+def _diagonal_roots(s):
+    """Equilibria of the clipped cube in the diagonal plane u ~ (-p, -p, 1), 0 < p < 1 (sign changes of the
+    gradient on a grid of tilts up to the corner-up position), with the vertices of their waterplanes."""
+    def g(th):
+        return _grad((-math.tan(th) / math.sqrt(2),) * 2, s)[0]
+    ths = [0.02 * j for j in range(1, 48)] + [math.atan(math.sqrt(2)) + 0.01]
+    vals = [g(t) for t in ths]
+    out = []
+    for t, t2, v, w in zip(ths, ths[1:], vals, vals[1:]):
+        if (v > 0) != (w > 0):
+            m = (t + t2) / 2
+            out.append((m, _vertices(_up((-math.tan(m) / math.sqrt(2),) * 2), s)))
+    return out
+
+
+def test_pentagonal_equilibria_up_to_five_sixths_are_unstable():
+    # above 0.7735 one pentagonal equilibrium (the roots of (171) with beta < 1), unstable, up to s = 5/6
+    for s in (0.8, 0.82):
+        pent = [t for t, nv in _diagonal_roots(s) if nv == 5]
+        assert len(pent) == 1
+        c = (-math.tan(pent[0]) / math.sqrt(2),) * 2
+        assert min(np.linalg.eigvalsh(_hessian(c, s))) < 0
+    assert not any(nv == 5 for _, nv in _diagonal_roots(0.84))
+
+
+def test_the_waterplane_is_a_triangle_quadrilateral_pentagon_or_hexagon():
+    # 'kann der Wasserschnitt ein Fünfeck, Dreieck, Sechseck, Trapez sein': all shapes occur, no other
+    rng = np.random.default_rng(10)
+    counts = {_vertices(tuple(rng.normal(size=3)), float(rng.uniform(0.05, 0.95))) for _ in range(400)}
+    assert counts == {3, 4, 5, 6}
 
 
 def test_pentagonal_equilibria_at_077_are_the_roots_of_171(eq077):
