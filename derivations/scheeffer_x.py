@@ -335,10 +335,12 @@ d.quote("dual-threshold", "X", r"wenn  $s > \frac{3 - \sqrt{2}}{7}$  d. i.  $> 0
 d.quote("dual-number", "X", r"$> 0,2265$", reading=(1 - s172, sp.Rational("0.2265")), tolerance=sp.Rational(1, 20000))
 d.step("dual-vertices", sp.Eq(NVd, NVp), "definition", result=NVd, uses=("pentagon-vertices",),
        note="the cube turned over at density 1 - s: wet and dry exchanged, the same waterplane")
-d.quote("dual-exists", "X", r"Für  $s < \frac{1}{2}$  tritt dieses stabile Gleichgewicht im zweiten Drehungsgebiet ein,",
+d.quote("dual-exists", "X",
+        r"Für  $s < \frac{1}{2}$  tritt dieses stabile Gleichgewicht im zweiten Drehungsgebiet ein,",
         reading=(NVd, 5),
         erratum=Erratum("consequential", "high", "only for 0.2265 < s < 0.2377 (stable) and 1/6 < s < 0.2377",
-                        "The mirror image of pentagon-exists (s <-> 1 - s): at s = 2/5 the root of (171) at 1 - s = 3/5 "
+                        "The mirror image of pentagon-exists (s <-> 1 - s): at s = 2/5 the root of (171) at "
+                        "1 - s = 3/5 "
                         "gives a hexagonal waterplane.",
                         corrected_reading=(NVd, 6)),
         note="read at s = 2/5")
@@ -389,7 +391,7 @@ triD = sp.Integral(ETA * (XI - XI.subs(xM)), (Y, -a / 2, -a / 2 + (-a / 2 + rho1
 d.step("h1", (h1_, (-sp.Matrix([-a / 2 + rho1, -a / 2]) + sp.Matrix([-a / 2, -a / 2])).dot(-n_), rho1 * si), "geometry",
        result=h1_, note="h_1: the distance of D = (-a/2, -a/2) from the projected bottom water line through M")
 d.step("bottom-triangle", sp.Eq(P1, P168.subs({h_: h1_, rho: rho1})), "definition", uses=("168", "h1"), result=P1,
-       note="(168) for LDM: turned by 180 deg it is a triangle like BHG with rho_1, h_1 (checked by third-moment-value)")
+       note="(168) for LDM: turned by 180 deg it is a triangle like BHG with rho_1, h_1 (checked by third-bottom)")
 d.step("third-square", (Sq, sq_, 0), "integration", result=Sq,
        note="the square's product moment about N, axes along and across GH")
 d.step("third-top", (Tb, triB, P168.subs(h_, rho * si)), "integration", uses=("168",), result=Tb,
@@ -544,8 +546,9 @@ def _third(c, p):
 
 
 computed("dry-moment-third", "moment of the clipped dry part / tan phi, water plane through both water lines",
-         ("173", "118-form", "173-only-45"), (C("a = 1, omega = 0.3, rho = 0.6, rho_1 = 0.4", a=1, omega="0.3", rho="0.6", rho1="0.4"),
-                    C("a = 3/2, omega = 0.5, rho = 0.7, rho_1 = 0.9", a="1.5", omega="0.5", rho="0.7", rho1="0.9")),
+         ("173", "118-form", "173-only-45"),
+         (C("a = 1, omega = 0.3, rho = 0.6, rho_1 = 0.4", a=1, omega="0.3", rho="0.6", rho1="0.4"),
+          C("a = 3/2, omega = 0.5, rho = 0.7, rho_1 = 0.9", a="1.5", omega="0.5", rho="0.7", rho1="0.9")),
          _third)
 
 
@@ -727,13 +730,18 @@ def _diag_state(sv, dps):
     return floating_state(_cube1(dps), (1, 1, 1), _n(sv, dps))
 
 
-computed("tetra-dry", "dry volume of the clipped cube below the plane through three face diagonals",
+def _below_diagonals(av, dps):
+    """Submerged volume of the clipped cube of edge av below the plane through three face diagonals at a corner."""
+    A = _n(av, dps)
+    u = _unit((1, 1, 1), _M(dps))
+    return submerged(box(A, A, A, dps=_bd(dps)), u, _dot(u, (A / 2, A / 2, -A / 2))).volume
+
+
+computed("tetra-dry", "dry volume of the clipped cube above the plane through three face diagonals",
          ("tetra",), (C("a = 1", a=1), C("a = 3/2", a="1.5")),
-         lambda c, p: (lambda A, M: (lambda body, u: A ** 3 - submerged(body, u, _dot(u, (A / 2, A / 2, -A / 2))).volume)(
-             box(A, A, A, dps=_bd(p)), _unit((1, 1, 1), M)))(_n(c.params[a], p), _M(p)))
+         lambda c, p: _n(c.params[a], p) ** 3 - _below_diagonals(c.params[a], p))
 computed("five-sixths", "submerged fraction of the unit cube below the plane through three face diagonals",
-         ("five-sixths",), ONE,
-         lambda c, p: submerged(_cube1(p), _unit((1, 1, 1), _M(p)), _dot(_unit((1, 1, 1), _M(p)), (0.5, 0.5, -0.5))).volume)
+         ("five-sixths",), ONE, lambda c, p: _below_diagonals(1, p))
 computed("tri-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1 - L^3/6", ("tri-unstable",),
          (C("L = 1/2", L="0.5"), C("L = 4/5", L="0.8")),
          lambda c, p: 1 if _diag_state(1 - c.params[L] ** 3 / 6, p).metacentric_height > 0 else -1)
@@ -773,7 +781,8 @@ def predict(scene):
                               note="regular hexagon, stable (Schülen)"))
     else:
         out.append(Prediction(("hex-symmetric", "173-only-45"), (1.0, 1.0, 1.0), None,
-                              note="a hexagonal equilibrium lies across a diagonal; its stability the text leaves open"))
+                              note="a hexagonal equilibrium lies across a diagonal; the text leaves its stability "
+                                   "open"))
     if sv != sp.Rational(1, 2):
         q = float(sv) if sv > half else 1 - float(sv)
         names = ("171", "172", "pentagon-exists", "pentagon-stable") if sv > half else \
