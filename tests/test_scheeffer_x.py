@@ -325,3 +325,17 @@ def test_a_mutated_coefficient_of_168_is_refuted():
     rep = check_derivation(dm, prove=False)
     assert rep.formulas[0].verdict == "erratum"
     assert any("168" in f and "no erratum" in f for f in rep.failures)
+
+
+def test_each_root_of_171_is_an_equilibrium_exactly_when_its_waterplane_is_a_pentagon():
+    # every root 0 < x < 1 of (171) on a grid of densities: at the orientation it prescribes, u ~ (-p, -p, 1),
+    # p = (1 - s)/z, the clipped waterplane is a pentagon iff beta < 1, and only then is the gradient zero
+    seen = {True: 0, False: 0}
+    for s in [k / 100 for k in range(52, 84)] + [0.7625 + 0.002 * j for j in range(6)]:
+        for xr in MODULE._roots_171_float(s):
+            p = (1 - s) / (1 - xr + xr ** 3 / 6)
+            pent = MODULE.beta(xr, s) < 1
+            assert (_vertices(_up((-p, -p)), s) == 5) == pent
+            assert (np.linalg.norm(_grad((-p, -p), s)) < 1e-9) == pent
+            seen[pent] += 1
+    assert seen[True] >= 18 and seen[False] >= 30
