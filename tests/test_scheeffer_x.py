@@ -192,7 +192,10 @@ def _diagonal_roots(s):
     out = []
     for t, t2, v, w in zip(ths, ths[1:], vals, vals[1:]):
         if (v > 0) != (w > 0):
-            m = (t + t2) / 2
+            lo, hi = t, t2
+            for _ in range(45):
+                m = (lo + hi) / 2
+                lo, hi = (m, hi) if (g(m) > 0) == (v > 0) else (lo, m)
             out.append((m, _vertices(_up((-math.tan(m) / math.sqrt(2),) * 2), s)))
     return out
 
@@ -339,3 +342,13 @@ def test_each_root_of_171_is_an_equilibrium_exactly_when_its_waterplane_is_a_pen
             assert (np.linalg.norm(_grad((-p, -p), s)) < 1e-9) == pent
             seen[pent] += 1
     assert seen[True] >= 18 and seen[False] >= 30
+
+
+@pytest.mark.parametrize("s", [0.7635, 0.765, 0.773])
+def test_between_the_fold_and_0_7735_the_small_leg_pentagon_is_stable_the_other_not(s):
+    pent = [t for t, nv in _diagonal_roots(s) if nv == 5]
+    assert len(pent) == 2
+    small, large = ((-math.tan(t) / math.sqrt(2),) * 2 for t in sorted(pent))
+    small, large = (_newton(c, s) for c in (small, large))     # refine to the equilibria
+    assert min(np.linalg.eigvalsh(_hessian(small, s))) > 0
+    assert min(np.linalg.eigvalsh(_hessian(large, s))) < 0
