@@ -229,6 +229,12 @@ BAR = ("The integral is ∫y⁴dy/√(bb-yy), as the two lines before it require
        "(2a/3b)∫y⁴dy/√ = πab³/8 give the Dbb/2 Euler concludes with. The transcription writes the same "
        "integral three times as a product with √(bb-yy): a fraction bar (or Euler's ':') lost each time, "
        "while §222 and §225 keep theirs; medium, since only the transcription is available.")
+x0 = x21.subs({p: 0, q: 0})
+d.quote("ellipse-at-Y0", "§223", r"posito enim $Y = 0$ curua nostra habet in ellipsis",
+        reading=(sp.Matrix([(x0[0] - a) ** 2 / a ** 2 + y ** 2 / b ** 2, (x0[1] - a) ** 2 / a ** 2 + y ** 2 / b ** 2]),
+                 sp.Matrix([1, 1])),
+        note=claim("for Y = 0 the curve goes over into ('abit in', transcribed 'habet in') the ellipse "
+                   "(x - a)²/a² + y²/b² = 1 of §219."))
 d.quote("AB-Ace", "§223",
         r"$= \frac{1}{3} \int y^3 dx = \frac{1}{3} \int y^3 dY + \frac{a}{3b} \int y^4 dy \sqrt{bb-yy}$",
         reading=(IAce, CIA / 3, Yd3 / 3 + a / (3 * b) * U4),
