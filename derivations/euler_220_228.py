@@ -107,7 +107,7 @@ def _closed(f):
 def named(name, latex, f, note=""):
     """A printed integral ∫_0^b f dy as a quantity of its own (its symbol prints as the integral), stated
     once with its closed value; the readings use the symbol, the witnesses its value."""
-    S = sp.Symbol(r"\int_0^b " + latex)
+    S = sp.Symbol("{" + latex + "}") if latex.startswith(r"\left(") else integral_symbol(latex)
     integral_step(name, S, f, note=note)
     return S
 
@@ -146,7 +146,17 @@ def claim(text):
 
 
 # ================================================================ the integrals with √(bb - yy), once each
-U0, U2, U4, V2, V4, D = sp.symbols("U_0 U_2 U_4 V_2 V_4 D", positive=True)
+
+
+def integral_symbol(latex):
+    """A symbol that prints as Euler's integral (taken from 0 to b); its value is stated by one step."""
+    return sp.Symbol(r"{\int_{0}^{b} " + latex + "}")   # braces: printed after the letters in products
+
+
+U0, U2, U4, V2, V4 = (integral_symbol(t) for t in (r"dy \sqrt{bb-yy}", r"yy\,dy \sqrt{bb-yy}",
+                                                   r"y^4 dy \sqrt{bb-yy}", r"\frac{yy\,dy}{\sqrt{bb-yy}}",
+                                                   r"\frac{y^4 dy}{\sqrt{bb-yy}}"))
+D = sp.Symbol("D", positive=True)
 integral_step("U0", U0, R, theta=True, note="∫_0^b √(b²-y²) dy, by y = b sin θ")
 integral_step("U2", U2, y ** 2 * R, theta=True, note="∫_0^b y² √(b²-y²) dy")
 integral_step("U4", U4, y ** 4 * R, theta=True, note="∫_0^b y⁴ √(b²-y²) dy")
@@ -167,16 +177,16 @@ d.step("branches", (x21, sp.Matrix([xL, xR])), "algebra",
             "a√(1 - y²/b²) = (a/b)√(b² - y²) for b > 0, the form of §§224-227. x_c = a + Y(b) is the abscissa "
             "Ac of the greatest breadth ce, where both branches meet")
 d.quote("ends", "§221", r"Posito namque $y = 0$, fit x vel $= 0$ vel $= 2a$",
-        reading=(x21.subs(y, 0), sp.Matrix([0, 2 * a])),
+        reading=(sp.Matrix([sp.Subs(e, y, 0) for e in x21]), sp.Matrix([0, 2 * a])),
         note=claim("at y = 0 the two branches give x = 0 and x = 2a (Y vanishes at y = 0)."))
-d.quote("axis-AB", "§221", r"erit $AB = 2a$", reading=(x21[1].subs(y, 0) - x21[0].subs(y, 0), 2 * a),
+d.quote("axis-AB", "§221", r"erit $AB = 2a$", reading=(sp.Subs(x21[1] - x21[0], y, 0), 2 * a),
         note=claim("the transverse axis of the curve is AB = 2a."))
 d.quote("greatest-breadth", "§221", r"respondetque abscissae $x = a + Y$, posito in Y loco y valore b",
-        reading=(x21.subs(y, b), sp.Matrix([a + Yg.subs(y, b), a + Yg.subs(y, b)])),
+        reading=(sp.Matrix([sp.Subs(e, y, b) for e in x21]), sp.Matrix([a + Yg.subs(y, b), a + Yg.subs(y, b)])),
         note=claim("the greatest breadth b (where √(1 - y²/b²) vanishes) lies at the abscissa a + Y(b), "
                    "both branches meeting there."))
 d.quote("Oc-general", "§221", r"ponamus $Y = -\frac{cyy}{b^2}$, quo fiat interuallum $Oc = c$",
-        reading=(a - (a + Yc.subs(y, b)), c),
+        reading=(sp.Subs(a - (a + Yc), y, b), c),
         note=claim("with Y = -cy²/b² the breadth ce stands at the distance Oc = a - Ac = c from the "
                    "middle O (towards A)."))
 
@@ -229,9 +239,8 @@ BAR = ("The integral is ∫y⁴dy/√(bb-yy), as the two lines before it require
        "(2a/3b)∫y⁴dy/√ = πab³/8 give the Dbb/2 Euler concludes with. The transcription writes the same "
        "integral three times as a product with √(bb-yy): a fraction bar (or Euler's ':') lost each time, "
        "while §222 and §225 keep theirs; medium, since only the transcription is available.")
-x0 = x21.subs({p: 0, q: 0})
 d.quote("ellipse-at-Y0", "§223", r"posito enim $Y = 0$ curua nostra habet in ellipsis",
-        reading=(sp.Matrix([(x0[0] - a) ** 2 / a ** 2 + y ** 2 / b ** 2, (x0[1] - a) ** 2 / a ** 2 + y ** 2 / b ** 2]),
+        reading=(sp.Matrix([sp.Subs((e - a) ** 2 / a ** 2 + y ** 2 / b ** 2, (p, q), (0, 0)) for e in x21]),
                  sp.Matrix([1, 1])),
         note=claim("for Y = 0 the curve goes over into ('abit in', transcribed 'habet in') the ellipse "
                    "(x - a)²/a² + y²/b² = 1 of §219."))
@@ -264,7 +273,7 @@ integral_step("Aa-Ace", KAce, (xc ** 3 - xL ** 3) / 3, note="∫∫ x² over Ace
 integral_step("Aa-Bce", KBce, (xR ** 3 - xc ** 3) / 3)
 integral_step("Aa-AEB", KAEB, (xR ** 3 - xL ** 3) / 3)
 d.step("Aa-whole", sp.Eq(Kwhole, 2 * KAEB), "definition", result=Kwhole, note="AFB mirrors AEB")
-T2, T4 = sp.symbols("T_2 T_4")
+T2, T4 = integral_symbol(r"y\,dY (a+Y) \sqrt{bb-yy}"), integral_symbol(r"\frac{yy\,dy (a+Y)^2}{\sqrt{bb-yy}}")
 integral_step("T2", T2, y * (a + Yg) * R * dYg, note="Euler's ∫y dY (a+Y)√(bb-yy), from 0 to b")
 integral_step("T4", T4, y ** 2 * (a + Yg) ** 2 / R, note="∫yy dy (a+Y)²/√(bb-yy)")
 d.step("Aa-Ace-by-parts", (sp.Integral(y * xL ** 2 * sp.diff(xL, y), (y, 0, b)), KAce), "integration",
@@ -327,7 +336,7 @@ d.quote("Aa-Bce-expanded", "§224",
                    "powers of √(bb-yy) changed, from y = b to 0 (each read as -∫_0^b)."))
 
 # ================================================================ §225: AEB about aAa
-G2, S2 = sp.symbols("G_2 S_2")
+G2, S2 = integral_symbol(r"y\,d.(a+Y)^2 \sqrt{bb-yy}"), integral_symbol(r"(a+Y)^2 dy \sqrt{bb-yy}")
 E1 = named("int-E1", r"y\,dy (a+Y) \sqrt{bb-yy}", y * (a + Yg) * R, note="the first integral of §225 as transcribed")
 integral_step("G2", G2, y * sp.diff((a + Yg) ** 2 * R, y), note="∫y d.(a+Y)²√(bb-yy), from 0 to b")
 integral_step("S2", S2, (a + Yg) ** 2 * R, note="∫(a+Y)² dy √(bb-yy)")
@@ -354,7 +363,7 @@ d.quote("Aa-AEB", "§225",
                    "+ (2a³/b³)∫yy dy√ = (2a³/b³)∫yy dy√ - (2a/b)∫y d.(a+Y)²√ = (2a³/b³)∫yy dy√ "
                    "+ (2a/b)∫(a+Y)²dy√ about aAa (√ = √(bb-yy), integrals from 0 to b)."))
 d.quote("boundary-term", "§225", r"$y(a+Y)^2 V(bb-yy)$ fit $= 0;$ tam si $y=0,$ quam si $y=b.$",
-        reading=(sp.Matrix([F2.subs(y, 0), F2.subs(y, b)]), sp.Matrix([0, 0])),
+        reading=(sp.Matrix([sp.Subs(F2, y, 0), sp.Subs(F2, y, b)]), sp.Matrix([0, 0])),
         note=claim("the integrated part y(a+Y)²√(bb-yy) vanishes at y = 0 and at y = b."))
 DCUBE = ("D³ cannot stand in an area or a length (the integral ∫yy dy√(bb-yy) = πb⁴/16 is of the fourth "
          "dimension, b³D/8a with D = πab/2); §226 prints the same value as b³D/8a, and a²D/4 + ... follows. "
@@ -386,7 +395,9 @@ d.quote("Aa-whole", "§225", r"$= \frac{aaD^3}{2} + \frac{2a}{b} \int (a+Y)^2 dy
                    "about aAa."))
 
 # ================================================================ §226: centroid and the moment about EF
-FAEB, AC, W1, Z1, G1, S1, KEF = sp.symbols("F_{AEB} AC W_1 Z_1 G_1 S_1 K_{EF}")
+FAEB, AC, KEF = sp.symbols("F_{AEB} AC K_{EF}")
+W1, Z1, G1, S1 = (integral_symbol(t) for t in (r"\frac{y^2 dy (a+Y)}{\sqrt{bb-yy}}", r"y\,dY \sqrt{bb-yy}",
+                                               r"y\,d.(a+Y) \sqrt{bb-yy}", r"(a+Y) dy \sqrt{bb-yy}"))
 integral_step("first-moment", FAEB, (xR ** 2 - xL ** 2) / 2, note="∫∫ x over AEB (moment about aAa)")
 d.step("centroid", sp.Eq(AC, FAEB / AAEB), "definition", result=AC,
        note="the abscissa of the centroid C of AEB, and of the whole figure (AFB mirrors AEB)")
@@ -398,7 +409,7 @@ ACv = sp.factor(_closed((xR ** 2 - xL ** 2) / 2) / _closed(xR - xL))
 integral_step("moment-EF", KEF, 2 * ((xR - ACv) ** 3 - (xL - ACv) ** 3) / 3,
               note="∫∫ (x - AC)² over the whole figure (twice AEB), about EF through the centroid")
 d.step("AC-value", (AC, ACv), "algebra", uses=("centroid", "first-moment", "area-AEB"))
-XY = named("int-xy-dx", r"xy\,dx_{Ace} - \int_0^b xy\,dx_{Bce}", y * (xL * sp.diff(xL, y) - xR * sp.diff(xR, y)),
+XY = named("int-xy-dx", r"\left(\int_{0}^{b} xy\,dx_{Ace} - \int_{0}^{b} xy\,dx_{Bce}\right)", y * (xL * sp.diff(xL, y) - xR * sp.diff(xR, y)),
            note="∫xy dx along Ace from A to e and back along Bce from e to B")
 E0 = named("int-E0", r"y\,dy \sqrt{bb-yy}", y * R, note="the second integral of §226 as transcribed")
 d.step("DAC-by-parts", (XY, FAEB), "integration",
@@ -453,7 +464,9 @@ d.quote("reduce-U0", "§226", r"$\int dy V(bb-yy) = \frac{bD}{2a}.$", reading=(U
 
 # ================================================================ §227: Y = -cyy/bb
 xLc, xRc = a + Yc - a * R / b, a + Yc + a * R / b
-S2c, S1c, AEBc, FAEBc, ACc, KEFc = sp.symbols("S_{2c} S_{1c} A_{AEBc} F_{AEBc} AC_c K_{EFc}")
+AEBc, FAEBc, ACc, KEFc = sp.symbols("A_{AEBc} F_{AEBc} AC_c K_{EFc}")
+S2c = integral_symbol(r"\left(a - \tfrac{cyy}{bb}\right)^2 dy \sqrt{bb-yy}")
+S1c = integral_symbol(r"\left(a - \tfrac{cyy}{bb}\right) dy \sqrt{bb-yy}")
 integral_step("S2c", S2c, (a + Yc) ** 2 * R, note="∫(a+Y)²dy√(bb-yy) with Y = -cyy/bb")
 integral_step("S1c", S1c, (a + Yc) * R)
 integral_step("area-c", AEBc, xRc - xLc)
@@ -475,12 +488,12 @@ d.quote("curve-c", "§227", r"seu $x = a - \frac{cyy}{bb} + \frac{c}{b} V(bb-yy)
                                                       a - c * y ** 2 / b ** 2 + a / b * R]))),
         note=claim("with Y = -cyy/bb the curve is x = a - cyy/bb + (c/b)√(bb-yy); read as the branch Bce."))
 d.quote("Oc", "§227", r"ex qua fit $Oc = a$ vti assumsumus",
-        reading=(a - xLc.subs(y, b), a),
+        reading=(sp.Subs(a - xLc, y, b), a),
         erratum=Erratum(
             "transcription", "medium", r"Oc = c",
             "At y = b both branches give x = a - c, so Ac = a - c and Oc = AO - Ac = c, 'as we assumed' "
             "(§220, §221, and §232: 'Ac = a - c et Oc = c'). a for c, the confusion of the line before.",
-            corrected_reading=(a - xLc.subs(y, b), c)),
+            corrected_reading=(sp.Subs(a - xLc, y, b), c)),
         note=claim("the breadth ef stands at Oc = c from the middle O, as assumed."))
 d.quote("S2c-expanded", "§227",
         "$\\int (a+Y)^2 dy V(bb-yy) = a^2 \\int dy V(bb-yy) - \\frac{2ac}{bb} \\int yy dy$\n "
