@@ -21,21 +21,24 @@ English summary, paragraph by paragraph:
 * §225: adding, AEB about aAa = −(4a/b)∫y dY (a+Y)√(b² − y²) + (2a/b)∫y²dy(a+Y)²/√(b² − y²)
   + (2a³/b³)∫y²dy√(b² − y²) = (2a³/b³)∫y²dy√ + (2a/b)∫(a+Y)²dy√ (by parts, the boundary term vanishes
   at y = 0 and y = b); with ∫y²dy√(b² − y²) = b³D/8a this is a²D/4 + (2a/b)∫(a+Y)²dy√, and the
-  whole figure has twice as much.
+  whole figure has twice as much (printed a²D/2 + (2a/b)∫..., see the errata).
 * §226: the centroid: D·AC = ∫xy dx over AEB = (2a/b)∫(a+Y)dy√(b² − y²); the moment about EF through
-  C is the moment about aAa less 2D·AC².  For even Y the integrals reduce to ∫y²dy/√(b² − y²) = bD/2a,
+  C is the moment about aAa less 2D·AC², a²D/2 + (4a/b)∫(a+Y)²dy√ − (8a²/b²D)(∫(a+Y)dy√)² (printed
+  with 2a/b, aa/bbD and no square).  For even Y the integrals reduce to ∫y²dy/√(b² − y²) = bD/2a,
   ∫y²dy√(b² − y²) = b³D/8a, ∫dy√(b² − y²) = bD/2a.
 * §227: Y = −cy²/b²: ∫(a+Y)²dy√ = bD(8a² − 4ac + c²)/16a, ∫(a+Y)dy√ = bD(4a − c)/8a, AC = a − c/4,
   and the moment about EF is a²D/2 + c²D/8 = AB²D/8 + c²D/8.
-* §228: so, as for the quadrilaterals, the moment about EF grows as ef moves away from the middle O.  The
+* §228: so, as for the quadrilaterals, the moment about EF grows as ef moves away from the middle O
+  (the text says C).  The
   curve does not allow c > a/2 (it would cross the line aa); at c = a/2 (Oc = AB/4) the moment is
   AB²D/8 + AB²D/128, a sixteenth more than the ellipse's.
 
-What the transcription gets wrong (each argued in its erratum): a fraction bar lost three times in
+What the print or its transcription gets wrong (each argued in its erratum, the kind saying which): a fraction bar lost three times in
 §223; the vinculum over the factor x² and a 'dy' in §224; 'dy' for 'dY' in §225 and §226; 'D³' for D
 in §225; the factor 2a/b (for 4a/b) of the whole figure in §225, repeated in §226 together with a lost
 factor 8 and a lost square; ∫y dx for ∫xy dx in §226; c/b for a/b and Oc = a for Oc = c in §227, with
-the three auxiliary integrals of §227 shifted against their values and c·c² D/128 for c²D/8.
+the three auxiliary integrals of §227 shifted against their values and c·c² D/128 for c²D/8; the
+curve of §227 again in §228, with a for x.
 
 Checking: the integrals with √(b² − y²) are stated once each, closed by the substitution y = b sin θ, and
 the readings are built on them; Y is checked in the general form Y = p|y| + qy² (even, vanishing at 0)
@@ -104,6 +107,11 @@ def _closed(f):
                          / (2 * sp.gamma(sp.Rational(k + m, 2) + 1)) for (k, m), coeff in poly.terms()))
 
 
+def integral_symbol(latex):
+    """A symbol that prints as Euler's integral (taken from 0 to b); its value is stated by one step."""
+    return sp.Symbol(r"{\int_{0}^{b} " + latex + "}")   # braces: printed after the letters in products
+
+
 def named(name, latex, f, note=""):
     """A printed integral ∫_0^b f dy as a quantity of its own (its symbol prints as the integral), stated
     once with its closed value; the readings use the symbol, the witnesses its value."""
@@ -130,12 +138,11 @@ def _over_root(f):
     return sp.expand(poly) + sp.factor(sp.expand(over)).xreplace({W: (b - y) * (b + y)}) / R
 
 
-def integral_step(name, S, f, note="", theta=False, reverse=False):
-    """S := ∫_0^b f dy (∫_b^0 when reverse), stated with its closed value (and, if theta, with the
-    substituted integral y = b sin theta between); the integrand is written as _over_root gives it."""
-    lims = (y, b, 0) if reverse else (y, 0, b)
-    value = -_closed(f) if reverse else _closed(f)
-    chain = (S, sp.Integral(_over_root(f), lims))
+def integral_step(name, S, f, note="", theta=False):
+    """S := ∫_0^b f dy, stated with its closed value (and, if theta, with the substituted integral
+    y = b sin theta between); the integrand is written as _over_root gives it."""
+    value = _closed(f)
+    chain = (S, sp.Integral(_over_root(f), (y, 0, b)))
     chain += (sp.Integral(_theta_form(f), (th, 0, sp.pi / 2)),) if theta else ()
     d.step(name, chain + (value,), "integration", note=note, result=S)
     return value
@@ -146,13 +153,6 @@ def claim(text):
 
 
 # ================================================================ the integrals with √(bb - yy), once each
-
-
-def integral_symbol(latex):
-    """A symbol that prints as Euler's integral (taken from 0 to b); its value is stated by one step."""
-    return sp.Symbol(r"{\int_{0}^{b} " + latex + "}")   # braces: printed after the letters in products
-
-
 U0, U2, U4, V2, V4 = (integral_symbol(t) for t in (r"dy \sqrt{bb-yy}", r"yy\,dy \sqrt{bb-yy}",
                                                    r"y^4 dy \sqrt{bb-yy}", r"\frac{yy\,dy}{\sqrt{bb-yy}}",
                                                    r"\frac{y^4 dy}{\sqrt{bb-yy}}"))
@@ -181,6 +181,10 @@ d.quote("ends", "§221", r"Posito namque $y = 0$, fit x vel $= 0$ vel $= 2a$",
         note=claim("at y = 0 the two branches give x = 0 and x = 2a (Y vanishes at y = 0)."))
 d.quote("axis-AB", "§221", r"erit $AB = 2a$", reading=(sp.Subs(x21[1] - x21[0], y, 0), 2 * a),
         note=claim("the transverse axis of the curve is AB = 2a."))
+d.quote("breadth-b", "§221", r"maxima huius curvae latitudo est $= b$",
+        reading=(sp.Subs(x21[1] - x21[0], y, b), 0),
+        note=claim("the greatest ordinate (half-breadth) of the curve is b: there the two branches meet "
+                   "(their distance 2a√(1 - y²/b²) vanishes), and beyond it the root is not real."))
 d.quote("greatest-breadth", "§221", r"respondetque abscissae $x = a + Y$, posito in Y loco y valore b",
         reading=(sp.Matrix([sp.Subs(e, y, b) for e in x21]), sp.Matrix([a + Yg.subs(y, b), a + Yg.subs(y, b)])),
         note=claim("the greatest breadth b (where √(1 - y²/b²) vanishes) lies at the abscissa a + Y(b), "
