@@ -280,7 +280,7 @@ d.step("Aa-whole", sp.Eq(Kwhole, 2 * KAEB), "definition", result=Kwhole, note="A
 T2, T4 = integral_symbol(r"y\,dY (a+Y) \sqrt{bb-yy}"), integral_symbol(r"\frac{yy\,dy (a+Y)^2}{\sqrt{bb-yy}}")
 integral_step("T2", T2, y * (a + Yg) * R * dYg, note="Euler's ∫y dY (a+Y)√(bb-yy), from 0 to b")
 integral_step("T4", T4, y ** 2 * (a + Yg) ** 2 / R, note="∫yy dy (a+Y)²/√(bb-yy)")
-d.step("Aa-Ace-by-parts", (sp.Integral(y * xL ** 2 * sp.diff(xL, y), (y, 0, b)), KAce), "integration",
+d.step("Aa-Ace-by-parts", (sp.Integral(_over_root(y * xL ** 2 * sp.diff(xL, y)), (y, 0, b)), KAce), "integration",
        uses=("Aa-Ace",), note="Euler's ∫y x² dx along the curve (vertical strips) is the strip integral")
 X2L = (a + Yg) ** 2 - 2 * a * (a + Yg) / b * R + a * a - a * a * y ** 2 / b ** 2
 d.step("x-squared", (xL ** 2, X2L), "algebra", note="the square of x = a + Y - (a/b)√(bb-yy)")
@@ -320,8 +320,7 @@ d.quote("Aa-Ace-expanded", "§224",
         r"= \int y (a+Y)^2 dY - \frac{2a}{b} "
         r"\int y dY (a+Y) V(bb-yy) + \frac{aa}{bb} \int y dY (bb-yy) + \frac{a}{b} \int \frac{yy^2 y(a+Y)^2}"
         r"{\sqrt{bb-yy}} - \frac{2aa}{bb} \int yy dy (a+Y) + \frac{a^3}{b^3} \int yy dy V(bb-yy)$",
-        reading=(KAce, six_terms(-1, False) - a / b * T4
-                 + a / b * E4),
+        reading=(KAce, six_terms(-1, False) - a / b * T4 + a / b * E4),
         erratum=Erratum(
             "transcription", "high",
             r"\ldots + \frac{a}{b} \int \frac{yy\,dy\,(a+Y)^2}{\sqrt{bb-yy}} - \ldots",
@@ -330,7 +329,7 @@ d.quote("Aa-Ace-expanded", "§224",
             "'dy' garbled into '^2 y'. The other five terms are right.",
             corrected_reading=(KAce, six_terms(-1, False))),
         note=claim("the moment of Ace about aAa is the sum of the six integrals, taken from y = 0 to b "
-                   "(read with the first factor; the excerpt repeats the end of the product)."))
+                   "(the excerpt continues the product quoted above)."))
 d.quote("Aa-Bce-expanded", "§224",
         r"$= \int y (a+Y)^2 dY + \frac{2a}{b} \int y dY (a+Y) V(bb-yy) + \frac{aa}{bb} \int y dY (bb-yy) - "
         r"\frac{a}{b} \int \frac{yy dy (a+Y)^2}{\sqrt{bb-yy}} - \frac{2aa}{bb} \int yy dy (a+Y) - "
