@@ -11,8 +11,9 @@ English summary, paragraph by paragraph:
   pO = Y + aR (R = (1 − yⁿ/bⁿ)^κ) the moment about the normal to AB through O is
   (2nκa³/bⁿ)∫yⁿdy(1 − yⁿ/bⁿ)^{3κ−1} + 2a∫Y²R dy (by parts from (2a³/3)∫R³dy), twice that for the whole figure.
 * §231: the centroid C: D·CO = −2a∫Y R dy; the moment about the latitudinal axis EF through C is
-  (4nκa³/bⁿ)∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy + 4a∫Y²R dy − 8a²(∫Y R dy)²/D.  For Y a sum of powers of yⁿ and κ
-  integer or half-integer every integral reduces to the area integral ∫R dy = D/(2a).
+  (4nκa³/bⁿ)∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy + 4a∫Y²R dy − 8a²(∫Y R dy)²/D.  For Y = αyⁿ + βy^{n−1} + … (as
+  transcribed) and κ integer or half-integer the integrals are said to reduce to the area integral
+  ∫R dy = D/(2a) (true for the powers y^{jn}; not checked for the others).
 * §232: Y = −cyⁿ/bⁿ puts the greatest breadth at Oc = c from the middle: ∫YR = −cD/(2a(n(κ+1)+1)),
   ∫Y²R = (n+1)c²D/(2a(n(κ+1)+1)(n(κ+2)+1)); the moment about EF is
   (4nκa³/bⁿ)∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy + 2n²(κ+1)c²D/((n(κ+1)+1)²(n(κ+2)+1)), the larger the larger c.
@@ -57,8 +58,10 @@ K₀ = moment about EF for c = 0):
 Witnesses: every moment is computed by two-dimensional quadrature over the figure itself (the chord by
 three-point Gauss–Legendre, exact for its quadratic integrand; across the chords mpmath's tanh-sinh at
 50 digits, and fixed-order Gauss–Legendre in float64 after the substitution y = b(1 − (1 − w)⁴), which
-smooths the endpoint singularity of (1 − yⁿ/bⁿ)^κ for integer n and κ a multiple of 1/4), over a grid
-n ∈ {1, 2, 3}, κ ∈ {1/2, 1, 3/2, 2, 5/2, 3}; the volumes of §243 by exact convex hulls.
+smooths the endpoint singularity of (1 − yⁿ/bⁿ)^κ for integer n and κ a multiple of 1/4), the tables over
+the grid n ∈ {1, 2, 3} × κ ∈ {1/2, 1, 3/2, 2, 5/2, 3}; N by the same rules on its two one-dimensional
+integrals; the volumes of §243 by exact convex hulls; the stabilities of §239–243 by heeling a V-shaped
+prism (exact clipping, M·GZ/φ extrapolated to φ → 0).
 """
 from fractions import Fraction
 
@@ -141,7 +144,6 @@ def JY(j, P, Q, dY=0, C1=c1, C2=c2):
 
 R = (1 - y ** n / b ** n) ** k
 Rx = (1 - y ** n / b ** n) ** xk          # as printed, with x for κ
-Yg = c1 * y ** n / b ** n + c2 * y ** (2 * n) / b ** (2 * n)
 
 XA, XB, D, IAB, MO, SO, XC, CO, KEF, Kc, N, K0g = sp.symbols("x_A x_B D I_{AEB} M_O S_O x_C CO K_{EF} K_c N K_0")
 M, V, OG, EF, AB, Dw, CD, mu, nu = sp.symbols("M V OG EF AB D_w CD mu nu", positive=True)
@@ -265,8 +267,8 @@ d.quote("moment-O", "§230",
                         r"\frac{2n\kappa a^3}{b^n} \int y^n dy \left(1 - \frac{y^n}{b^n}\right)^{3\kappa-1} + "
                         r"2a \int Y^2 dy \left(1 - \frac{y^n}{b^n}\right)^\kappa",
                         "(1/3)∫((pO)³ + (PO)³)dy = (2a³/3)∫R³dy + 2a∫Y²R dy, and by parts (2a³/3)∫R³dy = "
-                        "(2nκa³/bⁿ)∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy. κ read as n (twice) and as x; §232 prints the same "
-                        "term with nκ... (as 'nα') and 3κ−1.", corrected_reading=(MO, MO_val)),
+                        "(2nκa³/bⁿ)∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy. κ read as n (twice) and as x; §232 prints the "
+                        "whole figure's term with the exponent 3κ−1.", corrected_reading=(MO, MO_val)),
         note=claim("the moment of AEB about the normal to AB through O is (2nκa³/bⁿ)∫yⁿdy(1 − yⁿ/bⁿ)^{3κ−1} "
                    "+ 2a∫Y²dy(1 − yⁿ/bⁿ)^κ."))
 d.quote("moment-O-whole", "§230",
@@ -510,8 +512,8 @@ for kv in KAPPAS:
 N_PRINTED = {
     sp.Rational(1, 2): (r"$\kappa = \frac{1}{2}$	$N = \frac{1}{2}$", sp.Rational(1, 2), "medium",
                         "N = ∫(1−uⁿ)^{1/2}/∫(1−uⁿ)^{1/2} = 1 (3κ − 1 = κ), and the row κ = 1/2 of §234, "
-                        "2a²D·n/(2+3n) = 2nκa²ND/(1+3nκ), needs N = 1. A 1 read as 1/2 (the fraction of the "
-                        "κ column beside it)."),
+                        "2a²D·n/(2+3n) = 2nκa²ND/(1+3nκ), needs N = 1. Perhaps a 1 read as the 1/2 of the κ "
+                        "column beside it."),
     sp.Integer(1): (r"$\kappa = 1$	$N = \frac{4n}{2+4n}$", 4 * n / (2 + 4 * n), None, ""),
     sp.Rational(3, 2): (r"$\kappa = \frac{3}{2}$	$N = \frac{5n}{(2+1)n}(2+7n)$", 5 * n / ((2 + 1) * n) * (2 + 7 * n),
                         "medium", "The rebuilt N is 5n·7n/((2+5n)(2+7n)); the transcription keeps 5n, 2+…n and "
@@ -970,3 +972,50 @@ for kind, target in (("pyramid", "V-pyramid"), ("prism", "V-prism"), ("wedge", "
     d.witness(HullWitness("volume-" + kind, "volume of the %s over the waterplane (exact hull and slices)" % kind,
                           (target,), (_hull_case(kind, 2, Fraction(1, 2), Fraction(3, 2)),
                                       _hull_case(kind, 3, 1, 1)), quantity="volume"))
+
+
+# ---------------------------------------------------------------- §239/§243: a heeled V-shaped prism
+# The right prism over the triangle (0, 0), (W, T), (−W, T), apex down, length L along z, floats at the
+# density ratio s; its submerged part is the similar triangle of depth CD = T√s: the waterplane is the
+# rectangle EF × L (μ = 6), V = D·CD exactly.  G is put at the height OG above (or below) the upright centre
+# of buoyancy O.  The stability per unit angle is M·GZ(φ)/φ for φ → 0, GZ from the centre of buoyancy of the
+# exactly clipped heeled prism (Richardson from φ and φ/2; float64 at φ = 1e-3, 50 digits at φ = 1e-11 with
+# the clipping at 80 digits).  Nothing of M(EF²D/(μV) ∓ OG) is used.  ν = 8 is given to the cases only so that
+# §241's print with ν in place of μ becomes a number (the prism's latitudinal μ is not needed).
+
+def _v_prism_stability(cs, dps, sign):
+    from symfloat.geometry.floating import floating_state, right_prism
+    big = None if dps <= 15 else dps + 30
+    with mpmath.workdps(big or 15):
+        def num(v):
+            return mpmath.mpf(sp.N(v, big + 10)) if big else float(v)
+        W, T, L, S = (num(cs.data[key]) for key in ("W", "T", "L", "s"))
+        poly = right_prism([(0, 0), (W, T), (-W, T)], L, dps=big)
+        sin, cos = (mpmath.sin, mpmath.cos) if big else (np.sin, np.cos)
+        B0 = floating_state(poly, (0, 1, 0), S).B
+        G = (B0[0], B0[1] + sign * num(cs.params[OG]), B0[2])
+
+        def arm(phi):
+            up, e = (sin(phi), cos(phi), 0), (-cos(phi), sin(phi), 0)
+            Bp = floating_state(poly, up, S, G=G).B
+            return sum((Bp[i] - G[i]) * e[i] for i in range(3)) / phi
+
+        phi = num(sp.Rational(1, 10 ** 3)) if not big else num(sp.Rational(1, 10 ** 11))
+        return num(cs.params[M]) * (4 * arm(phi / 2) - arm(phi)) / 3
+
+
+def _v_case(W, T, L, s, og):
+    W, T, L, s = (sp.Rational(v) for v in (W, T, L, s))
+    depth = T * sp.sqrt(s)
+    half = W * depth / T
+    Dv, Vv = half * L, half * L * depth
+    return Case({M: Vv, V: Vv, EF: 2 * half, Dw: Dv, CD: depth, mu: 6, nu: 8, OG: sp.Rational(og)},
+                data={"W": W, "T": T, "L": L, "s": s},
+                label="V-prism W = %s, T = %s, L = %s, s = %s, OG = %s" % (W, T, L, s, og))
+
+
+V_CASES = (_v_case(1, 2, 3, "1/4", "1/10"), _v_case(1, 2, 2, "9/16", "1/20"))
+_w("stability-V-prism", "M·GZ/φ of the heeled V-prism by exact clipping, G above O",
+   ("stability-AB", "stability-CD", "stability-AB-241"), V_CASES, lambda cs, dps: _v_prism_stability(cs, dps, 1))
+_w("stability-V-prism-G-below", "M·GZ/φ of the heeled V-prism by exact clipping, G below O",
+   ("stability-G-below",), V_CASES, lambda cs, dps: _v_prism_stability(cs, dps, -1))
