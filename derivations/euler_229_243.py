@@ -101,7 +101,8 @@ class Ib(sp.Function):
 
     def _latex(self, printer, exp=None):
         P, Q, N_, B_ = (printer._print(t) for t in self.args)
-        tex = r"\int_0^{%s} y^{%s}\left(1-\frac{y^{%s}}{%s^{%s}}\right)^{%s}dy" % (B_, P, N_, B_, N_, Q)
+        yp = {"0": "", "1": "y"}.get(P, "y^{%s}" % P)
+        tex = r"\int_0^{%s} %s\left(1-\frac{y^{%s}}{%s^{%s}}\right)^{%s}dy" % (B_, yp, N_, B_, N_, Q)
         return tex if exp is None else r"\left(%s\right)^{%s}" % (tex, exp)
 
 
@@ -147,8 +148,7 @@ Rx = (1 - y ** n / b ** n) ** xk          # as printed, with x for κ
 
 XA, XB, D, IAB, MO, SO, XC, CO, KEF, Kc, N, K0g = sp.symbols("x_A x_B D I_{AEB} M_O S_O x_C CO K_{EF} K_c N K_0")
 M, V, OG, EF, AB, Dw, CD, mu, nu = sp.symbols("M V OG EF AB D_w CD mu nu", positive=True)
-Iw, Kw, SAB, SEF, SABp, Vpy, Vpr, Vwe, muAB, muEF = sp.symbols(
-    "I_w K_w S_{AB} S_{EF} S_{AB+} V_{pyr} V_{prism} V_{wedge} mu_{AB} mu_{EF}")
+Iw, Kw, SAB, SEF, SABp, Vpy, Vpr, Vwe = sp.symbols("I_w K_w S_{AB} S_{EF} S_{AB+} V_{pyr} V_{prism} V_{wedge}")
 
 DERIVATION = d = Derivation(
     id="euler-229-243",
@@ -157,10 +157,11 @@ DERIVATION = d = Derivation(
           "(Euler, Scientia navalis III §§229–243)",
     locator="§229–§243",
     summary="Area, moments and centroid of the waterplanes x = a + Y ± a(1 − yⁿ/bⁿ)^κ (§229–232); the "
-            "moment about the latitudinal axis through N and the tables of §233–234 rebuilt exactly from "
+            "moment about the latitudinal axis through the centroid, with Euler's N, and the tables of §233–234 rebuilt exactly from "
             "Beta integrals; the limits n → ∞ and the cases of §236; the numbers μ of §237 (rectangle, "
             "rhombus, ellipse, parabola, and the bounds 6 ≤ μ ≤ 12 over the admissible family); the "
             "stability M(EF²D/(μV) − OG) and the displacement bounds of §238–243.",
+    requires=("euler-192-219",),
     domain={a: (1, 3), b: (1, 2), c: (sp.Rational(1, 10), 1), n: (1, 4), k: (sp.Rational(1, 2), 3),
             p: (0, 3), q: (sp.Rational(1, 2), 3), xk: (sp.Rational(1, 2), 3), al: (1, 3),
             c1: (-1, 1), c2: (-1, 1), Ys: (-1, 1), y: (0, 1), s: (0, 1), m: (0, 1),
@@ -195,7 +196,8 @@ d.step("Y-integrals", (sp.Matrix([JY(1, 0, k), JY(2, 0, k), JY(0, 1, k, 1), JY(1
                            "are sums of the Beta integrals of beta-integral")
 d.step("recurrence-power", (Ib(p + n, q, n, b), b ** n * (p + 1) * Ib(p, q, n, b) / (p + 1 + n * (q + 1))),
        "integration",
-       note="by parts: ∫y^{p+n}R^q = (bⁿ/(n(q+1)))∫(p+1)y^p R^{q+1}, with R^{q+1} = R^q − yⁿR^q/bⁿ")
+       note="R = 1 − yⁿ/bⁿ here: ∫y^p R^{q+1} = ∫y^p R^q − ∫y^{p+n}R^q/bⁿ, and by parts "
+            "∫y^p R^{q+1} = (n(q+1)/((p+1)bⁿ))∫y^{p+n}R^q")
 d.step("recurrence-exponent", (Ib(0, q + 1, n, b), n * (q + 1) * Ib(n, q, n, b) / b ** n,
                                Ib(0, q, n, b) - Ib(n, q, n, b) / b ** n), "integration",
        note="∫R^{q+1}dy = [yR^{q+1}] + (n(q+1)/bⁿ)∫yⁿR^q dy, and R^{q+1} = R^q(1 − yⁿ/bⁿ)")
@@ -299,7 +301,7 @@ d.step("moment-EF", (KEF, 2 * (MO - 2 * (XC - a) * SO + (XC - a) ** 2 * D), 2 * 
        "integration", uses=("strip-moment-C", "moment-O", "first-moment-O", "centroid"), result=KEF,
        note="both halves about EF (x = x_C): the chord moments about a parallel at m = x_C − a from O")
 d.quote("centroid-moment", "§231",
-        r"$CO = 2 \alpha \int y dy (1 - \frac{y^n}{b^n})^{\kappa} - \frac{2n\alpha a}{b^n} \int y^n Y dy "
+        r"D. $CO = 2 \alpha \int y dy (1 - \frac{y^n}{b^n})^{\kappa} - \frac{2n\alpha a}{b^n} \int y^n Y dy "
         r"(1 - \frac{y^n}{b^n})^{\kappa-1} = -2 \alpha \int Y dy (1 - \frac{y^n}{b^n})^{\kappa}$",
         reading=(D * CO, 2 * al * J(1, k) - 2 * n * al * a / b ** n * JY(1, n, k - 1), -2 * al * JY(1, 0, k)),
         erratum=Erratum("transcription", "low",
@@ -626,6 +628,13 @@ d.quote("kappa-above-1", "§236", r"posito enim $\kappa > 1$ tum curua in e et f
         r"ad AB normales", reading=(sp.Limit(slope.subs({k: 2, n: 2}), y, b, "-"), 0),
         note=claim("for κ > 1 the two portions meet at e with dx/dy → 0, a common tangent normal to AB: a cusp "
                    "(read at κ = 2, n = 2, c = 0)."))
+quad_portions = sp.Matrix([sp.Subs(XA, (Ys, n, k), (-c * y / b, 1, 1)), sp.Subs(XB, (Ys, n, k), (-c * y / b, 1, 1))])
+d.quote("kappa-1-quadrilateral", "§236", r"hocque casu continetur figura rectilinea quadrilatera quam §. 215. "
+        r"considerauimus", reading=(quad_portions.applyfunc(lambda e: sp.Derivative(e, y, 2)), sp.zeros(2, 1)),
+        note=claim("κ = 1 (with n = 1 and Y = −cy/b) gives the rectilinear quadrilateral of §215: both portions "
+                   "are straight (second derivative 0). The 'anguli acuti' at e and f before it are read as sharp "
+                   "corners: the interior angle at e is atan((a − c)/b) + atan((a + c)/b), obtuse for a long "
+                   "figure (a > b, c = 0), so not acute in the geometric sense; not read as a formula."))
 d.quote("kappa-below-1", "§236", r"At si ponatur $\kappa < 1$ tum curuae in e et f habebunt tangentes axi AB "
         r"parallelas", reading=(sp.Limit(1 / slope.subs({k: sp.Rational(1, 2), n: 2}), y, b, "-"), 0),
         note=claim("for κ < 1 dy/dx → 0 at e: the tangent is parallel to AB (read at κ = 1/2, n = 2)."))
@@ -691,10 +700,14 @@ d.quote("unequal-halves", "§237", r"hac ipsa inaequalitate momentum respectu ax
 # ================================================================ §§238–241: stability
 d.step("I-mu", sp.Eq(Iw, EF ** 2 * Dw / mu), "definition", result=Iw, note="§238: μ defined by I = EF²D/μ")
 d.step("K-nu", sp.Eq(Kw, AB ** 2 * Dw / nu), "definition", result=Kw, note="§238: ν defined by K = AB²D/ν")
-d.step("stability-AB", sp.Eq(SAB, M * (Iw / V - OG)), "definition", result=SAB,
-       note="§201 (derived in euler-192-219): M(I/V ∓ b) with b = OG, G above O")
-d.step("stability-EF", sp.Eq(SEF, M * (Kw / V - OG)), "definition", result=SEF)
-d.step("stability-AB-G-below", sp.Eq(SABp, M * (Iw / V + OG)), "definition", result=SABp)
+E192 = "euler-192-219:"
+d.step("stability-AB", sp.Eq(SAB, M * (Iw / V - OG)), "lemma", result=SAB,
+       uses=(E192 + "stability-definition-G-above", E192 + "metacentric-height-G-above"),
+       note="§201/§203: M(I/V − b) with b = OG, G above O")
+d.step("stability-EF", sp.Eq(SEF, M * (Kw / V - OG)), "lemma", result=SEF,
+       uses=(E192 + "stability-definition-EF-G-above", E192 + "metacentric-height-EF-G-above"))
+d.step("stability-AB-G-below", sp.Eq(SABp, M * (Iw / V + OG)), "lemma", result=SABp,
+       uses=(E192 + "stability-definition", E192 + "metacentric-height-G-below"))
 d.quote("stability-AB", "§239", r"$AB = M (\frac{EF^2 \cdot D}{\mu v} - OG)$",
         reading=(SAB, M * (EF ** 2 * Dw / (mu * V) - OG)),
         note=claim("the stability about AB is M(EF²D/(μV) − OG) (v read as V)."))
