@@ -965,6 +965,19 @@ def _mu_ellipse(cs, dps):
 _w("mu-ellipse", "μ of the ellipse (the member n = 2, κ = 1/2) by 2-D quadrature", ("mu-ellipse",), MU, _mu_ellipse)
 
 
+def _mu_family(cs, dps):
+    A, B, nv, kv = _params(cs, dps, a, b, n1, k1)
+    area, sx, sxx, syy = family_moments(A, B, nv, kv, lambda yv: 0 * yv, dps)
+    return [(2 * B) ** 2 * area / (2 * syy), (2 * A) ** 2 * area / _K(area, sx, sxx)]
+
+
+MU_ADM = tuple(Case({a: 1, b: 1, n1: nv, k1: kv}, label="n = %s, κ = %s" % (nv, kv))
+               for nv, kv in ((1, sp.Rational(1, 4)), (1, 1), (2, sp.Rational(1, 4)), (3, sp.Rational(1, 2)),
+                              (4, sp.Rational(3, 4))))
+_w("mu-bounds", "μ about AB and EF of admissible members of the family by 2-D quadrature", ("mu-bounds",), MU_ADM,
+   _mu_family)
+
+
 # ---------------------------------------------------------------- §243: the three solids, exact hulls
 def _hull_case(kind, A, B, H):
     """The waterplane rectangle 2A x 2B at z = 0 with the pyramid's apex, the prism's bottom or the wedge's keel
