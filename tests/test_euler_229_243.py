@@ -232,3 +232,15 @@ def test_a_table_correction_must_hold():
     wrong = dataclasses.replace(p.erratum, corrected_reading=p.reading)
     rep = check_derivation(_mutated("K-table-2", erratum=wrong), prove=False)
     assert any("correction does not hold" in f for f in rep.failures)
+
+
+def test_the_docstring_table_shows_the_rebuilt_values():
+    # the Markdown table of the module docstring: one row per κ with the transcribed and the rebuilt entries
+    doc = MODULE.__doc__
+    for kv in MODULE.KAPPAS:
+        row = next(line for line in doc.splitlines() if line.startswith("| %s |" % kv))
+        assert MODULE.N_PRINTED[kv][0].split("\t")[1] in row and MODULE.K_PRINTED[kv][0].split("\t")[1] in row
+        assert "$%s$" % MODULE.N_rebuilt(kv)[1] in row and MODULE.K0_rebuilt(kv)[1] in row
+        for nv in (1, 2):
+            value = 2 * MODULE.K0_rebuilt(kv)[0].subs(MODULE.n, nv)
+            assert "| %s ≈ %s |" % (value, sp.N(value, 10)) in row
