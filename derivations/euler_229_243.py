@@ -61,7 +61,8 @@ three-point Gauss–Legendre, exact for its quadratic integrand; across the chor
 smooths the endpoint singularity of (1 − yⁿ/bⁿ)^κ for integer n and κ a multiple of 1/4), the tables over
 the grid n ∈ {1, 2, 3} × κ ∈ {1/2, 1, 3/2, 2, 5/2, 3}; N by the same rules on its two one-dimensional
 integrals; the volumes of §243 by exact convex hulls; the stabilities of §239–243 by heeling a V-shaped
-prism (exact clipping, M·GZ/φ extrapolated to φ → 0).
+prism and pitching an upright prism over the quadrilateral of §215 (whose μ = 12 and ν = 81/7 differ) —
+exact clipping, M·GZ/φ extrapolated to φ → 0.
 """
 from fractions import Fraction
 
@@ -1009,25 +1010,35 @@ for kind, target in (("pyramid", "V-pyramid"), ("prism", "V-prism"), ("wedge", "
 # the clipping at 80 digits).  Nothing of M(EF²D/(μV) ∓ OG) is used.  ν = 8 is given to the cases only so that
 # §241's print with ν in place of μ becomes a number (the prism's latitudinal μ is not needed).
 
-def _v_prism_stability(cs, dps, sign):
-    from symfloat.geometry.floating import floating_state, right_prism
+def _heeled_stability(cs, dps, sign, body, up_axis):
+    """M·GZ/φ for φ → 0 of the homogeneous prism ``body(dps)`` floating at the density ratio cs.data["s"] with
+    ``up_axis`` (1: y, 2: z) up, heeled in the plane of x and the up axis; G at ±OG above the upright O."""
+    from symfloat.geometry.floating import floating_state
     big = None if dps <= 15 else dps + 30
     with mpmath.workdps(big or 15):
         def num(v):
             return mpmath.mpf(sp.N(v, big + 10)) if big else float(v)
-        W, T, L, S = (num(cs.data[key]) for key in ("W", "T", "L", "s"))
-        poly = right_prism([(0, 0), (W, T), (-W, T)], L, dps=big)
+        S = num(cs.data["s"])
+        poly = body(big)
         sin, cos = (mpmath.sin, mpmath.cos) if big else (np.sin, np.cos)
-        B0 = floating_state(poly, (0, 1, 0), S).B
-        G = (B0[0], B0[1] + sign * num(cs.params[OG]), B0[2])
+        upright = tuple(1 if i == up_axis else 0 for i in range(3))
+        B0 = floating_state(poly, upright, S).B
+        G = tuple(B0[i] + (sign * num(cs.params[OG]) if i == up_axis else 0) for i in range(3))
 
         def arm(phi):
-            up, e = (sin(phi), cos(phi), 0), (-cos(phi), sin(phi), 0)
+            up = tuple(sin(phi) if i == 0 else (cos(phi) if i == up_axis else 0) for i in range(3))
+            e = tuple(-cos(phi) if i == 0 else (sin(phi) if i == up_axis else 0) for i in range(3))
             Bp = floating_state(poly, up, S, G=G).B
             return sum((Bp[i] - G[i]) * e[i] for i in range(3)) / phi
 
         phi = num(sp.Rational(1, 10 ** 3)) if not big else num(sp.Rational(1, 10 ** 11))
         return num(cs.params[M]) * (4 * arm(phi / 2) - arm(phi)) / 3
+
+
+def _v_prism_stability(cs, dps, sign):
+    from symfloat.geometry.floating import right_prism
+    W, T, L = (cs.data[key] for key in ("W", "T", "L"))
+    return _heeled_stability(cs, dps, sign, lambda big: right_prism([(0, 0), (W, T), (-W, T)], L, dps=big), 1)
 
 
 def _v_case(W, T, L, s, og):
@@ -1045,3 +1056,19 @@ _w("stability-V-prism", "M·GZ/φ of the heeled V-prism by exact clipping, G abo
    ("stability-AB", "stability-CD", "stability-AB-241"), V_CASES, lambda cs, dps: _v_prism_stability(cs, dps, 1))
 _w("stability-V-prism-G-below", "M·GZ/φ of the heeled V-prism by exact clipping, G below O",
    ("stability-G-below",), V_CASES, lambda cs, dps: _v_prism_stability(cs, dps, -1))
+
+
+# §239 about EF: an upright right prism over the quadrilateral of §215 (A = (0, 0), e = (1, 1), B = (3, 0),
+# f = (1, −1); axis vertical, height 2) at s = 1/2: the waterplane has μ = 12 about AB and
+# ν = AB²D/K = 9(a + c)²/(a² + ac + c²) = 81/7 about EF (§216, §218), so μ and ν differ; pitched about EF.
+def _kite_prism(big):
+    from symfloat.geometry.floating import right_prism
+    return right_prism([(0, 0), (1, -1), (3, 0), (1, 1)], 2, dps=big)
+
+
+KITE = (Case({M: 3, V: 3, AB: 3, Dw: sp.Rational(3, 2), mu: 12, nu: sp.Rational(81, 7), OG: sp.Rational(1, 10)},
+             data={"s": sp.Rational(1, 2)}, label="kite prism, s = 1/2, OG = 1/10"),
+        Case({M: 3, V: 3, AB: 3, Dw: sp.Rational(3, 2), mu: 12, nu: sp.Rational(81, 7), OG: sp.Rational(1, 4)},
+             data={"s": sp.Rational(1, 2)}, label="kite prism, s = 1/2, OG = 1/4"))
+_w("stability-kite-prism-EF", "M·GZ/φ of the upright kite prism pitched about EF, by exact clipping, G above O",
+   ("stability-EF",), KITE, lambda cs, dps: _heeled_stability(cs, dps, 1, _kite_prism, 2))

@@ -105,7 +105,7 @@ def test_every_moment_formula_carries_two_quadrature_records(report):
                  "area-integral", "Y-c-first", "Y-c-second", "moment-EF-c", "moment-EF-c-p118", "moment-EF-N",
                  "unequal-halves", "case-rhombus", "case-parabolas", "case-half-n1", "case-ellipse",
                  "mu-rectangle", "mu-rhombus", "mu-ellipse", "mu-parabola-AB", "mu-parabola-EF",
-                 "stability-AB", "stability-G-below", "stability-CD", "stability-AB-241", "mu-bounds"}
+                 "stability-AB", "stability-G-below", "stability-CD", "stability-AB-241", "stability-EF", "mu-bounds"}
     witnessed |= {"%s-table-%s" % (t, MODULE._label(kv)) for t in "NK" for kv in MODULE.KAPPAS}
     by_name = {f.id.split("/")[1]: f for f in report.formulas}
     for name in witnessed:
