@@ -166,8 +166,12 @@ def main(argv=None) -> int:
             write_if_changed(DOCS / "errata.md", errata_markdown(reports))
             progress = None if args.quiet else (lambda d: print(f"executing notebook {d}", file=sys.stderr))
             written = write_notebooks([r.id for r in reports], "notebooks", progress)
+            if any(r.id == "scheeffer-ix" for r in reports):
+                from .report.ix_grid import grid_markdown, grid_rows
+                grid = grid_rows(progress=None if args.quiet else (lambda m: print(f"IX grid {m}", file=sys.stderr)))
+                write_if_changed(DOCS / "scheeffer-ix-grid.md", grid_markdown(grid))
             print(_summary_by_source(reports))
-            print(f"wrote docs/verification.json, docs/errata.json, docs/errata.md; "
+            print(f"wrote docs/verification.json, docs/errata.json, docs/errata.md, docs/scheeffer-ix-grid.md; "
                   f"{len(written)} notebooks changed")
             for r in reports:
                 for msg in r.failures:

@@ -153,7 +153,9 @@ def _section(scene: Scene):
         g3, H3 = loc.basis @ loc.gradient, loc.basis @ loc.hessian @ loc.basis.T
         return float(e @ g3), float(e @ H3 @ e)
 
-    found = roots(evaluate, 0.0, 2 * math.pi, 360, scale)
+    lo, hi, ends = _fundamental_arc(group)
+    points = max(48, round(360 * (hi - lo) / (2 * math.pi)))
+    found = roots(evaluate, lo, hi, points, scale, include_ends=ends)
     out, index = [], 0
     for r in found:
         u = np.array([math.cos(r.theta), math.sin(r.theta), 0.0])
@@ -169,7 +171,21 @@ def _section(scene: Scene):
                                loc.U, "rectangle", (r.fprime,),
                                err, method, len(orbit(u, group))))
     out.sort(key=lambda e: (round(e.potential / scale, 12), e.up))
-    return out, {"minima_minus_maxima": index, "expected_index_sum": 0, "grid": 360}
+    return out, {"minima_minus_maxima": index, "expected_index_sum": 0, "grid": points,
+                 "arc_deg": [math.degrees(lo), math.degrees(hi)]}
+
+
+def _fundamental_arc(group) -> tuple[float, float, bool]:
+    """An arc of heel angles that meets every symmetry class of a section: between two adjacent
+    mirror lines when the polygon has mirrors (the ends, on mirrors, are equilibria by symmetry),
+    else one period of its rotations."""
+    rotations = sum(1 for g in group if np.linalg.det(g) > 0)
+    mirrors = [g for g in group if np.linalg.det(g) < 0]
+    if not mirrors:
+        return 0.0, 2 * math.pi / rotations, False
+    m = mirrors[0][:2, :2]
+    axis = 0.5 * math.atan2(m[1, 0], m[0, 0])       # a mirror fixes the line at half its rotation angle
+    return axis, axis + math.pi / rotations, True
 
 
 def _cylinder(scene: Scene):
