@@ -1,0 +1,1 @@
+"""Numerical studies of the library: conditioning of the solver near bifurcations."""
