@@ -247,6 +247,9 @@ d.step("m3", sp.Eq(M3, (h_dir.dot(sp.Matrix([a / 2 - 2 * a * sg / z / 3, b / 2 -
        "definition", result=M3, uses=("tilt-of-z", "dry-centroid"),
        note="m_3 at z: x = b z, L = 2 a sigma/z, phi_2 = atan(b z^2/(2 a sigma))")
 quartic = z ** 4 - sp.Rational(3, 2) * z ** 3 + 3 * n * sg * z - 4 * n * sg ** 2
+F_def = 3 * (h_dir.dot(sp.Matrix([a / 2 - 2 * a * sg / z / 3, b / 2 - b * z / 3]))).subs(phi, phi_z) * z ** 3 / (b * sp.sin(phi_z))
+F2s = F_def.subs(z, 2 * sg)       # F at the ends of the second region
+F1v = F_def.subs(z, 1)
 d.step("F", sp.Eq(Fz, 3 * M3 * z ** 3 / (b * sp.sin(phi_z))), "definition",
        note="the left side of (133), the text's F(z)")
 d.step("F-quartic", (Fz, 3 * M3 * z ** 3 / (b * sp.sin(phi_z)), quartic), "algebra", uses=("F", "m3"), result=Fz,
@@ -324,7 +327,7 @@ d.quote("133", "(133)",
 d.quote("134", "(134)", r"$$x^2 = 2 a b (1-s) \cdot \operatorname{tg} \varphi_2 \quad (134)$$",
         reading=(X ** 2, 2 * a * b * (1 - s) * sp.tan(phi)))
 d.quote("x-low", "IX.B", r"$$x = a \operatorname{tg} \varphi_2, \text{ folglich } x = 2 b (1-s)$$",
-        reading=(sp.Matrix([sp.Subs(X, phi, sp.atan(2 * b * sg / a)), b * Zlo]),
+        reading=(sp.Matrix([sp.sqrt(2 * a * b * sg * 2 * b * sg / a), b * Zlo]),
                  sp.Matrix([a * (2 * b * sg / a), 2 * b * (1 - s)])),
         note="at the smallest tilt, tan phi_2 = x/a (corner C in the water)")
 d.quote("135a", "(135a)", r"$$\frac{x}{b} = z = 2 (1-s) \quad (135a)$$", reading=(Zlo, 2 * (1 - s)))
@@ -332,9 +335,11 @@ d.quote("135b", "(135b)", r"Für den grössten Wert von  $\varphi_2$  ergibt sic
         reading=(Zhi, 1))
 d.quote("136", "(136)", r"$$F(z) = z^4 - \frac{3}{2} z^3 + 3 n \sigma \cdot z - 4 n \sigma^2 \quad (136)$$",
         reading=(Fz, z ** 4 - sp.Rational(3, 2) * z ** 3 + 3 * n * sg * z - 4 * n * sg ** 2))
+
+
 d.quote("137", "(137)", r"$$F'(z) = 4 z^3 - \frac{9}{2} z^2 + 3 \sigma n \quad (137)$$",
-        reading=(sp.Derivative(Fz, z), 4 * z ** 3 - sp.Rational(9, 2) * z ** 2 + 3 * sg * n))
-d.quote("138", "(138)", r"$$F''(z) = 3 z (4 z - 3) \quad (138)$$", reading=(sp.Derivative(Fz, z, 2), 3 * z * (4 * z - 3)))
+        reading=(sp.diff(F_def, z), 4 * z ** 3 - sp.Rational(9, 2) * z ** 2 + 3 * sg * n))
+d.quote("138", "(138)", r"$$F''(z) = 3 z (4 z - 3) \quad (138)$$", reading=(sp.diff(F_def, z, 2), 3 * z * (4 * z - 3)))
 d.quote("F-at-0", "IX.B", r"$$\text{,, } z = 0 \quad F(z) = -4 \sigma^2 n$$", reading=(sp.Subs(Fz, z, 0), -4 * sg ** 2 * n))
 d.quote("F1-at-0", "IX.B", r"Da  $F'(0) = 3 \sigma n$ , also positiv ist",
         reading=(sp.Subs(sp.Derivative(Fz, z), z, 0), 3 * sg * n))
@@ -343,7 +348,7 @@ d.quote("inflections", "IX.B",
         r"Wendepunkt  $z = \frac{3}{4}$  nimmt also  $F'(z)$  ab.",
         reading=(sp.Matrix([sp.Subs(sp.Derivative(Fz, z, 2), z, 0), sp.Subs(sp.Derivative(Fz, z, 2), z, sp.Rational(3, 4))]),
                  sp.zeros(2, 1)))
-F1_34 = sp.Subs(sp.Derivative(Fz, z), z, sp.Rational(3, 4))
+F1_34 = sp.diff(F_def, z).subs(z, sp.Rational(3, 4))
 d.quote("139-pre", "IX.B",
         r"$$4 \left(\frac{3}{4}\right)^3 - \frac{9}{2} \cdot \left(\frac{3}{4}\right)^2 + 3 \sigma n \geq 0$$",
         reading=(4 * sp.Rational(3, 4) ** 3 - sp.Rational(9, 2) * sp.Rational(3, 4) ** 2 + 3 * sg * n, F1_34))
@@ -352,29 +357,29 @@ d.quote("139", "(139)", r"$$\text{oder } 3 \left(\sigma n - \frac{9}{32}\right) 
 d.quote("140", "(140)",
         r"$$\text{also wenn } s \leq \frac{23}{32} \text{ ist.} \quad (140)$$",
         reading=(sp.Rational(23, 32) - s, sg - sp.Rational(9, 32),
-                 sp.Subs(sp.Derivative(quartic.subs(n, nu), z), (z, nu), (sp.Rational(3, 4), 1)) / 3),
+                 sp.diff(quartic.subs(n, 1), z).subs(z, sp.Rational(3, 4)) / 3),
         note="F'(3/4) at n = 1 over 3; F'(3/4) grows with n, so n >= 1 only helps")
 d.quote("140-steps", "IX.B", r"$$\text{oder } 1 - s - \frac{9}{32} \geq 0$$", reading=(1 - s - sp.Rational(9, 32), sg - sp.Rational(9, 32)))
 d.quote("141", "(141)",
         r"$$\text{oder } F(2\sigma) = 2(1-s)^2 \cdot \left\{ \left(\frac{a}{b}\right)^2 - 2(1-s)(4s-1) \right\} \quad (141)$$",
-        reading=(sp.Subs(Fz, z, 2 * sg), 16 * (1 - s) ** 4 - 12 * (1 - s) ** 3 + 6 * n * (1 - s) ** 2 - 4 * n * (1 - s) ** 2,
+        reading=(F2s, 16 * (1 - s) ** 4 - 12 * (1 - s) ** 3 + 6 * n * (1 - s) ** 2 - 4 * n * (1 - s) ** 2,
                  2 * (1 - s) ** 2 * (8 * (1 - s) ** 2 - 6 * (1 - s) + n),
                  2 * (1 - s) ** 2 * ((a / b) ** 2 - 2 * (1 - s) * (4 * s - 1))),
         note="with the two preceding lines of the text")
 d.quote("142", "(142)",
         r"$$F(1) = (1-s)(4s-1) \cdot \left\{ \left(\frac{a}{b}\right)^2 - \frac{1}{2(1-s)(4s-1)} \right\} \quad (142)$$",
-        reading=(sp.Subs(Fz, z, 1), (1 - s) * (4 * s - 1) * ((a / b) ** 2 - 1 / (2 * (1 - s) * (4 * s - 1)))))
+        reading=(F1v, (1 - s) * (4 * s - 1) * ((a / b) ** 2 - 1 / (2 * (1 - s) * (4 * s - 1)))))
 d.quote("142-automatic", "IX.B", r"Dann ist aber  $\frac{1}{2(1-s)(4s-1)} < 1$",
         reading=(1 - 1 / rho, (rho - 1) / rho), note="rho > 1 (forced by n >= 1 and n < rho) makes 1/rho < 1 <= n")
 d.quote("143", "(143)", r"$$\left(\frac{a}{b}\right)^2 < 2(1-s)(4s-1) \quad (143)$$",
-        reading=(rho_s - (a / b) ** 2, -sp.Subs(Fz, z, 2 * sg) / (2 * sg ** 2)),
+        reading=(rho_s - (a / b) ** 2, -F2s / (2 * sg ** 2)),
         note="F(2 sigma) < 0 < F(1) with F increasing: one root in (2 sigma, 1), where F goes from - to +")
 d.quote("144", "(144)", r"$$\left(\frac{a}{b}\right)^2 > 2(1-s)4s-1 \quad (144)$$",
-        reading=((a / b) ** 2 - (2 * (1 - s) * 4 * s - 1), sp.Subs(Fz, z, 2 * sg) / (2 * sg ** 2)),
+        reading=((a / b) ** 2 - (2 * (1 - s) * 4 * s - 1), F2s / (2 * sg ** 2)),
         erratum=Erratum("transcription", "medium", r"\left(\frac{a}{b}\right)^2 > 2(1-s)(4s-1)",
                         "the converse of (143) needs the same bound 2(1-s)(4s-1) (F(2 sigma) > 0 by (141)); the scan "
                         "lost the parentheses around 4s - 1, which changes the bound (e.g. by 1 - 2(1-s) at any s).",
-                        corrected_reading=((a / b) ** 2 - rho_s, sp.Subs(Fz, z, 2 * sg) / (2 * sg ** 2))))
+                        corrected_reading=((a / b) ** 2 - rho_s, F2s / (2 * sg ** 2))))
 d.quote("145", "(145)",
         r"$$F(z) = z^4 - \frac{3}{2}z^3 + \sigma n 3z - 4\sigma = z^4 - \frac{3}{2}z^3 + 3\sigma n(z - \frac{2}{3} \cdot 2\sigma) "
         r"\quad (145)$$",
@@ -497,8 +502,6 @@ d.quote("160-squared", "IX.B", r"$$9(5-t)(1-t) \leq (7-3t)^2$$",
         reading=((7 - 3 * t) ** 2 - 9 * (5 - t) * (1 - t), 4 * (1 + 3 * t)))
 d.quote("1+3t", "IX.B", r"$$0 \leq 128(1-s)$$", reading=(1 + 3 * t_s, 128 * (1 - s) / 9),
         note="1 + 3t with t = (119 - 128 s)/27")
-F2s = sp.Subs(Fz, z, 2 * sg)
-F1v = sp.Subs(Fz, z, 1)
 d.quote("161", "(161)", r"Aus dem Vorstehenden ergibt sich für den Fall  $s > \frac{23}{32}$  folgendes Resultat: (161)",
         reading=(sp.Matrix([F2s, F1v]), sp.Matrix([2 * sg ** 2 * (n - rho), rho / 2 * (n - 1 / rho)])),
         note="the conditions of the table through (141), (142); the root counts of rows I-V are tested (Sturm counts "
@@ -523,7 +526,7 @@ d.quote("162a", "(162a)",
                         "of VII were merged by the scan of the brace table.",
                         corrected_reading=(sp.Matrix([rho - n, n - rho]), sp.Matrix([-F2s / (2 * sg ** 2), F2s / (2 * sg ** 2)]))),
         note="VI: one stable equilibrium iff n < rho, VII: none")
-HGz = sp.Subs(HG, phi, phi_z)
+HGz = (sp.sqrt(2 * a * b * sg * sp.tan(phi)) / sp.sin(phi)).subs(phi, phi_z)
 d.quote("HG", "IX.B", r"Es ist aber  $H G = \frac{x}{\sin \varphi_2}$", reading=(HG, X / sp.sin(phi)))
 d.quote("cot", "IX.B", r"$$\text{oder, da (aus 134) } \cotg \varphi_2 = \frac{2 a b (1 - s)}{x^2},$$",
         reading=(sp.cot(phi), 2 * a * b * (1 - s) / X ** 2))
@@ -536,11 +539,11 @@ d.quote("163", "(163)",
         reading=((c / b) ** 2 - (z ** 2 + 4 * (a / b) ** 2 * (1 - s) ** 2 / z ** 2), (c ** 2 - HGz ** 2) / b ** 2),
         note="sign identity, factor 1/b^2: HG < c; HG c^3/12 > c HG^3/12 is the (43a) criterion in the second region")
 d.quote("164", "(164)", r"$$\left( \frac{c}{b} \right)^2 > 4 (1 - s)^2 + \left( \frac{a}{b} \right)^2 \quad (164)$$",
-        reading=((c / b) ** 2 - (4 * (1 - s) ** 2 + (a / b) ** 2), (c ** 2 - sp.Subs(HGz, z, 2 * sg) ** 2) / b ** 2),
+        reading=((c / b) ** 2 - (4 * (1 - s) ** 2 + (a / b) ** 2), (c ** 2 - HGz.subs(z, 2 * sg) ** 2) / b ** 2),
         note="HG^2/b^2 = z^2 + 4 n sigma^2/z^2 is convex in z^2; on [2 sigma, 1] its maximum is at z = 2 sigma when "
              "n >= 1 (the difference of the end values is (n - 1)(1 - 4 sigma^2))")
 d.quote("HG-max", "IX.B", r"Letzteres tritt aber für den kleinsten Wert von  $x$  oder  $z$  ein",
-        reading=((sp.Subs(HGz, z, 2 * sg) ** 2 - sp.Subs(HGz, z, 1) ** 2) / b ** 2, (n - 1) * (1 - 4 * sg ** 2)))
+        reading=((HGz.subs(z, 2 * sg) ** 2 - HGz.subs(z, 1) ** 2) / b ** 2, (n - 1) * (1 - 4 * sg ** 2)))
 
 # ==== C. the third region ============================================================================
 kd = sp.Dummy("k")
@@ -631,3 +634,615 @@ d.quote("table-third", "IX.C",
                                            PWM(sp.Matrix([(a / b) ** 2 / (6 * s * (1 - s)) * 12 * s / a * GM3, (a / b) ** 2 / rho * Q3]),
                                               sp.zeros(2, 1)))),
         note="for s > 1/2 with rho > 0")
+
+
+# ==== witnesses: the clipped floating box ============================================================
+def _M(p):
+    return math if p <= 15 else mpmath
+
+
+def _num(v, p):
+    v = sp.sympify(v)
+    return float(v) if p <= 15 else mpmath.mpf(str(sp.N(v, p + 20)))
+
+
+def _bd(p):
+    """Body precision: float64, or mpmath with guard digits."""
+    return None if p <= 15 else p + 8
+
+
+def _dot(p, q):
+    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]
+
+
+@functools.lru_cache(maxsize=None)
+def _body(av, bv, cv, p):
+    return box(_num(av, p), _num(bv, p), _num(cv, p), dps=_bd(p))
+
+
+def _frame(M, ph, axis):
+    """Up vector u and h = du/dphi for a turn by phi about the edge direction z ('c') or x ('a')."""
+    sn, cs = M.sin(ph), M.cos(ph)
+    o = 0 * sn
+    return ((sn, cs, o), (cs, -sn, o)) if axis == "c" else ((o, cs, sn), (o, -sn, cs))
+
+
+def _state(body, ph, sv, axis, M):
+    return floating_state(body, _frame(M, ph, axis)[0], sv)
+
+
+def _gz(body, ph, sv, axis, M):
+    """dE/dphi = h.(G - B): the derivative of the clipped potential (tested against a difference quotient)."""
+    st = _state(body, ph, sv, axis, M)
+    h = _frame(M, ph, axis)[1]
+    return _dot(h, [st.G[k] - st.B[k] for k in range(3)])
+
+
+def _clearance(body, ph, sv, axis, M):
+    """Height of the lowest top-face vertex over the water (s > 1/2), or depth of the highest bottom-face vertex
+    (s < 1/2): zero when the face reaches the water."""
+    st = _state(body, ph, sv, axis, M)
+    u = st.u
+    if sv > 0.5:
+        return min(_dot(u, q) - st.t for q in body.vertices if q[1] > 0)
+    return -max(_dot(u, q) - st.t for q in body.vertices if q[1] < 0)
+
+
+def _corner(body, ph, sv, which, M):
+    """Height over the water of the corner C = (-a/2, b/2) or A = (a/2, -b/2) (turn about c)."""
+    st = _state(body, ph, sv, "c", M)
+    sx, sy = (-1, 1) if which == "C" else (1, -1)
+    q = next(v for v in body.vertices if (v[0] > 0) == (sx > 0) and (v[1] > 0) == (sy > 0) and v[2] > 0)
+    return _dot(st.u, q) - st.t
+
+
+def _illinois(f, lo, hi, eps):
+    flo, fhi = f(lo), f(hi)
+    if flo == 0:
+        return lo
+    if fhi == 0:
+        return hi
+    if (flo > 0) == (fhi > 0):
+        raise ValueError("no sign change in the bracket")
+    side, c_old, c_ = 0, None, lo
+    for _ in range(400):
+        c_ = (lo * fhi - hi * flo) / (fhi - flo)
+        fc = f(c_)
+        if fc == 0:
+            return c_
+        if (fc > 0) == (fhi > 0):
+            hi, fhi = c_, fc
+            if side == -1:
+                flo /= 2
+            side = -1
+        else:
+            lo, flo = c_, fc
+            if side == 1:
+                fhi /= 2
+            side = 1
+        if c_old is not None and abs(c_ - c_old) <= eps * (1 + abs(c_)):
+            return c_
+        c_old = c_
+    return c_
+
+
+def _root(make_f, grid, p, last=False):
+    """First (or last) sign change of f on the float grid, refined in float64 and, for p > 15, at p digits in a
+    narrow bracket around the float root.  make_f(q) builds f at precision q."""
+    ff = make_f(15)
+    vals = [ff(g) for g in grid]
+    idx = [i for i in range(len(grid) - 1) if (vals[i] > 0) != (vals[i + 1] > 0)]
+    i = idx[-1] if last else idx[0]
+    x0 = _illinois(ff, grid[i], grid[i + 1], 1e-15)
+    if p <= 15:
+        return x0
+    fm = make_f(p)
+    with mpmath.workdps(p + 8):
+        dlt = mpmath.mpf("1e-9") * (1 + abs(x0))
+        lo, hi = mpmath.mpf(x0) - dlt, mpmath.mpf(x0) + dlt
+        if (fm(lo) > 0) == (fm(hi) > 0):
+            lo, hi = mpmath.mpf(grid[i]), mpmath.mpf(grid[i + 1])
+        return _illinois(fm, lo, hi, mpmath.mpf(10) ** (-p - 4))
+
+
+PHI = [0.004 + 0.025 * k for k in range(63)]      # (0, pi/2)
+
+
+@functools.lru_cache(maxsize=None)
+def _tilt(av, bv, cv, sv, axis, kind, p):
+    """A clipped tilt: 'eq' the first root of GZ (first region), 'eq3' the last root below 90 deg (third
+    region), 'touch' a base face reaching the water, 'C'/'A' the corners C, A reaching the water."""
+    def make(q):
+        M, body, s_ = _M(q), _body(av, bv, cv, q), _num(sv, q)
+        if kind in ("eq", "eq3"):
+            return lambda ph: _gz(body, ph, s_, axis, M)
+        if kind == "touch":
+            return lambda ph: _clearance(body, ph, s_, axis, M)
+        return lambda ph: _corner(body, ph, s_, kind, M)
+    grid = PHI[:-1] if kind == "eq3" else PHI
+    return _root(make, grid, p, last=(kind == "eq3"))
+
+
+def _leg(body, ph, sv, bv, M):
+    """z = x/b: the distance of the rising corner D = (a/2, b/2) from the water along the side b, over b."""
+    st = _state(body, ph, sv, "c", M)
+    Dq = next(v for v in body.vertices if v[0] > 0 and v[1] > 0 and v[2] > 0)
+    return (_dot(st.u, Dq) - st.t) / M.cos(ph) / bv
+
+
+def _dry(body, ph, sv, M):
+    """The clipped state, m_3 = h.S_3 (S_3 the centroid of the dry part) and HG (waterplane width)."""
+    st = _state(body, ph, sv, "c", M)
+    h = _frame(M, ph, "c")[1]
+    vol = st.volume / sv
+    S3 = [(vol * st.G[k] - st.volume * st.B[k]) / (vol - st.volume) for k in range(3)]
+    zs = [q[2] for q in body.vertices]
+    return st, _dot(h, S3), st.waterplane_area / (max(zs) - min(zs))
+
+
+@functools.lru_cache(maxsize=None)
+def _tilt_of_z(av, bv, sv, zv, p):
+    """The clipped tilt at which x/b = z (root in phi of the measured leg)."""
+    def make(q):
+        M, body = _M(q), _body(av, bv, 2, q)
+        s_, b_, z_ = _num(sv, q), _num(bv, q), _num(zv, q)
+        return lambda ph: _leg(body, ph, s_, b_, M) - z_
+    return _root(make, PHI, p)
+
+
+def _G_at(av, bv, sv, ph, p):
+    """3 m_3 z^3/(b sin phi) of the clipped box at the tilt phi, z the measured x/b."""
+    M, body = _M(p), _body(av, bv, 2, p)
+    s_, b_ = _num(sv, p), _num(bv, p)
+    zm = _leg(body, ph, s_, b_, M)
+    return 3 * _dry(body, ph, s_, M)[1] * zm ** 3 / (b_ * M.sin(ph))
+
+
+def _G(av, bv, sv, zv, p):
+    return _G_at(av, bv, sv, _tilt_of_z(av, bv, sv, zv, p), p)
+
+
+def _stencil(av, bv, sv, zv, p, order):
+    """F' or F'' of the clipped quantity by five-point central differences in z, step 1/25: exact for polynomials of
+    degree 4 (5 for F''); a clipped quantity that were not a quartic would show as a difference of order h^4."""
+    h = sp.Rational(1, 25)
+    f = [_G(av, bv, sv, zv + k * h, p) for k in (-2, -1, 1, 2)]
+    hn = _num(h, p)
+    if order == 1:
+        return (f[0] - 8 * f[1] + 8 * f[2] - f[3]) / (12 * hn)
+    return (-f[0] + 16 * f[1] - 30 * _G(av, bv, sv, zv, p) + 16 * f[2] - f[3]) / (12 * hn ** 2)
+
+
+def P(c_):
+    return [c_.params[k] for k in (a, b, c, s)]
+
+
+def computed(name, description, targets, cases, fn):
+    d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=fn))
+
+
+def C(label, **kw):
+    syms = {"a": a, "b": b, "c": c, "s": s, "z": z, "varphi_2": phi, "t": t}
+    return Case({syms[k]: sp.Rational(v) for k, v in kw.items()}, label=label)
+
+
+def _upright(c_, p, axis_up="b"):
+    av, bv, cv, sv = P(c_)
+    u = (0, 1, 0) if axis_up == "b" else (1, 0, 0)
+    return floating_state(_body(av, bv, cv, p), u, _num(sv, p)), [_num(v, p) for v in (av, bv, cv, sv)]
+
+
+UP = (C("a = 1, b = 2, c = 3, s = 3/10", a=1, b=2, c=3, s="0.3"), C("a = 3/2, b = 1, c = 2, s = 4/5", a="1.5", b=1, c=2, s="0.8"),
+      C("a = 1, b = 1, c = 5/4, s = 1/2", a=1, b=1, c="1.25", s="0.5"))
+
+
+def _gm(st, which):
+    return (st.I_min if which == "min" else st.I_max) / st.volume - st.potential
+
+
+computed("upright-min", "metacentric height about the axis parallel to c, upright (clipped, I_min for c > a)",
+         ("122", "stability-condition"), UP, lambda c_, p: _gm(_upright(c_, p)[0], "min"))
+computed("upright-min-12", "12 s/b x the same", ("123", "132a"), UP,
+         lambda c_, p: (lambda st, v: 12 * v[3] / v[1] * _gm(st, "min"))(*_upright(c_, p)))
+computed("upright-max", "metacentric height about the axis parallel to a (I_max), upright (clipped)", ("T11-V1",), UP,
+         lambda c_, p: _gm(_upright(c_, p)[0], "max"))
+computed("upright-max-12", "12 s/b x the same", ("124",), UP,
+         lambda c_, p: (lambda st, v: 12 * v[3] / v[1] * _gm(st, "max"))(*_upright(c_, p)))
+computed("moments", "smallest and largest waterplane moments, upright (clipped)", ("T1",), UP,
+         lambda c_, p: _upright(c_, p)[0].I_min)
+computed("largest", "largest waterplane moment, upright (clipped)", ("largest-moment",), UP,
+         lambda c_, p: _upright(c_, p)[0].I_max)
+computed("volume-height", "submerged volume and height of G above B, upright (clipped)", ("V1-e1",), UP,
+         lambda c_, p: (lambda st: (st.volume, st.potential))(_upright(c_, p)[0]))
+computed("moment-volume-height", "I_min and volume x height of G above B, upright (clipped)", ("T1-V1e1",), UP,
+         lambda c_, p: (lambda st: (st.I_min, st.volume * st.potential))(_upright(c_, p)[0]))
+computed("moment-difference", "I_max - I_min and the moments, upright (clipped)", ("127",), UP,
+         lambda c_, p: (lambda st: (st.I_max, st.I_min, st.I_max - st.I_min))(_upright(c_, p)[0]))
+computed("moment-difference-2", "I_max - I_min, upright (clipped)", ("126",), UP,
+         lambda c_, p: (lambda st: st.I_max - st.I_min)(_upright(c_, p)[0]))
+computed("moment-difference-3", "I_min - I_max, upright (clipped)", ("128-unstable",), UP,
+         lambda c_, p: (lambda st: st.I_min - st.I_max)(_upright(c_, p)[0]))
+
+# first region: both oblique positions inside the region (6s(1-s) > (a/b)^2, (c/b)^2 >= rho)
+R1 = (C("a = 21/20, b = 1, c = 11/10, s = 7/10", a="1.05", b=1, c="1.1", s="0.7"),
+      C("a = 21/20, b = 1, c = 11/10, s = 3/10", a="1.05", b=1, c="1.1", s="0.3"),
+      C("a = 53/50, b = 1, c = 11/10, s = 17/25", a="1.06", b=1, c="1.1", s="0.68"))
+
+
+def _tan2(c_, p, axis, kind="eq"):
+    return _M(p).tan(_tilt(*P(c_), axis, kind, p)) ** 2
+
+
+computed("oblique-c", "tan^2 of the clipped equilibrium tilt about the c-axis (root of GZ)", ("125",), R1,
+         lambda c_, p: _tan2(c_, p, "c"))
+computed("oblique-c-pre", "1 + tan^2/2 of the clipped equilibrium tilt about the c-axis", ("125-pre",), R1,
+         lambda c_, p: 1 + _tan2(c_, p, "c") / 2)
+computed("oblique-c-32", "I_min (1 + tan^2 phi_1/2) - V e_1 with the clipped upright moment, volume, height and tilt",
+         ("32",), R1, lambda c_, p: (lambda st: st.I_min * (1 + _tan2(c_, p, "c") / 2) - st.volume * st.potential)(
+             _upright(c_, p)[0]))
+computed("oblique-a", "tan^2 of the clipped equilibrium tilt about the a-axis", ("128",), R1, lambda c_, p: _tan2(c_, p, "a"))
+R1U = R1[:1] + R1[2:]
+computed("touch", "tan of the clipped tilt at which the top face reaches the water, about c and about a", ("129",), R1U,
+         lambda c_, p: (_M(p).tan(_tilt(*P(c_), "c", "touch", p)), _M(p).tan(_tilt(*P(c_), "a", "touch", p))))
+computed("touch-2", "tan^2 of the clipped touching tilt about c", ("129-squared",), R1U,
+         lambda c_, p: _tan2(c_, p, "c", "touch"))
+computed("margin", "tan^2(touch) - tan^2(equilibrium) about c, clipped", ("130-pre",), R1U,
+         lambda c_, p: _tan2(c_, p, "c", "touch") - _tan2(c_, p, "c"))
+
+
+def _q(c_, p, axis):
+    av, bv, cv, _ = [_num(v, p) for v in P(c_)]
+    e_ = av if axis == "c" else cv
+    return (e_ / bv) ** 2 / 2 * (_tan2(c_, p, axis, "touch") - _tan2(c_, p, axis))
+
+
+def _m12(c_, p, which):
+    st, v = _upright(c_, p)
+    return -12 * v[3] / v[1] * _gm(st, which)
+
+
+computed("margin-130", "(a/b)^2/2 (tan^2 touch - tan^2 equilibrium) about c, clipped", ("130",), R1U, lambda c_, p: _q(c_, p, "c"))
+computed("region-131", "-12 s/b GM and the margins, both axes, clipped", ("131",), R1U,
+         lambda c_, p: (_m12(c_, p, "min"), _q(c_, p, "c"), _m12(c_, p, "max"), _q(c_, p, "a")))
+computed("region-132b", "-12 s/b GM about c and the margin, clipped", ("132b",), R1,
+         lambda c_, p: (_m12(c_, p, "min"), _q(c_, p, "c")))
+computed("region-132c", "-12 s/b GM about a and the margin, clipped", ("132c",), R1,
+         lambda c_, p: (_m12(c_, p, "max"), _q(c_, p, "a")))
+
+# second region
+R2 = (C("a = 3/2, b = 1, s = 4/5, z = 3/4", a="1.5", b=1, s="0.8", z="0.75"),
+      C("a = 6/5, b = 1, s = 9/10, z = 1/2", a="1.2", b=1, s="0.9", z="0.5"),
+      C("a = 1, b = 1, s = 7/10, z = 9/10", a=1, b=1, s="0.7", z="0.9"))
+
+
+def _Gz(c_, p):
+    return _G(c_.params[a], c_.params[b], c_.params[s], c_.params[z], p)
+
+
+computed("quartic", "3 m_3 z^3/(b sin phi_2) of the clipped box at the tilt where x/b = z", ("133", "136"), R2, _Gz)
+computed("quartic-first", "3 m_3 z^3/b of the clipped box at the tilt where x/b = z", ("133-first",), R2,
+         lambda c_, p: (lambda ph: _G_at(c_.params[a], c_.params[b], c_.params[s], ph, p) * _M(p).sin(ph))(
+             _tilt_of_z(c_.params[a], c_.params[b], c_.params[s], c_.params[z], p)))
+computed("quartic-d1", "five-point derivative in z of the clipped quantity", ("137",), R2,
+         lambda c_, p: _stencil(c_.params[a], c_.params[b], c_.params[s], c_.params[z], p, 1))
+computed("quartic-d2", "five-point second derivative in z of the clipped quantity", ("138",), R2,
+         lambda c_, p: _stencil(c_.params[a], c_.params[b], c_.params[s], c_.params[z], p, 2))
+R34 = (C("a = 3/2, b = 1, s = 4/5", a="1.5", b=1, s="0.8"), C("a = 6/5, b = 1, s = 7/10", a="1.2", b=1, s="0.7"))
+computed("quartic-d1-34", "five-point derivative of the clipped quantity at z = 3/4", ("139", "139-pre"), R34,
+         lambda c_, p: _stencil(c_.params[a], c_.params[b], c_.params[s], sp.Rational(3, 4), p, 1))
+computed("threshold-140", "F'(3/4)/3 of the clipped box with a = b", ("140",),
+         (C("s = 4/5", s="0.8"), C("s = 2/3", s="2/3")),
+         lambda c_, p: _stencil(1, 1, c_.params[s], sp.Rational(3, 4), p, 1) / 3)
+R2T = (C("a = 3/2, b = 1, s = 4/5, varphi_2 = 1/2", a="1.5", b=1, s="0.8", varphi_2="0.5"),
+       C("a = 6/5, b = 1, s = 9/10, varphi_2 = 3/5", a="1.2", b=1, s="0.9", varphi_2="0.6"))
+
+
+def _at_phi(c_, p):
+    M = _M(p)
+    body, s_ = _body(c_.params[a], c_.params[b], 2, p), _num(c_.params[s], p)
+    ph = _num(c_.params[phi], p)
+    xm = _leg(body, ph, s_, 1, M)
+    return xm, _dry(body, ph, s_, M)[2]
+
+
+computed("leg", "x^2: the clipped distance of the rising corner from the water along b, squared", ("134",), R2T,
+         lambda c_, p: _at_phi(c_, p)[0] ** 2)
+computed("waterline", "HG: clipped waterplane width across the axis", ("HG",), R2T, lambda c_, p: _at_phi(c_, p)[1])
+computed("waterline-2", "HG^2 (clipped)", ("HG2",), R2T, lambda c_, p: _at_phi(c_, p)[1] ** 2)
+computed("waterline-ratio", "(HG/x)^2 (clipped)", ("sin2",), R2T, lambda c_, p: (_at_phi(c_, p)[1] / _at_phi(c_, p)[0]) ** 2)
+computed("cot-leg", "2 a b (1-s)/x^2 with the clipped x", ("cot",), R2T,
+         lambda c_, p: 2 * _num(c_.params[a] * c_.params[b] * (1 - c_.params[s]), p) / _at_phi(c_, p)[0] ** 2)
+R2E = (C("a = 3/2, b = 1, c = 3, s = 4/5", a="1.5", b=1, c=3, s="0.8"), C("a = 6/5, b = 1, c = 2, s = 7/10", a="1.2", b=1, c=2, s="0.7"),
+       C("a = 1, b = 1, c = 2, s = 13/20", a=1, b=1, c=2, s="0.65"))
+
+
+def _end(c_, p, which):
+    """(z, G, HG) at the clipped tilt where corner C (start of the region) or A (end) reaches the water."""
+    av, bv, sv = c_.params[a], c_.params[b], c_.params[s]
+    ph = _tilt(av, bv, 2, sv, "c", which, p)
+    M, body, s_ = _M(p), _body(av, bv, 2, p), _num(sv, p)
+    return _leg(body, ph, s_, _num(bv, p), M), _G_at(av, bv, sv, ph, p), _dry(body, ph, s_, M)[2]
+
+
+computed("x-low", "x at the clipped tilt where corner C reaches the water (twice)", ("x-low",), R2E,
+         lambda c_, p: (lambda e: (e[0] * _num(c_.params[b], p),) * 2)(_end(c_, p, "C")))
+computed("z-low", "x/b at the clipped tilt where corner C reaches the water", ("135a",), R2E, lambda c_, p: _end(c_, p, "C")[0])
+computed("z-high", "x/b at the clipped tilt where corner A reaches the water", ("135b",), R2E, lambda c_, p: _end(c_, p, "A")[0])
+computed("F-low", "the clipped quantity at the start of the region", ("141",), R2E, lambda c_, p: _end(c_, p, "C")[1])
+computed("F-high", "the clipped quantity at the end of the region", ("142",), R2E, lambda c_, p: _end(c_, p, "A")[1])
+
+
+def _sig2(c_, p):
+    return 2 * _num(1 - c_.params[s], p) ** 2
+
+
+computed("F-low-143", "-F(2 sigma)/(2 sigma^2), clipped", ("143",), R2E, lambda c_, p: -_end(c_, p, "C")[1] / _sig2(c_, p))
+computed("F-low-144", "F(2 sigma)/(2 sigma^2), clipped", ("144",), R2E, lambda c_, p: _end(c_, p, "C")[1] / _sig2(c_, p))
+computed("F-ends", "the clipped quantity at both ends of the region", ("161",), R2E,
+         lambda c_, p: (_end(c_, p, "C")[1], _end(c_, p, "A")[1]))
+computed("F-ends-162", "F(2 sigma)/(2 sigma^2) and 2 F(1)/rho, clipped", ("162",), R2E,
+         lambda c_, p: (_end(c_, p, "C")[1] / _sig2(c_, p),
+                        2 * _end(c_, p, "A")[1] / _num(rho_s.subs(s, c_.params[s]), p)))
+computed("F-ends-162a", "-F(2 sigma)/(2 sigma^2) and F(2 sigma)/(2 sigma^2), clipped", ("162a",), R2E,
+         lambda c_, p: (-_end(c_, p, "C")[1] / _sig2(c_, p), _end(c_, p, "C")[1] / _sig2(c_, p)))
+computed("HG-start", "(c^2 - HG^2)/b^2 at the start of the region (clipped)", ("164",), R2E,
+         lambda c_, p: (_num(c_.params[c], p) ** 2 - _end(c_, p, "C")[2] ** 2) / _num(c_.params[b], p) ** 2)
+computed("HG-ends", "(HG_start^2 - HG_end^2)/b^2 (clipped)", ("HG-max",), R2E,
+         lambda c_, p: (_end(c_, p, "C")[2] ** 2 - _end(c_, p, "A")[2] ** 2) / _num(c_.params[b], p) ** 2)
+R2C = (C("a = 3/2, b = 1, c = 2, s = 4/5, z = 3/4", a="1.5", b=1, c=2, s="0.8", z="0.75"),
+       C("a = 6/5, b = 1, c = 3/2, s = 9/10, z = 1/2", a="1.2", b=1, c="1.5", s="0.9", z="0.5"))
+
+
+def _hg_z(c_, p):
+    av, bv, sv = c_.params[a], c_.params[b], c_.params[s]
+    ph = _tilt_of_z(av, bv, sv, c_.params[z], p)
+    return _dry(_body(av, bv, 2, p), ph, _num(sv, p), _M(p))[2]
+
+
+computed("HG-z", "(c^2 - HG^2)/b^2 at the tilt where x/b = z (clipped)", ("163",), R2C,
+         lambda c_, p: (_num(c_.params[c], p) ** 2 - _hg_z(c_, p) ** 2) / _num(c_.params[b], p) ** 2)
+
+# third region: the a-vertical position and its oblique neighbour
+R3 = (C("a = 21/20, b = 1, c = 2, s = 4/5", a="1.05", b=1, c=2, s="0.8"),
+      C("a = 27/25, b = 1, c = 3/2, s = 41/50", a="1.08", b=1, c="1.5", s="0.82"))
+R3M = R3 + (C("a = 21/20, b = 1, c = 2, s = 1/5", a="1.05", b=1, c=2, s="0.2"),)
+
+
+def _cot2_3(c_, p):
+    return 1 / _M(p).tan(_tilt(*P(c_), "c", "eq3", p)) ** 2
+
+
+def _q3(c_, p):
+    """(b/a)^2/2 (tan^2 of the touching tilt - tan^2 of the equilibrium tilt), both from the a-vertical position."""
+    av, bv = _num(c_.params[a], p), _num(c_.params[b], p)
+    return (bv / av) ** 2 / 2 * (_tan_touch3(c_, p) ** 2 - _cot2_3(c_, p))
+
+
+def _tan_touch3(c_, p):
+    """tan of the tilt from the a-vertical position at which the face x = +a/2 (s > 1/2) reaches the water."""
+    av, bv, cv, sv = P(c_)
+
+    def make(q):
+        M, body, s_ = _M(q), _body(av, bv, cv, q), _num(sv, q)
+
+        def f(ps):
+            st = _state(body, M.pi / 2 - ps, s_, "c", M)
+            return min(_dot(st.u, v) - st.t for v in body.vertices if v[0] > 0)
+        return f
+    return _M(p).tan(_root(make, PHI, p))
+
+
+computed("oblique-3", "cot^2 of the clipped equilibrium tilt next to the a-vertical position (last root of GZ)",
+         ("166",), R3M, _cot2_3)
+computed("upright-3", "12 s/a x metacentric height with a vertical (clipped)", ("upright-3",), R3M,
+         lambda c_, p: (lambda st, v: 12 * v[3] / v[0] * st.metacentric_height)(*_upright(c_, p, "a")))
+computed("unstable-3", "-(a/b)^2/(6s(1-s)) 12 s/a x metacentric height with a vertical (clipped)", ("unstable-3",), R3M,
+         lambda c_, p: (lambda st, v: -(v[0] / v[1]) ** 2 / (6 * v[3] * (1 - v[3])) * 12 * v[3] / v[0]
+                        * st.metacentric_height)(*_upright(c_, p, "a")))
+computed("margin-3", "(b/a)^2/2 (tan^2 touch - tan^2 equilibrium) next to the a-vertical position (clipped)",
+         ("165-pre",), R3, _q3)
+computed("margin-165", "(a/b)^2/rho x the same (clipped)", ("165",), R3,
+         lambda c_, p: (_num(c_.params[a] / c_.params[b], p)) ** 2 / _num(rho_s.subs(s, c_.params[s]), p) * _q3(c_, p))
+
+
+# the double roots: GZ = 0 = dGZ/dphi in (phi, a), b = 1, by Newton's method on the clipped box
+def _gz_a(av, ph, sv, p):
+    M = _M(p)
+    return _gz(box(av, 1, 2, dps=_bd(p)), ph, sv, "c", M)
+
+
+def _dgz(av, ph, sv, p):
+    """dGZ/dphi by a sixth-order central difference."""
+    h = 1e-3 if p <= 15 else mpmath.mpf(10) ** -9
+    w3 = ((1, 45), (2, -9), (3, 1))
+    return sum(wk * (_gz_a(av, ph + k * h, sv, p) - _gz_a(av, ph - k * h, sv, p)) for k, wk in w3) / (60 * h)
+
+
+def _newton(av, ph, sv, p):
+    """Newton's method with the Jacobian (difference quotients) of the first step kept (chord method)."""
+    da = 1e-7 if p <= 15 else mpmath.mpf(10) ** -20
+    hh = 1e-4 if p <= 15 else mpmath.mpf(10) ** -12
+    jac = None
+    for _ in range(12):
+        r1, r2 = _gz_a(av, ph, sv, p), _dgz(av, ph, sv, p)
+        if jac is None or p <= 15:
+            j21 = (_gz_a(av, ph + hh, sv, p) - 2 * r1 + _gz_a(av, ph - hh, sv, p)) / hh ** 2
+            j12 = (_gz_a(av + da, ph, sv, p) - r1) / da
+            j22 = (_dgz(av + da, ph, sv, p) - r2) / da
+            jac = (r2, j12, j21, j22)
+        j11, j12, j21, j22 = jac
+        det = j11 * j22 - j12 * j21
+        dph, dav = (r1 * j22 - r2 * j12) / det, (j11 * r2 - j21 * r1) / det
+        ph, av = ph - dph, av - dav
+        if abs(dph) + abs(dav) < (1e-14 if p <= 15 else mpmath.mpf(10) ** (4 - p)):
+            break
+    return av, ph
+
+
+@functools.lru_cache(maxsize=None)
+def _double_root(tv, upper, p):
+    """(z, n) at the double root of the clipped righting arm: the minimum (upper, a > b) or the maximum (a < b).
+    Start: the a on a grid at which the interior extremum of GZ over the second region changes sign."""
+    sv = 1 - float(9 * (1 + 3 * tv) / 128)
+    best = None
+    grid = [1.02 + 0.04 * k for k in range(40)] if upper else [0.98 - 0.02 * k for k in range(30)]
+    prev = None
+    for av in grid:
+        body = box(av, 1, 2)
+        lo = _illinois(lambda q: _corner(body, q, sv, "C", math), 1e-3, 1.57, 1e-12)
+        hi = _illinois(lambda q: _corner(body, q, sv, "A", math), 1e-3, 1.57, 1e-12)
+        phs = [lo + (hi - lo) * (k + 0.5) / 60 for k in range(60)]
+        g = [_gz(body, q, sv, "c", math) for q in phs]
+        ext = [i for i in range(1, 59) if (g[i] < g[i - 1] and g[i] < g[i + 1]) == upper
+               and (g[i] > g[i - 1] and g[i] > g[i + 1]) != upper]
+        if not ext:
+            continue
+        i = ext[-1] if upper else ext[0]
+        if prev is not None and (prev[1] > 0) != (g[i] > 0):
+            best = (av, phs[i])
+            break
+        prev = (av, g[i])
+    av, ph = _newton(best[0], best[1], sv, 15)
+    if p > 15:
+        with mpmath.workdps(p + 8):
+            av, ph = _newton(mpmath.mpf(av), mpmath.mpf(ph), 1 - _num(9 * (1 + 3 * tv) / 128, p + 8), p)
+    M = _M(p)
+    sp_ = 1 - _num(9 * (1 + 3 * tv) / 128, p) if p > 15 else sv
+    return _leg(box(av, 1, 2, dps=_bd(p)), ph, sp_, 1, M), av ** 2
+
+
+DRC = (C("t = 1/2", t="1/2"), C("t = 2/3", t="2/3"))
+
+
+def _dr(c_, p):
+    tv = c_.params[t]
+    (zp, n1), (zm, n2) = _double_root(tv, True, p), _double_root(tv, False, p)
+    return zp, n1, zm, n2
+
+
+computed("double-root-plus", "x/b at the clipped double root (minimum of GZ, a > b)", ("158",), DRC, lambda c_, p: _dr(c_, p)[0])
+computed("double-roots", "x/b at the clipped double roots (minimum, a > b; maximum, a < b)",
+         ("157", "155", "155-pre"), DRC, lambda c_, p: (_dr(c_, p)[0], _dr(c_, p)[2]))
+computed("double-root-n", "(a/b)^2 at the clipped double roots and their product", ("153",), DRC,
+         lambda c_, p: (_dr(c_, p)[1], _dr(c_, p)[3], _dr(c_, p)[1] * _dr(c_, p)[3]))
+computed("double-root-n-156", "(a/b)^2 at the clipped double roots", ("156",), DRC, lambda c_, p: (_dr(c_, p)[1], _dr(c_, p)[3]))
+computed("double-root-n-156b", "n (1 + 3t)/(1 - t^2) at the clipped double roots", ("156-b",), DRC,
+         lambda c_, p: tuple(_dr(c_, p)[k] * _num((1 + 3 * c_.params[t]) / (1 - c_.params[t] ** 2), p) for k in (1, 3)))
+computed("double-root-S", "n + 1/n at the clipped double root", ("151", "152", "n-sum", "n-sum-t", "156-S"), DRC,
+         lambda c_, p: _dr(c_, p)[1] + 1 / _dr(c_, p)[1])
+computed("double-root-S-154", "S - 2, S + 2, S^2 - 4 with S = n + 1/n at the clipped double root", ("154",), DRC,
+         lambda c_, p: (lambda S_: (S_ - 2, S_ + 2, S_ ** 2 - 4))(_dr(c_, p)[1] + 1 / _dr(c_, p)[1]))
+computed("double-root-order", "z_+ - z_-, 4 z_+ - 3, 3 - 4 z_- at the clipped double roots", ("minimum",), DRC,
+         lambda c_, p: (_dr(c_, p)[0] - _dr(c_, p)[2], 4 * _dr(c_, p)[0] - 3, 3 - 4 * _dr(c_, p)[2]))
+computed("double-root-159", "1 - z_+ and 16 (1 - z_+) at the clipped double root", ("159",), DRC, lambda c_, p: 1 - _dr(c_, p)[0])
+computed("double-root-160", "16 (1 - z_+) at the clipped double root", ("160",), DRC, lambda c_, p: 16 * (1 - _dr(c_, p)[0]))
+
+
+# ==== the printed tables as a predictor ================================================================
+def _n1_printed(sv):
+    """n_1 by (147) and (156), upper sign (the form of (156) has no removable singularity at t = 0)."""
+    tt = (128 * (1 - sv) - 9) / 27
+    return 1 + (1 - tt) ** 3 / (2 * (1 + 3 * tt)) + (1 - tt * tt) / (2 * (1 + 3 * tt)) * math.sqrt((5 - tt) * (1 - tt))
+
+
+def _second_region(sv, nn):
+    """Stabilities about the axis, in the order of growing tilt, and the printed names, from (162), (162a)."""
+    sig = 1 - sv
+    r_ = 2 * sig * (4 * sv - 1)
+    if sv <= 23 / 32:
+        return (["stable"], ("162a", "143")) if nn < r_ else ([], ("162a", "144"))
+    lo, hi, big = nn < r_, nn > 1 / r_, nn > _n1_printed(sv)
+    table = {(True, True, True): ["stable"], (True, True, False): ["stable", "unstable", "stable"],
+             (False, False, False): ["unstable"], (False, True, False): ["unstable", "stable"],
+             (False, True, True): []}
+    return table.get((lo, hi, big), []), ("162", "161", "156")
+
+
+def _region2_roots(sv, nn, k):
+    """The k roots of the printed F (136) that the table speaks of: those in [2 sigma, 1], completed by the
+    positive roots nearest that interval if the count differs."""
+    sig = 1 - sv
+    rts = [r_.real for r_ in np.roots([1, -1.5, 0, 3 * nn * sig, -4 * nn * sig ** 2]) if abs(r_.imag) < 1e-9 and r_.real > 0]
+    dist = lambda r_: max(2 * sig - r_, r_ - 1, 0)  # noqa: E731
+    return sorted(sorted(rts, key=dist)[:k])
+
+
+def tables_prediction(s, ratio):
+    """What the printed tables of IX say for the section a x b (ratio = a/b; the larger edge is taken as a, the
+    text's a > b) at density s: one dict per equilibrium with the region (1, 2, 3), the tilt phi from the
+    position with b vertical (radians), the stability about the axis ('stable'/'unstable'), the printed names,
+    and for the second region the root z of F.  s < 1/2 is read with 1 - s (the text's rule)."""
+    ratio = max(ratio, 1 / ratio)
+    nn, sv = ratio * ratio, max(s, 1 - s)
+    ss = sv * (1 - sv)
+    r_ = 2 * (1 - sv) * (4 * sv - 1)
+    out = [dict(region=1, phi=0.0, stability="stable" if nn > 6 * ss else "unstable", printed=("132a", "table-first"))]
+    if 6 * ss > nn >= r_:
+        out.append(dict(region=1, phi=math.atan(math.sqrt(12 * ss / nn - 2)), stability="stable",
+                        printed=("125", "132b", "table-first")))
+    if sv > 0.5:
+        stab, names = _second_region(sv, nn)
+        for zr, st in zip(_region2_roots(sv, nn, len(stab)), stab):
+            out.append(dict(region=2, phi=math.atan(zr * zr / (2 * (1 - sv) * ratio)), stability=st,
+                            printed=names + ("136", "134"), z=zr))
+    if 1 / (6 * ss) < nn <= 1 / r_:
+        out.append(dict(region=3, phi=math.atan(1 / math.sqrt(12 * nn * ss - 2)), stability="stable",
+                        printed=("165", "166", "table-third")))
+    out.append(dict(region=3, phi=math.pi / 2, stability="stable" if 1 / nn > 6 * ss else "unstable",
+                    printed=("upright-3", "table-third")))
+    return out
+
+
+def _key(dims, up):
+    nrm = math.sqrt(sum(u_ * u_ for u_ in up))
+    return tuple(sorted((round(dims[k], 12), round(abs(up[k]) / nrm, 7)) for k in range(3)))
+
+
+def predict(scene):
+    """Equilibria with the axis of rotation along an edge of the box (up perpendicular to it) as the printed
+    tables give them: the three positions with a face down (123), and for each edge as axis the oblique
+    positions of the three regions.  Stability in every direction: upright by (123) with the smaller horizontal
+    edge; oblique in the first region by (126)/(127) (the edge along the axis longer than the horizontal edge
+    across it), in the third likewise with b, in the second by the table and (163) (HG < edge along the axis)."""
+    dims = [float(v) for v in scene.dims]
+    sv = float(scene.density)
+    preds, seen = [], set()
+
+    def add(up, stability, printed, note):
+        k = _key(dims, up)
+        if k not in seen:
+            seen.add(k)
+            preds.append(Prediction(printed=printed, up=tuple(up), stability=stability, note=note))
+
+    for k in range(3):
+        hor = min(dims[j] for j in range(3) if j != k)
+        up = tuple(1.0 if j == k else 0.0 for j in range(3))
+        add(up, "stable" if (hor / dims[k]) ** 2 > 6 * sv * (1 - sv) else "unstable", ("123", "132a"),
+            "face down, (123)")
+    for ax in range(3):
+        i, j = [k for k in range(3) if k != ax]
+        if dims[i] < dims[j]:
+            i, j = j, i                      # dims[i] is the text's a (larger), dims[j] its b
+        L, A_, B_ = dims[ax], dims[i], dims[j]
+        for eq in tables_prediction(sv, A_ / B_):
+            if eq["region"] != 2 and eq["phi"] in (0.0, math.pi / 2):
+                continue
+            up = [0.0, 0.0, 0.0]
+            up[j], up[i] = math.cos(eq["phi"]), math.sin(eq["phi"])
+            across = A_ if eq["region"] == 1 else B_
+            if eq["region"] == 2:
+                if eq["stability"] == "stable":
+                    sig = 1 - max(sv, 1 - sv)
+                    hg2 = B_ * B_ * (eq["z"] ** 2 + 4 * (A_ / B_) ** 2 * sig * sig / eq["z"] ** 2)
+                    st = "stable" if L * L > hg2 else "unstable"
+                    names = eq["printed"] + ("163",)
+                else:
+                    st, names = "unstable", eq["printed"]
+            else:
+                st = None if L == across else ("stable" if L > across else "unstable")
+                names = eq["printed"] + ("127",)
+            add(up, st, names, f"axis along edge {ax}, region {eq['region']}")
+    return preds
+
+
+d.predicts(("box", "cube"), predict)
