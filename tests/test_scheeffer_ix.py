@@ -246,7 +246,7 @@ def test_third_region_oblique_needs_s_above_three_quarters():
             assert not any(e["region"] == 3 and e["phi"] < math.pi / 2 for r in ratios
                            for e in M.tables_prediction(s, r)), s
         else:
-            r = math.sqrt((1 / (6 * ss) + 1 / rho) / 2)         # inside the window of (165), and >= 1
+            r = math.sqrt((max(1, 1 / (6 * ss)) + 1 / rho) / 2)  # inside the window of (165), and >= 1
             assert r >= 1 and any(e["region"] == 3 and e["phi"] < math.pi / 2 for e in M.tables_prediction(s, r)), s
 
 
