@@ -167,8 +167,9 @@ def main(argv=None) -> int:
             progress = None if args.quiet else (lambda d: print(f"executing notebook {d}", file=sys.stderr))
             written = write_notebooks([r.id for r in reports], "notebooks", progress)
             if any(r.id == "scheeffer-ix" for r in reports):
-                from .report.ix_grid import grid_markdown, grid_rows
-                grid = grid_rows(progress=None if args.quiet else (lambda m: print(f"IX grid {m}", file=sys.stderr)))
+                from .report.ix_grid import boundary_cells, grid_markdown, grid_rows
+                grid = grid_rows(progress=None if args.quiet else (lambda m: print(f"IX grid {m}", file=sys.stderr)),
+                                 extra=boundary_cells())
                 write_if_changed(DOCS / "scheeffer-ix-grid.md", grid_markdown(grid))
             print(_summary_by_source(reports))
             print(f"wrote docs/verification.json, docs/errata.json, docs/errata.md, docs/scheeffer-ix-grid.md; "

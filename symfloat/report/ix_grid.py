@@ -31,40 +31,64 @@ def _solver_positions(s, ratio):
     return [(math.atan2(abs(e.up[0]), abs(e.up[1])), e.stability) for e in sol.equilibria]
 
 
-def grid_rows(densities=DENSITIES, ratios=RATIOS, progress=None) -> list[dict]:
-    """One row per cell: the table's and the solver's equilibria and the differences."""
+def boundary_cells(densities=DENSITIES[::2], margin=Fraction(1, 1000)) -> list[tuple[Fraction, Fraction]]:
+    """Cells just inside and just outside every boundary of the tables, at each density: the
+    curves n = (a/b)^2 = 6 s(1-s), 1/(6 s(1-s)), 2(1-s)(4s-1), its inverse, and n_1(s) of (156)
+    as printed, each where it lies above n = 1 (a/b = sqrt(n), rounded to 6 digits)."""
     _, module = load("scheeffer-ix")
+    cells = []
+    for s in densities:
+        sv = max(s, 1 - s)
+        ss, r_ = sv * (1 - sv), 2 * (1 - sv) * (4 * sv - 1)
+        curves = [6 * ss, 1 / (6 * ss)] + ([r_, 1 / r_] if r_ > 0 else [])
+        if sv > Fraction(23, 32):
+            curves.append(Fraction(module._n1_printed(float(sv))).limit_denominator(10 ** 12))
+        for n in curves:
+            for side in (1 - margin, 1 + margin):
+                if n * side > 1:
+                    ratio = Fraction(round((float(n * side)) ** 0.5, 6)).limit_denominator(10 ** 6)
+                    cells.append((s, ratio))
+    return sorted(set(cells))
+
+
+def grid_rows(densities=DENSITIES, ratios=RATIOS, progress=None, extra=()) -> list[dict]:
+    """One row per cell of the grid (and per *extra* cell ``(s, a/b)``): the table's and the
+    solver's equilibria and the differences."""
+    _, module = load("scheeffer-ix")
+    cells = [(s, r) for r in ratios for s in densities] + list(extra)
     rows = []
-    for i, ratio in enumerate(ratios, 1):
-        if progress:
-            progress(f"[{i}/{len(ratios)}] a/b = {float(ratio)}")
-        for s in densities:
-            t0 = time.perf_counter()
-            solver = _solver_positions(s, ratio)
-            table = [(p["phi"], p["stability"], p["region"], p["printed"])
-                     for p in module.tables_prediction(float(s), float(ratio))]
-            missing, wrong, unpredicted = [], [], list(solver)
-            for phi, stab, region, printed in table:
-                near = [q for q in unpredicted if abs(q[0] - phi) <= MATCH_RAD]
-                if not near:
-                    missing.append({"region": region, "tilt_deg": math.degrees(phi), "stability": stab,
-                                    "printed": list(printed)})
-                    continue
-                unpredicted.remove(near[0])
-                if near[0][1] != stab:
-                    wrong.append({"region": region, "tilt_deg": math.degrees(phi), "table": stab,
-                                  "solver": near[0][1], "printed": list(printed)})
-            rows.append({"s": float(s), "s_exact": str(s), "ratio": float(ratio), "table": len(table),
-                         "solver": len(solver), "missing": missing, "wrong_stability": wrong,
-                         "unpredicted": [{"tilt_deg": math.degrees(q[0]), "stability": q[1]} for q in unpredicted],
-                         "seconds": time.perf_counter() - t0})
+    for i, (s, ratio) in enumerate(cells, 1):
+        if progress and i % 50 == 0:
+            progress(f"[{i}/{len(cells)}]")
+        t0 = time.perf_counter()
+        solver = _solver_positions(s, ratio)
+        table = [(p["phi"], p["stability"], p["region"], p["printed"])
+                 for p in module.tables_prediction(float(s), float(ratio))]
+        missing, wrong, unpredicted = [], [], list(solver)
+        for phi, stab, region, printed in table:
+            near = [q for q in unpredicted if abs(q[0] - phi) <= MATCH_RAD]
+            if not near:
+                missing.append({"region": region, "tilt_deg": math.degrees(phi), "stability": stab,
+                                "printed": list(printed)})
+                continue
+            unpredicted.remove(near[0])
+            if near[0][1] != stab:
+                wrong.append({"region": region, "tilt_deg": math.degrees(phi), "table": stab,
+                              "solver": near[0][1], "printed": list(printed)})
+        rows.append({"s": float(s), "s_exact": str(s), "ratio": float(ratio), "ratio_exact": str(ratio),
+                     "boundary": (s, ratio) in extra, "table": len(table),
+                     "solver": len(solver), "missing": missing, "wrong_stability": wrong,
+                     "unpredicted": [{"tilt_deg": math.degrees(q[0]), "stability": q[1]} for q in unpredicted],
+                     "seconds": time.perf_counter() - t0})
     return rows
 
 
 def grid_markdown(rows) -> str:
     bad = [r for r in rows if r["missing"] or r["wrong_stability"] or r["unpredicted"]]
-    ratios = sorted({r["ratio"] for r in rows})
-    densities = sorted({r["s"] for r in rows})
+    boundary = [r for r in rows if r["boundary"]]
+    rows_grid = [r for r in rows if not r["boundary"]]
+    ratios = sorted({r["ratio"] for r in rows_grid})
+    densities = sorted({r["s"] for r in rows_grid})
     lines = ["# Scheeffer IX: the printed case tables against the solver", "",
              "Generated by `symfloat run`. The box turned about an edge is the 2-D problem of its "
              "cross-section a × b (a/b ≥ 1). For each cell the equilibria of the printed tables (131)–(132b), "
@@ -73,14 +97,16 @@ def grid_markdown(rows) -> str:
              f"vertical within {MATCH_RAD:g} rad, same stability).", "",
              f"Grid: {len(densities)} densities s from {densities[0]:g} to {densities[-1]:g} in steps of "
              f"{densities[1] - densities[0]:g} × a/b ∈ "
-             f"{{{', '.join(f'{x:g}' for x in ratios)}}} — {len(rows)} cells; "
-             f"{len(rows) - len(bad)} agree, {len(bad)} disagree.", ""]
+             f"{{{', '.join(f'{x:g}' for x in ratios)}}} — {len(rows_grid)} cells; plus {len(boundary)} cells "
+             "a relative 1e-3 in n = (a/b)² inside and outside every boundary curve of the tables (n = 6s(1−s), "
+             "1/(6s(1−s)), 2(1−s)(4s−1) and its inverse, n₁(s) of (156)) at every other density. "
+             f"Of all {len(rows)} cells {len(rows) - len(bad)} agree, {len(bad)} disagree.", ""]
     lines.append("| a/b | " + " | ".join(f"{s:.3f}" for s in densities[::4]) + " |")
     lines.append("|---|" + "---|" * len(densities[::4]))
     for ratio in ratios:
         marks = []
         for s in densities[::4]:
-            r = next(r for r in rows if r["ratio"] == ratio and r["s"] == s)
+            r = next(r for r in rows_grid if r["ratio"] == ratio and r["s"] == s)
             marks.append("✓" if not (r["missing"] or r["wrong_stability"] or r["unpredicted"]) else "✗")
         lines.append(f"| {ratio:g} | " + " | ".join(marks) + " |")
     lines += ["", "(every fourth density shown above; every cell is listed below when it disagrees)", ""]
@@ -95,5 +121,5 @@ def grid_markdown(rows) -> str:
                      f"({', '.join(w['printed'])})" for w in r["wrong_stability"]]
             what += [f"solver's {u['stability']} position at {u['tilt_deg']:.4f}° is not in the tables"
                      for u in r["unpredicted"]]
-            lines.append(f"| {r['s_exact']} | {r['ratio']:g} | {r['table']} | {r['solver']} | {'; '.join(what)} |")
+            lines.append(f"| {r['s_exact']} | {r['ratio_exact']} | {r['table']} | {r['solver']} | {'; '.join(what)} |")
     return "\n".join(lines) + "\n"
