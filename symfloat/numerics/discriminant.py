@@ -8,20 +8,22 @@ lose digits at t -> 1 (s -> 23/32: 1 - t, S - 2, S^2 - 4 vanish, n_1 -> 1 and (1
 (s -> 1: 1 + 3t vanishes, S and n_1 blow up, n_2, z_2 and the margin of (160) vanish) and at t -> 0
 (s -> 119/128: (151) is 0/0 through its factor 1/t).
 
-The stable forms compute the factors directly from s (exactly in float64 near the singular points, by
-Sterbenz's lemma):  1 - t = 4(32 s - 23)/27,  1 + 3t = 128(1 - s)/9,  1 + t = 2(73 - 64 s)/27,
-5 - t = 16(1 + 8 s)/27, and remove every cancelling difference algebraically:
+The stable forms compute the factors directly from s, each with a single rounding (for 1/2 < s < 1 the products
+by powers of two and the subtractions 1 - s, 32 s - 23, 73 - 64 s are exact, the last two by Sterbenz's lemma):
+  1 - t = 4(32 s - 23)/27,  1 + 3t = 128(1 - s)/9,  1 + t = 2(73 - 64 s)/27,  5 - t = 16(1 + 8 s)/27,
+and remove every cancelling difference algebraically:
   S = (3 + 3t + 3t^2 - t^3)/(1 + 3t)                 ((151) with the factor t cancelled),
   n_1 = 1 + (1-t)^3/(2(1+3t)) + (1-t)(1+t) sqrt((5-t)(1-t))/(2(1+3t))   ((156), all terms positive),
   n_2 = 1/n_1                                         ((153): n_1 n_2 = 1),
+  z_1 = (3/16){3 + t + sqrt((5-t)(1-t))}              ((158), also for the 0/0 form (155)),
   z_2 = (3/4)(1 + 3t)/(3 + t + sqrt((5-t)(1-t)))     ((157) lower sign; (3+t)^2 - (5-t)(1-t) = 4(1+3t)),
   7 - 3t - 3 sqrt((5-t)(1-t)) = 4(1 + 3t)/(7 - 3t + 3 sqrt((5-t)(1-t)))   ((160); (7-3t)^2 - 9(5-t)(1-t) = 4(1+3t)).
 No series expansion is needed: after these rewritings no 0/0 is left.
 
 Every form is written once, generically in s and a square root, so the same code gives the float64 value
-(s float, math.sqrt) and the exact value (s a SymPy Rational, sp.sqrt); the reference is the printed form at the
-exact value of the float s, evaluated by SymPy's evalf to 50 significant digits (adaptive precision, so the
-cancellation of the printed form does not reach the reference).
+(s float, math.sqrt) and the exact value.  The reference is the printed form at the exact value of the float s:
+exact rational arithmetic (SymPy Rational) up to the square root, binary floats of 100 and of 150 digits from
+there on, the two agreeing to 50 digits (so the cancellation of the printed form does not reach the reference).
 """
 from __future__ import annotations
 
@@ -189,7 +191,8 @@ def sweep_points() -> list[tuple[str, float, float]]:
     for name, centre, sides in (("s -> 23/32", S_THRESHOLD, (1, -1)), ("s -> 1", sp.Integer(1), (-1,)),
                                 ("s -> 119/128", S_T_ZERO, (1, -1))):
         for side in sides:
-            pts += [(name, float(centre) + side * d, side * d) for d in DISTANCES if 0.5 < float(centre) + side * d < 1]
+            pts += [(name, float(centre) + side * d, side * d) for d in DISTANCES
+                    if 0.5 < float(centre) + side * d < 1]
     return pts
 
 
@@ -244,7 +247,8 @@ def table_markdown(rows: list[Row] | None = None) -> str:
     for r in worst_rows(rows).values():
         lines.append(_md_row(r))
     lines += ["", f"Max relative error of the stable forms over the sweep: {max(r.stable_error for r in rows):.2e}.",
-              f"Digits lost = log10(error / 2^-53); more than {CATASTROPHIC_DIGITS:g} is flagged **catastrophic**.",
+              f"Digits lost = log10(error / 2^-53); more than {CATASTROPHIC_DIGITS:g} is flagged **catastrophic**; "
+              "an error inf means the float64 radicand S^2 - 4 rounded negative (no real value, all digits lost).",
               "", "| form | locator | point | s | s - point | printed rel. error | stable rel. error | digits lost |",
               "|---|---|---|---|---|---|---|---|"]
     lines += [_md_row(r) for r in rows]
