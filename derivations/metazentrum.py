@@ -20,6 +20,7 @@ import sympy as sp
 
 from symfloat import Derivation, Erratum, Prediction
 from symfloat.engine.witness import Case, Computed, Precision
+from symfloat.model.prediction import box_uprights
 from symfloat.geometry.floating import clip_below, floating_state, right_prism, volume_centroid
 
 a, b, c, d = sp.symbols("a b c d", positive=True)
@@ -233,13 +234,8 @@ def predict(scene):
         return []
     sv = Fraction(scene.density)
     dims = [Fraction(x_) for x_ in scene.dims]
-    out, seen = [], set()
-    for k in range(3):
-        i, j = [m_ for m_ in range(3) if m_ != k]
-        key = (dims[k], tuple(sorted((dims[i], dims[j]))))
-        if key in seen:
-            continue
-        seen.add(key)
+    out = []
+    for k, i, j in box_uprights(dims):
         bv, cv = min(dims[i], dims[j]) / 2, dims[k] / 2
         ev = bv ** 2 / (6 * cv ** 2) - sv * (1 - sv)
         up = [0.0] * 3

@@ -37,6 +37,7 @@ import sympy as sp
 
 from symfloat import Derivation, Erratum, Prediction
 from symfloat.engine.witness import Case, Computed
+from symfloat.model.prediction import box_uprights
 from symfloat.geometry.floating import floating_state, right_prism, submerged
 
 # ---- symbols -------------------------------------------------------------------------------------------------
@@ -925,13 +926,8 @@ def _isotropic_ring(F_, T_, h_, sv, um2_min, um2_max, up_of):
 def _box_predictions(dims, sv):
     """A box is a right prism over a rectangle in three ways: each edge direction e_k vertical in turn (one per
     class of equal shape), the base the rectangle of the other two edges."""
-    out, seen = [], set()
-    for k in range(3):
-        i, j = [m_ for m_ in range(3) if m_ != k]
-        key = (dims[k], tuple(sorted((dims[i], dims[j]))))
-        if key in seen:
-            continue
-        seen.add(key)
+    out = []
+    for k, i, j in box_uprights(dims):
         p_, q_, h_ = dims[i], dims[j], dims[k]
         F_, V_, e_ = p_ * q_, p_ * q_ * h_ * sv, h_ * (1 - sv) / 2
         Ti, Tj = p_ * q_ ** 3 / 12, q_ * p_ ** 3 / 12     # about the axes along e_i and e_j

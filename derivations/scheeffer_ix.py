@@ -48,6 +48,7 @@ import numpy as np
 import sympy as sp
 
 from symfloat import Derivation, Erratum
+from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state
 from symfloat.model.prediction import Prediction
@@ -696,53 +697,9 @@ def _corner(body, ph, sv, which, M):
     return _dot(st.u, q) - st.t
 
 
-def _illinois(f, lo, hi, eps):
-    flo, fhi = f(lo), f(hi)
-    if flo == 0:
-        return lo
-    if fhi == 0:
-        return hi
-    if (flo > 0) == (fhi > 0):
-        raise ValueError("no sign change in the bracket")
-    side, c_old, c_ = 0, None, lo
-    for _ in range(400):
-        c_ = (lo * fhi - hi * flo) / (fhi - flo)
-        fc = f(c_)
-        if fc == 0:
-            return c_
-        if (fc > 0) == (fhi > 0):
-            hi, fhi = c_, fc
-            if side == -1:
-                flo /= 2
-            side = -1
-        else:
-            lo, flo = c_, fc
-            if side == 1:
-                fhi /= 2
-            side = 1
-        if c_old is not None and abs(c_ - c_old) <= eps * (1 + abs(c_)):
-            return c_
-        c_old = c_
-    return c_
-
-
 def _root(make_f, grid, p, last=False):
-    """First (or last) sign change of f on the float grid, refined in float64 and, for p > 15, at p digits in a
-    narrow bracket around the float root.  make_f(q) builds f at precision q."""
-    ff = make_f(15)
-    vals = [ff(g) for g in grid]
-    idx = [i for i in range(len(grid) - 1) if (vals[i] > 0) != (vals[i + 1] > 0)]
-    i = idx[-1] if last else idx[0]
-    x0 = _illinois(ff, grid[i], grid[i + 1], 1e-15)
-    if p <= 15:
-        return x0
-    fm = make_f(p)
-    with mpmath.workdps(p + 8):
-        dlt = mpmath.mpf("1e-9") * (1 + abs(x0))
-        lo, hi = mpmath.mpf(x0) - dlt, mpmath.mpf(x0) + dlt
-        if (fm(lo) > 0) == (fm(hi) > 0):
-            lo, hi = mpmath.mpf(grid[i]), mpmath.mpf(grid[i + 1])
-        return _illinois(fm, lo, hi, mpmath.mpf(10) ** (-p - 4))
+    """First (or last) root of f on the float grid (:func:`symfloat.engine.roots.grid_roots`)."""
+    return grid_roots(make_f, grid, p, only="last" if last else "first")[0]
 
 
 PHI = [0.004 + 0.025 * k for k in range(63)]      # (0, pi/2)
@@ -1089,8 +1046,8 @@ def _double_root(tv, upper, p):
     prev = None
     for av in grid:
         body = box(av, 1, 2)
-        lo = _illinois(lambda q: _corner(body, q, sv, "C", math), 1e-3, 1.57, 1e-12)
-        hi = _illinois(lambda q: _corner(body, q, sv, "A", math), 1e-3, 1.57, 1e-12)
+        lo = illinois(lambda q: _corner(body, q, sv, "C", math), 1e-3, 1.57, 1e-12)
+        hi = illinois(lambda q: _corner(body, q, sv, "A", math), 1e-3, 1.57, 1e-12)
         phs = [lo + (hi - lo) * (k + 0.5) / 60 for k in range(60)]
         g = [_gz(body, q, sv, "c", math) for q in phs]
         ext = [i for i in range(1, 59) if (g[i] < g[i - 1] and g[i] < g[i + 1]) == upper

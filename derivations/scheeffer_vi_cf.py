@@ -33,6 +33,7 @@ import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Erratum, Prediction
+from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state, right_prism
 
@@ -687,52 +688,9 @@ def _clearance(body, ph, w, sv, M):
     return -max(_dot(u, p) - st.t for p in body.vertices if p[2] < 0)
 
 
-def _illinois(f, lo, hi, eps):
-    flo, fhi = f(lo), f(hi)
-    if flo == 0:
-        return lo
-    if fhi == 0:
-        return hi
-    if (flo > 0) == (fhi > 0):
-        raise ValueError("no sign change in the bracket")
-    side, c_old, c = 0, None, lo
-    for _ in range(400):
-        c = (lo * fhi - hi * flo) / (fhi - flo)
-        fc = f(c)
-        if fc == 0:
-            return c
-        if (fc > 0) == (fhi > 0):
-            hi, fhi = c, fc
-            if side == -1:
-                flo /= 2
-            side = -1
-        else:
-            lo, flo = c, fc
-            if side == 1:
-                fhi /= 2
-            side = 1
-        if c_old is not None and abs(c - c_old) <= eps * (1 + abs(c)):
-            return c
-        c_old = c
-    return c
-
-
 def _root(make_f, grid, dps):
-    """First sign change of f on the float grid, refined in float64 and then, for dps > 15, by Illinois at dps
-    digits in a narrow bracket around the float root.  make_f(dps) builds f at that precision."""
-    ff = make_f(15)
-    vals = [ff(g) for g in grid]
-    i = next(i for i in range(len(grid) - 1) if (vals[i] > 0) != (vals[i + 1] > 0))
-    x0 = _illinois(ff, grid[i], grid[i + 1], 1e-15)
-    if dps <= 15:
-        return x0
-    fm = make_f(dps)
-    with mpmath.workdps(dps + 8):
-        dlt = mpmath.mpf("1e-9") * (1 + abs(x0))
-        lo, hi = mpmath.mpf(x0) - dlt, mpmath.mpf(x0) + dlt
-        if (fm(lo) > 0) == (fm(hi) > 0):
-            lo, hi = mpmath.mpf(grid[i]), mpmath.mpf(grid[i + 1])
-        return _illinois(fm, lo, hi, mpmath.mpf(10) ** (-dps - 4))
+    """First root of f on the float grid (:func:`symfloat.engine.roots.grid_roots`)."""
+    return grid_roots(make_f, grid, dps, only="first")[0]
 
 
 PHI_GRID = [0.005 + 0.025 * k for k in range(62)]
@@ -909,7 +867,7 @@ def _touch_mp(body, sv, w, q):
     f = lambda ph: _clearance(body, ph, ww, sv, M)  # noqa: E731
     x0 = _phit(sp.Integer(1), sp.Integer(1), sp.Rational(str(float(sv))), w, 15)
     dlt = mpmath.mpf("1e-6")
-    return _illinois(f, mpmath.mpf(x0) - dlt, mpmath.mpf(x0) + dlt, mpmath.mpf(10) ** (-q - 4))
+    return illinois(f, mpmath.mpf(x0) - dlt, mpmath.mpf(x0) + dlt, mpmath.mpf(10) ** (-q - 4))
 
 
 ONE = (Case({}, label="unit cube"),)

@@ -42,6 +42,7 @@ import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Erratum
+from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state, right_prism, submerged
 from symfloat.model.prediction import Prediction
@@ -571,47 +572,9 @@ def _leg(body, th, sv, M):
     return 1 / (2 + 0 * Xc) - Xc
 
 
-def _illinois(f, lo, hi, eps):
-    flo, fhi = f(lo), f(hi)
-    side, c_old = 0, None
-    for _ in range(200):
-        c = (lo * fhi - hi * flo) / (fhi - flo)
-        fc = f(c)
-        if fc == 0:
-            return c
-        if (fc > 0) == (fhi > 0):
-            hi, fhi = c, fc
-            if side == -1:
-                flo /= 2
-            side = -1
-        else:
-            lo, flo = c, fc
-            if side == 1:
-                fhi /= 2
-            side = 1
-        if c_old is not None and abs(c - c_old) <= eps * (1 + abs(c)):
-            return c
-        c_old = c
-    return c
-
-
 def _roots(make, grid, dps):
     """Every sign change of f on the float grid, refined in float64 and then (dps > 15) at dps digits."""
-    ff = make(15)
-    vals = [ff(g) for g in grid]
-    out = []
-    for i in range(len(grid) - 1):
-        if (vals[i] > 0) != (vals[i + 1] > 0):
-            x0 = _illinois(ff, grid[i], grid[i + 1], 1e-15)
-            if dps > 15:
-                fm = make(dps)
-                dl = mpmath.mpf("1e-9")
-                lo, hi = mpmath.mpf(x0) - dl, mpmath.mpf(x0) + dl
-                if (fm(lo) > 0) == (fm(hi) > 0):
-                    lo, hi = mpmath.mpf(grid[i]), mpmath.mpf(grid[i + 1])
-                x0 = _illinois(fm, lo, hi, mpmath.mpf(10) ** (-dps - 4))
-            out.append(x0)
-    return out
+    return grid_roots(make, grid, dps)
 
 
 TH_GRID = [0.02 * j for j in range(1, 48)]       # up to the diagonal direction atan(sqrt 2) = 0.9553
@@ -763,7 +726,7 @@ def _roots_171_float(q):
     out = []
     for i in range(len(grid) - 1):
         if (vals[i] > 0) != (vals[i + 1] > 0):
-            out.append(_illinois(f, grid[i], grid[i + 1], 1e-12))
+            out.append(illinois(f, grid[i], grid[i + 1], 1e-12))
     return out
 
 

@@ -20,7 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from fractions import Fraction
 
-__all__ = ["BODIES", "STABILITIES", "FAMILIES", "Scene", "Prediction", "Predictor"]
+__all__ = ["BODIES", "STABILITIES", "FAMILIES", "Scene", "Prediction", "Predictor", "box_uprights"]
 
 BODIES = ("cube", "box", "prism", "cylinder", "section")
 STABILITIES = ("stable", "unstable", "indifferent")
@@ -78,3 +78,15 @@ class Predictor:
         unknown = [b for b in self.bodies if b not in BODIES]
         if unknown:
             raise ValueError(f"unknown bodies {unknown}; known: {BODIES}")
+
+
+def box_uprights(dims):
+    """The upright positions of a box, one per class of equal shape: ``(k, i, j)`` with edge ``k``
+    vertical and the base spanned by edges ``i < j``."""
+    seen = set()
+    for k in range(3):
+        i, j = [m for m in range(3) if m != k]
+        key = (dims[k], tuple(sorted((dims[i], dims[j]))))
+        if key not in seen:
+            seen.add(key)
+            yield k, i, j

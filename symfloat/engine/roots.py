@@ -1,0 +1,69 @@
+"""Bracketed roots for first-principles witnesses: the Illinois method in any arithmetic.
+
+Witnesses find tilts and densities where a measured quantity (a righting arm, a
+clearance) changes sign.  :func:`illinois` refines one bracket; :func:`grid_roots`
+finds every sign change on a float grid, refines it in float64 and, for
+``dps > 15``, again at ``dps`` digits in a narrow bracket around the float root
+(``make_f(dps)`` builds the function at that precision).
+"""
+from __future__ import annotations
+
+import mpmath
+
+__all__ = ["illinois", "grid_roots"]
+
+
+def illinois(f, lo, hi, eps):
+    """A root of *f* in ``[lo, hi]`` (a sign change required), to relative tolerance *eps*:
+    regula falsi with the Illinois halving of the stale end."""
+    flo, fhi = f(lo), f(hi)
+    if flo == 0:
+        return lo
+    if fhi == 0:
+        return hi
+    if (flo > 0) == (fhi > 0):
+        raise ValueError("no sign change in the bracket")
+    side, c_old, c = 0, None, lo
+    for _ in range(400):
+        c = (lo * fhi - hi * flo) / (fhi - flo)
+        fc = f(c)
+        if fc == 0:
+            return c
+        if (fc > 0) == (fhi > 0):
+            hi, fhi = c, fc
+            if side == -1:
+                flo /= 2
+            side = -1
+        else:
+            lo, flo = c, fc
+            if side == 1:
+                fhi /= 2
+            side = 1
+        if c_old is not None and abs(c - c_old) <= eps * (1 + abs(c)):
+            return c
+        c_old = c
+    return c
+
+
+def grid_roots(make_f, grid, dps, only=None) -> list:
+    """Every sign change of ``make_f(15)`` on *grid* (``only="first"`` or ``"last"``: just that
+    one), refined in float64 and, for ``dps > 15``, at *dps* digits (in a bracket of 1e-9 around
+    the float root, or the grid cell)."""
+    ff = make_f(15)
+    values = [ff(g) for g in grid]
+    cells = [i for i in range(len(grid) - 1) if (values[i] > 0) != (values[i + 1] > 0)]
+    if only is not None:
+        cells = cells[:1] if only == "first" else cells[-1:]
+    out = []
+    for i in cells:
+        x0 = illinois(ff, grid[i], grid[i + 1], 1e-15)
+        if dps > 15:
+            fm = make_f(dps)
+            with mpmath.workdps(dps + 8):
+                delta = mpmath.mpf("1e-9") * (1 + abs(x0))
+                lo, hi = mpmath.mpf(x0) - delta, mpmath.mpf(x0) + delta
+                if (fm(lo) > 0) == (fm(hi) > 0):
+                    lo, hi = mpmath.mpf(grid[i]), mpmath.mpf(grid[i + 1])
+                x0 = illinois(fm, lo, hi, mpmath.mpf(10) ** (-dps - 4))
+        out.append(x0)
+    return out
