@@ -4,6 +4,7 @@
     symfloat errata [--format md|json] [--output FILE]
     symfloat notebooks [SELECTOR] [--output DIR]
     symfloat run
+    symfloat bench [--quick] [--output DIR]
 
 Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET=1``) silences it.
 Exit status: 0 when every check behaves as declared, 1 when a check fails
@@ -46,6 +47,9 @@ def _parser():
     n.add_argument("selector", nargs="?")
     n.add_argument("--output", type=Path, default=Path("notebooks"))
     sub.add_parser("run", parents=[common], help="verify everything and write every report and notebook")
+    b = sub.add_parser("bench", parents=[common], help="numerics benchmark: write docs/numerics.md and its figures")
+    b.add_argument("--quick", action="store_true", help="a few derivations and methods (for tests)")
+    b.add_argument("--output", type=Path, default=DOCS, help="directory for numerics.md and figures/")
     return p
 
 
@@ -92,6 +96,13 @@ def main(argv=None) -> int:
             progress = None if args.quiet else (lambda d: print(f"executing notebook {d}", file=sys.stderr))
             written = write_notebooks(ids, args.output, progress)
             print(f"{len(written)} of {len(ids)} notebooks changed in {args.output}", file=sys.stderr)
+            reports = []
+        elif args.command == "bench":
+            from .numerics import generate
+            quiet = args.quiet or os.environ.get("SYMFLOAT_QUIET") == "1"
+            written = generate(args.output, quick=args.quick,
+                               progress=lambda msg: quiet or print(msg, file=sys.stderr, flush=True))
+            print(f"{len(written)} numerics files changed in {args.output}", file=sys.stderr)
             reports = []
         else:  # run
             reports = _reports(args)

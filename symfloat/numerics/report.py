@@ -1,0 +1,145 @@
+"""docs/numerics.md and its figures from the benchmark, the orders and the stiff cases.
+
+Times are printed as ``12.3 ms`` / ``1.2 s`` so that :func:`~symfloat.report.files.write_if_changed`
+ignores them; a figure is rewritten only when its fingerprint (everything it shows except timings,
+stored in the PNG's text chunk) changed.
+"""
+from __future__ import annotations
+
+import hashlib
+import io
+import math
+import statistics
+from collections import defaultdict
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from PIL import Image  # noqa: E402
+
+__all__ = ["pareto", "method_rows", "cheapest", "family_figure", "write_png_if_changed", "fmt_time",
+           "fmt_err", "FLOOR"]
+
+FLOOR = 1e-110   # exact results are plotted here
+THRESHOLDS = (1e-12, 1e-30)
+
+
+def fmt_time(seconds: float) -> str:
+    """``0.25 ms`` or ``1.20 s`` (the timing forms write_if_changed ignores)."""
+    return f"{seconds * 1e3:.2f} ms" if seconds < 1 else f"{seconds:.2f} s"
+
+
+def fmt_err(e) -> str:
+    if e is None:
+        return "failed"
+    return "0" if e == 0 else f"{e:.1e}"
+
+
+def pareto(points):
+    """Indices of the non-dominated ``(time, error)`` points (no other point is
+    at least as fast and at least as accurate, and better in one), by time."""
+    order = sorted(range(len(points)), key=lambda i: (points[i][0], points[i][1]))
+    front, best = [], math.inf
+    for i in order:
+        if points[i][1] < best:
+            front.append(i)
+            best = points[i][1]
+    return front
+
+
+def _worst(m):
+    errs = list(m.errors.values())
+    return None if any(e is None for e in errs) else max(errs)
+
+
+def method_rows(measurements):
+    """Per method, in first-seen order: (method, witnesses, worst error, median error, median time)."""
+    by = defaultdict(list)
+    for m in measurements:
+        by[m.method].append(m)
+    rows = []
+    for method, ms in by.items():
+        errs = [e for m in ms for e in m.errors.values()]
+        ok = [e for e in errs if e is not None]
+        worst = None if len(ok) < len(errs) else max(ok)
+        rows.append((method, len(ms), worst, statistics.median(ok) if ok else None,
+                     statistics.median(m.seconds for m in ms)))
+    return rows
+
+
+def cheapest(bench, threshold):
+    """Formula -> (method, witness, seconds, error) of the fastest measurement within *threshold*, or None."""
+    best = {}
+    for m in bench.measurements:
+        for name, e in m.errors.items():
+            key = f"{m.derivation}/{name}"
+            best.setdefault(key, None)
+            if e is not None and e <= threshold and (best[key] is None or m.seconds < best[key][2]):
+                best[key] = (m.method, m.witness, m.seconds, e)
+    return best
+
+
+def kind(method: str) -> str:
+    """The family of a method name, for colours and legends."""
+    for key in ("tanh-sinh", "Gauss-Legendre (mpmath)", "Gauss-Legendre n=", "Simpson", "trapezoid",
+                "exact hull", "slices"):
+        if method.startswith(key):
+            return key.rstrip("=").replace(" n", " float64")
+    return "own computation"
+
+
+def fingerprint(*parts) -> str:
+    return hashlib.sha256(repr(parts).encode()).hexdigest()[:16]
+
+
+def write_png_if_changed(path, fig, fp: str) -> bool:
+    """Save *fig* to *path* unless the PNG there carries the same fingerprint."""
+    path = Path(path)
+    try:
+        if Image.open(path).text.get("Fingerprint") == fp:
+            plt.close(fig)
+            return False
+    except (OSError, AttributeError):
+        pass
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=110, metadata={"Software": None, "Fingerprint": fp})
+    plt.close(fig)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_bytes(buf.getvalue())
+    return True
+
+
+def family_figure(family, measurements):
+    """Error against time for one witness family: faint points per witness and
+    method, large markers per method (median time, worst error), Pareto front."""
+    fig, ax = plt.subplots(figsize=(8, 5.5))
+    kinds = sorted({kind(m.method) for m in measurements})
+    colours = dict(zip(kinds, plt.cm.tab10.colors))
+    for m in measurements:
+        e = _worst(m)
+        if e is not None:
+            ax.scatter(max(m.seconds, 1e-6), max(e, FLOOR), s=6, alpha=0.25, color=colours[kind(m.method)])
+    rows = [r for r in method_rows(measurements) if r[2] is not None]
+    pts = [(r[4], max(r[2], FLOOR)) for r in rows]
+    for r, (t, e) in zip(rows, pts):
+        ax.scatter(t, e, s=40, color=colours[kind(r[0])], edgecolor="black", linewidth=0.5, zorder=3)
+    front = pareto(pts)
+    ax.plot([pts[i][0] for i in front], [pts[i][1] for i in front], "k--", lw=1, zorder=2, label="Pareto front")
+    for i in front:
+        ax.annotate(rows[i][0], pts[i], fontsize=6, xytext=(4, 3), textcoords="offset points")
+    for k in kinds:
+        ax.scatter([], [], color=colours[k], label=k)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_ylim(FLOOR / 10, 10)
+    ax.axhline(1e-12, color="grey", lw=0.5)
+    ax.axhline(1e-30, color="grey", lw=0.5)
+    ax.set_xlabel("wall time per witness (s; large markers: median over the family)")
+    ax.set_ylabel(f"relative error (large markers: worst; exact plotted at {FLOOR:g})")
+    ax.set_title(f"{family}: error against run time")
+    ax.legend(fontsize=7, loc="upper right")
+    fig.tight_layout()
+    fp = fingerprint(family, [(m.witness, m.method, fmt_err(_worst(m))) for m in measurements])
+    return fig, fp
