@@ -13,10 +13,11 @@ import math
 from pathlib import Path
 
 import matplotlib.pyplot as plt
+import sympy as sp
 
 from ..report.files import write_if_changed
 from .bench import FAMILIES, Bench, run_bench
-from .forms import CATASTROPHIC, STABLE_TOLERANCE, evaluate, forms
+from .forms import CATASTROPHIC, STABLE_TOLERANCE, evaluate, forms, scan
 from .orders import HEELS, PANELS, convergence_witnesses, gauss_legendre_degrees, kink_study, registry_orders
 from .report import (THRESHOLDS, cheapest, family_figure, fingerprint, fmt_err, fmt_time, method_rows,
                      write_png_if_changed)
@@ -25,6 +26,7 @@ __all__ = ["generate", "QUICK_SELECTORS"]
 
 QUICK_SELECTORS = ("graefe-s2", "metazentrum")
 QUICK_KINK_PANELS = (4, 8, 16, 32, 64, 128)
+QUICK_SCAN = "hasab"
 
 
 def _slug(text):
@@ -48,7 +50,8 @@ def _section_bench(bench, figures):
              "where no exact reference exists). The error is relative, against the exact value of the formula's "
              "valid reading (the print, or its correction where an erratum is declared) at the case's parameters, "
              f"else against the 100-digit measurement: {n_exact} formulas have an exact reference, "
-             f"{len(bench.references) - n_exact} a 100-digit one. Times are wall times of all cases of a witness, "
+             f"{len(bench.references) - n_exact} a 100-digit one (the witness's own 100-digit run: tanh-sinh for "
+             "quadrature, which then shows error 0; for computed witnesses that run is not listed). Times are wall times of all cases of a witness, "
              "median of repeats (they vary from run to run; nothing else does).", ""]
     for family in FAMILIES.values():
         ms = [m for m in bench.measurements if m.family == family]
@@ -149,7 +152,7 @@ def _section_orders(selector, figures, progress, quick):
     return lines
 
 
-def _section_forms(progress):
+def _section_forms(selector, progress):
     progress("stiff cases: closed forms, float64 against 50 digits")
     lines = ["## 3. Stiff and extreme cases of the closed forms", "",
              "Each closed form is evaluated as printed in float64 and at 50 digits (the same float64 inputs, taken "
@@ -168,6 +171,21 @@ def _section_forms(progress):
                          f.stable_text or "—", fmt_err(st[0]) if st else "—"))
     lines += [_table(("form", "source", "sweep", "worst rel. error (printed)", "digits lost", "catastrophic",
                       "worst at", "stable form", "worst rel. error (stable)"), rows), ""]
+    progress("stiff cases: scanning every closed form in the density")
+    found = scan(selector)
+    flagged = [r for r in found if r.worst > CATASTROPHIC]
+    lines += ["### Every closed form in the density, found in the derivations", "",
+              f"All {len(found)} distinct closed forms in the density (s, rho) among the valid readings of the "
+              "derivations (with derived quantities inserted, as the library stores them: SymPy distributes "
+              "rational factors, so b(1 - s)/2 is held as b/2 - b s/2), evaluated with the density 1e-15 ... 1e-1 "
+              "from 0 and from 1 and the other parameters at the middle of their sampling intervals. "
+              f"{len(found) - len(flagged)} lose at most 6 digits; the {len(flagged)} below lose more, and the first "
+              "of SymPy's factor, cancel, together, expand that stays within the stable tolerance is given.", "",
+              _table(("derivation", "formula", "form as stored", "worst rel. error", "at density", "stable rewrite",
+                      "its worst rel. error"),
+                     [(r.derivation, r.formula, f"`{sp.sstr(r.expr)}`", fmt_err(r.worst), f"{r.at:.17g}",
+                       r.rewrite and f"`{r.rewrite}`: `{sp.sstr(getattr(sp, r.rewrite)(r.expr))}`" or "none found",
+                       fmt_err(r.rewrite_worst) if r.rewrite else "—") for r in flagged]), ""]
     return lines
 
 
@@ -191,7 +209,7 @@ def generate(docs=Path("docs"), *, quick=False, progress=lambda msg: None) -> li
              "the ends of their ranges.", ""]
     lines += _section_bench(bench, figures)
     lines += _section_orders(selectors[0] if quick else None, figures, progress, quick)
-    lines += _section_forms(progress)
+    lines += _section_forms(QUICK_SCAN if quick else None, progress)
     written = []
     if write_if_changed(docs / "numerics.md", "\n".join(lines).rstrip() + "\n"):
         written.append(docs / "numerics.md")

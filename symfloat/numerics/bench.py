@@ -57,8 +57,8 @@ FAMILIES = {
 @dataclass
 class Measurement:
     """One witness measured with one method: relative errors per targeted
-    formula (worst over the cases; ``None`` when the method failed) and the
-    median wall time of all cases."""
+    formula (worst over the cases; absolute where the reference is 0; ``None``
+    when the method failed) and the median wall time of all cases."""
 
     derivation: str
     source: str
@@ -120,7 +120,7 @@ def _rel_error(value, ref):
         v = _vector(value)
         scale = max(abs(r) for r in ref)
         err = max(abs(a - b) for a, b in zip(v, ref))
-        return float(err / scale if scale else err)
+        return float(err / scale if scale > mpmath.mpf(10) ** (20 - REFERENCE_DPS) else err)
 
 
 def _valid_reading(p):
@@ -138,9 +138,9 @@ def _exact_reference(chain, params):
         comps = list(v) if isinstance(v, sp.MatrixBase) else [v]
         with mpmath.workdps(REFERENCE_DPS + 20):
             try:
-                vals = [mpmath.mpf(sp.N(c, REFERENCE_DPS + 10)._mpf_) for c in comps]
-            except (TypeError, AttributeError):
-                continue
+                vals = [mpmath.mpf(sp.Float(sp.N(c, REFERENCE_DPS + 10), REFERENCE_DPS + 10)._mpf_) for c in comps]
+            except TypeError:
+                continue            # not a real number
         return vals
     return None
 
@@ -260,10 +260,8 @@ def bench_derivation(d, bench: Bench, digits=DIGITS, orders=FLOAT64_ORDERS, pane
         methods = list(methods_for(w, d, digits, orders, panels))
         missing = any(r is None for refs in targets.values() for r in refs)
         ref_method = _reference_run(w)
-        if missing and all(_method_name(m) != ref_method.name for m in methods):
-            methods.append(ref_method)
         runs, runners = {}, [_runner(w, case) for case in w.cases]
-        for m in methods:
+        for m in methods + ([ref_method] if missing and ref_method.name not in map(_method_name, methods) else []):
             try:
                 runs[_method_name(m)] = _measure(runners, m, repeats) + ("",)
             except (ZeroDivisionError, ValueError, ArithmeticError, mpmath.libmp.NoConvergence) as exc:

@@ -33,7 +33,8 @@ import sympy as sp
 
 from ..registry import load
 
-__all__ = ["Form", "FormResult", "forms", "evaluate", "CATASTROPHIC", "STABLE_TOLERANCE", "REFERENCE_DPS"]
+__all__ = ["Form", "FormResult", "forms", "evaluate", "scan", "ScanRow", "CATASTROPHIC", "STABLE_TOLERANCE",
+           "REFERENCE_DPS"]
 
 EPS = 2.0 ** -53
 CATASTROPHIC = EPS * 1e6          # more than 6 digits lost
@@ -107,8 +108,7 @@ def _ngon_excess_series():
 @cache
 def forms() -> tuple[Form, ...]:
     """The registry of closed forms (built once; readings come from the derivations)."""
-    s, a, b, n, l, psi, Tx, Ty = sp.symbols("s a b n l psi T_x T_y", positive=True)
-    d_cf, _ = load("scheeffer-vi-cf")
+    s, a, b, n = sp.symbols("s a b n", positive=True)
     F1n, alph = sp.Symbol("F_1n"), sp.Symbol("alpha")
     out = []
 
@@ -144,22 +144,44 @@ def forms() -> tuple[Form, ...]:
                     lambda sv: 6 * ((sv - lo_hi) - lo_lo) * ((sv - up_hi) - up_lo),
                     "6 (s - s_-)(s - s_+), each root a sum of two doubles"))
 
-    # (75): (a/b)^2 = 6 s (1 - s): the lower threshold density as a function of the aspect ratio k = a/b
+    # VI.A: the triangular prism's printed thresholds s = (1 -+ sqrt(1 - (a/b)^2/3))/2, aspect k = a/b -> 0
     k = sp.Symbol("k", positive=True)
-    lower = min(sp.solve(sp.Eq(k ** 2, 6 * s * (1 - s)), s), key=lambda r: r.subs(k, 1))
-    ks = tuple((float(v),) for v in np.logspace(-6, np.log10(1.2), 40))
-    out.append(Form("square prism: lower threshold density from (75), k = a/b", "scheeffer-vi-cf/75", lower, (k,),
-                    (("k = 1e-6 ... 1.2", ks),),
-                    lambda kv: (kv * kv / 6) / (0.5 + math.sqrt(0.25 - kv * kv / 6)),
-                    "s_- = (k^2/6) / s_+ (product of the roots)"))
+    thresholds = _reading("scheeffer-vi-ab", "density-range", 0)
+    lower = thresholds[1].subs(a, k * b)
+    ks = tuple((float(v),) for v in np.logspace(-6, np.log10(1.7), 40))
+    out.append(Form("triangular prism: lower threshold density (1 - sqrt(1 - (a/b)^2/3))/2",
+                    "scheeffer-vi-ab/density-range",
+                    lower, (k,), (("k = a/b = 1e-6 ... 1.7", ks),),
+                    lambda kv: (kv * kv / 12) / (0.5 + 0.5 * math.sqrt(1 - kv * kv / 3)),
+                    "(k^2/12) / s_+ (product of the roots)"))
 
-    # hasab, remark: the lower threshold of the upright prism, (3l - sqrt(9l^2 - 6))/(6l), l up to 1e6
+    # ... and its discriminant near the singular point a/b -> sqrt 3 (the double root s = 1/2)
+    with mpmath.workdps(40):
+        r3_hi, r3_lo = _split(mpmath.sqrt(3))
+    disc = sp.sqrt(1 - k ** 2 / 3)
+    near3 = tuple((r3_hi * (1 - dl),) for dl in _ends())
+    out.append(Form("triangular prism: discriminant sqrt(1 - (a/b)^2/3) near a/b = sqrt 3",
+                    "scheeffer-vi-ab/density-range", disc, (k,), (("a/b within 1e-15 ... 1e-1 below sqrt 3", near3),),
+                    lambda kv: math.sqrt(((r3_hi - kv) + r3_lo) * (r3_hi + kv) / 3),
+                    "sqrt((sqrt3 - k)(sqrt3 + k)/3), sqrt 3 a sum of two doubles"))
+
+    # hasab, remark: the lower threshold of the upright prism, (3l - sqrt(9l^2 - 6))/(6l), l up to 1e6,
+    # and the width of the unstable range sqrt(9l^2 - 6)/(3l) near the double root l = sqrt(2/3)
     _, hasab = load("hasab")
+    l = hasab.l
     ls = tuple((float(v),) for v in np.logspace(np.log10(0.82), 6, 40))
     out.append(Form("long square prism upright: lower threshold (3l - sqrt(9l^2-6))/(6l)", "hasab/upright-roots",
-                    hasab.ru1, (hasab.l,), (("l = 0.82 ... 1e6", ls),),
+                    hasab.ru1, (l,), (("l = 0.82 ... 1e6", ls),),
                     lambda lv: 1 / (lv * (3 * lv + math.sqrt(9 * lv * lv - 6))),
                     "1 / (l (3l + sqrt(9l^2 - 6))) (product of the roots 1/(6 l^2))"))
+    with mpmath.workdps(40):
+        r23_hi, r23_lo = _split(mpmath.sqrt(mpmath.mpf(2) / 3))
+    width = sp.sqrt(9 * l ** 2 - 6) / (3 * l)
+    near23 = tuple((r23_hi * (1 + dl),) for dl in _ends())
+    out.append(Form("long square prism upright: unstable range ru2 - ru1 = sqrt(9l^2-6)/(3l) near l = sqrt(2/3)",
+                    "hasab/upright-roots", width, (l,), (("l within 1e-15 ... 1e-1 above sqrt(2/3)", near23),),
+                    lambda lv: math.sqrt(9 * ((lv - r23_hi) - r23_lo) * (lv + r23_hi)) / (3 * lv),
+                    "sqrt(9 (l - r)(l + r))/(3l), r = sqrt(2/3) a sum of two doubles"))
 
     # VI.C upright metacentric height a^2/(12 b s) - b(1 - s)/2: s -> 0+, 1-, aspect ratios 1e-6 .. 1e6
     gm = _reading("scheeffer-vi-cf", "upright-condition", 0)
@@ -207,3 +229,86 @@ def evaluate(form: Form) -> FormResult:
         if form.stable is not None:
             res_s[label] = worst_s
     return FormResult(form, res_n, res_s)
+
+
+DENSITY_NAMES = ("s", "varrho", "rho")
+ALLOWED = (sp.Add, sp.Mul, sp.Pow, sp.Symbol, sp.Number, sp.NumberSymbol, sp.sin, sp.cos, sp.tan, sp.cot)
+
+
+@dataclass
+class ScanRow:
+    """A closed form in the density found in a derivation: its worst float64 error at the ends of the
+    density range and, if flagged, the first algebraic rewrite that stays within the stable tolerance."""
+
+    derivation: str
+    formula: str
+    expr: sp.Expr
+    worst: float
+    at: float
+    rewrite: str = ""
+    rewrite_worst: float | None = None
+
+
+def _closed(e):
+    return all(isinstance(node, ALLOWED) for node in sp.preorder_traversal(e))
+
+
+def _worst_over(expr, symbols, points):
+    f = sp.lambdify(symbols, expr, "math")
+    ref = sp.lambdify(symbols, expr, "mpmath")
+    worst, at = 0.0, None
+    for p in points:
+        with mpmath.workdps(REFERENCE_DPS):
+            try:
+                r = ref(*(mpmath.mpf(v) for v in p))
+                if not isinstance(r, mpmath.mpf) or abs(r) < mpmath.mpf(10) ** (10 - REFERENCE_DPS):
+                    continue            # complex, or zero: an identity residual, no relative error
+                e = _rel(f(*p), r)
+            except (ValueError, ZeroDivisionError, OverflowError, TypeError):
+                continue
+        if e > worst:
+            worst, at = e, p
+    return worst, at
+
+
+def scan(selector=None) -> list[ScanRow]:
+    """Every closed form in the density (s or rho) among the valid readings of the derivations: float64
+    against 50 digits with the density 1e-15 ... 1e-1 from 0 and from 1, the other parameters at the
+    middle of their sampling intervals.  Flagged forms try ``factor``, ``cancel``, ``together`` and
+    ``expand`` as stable rewrites."""
+    from ..engine.check import _resolved
+    from ..model.claim import members
+    from ..registry import select
+    from .bench import _results, _valid_reading
+    rows = []
+    ends = _ends()
+    for did in select(selector):
+        d, _ = load(did)
+        dens = [sym for sym in d.domain if sym.name in DENSITY_NAMES]
+        if not dens:
+            continue
+        rho, seen, results = dens[0], set(), _results(d)
+        mids = {sym: float(sp.Rational(lo) + sp.Rational(hi)) / 2 for sym, (lo, hi) in d.domain.items()}
+        for p in d.printed:
+            chain = _valid_reading(p)
+            if chain is None:
+                continue
+            for m in members(_resolved(chain, results)):
+                for e in (list(m) if isinstance(m, sp.MatrixBase) else [sp.sympify(m)]):
+                    if rho not in e.free_symbols or not e.free_symbols <= set(d.domain) or not _closed(e) \
+                            or e in seen or sp.count_ops(e) > 80:
+                        continue
+                    seen.add(e)
+                    syms = sorted(e.free_symbols, key=lambda x: x.name)
+                    points = [tuple(v if sym == rho else mids[sym] for sym in syms)
+                              for v in ends + tuple(1 - x for x in ends)]
+                    worst, at = _worst_over(e, syms, points)
+                    row = ScanRow(did, p.name, e, worst, at[syms.index(rho)] if at else None)
+                    if worst > CATASTROPHIC:
+                        for how in (sp.factor, sp.cancel, sp.together, sp.expand):
+                            w2, _ = _worst_over(how(e), syms, points)
+                            if w2 <= STABLE_TOLERANCE:
+                                row.rewrite, row.rewrite_worst = how.__name__, w2
+                                break
+                    rows.append(row)
+    return rows
