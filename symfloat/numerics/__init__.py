@@ -51,8 +51,11 @@ def _section_bench(bench, figures):
              "valid reading (the print, or its correction where an erratum is declared) at the case's parameters, "
              f"else against the 100-digit measurement: {n_exact} formulas have an exact reference, "
              f"{len(bench.references) - n_exact} a 100-digit one (the witness's own 100-digit run: tanh-sinh for "
-             "quadrature, which then shows error 0; for computed witnesses that run is not listed). Times are wall times of all cases of a witness, "
-             "median of repeats (they vary from run to run; nothing else does).", ""]
+             "quadrature, which then shows error 0; for computed witnesses that run is not listed). Times are "
+             "wall times of all cases of a witness, median of repeats (they vary from run to run, and so may "
+             "the choice of the cheapest method; nothing "
+             "else does). A worst error that does not fall with the precision is the witness's own approximation "
+             "(the cylinder as a polygon of many sides, a limit by Richardson extrapolation), not rounding.", ""]
     for family in FAMILIES.values():
         ms = [m for m in bench.measurements if m.family == family]
         if not ms:
@@ -89,6 +92,8 @@ def _section_bench(bench, figures):
 
 def _orders_figure(rows, kinks, conv):
     fig, ax = plt.subplots(figsize=(7.5, 5))
+    smooth = next(r for r in rows if r.witness == "exponential")
+    ax.loglog(PANELS, smooth.simpson_errors, "d-", label=f"Simpson, exp on [0, 1] (smooth): {smooth.simpson:.2f}")
     chord = next(r for r in rows if r.witness == "circle chord")
     ax.loglog(PANELS, chord.simpson_errors, "o-", label=f"Simpson, circle chord (√ zero at the ends): "
                                                          f"{chord.simpson:.2f}")
@@ -101,7 +106,7 @@ def _orders_figure(rows, kinks, conv):
     ax.set_title("Measured orders (slope of the fit)")
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fp = fingerprint([(r.witness, [fmt_err(e) for e in r.simpson_errors]) for r in rows],
+    fp = fingerprint(_orders_figure, [(r.witness, [fmt_err(e) for e in r.simpson_errors]) for r in rows],
                      [(k.heel, [fmt_err(e) for e in k.simpson + k.trapezoid]) for k in kinks], conv)
     return fig, fp
 
@@ -139,9 +144,17 @@ def _section_orders(selector, figures, progress, quick):
              "puts the first vertex height at 2/3 of the interval. Simpson and trapezoid run in exact rational "
              "arithmetic (pure truncation error); 'split' applies Simpson on each piece between vertex heights "
              "(the same total panel count, at least two per piece).", ""]
+    smooth = next(r for r in rows if r.witness == "exponential")
+    lines += [f"Simpson measures {_fo(smooth.simpson)} on the smooth exp; across the kinks it falls to "
+              + " and ".join(f"{_fo(k.simpson_order)} ({k.heel})" for k in kinks)
+              + ": one panel pair straddles each kink, where the rule's error is of the order of the jump times "
+              "h^(j+1) for a jump in the j-th derivative. The trapezoid rule keeps its 2 (its own error is h^2 "
+              "already). Split at the vertex heights every piece is a quadratic, which Simpson integrates exactly "
+              "and Gauss–Legendre with n >= 2 to rounding.", ""]
     for k in kinks:
         lines += [f"#### Cube {k.heel}", "",
-                  f"Draught {k.draught} (heights from the cube's frame); vertex heights inside: {', '.join(str(c) for c in k.kinks)}; "
+                  f"Draught {k.draught} (heights from the cube's frame); vertex heights inside: "
+                  f"{', '.join(str(c) for c in k.kinks)}; "
                   f"exact displacement {k.exact}. Measured order: Simpson {_fo(k.simpson_order)} "
                   f"(4 on smooth integrands), trapezoid {_fo(k.trapezoid_order)}.", "",
                   _table(("panels", "Simpson, whole draught", "trapezoid, whole draught", "Simpson, split at kinks"),

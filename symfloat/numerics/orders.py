@@ -106,7 +106,7 @@ def _order_row(did, name, expr, var, lo, hi, panels):
 
 def registry_orders(selector=None, panels=PANELS) -> list[OrderRow]:
     """Measured Simpson and trapezoid orders on every quadrature witness's integrand (first case), and on
-    the chord width of a circle (a square-root zero at both ends)."""
+    two references: exp on [0, 1] (smooth) and the chord width of a circle (a square-root zero at both ends)."""
     rows = []
     for did in select(selector):
         d, _ = load(did)
@@ -114,6 +114,7 @@ def registry_orders(selector=None, panels=PANELS) -> list[OrderRow]:
             if isinstance(w, (SectionIntegral, PlaneSections)):
                 rows.append(_order_row(d.id, w.name, *_integrand(w, w.cases[0]), panels))
     y = sp.Symbol("y")
+    rows.append(_order_row("(reference)", "exponential", sp.exp(y), y, 0, 1, panels))
     rows.append(_order_row("(reference)", "circle chord", 2 * sp.sqrt(1 - y ** 2), y, -1, 1, panels))
     return rows
 

@@ -7,6 +7,7 @@ stored in the PNG's text chunk) changed.
 from __future__ import annotations
 
 import hashlib
+import inspect
 import io
 import math
 import statistics
@@ -87,11 +88,13 @@ def kind(method: str) -> str:
                 "exact hull", "slices"):
         if method.startswith(key):
             return key.rstrip("=").replace(" n", " float64")
-    return "own computation"
+    return f"own computation, {method}"
 
 
-def fingerprint(*parts) -> str:
-    return hashlib.sha256(repr(parts).encode()).hexdigest()[:16]
+def fingerprint(draw, *parts) -> str:
+    """Hash of what a figure shows apart from timings: the data *parts* and the source of its drawing
+    function *draw* (a change of style redraws it)."""
+    return hashlib.sha256((inspect.getsource(draw) + repr(parts)).encode()).hexdigest()[:16]
 
 
 def write_png_if_changed(path, fig, fp: str) -> bool:
@@ -113,7 +116,9 @@ def write_png_if_changed(path, fig, fp: str) -> bool:
 
 def family_figure(family, measurements):
     """Error against time for one witness family: faint points per witness and
-    method, large markers per method (median time, worst error), Pareto front."""
+    method (worst error over its formulas), large markers per method (median
+    time, median error, a line up to the worst error), the Pareto front of the
+    large markers."""
     fig, ax = plt.subplots(figsize=(8, 5.5))
     kinds = sorted({kind(m.method) for m in measurements})
     colours = dict(zip(kinds, plt.cm.tab10.colors))
@@ -121,10 +126,12 @@ def family_figure(family, measurements):
         e = _worst(m)
         if e is not None:
             ax.scatter(max(m.seconds, 1e-6), max(e, FLOOR), s=6, alpha=0.25, color=colours[kind(m.method)])
-    rows = [r for r in method_rows(measurements) if r[2] is not None]
-    pts = [(r[4], max(r[2], FLOOR)) for r in rows]
+    rows = [r for r in method_rows(measurements) if r[3] is not None]
+    pts = [(r[4], max(r[3], FLOOR)) for r in rows]
     for r, (t, e) in zip(rows, pts):
         ax.scatter(t, e, s=40, color=colours[kind(r[0])], edgecolor="black", linewidth=0.5, zorder=3)
+        if r[2] is not None:
+            ax.plot([t, t], [e, max(r[2], FLOOR)], color=colours[kind(r[0])], lw=0.8, zorder=2)
     front = pareto(pts)
     ax.plot([pts[i][0] for i in front], [pts[i][1] for i in front], "k--", lw=1, zorder=2, label="Pareto front")
     for i in front:
@@ -137,9 +144,9 @@ def family_figure(family, measurements):
     ax.axhline(1e-12, color="grey", lw=0.5)
     ax.axhline(1e-30, color="grey", lw=0.5)
     ax.set_xlabel("wall time per witness (s; large markers: median over the family)")
-    ax.set_ylabel(f"relative error (large markers: worst; exact plotted at {FLOOR:g})")
+    ax.set_ylabel(f"relative error (large markers: median, line up to the worst; exact at {FLOOR:g})")
     ax.set_title(f"{family}: error against run time")
     ax.legend(fontsize=7, loc="upper right")
     fig.tight_layout()
-    fp = fingerprint(family, [(m.witness, m.method, fmt_err(_worst(m))) for m in measurements])
+    fp = fingerprint(family_figure, family, [(m.witness, m.method, fmt_err(_worst(m))) for m in measurements])
     return fig, fp
