@@ -134,3 +134,17 @@ def test_scan_finds_the_density_forms_and_their_rewrites():
     # E0 = l g (rho - rho^2)/2, held expanded: at rho -> 1 the difference loses ~8 digits; factored it does not
     assert "E0-total" in flagged and flagged["E0-total"].rewrite == "factor"
     assert all(r.rewrite and r.rewrite_worst <= STABLE_TOLERANCE for r in flagged.values())
+
+
+def test_cheapest_prefers_lower_precision_among_near_equal_times():
+    from symfloat.numerics.bench import Bench, Measurement
+    from symfloat.numerics.report import cheapest
+
+    def meas(method, seconds, error):
+        return Measurement("d", "src", "fam", "w", method, seconds, {"f": error})
+    # one witness: its times are the family medians
+    bench = Bench([meas("mpmath, 50 digits", 0.010, 1e-50), meas("mpmath, 30 digits", 0.012, 1e-31),
+                   meas("float64", 0.001, 1e-16), meas("tanh-sinh, 30 digits", 0.5, 1e-31)])
+    assert cheapest(bench, 1e-30)["d/f"][0] == "mpmath, 30 digits"     # within a factor 2: lower precision
+    assert cheapest(bench, 1e-12)["d/f"][0] == "float64"
+    assert cheapest(bench, 1e-60)["d/f"] is None

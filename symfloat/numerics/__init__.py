@@ -72,7 +72,10 @@ def _section_bench(bench, figures):
                   _table(("method", "witnesses", "worst rel. error", "median rel. error", "median time"),
                          [(r[0], r[1], fmt_err(r[2]), fmt_err(r[3]), fmt_time(r[4])) for r in method_rows(ms)]), ""]
     lines += ["### Cheapest method per formula", "",
-              "The fastest measurement (method and witness) whose relative error is within 1e-12 and 1e-30; "
+              "The fastest measurement (method and witness) whose relative error is within 1e-12 and 1e-30 "
+              "(methods compared by their median time over the witness family; among those within a factor 2 "
+              "of the fastest, the lowest precision and fewest nodes, so that timing noise does not change the "
+              "choice); the time shown is the witness's own; "
               "'none' when no method reaches it (float64-only witnesses, or a 100-digit reference that is itself "
               "the only run at that precision).", ""]
     best = {t: cheapest(bench, t) for t in THRESHOLDS}

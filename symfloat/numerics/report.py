@@ -10,6 +10,7 @@ import hashlib
 import inspect
 import io
 import math
+import re
 import statistics
 from collections import defaultdict
 from pathlib import Path
@@ -70,15 +71,46 @@ def method_rows(measurements):
     return rows
 
 
+TIE = 2.0   # methods within this factor of the fastest count as equally fast
+
+
+def nominal(method: str) -> tuple:
+    """A timing-free cost order of a method name: precision (float64 = 15 digits), float64 or exact before
+    mpmath, then nodes or panels.
+
+    >>> nominal("mpmath, 30 digits") < nominal("mpmath, 50 digits") < nominal("tanh-sinh, 100 digits")
+    True
+    >>> nominal("Gauss-Legendre n=2, float64") < nominal("Gauss-Legendre n=8, float64")
+    True
+    """
+    digits = re.search(r"(\d+) digits", method)
+    nodes = re.search(r"n=(\d+)|(\d+) panels", method)
+    return (int(digits.group(1)) if digits else 15, 0 if "float64" in method or "exact" in method else 1,
+            int(next(g for g in nodes.groups() if g)) if nodes else 0, method)
+
+
 def cheapest(bench, threshold):
-    """Formula -> (method, witness, seconds, error) of the fastest measurement within *threshold*, or None."""
-    best = {}
+    """Formula -> (method, witness, seconds, error) of the cheapest measurement within *threshold*, or None.
+
+    Methods are compared by their median time over the witness family (steadier than one witness's time);
+    among those within a factor ``TIE`` of the fastest, the first in the timing-free order :func:`nominal`
+    wins, so that timing noise between near-equal methods does not change the choice."""
+    times = defaultdict(list)
+    for m in bench.measurements:
+        times[m.family, m.method].append(m.seconds)
+    cost = {k: statistics.median(v) for k, v in times.items()}
+    candidates = {}
     for m in bench.measurements:
         for name, e in m.errors.items():
             key = f"{m.derivation}/{name}"
-            best.setdefault(key, None)
-            if e is not None and e <= threshold and (best[key] is None or m.seconds < best[key][2]):
-                best[key] = (m.method, m.witness, m.seconds, e)
+            candidates.setdefault(key, [])
+            if e is not None and e <= threshold:
+                candidates[key].append((cost[m.family, m.method], (m.method, m.witness, m.seconds, e)))
+    best = {}
+    for key, cs in candidates.items():
+        fastest = min((c for c, _ in cs), default=None)
+        best[key] = None if fastest is None else min(
+            (r for c, r in cs if c <= TIE * fastest), key=lambda r: (nominal(r[0]), r[1]))
     return best
 
 
