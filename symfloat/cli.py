@@ -98,7 +98,7 @@ def main(argv=None) -> int:
             print(f"{len(written)} of {len(ids)} notebooks changed in {args.output}", file=sys.stderr)
             reports = []
         elif args.command == "bench":
-            from .numerics import generate
+            from .numerics.document import generate
             quiet = args.quiet or os.environ.get("SYMFLOAT_QUIET") == "1"
             written = generate(args.output, quick=args.quick,
                                progress=lambda msg: quiet or print(msg, file=sys.stderr, flush=True))
