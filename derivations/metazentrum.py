@@ -18,7 +18,7 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Erratum, Prediction
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.geometry.floating import clip_below, floating_state, right_prism, volume_centroid
 
@@ -220,3 +220,38 @@ def _density(case, dps):
 W("density-ratio", "clipped volume below depth d over the box volume", ("density",), _density)
 W("section-area", "clipped immersed volume over the length 2a", ("section",),
   lambda case, dps: measured(case, dps)["V"] / (2 * mpmath.mpf(str(case.params[a]))))
+
+
+
+# ---- predictions: the box floating upright ------------------------------------------------------------------------
+def predict(scene):
+    """Each edge direction of the box vertical in turn (height 2c, breadth 2b the shorter, length 2a the longer of
+    the other two edges, draught d = 2c s): stable iff e = b^2/(6c^2) - d/(2c)(1 - d/(2c)) > 0 (the criterion
+    z_M >= z_G, decided in exact arithmetic); where 0 < e <= 1 the closing sentence ('größer als eins' when
+    stable) says otherwise."""
+    if scene.body != "box":
+        return []
+    sv = Fraction(scene.density)
+    dims = [Fraction(x_) for x_ in scene.dims]
+    out, seen = [], set()
+    for k in range(3):
+        i, j = [m_ for m_ in range(3) if m_ != k]
+        key = (dims[k], tuple(sorted((dims[i], dims[j]))))
+        if key in seen:
+            continue
+        seen.add(key)
+        bv, cv = min(dims[i], dims[j]) / 2, dims[k] / 2
+        ev = bv ** 2 / (6 * cv ** 2) - sv * (1 - sv)
+        up = [0.0] * 3
+        up[k] = 1.0
+        out.append(Prediction(("e", "criterion", "z_M"), tuple(up),
+                              "stable" if ev > 0 else "unstable" if ev < 0 else None,
+                              note=f"upright, edge {k} vertical: e = {float(ev):.4g}"))
+        if 0 < ev <= 1:
+            out.append(Prediction(("e-sign",), tuple(up), "unstable",
+                                  note=f"e = {float(ev):.4g} is not 'größer als eins': the closing sentence's "
+                                       "stable case excludes it"))
+    return out
+
+
+dv.predicts(("box",), predict)

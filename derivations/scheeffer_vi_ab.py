@@ -11,10 +11,13 @@ F, whose volume, centroid and righting arm follow from the area, first and secon
 measured righting arm.
 """
 
+import math
+from fractions import Fraction
+
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Erratum, Prediction
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.geometry.floating import (cylinder_state, floating_state, right_prism, submerged)
 
@@ -1379,3 +1382,68 @@ cw("example-8-claim", "signs of the upright metacentric height and of the smalle
    "upper-base contact (quadrature)", ("ex8-claim",), one, lambda c, dps: ex8_signs(dps))
 cw("example-9-claim", "signs of the upright metacentric height and of (contact tangent - equilibrium tangent) "
    "(quadrature)", ("ex9-claim",), one, lambda c, dps: ex9_signs(dps))
+
+
+# =====================================================================================================
+# Predictions: the positions of the first rotation region as (65) and (69)-(73) print them
+# =====================================================================================================
+def _tilted(phi_, toward_x):
+    """Up vector tilted by phi_ from the axis towards +x (toward_x > 0) or -x."""
+    return (math.copysign(math.sin(phi_), toward_x), 0.0, math.cos(phi_))
+
+
+def _triangle_predictions(av, bv, sv):
+    """(65): I upright stable; II upright labile, an oblique stable position for every horizontal axis (a ring);
+    III the same for a restricted axis direction (an arc of the ring, (61)); IV no oblique position."""
+    q, p = (av / bv) ** 2, sv * (1 - sv)
+    margin = q - 12 * p                                  # (57), (65) I
+    out = [Prediction(("57", "65-I", "density-range") if margin >= 0 else ("57", "density-range"), (0.0, 0.0, 1.0),
+                      "stable" if margin >= 0 else "unstable",
+                      note="upright: (57) (a/b)^2 > 12 s(1-s); (65) I counts equality as stable")]
+    if margin >= 0:
+        return out
+    phi1 = math.atan(math.sqrt(24 * p / q - 2))          # (65), (60)
+    upper = sv >= Fraction(1, 2)
+    lim_ring = Fraction(3, 2) * ((1 - sv) * (9 * sv - 1) if upper else sv * (8 - 9 * sv))    # (62), (65) II
+    lim_arc = 6 * (1 - sv) * (3 * sv - 1) if upper else 6 * sv * (2 - 3 * sv)           # (64), (65) III, IV
+    # omega = 0 of the text: an edge on the side of the base that meets the water first (the upper base on the
+    # dipping side for s > 1/2, the lower one on the rising side for s < 1/2), the vertex opposite
+    up = _tilted(phi1, 1 if upper else -1)
+    if q >= lim_ring:
+        out.append(Prediction(("65-II", "65-tan", "60-tan"), up, "stable", "ring",
+                              note="(65) II: oblique ring, any horizontal axis"))
+    elif q >= lim_arc:
+        out.append(Prediction(("65-III", "65-III-omega", "65-III-claim", "65-tan"), up, "stable", "ring",
+                              note="(65) III: the arc of axis directions allowed by (61) around omega = 0"))
+    return out
+
+
+def _cylinder_predictions(rv, bv, sv):
+    """(69)-(73): upright stable iff 2r/b > sqrt(8 s(1-s)); else the oblique ring (72a) when (73) holds."""
+    K2, p = (2 * rv / bv) ** 2, sv * (1 - sv)
+    margin = K2 - 8 * p
+    out = [Prediction(("69", "71") if margin > 0 else ("72", "71") if margin < 0 else ("69",), (0.0, 0.0, 1.0),
+                      "stable" if margin > 0 else "unstable" if margin < 0 else None,
+                      note="upright: (69) 2r/b > sqrt(8 s(1-s)), (72) the labile case")]
+    if margin >= 0:
+        return out
+    lim = 2 * (1 - sv) * (5 * sv - 1) if sv > Fraction(1, 2) else 2 * sv * (4 - 5 * sv)          # (73)
+    if K2 >= lim:
+        phi1 = math.atan(math.sqrt(16 * p / K2 - 2))     # (72a)
+        out.append(Prediction(("72a-tan", "72a", "73"), _tilted(phi1, 1), "stable", "ring",
+                              note="(73): the oblique ring of the first region, tilt from (72a)"))
+    return out
+
+
+def predict(scene):
+    """VI.A: the regular triangular prism (prism, 3 sides); VI.B: the circular cylinder.  The conditions are
+    decided in exact arithmetic (Fractions), the tilts in floating point."""
+    sv, dims = Fraction(scene.density), [Fraction(x_) for x_ in scene.dims]
+    if scene.body == "prism" and scene.sides == 3:
+        return _triangle_predictions(dims[0], dims[1], sv)
+    if scene.body == "cylinder":
+        return _cylinder_predictions(dims[0], dims[1], sv)
+    return []
+
+
+d.predicts(("prism", "cylinder"), predict)

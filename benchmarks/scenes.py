@@ -1,0 +1,139 @@
+"""Benchmark: time per scene of the equilibrium solver against an exhaustive orientation scan.
+
+    python benchmarks/scenes.py [--quick]        (writes docs/performance.md)
+
+For the cube and the box 1 x 2 x 3 over a density sweep, the solver
+(:func:`symfloat.solver.solve`) is timed against a baseline that uses no
+derivatives: the potential sampled on a grid of the symmetry group's
+fundamental domain (spacing 2 degrees), every sampled local minimum refined
+by a shrinking pattern search until the step is below 1e-9 rad (the
+solver's accuracy).  The baseline finds stable positions only; the solver
+finds every equilibrium and classifies it.  Both report the stable positions,
+which are compared.  Times are medians of repeats on this machine.
+"""
+from __future__ import annotations
+
+import argparse
+import math
+import platform
+import statistics
+import sys
+import time
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+
+from symfloat.geometry.floating import floating_state
+from symfloat.solver import make_scene, solve
+from symfloat.solver.bodies import polyhedron
+from symfloat.solver.symmetry import box_group, same_class
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _direction(theta, phi):
+    return np.array([math.sin(theta) * math.cos(phi), math.sin(theta) * math.sin(phi), math.cos(theta)])
+
+
+def exhaustive_scan(scene, spacing_deg=2.0, tol_rad=1e-9):
+    """Stable positions by sampling the potential on the octant and refining each sampled local
+    minimum by a pattern search (no derivatives, no Hessian).  Returns ``(positions, evaluations)``."""
+    poly = polyhedron(scene)
+    s = scene.density
+    count = 0
+
+    def U(u):
+        nonlocal count
+        count += 1
+        return float(floating_state(poly, tuple(u), s).potential)
+
+    n = int(round(90 / spacing_deg))
+    grid = {}
+    for i in range(-1, n + 2):
+        for j in range(-1, n + 2):
+            grid[i, j] = U(_direction(math.radians(i * spacing_deg), math.radians(j * spacing_deg)))
+    minima = []
+    for (i, j), value in grid.items():
+        if not (0 <= i <= n and 0 <= j <= n):
+            continue
+        neighbours = [grid.get((i + di, j + dj)) for di in (-1, 0, 1) for dj in (-1, 0, 1) if di or dj]
+        if all(v is None or value <= v for v in neighbours):
+            minima.append((math.radians(i * spacing_deg), math.radians(j * spacing_deg)))
+    group = box_group(scene.dims)
+    found = []
+    for theta, phi in minima:
+        u = _direction(theta, phi)
+        best = U(u)
+        step = math.radians(spacing_deg)
+        while step > tol_rad:
+            e1 = np.cross(u, [0.0, 0.0, 1.0]) if abs(u[2]) < 0.9 else np.cross(u, [1.0, 0.0, 0.0])
+            e1 /= np.linalg.norm(e1)
+            e2 = np.cross(u, e1)
+            moved = False
+            for d in (e1, -e1, e2, -e2, (e1 + e2) / 2 ** 0.5, (e1 - e2) / 2 ** 0.5,
+                      (-e1 + e2) / 2 ** 0.5, (-e1 - e2) / 2 ** 0.5):
+                v = u * math.cos(step) + d * math.sin(step)
+                value = U(v)
+                if value < best:
+                    u, best, moved = v, value, True
+                    break
+            if not moved:
+                step /= 2
+        if not any(same_class(u, w, group, 1e-6) for w in found):
+            found.append(u)
+    return found, count
+
+
+def _median_time(f, repeats):
+    times, result = [], None
+    for _ in range(repeats):
+        t = time.perf_counter()
+        result = f()
+        times.append(time.perf_counter() - t)
+    return statistics.median(times), result
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--quick", action="store_true", help="fewer densities and repeats")
+    p.add_argument("--output", type=Path, default=ROOT / "docs" / "performance.md")
+    args = p.parse_args(argv)
+    densities = ["0.1", "0.3"] if args.quick else ["0.05", "0.1", "0.15", "0.2", "0.22", "0.3", "0.4", "0.5"]
+    repeats = 1 if args.quick else 3
+    rows = []
+    for body, dims in (("cube", None), ("box", "1,2,3")):
+        for s in densities:
+            scene = make_scene(body, s, dims)
+            t_solver, sol = _median_time(lambda: solve(scene), repeats)
+            t_scan, (scan, evaluations) = _median_time(lambda: exhaustive_scan(scene), 1)
+            stable = [e for e in sol.equilibria if e.stability == "stable" and e.family == "isolated"]
+            group = box_group(scene.dims)
+            agree = len(scan) >= len(stable) and all(any(same_class(e.up, u, group, 1e-6) for u in scan)
+                                                      for e in stable)
+            rows.append((body, dims or "1,1,1", s, t_solver, len(sol.equilibria), len(stable), t_scan, evaluations,
+                         len(scan), agree, max((e.error_rad for e in sol.equilibria), default=0.0)))
+            print(f"{body} s={s}: solver {t_solver:.2f} s, scan {t_scan:.2f} s", file=sys.stderr)
+    lines = ["# Performance of the equilibrium solver", "",
+             "Generated by `python benchmarks/scenes.py` on " + f"{platform.machine()}, Python "
+             f"{platform.python_version()}; times are medians of {repeats} repeat(s) and vary between machines.", "",
+             "Baseline: an exhaustive scan of the potential on a 2° grid of the octant, every sampled minimum "
+             "refined by pattern search to 1e-9 rad (stable positions only, no derivatives). Solver: Newton on "
+             "the sphere with the metacentric Hessian from 111 seeds, every equilibrium found and classified, "
+             "error estimated at 30 digits.", "",
+             "| body | dims | s | solver (s) | equilibria | stable isolated | scan (s) | scan evaluations | "
+             "scan minima | stable sets agree | solver max error (rad) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append(f"| {r[0]} | {r[1]} | {r[2]} | {r[3]:.2f} | {r[4]} | {r[5]} | {r[6]:.2f} | {r[7]} | {r[8]} | "
+                     f"{'yes' if r[9] else 'NO'} | {r[10]:.1e} |")
+    speedup = statistics.median(r[6] / r[3] for r in rows)
+    lines += ["", f"Median speed-up of the solver over the scan: {speedup:.1f}x. The scan's minima include the "
+              "points of a ring (one-parameter family), which the solver reports once; where the scan finds more "
+              "minima than the solver has stable isolated positions, the extra ones lie on such a family.", ""]
+    args.output.write_text("\n".join(lines), encoding="utf-8")
+    print(f"wrote {args.output}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,748 @@
+"""Euler, Scientia navalis (1749), Cap. III "De stabilitate situs aequilibrii", §§220–228.
+
+English summary, paragraph by paragraph:
+
+* §220: for the quadrilaterals (§218) unequal parts fore and aft of the latitudinal axis gave a larger
+  moment than the rhombus; is it the same for curved figures?  Take a figure AEBF with the same
+  longitudinal axis AB, the same greatest breadth ef and the same area as the ellipse of §219, but with
+  ef cutting AB unequally at c; O is the midpoint of AB, C the centroid, EF the latitudinal axis.  Put
+  AO = BO = a, ce = cf = b, Oc = c.
+* §221: infinitely many such curves: with AP = x, PM = y, x = a + Y ± a√(1 − y²/b²), Y a function of
+  y vanishing at y = 0.  At y = 0, x = 0 or 2a, so AB = 2a; the greatest breadth b lies at the abscissa
+  a + Y(b), not at O; the halves AEB, AFB are equal when Y is even.  Take Y = −cy²/b², so that Oc = c.
+* §222: whatever (single-valued) Y is, the area equals that of the ellipse with axes 2a, 2b: the portion
+  Ace has the area ∫y dY + (a/b)∫y²dy/√(b² − y²) (from y = 0 to b), Bce the same with the opposite sign
+  of the second term and the limits reversed, so AEB = (2a/b)∫y²dy/√(b² − y²) = D, the half ellipse.
+* §223: the moment about AB does not depend on Y either: (1/3)∫y³dx over Ace and Bce gives
+  (2a/3b)∫y⁴dy/√(b² − y²) for AEB, and for the whole figure Db²/2 = ef²D/8, as for the ellipse.
+* §224: the moment about the line aAa through A normal to AB: for Ace, ∫y x² dx with
+  x = a + Y − (a/b)√(b² − y²), expanded into six integrals; for Bce the same with the signs of the odd
+  powers of √(b² − y²) changed and the limits reversed.
+* §225: adding, AEB about aAa = −(4a/b)∫y dY (a+Y)√(b² − y²) + (2a/b)∫y²dy(a+Y)²/√(b² − y²)
+  + (2a³/b³)∫y²dy√(b² − y²) = (2a³/b³)∫y²dy√ + (2a/b)∫(a+Y)²dy√ (by parts, the boundary term vanishes
+  at y = 0 and y = b); with ∫y²dy√(b² − y²) = b³D/8a this is a²D/4 + (2a/b)∫(a+Y)²dy√, and the
+  whole figure has twice as much (printed a²D/2 + (2a/b)∫..., see the errata).
+* §226: the centroid: D·AC = ∫xy dx over AEB = (2a/b)∫(a+Y)dy√(b² − y²); the moment about EF through
+  C is the moment about aAa less 2D·AC², a²D/2 + (4a/b)∫(a+Y)²dy√ − (8a²/b²D)(∫(a+Y)dy√)² (printed
+  with 2a/b, aa/bbD and no square).  For even Y the integrals reduce to ∫y²dy/√(b² − y²) = bD/2a,
+  ∫y²dy√(b² − y²) = b³D/8a, ∫dy√(b² − y²) = bD/2a.
+* §227: Y = −cy²/b²: ∫(a+Y)²dy√ = bD(8a² − 4ac + c²)/16a, ∫(a+Y)dy√ = bD(4a − c)/8a, AC = a − c/4,
+  and the moment about EF is a²D/2 + c²D/8 = AB²D/8 + c²D/8.
+* §228: so, as for the quadrilaterals, the moment about EF grows as ef moves away from the middle O
+  (the text says C).  The
+  curve does not allow c > a/2 (it would cross the line aa); at c = a/2 (Oc = AB/4) the moment is
+  AB²D/8 + AB²D/128, a sixteenth more than the ellipse's.
+
+What the print or its transcription gets wrong (each argued in its erratum, the kind saying which): a fraction bar lost three times in
+§223; the vinculum over the factor x² and a 'dy' in §224; 'dy' for 'dY' in §225 and §226; 'D³' for D
+in §225; the factor 2a/b (for 4a/b) of the whole figure in §225, repeated in §226 together with a lost
+factor 8 and a lost square; ∫y dx for ∫xy dx in §226; c/b for a/b and Oc = a for Oc = c in §227, with
+the three auxiliary integrals of §227 shifted against their values and c·c² D/128 for c²D/8; the
+curve of §227 again in §228, with a for x.
+
+Checking: the integrals with √(b² − y²) are stated once each, closed by the substitution y = b sin θ, and
+the readings are built on them; Y is checked in the general form Y = p|y| + qy² (even, vanishing at 0)
+and in Euler's case Y = −cy²/b².
+
+Witnesses: every area and moment is computed by two-dimensional quadrature over the figure itself
+(x from the left to the right boundary at height y, then y): adaptive ``mpmath.quad`` (tanh-sinh, which
+copes with the square-root end at y = b) in y at 50 digits, and fixed-order Gauss–Legendre in float64
+after y = b sin θ.  The inner integrand is a polynomial of degree at most two in x, integrated exactly by
+the three-point Gauss rule in both.  The one-dimensional integrals of §§225–227 are witnessed by
+quadrature of their integrands in the same two ways.
+"""
+import mpmath
+import numpy as np
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, Computed
+
+y = sp.Symbol("y", real=True)
+th = sp.Symbol("theta", real=True)
+a, b, c = sp.symbols("a b c", positive=True)
+p, q = sp.symbols("p q", real=True)
+
+DERIVATION = d = Derivation(
+    id="euler-220-228",
+    source="euler",
+    title="Curved waterplanes of the ellipse's area with the greatest breadth off the middle "
+          "(Euler, Scientia navalis III §§220–228)",
+    locator="§220–§228",
+    summary="The curves x = a + Y ± a√(1 − y²/b²): area and moment about the longitudinal axis independent "
+            "of Y (§221–223); the moment about the latitudinal axis through the centroid (§224–226); for "
+            "Y = −cy²/b² it is a²D/2 + c²D/8, growing as the greatest breadth moves off the middle, with "
+            "c ≤ a/2 (§227–228). Every area and moment is derived by integration over the figure and "
+            "witnessed by two-dimensional quadrature.",
+    domain={a: (1, 3), b: (sp.Rational(1, 2), 2), c: (sp.Rational(1, 10), sp.Rational(1, 2)),
+            p: (sp.Rational(-1, 2), sp.Rational(1, 2)), q: (sp.Rational(-1, 4), sp.Rational(1, 4)),
+            y: (0, sp.Rational(1, 2))},
+    assumptions=("AO = BO = a, ce = cf = b, Oc = c; A at x = 0, O at x = a, B at x = 2a; y >= 0 on the half "
+                 "AEB (0 < y < b wherever y is sampled)",
+                 "the general Y is checked as Y = p y + q y^2 on the half y >= 0, i.e. the even function "
+                 "p|y| + q y^2 with Y(0) = 0, any p, q; Euler's case of §227 is p = 0, q = -c/b^2",
+                 "the portion Ace is the region 0 <= y <= b, x_L(y) <= x <= x_c, Bce the region "
+                 "x_c <= x <= x_R(y), AEB their union, with x_L, x_R the two branches of §221 and "
+                 "x_c = a + Y(b) the abscissa of ce; AFB is the mirror image of AEB (Y even)",
+                 "Euler's integrals are taken from y = 0 to y = b, or from b to 0 where he says so "
+                 "('integralibus contrario modo acceptis')",
+                 "0 < c <= a/2 for the figures of §227 (the limit is Euler's claim of §228, checked there)"),
+)
+
+R = sp.sqrt(b ** 2 - y ** 2)
+
+
+def _theta_form(f):
+    """The integrand f(y) dy under y = b sin(theta): the powers of b^2 - y^2 become powers of b cos(theta)."""
+    g = sp.expand(f).replace(lambda e: e.is_Pow and e.base == b ** 2 - y ** 2,
+                             lambda e: (b * sp.cos(th)) ** (2 * e.exp))
+    return sp.expand(g.xreplace({y: b * sp.sin(th)}) * b * sp.cos(th))
+
+
+def _closed(f):
+    """∫_0^b f dy carried out in theta, term by term with ∫_0^{π/2} sin^k cos^m = B((k+1)/2, (m+1)/2)/2:
+    the stated closed value, which the engine checks against its own evaluation of the integral in y."""
+    poly = sp.Poly(_theta_form(f), sp.sin(th), sp.cos(th))
+    return sp.factor(sum(coeff * sp.gamma(sp.Rational(k + 1, 2)) * sp.gamma(sp.Rational(m + 1, 2))
+                         / (2 * sp.gamma(sp.Rational(k + m, 2) + 1)) for (k, m), coeff in poly.terms()))
+
+
+def integral_symbol(latex):
+    """A symbol that prints as Euler's integral (taken from 0 to b); its value is stated by one step."""
+    return sp.Symbol(r"{\int_{0}^{b} " + latex + "}")   # braces: printed after the letters in products
+
+
+def named(name, latex, f, note=""):
+    """A printed integral ∫_0^b f dy as a quantity of its own (its symbol prints as the integral), stated
+    once with its closed value; the readings use the symbol, the witnesses its value."""
+    S = sp.Symbol("{" + latex + "}") if latex.startswith(r"\left(") else integral_symbol(latex)
+    integral_step(name, S, f, note=note)
+    return S
+
+
+def _over_root(f):
+    """The same integrand as a polynomial plus P(y)/√(b² - y²), every odd power of √(b² - y²) written as
+    a power of (b - y)(b + y) over √(b² - y²): SymPy integrates this form several times faster."""
+    W = b ** 2 - y ** 2
+    poly, over = sp.Integer(0), sp.Integer(0)
+    for t in sp.Add.make_args(sp.expand(f)):
+        pw = [g for g in sp.Mul.make_args(t) if g.is_Pow and g.base == W]
+        e = sum((g.exp for g in pw), sp.Integer(0))
+        rest = t / sp.Mul(*pw)
+        if e.is_integer:
+            poly += rest * W ** e
+        else:
+            over += rest * W ** (e + sp.S.Half)
+    if over == 0:
+        return sp.expand(poly)
+    return sp.expand(poly) + sp.factor(sp.expand(over)).xreplace({W: (b - y) * (b + y)}) / R
+
+
+def integral_step(name, S, f, note="", theta=False):
+    """S := ∫_0^b f dy, stated with its closed value (and, if theta, with the substituted integral
+    y = b sin theta between); the integrand is written as _over_root gives it."""
+    value = _closed(f)
+    chain = (S, sp.Integral(_over_root(f), (y, 0, b)))
+    chain += (sp.Integral(_theta_form(f), (th, 0, sp.pi / 2)),) if theta else ()
+    d.step(name, chain + (value,), "integration", note=note, result=S)
+    return value
+
+
+def claim(text):
+    return "The paragraph claims: " + text
+
+
+# ================================================================ the integrals with √(bb - yy), once each
+U0, U2, U4, V2, V4 = (integral_symbol(t) for t in (r"dy \sqrt{bb-yy}", r"yy\,dy \sqrt{bb-yy}",
+                                                   r"y^4 dy \sqrt{bb-yy}", r"\frac{yy\,dy}{\sqrt{bb-yy}}",
+                                                   r"\frac{y^4 dy}{\sqrt{bb-yy}}"))
+D = sp.Symbol("D", positive=True)
+integral_step("U0", U0, R, theta=True, note="∫_0^b √(b²-y²) dy, by y = b sin θ")
+integral_step("U2", U2, y ** 2 * R, theta=True, note="∫_0^b y² √(b²-y²) dy")
+integral_step("U4", U4, y ** 4 * R, theta=True, note="∫_0^b y⁴ √(b²-y²) dy")
+integral_step("V2", V2, y ** 2 / R, theta=True, note="∫_0^b y² dy/√(b²-y²)")
+integral_step("V4", V4, y ** 4 / R, theta=True, note="∫_0^b y⁴ dy/√(b²-y²)")
+integral_step("semi-ellipse", D, 2 * a * R / b,
+              note="D: the area of the half ellipse with semi-axes a (along AB) and b, by chords "
+                   "2a√(1 - y²/b²) at the height y; the figures below have the area 2D (§222)")
+
+# ================================================================ §221: the curves
+Yg = p * y + q * y ** 2
+dYg = sp.diff(Yg, y)
+Yc = -c * y ** 2 / b ** 2
+x21 = sp.Matrix([a + Yg - a * sp.sqrt(1 - y ** 2 / b ** 2), a + Yg + a * sp.sqrt(1 - y ** 2 / b ** 2)])
+xL, xR, xc = a + Yg - a * R / b, a + Yg + a * R / b, a + Yg.subs(y, b)
+d.step("branches", (x21, sp.Matrix([xL, xR])), "algebra",
+       note="§221: x = a + Y ± a√(1 - y²/b²), the branch with - bounding Ace, with + bounding Bce; "
+            "a√(1 - y²/b²) = (a/b)√(b² - y²) for b > 0, the form of §§224-227. x_c = a + Y(b) is the abscissa "
+            "Ac of the greatest breadth ce, where both branches meet")
+d.quote("ends", "§221", r"Posito namque $y = 0$, fit x vel $= 0$ vel $= 2a$",
+        reading=(sp.Matrix([sp.Subs(e, y, 0) for e in x21]), sp.Matrix([0, 2 * a])),
+        note=claim("at y = 0 the two branches give x = 0 and x = 2a (Y vanishes at y = 0)."))
+d.quote("axis-AB", "§221", r"erit $AB = 2a$", reading=(sp.Subs(x21[1] - x21[0], y, 0), 2 * a),
+        note=claim("the transverse axis of the curve is AB = 2a."))
+d.quote("breadth-b", "§221", r"maxima huius curvae latitudo est $= b$",
+        reading=(sp.Subs(x21[1] - x21[0], y, b), 0),
+        note=claim("the greatest ordinate (half-breadth) of the curve is b: there the two branches meet "
+                   "(their distance 2a√(1 - y²/b²) vanishes), and beyond it the root is not real."))
+d.quote("greatest-breadth", "§221", r"respondetque abscissae $x = a + Y$, posito in Y loco y valore b",
+        reading=(sp.Matrix([sp.Subs(e, y, b) for e in x21]), sp.Matrix([a + Yg.subs(y, b), a + Yg.subs(y, b)])),
+        note=claim("the greatest breadth b (where √(1 - y²/b²) vanishes) lies at the abscissa a + Y(b), "
+                   "both branches meeting there."))
+d.quote("Oc-general", "§221", r"ponamus $Y = -\frac{cyy}{b^2}$, quo fiat interuallum $Oc = c$",
+        reading=(sp.Subs(a - (a + Yc), y, b), c),
+        note=claim("with Y = -cy²/b² the breadth ce stands at the distance Oc = a - Ac = c from the "
+                   "middle O (towards A)."))
+
+# ================================================================ §222: areas
+AAce, ABce, AAEB, Awhole = sp.symbols("A_{Ace} A_{Bce} A_{AEB} A_{AEBF}")
+integral_step("area-Ace", AAce, xc - xL, note="horizontal strips of Ace from the curve to ce")
+integral_step("area-Bce", ABce, xR - xc)
+integral_step("area-AEB", AAEB, xR - xL, note="the strip width 2(a/b)√(b²-y²) does not contain Y")
+d.step("area-whole", sp.Eq(Awhole, 2 * AAEB), "definition", result=Awhole,
+       note="AFB is the mirror image of AEB (Y even)")
+Yd1 = named("int-y-dY", r"y\,dY", y * dYg)
+CA = named("int-y-dx-Ace", r"y\,dx_{Ace}", y * sp.diff(xL, y),
+           note="Euler's ∫y dx along the curve Ace (x = x_L) from A to e")
+CB = named("int-y-dx-Bce", r"y\,dx_{Bce}", y * sp.diff(xR, y), note="the same along Bce, from 0 to b")
+d.step("by-parts-Ace", (CA, b * xc - sp.Integral(xL, (y, 0, b)), AAce), "integration", uses=("area-Ace",),
+       note="∫y dx along the curve is the area of the strips, by parts (x_L(b) = x_c)")
+d.step("by-parts-Bce", (-CB, ABce), "integration", uses=("area-Bce",),
+       note="∫_b^0 y dx_R = -∫_0^b y dx_R is the area of Bce, by parts")
+d.quote("area-Ace", "§222", r"$= \int y dx = \int y dY + \frac{a}{b} \int \frac{yy dy}{\sqrt{b^2 - yy}}$",
+        reading=(AAce, CA, Yd1 + a / b * V2),
+        note=claim("the portion Ace has the area ∫y dx = ∫y dY + (a/b)∫y²dy/√(b² - y²), from y = 0 to b."))
+d.quote("area-Bce", "§222", r"$= \int y dY - \frac{a}{b} \int \frac{yy dy}{\sqrt{b^2 - yy}}$",
+        reading=(ABce, -CB, -Yd1 - a / b * (-V2)),
+        note=claim("the portion Bce has the area ∫y dY - (a/b)∫y²dy/√(b² - y²), integrals from y = b to 0 "
+                   "(each ∫_b^0 read as -∫_0^b)."))
+d.quote("area-AEB", "§222", r"$= \frac{2a}{b} \int \frac{yy dy}{\sqrt{b^2 - yy}}$ $= D$",
+        reading=(AAEB, 2 * a / b * V2, D),
+        note=claim("the half AEB has the area (2a/b)∫y²dy/√(b² - y²) = D, the area of the half ellipse, "
+                   "whatever Y is (Y = p|y| + qy² here)."))
+d.quote("area-ellipse", "§222",
+        r"aream huius curvae $AEBF$ aequalem esse areae ellipsis, cuius axes sint $2a$ et $2b$",
+        reading=(Awhole, sp.pi * a * b),
+        note=claim("for every single-valued Y the whole figure AEBF has the area of the ellipse with the "
+                   "axes 2a and 2b, πab."))
+
+# ================================================================ §223: moment about AB
+IAce, IBce, IAEB, Iwhole = sp.symbols("I_{Ace} I_{Bce} I_{AEB} I_{AEBF}")
+integral_step("AB-Ace", IAce, y ** 2 * (xc - xL), note="∫∫ y² over Ace, horizontal strips")
+integral_step("AB-Bce", IBce, y ** 2 * (xR - xc))
+integral_step("AB-AEB", IAEB, y ** 2 * (xR - xL))
+d.step("AB-whole", sp.Eq(Iwhole, 2 * IAEB), "definition", result=Iwhole, note="AFB mirrors AEB")
+Yd3 = named("int-y3-dY", r"y^3\,dY", y ** 3 * dYg)
+CIA = named("int-y3-dx-Ace", r"y^3\,dx_{Ace}", y ** 3 * sp.diff(xL, y))
+CIB = named("int-y3-dx-Bce", r"y^3\,dx_{Bce}", y ** 3 * sp.diff(xR, y))
+d.step("AB-by-parts", (CIA / 3, IAce), "integration", uses=("AB-Ace",),
+       note="(1/3)∫y³dx along the curve (vertical strips of height y) is the strip integral")
+d.step("AB-by-parts-Bce", (-CIB / 3, IBce), "integration", uses=("AB-Bce",))
+BAR = ("The integral is ∫y⁴dy/√(bb-yy), as the two lines before it require: dx = dY + (a/b)y dy/√(bb-yy) "
+       "on Ace, so (1/3)∫y³dx carries (a/3b)∫y⁴dy/√(bb-yy); and only with the division does the sum "
+       "(2a/3b)∫y⁴dy/√ = πab³/8 give the Dbb/2 Euler concludes with. The transcription writes the same "
+       "integral three times as a product with √(bb-yy): a fraction bar (or Euler's ':') lost each time, "
+       "while §222 and §225 keep theirs; medium, since only the transcription is available.")
+d.quote("ellipse-at-Y0", "§223", r"posito enim $Y = 0$ curua nostra habet in ellipsis",
+        reading=(sp.Matrix([sp.Subs((e - a) ** 2 / a ** 2 + y ** 2 / b ** 2, (p, q), (0, 0)) for e in x21]),
+                 sp.Matrix([1, 1])),
+        note=claim("for Y = 0 the curve goes over into ('abit in', transcribed 'habet in') the ellipse "
+                   "(x - a)²/a² + y²/b² = 1 of §219."))
+d.quote("AB-Ace", "§223",
+        r"$= \frac{1}{3} \int y^3 dx = \frac{1}{3} \int y^3 dY + \frac{a}{3b} \int y^4 dy \sqrt{bb-yy}$",
+        reading=(IAce, CIA / 3, Yd3 / 3 + a / (3 * b) * U4),
+        erratum=Erratum("transcription", "medium",
+                        r"= \frac{1}{3} \int y^3 dx = \frac{1}{3} \int y^3 dY + \frac{a}{3b} \int \frac{y^4 dy}{\sqrt{bb-yy}}",
+                        BAR, corrected_reading=(IAce, CIA / 3, Yd3 / 3 + a / (3 * b) * V4)),
+        note=claim("the portion Ace has the moment (1/3)∫y³dx = (1/3)∫y³dY + (a/3b)∫y⁴dy/√(bb-yy) about AB."))
+d.quote("AB-Bce", "§223", r"$= \frac{1}{3} \int y^3 dY - \frac{a}{3b} \int y^4 dy \sqrt{bb-yy}$",
+        reading=(IBce, -CIB / 3, -Yd3 / 3 - a / (3 * b) * (-U4)),
+        erratum=Erratum("transcription", "medium",
+                        r"= \frac{1}{3} \int y^3 dY - \frac{a}{3b} \int \frac{y^4 dy}{\sqrt{bb-yy}}", BAR,
+                        corrected_reading=(IBce, -CIB / 3, -Yd3 / 3 - a / (3 * b) * (-V4))),
+        note=claim("the portion Bce has the moment (1/3)∫y³dY - (a/3b)∫y⁴dy/√(bb-yy), integrals from b to 0 (read "
+                   "as -∫_0^b)."))
+d.quote("AB-AEB", "§223", r"$= \frac{2a}{3b} \int y^4 dy \sqrt{bb-yy}$, in quo quantitas Y non ineft",
+        reading=(IAEB, 2 * a / (3 * b) * U4),
+        erratum=Erratum("transcription", "medium", r"= \frac{2a}{3b} \int \frac{y^4 dy}{\sqrt{bb-yy}}", BAR,
+                        corrected_reading=(IAEB, 2 * a / (3 * b) * V4)),
+        note=claim("AEB has the moment (2a/3b)∫y⁴dy/√(bb-yy) about AB, free of Y."))
+d.quote("AB-whole", "§223", r"$= \frac{Dbb}{2} = \frac{ef^2 D}{8}$",
+        reading=(Iwhole, D * b ** 2 / 2, (2 * b) ** 2 * D / 8),
+        note=claim("the whole figure has, like the ellipse, the moment Db²/2 = ef²D/8 about AB (ef = 2b)."))
+
+# ================================================================ §224: moment about aAa (x = 0)
+KAce, KBce, KAEB, Kwhole = sp.symbols("K_{Ace} K_{Bce} K_{AEB} K_{AEBF}")
+integral_step("Aa-Ace", KAce, (xc ** 3 - xL ** 3) / 3, note="∫∫ x² over Ace, horizontal strips")
+integral_step("Aa-Bce", KBce, (xR ** 3 - xc ** 3) / 3)
+integral_step("Aa-AEB", KAEB, (xR ** 3 - xL ** 3) / 3)
+d.step("Aa-whole", sp.Eq(Kwhole, 2 * KAEB), "definition", result=Kwhole, note="AFB mirrors AEB")
+T2, T4 = integral_symbol(r"y\,dY (a+Y) \sqrt{bb-yy}"), integral_symbol(r"\frac{yy\,dy (a+Y)^2}{\sqrt{bb-yy}}")
+integral_step("T2", T2, y * (a + Yg) * R * dYg, note="Euler's ∫y dY (a+Y)√(bb-yy), from 0 to b")
+integral_step("T4", T4, y ** 2 * (a + Yg) ** 2 / R, note="∫yy dy (a+Y)²/√(bb-yy)")
+d.step("Aa-Ace-by-parts", (sp.Integral(_over_root(y * xL ** 2 * sp.diff(xL, y)), (y, 0, b)), KAce), "integration",
+       uses=("Aa-Ace",), note="Euler's ∫y x² dx along the curve (vertical strips) is the strip integral")
+X2L = (a + Yg) ** 2 - 2 * a * (a + Yg) / b * R + a * a - a * a * y ** 2 / b ** 2
+d.step("x-squared", (xL ** 2, X2L), "algebra", note="the square of x = a + Y - (a/b)√(bb-yy)")
+
+
+P1 = named("int-P1", r"y (a+Y)^2\,dY", y * (a + Yg) ** 2 * dYg)
+P3 = named("int-P3", r"y (bb-yy)\,dY", y * (b * b - y * y) * dYg)
+P5 = named("int-P5", r"yy (a+Y)\,dy", y * y * (a + Yg))
+E4 = named("int-E4", r"\frac{y^4 (a+Y)^2\,dy}{\sqrt{bb-yy}}", y ** 4 * (a + Yg) ** 2 / R,
+           note="the fourth integral of §224 as transcribed")
+
+
+def six_terms(sign, reverse):
+    """Euler's six integrals for Ace (sign = -1, from 0 to b) or Bce (sign = +1, from b to 0, each read
+    as -∫_0^b)."""
+    rv = -1 if reverse else 1
+    return rv * (P1 + sign * 2 * a / b * T2 + a * a / b ** 2 * P3 - sign * a / b * T4
+                 - 2 * a * a / b ** 2 * P5 - sign * a ** 3 / b ** 3 * U2)
+
+
+d.quote("Aa-Ace-product", "§224",
+        "$= \\int y (dY + \\frac{aydy}{b\\sqrt{bb-yy}})$\n $(a+Y)^2 - \\frac{2a(a+Y)}{b} V(bb-yy) + aa - "
+        "\\frac{aayy}{bb}",
+        reading=(KAce, sp.Integral(y * (dYg + a * y / (b * R)) * (a + Yg) ** 2, (y, 0, b))
+                 - 2 * a * (a + Yg) / b * R + a * a - a * a * y ** 2 / b ** 2),
+        erratum=Erratum(
+            "transcription", "medium",
+            r"= \int y \left(dY + \frac{ay\,dy}{b\sqrt{bb-yy}}\right)\left((a+Y)^2 - \frac{2a(a+Y)}{b}\sqrt{bb-yy} + aa - \frac{aayy}{bb}\right)",
+            "The moment of Ace about aAa is ∫y x² dx, with dx = dY + ay dy/(b√(bb-yy)) and x² = (a+Y)² - "
+            "2a(a+Y)√(bb-yy)/b + aa - aayy/bb: the whole four-term square multiplies y dx, as the six "
+            "integrals that follow show. As transcribed only (a+Y)² stands under the integral and three "
+            "loose terms in y follow; the vinculum (or brackets) over the second factor is lost.",
+            corrected_reading=(KAce, sp.Integral(y * (dYg + a * y / (b * R)) * X2L, (y, 0, b)))),
+        note=claim("the portion Ace has the moment ∫y(dY + ay dy/(b√(bb-yy)))·x² about aAa, "
+                   "x² = (a+Y)² - 2a(a+Y)√(bb-yy)/b + aa - aayy/bb."))
+d.quote("Aa-Ace-expanded", "§224",
+        r"= \int y (a+Y)^2 dY - \frac{2a}{b} "
+        r"\int y dY (a+Y) V(bb-yy) + \frac{aa}{bb} \int y dY (bb-yy) + \frac{a}{b} \int \frac{yy^2 y(a+Y)^2}"
+        r"{\sqrt{bb-yy}} - \frac{2aa}{bb} \int yy dy (a+Y) + \frac{a^3}{b^3} \int yy dy V(bb-yy)$",
+        reading=(KAce, six_terms(-1, False) - a / b * T4 + a / b * E4),
+        erratum=Erratum(
+            "transcription", "high",
+            r"\ldots + \frac{a}{b} \int \frac{yy\,dy\,(a+Y)^2}{\sqrt{bb-yy}} - \ldots",
+            "The fourth integral comes from (a/b)·y·y dy/√(bb-yy) times (a+Y)²: ∫yy dy (a+Y)²/√(bb-yy), "
+            "printed so for Bce in the same paragraph. 'yy^2 y' has no differential and reads as y⁴: the "
+            "'dy' garbled into '^2 y'. The other five terms are right.",
+            corrected_reading=(KAce, six_terms(-1, False))),
+        note=claim("the moment of Ace about aAa is the sum of the six integrals, taken from y = 0 to b "
+                   "(the excerpt continues the product quoted above)."))
+d.quote("Aa-Bce-expanded", "§224",
+        r"$= \int y (a+Y)^2 dY + \frac{2a}{b} \int y dY (a+Y) V(bb-yy) + \frac{aa}{bb} \int y dY (bb-yy) - "
+        r"\frac{a}{b} \int \frac{yy dy (a+Y)^2}{\sqrt{bb-yy}} - \frac{2aa}{bb} \int yy dy (a+Y) - "
+        r"\frac{a^3}{b^3} \int yy dy V(bb-yy)$ integralibus contrario modo acceptis",
+        reading=(KBce, six_terms(1, True)),
+        note=claim("the portion Bce has the moment given by the six integrals with the signs of the odd "
+                   "powers of √(bb-yy) changed, from y = b to 0 (each read as -∫_0^b)."))
+
+# ================================================================ §225: AEB about aAa
+G2, S2 = integral_symbol(r"y\,d.(a+Y)^2 \sqrt{bb-yy}"), integral_symbol(r"(a+Y)^2 dy \sqrt{bb-yy}")
+E1 = named("int-E1", r"y\,dy (a+Y) \sqrt{bb-yy}", y * (a + Yg) * R, note="the first integral of §225 as transcribed")
+integral_step("G2", G2, y * sp.diff((a + Yg) ** 2 * R, y), note="∫y d.(a+Y)²√(bb-yy), from 0 to b")
+integral_step("S2", S2, (a + Yg) ** 2 * R, note="∫(a+Y)² dy √(bb-yy)")
+F2 = y * (a + Yg) ** 2 * R
+d.step("G2-by-parts", (G2, F2.subs(y, b) - F2.subs(y, 0) - S2, -S2), "integration", uses=("G2", "S2"))
+d.quote("Aa-AEB", "§225",
+        "$aAa = -\\frac{4a}{b} \\int y dy (a+Y) V(bb-yy)$\n $+ \\frac{2a}{b} \\int \\frac{yydy(a+Y)^2}"
+        "{\\sqrt{bb-yy}} + \\frac{2a^3}{b^3} \\int yy dy V(bb-yy) = \\frac{2a^3}{b^3} \\int yy dy V(bb-yy) - "
+        "\\frac{2a}{b} \\int yd.(a+Y)^2 V(bb-yy) = \\frac{2a^3}{b^3} \\int yy dy V(bb-yy)$\n $+ \\frac{2a}{b} "
+        "\\int (a+Y)^2 dy V(bb-yy);$",
+        reading=(KAEB, -4 * a / b * E1 + 2 * a / b * T4
+                 + 2 * a ** 3 / b ** 3 * U2, 2 * a ** 3 / b ** 3 * U2 - 2 * a / b * G2,
+                 2 * a ** 3 / b ** 3 * U2 + 2 * a / b * S2),
+        erratum=Erratum(
+            "transcription", "medium",
+            r"aAa = -\frac{4a}{b} \int y\,dY (a+Y) \sqrt{bb-yy} + \ldots",
+            "The first integral is the sum of the terms ∓(2a/b)∫y dY (a+Y)√(bb-yy) of Ace and Bce (§224 "
+            "prints dY there), and only with dY does -(4a/b)∫y dY(a+Y)√ + (2a/b)∫yy dy(a+Y)²/√ equal "
+            "-(2a/b)∫y d.(a+Y)²√(bb-yy), the next member. The capital Y of 'dY' read as a small y, as "
+            "again in §226; a misprint of 1749 cannot be excluded, hence medium. The other members hold.",
+            corrected_reading=(KAEB, -4 * a / b * T2 + 2 * a / b * T4 + 2 * a ** 3 / b ** 3 * U2,
+                               2 * a ** 3 / b ** 3 * U2 - 2 * a / b * G2, 2 * a ** 3 / b ** 3 * U2 + 2 * a / b * S2)),
+        note=claim("adding the two portions, AEB has the moment -(4a/b)∫y dY(a+Y)√ + (2a/b)∫yy dy(a+Y)²/√ "
+                   "+ (2a³/b³)∫yy dy√ = (2a³/b³)∫yy dy√ - (2a/b)∫y d.(a+Y)²√ = (2a³/b³)∫yy dy√ "
+                   "+ (2a/b)∫(a+Y)²dy√ about aAa (√ = √(bb-yy), integrals from 0 to b)."))
+d.quote("boundary-term", "§225", r"$y(a+Y)^2 V(bb-yy)$ fit $= 0;$ tam si $y=0,$ quam si $y=b.$",
+        reading=(sp.Matrix([sp.Subs(F2, y, 0), sp.Subs(F2, y, b)]), sp.Matrix([0, 0])),
+        note=claim("the integrated part y(a+Y)²√(bb-yy) vanishes at y = 0 and at y = b."))
+DCUBE = ("D³ cannot stand in an area or a length (the integral ∫yy dy√(bb-yy) = πb⁴/16 is of the fourth "
+         "dimension, b³D/8a with D = πab/2); §226 prints the same value as b³D/8a, and a²D/4 + ... follows. "
+         "The transcription turned D into D³ three times in this paragraph (a mark after D read as an "
+         "exponent); high.")
+d.quote("U2-value", "§225",
+        r"$\int yy dy V(bb-yy) = \frac{bb}{4} \int \frac{yydy}{\sqrt{bb-yy}} = \frac{b^3 D^3}{8a},$",
+        reading=(U2, b * b / 4 * V2, b ** 3 * D ** 3 / (8 * a)),
+        erratum=Erratum("transcription", "high",
+                        r"\int yy dy \sqrt{bb-yy} = \frac{bb}{4} \int \frac{yydy}{\sqrt{bb-yy}} = \frac{b^3 D}{8a}",
+                        DCUBE, corrected_reading=(U2, b * b / 4 * V2, b ** 3 * D / (8 * a))),
+        note=claim("from y = 0 to b, ∫yy dy√(bb-yy) = (bb/4)∫yy dy/√(bb-yy) = b³D/8a (by §222)."))
+d.quote("Aa-AEB-value", "§225", r"$= \frac{aaD^3}{4} + \frac{2a}{b} \int (a+Y)^2 dy V(bb-yy);$",
+        reading=(KAEB, a * a * D ** 3 / 4 + 2 * a / b * S2),
+        erratum=Erratum("transcription", "high", r"= \frac{aaD}{4} + \frac{2a}{b} \int (a+Y)^2 dy \sqrt{bb-yy}",
+                        DCUBE, corrected_reading=(KAEB, a * a * D / 4 + 2 * a / b * S2)),
+        note=claim("AEB has the moment a²D/4 + (2a/b)∫(a+Y)²dy√(bb-yy) about aAa."))
+d.quote("Aa-whole", "§225", r"$= \frac{aaD^3}{2} + \frac{2a}{b} \int (a+Y)^2 dy V(bb-yy),$",
+        reading=(Kwhole, a * a * D ** 3 / 2 + 2 * a / b * S2),
+        erratum=Erratum(
+            "misprint", "medium", r"= \frac{aaD}{2} + \frac{4a}{b} \int (a+Y)^2 dy \sqrt{bb-yy}",
+            "The whole figure has twice the moment of AEB, a²D/2 + (4a/b)∫(a+Y)²dy√(bb-yy): the first term "
+            "is doubled in the print, the second is not. D³ for D is the transcription's (as above); the "
+            "2a/b is repeated in the moment about EF of §226, so it stood in the print (or in Euler's "
+            "manuscript). §227's result a²D/2 + c²D/8 needs 4a/b, so the slip did not enter the "
+            "calculation; medium.",
+            corrected_reading=(Kwhole, a * a * D / 2 + 4 * a / b * S2)),
+        note=claim("with the half AFB equal to AEB, the whole figure has the moment a²D/2 + (2a/b)∫(a+Y)²dy√ "
+                   "about aAa."))
+
+# ================================================================ §226: centroid and the moment about EF
+FAEB, AC, KEF = sp.symbols("F_{AEB} AC K_{EF}")
+W1, Z1, G1, S1 = (integral_symbol(t) for t in (r"\frac{y^2 dy (a+Y)}{\sqrt{bb-yy}}", r"y\,dY \sqrt{bb-yy}",
+                                               r"y\,d.(a+Y) \sqrt{bb-yy}", r"(a+Y) dy \sqrt{bb-yy}"))
+integral_step("first-moment", FAEB, (xR ** 2 - xL ** 2) / 2, note="∫∫ x over AEB (moment about aAa)")
+d.step("centroid", sp.Eq(AC, FAEB / AAEB), "definition", result=AC,
+       note="the abscissa of the centroid C of AEB, and of the whole figure (AFB mirrors AEB)")
+integral_step("W1", W1, y ** 2 * (a + Yg) / R, note="∫y²dy(a+Y)/√(bb-yy), from 0 to b")
+integral_step("Z1", Z1, y * R * dYg, note="∫y dY √(bb-yy)")
+integral_step("G1", G1, y * sp.diff((a + Yg) * R, y), note="∫y d.(a+Y)√(bb-yy)")
+integral_step("S1", S1, (a + Yg) * R, note="∫(a+Y) dy √(bb-yy)")
+ACv = sp.factor(_closed((xR ** 2 - xL ** 2) / 2) / _closed(xR - xL))
+integral_step("moment-EF", KEF, 2 * ((xR - ACv) ** 3 - (xL - ACv) ** 3) / 3,
+              note="∫∫ (x - AC)² over the whole figure (twice AEB), about EF through the centroid")
+d.step("AC-value", (AC, ACv), "algebra", uses=("centroid", "first-moment", "area-AEB"))
+XY = named("int-xy-dx", r"\left(\int_{0}^{b} xy\,dx_{Ace} - \int_{0}^{b} xy\,dx_{Bce}\right)", y * (xL * sp.diff(xL, y) - xR * sp.diff(xR, y)),
+           note="∫xy dx along Ace from A to e and back along Bce from e to B")
+E0 = named("int-E0", r"y\,dy \sqrt{bb-yy}", y * R, note="the second integral of §226 as transcribed")
+d.step("DAC-by-parts", (XY, FAEB), "integration",
+       uses=("first-moment",), note="∫xy dx along Ace and back along Bce is the strip integral")
+d.step("parallel-axes", (KEF, Kwhole - 2 * D * AC ** 2), "algebra",
+       uses=("moment-EF", "Aa-whole", "centroid", "semi-ellipse"))
+d.quote("DAC-definition", "§226", r"$DAC = \int y dx$",
+        reading=(D * AC, CA - CB),
+        erratum=Erratum(
+            "transcription", "medium", r"D \cdot AC = \int xy\,dx",
+            "D·AC is the moment of AEB about aAa, ∫xy dx (the strip y dx at the distance x); ∫y dx over AEB "
+            "is the area D itself (§222), which would make AC = 1. The next member, (2a/b)∫yy dy(a+Y)/√ - "
+            "..., is the moment. An x lost in the transcription ('yx dx'), or omitted by the printer: "
+            "medium.",
+            corrected_reading=(D * AC, XY)),
+        note=claim("D·AC is the integral ∫y dx (as printed) extended over AEB."))
+d.quote("DAC", "§226",
+        r"$DAC = \frac{2a}{b} \int \frac{y^2 dy(a+Y)}{\sqrt{bb-yy}} - \frac{2a}{b} \int y dy V(bb-yy) = "
+        r"-\frac{2a}{b} \int yd.(a+Y) V(bb-yy) = \frac{2a}{b} \int (a+Y) dy V(bb-yy),$",
+        reading=(D * AC, 2 * a / b * W1 - 2 * a / b * E0, -2 * a / b * G1,
+                 2 * a / b * S1),
+        erratum=Erratum(
+            "transcription", "medium", r"DAC = \frac{2a}{b} \int \frac{y^2 dy(a+Y)}{\sqrt{bb-yy}} - \frac{2a}{b} \int y\,dY \sqrt{bb-yy} = \ldots",
+            "x dx = d(x²/2) on both branches gives (2a/b)∫yy dy(a+Y)/√(bb-yy) - (2a/b)∫y dY√(bb-yy), and "
+            "only so is it -(2a/b)∫y d.(a+Y)√(bb-yy), the next member (d.(a+Y)√ = dY√ - (a+Y)y dy/√). "
+            "dY read as dy, as in §225; the other members hold.",
+            corrected_reading=(D * AC, 2 * a / b * W1 - 2 * a / b * Z1, -2 * a / b * G1, 2 * a / b * S1)),
+        note=claim("D·AC = (2a/b)∫y²dy(a+Y)/√ - (2a/b)∫y dY√ = -(2a/b)∫y d.(a+Y)√ = (2a/b)∫(a+Y)dy√ "
+                   "(√ = √(bb-yy), from 0 to b)."))
+d.quote("AC", "§226", r"$AC = \frac{2a}{bD} \int (a+Y) dy V(bb-yy).$", reading=(AC, 2 * a / (b * D) * S1),
+        note=claim("hence AC = (2a/bD)∫(a+Y)dy√(bb-yy)."))
+d.quote("moment-EF", "§226",
+        r"$= \frac{aaD}{2} + \frac{2a}{b} \int (a+Y)^2 dy V(bb-yy) - \frac{aa}{bbD} (\int (a+Y) dy V(bb-yy)).$",
+        reading=(KEF, a * a * D / 2 + 2 * a / b * S2 - a * a / (b * b * D) * S1),
+        erratum=Erratum(
+            "misprint", "medium",
+            r"= \frac{aaD}{2} + \frac{4a}{b} \int (a+Y)^2 dy \sqrt{bb-yy} - \frac{8aa}{bbD} \left(\int (a+Y) dy \sqrt{bb-yy}\right)^2",
+            "The moment about aAa less 2D·AC² (area 2D, §217) with AC = (2a/bD)∫(a+Y)dy√ is "
+            "a²D/2 + (4a/b)∫(a+Y)²dy√ - (8a²/b²D)(∫(a+Y)dy√)². The print repeats the 2a/b of §225 and has "
+            "aa/bbD without the square of the integral (the last term then is not even a moment); the "
+            "square and the 8 may be the transcription's losses, the 2a/b is the print's. §227's value "
+            "a²D/2 + c²D/8 follows only from the corrected formula; medium.",
+            corrected_reading=(KEF, a * a * D / 2 + 4 * a / b * S2 - 8 * a * a / (b * b * D) * S1 ** 2)),
+        note=claim("about the latitudinal axis EF through C the whole figure has the moment "
+                   "a²D/2 + (2a/b)∫(a+Y)²dy√ - (aa/bbD)(∫(a+Y)dy√)."))
+d.quote("reduce-V2", "§226", r"$\int \frac{yydy}{\sqrt{bb-yy}} = \frac{bD}{2a}$", reading=(V2, b * D / (2 * a)),
+        note=claim("for even Y the integrals reduce to ∫yy dy/√(bb-yy) = bD/2a (from 0 to b) ..."))
+d.quote("reduce-U2", "§226", r"seu hanc $\int yy dy V(bb-yy) = \frac{b^3 D}{8a},$",
+        reading=(U2, b ** 3 * D / (8 * a)), note=claim("... or ∫yy dy√(bb-yy) = b³D/8a ..."))
+d.quote("reduce-U0", "§226", r"$\int dy V(bb-yy) = \frac{bD}{2a}.$", reading=(U0, b * D / (2 * a)),
+        note=claim("... or ∫dy√(bb-yy) = bD/2a."))
+
+# ================================================================ §227: Y = -cyy/bb
+xLc, xRc = a + Yc - a * R / b, a + Yc + a * R / b
+AEBc, FAEBc, ACc, KEFc = sp.symbols("A_{AEBc} F_{AEBc} AC_c K_{EFc}")
+S2c = integral_symbol(r"\left(a - \tfrac{cyy}{bb}\right)^2 dy \sqrt{bb-yy}")
+S1c = integral_symbol(r"\left(a - \tfrac{cyy}{bb}\right) dy \sqrt{bb-yy}")
+integral_step("S2c", S2c, (a + Yc) ** 2 * R, note="∫(a+Y)²dy√(bb-yy) with Y = -cyy/bb")
+integral_step("S1c", S1c, (a + Yc) * R)
+integral_step("area-c", AEBc, xRc - xLc)
+integral_step("first-moment-c", FAEBc, (xRc ** 2 - xLc ** 2) / 2)
+d.step("centroid-c", sp.Eq(ACc, FAEBc / AEBc), "definition", result=ACc)
+ACcv = sp.factor(_closed((xRc ** 2 - xLc ** 2) / 2) / _closed(xRc - xLc))
+kefc = integral_step("moment-EF-c", KEFc, 2 * ((xRc - ACcv) ** 3 - (xLc - ACcv) ** 3) / 3,
+              note="∫∫ (x - AC)² over the whole figure for Y = -cyy/bb")
+d.step("AC-c-value", (ACc, ACcv), "algebra", uses=("centroid-c", "first-moment-c", "area-c"))
+BRANCHES_C = sp.Matrix([xLc, xRc])
+d.quote("curve-c", "§227", r"seu $x = a - \frac{cyy}{bb} + \frac{c}{b} V(bb-yy),$",
+        reading=(xRc, a - c * y ** 2 / b ** 2 + c / b * R),
+        erratum=Erratum(
+            "transcription", "medium", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
+            "Y = -cyy/bb put into x = a + Y ± a√(1 - yy/bb) of §221 gives a - cyy/bb ± (a/b)√(bb-yy); with "
+            "(c/b)√ the curve would not end at B (x = a + c at y = 0, not 2a). The letters a and c are "
+            "confused again in 'Oc = a' next to it; the ± of §221 shortened to the branch of Bce. Medium.",
+            corrected_reading=(BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
+                                                      a - c * y ** 2 / b ** 2 + a / b * R]))),
+        note=claim("with Y = -cyy/bb the curve is x = a - cyy/bb + (c/b)√(bb-yy); read as the branch Bce."))
+d.quote("Oc", "§227", r"ex qua fit $Oc = a$ vti assumsumus",
+        reading=(sp.Subs(a - xLc, y, b), a),
+        erratum=Erratum(
+            "transcription", "medium", r"Oc = c",
+            "At y = b both branches give x = a - c, so Ac = a - c and Oc = AO - Ac = c, 'as we assumed' "
+            "(§220, §221, and §232: 'Ac = a - c et Oc = c'). a for c, the confusion of the line before.",
+            corrected_reading=(sp.Subs(a - xLc, y, b), c)),
+        note=claim("the breadth ef stands at Oc = c from the middle O, as assumed."))
+d.quote("S2c-expanded", "§227",
+        "$\\int (a+Y)^2 dy V(bb-yy) = a^2 \\int dy V(bb-yy) - \\frac{2ac}{bb} \\int yy dy$\n "
+        "$V(bb-yy) + \\frac{cc}{b^4} \\int y^4 dy V(bb-yy)$",
+        reading=(S2c, a * a * U0 - 2 * a * c / b ** 2 * U2 + c * c / b ** 4 * U4),
+        note=claim("∫(a+Y)²dy√ = a²∫dy√ - (2ac/bb)∫yy dy√ + (cc/b⁴)∫y⁴dy√ for Y = -cyy/bb."))
+SHIFT = ("From y = 0 to b: ∫dy√(bb-yy) = πb²/4 = bD/2a, ∫yy dy√ = πb⁴/16 = b³D/8a, ∫y⁴dy√ = πb⁶/32 = "
+         "b⁵D/16a (D = πab/2; the first two as printed in §226). The line that follows, abD/2 - bcD/4 + "
+         "bccD/16a, is made of exactly these values, so Euler had them. The transcription gives "
+         "b³D/8a, b⁵D/16a, b⁹D/16a: each value moved one integral on, the last exponent garbled. The "
+         "printed page cannot be seen; low.")
+d.quote("U0-value", "§227", r"Verum est $\int dy V(bb-yy) = \frac{b^3 D}{8a}$",
+        reading=(U0, b ** 3 * D / (8 * a)),
+        erratum=Erratum("transcription", "low", r"\int dy \sqrt{bb-yy} = \frac{bD}{2a}", SHIFT,
+                        corrected_reading=(U0, b * D / (2 * a))),
+        note=claim("∫dy√(bb-yy) = b³D/8a (as printed)."))
+d.quote("U2-value-c", "§227", r"$\int yy dy V(bb-yy) = \frac{b^5 D}{16a}$", reading=(U2, b ** 5 * D / (16 * a)),
+        erratum=Erratum("transcription", "low", r"\int yy dy \sqrt{bb-yy} = \frac{b^3 D}{8a}", SHIFT,
+                        corrected_reading=(U2, b ** 3 * D / (8 * a))),
+        note=claim("∫yy dy√(bb-yy) = b⁵D/16a (as printed)."))
+d.quote("U4-value", "§227", r"$\int y^4 dy V(bb-yy) = \frac{b^9 D}{16a}$", reading=(U4, b ** 9 * D / (16 * a)),
+        erratum=Erratum("transcription", "low", r"\int y^4 dy \sqrt{bb-yy} = \frac{b^5 D}{16a}", SHIFT,
+                        corrected_reading=(U4, b ** 5 * D / (16 * a))),
+        note=claim("∫y⁴dy√(bb-yy) = b⁹D/16a (as printed)."))
+d.quote("S2c-value", "§227",
+        r"$\int (a+Y)^2 dy V(bb-yy) = \frac{abD}{2} - \frac{bcD}{4} + \frac{bccD}{16a} = \frac{bD}{16a} (8aa - 4ac + cc)$",
+        reading=(S2c, a * b * D / 2 - b * c * D / 4 + b * c * c * D / (16 * a),
+                 b * D / (16 * a) * (8 * a * a - 4 * a * c + c * c)),
+        note=claim("hence ∫(a+Y)²dy√(bb-yy) = abD/2 - bcD/4 + bc²D/16a = bD(8a² - 4ac + c²)/16a."))
+d.quote("S1c-value", "§227", r"$\int (a+Y) dy V(bb-yy) = \frac{bD}{2} - \frac{bcD}{8a} = \frac{bD}{8a} (4a - c)$",
+        reading=(S1c, b * D / 2 - b * c * D / (8 * a), b * D / (8 * a) * (4 * a - c)),
+        note=claim("likewise ∫(a+Y)dy√(bb-yy) = bD/2 - bcD/8a = bD(4a - c)/8a."))
+d.quote("AC-c", "§227", r"$AC = a - \frac{c}{4}$", reading=(ACc, a - c / 4),
+        note=claim("the centroid lies at AC = a - c/4."))
+d.quote("moment-EF-c", "§227",
+        r"$EF = \frac{aaD}{2} + \frac{ccD}{8} = \frac{AB^2 D}{8} + \frac{cc^2 D}{128}$",
+        reading=(KEFc, a * a * D / 2 + c * c * D / 8, (2 * a) ** 2 * D / 8 + c * c ** 2 * D / 128),
+        erratum=Erratum(
+            "transcription", "low", r"= \frac{AB^2 D}{8} + \frac{ccD}{8}",
+            "a²D/2 + c²D/8 (the member before, which holds) with AB = 2a is AB²D/8 + c²D/8; c·c²D/128 is "
+            "neither. The 128 belongs to §228's AB²D/128 (c = a/2); what the print had after '+' cannot be "
+            "told from the transcription, low.",
+            corrected_reading=(KEFc, a * a * D / 2 + c * c * D / 8, (2 * a) ** 2 * D / 8 + c * c * D / 8)),
+        note=claim("the whole figure AEBF has the moment a²D/2 + c²D/8 = AB²D/8 + ... about EF."))
+
+# ================================================================ §228: growth, the limit c <= a/2, c = a/2
+d.step("left-branch-split", (xLc, (a / 2 - c) * y ** 2 / b ** 2 + a / 2 * (1 - R / b) ** 2), "algebra",
+       note="x_L = (a/2 - c) y²/b² + (a/2)(1 - √(bb-yy)/b)²: both terms >= 0 for c <= a/2, so the curve "
+            "stays on the side x >= 0 of aa")
+d.step("left-branch-slope", (sp.Limit(xLc * b ** 2 / y ** 2, y, 0), a / 2 - c), "limit",
+       note="near A, x_L = (a/2 - c) y²/b² + O(y⁴): negative for c > a/2, the curve crosses aa")
+d.quote("moment-grows", "§228",
+        "momentum sectionis aquae respectu axis latitudinalis EF maius fieri, quo magis latitudo maxima ef a "
+        "punto axis AB medio C distet, ceteris paribus",
+        reading=(sp.Derivative(KEFc, c), c * D / 4),
+        note=claim("the moment about EF grows as ef moves away from the middle of AB (the text says 'C', the "
+                   "middle is O): at fixed a, b, D its derivative in c = Oc is cD/4 > 0."))
+d.quote("curve-c-again", "§228", r"$a = a - \frac{cyy}{bb} + \frac{c}{b}$ $V(bb-yy)$",
+        reading=sp.Eq(a, a - c * y ** 2 / b ** 2 + c / b * R),
+        erratum=Erratum(
+            "transcription", "low", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
+            "The assumed equation is the curve of §227, x = a - cyy/bb ± (a/b)√(bb-yy); the transcription "
+            "has a for x and repeats the c/b of §227. Low: three letters differ.",
+            corrected_reading=(BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
+                                                      a - c * y ** 2 / b ** 2 + a / b * R]))),
+        note=claim("the assumed equation (of §227)."))
+d.quote("c-limit", "§228",
+        r"non permittit, vt capiatur $c > \frac{1}{2}a$, alias enim curua ultra rectam aa excurreret",
+        reading=(sp.Matrix([sp.Limit(xLc * b ** 2 / y ** 2, y, 0), xLc - (a / 2 - c) * y ** 2 / b ** 2]),
+                 sp.Matrix([a / 2 - c, a / 2 * (1 - R / b) ** 2])),
+        note=claim("for c > a/2 the curve would run beyond the line aa (x < 0). Read as the two facts that "
+                   "decide it: near A the branch Ace is x = (a/2 - c)y²/b² + O(y⁴), negative for c > a/2; and "
+                   "x - (a/2 - c)y²/b² = (a/2)(1 - √(bb-yy)/b)² >= 0, so for c <= a/2 no point has x < 0."))
+d.quote("c-half", "§228", r"$c = \frac{1}{2}a$ seu $Oc = \frac{1}{2}AO = \frac{1}{4}AB$",
+        reading=(a / 2, a / 2, 2 * a / 4), note=claim("c = a/2 is Oc = AO/2 = AB/4."))
+KEFh, KEF0 = sp.symbols("K_{EF}(c=a/2) K_{EF}(c=0)")
+d.step("moment-EF-half-value", (KEFh, sp.Subs(KEFc, c, a / 2), kefc.subs(c, a / 2)), "substitution",
+       uses=("moment-EF-c",), result=KEFh, note="Oc = AB/4")
+d.step("moment-EF-ellipse", (KEF0, sp.Subs(KEFc, c, 0), kefc.subs(c, 0)), "substitution",
+       uses=("moment-EF-c",), result=KEF0, note="c = 0: the ellipse of §219 (AB²D/8 there)")
+d.quote("moment-EF-half", "§228", r"$= \frac{AB^2 D}{8} + \frac{AB^2 D}{128}$",
+        reading=(KEFh, (2 * a) ** 2 * D / 8 + (2 * a) ** 2 * D / 128),
+        note=claim("at c = a/2 the moment about EF is AB²D/8 + AB²D/128."))
+d.quote("sixteenth", "§228", "momentum respectu axis latitudinalis sui parte decima sexta augetur",
+        reading=((KEFh - KEF0) / KEF0, sp.Rational(1, 16)),
+        note=claim("moving ef to Oc = AB/4 increases the moment about EF by a sixteenth of the ellipse's "
+                   "(c = 0)."))
+
+# ================================================================ witnesses: quadrature over each figure
+# The figure at height y runs from x_L(y) = a + Y - (a/b)√(b² - y²) to x_R(y) = a + Y + (a/b)√(b² - y²),
+# split at x_c = a + Y(b) into Ace and Bce; the whole figure takes y from -b to b with Y(|y|).  The
+# integrand is a polynomial of degree <= 2 in x: the three-point Gauss rule across the chord is exact.
+# In y: mpmath.quad (tanh-sinh, adaptive) at 50 digits; Gauss-Legendre in theta (y = b sin theta,
+# 48 nodes per half) in float64.  Nothing of the formulas under test is used.
+
+_GL3 = ((sp.Rational(5, 9), -sp.sqrt(sp.Rational(3, 5))), (sp.Rational(8, 9), 0),
+        (sp.Rational(5, 9), sp.sqrt(sp.Rational(3, 5))))
+_NODES, _WEIGHTS = np.polynomial.legendre.leggauss(48)
+_MEMO = {}
+
+
+def _num(v, dps):
+    return mpmath.mpf(sp.N(v, dps + 10)) if dps > 15 else float(v)
+
+
+def _figure(case, dps):
+    """(a, b, Y) of the case as numbers; Y(y) of the generic figure (p, q; 0 when absent) or of Euler's (c)."""
+    A, B = _num(case.params[a], dps), _num(case.params[b], dps)
+    if c in case.params:
+        C = _num(case.params[c], dps)
+        return A, B, lambda t: -C * t * t / (B * B)
+    P, Q = (_num(case.params.get(k, 0), dps) for k in (p, q))
+    return A, B, lambda t: P * abs(t) + Q * t * t
+
+
+def figure_integral(case, region, f, dps, whole=False):
+    """∫∫ f(x, y) over the region ('Ace', 'Bce' or 'AEB') of the half y >= 0, or over the whole figure."""
+    key = (case.label, tuple(sorted((str(k), str(v)) for k, v in case.params.items())), region, f, whole, dps)
+    if key in _MEMO:
+        return _MEMO[key]
+    A, B, Yf = _figure(case, dps)
+    sq = mpmath.sqrt if dps > 15 else np.sqrt
+    gl = [(_num(w, dps), _num(t, dps)) for w, t in _GL3]
+
+    def strip(t):
+        r = A / B * sq(B * B - t * t)
+        xl, xr, xc = A + Yf(t) - r, A + Yf(t) + r, A + Yf(B)
+        lo, hi = {"Ace": (xl, xc), "Bce": (xc, xr), "AEB": (xl, xr)}[region]
+        h, m = (hi - lo) / 2, (hi + lo) / 2
+        return h * sum(w * f(m + h * u, t) for w, u in gl)
+
+    if dps > 15:
+        value = mpmath.quad(strip, [-B, 0, B] if whole else [0, B])
+    else:
+        halves = ((-np.pi / 2, 0), (0, np.pi / 2)) if whole else ((0, np.pi / 2),)
+        value = 0.0
+        for lo, hi in halves:
+            tt = (hi - lo) / 2 * _NODES + (hi + lo) / 2
+            value += float(np.sum((hi - lo) / 2 * _WEIGHTS * B * np.cos(tt) * strip(B * np.sin(tt))))
+    _MEMO[key] = value
+    return value
+
+
+def line_integral(case, g, dps):
+    """∫_0^b g(y) dy: mpmath.quad in y (tanh-sinh) at 50 digits, Gauss-Legendre in theta (y = b sin theta)
+    in float64."""
+    A, B, Yf = _figure(case, dps)
+    if dps > 15:   # twice the digits: the nodes crowd at y = b, where b - y must keep its digits
+        with mpmath.workdps(2 * dps):
+            A, B, Yf = _figure(case, 2 * dps)
+            return +mpmath.quad(lambda t: g(t, A, B, Yf, mpmath.sqrt((B - t) * (B + t))), [0, B])
+    tt = np.pi / 4 * (_NODES + 1)
+    return float(np.sum(np.pi / 4 * _WEIGHTS * B * np.cos(tt) * g(B * np.sin(tt), A, B, Yf, B * np.cos(tt))))
+
+
+def ONE(X, Y):
+    return 1 + 0 * X
+
+
+def YY(X, Y):
+    return Y * Y + 0 * X
+
+
+def XX(X, Y):
+    return X * X
+
+
+def XONE(X, Y):
+    return X + 0 * Y
+
+
+def _cases(*rows):
+    return tuple(Case({k: sp.Rational(v) for k, v in params.items()}, label=label) for label, params in rows)
+
+
+GEN = _cases(("a = 2, b = 1, Y = |y|/4 + y²/8", {a: 2, b: 1, p: "1/4", q: "1/8"}),
+             ("a = 5/2, b = 3/4, Y = |y|/10 - y²/3", {a: "5/2", b: "3/4", p: "1/10", q: "-1/3"}))
+CFIG = _cases(("a = 2, b = 1, c = 1/2", {a: 2, b: 1, c: "1/2"}),
+              ("a = 5/2, b = 3/4, c = 1", {a: "5/2", b: "3/4", c: 1}))
+AB_ONLY = _cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
+
+
+def figure_witness(name, description, targets, cases, compute):
+    d.witness(Computed(name, description, tuple(targets), cases, compute=compute))
+
+
+for _region in ("Ace", "Bce", "AEB"):
+    figure_witness(f"area-{_region}", f"∫∫ 1 over {_region} by 2-D quadrature", (f"area-{_region}",), GEN,
+                   lambda cs, dps, r=_region: figure_integral(cs, r, ONE, dps))
+    figure_witness(f"AB-{_region}", f"∫∫ y² over {_region} by 2-D quadrature", (f"AB-{_region}",), GEN,
+                   lambda cs, dps, r=_region: figure_integral(cs, r, YY, dps))
+figure_witness("area-whole", "∫∫ 1 over the whole figure AEBF", ("area-ellipse",), GEN,
+               lambda cs, dps: figure_integral(cs, "AEB", ONE, dps, whole=True))
+figure_witness("AB-whole", "∫∫ y² over the whole figure AEBF", ("AB-whole",), GEN,
+               lambda cs, dps: figure_integral(cs, "AEB", YY, dps, whole=True))
+figure_witness("Aa-Ace", "∫∫ x² over Ace (moment about aAa, x = 0)", ("Aa-Ace-expanded",), GEN,
+               lambda cs, dps: figure_integral(cs, "Ace", XX, dps))
+figure_witness("Aa-Bce", "∫∫ x² over Bce", ("Aa-Bce-expanded",), GEN,
+               lambda cs, dps: figure_integral(cs, "Bce", XX, dps))
+figure_witness("Aa-AEB", "∫∫ x² over AEB", ("Aa-AEB", "Aa-AEB-value"), GEN,
+               lambda cs, dps: figure_integral(cs, "AEB", XX, dps))
+figure_witness("Aa-whole", "∫∫ x² over the whole figure", ("Aa-whole",), GEN,
+               lambda cs, dps: figure_integral(cs, "AEB", XX, dps, whole=True))
+figure_witness("first-moment", "∫∫ x over AEB (D·AC)", ("DAC-definition", "DAC"), GEN,
+               lambda cs, dps: figure_integral(cs, "AEB", XONE, dps))
+
+
+def _centroid(cs, dps):
+    return figure_integral(cs, "AEB", XONE, dps) / figure_integral(cs, "AEB", ONE, dps)
+
+
+def _moment_EF(cs, dps):
+    xc = _centroid(cs, dps)
+    return figure_integral(cs, "AEB", lambda X, Y: (X - xc) ** 2, dps, whole=True)
+
+
+figure_witness("centroid", "∫∫ x / ∫∫ 1 over AEB", ("AC",), GEN, _centroid)
+figure_witness("moment-EF", "∫∫ (x - x_C)² over the whole figure, x_C by quadrature", ("moment-EF",), GEN,
+               _moment_EF)
+figure_witness("centroid-c", "∫∫ x / ∫∫ 1 over AEB, Y = -cy²/b²", ("AC-c",), CFIG, _centroid)
+figure_witness("moment-EF-c", "∫∫ (x - x_C)² over the whole figure, Y = -cy²/b²", ("moment-EF-c",), CFIG,
+               _moment_EF)
+
+
+def _at(cs, cval):
+    params = dict(cs.params)
+    params[c] = cval
+    return Case(params, label=f"{cs.label}, c = {cval}")
+
+
+figure_witness("moment-EF-half", "∫∫ (x - x_C)² over the figure with c = a/2", ("moment-EF-half",), AB_ONLY,
+               lambda cs, dps: _moment_EF(_at(cs, cs.params[a] / 2), dps))
+figure_witness("sixteenth", "(K(c = a/2) - K(c = 0))/K(c = 0), both moments by quadrature", ("sixteenth",),
+               AB_ONLY, lambda cs, dps: (_moment_EF(_at(cs, cs.params[a] / 2), dps) - _moment_EF(_at(cs, 0), dps))
+               / _moment_EF(_at(cs, 0), dps))
+
+
+def line_witness(name, targets, cases, g, text):
+    figure_witness(name, f"∫_0^b {text} dy by quadrature", targets, cases, lambda cs, dps: line_integral(cs, g, dps))
+
+
+line_witness("U0", ("reduce-U0", "U0-value"), AB_ONLY, lambda t, A, B, Yf, r: r, "√(b² - y²)")
+line_witness("U2", ("U2-value", "reduce-U2", "U2-value-c"), AB_ONLY, lambda t, A, B, Yf, r: t * t * r,
+             "y²√(b² - y²)")
+line_witness("U4", ("U4-value",), AB_ONLY, lambda t, A, B, Yf, r: t ** 4 * r, "y⁴√(b² - y²)")
+line_witness("V2", ("reduce-V2",), AB_ONLY, lambda t, A, B, Yf, r: t * t / r, "y²/√(b² - y²)")
+line_witness("S2c", ("S2c-expanded", "S2c-value"), CFIG, lambda t, A, B, Yf, r: (A + Yf(t)) ** 2 * r,
+             "(a - cy²/b²)²√(b² - y²)")
+line_witness("S1c", ("S1c-value",), CFIG, lambda t, A, B, Yf, r: (A + Yf(t)) * r, "(a - cy²/b²)√(b² - y²)")

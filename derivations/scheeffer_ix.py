@@ -1,0 +1,1248 @@
+"""Scheeffer 1902, IX: the rectangular parallelepiped turned about an axis parallel to an edge.
+
+A box with edges a, b, c (density s) floats upright with b vertical; it is turned about a horizontal
+axis parallel to c (c > a).  Everything happens in the cross-section a x b, so the problem is plane.
+
+First region (A): the water plane cuts the two long side faces only, the first rotation domain of
+sections IV-V.  Upright stability is Duhamel's (a/b)^2 > 6s(1-s) (123); the oblique equilibrium is
+tan^2 phi_1 = 12 (b/a)^2 s(1-s) - 2 (125), stable because the base moment about the perpendicular
+axis is the larger one (126, 127); it stays in the first region while (a/b)^2 >= 2(1-s)(4s-1)
+(130-132).  Turned about the a-axis instead, the same formulas with c for a (128), partly unstable.
+
+Second region (B): the dry part is a right triangle at the rising top corner with legs x (along b)
+and x cot phi_2 (along a).  Its area fixes x^2 = 2ab(1-s) tan phi_2 (134); the horizontal offset m_3
+of its centroid from the vertical through the centroid S of the body is the righting arm up to the
+factor (1-s)/s, and with z = x/b it is sin phi_2 F(z) b/(3 z^3) with the quartic
+F(z) = z^4 - 3/2 z^3 + 3 n sigma z - 4 n sigma^2 (133, 136), n = (a/b)^2, sigma = 1 - s.  Here F is
+derived from the wedge geometry of the tilted section (the centroid of the dry triangle), and
+d(potential)/d phi_2 = (sigma/s) m_3 is checked by differentiating the closed potential.  The region is
+2 sigma <= z <= 1 (135).  Scheeffer counts the roots of F in that interval: F'' = 3z(4z-3) (138) gives
+the inflections, F'(3/4) >= 0 makes F monotone (139), which holds for all n >= 1 when s <= 23/32
+(140); F(2 sigma) and F(1) (141, 142) then decide (143, 144).  For s > 23/32 the double roots of F
+are found by eliminating z between F = 0 and F' = 0 (146-149) with t = (128 sigma - 9)/27; here the
+double-root locus is parametrised by the double root itself (sigma and n are rational functions of
+it), which gives S = n + 1/n (151-154), n_1 (153, 156) and the double root z_1 (155-158) and shows
+2 sigma < z_1 < 1 (159, 160).  The case tables (161, 162, 162a) and the bound for complete
+stability, HG < c (163), with the sufficient (164).
+
+Third region (C): the first region with a and b exchanged: the other upright position (a vertical)
+and its oblique equilibrium cot^2 phi_3 = 12 (a/b)^2 s(1-s) - 2 (164a-166), and the closing tables.
+
+Witnesses (``symfloat.geometry.floating``): the box is clipped by the water plane at the draught
+found from the volume.  Metacentric heights come from the clipped waterplane; equilibrium tilts are
+roots of the righting arm h.(G - B) (the derivative of the clipped potential, checked against a
+difference quotient in the tests); the dry leg x is the distance of the rising corner from the
+clipped water plane along the side b; m_3 is the offset of the centroid of the clipped dry part;
+F', F'' are difference stencils of the clipped quantity; the double root (z_1, n_1) is the solution
+of GZ = 0 = dGZ/dphi in (phi, a) by Newton's method on the clipped geometry.
+
+Conventions: body frame x along a, y along b, z along c; the up vector u = (sin phi, cos phi, 0)
+raises the corner D = (a/2, b/2); h = du/dphi.  The predictor (``tables_prediction``) reads the
+printed tables for any box and any edge as axis.
+"""
+import functools
+import math
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, Computed
+from symfloat.geometry.floating import box, floating_state
+from symfloat.model.prediction import Prediction
+
+a, b, c, s = sp.symbols("a b c s", positive=True)
+phi, phi1, z, t, w = sp.symbols("varphi_2 varphi_1 z t w", positive=True)
+xl, Ll = sp.symbols("x L", positive=True)
+x_, y_, zz = sp.symbols("xi eta zeta", real=True)
+e_print = sp.Symbol("e", positive=True)
+nu = sp.Symbol("nu", positive=True)                # n as a free variable (n itself is the result (a/b)^2)          # the scan's letter for varrho in the closing tables
+half = sp.Rational(1, 2)
+
+# results
+T1, T11, V1, e1, GZ1, GMa, GMc, GM3 = sp.symbols("T_1 T_1^1 V_1 e_1 GZ_1 GM_a GM_c GM_3")
+tan2a, tan2c, tan2t, Dp, tla, tlc, tl3 = sp.symbols("tan^2varphi_1 tan^2varphi_1^1 cot^2varphi_3 D_p "
+                                                    "tanvarphi_la tanvarphi_lc tanvarphi_l3")
+sg, n, rho = sp.symbols("sigma n varrho")
+X, M3, Ez, Fz, HG = sp.symbols("X m_3 E_2 F H_G")
+Zlo, Zhi, Zp, Zm, N1, N2, Ssum = sp.symbols("z_lo z_hi z_+ z_- n_1 n_2 S")
+shi, slo = sp.symbols("s_+ s_-")
+
+DERIVATION = d = Derivation(
+    id="scheeffer-ix",
+    source="scheeffer",
+    title="The rectangular parallelepiped turned about an axis parallel to an edge",
+    locator="IX",
+    summary="First region: (a/b)^2 > 6s(1-s) upright stable, tan^2 phi_1 = 12 (b/a)^2 s(1-s) - 2 while "
+            "(a/b)^2 >= 2(1-s)(4s-1); second region: the quartic F(z) = z^4 - 3/2 z^3 + 3 n sigma z - 4 n sigma^2 "
+            "from the dry triangle, its roots in 2 sigma <= z <= 1, the threshold s = 23/32, the double root "
+            "z_1 = 3/16 (3 + t + sqrt((5-t)(1-t))) and n_1, the case tables and the bound HG < c; third region "
+            "by exchanging a and b.",
+    requires=("scheeffer-iv-v", "scheeffer-vi-cf"),
+    domain={a: (1, 2), b: (0.5, 1), c: (2, 3), s: (0.05, 0.95), phi: (0.05, 1.4), phi1: (0.05, 1.4),
+            z: (0.3, 1), t: (-0.3, 0.95), w: (0.1, 0.95), nu: (1, 3), xl: (0.2, 1), Ll: (0.2, 1), e_print: (0.5, 2)},
+    constraints=(),
+    assumptions=("edges a, b, c of the box, c > a (the axis of rotation parallel to c), b vertical in the "
+                 "upright position; from the second region on a > b (n = (a/b)^2 >= 1)",
+                 "0 < s < 1 the density relative to the water, the body homogeneous; the second region is "
+                 "written for s > 1/2 (dry triangle), s < 1/2 follows with 1 - s for s",
+                 "sign identities: a printed condition L > R is read as L - R = (positive factor) x (the "
+                 "quantity whose sign decides: a metacentric height, a value of F, or tan^2 of the limiting "
+                 "tilt minus tan^2 of the equilibrium tilt)",
+                 "t is sampled as a free symbol in (-1/3, 1) (s in (23/32, 1)), sigma = 9(1 + 3t)/128 where it "
+                 "appears together with t"),
+)
+PW = lambda hi, lo: sp.Piecewise((hi, s > half), (lo, True))  # noqa: E731  (the text's two cases)
+
+
+def PWM(hi, lo):
+    """The two cases elementwise for column vectors."""
+    return sp.Matrix([PW(p_, q_) for p_, q_ in zip(hi, lo)])
+
+
+# ==== A. the first region ============================================================================
+d.step("T1", (T1, sp.Integral(x_ ** 2, (x_, -a / 2, a / 2), (zz, -c / 2, c / 2)), c * a ** 3 / 12), "integration",
+       result=T1, note="moment of the base a x c about the axis through its centroid parallel to c")
+d.step("T11", (T11, sp.Integral(zz ** 2, (x_, -a / 2, a / 2), (zz, -c / 2, c / 2)), a * c ** 3 / 12),
+       "integration", result=T11, note="about the perpendicular axis (parallel to a): the larger one for c > a")
+d.step("V1", (V1, sp.Integral(1, (x_, -a / 2, a / 2), (zz, -c / 2, c / 2), (y_, 0, b * s)), a * b * c * s),
+       "integration", result=V1)
+d.step("e1", (e1, b / 2 - sp.Integral(y_, (y_, 0, b * s)) / (b * s), b * (1 - s) / 2), "integration", result=e1,
+       note="G lies b/2 above the bottom, the upright centre of buoyancy b s/2")
+d.step("righting-arm", sp.Eq(GZ1, sp.sin(phi1) / V1 * ((1 + sp.tan(phi1) ** 2 / 2) * T1 - V1 * e1)), "lemma",
+       uses=("scheeffer-iv-v:eq12",), result=GZ1,
+       note="Scheeffer's (12) for a prism turned in its first rotation domain (exact column integrals)")
+d.step("upright-a", (GMa, sp.Limit(GZ1 / phi1, phi1, 0), T1 / V1 - e1, a ** 2 / (12 * b * s) - b * (1 - s) / 2),
+       "limit", uses=("righting-arm",), result=GMa, note="Duhamel: the metacentric height for the axis parallel to c")
+d.step("upright-c", (GMc, T11 / V1 - e1, c ** 2 / (12 * b * s) - b * (1 - s) / 2), "algebra", result=GMc,
+       note="the same for the axis parallel to a (T_1^1 for T_1)")
+d.step("oblique-a", (tan2a, 2 * (V1 * e1 / T1 - 1), 12 * (b / a) ** 2 * s * (1 - s) - 2), "algebra",
+       uses=("righting-arm",), result=tan2a, note="the non-zero root of GZ_1: T_1 (1 + tan^2/2) = V_1 e_1 (32)")
+d.step("oblique-a-root", ((1 + tan2a / 2) * T1 - V1 * e1, 0), "algebra", uses=("oblique-a",),
+       note="the factor of GZ_1 vanishes at tan^2 phi_1")
+d.step("oblique-c", (tan2c, 2 * (V1 * e1 / T11 - 1), 12 * (b / c) ** 2 * s * (1 - s) - 2), "algebra",
+       result=tan2c, note="turned about the axis parallel to a: T_1^1 in the place of T_1")
+d.step("perpendicular-margin", sp.Eq(Dp, T11 / sp.cos(phi1) - T1 / sp.cos(phi1)), "lemma",
+       uses=("scheeffer-iv-v:D2-value",), result=Dp,
+       note="at the oblique equilibrium the waterplane moment about the perpendicular axis less V_1 e_2 "
+            "(section IV): its sign decides the stability across the rotation, (43a)")
+d.step("touch-top", ((b * (1 - s) * sp.cos(phi1) - a / 2 * sp.sin(phi1)).subs(phi1, sp.atan(2 * b * (1 - s) / a)), 0),
+       "geometry", note="the top edge at a/2 across the axis, b(1-s) above the plane through O, reaches the water")
+d.step("touch-limit", sp.Eq(tla, PW(2 * b * (1 - s) / a, 2 * b * s / a)), "definition", uses=("touch-top",),
+       result=tla, note="tan of the tilt at which a base face reaches the water (bottom face for s < 1/2)")
+d.step("touch-limit-c", sp.Eq(tlc, PW(2 * b * (1 - s) / c, 2 * b * s / c)), "definition", result=tlc)
+
+d.quote("122", "(122)", r"$$\frac{T_1}{V_1} - e_1 > 0 \quad (122)$$", reading=(T1 / V1 - e1, GMa))
+d.quote("T1", "IX.A", r"$$T_1 = \frac{c a^2}{12}$$", reading=(T1, c * a ** 2 / 12),
+        erratum=Erratum("transcription", "high", r"T_1 = \frac{c a^3}{12}",
+                        "the moment of the rectangle a x c about its axis parallel to c is c a^3/12; the next "
+                        "display and line 'da T_1 = c a^3/12' of the text use a^3, so the scan lost the exponent 3.",
+                        corrected_reading=(T1, c * a ** 3 / 12)))
+d.quote("V1-e1", "IX.A", r"$V_1 = a b c \cdot s$  und  $e_1 = \frac{b}{2} (1 - s)$",
+        reading=(sp.Matrix([V1, e1]), sp.Matrix([a * b * c * s, b / 2 * (1 - s)])))
+d.quote("stability-condition", "IX.A", r"$$\frac{c a^3}{12 a b c s} - \frac{b}{2} (1 - s) > 0.$$",
+        reading=(c * a ** 3 / (12 * a * b * c * s) - b / 2 * (1 - s), GMa))
+d.quote("123", "(123)", r"$$\left( \frac{a}{b} \right)^2 - 6 s (1 - s) > 0 \quad (123)$$",
+        reading=((a / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GMa), note="sign identity, factor 12 s/b")
+d.quote("largest-moment", "IX.A", r"das grösste Trägheitsmoment  $\frac{a \cdot c^3}{12}$", reading=(T11, a * c ** 3 / 12))
+d.quote("T11-V1", "IX.A", r"$$\frac{T_1^1}{V_1} - e_1 = \frac{a c^3}{12 a b c s} - \frac{b}{2} (1 - s)$$",
+        reading=(GMc, a * c ** 3 / (12 * a * b * c * s) - b / 2 * (1 - s)))
+d.quote("124", "(124)", r"$$\left( \frac{c}{b} \right)^2 - 6 s (1 - s) < 0, \quad (124)$$",
+        reading=((c / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GMc),
+        note="with the larger moment negative, both are: unstable in every direction")
+d.quote("32", "IX.A", r"$$T_1 \left(1 + \frac{1}{2} \operatorname{tg}^2 \varphi_1\right) - V_1 e_1 = 0$$",
+        reading=(T1 * (1 + tan2a / 2) - V1 * e1, 0))
+d.quote("T1-V1e1", "IX.A", r"$T_1 = \frac{c a^3}{12}$ ,  $V_1 e_1 = \frac{a b^2 c}{2} s (1 - s)$",
+        reading=(sp.Matrix([T1, V1 * e1]), sp.Matrix([c * a ** 3 / 12, a * b ** 2 * c / 2 * s * (1 - s)])))
+d.quote("125-pre", "IX.A",
+        r"$$1 + \frac{1}{2} \operatorname{tg}^2 \varphi_1 = 6 \left(\frac{b}{a}\right)^2 \cdot s (1 - s)$$",
+        reading=(1 + tan2a / 2, 6 * (b / a) ** 2 * s * (1 - s)))
+d.quote("125", "(125)",
+        r"$$\operatorname{tg}^2 \varphi_1 = 12 \left(\frac{b}{a}\right)^2 \cdot s (1 - s) - 2 \quad (125)$$",
+        reading=(tan2a, 12 * (b / a) ** 2 * s * (1 - s) - 2))
+d.quote("126", "(126)", r"$$\text{(nach 43a)} \quad T_1^1 > T_1 \quad (126)$$",
+        reading=(T11 - T1, sp.cos(phi1) * Dp), note="sign identity, factor cos phi_1")
+d.quote("127", "(127)",
+        r"$$\begin{array}{l} \text{Hier ist nun} \quad T_1^1 = \frac{a c^3}{12}, \quad T_1 = \frac{c a^3}{12}, \\ "
+        r"\text{also} \quad T_1^1 > T_1 \end{array} \quad (127)$$",
+        reading=(sp.Matrix([T11, T1, T11 - T1]), sp.Matrix([a * c ** 3 / 12, c * a ** 3 / 12, a * c * (c - a) * (c + a) / 12])),
+        note="the difference is positive for c > a: the oblique position is stable in every direction")
+d.quote("128", "(128)",
+        r"$$\operatorname{tg}^2 \varphi_1^1 = 12 \left(\frac{b}{c}\right)^2 \cdot s (1 - s) - 2 \quad (128)$$",
+        reading=(tan2c, 12 * (b / c) ** 2 * s * (1 - s) - 2))
+d.quote("128-unstable", "IX.A", r"Es wird dann  $T_1 > T_1^1$ , das Gleichgewicht ist also (teilweise) labil.",
+        reading=(T1 - T11, -sp.cos(phi1) * Dp), note="T_1 and T_1^1 exchanged: the perpendicular margin is negative")
+d.quote("129", "(129)",
+        r"$$\left. \begin{array}{l} \left(\text{für } s > \frac{1}{2}\right) \frac{a}{2} \operatorname{tg} \varphi_1 "
+        r"\leq b (1 - s) \\ \text{und } \frac{c}{2} \operatorname{tg} \varphi_1^1 \leq b (1 - s) \end{array} "
+        r"\right\} \quad (129)$$",
+        reading=(PWM(sp.Matrix([2 * b * (1 - s) / a, 2 * b * (1 - s) / c]), sp.Matrix([tla, tlc])), sp.Matrix([tla, tlc])),
+        note="read as the bounds: tan of the tilt at which the top face reaches the water (s > 1/2)")
+d.quote("129-squared", "IX.A", r"$$\operatorname{tg}^2 \varphi_1 \leq 4 \cdot \left(\frac{b}{a}\right)^2 (1 - s)^2$$",
+        reading=(4 * (b / a) ** 2 * (1 - s) ** 2, PW(tla ** 2, 4 * (b / a) ** 2 * (1 - s) ** 2)))
+d.quote("130-pre", "IX.A",
+        r"$$12 \left(\frac{b}{a}\right)^2 s (1 - s) - 2 \leq 4 \left(\frac{b}{a}\right)^2 \cdot (1 - s)^2$$",
+        reading=(PW(4 * (b / a) ** 2 * (1 - s) ** 2 - (12 * (b / a) ** 2 * s * (1 - s) - 2), 0), PW(tla ** 2 - tan2a, 0)),
+        note="sign identity (s > 1/2): right minus left = tan^2 of the limit tilt - tan^2 phi_1")
+Q130 = (a / b) ** 2 / 2 * (tla ** 2 - tan2a)
+Q130c = (c / b) ** 2 / 2 * (tlc ** 2 - tan2c)
+rho_s = 2 * (1 - s) * (4 * s - 1)
+d.quote("130", "(130)", r"$$\left(\frac{a}{b}\right)^2 \geq 2(1-s)(4s-1) \quad (130)$$",
+        reading=(PW((a / b) ** 2 - rho_s, 0), PW(Q130, 0)),
+        note="sign identity (s > 1/2), factor (a/b)^2/2")
+d.quote("131", "(131)",
+        r"$$\begin{array}{l} 6s(1-s) > \left(\frac{a}{b}\right)^2 \geq 2(1-s)(4s-1) \\ \text{beziehungsweise} \\ 6s(1-s) > "
+        r"\left(\frac{c}{b}\right)^2 \geq 2(1-s)(4s-1) \end{array} \quad (131)$$",
+        reading=(PWM(sp.Matrix([6 * s * (1 - s) - (a / b) ** 2, (a / b) ** 2 - rho_s, 6 * s * (1 - s) - (c / b) ** 2,
+                                (c / b) ** 2 - rho_s]), sp.zeros(4, 1)),
+                 PWM(sp.Matrix([-12 * s / b * GMa, Q130, -12 * s / b * GMc, Q130c]), sp.zeros(4, 1))),
+        note="for s > 1/2: upright unstable and the oblique tilt within the first region, for either axis")
+d.quote("131-mirror", "IX.A", r"$$2s(3-4s).$$", reading=(2 * s * (3 - 4 * s), rho_s.subs(s, 1 - s)),
+        note="1 - s for s in the lower bound (the bottom face reaches the water first for s < 1/2)")
+LOW = PW(rho_s, 2 * s * (3 - 4 * s))
+d.quote("132a", "(132a)", r"$$\text{wenn} \quad \left(\frac{a}{b}\right)^2 > 6s(1-s), \quad (132a)$$",
+        reading=((a / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GMa))
+d.quote("132b", "(132b)",
+        r"$$6s(1-s) > \left(\frac{a}{b}\right)^2 \geq \begin{cases} 2(1-s)(4s-1) & \left(\text{für } s > \frac{1}{2}\right) "
+        r"\\ 2s(3-4s) & \left(\text{für } s < \frac{1}{2}\right) \end{cases} \quad (132b)$$",
+        reading=(sp.Matrix([6 * s * (1 - s) - (a / b) ** 2, (a / b) ** 2 - LOW]), sp.Matrix([-12 * s / b * GMa, Q130])))
+d.quote("132c", "(132c)",
+        r"$$6s(1-s) > \left(\frac{c}{b}\right)^2 \geq \begin{cases} 2(1-s)(4s-1) & \text{für } s > \frac{1}{2} \\ 2s & "
+        r"(3-4s) \text{ „ } s < \frac{1}{2} \end{cases} \quad (132c)$$",
+        reading=(sp.Matrix([6 * s * (1 - s) - (c / b) ** 2, (c / b) ** 2 - LOW]), sp.Matrix([-12 * s / b * GMc, Q130c])),
+        note="'2s & (3-4s) „' is the scan's table of 2s(3-4s) for s < 1/2 (the ditto mark „ for 'für')")
+
+# ==== B. the second region ===========================================================================
+d.step("sigma", sp.Eq(sg, 1 - s), "definition", result=sg, note="the text's sigma = 1 - s")
+d.step("n", sp.Eq(n, (a / b) ** 2), "definition", result=n, note="the text's n = (a/b)^2")
+d.step("rho", sp.Eq(rho, 2 * (1 - s) * (4 * s - 1)), "definition", result=rho, note="(161a)")
+# the dry triangle at the rising corner D = (a/2, b/2): legs x along b and L along a
+Dpt = sp.Matrix([a / 2, b / 2])
+tri = [Dpt, Dpt - sp.Matrix([0, xl]), Dpt - sp.Matrix([Ll, 0])]
+u_up = sp.Matrix([sp.sin(phi), sp.cos(phi)])
+h_dir = sp.Matrix([sp.cos(phi), -sp.sin(phi)])
+d.step("waterline-slope", (u_up.dot(tri[2] - tri[1]).subs(Ll, xl / sp.tan(phi)), 0), "geometry",
+       note="the hypotenuse HG (from x below D on side b to L left of D on side a) is horizontal iff L = x cot phi")
+d.step("dry-area", (sp.Integral(sp.Integral(1, (y_, 0, xl * (1 - x_ / Ll))), (x_, 0, Ll)), xl * Ll / 2), "integration",
+       note="the dry part is the triangle with legs x and L (s > 1/2, second region); its area is sigma a b")
+d.step("leg", sp.Eq(X, sp.sqrt(2 * a * b * sg * sp.tan(phi))), "definition", result=X,
+       note="x from x L/2 = sigma a b with L = x cot phi")
+d.step("leg-check", ((X * X / sp.tan(phi)) / 2, a * b * sg), "algebra", uses=("leg", "dry-area", "waterline-slope"))
+S3 = sum(tri, sp.zeros(2, 1)) / 3
+d.step("dry-centroid", (S3, sp.Matrix([a / 2 - Ll / 3, b / 2 - xl / 3])), "geometry",
+       note="centroid of the dry triangle (mean of its vertices), body frame with S at the origin")
+S3phi = sp.Matrix([a / 2 - X / sp.tan(phi) / 3, b / 2 - X / 3])
+d.step("potential", sp.Eq(Ez, sg / (1 - sg) * u_up.dot(S3phi)), "definition", result=Ez,
+       note="height of G above B: V G = V_sub B + V_dry S_3 with G = 0, V_dry/V_sub = sigma/s, so E = -u.B = "
+            "(sigma/s) u.S_3")
+d.step("potential-derivative", (sp.Derivative(Ez, phi), sg / (1 - sg) * h_dir.dot(S3phi)), "integration",
+       uses=("potential", "leg", "dry-centroid"),
+       note="dE/dphi = (sigma/s) m_3 with m_3 = h.S_3, the horizontal offset of S_3 from the vertical through S "
+            "(S_3 P_3 of Fig. 22): u.dS_3/dphi = 0, the centroid of the dry part moves parallel to the water")
+phi_z = sp.atan(b * z ** 2 / (2 * a * sg))
+d.step("tilt-of-z", (sp.Subs(X / b, phi, phi_z), z), "algebra", uses=("leg",),
+       note="z = x/b belongs to the tilt tan phi_2 = b z^2/(2 a sigma) (134)")
+d.step("m3", sp.Eq(M3, (h_dir.dot(sp.Matrix([a / 2 - 2 * a * sg / z / 3, b / 2 - b * z / 3]))).subs(phi, phi_z)),
+       "definition", result=M3, uses=("tilt-of-z", "dry-centroid"),
+       note="m_3 at z: x = b z, L = 2 a sigma/z, phi_2 = atan(b z^2/(2 a sigma))")
+quartic = z ** 4 - sp.Rational(3, 2) * z ** 3 + 3 * n * sg * z - 4 * n * sg ** 2
+F_def = 3 * (h_dir.dot(sp.Matrix([a / 2 - 2 * a * sg / z / 3, b / 2 - b * z / 3]))).subs(phi, phi_z) * z ** 3 / (b * sp.sin(phi_z))
+F2s = F_def.subs(z, 2 * sg)       # F at the ends of the second region
+F1v = F_def.subs(z, 1)
+d.step("F", sp.Eq(Fz, 3 * M3 * z ** 3 / (b * sp.sin(phi_z))), "definition",
+       note="the left side of (133), the text's F(z)")
+d.step("F-quartic", (Fz, 3 * M3 * z ** 3 / (b * sp.sin(phi_z)), quartic), "algebra", uses=("F", "m3"), result=Fz,
+       note="the quartic of (133)/(136), from the centroid of the dry triangle")
+d.step("righting-sign", (sp.Subs(sp.Derivative(Ez, phi), phi, phi_z), sg / (1 - sg) * b * sp.sin(phi_z) * Fz / (3 * z ** 3)),
+       "algebra", uses=("potential-derivative", "F-quartic"),
+       note="z grows with phi_2: a root where F goes from - to + is a minimum of the potential (stable)")
+d.step("corner-C", ((2 * a * sg / z).subs(z, 2 * sg), a), "geometry",
+       note="L = a: the second top corner C reaches the water, the smallest tilt of the region")
+d.step("z-low", sp.Eq(Zlo, 2 * sg), "definition", uses=("corner-C",), result=Zlo)
+d.step("z-high", sp.Eq(Zhi, 1), "definition", result=Zhi, note="x = b: the bottom corner A reaches the water")
+d.step("F1", (sp.Derivative(Fz, z), 4 * z ** 3 - sp.Rational(9, 2) * z ** 2 + 3 * sg * n), "algebra", uses=("F-quartic",))
+d.step("F2", (sp.Derivative(Fz, z, 2), 3 * z * (4 * z - 3)), "algebra", uses=("F-quartic",))
+d.step("F-in-n", (sp.Derivative(quartic.subs(n, nu), nu), 3 * sg * (z - sp.Rational(4, 3) * sg)), "algebra",
+       note="F grows with n where z > 4 sigma/3, in particular on the whole region z >= 2 sigma")
+HGexpr = X / sp.sin(phi)
+d.step("HG", sp.Eq(HG, HGexpr), "definition", result=HG,
+       note="the waterline HG is the hypotenuse of the dry triangle: x = HG sin phi_2")
+d.step("HG-squared", (HG ** 2, X ** 2 + (X / sp.tan(phi)) ** 2), "algebra", uses=("HG", "leg"))
+
+# the double-root locus, parametrised by the double root w: F(w) = F'(w) = 0 is linear in n sigma, n sigma^2
+n_of_w = w * (9 - 8 * w) ** 2 / (27 * (1 - w))
+sg_of_w = 9 * w * (1 - w) / (2 * (9 - 8 * w))
+d.step("locus", (sp.Matrix([quartic.subs(z, w), sp.diff(quartic, z).subs(z, w)]).subs({n: n_of_w, sg: sg_of_w}),
+                 sp.zeros(2, 1)), "algebra",
+       note="F' = 0 gives n sigma = w^2 (9 - 8w)/6; then F = 0 gives sigma = 9 w (1-w)/(2(9-8w)), "
+            "n = w (9-8w)^2/(27(1-w))")
+sig_t = 9 * (1 + 3 * t) / 128
+d.step("locus-quadratic", (sp.expand(128 * (9 - 8 * w) * (sg_of_w - sig_t)),
+                           -9 * (64 * w ** 2 - (72 + 24 * t) * w + 9 + 27 * t)), "algebra",
+       note="sigma(w) = sigma with t = (128 sigma - 9)/27: the double roots solve 64 w^2 - (72 + 24t) w + 9 + 27t = 0")
+qa, qb, qc = 64, -(72 + 24 * t), 9 + 27 * t
+Zp_e = (-qb + sp.sqrt(qb ** 2 - 4 * qa * qc)) / (2 * qa)
+Zm_e = (-qb - sp.sqrt(qb ** 2 - 4 * qa * qc)) / (2 * qa)
+d.step("z-plus", sp.Eq(Zp, Zp_e), "definition", result=Zp, uses=("locus-quadratic",),
+       note="the two roots of the quadratic; z_+ the larger")
+d.step("z-minus", sp.Eq(Zm, Zm_e), "definition", result=Zm, uses=("locus-quadratic",))
+d.step("roots-check", (sp.Matrix([qa * Zp ** 2 + qb * Zp + qc, qa * Zm ** 2 + qb * Zm + qc]), sp.zeros(2, 1)), "algebra")
+d.step("n-plus", sp.Eq(N1, n_of_w.subs(w, Zp)), "definition", result=N1, uses=("locus",),
+       note="the n at which F has the double root z_+")
+d.step("n-minus", sp.Eq(N2, n_of_w.subs(w, Zm)), "definition", result=N2, uses=("locus",))
+d.step("reciprocal", (N1 * N2, 1), "algebra", note="the two critical values are reciprocal: n_2 = (b/a)^2 at n_1 = (a/b)^2")
+d.step("S", (Ssum, N1 + 1 / N1, N2 + 1 / N2, 2 + (1 - t) ** 3 / (1 + 3 * t)), "algebra", result=Ssum, uses=("reciprocal",),
+       note="n + 1/n, the same at both double roots, as a rational function of t")
+disc_Q = (4374 * n ** 2 * sg + 32768 * n * sg ** 3 - 27648 * n * sg ** 2 - 972 * n * sg - 729 * n + 4374 * sg)
+coefF = [1, -sp.Rational(3, 2), 0, 3 * nu * sg, -4 * nu * sg ** 2]
+coefG = [4, -sp.Rational(9, 2), 0, 3 * nu * sg]
+syl = sp.Matrix([[0] * i + coefF + [0] * (2 - i) for i in range(3)] + [[0] * i + coefG + [0] * (3 - i) for i in range(4)])
+d.step("discriminant", (sp.Subs(sp.Determinant(syl), nu, n), -n ** 2 * sg ** 3 * disc_Q / 2), "algebra",
+       note="the Sylvester resultant of F and F' in z: it vanishes exactly on the double-root locus")
+res149 = 9 * (1 - t ** 2) ** 2 - 128 * sg * (t - 1 / n) * (t - n)
+d.step("resultant-149", ((59049 * n * res149).subs(t, (128 * sg - 9) / 27), 64 * (128 * sg - 9) * disc_Q), "algebra",
+       uses=("discriminant",), note="(149) is the discriminant factor times the extraneous factor 128 sigma - 9 = 27 t")
+
+rt = sp.sqrt((5 - t) * (1 - t))
+d.quote("133-first", "IX.B",
+        r"$$\frac{m_3}{b} \cdot \left(\frac{x}{b}\right)^3 = \sin \varphi_2 \cdot \left\{ \left(\frac{x}{b}\right)^4 - "
+        r"\frac{3}{2} \cdot \left(\frac{x}{b}\right)^3 + 3 \left(\frac{a}{b}\right)^2 \cdot (1-s) \frac{x}{b} - 4 "
+        r"\left(\frac{a}{b}\right)^2 \cdot (1-s)^2 \right\} = 0$$",
+        reading=(M3 / b * z ** 3, sp.sin(phi_z) * (z ** 4 - sp.Rational(3, 2) * z ** 3 + 3 * (a / b) ** 2 * (1 - s) * z
+                                                    - 4 * (a / b) ** 2 * (1 - s) ** 2)),
+        erratum=Erratum("transcription", "medium",
+                        r"\frac{3 m_3}{b} \cdot \left(\frac{x}{b}\right)^3 = \sin \varphi_2 \cdot \left\{ \dots \right\}",
+                        "the centroid of the dry triangle gives 3 m_3 z^3/b = sin phi_2 F(z); the factor 3 is in (133) two "
+                        "lines below, written from this display, so the print most likely had it and the scan lost the "
+                        "leading 3 (medium: the print may also have dropped it). The '= 0' is the equilibrium condition.",
+                        corrected_reading=(3 * M3 / b * z ** 3, sp.sin(phi_z) * Fz)),
+        note="x/b = z; phi_2 the tilt belonging to z by (134)")
+d.quote("133", "(133)",
+        r"$$\frac{3 m_3}{b} \cdot \frac{z^3}{\sin \varphi_2} = z^4 - \frac{3}{2} \cdot z^3 + 3 \left(\frac{a}{b}\right)^2 "
+        r"(1-s) z - 4 \left(\frac{a}{b}\right)^2 (1-s)^2 = 0 \quad (133)$$",
+        reading=(3 * M3 / b * z ** 3 / sp.sin(phi_z),
+                 z ** 4 - sp.Rational(3, 2) * z ** 3 + 3 * (a / b) ** 2 * (1 - s) * z - 4 * (a / b) ** 2 * (1 - s) ** 2),
+        note="the identity in z; '= 0' is the equilibrium (m_3 = 0)")
+d.quote("134", "(134)", r"$$x^2 = 2 a b (1-s) \cdot \operatorname{tg} \varphi_2 \quad (134)$$",
+        reading=(X ** 2, 2 * a * b * (1 - s) * sp.tan(phi)))
+d.quote("x-low", "IX.B", r"$$x = a \operatorname{tg} \varphi_2, \text{ folglich } x = 2 b (1-s)$$",
+        reading=(sp.Matrix([sp.sqrt(2 * a * b * sg * 2 * b * sg / a), b * Zlo]),
+                 sp.Matrix([a * (2 * b * sg / a), 2 * b * (1 - s)])),
+        note="at the smallest tilt, tan phi_2 = x/a (corner C in the water)")
+d.quote("135a", "(135a)", r"$$\frac{x}{b} = z = 2 (1-s) \quad (135a)$$", reading=(Zlo, 2 * (1 - s)))
+d.quote("135b", "(135b)", r"Für den grössten Wert von  $\varphi_2$  ergibt sich  $\frac{x}{b} = z = 1$",
+        reading=(Zhi, 1))
+d.quote("136", "(136)", r"$$F(z) = z^4 - \frac{3}{2} z^3 + 3 n \sigma \cdot z - 4 n \sigma^2 \quad (136)$$",
+        reading=(Fz, z ** 4 - sp.Rational(3, 2) * z ** 3 + 3 * n * sg * z - 4 * n * sg ** 2))
+
+
+d.quote("137", "(137)", r"$$F'(z) = 4 z^3 - \frac{9}{2} z^2 + 3 \sigma n \quad (137)$$",
+        reading=(sp.diff(F_def, z), 4 * z ** 3 - sp.Rational(9, 2) * z ** 2 + 3 * sg * n))
+d.quote("138", "(138)", r"$$F''(z) = 3 z (4 z - 3) \quad (138)$$", reading=(sp.diff(F_def, z, 2), 3 * z * (4 * z - 3)))
+d.quote("F-at-0", "IX.B", r"$$\text{,, } z = 0 \quad F(z) = -4 \sigma^2 n$$", reading=(sp.Subs(Fz, z, 0), -4 * sg ** 2 * n))
+d.quote("F1-at-0", "IX.B", r"Da  $F'(0) = 3 \sigma n$ , also positiv ist",
+        reading=(sp.Subs(sp.Derivative(Fz, z), z, 0), 3 * sg * n))
+d.quote("inflections", "IX.B",
+        r"Ausserdem ist (nach 138)  $z = 0$  ein Wendepunkt der Curve  $F(z)$ . Von  $z = 0$  bis zu dem zweiten "
+        r"Wendepunkt  $z = \frac{3}{4}$  nimmt also  $F'(z)$  ab.",
+        reading=(sp.Matrix([sp.Subs(sp.Derivative(Fz, z, 2), z, 0), sp.Subs(sp.Derivative(Fz, z, 2), z, sp.Rational(3, 4))]),
+                 sp.zeros(2, 1)))
+F1_34 = sp.diff(F_def, z).subs(z, sp.Rational(3, 4))
+d.quote("139-pre", "IX.B",
+        r"$$4 \left(\frac{3}{4}\right)^3 - \frac{9}{2} \cdot \left(\frac{3}{4}\right)^2 + 3 \sigma n \geq 0$$",
+        reading=(4 * sp.Rational(3, 4) ** 3 - sp.Rational(9, 2) * sp.Rational(3, 4) ** 2 + 3 * sg * n, F1_34))
+d.quote("139", "(139)", r"$$\text{oder } 3 \left(\sigma n - \frac{9}{32}\right) \geq 0 \quad (139)$$",
+        reading=(3 * (sg * n - sp.Rational(9, 32)), F1_34))
+d.quote("140", "(140)",
+        r"$$\text{also wenn } s \leq \frac{23}{32} \text{ ist.} \quad (140)$$",
+        reading=(sp.Rational(23, 32) - s, sg - sp.Rational(9, 32),
+                 sp.diff(quartic.subs(n, 1), z).subs(z, sp.Rational(3, 4)) / 3),
+        note="F'(3/4) at n = 1 over 3; F'(3/4) grows with n, so n >= 1 only helps")
+d.quote("140-steps", "IX.B", r"$$\text{oder } 1 - s - \frac{9}{32} \geq 0$$", reading=(1 - s - sp.Rational(9, 32), sg - sp.Rational(9, 32)))
+d.quote("141", "(141)",
+        r"$$\text{oder } F(2\sigma) = 2(1-s)^2 \cdot \left\{ \left(\frac{a}{b}\right)^2 - 2(1-s)(4s-1) \right\} \quad (141)$$",
+        reading=(F2s, 16 * (1 - s) ** 4 - 12 * (1 - s) ** 3 + 6 * n * (1 - s) ** 2 - 4 * n * (1 - s) ** 2,
+                 2 * (1 - s) ** 2 * (8 * (1 - s) ** 2 - 6 * (1 - s) + n),
+                 2 * (1 - s) ** 2 * ((a / b) ** 2 - 2 * (1 - s) * (4 * s - 1))),
+        note="with the two preceding lines of the text")
+d.quote("142", "(142)",
+        r"$$F(1) = (1-s)(4s-1) \cdot \left\{ \left(\frac{a}{b}\right)^2 - \frac{1}{2(1-s)(4s-1)} \right\} \quad (142)$$",
+        reading=(F1v, (1 - s) * (4 * s - 1) * ((a / b) ** 2 - 1 / (2 * (1 - s) * (4 * s - 1)))))
+d.quote("142-automatic", "IX.B", r"Dann ist aber  $\frac{1}{2(1-s)(4s-1)} < 1$",
+        reading=(1 - 1 / rho, (rho - 1) / rho), note="rho > 1 (forced by n >= 1 and n < rho) makes 1/rho < 1 <= n")
+d.quote("143", "(143)", r"$$\left(\frac{a}{b}\right)^2 < 2(1-s)(4s-1) \quad (143)$$",
+        reading=(rho_s - (a / b) ** 2, -F2s / (2 * sg ** 2)),
+        note="F(2 sigma) < 0 < F(1) with F increasing: one root in (2 sigma, 1), where F goes from - to +")
+d.quote("144", "(144)", r"$$\left(\frac{a}{b}\right)^2 > 2(1-s)4s-1 \quad (144)$$",
+        reading=((a / b) ** 2 - (2 * (1 - s) * 4 * s - 1), F2s / (2 * sg ** 2)),
+        erratum=Erratum("transcription", "medium", r"\left(\frac{a}{b}\right)^2 > 2(1-s)(4s-1)",
+                        "the converse of (143) needs the same bound 2(1-s)(4s-1) (F(2 sigma) > 0 by (141)); the scan "
+                        "lost the parentheses around 4s - 1, which changes the bound (e.g. by 1 - 2(1-s) at any s).",
+                        corrected_reading=((a / b) ** 2 - rho_s, F2s / (2 * sg ** 2))))
+d.quote("145", "(145)",
+        r"$$F(z) = z^4 - \frac{3}{2}z^3 + \sigma n 3z - 4\sigma = z^4 - \frac{3}{2}z^3 + 3\sigma n(z - \frac{2}{3} \cdot 2\sigma) "
+        r"\quad (145)$$",
+        reading=(Fz, z ** 4 - sp.Rational(3, 2) * z ** 3 + sg * n * 3 * z - 4 * sg,
+                 z ** 4 - sp.Rational(3, 2) * z ** 3 + 3 * sg * n * (z - sp.Rational(2, 3) * 2 * sg)),
+        erratum=Erratum("transcription", "low",
+                        r"F(z) = z^4 - \frac{3}{2}z^3 + \sigma n 3z - 4\sigma^2 n = z^4 - \frac{3}{2}z^3 + 3\sigma n"
+                        r"(z - \frac{2}{3} \cdot 2\sigma)",
+                        "the last term of F is -4 n sigma^2 (136), and the second form of the same line is right; the "
+                        "middle member lost '^2 n'. A scan that drops a superscript and the following letter is "
+                        "likelier than a misprint in a line whose other half is right, but both are possible (low).",
+                        corrected_reading=(Fz, z ** 4 - sp.Rational(3, 2) * z ** 3 + sg * n * 3 * z - 4 * sg ** 2 * n,
+                                           z ** 4 - sp.Rational(3, 2) * z ** 3 + 3 * sg * n * (z - sp.Rational(2, 3) * 2 * sg))))
+d.quote("145-monotone", "IX.B",
+        r"Daher muss  $F(z)$  für jeden Wert von  $z$  zwischen  $z = 2\sigma$  und  $z = \infty$  mit wachsendem  $n$  "
+        r"zunehmen",
+        reading=(sp.Derivative(quartic.subs(n, nu), nu), 3 * sg * (z - sp.Rational(2, 3) * 2 * sg)),
+        note="the derivative in n is positive for z > 4 sigma/3")
+# double-root readings: at (z, n, sigma) = (z_+, n_1, sigma(t)) and (z_-, n_2, sigma(t))
+DR = ((Zp, N1), (Zm, N2))
+
+
+def at_roots(expr):
+    """A printed expression at both double roots, sigma from t by (150)."""
+    return sp.Matrix([expr.subs({z: zr, n: nr, sg: sig_t}, simultaneous=True) for zr, nr in DR])
+
+
+d.quote("146", "(146)",
+        r"$$\left. \begin{aligned} z^4 - \frac{3}{2}z^3 + 3n\sigma z - 4n\sigma^2 &= 0 \\ 4z^3 - \frac{9}{2}z^2 + 3n\sigma "
+        r"&= 0 \end{aligned} \right\} \quad (146)$$",
+        reading=(sp.Matrix([at_roots(quartic), at_roots(sp.diff(quartic, z))]), sp.zeros(4, 1)),
+        note="at the two double roots of the locus (z_+, n_1), (z_-, n_2)")
+d.quote("147", "(147)", r"$$\frac{128\sigma - 9}{27} = t \quad (147)$$", reading=((128 * sig_t - 9) / 27, t),
+        note="sigma = 9(1 + 3t)/128 inverts it (150)")
+d.quote("148", "(148)",
+        r"$$\left. \begin{aligned} \frac{16\sigma}{3}(nt - 1) \cdot z + 2\sigma n(1 - t^2) &= 0 \\ (1 - t^2)z + "
+        r"\frac{16\sigma}{3}(t - n) &= 0 \end{aligned} \right\} \quad (148)$$",
+        reading=(sp.Matrix([at_roots(16 * sg / 3 * (n * t - 1) * z + 2 * sg * n * (1 - t ** 2)),
+                            at_roots((1 - t ** 2) * z + 16 * sg / 3 * (t - n))]), sp.zeros(4, 1)),
+        note="both linear equations hold at every double root")
+d.quote("149", "(149)",
+        r"$$\begin{aligned} 2\sigma n(1 - t^2)^2 - \left(\frac{16\sigma}{3}\right)^2 \cdot (nt - 1)(t - n) &= 0 \\ "
+        r"\text{oder} \quad 9(1 - t^2)^2 - 128\sigma\left(t - \frac{1}{n}\right)(t - n) &= 0 \end{aligned} \quad (149)$$",
+        reading=(sp.Matrix([at_roots(2 * sg * n * (1 - t ** 2) ** 2 - (16 * sg / 3) ** 2 * (n * t - 1) * (t - n)),
+                            at_roots(res149)]), sp.zeros(4, 1)),
+        note="see also the step resultant-149: (149) is the discriminant of F times 27 t")
+d.quote("n-sum", "IX.B",
+        r"$$\begin{aligned} n + \frac{1}{n} &= \frac{128 \sigma (1 + t^2) - 9 (1 - t^2)^2}{128 \sigma t} \\ &= \frac{1 + "
+        r"t^2}{t} - \frac{9 (1 - t^2)^2}{128 \sigma t} \end{aligned}$$",
+        reading=(N1 + 1 / N1, ((128 * sg * (1 + t ** 2) - 9 * (1 - t ** 2) ** 2) / (128 * sg * t)).subs(sg, sig_t),
+                 ((1 + t ** 2) / t - 9 * (1 - t ** 2) ** 2 / (128 * sg * t)).subs(sg, sig_t)))
+d.quote("150", "(150)", r"$$128 \sigma = 9 (1 + 3 t) \quad (150)$$",
+        reading=(128 * sg, 9 * (1 + 3 * (128 * sg - 9) / 27)), note="t from (147)")
+S_print = 1 / t * (1 + t ** 2 - (1 - t ** 2) ** 2 / (1 + 3 * t))
+d.quote("n-sum-t", "IX.B",
+        r"$$n + \frac{1}{n} = \frac{1}{t} \cdot \left\{ 1 + t^2 - \frac{(1 - t^2)^2}{1 + 3 t} \right\}$$",
+        reading=(N1 + 1 / N1, S_print))
+d.quote("151", "(151)",
+        r"$$\frac{1}{t} \cdot \left\{ 1 + t^2 - \frac{(1 - t^2)^2}{1 + 3 t} \right\} = S \quad (151)$$",
+        reading=(S_print, Ssum))
+d.quote("152", "(152)", r"$$n + \frac{1}{n} = S \quad (152)$$", reading=(N1 + 1 / N1, Ssum))
+d.quote("153", "(153)",
+        r"$$\begin{aligned} n_1 &= \left( \frac{a}{b} \right)^2 = \frac{1}{2} \left( S + \sqrt{S^2 - 4} \right) \\ n_2 &= "
+        r"\left( \frac{b}{a} \right)^2 = \frac{1}{2} \left( S - \sqrt{S^2 - 4} \right) \end{aligned} \quad (153)$$",
+        reading=(sp.Matrix([N1, N2, N1 * N2]),
+                 sp.Matrix([(Ssum + sp.sqrt(Ssum ** 2 - 4)) / 2, (Ssum - sp.sqrt(Ssum ** 2 - 4)) / 2, 1])),
+        note="n_2 = (b/a)^2 read as n_2 = 1/n_1 (the third row)")
+d.quote("154", "(154)",
+        r"$$\begin{aligned} S - 2 &= \frac{(1 - t)^3}{1 + 3 t} \\ \text{und} \quad S + 2 &= \frac{(5 - t) (1 + t)^2}{1 + "
+        r"3 t} \\ \text{folglich} \quad S^2 - 4 &= \frac{(5 - t) (1 + t)^2 \cdot (1 - t)^3}{(1 + 3 t)^2} \end{aligned} "
+        r"\quad (154)$$",
+        reading=(sp.Matrix([Ssum - 2, Ssum + 2, Ssum ** 2 - 4]),
+                 sp.Matrix([(1 - t) ** 3 / (1 + 3 * t), (5 - t) * (1 + t) ** 2 / (1 + 3 * t),
+                            (5 - t) * (1 + t) ** 2 * (1 - t) ** 3 / (1 + 3 * t) ** 2])))
+d.quote("155-pre", "IX.B", r"$$z = \frac{16 \sigma}{3} \cdot \frac{n - t}{1 - t^2}$$",
+        reading=(sp.Matrix([Zp, Zm]), at_roots(16 * sg / 3 * (n - t) / (1 - t ** 2))))
+d.quote("155", "(155)",
+        r"$$\begin{aligned} z &= \frac{16}{3} \cdot \frac{9}{128} \cdot \frac{(1 + 3 t) (n - t)}{1 - t^2} \\ z &= "
+        r"\frac{3}{8} \cdot \left\{ \frac{n (1 + 3 t)}{1 - t^2} - \frac{t (1 + 3 t)}{1 - t^2} \right\} \end{aligned} "
+        r"\quad (155)$$",
+        reading=(sp.Matrix([Zp, Zm]),
+                 at_roots(sp.Rational(16, 3) * sp.Rational(9, 128) * (1 + 3 * t) * (n - t) / (1 - t ** 2)),
+                 at_roots(sp.Rational(3, 8) * (n * (1 + 3 * t) / (1 - t ** 2) - t * (1 + 3 * t) / (1 - t ** 2)))))
+d.quote("156-S", "IX.B", r"$$S = 2 + \frac{(1-t)^3}{1+3t}$$", reading=(Ssum, 2 + (1 - t) ** 3 / (1 + 3 * t)))
+pm = sp.Matrix([1, -1])
+d.quote("156", "(156)",
+        r"$$n = 1 + \frac{1}{2} \cdot \frac{(1-t)^3}{1+3t} \pm \frac{1}{2} \frac{1-t^2}{1+3t} \cdot \sqrt{(5-t)(1-t)} "
+        r"\quad (156)$$",
+        reading=(sp.Matrix([N1, N2]), sp.Matrix([1 + (1 - t) ** 3 / (2 * (1 + 3 * t)) + k * (1 - t ** 2) / (2 * (1 + 3 * t)) * rt
+                                                 for k in pm])))
+d.quote("156-b", "IX.B",
+        r"$$\frac{n(1+3t)}{1-t^2} = \frac{1+3t}{1-t^2} + \frac{1}{2} \frac{(1-t)^2}{1+t} \pm \frac{1}{2} \cdot "
+        r"\sqrt{(5-t)(1-t)}$$",
+        reading=(sp.Matrix([N1, N2]) * (1 + 3 * t) / (1 - t ** 2),
+                 sp.Matrix([(1 + 3 * t) / (1 - t ** 2) + (1 - t) ** 2 / (2 * (1 + t)) + k * rt / 2 for k in pm])))
+d.quote("157", "(157)", r"$$z = \frac{3}{16} \left\{ 3 + t \pm \sqrt{(5-t)(1-t)} \right\} \quad (157)$$",
+        reading=(sp.Matrix([Zp, Zm]), sp.Matrix([sp.Rational(3, 16) * (3 + t + k * rt) for k in pm])))
+d.quote("158", "(158)", r"$$z_1 = \frac{3}{16} \left\{ 3 + t + \sqrt{(5-t)(1-t)} \right\} \quad (158)$$",
+        reading=(Zp, sp.Rational(3, 16) * (3 + t + rt)),
+        note="the upper sign belongs to n_1 (the pairing is checked by (156) against n_1 = n(z_+))")
+d.quote("minimum", "IX.B", r"Dies ist aber die grössere der beiden Doppelwurzeln, folglich liegt sie im minimum",
+        reading=(sp.Matrix([Zp - Zm, 4 * Zp - 3, 3 - 4 * Zm]),
+                 sp.Matrix([sp.Rational(3, 8) * rt, sp.Rational(3, 4) * sp.sqrt(1 - t) * (sp.sqrt(5 - t) - sp.sqrt(1 - t)),
+                            sp.Rational(3, 4) * sp.sqrt(1 - t) * (sp.sqrt(5 - t) + sp.sqrt(1 - t))])),
+        note="sign identities: z_+ > z_-, and F'' = 3z(4z - 3) is positive at z_+ (minimum), negative at z_- (maximum)")
+d.quote("9-16", "IX.B", r"$2 \left(1 - \frac{23}{32}\right) = \frac{9}{16}$",
+        reading=(2 * (1 - sp.Rational(23, 32)), sp.Rational(9, 16)))
+d.quote("159", "(159)",
+        r"$$\text{oder (158) ob } \frac{3}{16} \left\{ 3 + t + \sqrt{(5-t)(1-t)} \right\} \leq 1 \quad (159)$$",
+        reading=(1 - sp.Rational(3, 16) * (3 + t + rt), 4 * (1 + 3 * t) / (16 * (7 - 3 * t + 3 * rt))),
+        note="sign identity: 1 - z_1 is positive for t > -1/3")
+d.quote("160", "(160)", r"$$\text{oder } 3 \sqrt{(5-t)(1-t)} \leq 7 - 3t \quad (160)$$",
+        reading=(7 - 3 * t - 3 * rt, 4 * (1 + 3 * t) / (7 - 3 * t + 3 * rt)))
+t_s = (128 * (1 - s) - 9) / 27
+d.quote("t-of-s", "IX.B", r"$$\text{Nach 147 ist } t = \frac{119 - 128s}{27},$$", reading=(t_s, (119 - 128 * s) / 27))
+d.quote("7-3t", "IX.B", r"$$7 - 3t = 7 - \frac{119 - 128s}{9} = \frac{128s - 56}{9}$$",
+        reading=(7 - 3 * t_s, 7 - (119 - 128 * s) / 9, (128 * s - 56) / 9))
+d.quote("7-3t-b", "IX.B", r"$$7 - 3t = \frac{8}{9} (16s - 7)$$", reading=(7 - 3 * t_s, sp.Rational(8, 9) * (16 * s - 7)))
+d.quote("160-squared", "IX.B", r"$$9(5-t)(1-t) \leq (7-3t)^2$$",
+        reading=((7 - 3 * t) ** 2 - 9 * (5 - t) * (1 - t), 4 * (1 + 3 * t)))
+d.quote("1+3t", "IX.B", r"$$0 \leq 128(1-s)$$", reading=(1 + 3 * t_s, 128 * (1 - s) / 9),
+        note="1 + 3t with t = (119 - 128 s)/27")
+d.quote("161", "(161)", r"Aus dem Vorstehenden ergibt sich für den Fall  $s > \frac{23}{32}$  folgendes Resultat: (161)",
+        reading=(sp.Matrix([F2s, F1v]), sp.Matrix([2 * sg ** 2 * (n - rho), rho / 2 * (n - 1 / rho)])),
+        note="the conditions of the table through (141), (142); the root counts of rows I-V are tested (Sturm counts "
+             "on a dense grid of s and n) in the tests")
+d.quote("161a", "(161a)", r"$$2(1-s)(4s-1) = \varrho \tag{161a}$$", reading=(rho_s, rho))
+d.quote("162", "(162)",
+        r"so erhält man aus 161 mit Rücksicht auf 141, 142 folgendes Ergebnis: (162)",
+        reading=(sp.Matrix([n - rho, n - 1 / rho]), sp.Matrix([F2s / (2 * sg ** 2), 2 * F1v / rho])),
+        note="F(2 sigma) < 0 iff n < rho, F(1) > 0 iff n > 1/rho (rho > 0 for 1/4 < s < 1); rows III and IV of (162) "
+             "are rows IV and III of (161); the brackets marking redundant conditions are lost in the scan")
+d.quote("162a", "(162a)",
+        r"$$\begin{array}{l} \text{VI. wenn} \\ \text{VII. wenn} \end{array} \left( \frac{a}{b} \right)^2 \left\{ "
+        r"\begin{array}{l} < \varrho \\ > \frac{1}{\varrho} \end{array} \right.",
+        reading=(sp.Matrix([rho - n, n - 1 / rho]), sp.Matrix([-F2s / (2 * sg ** 2), F2s / (2 * sg ** 2)])),
+        erratum=Erratum("transcription", "low",
+                        r"\text{VI. wenn } \left(\frac{a}{b}\right)^2 < \varrho \ (> \tfrac{1}{\varrho}) \text{: eine "
+                        r"Gleichgewichtslage (stabil)}; \quad \text{VII. wenn } \left(\frac{a}{b}\right)^2 > \varrho "
+                        r"\text{: keine}",
+                        "for s <= 23/32 there is no root in the region iff F(2 sigma) > 0, i.e. n > rho (144); as the scan "
+                        "sets the table, VII reads n > 1/rho, which holds for every n >= 1 when rho >= 1 and would deny "
+                        "the equilibrium of VI. The bracketed (redundant) condition n > 1/rho of VI and the bound rho "
+                        "of VII were merged by the scan of the brace table.",
+                        corrected_reading=(sp.Matrix([rho - n, n - rho]), sp.Matrix([-F2s / (2 * sg ** 2), F2s / (2 * sg ** 2)]))),
+        note="VI: one stable equilibrium iff n < rho, VII: none")
+HGz = (sp.sqrt(2 * a * b * sg * sp.tan(phi)) / sp.sin(phi)).subs(phi, phi_z)
+d.quote("HG", "IX.B", r"Es ist aber  $H G = \frac{x}{\sin \varphi_2}$", reading=(HG, X / sp.sin(phi)))
+d.quote("cot", "IX.B", r"$$\text{oder, da (aus 134) } \cotg \varphi_2 = \frac{2 a b (1 - s)}{x^2},$$",
+        reading=(sp.cot(phi), 2 * a * b * (1 - s) / X ** 2))
+d.quote("sin2", "IX.B", r"$$\frac{1}{\sin^2 \varphi_2} = 1 + \frac{4 a^2 b^2 (1 - s)^2}{x^4}, \text{ also}$$",
+        reading=(1 / sp.sin(phi) ** 2, 1 + 4 * a ** 2 * b ** 2 * (1 - s) ** 2 / X ** 4))
+d.quote("HG2", "IX.B", r"$$\frac{x^2}{\sin^2 \varphi_2} = x^2 + \frac{4 a^2 b^2 (1 - s)^2}{x^2} \text{ folgt,}$$",
+        reading=(HG ** 2, X ** 2 / sp.sin(phi) ** 2, X ** 2 + 4 * a ** 2 * b ** 2 * (1 - s) ** 2 / X ** 2))
+d.quote("163", "(163)",
+        r"$$\left( \frac{c}{b} \right)^2 > z^2 + 4 \left( \frac{a}{b} \right)^2 \cdot \frac{(1 - s)^2}{z^2} \quad (163)$$",
+        reading=((c / b) ** 2 - (z ** 2 + 4 * (a / b) ** 2 * (1 - s) ** 2 / z ** 2), (c ** 2 - HGz ** 2) / b ** 2),
+        note="sign identity, factor 1/b^2: HG < c; HG c^3/12 > c HG^3/12 is the (43a) criterion in the second region")
+d.quote("164", "(164)", r"$$\left( \frac{c}{b} \right)^2 > 4 (1 - s)^2 + \left( \frac{a}{b} \right)^2 \quad (164)$$",
+        reading=((c / b) ** 2 - (4 * (1 - s) ** 2 + (a / b) ** 2), (c ** 2 - HGz.subs(z, 2 * sg) ** 2) / b ** 2),
+        note="HG^2/b^2 = z^2 + 4 n sigma^2/z^2 is convex in z^2; on [2 sigma, 1] its maximum is at z = 2 sigma when "
+             "n >= 1 (the difference of the end values is (n - 1)(1 - 4 sigma^2))")
+d.quote("HG-max", "IX.B", r"Letzteres tritt aber für den kleinsten Wert von  $x$  oder  $z$  ein",
+        reading=((HGz.subs(z, 2 * sg) ** 2 - HGz.subs(z, 1) ** 2) / b ** 2, (n - 1) * (1 - 4 * sg ** 2)))
+
+# ==== C. the third region ============================================================================
+kd = sp.Dummy("k")
+
+
+def swap_ab(e):
+    """e with a and b exchanged (three nested substitutions through a dummy)."""
+    return sp.Subs(sp.Subs(sp.Subs(e, a, kd), b, a), kd, b)
+
+
+d.step("upright-3", (GM3, swap_ab(GMa), b ** 2 / (12 * a * s) - a * (1 - s) / 2),
+       "substitution", uses=("upright-a",), result=GM3, note="a vertical, b horizontal: a and b exchanged")
+d.step("oblique-3", (tan2t, swap_ab(tan2a), 12 * (a / b) ** 2 * s * (1 - s) - 2),
+       "substitution", uses=("oblique-a",), result=tan2t,
+       note="tan^2 of the tilt from the a-vertical position, 90 deg - phi_3: cot^2 phi_3")
+d.step("touch-limit-3", sp.Eq(tl3, PW(2 * a * (1 - s) / b, 2 * a * s / b)), "definition", result=tl3)
+d.step("cube-roots", (sp.Matrix([1 - 6 * shi * (1 - shi), 1 - 6 * slo * (1 - slo)]).subs(
+    {shi: half + sp.sqrt(sp.Rational(1, 12)), slo: half - sp.sqrt(sp.Rational(1, 12))}), sp.zeros(2, 1)), "lemma",
+       uses=("scheeffer-vi-cf:cube-upright-roots",), note="the roots of 6 s (1-s) = 1 (79)")
+d.step("s-plus", sp.Eq(shi, half + sp.sqrt(sp.Rational(1, 12))), "definition", result=shi, uses=("cube-roots",))
+d.step("s-minus", sp.Eq(slo, half - sp.sqrt(sp.Rational(1, 12))), "definition", result=slo, uses=("cube-roots",))
+Q3 = (b / a) ** 2 / 2 * (tl3 ** 2 - tan2t)
+d.quote("upright-3", "IX.C", r"$$\text{wenn } \left(\frac{b}{a}\right)^2 > 6s(1-s) \text{ ist.}$$",
+        reading=((b / a) ** 2 - 6 * s * (1 - s), 12 * s / a * GM3))
+d.quote("164a", "(164a)",
+        r"s &> \frac{1}{2} + \sqrt{\frac{1}{12}} \text{ d. i. } > 0,7887 \\ \text{und für } s < \frac{1}{2}, \quad s &< "
+        r"\frac{1}{2} - \sqrt{\frac{1}{12}}",
+        reading=(sp.Matrix([shi, slo]), sp.Matrix([half + sp.sqrt(sp.Rational(1, 12)), half - sp.sqrt(sp.Rational(1, 12))])))
+d.quote("164a-upper", "(164a)", r"\text{ d. i. } > 0,7887", reading=(shi, sp.Rational("0.7887")),
+        tolerance=sp.Rational(1, 20000))
+d.quote("164a-lower", "(164a)", r"\text{ d. i. } < 0,2113", reading=(slo, sp.Rational("0.2113")),
+        tolerance=sp.Rational(1, 20000))
+d.quote("unstable-3", "IX.C", r"$$\text{oder } \left(\frac{a}{b}\right)^2 > \frac{1}{6s(1-s)},$$",
+        reading=((a / b) ** 2 - 1 / (6 * s * (1 - s)), -(a / b) ** 2 / (6 * s * (1 - s)) * 12 * s / a * GM3),
+        note="sign identity, factor (a/b)^2/(6s(1-s)) times 12 s/a: the a-vertical position is unstable")
+d.quote("165-pre", "IX.C", r"$$\left(\frac{b}{a}\right)^2 \geq 2(1-s)(4s-1)$$",
+        reading=(PW((b / a) ** 2 - rho_s, 0), PW(Q3, 0)))
+d.quote("165", "(165)",
+        r"$$\text{oder } \left(\frac{a}{b}\right)^2 \leq \frac{1}{2(1-s)(4s-1)} \text{ ist } \cdot \left(s > \frac{1}{2}\right) "
+        r"\quad (165)$$",
+        reading=(PW(1 / rho_s - (a / b) ** 2, 0), PW((a / b) ** 2 / rho_s * Q3, 0)),
+        note="sign identity for 1/4 < s (rho > 0), factor (a/b)^2/rho")
+d.quote("166", "(166)", r"$$\cotg^2 \varphi_3 = 12 \left(\frac{a}{b}\right)^2 s(1-s) - 2 \quad (166)$$",
+        reading=(tan2t, 12 * (a / b) ** 2 * s * (1 - s) - 2))
+d.quote("rho-less-1", "IX.C", r"$$0 < \left(s - \frac{1}{2}\right) \left(s - \frac{3}{4}\right)$$",
+        reading=((s - half) * (s - sp.Rational(3, 4)), (1 - rho_s) / 8))
+d.quote("s-three-quarters", "IX.C",
+        r"Im dritten Drehungsgebiet kann also ein schiefes stabiles Gleichgewicht stattfinden wenn  $s < \frac{3}{4}$  d. i.  "
+        r"$s < 0,75$  ebenso (für  $s < \frac{1}{2}$ ) wenn  $s > \frac{1}{4}$  oder  $s > 0,25$  ist.",
+        reading=(PW(sp.Rational(3, 4) - s, s - sp.Rational(1, 4)), PW((1 - rho_s) / (8 * (s - half)),
+                                                                    (1 - rho_s.subs(s, 1 - s)) / (8 * (half - s)))),
+        erratum=Erratum("misprint", "medium",
+                        r"\dots \text{ wenn } s > \frac{3}{4} \text{ d. i. } s > 0{,}75 \text{ ebenso (für } s < \frac{1}{2}"
+                        r"\text{) wenn } s < \frac{1}{4} \text{ oder } s < 0{,}25",
+                        "the line before concludes 'nur für s > 3/4 erfüllt' from 0 < (s - 1/2)(s - 3/4); the summary "
+                        "reverses both inequalities (and the mirror bound 1/4). Two consistent reversals are not a scan "
+                        "fault; the text's own derivation (and the clipped box) give s > 3/4, s < 1/4.",
+                        corrected_reading=(PW(s - sp.Rational(3, 4), sp.Rational(1, 4) - s),
+                                           PW((1 - rho_s) / (8 * (s - half)), (1 - rho_s.subs(s, 1 - s)) / (8 * (half - s))))),
+        note="sign identity: the region-3 oblique equilibrium needs rho < 1, i.e. (s - 1/2)(s - 3/4) > 0")
+d.quote("table-first", "IX.C",
+        r"- I. wenn  $\left(\frac{a}{b}\right)^2 \left\{ \begin{array}{l} > 6s(1-s), \\ > e \end{array} \right.$  eine "
+        r"Gleichgewichtslage,  " "\n"
+        r" II. wenn  $\left(\frac{a}{b}\right)^2 \left\{ \begin{array}{l} < 6s(1-s), \\ > e \end{array} \right.$  zwei "
+        r"Gleichgewichtslagen,  " "\n"
+        r" III. wenn  $\left(\frac{a}{b}\right)^2 < e$  eine Gleichgewichtslage",
+        reading=(PWM(sp.Matrix([(a / b) ** 2 - 6 * s * (1 - s), (a / b) ** 2 - e_print]), sp.zeros(2, 1)),
+                 PWM(sp.Matrix([12 * s / b * GMa, Q130]), sp.zeros(2, 1))),
+        erratum=Erratum("transcription", "high",
+                        r"\left(\frac{a}{b}\right)^2 \gtrless \varrho \text{ (for } e \text{ throughout the table)}",
+                        "'e' is not defined in the section: the bound is rho = 2(1-s)(4s-1) of (161a) (the condition (130) "
+                        "for the oblique position of the first region); the scan read the Greek varrho as e.",
+                        corrected_reading=(PWM(sp.Matrix([(a / b) ** 2 - 6 * s * (1 - s), (a / b) ** 2 - rho]), sp.zeros(2, 1)),
+                                           PWM(sp.Matrix([12 * s / b * GMa, Q130]), sp.zeros(2, 1)))),
+        note="for s > 1/2 (the mirror with 1 - s): I upright stable; II upright unstable and the oblique (125) stable; "
+             "III upright unstable, the oblique beyond the region")
+d.quote("table-third", "IX.C",
+        r"- I. wenn  $\left(\frac{a}{b}\right)^2 < \frac{1}{6s(1-s)}$  eine Gleichgewichtslage,  " "\n"
+        r" II. wenn  $\left(\frac{a}{b}\right)^2 \left\{ \begin{array}{l} > \frac{1}{6s(1-s)} \\ < \frac{1}{e} \end{array} "
+        r"\right.$  zwei Gleichgewichtslagen,  " "\n"
+        r" III. wenn  $\left(\frac{a}{b}\right)^2 \left\{ \begin{array}{l} > \frac{1}{e} \\ \left( > \frac{1}{6s(1-s)} "
+        r"\right) \end{array} \right.$  eine Gleichgewichtslage.",
+        reading=(PWM(sp.Matrix([1 / (6 * s * (1 - s)) - (a / b) ** 2, 1 / e_print - (a / b) ** 2]), sp.zeros(2, 1)),
+                 PWM(sp.Matrix([(a / b) ** 2 / (6 * s * (1 - s)) * 12 * s / a * GM3, (a / b) ** 2 / rho * Q3]), sp.zeros(2, 1))),
+        erratum=Erratum("transcription", "high", r"\frac{1}{\varrho} \text{ for } \frac{1}{e}",
+                        "as in the table of the first region, e is the scan's varrho; 1/rho is the bound (165).",
+                        corrected_reading=(PWM(sp.Matrix([1 / (6 * s * (1 - s)) - (a / b) ** 2, 1 / rho - (a / b) ** 2]), sp.zeros(2, 1)),
+                                           PWM(sp.Matrix([(a / b) ** 2 / (6 * s * (1 - s)) * 12 * s / a * GM3, (a / b) ** 2 / rho * Q3]),
+                                              sp.zeros(2, 1)))),
+        note="for s > 1/2 with rho > 0")
+
+
+# ==== witnesses: the clipped floating box ============================================================
+def _M(p):
+    return math if p <= 15 else mpmath
+
+
+def _num(v, p):
+    v = sp.sympify(v)
+    return float(v) if p <= 15 else mpmath.mpf(str(sp.N(v, p + 20)))
+
+
+def _bd(p):
+    """Body precision: float64, or mpmath with guard digits."""
+    return None if p <= 15 else p + 8
+
+
+def _dot(p, q):
+    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]
+
+
+@functools.lru_cache(maxsize=None)
+def _body(av, bv, cv, p):
+    return box(_num(av, p), _num(bv, p), _num(cv, p), dps=_bd(p))
+
+
+def _frame(M, ph, axis):
+    """Up vector u and h = du/dphi for a turn by phi about the edge direction z ('c') or x ('a')."""
+    sn, cs = M.sin(ph), M.cos(ph)
+    o = 0 * sn
+    return ((sn, cs, o), (cs, -sn, o)) if axis == "c" else ((o, cs, sn), (o, -sn, cs))
+
+
+def _state(body, ph, sv, axis, M):
+    return floating_state(body, _frame(M, ph, axis)[0], sv)
+
+
+def _gz(body, ph, sv, axis, M):
+    """dE/dphi = h.(G - B): the derivative of the clipped potential (tested against a difference quotient)."""
+    st = _state(body, ph, sv, axis, M)
+    h = _frame(M, ph, axis)[1]
+    return _dot(h, [st.G[k] - st.B[k] for k in range(3)])
+
+
+def _clearance(body, ph, sv, axis, M):
+    """Height of the lowest top-face vertex over the water (s > 1/2), or depth of the highest bottom-face vertex
+    (s < 1/2): zero when the face reaches the water."""
+    st = _state(body, ph, sv, axis, M)
+    u = st.u
+    if sv > 0.5:
+        return min(_dot(u, q) - st.t for q in body.vertices if q[1] > 0)
+    return -max(_dot(u, q) - st.t for q in body.vertices if q[1] < 0)
+
+
+def _corner(body, ph, sv, which, M):
+    """Height over the water of the corner C = (-a/2, b/2) or A = (a/2, -b/2) (turn about c)."""
+    st = _state(body, ph, sv, "c", M)
+    sx, sy = (-1, 1) if which == "C" else (1, -1)
+    q = next(v for v in body.vertices if (v[0] > 0) == (sx > 0) and (v[1] > 0) == (sy > 0) and v[2] > 0)
+    return _dot(st.u, q) - st.t
+
+
+def _illinois(f, lo, hi, eps):
+    flo, fhi = f(lo), f(hi)
+    if flo == 0:
+        return lo
+    if fhi == 0:
+        return hi
+    if (flo > 0) == (fhi > 0):
+        raise ValueError("no sign change in the bracket")
+    side, c_old, c_ = 0, None, lo
+    for _ in range(400):
+        c_ = (lo * fhi - hi * flo) / (fhi - flo)
+        fc = f(c_)
+        if fc == 0:
+            return c_
+        if (fc > 0) == (fhi > 0):
+            hi, fhi = c_, fc
+            if side == -1:
+                flo /= 2
+            side = -1
+        else:
+            lo, flo = c_, fc
+            if side == 1:
+                fhi /= 2
+            side = 1
+        if c_old is not None and abs(c_ - c_old) <= eps * (1 + abs(c_)):
+            return c_
+        c_old = c_
+    return c_
+
+
+def _root(make_f, grid, p, last=False):
+    """First (or last) sign change of f on the float grid, refined in float64 and, for p > 15, at p digits in a
+    narrow bracket around the float root.  make_f(q) builds f at precision q."""
+    ff = make_f(15)
+    vals = [ff(g) for g in grid]
+    idx = [i for i in range(len(grid) - 1) if (vals[i] > 0) != (vals[i + 1] > 0)]
+    i = idx[-1] if last else idx[0]
+    x0 = _illinois(ff, grid[i], grid[i + 1], 1e-15)
+    if p <= 15:
+        return x0
+    fm = make_f(p)
+    with mpmath.workdps(p + 8):
+        dlt = mpmath.mpf("1e-9") * (1 + abs(x0))
+        lo, hi = mpmath.mpf(x0) - dlt, mpmath.mpf(x0) + dlt
+        if (fm(lo) > 0) == (fm(hi) > 0):
+            lo, hi = mpmath.mpf(grid[i]), mpmath.mpf(grid[i + 1])
+        return _illinois(fm, lo, hi, mpmath.mpf(10) ** (-p - 4))
+
+
+PHI = [0.004 + 0.025 * k for k in range(63)]      # (0, pi/2)
+
+
+@functools.lru_cache(maxsize=None)
+def _tilt(av, bv, cv, sv, axis, kind, p):
+    """A clipped tilt: 'eq' the first root of GZ (first region), 'eq3' the last root below 90 deg (third
+    region), 'touch' a base face reaching the water, 'C'/'A' the corners C, A reaching the water."""
+    def make(q):
+        M, body, s_ = _M(q), _body(av, bv, cv, q), _num(sv, q)
+        if kind in ("eq", "eq3"):
+            return lambda ph: _gz(body, ph, s_, axis, M)
+        if kind == "touch":
+            return lambda ph: _clearance(body, ph, s_, axis, M)
+        return lambda ph: _corner(body, ph, s_, kind, M)
+    grid = PHI[:-1] if kind == "eq3" else PHI
+    return _root(make, grid, p, last=(kind == "eq3"))
+
+
+def _leg(body, ph, sv, bv, M):
+    """z = x/b: the distance of the rising corner D = (a/2, b/2) from the water along the side b, over b."""
+    st = _state(body, ph, sv, "c", M)
+    Dq = next(v for v in body.vertices if v[0] > 0 and v[1] > 0 and v[2] > 0)
+    return (_dot(st.u, Dq) - st.t) / M.cos(ph) / bv
+
+
+def _dry(body, ph, sv, M):
+    """The clipped state, m_3 = h.S_3 (S_3 the centroid of the dry part) and HG (waterplane width)."""
+    st = _state(body, ph, sv, "c", M)
+    h = _frame(M, ph, "c")[1]
+    vol = st.volume / sv
+    S3 = [(vol * st.G[k] - st.volume * st.B[k]) / (vol - st.volume) for k in range(3)]
+    zs = [q[2] for q in body.vertices]
+    return st, _dot(h, S3), st.waterplane_area / (max(zs) - min(zs))
+
+
+@functools.lru_cache(maxsize=None)
+def _tilt_of_z(av, bv, sv, zv, p):
+    """The clipped tilt at which x/b = z (root in phi of the measured leg)."""
+    def make(q):
+        M, body = _M(q), _body(av, bv, 2, q)
+        s_, b_, z_ = _num(sv, q), _num(bv, q), _num(zv, q)
+        return lambda ph: _leg(body, ph, s_, b_, M) - z_
+    return _root(make, PHI, p)
+
+
+def _G_at(av, bv, sv, ph, p):
+    """3 m_3 z^3/(b sin phi) of the clipped box at the tilt phi, z the measured x/b."""
+    M, body = _M(p), _body(av, bv, 2, p)
+    s_, b_ = _num(sv, p), _num(bv, p)
+    zm = _leg(body, ph, s_, b_, M)
+    return 3 * _dry(body, ph, s_, M)[1] * zm ** 3 / (b_ * M.sin(ph))
+
+
+def _G(av, bv, sv, zv, p):
+    return _G_at(av, bv, sv, _tilt_of_z(av, bv, sv, zv, p), p)
+
+
+def _stencil(av, bv, sv, zv, p, order):
+    """F' or F'' of the clipped quantity by five-point central differences in z, step 1/25: exact for polynomials of
+    degree 4 (5 for F''); a clipped quantity that were not a quartic would show as a difference of order h^4."""
+    h = sp.Rational(1, 25)
+    f = [_G(av, bv, sv, zv + k * h, p) for k in (-2, -1, 1, 2)]
+    hn = _num(h, p)
+    if order == 1:
+        return (f[0] - 8 * f[1] + 8 * f[2] - f[3]) / (12 * hn)
+    return (-f[0] + 16 * f[1] - 30 * _G(av, bv, sv, zv, p) + 16 * f[2] - f[3]) / (12 * hn ** 2)
+
+
+def P(c_):
+    return [c_.params[k] for k in (a, b, c, s)]
+
+
+def computed(name, description, targets, cases, fn):
+    d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=fn))
+
+
+def C(label, **kw):
+    syms = {"a": a, "b": b, "c": c, "s": s, "z": z, "varphi_2": phi, "t": t}
+    return Case({syms[k]: sp.Rational(v) for k, v in kw.items()}, label=label)
+
+
+def _upright(c_, p, axis_up="b"):
+    av, bv, cv, sv = P(c_)
+    u = (0, 1, 0) if axis_up == "b" else (1, 0, 0)
+    return floating_state(_body(av, bv, cv, p), u, _num(sv, p)), [_num(v, p) for v in (av, bv, cv, sv)]
+
+
+UP = (C("a = 1, b = 2, c = 3, s = 3/10", a=1, b=2, c=3, s="0.3"), C("a = 3/2, b = 1, c = 2, s = 4/5", a="1.5", b=1, c=2, s="0.8"),
+      C("a = 1, b = 1, c = 5/4, s = 1/2", a=1, b=1, c="1.25", s="0.5"))
+
+
+def _gm(st, which):
+    return (st.I_min if which == "min" else st.I_max) / st.volume - st.potential
+
+
+computed("upright-min", "metacentric height about the axis parallel to c, upright (clipped, I_min for c > a)",
+         ("122", "stability-condition"), UP, lambda c_, p: _gm(_upright(c_, p)[0], "min"))
+computed("upright-min-12", "12 s/b x the same", ("123", "132a"), UP,
+         lambda c_, p: (lambda st, v: 12 * v[3] / v[1] * _gm(st, "min"))(*_upright(c_, p)))
+computed("upright-max", "metacentric height about the axis parallel to a (I_max), upright (clipped)", ("T11-V1",), UP,
+         lambda c_, p: _gm(_upright(c_, p)[0], "max"))
+computed("upright-max-12", "12 s/b x the same", ("124",), UP,
+         lambda c_, p: (lambda st, v: 12 * v[3] / v[1] * _gm(st, "max"))(*_upright(c_, p)))
+computed("moments", "smallest and largest waterplane moments, upright (clipped)", ("T1",), UP,
+         lambda c_, p: _upright(c_, p)[0].I_min)
+computed("largest", "largest waterplane moment, upright (clipped)", ("largest-moment",), UP,
+         lambda c_, p: _upright(c_, p)[0].I_max)
+computed("volume-height", "submerged volume and height of G above B, upright (clipped)", ("V1-e1",), UP,
+         lambda c_, p: (lambda st: (st.volume, st.potential))(_upright(c_, p)[0]))
+computed("moment-volume-height", "I_min and volume x height of G above B, upright (clipped)", ("T1-V1e1",), UP,
+         lambda c_, p: (lambda st: (st.I_min, st.volume * st.potential))(_upright(c_, p)[0]))
+computed("moment-difference", "I_max - I_min and the moments, upright (clipped)", ("127",), UP,
+         lambda c_, p: (lambda st: (st.I_max, st.I_min, st.I_max - st.I_min))(_upright(c_, p)[0]))
+computed("moment-difference-2", "I_max - I_min, upright (clipped)", ("126",), UP,
+         lambda c_, p: (lambda st: st.I_max - st.I_min)(_upright(c_, p)[0]))
+computed("moment-difference-3", "I_min - I_max, upright (clipped)", ("128-unstable",), UP,
+         lambda c_, p: (lambda st: st.I_min - st.I_max)(_upright(c_, p)[0]))
+
+# first region: both oblique positions inside the region (6s(1-s) > (a/b)^2, (c/b)^2 >= rho)
+R1 = (C("a = 21/20, b = 1, c = 11/10, s = 7/10", a="1.05", b=1, c="1.1", s="0.7"),
+      C("a = 21/20, b = 1, c = 11/10, s = 3/10", a="1.05", b=1, c="1.1", s="0.3"),
+      C("a = 53/50, b = 1, c = 11/10, s = 17/25", a="1.06", b=1, c="1.1", s="0.68"))
+
+
+def _tan2(c_, p, axis, kind="eq"):
+    return _M(p).tan(_tilt(*P(c_), axis, kind, p)) ** 2
+
+
+computed("oblique-c", "tan^2 of the clipped equilibrium tilt about the c-axis (root of GZ)", ("125",), R1,
+         lambda c_, p: _tan2(c_, p, "c"))
+computed("oblique-c-pre", "1 + tan^2/2 of the clipped equilibrium tilt about the c-axis", ("125-pre",), R1,
+         lambda c_, p: 1 + _tan2(c_, p, "c") / 2)
+computed("oblique-c-32", "I_min (1 + tan^2 phi_1/2) - V e_1 with the clipped upright moment, volume, height and tilt",
+         ("32",), R1, lambda c_, p: (lambda st: st.I_min * (1 + _tan2(c_, p, "c") / 2) - st.volume * st.potential)(
+             _upright(c_, p)[0]))
+computed("oblique-a", "tan^2 of the clipped equilibrium tilt about the a-axis", ("128",), R1, lambda c_, p: _tan2(c_, p, "a"))
+R1U = R1[:1] + R1[2:]
+computed("touch", "tan of the clipped tilt at which the top face reaches the water, about c and about a", ("129",), R1U,
+         lambda c_, p: (_M(p).tan(_tilt(*P(c_), "c", "touch", p)), _M(p).tan(_tilt(*P(c_), "a", "touch", p))))
+computed("touch-2", "tan^2 of the clipped touching tilt about c", ("129-squared",), R1U,
+         lambda c_, p: _tan2(c_, p, "c", "touch"))
+computed("margin", "tan^2(touch) - tan^2(equilibrium) about c, clipped", ("130-pre",), R1U,
+         lambda c_, p: _tan2(c_, p, "c", "touch") - _tan2(c_, p, "c"))
+
+
+def _q(c_, p, axis):
+    av, bv, cv, _ = [_num(v, p) for v in P(c_)]
+    e_ = av if axis == "c" else cv
+    return (e_ / bv) ** 2 / 2 * (_tan2(c_, p, axis, "touch") - _tan2(c_, p, axis))
+
+
+def _m12(c_, p, which):
+    st, v = _upright(c_, p)
+    return -12 * v[3] / v[1] * _gm(st, which)
+
+
+computed("margin-130", "(a/b)^2/2 (tan^2 touch - tan^2 equilibrium) about c, clipped", ("130",), R1U, lambda c_, p: _q(c_, p, "c"))
+computed("region-131", "-12 s/b GM and the margins, both axes, clipped", ("131",), R1U,
+         lambda c_, p: (_m12(c_, p, "min"), _q(c_, p, "c"), _m12(c_, p, "max"), _q(c_, p, "a")))
+computed("region-132b", "-12 s/b GM about c and the margin, clipped", ("132b",), R1,
+         lambda c_, p: (_m12(c_, p, "min"), _q(c_, p, "c")))
+computed("region-132c", "-12 s/b GM about a and the margin, clipped", ("132c",), R1,
+         lambda c_, p: (_m12(c_, p, "max"), _q(c_, p, "a")))
+
+# second region
+R2 = (C("a = 3/2, b = 1, s = 4/5, z = 3/4", a="1.5", b=1, s="0.8", z="0.75"),
+      C("a = 6/5, b = 1, s = 9/10, z = 1/2", a="1.2", b=1, s="0.9", z="0.5"),
+      C("a = 1, b = 1, s = 7/10, z = 9/10", a=1, b=1, s="0.7", z="0.9"))
+
+
+def _Gz(c_, p):
+    return _G(c_.params[a], c_.params[b], c_.params[s], c_.params[z], p)
+
+
+computed("quartic", "3 m_3 z^3/(b sin phi_2) of the clipped box at the tilt where x/b = z", ("133", "136"), R2, _Gz)
+computed("quartic-first", "3 m_3 z^3/b of the clipped box at the tilt where x/b = z", ("133-first",), R2,
+         lambda c_, p: (lambda ph: _G_at(c_.params[a], c_.params[b], c_.params[s], ph, p) * _M(p).sin(ph))(
+             _tilt_of_z(c_.params[a], c_.params[b], c_.params[s], c_.params[z], p)))
+computed("quartic-d1", "five-point derivative in z of the clipped quantity", ("137",), R2[:2],
+         lambda c_, p: _stencil(c_.params[a], c_.params[b], c_.params[s], c_.params[z], p, 1))
+computed("quartic-d2", "five-point second derivative in z of the clipped quantity", ("138",), R2[:2],
+         lambda c_, p: _stencil(c_.params[a], c_.params[b], c_.params[s], c_.params[z], p, 2))
+R34 = (C("a = 3/2, b = 1, s = 4/5", a="1.5", b=1, s="0.8"),)
+computed("quartic-d1-34", "five-point derivative of the clipped quantity at z = 3/4", ("139", "139-pre"), R34,
+         lambda c_, p: _stencil(c_.params[a], c_.params[b], c_.params[s], sp.Rational(3, 4), p, 1))
+computed("threshold-140", "F'(3/4)/3 of the clipped box with a = b", ("140",),
+         (C("s = 4/5", s="0.8"),),
+         lambda c_, p: _stencil(1, 1, c_.params[s], sp.Rational(3, 4), p, 1) / 3)
+R2T = (C("a = 3/2, b = 1, s = 4/5, varphi_2 = 1/2", a="1.5", b=1, s="0.8", varphi_2="0.5"),
+       C("a = 6/5, b = 1, s = 9/10, varphi_2 = 3/5", a="1.2", b=1, s="0.9", varphi_2="0.6"))
+
+
+def _at_phi(c_, p):
+    M = _M(p)
+    body, s_ = _body(c_.params[a], c_.params[b], 2, p), _num(c_.params[s], p)
+    ph = _num(c_.params[phi], p)
+    xm = _leg(body, ph, s_, 1, M)
+    return xm, _dry(body, ph, s_, M)[2]
+
+
+computed("leg", "x^2: the clipped distance of the rising corner from the water along b, squared", ("134",), R2T,
+         lambda c_, p: _at_phi(c_, p)[0] ** 2)
+computed("waterline", "HG: clipped waterplane width across the axis", ("HG",), R2T, lambda c_, p: _at_phi(c_, p)[1])
+computed("waterline-2", "HG^2 (clipped)", ("HG2",), R2T, lambda c_, p: _at_phi(c_, p)[1] ** 2)
+computed("waterline-ratio", "(HG/x)^2 (clipped)", ("sin2",), R2T, lambda c_, p: (_at_phi(c_, p)[1] / _at_phi(c_, p)[0]) ** 2)
+computed("cot-leg", "2 a b (1-s)/x^2 with the clipped x", ("cot",), R2T,
+         lambda c_, p: 2 * _num(c_.params[a] * c_.params[b] * (1 - c_.params[s]), p) / _at_phi(c_, p)[0] ** 2)
+R2E = (C("a = 3/2, b = 1, c = 3, s = 4/5", a="1.5", b=1, c=3, s="0.8"), C("a = 6/5, b = 1, c = 2, s = 7/10", a="1.2", b=1, c=2, s="0.7"),
+       C("a = 1, b = 1, c = 2, s = 13/20", a=1, b=1, c=2, s="0.65"))
+
+
+def _end(c_, p, which):
+    """(z, G, HG) at the clipped tilt where corner C (start of the region) or A (end) reaches the water."""
+    av, bv, sv = c_.params[a], c_.params[b], c_.params[s]
+    ph = _tilt(av, bv, 2, sv, "c", which, p)
+    M, body, s_ = _M(p), _body(av, bv, 2, p), _num(sv, p)
+    return _leg(body, ph, s_, _num(bv, p), M), _G_at(av, bv, sv, ph, p), _dry(body, ph, s_, M)[2]
+
+
+computed("x-low", "x at the clipped tilt where corner C reaches the water (twice)", ("x-low",), R2E,
+         lambda c_, p: (lambda e: (e[0] * _num(c_.params[b], p),) * 2)(_end(c_, p, "C")))
+computed("z-low", "x/b at the clipped tilt where corner C reaches the water", ("135a",), R2E, lambda c_, p: _end(c_, p, "C")[0])
+computed("z-high", "x/b at the clipped tilt where corner A reaches the water", ("135b",), R2E, lambda c_, p: _end(c_, p, "A")[0])
+computed("F-low", "the clipped quantity at the start of the region", ("141",), R2E, lambda c_, p: _end(c_, p, "C")[1])
+computed("F-high", "the clipped quantity at the end of the region", ("142",), R2E, lambda c_, p: _end(c_, p, "A")[1])
+
+
+def _sig2(c_, p):
+    return 2 * _num(1 - c_.params[s], p) ** 2
+
+
+computed("F-low-143", "-F(2 sigma)/(2 sigma^2), clipped", ("143",), R2E, lambda c_, p: -_end(c_, p, "C")[1] / _sig2(c_, p))
+computed("F-low-144", "F(2 sigma)/(2 sigma^2), clipped", ("144",), R2E, lambda c_, p: _end(c_, p, "C")[1] / _sig2(c_, p))
+computed("F-ends", "the clipped quantity at both ends of the region", ("161",), R2E,
+         lambda c_, p: (_end(c_, p, "C")[1], _end(c_, p, "A")[1]))
+computed("F-ends-162", "F(2 sigma)/(2 sigma^2) and 2 F(1)/rho, clipped", ("162",), R2E,
+         lambda c_, p: (_end(c_, p, "C")[1] / _sig2(c_, p),
+                        2 * _end(c_, p, "A")[1] / _num(rho_s.subs(s, c_.params[s]), p)))
+computed("F-ends-162a", "-F(2 sigma)/(2 sigma^2) and F(2 sigma)/(2 sigma^2), clipped", ("162a",), R2E,
+         lambda c_, p: (-_end(c_, p, "C")[1] / _sig2(c_, p), _end(c_, p, "C")[1] / _sig2(c_, p)))
+computed("HG-start", "(c^2 - HG^2)/b^2 at the start of the region (clipped)", ("164",), R2E,
+         lambda c_, p: (_num(c_.params[c], p) ** 2 - _end(c_, p, "C")[2] ** 2) / _num(c_.params[b], p) ** 2)
+computed("HG-ends", "(HG_start^2 - HG_end^2)/b^2 (clipped)", ("HG-max",), R2E,
+         lambda c_, p: (_end(c_, p, "C")[2] ** 2 - _end(c_, p, "A")[2] ** 2) / _num(c_.params[b], p) ** 2)
+R2C = (C("a = 3/2, b = 1, c = 2, s = 4/5, z = 3/4", a="1.5", b=1, c=2, s="0.8", z="0.75"),
+       C("a = 6/5, b = 1, c = 3/2, s = 9/10, z = 1/2", a="1.2", b=1, c="1.5", s="0.9", z="0.5"))
+
+
+def _hg_z(c_, p):
+    av, bv, sv = c_.params[a], c_.params[b], c_.params[s]
+    ph = _tilt_of_z(av, bv, sv, c_.params[z], p)
+    return _dry(_body(av, bv, 2, p), ph, _num(sv, p), _M(p))[2]
+
+
+computed("HG-z", "(c^2 - HG^2)/b^2 at the tilt where x/b = z (clipped)", ("163",), R2C,
+         lambda c_, p: (_num(c_.params[c], p) ** 2 - _hg_z(c_, p) ** 2) / _num(c_.params[b], p) ** 2)
+
+# third region: the a-vertical position and its oblique neighbour
+R3 = (C("a = 21/20, b = 1, c = 2, s = 4/5", a="1.05", b=1, c=2, s="0.8"),
+      C("a = 27/25, b = 1, c = 3/2, s = 41/50", a="1.08", b=1, c="1.5", s="0.82"))
+R3M = R3 + (C("a = 21/20, b = 1, c = 2, s = 1/5", a="1.05", b=1, c=2, s="0.2"),)
+
+
+def _cot2_3(c_, p):
+    return 1 / _M(p).tan(_tilt(*P(c_), "c", "eq3", p)) ** 2
+
+
+def _q3(c_, p):
+    """(b/a)^2/2 (tan^2 of the touching tilt - tan^2 of the equilibrium tilt), both from the a-vertical position."""
+    av, bv = _num(c_.params[a], p), _num(c_.params[b], p)
+    return (bv / av) ** 2 / 2 * (_tan_touch3(c_, p) ** 2 - _cot2_3(c_, p))
+
+
+def _tan_touch3(c_, p):
+    """tan of the tilt from the a-vertical position at which the face x = +a/2 (s > 1/2) reaches the water."""
+    av, bv, cv, sv = P(c_)
+
+    def make(q):
+        M, body, s_ = _M(q), _body(av, bv, cv, q), _num(sv, q)
+
+        def f(ps):
+            st = _state(body, M.pi / 2 - ps, s_, "c", M)
+            return min(_dot(st.u, v) - st.t for v in body.vertices if v[0] > 0)
+        return f
+    return _M(p).tan(_root(make, PHI, p))
+
+
+computed("oblique-3", "cot^2 of the clipped equilibrium tilt next to the a-vertical position (last root of GZ)",
+         ("166",), R3M, _cot2_3)
+computed("upright-3", "12 s/a x metacentric height with a vertical (clipped)", ("upright-3",), R3M,
+         lambda c_, p: (lambda st, v: 12 * v[3] / v[0] * st.metacentric_height)(*_upright(c_, p, "a")))
+computed("unstable-3", "-(a/b)^2/(6s(1-s)) 12 s/a x metacentric height with a vertical (clipped)", ("unstable-3",), R3M,
+         lambda c_, p: (lambda st, v: -(v[0] / v[1]) ** 2 / (6 * v[3] * (1 - v[3])) * 12 * v[3] / v[0]
+                        * st.metacentric_height)(*_upright(c_, p, "a")))
+computed("margin-3", "(b/a)^2/2 (tan^2 touch - tan^2 equilibrium) next to the a-vertical position (clipped)",
+         ("165-pre",), R3, _q3)
+computed("margin-165", "(a/b)^2/rho x the same (clipped)", ("165",), R3,
+         lambda c_, p: (_num(c_.params[a] / c_.params[b], p)) ** 2 / _num(rho_s.subs(s, c_.params[s]), p) * _q3(c_, p))
+
+
+# the double roots: GZ = 0 = dGZ/dphi in (phi, a), b = 1, by Newton's method on the clipped box
+def _gz_a(av, ph, sv, p):
+    M = _M(p)
+    return _gz(box(av, 1, 2, dps=_bd(p)), ph, sv, "c", M)
+
+
+def _dgz(av, ph, sv, p):
+    """dGZ/dphi by a sixth-order central difference."""
+    h = 1e-3 if p <= 15 else mpmath.mpf(10) ** -9
+    w3 = ((1, 45), (2, -9), (3, 1))
+    return sum(wk * (_gz_a(av, ph + k * h, sv, p) - _gz_a(av, ph - k * h, sv, p)) for k, wk in w3) / (60 * h)
+
+
+def _newton(av, ph, sv, p):
+    """Newton's method with the Jacobian (difference quotients) of the first step kept (chord method)."""
+    da = 1e-7 if p <= 15 else mpmath.mpf(10) ** -20
+    hh = 1e-4 if p <= 15 else mpmath.mpf(10) ** -12
+    jac = None
+    for _ in range(12):
+        r1, r2 = _gz_a(av, ph, sv, p), _dgz(av, ph, sv, p)
+        if jac is None or p <= 15:
+            j21 = (_gz_a(av, ph + hh, sv, p) - 2 * r1 + _gz_a(av, ph - hh, sv, p)) / hh ** 2
+            j12 = (_gz_a(av + da, ph, sv, p) - r1) / da
+            j22 = (_dgz(av + da, ph, sv, p) - r2) / da
+            jac = (r2, j12, j21, j22)
+        j11, j12, j21, j22 = jac
+        det = j11 * j22 - j12 * j21
+        dph, dav = (r1 * j22 - r2 * j12) / det, (j11 * r2 - j21 * r1) / det
+        ph, av = ph - dph, av - dav
+        if abs(dph) + abs(dav) < (1e-14 if p <= 15 else mpmath.mpf(10) ** (4 - p)):
+            break
+    return av, ph
+
+
+@functools.lru_cache(maxsize=None)
+def _double_root(tv, upper, p):
+    """(z, n) at the double root of the clipped righting arm: the minimum (upper, a > b) or the maximum (a < b).
+    Start: the a on a grid at which the interior extremum of GZ over the second region changes sign."""
+    sv = 1 - float(9 * (1 + 3 * tv) / 128)
+    best = None
+    grid = [1.02 + 0.04 * k for k in range(40)] if upper else [0.98 - 0.02 * k for k in range(30)]
+    prev = None
+    for av in grid:
+        body = box(av, 1, 2)
+        lo = _illinois(lambda q: _corner(body, q, sv, "C", math), 1e-3, 1.57, 1e-12)
+        hi = _illinois(lambda q: _corner(body, q, sv, "A", math), 1e-3, 1.57, 1e-12)
+        phs = [lo + (hi - lo) * (k + 0.5) / 60 for k in range(60)]
+        g = [_gz(body, q, sv, "c", math) for q in phs]
+        ext = [i for i in range(1, 59) if (g[i] < g[i - 1] and g[i] < g[i + 1]) == upper
+               and (g[i] > g[i - 1] and g[i] > g[i + 1]) != upper]
+        if not ext:
+            continue
+        i = ext[-1] if upper else ext[0]
+        if prev is not None and (prev[1] > 0) != (g[i] > 0):
+            best = (av, phs[i])
+            break
+        prev = (av, g[i])
+    av, ph = _newton(best[0], best[1], sv, 15)
+    if p > 15:
+        with mpmath.workdps(p + 8):
+            av, ph = _newton(mpmath.mpf(av), mpmath.mpf(ph), 1 - _num(9 * (1 + 3 * tv) / 128, p + 8), p)
+    M = _M(p)
+    sp_ = 1 - _num(9 * (1 + 3 * tv) / 128, p) if p > 15 else sv
+    return _leg(box(av, 1, 2, dps=_bd(p)), ph, sp_, 1, M), av ** 2
+
+
+DRC = (C("t = 1/2", t="1/2"),)
+
+
+def _dr(c_, p):
+    tv = c_.params[t]
+    (zp, n1), (zm, n2) = _double_root(tv, True, p), _double_root(tv, False, p)
+    return zp, n1, zm, n2
+
+
+computed("double-root-plus", "x/b at the clipped double root (minimum of GZ, a > b)", ("158",), DRC, lambda c_, p: _dr(c_, p)[0])
+computed("double-roots", "x/b at the clipped double roots (minimum, a > b; maximum, a < b)",
+         ("157", "155", "155-pre"), DRC, lambda c_, p: (_dr(c_, p)[0], _dr(c_, p)[2]))
+computed("double-root-n", "(a/b)^2 at the clipped double roots and their product", ("153",), DRC,
+         lambda c_, p: (_dr(c_, p)[1], _dr(c_, p)[3], _dr(c_, p)[1] * _dr(c_, p)[3]))
+computed("double-root-n-156", "(a/b)^2 at the clipped double roots", ("156",), DRC, lambda c_, p: (_dr(c_, p)[1], _dr(c_, p)[3]))
+computed("double-root-n-156b", "n (1 + 3t)/(1 - t^2) at the clipped double roots", ("156-b",), DRC,
+         lambda c_, p: tuple(_dr(c_, p)[k] * _num((1 + 3 * c_.params[t]) / (1 - c_.params[t] ** 2), p) for k in (1, 3)))
+computed("double-root-S", "n + 1/n at the clipped double root", ("151", "152", "n-sum", "n-sum-t", "156-S"), DRC,
+         lambda c_, p: _dr(c_, p)[1] + 1 / _dr(c_, p)[1])
+computed("double-root-S-154", "S - 2, S + 2, S^2 - 4 with S = n + 1/n at the clipped double root", ("154",), DRC,
+         lambda c_, p: (lambda S_: (S_ - 2, S_ + 2, S_ ** 2 - 4))(_dr(c_, p)[1] + 1 / _dr(c_, p)[1]))
+computed("double-root-order", "z_+ - z_-, 4 z_+ - 3, 3 - 4 z_- at the clipped double roots", ("minimum",), DRC,
+         lambda c_, p: (_dr(c_, p)[0] - _dr(c_, p)[2], 4 * _dr(c_, p)[0] - 3, 3 - 4 * _dr(c_, p)[2]))
+computed("double-root-159", "1 - z_+ and 16 (1 - z_+) at the clipped double root", ("159",), DRC, lambda c_, p: 1 - _dr(c_, p)[0])
+computed("double-root-160", "16 (1 - z_+) at the clipped double root", ("160",), DRC, lambda c_, p: 16 * (1 - _dr(c_, p)[0]))
+
+
+# ==== the printed tables as a predictor ================================================================
+def _n1_printed(sv):
+    """n_1 by (147) and (156), upper sign (the form of (156) has no removable singularity at t = 0)."""
+    tt = (128 * (1 - sv) - 9) / 27
+    return 1 + (1 - tt) ** 3 / (2 * (1 + 3 * tt)) + (1 - tt * tt) / (2 * (1 + 3 * tt)) * math.sqrt((5 - tt) * (1 - tt))
+
+
+def _second_region(sv, nn):
+    """Stabilities about the axis, in the order of growing tilt, and the printed names, from (162), (162a)."""
+    sig = 1 - sv
+    r_ = 2 * sig * (4 * sv - 1)
+    if sv <= 23 / 32:
+        return (["stable"], ("162a", "143")) if nn < r_ else ([], ("162a", "144"))
+    lo, hi, big = nn < r_, nn > 1 / r_, nn > _n1_printed(sv)
+    table = {(True, True, True): ["stable"], (True, True, False): ["stable", "unstable", "stable"],
+             (False, False, False): ["unstable"], (False, True, False): ["unstable", "stable"],
+             (False, True, True): []}
+    return table.get((lo, hi, big), []), ("162", "161", "156")
+
+
+def _region2_roots(sv, nn, k):
+    """The k roots of the printed F (136) that the table speaks of: those in [2 sigma, 1], completed by the
+    positive roots nearest that interval if the count differs."""
+    sig = 1 - sv
+    rts = [r_.real for r_ in np.roots([1, -1.5, 0, 3 * nn * sig, -4 * nn * sig ** 2]) if abs(r_.imag) < 1e-9 and r_.real > 0]
+    dist = lambda r_: max(2 * sig - r_, r_ - 1, 0)  # noqa: E731
+    return sorted(sorted(rts, key=dist)[:k])
+
+
+def tables_prediction(s, ratio):
+    """What the printed tables of IX say for the section a x b (ratio = a/b; the larger edge is taken as a, the
+    text's a > b) at density s: one dict per equilibrium with the region (1, 2, 3), the tilt phi from the
+    position with b vertical (radians), the stability about the axis ('stable'/'unstable'), the printed names,
+    and for the second region the root z of F.  s < 1/2 is read with 1 - s (the text's rule)."""
+    ratio = max(ratio, 1 / ratio)
+    nn, sv = ratio * ratio, max(s, 1 - s)
+    ss = sv * (1 - sv)
+    r_ = 2 * (1 - sv) * (4 * sv - 1)
+    out = [dict(region=1, phi=0.0, stability="stable" if nn > 6 * ss else "unstable", printed=("132a", "table-first"))]
+    if 6 * ss > nn >= r_:
+        out.append(dict(region=1, phi=math.atan(math.sqrt(12 * ss / nn - 2)), stability="stable",
+                        printed=("125", "132b", "table-first")))
+    if sv > 0.5:
+        stab, names = _second_region(sv, nn)
+        for zr, st in zip(_region2_roots(sv, nn, len(stab)), stab):
+            out.append(dict(region=2, phi=math.atan(zr * zr / (2 * (1 - sv) * ratio)), stability=st,
+                            printed=names + ("136", "134"), z=zr))
+    if 1 / (6 * ss) < nn <= 1 / r_:
+        out.append(dict(region=3, phi=math.atan(1 / math.sqrt(12 * nn * ss - 2)), stability="stable",
+                        printed=("165", "166", "table-third")))
+    out.append(dict(region=3, phi=math.pi / 2, stability="stable" if 1 / nn > 6 * ss else "unstable",
+                    printed=("upright-3", "table-third")))
+    return out
+
+
+def _key(dims, up):
+    nrm = math.sqrt(sum(u_ * u_ for u_ in up))
+    return tuple(sorted((round(dims[k], 12), round(abs(up[k]) / nrm, 7)) for k in range(3)))
+
+
+def predict(scene):
+    """Equilibria with the axis of rotation along an edge of the box (up perpendicular to it) as the printed
+    tables give them: the three positions with a face down (123), and for each edge as axis the oblique
+    positions of the three regions.  Stability in every direction: upright by (123) with the smaller horizontal
+    edge; oblique in the first region by (126)/(127) (the edge along the axis longer than the horizontal edge
+    across it), in the third likewise with b, in the second by the table and (163) (HG < edge along the axis)."""
+    dims = [float(v) for v in scene.dims]
+    sv = float(scene.density)
+    preds, seen = [], set()
+
+    def add(up, stability, printed, note):
+        k = _key(dims, up)
+        if k not in seen:
+            seen.add(k)
+            preds.append(Prediction(printed=printed, up=tuple(up), stability=stability, note=note))
+
+    for k in range(3):
+        hor = min(dims[j] for j in range(3) if j != k)
+        up = tuple(1.0 if j == k else 0.0 for j in range(3))
+        add(up, "stable" if (hor / dims[k]) ** 2 > 6 * sv * (1 - sv) else "unstable", ("123", "132a"),
+            "face down, (123)")
+    for ax in range(3):
+        i, j = [k for k in range(3) if k != ax]
+        if dims[i] < dims[j]:
+            i, j = j, i                      # dims[i] is the text's a (larger), dims[j] its b
+        L, A_, B_ = dims[ax], dims[i], dims[j]
+        for eq in tables_prediction(sv, A_ / B_):
+            if eq["region"] != 2 and eq["phi"] in (0.0, math.pi / 2):
+                continue
+            up = [0.0, 0.0, 0.0]
+            up[j], up[i] = math.cos(eq["phi"]), math.sin(eq["phi"])
+            across = A_ if eq["region"] == 1 else B_
+            if eq["region"] == 2:
+                if eq["stability"] == "stable":
+                    sig = 1 - max(sv, 1 - sv)
+                    hg2 = B_ * B_ * (eq["z"] ** 2 + 4 * (A_ / B_) ** 2 * sig * sig / eq["z"] ** 2)
+                    st = "stable" if L * L > hg2 else "unstable"
+                    names = eq["printed"] + ("163",)
+                else:
+                    st, names = "unstable", eq["printed"]
+            else:
+                st = None if L == across else ("stable" if L > across else "unstable")
+                names = eq["printed"] + ("127",)
+            add(up, st, names, f"axis along edge {ax}, region {eq['region']}")
+    return preds
+
+
+d.predicts(("box", "cube"), predict)

@@ -1,0 +1,1017 @@
+"""Scheeffer 1902, sections VII and VIII: the second and third rotation regions of a right prism.
+
+VII.  The prism (base F_1, height b, density s > 1/2) is turned so far that the water plane cuts the upper
+base along GH.  The part above the water is the right prism over the dry part F = AGHCD of the upper base,
+cut off obliquely by the water plane: over a point at the distance x from GH its column has the length
+x tan(phi_2).  From the area moments of F the text gets its volume, its static moments and so the two
+equilibrium conditions: S_3 (centroid of the dry part) lies on the vertical through S, i.e. int x y df = 0
+over F (95a), and M_3 = 0 (99)-(103b), with the tilt fixed by the volume (103a).  For a regular prism the
+first condition may be taken over the wet part BGH instead (96)-(98).  Stability (Duhamel): the smallest
+moment of inertia T_m of the waterplane, the affine image of F stretched by 1/cos(phi_2) across GH, minus
+V_3 e_3 must be positive (104)-(117).
+VIII.  Turned further, the water plane cuts both bases; the dry part is the prism over F less the prism
+over the dry part f of the lower base (projected), and (118)-(122) follow the same way.
+
+Frame (the text's, Figs. 17-21 are not in the transcription): origin N, the foot on GH of the
+perpendicular EF from the centroid O of the upper base; x along NE (towards the dry side), y along NG,
+z along the prism axis upwards with z = 0 in the upper base; O = (x0, 0, 0), S = (x0, 0, -b/2); up is
+u = (sin phi, 0, cos phi) and the water plane through GH is z = -x tan(phi).  The area moments of F in
+this frame, F, F x_s, F y_s, T = int x^2, T^1 = int y^2, are kept as symbols and integrals of polynomials
+over F are taken termwise.  int x y df over F is the integral over the whole base (shifted to O) less that
+over the wet part BGH (additivity).  In VIII the lower base's dry part f is measured from ML (x' = x - b
+cot phi_3): f, f x_s^1, tau = int x'^2, int x' y.
+
+Claims judged: S_3 lies vertically above S when S_2 lies below it (mass balance); M_3 = V_1 dE/dphi, so an
+equilibrium where M_3 passes from - to + is stable about the axis (shown on the rectangular strip, measured on
+clipped boxes by difference quotients of the potential); for s < 1/2 dry and wet parts exchange (V_1 E is the
+same for the turned body of density 1 - s); x_0 < 0 when N lies between O and E; 'No. 95a, 103a, b und 117
+enthalten die vollständigen Bedingungen' (the two horizontal offsets of S_2 are -sin phi (103b), -tan phi
+(95a)); 's > 1/2, sodass also die obere Grundfläche zum Teil eintaucht' holds only for bases reaching equally
+far on both sides of the axis (claim erratum, as in IV).  Errata: the stray '1/2' before 'Volumen' in (100)
+(scan), the sign of 2 k tg 2mu in (109) (print).
+The references '102 a', '102 b' in (116), (117) mean (103a), (103b).
+
+Witnesses (``symfloat.geometry.floating``): rectangles, triangles, squares, an equilateral triangle and a
+pentagon are clipped at the tilt with the draught found from the volume; the dry part is the clipped body
+above the water plane, its volume and centroid measured directly; x_0 is read off where the clipped water
+plane meets the upper base, the waterplane moments from the clipped waterplane polygon.  The case data (F,
+x_s, T, ... of the plane pieces) come from exact 2-D polygon moments.  Equilibria: a pentagon (unsymmetric,
+k != 0) and two boxes (second and third region) are designed from the printed conditions in exact arithmetic
+and then checked on the clipped body (both horizontal offsets of B from G vanish); the box tilts are also
+found as roots of the clipped righting arm (tests).
+
+Predictions: boxes and cubes turned about an axis parallel to an edge (the dry part of a base a strip): the
+second-region positions from (103a), (103b) with their stability from (117), the third-region ones from
+(121b), (122) (no stability: the text gives none); s < 1/2 by the exchange of dry and wet parts.
+"""
+import functools
+import itertools
+import math
+
+import mpmath
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, Computed
+from symfloat.geometry.floating import floating_state, right_prism, submerged
+from symfloat.model.prediction import Prediction
+
+R = sp.Rational
+b, s, F1, F, xs, T, Tp, f, xs1, tau = sp.symbols("b s F_1 F x_s T T^1 f x_s^1 tau", positive=True)
+ys, x0, PO, Pw, Pf, x, y, z, xp, mu = sp.symbols("y_s x_0 P_O P_w P_f x y z x' mu", real=True)
+# results (VII)
+phi2, V, V3, My, X3, Z3, M3, e3, e2, V1 = sp.symbols("varphi_2 V V_3 M_y V_3x_3 V_3z_3 M_3 e_3 e_2 V_1")
+Pxy, Pwh, I2, F2, m_, n_, T2, T21, Ks, J1, k_, T1, T11 = sp.symbols(
+    "P_xy P_ABCD I_2 F_2 m n T_2 T_2^1 k_s J_1 k T_1 T_1^1")
+Tmu, Tm, D = sp.symbols("T_mu T_m D")
+# results (VIII)
+phi3, x01, V3c, My3, X3c, Z3c, M3c = sp.symbols("varphi_3 x_0^1 V_3c M_y3 V_3cx_3 V_3cz_3 M_3c")
+
+DERIVATION = d = Derivation(
+    id="scheeffer-vii-viii",
+    source="scheeffer",
+    title="The second and third rotation regions of a right prism: one or both bases cut by the water",
+    locator="VII-VIII",
+    summary="Equilibrium in the second region: int x y df = 0 over the dry part F of the upper base (95a), "
+            "tan phi_2 = F_1 b (1-s)/(F x_s) and T(1 + tan^2/2) - F_1 b^2 (1-s)/2 - F x_s x_0 = 0 (103); "
+            "stability from the least moment of the waterplane (110)-(117); the third region (118)-(122).",
+    requires=("scheeffer-iv-v",),
+    domain={b: (1, 3), s: (R(11, 20), R(19, 20)), F1: (2, 4), F: (R(1, 2), R(3, 2)), xs: (R(1, 5), 1),
+            ys: (-R(3, 10), R(3, 10)), T: (1, 2), Tp: (R(1, 2), 2), x0: (-R(1, 2), R(1, 2)),
+            PO: (-R(1, 5), R(1, 5)), Pw: (-R(1, 5), R(1, 5)), mu: (0, R(3, 2)), x: (0, 1), y: (-1, 1),
+            z: (-1, 0), xp: (0, 1), f: (R(1, 10), R(1, 2)), xs1: (R(1, 20), R(3, 10)), tau: (R(1, 100), R(1, 5)),
+            Pf: (-R(1, 10), R(1, 10)), phi2: (R(1, 10), R(6, 5)), phi3: (R(1, 10), R(6, 5))},
+    constraints=(F * xs > f * xs1,),
+    assumptions=(
+        "homogeneous right prism, any convex base of area F_1, height b, density s (water 1); VII: the water "
+        "plane cuts the upper base and the side faces only (second region), VIII: both bases (third region)",
+        "frame: origin N (foot of the perpendicular EF from the base centroid O on GH), x along NE towards the "
+        "dry side, y along NG, z along the prism axis up, z = 0 in the upper base; O = (x_0, 0), S = (x_0, 0, -b/2)",
+        "F, F x_s, F y_s, T, T^1: area moments of the dry part F of the upper base in that frame; P_O: product "
+        "moment of the whole base about O (axes parallel to x, y); P_w: int x y df over the wet part BGH in "
+        "the frame of N; VIII: f, f x_s^1, tau, P_f the moments of the dry part f of the lower base from ML",
+        "the tilt is the one at which the dry volume is V (1 - s) (Archimedes), so phi_2, phi_3 are derived",
+        "Fig. 19 is lost: its y axis is taken along NG; then the text's n (NL, with int_1 y df = -n F_2) is "
+        "-y_s, and y_s in (112) is read as the distance of the centroid of F from EN on the side of H (-y_s "
+        "here); only its square enters (113), (115), (117)",
+        "inequalities are read through the quantity whose sign decides, with the positive factor stated"),
+)
+
+
+def termwise(expr, moments):
+    """int expr df for a polynomial in the plane coordinates, termwise from the area moments (linearity)."""
+    poly = sp.Poly(sp.expand(expr), x, y)
+    out = sp.Integer(0)
+    for (i, j), c in poly.terms():
+        out += c * moments[(i, j)]
+    return out
+
+
+def res(expr):
+    """*expr* with the values established so far inserted (build time)."""
+    r = d.results()
+    for _ in range(40):
+        new = sp.sympify(expr).xreplace(r)
+        if new == expr:
+            return new
+        expr = new
+    return expr
+
+
+MF = {(0, 0): F, (1, 0): F * xs, (0, 1): F * ys, (2, 0): T, (0, 2): Tp, (1, 1): Pxy}
+NOTE_F = "termwise over F: int df = F, int x df = F x_s, int y df = F y_s, int x^2 df = T, int y^2 df = T^1, int x y df"
+tg2, c2, sn2 = sp.tan(phi2), sp.cos(phi2), sp.sin(phi2)
+up2 = sp.Matrix([sn2, 0, c2])
+hor2 = sp.Matrix([c2, 0, -sn2])
+
+# ==== VII. the second region ========================================================================================
+d.step("whole-base", (Pwh, termwise((x0 + x) * y, {(0, 1): 0, (1, 1): PO}), PO), "integration", result=Pwh,
+       note="int_1 x y df over ABCD from N: with x = x_0 + x' (x' from O) it is x_0 int y df + int x' y df, and "
+            "int y df = 0 about EF through the centroid O")
+d.step("dry-product", sp.Eq(Pxy, Pwh - Pw), "definition", result=Pxy,
+       note="int x y df over AGHCD = over ABCD less over the wet part BGH (additivity)")
+d.step("wet-flipped", sp.Eq(I2, -Pw), "definition", result=I2,
+       note="int_2 x y df over BGH with the +x axis turned to NF (x -> -x)")
+d.step("waterplane", (up2.dot(sp.Matrix([x, y, -x * tg2])), 0), "geometry",
+       note="the plane z = -x tan phi_2 through GH is horizontal (normal u)")
+col = lambda e: sp.integrate(e, (z, -x * tg2, 0))  # noqa: E731  (the column over df above the water)
+d.step("dry-volume", (V3, termwise(col(1), MF), F * xs * tg2), "integration", result=V3,
+       note="the column over a point of F reaches from the water plane to the base: length x tan phi_2; " + NOTE_F)
+d.step("volume", sp.Eq(V, F1 * b), "definition", result=V)
+d.step("tilt", sp.Eq(phi2, sp.atan(F1 * b * (1 - s) / (F * xs))), "definition", result=phi2,
+       note="the tilt at which the dry volume F x_s tan phi_2 equals V (1 - s): the submerged volume is s V")
+d.step("archimedes", (V3, V * (1 - s)), "algebra", uses=("dry-volume", "tilt"))
+d.step("moment-y", (My, termwise(y * col(1), MF), Pxy * tg2), "integration", result=My,
+       note="static moment of the dry part about the vertical plane y = 0 (through S across the axis GH)")
+d.step("moment-x", (X3, termwise(x * col(1), MF), T * tg2), "integration", result=X3, note="V_3 x_3")
+d.step("moment-z", (Z3, termwise(col(-z), MF), T * tg2 ** 2 / 2), "integration", result=Z3,
+       note="V_3 z_3, z_3 the depth of S_3 below the upper base")
+MS3 = sp.Matrix([X3 - V3 * x0, My, V3 * b / 2 - Z3])        # V_3 (S_3 - S)
+d.step("M3", sp.Eq(M3, hor2.dot(MS3)), "definition", result=M3,
+       note="V_3 times the horizontal distance of S_3 from the vertical plane through S parallel to GH "
+            "(h = (cos phi, 0, -sin phi))")
+d.step("e3", sp.Eq(e3, up2.dot(MS3) / V3), "definition", result=e3, note="height of S_3 above S")
+d.step("V1", sp.Eq(V1, V - V3), "definition", result=V1, note="the submerged volume")
+d.step("e2", sp.Eq(e2, up2.dot(MS3) / V1), "definition", result=e2,
+       note="height of S above S_2: V S = V_1 S_2 + V_3 S_3 gives V_1 (S - S_2) = V_3 (S_3 - S)")
+d.step("e2-e3", (V1 * e2, V3 * e3), "algebra", uses=("e2", "e3"))
+Q2 = T * (1 + tg2 ** 2 / 2) - F1 * b ** 2 * (1 - s) / 2 - F * xs * x0
+d.step("M3-sin", (M3 / sn2, Q2), "algebra", uses=("M3", "moment-x", "moment-z", "archimedes"))
+
+# the text's stability remark: M_3 = V_1 dE/dphi (E the height of G above B), shown on the rectangular strip
+A_, C_, th = sp.symbols("A C theta", positive=True)
+Eb, Mb, wb = sp.symbols("E_box M_box w_box")
+d.domain.update({A_: (1, 2), C_: (R(1, 2), 2), th: (R(1, 5), 1)})
+d.step("box-strip", sp.Eq(wb, sp.sqrt(2 * A_ * b * (1 - s) / sp.tan(th))), "definition", result=wb,
+       note="box A x C x b tilted by theta about an axis parallel to the side C: F is a strip of width w with "
+            "C w^2 tan(theta)/2 = A C b (1-s) (volume at the fixed density s)")
+_tb = sp.tan(th)
+BOX = {V3: C_ * wb ** 2 * _tb / 2, X3: C_ * wb ** 3 * _tb / 3, Z3: C_ * wb ** 3 * _tb ** 2 / 6, My: 0,
+       x0: wb - A_ / 2}
+_ms3 = MS3.xreplace(BOX)
+d.step("box-potential", sp.Eq(Eb, sp.Matrix([sp.sin(th), 0, sp.cos(th)]).dot(_ms3) / (A_ * C_ * b * s)),
+       "definition", result=Eb,
+       note="E = u.(G - B) = u.V_3 (S_3 - S)/V_1 with the strip's moments (101): V_3 = C w^2 tan/2, V_3 x_3 = C w^3 "
+            "tan/3, V_3 z_3 = C w^3 tan^2/6, x_0 = w - A/2")
+d.step("box-M3", sp.Eq(Mb, sp.Matrix([sp.cos(th), 0, -sp.sin(th)]).dot(_ms3)), "definition", result=Mb,
+       note="M_3 (99) of the strip at the tilt theta")
+d.step("box-potential-slope", (A_ * C_ * b * s * sp.Derivative(Eb, th), Mb), "algebra",
+       uses=("box-strip", "box-potential", "box-M3"), note="V_1 dE/dtheta = M_3: equilibria are stationary points of E")
+
+# ---- stability: the waterplane (Fig. 19) -------------------------------------------------------------------------
+P_wp = sp.Matrix([x, y, -x * tg2])
+d.step("wp-coordinates", (sp.Matrix([P_wp.dot(hor2), P_wp[1]]), sp.Matrix([x / c2, y])), "geometry",
+       note="the point of the waterplane over (x, y) of F: X = x / cos phi_2 from HN, Y = y along HN")
+jac = sp.Matrix([1, 0, -tg2]).cross(sp.Matrix([0, 1, 0]))
+d.step("wp-area-element", (sp.sqrt(jac.dot(jac)), 1 / c2), "geometry", note="df_2 = df / cos phi_2")
+d.step("wp-area", (F2, termwise(1 / c2, MF), F / c2), "integration", result=F2,
+       note="the waterplane is the image of F (in the second region it ends at GH and at the side faces)")
+d.step("wp-m", (m_, termwise(x / c2 / c2, MF) / F2, xs / c2), "integration", result=m_,
+       note="distance S^1 L of the waterplane centroid from HN")
+d.step("wp-n", (n_, -termwise(y / c2, MF) / F2, -ys), "integration", result=n_,
+       note="the text's n: int_1 y df = -n F_2")
+d.step("T1", (T1, termwise((x - xs) ** 2, MF), T - F * xs ** 2), "integration", result=T1,
+       note="moment of F about its centroidal axis parallel to GH")
+d.step("T11", (T11, termwise((y - ys) ** 2, MF), Tp - F * ys ** 2), "integration", result=T11,
+       note="moment of F about its centroidal axis parallel to EF")
+d.step("T2", (T2, termwise((x / c2 - m_) ** 2 / c2, MF), T1 / c2 ** 3), "integration", result=T2,
+       uses=("wp-coordinates", "wp-area-element"))
+d.step("T21", (T21, termwise((y + n_) ** 2 / c2, MF), T11 / c2), "integration", result=T21)
+d.step("J1", (J1, termwise((x / c2) * y / c2, MF), Pxy / c2 ** 2), "integration", result=J1,
+       note="int_1 x y df over the waterplane from N")
+d.step("Ks", (Ks, termwise((x / c2 - m_) * (y + n_) / c2, MF), J1 + m_ * n_ * F2), "integration", result=Ks,
+       note="int_s x y df about the centroid S^1 (x - m, y + n from N)")
+SC = 2 * sp.sin(mu) * sp.cos(mu)          # sin 2 mu
+CC = sp.cos(mu) ** 2 - sp.sin(mu) ** 2     # cos 2 mu
+d.step("Tmu", (Tmu, termwise(((x / c2 - m_) * sp.cos(mu) - (y + n_) * sp.sin(mu)) ** 2 / c2, MF),
+               T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 - Ks * SC), "integration", result=Tmu,
+       note="moment about the centroidal axis PQ at the angle mu with J_1K_1 (parallel to HN); sin 2mu = 2 sin mu cos mu")
+d.step("k", sp.Eq(k_, m_ * n_ * F2), "definition", result=k_, note="(106): the value of int_s x y df at equilibrium")
+d.step("Ks-equilibrium", (Ks, k_ + Pxy / c2 ** 2), "algebra", uses=("Ks", "J1", "k"),
+       note="so int_s x y df = k exactly when the first condition int x y df = 0 holds")
+# the least moment of any plane figure with central moments T_2, T_2^1 and product k (symbols of their own)
+T2g, T21g, kg = sp.symbols("T_2 T_2^1 k", real=True)
+Tg, Dg, Rg, Tmg, mus = sp.symbols("T_mu' D' R' T_m' mu^*")
+d.domain.update({T2g: (1, 3), T21g: (R(1, 2), 4), kg: (-1, 1)})
+Sg = (T2g + T21g) / 2
+dbl = lambda th_: Sg - sp.cos(th_) / 2 * (T21g - T2g) - kg * sp.sin(th_)  # noqa: E731  (T_mu at 2 mu = th_)
+q_ = 2 * kg / (T21g - T2g)
+d.step("Tg", sp.Eq(Tg, T2g * sp.cos(mu) ** 2 + T21g * sp.sin(mu) ** 2 - kg * SC), "definition", result=Tg,
+       note="(107) for a plane figure with central moments T_2 (about J_1K_1), T_2^1 and product k")
+d.step("Tg-double", (Tg, dbl(2 * mu)), "algebra", uses=("Tg",), note="cos^2 mu = (1 + cos 2mu)/2, ...")
+d.step("Tg-derivative", (sp.Derivative(Tg, mu), (T21g - T2g) * SC - 2 * kg * CC), "algebra", uses=("Tg",))
+d.step("mu-star", sp.Eq(mus, sp.atan(q_) / 2), "definition", result=mus,
+       note="the root of the derivative: tan 2mu = 2k/(T_2^1 - T_2); mu^* + 90 deg is the other")
+d.step("Dg", sp.Eq(Dg, (T21g - T2g + 2 * kg * q_) / sp.sqrt(1 + q_ ** 2)), "definition", result=Dg)
+d.step("stationary-values", (sp.Matrix([dbl(2 * mus), dbl(2 * mus + sp.pi)]), sp.Matrix([Sg - Dg / 2, Sg + Dg / 2])),
+       "algebra", uses=("Tg-double", "mu-star", "Dg"),
+       note="cos 2mu^* = 1/sqrt(1 + q^2), sin 2mu^* = q/sqrt(1 + q^2), q = 2k/(T_2^1 - T_2)")
+d.step("root", (Rg, sp.sqrt(Dg ** 2), sp.sqrt((T2g - T21g) ** 2 + 4 * kg ** 2)), "algebra", uses=("Dg",), result=Rg)
+d.step("Tm-g", sp.Eq(Tmg, Sg - Rg / 2), "definition", result=Tmg, uses=("stationary-values", "root"),
+       note="the smaller of the two stationary values Sigma/2 -+ D/2: the least moment")
+d.step("Tm", (Tm, sp.Subs(Tmg, (T2g, T21g, kg), (T2, T21, k_)), (T2 + T21) / 2 - sp.sqrt((T2 - T21) ** 2 + 4 * k_ ** 2) / 2),
+       "substitution", uses=("Tm-g", "Ks-equilibrium"), result=Tm,
+       note="the least moment of the waterplane at an equilibrium (its central product is k there)")
+d.step("D", sp.Eq(D, Tm - V1 * e2), "definition", result=D,
+       note="Duhamel: V_1 times the metacentric height of the position; stable iff D > 0 (scheeffer-iv-v (33))")
+d.step("e3-cos", (e3 * c2, b / 2 - Z3 / V3 + sn2 * M3 / V3), "algebra", uses=("e3", "M3"),
+       note="so e_3 cos phi_2 = b/2 - z_3 wherever M_3 = 0")
+M2h, M2y = sp.symbols("M_2h M_2y")
+d.step("balance-h", sp.Eq(M2h, -hor2.dot(MS3)), "definition", result=M2h,
+       note="V_1 h.(S_2 - S) from V S = V_1 S_2 + V_3 S_3")
+d.step("balance-y", sp.Eq(M2y, -My), "definition", result=M2y)
+d.step("regular-product", (sp.Subs(sp.Rational(1, 2) * (sp.Symbol("T_x") - sp.Symbol("T_y")) * sp.sin(2 * sp.Symbol("omega"))
+                                   + sp.Symbol("J") * sp.cos(2 * sp.Symbol("omega")),
+                                   (sp.Symbol("T_x"), sp.Symbol("J")), (sp.Symbol("T_y"), 0)), 0), "substitution",
+       uses=("scheeffer-iv-v:Iuv", "scheeffer-iv-v:symmetric-J", "scheeffer-iv-v:T1-isotropic"),
+       note="int u v df about central axes at the angle omega (scheeffer-iv-v (44)-(45)) vanishes for a base "
+            "with T_x = T_y and a symmetry axis (J = 0): every regular polygon (section V), so P_O = 0")
+
+
+# ---- which base is cut first (the opening of VII), as in scheeffer-iv-v (53)-(55)
+um, um1, sst = sp.symbols("u_m u_m' s^*", positive=True)
+d.domain.update({um: (R(1, 5), 2), um1: (R(1, 5), 2)})
+d.step("first-contact", sp.Eq(sst, um1 / (um + um1)), "definition", result=sst,
+       uses=("scheeffer-iv-v:top-contact", "scheeffer-iv-v:bottom-contact", "scheeffer-iv-v:threshold"),
+       note="turned about EF from the upright position, the plane through EF reaches the upper base at tan phi = "
+            "b (1-s)/u_m, the lower one at b s/u_m' (u_m, u_m' the farthest base points on the dipping and the rising "
+            "side): the upper base first iff s > s^*")
+d.step("first-contact-check", ((b * (1 - s) / um - b * s / um1).subs(s, sst), 0), "algebra", uses=("first-contact",))
+
+EQN = "the '= 0' is the equilibrium condition imposed; read as the identity it is imposed on"
+
+
+X0E = (T * (1 + tg2 ** 2 / 2) - F1 * b ** 2 * (1 - s) / 2) / (F * xs)   # the x_0 at which (103b) vanishes
+
+
+def at_eq(expr):
+    """*expr* at a position satisfying the second condition (103b): x_0 = X0E."""
+    return res(expr).subs(x0, res(X0E))
+
+
+d.quote("s-upper", "VII", "Es soll dabei das spec. Gew.  $s > \\frac{1}{2}$\n\nvorausgesetzt werden, sodass also die "
+        "obere Grundfläche zum Teil eintaucht.", reading=(sst, R(1, 2)),
+        note="read as: beyond the first region the upper base is cut when s > 1/2 (the threshold of s)",
+        erratum=Erratum("claim", "high",
+                        "the upper base is cut first iff s > u_m'/(u_m + u_m'); that is s > 1/2 only when the base "
+                        "reaches equally far on both sides of the axis (u_m = u_m'); otherwise the second region "
+                        "may begin with the lower base although s > 1/2 (and the formulas apply with dry and wet "
+                        "parts exchanged)",
+                        "The same claim as in IV (53) (scheeffer-iv-v, 's-half'). Counterexample: equilateral "
+                        "triangular prism of side 1 and height 1, s = 3/5, turned about an axis parallel to a side with "
+                        "that side dipping (u_m = 1/(2 sqrt 3), u_m' = 1/sqrt 3, s^* = 2/3): the clipped prism's lower "
+                        "base reaches the water at tan phi = 1.0392 (= sqrt 3 s), the upper one only at 1.3856 "
+                        "(= 2 sqrt 3 (1 - s)).",
+                        corrected_reading=(sst, um1 / (um + um1))))
+d.quote("95", "(95)", "„Das statische Moment des über dem Wasser befindlichen Körperteils für die durch  $S$  "
+        "senkrecht zur Drehungsachse gelegte Vertikalebene (Ebene der Figur 17) ist Null.“ (95)",
+        reading=(My, V3 * sp.Matrix([0, 1, 0]).dot(MS3 / V3)), note="the moment itself; 'ist Null' is the condition")
+d.quote("95-S3", "VII", r"Da nun  $S_2$  senkrecht unter  $S$  liegt, so muss auch  $S_3$  senkrecht über  $S$  liegen",
+        reading=(sp.Matrix([M2h, M2y]), -sp.Matrix([M3, My])),
+        note="read as V_1 (S_2 - S) = -V_3 (S_3 - S) in the two horizontal directions")
+d.quote("95-element", "VII", r"$z \cdot y \cdot df$ , oder da  $z = x \operatorname{tg} \varphi_2$  ist,  "
+        r"$x y \cdot df \cdot \operatorname{tg} \varphi_2$",
+        reading=(sp.integrate(y, (z, -x * tg2, 0)), x * y * tg2), note="per unit df")
+d.quote("95-moment", "VII", r"stat. Moment des ganzen Körperteils  $\int x y df \cdot \operatorname{tg} \varphi_2$",
+        reading=(My, Pxy * tg2))
+d.quote("95a", "(95a)", r"$$\int x y \cdot df = 0 \quad (95a)$$", reading=(Pxy, My / tg2), note=EQN)
+d.quote("96", "(96)", r"$$\int x y df = \int_s (x_0 + x) y df + \int_2 x y df. \quad (96)$$",
+        reading=(Pxy, Pwh + I2))
+d.quote("96-split", "VII", r"$$\int_s (x_0 + x) y df = x_0 \cdot \int_s y df + \int_s x y df.$$",
+        reading=(Pwh, x0 * 0 + PO), note="int_s y df = 0 (the next sentence)")
+d.quote("97", "(97)", r"$$\int x y df = \int_s x y df + \int_2 x y df = 0. \quad (97)$$", reading=(Pxy, PO + I2),
+        note=EQN)
+d.quote("98", "(98)", r"$$\int x y df = \int_2 x y df = 0 \quad (98)$$", reading=(res(Pxy).subs(PO, 0), res(I2)),
+        note="regular prism: P_O = 0 (step regular-product); " + EQN)
+d.quote("95a-split", "VII", r"$$\int x y \cdot = \int_1 x y df - \int_2 x y df$$", reading=(Pxy, Pwh - Pw),
+        note="int_2 over BGH still from N; the 'df' of the left side is lost in the transcription (harmless)")
+d.quote("regular-Ps", "VII", r"so ist nach Abschnitt V auch  $\int_s x y df = 0$",
+        reading=(sp.Subs(sp.Rational(1, 2) * (sp.Symbol("T_x") - sp.Symbol("T_y")) * sp.sin(2 * sp.Symbol("omega"))
+                         + sp.Symbol("J") * sp.cos(2 * sp.Symbol("omega")),
+                         (sp.Symbol("T_x"), sp.Symbol("J")), (sp.Symbol("T_y"), 0)), 0),
+        note="the product moment of a regular polygon about central axes in any direction (step regular-product)")
+d.quote("S3-offsets", "VII", "$$S_3 O_3 = P_3 O = x_3 - x_0,$$\n\n$SO$ , die halbe Höhe des Prismas, nach der früheren "
+        "Bezeichnung  $= \\frac{b}{2}$ ,\n\n$$SO_3 = SO - O_3 O = \\frac{b}{2} - z_3.$$",
+        reading=(sp.Matrix([MS3[0] / V3, MS3[2] / V3]), sp.Matrix([X3 / V3 - x0, b / 2 - Z3 / V3])),
+        note="S_3 P_3 = z_3 (depth below the upper base), N P_3 = x_3 (the display before): the offsets of S_3 from S "
+             "along NE and along the axis")
+d.quote("complete", "VII", "No. 95 a, 103 a, b und 117 enthalten die vollständigen Bedingungen des Gleichgewichts "
+        "und der Stabilität eines geraden Prismas (von beliebiger Form) für das zweite Drehungsgebiet.",
+        reading=(sp.Matrix([M2h, M2y]), -sp.Matrix([sn2 * Q2, tg2 * Pxy])),
+        note="read as: the two horizontal offsets of S_2 from S (times V_1) are -sin phi_2 x (103b) and -tan phi_2 x "
+             "(95a), with the tilt from (103a): the position is an equilibrium exactly when (95a) and (103b) hold; "
+             "stability is (117) (sign identity 2 cos phi_2 D, checked with (117))")
+d.quote("99", "(99)", r"$$M_3 = V_3 (x_3 - x_0) \cos \varphi_2 - V_3 \left( \frac{b}{2} - z_3 \right) \cdot \sin "
+        r"\varphi_2 = 0. \quad (99)$$", reading=(M3, (X3 - V3 * x0) * c2 - (V3 * b / 2 - Z3) * sn2), note=EQN)
+d.quote("99-transformation", "VII",
+        r"$$M_3 = V_3 \cdot \overline{S_3 O_3} \cdot \cos \varphi_2 - V_3 \cdot \overline{S O_3} \cdot \sin \varphi_2,$$",
+        reading=(M3, V3 * (X3 / V3 - x0) * c2 - V3 * (b / 2 - Z3 / V3) * sn2),
+        note="S_3 O_3 = x_3 - x_0, S O_3 = b/2 - z_3 (the next lines)")
+d.quote("stability-direction", "VII",
+        "dass das für  $M_3 = 0$  eintretende Gleichgewicht ein (wenigstens für die Drehungsachse) stabiles sein "
+        "muss, wenn  $M_3$  mit wachsendem  $\\varphi$  aus dem Negativen durch Null in's Positive übergeht",
+        reading=(A_ * C_ * b * s * sp.diff(res(Eb), th), Mb),
+        note="read as M_3 = V_1 dE/dphi (E the height of G above B): a zero where M_3 goes from - to + is a "
+             "minimum of E; shown on the rectangular strip (steps box-*), witnessed on clipped boxes")
+d.quote("100", "(100)", r"so ist das  $\frac{1}{2}$  Volumen des über dem Wasser befindlichen Teils"
+        "\n\n$$V_3 = V \\cdot (1 - s) = F_1 \\cdot b \\cdot (1 - s) \\quad (100)$$",
+        reading=(V3 / 2, V * (1 - s), F1 * b * (1 - s)),
+        erratum=Erratum("transcription", "medium", r"\text{das Volumen ... } V_3 = V (1 - s) = F_1 b (1 - s)",
+                        "The dry part's whole volume is V (1 - s) (the submerged part is s V); the text uses V_3 "
+                        "so in (103a), (121b). The '1/2' before 'Volumen' is a stray sign of the scan (perhaps a "
+                        "misread mark); a slip of the printer is possible (medium).",
+                        corrected_reading=(V3, V * (1 - s), F1 * b * (1 - s))))
+d.quote("101", "(101)",
+        r"$$\left. \begin{aligned} V_3 z_3 &= \int \frac{1}{2} z^2 \cdot d f = \frac{1}{2} \operatorname{tg}^2 "
+        r"\varphi_2 \cdot \int x^2 d f = \frac{1}{2} T \cdot \operatorname{tg}^2 \varphi_2 \\ V_3 x_3 &= \int z x \cdot "
+        r"d f = \operatorname{tg} \varphi_2 \cdot \int x^2 d f = T \cdot \operatorname{tg} \varphi_2 \end{aligned} "
+        r"\right\} \quad (101)$$",
+        reading=(sp.Matrix([Z3, X3]), sp.Matrix([termwise((x * tg2) ** 2 / 2, MF), termwise(x * tg2 * x, MF)]),
+                 sp.Matrix([T * tg2 ** 2 / 2, T * tg2])),
+        note="T: moment of F about GH (int x^2 df)")
+d.quote("102-pre", "VII", r"$$M_3 = T \sin \varphi_2 - V_3 x_0 \cos \varphi_2 - V_3 \frac{b}{2} \sin \varphi_2 + "
+        r"\frac{1}{2} T \operatorname{tg}^2 \varphi_2 \cdot \sin \varphi_2 = 0$$",
+        reading=(M3, T * sn2 - V3 * x0 * c2 - V3 * b / 2 * sn2 + T * tg2 ** 2 * sn2 / 2), note=EQN)
+d.quote("102", "(102)", r"$$M_3 = \sin \varphi_2 \cdot \left\{ T \left( 1 + \frac{1}{2} \operatorname{tg}^2 "
+        r"\varphi_2 \right) - V_3 \cdot \frac{b}{2} - V_3 x_0 \operatorname{cotg} \varphi_2 \right\} = 0 \quad (102)$$",
+        reading=(M3, sn2 * (T * (1 + tg2 ** 2 / 2) - V3 * b / 2 - V3 * x0 / tg2)), note=EQN)
+d.quote("V3-F", "VII", r"$$V_3 = F \cdot x_s \cdot \operatorname{tg} \varphi_2$$", reading=(V3, F * xs * tg2))
+d.quote("103a", "(103a)", r"$$\operatorname{tg} \varphi_2 = \frac{F_1 \cdot b (1 - s)}{F \cdot x_s} \quad (103a)$$",
+        reading=(tg2, F1 * b * (1 - s) / (F * xs)))
+d.quote("103b", "(103b)", r"$$\frac{M_3}{\sin \varphi_2} = T \left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi_2 "
+        r"\right) - F_1 \frac{b^2}{2} \cdot (1 - s) - F x_s \cdot x_0 = 0 \quad (103b)$$", reading=(M3 / sn2, Q2),
+        note=EQN)
+d.quote("s-below-half", "VII", r"Wenn das spec. Gew.  $s < \frac{1}{2}$  ist, so ist der über dem Wasser befindliche "
+        r"Körperteil mit dem eintauchenden zu vertauschen, also  $s$  statt  $1 - s$  zu setzen.",
+        reading=(V1 * e2, V3 * e3),
+        note="read as: V_1 (S - S_2) = V_3 (S_3 - S), so V_1 E (the potential times the submerged volume) is the "
+             "same for the body of density s with u up and that of density 1 - s with -u up, whose submerged part "
+             "is this dry part: the equilibria and their stability correspond (witnessed on clipped prisms)")
+d.quote("s-below-half-95", "VII", "$$\\int x y \\, d f = 0$$\n\nwo nun die Integration auf den eintauchenden Teil "
+        "der unteren Grundfläche auszudehnen ist.", reading=(Pxy, My / tg2),
+        note="for s < 1/2 the body of density 1 - s with -u up: its submerged part is the dry part here, so the "
+             "integral is the same (witnessed on the turned clipped body); '= 0' imposed")
+d.quote("106-first", "VII", r"folglich auch  $\int_1",
+        reading=(res(J1).subs(Pw, PO), 0),
+        note="int_1 x y df = 0 at the first condition (the line break of the transcription splits the formula)")
+d.quote("104", "(104)", r"$$T_m - V_3 e_3 > 0 \quad (104)$$", reading=(Tm - V3 * e3, D),
+        note="D = T_m - V_1 e_2 (Duhamel), V_1 e_2 = V_3 e_3 (step e2-e3); T_m the least moment at equilibrium")
+d.quote("104-balance", "VII", r"so ist  $V_1 e_2 = V_3 e_3$", reading=(V1 * e2, V3 * e3))
+d.quote("105-def", "VII", r"$$T_\mu = \int_s (x \cos \mu - y \sin \mu)^2 \cdot d f$$",
+        reading=(Tmu, termwise(((x / c2 - m_) * sp.cos(mu) - (y + n_) * sp.sin(mu)) ** 2 / c2, MF)),
+        note="integral over the waterplane from its centroid, pulled back to F")
+d.quote("105", "(105)", r"$$\text{oder } T_\mu = T_2 \cdot \cos^2 \mu + T_2^1 \sin^2 \mu - \int_s x y \, d f \cdot "
+        r"\sin 2 \mu \quad (105)$$", reading=(Tmu, T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 - Ks * SC),
+        note="sin 2mu read as 2 sin mu cos mu")
+d.quote("106-shift", "VII", r"&= \int_1 x y \, d f - \int_1 m y \, d f + \int_1 n x \, d f - m n F_2",
+        reading=(Ks, J1 - m_ * (-n_ * F2) + n_ * (m_ * F2) - m_ * n_ * F2),
+        note="with int_1 y df = -n F_2, int_1 x df = m F_2")
+d.quote("106-moments", "VII", r"$\int_1 y \, d f = - n F_2$  und  $\int_1 x \, d f = m F_2$",
+        reading=(sp.Matrix([termwise(y / c2, MF), termwise(x / c2 ** 2, MF)]), sp.Matrix([-n_ * F2, m_ * F2])))
+d.quote("106-sum", "VII", r"folglich  $\int_s x y \, d f = \int_1 x y \, d f + m n \cdot F_2$",
+        reading=(Ks, J1 + m_ * n_ * F2))
+d.quote("106-projection", "VII", r"$\int x y \, d f = \int_1 x y \, d f \cdot \cos^2 \varphi_2 = 0$",
+        reading=(Pxy, J1 * c2 ** 2), note=EQN)
+d.quote("106", "(106)", r"$$\text{und } \int_s x y \, d f = m n F_2 = k \cdot \quad (106)$$",
+        reading=(res(Ks).subs(Pw, PO), m_ * n_ * F2, k_), note="at the first condition (P_w = P_O: int x y df = 0)")
+d.quote("107", "(107)", r"$$T_\mu = T_2 \cdot \cos^2 \mu + T_2^1 \sin^2 \mu - k \sin 2 \mu. \quad (107)$$",
+        reading=(res(Tmu).subs(Pw, PO), T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 - k_ * SC),
+        note="at the first condition (P_w = P_O); sin 2mu = 2 sin mu cos mu")
+d.quote("108", "(108)", r"$$\begin{aligned} (T_2^1 - T_2) \sin 2 \mu - 2 k \cdot \cos 2 \mu &= 0 \\ \text{oder } "
+        r"\operatorname{tg} 2 \mu &= \frac{2 k}{T_2^1 - T_2} \end{aligned} \quad (108)$$",
+        reading=(sp.Matrix([sp.diff(res(Tg), mu), sp.tan(2 * mus)]),
+                 sp.Matrix([(T21g - T2g) * SC - 2 * kg * CC, 2 * kg / (T21g - T2g)])),
+        note="dT_mu/dmu (the '= 0' imposed) and its root mu^*; T_2, T_2^1, k of any figure (step Tg)")
+d.quote("109", "(109)", r"$$T_\mu = \frac{1}{2} (T_2 + T_2^1) - \frac{1}{2} \cos 2 \mu \left\{ T_2^1 - T_2 - 2 k "
+        r"\operatorname{tg} 2 \mu \right\} \quad (109)$$",
+        reading=(Tg, Sg - sp.cos(2 * mu) / 2 * (T21g - T2g - 2 * kg * sp.tan(2 * mu))),
+        erratum=Erratum("misprint", "medium",
+                        r"T_\mu = \frac{1}{2} (T_2 + T_2^1) - \frac{1}{2} \cos 2 \mu \left\{ T_2^1 - T_2 + 2 k "
+                        r"\operatorname{tg} 2 \mu \right\}",
+                        "From (107): T_2 cos^2 mu + T_2^1 sin^2 mu = (T_2 + T_2^1)/2 - cos 2mu (T_2^1 - T_2)/2 and "
+                        "-k sin 2mu = -(1/2) cos 2mu (2 k tg 2mu), so the brace has + 2 k tg 2mu. Only with + does "
+                        "the next step give (T_2 + T_2^1)/2 -+ sqrt((T_2 - T_2^1)^2 + 4k^2)/2 (with - the root would be "
+                        "of ((T_2^1 - T_2)^2 - 4k^2)^2/((T_2^1 - T_2)^2 + 4k^2)). A sign slip of the author or "
+                        "printer; a scan turning + into - is unusual (medium).",
+                        corrected_reading=(Tg, Sg - sp.cos(2 * mu) / 2 * (T21g - T2g + 2 * kg * sp.tan(2 * mu)))))
+d.quote("109-cos", "VII", r"$$\cos 2 \mu = \pm \frac{T_2^1 - T_2}{\sqrt{(T_2^1 - T_2)^2 + 4 k^2}}$$",
+        reading=(sp.cos(2 * mus) ** 2, (T21g - T2g) ** 2 / ((T21g - T2g) ** 2 + 4 * kg ** 2)),
+        note="the +- read through the square, at the root mu^* of (108)")
+d.quote("109-extremes", "VII",
+        r"$$T_\mu = \frac{1}{2} (T_2 + T_2^1) \pm \frac{1}{2} \cdot \sqrt{(T_2 - T_2^1)^2 + 4 k^2}$$",
+        reading=(sp.Matrix([(dbl(2 * mus) - Sg) ** 2, (dbl(2 * mus + sp.pi) - Sg) ** 2]),
+                 sp.Matrix([((T2g - T21g) ** 2 + 4 * kg ** 2) / 4] * 2)),
+        note="the two stationary values (mu^*, mu^* + 90 deg) lie half the root above and below the mean")
+d.quote("110", "(110)", r"$$T_m = \frac{1}{2} (T_2 + T_2^1) - \frac{1}{2} \cdot \sqrt{(T_2 - T_2^1)^2 + 4 k^2} \quad (110)$$",
+        reading=(Tmg, Sg - sp.sqrt((T2g - T21g) ** 2 + 4 * kg ** 2) / 2))
+d.quote("111", "(111)", r"$$T_2 = \frac{T_1}{\cos^3 \varphi_2} \text{ und } T_2^1 = \frac{T_1^1}{\cos \varphi_2} \text{ ist.} "
+        r"\quad (111)$$", reading=(sp.Matrix([T2, T21]), sp.Matrix([T1 / c2 ** 3, T11 / c2])))
+YS = -ys    # the printed y_s (see the assumptions)
+d.quote("112-mn", "VII", r"$$m = \frac{x_s}{\cos \varphi_2} \quad n = y_s \quad F_2 = \frac{F}{\cos \varphi_2}$$",
+        reading=(sp.Matrix([m_, n_, F2]), sp.Matrix([xs / c2, YS, F / c2])),
+        note="y_s here is the printed one, -y_s of the frame (assumptions)")
+d.quote("112", "(112)", r"$$\text{folglich (106) } k = \frac{x_s y_s \cdot F}{\cos^2 \varphi_2} \quad (112)$$",
+        reading=(k_, xs * YS * F / c2 ** 2))
+d.quote("113", "(113)", r"$$T_1 = T - F \cdot x_s^2 \quad T_1^1 = T^1 - F \cdot y_s^2 \quad (113)$$",
+        reading=(sp.Matrix([T1, T11]), sp.Matrix([T - F * xs ** 2, Tp - F * YS ** 2])))
+d.quote("114", "(114)", r"$$T_m \cos \varphi_2 - V_3 e_3 \cos \varphi_2 > 0. \quad (114)$$",
+        reading=(Tm * c2 - V3 * e3 * c2, c2 * D), note="sign identity, factor cos phi_2 > 0")
+d.quote("115", "(115)", r"$$T_m \cdot \cos \varphi_2 = \frac{1}{2} \left( \frac{T_1}{\cos^2 \varphi_2} + T_1^1 \right) - "
+        r"\frac{1}{2} \sqrt{\left( \frac{T_1}{\cos^2 \varphi_2} - T_1^1 \right)^2 + \frac{(2 F x_s y_s)^2}{\cos^2 "
+        r"\varphi_2}} \quad (115)$$",
+        reading=(Tm * c2, (T1 / c2 ** 2 + T11) / 2 - sp.sqrt((T1 / c2 ** 2 - T11) ** 2 + (2 * F * xs * YS) ** 2 / c2 ** 2) / 2))
+d.quote("116-geometry", "VII", r"$$V_3 e_3 \cdot \cos \varphi_2 = V_3 \cdot \left( \frac{b}{2} - z_3 \right)$$",
+        reading=(at_eq(V3 * e3 * c2), at_eq(V3 * b / 2 - Z3)), note="at an equilibrium (M_3 = 0, x_0 from (103b))")
+d.quote("116-pre", "VII", r"$$V_3 e_3 \cos \varphi_2 = \frac{1}{2} \left\{ F_1 b^2 (1 - s) - T \operatorname{tg}^2 \varphi_2 "
+        r"\right\}$$", reading=(V3 * b / 2 - Z3, (F1 * b ** 2 * (1 - s) - T * tg2 ** 2) / 2),
+        note="its right side is V_3 (b/2 - z_3) by (100), (101)")
+d.quote("116", "(116)", r"$$V_3 e_3 \cos \varphi_2 = T - F x_s \cdot x_0 \quad (116)$$",
+        reading=(at_eq(V3 * e3 * c2), at_eq(T - F * xs * x0)),
+        note="at an equilibrium ('nach 102 b)' means (103b))")
+L117 = (T1 / c2 ** 2 + T11 + 2 * F * xs * x0 - 2 * T
+        - sp.sqrt((T1 / c2 ** 2 - T11) ** 2 + (2 * F * xs * YS) ** 2 / c2 ** 2))
+d.quote("117", "(117)", r"$$\left. \begin{aligned} & \frac{T_1}{\cos^2 \varphi_2} + T_1^1 + 2 F x_s x_0 - 2 T \\ & - "
+        r"\sqrt{\left( \frac{T_1}{\cos^2 \varphi_2} - T_1^1 \right)^2 + \frac{(2 F x_s y_s)^2}{\cos^2 \varphi_2}} "
+        r"\right\} > 0 \quad (117) \end{aligned}$$", reading=(at_eq(L117), at_eq(2 * c2 * D)),
+        note="sign identity at an equilibrium, factor 2 cos phi_2 > 0")
+d.quote("117-cos", "VII", r"(nach 102 a)  $\frac{1}{\cos^2 \varphi_2} = \left| \frac{F_1 \cdot b (1 - s)}{F x_s} "
+        r"\right|^2 + 1$", reading=(1 / c2 ** 2, (F1 * b * (1 - s) / (F * xs)) ** 2 + 1),
+        note="'102 a' means (103a); the bars are brackets")
+d.quote("117-T", "VII", "$$T_1 = T - F \\cdot x_s^2$$\n\n$$T_1^1 = T^1 - F \\cdot y_s^2.$$",
+        reading=(sp.Matrix([T1, T11]), sp.Matrix([T - F * xs ** 2, Tp - F * YS ** 2])))
+d.step("O-position", sp.Eq(sp.Symbol("x_O"), x0), "definition", result=sp.Symbol("x_O"),
+       note="O = N + x_0 (unit vector along NE): x_0 is the coordinate of O from N towards E")
+d.quote("x0-sign", "VII", r"Wenn der Punkt  $N$  (s. Fig. 17 und 18) zwischen  $O$  und  $E$  liegt, so wird  $x_0$  negativ.",
+        reading=(x0, sp.Symbol("x_O")), note="x_0 is the coordinate x_O of O from N along NE: negative when O "
+                                              "lies on the far side of N from E (witnessed: measured on the clipped "
+                                              "water line)")
+
+# ==== VIII. the third region =========================================================================================
+tg3, c3, sn3 = sp.tan(phi3), sp.cos(phi3), sp.sin(phi3)
+up3, hor3 = sp.Matrix([sn3, 0, c3]), sp.Matrix([c3, 0, -sn3])
+Mf = {(0, 0): f, (1, 0): f * xs1, (2, 0): tau, (1, 1): Pf}
+d.step("tilt-3", sp.Eq(phi3, sp.atan(F1 * b * (1 - s) / (F * xs - f * xs1))), "definition", result=phi3,
+       note="the tilt at which the dry volume (121b) is V (1 - s)")
+d.step("x01", sp.Eq(x01, b / tg3 - x0), "definition", result=x01,
+       note="N_2 (over N_1, where the water line meets EF in the lower base) lies at x = b cot phi_3 from N: "
+            "the plane z = -x tan phi_3 reaches z = -b there; x_0^1 = O N_2")
+d.step("ML", (-(x0 + x01) * tg3, -b), "geometry", uses=("x01",))
+col3 = lambda e: sp.integrate(e, (z, -x * tg3, 0))  # noqa: E731
+cut3 = lambda e: sp.expand(sp.integrate(e, (z, -x * tg3, -b)).subs(x, xp + b / tg3))  # noqa: E731  (below the lower base)
+Mf_x = lambda e: termwise(sp.expand(e).subs(xp, x), Mf)  # noqa: E731  (x' written as x for termwise)
+d.step("cut-column", (cut3(1), xp * tg3), "algebra", uses=("x01",),
+       note="over f the column x tan phi_3 overshoots the lower base by x' tan phi_3, x' = x - (x_0 + x_0^1)")
+d.step("dry-volume-3", (V3c, termwise(col3(1), MF) - Mf_x(cut3(1)), (F * xs - f * xs1) * tg3), "integration",
+       result=V3c, note="the prism over F cut by the water plane, less the part below the lower base (over f)")
+d.step("archimedes-3", (V3c, F1 * b * (1 - s)), "algebra", uses=("dry-volume-3", "tilt-3"))
+d.step("moment-y-3", (My3, termwise(y * col3(1), MF) - Mf_x(y * cut3(1)), (Pxy - Pf) * tg3), "integration", result=My3)
+d.step("moment-z-3", (Z3c, termwise(col3(-z), MF) - Mf_x(cut3(-z)),
+                      (T - tau) * tg3 ** 2 / 2 - b * f * xs1 * tg3), "integration", result=Z3c)
+d.step("moment-x-3", (X3c, termwise(x * col3(1), MF) - Mf_x((xp + x0 + x01) * cut3(1)),
+                      (T - tau) * tg3 - (x0 + x01) * xs1 * f * tg3), "integration", result=X3c)
+MS3c = sp.Matrix([X3c - V3c * x0, My3, V3c * b / 2 - Z3c])
+d.step("M3-3", sp.Eq(M3c, hor3.dot(MS3c)), "definition", result=M3c)
+Q3 = ((T - tau) * (1 + tg3 ** 2 / 2) - (x0 + x01 + b * tg3) * f * xs1 - V3c * b / 2 - V3c * x0 / tg3)
+d.step("M3-3-sin", (M3c / sn3, Q3), "algebra", uses=("M3-3", "moment-x-3", "moment-z-3"))
+
+d.quote("118", "(118)", r"$$\int x y d f - \int^1 x y d f = 0 \quad (118)$$", reading=(Pxy - Pf, My3 / tg3), note=EQN)
+d.quote("119", "(119)", r"$$M_3 = V_3 (x_3 - x_0) \cos \varphi_3 - V_3 \left( \frac{b}{2} - z_3 \right) \sin \varphi_3 = 0 "
+        r"\quad (119)$$", reading=(M3c, (X3c - V3c * x0) * c3 - (V3c * b / 2 - Z3c) * sn3), note=EQN)
+d.quote("120", "(120)", r"$$\left. \begin{aligned} V_3 z_3 &= \frac{1}{2} (T - \tau) \operatorname{tg}^2 \varphi_3 - b "
+        r"\cdot f x_s^1 \cdot \operatorname{tg} \varphi_3 \\ V_3 x_3 &= (T - \tau) \operatorname{tg} \varphi_3 - (x_0 + "
+        r"x_0^1) x_s^1 \cdot f \cdot \operatorname{tg} \varphi_3 \end{aligned} \right\} \quad (120)$$",
+        reading=(sp.Matrix([Z3c, X3c]), sp.Matrix([(T - tau) * tg3 ** 2 / 2 - b * f * xs1 * tg3,
+                                                  (T - tau) * tg3 - (x0 + x01) * xs1 * f * tg3])))
+d.quote("121", "(121)", r"$$\left. \begin{aligned} \frac{M_3}{\sin \varphi_3} &= (T - \tau) \left( 1 + \frac{1}{2} "
+        r"\operatorname{tg}^2 \varphi_3 \right) - (x_0 + x_0^1 + b \operatorname{tg} \varphi_3) \cdot f x_s^1 \\ &\quad - "
+        r"V_3 \cdot \frac{b}{2} - V_3 \cdot x_0 \cdot \operatorname{cotg} \varphi_3 \end{aligned} \right\} = 0. \quad (121)$$",
+        reading=(M3c / sn3, Q3), note=EQN)
+d.quote("121a", "(121a)", r"$$(x_0 + x_0^1) \operatorname{tg} \varphi_3 = b \quad (121 a)$$", reading=((x0 + x01) * tg3, b))
+d.quote("121b", "(121b)", r"$$V_3 = (F x_s - f x_s^1) \operatorname{tg} \varphi_3 = F_1 \cdot b (1 - s) \quad (121 b)$$",
+        reading=(V3c, (F * xs - f * xs1) * tg3, F1 * b * (1 - s)))
+d.quote("121-dry", "VIII", r"Das Volumen des nicht eintauchenden Körperteils ( $V_3$ ) ist jetzt die Differenz aus zwei "
+        r"schief abgestumpften Prismen",
+        reading=(V3c, termwise(col3(1), MF) - Mf_x(cut3(1))),
+        note="the prism over F under the upper base down to the water plane, less its part below the lower base")
+L122 = ((T - tau) * tg3 * (1 + tg3 ** 2 / 2) - F1 * b * (1 - s) * (x0 + b / 2 * tg3) - b * f * xs1 * (1 + tg3 ** 2))
+d.quote("122", "(122)", r"$$\left. \begin{aligned} (T - \tau) \operatorname{tg} \varphi_3 \left( 1 + \frac{1}{2} "
+        r"\operatorname{tg}^2 \varphi_3 \right) &= F_1 b (1 - s) \left( x_0 + \frac{b}{2} \operatorname{tg} \varphi_3 "
+        r"\right) \\ &+ b \cdot f x_s^1 (1 + \operatorname{tg}^2 \varphi_3) \\ (x_0 + x_0^1) \operatorname{tg} \varphi_3 "
+        r"&= b \\ (F x_s - f x_s^1) \operatorname{tg} \varphi_3 &= F_1 b (1 - s) \end{aligned} \right\} \quad (122)$$",
+        reading=(sp.Matrix([L122, (x0 + x01) * tg3 - b, (F * xs - f * xs1) * tg3 - F1 * b * (1 - s)]),
+                 sp.Matrix([M3c * tg3 / sn3, 0, 0])),
+        note="each equation as left minus right side; the first is tan phi_3 M_3/sin phi_3 (zero at equilibrium)")
+
+
+# ==== witnesses ======================================================================================================
+def _green(poly):
+    """Exact area moments of a polygon (Green's theorem): A, int x, int y, int x^2, int y^2, int x y."""
+    out = [sp.Integer(0)] * 6
+    poly = [(sp.sympify(px), sp.sympify(py)) for px, py in poly]
+    for i in range(len(poly)):
+        (x1, y1), (x2, y2) = poly[i], poly[(i + 1) % len(poly)]
+        cr = x1 * y2 - x2 * y1
+        terms = (cr / 2, (x1 + x2) * cr / 6, (y1 + y2) * cr / 6, (x1 ** 2 + x1 * x2 + x2 ** 2) * cr / 12,
+                 (y1 ** 2 + y1 * y2 + y2 ** 2) * cr / 12, (x1 * y2 + 2 * x1 * y1 + 2 * x2 * y2 + x2 * y1) * cr / 24)
+        out = [o + t_ for o, t_ in zip(out, terms)]
+    return [sp.expand(o) for o in out]
+
+
+def _half(poly, c, keep_above=True):
+    """The part of a polygon (coordinates (X, Y)) with X >= c (or X <= c), exact."""
+    out = []
+    for i in range(len(poly)):
+        P, Q = poly[i], poly[(i + 1) % len(poly)]
+        fp, fq = (P[0] - c, Q[0] - c) if keep_above else (c - P[0], c - Q[0])
+        if fp >= 0:
+            out.append(P)
+        if fp * fq < 0:
+            lam = fp / (fp - fq)
+            out.append((P[0] + lam * (Q[0] - P[0]), P[1] + lam * (Q[1] - P[1])))
+    return out
+
+
+def _centred(poly):
+    A, Sx, Sy, *_ = _green(poly)
+    return [(px - Sx / A, py - Sy / A) for px, py in poly]
+
+
+SQUARE = [(-R(1, 2), -R(1, 2)), (R(1, 2), -R(1, 2)), (R(1, 2), R(1, 2)), (-R(1, 2), R(1, 2))]
+RECT = [(-1, -R(1, 2)), (1, -R(1, 2)), (1, R(1, 2)), (-1, R(1, 2))]
+TRI = _centred([(0, 0), (3, 0), (1, 2)])
+EQTRI = [(sp.sqrt(3) / 3 * sp.cos(2 * sp.pi * j / 3), sp.sqrt(3) / 3 * sp.sin(2 * sp.pi * j / 3)) for j in range(3)]
+# the designed pentagon: the dry part beyond x = 0 (raw) has int x y df = 0 about the foot of O (see tests)
+PENT = _centred([(-2, -1), (1, -R(3, 2)), (R(3, 2), R(1, 2)), (0, 2), (-R(3, 2) - R(67, 72), R(1, 2) - R(67, 48))])
+PENT_X0 = -R(349, 2196)      # O from N along NE for the raw cut x = 0
+N0, N1, N2 = (sp.Integer(1), sp.Integer(0)), (R(3, 5), R(4, 5)), (R(4, 5), -R(3, 5))
+
+
+def _box_eq2(A, bb, t):
+    """Box A x C x b, GH parallel to C: the width w of the dry strip where (103b) vanishes, and x_0 = w - A/2."""
+    w = 3 * (bb * t - A) / (2 * (t ** 2 - 1))
+    return w - sp.sympify(A) / 2
+
+
+def _box_eq3(bb, t, w):
+    """Box, third region: x_0 from (122) for the dry top strip of width w (linear in x_0)."""
+    w2 = w - bb / t
+    x0_ = sp.Symbol("x0_")
+    eq = ((w ** 3 - w2 ** 3) / 3 * t * (1 + t ** 2 / 2) - (w ** 2 - w2 ** 2) / 2 * t * (x0_ + bb * t / 2)
+          - bb * w2 ** 2 / 2 * (1 + t ** 2))
+    return sp.solve(eq, x0_)[0]
+
+
+def _box3(bb, t, w):
+    """The base A x 1 of the third-region box equilibrium: A = 2 (w - x_0)."""
+    A = 2 * (w - _box_eq3(bb, t, w))
+    return [(-A / 2, -R(1, 2)), (A / 2, -R(1, 2)), (A / 2, R(1, 2)), (-A / 2, R(1, 2))]
+
+
+CONFIGS = {
+    # name: (polygon, direction n of NE, x_0, tan phi, b, region)
+    "rect": (RECT, N1, R(1, 5), R(1, 2), R(3, 2), 2),
+    "tri": (TRI, N2, R(1, 4), R(2, 3), 2, 2),
+    "square": (SQUARE, N1, R(1, 10), R(3, 4), R(6, 5), 2),
+    "eqtri": (EQTRI, N2, R(1, 10), R(1, 2), R(3, 2), 2),
+    "pent-eq": (PENT, N0, PENT_X0, R(4, 3), R(475, 183), 2),
+    "box-eq": (SQUARE, N0, _box_eq2(1, 1, R(4, 3)), R(4, 3), sp.Integer(1), 2),
+    "rect-3": (RECT, N1, -R(1, 5), R(5, 2), R(1, 2), 3),
+    "tri-3": (TRI, N2, -R(1, 10), sp.Integer(2), R(3, 5), 3),
+    "box3-eq": (_box3(sp.Integer(1), R(5, 2), R(1, 2)), N0, _box_eq3(sp.Integer(1), R(5, 2), R(1, 2)), R(5, 2),
+                sp.Integer(1), 3),
+}
+
+
+
+@functools.lru_cache(maxsize=None)
+def _params(name):
+    """Exact case data of a configuration: the area moments of the pieces of the base in the frame of N."""
+    poly, (nx, ny), x0v, t, bb, region = CONFIGS[name]
+    poly = [(sp.sympify(px), sp.sympify(py)) for px, py in poly]
+    base = [(px * nx + py * ny + x0v, -px * ny + py * nx) for px, py in poly]      # (X, Y) from N
+    A, _, _, _, _, _ = _green(poly)
+    PO_ = _green([(X - x0v, Y) for X, Y in base])[5]
+    Fm = _green(_half(base, 0))
+    Wm = _green(_half(base, 0, keep_above=False))
+    out = {F1: A, b: bb, F: Fm[0], xs: Fm[1] / Fm[0], ys: Fm[2] / Fm[0], T: Fm[3], Tp: Fm[4], PO: PO_, Pw: Wm[5],
+           x0: x0v}
+    V3v = t * Fm[1]
+    if region == 3:
+        dd = bb / t
+        fm = _green([(X - dd, Y) for X, Y in _half(base, dd)])
+        out.update({f: fm[0], xs1: fm[1] / fm[0], tau: fm[3], Pf: fm[5]})
+        V3v = t * (Fm[1] - fm[1])
+    out[s] = 1 - V3v / (A * bb)
+    return {k: sp.sympify(v) for k, v in out.items()}
+
+
+def _generic(name):
+    """The params with the waterplane's own central moments as T_2, T_2^1, k of the generic figure."""
+    p = dict(_params(name))
+    for sym, val in ((T2g, T2), (T21g, T21), (kg, Ks)):
+        p[sym] = res(val).xreplace(p)
+    return p
+
+
+def _num(v, dps):
+    return float(sp.N(v, 20)) if dps <= 15 else mpmath.mpf(sp.N(v, dps + 15))
+
+
+def _M(dps):
+    return math if dps <= 15 else mpmath
+
+
+@functools.lru_cache(maxsize=None)
+def _state(name, dps, flip=False):
+    """The clipped configuration at float64 (dps 15) or dps digits: floating state, dry part, frame vectors.
+    flip: the state of density 1 - s with -u up."""
+    poly, (nx, ny), x0v, t, bb, region = CONFIGS[name]
+    bd = None if dps <= 15 else dps
+    M = _M(dps)
+    body = right_prism([(_num(px, dps), _num(py, dps)) for px, py in poly], _num(bb, dps), dps=bd)
+    tt = _num(t, dps)
+    sv = _num(_params(name)[s], dps)
+    cph, sph = 1 / M.sqrt(1 + tt ** 2), tt / M.sqrt(1 + tt ** 2)
+    n3, e3v = (_num(nx, dps), _num(ny, dps), 0 * tt), (-_num(ny, dps), _num(nx, dps), 0 * tt)
+    up = (sph * n3[0], sph * n3[1], cph)
+    h = (cph * n3[0], cph * n3[1], -sph)
+    if flip:
+        st = floating_state(body, tuple(-q for q in up), 1 - sv, tol=None if bd else 1e-16 * (1 + float(bb)))
+        return st
+    st = floating_state(body, up, sv, tol=None if bd else 1e-16 * (1 + float(bb)))
+    dry = submerged(body, tuple(-q for q in up), -st.t)
+    return dict(st=st, dry=dry, up=up, h=h, n=n3, e=e3v, c=cph, sn=sph, t=tt, b=_num(bb, dps), M=M,
+                lamN=(st.t - cph * _num(bb, dps) / 2) / sph, lamN1=(st.t + cph * _num(bb, dps) / 2) / sph)
+
+
+def _dot(a_, b_):
+    return sum(a_[k] * b_[k] for k in range(3))
+
+
+def _plane(basis, v):
+    return (_dot(basis[0], v), _dot(basis[1], v))
+
+
+def _quad(J, a_, c_):
+    return sum(a_[i] * J[i][j] * c_[j] for i in range(2) for j in range(2))
+
+
+def _measure(name, what, dps, mu_=None):
+    """One quantity of the text, measured on the clipped configuration."""
+    q = _state(name, dps)
+    st, dry, up, h, nv, ev, c, sn = (q[k] for k in ("st", "dry", "up", "h", "n", "e", "c", "sn"))
+    G = st.G
+    rel = [dry.centroid[k] - G[k] for k in range(3)]
+    V3m = dry.volume
+    x0m = -q["lamN"]                                   # O from N along NE
+    xi, eta, zeta = _dot(rel, nv), _dot(rel, ev), rel[2]
+    if what == "V3":
+        return V3m
+    if what == "My":
+        return V3m * eta
+    if what == "Pxy":
+        return V3m * eta / q["t"]
+    if what == "x0":
+        return x0m
+    if what == "balance":                              # V_1 h.(S_2 - S), V_1 e.(S_2 - S)
+        relB = [st.B[k] - G[k] for k in range(3)]
+        return st.volume * _dot(relB, h), st.volume * _dot(relB, ev)
+    if what == "M3":
+        return V3m * _dot(rel, h)
+    if what == "M3sin":
+        return V3m * _dot(rel, h) / sn
+    if what == "M3tan":
+        return V3m * _dot(rel, h) / sn * q["t"]
+    if what == "ZX":                                   # V_3 z_3, V_3 x_3
+        return V3m * (q["b"] / 2 - zeta), V3m * (xi + x0m)
+    if what == "V3zeta":
+        return V3m * zeta
+    if what == "V1e2":
+        return st.volume * st.potential
+    if what == "offsets":
+        return xi, zeta
+    if what == "flip-product":
+        fl = _state(name, dps, flip=True)
+        return fl.volume * _dot([fl.B[k] - fl.G[k] for k in range(3)], ev) / q["t"]
+    if what == "flip":
+        fl = _state(name, dps, flip=True)
+        return fl.volume * fl.potential
+    if what == "x0x01":
+        return (q["lamN1"] - q["lamN"]) * q["t"]
+    if what == "122":
+        return (V3m * _dot(rel, h) / sn * q["t"], (q["lamN1"] - q["lamN"]) * q["t"] - q["b"],
+                V3m - _num(_params(name)[F1] * _params(name)[b] * (1 - _params(name)[s]), dps))
+    J, basis = st.tensor, st.basis
+    hc, ec = _plane(basis, h), _plane(basis, ev)
+    Nw = (q["lamN"] * nv[0], q["lamN"] * nv[1], q["b"] / 2)        # the point N of the upper base
+    cw = [st.waterplane_centroid[k] - Nw[k] for k in range(3)]
+    if what == "Tmu":
+        m = _M(dps)
+        mv = _num(mu_, dps)
+        v = tuple(m.cos(mv) * hc[k] - m.sin(mv) * ec[k] for k in range(2))
+        return _quad(J, v, v)
+    if what in ("dT", "cos2"):                         # dT_mu/dmu of the clipped tensor, its root by the secant
+        m = _M(dps)
+        v = lambda a: tuple(m.cos(a) * hc[k] - m.sin(a) * ec[k] for k in range(2))  # noqa: E731
+        dv = lambda a: tuple(-m.sin(a) * hc[k] - m.cos(a) * ec[k] for k in range(2))  # noqa: E731
+        g = lambda a: 2 * _quad(J, dv(a), v(a))  # noqa: E731
+        a0, a1 = _num(R(1, 10), dps), _num(R(2, 10), dps)
+        for _ in range(100):
+            g0, g1 = g(a0), g(a1)
+            if g1 == g0 or abs(a1 - a0) < (1e-16 if dps <= 15 else mpmath.mpf(10) ** (-dps - 5)):
+                break
+            a0, a1 = a1, a1 - g1 * (a1 - a0) / (g1 - g0)
+        if what == "cos2":
+            return m.cos(2 * a1) ** 2
+        return g(_num(mu_, dps)), m.tan(2 * a1)
+    if what == "T2":
+        return _quad(J, hc, hc), _quad(J, ec, ec)
+    if what == "Ks":
+        return _quad(J, hc, ec)
+    if what == "wp-int":                               # int_1 y df, int_1 x df over the waterplane from N
+        return st.waterplane_area * _dot(cw, ev), st.waterplane_area * _dot(cw, h)
+    if what == "mnF2":
+        return _dot(cw, h), -_dot(cw, ev), st.waterplane_area
+    if what == "Imin":
+        return st.I_min
+    if what == "extremes":
+        mean = (J[0][0] + J[1][1]) / 2
+        return (st.I_min - mean) ** 2, (st.I_max - mean) ** 2
+    if what == "D":
+        return st.volume * st.metacentric_height
+    if what == "cD":
+        return c * st.volume * st.metacentric_height
+    if what == "2cD":
+        return 2 * c * st.volume * st.metacentric_height
+    if what == "Iminc":
+        return st.I_min * c
+    if what == "V3e3c":
+        return V3m * _dot(rel, up) * c
+    raise ValueError(what)
+
+
+def _w(wname, description, targets, names, what, extra=None, generic=False):
+    cases = []
+    for nm in names:
+        p = _generic(nm) if generic else dict(_params(nm))
+        p.update(extra or {})
+        cases.append(Case(p, (nm, (extra or {}).get(mu)), nm))
+    d.witness(Computed(wname, description, tuple(targets), tuple(cases),
+                       compute=lambda case, dps, what=what: _measure(case.data[0], what, dps, case.data[1])))
+
+
+G2 = ("rect", "tri", "square", "pent-eq", "box-eq")
+E2 = ("pent-eq", "box-eq")
+G3 = ("rect-3", "tri-3", "box3-eq")
+_w("dry-volume", "volume of the clipped body above the water plane", ("V3-F", "100"), G2, "V3")
+_w("dry-moment-y", "V_3 times the offset of the clipped dry part's centroid from the plane through S across GH",
+   ("95", "95-moment"), G2, "My")
+_w("dry-product", "the same over tan phi (int x y df of F by the clipped dry part)",
+   ("95a", "95a-split", "96", "97", "106-projection"), G2, "Pxy")
+_w("dry-offsets", "offsets of the clipped dry part's centroid from S along NE and along the axis", ("S3-offsets",),
+   G2, "offsets")
+_w("flip-product", "int x y df from the turned body (density 1 - s, -u up): its submerged part's offset along GH",
+   ("s-below-half-95",), G2, "flip-product")
+_w("balance-complete", "V_1 times the horizontal offsets of the clipped centre of buoyancy from G", ("complete",), G2,
+   "balance")
+_w("dry-product-regular", "int x y df by the clipped dry part, regular bases", ("98",), ("square", "eqtri"), "Pxy")
+_w("balance", "V_1 times the horizontal offsets of the clipped centre of buoyancy from G", ("95-S3",), G2, "balance")
+_w("M3", "V_3 times the horizontal distance of the clipped dry part's centroid from S across GH",
+   ("99", "99-transformation", "102-pre", "102"), G2, "M3")
+_w("M3-sin", "the same over sin phi", ("103b",), G2, "M3sin")
+_w("dry-moments", "V_3 z_3 and V_3 x_3 of the clipped dry part (depth below the upper base, distance from GH)",
+   ("101",), G2, "ZX")
+_w("dry-height", "V_3 times the height of the clipped dry part's centroid above S along the axis", ("116-pre",), G2,
+   "V3zeta")
+_w("x0", "x_0 where the clipped water plane meets EF in the upper base", ("x0-sign",), G2, "x0")
+_w("V1e2", "V_1 times the height of G above the clipped centre of buoyancy", ("104-balance",), G2, "V1e2")
+_w("flip", "the same for density 1 - s with the body upside down (-u up)", ("s-below-half",), G2, "flip")
+for nm_, mv in (("rect", R(2, 5)), ("tri", R(6, 5)), ("pent-eq", R(7, 10))):
+    _w(f"Tmu-{nm_}", "moment of the clipped waterplane about the centroidal axis at mu to GH", ("105", "105-def"),
+       (nm_,), "Tmu", {mu: mv})
+    _w(f"Tg-{nm_}", "the same (T_2, T_2^1, k the clipped waterplane's)", ("109",), (nm_,), "Tmu", {mu: mv},
+       generic=True)
+for nm_, mv in (("rect", R(2, 5)), ("pent-eq", R(7, 10))):
+    _w(f"dT-{nm_}", "dT_mu/dmu of the clipped waterplane's tensor and tan 2mu at its root (secant method)", ("108",),
+       (nm_,), "dT", {mu: mv}, generic=True)
+_w("cos2", "cos^2 2mu at the root of dT_mu/dmu of the clipped waterplane's tensor", ("109-cos",), G2, "cos2",
+   generic=True)
+_w("Tmu-eq", "moment of the clipped waterplane about the axis at mu, at the equilibria", ("107",), E2, "Tmu",
+   {mu: R(1, 3)})
+_w("Ks", "central product moment of the clipped waterplane (axes along h and GH)", ("106-shift", "106-sum"), G2, "Ks")
+_w("Ks-eq", "the same at the equilibria", ("106",), E2, "Ks")
+_w("wp-integrals", "int_1 y df, int_1 x df of the clipped waterplane from N", ("106-moments",), G2, "wp-int")
+_w("wp-mn", "distances m, n of the clipped waterplane's centroid from HN, from N along HN, and its area",
+   ("112-mn",), G2, "mnF2")
+_w("wp-T2", "moments of the clipped waterplane about the centroidal axes along GH and across it", ("111",), G2, "T2")
+_w("k-eq", "central product of the clipped waterplane at the equilibria", ("112",), E2, "Ks")
+_w("Imin", "least moment of the clipped waterplane", ("110",), G2, "Imin", generic=True)
+_w("extremes", "squared deviations of the clipped waterplane's principal moments from their mean",
+   ("109-extremes",), G2, "extremes", generic=True)
+_w("Imin-eq", "least moment of the clipped waterplane times cos phi, equilibria", ("115",), E2, "Iminc")
+_w("D", "V_1 times the metacentric height of the clipped position, equilibria", ("104",), E2, "D")
+_w("cD", "cos phi times V_1 times the metacentric height, equilibria", ("114",), E2, "cD")
+_w("2cD", "2 cos phi times V_1 times the metacentric height, equilibria", ("117",), E2, "2cD")
+_w("e3", "V_3 e_3 cos phi of the clipped dry part, equilibria", ("116", "116-geometry"), E2, "V3e3c")
+_w("dry-volume-3", "volume of the clipped body above the water plane, third region", ("121b", "121-dry"), G3, "V3")
+_w("dry-product-3", "int x y df - int^1 x y df by the clipped dry part, third region", ("118",), G3, "Pxy")
+_w("dry-moments-3", "V_3 z_3, V_3 x_3 of the clipped dry part, third region", ("120",), G3, "ZX")
+_w("M3-3", "M_3 of the clipped dry part, third region", ("119",), G3, "M3")
+_w("M3-3-sin", "M_3/sin phi of the clipped dry part, third region", ("121",), G3, "M3sin")
+_w("x0x01", "(x_0 + x_0^1) tan phi from the clipped water lines in both bases", ("121a",), G3, "x0x01")
+_w("122", "tan phi M_3/sin phi, (x_0 + x_0^1) tan phi - b and V_3 - F_1 b (1 - s), clipped", ("122",), G3, "122")
+
+
+# ---- the stability remark on clipped boxes, the tilt (103a) by root finding, the moments of F (113)
+def _box_potential(A, C, bb, sv, theta, dps):
+    """Height of G above B of the clipped box A x C x b tilted by theta about an axis parallel to the side C."""
+    M, bd = _M(dps), (None if dps <= 15 else dps)
+    body = right_prism([(-A / 2, -C / 2), (A / 2, -C / 2), (A / 2, C / 2), (-A / 2, C / 2)], bb, dps=bd)
+    st = floating_state(body, (M.sin(theta), 0 * theta, M.cos(theta)), sv, tol=None if bd else 1e-16 * (1 + bb))
+    return st.potential
+
+
+def _box_slope(case, dps):
+    """V_1 dE/dtheta of the clipped box: central differences, Richardson-extrapolated (order 4 in float64 with
+    h = 1e-3; order 6 with h = 1e-8 on a 70-digit body for the 50-digit method)."""
+    hi = 15 if dps <= 15 else 70
+    with mpmath.workdps(hi if dps > 15 else 15):
+        A, C, bb, sv, t0 = (_num(case.params[k], hi) for k in (A_, C_, b, s, th))
+        E = lambda q: _box_potential(A, C, bb, sv, q, hi)  # noqa: E731
+        D = lambda h: (E(t0 + h) - E(t0 - h)) / (2 * h)  # noqa: E731
+        if dps <= 15:
+            h = 1e-3
+            slope = (4 * D(h / 2) - D(h)) / 3
+        else:
+            h = mpmath.mpf("1e-8")
+            d1, d2, d4 = D(h), D(h / 2), D(h / 4)
+            r1, r2 = (4 * d2 - d1) / 3, (4 * d4 - d2) / 3
+            slope = (16 * r2 - r1) / 15
+        return sv * A * C * bb * slope
+
+
+BOXES = (Case({A_: 1, C_: 1, b: 1, s: R(3, 4), th: R(3, 5)}, label="cube, s = 3/4, theta = 0.6"),
+         Case({A_: 1, C_: 1, b: 1, s: R(3, 4), th: R(9, 10)}, label="cube, s = 3/4, theta = 0.9"),
+         Case({A_: R(3, 2), C_: R(1, 2), b: 1, s: R(4, 5), th: R(1, 2)}, label="box 3/2 x 1/2 x 1, s = 4/5"))
+d.witness(Computed("box-slope", "V_1 dE/dtheta of clipped boxes (difference quotients of the clipped potential)",
+                   ("stability-direction",), BOXES, compute=_box_slope))
+
+
+@functools.lru_cache(maxsize=None)
+def _tilt_root(name, dps):
+    """tan phi at which the clipped water plane meets EF in the upper base at the given x_0 (secant method on the
+    measured x_0, from tan phi +- 1e-3 of the configuration)."""
+    t = CONFIGS[name][3]
+    target = _num(_params(name)[x0], dps)
+    f = lambda q: _x0_at(name, q, dps) - target  # noqa: E731
+    t0, w = (_num(t, dps), 1e-2) if dps <= 15 else (mpmath.mpf(_tilt_root(name, 15)), mpmath.mpf("1e-9"))
+    a_, c_ = t0 * (1 - w), t0 * (1 + w)
+    fa, fc = f(a_), f(c_)
+    for _ in range(60):
+        if fc == fa:
+            break
+        a_, fa, c_ = c_, fc, c_ - fc * (c_ - a_) / (fc - fa)
+        fc = f(c_)
+        if abs(c_ - a_) < (1e-15 if dps <= 15 else mpmath.mpf(10) ** (-dps - 3)):
+            break
+    return c_
+
+
+def _x0_at(name, q, dps):
+    """x_0 of the clipped water line for the tilt tan phi = q (a number at the working precision)."""
+    poly, (nx, ny), _, _, bb, _ = CONFIGS[name]
+    M, bd = _M(dps), (None if dps <= 15 else dps)
+    body = _bodies(name, dps)
+    cph, sph = 1 / M.sqrt(1 + q ** 2), q / M.sqrt(1 + q ** 2)
+    st = floating_state(body, (sph * _num(nx, dps), sph * _num(ny, dps), cph), _num(_params(name)[s], dps),
+                        tol=None if bd else 1e-16 * (1 + float(bb)))
+    return -(st.t - cph * _num(bb, dps) / 2) / sph
+
+
+@functools.lru_cache(maxsize=None)
+def _bodies(name, dps):
+    poly, _, _, _, bb, _ = CONFIGS[name]
+    return right_prism([(_num(px, dps), _num(py, dps)) for px, py in poly], _num(bb, dps),
+                       dps=None if dps <= 15 else dps)
+
+
+d.witness(Computed("tilt-root", "tan of the tilt at which the clipped water line passes through N (secant method)",
+                   ("103a",), tuple(Case(_params(nm), nm, nm) for nm in ("rect", "tri")),
+                   compute=lambda case, dps: _tilt_root(case.data, dps)))
+
+
+def _dry_face_moments(name, dps):
+    """Central moments of the dry part F of the upper base from the clipped upright prism over it."""
+    poly, (nx, ny), x0v, _, _, _ = CONFIGS[name]
+    base = [(px * nx + py * ny + x0v, -px * ny + py * nx) for px, py in poly]
+    Fp = _half([(sp.sympify(X), sp.sympify(Y)) for X, Y in base], 0)
+    pr = right_prism([(_num(X, dps), _num(Y, dps)) for X, Y in Fp], 1, dps=None if dps <= 15 else dps)
+    J = floating_state(pr, (0, 0, 1), _num(R(1, 2), dps)).tensor
+    return J[0][0], J[1][1]
+
+
+d.witness(Computed("F-moments", "central moments of F (clipped upright prism over the dry part of the base)",
+                   ("113", "117-T"), tuple(Case(_params(nm), nm, nm) for nm in ("rect", "tri", "pent-eq")),
+                   compute=lambda case, dps: _dry_face_moments(case.data, dps)))
+
+
+# ==== predictions: boxes turned about an axis parallel to an edge ====================================================
+def _bisect(f, lo, hi):
+    flo = f(lo)
+    for _ in range(80):
+        mid = (lo + hi) / 2
+        fm = f(mid)
+        if (fm < 0) == (flo < 0):
+            lo, flo = mid, fm
+        else:
+            hi = mid
+    return (lo + hi) / 2
+
+
+def _roots(f, valid):
+    """Sign changes of f on a log grid of tan phi in (0.01, 100) where valid(t) holds, refined by bisection."""
+    grid = [10 ** (-2 + 4 * k / 400) for k in range(401)]
+    out = []
+    for lo, hi in zip(grid, grid[1:]):
+        if valid(lo) and valid(hi) and (f(lo) < 0) != (f(hi) < 0):
+            out.append(_bisect(f, lo, hi))
+    return out
+
+
+def _strip2(A, C, H, sv):
+    """Second region, dry strip of width w across the side C: (103a) gives w, (103b) the tilt; (117) the
+    stability (as printed, k = 0 by symmetry)."""
+    w = lambda t: math.sqrt(2 * A * H * (1 - sv) / t)  # noqa: E731
+    f = lambda t: w(t) * (t * t - 1) / 6 - (H * t - A) / 4  # noqa: E731  (103b) over C w^2/2
+    out = []
+    for t in _roots(f, lambda t: w(t) < A and w(t) * t < H):
+        ww = w(t)
+        T_, Fxs, x0_ = C * ww ** 3 / 3, C * ww ** 2 / 2, ww - A / 2
+        T1_, T11_, c2_ = T_ - Fxs * ww / 2, ww * C ** 3 / 12, 1 / (1 + t * t)
+        lhs = T1_ / c2_ + T11_ + 2 * Fxs * x0_ - 2 * T_ - abs(T1_ / c2_ - T11_)     # (117), y_s = 0
+        out.append((t, "stable" if lhs > 0 else "unstable"))
+    return out
+
+
+def _strip3(A, C, H, sv):
+    """Third region, dry strips of widths w, w - H/t in the two bases: (121b) gives w, (122) the tilt."""
+    w = lambda t: A * (1 - sv) + H / (2 * t)  # noqa: E731  (121b)
+    w2 = lambda t: w(t) - H / t  # noqa: E731
+
+    def f(t):
+        T_, tau_, fx1 = C * w(t) ** 3 / 3, C * w2(t) ** 3 / 3, C * w2(t) ** 2 / 2
+        return ((T_ - tau_) * t * (1 + t * t / 2) - A * C * H * (1 - sv) * (w(t) - A / 2 + H * t / 2)
+                - H * fx1 * (1 + t * t))
+    return [(t, None) for t in _roots(f, lambda t: w2(t) > 0 and w(t) < A)]
+
+
+def _predict(scene):
+    if scene.body not in ("box", "cube"):
+        return []
+    dims = [float(q) for q in scene.dims]
+    s0 = float(scene.density)
+    sv, flip = (s0, 1) if s0 >= 0.5 else (1 - s0, -1)     # s < 1/2: s for 1 - s, dry and wet exchanged
+    preds, seen = [], []
+    perms = [pm for pm in itertools.permutations(range(3)) if all(dims[pm[m]] == dims[m] for m in range(3))]
+    for k in range(3):                                   # prism axis
+        for i in range(3):                               # the base edge across GH (the dry side rises towards +i)
+            if i == k:
+                continue
+            j = 3 - i - k
+            for (t, stab), names in ([(r, ("95a", "103a", "103b", "117")) for r in _strip2(dims[i], dims[j], dims[k], sv)]
+                                     + [(r, ("118", "121a", "121b", "122")) for r in _strip3(dims[i], dims[j], dims[k], sv)]):
+                c_, s_ = 1 / math.sqrt(1 + t * t), t / math.sqrt(1 + t * t)
+                up = [0.0, 0.0, 0.0]
+                up[i], up[k] = flip * s_, flip * c_
+                key = [abs(q) for q in up]
+                if any(max(abs(key[pm[m]] - old[m]) for m in range(3)) < 1e-9 for old in seen for pm in perms):
+                    continue
+                seen.append(key)
+                region = "second" if names[0] == "95a" else "third"
+                preds.append(Prediction(printed=names, up=tuple(up), stability=stab,
+                                        note=f"{region} region, prism axis {'xyz'[k]}, turned about an edge along "
+                                             f"{'xyz'[j]}: tan phi = {t:.12g}"))
+    return preds
+
+
+d.predicts(("box", "cube"), _predict)

@@ -1,0 +1,798 @@
+"""Scheeffer 1902, X: the equilibrium positions of a floating cube.
+
+Beyond the first rotation domain (section VI.D) the water plane cuts a face of the cube: the waterplane is a
+pentagon, triangle, hexagon or trapezoid, and from one face (or from two parallel faces) a triangle is cut off.
+
+First condition, one face cut (167)-(170).  Fig. 23: the top face, the immersed corner triangle BHG (right
+angle at B, BH = rho, angle BHG = omega, height BP = h), N the foot of the perpendicular from the centre O
+onto the water line GH, x across GH towards B, y along GH towards G.  The first equilibrium condition (98)
+is int xy df = 0 over the triangle; split at P it is (167), and with NH = u, NG = v from the square it
+becomes (168) = h^3 (cos w - sin w)(2a cos w - rho(cos w + sin w))/(24 sin w cos^2 w).  The second
+factor cannot vanish for a triangle inside the face (169a, b contradict each other), so omega = 45 deg
+(170): with a pentagonal or triangular waterplane the cut triangle is isosceles.  All of this is derived
+here by integrating over the triangles, and the condition itself is measured on the clipped cube as the
+moment of the dry part about the vertical plane across the axis.
+
+Second condition, pentagonal waterplane (171), (172).  With omega = 45 deg, a = 1 and the leg x of the
+cut triangle, the dry part is the set of columns over the dry part F of the top face down to the water
+plane; its volume 1 - s fixes the tilt, and B below G gives (171) (derived: 2T(z^2 + (1-s)^2) - z^3(1-x)
+- z^2(1-s) is a positive multiple of the derivative of the potential along the diagonal plane).  (171)
+has a root in 0 < x < 1 for (4 - sqrt 2)/7 < s < (4 + sqrt 2)/7 (172, right).  But the text's
+conclusion, a stable pentagonal equilibrium for every 1/2 < s < 0.7735, is wrong: below s = 0.7623 the
+root of (171) lies where the bottom face is already cut (the waterplane there is a hexagon, the clipped
+cube has no pentagonal equilibrium at all), and where two pentagonal roots exist (0.7623 < s < 0.7735)
+one of them is unstable.  The same holds mirrored for s < 1/2.
+
+Triangle and hexagon.  The dry corner is a tetrahedron, a triangular waterplane needs s >= 5/6 (right);
+by (170) on all three faces it lies across a diagonal, and it is always unstable (metacentric height
+sqrt 3 L^3 (L - 1)/(12 s) < 0, L < 1 the leg).  With two parallel faces cut, the first condition is
+(173), the sum of two terms of the form (174), (175), each of the sign of cos w - sin w, so again
+omega = 45 deg; the regular hexagon at s = 1/2 is stable (metacentric height sqrt 3/48).  Derived by
+integrating over the two triangles with the water plane through both water lines, and measured on the
+clipped cube.
+
+Witnesses (``symfloat.geometry.floating``): moments of the clipped dry part, waterplane polygons and their
+vertex counts, metacentric heights of the clipped cube, and equilibria found as roots of the derivative
+of the clipped potential u.(G - B) along the diagonal plane (its derivative is (du/dtheta).(G - B)).
+Angles in radians.
+"""
+import math
+
+import mpmath
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.witness import Case, Computed
+from symfloat.geometry.floating import box, floating_state, right_prism, submerged
+from symfloat.model.prediction import Prediction
+
+a, om, rho, rho1, k, s, L = sp.symbols("a omega rho rho_1 k s L", positive=True)
+x, y, X, Y, Z, w, xl = sp.symbols("x y X Y Z w x_l", real=True)
+half, r2, pi = sp.Rational(1, 2), sp.sqrt(2), sp.pi
+co, si = sp.cos(om), sp.sin(om)
+tg, ctg = si / co, co / si                      # tg, cotg of the text
+
+# quantities established by steps
+u_, v_, h_, h1_, IH, IG, P, P1, rs = sp.symbols("u v h h_1 J_HPB J_GPB P P_1 rho_*")
+Sq, Tb, Td, M2, Ar = sp.symbols("J_sq J_top J_bot M_2 A_BHG")
+Tq, zq, V3, kq, MX, Mz, dE, F0, F1v = sp.symbols("T z V_3 k_171 M_X M_z E_theta f_0 f_1")
+s172, Sw45, Vt, s56, It, uD, GMt, Ih, Bh, GMh, k3, Me, NVp, NVd = sp.symbols(
+    "s_172 S_45 V_t s_56 I_t uD_t GM_t I_h BG_h GM_h k_3 M_e N_p N_d")
+
+DERIVATION = d = Derivation(
+    id="scheeffer-x",
+    source="scheeffer",
+    title="The equilibrium positions of a floating cube",
+    locator="X",
+    summary="Pentagonal and triangular waterplanes need the axis along a face diagonal (168)-(170); the pentagon's "
+            "second condition (171) and its root range (172); the wrong conclusion that every unstable upright "
+            "cube with 1/2 < s < 0.7735 has a stable pentagonal position; the triangle (s > 5/6, unstable) and "
+            "the hexagon (symmetric, stable at s = 1/2).",
+    requires=("scheeffer-vi-cf",),
+    domain={a: (1, 2), om: (0.05, 0.75), rho: (0.1, 0.95), rho1: (0.1, 0.95), k: (0.1, 2), s: (0.55, 0.95),
+            L: (0.1, 0.99), x: (0, 1), y: (-1, 1), X: (-1, 1), Y: (-1, 1), Z: (-1, 1), w: (-1.5, 1.5),
+            xl: (0.02, 0.98), u_: (0.1, 1), v_: (0.1, 1), h_: (0.1, 1)},
+    constraints=(),
+    assumptions=("the cube of edge a (a = 1 from (171) on), homogeneous, density 0 < s < 1 relative to the water",
+                 "one face cut (second domain): the top face loses the corner triangle BHG, BH = rho < a, "
+                 "BG = rho tan(omega) < a, 0 < omega < 45 deg (the other half by the symmetry H <-> G); sampled "
+                 "with a >= 1 > rho so that both hold",
+                 "two parallel faces cut (third domain): the bottom face loses the triangle LDM with LD = rho_1, "
+                 "its water line parallel to GH; the water plane passes through both water lines",
+                 "(171): omega = 45 deg, a = 1, leg x of the cut triangle, s > 1/2, the bottom face uncut; "
+                 "s < 1/2 follows by the duality s <-> 1 - s (turn the cube over, exchange wet and dry)",
+                 "the potential of a floating body is u.(G - B) (height of G above B); its derivative along a "
+                 "turn of the up vector u is (du).(G - B), since u.dB = 0 (the waterplane is tangent to the "
+                 "surface of buoyancy; checked on the clipped cube in the tests)",
+                 "sign identities: a printed inequality L > R is read as L - R = (positive factor) x (the "
+                 "quantity whose sign decides); the factor is stated in the note"),
+)
+
+# ==== one face cut: the first condition (167)-(170) ==================================================
+Hp = sp.Matrix([a / 2 - rho, a / 2])          # body frame of the top face, O the origin, B = (a/2, a/2)
+Gp = sp.Matrix([a / 2, a / 2 - rho * tg])
+Bp = sp.Matrix([a / 2, a / 2])
+e_ = sp.Matrix([co, -si])                      # along GH, from H towards G
+n_ = sp.Matrix([si, co])                       # across GH, towards B
+d.step("NH", (u_, -Hp.dot(e_), (rho - a / 2) * co + a / 2 * si), "geometry", result=u_,
+       note="N = H + u e is the foot of the perpendicular from O (e.N = 0)")
+d.step("NG", (v_, Gp.dot(e_), a / 2 * co - (a / 2 - rho * tg) * si), "geometry", result=v_)
+d.step("height", (h_, n_.dot(Bp - Hp), rho * si), "geometry", result=h_, note="h = BP, the distance of B from GH")
+d.step("HPB", (IH, sp.Integral(x * y, (y, -u_ + x * ctg, -u_ + h_ * ctg), (x, 0, h_)),
+               h_ ** 4 / 8 * ctg ** 2 - u_ * h_ ** 3 / 6 * ctg), "integration", result=IH,
+       note="origin N: H = (0, -u), P = (0, -u + h cot w), B = (h, -u + h cot w); HB is y = -u + x cot w")
+d.step("GPB", (IG, sp.Integral(x * y, (y, v_ - h_ * tg, v_ - x * tg), (x, 0, h_)),
+               v_ * h_ ** 3 / 6 * tg - h_ ** 4 / 8 * tg ** 2), "integration", result=IG,
+       note="G = (0, v), P = (0, v - h tan w); GB is y = v - x tan w")
+d.step("167", (P, IH + IG, h_ ** 3 / 6 * (v_ * tg - u_ * ctg) + h_ ** 4 / 8 * (ctg ** 2 - tg ** 2)), "algebra",
+       uses=("HPB", "GPB"), result=P)
+FAC = 2 * a * co - rho * (co + si)
+P168 = h_ ** 3 * (co - si) / (24 * si * co ** 2) * FAC
+d.step("168", (P, h_ ** 3 / 6 * (v_ * tg - u_ * ctg) + h_ ** 4 / 8 * (ctg ** 2 - tg ** 2), P168), "algebra",
+       uses=("167", "NH", "NG", "height"), result=P)
+d.step("factor-positive", (FAC, co * ((a - rho) + (a - rho * tg))), "algebra",
+       note="positive whenever rho < a and rho tan w < a: the second factor of (168) never vanishes")
+d.step("rho-star", sp.Eq(rs, 2 * a * co / (co + si)), "definition", result=rs,
+       note="the zero of the second factor of (168)")
+d.step("second-root", (FAC.subs(rho, rs), 0), "algebra", uses=("rho-star",))
+d.step("169a-margin", (a - rs, a * (si - co) / (co + si)), "algebra", uses=("rho-star",))
+d.step("169b-margin", (a - rs * tg, a * (co - si) / (co + si)), "algebra", uses=("rho-star",))
+d.step("169-exclusive", ((a - rs) * (a - rs * tg), -a ** 2 * (co - si) ** 2 / (co + si) ** 2), "algebra",
+       uses=("169a-margin", "169b-margin"), note="never positive: rho_* < a and rho_* tan w < a exclude each other")
+d.step("sign-of-P", (P, h_ ** 3 * (co - si) * ((a - rho) + (a - rho * tg)) / (24 * si * co)), "algebra",
+       uses=("168", "factor-positive"),
+       note="every factor but cos w - sin w is positive: P = 0 only at w = 45 deg, P > 0 for 0 < w < 45 deg")
+
+POS = h_ ** 3 * ((a - rho) + (a - rho * tg)) / (24 * si * co)
+d.quote("HPB", "X (167)",
+        r"$$\int x y \, d f = \frac{h^4}{8} \cotg^2 \omega - u \cdot \frac{h^3}{6} \cotg \omega^*)$$",
+        reading=(IH, h_ ** 4 / 8 * ctg ** 2 - u_ * h_ ** 3 / 6 * ctg),
+        note="the asterisk is a footnote mark; the formula is about N (the origin 'nach H' of the text is where the "
+             "integral is set up, -u h^3 cot(w)/6 the shift to N)")
+d.quote("GPB", "X (167)", r"$$\int x y \, d f = v \cdot \frac{h^3}{6} \tg \omega - \frac{h^4}{8} \tg^2 \omega$$",
+        reading=(IG, v_ * h_ ** 3 / 6 * tg - h_ ** 4 / 8 * tg ** 2))
+d.quote("167-sum", "X (167)",
+        r"$$\int x y \, d f = \frac{h^3}{6} (v \tg \omega - u \cotg \omega) + \frac{h^4}{8} (\cotg^2 \omega - "
+        r"\tg^2 \omega) = 0$$",
+        reading=(P, h_ ** 3 / 6 * (v_ * tg - u_ * ctg) + h_ ** 4 / 8 * (ctg ** 2 - tg ** 2)),
+        note="'= 0' is the condition (98) imposed on this value")
+d.quote("167", "(167)",
+        r"$$\int x y \cdot d f = h^3 \left\{ \frac{1}{6} (v \tg \omega - u \cotg \omega) + \frac{h}{8} (\cotg^2 "
+        r"\omega - \tg^2 \omega) \right\} = 0 \quad (167)$$",
+        reading=(P, h_ ** 3 * ((v_ * tg - u_ * ctg) / 6 + h_ / 8 * (ctg ** 2 - tg ** 2))))
+d.quote("u", "X", r"$$u = \left( \varrho - \frac{a}{2} \right) \cos \omega + \frac{a}{2} \sin \omega$$",
+        reading=(u_, (rho - a / 2) * co + a / 2 * si))
+d.quote("v", "X", r"$$v = \frac{a}{2} \cos \omega - \left( \frac{a}{2} - \varrho \tg \omega \right) \sin \omega$$",
+        reading=(v_, a / 2 * co - (a / 2 - rho * tg) * si))
+d.quote("168", "(168)",
+        r"$$\int x y \, d f = \frac{h^3 (\cos \omega - \sin \omega)}{24 \sin \omega \cdot \cos^2 \omega} \cdot "
+        r"\left\{ 2 a \cdot \cos \omega - \varrho (\cos \omega + \sin \omega) \right\} = 0 \quad (168)$$",
+        reading=(P, h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si))),
+        note="'Setzt man diese Werte in 104 ein': the values go into (167), not (104) (the stability condition); "
+             "a wrong reference in the words, not in a formula")
+d.step("half-range", (P168.subs(h_, rho * si).subs({om: pi / 2 - om, rho: rho * tg}, simultaneous=True),
+                      -P168.subs(h_, rho * si)), "algebra", uses=("168", "height"),
+       note="the same triangle seen from G (angle 90 deg - w, leg rho tan w) gives -P: the zeros for "
+            "45 deg < w < 90 deg are those of 0 < w < 45 deg")
+d.quote("half-range", "X", r"$$0 < \omega \leq \frac{\pi}{4}$$",
+        reading=(P168.subs(h_, rho * si).subs({om: pi / 2 - om, rho: rho * tg}, simultaneous=True),
+                 -P168.subs(h_, rho * si)),
+        note="'angenommen werden kann': read as the symmetry that allows it")
+d.step("triangle-area", (Ar, sp.Integral(1, (Y, a / 2 - (X - a / 2 + rho) * tg, a / 2), (X, a / 2 - rho, a / 2)),
+                         rho ** 2 * tg / 2), "integration", result=Ar)
+d.quote("area", "X", r"$$\left( \int d f = B H G \right)$$", reading=(Ar, rho * (rho * tg) / 2),
+        note="the integration runs over the triangle BHG, legs rho and rho tan w")
+d.quote("169a-bound", "X", r"$$\frac{2 a \cos \omega}{\cos \omega + \sin \omega} < a$$",
+        reading=(a - 2 * a * co / (co + si), a / (co + si) * (si - co)),
+        note="rho_* < a: sign identity, factor a/(cos w + sin w) > 0")
+d.quote("169", "(169)",
+        r"\cos \omega - \sin \omega = 0 \text{ also } \omega = \frac{\pi}{4} \\ \text{und } 2 a \cos \omega - "
+        r"\varrho (\cos \omega + \sin \omega) = 0 \end{aligned} \right\} \quad (169)$$",
+        reading=(sp.Matrix([sp.cos(pi / 4) - sp.sin(pi / 4), FAC.subs(rho, rs)]), sp.zeros(2, 1)),
+        note="the two factors of (168) that can vanish (h > 0); each read at its zero")
+d.quote("rho-star", "X", r"$$\varrho = \frac{2 a \cos \omega}{\cos \omega + \sin \omega}$$",
+        reading=(rs, 2 * a * co / (co + si)))
+d.quote("169a", "(169a)", r"$$\cos \omega < \sin \omega \quad (169a)$$",
+        reading=(a - 2 * a * co / (co + si), a / (co + si) * (si - co)),
+        note="from rho_* < a: sign identity, factor a/(cos w + sin w) > 0")
+d.quote("169b", "(169b)",
+        r"\text{und} \quad & \frac{2 a \cos \omega \cdot \operatorname{tg} \omega}{\cos \omega + \sin \omega} < a "
+        r"\\ \text{woraus} \quad & \sin \omega < \cos \omega \end{aligned} \quad (169b)$$",
+        reading=(a - 2 * a * co * tg / (co + si), a / (co + si) * (co - si)),
+        note="from rho_* tan w < a: sign identity, factor a/(cos w + sin w) > 0; with (169a) unsatisfiable")
+d.quote("170", "(170)", r"$$\omega = \frac{\pi}{4} \quad (170)$$", reading=(sp.Subs(P, om, pi / 4), 0),
+        note="the first condition holds at w = 45 deg for every triangle")
+d.quote("diagonal-claim", "X",
+        "Es kann also für einen fünfeckigen oder dreieckigen Wasserschnitt nur Gleichgewicht stattfinden, wenn die "
+        "Drehungsachse der Diagonale einer Fläche parallel ist",
+        reading=(P, (co - si) * POS),
+        note="sign identity (sign-of-P): P = (cos w - sin w) x (a positive factor), zero only for the axis along a "
+             "face diagonal")
+
+# ==== pentagonal waterplane: the second condition (171), (172) ========================================
+xi = (X + Y - (1 - xl)) / r2                    # signed distance from GH in the top face, towards B
+
+
+def over_F(f):
+    """Integral over the dry part F of the top face: the unit square without the corner triangle at B."""
+    return (sp.Integral(f, (X, -half, half), (Y, -half, half))
+            - sp.Integral(f, (Y, 1 - xl - X, half), (X, half - xl, half)))
+
+
+col = -k * xi                                   # dry column height over F at the tilt tan(phi) = k
+d.step("z", (zq, r2 * over_F(-xi), 1 - xl + xl ** 3 / 6), "integration", result=zq,
+       note="z = sqrt 2 F x_s: sqrt 2 times the first moment of F about GH")
+d.step("T", (Tq, over_F(xi ** 2), (sp.Rational(1, 6) + (1 - xl) ** 2 - xl ** 4 / 12) / 2), "integration",
+       result=Tq, note="T: moment of inertia of F about GH")
+d.step("dry-volume", (V3, over_F(col), k * zq / r2), "integration", result=V3, uses=("z",),
+       note="the dry part: columns over F from the top face down to the water plane z = 1/2 + k xi")
+d.step("tilt", sp.Eq(kq, r2 * (1 - s) / zq), "definition", result=kq, uses=("dry-volume",),
+       note="the tilt at which the dry volume is 1 - s")
+d.step("tilt-check", (over_F(col.subs(k, kq)), 1 - s), "integration", uses=("tilt", "dry-volume"))
+d.step("tilt-grows", (sp.diff(r2 * (1 - s) / (1 - xl + xl ** 3 / 6), xl),
+                      r2 * (1 - s) * (1 - xl ** 2 / 2) / (1 - xl + xl ** 3 / 6) ** 2), "algebra",
+       note="positive: at fixed s the leg x grows with the tilt")
+d.step("mirror", (over_F(Y * col), over_F(X * col)), "integration",
+       note="the dry part is symmetric in X <-> Y: its centroid lies in the diagonal plane")
+MXc = -r2 * k * (xl ** 4 - 2 * xl ** 3 + 2) / 48
+Mzc = k * (k * (xl ** 4 - 12 * xl ** 2 + 24 * xl - 14) + 2 * r2 * (xl ** 3 - 6 * xl + 6)) / 48
+d.step("moment-X", (MX, over_F(X * col), MXc), "integration", result=MX)
+d.step("moment-z", (Mz, over_F((col - col ** 2) / 2), Mzc), "integration", result=Mz,
+       note="int_{1/2 - c}^{1/2} z dz = (c - c^2)/2 over each column")
+d.step("gradient", sp.Eq(dE, (-(r2 * MXc + k * Mzc) / (s * sp.sqrt(1 + k ** 2))).subs(k, kq)), "definition", result=dE,
+       uses=("moment-X", "moment-z", "tilt"),
+       note="u = (-sin t/sqrt 2, -sin t/sqrt 2, cos t), tan t = k: dE/dt = (du/dt).(G - B), G - B = M/s with "
+            "M = (M_X, M_X, M_z) the first moment of the dry part about G (total moment zero, volume 1), at the "
+            "tilt k_171")
+F171 = lambda T2, zz, xx, ss: T2 * (zz ** 2 + (1 - ss) ** 2) - zz ** 3 * (1 - xx) - zz ** 2 * (1 - ss)  # noqa: E731
+KF = r2 * s * zq ** 3 * sp.sqrt(1 + kq ** 2) / (1 - s)
+d.step("171-derived", (F171(2 * Tq, zq, xl, s), KF * dE), "algebra",
+       uses=("gradient", "T", "z"),
+       note="the left side of (171) minus its right side is dE/dt times a positive factor: (171) is B below G")
+d.quote("171", "(171)",
+        r"2 T \left\{ z^2 + (1 - s)^2 \right\} &= z^3 (1 - x) + z^2 (1 - s) \\ \text{wo} \quad 2 T &= \frac{1}{6} + "
+        r"(1 - x)^2 - \frac{x^4}{12} \\ \text{und} \quad z &= 1 - x + \frac{x^3}{6} \end{aligned} \right\} \quad "
+        r"(171)$$",
+        reading=(sp.Matrix([2 * Tq, zq, F171(2 * Tq, zq, xl, s)]),
+                 sp.Matrix([sp.Rational(1, 6) + (1 - xl) ** 2 - xl ** 4 / 12, 1 - xl + xl ** 3 / 6,
+                            F171(sp.Rational(1, 6) + (1 - xl) ** 2 - xl ** 4 / 12, 1 - xl + xl ** 3 / 6, xl, s)]),
+                 sp.Matrix([2 * Tq, zq, KF * dE])),
+        note="x of the text is x_l here; the equation read as left minus right side = (positive factor) x dE/dt")
+
+f_at = lambda xx, ss: F171(sp.Rational(1, 6) + (1 - xx) ** 2 - xx ** 4 / 12, 1 - xx + xx ** 3 / 6, xx, ss)  # noqa
+d.step("end-0", (F0, f_at(sp.Integer(0), s), (7 * (1 - s) ** 2 - 6 * (1 - s) + 1) / 6,
+                 7 * (s - (4 + r2) / 7) * (s - (4 - r2) / 7) / 6), "algebra", result=F0)
+d.step("end-1", (F1v, f_at(sp.Integer(1), s), (6 * (1 - s) - 1) ** 2 / 432), "algebra", result=F1v)
+d.step("172-root", sp.Eq(s172, (4 + r2) / 7), "definition", result=s172, uses=("end-0",),
+       note="f(0, s) = 0 on s > 1/2: a root of (171) enters 0 < x through x = 0 (the corner B just touching)")
+d.step("172-check", (f_at(sp.Integer(0), s172), 0), "algebra", uses=("172-root",))
+d.quote("172", "(172)",
+        r"Die Gleichung 171 hat (zwischen  $x = 0$  und  $x = 1$ ) eine reelle Wurzel, wenn" "\n\n" r"$$s < "
+        r"\frac{4 + \sqrt{2}}{7} \quad \text{oder} < 0,7735. \quad (172)$$",
+        reading=(sp.Matrix([s172, F0, F1v]), sp.Matrix([(4 + r2) / 7, 7 * (s - (4 + r2) / 7) * (s - (4 - r2) / 7) / 6,
+                                                        (5 - 6 * s) ** 2 / 432])),
+        note="f(0) < 0 <= f(1) for (4 - sqrt 2)/7 < s < (4 + sqrt 2)/7: a root in 0 < x <= 1 (x = 1 only at s = 5/6). "
+             "Right as a statement about (171); at s = 0.77 there are three roots")
+d.quote("172-number", "(172)", r"\frac{4 + \sqrt{2}}{7} \quad \text{oder} < 0,7735",
+        reading=(s172, sp.Rational("0.7735")), tolerance=sp.Rational(1, 20000))
+d.step("first-domain-82", sp.Eq(Sw45, (1 - s) ** 2 / (6 * s * (1 - s) - 1)), "lemma",
+       uses=("scheeffer-vi-cf:cube-limit-omega",), result=Sw45,
+       note="(82) of VI.D for s > 1/2: the oblique position stays in the first domain iff sin^2(45 deg + w) <= S")
+d.quote("first-domain-82", "X",
+        r"$$1 \leq \frac{(1 - s)^2}{6s(1 - s) - 1}$$",
+        reading=(Sw45 - 1, (7 * s ** 2 - 8 * s + 2) / (6 * s * (1 - s) - 1)),
+        note="w = 45 deg, sin^2 90 deg = 1; sign identity: S - 1 has the sign of 7s^2 - 8s + 2 where the "
+             "upright cube is unstable (6 s(1-s) > 1)")
+d.quote("first-domain-bound", "X", r"woraus  $s > \frac{4 + \sqrt{2}}{7}$  oder  $> 0,7735$  folgt",
+        reading=(7 * s ** 2 - 8 * s + 2, 7 * (s - s172) * (s - (4 - r2) / 7)),
+        note="for s > 1/2 the second factor is positive: S >= 1 iff s >= s_172 (the text's '>' drops the boundary)")
+
+# the roots of (171) at chosen densities: exact algebraic numbers
+def roots_171(sv):
+    """The real roots 0 < x < 1 of (171) at the rational density sv, as CRootOf."""
+    poly = sp.Poly(sp.expand(432 * f_at(x, sp.nsimplify(sv))), x)
+    return [r for r in poly.real_roots() if 0 < r < 1]
+
+
+def beta(xx, ss):
+    """(2 - x)(1 - s)/z: below 1 while the bottom corner D = (-1/2, -1/2, -1/2) stays under water."""
+    return (2 - xx) * (1 - ss) / (1 - xx + xx ** 3 / 6)
+
+
+S_COUNTER = sp.Rational(3, 5)
+X_COUNTER = roots_171(S_COUNTER)[0]
+d.step("bottom-corner", ((half - kq * (2 - xl) / r2) - (-half), 1 - beta(xl, s)), "algebra", uses=("tilt",),
+       note="height of the water plane above D: positive (D wet, pentagon) iff beta < 1, else D is dry and the "
+            "waterplane a hexagon")
+d.step("pentagon-vertices", sp.Eq(NVp, sp.Rational(11, 2) + sp.sign(beta(X_COUNTER, S_COUNTER) - 1) / 2),
+       "definition", result=NVp, uses=("bottom-corner",),
+       note="vertices of the waterplane at the only root of (171) in (0, 1) at s = 3/5 (x = 0.5498): 5 if beta < 1, "
+            "6 if beta > 1; beta = 1.214 there")
+PENT_EVIDENCE = (
+    "(172) is right about (171), but (171) describes an equilibrium only while the bottom face stays uncut, "
+    "beta = (2 - x)(1 - s)/z < 1. For 1/2 < s < 0.7623 the root of (171) has beta > 1: at s = 3/5 it is "
+    "x = 0.5498, beta = 1.214, the bottom corner is dry and the waterplane a hexagon, so (171) does not apply; "
+    "the clipped cube has no pentagonal equilibrium there (a search over all orientations finds as its only stable "
+    "position the symmetric hexagon, the corner up). Pentagonal equilibria exist only for 0.7623 < s < 5/6 "
+    "(0.7623: the fold of (171), f = df/dx = 0 at x = 0.358); the one that starts at x = 0 at s = (4 + sqrt 2)/7 "
+    "and exists for 0.7623 < s < 0.7735 is stable, the other (0.7623 < s < 5/6) unstable. Scheeffer omitted the "
+    "discussion of (171) for want of space; the check of the bottom face is what is missing.")
+d.quote("pentagon-exists", "X",
+        "Hat also ein in aufrechter Lage labil schwimmender Würfel im ersten Drehungsgebiet keine neue "
+        "Gleichgewichtslage, so hat er sicher eine im zweiten Gebiet (Fünfeckiger Wasserschnitt), wenn die obere "
+        "Fläche mit einer Ecke eintaucht.",
+        reading=(NVp, 5),
+        erratum=Erratum("claim", "high",
+                        "a pentagonal equilibrium exists only for 0.7623 < s < 5/6 (and 1/6 < s < 0.2377); for "
+                        "1/2 < s <= 0.7623 the root of (171) lies beyond the second domain (hexagonal waterplane)",
+                        PENT_EVIDENCE, corrected_reading=(NVp, 6)),
+        note="read at s = 3/5 (upright unstable, no oblique position in the first domain): the print says the "
+             "root of (171) is a pentagonal equilibrium")
+
+S_STAB = sp.Rational(77, 100)
+XS = roots_171(S_STAB)           # three roots: 0.0858, 0.5684 (pentagons) and 0.8768 (beta > 1)
+fx = sp.diff(f_at(x, S_STAB), x)
+SIG = sp.Symbol("sigma")
+d.step("stiffness-sign", (SIG, sp.Matrix([sp.sign(fx.subs(x, XS[0])), sp.sign(fx.subs(x, XS[1]))])),
+       "definition", uses=("171-derived", "tilt-grows"), result=SIG,
+       note="at a root of (171) d^2E/dt^2 has the sign of df/dx (f = positive factor x dE/dt, x grows with t); "
+            "the first two roots at s = 0.77 (both with beta < 1)")
+d.quote("pentagon-stable", "X", "Es lässt sich auch zeigen, dass dieses Gleichgewicht stabil ist",
+        reading=(SIG, sp.Matrix([1, 1])),
+        erratum=Erratum("claim", "medium",
+                        "of the two pentagonal equilibria for 0.7623 < s < 0.7735 only the one with the smaller leg "
+                        "(x -> 0 as s -> 0.7735) is stable; the other is unstable",
+                        "At s = 0.77 (171) has the pentagonal roots x = 0.0858 and x = 0.5684 (beta = 0.48, 0.71). "
+                        "d^2E/dt^2 along the diagonal plane has the sign of df/dx: + at 0.0858, - at 0.5684; the "
+                        "clipped cube confirms both equilibria (tan t = 0.3557, 0.7038), the second with a negative "
+                        "second derivative of the potential. The text proves nothing here ('worauf ich jedoch hier "
+                        "ebenfalls nicht näher eingehen kann'); medium, since 'dieses' may mean the small-leg branch "
+                        "alone.",
+                        corrected_reading=(SIG, sp.Matrix([1, -1]))),
+        note="read at s = 0.77 for the two pentagonal roots of (171): stiffness signs along the diagonal plane")
+d.quote("dual-threshold", "X", r"wenn  $s > \frac{3 - \sqrt{2}}{7}$  d. i.  $> 0,2265$  ist.",
+        reading=(1 - s172, (3 - r2) / 7), note="the duality s <-> 1 - s")
+d.quote("dual-number", "X", r"$> 0,2265$", reading=(1 - s172, sp.Rational("0.2265")), tolerance=sp.Rational(1, 20000))
+d.step("dual-vertices", sp.Eq(NVd, NVp), "definition", result=NVd, uses=("pentagon-vertices",),
+       note="the cube turned over at density 1 - s: wet and dry exchanged, the same waterplane")
+d.quote("dual-exists", "X",
+        r"Für  $s < \frac{1}{2}$  tritt dieses stabile Gleichgewicht im zweiten Drehungsgebiet ein,",
+        reading=(NVd, 5),
+        erratum=Erratum("consequential", "high", "only for 0.2265 < s < 0.2377 (stable) and 1/6 < s < 0.2377",
+                        "The mirror image of pentagon-exists (s <-> 1 - s): at s = 2/5 the root of (171) at "
+                        "1 - s = 3/5 "
+                        "gives a hexagonal waterplane.",
+                        corrected_reading=(NVd, 6)),
+        note="read at s = 2/5")
+
+# ==== triangle ===========================================================================================
+d.step("tetra-volume", (Vt, sp.Integral(1, (Z, 0, a - X - Y), (Y, 0, a - X), (X, 0, a)), a ** 3 / 6), "integration",
+       result=Vt, note="the corner tetrahedron cut off by the three face diagonals at a corner")
+d.step("triangle-bound", sp.Eq(s56, 1 - Vt / a ** 3), "definition", result=s56,
+       note="density at which the dry part is that tetrahedron")
+d.quote("tetra", "X", r"$$\frac{a^3}{6} = a^3 (1 - s)$$", reading=(Vt, a ** 3 * (1 - s56)))
+d.quote("five-sixths", "X", r"$$s = \frac{5}{6}$$", reading=(s56, sp.Rational(5, 6)))
+ut = sp.Matrix([1, 1, 1]) / sp.sqrt(3)
+d.step("tri-symmetric", (sp.Matrix([-L, L, 0]).cross(sp.Matrix([-L, 0, L])), L ** 2 * sp.sqrt(3) * ut), "geometry",
+       note="legs of equal length L on the three edges at the dry corner (170 on every face): the water plane is "
+            "normal to the diagonal (1, 1, 1)")
+d.quote("tri-symmetric", "X",
+        "so muss der dreieckige Wasserschnitt eine symmetrische Lage (senkrecht zu einer Würfeldiagonale) haben",
+        reading=(sp.Matrix([-L, L, 0]).cross(sp.Matrix([-L, 0, L])).cross(ut), sp.zeros(3, 1)))
+cT = r2 * L
+d.step("tri-inertia", (It, sp.Integral((Y - sp.sqrt(3) * cT / 6) ** 2, (X, Y / sp.sqrt(3), cT - Y / sp.sqrt(3)),
+                                       (Y, 0, sp.sqrt(3) * cT / 2)), sp.sqrt(3) * L ** 4 / 24), "integration",
+       result=It, note="equilateral triangle of side sqrt 2 L about a central axis (isotropic)")
+d.step("tri-dry-centroid", (uD, ut.dot(sp.Matrix([half, half, half]) - L / 4 * sp.Matrix([1, 1, 1])),
+                            sp.sqrt(3) * (half - L / 4)), "geometry", result=uD,
+       note="centroid of the dry tetrahedron, legs L at the corner (1/2, 1/2, 1/2), along the up vector")
+sT = 1 - L ** 3 / 6
+d.step("tri-GM", (GMt, It / sT - (1 - sT) / sT * uD, sp.sqrt(3) * L ** 3 * (L - 1) / (12 * sT)), "algebra",
+       uses=("tri-inertia", "tri-dry-centroid"), result=GMt,
+       note="Duhamel: GM = I/V - BG, V = s = 1 - L^3/6, G - B = (1 - s) D/s; negative for every L < 1 (s > 5/6)")
+d.quote("tri-unstable", "X", "Die Bedingungen ergeben, dass dieses Gleichgewicht stets labil ist.",
+        reading=(sp.sign(GMt), -1))
+d.quote("hex-follows", "X",
+        r"Wenn  $s < \frac{5}{6}$  (bzw.  $> \frac{1}{6}$ ) ist, so geht der fünfeckige Wasserschnitt bei weiterem",
+        reading=(sp.sign((1 - s) - (1 - s56)), sp.sign(s56 - s)),
+        note="turning on towards the diagonal, the dry part reaches the bottom face before the top face loses the "
+             "two corners next to B iff its volume 1 - s exceeds the tetrahedron's 1/6")
+
+# ==== two parallel faces: (173)-(175) ====================================================================
+XI = si * X + co * Y - (si * (a / 2 - rho) + co * a / 2)     # distance from GH towards B (top face)
+ETA = co * X - si * Y                                         # along GH, from the plane through O
+xM = {X: -a / 2 + rho1, Y: -a / 2}                            # M: the bottom water line on the side y = -a/2
+d.step("third-tilt", sp.Eq(k3, -a / XI.subs(xM)), "definition", result=k3,
+       note="the water plane z = a/2 + k xi passes through the bottom water line ML (the triangle LDM, legs "
+            "rho_1, rho_1 tan w at D, projected on the top face) at depth a")
+sq_ = sp.Integral(ETA * XI, (X, -a / 2, a / 2), (Y, -a / 2, a / 2))
+triB = sp.Integral(ETA * XI, (Y, a / 2 - (X - a / 2 + rho) * tg, a / 2), (X, a / 2 - rho, a / 2))
+triD = sp.Integral(ETA * (XI - XI.subs(xM)), (Y, -a / 2, -a / 2 + (-a / 2 + rho1 - X) * tg), (X, -a / 2, -a / 2 + rho1))
+d.step("h1", (h1_, (-sp.Matrix([-a / 2 + rho1, -a / 2]) + sp.Matrix([-a / 2, -a / 2])).dot(-n_), rho1 * si), "geometry",
+       result=h1_, note="h_1: the distance of D = (-a/2, -a/2) from the projected bottom water line through M")
+d.step("bottom-triangle", sp.Eq(P1, P168.subs({h_: h1_, rho: rho1})), "definition", uses=("168", "h1"), result=P1,
+       note="(168) for LDM: turned by 180 deg it is a triangle like BHG with rho_1, h_1 (checked by third-bottom)")
+d.step("third-square", (Sq, sq_, 0), "integration", result=Sq,
+       note="the square's product moment about N, axes along and across GH")
+d.step("third-top", (Tb, triB, P168.subs(h_, rho * si)), "integration", uses=("168",), result=Tb,
+       note="the triangle BHG in body coordinates: (168) again")
+d.step("third-bottom", (Td, triD, P168.subs({h_: rho1 * si, rho: rho1})), "integration", result=Td,
+       note="int eta (xi - xi_M) over LDM, xi - xi_M = xi + a/k the distance from ML: (168) for rho_1")
+d.step("third-moment", (Me, -k3 * Sq + k3 * Tb + k3 * Td, k3 * (P + P1)), "algebra",
+       uses=("third-tilt", "third-square", "third-top", "third-bottom", "bottom-triangle"), result=Me,
+       note="moment of the dry part about the vertical plane through G across the axis: columns over the dry part "
+            "of the top face of height -k xi, cut to the full height a (k xi + a = k (xi - xi_M)) over LDM")
+d.step("second-moment", (M2, k * (-Sq + Tb), k * P), "algebra", uses=("third-square", "third-top", "168"), result=M2,
+       note="second domain (one face cut): the moment of the dry part about the vertical plane through G across the "
+            "axis, columns of height -k xi over the dry part of the top face")
+d.quote("98", "X (98)", r"$$\int x y \, d f = 0$$", reading=(M2 / k, P),
+        note="the first condition (98): B below G needs this moment to vanish, i.e. P = 0")
+d.quote("118-form", "X", r"$$\int x y \, d f - \int x y \, d f = 0$$", reading=(Me / k3, P + P1),
+        note="with the x axes of the two triangles opposite the second integral is -P_1; (173) turns its y axis too")
+d.quote("173", "(173)", r"$$\int x y \cdot d f + \int x y \, d f = 0 \quad (173)$$",
+        reading=(Me / k3, P + P1), note="the first condition: the moment of the dry part, over the tilt")
+d.quote("174", "(174)",
+        r"$$\int x y \, d f = \frac{h^3 (\cos \omega - \sin \omega)}{24 \sin \omega \cdot \cos^2 \omega} \cdot "
+        r"\left\{ 2 a \cos \omega - \varrho (\cos \omega + \sin \omega) \right\} \quad (174)$$",
+        reading=(P, P168))
+d.quote("175", "(175)",
+        r"$$\int x y \cdot d f = \frac{h_1^3 \cdot (\cos \omega - \sin \omega)}{24 \cdot \sin \omega \cdot \cos^2 "
+        r"\omega} \cdot \left\{ 2 a \cos \omega - \varrho_1 (\cos \omega + \sin \omega) \right\} \quad (175)$$",
+        reading=(P1, h1_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho1 * (co + si))))
+d.quote("factor-positive", "X", "man sieht leicht ein, dass er stets positiv ist",
+        reading=(FAC, co * ((a - rho) + (a - rho * tg))),
+        note="a sum of positive terms when rho < a and rho tan w < a")
+d.quote("173-only-45", "X", r"Daher ist  $\omega = 45^\circ$  die einzige Lösung der Gleichung 173.",
+        reading=(P + P1, (co - si) * (POS + POS.subs({h_: h1_, rho: rho1}))),
+        note="sign identity: both terms are cos w - sin w times a positive factor (sign-of-P)")
+d.quote("hex-symmetric", "X",
+        "In der Gleichgewichtslage hat der sechseckige, wie der dreieckige Wasserschnitt stets eine symmetrische Lage",
+        reading=(sp.Matrix([P + P1, P]), (co - si) * sp.Matrix([POS + POS.subs({h_: h1_, rho: rho1}), POS])),
+        note="w = 45 deg on every pair of faces makes |u_x| = |u_y| = |u_z|; the search for all equilibria of the "
+             "clipped cube in the tests finds no other hexagonal or triangular one")
+
+# ==== the regular hexagon at s = 1/2 =====================================================================
+cH = 1 / r2
+d.step("hex-inertia", (Ih, 2 * sp.Integral(Y ** 2 * 2 * (cH - Y / sp.sqrt(3)), (Y, 0, sp.sqrt(3) * cH / 2)),
+                       5 * sp.sqrt(3) / 64), "integration", result=Ih,
+       note="the regular hexagon of side 1/sqrt 2 (midpoints of six edges) about a central axis")
+IH3 = sp.Piecewise(((w + sp.Rational(3, 2)) ** 2 / 2, w < -half), (sp.Rational(3, 4) - w ** 2, True))
+d.step("hex-buoyancy", (Bh, -2 * sp.Integral(w * IH3, (w, -sp.Rational(3, 2), 0)) / sp.sqrt(3), 13 * sp.sqrt(3) / 96),
+       "integration", result=Bh,
+       note="depth of B below G along the diagonal: w = X + Y + Z has the density (w + 3/2)^2/2, 3/4 - w^2 on "
+            "the cube (Irwin-Hall, centred); BG = -E[w; w < 0]/(V sqrt 3), V = 1/2")
+d.step("hex-GM", (GMh, 2 * Ih - Bh, sp.sqrt(3) / 48), "algebra", uses=("hex-inertia", "hex-buoyancy"), result=GMh)
+d.quote("hex-half", "X",
+        r"Für  $s = \frac{1}{2}$  ist das Sechseck ein regelmässiges und Schülen\*) hat bereits gezeigt, dass das "
+        r"Gleichgewicht in diesem Falle stabil ist.",
+        reading=(sp.sign(GMh), 1))
+
+
+# ==== witnesses: the clipped cube ========================================================================
+def _M(dps):
+    return math if dps <= 15 else mpmath
+
+
+def _n(v, dps):
+    v = sp.sympify(v)
+    return float(v) if dps <= 15 else mpmath.mpf(sp.N(v, dps + 20))
+
+
+def _bd(dps):
+    return None if dps <= 15 else dps + 8
+
+
+def _dot(p, q):
+    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]
+
+
+def _unit(v, M):
+    nv = M.sqrt(_dot(v, v))
+    return tuple(c / nv for c in v)
+
+
+def _dry_moment_e(av, wv, rv, kv, dps):
+    """Moment of the clipped dry part about the vertical plane through G across the axis, over the tilt: the
+    water plane through the top water line GH (leg rho at B, angle w) rising towards B with slope k."""
+    M = _M(dps)
+    A, W, R, K = (_n(q, dps) for q in (av, wv, rv, kv))
+    body = box(A, A, A, dps=_bd(dps))
+    sw, cw = M.sin(W), M.cos(W)
+    u = _unit((-K * sw, -K * cw, 1 + 0 * K), M)
+    sub = submerged(body, u, _dot(u, (A / 2 - R, A / 2, A / 2)))
+    return -sub.volume * _dot(sub.centroid, (cw, -sw, 0 * cw)) / K
+
+
+def computed(name, description, targets, cases, fn):
+    d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=fn))
+
+
+def C(label, **kw):
+    syms = {"a": a, "omega": om, "rho": rho, "rho1": rho1, "x": xl, "s": s, "L": L}
+    return Case({syms[q]: sp.Rational(v) for q, v in kw.items()}, label=label)
+
+
+FACE = (C("a = 1, omega = 0.3, rho = 0.6", a=1, omega="0.3", rho="0.6"),
+        C("a = 3/2, omega = 0.6, rho = 1/2", a="1.5", omega="0.6", rho="0.5"),
+        C("a = 1, omega = 0.7, rho = 0.9", a=1, omega="0.7", rho="0.9"))
+computed("dry-moment", "moment of the clipped dry part about the vertical plane across the axis / tan phi "
+         "(tan phi = 1/4)", ("98", "167-sum", "167", "168", "174", "diagonal-claim"),
+         FACE, lambda c, p: _dry_moment_e(c.params[a], c.params[om], c.params[rho], "0.25", p))
+def _frame_triangles(c, p):
+    """The triangle BHG in the frame of the text (origin N, x towards B, y along GH towards G), built from the
+    square's corners; returns u, v and the sub-triangles HPB, GPB."""
+    M = _M(p)
+    A, W, R = (_n(c.params[q], p) for q in (a, om, rho))
+    e, nn = (M.cos(W), -M.sin(W)), (M.sin(W), M.cos(W))
+    Hq, Gq, Bq = (A / 2 - R, A / 2), (A / 2, A / 2 - R * M.tan(W)), (A / 2, A / 2)
+    fr = lambda q: (q[0] * nn[0] + q[1] * nn[1] - (Hq[0] * nn[0] + Hq[1] * nn[1]), q[0] * e[0] + q[1] * e[1])  # noqa
+    H2, G2, B2 = fr(Hq), fr(Gq), fr(Bq)
+    P2 = (0 * A, B2[1])
+    return -H2[1], G2[1], (H2, P2, B2), (G2, B2, P2)
+
+
+def _flat(tri, p):
+    """The clipped upright prism over a triangle (counter-clockwise), floating half immersed: its waterplane."""
+    pts = list(tri)
+    if (pts[1][0] - pts[0][0]) * (pts[2][1] - pts[0][1]) - (pts[1][1] - pts[0][1]) * (pts[2][0] - pts[0][0]) < 0:
+        pts = pts[::-1]
+    return floating_state(right_prism(pts, 1, dps=_bd(p)), (0, 0, 1), 1 / (2 + 0 * pts[0][1]))
+
+
+def _int_xy(tri, p):
+    """int x y df over a triangle: central product moment plus area x centroid coordinates."""
+    st = _flat(tri, p)
+    return st.tensor[0][1] + st.waterplane_area * st.waterplane_centroid[0] * st.waterplane_centroid[1]
+
+
+computed("frame-u", "distance NH from the square's corners", ("u",), FACE, lambda c, p: _frame_triangles(c, p)[0])
+computed("frame-v", "distance NG from the square's corners", ("v",), FACE, lambda c, p: _frame_triangles(c, p)[1])
+computed("xy-HPB", "int xy df over HPB (clipped prism over the triangle)", ("HPB",), FACE,
+         lambda c, p: _int_xy(_frame_triangles(c, p)[2], p))
+computed("xy-GPB", "int xy df over GPB (clipped prism over the triangle)", ("GPB",), FACE,
+         lambda c, p: _int_xy(_frame_triangles(c, p)[3], p))
+computed("area-BHG", "area of the triangle BHG (clipped prism over it)", ("area",), FACE,
+         lambda c, p: (lambda f: _flat((f[2][0], f[3][0], f[2][2]), p).waterplane_area)(_frame_triangles(c, p)))
+computed("dry-moment-45", "the same with the axis along a face diagonal", ("170",),
+         (C("a = 1, rho = 0.6", a=1, rho="0.6"), C("a = 3/2, rho = 1/5", a="1.5", rho="0.2")),
+         lambda c, p: _dry_moment_e(c.params[a], _M(p).pi / 4, c.params[rho], "0.25", p))
+
+
+def _third(c, p):
+    M = _M(p)
+    A, W, R, R1 = (_n(c.params[q], p) for q in (a, om, rho, rho1))
+    kv = A / (A * (M.sin(W) + M.cos(W)) - (R + R1) * M.sin(W))
+    return _dry_moment_e(c.params[a], c.params[om], c.params[rho], kv, p)
+
+
+computed("dry-moment-third", "moment of the clipped dry part / tan phi, water plane through both water lines",
+         ("173", "118-form", "173-only-45"),
+         (C("a = 1, omega = 0.3, rho = 0.6, rho_1 = 0.4", a=1, omega="0.3", rho="0.6", rho1="0.4"),
+          C("a = 3/2, omega = 0.5, rho = 0.7, rho_1 = 0.9", a="1.5", omega="0.5", rho="0.7", rho1="0.9")),
+         _third)
+
+
+def _u_theta(th, M):
+    return (-M.sin(th) / M.sqrt(2), -M.sin(th) / M.sqrt(2), M.cos(th))
+
+
+def _dEdtheta(body, th, sv, M):
+    """Derivative of the clipped potential u.(G - B) along the diagonal plane: (du/dtheta).(G - B)."""
+    st = floating_state(body, _u_theta(th, M), sv)
+    du = (-M.cos(th) / M.sqrt(2), -M.cos(th) / M.sqrt(2), -M.sin(th))
+    return _dot(du, [st.G[i] - st.B[i] for i in range(3)]), st
+
+
+def _leg(body, th, sv, M):
+    """Leg of the corner triangle cut from the top face at B by the clipped water plane (negative: B dry)."""
+    st = floating_state(body, _u_theta(th, M), sv)
+    u = st.u
+    Xc = (st.t - u[1] / 2 - u[2] / 2) / u[0]
+    return 1 / (2 + 0 * Xc) - Xc
+
+
+def _illinois(f, lo, hi, eps):
+    flo, fhi = f(lo), f(hi)
+    side, c_old = 0, None
+    for _ in range(200):
+        c = (lo * fhi - hi * flo) / (fhi - flo)
+        fc = f(c)
+        if fc == 0:
+            return c
+        if (fc > 0) == (fhi > 0):
+            hi, fhi = c, fc
+            if side == -1:
+                flo /= 2
+            side = -1
+        else:
+            lo, flo = c, fc
+            if side == 1:
+                fhi /= 2
+            side = 1
+        if c_old is not None and abs(c - c_old) <= eps * (1 + abs(c)):
+            return c
+        c_old = c
+    return c
+
+
+def _roots(make, grid, dps):
+    """Every sign change of f on the float grid, refined in float64 and then (dps > 15) at dps digits."""
+    ff = make(15)
+    vals = [ff(g) for g in grid]
+    out = []
+    for i in range(len(grid) - 1):
+        if (vals[i] > 0) != (vals[i + 1] > 0):
+            x0 = _illinois(ff, grid[i], grid[i + 1], 1e-15)
+            if dps > 15:
+                fm = make(dps)
+                dl = mpmath.mpf("1e-9")
+                lo, hi = mpmath.mpf(x0) - dl, mpmath.mpf(x0) + dl
+                if (fm(lo) > 0) == (fm(hi) > 0):
+                    lo, hi = mpmath.mpf(grid[i]), mpmath.mpf(grid[i + 1])
+                x0 = _illinois(fm, lo, hi, mpmath.mpf(10) ** (-dps - 4))
+            out.append(x0)
+    return out
+
+
+TH_GRID = [0.02 * j for j in range(1, 48)]       # up to the diagonal direction atan(sqrt 2) = 0.9553
+
+
+def _cube1(dps):
+    return box(1, 1, 1, dps=_bd(dps))
+
+
+def _theta_at_leg(xv, sv, dps):
+    def make(q):
+        M, body, S, Xv = _M(q), _cube1(q), _n(sv, q), _n(xv, q)
+        return lambda th: _leg(body, th, S, M) - Xv
+    return _roots(make, TH_GRID, dps)[0]
+
+
+def _w171(c, p):
+    """(2T, z, f): moments of the dry part F of the top face (clipped upright prism over F) and the clipped
+    derivative of the potential at the orientation whose water line has leg x, times sqrt2 s z^3 sqrt(1+k^2)/(1-s)."""
+    M = _M(p)
+    xv, sv = _n(c.params[xl], p), _n(c.params[s], p)
+    hf = 1 / (2 + 0 * xv)
+    F = [(-hf, -hf), (hf, -hf), (hf, hf - xv), (hf - xv, hf), (-hf, hf)]
+    st = floating_state(right_prism(F, 1, dps=_bd(p)), (0, 0, 1), hf)
+    nrm = (1 / M.sqrt(2), 1 / M.sqrt(2))
+    dc = nrm[0] * (st.waterplane_centroid[0] - (hf - xv)) + nrm[1] * (st.waterplane_centroid[1] - hf)
+    J = st.tensor
+    T = nrm[0] ** 2 * J[0][0] + 2 * nrm[0] * nrm[1] * J[0][1] + nrm[1] ** 2 * J[1][1] + st.waterplane_area * dc ** 2
+    zz = -M.sqrt(2) * st.waterplane_area * dc
+    th = _theta_at_leg(c.params[xl], c.params[s], p)
+    g, _ = _dEdtheta(_cube1(p), th, sv, M)
+    return 2 * T, zz, M.sqrt(2) * sv * zz ** 3 * M.sqrt(1 + M.tan(th) ** 2) / (1 - sv) * g
+
+
+computed("171-clipped", "moments of the dry face part F; clipped dE/dtheta at the orientation with leg x",
+         ("171",), (C("x = 3/10, s = 77/100", x="0.3", s="0.77"), C("x = 1/2, s = 4/5", x="0.5", s="0.8"),
+                    C("x = 1/10, s = 3/4", x="0.1", s="0.75")), _w171)
+
+
+def _th_touch(body, sv, q):
+    """Tilt in the diagonal plane at which the corner B reaches the clipped water plane (leg 0)."""
+    def make(r):
+        M, bd = _M(r), (body if r == q else _cube1(r))
+        S = sv if r == q else _n(sp.nsimplify(float(sv)), r)
+        return lambda t_: _leg(bd, t_, S, M)
+    return _roots(make, [0.2 + 0.05 * j for j in range(9)], q)[0]
+
+
+def _s_touch_equilibrium(dps):
+    """Density at which the clipped equilibrium in the diagonal plane has leg 0 (nested root-finding)."""
+    def make(q):
+        M, body = _M(q), _cube1(q)
+        return lambda sv: _dEdtheta(body, _th_touch(body, sv, q), sv, M)[0]
+    return _roots(make, [0.765, 0.77, 0.775, 0.78], dps)[0]
+
+
+computed("172-clipped", "density where the clipped equilibrium in the diagonal plane has its corner B at the water",
+         ("172-number",), (Case({}, label="unit cube"),), lambda c, p: _s_touch_equilibrium(p))
+
+
+def _vertices(st, dps):
+    """Distinct vertices of the clipped waterplane polygon."""
+    eps = 1e-9 if dps <= 15 else mpmath.mpf(10) ** (-dps // 2)
+    pts = []
+    for p_ in submerged(_cube1(dps), st.u, st.t).waterplane.polygon:
+        if all(max(abs(p_[i] - q[i]) for i in range(3)) > eps for q in pts):
+            pts.append(p_)
+    return len(pts)
+
+
+def _count_at_root(sv, flip, dps):
+    """Vertices of the clipped waterplane at the orientation the root of (171) prescribes, u ~ (-p, -p, 1),
+    p = (1 - s)/z (density sv; flip: the dual position, the cube turned over at 1 - sv)."""
+    q = 1 - sv if flip else sv
+    with mpmath.workdps(max(dps, 15) + 10):
+        q = mpmath.mpf(q.p) / q.q
+        xr = mpmath.findroot(lambda t_: f_num(t_, q), (0.5, 0.6), solver="anderson")
+        pv = (1 - q) / (1 - xr + xr ** 3 / 6)
+    pv = _n(sp.Float(pv, max(dps, 15) + 10), dps)
+    u = (pv, pv, -1 + 0 * pv) if flip else (-pv, -pv, 1 + 0 * pv)
+    return _vertices(floating_state(_cube1(dps), u, _n(sv, dps)), dps)
+
+
+def f_num(xx, ss):
+    """(171), left minus right side, for numeric x, s (used to locate its roots)."""
+    T2 = mpmath.mpf(1) / 6 + (1 - xx) ** 2 - xx ** 4 / 12
+    zz = 1 - xx + xx ** 3 / 6
+    return T2 * (zz ** 2 + (1 - ss) ** 2) - zz ** 3 * (1 - xx) - zz ** 2 * (1 - ss)
+
+
+ONE = (Case({}, label="unit cube"),)
+computed("pentagon-count", "vertices of the clipped waterplane at the root of (171), s = 3/5", ("pentagon-exists",),
+         ONE, lambda c, p: _count_at_root(sp.Rational(3, 5), False, p))
+computed("pentagon-count-dual", "vertices of the clipped waterplane at the dual root, s = 2/5", ("dual-exists",),
+         ONE, lambda c, p: _count_at_root(sp.Rational(2, 5), True, p))
+
+
+def _stiffness_signs(c, p):
+    """Signs of d^2E/dtheta^2 at the clipped equilibria in the diagonal plane at s = 0.77 (first two roots)."""
+    sv = sp.Rational(77, 100)
+
+    def make(q):
+        M, body, S = _M(q), _cube1(q), _n(sv, q)
+        return lambda th: _dEdtheta(body, th, S, M)[0]
+    ths = _roots(make, [0.25 + 0.05 * j for j in range(10)], p)[:2]
+    M, body, S = _M(p), _cube1(p), _n(sv, p)
+    hh = 1e-5 if p <= 15 else mpmath.mpf("1e-12")
+    return tuple(1 if _dEdtheta(body, t_ + hh, S, M)[0] - _dEdtheta(body, t_ - hh, S, M)[0] > 0 else -1 for t_ in ths)
+
+
+computed("pentagon-stiffness", "signs of the clipped second derivative of the potential at the two pentagonal "
+         "equilibria in the diagonal plane, s = 0.77", ("pentagon-stable",), ONE, _stiffness_signs)
+
+
+def _diag_state(sv, dps):
+    return floating_state(_cube1(dps), (1, 1, 1), _n(sv, dps))
+
+
+def _below_diagonals(av, dps):
+    """Submerged volume of the clipped cube of edge av below the plane through three face diagonals at a corner."""
+    A = _n(av, dps)
+    u = _unit((1, 1, 1), _M(dps))
+    return submerged(box(A, A, A, dps=_bd(dps)), u, _dot(u, (A / 2, A / 2, -A / 2))).volume
+
+
+computed("tetra-dry", "dry volume of the clipped cube above the plane through three face diagonals",
+         ("tetra",), (C("a = 1", a=1), C("a = 3/2", a="1.5")),
+         lambda c, p: _n(c.params[a], p) ** 3 - _below_diagonals(c.params[a], p))
+computed("five-sixths", "submerged fraction of the unit cube below the plane through three face diagonals",
+         ("five-sixths",), ONE, lambda c, p: _below_diagonals(1, p))
+computed("tri-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1 - L^3/6", ("tri-unstable",),
+         (C("L = 1/2", L="0.5"), C("L = 4/5", L="0.8")),
+         lambda c, p: 1 if _diag_state(1 - c.params[L] ** 3 / 6, p).metacentric_height > 0 else -1)
+computed("diagonal-shape", "+1 if the clipped waterplane of the cube turned corner up is a hexagon, -1 if a triangle",
+         ("hex-follows",), (C("s = 4/5", s="0.8"), C("s = 9/10", s="0.9")),
+         lambda c, p: 1 if _vertices(_diag_state(c.params[s], p), p) == 6 else -1)
+computed("hex-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1/2", ("hex-half",), ONE,
+         lambda c, p: 1 if _diag_state(half, p).metacentric_height > 0 else -1)
+
+
+# ==== prediction ==========================================================================================
+S172 = (4 + math.sqrt(2)) / 7
+
+
+def _roots_171_float(q):
+    f = lambda t_: float(f_num(mpmath.mpf(t_), mpmath.mpf(q)))  # noqa: E731
+    grid = [j / 200 for j in range(1, 201)]
+    vals = [f(g) for g in grid]
+    out = []
+    for i in range(len(grid) - 1):
+        if (vals[i] > 0) != (vals[i + 1] > 0):
+            out.append(_illinois(f, grid[i], grid[i + 1], 1e-12))
+    return out
+
+
+def predict(scene):
+    """The equilibria section X predicts for the cube at density s (as printed)."""
+    if scene.body == "box" and len(set(scene.dims)) != 1:
+        return []
+    sv = scene.density
+    out = []
+    if sv > sp.Rational(5, 6) or sv < sp.Rational(1, 6):
+        out.append(Prediction(("five-sixths", "tri-symmetric", "tri-unstable"), (1.0, 1.0, 1.0), "unstable",
+                              note="triangular waterplane across a diagonal, always unstable"))
+    elif sv == sp.Rational(1, 2):
+        out.append(Prediction(("hex-symmetric", "hex-half"), (1.0, 1.0, 1.0), "stable",
+                              note="regular hexagon, stable (Schülen)"))
+    else:
+        out.append(Prediction(("hex-symmetric", "173-only-45"), (1.0, 1.0, 1.0), None,
+                              note="a hexagonal equilibrium lies across a diagonal; the text leaves its stability "
+                                   "open"))
+    if sv != sp.Rational(1, 2):
+        q = float(sv) if sv > half else 1 - float(sv)
+        names = ("171", "172", "pentagon-exists", "pentagon-stable") if sv > half else \
+            ("171", "dual-threshold", "dual-exists", "pentagon-stable")
+        for xr in _roots_171_float(q):
+            pv = (1 - q) / (1 - xr + xr ** 3 / 6)
+            up = (-pv, -pv, 1.0) if sv > half else (pv, pv, -1.0)
+            out.append(Prediction(names, up, "stable" if q < S172 else None,
+                                  note=f"pentagonal waterplane, leg x = {xr:.6f} (root of (171))"))
+    return out
+
+
+d.predicts(("cube", "box"), predict)

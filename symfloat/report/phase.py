@@ -1,0 +1,65 @@
+"""A phase diagram as JSON, as a table and as a picture."""
+from __future__ import annotations
+
+import json
+
+__all__ = ["phase_record", "phase_json", "phase_table", "phase_plot"]
+
+
+def phase_record(diagram) -> dict:
+    return {
+        "body": diagram.body, "dims": list(diagram.dims),
+        "sweep": [{"density": s, "stable": labels} for s, labels in zip(diagram.densities, diagram.stable)],
+        "thresholds": [{"density": t.density, "error": t.bracket, "position": t.label, "change": t.change,
+                        "note": t.note, "source": t.source} for t in diagram.thresholds],
+        "source_thresholds_not_found": diagram.unmatched_sources,
+        "duality_holds": diagram.duality_ok,
+        "seconds": diagram.seconds,
+    }
+
+
+def phase_json(diagram) -> str:
+    return json.dumps(phase_record(diagram), indent=2)
+
+
+def phase_table(diagram) -> str:
+    lines = [f"{diagram.body} ({','.join(diagram.dims)}): stable positions against density "
+             f"({len(diagram.densities)} densities, {diagram.seconds:.1f} s)", ""]
+    previous = None
+    for s, labels in zip(diagram.densities, diagram.stable):
+        if labels != previous:
+            lines.append(f"  from s = {s:.4f}: {'; '.join(labels)}")
+            previous = labels
+    lines += ["", "thresholds (bisection with tracking; ± = error bound):"]
+    for t in diagram.thresholds:
+        src = "; ".join(f"{k['derivation']} {', '.join(k['locators'])}"
+                        + (f" {k['expression']}" if k["expression"] else "") + f" = {k['value']:.13f}"
+                        for k in t.source) or "no source prints this threshold"
+        note = f" ({t.note})" if t.note else ""
+        lines.append(f"  s = {t.density:.13f} ± {t.bracket:.0e}  {t.label}: {t.change}{note}  [{src}]")
+    for k in diagram.unmatched_sources:
+        lines.append(f"  DISAGREEMENT: {k['derivation']} {', '.join(k['locators'])} puts a threshold at s = "
+                     f"{k['value']:.13f} ({k['label']}: {k['change']}); the solver finds none there")
+    lines.append("")
+    lines.append("duality s <-> 1 - s: " + ("holds on the sweep" if diagram.duality_ok else "VIOLATED"))
+    return "\n".join(lines)
+
+
+def phase_plot(diagram, path) -> None:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    labels = sorted({label for row in diagram.stable for label in row})
+    fig, ax = plt.subplots(figsize=(8, 0.5 * len(labels) + 1.8))
+    for y, label in enumerate(labels):
+        xs = [s for s, row in zip(diagram.densities, diagram.stable) if label in row]
+        ax.scatter(xs, [y] * len(xs), s=14)
+    for t in diagram.thresholds:
+        ax.axvline(t.density, color="0.6", linewidth=0.6, linestyle="--")
+    ax.set_yticks(range(len(labels)), labels, fontsize=8)
+    ax.set_xlim(0, 1)
+    ax.set_xlabel("density s (water = 1)")
+    ax.set_title(f"{diagram.body} ({','.join(diagram.dims)}): stable positions; dashed = thresholds", fontsize=9)
+    fig.savefig(path, dpi=110, bbox_inches="tight")
+    plt.close(fig)

@@ -1,0 +1,133 @@
+"""A scene's answer as JSON (the design brief's contract), as a table, and as a picture."""
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+
+__all__ = ["scene_record", "scene_json", "scene_table", "scene_plot"]
+
+
+def _dims(scene):
+    if scene.body == "section":
+        return [[float(x), float(y)] for x, y in scene.polygon]
+    return [float(d) for d in scene.dims]
+
+
+def scene_record(solution, evaluated, unmatched, seconds) -> dict:
+    sc = solution.scene
+    return {
+        "body": sc.body,
+        "dims": _dims(sc),
+        **({"sides": sc.sides} if sc.sides else {}),
+        "density": float(sc.density),
+        "density_exact": str(sc.density),
+        "equilibria": [{
+            "up": [round(x, 15) for x in e.up],
+            "tilt_deg": round(e.tilt_deg, 12),
+            "stability": e.stability,
+            "family": e.family,
+            **({"ring_shape": e.ring_shape, "ring_length_rad": e.ring_length} if e.family == "ring" else {}),
+            "potential": e.potential,
+            "waterplane": e.waterplane,
+            "formulas": e.formulas,
+            "predictions": e.predictions,
+            "metacentric_eigenvalues": list(e.eigenvalues),
+            "error_rad": e.error_rad,
+            "copies": e.copies,
+        } for e in solution.equilibria],
+        "unmatched_predictions": unmatched,
+        "disagreements": sum(not p["agrees"] for e in solution.equilibria for p in e.predictions) + len(unmatched),
+        "checks": solution.checks,
+        "derivations_evaluated": evaluated,
+        "seconds": {"solver": solution.seconds, "total": seconds},
+    }
+
+
+def scene_json(record) -> str:
+    return json.dumps(record, indent=2)
+
+
+def scene_table(record) -> str:
+    dims = (" ".join(",".join(f"{c:g}" for c in p) for p in record["dims"]) if record["body"] == "section"
+            else ",".join(f"{d:g}" for d in record["dims"]))
+    sides = f", {record['sides']} sides" if record.get("sides") else ""
+    lines = [f"{record['body']} ({dims}{sides}) at density {record['density_exact']}: "
+             f"{len(record['equilibria'])} equilibria (one per symmetry class)", "",
+             f"{'up (body frame)':<34} {'tilt':>9} {'stability':<12} {'family':<9} {'G above B':>12} "
+             f"{'waterplane':<18} {'error':>8}  formulas"]
+    for e in record["equilibria"]:
+        up = "(" + ", ".join(f"{x:+.6f}" for x in e["up"]) + ")"
+        formulas = []
+        for p in e["predictions"]:
+            mark = "agrees" if p["agrees"] else "DISAGREES: " + p["disagreement"]
+            formulas.append(f"{p['derivation']} {', '.join(p['locators'])} ({mark})")
+        family = e["family"] if e["family"] != "ring" else ("ring" if e["ring_shape"] == "closed" else "arc")
+        lines.append(f"{up:<34} {e['tilt_deg']:>8.4f}° {e['stability']:<12} {family:<9} "
+                     f"{e['potential']:>12.9f} {e['waterplane']:<18} {e['error_rad']:>8.1e}  "
+                     + ("; ".join(formulas) or "-"))
+    for p in record["unmatched_predictions"]:
+        lines.append(f"DISAGREEMENT: {p['derivation']} {', '.join(p['locators'])} predicts an equilibrium at up "
+                     f"{[round(x, 6) for x in p['predicted_up']]} ({p['predicted_stability']}); "
+                     f"{p['disagreement']}")
+    lines.append("")
+    lines.append(f"derivations evaluated: {', '.join(record['derivations_evaluated']) or 'none'}; "
+                 f"checks {record['checks']}; {record['seconds']['total']:.2f} s")
+    return "\n".join(lines)
+
+
+def _rotation_to_up(u) -> np.ndarray:
+    """A rotation taking the body-frame vector *u* to the vertical (0, 0, 1)."""
+    u = np.asarray(u, dtype=float)
+    z = np.array([0.0, 0.0, 1.0])
+    v, c = np.cross(u, z), float(np.dot(u, z))
+    if np.linalg.norm(v) < 1e-15:
+        return np.eye(3) if c > 0 else np.diag([1.0, -1.0, -1.0])
+    k = np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+    return np.eye(3) + k + k @ k / (1 + c)
+
+
+def scene_plot(solution, path) -> None:
+    """One panel per stable equilibrium: the body turned so that ``up`` is vertical, the water
+    plane shaded and the part below it drawn darker."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    from ..geometry.floating import clip_below, draught
+    from ..solver.bodies import polyhedron
+    from ..solver.cylinder import cylinder_slice
+
+    scene = solution.scene
+    stable = [e for e in solution.equilibria if e.stability == "stable"] or solution.equilibria
+    fig = plt.figure(figsize=(4 * len(stable), 4.2))
+    for i, e in enumerate(stable, 1):
+        ax = fig.add_subplot(1, len(stable), i, projection="3d")
+        if scene.body == "cylinder":
+            from ..geometry.floating import regular_prism
+            r, L = (float(x) for x in scene.dims)
+            poly = regular_prism(64, 2 * r * math.sin(math.pi / 64), L)
+            t = float(cylinder_slice(r, L, math.radians(e.tilt_deg), float(scene.density)).t)
+        else:
+            poly = polyhedron(scene)
+            t = draught(poly, e.up, scene.density)[0]
+        R = _rotation_to_up(e.up)
+        lift = np.array([0.0, 0.0, -float(t)])
+        body = [[R @ np.array([float(c) for c in p]) + lift for p in ring] for ring in poly.faces]
+        wet = [[R @ np.array([float(c) for c in p]) + lift for p in ring]
+               for ring in clip_below(poly, e.up, t).faces]
+        ax.add_collection3d(Poly3DCollection(body, facecolor=(0.8, 0.8, 0.8, 0.25), edgecolor="0.3", linewidth=0.5))
+        ax.add_collection3d(Poly3DCollection(wet, facecolor=(0.2, 0.4, 0.8, 0.45), edgecolor="none"))
+        pts = np.array([p for ring in body for p in ring])
+        span = float(np.max(np.abs(pts))) * 1.1
+        for setter in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
+            setter(-span, span)
+        xx, yy = np.meshgrid([-span, span], [-span, span])
+        ax.plot_surface(xx, yy, np.zeros_like(xx), color=(0.3, 0.6, 1.0), alpha=0.15)
+        ax.set_title(f"{e.family} tilt {e.tilt_deg:.2f}°\n{e.waterplane} waterplane", fontsize=9)
+        ax.set_axis_off()
+    fig.suptitle(f"{scene.body} at density {scene.density}: stable positions", fontsize=10)
+    fig.savefig(path, dpi=110, bbox_inches="tight")
+    plt.close(fig)

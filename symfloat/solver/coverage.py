@@ -1,0 +1,128 @@
+"""Which printed formulas predict each equilibrium of a scene, and whether they agree.
+
+The derivations that speak about a body are found without importing every
+module: each registers ``d.predicts((bodies...), predict)`` with a literal
+tuple, which is read from the module's source (:func:`predicting`).  Only
+those derivations and their ancestors are evaluated (checked, or taken from
+the cache).  A prediction *agrees* when the solver found an equilibrium in its
+symmetry class (within ``MATCH_RAD``) with the predicted stability; a
+prediction without a matching equilibrium is a disagreement of its own.
+"""
+from __future__ import annotations
+
+import ast
+import math
+from functools import cache
+from pathlib import Path
+
+import numpy as np
+
+import derivations
+
+from ..engine.cache import ReportCache
+from ..engine.runner import verify
+from ..model.prediction import Scene
+from ..registry import load, module_names
+from .bodies import centred_polygon, polyhedron
+from .local import local
+from .solve import Solution, body_scale
+from .symmetry import box_group, planar_group, prism_group
+
+__all__ = ["predicting", "cover"]
+
+MATCH_RAD = 1e-6
+
+
+@cache
+def _declared_bodies(module: str) -> tuple[str, ...]:
+    """The literal bodies of ``*.predicts((...), ...)`` in a derivation module's source."""
+    tree = ast.parse(Path(derivations.__path__[0], module + ".py").read_text(encoding="utf-8"))
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr == "predicts" \
+                and node.args:
+            try:
+                return tuple(ast.literal_eval(node.args[0]))
+            except ValueError:
+                raise RuntimeError(f"{module}: the bodies of predicts(...) must be a literal tuple") from None
+    return ()
+
+
+def predicting(body: str) -> list[str]:
+    """Ids of the derivations that predict equilibria of *body*."""
+    return [m.replace("_", "-") for m in module_names() if body in _declared_bodies(m)]
+
+
+def _group(scene: Scene):
+    if scene.body in ("cube", "box"):
+        return box_group(scene.dims)
+    if scene.body == "prism":
+        return prism_group(scene.sides)
+    if scene.body == "section":
+        return planar_group(centred_polygon(scene))
+    return [np.diag(d) for d in ((1, 1, 1), (1, -1, 1), (-1, 1, 1), (-1, -1, 1),
+                                 (1, 1, -1), (1, -1, -1), (-1, 1, -1), (-1, -1, -1))]
+
+
+def _distance(scene, group, predicted, eq) -> float:
+    """Angle (radians) between a predicted up vector and an equilibrium's class."""
+    u = np.asarray(predicted, dtype=float)
+    u = u / np.linalg.norm(u)
+    if scene.body == "cylinder":
+        tilt = math.acos(min(1.0, abs(u[2])))
+        return abs(tilt - math.radians(eq.tilt_deg))
+    v = np.asarray(eq.up)
+    return min(math.acos(max(-1.0, min(1.0, float(np.dot(g @ u, v))))) for g in group)
+
+
+def _on_ring(scene, predicted, eq) -> bool:
+    """Whether the predicted up vector is an equilibrium with the ring's potential."""
+    poly = polyhedron(scene)
+    loc = local(poly, np.asarray(predicted, dtype=float) / np.linalg.norm(predicted), scene.density)
+    scale = body_scale(scene)
+    return np.linalg.norm(loc.gradient) <= 1e-7 * scale and abs(loc.U - eq.potential) <= 1e-7 * scale
+
+
+def cover(solution: Solution, cache: ReportCache | None = None) -> tuple[list[str], list[dict]]:
+    """Attach the predicting formulas to *solution*'s equilibria; returns the derivations
+    evaluated and the predictions that match no equilibrium."""
+    scene = solution.scene
+    ids = predicting(scene.body)
+    evaluated, reports = [], {}
+    for did in ids:
+        for report in verify(did, cache=cache):
+            if report.id not in reports:
+                evaluated.append(report.id)
+                reports[report.id] = report
+    group = _group(scene)
+    unmatched = []
+    for did in ids:
+        d, _ = load(did)
+        verdicts = {f.id: f for f in reports[did].formulas}
+        for pred in d.predictor.predict(scene):
+            printed = [p for p in d.printed if p.name in pred.printed]
+            entry = {"derivation": did, "printed": [d.formula_id(p) for p in printed],
+                     "locators": sorted({p.locator for p in printed}),
+                     "verdicts": sorted({verdicts[d.formula_id(p)].verdict for p in printed}),
+                     "predicted_up": [float(x) for x in pred.up], "predicted_stability": pred.stability,
+                     "predicted_family": pred.family, "note": pred.note}
+            best = min(solution.equilibria, key=lambda e: _distance(scene, group, pred.up, e), default=None)
+            match = None
+            if best is not None:
+                if _distance(scene, group, pred.up, best) <= MATCH_RAD:
+                    match = best
+                else:
+                    rings = [e for e in solution.equilibria if e.family == "ring" and _on_ring(scene, pred.up, e)]
+                    match = rings[0] if rings else None
+            if match is None:
+                entry["agrees"] = False
+                entry["disagreement"] = "the solver finds no equilibrium there"
+                unmatched.append(entry)
+                continue
+            entry["agrees"] = pred.stability is None or pred.stability == match.stability
+            if not entry["agrees"]:
+                entry["disagreement"] = f"predicted {pred.stability}, the solver finds {match.stability}"
+            match.predictions.append(entry)
+            for loc in entry["locators"]:
+                if loc not in match.formulas:
+                    match.formulas.append(loc)
+    return evaluated, unmatched

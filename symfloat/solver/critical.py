@@ -1,0 +1,225 @@
+"""Every critical point of the potential of a floating polyhedron, by Newton's method on the sphere.
+
+Seeds cover the symmetry group's fundamental domain; Newton's method with the
+metacentric Hessian (:mod:`symfloat.solver.local`) converges from each seed to
+a minimum, saddle or maximum.  Points are merged by symmetry class.  A point
+whose Hessian has a (numerically) zero eigenvalue is tested for a *ring*: a
+step along the null direction followed by Newton lands on another equilibrium
+of the same potential.  Completeness is checked by the Poincaré–Hopf theorem:
+over the whole sphere the indices of the isolated critical points (+1 for
+minima and maxima, -1 for saddles) add up to 2, and a Morse–Bott ring adds 0.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import mpmath
+import numpy as np
+
+from ..geometry.floating import Polyhedron
+from .errors import STEP, equilibrium_error
+from .local import gradient_at, local, tangent_step
+from .symmetry import orbit, representative, same_class
+
+__all__ = ["Critical", "newton", "critical_points", "poincare_hopf_sum"]
+
+MAX_STEP = 0.3          # radians: Newton steps are capped (a trust region)
+FLAT = 2e-14            # relative to the size of the body: a ring's potential is constant to rounding
+ZERO_EIGEN = 1e-8       # relative to the size of the body: a null direction of the Hessian
+
+
+@dataclass(eq=False)
+class Critical:
+    """One symmetry class of critical points: representative ``u``, potential ``U``,
+    Hessian eigenvalues ``eigen`` (ascending) and eigenvectors, residual gradient,
+    error bound ``error_rad`` and how it was obtained, the Hessian's Lipschitz constant,
+    ``orbit`` size, ``ring`` flag."""
+    u: np.ndarray
+    U: float
+    eigen: tuple
+    vectors: np.ndarray
+    gradient: float
+    error_rad: float
+    orbit: int = 1
+    ring: bool = False
+    shape: str = ""             # a ring's shape: "closed" or "arc"
+    length: float = 0.0         # a ring's length on the unit sphere (radians)
+    error_method: str = "exact"
+    lipschitz: float = 0.0
+
+
+def newton(poly: Polyhedron, u0, s, scale: float, iterations: int = 60, null_tol: float | None = None):
+    """Newton's method for ``grad U = 0`` from *u0*; returns the last :class:`Local` and
+    whether the gradient fell below ``1e-13 * scale``.  Null directions of the Hessian
+    (``|lambda| < null_tol``) are left alone (pseudo-inverse), so a ring is approached
+    straight across."""
+    null_tol = ZERO_EIGEN * scale if null_tol is None else null_tol
+    u = np.asarray(u0, dtype=float)
+    u = u / np.linalg.norm(u)
+    best = None
+    for _ in range(iterations):
+        loc = local(poly, u, s)
+        g = loc.gradient
+        if best is None or np.linalg.norm(g) < np.linalg.norm(best.gradient):
+            best = loc
+        if np.linalg.norm(g) <= 1e-13 * scale:
+            return loc, True
+        w, vecs = np.linalg.eigh(loc.hessian)
+        step2 = np.zeros(2)
+        for lam, v in zip(w, vecs.T):
+            if abs(lam) > null_tol:
+                step2 -= np.dot(v, g) / lam * v
+        if not np.linalg.norm(step2) > 0:
+            step2 = -g / scale
+        step = loc.basis @ step2
+        norm = np.linalg.norm(step)
+        if norm > MAX_STEP:
+            step *= MAX_STEP / norm
+        if norm < 1e-15:
+            break
+        u = tangent_step(loc.u, step)
+    return best, np.linalg.norm(best.gradient) <= 1e-11 * scale
+
+
+def _tangent_eigen(loc):
+    """The two eigenpairs ``(lambda, tangent vector)`` of the Hessian, ascending."""
+    w, vecs = loc.eigen()
+    return list(zip(w, vecs))
+
+
+def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int) -> tuple[float, str, float]:
+    """Distance bound (radians) to the true equilibrium (:func:`equilibrium_error`): the gradient
+    re-evaluated at *refine_dps* digits, the smallest Hessian eigenvalue, and the Hessian's
+    Lipschitz constant from central differences along the two eigenvectors."""
+    exact = Polyhedron(_faces_at(poly, refine_dps), refine_dps)
+    residual = float(np.linalg.norm(gradient_at(exact, c.u, s)))
+    lipschitz = 0.0
+    for v in c.vectors:
+        plus, minus = (local(poly, tangent_step(np.asarray(c.u), sign * STEP * v), s) for sign in (1, -1))
+        H = [x.basis @ x.hessian @ x.basis.T for x in (plus, minus)]
+        lipschitz = max(lipschitz, float(np.linalg.norm(H[0] - H[1], 2)) / (2 * STEP))
+    return (*equilibrium_error(residual, min(abs(e) for e in c.eigen), lipschitz, scale), lipschitz)
+
+
+def _faces_at(poly, dps):
+    with mpmath.workdps(dps):
+        return tuple(tuple(tuple(mpmath.mpf(x) for x in p) for p in ring) for ring in poly.faces)
+
+
+def poincare_hopf_sum(points: list[Critical]) -> int:
+    """Sum of indices over the whole sphere (rings count 0); 2 when no critical point is missing."""
+    total = 0
+    for c in points:
+        if c.ring:
+            continue
+        lam1, lam2 = c.eigen
+        total += c.orbit * (1 if lam1 * lam2 > 0 else -1)
+    return total
+
+
+def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
+    """Step along the null direction (by less than the distance to the nearest symmetric copy of
+    the point, so a small ring around an axis is not jumped over) and let Newton settle: on a
+    ring it lands on another equilibrium of the same potential, not in the same class."""
+    lam_null, v_null = min(pairs, key=lambda p: abs(p[0]))
+    if abs(lam_null) > 1e-6 * scale:
+        return False
+    copies = [g @ loc.u for g in group]
+    nearest = min((math.acos(max(-1.0, min(1.0, float(np.dot(c, loc.u))))) for c in copies
+                   if np.linalg.norm(c - loc.u) > 1e-12), default=math.pi)
+    delta = min(0.03, nearest / 4)
+    for step in (delta, -delta):
+        moved = tangent_step(loc.u, step * v_null)
+        other, ok = newton(poly, moved, s, scale)
+        if ok and np.linalg.norm(other.u - loc.u) > delta / 3 and abs(other.U - loc.U) <= FLAT * scale \
+                and not same_class(other.u, loc.u, group, delta / 10):
+            return True
+    return False
+
+
+def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, float]:
+    """Walk along a ring from *u* (steps along the null direction, Newton across) and return
+    ``("closed", length)`` when the walk comes back to *u*, else ``("arc", length)`` with the
+    length (radians on the sphere) of the arc, both directions summed."""
+    start = local(poly, u, s)
+    copies = [g @ start.u for g in group]
+    nearest = min((math.acos(max(-1.0, min(1.0, float(np.dot(c, start.u))))) for c in copies
+                   if np.linalg.norm(c - start.u) > 1e-12), default=math.pi)
+    delta = min(0.005, nearest / 4)      # a gap in the family narrower than this is not seen
+    total = 0.0
+    for direction in (1, -1):
+        loc, previous = start, None
+        for _ in range(max_steps):
+            pairs = _tangent_eigen(loc)
+            v = min(pairs, key=lambda p: abs(p[0]))[1]
+            if previous is not None and np.dot(v, loc.u - previous) < 0:
+                v = -v
+            elif previous is None:
+                v = direction * v
+            nxt, ok = newton(poly, tangent_step(loc.u, delta * v), s, scale)
+            moved = float(np.linalg.norm(nxt.u - loc.u))
+            if not ok or abs(nxt.U - start.U) > FLAT * scale or moved < delta / 3 \
+                    or min(abs(p[0]) for p in _tangent_eigen(nxt)) > 1e-6 * scale:
+                break
+            previous, loc = loc.u, nxt
+            total += moved
+            if total > 2 * delta and np.linalg.norm(loc.u - start.u) < delta / 2:
+                return "closed", total
+    return "arc", total
+
+
+def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps: int = 30) -> list[Critical]:
+    """Every symmetry class of critical points reached by Newton from *seeds*, sorted by potential."""
+    found: list[Critical] = []
+    for seed in seeds:
+        loc, ok = newton(poly, seed, s, scale)
+        if not ok:
+            continue
+        pairs = _tangent_eigen(loc)
+        eigen = (float(pairs[0][0]), float(pairs[1][0]))
+        lam_min = min(abs(e) for e in eigen)
+        near = [c for c in found if c.ring and abs(c.U - loc.U) <= 1e-10 * scale and lam_min < 1e-6 * scale]
+        if near:
+            continue
+        ring = lam_min < 1e-6 * scale and _is_ring(poly, loc, pairs, s, scale, group)
+        g = float(np.linalg.norm(loc.gradient))
+        err = 0.0 if ring else min(g / max(lam_min, 1e-300), (g / scale) ** (1 / 3))
+        match = [c for c in found if not c.ring and same_class(c.u, loc.u, group, 1e-7 + 2 * (err + c.error_rad))]
+        if match and not ring and match[0].gradient <= g:
+            continue
+        found = [c for c in found if not any(c is m for m in match)]
+        found.append(Critical(representative(loc.u, group), loc.U, eigen,
+                              np.stack([p[1] for p in pairs]), g, err, len(orbit(loc.u, group)), ring))
+    for c in found:
+        if c.ring:
+            c.shape, c.length = trace_family(poly, c.u, s, scale, group)
+            c.ring = c.length > 0          # a "ring" the walk cannot follow is an isolated degenerate point
+        if not c.ring:
+            c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps)
+    # a point of a ring found before the ring was recognised: same potential, not an equilibrium
+    # that symmetry fixes (its residual is not exactly zero), no decided second variation
+    rings = [c for c in found if c.ring]
+    found = [c for c in found if c.ring or c.error_method != "near-bifurcation estimate"
+             or not any(abs(c.U - r.U) <= 1e-10 * scale for r in rings)]
+    found.sort(key=lambda c: (round(c.U / scale, 12), -c.u[2], -c.u[0], -c.u[1]))
+    return found
+
+
+def distinct_seeds(seeds, group) -> list[np.ndarray]:
+    """One seed per symmetry class (seeds in one class lead to one class of critical points)."""
+    return list({tuple(np.round(representative(u, group), 9)): u for u in seeds}.values())
+
+
+def sphere_seeds(theta_steps: int, phi_max: float, phi_steps: int) -> list[np.ndarray]:
+    """Seeds on the spherical patch ``0 <= theta <= pi/2`` (from +z), ``0 <= phi <= phi_max``,
+    including its edges and corners."""
+    seeds = []
+    for i in range(theta_steps + 1):
+        theta = math.pi / 2 * i / theta_steps
+        count = 1 if i == 0 else phi_steps
+        for j in range(count + 1 if i else 1):
+            phi = phi_max * j / max(count, 1)
+            seeds.append(np.array([math.sin(theta) * math.cos(phi), math.sin(theta) * math.sin(phi),
+                                   math.cos(theta)]))
+    return seeds

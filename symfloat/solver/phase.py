@@ -1,0 +1,254 @@
+"""Phase diagrams: the stable positions of a cube or box against the density.
+
+The sweep solves the scene at densities ``s_k = k / (steps + 1)``; between
+neighbours whose sets of stable positions differ, each threshold is located
+by bisection on the density with the position *tracked* (Newton's method from
+the last stable point): the predicate "the tracked equilibrium exists and is
+stable" flips exactly at the threshold, so the bracket shrinks to ``1e-13``.
+The thresholds are then compared with the closed forms the sources print.
+Boxes are centrally symmetric, so the stable set at ``1 - s`` is the stable
+set at ``s`` turned upside down; the sweep still solves both halves (the
+duality is checked, not assumed).
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import numpy as np
+import sympy as sp
+
+from ..geometry.floating import box
+from .bodies import make_scene
+from .critical import newton
+from .solve import body_scale, solve
+from .symmetry import box_group, representative
+
+__all__ = ["Threshold", "PhaseDiagram", "phase_diagram", "position_label", "source_thresholds"]
+
+BRACKET = 1e-13
+RING_ERROR = 1e-6       # stated error of a threshold where a ring or arc of equilibria ends
+
+
+def position_label(up, family: str) -> str:
+    """A name for a position class that does not change along a branch: which components of the
+    (representative) up vector vanish or are equal; a ring (closed or an arc) by its axis."""
+    u = [abs(x) for x in up]
+    nonzero = [i for i in range(3) if u[i] > 1e-9]
+    axes = "".join("xyz"[i] for i in nonzero)
+    if family == "ring":
+        return f"ring around {'xyz'[int(np.argmax(u))]}"
+    if len(nonzero) == 1:
+        return f"face {axes} up"
+    values = [u[i] for i in nonzero]
+    equal = max(values) - min(values) <= 1e-9
+    if len(nonzero) == 2:
+        return f"edge up ({axes})" if equal else f"tilted in the {axes[0]}-{axes[1]} plane"
+    if equal:
+        return "corner up"
+    pairs = [(i, j) for i in range(3) for j in range(i + 1, 3) if abs(u[i] - u[j]) <= 1e-9]
+    return f"tilted, |u_{'xyz'[pairs[0][0]]}| = |u_{'xyz'[pairs[0][1]]}|" if pairs else "tilted (general)"
+
+
+@dataclass
+class Threshold:
+    density: float
+    bracket: float
+    label: str
+    change: str                 # "stable below" or "stable above"
+    source: list = field(default_factory=list)
+    note: str = ""
+    tilt: float = math.inf      # a ring's last tracked point: its tilt from the nearest axis
+
+
+@dataclass
+class PhaseDiagram:
+    body: str
+    dims: tuple
+    densities: list
+    stable: list                # per density: sorted labels of the stable positions
+    thresholds: list
+    unmatched_sources: list     # source thresholds the solver does not find
+    duality_ok: bool
+    seconds: float
+
+
+def _stable(scene):
+    sol = solve(scene)
+    return {position_label(e.up, e.family): e for e in sol.equilibria if e.stability == "stable"}
+
+
+def _tracked_stable(poly, group, u, s, label, family, scale) -> tuple[bool, np.ndarray]:
+    """Whether the equilibrium tracked from *u* exists at density *s*, keeps its label and is
+    stable.  The sign of the second variation decides (no indifference band), so the predicate
+    flips at the threshold itself.  A ring must stay a ring: off every axis, one null direction,
+    positive across."""
+    loc, ok = newton(poly, u, s, scale)
+    if not ok:
+        return False, u
+    w = sorted(loc.eigen()[0], key=abs)
+    if family == "ring":
+        tilted = position_label(loc.u, "isolated").startswith("tilted")
+        off_axis = min(np.linalg.norm(np.abs(loc.u) - e) for e in np.eye(3)) > 1e-6
+        return tilted and off_axis and w[1] > 0 and abs(w[0]) < 1e-6 * scale, loc.u
+    return position_label(loc.u, family) == label and min(w) > 0, loc.u
+
+
+def _locate(poly, group, scale, label, eq, s_in, s_out) -> tuple[float, float, float]:
+    """Bisection between *s_in* (label stable) and *s_out* (not) with tracking; returns the
+    threshold, the half-width of the bracket and, for a ring, the tilt of its last point from the
+    nearest axis (a ring born from an axis has a tilt near zero there)."""
+    u = np.array(eq.up)
+    lo, hi = s_in, s_out
+    while abs(hi - lo) > BRACKET:
+        mid = (lo + hi) / 2
+        ok, u_mid = _tracked_stable(poly, group, u, mid, label, eq.family, scale)
+        if ok:
+            lo, u = mid, u_mid
+        else:
+            hi = mid
+    err = abs(hi - lo) / 2
+    tilt = min(math.acos(min(1.0, abs(float(x)))) for x in u) if eq.family == "ring" else math.inf
+    return (lo + hi) / 2, err, tilt
+
+
+def _predicted_stable(d, scene, group) -> dict:
+    """Label -> locators of the positions the derivation *d* predicts stable at this scene."""
+    out = {}
+    for p in d.predictor.predict(scene):
+        if p.stability != "stable":
+            continue
+        label = position_label(representative(np.asarray(p.up, dtype=float) / np.linalg.norm(p.up), group), p.family)
+        out.setdefault(label, set()).update(x.locator for x in d.printed if x.name in p.printed)
+    return out
+
+
+def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
+    """Densities where the printed formulas change their predicted set of stable positions: each
+    ``{"value", "label", "change", "locators", "derivation", "expression"}``.  Found on the
+    predictors (:mod:`symfloat.model.prediction`) by a sweep and bisection to ``1e-15``; the
+    printed closed form is named where a derivation's result gives it (``expression``)."""
+    from ..registry import load
+    from .coverage import predicting
+    group = box_group(dims)
+    closed = _closed_forms()
+    out = []
+    for did in predicting(body):
+        d, _ = load(did)
+        at = lambda s: _predicted_stable(d, make_scene(body, s, dims), group)
+        densities = [Fraction(k, grid) for k in range(1, grid)]
+        states = [at(s) for s in densities]
+        for k in range(len(densities) - 1):
+            for label in sorted(set(states[k]) ^ set(states[k + 1])):
+                inside = label in states[k]
+                lo, hi = densities[k], densities[k + 1]
+                while float(hi - lo) > 1e-15:
+                    mid = (lo + hi) / 2
+                    mid = Fraction(mid).limit_denominator(10 ** 18)
+                    if (label in at(mid)) == inside:
+                        lo = mid
+                    else:
+                        hi = mid
+                value = float((lo + hi) / 2)
+                locators = sorted(states[k].get(label, set()) | states[k + 1].get(label, set()))
+                expression = next((e for v, e in closed if abs(v - value) <= 1e-12), "")
+                same = [o for o in out if o["derivation"] == did and o["label"] == label
+                        and abs(o["value"] - value) <= 1e-13]
+                if same:
+                    same[0]["locators"] = sorted(set(same[0]["locators"]) | set(locators))
+                    continue
+                out.append({"value": value, "label": label, "change": "stable below" if inside else "stable above",
+                            "locators": locators, "derivation": did, "expression": expression})
+    return out
+
+
+def _closed_forms() -> list[tuple[float, str]]:
+    """Closed-form thresholds the derivations establish as results (value, expression)."""
+    from ..registry import load
+    d, _ = load("scheeffer-vi-cf")
+    out = []
+    for symbol, value in d.results().items():
+        if str(symbol) in ("s_-", "s_+", "s_80-", "s_80+", "s_e-", "s_e+"):
+            out.append((float(sp.N(value, 30)), str(sp.nsimplify(value))))
+    return out
+
+
+def _thresholds_between(poly, group, scale, a, b, sa, sb) -> list[Threshold]:
+    """Thresholds between two densities whose stable sets *a* and *b* differ."""
+    out = []
+    for label, side, (s_in, s_out) in [(x, "stable below", (sa, sb)) for x in sorted(set(a) - set(b))] + \
+                                      [(x, "stable above", (sb, sa)) for x in sorted(set(b) - set(a))]:
+        eq = (a if side == "stable below" else b)[label]
+        value, err, tilt = _locate(poly, group, scale, label, eq, s_in, s_out)
+        t = Threshold(value, err, label, side)
+        t.tilt = tilt
+        out.append(t)
+    return out
+
+
+def _annotate_families(thresholds) -> None:
+    for t in thresholds:
+        if not t.label.startswith("ring") or t.note:
+            continue
+        parents = [p for p in thresholds if p.label.startswith("face") and abs(p.density - t.density) <= 1e-6]
+        if t.tilt < 1e-2 and parents:
+            # a ring collapsing onto an axis is born where that position changes stability (a
+            # pitchfork); Newton cannot follow it into the quartic potential, so take the axis's value
+            t.density, t.bracket = parents[0].density, parents[0].bracket
+            t.note = f"born from the position '{parents[0].label}' (pitchfork)"
+        else:
+            # where a family shrinks to a point, its null direction and the Newton tolerance blur the
+            # predicate: the bisection bracket is not the error
+            t.bracket = max(t.bracket, RING_ERROR)
+            t.note = "end of a family of equilibria: error estimated, not bounded"
+
+
+def phase_diagram(body: str, dims=None, steps: int = 48, progress=None) -> PhaseDiagram:
+    """The stable positions on a sweep of *steps* densities, every threshold located, and the
+    thresholds of the sources: each one the sweep missed (outside it, or a window narrower than
+    its spacing) is looked for at the source's density +- 1e-6 before it is called a disagreement."""
+    start = time.perf_counter()
+    base = make_scene(body, "1/2", dims)
+    poly = box(*base.dims)
+    group = box_group(base.dims)
+    scale = body_scale(base)
+    densities = [Fraction(k, steps + 1) for k in range(1, steps + 1)]
+    stable = []
+    for i, s in enumerate(densities, 1):
+        if progress:
+            progress(f"[{i}/{len(densities)}] density {float(s):.4f}")
+        stable.append(_stable(make_scene(body, s, base.dims)))
+    thresholds = []
+    for k in range(len(densities) - 1):
+        if set(stable[k]) != set(stable[k + 1]):
+            thresholds += _thresholds_between(poly, group, scale, stable[k], stable[k + 1],
+                                              float(densities[k]), float(densities[k + 1]))
+    known = source_thresholds(body, base.dims)
+
+    def matches(k, t):
+        return abs(k["value"] - t.density) <= max(1e-9, 2 * t.bracket) and k["label"] == t.label
+
+    for k in known:
+        if any(matches(k, t) for t in thresholds):
+            continue
+        sa, sb = Fraction(k["value"] - 1e-6), Fraction(k["value"] + 1e-6)
+        if not 0 < sa < sb < 1:
+            continue
+        if progress:
+            progress(f"looking at the source's threshold {k['value']:.6f} ({', '.join(k['locators'])})")
+        a, b = _stable(make_scene(body, sa, base.dims)), _stable(make_scene(body, sb, base.dims))
+        new = _thresholds_between(poly, group, scale, a, b, float(sa), float(sb))
+        thresholds += [t for t in new if not any(abs(t.density - u.density) <= 1e-9 and t.label == u.label
+                                                 for u in thresholds)]
+    _annotate_families(thresholds)
+    for t in thresholds:
+        t.source = [k for k in known if matches(k, t)]
+    matched = {id(k) for t in thresholds for k in t.source}
+    unmatched = [k for k in known if id(k) not in matched]
+    labels = [sorted(x) for x in stable]
+    duality_ok = all(labels[k] == labels[len(labels) - 1 - k] for k in range(len(labels)))
+    thresholds.sort(key=lambda t: (t.density, t.label))
+    return PhaseDiagram(body, tuple(str(d) for d in base.dims), [float(s) for s in densities], labels, thresholds,
+                        unmatched, duality_ok, time.perf_counter() - start)

@@ -1,0 +1,233 @@
+"""All equilibria of a floating homogeneous body at one density, classified.
+
+* cube, box, regular prism: Newton's method on the sphere from seeds covering
+  the symmetry group's fundamental domain (:mod:`symfloat.solver.critical`),
+  completeness checked by the Poincaré–Hopf index sum;
+* section (long prism): the heel angle in the cross-section's plane, every
+  root of ``U'`` (:mod:`symfloat.solver.planar`);
+* cylinder: the tilt in the meridian plane (the rotations about the axis are
+  a continuous symmetry), from slice quadrature (:mod:`symfloat.solver.cylinder`).
+
+Stability: ``stable`` when every eigenvalue of the metacentric matrix
+``T/V - U`` (the second variation of the potential) is positive,
+``unstable`` when one is negative, ``indifferent`` when the smallest is zero to
+the working accuracy and the equilibrium is not a ring.  A ring is reported
+once; its stability is that of the direction across it.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..model.prediction import Scene
+from .bodies import centred_polygon, polyhedron
+from .critical import critical_points, distinct_seeds, poincare_hopf_sum, sphere_seeds
+from .cylinder import cylinder_slice
+from .errors import STEP, eigenvalue_error, equilibrium_error
+from .local import local, waterplane_polygon
+from .planar import roots
+from .refine import planar_residual
+from .symmetry import box_group, orbit, planar_group, prism_group, representative
+
+__all__ = ["Equilibrium", "Solution", "solve", "stability_of", "body_scale"]
+
+
+@dataclass
+class Equilibrium:
+    """One symmetry class of equilibria (see the design brief's scene contract)."""
+    up: tuple
+    tilt_deg: float
+    stability: str
+    family: str
+    potential: float
+    waterplane: str
+    eigenvalues: tuple
+    error_rad: float
+    error_method: str
+    copies: int | None          # symmetric copies of the position; None for a continuous orbit
+    ring_shape: str = ""        # a ring: "closed" (all the way round) or "arc" (a piece of one)
+    ring_length: float = 0.0    # its length on the unit sphere of up vectors (radians)
+    formulas: list = field(default_factory=list)
+    predictions: list = field(default_factory=list)
+
+
+@dataclass
+class Solution:
+    scene: Scene
+    equilibria: list
+    checks: dict
+    seconds: float
+
+
+def body_scale(scene: Scene) -> float:
+    if scene.body == "section":
+        return float(max(max(abs(x), abs(y)) for x, y in centred_polygon(scene)))
+    return float(max(scene.dims))
+
+
+def stability_of(eigenvalues, tolerance: float, ring: bool = False) -> str:
+    """``stable`` / ``unstable`` when the smallest eigenvalue of the second variation (across a
+    ring: the larger one) exceeds *tolerance* in size, else ``indifferent``."""
+    values = sorted(eigenvalues, key=abs)[1:] if ring else list(eigenvalues)
+    if min(values) > tolerance:
+        return "stable"
+    if min(values) < -tolerance:
+        return "unstable"
+    return "indifferent"
+
+
+def _clean(u) -> tuple:
+    """The unit vector with rounding noise below 1e-14 set to zero (exact zeros of symmetric
+    positions print as zeros)."""
+    return tuple(float(x) if abs(x) > 1e-14 else 0.0 for x in u)
+
+
+def _tilt(u) -> float:
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(u[2])))))
+
+
+def _shape(vertices: list, scale: float) -> str:
+    """Name of a convex waterplane polygon from its distinct, non-collinear vertices."""
+    pts = []
+    for p in vertices:
+        if not pts or np.linalg.norm(p - pts[-1]) > 1e-9 * scale:
+            pts.append(p)
+    if len(pts) > 1 and np.linalg.norm(pts[0] - pts[-1]) <= 1e-9 * scale:
+        pts.pop()
+    corners = []
+    n = len(pts)
+    for i in range(n):
+        a, b, c = pts[i - 1], pts[i], pts[(i + 1) % n]
+        if np.linalg.norm(np.cross(b - a, c - b)) > 1e-9 * scale * scale:
+            corners.append(b)
+    k = len(corners)
+    names = {3: "triangle", 5: "pentagon", 6: "hexagon", 7: "heptagon", 8: "octagon"}
+    if k == 4:
+        edges = [corners[(i + 1) % 4] - corners[i] for i in range(4)]
+        right = all(abs(np.dot(edges[i], edges[(i + 1) % 4])) <= 1e-9 * scale * scale for i in range(4))
+        equal = abs(np.linalg.norm(edges[0]) - np.linalg.norm(edges[1])) <= 1e-9 * scale
+        if right:
+            return "square" if equal else "rectangle"
+        parallel = [np.linalg.norm(np.cross(edges[i], edges[i + 2])) <= 1e-9 * scale * scale for i in range(2)]
+        if all(parallel):
+            return "rhombus" if equal else "parallelogram"
+        return "trapezoid" if any(parallel) else "quadrilateral"
+    return names.get(k, f"{k}-gon")
+
+
+def _polyhedral(scene: Scene, seeds, group):
+    poly = polyhedron(scene)
+    scale = body_scale(scene)
+    s = scene.density
+    seeds = distinct_seeds(seeds, group)
+    points = critical_points(poly, s, seeds, group, scale)
+    out = []
+    for c in points:
+        loc = local(poly, c.u, s)
+        eig = c.eigen
+        tol = eigenvalue_error(c.lipschitz, c.error_rad, scale)
+        out.append(Equilibrium(_clean(c.u), _tilt(c.u), stability_of(eig, tol, c.ring),
+                               "ring" if c.ring else "isolated", c.U, _shape(waterplane_polygon(poly, loc.state), scale),
+                               tuple(float(e) for e in eig), c.error_rad, c.error_method, c.orbit,
+                               c.shape, c.length))
+    families = any(c.ring for c in points)
+    return out, {"poincare_hopf_index_sum": None if families else poincare_hopf_sum(points),
+                 "expected_index_sum": 2, "seeds": len(seeds),
+                 **({"note": "one-parameter families present: the index sum does not apply"} if families else {})}
+
+
+def _section(scene: Scene):
+    """The 2-D problem: ``u = (cos theta, sin theta, 0)``, ``U'' = I/V - U``."""
+    poly = polyhedron(scene)
+    scale = body_scale(scene)
+    s = scene.density
+    group = planar_group(centred_polygon(scene))
+
+    def evaluate(theta):
+        u = np.array([math.cos(theta), math.sin(theta), 0.0])
+        e = np.array([-math.sin(theta), math.cos(theta), 0.0])
+        loc = local(poly, u, s)
+        g3, H3 = loc.basis @ loc.gradient, loc.basis @ loc.hessian @ loc.basis.T
+        return float(e @ g3), float(e @ H3 @ e)
+
+    lo, hi, ends = _fundamental_arc(group)
+    points = max(48, round(360 * (hi - lo) / (2 * math.pi)))
+    found = roots(evaluate, lo, hi, points, scale, include_ends=ends)
+    out, index = [], 0
+    for r in found:
+        u = np.array([math.cos(r.theta), math.sin(r.theta), 0.0])
+        if any(np.linalg.norm(g @ u - np.array(e.up)) <= 1e-7 for e in out for g in group):
+            continue
+        index += len(orbit(u, group)) * (1 if r.fprime > 0 else -1)
+        loc = local(poly, u, s)
+        rep = representative(u, group)
+        lipschitz = abs(evaluate(r.theta + STEP)[1] - evaluate(r.theta - STEP)[1]) / (2 * STEP)
+        err, method = equilibrium_error(planar_residual(scene, r.theta), abs(r.fprime), lipschitz, scale)
+        tol = eigenvalue_error(lipschitz, err, scale)
+        out.append(Equilibrium(_clean(rep), 90.0, stability_of((r.fprime,), tol), "isolated",
+                               loc.U, "rectangle", (r.fprime,),
+                               err, method, len(orbit(u, group))))
+    out.sort(key=lambda e: (round(e.potential / scale, 12), e.up))
+    return out, {"minima_minus_maxima": index, "expected_index_sum": 0, "grid": points,
+                 "arc_deg": [math.degrees(lo), math.degrees(hi)]}
+
+
+def _fundamental_arc(group) -> tuple[float, float, bool]:
+    """An arc of heel angles that meets every symmetry class of a section: between two adjacent
+    mirror lines when the polygon has mirrors (the ends, on mirrors, are equilibria by symmetry),
+    else one period of its rotations."""
+    rotations = sum(1 for g in group if np.linalg.det(g) > 0)
+    mirrors = [g for g in group if np.linalg.det(g) < 0]
+    if not mirrors:
+        return 0.0, 2 * math.pi / rotations, False
+    m = mirrors[0][:2, :2]
+    axis = 0.5 * math.atan2(m[1, 0], m[0, 0])       # a mirror fixes the line at half its rotation angle
+    return axis, axis + math.pi / rotations, True
+
+
+def _cylinder(scene: Scene):
+    r, L = (float(x) for x in scene.dims)
+    s = float(scene.density)
+    scale = max(r, L)
+
+    def evaluate(theta):
+        c = cylinder_slice(r, L, theta, s)
+        return float(c.f), float(c.fprime)
+
+    found = roots(evaluate, 0.0, math.pi / 2, 180, scale, include_ends=True)
+    out = []
+    for q in found:
+        c = cylinder_slice(r, L, q.theta, s)
+        if 0 < q.theta < math.pi / 2:
+            lipschitz = abs(evaluate(q.theta + STEP)[1] - evaluate(q.theta - STEP)[1]) / (2 * STEP)
+            residual = abs(float(cylinder_slice(r, L, q.theta, s, dps=30).f))
+            err, method = equilibrium_error(residual, abs(q.fprime), lipschitz, scale)
+        else:
+            err, method, lipschitz = 0.0, "exact", 0.0     # upright and lying: equilibria by symmetry
+        up = _clean((math.sin(q.theta), 0.0, math.cos(q.theta)))
+        tol = eigenvalue_error(lipschitz, err, scale)
+        out.append(Equilibrium(up, math.degrees(q.theta), stability_of((q.fprime,), tol), "isolated", float(c.U),
+                               c.shape, (q.fprime,), err, method, 2 if q.theta == 0.0 else None))
+    out.sort(key=lambda e: (round(e.potential / scale, 12), e.tilt_deg))
+    return out, {"note": "rotations about the axis are a continuous symmetry: each tilt is one class "
+                         "(a circle of positions when tilted); stability is across the tilt",
+                 "grid": 180}
+
+
+def solve(scene: Scene) -> Solution:
+    """Every equilibrium of *scene*, one per symmetry class, sorted by potential."""
+    start = time.perf_counter()
+    if scene.body in ("cube", "box"):
+        group = box_group(scene.dims)
+        equilibria, checks = _polyhedral(scene, sphere_seeds(10, math.pi / 2, 10), group)
+    elif scene.body == "prism":
+        group = prism_group(scene.sides)
+        equilibria, checks = _polyhedral(scene, sphere_seeds(12, math.pi / scene.sides, 4), group)
+    elif scene.body == "section":
+        equilibria, checks = _section(scene)
+    else:
+        equilibria, checks = _cylinder(scene)
+    return Solution(scene, equilibria, checks, time.perf_counter() - start)

@@ -1,0 +1,210 @@
+"""Euler, Scientia navalis III §§220–228 (curves of the ellipse's area with the greatest breadth off the
+middle): the module checks clean, the range's formulas are quoted, its errata are exactly the expected
+ones, areas and moments are pinned by independent quadrature, Euler's claims in words are tested, and
+mutated prints are refuted."""
+import dataclasses
+import re
+
+import mpmath
+import pytest
+
+from symfloat.engine.cache import ReportCache
+from symfloat.engine.check import check_derivation
+from symfloat.engine.runner import verify
+from symfloat.model.source import SOURCES
+from symfloat.registry import load
+
+D, MODULE = load("euler-220-228")
+TEXT = SOURCES["euler"].text()
+# §229 begins with "§ 229." (no dot after §) in the transcription: the range ends there.
+RANGE = TEXT[TEXT.index("§. 220."):TEXT.index("§ 229. Consideremus")]
+
+
+@pytest.fixture(scope="module")
+def report(cache_dir):
+    return verify("euler-220-228", cache=ReportCache(cache_dir))[-1]
+
+
+def test_no_check_fails(report):
+    assert report.failures == []
+
+
+# Inline pieces of §§220-228 that are notation, not results: the names of the lines (AO = BO = a,
+# ce = cf = b, AP = x, PM = y), the equation of the family and its two branches (the definition of the
+# curves: every consequence of it is quoted), the radical sign of §222, the end points y = b of the
+# integrals, Y = -cyy/bb of §227 (the choice of §221, quoted there), and the fragment '∫(a-' cut at the
+# page break of §227.
+NOTATION = {r"$AO = BO = a$", r"$ce = cf = b$", r"$AP = x$", r"$PM = y$",
+            r"$x = a + Y \pm a \sqrt{1 - \frac{y^2}{b^2}}$", r"$x = a + Y - a \sqrt{1 - \frac{y^2}{b^2}}$",
+            r"$x = a + Y + a \sqrt{1 - \frac{y^2}{b^2}}$", r"$\sqrt{\cdot}$", r"$y = b$", r"$y=b$",
+            r"$Y = \frac{-cyy}{bb},$", r"$\int (a-$"}
+
+
+def test_every_inline_formula_of_the_range_is_quoted_or_notation():
+    assert re.findall(r"\$\$.+?\$\$", RANGE, re.S) == []     # no displayed formula in §§220-228
+    pieces = re.findall(r"\$[^$]+\$", RANGE)
+    assert len(pieces) > 60
+    missing = {x for x in pieces if not any(x in p.excerpt or p.excerpt in x for p in D.printed)}
+    assert missing <= NOTATION
+
+
+# The faults found (each argued in its erratum's evidence):
+EXPECTED_ERRATA = {
+    ("AB-Ace", "transcription", "medium"),          # §223 ∫y⁴dy√(bb-yy) for ∫y⁴dy/√(bb-yy) (bar lost)
+    ("AB-Bce", "transcription", "medium"),          # §223 the same
+    ("AB-AEB", "transcription", "medium"),          # §223 the same
+    ("Aa-Ace-product", "transcription", "medium"),  # §224 the vinculum over x² lost
+    ("Aa-Ace-expanded", "transcription", "high"),   # §224 'yy^2 y' for 'yy dy'
+    ("Aa-AEB", "transcription", "medium"),          # §225 ∫y dy(a+Y)√ for ∫y dY(a+Y)√
+    ("U2-value", "transcription", "high"),          # §225 b³D³/8a for b³D/8a
+    ("Aa-AEB-value", "transcription", "high"),      # §225 aaD³/4 for aaD/4
+    ("Aa-whole", "misprint", "medium"),             # §225 2a/b for 4a/b (and D³)
+    ("DAC-definition", "transcription", "medium"),  # §226 ∫y dx for ∫xy dx
+    ("DAC", "transcription", "medium"),             # §226 ∫y dy√ for ∫y dY√
+    ("moment-EF", "misprint", "medium"),            # §226 2a/b, aa/bbD, no square: 4a/b, 8aa/bbD, (..)²
+    ("curve-c", "transcription", "medium"),         # §227 (c/b)√ for ±(a/b)√
+    ("Oc", "transcription", "medium"),              # §227 Oc = a for Oc = c
+    ("U0-value", "transcription", "low"),           # §227 the three values shifted by one integral
+    ("U2-value-c", "transcription", "low"),
+    ("U4-value", "transcription", "low"),
+    ("moment-EF-c", "transcription", "low"),        # §227 c·c²D/128 for c²D/8
+    ("curve-c-again", "transcription", "low"),      # §228 a = ... for x = ..., c/b for a/b
+}
+
+
+def test_the_errata_are_exactly_the_expected_ones(report):
+    found = {(f.id.split("/")[1], f.erratum["kind"], f.erratum["confidence"])
+             for f in report.formulas if f.verdict == "erratum"}
+    assert found == EXPECTED_ERRATA
+    assert all(f.verdict in ("verified", "erratum") for f in report.formulas)
+
+
+def test_every_area_and_moment_carries_two_quadrature_records(report):
+    unwitnessed = {"ends", "axis-AB", "greatest-breadth", "Oc-general", "breadth-b", "ellipse-at-Y0", "boundary-term",
+                   "curve-c", "Oc",
+                   "moment-grows", "curve-c-again", "c-limit", "c-half",
+                   "Aa-Ace-product"}   # its printed reading has loose terms in y: no number to compare
+    for f in report.formulas:
+        name = f.id.split("/")[1]
+        if name in unwitnessed:
+            continue
+        assert {rec["method"] for rec in f.numeric} == {"float64", "mpmath, 50 digits"}, name
+        assert all(rec["seconds"] >= 0 for rec in f.numeric)
+        if f.verdict == "erratum":      # the correction agrees with the quadrature, the print does not
+            assert all(rec["rel_error"] < 1e-10 for rec in f.corrected_numeric), name
+            assert all(rec["rel_error"] > 1e-3 for rec in f.numeric), name
+        else:
+            assert all(rec["rel_error"] < 1e-10 for rec in f.numeric), name
+
+
+# ---- values pinned by an independent computation ----------------------------------------------------
+# Each value below is computed here by nested mpmath quadrature over the figure (x across, y along;
+# not the module's helpers) and compared with the closed form.
+
+def _figure(f, A, B, Y, region="AEB", whole=False):
+    def strip(t):
+        r = A * mpmath.sqrt(1 - (t / B) ** 2)
+        xl, xr, xc = A + Y(t) - r, A + Y(t) + r, A + Y(B)
+        lo, hi = {"Ace": (xl, xc), "Bce": (xc, xr), "AEB": (xl, xr)}[region]
+        return mpmath.quad(lambda s: f(s, t), [lo, hi])
+    with mpmath.workdps(30):
+        return mpmath.quad(strip, [-B, 0, B] if whole else [0, B])
+
+
+def test_area_and_moment_about_AB_do_not_depend_on_Y():
+    # §222-223 with a = 2, b = 1 (D = πab/2 = π): area 2D = 2π and moment D b²/2 = π/2 about AB for
+    # Y = 0 (the ellipse), Y = -y²/2 (Euler's, c = 1/2) and Y = |y|/4 + y²/8 alike; the portions Ace
+    # and Bce change with Y, their sum does not.
+    for Y in (lambda t: 0 * t, lambda t: -t * t / 2, lambda t: abs(t) / 4 + t * t / 8):
+        assert abs(_figure(lambda s, t: 1, 2, 1, Y, whole=True) - 2 * mpmath.pi) < 1e-12
+        assert abs(_figure(lambda s, t: t * t, 2, 1, Y, whole=True) - mpmath.pi / 2) < 1e-12
+    Y = lambda t: abs(t) / 4 + t * t / 8     # noqa: E731
+    ace = _figure(lambda s, t: 1, 2, 1, Y, "Ace")
+    # ∫y dY + (a/b)∫y²dy/√(bb-yy) = (1/8 + 1/12) + 2·π/4 (§222)
+    assert abs(ace - (mpmath.mpf(1) / 8 + mpmath.mpf(1) / 12 + mpmath.pi / 2)) < 1e-12
+
+
+def test_euler_figure_pinned():
+    # §227 with a = 2, b = 1, c = 1/2 (D = π): AC = a - c/4 = 15/8; moment about EF a²D/2 + c²D/8 = 65π/32;
+    # about aAa a²D/2 + (4a/b)∫(a+Y)²dy√(bb-yy) (§225 corrected), not the print's 2a/b.
+    A, B, C = 2, 1, mpmath.mpf(1) / 2
+    Y = lambda t: -C * t * t / B ** 2      # noqa: E731
+    area = _figure(lambda s, t: 1, A, B, Y, whole=True)
+    xc = _figure(lambda s, t: s, A, B, Y, whole=True) / area
+    K = _figure(lambda s, t: (s - xc) ** 2, A, B, Y, whole=True)
+    Kaa = _figure(lambda s, t: s * s, A, B, Y, whole=True)
+    D_ = mpmath.pi
+    assert abs(xc - mpmath.mpf(15) / 8) < 1e-12
+    assert abs(K - 65 * mpmath.pi / 32) < 1e-12
+    S2 = B * D_ * (8 * A * A - 4 * A * C + C * C) / (16 * A)   # §227 ∫(a+Y)²dy√(bb-yy)
+    assert abs(Kaa - (A * A * D_ / 2 + 4 * A / B * S2)) < 1e-12      # §225 corrected: 4a/b
+    assert abs(Kaa - (A * A * D_ / 2 + 2 * A / B * S2)) > 1            # the print's 2a/b
+    # §227 as transcribed: AB²D/8 + c·c²D/128 = 2π + π/1024, not 65π/32
+    assert abs(K - (16 * D_ / 8 + C ** 3 * D_ / 128)) > 0.09
+
+
+def test_the_three_integrals_of_227():
+    # ∫_0^b √(bb-yy) dy = πb²/4, ∫y²√ = πb⁴/16, ∫y⁴√ = πb⁶/32 (b = 1); with D = πab/2, a = 2, b = 1:
+    # bD/2a, b³D/8a, b⁵D/16a -- the transcription's b³D/8a, b⁵D/16a, b⁹D/16a are the next ones along.
+    D_, A, B = mpmath.pi, 2, 1
+    with mpmath.workdps(30):
+        vals = [mpmath.quad(lambda t, k=k: t ** k * mpmath.sqrt(1 - t * t), [0, 1]) for k in (0, 2, 4)]
+    right = [B * D_ / (2 * A), B ** 3 * D_ / (8 * A), B ** 5 * D_ / (16 * A)]
+    assert all(abs(v - r) < 1e-12 for v, r in zip(vals, right))
+    assert abs(vals[0] - B ** 3 * D_ / (8 * A)) > 0.1
+
+
+def test_c_cannot_exceed_half_a():
+    # §228: with a = 2, b = 1 the branch Ace x = a - cy²/b² - a√(1 - y²/b²) stays at x >= 0 for c <= a/2
+    # and runs beyond aa (x < 0) near A for c > a/2 (even slightly).
+    def min_x(c):
+        return min(2 - c * t * t - 2 * mpmath.sqrt(1 - t * t) for t in mpmath.linspace(0, 1, 2001))
+    assert min_x(1) >= 0 and min_x(mpmath.mpf("0.7")) >= 0
+    assert min_x(mpmath.mpf("1.02")) < 0 and min_x(mpmath.mpf("1.5")) < 0
+
+
+def test_moment_about_EF_grows_as_ef_leaves_the_middle():
+    # §228: at a = 2, b = 1 the moment about EF (quadrature) increases with c on [0, a/2], from the
+    # ellipse's AB²D/8 = 2π to 2π(1 + 1/16) at c = a/2.
+    Ks = []
+    for C in (0, mpmath.mpf(1) / 4, mpmath.mpf(1) / 2, mpmath.mpf(3) / 4, 1):
+        Y = lambda t, C=C: -C * t * t      # noqa: E731
+        area = _figure(lambda s, t: 1, 2, 1, Y, whole=True)
+        xc = _figure(lambda s, t: s, 2, 1, Y, whole=True) / area
+        Ks.append(_figure(lambda s, t: (s - xc) ** 2, 2, 1, Y, whole=True))
+    assert all(k1 < k2 for k1, k2 in zip(Ks, Ks[1:]))
+    assert abs(Ks[0] - 2 * mpmath.pi) < 1e-12
+    assert abs(Ks[-1] / Ks[0] - mpmath.mpf(17) / 16) < 1e-12
+
+
+# ---- the engine refutes a mutated print --------------------------------------------------------------
+
+def _mutated(name, steps, reading=None, erratum="keep"):
+    p = next(q for q in D.printed if q.name == name)
+    q = dataclasses.replace(p, reading=reading if reading is not None else p.reading,
+                            erratum=p.erratum if erratum == "keep" else erratum)
+    return dataclasses.replace(D, steps=[s for s in D.steps if s.name in steps], printed=[q], witnesses=[])
+
+
+def test_a_mutated_coefficient_is_refuted():
+    # §227 a²D/2 + c²D/8 with the 8 mutated to 6
+    a, c = MODULE.a, MODULE.c
+    rep = check_derivation(_mutated("AC-c", {"area-c", "first-moment-c", "centroid-c"},
+                                    reading=(MODULE.ACc, a - c / 3)), prove=False)
+    assert rep.formulas[0].verdict == "erratum"
+    assert any("AC-c" in f and "no erratum" in f for f in rep.failures)
+    rep = check_derivation(_mutated("moment-EF-c", {"semi-ellipse", "moment-EF-c"}, erratum=None,
+                                    reading=(MODULE.KEFc, a * a * MODULE.D / 2 + c * c * MODULE.D / 6)),
+                           prove=False)
+    assert any("moment-EF-c" in f and "no erratum" in f for f in rep.failures)
+
+
+def test_the_correction_must_hold():
+    # the §225 erratum with the print's 2a/b kept in the 'correction' is rejected
+    p = next(q for q in D.printed if q.name == "Aa-whole")
+    a, b = MODULE.a, MODULE.b
+    wrong = dataclasses.replace(p.erratum, corrected_reading=(MODULE.Kwhole, a * a * MODULE.D / 2
+                                                              + 2 * a / b * MODULE.S2))
+    rep = check_derivation(_mutated("Aa-whole", {"semi-ellipse", "Aa-AEB", "Aa-whole", "S2"}, erratum=wrong),
+                           prove=False)
+    assert any("correction does not hold" in f for f in rep.failures)

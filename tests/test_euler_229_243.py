@@ -1,0 +1,246 @@
+"""Euler, Scientia navalis III §§229–243 (the family x = a + Y ± a(1 − yⁿ/bⁿ)^κ, the tables of §233–234,
+the number μ, stability and displacement): the module checks clean, the range's formulas are quoted, its
+errata are exactly the expected ones, the rebuilt tables and the μ values are pinned by independent
+quadrature, Euler's claims are tested, and mutated prints are refuted."""
+import dataclasses
+import re
+
+import mpmath
+import pytest
+import sympy as sp
+
+from symfloat.engine.cache import ReportCache
+from symfloat.engine.check import check_derivation
+from symfloat.engine.runner import verify
+from symfloat.model.source import SOURCES
+from symfloat.registry import load
+
+D, MODULE = load("euler-229-243")
+TEXT = SOURCES["euler"].text()
+RANGE = TEXT[TEXT.index("§ 229."):]          # §229 to the end of the transcription (§243)
+
+
+@pytest.fixture(scope="module")
+def report(cache_dir):
+    return verify("euler-229-243", cache=ReportCache(cache_dir))[-1]
+
+
+def test_no_check_fails(report):
+    assert report.failures == []
+
+
+def test_every_display_of_the_range_is_quoted():
+    displays = re.findall(r"\$\$.+?\$\$", RANGE, re.S)
+    assert len(displays) == 3          # the p. 118 continuation (two $$ lines) and §233
+    missing = [x for x in displays
+               if not any(x in p.excerpt or p.excerpt in x for p in D.printed)]
+    assert missing == []
+
+
+# Inline pieces of §§229–243 with =, < or > that are notation, not results: the letters of the figure
+# (AO = BO = a, ce = b, AP = x, PM = y), the defining equations of the two portions (their exponent x is
+# the κ misread, as in the quoted chord), the limits y = 0, y = b, Euler's choices of Y, c, n, the
+# definitions of μ and ν (§237–238), the names M, V, CD and the area 2D (transcribed 'z D').
+NOTATION = {r"$AO = Bo = a$", r"$ce = cf = b$", r"$AP = x$", r"$PM = y$",
+            r"$x = a + Y - a\left(1 - \frac{y^n}{b^n}\right)^x = AP$",
+            r"$x = a + Y + a\left(1 - \frac{y^n}{b^n}\right)^x = Ap$", r"$y = 0$", r"$y = b$", r"$=$",
+            r"$Y = \alpha y^n + \beta y^{n-1} + \gamma y^{n-2} + \dots + \text{etc.}$", r"$Y = \frac{-cy^n}{b^n}$",
+            r"$c=0$", r"$n = 1$", r"$n = 2$", r"$AB = \frac{EF^2 \cdot D}{\mu}$", r"$EF = \frac{AB^2 \cdot D}{\mu}$",
+            r"$= M$", r"$= V$", r"$= z D$", r"$AB = I = \frac{EF^2 \cdot D}{\mu}$",
+            r"$= K = \frac{AB^2 \cdot D}{v}$", r"$= CD$"}
+
+
+def test_every_inline_formula_of_the_range_is_quoted_or_notation():
+    inline = re.sub(r"\$\$.+?\$\$", "", RANGE, flags=re.S)
+    pieces = [x for x in re.findall(r"\$[^$]+\$", inline) if re.search(r"[=<>]", x)]
+    assert len(pieces) > 80
+    missing = {x for x in pieces if not any(x in p.excerpt or p.excerpt in x for p in D.printed)}
+    assert missing <= NOTATION
+
+
+# The faults found (each argued in its erratum's evidence).
+EXPECTED_ERRATA = {
+    ("chord", "transcription", "high"),              # §229 exponent x for κ
+    ("area", "transcription", "high"),               # §229 x for κ
+    ("moment-AB", "transcription", "medium"),        # §230 ∫y dy for ∫yy dy, x for κ
+    ("PO", "transcription", "high"),                 # §230 x for κ
+    ("pO", "transcription", "high"),                 # §230 x for κ
+    ("moment-O", "transcription", "medium"),         # §230 2nn, 3n−1 for 2nκ, 3κ−1
+    ("moment-O-whole", "transcription", "medium"),   # §230 the same, whole figure
+    ("centroid-moment", "transcription", "low"),     # §231 dy for dY, α for a and κ
+    ("CO", "transcription", "high"),                 # §231 α for a
+    ("moment-EF", "transcription", "medium"),        # §231 α, κ−1 for 3κ−1, /D lost
+    ("area-integral", "transcription", "high"),      # §231 D/(2α) for D/(2a)
+    ("Y-c-first", "transcription", "high"),          # §232 n(n+1)+1 for n(κ+1)+1
+    ("Y-c-second", "transcription", "high"),         # §232 n for κ, comma for a product
+    ("moment-EF-c", "transcription", "medium"),      # §232 garbled start of the p. 118 term
+    ("moment-EF-c-p118", "transcription", "medium"),  # p. 118 a² for a³
+    ("N-definition", "transcription", "medium"),     # §233 exponent 3κ−1 lost
+    ("N-table-1_2", "transcription", "medium"),      # §233 N = 1/2 for 1
+    ("N-table-3_2", "transcription", "medium"),      # §233 garbled
+    ("N-table-2", "transcription", "medium"),        # §233 numerator factors lost
+    ("N-table-5_2", "transcription", "medium"),
+    ("N-table-3", "transcription", "medium"),
+    ("K-table-1", "transcription", "medium"),        # §234 doubled denominator factors
+    ("K-table-3_2", "transcription", "medium"),
+    ("K-table-2", "transcription", "medium"),
+    ("K-table-5_2", "transcription", "medium"),
+    ("K-table-3", "transcription", "medium"),
+    ("stability-EF", "transcription", "medium"),     # §239 μ for ν
+    ("stability-AB-241", "transcription", "low"),    # §241 ν for μ
+    ("V-prism", "transcription", "low"),             # §243 (2/3)D·CD for 2D·CD
+    ("stability-CD", "transcription", "medium"),     # §243 v for μ
+}
+
+
+def test_the_errata_are_exactly_the_expected_ones(report):
+    found = {(f.id.split("/")[1], f.erratum["kind"], f.erratum["confidence"])
+             for f in report.formulas if f.verdict == "erratum"}
+    assert found == EXPECTED_ERRATA
+    assert all(f.verdict in ("verified", "erratum") for f in report.formulas)
+
+
+def test_every_moment_formula_carries_two_quadrature_records(report):
+    witnessed = {"area", "moment-AB", "moment-O", "moment-O-whole", "centroid-moment", "CO", "moment-EF",
+                 "area-integral", "Y-c-first", "Y-c-second", "moment-EF-c", "moment-EF-c-p118", "moment-EF-N",
+                 "unequal-halves", "case-rhombus", "case-parabolas", "case-half-n1", "case-ellipse",
+                 "mu-rectangle", "mu-rhombus", "mu-ellipse", "mu-parabola-AB", "mu-parabola-EF",
+                 "stability-AB", "stability-G-below", "stability-CD", "stability-AB-241", "stability-EF", "mu-bounds"}
+    witnessed |= {"%s-table-%s" % (t, MODULE._label(kv)) for t in "NK" for kv in MODULE.KAPPAS}
+    by_name = {f.id.split("/")[1]: f for f in report.formulas}
+    for name in witnessed:
+        f = by_name[name]
+        records = f.corrected_numeric if f.verdict == "erratum" else f.numeric
+        assert {rec["method"] for rec in records} == {"float64", "mpmath, 50 digits"}, name
+        assert all(rec["rel_error"] < 1e-10 and rec["seconds"] >= 0 for rec in records), name
+
+
+# ---- values pinned by an independent computation -----------------------------------------------------
+# Computed here with plain mpmath (not the module's helpers): the figure of §229 with c = 0,
+# |x − a| ≤ a(1 − |y|ⁿ/bⁿ)^κ, its area and its second moment about EF (x = a by symmetry).
+
+def _mp(r):
+    r = sp.Rational(r)
+    with mpmath.workdps(30):
+        return mpmath.mpf(r.p) / r.q
+
+
+def _figure(nv, kv, A=1, B=1):
+    with mpmath.workdps(30):
+        def R(y):
+            return (1 - (y / B) ** nv) ** kv
+        area = 2 * mpmath.quad(lambda y: 2 * A * R(y), [0, B])
+        K = 2 * mpmath.quad(lambda y: 2 * (A * R(y)) ** 3 / 3, [0, B])
+        I_ = 2 * mpmath.quad(lambda y: 2 * A * R(y) * y * y, [0, B])
+        return area / 2, K, I_
+
+
+@pytest.mark.parametrize("kv, nv, ratio", [
+    # §234 rebuilt K₀/(a²D): κ = 1/2: 2n/(2+3n); κ = 1: 2·2n·4n/((2+4n)(2+6n)); κ = 3/2: 2·3n·5n·7n/(…)
+    (sp.Rational(1, 2), 1, sp.Rational(2, 5)), (sp.Rational(1, 2), 2, sp.Rational(1, 2)),
+    (1, 1, sp.Rational(1, 3)), (1, 2, sp.Rational(16, 35)), (sp.Rational(3, 2), 1, sp.Rational(10, 33)),
+    (2, 2, sp.Rational(1280, 3003)), (sp.Rational(5, 2), 1, sp.Rational(14, 51)), (3, 2, sp.Rational(57344, 138567))])
+def test_table_234_rebuilt_values_pinned(kv, nv, ratio):
+    Dh, K, _ = _figure(nv, _mp(kv))
+    assert abs(K / Dh - _mp(ratio)) < 1e-14
+    value, _ = MODULE.K0_rebuilt(sp.Rational(kv))
+    assert 2 * value.subs(MODULE.n, nv) == ratio
+
+
+@pytest.mark.parametrize("kv, nv, N", [(sp.Rational(1, 2), 3, 1), (1, 1, sp.Rational(2, 3)),
+                                       (sp.Rational(3, 2), 2, sp.Rational(35, 48)), (2, 1, sp.Rational(1, 2)),
+                                       (3, 1, sp.Rational(4, 9))])
+def test_table_233_N_pinned(kv, nv, N):
+    # N = ∫(1−uⁿ)^{3κ−1} / ∫(1−uⁿ)^κ; κ = 1/2: 1 (the print has 1/2); κ = 2, n = 1: 6·8·10/(8·10·12) = 1/2
+    kv = _mp(kv)
+    with mpmath.workdps(30):
+        q = (mpmath.quad(lambda u: (1 - u ** nv) ** (3 * kv - 1), [0, 1])
+             / mpmath.quad(lambda u: (1 - u ** nv) ** kv, [0, 1]))
+    assert abs(q - _mp(N)) < 1e-14
+
+
+def test_section_236_and_237_values_pinned():
+    # §236: κ = 1, n = 1 is the rhombus, K = 2a²D/6; κ = 1/2, n = 2 the ellipse, K = a²D/2, μ = 8 both ways.
+    Dh, K, I_ = _figure(1, 1)
+    assert abs(K / Dh - mpmath.mpf(1) / 3) < 1e-14
+    Dh, K, I_ = _figure(2, mpmath.mpf(1) / 2)
+    assert abs(4 * Dh / K - 8) < 1e-14 and abs(4 * Dh / I_ - 8) < 1e-14
+    # §237 parabola y = b(1 − x²/a²), a = 2, b = 1: μ_AB = 35/4, μ_EF = 10.
+    with mpmath.workdps(30):
+        h = lambda x: 1 - x * x / 4                                      # noqa: E731
+        Dp = mpmath.quad(h, [-2, 2])
+        Ip = mpmath.quad(lambda x: 2 * h(x) ** 3 / 3, [-2, 2])
+        Kp = mpmath.quad(lambda x: 2 * h(x) * x * x, [-2, 2])
+    assert abs(4 * Dp / Ip - mpmath.mpf(35) / 4) < 1e-14 and abs(16 * Dp / Kp - 10) < 1e-14
+
+
+# ---- claims ---------------------------------------------------------------------------------------------
+
+def test_mu_between_6_and_12_on_the_admissible_family_and_not_beyond():
+    # §237 read over §235–236's admissible figures n ≥ 1, 0 < κ ≤ 1 (a = b = 1: μ_AB = 4D/I, μ_EF = 4D/K)
+    for nv in (1, 1.5, 2, 4, 10):
+        for kv in (0.1, 0.3, 0.5, 0.8, 1):
+            Dh, K, I_ = _figure(nv, kv)
+            for mu in (4 * Dh / I_, 4 * Dh / K):
+                assert 6 - 1e-12 <= mu <= 12 + 1e-12, (nv, kv, mu)
+    # outside: κ = 3, n = 1 gives μ_EF = 15; n = 1/2, κ = 1 gives μ_EF = 20 (figures Euler rejects)
+    Dh, K, _ = _figure(1, 3)
+    assert abs(4 * Dh / K - 15) < 1e-14
+    Dh, K, _ = _figure(0.5, 1)
+    assert abs(4 * Dh / K - 20) < 1e-15
+
+
+def test_moment_grows_with_c():
+    # §232/§237: the figure with Y = −cyⁿ/bⁿ (n = 2, κ = 1/2, a = b = 1) by quadrature: K(c) − K(0) equals
+    # 2n²(κ+1)c²D/((n(κ+1)+1)²(n(κ+2)+1)) = 2·4·(3/2)c²D/(16·6) = c²D/8 and grows with c.
+    def K(cv):
+        with mpmath.workdps(30):
+            R = lambda y: mpmath.sqrt(1 - y * y)                          # noqa: E731
+            Y = lambda y: -cv * y * y                                     # noqa: E731
+            area = mpmath.quad(lambda y: 2 * R(y), [0, 1])
+            sx = mpmath.quad(lambda y: 2 * R(y) * Y(y), [0, 1])
+            sxx = mpmath.quad(lambda y: ((Y(y) + R(y)) ** 3 - (Y(y) - R(y)) ** 3) / 3, [0, 1])
+            return 2 * (sxx - sx * sx / area), area
+    K0, Dh = K(0)
+    for cv in (mpmath.mpf(1) / 4, mpmath.mpf(1) / 2):
+        assert abs(K(cv)[0] - K0 - cv * cv * Dh / 8) < 1e-14
+    assert K(mpmath.mpf(1) / 2)[0] > K(mpmath.mpf(1) / 4)[0] > K0
+
+
+# ---- the engine refutes mutated prints -------------------------------------------------------------------
+
+def _mutated(name, reading=None, erratum="keep"):
+    p = next(q for q in D.printed if q.name == name)
+    q = dataclasses.replace(p, reading=reading if reading is not None else p.reading,
+                            erratum=p.erratum if erratum == "keep" else erratum)
+    return dataclasses.replace(D, printed=[q], witnesses=[])
+
+
+def test_a_mutated_coefficient_of_the_ellipse_is_refuted():
+    # §236 a²D/2 mutated to 2a²D/5 (the κ = 1/2, n = 1 value)
+    M_ = MODULE
+    kv = sp.Rational(1, 2)
+    reading = (sp.Subs(M_.Kk[kv], M_.n, 2), sp.Subs(2 * M_.a ** 2 * M_.Dk[kv] / 5, M_.n, 2))
+    rep = check_derivation(_mutated("case-ellipse", reading=reading), prove=False)
+    assert rep.formulas[0].verdict == "erratum"
+    assert any("case-ellipse" in f and "no erratum" in f for f in rep.failures)
+
+
+def test_a_table_correction_must_hold():
+    # §234 κ = 2: a 'correction' that keeps the printed doubled denominators is rejected
+    p = next(q for q in D.printed if q.name == "K-table-2")
+    wrong = dataclasses.replace(p.erratum, corrected_reading=p.reading)
+    rep = check_derivation(_mutated("K-table-2", erratum=wrong), prove=False)
+    assert any("correction does not hold" in f for f in rep.failures)
+
+
+def test_the_docstring_table_shows_the_rebuilt_values():
+    # the Markdown table of the module docstring: one row per κ with the transcribed and the rebuilt entries
+    doc = MODULE.__doc__
+    for kv in MODULE.KAPPAS:
+        row = next(line for line in doc.splitlines() if line.startswith("| %s |" % kv))
+        assert MODULE.N_PRINTED[kv][0].split("\t")[1] in row and MODULE.K_PRINTED[kv][0].split("\t")[1] in row
+        assert "$%s$" % MODULE.N_rebuilt(kv)[1] in row and MODULE.K0_rebuilt(kv)[1] in row
+        for nv in (1, 2):
+            value = 2 * MODULE.K0_rebuilt(kv)[0].subs(MODULE.n, nv)
+            assert "| %s ≈ %s |" % (value, sp.N(value, 10)) in row

@@ -1,0 +1,46 @@
+"""Scheeffer IX's printed case tables against the solver (docs/scheeffer-ix-grid.md): cells on both
+sides of every table boundary agree, and a table with one stability flipped is caught."""
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+
+from symfloat.registry import load
+from symfloat.report import ix_grid
+
+_, IX = load("scheeffer-ix")
+
+
+def _cells(densities, ratios):
+    return ix_grid.grid_rows([Fraction(s) for s in densities], [Fraction(r) for r in ratios])
+
+
+def _disagreeing(rows):
+    return [r for r in rows if r["missing"] or r["wrong_stability"] or r["unpredicted"]]
+
+
+def test_cells_across_the_table_boundaries_agree():
+    # upright a-face down: 6 s(1-s) = (a/b)^2 crosses between s = 0.2 and 0.25 for a/b = 1.02 and 1.1;
+    # the second region's threshold s = 23/32 (140) lies between 0.7 and 0.75
+    rows = _cells(["0.2", "0.25", "0.5", "0.7", "0.75", "0.9"], ["1.02", "1.1", "2"])
+    assert _disagreeing(rows) == []
+    assert {r["solver"] for r in rows} != {2}         # the grid reaches tilted positions, not only upright ones
+
+
+def test_a_flipped_stability_in_the_tables_is_reported(monkeypatch):
+    real = IX.tables_prediction
+
+    def flipped(s, ratio):
+        out = real(s, ratio)
+        out[0] = dict(out[0], stability="unstable" if out[0]["stability"] == "stable" else "stable")
+        return out
+
+    monkeypatch.setattr(IX, "tables_prediction", flipped)
+    rows = _cells(["0.5"], ["2"])
+    assert rows[0]["wrong_stability"] and rows[0]["wrong_stability"][0]["region"] == 1
+
+
+def test_the_committed_grid_report_is_complete():
+    text = (Path(__file__).resolve().parents[1] / "docs" / "scheeffer-ix-grid.md").read_text(encoding="utf-8")
+    cells = len(ix_grid.DENSITIES) * len(ix_grid.RATIOS)
+    assert f"— {cells} cells;" in text

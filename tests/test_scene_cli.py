@@ -1,0 +1,80 @@
+"""`symfloat scene` and `symfloat phase`: the JSON contract, the coverage by the sources, bad input."""
+import json
+import math
+
+import pytest
+
+from symfloat.cli import main
+from symfloat.engine.cache import ReportCache
+from symfloat.solver import make_scene, solve
+from symfloat.solver.coverage import cover, predicting
+
+
+@pytest.fixture
+def run(capsys, monkeypatch, cache_dir):
+    monkeypatch.setenv("SYMFLOAT_CACHE", str(cache_dir))
+
+    def call(*argv):
+        try:
+            code = main(list(argv))
+        except SystemExit as exc:          # usage errors found by argparse
+            code = exc.code
+        out, err = capsys.readouterr()
+        return code, out, err
+    return call
+
+
+def test_scene_json_follows_the_contract(run):
+    code, out, _ = run("scene", "cube", "--density", "0.22", "--format", "json", "--quiet")
+    assert code == 0
+    record = json.loads(out)
+    assert {"body", "dims", "density", "equilibria", "derivations_evaluated", "seconds"} <= set(record)
+    assert record["body"] == "cube" and record["density"] == 0.22 and record["dims"] == [1.0, 1.0, 1.0]
+    for e in record["equilibria"]:
+        assert {"up", "tilt_deg", "stability", "family", "potential", "waterplane", "formulas"} <= set(e)
+        assert math.isclose(sum(x * x for x in e["up"]), 1, rel_tol=1e-12)
+        assert math.isclose(e["tilt_deg"], math.degrees(math.acos(e["up"][2])), abs_tol=1e-9)
+        assert e["stability"] in ("stable", "unstable", "indifferent") and e["family"] in ("isolated", "ring")
+    ring = [e for e in record["equilibria"] if e["family"] == "ring"]
+    # Scheeffer (80): 0.2113 < s < 0.2265 gives the oblique ring; the printed formulas say so and agree
+    assert len(ring) == 1 and "(80)" in ring[0]["formulas"]
+    assert all(p["agrees"] for p in ring[0]["predictions"])
+    assert record["derivations_evaluated"] and "scheeffer-vi-ab" not in record["derivations_evaluated"]
+
+
+def test_a_scene_evaluates_only_the_derivations_that_speak_about_its_body(cache_dir):
+    assert "scheeffer-vi-cf" not in predicting("cylinder")
+    evaluated, _ = cover(solve(make_scene("cylinder", "0.3", dims="1,2")), ReportCache(cache_dir))
+    assert "scheeffer-vi-ab" in evaluated
+    assert not any(d.startswith(("graefe", "euler", "scheeffer-vi-cf", "metazentrum")) for d in evaluated)
+
+
+def test_a_disagreement_is_shown(cache_dir):
+    # Scheeffer VI.D prints the oblique (edge-axis) position for 0.2265 < s < 0.7735; the tests of the
+    # predictors found it is no equilibrium at s = 0.6: the scene must say that the source disagrees
+    solution = solve(make_scene("cube", "0.6"))
+    _, unmatched = cover(solution, ReportCache(cache_dir))
+    disagreeing = unmatched + [p for e in solution.equilibria for p in e.predictions if not p["agrees"]]
+    assert any(p["derivation"] == "scheeffer-vi-cf" for p in disagreeing)
+
+
+def test_scene_table_and_plot(run, tmp_path):
+    png = tmp_path / "cube.png"
+    code, out, err = run("scene", "box", "--dims", "1,2,3", "--density", "1/2", "--plot", str(png), "--quiet")
+    assert code == 0 and "stable" in out and png.stat().st_size > 10_000
+
+
+@pytest.mark.parametrize("argv", [
+    ("scene", "cube", "--density", "0"), ("scene", "cube", "--density", "1"), ("scene", "cube", "--density", "nan"),
+    ("scene", "cube", "--density=-1e-3"), ("scene", "cube"),
+    ("scene", "cube", "--density", "0.5", "--format", "xml"), ("scene", "box", "--density", "0.5"),
+    ("scene", "box", "--dims", "1,2,-3", "--density", "0.5"), ("scene", "box", "--dims", "1,2,inf", "--density", "0.5"),
+    ("scene", "prism", "--dims", "1,2", "--density", "0.5"), ("scene", "ball", "--density", "0.5"),
+    ("scene", "section", "--polygon", "0,0 2,0 1,1 2,2 0,2", "--density", "0.5"),
+    ("scene", "section", "--polygon", "0,0 1,1 1,0 0,1", "--density", "0.5"),
+    ("phase", "cylinder"), ("phase", "box", "--dims", "1,0,3"),
+])
+def test_bad_input_exits_2_with_one_message(run, argv):
+    code, out, err = run(*argv, "--quiet")
+    assert code == 2 and out == ""
+    assert err.startswith("symfloat: ") and err.count("\n") == 1 and "Traceback" not in err

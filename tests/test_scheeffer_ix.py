@@ -1,0 +1,318 @@
+"""Scheeffer IX (the box turned about an edge): the module checks clean, every numbered equation of the
+range is judged, the errata are exactly the expected ones, the double root and the thresholds are pinned
+by the clipped geometry, the text's claims (case tables, monotony, stability) are tested, the predictor
+agrees with an equilibrium search on the clipped box, and a mutated print is refuted."""
+import dataclasses
+import math
+import re
+import time
+from fractions import Fraction
+
+import numpy as np
+import pytest
+import sympy as sp
+
+from symfloat.engine.cache import ReportCache
+from symfloat.engine.check import check_derivation
+from symfloat.engine.runner import verify
+from symfloat.geometry.floating import box, floating_state
+from symfloat.model.prediction import Scene
+from symfloat.model.source import SOURCES
+from symfloat.registry import load
+
+D, M = load("scheeffer-ix")
+TEXT = SOURCES["scheeffer"].text()
+RANGE = TEXT[TEXT.index("## IX."):TEXT.index("## X.")]
+
+
+@pytest.fixture(scope="module")
+def report(cache_dir):
+    return verify("scheeffer-ix", cache=ReportCache(cache_dir))[-1]
+
+
+def test_no_check_fails(report):
+    assert report.failures == []
+
+
+def test_every_numbered_equation_of_ix_is_judged(report):
+    pats = (r"\\quad\s*\((\d{3}[a-c]?)\)", r"\((\d{3}[a-c]?)\)\$\$", r"\\tag\{(\d{3}[a-c]?)\}",
+            r"(?:Resultat|Ergebnis): \((\d{3})\)", r"(\d{3} a)$")
+    tags = {m.replace(" ", "") for pat in pats for m in re.findall(pat, RANGE, flags=re.M)}
+    expected = {str(k) for k in range(122, 167)} - {"132", "135"} | {"132a", "132b", "132c", "135a", "135b", "161a",
+                                                                      "162a", "164a"}
+    assert tags == expected             # the transcription lacks none of (122)-(166)
+    covered = {m for f in report.formulas for m in re.findall(r"\((\d{3}[a-c]?)\)", f.locator)}
+    assert expected <= covered
+
+
+def test_the_errata_are_exactly_the_expected_ones(report):
+    errata = {f.id.split("/")[1]: f.erratum["kind"] for f in report.formulas if f.erratum}
+    assert errata == {"T1": "transcription", "133-first": "transcription", "144": "transcription",
+                      "145": "transcription", "162a": "transcription", "s-three-quarters": "misprint",
+                      "table-first": "transcription", "table-third": "transcription"}
+    assert all(f.verdict == "erratum" for f in report.formulas if f.erratum)
+
+
+def test_every_witnessed_formula_has_float_and_50_digit_records(report):
+    witnessed = [f for f in report.formulas if f.numeric]
+    assert len(witnessed) >= 60
+    for f in witnessed:
+        assert {r["method"] for r in f.numeric} == {"float64", "mpmath, 50 digits"}, f.id
+
+
+# ---- pinned values, recomputed on the clipped box ---------------------------------------------------
+
+def test_double_root_at_t_one_half():
+    # (157), (158), (153) at t = 1/2 (sigma = 45/256, s = 211/256): the locus w -> (sigma(w), n(w)) of the
+    # derivation gives z_1 = 15/16, n_1 = 5/4, z_2 = 3/8, n_2 = 4/5 exactly; the clipped box (Newton on
+    # GZ = 0 = dGZ/dphi in the tilt and the edge a, b = 1) must find them
+    w = sp.Rational(15, 16)
+    assert M.sg_of_w.subs(M.w, w) == sp.Rational(45, 256) and M.n_of_w.subs(M.w, w) == sp.Rational(5, 4)
+    zp, n1 = M._double_root(sp.Rational(1, 2), True, 15)
+    zm, n2 = M._double_root(sp.Rational(1, 2), False, 15)
+    assert abs(zp - 15 / 16) < 1e-10 and abs(n1 - 5 / 4) < 1e-10
+    assert abs(zm - 3 / 8) < 1e-10 and abs(n2 - 4 / 5) < 1e-10
+
+
+def test_printed_n1_against_the_clipped_double_root_at_t_two_thirds():
+    # (156) upper sign at t = 2/3 (s = 1 - 27/128): n_1 = 1.11745528...; clipped Newton solution (float)
+    zp, n1 = M._double_root(sp.Rational(2, 3), True, 15)
+    assert abs(n1 - M._n1_printed(1 - 27 / 128)) < 1e-10
+    assert abs(zp - 3 / 16 * (3 + 2 / 3 + math.sqrt((5 - 2 / 3) / 3))) < 1e-10
+
+
+def test_threshold_23_32_on_the_clipped_square_section():
+    # (140): for a = b the clipped F'(3/4) (five-point stencil) is positive below s = 23/32, negative above
+    below = M._stencil(1, 1, sp.Rational(23, 32) - sp.Rational(1, 100), sp.Rational(3, 4), 15, 1)
+    above = M._stencil(1, 1, sp.Rational(23, 32) + sp.Rational(1, 100), sp.Rational(3, 4), 15, 1)
+    assert below > 0 > above
+    assert abs(below - 3 * 0.01) < 1e-12 and abs(above + 3 * 0.01) < 1e-12
+
+
+def test_gz_is_the_derivative_of_the_clipped_potential():
+    body = box(1.5, 1, 2)
+    for ph in (0.3, 0.9):
+        h = 1e-6
+        e = [floating_state(body, M._frame(math, q, "c")[0], 0.8).potential for q in (ph - h, ph + h)]
+        assert abs((e[1] - e[0]) / (2 * h) - M._gz(body, ph, 0.8, "c", math)) < 1e-8
+
+
+# ---- the text's claims --------------------------------------------------------------------------------
+
+def _F(zz, n, sg):
+    return zz ** 4 - 1.5 * zz ** 3 + 3 * n * sg * zz - 4 * n * sg ** 2
+
+
+def _roots_in(n, sg):
+    r = np.roots([1, -1.5, 0, 3 * n * sg, -4 * n * sg ** 2])
+    return sorted(x.real for x in r if abs(x.imag) < 1e-9 and 2 * sg < x.real < 1)
+
+
+def _far_from_boundaries(s, n):
+    sg = 1 - s
+    rho = 2 * sg * (4 * s - 1)
+    near = [abs(n - rho), abs(n - 1 / rho)]
+    if s > 23 / 32:
+        near.append(abs(n - M._n1_printed(s)))
+    return min(near) > 1e-6
+
+
+def test_case_tables_count_the_roots_of_f_in_the_second_region():
+    # (161), (162), (162a): the number of roots in (2 sigma, 1) and their stabilities (F from - to + is
+    # stable) agree with the tables on a grid of s in (1/2, 1), n >= 1, dense near the small case II
+    grid = [(s, n) for s in np.linspace(0.505, 0.995, 50) for n in np.linspace(1, 4, 40)]
+    grid += [(s, n) for s in np.linspace(23 / 32 + 1e-3, 0.749, 25) for n in 1 + np.linspace(0, 0.05, 40)]
+    seen = set()
+    for s, n in grid:
+        if not _far_from_boundaries(s, n):
+            continue
+        roots = _roots_in(n, 1 - s)
+        eqs = [e for e in M.tables_prediction(s, math.sqrt(n)) if e["region"] == 2]
+        assert len(eqs) == len(roots), (s, n)
+        for e, r in zip(eqs, roots):
+            slope = 4 * r ** 3 - 4.5 * r ** 2 + 3 * n * (1 - s)
+            assert (slope > 0) == (e["stability"] == "stable"), (s, n)
+            assert abs(e["z"] - r) < 1e-9
+        seen.add(len(roots))
+    assert seen == {0, 1, 2, 3}
+
+
+def test_142_follows_from_143_when_n_at_least_1():
+    for s in np.linspace(0.51, 0.99, 99):
+        rho = 2 * (1 - s) * (4 * s - 1)
+        for n in np.linspace(1, 2, 51):
+            if n < rho:
+                assert n > 1 / rho and _F(1, n, 1 - s) > 0
+
+
+def test_140_makes_f_increasing_for_every_n_at_least_1():
+    for s in np.linspace(0.51, 23 / 32, 30):
+        for n in (1, 1.5, 4):
+            zz = np.linspace(0, 3, 301)
+            assert (4 * zz ** 3 - 4.5 * zz ** 2 + 3 * n * (1 - s) >= -1e-12).all()
+
+
+def test_z1_lies_in_the_region_and_at_the_minimum():
+    # "die grössere der beiden Doppelwurzeln ... im minimum", "2 sigma < z_1", "z_1 < 1"
+    for t in np.linspace(-1 / 3 + 1e-3, 1 - 1e-3, 200):
+        sg = 9 * (1 + 3 * t) / 128
+        z1 = 3 / 16 * (3 + t + math.sqrt((5 - t) * (1 - t)))
+        z2 = 3 / 16 * (3 + t - math.sqrt((5 - t) * (1 - t)))
+        assert 2 * sg < z1 < 1 and z2 < 0.75 < z1
+
+
+def test_f_grows_with_n_in_the_region():
+    # (145): 3 sigma (z - 4 sigma/3) > 0 for z > 2 sigma
+    for s in (0.6, 0.8, 0.95):
+        sg = 1 - s
+        zz = np.linspace(2 * sg, 1, 50)
+        assert (_F(zz, 1.3, sg) > _F(zz, 1.2, sg)).all()
+
+
+def test_164_bounds_hg_on_the_whole_region():
+    # HG^2/b^2 = z^2 + 4 n sigma^2/z^2 is largest at z = 2 sigma for n >= 1
+    for s in (0.55, 0.7, 0.9):
+        sg = 1 - s
+        for n in (1, 1.7, 3):
+            zz = np.linspace(2 * sg, 1, 200)
+            assert (zz ** 2 + 4 * n * sg ** 2 / zz ** 2 <= 4 * sg ** 2 + n + 1e-12).all()
+
+
+def _clipped_equilibria(dims, sv, axis_dims):
+    """Equilibria of the clipped box turned about one edge: roots of GZ on (0, 90 deg) by a scan and bisection,
+    with stability about the axis (GZ from - to +) and in every direction (metacentric height > 0)."""
+    body = box(*dims)
+    i, j = axis_dims            # turn from e_j vertical towards e_i vertical
+    def up(ph):
+        u = [0.0, 0.0, 0.0]
+        u[j], u[i] = math.cos(ph), math.sin(ph)
+        return tuple(u)
+
+    def gz(ph):
+        st = floating_state(body, up(ph), sv)
+        h = [0.0, 0.0, 0.0]
+        h[j], h[i] = -math.sin(ph), math.cos(ph)
+        return sum(h[k] * (st.G[k] - st.B[k]) for k in range(3))
+    grid = np.linspace(1e-3, math.pi / 2 - 1e-3, 600)
+    vals = [gz(q) for q in grid]
+    out = []
+    for k in range(len(grid) - 1):
+        if (vals[k] > 0) != (vals[k + 1] > 0):
+            lo, hi = grid[k], grid[k + 1]
+            for _ in range(60):
+                mid = (lo + hi) / 2
+                if (gz(mid) > 0) == (vals[k] > 0):
+                    lo = mid
+                else:
+                    hi = mid
+            ph = (lo + hi) / 2
+            full = floating_state(body, up(ph), sv).metacentric_height > 0
+            out.append((ph, "stable" if vals[k] < 0 else "unstable", full))
+    return out
+
+
+@pytest.mark.parametrize("dims, sv", [((1.05, 1.0, 1.1), 0.7), ((1.5, 1.0, 3.0), 0.9), ((1.3, 1.0, 2.0), 0.77),
+                                      ((1.02, 1.0, 2.5), 0.73), ((1.001, 1.0, 2.5), 0.725),
+                                      ((1.05, 1.0, 2.0), 0.8), ((1.05, 1.0, 2.0), 0.2)])
+def test_tables_agree_with_the_clipped_box_about_the_longest_edge(dims, sv):
+    found = _clipped_equilibria(dims, sv, (0, 1))
+    pred = [e for e in M.tables_prediction(sv, dims[0] / dims[1]) if 0 < e["phi"] < math.pi / 2]
+    assert len(pred) == len(found)
+    assert all(abs(e["phi"] - f[0]) < 1e-7 for e, f in zip(pred, found))
+    assert [e["stability"] for e in pred] == [f[1] for f in found]
+    for e, f in zip(pred, found):
+        if e["region"] != 2:
+            assert f[2] == (dims[2] > (dims[0] if e["region"] == 1 else dims[1]))   # (126), (127)
+        elif e["stability"] == "stable":
+            sg = 1 - max(sv, 1 - sv)
+            if dims[2] ** 2 > dims[1] ** 2 * (e["z"] ** 2 + 4 * (dims[0] / dims[1]) ** 2 * sg ** 2 / e["z"] ** 2):
+                assert f[2]                       # (163) is sufficient for complete stability
+
+
+def test_alternation_of_stable_and_unstable_positions():
+    # "immer abwechselnd eine stabile ... und eine labile": along 0..90 deg about the axis
+    for s in np.linspace(0.52, 0.98, 24):
+        for ratio in (1.0, 1.02, 1.1, 1.3, 2.0):
+            st = [e["stability"] for e in sorted(M.tables_prediction(s, ratio), key=lambda e: e["phi"])]
+            assert all(x != y for x, y in zip(st, st[1:])), (s, ratio, st)
+
+
+def test_third_region_oblique_needs_s_above_three_quarters():
+    # the corrected reading of 's < 3/4': the oblique position of the third region exists only for s > 3/4
+    ratios = np.linspace(1, 5, 2001)
+    for s in np.linspace(0.51, 0.99, 48):                      # 3/4 itself (the boundary) is not on the grid
+        ss, rho = s * (1 - s), 2 * (1 - s) * (4 * s - 1)
+        if s < 0.75:
+            assert not any(e["region"] == 3 and e["phi"] < math.pi / 2 for r in ratios
+                           for e in M.tables_prediction(s, r)), s
+        else:
+            r = math.sqrt((max(1, 1 / (6 * ss)) + 1 / rho) / 2)  # inside the window of (165), and >= 1
+            assert r >= 1 and any(e["region"] == 3 and e["phi"] < math.pi / 2 for e in M.tables_prediction(s, r)), s
+
+
+def test_first_region_oblique_stability_on_the_clipped_box():
+    # (127): about c (c > a) stable in every direction; (128): about a, partly unstable
+    body = box(1.05, 1.0, 1.1)
+    ph_c = M._tilt(sp.Rational(21, 20), 1, sp.Rational(11, 10), sp.Rational(7, 10), "c", "eq", 15)
+    ph_a = M._tilt(sp.Rational(21, 20), 1, sp.Rational(11, 10), sp.Rational(7, 10), "a", "eq", 15)
+    assert floating_state(body, M._frame(math, ph_c, "c")[0], 0.7).metacentric_height > 0
+    assert floating_state(body, M._frame(math, ph_a, "a")[0], 0.7).metacentric_height < 0
+
+
+# ---- the predictor --------------------------------------------------------------------------------------
+
+def test_predictor_is_cheap_and_names_printed_formulas():
+    names = {p.name for p in D.printed}
+    for dims, sv in [((1, 1, 1), Fraction(4, 5)), ((Fraction(3, 2), 1, 3), Fraction(9, 10)),
+                     ((Fraction(21, 20), 1, Fraction(11, 10)), Fraction(7, 10))]:
+        sc = Scene("box", sv, tuple(Fraction(x) for x in dims))
+        t0 = time.perf_counter()
+        preds = M.predict(sc)
+        assert time.perf_counter() - t0 < 0.1
+        assert preds and all(set(p.printed) <= names for p in preds)
+
+
+def test_predictor_on_a_box_with_oblique_positions():
+    # box 21/20 x 1 x 11/10, s = 7/10: three faces down, the first-region obliques about z (stable, (127))
+    # and about x (partly unstable, (128)), and about y the obliques of the section 11/10 x 21/20
+    preds = M.predict(Scene("box", Fraction(7, 10), (Fraction(21, 20), Fraction(1), Fraction(11, 10))))
+    faces = [p for p in preds if sorted(map(abs, p.up)) == [0, 0, 1]]
+    assert len(faces) == 3
+    about_z = [p for p in preds if p.up[2] == 0 and p not in faces]
+    assert len(about_z) == 1 and about_z[0].stability == "stable"
+    found = _clipped_equilibria((1.05, 1.0, 1.1), 0.7, (0, 1))
+    assert len(found) == 1 and abs(math.atan2(about_z[0].up[0], about_z[0].up[1]) - found[0][0]) < 1e-7
+    assert found[0][2]
+    about_x = [p for p in preds if p.up[0] == 0 and p not in faces]
+    assert [p.stability for p in about_x] == ["unstable"]
+
+
+def test_predictor_for_the_cube_gives_the_obliques_without_stability():
+    preds = M.predict(Scene("cube", Fraction(4, 5), (Fraction(1),) * 3))
+    assert [p.stability for p in preds if sorted(map(abs, p.up)) == [0, 0, 1]] == ["stable"]
+    assert len(preds) >= 1
+
+
+# ---- the engine refutes a mutated print ------------------------------------------------------------------
+
+def _mutated(name, reading=None, erratum="keep"):
+    p = next(q for q in D.printed if q.name == name)
+    q = dataclasses.replace(p, reading=reading if reading is not None else p.reading,
+                            erratum=p.erratum if erratum == "keep" else erratum)
+    return dataclasses.replace(D, printed=[q], witnesses=[], predictor=None)
+
+
+def test_a_mutated_coefficient_of_the_quartic_is_refuted():
+    # (136) with 3/2 z^3 mutated to 5/4 z^3
+    z, n, sg = M.z, M.n, M.sg
+    rep = check_derivation(_mutated("136", reading=(M.Fz, z ** 4 - sp.Rational(5, 4) * z ** 3 + 3 * n * sg * z
+                                                     - 4 * n * sg ** 2)), prove=False)
+    assert rep.formulas[0].verdict == "erratum"
+    assert any("136" in f and "no erratum" in f for f in rep.failures)
+
+
+def test_the_144_correction_must_hold():
+    p = next(q for q in D.printed if q.name == "144")
+    wrong = dataclasses.replace(p.erratum, corrected_reading=p.reading)
+    rep = check_derivation(_mutated("144", erratum=wrong), prove=False)
+    assert any("correction does not hold" in f for f in rep.failures)

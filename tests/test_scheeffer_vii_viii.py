@@ -1,0 +1,235 @@
+"""Scheeffer 1902, VII and VIII (derivation ``scheeffer-vii-viii``): verdicts and errata, coverage of (95)-(122),
+the designed and the root-found equilibria on the clipped prisms, the claims in words, and mutated prints that
+the engine must refute."""
+import dataclasses
+import math
+import re
+from fractions import Fraction
+
+import pytest
+import sympy as sp
+
+import derivations.scheeffer_vii_viii as M
+from symfloat.engine.cache import ReportCache
+from symfloat.engine.check import check_derivation
+from symfloat.engine.runner import verify
+from symfloat.geometry.floating import box, floating_state, right_prism
+from symfloat.model.prediction import Scene
+from symfloat.model.source import SOURCES
+
+TEXT = SOURCES["scheeffer"].text()
+RANGE = TEXT[TEXT.index("## VII."):TEXT.index("## IX.")]
+ERRATA = {"100": "transcription", "109": "misprint", "s-upper": "claim"}
+# printed formulas that are logical or calculus steps on others (no numeric quantity of their own to clip)
+UNWITNESSED = {"s-upper", "95-element", "96-split", "117-cos", "regular-Ps", "106-first"}
+
+
+@pytest.fixture(scope="module")
+def report(cache_dir):
+    return verify("scheeffer-vii-viii", cache=ReportCache(cache_dir))[-1]
+
+
+def test_no_failures_and_the_expected_errata(report):
+    assert report.failures == []
+    found = {f.id.split("/")[1]: f.erratum["kind"] for f in report.formulas if f.verdict == "erratum"}
+    assert found == ERRATA
+    assert all(f.verdict == "verified" for f in report.formulas if f.id.split("/")[1] not in ERRATA)
+    assert all(s.status in ("proved", "definition", "applied") for s in report.steps)
+
+
+def test_every_numbered_equation_is_judged_and_none_lacks():
+    tagged = {n.replace(" ", "") for n in re.findall(r"\((\d{2,3} ?[ab]?)\)", RANGE)
+              if 95 <= int(re.match(r"\d+", n).group()) <= 122}
+    locators = {re.sub(r"[()]", "", p.locator) for p in M.d.printed}
+    # (102 a) and (102 b) occur only as references (to (103a), (103b)); every displayed number is quoted
+    assert tagged - locators <= {"102a", "102b"}
+    assert {str(n) for n in range(95, 123)} - {re.match(r"\d+", t).group() for t in locators if t[:1].isdigit()} \
+        == set()
+
+
+def test_numeric_formulas_have_both_precisions(report):
+    for f in report.formulas:
+        name = f.id.split("/")[1]
+        if name in UNWITNESSED:
+            continue
+        methods = {r["method"] for r in (f.corrected_numeric if name in ERRATA else f.numeric)}
+        assert {"float64", "mpmath, 50 digits"} <= methods, name
+
+
+# ---- the designed equilibria ---------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", ["pent-eq", "box-eq", "box3-eq"])
+def test_designed_positions_are_equilibria_of_the_clipped_prism(name):
+    # built from (95a) and (103b) (VIII: (118), (122)) with exact arithmetic; on the clipped prism both horizontal
+    # offsets of the centre of buoyancy from G vanish
+    p = M._params(name)
+    assert sp.simplify(M.res(M.Pxy).xreplace(p)) == 0
+    for dps in (15, 50):
+        h, e = M._measure(name, "balance", dps)
+        assert abs(h) < (1e-13 if dps == 15 else 1e-45) and abs(e) < (1e-13 if dps == 15 else 1e-45)
+
+
+def test_pentagon_design_pinned():
+    # raw pentagon (-2,-1), (1,-3/2), (3/2,1/2), (0,2), (-3/2-67/72, 1/2-67/48): the last vertex slid parallel to
+    # its neighbours' chord until the centroid O sits at y = int_F x y / int_F x over the dry part x > 0 (exact:
+    # lambda = -67/144 of the direction (2, 3)); area 61/8, O = (-349/2196, -35/1464); (103b) then gives b = 475/183
+    # for tan phi = 4/3, and (103a) s = 1 - F x_s tan/(F_1 b) = 0.857...
+    p = M._params("pent-eq")
+    assert p[M.F1] == sp.Rational(61, 8) and p[M.x0] == sp.Rational(-349, 2196)
+    assert p[M.F] == sp.Rational(85, 24) and p[M.T] == sp.Rational(1015, 576)
+    assert sp.simplify(M.res(M.M3 / M.sn2).xreplace(p)) == 0
+    assert float(p[M.s]) == pytest.approx(0.8573099415204678, rel=1e-14)
+    # the equilibrium is not a symmetric one: the waterplane's central product k = m n F_2 != 0
+    assert M._measure("pent-eq", "Ks", 15) == pytest.approx(float(M.res(M.k_).xreplace(p)), rel=1e-12)
+    assert abs(M._measure("pent-eq", "Ks", 15)) > 0.05
+
+
+def test_stability_of_the_designed_equilibria_pinned():
+    # (117) sign identity: the printed left side equals 2 cos phi V_1 GM of the clipped position (GM from the
+    # clipped waterplane's least moment and the clipped centre of buoyancy); both designed equilibria are labile:
+    # the cube's exactly -15/1372 (exact rational reading of (117) at s = 71/98, tan phi = 4/3), the pentagon's
+    # -1.55934272897988 (same reading, exact data, evaluated)
+    cube = M.at_eq(M.L117).xreplace(M._params("box-eq"))
+    assert sp.nsimplify(sp.simplify(cube)) == sp.Rational(-15, 1372)
+    assert M._measure("box-eq", "2cD", 15) == pytest.approx(-15 / 1372, rel=1e-12)
+    pent = float(M.at_eq(M.L117).xreplace(M._params("pent-eq")))
+    assert pent == pytest.approx(-1.5593427289798802, rel=1e-13)
+    assert M._measure("pent-eq", "2cD", 15) == pytest.approx(pent, rel=1e-12)
+
+
+def _box_arm(A, bb, sv, theta):
+    st = floating_state(box(A, 1, bb), (math.sin(theta), 0, math.cos(theta)), sv)
+    return sum(h * (st.B[k] - st.G[k]) for k, h in enumerate((math.cos(theta), 0, -math.sin(theta))))
+
+
+def _root(f, lo, hi):
+    flo = f(lo)
+    for _ in range(200):
+        mid = (lo + hi) / 2
+        fm = f(mid)
+        if (fm < 0) == (flo < 0):
+            lo, flo = mid, fm
+        else:
+            hi = mid
+    return (lo + hi) / 2
+
+
+def test_box_equilibria_found_by_root_finding():
+    # second region: unit cube, s = 71/98 (from (103a) with tan phi = 4/3, w = 9/14); the righting arm of the
+    # clipped cube vanishes at tan phi = 4/3 (searched between 0.8 and 1.0 rad, where the top face is cut)
+    s2 = float(M._params("box-eq")[M.s])
+    assert M._params("box-eq")[M.s] == sp.Rational(71, 98)
+    assert math.tan(_root(lambda q: _box_arm(1, 1, s2, q), 0.8, 1.0)) == pytest.approx(4 / 3, rel=1e-12)
+    # third region: box 9/10 x 1 x 1, s = 2/3, tan phi = 5/2 from (122)
+    s3 = float(M._params("box3-eq")[M.s])
+    assert M._params("box3-eq")[M.s] == sp.Rational(2, 3)
+    assert math.tan(_root(lambda q: _box_arm(0.9, 1, s3, q), 1.1, 1.3)) == pytest.approx(2.5, rel=1e-12)
+
+
+# ---- claims in words ----------------------------------------------------------------------------------------
+
+def test_claim_stability_direction_on_the_cube():
+    # 'stable when M_3 passes from - to + with growing phi': at the cube's equilibrium tan phi = 4/3 the clipped
+    # arm M_3/V_1 goes from - to +, and the clipped potential has a minimum there (against the tilt)
+    s2 = float(M._params("box-eq")[M.s])
+    ph = math.atan(4 / 3)
+    m_minus = -_box_arm(1, 1, s2, ph - 0.02)       # M_3 = V_3 h.(S_3 - S) = -V_1 h.(B - G)
+    m_plus = -_box_arm(1, 1, s2, ph + 0.02)
+    E = [floating_state(box(1, 1, 1), (math.sin(q), 0, math.cos(q)), s2).potential for q in (ph - 0.02, ph, ph + 0.02)]
+    assert m_minus < 0 < m_plus and E[1] < E[0] and E[1] < E[2]
+
+
+def test_claim_s_below_half_exchanges_wet_and_dry():
+    # V_1 E of density s with u up equals that of density 1 - s with -u up (the dry part becomes the submerged one)
+    for name in ("rect", "tri", "pent-eq"):
+        assert M._measure(name, "V1e2", 15) == pytest.approx(M._measure(name, "flip", 15), rel=1e-12)
+
+
+def test_claim_x0_negative_when_N_lies_between_O_and_E():
+    # the pentagon's water line crosses EF on the dry side of O (N between O and E): measured x_0 < 0
+    assert M._measure("pent-eq", "x0", 15) == pytest.approx(-349 / 2196, rel=1e-12)
+    assert M._measure("rect", "x0", 15) > 0
+
+
+def test_claim_98_regular_bases_wet_part():
+    # for the square and the equilateral triangle P_O = 0, and int xy over the dry part is -int over the wet part
+    for name in ("square", "eqtri"):
+        p = M._params(name)
+        assert p[M.PO] == 0
+        assert M._measure(name, "Pxy", 15) == pytest.approx(-float(p[M.Pw]), rel=1e-12)
+
+
+# ---- mutations ------------------------------------------------------------------------------------------------
+
+def _mutated(name, reading=None, erratum="keep"):
+    p = next(q for q in M.d.printed if q.name == name)
+    q = dataclasses.replace(p, reading=reading if reading is not None else p.reading,
+                            erratum=p.erratum if erratum == "keep" else erratum)
+    return dataclasses.replace(M.d, printed=[q], witnesses=[])
+
+
+def test_a_mutated_coefficient_of_103b_is_refuted():
+    # F_1 b^2 (1 - s)/2 mutated to /3
+    rd = (M.M3 / M.sn2, M.T * (1 + M.tg2 ** 2 / 2) - M.F1 * M.b ** 2 * (1 - M.s) / 3 - M.F * M.xs * M.x0)
+    rep = check_derivation(_mutated("103b", reading=rd), prove=False)
+    assert rep.formulas[0].verdict == "erratum"
+    assert any("103b" in f and "no erratum" in f for f in rep.failures)
+
+
+def test_the_109_correction_must_hold():
+    p = next(q for q in M.d.printed if q.name == "109")
+    wrong = dataclasses.replace(p.erratum, corrected_reading=p.reading)
+    rep = check_derivation(_mutated("109", erratum=wrong), prove=False)
+    assert any("correction does not hold" in f for f in rep.failures)
+
+
+# ---- predictions --------------------------------------------------------------------------------------------
+
+SCENES = [Scene("cube", Fraction(71, 98), (Fraction(1),) * 3), Scene("cube", Fraction(1, 5), (Fraction(1),) * 3),
+          Scene("box", Fraction(2, 3), (Fraction(9, 10), Fraction(1), Fraction(1))),
+          Scene("box", Fraction(1, 3), (Fraction(9, 10), Fraction(1), Fraction(1)))]
+
+
+@pytest.mark.parametrize("scene", SCENES, ids=lambda sc: f"{sc.body}-{sc.density}")
+def test_predicted_positions_are_clipped_equilibria_with_the_predicted_stability(scene):
+    preds = M.d.predictor.predict(scene)
+    assert preds and all(set(p.printed) <= {q.name for q in M.d.printed} for p in preds)
+    body = box(*[float(q) for q in scene.dims])
+    for p in preds:
+        st = floating_state(body, p.up, float(scene.density))
+        r = [st.B[k] - st.G[k] for k in range(3)]
+        along = sum(r[k] * p.up[k] for k in range(3))
+        assert max(abs(r[k] - along * p.up[k]) for k in range(3)) < 1e-12      # B vertically below G
+        if p.stability is not None:
+            assert (st.metacentric_height > 0) == (p.stability == "stable")
+
+
+def test_predictions_pinned():
+    # the cube at s = 71/98: the designed second-region position tan phi = 4/3 (one representative, here seen from
+    # the x axis as tan phi = 3/4) and the diagonal one at 45 deg; both labile by (117)
+    ups = sorted(tuple(round(abs(q), 12) for q in p.up) for p in M._predict(SCENES[0]))
+    assert ups == [(0.707106781187, 0.707106781187, 0.0), (0.8, 0.6, 0.0)]
+    # the box 9/10 x 1 x 1 at s = 2/3: the third-region position tan phi = 5/2 of (122), as designed (box3-eq)
+    third = [p for p in M._predict(SCENES[2]) if p.printed[0] == "118"]
+    assert len(third) == 1 and third[0].up[0] == pytest.approx(5 / math.sqrt(29), rel=1e-12)
+    assert M._predict(Scene("prism", Fraction(1, 2), (Fraction(1), Fraction(1)), sides=6)) == []
+
+
+def test_claim_s_upper_counterexample():
+    # equilateral triangular prism, side 1, height 1, s = 3/5 > 1/2, turned about an axis parallel to a side with
+    # that side dipping: the clipped water plane reaches the lower base first, at tan phi = sqrt(3) s = 1.0392
+    # (first-region formula b s/u_m', u_m' = 1/sqrt 3), while the upper base is still dry there
+    r3 = math.sqrt(3)
+    body = right_prism([(-0.5, -1 / (2 * r3)), (0.5, -1 / (2 * r3)), (0.0, 1 / r3)], 1)
+    top = [p for p in body.vertices if p[2] > 0]
+    bot = [p for p in body.vertices if p[2] < 0]
+
+    def clearances(phi):
+        u = (0.0, math.sin(phi), math.cos(phi))
+        st = floating_state(body, u, 0.6)
+        hts = lambda ps: [sum(u[k] * p[k] for k in range(3)) - st.t for p in ps]  # noqa: E731
+        return min(hts(top)), max(hts(bot))            # top base dry while > 0, bottom wet while < 0
+
+    ph = _root(lambda q: clearances(q)[1], 0.5, 1.0)
+    assert math.tan(ph) == pytest.approx(r3 * 0.6, rel=1e-10)
+    assert clearances(ph)[0] > 0.05
