@@ -7,6 +7,7 @@
     symfloat scene BODY --density S [--dims ...] [--sides N] [--polygon "x,y ..."] [--format table|json]
                    [--plot FILE.png]
     symfloat phase cube|box [--dims a,b,c] [--format table|json] [--plot FILE.png]
+    symfloat bench [--quick] [--output DIR]
 
 Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET=1``) silences it.
 Exit status: 0 when every check behaves as declared, 1 when a check fails
@@ -70,6 +71,9 @@ def _parser():
     ph.add_argument("--format", choices=("table", "json"), default="table")
     ph.add_argument("--plot", type=Path, help="draw the phase diagram into this PNG file")
     ph.add_argument("--steps", type=int, default=48, help="densities in the sweep (default 48)")
+    b = sub.add_parser("bench", parents=[common], help="numerics benchmark: write docs/numerics.md and its figures")
+    b.add_argument("--quick", action="store_true", help="a few derivations and methods (for tests)")
+    b.add_argument("--output", type=Path, default=DOCS, help="directory for numerics.md and figures/")
     return p
 
 
@@ -158,6 +162,13 @@ def main(argv=None) -> int:
             progress = None if args.quiet else (lambda d: print(f"executing notebook {d}", file=sys.stderr))
             written = write_notebooks(ids, args.output, progress)
             print(f"{len(written)} of {len(ids)} notebooks changed in {args.output}", file=sys.stderr)
+            reports = []
+        elif args.command == "bench":
+            from .numerics.document import generate
+            quiet = args.quiet or os.environ.get("SYMFLOAT_QUIET") == "1"
+            written = generate(args.output, quick=args.quick,
+                               progress=lambda msg: quiet or print(msg, file=sys.stderr, flush=True))
+            print(f"{len(written)} numerics files changed in {args.output}", file=sys.stderr)
             reports = []
         else:  # run
             reports = _reports(args)

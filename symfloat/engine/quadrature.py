@@ -19,7 +19,8 @@ import mpmath
 import numpy as np
 
 __all__ = ["QuadMethod", "TanhSinh", "GaussLegendre64", "TANH_SINH_15", "TANH_SINH_50",
-           "GAUSS_LEGENDRE_64_8", "DEFAULT_METHODS", "composite_simpson"]
+           "GAUSS_LEGENDRE_64_8", "DEFAULT_METHODS", "composite_simpson", "composite_trapezoid",
+           "GaussLegendreMP", "Composite"]
 
 
 @dataclass(frozen=True)
@@ -67,6 +68,29 @@ class GaussLegendre64(QuadMethod):
         return mpmath.mpf(total)
 
 
+@dataclass(frozen=True)
+class GaussLegendreMP(QuadMethod):
+    """mpmath's adaptive Gauss–Legendre quadrature at ``dps`` digits."""
+
+    def _integrate(self, f, points):
+        with mpmath.workdps(self.dps):
+            return +mpmath.quad(f, [mpmath.mpf(p) for p in points], method="gauss-legendre")
+
+
+@dataclass(frozen=True)
+class Composite(QuadMethod):
+    """A composite Newton–Cotes rule (``rule`` = ``"simpson"`` or
+    ``"trapezoid"``) in float64 with ``panels`` panels on each piece."""
+
+    rule: str = "simpson"
+    panels: int = 8
+
+    def _integrate(self, f, points):
+        apply = composite_simpson if self.rule.lower() == "simpson" else composite_trapezoid
+        g = lambda x: float(f(x))  # noqa: E731
+        return mpmath.mpf(sum(apply(g, float(a), float(b), self.panels) for a, b in zip(points, points[1:])))
+
+
 TANH_SINH_15 = TanhSinh("tanh-sinh, 15 digits", 1e-12, "mpmath", 15)
 TANH_SINH_50 = TanhSinh("tanh-sinh, 50 digits", 1e-45, "mpmath", 50)
 GAUSS_LEGENDRE_64_8 = GaussLegendre64("Gauss-Legendre n=8, float64", 1e-12, "float64", 15, 8)
@@ -86,3 +110,16 @@ def composite_simpson(f, a, b, panels: int):
     inner = sum((4 if k % 2 else 2) * f(a + k * m) for k in range(1, panels))
     return m / 3 * (f(a) + inner + f(b))
 
+
+
+def composite_trapezoid(f, a, b, panels: int):
+    """Composite trapezoid rule with *panels* panels of width ``m = (b - a) / panels``:
+    ``m (f0/2 + f1 + ... + f_{n-1} + f_n/2)``.
+
+    >>> composite_trapezoid(lambda x: x, 0, 2, 1)
+    2.0
+    """
+    if panels <= 0:
+        raise ValueError("the trapezoid rule needs a positive number of panels")
+    m = (b - a) / panels
+    return m * ((f(a) + f(b)) / 2 + sum(f(a + k * m) for k in range(1, panels)))

@@ -1,0 +1,299 @@
+"""Error against run time: every witness of the registry re-run across methods.
+
+Each witness of each derivation (found through :mod:`symfloat.registry`, so a
+new derivation is benchmarked without being named here) is measured with every
+method that applies to its kind:
+
+* :class:`~symfloat.engine.witness.SectionIntegral` and
+  :class:`~symfloat.engine.witness.PlaneSections`: mpmath tanh-sinh and
+  Gauss–Legendre at 15, 30, 50 and 100 digits, fixed-order Gauss–Legendre in
+  float64 at several orders, and, where the source's own method is a
+  Newton–Cotes rule (the derivation speaks of Simpson's rule), composite
+  Simpson and trapezoid in float64 at several panel counts;
+* :class:`~symfloat.engine.witness.HullWitness`: exact rational hull faces, and
+  slices by Gauss–Legendre at several orders and precisions;
+* :class:`~symfloat.engine.witness.Computed`: the witness's own computation at
+  15 (float64), 30 and 50 digits, and at 100 digits where no exact reference exists.
+
+The reference of a targeted formula is the exact value of its valid reading
+(the reading as printed when no erratum is declared, the corrected reading
+otherwise) at the case's parameters; where that reading is no closed number,
+the witness's 100-digit measurement.  Each measurement records the relative
+error against the reference (worst over the cases) and the wall time of all
+cases (median of repeats).
+"""
+from __future__ import annotations
+
+import statistics
+import time
+from dataclasses import dataclass, field
+
+import mpmath
+import sympy as sp
+
+from ..engine.check import _resolved, _substitute
+from ..engine.quadrature import Composite, GaussLegendre64, GaussLegendreMP, TanhSinh
+from ..engine.witness import (Computed, ConvergenceOrder, ExactHull, HullSlices, HullWitness, PlaneSections,
+                              Precision, SectionIntegral)
+from ..model.claim import members
+from ..registry import load, select
+
+__all__ = ["Measurement", "Bench", "methods_for", "newton_cotes", "run_bench", "DIGITS", "REFERENCE_DPS",
+           "FAMILIES"]
+
+DIGITS = (15, 30, 50, 100)
+REFERENCE_DPS = 100
+FLOAT64_ORDERS = (2, 3, 4, 6, 8, 12, 16)
+PANELS = (2, 4, 8, 16, 32, 64)
+FAMILIES = {
+    SectionIntegral: "section-area quadrature",
+    PlaneSections: "plane-section chords",
+    HullWitness: "convex hulls",
+    Computed: "floating-geometry computations",
+}
+
+
+@dataclass
+class Measurement:
+    """One witness measured with one method: relative errors per targeted
+    formula (worst over the cases; absolute where the reference is 0; ``None``
+    when the method failed) and the median wall time of all cases."""
+
+    derivation: str
+    source: str
+    family: str
+    witness: str
+    method: str
+    seconds: float
+    errors: dict
+    note: str = ""
+
+
+@dataclass
+class Bench:
+    """All measurements, with the reference kind of every formula."""
+
+    measurements: list = field(default_factory=list)
+    references: dict = field(default_factory=dict)   # "derivation/formula" -> "exact" | "100 digits"
+    locators: dict = field(default_factory=dict)     # "derivation/formula" -> source locator
+
+
+def newton_cotes(d) -> bool:
+    """Whether the derivation's own method is a Newton–Cotes rule (it speaks of Simpson's rule)."""
+    text = " ".join([d.title, d.summary] + [p.excerpt for p in d.printed] + [s.note for s in d.steps])
+    return "simpson" in text.lower()
+
+
+def methods_for(w, d, digits=DIGITS, orders=FLOAT64_ORDERS, panels=PANELS) -> tuple:
+    """The methods a witness is measured with (see the module docstring)."""
+    if isinstance(w, (SectionIntegral, PlaneSections)):
+        ms = [TanhSinh(f"tanh-sinh, {p} digits", 0, "mpmath", p) for p in digits]
+        ms += [GaussLegendreMP(f"Gauss-Legendre (mpmath), {p} digits", 0, "mpmath", p) for p in digits]
+        ms += [GaussLegendre64(f"Gauss-Legendre n={n}, float64", 0, "float64", 15, n) for n in orders]
+        if newton_cotes(d):
+            ms += [Composite(f"{rule} {n} panels, float64", 0, "float64", 15, rule, n)
+                   for rule in ("Simpson", "trapezoid") for n in panels]
+        return tuple(ms)
+    if isinstance(w, HullWitness):
+        return (ExactHull(),) + tuple(HullSlices(n, 15, 0) for n in (1, 2, 3)) + tuple(
+            HullSlices(3, p, 0) for p in digits if p > 15)
+    if isinstance(w, Computed):
+        return tuple(Precision(p, 0) for p in digits if p < REFERENCE_DPS)
+    return ()
+
+
+def _method_name(m):
+    if isinstance(m, Composite):
+        return m.name.replace("Simpson", "Simpson,").replace("trapezoid", "trapezoid,")
+    return m.name
+
+
+def _vector(value):
+    values = value if isinstance(value, (tuple, list)) else [value]
+    return [mpmath.mpf(v) if not isinstance(v, sp.Basic) else mpmath.mpf(sp.N(v, REFERENCE_DPS + 10))
+            for v in values]
+
+
+def _rel_error(value, ref):
+    with mpmath.workdps(REFERENCE_DPS + 20):
+        v = _vector(value)
+        scale = max(abs(r) for r in ref)
+        err = max(abs(a - b) for a, b in zip(v, ref))
+        return float(err / scale if scale > mpmath.mpf(10) ** (20 - REFERENCE_DPS) else err)
+
+
+def _valid_reading(p):
+    if p.erratum is None:
+        return p.reading
+    return p.erratum.corrected_reading
+
+
+def _exact_reference(chain, params):
+    """The first member of *chain* that is a closed exact number at *params*, at 110 digits."""
+    for m in members(chain):
+        v = m.xreplace(params) if isinstance(m, sp.MatrixBase) else sp.sympify(m).xreplace(params)
+        if v.free_symbols or v.has(sp.Float):
+            continue
+        comps = list(v) if isinstance(v, sp.MatrixBase) else [v]
+        with mpmath.workdps(REFERENCE_DPS + 20):
+            try:
+                vals = [mpmath.mpf(sp.Float(sp.N(c, REFERENCE_DPS + 10), REFERENCE_DPS + 10)._mpf_) for c in comps]
+            except TypeError:
+                continue            # not a real number
+        return vals
+    return None
+
+
+def _is_number(m, params):
+    return not m.xreplace(params).free_symbols
+
+
+def _results(d):
+    results = {}
+    for s in d.steps:
+        if s.result is not None:
+            results[s.result] = _substitute(members(s.claim)[-1], results)
+    return results
+
+
+def _timed(run, repeats):
+    """Value and median wall time of *run*; cheap runs are repeated."""
+    times, value = [], None
+    while True:
+        t0 = time.perf_counter()
+        value = run()
+        times.append(time.perf_counter() - t0)
+        if len(times) >= repeats or sum(times) > 0.05:
+            return value, statistics.median(times)
+
+
+def _section_integral(w, case):
+    """``method -> value`` for a :class:`SectionIntegral` case, the integrands built once."""
+    lo, hi = (sp.sympify(b).xreplace(case.params) for b in w.bounds)
+    origin = lo if w.origin is None else sp.sympify(w.origin).xreplace(case.params)
+    area = w.area.xreplace(case.params)
+    with mpmath.workdps(REFERENCE_DPS + 20):
+        points = [mpmath.mpf(sp.N(b, REFERENCE_DPS + 20)) for b in (lo, hi)]
+    built = {mod: (sp.lambdify(w.z, area, mod), sp.lambdify(w.z, (w.z - origin) * area, mod))
+             for mod in ("mpmath", "numpy")}
+
+    def value(method):
+        f, g = built["mpmath" if method.arithmetic == "mpmath" else "numpy"]
+        with mpmath.workdps(method.dps):
+            volume = method.integrate(f, points)[0]
+            if w.quantity == "volume":
+                return volume
+            moment = method.integrate(g, points)[0]
+            return moment if w.quantity == "moment" else moment / volume
+    return value
+
+
+def _plane_sections(w, case):
+    """``method -> value`` for a :class:`PlaneSections` case, the chord widths built once."""
+    planes = []
+    for plane in w.planes:
+        at = {**case.params, w.position: sp.sympify(plane).xreplace(case.params)}
+        with mpmath.workdps(REFERENCE_DPS + 20):
+            chord = [mpmath.mpf(sp.N(sp.sympify(e).xreplace(at), REFERENCE_DPS + 20)) for e in w.chord]
+        planes.append((sp.lambdify(w.across, w.width.xreplace(at), "mpmath"), chord))
+
+    def value(method):
+        with mpmath.workdps(method.dps):
+            areas = [method.integrate(f, chord)[0] for f, chord in planes]
+            params = {q: mpmath.mpf(sp.N(v, method.dps + 10)) for q, v in case.params.items()}
+            return w.combine(areas, params)
+    return value
+
+
+def _runner(w, case):
+    if isinstance(w, SectionIntegral):
+        return _section_integral(w, case)
+    if isinstance(w, PlaneSections):
+        return _plane_sections(w, case)
+    if isinstance(w, Computed):
+        def value(method):
+            with mpmath.workdps(method.dps):
+                return w.compute(case, method.dps)
+        return value
+    return lambda method: w.measure(case, method)
+
+
+def _measure(runners, method, repeats):
+    return _timed(lambda: [r(method) for r in runners], repeats)
+
+
+def _witness_targets(d, w, results):
+    """Targeted formula -> reference per case (or None where none is exact)."""
+    targets = {}
+    for p in d.printed:
+        if p.name not in w.targets:
+            continue
+        chain = _valid_reading(p)
+        if chain is None:
+            continue
+        chain = _resolved(chain, results)
+        if not any(_is_number(m, case.params) for m in members(chain) for case in w.cases):
+            continue            # the witness measures something the reading states only with free symbols
+        targets[p.name] = [_exact_reference(chain, case.params) for case in w.cases]
+    return targets
+
+
+def _reference_run(w):
+    if isinstance(w, Computed):
+        return Precision(REFERENCE_DPS, 0)
+    if isinstance(w, HullWitness):
+        return ExactHull()
+    return TanhSinh(f"tanh-sinh, {REFERENCE_DPS} digits", 0, "mpmath", REFERENCE_DPS)
+
+
+def bench_derivation(d, bench: Bench, digits=DIGITS, orders=FLOAT64_ORDERS, panels=PANELS, repeats=3,
+                     progress=None):
+    """Measure every witness of derivation *d* into *bench*."""
+    results = _results(d)
+    for w in d.witnesses:
+        family = next((f for cls, f in FAMILIES.items() if isinstance(w, cls)), None)
+        if family is None or isinstance(w, ConvergenceOrder):
+            continue
+        targets = _witness_targets(d, w, results)
+        if not targets:
+            continue
+        methods = list(methods_for(w, d, digits, orders, panels))
+        missing = any(r is None for refs in targets.values() for r in refs)
+        ref_method = _reference_run(w)
+        runs, runners = {}, [_runner(w, case) for case in w.cases]
+        for m in methods + ([ref_method] if missing and ref_method.name not in map(_method_name, methods) else []):
+            try:
+                runs[_method_name(m)] = _measure(runners, m, repeats) + ("",)
+            except (ZeroDivisionError, ValueError, ArithmeticError, mpmath.libmp.NoConvergence) as exc:
+                runs[_method_name(m)] = (None, 0.0, f"{type(exc).__name__}: {exc}"[:80])
+        if missing:
+            ref_values = runs[ref_method.name][0]
+            for name, refs in targets.items():
+                kind = "exact" if all(r is not None for r in refs) else f"{REFERENCE_DPS} digits"
+                bench.references[f"{d.id}/{name}"] = kind
+                targets[name] = [r if r is not None else _vector(v) for r, v in zip(refs, ref_values)]
+        else:
+            for name in targets:
+                bench.references[f"{d.id}/{name}"] = "exact"
+        for name in targets:
+            bench.locators[f"{d.id}/{name}"] = next(p.locator for p in d.printed if p.name == name)
+        for m in methods:
+            values, seconds, note = runs[_method_name(m)]
+            errors = {}
+            for name, refs in targets.items():
+                errors[name] = None if values is None else max(_rel_error(v, r) for v, r in zip(values, refs))
+            bench.measurements.append(Measurement(d.id, d.source, family, w.name, _method_name(m),
+                                                  seconds, errors, note))
+        if progress:
+            progress(f"{d.id}: {w.name} ({len(methods)} methods)")
+
+
+def run_bench(selector=None, *, quick=False, progress=None) -> Bench:
+    """Benchmark every witness of the derivations *selector* picks; ``quick``
+    measures fewer methods (15 and 30 digits, three float64 orders, two panel counts)."""
+    bench = Bench()
+    kwargs = dict(digits=(15, 30), orders=(2, 4, 8), panels=(4, 16), repeats=1) if quick else {}
+    for did in select(selector):
+        d, _ = load(did)
+        bench_derivation(d, bench, progress=progress, **kwargs)
+    return bench

@@ -1,0 +1,235 @@
+"""The numerics benchmark (``symfloat bench``): docs/numerics.md and docs/figures/numerics-*.png.
+
+1. error against run time of every witness across methods and precisions (:mod:`.bench`);
+2. convergence orders against theory, kinks and their remedy (:mod:`.orders`);
+3. stiff and extreme cases of the closed forms, with stable equivalents (:mod:`.forms`).
+
+Derivations and their witnesses are found through the registry, so a new
+derivation is benchmarked without being named here.
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import matplotlib.pyplot as plt
+import sympy as sp
+
+from ..report.files import write_if_changed
+from .bench import FAMILIES, Bench, run_bench
+from .forms import CATASTROPHIC, STABLE_TOLERANCE, evaluate, forms, scan
+from .orders import HEELS, PANELS, convergence_witnesses, gauss_legendre_degrees, kink_study, registry_orders
+from .report import (THRESHOLDS, cheapest, family_figure, fingerprint, fmt_err, fmt_time, method_rows,
+                     write_png_if_changed)
+
+__all__ = ["generate", "QUICK_SELECTORS"]
+
+QUICK_SELECTORS = ("graefe-s2", "metazentrum")
+QUICK_KINK_PANELS = (4, 8, 16, 32, 64, 128)
+QUICK_SCAN = "hasab"
+
+
+def _slug(text):
+    return "".join(c if c.isalnum() else "-" for c in text.lower()).strip("-")
+
+
+def _table(head, rows):
+    out = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    out += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
+    return "\n".join(out)
+
+
+def _section_bench(bench, figures):
+    n_exact = sum(v == "exact" for v in bench.references.values())
+    lines = ["## 1. Error against run time", "",
+             "Every witness of every derivation is re-run with every method that applies to it: mpmath tanh-sinh "
+             "and Gauss–Legendre at 15, 30, 50 and 100 digits and fixed-order Gauss–Legendre in float64 for "
+             "section integrals and plane sections (plus composite Simpson and trapezoid in float64 where the "
+             "source's own method is Simpson's rule); exact hull faces and Gauss–Legendre slices for hulls; the "
+             "witness's own computation at 15 (float64), 30 and 50 digits for computed witnesses (100 digits only "
+             "where no exact reference exists). The error is relative, against the exact value of the formula's "
+             "valid reading (the print, or its correction where an erratum is declared) at the case's parameters, "
+             f"else against the 100-digit measurement: {n_exact} formulas have an exact reference, "
+             f"{len(bench.references) - n_exact} a 100-digit one (the witness's own 100-digit run: tanh-sinh for "
+             "quadrature, which then shows error 0; for computed witnesses that run is not listed). Times are "
+             "wall times of all cases of a witness, median of repeats (they vary from run to run, and so may "
+             "the choice of the cheapest method; nothing "
+             "else does). A worst error that does not fall with the precision is the witness's own approximation "
+             "(the cylinder as a polygon of many sides, a limit by Richardson extrapolation), not rounding.", ""]
+    for family in FAMILIES.values():
+        ms = [m for m in bench.measurements if m.family == family]
+        if not ms:
+            continue
+        name = f"numerics-{_slug(family)}.png"
+        figures[name] = family_figure(family, ms)
+        lines += [f"### {family}", "", f"![{family}](figures/{name})", "",
+                  _table(("method", "witnesses", "worst rel. error", "median rel. error", "median time"),
+                         [(r[0], r[1], fmt_err(r[2]), fmt_err(r[3]), fmt_time(r[4])) for r in method_rows(ms)]), ""]
+    lines += ["### Per source", ""]
+    for source in dict.fromkeys(m.source for m in bench.measurements):
+        ms = [m for m in bench.measurements if m.source == source]
+        lines += [f"#### {source}", "",
+                  _table(("method", "witnesses", "worst rel. error", "median rel. error", "median time"),
+                         [(r[0], r[1], fmt_err(r[2]), fmt_err(r[3]), fmt_time(r[4])) for r in method_rows(ms)]), ""]
+    lines += ["### Cheapest method per formula", "",
+              "The fastest measurement (method and witness) whose relative error is within 1e-12 and 1e-30 "
+              "(methods compared by their median time over the witness family; among those within a factor 2 "
+              "of the fastest, the lowest precision and fewest nodes, so that timing noise does not change the "
+              "choice); the time shown is the witness's own; "
+              "'none' when no method reaches it (float64-only witnesses, or a 100-digit reference that is itself "
+              "the only run at that precision).", ""]
+    best = {t: cheapest(bench, t) for t in THRESHOLDS}
+    for source in dict.fromkeys(m.source for m in bench.measurements):
+        keys = list(dict.fromkeys(f"{m.derivation}/{n}" for m in bench.measurements if m.source == source
+                                  for n in m.errors))
+        rows = []
+        for key in keys:
+            cells = [key, bench.locators.get(key, ""), bench.references.get(key, "")]
+            for t in THRESHOLDS:
+                b = best[t][key]
+                cells.append("none" if b is None else f"{b[0]} ({b[1]}, {fmt_time(b[2])})")
+            rows.append(cells)
+        lines += [f"#### {source}", "", _table(("formula", "locator", "reference", "≤ 1e-12", "≤ 1e-30"), rows), ""]
+    return lines
+
+
+def _orders_figure(rows, kinks, conv):
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    smooth = next(r for r in rows if r.witness == "exponential")
+    ax.loglog(PANELS, smooth.simpson_errors, "d-", label=f"Simpson, exp on [0, 1] (smooth): {smooth.simpson:.2f}")
+    chord = next(r for r in rows if r.witness == "circle chord")
+    ax.loglog(PANELS, chord.simpson_errors, "o-", label=f"Simpson, circle chord (√ zero at the ends): "
+                                                         f"{chord.simpson:.2f}")
+    for k, mark in zip(kinks, ("s-", "^-")):
+        ax.loglog(k.panels, k.simpson, mark, label=f"Simpson, cube {k.heel}: {k.simpson_order:.2f}")
+        ax.loglog(k.panels, k.trapezoid, mark.replace("-", ":"), label=f"trapezoid, cube {k.heel}: "
+                                                                       f"{k.trapezoid_order:.2f}")
+    ax.set_xlabel("panels")
+    ax.set_ylabel("relative error (split at the kinks: exact, not shown)")
+    ax.set_title("Measured orders (slope of the fit)")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fp = fingerprint(_orders_figure, [(r.witness, [fmt_err(e) for e in r.simpson_errors]) for r in rows],
+                     [(k.heel, [fmt_err(e) for e in k.simpson + k.trapezoid]) for k in kinks], conv)
+    return fig, fp
+
+
+def _fo(x):
+    return "exact" if x is None else f"{x:.2f}"
+
+
+def _section_orders(selector, figures, progress, quick):
+    progress("orders: Gauss–Legendre degrees, registry integrands, kinks")
+    degrees = gauss_legendre_degrees()
+    conv = convergence_witnesses(selector)
+    rows = registry_orders(selector)
+    kinks = [kink_study(h, panels=QUICK_KINK_PANELS) if quick else kink_study(h) for h in HEELS]
+    figures["numerics-orders.png"] = _orders_figure(rows, kinks, conv)
+    lines = ["## 2. Convergence orders", "",
+             "Orders are least-squares slopes of log(error) against log(h) at 40 digits (or in exact rational "
+             "arithmetic for the cube), over the panel counts shown; 'exact' means the rule is exact on that "
+             "integrand (errors at the rounding floor).", "",
+             "![orders](figures/numerics-orders.png)", "",
+             "### Gauss–Legendre: degree of exactness", "",
+             _table(("nodes n", "highest degree integrated exactly (50 digits)", "theory 2n − 1"),
+                    [(n, k, 2 * n - 1) for n, k in degrees]), "",
+             "### The registry's convergence witnesses", "",
+             _table(("derivation", "witness", "integrand", "Simpson: theory", "Simpson: measured",
+                     "trapezoid (theory 2): measured"),
+                    [(c[0], c[1], c[2], c[3], f"{c[4]:.2f}", _fo(c[5])) for c in conv]), "",
+             "### Simpson and trapezoid on every quadrature witness's integrand (first case)", "",
+             _table(("derivation", "witness", "integrand", "theory", "Simpson", "trapezoid"),
+                    [(r.derivation, r.witness, f"`{r.integrand}`", r.theory, _fo(r.simpson), _fo(r.trapezoid))
+                     for r in rows]), "",
+             "### Kinks: the water plane passing a vertex", "",
+             "A unit cube turned by a rational rotation; its displacement below a draught by quadrature of the "
+             "section area A(z) from the lowest vertex, against the exact volume of the clipped hull. The draught "
+             "puts the first vertex height at 2/3 of the interval. Simpson and trapezoid run in exact rational "
+             "arithmetic (pure truncation error); 'split' applies Simpson on each piece between vertex heights "
+             "(the same total panel count, at least two per piece).", ""]
+    smooth = next(r for r in rows if r.witness == "exponential")
+    lines += [f"Simpson measures {_fo(smooth.simpson)} on the smooth exp; across the kinks it falls to "
+              + " and ".join(f"{_fo(k.simpson_order)} ({k.heel})" for k in kinks)
+              + ": one panel pair straddles each kink, where the rule's error is of the order of the jump times "
+              "h^(j+1) for a jump in the j-th derivative. The trapezoid rule keeps its 2 (its own error is h^2 "
+              "already). Split at the vertex heights every piece is a quadratic, which Simpson integrates exactly "
+              "and Gauss–Legendre with n >= 2 to rounding.", ""]
+    for k in kinks:
+        lines += [f"#### Cube {k.heel}", "",
+                  f"Draught {k.draught} (heights from the cube's frame); vertex heights inside: "
+                  f"{', '.join(str(c) for c in k.kinks)}; "
+                  f"exact displacement {k.exact}. Measured order: Simpson {_fo(k.simpson_order)} "
+                  f"(4 on smooth integrands), trapezoid {_fo(k.trapezoid_order)}.", "",
+                  _table(("panels", "Simpson, whole draught", "trapezoid, whole draught", "Simpson, split at kinks"),
+                         [(n, fmt_err(a), fmt_err(b), fmt_err(c))
+                          for n, a, b, c in zip(k.panels, k.simpson, k.trapezoid, k.simpson_split)]), "",
+                  _table(("Gauss–Legendre n (float64)", "whole draught", "split at kinks"),
+                         [(n, fmt_err(a), fmt_err(b)) for n, a, b in k.gauss]), ""]
+    return lines
+
+
+def _section_forms(selector, progress):
+    progress("stiff cases: closed forms, float64 against 50 digits")
+    lines = ["## 3. Stiff and extreme cases of the closed forms", "",
+             "Each closed form is evaluated as printed in float64 and at 50 digits (the same float64 inputs, taken "
+             "exactly), over the sweeps shown. 'digits lost' is log10(worst relative error / 2^-53); more than 6 is "
+             f"flagged catastrophic (relative error above {CATASTROPHIC:.1e}). Each flagged form has a stable "
+             f"equivalent, tested to stay within {STABLE_TOLERANCE:g} over every sweep.", ""]
+    rows = []
+    for f in forms():
+        r = evaluate(f)
+        for label, (e, p) in r.naive.items():
+            lost = max(0.0, math.log10(e / 2.0 ** -53)) if e > 0 else 0.0
+            st = r.stable.get(label)
+            rows.append((f.name, f.locator, label, fmt_err(e), f"{lost:.1f}",
+                         "**yes**" if e > CATASTROPHIC else "no",
+                         ", ".join(f"{v:.17g}" for v in p) if p else "",
+                         f.stable_text or "—", fmt_err(st[0]) if st else "—"))
+    lines += [_table(("form", "source", "sweep", "worst rel. error (printed)", "digits lost", "catastrophic",
+                      "worst at", "stable form", "worst rel. error (stable)"), rows), ""]
+    progress("stiff cases: scanning every closed form in the density")
+    found = scan(selector)
+    flagged = [r for r in found if r.worst > CATASTROPHIC]
+    lines += ["### Every closed form in the density, found in the derivations", "",
+              f"All {len(found)} distinct closed forms in the density (s, rho) among the valid readings of the "
+              "derivations (with derived quantities inserted, as the library stores them: SymPy distributes "
+              "rational factors, so b(1 - s)/2 is held as b/2 - b s/2), evaluated with the density 1e-15 ... 1e-1 "
+              "from 0 and from 1 and the other parameters at the middle of their sampling intervals. "
+              f"{len(found) - len(flagged)} lose at most 6 digits; the {len(flagged)} below lose more, and the first "
+              "of SymPy's factor, cancel, together, expand that stays within the stable tolerance is given.", "",
+              _table(("derivation", "formula", "form as stored", "worst rel. error", "at density", "stable rewrite",
+                      "its worst rel. error"),
+                     [(r.derivation, r.formula, f"`{sp.sstr(r.expr)}`", fmt_err(r.worst), f"{r.at:.17g}",
+                       r.rewrite and f"`{r.rewrite}`: `{sp.sstr(getattr(sp, r.rewrite)(r.expr))}`" or "none found",
+                       fmt_err(r.rewrite_worst) if r.rewrite else "—") for r in flagged]), ""]
+    return lines
+
+
+def generate(docs=Path("docs"), *, quick=False, progress=lambda msg: None) -> list[Path]:
+    """Run the benchmark and write ``docs/numerics.md`` and its figures; return the files written
+    (timings alone never cause a write).  ``quick`` benchmarks only ``QUICK_SELECTORS`` with fewer methods."""
+    docs = Path(docs)
+    selectors = QUICK_SELECTORS if quick else (None,)
+    bench = Bench()
+    for sel in selectors:
+        part = run_bench(sel, quick=quick, progress=progress)
+        seen = {(m.derivation, m.witness) for m in bench.measurements}
+        bench.measurements += [m for m in part.measurements if (m.derivation, m.witness) not in seen]
+        bench.references.update(part.references)
+        bench.locators.update(part.locators)
+    figures = {}
+    lines = ["# Numerics of the witnesses", "",
+             "Generated by `symfloat bench`" + (" --quick" if quick else "") + ". Three questions: how fast each "
+             "method reaches a given accuracy on the witnesses of the library, whether the rules converge at "
+             "their theoretical orders (and what a kink does), and which closed forms lose digits in float64 at "
+             "the ends of their ranges.", ""]
+    lines += _section_bench(bench, figures)
+    lines += _section_orders(selectors[0] if quick else None, figures, progress, quick)
+    lines += _section_forms(QUICK_SCAN if quick else None, progress)
+    written = []
+    if write_if_changed(docs / "numerics.md", "\n".join(lines).rstrip() + "\n"):
+        written.append(docs / "numerics.md")
+    for name, (fig, fp) in figures.items():
+        if write_png_if_changed(docs / "figures" / name, fig, fp):
+            written.append(docs / "figures" / name)
+    return written

@@ -1,0 +1,150 @@
+"""The numerics benchmark (`symfloat bench`): structure and accuracy, never timings."""
+import math
+
+import pytest
+from PIL import Image
+
+from symfloat.cli import main
+from symfloat.engine.witness import SectionIntegral
+from symfloat.numerics.bench import methods_for, newton_cotes, run_bench
+from symfloat.numerics.forms import CATASTROPHIC, STABLE_TOLERANCE, evaluate, forms, scan
+from symfloat.numerics.orders import (HEELS, convergence_witnesses, gauss_legendre_degrees, kink_study,
+                                      registry_orders)
+from symfloat.numerics.report import pareto, write_png_if_changed
+from symfloat.registry import load
+
+
+@pytest.fixture(scope="module")
+def quick_docs(tmp_path_factory):
+    out = tmp_path_factory.mktemp("numerics")
+    assert main(["bench", "--quick", "--quiet", "--output", str(out)]) == 0
+    return out
+
+
+def test_quick_command_writes_the_document_and_figures(quick_docs):
+    text = (quick_docs / "numerics.md").read_text(encoding="utf-8")
+    for heading in ("## 1. Error against run time", "### Cheapest method per formula", "## 2. Convergence orders",
+                    "### Kinks", "## 3. Stiff and extreme cases"):
+        assert heading in text
+    figures = sorted(p.name for p in (quick_docs / "figures").glob("numerics-*.png"))
+    assert "numerics-orders.png" in figures and "numerics-section-area-quadrature.png" in figures
+    for name in figures:
+        assert f"figures/{name}" in text
+        assert Image.open(quick_docs / "figures" / name).text["Fingerprint"]
+
+
+def test_figure_with_the_same_fingerprint_is_not_rewritten(tmp_path):
+    import matplotlib.pyplot as plt
+    path = tmp_path / "f.png"
+    assert write_png_if_changed(path, plt.figure(), "abc")
+    assert not write_png_if_changed(path, plt.figure(), "abc")
+    assert write_png_if_changed(path, plt.figure(), "abd")
+
+
+def test_pareto_front():
+    pts = [(1.0, 1e-3), (2.0, 1e-10), (3.0, 1e-5), (0.5, 1e-1), (4.0, 1e-30)]
+    assert pareto(pts) == [3, 0, 1, 4]
+
+
+@pytest.fixture(scope="module")
+def graefe_bench():
+    return run_bench("graefe-s2", quick=True)
+
+
+def test_every_witness_is_measured_with_every_applicable_method(graefe_bench):
+    d, _ = load("graefe-s2-volumes-simpson")
+    assert newton_cotes(d)          # Graefe §2 integrates by Simpson's rule: Newton–Cotes rules are benchmarked
+    for w in d.witnesses:
+        if isinstance(w, SectionIntegral):
+            names = {m.method for m in graefe_bench.measurements if m.witness == w.name}
+            assert {"Simpson, 4 panels, float64", "trapezoid, 16 panels, float64", "tanh-sinh, 30 digits",
+                    "Gauss-Legendre n=8, float64"} <= names
+            assert len(methods_for(w, d)) == 27   # 4 + 4 mpmath precisions, 7 float64 orders, 12 composite rules
+
+
+def test_accuracy_of_the_methods_against_exact_references(graefe_bench):
+    assert all(v == "exact" for k, v in graefe_bench.references.items() if k.startswith("graefe-s2"))
+    for m in graefe_bench.measurements:
+        if m.derivation != "graefe-s2-volumes-simpson":
+            continue
+        worst = max(m.errors.values())
+        if m.method == "tanh-sinh, 30 digits" or m.method == "mpmath, 30 digits":
+            assert worst < 1e-28, (m.witness, m.method, worst)
+        if m.method.startswith("Simpson") and m.witness.startswith("slab"):
+            assert worst < 1e-14    # the slabs' sections are cubic: Simpson is exact
+
+
+def test_gauss_legendre_is_exact_to_degree_2n_minus_1():
+    assert gauss_legendre_degrees(range(1, 9)) == [(n, 2 * n - 1) for n in range(1, 9)]
+
+
+def test_measured_orders_match_theory():
+    for _, _, _, expected, simpson, trapezoid in convergence_witnesses("graefe-s2"):
+        assert abs(simpson - expected) < 0.15 and abs(trapezoid - 2) < 0.1
+    rows = {r.witness: r for r in registry_orders("graefe-s2")}
+    assert rows["sphere-volume"].simpson is None and abs(rows["sphere-volume"].trapezoid - 2) < 0.05
+    assert rows["paraboloid-volume"].trapezoid is None          # linear section: both rules exact
+    chord = rows["circle chord"]                                 # square-root zeros at the ends: h^1.5
+    assert abs(chord.simpson - 1.5) < 0.05 and abs(chord.trapezoid - 1.5) < 0.05
+
+
+@pytest.mark.parametrize("heel, order", list(zip(HEELS, (2.0, 3.0))))
+def test_kink_lowers_simpson_and_splitting_restores_it(heel, order):
+    k = kink_study(heel, panels=(4, 8, 16, 32, 64, 128), gauss=(2, 4))
+    assert abs(k.simpson_order - order) < 0.1
+    assert abs(k.trapezoid_order - 2) < 0.1
+    assert k.kinks and all(e == 0 for e in k.simpson_split)      # piecewise quadratic: exact once split
+    assert all(split < 1e-15 < whole for _, whole, split in k.gauss)
+
+
+@pytest.fixture(scope="module")
+def stiff():
+    return [evaluate(f) for f in forms()]
+
+
+def test_catastrophic_forms_are_flagged(stiff):
+    flagged = {r.form.locator for r in stiff if r.catastrophic}
+    assert flagged == {"scheeffer-vi-cf/89a", "scheeffer-vi-cf/cube-78", "scheeffer-vi-ab/density-range",
+                       "hasab/upright-roots", "scheeffer-vi-cf/83"}
+    assert not next(r for r in stiff if r.form.name.startswith("n-gon moment")).catastrophic
+
+
+def test_stable_forms_stay_within_1e_13(stiff):
+    for r in stiff:
+        if r.catastrophic:
+            assert r.form.stable is not None, r.form.name
+        if r.form.stable is not None:
+            assert r.worst_stable <= STABLE_TOLERANCE, (r.form.name, r.stable)
+        else:
+            assert r.worst_naive <= STABLE_TOLERANCE
+
+
+def test_the_printed_forms_lose_the_digits_reported(stiff):
+    excess = next(r for r in stiff if r.form.name.startswith("excess"))
+    assert excess.worst_naive > 1                      # n = 10^6: alpha^4/180 ~ 8e-24 is below float64's resolution
+    cube = next(r for r in stiff if "(78)" in r.form.name)
+    assert math.log10(cube.worst_naive / 2 ** -53) > 6
+    assert CATASTROPHIC == pytest.approx(1.11e-10, rel=1e-2)
+
+
+def test_scan_finds_the_density_forms_and_their_rewrites():
+    rows = scan("hasab")
+    assert len(rows) >= 5
+    flagged = {r.formula: r for r in rows if r.worst > CATASTROPHIC}
+    # E0 = l g (rho - rho^2)/2, held expanded: at rho -> 1 the difference loses ~8 digits; factored it does not
+    assert "E0-total" in flagged and flagged["E0-total"].rewrite == "factor"
+    assert all(r.rewrite and r.rewrite_worst <= STABLE_TOLERANCE for r in flagged.values())
+
+
+def test_cheapest_prefers_lower_precision_among_near_equal_times():
+    from symfloat.numerics.bench import Bench, Measurement
+    from symfloat.numerics.report import cheapest
+
+    def meas(method, seconds, error):
+        return Measurement("d", "src", "fam", "w", method, seconds, {"f": error})
+    # one witness: its times are the family medians
+    bench = Bench([meas("mpmath, 50 digits", 0.010, 1e-50), meas("mpmath, 30 digits", 0.012, 1e-31),
+                   meas("float64", 0.001, 1e-16), meas("tanh-sinh, 30 digits", 0.5, 1e-31)])
+    assert cheapest(bench, 1e-30)["d/f"][0] == "mpmath, 30 digits"     # within a factor 2: lower precision
+    assert cheapest(bench, 1e-12)["d/f"][0] == "float64"
+    assert cheapest(bench, 1e-60)["d/f"] is None
