@@ -28,7 +28,7 @@ from .local import local
 from .solve import Solution, body_scale
 from .symmetry import box_group, planar_group, prism_group
 
-__all__ = ["predicting", "cover"]
+__all__ = ["predicting", "cover", "symmetry_group"]
 
 MATCH_RAD = 1e-6
 
@@ -52,7 +52,7 @@ def predicting(body: str) -> list[str]:
     return [m.replace("_", "-") for m in module_names() if body in _declared_bodies(m)]
 
 
-def _group(scene: Scene):
+def symmetry_group(scene: Scene):
     if scene.body in ("cube", "box"):
         return box_group(scene.dims)
     if scene.body == "prism":
@@ -93,7 +93,7 @@ def cover(solution: Solution, cache: ReportCache | None = None) -> tuple[list[st
             if report.id not in reports:
                 evaluated.append(report.id)
                 reports[report.id] = report
-    group = _group(scene)
+    group = symmetry_group(scene)
     unmatched = []
     for did in ids:
         d, _ = load(did)
