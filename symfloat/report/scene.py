@@ -27,6 +27,7 @@ def scene_record(solution, evaluated, unmatched, seconds) -> dict:
             "up": [round(x, 15) for x in e.up],
             "tilt_deg": round(e.tilt_deg, 12),
             "stability": e.stability,
+            "stability_evidence": e.stability_evidence,
             "family": e.family,
             **({"ring_shape": e.ring_shape, "ring_length_rad": e.ring_length} if e.family == "ring" else {}),
             "potential": e.potential,

@@ -25,6 +25,7 @@ from .symmetry import orbit, representative, same_class
 __all__ = ["Critical", "newton", "critical_points", "poincare_hopf_sum"]
 
 MAX_STEP = 0.3          # radians: Newton steps are capped (a trust region)
+MIN_FAMILY = 1e-3       # radians: a family of equilibria shorter than this is not reported as one
 FLAT = 2e-14            # relative to the size of the body: a ring's potential is constant to rounding
 ZERO_EIGEN = 1e-8       # relative to the size of the body: a null direction of the Hessian
 
@@ -32,13 +33,12 @@ ZERO_EIGEN = 1e-8       # relative to the size of the body: a null direction of 
 @dataclass(eq=False)
 class Critical:
     """One symmetry class of critical points: representative ``u``, potential ``U``,
-    Hessian eigenvalues ``eigen`` (ascending) and eigenvectors, residual gradient,
+    Hessian eigenvalues ``eigen`` (ascending), residual gradient,
     error bound ``error_rad`` and how it was obtained, the Hessian's Lipschitz constant,
     ``orbit`` size, ``ring`` flag."""
     u: np.ndarray
     U: float
     eigen: tuple
-    vectors: np.ndarray
     gradient: float
     error_rad: float
     orbit: int = 1
@@ -95,7 +95,7 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int) -> tuple[flo
     exact = Polyhedron(_faces_at(poly, refine_dps), refine_dps)
     residual = float(np.linalg.norm(gradient_at(exact, c.u, s)))
     lipschitz = 0.0
-    for v in c.vectors:
+    for v in local(poly, c.u, s).eigen()[1]:        # eigenvectors at the representative itself
         plus, minus = (local(poly, tangent_step(np.asarray(c.u), sign * STEP * v), s) for sign in (1, -1))
         H = [x.basis @ x.hessian @ x.basis.T for x in (plus, minus)]
         lipschitz = max(lipschitz, float(np.linalg.norm(H[0] - H[1], 2)) / (2 * STEP))
@@ -118,6 +118,13 @@ def poincare_hopf_sum(points: list[Critical]) -> int:
     return total
 
 
+def _nearest_copy(u, group, floor: float = 1e-3) -> float:
+    """Angle to the nearest symmetric copy of *u* farther than *floor* (a copy closer than that is
+    the same position seen through a mirror it almost lies on, not another point of a family)."""
+    angles = [math.acos(max(-1.0, min(1.0, float(np.dot(g @ u, u))))) for g in group]
+    return min((a for a in angles if a > floor), default=math.pi)
+
+
 def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
     """Step along the null direction (by less than the distance to the nearest symmetric copy of
     the point, so a small ring around an axis is not jumped over) and let Newton settle: on a
@@ -125,10 +132,7 @@ def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
     lam_null, v_null = min(pairs, key=lambda p: abs(p[0]))
     if abs(lam_null) > 1e-6 * scale:
         return False
-    copies = [g @ loc.u for g in group]
-    nearest = min((math.acos(max(-1.0, min(1.0, float(np.dot(c, loc.u))))) for c in copies
-                   if np.linalg.norm(c - loc.u) > 1e-12), default=math.pi)
-    delta = min(0.03, nearest / 4)
+    delta = min(0.03, _nearest_copy(loc.u, group) / 4)
     for step in (delta, -delta):
         moved = tangent_step(loc.u, step * v_null)
         other, ok = newton(poly, moved, s, scale)
@@ -143,10 +147,7 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
     ``("closed", length)`` when the walk comes back to *u*, else ``("arc", length)`` with the
     length (radians on the sphere) of the arc, both directions summed."""
     start = local(poly, u, s)
-    copies = [g @ start.u for g in group]
-    nearest = min((math.acos(max(-1.0, min(1.0, float(np.dot(c, start.u))))) for c in copies
-                   if np.linalg.norm(c - start.u) > 1e-12), default=math.pi)
-    delta = min(0.005, nearest / 4)      # a gap in the family narrower than this is not seen
+    delta = min(0.005, _nearest_copy(start.u, group) / 4)   # a gap in the family narrower than this is not seen
     total = 0.0
     for direction in (1, -1):
         loc, previous = start, None
@@ -189,12 +190,12 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
         if match and not ring and match[0].gradient <= g:
             continue
         found = [c for c in found if not any(c is m for m in match)]
-        found.append(Critical(representative(loc.u, group), loc.U, eigen,
-                              np.stack([p[1] for p in pairs]), g, err, len(orbit(loc.u, group)), ring))
+        found.append(Critical(representative(loc.u, group), loc.U, eigen, g, err, len(orbit(loc.u, group)), ring))
     for c in found:
         if c.ring:
             c.shape, c.length = trace_family(poly, c.u, s, scale, group)
-            c.ring = c.length > 0          # a "ring" the walk cannot follow is an isolated degenerate point
+            # a "ring" the walk cannot follow (or only for a few steps) is an isolated degenerate point
+            c.ring = c.length >= MIN_FAMILY
         if not c.ring:
             c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps)
     # a point of a ring found before the ring was recognised: same potential, not an equilibrium

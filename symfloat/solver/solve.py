@@ -27,7 +27,7 @@ from .bodies import centred_polygon, polyhedron
 from .critical import critical_points, distinct_seeds, poincare_hopf_sum, sphere_seeds
 from .cylinder import cylinder_slice
 from .errors import STEP, eigenvalue_error, equilibrium_error
-from .local import local, waterplane_polygon
+from .local import local, tangent_step, waterplane_polygon
 from .planar import roots
 from .refine import planar_residual
 from .symmetry import box_group, orbit, planar_group, prism_group, representative
@@ -50,6 +50,7 @@ class Equilibrium:
     copies: int | None          # symmetric copies of the position; None for a continuous orbit
     ring_shape: str = ""        # a ring: "closed" (all the way round) or "arc" (a piece of one)
     ring_length: float = 0.0    # its length on the unit sphere of up vectors (radians)
+    stability_evidence: str = "second variation"     # or "higher orders", or "undecided"
     formulas: list = field(default_factory=list)
     predictions: list = field(default_factory=list)
 
@@ -76,6 +77,20 @@ def stability_of(eigenvalues, tolerance: float, ring: bool = False) -> str:
         return "stable"
     if min(values) < -tolerance:
         return "unstable"
+    return "indifferent"
+
+
+def higher_order(change, others, scale: float) -> str:
+    """Stability where the second variation vanishes in one direction, from the potential's change
+    ``change(eps)`` along it at eps = +-1e-3, +-3e-3, +-1e-2 rad: unstable when it falls on either side,
+    stable when it rises on both at every step and the other eigenvalues are positive, else
+    indifferent (flat to rounding: the higher orders decide nothing at these steps)."""
+    changes = [change(sign * eps) for eps in (1e-3, 3e-3, 1e-2) for sign in (1, -1)]
+    floor = 1e-13 * scale
+    if min(changes) < -floor or any(e < 0 for e in others):
+        return "unstable"
+    if min(changes) > floor:
+        return "stable"
     return "indifferent"
 
 
@@ -129,10 +144,18 @@ def _polyhedral(scene: Scene, seeds, group):
         loc = local(poly, c.u, s)
         eig = c.eigen
         tol = eigenvalue_error(c.lipschitz, c.error_rad, scale)
-        out.append(Equilibrium(_clean(c.u), _tilt(c.u), stability_of(eig, tol, c.ring),
+        stability, evidence = stability_of(eig, tol, c.ring), "second variation"
+        if stability == "indifferent" and not c.ring:
+            values, vectors = loc.eigen()              # at the representative itself
+            null = vectors[int(np.argmin(np.abs(values)))]
+            others = [e for e in eig if abs(e) > tol]
+            stability = higher_order(lambda eps: local(poly, tangent_step(c.u, eps * null), s).U - c.U,
+                                     others, scale)
+            evidence = "higher orders" if stability != "indifferent" else "undecided"
+        out.append(Equilibrium(_clean(c.u), _tilt(c.u), stability,
                                "ring" if c.ring else "isolated", c.U, _shape(waterplane_polygon(poly, loc.state), scale),
                                tuple(float(e) for e in eig), c.error_rad, c.error_method, c.orbit,
-                               c.shape, c.length))
+                               c.shape, c.length, evidence))
     families = any(c.ring for c in points)
     return out, {"poincare_hopf_index_sum": None if families else poincare_hopf_sum(points),
                  "expected_index_sum": 2, "seeds": len(seeds),
@@ -167,9 +190,14 @@ def _section(scene: Scene):
         lipschitz = abs(evaluate(r.theta + STEP)[1] - evaluate(r.theta - STEP)[1]) / (2 * STEP)
         err, method = equilibrium_error(planar_residual(scene, r.theta), abs(r.fprime), lipschitz, scale)
         tol = eigenvalue_error(lipschitz, err, scale)
-        out.append(Equilibrium(_clean(rep), 90.0, stability_of((r.fprime,), tol), "isolated",
+        stability, evidence = stability_of((r.fprime,), tol), "second variation"
+        if stability == "indifferent":
+            heel = lambda t: local(poly, np.array([math.cos(t), math.sin(t), 0.0]), s).U
+            stability = higher_order(lambda eps: heel(r.theta + eps) - loc.U, [], scale)
+            evidence = "higher orders" if stability != "indifferent" else "undecided"
+        out.append(Equilibrium(_clean(rep), 90.0, stability, "isolated",
                                loc.U, "rectangle", (r.fprime,),
-                               err, method, len(orbit(u, group))))
+                               err, method, len(orbit(u, group)), stability_evidence=evidence))
     out.sort(key=lambda e: (round(e.potential / scale, 12), e.up))
     return out, {"minima_minus_maxima": index, "expected_index_sum": 0, "grid": points,
                  "arc_deg": [math.degrees(lo), math.degrees(hi)]}
@@ -209,8 +237,14 @@ def _cylinder(scene: Scene):
             err, method, lipschitz = 0.0, "exact", 0.0     # upright and lying: equilibria by symmetry
         up = _clean((math.sin(q.theta), 0.0, math.cos(q.theta)))
         tol = eigenvalue_error(lipschitz, err, scale)
-        out.append(Equilibrium(up, math.degrees(q.theta), stability_of((q.fprime,), tol), "isolated", float(c.U),
-                               c.shape, (q.fprime,), err, method, 2 if q.theta == 0.0 else None))
+        stability, evidence = stability_of((q.fprime,), tol), "second variation"
+        if stability == "indifferent":
+            stability = higher_order(lambda eps: float(cylinder_slice(r, L, q.theta + eps, s).U) - float(c.U), [],
+                                     scale)
+            evidence = "higher orders" if stability != "indifferent" else "undecided"
+        out.append(Equilibrium(up, math.degrees(q.theta), stability, "isolated", float(c.U),
+                               c.shape, (q.fprime,), err, method, 2 if q.theta == 0.0 else None,
+                               stability_evidence=evidence))
     out.sort(key=lambda e: (round(e.potential / scale, 12), e.tilt_deg))
     return out, {"note": "rotations about the axis are a continuous symmetry: each tilt is one class "
                          "(a circle of positions when tilted); stability is across the tilt",
