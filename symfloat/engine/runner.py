@@ -1,14 +1,17 @@
 """Verifying a selection of derivations, with cache and progress."""
 from __future__ import annotations
 
+import multiprocessing
+import os
 import sys
 import time
+from concurrent.futures import ProcessPoolExecutor, as_completed
 
 from ..registry import load, select
 from .cache import ReportCache, derivation_key
 from .check import DerivationReport, check_derivation
 
-__all__ = ["verify", "Progress"]
+__all__ = ["verify", "Progress", "default_workers"]
 
 
 class Progress:
@@ -33,28 +36,74 @@ class Progress:
             print(f" {how}{bad}", file=self.stream, flush=True)
 
 
+def default_workers() -> int:
+    """Processes for checking: ``$SYMFLOAT_WORKERS``, else the usable cores (at most 4)."""
+    env = os.environ.get("SYMFLOAT_WORKERS", "")
+    if env.isdigit() and int(env) >= 1:
+        return int(env)
+    return max(1, min(4, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1))
+
+
+def _check(did: str, key: str) -> dict:
+    """Check one derivation (in a worker process) and return its report as JSON."""
+    d, _ = load(did)
+    t0 = time.perf_counter()
+    report = check_derivation(d, key)
+    report.seconds = time.perf_counter() - t0
+    return report.to_json()
+
+
 def verify(selector: str | None = None, *, use_cache: bool = True, cache: ReportCache | None = None,
-           progress: Progress | None = None) -> list[DerivationReport]:
-    """Reports for the derivations *selector* picks, ancestors included."""
+           progress: Progress | None = None, workers: int | None = None) -> list[DerivationReport]:
+    """Reports for the derivations *selector* picks, ancestors included, in dependency order.
+
+    Derivations missing from the cache are checked in *workers* processes (checks are independent
+    of one another; only the cache keys chain through the ancestors)."""
     cache = cache or ReportCache(enabled=use_cache)
     progress = progress or Progress(quiet=True)
+    workers = default_workers() if workers is None else workers
     ids = select(selector)
     keys: dict[str, str] = {}
-    reports = []
-    for i, did in enumerate(ids, 1):
+    reports: dict[str, DerivationReport] = {}
+    pending = []
+    for did in ids:
         d, module = load(did)
         keys[did] = derivation_key(module, [keys[r] for r in d.requires])
-        progress.start(i, len(ids), did)
         data = cache.get(did, keys[did])
         if data is not None:
-            report = DerivationReport.from_json(data)
-            report.cached = True
+            reports[did] = DerivationReport.from_json(data)
+            reports[did].cached = True
         else:
+            pending.append(did)
+    done = 0
+
+    def finish(did, report):
+        nonlocal done
+        done += 1
+        if not report.failures:
+            cache.put(did, keys[did], report.to_json())
+        reports[did] = report
+
+    for did in ids:
+        if did in reports:
+            done += 1
+            progress.start(done, len(ids), did)
+            progress.done(reports[did])
+    if workers > 1 and len(pending) > 1:
+        context = multiprocessing.get_context("fork")
+        with ProcessPoolExecutor(min(workers, len(pending)), mp_context=context) as pool:
+            futures = {pool.submit(_check, did, keys[did]): did for did in pending}
+            for future in as_completed(futures):
+                did = futures[future]
+                finish(did, DerivationReport.from_json(future.result()))
+                progress.start(done, len(ids), did)
+                progress.done(reports[did])
+    else:
+        for did in pending:
+            progress.start(done + 1, len(ids), did)
             t0 = time.perf_counter()
-            report = check_derivation(d, keys[did], progress=progress.tick)
+            report = check_derivation(load(did)[0], keys[did], progress=progress.tick)
             report.seconds = time.perf_counter() - t0
-            if not report.failures:
-                cache.put(did, keys[did], report.to_json())
-        progress.done(report)
-        reports.append(report)
-    return reports
+            finish(did, report)
+            progress.done(report)
+    return [reports[did] for did in ids]
