@@ -44,6 +44,7 @@ Predictions: boxes and cubes turned about an axis parallel to an edge (the dry p
 second-region positions from (103a), (103b) with their stability from (117), the third-region ones from
 (121b), (122) (no stability: the text gives none); s < 1/2 by the exchange of dry and wet parts.
 """
+import contextlib
 import functools
 import itertools
 import math
@@ -677,7 +678,13 @@ def _quad(J, a_, c_):
 
 
 def _measure(name, what, dps, mu_=None):
-    """One quantity of the text, measured on the clipped configuration."""
+    """One quantity of the text, measured on the clipped configuration, in *dps*-digit arithmetic
+    whatever the caller's mpmath precision."""
+    with mpmath.workdps(dps) if dps > 15 else contextlib.nullcontext():
+        return _measure_at(name, what, dps, mu_)
+
+
+def _measure_at(name, what, dps, mu_=None):
     q = _state(name, dps)
     st, dry, up, h, nv, ev, c, sn = (q[k] for k in ("st", "dry", "up", "h", "n", "e", "c", "sn"))
     G = st.G

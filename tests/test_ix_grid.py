@@ -3,8 +3,6 @@ sides of every table boundary agree, and a table with one stability flipped is c
 from fractions import Fraction
 from pathlib import Path
 
-import pytest
-
 from symfloat.registry import load
 from symfloat.report import ix_grid
 
