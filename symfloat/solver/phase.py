@@ -233,16 +233,24 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None) -> Phase
     for k in known:
         if any(matches(k, t) for t in thresholds):
             continue
-        sa, sb = Fraction(k["value"] - 1e-6), Fraction(k["value"] + 1e-6)
-        if not 0 < sa < sb < 1:
-            continue
         if progress:
             progress(f"looking at the source's threshold {k['value']:.6f} ({', '.join(k['locators'])})")
-        a, b = _stable(make_scene(body, sa, base.dims)), _stable(make_scene(body, sb, base.dims))
-        new = _thresholds_between(poly, group, scale, a, b, float(sa), float(sb))
-        thresholds += [t for t in new if not any(abs(t.density - u.density) <= 1e-9 and t.label == u.label
-                                                 for u in thresholds)]
+        for width in (1e-6, 1e-3):           # close by first; a little farther where the close look is blurred
+            sa, sb = Fraction(k["value"] - width), Fraction(k["value"] + width)
+            if not 0 < sa < sb < 1:
+                continue
+            a, b = _stable(make_scene(body, sa, base.dims)), _stable(make_scene(body, sb, base.dims))
+            new = _thresholds_between(poly, group, scale, a, b, float(sa), float(sb))
+            thresholds += [t for t in new if not any(abs(t.density - u.density) <= 1e-9 and t.label == u.label
+                                                     for u in thresholds)]
+            if any(t.label == k["label"] for t in new):
+                break
     _annotate_families(thresholds)
+    unique = []
+    for t in thresholds:                     # one entry per position and density (after the families' snapping)
+        if not any(abs(t.density - u.density) <= max(1e-12, t.bracket) and t.label == u.label for u in unique):
+            unique.append(t)
+    thresholds = unique
     for t in thresholds:
         t.source = [k for k in known if matches(k, t)]
     matched = {id(k) for t in thresholds for k in t.source}
