@@ -53,6 +53,7 @@ import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Erratum
+from symfloat.engine.roots import illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import floating_state, right_prism, submerged
 from symfloat.model.prediction import Prediction
@@ -943,25 +944,13 @@ d.witness(Computed("F-moments", "central moments of F (clipped upright prism ove
 
 
 # ==== predictions: boxes turned about an axis parallel to an edge ====================================================
-def _bisect(f, lo, hi):
-    flo = f(lo)
-    for _ in range(80):
-        mid = (lo + hi) / 2
-        fm = f(mid)
-        if (fm < 0) == (flo < 0):
-            lo, flo = mid, fm
-        else:
-            hi = mid
-    return (lo + hi) / 2
-
-
 def _roots(f, valid):
-    """Sign changes of f on a log grid of tan phi in (0.01, 100) where valid(t) holds, refined by bisection."""
+    """Sign changes of f on a log grid of tan phi in (0.01, 100) where valid(t) holds, refined (Illinois)."""
     grid = [10 ** (-2 + 4 * k / 400) for k in range(401)]
     out = []
     for lo, hi in zip(grid, grid[1:]):
         if valid(lo) and valid(hi) and (f(lo) < 0) != (f(hi) < 0):
-            out.append(_bisect(f, lo, hi))
+            out.append(illinois(f, lo, hi, 1e-15))
     return out
 
 

@@ -12,6 +12,7 @@ import sympy as sp
 import derivations.scheeffer_vii_viii as M
 from symfloat.engine.cache import ReportCache
 from symfloat.engine.check import check_derivation
+from symfloat.engine.roots import illinois
 from symfloat.engine.runner import verify
 from symfloat.geometry.floating import box, floating_state, right_prism
 from symfloat.model.prediction import Scene
@@ -102,28 +103,16 @@ def _box_arm(A, bb, sv, theta):
     return sum(h * (st.B[k] - st.G[k]) for k, h in enumerate((math.cos(theta), 0, -math.sin(theta))))
 
 
-def _root(f, lo, hi):
-    flo = f(lo)
-    for _ in range(200):
-        mid = (lo + hi) / 2
-        fm = f(mid)
-        if (fm < 0) == (flo < 0):
-            lo, flo = mid, fm
-        else:
-            hi = mid
-    return (lo + hi) / 2
-
-
 def test_box_equilibria_found_by_root_finding():
     # second region: unit cube, s = 71/98 (from (103a) with tan phi = 4/3, w = 9/14); the righting arm of the
     # clipped cube vanishes at tan phi = 4/3 (searched between 0.8 and 1.0 rad, where the top face is cut)
     s2 = float(M._params("box-eq")[M.s])
     assert M._params("box-eq")[M.s] == sp.Rational(71, 98)
-    assert math.tan(_root(lambda q: _box_arm(1, 1, s2, q), 0.8, 1.0)) == pytest.approx(4 / 3, rel=1e-12)
+    assert math.tan(illinois(lambda q: _box_arm(1, 1, s2, q), 0.8, 1.0, 1e-15)) == pytest.approx(4 / 3, rel=1e-12)
     # third region: box 9/10 x 1 x 1, s = 2/3, tan phi = 5/2 from (122)
     s3 = float(M._params("box3-eq")[M.s])
     assert M._params("box3-eq")[M.s] == sp.Rational(2, 3)
-    assert math.tan(_root(lambda q: _box_arm(0.9, 1, s3, q), 1.1, 1.3)) == pytest.approx(2.5, rel=1e-12)
+    assert math.tan(illinois(lambda q: _box_arm(0.9, 1, s3, q), 1.1, 1.3, 1e-15)) == pytest.approx(2.5, rel=1e-12)
 
 
 # ---- claims in words ----------------------------------------------------------------------------------------
@@ -230,6 +219,6 @@ def test_claim_s_upper_counterexample():
         hts = lambda ps: [sum(u[k] * p[k] for k in range(3)) - st.t for p in ps]  # noqa: E731
         return min(hts(top)), max(hts(bot))            # top base dry while > 0, bottom wet while < 0
 
-    ph = _root(lambda q: clearances(q)[1], 0.5, 1.0)
+    ph = illinois(lambda q: clearances(q)[1], 0.5, 1.0, 1e-15)
     assert math.tan(ph) == pytest.approx(r3 * 0.6, rel=1e-10)
     assert clearances(ph)[0] > 0.05
