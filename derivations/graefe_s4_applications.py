@@ -44,7 +44,7 @@ DERIVATION = d = Derivation(
     summary="Centroids of the sphere, frusta of cone and pyramid, spherical, parabolic and "
             "ellipsoidal segments, an elliptic body with triangular sections and the triaxial "
             "ellipsoid stump, each from X = h (g/2 + D)/((G+g)/2 + 2D) and by direct integration.",
-    requires=(S3,),
+    requires=("graefe-s3-prismatoid-centroid",),
     domain={r: (4, 6), R: (1, 5), h: (1, 5), m: (1, 4), a: (4, 6), b: (1, 5), c: (1, 5), p: (1, 5),
             k: (0.5, 3), S: (1, 5), s: (1, 5), x: (0, 2), xp: (2, 4), xv: (3, 5), xvp: (1, 3), u: (0, 1)},
     constraints=(x < xp, xp < r, xp <= a, m < r, xvp < xv),

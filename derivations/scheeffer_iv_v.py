@@ -825,7 +825,7 @@ def _cases(names, extra=None):
 
 
 def _w(name, description, targets, what, names, extra=None):
-    d.witness(Computed(name, description, tuple(targets), _cases(names, extra),
+    d.witness(Computed(name, description, tuple(targets), lambda: _cases(names, extra),
                        compute=lambda case, dps, what=what: _measure(case.data[0], what, dps, case.data[1])))
 
 

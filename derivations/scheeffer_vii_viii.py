@@ -779,12 +779,12 @@ def _measure_at(name, what, dps, mu_=None):
 
 
 def _w(wname, description, targets, names, what, extra=None, generic=False):
-    cases = []
-    for nm in names:
-        p = _generic(nm) if generic else dict(_params(nm))
-        p.update(extra or {})
-        cases.append(Case(p, (nm, (extra or {}).get(mu)), nm))
-    d.witness(Computed(wname, description, tuple(targets), tuple(cases),
+    def cases():
+        for nm in names:
+            p = _generic(nm) if generic else dict(_params(nm))
+            p.update(extra or {})
+            yield Case(p, (nm, (extra or {}).get(mu)), nm)
+    d.witness(Computed(wname, description, tuple(targets), cases,
                        compute=lambda case, dps, what=what: _measure(case.data[0], what, dps, case.data[1])))
 
 

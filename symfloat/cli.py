@@ -43,6 +43,9 @@ def _parser():
     common = _Parser(add_help=False)
     common.add_argument("--quiet", action="store_true", help="no progress on stderr")
     common.add_argument("--no-cache", action="store_true", help="re-check every derivation")
+    common.add_argument("--search-proofs", action="store_true",
+                        help="search every claim's symbolic proof anew instead of replaying its recorded "
+                             "certificate (derivations/proofs/), and record the outcome")
     p = _Parser(prog="symfloat", description="Machine-checked re-derivation of classical "
                                 "texts on floating bodies and centroids.")
     sub = p.add_subparsers(dest="command", required=True)
@@ -73,6 +76,9 @@ def _parser():
     ph.add_argument("--steps", type=int, default=48, help="densities in the sweep (default 48)")
     b = sub.add_parser("bench", parents=[common], help="numerics benchmark: write docs/numerics.md and its figures")
     b.add_argument("--quick", action="store_true", help="a few derivations and methods (for tests)")
+    b.add_argument("--derivations", action="store_true",
+                   help="measure what checking each derivation costs (cold, warm, by kind) and write that table "
+                        "into docs/performance.md")
     b.add_argument("--output", type=Path, default=DOCS, help="directory for numerics.md and figures/")
     return p
 
@@ -82,7 +88,8 @@ def _progress(args):
 
 
 def _reports(args, selector=None):
-    return verify(selector, cache=ReportCache(enabled=not args.no_cache), progress=_progress(args))
+    return verify(selector, cache=ReportCache(enabled=not args.no_cache), progress=_progress(args),
+                  search_proofs=args.search_proofs, record_proofs=True)
 
 
 def _failed(reports) -> bool:
@@ -110,7 +117,7 @@ def _scene(args) -> int:
     start = time.perf_counter()
     scene = make_scene(args.body, args.density, args.dims, args.sides, args.polygon)
     solution = solve(scene)
-    evaluated, unmatched = cover(solution, ReportCache(enabled=not args.no_cache))
+    evaluated, unmatched = cover(solution)
     record = scene_record(solution, evaluated, unmatched, time.perf_counter() - start)
     print(scene_json(record) if args.format == "json" else scene_table(record))
     if args.plot:
@@ -163,6 +170,17 @@ def main(argv=None) -> int:
             written = write_notebooks(ids, args.output, progress)
             print(f"{len(written)} of {len(ids)} notebooks changed in {args.output}", file=sys.stderr)
             reports = []
+        elif args.command == "bench" and args.derivations:
+            import platform
+
+            from .numerics.cost import cost_markdown, cost_rows, write_section
+            quiet = args.quiet or os.environ.get("SYMFLOAT_QUIET") == "1"
+            rows = cost_rows(progress=lambda msg: quiet or print(msg, file=sys.stderr, flush=True))
+            machine = f"{platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}"
+            path = args.output / "performance.md"
+            write_if_changed(path, write_section(path, cost_markdown(rows, machine)))
+            print(f"wrote {path}", file=sys.stderr)
+            reports = []
         elif args.command == "bench":
             from .numerics.document import generate
             quiet = args.quiet or os.environ.get("SYMFLOAT_QUIET") == "1"
@@ -178,10 +196,13 @@ def main(argv=None) -> int:
             progress = None if args.quiet else (lambda d: print(f"executing notebook {d}", file=sys.stderr))
             written = write_notebooks([r.id for r in reports], "notebooks", progress)
             if any(r.id == "scheeffer-ix" for r in reports):
-                from .report.ix_grid import boundary_cells, grid_markdown, grid_rows
-                grid = grid_rows(progress=None if args.quiet else (lambda m: print(f"IX grid {m}", file=sys.stderr)),
-                                 extra=boundary_cells())
-                write_if_changed(DOCS / "scheeffer-ix-grid.md", grid_markdown(grid))
+                from .report.ix_grid import boundary_cells, grid_markdown, grid_rows, grid_stamp
+                from .report.stamp import stamp_of
+                stamp = grid_stamp()
+                if stamp_of(DOCS / "scheeffer-ix-grid.md") != stamp:   # solver or tables changed
+                    grid = grid_rows(progress=None if args.quiet else
+                                     (lambda m: print(f"IX grid {m}", file=sys.stderr)), extra=boundary_cells())
+                    write_if_changed(DOCS / "scheeffer-ix-grid.md", grid_markdown(grid, stamp))
             print(_summary_by_source(reports))
             print(f"wrote docs/verification.json, docs/errata.json, docs/errata.md, docs/scheeffer-ix-grid.md; "
                   f"{len(written)} notebooks changed")

@@ -2,29 +2,59 @@
 
 Each module of the ``derivations`` package defines one ``DERIVATION``; its
 module name is the derivation id with ``-`` written as ``_``.  A selector (a
-source key or an id prefix) picks derivations by module name, so only the
-selected modules and their ancestors are imported.
+source key or an id prefix) picks derivations by module name.  The dependency
+graph is read from the modules' source (the literal ``requires=(...)`` of
+their ``Derivation``), so selecting, ordering and finding a cached report
+import no derivation module at all; :func:`load` imports one when it is
+checked, and confirms that what it declares is what was read.
 """
 from __future__ import annotations
 
+import ast
 import importlib
 import pkgutil
 from functools import cache
+from pathlib import Path
 
 import derivations
 
 from .model.derivation import Derivation
 
-__all__ = ["module_names", "load", "select", "SelectorError"]
+__all__ = ["module_names", "module_path", "requires", "load", "select", "SelectorError"]
 
 
 class SelectorError(ValueError):
     """A selector that matches no derivation."""
 
 
+@cache
 def module_names() -> list[str]:
     """All derivation module names, sorted."""
     return sorted(m.name for m in pkgutil.iter_modules(derivations.__path__) if not m.name.startswith("_"))
+
+
+def module_path(derivation_id: str) -> Path:
+    """The source file of the derivation module *derivation_id*."""
+    name = derivation_id.replace("-", "_")
+    if name not in module_names():
+        raise SelectorError(f"no derivation {derivation_id!r}")
+    return Path(derivations.__path__[0]) / f"{name}.py"
+
+
+@cache
+def requires(derivation_id: str) -> tuple[str, ...]:
+    """The ids a derivation builds on, read from the literal ``requires=`` of its ``Derivation(...)``."""
+    path = module_path(derivation_id)
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Call) and getattr(node.func, "id", None) == "Derivation":
+            for kw in node.keywords:
+                if kw.arg == "requires":
+                    try:
+                        return tuple(ast.literal_eval(kw.value))
+                    except ValueError:
+                        raise RuntimeError(f"{path.name}: requires=... must be a literal tuple of ids") from None
+            return ()
+    raise RuntimeError(f"{path.name}: no Derivation(...) found")
 
 
 @cache
@@ -37,6 +67,8 @@ def load(derivation_id: str) -> tuple[Derivation, object]:
     d = module.DERIVATION
     if d.id != derivation_id:
         raise RuntimeError(f"module {name} defines {d.id!r}, expected {derivation_id!r}")
+    if tuple(d.requires) != requires(derivation_id):
+        raise RuntimeError(f"module {name}: requires {d.requires} differs from what its source declares")
     return d, module
 
 
@@ -60,7 +92,7 @@ def select(selector: str | None = None) -> list[str]:
             raise RuntimeError(f"dependency cycle: {' -> '.join(trail + (i,))}")
         if i in ordered:
             return
-        for r in load(i)[0].requires:
+        for r in requires(i):
             visit(r, trail + (i,))
         ordered.append(i)
 

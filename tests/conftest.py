@@ -1,4 +1,12 @@
-"""Shared fixtures: Graefe checked once per session, from scratch."""
+"""Shared fixtures: Graefe checked once per session, from scratch.
+
+The library is checked as on a machine a billion times slower than this one
+(``SYMFLOAT_SLOWDOWN``): every proof search would stop at once, so the
+committed verdicts must rest on replayed certificates alone, which no clock
+can change."""
+import os
+from contextlib import contextmanager
+
 import mpmath
 import pytest
 
@@ -19,14 +27,29 @@ def cache_dir(tmp_path_factory):
     return tmp_path_factory.mktemp("symfloat-cache")
 
 
+@contextmanager
+def _infinitely_slow():
+    old = os.environ.get("SYMFLOAT_SLOWDOWN")
+    os.environ["SYMFLOAT_SLOWDOWN"] = "1e9"
+    try:
+        yield
+    finally:
+        if old is None:
+            os.environ.pop("SYMFLOAT_SLOWDOWN")
+        else:
+            os.environ["SYMFLOAT_SLOWDOWN"] = old
+
+
 @pytest.fixture(scope="session")
 def graefe_reports(cache_dir):
-    return verify("graefe", cache=ReportCache(cache_dir))
+    with _infinitely_slow():
+        return verify("graefe", cache=ReportCache(cache_dir))
 
 
 @pytest.fixture(scope="session")
 def all_reports(cache_dir, graefe_reports):
-    return verify(None, cache=ReportCache(cache_dir))
+    with _infinitely_slow():
+        return verify(None, cache=ReportCache(cache_dir))
 
 
 @pytest.fixture(scope="session")

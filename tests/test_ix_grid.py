@@ -42,3 +42,10 @@ def test_the_committed_grid_report_is_complete():
     text = (Path(__file__).resolve().parents[1] / "docs" / "scheeffer-ix-grid.md").read_text(encoding="utf-8")
     cells = len(ix_grid.DENSITIES) * len(ix_grid.RATIOS)
     assert f"— {cells} cells;" in text
+
+
+def test_the_committed_grid_is_stamped_with_the_present_solver_and_tables():
+    # `symfloat run` skips the grid when the stamp matches; a stale stamp means a stale grid
+    from symfloat.report.stamp import stamp_of
+    path = Path(__file__).resolve().parents[1] / "docs" / "scheeffer-ix-grid.md"
+    assert stamp_of(path) == ix_grid.grid_stamp(), "docs/scheeffer-ix-grid.md is stale: run `make run` and commit"

@@ -5,7 +5,6 @@ import math
 import pytest
 
 from symfloat.cli import main
-from symfloat.engine.cache import ReportCache
 from symfloat.solver import make_scene, solve
 from symfloat.solver.coverage import cover, predicting
 
@@ -42,18 +41,32 @@ def test_scene_json_follows_the_contract(run):
     assert record["derivations_evaluated"] and "scheeffer-vi-ab" not in record["derivations_evaluated"]
 
 
-def test_a_scene_evaluates_only_the_derivations_that_speak_about_its_body(cache_dir):
+def test_a_scene_evaluates_only_the_derivations_that_speak_about_its_body():
     assert "scheeffer-vi-cf" not in predicting("cylinder")
-    evaluated, _ = cover(solve(make_scene("cylinder", "0.3", dims="1,2")), ReportCache(cache_dir))
+    evaluated, _ = cover(solve(make_scene("cylinder", "0.3", dims="1,2")))
     assert "scheeffer-vi-ab" in evaluated
     assert not any(d.startswith(("graefe", "euler", "scheeffer-vi-cf", "metazentrum")) for d in evaluated)
 
 
-def test_a_disagreement_is_shown(cache_dir):
+def test_a_scene_checks_no_derivation(monkeypatch):
+    # the answer reads the predictors and the declared verdicts: a check or a cache read would fail here
+    import symfloat.engine.check as check
+    import symfloat.engine.runner as runner
+    monkeypatch.setattr(check, "check_derivation", lambda *a, **k: pytest.fail("a scene checked a derivation"))
+    monkeypatch.setattr(runner, "verify", lambda *a, **k: pytest.fail("a scene verified derivations"))
+    solution = solve(make_scene("cube", "0.22"))
+    evaluated, _ = cover(solution)
+    ring = [e for e in solution.equilibria if e.family == "ring"]
+    # Scheeffer (80), declared correct in scheeffer-vi-cf, predicts the oblique ring at 0.2113 < s < 0.2265
+    assert ring and all(p["verdicts"] == ["verified"] for p in ring[0].predictions
+                        if p["derivation"] == "scheeffer-vi-cf")
+
+
+def test_a_disagreement_is_shown():
     # Scheeffer VI.D prints the oblique (edge-axis) position for 0.2265 < s < 0.7735; the tests of the
     # predictors found it is no equilibrium at s = 0.6: the scene must say that the source disagrees
     solution = solve(make_scene("cube", "0.6"))
-    _, unmatched = cover(solution, ReportCache(cache_dir))
+    _, unmatched = cover(solution)
     disagreeing = unmatched + [p for e in solution.equilibria for p in e.predictions if not p["agrees"]]
     assert any(p["derivation"] == "scheeffer-vi-cf" for p in disagreeing)
 

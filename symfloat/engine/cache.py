@@ -1,8 +1,8 @@
 """A cache of derivation reports keyed by content.
 
-The key hashes the derivation module's source, the source of the library
-itself (model, engine, geometry) and the keys of the derivations it requires,
-so any change to what a result depends on re-checks it.
+The key hashes the derivation module's source, its proof certificates, the
+source of the library itself (model, engine, geometry) and the keys of the
+derivations it requires, so any change to what a result depends on re-checks it.
 """
 from __future__ import annotations
 
@@ -28,9 +28,12 @@ def library_fingerprint() -> str:
     return h.hexdigest()
 
 
-def derivation_key(module, required_keys) -> str:
+def derivation_key(source: Path, required_keys, proofs: Path | None = None) -> str:
+    """The cache key of the derivation whose module is *source*."""
     h = hashlib.sha256(library_fingerprint().encode())
-    h.update(Path(module.__file__).read_bytes())
+    h.update(Path(source).read_bytes())
+    if proofs is not None and proofs.exists():
+        h.update(proofs.read_bytes())
     for k in required_keys:
         h.update(k.encode())
     return h.hexdigest()[:32]

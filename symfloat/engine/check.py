@@ -23,6 +23,7 @@ import sympy as sp
 from ..model.claim import as_latex, members
 from ..model.derivation import Derivation, Printed
 from .identity import Domain, IdentityResult, check_identity, check_rounded
+from .proofs import ProofBook
 
 __all__ = ["StepReport", "FormulaReport", "DerivationReport", "check_derivation"]
 
@@ -67,6 +68,16 @@ class DerivationReport:
     formulas: list
     failures: list
     cached: bool = False
+    proofs: dict = field(default_factory=dict)
+    timing: dict = field(default_factory=dict)   # seconds by kind: sampling, proofs, witnesses, other
+
+    def searched(self) -> list[str]:
+        """The claims whose proof was searched in this check (no certificate for their present form)."""
+        return [k for k, c in self.proofs.items() if c["how"] == "searched"]
+
+    def certificates(self) -> dict:
+        """Claim -> certificate, as :class:`~symfloat.engine.proofs.ProofBook` stores them."""
+        return {k: {f: v for f, v in c.items() if f != "how"} for k, c in self.proofs.items()}
 
     def to_json(self) -> dict:
         return asdict(self)
@@ -96,9 +107,19 @@ def _resolved(chain, results):
     return tuple(_substitute(m, results) for m in members(chain))
 
 
-def _check_chain(chain, names, results, domain, seed, prove, limit, tolerance=None) -> IdentityResult:
+def _closed(chain, closed):
+    """The chain with every defining integral of *closed* replaced by its derived closed form."""
+    return tuple(m.xreplace(closed) for m in chain) if closed else chain
+
+
+def _check_chain(chain, names, results, domain, seed, book, proofs, tolerance=None, prove=True,
+                 timing=None, kind="printed") -> IdentityResult:
     """Check every link of a chain; the weakest link decides.  With a
-    *tolerance* the links are closed numbers compared to printed precision."""
+    *tolerance* the links are closed numbers compared to printed precision.
+    Each link's proof certificate comes from (or is searched for) *book*, under
+    the key ``"<kind> <seed>#<link>"`` (*kind*: ``step`` or ``printed``, as a
+    step and a printed formula may share a name); the certificates used are
+    collected in *proofs*."""
     ms = [m for m in members(chain) if not (isinstance(m, sp.Symbol) and m in names)]
     if len(ms) < 2:
         raise ValueError(f"{seed}: nothing to check once the named quantity is removed")
@@ -107,8 +128,14 @@ def _check_chain(chain, names, results, domain, seed, prove, limit, tolerance=No
     worst = None
     total = 0.0
     for i, (a, b) in enumerate(zip(ms, ms[1:])):
+        claim = f"{kind} {seed}#{i}"
         r = (check_rounded(a, b, tolerance, f"{seed}#{i}") if tolerance is not None else
-             check_identity(a, b, domain, f"{seed}#{i}", prove=prove, limit=limit))
+             check_identity(a, b, domain, f"{seed}#{i}", prove=prove, book=book, claim=claim))
+        if r.certificate is not None:
+            proofs[claim] = {"how": r.proof, **r.certificate}
+        if timing is not None:
+            timing["proofs"] += r.proof_seconds
+            timing["sampling"] += r.seconds - r.proof_seconds
         total += r.seconds
         if worst is None or order[r.status] < order[worst.status]:
             worst = r
@@ -122,13 +149,21 @@ def _latex(p: Printed) -> str:
     return as_latex(p.reading) if p.reading is not None else ""
 
 
-def check_derivation(d: Derivation, key: str = "", *, prove: bool = True, limit: float = 5.0,
+def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = None, prove: bool = True,
                      progress=None) -> DerivationReport:
-    """Check *d* completely and return its report (see the module docstring)."""
+    """Check *d* completely and return its report (see the module docstring).
+
+    Proofs replay the certificates of *book* (by default the derivation's
+    committed ones); a claim without one is searched.  ``prove=False`` stops at
+    sampling (mutation tests, where only refutation matters)."""
     t0 = time.perf_counter()
+    book = book if book is not None else ProofBook.load(d.id)
     domain = Domain(d.domain, tuple(d.constraints))
     failures: list[str] = []
+    proofs: dict = {}
     results: dict = {}
+    closed: dict = {}       # a defining integral -> its closed form, once an integration step derived it
+    timing = {"sampling": 0.0, "proofs": 0.0, "witnesses": 0.0}
     step_reports = []
     for s in d.steps:
         names = {s.result} if s.result is not None else set()
@@ -137,33 +172,42 @@ def check_derivation(d: Derivation, key: str = "", *, prove: bool = True, limit:
             status = "definition" if s.why == "definition" else "applied"
             rep = StepReport(s.name, s.why, list(s.uses), as_latex(s.claim), s.note, status)
         else:
-            r = _check_chain(s.claim, names, results, domain, f"{d.id}/{s.name}", prove, limit)
+            r = _check_chain(s.claim, names, results, domain, f"{d.id}/{s.name}", book, proofs, prove=prove,
+                             timing=timing, kind="step")
             rep = StepReport(s.name, s.why, list(s.uses), as_latex(s.claim), s.note, r.status, r.to_json())
             if r.status == "refuted":
                 failures.append(f"{d.source} {d.locator}: step {s.name!r} is refuted: {r.counterexample}")
         if s.result is not None:
             results[s.result] = _substitute(members(s.claim)[-1], results)
+        first, last = members(s.claim)[0], members(s.claim)[-1]
+        if s.why == "integration" and isinstance(first, sp.Symbol) and first in results \
+                and results[first].has(sp.Integral) \
+                and rep.status in ("proved", "sampled") and not last.has(sp.Integral):
+            closed[results[first]] = _substitute(last, results)
         step_reports.append(rep)
         if progress:
             progress()
 
     readings, identities, corrected = {}, {}, {}
-    for p in d.printed:
+    for p in d.printed:      # witnesses evaluate closed forms, never a defining integral again
         if p.reading is not None:
-            readings[p.name] = _resolved(p.reading, results)
+            readings[p.name] = _closed(_resolved(p.reading, results), closed)
             identities[p.name] = _check_chain(p.reading, set(), results, domain,
-                                              f"{d.id}/{p.name}", prove, limit, p.tolerance)
+                                              f"{d.id}/{p.name}", book, proofs, p.tolerance, prove, timing)
         if p.erratum is not None and p.erratum.corrected_reading is not None:
-            readings[p.name + "#corrected"] = _resolved(p.erratum.corrected_reading, results)
+            readings[p.name + "#corrected"] = _closed(_resolved(p.erratum.corrected_reading, results), closed)
             corrected[p.name] = _check_chain(p.erratum.corrected_reading, set(), results, domain,
-                                             f"{d.id}/{p.name}#corrected", prove, limit, p.tolerance)
+                                             f"{d.id}/{p.name}#corrected", book, proofs, p.tolerance, prove,
+                                             timing)
         if progress:
             progress()
 
+    t_witnesses = time.perf_counter()
     outcomes: dict = {}
     for w in d.witnesses:
         for target, out in w.run(readings).items():
             outcomes.setdefault(target, []).append(out)
+    timing["witnesses"] = time.perf_counter() - t_witnesses
     for p in d.printed:          # printed numbers agree with a witness to their printed precision
         if p.tolerance is not None:
             for key in (p.name, p.name + "#corrected"):
@@ -173,8 +217,11 @@ def check_derivation(d: Derivation, key: str = "", *, prove: bool = True, limit:
 
     formulas = [_verdict(d, p, identities.get(p.name), corrected.get(p.name), outcomes, failures)
                 for p in d.printed]
+    failures += [f"{d.source} {d.locator}: the proof certificate of {k} ({c['strategy']}) no longer proves "
+                 f"it; search anew with `symfloat verify {d.id} --search-proofs`"
+                 for k, c in proofs.items() if c["how"] == "replay failed"]
     return DerivationReport(d.id, d.source, d.title, d.locator, key, time.perf_counter() - t0,
-                            step_reports, formulas, failures)
+                            step_reports, formulas, failures, proofs=proofs, timing=timing)
 
 
 def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
@@ -190,8 +237,8 @@ def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
         rep.reason = f"text lost in the transcription: {p.lost}"
         return rep
     if ident is not None and ident.status == "undecided":
-        rep.reason = (f"the checks could not decide: {ident.samples} valid samples, no symbolic proof "
-                      f"within the time budget (details in the identity record)")
+        rep.reason = (f"the checks could not decide: {ident.samples} valid samples, and the recorded proof "
+                      f"search found no symbolic proof (details in the identity record)")
         return rep
     holds = ident is not None and ident.holds
     if holds:

@@ -4,9 +4,12 @@ Cheap evidence comes first.  Both sides are evaluated at seeded random
 rational points inside the derivation's domain: exactly when the values are
 rational (Schwartz–Zippel for rational identities), otherwise with 60-digit
 arithmetic.  A single disagreeing point refutes the identity and is kept as
-the counterexample.  When every sample agrees, symbolic strategies try to
-prove the difference zero, each under a time limit; the residual of the last
-strategy is shown when none succeeds.
+the counterexample.  When every sample agrees, the claim's proof certificate
+(:mod:`symfloat.engine.proofs`) is replayed: exactly the recorded strategy,
+with no time limit.  Only a claim without a certificate for its present form
+is *searched*: the strategies are tried in turn under a shared time limit,
+and the outcome (the strategy that proved it, or none) becomes its
+certificate.  The clock can end a search; it never decides a replayed check.
 """
 from __future__ import annotations
 
@@ -18,13 +21,16 @@ from fractions import Fraction
 
 import sympy as sp
 
+from .proofs import Certificate, ProofBook, claim_digest, slowdown
 from .timelimit import TimeLimitExceeded, time_limit
 
-__all__ = ["IdentityResult", "check_identity", "check_rounded", "Domain", "DIGITS", "STRATEGIES"]
+__all__ = ["IdentityResult", "check_identity", "check_rounded", "Domain", "DIGITS", "STRATEGIES",
+           "SEARCH_SECONDS"]
 
 DIGITS = 60            # working precision of non-rational sampling
 AGREEMENT = 10 ** -45  # relative tolerance of non-rational sampling
 SAMPLES = 6
+SEARCH_SECONDS = 10.0  # time limit shared by the strategies of one proof search (never of a replay)
 
 
 @dataclass
@@ -35,6 +41,11 @@ class IdentityResult:
     zero), ``sampled`` (every sample agreed, no proof), ``agrees`` (a printed
     number matches the computed value to its printed precision), ``refuted``
     (a sample disagreed: see ``counterexample``) or ``undecided``.
+
+    ``certificate`` is the proof certificate the check used or found (see
+    :class:`~symfloat.engine.proofs.Certificate`), and ``proof`` says how:
+    ``replayed``, ``searched``, or ``replay failed`` (the certificate of this
+    very claim no longer proves it: a failure of the derivation).
     """
 
     status: str
@@ -45,6 +56,9 @@ class IdentityResult:
     residual: str = ""
     tried: list = field(default_factory=list)
     seconds: float = 0.0
+    certificate: dict | None = None
+    proof: str = ""
+    proof_seconds: float = 0.0
 
     @property
     def evidence(self) -> str | None:
@@ -197,41 +211,76 @@ def _show(v):
     return str(v) if v.is_Rational else sp.sstr(sp.N(v, 20))
 
 
-def check_identity(a, b, domain: Domain, seed_text: str, *, prove=True, limit=5.0,
-                   samples: int = SAMPLES, strategies=STRATEGIES) -> IdentityResult:
+def _search(pairs, diffs, strategies, limit: float):
+    """Try *strategies* in turn under a shared time limit of *limit* seconds (divided by
+    :func:`~symfloat.engine.proofs.slowdown`); return the proving strategy (or ``None``),
+    what was tried, and the residual of the last strategy that ran."""
+    limit = limit / slowdown()
+    deadline = time.perf_counter() + limit
+    tried, residual = [], ""
+    for name in strategies:
+        budget = deadline - time.perf_counter()
+        if budget <= 0:
+            tried.append(f"{name} (not tried: the search's time limit was spent)")
+            continue
+        try:
+            with time_limit(budget):
+                rest = _apply(name, pairs, diffs)
+        except TimeLimitExceeded:
+            tried.append(f"{name} (stopped at the search's time limit)")
+            continue
+        except Exception as exc:  # a strategy that crashes is a strategy that failed
+            tried.append(f"{name} ({type(exc).__name__})")
+            continue
+        tried.append(name)
+        if all(r == 0 for r in rest):
+            return name, tried, ""
+        residual = sp.sstr(next(r for r in rest if r != 0))[:300]
+    return None, tried, residual
+
+
+def _apply(name, pairs, diffs):
+    fn = _strategy(name)
+    return [fn(p) for p in pairs] if name == "squares" else [fn(d) for d in diffs]
+
+
+def check_identity(a, b, domain: Domain, seed_text: str, *, prove=True, book: ProofBook | None = None,
+                   claim: str | None = None, limit: float = SEARCH_SECONDS, samples: int = SAMPLES,
+                   strategies=STRATEGIES) -> IdentityResult:
     """Decide ``a = b`` inside *domain*; see the module docstring for the order
-    of evidence.  The symbolic strategies share a budget of *limit* seconds."""
+    of evidence.  *seed_text* seeds the samples; *claim* (default: the seed
+    text) keys the claim's certificate in *book* (without a book every check is
+    a search)."""
     t0 = time.perf_counter()
-    pairs = [(_evaluate(x), _evaluate(y)) for x, y in _flatten(a, b)]
+    stated = _flatten(a, b)
+    pairs = [(_evaluate(x), _evaluate(y)) for x, y in stated]
     status, n, exact, cex = _sample(pairs, domain, seed_text, samples)
     result = IdentityResult(status, samples=n, exact=exact, counterexample=cex,
                             tried=[f"sampling ({'exact' if exact else f'{DIGITS} digits'})"])
     if status == "refuted" or not prove:
         result.seconds = time.perf_counter() - t0
         return result
+    t_proof = time.perf_counter()
     diffs = [x - y for x, y in pairs]
-    deadline = time.perf_counter() + limit
-    for name in strategies:
-        fn = _strategy(name)
-        budget = deadline - time.perf_counter()
-        if budget <= 0:
-            result.tried.append(f"{name} (not tried: time budget of {limit:g} s spent)")
-            continue
-        try:
-            with time_limit(budget):
-                rest = [fn(p) for p in pairs] if name == "squares" else [fn(d) for d in diffs]
-        except TimeLimitExceeded:
-            result.tried.append(f"{name} (stopped at the time budget of {limit:g} s)")
-            continue
-        except Exception as exc:  # a strategy that crashes is a strategy that failed
-            result.tried.append(f"{name} ({type(exc).__name__})")
-            continue
-        result.tried.append(name)
-        if all(r == 0 for r in rest):
-            result.status, result.strategy, result.residual = "proved", name, ""
-            break
-        result.residual = sp.sstr(next(r for r in rest if r != 0))[:300]
+    digest = claim_digest(stated)
+    cert = book.get(claim or seed_text, digest) if book is not None else None
+    if cert is None:
+        strategy, tried, residual = _search(pairs, diffs, strategies, limit)
+        cert, result.proof = Certificate(digest, strategy, tuple(tried), residual), "searched"
+    else:
+        result.proof = "replayed"
+    result.residual = cert.residual
+    if cert.strategy is not None and result.proof == "replayed":
+        rest = _apply(cert.strategy, pairs, diffs)
+        result.proof = "replayed" if all(r == 0 for r in rest) else "replay failed"
+        if result.proof == "replay failed":
+            result.residual = sp.sstr(next(r for r in rest if r != 0))[:300]
+    result.tried += list(cert.tried)
+    result.certificate = cert.to_json()
+    if cert.strategy is not None and result.proof != "replay failed":
+        result.status, result.strategy = "proved", cert.strategy
     result.seconds = time.perf_counter() - t0
+    result.proof_seconds = time.perf_counter() - t_proof
     return result
 
 

@@ -7,9 +7,11 @@ import sys
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 
-from ..registry import load, select
+from ..registry import load, module_path, requires, select
+from ..report.files import write_if_changed
 from .cache import ReportCache, derivation_key
 from .check import DerivationReport, check_derivation
+from .proofs import ProofBook
 
 __all__ = ["verify", "Progress", "default_workers"]
 
@@ -44,31 +46,39 @@ def default_workers() -> int:
     return max(1, min(4, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1))
 
 
-def _check(did: str, key: str) -> dict:
-    """Check one derivation (in a worker process) and return its report as JSON."""
+def _check(did: str, key: str, search: bool, tick=None) -> DerivationReport:
+    """Check one derivation, replaying its proof certificates (or searching anew)."""
     d, _ = load(did)
     t0 = time.perf_counter()
-    report = check_derivation(d, key)
+    report = check_derivation(d, key, book=ProofBook.load(did, search=search), progress=tick)
     report.seconds = time.perf_counter() - t0
-    return report.to_json()
+    return report
+
+
+def _check_json(did: str, key: str, search: bool) -> dict:
+    """:func:`_check` in a worker process: the report as JSON."""
+    return _check(did, key, search).to_json()
 
 
 def verify(selector: str | None = None, *, use_cache: bool = True, cache: ReportCache | None = None,
-           progress: Progress | None = None, workers: int | None = None) -> list[DerivationReport]:
+           progress: Progress | None = None, workers: int | None = None, search_proofs: bool = False,
+           record_proofs: bool = False) -> list[DerivationReport]:
     """Reports for the derivations *selector* picks, ancestors included, in dependency order.
 
     Derivations missing from the cache are checked in *workers* processes (checks are independent
-    of one another; only the cache keys chain through the ancestors)."""
-    cache = cache or ReportCache(enabled=use_cache)
+    of one another; only the cache keys chain through the ancestors).  *search_proofs* searches every
+    claim's proof anew instead of replaying its certificate (and so bypasses the cache);
+    *record_proofs* writes the certificates of every derivation checked without failure to
+    ``proofs/<id>.json`` (see :mod:`symfloat.engine.proofs`)."""
+    cache = cache or ReportCache(enabled=use_cache and not search_proofs)
     progress = progress or Progress(quiet=True)
     workers = default_workers() if workers is None else workers
     ids = select(selector)
     keys: dict[str, str] = {}
     reports: dict[str, DerivationReport] = {}
     pending = []
-    for did in ids:
-        d, module = load(did)
-        keys[did] = derivation_key(module, [keys[r] for r in d.requires])
+    for did in ids:           # keys from the sources alone: a cached report imports no module
+        keys[did] = derivation_key(module_path(did), [keys[r] for r in requires(did)], ProofBook.path(did))
         data = cache.get(did, keys[did])
         if data is not None:
             reports[did] = DerivationReport.from_json(data)
@@ -82,6 +92,8 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
         done += 1
         if not report.failures:
             cache.put(did, keys[did], report.to_json())
+            if record_proofs:
+                write_if_changed(ProofBook.path(did), ProofBook.text(report.certificates()))
         reports[did] = report
 
     for did in ids:
@@ -92,7 +104,7 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
     if workers > 1 and len(pending) > 1:
         context = multiprocessing.get_context("fork")
         with ProcessPoolExecutor(min(workers, len(pending)), mp_context=context) as pool:
-            futures = {pool.submit(_check, did, keys[did]): did for did in pending}
+            futures = {pool.submit(_check_json, did, keys[did], search_proofs): did for did in pending}
             for future in as_completed(futures):
                 did = futures[future]
                 finish(did, DerivationReport.from_json(future.result()))
@@ -101,9 +113,6 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
     else:
         for did in pending:
             progress.start(done + 1, len(ids), did)
-            t0 = time.perf_counter()
-            report = check_derivation(load(did)[0], keys[did], progress=progress.tick)
-            report.seconds = time.perf_counter() - t0
-            finish(did, report)
-            progress.done(report)
+            finish(did, _check(did, keys[did], search_proofs, progress.tick))
+            progress.done(reports[did])
     return [reports[did] for did in ids]

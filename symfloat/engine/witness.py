@@ -55,7 +55,8 @@ class Outcome:
 
 
 def _expected(reading, params):
-    """Values of the chain members that become numbers at *params*."""
+    """Values of the chain members that become numbers at *params*, at
+    :data:`REFERENCE_DIGITS` (computed once per case, whatever the methods)."""
     values = []
     for m in members(reading):
         if isinstance(m, sp.MatrixBase):
@@ -87,7 +88,10 @@ def _errors(measured, expected):
 
 @dataclass(frozen=True)
 class MeasuredWitness:
-    """Common machinery: time each method over the cases, compare targets."""
+    """Common machinery: time each method over the cases, compare targets.
+
+    ``cases`` is a tuple of :class:`Case`, or a function returning one: it is
+    called on first use, so that declaring a witness costs nothing at import."""
 
     name: str
     description: str
@@ -96,6 +100,13 @@ class MeasuredWitness:
 
     methods = DEFAULT_METHODS
 
+    @property
+    def instances(self) -> tuple:
+        """The cases (built now if they were declared as a function)."""
+        if callable(self.cases):
+            object.__setattr__(self, "cases", tuple(self.cases()))
+        return self.cases
+
     def measure(self, case: Case, method):
         raise NotImplementedError  # pragma: no cover - abstract
 
@@ -103,26 +114,26 @@ class MeasuredWitness:
         measured = {}
         for method in self.methods:
             t0 = time.perf_counter()
-            values = [self.measure(case, method) for case in self.cases]
+            values = [self.measure(case, method) for case in self.instances]
             measured[method] = (values, time.perf_counter() - t0)
         outcomes = {}
         for target in readings:
             if target.split("#")[0] not in self.targets:
                 continue
-            reading = readings[target]
+            expected_by_case = [_expected(readings[target], case.params) for case in self.instances]
+            for case, expected in zip(self.instances, expected_by_case):
+                if not expected:
+                    raise ValueError(f"witness {self.name}: no member of {target} is a number at {case.label}")
             out = Outcome(self.name)
             for method, (values, seconds) in measured.items():
                 worst_abs = worst_rel = 0.0
-                for case, value in zip(self.cases, values):
-                    expected = _expected(reading, case.params)
-                    if not expected:
-                        raise ValueError(f"witness {self.name}: no member of {target} is a number at {case.label}")
+                for value, expected in zip(values, expected_by_case):
                     for e in expected:
                         a, r = _errors(value, e)
                         worst_abs, worst_rel = max(worst_abs, a), max(worst_rel, r)
                 out.records.append({"method": method.name, "abs_error": worst_abs,
                                     "rel_error": worst_rel, "seconds": seconds,
-                                    "cases": len(self.cases)})
+                                    "cases": len(self.instances)})
                 if worst_rel > max(method.tolerance, 1e-50):
                     out.agrees = False
             if not out.agrees:

@@ -232,9 +232,9 @@ def _witness_targets(d, w, results):
         if chain is None:
             continue
         chain = _resolved(chain, results)
-        if not any(_is_number(m, case.params) for m in members(chain) for case in w.cases):
+        if not any(_is_number(m, case.params) for m in members(chain) for case in w.instances):
             continue            # the witness measures something the reading states only with free symbols
-        targets[p.name] = [_exact_reference(chain, case.params) for case in w.cases]
+        targets[p.name] = [_exact_reference(chain, case.params) for case in w.instances]
     return targets
 
 
@@ -260,7 +260,7 @@ def bench_derivation(d, bench: Bench, digits=DIGITS, orders=FLOAT64_ORDERS, pane
         methods = list(methods_for(w, d, digits, orders, panels))
         missing = any(r is None for refs in targets.values() for r in refs)
         ref_method = _reference_run(w)
-        runs, runners = {}, [_runner(w, case) for case in w.cases]
+        runs, runners = {}, [_runner(w, case) for case in w.instances]
         for m in methods + ([ref_method] if missing and ref_method.name not in map(_method_name, methods) else []):
             try:
                 runs[_method_name(m)] = _measure(runners, m, repeats) + ("",)

@@ -112,7 +112,7 @@ def registry_orders(selector=None, panels=PANELS) -> list[OrderRow]:
         d, _ = load(did)
         for w in d.witnesses:
             if isinstance(w, (SectionIntegral, PlaneSections)):
-                rows.append(_order_row(d.id, w.name, *_integrand(w, w.cases[0]), panels))
+                rows.append(_order_row(d.id, w.name, *_integrand(w, w.instances[0]), panels))
     y = sp.Symbol("y")
     rows.append(_order_row("(reference)", "exponential", sp.exp(y), y, 0, 1, panels))
     rows.append(_order_row("(reference)", "circle chord", 2 * sp.sqrt(1 - y ** 2), y, -1, 1, panels))

@@ -14,10 +14,13 @@ import math
 import time
 from fractions import Fraction
 
+from pathlib import Path
+
 from ..registry import load
 from ..solver import make_scene, solve
+from .stamp import digest, package_digest, stamp_line
 
-__all__ = ["DENSITIES", "RATIOS", "grid_rows", "grid_markdown"]
+__all__ = ["DENSITIES", "RATIOS", "grid_rows", "grid_markdown", "grid_stamp"]
 
 DENSITIES = [Fraction(k, 40) for k in range(1, 40)]
 RATIOS = [Fraction(x) for x in ("1.02", "1.1", "1.25", "1.5", "1.75", "2", "2.5", "3", "4", "6")]
@@ -83,7 +86,15 @@ def grid_rows(densities=DENSITIES, ratios=RATIOS, progress=None, extra=()) -> li
     return rows
 
 
-def grid_markdown(rows) -> str:
+def grid_stamp() -> str:
+    """The content stamp of the grid: the solver, geometry and model sources, this module and
+    the derivation whose tables it reads (see :mod:`symfloat.report.stamp`)."""
+    _, module = load("scheeffer-ix")
+    return digest(package_digest("solver", "geometry", "model"), Path(__file__), Path(module.__file__),
+                  repr((DENSITIES, RATIOS, MATCH_RAD)))
+
+
+def grid_markdown(rows, stamp: str | None = None) -> str:
     bad = [r for r in rows if r["missing"] or r["wrong_stability"] or r["unpredicted"]]
     boundary = [r for r in rows if r["boundary"]]
     rows_grid = [r for r in rows if not r["boundary"]]
@@ -122,4 +133,6 @@ def grid_markdown(rows) -> str:
             what += [f"solver's {u['stability']} position at {u['tilt_deg']:.4f}° is not in the tables"
                      for u in r["unpredicted"]]
             lines.append(f"| {r['s_exact']} | {r['ratio_exact']} | {r['table']} | {r['solver']} | {'; '.join(what)} |")
+    if stamp:
+        lines += ["", stamp_line(stamp)]
     return "\n".join(lines) + "\n"

@@ -3,10 +3,14 @@
 The derivations that speak about a body are found without importing every
 module: each registers ``d.predicts((bodies...), predict)`` with a literal
 tuple, which is read from the module's source (:func:`predicting`).  Only
-those derivations and their ancestors are evaluated (checked, or taken from
-the cache).  A prediction *agrees* when the solver found an equilibrium in its
-symmetry class (within ``MATCH_RAD``) with the predicted stability; a
-prediction without a matching equilibrium is a disagreement of its own.
+those derivations are read: their predictors evaluate the printed formulas at
+the scene's numbers.  Nothing is re-proved and no witness runs; each printed
+formula carries the verdict its derivation *declares* (an erratum where one is
+declared, ``unverifiable`` where the text is lost, else ``verified``), which
+the proof checks (``symfloat verify``, CI) hold the derivation to.  A
+prediction *agrees* when the solver found an equilibrium in its symmetry class
+(within ``MATCH_RAD``) with the predicted stability; a prediction without a
+matching equilibrium is a disagreement of its own.
 """
 from __future__ import annotations
 
@@ -19,8 +23,7 @@ import numpy as np
 
 import derivations
 
-from ..engine.cache import ReportCache
-from ..engine.runner import verify
+from ..model.derivation import Printed
 from ..model.prediction import Scene
 from ..registry import load, module_names
 from .bodies import centred_polygon, polyhedron
@@ -28,7 +31,7 @@ from .local import local
 from .solve import Solution, body_scale
 from .symmetry import box_group, planar_group, prism_group
 
-__all__ = ["predicting", "cover", "symmetry_group"]
+__all__ = ["predicting", "cover", "symmetry_group", "declared_verdict"]
 
 MATCH_RAD = 1e-6
 
@@ -82,27 +85,29 @@ def _on_ring(scene, predicted, eq) -> bool:
     return np.linalg.norm(loc.gradient) <= 1e-7 * scale and abs(loc.U - eq.potential) <= 1e-7 * scale
 
 
-def cover(solution: Solution, cache: ReportCache | None = None) -> tuple[list[str], list[dict]]:
+def declared_verdict(p: Printed) -> str:
+    """The verdict a derivation declares for printed formula *p* (what its proof checks confirm)."""
+    if p.erratum is not None:
+        return "erratum"
+    return "unverifiable" if p.lost else "verified"
+
+
+def cover(solution: Solution) -> tuple[list[str], list[dict]]:
     """Attach the predicting formulas to *solution*'s equilibria; returns the derivations
-    evaluated and the predictions that match no equilibrium."""
+    read and the predictions that match no equilibrium."""
     scene = solution.scene
     ids = predicting(scene.body)
-    evaluated, reports = [], {}
-    for did in ids:
-        for report in verify(did, cache=cache):
-            if report.id not in reports:
-                evaluated.append(report.id)
-                reports[report.id] = report
     group = symmetry_group(scene)
     unmatched = []
     for did in ids:
         d, _ = load(did)
-        verdicts = {f.id: f for f in reports[did].formulas}
         for pred in d.predictor.predict(scene):
             printed = [p for p in d.printed if p.name in pred.printed]
             entry = {"derivation": did, "printed": [d.formula_id(p) for p in printed],
                      "locators": sorted({p.locator for p in printed}),
-                     "verdicts": sorted({verdicts[d.formula_id(p)].verdict for p in printed}),
+                     "verdicts": sorted({declared_verdict(p) for p in printed}),
+                     "corrections": [{"locator": p.locator, "corrected": p.erratum.corrected}
+                                     for p in printed if p.erratum is not None],
                      "predicted_up": [float(x) for x in pred.up], "predicted_stability": pred.stability,
                      "predicted_family": pred.family, "note": pred.note}
             best = min(solution.equilibria, key=lambda e: _distance(scene, group, pred.up, e), default=None)
@@ -125,4 +130,4 @@ def cover(solution: Solution, cache: ReportCache | None = None) -> tuple[list[st
             for loc in entry["locators"]:
                 if loc not in match.formulas:
                     match.formulas.append(loc)
-    return evaluated, unmatched
+    return ids, unmatched

@@ -1,0 +1,53 @@
+"""Content stamps: a generated file records the digest of what it was made from.
+
+Executing the notebooks and solving the Scheeffer IX grid are the slow parts of
+the main job, and both depend only on code and data that rarely change.  Each
+such output carries a *stamp* — the digest of its inputs (source files, the
+unexecuted notebook, the derivation's cache key) — and is regenerated only when
+the stamp of its present inputs differs, like the derivation cache but kept in
+the committed file itself, so that a fresh clone starts warm.
+"""
+from __future__ import annotations
+
+import hashlib
+import re
+from pathlib import Path
+
+__all__ = ["digest", "package_digest", "stamp_line", "stamp_of"]
+
+_STAMP = re.compile(r"<!-- content stamp: ([0-9a-f]{16,64}) -->")
+
+
+def digest(*parts) -> str:
+    """SHA-256 (first 32 hex digits) of *parts*: strings, bytes, or paths (their bytes)."""
+    h = hashlib.sha256()
+    for part in parts:
+        if isinstance(part, Path):
+            h.update(part.as_posix().encode() + b"\0" + part.read_bytes())
+        elif isinstance(part, bytes):
+            h.update(part)
+        else:
+            h.update(str(part).encode())
+        h.update(b"\0\0")
+    return h.hexdigest()[:32]
+
+
+def package_digest(*folders: str) -> str:
+    """Digest of every ``.py`` file under the named folders of the ``symfloat`` package."""
+    root = Path(__file__).resolve().parents[1]
+    files = [f for name in folders for f in sorted((root / name).rglob("*.py"))]
+    return digest(*(str(f.relative_to(root)) + "\n" + f.read_text(encoding="utf-8") for f in files))
+
+
+def stamp_line(key: str) -> str:
+    """The line a Markdown output ends with."""
+    return f"<!-- content stamp: {key} -->"
+
+
+def stamp_of(path: Path) -> str | None:
+    """The stamp recorded in *path*, or ``None`` (no file, or no stamp)."""
+    try:
+        match = _STAMP.search(path.read_text(encoding="utf-8"))
+    except OSError:
+        return None
+    return match.group(1) if match else None

@@ -1,0 +1,77 @@
+"""Proof certificates: verdicts that no clock decides (issue: proof checks on any machine).
+
+A claim's symbolic proof is replayed from its recorded certificate with no time limit; a search
+happens only for a claim without one, and the clock can end a search, never a replay."""
+import sympy as sp
+
+from symfloat import Derivation
+from symfloat.engine.check import check_derivation
+from symfloat.engine.identity import Domain, check_identity
+from symfloat.engine.proofs import Certificate, ProofBook, claim_digest
+
+x, y = sp.symbols("x y", positive=True)
+DOMAIN = Domain({x: (1, 5), y: (1, 5)})
+# cancel, expand and radsimp leave sin^2 + cos^2 - 1 as it is; simplify proves it
+TRIG = (sp.sin(x) ** 2 + sp.cos(x) ** 2, sp.Integer(1))
+
+
+def test_a_search_records_the_strategy_that_proved_the_claim():
+    res = check_identity(*TRIG, DOMAIN, "rad")
+    assert res.status == "proved" and res.proof == "searched"
+    assert res.certificate["strategy"] == res.strategy == "simplify"
+    assert res.certificate["digest"] == claim_digest([TRIG])
+
+
+def test_a_replay_runs_exactly_the_recorded_strategy_and_needs_no_clock(monkeypatch):
+    digest = claim_digest([TRIG])
+    book = ProofBook("t", {"rad": Certificate(digest, "simplify", ("simplify",))})
+    # a machine a trillion times slower: every search would stop at once, a replay is unaffected
+    monkeypatch.setenv("SYMFLOAT_SLOWDOWN", "1e12")
+    res = check_identity(*TRIG, DOMAIN, "rad", book=book)
+    assert (res.status, res.proof, res.strategy) == ("proved", "replayed", "simplify")
+
+
+def test_the_clock_can_end_a_search_but_the_outcome_is_written_down(monkeypatch):
+    monkeypatch.setenv("SYMFLOAT_SLOWDOWN", "1e12")
+    res = check_identity(*TRIG, DOMAIN, "rad")
+    assert res.status == "sampled" and res.proof == "searched"
+    assert res.certificate["strategy"] is None
+    assert all("time limit" in t for t in res.certificate["tried"])
+
+
+def test_a_certificate_that_no_longer_proves_its_claim_is_a_failure():
+    d = Derivation(id="t-replay", source="graefe", title="t", locator="§0", domain={x: (1, 5)})
+    d.step("rad", TRIG, "algebra")
+    # cancel is recorded for the very claim (same digest), but cancel cannot prove it
+    book = ProofBook(d.id, {"step t-replay/rad#0": Certificate(claim_digest([TRIG]), "cancel", ("cancel",))})
+    report = check_derivation(d, book=book)
+    assert report.steps[0].status == "sampled"
+    assert report.proofs["step t-replay/rad#0"]["how"] == "replay failed"
+    assert any("no longer proves" in f for f in report.failures)
+
+
+def test_a_changed_claim_is_searched_anew():
+    old = ProofBook("t", {"c": Certificate(claim_digest([(x + y, y + x)]), None, ("recorded: none",))})
+    res = check_identity((x + y) ** 2, x**2 + 2 * x * y + y**2, DOMAIN, "c", book=old)
+    assert res.proof == "searched" and res.status == "proved"
+
+
+def test_a_recorded_failed_search_is_replayed_as_sampling():
+    claim = ((x + y) ** 2, x**2 + 2 * x * y + y**2)
+    book = ProofBook("t", {"c": Certificate(claim_digest([claim]), None, ("cancel (recorded)",), "r")})
+    res = check_identity(*claim, DOMAIN, "c", book=book)
+    assert (res.status, res.proof, res.residual) == ("sampled", "replayed", "r")
+    assert "cancel (recorded)" in res.tried
+
+
+def test_every_claim_of_the_library_replays_a_committed_certificate(all_reports):
+    searched = {r.id: r.searched() for r in all_reports if r.searched()}
+    assert not searched, f"claims without a committed certificate (run `make run` and commit): {searched}"
+
+
+def test_the_committed_certificates_are_exactly_the_ones_used(all_reports):
+    for r in all_reports:
+        path = ProofBook.path(r.id)
+        assert path.exists(), f"{path} is missing: run `make run` and commit"
+        assert path.read_text(encoding="utf-8") == ProofBook.text(r.certificates()), \
+            f"{path} is stale: run `make run` and commit"

@@ -1,0 +1,56 @@
+"""The proof checks under load: every core busy, the check pinned to one core, and every search time
+limit divided by 1e9 (``SYMFLOAT_SLOWDOWN``) — the records come out identical to the committed ones,
+byte for byte but for timings (issue: proof checks that give the same verdicts on any machine)."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from symfloat.report.files import without_timings
+
+ROOT = Path(__file__).resolve().parents[1]
+# metazentrum holds proofs by simplify and claims resting on sampling; graefe-s3 by cancel, squares and
+# radsimp, and its ancestors come along: together every kind of certificate the library records
+SELECTIONS = ("metazentrum", "graefe-s3")
+
+
+def _busy_loops():
+    return [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range(os.cpu_count() or 2)]
+
+
+def _symfloat(*argv, env):
+    cmd = [sys.executable, "-m", "symfloat", *argv, "--quiet"]
+    if shutil.which("taskset"):
+        cmd = ["taskset", "-c", "0", *cmd]
+    return subprocess.run(cmd, capture_output=True, text=True, env=env, cwd=ROOT, timeout=1800)
+
+
+def _committed(name, key, ids):
+    entries = json.loads((ROOT / "docs" / name).read_text(encoding="utf-8"))
+    entries = entries[key] if key else entries
+    return [without_timings(json.dumps(e, ensure_ascii=False)) for e in entries if e["derivation"] in ids]
+
+
+@pytest.mark.parametrize("selection", SELECTIONS)
+def test_records_are_identical_under_load(selection, tmp_path):
+    env = {**os.environ, "SYMFLOAT_CACHE": str(tmp_path / "cache"), "SYMFLOAT_SLOWDOWN": "1e9",
+           "SYMFLOAT_WORKERS": "1"}
+    busy = _busy_loops()
+    try:
+        verify = _symfloat("verify", selection, "--format", "json", env=env)
+        errata = _symfloat("errata", selection, "--format", "json", env=env)
+    finally:
+        for p in busy:
+            p.kill()
+            p.wait()
+    assert verify.returncode == 0 and errata.returncode == 0, verify.stderr + errata.stderr
+    record = json.loads(verify.stdout)
+    ids = record["summary"]["derivations"]
+    got = [without_timings(json.dumps(e, ensure_ascii=False)) for e in record["formulas"]]
+    assert got == _committed("verification.json", "formulas", ids)
+    got = [without_timings(json.dumps(e, ensure_ascii=False)) for e in json.loads(errata.stdout)]
+    assert got == _committed("errata.json", None, ids)
