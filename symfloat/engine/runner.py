@@ -13,7 +13,7 @@ from .cache import ReportCache, derivation_key
 from .check import DerivationReport, check_derivation
 from .proofs import ProofBook
 
-__all__ = ["verify", "Progress", "default_workers"]
+__all__ = ["verify", "derivation_keys", "Progress", "default_workers"]
 
 
 class Progress:
@@ -60,6 +60,19 @@ def _check_json(did: str, key: str, search: bool) -> dict:
     return _check(did, key, search).to_json()
 
 
+def derivation_keys(ids) -> dict[str, str]:
+    """The cache key of each derivation of *ids*, from the sources alone:
+    finding a cached report imports no derivation module."""
+    keys: dict[str, str] = {}
+
+    def key(did):
+        if did not in keys:
+            keys[did] = derivation_key(module_path(did), [key(r) for r in requires(did)], ProofBook.path(did))
+        return keys[did]
+
+    return {did: key(did) for did in ids}
+
+
 def verify(selector: str | None = None, *, use_cache: bool = True, cache: ReportCache | None = None,
            progress: Progress | None = None, workers: int | None = None, search_proofs: bool = False,
            record_proofs: bool = False) -> list[DerivationReport]:
@@ -77,8 +90,7 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
     keys: dict[str, str] = {}
     reports: dict[str, DerivationReport] = {}
     pending = []
-    for did in ids:           # keys from the sources alone: a cached report imports no module
-        keys[did] = derivation_key(module_path(did), [keys[r] for r in requires(did)], ProofBook.path(did))
+    keys.update(derivation_keys(ids))
         data = cache.get(did, keys[did])
         if data is not None:
             reports[did] = DerivationReport.from_json(data)

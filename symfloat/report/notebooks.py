@@ -19,8 +19,9 @@ from nbclient import NotebookClient
 from ..model.source import get_source
 from ..registry import load
 from .files import write_if_changed
+from .stamp import digest
 
-__all__ = ["build_notebook", "execute_notebook", "write_notebooks"]
+__all__ = ["build_notebook", "execute_notebook", "write_notebooks", "notebook_stamp", "recorded_stamp"]
 
 KERNEL = {"name": "python3", "display_name": "Python 3", "language": "python"}
 
@@ -74,16 +75,43 @@ def execute_notebook(nb, cwd: str | os.PathLike) -> nbformat.NotebookNode:
     return nb
 
 
-def write_notebooks(ids, folder: str | os.PathLike = "notebooks", progress=None) -> list[Path]:
-    """Build, execute and write the notebooks of *ids*; return the files written."""
+def notebook_stamp(derivation_id: str, keys: dict) -> str:
+    """The content stamp of a derivation's notebook: its cache key (module, proofs, library,
+    ancestors), the code that builds and shows the notebook, and the SymPy that renders it."""
+    import sympy
+
+    here = Path(__file__).resolve().parent
+    return digest(keys[derivation_id], here / "notebooks.py", here / "notebook_view.py", sympy.__version__)
+
+
+def write_notebooks(ids, folder: str | os.PathLike = "notebooks", progress=None, *, force: bool = False) -> list[Path]:
+    """Build, execute and write the notebooks of *ids*; return the files written.
+
+    A notebook whose recorded content stamp (its metadata ``symfloat.stamp``) equals the present
+    one is current and is neither executed nor written, unless *force*."""
+    from ..engine.runner import derivation_keys
+
     folder = Path(folder)
     os.environ.setdefault("SYMFLOAT_CACHE", str(Path(".symfloat-cache").resolve()))
+    keys = derivation_keys(ids)
     written = []
     for did in ids:
+        path = folder / f"{did}.ipynb"
+        stamp = notebook_stamp(did, keys)
+        if not force and recorded_stamp(path) == stamp:
+            continue
         if progress:
             progress(did)
         nb = execute_notebook(build_notebook(did), Path.cwd())
-        path = folder / f"{did}.ipynb"
+        nb.metadata["symfloat"] = {"stamp": stamp}
         if write_if_changed(path, nbformat.writes(nb) + "\n"):
             written.append(path)
     return written
+
+
+def recorded_stamp(path: Path) -> str | None:
+    """The content stamp a written notebook records, or ``None``."""
+    try:
+        return nbformat.read(path, as_version=4).metadata.get("symfloat", {}).get("stamp")
+    except (OSError, ValueError):
+        return None
