@@ -13,13 +13,14 @@ from functools import cache
 
 import derivations
 
+from .errors import InputError
 from .model.derivation import Derivation
 
 __all__ = ["module_names", "load", "select", "SelectorError"]
 
 
-class SelectorError(ValueError):
-    """A selector that matches no derivation."""
+class SelectorError(InputError):
+    """A selector that matches no derivation (exit status 2)."""
 
 
 def module_names() -> list[str]:
