@@ -46,11 +46,20 @@ EXIT_STATUS = ("exit status: 0 success; 1 a check failed (verdict, index sum, du
                "2 bad input or an environment problem; 130 interrupted")
 
 
+def _one_line(message: str) -> str:
+    """*message* on one line: line breaks a user typed into a value are shown escaped.
+
+    >>> _one_line("bad value 'a\\nb'")
+    "bad value 'a\\\\nb'"
+    """
+    return message.replace("\r", "\\r").replace("\n", "\\n")
+
+
 class _Parser(argparse.ArgumentParser):
     """Usage errors as one line, exit status 2 (``--help`` still shows the usage)."""
 
     def error(self, message):
-        self.exit(EXIT_INPUT, f"symfloat: {message} (see symfloat {self.prog.split()[-1]} --help)\n")
+        self.exit(EXIT_INPUT, f"symfloat: {_one_line(message)} (see {self.prog} --help)\n")
 
 
 # ---------------------------------------------------------------- shared policy
@@ -268,7 +277,10 @@ def _phase(args) -> int:
         raise SceneError(f"phase diagrams are drawn for cube and box, not {args.body[:40]!r}")
     steps = parse_whole(args.steps, "--steps", 4, 2000)
     for s in (Fraction(1, steps + 1), Fraction(steps, steps + 1)):       # both ends of the sweep
-        make_scene(args.body, s, args.dims)
+        try:
+            make_scene(args.body, s, args.dims)
+        except SceneError as exc:
+            raise SceneError(f"--steps {steps}: {exc}") from None
     plot = _plot_target(args.plot)
     diagram = phase_diagram(args.body, args.dims, steps, progress=None if _quiet(args) else
                             (lambda msg: print(msg, file=sys.stderr)))
@@ -360,7 +372,7 @@ def main(argv=None) -> int:
         except KeyboardInterrupt:
             pass
         except SymfloatError as exc:
-            print(f"symfloat: {exc}", file=sys.stderr)
+            print(f"symfloat: {_one_line(str(exc))}", file=sys.stderr)
             return exc.exit_code
         except BrokenPipeError:            # the reader of stdout went away (``| head``)
             os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())

@@ -85,6 +85,8 @@ class ReportCache:
         """Create the cache directory and make sure it can be written, before any work."""
         if not self.enabled:
             return
+        if self.root.exists() and not self.root.is_dir():
+            raise CacheError(f"cannot use the cache directory {self.root} (SYMFLOAT_CACHE): not a directory")
         try:
             self.root.mkdir(parents=True, exist_ok=True)
         except OSError as exc:

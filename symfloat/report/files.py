@@ -51,6 +51,8 @@ def _reason(exc: OSError) -> str:
 def writable_target(path: str | os.PathLike) -> Path:
     """*path* when a file can be written there (checked before any work), else :class:`OutputError`."""
     path = Path(path)
+    if "\0" in str(path):
+        raise OutputError(f"cannot write {str(path)!r}: a file name holds no NUL character")
     if path.is_dir():
         raise OutputError(f"cannot write {path}: it is a directory")
     parent = path.parent

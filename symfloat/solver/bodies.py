@@ -197,7 +197,7 @@ def _in_domain(scene: Scene, density_text) -> Scene:
         raise SceneError(f"the {scene.body} is too thin: thinnest/longest = {shown}; the solver handles "
                          f"{2 * MIN_LAYER:g} and more (min(s, 1 - s) x thinnest/longest >= {MIN_LAYER:g})")
     s = scene.density
-    if min(s, 1 - s) * Fraction(ratio) < Fraction(MIN_LAYER):
+    if float(min(s, 1 - s)) * ratio < MIN_LAYER * (1 - 1e-12):      # the bound itself is inside
         low = MIN_LAYER / ratio
         raise SceneError(f"density {density_text} is outside the range the solver handles for this "
                          f"{scene.body}: min(s, 1 - s) x thinnest/longest must be at least {MIN_LAYER:g} "
