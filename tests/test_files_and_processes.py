@@ -4,6 +4,7 @@ a cache verified by content hash, workers that end with their parent, Ctrl-C as 
 import errno
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -158,28 +159,46 @@ def test_quiet_policy(monkeypatch, capsys, cache_dir, graefe_reports):
 
 # ------------------------------------------------------------------ the cache
 
+@pytest.fixture(scope="module")
+def checked_once(tmp_path_factory):
+    """graefe-s1 checked once into a private cache: the cache and the fresh report."""
+    folder = tmp_path_factory.mktemp("cache")
+    return folder, verify("graefe-s1", cache=ReportCache(folder))[0]
+
+
 def _entry(folder):
     (path,) = folder.glob("graefe-s1-prismatoid-volume.*.json")
     return path
 
 
-@pytest.mark.parametrize("damage", ["edit a verdict", "truncate", "{}", "[]", "other format"])
-def test_a_damaged_cache_entry_is_recomputed_not_trusted(tmp_path, damage, graefe_reports):
-    cache = ReportCache(tmp_path)
-    first = verify("graefe-s1", cache=cache)[0]
-    assert not first.cached and verify("graefe-s1", cache=cache)[0].cached
+@pytest.mark.parametrize("damage", ["edit a verdict", "truncate", "{}", "[]", "other format", "other key"])
+def test_a_damaged_cache_entry_is_not_trusted(checked_once, tmp_path, damage):
+    shutil.copytree(checked_once[0], tmp_path, dirs_exist_ok=True)
     path = _entry(tmp_path)
-    entry = json.loads(path.read_text(encoding="utf-8"))
-    text = {"edit a verdict": lambda: path.read_text(encoding="utf-8").replace('"erratum"', '"verified"'),
-            "truncate": lambda: path.read_text(encoding="utf-8")[:len(path.read_text(encoding="utf-8")) // 2],
-            "{}": lambda: "{}", "[]": lambda: "[]",
-            "other format": lambda: json.dumps({**entry, "format": 1})}[damage]()
-    assert text != path.read_text(encoding="utf-8")
-    path.write_text(text, encoding="utf-8")
-    again = verify("graefe-s1", cache=cache)[0]
+    did, key = path.name.split(".")[:2]
+    cache = ReportCache(tmp_path)
+    assert cache.get(did, key) is not None
+    text = path.read_text(encoding="utf-8")
+    entry = json.loads(text)
+    path.write_text({"edit a verdict": text.replace('"erratum"', '"verified"', 1),
+                     "truncate": text[:len(text) // 2], "{}": "{}", "[]": "[]",
+                     "other format": json.dumps({**entry, "format": 1}),
+                     "other key": json.dumps({**entry, "key": "0" * 32})}[damage], encoding="utf-8")
+    assert path.read_text(encoding="utf-8") != text
+    assert cache.get(did, key) is None
+
+
+def test_a_hand_edited_verdict_is_recomputed(checked_once, tmp_path):
+    # symfloat issue 17: setting verdicts to 'verified' in a cache file changed the summary
+    shutil.copytree(checked_once[0], tmp_path, dirs_exist_ok=True)
+    path = _entry(tmp_path)
+    text = path.read_text(encoding="utf-8")
+    assert '"erratum"' in text
+    path.write_text(text.replace('"erratum"', '"verified"'), encoding="utf-8")
+    again = verify("graefe-s1", cache=ReportCache(tmp_path))[0]
     assert not again.cached                                    # checked again, not read
-    assert [f.verdict for f in again.formulas] == [f.verdict for f in first.formulas]
-    assert verify("graefe-s1", cache=cache)[0].cached          # and the entry replaced by a sound one
+    assert [f.verdict for f in again.formulas] == [f.verdict for f in checked_once[1].formulas]
+    assert verify("graefe-s1", cache=ReportCache(tmp_path))[0].cached     # the entry replaced by a sound one
 
 
 def _concurrent_puts(folder, n):
@@ -266,3 +285,19 @@ def test_ctrl_c_stops_at_once_keeps_finished_checks_and_exits_130(tmp_path):
     rerun = _start(tmp_path, "verify", "graefe-s1")            # the next run recovers and reads what was kept
     out, err = rerun.communicate(timeout=300)
     assert rerun.returncode == 0 and "printed formulas" in out
+
+
+def _concurrent_writes(path, tag, n):
+    for i in range(n):
+        write_if_changed(path, f"{tag} {i}\n" * 2000)
+
+
+def test_concurrent_writers_leave_one_whole_output(tmp_path):
+    out = tmp_path / "errata.md"
+    code = "import sys; sys.path.insert(0, {here!r}); from test_files_and_processes import _concurrent_writes; " \
+           "_concurrent_writes({out!r}, {tag!r}, 200)"
+    procs = [subprocess.Popen([sys.executable, "-c", code.format(here=str(Path(__file__).parent), out=str(out),
+                                                                  tag=tag)]) for tag in ("a", "b")]
+    assert [p.wait(timeout=120) for p in procs] == [0, 0]
+    lines = out.read_text().splitlines()
+    assert len(lines) == 2000 and len(set(lines)) == 1 and _no_temporaries(tmp_path)
