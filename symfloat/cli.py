@@ -42,7 +42,7 @@ from .report.files import write_atomic, write_if_changed, writable_target
 from .report.notebooks import write_notebooks
 from .report.record import record_json, verification_table
 
-EXIT_STATUS = ("exit status: 0 success; 1 a check failed (verdict, index sum, duality, coverage); "
+EXIT_STATUS = ("Exit status: 0 success; 1 a check failed (verdict, index sum, duality, coverage); "
                "2 bad input or an environment problem; 130 interrupted")
 
 

@@ -253,10 +253,10 @@ def _wait_for(predicate, seconds=120):
     return False
 
 
-pytestmark_linux = pytest.mark.skipif(not Path("/proc/self/task").exists(), reason="reads /proc")
+needs_proc = pytest.mark.skipif(not Path("/proc/self/task").exists(), reason="reads /proc")
 
 
-@pytestmark_linux
+@needs_proc
 def test_workers_end_with_their_parent_on_sigkill(tmp_path):
     proc = _start(tmp_path, "verify", "graefe")
     assert _wait_for(lambda: len(_children(proc.pid)) >= 2)
@@ -266,7 +266,7 @@ def test_workers_end_with_their_parent_on_sigkill(tmp_path):
     assert _wait_for(lambda: not any(_alive(w) for w in workers), seconds=5), "workers outlived their parent"
 
 
-@pytestmark_linux
+@needs_proc
 def test_ctrl_c_stops_at_once_keeps_finished_checks_and_exits_130(tmp_path):
     proc = _start(tmp_path, "verify", "graefe")
     cache = tmp_path / "cache"

@@ -277,7 +277,7 @@ def command_lines(draw):
     return argv
 
 
-def _cli_property(argv, monkeypatch_work):
+def _cli_property(argv):
     code, err = _exit_status([*argv, "--quiet"])
     assert "Traceback" not in err
     if code is None:
@@ -305,11 +305,11 @@ def no_work(monkeypatch, tmp_path):
 @example(["phase", "box", "--dims=1,0.01,1", "--steps=2000"])
 @example(["errata", ""])
 def test_every_field_of_the_command_line_is_answered_or_refused_in_one_line(no_work, argv):
-    _cli_property(argv, no_work)
+    _cli_property(argv)
 
 
 @pytest.mark.slow
 @LONG
 @given(command_lines())
 def test_every_field_of_the_command_line_long(no_work, argv):
-    _cli_property(argv, no_work)
+    _cli_property(argv)

@@ -78,7 +78,9 @@ def test_scene_outputs(run, argv):
     assert len(errors("scene", bad)) == 2
 
 
+@pytest.mark.slow
 def test_phase_output(run):
+    # the default run validates the phase record of tests/test_phase.py's sweep instead
     record = run("phase", "cube", "--steps", "4")
     assert errors("phase", record) == []
     assert record["dims"] == [1.0, 1.0, 1.0] and record["dims_exact"] == ["1", "1", "1"]
