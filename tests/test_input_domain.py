@@ -211,28 +211,41 @@ def _index_closes(scene):
 
 
 ratios = st.sampled_from(["1", "1/2", "1/10", "1/100", "1/1000", "1/4000"])
+edges = st.sampled_from(["lower", "upper", "0.5", "0.3"])     # densities at the stated bound and inside
+
+
+def _density(edge, thin):
+    """A density at the stated bound min(s, 1 - s) x thin = 1e-4 (lower or upper end), or inside."""
+    bound = Fraction(1, 10**4) / Fraction(thin) if thin else Fraction(1, 10**4)
+    bound = min(bound, Fraction(1, 2))
+    if edge == "lower":
+        return bound
+    return 1 - bound if edge == "upper" else Fraction(edge)
+
+
 in_domain = st.one_of(
-    st.builds(lambda s: ("cube", s, None, None), st.sampled_from(["1e-4", "3e-4", "0.5", "0.9999", "0.999"])),
-    st.builds(lambda r, s, big: ("box", s, f"{big},{Fraction(r) * Fraction(big)},{big}", None), ratios,
-              st.sampled_from(["0.2", "0.5", "0.8", "0.97"]), st.sampled_from(["1", "1e-6", "1e6"])),
-    st.builds(lambda n, s: ("prism", s, "1,2", str(n)), st.sampled_from([3, 4, 5, 7, 12]),
-              st.sampled_from(["1e-3", "0.3", "0.999"])),
+    st.builds(lambda e: ("cube", _density(e, 1), None, None, None), edges),
+    st.builds(lambda r, e, big: ("box", _density(e, Fraction(r)), f"{big},{Fraction(r) * Fraction(big)},{big}",
+                                 None, None), ratios, edges, st.sampled_from(["1", "1e-6", "1e6"])),
+    st.builds(lambda n, e: ("prism", _density(e, None), "1,2", str(n), None), st.sampled_from([3, 4, 5, 7, 12, 32]),
+              st.sampled_from(["0.3", "0.5", "0.999"])),
+    st.builds(lambda r, e: ("cylinder", _density(e, min(2 * Fraction(r), 1) / max(2 * Fraction(r), 1)),
+                            f"{r},1", None, None), ratios, edges),
+    st.builds(lambda r, e: ("section", _density(e, Fraction(r) / (1 + Fraction(r))), None, None,
+                            f"0,0 1,0 1,{r} 0,{r}"), ratios, edges),
+    st.builds(lambda e: ("section", _density(e, Fraction(1, 3)), None, None, "0,0 1,0 0,1"), edges),
 )
 
 
 def _in_domain_property(case):
-    body, s, d, n = case
-    try:
-        scene = make_scene(body, s, d, n)
-    except SceneError:
-        return                                   # outside the domain: the property is about accepted scenes
-    _index_closes(scene)
+    body, s, d, n, polygon = case
+    _index_closes(make_scene(body, s, d, n, polygon))      # every case is inside the stated domain
 
 
 @settings(max_examples=4, deadline=None, database=None)
 @given(in_domain)
-@example(("cube", "1e-4", None, None))
-@example(("box", "0.01", "1,0.01,1", None))
+@example(("cube", "1e-4", None, None, None))
+@example(("box", "0.01", "1,0.01,1", None, None))
 def test_inside_the_domain_the_index_check_closes(case):
     _in_domain_property(case)
 
@@ -267,9 +280,14 @@ fields = st.one_of(padded, st.text(max_size=40), polygons())
 
 @st.composite
 def command_lines(draw):
-    command = draw(st.sampled_from(["scene", "phase", "verify", "errata", "notebooks"]))
-    if command in ("verify", "errata", "notebooks"):
-        return [command, draw(st.one_of(st.text(max_size=30), st.sampled_from(["graefe", "graefe-s1", "x"])))]
+    command = draw(st.sampled_from(["scene", "phase", "verify", "errata", "notebooks", "bench"]))
+    if command in ("verify", "errata", "notebooks", "bench"):
+        argv = [command]
+        if command != "bench":
+            argv.append(draw(st.one_of(st.text(max_size=30), st.sampled_from(["graefe", "graefe-s1", "x"]))))
+        if draw(st.booleans()):
+            argv.append(f"--output={draw(st.one_of(st.text(max_size=40), st.sampled_from(['.', 'out.md', '/dev/null/x'])))}")
+        return argv
     argv = [command, draw(st.one_of(bodies, st.text(max_size=10)))]
     for flag in ("--density", "--dims", "--sides", "--polygon", "--steps", "--plot", "--format"):
         if draw(st.booleans()):
@@ -294,6 +312,7 @@ def no_work(monkeypatch, tmp_path):
     monkeypatch.setattr(cli, "verify", work)
     monkeypatch.setattr(cli, "select", work)            # importing derivations is work too
     monkeypatch.setattr("symfloat.solver.phase.phase_diagram", work)
+    monkeypatch.setattr("symfloat.numerics.document.generate", work)
     monkeypatch.setenv("SYMFLOAT_CACHE", str(tmp_path / "cache"))
     monkeypatch.chdir(tmp_path)
 
