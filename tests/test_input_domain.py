@@ -220,7 +220,7 @@ def _density(edge, thin):
     bound = min(bound, Fraction(1, 2))
     if edge == "lower":
         return bound
-    return 1 - bound if edge == "upper" else Fraction(edge)
+    return 1 - bound if edge == "upper" else min(max(Fraction(edge), bound), 1 - bound)
 
 
 in_domain = st.one_of(

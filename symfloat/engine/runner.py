@@ -73,15 +73,20 @@ def _end_with_parent(parent: int) -> None:
 
 
 def _kill(pool: ProcessPoolExecutor) -> None:
-    """End the pool's workers now (they may be deep in a symbolic check)."""
-    for process in list(getattr(pool, "_processes", {}).values()):
-        process.kill()
+    """End the pool's workers now (they may be deep in a symbolic check): ``kill_workers`` where
+    the standard library has it (Python 3.14), else each of the pool's processes."""
+    if hasattr(pool, "kill_workers"):
+        pool.kill_workers()
+    else:
+        for process in list((getattr(pool, "_processes", None) or {}).values()):
+            process.kill()
     pool.shutdown(wait=False, cancel_futures=True)
 
 
 def _cached_report(cache: ReportCache, did: str, key: str) -> DerivationReport | None:
-    """The cached report of *did* when its entry passes the cache's checks and reads back as a
-    report of that derivation and key, else ``None`` (the entry is then replaced)."""
+    """The cached report of *did* when its entry passes the cache's checks (envelope, key, content
+    hash) and reads back as a report of that derivation, else ``None`` (it is then checked again
+    and the entry replaced)."""
     data = cache.get(did, key)
     if data is None:
         return None

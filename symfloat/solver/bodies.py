@@ -188,7 +188,7 @@ def _in_domain(scene: Scene, density_text) -> Scene:
     if any(d > MAX_SIZE for d in sizes):
         raise SceneError(f"{scene.body} dimensions must be at most {float(MAX_SIZE):g} (choose units so)")
     thinnest, longest = thinness(scene)
-    if longest < MIN_SIZE:
+    if longest < float(MIN_SIZE) * (1 - 1e-12):                     # the bound itself is inside
         raise SceneError(f"the {scene.body} measures {longest:.3g} across; the solver needs at least "
                          f"{float(MIN_SIZE):g} (choose units so)")
     ratio = thinnest / longest
