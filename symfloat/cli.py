@@ -1,99 +1,135 @@
 """The ``symfloat`` command line.
 
     symfloat verify [SELECTOR] [--format table|json]
-    symfloat errata [--format md|json] [--output FILE]
+    symfloat errata [SELECTOR] [--format md|json] [--output FILE]
     symfloat notebooks [SELECTOR] [--output DIR]
     symfloat run
     symfloat scene BODY --density S [--dims ...] [--sides N] [--polygon "x,y ..."] [--format table|json]
                    [--plot FILE.png]
-    symfloat phase cube|box [--dims a,b,c] [--format table|json] [--plot FILE.png]
+    symfloat phase cube|box [--dims a,b,c] [--steps N] [--format table|json] [--plot FILE.png]
     symfloat bench [--quick] [--output DIR]
 
-Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET=1``) silences it.
-Exit status: 0 when every check behaves as declared, 1 when a check fails
-unexpectedly, 2 on bad input.
+Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET`` set to anything but ``0``) silences
+it.  The default outputs (``docs/``, ``notebooks/``) are those of the project checkout, wherever
+the command runs; a path given with ``--output`` or ``--plot`` is taken as given.  A selection
+never overwrites the record of everything (``docs/errata.md``, ``docs/errata.json``,
+``docs/verification.json``): ``errata SELECTOR`` prints its report, or writes it to ``--output``.
+
+Exit status, the same for every subcommand (:mod:`symfloat.errors`): 0 success; 1 a check failed
+(a verdict not as declared, an index sum, a duality, a coverage count); 2 bad input or an
+environment problem (one line on stderr, nothing written); 130 interrupted (Ctrl-C: finished
+checks stay cached).
 """
 from __future__ import annotations
 
 import argparse
+import io
 import os
+import signal
 import sys
+import time
 from collections import Counter
+from dataclasses import dataclass
 from pathlib import Path
 
 from .engine.cache import ReportCache
 from .engine.runner import Progress, verify
-from .registry import SelectorError, select
+from .errors import EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, InputError, SymfloatError
+from .project import GOLDEN, in_project, project_root
+from .registry import select
 from .report.errata import errata_json, errata_markdown
-from .report.files import write_if_changed
+from .report.files import write_atomic, write_if_changed, writable_target
 from .report.notebooks import write_notebooks
 from .report.record import record_json, verification_table
+from .report.stamp import stamp_of
 
-DOCS = Path("docs")
+EXIT_STATUS = ("Exit status: 0 success; 1 a check failed (verdict, index sum, duality, coverage); "
+               "2 bad input or an environment problem; 130 interrupted")
+
+
+def _one_line(message: str) -> str:
+    """*message* on one line: line breaks a user typed into a value are shown escaped.
+
+    >>> _one_line("bad value 'a\\nb'")
+    "bad value 'a\\\\nb'"
+    """
+    return message.replace("\r", "\\r").replace("\n", "\\n")
 
 
 class _Parser(argparse.ArgumentParser):
     """Usage errors as one line, exit status 2 (``--help`` still shows the usage)."""
 
     def error(self, message):
-        self.exit(2, f"symfloat: {message} (see symfloat {self.prog.split()[-1]} --help)\n")
+        self.exit(EXIT_INPUT, f"symfloat: {_one_line(message)} (see {self.prog} --help)\n")
 
 
-def _parser():
-    common = _Parser(add_help=False)
-    common.add_argument("--quiet", action="store_true", help="no progress on stderr")
-    common.add_argument("--no-cache", action="store_true", help="re-check every derivation")
-    common.add_argument("--search-proofs", action="store_true",
-                        help="search every claim's symbolic proof anew instead of replaying its recorded "
-                             "certificate (derivations/proofs/), and record the outcome")
-    p = _Parser(prog="symfloat", description="Machine-checked re-derivation of classical "
-                                "texts on floating bodies and centroids.")
-    sub = p.add_subparsers(dest="command", required=True)
-    v = sub.add_parser("verify", parents=[common], help="check derivations and print verdicts")
-    v.add_argument("selector", nargs="?", help="a source key (graefe) or a derivation-id prefix")
-    v.add_argument("--format", choices=("table", "json"), default="table")
-    e = sub.add_parser("errata", parents=[common], help="write docs/errata.md or print the errata as JSON")
-    e.add_argument("selector", nargs="?")
-    e.add_argument("--format", choices=("md", "json"), default="md")
-    e.add_argument("--output", type=Path, help="file for the Markdown report (default docs/errata.md)")
-    n = sub.add_parser("notebooks", parents=[common], help="build and execute the derivation notebooks")
-    n.add_argument("selector", nargs="?")
-    n.add_argument("--output", type=Path, default=Path("notebooks"))
-    sub.add_parser("run", parents=[common], help="verify everything and write every report and notebook")
-    sc = sub.add_parser("scene", parents=[common], help="every equilibrium of one body at one density")
-    sc.add_argument("body", help="cube, box, prism, cylinder or section")
-    sc.add_argument("--density", help="density s relative to water, 0 < s < 1 (decimal or p/q)")
-    sc.add_argument("--dims", help="box a,b,c; prism a,b (side, length); cylinder r,b; cube a (default 1)")
-    sc.add_argument("--sides", help="number of sides of the prism's regular base")
-    sc.add_argument("--polygon", help='section: convex polygon "x1,y1 x2,y2 ..."')
-    sc.add_argument("--format", choices=("table", "json"), default="table")
-    sc.add_argument("--plot", type=Path, help="draw the stable positions into this PNG file")
-    ph = sub.add_parser("phase", parents=[common], help="stable positions against density, thresholds located")
-    ph.add_argument("body", help="cube or box")
-    ph.add_argument("--dims", help="box a,b,c")
-    ph.add_argument("--format", choices=("table", "json"), default="table")
-    ph.add_argument("--plot", type=Path, help="draw the phase diagram into this PNG file")
-    ph.add_argument("--steps", type=int, default=48, help="densities in the sweep (default 48)")
-    b = sub.add_parser("bench", parents=[common], help="numerics benchmark: write docs/numerics.md and its figures")
-    b.add_argument("--quick", action="store_true", help="a few derivations and methods (for tests)")
-    b.add_argument("--derivations", action="store_true",
-                   help="measure what checking each derivation costs (cold, warm, by kind) and write that table "
-                        "into docs/performance.md")
-    b.add_argument("--output", type=Path, default=DOCS, help="directory for numerics.md and figures/")
-    return p
+# ---------------------------------------------------------------- shared policy
+
+def _quiet(args) -> bool:
+    return args.quiet or os.environ.get("SYMFLOAT_QUIET", "0") not in ("", "0")
 
 
-def _progress(args):
-    return Progress(quiet=args.quiet or os.environ.get("SYMFLOAT_QUIET") == "1")
+def _say(args, message: str) -> None:
+    """A progress line on stderr unless quiet."""
+    if not _quiet(args):
+        print(message, file=sys.stderr, flush=True)
 
 
-def _reports(args, selector=None):
-    return verify(selector, cache=ReportCache(enabled=not args.no_cache), progress=_progress(args),
+def _cache(args) -> ReportCache:
+    """The cache, checked usable before any work."""
+    cache = ReportCache(enabled=not args.no_cache)
+    cache.prepare()
+    return cache
+
+
+def _kernels_share(cache: ReportCache) -> None:
+    """Point the notebook kernels (separate processes) at the command's cache."""
+    if cache.enabled:
+        os.environ["SYMFLOAT_CACHE"] = str(cache.root.resolve())
+
+
+def _selector(text):
+    """``None`` or a source key / derivation-id prefix: ASCII letters, digits and ``-``."""
+    if text is None:
+        return None
+    if not (0 < len(text) <= 80 and text.isascii() and all(c.isalnum() or c == "-" for c in text)):
+        raise InputError(f"a selector is a source key or a derivation-id prefix such as graefe or graefe-s3, "
+                         f"not {text[:40]!r}")
+    return text
+
+
+def _reports(args, selector=None, cache=None):
+    return verify(selector, cache=cache or _cache(args), progress=Progress(quiet=_quiet(args)),
                   search_proofs=args.search_proofs, record_proofs=True)
 
 
-def _failed(reports) -> bool:
-    return any(r.failures for r in reports)
+def _failed(reports) -> int:
+    return EXIT_CHECK if any(r.failures for r in reports) else EXIT_OK
+
+
+def _not_golden(path: Path) -> Path:
+    """*path*, unless it is one of the files that record everything (a selection must not replace them)."""
+    root = project_root()
+    if root is not None and path.resolve() in {(root / g).resolve() for g in GOLDEN}:
+        raise InputError(f"{path} is the record of every source; a selection is printed, or written to "
+                         f"another --output")
+    return path
+
+
+def _plot_target(path):
+    """The ``--plot`` file: a ``.png`` whose directory exists and is writable (checked before solving)."""
+    if path is None:
+        return None
+    if path.suffix.lower() != ".png":
+        raise InputError(f"--plot writes a PNG image: give a file name ending in .png, not {str(path)[:60]!r}")
+    return writable_target(path)
+
+
+def _write_plot(draw, subject, path: Path, args) -> None:
+    buffer = io.BytesIO()
+    draw(subject, buffer)
+    write_atomic(path, buffer.getvalue())
+    _say(args, f"wrote {path}")
 
 
 def _summary_by_source(reports) -> str:
@@ -107,112 +143,269 @@ def _summary_by_source(reports) -> str:
     return "\n".join(lines)
 
 
-def _scene(args) -> int:
-    import time
+# ---------------------------------------------------------------- the subcommands
 
+def _verify_args(p):
+    p.add_argument("selector", nargs="?", help="a source key (graefe) or a derivation-id prefix")
+    p.add_argument("--format", choices=("table", "json"), default="table")
+
+
+def _verify(args) -> int:
+    reports = _reports(args, _selector(args.selector))
+    print(record_json(reports) if args.format == "json" else verification_table(reports), end="")
+    return _failed(reports)
+
+
+def _errata_args(p):
+    p.add_argument("selector", nargs="?", help="a source key or derivation-id prefix: print (or --output) "
+                                               "the report of that selection")
+    p.add_argument("--format", choices=("md", "json"), default="md")
+    p.add_argument("--output", type=Path, help="file for the Markdown report (default: docs/errata.md of "
+                                               "the checkout without a selector, stdout with one)")
+
+
+def _errata(args) -> int:
+    selector = _selector(args.selector)
+    out = None
+    if args.format == "md":
+        if args.output is not None:
+            out = writable_target(_not_golden(args.output) if selector else args.output)
+        elif selector is None:
+            out = writable_target(in_project("docs/errata.md"))
+    reports = _reports(args, selector)
+    if args.format == "json":
+        print(errata_json(reports), end="")
+    elif out is None:
+        print(errata_markdown(reports), end="")
+    else:
+        write_if_changed(out, errata_markdown(reports))
+        _say(args, f"wrote {out}")
+    return _failed(reports)
+
+
+def _notebooks_args(p):
+    p.add_argument("selector", nargs="?")
+    p.add_argument("--output", type=Path, help="directory (default: notebooks/ of the checkout)")
+
+
+def _notebooks(args) -> int:
+    selector = _selector(args.selector)
+    folder = args.output or in_project("notebooks")
+    writable_target(folder / "x.ipynb")
+    ids = select(selector)
+    cache = _cache(args)
+    _kernels_share(cache)
+    reports = _reports(args, selector, cache)
+    written = write_notebooks(ids, folder, None if _quiet(args) else
+                              (lambda d: print(f"executing notebook {d}", file=sys.stderr, flush=True)))
+    _say(args, f"{len(written)} of {len(ids)} notebooks changed in {folder}")
+    return _failed(reports)
+
+
+def _run(args) -> int:
+    docs, notebooks = in_project("docs"), in_project("notebooks")
+    for path in (docs / "errata.md", notebooks / "x.ipynb"):
+        writable_target(path)
+    cache = _cache(args)
+    _kernels_share(cache)
+    reports = _reports(args, cache=cache)
+    write_if_changed(docs / "verification.json", record_json(reports))
+    write_if_changed(docs / "errata.json", errata_json(reports))
+    write_if_changed(docs / "errata.md", errata_markdown(reports))
+    quiet = _quiet(args)
+    written = write_notebooks([r.id for r in reports], notebooks, None if quiet else
+                              (lambda d: print(f"executing notebook {d}", file=sys.stderr, flush=True)))
+    if any(r.id == "scheeffer-ix" for r in reports):
+        from .report.ix_grid import boundary_cells, grid_markdown, grid_rows, grid_stamp
+        stamp = grid_stamp()
+        if stamp_of(docs / "scheeffer-ix-grid.md") != stamp:         # the solver or the tables changed
+            grid = grid_rows(progress=None if quiet else (lambda m: print(f"IX grid {m}", file=sys.stderr)),
+                             extra=boundary_cells())
+            write_if_changed(docs / "scheeffer-ix-grid.md", grid_markdown(grid, stamp))
+    print(_summary_by_source(reports))
+    print(f"wrote docs/verification.json, docs/errata.json, docs/errata.md, docs/scheeffer-ix-grid.md; "
+          f"{len(written)} notebooks changed")
+    for r in reports:
+        for msg in r.failures:
+            print(f"FAILURE: {msg}")
+    return _failed(reports)
+
+
+def _scene_args(p):
+    from .solver.bodies import DOMAIN
+    p.add_argument("body", help="cube, box, prism, cylinder or section")
+    p.add_argument("--density", help="density s relative to water, 0 < s < 1 (decimal or p/q)")
+    p.add_argument("--dims", help="box a,b,c; prism a,b (side, length); cylinder r,b; cube a (default 1)")
+    p.add_argument("--sides", help="number of sides of the prism's regular base")
+    p.add_argument("--polygon", help='section: convex polygon "x1,y1 x2,y2 ..."')
+    p.add_argument("--format", choices=("table", "json"), default="table")
+    p.add_argument("--plot", type=Path, help="draw the stable positions into this PNG file")
+    p.epilog = f"Supported inputs: {DOMAIN}. Numbers are ASCII decimals or p/q, kept exact. {EXIT_STATUS}."
+
+
+def _scene(args) -> int:
     from .report.scene import scene_json, scene_plot, scene_record, scene_table
     from .solver import make_scene, solve
     from .solver.coverage import cover
 
     start = time.perf_counter()
     scene = make_scene(args.body, args.density, args.dims, args.sides, args.polygon)
+    plot = _plot_target(args.plot)
     solution = solve(scene)
     evaluated, unmatched = cover(solution)
     record = scene_record(solution, evaluated, unmatched, time.perf_counter() - start)
     print(scene_json(record) if args.format == "json" else scene_table(record))
-    if args.plot:
-        scene_plot(solution, args.plot)
-        print(f"wrote {args.plot}", file=sys.stderr)
-    return 0
+    if plot:
+        _write_plot(scene_plot, solution, plot, args)
+    return EXIT_OK
+
+
+def _phase_args(p):
+    p.add_argument("body", help="cube or box")
+    p.add_argument("--dims", help="box a,b,c")
+    p.add_argument("--format", choices=("table", "json"), default="table")
+    p.add_argument("--plot", type=Path, help="draw the phase diagram into this PNG file")
+    p.add_argument("--steps", default="48", help="densities in the sweep, 4 to 2000 (default 48)")
+    p.epilog = ("The sweep's densities k/(steps+1) must all lie in the scene's supported range "
+                f"(symfloat scene --help). {EXIT_STATUS}.")
 
 
 def _phase(args) -> int:
+    from fractions import Fraction
+
     from .report.phase import phase_json, phase_plot, phase_table
-    from .solver.bodies import SceneError
+    from .solver.bodies import SceneError, make_scene, parse_whole
     from .solver.phase import phase_diagram
 
     if args.body not in ("cube", "box"):
-        raise SceneError(f"phase diagrams are drawn for cube and box, not {args.body!r}")
-    if args.steps < 4 or args.steps > 2000:
-        raise SceneError("--steps must lie between 4 and 2000")
-    diagram = phase_diagram(args.body, args.dims, args.steps, progress=None if args.quiet else
+        raise SceneError(f"phase diagrams are drawn for cube and box, not {args.body[:40]!r}")
+    steps = parse_whole(args.steps, "--steps", 4, 2000)
+    for s in (Fraction(1, steps + 1), Fraction(steps, steps + 1)):       # both ends of the sweep
+        try:
+            make_scene(args.body, s, args.dims)
+        except SceneError as exc:
+            raise SceneError(f"--steps {steps}: {exc}") from None
+    plot = _plot_target(args.plot)
+    diagram = phase_diagram(args.body, args.dims, steps, progress=None if _quiet(args) else
                             (lambda msg: print(msg, file=sys.stderr)))
     print(phase_json(diagram) if args.format == "json" else phase_table(diagram))
-    if args.plot:
-        phase_plot(diagram, args.plot)
-        print(f"wrote {args.plot}", file=sys.stderr)
-    return 0
+    if plot:
+        _write_plot(phase_plot, diagram, plot, args)
+    return EXIT_OK
+
+
+def _bench_args(p):
+    p.add_argument("--quick", action="store_true", help="a few derivations and methods (for tests)")
+    p.add_argument("--derivations", action="store_true",
+                   help="measure what checking each derivation costs (cold, warm, by kind) and write that "
+                        "table into performance.md")
+    p.add_argument("--output", type=Path, help="directory for numerics.md and figures/ (default: docs/ of "
+                                               "the checkout)")
+
+
+def _bench(args) -> int:
+    from .numerics.document import generate
+    folder = args.output or in_project("docs")
+    if args.derivations:
+        return _bench_derivations(args, folder)
+    writable_target(folder / "numerics.md")
+    quiet = _quiet(args)
+    written = generate(folder, quick=args.quick,
+                       progress=lambda msg: quiet or print(msg, file=sys.stderr, flush=True))
+    _say(args, f"{len(written)} numerics files changed in {folder}")
+    return EXIT_OK
+
+
+def _bench_derivations(args, folder: Path) -> int:
+    import platform
+
+    from .numerics.cost import cost_markdown, cost_rows, write_section
+    path = writable_target(folder / "performance.md")
+    rows = cost_rows(progress=lambda msg: _say(args, msg))
+    machine = f"{platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}"
+    write_atomic(path, write_section(path, cost_markdown(rows, machine)).encode("utf-8"))
+    _say(args, f"wrote {path}")
+    return EXIT_CHECK if any(r["failures"] for r in rows) else EXIT_OK
+
+
+@dataclass(frozen=True)
+class Command:
+    help: str
+    arguments: object       # adds the subcommand's own arguments to its parser
+    run: object             # args -> exit status
+
+
+COMMANDS = {
+    "verify": Command("check derivations and print verdicts", _verify_args, _verify),
+    "errata": Command("write docs/errata.md, or print a selection's errata (Markdown or JSON)",
+                      _errata_args, _errata),
+    "notebooks": Command("build and execute the derivation notebooks", _notebooks_args, _notebooks),
+    "run": Command("verify everything and write every report and notebook", lambda p: None, _run),
+    "scene": Command("every equilibrium of one body at one density", _scene_args, _scene),
+    "phase": Command("stable positions against density, thresholds located", _phase_args, _phase),
+    "bench": Command("numerics benchmark: write docs/numerics.md and its figures", _bench_args, _bench),
+}
+
+
+def _parser():
+    common = _Parser(add_help=False)
+    common.add_argument("--quiet", action="store_true", help="no progress on stderr (or SYMFLOAT_QUIET=1)")
+    common.add_argument("--no-cache", action="store_true", help="re-check every derivation")
+    common.add_argument("--search-proofs", action="store_true",
+                        help="search every claim's symbolic proof anew instead of replaying its recorded "
+                             "certificate (derivations/proofs/), and record the outcome")
+    p = _Parser(prog="symfloat", description="Machine-checked re-derivation of classical "
+                "texts on floating bodies and centroids.", epilog=EXIT_STATUS + ".")
+    sub = p.add_subparsers(dest="command", required=True)
+    for name, command in COMMANDS.items():
+        sp = sub.add_parser(name, parents=[common], help=command.help, epilog=EXIT_STATUS + ".")
+        command.arguments(sp)
+    return p
+
+
+class _Interrupts:
+    """Ctrl-C raises ``KeyboardInterrupt`` as usual and is remembered, so that an error it causes
+    further down (a notebook kernel interrupted mid-cell) is still reported as an interruption."""
+
+    def __init__(self):
+        self.seen = False
+
+    def __enter__(self):
+        try:
+            self.previous = signal.signal(signal.SIGINT, self._handle)
+        except ValueError:                  # not the main thread: leave the handler alone
+            self.previous = None
+        return self
+
+    def _handle(self, signum, frame):
+        self.seen = True
+        raise KeyboardInterrupt
+
+    def __exit__(self, *exc):
+        if self.previous is not None:
+            signal.signal(signal.SIGINT, self.previous)
+        return False
 
 
 def main(argv=None) -> int:
+    """Run one subcommand; every anticipated failure is one line on stderr and its exit status."""
     args = _parser().parse_args(argv)
-    from .solver.bodies import SceneError
-    try:
-        if args.command == "scene":
-            return _scene(args)
-        if args.command == "phase":
-            return _phase(args)
-        if args.command == "verify":
-            reports = _reports(args, args.selector)
-            print(record_json(reports) if args.format == "json" else verification_table(reports), end="")
-        elif args.command == "errata":
-            reports = _reports(args, args.selector)
-            if args.format == "json":
-                print(errata_json(reports), end="")
-            else:
-                out = args.output or DOCS / "errata.md"
-                write_if_changed(out, errata_markdown(reports))
-                print(f"wrote {out}", file=sys.stderr)
-        elif args.command == "notebooks":
-            ids = select(args.selector)
-            _reports(args, args.selector)
-            progress = None if args.quiet else (lambda d: print(f"executing notebook {d}", file=sys.stderr))
-            written = write_notebooks(ids, args.output, progress)
-            print(f"{len(written)} of {len(ids)} notebooks changed in {args.output}", file=sys.stderr)
-            reports = []
-        elif args.command == "bench" and args.derivations:
-            import platform
-
-            from .numerics.cost import cost_markdown, cost_rows, write_section
-            quiet = args.quiet or os.environ.get("SYMFLOAT_QUIET") == "1"
-            rows = cost_rows(progress=lambda msg: quiet or print(msg, file=sys.stderr, flush=True))
-            machine = f"{platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}"
-            path = args.output / "performance.md"
-            write_if_changed(path, write_section(path, cost_markdown(rows, machine)))
-            print(f"wrote {path}", file=sys.stderr)
-            reports = []
-        elif args.command == "bench":
-            from .numerics.document import generate
-            quiet = args.quiet or os.environ.get("SYMFLOAT_QUIET") == "1"
-            written = generate(args.output, quick=args.quick,
-                               progress=lambda msg: quiet or print(msg, file=sys.stderr, flush=True))
-            print(f"{len(written)} numerics files changed in {args.output}", file=sys.stderr)
-            reports = []
-        else:  # run
-            reports = _reports(args)
-            write_if_changed(DOCS / "verification.json", record_json(reports))
-            write_if_changed(DOCS / "errata.json", errata_json(reports))
-            write_if_changed(DOCS / "errata.md", errata_markdown(reports))
-            progress = None if args.quiet else (lambda d: print(f"executing notebook {d}", file=sys.stderr))
-            written = write_notebooks([r.id for r in reports], "notebooks", progress)
-            if any(r.id == "scheeffer-ix" for r in reports):
-                from .report.ix_grid import boundary_cells, grid_markdown, grid_rows, grid_stamp
-                from .report.stamp import stamp_of
-                stamp = grid_stamp()
-                if stamp_of(DOCS / "scheeffer-ix-grid.md") != stamp:   # solver or tables changed
-                    grid = grid_rows(progress=None if args.quiet else
-                                     (lambda m: print(f"IX grid {m}", file=sys.stderr)), extra=boundary_cells())
-                    write_if_changed(DOCS / "scheeffer-ix-grid.md", grid_markdown(grid, stamp))
-            print(_summary_by_source(reports))
-            print(f"wrote docs/verification.json, docs/errata.json, docs/errata.md, docs/scheeffer-ix-grid.md; "
-                  f"{len(written)} notebooks changed")
-            for r in reports:
-                for msg in r.failures:
-                    print(f"FAILURE: {msg}")
-    except (SelectorError, SceneError) as exc:
-        print(f"symfloat: {exc}", file=sys.stderr)
-        return 2
-    return 1 if _failed(reports) else 0
+    with _Interrupts() as interrupts:
+        try:
+            return COMMANDS[args.command].run(args)
+        except KeyboardInterrupt:
+            pass
+        except SymfloatError as exc:
+            print(f"symfloat: {_one_line(str(exc))}", file=sys.stderr)
+            return exc.exit_code
+        except BrokenPipeError:            # the reader of stdout went away (``| head``)
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+            return EXIT_OK
+        except Exception:
+            if not interrupts.seen:
+                raise
+    print("symfloat: interrupted (finished checks are kept in the cache)", file=sys.stderr)
+    return EXIT_INTERRUPTED
 
 
 if __name__ == "__main__":  # pragma: no cover

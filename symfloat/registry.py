@@ -18,13 +18,14 @@ from pathlib import Path
 
 import derivations
 
+from .errors import InputError
 from .model.derivation import Derivation
 
 __all__ = ["module_names", "module_path", "requires", "load", "select", "SelectorError"]
 
 
-class SelectorError(ValueError):
-    """A selector that matches no derivation."""
+class SelectorError(InputError):
+    """A selector that matches no derivation (exit status 2)."""
 
 
 @cache

@@ -48,10 +48,13 @@ def test_errata_json_contract(in_tmp, capsys):
     assert len({e["id"] for e in entries}) == len(entries)
 
 
-def test_errata_markdown_is_written(in_tmp):
+def test_a_selection_prints_its_errata_or_writes_them_where_asked(in_tmp, capsys):
     assert main(["errata", "graefe", "--quiet"]) == 0
-    text = (in_tmp / "docs" / "errata.md").read_text(encoding="utf-8")
-    assert text.startswith("# Errata") and "## graefe" in text
+    printed = capsys.readouterr().out
+    assert printed.startswith("# Errata") and "## graefe" in printed and "## scheeffer" not in printed
+    assert not (in_tmp / "docs").exists()
+    assert main(["errata", "graefe", "--quiet", "--output", "sel/graefe.md"]) == 0
+    assert (in_tmp / "sel" / "graefe.md").read_text(encoding="utf-8") == printed
 
 
 def test_unknown_selector_is_one_clear_message(in_tmp, capsys):

@@ -31,4 +31,6 @@ def test_box_thresholds_match_the_upright_closed_form(box_phase):
 def test_phase_outputs(box_phase, tmp_path):
     record = phase_record(box_phase)
     assert {"body", "dims", "sweep", "thresholds", "duality_holds"} <= set(record)
+    from test_json_schemas import errors
+    assert errors("phase", record) == []                  # symfloat/schemas/phase.schema.json
     assert "duality s <-> 1 - s: holds" in phase_table(box_phase)

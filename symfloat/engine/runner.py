@@ -1,9 +1,20 @@
-"""Verifying a selection of derivations, with cache and progress."""
+"""Verifying a selection of derivations, with cache and progress.
+
+Worker processes end with their parent: each asks the kernel for ``SIGKILL`` when its
+parent dies (Linux ``PR_SET_PDEATHSIG``; elsewhere a watcher thread notices the new parent
+within half a second), and ignores ``SIGINT``, which the parent handles: on Ctrl-C it kills
+its workers at once, keeps every report already finished (each is cached as it arrives)
+and lets the ``KeyboardInterrupt`` go on to the command line.
+"""
 from __future__ import annotations
 
+import ctypes
+import ctypes.util
 import multiprocessing
 import os
+import signal
 import sys
+import threading
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 
@@ -44,6 +55,51 @@ def default_workers() -> int:
     if env.isdigit() and int(env) >= 1:
         return int(env)
     return max(1, min(4, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1))
+
+
+def _end_with_parent(parent: int) -> None:
+    """Worker initializer: ignore Ctrl-C (the parent handles it) and die with the parent."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    libc = ctypes.util.find_library("c") if sys.platform.startswith("linux") else None
+    if libc:
+        pr_set_pdeathsig = 1
+        ctypes.CDLL(libc, use_errno=True).prctl(pr_set_pdeathsig, signal.SIGKILL, 0, 0, 0)
+        if os.getppid() == parent:
+            return                          # else the parent died before the request took effect
+
+    def watch():
+        while os.getppid() == parent:
+            time.sleep(0.5)
+        os._exit(1)
+    threading.Thread(target=watch, daemon=True).start()
+
+
+def _kill(pool: ProcessPoolExecutor) -> None:
+    """End the pool's workers now (they may be deep in a symbolic check): ``kill_workers`` where
+    the standard library has it (Python 3.14), else each of the pool's processes."""
+    if hasattr(pool, "kill_workers"):
+        pool.kill_workers()
+    else:
+        for process in list((getattr(pool, "_processes", None) or {}).values()):
+            process.kill()
+    pool.shutdown(wait=False, cancel_futures=True)
+
+
+def _cached_report(cache: ReportCache, did: str, key: str) -> DerivationReport | None:
+    """The cached report of *did* when its entry passes the cache's checks (envelope, key, content
+    hash) and reads back as a report of that derivation, else ``None`` (it is then checked again
+    and the entry replaced)."""
+    data = cache.get(did, key)
+    if data is None:
+        return None
+    try:
+        report = DerivationReport.from_json(data)
+    except (TypeError, KeyError, ValueError, AttributeError):
+        return None
+    if report.id != did or report.failures:
+        return None
+    report.cached = True
+    return report
 
 
 def _check(did: str, key: str, search: bool, tick=None) -> DerivationReport:
@@ -91,10 +147,10 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
     reports: dict[str, DerivationReport] = {}
     pending = []
     keys.update(derivation_keys(ids))
-        data = cache.get(did, keys[did])
-        if data is not None:
-            reports[did] = DerivationReport.from_json(data)
-            reports[did].cached = True
+    for did in ids:
+        report = _cached_report(cache, did, keys[did])
+        if report is not None:
+            reports[did] = report
         else:
             pending.append(did)
     done = 0
@@ -115,13 +171,19 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
             progress.done(reports[did])
     if workers > 1 and len(pending) > 1:
         context = multiprocessing.get_context("fork")
-        with ProcessPoolExecutor(min(workers, len(pending)), mp_context=context) as pool:
+        pool = ProcessPoolExecutor(min(workers, len(pending)), mp_context=context,
+                                   initializer=_end_with_parent, initargs=(os.getpid(),))
+        try:
             futures = {pool.submit(_check_json, did, keys[did], search_proofs): did for did in pending}
             for future in as_completed(futures):
                 did = futures[future]
                 finish(did, DerivationReport.from_json(future.result()))
                 progress.start(done, len(ids), did)
                 progress.done(reports[did])
+        except BaseException:
+            _kill(pool)
+            raise
+        pool.shutdown()
     else:
         for did in pending:
             progress.start(done + 1, len(ids), did)

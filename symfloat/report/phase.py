@@ -2,13 +2,14 @@
 from __future__ import annotations
 
 import json
+from fractions import Fraction
 
 __all__ = ["phase_record", "phase_json", "phase_table", "phase_plot"]
 
 
 def phase_record(diagram) -> dict:
     return {
-        "body": diagram.body, "dims": list(diagram.dims),
+        "body": diagram.body, "dims": [float(Fraction(d)) for d in diagram.dims], "dims_exact": list(diagram.dims),
         "sweep": [{"density": s, "stable": labels} for s, labels in zip(diagram.densities, diagram.stable)],
         "thresholds": [{"density": t.density, "error": t.bracket, "position": t.label, "change": t.change,
                         "note": t.note, "source": t.source} for t in diagram.thresholds],

@@ -15,6 +15,16 @@ def _dims(scene):
     return [float(d) for d in scene.dims]
 
 
+def _unit(v) -> list:
+    norm = math.sqrt(sum(float(x) ** 2 for x in v))
+    return [float(x) / norm for x in v] if norm > 0 else [float(x) for x in v]
+
+
+def _predictions(entries) -> list:
+    """The predictions with ``predicted_up`` as a unit vector (a predictor's direction need not be one)."""
+    return [{**p, "predicted_up": _unit(p["predicted_up"])} for p in entries]
+
+
 def scene_record(solution, evaluated, unmatched, seconds) -> dict:
     sc = solution.scene
     return {
@@ -33,12 +43,12 @@ def scene_record(solution, evaluated, unmatched, seconds) -> dict:
             "potential": e.potential,
             "waterplane": e.waterplane,
             "formulas": e.formulas,
-            "predictions": e.predictions,
+            "predictions": _predictions(e.predictions),
             "metacentric_eigenvalues": list(e.eigenvalues),
             "error_rad": e.error_rad,
             "copies": e.copies,
         } for e in solution.equilibria],
-        "unmatched_predictions": unmatched,
+        "unmatched_predictions": _predictions(unmatched),
         "disagreements": sum(not p["agrees"] for e in solution.equilibria for p in e.predictions) + len(unmatched),
         "checks": solution.checks,
         "derivations_evaluated": evaluated,

@@ -1,0 +1,45 @@
+"""Where the default outputs live: the project checkout, wherever the command is run from.
+
+The default outputs (``docs/``, ``notebooks/``, the cache ``.symfloat-cache``) belong to the
+symfloat checkout: the directory holding ``pyproject.toml`` above the package (an editable or
+in-place install), or else the working directory when it is such a checkout.  Outside one,
+a command that would write a default output refuses and asks for an explicit path.
+"""
+from __future__ import annotations
+
+import os
+import re
+from pathlib import Path
+
+from .errors import InputError
+
+__all__ = ["project_root", "in_project", "GOLDEN"]
+
+GOLDEN = ("docs/errata.md", "docs/errata.json", "docs/verification.json")   # the record of everything
+_NAME = re.compile(r'^name\s*=\s*"symfloat"\s*$', re.MULTILINE)
+
+
+def _is_checkout(directory: Path) -> bool:
+    try:
+        return bool(_NAME.search((directory / "pyproject.toml").read_text(encoding="utf-8")))
+    except (OSError, UnicodeDecodeError):
+        return False
+
+
+def project_root() -> Path | None:
+    """The symfloat checkout the package belongs to, else the working directory if it is one."""
+    above = Path(__file__).resolve().parents[1]
+    if _is_checkout(above):
+        return above
+    here = Path.cwd()
+    return here if _is_checkout(here) else None
+
+
+def in_project(relative: str | os.PathLike) -> Path:
+    """*relative* (``docs/errata.md``) inside the project checkout; outside one, an
+    :class:`InputError` that asks for an explicit path."""
+    root = project_root()
+    if root is None:
+        raise InputError(f"not inside a symfloat checkout, so there is no default {relative}: "
+                         f"give the output path (--output) or run in the checkout")
+    return root / relative
