@@ -38,6 +38,14 @@ from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.geometry.floating import clip_below, draught, floating_state, right_prism, volume_centroid
 
+
+def kept(build):
+    """What *build* returns, its arithmetic left unevaluated: the print's arithmetic is
+    carried out by the engine when it compares, not by SymPy when the reading is built."""
+    with sp.evaluate(False):
+        return build()
+
+
 phi = sp.Symbol("varphi", positive=True)
 V1, V3, V4 = sp.symbols("V_1 V_3 V_4", positive=True)
 e1 = sp.Symbol("e_1", real=True)
@@ -117,7 +125,7 @@ torque = m * (-V1) - n * 0
 d.step("couple", (-torque, V1 * m), "algebra", uses=("m-def",),
        note="the moment of the couple against the heel is V1 m: positive m turns the body back")
 
-d.quote("stability-2", "(2)", r"$$V_1 m > 0. \quad (2)$$", reading=(sp.sign(-torque), sp.sign(V1 * m)),
+d.quote("stability-2", "(2)", r"$$V_1 m > 0. \quad (2)$$", reading=kept(lambda: (sp.sign(-torque), sp.sign(V1 * m))),
         note="read as: the couple restores (its moment against the heel is positive) exactly when V1 m > 0")
 d.quote("rotation-5", "(5)",
         r"$$\begin{aligned} m &= v \cos \varphi - u \sin \varphi \\ n &= v \sin \varphi + u \cos \varphi "

@@ -40,6 +40,14 @@ from symfloat.engine.witness import Case, Computed
 from symfloat.model.prediction import box_uprights
 from symfloat.geometry.floating import floating_state, right_prism, submerged
 
+
+def kept(build):
+    """What *build* returns, its arithmetic left unevaluated: the print's arithmetic is
+    carried out by the engine when it compares, not by SymPy when the reading is built."""
+    with sp.evaluate(False):
+        return build()
+
+
 # ---- symbols -------------------------------------------------------------------------------------------------
 F1, T1, T11, b, s = sp.symbols("F_1 T_1 T_1^1 b s", positive=True)
 P, P3, J = sp.symbols("P P_3 J", real=True)          # P = int_1 u v df, J = int_1 x y df
@@ -361,8 +369,8 @@ d.quote("37", "(37)", r"$$\begin{aligned} T &= \int_2 \zeta^2 df_2 = \cos^2 \mu 
                       r"\int_2 v_2^2 df_2 + \sin 2 \mu \int_2 u_2 v_2 \cdot df_2 \\ \text{oder } T &= T_2 \cdot "
                       r"\cos^2 \mu + T_2^1 \cdot \sin^2 \mu + \sin 2 \mu \int_2 u_2 v_2 \cdot df. \end{aligned} "
                       r"\quad (37)$$",
-        reading=(Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
-                 T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2),
+        reading=kept(lambda: (Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
+                 T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2)),
         note="the last integral is printed with df for df_2; it is the same integral over II (int_2)")
 d.quote("38-projection", "(38)", r"$$df = \frac{df_2}{\cos \varphi_1} \quad u = \frac{u_2}{\cos \varphi_1} \quad "
                                  r"v = \frac{v_2}{\cos \varphi_1}$$",
@@ -434,8 +442,8 @@ d.quote("second-condition", "(45)",
         reading=(Iuv, (Tx - Ty) * sp.sin(om) * sp.cos(om) + J * (sp.cos(om) ** 2 - sp.sin(om) ** 2)),
         note="the left side is int_1 u v df; '= 0' is the condition (32)")
 d.quote("Tx-Ty", "(45)", r"$$\int_1 y^2 \cdot d f = T_x \cdot \quad \int_1 x^2 \cdot d f = T_y$$",
-        reading=(sp.Matrix([area_integral(y ** 2, x, y, MOM_XY), area_integral(x ** 2, x, y, MOM_XY)]),
-                 sp.Matrix([Tx, Ty])), note="names; the stray dot after T_x is the scan's")
+        reading=kept(lambda: (sp.Matrix([area_integral(y ** 2, x, y, MOM_XY), area_integral(x ** 2, x, y, MOM_XY)]),
+                 sp.Matrix([Tx, Ty]))), note="names; the stray dot after T_x is the scan's")
 d.quote("45", "(45)", r"$$\frac{1}{2} (T_x - T_y) \sin 2 \omega + \int_1 x y \cdot d f \cdot \cos 2 \omega = 0 "
                       r"\quad (45)$$", reading=(Iuv, (Tx - Ty) * sp.sin(2 * om) / 2 + J * sp.cos(2 * om)))
 d.quote("xy-zero", "V", r"$$\int_1 x y \cdot d f = 0$$", reading=(Jsym, 0))
@@ -454,8 +462,8 @@ d.quote("T1-expanded", "(48)", r"$$T_1 = \sin^2 \omega \int_1 y^2 d f + \cos^2 \
         reading=(T1w, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty + sp.sin(2 * om) * J))
 d.quote("T1-symmetric", "(48)", r"$$T_1 = T_x \cdot \sin^2 \omega + T_y \cdot \cos^2 \omega$$",
         reading=(T1s, Tx * sp.sin(om) ** 2 + Ty * sp.cos(om) ** 2))
-d.quote("48", "(48)", r"$$T_1 = T_x = T_y \quad (48)$$", reading=(T1iso, T0, T0),
-        note="T_x = T_y = T_0")
+d.quote("48", "(48)", r"$$T_1 = T_x = T_y \quad (48)$$", reading=(T1iso, T0),
+        note="T_x = T_y = T_0: the second equality is the case's hypothesis, so the reading is T_1 = T_0")
 d.quote("49", "(49)", "dass das Trägheitsmoment des Wasserschnitts I oder der Grundfläche des Prismas für alle "
                       "durch den Schwerpunkt gehenden Achsen denselben Wert hat, sobald die Trägheitsmomente für die "
                       "Symmetrieachse und für die darauf senkrechte Achse einander gleich sind. (49)",
@@ -539,9 +547,9 @@ d.quote("55", "(55)", r"$$\operatorname{tg} \varphi_1 \leq \begin{cases} \frac{b
         note="read as the bound on tan phi_1 (the end of the first rotation region); u_m of the upper base in the "
              "first line, of the lower base (u_m') in the second, as (53), (53a) define them",
         erratum=Erratum("claim", "high",
-                        r"\operatorname{tg}\varphi_1 \le \min\left(\frac{b(1-s)}{u_m}, \frac{b s}{u_m'}\right), "
-                        r"u_m, u_m' the farthest points of the base on the dipping and on the rising side of EF; "
-                        r"the case split by s is right only for u_m = u_m'",
+                        r"$\operatorname{tg}\varphi_1 \le \min\left(\frac{b(1-s)}{u_m}, \frac{b s}{u_m'}\right)$, "
+                        r"$u_m$, $u_m'$ the farthest points of the base on the dipping and on the rising side of EF; "
+                        r"the case split by s is right only for $u_m = u_m'$",
                         "Both bases must stay out of the water, so both bounds apply; which one is smaller depends on "
                         "s u_m versus (1-s) u_m', not on s alone. Counterexample (from the clipped geometry): "
                         "equilateral triangle of side 1, EF parallel to a side, apex dipping, b = 17/25, s = 2/5: (55) "

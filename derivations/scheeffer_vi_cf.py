@@ -37,6 +37,14 @@ from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state, right_prism
 
+
+def kept(build):
+    """What *build* returns, its arithmetic left unevaluated: the print's arithmetic is
+    carried out by the engine when it compares, not by SymPy when the reading is built."""
+    with sp.evaluate(False):
+        return build()
+
+
 a, b, s, F = sp.symbols("a b s F", positive=True)
 phi, om, psi = sp.symbols("varphi omega psi", positive=True)
 x, y, z, X, Y, t_, al_, be_ = sp.symbols("x y z X Y t alpha_t beta_t", real=True)
@@ -178,7 +186,7 @@ d.quote("u-m", "(74)", r"$$u_m = \frac{a}{2} \sqrt{2} \cdot \sin(45^\circ + \ome
 d.quote("V1", "VI.C", r"$V_1 = F_1 b \cdot s = a^2 b s$", reading=(V1, F1 * b * s, a ** 2 * b * s))
 d.quote("T1-over-V1", "VI.C",
         r"$\frac{T_1}{V_1} = \frac{\frac{1}{12} a^4}{a^2 b s} = \frac{a^2}{12 b s}$",
-        reading=(T1 / V1, (a ** 4 / 12) / (a ** 2 * b * s), a ** 2 / (12 * b * s)))
+        reading=kept(lambda: (T1 / V1, (a ** 4 / 12) / (a ** 2 * b * s), a ** 2 / (12 * b * s))))
 d.quote("e1", "VI.C", r"$e_1 = \frac{b}{2} (1 - s)$", reading=(e1, b / 2 * (1 - s)))
 d.quote("upright-condition", "VI.C", r"$\frac{a^2}{12 b s} - \frac{b}{2} (1 - s) > 0$",
         reading=(a ** 2 / (12 * b * s) - b / 2 * (1 - s), GM),
@@ -191,8 +199,8 @@ d.quote("75-unstable", "VI.C",
         reading=(6 * s * (1 - s) - (a / b) ** 2, -12 * s / b * GM))
 d.quote("Fb2-over-T1", "VI.C",
         r"$\frac{F_1 b^2 s (1 - s)}{T_1} = \frac{12 a^2 b^2 s (1 - s)}{a^4} = 12 \left(\frac{b}{a}\right)^2 s (1 - s)$",
-        reading=(F1 * b ** 2 * s * (1 - s) / T1, 12 * a ** 2 * b ** 2 * s * (1 - s) / a ** 4,
-                 12 * (b / a) ** 2 * s * (1 - s)))
+        reading=kept(lambda: (F1 * b ** 2 * s * (1 - s) / T1, 12 * a ** 2 * b ** 2 * s * (1 - s) / a ** 4,
+                 12 * (b / a) ** 2 * s * (1 - s))))
 d.quote("limit-top", "VI.C",
         r"$\frac{b (1 - s)}{u_m} = \frac{b}{a} \cdot \frac{(1 - s) \sqrt{2}}{\sin(45^\circ + \omega)}$",
         reading=(b * (1 - s) / um, b / a * (1 - s) * sp.sqrt(2) / sp.sin(pi / 4 + om)))
@@ -208,7 +216,7 @@ d.quote("76", "(76)",
         note="the second line read as its bound: the tilt at which a base face reaches the water; the direction "
              "of the inequality is checked in (77)")
 d.quote("sin-90", "VI.C", r"Für letzteren wird aber  $\sin(45^\circ + \omega) = 1$",
-        reading=(sp.sin(pi / 4 + pi / 4), 1),
+        reading=kept(lambda: (sp.sin(pi / 4 + pi / 4), 1)),
         note="u_m is largest, the limit tilt smallest, at omega = 45 deg (the axis along a diagonal)")
 d.quote("76-at-45", "VI.C",
         r"$$\begin{aligned} \text{tg}^2 \varphi_1 &= 12 \left(\frac{b}{a}\right)^2 s (1 - s) - 2 \\ \text{tg} "
@@ -418,7 +426,7 @@ d.quote("82", "(82)",
 d.quote("82-half", "VI.D", r"$$\sin^2 (45^\circ + \omega) = \frac{1}{2}$$",
         reading=(sp.Subs(Sw, (a, s), (b, half)), half))
 d.quote("82-half-omega", "VI.D", r"$$\text{woraus } \sin (45^\circ + \omega) = \frac{1}{2} \sqrt{2}$$",
-        reading=(sp.sqrt(sp.Subs(Sw, (a, s), (b, half))), sp.sqrt(2) / 2, sp.sin(pi / 4 + 0)),
+        reading=kept(lambda: (sp.sqrt(sp.Subs(Sw, (a, s), (b, half))), sp.sqrt(2) / 2, sp.sin(pi / 4 + 0))),
         note="hence omega = 0")
 d.quote("half-stable", "VI.D",
         r"D. h. ein Würfel vom spec. Gew.  $\frac{1}{2}$  kann aus der aufrechten labilen Lage nur durch Drehung um "
@@ -576,7 +584,7 @@ d.quote("circle-data", "VI.E",
                  sp.Matrix([pi * r ** 2, 0, 1])))
 d.quote("circle-T1", "VI.E",
         r"$$T_1 = \frac{1}{12} \cdot \pi r^4 \cdot 3 = \frac{\pi r^4}{4} = \frac{F_1^2}{4 \pi}$$",
-        reading=(sp.Limit(T1n, n, sp.oo), pi * r ** 4 * 3 / 12, pi * r ** 4 / 4, (pi * r ** 2) ** 2 / (4 * pi)),
+        reading=kept(lambda: (sp.Limit(T1n, n, sp.oo), pi * r ** 4 * 3 / 12, pi * r ** 4 / 4, (pi * r ** 2) ** 2 / (4 * pi))),
         note="the limit n -> infinity at fixed r; it agrees with T_1 = pi r^4/4 of section B")
 d.quote("88", "(88)", r"$$u_m = r \cdot \sin \left( \frac{n-2}{2n} \cdot \pi + \omega \right) \quad (88)$$",
         reading=(umn, r * sp.sin((n - 2) / (2 * n) * pi + om)))
@@ -601,7 +609,7 @@ d.quote("area", "VI.F", r"$F_1 = n \cdot \frac{r^2}{2} \sin \frac{2 \pi}{n}$",
         reading=(F1n, n * r ** 2 / 2 * sp.sin(2 * pi / n)))
 d.quote("radius", "VI.F",
         r"$$r^2 = \frac{2 F_1}{n \cdot \sin \frac{2 \pi}{n}} = \frac{F_1}{\pi} \frac{\frac{2 \pi}{n}}{\sin \frac{2 \pi}{n}}$$",
-        reading=(r ** 2, 2 * F1n / (n * sp.sin(2 * pi / n)), F1n / pi * (2 * pi / n) / sp.sin(2 * pi / n)))
+        reading=kept(lambda: (r ** 2, 2 * F1n / (n * sp.sin(2 * pi / n)), F1n / pi * (2 * pi / n) / sp.sin(2 * pi / n))))
 d.quote("89", "(89)",
         r"$$T_1 = \frac{F_1^2}{12 \pi} \cdot \frac{\frac{2 \pi}{n}}{\sin \frac{2 \pi}{n}} \cdot \left( 2 + \cos "
         r"\frac{2 \pi}{n} \right) \quad (89)$$",

@@ -58,6 +58,14 @@ from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import floating_state, right_prism, submerged
 from symfloat.model.prediction import Prediction
 
+
+def kept(build):
+    """What *build* returns, its arithmetic left unevaluated: the print's arithmetic is
+    carried out by the engine when it compares, not by SymPy when the reading is built."""
+    with sp.evaluate(False):
+        return build()
+
+
 R = sp.Rational
 b, s, F1, F, xs, T, Tp, f, xs1, tau = sp.symbols("b s F_1 F x_s T T^1 f x_s^1 tau", positive=True)
 ys, x0, PO, Pw, Pf, x, y, z, xp, mu = sp.symbols("y_s x_0 P_O P_w P_f x y z x' mu", real=True)
@@ -287,13 +295,13 @@ d.quote("s-upper", "VII", "Es soll dabei das spec. Gew.  $s > \\frac{1}{2}$\n\nv
                         corrected_reading=(sst, um1 / (um + um1))))
 d.quote("95", "(95)", "„Das statische Moment des über dem Wasser befindlichen Körperteils für die durch  $S$  "
         "senkrecht zur Drehungsachse gelegte Vertikalebene (Ebene der Figur 17) ist Null.“ (95)",
-        reading=(My, V3 * sp.Matrix([0, 1, 0]).dot(MS3 / V3)), note="the moment itself; 'ist Null' is the condition")
+        reading=kept(lambda: (My, V3 * sp.Matrix([0, 1, 0]).dot(MS3 / V3))), note="the moment itself; 'ist Null' is the condition")
 d.quote("95-S3", "VII", r"Da nun  $S_2$  senkrecht unter  $S$  liegt, so muss auch  $S_3$  senkrecht über  $S$  liegen",
         reading=(sp.Matrix([M2h, M2y]), -sp.Matrix([M3, My])),
         note="read as V_1 (S_2 - S) = -V_3 (S_3 - S) in the two horizontal directions")
 d.quote("95-element", "VII", r"$z \cdot y \cdot df$ , oder da  $z = x \operatorname{tg} \varphi_2$  ist,  "
         r"$x y \cdot df \cdot \operatorname{tg} \varphi_2$",
-        reading=(sp.integrate(y, (z, -x * tg2, 0)), x * y * tg2), note="per unit df")
+        reading=(sp.Integral(y, (z, -x * tg2, 0)), x * y * tg2), note="per unit df")
 d.quote("95-moment", "VII", r"stat. Moment des ganzen Körperteils  $\int x y df \cdot \operatorname{tg} \varphi_2$",
         reading=(My, Pxy * tg2))
 d.quote("95a", "(95a)", r"$$\int x y \cdot df = 0 \quad (95a)$$", reading=(Pxy, My / tg2), note=EQN)
@@ -303,7 +311,7 @@ d.quote("96-split", "VII", r"$$\int_s (x_0 + x) y df = x_0 \cdot \int_s y df + \
         reading=(Pwh, x0 * 0 + PO), note="int_s y df = 0 (the next sentence)")
 d.quote("97", "(97)", r"$$\int x y df = \int_s x y df + \int_2 x y df = 0. \quad (97)$$", reading=(Pxy, PO + I2),
         note=EQN)
-d.quote("98", "(98)", r"$$\int x y df = \int_2 x y df = 0 \quad (98)$$", reading=(res(Pxy).subs(PO, 0), res(I2)),
+d.quote("98", "(98)", r"$$\int x y df = \int_2 x y df = 0 \quad (98)$$", reading=(sp.Subs(res(Pxy), PO, 0), res(I2)),
         note="regular prism: P_O = 0 (step regular-product); " + EQN)
 d.quote("95a-split", "VII", r"$$\int x y \cdot = \int_1 x y df - \int_2 x y df$$", reading=(Pxy, Pwh - Pw),
         note="int_2 over BGH still from N; the 'df' of the left side is lost in the transcription (harmless)")
@@ -348,7 +356,9 @@ d.quote("101", "(101)",
         r"\varphi_2 \cdot \int x^2 d f = \frac{1}{2} T \cdot \operatorname{tg}^2 \varphi_2 \\ V_3 x_3 &= \int z x \cdot "
         r"d f = \operatorname{tg} \varphi_2 \cdot \int x^2 d f = T \cdot \operatorname{tg} \varphi_2 \end{aligned} "
         r"\right\} \quad (101)$$",
-        reading=(sp.Matrix([Z3, X3]), sp.Matrix([termwise((x * tg2) ** 2 / 2, MF), termwise(x * tg2 * x, MF)]),
+        reading=(sp.Matrix([Z3, X3]),
+                 sp.Matrix([sp.Mul(sp.Rational(1, 2), tg2 ** 2, termwise(x ** 2, MF), evaluate=False),
+                            sp.Mul(tg2, termwise(x ** 2, MF), evaluate=False)]),
                  sp.Matrix([T * tg2 ** 2 / 2, T * tg2])),
         note="T: moment of F about GH (int x^2 df)")
 d.quote("102-pre", "VII", r"$$M_3 = T \sin \varphi_2 - V_3 x_0 \cos \varphi_2 - V_3 \frac{b}{2} \sin \varphi_2 + "
@@ -374,7 +384,7 @@ d.quote("s-below-half-95", "VII", "$$\\int x y \\, d f = 0$$\n\nwo nun die Integ
         note="for s < 1/2 the body of density 1 - s with -u up: its submerged part is the dry part here, so the "
              "integral is the same (witnessed on the turned clipped body); '= 0' imposed")
 d.quote("106-first", "VII", r"folglich auch  $\int_1",
-        reading=(res(J1).subs(Pw, PO), 0),
+        reading=(sp.Subs(res(J1), Pw, PO), 0),
         note="int_1 x y df = 0 at the first condition (the line break of the transcription splits the formula)")
 d.quote("104", "(104)", r"$$T_m - V_3 e_3 > 0 \quad (104)$$", reading=(Tm - V3 * e3, D),
         note="D = T_m - V_1 e_2 (Duhamel), V_1 e_2 = V_3 e_3 (step e2-e3); T_m the least moment at equilibrium")

@@ -47,6 +47,14 @@ from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state, right_prism, submerged
 from symfloat.model.prediction import Prediction
 
+
+def kept(build):
+    """What *build* returns, its arithmetic left unevaluated: the print's arithmetic is
+    carried out by the engine when it compares, not by SymPy when the reading is built."""
+    with sp.evaluate(False):
+        return build()
+
+
 a, om, rho, rho1, k, s, L = sp.symbols("a omega rho rho_1 k s L", positive=True)
 x, y, X, Y, Z, w, xl = sp.symbols("x y X Y Z w x_l", real=True)
 half, r2, pi = sp.Rational(1, 2), sp.sqrt(2), sp.pi
@@ -359,7 +367,7 @@ d.step("tri-symmetric", (sp.Matrix([-L, L, 0]).cross(sp.Matrix([-L, 0, L])), L *
             "normal to the diagonal (1, 1, 1)")
 d.quote("tri-symmetric", "X",
         "so muss der dreieckige Wasserschnitt eine symmetrische Lage (senkrecht zu einer Würfeldiagonale) haben",
-        reading=(sp.Matrix([-L, L, 0]).cross(sp.Matrix([-L, 0, L])).cross(ut), sp.zeros(3, 1)))
+        reading=kept(lambda: (sp.Matrix([-L, L, 0]).cross(sp.Matrix([-L, 0, L])).cross(ut), sp.zeros(3, 1))))
 cT = r2 * L
 d.step("tri-inertia", (It, sp.Integral((Y - sp.sqrt(3) * cT / 6) ** 2, (X, Y / sp.sqrt(3), cT - Y / sp.sqrt(3)),
                                        (Y, 0, sp.sqrt(3) * cT / 2)), sp.sqrt(3) * L ** 4 / 24), "integration",
@@ -375,7 +383,7 @@ d.quote("tri-unstable", "X", "Die Bedingungen ergeben, dass dieses Gleichgewicht
         reading=(sp.sign(GMt), -1))
 d.quote("hex-follows", "X",
         r"Wenn  $s < \frac{5}{6}$  (bzw.  $> \frac{1}{6}$ ) ist, so geht der fünfeckige Wasserschnitt bei weiterem",
-        reading=(sp.sign((1 - s) - (1 - s56)), sp.sign(s56 - s)),
+        reading=kept(lambda: (sp.sign((1 - s) - (1 - s56)), sp.sign(s56 - s))),
         note="turning on towards the diagonal, the dry part reaches the bottom face before the top face loses the "
              "two corners next to B iff its volume 1 - s exceeds the tetrahedron's 1/6")
 
