@@ -56,16 +56,17 @@ triple_ABCE = (XB - XA).dot((XC - XA).cross(XE - XA))
 for X, label in ((XA, "A"), (XB, "B"), (XC, "C"), (XD, "D")):
     d.name(sp.Symbol(rf"\mathbf{{{label}}}"), X, f"the vertex {label} of the tetrahedron")
 d.name(sp.Symbol(r"\mathbf{E}"), XE, "E = B + (D - C): BE drawn parallel to CD")
-d.name(sp.Symbol(r"\vec{ab}"), ab, "a side of the mid-section abcd (a, b, c, d the midpoints of AC, BC, BD, AD)")
-d.name(sp.Symbol(r"\vec{dc}"), dc, "the opposite side")
+d.name(sp.Symbol(r"\vec{ab}"), ab, "b - a, a side of the mid-section abcd (a, b, c, d the midpoints of AC, BC, BD, "
+       "AD, so a = (A + C)/2 and b = (B + C)/2)")
+d.name(sp.Symbol(r"\vec{dc}"), dc, "c - d, the opposite side (d = (A + D)/2, c = (B + D)/2)")
 d.name(sp.Symbol(r"\tfrac{1}{2}\vec{AB}"), AB_half, "half the edge AB")
 d.name(sp.Symbol(r"|[\vec{AB},\vec{AC},\vec{AD}]|"), sp.Abs(triple_ABCD),
-       "the absolute triple product of the edges from A")
-d.name(sp.Symbol(r"|[\vec{AB},\vec{AC},\vec{AE}]|"), sp.Abs(triple_ABCE), "the same with E for D")
-d.name(sp.Symbol(r"|\vec{ab}\times\vec{ad}|^2"), w.dot(w), "the squared area of the parallelogram abcd")
-d.name(sp.Symbol(r"|\vec{n}|^2"), n.dot(n), "n = AB x CD, the common normal of the edges AB and CD; its square")
-d.name(sp.Symbol(r"|\vec{AC}\cdot\vec{n}|"), sp.Abs((XC - XA).dot(n)), "AC projected on the common normal")
-d.name(sp.Symbol(r"|\vec{AB}\times\vec{AE}|^2"), u.dot(u), "the squared double area of the triangle ABE")
+       "|AB . (AC x AD)|, the absolute triple product of the edges from A")
+d.name(sp.Symbol(r"|[\vec{AB},\vec{AC},\vec{AE}]|"), sp.Abs(triple_ABCE), "|AB . (AC x AE)|, the same with E for D")
+d.name(sp.Symbol(r"|\vec{ab}\times\vec{ad}|^2"), w.dot(w), "|(b - a) x (d - a)|^2, the squared area of the parallelogram abcd")
+d.name(sp.Symbol(r"|\vec{n}|^2"), n.dot(n), "n . n, n = AB x CD the common normal of the edges AB and CD")
+d.name(sp.Symbol(r"|\vec{AC}\cdot\vec{n}|"), sp.Abs((XC - XA).dot(n)), "|AC . n|, AC projected on the common normal")
+d.name(sp.Symbol(r"|\vec{AB}\times\vec{AE}|^2"), u.dot(u), "|AB x AE|^2, the squared double area of the triangle ABE")
 
 d.step("volume-ABCD", sp.Eq(Vt, sp.Abs(triple_ABCD) / 6), "definition",
        note="volume of a tetrahedron: one sixth of the absolute triple product", result=Vt)
@@ -79,12 +80,16 @@ d.step("edge-distance", sp.Eq(dist, sp.Abs((XC - XA).dot(n)) / sp.sqrt(n.dot(n))
        result=dist)
 d.step("triangle-ABE", sp.Eq(Tri, sp.sqrt(u.dot(u)) / 2),
        "definition", note="E = B + (D - C): BE drawn parallel to CD", result=Tri)
-d.step("parallelogram-half-triangle", (Pt, Tri / 2), "geometry", uses=("mid-section-area", "triangle-ABE"))
-d.step("volume-ABCE", sp.Eq(Ve, sp.Abs(triple_ABCE) / 6), "definition", result=Ve)
+d.step("parallelogram-half-triangle", (Pt, Tri / 2), "geometry", uses=("mid-section-area", "triangle-ABE"),
+       note="the mid-section parallelogram abcd is half as large as the triangle ABE")
+d.step("volume-ABCE", sp.Eq(Ve, sp.Abs(triple_ABCE) / 6), "definition", result=Ve,
+       note="the second tetrahedron ABCE, with E in place of D")
 d.step("equal-tetrahedra", (Vt, Ve), "geometry", uses=("volume-ABCD", "volume-ABCE"),
        note="D and E lie on a parallel to the base ABC")
 d.step("lemma", (Vt, sp.Rational(1, 3) * (2 * Pt) * dist), "algebra",
-       uses=("equal-tetrahedra", "parallelogram-half-triangle", "edge-distance"))
+       uses=("equal-tetrahedra", "parallelogram-half-triangle", "edge-distance"),
+       note="the lemma: ABCD has the volume of ABCE, whose base ABE is twice the mid-section abcd and whose "
+            "height is the distance d of the edges AB and CD; so V = (1/3) (2P) d")
 
 # ---- the decomposition --------------------------------------------------------
 d.step("pyramid-over-g", sp.Eq(V1, sp.Integral(g * (z / h) ** 2, (z, 0, h))), "definition",
@@ -100,7 +105,9 @@ d.step("parallelograms", sp.Eq(P, D - g / 4 - G / 4), "definition", result=P,
             "parallelograms of the tetrahedra: their sum P is what remains")
 d.step("tetrahedra", sp.Eq(V3, sp.Rational(1, 3) * 2 * P * h), "lemma", uses=("lemma", "parallelograms"),
        note="every tetrahedron has one edge in G and one in g, at distance h", result=V3)
-d.step("tetrahedra-in-D", (V3, h / 3 * (2 * D - (G + g) / 2)), "substitution", uses=("tetrahedra",))
+d.step("tetrahedra-in-D", (V3, sp.Mul(sp.Rational(1, 3), 2, D - g / 4 - G / 4, h, evaluate=False),
+                           h / 3 * (2 * D - (G + g) / 2)), "substitution", uses=("tetrahedra", "parallelograms"),
+       note="P = D - g/4 - G/4 inserted")
 d.step("volume", sp.Eq(I, V1 + V2 + V3), "definition", uses=("pyramid-over-g", "pyramids-over-G", "tetrahedra"),
        note="the prismatoid is the union of the three groups of bodies",
        result=I)

@@ -83,9 +83,11 @@ def step_markdown(d, index: int, step) -> str:
     out = [head]
     quotes = [p for p in d.printed if p.name == step.name]
     for p in quotes:
-        out.append(f"The source ({p.locator}):\n\n{_quoted(p.excerpt)}")
+        fault = (f" (as transcribed; the printed formula `{p.name}` below has its erratum)"
+                 if p.erratum is not None else "")
+        out.append(f"The source ({p.locator}){fault}:\n\n{_quoted(p.excerpt)}")
     if step.note:
-        out.append(f"In words ({d.locator}): {step.note[0].upper() + step.note[1:]}"
+        out.append(f"In our words ({d.locator}): {step.note[0].upper() + step.note[1:]}"
                    + ("" if step.note.rstrip().endswith(".") else "."))
     out.append(("Definition:" if step.why == "definition" else "Before and after:") + "\n\n"
                + chain_latex(d, step.claim))
@@ -94,19 +96,38 @@ def step_markdown(d, index: int, step) -> str:
     return "\n\n".join(out)
 
 
+def _derived_symbols(d, claims) -> str:
+    """Which symbols of *claims* stand for values the steps derived, and where."""
+    where = {s.result: (i, s.name) for i, s in enumerate(d.steps, 1) if s.result is not None}
+    found = {}
+    for claim in claims:
+        for m in members(claim):
+            for sym in sorted(getattr(m, "free_symbols", set()), key=str):
+                if sym in where:
+                    found[sym] = where[sym]
+    if not found:
+        return ""
+    return ("Compared with the derivation: " + "; ".join(
+        f"${sp.latex(sym)}$ is the value of step {i} (`{name}`)" for sym, (i, name) in found.items()) + ".")
+
+
 def reading_markdown(d, p) -> str:
     """A printed formula: locator, the verbatim quotation and its reading as printed."""
     out = [f"### {p.locator}: `{p.name}`", _quoted(p.excerpt)]
-    if p.reading is not None:
-        out.append("Read as printed:\n\n" + chain_latex(d, p.reading))
-    if p.erratum is not None and p.erratum.corrected_reading is not None:
-        out.append("The correction, read:\n\n" + chain_latex(d, p.erratum.corrected_reading))
-    if p.note:
-        out.append(f"Note: {p.note}")
     if p.lost:
         out.append(f"Text lost in the transcription: {p.lost}")
     if p.unreadable:
         out.append(f"Not readable as printed: {p.unreadable}")
+    if p.reading is not None:
+        out.append("Read as printed:\n\n" + chain_latex(d, p.reading))
+    corrected = p.erratum.corrected_reading if p.erratum is not None else None
+    if corrected is not None:
+        out.append("The correction, read:\n\n" + chain_latex(d, corrected))
+    derived = _derived_symbols(d, [c for c in (p.reading, corrected) if c is not None])
+    if derived:
+        out.append(derived)
+    if p.note:
+        out.append(f"Note: {p.note}")
     return "\n\n".join(out)
 
 
@@ -136,7 +157,8 @@ def _how(identity: dict | None, status: str) -> str:
     if status == "refuted":
         cx = identity.get("counterexample") or {}
         point = ", ".join(f"{k} = {v}" for k, v in cx.get("point", {}).items())
-        return f"**refuted**: at {point or 'the printed numbers'} one side gives {cx.get('lhs')}, the other {cx.get('rhs')}"
+        return (f"**refuted**: at {point or 'the printed numbers'} the left member gives {cx.get('lhs')}, "
+                f"the right {cx.get('rhs')}")
     return f"undecided: {sampled}, no symbolic proof found"
 
 
@@ -183,12 +205,18 @@ class NotebookView:
                 + f".\n\n{len(self.report.formulas)} printed formulas: "
                 + ", ".join(f"{verdicts.get(v, 0)} {v}" for v in order) + ".")
 
+    def _witnesses(self, target: str) -> str:
+        """What the first-principles witnesses of *target* compute, in the derivation's words."""
+        ws = [w for w in self.derivation.witnesses if target.split("#")[0] in w.targets]
+        return "; ".join(w.description + (f" ({len(w.cases)} cases)" if getattr(w, "cases", None) else "")
+                         for w in ws)
+
     def step_markdown(self, name: str) -> str:
         s = next(s for s in self.report.steps if s.name == name)
         out = [f"Justification: {_how(s.identity, s.status)}."]
         for f in self.report.formulas:
             if f.id.endswith("/" + name):
-                out += _records(f"Witnesses of the printed formula `{name}`:", f.numeric)
+                out += _records(f"Witnesses of the printed formula `{name}` — {self._witnesses(name)}:", f.numeric)
         return "\n\n".join(out)
 
     def formula_markdown(self, name: str) -> str:
@@ -202,8 +230,8 @@ class NotebookView:
             e = f.erratum
             out.append(f"Erratum ({e['kind']}, confidence {e['confidence']}). Corrected:\n\n"
                        f"{correction_markdown(e['kind'], e['corrected'])}\n\n{e['evidence']}")
-        out += _records("Witnesses against the printed formula:", f.numeric)
-        out += _records("Witnesses against the correction:", f.corrected_numeric)
+        out += _records(f"Witnesses against the printed formula — {self._witnesses(name)}:", f.numeric)
+        out += _records(f"Witnesses against the correction — {self._witnesses(name)}:", f.corrected_numeric)
         out += [f"> {n}" for n in f.witness_notes]
         return "\n\n".join(out)
 
