@@ -429,7 +429,7 @@ d.step("sym-PQ-monotone", (PS, Ik + m ** 2 * (K - Ik), K - n ** 2 * (K - Ik)), "
             "axis through C has a moment between I (axis AB, least) and K (axis EF, greatest), increasing "
             "with the angle")
 d.step("sym-PQ-derivative", (sp.Derivative(Ik + m ** 2 * (K - Ik), m), 2 * m * (K - Ik)), "algebra")
-d.step("equal-moments", ((Ik + m ** 2 * (K - Ik)).subs(K, Ik), Ik), "algebra",
+d.step("equal-moments", (sp.Subs(Ik + m ** 2 * (K - Ik), K, Ik), Ik), "algebra",
        note="§210: I = K makes every axis through C equal")
 integral_step("sym-45", P45, kite(((Xc - y) / sp.sqrt(2)) ** 2),
        note="PQ at 45 degrees: m = n = 1/sqrt(2)")
@@ -540,7 +540,8 @@ d.step("rhombus-quarter-of-rectangle", (Ire / Irh, Kre / Krh, 4), "integration",
        uses=("rect-I", "rect-K", "rhombus-I", "rhombus-K"),
        note="with the same length AB = 2a and breadth EF = 2b the rectangle's moments are four times the "
             "rhombus' (its area 2D is also twice as large)")
-d.step("rhombus-half-at-equal-area", ((2 * b) ** 2 * sp.Symbol("D") / 6 / ((2 * b) ** 2 * sp.Symbol("D") / 12), 2),
+d.step("rhombus-half-at-equal-area", (kept(lambda: (2 * b) ** 2 * sp.Symbol("D") / 6 / ((2 * b) ** 2 * sp.Symbol("D") / 12)),
+                                       2),
        "algebra", note="the factor 2 holds between EF^2 D/6 and EF^2 D/12 at the same D, i.e. for the same "
                        "length, breadth and area, which the two figures cannot share")
 d.quote("rhombus-edge", "§214", r"erit $y = \frac{bx}{a}$", reading=(Ye, b * x / a),

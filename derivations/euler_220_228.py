@@ -352,7 +352,7 @@ E1 = named("int-E1", r"y\,dy (a+Y) \sqrt{bb-yy}", y * (a + Yg) * R, note="the fi
 integral_step("G2", G2, y * sp.diff((a + Yg) ** 2 * R, y), note="∫y d.(a+Y)²√(bb-yy), from 0 to b")
 integral_step("S2", S2, (a + Yg) ** 2 * R, note="∫(a+Y)² dy √(bb-yy)")
 F2 = y * (a + Yg) ** 2 * R
-d.step("G2-by-parts", (G2, F2.subs(y, b) - F2.subs(y, 0) - S2, -S2), "integration", uses=("G2", "S2"))
+d.step("G2-by-parts", (G2, sp.Subs(F2, y, b) - sp.Subs(F2, y, 0) - S2, -S2), "integration", uses=("G2", "S2"))
 d.quote("Aa-AEB", "§225",
         "$aAa = -\\frac{4a}{b} \\int y dy (a+Y) V(bb-yy)$\n $+ \\frac{2a}{b} \\int \\frac{yydy(a+Y)^2}"
         "{\\sqrt{bb-yy}} + \\frac{2a^3}{b^3} \\int yy dy V(bb-yy) = \\frac{2a^3}{b^3} \\int yy dy V(bb-yy) - "

@@ -595,7 +595,7 @@ for kv in KAPPAS:
 # ================================================================ §235: n → ∞, the rectangle
 Klim = sp.Symbol("K_{inf}")
 Ngam = sp.gamma(3 * k) * sp.gamma(k + 1 + m) / (sp.gamma(k + 1) * sp.gamma(3 * k + m))
-d.step("N-gamma", (N, _beta_value(0, 3 * k - 1, n, b) / _beta_value(0, k, n, b), Ngam.subs(m, 1 / n)),
+d.step("N-gamma", (N, _beta_value(0, 3 * k - 1, n, b) / _beta_value(0, k, n, b), sp.Subs(Ngam, m, 1 / n)),
        "integration", uses=("N", "beta-integral"), note="Γ(1/n) cancels; m = 1/n")
 d.step("rectangle-limit", (Klim, 2 * a ** 2 * D * sp.Limit(k * Ngam / (m + 3 * k), m, 0, "+"), 2 * a ** 2 * D / 3),
        "limit", uses=("moment-EF-N", "N-gamma"), result=Klim,

@@ -159,9 +159,10 @@ d.step("slab-e-g", sp.Eq(I3, prismatoid(e, g, f, 2 * m)), "lemma",
 d.step("slab-e-g-value", (I3, 2 * m / 3 * ((e + g) / 2 + 2 * f)), "algebra", uses=("slab-e-g",))
 d.step("sum", sp.Eq(I, I1 + I2 + I3), "definition", uses=("slab-a-c", "slab-c-e", "slab-e-g"), result=I,
        note="the whole body is the union of the three slabs")
-simp_1 = 2 * m / 3 * ((a + c) / 2 + 2 * b + (c + e) / 2 + 2 * dd + (e + g) / 2 + 2 * f)
-simp_2 = 2 * m / 3 * ((a + c + 4 * b + c + e + 4 * dd + e + g + 4 * f) / 2)
-simp_3 = m / 3 * (a + 4 * b + 2 * c + 4 * dd + 2 * e + 4 * f + g)
+with sp.evaluate(False):   # the three printed forms of the sum, as printed
+    simp_1 = 2 * m / 3 * ((a + c) / 2 + 2 * b + (c + e) / 2 + 2 * dd + (e + g) / 2 + 2 * f)
+    simp_2 = 2 * m / 3 * ((a + c + 4 * b + c + e + 4 * dd + e + g + 4 * f) / 2)
+    simp_3 = m / 3 * (a + 4 * b + 2 * c + 4 * dd + 2 * e + 4 * f + g)
 d.step("simpson-7", (I, simp_1, simp_2, simp_3), "algebra", uses=("sum",))
 
 

@@ -121,7 +121,7 @@ rhs7 = sp.Matrix([V3 * e * sp.cos(phi) + V3 * k * sp.sin(phi) - V1 * e1 * sp.sin
 d.step("moments-7", (sp.Matrix([V1 * m, V1 * n]), rhs7), "substitution", uses=("rotation-5", "moments-6"))
 # the couple: buoyancy V1 upwards (-Y) at S2, weight V1 downwards at S; its moment about S in the sense
 # that turns X into Y (the sense of the heel) is X F_Y - Y F_X; restoring is the opposite sense
-torque = m * (-V1) - n * 0
+torque = kept(lambda: m * (-V1) - n * 0)
 d.step("couple", (-torque, V1 * m), "algebra", uses=("m-def",),
        note="the moment of the couple against the heel is V1 m: positive m turns the body back")
 

@@ -105,14 +105,15 @@ DERIVATION = d = Derivation(
 
 def area_integral(expr, a, c, moments):
     """int_Omega expr df for a polynomial expr in the coordinates a, c, termwise: moments maps the exponent
-    pairs (i, j) of a^i c^j to the area moments (linearity of the integral)."""
+    pairs (i, j) of a^i c^j to the area moments (linearity of the integral).  The sum of coefficient times
+    moment is left unevaluated, so that a step equating it to a closed form is checked by the engine."""
     poly = sp.Poly(sp.expand(expr), a, c)
-    total = sp.Integer(0)
+    terms = []
     for (i, j), coeff in poly.terms():
         if (i, j) not in moments:
             raise ValueError(f"no area moment for {a}^{i} {c}^{j}")
-        total += coeff * moments[(i, j)]
-    return total
+        terms.append(sp.Mul(coeff, moments[(i, j)], evaluate=False))
+    return sp.Add(*terms, evaluate=False) if len(terms) > 1 else terms[0] if terms else sp.Integer(0)
 
 
 MOM_I = {(0, 0): F1, (1, 0): 0, (0, 1): 0, (2, 0): T1, (0, 2): T11, (1, 1): P}
@@ -186,7 +187,7 @@ d.step("factor-Q", sp.Eq(Q, (1 + tph ** 2 / 2) * T1 - V1 * e1), "definition", re
        note="the factor of sin phi in (12)")
 d.step("Q-increasing", (sp.Derivative(Q, phi), T1 * tph * (1 + tph ** 2)), "algebra", uses=("factor-Q",),
        note="positive for 0 < phi < 90 deg: Q < 0 near the upright position grows to +oo, one zero")
-d.step("root-check", (Qx.subs(X, root), 0), "algebra",
+d.step("root-check", (sp.Subs(Qx, X, root), 0), "algebra",
        note=f"sp.solve gives the roots {roots} of Q = 0 in tan phi; the positive one is this")
 d.step("phi1", sp.Eq(phi1, sp.atan(root)), "definition", uses=("root-check", "Q-increasing"), result=phi1,
        note="the tilted position: the zero of the righting moment (12) for phi > 0, provided V_1 e_1 > T_1")

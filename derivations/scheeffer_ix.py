@@ -136,7 +136,7 @@ d.step("perpendicular-margin", sp.Eq(Dp, T11 / sp.cos(phi1) - T1 / sp.cos(phi1))
        uses=("scheeffer-iv-v:D2-value",), result=Dp,
        note="at the oblique equilibrium the waterplane moment about the perpendicular axis less V_1 e_2 "
             "(section IV): its sign decides the stability across the rotation, (43a)")
-d.step("touch-top", ((b * (1 - s) * sp.cos(phi1) - a / 2 * sp.sin(phi1)).subs(phi1, sp.atan(2 * b * (1 - s) / a)), 0),
+d.step("touch-top", (sp.Subs(b * (1 - s) * sp.cos(phi1) - a / 2 * sp.sin(phi1), phi1, sp.atan(2 * b * (1 - s) / a)), 0),
        "geometry", note="the top edge at a/2 across the axis, b(1-s) above the plane through O, reaches the water")
 d.step("touch-limit", sp.Eq(tla, PW(2 * b * (1 - s) / a, 2 * b * s / a)), "definition", uses=("touch-top",),
        result=tla, note="tan of the tilt at which a base face reaches the water (bottom face for s < 1/2)")
@@ -239,7 +239,7 @@ d.step("leg", sp.Eq(X, sp.sqrt(2 * a * b * sg * sp.tan(phi))), "definition", res
        note="x from x L/2 = sigma a b with L = x cot phi")
 d.step("leg-check", ((X * X / sp.tan(phi)) / 2, a * b * sg), "algebra", uses=("leg", "dry-area", "waterline-slope"))
 S3 = sum(tri, sp.zeros(2, 1)) / 3
-d.step("dry-centroid", (S3, sp.Matrix([a / 2 - Ll / 3, b / 2 - xl / 3])), "geometry",
+d.step("dry-centroid", (S3, kept(lambda: sp.Matrix([a / 2 - Ll / 3, b / 2 - xl / 3]))), "geometry",
        note="centroid of the dry triangle (mean of its vertices), body frame with S at the origin")
 S3phi = sp.Matrix([a / 2 - X / sp.tan(phi) / 3, b / 2 - X / 3])
 d.step("potential", sp.Eq(Ez, sg / (1 - sg) * u_up.dot(S3phi)), "definition", result=Ez,
@@ -266,7 +266,7 @@ d.step("F-quartic", (Fz, 3 * M3 * z ** 3 / (b * sp.sin(phi_z)), quartic), "algeb
 d.step("righting-sign", (sp.Subs(sp.Derivative(Ez, phi), phi, phi_z), sg / (1 - sg) * b * sp.sin(phi_z) * Fz / (3 * z ** 3)),
        "algebra", uses=("potential-derivative", "F-quartic"),
        note="z grows with phi_2: a root where F goes from - to + is a minimum of the potential (stable)")
-d.step("corner-C", ((2 * a * sg / z).subs(z, 2 * sg), a), "geometry",
+d.step("corner-C", (sp.Subs(2 * a * sg / z, z, 2 * sg), a), "geometry",
        note="L = a: the second top corner C reaches the water, the smallest tilt of the region")
 d.step("z-low", sp.Eq(Zlo, 2 * sg), "definition", uses=("corner-C",), result=Zlo)
 d.step("z-high", sp.Eq(Zhi, 1), "definition", result=Zhi, note="x = b: the bottom corner A reaches the water")

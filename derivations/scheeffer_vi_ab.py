@@ -216,7 +216,7 @@ d.quote("density-range", "VI.A",
 # ---- Examples 1 and 2 ------------------------------------------------------------------------------
 ex1_ratio = [e for e in sp.solve(sp.Eq((a ** 2 - 12 * b ** 2 * s * (1 - s)).subs({s: sp.Rational(4, 5), a: q * b}), 0), q)
              if e.is_positive][0]
-d.step("example-1-threshold", (full(hA).subs({s: sp.Rational(4, 5), a: ex1_ratio * b}), 0), "substitution",
+d.step("example-1-threshold", (sp.Subs(full(hA), (s, a), (sp.Rational(4, 5), ex1_ratio * b)), 0), "substitution",
        uses=("metacentric-height",), note="a/b at which h_A = 0 for s = 0.8 (sympy.solve)")
 d.quote("ex1-root", "Example 1", r"$$\frac{a}{b} > \sqrt{12 \cdot 0,8 \cdot 0,2}$$",
         reading=kept(lambda: (sp.sqrt(12 * sp.Rational(8, 10) * sp.Rational(2, 10)), ex1_ratio)))
@@ -271,7 +271,7 @@ d.step("tilted-equilibrium-check", ((1 + tan1 ** 2 / 2) * T1 - V1 * e1, 0), "alg
        uses=("tilted-equilibrium", "righting-moment"))
 d.step("tilted-equilibrium-54", (tan1 ** 2, F1 * b ** 2 * s * (1 - s) / T1 - 2, 24 * (b / a) ** 2 * s * (1 - s) - 2),
        "algebra", uses=("tilted-equilibrium",), note="(54) for the triangle")
-d.step("tilted-stable-in-phi", (sp.diff((1 + tp ** 2 / 2) * T1 - V1 * e1, tp), T1 * tp), "algebra",
+d.step("tilted-stable-in-phi", (sp.Derivative((1 + tp ** 2 / 2) * T1 - V1 * e1, tp), T1 * tp), "algebra",
        note="the bracket grows with tau: the moment changes from - to + at tau = t_1, so the tilted position "
             "is stable against a change of phi (against a turn about the prism axis it is indifferent: (51))")
 
@@ -280,7 +280,7 @@ d.quote("BS", "VI.A", r"$B S = \frac{a}{3} \sqrt{3}$", reading=kept(lambda: (sp.
 d.step("dipping-distance", sp.Eq(um, Bv[0] * nvec[0] + Bv[1] * nvec[1]), "definition",
        note="distance of the vertex B from the axis PQ, on the dipping side n", result=um)
 d.step("dipping-distance-value", (um, a / sq3 * sp.sin(pi / 6 + om)), "geometry", uses=("dipping-distance",))
-d.step("dipping-vertex-farthest", ((Bv[0] - Cv[0]) * nvec[0] + (Bv[1] - Cv[1]) * nvec[1], a * sp.sin(om)),
+d.step("dipping-vertex-farthest", (kept(lambda: (Bv[0] - Cv[0]) * nvec[0] + (Bv[1] - Cv[1]) * nvec[1]), a * sp.sin(om)),
        "geometry", note="B is at least as far as C on the dipping side for 0 <= omega <= 60 degrees (A lies on "
                         "the other side)")
 d.step("rising-distance", sp.Eq(umr, -(Av[0] * nvec[0] + Av[1] * nvec[1])), "definition",
@@ -297,7 +297,7 @@ d.step("bottom-limit", sp.Eq(Lbot, b * s / umr), "definition",
        note="(53a): the water height b s - u_m' tan(phi) at the rising vertex A reaches the bottom base 0",
        result=Lbot)
 d.step("bottom-limit-check", (b * s - umr * Lbot, 0), "algebra", uses=("bottom-limit",))
-d.step("bottom-limit-relabelled", (full(Lbot).subs(om, pi / 3 - om), b * s * sq3 / (a * sp.sin(pi / 6 + om))),
+d.step("bottom-limit-relabelled", (sp.Subs(full(Lbot), om, pi / 3 - om), b * s * sq3 / (a * sp.sin(pi / 6 + om))),
        "geometry", uses=("bottom-limit", "rising-distance-value"),
        note="for s < 1/2 Scheeffer measures omega on the lower base from its rising vertex: omega -> 60 deg - "
             "omega turns the bottom limit into b s sqrt3 / (a sin(30 deg + omega))")
@@ -486,7 +486,7 @@ s4 = [e for e in sp.solve(eq4, s) if 0 < e < 1]
 assert len(s4) == 1
 s4 = s4[0]
 q4 = 1 / sp.sqrt(sol68[0].subs(s, s4))
-d.step("example-4-density", (full(24 * B68 * s * (1 - s) - 2).subs(s, s4), t4 ** 2), "substitution",
+d.step("example-4-density", (sp.Subs(full(24 * B68 * s * (1 - s) - 2), s, s4), t4 ** 2), "substitution",
        uses=("example-4-top", "tilted-equilibrium-54"), note="t_1 = tan 30 deg with (b/a)^2 = B_68 (sympy.solve)")
 d.quote("67", "(67)",
         r"\operatorname{tg} 30^\circ &= \sqrt{24 \cdot \frac{b^2}{a^2} s (1 - s) - 2} \\ \text{und } "

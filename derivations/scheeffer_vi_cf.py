@@ -153,7 +153,8 @@ d.step("oblique-stable-in-phi", (sp.diff(sp.sin(phi) / V1 * (T1 * (1 + sp.tan(ph
        note="E'' = GZ' = T_1 tan^2 phi_1/(V_1 cos phi_1) > 0 at phi_1: stable against tilting; with the "
             "omega-independence the position is stable, neutral about the main axis ((43), (51))")
 corners = [(sx * a / 2, sy * a / 2) for sx in (-1, 1) for sy in (-1, 1)]
-d.step("corner-distance", (OB, sp.sqrt((a / 2) ** 2 + (a / 2) ** 2), sp.sqrt(2) * a / 2), "geometry", result=OB)
+d.step("corner-distance", (OB, kept(lambda: sp.sqrt((a / 2) ** 2 + (a / 2) ** 2)), sp.sqrt(2) * a / 2), "geometry",
+       result=OB)
 d.step("largest-ordinate", (um, sp.Max(*[xi.subs({x: cx, y: cy}) for cx, cy in corners]),
                             a / 2 * (sp.sin(om) + sp.cos(om)), OB * sp.sin(pi / 4 + om)), "geometry", result=um,
        note="u_m: the largest distance xi of a corner from the axis (the corner (-a/2, a/2) for 0 < omega < 45 deg); "
@@ -162,7 +163,7 @@ d.step("limit-tilt", sp.Eq(tanlim, sp.Min(b * (1 - s), b * s) / um), "definition
        note="the top corner at xi = u_m, z = b(1-s) above O has height b(1-s) cos phi - u_m sin phi over the "
             "water, the bottom corner at xi = -u_m, z = -b s has u_m sin phi - b s cos phi: the first domain "
             "ends at the smaller of b(1-s)/u_m, b s/u_m (the text's (53), (53a), (55))")
-d.step("limit-tilt-top", ((b * (1 - s) * sp.cos(phi) - um * sp.sin(phi)).subs(phi, sp.atan(b * (1 - s) / um)), 0),
+d.step("limit-tilt-top", (sp.Subs(b * (1 - s) * sp.cos(phi) - um * sp.sin(phi), phi, sp.atan(b * (1 - s) / um)), 0),
        "geometry", uses=("largest-ordinate",))
 d.step("limit-omega", sp.Eq(Sw, 2 * (sp.Min(b * (1 - s), b * s) / tan1) ** 2 / a ** 2), "definition", result=Sw,
        note="S_omega = sin^2(45 deg + omega*), omega* the axis direction at which the limit tilt equals phi_1: "
@@ -593,7 +594,7 @@ d.quote("88", "(88)", r"$$u_m = r \cdot \sin \left( \frac{n-2}{2n} \cdot \pi + \
 npos = sp.Integral(2 * sp.sin(t_) * (t_ - sp.sin(t_)), (t_, 0, 2 * pi / n))
 d.step("area-radius", (r ** 2, 2 * F1n / (n * sp.sin(2 * pi / n))), "algebra", uses=("polygon-area",))
 d.step("moment-at-area", (T1F, (F * r ** 2 / 12 * (2 + sp.cos(2 * pi / n))).subs(r ** 2, 2 * F / (n * sp.sin(2 * pi / n))),
-                          F ** 2 / (12 * pi) * (2 * pi / n) / sp.sin(2 * pi / n) * (2 + sp.cos(2 * pi / n))),
+                          kept(lambda: F ** 2 / (12 * pi) * (2 * pi / n) / sp.sin(2 * pi / n) * (2 + sp.cos(2 * pi / n)))),
        "algebra", result=T1F, uses=("area-radius",),
        note="T_1 of the regular n-gon of area F (87 with r^2 from the area)")
 d.step("moment-derivative", (sp.Derivative(T1F, n), -F ** 2 / (12 * pi) * 2 * pi / n ** 2 * npos / sp.sin(2 * pi / n) ** 2),

@@ -109,12 +109,11 @@ DERIVATION = d = Derivation(
 
 
 def termwise(expr, moments):
-    """int expr df for a polynomial in the plane coordinates, termwise from the area moments (linearity)."""
+    """int expr df for a polynomial in the plane coordinates, termwise from the area moments (linearity);
+    the sum of coefficient times moment is left unevaluated, for the engine to check against a closed form."""
     poly = sp.Poly(sp.expand(expr), x, y)
-    out = sp.Integer(0)
-    for (i, j), c in poly.terms():
-        out += c * moments[(i, j)]
-    return out
+    terms = [sp.Mul(c, moments[(i, j)], evaluate=False) for (i, j), c in poly.terms()]
+    return sp.Add(*terms, evaluate=False) if len(terms) > 1 else terms[0] if terms else sp.Integer(0)
 
 
 def res(expr):
@@ -491,7 +490,7 @@ d.step("ML", (-(x0 + x01) * tg3, -b), "geometry", uses=("x01",))
 col3 = lambda e: sp.integrate(e, (z, -x * tg3, 0))  # noqa: E731
 cut3 = lambda e: sp.expand(sp.integrate(e, (z, -x * tg3, -b)).subs(x, xp + b / tg3))  # noqa: E731  (below the lower base)
 Mf_x = lambda e: termwise(sp.expand(e).subs(xp, x), Mf)  # noqa: E731  (x' written as x for termwise)
-d.step("cut-column", (cut3(1), xp * tg3), "algebra", uses=("x01",),
+d.step("cut-column", (sp.Subs(sp.Integral(1, (z, -x * tg3, -b)), x, xp + b / tg3), xp * tg3), "algebra", uses=("x01",),
        note="over f the column x tan phi_3 overshoots the lower base by x' tan phi_3, x' = x - (x_0 + x_0^1)")
 d.step("dry-volume-3", (V3c, termwise(col3(1), MF) - Mf_x(cut3(1)), (F * xs - f * xs1) * tg3), "integration",
        result=V3c, note="the prism over F cut by the water plane, less the part below the lower base (over f)")
