@@ -57,13 +57,7 @@ import sympy as sp
 
 from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, Computed
-
-
-def kept(build):
-    """What *build* returns, its arithmetic left unevaluated: the print's arithmetic is
-    carried out by the engine when it compares, not by SymPy when the reading is built."""
-    with sp.evaluate(False):
-        return build()
+from symfloat.model.claim import as_printed
 
 
 y = sp.Symbol("y", real=True)
@@ -276,7 +270,7 @@ d.quote("AB-AEB", "§223", r"$= \frac{2a}{3b} \int y^4 dy \sqrt{bb-yy}$, in quo 
                         corrected_reading=(IAEB, 2 * a / (3 * b) * V4)),
         note=claim("AEB has the moment (2a/3b)∫y⁴dy/√(bb-yy) about AB, free of Y."))
 d.quote("AB-whole", "§223", r"$= \frac{Dbb}{2} = \frac{ef^2 D}{8}$",
-        reading=kept(lambda: (Iwhole, D * b ** 2 / 2, (2 * b) ** 2 * D / 8)),
+        reading=as_printed(lambda: (Iwhole, D * b ** 2 / 2, (2 * b) ** 2 * D / 8)),
         note=claim("the whole figure has, like the ellipse, the moment Db²/2 = ef²D/8 about AB (ef = 2b)."))
 
 # ================================================================ §224: moment about aAa (x = 0)
@@ -495,7 +489,7 @@ d.quote("curve-c", "§227", r"seu $x = a - \frac{cyy}{bb} + \frac{c}{b} V(bb-yy)
             "Y = -cyy/bb put into x = a + Y ± a√(1 - yy/bb) of §221 gives a - cyy/bb ± (a/b)√(bb-yy); with "
             "(c/b)√ the curve would not end at B (x = a + c at y = 0, not 2a). The letters a and c are "
             "confused again in 'Oc = a' next to it; the ± of §221 shortened to the branch of Bce. Medium.",
-            corrected_reading=kept(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
+            corrected_reading=as_printed(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
                                                       a - c * y ** 2 / b ** 2 + a / b * R])))),
         note=claim("with Y = -cyy/bb the curve is x = a - cyy/bb + (c/b)√(bb-yy); read as the branch Bce."))
 d.quote("Oc", "§227", r"ex qua fit $Oc = a$ vti assumsumus",
@@ -547,7 +541,7 @@ d.quote("moment-EF-c", "§227",
             "a²D/2 + c²D/8 (the member before, which holds) with AB = 2a is AB²D/8 + c²D/8; c·c²D/128 is "
             "neither. The 128 belongs to §228's AB²D/128 (c = a/2); what the print had after '+' cannot be "
             "told from the transcription, low.",
-            corrected_reading=kept(lambda: (KEFc, a * a * D / 2 + c * c * D / 8, (2 * a) ** 2 * D / 8 + c * c * D / 8))),
+            corrected_reading=as_printed(lambda: (KEFc, a * a * D / 2 + c * c * D / 8, (2 * a) ** 2 * D / 8 + c * c * D / 8))),
         note=claim("the whole figure AEBF has the moment a²D/2 + c²D/8 = AB²D/8 + ... about EF."))
 
 # ================================================================ §228: growth, the limit c <= a/2, c = a/2
@@ -568,7 +562,7 @@ d.quote("curve-c-again", "§228", r"$a = a - \frac{cyy}{bb} + \frac{c}{b}$ $V(bb
             "transcription", "low", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
             "The assumed equation is the curve of §227, x = a - cyy/bb ± (a/b)√(bb-yy); the transcription "
             "has a for x and repeats the c/b of §227. Low: three letters differ.",
-            corrected_reading=kept(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
+            corrected_reading=as_printed(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
                                                       a - c * y ** 2 / b ** 2 + a / b * R])))),
         note=claim("the assumed equation (of §227)."))
 d.quote("c-limit", "§228",
@@ -579,7 +573,7 @@ d.quote("c-limit", "§228",
                    "decide it: near A the branch Ace is x = (a/2 - c)y²/b² + O(y⁴), negative for c > a/2; and "
                    "x - (a/2 - c)y²/b² = (a/2)(1 - √(bb-yy)/b)² >= 0, so for c <= a/2 no point has x < 0."))
 d.quote("c-half", "§228", r"$c = \frac{1}{2}a$ seu $Oc = \frac{1}{2}AO = \frac{1}{4}AB$",
-        reading=kept(lambda: (sp.Rational(1, 2) * a, sp.Rational(1, 4) * (2 * a))),
+        reading=as_printed(lambda: (sp.Rational(1, 2) * a, sp.Rational(1, 4) * (2 * a))),
         note=claim("c = a/2 is Oc = AO/2 = AB/4 (Oc is c and AO is a: the middle member renames the first, "
                    "so the reading keeps c = a/2 = AB/4 with AB = 2a)."))
 KEFh, KEF0 = sp.symbols("K_{EF}(c=a/2) K_{EF}(c=0)")

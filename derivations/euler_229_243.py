@@ -72,13 +72,7 @@ import sympy as sp
 
 from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, Computed, HullWitness
-
-
-def kept(build):
-    """What *build* returns, its arithmetic left unevaluated: the print's arithmetic is
-    carried out by the engine when it compares, not by SymPy when the reading is built."""
-    with sp.evaluate(False):
-        return build()
+from symfloat.model.claim import as_printed
 
 
 y, s, m = sp.symbols("y s m", positive=True)
@@ -601,7 +595,7 @@ d.step("rectangle-limit", (Klim, 2 * a ** 2 * D * sp.Limit(k * Ngam / (m + 3 * k
        "limit", uses=("moment-EF-N", "N-gamma"), result=Klim,
        note="c = 0: K = 2a²D·nκN/(1 + 3nκ) = 2a²D·κN/(1/n + 3κ); n → ∞ is m = 1/n → 0, where N → 1")
 d.quote("rectangle-limit", "§235", r"$= \frac{2a^2D}{3} = \frac{AB^2D}{6}$",
-        reading=kept(lambda: (Klim, 2 * a ** 2 * D / 3, (2 * a) ** 2 * D / 6)),
+        reading=as_printed(lambda: (Klim, 2 * a ** 2 * D / 3, (2 * a) ** 2 * D / 6)),
         note=claim("as n → ∞ the figure becomes the rectangle and the moment about EF tends to 2a²D/3 = AB²D/6, "
                    "for every κ > 0."))
 slope = sp.diff(a * (1 - (1 - y ** n / b ** n) ** k), y)   # dx/dy of Ace for c = 0
@@ -624,14 +618,14 @@ d.quote("kappa-negative", "§235", r"negatiuos enim valores substituere non lice
         note=claim("for κ < 0 the curves do not close: aR → ∞ as y → b (read at κ = −1/2: 1/(aR) → 0)."))
 
 # ================================================================ §236: the cases
-CASES236 = kept(lambda: (
+CASES236 = as_printed(lambda: (
     ("rhombus", 1, 1, r"$= \frac{2a^2D}{6} = \frac{AB^2.D}{12}$", 2 * a ** 2 / 6, (2 * a) ** 2 / 12),
     ("parabolas", 1, 2, r"$= \frac{16a^2D}{35} = \frac{4AB^2.D}{35}$", 16 * a ** 2 / 35, 4 * (2 * a) ** 2 / 35),
     ("half-n1", sp.Rational(1, 2), 1, r"$= \frac{2a^2D}{5} = \frac{AB^2.D}{10}$", 2 * a ** 2 / 5, (2 * a) ** 2 / 10),
     ("ellipse", sp.Rational(1, 2), 2, r"$= \frac{a^2D}{2} = \frac{AB^2.D}{8}$", a ** 2 / 2, (2 * a) ** 2 / 8)))
 for name, kv, nv, excerpt, f1, f2 in CASES236:
     d.quote("case-" + name, "§236", excerpt,
-            reading=(sp.Subs(Kk[kv], n, nv), *kept(lambda: (sp.Subs(f1 * Dk[kv], n, nv), sp.Subs(f2 * Dk[kv], n, nv)))),
+            reading=(sp.Subs(Kk[kv], n, nv), *as_printed(lambda: (sp.Subs(f1 * Dk[kv], n, nv), sp.Subs(f2 * Dk[kv], n, nv)))),
             note=claim("for κ = %s, n = %s (c = 0) the moment about EF is %s·D, D the half area of that figure."
                        % (kv, nv, sp.sstr(f1))))
 d.quote("kappa-above-1", "§236", r"posito enim $\kappa > 1$ tum curua in e et f habebit cuspides ac tangentes "

@@ -39,13 +39,7 @@ from symfloat import Derivation, Erratum, Prediction
 from symfloat.engine.witness import Case, Computed
 from symfloat.model.prediction import box_uprights
 from symfloat.geometry.floating import floating_state, right_prism, submerged
-
-
-def kept(build):
-    """What *build* returns, its arithmetic left unevaluated: the print's arithmetic is
-    carried out by the engine when it compares, not by SymPy when the reading is built."""
-    with sp.evaluate(False):
-        return build()
+from symfloat.model.claim import as_printed
 
 
 # ---- symbols -------------------------------------------------------------------------------------------------
@@ -370,7 +364,7 @@ d.quote("37", "(37)", r"$$\begin{aligned} T &= \int_2 \zeta^2 df_2 = \cos^2 \mu 
                       r"\int_2 v_2^2 df_2 + \sin 2 \mu \int_2 u_2 v_2 \cdot df_2 \\ \text{oder } T &= T_2 \cdot "
                       r"\cos^2 \mu + T_2^1 \cdot \sin^2 \mu + \sin 2 \mu \int_2 u_2 v_2 \cdot df. \end{aligned} "
                       r"\quad (37)$$",
-        reading=kept(lambda: (Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
+        reading=as_printed(lambda: (Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
                  T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2)),
         note="the last integral is printed with df for df_2; it is the same integral over II (int_2)")
 d.quote("38-projection", "(38)", r"$$df = \frac{df_2}{\cos \varphi_1} \quad u = \frac{u_2}{\cos \varphi_1} \quad "
@@ -443,7 +437,7 @@ d.quote("second-condition", "(45)",
         reading=(Iuv, (Tx - Ty) * sp.sin(om) * sp.cos(om) + J * (sp.cos(om) ** 2 - sp.sin(om) ** 2)),
         note="the left side is int_1 u v df; '= 0' is the condition (32)")
 d.quote("Tx-Ty", "(45)", r"$$\int_1 y^2 \cdot d f = T_x \cdot \quad \int_1 x^2 \cdot d f = T_y$$",
-        reading=kept(lambda: (sp.Matrix([area_integral(y ** 2, x, y, MOM_XY), area_integral(x ** 2, x, y, MOM_XY)]),
+        reading=as_printed(lambda: (sp.Matrix([area_integral(y ** 2, x, y, MOM_XY), area_integral(x ** 2, x, y, MOM_XY)]),
                  sp.Matrix([Tx, Ty]))), note="names; the stray dot after T_x is the scan's")
 d.quote("45", "(45)", r"$$\frac{1}{2} (T_x - T_y) \sin 2 \omega + \int_1 x y \cdot d f \cdot \cos 2 \omega = 0 "
                       r"\quad (45)$$", reading=(Iuv, (Tx - Ty) * sp.sin(2 * om) / 2 + J * sp.cos(2 * om)))
@@ -894,7 +888,6 @@ _w("top", "tan of the tilt where the clipped prism's upper base reaches the wate
 _w("bot", "tan of the tilt where the clipped prism's lower base reaches the water, reached first", ("53a",), "bot",
    ("tri-eq-apex-up", "square-lim", "rect-long"))
 _w("first", "tan of the first contact of either base (clipped prism)", ("55",), "first", LIM)
-
 
 
 # ---- predictions: the upright and the tilted positions of the first rotation region (IV, V) -------------------------

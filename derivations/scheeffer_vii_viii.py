@@ -57,13 +57,7 @@ from symfloat.engine.roots import illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import floating_state, right_prism, submerged
 from symfloat.model.prediction import Prediction
-
-
-def kept(build):
-    """What *build* returns, its arithmetic left unevaluated: the print's arithmetic is
-    carried out by the engine when it compares, not by SymPy when the reading is built."""
-    with sp.evaluate(False):
-        return build()
+from symfloat.model.claim import as_printed
 
 
 R = sp.Rational
@@ -294,7 +288,7 @@ d.quote("s-upper", "VII", "Es soll dabei das spec. Gew.  $s > \\frac{1}{2}$\n\nv
                         corrected_reading=(sst, um1 / (um + um1))))
 d.quote("95", "(95)", "„Das statische Moment des über dem Wasser befindlichen Körperteils für die durch  $S$  "
         "senkrecht zur Drehungsachse gelegte Vertikalebene (Ebene der Figur 17) ist Null.“ (95)",
-        reading=kept(lambda: (My, V3 * sp.Matrix([0, 1, 0]).dot(MS3 / V3))), note="the moment itself; 'ist Null' is the condition")
+        reading=as_printed(lambda: (My, V3 * sp.Matrix([0, 1, 0]).dot(MS3 / V3))), note="the moment itself; 'ist Null' is the condition")
 d.quote("95-S3", "VII", r"Da nun  $S_2$  senkrecht unter  $S$  liegt, so muss auch  $S_3$  senkrecht über  $S$  liegen",
         reading=(sp.Matrix([M2h, M2y]), -sp.Matrix([M3, My])),
         note="read as V_1 (S_2 - S) = -V_3 (S_3 - S) in the two horizontal directions")
@@ -611,7 +605,6 @@ CONFIGS = {
     "box3-eq": (_box3(sp.Integer(1), R(5, 2), R(1, 2)), N0, _box_eq3(sp.Integer(1), R(5, 2), R(1, 2)), R(5, 2),
                 sp.Integer(1), 3),
 }
-
 
 
 @functools.lru_cache(maxsize=None)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["members", "as_latex", "pairs", "identical_links"]
+__all__ = ["members", "as_latex", "pairs", "identical_links", "as_printed"]
 
 
 def members(claim) -> tuple:
@@ -57,3 +57,19 @@ def identical_links(ms) -> list[bool]:
             same = a == b
         out.append(bool(same))
     return out
+
+
+def as_printed(build):
+    """What ``build()`` returns, built with SymPy's automatic evaluation off.
+
+    A reading keeps the print's arithmetic this way (``g (1/2)^2`` stays a
+    product of ``g`` and a square), so that the engine carries it out when it
+    compares, instead of SymPy when the reading is built.
+
+    >>> import sympy as sp
+    >>> g = sp.Symbol("g")
+    >>> as_printed(lambda: g * sp.Rational(1, 2) ** 2) == g / 4, (g * sp.Rational(1, 2) ** 2) == g / 4
+    (False, True)
+    """
+    with sp.evaluate(False):
+        return build()
