@@ -63,8 +63,8 @@ def definitions_markdown(d) -> str:
     if not d.names:
         return ""
     lines = ["## Names used below", "",
-             "The derivation computes in coordinates; these expressions are written by their names "
-             "in the steps and readings that follow.", ""]
+             "Helper expressions of the derivation, each shown once; the steps and readings below "
+             "write them by these names.", ""]
     for i, (symbol, value, text) in enumerate(d.names):
         shown = sp.latex(named(d.names[:i], value))
         lines.append(f"- {text}: ${sp.latex(symbol)} = {shown}$" if text else f"- ${sp.latex(symbol)} = {shown}$")
