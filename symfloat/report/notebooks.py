@@ -94,6 +94,7 @@ def execute_notebook(nb, cwd: str | os.PathLike) -> nbformat.NotebookNode:
     # The kernel's own log (a transport warning at start) is noise here; a
     # failing cell raises CellExecutionError with its traceback regardless.
     client.execute(stderr=subprocess.DEVNULL)
+    nb.metadata.pop("language_info", None)   # the kernel's Python version: machine, not mathematics
     return nb
 
 
