@@ -138,6 +138,12 @@ class IY(sp.Function):
         return tex if exp is None else r"\left(%s\right)^{%s}" % (tex, exp)
 
 
+def quotient(p, q):
+    """p / q kept as a quotient (at kappa = 1/2 numerator and denominator coincide: N = 1 is then checked,
+    not made 1 on building)."""
+    return sp.Mul(p, sp.Pow(q, -1, evaluate=False), evaluate=False)
+
+
 def J(P, Q, N_=n):
     return Ib(P, Q, N_, b)
 
@@ -503,8 +509,9 @@ for kv in KAPPAS:
     Nk[kv] = sp.Symbol("N_{%s}" % kv)
     Dk[kv] = sp.Symbol("D_{%s}" % kv)
     Kk[kv] = sp.Symbol("K_{%s}" % kv)
-    d.step("N-%s" % _label(kv), (Nk[kv], J(0, 3 * kv - 1) / J(0, kv),
-                                  _beta_value(0, 3 * kv - 1, n, b) / _beta_value(0, kv, n, b), N_rebuilt(kv)[0]),
+    d.step("N-%s" % _label(kv), (Nk[kv], quotient(J(0, 3 * kv - 1), J(0, kv)),
+                                  quotient(_beta_value(0, 3 * kv - 1, n, b), _beta_value(0, kv, n, b)),
+                                  N_rebuilt(kv)[0]),
            "integration", uses=("N", "beta-integral"), result=Nk[kv],
            note="N at κ = %s: the Γ quotient reduces by Γ(s+1) = sΓ(s) to the product" % kv)
     d.step("D-%s" % _label(kv), (Dk[kv], sp.Subs(D, k, kv), 2 * a * J(0, kv)), "substitution", uses=("area",), result=Dk[kv],

@@ -20,6 +20,7 @@ import sympy as sp
 
 from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, SectionIntegral
+from symfloat.model.claim import as_printed
 
 G, g, D, h, z = sp.symbols("G g D h z", positive=True)
 a, b, c, dd, e, f, m = sp.symbols("a b c d e f m", positive=True)
@@ -109,7 +110,7 @@ d.step("volume", sp.Eq(V, v1 + v2 + v3), "definition", uses=("v1", "v2", "v3"), 
 d.step("volume-simpson", (V, m / 3 * DEN), "lemma", uses=("volume", "graefe-s2-volumes-simpson:simpson-7"),
        note="Simpson's rule as derived in §2 (with the factor m/3)")
 d.step("centroid", sp.Eq(XS, M / V), "definition", uses=("moment", "volume"), result=XS)
-d.step("centroid-value", (XS, xv_3 / (m / 3 * DEN), m * (NUM / DEN)), "algebra",
+d.step("centroid-value", (XS, as_printed(lambda: xv_3 / (m / 3 * DEN)), m * (NUM / DEN)), "algebra",
        uses=("centroid", "moment-value", "volume-simpson"))
 d.step("centroid-equal-sections", (sp.Subs(m * NUM / DEN, (b, c, dd, e, f, g), (a,) * 6), 3 * m),
        "algebra", uses=("centroid-value",),

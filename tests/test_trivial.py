@@ -108,3 +108,18 @@ def test_no_reading_of_the_library_compares_a_thing_with_itself(fid, reading):
     same = identical_links(members(reading))
     if any(same):
         assert fid in TRIVIAL_PRINTS, f"{fid}: link(s) {[i + 1 for i, t in enumerate(same) if t]} identical as built"
+
+
+def _library_steps():
+    for did in select():
+        d, _ = load(did)
+        for s in d.steps:
+            if s.why != "definition":
+                yield f"{d.id}/{s.name}", s
+
+
+@pytest.mark.parametrize("sid, step", list(_library_steps()), ids=lambda x: x if isinstance(x, str) else "")
+def test_no_step_of_the_library_compares_a_thing_with_itself(sid, step):
+    ms = [m for m in members(step.claim) if not (step.result is not None and m == step.result)]
+    same = identical_links(ms)
+    assert not any(same), f"{sid}: link(s) {[i + 1 for i, t in enumerate(same) if t]} identical as built"
