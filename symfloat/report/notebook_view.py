@@ -45,9 +45,17 @@ def named(names, expr):
     return sp.sympify(expr).xreplace(table)
 
 
+def _as_printed(expr) -> bool:
+    """Does *expr* keep arithmetic unevaluated (a reading as printed)?"""
+    nodes = expr if isinstance(expr, sp.MatrixBase) else [expr]
+    return any(isinstance(a, sp.UnevaluatedExpr) or (isinstance(a, (sp.Add, sp.Mul, sp.Pow)) and a != a.func(*a.args))
+               for e in nodes for a in sp.preorder_traversal(e))
+
+
 def _latex(d, expr) -> str:
-    """LaTeX in the order the derivation built the terms (a reading keeps the print's order)."""
-    return sp.latex(named(d.names, expr), order="none")
+    """LaTeX of *expr* in the derivation's names; an expression kept as printed keeps its order of terms."""
+    expr = named(d.names, expr)
+    return sp.latex(expr, order="none") if _as_printed(expr) else sp.latex(expr)
 
 
 def chain_latex(d, claim) -> str:
