@@ -128,3 +128,12 @@ def test_the_library_test_sees_a_trivial_reading():
     mutated = type(d)(id=d.id, source=d.source, title=d.title, locator=d.locator, domain=d.domain)
     mutated.printed = [dataclasses.replace(p, reading=(g * sp.Rational(1, 2) ** 2, g / 4))]
     assert _offenders(mutated) == [("mid-section-g", [1])]
+
+
+def test_no_verdict_of_the_library_rests_on_a_trivial_comparison(all_reports):
+    """The checked record: no formula verdict or step status comes from a comparison of a thing
+    with itself, and no identity record skipped a link as identical (unless the print is trivial)."""
+    idle = [f.id for r in all_reports for f in r.formulas
+            if f.verdict == "trivial" or any("identical as built" in t for t in (f.identity or {}).get("tried", []))]
+    assert [i for i in idle if i not in TRIVIAL_PRINTS] == []
+    assert [f"{r.id}/{s.name}" for r in all_reports for s in r.steps if s.status == "trivial"] == []
