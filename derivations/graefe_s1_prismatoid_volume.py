@@ -12,6 +12,7 @@ import sympy as sp
 from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, HullWitness
 from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
+from symfloat.model.claim import as_printed
 
 G, g, D, h, z = sp.symbols("G g D h z", positive=True)
 P, V1, V2, V3, I = sp.symbols("P V_1 V_2 V_3 I", positive=True)
@@ -112,7 +113,7 @@ d.step("volume", sp.Eq(I, V1 + V2 + V3), "definition", uses=("pyramid-over-g", "
        note="the prismatoid is the union of the three groups of bodies",
        result=I)
 collected_as_printed = h / 3 * sp.Add(g, G, -G / 2, -g / 2, 2 * D, evaluate=False)
-collected = h / 3 * sp.Add((G + g) / 2, 2 * D, evaluate=False)
+collected = as_printed(lambda: h / 3 * ((G + g) / 2 + 2 * D))
 d.step("volume-collected", (I, collected_as_printed, collected),
        "algebra", uses=("volume",))
 
@@ -178,7 +179,7 @@ d.quote("volume-collected", "§1 prismatoid volume",
                         corrected_reading=sp.Eq(I, h / 3 * (g + G - G / 2 - g / 2 + 2 * D))))
 d.quote("prismatoid-volume", "§1 prismatoid volume",
         r"$$I = \frac{h}{3} \left\{ \frac{G+g}{2} + 2D \right\}, \text{ welches die oben erwähnte}$$",
-        reading=sp.Eq(I, h / 3 * ((G + g) / 2 + 2 * D)))
+        reading=sp.Eq(I, collected))
 
 # ---- witnesses -----------------------------------------------------------------
 
