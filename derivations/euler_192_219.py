@@ -44,6 +44,8 @@ import sympy as sp
 
 from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, Computed
+from symfloat.model.claim import as_printed
+
 
 x, y, w, s, r = sp.symbols("x y w s r", real=True)
 a, b, c = sp.symbols("a b c", positive=True)
@@ -325,7 +327,7 @@ d.quote("Ace-I", "§216", r"$= \frac{ab^3}{12}$", reading=(IAce, a * b ** 3 / 12
 d.quote("Bce-I", "§216", r"$Bce = \frac{cb^3}{12}$", reading=(IBce, c * b ** 3 / 12),
         note=claim("the triangle Bce has the moment cb³/12 about AB."))
 d.quote("quad-I", "§216", r"$= \frac{ab^3 + cb^3}{6} = \frac{Dbb}{3} = \frac{ef^2 \cdot D}{12}$",
-        reading=(Ik, (a * b ** 3 + c * b ** 3) / 6, Dk * b ** 2 / 3, (2 * b) ** 2 * Dk / 12),
+        reading=as_printed(lambda: (Ik, (a * b ** 3 + c * b ** 3) / 6, Dk * b ** 2 / 3, (2 * b) ** 2 * Dk / 12)),
         note=claim("the whole quadrilateral has the moment (ab³ + cb³)/6 = Db²/3 = ef²·D/12 about AB, as the "
                    "rhombus (ef = 2b)."))
 d.quote("Ace-L", "§216", r"$= \frac{a^3 b}{12}$", reading=(LAce, a ** 3 * b / 12),
@@ -421,7 +423,7 @@ d.step("sym-PQ-monotone", (PS, Ik + m ** 2 * (K - Ik), K - n ** 2 * (K - Ik)), "
             "axis through C has a moment between I (axis AB, least) and K (axis EF, greatest), increasing "
             "with the angle")
 d.step("sym-PQ-derivative", (sp.Derivative(Ik + m ** 2 * (K - Ik), m), 2 * m * (K - Ik)), "algebra")
-d.step("equal-moments", ((Ik + m ** 2 * (K - Ik)).subs(K, Ik), Ik), "algebra",
+d.step("equal-moments", (sp.Subs(Ik + m ** 2 * (K - Ik), K, Ik), Ik), "algebra",
        note="§210: I = K makes every axis through C equal")
 integral_step("sym-45", P45, kite(((Xc - y) / sp.sqrt(2)) ** 2),
        note="PQ at 45 degrees: m = n = 1/sqrt(2)")
@@ -454,7 +456,7 @@ d.quote("moment-PQ-sine", "§208", r"$= l - m^2 (I - K)$",
             "lower-case l (the same letter in (l+K)/2 below; m = 0 gives I, as the text says).",
             corrected_reading=(PS, Ik - m ** 2 * (Ik - K))),
         note=claim("with nn = 1 − mm the moment about PQ is I − m²(I − K): I for m = 0, K for m = 1."))
-d.quote("half-right", "§208", r"$m = \frac{1}{\sqrt{2}}$", reading=(sp.sin(sp.pi / 4), 1 / sp.sqrt(2)),
+d.quote("half-right", "§208", r"$m = \frac{1}{\sqrt{2}}$", reading=as_printed(lambda: (sp.sin(sp.pi / 4), 1 / sp.sqrt(2))),
         note=claim("for the semi-right angle the sine is 1/√2."))
 d.quote("moment-45", "§208", r"$= \frac{l+K}{2}$", reading=(P45, (l + K) / 2),
         erratum=Erratum(
@@ -487,12 +489,12 @@ d.quote("square-quadrant-I", "§212", r"$\frac{1}{3} \int y^3 dx = \frac{a^4}{3}
         reading=(Iqs, sp.Integral(a ** 3, (x, 0, a)) / 3, a ** 4 / 3),
         note=claim("the quadrant's moment about AB is (1/3)∫y³dx = a⁴/3."))
 d.quote("square-quadrant-K", "§212", r"$\int y x^2 dx = \frac{ax^3}{3} = \frac{a^4}{3}$",
-        reading=(Kqs, sp.Integral(a * x ** 2, (x, 0, a)),
-                 (a * x ** 3 / 3).subs(x, a), a ** 4 / 3),
+        reading=as_printed(lambda: (Kqs, sp.Integral(a * x ** 2, (x, 0, a)),
+                 (a * x ** 3 / 3).subs(x, a), a ** 4 / 3)),
         note=claim("the quadrant's moment about EF is ∫yx²dx = ax³/3, at x = a equal to a⁴/3 (the middle "
                    "member read at the end x = a)."))
 d.quote("square-I", "§212", r"$= \frac{4a^4}{3} = \frac{AB^4}{12}$",
-        reading=(Isq, 4 * a ** 4 / 3, (2 * a) ** 4 / 12),
+        reading=as_printed(lambda: (Isq, 4 * a ** 4 / 3, (2 * a) ** 4 / 12)),
         note=claim("the square's moment about AB (AB = 2a) is 4a⁴/3 = AB⁴/12, and so about EF and about every "
                    "axis through C."))
 d.quote("square-area", "§212", r"erit $AB^2 = 2D$", reading=sp.Eq((2 * a) ** 2, 2 * Dsq),
@@ -516,7 +518,7 @@ d.quote("rect-area", "§213", r"$2D = 4ab$", reading=sp.Eq(2 * Dre, 4 * a * b),
 d.quote("rect-cubes", "§213", r"$\int y^3 dx = b^3 x$", reading=(sp.Integral(b ** 3, (s, 0, x)), b ** 3 * x),
         note=claim("with PM = y = b, ∫y³dx = b³x up to the abscissa CP = x."))
 d.quote("rect-I", "§213", r"$= \frac{4ab^3}{3} = \frac{2D \cdot bb}{3} = \frac{EF^2 \cdot D}{6}$",
-        reading=(Ire, 4 * a * b ** 3 / 3, 2 * Dre * b * b / 3, (2 * b) ** 2 * Dre / 6),
+        reading=as_printed(lambda: (Ire, 4 * a * b ** 3 / 3, 2 * Dre * b * b / 3, (2 * b) ** 2 * Dre / 6)),
         note=claim("the rectangle's moment about AB is 4ab³/3 = 2D·b²/3 = EF²·D/6."))
 d.quote("rect-K", "§213", r"latitudinalis $= \frac{AB^2 \cdot D}{6}$", reading=(Kre, (2 * a) ** 2 * Dre / 6),
         note=claim("and about EF it is AB²·D/6, so the two moments are inversely as the squares of the axes."))
@@ -532,7 +534,8 @@ d.step("rhombus-quarter-of-rectangle", (Ire / Irh, Kre / Krh, 4), "integration",
        uses=("rect-I", "rect-K", "rhombus-I", "rhombus-K"),
        note="with the same length AB = 2a and breadth EF = 2b the rectangle's moments are four times the "
             "rhombus' (its area 2D is also twice as large)")
-d.step("rhombus-half-at-equal-area", ((2 * b) ** 2 * sp.Symbol("D") / 6 / ((2 * b) ** 2 * sp.Symbol("D") / 12), 2),
+d.step("rhombus-half-at-equal-area", (as_printed(lambda: (2 * b) ** 2 * sp.Symbol("D") / 6 / ((2 * b) ** 2 * sp.Symbol("D") / 12)),
+                                       2),
        "algebra", note="the factor 2 holds between EF^2 D/6 and EF^2 D/12 at the same D, i.e. for the same "
                        "length, breadth and area, which the two figures cannot share")
 d.quote("rhombus-edge", "§214", r"erit $y = \frac{bx}{a}$", reading=(Ye, b * x / a),
@@ -544,7 +547,7 @@ d.quote("rhombus-cubes", "§214", r"$\int y^3 dx = \frac{b^3}{a^3} \int x^3 dx =
                  b ** 3 * x ** 4 / (4 * a ** 3)),
         note=claim("with y = bx/a (AP = x from A), ∫y³dx = b³x⁴/(4a³)."))
 d.quote("rhombus-I", "§214", r"AB $= \frac{ab^3}{3} = \frac{D \cdot bb}{3} = \frac{EF^2 \cdot D}{12}$",
-        reading=(Irh, a * b ** 3 / 3, Drh * b * b / 3, (2 * b) ** 2 * Drh / 12),
+        reading=as_printed(lambda: (Irh, a * b ** 3 / 3, Drh * b * b / 3, (2 * b) ** 2 * Drh / 12)),
         note=claim("the rhombus' moment about AB is ab³/3 = D·b²/3 = EF²·D/12."))
 d.quote("rhombus-twice", "§214",
         "Manentibus igitur eadem longitudine ac latitudine, momenta parallelogrammi rectanguli duplo sunt "

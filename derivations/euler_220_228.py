@@ -57,6 +57,8 @@ import sympy as sp
 
 from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, Computed
+from symfloat.model.claim import as_printed
+
 
 y = sp.Symbol("y", real=True)
 th = sp.Symbol("theta", real=True)
@@ -268,7 +270,7 @@ d.quote("AB-AEB", "§223", r"$= \frac{2a}{3b} \int y^4 dy \sqrt{bb-yy}$, in quo 
                         corrected_reading=(IAEB, 2 * a / (3 * b) * V4)),
         note=claim("AEB has the moment (2a/3b)∫y⁴dy/√(bb-yy) about AB, free of Y."))
 d.quote("AB-whole", "§223", r"$= \frac{Dbb}{2} = \frac{ef^2 D}{8}$",
-        reading=(Iwhole, D * b ** 2 / 2, (2 * b) ** 2 * D / 8),
+        reading=as_printed(lambda: (Iwhole, D * b ** 2 / 2, (2 * b) ** 2 * D / 8)),
         note=claim("the whole figure has, like the ellipse, the moment Db²/2 = ef²D/8 about AB (ef = 2b)."))
 
 # ================================================================ §224: moment about aAa (x = 0)
@@ -344,7 +346,7 @@ E1 = named("int-E1", r"y\,dy (a+Y) \sqrt{bb-yy}", y * (a + Yg) * R, note="the fi
 integral_step("G2", G2, y * sp.diff((a + Yg) ** 2 * R, y), note="∫y d.(a+Y)²√(bb-yy), from 0 to b")
 integral_step("S2", S2, (a + Yg) ** 2 * R, note="∫(a+Y)² dy √(bb-yy)")
 F2 = y * (a + Yg) ** 2 * R
-d.step("G2-by-parts", (G2, F2.subs(y, b) - F2.subs(y, 0) - S2, -S2), "integration", uses=("G2", "S2"))
+d.step("G2-by-parts", (G2, sp.Subs(F2, y, b) - sp.Subs(F2, y, 0) - S2, -S2), "integration", uses=("G2", "S2"))
 d.quote("Aa-AEB", "§225",
         "$aAa = -\\frac{4a}{b} \\int y dy (a+Y) V(bb-yy)$\n $+ \\frac{2a}{b} \\int \\frac{yydy(a+Y)^2}"
         "{\\sqrt{bb-yy}} + \\frac{2a^3}{b^3} \\int yy dy V(bb-yy) = \\frac{2a^3}{b^3} \\int yy dy V(bb-yy) - "
@@ -487,8 +489,8 @@ d.quote("curve-c", "§227", r"seu $x = a - \frac{cyy}{bb} + \frac{c}{b} V(bb-yy)
             "Y = -cyy/bb put into x = a + Y ± a√(1 - yy/bb) of §221 gives a - cyy/bb ± (a/b)√(bb-yy); with "
             "(c/b)√ the curve would not end at B (x = a + c at y = 0, not 2a). The letters a and c are "
             "confused again in 'Oc = a' next to it; the ± of §221 shortened to the branch of Bce. Medium.",
-            corrected_reading=(BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
-                                                      a - c * y ** 2 / b ** 2 + a / b * R]))),
+            corrected_reading=as_printed(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
+                                                      a - c * y ** 2 / b ** 2 + a / b * R])))),
         note=claim("with Y = -cyy/bb the curve is x = a - cyy/bb + (c/b)√(bb-yy); read as the branch Bce."))
 d.quote("Oc", "§227", r"ex qua fit $Oc = a$ vti assumsumus",
         reading=(sp.Subs(a - xLc, y, b), a),
@@ -539,7 +541,7 @@ d.quote("moment-EF-c", "§227",
             "a²D/2 + c²D/8 (the member before, which holds) with AB = 2a is AB²D/8 + c²D/8; c·c²D/128 is "
             "neither. The 128 belongs to §228's AB²D/128 (c = a/2); what the print had after '+' cannot be "
             "told from the transcription, low.",
-            corrected_reading=(KEFc, a * a * D / 2 + c * c * D / 8, (2 * a) ** 2 * D / 8 + c * c * D / 8)),
+            corrected_reading=as_printed(lambda: (KEFc, a * a * D / 2 + c * c * D / 8, (2 * a) ** 2 * D / 8 + c * c * D / 8))),
         note=claim("the whole figure AEBF has the moment a²D/2 + c²D/8 = AB²D/8 + ... about EF."))
 
 # ================================================================ §228: growth, the limit c <= a/2, c = a/2
@@ -560,8 +562,8 @@ d.quote("curve-c-again", "§228", r"$a = a - \frac{cyy}{bb} + \frac{c}{b}$ $V(bb
             "transcription", "low", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
             "The assumed equation is the curve of §227, x = a - cyy/bb ± (a/b)√(bb-yy); the transcription "
             "has a for x and repeats the c/b of §227. Low: three letters differ.",
-            corrected_reading=(BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
-                                                      a - c * y ** 2 / b ** 2 + a / b * R]))),
+            corrected_reading=as_printed(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
+                                                      a - c * y ** 2 / b ** 2 + a / b * R])))),
         note=claim("the assumed equation (of §227)."))
 d.quote("c-limit", "§228",
         r"non permittit, vt capiatur $c > \frac{1}{2}a$, alias enim curua ultra rectam aa excurreret",
@@ -571,7 +573,9 @@ d.quote("c-limit", "§228",
                    "decide it: near A the branch Ace is x = (a/2 - c)y²/b² + O(y⁴), negative for c > a/2; and "
                    "x - (a/2 - c)y²/b² = (a/2)(1 - √(bb-yy)/b)² >= 0, so for c <= a/2 no point has x < 0."))
 d.quote("c-half", "§228", r"$c = \frac{1}{2}a$ seu $Oc = \frac{1}{2}AO = \frac{1}{4}AB$",
-        reading=(a / 2, a / 2, 2 * a / 4), note=claim("c = a/2 is Oc = AO/2 = AB/4."))
+        reading=as_printed(lambda: (sp.Rational(1, 2) * a, sp.Rational(1, 4) * (2 * a))),
+        note=claim("c = a/2 is Oc = AO/2 = AB/4 (Oc is c and AO is a: the middle member renames the first, "
+                   "so the reading keeps c = a/2 = AB/4 with AB = 2a)."))
 KEFh, KEF0 = sp.symbols("K_{EF}(c=a/2) K_{EF}(c=0)")
 d.step("moment-EF-half-value", (KEFh, sp.Subs(KEFc, c, a / 2), kefc.subs(c, a / 2)), "substitution",
        uses=("moment-EF-c",), result=KEFh, note="Oc = AB/4")

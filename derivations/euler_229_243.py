@@ -72,6 +72,8 @@ import sympy as sp
 
 from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, Computed, HullWitness
+from symfloat.model.claim import as_printed
+
 
 y, s, m = sp.symbols("y s m", positive=True)
 a, b, c, n, k = sp.symbols("a b c n kappa", positive=True)
@@ -134,6 +136,12 @@ class IY(sp.Function):
         tex = r"\int_0^{%s} %s %s\left(1-\frac{y^{%s}}{%s^{%s}}\right)^{%s} %s%s" % (
             pr(B_), Yp, yp, pr(N_), pr(B_), pr(N_), pr(Q), "dY" if dY else "dy", at)
         return tex if exp is None else r"\left(%s\right)^{%s}" % (tex, exp)
+
+
+def quotient(p, q):
+    """p / q kept as a quotient (at kappa = 1/2 numerator and denominator coincide: N = 1 is then checked,
+    not made 1 on building)."""
+    return sp.Mul(p, sp.Pow(q, -1, evaluate=False), evaluate=False)
 
 
 def J(P, Q, N_=n):
@@ -501,8 +509,9 @@ for kv in KAPPAS:
     Nk[kv] = sp.Symbol("N_{%s}" % kv)
     Dk[kv] = sp.Symbol("D_{%s}" % kv)
     Kk[kv] = sp.Symbol("K_{%s}" % kv)
-    d.step("N-%s" % _label(kv), (Nk[kv], J(0, 3 * kv - 1) / J(0, kv),
-                                  _beta_value(0, 3 * kv - 1, n, b) / _beta_value(0, kv, n, b), N_rebuilt(kv)[0]),
+    d.step("N-%s" % _label(kv), (Nk[kv], quotient(J(0, 3 * kv - 1), J(0, kv)),
+                                  quotient(_beta_value(0, 3 * kv - 1, n, b), _beta_value(0, kv, n, b)),
+                                  N_rebuilt(kv)[0]),
            "integration", uses=("N", "beta-integral"), result=Nk[kv],
            note="N at κ = %s: the Γ quotient reduces by Γ(s+1) = sΓ(s) to the product" % kv)
     d.step("D-%s" % _label(kv), (Dk[kv], sp.Subs(D, k, kv), 2 * a * J(0, kv)), "substitution", uses=("area",), result=Dk[kv],
@@ -587,13 +596,13 @@ for kv in KAPPAS:
 # ================================================================ §235: n → ∞, the rectangle
 Klim = sp.Symbol("K_{inf}")
 Ngam = sp.gamma(3 * k) * sp.gamma(k + 1 + m) / (sp.gamma(k + 1) * sp.gamma(3 * k + m))
-d.step("N-gamma", (N, _beta_value(0, 3 * k - 1, n, b) / _beta_value(0, k, n, b), Ngam.subs(m, 1 / n)),
+d.step("N-gamma", (N, _beta_value(0, 3 * k - 1, n, b) / _beta_value(0, k, n, b), sp.Subs(Ngam, m, 1 / n)),
        "integration", uses=("N", "beta-integral"), note="Γ(1/n) cancels; m = 1/n")
 d.step("rectangle-limit", (Klim, 2 * a ** 2 * D * sp.Limit(k * Ngam / (m + 3 * k), m, 0, "+"), 2 * a ** 2 * D / 3),
        "limit", uses=("moment-EF-N", "N-gamma"), result=Klim,
        note="c = 0: K = 2a²D·nκN/(1 + 3nκ) = 2a²D·κN/(1/n + 3κ); n → ∞ is m = 1/n → 0, where N → 1")
 d.quote("rectangle-limit", "§235", r"$= \frac{2a^2D}{3} = \frac{AB^2D}{6}$",
-        reading=(Klim, 2 * a ** 2 * D / 3, (2 * a) ** 2 * D / 6),
+        reading=as_printed(lambda: (Klim, 2 * a ** 2 * D / 3, (2 * a) ** 2 * D / 6)),
         note=claim("as n → ∞ the figure becomes the rectangle and the moment about EF tends to 2a²D/3 = AB²D/6, "
                    "for every κ > 0."))
 slope = sp.diff(a * (1 - (1 - y ** n / b ** n) ** k), y)   # dx/dy of Ace for c = 0
@@ -616,13 +625,14 @@ d.quote("kappa-negative", "§235", r"negatiuos enim valores substituere non lice
         note=claim("for κ < 0 the curves do not close: aR → ∞ as y → b (read at κ = −1/2: 1/(aR) → 0)."))
 
 # ================================================================ §236: the cases
-CASES236 = (("rhombus", 1, 1, r"$= \frac{2a^2D}{6} = \frac{AB^2.D}{12}$", 2 * a ** 2 / 6, (2 * a) ** 2 / 12),
-            ("parabolas", 1, 2, r"$= \frac{16a^2D}{35} = \frac{4AB^2.D}{35}$", 16 * a ** 2 / 35, 4 * (2 * a) ** 2 / 35),
-            ("half-n1", sp.Rational(1, 2), 1, r"$= \frac{2a^2D}{5} = \frac{AB^2.D}{10}$", 2 * a ** 2 / 5, (2 * a) ** 2 / 10),
-            ("ellipse", sp.Rational(1, 2), 2, r"$= \frac{a^2D}{2} = \frac{AB^2.D}{8}$", a ** 2 / 2, (2 * a) ** 2 / 8))
+CASES236 = as_printed(lambda: (
+    ("rhombus", 1, 1, r"$= \frac{2a^2D}{6} = \frac{AB^2.D}{12}$", 2 * a ** 2 / 6, (2 * a) ** 2 / 12),
+    ("parabolas", 1, 2, r"$= \frac{16a^2D}{35} = \frac{4AB^2.D}{35}$", 16 * a ** 2 / 35, 4 * (2 * a) ** 2 / 35),
+    ("half-n1", sp.Rational(1, 2), 1, r"$= \frac{2a^2D}{5} = \frac{AB^2.D}{10}$", 2 * a ** 2 / 5, (2 * a) ** 2 / 10),
+    ("ellipse", sp.Rational(1, 2), 2, r"$= \frac{a^2D}{2} = \frac{AB^2.D}{8}$", a ** 2 / 2, (2 * a) ** 2 / 8)))
 for name, kv, nv, excerpt, f1, f2 in CASES236:
     d.quote("case-" + name, "§236", excerpt,
-            reading=(sp.Subs(Kk[kv], n, nv), sp.Subs(f1 * Dk[kv], n, nv), sp.Subs(f2 * Dk[kv], n, nv)),
+            reading=(sp.Subs(Kk[kv], n, nv), *as_printed(lambda: (sp.Subs(f1 * Dk[kv], n, nv), sp.Subs(f2 * Dk[kv], n, nv)))),
             note=claim("for κ = %s, n = %s (c = 0) the moment about EF is %s·D, D the half area of that figure."
                        % (kv, nv, sp.sstr(f1))))
 d.quote("kappa-above-1", "§236", r"posito enim $\kappa > 1$ tum curua in e et f habebit cuspides ac tangentes "

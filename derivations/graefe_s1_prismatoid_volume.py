@@ -12,6 +12,7 @@ import sympy as sp
 from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, HullWitness
 from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
+from symfloat.model.claim import as_printed
 
 G, g, D, h, z = sp.symbols("G g D h z", positive=True)
 P, V1, V2, V3, I = sp.symbols("P V_1 V_2 V_3 I", positive=True)
@@ -40,25 +41,56 @@ n = (XB - XA).cross(XD - XC)
 XE = XB + (XD - XC)                     # BE parallel to CD
 mid = {"a": (XA + XC) / 2, "b": (XB + XC) / 2, "c": (XB + XD) / 2, "d": (XA + XD) / 2}
 
-d.step("volume-ABCD", sp.Eq(Vt, sp.Abs((XB - XA).dot((XC - XA).cross(XD - XA))) / 6), "definition",
+
+def joining(P, Q):
+    """The vector from P to Q, its differences left unevaluated (so that two sides of a claim
+    built from different points are compared, not made equal on construction)."""
+    return sp.Matrix([sp.Add(q, -p, evaluate=False) for p, q in zip(P, Q)])
+
+
+ab, dc, AB_half = joining(mid["a"], mid["b"]), joining(mid["d"], mid["c"]), (XB - XA) / 2
+w = (mid["b"] - mid["a"]).cross(mid["d"] - mid["a"])
+u = (XB - XA).cross(XE - XA)
+triple_ABCD = (XB - XA).dot((XC - XA).cross(XD - XA))
+triple_ABCE = (XB - XA).dot((XC - XA).cross(XE - XA))
+# names for display (the notebook writes these sub-expressions by their names)
+for X, label in ((XA, "A"), (XB, "B"), (XC, "C"), (XD, "D")):
+    d.name(sp.Symbol(rf"\mathbf{{{label}}}"), X, f"the vertex {label} of the tetrahedron")
+d.name(sp.Symbol(r"\mathbf{E}"), XE, "E = B + (D - C): BE drawn parallel to CD")
+d.name(sp.Symbol(r"\vec{ab}"), ab, "b - a, a side of the mid-section abcd (a, b, c, d the midpoints of AC, BC, BD, "
+       "AD, so a = (A + C)/2 and b = (B + C)/2)")
+d.name(sp.Symbol(r"\vec{dc}"), dc, "c - d, the opposite side (d = (A + D)/2, c = (B + D)/2)")
+d.name(sp.Symbol(r"\tfrac{1}{2}\vec{AB}"), AB_half, "half the edge AB")
+d.name(sp.Symbol(r"|[\vec{AB},\vec{AC},\vec{AD}]|"), sp.Abs(triple_ABCD),
+       "|AB . (AC x AD)|, the absolute triple product of the edges from A")
+d.name(sp.Symbol(r"|[\vec{AB},\vec{AC},\vec{AE}]|"), sp.Abs(triple_ABCE), "|AB . (AC x AE)|, the same with E for D")
+d.name(sp.Symbol(r"|\vec{ab}\times\vec{ad}|^2"), w.dot(w), "|(b - a) x (d - a)|^2, the squared area of the parallelogram abcd")
+d.name(sp.Symbol(r"|\vec{n}|^2"), n.dot(n), "n . n, n = AB x CD the common normal of the edges AB and CD")
+d.name(sp.Symbol(r"|\vec{AC}\cdot\vec{n}|"), sp.Abs((XC - XA).dot(n)), "|AC . n|, AC projected on the common normal")
+d.name(sp.Symbol(r"|\vec{AB}\times\vec{AE}|^2"), u.dot(u), "|AB x AE|^2, the squared double area of the triangle ABE")
+
+d.step("volume-ABCD", sp.Eq(Vt, sp.Abs(triple_ABCD) / 6), "definition",
        note="volume of a tetrahedron: one sixth of the absolute triple product", result=Vt)
-d.step("mid-section-is-parallelogram", (mid["b"] - mid["a"], mid["c"] - mid["d"], (XB - XA) / 2), "geometry",
+d.step("mid-section-is-parallelogram", (ab, dc, AB_half), "geometry",
        note="the section through the midpoints of AC, BC, BD, AD has opposite sides equal to AB/2")
-d.step("mid-section-area", sp.Eq(Pt, sp.sqrt(((mid["b"] - mid["a"]).cross(mid["d"] - mid["a"])).dot(
-    (mid["b"] - mid["a"]).cross(mid["d"] - mid["a"])))), "definition",
+d.step("mid-section-area", sp.Eq(Pt, sp.sqrt(w.dot(w))), "definition",
        note="area of the parallelogram abcd", result=Pt)
 d.step("mid-section-area-in-edges", (Pt, sp.sqrt(n.dot(n)) / 4), "geometry", uses=("mid-section-area",))
 d.step("edge-distance", sp.Eq(dist, sp.Abs((XC - XA).dot(n)) / sp.sqrt(n.dot(n))), "definition",
        note="shortest distance of the lines AB and CD: projection of AC on their common normal",
        result=dist)
-d.step("triangle-ABE", sp.Eq(Tri, sp.sqrt(((XB - XA).cross(XE - XA)).dot((XB - XA).cross(XE - XA))) / 2),
+d.step("triangle-ABE", sp.Eq(Tri, sp.sqrt(u.dot(u)) / 2),
        "definition", note="E = B + (D - C): BE drawn parallel to CD", result=Tri)
-d.step("parallelogram-half-triangle", (Pt, Tri / 2), "geometry", uses=("mid-section-area", "triangle-ABE"))
-d.step("volume-ABCE", sp.Eq(Ve, sp.Abs((XB - XA).dot((XC - XA).cross(XE - XA))) / 6), "definition", result=Ve)
+d.step("parallelogram-half-triangle", (Pt, Tri / 2), "geometry", uses=("mid-section-area", "triangle-ABE"),
+       note="the mid-section parallelogram abcd is half as large as the triangle ABE")
+d.step("volume-ABCE", sp.Eq(Ve, sp.Abs(triple_ABCE) / 6), "definition", result=Ve,
+       note="the second tetrahedron ABCE, with E in place of D")
 d.step("equal-tetrahedra", (Vt, Ve), "geometry", uses=("volume-ABCD", "volume-ABCE"),
        note="D and E lie on a parallel to the base ABC")
 d.step("lemma", (Vt, sp.Rational(1, 3) * (2 * Pt) * dist), "algebra",
-       uses=("equal-tetrahedra", "parallelogram-half-triangle", "edge-distance"))
+       uses=("equal-tetrahedra", "parallelogram-half-triangle", "edge-distance"),
+       note="the lemma: ABCD has the volume of ABCE, whose base ABE is twice the mid-section abcd and whose "
+            "height is the distance d of the edges AB and CD; so V = (1/3) (2P) d")
 
 # ---- the decomposition --------------------------------------------------------
 d.step("pyramid-over-g", sp.Eq(V1, sp.Integral(g * (z / h) ** 2, (z, 0, h))), "definition",
@@ -67,18 +99,22 @@ d.step("pyramid-over-g-value", (V1, g * h / 3), "integration", uses=("pyramid-ov
 d.step("pyramids-over-G", sp.Eq(V2, sp.Integral(G * (1 - z / h) ** 2, (z, 0, h))), "definition",
        note="the triangles of G with apices on g: together base G, height h", result=V2)
 d.step("pyramids-over-G-value", (V2, G * h / 3), "integration", uses=("pyramids-over-G",))
-d.step("mid-sections", (g * (sp.Rational(1, 2)) ** 2, g / 4), "algebra",
+d.step("mid-sections", (g * sp.UnevaluatedExpr(sp.Rational(1, 2)) ** 2, g / 4), "algebra",
        note="the mid-section of the pyramid over g is g scaled by 1/2; likewise G/4")
 d.step("parallelograms", sp.Eq(P, D - g / 4 - G / 4), "definition", result=P,
        note="the mid-section D consists of the polygon klmn (g/4), the triangles (G/4) and the "
             "parallelograms of the tetrahedra: their sum P is what remains")
 d.step("tetrahedra", sp.Eq(V3, sp.Rational(1, 3) * 2 * P * h), "lemma", uses=("lemma", "parallelograms"),
        note="every tetrahedron has one edge in G and one in g, at distance h", result=V3)
-d.step("tetrahedra-in-D", (V3, h / 3 * (2 * D - (G + g) / 2)), "substitution", uses=("tetrahedra",))
+d.step("tetrahedra-in-D", (V3, sp.Mul(sp.Rational(1, 3), 2, D - g / 4 - G / 4, h, evaluate=False),
+                           h / 3 * (2 * D - (G + g) / 2)), "substitution", uses=("tetrahedra", "parallelograms"),
+       note="P = D - g/4 - G/4 inserted")
 d.step("volume", sp.Eq(I, V1 + V2 + V3), "definition", uses=("pyramid-over-g", "pyramids-over-G", "tetrahedra"),
        note="the prismatoid is the union of the three groups of bodies",
        result=I)
-d.step("volume-collected", (I, h / 3 * (g + G - G / 2 - g / 2 + 2 * D), h / 3 * ((G + g) / 2 + 2 * D)),
+collected_as_printed = h / 3 * sp.Add(g, G, -G / 2, -g / 2, 2 * D, evaluate=False)
+collected = as_printed(lambda: h / 3 * ((G + g) / 2 + 2 * D))
+d.step("volume-collected", (I, collected_as_printed, collected),
        "algebra", uses=("volume",))
 
 # ---- printed -------------------------------------------------------------------
@@ -102,7 +138,8 @@ d.quote("pyramids-over-G", "§1 prismatoid volume",
         reading=sp.Eq(V2, G * h / 3))
 d.quote("mid-section-g", "§1 prismatoid volume",
         r"dessen Inhalt, weil auf der halben Höhe der Pyramide  $ABCO$ ,  $= \frac{g}{4}$",
-        reading=(g * sp.Rational(1, 2) ** 2, g / 4))
+        reading=(g * sp.UnevaluatedExpr(sp.Rational(1, 2)) ** 2, g / 4),
+        note="read with the reason the print gives: the mid-section is g scaled by (1/2)^2")
 
 MINUS_AS_EQUALS = ("The scan read the minus sign (a long dash in the print) as '='. The same term is quoted "
                    "correctly in §3 ('für deren Inhalt wir zusammen fanden h/3{2D - (G+g)/2}'), so the "
@@ -142,7 +179,7 @@ d.quote("volume-collected", "§1 prismatoid volume",
                         corrected_reading=sp.Eq(I, h / 3 * (g + G - G / 2 - g / 2 + 2 * D))))
 d.quote("prismatoid-volume", "§1 prismatoid volume",
         r"$$I = \frac{h}{3} \left\{ \frac{G+g}{2} + 2D \right\}, \text{ welches die oben erwähnte}$$",
-        reading=sp.Eq(I, h / 3 * ((G + g) / 2 + 2 * D)))
+        reading=sp.Eq(I, collected))
 
 # ---- witnesses -----------------------------------------------------------------
 

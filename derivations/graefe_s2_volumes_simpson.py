@@ -70,44 +70,47 @@ d.step("cubic-sections", (sp.Integral(A3, (z, 0, h)), prismatoid(A3.subs(z, 0), 
 
 # ---- the sphere -----------------------------------------------------------------------
 A_s = pi * (r ** 2 - (z - r) ** 2)        # section at height z above the lowest point: Pythagoras
-d.step("sphere-sections", (sp.Matrix([A_s.subs(z, 0), A_s.subs(z, 2 * r), A_s.subs(z, r)]),
+d.step("sphere-sections", (sp.Matrix([sp.Subs(A_s, z, 0), sp.Subs(A_s, z, 2 * r), sp.Subs(A_s, z, r)]),
                            sp.Matrix([0, 0, r ** 2 * pi])), "substitution",
        note="A(z) = π (r² - (z - r)²); G = A(0), g = A(2r), D = A(r)")
 d.step("sphere-volume", sp.Eq(I_s, prismatoid(0, 0, r ** 2 * pi, 2 * r)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected", "sphere-sections", "cubic-sections"), result=I_s)
 d.step("sphere-volume-integral", (I_s, sp.Integral(A_s, (z, 0, 2 * r))), "integration", uses=("sphere-volume",),
        note="the same volume by direct integration of the section areas")
-d.step("sphere-volume-value", (I_s, 2 * r / 3 * 2 * r ** 2 * pi, 4 * r ** 3 * pi / 3), "algebra",
+with sp.evaluate(False):   # the print's arithmetic, kept for the engine to carry out
+    sphere_printed = 2 * r / 3 * (2 * r ** 2 * pi)
+    paraboloid_printed = x / 3 * (p * x * pi + 2 * p * x * pi)
+d.step("sphere-volume-value", (I_s, sphere_printed, 4 * r ** 3 * pi / 3), "algebra",
        uses=("sphere-volume",))
 
 d.quote("sphere-sections", "§2 sphere", r"$G$  und  $g$  Null setzen,  $h = 2r$ ,  $D = r^2\pi$",
-        reading=(sp.Matrix([A_s.subs(z, 0), A_s.subs(z, 2 * r), A_s.subs(z, r)]), sp.Matrix([0, 0, r ** 2 * pi])))
+        reading=(sp.Matrix([sp.Subs(A_s, z, 0), sp.Subs(A_s, z, 2 * r), sp.Subs(A_s, z, r)]), sp.Matrix([0, 0, r ** 2 * pi])))
 d.quote("sphere-volume", "§2 sphere", r"$$I = \frac{2r}{3} \times 2r^2\pi = \frac{4r^3\pi}{3}.$$",
-        reading=(I_s, 2 * r / 3 * 2 * r ** 2 * pi, 4 * r ** 3 * pi / 3))
+        reading=(I_s, sphere_printed, 4 * r ** 3 * pi / 3))
 
 # ---- the paraboloid -----------------------------------------------------------------------
 # y² = 2 p t at distance t from the vertex; the base G (radius y) lies at t = x, i.e. z = 0
 A_p = pi * 2 * p * (x - z)
-d.step("paraboloid-sections", (sp.Matrix([A_p.subs(z, 0), A_p.subs(z, x), A_p.subs(z, x / 2)]),
+d.step("paraboloid-sections", (sp.Matrix([sp.Subs(A_p, z, 0), sp.Subs(A_p, z, x), sp.Subs(A_p, z, x / 2)]),
                                sp.Matrix([2 * p * x * pi, 0, p * x * pi])), "substitution",
        note="vertex equation y² = 2pt, t = x - z: G = 2pxπ, g = 0 (the vertex), D = pxπ (y'² = px)")
 d.step("paraboloid-volume", sp.Eq(I_p, prismatoid(2 * p * x * pi, 0, p * x * pi, x)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected", "paraboloid-sections", "cubic-sections"), result=I_p)
 d.step("paraboloid-volume-integral", (I_p, sp.Integral(A_p, (z, 0, x))), "integration", uses=("paraboloid-volume",))
-d.step("paraboloid-volume-value", (I_p, x / 3 * (p * x * pi + 2 * p * x * pi), p * x ** 2 * pi), "algebra",
+d.step("paraboloid-volume-value", (I_p, paraboloid_printed, p * x ** 2 * pi), "algebra",
        uses=("paraboloid-volume",))
 
-d.quote("paraboloid-base-radius", "§2 paraboloid", r"$y^2 = 2px$", reading=(A_p.subs(z, 0) / pi, 2 * p * x))
-d.quote("paraboloid-mid-radius", "§2 paraboloid", r"$y'^2 = px$", reading=(A_p.subs(z, x / 2) / pi, p * x))
+d.quote("paraboloid-base-radius", "§2 paraboloid", r"$y^2 = 2px$", reading=(sp.Subs(A_p, z, 0) / pi, 2 * p * x))
+d.quote("paraboloid-mid-radius", "§2 paraboloid", r"$y'^2 = px$", reading=(sp.Subs(A_p, z, x / 2) / pi, p * x))
 d.quote("paraboloid-volume", "§2 paraboloid",
         r"$$I = \frac{x}{3} \left\{ px\pi + 2px\pi \right\} = px^2\pi.$$",
-        reading=(I_p, x / 3 * (p * x * pi + 2 * p * x * pi), p * x ** 2 * pi))
+        reading=(I_p, paraboloid_printed, p * x ** 2 * pi))
 
 # ---- the ellipsoid ---------------------------------------------------------------------------
 d.step("ellipse-vertex-equation", (b ** 2 * (1 - (t - a) ** 2 / a ** 2), b ** 2 / a ** 2 * (2 * a * t - t ** 2)),
        "geometry", note="the centre equation (t - a)²/a² + y²/b² = 1 with t measured from the vertex")
 A_e = pi * b ** 2 / a ** 2 * (2 * a * (x - z) - (x - z) ** 2)   # base G at t = x (z = 0), vertex at z = x
-d.step("ellipsoid-sections", (sp.Matrix([A_e.subs(z, 0), A_e.subs(z, x), A_e.subs(z, x / 2)]),
+d.step("ellipsoid-sections", (sp.Matrix([sp.Subs(A_e, z, 0), sp.Subs(A_e, z, x), sp.Subs(A_e, z, x / 2)]),
                               sp.Matrix([pi * b ** 2 / a ** 2 * (2 * a * x - x ** 2), 0,
                                          pi * b ** 2 / a ** 2 * (a * x - x ** 2 / 4)])), "substitution",
        uses=("ellipse-vertex-equation",))
@@ -115,20 +118,21 @@ d.step("ellipsoid-volume", sp.Eq(I_e, prismatoid(pi * b ** 2 / a ** 2 * (2 * a *
                                                  pi * b ** 2 / a ** 2 * (a * x - x ** 2 / 4), x)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected", "ellipsoid-sections", "cubic-sections"), result=I_e)
 d.step("ellipsoid-volume-integral", (I_e, sp.Integral(A_e, (z, 0, x))), "integration", uses=("ellipsoid-volume",))
-ell_1 = x / 3 * b ** 2 * pi / a ** 2 * ((2 * a * x - x ** 2) / 2 + 2 * a * x - x ** 2 / 2)
-ell_2 = x / 3 * b ** 2 * pi / a ** 2 * ((2 * a * x - x ** 2 + 4 * a * x - x ** 2) / 2)
-ell_3 = x / 3 * b ** 2 * pi / a ** 2 * (3 * a * x - x ** 2)
-ell_4 = b ** 2 * pi * x ** 2 / (3 * a ** 2) * (3 * a - x)
+with sp.evaluate(False):   # the printed forms, as printed
+    ell_1 = x / 3 * (b ** 2 * pi / a ** 2) * ((2 * a * x - x ** 2) / 2 + 2 * a * x - x ** 2 / 2)
+    ell_2 = x / 3 * (b ** 2 * pi / a ** 2) * ((2 * a * x - x ** 2 + 4 * a * x - x ** 2) / 2)
+    ell_3 = x / 3 * (b ** 2 * pi / a ** 2) * (3 * a * x - x ** 2)
+    ell_4 = b ** 2 * pi * x ** 2 / (3 * a ** 2) * (3 * a - x)
 d.step("ellipsoid-volume-value", (I_e, ell_1, ell_2, ell_3, ell_4), "algebra", uses=("ellipsoid-volume",))
 d.step("half-ellipsoid", sp.Eq(I_h, sp.Integral(pi * b ** 2 / a ** 2 * (2 * a * t - t ** 2), (t, 0, a))),
        "definition", note="half the ellipsoid: the segment of height a, from the vertex to the centre",
        result=I_h)
-d.step("half-ellipsoid-value", (I_h, ell_4.subs(x, a), 2 * a * b ** 2 * pi / 3), "substitution",
+d.step("half-ellipsoid-value", (I_h, sp.Subs(ell_4, x, a), 2 * a * b ** 2 * pi / 3), "substitution",
        uses=("half-ellipsoid", "ellipsoid-volume-value"))
 
 d.quote("ellipsoid-radii", "§2 ellipsoid",
         r"$$y^2 = \frac{b^2}{a^2} \left\{ 2ax - x^2 \right\}, y'^2 = \frac{b^2}{a^2} \left\{ ax - \frac{x^2}{4} \right\},$$",
-        reading=(sp.Matrix([A_e.subs(z, 0) / pi, A_e.subs(z, x / 2) / pi]),
+        reading=(sp.Matrix([sp.Subs(A_e, z, 0) / pi, sp.Subs(A_e, z, x / 2) / pi]),
                  sp.Matrix([b ** 2 / a ** 2 * (2 * a * x - x ** 2), b ** 2 / a ** 2 * (a * x - x ** 2 / 4)])))
 d.quote("ellipsoid-volume-1", "§2 ellipsoid",
         r"$$I = \frac{x}{3} \frac{b^2 \pi}{a^2} \left\{ \frac{2ax - x^2}{2} + 2ax - \frac{x^2}{2} \right\}$$",
@@ -155,9 +159,10 @@ d.step("slab-e-g", sp.Eq(I3, prismatoid(e, g, f, 2 * m)), "lemma",
 d.step("slab-e-g-value", (I3, 2 * m / 3 * ((e + g) / 2 + 2 * f)), "algebra", uses=("slab-e-g",))
 d.step("sum", sp.Eq(I, I1 + I2 + I3), "definition", uses=("slab-a-c", "slab-c-e", "slab-e-g"), result=I,
        note="the whole body is the union of the three slabs")
-simp_1 = 2 * m / 3 * ((a + c) / 2 + 2 * b + (c + e) / 2 + 2 * dd + (e + g) / 2 + 2 * f)
-simp_2 = 2 * m / 3 * ((a + c + 4 * b + c + e + 4 * dd + e + g + 4 * f) / 2)
-simp_3 = m / 3 * (a + 4 * b + 2 * c + 4 * dd + 2 * e + 4 * f + g)
+with sp.evaluate(False):   # the three printed forms of the sum, as printed
+    simp_1 = 2 * m / 3 * ((a + c) / 2 + 2 * b + (c + e) / 2 + 2 * dd + (e + g) / 2 + 2 * f)
+    simp_2 = 2 * m / 3 * ((a + c + 4 * b + c + e + 4 * dd + e + g + 4 * f) / 2)
+    simp_3 = m / 3 * (a + 4 * b + 2 * c + 4 * dd + 2 * e + 4 * f + g)
 d.step("simpson-7", (I, simp_1, simp_2, simp_3), "algebra", uses=("sum",))
 
 

@@ -17,6 +17,7 @@ import mpmath
 
 from symfloat.engine.witness import Case, Computed, HullSlices, HullWitness
 from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
+from symfloat.model.claim import as_printed
 
 G, g, D, h, z = sp.symbols("G g D h z", positive=True)
 al, be, ga = sp.symbols("alpha beta gamma", real=True)
@@ -58,6 +59,7 @@ DERIVATION = d = Derivation(
                  "G, g, D, h > 0 and D > G/4 + g/4, as for every convex prismatoid"),
 )
 
+
 # ---- the tetrahedron lemma, Graefe's construction in coordinates -------------
 c = (PD + PB) / 2                       # c: midpoint of DB
 F = c + (PC - c) / 3                    # cF = Cc/3
@@ -65,8 +67,8 @@ Gp = c + (PA - c) / 3                   # cG = Ac/3 (G is a point here, not the 
 o = meet(PC, Gp, PA, F)                 # intersection of the lines CG and AF
 a = meet(c, o, PA, PC)                  # co extended meets AC in a
 
-d.step("F-centroid-BCD", (F, (PB + PC + PD) / 3), "geometry", note="F divides the median Cc at 1/3 from c")
-d.step("G-centroid-ABD", (Gp, (PA + PB + PD) / 3), "geometry")
+d.step("F-centroid-BCD", (F, as_printed(lambda: (PB + PC + PD) / 3)), "geometry", note="F divides the median Cc at 1/3 from c")
+d.step("G-centroid-ABD", (Gp, as_printed(lambda: (PA + PB + PD) / 3)), "geometry")
 d.step("o-on-both-lines", (o, (PA + PB + PC + PD) / 4), "geometry",
        note="the lines CG and AF meet in the mean of the vertices")
 # From here on the positions just proved (o, then a and L) are used, as the
@@ -76,22 +78,22 @@ d.step("oF-quarter", (length(o_ - F), length(PA - F) / 4), "geometry", uses=("o-
 d.step("ratio-Coc-CoA", (area(PC, o_, c) / area(PC, o_, PA), length(Gp - c) / length(Gp - PA),
                          sp.Rational(1, 2)), "geometry")
 d.step("a-midpoint", (a, (PA + PC) / 2), "geometry", note="the line co meets AC in its midpoint")
-d.step("FG-parallel-AC", (Gp - F, (PA - PC) / 3), "geometry")
+d.step("FG-parallel-AC", (Gp - F, as_printed(lambda: (PA - PC) / 3)), "geometry")
 L = meet(a_, c, F, Gp)                  # ac meets FG in L (a as just proved)
 d.step("L-third-of-ac", (L, c + (a_ - c) / 3), "geometry", uses=("a-midpoint",),
        note="L divides ca as F divides cC")
-d.step("o-midpoint-ac", (o_, (a_ + c) / 2), "geometry", uses=("o-on-both-lines", "a-midpoint"))
-d.step("o-midpoint-bd", (o_, ((PA + PD) / 2 + (PB + PC) / 2) / 2), "geometry", uses=("o-on-both-lines",),
+d.step("o-midpoint-ac", (o_, as_printed(lambda: (a_ + c) / 2)), "geometry", uses=("o-on-both-lines", "a-midpoint"))
+d.step("o-midpoint-bd", (o_, as_printed(lambda: ((PA + PD) / 2 + (PB + PC) / 2) / 2)), "geometry", uses=("o-on-both-lines",),
        note="the same for the other pair of skew edges AD, BC")
 
 d.quote("lemma", "§3 tetrahedron centroid lemma",
         "Wenn man die Mittelpunkte zweier nicht in einer Ebene liegenden Kanten eines Tetraeders verbindet, "
         "so liegt der Schwerpunkt des Körpers in der Mitte der Verbindungslinie.",
-        reading=((PA + PB + PC + PD) / 4, ((PA + PC) / 2 + (PB + PD) / 2) / 2))
+        reading=(o_, as_printed(lambda: ((PA + PC) / 2 + (PB + PD) / 2) / 2)))
 d.quote("construction", "§3 tetrahedron centroid lemma",
         r"machen  $cF = \frac{C c}{3}$  und  $cG = \frac{A c}{3}$ , so sind  $F$  und  $G$  die Schwerpunkte "
         r"der Dreiecke  $BCD$  und  $ABD$",
-        reading=(sp.Matrix.vstack(F, Gp), sp.Matrix.vstack((PB + PC + PD) / 3, (PA + PB + PD) / 3)))
+        reading=(sp.Matrix.vstack(F, Gp), as_printed(lambda: sp.Matrix.vstack((PB + PC + PD) / 3, (PA + PB + PD) / 3))))
 d.quote("quarters", "§3 tetrahedron centroid lemma",
         r"Auch ist  $oF = \frac{AF}{4}$  und  $oG = \frac{CG}{4}$",
         reading=(sp.Matrix([length(o_ - F), length(o_ - Gp)]), sp.Matrix([length(PA - F) / 4, length(PC - Gp) / 4])))
@@ -109,7 +111,7 @@ d.quote("ratio-4", "§3 tetrahedron centroid lemma",
         reading=(area(c, o_, PA) / area(PC, o_, PA), length(c - F) / length(PC - F), sp.Rational(1, 2)))
 d.quote("a-midpoint", "§3 tetrahedron centroid lemma",
         r"$A a : 2 a C = 1 : 2$ , d. h.  $A a = a C$",
-        reading=(length(a_ - PA), length(PC - a_)))
+        reading=as_printed(lambda: (length(a_ - PA), length(PC - a_))))
 d.quote("oL-ratio", "§3 tetrahedron centroid lemma",
         r"$o L : a o = o F : o A = 1 : 3$ , daher  $o L = \frac{a o}{3} = \frac{a L}{4}$",
         reading=(length(L_ - o_) / length(o_ - a_), length(F - o_) / length(PA - o_), sp.Rational(1, 3)))
@@ -124,14 +126,14 @@ d.quote("CF", "§3 tetrahedron centroid lemma",
                         corrected_reading=(length(F - PC), 2 * length(c - PC) / 3)))
 d.quote("oL", "§3 tetrahedron centroid lemma",
         r"$o L = \frac{2 a c}{12} = \frac{a c}{6}$",
-        reading=(length(L_ - o_), 2 * length(c - a_) / 12, length(c - a_) / 6))
+        reading=(length(L_ - o_), *as_printed(lambda: (2 * length(c - a_) / 12, length(c - a_) / 6))))
 d.quote("oc", "§3 tetrahedron centroid lemma",
         r"$L c = \frac{a c}{3}$ , so ist  $o L + L c = o c = \frac{a c}{6} + \frac{a c}{3} = \frac{a c}{2}$",
         reading=(length(c - L_) + length(L_ - o_), length(c - o_), length(c - a_) / 2))
 d.quote("diagonals", "§3 tetrahedron centroid lemma",
         r"der Schwerpunkt des Tetraeders liegt mithin im Durchschnittspunkte der Diagonalen der mittleren "
         r"Durchschnittsfläche  $a b c d$",
-        reading=(o_, (a_ + c) / 2, ((PA + PD) / 2 + (PB + PC) / 2) / 2))
+        reading=(o_, *as_printed(lambda: ((a_ + c) / 2, ((PA + PD) / 2 + (PB + PC) / 2) / 2))))
 
 # ---- the prismatoid --------------------------------------------------------------
 d.step("pyramid-over-g", sp.Eq(V1, g * h / 3), "lemma", uses=("graefe-s1-prismatoid-volume:pyramid-over-g",),

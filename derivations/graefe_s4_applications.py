@@ -24,6 +24,7 @@ import sympy as sp
 
 from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, PlaneSections, SectionIntegral
+from symfloat.model.claim import as_printed
 
 u, t, xi, P, eta = sp.symbols("u t xi P eta", real=True)
 r, R, h, m, a, b, c, p, k, S, s = sp.symbols("r R h m a b c p k S s", positive=True)
@@ -65,9 +66,9 @@ def body(slug, key, area, height, G_val, D_val, g_val, note):
     A, G, D, g, X = sp.symbols(f"A_{{{key}}} G_{{{key}}} D_{{{key}}} g_{{{key}}} X_{{{key}}}")
     d.step(f"{slug}-section", sp.Eq(A, area), "definition", note=note, result=A)
     sec = (f"{slug}-section",)
-    d.step(f"{slug}-G", (G, area.subs(u, 0), G_val), "substitution", uses=sec, result=G)
-    d.step(f"{slug}-D", (D, area.subs(u, height / 2), D_val), "substitution", uses=sec, result=D)
-    d.step(f"{slug}-g", (g, area.subs(u, height), g_val), "substitution", uses=sec, result=g)
+    d.step(f"{slug}-G", (G, sp.Subs(area, u, 0), G_val), "substitution", uses=sec, result=G)
+    d.step(f"{slug}-D", (D, sp.Subs(area, u, height / 2), D_val), "substitution", uses=sec, result=D)
+    d.step(f"{slug}-g", (g, sp.Subs(area, u, height), g_val), "substitution", uses=sec, result=g)
     d.step(f"{slug}-centroid", sp.Eq(X, height * (g / 2 + D) / ((G + g) / 2 + 2 * D)), "lemma",
            uses=(f"{S3}:centroid", f"{S3}:centroid-quadratic-sections", f"{slug}-G", f"{slug}-D", f"{slug}-g"),
            note=QUADRATIC, result=X)
@@ -109,7 +110,7 @@ G_sp, D_sp, g_sp, X_sp = body("sphere", "sp", area_sp, h_sp, 0, pi * r ** 2, 0,
 d.quote("sphere-sections", "§4 sphere", r"Für die Kugel ist  $G$  und  $g = 0$ ,  $D = r^2\pi$ ,  $h = 2r$",
         reading=(sp.Matrix([G_sp, g_sp, D_sp, h_sp]), sp.Matrix([0, 0, r ** 2 * pi, 2 * r])))
 d.quote("sphere", "§4 sphere", r"$$X = 2r \frac{r^2\pi}{2r^2\pi} = r.$$",
-        reading=(X_sp, 2 * r * (r ** 2 * pi / (2 * r ** 2 * pi)), r))
+        reading=as_printed(lambda: (X_sp, 2 * r * (r ** 2 * pi / (2 * r ** 2 * pi)), r)))
 sections_witness("sphere", "centroid of the sphere from its circular sections", ("sphere",), area_sp, 2 * r,
                  ("r = 3", {r: 3}), ("r = 7/2", {r: sp.Rational(7, 2)}))
 
@@ -217,8 +218,8 @@ d.quote("hemisphere-sections", "§4 hemisphere",
 d.quote("hemisphere", "§4 hemisphere",
         r"$$X = r \left\{ \frac{\frac{3r^2\pi}{4}}{\frac{r^2\pi}{2} + \frac{3r^2\pi}{2}} \right\} = "
         r"\frac{r}{2} \cdot \frac{3}{4} = \frac{3r}{8} . -$$",
-        reading=(X_hs, r * ((3 * r ** 2 * pi / 4) / (r ** 2 * pi / 2 + 3 * r ** 2 * pi / 2)),
-                 r / 2 * sp.Rational(3, 4), 3 * r / 8))
+        reading=as_printed(lambda: (X_hs, r * ((3 * r ** 2 * pi / 4) / (r ** 2 * pi / 2 + 3 * r ** 2 * pi / 2)),
+                 r / 2 * sp.Rational(3, 4), 3 * r / 8)))
 sections_witness("hemisphere", "centroid of the hemisphere from its circular sections", ("hemisphere",),
                  area_hs, r, ("r = 2", {r: 2}), ("r = 5/3", {r: sp.Rational(5, 3)}))
 
@@ -319,7 +320,7 @@ d.quote("paraboloid-1-radii", "§4 paraboloid, one base",
         note="y, y' are the radii of G, D: y^2 = G/pi, y'^2 = D/pi")
 d.quote("paraboloid-1", "§4 paraboloid, one base",
         r"$$X = x \left\{ \frac{px}{px + 2px} \right\} = \frac{x}{3}.$$",
-        reading=(X_p1, x * (p * x / (p * x + 2 * p * x)), x / 3))
+        reading=as_printed(lambda: (X_p1, x * (p * x / (p * x + 2 * p * x)), x / 3)))
 sections_witness("paraboloid-1", "centroid of the paraboloid from its circular sections", ("paraboloid-1",),
                  area_p1, x, ("p = 1, x = 2", {p: 1, x: 2}),
                  ("p = 5/2, x = 3/2", {p: sp.Rational(5, 2), x: sp.Rational(3, 2)}))
@@ -338,8 +339,8 @@ d.step("paraboloid-2-reduced", (X_p2, (xv - xvp) / 3 * (2 * xvp + xv) / (xvp + x
        uses=("paraboloid-2-centroid",))
 d.quote("paraboloid-2-radii", "§4 paraboloid, two bases",
         r"$$y^2 = 2 p x, y'^2 = 2 p x', y''^2 = 2 p \left\{ \frac{x' + x}{2} \right\} = p \{ x' + x \}$$",
-        reading=(sp.Matrix([G_p2, g_p2, D_p2]) / pi, sp.Matrix([2 * p * xv, 2 * p * xvp, 2 * p * (xvp + xv) / 2]),
-                 sp.Matrix([2 * p * xv, 2 * p * xvp, p * (xvp + xv)])),
+        reading=as_printed(lambda: (sp.Matrix([G_p2, g_p2, D_p2]) / pi, sp.Matrix([2 * p * xv, 2 * p * xvp, 2 * p * (xvp + xv) / 2]),
+                 sp.Matrix([2 * p * xv, 2 * p * xvp, p * (xvp + xv)]))),
         note="y, y', y'' are the radii of G, g, D; x, x' of the print are x_v, x'_v here")
 d.quote("paraboloid-2-1", "§4 paraboloid, two bases",
         r"$$X = \{ x - x' \} \left\{ \frac{p x' + p \{ x' + x \}}{p \{ x + x' \} + 2 p \{ x + x' \}} \right\} "
@@ -520,7 +521,7 @@ d.quote("elliptic-body-sections", "§4 elliptic body, triangular sections",
         reading=(sp.Matrix([G_eb, D_eb, g_eb]), sp.Matrix([a * b * pi, a * b * pi / 2, 0])))
 d.quote("elliptic-body", "§4 elliptic body, triangular sections",
         r"$$X = h \left\{ \frac{\frac{a b \pi}{2}}{\frac{a b \pi}{2} + a b \pi} \right\} = \frac{h}{3}$$",
-        reading=(X_eb, h * ((a * b * pi / 2) / (a * b * pi / 2 + a * b * pi)), h / 3))
+        reading=as_printed(lambda: (X_eb, h * ((a * b * pi / 2) / (a * b * pi / 2 + a * b * pi)), h / 3)))
 d.quote("elliptic-body-triangles", "§4 elliptic body, triangular sections",
         r"Der Schwerpunct des Körpers liegt mithin in der Linie, welche alle jene Schwerpuncte verbindet, also "
         r"auf  $\frac{h}{3}$",
@@ -575,11 +576,11 @@ d.step("triaxial-stump-same-expression", (X_ts, X_te, sp.Subs(X_s2, r, a)), "alg
        note="the factor b c/a^2 (pi b^2/a^2, pi) of the section areas cancels")
 
 d.quote("triaxial-stump-mid", "§4 triaxial ellipsoid stump", r"$n p = \frac{x + x'}{2}$",
-        reading=(x + (xp - x) / 2, ts_mid), note="PQ lies halfway between AB (at x) and CD (at x')")
+        reading=as_printed(lambda: (x + (xp - x) / 2, ts_mid)), note="PQ lies halfway between AB (at x) and CD (at x')")
 d.quote("triaxial-stump-axes-G", "§4 triaxial ellipsoid stump",
         r"(m A)^2 &= \frac{c^2}{a^2} \{ a^2 - x^2 \}, (m G)^2 = \frac{b^2}{a^2} \{ a^2 - x^2 \}",
-        reading=(sp.Matrix(half_axes(x)).applyfunc(lambda e: e ** 2),
-                 sp.Matrix([c ** 2 / a ** 2 * (a ** 2 - x ** 2), b ** 2 / a ** 2 * (a ** 2 - x ** 2)])))
+        reading=as_printed(lambda: (sp.Matrix(half_axes(x)).applyfunc(lambda e: e ** 2),
+                 sp.Matrix([c ** 2 / a ** 2 * (a ** 2 - x ** 2), b ** 2 / a ** 2 * (a ** 2 - x ** 2)]))))
 d.quote("triaxial-stump-axes-D", "§4 triaxial ellipsoid stump",
         r"(A p)^2 &= \frac{c^2}{a^2} \left\{ a^2 - \frac{(x + x')^2}{4} \right\}, (p E)^2 = \frac{b^2}{a^2} "
         r"\left\{ a^2 - \frac{(x + x')^2}{4} \right\}",
@@ -590,15 +591,15 @@ d.quote("triaxial-stump-axes-D", "§4 triaxial ellipsoid stump",
              "slip of the label only (print or scan), the value is that of Q p and is right")
 d.quote("triaxial-stump-axes-g", "§4 triaxial ellipsoid stump",
         r"(o D)^2 &= \frac{c^2}{a^2} \{ a^2 - x'^2 \}, (o F)^2 = \frac{b^2}{a^2} \{ a^2 - x'^2 \}.",
-        reading=(sp.Matrix(half_axes(xp)).applyfunc(lambda e: e ** 2),
-                 sp.Matrix([c ** 2 / a ** 2 * (a ** 2 - xp ** 2), b ** 2 / a ** 2 * (a ** 2 - xp ** 2)])))
+        reading=as_printed(lambda: (sp.Matrix(half_axes(xp)).applyfunc(lambda e: e ** 2),
+                 sp.Matrix([c ** 2 / a ** 2 * (a ** 2 - xp ** 2), b ** 2 / a ** 2 * (a ** 2 - xp ** 2)]))))
 for name, sym, at, val, excerpt in (
         ("G", G_ts, x, a ** 2 - x ** 2, r"G &= A m. G m. \pi = \frac{b c}{a^2} \{ a^2 - x^2 \} \pi"),
         ("D", D_ts, ts_mid, a ** 2 - (x + xp) ** 2 / 4,
          r"D &= Q p. E p. \pi = \frac{b c}{a^2} \left\{ a^2 - \frac{(x + x')^2}{4} \right\} \pi"),
         ("g", g_ts, xp, a ** 2 - xp ** 2, r"g &= D o. F o. \pi = \frac{b c}{a^2} \{ a^2 - x'^2 \} \pi.")):
     d.quote(f"triaxial-stump-{name}", "§4 triaxial ellipsoid stump", excerpt,
-            reading=(sym, half_axes(at)[0] * half_axes(at)[1] * pi, b * c / a ** 2 * val * pi),
+            reading=as_printed(lambda: (sym, half_axes(at)[0] * half_axes(at)[1] * pi, b * c / a ** 2 * val * pi)),
             note="an ellipse's area is pi times the product of its half axes")
 d.quote("triaxial-stump-1", "§4 triaxial ellipsoid stump",
         r"$$X = \{x' - x\} \left\{ \frac{\frac{a^2 - x'^2}{2} + a^2 - \frac{(x + x')^2}{4}}{\frac{a^2 - x^2 + "
@@ -626,7 +627,7 @@ d.step("half-triaxial-from-stump", (X_ht, sp.Subs(X_ts, (x, xp), (0, a)), 3 * a 
        note="the stump with x = 0, x' = a is the half triaxial ellipsoid")
 d.quote("half-triaxial", "§4 half triaxial ellipsoid",
         r"$$X = \frac{a}{4} \left\{ \frac{6a^2 - 3a^2}{3a^2 - a^2} \right\} = \frac{3a}{8}.$$",
-        reading=(X_ht, a / 4 * ((6 * a ** 2 - 3 * a ** 2) / (3 * a ** 2 - a ** 2)), 3 * a / 8))
+        reading=as_printed(lambda: (X_ht, a / 4 * ((6 * a ** 2 - 3 * a ** 2) / (3 * a ** 2 - a ** 2)), 3 * a / 8)))
 d.quote("three-eighths", "§4 half triaxial ellipsoid",
         "Mithin liegen die Schwerpunkte einer Halbkugel, eines halben Rotations-Ellipsoids und eines halben "
         "dreiaxigen Ellipsoids von gleicher Höhe in demselben Punkte, nämlich auf drei Achtel ihrer Höhe von der "

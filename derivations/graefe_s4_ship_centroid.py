@@ -20,6 +20,7 @@ import sympy as sp
 
 from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, SectionIntegral
+from symfloat.model.claim import as_printed
 
 G, g, D, h, z = sp.symbols("G g D h z", positive=True)
 a, b, c, dd, e, f, m = sp.symbols("a b c d e f m", positive=True)
@@ -97,19 +98,21 @@ d.step("m3-value", (M3, m3_v), "algebra", uses=("m3",))
 # the whole body
 d.step("moment", sp.Eq(M, M1 + M2 + M3), "definition", uses=("m1", "m2", "m3"), result=M,
        note="the moment theorem: the moment of the whole is the sum of the moments of the parts")
-xv_1 = m ** 2 / 3 * (2 * c + 4 * b + 2 * c + 2 * e + 8 * dd + 2 * e + 4 * dd + 4 * e + 4 * g + 16 * f + 2 * g + 4 * f)
-xv_2 = m ** 2 / 3 * (4 * b + 4 * c + 12 * dd + 8 * e + 20 * f + 6 * g)
-NUM = a * 0 + 4 * b * 1 + 2 * c * 2 + 4 * dd * 3 + 2 * e * 4 + 4 * f * 5 + g * 6
-DEN = a + 4 * b + 2 * c + 4 * dd + 2 * e + 4 * f + g
-xv_3 = m ** 2 / 3 * NUM
+with sp.evaluate(False):   # the printed forms, as printed (the engine carries out their arithmetic)
+    xv_1 = m ** 2 / 3 * (2 * c + 4 * b + 2 * c + 2 * e + 8 * dd + 2 * e + 4 * dd + 4 * e + 4 * g + 16 * f + 2 * g
+                         + 4 * f)
+    xv_2 = m ** 2 / 3 * (4 * b + 4 * c + 12 * dd + 8 * e + 20 * f + 6 * g)
+    NUM = a * 0 + 4 * b * 1 + 2 * c * 2 + 4 * dd * 3 + 2 * e * 4 + 4 * f * 5 + g * 6
+    DEN = a + 4 * b + 2 * c + 4 * dd + 2 * e + 4 * f + g
+    xv_3 = m ** 2 / 3 * NUM
 d.step("moment-value", (M, xv_1, xv_2, xv_3), "algebra", uses=("moment", "m1-value", "m2-value", "m3-value"))
 d.step("volume", sp.Eq(V, v1 + v2 + v3), "definition", uses=("v1", "v2", "v3"), result=V)
 d.step("volume-simpson", (V, m / 3 * DEN), "lemma", uses=("volume", "graefe-s2-volumes-simpson:simpson-7"),
        note="Simpson's rule as derived in §2 (with the factor m/3)")
 d.step("centroid", sp.Eq(XS, M / V), "definition", uses=("moment", "volume"), result=XS)
-d.step("centroid-value", (XS, xv_3 / (m / 3 * DEN), m * (NUM / DEN)), "algebra",
+d.step("centroid-value", (XS, as_printed(lambda: xv_3 / (m / 3 * DEN)), m * (NUM / DEN)), "algebra",
        uses=("centroid", "moment-value", "volume-simpson"))
-d.step("centroid-equal-sections", ((m * NUM / DEN).xreplace({s: a for s in (b, c, dd, e, f, g)}), 3 * m),
+d.step("centroid-equal-sections", (sp.Subs(m * NUM / DEN, (b, c, dd, e, f, g), (a,) * 6), 3 * m),
        "algebra", uses=("centroid-value",),
        note="check of the rule: with all sections equal (a prism of length 6m) the centroid lies in the "
             "middle, 3m from ABC")

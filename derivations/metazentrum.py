@@ -88,13 +88,19 @@ L3 = "Berechnung der Position des Metazentrums"
 L4 = "Analyse der Stabilitätsbedingung für das Parallelepiped"
 dv.quote("z_G", L1, "$ z_G = c - d $", reading=(z_G, c - d))
 dv.quote("section", L2, "$2b d$", reading=(A_q, 2 * b * d))
-dv.quote("triangles", L2, r"$b^2\phi$", reading=(sp.Subs(sp.Derivative(A_t, phi), phi, 0), b ** 2),
-         note="read to first order in phi, as the lesson does throughout (tg phi = phi): the coefficient of phi")
+def first_order(q):
+    """The term linear in phi of a quantity that vanishes upright: q'(0) phi (the lesson writes phi for tg phi)."""
+    return sp.Subs(sp.Derivative(q, phi), phi, 0) * phi
+
+
+dv.quote("triangles", L2, r"$b^2\phi$", reading=(first_order(A_t), b ** 2 * phi),
+         note="read to first order in phi, as the lesson does throughout (tg phi = phi)")
 dv.quote("triangle-arm", L2, r"$\displaystyle\frac{2b}{3}$", reading=(x_t, 2 * b / 3))
 dv.quote("shift", L2,
          r"$\displaystyle\frac{\displaystyle\frac{2b}{3} b^2\phi}{2bd}=\displaystyle\frac{b^2\phi}{3d}$",
-         reading=(sp.Subs(sp.Derivative(shift, phi), phi, 0), (2 * b / 3) * b ** 2 / (2 * b * d), b ** 2 / (3 * d)),
-         note="read to first order: the coefficient of phi")
+         reading=(first_order(shift), sp.Mul(2 * b / 3, b ** 2 * phi, sp.Pow(2 * b * d, -1, evaluate=False),
+                                             evaluate=False), b ** 2 * phi / (3 * d)),
+         note="read to first order in phi, as the lesson does (tg phi = phi)")
 dv.quote("radius", L3, r"$\displaystyle\frac{b^2}{3d}$", reading=(BM, b ** 2 / (3 * d)))
 dv.quote("z_M", L3, r"$ z_M = -\displaystyle\frac{ d }{2} + \displaystyle\frac{ b ^2}{ 3 d }$",
          reading=(z_M, -d / 2 + b ** 2 / (3 * d)))
@@ -123,7 +129,7 @@ dv.quote("vasa", L4, "Eine Lösung wäre gewesen, es tiefer zu versenken oder ei
          "um die Zone der Instabilität zu vermeiden.",
          reading=(sp.sign(sp.Derivative(e, d)), 1),
          erratum=Erratum("claim", "medium", r"deeper immersion raises e only when d/(2c) > 1/2: "
-                         r"\partial e/\partial d = (d - c)/(2 c^2)",
+                         r"$\partial e/\partial d = (d - c)/(2 c^2)$",
                          "Within the lesson's model (homogeneous box, centre of mass at its centre) "
                          "e = b^2/(6c^2) - delta (1 - delta), delta = d/(2c), is smallest at delta = 1/2: a hull "
                          "floating less than half immersed becomes LESS stable when it is sunk deeper (e.g. b = c/2, "

@@ -37,6 +37,8 @@ import sympy as sp
 from symfloat import Derivation, Erratum
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.geometry.floating import clip_below, draught, floating_state, right_prism, volume_centroid
+from symfloat.model.claim import as_printed
+
 
 phi = sp.Symbol("varphi", positive=True)
 V1, V3, V4 = sp.symbols("V_1 V_3 V_4", positive=True)
@@ -113,11 +115,11 @@ rhs7 = sp.Matrix([V3 * e * sp.cos(phi) + V3 * k * sp.sin(phi) - V1 * e1 * sp.sin
 d.step("moments-7", (sp.Matrix([V1 * m, V1 * n]), rhs7), "substitution", uses=("rotation-5", "moments-6"))
 # the couple: buoyancy V1 upwards (-Y) at S2, weight V1 downwards at S; its moment about S in the sense
 # that turns X into Y (the sense of the heel) is X F_Y - Y F_X; restoring is the opposite sense
-torque = m * (-V1) - n * 0
+torque = as_printed(lambda: m * (-V1) - n * 0)
 d.step("couple", (-torque, V1 * m), "algebra", uses=("m-def",),
        note="the moment of the couple against the heel is V1 m: positive m turns the body back")
 
-d.quote("stability-2", "(2)", r"$$V_1 m > 0. \quad (2)$$", reading=(sp.sign(-torque), sp.sign(V1 * m)),
+d.quote("stability-2", "(2)", r"$$V_1 m > 0. \quad (2)$$", reading=as_printed(lambda: (sp.sign(-torque), sp.sign(V1 * m))),
         note="read as: the couple restores (its moment against the heel is positive) exactly when V1 m > 0")
 d.quote("rotation-5", "(5)",
         r"$$\begin{aligned} m &= v \cos \varphi - u \sin \varphi \\ n &= v \sin \varphi + u \cos \varphi "

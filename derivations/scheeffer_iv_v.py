@@ -39,6 +39,8 @@ from symfloat import Derivation, Erratum, Prediction
 from symfloat.engine.witness import Case, Computed
 from symfloat.model.prediction import box_uprights
 from symfloat.geometry.floating import floating_state, right_prism, submerged
+from symfloat.model.claim import as_printed
+
 
 # ---- symbols -------------------------------------------------------------------------------------------------
 F1, T1, T11, b, s = sp.symbols("F_1 T_1 T_1^1 b s", positive=True)
@@ -97,14 +99,15 @@ DERIVATION = d = Derivation(
 
 def area_integral(expr, a, c, moments):
     """int_Omega expr df for a polynomial expr in the coordinates a, c, termwise: moments maps the exponent
-    pairs (i, j) of a^i c^j to the area moments (linearity of the integral)."""
+    pairs (i, j) of a^i c^j to the area moments (linearity of the integral).  The sum of coefficient times
+    moment is left unevaluated, so that a step equating it to a closed form is checked by the engine."""
     poly = sp.Poly(sp.expand(expr), a, c)
-    total = sp.Integer(0)
+    terms = []
     for (i, j), coeff in poly.terms():
         if (i, j) not in moments:
             raise ValueError(f"no area moment for {a}^{i} {c}^{j}")
-        total += coeff * moments[(i, j)]
-    return total
+        terms.append(sp.Mul(coeff, moments[(i, j)], evaluate=False))
+    return sp.Add(*terms, evaluate=False) if len(terms) > 1 else terms[0] if terms else sp.Integer(0)
 
 
 MOM_I = {(0, 0): F1, (1, 0): 0, (0, 1): 0, (2, 0): T1, (0, 2): T11, (1, 1): P}
@@ -178,7 +181,7 @@ d.step("factor-Q", sp.Eq(Q, (1 + tph ** 2 / 2) * T1 - V1 * e1), "definition", re
        note="the factor of sin phi in (12)")
 d.step("Q-increasing", (sp.Derivative(Q, phi), T1 * tph * (1 + tph ** 2)), "algebra", uses=("factor-Q",),
        note="positive for 0 < phi < 90 deg: Q < 0 near the upright position grows to +oo, one zero")
-d.step("root-check", (Qx.subs(X, root), 0), "algebra",
+d.step("root-check", (sp.Subs(Qx, X, root), 0), "algebra",
        note=f"sp.solve gives the roots {roots} of Q = 0 in tan phi; the positive one is this")
 d.step("phi1", sp.Eq(phi1, sp.atan(root)), "definition", uses=("root-check", "Q-increasing"), result=phi1,
        note="the tilted position: the zero of the righting moment (12) for phi > 0, provided V_1 e_1 > T_1")
@@ -361,8 +364,8 @@ d.quote("37", "(37)", r"$$\begin{aligned} T &= \int_2 \zeta^2 df_2 = \cos^2 \mu 
                       r"\int_2 v_2^2 df_2 + \sin 2 \mu \int_2 u_2 v_2 \cdot df_2 \\ \text{oder } T &= T_2 \cdot "
                       r"\cos^2 \mu + T_2^1 \cdot \sin^2 \mu + \sin 2 \mu \int_2 u_2 v_2 \cdot df. \end{aligned} "
                       r"\quad (37)$$",
-        reading=(Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
-                 T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2),
+        reading=as_printed(lambda: (Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
+                 T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2)),
         note="the last integral is printed with df for df_2; it is the same integral over II (int_2)")
 d.quote("38-projection", "(38)", r"$$df = \frac{df_2}{\cos \varphi_1} \quad u = \frac{u_2}{\cos \varphi_1} \quad "
                                  r"v = \frac{v_2}{\cos \varphi_1}$$",
@@ -434,8 +437,8 @@ d.quote("second-condition", "(45)",
         reading=(Iuv, (Tx - Ty) * sp.sin(om) * sp.cos(om) + J * (sp.cos(om) ** 2 - sp.sin(om) ** 2)),
         note="the left side is int_1 u v df; '= 0' is the condition (32)")
 d.quote("Tx-Ty", "(45)", r"$$\int_1 y^2 \cdot d f = T_x \cdot \quad \int_1 x^2 \cdot d f = T_y$$",
-        reading=(sp.Matrix([area_integral(y ** 2, x, y, MOM_XY), area_integral(x ** 2, x, y, MOM_XY)]),
-                 sp.Matrix([Tx, Ty])), note="names; the stray dot after T_x is the scan's")
+        reading=as_printed(lambda: (sp.Matrix([area_integral(y ** 2, x, y, MOM_XY), area_integral(x ** 2, x, y, MOM_XY)]),
+                 sp.Matrix([Tx, Ty]))), note="names; the stray dot after T_x is the scan's")
 d.quote("45", "(45)", r"$$\frac{1}{2} (T_x - T_y) \sin 2 \omega + \int_1 x y \cdot d f \cdot \cos 2 \omega = 0 "
                       r"\quad (45)$$", reading=(Iuv, (Tx - Ty) * sp.sin(2 * om) / 2 + J * sp.cos(2 * om)))
 d.quote("xy-zero", "V", r"$$\int_1 x y \cdot d f = 0$$", reading=(Jsym, 0))
@@ -454,8 +457,8 @@ d.quote("T1-expanded", "(48)", r"$$T_1 = \sin^2 \omega \int_1 y^2 d f + \cos^2 \
         reading=(T1w, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty + sp.sin(2 * om) * J))
 d.quote("T1-symmetric", "(48)", r"$$T_1 = T_x \cdot \sin^2 \omega + T_y \cdot \cos^2 \omega$$",
         reading=(T1s, Tx * sp.sin(om) ** 2 + Ty * sp.cos(om) ** 2))
-d.quote("48", "(48)", r"$$T_1 = T_x = T_y \quad (48)$$", reading=(T1iso, T0, T0),
-        note="T_x = T_y = T_0")
+d.quote("48", "(48)", r"$$T_1 = T_x = T_y \quad (48)$$", reading=(T1iso, T0),
+        note="T_x = T_y = T_0: the second equality is the case's hypothesis, so the reading is T_1 = T_0")
 d.quote("49", "(49)", "dass das Trägheitsmoment des Wasserschnitts I oder der Grundfläche des Prismas für alle "
                       "durch den Schwerpunkt gehenden Achsen denselben Wert hat, sobald die Trägheitsmomente für die "
                       "Symmetrieachse und für die darauf senkrechte Achse einander gleich sind. (49)",
@@ -539,9 +542,9 @@ d.quote("55", "(55)", r"$$\operatorname{tg} \varphi_1 \leq \begin{cases} \frac{b
         note="read as the bound on tan phi_1 (the end of the first rotation region); u_m of the upper base in the "
              "first line, of the lower base (u_m') in the second, as (53), (53a) define them",
         erratum=Erratum("claim", "high",
-                        r"\operatorname{tg}\varphi_1 \le \min\left(\frac{b(1-s)}{u_m}, \frac{b s}{u_m'}\right), "
-                        r"u_m, u_m' the farthest points of the base on the dipping and on the rising side of EF; "
-                        r"the case split by s is right only for u_m = u_m'",
+                        r"$\operatorname{tg}\varphi_1 \le \min\left(\frac{b(1-s)}{u_m}, \frac{b s}{u_m'}\right)$, "
+                        r"$u_m$, $u_m'$ the farthest points of the base on the dipping and on the rising side of EF; "
+                        r"the case split by s is right only for $u_m = u_m'$",
                         "Both bases must stay out of the water, so both bounds apply; which one is smaller depends on "
                         "s u_m versus (1-s) u_m', not on s alone. Counterexample (from the clipped geometry): "
                         "equilateral triangle of side 1, EF parallel to a side, apex dipping, b = 17/25, s = 2/5: (55) "
@@ -885,7 +888,6 @@ _w("top", "tan of the tilt where the clipped prism's upper base reaches the wate
 _w("bot", "tan of the tilt where the clipped prism's lower base reaches the water, reached first", ("53a",), "bot",
    ("tri-eq-apex-up", "square-lim", "rect-long"))
 _w("first", "tan of the first contact of either base (clipped prism)", ("55",), "first", LIM)
-
 
 
 # ---- predictions: the upright and the tilted positions of the first rotation region (IV, V) -------------------------

@@ -52,6 +52,8 @@ from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state
 from symfloat.model.prediction import Prediction
+from symfloat.model.claim import as_printed
+
 
 a, b, c, s = sp.symbols("a b c s", positive=True)
 phi, phi1, z, t, w = sp.symbols("varphi_2 varphi_1 z t w", positive=True)
@@ -128,7 +130,7 @@ d.step("perpendicular-margin", sp.Eq(Dp, T11 / sp.cos(phi1) - T1 / sp.cos(phi1))
        uses=("scheeffer-iv-v:D2-value",), result=Dp,
        note="at the oblique equilibrium the waterplane moment about the perpendicular axis less V_1 e_2 "
             "(section IV): its sign decides the stability across the rotation, (43a)")
-d.step("touch-top", ((b * (1 - s) * sp.cos(phi1) - a / 2 * sp.sin(phi1)).subs(phi1, sp.atan(2 * b * (1 - s) / a)), 0),
+d.step("touch-top", (sp.Subs(b * (1 - s) * sp.cos(phi1) - a / 2 * sp.sin(phi1), phi1, sp.atan(2 * b * (1 - s) / a)), 0),
        "geometry", note="the top edge at a/2 across the axis, b(1-s) above the plane through O, reaches the water")
 d.step("touch-limit", sp.Eq(tla, PW(2 * b * (1 - s) / a, 2 * b * s / a)), "definition", uses=("touch-top",),
        result=tla, note="tan of the tilt at which a base face reaches the water (bottom face for s < 1/2)")
@@ -199,7 +201,7 @@ d.quote("131", "(131)",
                                 (c / b) ** 2 - rho_s]), sp.zeros(4, 1)),
                  PWM(sp.Matrix([-12 * s / b * GMa, Q130, -12 * s / b * GMc, Q130c]), sp.zeros(4, 1))),
         note="for s > 1/2: upright unstable and the oblique tilt within the first region, for either axis")
-d.quote("131-mirror", "IX.A", r"$$2s(3-4s).$$", reading=(2 * s * (3 - 4 * s), rho_s.subs(s, 1 - s)),
+d.quote("131-mirror", "IX.A", r"$$2s(3-4s).$$", reading=as_printed(lambda: (2 * s * (3 - 4 * s), rho_s.subs(s, 1 - s))),
         note="1 - s for s in the lower bound (the bottom face reaches the water first for s < 1/2)")
 LOW = PW(rho_s, 2 * s * (3 - 4 * s))
 d.quote("132a", "(132a)", r"$$\text{wenn} \quad \left(\frac{a}{b}\right)^2 > 6s(1-s), \quad (132a)$$",
@@ -231,7 +233,7 @@ d.step("leg", sp.Eq(X, sp.sqrt(2 * a * b * sg * sp.tan(phi))), "definition", res
        note="x from x L/2 = sigma a b with L = x cot phi")
 d.step("leg-check", ((X * X / sp.tan(phi)) / 2, a * b * sg), "algebra", uses=("leg", "dry-area", "waterline-slope"))
 S3 = sum(tri, sp.zeros(2, 1)) / 3
-d.step("dry-centroid", (S3, sp.Matrix([a / 2 - Ll / 3, b / 2 - xl / 3])), "geometry",
+d.step("dry-centroid", (S3, as_printed(lambda: sp.Matrix([a / 2 - Ll / 3, b / 2 - xl / 3]))), "geometry",
        note="centroid of the dry triangle (mean of its vertices), body frame with S at the origin")
 S3phi = sp.Matrix([a / 2 - X / sp.tan(phi) / 3, b / 2 - X / 3])
 d.step("potential", sp.Eq(Ez, sg / (1 - sg) * u_up.dot(S3phi)), "definition", result=Ez,
@@ -258,7 +260,7 @@ d.step("F-quartic", (Fz, 3 * M3 * z ** 3 / (b * sp.sin(phi_z)), quartic), "algeb
 d.step("righting-sign", (sp.Subs(sp.Derivative(Ez, phi), phi, phi_z), sg / (1 - sg) * b * sp.sin(phi_z) * Fz / (3 * z ** 3)),
        "algebra", uses=("potential-derivative", "F-quartic"),
        note="z grows with phi_2: a root where F goes from - to + is a minimum of the potential (stable)")
-d.step("corner-C", ((2 * a * sg / z).subs(z, 2 * sg), a), "geometry",
+d.step("corner-C", (sp.Subs(2 * a * sg / z, z, 2 * sg), a), "geometry",
        note="L = a: the second top corner C reaches the water, the smallest tilt of the region")
 d.step("z-low", sp.Eq(Zlo, 2 * sg), "definition", uses=("corner-C",), result=Zlo)
 d.step("z-high", sp.Eq(Zhi, 1), "definition", result=Zhi, note="x = b: the bottom corner A reaches the water")
@@ -357,8 +359,8 @@ d.quote("139", "(139)", r"$$\text{oder } 3 \left(\sigma n - \frac{9}{32}\right) 
         reading=(3 * (sg * n - sp.Rational(9, 32)), F1_34))
 d.quote("140", "(140)",
         r"$$\text{also wenn } s \leq \frac{23}{32} \text{ ist.} \quad (140)$$",
-        reading=(sp.Rational(23, 32) - s, sg - sp.Rational(9, 32),
-                 sp.diff(quartic.subs(n, 1), z).subs(z, sp.Rational(3, 4)) / 3),
+        reading=as_printed(lambda: (sp.Rational(23, 32) - s, sg - sp.Rational(9, 32),
+                 sp.diff(quartic.subs(n, 1), z).subs(z, sp.Rational(3, 4)) / 3)),
         note="F'(3/4) at n = 1 over 3; F'(3/4) grows with n, so n >= 1 only helps")
 d.quote("140-steps", "IX.B", r"$$\text{oder } 1 - s - \frac{9}{32} \geq 0$$", reading=(1 - s - sp.Rational(9, 32), sg - sp.Rational(9, 32)))
 d.quote("141", "(141)",
@@ -413,7 +415,7 @@ d.quote("146", "(146)",
         r"&= 0 \end{aligned} \right\} \quad (146)$$",
         reading=(sp.Matrix([at_roots(quartic), at_roots(sp.diff(quartic, z))]), sp.zeros(4, 1)),
         note="at the two double roots of the locus (z_+, n_1), (z_-, n_2)")
-d.quote("147", "(147)", r"$$\frac{128\sigma - 9}{27} = t \quad (147)$$", reading=((128 * sig_t - 9) / 27, t),
+d.quote("147", "(147)", r"$$\frac{128\sigma - 9}{27} = t \quad (147)$$", reading=as_printed(lambda: ((128 * sig_t - 9) / 27, t)),
         note="sigma = 9(1 + 3t)/128 inverts it (150)")
 d.quote("148", "(148)",
         r"$$\left. \begin{aligned} \frac{16\sigma}{3}(nt - 1) \cdot z + 2\sigma n(1 - t^2) &= 0 \\ (1 - t^2)z + "
@@ -433,7 +435,7 @@ d.quote("n-sum", "IX.B",
         reading=(N1 + 1 / N1, ((128 * sg * (1 + t ** 2) - 9 * (1 - t ** 2) ** 2) / (128 * sg * t)).subs(sg, sig_t),
                  ((1 + t ** 2) / t - 9 * (1 - t ** 2) ** 2 / (128 * sg * t)).subs(sg, sig_t)))
 d.quote("150", "(150)", r"$$128 \sigma = 9 (1 + 3 t) \quad (150)$$",
-        reading=(128 * sg, 9 * (1 + 3 * (128 * sg - 9) / 27)), note="t from (147)")
+        reading=as_printed(lambda: (128 * sg, 9 * (1 + 3 * (128 * sg - 9) / 27))), note="t from (147)")
 S_print = 1 / t * (1 + t ** 2 - (1 - t ** 2) ** 2 / (1 + 3 * t))
 d.quote("n-sum-t", "IX.B",
         r"$$n + \frac{1}{n} = \frac{1}{t} \cdot \left\{ 1 + t^2 - \frac{(1 - t^2)^2}{1 + 3 t} \right\}$$",
@@ -487,7 +489,7 @@ d.quote("minimum", "IX.B", r"Dies ist aber die grössere der beiden Doppelwurzel
                             sp.Rational(3, 4) * sp.sqrt(1 - t) * (sp.sqrt(5 - t) + sp.sqrt(1 - t))])),
         note="sign identities: z_+ > z_-, and F'' = 3z(4z - 3) is positive at z_+ (minimum), negative at z_- (maximum)")
 d.quote("9-16", "IX.B", r"$2 \left(1 - \frac{23}{32}\right) = \frac{9}{16}$",
-        reading=(2 * (1 - sp.Rational(23, 32)), sp.Rational(9, 16)))
+        reading=as_printed(lambda: (2 * (1 - sp.Rational(23, 32)), sp.Rational(9, 16))))
 d.quote("159", "(159)",
         r"$$\text{oder (158) ob } \frac{3}{16} \left\{ 3 + t + \sqrt{(5-t)(1-t)} \right\} \leq 1 \quad (159)$$",
         reading=(1 - sp.Rational(3, 16) * (3 + t + rt), 4 * (1 + 3 * t) / (16 * (7 - 3 * t + 3 * rt))),
@@ -495,13 +497,13 @@ d.quote("159", "(159)",
 d.quote("160", "(160)", r"$$\text{oder } 3 \sqrt{(5-t)(1-t)} \leq 7 - 3t \quad (160)$$",
         reading=(7 - 3 * t - 3 * rt, 4 * (1 + 3 * t) / (7 - 3 * t + 3 * rt)))
 t_s = (128 * (1 - s) - 9) / 27
-d.quote("t-of-s", "IX.B", r"$$\text{Nach 147 ist } t = \frac{119 - 128s}{27},$$", reading=(t_s, (119 - 128 * s) / 27))
+d.quote("t-of-s", "IX.B", r"$$\text{Nach 147 ist } t = \frac{119 - 128s}{27},$$", reading=as_printed(lambda: (t_s, (119 - 128 * s) / 27)))
 d.quote("7-3t", "IX.B", r"$$7 - 3t = 7 - \frac{119 - 128s}{9} = \frac{128s - 56}{9}$$",
-        reading=(7 - 3 * t_s, 7 - (119 - 128 * s) / 9, (128 * s - 56) / 9))
-d.quote("7-3t-b", "IX.B", r"$$7 - 3t = \frac{8}{9} (16s - 7)$$", reading=(7 - 3 * t_s, sp.Rational(8, 9) * (16 * s - 7)))
+        reading=as_printed(lambda: (7 - 3 * t_s, 7 - (119 - 128 * s) / 9, (128 * s - 56) / 9)))
+d.quote("7-3t-b", "IX.B", r"$$7 - 3t = \frac{8}{9} (16s - 7)$$", reading=as_printed(lambda: (7 - 3 * t_s, sp.Rational(8, 9) * (16 * s - 7))))
 d.quote("160-squared", "IX.B", r"$$9(5-t)(1-t) \leq (7-3t)^2$$",
         reading=((7 - 3 * t) ** 2 - 9 * (5 - t) * (1 - t), 4 * (1 + 3 * t)))
-d.quote("1+3t", "IX.B", r"$$0 \leq 128(1-s)$$", reading=(1 + 3 * t_s, 128 * (1 - s) / 9),
+d.quote("1+3t", "IX.B", r"$$0 \leq 128(1-s)$$", reading=as_printed(lambda: (1 + 3 * t_s, 128 * (1 - s) / 9)),
         note="1 + 3t with t = (119 - 128 s)/27")
 d.quote("161", "(161)", r"Aus dem Vorstehenden ergibt sich für den Fall  $s > \frac{23}{32}$  folgendes Resultat: (161)",
         reading=(sp.Matrix([F2s, F1v]), sp.Matrix([2 * sg ** 2 * (n - rho), rho / 2 * (n - 1 / rho)])),

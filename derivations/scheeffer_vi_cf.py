@@ -36,6 +36,8 @@ from symfloat import Derivation, Erratum, Prediction
 from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state, right_prism
+from symfloat.model.claim import as_printed
+
 
 a, b, s, F = sp.symbols("a b s F", positive=True)
 phi, om, psi = sp.symbols("varphi omega psi", positive=True)
@@ -145,7 +147,8 @@ d.step("oblique-stable-in-phi", (sp.diff(sp.sin(phi) / V1 * (T1 * (1 + sp.tan(ph
        note="E'' = GZ' = T_1 tan^2 phi_1/(V_1 cos phi_1) > 0 at phi_1: stable against tilting; with the "
             "omega-independence the position is stable, neutral about the main axis ((43), (51))")
 corners = [(sx * a / 2, sy * a / 2) for sx in (-1, 1) for sy in (-1, 1)]
-d.step("corner-distance", (OB, sp.sqrt((a / 2) ** 2 + (a / 2) ** 2), sp.sqrt(2) * a / 2), "geometry", result=OB)
+d.step("corner-distance", (OB, as_printed(lambda: sp.sqrt((a / 2) ** 2 + (a / 2) ** 2)), sp.sqrt(2) * a / 2), "geometry",
+       result=OB)
 d.step("largest-ordinate", (um, sp.Max(*[xi.subs({x: cx, y: cy}) for cx, cy in corners]),
                             a / 2 * (sp.sin(om) + sp.cos(om)), OB * sp.sin(pi / 4 + om)), "geometry", result=um,
        note="u_m: the largest distance xi of a corner from the axis (the corner (-a/2, a/2) for 0 < omega < 45 deg); "
@@ -154,7 +157,7 @@ d.step("limit-tilt", sp.Eq(tanlim, sp.Min(b * (1 - s), b * s) / um), "definition
        note="the top corner at xi = u_m, z = b(1-s) above O has height b(1-s) cos phi - u_m sin phi over the "
             "water, the bottom corner at xi = -u_m, z = -b s has u_m sin phi - b s cos phi: the first domain "
             "ends at the smaller of b(1-s)/u_m, b s/u_m (the text's (53), (53a), (55))")
-d.step("limit-tilt-top", ((b * (1 - s) * sp.cos(phi) - um * sp.sin(phi)).subs(phi, sp.atan(b * (1 - s) / um)), 0),
+d.step("limit-tilt-top", (sp.Subs(b * (1 - s) * sp.cos(phi) - um * sp.sin(phi), phi, sp.atan(b * (1 - s) / um)), 0),
        "geometry", uses=("largest-ordinate",))
 d.step("limit-omega", sp.Eq(Sw, 2 * (sp.Min(b * (1 - s), b * s) / tan1) ** 2 / a ** 2), "definition", result=Sw,
        note="S_omega = sin^2(45 deg + omega*), omega* the axis direction at which the limit tilt equals phi_1: "
@@ -178,7 +181,7 @@ d.quote("u-m", "(74)", r"$$u_m = \frac{a}{2} \sqrt{2} \cdot \sin(45^\circ + \ome
 d.quote("V1", "VI.C", r"$V_1 = F_1 b \cdot s = a^2 b s$", reading=(V1, F1 * b * s, a ** 2 * b * s))
 d.quote("T1-over-V1", "VI.C",
         r"$\frac{T_1}{V_1} = \frac{\frac{1}{12} a^4}{a^2 b s} = \frac{a^2}{12 b s}$",
-        reading=(T1 / V1, (a ** 4 / 12) / (a ** 2 * b * s), a ** 2 / (12 * b * s)))
+        reading=as_printed(lambda: (T1 / V1, (a ** 4 / 12) / (a ** 2 * b * s), a ** 2 / (12 * b * s))))
 d.quote("e1", "VI.C", r"$e_1 = \frac{b}{2} (1 - s)$", reading=(e1, b / 2 * (1 - s)))
 d.quote("upright-condition", "VI.C", r"$\frac{a^2}{12 b s} - \frac{b}{2} (1 - s) > 0$",
         reading=(a ** 2 / (12 * b * s) - b / 2 * (1 - s), GM),
@@ -191,8 +194,8 @@ d.quote("75-unstable", "VI.C",
         reading=(6 * s * (1 - s) - (a / b) ** 2, -12 * s / b * GM))
 d.quote("Fb2-over-T1", "VI.C",
         r"$\frac{F_1 b^2 s (1 - s)}{T_1} = \frac{12 a^2 b^2 s (1 - s)}{a^4} = 12 \left(\frac{b}{a}\right)^2 s (1 - s)$",
-        reading=(F1 * b ** 2 * s * (1 - s) / T1, 12 * a ** 2 * b ** 2 * s * (1 - s) / a ** 4,
-                 12 * (b / a) ** 2 * s * (1 - s)))
+        reading=as_printed(lambda: (F1 * b ** 2 * s * (1 - s) / T1, 12 * a ** 2 * b ** 2 * s * (1 - s) / a ** 4,
+                 12 * (b / a) ** 2 * s * (1 - s))))
 d.quote("limit-top", "VI.C",
         r"$\frac{b (1 - s)}{u_m} = \frac{b}{a} \cdot \frac{(1 - s) \sqrt{2}}{\sin(45^\circ + \omega)}$",
         reading=(b * (1 - s) / um, b / a * (1 - s) * sp.sqrt(2) / sp.sin(pi / 4 + om)))
@@ -208,7 +211,7 @@ d.quote("76", "(76)",
         note="the second line read as its bound: the tilt at which a base face reaches the water; the direction "
              "of the inequality is checked in (77)")
 d.quote("sin-90", "VI.C", r"Für letzteren wird aber  $\sin(45^\circ + \omega) = 1$",
-        reading=(sp.sin(pi / 4 + pi / 4), 1),
+        reading=as_printed(lambda: (sp.sin(pi / 4 + pi / 4), 1)),
         note="u_m is largest, the limit tilt smallest, at omega = 45 deg (the axis along a diagonal)")
 d.quote("76-at-45", "VI.C",
         r"$$\begin{aligned} \text{tg}^2 \varphi_1 &= 12 \left(\frac{b}{a}\right)^2 s (1 - s) - 2 \\ \text{tg} "
@@ -418,7 +421,7 @@ d.quote("82", "(82)",
 d.quote("82-half", "VI.D", r"$$\sin^2 (45^\circ + \omega) = \frac{1}{2}$$",
         reading=(sp.Subs(Sw, (a, s), (b, half)), half))
 d.quote("82-half-omega", "VI.D", r"$$\text{woraus } \sin (45^\circ + \omega) = \frac{1}{2} \sqrt{2}$$",
-        reading=(sp.sqrt(sp.Subs(Sw, (a, s), (b, half))), sp.sqrt(2) / 2, sp.sin(pi / 4 + 0)),
+        reading=as_printed(lambda: (sp.sqrt(sp.Subs(Sw, (a, s), (b, half))), sp.sqrt(2) / 2, sp.sin(pi / 4 + 0))),
         note="hence omega = 0")
 d.quote("half-stable", "VI.D",
         r"D. h. ein Würfel vom spec. Gew.  $\frac{1}{2}$  kann aus der aufrechten labilen Lage nur durch Drehung um "
@@ -576,7 +579,7 @@ d.quote("circle-data", "VI.E",
                  sp.Matrix([pi * r ** 2, 0, 1])))
 d.quote("circle-T1", "VI.E",
         r"$$T_1 = \frac{1}{12} \cdot \pi r^4 \cdot 3 = \frac{\pi r^4}{4} = \frac{F_1^2}{4 \pi}$$",
-        reading=(sp.Limit(T1n, n, sp.oo), pi * r ** 4 * 3 / 12, pi * r ** 4 / 4, (pi * r ** 2) ** 2 / (4 * pi)),
+        reading=as_printed(lambda: (sp.Limit(T1n, n, sp.oo), pi * r ** 4 * 3 / 12, pi * r ** 4 / 4, (pi * r ** 2) ** 2 / (4 * pi))),
         note="the limit n -> infinity at fixed r; it agrees with T_1 = pi r^4/4 of section B")
 d.quote("88", "(88)", r"$$u_m = r \cdot \sin \left( \frac{n-2}{2n} \cdot \pi + \omega \right) \quad (88)$$",
         reading=(umn, r * sp.sin((n - 2) / (2 * n) * pi + om)))
@@ -585,7 +588,7 @@ d.quote("88", "(88)", r"$$u_m = r \cdot \sin \left( \frac{n-2}{2n} \cdot \pi + \
 npos = sp.Integral(2 * sp.sin(t_) * (t_ - sp.sin(t_)), (t_, 0, 2 * pi / n))
 d.step("area-radius", (r ** 2, 2 * F1n / (n * sp.sin(2 * pi / n))), "algebra", uses=("polygon-area",))
 d.step("moment-at-area", (T1F, (F * r ** 2 / 12 * (2 + sp.cos(2 * pi / n))).subs(r ** 2, 2 * F / (n * sp.sin(2 * pi / n))),
-                          F ** 2 / (12 * pi) * (2 * pi / n) / sp.sin(2 * pi / n) * (2 + sp.cos(2 * pi / n))),
+                          as_printed(lambda: F ** 2 / (12 * pi) * (2 * pi / n) / sp.sin(2 * pi / n) * (2 + sp.cos(2 * pi / n)))),
        "algebra", result=T1F, uses=("area-radius",),
        note="T_1 of the regular n-gon of area F (87 with r^2 from the area)")
 d.step("moment-derivative", (sp.Derivative(T1F, n), -F ** 2 / (12 * pi) * 2 * pi / n ** 2 * npos / sp.sin(2 * pi / n) ** 2),
@@ -601,7 +604,7 @@ d.quote("area", "VI.F", r"$F_1 = n \cdot \frac{r^2}{2} \sin \frac{2 \pi}{n}$",
         reading=(F1n, n * r ** 2 / 2 * sp.sin(2 * pi / n)))
 d.quote("radius", "VI.F",
         r"$$r^2 = \frac{2 F_1}{n \cdot \sin \frac{2 \pi}{n}} = \frac{F_1}{\pi} \frac{\frac{2 \pi}{n}}{\sin \frac{2 \pi}{n}}$$",
-        reading=(r ** 2, 2 * F1n / (n * sp.sin(2 * pi / n)), F1n / pi * (2 * pi / n) / sp.sin(2 * pi / n)))
+        reading=as_printed(lambda: (r ** 2, 2 * F1n / (n * sp.sin(2 * pi / n)), F1n / pi * (2 * pi / n) / sp.sin(2 * pi / n))))
 d.quote("89", "(89)",
         r"$$T_1 = \frac{F_1^2}{12 \pi} \cdot \frac{\frac{2 \pi}{n}}{\sin \frac{2 \pi}{n}} \cdot \left( 2 + \cos "
         r"\frac{2 \pi}{n} \right) \quad (89)$$",

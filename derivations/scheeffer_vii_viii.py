@@ -57,6 +57,8 @@ from symfloat.engine.roots import illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import floating_state, right_prism, submerged
 from symfloat.model.prediction import Prediction
+from symfloat.model.claim import as_printed
+
 
 R = sp.Rational
 b, s, F1, F, xs, T, Tp, f, xs1, tau = sp.symbols("b s F_1 F x_s T T^1 f x_s^1 tau", positive=True)
@@ -101,12 +103,11 @@ DERIVATION = d = Derivation(
 
 
 def termwise(expr, moments):
-    """int expr df for a polynomial in the plane coordinates, termwise from the area moments (linearity)."""
+    """int expr df for a polynomial in the plane coordinates, termwise from the area moments (linearity);
+    the sum of coefficient times moment is left unevaluated, for the engine to check against a closed form."""
     poly = sp.Poly(sp.expand(expr), x, y)
-    out = sp.Integer(0)
-    for (i, j), c in poly.terms():
-        out += c * moments[(i, j)]
-    return out
+    terms = [sp.Mul(c, moments[(i, j)], evaluate=False) for (i, j), c in poly.terms()]
+    return sp.Add(*terms, evaluate=False) if len(terms) > 1 else terms[0] if terms else sp.Integer(0)
 
 
 def res(expr):
@@ -287,13 +288,13 @@ d.quote("s-upper", "VII", "Es soll dabei das spec. Gew.  $s > \\frac{1}{2}$\n\nv
                         corrected_reading=(sst, um1 / (um + um1))))
 d.quote("95", "(95)", "„Das statische Moment des über dem Wasser befindlichen Körperteils für die durch  $S$  "
         "senkrecht zur Drehungsachse gelegte Vertikalebene (Ebene der Figur 17) ist Null.“ (95)",
-        reading=(My, V3 * sp.Matrix([0, 1, 0]).dot(MS3 / V3)), note="the moment itself; 'ist Null' is the condition")
+        reading=as_printed(lambda: (My, V3 * sp.Matrix([0, 1, 0]).dot(MS3 / V3))), note="the moment itself; 'ist Null' is the condition")
 d.quote("95-S3", "VII", r"Da nun  $S_2$  senkrecht unter  $S$  liegt, so muss auch  $S_3$  senkrecht über  $S$  liegen",
         reading=(sp.Matrix([M2h, M2y]), -sp.Matrix([M3, My])),
         note="read as V_1 (S_2 - S) = -V_3 (S_3 - S) in the two horizontal directions")
 d.quote("95-element", "VII", r"$z \cdot y \cdot df$ , oder da  $z = x \operatorname{tg} \varphi_2$  ist,  "
         r"$x y \cdot df \cdot \operatorname{tg} \varphi_2$",
-        reading=(sp.integrate(y, (z, -x * tg2, 0)), x * y * tg2), note="per unit df")
+        reading=(sp.Integral(y, (z, -x * tg2, 0)), x * y * tg2), note="per unit df")
 d.quote("95-moment", "VII", r"stat. Moment des ganzen Körperteils  $\int x y df \cdot \operatorname{tg} \varphi_2$",
         reading=(My, Pxy * tg2))
 d.quote("95a", "(95a)", r"$$\int x y \cdot df = 0 \quad (95a)$$", reading=(Pxy, My / tg2), note=EQN)
@@ -303,7 +304,7 @@ d.quote("96-split", "VII", r"$$\int_s (x_0 + x) y df = x_0 \cdot \int_s y df + \
         reading=(Pwh, x0 * 0 + PO), note="int_s y df = 0 (the next sentence)")
 d.quote("97", "(97)", r"$$\int x y df = \int_s x y df + \int_2 x y df = 0. \quad (97)$$", reading=(Pxy, PO + I2),
         note=EQN)
-d.quote("98", "(98)", r"$$\int x y df = \int_2 x y df = 0 \quad (98)$$", reading=(res(Pxy).subs(PO, 0), res(I2)),
+d.quote("98", "(98)", r"$$\int x y df = \int_2 x y df = 0 \quad (98)$$", reading=(sp.Subs(res(Pxy), PO, 0), res(I2)),
         note="regular prism: P_O = 0 (step regular-product); " + EQN)
 d.quote("95a-split", "VII", r"$$\int x y \cdot = \int_1 x y df - \int_2 x y df$$", reading=(Pxy, Pwh - Pw),
         note="int_2 over BGH still from N; the 'df' of the left side is lost in the transcription (harmless)")
@@ -348,7 +349,9 @@ d.quote("101", "(101)",
         r"\varphi_2 \cdot \int x^2 d f = \frac{1}{2} T \cdot \operatorname{tg}^2 \varphi_2 \\ V_3 x_3 &= \int z x \cdot "
         r"d f = \operatorname{tg} \varphi_2 \cdot \int x^2 d f = T \cdot \operatorname{tg} \varphi_2 \end{aligned} "
         r"\right\} \quad (101)$$",
-        reading=(sp.Matrix([Z3, X3]), sp.Matrix([termwise((x * tg2) ** 2 / 2, MF), termwise(x * tg2 * x, MF)]),
+        reading=(sp.Matrix([Z3, X3]),
+                 sp.Matrix([sp.Mul(sp.Rational(1, 2), tg2 ** 2, termwise(x ** 2, MF), evaluate=False),
+                            sp.Mul(tg2, termwise(x ** 2, MF), evaluate=False)]),
                  sp.Matrix([T * tg2 ** 2 / 2, T * tg2])),
         note="T: moment of F about GH (int x^2 df)")
 d.quote("102-pre", "VII", r"$$M_3 = T \sin \varphi_2 - V_3 x_0 \cos \varphi_2 - V_3 \frac{b}{2} \sin \varphi_2 + "
@@ -374,7 +377,7 @@ d.quote("s-below-half-95", "VII", "$$\\int x y \\, d f = 0$$\n\nwo nun die Integ
         note="for s < 1/2 the body of density 1 - s with -u up: its submerged part is the dry part here, so the "
              "integral is the same (witnessed on the turned clipped body); '= 0' imposed")
 d.quote("106-first", "VII", r"folglich auch  $\int_1",
-        reading=(res(J1).subs(Pw, PO), 0),
+        reading=(sp.Subs(res(J1), Pw, PO), 0),
         note="int_1 x y df = 0 at the first condition (the line break of the transcription splits the formula)")
 d.quote("104", "(104)", r"$$T_m - V_3 e_3 > 0 \quad (104)$$", reading=(Tm - V3 * e3, D),
         note="D = T_m - V_1 e_2 (Duhamel), V_1 e_2 = V_3 e_3 (step e2-e3); T_m the least moment at equilibrium")
@@ -481,7 +484,7 @@ d.step("ML", (-(x0 + x01) * tg3, -b), "geometry", uses=("x01",))
 col3 = lambda e: sp.integrate(e, (z, -x * tg3, 0))  # noqa: E731
 cut3 = lambda e: sp.expand(sp.integrate(e, (z, -x * tg3, -b)).subs(x, xp + b / tg3))  # noqa: E731  (below the lower base)
 Mf_x = lambda e: termwise(sp.expand(e).subs(xp, x), Mf)  # noqa: E731  (x' written as x for termwise)
-d.step("cut-column", (cut3(1), xp * tg3), "algebra", uses=("x01",),
+d.step("cut-column", (sp.Subs(sp.Integral(1, (z, -x * tg3, -b)), x, xp + b / tg3), xp * tg3), "algebra", uses=("x01",),
        note="over f the column x tan phi_3 overshoots the lower base by x' tan phi_3, x' = x - (x_0 + x_0^1)")
 d.step("dry-volume-3", (V3c, termwise(col3(1), MF) - Mf_x(cut3(1)), (F * xs - f * xs1) * tg3), "integration",
        result=V3c, note="the prism over F cut by the water plane, less the part below the lower base (over f)")
@@ -602,7 +605,6 @@ CONFIGS = {
     "box3-eq": (_box3(sp.Integer(1), R(5, 2), R(1, 2)), N0, _box_eq3(sp.Integer(1), R(5, 2), R(1, 2)), R(5, 2),
                 sp.Integer(1), 3),
 }
-
 
 
 @functools.lru_cache(maxsize=None)

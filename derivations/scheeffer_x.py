@@ -46,6 +46,8 @@ from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state, right_prism, submerged
 from symfloat.model.prediction import Prediction
+from symfloat.model.claim import as_printed
+
 
 a, om, rho, rho1, k, s, L = sp.symbols("a omega rho rho_1 k s L", positive=True)
 x, y, X, Y, Z, w, xl = sp.symbols("x y X Y Z w x_l", real=True)
@@ -97,8 +99,8 @@ e_ = sp.Matrix([co, -si])                      # along GH, from H towards G
 n_ = sp.Matrix([si, co])                       # across GH, towards B
 d.step("NH", (u_, -Hp.dot(e_), (rho - a / 2) * co + a / 2 * si), "geometry", result=u_,
        note="N = H + u e is the foot of the perpendicular from O (e.N = 0)")
-d.step("NG", (v_, Gp.dot(e_), a / 2 * co - (a / 2 - rho * tg) * si), "geometry", result=v_)
-d.step("height", (h_, n_.dot(Bp - Hp), rho * si), "geometry", result=h_, note="h = BP, the distance of B from GH")
+d.step("NG", (v_, as_printed(lambda: Gp.dot(e_)), a / 2 * co - (a / 2 - rho * tg) * si), "geometry", result=v_)
+d.step("height", (h_, as_printed(lambda: n_.dot(Bp - Hp)), rho * si), "geometry", result=h_, note="h = BP, the distance of B from GH")
 d.step("HPB", (IH, sp.Integral(x * y, (y, -u_ + x * ctg, -u_ + h_ * ctg), (x, 0, h_)),
                h_ ** 4 / 8 * ctg ** 2 - u_ * h_ ** 3 / 6 * ctg), "integration", result=IH,
        note="origin N: H = (0, -u), P = (0, -u + h cot w), B = (h, -u + h cot w); HB is y = -u + x cot w")
@@ -210,7 +212,7 @@ d.step("dry-volume", (V3, over_F(col), k * zq / r2), "integration", result=V3, u
 d.step("tilt", sp.Eq(kq, r2 * (1 - s) / zq), "definition", result=kq, uses=("dry-volume",),
        note="the tilt at which the dry volume is 1 - s")
 d.step("tilt-check", (over_F(col.subs(k, kq)), 1 - s), "integration", uses=("tilt", "dry-volume"))
-d.step("tilt-grows", (sp.diff(r2 * (1 - s) / (1 - xl + xl ** 3 / 6), xl),
+d.step("tilt-grows", (sp.Derivative(r2 * (1 - s) / (1 - xl + xl ** 3 / 6), xl),
                       r2 * (1 - s) * (1 - xl ** 2 / 2) / (1 - xl + xl ** 3 / 6) ** 2), "algebra",
        note="positive: at fixed s the leg x grows with the tilt")
 d.step("mirror", (over_F(Y * col), over_F(X * col)), "integration",
@@ -241,8 +243,9 @@ d.quote("171", "(171)",
         note="x of the text is x_l here; the equation read as left minus right side = (positive factor) x dE/dt")
 
 f_at = lambda xx, ss: F171(sp.Rational(1, 6) + (1 - xx) ** 2 - xx ** 4 / 12, 1 - xx + xx ** 3 / 6, xx, ss)  # noqa
-d.step("end-0", (F0, f_at(sp.Integer(0), s), (7 * (1 - s) ** 2 - 6 * (1 - s) + 1) / 6,
-                 7 * (s - (4 + r2) / 7) * (s - (4 - r2) / 7) / 6), "algebra", result=F0)
+d.step("end-0", (F0, f_at(sp.Integer(0), s), *as_printed(lambda: ((7 * (1 - s) ** 2 - 6 * (1 - s) + 1) / 6,
+                                                          7 * (s - (4 + r2) / 7) * (s - (4 - r2) / 7) / 6))),
+       "algebra", result=F0)
 d.step("end-1", (F1v, f_at(sp.Integer(1), s), (6 * (1 - s) - 1) ** 2 / 432), "algebra", result=F1v)
 d.step("172-root", sp.Eq(s172, (4 + r2) / 7), "definition", result=s172, uses=("end-0",),
        note="f(0, s) = 0 on s > 1/2: a root of (171) enters 0 < x through x = 0 (the corner B just touching)")
@@ -354,17 +357,18 @@ d.step("triangle-bound", sp.Eq(s56, 1 - Vt / a ** 3), "definition", result=s56,
 d.quote("tetra", "X", r"$$\frac{a^3}{6} = a^3 (1 - s)$$", reading=(Vt, a ** 3 * (1 - s56)))
 d.quote("five-sixths", "X", r"$$s = \frac{5}{6}$$", reading=(s56, sp.Rational(5, 6)))
 ut = sp.Matrix([1, 1, 1]) / sp.sqrt(3)
-d.step("tri-symmetric", (sp.Matrix([-L, L, 0]).cross(sp.Matrix([-L, 0, L])), L ** 2 * sp.sqrt(3) * ut), "geometry",
+d.step("tri-symmetric", (as_printed(lambda: sp.Matrix([-L, L, 0]).cross(sp.Matrix([-L, 0, L]))), L ** 2 * sp.sqrt(3) * ut),
+       "geometry",
        note="legs of equal length L on the three edges at the dry corner (170 on every face): the water plane is "
             "normal to the diagonal (1, 1, 1)")
 d.quote("tri-symmetric", "X",
         "so muss der dreieckige Wasserschnitt eine symmetrische Lage (senkrecht zu einer Würfeldiagonale) haben",
-        reading=(sp.Matrix([-L, L, 0]).cross(sp.Matrix([-L, 0, L])).cross(ut), sp.zeros(3, 1)))
+        reading=as_printed(lambda: (sp.Matrix([-L, L, 0]).cross(sp.Matrix([-L, 0, L])).cross(ut), sp.zeros(3, 1))))
 cT = r2 * L
 d.step("tri-inertia", (It, sp.Integral((Y - sp.sqrt(3) * cT / 6) ** 2, (X, Y / sp.sqrt(3), cT - Y / sp.sqrt(3)),
                                        (Y, 0, sp.sqrt(3) * cT / 2)), sp.sqrt(3) * L ** 4 / 24), "integration",
        result=It, note="equilateral triangle of side sqrt 2 L about a central axis (isotropic)")
-d.step("tri-dry-centroid", (uD, ut.dot(sp.Matrix([half, half, half]) - L / 4 * sp.Matrix([1, 1, 1])),
+d.step("tri-dry-centroid", (uD, as_printed(lambda: ut.dot(sp.Matrix([half, half, half]) - L / 4 * sp.Matrix([1, 1, 1]))),
                             sp.sqrt(3) * (half - L / 4)), "geometry", result=uD,
        note="centroid of the dry tetrahedron, legs L at the corner (1/2, 1/2, 1/2), along the up vector")
 sT = 1 - L ** 3 / 6
@@ -375,7 +379,7 @@ d.quote("tri-unstable", "X", "Die Bedingungen ergeben, dass dieses Gleichgewicht
         reading=(sp.sign(GMt), -1))
 d.quote("hex-follows", "X",
         r"Wenn  $s < \frac{5}{6}$  (bzw.  $> \frac{1}{6}$ ) ist, so geht der fünfeckige Wasserschnitt bei weiterem",
-        reading=(sp.sign((1 - s) - (1 - s56)), sp.sign(s56 - s)),
+        reading=as_printed(lambda: (sp.sign((1 - s) - (1 - s56)), sp.sign(s56 - s))),
         note="turning on towards the diagonal, the dry part reaches the bottom face before the top face loses the "
              "two corners next to B iff its volume 1 - s exceeds the tetrahedron's 1/6")
 
@@ -389,7 +393,8 @@ d.step("third-tilt", sp.Eq(k3, -a / XI.subs(xM)), "definition", result=k3,
 sq_ = sp.Integral(ETA * XI, (X, -a / 2, a / 2), (Y, -a / 2, a / 2))
 triB = sp.Integral(ETA * XI, (Y, a / 2 - (X - a / 2 + rho) * tg, a / 2), (X, a / 2 - rho, a / 2))
 triD = sp.Integral(ETA * (XI - XI.subs(xM)), (Y, -a / 2, -a / 2 + (-a / 2 + rho1 - X) * tg), (X, -a / 2, -a / 2 + rho1))
-d.step("h1", (h1_, (-sp.Matrix([-a / 2 + rho1, -a / 2]) + sp.Matrix([-a / 2, -a / 2])).dot(-n_), rho1 * si), "geometry",
+d.step("h1", (h1_, as_printed(lambda: (-sp.Matrix([-a / 2 + rho1, -a / 2]) + sp.Matrix([-a / 2, -a / 2])).dot(-n_)), rho1 * si),
+       "geometry",
        result=h1_, note="h_1: the distance of D = (-a/2, -a/2) from the projected bottom water line through M")
 d.step("bottom-triangle", sp.Eq(P1, P168.subs({h_: h1_, rho: rho1})), "definition", uses=("168", "h1"), result=P1,
        note="(168) for LDM: turned by 180 deg it is a triangle like BHG with rho_1, h_1 (checked by third-bottom)")

@@ -139,7 +139,7 @@ def _summary_by_source(reports) -> str:
         c = Counter(f.verdict for f in fs)
         secs = sum(r.seconds for r in reports if r.source == source)
         lines.append(f"{source}: {len(fs)} printed formulas — {c['verified']} verified, {c['erratum']} errata, "
-                     f"{c['unverifiable']} unverifiable ({secs:.1f} s)")
+                     f"{c['unverifiable']} unverifiable, {c['trivial']} trivial ({secs:.1f} s)")
     return "\n".join(lines)
 
 

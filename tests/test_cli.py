@@ -28,7 +28,7 @@ def test_verify_json_contract(in_tmp, capsys):
         for rec in f["numeric"]:
             assert RECORD_KEYS <= set(rec) and rec["seconds"] >= 0
     s = out["summary"]
-    assert s["verified"] + s["erratum"] + s["unverifiable"] == len(out["formulas"]) == s["formulas"]
+    assert s["verified"] + s["erratum"] + s["unverifiable"] + s["trivial"] == len(out["formulas"]) == s["formulas"]
 
 
 def test_selector_computes_only_what_it_selects_and_its_ancestors(in_tmp, capsys):

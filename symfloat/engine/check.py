@@ -3,7 +3,8 @@
 The verdict of a printed formula follows from three pieces of evidence:
 
 * the identity check of its reading against the derivation's results
-  (``verified`` when it holds, refuted when a sample disagrees);
+  (``verified`` when it holds, refuted when a sample disagrees); a reading
+  whose members are identical as built checks nothing and is ``trivial``;
 * the declared erratum, whose corrected reading must itself hold;
 * the first-principles witnesses, which must agree with whatever is
   accepted as right and disagree with what is refuted.
@@ -20,7 +21,7 @@ from dataclasses import asdict, dataclass, field
 
 import sympy as sp
 
-from ..model.claim import as_latex, members
+from ..model.claim import as_latex, identical_links, members
 from ..model.derivation import Derivation, Printed
 from .identity import Domain, IdentityResult, check_identity, check_rounded
 from .proofs import ProofBook
@@ -35,7 +36,7 @@ class StepReport:
     uses: list
     latex: str
     note: str
-    status: str                       # definition | applied | proved | sampled | refuted | undecided
+    status: str                       # definition | applied | proved | sampled | refuted | undecided | trivial
     identity: dict | None = None
 
 
@@ -44,7 +45,7 @@ class FormulaReport:
     id: str
     source: str
     locator: str
-    verdict: str                      # verified | erratum | unverifiable
+    verdict: str                      # verified | erratum | unverifiable | trivial
     evidence: str | None
     numeric: list
     excerpt: str
@@ -102,14 +103,16 @@ def _substitute(expr, results):
     return expr
 
 
-def _resolved(chain, results):
-    """The chain with derived values inserted for the result symbols."""
-    return tuple(_substitute(m, results) for m in members(chain))
+def _evaluated(expr):
+    """*expr* with its arithmetic carried out: a reading keeps the print's arithmetic
+    unevaluated (``evaluate=False``, ``UnevaluatedExpr``) until it is compared."""
+    return expr.doit() if hasattr(expr, "doit") else expr
 
 
-def _closed(chain, closed):
-    """The chain with every defining integral of *closed* replaced by its derived closed form."""
-    return tuple(m.xreplace(closed) for m in chain) if closed else chain
+def _resolved(chain, results, closed=None):
+    """The chain with derived values inserted for the result symbols, every defining integral
+    of *closed* replaced by its derived closed form (witnesses never integrate it again), evaluated."""
+    return tuple(_evaluated(_substitute(m, results).xreplace(closed or {})) for m in members(chain))
 
 
 def _check_chain(chain, names, results, domain, seed, book, proofs, tolerance=None, prove=True,
@@ -119,15 +122,24 @@ def _check_chain(chain, names, results, domain, seed, book, proofs, tolerance=No
     Each link's proof certificate comes from (or is searched for) *book*, under
     the key ``"<kind> <seed>#<link>"`` (*kind*: ``step`` or ``printed``, as a
     step and a printed formula may share a name); the certificates used are
-    collected in *proofs*."""
+    collected in *proofs*.
+
+    A link whose two members are identical as built (before the derived values are
+    inserted) is not checked: it holds by construction.  A chain of such links only
+    is ``trivial``."""
     ms = [m for m in members(chain) if not (isinstance(m, sp.Symbol) and m in names)]
     if len(ms) < 2:
         raise ValueError(f"{seed}: nothing to check once the named quantity is removed")
-    ms = [_substitute(m, results) for m in ms]
+    same = identical_links(ms)
+    if all(same):
+        return IdentityResult("trivial", tried=["none: the members are identical as built"])
+    ms = [_evaluated(_substitute(m, results)) for m in ms]
     order = {"refuted": 0, "undecided": 1, "agrees": 2, "sampled": 2, "proved": 3}
     worst = None
     total = 0.0
     for i, (a, b) in enumerate(zip(ms, ms[1:])):
+        if same[i]:
+            continue
         claim = f"{kind} {seed}#{i}"
         r = (check_rounded(a, b, tolerance, f"{seed}#{i}") if tolerance is not None else
              check_identity(a, b, domain, f"{seed}#{i}", prove=prove, book=book, claim=claim))
@@ -142,6 +154,8 @@ def _check_chain(chain, names, results, domain, seed, book, proofs, tolerance=No
         if r.status == "refuted":
             break
     worst.seconds = total
+    worst.tried += [f"link {i + 1} not checked: its members are identical as built"
+                    for i, t in enumerate(same) if t]
     return worst
 
 
@@ -191,11 +205,11 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
     readings, identities, corrected = {}, {}, {}
     for p in d.printed:      # witnesses evaluate closed forms, never a defining integral again
         if p.reading is not None:
-            readings[p.name] = _closed(_resolved(p.reading, results), closed)
+            readings[p.name] = _resolved(p.reading, results, closed)
             identities[p.name] = _check_chain(p.reading, set(), results, domain,
                                               f"{d.id}/{p.name}", book, proofs, p.tolerance, prove, timing)
         if p.erratum is not None and p.erratum.corrected_reading is not None:
-            readings[p.name + "#corrected"] = _closed(_resolved(p.erratum.corrected_reading, results), closed)
+            readings[p.name + "#corrected"] = _resolved(p.erratum.corrected_reading, results, closed)
             corrected[p.name] = _check_chain(p.erratum.corrected_reading, set(), results, domain,
                                              f"{d.id}/{p.name}#corrected", book, proofs, p.tolerance, prove,
                                              timing)
@@ -236,6 +250,12 @@ def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
     if p.lost:
         rep.reason = f"text lost in the transcription: {p.lost}"
         return rep
+    if ident is not None and ident.status == "trivial":
+        rep.verdict = "trivial"
+        rep.reason = "the reading's members are identical as built: the comparison proves nothing"
+        if p.erratum is not None:
+            failures.append(f"{where}: an erratum is declared but the reading compares a thing with itself")
+        return rep
     if ident is not None and ident.status == "undecided":
         rep.reason = (f"the checks could not decide: {ident.samples} valid samples, and the recorded proof "
                       f"search found no symbolic proof (details in the identity record)")
@@ -257,7 +277,9 @@ def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
         failures.append(f"{where}: the print is refuted but the witnesses agree with it")
     if corr is None and p.erratum.corrected_reading is not None:
         failures.append(f"{where}: the correction was not checked")
-    if corr is not None and not corr.holds:
+    if corr is not None and corr.status == "trivial":
+        failures.append(f"{where}: the reading of the correction compares a thing with itself")
+    elif corr is not None and not corr.holds:
         failures.append(f"{where}: the declared correction does not hold ({corr.status}: "
                         f"{corr.counterexample or corr.residual})")
     if corrected_out and not all(o.agrees for o in corrected_out):

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["members", "as_latex", "pairs"]
+__all__ = ["members", "as_latex", "pairs", "identical_links", "as_printed"]
 
 
 def members(claim) -> tuple:
@@ -31,3 +31,45 @@ def pairs(claim):
 def as_latex(claim) -> str:
     """The chain as one LaTeX line ``a = b = c``."""
     return " = ".join(sp.latex(m) for m in members(claim))
+
+
+def identical_links(ms) -> list[bool]:
+    """For each consecutive pair of the members *ms*: are the two identical as built?
+
+    Structural equality of the SymPy objects as the derivation constructed them,
+    before any substitution of derived values or ``doit``.  Such a link is true by
+    construction (e.g. a printed ``g (1/2)^2 = g/4`` that SymPy evaluated on
+    building), so checking it proves nothing about the print.
+
+    >>> import sympy as sp
+    >>> g = sp.Symbol("g")
+    >>> identical_links((g * sp.Rational(1, 2) ** 2, g / 4))
+    [True]
+    >>> identical_links((sp.Mul(g, sp.Pow(sp.Rational(1, 2), 2, evaluate=False), evaluate=False), g / 4))
+    [False]
+    """
+    out = []
+    for a, b in zip(ms, ms[1:]):
+        if isinstance(a, sp.MatrixBase) or isinstance(b, sp.MatrixBase):
+            same = (isinstance(a, sp.MatrixBase) and isinstance(b, sp.MatrixBase) and a.shape == b.shape
+                    and all(x == y for x, y in zip(a, b)))
+        else:
+            same = a == b
+        out.append(bool(same))
+    return out
+
+
+def as_printed(build):
+    """What ``build()`` returns, built with SymPy's automatic evaluation off.
+
+    A reading keeps the print's arithmetic this way (``g (1/2)^2`` stays a
+    product of ``g`` and a square), so that the engine carries it out when it
+    compares, instead of SymPy when the reading is built.
+
+    >>> import sympy as sp
+    >>> g = sp.Symbol("g")
+    >>> as_printed(lambda: g * sp.Rational(1, 2) ** 2) == g / 4, (g * sp.Rational(1, 2) ** 2) == g / 4
+    (False, True)
+    """
+    with sp.evaluate(False):
+        return build()

@@ -101,6 +101,7 @@ class Derivation:
     printed: list[Printed] = field(default_factory=list)
     witnesses: list = field(default_factory=list)
     predictor: Predictor | None = None
+    names: list = field(default_factory=list)
 
     def __post_init__(self):
         get_source(self.source)
@@ -128,6 +129,15 @@ class Derivation:
         p = Printed(name, locator, excerpt, reading, erratum, unreadable, lost, note, tolerance)
         self.printed.append(p)
         return p
+
+    def name(self, symbol, value, text=""):
+        """Name a helper expression (a vector, a triple product) for display: the notebook
+        shows ``symbol = value`` once and writes *value* by its name wherever a claim
+        contains it.  Display only: the engine checks the claims as built."""
+        if any(symbol == s for s, _, _ in self.names):
+            raise ValueError(f"duplicate name {symbol} in {self.id}")
+        self.names.append((symbol, value, text))
+        return symbol
 
     def witness(self, w):
         """Attach a first-principles witness (see :mod:`symfloat.engine.witness`)."""

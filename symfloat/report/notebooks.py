@@ -1,14 +1,19 @@
 """Building and executing the derivation notebooks.
 
 One notebook per derivation module, built with nbformat and executed with
-nbclient.  Cell ids derive from the derivation id and the cell's position, so
-an unchanged derivation regenerates an identical notebook (timings aside,
-which :func:`~symfloat.report.files.write_if_changed` ignores).
+nbclient.  The mathematics (names, steps, quotations, readings) is written
+into Markdown cells from the derivation module when the notebook is built; the
+code cells import the module and show what the engine found.  Cell ids derive
+from what a cell shows (step or formula name), so an unchanged derivation
+regenerates an identical notebook and a new step changes only its own cells;
+no output carries a timing.
 """
 from __future__ import annotations
 
+import hashlib
 import inspect
 import os
+import re
 from pathlib import Path
 
 import subprocess
@@ -19,6 +24,7 @@ from nbclient import NotebookClient
 from ..model.source import get_source
 from ..registry import load
 from .files import write_if_changed
+from .notebook_view import definitions_markdown, reading_markdown, step_markdown
 from .stamp import digest
 
 __all__ = ["build_notebook", "execute_notebook", "write_notebooks", "notebook_stamp", "recorded_stamp"]
@@ -26,8 +32,15 @@ __all__ = ["build_notebook", "execute_notebook", "write_notebooks", "notebook_st
 KERNEL = {"name": "python3", "display_name": "Python 3", "language": "python"}
 
 
-def _quote(text: str) -> str:
-    return "\n".join("> " + line if line.strip() else ">" for line in text.splitlines())
+def cell_id(kind: str, name: str = "") -> str:
+    """A stable, valid cell id (``[A-Za-z0-9_-]``, at most 64 characters) for one cell.
+
+    >>> cell_id("step", "mid-section-g"), cell_id("formula", "1+3t")
+    ('step-mid-section-g-2336', 'formula-1_3t-02f4')
+    """
+    safe = re.sub(r"[^A-Za-z0-9_-]", "_", name)[:40]
+    digest = hashlib.sha256(name.encode()).hexdigest()[:4]
+    return f"{kind}-{safe}-{digest}" if name else kind
 
 
 def build_notebook(derivation_id: str) -> nbformat.NotebookNode:
@@ -35,34 +48,44 @@ def build_notebook(derivation_id: str) -> nbformat.NotebookNode:
     d, module = load(derivation_id)
     src = get_source(d.source)
     about = inspect.cleandoc(module.__doc__ or "")
+    md, code = nbformat.v4.new_markdown_cell, nbformat.v4.new_code_cell
     cells = [
-        nbformat.v4.new_markdown_cell(
+        (cell_id("title"), md(
             f"# {d.title}\n\n{src.author}, *{src.title}*{', ' + str(src.year) if src.year else ''} — "
             f"{d.locator} (source key `{d.source}`).\n\n{d.summary}\n\n"
             f"Derivation `{d.id}`" + (f", building on {', '.join(f'`{r}`' for r in d.requires)}" if d.requires
                                       else "") + ".\n\n**Assumptions**\n\n"
-            + "\n".join(f"- {a}" for a in d.assumptions)),
-        *([nbformat.v4.new_markdown_cell("## About this section\n\n" + about)] if about else []),
-        nbformat.v4.new_code_cell(
-            "from symfloat.report.notebook_view import checked, formula_markdown, show, steps_markdown\n"
-            f"report = checked({d.id!r})\n"
-            "assert not report.failures, report.failures\n"
-            "print(f'{len(report.steps)} steps, {len(report.formulas)} printed formulas: ' +\n"
-            "      ', '.join(f'{v} {sum(f.verdict == v for f in report.formulas)}'\n"
-            "                for v in ('verified', 'erratum', 'unverifiable')))"),
-        nbformat.v4.new_markdown_cell("## Derivation\n\nEach step with its justification and the engine's verdict."),
-        nbformat.v4.new_code_cell("show(steps_markdown(report))"),
-        nbformat.v4.new_markdown_cell("## Printed formulas\n\nThe transcription quoted verbatim, then its "
-                                      "reading, verdict and witnesses."),
+            + "\n".join(f"- {a}" for a in d.assumptions))),
+        *([(cell_id("about"), md("## About this section\n\n" + about))] if about else []),
+        (cell_id("setup"), code(
+            f"from derivations import {module.__name__.split('.')[-1]} as derivation\n"
+            "from symfloat.report.notebook_view import NotebookView\n\n"
+            "view = NotebookView(derivation)   # what the engine found on this derivation\n"
+            "assert not view.failures, view.failures\n"
+            "view.summary()")),
     ]
+    names = definitions_markdown(d)
+    if names:
+        cells.append((cell_id("names"), md(names)))
+    cells.append((cell_id("derivation"), md(
+        "## Derivation\n\nEach step: what it says, its expressions before and after, and how the engine "
+        "justified it (a step is checked as an identity inside the stated assumptions, unless it is a "
+        "definition).")))
+    for i, s in enumerate(d.steps, 1):
+        cells.append((cell_id("step", s.name), md(step_markdown(d, i, s))))
+        cells.append((cell_id("step-check", s.name), code(f"view.step({s.name!r})")))
+    cells.append((cell_id("printed"), md(
+        "## Printed formulas\n\nThe transcription quoted verbatim and read as printed (the print's "
+        "arithmetic kept), then the verdict, the erratum if there is one, and the independent witnesses.")))
     for p in d.printed:
-        cells.append(nbformat.v4.new_markdown_cell(f"### {p.locator}: `{p.name}`\n\n{_quote(p.excerpt)}"))
-        cells.append(nbformat.v4.new_code_cell(f"show(formula_markdown(report, {p.name!r}))"))
-    nb = nbformat.v4.new_notebook(cells=cells, metadata={"kernelspec": KERNEL})
+        cells.append((cell_id("formula", p.name), md(reading_markdown(d, p))))
+        cells.append((cell_id("formula-check", p.name), code(f"view.formula({p.name!r})")))
+    nb = nbformat.v4.new_notebook(cells=[c for _, c in cells], metadata={"kernelspec": KERNEL})
     nb.nbformat_minor = 5
-    slug = d.id.replace("graefe-", "g-")[:40]
-    for i, cell in enumerate(nb.cells):
-        cell.id = f"{slug}-{i:03d}"
+    for cid, cell in cells:
+        cell.id = cid
+    if len({c.id for c in nb.cells}) != len(nb.cells):
+        raise RuntimeError(f"{d.id}: duplicate notebook cell ids")
     return nb
 
 
@@ -72,6 +95,7 @@ def execute_notebook(nb, cwd: str | os.PathLike) -> nbformat.NotebookNode:
     # The kernel's own log (a transport warning at start) is noise here; a
     # failing cell raises CellExecutionError with its traceback regardless.
     client.execute(stderr=subprocess.DEVNULL)
+    nb.metadata.pop("language_info", None)   # the kernel's Python version: machine, not mathematics
     return nb
 
 

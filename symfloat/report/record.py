@@ -8,7 +8,7 @@ from ..engine.check import DerivationReport
 
 __all__ = ["verification_record", "verification_table", "VERDICTS"]
 
-VERDICTS = ("verified", "erratum", "unverifiable")
+VERDICTS = ("verified", "erratum", "unverifiable", "trivial")
 
 
 def _formula_entry(d: DerivationReport, f) -> dict:
@@ -69,7 +69,7 @@ def verification_table(reports: list[DerivationReport]) -> str:
     cached = sum(d.cached for d in reports)
     lines.append("")
     lines.append(f"{s['formulas']} printed formulas: {s['verified']} verified, {s['erratum']} errata, "
-                 f"{s['unverifiable']} unverifiable; steps {s['steps']}; checking time {s['seconds']:.1f} s"
+                 f"{s['unverifiable']} unverifiable, {s['trivial']} trivial; steps {s['steps']}; checking time {s['seconds']:.1f} s"
                  + (f" ({cached} of {len(s['derivations'])} derivations read from the cache)" if cached else ""))
     for msg in s["failures"]:
         lines.append(f"FAILURE: {msg}")
