@@ -8,6 +8,7 @@
                    [--plot FILE.png]
     symfloat phase cube|box [--dims a,b,c] [--format table|json] [--plot FILE.png]
     symfloat bench [--quick] [--output DIR]
+    symfloat coverage [SOURCE] [--format table|json] [--readings] [--write] [--update-baseline]
 
 Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET=1``) silences it.
 Exit status: 0 when every check behaves as declared, 1 when a check fails
@@ -74,6 +75,14 @@ def _parser():
     b = sub.add_parser("bench", parents=[common], help="numerics benchmark: write docs/numerics.md and its figures")
     b.add_argument("--quick", action="store_true", help="a few derivations and methods (for tests)")
     b.add_argument("--output", type=Path, default=DOCS, help="directory for numerics.md and figures/")
+    cv = sub.add_parser("coverage", parents=[common], help="the coverage ledger: every math span and quantitative "
+                        "sentence quoted or waived; with --readings the readings checked against the print")
+    cv.add_argument("source", nargs="?", help="a source key (default: all)")
+    cv.add_argument("--format", choices=("table", "json"), default="table")
+    cv.add_argument("--readings", action="store_true", help="also read every quote automatically and compare")
+    cv.add_argument("--write", action="store_true", help="write docs/coverage.md (and docs/readings.md)")
+    cv.add_argument("--update-baseline", action="store_true", help="rewrite docs/coverage-baseline.json "
+                    "(and docs/readings-baseline.json) to the current lists")
     return p
 
 
@@ -145,6 +154,9 @@ def main(argv=None) -> int:
             return _scene(args)
         if args.command == "phase":
             return _phase(args)
+        if args.command == "coverage":
+            from .report.ledger_command import run
+            return run(args)
         if args.command == "verify":
             reports = _reports(args, args.selector)
             print(record_json(reports) if args.format == "json" else verification_table(reports), end="")
