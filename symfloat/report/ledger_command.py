@@ -1,7 +1,8 @@
 """``symfloat coverage [SOURCE] [--format table|json] [--readings] [--write] [--update-baseline]``.
 
 Prints the coverage ledger (:mod:`symfloat.report.ledger`) and, with ``--readings``, the check of the
-hand readings against the automatic ones (:mod:`symfloat.report.readings`).  ``--write`` writes
+hand readings against the automatic ones (:mod:`symfloat.report.readings`); ``--format json`` gives
+``{"sources": {key: {"totals", "entries"}}, "readings": [...]}``.  ``--write`` writes
 ``docs/coverage.md`` (and ``docs/readings.md``); ``--update-baseline`` rewrites the baselines
 ``docs/coverage-baseline.json`` (and ``docs/readings-baseline.json``) to the current lists and says
 how many entries left and came.
@@ -56,14 +57,20 @@ def run(args) -> int:
         print(f"symfloat: coverage ledger: {exc}", file=sys.stderr)
         return 1
     pending = baseline_keys(load_baseline(COVERAGE_BASELINE))
-    print(ledger_json(sources) if args.format == "json" else ledger_table(sources, pending), end="")
     failed = any(e.status == "unaccounted" for e in entries)
+    rows = []
     if args.readings:
-        from .readings import readings_markdown, readings_table, reading_rows, readings_baseline_text
+        from .readings import reading_rows, readings_baseline_text, readings_markdown, readings_table
         rows = reading_rows(sources)
-        if args.format == "table":
-            print(readings_table(rows), end="")
         failed |= any(r["status"] == "differs" for r in rows)
+    if args.format == "json":
+        record = json.loads(ledger_json(sources))
+        if args.readings:
+            record["readings"] = rows
+        print(json.dumps(record, ensure_ascii=False, indent=1))
+    else:
+        print(ledger_table(sources, pending) + (readings_table(rows) if args.readings else ""), end="")
+    if args.readings:
         if args.write:
             write_if_changed(DOCS / "readings.md", readings_markdown(reading_rows(tuple(SOURCES))))
         if args.update_baseline:
