@@ -35,7 +35,7 @@ RULES = {
     "dot-product": "a full stop between factors is a product, as the old prints write it (AB^2.D)",
     "proportion": "a : b is the ratio a / b of the sums on either side (a : b = c : d)",
     "segment": "a run of two or more capital letters without space is one segment or figure name (AB, GH), "
-               "unless the hand reading has each letter as a symbol (N D is N times D)",
+               "unless the hand reading has one of its letters as a symbol (ND, XV are products)",
     "joined-lines": "inline formulas separated only by a line break are one formula; words around the "
                     "math of an excerpt are dropped",
     "list": "formulas separated by a comma (or by words between dollars) are read as rows",
@@ -353,7 +353,7 @@ class _Parser:
                 self.i += n
                 return self._symbol(run[:n])
         capitals = len(run) - len(run.lstrip("ABCDEFGHIJKLMNOPQRSTUVWXYZ"))
-        if capitals >= 2 and not all(c in self.names for c in run[:capitals]):
+        if capitals >= 2 and not any(c in self.names for c in run[:capitals]):
             self.rules.add("segment")
             self.i += capitals
             return self._symbol(run[:capitals])
@@ -478,7 +478,7 @@ def read(tex: str, names=frozenset()) -> Reading:
 
     *names* are the canonical symbol names of the hand reading: a run of letters forms one of them when
     it can (``AB``, ``Pp``), a superscript stays in a name that continues with it (``T_2^1``); otherwise
-    juxtaposed letters multiply, except capitals (a segment ``GH``).
+    juxtaposed letters multiply, except capitals none of which the hand reading has (a segment ``GH``).
 
     >>> r = read(r"$$x = \varrho + 1/2 \text{tg } \alpha,$$")
     >>> r.rows, sorted(r.rules)
