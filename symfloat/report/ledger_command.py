@@ -5,11 +5,12 @@ hand readings against the automatic ones (:mod:`symfloat.report.readings`); ``--
 ``{"sources": {key: {"totals", "entries"}}, "readings": [...]}``.  ``--write`` writes
 ``docs/coverage.md`` (and ``docs/readings.md``); ``--update-baseline`` rewrites the baselines
 ``docs/coverage-baseline.json`` (and ``docs/readings-baseline.json``) to the current lists and says
-how many entries left and came.
+how many entries left and came.  Every run checks the ``same_as`` links of repeated errata
+(:mod:`symfloat.report.repeats`); ``--write`` also writes the unlinked repeats, ``docs/repeats.json``.
 
 Exit status 1 when a span is unaccounted (each is listed: ``pending`` when the baseline lists it,
 ``NEW`` otherwise), when a reading differs from the print without a declaration, or when a waiver
-is stale; 2 on an unknown source.
+is stale, or a repeat link does not hold; 2 on an unknown source.
 """
 from __future__ import annotations
 
@@ -20,6 +21,7 @@ from pathlib import Path
 from ..model.source import SOURCES
 from .files import write_if_changed
 from .ledger import LedgerError, baseline_keys, ledger, ledger_json, ledger_markdown, ledger_table
+from .repeats import candidates_text, link_problems
 
 __all__ = ["run", "COVERAGE_BASELINE", "READINGS_BASELINE", "load_baseline", "baseline_text"]
 
@@ -75,8 +77,13 @@ def run(args) -> int:
             write_if_changed(DOCS / "readings.md", readings_markdown(reading_rows(tuple(SOURCES))))
         if args.update_baseline:
             write_if_changed(READINGS_BASELINE, readings_baseline_text(reading_rows(tuple(SOURCES))))
+    problems = link_problems()
+    for msg in problems:
+        print(f"symfloat: repeated erratum: {msg}", file=sys.stderr)
+    failed |= bool(problems)
     if args.write:
         write_if_changed(DOCS / "coverage.md", ledger_markdown())
+        write_if_changed(DOCS / "repeats.json", candidates_text())
     if args.update_baseline:
         new = baseline_text()
         before = baseline_keys(load_baseline(COVERAGE_BASELINE))
