@@ -6,7 +6,8 @@ hand readings against the automatic ones (:mod:`symfloat.report.readings`); ``--
 ``docs/coverage.md`` (and ``docs/readings.md``); ``--update-baseline`` rewrites the baselines
 ``docs/coverage-baseline.json`` (and ``docs/readings-baseline.json``) to the current lists and says
 how many entries left and came.  Every run checks the ``same_as`` links of repeated errata
-(:mod:`symfloat.report.repeats`); ``--write`` also writes the unlinked repeats, ``docs/repeats.json``.
+(:mod:`symfloat.report.repeats`); ``--write`` also writes the unlinked repeats, ``docs/repeats.json``, and Scheeffer's
+cross-references to his equations, resolved, ``docs/references.md`` (:mod:`symfloat.report.references`).
 
 Exit status 1 when a span is unaccounted (each is listed: ``pending`` when the baseline lists it,
 ``NEW`` otherwise), when a reading differs from the print without a declaration, or when a waiver
@@ -21,6 +22,7 @@ from pathlib import Path
 from ..model.source import SOURCES
 from .files import write_if_changed
 from .ledger import LedgerError, baseline_keys, ledger, ledger_json, ledger_markdown, ledger_table
+from .references import references_markdown
 from .repeats import candidates_text, link_problems
 
 __all__ = ["run", "COVERAGE_BASELINE", "READINGS_BASELINE", "load_baseline", "baseline_text"]
@@ -84,6 +86,7 @@ def run(args) -> int:
     if args.write:
         write_if_changed(DOCS / "coverage.md", ledger_markdown())
         write_if_changed(DOCS / "repeats.json", candidates_text())
+        write_if_changed(DOCS / "references.md", references_markdown())
     if args.update_baseline:
         new = baseline_text()
         before = baseline_keys(load_baseline(COVERAGE_BASELINE))
