@@ -40,7 +40,8 @@ def test_products_arguments_and_powers():
 def test_chains_ratios_segments_and_lists():
     assert _one(r"a < b \leq x")[1] == ["<", "<="]
     assert _one(r"= \frac{a}{b}")[0] == [None, a / b]                          # implied left side
-    assert _one(r"y : x = h : h - \frac{h}{m}")[0][1] == sp.Symbol("h") / (sp.Symbol("h") - sp.Symbol("h") / sp.Symbol("m"))
+    h, m = sp.symbols("h m")
+    assert _one(r"y : x = h : h - \frac{h}{m}")[0][1] == h / (h - h / m)
     assert _one(r"AB^2.D")[0] == [sp.Symbol("AB") ** 2 * sp.Symbol("D")]       # segment, dot product
     assert _one(r"N D", frozenset({"N", "D"}))[0] == [sp.Symbol("N") * sp.Symbol("D")]
     assert len(read(r"a = 1, b = 2").rows) == 2

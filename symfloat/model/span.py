@@ -52,7 +52,7 @@ class Span:
     """A stretch of a transcription: ``text[start:end]``, starting on 1-based ``line`` at 1-based ``column``."""
 
     source: str
-    kind: str
+    kind: str           # one of KINDS
     start: int
     end: int
     line: int
@@ -154,7 +154,8 @@ def quantitative_sentences(source: str) -> tuple[Span, ...]:
             chunk = text[s:e]
             lead = len(chunk) - len(chunk.lstrip())
             s, e = s + lead, s + len(chunk.rstrip())
-            if e > s and not text.startswith("#", s) and is_quantitative(masked[s:e].replace(_MATH_MASK, " "), src.language):
+            prose = masked[s:e].replace(_MATH_MASK, " ")
+            if e > s and not text.startswith("#", s) and is_quantitative(prose, src.language):
                 found.append(Span(source, "sentence", s, e, *line_of(text, s), text[s:e]))
     return tuple(found)
 

@@ -24,8 +24,8 @@ from ..model.span import Span, spans
 from ..model.tex import chains, is_bare_symbol
 from ..registry import load, select
 
-__all__ = ["REASONS", "JUDGED", "Entry", "LedgerError", "account", "ledger", "quotes", "waivers", "totals", "ledger_json",
-           "ledger_table", "ledger_markdown", "baseline_keys", "entry_key"]
+__all__ = ["REASONS", "JUDGED", "Entry", "LedgerError", "account", "ledger", "quotes", "waivers", "totals",
+           "ledger_json", "ledger_table", "ledger_markdown", "baseline_keys", "entry_key"]
 
 REASONS = {
     "bare-symbol": "a single symbol or label, or a list of them: it states nothing (computed)",

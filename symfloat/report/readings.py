@@ -12,7 +12,8 @@ symbol of the hand reading whose name is the printed one plus an index), ``symbo
 hand symbol named like a formula, ``tan^2varphi_1``, stands for that formula); and two rules under
 which a member is not compared: ``values-substituted`` (the hand member shares no symbol with the
 printed one: a worked example's numbers, coordinates for a segment) and ``member-named`` (one side
-is a lone symbol naming what the other writes out).  A chain that opens with a relation is compared from its end (``implied-left-side``).
+is a lone symbol naming what the other writes out).  A chain that opens with a relation is compared
+from its end (``implied-left-side``).
 
 Statuses: ``agrees``; ``differs`` (a member differs and the printed formula has no erratum: a silent
 repair or a misreading, to be looked at); ``erratum`` (differs, and the formula's erratum declares

@@ -49,7 +49,8 @@ def link_problems(index=None) -> list[str]:
             continue
         t = index[target][1].erratum
         if t.same_as:
-            problems.append(f"{fid}: same_as {target!r}, which is itself a repeat of {t.same_as!r}: book the fault once")
+            problems.append(f"{fid}: same_as {target!r}, which is itself a repeat of {t.same_as!r}: "
+                            "book the fault once")
         if (t.kind, t.confidence) != (p.erratum.kind, p.erratum.confidence):
             problems.append(f"{fid}: {p.erratum.kind}/{p.erratum.confidence}, but the fault it repeats ({target}) is "
                             f"{t.kind}/{t.confidence}")
