@@ -35,7 +35,10 @@ RULES = {
     "dot-product": "a full stop between factors is a product, as the old prints write it (AB^2.D)",
     "proportion": "a : b is the ratio a / b of the sums on either side (a : b = c : d)",
     "segment": "a run of two or more capital letters without space is one segment or figure name (AB, GH), "
-               "unless the hand reading has one of its letters as a symbol (ND, XV are products)",
+               "unless the hand reading has one of its letters as a symbol (ND, XV are products); so is any "
+               "run of letters none of which the hand reading has (Euler's ef)",
+    "continued-row": "a row that opens with & and states no relation continues the last member of the row "
+                     "before: a sum when it opens with a sign, else a product (a formula broken over lines)",
     "joined-lines": "inline formulas separated only by a line break are one formula; words around the "
                     "math of an excerpt are dropped",
     "list": "formulas separated by a comma (or by words between dollars) are read as rows",
@@ -78,10 +81,12 @@ class Unreadable(ValueError):
 
 @dataclass
 class Reading:
-    """A formula read: rows, each ``(members, relations)``; the rules that applied."""
+    """A formula read: rows, each ``(members, relations)``; the rules that applied; the names read
+    as segments."""
 
     rows: list[tuple[list, list[str]]]
     rules: set[str] = field(default_factory=set)
+    segments: set[str] = field(default_factory=set)
 
 
 def canonical(name: str) -> str:
@@ -128,12 +133,13 @@ def _strip_layout(tex: str, rules: set[str]) -> str:
 class _Parser:
     """Recursive descent over the tokens; names of several letters are taken from *names*."""
 
-    def __init__(self, tokens, names: frozenset[str], rules: set[str]):
+    def __init__(self, tokens, names: frozenset[str], rules: set[str], segments: set[str]):
         self.t = [tok for tok in tokens if tok[0] != "space"]
         self.spaced = self._spacing(tokens)
         self.i = 0
         self.names = names
         self.rules = rules
+        self.segments = segments
 
     @staticmethod
     def _spacing(tokens):
@@ -353,10 +359,14 @@ class _Parser:
                 self.i += n
                 return self._symbol(run[:n])
         capitals = len(run) - len(run.lstrip("ABCDEFGHIJKLMNOPQRSTUVWXYZ"))
+        if self.names and len(run) >= 2 and not any(c in self.names for c in run):
+            capitals = len(run)         # no letter of the run is a symbol of the reading: a segment (ef)
         if capitals >= 2 and not any(c in self.names for c in run[:capitals]):
             self.rules.add("segment")
             self.i += capitals
-            return self._symbol(run[:capitals])
+            segment = self._symbol(run[:capitals])
+            self.segments.add(segment.name)
+            return segment
         self.i += 1
         return self._symbol(run[0])
 
@@ -478,7 +488,8 @@ def read(tex: str, names=frozenset()) -> Reading:
 
     *names* are the canonical symbol names of the hand reading: a run of letters forms one of them when
     it can (``AB``, ``Pp``), a superscript stays in a name that continues with it (``T_2^1``); otherwise
-    juxtaposed letters multiply, except capitals none of which the hand reading has (a segment ``GH``).
+    juxtaposed letters multiply, except a run none of whose letters the hand reading has (a segment
+    ``GH``, ``ef``; capitals are a segment also without a hand reading).
 
     >>> r = read(r"$$x = \varrho + 1/2 \text{tg } \alpha,$$")
     >>> r.rows, sorted(r.rules)
@@ -495,16 +506,24 @@ def read(tex: str, names=frozenset()) -> Reading:
     if "$" in body:
         raise Unreadable("several formulas with words between them")
     body = re.sub(r"\\begin\{(?:aligned|align\*?)\}|\\end\{(?:aligned|align\*?)\}", r"\\\\", body)
-    rows = []
+    rows, segments = [], set()
     for part in re.split(r"\\\\", body):
+        continued = part.lstrip().startswith("&") and rows and rows[-1][1]
         part = part.replace("&", "").strip()
         for tokens in _split_list(_tokens(part)):
-            rows.append(_Parser(tokens, frozenset(names), rules).chain())
+            members, relations = _Parser(tokens, frozenset(names), rules, segments).chain()
+            if continued and not relations and members[0] is not None:
+                rules.add("continued-row")        # "= a \\ & + b" is a + b, "= a \\ & b" is a b
+                last = rows[-1][0][-1]
+                rows[-1][0][-1] = last + members[0] if part.startswith(("+", "-")) else last * members[0]
+            else:
+                rows.append((members, relations))
+            continued = False
     if not rows:
         raise Unreadable("no formula")
     if len(rows) > 1 and len(re.split(r"\\\\", body)) == 1:
         rules.add("list")
-    return Reading(rows, rules)
+    return Reading(rows, rules, segments)
 
 
 def _split_list(tokens):

@@ -25,7 +25,7 @@ from ..model.tex import chains, is_bare_symbol
 from ..registry import load, select
 
 __all__ = ["REASONS", "JUDGED", "Entry", "LedgerError", "account", "ledger", "quotes", "waivers", "totals",
-           "ledger_json", "ledger_table", "ledger_markdown", "baseline_keys", "entry_key"]
+           "ledger_json", "ledger_table", "ledger_markdown", "baseline_keys", "entry_key", "one_line"]
 
 REASONS = {
     "bare-symbol": "a single symbol or label, or a list of them: it states nothing (computed)",
@@ -175,7 +175,8 @@ def ledger_json(sources) -> str:
     return json.dumps({"sources": out}, ensure_ascii=False, indent=1) + "\n"
 
 
-def _short(text: str, width: int = 110) -> str:
+def one_line(text: str, width: int = 110) -> str:
+    """*text* on one line, cut to *width* characters with an ellipsis."""
     one = " ".join(text.split())
     return one if len(one) <= width else one[:width - 1] + "…"
 
@@ -193,7 +194,7 @@ def ledger_table(sources, pending: set[tuple] = frozenset()) -> str:
         for e in ledger(k):
             if e.status == "unaccounted":
                 mark = "pending" if entry_key(e) in pending else "NEW"
-                lines.append(f"  {mark:7} {k}:{e.span.line} {e.span.kind:8} {_short(e.span.text)}")
+                lines.append(f"  {mark:7} {k}:{e.span.line} {e.span.kind:8} {one_line(e.span.text)}")
     return "\n".join(lines) + "\n"
 
 

@@ -39,6 +39,7 @@ from ..model.latex import RULES, Unreadable, canonical, read
 from ..model.source import SOURCES
 from ..model.span import math_intervals
 from ..registry import load, select
+from .ledger import one_line
 
 __all__ = ["compare", "reading_rows", "shares", "readings_table", "readings_markdown", "readings_baseline_text",
            "MATCH_RULES", "differences"]
@@ -50,18 +51,19 @@ MATCH_RULES = {
     "values-substituted": "the hand member shares no symbol with the printed one, or the printed symbols it "
                           "lacks are all segments (AB): it writes the printed quantity in the derivation's own "
                           "terms (a worked example's numbers, a segment's length); that member is not compared",
+    "difference-form": "the hand reading writes the printed A = B as A - B = 0; A - B is compared",
     "member-named": "one side of a member is a lone symbol naming the quantity the other side writes out "
                     "(the hand reading's T_m for the printed expression, or the printed F for its value); "
                     "that member is not compared",
 }
 _WORDS = re.compile(r"(tan|sin|cos|cot|tg|varphi|varrho|vartheta|phi|rho|theta|omega|alpha|beta|mu|psi|sigma)")
-_POINTS = 3
+_POINTS = 3             # seeded rational points per member
+_DPS = 60               # digits of the evaluation; members agree to half of them
 _CLAIM_WORDS = 6        # an excerpt with this many words outside its math is a claim in words
 
 
 class InWords(Unreadable):
     """The quote is a claim in words: its math is not the whole of what it says."""
-_DPS = 60
 
 
 def _hand_rows(reading):
@@ -179,19 +181,22 @@ def _math_parts(source: str, excerpt: str, rules: set) -> list[str]:
     return parts
 
 
-def _compare_row(fid, k, auto_members, hand, mapping, hand_symbols, domain, rules, problems):
+def _compare_row(fid, k, auto_members, hand, mapping, hand_symbols, domain, rules, problems, segments):
     if auto_members[0] is None:
         auto_members = auto_members[1:]
         hand = hand[-len(auto_members):]
     elif len(auto_members) == 1 and len(hand) > 1:
         rules.add("implied-left-side")
         hand = hand[-1:]
+    if len(auto_members) == 2 and len(hand) == 2 and hand[1] == 0 and auto_members[0] is not None \
+            and auto_members[1] != 0:
+        rules.add("difference-form")        # the hand writes the printed A = B as A - B = 0
+        auto_members = [auto_members[0] - auto_members[1], sp.Integer(0)]
     for j, (a, h) in enumerate(zip(auto_members, hand)):
         a = a.xreplace(mapping)
         unknown = a.free_symbols - hand_symbols
         where = f"row {k + 1}, member {j + 1}" if k is not None else f"member {j + 1}"
-        if unknown and (not (a.free_symbols - unknown) & h.free_symbols
-                        or all(re.fullmatch(r"[A-Z]{2,}\w*", u.name) for u in unknown)):
+        if unknown and (not (a.free_symbols - unknown) & h.free_symbols or all(u.name in segments for u in unknown)):
             rules.add("values-substituted")
             continue
         if any(u.name.startswith("int") for u in unknown):
@@ -219,11 +224,12 @@ def compare(derivation, printed) -> dict:
     hand = _hand_rows(printed.reading) if printed.reading is not None else None
     names = {canonical(s.name) for r in (hand if isinstance(hand, list) else ()) for m in r for s in m.free_symbols}
     rules: set[str] = set()
-    auto_rows = []
+    auto_rows, segments = [], set()
     try:
         for part in _math_parts(derivation.source, printed.excerpt, rules):
             r = read(part, frozenset(names))
             rules |= r.rules
+            segments |= r.segments
             auto_rows += r.rows
     except InWords as exc:
         return {**row, "status": "words", "detail": str(exc)}
@@ -261,7 +267,7 @@ def compare(derivation, printed) -> dict:
     problems: list[str] = []
     for k, ((auto_members, _), h) in enumerate(zip(auto_rows, hand)):
         _compare_row(fid, k if len(hand) > 1 else None, auto_members, h, mapping, hand_symbols,
-                     derivation.domain, rules, problems)
+                     derivation.domain, rules, problems, segments)
     row["rules"] = sorted(rules)
     if not problems:
         return {**row, "status": "agrees", "detail": ""}
@@ -288,11 +294,6 @@ def differences(rows) -> list[dict]:
     return [r for r in rows if r["status"] == "differs"]
 
 
-def _short(text: str, width: int = 100) -> str:
-    one = " ".join(text.split())
-    return one if len(one) <= width else one[:width - 1] + "…"
-
-
 def shares(rows) -> dict:
     """Counts by status, and the share of formula quotes (claims in words set aside) read automatically."""
     c = Counter(r["status"] for r in rows)
@@ -309,7 +310,7 @@ def readings_table(rows) -> str:
              f"differ without an erratum, {sh['erratum']} differ with one, {sh['not-compared']} not compared; "
              f"{sh['unread']} unread"]
     for r in differences(rows):
-        lines.append(f"  DIFFERS {r['formula']} ({r['locator']}): {_short(r['detail'], 160)}")
+        lines.append(f"  DIFFERS {r['formula']} ({r['locator']}): {one_line(r['detail'], 160)}")
     return "\n".join(lines) + "\n"
 
 
@@ -340,7 +341,7 @@ def readings_markdown(rows) -> str:
             "print, or a limit of the automatic reader. They are pinned in `docs/readings-baseline.json`.", ""]
     for r in differences(rows):
         out.append(f"- `{r['formula']}` ({r['locator']}): {r['detail']}  ")
-        out.append(f"  print: `{_short(r['excerpt'], 140)}`")
+        out.append(f"  print: `{one_line(r['excerpt'], 140)}`")
     out += ["", "## Rules", "", "| rule | meaning | quotes |", "|---|---|---:|"]
     used = Counter(rule for r in rows for rule in r.get("rules", ()))
     for name, meaning in {**RULES, **MATCH_RULES}.items():
