@@ -47,6 +47,18 @@ def test_chains_ratios_segments_and_lists():
     assert len(read(r"a = 1, b = 2").rows) == 2
 
 
+def test_rows_continued_over_lines():
+    # Euler's layout: "= a \\ & + b" continues the member as a sum, "= a \\ & b" as a product
+    assert read(r"x = a \\ & + b").rows == [([x, a + b], ["="])]
+    assert read(r"x = a \\ & b").rows == [([x, a * b], ["="])]
+
+
+def test_a_run_of_letters_the_hand_reading_lacks_is_a_segment():
+    r = read(r"\frac{ef^2 \cdot D}{12}", frozenset({"D", "b"}))
+    assert r.rows[0][0] == [sp.Symbol("ef") ** 2 * sp.Symbol("D") / 12] and r.segments == {"ef"}
+    assert read(r"\frac{Dbb}{3}", frozenset({"D", "b"})).rows[0][0] == [sp.Symbol("D") * b ** 2 / 3]
+
+
 def test_names_come_from_the_hand_vocabulary():
     assert _one(r"T_2^1", frozenset({"T_2^1"}))[0] == [sp.Symbol("T_2^1")]
     assert _one(r"T_2^1")[0] == [sp.Symbol("T_2")]                             # else a power 1
@@ -86,6 +98,12 @@ def test_a_silent_repair_is_caught():
 def test_a_declared_difference_is_an_erratum():
     e = Erratum("transcription", "low", "x = rho + tg alpha", "probe", corrected_reading=(xs, r_ + sp.tan(al)))
     assert _status((xs, r_ + sp.tan(al)), erratum=e)["status"] == "erratum"
+
+
+def test_the_difference_form_is_compared():
+    row = _status((xs - r_ - sp.tan(al) / 2, 0))
+    assert row["status"] == "agrees" and "difference-form" in row["rules"]
+    assert _status((xs - r_ - sp.tan(al), 0))["status"] == "differs"
 
 
 def test_context_index_maps_a_printed_letter_to_the_derivations_symbol():
