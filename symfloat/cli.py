@@ -8,6 +8,7 @@
                    [--plot FILE.png]
     symfloat phase cube|box [--dims a,b,c] [--steps N] [--format table|json] [--plot FILE.png]
     symfloat bench [--quick] [--output DIR]
+    symfloat coverage [SOURCE] [--format table|json] [--readings] [--write] [--update-baseline]
 
 Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET`` set to anything but ``0``) silences
 it.  The default outputs (``docs/``, ``notebooks/``) are those of the project checkout, wherever
@@ -328,6 +329,20 @@ def _bench_derivations(args, folder: Path) -> int:
     return EXIT_CHECK if any(r["failures"] for r in rows) else EXIT_OK
 
 
+def _coverage_args(p):
+    p.add_argument("source", nargs="?", help="a source key (default: all)")
+    p.add_argument("--format", choices=("table", "json"), default="table")
+    p.add_argument("--readings", action="store_true", help="also read every quote automatically and compare")
+    p.add_argument("--write", action="store_true", help="write docs/coverage.md (and docs/readings.md)")
+    p.add_argument("--update-baseline", action="store_true", help="rewrite docs/coverage-baseline.json "
+                   "(and docs/readings-baseline.json) to the current lists")
+
+
+def _coverage(args) -> int:
+    from .report.ledger_command import run
+    return run(args)
+
+
 @dataclass(frozen=True)
 class Command:
     help: str
@@ -344,6 +359,8 @@ COMMANDS = {
     "scene": Command("every equilibrium of one body at one density", _scene_args, _scene),
     "phase": Command("stable positions against density, thresholds located", _phase_args, _phase),
     "bench": Command("numerics benchmark: write docs/numerics.md and its figures", _bench_args, _bench),
+    "coverage": Command("the coverage ledger: every math span and quantitative sentence quoted or waived; "
+                        "with --readings the readings checked against the print", _coverage_args, _coverage),
 }
 
 

@@ -17,7 +17,10 @@ class Erratum:
     ``corrected_reading`` is its SymPy reading, which the engine must verify
     against the derivation before the erratum is accepted.  ``evidence`` says
     why the fault is of this *kind* (print or scan) and why the correction is
-    right; the engine appends the counterexample it finds.
+    right; the engine appends the counterexample it finds.  ``same_as`` books a
+    repeat: the formula id (``derivation-id/name``) of the erratum that books
+    the same fault once; kind and confidence must then be the same
+    (:mod:`symfloat.report.repeats` checks it).
     """
 
     kind: str
@@ -25,6 +28,7 @@ class Erratum:
     corrected: str
     evidence: str
     corrected_reading: object = None
+    same_as: str = ""
 
     def __post_init__(self):
         if self.kind not in KINDS:
@@ -33,3 +37,5 @@ class Erratum:
             raise ValueError(f"erratum confidence {self.confidence!r} not in {CONFIDENCES}")
         if not self.corrected or not self.evidence:
             raise ValueError("an erratum needs a correction and its evidence")
+        if self.same_as and self.same_as.count("/") != 1:
+            raise ValueError(f"same_as {self.same_as!r} is not a formula id 'derivation-id/name'")

@@ -1,0 +1,97 @@
+"""``symfloat coverage [SOURCE] [--format table|json] [--readings] [--write] [--update-baseline]``.
+
+Prints the coverage ledger (:mod:`symfloat.report.ledger`) and, with ``--readings``, the check of the
+hand readings against the automatic ones (:mod:`symfloat.report.readings`); ``--format json`` gives
+``{"sources": {key: {"totals", "entries"}}, "readings": [...]}``.  ``--write`` writes
+``docs/coverage.md`` (and ``docs/readings.md``); ``--update-baseline`` rewrites the baselines
+``docs/coverage-baseline.json`` (and ``docs/readings-baseline.json``) to the current lists and says
+how many entries left and came.  Every run checks the ``same_as`` links of repeated errata
+(:mod:`symfloat.report.repeats`); ``--write`` also writes the unlinked repeats, ``docs/repeats.json``, and Scheeffer's
+cross-references to his equations, resolved, ``docs/references.md`` (:mod:`symfloat.report.references`).
+
+Exit status 1 when a span is unaccounted (each is listed: ``pending`` when the baseline lists it,
+``NEW`` otherwise), when a reading differs from the print without a declaration, or when a waiver
+is stale, or a repeat link does not hold; 2 on an unknown source.
+"""
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+from ..model.source import SOURCES
+from .files import write_if_changed
+from .ledger import LedgerError, baseline_keys, ledger, ledger_json, ledger_markdown, ledger_table
+from .references import references_markdown
+from .repeats import candidates_text, link_problems
+
+__all__ = ["run", "COVERAGE_BASELINE", "READINGS_BASELINE", "load_baseline", "baseline_text"]
+
+DOCS = Path("docs")
+COVERAGE_BASELINE = DOCS / "coverage-baseline.json"
+READINGS_BASELINE = DOCS / "readings-baseline.json"
+
+
+def load_baseline(path: Path) -> dict:
+    """A baseline file, or an empty one when there is none."""
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        return {"unaccounted": []}
+
+
+def baseline_text(sources=tuple(SOURCES)) -> str:
+    """The coverage baseline: every unaccounted span, as JSON."""
+    pending = [{k: v for k, v in e.as_dict().items() if k in ("source", "kind", "line", "column", "text")}
+               for s in sources for e in ledger(s) if e.status == "unaccounted"]
+    return json.dumps({"note": "Spans no derivation quotes and no waiver accounts for yet, pending the second "
+                               "pass over the sources (issue 12). This list may only shrink: the tests fail on an "
+                               "unaccounted span missing here and on an entry here that is accounted for.",
+                       "unaccounted": pending}, ensure_ascii=False, indent=1) + "\n"
+
+
+def run(args) -> int:
+    sources = [args.source] if args.source else list(SOURCES)
+    if args.source and args.source not in SOURCES:
+        print(f"symfloat: unknown source {args.source!r}; known: {', '.join(SOURCES)}", file=sys.stderr)
+        return 2
+    try:
+        entries = [e for s in sources for e in ledger(s)]
+    except LedgerError as exc:
+        print(f"symfloat: coverage ledger: {exc}", file=sys.stderr)
+        return 1
+    pending = baseline_keys(load_baseline(COVERAGE_BASELINE))
+    failed = any(e.status == "unaccounted" for e in entries)
+    rows = []
+    if args.readings:
+        from .readings import reading_rows, readings_baseline_text, readings_markdown, readings_table
+        rows = reading_rows(sources)
+        failed |= any(r["status"] == "differs" for r in rows)
+    if args.format == "json":
+        record = json.loads(ledger_json(sources))
+        if args.readings:
+            record["readings"] = rows
+        print(json.dumps(record, ensure_ascii=False, indent=1))
+    else:
+        print(ledger_table(sources, pending) + (readings_table(rows) if args.readings else ""), end="")
+    if args.readings:
+        if args.write:
+            write_if_changed(DOCS / "readings.md", readings_markdown(reading_rows(tuple(SOURCES))))
+        if args.update_baseline:
+            write_if_changed(READINGS_BASELINE, readings_baseline_text(reading_rows(tuple(SOURCES))))
+    problems = link_problems()
+    for msg in problems:
+        print(f"symfloat: repeated erratum: {msg}", file=sys.stderr)
+    failed |= bool(problems)
+    if args.write:
+        write_if_changed(DOCS / "coverage.md", ledger_markdown())
+        write_if_changed(DOCS / "repeats.json", candidates_text())
+        write_if_changed(DOCS / "references.md", references_markdown())
+    if args.update_baseline:
+        new = baseline_text()
+        before = baseline_keys(load_baseline(COVERAGE_BASELINE))
+        after = baseline_keys(json.loads(new))
+        write_if_changed(COVERAGE_BASELINE, new)
+        print(f"coverage baseline: {len(before - after)} entries accounted for and removed, "
+              f"{len(after - before)} added", file=sys.stderr)
+    return 1 if failed else 0
