@@ -27,9 +27,9 @@ import math
 import re
 from fractions import Fraction
 
+from ..errors import InputError
 from ..geometry.convex import hull_2d, polygon_area
 from ..geometry.floating import box, regular_prism, right_prism
-from ..errors import InputError
 from ..model.prediction import BODIES, Scene
 
 __all__ = ["SceneError", "parse_number", "parse_whole", "parse_dims", "parse_polygon", "make_scene",
