@@ -14,18 +14,9 @@ from symfloat.report.errata import errata_json, errata_markdown
 from symfloat.report.files import without_timings
 from symfloat.engine.runner import derivation_keys
 from symfloat.report.notebooks import build_notebook, notebook_stamp, recorded_stamp, write_notebooks
-from symfloat.report.record import verification_record
+from symfloat.report.record import record_differences, verification_record
 
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def _stable_record(record):
-    record = json.loads(json.dumps(record))
-    record["summary"].pop("seconds", None)
-    for f in record["formulas"]:
-        for n in f["numeric"]:
-            n.pop("seconds", None)
-    return record
 
 
 def test_no_check_fails(all_reports):
@@ -41,8 +32,22 @@ def test_errata_report_is_current(all_reports):
 
 def test_verification_record_is_current(all_reports):
     committed = json.loads((ROOT / "docs" / "verification.json").read_text(encoding="utf-8"))
-    assert _stable_record(committed) == _stable_record(verification_record(all_reports)), \
-        "docs/verification.json is stale: run `make run` and commit"
+    fresh = json.loads(json.dumps(verification_record(all_reports)))
+    assert record_differences(committed, fresh) == [], "docs/verification.json is stale: run `make run` and commit"
+
+
+def test_a_changed_verdict_or_witness_is_a_difference():
+    # the comparison must see what matters: a verdict, an evidence level, a digit of an mpmath witness
+    committed = json.loads((ROOT / "docs" / "verification.json").read_text(encoding="utf-8"))
+    for change in ({"verdict": "erratum"}, {"evidence": "sampled"}):
+        fresh = json.loads(json.dumps(committed))
+        fresh["formulas"][0].update(change)
+        assert record_differences(committed, fresh) == [f"{fresh['formulas'][0]['id']}: {next(iter(change))} differs"]
+    fresh = json.loads(json.dumps(committed))
+    f = next(f for f in fresh["formulas"] if any("mpmath" in n["method"] for n in f["numeric"]))
+    n = next(n for n in f["numeric"] if "mpmath" in n["method"])
+    n["abs_error"] = n["abs_error"] * (1 + 1e-12) + 1e-300
+    assert record_differences(committed, fresh) == [f"{f['id']}: witness {n['method']} differs"]
 
 
 def _cells(path):

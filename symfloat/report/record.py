@@ -6,7 +6,7 @@ from collections import Counter
 
 from ..engine.check import DerivationReport
 
-__all__ = ["verification_record", "verification_table", "VERDICTS"]
+__all__ = ["verification_record", "verification_table", "record_differences", "VERDICTS"]
 
 VERDICTS = ("verified", "erratum", "unverifiable", "trivial")
 
@@ -74,3 +74,51 @@ def verification_table(reports: list[DerivationReport]) -> str:
     for msg in s["failures"]:
         lines.append(f"FAILURE: {msg}")
     return "\n".join(lines) + "\n"
+
+
+# A float64 witness's error figure is itself computed in float64: its last bits depend on the
+# processor's vector units (summation order), not on the mathematics.  Two figures are the same
+# when they differ by less than 64 units in the last place of the measured quantity.
+FLOAT64_REPRODUCIBLE = 64 * 2.0 ** -52
+
+
+def _same_numeric(a: dict, b: dict) -> bool:
+    a, b = {k: v for k, v in a.items() if k != "seconds"}, {k: v for k, v in b.items() if k != "seconds"}
+    if "float64" not in str(a.get("method", "")) or a.keys() != b.keys():
+        return a == b
+    scale = abs(a["abs_error"] / a["rel_error"]) if a["rel_error"] else 1.0     # the committed quantity's size
+    close = (abs(a["abs_error"] - b["abs_error"]) <= FLOAT64_REPRODUCIBLE * scale
+             and abs(a["rel_error"] - b["rel_error"]) <= FLOAT64_REPRODUCIBLE)
+    rest = {k: v for k, v in a.items() if k not in ("abs_error", "rel_error")}
+    return close and rest == {k: v for k, v in b.items() if k not in ("abs_error", "rel_error")}
+
+
+def record_differences(committed: dict, fresh: dict) -> list[str]:
+    """Where two verification records differ in what must not change: everything but timings,
+    float64 witness errors compared to their own reproducibility (:data:`FLOAT64_REPRODUCIBLE`).
+
+    >>> e = {"method": "Gauss-Legendre n=8, float64", "abs_error": 1e-14, "rel_error": 1e-15, "seconds": 1}
+    >>> rec = lambda n: {"formulas": [{"id": "f", "numeric": [n]}], "summary": {"seconds": 2}}
+    >>> record_differences(rec(e), rec({**e, "abs_error": 1.05e-14, "seconds": 3}))
+    []
+    >>> record_differences(rec(e), rec({**e, "abs_error": 2e-13}))
+    ['f: witness Gauss-Legendre n=8, float64 differs']
+    """
+    out = []
+    old = {f["id"]: f for f in committed["formulas"]}
+    new = {f["id"]: f for f in fresh["formulas"]}
+    out += [f"{i}: only in the committed record" for i in old.keys() - new.keys()]
+    out += [f"{i}: not in the committed record" for i in new.keys() - old.keys()]
+    for i in sorted(old.keys() & new.keys()):
+        a, b = old[i], new[i]
+        for key in sorted((a.keys() | b.keys()) - {"numeric"}):
+            if a.get(key) != b.get(key):
+                out.append(f"{i}: {key} differs")
+        na, nb = a.get("numeric", []), b.get("numeric", [])
+        if len(na) != len(nb):
+            out.append(f"{i}: {len(na)} witness records committed, {len(nb)} now")
+        out += [f"{i}: witness {x.get('method')} differs" for x, y in zip(na, nb) if not _same_numeric(x, y)]
+    sa = {k: v for k, v in committed["summary"].items() if k != "seconds"}
+    sb = {k: v for k, v in fresh["summary"].items() if k != "seconds"}
+    out += [f"summary: {k} differs" for k in sorted(sa.keys() | sb.keys()) if sa.get(k) != sb.get(k)]
+    return out
