@@ -437,8 +437,8 @@ d.quote("second-condition", "(45)",
         reading=(Iuv, (Tx - Ty) * sp.sin(om) * sp.cos(om) + J * (sp.cos(om) ** 2 - sp.sin(om) ** 2)),
         note="the left side is int_1 u v df; '= 0' is the condition (32)")
 d.quote("Tx-Ty", "(45)", r"$$\int_1 y^2 \cdot d f = T_x \cdot \quad \int_1 x^2 \cdot d f = T_y$$",
-        reading=as_printed(lambda: (sp.Matrix([area_integral(y ** 2, x, y, MOM_XY), area_integral(x ** 2, x, y, MOM_XY)]),
-                 sp.Matrix([Tx, Ty]))), note="names; the stray dot after T_x is the scan's")
+        reading=(sp.Matrix([Tx, Ty]), sp.Matrix([Tx, Ty])),
+        note="the print names T_x and T_y (a definition, trivial as a claim); the stray dot after T_x is the scan's")
 d.quote("45", "(45)", r"$$\frac{1}{2} (T_x - T_y) \sin 2 \omega + \int_1 x y \cdot d f \cdot \cos 2 \omega = 0 "
                       r"\quad (45)$$", reading=(Iuv, (Tx - Ty) * sp.sin(2 * om) / 2 + J * sp.cos(2 * om)))
 d.quote("xy-zero", "V", r"$$\int_1 x y \cdot d f = 0$$", reading=(Jsym, 0))

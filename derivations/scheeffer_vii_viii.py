@@ -288,7 +288,8 @@ d.quote("s-upper", "VII", "Es soll dabei das spec. Gew.  $s > \\frac{1}{2}$\n\nv
                         corrected_reading=(sst, um1 / (um + um1))))
 d.quote("95", "(95)", "„Das statische Moment des über dem Wasser befindlichen Körperteils für die durch  $S$  "
         "senkrecht zur Drehungsachse gelegte Vertikalebene (Ebene der Figur 17) ist Null.“ (95)",
-        reading=as_printed(lambda: (My, V3 * sp.Matrix([0, 1, 0]).dot(MS3 / V3))), note="the moment itself; 'ist Null' is the condition")
+        reading=(My, Pxy * tg2),
+        note="read as the moment itself, tg phi_2 int x y df (step moment-y); 'ist Null' is the condition (95a)")
 d.quote("95-S3", "VII", r"Da nun  $S_2$  senkrecht unter  $S$  liegt, so muss auch  $S_3$  senkrecht über  $S$  liegen",
         reading=(sp.Matrix([M2h, M2y]), -sp.Matrix([M3, My])),
         note="read as V_1 (S_2 - S) = -V_3 (S_3 - S) in the two horizontal directions")
