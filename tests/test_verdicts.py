@@ -98,7 +98,7 @@ def test_every_step_with_a_changed_coefficient_is_refuted(derivation, step):
             results[s.result] = members(s.claim)[-1].xreplace(results)
     names = {step.result} if step.result is not None else set()
     res = _check_chain(mutated, names, results, Domain(derivation.domain, tuple(derivation.constraints)),
-                       f"mutant/{step.name}", prove=False, limit=0)
+                       f"mutant/{step.name}", book=None, proofs={}, prove=False)
     assert res.status == "refuted" and res.counterexample, (step.name, res)
 
 
