@@ -58,10 +58,10 @@ def test_a_scene_checks_no_derivation(monkeypatch):
     evaluated, _ = cover(solution)
     ring = [e for e in solution.equilibria if e.family == "ring"]
     # Scheeffer (80), (81a) and VI.D predict the oblique ring at 0.2113 < s < 0.2265; docs/errata.md books an
-    # erratum (claim) on VI.D and none on (80): the scene shows both declared verdicts and the correction
+    # erratum on (81a) and none on (80): the scene shows both declared verdicts and the correction
     [ours] = [p for p in ring[0].predictions if p["derivation"] == "scheeffer-vi-cf" and "(80)" in p["locators"]]
     assert ours["agrees"] and ours["verdicts"] == ["erratum", "verified"]
-    assert [c["locator"] for c in ours["corrections"]] == ["VI.D"]
+    assert [c["locator"] for c in ours["corrections"]] == ["(81a)"]
 
 
 def test_a_disagreement_is_shown():
