@@ -134,12 +134,16 @@ def _phase(args) -> int:
     if args.plot:
         phase_plot(diagram, args.plot)
         print(f"wrote {args.plot}", file=sys.stderr)
+    if not diagram.duality_ok:                  # a failed self-check: exit 1
+        print("symfloat: the duality s <-> 1 - s does not hold (see the thresholds marked NO DUAL)", file=sys.stderr)
+        return 1
     return 0
 
 
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     from .solver.bodies import SceneError
+    from .solver.selfcheck import SelfCheckError
     try:
         if args.command == "scene":
             return _scene(args)
@@ -191,6 +195,9 @@ def main(argv=None) -> int:
     except (SelectorError, SceneError) as exc:
         print(f"symfloat: {exc}", file=sys.stderr)
         return 2
+    except SelfCheckError as exc:          # a failed index sum or duality: a check failed, exit 1
+        print(f"symfloat: {exc}", file=sys.stderr)
+        return 1
     return 1 if _failed(reports) else 0
 
 
