@@ -203,17 +203,16 @@ def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
 
 
 def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, float, float]:
-    """Walk along a ring from *u* (steps along the null direction, Newton across) and return
-    ``("closed", length, error)`` when the walk comes back to *u*, else ``("arc", length, error)``
-    with the length (radians on the sphere) of the arc, both directions summed.  Where a step of
-    ``delta`` fails, the walk retries with steps a quarter as long down to ``delta / 4^5``, so an
-    arc's end is located to that step; the error adds the two ends' last step and the chords'
-    shortfall against the arc (a relative ``delta^2 / 24``)."""
+    """Walk along a ring from *u* (steps of ``delta`` along the null direction, Newton across) and
+    return ``("closed", length, error)`` when the walk comes back to *u*, else ``("arc", length,
+    error)`` with the length (radians on the sphere, the arcs between the points walked) of the arc,
+    both directions summed.  The error: an arc's end lies within one step past the last point
+    reached (``2 delta`` for both ends), a closed walk ends within ``delta / 2`` of its start."""
     start = local(poly, u, s)
     delta = min(0.005, _nearest_copy(start.u, group) / 4)   # a gap in the family narrower than this is not seen
-    total, ends = 0.0, 0.0
+    total = 0.0
     for direction in (1, -1):
-        loc, previous, step = start, None, delta
+        loc, previous = start, None
         for _ in range(max_steps):
             pairs = _tangent_eigen(loc)
             v = min(pairs, key=lambda p: abs(p[0]))[1]
@@ -221,20 +220,16 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
                 v = -v
             elif previous is None:
                 v = direction * v
-            nxt, ok = newton(poly, tangent_step(loc.u, step * v), s, scale)
+            nxt, ok = newton(poly, tangent_step(loc.u, delta * v), s, scale)
             moved = float(np.linalg.norm(nxt.u - loc.u))
-            if not ok or abs(nxt.U - start.U) > FLAT * scale or moved < step / 3 \
+            if not ok or abs(nxt.U - start.U) > FLAT * scale or moved < delta / 3 \
                     or min(abs(p[0]) for p in _tangent_eigen(nxt)) > 1e-6 * scale:
-                if step > delta / 4 ** 5:
-                    step /= 4
-                    continue
                 break
             previous, loc = loc.u, nxt
             total += 2 * math.asin(min(1.0, moved / 2))
-            if total > 2 * delta and np.linalg.norm(loc.u - start.u) < step / 2:
-                return "closed", total, delta / 2 + total * delta ** 2 / 24
-        ends += step
-    return "arc", total, ends + total * delta ** 2 / 24
+            if total > 2 * delta and np.linalg.norm(loc.u - start.u) < delta / 2:
+                return "closed", total, delta / 2
+    return "arc", total, 2 * delta
 
 
 def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps: int = 30) -> list[Critical]:
