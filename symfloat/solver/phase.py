@@ -61,6 +61,7 @@ class Threshold:
     source: list = field(default_factory=list)
     note: str = ""
     tilt: float = math.inf      # a ring's last tracked point: its tilt from the nearest axis
+    up: tuple = ()              # the tracked position on the stable side
 
 
 @dataclass
@@ -102,6 +103,11 @@ def _tracked_stable(poly, group, u, s, label, family, scale) -> tuple[bool, np.n
 
 
 def _locate(poly, group, scale, label, eq, s_in, s_out) -> tuple[float, float, float, str]:
+    value, err, tilt, note, _ = _locate_tracked(poly, group, scale, label, eq, s_in, s_out)
+    return value, err, tilt, note
+
+
+def _locate_tracked(poly, group, scale, label, eq, s_in, s_out):
     """Bisection between *s_in* (label stable) and *s_out* (not) with tracking; returns the
     threshold, the half-width of the bracket, for a ring the tilt of its last point from the
     nearest axis (a ring born from an axis has a tilt near zero there), and a note.  Where an
@@ -124,13 +130,13 @@ def _locate(poly, group, scale, label, eq, s_in, s_out) -> tuple[float, float, f
             step /= 2
     hi = lo + 2 * step
     err = abs(hi - lo) / 2
-    tilt = min(math.acos(min(1.0, abs(float(x)))) for x in u) if eq.family == "ring" else math.inf
+    tilt = min(math.acos(min(1.0, abs(float(x)))) for x in u)     # from the nearest axis
     note = ""
     if eq.family != "ring":
         event = _vertex_event(poly, u, lo, s_out, label, scale)
         if event is not None:
-            return event[0], event[1], tilt, "where the waterplane passes a vertex: the position joins a ring"
-    return (lo + hi) / 2, err, tilt, note
+            return event[0], event[1], tilt, "where the waterplane passes a vertex: the position joins a ring", u
+    return (lo + hi) / 2, err, tilt, note, u
 
 
 def _vertex_event(poly, u, s, s_out, label, scale, reach: float = 1e-3):
@@ -244,6 +250,8 @@ def _fold(poly, eq, value, err, side, scale) -> tuple[float, float]:
     h = 1e-6
     rate = np.linalg.norm(local(poly, loc.u, value + h).gradient - local(poly, loc.u, value - h).gradient) / (2 * h)
     past = 1e-11 * scale / max(float(rate), 1e-300)
+    if past > 1e-9:                 # too flat to correct: the offset is the error
+        return value, max(err, past)
     return value + math.copysign(past, side - value), max(err, past / 20)
 
 
@@ -320,9 +328,9 @@ def _thresholds_between(poly, group, scale, a, b, sa, sb) -> list[Threshold]:
     for label, side, (s_in, s_out) in [(x, "stable below", (sa, sb)) for x in sorted(set(a) - set(b))] + \
                                       [(x, "stable above", (sb, sa)) for x in sorted(set(b) - set(a))]:
         eq = (a if side == "stable below" else b)[label]
-        value, err, tilt, note = _locate(poly, group, scale, label, eq, s_in, s_out)
+        value, err, tilt, note, u = _locate_tracked(poly, group, scale, label, eq, s_in, s_out)
         t = Threshold(value, err, label, side, note=note)
-        t.tilt = tilt
+        t.tilt, t.up = tilt, tuple(u)
         out.append(t)
     return out
 
@@ -335,8 +343,6 @@ def _windows_between(poly, group, scale, sol_a, sol_b, sa, sb, a, b) -> list[Thr
         if sol is None:
             continue
         for label, eq, s_fold, side in _fold_windows(poly, group, scale, sol, s_from, s_to):
-            if label in a or label in b:
-                continue                    # a change the stable sets show: located as such
             upward = s_to > s_from
             value, err, tilt, note = _locate(poly, group, scale, label, eq, side, s_to)
             value, err = _fold(poly, eq, value, err, side, scale)
@@ -344,12 +350,54 @@ def _windows_between(poly, group, scale, sol_a, sol_b, sa, sb, a, b) -> list[Thr
                                  note="a fold: the position meets another branch and both end; "
                                       "error estimated"))
             value, err, tilt, note = _locate(poly, group, scale, label, eq, side, s_from)
-            out.append(Threshold(value, err, label, "stable above" if upward else "stable below", note=note))
+            birth = Threshold(value, err, label, "stable above" if upward else "stable below", note=note)
+            birth.tilt = tilt
+            out.append(birth)
+    return out
+
+
+def _follow(poly, group, scale, thresholds, densities) -> list[Threshold]:
+    """Every isolated position that becomes stable at a threshold is followed by continuation
+    across its stable range, up to the sweep density beyond the next one: where it stops being
+    stable before that (a fold in a window narrower than the sweep), the end is a threshold too."""
+    out = []
+    for t in thresholds:
+        if t.label.startswith("ring") or not t.up:
+            continue
+        toward = 1 if t.change == "stable above" else -1
+        beyond = sorted((s for s in densities if (s - t.density) * toward > 0), key=lambda s: abs(s - t.density))
+        if not beyond:
+            continue
+        s_end = beyond[min(1, len(beyond) - 1)]
+        start = t.density + toward * max(4 * t.bracket, 1e-6)      # off a pitchfork's quartic flatness
+        ok, u0 = _tracked_stable(poly, group, np.array(t.up), start, t.label, "isolated", scale)
+        if not ok:              # next to a pitchfork Newton falls back onto the parent: look beside it
+            near = [loc.u for loc in _partners(poly, group, np.array(t.up), start, scale)
+                    if position_label(loc.u, "isolated") == t.label and min(loc.eigen()[0]) > 0]
+            if not near:
+                continue
+            u0 = near[0]
+        eq = _Tracked(tuple(u0), "isolated")
+        value, err, tilt, note, u = _locate_tracked(poly, group, scale, t.label, eq, start, s_end)
+        if abs(value - s_end) <= 2 * err + 1e-9:
+            continue                                  # stable all the way
+        value, err = _fold(poly, _Tracked(tuple(u), "isolated"), value, err, start, scale)
+        out.append(Threshold(value, err, t.label, "stable below" if toward > 0 else "stable above",
+                             note=note or "a fold: the position meets another branch and both end; error estimated"))
     return out
 
 
 def _annotate_families(thresholds) -> None:
     for t in thresholds:
+        if t.label.startswith("tilted") and not t.note and t.tilt < 1e-2:
+            parents = [p for p in thresholds if p.label.startswith(("face", "edge")) and p.change != t.change
+                       and abs(p.density - t.density) <= 1e-6]
+            if parents:
+                # a tilted pair collapsing onto a symmetric position is born where that position changes
+                # stability (a pitchfork); Newton cannot follow it into the quartic potential
+                t.density, t.bracket = parents[0].density, parents[0].bracket
+                t.note = f"born from the position '{parents[0].label}' (pitchfork)"
+            continue
         if not t.label.startswith("ring") or t.note:
             continue
         parents = [p for p in thresholds if p.label.startswith("face") and abs(p.density - t.density) <= 1e-6]
@@ -412,6 +460,8 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None) -> Phase
                                                      for u in thresholds)]
             if any(t.label == k["label"] for t in new):
                 break
+    _annotate_families(thresholds)          # pitchforks snapped first: a branch is followed from its birth
+    thresholds += _follow(poly, group, scale, thresholds, [float(s) for s in densities])
     _annotate_families(thresholds)
     unique = []
     for t in thresholds:                     # one entry per position and density (after the families' snapping)
