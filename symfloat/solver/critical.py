@@ -50,6 +50,7 @@ class Critical:
     error_method: str = "exact"
     lipschitz: float = 0.0
     index: int | None = None    # set where the Hessian is degenerate: from the higher orders
+    flat: bool = False          # degenerate and flat to rounding along the null direction: no index
 
 
 def newton(poly: Polyhedron, u0, s, scale: float, iterations: int = 60, null_tol: float | None = None):

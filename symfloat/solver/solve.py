@@ -168,6 +168,8 @@ def _classified(poly, points, s, scale):
             evidence = "higher orders" if stability != "indifferent" else "undecided"
             if null_index(sides) is not None and others:
                 c.index = index_of((0.0, others[0]), null_index(sides))
+            else:
+                c.flat = True       # flat to rounding along the null direction: a family too short to trace
         out.append((c, stability, evidence))
     return out
 
@@ -180,13 +182,13 @@ def _searched(poly, s, seeds, group, scale):
     searches = ["seeds"]
     points = critical_points(poly, s, seeds, group, scale)
     classified = _classified(poly, points, s, scale)
-    index = None if any(c.ring for c in points) else poincare_hopf_sum(points)
+    index = _index_sum(points)
     if index in (None, 2):
         return classified, searches, index
     extra = [c.u for c in points] + more_seeds(poly, s, points, group, scale)
     points = critical_points(poly, s, extra, group, scale)
     classified = _classified(poly, points, s, scale)
-    index = None if any(c.ring for c in points) else poincare_hopf_sum(points)
+    index = _index_sum(points)
     searches.append("separatrices, soft directions and small gradient")
     if index in (None, 2):
         return classified, searches, index
@@ -196,9 +198,17 @@ def _searched(poly, s, seeds, group, scale):
         extra += [c.u for c in there] + more_seeds(poly, near, there, group, scale)
     points = critical_points(poly, s, extra, group, scale)
     classified = _classified(poly, points, s, scale)
-    index = None if any(c.ring for c in points) else poincare_hopf_sum(points)
+    index = _index_sum(points)
     searches.append("continuation from s +- 1e-4 s(1 - s)")
     return classified, searches, index
+
+
+def _index_sum(points):
+    """The Poincaré–Hopf sum, or None where it does not apply: a ring, or a degenerate point whose
+    potential is flat to rounding along its null direction (a family too short to walk)."""
+    if any(c.ring or c.flat for c in points):
+        return None
+    return poincare_hopf_sum(points)
 
 
 def _polyhedral(scene: Scene, seeds, group):
@@ -221,7 +231,8 @@ def _polyhedral(scene: Scene, seeds, group):
     families = index is None
     return out, {"poincare_hopf_index_sum": index, "expected_index_sum": 2, "seeds": len(seeds),
                  "searches": searches,
-                 **({"note": "one-parameter families present: the index sum does not apply"} if families else {})}
+                 **({"note": "one-parameter families (or degenerate points flat to rounding) present: the index sum "
+                             "does not apply"} if families else {})}
 
 
 def _name(scene: Scene) -> str:
