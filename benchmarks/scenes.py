@@ -142,11 +142,17 @@ def bifurcation_section(repeats: int) -> list[str]:
               "the saddle it is born from; the failed Poincaré–Hopf sum then triggers the second search: "
               "separatrices of every saddle, soft directions, small gradient). True error: against a 50-digit "
               "Newton refinement.", "",
-              "| δ | solver (s) | searches | index sum | tilt (rad) | true error (rad) | reported (rad) | bounded |",
-              "|---|---|---|---|---|---|---|---|"]
-    for d, sec, searches, index, tilt, true, reported in near:
-        lines.append(f"| {d} | {sec:.2f} | {searches} | {index} | {tilt:.3e} | {true:.1e} | {reported:.1e} | "
-                     f"{'yes' if true <= reported else 'NO'} |")
+              "Past the fold near 0.0190 (δ = 1e-3) the tilted class no longer exists. Where the new position "
+              "lies within about 1e-3 rad of the upright one (δ ≤ 1e-9) its potential is flat to rounding: the "
+              "solver reports it indifferent (undecided) and the index sum does not apply (None): that is how "
+              "far from this bifurcation it stays decided.", "",
+              "| δ | solver (s) | searches | index sum | tilted stable class: tilt (rad) | true error (rad) | "
+              "reported (rad) | bounded | undecided positions |",
+              "|---|---|---|---|---|---|---|---|---|"]
+    for d, sec, searches, index, tilt, true, reported, undecided in near:
+        found = (f"{tilt:.3e} | {true:.1e} | {reported:.1e} | {'yes' if true <= reported else 'NO'}" if tilt is not None
+                 else "none | - | - | -")
+        lines.append(f"| {d} | {sec:.2f} | {searches} | {index} | {found} | {undecided} |")
     steps = 24
     seconds, diagram = _phase_time(steps)
     fold = min((t for t in diagram.thresholds if t.note.startswith("a fold")), key=lambda t: t.density)
