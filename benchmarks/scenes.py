@@ -109,13 +109,13 @@ def _near_bifurcation(deltas, repeats):
         scene = make_scene("box", s, "1,2,3")
         seconds, sol = _median_time(lambda: solve(scene), repeats)
         tilted = [e for e in sol.equilibria if e.stability == "stable" and 0 < e.tilt_deg < 5]
+        true = reported = tilt = None
         if tilted:
             ref, _ = refine_sphere(scene, tilted[0].up)
             true, reported, tilt = angle_between(tilted[0].up, ref), tilted[0].error_rad, math.radians(tilted[0].tilt_deg)
-        else:
-            true = reported = tilt = float("nan")
+        undecided = sum(e.stability == "indifferent" for e in sol.equilibria)
         rows.append((delta, seconds, len(sol.checks["searches"]), sol.checks["poincare_hopf_index_sum"], tilt, true,
-                     reported))
+                     reported, undecided))
         print(f"box 1,2,3 at s_z + {delta}: {seconds:.2f} s", file=sys.stderr)
     return rows
 
