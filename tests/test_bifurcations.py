@@ -9,15 +9,12 @@ import math
 from fractions import Fraction
 
 import mpmath
-import numpy as np
 import pytest
 
 from symfloat.cli import main
 from symfloat.geometry.floating import box
 from symfloat.solver import make_scene, solve
-from symfloat.solver.bodies import polyhedron
 from symfloat.solver.errors import ROUNDING, equilibrium_error
-from symfloat.solver.local import local
 from symfloat.solver.phase import _stable_of, _windows_between
 from symfloat.solver.refine import angle_between, refine_planar, refine_sphere
 from symfloat.solver.selfcheck import IndexCheckError, index_of
