@@ -15,7 +15,7 @@ from symfloat.cli import main
 from symfloat.geometry.floating import box
 from symfloat.solver import make_scene, solve
 from symfloat.solver.errors import ROUNDING, equilibrium_error
-from symfloat.solver.phase import _stable_of, _windows_between
+from symfloat.solver.phase import _windows_between
 from symfloat.solver.refine import angle_between, refine_planar, refine_sphere
 from symfloat.solver.selfcheck import IndexCheckError, index_of
 from symfloat.solver.symmetry import box_group, planar_group
@@ -136,7 +136,7 @@ def test_cube_window_narrower_than_the_sweep_is_found(sa, sb):
     # to the fold of (171) at 1 - 0.76230923886638 (in (0.237, 0.238)), and dually above 1/2
     poly, group = box(1, 1, 1), box_group((1, 1, 1))
     a, b = solve(make_scene("cube", sa)), solve(make_scene("cube", sb))
-    found = _windows_between(poly, group, 1.0, a, b, sa, sb, _stable_of(a), _stable_of(b))
+    found = _windows_between(poly, group, 1.0, a, b, sa, sb)
     diagonal = sorted((t for t in found if t.label == "tilted, |u_x| = |u_y|"), key=lambda t: t.density)
     assert len({round(t.density, 9) for t in diagonal}) == 2
     x, fold = (diagonal[0], diagonal[-1]) if sa < 0.5 else (diagonal[-1], diagonal[0])

@@ -335,9 +335,9 @@ def _thresholds_between(poly, group, scale, a, b, sa, sb) -> list[Threshold]:
     return out
 
 
-def _windows_between(poly, group, scale, sol_a, sol_b, sa, sb, a, b) -> list[Threshold]:
-    """Both ends of every stable window that lies wholly between the sweep densities *sa* and *sb*
-    (stable sets *a*, *b*), found at the folds of the branches continued from either side."""
+def _windows_between(poly, group, scale, sol_a, sol_b, sa, sb) -> list[Threshold]:
+    """Both ends of every stable window that lies wholly between the sweep densities *sa* and *sb*,
+    found at the folds of the branches continued from either side (*sol_a*, *sol_b*; None: no side)."""
     out = []
     for sol, s_from, s_to in ((sol_a, sa, sb), (sol_b, sb, sa)):
         if sol is None:
@@ -434,12 +434,11 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None) -> Phase
         sa, sb = float(densities[k]), float(densities[k + 1])
         if set(stable[k]) != set(stable[k + 1]):
             thresholds += _thresholds_between(poly, group, scale, stable[k], stable[k + 1], sa, sb)
-        thresholds += _windows_between(poly, group, scale, solutions[k], solutions[k + 1], sa, sb,
-                                       stable[k], stable[k + 1])
+        thresholds += _windows_between(poly, group, scale, solutions[k], solutions[k + 1], sa, sb)
     # and before the first and after the last density of the sweep (continued to 1/64 of the gap)
     first, last = float(densities[0]), float(densities[-1])
-    thresholds += _windows_between(poly, group, scale, None, solutions[0], first / 64, first, {}, stable[0])
-    thresholds += _windows_between(poly, group, scale, solutions[-1], None, last, 1 - (1 - last) / 64, stable[-1], {})
+    thresholds += _windows_between(poly, group, scale, None, solutions[0], first / 64, first)
+    thresholds += _windows_between(poly, group, scale, solutions[-1], None, last, 1 - (1 - last) / 64)
     known = source_thresholds(body, base.dims)
 
     def matches(k, t):
