@@ -11,11 +11,12 @@
   dual at ``1 - s*`` with the opposite change.
 
 A check that still fails after the solver has worked harder is an error, never
-a footer: :class:`IndexCheckError` and :class:`DualityError` carry the message.
+a footer: :class:`IndexCheckError` carries the message (a phase diagram whose
+duality fails lists the thresholds without a dual and the command exits 1).
 """
 from __future__ import annotations
 
-__all__ = ["SelfCheckError", "IndexCheckError", "DualityError", "index_of"]
+__all__ = ["SelfCheckError", "IndexCheckError", "index_of"]
 
 
 class SelfCheckError(RuntimeError):
@@ -25,10 +26,6 @@ class SelfCheckError(RuntimeError):
 class IndexCheckError(SelfCheckError):
     """The Poincaré–Hopf sum (3-D) or minima − maxima (2-D) does not hold: an equilibrium is missing
     or mis-classified."""
-
-
-class DualityError(SelfCheckError):
-    """A threshold of a phase diagram has no dual threshold at ``1 - s``."""
 
 
 def index_of(eigenvalues, along_null: int | None = None) -> int:
