@@ -35,7 +35,7 @@ from pathlib import Path
 
 from .engine.cache import ReportCache
 from .engine.runner import Progress, verify
-from .errors import EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, InputError, SymfloatError
+from .errors import EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, InputError, SymfloatError
 from .project import GOLDEN, in_project, project_root
 from .registry import select
 from .report.errata import errata_json, errata_markdown
@@ -292,6 +292,8 @@ def _phase(args) -> int:
     print(phase_json(diagram) if args.format == "json" else phase_table(diagram))
     if plot:
         _write_plot(phase_plot, diagram, plot, args)
+    if not diagram.duality_ok:                  # a failed self-check: exit 1
+        raise CheckFailed("the duality s <-> 1 - s does not hold (see the thresholds marked NO DUAL)")
     return EXIT_OK
 
 

@@ -41,6 +41,7 @@ def _digits(x) -> Fraction:
 with mpmath.workdps(50):
     _S79 = mpmath.mpf(1) / 2 - mpmath.sqrt(mpmath.mpf(1) / 12)
     _S80 = (3 - mpmath.sqrt(2)) / 7
+    _SZ = (1 - mpmath.sqrt(mpmath.mpf(25) / 27)) / 2
 
 CASES = [
     Case("long square log, tilted position born at s* (2-D)", "1/2 - sqrt(1/12)", "scheeffer (79)", _S79,
@@ -53,6 +54,10 @@ CASES = [
          mpmath.mpf(23) / 32, lambda s: make_scene("section", s, polygon="0,0 1,0 1,1 0,1")),
     Case("long square log, double root of IX's quartic (n_1 -> 1)", "23/32", "scheeffer (140)",
          mpmath.mpf(23) / 32, lambda s: make_scene("section", s, polygon="0,0 1,0 1,1 0,1"), side=-1),
+    Case("box 1,2,3, tilted stable class born from face z up (issue 14)", "(1 - sqrt(25/27))/2", "scheeffer IV (18)",
+         _SZ, lambda s: make_scene("box", s, dims="1,2,3")),
+    Case("right isosceles triangle log next to full density (issue 14)", "1", "-", mpmath.mpf(1),
+         lambda s: make_scene("section", s, polygon="0,0 1,0 0,1"), side=-1),
 ]
 
 
@@ -117,7 +122,11 @@ def conditioning_markdown(rows) -> str:
              "For densities s* ± δ next to a bifurcation, every isolated equilibrium the solver reports (not fixed by "
              "symmetry) is refined by Newton's method at 50 digits on the exactly clipped body; the true error of the "
              "float64 position is compared with the error the solver reports (a Newton–Kantorovich bound, or next to "
-             "the bifurcation an estimate marked as such). The error grows like 1/λ as the second variation λ → 0.",
+             "the bifurcation an estimate marked as such). The error grows like 1/λ as the second variation λ → 0. "
+             "The Kantorovich radius is evaluated as 2η/(1 + √(1 − 2h)), not (1 − √(1 − 2h))/(Lβ), which cancels to "
+             "0 for small h (the triangle next to full density claimed 5e-16 where the true error was 3.4e-13). "
+             "The box 1,2,3 just above s_z is the case whose stable class was missed before the failed index sum "
+             "triggered a second search.",
              "", "| case | s* | δ | tilt (°) | stability | true error (rad) | reported (rad) | how | bounded |",
              "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:

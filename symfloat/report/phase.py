@@ -15,6 +15,8 @@ def phase_record(diagram) -> dict:
                         "note": t.note, "source": t.source} for t in diagram.thresholds],
         "source_thresholds_not_found": diagram.unmatched_sources,
         "duality_holds": diagram.duality_ok,
+        "thresholds_without_dual": [{"density": t.density, "error": t.bracket, "position": t.label,
+                                     "change": t.change} for t in diagram.unpaired],
         "seconds": diagram.seconds,
     }
 
@@ -42,7 +44,10 @@ def phase_table(diagram) -> str:
         lines.append(f"  DISAGREEMENT: {k['derivation']} {', '.join(k['locators'])} puts a threshold at s = "
                      f"{k['value']:.13f} ({k['label']}: {k['change']}); the solver finds none there")
     lines.append("")
-    lines.append("duality s <-> 1 - s: " + ("holds on the sweep" if diagram.duality_ok else "VIOLATED"))
+    for t in diagram.unpaired:
+        lines.append(f"  NO DUAL: s = {t.density:.13f} ({t.label}: {t.change}) has no threshold at 1 - s")
+    lines.append("duality s <-> 1 - s: " + ("holds on the sweep and threshold by threshold" if diagram.duality_ok
+                                            else "VIOLATED"))
     return "\n".join(lines)
 
 

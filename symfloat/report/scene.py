@@ -34,18 +34,20 @@ def scene_record(solution, evaluated, unmatched, seconds) -> dict:
         "density": float(sc.density),
         "density_exact": str(sc.density),
         "equilibria": [{
-            "up": [round(x, 15) for x in e.up],
+            "up": list(e.up),           # every digit of the float64 vector the error bound speaks of
             "tilt_deg": round(e.tilt_deg, 12),
             "stability": e.stability,
             "stability_evidence": e.stability_evidence,
             "family": e.family,
-            **({"ring_shape": e.ring_shape, "ring_length_rad": e.ring_length} if e.family == "ring" else {}),
+            **({"ring_shape": e.ring_shape, "ring_length_rad": e.ring_length,
+                "ring_length_error_rad": e.ring_length_error} if e.family == "ring" else {}),
             "potential": e.potential,
             "waterplane": e.waterplane,
             "formulas": e.formulas,
             "predictions": _predictions(e.predictions),
             "metacentric_eigenvalues": list(e.eigenvalues),
-            "error_rad": e.error_rad,
+            "error_rad": e.error_rad,          # for a ring: across it (its tilt)
+            "error_method": e.error_method,
             "copies": e.copies,
         } for e in solution.equilibria],
         "unmatched_predictions": _predictions(unmatched),

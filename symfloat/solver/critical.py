@@ -20,9 +20,10 @@ import numpy as np
 from ..geometry.floating import Polyhedron
 from .errors import STEP, equilibrium_error
 from .local import gradient_at, local, tangent_step
+from .selfcheck import index_of
 from .symmetry import orbit, representative, same_class
 
-__all__ = ["Critical", "newton", "critical_points", "poincare_hopf_sum"]
+__all__ = ["Critical", "newton", "descend", "critical_points", "poincare_hopf_sum", "more_seeds"]
 
 MAX_STEP = 0.3          # radians: Newton steps are capped (a trust region)
 MIN_FAMILY = 1e-3       # radians: a family of equilibria shorter than this is not reported as one
@@ -45,8 +46,11 @@ class Critical:
     ring: bool = False
     shape: str = ""             # a ring's shape: "closed" or "arc"
     length: float = 0.0         # a ring's length on the unit sphere (radians)
+    length_error: float = 0.0   # and the error of that length (radians)
     error_method: str = "exact"
     lipschitz: float = 0.0
+    index: int | None = None    # set where the Hessian is degenerate: from the higher orders
+    flat: bool = False          # degenerate and flat to rounding along the null direction: no index
 
 
 def newton(poly: Polyhedron, u0, s, scale: float, iterations: int = 60, null_tol: float | None = None):
@@ -99,7 +103,8 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int) -> tuple[flo
         plus, minus = (local(poly, tangent_step(np.asarray(c.u), sign * STEP * v), s) for sign in (1, -1))
         H = [x.basis @ x.hessian @ x.basis.T for x in (plus, minus)]
         lipschitz = max(lipschitz, float(np.linalg.norm(H[0] - H[1], 2)) / (2 * STEP))
-    return (*equilibrium_error(residual, min(abs(e) for e in c.eigen), lipschitz, scale), lipschitz)
+    slope = max(abs(e) for e in c.eigen) if c.ring else min(abs(e) for e in c.eigen)
+    return (*equilibrium_error(residual, slope, lipschitz, scale), lipschitz)
 
 
 def _faces_at(poly, dps):
@@ -108,14 +113,70 @@ def _faces_at(poly, dps):
 
 
 def poincare_hopf_sum(points: list[Critical]) -> int:
-    """Sum of indices over the whole sphere (rings count 0); 2 when no critical point is missing."""
+    """Sum of indices over the whole sphere (rings count 0); 2 when no critical point is missing.
+    A degenerate point counts with the index of its higher-order terms (``c.index``)."""
     total = 0
     for c in points:
         if c.ring:
             continue
-        lam1, lam2 = c.eigen
-        total += c.orbit * (1 if lam1 * lam2 > 0 else -1)
+        total += c.orbit * (c.index if c.index is not None else index_of(c.eigen))
     return total
+
+
+def descend(poly: Polyhedron, u0, s, scale: float, direction: int = 1, iterations: int = 200):
+    """Follow the potential down (*direction* = 1) or up (-1) from *u0* by saddle-free Newton steps
+    ``-direction * sum (v . g) / |lambda| v`` (``|lambda|`` floored, steps capped), then polish by
+    :func:`newton`: from a point just off a saddle along its unstable (stable) direction this reaches
+    the minimum (maximum) that the saddle's separatrix leads to, however close to the saddle it is."""
+    u = np.asarray(u0, dtype=float)
+    u = u / np.linalg.norm(u)
+    floor = 1e-4 * scale
+    for _ in range(iterations):
+        loc = local(poly, u, s)
+        g = loc.gradient
+        if np.linalg.norm(g) <= 1e-9 * scale:
+            break
+        w, vecs = np.linalg.eigh(loc.hessian)
+        step2 = -direction * sum(np.dot(v, g) / max(abs(lam), floor) * v for lam, v in zip(w, vecs.T))
+        step = loc.basis @ step2
+        norm = float(np.linalg.norm(step))
+        if norm > 0.1:
+            step *= 0.1 / norm
+        u = tangent_step(loc.u, step)
+    return newton(poly, u, s, scale)
+
+
+def more_seeds(poly: Polyhedron, s, points: list[Critical], group, scale: float,
+               grid: int = 20) -> list[np.ndarray]:
+    """Seeds for a second search when the index sum fails: the ends of every saddle's separatrices
+    (followed down and up from 1e-3 and 3e-2 rad off the saddle, :func:`descend`); Newton from steps
+    of 1e-3 ... 3e-2 rad along the softer direction of every point whose Hessian is nearly singular
+    (a branch born there lies close by); and the local minima of ``|grad U|`` on a grid of
+    ``grid x grid`` points over the octant (where the gradient is small, a critical point is near)."""
+    seeds = []
+    for c in points:
+        if c.ring:
+            continue
+        values, vectors = local(poly, c.u, s).eigen()
+        for lam, v in zip(values, vectors):
+            for delta in (1e-3, 3e-2):
+                for sign in (1, -1):
+                    if lam < 0 < max(values) or lam > 0 > min(values):
+                        seeds.append(descend(poly, tangent_step(c.u, sign * delta * v), s, scale,
+                                             1 if lam < 0 else -1)[0].u)
+        soft = vectors[int(np.argmin(np.abs(values)))]
+        if min(abs(values)) < 1e-2 * scale:
+            for delta in (1e-3, 3e-3, 1e-2, 3e-2):
+                for sign in (1, -1):
+                    seeds.append(newton(poly, tangent_step(c.u, sign * delta * soft), s, scale)[0].u)
+    patch = np.array(sphere_seeds(grid, math.pi / 2, grid))
+    size = np.array([float(np.linalg.norm(local(poly, u, s).gradient)) for u in patch])
+    close = patch @ patch.T >= math.cos(1.5 * math.pi / 2 / grid)
+    np.fill_diagonal(close, False)
+    for i in range(len(patch)):
+        if close[i].any() and size[i] <= size[close[i]].min():
+            seeds.append(patch[i])
+    return seeds
 
 
 def _nearest_copy(u, group, floor: float = 1e-3) -> float:
@@ -142,10 +203,12 @@ def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
     return False
 
 
-def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, float]:
-    """Walk along a ring from *u* (steps along the null direction, Newton across) and return
-    ``("closed", length)`` when the walk comes back to *u*, else ``("arc", length)`` with the
-    length (radians on the sphere) of the arc, both directions summed."""
+def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, float, float]:
+    """Walk along a ring from *u* (steps of ``delta`` along the null direction, Newton across) and
+    return ``("closed", length, error)`` when the walk comes back to *u*, else ``("arc", length,
+    error)`` with the length (radians on the sphere, the arcs between the points walked) of the arc,
+    both directions summed.  The error: an arc's end lies within one step past the last point
+    reached (``2 delta`` for both ends), a closed walk ends within ``delta / 2`` of its start."""
     start = local(poly, u, s)
     delta = min(0.005, _nearest_copy(start.u, group) / 4)   # a gap in the family narrower than this is not seen
     total = 0.0
@@ -164,10 +227,10 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
                     or min(abs(p[0]) for p in _tangent_eigen(nxt)) > 1e-6 * scale:
                 break
             previous, loc = loc.u, nxt
-            total += moved
+            total += 2 * math.asin(min(1.0, moved / 2))
             if total > 2 * delta and np.linalg.norm(loc.u - start.u) < delta / 2:
-                return "closed", total
-    return "arc", total
+                return "closed", total, delta / 2
+    return "arc", total, 2 * delta
 
 
 def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps: int = 30) -> list[Critical]:
@@ -193,11 +256,11 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
         found.append(Critical(representative(loc.u, group), loc.U, eigen, g, err, len(orbit(loc.u, group)), ring))
     for c in found:
         if c.ring:
-            c.shape, c.length = trace_family(poly, c.u, s, scale, group)
+            c.shape, c.length, c.length_error = trace_family(poly, c.u, s, scale, group)
             # a "ring" the walk cannot follow (or only for a few steps) is an isolated degenerate point
             c.ring = c.length >= MIN_FAMILY
-        if not c.ring:
-            c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps)
+        # a ring's error is across it (its tilt): the bound with its transverse eigenvalue
+        c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps)
     # a point of a ring found before the ring was recognised: same potential, not an equilibrium
     # that symmetry fixes (its residual is not exactly zero), no decided second variation
     rings = [c for c in found if c.ring]

@@ -4,7 +4,9 @@ Newton–Kantorovich: for ``F(x) = 0`` with residual ``r = |F(x0)|`` (evaluated
 at 30 digits, so the float64 rounding of the solver is included),
 ``beta = |F'(x0)^-1|`` and ``L`` a Lipschitz constant of ``F'`` near ``x0``,
 let ``eta = beta r`` and ``h = L beta eta``.  When ``h <= 1/2`` a root lies
-within ``(1 - sqrt(1 - 2h)) / (L beta) <= 2 eta`` of ``x0``.  ``L`` is
+within ``(1 - sqrt(1 - 2h)) / (L beta) = 2 eta / (1 + sqrt(1 - 2h)) <= 2 eta``
+of ``x0``; the second form is the one evaluated (the first cancels to 0 in
+float64 for ``h`` below 1e-16 and would claim an error smaller than ``eta``).  ``L`` is
 measured by central differences of ``F'`` (an estimate, not a proof).  When
 ``h > 1/2`` (next to a bifurcation, where ``F'`` is nearly singular) the
 theorem says nothing; then the potential is at worst quartic in the
@@ -32,7 +34,7 @@ def equilibrium_error(residual: float, slope: float, lipschitz: float, scale: fl
             return 2 * eta + ROUNDING, "kantorovich"
         h = lipschitz * beta * eta
         if h <= 0.5:
-            return (1 - math.sqrt(1 - 2 * h)) / (lipschitz * beta) + ROUNDING, "kantorovich"
+            return 2 * eta / (1 + math.sqrt(1 - 2 * h)) + ROUNDING, "kantorovich"
     return (residual / scale) ** (1 / 3) + ROUNDING, "near-bifurcation estimate"
 
 

@@ -24,7 +24,7 @@ from ..geometry.floating import box
 from .bodies import make_scene
 from .critical import newton
 from .solve import body_scale, solve
-from .symmetry import box_group, representative
+from .symmetry import box_group, representative, same_class
 
 __all__ = ["Threshold", "PhaseDiagram", "phase_diagram", "position_label", "source_thresholds"]
 
@@ -61,6 +61,7 @@ class Threshold:
     source: list = field(default_factory=list)
     note: str = ""
     tilt: float = math.inf      # a ring's last tracked point: its tilt from the nearest axis
+    up: tuple = ()              # the tracked position on the stable side
 
 
 @dataclass
@@ -73,16 +74,21 @@ class PhaseDiagram:
     unmatched_sources: list     # source thresholds the solver does not find
     duality_ok: bool
     seconds: float
+    unpaired: list = field(default_factory=list)    # thresholds whose dual at 1 - s is missing
 
 
 def _stable(scene):
-    sol = solve(scene)
+    return _stable_of(solve(scene))
+
+
+def _stable_of(sol):
     return {position_label(e.up, e.family): e for e in sol.equilibria if e.stability == "stable"}
 
 
 def _tracked_stable(poly, group, u, s, label, family, scale) -> tuple[bool, np.ndarray]:
     """Whether the equilibrium tracked from *u* exists at density *s*, keeps its label and is
-    stable.  The sign of the second variation decides (no indifference band), so the predicate
+    stable.  The sign of the second variation decides, beyond rounding (``1e-14 * scale``: a point
+    of a ring, where an eigenvalue is zero, is not a stable isolated position), so the predicate
     flips at the threshold itself.  A ring must stay a ring: off every axis, one null direction,
     positive across."""
     loc, ok = newton(poly, u, s, scale)
@@ -93,25 +99,166 @@ def _tracked_stable(poly, group, u, s, label, family, scale) -> tuple[bool, np.n
         tilted = position_label(loc.u, "isolated").startswith("tilted")
         off_axis = min(np.linalg.norm(np.abs(loc.u) - e) for e in np.eye(3)) > 1e-6
         return tilted and off_axis and w[1] > 0 and abs(w[0]) < 1e-6 * scale, loc.u
-    return position_label(loc.u, family) == label and min(w) > 0, loc.u
+    return position_label(loc.u, family) == label and min(w) > 1e-14 * scale, loc.u
 
 
-def _locate(poly, group, scale, label, eq, s_in, s_out) -> tuple[float, float, float]:
+def _locate(poly, group, scale, label, eq, s_in, s_out) -> tuple[float, float, float, str]:
+    value, err, tilt, note, _ = _locate_tracked(poly, group, scale, label, eq, s_in, s_out)
+    return value, err, tilt, note
+
+
+def _locate_tracked(poly, group, scale, label, eq, s_in, s_out):
     """Bisection between *s_in* (label stable) and *s_out* (not) with tracking; returns the
-    threshold, the half-width of the bracket and, for a ring, the tilt of its last point from the
-    nearest axis (a ring born from an axis has a tilt near zero there)."""
+    threshold, the half-width of the bracket, for a ring the tilt of its last point from the
+    nearest axis (a ring born from an axis has a tilt near zero there), and a note.  Where an
+    isolated position's smallest eigenvalue vanishes to a high order (it joins a ring of
+    equilibria: ``lambda ~ (s - s*)^3`` for the cube's oblique positions), the sign is lost in
+    rounding up to 1e-5 from ``s*``; then the threshold is where the waterplane passes a vertex of
+    the body on the tracked branch (the ring of the first rotation region ends exactly there), found
+    by bisection on which vertices are above water."""
     u = np.array(eq.up)
-    lo, hi = s_in, s_out
-    while abs(hi - lo) > BRACKET:
-        mid = (lo + hi) / 2
-        ok, u_mid = _tracked_stable(poly, group, u, mid, label, eq.family, scale)
+    lo, step = s_in, (s_out - s_in) / 8
+    while abs(step) > BRACKET / 2:          # continuation in s: a step is halved where the predicate fails
+        mid = lo + step
+        ok = abs(mid - s_in) < abs(s_out - s_in)
+        if ok:
+            ok, u_mid = _tracked_stable(poly, group, u, mid, label, eq.family, scale)
+            ok = ok and (eq.family == "ring" or np.linalg.norm(u_mid - u) <= 0.05)
         if ok:
             lo, u = mid, u_mid
         else:
-            hi = mid
+            step /= 2
+    hi = lo + 2 * step
     err = abs(hi - lo) / 2
-    tilt = min(math.acos(min(1.0, abs(float(x)))) for x in u) if eq.family == "ring" else math.inf
-    return (lo + hi) / 2, err, tilt
+    tilt = min(math.acos(min(1.0, abs(float(x)))) for x in u)     # from the nearest axis
+    note = ""
+    if eq.family != "ring":
+        event = _vertex_event(poly, u, lo, s_out, label, scale)
+        if event is not None:
+            return event[0], event[1], tilt, "where the waterplane passes a vertex: the position joins a ring", u
+    return (lo + hi) / 2, err, tilt, note, u
+
+
+def _vertex_event(poly, u, s, s_out, label, scale, reach: float = 1e-3):
+    """The density within *reach* of *s* where the waterplane of the branch tracked from *u* passes
+    a vertex, when the eigenvalue on the side of *s_out* is zero to rounding there (a ring point),
+    as ``(density, half-width)``; None when there is no such event."""
+    from .local import local
+    if min(abs(local(poly, u, s).eigen()[0])) > 1e-6 * scale:
+        return None                                 # a simple eigenvalue crossing: the bisection is exact
+    towards = math.copysign(1.0, s_out - s)
+    ends = []
+    for target in (s - towards * reach, s + towards * reach):
+        loc, ok = newton(poly, u, target, scale)
+        if not ok or position_label(loc.u, "isolated") != label:
+            return None
+        ends.append((target, loc))
+    (lo, a), (hi, b) = ends
+    inside = _vertices_above(poly, a)
+    if _vertices_above(poly, b) == inside or min(abs(b.eigen()[0])) > 1e-12 * scale:
+        return None
+    v = a.u
+    while abs(hi - lo) > BRACKET:
+        mid = (lo + hi) / 2
+        loc, ok = newton(poly, v, mid, scale)
+        if ok and _vertices_above(poly, loc) == inside:
+            lo, v = mid, loc.u
+        else:
+            hi = mid
+    return (lo + hi) / 2, abs(hi - lo) / 2
+
+
+def _vertices_above(poly, loc) -> tuple:
+    """Which vertices of the body lie above the waterplane of *loc* (the combinatorial type of the
+    floating position: the potential is analytic in the density while it does not change)."""
+    t = float(loc.state.t)
+    return tuple(float(np.dot(loc.u, [float(c) for c in v])) > t for v in poly.vertices)
+
+
+def _continue(poly, u, label, sa, sb, scale):
+    """Follow the isolated equilibrium *u* (labelled *label*) from density *sa* towards *sb* by
+    Newton's method in steps of the density (halved where Newton fails, lands on another label or
+    moves by more than 0.1 rad).  Returns ``(s, u, died)``: the last density reached, the point
+    there and whether the branch ends before *sb* (a fold: the step fell below 1e-13)."""
+    s, step = sa, sb - sa
+    while s != sb:
+        target = sb if abs(sb - s) <= abs(step) else s + step
+        loc, ok = newton(poly, u, target, scale)
+        if ok and position_label(loc.u, "isolated") == label and np.linalg.norm(loc.u - u) <= 0.1:
+            s, u, step = target, loc.u, step * 2
+        else:
+            step /= 2
+            if abs(step) < BRACKET:
+                return s, u, True
+    return s, u, False
+
+
+def _partners(poly, group, u, s, scale) -> list:
+    """Equilibria next to *u* at density *s* (a fold's other branch): Newton from steps of 1e-3 ...
+    3e-2 rad along the softer eigenvector, those of another symmetry class."""
+    from .critical import newton as _newton
+    from .local import local, tangent_step
+    values, vectors = local(poly, u, s).eigen()
+    soft = vectors[int(np.argmin(np.abs(values)))]
+    out = []
+    for delta in (1e-3, 3e-3, 1e-2, 3e-2):
+        for sign in (1, -1):
+            loc, ok = _newton(poly, tangent_step(u, sign * delta * soft), s, scale)
+            if ok and not same_class(loc.u, u, group, 1e-6) and not any(same_class(loc.u, v.u, group, 1e-6)
+                                                                       for v in out):
+                out.append(loc)
+    return out
+
+
+def _fold_windows(poly, group, scale, solution, sa, sb) -> list:
+    """Stable positions that live only between two sweep densities: every isolated equilibrium of
+    *solution* (at *sa*) is continued towards *sb*; where one ends (a fold), the branch it meets there
+    is found and, when that one is stable, returned as ``(label, eq, s_fold, s_side)``: stable at
+    ``s_side`` next to the fold."""
+    out = []
+    for e in solution.equilibria:
+        if e.family == "ring":
+            continue
+        label = position_label(e.up, e.family)
+        s, u, died = _continue(poly, np.array(e.up), label, sa, sb, scale)
+        if not died:
+            continue
+        # a little back from the fold, where the two branches that meet there are apart
+        side = s - math.copysign(min(1e-4, abs(s - sa) / 2), sb - sa)
+        here, ok = newton(poly, u, side, scale)
+        for loc in _partners(poly, group, here.u if ok else u, side, scale):
+            w = loc.eigen()[0]
+            if min(w) > 0:
+                eq = _Tracked(tuple(loc.u), "isolated")
+                out.append((position_label(loc.u, "isolated"), eq, s, side))
+    return out
+
+
+def _fold(poly, eq, value, err, side, scale) -> tuple[float, float]:
+    """A fold's density from the tracked bisection's *value*: past a fold Newton's method still
+    accepts the point of least gradient while that gradient is below ``1e-11 * scale`` (its
+    convergence test), and the least gradient grows with the distance from the fold at the rate
+    ``|dg/ds|`` (central difference at the fold point); so the bisection ends
+    ``c = 1e-11 * scale / |dg/ds|`` past the fold, and the fold is ``value - c`` (towards *side*).
+    The error is estimated as ``c / 20`` or the bracket if larger.  Witness: the cube's fold of
+    Scheeffer X (171), 0.76230923886638 at 30 digits (tests/test_scheeffer_x.py), is met to 1e-14
+    where the uncorrected bisection was 3e-11 and 9e-11 off."""
+    from .local import local
+    loc, ok = newton(poly, np.array(eq.up), value + math.copysign(BRACKET, side - value), scale)
+    if not ok:
+        return value, err
+    h = 1e-6
+    rate = np.linalg.norm(local(poly, loc.u, value + h).gradient - local(poly, loc.u, value - h).gradient) / (2 * h)
+    past = 1e-11 * scale / max(float(rate), 1e-300)
+    if past > 1e-9:                 # too flat to correct: the offset is the error
+        return value, max(err, past)
+    return value + math.copysign(past, side - value), max(err, past / 20)
+
+
+@dataclass
+class _Tracked:
+    up: tuple
+    family: str
 
 
 def _predicted_stable(d, scene, group) -> dict:
@@ -181,15 +328,76 @@ def _thresholds_between(poly, group, scale, a, b, sa, sb) -> list[Threshold]:
     for label, side, (s_in, s_out) in [(x, "stable below", (sa, sb)) for x in sorted(set(a) - set(b))] + \
                                       [(x, "stable above", (sb, sa)) for x in sorted(set(b) - set(a))]:
         eq = (a if side == "stable below" else b)[label]
-        value, err, tilt = _locate(poly, group, scale, label, eq, s_in, s_out)
-        t = Threshold(value, err, label, side)
-        t.tilt = tilt
+        value, err, tilt, note, u = _locate_tracked(poly, group, scale, label, eq, s_in, s_out)
+        t = Threshold(value, err, label, side, note=note)
+        t.tilt, t.up = tilt, tuple(u)
         out.append(t)
+    return out
+
+
+def _windows_between(poly, group, scale, sol_a, sol_b, sa, sb) -> list[Threshold]:
+    """Both ends of every stable window that lies wholly between the sweep densities *sa* and *sb*,
+    found at the folds of the branches continued from either side (*sol_a*, *sol_b*; None: no side)."""
+    out = []
+    for sol, s_from, s_to in ((sol_a, sa, sb), (sol_b, sb, sa)):
+        if sol is None:
+            continue
+        for label, eq, s_fold, side in _fold_windows(poly, group, scale, sol, s_from, s_to):
+            upward = s_to > s_from
+            value, err, tilt, note = _locate(poly, group, scale, label, eq, side, s_to)
+            value, err = _fold(poly, eq, value, err, side, scale)
+            out.append(Threshold(value, err, label, "stable below" if upward else "stable above",
+                                 note="a fold: the position meets another branch and both end; "
+                                      "error estimated"))
+            value, err, tilt, note = _locate(poly, group, scale, label, eq, side, s_from)
+            birth = Threshold(value, err, label, "stable above" if upward else "stable below", note=note)
+            birth.tilt = tilt
+            out.append(birth)
+    return out
+
+
+def _follow(poly, group, scale, thresholds, densities) -> list[Threshold]:
+    """Every isolated position that becomes stable at a threshold is followed by continuation
+    across its stable range, up to the sweep density beyond the next one: where it stops being
+    stable before that (a fold in a window narrower than the sweep), the end is a threshold too."""
+    out = []
+    for t in thresholds:
+        if t.label.startswith("ring") or not t.up:
+            continue
+        toward = 1 if t.change == "stable above" else -1
+        beyond = sorted((s for s in densities if (s - t.density) * toward > 0), key=lambda s: abs(s - t.density))
+        if not beyond:
+            continue
+        s_end = beyond[min(1, len(beyond) - 1)]
+        start = t.density + toward * max(4 * t.bracket, 1e-6)      # off a pitchfork's quartic flatness
+        ok, u0 = _tracked_stable(poly, group, np.array(t.up), start, t.label, "isolated", scale)
+        if not ok:              # next to a pitchfork Newton falls back onto the parent: look beside it
+            near = [loc.u for loc in _partners(poly, group, np.array(t.up), start, scale)
+                    if position_label(loc.u, "isolated") == t.label and min(loc.eigen()[0]) > 0]
+            if not near:
+                continue
+            u0 = near[0]
+        eq = _Tracked(tuple(u0), "isolated")
+        value, err, tilt, note, u = _locate_tracked(poly, group, scale, t.label, eq, start, s_end)
+        if abs(value - s_end) <= 2 * err + 1e-9:
+            continue                                  # stable all the way
+        value, err = _fold(poly, _Tracked(tuple(u), "isolated"), value, err, start, scale)
+        out.append(Threshold(value, err, t.label, "stable below" if toward > 0 else "stable above",
+                             note=note or "a fold: the position meets another branch and both end; error estimated"))
     return out
 
 
 def _annotate_families(thresholds) -> None:
     for t in thresholds:
+        if t.label.startswith("tilted") and not t.note and t.tilt < 1e-2:
+            parents = [p for p in thresholds if p.label.startswith(("face", "edge")) and p.change != t.change
+                       and abs(p.density - t.density) <= 1e-6]
+            if parents:
+                # a tilted pair collapsing onto a symmetric position is born where that position changes
+                # stability (a pitchfork); Newton cannot follow it into the quartic potential
+                t.density, t.bracket = parents[0].density, parents[0].bracket
+                t.note = f"born from the position '{parents[0].label}' (pitchfork)"
+            continue
         if not t.label.startswith("ring") or t.note:
             continue
         parents = [p for p in thresholds if p.label.startswith("face") and abs(p.density - t.density) <= 1e-6]
@@ -215,16 +423,22 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None) -> Phase
     group = box_group(base.dims)
     scale = body_scale(base)
     densities = [Fraction(k, steps + 1) for k in range(1, steps + 1)]
-    stable = []
+    stable, solutions = [], []
     for i, s in enumerate(densities, 1):
         if progress:
             progress(f"[{i}/{len(densities)}] density {float(s):.4f}")
-        stable.append(_stable(make_scene(body, s, base.dims)))
+        solutions.append(solve(make_scene(body, s, base.dims)))
+        stable.append(_stable_of(solutions[-1]))
     thresholds = []
     for k in range(len(densities) - 1):
+        sa, sb = float(densities[k]), float(densities[k + 1])
         if set(stable[k]) != set(stable[k + 1]):
-            thresholds += _thresholds_between(poly, group, scale, stable[k], stable[k + 1],
-                                              float(densities[k]), float(densities[k + 1]))
+            thresholds += _thresholds_between(poly, group, scale, stable[k], stable[k + 1], sa, sb)
+        thresholds += _windows_between(poly, group, scale, solutions[k], solutions[k + 1], sa, sb)
+    # and before the first and after the last density of the sweep (continued to 1/64 of the gap)
+    first, last = float(densities[0]), float(densities[-1])
+    thresholds += _windows_between(poly, group, scale, None, solutions[0], first / 64, first)
+    thresholds += _windows_between(poly, group, scale, solutions[-1], None, last, 1 - (1 - last) / 64)
     known = source_thresholds(body, base.dims)
 
     def matches(k, t):
@@ -245,6 +459,8 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None) -> Phase
                                                      for u in thresholds)]
             if any(t.label == k["label"] for t in new):
                 break
+    _annotate_families(thresholds)          # pitchforks snapped first: a branch is followed from its birth
+    thresholds += _follow(poly, group, scale, thresholds, [float(s) for s in densities])
     _annotate_families(thresholds)
     unique = []
     for t in thresholds:                     # one entry per position and density (after the families' snapping)
@@ -256,7 +472,17 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None) -> Phase
     matched = {id(k) for t in thresholds for k in t.source}
     unmatched = [k for k in known if id(k) not in matched]
     labels = [sorted(x) for x in stable]
-    duality_ok = all(labels[k] == labels[len(labels) - 1 - k] for k in range(len(labels)))
+    unpaired = _unpaired(thresholds)
+    duality_ok = all(labels[k] == labels[len(labels) - 1 - k] for k in range(len(labels))) and not unpaired
     thresholds.sort(key=lambda t: (t.density, t.label))
     return PhaseDiagram(body, tuple(str(d) for d in base.dims), [float(s) for s in densities], labels, thresholds,
-                        unmatched, duality_ok, time.perf_counter() - start)
+                        unmatched, duality_ok, time.perf_counter() - start, unpaired)
+
+
+def _unpaired(thresholds) -> list:
+    """Thresholds without a dual: the same position at ``1 - s`` (within both errors and the float
+    rounding of ``1 - s``) with the opposite change (a box turned upside down is the same box)."""
+    opposite = {"stable below": "stable above", "stable above": "stable below"}
+    return [t for t in thresholds
+            if not any(u.label == t.label and u.change == opposite[t.change]
+                       and abs(u.density - (1 - t.density)) <= t.bracket + u.bracket + 1e-15 for u in thresholds)]

@@ -19,17 +19,19 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field
+from fractions import Fraction
 
 import numpy as np
 
 from ..model.prediction import Scene
 from .bodies import centred_polygon, polyhedron
-from .critical import critical_points, distinct_seeds, poincare_hopf_sum, sphere_seeds
+from .critical import critical_points, distinct_seeds, more_seeds, poincare_hopf_sum, sphere_seeds
 from .cylinder import cylinder_slice
 from .errors import STEP, eigenvalue_error, equilibrium_error
 from .local import local, tangent_step, waterplane_polygon
 from .planar import roots
 from .refine import planar_residual
+from .selfcheck import IndexCheckError, index_of
 from .symmetry import box_group, orbit, planar_group, prism_group, representative
 
 __all__ = ["Equilibrium", "Solution", "solve", "stability_of", "body_scale"]
@@ -50,6 +52,7 @@ class Equilibrium:
     copies: int | None          # symmetric copies of the position; None for a continuous orbit
     ring_shape: str = ""        # a ring: "closed" (all the way round) or "arc" (a piece of one)
     ring_length: float = 0.0    # its length on the unit sphere of up vectors (radians)
+    ring_length_error: float = 0.0  # the error of that length (the walk's step at the ends, chords)
     stability_evidence: str = "second variation"     # or "higher orders", or "undecided"
     formulas: list = field(default_factory=list)
     predictions: list = field(default_factory=list)
@@ -80,18 +83,34 @@ def stability_of(eigenvalues, tolerance: float, ring: bool = False) -> str:
     return "indifferent"
 
 
-def higher_order(change, others, scale: float) -> str:
-    """Stability where the second variation vanishes in one direction, from the potential's change
-    ``change(eps)`` along it at eps = +-1e-3, +-3e-3, +-1e-2 rad: unstable when it falls on either side,
-    stable when it rises on both at every step and the other eigenvalues are positive, else
-    indifferent (flat to rounding: the higher orders decide nothing at these steps)."""
-    changes = [change(sign * eps) for eps in (1e-3, 3e-3, 1e-2) for sign in (1, -1)]
+def null_sides(change, scale: float) -> tuple:
+    """How the potential behaves on each side of a null direction of the second variation, from its
+    change ``change(eps)`` at eps = +-1e-3, +-3e-3, +-1e-2 rad: per side +1 when it rises at every
+    step, -1 when it falls at every step, None when it is flat to rounding (or mixed)."""
     floor = 1e-13 * scale
-    if min(changes) < -floor or any(e < 0 for e in others):
+    sides = []
+    for sign in (1, -1):
+        changes = [change(sign * eps) for eps in (1e-3, 3e-3, 1e-2)]
+        sides.append(1 if min(changes) > floor else -1 if max(changes) < -floor else None)
+    return tuple(sides)
+
+
+def null_index(sides) -> int | None:
+    """+1 for a minimum along the null direction, -1 for a maximum, 0 for an inflection (odd
+    order), None when a side is flat to rounding."""
+    if None in sides:
+        return None
+    return sides[0] if sides[0] == sides[1] else 0
+
+
+def higher_order(sides, others) -> str:
+    """Stability where the second variation vanishes in one direction (*sides* from
+    :func:`null_sides`): unstable when the potential falls along it on either side or another
+    eigenvalue is negative, stable when it rises on both sides and the others are positive, else
+    indifferent (flat to rounding: the higher orders decide nothing at these steps)."""
+    if -1 in sides or any(e < 0 for e in others):
         return "unstable"
-    if min(changes) > floor:
-        return "stable"
-    return "indifferent"
+    return "stable" if sides == (1, 1) else "indifferent"
 
 
 def _clean(u) -> tuple:
@@ -133,33 +152,92 @@ def _shape(vertices: list, scale: float) -> str:
     return names.get(k, f"{k}-gon")
 
 
+def _classified(poly, points, s, scale):
+    """Stability, its evidence and (for degenerate points) the index of every isolated point from
+    the second variation or, where an eigenvalue is zero to its error, the higher orders."""
+    out = []
+    for c in points:
+        tol = eigenvalue_error(c.lipschitz, c.error_rad, scale)
+        stability, evidence = stability_of(c.eigen, tol, c.ring), "second variation"
+        if stability == "indifferent" and not c.ring:
+            values, vectors = local(poly, c.u, s).eigen()      # at the representative itself
+            null = vectors[int(np.argmin(np.abs(values)))]
+            others = [e for e in c.eigen if abs(e) > tol]
+            sides = null_sides(lambda eps: local(poly, tangent_step(c.u, eps * null), s).U - c.U, scale)
+            stability = higher_order(sides, others)
+            evidence = "higher orders" if stability != "indifferent" else "undecided"
+            if null_index(sides) is not None and others:
+                c.index = index_of((0.0, others[0]), null_index(sides))
+            else:
+                c.flat = True       # flat to rounding along the null direction: a family too short to trace
+        out.append((c, stability, evidence))
+    return out
+
+
+def _searched(poly, s, seeds, group, scale):
+    """Critical points from *seeds*; when the Poincaré–Hopf sum fails, a second search (separatrices,
+    soft directions, small gradient: :func:`more_seeds`), then continuation from the neighbouring
+    densities ``s +- 1e-4`` (every critical point there, tracked to *s* by Newton's method).  Returns
+    the points with their classification, the searches made and the index sum (None with rings)."""
+    searches = ["seeds"]
+    points = critical_points(poly, s, seeds, group, scale)
+    classified = _classified(poly, points, s, scale)
+    index = _index_sum(points)
+    if index in (None, 2):
+        return classified, searches, index
+    extra = [c.u for c in points] + more_seeds(poly, s, points, group, scale)
+    points = critical_points(poly, s, extra, group, scale)
+    classified = _classified(poly, points, s, scale)
+    index = _index_sum(points)
+    searches.append("separatrices, soft directions and small gradient")
+    if index in (None, 2):
+        return classified, searches, index
+    for delta in (Fraction(1, 10 ** 4), -Fraction(1, 10 ** 4)):
+        near = s + delta * min(s, 1 - s)
+        there = critical_points(poly, near, seeds, group, scale)
+        extra += [c.u for c in there] + more_seeds(poly, near, there, group, scale)
+    points = critical_points(poly, s, extra, group, scale)
+    classified = _classified(poly, points, s, scale)
+    index = _index_sum(points)
+    searches.append("continuation from s +- 1e-4 s(1 - s)")
+    return classified, searches, index
+
+
+def _index_sum(points):
+    """The Poincaré–Hopf sum, or None where it does not apply: a ring, or a degenerate point whose
+    potential is flat to rounding along its null direction (a family too short to walk)."""
+    if any(c.ring or c.flat for c in points):
+        return None
+    return poincare_hopf_sum(points)
+
+
 def _polyhedral(scene: Scene, seeds, group):
     poly = polyhedron(scene)
     scale = body_scale(scene)
     s = scene.density
     seeds = distinct_seeds(seeds, group)
-    points = critical_points(poly, s, seeds, group, scale)
+    classified, searches, index = _searched(poly, s, seeds, group, scale)
+    if index not in (None, 2):
+        raise IndexCheckError(f"{_name(scene)}: the Poincaré–Hopf index sum of the equilibria found is {index}, "
+                              f"not 2, after {len(searches)} searches ({'; '.join(searches)}): an equilibrium is "
+                              f"missing or mis-classified")
     out = []
-    for c in points:
+    for c, stability, evidence in classified:
         loc = local(poly, c.u, s)
-        eig = c.eigen
-        tol = eigenvalue_error(c.lipschitz, c.error_rad, scale)
-        stability, evidence = stability_of(eig, tol, c.ring), "second variation"
-        if stability == "indifferent" and not c.ring:
-            values, vectors = loc.eigen()              # at the representative itself
-            null = vectors[int(np.argmin(np.abs(values)))]
-            others = [e for e in eig if abs(e) > tol]
-            stability = higher_order(lambda eps: local(poly, tangent_step(c.u, eps * null), s).U - c.U,
-                                     others, scale)
-            evidence = "higher orders" if stability != "indifferent" else "undecided"
         out.append(Equilibrium(_clean(c.u), _tilt(c.u), stability,
                                "ring" if c.ring else "isolated", c.U, _shape(waterplane_polygon(poly, loc.state), scale),
-                               tuple(float(e) for e in eig), c.error_rad, c.error_method, c.orbit,
-                               c.shape, c.length, evidence))
-    families = any(c.ring for c in points)
-    return out, {"poincare_hopf_index_sum": None if families else poincare_hopf_sum(points),
-                 "expected_index_sum": 2, "seeds": len(seeds),
-                 **({"note": "one-parameter families present: the index sum does not apply"} if families else {})}
+                               tuple(float(e) for e in c.eigen), c.error_rad, c.error_method, c.orbit,
+                               c.shape, c.length, c.length_error, evidence))
+    families = index is None
+    return out, {"poincare_hopf_index_sum": index, "expected_index_sum": 2, "seeds": len(seeds),
+                 "searches": searches,
+                 **({"note": "one-parameter families (or degenerate points flat to rounding) present: the index sum "
+                             "does not apply"} if families else {})}
+
+
+def _name(scene: Scene) -> str:
+    dims = ",".join(str(d) for d in scene.dims) if scene.dims else " ".join(f"{x},{y}" for x, y in scene.polygon)
+    return f"{scene.body} ({dims}) at density {scene.density}"
 
 
 def _section(scene: Scene):
@@ -177,30 +255,50 @@ def _section(scene: Scene):
         return float(e @ g3), float(e @ H3 @ e)
 
     lo, hi, ends = _fundamental_arc(group)
-    points = max(48, round(360 * (hi - lo) / (2 * math.pi)))
-    found = roots(evaluate, lo, hi, points, scale, include_ends=ends)
+    base = max(48, round(360 * (hi - lo) / (2 * math.pi)))
+    searches = []
+    for points in (base, 8 * base, 64 * base):      # a finer grid when minima - maxima fails
+        searches.append(f"grid of {points}")
+        out, index = _section_roots(scene, poly, group, evaluate, roots(evaluate, lo, hi, points, scale,
+                                                                         include_ends=ends), scale)
+        if index == 0:
+            break
+    else:
+        raise IndexCheckError(f"{_name(scene)}: minima - maxima of the heel angle is {index}, not 0, after "
+                              f"{len(searches)} searches ({'; '.join(searches)}): an equilibrium is missing "
+                              f"or mis-classified")
+    return out, {"minima_minus_maxima": index, "expected_index_sum": 0, "grid": points, "searches": searches,
+                 "arc_deg": [math.degrees(lo), math.degrees(hi)]}
+
+
+def _section_roots(scene, poly, group, evaluate, found, scale):
+    """The equilibria of a section from the roots of ``U'`` on the fundamental arc, one per class,
+    and minima - maxima over the whole circle (a degenerate root counts by its higher orders)."""
+    s = scene.density
     out, index = [], 0
     for r in found:
         u = np.array([math.cos(r.theta), math.sin(r.theta), 0.0])
         if any(np.linalg.norm(g @ u - np.array(e.up)) <= 1e-7 for e in out for g in group):
             continue
-        index += len(orbit(u, group)) * (1 if r.fprime > 0 else -1)
         loc = local(poly, u, s)
         rep = representative(u, group)
         lipschitz = abs(evaluate(r.theta + STEP)[1] - evaluate(r.theta - STEP)[1]) / (2 * STEP)
         err, method = equilibrium_error(planar_residual(scene, r.theta), abs(r.fprime), lipschitz, scale)
         tol = eigenvalue_error(lipschitz, err, scale)
         stability, evidence = stability_of((r.fprime,), tol), "second variation"
+        side = 1 if r.fprime > 0 else -1
         if stability == "indifferent":
             heel = lambda t: local(poly, np.array([math.cos(t), math.sin(t), 0.0]), s).U
-            stability = higher_order(lambda eps: heel(r.theta + eps) - loc.U, [], scale)
+            sides = null_sides(lambda eps: heel(r.theta + eps) - loc.U, scale)
+            side = null_index(sides)
+            stability = higher_order(sides, [])
             evidence = "higher orders" if stability != "indifferent" else "undecided"
+        index += len(orbit(u, group)) * (side if side is not None else (1 if r.fprime > 0 else -1))
         out.append(Equilibrium(_clean(rep), 90.0, stability, "isolated",
                                loc.U, "rectangle", (r.fprime,),
                                err, method, len(orbit(u, group)), stability_evidence=evidence))
     out.sort(key=lambda e: (round(e.potential / scale, 12), e.up))
-    return out, {"minima_minus_maxima": index, "expected_index_sum": 0, "grid": points,
-                 "arc_deg": [math.degrees(lo), math.degrees(hi)]}
+    return out, index
 
 
 def _fundamental_arc(group) -> tuple[float, float, bool]:
@@ -239,8 +337,8 @@ def _cylinder(scene: Scene):
         tol = eigenvalue_error(lipschitz, err, scale)
         stability, evidence = stability_of((q.fprime,), tol), "second variation"
         if stability == "indifferent":
-            stability = higher_order(lambda eps: float(cylinder_slice(r, L, q.theta + eps, s).U) - float(c.U), [],
-                                     scale)
+            stability = higher_order(null_sides(lambda eps: float(cylinder_slice(r, L, q.theta + eps, s).U)
+                                               - float(c.U), scale), [])
             evidence = "higher orders" if stability != "indifferent" else "undecided"
         out.append(Equilibrium(up, math.degrees(q.theta), stability, "isolated", float(c.U),
                                c.shape, (q.fprime,), err, method, 2 if q.theta == 0.0 else None,

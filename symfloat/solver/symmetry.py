@@ -11,6 +11,7 @@ from __future__ import annotations
 import itertools
 import math
 
+import mpmath
 import numpy as np
 
 __all__ = ["box_group", "prism_group", "planar_group", "orbit", "same_class", "representative"]
@@ -48,28 +49,33 @@ def prism_group(n: int) -> list[np.ndarray]:
     return group
 
 
-def planar_group(polygon, tol: float = 1e-12) -> list[np.ndarray]:
+def planar_group(polygon, dps: int = 50) -> list[np.ndarray]:
     """The symmetries of a convex polygon centred at its centroid (as 3x3 matrices acting on the
-    x-y plane): every rotation and reflection that maps the vertex set onto itself."""
-    pts = np.array(polygon, dtype=float)
-    scale = float(np.max(np.abs(pts)))
-    n = len(pts)
+    x-y plane): every rotation and reflection that maps the vertex set onto itself.  The vertices
+    are exact (rationals), so the test is made at *dps* digits with tolerance ``10^(10 - dps)``
+    times the size: a true symmetry maps vertices onto vertices to that precision, a polygon
+    symmetric only to 1e-13 (or to any error above the tolerance) is not symmetric."""
     group = []
-    for i in range(n):
-        for reflect in (False, True):
-            # candidate: the map sending vertex 0 to vertex i (and, reflected, orientation reversed)
-            a0 = math.atan2(pts[0, 1], pts[0, 0])
-            ai = math.atan2(pts[i, 1], pts[i, 0])
-            if reflect:
-                m2 = np.array([[math.cos(a0 + ai), math.sin(a0 + ai)], [math.sin(a0 + ai), -math.cos(a0 + ai)]])
-            else:
-                m2 = np.array([[math.cos(ai - a0), -math.sin(ai - a0)], [math.sin(ai - a0), math.cos(ai - a0)]])
-            image = pts @ m2.T
-            if all(np.min(np.linalg.norm(pts - p, axis=1)) <= tol * scale for p in image):
-                m = np.eye(3)
-                m[:2, :2] = m2
-                if not any(np.allclose(m, g) for g in group):
-                    group.append(m)
+    with mpmath.workdps(dps):
+        pts = [(mpmath.mpf(x.numerator) / x.denominator if hasattr(x, "numerator") else mpmath.mpf(x),
+                mpmath.mpf(y.numerator) / y.denominator if hasattr(y, "numerator") else mpmath.mpf(y))
+               for x, y in polygon]
+        scale = max(max(abs(x), abs(y)) for x, y in pts)
+        tol = mpmath.mpf(10) ** (10 - dps) * scale
+        a0 = mpmath.atan2(pts[0][1], pts[0][0])
+        for i in range(len(pts)):
+            ai = mpmath.atan2(pts[i][1], pts[i][0])
+            for reflect in (False, True):
+                # the map sending vertex 0 to vertex i (reflected: orientation reversed)
+                c, s = (mpmath.cos(a0 + ai), mpmath.sin(a0 + ai)) if reflect else \
+                    (mpmath.cos(ai - a0), mpmath.sin(ai - a0))
+                m2 = [[c, s], [s, -c]] if reflect else [[c, -s], [s, c]]
+                image = [(m2[0][0] * x + m2[0][1] * y, m2[1][0] * x + m2[1][1] * y) for x, y in pts]
+                if all(min(mpmath.hypot(p[0] - q[0], p[1] - q[1]) for q in pts) <= tol for p in image):
+                    m = np.eye(3)
+                    m[:2, :2] = [[float(v) for v in row] for row in m2]
+                    if not any(np.allclose(m, g) for g in group):
+                        group.append(m)
     return group
 
 
