@@ -170,7 +170,7 @@ def _errata(args) -> int:
     out = None
     if args.format == "md":
         if args.output is not None:
-            out = writable_target(_not_golden(args.output) if selector else args.output)
+            out = _not_golden(writable_target(args.output)) if selector else writable_target(args.output)
         elif selector is None:
             out = writable_target(in_project("docs/errata.md"))
     reports = _reports(args, selector)

@@ -323,6 +323,7 @@ def no_work(monkeypatch, tmp_path):
 @example(["scene", "cube", "--density=0.3", "--plot=x\x00.png"])
 @example(["phase", "box", "--dims=1,0.01,1", "--steps=2000"])
 @example(["errata", ""])
+@example(["errata", "0", "--output=\x00"])
 def test_every_field_of_the_command_line_is_answered_or_refused_in_one_line(no_work, argv):
     _cli_property(argv)
 
