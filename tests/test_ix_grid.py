@@ -49,3 +49,15 @@ def test_the_committed_grid_is_stamped_with_the_present_solver_and_tables():
     from symfloat.report.stamp import stamp_of
     path = Path(__file__).resolve().parents[1] / "docs" / "scheeffer-ix-grid.md"
     assert stamp_of(path) == ix_grid.grid_stamp(), "docs/scheeffer-ix-grid.md is stale: run `make run` and commit"
+
+
+def test_a_stamp_does_not_depend_on_where_the_checkout_lies(tmp_path):
+    # a fresh clone elsewhere must find the committed stamps current: files enter by name and content
+    from symfloat.report.stamp import digest
+    a, b = tmp_path / "one" / "f.py", tmp_path / "two" / "f.py"
+    for f in (a, b):
+        f.parent.mkdir()
+        f.write_text("x = 1\n")
+    assert digest(a) == digest(b)
+    b.write_text("x = 2\n")
+    assert digest(a) != digest(b)

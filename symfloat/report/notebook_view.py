@@ -216,7 +216,7 @@ class NotebookView:
     def _witnesses(self, target: str) -> str:
         """What the first-principles witnesses of *target* compute, in the derivation's words."""
         ws = [w for w in self.derivation.witnesses if target.split("#")[0] in w.targets]
-        return "; ".join(w.description + (f" ({len(w.cases)} cases)" if getattr(w, "cases", None) else "")
+        return "; ".join(w.description + (f" ({len(w.instances)} cases)" if hasattr(w, "instances") else "")
                          for w in ws)
 
     def step_markdown(self, name: str) -> str:

@@ -19,11 +19,12 @@ _STAMP = re.compile(r"<!-- content stamp: ([0-9a-f]{16,64}) -->")
 
 
 def digest(*parts) -> str:
-    """SHA-256 (first 32 hex digits) of *parts*: strings, bytes, or paths (their bytes)."""
+    """SHA-256 (first 32 hex digits) of *parts*: strings, bytes, or files (their name and bytes:
+    never where the checkout lies, so that every clone computes the same stamp)."""
     h = hashlib.sha256()
     for part in parts:
         if isinstance(part, Path):
-            h.update(part.as_posix().encode() + b"\0" + part.read_bytes())
+            h.update(part.name.encode() + b"\0" + part.read_bytes())
         elif isinstance(part, bytes):
             h.update(part)
         else:
