@@ -99,6 +99,12 @@ def _selector(text):
     return text
 
 
+def _search_proofs_arg(p):
+    p.add_argument("--search-proofs", action="store_true",
+                   help="search every claim's symbolic proof anew instead of replaying its recorded "
+                        "certificate (derivations/proofs/), and record the outcome")
+
+
 def _reports(args, selector=None, cache=None):
     return verify(selector, cache=cache or _cache(args), progress=Progress(quiet=_quiet(args)),
                   search_proofs=args.search_proofs, record_proofs=True)
@@ -147,6 +153,7 @@ def _summary_by_source(reports) -> str:
 # ---------------------------------------------------------------- the subcommands
 
 def _verify_args(p):
+    _search_proofs_arg(p)
     p.add_argument("selector", nargs="?", help="a source key (graefe) or a derivation-id prefix")
     p.add_argument("--format", choices=("table", "json"), default="table")
 
@@ -158,6 +165,7 @@ def _verify(args) -> int:
 
 
 def _errata_args(p):
+    _search_proofs_arg(p)
     p.add_argument("selector", nargs="?", help="a source key or derivation-id prefix: print (or --output) "
                                                "the report of that selection")
     p.add_argument("--format", choices=("md", "json"), default="md")
@@ -185,6 +193,7 @@ def _errata(args) -> int:
 
 
 def _notebooks_args(p):
+    _search_proofs_arg(p)
     p.add_argument("selector", nargs="?")
     p.add_argument("--output", type=Path, help="directory (default: notebooks/ of the checkout)")
 
@@ -357,7 +366,7 @@ COMMANDS = {
     "errata": Command("write docs/errata.md, or print a selection's errata (Markdown or JSON)",
                       _errata_args, _errata),
     "notebooks": Command("build and execute the derivation notebooks", _notebooks_args, _notebooks),
-    "run": Command("verify everything and write every report and notebook", lambda p: None, _run),
+    "run": Command("verify everything and write every report and notebook", _search_proofs_arg, _run),
     "scene": Command("every equilibrium of one body at one density", _scene_args, _scene),
     "phase": Command("stable positions against density, thresholds located", _phase_args, _phase),
     "bench": Command("numerics benchmark: write docs/numerics.md and its figures", _bench_args, _bench),
@@ -370,9 +379,6 @@ def _parser():
     common = _Parser(add_help=False)
     common.add_argument("--quiet", action="store_true", help="no progress on stderr (or SYMFLOAT_QUIET=1)")
     common.add_argument("--no-cache", action="store_true", help="re-check every derivation")
-    common.add_argument("--search-proofs", action="store_true",
-                        help="search every claim's symbolic proof anew instead of replaying its recorded "
-                             "certificate (derivations/proofs/), and record the outcome")
     p = _Parser(prog="symfloat", description="Machine-checked re-derivation of classical "
                 "texts on floating bodies and centroids.", epilog=EXIT_STATUS + ".")
     sub = p.add_subparsers(dest="command", required=True)
