@@ -42,7 +42,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.witness import Case, Computed
 from symfloat.model.claim import as_printed
 
@@ -137,32 +137,32 @@ def claim(text):
 
 
 # ================================================================ §§192–203: stability
-d.step("stability-definition", sp.Eq(Slo, Mw * GMlo), "definition", result=Slo,
+d.step("stability-definition", Eq(Slo, Mw * GMlo), "definition", result=Slo,
        note="§194: the stability is the restoring moment divided by the small angle of inclination; the "
             "restoring moment is the weight M times the righting arm GM*phi; here for G at the depth b below B")
-d.step("stability-definition-G-above", sp.Eq(Shi, Mw * GMhi), "definition", result=Shi,
+d.step("stability-definition-G-above", Eq(Shi, Mw * GMhi), "definition", result=Shi,
        note="the same for G at the height b above B")
-d.step("stability-definition-EF", sp.Eq(SKlo, Mw * GKlo), "definition", result=SKlo)
-d.step("stability-definition-EF-G-above", sp.Eq(SKhi, Mw * GKhi), "definition", result=SKhi)
-d.step("metacentric-height-G-below", sp.Eq(GMlo, Iw / V + h), "lemma",
+d.step("stability-definition-EF", Eq(SKlo, Mw * GKlo), "definition", result=SKlo)
+d.step("stability-definition-EF-G-above", Eq(SKhi, Mw * GKhi), "definition", result=SKhi)
+d.step("metacentric-height-G-below", Eq(GMlo, Iw / V + h), "lemma",
        uses=("scheeffer-vi-cf:upright-metacentric-height",), result=GMlo,
        note="GM = T/V - e with T the moment of the waterplane about the axis and e the height of G above B; "
             "here e = -b")
-d.step("metacentric-height-G-above", sp.Eq(GMhi, Iw / V - h), "lemma",
+d.step("metacentric-height-G-above", Eq(GMhi, Iw / V - h), "lemma",
        uses=("scheeffer-vi-cf:upright-metacentric-height",), result=GMhi, note="e = +b")
-d.step("metacentric-height-EF-G-below", sp.Eq(GKlo, Kw / V + h), "lemma",
+d.step("metacentric-height-EF-G-below", Eq(GKlo, Kw / V + h), "lemma",
        uses=("scheeffer-vi-cf:upright-metacentric-height",), result=GKlo,
        note="the same about the latitudinal axis EF, whose waterplane moment is K_w")
-d.step("metacentric-height-EF-G-above", sp.Eq(GKhi, Kw / V - h), "lemma",
+d.step("metacentric-height-EF-G-above", Eq(GKhi, Kw / V - h), "lemma",
        uses=("scheeffer-vi-cf:upright-metacentric-height",), result=GKhi)
 d.step("strip-moment", (sp.Integral(Pp * w ** 2, (w, -PN, PM)), Pp * (PM ** 3 + PN ** 3) / 3), "integration",
        note="§202: the strip Pp between the ordinates PN (one side of AB) and PM (the other) has the "
             "second moment Pp ∫ w^2 dw about AB")
 d.step("strip-moment-one-side", (sp.Integral(Pp * w ** 2, (w, 0, PM)), PM ** 3 * Pp / 3), "integration")
-d.step("sum-of-cubes-AB", sp.Eq(Q, 3 * Iw), "definition", uses=("strip-moment",), result=Q,
+d.step("sum-of-cubes-AB", Eq(Q, 3 * Iw), "definition", uses=("strip-moment",), result=Q,
        note="Q denotes ∫(PM^3 + PN^3)Pp; summing strip-moment over all strips Pp, Q/3 is the second "
             "moment I_w of the waterplane about AB (§202)")
-d.step("sum-of-cubes-EF", sp.Eq(Q2, 3 * Kw), "definition", uses=("strip-moment",), result=Q2,
+d.step("sum-of-cubes-EF", Eq(Q2, 3 * Kw), "definition", uses=("strip-moment",), result=Q2,
        note="the same with the ordinates QM, QN to EF")
 
 d.quote("stability-AB", "§201",
@@ -190,11 +190,11 @@ d.quote("stability-K", "§203", r"$M(\frac{K}{v} + b)$",
         note=claim("the stability about the latitudinal axis EF is M(K/V + b)."))
 
 # ================================================================ §205–206: oblique axis, generic figure
-d.step("cosine", sp.Eq(n, sp.sqrt(1 - m ** 2)), "definition", result=n,
+d.step("cosine", Eq(n, sp.sqrt(1 - m ** 2)), "definition", result=n,
        note="§205: m = sin ACP, n = cos ACP, m^2 + n^2 = 1")
-d.step("axis-coordinate-t", sp.Eq(t, sp.Matrix([x, y]).dot(sp.Matrix([n, m]))), "definition", result=t,
+d.step("axis-coordinate-t", Eq(t, sp.Matrix([x, y]).dot(sp.Matrix([n, m]))), "definition", result=t,
        note="t = Cq is the projection of Cw on the axis PQ of direction (n, m)")
-d.step("axis-coordinate-u", sp.Eq(u, sp.Matrix([x, y]).dot(sp.Matrix([m, -n]))), "definition", result=u,
+d.step("axis-coordinate-u", Eq(u, sp.Matrix([x, y]).dot(sp.Matrix([m, -n]))), "definition", result=u,
        note="u = wq is the signed distance of w from PQ, the projection on the unit normal (m, -n)")
 d.step("pythagoras", (t ** 2 + u ** 2, x ** 2 + y ** 2), "algebra", uses=("axis-coordinate-t", "axis-coordinate-u", "cosine"))
 d.step("sine-from-coordinates", ((x * u + y * t) / (x ** 2 + y ** 2), m), "algebra", uses=("axis-coordinate-t", "axis-coordinate-u", "cosine"))
@@ -202,21 +202,21 @@ d.step("cosine-from-coordinates", ((x * t - y * u) / (x ** 2 + y ** 2), n), "alg
        uses=("axis-coordinate-t", "axis-coordinate-u", "cosine"))
 d.quote("unit-circle", "§205", r"ita ut sit $m^2 + n^2 = 1$", reading=(m ** 2 + n ** 2, 1),
         note=claim("sine and cosine of the angle ACP satisfy m² + n² = 1 (the whole sine being 1)."))
-d.quote("pythagoras", "§205", r"erit tt + uu $= xx + yy$", reading=sp.Eq(t ** 2 + u ** 2, x ** 2 + y ** 2),
+d.quote("pythagoras", "§205", r"erit tt + uu $= xx + yy$", reading=Eq(t ** 2 + u ** 2, x ** 2 + y ** 2),
         note=claim("the distances of a particle from C measured in either frame agree: t² + u² = x² + y²."))
-d.quote("sine", "§205", r"$\frac{xy+yt}{xx+yy} = m$", reading=sp.Eq((x * y + y * t) / (x ** 2 + y ** 2), m),
+d.quote("sine", "§205", r"$\frac{xy+yt}{xx+yy} = m$", reading=Eq((x * y + y * t) / (x ** 2 + y ** 2), m),
         erratum=Erratum(
             "transcription", "medium", r"\frac{xu+yt}{xx+yy} = m",
             "With t = nx + my, u = mx - ny (printed next) x u + y t = m(x^2 + y^2), whereas x y + y t is not "
             "m(x^2 + y^2) (counterexample below). The companion formula (xt - yu)/(xx+yy) = n is printed "
             "correctly with u; a u read as y by the OCR (the letters are close in the italic of 1749). A "
             "printer's slip cannot be excluded from the transcription alone, hence medium.",
-            corrected_reading=sp.Eq((x * u + y * t) / (x ** 2 + y ** 2), m)),
+            corrected_reading=Eq((x * u + y * t) / (x ** 2 + y ** 2), m)),
         note=claim("the sine of the angle between the axes is (xu + yt)/(x² + y²)."))
-d.quote("cosine", "§205", r"$\frac{xt-yu}{xx+yy} = n$", reading=sp.Eq((x * t - y * u) / (x ** 2 + y ** 2), n),
+d.quote("cosine", "§205", r"$\frac{xt-yu}{xx+yy} = n$", reading=Eq((x * t - y * u) / (x ** 2 + y ** 2), n),
         note=claim("the cosine of the angle between the axes is (xt − yu)/(x² + y²)."))
 d.quote("rotated-coordinates", "§205", r"$u = mx - ny$ et $t = nx + my$",
-        reading=sp.Eq(sp.Matrix([u, t]), sp.Matrix([m * x - n * y, n * x + m * y])),
+        reading=Eq(sp.Matrix([u, t]), sp.Matrix([m * x - n * y, n * x + m * y])),
         note=claim("solving these relations gives u = mx − ny and t = nx + my."))
 
 IT, KT, JT, PT, RT = sp.symbols("I_T K_T J_T P_T R_T")
@@ -262,17 +262,17 @@ d.step("quad-area-value", (Dk, (a + c) * b / 2), "integration", uses=("quad-area
 integral_step("quad-centroid", xC, kite(x) / kite(1),
        note="abscissa of the centroid C measured from A")
 d.step("quad-centroid-value", (xC, (2 * a + c) / 3), "integration", uses=("quad-centroid",))
-d.step("Cc", sp.Eq(Cc, xC - a), "definition", result=Cc, note="Cc, counted from c towards B")
+d.step("Cc", Eq(Cc, xC - a), "definition", result=Cc, note="Cc, counted from c towards B")
 d.step("Cc-value", (Cc, (c - a) / 3), "algebra", uses=("Cc", "quad-centroid-value"))
 d.step("moment-balance", (kite(x - a), 2 * Dk * Cc, c * b * c / 3 - a * b * a / 3), "integration",
        uses=("quad-area", "Cc"),
        note="first moment about ef: the triangle eBf (area Bc·ce, centroid Bc/3 beyond c) minus eAf "
             "(area Ac·ce, centroid Ac/3 before c)")
-d.step("Ce", sp.Eq(Ce, sp.sqrt(Cc ** 2 + b ** 2)), "definition", result=Ce,
+d.step("Ce", Eq(Ce, sp.sqrt(Cc ** 2 + b ** 2)), "definition", result=Ce,
        note="the distance from C to the vertex e = (a, b)")
 d.quote("centroid-equation", "§215",
         r"$AB \cdot ce : Cb = Bc \cdot ce : \frac{1}{3} Bc - Ac \cdot ce : \frac{1}{3} Ac$",
-        reading=sp.Eq((a + c) * b / Cc, c * b / (c / 3) - a * b / (a / 3)),
+        reading=Eq((a + c) * b / Cc, c * b / (c / 3) - a * b / (a / 3)),
         erratum=Erratum(
             "transcription", "medium", r"AB \cdot ce \cdot Cc = Bc \cdot ce \cdot \frac{1}{3} Bc - Ac \cdot ce \cdot \frac{1}{3} Ac",
             "The balance of first moments about ef (area AB·ce times Cc equals the triangle eBf, area "
@@ -280,7 +280,7 @@ d.quote("centroid-equation", "§215",
             "the colons as divisions the print is false (its right side vanishes). The colons are the "
             "multiplication dots of the print read as ':' and 'Cb' is the distance Cc (there is no point b "
             "in Tab. IX fig. 2); medium, since only the transcription is available.",
-            corrected_reading=sp.Eq((a + c) * b * Cc, c * b * c / 3 - a * b * a / 3)),
+            corrected_reading=Eq((a + c) * b * Cc, c * b * c / 3 - a * b * a / 3)),
         note=claim("the nature of the centroid gives the balance AB·ce·Cc = Bc·ce·Bc/3 − Ac·ce·Ac/3 "
                    "(read with Ac = a, ce = b, Bc = c, AB = a + c)."))
 d.quote("centroid", "§215", r"$Ce = \frac{ce(Bc^2 - Ac^2)}{3 AB \cdot ce} = \frac{Bc - Ac}{3}$",
@@ -309,7 +309,7 @@ integral_step("quad-L", Lk, kite((x - a) ** 2), note="moment about ef")
 d.step("quad-L-value", (Lk, 2 * LAce + 2 * LBce, (a ** 3 + c ** 3) * b / 6, Dk * (a ** 2 - a * c + c ** 2) / 3),
        "integration", uses=("quad-L", "Ace-L", "Bce-L", "quad-area-value"))
 Ye = sp.Symbol("y_{AE}")
-d.step("edge-AE", sp.Eq(Ye, 0 + (b - 0) * (x - 0) / (a - 0)), "definition", result=Ye,
+d.step("edge-AE", Eq(Ye, 0 + (b - 0) * (x - 0) / (a - 0)), "definition", result=Ye,
        note="the side from A = (0, 0) to e (or E) = (a, b) (AP = x from A): two-point form of the line")
 d.quote("Ace-edge", "§216", r"$PM = \frac{bx}{a} = y$", reading=(Ye, b * x / a),
         note=claim("in the triangle Ace the ordinate is PM = bx/a."))
@@ -352,7 +352,7 @@ integral_step("generic-L", LT, tri((x - xe) ** 2),
        note="moment about a line ef: x = x_e; the distance of a particle is wn = x - x_e")
 integral_step("generic-EF", KTe, tri((x - xCT) ** 2),
        note="moment about the parallel EF through C: wN = x - x_C")
-d.step("axis-distance", sp.Eq(Nn, xe - xCT), "definition", result=Nn, note="wn = wN - Nn")
+d.step("axis-distance", Eq(Nn, xe - xCT), "definition", result=Nn, note="wn = wN - Nn")
 d.step("first-moment-vanishes", (tri(x - xCT), 0), "integration", uses=("generic-centroid",))
 d.step("parallel-axes", (LT, KTe + 2 * DT * Nn ** 2), "integration",
        uses=("generic-L", "generic-EF", "axis-distance", "first-moment-vanishes", "generic-area"))
@@ -440,7 +440,7 @@ d.quote("moment-PQ-restated", "§207", r"$= n^2 \cdot I + m^2 \cdot K - 2mn \int
         reading=(PT, n ** 2 * IT + m ** 2 * KT - 2 * m * n * JT),
         note=claim("the moment about PQ, n²I + m²K − 2mn∫yxw, is known from I and K once ∫yxw is known "
                    "(restating §206, checked on the generic figure)."))
-d.quote("cosine-squared", "§208", r"$nn = 1 - mm$", reading=sp.Eq(n * n, 1 - m * m),
+d.quote("cosine-squared", "§208", r"$nn = 1 - mm$", reading=Eq(n * n, 1 - m * m),
         note=claim("since nn = 1 − mm the moment can be written with m alone."))
 d.quote("axis-AB", "§208", r"prodibit momentum respectu eius $= I$ ob $m = 0$",
         reading=(kite((0 * Xc - 1 * y) ** 2), Ik),
@@ -497,7 +497,7 @@ d.quote("square-I", "§212", r"$= \frac{4a^4}{3} = \frac{AB^4}{12}$",
         reading=as_printed(lambda: (Isq, 4 * a ** 4 / 3, (2 * a) ** 4 / 12)),
         note=claim("the square's moment about AB (AB = 2a) is 4a⁴/3 = AB⁴/12, and so about EF and about every "
                    "axis through C."))
-d.quote("square-area", "§212", r"erit $AB^2 = 2D$", reading=sp.Eq((2 * a) ** 2, 2 * Dsq),
+d.quote("square-area", "§212", r"erit $AB^2 = 2D$", reading=Eq((2 * a) ** 2, 2 * Dsq),
         note=claim("the square's area 2D is AB²."))
 d.quote("square-D", "§212", r"$= \frac{AB^2 \cdot D}{6} =$", reading=(Isq, (2 * a) ** 2 * Dsq / 6),
         note=claim("hence the quantity about every axis through C is AB²·D/6. Euler calls it the "
@@ -513,7 +513,7 @@ d.step("rect-I-value", (Ire, 4 * sp.Integral(b ** 3, (x, 0, a)) / 3, 4 * a * b *
        uses=("rect-I",))
 d.step("rect-ratio", (Ire / Kre, (2 * b) ** 2 / (2 * a) ** 2), "integration", uses=("rect-I", "rect-K"),
        note="§213: I : K = EF^2 : AB^2, inversely as the squares of the axes")
-d.quote("rect-area", "§213", r"$2D = 4ab$", reading=sp.Eq(2 * Dre, 4 * a * b),
+d.quote("rect-area", "§213", r"$2D = 4ab$", reading=Eq(2 * Dre, 4 * a * b),
         note=claim("the rectangle with AC = a, CE = b has the area 2D = 4ab."))
 d.quote("rect-cubes", "§213", r"$\int y^3 dx = b^3 x$", reading=(sp.Integral(b ** 3, (s, 0, x)), b ** 3 * x),
         note=claim("with PM = y = b, ∫y³dx = b³x up to the abscissa CP = x."))
@@ -540,7 +540,7 @@ d.step("rhombus-half-at-equal-area", (as_printed(lambda: (2 * b) ** 2 * sp.Symbo
                        "length, breadth and area, which the two figures cannot share")
 d.quote("rhombus-edge", "§214", r"erit $y = \frac{bx}{a}$", reading=(Ye, b * x / a),
         note=claim("on the side AE, with AP = x, the ordinate is PM = y = bx/a."))
-d.quote("rhombus-area", "§214", r"area $2D = 2ab$", reading=sp.Eq(2 * Drh, 2 * a * b),
+d.quote("rhombus-area", "§214", r"area $2D = 2ab$", reading=Eq(2 * Drh, 2 * a * b),
         note=claim("the rhombus with diagonals 2a, 2b has the area 2D = 2ab."))
 d.quote("rhombus-cubes", "§214", r"$\int y^3 dx = \frac{b^3}{a^3} \int x^3 dx = \frac{b^3 x^4}{4a^3}$",
         reading=(sp.Integral((b * s / a) ** 3, (s, 0, x)), b ** 3 / a ** 3 * sp.Integral(s ** 3, (s, 0, x)),
@@ -552,7 +552,7 @@ d.quote("rhombus-I", "§214", r"AB $= \frac{ab^3}{3} = \frac{D \cdot bb}{3} = \f
 d.quote("rhombus-twice", "§214",
         "Manentibus igitur eadem longitudine ac latitudine, momenta parallelogrammi rectanguli duplo sunt "
         "maiora quam rhombi.",
-        reading=sp.Eq(sp.Matrix([Ire / Irh, Kre / Krh]), sp.Matrix([2, 2])),
+        reading=Eq(sp.Matrix([Ire / Irh, Kre / Krh]), sp.Matrix([2, 2])),
         erratum=Erratum(
             "claim", "high",
             "With the same length AB and breadth EF the moments of the rectangle are four times those of "
@@ -562,14 +562,14 @@ d.quote("rhombus-twice", "§214",
             "Integrating over both figures with AC = a, CE = b: I_rect = 4ab^3/3, I_rhomb = ab^3/3, "
             "K_rect = 4a^3b/3, K_rhomb = a^3b/3. Euler compared the coefficients of EF^2 D and AB^2 D and "
             "forgot that D itself doubles; a wrong conclusion, not a misprint.",
-            corrected_reading=sp.Eq(sp.Matrix([Ire / Irh, Kre / Krh]), sp.Matrix([4, 4]))),
+            corrected_reading=Eq(sp.Matrix([Ire / Irh, Kre / Krh]), sp.Matrix([4, 4]))),
         note=claim("keeping the same length and breadth, the rectangle's moments are twice the rhombus'."))
 d.quote("rhombus-K", "§214", r"EF erit $= \frac{AB^2 \cdot D}{12}$", reading=(Krh, (2 * a) ** 2 * Drh / 12),
         note=claim("about EF it is AB²·D/12: the denominators 12 instead of the rectangle's 6."))
 
 # ================================================================ §219 ellipse
 Del, Iel, Kel, Kq, Aq, Yq = sp.symbols("D_{el} I_{el} K_{el} K_{qu} A_{qu} Y_{el}")
-d.step("ellipse-ordinate", sp.Eq(Yq, Yel), "definition", result=Yq, note="PM = y on the ellipse")
+d.step("ellipse-ordinate", Eq(Yq, Yel), "definition", result=Yq, note="PM = y on the ellipse")
 d.step("ellipse-equation", (x ** 2 / a ** 2 + Yq ** 2 / b ** 2, 1), "algebra", uses=("ellipse-ordinate",))
 integral_step("ellipse-area", Del, ell(1) / 2)
 d.step("ellipse-area-value", (Del, sp.pi * a * b / 2), "integration", uses=("ellipse-area",))

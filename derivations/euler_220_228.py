@@ -55,7 +55,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.witness import Case, Computed
 from symfloat.model.claim import as_printed
 
@@ -201,7 +201,7 @@ AAce, ABce, AAEB, Awhole = sp.symbols("A_{Ace} A_{Bce} A_{AEB} A_{AEBF}")
 integral_step("area-Ace", AAce, xc - xL, note="horizontal strips of Ace from the curve to ce")
 integral_step("area-Bce", ABce, xR - xc)
 integral_step("area-AEB", AAEB, xR - xL, note="the strip width 2(a/b)√(b²-y²) does not contain Y")
-d.step("area-whole", sp.Eq(Awhole, 2 * AAEB), "definition", result=Awhole,
+d.step("area-whole", Eq(Awhole, 2 * AAEB), "definition", result=Awhole,
        note="AFB is the mirror image of AEB (Y even)")
 Yd1 = named("int-y-dY", r"y\,dY", y * dYg)
 CA = named("int-y-dx-Ace", r"y\,dx_{Ace}", y * sp.diff(xL, y),
@@ -233,7 +233,7 @@ IAce, IBce, IAEB, Iwhole = sp.symbols("I_{Ace} I_{Bce} I_{AEB} I_{AEBF}")
 integral_step("AB-Ace", IAce, y ** 2 * (xc - xL), note="∫∫ y² over Ace, horizontal strips")
 integral_step("AB-Bce", IBce, y ** 2 * (xR - xc))
 integral_step("AB-AEB", IAEB, y ** 2 * (xR - xL))
-d.step("AB-whole", sp.Eq(Iwhole, 2 * IAEB), "definition", result=Iwhole, note="AFB mirrors AEB")
+d.step("AB-whole", Eq(Iwhole, 2 * IAEB), "definition", result=Iwhole, note="AFB mirrors AEB")
 Yd3 = named("int-y3-dY", r"y^3\,dY", y ** 3 * dYg)
 CIA = named("int-y3-dx-Ace", r"y^3\,dx_{Ace}", y ** 3 * sp.diff(xL, y))
 CIB = named("int-y3-dx-Bce", r"y^3\,dx_{Bce}", y ** 3 * sp.diff(xR, y))
@@ -278,7 +278,7 @@ KAce, KBce, KAEB, Kwhole = sp.symbols("K_{Ace} K_{Bce} K_{AEB} K_{AEBF}")
 integral_step("Aa-Ace", KAce, (xc ** 3 - xL ** 3) / 3, note="∫∫ x² over Ace, horizontal strips")
 integral_step("Aa-Bce", KBce, (xR ** 3 - xc ** 3) / 3)
 integral_step("Aa-AEB", KAEB, (xR ** 3 - xL ** 3) / 3)
-d.step("Aa-whole", sp.Eq(Kwhole, 2 * KAEB), "definition", result=Kwhole, note="AFB mirrors AEB")
+d.step("Aa-whole", Eq(Kwhole, 2 * KAEB), "definition", result=Kwhole, note="AFB mirrors AEB")
 T2, T4 = integral_symbol(r"y\,dY (a+Y) \sqrt{bb-yy}"), integral_symbol(r"\frac{yy\,dy (a+Y)^2}{\sqrt{bb-yy}}")
 integral_step("T2", T2, y * (a + Yg) * R * dYg, note="Euler's ∫y dY (a+Y)√(bb-yy), from 0 to b")
 integral_step("T4", T4, y ** 2 * (a + Yg) ** 2 / R, note="∫yy dy (a+Y)²/√(bb-yy)")
@@ -404,7 +404,7 @@ FAEB, AC, KEF = sp.symbols("F_{AEB} AC K_{EF}")
 W1, Z1, G1, S1 = (integral_symbol(t) for t in (r"\frac{y^2 dy (a+Y)}{\sqrt{bb-yy}}", r"y\,dY \sqrt{bb-yy}",
                                                r"y\,d.(a+Y) \sqrt{bb-yy}", r"(a+Y) dy \sqrt{bb-yy}"))
 integral_step("first-moment", FAEB, (xR ** 2 - xL ** 2) / 2, note="∫∫ x over AEB (moment about aAa)")
-d.step("centroid", sp.Eq(AC, FAEB / AAEB), "definition", result=AC,
+d.step("centroid", Eq(AC, FAEB / AAEB), "definition", result=AC,
        note="the abscissa of the centroid C of AEB, and of the whole figure (AFB mirrors AEB)")
 integral_step("W1", W1, y ** 2 * (a + Yg) / R, note="∫y²dy(a+Y)/√(bb-yy), from 0 to b")
 integral_step("Z1", Z1, y * R * dYg, note="∫y dY √(bb-yy)")
@@ -476,7 +476,7 @@ integral_step("S2c", S2c, (a + Yc) ** 2 * R, note="∫(a+Y)²dy√(bb-yy) with Y
 integral_step("S1c", S1c, (a + Yc) * R)
 integral_step("area-c", AEBc, xRc - xLc)
 integral_step("first-moment-c", FAEBc, (xRc ** 2 - xLc ** 2) / 2)
-d.step("centroid-c", sp.Eq(ACc, FAEBc / AEBc), "definition", result=ACc)
+d.step("centroid-c", Eq(ACc, FAEBc / AEBc), "definition", result=ACc)
 ACcv = sp.factor(_closed((xRc ** 2 - xLc ** 2) / 2) / _closed(xRc - xLc))
 kefc = integral_step("moment-EF-c", KEFc, 2 * ((xRc - ACcv) ** 3 - (xLc - ACcv) ** 3) / 3,
               note="∫∫ (x - AC)² over the whole figure for Y = -cyy/bb")
@@ -557,7 +557,7 @@ d.quote("moment-grows", "§228",
         note=claim("the moment about EF grows as ef moves away from the middle of AB (the text says 'C', the "
                    "middle is O): at fixed a, b, D its derivative in c = Oc is cD/4 > 0."))
 d.quote("curve-c-again", "§228", r"$a = a - \frac{cyy}{bb} + \frac{c}{b}$ $V(bb-yy)$",
-        reading=sp.Eq(a, a - c * y ** 2 / b ** 2 + c / b * R),
+        reading=Eq(a, a - c * y ** 2 / b ** 2 + c / b * R),
         erratum=Erratum(
             "transcription", "low", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
             "The assumed equation is the curve of §227, x = a - cyy/bb ± (a/b)√(bb-yy); the transcription "

@@ -70,7 +70,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.witness import Case, Computed, HullWitness
 from symfloat.model.claim import as_printed
 
@@ -212,9 +212,9 @@ d.step("recurrence-exponent", (Ib(0, q + 1, n, b), n * (q + 1) * Ib(n, q, n, b) 
        note="∫R^{q+1}dy = [yR^{q+1}] + (n(q+1)/bⁿ)∫yⁿR^q dy, and R^{q+1} = R^q(1 − yⁿ/bⁿ)")
 
 # ================================================================ §229: the portions, the chord, the area
-d.step("portion-Ace", sp.Eq(XA, a + Ys - a * R), "definition", result=XA,
+d.step("portion-Ace", Eq(XA, a + Ys - a * R), "definition", result=XA,
        note="§229: AP of the portion Ace at the ordinate PM = y; Y is Y(y)")
-d.step("portion-Bce", sp.Eq(XB, a + Ys + a * R), "definition", result=XB, note="Ap of the portion Bce")
+d.step("portion-Bce", Eq(XB, a + Ys + a * R), "definition", result=XB, note="Ap of the portion Bce")
 d.step("chord", (XB - XA, 2 * a * R), "algebra", uses=("portion-Ace", "portion-Bce"),
        note="the chord Mm at the ordinate y: Y cancels")
 d.step("PO", (a - XA, -Ys + a * R), "algebra", uses=("portion-Ace",), note="O is at x = a")
@@ -298,7 +298,7 @@ SO_val = 2 * a * JY(1, 0, k)
 d.step("first-moment-O", (SO, 2 * a * (c1 / b ** n * J(n, k) + c2 / b ** (2 * n) * J(2 * n, k)), 2 * a * JY(1, 0, k)),
        "integration", uses=("strip-first-moment-O", "Y-integrals"), result=SO,
        note="S_O = ∫∫(x − a) over AEB")
-d.step("centroid", sp.Eq(XC, a + SO / D), "definition", result=XC,
+d.step("centroid", Eq(XC, a + SO / D), "definition", result=XC,
        note="the centroid's abscissa (both halves have the same)")
 d.step("CO", (CO, a - XC, -SO / D), "algebra", uses=("centroid",), result=CO,
        note="CO counted from O towards A")
@@ -435,7 +435,7 @@ d.quote("moment-grows-with-c", "§232",
                    "derivative in c is 4n²(κ+1)cD/((n(κ+1)+1)²(n(κ+2)+1)) > 0 (read so; D does not depend on c)."))
 
 # ================================================================ §233: N and the moment about EF
-d.step("N", sp.Eq(N, J(0, 3 * k - 1) / J(0, k)), "definition", result=N,
+d.step("N", Eq(N, J(0, 3 * k - 1) / J(0, k)), "definition", result=N,
        note="Euler's N: ∫dy(1 − yⁿ/bⁿ)^{3κ−1} = N∫dy(1 − yⁿ/bⁿ)^κ = ND/(2a)")
 d.step("moment-EF-N", (Kc, 2 * n * k * a ** 2 * N * D / (1 + 3 * n * k)
                        + 2 * n ** 2 * (k + 1) * c ** 2 * D / (m1 ** 2 * m2)), "integration",
@@ -709,15 +709,15 @@ d.quote("unequal-halves", "§237", r"hac ipsa inaequalitate momentum respectu ax
                    "c = 0 is 2n²(κ+1)c²D/((n(κ+1)+1)²(n(κ+2)+1)) ≥ 0."))
 
 # ================================================================ §§238–241: stability
-d.step("I-mu", sp.Eq(Iw, EF ** 2 * Dw / mu), "definition", result=Iw, note="§238: μ defined by I = EF²D/μ")
-d.step("K-nu", sp.Eq(Kw, AB ** 2 * Dw / nu), "definition", result=Kw, note="§238: ν defined by K = AB²D/ν")
+d.step("I-mu", Eq(Iw, EF ** 2 * Dw / mu), "definition", result=Iw, note="§238: μ defined by I = EF²D/μ")
+d.step("K-nu", Eq(Kw, AB ** 2 * Dw / nu), "definition", result=Kw, note="§238: ν defined by K = AB²D/ν")
 E192 = "euler-192-219:"
-d.step("stability-AB", sp.Eq(SAB, M * (Iw / V - OG)), "lemma", result=SAB,
+d.step("stability-AB", Eq(SAB, M * (Iw / V - OG)), "lemma", result=SAB,
        uses=(E192 + "stability-definition-G-above", E192 + "metacentric-height-G-above"),
        note="§201/§203: M(I/V − b) with b = OG, G above O")
-d.step("stability-EF", sp.Eq(SEF, M * (Kw / V - OG)), "lemma", result=SEF,
+d.step("stability-EF", Eq(SEF, M * (Kw / V - OG)), "lemma", result=SEF,
        uses=(E192 + "stability-definition-EF-G-above", E192 + "metacentric-height-EF-G-above"))
-d.step("stability-AB-G-below", sp.Eq(SABp, M * (Iw / V + OG)), "lemma", result=SABp,
+d.step("stability-AB-G-below", Eq(SABp, M * (Iw / V + OG)), "lemma", result=SABp,
        uses=(E192 + "stability-definition", E192 + "metacentric-height-G-below"))
 d.quote("stability-AB", "§239", r"$AB = M (\frac{EF^2 \cdot D}{\mu v} - OG)$",
         reading=(SAB, M * (EF ** 2 * Dw / (mu * V) - OG)),
@@ -753,7 +753,7 @@ d.step("pyramid", (Vpy, sp.Integral(2 * Dw * (s / CD) ** 2, (s, 0, CD)), 2 * Dw 
 d.step("prism", (Vpr, sp.Integral(2 * Dw, (s, 0, CD)), 2 * Dw * CD), "integration", result=Vpr)
 d.step("wedge-section", (sp.Integral(2 * y * (1 - s / CD), (s, 0, CD)), y * CD), "integration",
        note="the section across the keel at PM = y: a triangle of base 2y (the chord) and apex on the keel")
-d.step("wedge", sp.Eq(Vwe, CD * Dw), "definition", uses=("wedge-section",), result=Vwe,
+d.step("wedge", Eq(Vwe, CD * Dw), "definition", uses=("wedge-section",), result=Vwe,
        note="the sections y·CD summed along the length: CD·∫y dx = CD·D")
 d.quote("V-pyramid", "§243", r"$V > \frac{2}{3}D.CD$", reading=(Vpy, sp.Rational(2, 3) * Dw * CD),
         note=claim("V exceeds the pyramid over the waterplane 2D with height CD, (2/3)D·CD."))

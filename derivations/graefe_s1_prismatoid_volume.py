@@ -9,7 +9,7 @@ distance of the two skew edges).  Result: ``I = h/3 ((G + g)/2 + 2 D)``.
 """
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.witness import Case, HullWitness
 from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
 from symfloat.model.claim import as_printed
@@ -69,21 +69,21 @@ d.name(sp.Symbol(r"|\vec{n}|^2"), n.dot(n), "n . n, n = AB x CD the common norma
 d.name(sp.Symbol(r"|\vec{AC}\cdot\vec{n}|"), sp.Abs((XC - XA).dot(n)), "|AC . n|, AC projected on the common normal")
 d.name(sp.Symbol(r"|\vec{AB}\times\vec{AE}|^2"), u.dot(u), "|AB x AE|^2, the squared double area of the triangle ABE")
 
-d.step("volume-ABCD", sp.Eq(Vt, sp.Abs(triple_ABCD) / 6), "definition",
+d.step("volume-ABCD", Eq(Vt, sp.Abs(triple_ABCD) / 6), "definition",
        note="volume of a tetrahedron: one sixth of the absolute triple product", result=Vt)
 d.step("mid-section-is-parallelogram", (ab, dc, AB_half), "geometry",
        note="the section through the midpoints of AC, BC, BD, AD has opposite sides equal to AB/2")
-d.step("mid-section-area", sp.Eq(Pt, sp.sqrt(w.dot(w))), "definition",
+d.step("mid-section-area", Eq(Pt, sp.sqrt(w.dot(w))), "definition",
        note="area of the parallelogram abcd", result=Pt)
 d.step("mid-section-area-in-edges", (Pt, sp.sqrt(n.dot(n)) / 4), "geometry", uses=("mid-section-area",))
-d.step("edge-distance", sp.Eq(dist, sp.Abs((XC - XA).dot(n)) / sp.sqrt(n.dot(n))), "definition",
+d.step("edge-distance", Eq(dist, sp.Abs((XC - XA).dot(n)) / sp.sqrt(n.dot(n))), "definition",
        note="shortest distance of the lines AB and CD: projection of AC on their common normal",
        result=dist)
-d.step("triangle-ABE", sp.Eq(Tri, sp.sqrt(u.dot(u)) / 2),
+d.step("triangle-ABE", Eq(Tri, sp.sqrt(u.dot(u)) / 2),
        "definition", note="E = B + (D - C): BE drawn parallel to CD", result=Tri)
 d.step("parallelogram-half-triangle", (Pt, Tri / 2), "geometry", uses=("mid-section-area", "triangle-ABE"),
        note="the mid-section parallelogram abcd is half as large as the triangle ABE")
-d.step("volume-ABCE", sp.Eq(Ve, sp.Abs(triple_ABCE) / 6), "definition", result=Ve,
+d.step("volume-ABCE", Eq(Ve, sp.Abs(triple_ABCE) / 6), "definition", result=Ve,
        note="the second tetrahedron ABCE, with E in place of D")
 d.step("equal-tetrahedra", (Vt, Ve), "geometry", uses=("volume-ABCD", "volume-ABCE"),
        note="D and E lie on a parallel to the base ABC")
@@ -93,23 +93,23 @@ d.step("lemma", (Vt, sp.Rational(1, 3) * (2 * Pt) * dist), "algebra",
             "height is the distance d of the edges AB and CD; so V = (1/3) (2P) d")
 
 # ---- the decomposition --------------------------------------------------------
-d.step("pyramid-over-g", sp.Eq(V1, sp.Integral(g * (z / h) ** 2, (z, 0, h))), "definition",
+d.step("pyramid-over-g", Eq(V1, sp.Integral(g * (z / h) ** 2, (z, 0, h))), "definition",
        note="apex O in the base plane, sections similar to g with ratio z/h", result=V1)
 d.step("pyramid-over-g-value", (V1, g * h / 3), "integration", uses=("pyramid-over-g",))
-d.step("pyramids-over-G", sp.Eq(V2, sp.Integral(G * (1 - z / h) ** 2, (z, 0, h))), "definition",
+d.step("pyramids-over-G", Eq(V2, sp.Integral(G * (1 - z / h) ** 2, (z, 0, h))), "definition",
        note="the triangles of G with apices on g: together base G, height h", result=V2)
 d.step("pyramids-over-G-value", (V2, G * h / 3), "integration", uses=("pyramids-over-G",))
 d.step("mid-sections", (g * sp.UnevaluatedExpr(sp.Rational(1, 2)) ** 2, g / 4), "algebra",
        note="the mid-section of the pyramid over g is g scaled by 1/2; likewise G/4")
-d.step("parallelograms", sp.Eq(P, D - g / 4 - G / 4), "definition", result=P,
+d.step("parallelograms", Eq(P, D - g / 4 - G / 4), "definition", result=P,
        note="the mid-section D consists of the polygon klmn (g/4), the triangles (G/4) and the "
             "parallelograms of the tetrahedra: their sum P is what remains")
-d.step("tetrahedra", sp.Eq(V3, sp.Rational(1, 3) * 2 * P * h), "lemma", uses=("lemma", "parallelograms"),
+d.step("tetrahedra", Eq(V3, sp.Rational(1, 3) * 2 * P * h), "lemma", uses=("lemma", "parallelograms"),
        note="every tetrahedron has one edge in G and one in g, at distance h", result=V3)
 d.step("tetrahedra-in-D", (V3, sp.Mul(sp.Rational(1, 3), 2, D - g / 4 - G / 4, h, evaluate=False),
                            h / 3 * (2 * D - (G + g) / 2)), "substitution", uses=("tetrahedra", "parallelograms"),
        note="P = D - g/4 - G/4 inserted")
-d.step("volume", sp.Eq(I, V1 + V2 + V3), "definition", uses=("pyramid-over-g", "pyramids-over-G", "tetrahedra"),
+d.step("volume", Eq(I, V1 + V2 + V3), "definition", uses=("pyramid-over-g", "pyramids-over-G", "tetrahedra"),
        note="the prismatoid is the union of the three groups of bodies",
        result=I)
 collected_as_printed = h / 3 * sp.Add(g, G, -G / 2, -g / 2, 2 * D, evaluate=False)
@@ -132,10 +132,10 @@ d.quote("lemma-conclusion", "§1 tetrahedron lemma",
         r"Kanten  $CD$  und  $AB$ .",
         reading=(Vt, Ve, sp.Rational(1, 3) * 2 * Pt * dist))
 d.quote("pyramid-over-g", "§1 prismatoid volume",
-        r"deren Basis  $g$ , deren Höhe  $h$ , deren Inhalt mithin  $\frac{g h}{3}$", reading=sp.Eq(V1, g * h / 3))
+        r"deren Basis  $g$ , deren Höhe  $h$ , deren Inhalt mithin  $\frac{g h}{3}$", reading=Eq(V1, g * h / 3))
 d.quote("pyramids-over-G", "§1 prismatoid volume",
         r"deren Basis zusammen  $= G$ , deren Höhen  $= h$ , deren Inhalt zusammen  $= \frac{G h}{3}$",
-        reading=sp.Eq(V2, G * h / 3))
+        reading=Eq(V2, G * h / 3))
 d.quote("mid-section-g", "§1 prismatoid volume",
         r"dessen Inhalt, weil auf der halben Höhe der Pyramide  $ABCO$ ,  $= \frac{g}{4}$",
         reading=(g * sp.UnevaluatedExpr(sp.Rational(1, 2)) ** 2, g / 4),
@@ -146,7 +146,7 @@ MINUS_AS_EQUALS = ("The scan read the minus sign (a long dash in the print) as '
                    "print had the minus.")
 d.quote("parallelogram-sum", "§1 prismatoid volume",
         r"$$D = \frac{g}{4} + \frac{G}{4}.$$",
-        reading=sp.Eq(D, g / 4 + G / 4),
+        reading=Eq(D, g / 4 + G / 4),
         erratum=Erratum("transcription", "high", r"P = D - \frac{g}{4} - \frac{G}{4}",
                         "The sum P of the parallelograms is what remains of D after the polygon (g/4) and "
                         "the triangles (G/4). " + MINUS_AS_EQUALS,
@@ -169,17 +169,17 @@ d.quote("volume-sum", "§1 prismatoid volume",
         erratum=Erratum("transcription", "high",
                         r"I = \frac{gh}{3} + \frac{Gh}{3} + \frac{h}{3} \left\{ 2D - \frac{G+g}{2} \right\}",
                         MINUS_AS_EQUALS,
-                        corrected_reading=sp.Eq(I, g * h / 3 + G * h / 3 + h / 3 * (2 * D - (G + g) / 2))))
+                        corrected_reading=Eq(I, g * h / 3 + G * h / 3 + h / 3 * (2 * D - (G + g) / 2))))
 d.quote("volume-collected", "§1 prismatoid volume",
         r"$$I = \frac{h}{3} \left\{ g + G = \frac{G}{2} + \frac{g}{2} + 2D \right\}$$",
         unreadable="'=' inside the braces: the expression is not well formed",
         erratum=Erratum("transcription", "high",
                         r"I = \frac{h}{3} \left\{ g + G - \frac{G}{2} - \frac{g}{2} + 2D \right\}",
                         MINUS_AS_EQUALS,
-                        corrected_reading=sp.Eq(I, h / 3 * (g + G - G / 2 - g / 2 + 2 * D))))
+                        corrected_reading=Eq(I, h / 3 * (g + G - G / 2 - g / 2 + 2 * D))))
 d.quote("prismatoid-volume", "§1 prismatoid volume",
         r"$$I = \frac{h}{3} \left\{ \frac{G+g}{2} + 2D \right\}, \text{ welches die oben erwähnte}$$",
-        reading=sp.Eq(I, collected))
+        reading=Eq(I, collected))
 
 # ---- witnesses -----------------------------------------------------------------
 

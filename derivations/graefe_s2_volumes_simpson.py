@@ -23,7 +23,7 @@ wrong factor (see ``graefe-s4-ship-centroid``).
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.quadrature import composite_simpson
 from symfloat.engine.witness import Case, Computed, ConvergenceOrder, SectionIntegral
 
@@ -73,7 +73,7 @@ A_s = pi * (r ** 2 - (z - r) ** 2)        # section at height z above the lowest
 d.step("sphere-sections", (sp.Matrix([sp.Subs(A_s, z, 0), sp.Subs(A_s, z, 2 * r), sp.Subs(A_s, z, r)]),
                            sp.Matrix([0, 0, r ** 2 * pi])), "substitution",
        note="A(z) = π (r² - (z - r)²); G = A(0), g = A(2r), D = A(r)")
-d.step("sphere-volume", sp.Eq(I_s, prismatoid(0, 0, r ** 2 * pi, 2 * r)), "lemma",
+d.step("sphere-volume", Eq(I_s, prismatoid(0, 0, r ** 2 * pi, 2 * r)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected", "sphere-sections", "cubic-sections"), result=I_s)
 d.step("sphere-volume-integral", (I_s, sp.Integral(A_s, (z, 0, 2 * r))), "integration", uses=("sphere-volume",),
        note="the same volume by direct integration of the section areas")
@@ -94,7 +94,7 @@ A_p = pi * 2 * p * (x - z)
 d.step("paraboloid-sections", (sp.Matrix([sp.Subs(A_p, z, 0), sp.Subs(A_p, z, x), sp.Subs(A_p, z, x / 2)]),
                                sp.Matrix([2 * p * x * pi, 0, p * x * pi])), "substitution",
        note="vertex equation y² = 2pt, t = x - z: G = 2pxπ, g = 0 (the vertex), D = pxπ (y'² = px)")
-d.step("paraboloid-volume", sp.Eq(I_p, prismatoid(2 * p * x * pi, 0, p * x * pi, x)), "lemma",
+d.step("paraboloid-volume", Eq(I_p, prismatoid(2 * p * x * pi, 0, p * x * pi, x)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected", "paraboloid-sections", "cubic-sections"), result=I_p)
 d.step("paraboloid-volume-integral", (I_p, sp.Integral(A_p, (z, 0, x))), "integration", uses=("paraboloid-volume",))
 d.step("paraboloid-volume-value", (I_p, paraboloid_printed, p * x ** 2 * pi), "algebra",
@@ -114,7 +114,7 @@ d.step("ellipsoid-sections", (sp.Matrix([sp.Subs(A_e, z, 0), sp.Subs(A_e, z, x),
                               sp.Matrix([pi * b ** 2 / a ** 2 * (2 * a * x - x ** 2), 0,
                                          pi * b ** 2 / a ** 2 * (a * x - x ** 2 / 4)])), "substitution",
        uses=("ellipse-vertex-equation",))
-d.step("ellipsoid-volume", sp.Eq(I_e, prismatoid(pi * b ** 2 / a ** 2 * (2 * a * x - x ** 2), 0,
+d.step("ellipsoid-volume", Eq(I_e, prismatoid(pi * b ** 2 / a ** 2 * (2 * a * x - x ** 2), 0,
                                                  pi * b ** 2 / a ** 2 * (a * x - x ** 2 / 4), x)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected", "ellipsoid-sections", "cubic-sections"), result=I_e)
 d.step("ellipsoid-volume-integral", (I_e, sp.Integral(A_e, (z, 0, x))), "integration", uses=("ellipsoid-volume",))
@@ -124,7 +124,7 @@ with sp.evaluate(False):   # the printed forms, as printed
     ell_3 = x / 3 * (b ** 2 * pi / a ** 2) * (3 * a * x - x ** 2)
     ell_4 = b ** 2 * pi * x ** 2 / (3 * a ** 2) * (3 * a - x)
 d.step("ellipsoid-volume-value", (I_e, ell_1, ell_2, ell_3, ell_4), "algebra", uses=("ellipsoid-volume",))
-d.step("half-ellipsoid", sp.Eq(I_h, sp.Integral(pi * b ** 2 / a ** 2 * (2 * a * t - t ** 2), (t, 0, a))),
+d.step("half-ellipsoid", Eq(I_h, sp.Integral(pi * b ** 2 / a ** 2 * (2 * a * t - t ** 2), (t, 0, a))),
        "definition", note="half the ellipsoid: the segment of height a, from the vertex to the centre",
        result=I_h)
 d.step("half-ellipsoid-value", (I_h, sp.Subs(ell_4, x, a), 2 * a * b ** 2 * pi / 3), "substitution",
@@ -136,10 +136,10 @@ d.quote("ellipsoid-radii", "§2 ellipsoid",
                  sp.Matrix([b ** 2 / a ** 2 * (2 * a * x - x ** 2), b ** 2 / a ** 2 * (a * x - x ** 2 / 4)])))
 d.quote("ellipsoid-volume-1", "§2 ellipsoid",
         r"$$I = \frac{x}{3} \frac{b^2 \pi}{a^2} \left\{ \frac{2ax - x^2}{2} + 2ax - \frac{x^2}{2} \right\}$$",
-        reading=sp.Eq(I_e, ell_1))
+        reading=Eq(I_e, ell_1))
 d.quote("ellipsoid-volume-2", "§2 ellipsoid",
         r"$$I = \frac{x}{3} \frac{b^2 \pi}{a^2} \left\{ \frac{2ax - x^2 + 4ax - x^2}{2} \right\}$$",
-        reading=sp.Eq(I_e, ell_2))
+        reading=Eq(I_e, ell_2))
 d.quote("ellipsoid-volume-3", "§2 ellipsoid",
         r"$$I = \frac{x}{3} \frac{b^2 \pi}{a^2} \left\{ 3ax - x^2 \right\} = \frac{b^2 \pi x^2}{3a^2} \left\{ 3a - x \right\}.$$",
         reading=(I_e, ell_3, ell_4))
@@ -147,17 +147,17 @@ d.quote("half-ellipsoid", "§2 half ellipsoid", r"$$I = \frac{2ab^2\pi}{3}. —$
         reading=(I_h, 2 * a * b ** 2 * pi / 3))
 
 # ---- Simpson's rule ------------------------------------------------------------------------------
-d.step("slab-a-c", sp.Eq(I1, prismatoid(a, c, b, 2 * m)), "lemma",
+d.step("slab-a-c", Eq(I1, prismatoid(a, c, b, 2 * m)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected",), result=I1,
        note="the body between the sections a and c as a prismatoid: G = a, D = b, g = c, h = 2m")
 d.step("slab-a-c-value", (I1, 2 * m / 3 * ((a + c) / 2 + 2 * b)), "algebra", uses=("slab-a-c",))
-d.step("slab-c-e", sp.Eq(I2, prismatoid(c, e, dd, 2 * m)), "lemma",
+d.step("slab-c-e", Eq(I2, prismatoid(c, e, dd, 2 * m)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected",), result=I2)
 d.step("slab-c-e-value", (I2, 2 * m / 3 * ((c + e) / 2 + 2 * dd)), "algebra", uses=("slab-c-e",))
-d.step("slab-e-g", sp.Eq(I3, prismatoid(e, g, f, 2 * m)), "lemma",
+d.step("slab-e-g", Eq(I3, prismatoid(e, g, f, 2 * m)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected",), result=I3)
 d.step("slab-e-g-value", (I3, 2 * m / 3 * ((e + g) / 2 + 2 * f)), "algebra", uses=("slab-e-g",))
-d.step("sum", sp.Eq(I, I1 + I2 + I3), "definition", uses=("slab-a-c", "slab-c-e", "slab-e-g"), result=I,
+d.step("sum", Eq(I, I1 + I2 + I3), "definition", uses=("slab-a-c", "slab-c-e", "slab-e-g"), result=I,
        note="the whole body is the union of the three slabs")
 with sp.evaluate(False):   # the three printed forms of the sum, as printed
     simp_1 = 2 * m / 3 * ((a + c) / 2 + 2 * b + (c + e) / 2 + 2 * dd + (e + g) / 2 + 2 * f)
@@ -193,38 +193,38 @@ MISSING_THIRD = ("The prismatoid formula I = h/3 ((G+g)/2 + 2D) with G = a, D = 
 CONSEQUENTIAL = ("Follows from the misprint of I' (factor 2m instead of 2m/3, see 'slab-a-c'); the algebra "
                  "from line to line is right.")
 d.quote("slab-a-c", "§2 Simpson's rule", r"$$I' = 2m \left\{ \frac{a+c}{2} + 2b \right\}.$$",
-        reading=sp.Eq(I1, 2 * m * ((a + c) / 2 + 2 * b)),
+        reading=Eq(I1, 2 * m * ((a + c) / 2 + 2 * b)),
         erratum=Erratum("misprint", "high", r"I' = \frac{2m}{3} \left\{ \frac{a+c}{2} + 2b \right\}",
-                        MISSING_THIRD, corrected_reading=sp.Eq(I1, 2 * m / 3 * ((a + c) / 2 + 2 * b))))
+                        MISSING_THIRD, corrected_reading=Eq(I1, 2 * m / 3 * ((a + c) / 2 + 2 * b))))
 d.quote("slab-c-e", "§2 Simpson's rule", r"$$I'' = 2m \left\{ \frac{c+e}{2} + 2d \right\}.$$",
-        reading=sp.Eq(I2, 2 * m * ((c + e) / 2 + 2 * dd)),
+        reading=Eq(I2, 2 * m * ((c + e) / 2 + 2 * dd)),
         erratum=Erratum("consequential", "high", r"I'' = \frac{2m}{3} \left\{ \frac{c+e}{2} + 2d \right\}",
                         "The same omission of the factor 1/3 as in I' ('Ebenso').",
-                        corrected_reading=sp.Eq(I2, 2 * m / 3 * ((c + e) / 2 + 2 * dd))))
+                        corrected_reading=Eq(I2, 2 * m / 3 * ((c + e) / 2 + 2 * dd))))
 d.quote("slab-e-g", "§2 Simpson's rule", r"$$I''' = 2m \left\{ \frac{e+g}{2} + 2f \right\}.$$",
-        reading=sp.Eq(I3, 2 * m * ((e + g) / 2 + 2 * f)),
+        reading=Eq(I3, 2 * m * ((e + g) / 2 + 2 * f)),
         erratum=Erratum("consequential", "high", r"I''' = \frac{2m}{3} \left\{ \frac{e+g}{2} + 2f \right\}",
                         "The same omission of the factor 1/3 as in I'.",
-                        corrected_reading=sp.Eq(I3, 2 * m / 3 * ((e + g) / 2 + 2 * f))))
+                        corrected_reading=Eq(I3, 2 * m / 3 * ((e + g) / 2 + 2 * f))))
 d.quote("sum-1", "§2 Simpson's rule",
         r"$$I = 2m \left\{ \frac{a+c}{2} + 2b + \frac{c+e}{2} + 2d + \frac{e+g}{2} + 2f \right\}$$",
-        reading=sp.Eq(I, 3 * simp_1),
+        reading=Eq(I, 3 * simp_1),
         erratum=Erratum("consequential", "high",
                         r"I = \frac{2m}{3} \left\{ \frac{a+c}{2} + 2b + \frac{c+e}{2} + 2d + \frac{e+g}{2} + 2f \right\}",
-                        CONSEQUENTIAL, corrected_reading=sp.Eq(I, simp_1)))
+                        CONSEQUENTIAL, corrected_reading=Eq(I, simp_1)))
 d.quote("sum-2", "§2 Simpson's rule",
         r"$$I = 2m \left\{ \frac{a+c+4b+c+e+4d+e+g+4f}{2} \right\}$$",
-        reading=sp.Eq(I, 3 * simp_2),
+        reading=Eq(I, 3 * simp_2),
         erratum=Erratum("consequential", "high",
                         r"I = \frac{2m}{3} \left\{ \frac{a+c+4b+c+e+4d+e+g+4f}{2} \right\}",
-                        CONSEQUENTIAL, corrected_reading=sp.Eq(I, simp_2)))
+                        CONSEQUENTIAL, corrected_reading=Eq(I, simp_2)))
 d.quote("simpson-rule", "§2 Simpson's rule", r"$$I = m \{ a + 4b + 2c + 4d + 2e + 4f + g \}.$$",
-        reading=sp.Eq(I, 3 * simp_3),
+        reading=Eq(I, 3 * simp_3),
         erratum=Erratum("consequential", "high", r"I = \frac{m}{3} \{ a + 4b + 2c + 4d + 2e + 4f + g \}",
                         CONSEQUENTIAL + " With m/3 it is Simpson's rule, as the following sentence says; with "
                         "m it overstates every volume threefold (all sections equal to A: 6mA is the volume, "
                         "the print gives 18mA).",
-                        corrected_reading=sp.Eq(I, simp_3)))
+                        corrected_reading=Eq(I, simp_3)))
 
 # the claims in words
 Y = [sp.Symbol(f"y_{i}", positive=True) for i in range(7)]

@@ -12,7 +12,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 import mpmath
 
 from symfloat.engine.witness import Case, Computed, HullSlices, HullWitness
@@ -136,24 +136,24 @@ d.quote("diagonals", "§3 tetrahedron centroid lemma",
         reading=(o_, *as_printed(lambda: ((a_ + c) / 2, ((PA + PD) / 2 + (PB + PC) / 2) / 2))))
 
 # ---- the prismatoid --------------------------------------------------------------
-d.step("pyramid-over-g", sp.Eq(V1, g * h / 3), "lemma", uses=("graefe-s1-prismatoid-volume:pyramid-over-g",),
+d.step("pyramid-over-g", Eq(V1, g * h / 3), "lemma", uses=("graefe-s1-prismatoid-volume:pyramid-over-g",),
        result=V1)
-d.step("pyramids-over-G", sp.Eq(V2, G * h / 3), "lemma", uses=("graefe-s1-prismatoid-volume:pyramids-over-G",),
+d.step("pyramids-over-G", Eq(V2, G * h / 3), "lemma", uses=("graefe-s1-prismatoid-volume:pyramids-over-G",),
        result=V2)
-d.step("tetrahedra", sp.Eq(V3, h / 3 * (2 * D - (G + g) / 2)), "lemma",
+d.step("tetrahedra", Eq(V3, h / 3 * (2 * D - (G + g) / 2)), "lemma",
        uses=("graefe-s1-prismatoid-volume:tetrahedra-in-D",), result=V3)
-d.step("arm-pyramid-over-g", sp.Eq(Z1, sp.Integral(z * g * (z / h) ** 2, (z, 0, h)) / V1), "definition",
+d.step("arm-pyramid-over-g", Eq(Z1, sp.Integral(z * g * (z / h) ** 2, (z, 0, h)) / V1), "definition",
        note="centroid height of the pyramid with apex O in G", result=Z1)
 d.step("arm-pyramid-over-g-value", (Z1, 3 * h / 4), "integration", uses=("arm-pyramid-over-g",))
-d.step("arm-pyramids-over-G", sp.Eq(Z2, sp.Integral(z * G * (1 - z / h) ** 2, (z, 0, h)) / V2), "definition",
+d.step("arm-pyramids-over-G", Eq(Z2, sp.Integral(z * G * (1 - z / h) ** 2, (z, 0, h)) / V2), "definition",
        result=Z2)
 d.step("arm-pyramids-over-G-value", (Z2, h / 4), "integration", uses=("arm-pyramids-over-G",))
-d.step("arm-tetrahedra", sp.Eq(Z3, (0 + h) / 2), "lemma", uses=("o-midpoint-ac",), result=Z3,
+d.step("arm-tetrahedra", Eq(Z3, (0 + h) / 2), "lemma", uses=("o-midpoint-ac",), result=Z3,
        note="each tetrahedron has one edge in G (height 0) and one in g (height h): the midpoint of "
             "their bimedian, its centroid, lies at h/2")
-d.step("volume", sp.Eq(I, h / 3 * ((G + g) / 2 + 2 * D)), "lemma",
+d.step("volume", Eq(I, h / 3 * ((G + g) / 2 + 2 * D)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected",), result=I)
-d.step("centroid", sp.Eq(X, (V1 * Z1 + V2 * Z2 + V3 * Z3) / I), "definition", result=X,
+d.step("centroid", Eq(X, (V1 * Z1 + V2 * Z2 + V3 * Z3) / I), "definition", result=X,
        uses=("arm-pyramid-over-g-value", "arm-pyramids-over-G-value", "arm-tetrahedra", "volume"),
        note="moment theorem: I X is the sum of the moments of the parts about the base")
 d.step("centroid-collected", (X, h * (g / 2 + D) / ((G + g) / 2 + 2 * D)), "algebra", uses=("centroid",))
@@ -177,20 +177,20 @@ d.quote("tetrahedra-volume", "§3 prismatoid centroid",
 d.quote("moment-1", "§3 prismatoid centroid",
         r"$$IX = \frac{gh}{3} \cdot \frac{3h}{4} + \frac{Gh}{3} \cdot \frac{h}{4} + \frac{h}{3} \left\{ 2D - "
         r"\frac{G+g}{2} \right\} \frac{h}{2},$$",
-        reading=sp.Eq(I * X, g * h / 3 * 3 * h / 4 + G * h / 3 * h / 4 + h / 3 * (2 * D - (G + g) / 2) * h / 2))
+        reading=Eq(I * X, g * h / 3 * 3 * h / 4 + G * h / 3 * h / 4 + h / 3 * (2 * D - (G + g) / 2) * h / 2))
 d.quote("moment-2", "§3 prismatoid centroid",
         r"$$IX = \frac{h^2}{3} \left\{ \frac{3g}{4} + \frac{G}{4} + D - \frac{G}{4} - \frac{g}{4} \right\}, "
         r"\text{ also}$$",
-        reading=sp.Eq(I * X, h ** 2 / 3 * (3 * g / 4 + G / 4 + D - G / 4 - g / 4)))
+        reading=Eq(I * X, h ** 2 / 3 * (3 * g / 4 + G / 4 + D - G / 4 - g / 4)))
 d.quote("moment-3", "§3 prismatoid centroid",
         r"$$IX = \frac{h^2}{3} \left\{ \frac{g}{2} + D \right\} \text{ und da}$$",
-        reading=sp.Eq(I * X, h ** 2 / 3 * (g / 2 + D)))
+        reading=Eq(I * X, h ** 2 / 3 * (g / 2 + D)))
 d.quote("volume", "§3 prismatoid centroid",
         r"$$I = \frac{h}{3} \left\{ \frac{G+g}{2} + 2D \right\} \text{ war, so ist}$$",
-        reading=sp.Eq(I, h / 3 * ((G + g) / 2 + 2 * D)))
+        reading=Eq(I, h / 3 * ((G + g) / 2 + 2 * D)))
 d.quote("centroid", "§3 prismatoid centroid",
         r"$$X = h \left\{ \frac{\frac{g}{2} + D}{\frac{G+g}{2} + 2D} \right\}.$$",
-        reading=sp.Eq(X, h * (g / 2 + D) / ((G + g) / 2 + 2 * D)))
+        reading=Eq(X, h * (g / 2 + D) / ((G + g) / 2 + 2 * D)))
 
 # ---- witnesses ---------------------------------------------------------------------
 

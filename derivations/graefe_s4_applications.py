@@ -22,7 +22,7 @@ abscissae from the vertex are written ``x_v > x'_v``.
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.witness import Case, PlaneSections, SectionIntegral
 from symfloat.model.claim import as_printed
 
@@ -64,12 +64,12 @@ def body(slug, key, area, height, G_val, D_val, g_val, note):
     formula and the same centroid by direct integration.  Returns the symbols
     ``(G, D, g, X)``."""
     A, G, D, g, X = sp.symbols(f"A_{{{key}}} G_{{{key}}} D_{{{key}}} g_{{{key}}} X_{{{key}}}")
-    d.step(f"{slug}-section", sp.Eq(A, area), "definition", note=note, result=A)
+    d.step(f"{slug}-section", Eq(A, area), "definition", note=note, result=A)
     sec = (f"{slug}-section",)
     d.step(f"{slug}-G", (G, sp.Subs(area, u, 0), G_val), "substitution", uses=sec, result=G)
     d.step(f"{slug}-D", (D, sp.Subs(area, u, height / 2), D_val), "substitution", uses=sec, result=D)
     d.step(f"{slug}-g", (g, sp.Subs(area, u, height), g_val), "substitution", uses=sec, result=g)
-    d.step(f"{slug}-centroid", sp.Eq(X, height * (g / 2 + D) / ((G + g) / 2 + 2 * D)), "lemma",
+    d.step(f"{slug}-centroid", Eq(X, height * (g / 2 + D) / ((G + g) / 2 + 2 * D)), "lemma",
            uses=(f"{S3}:centroid", f"{S3}:centroid-quadratic-sections", f"{slug}-G", f"{slug}-D", f"{slug}-g"),
            note=QUADRATIC, result=X)
     d.step(f"{slug}-centroid-by-integration",
@@ -103,7 +103,7 @@ def planes_witness(name, description, targets, sections, planes, combine, *cases
 
 # ---- sphere ------------------------------------------------------------------------
 h_sp = sp.Symbol("h_{sp}")
-d.step("sphere-height", sp.Eq(h_sp, 2 * r), "definition", note="from pole to pole", result=h_sp)
+d.step("sphere-height", Eq(h_sp, 2 * r), "definition", note="from pole to pole", result=h_sp)
 area_sp = pi * (r ** 2 - (u - r) ** 2)
 G_sp, D_sp, g_sp, X_sp = body("sphere", "sp", area_sp, h_sp, 0, pi * r ** 2, 0,
                               "circle of radius sqrt(r^2 - (u - r)^2), u measured from the lower pole")
@@ -125,7 +125,7 @@ d.quote("cone-frustum-D", "§4 cone frustum", r"$\frac{R+r}{2}$  der von  $D$",
 d.quote("cone-frustum-1", "§4 cone frustum",
         r"$$X = h \left\{ \frac{\frac{r^2}{2} + \frac{(R+r)^2}{4}}{R^2 + r^2 + \frac{(R+r)^2}{2}} \right\} "
         r"\text{ oder}$$",
-        reading=sp.Eq(X_cf, h * ((r ** 2 / 2 + (R + r) ** 2 / 4) / (R ** 2 + r ** 2 + (R + r) ** 2 / 2))),
+        reading=Eq(X_cf, h * ((r ** 2 / 2 + (R + r) ** 2 / 4) / (R ** 2 + r ** 2 + (R + r) ** 2 / 2))),
         erratum=Erratum(
             "transcription", "low",
             r"X = h \left\{ \frac{\frac{r^2}{2} + \frac{(R+r)^2}{4}}{\frac{R^2 + r^2}{2} + \frac{(R+r)^2}{2}} "
@@ -135,16 +135,16 @@ d.quote("cone-frustum-1", "§4 cone frustum",
             "R^2 + r^2 + R^2 + 2Rr + r^2) follows only from the corrected form, so the author had the half. A "
             "lost fraction bar under R^2 + r^2, as in the first line of the truncated ellipsoid; from the "
             "transcription alone a misprint of the 1866 print cannot be excluded, hence low confidence.",
-            corrected_reading=sp.Eq(X_cf, h * ((r ** 2 / 2 + (R + r) ** 2 / 4)
+            corrected_reading=Eq(X_cf, h * ((r ** 2 / 2 + (R + r) ** 2 / 4)
                                                / ((R ** 2 + r ** 2) / 2 + (R + r) ** 2 / 2)))))
 d.quote("cone-frustum-2", "§4 cone frustum",
         r"$$X = \frac{h}{2} \left\{ \frac{2r^2 + R^2 + 2Rr + r^2}{R^2 + r^2 + R^2 + 2Rr + r^2} \right\}, "
         r"\text{ also}$$",
-        reading=sp.Eq(X_cf, h / 2 * ((2 * r ** 2 + R ** 2 + 2 * R * r + r ** 2)
+        reading=Eq(X_cf, h / 2 * ((2 * r ** 2 + R ** 2 + 2 * R * r + r ** 2)
                                      / (R ** 2 + r ** 2 + R ** 2 + 2 * R * r + r ** 2))))
 d.quote("cone-frustum-3", "§4 cone frustum",
         r"$$X = \frac{h}{4} \left\{ \frac{3r^2 + 2Rr + R^2}{r^2 + Rr + R^2} \right\}.$$",
-        reading=sp.Eq(X_cf, h / 4 * ((3 * r ** 2 + 2 * R * r + R ** 2) / (r ** 2 + R * r + R ** 2))))
+        reading=Eq(X_cf, h / 4 * ((3 * r ** 2 + 2 * R * r + R ** 2) / (r ** 2 + R * r + R ** 2))))
 sections_witness("cone-frustum", "centroid of the cone frustum from its circular sections",
                  ("cone-frustum-1", "cone-frustum-2", "cone-frustum-3"), area_cf, h,
                  ("R = 3, r = 1, h = 4", {R: 3, r: 1, h: 4}),
@@ -177,15 +177,15 @@ d.quote("pyramid-frustum-root-sum", "§4 pyramid frustum",
         reading=(sp.sqrt(G_pf) + sp.sqrt(g_pf), sp.Mul(2 * sp.sqrt(D_pf) * (S + s), 1 / (S + s), evaluate=False)))
 d.quote("pyramid-frustum-D", "§4 pyramid frustum",
         r"$$D = \frac{G + 2\sqrt{Gg} + g}{4} \text{ also:}$$",
-        reading=sp.Eq(D_pf, (G_pf + 2 * sp.sqrt(G_pf * g_pf) + g_pf) / 4))
+        reading=Eq(D_pf, (G_pf + 2 * sp.sqrt(G_pf * g_pf) + g_pf) / 4))
 D_pf_printed = (G_pf + 2 * sp.sqrt(G_pf * g_pf) + g_pf) / 4
 d.quote("pyramid-frustum-1", "§4 pyramid frustum",
         r"$$X = h \left\{ \frac{\frac{g}{2} + \frac{G + 2\sqrt{Gg} + g}{4}}{\frac{G+g}{2} + "
         r"\frac{G + 2\sqrt{Gg} + g}{2}} \right\} \text{ oder}$$",
-        reading=sp.Eq(X_pf, h * ((g_pf / 2 + D_pf_printed) / ((G_pf + g_pf) / 2 + 2 * D_pf_printed))))
+        reading=Eq(X_pf, h * ((g_pf / 2 + D_pf_printed) / ((G_pf + g_pf) / 2 + 2 * D_pf_printed))))
 d.quote("pyramid-frustum-2", "§4 pyramid frustum",
         r"$$X = \frac{h}{4} \left\{ \frac{3g + G + 2\sqrt{Gg}}{g + G + \sqrt{Gg}} \right\} . -$$",
-        reading=sp.Eq(X_pf, h / 4 * ((3 * g_pf + G_pf + 2 * sp.sqrt(G_pf * g_pf))
+        reading=Eq(X_pf, h / 4 * ((3 * g_pf + G_pf + 2 * sp.sqrt(G_pf * g_pf))
                                      / (g_pf + G_pf + sp.sqrt(G_pf * g_pf)))))
 sections_witness("pyramid-frustum", "centroid of the pyramid frustum from its similar sections",
                  ("pyramid-frustum-1", "pyramid-frustum-2"), area_pf, h,
@@ -225,7 +225,7 @@ sections_witness("hemisphere", "centroid of the hemisphere from its circular sec
 
 # ---- spherical segment, one base ---------------------------------------------------------------
 h_s1 = sp.Symbol("h_{s1}")
-d.step("segment-1-height", sp.Eq(h_s1, r - m), "definition", note="from the base to the pole", result=h_s1)
+d.step("segment-1-height", Eq(h_s1, r - m), "definition", note="from the base to the pole", result=h_s1)
 area_s1 = pi * (r ** 2 - (m + u) ** 2)
 G_s1, D_s1, g_s1, X_s1 = body("segment-1", "s1", area_s1, h_s1, pi * (r ** 2 - m ** 2),
                               pi * (3 * r ** 2 - 2 * r * m - m ** 2) / 4, 0,
@@ -247,16 +247,16 @@ num_s1 = 3 * r ** 2 - 2 * r * m - m ** 2
 d.quote("segment-1-1", "§4 spherical segment, one base",
         r"$$X = (r - m) \left\{ \frac{\frac{3r^2 - 2rm - m^2}{4}}{\frac{r^2 - m^2}{2} + "
         r"\frac{3r^2 - 2rm - m^2}{2}} \right\}$$",
-        reading=sp.Eq(X_s1, (r - m) * ((num_s1 / 4) / ((r ** 2 - m ** 2) / 2 + num_s1 / 2))))
+        reading=Eq(X_s1, (r - m) * ((num_s1 / 4) / ((r ** 2 - m ** 2) / 2 + num_s1 / 2))))
 d.quote("segment-1-2", "§4 spherical segment, one base",
         r"$$X = \frac{r - m}{4} \left\{ \frac{3r^2 - 2rm - m^2}{2r^2 - rm - m^2} \right\}$$",
-        reading=sp.Eq(X_s1, (r - m) / 4 * (num_s1 / (2 * r ** 2 - r * m - m ** 2))))
+        reading=Eq(X_s1, (r - m) / 4 * (num_s1 / (2 * r ** 2 - r * m - m ** 2))))
 d.quote("segment-1-3", "§4 spherical segment, one base",
         r"$$X = \frac{r - m}{4} \left\{ \frac{r - m}{r - m} \right\} \left\{ \frac{3r + m}{2r + m} \right\}$$",
-        reading=sp.Eq(X_s1, (r - m) / 4 * sp.Mul(r - m, 1 / (r - m), evaluate=False) * ((3 * r + m) / (2 * r + m))))
+        reading=Eq(X_s1, (r - m) / 4 * sp.Mul(r - m, 1 / (r - m), evaluate=False) * ((3 * r + m) / (2 * r + m))))
 d.quote("segment-1-4", "§4 spherical segment, one base",
         r"$$X = \frac{r - m}{4} \left\{ \frac{3r + m}{2r + m} \right\}.$$",
-        reading=sp.Eq(X_s1, (r - m) / 4 * ((3 * r + m) / (2 * r + m))))
+        reading=Eq(X_s1, (r - m) / 4 * ((3 * r + m) / (2 * r + m))))
 sections_witness("segment-1", "centroid of the spherical segment from its circular sections",
                  ("segment-1-1", "segment-1-2", "segment-1-3", "segment-1-4"), area_s1, r - m,
                  ("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
@@ -281,7 +281,7 @@ d.quote("segment-2-radii", "§4 spherical segment, two bases",
 d.quote("segment-2-1", "§4 spherical segment, two bases",
         r"$$X = \{x' - x\} \left\{ \frac{\frac{r^2 - x'^2}{2} + r^2 - \frac{(x' + x)^2}{4}}{\frac{r^2 - x^2 + "
         r"r^2 - x'^2}{2} + \frac{4r^2 - (x' + x)^2}{2}} \right\}$$",
-        reading=sp.Eq(X_s2, (xp - x) * (((r ** 2 - xp ** 2) / 2 + r ** 2 - (xp + x) ** 2 / 4)
+        reading=Eq(X_s2, (xp - x) * (((r ** 2 - xp ** 2) / 2 + r ** 2 - (xp + x) ** 2 / 4)
                                         / ((r ** 2 - x ** 2 + r ** 2 - xp ** 2) / 2
                                            + (4 * r ** 2 - (xp + x) ** 2) / 2))))
 frac_s2 = ((2 * r ** 2 - 2 * xp ** 2 + 4 * r ** 2 - xp ** 2 - 2 * xp * x - x ** 2)
@@ -289,7 +289,7 @@ frac_s2 = ((2 * r ** 2 - 2 * xp ** 2 + 4 * r ** 2 - xp ** 2 - 2 * xp * x - x ** 
 d.quote("segment-2-2", "§4 spherical segment, two bases",
         r"$$X = \frac{x' - x}{4} \left\{ \frac{2r^2 - 2x'^2 + 4r^2 - x'^2 - 2x'x - x^2}{6r^2 - x^2 - x'^2 - "
         r"x'^2 - 2x'x - x^2} \right\}$$",
-        reading=sp.Eq(X_s2, (xp - x) / 4 * frac_s2),
+        reading=Eq(X_s2, (xp - x) / 4 * frac_s2),
         erratum=Erratum(
             "misprint", "medium",
             r"X = \frac{x' - x}{2} \left\{ \frac{2r^2 - 2x'^2 + 4r^2 - x'^2 - 2x'x - x^2}{6r^2 - x^2 - x'^2 - "
@@ -300,10 +300,10 @@ d.quote("segment-2-2", "§4 spherical segment, two bases",
             "again carries (x' - x)/4 and is right, so the slip did not propagate: a fault of the printed "
             "line (the factor 4 anticipates the next line), not of the scan, which renders the other factors "
             "faithfully. The same value results if instead the denominator is halved.",
-            corrected_reading=sp.Eq(X_s2, (xp - x) / 2 * frac_s2)))
+            corrected_reading=Eq(X_s2, (xp - x) / 2 * frac_s2)))
 d.quote("segment-2-3", "§4 spherical segment, two bases",
         r"$$X = \frac{x' - x}{4} \left\{ \frac{6r^2 - 3x'^2 - 2x'x - x^2}{3r^2 - x'^2 - x'x - x^2} \right\}.$$",
-        reading=sp.Eq(X_s2, (xp - x) / 4 * (num_s2 / den_s2)))
+        reading=Eq(X_s2, (xp - x) / 4 * (num_s2 / den_s2)))
 sections_witness("segment-2", "centroid of the spherical zone from its circular sections",
                  ("segment-2-1", "segment-2-2", "segment-2-3"), area_s2, xp - x,
                  ("r = 5, x = 1, x' = 3", {r: 5, x: 1, xp: 3}),
@@ -345,7 +345,7 @@ d.quote("paraboloid-2-radii", "§4 paraboloid, two bases",
 d.quote("paraboloid-2-1", "§4 paraboloid, two bases",
         r"$$X = \{ x - x' \} \left\{ \frac{p x' + p \{ x' + x \}}{p \{ x + x' \} + 2 p \{ x + x' \}} \right\} "
         r"\text{ oder}$$",
-        reading=sp.Eq(X_p2, (xv - xvp) * ((p * xvp + p * (xvp + xv)) / (p * (xv + xvp) + 2 * p * (xv + xvp)))))
+        reading=Eq(X_p2, (xv - xvp) * ((p * xvp + p * (xvp + xv)) / (p * (xv + xvp) + 2 * p * (xv + xvp)))))
 d.quote("paraboloid-2-2", "§4 paraboloid, two bases",
         r"$$X = \{ x - x' \} \left\{ \frac{2 x' + x}{3 x' + 3 x} \right\} = \frac{x - x'}{3} \left\{ "
         r"\frac{2 x' + x}{x' + x} \right\}$$",
@@ -364,7 +364,7 @@ planes_witness("paraboloid-2-radii-sections", "sections of the paraboloid y^2 = 
 
 # ---- ellipsoid of revolution: segment with one base, half ellipsoid -------------------------------------
 h_es = sp.Symbol("h_{es}")
-d.step("ellipsoid-segment-height", sp.Eq(h_es, a - x), "definition", note="from the base to the vertex",
+d.step("ellipsoid-segment-height", Eq(h_es, a - x), "definition", note="from the base to the vertex",
        result=h_es)
 area_es = pi * b ** 2 / a ** 2 * (a ** 2 - (x + u) ** 2)
 G_es, D_es, g_es, X_es = body("ellipsoid-segment", "es", area_es, h_es, pi * b ** 2 / a ** 2 * (a ** 2 - x ** 2),
@@ -387,7 +387,7 @@ d.quote("ellipsoid-segment-D", "§4 ellipsoid segment",
 d.quote("ellipsoid-segment-1", "§4 ellipsoid segment",
         r"$$X = \{ a - x \} \left\{ \frac{\frac{3 a^2 - 2 a x - x^2}{4}}{\frac{a^2 - x^2}{2} + "
         r"\frac{3 a^2 - 2 a x - x^2}{2}} \right\} \text{ oder}$$",
-        reading=sp.Eq(X_es, (a - x) * ((num_es / 4) / ((a ** 2 - x ** 2) / 2 + num_es / 2))))
+        reading=Eq(X_es, (a - x) * ((num_es / 4) / ((a ** 2 - x ** 2) / 2 + num_es / 2))))
 d.quote("ellipsoid-segment-2", "§4 ellipsoid segment",
         r"$$X = \frac{a - x}{4} \left\{ \frac{3 a^2 - 2 a x - x^2}{2 a^2 - a x - x^2} \right\} = "
         r"\frac{3 a^2 - 2 a x - x^2}{4 (2 a + x)}$$",
@@ -439,7 +439,7 @@ num_te_1 = (a ** 2 - xp ** 2) / 2 + a ** 2 - (xp + x) ** 2 / 4
 d.quote("truncated-ellipsoid-1", "§4 truncated ellipsoid",
         r"$$X = \left\{ x' - x \right\} \left\{ \frac{\frac{a^2 - x'^2}{2} + a^2 - \frac{(x' + x)^2}{4}}{a^2 - "
         r"x^2 + a^2 - x'^2 + \frac{4a^2 - (x' + x)^2}{2}} \right\}$$",
-        reading=sp.Eq(X_te, (xp - x) * (num_te_1 / (a ** 2 - x ** 2 + a ** 2 - xp ** 2
+        reading=Eq(X_te, (xp - x) * (num_te_1 / (a ** 2 - x ** 2 + a ** 2 - xp ** 2
                                                     + (4 * a ** 2 - (xp + x) ** 2) / 2))),
         erratum=Erratum(
             "transcription", "low",
@@ -451,11 +451,11 @@ d.quote("truncated-ellipsoid-1", "§4 truncated ellipsoid",
             "so the half was there when it was reduced. A fraction bar lost by the transcription, as in the "
             "first line of the cone frustum; a misprint cannot be excluded from the transcription alone, "
             "hence low confidence.",
-            corrected_reading=sp.Eq(X_te, (xp - x) * (num_te_1 / ((a ** 2 - x ** 2 + a ** 2 - xp ** 2) / 2
+            corrected_reading=Eq(X_te, (xp - x) * (num_te_1 / ((a ** 2 - x ** 2 + a ** 2 - xp ** 2) / 2
                                                                   + (4 * a ** 2 - (xp + x) ** 2) / 2)))))
 d.quote("truncated-ellipsoid-2", "§4 truncated ellipsoid",
         r"$$X = \frac{x' - x}{4} \left\{ \frac{6a^2 - 3x'^2 - 2x'x - x^2}{3a^2 - x'^2 - x'x - x^2} \right\}.$$",
-        reading=sp.Eq(X_te, (xp - x) / 4 * (num_te / den_te)))
+        reading=Eq(X_te, (xp - x) / 4 * (num_te / den_te)))
 sections_witness("truncated-ellipsoid", "centroid of the truncated ellipsoid from its circular sections",
                  ("truncated-ellipsoid-1", "truncated-ellipsoid-2"), area_te, xp - x,
                  ("a = 5, b = 2, x = 1, x' = 4", {a: 5, b: 2, x: 1, xp: 4}),
@@ -473,12 +473,12 @@ planes_witness("truncated-ellipsoid-radii-2-sections", "sections of the ellipsoi
 # ---- the elliptic body with isosceles triangular sections --------------------------------------------------
 # Base: the ellipse with semi-axes a, b; EF of length 2a at height h above the major axis.  The generator cb
 # runs from the base ellipse (ordinate y at abscissa x) to EF (ordinate 0, height h).
-d.step("elliptic-body-ordinate", sp.Eq(y, b / a * sp.sqrt(a ** 2 - x ** 2)), "definition",
+d.step("elliptic-body-ordinate", Eq(y, b / a * sp.sqrt(a ** 2 - x ** 2)), "definition",
        note="centre equation of the base ellipse: ordinate ab = y at abscissa x", result=y)
-d.step("elliptic-body-generator", sp.Eq(yp, (y * (1 - u / h)).subs(u, h / m)), "definition",
+d.step("elliptic-body-generator", Eq(yp, (y * (1 - u / h)).subs(u, h / m)), "definition",
        note="the straight generator from b (ordinate y, height 0) to c (ordinate 0, height h) has ordinate "
             "y (1 - u/h) at height u; a'b' = y' is taken at the height h/m", result=yp)
-d.step("elliptic-body-n", sp.Eq(n, 1 - 1 / m), "definition", note="Graefe's abbreviation", result=n)
+d.step("elliptic-body-n", Eq(n, 1 - 1 / m), "definition", note="Graefe's abbreviation", result=n)
 d.step("elliptic-body-section-ellipse", (yp ** 2, (n * b) ** 2 / a ** 2 * (a ** 2 - x ** 2)), "algebra",
        uses=("elliptic-body-ordinate", "elliptic-body-generator", "elliptic-body-n"),
        note="the section at height h/m is the ellipse with semi-axes a and n b")
@@ -495,7 +495,7 @@ d.step("elliptic-body-triangles",
        note="Graefe's second argument: every section perpendicular to the major axis is an isosceles "
             "triangle of height h, whose centroid lies at h/3")
 X_pc = sp.Symbol("X_{pc}")
-d.step("elliptic-body-paraboloid", sp.Eq(X_pc, sp.Integral(u * 2 * p * pi * (h - u), (u, 0, h))
+d.step("elliptic-body-paraboloid", Eq(X_pc, sp.Integral(u * 2 * p * pi * (h - u), (u, 0, h))
                                          / sp.Integral(2 * p * pi * (h - u), (u, 0, h))), "definition",
        note="centroid of a paraboloid of revolution of height h standing on its base (vertex equation "
             "y^2 = 2 p xi from the vertex)", result=X_pc)
@@ -604,7 +604,7 @@ for name, sym, at, val, excerpt in (
 d.quote("triaxial-stump-1", "§4 triaxial ellipsoid stump",
         r"$$X = \{x' - x\} \left\{ \frac{\frac{a^2 - x'^2}{2} + a^2 - \frac{(x + x')^2}{4}}{\frac{a^2 - x^2 + "
         r"a^2 - x'^2}{2} + 2 \left\{ a^2 - \frac{(x + x')^2}{4} \right\}} \right\}.$$",
-        reading=sp.Eq(X_ts, (xp - x) * (((a ** 2 - xp ** 2) / 2 + a ** 2 - (x + xp) ** 2 / 4)
+        reading=Eq(X_ts, (xp - x) * (((a ** 2 - xp ** 2) / 2 + a ** 2 - (x + xp) ** 2 / 4)
                                         / ((a ** 2 - x ** 2 + a ** 2 - xp ** 2) / 2
                                            + 2 * (a ** 2 - (x + xp) ** 2 / 4)))))
 d.quote("triaxial-stump-same-expression", "§4 triaxial ellipsoid stump",
@@ -613,7 +613,7 @@ d.quote("triaxial-stump-same-expression", "§4 triaxial ellipsoid stump",
         reading=(X_ts, X_te, sp.Subs(X_s2, r, a)), note="the sphere's radius r plays the part of a")
 d.quote("triaxial-stump-2", "§4 triaxial ellipsoid stump",
         r"$$X = \frac{x' - x}{4} \left\{ \frac{6a^2 - 3x'^2 - 2x'x - x^2}{3a^2 - x'^2 - x'x - x^2} \right\}$$",
-        reading=sp.Eq(X_ts, (xp - x) / 4 * (num_ts / den_ts)))
+        reading=Eq(X_ts, (xp - x) / 4 * (num_ts / den_ts)))
 sections_witness("triaxial-stump", "centroid of the triaxial ellipsoid stump from its elliptic sections",
                  ("triaxial-stump-1", "triaxial-stump-2"), area_ts, xp - x,
                  ("a = 5, b = 3, c = 2, x = 1, x' = 4", {a: 5, b: 3, c: 2, x: 1, xp: 4}),

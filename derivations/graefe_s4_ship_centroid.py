@@ -18,7 +18,7 @@ slab volumes ``v' = 2m/3 (…)``.
 """
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.witness import Case, SectionIntegral
 from symfloat.model.claim import as_printed
 
@@ -59,44 +59,44 @@ DERIVATION = d = Derivation(
 )
 
 # ---- the prismatoid formulas applied -----------------------------------------------------
-d.step("prismatoid-centroid", sp.Eq(Xp, centroid(G, g, D, h)), "lemma",
+d.step("prismatoid-centroid", Eq(Xp, centroid(G, g, D, h)), "lemma",
        uses=("graefe-s3-prismatoid-centroid:centroid-collected",), result=Xp)
-d.step("prismatoid-volume", sp.Eq(Vp, volume(G, g, D, h)), "lemma",
+d.step("prismatoid-volume", Eq(Vp, volume(G, g, D, h)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected",), result=Vp)
 
 # first slab, a to c
-d.step("x1", sp.Eq(x1, centroid(a, c, b, 2 * m)), "lemma", uses=("prismatoid-centroid",), result=x1,
+d.step("x1", Eq(x1, centroid(a, c, b, 2 * m)), "lemma", uses=("prismatoid-centroid",), result=x1,
        note="G = a, D = b, g = c, h = 2m")
-d.step("v1", sp.Eq(v1, volume(a, c, b, 2 * m)), "lemma", uses=("prismatoid-volume",), result=v1)
-d.step("m1", sp.Eq(M1, x1 * v1), "definition", uses=("x1", "v1"), result=M1,
+d.step("v1", Eq(v1, volume(a, c, b, 2 * m)), "lemma", uses=("prismatoid-volume",), result=v1)
+d.step("m1", Eq(M1, x1 * v1), "definition", uses=("x1", "v1"), result=M1,
        note="moment of the slab about the plane ABC")
 d.step("m1-value", (M1, 4 * m ** 2 / 3 * (c / 2 + b)), "algebra", uses=("m1",))
 
 # second slab, c to e
-d.step("x2-local", sp.Eq(x2l, centroid(c, e, dd, 2 * m)), "lemma", uses=("prismatoid-centroid",), result=x2l,
+d.step("x2-local", Eq(x2l, centroid(c, e, dd, 2 * m)), "lemma", uses=("prismatoid-centroid",), result=x2l,
        note="distance from the plane c: G = c, D = d, g = e, h = 2m")
-d.step("x2", sp.Eq(x2, 2 * m + x2l), "definition", uses=("x2-local",), result=x2,
+d.step("x2", Eq(x2, 2 * m + x2l), "definition", uses=("x2-local",), result=x2,
        note="the plane c lies 2m from ABC")
 x2_b = 2 * m * (((c + e) / 2 + 2 * dd + e / 2 + dd) / ((c + e) / 2 + 2 * dd))
 d.step("x2-value", (x2, x2_b), "algebra", uses=("x2",))
-d.step("v2", sp.Eq(v2, volume(c, e, dd, 2 * m)), "lemma", uses=("prismatoid-volume",), result=v2)
-d.step("m2", sp.Eq(M2, x2 * v2), "definition", uses=("x2", "v2"), result=M2)
+d.step("v2", Eq(v2, volume(c, e, dd, 2 * m)), "lemma", uses=("prismatoid-volume",), result=v2)
+d.step("m2", Eq(M2, x2 * v2), "definition", uses=("x2", "v2"), result=M2)
 m2_v = 4 * m ** 2 / 3 * ((c + e) / 2 + 2 * dd + e / 2 + dd)
 d.step("m2-value", (M2, m2_v), "algebra", uses=("m2",))
 
 # third slab, e to g
-d.step("x3-local", sp.Eq(x3l, centroid(e, g, f, 2 * m)), "lemma", uses=("prismatoid-centroid",), result=x3l)
-d.step("x3", sp.Eq(x3, 4 * m + x3l), "definition", uses=("x3-local",), result=x3,
+d.step("x3-local", Eq(x3l, centroid(e, g, f, 2 * m)), "lemma", uses=("prismatoid-centroid",), result=x3l)
+d.step("x3", Eq(x3, 4 * m + x3l), "definition", uses=("x3-local",), result=x3,
        note="the plane e lies 4m from ABC")
 x3_b = (4 * m * ((e + g) / 2 + 2 * f) + 2 * m * (g / 2 + f)) / ((e + g) / 2 + 2 * f)
 d.step("x3-value", (x3, x3_b), "algebra", uses=("x3",))
-d.step("v3", sp.Eq(v3, volume(e, g, f, 2 * m)), "lemma", uses=("prismatoid-volume",), result=v3)
-d.step("m3", sp.Eq(M3, x3 * v3), "definition", uses=("x3", "v3"), result=M3)
+d.step("v3", Eq(v3, volume(e, g, f, 2 * m)), "lemma", uses=("prismatoid-volume",), result=v3)
+d.step("m3", Eq(M3, x3 * v3), "definition", uses=("x3", "v3"), result=M3)
 m3_v = 8 * m ** 2 / 3 * ((e + g) / 2 + 2 * f) + 4 * m ** 2 / 3 * (g / 2 + f)
 d.step("m3-value", (M3, m3_v), "algebra", uses=("m3",))
 
 # the whole body
-d.step("moment", sp.Eq(M, M1 + M2 + M3), "definition", uses=("m1", "m2", "m3"), result=M,
+d.step("moment", Eq(M, M1 + M2 + M3), "definition", uses=("m1", "m2", "m3"), result=M,
        note="the moment theorem: the moment of the whole is the sum of the moments of the parts")
 with sp.evaluate(False):   # the printed forms, as printed (the engine carries out their arithmetic)
     xv_1 = m ** 2 / 3 * (2 * c + 4 * b + 2 * c + 2 * e + 8 * dd + 2 * e + 4 * dd + 4 * e + 4 * g + 16 * f + 2 * g
@@ -106,10 +106,10 @@ with sp.evaluate(False):   # the printed forms, as printed (the engine carries o
     DEN = a + 4 * b + 2 * c + 4 * dd + 2 * e + 4 * f + g
     xv_3 = m ** 2 / 3 * NUM
 d.step("moment-value", (M, xv_1, xv_2, xv_3), "algebra", uses=("moment", "m1-value", "m2-value", "m3-value"))
-d.step("volume", sp.Eq(V, v1 + v2 + v3), "definition", uses=("v1", "v2", "v3"), result=V)
+d.step("volume", Eq(V, v1 + v2 + v3), "definition", uses=("v1", "v2", "v3"), result=V)
 d.step("volume-simpson", (V, m / 3 * DEN), "lemma", uses=("volume", "graefe-s2-volumes-simpson:simpson-7"),
        note="Simpson's rule as derived in §2 (with the factor m/3)")
-d.step("centroid", sp.Eq(XS, M / V), "definition", uses=("moment", "volume"), result=XS)
+d.step("centroid", Eq(XS, M / V), "definition", uses=("moment", "volume"), result=XS)
 d.step("centroid-value", (XS, as_printed(lambda: xv_3 / (m / 3 * DEN)), m * (NUM / DEN)), "algebra",
        uses=("centroid", "moment-value", "volume-simpson"))
 d.step("centroid-equal-sections", (sp.Subs(m * NUM / DEN, (b, c, dd, e, f, g), (a,) * 6), 3 * m),
@@ -120,16 +120,16 @@ d.step("centroid-equal-sections", (sp.Subs(m * NUM / DEN, (b, c, dd, e, f, g), (
 # ---- printed -------------------------------------------------------------------------------------
 d.quote("prismatoid-centroid", "§4 ship displacement centroid",
         r"$$X = h \left\{ \frac{\frac{g}{2} + D}{\frac{G + g}{2} + 2D} \right\}$$",
-        reading=sp.Eq(Xp, h * (g / 2 + D) / ((G + g) / 2 + 2 * D)))
+        reading=Eq(Xp, h * (g / 2 + D) / ((G + g) / 2 + 2 * D)))
 d.quote("x1", "§4 ship displacement centroid",
         r"$$x' = 2m \left\{ \frac{\frac{c}{2} + b}{\frac{a + c}{2} + 2b} \right\}$$",
-        reading=sp.Eq(x1, 2 * m * ((c / 2 + b) / ((a + c) / 2 + 2 * b))))
+        reading=Eq(x1, 2 * m * ((c / 2 + b) / ((a + c) / 2 + 2 * b))))
 d.quote("prismatoid-volume", "§4 ship displacement centroid",
         r"$V = \frac{h}{3} \left\{ \frac{G + g}{2} + 2D \right\}$",
-        reading=sp.Eq(Vp, h / 3 * ((G + g) / 2 + 2 * D)))
+        reading=Eq(Vp, h / 3 * ((G + g) / 2 + 2 * D)))
 d.quote("v1", "§4 ship displacement centroid",
         r"$v' = \frac{2m}{3} \left\{ \frac{a + c}{2} + 2b \right\}$",
-        reading=sp.Eq(v1, 2 * m / 3 * ((a + c) / 2 + 2 * b)))
+        reading=Eq(v1, 2 * m / 3 * ((a + c) / 2 + 2 * b)))
 d.quote("m1", "§4 ship displacement centroid",
         r"$$m' = x' v' = \frac{4m^2}{3} \left\{ \frac{c}{2} + b \right\} . -$$",
         reading=(M1, x1 * v1, 4 * m ** 2 / 3 * (c / 2 + b)))
@@ -149,13 +149,13 @@ d.quote("x2-local", "§4 ship displacement centroid",
         reading=(x2l, 2 * m * ((e / 2 + dd) / ((c + e) / 2 + 2 * dd))))
 d.quote("x2-a", "§4 ship displacement centroid",
         r"$$x'' = 2m + 2m \left\{ \frac{\frac{e}{2} + d}{\frac{c+e}{2} + 2d} \right\} \text{ oder}$$",
-        reading=sp.Eq(x2, 2 * m + 2 * m * ((e / 2 + dd) / ((c + e) / 2 + 2 * dd))))
+        reading=Eq(x2, 2 * m + 2 * m * ((e / 2 + dd) / ((c + e) / 2 + 2 * dd))))
 d.quote("x2-b", "§4 ship displacement centroid",
         r"$$x'' = 2m \left\{ \frac{\frac{c+e}{2} + 2d + \frac{e}{2} + d}{\frac{c+e}{2} + 2d} \right\}$$",
-        reading=sp.Eq(x2, x2_b))
+        reading=Eq(x2, x2_b))
 d.quote("v2", "§4 ship displacement centroid",
         r"$$v'' = \frac{2m}{3} \left\{ \frac{c+e}{2} + 2d \right\},$$",
-        reading=sp.Eq(v2, 2 * m / 3 * ((c + e) / 2 + 2 * dd)))
+        reading=Eq(v2, 2 * m / 3 * ((c + e) / 2 + 2 * dd)))
 d.quote("m2", "§4 ship displacement centroid",
         r"$$m'' = x'' v'' = \frac{4m^2}{3} \left\{ \frac{c+e}{2} + 2d + \frac{e}{2} + d \right\}.$$",
         reading=(M2, x2 * v2, m2_v))
@@ -164,14 +164,14 @@ d.quote("x3-local", "§4 ship displacement centroid",
         reading=(x3l, 2 * m * ((g / 2 + f) / ((e + g) / 2 + 2 * f))))
 d.quote("x3-a", "§4 ship displacement centroid",
         r"$$x''' = 4m + 2m \left\{ \frac{\frac{g}{2} + f}{\frac{e+g}{2} + 2f} \right\} \text{ oder}$$",
-        reading=sp.Eq(x3, 4 * m + 2 * m * ((g / 2 + f) / ((e + g) / 2 + 2 * f))))
+        reading=Eq(x3, 4 * m + 2 * m * ((g / 2 + f) / ((e + g) / 2 + 2 * f))))
 d.quote("x3-b", "§4 ship displacement centroid",
         r"$$x''' = \frac{4m \left\{ \frac{e+g}{2} + 2f \right\} + 2m \left\{ \frac{g}{2} + f \right\}}"
         r"{\frac{e+g}{2} + 2f}$$",
-        reading=sp.Eq(x3, x3_b))
+        reading=Eq(x3, x3_b))
 d.quote("v3", "§4 ship displacement centroid",
         r"$$v''' = \frac{2m}{3} \left\{ \frac{e+g}{2} + 2f \right\}, \text{ so ist sein Moment in Bezug auf die}$$",
-        reading=sp.Eq(v3, 2 * m / 3 * ((e + g) / 2 + 2 * f)))
+        reading=Eq(v3, 2 * m / 3 * ((e + g) / 2 + 2 * f)))
 d.quote("m3", "§4 ship displacement centroid",
         r"$$m''' = x''' v''' = \frac{8m^2}{3} \left\{ \frac{e+g}{2} + 2f \right\} + \frac{4m^2}{3} "
         r"\left\{ \frac{g}{2} + f \right\}.$$",
@@ -181,18 +181,18 @@ d.quote("moment-theorem", "§4 ship displacement centroid",
         reading=(M, XS * V, x1 * v1 + x2 * v2 + x3 * v3))
 d.quote("moment-1", "§4 ship displacement centroid",
         r"$$XV = \frac{m^2}{3} \left\{ 2c + 4b + 2c + 2e + 8d + 2e + 4d + 4e + 4g + 16f + 2g + 4f \right\}$$",
-        reading=sp.Eq(XS * V, xv_1))
+        reading=Eq(XS * V, xv_1))
 d.quote("moment-2", "§4 ship displacement centroid",
         r"$$XV = \frac{m^2}{3} \left\{ 4b + 4c + 12d + 8e + 20f + 6g \right\}.$$",
-        reading=sp.Eq(XS * V, xv_2))
+        reading=Eq(XS * V, xv_2))
 d.quote("moment-3", "§4 ship displacement centroid",
         r"$$XV = \frac{m^2}{3} \left\{ a \times 0 + 4b \times 1 + 2c \times 2 + 4d \times 3 + 2e \times 4 + "
         r"4f \times 5 + g \times 6 \right\}$$",
-        reading=sp.Eq(XS * V, xv_3))
+        reading=Eq(XS * V, xv_3))
 d.quote("centroid", "§4 ship displacement centroid",
         r"$$x = \frac{m}{3} \left\{ \frac{a \times 0 + 4b \times 1 + 2c \times 2 + 4d \times 3 + 2e \times 4 + "
         r"4f \times 5 + g \times 6}{a + 4b + 2c + 4d + 2e + 4f + g} \right\}.$$",
-        reading=sp.Eq(XS, m / 3 * (NUM / DEN)),
+        reading=Eq(XS, m / 3 * (NUM / DEN)),
         erratum=Erratum("consequential", "high",
                         r"x = m \left\{ \frac{a \times 0 + 4b \times 1 + 2c \times 2 + 4d \times 3 + 2e \times 4 + "
                         r"4f \times 5 + g \times 6}{a + 4b + 2c + 4d + 2e + 4f + g} \right\}",
@@ -201,7 +201,7 @@ d.quote("centroid", "§4 ship displacement centroid",
                         "Simpson's rule is lost (graefe-s2-volumes-simpson/simpson-rule): XV / (m {...}) is "
                         "exactly the printed m/3 {...}. Check: with all sections equal the body is a prism of "
                         "length 6m, its centroid lies at 3m; the print gives m.",
-                        corrected_reading=sp.Eq(XS, m * (NUM / DEN))))
+                        corrected_reading=Eq(XS, m * (NUM / DEN))))
 
 # ---- witnesses ----------------------------------------------------------------------------------------
 # Bodies whose section area is a quadratic polynomial of the distance from ABC: every slab is then

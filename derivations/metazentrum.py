@@ -18,7 +18,7 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Erratum, Prediction
+from symfloat import Derivation, Eq, Erratum, Prediction
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.model.prediction import box_uprights
 from symfloat.geometry.floating import clip_below, floating_state, right_prism, volume_centroid
@@ -46,8 +46,8 @@ DERIVATION = dv = Derivation(
 )
 dv.step("displaced-volume", (V_b, sp.Integral(1, (x, -a, a), (y, -b, b), (z, -d, 0)), 4 * a * b * d), "integration",
         result=V_b)
-dv.step("displaced-mass", sp.Eq(M_b, rho_w * V_b), "definition", result=M_b)
-dv.step("archimedes", sp.Eq(rho_s, rho_w * V_b / sp.integrate(1, (x, -a, a), (y, -b, b), (z, -d, 2 * c - d))),
+dv.step("displaced-mass", Eq(M_b, rho_w * V_b), "definition", result=M_b)
+dv.step("archimedes", Eq(rho_s, rho_w * V_b / sp.integrate(1, (x, -a, a), (y, -b, b), (z, -d, 2 * c - d))),
         "definition", result=rho_s, note="the body floats: its mass 8abc rho_s equals the displaced mass M_b")
 dv.step("body-mass", (M_s, rho_s * sp.Integral(1, (x, -a, a), (y, -b, b), (z, -d, 2 * c - d)), rho_w * 4 * a * b * d),
         "integration", result=M_s, uses=("archimedes",))
@@ -74,7 +74,7 @@ dv.step("radius-inertia", (BM, I_w / V_b), "algebra", uses=("radius", "waterplan
         note="the same radius as the waterplane's moment of inertia over the displaced volume (Duhamel, Bouguer)")
 dv.step("metacentre", (z_M, z_B + BM, -d / 2 + b ** 2 / (3 * d)), "algebra", result=z_M,
         uses=("buoyancy-centre", "radius"))
-dv.step("stability-function", sp.Eq(e, d / (2 * c ** 2) * (z_M - z_G)), "definition", result=e,
+dv.step("stability-function", Eq(e, d / (2 * c ** 2) * (z_M - z_G)), "definition", result=e,
         note="the lesson's e is z_M - z_G made dimensionless: times d/(2c^2) > 0, so it has the sign of z_M - z_G")
 e_print = sp.Rational(1, 6) * b ** 2 / c ** 2 - d / (2 * c) * (1 - d / (2 * c))
 dv.step("stability-function-value", (e, e_print), "algebra", uses=("stability-function", "metacentre", "gravity-centre"))

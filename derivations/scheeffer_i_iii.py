@@ -34,7 +34,7 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.geometry.floating import clip_below, draught, floating_state, right_prism, volume_centroid
 from symfloat.model.claim import as_printed
@@ -86,16 +86,16 @@ d.quote("equilibrium", "(1)", "Hieraus erh√§lt man zwei Bedingungsgleichungen f√
         lost="the two equations (1) (static moments of the submerged part about two vertical planes through S "
              "equal to zero) are not displayed; only '(1' survives")
 
-d.step("buoyancy-moment-v", sp.Eq(v, (V1 * 0 - V3 * (-v4) + V3 * v3) / V1), "definition", result=v,
+d.step("buoyancy-moment-v", Eq(v, (V1 * 0 - V3 * (-v4) + V3 * v3) / V1), "definition", result=v,
        note="moment theorem across the axis: new submerged part = old (S1 on the axis) - emerged wedge "
             "(S4 at v = -v4) + immersed wedge (S3 at v = +v3)")
-d.step("buoyancy-moment-u", sp.Eq(u, (V1 * e1 - V3 * (-u4) + V3 * (-u3)) / V1), "definition", result=u,
+d.step("buoyancy-moment-u", Eq(u, (V1 * e1 - V3 * (-u4) + V3 * (-u3)) / V1), "definition", result=u,
        note="moment theorem along the axis (u downwards from S): S1 at u = e1, S3 and S4 above S at "
             "u = -u3, -u4 (Fig. 3)")
 d.step("moments-6-raw", (sp.Matrix([V1 * v, V1 * u]), sp.Matrix([V3 * (v3 + v4), V1 * e1 - V3 * (u3 - u4)])),
        "algebra", uses=("buoyancy-moment-v", "buoyancy-moment-u"))
-d.step("e-def", sp.Eq(e, v3 + v4), "definition", result=e, note="e = v3 + v4 = EF")
-d.step("k-def", sp.Eq(k, u3 - u4), "definition", result=k, note="k = u3 - u4 = S3F + S4E")
+d.step("e-def", Eq(e, v3 + v4), "definition", result=e, note="e = v3 + v4 = EF")
+d.step("k-def", Eq(k, u3 - u4), "definition", result=k, note="k = u3 - u4 = S3F + S4E")
 d.step("moments-6", (sp.Matrix([V1 * v, V1 * u]), sp.Matrix([V3 * e, V1 * e1 - V3 * k])), "algebra",
        uses=("moments-6-raw", "e-def", "k-def"))
 
@@ -105,8 +105,8 @@ d.step("frame", (sp.Matrix([ev.dot(ev), eu.dot(eu), ev.dot(eu), eu[1]]), sp.Matr
        "geometry", note="the body frame (v, u) is orthonormal and its axis SS1 makes the angle phi with the "
                         "vertical SL")
 S2w = v * ev + u * eu
-d.step("m-def", sp.Eq(m, S2w[0]), "definition", result=m, note="m = SA: horizontal coordinate of S2")
-d.step("n-def", sp.Eq(n, S2w[1]), "definition", result=n, note="n = AS2: depth of S2 below S")
+d.step("m-def", Eq(m, S2w[0]), "definition", result=m, note="m = SA: horizontal coordinate of S2")
+d.step("n-def", Eq(n, S2w[1]), "definition", result=n, note="n = AS2: depth of S2 below S")
 d.step("rotation-5", (sp.Matrix([m, n]), sp.Matrix([v * sp.cos(phi) - u * sp.sin(phi),
                                                     v * sp.sin(phi) + u * sp.cos(phi)])),
        "geometry", uses=("frame", "m-def", "n-def"))
@@ -165,7 +165,7 @@ d.step("volume-balance", (V3g - V4g, tg * (sp.Integral((s - a0) * W, (s, a0, Hh)
        "integration", uses=("element-volume", "trapezoid-area", "trapezoid-centroid"),
        note="for an axis at any distance a0 from the side P1: V3 - V4 = tg phi (int_3 x df - int_4 x df) = "
             "tg phi * area * (centroid - a0), so V3 = V4 (Archimedes) only for a0 at the centroid")
-d.step("axis", sp.Eq(a, sbar), "definition", result=a, uses=("volume-balance",),
+d.step("axis", Eq(a, sbar), "definition", result=a, uses=("volume-balance",),
        note="the rotation axis: the only root a0 of V3 = V4, the centroid line of the old waterplane")
 V3i, V4i = wedge(sp.Integer(1), a)
 Mx3i, Mx4i = wedge(x, a)
@@ -202,13 +202,13 @@ d.step("wedge-moments-4", (sp.Matrix([My4, Mx4]), sp.Matrix([tg ** 2 / 2 * J4, t
        uses=("element-moment-y", "element-moment-x", "My4", "Mx4", "J4"))
 # the wedge centroids in the frame of the old waterline (O the axis), and their body coordinates
 for sym, val, nm in ((x3, Mx3 / V3, "x3"), (y3, My3 / V3, "y3"), (x4, Mx4 / V4, "x4"), (y4, My4 / V4, "y4")):
-    d.step(nm, sp.Eq(sym, val), "definition", result=sym, note="wedge centroid: moment over volume")
-d.step("body-coordinates", sp.Eq(v3, c0 + x3), "definition", result=v3,
+    d.step(nm, Eq(sym, val), "definition", result=sym, note="wedge centroid: moment over volume")
+d.step("body-coordinates", Eq(v3, c0 + x3), "definition", result=v3,
        note="O, the trace of the axis, lies at v = c0 on the old waterline, which lies at the height h0 above S; "
             "S3 lies beyond O by x3 (OF) and above the old waterline by y3 (S3F)")
-d.step("body-coordinates-4", sp.Eq(v4, x4 - c0), "definition", result=v4, note="S4 lies on the other side, OE = x4")
-d.step("body-coordinates-u3", sp.Eq(u3, h0 + y3), "definition", result=u3)
-d.step("body-coordinates-u4", sp.Eq(u4, h0 - y4), "definition", result=u4, note="S4 lies below the old waterline")
+d.step("body-coordinates-4", Eq(v4, x4 - c0), "definition", result=v4, note="S4 lies on the other side, OE = x4")
+d.step("body-coordinates-u3", Eq(u3, h0 + y3), "definition", result=u3)
+d.step("body-coordinates-u4", Eq(u4, h0 - y4), "definition", result=u4, note="S4 lies below the old waterline")
 d.step("e-k-wedges", (sp.Matrix([e, k]), sp.Matrix([x3 + x4, y3 + y4])), "geometry",
        uses=("e-def", "k-def", "body-coordinates", "body-coordinates-4", "body-coordinates-u3",
              "body-coordinates-u4"), note="EF = e and S3F + S4E = k, for any position (c0, h0) of O")

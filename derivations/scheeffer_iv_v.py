@@ -35,7 +35,7 @@ import math
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Erratum, Prediction
+from symfloat import Derivation, Eq, Erratum, Prediction
 from symfloat.engine.witness import Case, Computed
 from symfloat.model.prediction import box_uprights
 from symfloat.geometry.floating import floating_state, right_prism, submerged
@@ -142,12 +142,12 @@ d.step("frame", (sp.Matrix([kup.dot(sp.Matrix([1, 0, tph])), kup.dot(sp.Matrix([
        note="k is the unit normal of the waterplane II (vertical), h the horizontal across EF")
 MS2 = sp.Matrix([Mu, Mv, Mz])                       # V_1 times the centroid S_2 of the tilted submerged part
 S = sp.Matrix([0, 0, zS])
-d.step("arm-m", sp.Eq(m, hor.dot(MS2 - V1 * S) / V1), "definition", result=m,
+d.step("arm-m", Eq(m, hor.dot(MS2 - V1 * S) / V1), "definition", result=m,
        note="righting arm (Scheeffer's m, section I): horizontal distance of S_2 from S across EF, positive "
             "when the buoyancy turns the prism back")
-d.step("height-n", sp.Eq(n, kup.dot(V1 * S - MS2) / V1), "definition", result=n,
+d.step("height-n", Eq(n, kup.dot(V1 * S - MS2) / V1), "definition", result=n,
        note="n: height of S above S_2 (Scheeffer's A S_2)")
-d.step("axis-w", sp.Eq(wax, (MS2 - V1 * S)[1] / V1), "definition", result=wax,
+d.step("axis-w", Eq(wax, (MS2 - V1 * S)[1] / V1), "definition", result=wax,
        note="offset of S_2 from S along EF")
 d.step("eq12", (V1 * m, sp.sin(phi) * ((1 + tph ** 2 / 2) * T1 - V1 * e1)), "algebra",
        uses=("moment-u", "moment-z", "arm-m", "e1", "scheeffer-i-iii:righting-moment-12"),
@@ -175,15 +175,14 @@ def res(expr):
 # ---- IV.1  the first condition: tan phi_1 (27) -----------------------------------------------------------------
 X = sp.Symbol("X", positive=True)
 Qx = (1 + X ** 2 / 2) * T1 - V1 * e1
-roots = [r for r in sp.solve(sp.Eq(Qx.subs({V1: F1 * b * s, e1: b * (1 - s) / 2}), 0), X)]
 root = sp.sqrt(2 * (V1 * e1 / T1 - 1))
-d.step("factor-Q", sp.Eq(Q, (1 + tph ** 2 / 2) * T1 - V1 * e1), "definition", result=Q,
+d.step("factor-Q", Eq(Q, (1 + tph ** 2 / 2) * T1 - V1 * e1), "definition", result=Q,
        note="the factor of sin phi in (12)")
 d.step("Q-increasing", (sp.Derivative(Q, phi), T1 * tph * (1 + tph ** 2)), "algebra", uses=("factor-Q",),
        note="positive for 0 < phi < 90 deg: Q < 0 near the upright position grows to +oo, one zero")
 d.step("root-check", (sp.Subs(Qx, X, root), 0), "algebra",
-       note=f"sp.solve gives the roots {roots} of Q = 0 in tan phi; the positive one is this")
-d.step("phi1", sp.Eq(phi1, sp.atan(root)), "definition", uses=("root-check", "Q-increasing"), result=phi1,
+       note="Q = 0 is quadratic in tan phi, with the roots +-sqrt(2 (V1 e1/T1 - 1)); the positive one is this")
+d.step("phi1", Eq(phi1, sp.atan(root)), "definition", uses=("root-check", "Q-increasing"), result=phi1,
        note="the tilted position: the zero of the righting moment (12) for phi > 0, provided V_1 e_1 > T_1")
 t1 = sp.tan(phi1)
 
@@ -194,13 +193,13 @@ zel = sp.Symbol("z_el")
 d.step("column-3", (sp.Integral(v3, (z, 0, u3 * t1)), u3 * v3 * t1), "integration",
        note="moment of the column over df (height z = u_3 tan phi_1) about the vertical plane through OS "
             "across EF, per unit df")
-d.step("M3", sp.Eq(M3, t1 * P3), "definition", uses=("column-3",), result=M3,
+d.step("M3", Eq(M3, t1 * P3), "definition", uses=("column-3",), result=M3,
        note="P_3 = int_3 u v df over FHE, the dipping part of the waterplane I")
-d.step("M4", sp.Eq(M4, t1 * (P3 - P)), "definition", uses=("column-3",), result=M4,
+d.step("M4", Eq(M4, t1 * (P3 - P)), "definition", uses=("column-3",), result=M4,
        note="int_4 u_4 v_4 df = P_3 - P: the rising part FGE with u_4 = -u (P = int_3 + int_4 u v df)")
 d.step("M2", (M2, res(Mv).subs(phi, phi1), M3 - M4, P * t1), "algebra", uses=("moment-v", "M3", "M4"),
        note="the old submerged part has the moment V_1 * 0 (v centroid 0); M_2 = V_1 w at phi_1", result=M2)
-d.step("e2", sp.Eq(e2, res(n).subs(phi, phi1)), "definition", result=e2,
+d.step("e2", Eq(e2, res(n).subs(phi, phi1)), "definition", result=e2,
        note="at an equilibrium S lies vertically above S_2, so e_2 = |S S_2| = n (checked next)")
 d.step("e2-vertical", (sp.Matrix([res(m).subs(phi, phi1), res(wax).subs(phi, phi1).subs(P, 0)]), sp.Matrix([0, 0])),
        "algebra", uses=("arm-m", "axis-w", "phi1"), note="both horizontal offsets vanish at phi_1 when P = 0")
@@ -215,9 +214,9 @@ d.step("coords-II", (sp.Matrix([pt.dot(hor1), pt.dot(ev)]), sp.Matrix([u / sp.co
 jac = sp.Matrix([1, 0, sp.tan(phi1)]).cross(sp.Matrix([0, 1, 0]))
 d.step("area-II", (sp.sqrt(jac.dot(jac)), 1 / sp.cos(phi1)), "geometry",
        note="area element: df_2 = |d p/du x d p/dv| df = df / cos phi_1")
-d.step("ratio-df", sp.Eq(rdf, sp.cos(phi1)), "definition", uses=("area-II",), result=rdf, note="df/df_2")
-d.step("ratio-u", sp.Eq(ru, sp.cos(phi1)), "definition", uses=("coords-II",), result=ru, note="u/u_2")
-d.step("ratio-v", sp.Eq(rv, 1), "definition", uses=("coords-II",), result=rv, note="v/v_2")
+d.step("ratio-df", Eq(rdf, sp.cos(phi1)), "definition", uses=("area-II",), result=rdf, note="df/df_2")
+d.step("ratio-u", Eq(ru, sp.cos(phi1)), "definition", uses=("coords-II",), result=ru, note="u/u_2")
+d.step("ratio-v", Eq(rv, 1), "definition", uses=("coords-II",), result=rv, note="v/v_2")
 c = sp.cos(phi1)
 d.step("T2", (T2, area_integral((u / c) ** 2 / c, u, v, MOM_I), T1 / c ** 3), "integration",
        uses=("coords-II", "area-II"), note="int_2 u_2^2 df_2 pulled back to I: " + NOTE_L, result=T2)
@@ -229,7 +228,7 @@ d.step("P2-eq", (P2e, sp.Subs(P2, P, 0), 0), "substitution", uses=("P2",), resul
        note="at the equilibrium int_1 u v df = 0 (31)")
 MOM_II = {(2, 0): T2, (0, 2): T21, (1, 1): P2}
 zdist = sp.Matrix([u2, v2]).dot(sp.Matrix([sp.cos(mu), sp.sin(mu)]))
-d.step("zeta", sp.Eq(zeta, zdist), "definition", result=zeta,
+d.step("zeta", Eq(zeta, zdist), "definition", result=zeta,
        note="distance of (u_2, v_2) from the axis PQ through O with direction (-sin mu, cos mu): PQ makes the "
             "angle mu with EF, turned towards -u_2 (Fig. 11 is missing: the orientation of mu is free)")
 d.step("T-mu", (Tmu, area_integral(zdist ** 2, u2, v2, MOM_II),
@@ -241,8 +240,8 @@ d.step("T-mu-between", (Tmue, T2 + (T21 - T2) * sp.sin(mu) ** 2), "algebra", use
        note="T(mu) lies between T_2 and T_2^1: its extreme values are taken at mu = 0 and 90 deg")
 d.step("Tm", (Tm, sp.Subs(Tmue, mu, 0), T2), "substitution", uses=("T-mu-eq",), result=Tm)
 d.step("Tm1", (Tm1, sp.Subs(Tmue, mu, sp.pi / 2), T21), "substitution", uses=("T-mu-eq",), result=Tm1)
-d.step("Tmin", sp.Eq(Tmin, sp.Min(Tm, Tm1)), "definition", uses=("T-mu-between",), result=Tmin)
-d.step("D2", sp.Eq(D2, Tmin - V1 * e2), "definition", result=D2,
+d.step("Tmin", Eq(Tmin, sp.Min(Tm, Tm1)), "definition", uses=("T-mu-between",), result=Tmin)
+d.step("D2", Eq(D2, Tmin - V1 * e2), "definition", result=D2,
        note="Duhamel's criterion (18) for the position phi_1: V_1 times its metacentric height, the smallest "
             "moment of inertia of II minus V_1 times the height of S above S_2")
 d.step("D2-value", (D2, sp.Min(T1 / c ** 3, T11 / c) - T1 / c), "substitution",
@@ -257,8 +256,8 @@ d.step("rotation-44", (sp.Matrix([Uw, Vw]), sp.Matrix([y * sp.sin(om) + x * sp.c
             "the angle omega with AB")
 d.step("rotation-orthogonal", ((y * sp.sin(om) + x * sp.cos(om)) ** 2 + (y * sp.cos(om) - x * sp.sin(om)) ** 2,
                                x ** 2 + y ** 2), "geometry", note="a rotation: lengths are kept")
-d.step("rotation-result-u", sp.Eq(Uw, y * sp.sin(om) + x * sp.cos(om)), "definition", result=Uw)
-d.step("rotation-result-v", sp.Eq(Vw, y * sp.cos(om) - x * sp.sin(om)), "definition", result=Vw)
+d.step("rotation-result-u", Eq(Uw, y * sp.sin(om) + x * sp.cos(om)), "definition", result=Uw)
+d.step("rotation-result-v", Eq(Vw, y * sp.cos(om) - x * sp.sin(om)), "definition", result=Vw)
 Uv, Vv = y * sp.sin(om) + x * sp.cos(om), y * sp.cos(om) - x * sp.sin(om)
 d.step("Iuv", (Iuv, area_integral(Uv * Vv, x, y, MOM_XY),
                sp.Rational(1, 2) * (Tx - Ty) * sp.sin(2 * om) + J * sp.cos(2 * om)), "integration",
@@ -281,18 +280,19 @@ d.step("Tm-isotropic", (Tmi, sp.Subs(Tm, T11, T1), T1 / c ** 3), "substitution",
 d.step("Tm1-isotropic", (Tm1i, sp.Subs(Tm1, T11, T1), T1 / c), "substitution", uses=("Tm1",), result=Tm1i)
 
 # ---- V  face limits (53)-(55) ----------------------------------------------------------------------------------
-d.step("top-contact", sp.Eq(phtop, sp.atan(b * (1 - s) / utop)), "definition", result=phtop,
+d.step("top-contact", Eq(phtop, sp.atan(b * (1 - s) / utop)), "definition", result=phtop,
        note="the plane z = u tan phi reaches the upper base z = b (1 - s) first at its farthest dipping point "
             "u = u_m")
 d.step("top-contact-check", (utop * sp.tan(phtop), b * (1 - s)), "geometry", uses=("top-contact",))
-d.step("bottom-contact", sp.Eq(phbot, sp.atan(b * s / ubot)), "definition", result=phbot,
+d.step("bottom-contact", Eq(phbot, sp.atan(b * s / ubot)), "definition", result=phbot,
        note="the plane z = u tan phi reaches the lower base z = -b s first at its farthest rising point "
             "u = -u_m'")
 d.step("bottom-contact-check", (-ubot * sp.tan(phbot), -b * s), "geometry", uses=("bottom-contact",))
-d.step("limit", sp.Eq(Lim, sp.Min(sp.tan(phtop), sp.tan(phbot))), "definition", result=Lim,
+d.step("limit", Eq(Lim, sp.Min(sp.tan(phtop), sp.tan(phbot))), "definition", result=Lim,
        note="the first rotation region: tan phi up to the first contact of either base")
 sstar = sp.Symbol("s^*")
-d.step("threshold", sp.Eq(sstar, sp.solve(sp.Eq(b * (1 - s) / utop, b * s / ubot), s)[0]), "definition",
+d.step("threshold", Eq(sstar, sp.solve(Eq(b * (1 - s) / utop, b * s / ubot), s, simplify=False, check=False)[0]),
+       "definition",
        result=sstar, note="the specific gravity at which both bases are reached at the same tilt (sp.solve)")
 d.step("threshold-check", (sp.Subs(b * (1 - s) / utop - b * s / ubot, s, sstar), 0), "algebra",
        uses=("threshold",))

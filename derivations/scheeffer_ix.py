@@ -47,7 +47,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state
@@ -113,7 +113,7 @@ d.step("V1", (V1, sp.Integral(1, (x_, -a / 2, a / 2), (zz, -c / 2, c / 2), (y_, 
        "integration", result=V1)
 d.step("e1", (e1, b / 2 - sp.Integral(y_, (y_, 0, b * s)) / (b * s), b * (1 - s) / 2), "integration", result=e1,
        note="G lies b/2 above the bottom, the upright centre of buoyancy b s/2")
-d.step("righting-arm", sp.Eq(GZ1, sp.sin(phi1) / V1 * ((1 + sp.tan(phi1) ** 2 / 2) * T1 - V1 * e1)), "lemma",
+d.step("righting-arm", Eq(GZ1, sp.sin(phi1) / V1 * ((1 + sp.tan(phi1) ** 2 / 2) * T1 - V1 * e1)), "lemma",
        uses=("scheeffer-iv-v:eq12",), result=GZ1,
        note="Scheeffer's (12) for a prism turned in its first rotation domain (exact column integrals)")
 d.step("upright-a", (GMa, sp.Limit(GZ1 / phi1, phi1, 0), T1 / V1 - e1, a ** 2 / (12 * b * s) - b * (1 - s) / 2),
@@ -126,15 +126,15 @@ d.step("oblique-a-root", ((1 + tan2a / 2) * T1 - V1 * e1, 0), "algebra", uses=("
        note="the factor of GZ_1 vanishes at tan^2 phi_1")
 d.step("oblique-c", (tan2c, 2 * (V1 * e1 / T11 - 1), 12 * (b / c) ** 2 * s * (1 - s) - 2), "algebra",
        result=tan2c, note="turned about the axis parallel to a: T_1^1 in the place of T_1")
-d.step("perpendicular-margin", sp.Eq(Dp, T11 / sp.cos(phi1) - T1 / sp.cos(phi1)), "lemma",
+d.step("perpendicular-margin", Eq(Dp, T11 / sp.cos(phi1) - T1 / sp.cos(phi1)), "lemma",
        uses=("scheeffer-iv-v:D2-value",), result=Dp,
        note="at the oblique equilibrium the waterplane moment about the perpendicular axis less V_1 e_2 "
             "(section IV): its sign decides the stability across the rotation, (43a)")
 d.step("touch-top", (sp.Subs(b * (1 - s) * sp.cos(phi1) - a / 2 * sp.sin(phi1), phi1, sp.atan(2 * b * (1 - s) / a)), 0),
        "geometry", note="the top edge at a/2 across the axis, b(1-s) above the plane through O, reaches the water")
-d.step("touch-limit", sp.Eq(tla, PW(2 * b * (1 - s) / a, 2 * b * s / a)), "definition", uses=("touch-top",),
+d.step("touch-limit", Eq(tla, PW(2 * b * (1 - s) / a, 2 * b * s / a)), "definition", uses=("touch-top",),
        result=tla, note="tan of the tilt at which a base face reaches the water (bottom face for s < 1/2)")
-d.step("touch-limit-c", sp.Eq(tlc, PW(2 * b * (1 - s) / c, 2 * b * s / c)), "definition", result=tlc)
+d.step("touch-limit-c", Eq(tlc, PW(2 * b * (1 - s) / c, 2 * b * s / c)), "definition", result=tlc)
 
 d.quote("122", "(122)", r"$$\frac{T_1}{V_1} - e_1 > 0 \quad (122)$$", reading=(T1 / V1 - e1, GMa))
 d.quote("T1", "IX.A", r"$$T_1 = \frac{c a^2}{12}$$", reading=(T1, c * a ** 2 / 12),
@@ -217,9 +217,9 @@ d.quote("132c", "(132c)",
         note="'2s & (3-4s) „' is the scan's table of 2s(3-4s) for s < 1/2 (the ditto mark „ for 'für')")
 
 # ==== B. the second region ===========================================================================
-d.step("sigma", sp.Eq(sg, 1 - s), "definition", result=sg, note="the text's sigma = 1 - s")
-d.step("n", sp.Eq(n, (a / b) ** 2), "definition", result=n, note="the text's n = (a/b)^2")
-d.step("rho", sp.Eq(rho, 2 * (1 - s) * (4 * s - 1)), "definition", result=rho, note="(161a)")
+d.step("sigma", Eq(sg, 1 - s), "definition", result=sg, note="the text's sigma = 1 - s")
+d.step("n", Eq(n, (a / b) ** 2), "definition", result=n, note="the text's n = (a/b)^2")
+d.step("rho", Eq(rho, 2 * (1 - s) * (4 * s - 1)), "definition", result=rho, note="(161a)")
 # the dry triangle at the rising corner D = (a/2, b/2): legs x along b and L along a
 Dpt = sp.Matrix([a / 2, b / 2])
 tri = [Dpt, Dpt - sp.Matrix([0, xl]), Dpt - sp.Matrix([Ll, 0])]
@@ -229,14 +229,14 @@ d.step("waterline-slope", (u_up.dot(tri[2] - tri[1]).subs(Ll, xl / sp.tan(phi)),
        note="the hypotenuse HG (from x below D on side b to L left of D on side a) is horizontal iff L = x cot phi")
 d.step("dry-area", (sp.Integral(sp.Integral(1, (y_, 0, xl * (1 - x_ / Ll))), (x_, 0, Ll)), xl * Ll / 2), "integration",
        note="the dry part is the triangle with legs x and L (s > 1/2, second region); its area is sigma a b")
-d.step("leg", sp.Eq(X, sp.sqrt(2 * a * b * sg * sp.tan(phi))), "definition", result=X,
+d.step("leg", Eq(X, sp.sqrt(2 * a * b * sg * sp.tan(phi))), "definition", result=X,
        note="x from x L/2 = sigma a b with L = x cot phi")
 d.step("leg-check", ((X * X / sp.tan(phi)) / 2, a * b * sg), "algebra", uses=("leg", "dry-area", "waterline-slope"))
 S3 = sum(tri, sp.zeros(2, 1)) / 3
 d.step("dry-centroid", (S3, as_printed(lambda: sp.Matrix([a / 2 - Ll / 3, b / 2 - xl / 3]))), "geometry",
        note="centroid of the dry triangle (mean of its vertices), body frame with S at the origin")
 S3phi = sp.Matrix([a / 2 - X / sp.tan(phi) / 3, b / 2 - X / 3])
-d.step("potential", sp.Eq(Ez, sg / (1 - sg) * u_up.dot(S3phi)), "definition", result=Ez,
+d.step("potential", Eq(Ez, sg / (1 - sg) * u_up.dot(S3phi)), "definition", result=Ez,
        note="height of G above B: V G = V_sub B + V_dry S_3 with G = 0, V_dry/V_sub = sigma/s, so E = -u.B = "
             "(sigma/s) u.S_3")
 d.step("potential-derivative", (sp.Derivative(Ez, phi), sg / (1 - sg) * h_dir.dot(S3phi)), "integration",
@@ -246,14 +246,14 @@ d.step("potential-derivative", (sp.Derivative(Ez, phi), sg / (1 - sg) * h_dir.do
 phi_z = sp.atan(b * z ** 2 / (2 * a * sg))
 d.step("tilt-of-z", (sp.Subs(X / b, phi, phi_z), z), "algebra", uses=("leg",),
        note="z = x/b belongs to the tilt tan phi_2 = b z^2/(2 a sigma) (134)")
-d.step("m3", sp.Eq(M3, (h_dir.dot(sp.Matrix([a / 2 - 2 * a * sg / z / 3, b / 2 - b * z / 3]))).subs(phi, phi_z)),
+d.step("m3", Eq(M3, (h_dir.dot(sp.Matrix([a / 2 - 2 * a * sg / z / 3, b / 2 - b * z / 3]))).subs(phi, phi_z)),
        "definition", result=M3, uses=("tilt-of-z", "dry-centroid"),
        note="m_3 at z: x = b z, L = 2 a sigma/z, phi_2 = atan(b z^2/(2 a sigma))")
 quartic = z ** 4 - sp.Rational(3, 2) * z ** 3 + 3 * n * sg * z - 4 * n * sg ** 2
 F_def = 3 * (h_dir.dot(sp.Matrix([a / 2 - 2 * a * sg / z / 3, b / 2 - b * z / 3]))).subs(phi, phi_z) * z ** 3 / (b * sp.sin(phi_z))
 F2s = F_def.subs(z, 2 * sg)       # F at the ends of the second region
 F1v = F_def.subs(z, 1)
-d.step("F", sp.Eq(Fz, 3 * M3 * z ** 3 / (b * sp.sin(phi_z))), "definition",
+d.step("F", Eq(Fz, 3 * M3 * z ** 3 / (b * sp.sin(phi_z))), "definition",
        note="the left side of (133), the text's F(z)")
 d.step("F-quartic", (Fz, 3 * M3 * z ** 3 / (b * sp.sin(phi_z)), quartic), "algebra", uses=("F", "m3"), result=Fz,
        note="the quartic of (133)/(136), from the centroid of the dry triangle")
@@ -262,14 +262,14 @@ d.step("righting-sign", (sp.Subs(sp.Derivative(Ez, phi), phi, phi_z), sg / (1 - 
        note="z grows with phi_2: a root where F goes from - to + is a minimum of the potential (stable)")
 d.step("corner-C", (sp.Subs(2 * a * sg / z, z, 2 * sg), a), "geometry",
        note="L = a: the second top corner C reaches the water, the smallest tilt of the region")
-d.step("z-low", sp.Eq(Zlo, 2 * sg), "definition", uses=("corner-C",), result=Zlo)
-d.step("z-high", sp.Eq(Zhi, 1), "definition", result=Zhi, note="x = b: the bottom corner A reaches the water")
+d.step("z-low", Eq(Zlo, 2 * sg), "definition", uses=("corner-C",), result=Zlo)
+d.step("z-high", Eq(Zhi, 1), "definition", result=Zhi, note="x = b: the bottom corner A reaches the water")
 d.step("F1", (sp.Derivative(Fz, z), 4 * z ** 3 - sp.Rational(9, 2) * z ** 2 + 3 * sg * n), "algebra", uses=("F-quartic",))
 d.step("F2", (sp.Derivative(Fz, z, 2), 3 * z * (4 * z - 3)), "algebra", uses=("F-quartic",))
 d.step("F-in-n", (sp.Derivative(quartic.subs(n, nu), nu), 3 * sg * (z - sp.Rational(4, 3) * sg)), "algebra",
        note="F grows with n where z > 4 sigma/3, in particular on the whole region z >= 2 sigma")
 HGexpr = X / sp.sin(phi)
-d.step("HG", sp.Eq(HG, HGexpr), "definition", result=HG,
+d.step("HG", Eq(HG, HGexpr), "definition", result=HG,
        note="the waterline HG is the hypotenuse of the dry triangle: x = HG sin phi_2")
 d.step("HG-squared", (HG ** 2, X ** 2 + (X / sp.tan(phi)) ** 2), "algebra", uses=("HG", "leg"))
 
@@ -287,13 +287,13 @@ d.step("locus-quadratic", (sp.expand(128 * (9 - 8 * w) * (sg_of_w - sig_t)),
 qa, qb, qc = 64, -(72 + 24 * t), 9 + 27 * t
 Zp_e = (-qb + sp.sqrt(qb ** 2 - 4 * qa * qc)) / (2 * qa)
 Zm_e = (-qb - sp.sqrt(qb ** 2 - 4 * qa * qc)) / (2 * qa)
-d.step("z-plus", sp.Eq(Zp, Zp_e), "definition", result=Zp, uses=("locus-quadratic",),
+d.step("z-plus", Eq(Zp, Zp_e), "definition", result=Zp, uses=("locus-quadratic",),
        note="the two roots of the quadratic; z_+ the larger")
-d.step("z-minus", sp.Eq(Zm, Zm_e), "definition", result=Zm, uses=("locus-quadratic",))
+d.step("z-minus", Eq(Zm, Zm_e), "definition", result=Zm, uses=("locus-quadratic",))
 d.step("roots-check", (sp.Matrix([qa * Zp ** 2 + qb * Zp + qc, qa * Zm ** 2 + qb * Zm + qc]), sp.zeros(2, 1)), "algebra")
-d.step("n-plus", sp.Eq(N1, n_of_w.subs(w, Zp)), "definition", result=N1, uses=("locus",),
+d.step("n-plus", Eq(N1, n_of_w.subs(w, Zp)), "definition", result=N1, uses=("locus",),
        note="the n at which F has the double root z_+")
-d.step("n-minus", sp.Eq(N2, n_of_w.subs(w, Zm)), "definition", result=N2, uses=("locus",))
+d.step("n-minus", Eq(N2, n_of_w.subs(w, Zm)), "definition", result=N2, uses=("locus",))
 d.step("reciprocal", (N1 * N2, 1), "algebra", note="the two critical values are reciprocal: n_2 = (b/a)^2 at n_1 = (a/b)^2")
 d.step("S", (Ssum, N1 + 1 / N1, N2 + 1 / N2, 2 + (1 - t) ** 3 / (1 + 3 * t)), "algebra", result=Ssum, uses=("reciprocal",),
        note="n + 1/n, the same at both double roots, as a rational function of t")
@@ -341,8 +341,8 @@ d.quote("136", "(136)", r"$$F(z) = z^4 - \frac{3}{2} z^3 + 3 n \sigma \cdot z - 
 
 
 d.quote("137", "(137)", r"$$F'(z) = 4 z^3 - \frac{9}{2} z^2 + 3 \sigma n \quad (137)$$",
-        reading=(sp.diff(F_def, z), 4 * z ** 3 - sp.Rational(9, 2) * z ** 2 + 3 * sg * n))
-d.quote("138", "(138)", r"$$F''(z) = 3 z (4 z - 3) \quad (138)$$", reading=(sp.diff(F_def, z, 2), 3 * z * (4 * z - 3)))
+        reading=(sp.Derivative(F_def, z), 4 * z ** 3 - sp.Rational(9, 2) * z ** 2 + 3 * sg * n))
+d.quote("138", "(138)", r"$$F''(z) = 3 z (4 z - 3) \quad (138)$$", reading=(sp.Derivative(F_def, (z, 2)), 3 * z * (4 * z - 3)))
 d.quote("F-at-0", "IX.B", r"$$\text{,, } z = 0 \quad F(z) = -4 \sigma^2 n$$", reading=(sp.Subs(Fz, z, 0), -4 * sg ** 2 * n))
 d.quote("F1-at-0", "IX.B", r"Da  $F'(0) = 3 \sigma n$ , also positiv ist",
         reading=(sp.Subs(sp.Derivative(Fz, z), z, 0), 3 * sg * n))
@@ -562,12 +562,12 @@ d.step("upright-3", (GM3, swap_ab(GMa), b ** 2 / (12 * a * s) - a * (1 - s) / 2)
 d.step("oblique-3", (tan2t, swap_ab(tan2a), 12 * (a / b) ** 2 * s * (1 - s) - 2),
        "substitution", uses=("oblique-a",), result=tan2t,
        note="tan^2 of the tilt from the a-vertical position, 90 deg - phi_3: cot^2 phi_3")
-d.step("touch-limit-3", sp.Eq(tl3, PW(2 * a * (1 - s) / b, 2 * a * s / b)), "definition", result=tl3)
+d.step("touch-limit-3", Eq(tl3, PW(2 * a * (1 - s) / b, 2 * a * s / b)), "definition", result=tl3)
 d.step("cube-roots", (sp.Matrix([1 - 6 * shi * (1 - shi), 1 - 6 * slo * (1 - slo)]).subs(
     {shi: half + sp.sqrt(sp.Rational(1, 12)), slo: half - sp.sqrt(sp.Rational(1, 12))}), sp.zeros(2, 1)), "lemma",
        uses=("scheeffer-vi-cf:cube-upright-roots",), note="the roots of 6 s (1-s) = 1 (79)")
-d.step("s-plus", sp.Eq(shi, half + sp.sqrt(sp.Rational(1, 12))), "definition", result=shi, uses=("cube-roots",))
-d.step("s-minus", sp.Eq(slo, half - sp.sqrt(sp.Rational(1, 12))), "definition", result=slo, uses=("cube-roots",))
+d.step("s-plus", Eq(shi, half + sp.sqrt(sp.Rational(1, 12))), "definition", result=shi, uses=("cube-roots",))
+d.step("s-minus", Eq(slo, half - sp.sqrt(sp.Rational(1, 12))), "definition", result=slo, uses=("cube-roots",))
 Q3 = (b / a) ** 2 / 2 * (tl3 ** 2 - tan2t)
 d.quote("upright-3", "IX.C", r"$$\text{wenn } \left(\frac{b}{a}\right)^2 > 6s(1-s) \text{ ist.}$$",
         reading=((b / a) ** 2 - 6 * s * (1 - s), 12 * s / a * GM3))

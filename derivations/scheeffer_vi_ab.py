@@ -17,7 +17,7 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Erratum, Prediction
+from symfloat import Derivation, Eq, Erratum, Prediction
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.geometry.floating import (cylinder_state, floating_state, right_prism, submerged)
 from symfloat.model.claim import as_printed
@@ -77,17 +77,17 @@ def full(expr):
 # =====================================================================================================
 # VI opening: inertia of a polygon about an axis at angle omega, regular polygons
 # =====================================================================================================
-d.step("ordinate", sp.Eq(u, y * sp.sin(om) + x * sp.cos(om)), "definition",
+d.step("ordinate", Eq(u, y * sp.sin(om) + x * sp.cos(om)), "definition",
        note="(44): u is the distance of the point (x, y) from the axis FE through O that makes the angle "
             "omega with the symmetry axis OB (the Y axis); x, y from the centre O", result=u)
 d.step("ordinate-squared", (u ** 2, y ** 2 * sp.sin(om) ** 2 + x ** 2 * sp.cos(om) ** 2 + x * y * sp.sin(2 * om)),
        "algebra", uses=("ordinate",))
 Tg = sp.Symbol("T_{gen}")
-d.step("moment-any-axis", sp.Eq(Tg, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty + sp.sin(2 * om) * Pxy),
+d.step("moment-any-axis", Eq(Tg, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty + sp.sin(2 * om) * Pxy),
        "definition", uses=("ordinate-squared",),
        note="T = int u^2 df integrated term by term with ordinate-squared; T_x = int y^2 df, T_y = int x^2 df, "
             "P_xy = int x y df (the names of section V)", result=Tg)
-d.step("moment-symmetric", sp.Eq(T, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty), "definition",
+d.step("moment-symmetric", Eq(T, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty), "definition",
        uses=("moment-any-axis",),
        note="the Y axis is a symmetry axis, so P_xy = int x y df = 0: the mirror images (x, y), (-x, y) "
             "contribute opposite x y (checked by integration for the triangle: triangle-product-moment)",
@@ -102,10 +102,10 @@ d.quote("ordinate", "VI",
 d.quote("moment-any-axis", "VI",
         r"$$T = \int u^2 df = \sin^2 \omega \int y^2 df + \cos^2 \omega \int x^2 df + \sin 2 \omega \cdot "
         r"\int x y df$$",
-        reading=sp.Eq(Tg, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty + sp.sin(2 * om) * Pxy),
+        reading=Eq(Tg, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty + sp.sin(2 * om) * Pxy),
         note="before the symmetry is used: P_xy = int x y df is any value")
 d.quote("56", "(56)", r"$$T = T_x \cdot \sin^2 \omega + T_y \cos^2 \omega \quad (56)$$",
-        reading=sp.Eq(T, Tx * sp.sin(om) ** 2 + Ty * sp.cos(om) ** 2))
+        reading=Eq(T, Tx * sp.sin(om) ** 2 + Ty * sp.cos(om) ** 2))
 d.quote("other-symmetry-axis", "VI",
         r"\begin{aligned} T_y &= T_x \sin^2 \omega + T_y \cos^2 \omega \\ T_y \sin^2 \omega &= T_x \sin^2 "
         r"\omega \\ T_y &= T_x \end{aligned}",
@@ -162,9 +162,9 @@ d.step("triangle-product-moment", (sp.Integral(X * Y, *tri), 0), "integration")
 d.step("triangle-moment", (T1, sp.Integral((Y * sp.sin(om) + X * sp.cos(om)) ** 2, *tri), F1 * a ** 2 / 24),
        "integration", uses=("triangle-area",),
        note="the same for every axis through O (isotropy, checked here directly)", result=T1)
-d.step("displacement", sp.Eq(V1, F1 * b * s), "definition",
+d.step("displacement", Eq(V1, F1 * b * s), "definition",
        note="Archimedes: the upright prism is submerged to the height b s (weight F_1 b s)", result=V1)
-d.step("centre-distance", sp.Eq(e1, b / 2 - b * s / 2), "definition",
+d.step("centre-distance", Eq(e1, b / 2 - b * s / 2), "definition",
        note="G at half the height b, the centre of buoyancy at half the draught b s", result=e1)
 d.step("metacentric-height", (hA, T1 / V1 - e1, (a ** 2 - 12 * b ** 2 * s * (1 - s)) / (24 * b * s)), "algebra",
        uses=("triangle-moment", "displacement", "centre-distance"),
@@ -192,11 +192,11 @@ d.quote("sqrt3", "VI.A", r"$$\left(\frac{a}{b}\right)^2 > 3 \text{ oder } \frac{
         tolerance=sp.Rational(1, 20000), note="the largest value of 12 s (1 - s), at s = 1/2, and its root")
 
 q = sp.Symbol("q", positive=True)
-_roots = sorted(sp.solve(sp.Eq(12 * s * (1 - s), (a / b) ** 2), s), key=lambda e: e.subs({a: 1, b: 1}))
+_roots = sorted(sp.solve(Eq(12 * s * (1 - s), (a / b) ** 2), s), key=lambda e: e.subs({a: 1, b: 1}))
 S_lo, S_hi = sp.symbols("s_-^A s_+^A")
-d.step("density-roots", sp.Eq(S_hi, _roots[1]), "definition",
+d.step("density-roots", Eq(S_hi, _roots[1]), "definition",
        note="the larger root of 12 s (1 - s) = (a/b)^2 (sympy.solve)", result=S_hi)
-d.step("density-roots-lower", sp.Eq(S_lo, _roots[0]), "definition", note="the smaller root", result=S_lo)
+d.step("density-roots-lower", Eq(S_lo, _roots[0]), "definition", note="the smaller root", result=S_lo)
 d.step("density-factor", ((a / b) ** 2 - 12 * s * (1 - s), 12 * (s - S_hi) * (s - S_lo)), "algebra",
        uses=("density-roots", "density-roots-lower"),
        note="the margin of (57) is positive exactly outside [s_-, s_+]")
@@ -208,7 +208,7 @@ d.quote("density-range", "VI.A",
                  sp.Matrix([S_hi, S_lo])))
 
 # ---- Examples 1 and 2 ------------------------------------------------------------------------------
-ex1_ratio = [e for e in sp.solve(sp.Eq((a ** 2 - 12 * b ** 2 * s * (1 - s)).subs({s: sp.Rational(4, 5), a: q * b}), 0), q)
+ex1_ratio = [e for e in sp.solve(Eq((a ** 2 - 12 * b ** 2 * s * (1 - s)).subs({s: sp.Rational(4, 5), a: q * b}), 0), q)
              if e.is_positive][0]
 d.step("example-1-threshold", (sp.Subs(full(hA), (s, a), (sp.Rational(4, 5), ex1_ratio * b)), 0), "substitution",
        uses=("metacentric-height",), note="a/b at which h_A = 0 for s = 0.8 (sympy.solve)")
@@ -252,13 +252,13 @@ d.step("tilted-moment-eta", (My, sp.Integral(eta * col, *tri), 0), "integration"
        result=My)
 d.step("tilted-moment-z", (Mz, sp.Integral(col ** 2 / 2, *tri), F1 * b ** 2 * s ** 2 / 2 + T1 * tp ** 2 / 2),
        "integration", uses=("triangle-moment",), result=Mz)
-d.step("righting-arm", sp.Eq(mA, (cphi * Mx + sphi * (Mz - Vt * b / 2)) / Vt), "definition",
+d.step("righting-arm", Eq(mA, (cphi * Mx + sphi * (Mz - Vt * b / 2)) / Vt), "definition",
        note="horizontal distance of B = (M_xi, M_eta, M_z)/V_t from G = (0, 0, b/2) toward the dipping side, "
             "w = (cos phi, sin phi) in the (xi, z) plane; positive = restoring", result=mA)
 d.step("righting-moment", (V1 * mA, sphi * ((1 + tp ** 2 / 2) * T1 - V1 * e1)), "algebra",
        uses=("righting-arm", "tilted-volume", "tilted-moment-xi", "tilted-moment-z"), note="(12)")
-_tan_roots = sp.solve(sp.Eq((1 + tp ** 2 / 2) * (sq3 * a ** 4 / 96) - (sq3 * a ** 2 / 4) * b * s * (b / 2 - b * s / 2), 0), tp)
-d.step("tilted-equilibrium", sp.Eq(tan1, _tan_roots[0]), "definition",
+_tan_roots = sp.solve(Eq((1 + tp ** 2 / 2) * (sq3 * a ** 4 / 96) - (sq3 * a ** 2 / 4) * b * s * (b / 2 - b * s / 2), 0), tp)
+d.step("tilted-equilibrium", Eq(tan1, _tan_roots[0]), "definition",
        note="the positive root tau of the bracket of righting-moment (sympy.solve; tau > 0 was assumed)",
        result=tan1)
 d.step("tilted-equilibrium-check", ((1 + tan1 ** 2 / 2) * T1 - V1 * e1, 0), "algebra",
@@ -271,23 +271,23 @@ d.step("tilted-stable-in-phi", (sp.Derivative((1 + tp ** 2 / 2) * T1 - V1 * e1, 
 
 um, umr, Ltop, Lbot = sp.symbols("u_m u_m' L_top L_bot")
 d.quote("BS", "VI.A", r"$B S = \frac{a}{3} \sqrt{3}$", reading=as_printed(lambda: (sp.sqrt(Bv[0] ** 2 + Bv[1] ** 2), a / 3 * sq3)))
-d.step("dipping-distance", sp.Eq(um, Bv[0] * nvec[0] + Bv[1] * nvec[1]), "definition",
+d.step("dipping-distance", Eq(um, Bv[0] * nvec[0] + Bv[1] * nvec[1]), "definition",
        note="distance of the vertex B from the axis PQ, on the dipping side n", result=um)
 d.step("dipping-distance-value", (um, a / sq3 * sp.sin(pi / 6 + om)), "geometry", uses=("dipping-distance",))
 d.step("dipping-vertex-farthest", (as_printed(lambda: (Bv[0] - Cv[0]) * nvec[0] + (Bv[1] - Cv[1]) * nvec[1]), a * sp.sin(om)),
        "geometry", note="B is at least as far as C on the dipping side for 0 <= omega <= 60 degrees (A lies on "
                         "the other side)")
-d.step("rising-distance", sp.Eq(umr, -(Av[0] * nvec[0] + Av[1] * nvec[1])), "definition",
+d.step("rising-distance", Eq(umr, -(Av[0] * nvec[0] + Av[1] * nvec[1])), "definition",
        note="the vertex A is the farthest point on the rising side n' = -n (C: (a/sqrt 3) sin(omega - 30 deg) "
             "<= A's distance for omega <= 60 deg)", result=umr)
 d.step("rising-distance-value", (umr, a / sq3 * sp.cos(om)), "geometry", uses=("rising-distance",))
 d.quote("59", "(59)", r"$$u_m = \frac{a}{3} \sqrt{3} \cdot \sin(30^\circ + \omega) \quad (59)$$",
-        reading=sp.Eq(um, a / 3 * sq3 * sp.sin(30 * deg + om)))
-d.step("top-limit", sp.Eq(Ltop, b * (1 - s) / um), "definition",
+        reading=Eq(um, a / 3 * sq3 * sp.sin(30 * deg + om)))
+d.step("top-limit", Eq(Ltop, b * (1 - s) / um), "definition",
        note="(53): the water height b s + u_m tan(phi) at the dipping vertex reaches the top base b",
        result=Ltop)
 d.step("top-limit-check", (b * s + um * Ltop, b), "algebra", uses=("top-limit",))
-d.step("bottom-limit", sp.Eq(Lbot, b * s / umr), "definition",
+d.step("bottom-limit", Eq(Lbot, b * s / umr), "definition",
        note="(53a): the water height b s - u_m' tan(phi) at the rising vertex A reaches the bottom base 0",
        result=Lbot)
 d.step("bottom-limit-check", (b * s - umr * Lbot, 0), "algebra", uses=("bottom-limit",))
@@ -297,10 +297,10 @@ d.step("bottom-limit-relabelled", (sp.Subs(full(Lbot), om, pi / 3 - om), b * s *
             "omega turns the bottom limit into b s sqrt3 / (a sin(30 deg + omega))")
 
 d.quote("60-tan", "(60)", r"\text{tg } \varphi_1 &= \sqrt{24 \cdot \frac{b^2}{a^2} s (1-s) - 2}",
-        reading=sp.Eq(tan1, sp.sqrt(24 * b ** 2 / a ** 2 * s * (1 - s) - 2)))
+        reading=Eq(tan1, sp.sqrt(24 * b ** 2 / a ** 2 * s * (1 - s) - 2)))
 d.quote("60-bound", "(60)",
         r"\text{tg } \varphi_1 &\leq \frac{b}{a} \cdot \frac{(1-s) \sqrt{3}}{\sin(30^\circ + \omega)}",
-        reading=sp.Eq(Ltop, b / a * (1 - s) * sq3 / sp.sin(30 * deg + om)),
+        reading=Eq(Ltop, b / a * (1 - s) * sq3 / sp.sin(30 * deg + om)),
         note="read as its bound: the tangent of the tilt at which the upper base meets the water")
 # the claim that one base decides: a counterexample with a = b, s = 3/5, omega = 0
 cx = {a: 1, b: 1, s: sp.Rational(3, 5), om: 0}
@@ -337,7 +337,7 @@ def boundary(limit, at, name, note):
     sol = [e for e in sp.solve(sp.simplify(expr), Qsym)]
     assert len(sol) == 1, sol
     sym = sp.Symbol(name)
-    d.step(name, sp.Eq(sym, sp.factor(sol[0])), "definition", note=note, result=sym)
+    d.step(name, Eq(sym, sp.factor(sol[0])), "definition", note=note, result=sym)
     d.step(name + "-check", (full(tan1 ** 2 - limit ** 2).subs(om, at).subs(a, b * sp.sqrt(sym)), 0),
            "substitution", uses=(name,))
     return sym
@@ -400,7 +400,7 @@ d.quote("65-II", "(65)",
              "smallest at omega = 60 deg and the bottom limit b s sqrt3/(a cos omega) at omega = 0, where it "
              "equals b s sqrt3 / a >= b (1-s) sqrt3 / a for s > 1/2")
 d.quote("65-tan", "(65)", r"$$\operatorname{tg}^2 \varphi_1 = 24 \left(\frac{b}{a}\right)^2 s(1-s) - 2$$",
-        reading=sp.Eq(tan1 ** 2, 24 * (b / a) ** 2 * s * (1 - s) - 2))
+        reading=Eq(tan1 ** 2, 24 * (b / a) ** 2 * s * (1 - s) - 2))
 d.quote("65-III", "(65)",
         r"\frac{3}{2}(1-s)(9s-1) > \left(\frac{a}{b}\right)^2 \geq 6(1-s)(3s-1) & \left(\text{f체r } s > "
         r"\frac{1}{2}\right) \\ \frac{3}{2}s(8-9s) > \left(\frac{a}{b}\right)^2 \geq 6s(2-3s) & \left(\text{f체r } s "
@@ -454,7 +454,7 @@ d.quote("ex3-condition", "Example 3", r"$$\left(\frac{a}{b}\right)^2 = \frac{3}{
         reading=(Q60, P62u), note="an upper vertex in the water: the boundary of 65 II")
 d.quote("ex3-tan", "Example 3",
         r"$$\operatorname{tg} \varphi_1 = \sqrt{24 \cdot \left(\frac{b}{a}\right)^2 \cdot s (1 - s) - 2}$$",
-        reading=sp.Eq(tan1, sp.sqrt(24 * (b / a) ** 2 * s * (1 - s) - 2)))
+        reading=Eq(tan1, sp.sqrt(24 * (b / a) ** 2 * s * (1 - s) - 2)))
 d.quote("ex3-ratio-squared", "Example 3", r"\left(\frac{a}{b}\right)^2 = \frac{5}{2}",
         reading=(Q60_3, printed_fraction(5, 2)))
 d.quote("ex3-ratio", "Example 3", r"\frac{a}{b} = 1,58 \text{ (angen채hert)}",
@@ -468,14 +468,14 @@ d.quote("ex3-angle", "Example 3", r"$$\varphi_1 = 20^\circ 3' 35''$$",
 w4, t4 = pi / 12, sp.tan(pi / 6)
 Bsq = sp.Symbol("beta", positive=True)          # (b/a)^2
 top4 = (b * (1 - s) / (a / sq3 * sp.sin(pi / 6 + om))).subs(om, w4)
-sol68 = sp.solve(sp.Eq((top4 ** 2).subs(b, a * sp.sqrt(Bsq)), t4 ** 2), Bsq)
+sol68 = sp.solve(Eq((top4 ** 2).subs(b, a * sp.sqrt(Bsq)), t4 ** 2), Bsq)
 assert len(sol68) == 1
 B68 = sp.Symbol("B_68")
-d.step("example-4-top", sp.Eq(B68, sp.simplify(sol68[0])), "definition",
+d.step("example-4-top", Eq(B68, sp.simplify(sol68[0])), "definition",
        note="(b/a)^2 from: top limit at omega = 15 deg equals tan 30 deg (sympy.solve)", result=B68)
 d.step("example-4-top-check", ((b * (1 - s) / (a / sq3 * sp.sin(pi / 6 + om))).subs(om, w4).subs(b, a * sp.sqrt(B68)) ** 2,
                                t4 ** 2), "substitution", uses=("example-4-top", "dipping-distance-value"))
-eq4 = sp.Eq((24 * Bsq * s * (1 - s) - 2).subs(Bsq, sol68[0]), t4 ** 2)
+eq4 = Eq((24 * Bsq * s * (1 - s) - 2).subs(Bsq, sol68[0]), t4 ** 2)
 s4 = [e for e in sp.solve(eq4, s) if 0 < e < 1]
 assert len(s4) == 1
 s4 = s4[0]
@@ -520,7 +520,7 @@ col_c = b * s + xi_c * tp
 d.step("disc-area", (F1c, sp.Integral(rho, *disc), pi * r ** 2), "integration", result=F1c)
 d.step("disc-moment", (T1c, sp.Integral(xi_c ** 2 * rho, *disc), pi * r ** 4 / 4), "integration", result=T1c,
        note="about every diameter (the disc is symmetric about its centre in every direction)")
-d.step("cylinder-displacement", sp.Eq(V1c, F1c * b * s), "definition", note="Archimedes", result=V1c)
+d.step("cylinder-displacement", Eq(V1c, F1c * b * s), "definition", note="Archimedes", result=V1c)
 d.step("cylinder-metacentric-height", (hC, T1c / V1c - e1, (r ** 2 - 2 * b ** 2 * s * (1 - s)) / (4 * b * s)),
        "algebra", uses=("disc-moment", "cylinder-displacement", "centre-distance"), result=hC)
 d.step("cylinder-tilted-volume", (sp.Integral(col_c * rho, *disc), V1c), "integration")
@@ -529,20 +529,20 @@ d.step("cylinder-tilted-moments",
                    sp.Integral(col_c ** 2 / 2 * rho, *disc)]),
         sp.Matrix([T1c * tp, 0, F1c * b ** 2 * s ** 2 / 2 + T1c * tp ** 2 / 2])), "integration",
        note="the same moments as for the triangle: righting-moment holds with T_1^C, V_1^C")
-_tanC = [e for e in sp.solve(sp.Eq((1 + tp ** 2 / 2) * pi * r ** 4 / 4 - pi * r ** 2 * b * s * (b / 2 - b * s / 2), 0), tp)]
-d.step("cylinder-tilted-equilibrium", sp.Eq(tanC, _tanC[0]), "definition",
+_tanC = [e for e in sp.solve(Eq((1 + tp ** 2 / 2) * pi * r ** 4 / 4 - pi * r ** 2 * b * s * (b / 2 - b * s / 2), 0), tp)]
+d.step("cylinder-tilted-equilibrium", Eq(tanC, _tanC[0]), "definition",
        note="positive root of (1 + tau^2/2) T_1 - V_1 e_1 (sympy.solve)", result=tanC)
 d.step("cylinder-tilted-equilibrium-check", ((1 + tanC ** 2 / 2) * T1c - V1c * e1, 0), "algebra",
        uses=("cylinder-tilted-equilibrium",))
 d.step("cylinder-limits", (sp.Matrix([b * s + r * LtopC, b * s - r * LbotC]), sp.Matrix([b, 0])), "definition",
        note="u_m = r on both sides: the top rim dips to the water at b s + r tan(phi) = b, the bottom rim "
             "rises to it at b s - r tan(phi) = 0")
-d.step("cylinder-top-limit", sp.Eq(LtopC, b * (1 - s) / r), "definition", result=LtopC)
-d.step("cylinder-bottom-limit", sp.Eq(LbotC, b * s / r), "definition", result=LbotC)
+d.step("cylinder-top-limit", Eq(LtopC, b * (1 - s) / r), "definition", result=LtopC)
+d.step("cylinder-bottom-limit", Eq(LbotC, b * s / r), "definition", result=LbotC)
 d.step("cylinder-limits-check", (sp.Matrix([b * s + r * LtopC, b * s - r * LbotC]), sp.Matrix([b, 0])), "algebra",
        uses=("cylinder-top-limit", "cylinder-bottom-limit"),
        note="the farthest points are at r on both sides, so for s > 1/2 the top limit is the smaller")
-d.step("immersion-height", sp.Eq(xC, b * s + r * tanC), "definition",
+d.step("immersion-height", Eq(xC, b * s + r * tanC), "definition",
        note="the water height on the dipping generator (xi = r) in the tilted equilibrium", result=xC)
 
 K2 = (2 * r / b) ** 2
@@ -564,10 +564,10 @@ d.quote("sqrt2", "VI.B",
         r"$$\frac{1}{2} \cdot \left(\frac{2r}{b}\right)^2 > 1 \text{ oder } \frac{2r}{b} > \sqrt{2} \text{ d. i. } > 1,4142.$$",
         reading=as_printed(lambda: (sp.sqrt((8 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.sqrt(2), sp.Rational("1.4142"))),
         tolerance=sp.Rational(1, 20000), note="the largest 8 s (1-s), at s = 1/2")
-_rootsC = sorted(sp.solve(sp.Eq(8 * s * (1 - s), K2), s), key=lambda e: e.subs({r: 1, b: 4}))
+_rootsC = sorted(sp.solve(Eq(8 * s * (1 - s), K2), s), key=lambda e: e.subs({r: 1, b: 4}))
 SC_lo, SC_hi = sp.symbols("s_-^C s_+^C")
-d.step("cylinder-density-upper", sp.Eq(SC_hi, _rootsC[1]), "definition", note="sympy.solve", result=SC_hi)
-d.step("cylinder-density-lower", sp.Eq(SC_lo, _rootsC[0]), "definition", result=SC_lo)
+d.step("cylinder-density-upper", Eq(SC_hi, _rootsC[1]), "definition", note="sympy.solve", result=SC_hi)
+d.step("cylinder-density-lower", Eq(SC_lo, _rootsC[0]), "definition", result=SC_lo)
 d.step("cylinder-density-factor", (K2 - 8 * s * (1 - s), 8 * (s - SC_hi) * (s - SC_lo)), "algebra",
        uses=("cylinder-density-upper", "cylinder-density-lower"))
 d.quote("71", "(71)",
@@ -609,7 +609,7 @@ d.quote("cylinder-data-72", "VI.B", r"$$F_1 = \pi r^2 \quad T_1 = \frac{\pi r^4}
         reading=(sp.Matrix([F1c, T1c]), sp.Matrix([pi * r ** 2, pi * r ** 4 / 4])))
 Bc = b / (2 * r)
 d.quote("72a-tan", "(72a)", r"$$\text{tg}^2 \varphi_1 = 16 \left( \frac{b}{2r} \right)^2 \cdot s (1-s) - 2$$",
-        reading=sp.Eq(tanC ** 2, 16 * Bc ** 2 * s * (1 - s) - 2))
+        reading=Eq(tanC ** 2, 16 * Bc ** 2 * s * (1 - s) - 2))
 d.quote("72a", "(72a)",
         r"$$\text{tg} \varphi_1 \leq \begin{cases} 2(1-s) \cdot \frac{b}{2r} & \text{f체r } s > \frac{1}{2} \\ 2s \cdot "
         r"\frac{b}{2r} & \text{f체r } s < \frac{1}{2} \end{cases} \quad (72a)$$",
@@ -630,7 +630,7 @@ d.quote("73", "(73)",
 # Example 7: 2r = b, s < 1/2
 res = d.results()
 hC_e, tanC_e, LbotC_e, LtopC_e = (full(k) for k in (hC, tanC, LbotC, LtopC))
-s_b = [e for e in sp.solve(sp.Eq((LbotC_e ** 2 - tanC_e ** 2).subs(sq_), 0), s)]
+s_b = [e for e in sp.solve(Eq((LbotC_e ** 2 - tanC_e ** 2).subs(sq_), 0), s)]
 s_b = sorted(s_b, key=lambda e: float(e))
 d.step("example-7-bottom", (full(LbotC ** 2 - tanC ** 2).subs(sq_).subs(s, s_b[0]), 0), "substitution",
        note="the density at which the tilted equilibrium meets the bottom limit, 2r = b (sympy.solve)")
@@ -715,7 +715,7 @@ d.quote("ex10-angle", "Example 10", r"Die Ausf체hrung der Rechnung ergibt angen�
                         "tg phi_1 <= 2(1-s) b/(2r) = 0.625 still holds, so the position exists.",
                         corrected_reading=(phi10, DMS(30, 22, 59))))
 d.quote("x-formula", "Example 10", r"x &= b_s + r \operatorname{tg} \varphi",
-        reading=sp.Eq(xC, b * s + r * tanC), note="'b_s' is the OCR of b s (the text says 'diese b s', the draught)")
+        reading=Eq(xC, b * s + r * tanC), note="'b_s' is the OCR of b s (the text says 'diese b s', the draught)")
 x10 = (b * s + r * tanC_e).subs(ex10)
 cons = "follows from the angle of ex10-angle: r tg phi_1 = 1.6 * 11/32 = 0.55 with the unrooted tangent"
 d.quote("ex10-x-sum", "Example 10", r"x &= 1,5 + 0,55", reading=(x10, sp.Rational("1.5") + sp.Rational("0.55")),

@@ -32,7 +32,7 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Erratum, Prediction
+from symfloat import Derivation, Eq, Erratum, Prediction
 from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state, right_prism
@@ -99,10 +99,10 @@ d.step("square-first-moment", (over_square(xi), 0), "integration", note="O is th
 d.step("square-product-moment", (P1, over_square(xi * eta), 0), "integration", result=P1,
        note="condition (31)/(46): the product moment vanishes for every omega, so the oblique position is "
             "independent of the direction of the axis")
-d.step("tilted-volume-def", sp.Eq(Vt, over_square(b * s + xi * sp.tan(phi))), "definition", result=Vt,
+d.step("tilted-volume-def", Eq(Vt, over_square(b * s + xi * sp.tan(phi))), "definition", result=Vt,
        note="first domain: the submerged part is the set of columns over the base from the bottom face (b s below "
             "O) up to the plane z = xi tan(phi) through O")
-d.step("upright-volume", sp.Eq(V1, F1 * b * s), "definition", result=V1)
+d.step("upright-volume", Eq(V1, F1 * b * s), "definition", result=V1)
 d.step("tilted-volume", (Vt, a ** 2 * b * s, V1), "integration", uses=("tilted-volume-def", "square-area"),
        note="the plane through O keeps the displacement at every tilt of the first domain")
 d.step("e1", (e1, b / 2 - sp.Integral(z, (z, 0, b * s)) / (b * s), b * (1 - s) / 2), "integration", result=e1,
@@ -118,14 +118,14 @@ B = sp.Matrix([Mxi, Meta, Mz]) / V1
 G = sp.Matrix([0, 0, b / 2 - b * s])
 u_up = sp.Matrix([-sp.sin(phi), 0, sp.cos(phi)])
 h_dir = sp.Matrix([sp.cos(phi), 0, sp.sin(phi)])
-d.step("righting-arm", sp.Eq(GZ, h_dir.dot(B - G)), "definition", result=GZ,
+d.step("righting-arm", Eq(GZ, h_dir.dot(B - G)), "definition", result=GZ,
        note="horizontal distance of B from G across the tilt axis (u = (-sin phi, 0, cos phi) is up, "
             "h = (cos phi, 0, sin phi) horizontal)")
 d.step("righting-arm-value", (GZ, sp.sin(phi) / V1 * (T1 * (1 + sp.tan(phi) ** 2 / 2) - V1 * e1)), "algebra",
        uses=("righting-arm", "moment-xi", "moment-z", "e1"), note="Scheeffer's (12)")
 d.step("second-component", ((sp.Matrix([0, 1, 0])).dot(B - G), 0), "algebra", uses=("moment-eta",),
        note="the centre of buoyancy stays in the vertical plane through G across the axis: (31) holds")
-d.step("potential", sp.Eq(Ez, u_up.dot(G - B)), "definition", result=Ez,
+d.step("potential", Eq(Ez, u_up.dot(G - B)), "definition", result=Ez,
        note="height of G above B: the potential energy over the weight, up to a constant")
 d.step("potential-derivative", (sp.Derivative(Ez, phi), GZ), "integration", uses=("potential", "righting-arm"),
        note="dE/dphi = GZ: equilibria are the stationary points of the potential")
@@ -134,12 +134,12 @@ d.step("potential-independent-of-omega", (sp.Derivative(Ez, om), 0), "integratio
 d.step("upright-metacentric-height", (GM, sp.Limit(GZ / phi, phi, 0), T1 / V1 - e1,
                                       a ** 2 / (12 * b * s) - b * (1 - s) / 2), "limit",
        uses=("righting-arm-value",), result=GM, note="Duhamel's condition (18): stable upright iff GM > 0")
-d.step("oblique-equilibrium", sp.Eq(tan2, 2 * (V1 * e1 / T1 - 1)), "definition", result=tan2,
+d.step("oblique-equilibrium", Eq(tan2, 2 * (V1 * e1 / T1 - 1)), "definition", result=tan2,
        note="the non-zero root of GZ: T_1 (1 + tan^2 phi/2) = V_1 e_1 (Scheeffer's (27))")
 d.step("oblique-equilibrium-check", (T1 * (1 + tan2 / 2) - V1 * e1, 0), "algebra", uses=("oblique-equilibrium",))
 d.step("oblique-equilibrium-square", (tan2, F1 * b ** 2 * s * (1 - s) / T1 - 2, 12 * (b / a) ** 2 * s * (1 - s) - 2),
        "algebra", uses=("oblique-equilibrium", "e1", "square-inertia"), note="(54) for the square")
-d.step("oblique-tan", sp.Eq(tan1, sp.sqrt(tan2)), "definition", result=tan1, note="0 < phi_1 < 90 deg")
+d.step("oblique-tan", Eq(tan1, sp.sqrt(tan2)), "definition", result=tan1, note="0 < phi_1 < 90 deg")
 d.step("oblique-stable-in-phi", (sp.diff(sp.sin(phi) / V1 * (T1 * (1 + sp.tan(phi) ** 2 / 2) - V1 * e1), phi)
                                  .subs(sp.tan(phi), tan1).subs(phi, sp.atan(tan1)),
                                  T1 * tan2 / (V1 * sp.cos(sp.atan(tan1)))), "algebra",
@@ -153,13 +153,13 @@ d.step("largest-ordinate", (um, sp.Max(*[xi.subs({x: cx, y: cy}) for cx, cy in c
                             a / 2 * (sp.sin(om) + sp.cos(om)), OB * sp.sin(pi / 4 + om)), "geometry", result=um,
        note="u_m: the largest distance xi of a corner from the axis (the corner (-a/2, a/2) for 0 < omega < 45 deg); "
             "the smallest is -u_m (central symmetry)")
-d.step("limit-tilt", sp.Eq(tanlim, sp.Min(b * (1 - s), b * s) / um), "definition", result=tanlim,
+d.step("limit-tilt", Eq(tanlim, sp.Min(b * (1 - s), b * s) / um), "definition", result=tanlim,
        note="the top corner at xi = u_m, z = b(1-s) above O has height b(1-s) cos phi - u_m sin phi over the "
             "water, the bottom corner at xi = -u_m, z = -b s has u_m sin phi - b s cos phi: the first domain "
             "ends at the smaller of b(1-s)/u_m, b s/u_m (the text's (53), (53a), (55))")
 d.step("limit-tilt-top", (sp.Subs(b * (1 - s) * sp.cos(phi) - um * sp.sin(phi), phi, sp.atan(b * (1 - s) / um)), 0),
        "geometry", uses=("largest-ordinate",))
-d.step("limit-omega", sp.Eq(Sw, 2 * (sp.Min(b * (1 - s), b * s) / tan1) ** 2 / a ** 2), "definition", result=Sw,
+d.step("limit-omega", Eq(Sw, 2 * (sp.Min(b * (1 - s), b * s) / tan1) ** 2 / a ** 2), "definition", result=Sw,
        note="S_omega = sin^2(45 deg + omega*), omega* the axis direction at which the limit tilt equals phi_1: "
             "u_m(omega*) = min(b(1-s), b s)/tan phi_1 and sin(45 deg + omega*) = sqrt(2) u_m/a")
 d.step("limit-omega-value", (Sw, 2 * b ** 2 * sp.Min(s, 1 - s) ** 2 / (a ** 2 * tan2)), "algebra",
@@ -291,22 +291,22 @@ d.step("cube-limit-omega", (Swc, sp.Subs(Sw, a, b), 2 * sp.Min(s, 1 - s) ** 2 / 
        uses=("limit-omega-value",), result=Swc)
 d.step("cube-upright-roots", (sp.Matrix([1 - 6 * rp * (1 - rp), 1 - 6 * rm * (1 - rm)]), sp.zeros(2, 1)), "algebra",
        note="the two roots of 6 s (1-s) = 1, one on each side of 1/2")
-d.step("cube-upright-threshold-upper", sp.Eq(shi, rp), "definition", result=shi, uses=("cube-upright-roots",))
-d.step("cube-upright-threshold-lower", sp.Eq(slo, rm), "definition", result=slo, uses=("cube-upright-roots",))
+d.step("cube-upright-threshold-upper", Eq(shi, rp), "definition", result=shi, uses=("cube-upright-roots",))
+d.step("cube-upright-threshold-lower", Eq(slo, rm), "definition", result=slo, uses=("cube-upright-roots",))
 r8p, r8m = (4 + sp.sqrt(2)) / 7, (3 - sp.sqrt(2)) / 7
 d.step("cube-oblique-roots", (sp.Matrix([1 - (1 - r8p) * (7 * r8p - 1), 1 - r8m * (6 - 7 * r8m)]), sp.zeros(2, 1)),
        "algebra", note="(4 + sqrt 2)/7 > 1/2 is the root of 1 = (1-s)(7s-1) on the branch s > 1/2, "
                        "(3 - sqrt 2)/7 < 1/2 that of 1 = s(6-7s) on s < 1/2 (the other roots lie on the wrong side)")
-d.step("cube-oblique-threshold-upper", sp.Eq(s80hi, r8p), "definition", result=s80hi, uses=("cube-oblique-roots",))
-d.step("cube-oblique-threshold-lower", sp.Eq(s80lo, r8m), "definition", result=s80lo, uses=("cube-oblique-roots",))
+d.step("cube-oblique-threshold-upper", Eq(s80hi, r8p), "definition", result=s80hi, uses=("cube-oblique-roots",))
+d.step("cube-oblique-threshold-lower", Eq(s80lo, r8m), "definition", result=s80lo, uses=("cube-oblique-roots",))
 d.step("cube-edge-axis-factor", (sp.Matrix([2 * (1 - s) ** 2 - (6 * s * (1 - s) - 1), 2 * s ** 2 - (6 * s * (1 - s) - 1)]),
                                  sp.Matrix([1 - 2 * (1 - s) * (4 * s - 1), 1 - 2 * s * (3 - 4 * s)]),
                                  sp.Matrix([(2 * s - 1) * (4 * s - 3), (2 * s - 1) * (4 * s - 1)])), "algebra",
        note="(82) at omega = 0 (sin^2 45 deg = 1/2) holds iff these are >= 0 (denominator 6s(1-s) - 1 > 0 in the "
             "unstable range): for s > 1/2 iff s >= 3/4, for s < 1/2 iff s <= 1/4 (and at s = 1/2)")
-d.step("cube-edge-threshold-upper", sp.Eq(sedhi, sp.Rational(3, 4)), "definition", result=sedhi,
+d.step("cube-edge-threshold-upper", Eq(sedhi, sp.Rational(3, 4)), "definition", result=sedhi,
        uses=("cube-edge-axis-factor",), note="least s > 1/2 with an oblique equilibrium of the first domain")
-d.step("cube-edge-threshold-lower", sp.Eq(sedlo, sp.Rational(1, 4)), "definition", result=sedlo,
+d.step("cube-edge-threshold-lower", Eq(sedlo, sp.Rational(1, 4)), "definition", result=sedlo,
        uses=("cube-edge-axis-factor",), note="greatest s < 1/2 with an oblique equilibrium of the first domain")
 # s = 1/2: the cube turned about its main axis at phi = 45 deg (exact clipped columns)
 cdel = (sp.sin(om) + sp.cos(om) - 1) / 2
@@ -454,10 +454,10 @@ d.quote("half-waterplane", "VI.D",
              "opposite edges")
 
 # ==== E. the regular n-gon prism ======================================================================
-d.step("central-angle", sp.Eq(alph, 2 * pi / n), "definition", result=alph, note="the angle AOB = BOC = ...")
-d.step("side", sp.Eq(aE, 2 * r * sp.sin(pi / n)), "definition", result=aE,
+d.step("central-angle", Eq(alph, 2 * pi / n), "definition", result=alph, note="the angle AOB = BOC = ...")
+d.step("side", Eq(aE, 2 * r * sp.sin(pi / n)), "definition", result=aE,
        note="the side a is the chord of the central angle 2 pi/n in the circumcircle of radius r")
-d.step("apothem", sp.Eq(h_, r * sp.cos(pi / n)), "definition", result=h_,
+d.step("apothem", Eq(h_, r * sp.cos(pi / n)), "definition", result=h_,
        note="the height OQ of the triangle BOC from the centre to the midpoint of its side")
 d.step("apothem-from-side", (h_, aE / 2 * sp.cot(pi / n)), "algebra", uses=("side", "apothem"))
 
@@ -483,10 +483,10 @@ d.step("cosine-sums", (sp.Matrix([sp.Sum(sp.cos(2 * k_ * al_), (k_, 1, m)).doit(
                        sp.zeros(4, 1)), "series",
        note="Lagrange's sum cos 2x + cos 4x + ... + cos 2mx = sin(mx) cos((m+1)x)/sin x, checked for m = 3..6 at "
             "any x (alpha_t)")
-d.step("cosine-sum", sp.Eq(Sc, sp.sin(n * alph) * sp.cos((n + 1) * alph) / sp.sin(alph)), "definition", result=Sc,
+d.step("cosine-sum", Eq(Sc, sp.sin(n * alph) * sp.cos((n + 1) * alph) / sp.sin(alph)), "definition", result=Sc,
        uses=("cosine-sums",), note="Sigma_c = cos 2 alpha + cos 4 alpha + ... + cos 2 n alpha (n terms)")
 d.step("cosine-sum-zero", (Sc, 0), "algebra", uses=("cosine-sum", "central-angle"), note="sin(n alpha) = sin 2 pi = 0")
-d.step("polygon-moment-def", sp.Eq(T1n, n / 2 * (Tx + Ty) + (Tx - Ty) / 2 * Sc), "definition", result=T1n,
+d.step("polygon-moment-def", Eq(T1n, n / 2 * (Tx + Ty) + (Tx - Ty) / 2 * Sc), "definition", result=T1n,
        uses=("triangle-TL",),
        note="sum of T_L over the n triangles, the k-th turned by psi = k alpha against the symmetry axis MN")
 d.step("polygon-moment", (T1n, n / 2 * (Tx + Ty), n * A_ / 4 * (aE ** 2 / 12 + h_ ** 2)), "algebra",
@@ -498,7 +498,7 @@ d.step("polygon-perpendicular", (sp.Matrix([n / 2 * (Tx + Ty) + (Tx - Ty) / 2 * 
             "-cos(p alpha), the sum vanishes as well (shown for n = 3..8)")
 d.step("polygon-area", (F1n, n * A_, n * r ** 2 / 2 * sp.sin(2 * pi / n)), "algebra", result=F1n,
        uses=("triangle-area", "side", "apothem"))
-d.step("largest-ordinate-n", sp.Eq(umn, r * sp.cos(pi / n - om)), "definition", result=umn,
+d.step("largest-ordinate-n", Eq(umn, r * sp.cos(pi / n - om)), "definition", result=umn,
        note="omega from the direction of a side: the vertex B at the end of that side, on the sinking half, lies at "
             "the angle 90 deg - pi/n + omega from the axis; for 0 <= omega <= 2 pi/n it is the farthest vertex "
             "there (checked on the clipped polygons)")

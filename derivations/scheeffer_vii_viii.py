@@ -52,7 +52,7 @@ import math
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.roots import illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import floating_state, right_prism, submerged
@@ -131,17 +131,17 @@ hor2 = sp.Matrix([c2, 0, -sn2])
 d.step("whole-base", (Pwh, termwise((x0 + x) * y, {(0, 1): 0, (1, 1): PO}), PO), "integration", result=Pwh,
        note="int_1 x y df over ABCD from N: with x = x_0 + x' (x' from O) it is x_0 int y df + int x' y df, and "
             "int y df = 0 about EF through the centroid O")
-d.step("dry-product", sp.Eq(Pxy, Pwh - Pw), "definition", result=Pxy,
+d.step("dry-product", Eq(Pxy, Pwh - Pw), "definition", result=Pxy,
        note="int x y df over AGHCD = over ABCD less over the wet part BGH (additivity)")
-d.step("wet-flipped", sp.Eq(I2, -Pw), "definition", result=I2,
+d.step("wet-flipped", Eq(I2, -Pw), "definition", result=I2,
        note="int_2 x y df over BGH with the +x axis turned to NF (x -> -x)")
 d.step("waterplane", (up2.dot(sp.Matrix([x, y, -x * tg2])), 0), "geometry",
        note="the plane z = -x tan phi_2 through GH is horizontal (normal u)")
 col = lambda e: sp.integrate(e, (z, -x * tg2, 0))  # noqa: E731  (the column over df above the water)
 d.step("dry-volume", (V3, termwise(col(1), MF), F * xs * tg2), "integration", result=V3,
        note="the column over a point of F reaches from the water plane to the base: length x tan phi_2; " + NOTE_F)
-d.step("volume", sp.Eq(V, F1 * b), "definition", result=V)
-d.step("tilt", sp.Eq(phi2, sp.atan(F1 * b * (1 - s) / (F * xs))), "definition", result=phi2,
+d.step("volume", Eq(V, F1 * b), "definition", result=V)
+d.step("tilt", Eq(phi2, sp.atan(F1 * b * (1 - s) / (F * xs))), "definition", result=phi2,
        note="the tilt at which the dry volume F x_s tan phi_2 equals V (1 - s): the submerged volume is s V")
 d.step("archimedes", (V3, V * (1 - s)), "algebra", uses=("dry-volume", "tilt"))
 d.step("moment-y", (My, termwise(y * col(1), MF), Pxy * tg2), "integration", result=My,
@@ -150,12 +150,12 @@ d.step("moment-x", (X3, termwise(x * col(1), MF), T * tg2), "integration", resul
 d.step("moment-z", (Z3, termwise(col(-z), MF), T * tg2 ** 2 / 2), "integration", result=Z3,
        note="V_3 z_3, z_3 the depth of S_3 below the upper base")
 MS3 = sp.Matrix([X3 - V3 * x0, My, V3 * b / 2 - Z3])        # V_3 (S_3 - S)
-d.step("M3", sp.Eq(M3, hor2.dot(MS3)), "definition", result=M3,
+d.step("M3", Eq(M3, hor2.dot(MS3)), "definition", result=M3,
        note="V_3 times the horizontal distance of S_3 from the vertical plane through S parallel to GH "
             "(h = (cos phi, 0, -sin phi))")
-d.step("e3", sp.Eq(e3, up2.dot(MS3) / V3), "definition", result=e3, note="height of S_3 above S")
-d.step("V1", sp.Eq(V1, V - V3), "definition", result=V1, note="the submerged volume")
-d.step("e2", sp.Eq(e2, up2.dot(MS3) / V1), "definition", result=e2,
+d.step("e3", Eq(e3, up2.dot(MS3) / V3), "definition", result=e3, note="height of S_3 above S")
+d.step("V1", Eq(V1, V - V3), "definition", result=V1, note="the submerged volume")
+d.step("e2", Eq(e2, up2.dot(MS3) / V1), "definition", result=e2,
        note="height of S above S_2: V S = V_1 S_2 + V_3 S_3 gives V_1 (S - S_2) = V_3 (S_3 - S)")
 d.step("e2-e3", (V1 * e2, V3 * e3), "algebra", uses=("e2", "e3"))
 Q2 = T * (1 + tg2 ** 2 / 2) - F1 * b ** 2 * (1 - s) / 2 - F * xs * x0
@@ -165,18 +165,18 @@ d.step("M3-sin", (M3 / sn2, Q2), "algebra", uses=("M3", "moment-x", "moment-z", 
 A_, C_, th = sp.symbols("A C theta", positive=True)
 Eb, Mb, wb = sp.symbols("E_box M_box w_box")
 d.domain.update({A_: (1, 2), C_: (R(1, 2), 2), th: (R(1, 5), 1)})
-d.step("box-strip", sp.Eq(wb, sp.sqrt(2 * A_ * b * (1 - s) / sp.tan(th))), "definition", result=wb,
+d.step("box-strip", Eq(wb, sp.sqrt(2 * A_ * b * (1 - s) / sp.tan(th))), "definition", result=wb,
        note="box A x C x b tilted by theta about an axis parallel to the side C: F is a strip of width w with "
             "C w^2 tan(theta)/2 = A C b (1-s) (volume at the fixed density s)")
 _tb = sp.tan(th)
 BOX = {V3: C_ * wb ** 2 * _tb / 2, X3: C_ * wb ** 3 * _tb / 3, Z3: C_ * wb ** 3 * _tb ** 2 / 6, My: 0,
        x0: wb - A_ / 2}
 _ms3 = MS3.xreplace(BOX)
-d.step("box-potential", sp.Eq(Eb, sp.Matrix([sp.sin(th), 0, sp.cos(th)]).dot(_ms3) / (A_ * C_ * b * s)),
+d.step("box-potential", Eq(Eb, sp.Matrix([sp.sin(th), 0, sp.cos(th)]).dot(_ms3) / (A_ * C_ * b * s)),
        "definition", result=Eb,
        note="E = u.(G - B) = u.V_3 (S_3 - S)/V_1 with the strip's moments (101): V_3 = C w^2 tan/2, V_3 x_3 = C w^3 "
             "tan/3, V_3 z_3 = C w^3 tan^2/6, x_0 = w - A/2")
-d.step("box-M3", sp.Eq(Mb, sp.Matrix([sp.cos(th), 0, -sp.sin(th)]).dot(_ms3)), "definition", result=Mb,
+d.step("box-M3", Eq(Mb, sp.Matrix([sp.cos(th), 0, -sp.sin(th)]).dot(_ms3)), "definition", result=Mb,
        note="M_3 (99) of the strip at the tilt theta")
 d.step("box-potential-slope", (A_ * C_ * b * s * sp.Derivative(Eb, th), Mb), "algebra",
        uses=("box-strip", "box-potential", "box-M3"), note="V_1 dE/dtheta = M_3: equilibria are stationary points of E")
@@ -209,7 +209,7 @@ CC = sp.cos(mu) ** 2 - sp.sin(mu) ** 2     # cos 2 mu
 d.step("Tmu", (Tmu, termwise(((x / c2 - m_) * sp.cos(mu) - (y + n_) * sp.sin(mu)) ** 2 / c2, MF),
                T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 - Ks * SC), "integration", result=Tmu,
        note="moment about the centroidal axis PQ at the angle mu with J_1K_1 (parallel to HN); sin 2mu = 2 sin mu cos mu")
-d.step("k", sp.Eq(k_, m_ * n_ * F2), "definition", result=k_, note="(106): the value of int_s x y df at equilibrium")
+d.step("k", Eq(k_, m_ * n_ * F2), "definition", result=k_, note="(106): the value of int_s x y df at equilibrium")
 d.step("Ks-equilibrium", (Ks, k_ + Pxy / c2 ** 2), "algebra", uses=("Ks", "J1", "k"),
        note="so int_s x y df = k exactly when the first condition int x y df = 0 holds")
 # the least moment of any plane figure with central moments T_2, T_2^1 and product k (symbols of their own)
@@ -219,30 +219,30 @@ d.domain.update({T2g: (1, 3), T21g: (R(1, 2), 4), kg: (-1, 1)})
 Sg = (T2g + T21g) / 2
 dbl = lambda th_: Sg - sp.cos(th_) / 2 * (T21g - T2g) - kg * sp.sin(th_)  # noqa: E731  (T_mu at 2 mu = th_)
 q_ = 2 * kg / (T21g - T2g)
-d.step("Tg", sp.Eq(Tg, T2g * sp.cos(mu) ** 2 + T21g * sp.sin(mu) ** 2 - kg * SC), "definition", result=Tg,
+d.step("Tg", Eq(Tg, T2g * sp.cos(mu) ** 2 + T21g * sp.sin(mu) ** 2 - kg * SC), "definition", result=Tg,
        note="(107) for a plane figure with central moments T_2 (about J_1K_1), T_2^1 and product k")
 d.step("Tg-double", (Tg, dbl(2 * mu)), "algebra", uses=("Tg",), note="cos^2 mu = (1 + cos 2mu)/2, ...")
 d.step("Tg-derivative", (sp.Derivative(Tg, mu), (T21g - T2g) * SC - 2 * kg * CC), "algebra", uses=("Tg",))
-d.step("mu-star", sp.Eq(mus, sp.atan(q_) / 2), "definition", result=mus,
+d.step("mu-star", Eq(mus, sp.atan(q_) / 2), "definition", result=mus,
        note="the root of the derivative: tan 2mu = 2k/(T_2^1 - T_2); mu^* + 90 deg is the other")
-d.step("Dg", sp.Eq(Dg, (T21g - T2g + 2 * kg * q_) / sp.sqrt(1 + q_ ** 2)), "definition", result=Dg)
+d.step("Dg", Eq(Dg, (T21g - T2g + 2 * kg * q_) / sp.sqrt(1 + q_ ** 2)), "definition", result=Dg)
 d.step("stationary-values", (sp.Matrix([dbl(2 * mus), dbl(2 * mus + sp.pi)]), sp.Matrix([Sg - Dg / 2, Sg + Dg / 2])),
        "algebra", uses=("Tg-double", "mu-star", "Dg"),
        note="cos 2mu^* = 1/sqrt(1 + q^2), sin 2mu^* = q/sqrt(1 + q^2), q = 2k/(T_2^1 - T_2)")
 d.step("root", (Rg, sp.sqrt(Dg ** 2), sp.sqrt((T2g - T21g) ** 2 + 4 * kg ** 2)), "algebra", uses=("Dg",), result=Rg)
-d.step("Tm-g", sp.Eq(Tmg, Sg - Rg / 2), "definition", result=Tmg, uses=("stationary-values", "root"),
+d.step("Tm-g", Eq(Tmg, Sg - Rg / 2), "definition", result=Tmg, uses=("stationary-values", "root"),
        note="the smaller of the two stationary values Sigma/2 -+ D/2: the least moment")
 d.step("Tm", (Tm, sp.Subs(Tmg, (T2g, T21g, kg), (T2, T21, k_)), (T2 + T21) / 2 - sp.sqrt((T2 - T21) ** 2 + 4 * k_ ** 2) / 2),
        "substitution", uses=("Tm-g", "Ks-equilibrium"), result=Tm,
        note="the least moment of the waterplane at an equilibrium (its central product is k there)")
-d.step("D", sp.Eq(D, Tm - V1 * e2), "definition", result=D,
+d.step("D", Eq(D, Tm - V1 * e2), "definition", result=D,
        note="Duhamel: V_1 times the metacentric height of the position; stable iff D > 0 (scheeffer-iv-v (33))")
 d.step("e3-cos", (e3 * c2, b / 2 - Z3 / V3 + sn2 * M3 / V3), "algebra", uses=("e3", "M3"),
        note="so e_3 cos phi_2 = b/2 - z_3 wherever M_3 = 0")
 M2h, M2y = sp.symbols("M_2h M_2y")
-d.step("balance-h", sp.Eq(M2h, -hor2.dot(MS3)), "definition", result=M2h,
+d.step("balance-h", Eq(M2h, -hor2.dot(MS3)), "definition", result=M2h,
        note="V_1 h.(S_2 - S) from V S = V_1 S_2 + V_3 S_3")
-d.step("balance-y", sp.Eq(M2y, -My), "definition", result=M2y)
+d.step("balance-y", Eq(M2y, -My), "definition", result=M2y)
 d.step("regular-product", (sp.Subs(sp.Rational(1, 2) * (sp.Symbol("T_x") - sp.Symbol("T_y")) * sp.sin(2 * sp.Symbol("omega"))
                                    + sp.Symbol("J") * sp.cos(2 * sp.Symbol("omega")),
                                    (sp.Symbol("T_x"), sp.Symbol("J")), (sp.Symbol("T_y"), 0)), 0), "substitution",
@@ -254,7 +254,7 @@ d.step("regular-product", (sp.Subs(sp.Rational(1, 2) * (sp.Symbol("T_x") - sp.Sy
 # ---- which base is cut first (the opening of VII), as in scheeffer-iv-v (53)-(55)
 um, um1, sst = sp.symbols("u_m u_m' s^*", positive=True)
 d.domain.update({um: (R(1, 5), 2), um1: (R(1, 5), 2)})
-d.step("first-contact", sp.Eq(sst, um1 / (um + um1)), "definition", result=sst,
+d.step("first-contact", Eq(sst, um1 / (um + um1)), "definition", result=sst,
        uses=("scheeffer-iv-v:top-contact", "scheeffer-iv-v:bottom-contact", "scheeffer-iv-v:threshold"),
        note="turned about EF from the upright position, the plane through EF reaches the upper base at tan phi = "
             "b (1-s)/u_m, the lower one at b s/u_m' (u_m, u_m' the farthest base points on the dipping and the rising "
@@ -465,7 +465,7 @@ d.quote("117-cos", "VII", r"(nach 102 a)  $\frac{1}{\cos^2 \varphi_2} = \left| \
         note="'102 a' means (103a); the bars are brackets")
 d.quote("117-T", "VII", "$$T_1 = T - F \\cdot x_s^2$$\n\n$$T_1^1 = T^1 - F \\cdot y_s^2.$$",
         reading=(sp.Matrix([T1, T11]), sp.Matrix([T - F * xs ** 2, Tp - F * YS ** 2])))
-d.step("O-position", sp.Eq(sp.Symbol("x_O"), x0), "definition", result=sp.Symbol("x_O"),
+d.step("O-position", Eq(sp.Symbol("x_O"), x0), "definition", result=sp.Symbol("x_O"),
        note="O = N + x_0 (unit vector along NE): x_0 is the coordinate of O from N towards E")
 d.quote("x0-sign", "VII", r"Wenn der Punkt  $N$  (s. Fig. 17 und 18) zwischen  $O$  und  $E$  liegt, so wird  $x_0$  negativ.",
         reading=(x0, sp.Symbol("x_O")), note="x_0 is the coordinate x_O of O from N along NE: negative when O "
@@ -476,9 +476,9 @@ d.quote("x0-sign", "VII", r"Wenn der Punkt  $N$  (s. Fig. 17 und 18) zwischen  $
 tg3, c3, sn3 = sp.tan(phi3), sp.cos(phi3), sp.sin(phi3)
 up3, hor3 = sp.Matrix([sn3, 0, c3]), sp.Matrix([c3, 0, -sn3])
 Mf = {(0, 0): f, (1, 0): f * xs1, (2, 0): tau, (1, 1): Pf}
-d.step("tilt-3", sp.Eq(phi3, sp.atan(F1 * b * (1 - s) / (F * xs - f * xs1))), "definition", result=phi3,
+d.step("tilt-3", Eq(phi3, sp.atan(F1 * b * (1 - s) / (F * xs - f * xs1))), "definition", result=phi3,
        note="the tilt at which the dry volume (121b) is V (1 - s)")
-d.step("x01", sp.Eq(x01, b / tg3 - x0), "definition", result=x01,
+d.step("x01", Eq(x01, b / tg3 - x0), "definition", result=x01,
        note="N_2 (over N_1, where the water line meets EF in the lower base) lies at x = b cot phi_3 from N: "
             "the plane z = -x tan phi_3 reaches z = -b there; x_0^1 = O N_2")
 d.step("ML", (-(x0 + x01) * tg3, -b), "geometry", uses=("x01",))
@@ -496,7 +496,7 @@ d.step("moment-z-3", (Z3c, termwise(col3(-z), MF) - Mf_x(cut3(-z)),
 d.step("moment-x-3", (X3c, termwise(x * col3(1), MF) - Mf_x((xp + x0 + x01) * cut3(1)),
                       (T - tau) * tg3 - (x0 + x01) * xs1 * f * tg3), "integration", result=X3c)
 MS3c = sp.Matrix([X3c - V3c * x0, My3, V3c * b / 2 - Z3c])
-d.step("M3-3", sp.Eq(M3c, hor3.dot(MS3c)), "definition", result=M3c)
+d.step("M3-3", Eq(M3c, hor3.dot(MS3c)), "definition", result=M3c)
 Q3 = ((T - tau) * (1 + tg3 ** 2 / 2) - (x0 + x01 + b * tg3) * f * xs1 - V3c * b / 2 - V3c * x0 / tg3)
 d.step("M3-3-sin", (M3c / sn3, Q3), "algebra", uses=("M3-3", "moment-x-3", "moment-z-3"))
 

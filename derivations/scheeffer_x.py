@@ -41,7 +41,7 @@ import math
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state, right_prism, submerged
@@ -115,7 +115,7 @@ d.step("168", (P, h_ ** 3 / 6 * (v_ * tg - u_ * ctg) + h_ ** 4 / 8 * (ctg ** 2 -
        uses=("167", "NH", "NG", "height"), result=P)
 d.step("factor-positive", (FAC, co * ((a - rho) + (a - rho * tg))), "algebra",
        note="positive whenever rho < a and rho tan w < a: the second factor of (168) never vanishes")
-d.step("rho-star", sp.Eq(rs, 2 * a * co / (co + si)), "definition", result=rs,
+d.step("rho-star", Eq(rs, 2 * a * co / (co + si)), "definition", result=rs,
        note="the zero of the second factor of (168)")
 d.step("second-root", (FAC.subs(rho, rs), 0), "algebra", uses=("rho-star",))
 d.step("169a-margin", (a - rs, a * (si - co) / (co + si)), "algebra", uses=("rho-star",))
@@ -209,7 +209,7 @@ d.step("T", (Tq, over_F(xi ** 2), (sp.Rational(1, 6) + (1 - xl) ** 2 - xl ** 4 /
        result=Tq, note="T: moment of inertia of F about GH")
 d.step("dry-volume", (V3, over_F(col), k * zq / r2), "integration", result=V3, uses=("z",),
        note="the dry part: columns over F from the top face down to the water plane z = 1/2 + k xi")
-d.step("tilt", sp.Eq(kq, r2 * (1 - s) / zq), "definition", result=kq, uses=("dry-volume",),
+d.step("tilt", Eq(kq, r2 * (1 - s) / zq), "definition", result=kq, uses=("dry-volume",),
        note="the tilt at which the dry volume is 1 - s")
 d.step("tilt-check", (over_F(col.subs(k, kq)), 1 - s), "integration", uses=("tilt", "dry-volume"))
 d.step("tilt-grows", (sp.Derivative(r2 * (1 - s) / (1 - xl + xl ** 3 / 6), xl),
@@ -222,7 +222,7 @@ Mzc = k * (k * (xl ** 4 - 12 * xl ** 2 + 24 * xl - 14) + 2 * r2 * (xl ** 3 - 6 *
 d.step("moment-X", (MX, over_F(X * col), MXc), "integration", result=MX)
 d.step("moment-z", (Mz, over_F((col - col ** 2) / 2), Mzc), "integration", result=Mz,
        note="int_{1/2 - c}^{1/2} z dz = (c - c^2)/2 over each column")
-d.step("gradient", sp.Eq(dE, (-(r2 * MXc + k * Mzc) / (s * sp.sqrt(1 + k ** 2))).subs(k, kq)), "definition", result=dE,
+d.step("gradient", Eq(dE, (-(r2 * MXc + k * Mzc) / (s * sp.sqrt(1 + k ** 2))).subs(k, kq)), "definition", result=dE,
        uses=("moment-X", "moment-z", "tilt"),
        note="u = (-sin t/sqrt 2, -sin t/sqrt 2, cos t), tan t = k: dE/dt = (du/dt).(G - B), G - B = M/s with "
             "M = (M_X, M_X, M_z) the first moment of the dry part about G (total moment zero, volume 1), at the "
@@ -247,7 +247,7 @@ d.step("end-0", (F0, f_at(sp.Integer(0), s), *as_printed(lambda: ((7 * (1 - s) *
                                                           7 * (s - (4 + r2) / 7) * (s - (4 - r2) / 7) / 6))),
        "algebra", result=F0)
 d.step("end-1", (F1v, f_at(sp.Integer(1), s), (6 * (1 - s) - 1) ** 2 / 432), "algebra", result=F1v)
-d.step("172-root", sp.Eq(s172, (4 + r2) / 7), "definition", result=s172, uses=("end-0",),
+d.step("172-root", Eq(s172, (4 + r2) / 7), "definition", result=s172, uses=("end-0",),
        note="f(0, s) = 0 on s > 1/2: a root of (171) enters 0 < x through x = 0 (the corner B just touching)")
 d.step("172-check", (f_at(sp.Integer(0), s172), 0), "algebra", uses=("172-root",))
 d.quote("172", "(172)",
@@ -259,7 +259,7 @@ d.quote("172", "(172)",
              "Right as a statement about (171); at s = 0.77 there are three roots")
 d.quote("172-number", "(172)", r"\frac{4 + \sqrt{2}}{7} \quad \text{oder} < 0,7735",
         reading=(s172, sp.Rational("0.7735")), tolerance=sp.Rational(1, 20000))
-d.step("first-domain-82", sp.Eq(Sw45, (1 - s) ** 2 / (6 * s * (1 - s) - 1)), "lemma",
+d.step("first-domain-82", Eq(Sw45, (1 - s) ** 2 / (6 * s * (1 - s) - 1)), "lemma",
        uses=("scheeffer-vi-cf:cube-limit-omega",), result=Sw45,
        note="(82) of VI.D for s > 1/2: the oblique position stays in the first domain iff sin^2(45 deg + w) <= S")
 d.quote("first-domain-82", "X",
@@ -288,7 +288,7 @@ X_COUNTER = roots_171(S_COUNTER)[0]
 d.step("bottom-corner", ((half - kq * (2 - xl) / r2) - (-half), 1 - beta(xl, s)), "algebra", uses=("tilt",),
        note="height of the water plane above D: positive (D wet, pentagon) iff beta < 1, else D is dry and the "
             "waterplane a hexagon")
-d.step("pentagon-vertices", sp.Eq(NVp, sp.Rational(11, 2) + sp.sign(beta(X_COUNTER, S_COUNTER) - 1) / 2),
+d.step("pentagon-vertices", Eq(NVp, sp.Rational(11, 2) + sp.sign(beta(X_COUNTER, S_COUNTER) - 1) / 2),
        "definition", result=NVp, uses=("bottom-corner",),
        note="vertices of the waterplane at the only root of (171) in (0, 1) at s = 3/5 (x = 0.5498): 5 if beta < 1, "
             "6 if beta > 1; beta = 1.214 there")
@@ -317,7 +317,7 @@ S_STAB = sp.Rational(77, 100)
 XS = roots_171(S_STAB)           # three roots: 0.0858, 0.5684 (pentagons) and 0.8768 (beta > 1)
 fx = sp.diff(f_at(x, S_STAB), x)
 SIG = sp.Symbol("sigma")
-d.step("stiffness-sign", (SIG, sp.Matrix([sp.sign(fx.subs(x, XS[0])), sp.sign(fx.subs(x, XS[1]))])),
+d.step("stiffness-sign", (SIG, sp.Matrix([sp.sign(fx.subs(x, XS[0]), evaluate=False), sp.sign(fx.subs(x, XS[1]), evaluate=False)])),
        "definition", uses=("171-derived", "tilt-grows"), result=SIG,
        note="at a root of (171) d^2E/dt^2 has the sign of df/dx (f = positive factor x dE/dt, x grows with t); "
             "the first two roots at s = 0.77 (both with beta < 1)")
@@ -337,7 +337,7 @@ d.quote("pentagon-stable", "X", "Es lässt sich auch zeigen, dass dieses Gleichg
 d.quote("dual-threshold", "X", r"wenn  $s > \frac{3 - \sqrt{2}}{7}$  d. i.  $> 0,2265$  ist.",
         reading=(1 - s172, (3 - r2) / 7), note="the duality s <-> 1 - s")
 d.quote("dual-number", "X", r"$> 0,2265$", reading=(1 - s172, sp.Rational("0.2265")), tolerance=sp.Rational(1, 20000))
-d.step("dual-vertices", sp.Eq(NVd, NVp), "definition", result=NVd, uses=("pentagon-vertices",),
+d.step("dual-vertices", Eq(NVd, NVp), "definition", result=NVd, uses=("pentagon-vertices",),
        note="the cube turned over at density 1 - s: wet and dry exchanged, the same waterplane")
 d.quote("dual-exists", "X",
         r"Für  $s < \frac{1}{2}$  tritt dieses stabile Gleichgewicht im zweiten Drehungsgebiet ein,",
@@ -352,7 +352,7 @@ d.quote("dual-exists", "X",
 # ==== triangle ===========================================================================================
 d.step("tetra-volume", (Vt, sp.Integral(1, (Z, 0, a - X - Y), (Y, 0, a - X), (X, 0, a)), a ** 3 / 6), "integration",
        result=Vt, note="the corner tetrahedron cut off by the three face diagonals at a corner")
-d.step("triangle-bound", sp.Eq(s56, 1 - Vt / a ** 3), "definition", result=s56,
+d.step("triangle-bound", Eq(s56, 1 - Vt / a ** 3), "definition", result=s56,
        note="density at which the dry part is that tetrahedron")
 d.quote("tetra", "X", r"$$\frac{a^3}{6} = a^3 (1 - s)$$", reading=(Vt, a ** 3 * (1 - s56)))
 d.quote("five-sixths", "X", r"$$s = \frac{5}{6}$$", reading=(s56, sp.Rational(5, 6)))
@@ -387,7 +387,7 @@ d.quote("hex-follows", "X",
 XI = si * X + co * Y - (si * (a / 2 - rho) + co * a / 2)     # distance from GH towards B (top face)
 ETA = co * X - si * Y                                         # along GH, from the plane through O
 xM = {X: -a / 2 + rho1, Y: -a / 2}                            # M: the bottom water line on the side y = -a/2
-d.step("third-tilt", sp.Eq(k3, -a / XI.subs(xM)), "definition", result=k3,
+d.step("third-tilt", Eq(k3, -a / XI.subs(xM)), "definition", result=k3,
        note="the water plane z = a/2 + k xi passes through the bottom water line ML (the triangle LDM, legs "
             "rho_1, rho_1 tan w at D, projected on the top face) at depth a")
 sq_ = sp.Integral(ETA * XI, (X, -a / 2, a / 2), (Y, -a / 2, a / 2))
@@ -396,7 +396,7 @@ triD = sp.Integral(ETA * (XI - XI.subs(xM)), (Y, -a / 2, -a / 2 + (-a / 2 + rho1
 d.step("h1", (h1_, as_printed(lambda: (-sp.Matrix([-a / 2 + rho1, -a / 2]) + sp.Matrix([-a / 2, -a / 2])).dot(-n_)), rho1 * si),
        "geometry",
        result=h1_, note="h_1: the distance of D = (-a/2, -a/2) from the projected bottom water line through M")
-d.step("bottom-triangle", sp.Eq(P1, P168.subs({h_: h1_, rho: rho1})), "definition", uses=("168", "h1"), result=P1,
+d.step("bottom-triangle", Eq(P1, P168.subs({h_: h1_, rho: rho1})), "definition", uses=("168", "h1"), result=P1,
        note="(168) for LDM: turned by 180 deg it is a triangle like BHG with rho_1, h_1 (checked by third-bottom)")
 d.step("third-square", (Sq, sq_, 0), "integration", result=Sq,
        note="the square's product moment about N, axes along and across GH")

@@ -1,6 +1,6 @@
 """symfloat: machine-checked re-derivation of classical texts on floating
 bodies and centroids."""
-from .model import SOURCES, Derivation, Erratum, Prediction, Printed, Scene, Step, get_source
+from .model import SOURCES, Derivation, Eq, Erratum, Prediction, Printed, Scene, Step, get_source
 
 __version__ = "0.1.0"
-__all__ = ["Derivation", "Erratum", "Prediction", "Printed", "Scene", "Step", "SOURCES", "get_source", "__version__"]
+__all__ = ["Derivation", "Eq", "Erratum", "Prediction", "Printed", "Scene", "Step", "SOURCES", "get_source", "__version__"]

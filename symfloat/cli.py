@@ -40,7 +40,6 @@ from .project import GOLDEN, in_project, project_root
 from .registry import select
 from .report.errata import errata_json, errata_markdown
 from .report.files import write_atomic, write_if_changed, writable_target
-from .report.notebooks import write_notebooks
 from .report.record import record_json, verification_table
 from .report.stamp import stamp_of
 
@@ -206,6 +205,8 @@ def _notebooks(args) -> int:
     cache = _cache(args)
     _kernels_share(cache)
     reports = _reports(args, selector, cache)
+    from .report.notebooks import write_notebooks  # nbformat and nbclient: only when notebooks are written
+
     written = write_notebooks(ids, folder, None if _quiet(args) else
                               (lambda d: print(f"executing notebook {d}", file=sys.stderr, flush=True)))
     _say(args, f"{len(written)} of {len(ids)} notebooks changed in {folder}")
@@ -223,6 +224,8 @@ def _run(args) -> int:
     write_if_changed(docs / "errata.json", errata_json(reports))
     write_if_changed(docs / "errata.md", errata_markdown(reports))
     quiet = _quiet(args)
+    from .report.notebooks import write_notebooks
+
     written = write_notebooks([r.id for r in reports], notebooks, None if quiet else
                               (lambda d: print(f"executing notebook {d}", file=sys.stderr, flush=True)))
     if any(r.id == "scheeffer-ix" for r in reports):

@@ -1,9 +1,9 @@
 """The formula model: sources, claims, derivations, printed formulas, errata."""
-from .claim import as_latex, members
+from .claim import Eq, as_latex, members
 from .derivation import Derivation, Printed, Step
 from .prediction import Prediction, Predictor, Scene
 from .erratum import Erratum
 from .source import SOURCES, Source, get_source
 
-__all__ = ["Derivation", "Printed", "Step", "Erratum", "Source", "SOURCES", "get_source",
+__all__ = ["Derivation", "Eq", "Printed", "Step", "Erratum", "Source", "SOURCES", "get_source",
            "members", "as_latex", "Prediction", "Predictor", "Scene"]

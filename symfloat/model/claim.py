@@ -8,7 +8,23 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["members", "as_latex", "pairs", "identical_links", "as_printed"]
+__all__ = ["Eq", "members", "as_latex", "pairs", "identical_links", "as_printed"]
+
+
+def Eq(lhs, rhs) -> sp.Equality:
+    """The equation ``lhs = rhs`` as written, left for the checker to decide.
+
+    SymPy's own ``Eq`` tries to decide an equation when it is built; in a
+    derivation module that is work done at every import (a scene reading a
+    predictor pays for it) and, where it succeeds, it replaces the claim by
+    ``True``.  This one never decides: the members stay as given.
+
+    >>> import sympy as sp
+    >>> x = sp.Symbol("x")
+    >>> Eq(x + x, 2 * x).rhs
+    2*x
+    """
+    return sp.Equality(lhs, rhs, evaluate=False)
 
 
 def members(claim) -> tuple:

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import ast
 import math
+import re
 from functools import cache
 from pathlib import Path
 
@@ -36,18 +37,20 @@ __all__ = ["predicting", "cover", "symmetry_group", "declared_verdict"]
 MATCH_RAD = 1e-6
 
 
+_PREDICTS = re.compile(r"\.predicts\(\s*(\([^()]*\))")
+
+
 @cache
 def _declared_bodies(module: str) -> tuple[str, ...]:
     """The literal bodies of ``*.predicts((...), ...)`` in a derivation module's source."""
-    tree = ast.parse(Path(derivations.__path__[0], module + ".py").read_text(encoding="utf-8"))
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr == "predicts" \
-                and node.args:
-            try:
-                return tuple(ast.literal_eval(node.args[0]))
-            except ValueError:
-                raise RuntimeError(f"{module}: the bodies of predicts(...) must be a literal tuple") from None
-    return ()
+    text = Path(derivations.__path__[0], module + ".py").read_text(encoding="utf-8")
+    found = _PREDICTS.search(text)
+    if found is None:
+        return ()
+    try:
+        return tuple(ast.literal_eval(found.group(1)))
+    except (ValueError, SyntaxError):
+        raise RuntimeError(f"{module}: the bodies of predicts(...) must be a literal tuple") from None
 
 
 def predicting(body: str) -> list[str]:
