@@ -947,14 +947,14 @@ d.witness(Computed("F-moments", "central moments of F (clipped upright prism ove
 
 
 # ==== predictions: boxes turned about an axis parallel to an edge ====================================================
+TAN_GRID = [10 ** (-2 + 4 * k / 400) for k in range(401)]
+
+
 def _roots(f, valid):
     """Sign changes of f on a log grid of tan phi in (0.01, 100) where valid(t) holds, refined (Illinois)."""
-    grid = [10 ** (-2 + 4 * k / 400) for k in range(401)]
-    out = []
-    for lo, hi in zip(grid, grid[1:]):
-        if valid(lo) and valid(hi) and (f(lo) < 0) != (f(hi) < 0):
-            out.append(illinois(f, lo, hi, 1e-15))
-    return out
+    negative = [f(t) < 0 if valid(t) else None for t in TAN_GRID]
+    return [illinois(f, TAN_GRID[k], TAN_GRID[k + 1], 1e-15) for k in range(len(TAN_GRID) - 1)
+            if None not in negative[k:k + 2] and negative[k] != negative[k + 1]]
 
 
 def _strip2(A, C, H, sv):

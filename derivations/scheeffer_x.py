@@ -39,6 +39,7 @@ Angles in radians.
 import math
 
 import mpmath
+import numpy as np
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
@@ -664,8 +665,9 @@ def _count_at_root(sv, flip, dps):
 
 
 def f_num(xx, ss):
-    """(171), left minus right side, for numeric x, s (used to locate its roots)."""
-    T2 = mpmath.mpf(1) / 6 + (1 - xx) ** 2 - xx ** 4 / 12
+    """(171), left minus right side, for numeric x, s (used to locate its roots): mpmath numbers, floats or
+    numpy arrays alike."""
+    T2 = (1 + 6 * (1 - xx) ** 2 - xx ** 4 / 2) / 6
     zz = 1 - xx + xx ** 3 / 6
     return T2 * (zz ** 2 + (1 - ss) ** 2) - zz ** 3 * (1 - xx) - zz ** 2 * (1 - ss)
 
@@ -725,14 +727,11 @@ S172 = (4 + math.sqrt(2)) / 7
 
 
 def _roots_171_float(q):
-    f = lambda t_: float(f_num(mpmath.mpf(t_), mpmath.mpf(q)))  # noqa: E731
-    grid = [j / 200 for j in range(1, 201)]
-    vals = [f(g) for g in grid]
-    out = []
-    for i in range(len(grid) - 1):
-        if (vals[i] > 0) != (vals[i + 1] > 0):
-            out.append(illinois(f, grid[i], grid[i + 1], 1e-12))
-    return out
+    f = lambda t_: f_num(t_, q)  # noqa: E731
+    grid = np.arange(1, 201) / 200
+    positive = f_num(grid, q) > 0
+    return [illinois(f, float(grid[i]), float(grid[i + 1]), 1e-12)
+            for i in range(len(grid) - 1) if positive[i] != positive[i + 1]]
 
 
 def predict(scene):
