@@ -916,30 +916,33 @@ cw("triangle-first-contact", "tan of the tilt at which either base of the clippe
 
 
 # ---- the cylinder: quadrature of the defining integrals over the disc (x = r sin(theta)) ---------------
-def _quad(f, dps):
-    return mpmath.quad(f, [-mpmath.pi / 2, mpmath.pi / 2])
+def _disc_moments(dps):
+    """M_k = integral over the unit disc of x^k dA, k = 0, 1, 2, by quadrature in theta (x = sin theta, chord width
+    2 cos theta, dx = cos theta dtheta), once per working precision: every integral over a disc of radius r cut by
+    a plane z = c + x tan(phi) is a combination r^(k+2) M_k of these."""
+    return _cached(("disc", mpmath.mp.prec),
+                   lambda: [mpmath.quad(lambda t: 2 * mpmath.cos(t) ** 2 * mpmath.sin(t) ** k,
+                                        [-mpmath.pi / 2, mpmath.pi / 2]) for k in range(3)])
 
 
 def cylinder_tilt(r_, b_, s_, phi, dps):
     """Disc of radius r_, axis z from 0 to b_, water plane z = c + x tan(phi) (no base cut): the draught c
-    from the volume s F b, the centre of buoyancy by quadrature; returns (righting arm, c)."""
+    from the volume s F b, the centre of buoyancy from the disc's moments (quadrature); returns (righting arm,
+    c)."""
+    M0, M1, M2 = _disc_moments(dps)
     tn = mpmath.tan(phi)
-    width = lambda t: 2 * r_ ** 2 * mpmath.cos(t) ** 2          # chord width times dx/dtheta
-    A0 = _quad(width, dps)
-    A1 = _quad(lambda t: width(t) * r_ * mpmath.sin(t) * tn, dps)
+    A0 = r_ ** 2 * M0                                     # area
+    A1 = r_ ** 3 * M1 * tn                                # integral of x tan(phi) dA
     c = (s_ * A0 * b_ - A1) / A0
     V = s_ * A0 * b_
-    h = lambda t: c + r_ * mpmath.sin(t) * tn
-    xB = _quad(lambda t: width(t) * r_ * mpmath.sin(t) * h(t), dps) / V
-    zB = _quad(lambda t: width(t) * h(t) ** 2 / 2, dps) / V
+    xB = (c * r_ ** 3 * M1 + r_ ** 4 * M2 * tn) / V       # integral of x h dA, h = c + x tan(phi)
+    zB = (c ** 2 * r_ ** 2 * M0 + 2 * c * r_ ** 3 * M1 * tn + r_ ** 4 * M2 * tn ** 2) / 2 / V   # of h^2/2 dA
     return mpmath.cos(phi) * xB + mpmath.sin(phi) * (zB - b_ / 2), c
 
 
 def cylinder_gm(r_, b_, s_, dps):
-    width = lambda t: 2 * r_ ** 2 * mpmath.cos(t) ** 2
-    A0 = _quad(width, dps)
-    inertia = _quad(lambda t: width(t) * (r_ * mpmath.sin(t)) ** 2, dps)
-    return inertia / (s_ * A0 * b_) - (b_ / 2 - s_ * b_ / 2)
+    M0, _, M2 = _disc_moments(dps)
+    return r_ ** 4 * M2 / (s_ * r_ ** 2 * M0 * b_) - (b_ / 2 - s_ * b_ / 2)
 
 
 def cylinder_equilibrium(r_, b_, s_, dps):

@@ -21,10 +21,25 @@ def _restore_mpmath_precision():
     mpmath.mp.dps = dps
 
 
+# Under pytest-xdist (``-n 2``, the README's test command) the test workers check the derivations together:
+# each takes the ones no other worker has taken, into one cache they share (``verify(share=True)``).
+XDIST = "PYTEST_XDIST_WORKER" in os.environ
+
+
 @pytest.fixture(scope="session")
 def cache_dir(tmp_path_factory):
-    """A private, initially empty cache: every derivation is re-checked once."""
+    """An initially empty cache, private to this test run: every derivation is re-checked once."""
+    if XDIST:
+        shared = tmp_path_factory.getbasetemp().parent / "symfloat-cache"
+        shared.mkdir(exist_ok=True)
+        return shared
     return tmp_path_factory.mktemp("symfloat-cache")
+
+
+def _verify(selector, cache_dir):
+    if XDIST:
+        return verify(selector, cache=ReportCache(cache_dir), workers=1, share=True)
+    return verify(selector, cache=ReportCache(cache_dir))
 
 
 @contextmanager
@@ -41,18 +56,29 @@ def _infinitely_slow():
 
 
 @pytest.fixture(scope="session")
+def check(cache_dir):
+    """``check(selector)``: the reports of the derivations *selector* picks, checked as ``all_reports`` checks
+    them (into the session's cache, certificates replayed, no proof search)."""
+    def checked(selector):
+        with _infinitely_slow():
+            return _verify(selector, cache_dir)
+    return checked
+
+
+@pytest.fixture(scope="session")
 def graefe_reports(cache_dir):
     with _infinitely_slow():
-        return verify("graefe", cache=ReportCache(cache_dir))
+        return _verify("graefe", cache_dir)
 
 
 @pytest.fixture(scope="session")
 def all_reports(cache_dir, graefe_reports):
     with _infinitely_slow():
-        return verify(None, cache=ReportCache(cache_dir))
+        return _verify(None, cache_dir)
 
 
 @pytest.fixture(scope="session")
 def reports_by_id(all_reports):
     """The report of every derivation, checked once per session, by id."""
     return {r.id: r for r in all_reports}
+

@@ -8,9 +8,7 @@ import re
 import mpmath
 import pytest
 
-from symfloat.engine.cache import ReportCache
 from symfloat.engine.check import check_derivation
-from symfloat.engine.runner import verify
 from symfloat.model.source import SOURCES
 from symfloat.registry import load
 
@@ -21,8 +19,8 @@ RANGE = TEXT[TEXT.index("§. 220."):TEXT.index("§ 229. Consideremus")]
 
 
 @pytest.fixture(scope="module")
-def report(cache_dir):
-    return verify("euler-220-228", cache=ReportCache(cache_dir))[-1]
+def report(check):
+    return check("euler-220-228")[-1]
 
 
 def test_no_check_fails(report):

@@ -9,9 +9,7 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symfloat.engine.cache import ReportCache
 from symfloat.engine.check import check_derivation
-from symfloat.engine.runner import verify
 from symfloat.model.source import SOURCES
 from symfloat.registry import load
 
@@ -21,8 +19,8 @@ RANGE = TEXT[TEXT.index("§ 229."):]          # §229 to the end of the transcri
 
 
 @pytest.fixture(scope="module")
-def report(cache_dir):
-    return verify("euler-229-243", cache=ReportCache(cache_dir))[-1]
+def report(check):
+    return check("euler-229-243")[-1]
 
 
 def test_no_check_fails(report):

@@ -12,9 +12,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from symfloat.engine.cache import ReportCache
 from symfloat.engine.check import check_derivation
-from symfloat.engine.runner import verify
 from symfloat.geometry.floating import box, floating_state
 from symfloat.model.prediction import Scene
 from symfloat.model.source import SOURCES
@@ -26,8 +24,8 @@ RANGE = TEXT[TEXT.index("## IX."):TEXT.index("## X.")]
 
 
 @pytest.fixture(scope="module")
-def report(cache_dir):
-    return verify("scheeffer-ix", cache=ReportCache(cache_dir))[-1]
+def report(check):
+    return check("scheeffer-ix")[-1]
 
 
 def test_no_check_fails(report):

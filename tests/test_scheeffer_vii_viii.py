@@ -10,10 +10,8 @@ import pytest
 import sympy as sp
 
 import derivations.scheeffer_vii_viii as M
-from symfloat.engine.cache import ReportCache
 from symfloat.engine.check import check_derivation
 from symfloat.engine.roots import illinois
-from symfloat.engine.runner import verify
 from symfloat.geometry.floating import box, floating_state, right_prism
 from symfloat.model.prediction import Scene
 from symfloat.model.source import SOURCES
@@ -26,8 +24,8 @@ UNWITNESSED = {"s-upper", "95-element", "96-split", "117-cos", "regular-Ps", "10
 
 
 @pytest.fixture(scope="module")
-def report(cache_dir):
-    return verify("scheeffer-vii-viii", cache=ReportCache(cache_dir))[-1]
+def report(check):
+    return check("scheeffer-vii-viii")[-1]
 
 
 def test_no_failures_and_the_expected_errata(report):

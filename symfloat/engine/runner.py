@@ -131,14 +131,16 @@ def derivation_keys(ids) -> dict[str, str]:
 
 def verify(selector: str | None = None, *, use_cache: bool = True, cache: ReportCache | None = None,
            progress: Progress | None = None, workers: int | None = None, search_proofs: bool = False,
-           record_proofs: bool = False) -> list[DerivationReport]:
+           record_proofs: bool = False, share: bool = False) -> list[DerivationReport]:
     """Reports for the derivations *selector* picks, ancestors included, in dependency order.
 
     Derivations missing from the cache are checked in *workers* processes (checks are independent
     of one another; only the cache keys chain through the ancestors).  *search_proofs* searches every
     claim's proof anew instead of replaying its certificate (and so bypasses the cache);
     *record_proofs* writes the certificates of every derivation checked without failure to
-    ``proofs/<id>.json`` (see :mod:`symfloat.engine.proofs`)."""
+    ``proofs/<id>.json`` (see :mod:`symfloat.engine.proofs`).  *share*: other processes verify into
+    the same cache at the same time (test workers); each derivation is checked by whichever process
+    takes its lock first, the others read its report from the cache (:func:`_shared`)."""
     cache = cache or ReportCache(enabled=use_cache and not search_proofs)
     progress = progress or Progress(quiet=True)
     workers = default_workers() if workers is None else workers
@@ -185,8 +187,37 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
             raise
         pool.shutdown()
     else:
-        for did in pending:
-            progress.start(done + 1, len(ids), did)
-            finish(did, _check(did, keys[did], search_proofs, progress.tick))
+        for did, lock in _shared(cache, pending) if share else ((did, None) for did in pending):
+            report = _cached_report(cache, did, keys[did]) if lock is not None else None
+            if report is None:
+                progress.start(done + 1, len(ids), did)
+                finish(did, _check(did, keys[did], search_proofs, progress.tick))
+            else:
+                done += 1
+                reports[did] = report
             progress.done(reports[did])
+            if lock is not None:
+                lock.close()
     return [reports[did] for did in ids]
+
+
+def _shared(cache: ReportCache, pending: list[str]):
+    """*pending* in the order this process can take their locks (``<cache>/<id>.lock``, ``flock``):
+    first those no other process holds, then, waiting for each, the rest; yields ``(id, open lock)``.
+    A derivation another process finished is then read from the cache, not checked again."""
+    import fcntl
+    cache.root.mkdir(parents=True, exist_ok=True)
+    waiting = []
+    for did in pending:
+        lock = open(cache.root / f"{did}.lock", "w")
+        try:
+            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            lock.close()
+            waiting.append(did)
+            continue
+        yield did, lock
+    for did in waiting:
+        lock = open(cache.root / f"{did}.lock", "w")
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        yield did, lock

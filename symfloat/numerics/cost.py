@@ -27,13 +27,13 @@ END = "<!-- end of derivation costs -->"
 _PROBE = r"""
 import json, sys, time
 t0 = time.perf_counter()
-from symfloat.registry import load
+from symfloat.registry import load, requires
 from symfloat.engine.cache import ReportCache
 from symfloat.engine.check import DerivationReport
 from symfloat.engine.runner import verify
 t1 = time.perf_counter()
 did, cache = sys.argv[1], sys.argv[2]
-for r in load(did)[0].requires:
+for r in requires(did):
     verify(r, cache=ReportCache(cache), workers=1)     # ancestors first (not counted: they have rows of their own)
 t2 = time.perf_counter()
 load(did)
