@@ -17,7 +17,7 @@ run: $(STAMP)
 	$(BIN)/symfloat run
 
 test: $(STAMP)
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n 2 --dist loadfile
 
 clean:
 	rm -rf $(VENV) .symfloat-cache

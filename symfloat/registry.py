@@ -16,8 +16,7 @@ import pkgutil
 from functools import cache
 from pathlib import Path
 
-import derivations
-
+from . import derivations
 from .errors import InputError
 from .model.derivation import Derivation
 
@@ -64,7 +63,7 @@ def load(derivation_id: str) -> tuple[Derivation, object]:
     name = derivation_id.replace("-", "_")
     if name not in module_names():
         raise SelectorError(f"no derivation {derivation_id!r}")
-    module = importlib.import_module(f"derivations.{name}")
+    module = importlib.import_module(f"{derivations.__name__}.{name}")
     d = module.DERIVATION
     if d.id != derivation_id:
         raise RuntimeError(f"module {name} defines {d.id!r}, expected {derivation_id!r}")

@@ -1,5 +1,5 @@
-"""The metacentre lesson (derivations/metazentrum.py) and the square prism by the energy method
-(derivations/hasab.py): verdicts and errata pinned, the density thresholds of hasab recomputed here by
+"""The metacentre lesson (symfloat/derivations/metazentrum.py) and the square prism by the energy method
+(symfloat/derivations/hasab.py): verdicts and errata pinned, the density thresholds of hasab recomputed here by
 root-finding on clipped geometry, and mutated coefficients refuted by the engine."""
 import dataclasses
 from fractions import Fraction

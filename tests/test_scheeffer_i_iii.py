@@ -1,4 +1,4 @@
-"""Scheeffer 1902, sections I-III (derivations/scheeffer_i_iii.py): every display of the range quoted and
+"""Scheeffer 1902, sections I-III (symfloat/derivations/scheeffer_i_iii.py): every display of the range quoted and
 judged, the erratum of (18) pinned, the small-angle limits pinned against clipped geometry, and a mutated
 coefficient of (12) refuted by the engine."""
 import dataclasses

@@ -7,7 +7,7 @@ from dataclasses import replace
 import pytest
 import sympy as sp
 
-import derivations.scheeffer_iv_v as M
+import symfloat.derivations.scheeffer_iv_v as M
 from symfloat.engine.check import check_derivation
 from symfloat.geometry.floating import floating_state
 

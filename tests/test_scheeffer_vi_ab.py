@@ -1,4 +1,4 @@
-"""Scheeffer 1902, VI, VI.A, VI.B (derivations/scheeffer_vi_ab.py): recomputed worked examples and
+"""Scheeffer 1902, VI, VI.A, VI.B (symfloat/derivations/scheeffer_vi_ab.py): recomputed worked examples and
 thresholds, each pinned with its provenance, and a mutation test."""
 import dataclasses
 import math
@@ -9,7 +9,7 @@ import sympy as sp
 from symfloat.engine.check import check_derivation
 from symfloat.registry import load
 
-import derivations.scheeffer_vi_ab as M
+import symfloat.derivations.scheeffer_vi_ab as M
 
 
 def deg(x):

@@ -9,7 +9,7 @@ from fractions import Fraction
 import pytest
 import sympy as sp
 
-import derivations.scheeffer_vii_viii as M
+import symfloat.derivations.scheeffer_vii_viii as M
 from symfloat.engine.check import check_derivation
 from symfloat.engine.roots import illinois
 from symfloat.geometry.floating import box, floating_state, right_prism

@@ -3,7 +3,7 @@ from pathlib import Path
 
 import pytest
 
-from symfloat.model.source import SOURCES
+from symfloat.model.source import SOURCES, _source
 from symfloat.registry import load, select
 
 SHARED = Path(__file__).resolve().parents[2] / "shared" / "sources"
@@ -30,3 +30,24 @@ def test_every_excerpt_is_verbatim_and_named_once():
         assert len(names) == len(set(names))
         for p in d.printed:
             assert SOURCES[d.source].contains(p.excerpt), (did, p.name)
+
+
+def test_sources_are_found_from_their_metadata_files():
+    # the five sources of shared/sources/INDEX.md, in its order, each found from <key>.source.json
+    assert list(SOURCES) == ["scheeffer", "graefe", "euler", "metazentrum", "hasab"]
+    assert SOURCES["euler"].locators == "the paragraph, e.g. §216"      # INDEX.md, numbering conventions
+
+
+@pytest.mark.parametrize("change, message", [
+    (lambda m: m.pop("locators"), "the fields must be exactly"),
+    (lambda m: m.update(year="1902"), "year has the wrong type"),
+    (lambda m: m.update(key="other"), "must be named after its key"),
+    (lambda m: m.update(file="missing.txt"), "no transcription missing.txt"),
+])
+def test_a_malformed_metadata_file_is_refused(change, message):
+    meta = {"key": "hasab", "author": "(solved problem)", "title": "t", "year": None, "language": "Hungarian",
+            "file": SOURCES["hasab"].filename, "locators": "the heading"}
+    assert _source("hasab.source.json", meta).key == "hasab"
+    change(meta)
+    with pytest.raises(ValueError, match=message):
+        _source("hasab.source.json", meta)

@@ -87,7 +87,7 @@ def slowdown() -> float:
 
 def proofs_folder() -> Path:
     """Where the certificates are kept: ``proofs/`` in the derivations package."""
-    import derivations
+    from .. import derivations
 
     return Path(derivations.__path__[0]) / "proofs"
 

@@ -2,10 +2,14 @@
 
 The transcriptions ship with the package (``symfloat/sources``), copied byte
 for byte from the project's shared folder, so that every quoted excerpt can be
-checked verbatim on any installation.
+checked verbatim on any installation.  A source is data: its transcription and
+a metadata file ``<key>.source.json`` beside it (key, author, title, year,
+language, file, how a place in it is cited).  Adding one adds two files and
+edits none.
 """
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
@@ -15,7 +19,7 @@ __all__ = ["Source", "SOURCES", "get_source"]
 
 @dataclass(frozen=True)
 class Source:
-    """A work from ``sources/INDEX.md``: its key, bibliographic data and file."""
+    """A transcribed work: its key, bibliographic data, file and how a place in it is cited."""
 
     key: str
     author: str
@@ -23,6 +27,7 @@ class Source:
     year: int | None
     language: str
     filename: str
+    locators: str = ""
 
     def text(self) -> str:
         """The full transcription, exactly as shipped."""
@@ -33,27 +38,43 @@ class Source:
         return bool(excerpt) and excerpt in self.text()
 
 
+_FIELDS = {"key": str, "author": str, "title": str, "year": (int, type(None)), "language": str, "file": str,
+           "locators": str}
+
+
+def _folder():
+    return resources.files("symfloat").joinpath("sources")
+
+
 @cache
 def _read(filename: str) -> str:
-    return resources.files("symfloat").joinpath("sources", filename).read_text(encoding="utf-8")
+    return _folder().joinpath(filename).read_text(encoding="utf-8")
 
 
-SOURCES: dict[str, Source] = {
-    s.key: s
-    for s in (
-        Source("scheeffer", "Eugen Scheeffer", "Über stabiles Schwimmen homogener Körper", 1902,
-               "German", "000_1e9760952686f295.txt"),
-        Source("graefe", "V. v. Graefe",
-               "Ueber eine allgemeine Formel zur Bestimmung des Schwerpunctes von Körpern", 1866,
-               "German", "001_7d23c66f8db6d29e.txt"),
-        Source("euler", "Leonhard Euler", "Scientia navalis, Cap. III: De stabilitate situs aequilibrii",
-               1749, "Latin", "002_9b5669e726e363a9.txt"),
-        Source("metazentrum", "(web lesson)", "Auftrieb Stabilität", None, "German",
-               "003_02a33f8f897eb570.txt"),
-        Source("hasab", "(solved problem)", "Hasáb úszása (long square prism)", None, "Hungarian",
-               "004_212cb4aaa01f7969.txt"),
-    )
-}
+def _source(name: str, data) -> Source:
+    """A source from its metadata file *name*, every field present and of its type."""
+    if not isinstance(data, dict) or set(data) != set(_FIELDS):
+        raise ValueError(f"sources/{name}: the fields must be exactly {', '.join(_FIELDS)}")
+    for field, kind in _FIELDS.items():
+        if not isinstance(data[field], kind) or isinstance(data[field], bool):
+            raise ValueError(f"sources/{name}: {field} has the wrong type")
+    if name != f"{data['key']}.source.json":
+        raise ValueError(f"sources/{name}: the file must be named after its key, {data['key']}.source.json")
+    if not _folder().joinpath(data["file"]).is_file():
+        raise ValueError(f"sources/{name}: no transcription {data['file']}")
+    return Source(data["key"], data["author"], data["title"], data["year"], data["language"], data["file"],
+                  data["locators"])
+
+
+def _discover() -> dict[str, Source]:
+    """Every ``sources/<key>.source.json`` with its transcription, in the order of the transcriptions'
+    file names (the numbering of ``sources/INDEX.md``)."""
+    found = [_source(f.name, json.loads(f.read_text(encoding="utf-8")))
+             for f in _folder().iterdir() if f.name.endswith(".source.json")]
+    return {s.key: s for s in sorted(found, key=lambda s: s.filename)}
+
+
+SOURCES: dict[str, Source] = _discover()
 
 
 def get_source(key: str) -> Source:

@@ -22,8 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-import derivations
-
+from .. import derivations
 from ..model.derivation import Printed
 from ..model.prediction import Scene
 from ..registry import load, module_names
