@@ -37,7 +37,7 @@ from .engine.cache import ReportCache
 from .engine.runner import Progress, verify
 from .errors import EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, InputError, SymfloatError
 from .project import GOLDEN, in_project, project_root
-from .registry import select
+from .registry import load, providing, select
 from .report.errata import errata_json, errata_markdown
 from .report.files import write_atomic, write_if_changed, writable_target
 from .report.record import record_json, verification_table
@@ -228,16 +228,18 @@ def _run(args) -> int:
 
     written = write_notebooks([r.id for r in reports], notebooks, None if quiet else
                               (lambda d: print(f"executing notebook {d}", file=sys.stderr, flush=True)))
-    if any(r.id == "scheeffer-ix" for r in reports):
-        from .report.ix_grid import boundary_cells, grid_markdown, grid_rows, grid_stamp
-        stamp = grid_stamp()
-        if stamp_of(docs / "scheeffer-ix-grid.md") != stamp:         # the solver or the tables changed
-            grid = grid_rows(progress=None if quiet else (lambda m: print(f"IX grid {m}", file=sys.stderr)),
-                             extra=boundary_cells())
-            write_if_changed(docs / "scheeffer-ix-grid.md", grid_markdown(grid, stamp))
+    documents = ["verification.json", "errata.json", "errata.md"]
+    checked = {r.id for r in reports}
+    for did in providing("report"):             # documents the derivations add (e.g. Scheeffer IX's grid)
+        if did not in checked:
+            continue
+        for report in load(did)[0].provided["report"]:
+            if stamp_of(docs / report.filename) != report.stamp():         # what it depends on changed
+                write_if_changed(docs / report.filename, report.build(
+                    progress=None if quiet else (lambda m, f=report.filename: print(f"{f}: {m}", file=sys.stderr))))
+            documents.append(report.filename)
     print(_summary_by_source(reports))
-    print(f"wrote docs/verification.json, docs/errata.json, docs/errata.md, docs/scheeffer-ix-grid.md; "
-          f"{len(written)} notebooks changed")
+    print(f"wrote {', '.join('docs/' + f for f in documents)}; {len(written)} notebooks changed")
     for r in reports:
         for msg in r.failures:
             print(f"FAILURE: {msg}")

@@ -13,6 +13,7 @@ from __future__ import annotations
 import ast
 import importlib
 import pkgutil
+import re
 from functools import cache
 from pathlib import Path
 
@@ -20,7 +21,7 @@ from . import derivations
 from .errors import InputError
 from .model.derivation import Derivation
 
-__all__ = ["module_names", "module_path", "requires", "load", "select", "SelectorError"]
+__all__ = ["module_names", "module_path", "requires", "providing", "load", "select", "SelectorError"]
 
 
 class SelectorError(InputError):
@@ -55,6 +56,16 @@ def requires(derivation_id: str) -> tuple[str, ...]:
                         raise RuntimeError(f"{path.name}: requires=... must be a literal tuple of ids") from None
             return ()
     raise RuntimeError(f"{path.name}: no Derivation(...) found")
+
+
+_PROVIDES = re.compile(r"""\.provides\(\s*["'](\w+)["']""")
+
+
+@cache
+def providing(kind: str) -> tuple[str, ...]:
+    """Ids of the derivations that provide *kind* (``d.provides("kind", ...)``, read from their source)."""
+    return tuple(m.replace("_", "-") for m in module_names()
+                 if kind in _PROVIDES.findall(module_path(m).read_text(encoding="utf-8")))
 
 
 @cache

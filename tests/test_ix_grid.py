@@ -4,7 +4,7 @@ from fractions import Fraction
 from pathlib import Path
 
 from symfloat.registry import load
-from symfloat.report import ix_grid
+from symfloat.derivations import _ix_grid as ix_grid
 
 _, IX = load("scheeffer-ix")
 

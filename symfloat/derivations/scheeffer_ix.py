@@ -48,6 +48,7 @@ import numpy as np
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
+from symfloat.model.derivation import Report
 from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state
@@ -1205,3 +1206,18 @@ def predict(scene):
 
 
 d.predicts(("box", "cube"), predict)
+
+
+def _grid_report(progress=None) -> str:
+    """docs/scheeffer-ix-grid.md: the tables against the solver on a grid of (s, a/b) and across every
+    boundary of the tables (:mod:`symfloat.derivations._ix_grid`)."""
+    from ._ix_grid import boundary_cells, grid_markdown, grid_rows, grid_stamp
+    return grid_markdown(grid_rows(progress=progress, extra=boundary_cells()), grid_stamp())
+
+
+def _grid_stamp() -> str:
+    from ._ix_grid import grid_stamp
+    return grid_stamp()
+
+
+d.provides("report", Report("scheeffer-ix-grid.md", _grid_stamp, _grid_report))

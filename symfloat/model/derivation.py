@@ -5,6 +5,7 @@ only assembles SymPy objects, the engine does all the checking.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import sympy as sp
@@ -79,6 +80,20 @@ class Printed:
             raise ValueError(f"printed {self.name!r}: unreadable print needs an erratum")
 
 
+PROVIDED_KINDS = ("thresholds", "forms", "report")
+
+
+@dataclass(frozen=True)
+class Report:
+    """A document a derivation adds to the main job's output: ``docs/<filename>``, rewritten only when
+    ``stamp()`` (a line naming what it depends on) differs from the stamp in the committed file;
+    ``build(progress)`` returns its Markdown, stamp included."""
+
+    filename: str
+    stamp: Callable[[], str]
+    build: Callable[..., str]
+
+
 @dataclass
 class Derivation:
     """An ordered derivation of the printed formulas of one source section.
@@ -102,6 +117,7 @@ class Derivation:
     witnesses: list = field(default_factory=list)
     predictor: Predictor | None = None
     names: list = field(default_factory=list)
+    provided: dict = field(default_factory=dict)
 
     def __post_init__(self):
         get_source(self.source)
@@ -155,6 +171,21 @@ class Derivation:
             raise ValueError(f"{self.id} already has a predictor")
         self.predictor = Predictor(tuple(bodies), predict)
         return self.predictor
+
+    def provides(self, kind, value):
+        """Hand the library something it reads from this derivation; the library knows no derivation
+        by name, it asks the registry which modules provide a *kind* (read from the literal
+        ``provides("kind", ...)`` in their source) and imports only those.  Kinds:
+
+        * ``"thresholds"``: names of result symbols that are closed-form densities (a phase diagram
+          names a threshold it finds by the closed form it meets);
+        * ``"forms"``: a function returning closed forms for the float64 study
+          (:class:`symfloat.numerics.forms.Form`);
+        * ``"report"``: a :class:`Report`, a document the main job writes beside the record."""
+        if kind not in PROVIDED_KINDS:
+            raise ValueError(f"{self.id}: unknown kind {kind!r}; known: {', '.join(PROVIDED_KINDS)}")
+        self.provided.setdefault(kind, []).append(value)
+        return value
 
     # -- queries ----------------------------------------------------------
     def get_step(self, name) -> Step:

@@ -312,13 +312,15 @@ def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
 
 
 def _closed_forms() -> list[tuple[float, str]]:
-    """Closed-form thresholds the derivations establish as results (value, expression)."""
-    from ..registry import load
-    d, _ = load("scheeffer-vi-cf")
+    """Closed-form thresholds the derivations establish as results (value, expression): the results each
+    derivation names with ``provides("thresholds", names)``."""
+    from ..registry import load, providing
     out = []
-    for symbol, value in d.results().items():
-        if str(symbol) in ("s_-", "s_+", "s_80-", "s_80+", "s_e-", "s_e+"):
-            out.append((float(sp.N(value, 30)), str(sp.nsimplify(value))))
+    for did in providing("thresholds"):
+        d, _ = load(did)
+        names = {str(symbol) for group in d.provided["thresholds"] for symbol in group}
+        out += [(float(sp.N(value, 30)), str(sp.nsimplify(value)))
+                for symbol, value in d.results().items() if str(symbol) in names]
     return out
 
 

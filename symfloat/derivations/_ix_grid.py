@@ -7,6 +7,9 @@ in ``symfloat/derivations/scheeffer_ix.py``: region, tilt from the position with
 vertical, stability) are compared with the equilibria the solver finds in
 the same section, which knows nothing of the tables.  A cell agrees when both
 lists match one to one (tilt within ``MATCH_RAD``, same stability).
+
+The derivation hands the grid to the main job as a report (``provides("report", ...)``):
+``docs/scheeffer-ix-grid.md``, rebuilt when its stamp changes.
 """
 from __future__ import annotations
 
@@ -17,8 +20,8 @@ from fractions import Fraction
 from pathlib import Path
 
 from ..registry import load
+from ..report.stamp import digest, package_digest, stamp_line
 from ..solver import make_scene, solve
-from .stamp import digest, package_digest, stamp_line
 
 __all__ = ["DENSITIES", "RATIOS", "grid_rows", "grid_markdown", "grid_stamp"]
 
