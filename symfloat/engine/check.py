@@ -133,7 +133,10 @@ def _check_chain(chain, names, results, domain, seed, book, proofs, tolerance=No
     same = identical_links(ms)
     if all(same):
         return IdentityResult("trivial", tried=["none: the members are identical as built"])
+    t0 = time.perf_counter()
     ms = [_evaluated(_substitute(m, results)) for m in ms]
+    if timing is not None:
+        timing["evaluation"] += time.perf_counter() - t0
     order = {"refuted": 0, "undecided": 1, "agrees": 2, "sampled": 2, "proved": 3}
     worst = None
     total = 0.0
@@ -177,7 +180,9 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
     proofs: dict = {}
     results: dict = {}
     closed: dict = {}       # a defining integral -> its closed form, once an integration step derived it
-    timing = {"sampling": 0.0, "proofs": 0.0, "witnesses": 0.0}
+    # seconds by kind: carrying out the claims' integrals, derivatives and sums (evaluation), sampling the
+    # links, replaying or searching their proofs, the witnesses
+    timing = {"evaluation": 0.0, "sampling": 0.0, "proofs": 0.0, "witnesses": 0.0}
     step_reports = []
     for s in d.steps:
         names = {s.result} if s.result is not None else set()
@@ -205,11 +210,15 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
     readings, identities, corrected = {}, {}, {}
     for p in d.printed:      # witnesses evaluate closed forms, never a defining integral again
         if p.reading is not None:
+            t0 = time.perf_counter()
             readings[p.name] = _resolved(p.reading, results, closed)
+            timing["evaluation"] += time.perf_counter() - t0
             identities[p.name] = _check_chain(p.reading, set(), results, domain,
                                               f"{d.id}/{p.name}", book, proofs, p.tolerance, prove, timing)
         if p.erratum is not None and p.erratum.corrected_reading is not None:
+            t0 = time.perf_counter()
             readings[p.name + "#corrected"] = _resolved(p.erratum.corrected_reading, results, closed)
+            timing["evaluation"] += time.perf_counter() - t0
             corrected[p.name] = _check_chain(p.erratum.corrected_reading, set(), results, domain,
                                              f"{d.id}/{p.name}#corrected", book, proofs, p.tolerance, prove,
                                              timing)

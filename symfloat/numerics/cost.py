@@ -36,8 +36,16 @@ did, cache = sys.argv[1], sys.argv[2]
 for r in requires(did):
     verify(r, cache=ReportCache(cache), workers=1)     # ancestors first (not counted: they have rows of their own)
 t2 = time.perf_counter()
-load(did)
+d = load(did)[0]
 t3 = time.perf_counter()
+witness_seconds = {}
+for w in d.witnesses:                                   # each witness timed where it runs
+    def timed(readings, run=w.run, name=w.name):
+        t = time.perf_counter()
+        out = run(readings)
+        witness_seconds[name] = witness_seconds.get(name, 0.0) + time.perf_counter() - t
+        return out
+    object.__setattr__(w, "run", timed)
 [report] = [r for r in verify(did, cache=ReportCache(cache), workers=1) if r.id == did]
 t4 = time.perf_counter()
 [warm] = [r for r in verify(did, cache=ReportCache(cache), workers=1) if r.id == did]
@@ -46,7 +54,7 @@ print(json.dumps({"id": did, "library_import": t1 - t0, "import": t3 - t2, "cold
                   "warm_cached": warm.cached, "timing": report.timing, "proofs": report.proofs,
                   "witnesses": sum(len(f.numeric) > 0 for f in report.formulas),
                   "formulas": len(report.formulas), "steps": len(report.steps),
-                  "failures": len(report.failures)}))
+                  "failures": len(report.failures), "witness_seconds": witness_seconds}))
 """
 
 
@@ -82,47 +90,47 @@ def cost_markdown(rows, machine: str) -> str:
              f"Measured by `symfloat bench --derivations` on {machine}: one fresh process per derivation, "
              "its ancestors checked first and not counted. *import*: loading the module; *cold*: checking it "
              "with an empty cache, proof certificates replayed (no proof search); *warm*: reading its report "
-             "from the cache. The cold time by kind: sampling (with the integrals the claims evaluate), "
-             "replaying proofs, witnesses, and the rest (building the readings, verdicts). Times vary between "
+             "from the cache. The cold time by kind: evaluation (SymPy carrying out the integrals, derivatives "
+             "and sums of the claims), sampling the claims, replaying proofs, witnesses, and the rest (building "
+             "reports and verdicts). Times vary between "
              "machines; verdicts do not (see `tests/test_under_load.py`).", "",
              "| derivation | import (s) | cold (s) | warm (s) | claims proved | claims sampled | formulas with "
-             "witnesses | sampling | proofs | witnesses | other |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "witnesses | evaluation | sampling | proofs | witnesses | other |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         proved = sum(c["strategy"] is not None for c in r["proofs"].values())
         sampled = len(r["proofs"]) - proved
         sh = _share(r)
         lines.append(f"| {r['id']} | {r['import']:.2f} | {r['cold']:.1f} | {r['warm']:.2f} | {proved} | {sampled} | "
-                     f"{r['witnesses']} of {r['formulas']} | {sh['sampling']:.0%} | {sh['proofs']:.0%} | "
+                     f"{r['witnesses']} of {r['formulas']} | {sh['evaluation']:.0%} | {sh['sampling']:.0%} | "
+                     f"{sh['proofs']:.0%} | "
                      f"{sh['witnesses']:.0%} | {sh['other']:.0%} |")
     cold = sum(r["cold"] + r["import"] for r in rows)
     warm = sum(r["warm"] for r in rows)
     lines += ["", f"Total: {cold:.0f} s cold (import and check, one process at a time), {warm:.1f} s warm.", "",
               "The five slowest (cold), and where their time goes:", ""]
     for r in sorted(rows, key=lambda r: -r["cold"])[:5]:
-        sh = _share(r)
-        kind = max(sh, key=sh.get)
-        lines.append(f"- `{r['id']}`: {r['cold']:.1f} s, {sh[kind]:.0%} in {kind}. {_EXPLAIN.get(r['id'], '')}".rstrip())
+        lines.append(f"- `{r['id']}`: {r['cold']:.1f} s; {_explain(r)}.")
     lines += ["", END]
     return "\n".join(lines) + "\n"
 
 
-# Why the slowest derivations cost what they cost (read off their modules and profiles).
-_EXPLAIN = {
-    "scheeffer-vi-cf": "Its witnesses clip the cube and the prism exactly at 50 digits and find the touching "
-                       "equilibria by root finding on the clipped body (mpmath), case by case.",
-    "scheeffer-vi-ab": "Witnesses solve for the equilibria of clipped prisms and cylinders at 15 and 50 digits; "
-                       "the readings of (61)-(65) carry solved boundaries whose sampling is slow.",
-    "euler-220-228": "Its claims are integrals with square-root limits: each sample evaluates them exactly.",
-    "euler-229-243": "The tables of §233-234 are rebuilt from Beta integrals, one claim per legible row.",
-    "scheeffer-ix": "The quartic's double-root locus is parametrised by the root; sampling evaluates algebraic "
-                    "numbers at 60 digits.",
-    "scheeffer-vii-viii": "Witnesses clip the parallelepiped about oblique axes at 15 and 50 digits.",
-    "scheeffer-iv-v": "Witnesses find the tilted equilibria of clipped prisms by root finding at 50 digits.",
-    "scheeffer-x": "The pentagonal positions come from the roots of (171), measured on the clipped cube.",
-    "graefe-s4-applications": "Many bodies, each with section-area quadrature at 15 and 50 digits and exact hulls.",
-    "euler-192-219": "Double integrals over waterplanes, evaluated exactly for every sample.",
-}
+_KIND = {"evaluation": "SymPy carrying out the integrals, derivatives and sums its claims state",
+         "sampling": "sampling its claims at exact and high-precision points",
+         "proofs": "replaying its proof certificates",
+         "witnesses": "its witnesses",
+         "other": "building its report"}
+
+
+def _explain(row) -> str:
+    """Where a derivation's cold time goes, from its own measurement: the kinds by share, and its
+    slowest witnesses by name."""
+    shares = sorted(_share(row).items(), key=lambda kv: -kv[1])
+    text = ", ".join(f"{v:.0%} {_KIND[k]}" for k, v in shares[:2] if v >= 0.1)
+    slow = sorted(row.get("witness_seconds", {}).items(), key=lambda kv: -kv[1])[:3]
+    if slow:
+        text += "; slowest witnesses " + ", ".join(f"`{name}` {sec:.1f} s" for name, sec in slow)
+    return text
 
 
 def write_section(path: Path, section: str) -> str:
