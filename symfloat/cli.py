@@ -36,7 +36,7 @@ from pathlib import Path
 from .engine.cache import ReportCache
 from .engine.runner import Progress, verify
 from .errors import EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, InputError, SymfloatError
-from .project import GOLDEN, in_project, project_root
+from .project import GOLDEN, in_project, library_folders, project_root
 from .registry import load, providing, select
 from .report.errata import errata_json, errata_markdown
 from .report.files import write_atomic, write_if_changed, writable_target
@@ -422,6 +422,7 @@ def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     with _Interrupts() as interrupts:
         try:
+            library_folders()                 # a further library of texts that is not there: one line, exit 2
             return COMMANDS[args.command].run(args)
         except KeyboardInterrupt:
             pass

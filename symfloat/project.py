@@ -13,7 +13,7 @@ from pathlib import Path
 
 from .errors import InputError
 
-__all__ = ["project_root", "in_project", "GOLDEN"]
+__all__ = ["project_root", "in_project", "GOLDEN", "library_folders", "LIBRARY_VARIABLE"]
 
 GOLDEN = ("docs/errata.md", "docs/errata.json", "docs/verification.json")   # the record of everything
 _NAME = re.compile(r'^name\s*=\s*"symfloat"\s*$', re.MULTILINE)
@@ -33,6 +33,21 @@ def project_root() -> Path | None:
         return above
     here = Path.cwd()
     return here if _is_checkout(here) else None
+
+
+LIBRARY_VARIABLE = "SYMFLOAT_LIBRARY"
+
+
+def library_folders() -> list[Path]:
+    """Further libraries of texts, from ``SYMFLOAT_LIBRARY`` (folders separated by ``os.pathsep``): each
+    holds ``sources/`` (transcriptions and their ``<key>.source.json``) and ``derivations/`` (derivation
+    modules, their certificates in ``derivations/proofs/``), found beside the package's own.  A folder
+    that does not exist is an :class:`InputError` (the command line checks before any work)."""
+    folders = [Path(p) for p in os.environ.get(LIBRARY_VARIABLE, "").split(os.pathsep) if p]
+    for folder in folders:
+        if not folder.is_dir():
+            raise InputError(f"{LIBRARY_VARIABLE}: {folder} is not a folder")
+    return [folder.resolve() for folder in folders]
 
 
 def in_project(relative: str | os.PathLike) -> Path:

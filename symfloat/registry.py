@@ -39,7 +39,7 @@ def module_path(derivation_id: str) -> Path:
     name = derivation_id.replace("-", "_")
     if name not in module_names():
         raise SelectorError(f"no derivation {derivation_id!r}")
-    return Path(derivations.__path__[0]) / f"{name}.py"
+    return next(Path(folder) / f"{name}.py" for folder in derivations.__path__ if (Path(folder) / f"{name}.py").is_file())
 
 
 @cache

@@ -57,7 +57,6 @@ from symfloat.engine.roots import illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import floating_state, right_prism, submerged
 from symfloat.model.prediction import Prediction
-from symfloat.model.claim import as_printed
 
 
 R = sp.Rational

@@ -85,11 +85,11 @@ def slowdown() -> float:
     return factor
 
 
-def proofs_folder() -> Path:
-    """Where the certificates are kept: ``proofs/`` in the derivations package."""
-    from .. import derivations
+def proofs_folder(derivation_id: str) -> Path:
+    """Where a derivation's certificates are kept: ``proofs/`` beside its module."""
+    from ..registry import module_path
 
-    return Path(derivations.__path__[0]) / "proofs"
+    return module_path(derivation_id).parent / "proofs"
 
 
 class ProofBook:
@@ -105,7 +105,7 @@ class ProofBook:
 
     @classmethod
     def load(cls, derivation_id: str, search: bool = False, folder: Path | None = None) -> "ProofBook":
-        path = (folder or proofs_folder()) / f"{derivation_id}.json"
+        path = (folder or proofs_folder(derivation_id)) / f"{derivation_id}.json"
         try:
             data = json.loads(path.read_text(encoding="utf-8"))
         except FileNotFoundError:
@@ -126,4 +126,4 @@ class ProofBook:
 
     @staticmethod
     def path(derivation_id: str, folder: Path | None = None) -> Path:
-        return (folder or proofs_folder()) / f"{derivation_id}.json"
+        return (folder or proofs_folder(derivation_id)) / f"{derivation_id}.json"

@@ -42,13 +42,20 @@ _FIELDS = {"key": str, "author": str, "title": str, "year": (int, type(None)), "
            "locators": str}
 
 
-def _folder():
-    return resources.files("symfloat").joinpath("sources")
+def _folders() -> list:
+    """The package's ``sources/``, then those of the libraries ``SYMFLOAT_LIBRARY`` names."""
+    from ..errors import InputError
+    from ..project import library_folders
+    try:
+        extra = [folder / "sources" for folder in library_folders() if (folder / "sources").is_dir()]
+    except InputError:      # reported by the command line, which checks the variable before any work
+        extra = []
+    return [resources.files("symfloat").joinpath("sources"), *extra]
 
 
 @cache
 def _read(filename: str) -> str:
-    return _folder().joinpath(filename).read_text(encoding="utf-8")
+    return next(f.joinpath(filename) for f in _folders() if f.joinpath(filename).is_file()).read_text(encoding="utf-8")
 
 
 def _source(name: str, data) -> Source:
@@ -60,7 +67,7 @@ def _source(name: str, data) -> Source:
             raise ValueError(f"sources/{name}: {field} has the wrong type")
     if name != f"{data['key']}.source.json":
         raise ValueError(f"sources/{name}: the file must be named after its key, {data['key']}.source.json")
-    if not _folder().joinpath(data["file"]).is_file():
+    if not any(f.joinpath(data["file"]).is_file() for f in _folders()):
         raise ValueError(f"sources/{name}: no transcription {data['file']}")
     return Source(data["key"], data["author"], data["title"], data["year"], data["language"], data["file"],
                   data["locators"])
@@ -70,7 +77,7 @@ def _discover() -> dict[str, Source]:
     """Every ``sources/<key>.source.json`` with its transcription, in the order of the transcriptions'
     file names (the numbering of ``sources/INDEX.md``)."""
     found = [_source(f.name, json.loads(f.read_text(encoding="utf-8")))
-             for f in _folder().iterdir() if f.name.endswith(".source.json")]
+             for folder in _folders() for f in folder.iterdir() if f.name.endswith(".source.json")]
     return {s.key: s for s in sorted(found, key=lambda s: s.filename)}
 
 

@@ -58,7 +58,7 @@ def build_notebook(derivation_id: str) -> nbformat.NotebookNode:
             + "\n".join(f"- {a}" for a in d.assumptions))),
         *([(cell_id("about"), md("## About this section\n\n" + about))] if about else []),
         (cell_id("setup"), code(
-            f"from derivations import {module.__name__.split('.')[-1]} as derivation\n"
+            f"from symfloat.derivations import {module.__name__.split('.')[-1]} as derivation\n"
             "from symfloat.report.notebook_view import NotebookView\n\n"
             "view = NotebookView(derivation)   # what the engine found on this derivation\n"
             "assert not view.failures, view.failures\n"

@@ -18,14 +18,12 @@ import ast
 import math
 import re
 from functools import cache
-from pathlib import Path
 
 import numpy as np
 
-from .. import derivations
 from ..model.derivation import Printed
 from ..model.prediction import Scene
-from ..registry import load, module_names
+from ..registry import load, module_names, module_path
 from .bodies import centred_polygon, polyhedron
 from .local import local
 from .solve import Solution, body_scale
@@ -42,7 +40,7 @@ _PREDICTS = re.compile(r"\.predicts\(\s*(\([^()]*\))")
 @cache
 def _declared_bodies(module: str) -> tuple[str, ...]:
     """The literal bodies of ``*.predicts((...), ...)`` in a derivation module's source."""
-    text = Path(derivations.__path__[0], module + ".py").read_text(encoding="utf-8")
+    text = module_path(module).read_text(encoding="utf-8")
     found = _PREDICTS.search(text)
     if found is None:
         return ()

@@ -1,0 +1,48 @@
+"""docs/tutorial.md, followed as a newcomer would: a further library of texts (docs/tutorial/) read
+through SYMFLOAT_LIBRARY, its one deliberate misprint found, and a wrong correction refused."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+TUTORIAL = Path(__file__).resolve().parents[1] / "docs" / "tutorial"
+
+
+def _symfloat(library, cache, *argv):
+    env = {**os.environ, "SYMFLOAT_LIBRARY": str(library), "SYMFLOAT_CACHE": str(cache), "SYMFLOAT_QUIET": "1",
+           "SYMFLOAT_SLOWDOWN": "1e9"}     # the committed certificates alone decide, as in every test
+    return subprocess.run([sys.executable, "-m", "symfloat", *argv], env=env, capture_output=True, text=True,
+                          check=False)
+
+
+def test_the_tutorial_finds_its_misprint(tmp_path):
+    out = _symfloat(TUTORIAL, tmp_path, "verify", "cap", "--format", "json")
+    assert out.returncode == 0, out.stderr
+    verdicts = {f["id"]: f["verdict"] for f in json.loads(out.stdout)["formulas"]}
+    # docs/tutorial/sources/cap.txt: the centroid's denominator 4 (3r + h) is the deliberate misprint
+    assert verdicts == {"cap-centroid/volume": "verified", "cap-centroid/moment": "verified",
+                        "cap-centroid/centroid": "erratum", "cap-centroid/hemisphere": "verified"}
+    errata = _symfloat(TUTORIAL, tmp_path, "errata", "cap")
+    assert errata.returncode == 0 and "x_s = 3 (2r - h)^2 / (4 (3r - h))" in errata.stdout
+
+
+def test_a_wrong_correction_is_refused(tmp_path):
+    library = tmp_path / "library"
+    shutil.copytree(TUTORIAL, library)
+    module = library / "derivations" / "cap_centroid.py"
+    text = module.read_text(encoding="utf-8")
+    wrong = text.replace("corrected_reading=(X, 3 * (2 * r - h) ** 2 / (4 * (3 * r - h)))",
+                         "corrected_reading=(X, 3 * (2 * r - h) ** 2 / (4 * (3 * r + h)))")
+    assert wrong != text
+    module.write_text(wrong, encoding="utf-8")
+    out = _symfloat(library, tmp_path / "cache", "verify", "cap")
+    assert out.returncode == 1
+    assert "cap-centroid" in out.stdout + out.stderr
+
+
+def test_a_library_folder_that_is_not_there_is_one_line(tmp_path):
+    out = _symfloat(tmp_path / "missing", tmp_path, "verify", "cap")
+    assert out.returncode == 2
+    assert out.stderr == f"symfloat: SYMFLOAT_LIBRARY: {tmp_path / 'missing'} is not a folder\n"
