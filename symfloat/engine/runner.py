@@ -176,7 +176,10 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
         pool = ProcessPoolExecutor(min(workers, len(pending)), mp_context=context,
                                    initializer=_end_with_parent, initargs=(os.getpid(),))
         try:
-            futures = {pool.submit(_check_json, did, keys[did], search_proofs): did for did in pending}
+            # the largest modules first (a proxy for their cost), so that no worker is left with a long
+            # check at the end while the other idles
+            largest_first = sorted(pending, key=lambda did: -module_path(did).stat().st_size)
+            futures = {pool.submit(_check_json, did, keys[did], search_proofs): did for did in largest_first}
             for future in as_completed(futures):
                 did = futures[future]
                 finish(did, DerivationReport.from_json(future.result()))
@@ -187,7 +190,8 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
             raise
         pool.shutdown()
     else:
-        for did, lock in _shared(cache, pending) if share else ((did, None) for did in pending):
+        shared = _shared(cache, sorted(pending, key=lambda did: -module_path(did).stat().st_size)) if share else None
+        for did, lock in shared or ((did, None) for did in pending):
             report = _cached_report(cache, did, keys[did]) if lock is not None else None
             if report is None:
                 progress.start(done + 1, len(ids), did)
