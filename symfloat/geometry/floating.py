@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import itertools
 import math
 from dataclasses import dataclass
 from fractions import Fraction
@@ -99,7 +100,7 @@ class Polyhedron:
     @property
     def vertices(self):
         """The distinct vertices (each face ring lists its own copies)."""
-        return list(dict.fromkeys(p for ring in self.faces for p in ring))
+        return list(dict.fromkeys(itertools.chain.from_iterable(self.faces)))
 
 
 def right_prism(polygon, length, dps=None):
@@ -179,19 +180,26 @@ def volume_centroid(poly):
     zero = _num(0, poly.dps)
     if not verts:
         return zero, None
-    c = tuple(sum(v[k] for v in verts) / len(verts) for k in range(3))
-    volume, moment = zero, [zero, zero, zero]
-    for ring in poly.faces:
-        a = _sub(ring[0], c)
+    s0 = s1 = s2 = 0                # the vertex mean, summed left to right
+    for v in verts:
+        s0 += v[0]
+        s1 += v[1]
+        s2 += v[2]
+    c0, c1, c2 = s0 / len(verts), s1 / len(verts), s2 / len(verts)
+    volume, m0, m1, m2 = zero, zero, zero, zero
+    for ring in poly.faces:     # _sub, _cross and _dot inlined (the same operations in the same order)
+        a0, a1, a2 = ring[0][0] - c0, ring[0][1] - c1, ring[0][2] - c2
         for b, d in zip(ring[1:], ring[2:]):
-            b, d = _sub(b, c), _sub(d, c)
-            v = _dot(a, _cross(b, d)) / 6
+            b0, b1, b2 = b[0] - c0, b[1] - c1, b[2] - c2
+            d0, d1, d2 = d[0] - c0, d[1] - c1, d[2] - c2
+            v = (a0 * (b1 * d2 - b2 * d1) + a1 * (b2 * d0 - b0 * d2) + a2 * (b0 * d1 - b1 * d0)) / 6
             volume += v
-            for k in range(3):
-                moment[k] += v * (a[k] + b[k] + d[k])
+            m0 += v * (a0 + b0 + d0)
+            m1 += v * (a1 + b1 + d1)
+            m2 += v * (a2 + b2 + d2)
     if volume == 0:
         return volume, None
-    return volume, tuple(c[k] + moment[k] / (4 * volume) for k in range(3))
+    return volume, (c0 + m0 / (4 * volume), c1 + m1 / (4 * volume), c2 + m2 / (4 * volume))
 
 
 def _unit(u, dps):
@@ -236,7 +244,8 @@ def _clip(poly, u, t):
     for ring in poly.faces:
         out = []
         n = len(ring)
-        heights = [_dot(u, p) for p in ring]
+        u0, u1, u2 = u
+        heights = [u0 * p[0] + u1 * p[1] + u2 * p[2] for p in ring]      # _dot(u, p), inlined
         if all(h == t for h in heights) and _dot(_newell(ring), u) > 0:
             on_plane.extend(ring)       # a top face in the plane: the cap replaces it
             continue
@@ -251,7 +260,7 @@ def _clip(poly, u, t):
                 # faces sharing the edge compute the same point bit for bit
                 a, b, ha, hb = (p, q, hp, hq) if hp <= t else (q, p, hq, hp)
                 r = (t - ha) / (hb - ha)
-                x = tuple(a[k] + r * (b[k] - a[k]) for k in range(3))
+                x = (a[0] + r * (b[0] - a[0]), a[1] + r * (b[1] - a[1]), a[2] + r * (b[2] - a[2]))
                 out.append(x)
                 on_plane.append(x)
         if len(out) >= 3:
@@ -262,11 +271,12 @@ def _clip(poly, u, t):
 def _cap(on_plane, u, e1, e2, t):
     """The waterplane polygon, counter-clockwise seen from above, as 3-D points
     and as 2-D coordinates ``((p - t u) . e1, (p - t u) . e2)``."""
-    o = tuple(t * x for x in u)
+    o0, o1, o2 = (t * x for x in u)
+    (f0, f1, f2), (g0, g1, g2) = e1, e2
     coords = {}
-    for p in on_plane:
-        d = _sub(p, o)
-        coords.setdefault((_dot(d, e1), _dot(d, e2)), p)
+    for p in on_plane:          # _sub and _dot inlined
+        d0, d1, d2 = p[0] - o0, p[1] - o1, p[2] - o2
+        coords.setdefault((d0 * f0 + d1 * f1 + d2 * f2, d0 * g0 + d1 * g1 + d2 * g2), p)
     ring2 = hull_2d(list(coords))
     return [coords[q] for q in ring2], ring2
 
@@ -384,9 +394,9 @@ def submerged(poly, u, t):
     return Submerged(volume, centroid, wp)
 
 
-def _volume_and_area(poly, u, t):
+def _volume_and_area(poly, u, t, basis):
     faces, on_plane = _clip(poly, u, t)
-    e1, e2 = waterplane_basis(u, poly.dps)
+    e1, e2 = basis
     ring, ring2 = _cap(on_plane, u, e1, e2, t)
     area = _polygon_moments(ring2, _num(0, poly.dps))[0]
     if len(ring) >= 3:
@@ -420,8 +430,9 @@ def draught(poly, u, s, tol=None):
         tol = (hi - lo) * (_num("1e-13", dps) if dps is None else mpmath.mpf(10) ** (3 - dps))
     tol = _num(tol, dps)
     t = lo + s * (hi - lo)
+    basis = waterplane_basis(u, dps)                  # the same for every offset t
     for _ in range(400):
-        volume, area = _volume_and_area(poly, u, t)
+        volume, area = _volume_and_area(poly, u, t, basis)
         f = volume - target
         if f < 0:
             lo = t
@@ -434,9 +445,9 @@ def draught(poly, u, s, tol=None):
             # Newton has converged: certify a bracket of width tol around it
             tn = t - step
             a, b = max(lo, tn - tol / 2), min(hi, tn + tol / 2)
-            if _volume_and_area(poly, u, a)[0] <= target:
+            if _volume_and_area(poly, u, a, basis)[0] <= target:
                 lo = a
-            if _volume_and_area(poly, u, b)[0] >= target:
+            if _volume_and_area(poly, u, b, basis)[0] >= target:
                 hi = b
             if hi - lo <= tol:
                 t = tn if lo <= tn <= hi else (lo + hi) / 2

@@ -30,12 +30,15 @@ def verification_record(reports: list[DerivationReport]) -> dict:
     formulas = [_formula_entry(d, f) for d in reports for f in d.formulas]
     steps = Counter(s.status for d in reports for s in d.steps)
     verdicts = Counter(f["verdict"] for f in formulas)
+    numeric_content = [f for d in reports for f in d.formulas if f.verdict in ("verified", "erratum")]
     return {
         "formulas": formulas,
         "summary": {
             "formulas": len(formulas),
             **{v: verdicts.get(v, 0) for v in VERDICTS},
             "evidence": dict(sorted(Counter(f["evidence"] or "none" for f in formulas).items())),
+            "cross_checked": {"formulas": sum(bool(f.numeric or f.corrected_numeric) for f in numeric_content),
+                              "with_numeric_content": len(numeric_content)},
             "steps": dict(sorted(steps.items())),
             "derivations": [d.id for d in reports],
             "failures": [msg for d in reports for msg in d.failures],
@@ -71,6 +74,10 @@ def verification_table(reports: list[DerivationReport]) -> str:
     lines.append(f"{s['formulas']} printed formulas: {s['verified']} verified, {s['erratum']} errata, "
                  f"{s['unverifiable']} unverifiable, {s['trivial']} trivial; steps {s['steps']}; checking time {s['seconds']:.1f} s"
                  + (f" ({cached} of {len(s['derivations'])} derivations read from the cache)" if cached else ""))
+    x = s["cross_checked"]
+    if x["with_numeric_content"]:
+        lines.append(f"numeric cross-checks: {x['formulas']} of {x['with_numeric_content']} verified formulas and "
+                     f"errata have a witness ({x['formulas'] / x['with_numeric_content']:.0%})")
     for msg in s["failures"]:
         lines.append(f"FAILURE: {msg}")
     return "\n".join(lines) + "\n"
