@@ -208,7 +208,7 @@ def _notebooks(args) -> int:
     from .report.notebooks import write_notebooks  # nbformat and nbclient: only when notebooks are written
 
     written = write_notebooks(ids, folder, None if _quiet(args) else
-                              (lambda d: print(f"executing notebook {d}", file=sys.stderr, flush=True)))
+                              (lambda d: print(f"executed notebook {d}", file=sys.stderr, flush=True)))
     _say(args, f"{len(written)} of {len(ids)} notebooks changed in {folder}")
     return _failed(reports)
 
@@ -227,7 +227,7 @@ def _run(args) -> int:
     from .report.notebooks import write_notebooks
 
     written = write_notebooks([r.id for r in reports], notebooks, None if quiet else
-                              (lambda d: print(f"executing notebook {d}", file=sys.stderr, flush=True)))
+                              (lambda d: print(f"executed notebook {d}", file=sys.stderr, flush=True)))
     documents = ["verification.json", "errata.json", "errata.md"]
     checked = {r.id for r in reports}
     for did in providing("report"):             # documents the derivations add (e.g. Scheeffer IX's grid)

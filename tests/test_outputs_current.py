@@ -80,3 +80,16 @@ def test_notebooks_execute_to_their_committed_outputs(all_reports, tmp_path, mon
     for did in ids:
         assert _cells(ROOT / "notebooks" / f"{did}.ipynb") == _cells(tmp_path / f"{did}.ipynb"), \
             f"notebooks/{did}.ipynb is stale"
+
+
+def test_notebooks_executed_side_by_side_are_the_committed_ones(graefe_reports, tmp_path, monkeypatch, cache_dir):
+    # `make run` executes stale notebooks in parallel, one kernel per notebook: the outputs must not depend
+    # on it (two small notebooks of Graefe, executed at once, against their committed cells and outputs)
+    monkeypatch.setenv("SYMFLOAT_CACHE", str(cache_dir))
+    monkeypatch.setenv("SYMFLOAT_WORKERS", "2")
+    monkeypatch.chdir(ROOT)
+    ids = ["graefe-s1-prismatoid-volume", "graefe-s4-ship-centroid"]
+    written = write_notebooks(ids, tmp_path, force=True)
+    assert sorted(p.name for p in written) == sorted(f"{did}.ipynb" for did in ids)
+    for did in ids:
+        assert _cells(ROOT / "notebooks" / f"{did}.ipynb") == _cells(tmp_path / f"{did}.ipynb")

@@ -17,6 +17,7 @@ import sys
 import threading
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
+from contextlib import contextmanager
 
 from ..registry import load, module_path, requires, select
 from ..report.files import write_if_changed
@@ -24,7 +25,7 @@ from .cache import ReportCache, derivation_key
 from .check import DerivationReport, check_derivation
 from .proofs import ProofBook
 
-__all__ = ["verify", "derivation_keys", "Progress", "default_workers"]
+__all__ = ["verify", "derivation_keys", "Progress", "default_workers", "worker_pool"]
 
 
 class Progress:
@@ -83,6 +84,20 @@ def _kill(pool: ProcessPoolExecutor) -> None:
         for process in list((getattr(pool, "_processes", None) or {}).values()):
             process.kill()
     pool.shutdown(wait=False, cancel_futures=True)
+
+
+@contextmanager
+def worker_pool(workers: int):
+    """A pool of *workers* forked processes that end with this one; on any exception, Ctrl-C
+    included, they are killed at once (finished results stay with the caller)."""
+    pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork"),
+                               initializer=_end_with_parent, initargs=(os.getpid(),))
+    try:
+        yield pool
+    except BaseException:
+        _kill(pool)
+        raise
+    pool.shutdown()
 
 
 def _cached_report(cache: ReportCache, did: str, key: str) -> DerivationReport | None:
@@ -172,10 +187,7 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
             progress.start(done, len(ids), did)
             progress.done(reports[did])
     if workers > 1 and len(pending) > 1:
-        context = multiprocessing.get_context("fork")
-        pool = ProcessPoolExecutor(min(workers, len(pending)), mp_context=context,
-                                   initializer=_end_with_parent, initargs=(os.getpid(),))
-        try:
+        with worker_pool(min(workers, len(pending))) as pool:
             # the largest modules first (a proxy for their cost), so that no worker is left with a long
             # check at the end while the other idles
             largest_first = sorted(pending, key=lambda did: -module_path(did).stat().st_size)
@@ -185,10 +197,6 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
                 finish(did, DerivationReport.from_json(future.result()))
                 progress.start(done, len(ids), did)
                 progress.done(reports[did])
-        except BaseException:
-            _kill(pool)
-            raise
-        pool.shutdown()
     else:
         shared = _shared(cache, sorted(pending, key=lambda did: -module_path(did).stat().st_size)) if share else None
         for did, lock in shared or ((did, None) for did in pending):

@@ -13,6 +13,7 @@ from __future__ import annotations
 import hashlib
 import inspect
 import os
+from concurrent.futures import as_completed
 import re
 from pathlib import Path
 
@@ -113,24 +114,36 @@ def write_notebooks(ids, folder: str | os.PathLike = "notebooks", progress=None,
 
     A notebook whose recorded content stamp (its metadata ``symfloat.stamp``) equals the present
     one is current and is neither executed nor written, unless *force*."""
-    from ..engine.runner import derivation_keys
+    from ..engine.runner import default_workers, derivation_keys, worker_pool
 
     folder = Path(folder)
     os.environ.setdefault("SYMFLOAT_CACHE", str(Path(".symfloat-cache").resolve()))
     keys = derivation_keys(ids)
-    written = []
-    for did in ids:
-        path = folder / f"{did}.ipynb"
-        stamp = notebook_stamp(did, keys)
-        if not force and recorded_stamp(path) == stamp:
-            continue
-        if progress:
-            progress(did)
-        nb = execute_notebook(build_notebook(did), Path.cwd())
-        nb.metadata["symfloat"] = {"stamp": stamp}
-        if write_if_changed(path, nbformat.writes(nb) + "\n"):
-            written.append(path)
-    return written
+    stale = [(did, notebook_stamp(did, keys)) for did in ids]
+    stale = [(did, stamp) for did, stamp in stale if force or recorded_stamp(folder / f"{did}.ipynb") != stamp]
+    texts = {}
+    if default_workers() > 1 and len(stale) > 1:          # one kernel per notebook, as many at once as cores
+        with worker_pool(min(default_workers(), len(stale))) as pool:
+            futures = {pool.submit(_executed_text, did, stamp): did for did, stamp in stale}
+            for future in as_completed(futures):
+                did = futures[future]
+                texts[did] = future.result()
+                if progress:
+                    progress(did)
+    else:
+        for did, stamp in stale:
+            texts[did] = _executed_text(did, stamp)
+            if progress:
+                progress(did)
+    return [folder / f"{did}.ipynb" for did, _ in stale
+            if write_if_changed(folder / f"{did}.ipynb", texts[did])]
+
+
+def _executed_text(derivation_id: str, stamp: str) -> str:
+    """The notebook of *derivation_id*, executed and stamped, as the text written to disk."""
+    nb = execute_notebook(build_notebook(derivation_id), Path.cwd())
+    nb.metadata["symfloat"] = {"stamp": stamp}
+    return nbformat.writes(nb) + "\n"
 
 
 def recorded_stamp(path: Path) -> str | None:
