@@ -140,8 +140,8 @@ def test_cli_json_and_exit_status(capsys, monkeypatch):
     assert {e["status"] for e in entries} <= {"quoted", "waived", "unaccounted"}
 
 
-def test_cli_table_marks_pending_spans(capsys, monkeypatch):
-    monkeypatch.chdir(ROOT)
+def test_cli_table_marks_pending_spans(capsys, monkeypatch, tmp_path):
+    monkeypatch.chdir(tmp_path)      # the baseline is the checkout's, wherever the command runs
     main(["coverage", "hasab"])
     out = capsys.readouterr().out
     assert out.startswith("hasab: 32 spans")

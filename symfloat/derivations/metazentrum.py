@@ -127,16 +127,11 @@ dv.quote("e-sign", L4, "was größer als eins im Falle einer stabilen Situation 
                          corrected_reading=(sp.sign(z_M - z_G), sp.sign(e))))
 dv.quote("vasa", L4, "Eine Lösung wäre gewesen, es tiefer zu versenken oder einen höheren $d/c$-Wert zu erreichen, "
          "um die Zone der Instabilität zu vermeiden.",
-         reading=(sp.sign(sp.Derivative(e, d)), 1),
-         erratum=Erratum("claim", "medium", r"deeper immersion raises e only when d/(2c) > 1/2: "
-                         r"$\partial e/\partial d = (d - c)/(2 c^2)$",
-                         "Within the lesson's model (homogeneous box, centre of mass at its centre) "
-                         "e = b^2/(6c^2) - delta (1 - delta), delta = d/(2c), is smallest at delta = 1/2: a hull "
-                         "floating less than half immersed becomes LESS stable when it is sunk deeper (e.g. b = c/2, "
-                         "d = c/2: e = 1/24 - 3/16 < 0, and at d = c e = 1/24 - 1/4, lower still). Sinking deeper "
-                         "helps only beyond half immersion, or in a real ship by ballast that lowers G, which the "
-                         "model does not contain.",
-                         corrected_reading=(sp.sign(sp.Derivative(e, d)), sp.sign(d - c))))
+         reading=(sp.sign(sp.Limit(e, d, 2 * c, "-")), 1),
+         note="read as the lesson's model gives it: sunk towards full immersion (d -> 2c, d/c -> 2) e tends to "
+              "b^2/(6c^2) > 0, so every hull leaves the zone of instability when sunk deep enough. Not read as "
+              "'e grows with d': below half immersion (d < c) e falls with d (de/dd = (d - c)/(2c^2)), and the "
+              "sentence does not claim otherwise")
 
 # ---- witnesses -------------------------------------------------------------------------------
 

@@ -20,16 +20,19 @@ import sys
 from pathlib import Path
 
 from ..model.source import SOURCES
+from ..project import in_project
 from .files import write_if_changed
 from .ledger import LedgerError, baseline_keys, ledger, ledger_json, ledger_markdown, ledger_table
 from .references import references_markdown
 from .repeats import candidates_text, link_problems
 
-__all__ = ["run", "COVERAGE_BASELINE", "READINGS_BASELINE", "load_baseline", "baseline_text"]
+__all__ = ["run", "docs_path", "load_baseline", "baseline_text"]
 
-DOCS = Path("docs")
-COVERAGE_BASELINE = DOCS / "coverage-baseline.json"
-READINGS_BASELINE = DOCS / "readings-baseline.json"
+
+def docs_path(name: str) -> Path:
+    """``docs/<name>`` of the project checkout, wherever the command is run from
+    (:func:`symfloat.project.in_project`)."""
+    return in_project(f"docs/{name}")
 
 
 def load_baseline(path: Path) -> dict:
@@ -60,7 +63,7 @@ def run(args) -> int:
     except LedgerError as exc:
         print(f"symfloat: coverage ledger: {exc}", file=sys.stderr)
         return 1
-    pending = baseline_keys(load_baseline(COVERAGE_BASELINE))
+    pending = baseline_keys(load_baseline(docs_path("coverage-baseline.json")))
     failed = any(e.status == "unaccounted" for e in entries)
     rows = []
     if args.readings:
@@ -76,22 +79,22 @@ def run(args) -> int:
         print(ledger_table(sources, pending) + (readings_table(rows) if args.readings else ""), end="")
     if args.readings:
         if args.write:
-            write_if_changed(DOCS / "readings.md", readings_markdown(reading_rows(tuple(SOURCES))))
+            write_if_changed(docs_path("readings.md"), readings_markdown(reading_rows(tuple(SOURCES))))
         if args.update_baseline:
-            write_if_changed(READINGS_BASELINE, readings_baseline_text(reading_rows(tuple(SOURCES))))
+            write_if_changed(docs_path("readings-baseline.json"), readings_baseline_text(reading_rows(tuple(SOURCES))))
     problems = link_problems()
     for msg in problems:
         print(f"symfloat: repeated erratum: {msg}", file=sys.stderr)
     failed |= bool(problems)
     if args.write:
-        write_if_changed(DOCS / "coverage.md", ledger_markdown())
-        write_if_changed(DOCS / "repeats.json", candidates_text())
-        write_if_changed(DOCS / "references.md", references_markdown())
+        write_if_changed(docs_path("coverage.md"), ledger_markdown())
+        write_if_changed(docs_path("repeats.json"), candidates_text())
+        write_if_changed(docs_path("references.md"), references_markdown())
     if args.update_baseline:
         new = baseline_text()
-        before = baseline_keys(load_baseline(COVERAGE_BASELINE))
+        before = baseline_keys(load_baseline(docs_path("coverage-baseline.json")))
         after = baseline_keys(json.loads(new))
-        write_if_changed(COVERAGE_BASELINE, new)
+        write_if_changed(docs_path("coverage-baseline.json"), new)
         print(f"coverage baseline: {len(before - after)} entries accounted for and removed, "
               f"{len(after - before)} added", file=sys.stderr)
     return 1 if failed else 0
