@@ -40,7 +40,7 @@ from .project import GOLDEN, in_project, library_folders, project_root
 from .registry import load, providing, select
 from .report.errata import errata_json, errata_markdown
 from .report.files import write_atomic, write_if_changed, writable_target
-from .report.record import record_json, verification_table
+from .report.record import record_json, verification_table, write_record
 from .report.stamp import stamp_of
 
 EXIT_STATUS = ("Exit status: 0 success; 1 a check failed (verdict, index sum, duality, coverage); "
@@ -220,7 +220,7 @@ def _run(args) -> int:
     cache = _cache(args)
     _kernels_share(cache)
     reports = _reports(args, cache=cache)
-    write_if_changed(docs / "verification.json", record_json(reports))
+    write_record(docs / "verification.json", reports)
     write_if_changed(docs / "errata.json", errata_json(reports))
     write_if_changed(docs / "errata.md", errata_markdown(reports))
     quiet = _quiet(args)

@@ -5,6 +5,7 @@ appears or disappears, or a notebook that no longer matches fails here until
 the outputs are regenerated (``make run``) and committed.
 """
 import json
+import math
 from pathlib import Path
 
 import nbformat
@@ -14,7 +15,7 @@ from symfloat.report.errata import errata_json, errata_markdown
 from symfloat.report.files import without_timings
 from symfloat.engine.runner import derivation_keys
 from symfloat.report.notebooks import build_notebook, notebook_stamp, recorded_stamp, write_notebooks
-from symfloat.report.record import record_differences, verification_record
+from symfloat.report.record import record_differences, record_json, verification_record, write_record
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -34,6 +35,21 @@ def test_verification_record_is_current(all_reports):
     committed = json.loads((ROOT / "docs" / "verification.json").read_text(encoding="utf-8"))
     fresh = json.loads(json.dumps(verification_record(all_reports)))
     assert record_differences(committed, fresh) == [], "docs/verification.json is stale: run `make run` and commit"
+
+
+def test_the_record_is_kept_when_only_float64_last_bits_and_timings_differ(tmp_path, all_reports):
+    # another machine or numpy release sums in another order: the committed file must stay as it is
+    path = tmp_path / "verification.json"
+    record = json.loads(record_json(all_reports))
+    f = next(f for f in record["formulas"] if any(n["method"] == "float64" and n["abs_error"] for n in f["numeric"]))
+    n = next(n for n in f["numeric"] if n["method"] == "float64" and n["abs_error"])
+    n["abs_error"], n["seconds"] = math.nextafter(n["abs_error"], math.inf), n["seconds"] + 1
+    text = json.dumps(record, indent=1, ensure_ascii=False) + "\n"
+    path.write_text(text, encoding="utf-8")
+    assert not write_record(path, all_reports) and path.read_text(encoding="utf-8") == text
+    f["evidence"] = "sampling"                                # a real change is written
+    path.write_text(json.dumps(record, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
+    assert write_record(path, all_reports) and path.read_text(encoding="utf-8") == record_json(all_reports)
 
 
 def test_a_changed_verdict_or_witness_is_a_difference():

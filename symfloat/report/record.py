@@ -3,10 +3,13 @@ from __future__ import annotations
 
 import json
 from collections import Counter
+from pathlib import Path
 
 from ..engine.check import DerivationReport
+from .files import write_if_changed
 
-__all__ = ["verification_record", "verification_table", "record_differences", "VERDICTS"]
+__all__ = ["verification_record", "verification_table", "record_differences", "record_json", "write_record",
+           "VERDICTS"]
 
 VERDICTS = ("verified", "erratum", "unverifiable", "trivial")
 
@@ -51,6 +54,19 @@ def record_json(reports) -> str:
     return json.dumps(verification_record(reports), indent=1, ensure_ascii=False) + "\n"
 
 
+def write_record(path, reports) -> bool:
+    """Write the record to *path* unless the file there differs from it only in what may differ between
+    machines (:func:`record_differences`: timings, float64 figures within their reproducibility), so that
+    re-running unchanged derivations on another machine or numpy release changes no file."""
+    text = record_json(reports)
+    try:
+        if not record_differences(json.loads(Path(path).read_text(encoding="utf-8")), json.loads(text)):
+            return False
+    except (OSError, ValueError, KeyError):
+        pass
+    return write_if_changed(path, text)
+
+
 def _best(numeric):
     if not numeric:
         return "—"
@@ -84,8 +100,10 @@ def verification_table(reports: list[DerivationReport]) -> str:
 
 
 # A float64 witness's error figure is itself computed in float64: its last bits depend on the
-# processor's vector units (summation order), not on the mathematics.  Two figures are the same
-# when they differ by less than 64 units in the last place of the measured quantity.
+# processor's vector units and the numpy release (summation order), not on the mathematics.  Two
+# figures are the same when they differ by less than 64 units in the last place of the larger of
+# the numbers they are made from: the measured quantity and, where the print disagrees with it,
+# the disagreement itself (an erratum's witness measures an error far larger than the quantity).
 FLOAT64_REPRODUCIBLE = 64 * 2.0 ** -52
 
 
@@ -94,8 +112,8 @@ def _same_numeric(a: dict, b: dict) -> bool:
     if "float64" not in str(a.get("method", "")) or a.keys() != b.keys():
         return a == b
     scale = abs(a["abs_error"] / a["rel_error"]) if a["rel_error"] else 1.0     # the committed quantity's size
-    close = (abs(a["abs_error"] - b["abs_error"]) <= FLOAT64_REPRODUCIBLE * scale
-             and abs(a["rel_error"] - b["rel_error"]) <= FLOAT64_REPRODUCIBLE)
+    close = (abs(a["abs_error"] - b["abs_error"]) <= FLOAT64_REPRODUCIBLE * max(scale, abs(a["abs_error"]))
+             and abs(a["rel_error"] - b["rel_error"]) <= FLOAT64_REPRODUCIBLE * max(1.0, abs(a["rel_error"])))
     rest = {k: v for k, v in a.items() if k not in ("abs_error", "rel_error")}
     return close and rest == {k: v for k, v in b.items() if k not in ("abs_error", "rel_error")}
 
@@ -110,6 +128,15 @@ def record_differences(committed: dict, fresh: dict) -> list[str]:
     []
     >>> record_differences(rec(e), rec({**e, "abs_error": 2e-13}))
     ['f: witness Gauss-Legendre n=8, float64 differs']
+
+    An erratum's witness measures the print's error, here 23344 times the quantity (euler §234,
+    K-table 3/2); its float64 figures agree to their own last places, not the quantity's:
+
+    >>> k = {"method": "float64", "abs_error": 0.5162813701345467, "rel_error": 23343.999999999913}
+    >>> record_differences(rec(k), rec({**k, "abs_error": 0.5162813701345466, "rel_error": 23343.999999999905}))
+    []
+    >>> record_differences(rec(k), rec({**k, "rel_error": 23343.99999}))
+    ['f: witness float64 differs']
     """
     out = []
     old = {f["id"]: f for f in committed["formulas"]}
