@@ -24,6 +24,7 @@ import numpy as np
 import sympy as sp
 
 from symfloat import Derivation, Erratum, Prediction
+from symfloat.engine.floating_witness import QUANTITIES, Body, FloatingWitness
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.geometry.floating import box, clip_below, floating_state, volume_centroid
 from symfloat.model.source import get_source
@@ -296,6 +297,14 @@ W("sides-mean", "mean immersed side length, clipped plane", ("x+y",),
   lambda case, dps: (lambda e: (e["x"] + e["y"]) / 2)(energies(case, dps)))
 W("sides-difference", "difference of the immersed side lengths, clipped plane", ("x-y",),
   lambda case, dps: (lambda e: e["x"] - e["y"])(energies(case, dps)))
+LYING = Body.box(1, 1, l)                  # the prism lying, the y axis of the box up (eta = y + 1/2)
+DENSITIES = tuple(Case({rho: r, l: 4}, label=f"rho = {r}, l = 4")          # none at a threshold
+                  for r in (sp.Rational(1, 2), sp.Rational(1, 10), sp.Rational(17, 20)))
+for name, targets, quantity in (("draught", ("s",), "draught"), ("G-above-water", ("OF",), "G above water"),
+                                ("stability-sign", ("condition",), "stability sign"),
+                                ("stable-upright", ("ranges",), "stable")):
+    d.witness(FloatingWitness(name, f"{QUANTITIES[quantity][0]}, clipped prism lying", targets, DENSITIES,
+                              body=LYING, up=(0, 1, 0), density=rho, quantity=quantity))
 EXTRAP = (Precision(15, 1e-5), Precision(50, 1e-35))
 W("second-order-energy", "c0 + c2 alpha^2 from the clipped potential by extrapolated finite differences",
   ("E1-total",), second_order, methods=EXTRAP)

@@ -19,6 +19,7 @@ import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum, Prediction
+from symfloat.engine.floating_witness import Body, FloatingWitness
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.model.prediction import box_uprights
 from symfloat.geometry.floating import clip_below, floating_state, right_prism, volume_centroid
@@ -186,6 +187,9 @@ CASES = (Case({a: 4, b: 1, c: 1, d: 1, rho_w: 1}, label="a=4, b=1, c=1, d=1 (hal
          Case({a: 3, b: 2, c: sp.Rational(3, 2), d: sp.Rational(5, 2), rho_w: 1},
               label="a=3, b=2, c=3/2, d=5/2 (stable, deep)"))
 LIMIT = (Precision(15, 1e-7), Precision(50, 1e-35))
+dv.witness(FloatingWitness("stability-sign", "sign of the clipped upright box's metacentric height I_min/V - (G - B)",
+                           ("criterion", "e-sign"), CASES, body=Body.box(2 * a, 2 * b, 2 * c), up=(0, 0, 1),
+                           density=d / (2 * c), quantity="stability sign"))
 
 
 def W(name, description, targets, f, methods=None):

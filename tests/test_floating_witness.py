@@ -1,0 +1,84 @@
+"""The floating-body witness of the witness library against closed forms it must not use.
+
+References: a box a x b x c floating upright (c vertical) at density s has draught s c (Archimedes), G at
+c/2 above the bottom, B at s c / 2, waterplane a x b with I = a b^3 / 12 and b a^3 / 12 (the rectangle's
+second moments), hence the metacentric height min(a b^3, b a^3) / (12 a b s c) - c (1 - s) / 2.
+"""
+from fractions import Fraction
+
+import pytest
+import sympy as sp
+
+from symfloat.engine.floating_witness import QUANTITIES, Body, FloatingWitness
+from symfloat.engine.witness import Case
+
+A, B, C, S = sp.symbols("a b c s", positive=True)
+CASE = Case({A: 3, B: 2, C: 1, S: sp.Rational(2, 5)}, label="box 3 x 2 x 1 at s = 2/5")
+EXACT = {                                               # closed forms at the case, from the module docstring
+    "draught": sp.Rational(2, 5),
+    "immersed volume": sp.Rational(12, 5),
+    "G above water": sp.Rational(1, 2) - sp.Rational(2, 5),
+    "B below water": sp.Rational(1, 5),
+    "G above B": sp.Rational(1, 2) - sp.Rational(1, 5),
+    "waterplane area": sp.Integer(6),
+    "I min": sp.Rational(3 * 8, 12),
+    "I max": sp.Rational(2 * 27, 12),
+    "metacentric radius": sp.Rational(2, 1) / sp.Rational(12, 5),
+    "metacentric height": sp.Rational(5, 6) - sp.Rational(3, 10),
+    "stability sign": sp.Integer(1),
+    "stable": sp.Integer(1),
+}
+
+
+def witness(quantity, case=CASE, up=(0, 0, 1)):
+    return FloatingWitness(quantity, quantity, ("f",), (case,), body=Body.box(A, B, C), up=up, density=S,
+                           quantity=quantity)
+
+
+def test_every_quantity_is_tested():
+    assert set(EXACT) == set(QUANTITIES)
+
+
+@pytest.mark.parametrize("quantity", sorted(EXACT))
+def test_quantities_of_a_floating_box_agree_with_their_closed_forms(quantity):
+    w = witness(quantity)
+    for method in w.methods:
+        value = w.measure(CASE, method)
+        assert abs(float(value) - float(EXACT[quantity])) <= 1e-12, (quantity, method.name)
+
+
+def test_the_witness_confirms_a_formula_and_refutes_its_mutation():
+    # the draught formula s c, and the same with its coefficient changed to 21/20 s c
+    d = sp.Symbol("d")
+    out = witness("draught").run({"f": (d, S * C), "f#mutated": (d, sp.Rational(21, 20) * S * C)})
+    assert out["f"].agrees and not out["f#mutated"].agrees
+    assert max(r["rel_error"] for r in out["f#mutated"].records) == pytest.approx(1 / 21, rel=1e-12)
+
+
+def test_an_unstable_box_and_a_heeled_one():
+    # a 1 x 1 x 1 cube at s = 1/2 upright: GM = 1/(12 * 1/2) - 1/4 < 0 (unstable, Scheeffer VI.C)
+    cube = Case({A: 1, B: 1, C: 1, S: sp.Rational(1, 2)})
+    assert witness("stability sign", cube).measure(cube, witness("stable").methods[1]) == -1
+    assert witness("stable", cube).measure(cube, witness("stable").methods[0]) == 0
+    # heeled by 45 degrees about x, the half-immersed cube still displaces half its volume
+    heeled = witness("immersed volume", cube, up=(0, -sp.sin(sp.pi / 4), sp.cos(sp.pi / 4)))
+    assert abs(float(heeled.measure(cube, heeled.methods[1])) - 0.5) < 1e-30
+
+
+def test_a_sign_at_a_threshold_is_refused():
+    # the square log at s = (3 - sqrt 3)/6 has metacentric height 0 (hasab, the thresholds)
+    at = Case({A: 1, B: 4, C: 1, S: (3 - sp.sqrt(3)) / 6})
+    w = FloatingWitness("sign", "sign", ("f",), (at,), body=Body.box(A, B, C), up=(1, 0, 0), density=S,
+                        quantity="stability sign")
+    with pytest.raises(ValueError, match="cannot decide the sign"):
+        w.measure(at, w.methods[1])
+
+
+def test_an_unknown_quantity_is_one_clear_error():
+    with pytest.raises(ValueError, match="unknown quantity 'volume'"):
+        witness("volume")
+
+
+def test_rational_dimensions_reach_the_geometry_exactly():
+    from symfloat.engine.floating_witness import number
+    assert number(sp.Rational(1, 3) * A, {A: 3}, 40) == Fraction(1)
