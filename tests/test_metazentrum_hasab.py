@@ -41,6 +41,11 @@ def test_metazentrum_checks_clean(meta_report):
     assert meta_report.failures == []
     assert errata(meta_report) == {
         ("e-sign", "claim", "high"),   # "größer als eins" for stability: the boundary is e = 0
+        # second pass (transcription 003, lines 280 and 839, 127, 300, 527):
+        ("buoyancy-point", "misprint", "high"),          # z_G named the point where the buoyancy acts
+        ("below-G", "misprint", "medium"),               # "über oder unter" under "Metazentrum unterhalb"
+        ("wide-hull", "claim", "high"),                  # breadth > draught does not make a hull stable
+        ("displaced-volume-claim", "claim", "high"),     # the displaced volume is at most the body's
     }
     assert all(f.verdict == "verified" for f in meta_report.formulas if not f.erratum)
 
@@ -78,6 +83,7 @@ def test_hasab_checks_clean(hasab_report):
         ("E2-water", "misprint", "medium"),        # the factor l g dropped in the last member
         ("ranges", "transcription", "medium"),     # "< rho" lost in the second range
         ("remark", "transcription", "medium"),     # radical over 9l^2 - 6 lost; the upright prism
+        ("remark-position", "transcription", "medium"),  # transcription 004 line 69: "1 hosszúságú" for l
     }
     assert all(f.verdict == "verified" for f in hasab_report.formulas if not f.erratum)
 
@@ -122,3 +128,13 @@ def test_mutated_coefficients_are_refuted(hasab, meta):
     wrong = -mod.d / 2 + mod.b ** 2 / (2 * mod.d)                                       # 3d mutated to 2d
     mutated = dataclasses.replace(d, printed=[dataclasses.replace(p, reading=(mod.z_M, wrong))], witnesses=[])
     assert any("z_M" in f and "refuted" in f for f in check_derivation(mutated).failures)
+
+
+def test_wide_hull_counterexample_is_unstable_when_clipped():
+    # metazentrum line 300: "Breite größer als Tiefgang" is not enough. The counterexample of the erratum,
+    # b = 0.9 c, d = 0.8 c (c = 1: a box 2a x 1.8 x 2 at density d/2c = 0.4), clipped at 40 digits, is
+    # unstable against heel about the long axis; with b = 1.25 c > sqrt(3/2) c it is stable.
+    with mpmath.workdps(40):
+        narrow = floating_state(box(8, Fraction(18, 10), 2, dps=40), (0, 0, 1), Fraction(2, 5))
+        wide = floating_state(box(8, Fraction(25, 10), 2, dps=40), (0, 0, 1), Fraction(2, 5))
+    assert narrow.metacentric_height < 0 < wide.metacentric_height

@@ -197,6 +197,16 @@ d.quote("remark", "Megjegyzés", DISPLAYS[15], reading=(Ru, (3 * l + 9 * l ** 2 
                         "lower range 0 < rho < (3l - sqrt(9l^2 - 6))/(6l) (about 1/(6 l^2)) is not printed.",
                         corrected_reading=(Ru, ru2)),
         note="read as the lower bound of the printed stable range")
+d.quote("remark-position", "Megjegyzés", "amikor az 1 hosszúságú élek függőlegesen állnak", reading=(Ru, R2),
+        erratum=Erratum("transcription", "medium", r"\text{amikor az } l \text{ hosszúságú élek függőlegesen állnak}",
+                        "With the edges of length 1 vertical the prism lies on a face, the position already solved, "
+                        "whose upper threshold is (3 + sqrt 3)/6; the condition the remark prints next depends on l "
+                        "and is that of the prism standing on its square face, the edges of length l vertical "
+                        "(metacentric height 1/(12 rho l) - l (1 - rho)/2). The letter l read as the digit 1, the "
+                        "fault the remark's display erratum names in its evidence, booked here at its place.",
+                        corrected_reading=(Ru, ru2)),
+        note="read as: the remark's position (edges of length 1 vertical) has the thresholds of the prism lying on a "
+             "face; its printed condition (the upper threshold Ru) is compared with the lying prism's")
 
 
 # ---- witnesses ------------------------------------------------------------------------------------
@@ -336,7 +346,7 @@ W("thresholds-lying", "zeros of the clipped metacentric height of the lying pris
   cases=(Case({}, label="lying prism 1 x 1 x 4"),), methods=(Precision(15, 1e-9), Precision(50, 1e-40)))
 RCASES = (Case({l: 2}, {"L": 2}, "upright prism, l = 2"), Case({l: 5}, {"L": 5}, "upright prism, l = 5"))
 d.witness(Computed("threshold-upright", "upper zero of the clipped metacentric height of the upright prism",
-                   ("remark",), RCASES, methods=(Precision(15, 1e-9), Precision(50, 1e-40)),
+                   ("remark", "remark-position"), RCASES, methods=(Precision(15, 1e-9), Precision(50, 1e-40)),
                    compute=lambda case, dps: threshold(0.6, 0.999, case.data["L"])(case, dps)))
 
 
