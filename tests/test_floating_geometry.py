@@ -328,3 +328,18 @@ def test_arguments_are_checked_and_precision_restored():
     dps = mpmath.mp.dps
     floating_state(box(1, 2, 3, dps=40), (0, 0, 1), 0.5)
     assert mpmath.mp.dps == dps and isinstance(Polyhedron((), 40).dps, int)
+
+
+def test_polygon_moments_keep_the_arithmetic_of_the_coordinates():
+    # the one implementation of polygon moments (geometry/floating.py). Scheeffer IV-V's rectangle
+    # (-1, -1/2) ... (1, 1/2) starts with a Python int: summing from a float zero made its moments 15-digit
+    # Floats (the digits lost when the derivation first used them); exact input must give exact output.
+    import sympy as sp
+    from symfloat.geometry.floating import polygon_moments
+    R = sp.Rational
+    A, c, J = polygon_moments([(-1, R(-1, 2)), (1, R(-1, 2)), (1, R(1, 2)), (-1, R(1, 2))])
+    assert (A, c, J) == (2, (0, 0), ((R(2, 3), 0), (0, R(1, 6))))      # 2 x 1: b h^3 / 12, h b^3 / 12
+    assert all(isinstance(v, sp.Rational) for v in (A, J[0][0], J[1][1]))
+    tri = polygon_moments([(F(0), F(0)), (F(2), F(0)), (F(0), F(1))])
+    assert tri[0] == 1 and tri[1] == (F(2, 3), F(1, 3))   # the triangle's centroid, exactly
+    assert isinstance(polygon_moments([(0.0, 0), (1, 0), (0, 1)])[0], float)

@@ -38,7 +38,7 @@ import sympy as sp
 from symfloat import Derivation, Eq, Erratum, Prediction
 from symfloat.engine.witness import Case, Computed
 from symfloat.model.prediction import box_uprights
-from symfloat.geometry.floating import floating_state, right_prism, submerged
+from symfloat.geometry.floating import floating_state, polygon_moments, right_prism, submerged
 from symfloat.model.claim import as_printed
 
 
@@ -557,30 +557,12 @@ d.quote("55", "(55)", r"$$\operatorname{tg} \varphi_1 \leq \begin{cases} \frac{b
 # ==== witnesses: the clipped prism ===========================================================================
 
 
-def _poly_moments(poly):
-    """Exact area, centroid and central second moments (int x^2, int x y, int y^2) of a polygon (Green)."""
-    A = Sx = Sy = Sxx = Syy = Sxy = 0
-    k = len(poly)
-    for i in range(k):
-        (xi, yi), (xj, yj) = poly[i], poly[(i + 1) % k]
-        cr = xi * yj - xj * yi
-        A += cr
-        Sx += (xi + xj) * cr
-        Sy += (yi + yj) * cr
-        Sxx += (xi * xi + xi * xj + xj * xj) * cr
-        Syy += (yi * yi + yi * yj + yj * yj) * cr
-        Sxy += (2 * xi * yi + xi * yj + xj * yi + 2 * xj * yj) * cr
-    A = A / 2
-    cx, cy = Sx / 6 / A, Sy / 6 / A
-    return A, (cx, cy), (Sxx / 12 - A * cx * cx, Sxy / 24 - A * cx * cy, Syy / 12 - A * cy * cy)
-
-
 R = sp.Rational
 SQ3 = sp.sqrt(3)
 _QUAD0 = [(R(0), R(0)), (R(3), R(0)), (R(5, 2), R(2)), (R(-1, 2), R(3, 2))]
-_A, _C, _ = _poly_moments(_QUAD0)
+_A, _C, _ = polygon_moments(_QUAD0)
 QUAD = [(px - _C[0], py - _C[1]) for px, py in _QUAD0]
-_, _, (QXX, QXY, QYY) = _poly_moments(QUAD)
+_, _, ((QXX, QXY), (_, QYY)) = polygon_moments(QUAD)
 Q_THETA = sp.atan(2 * QXY / (QXX - QYY)) / 2           # a principal direction of the quadrilateral
 RECT_LONG = [(R(-1, 2), -1), (R(1, 2), -1), (R(1, 2), 1), (R(-1, 2), 1)]
 RECT_SHORT = [(-1, R(-1, 2)), (1, R(-1, 2)), (1, R(1, 2)), (-1, R(1, 2))]
@@ -610,7 +592,7 @@ BODIES = {
 def _params(name, extra=None):
     """Exact parameters of a body: F_1, T_1, T_1^1, P about its axis EF, b, s, and the face reaches."""
     poly, bb, ss, alpha = BODIES[name]
-    A, _, (Ixx, Ixy, Iyy) = _poly_moments(poly)
+    A, _, ((Ixx, Ixy), (_, Iyy)) = polygon_moments(poly)
     nx, ny = sp.sin(alpha), -sp.cos(alpha)               # u = n . p
     ex, ey = sp.cos(alpha), sp.sin(alpha)                # v = e . p
     t1_, t11_ = nx * nx * Ixx + 2 * nx * ny * Ixy + ny * ny * Iyy, ex * ex * Ixx + 2 * ex * ey * Ixy + ey * ey * Iyy

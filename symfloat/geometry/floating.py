@@ -40,7 +40,7 @@ from .convex import hull_2d
 __all__ = [
     "Polyhedron", "Waterplane", "Submerged", "FloatingState", "CylinderState",
     "right_prism", "box", "regular_prism", "heel", "volume_centroid", "clip_below",
-    "waterplane_basis", "submerged", "draught", "floating_state", "cylinder_state",
+    "waterplane_basis", "submerged", "draught", "floating_state", "cylinder_state", "polygon_moments",
 ]
 
 
@@ -313,6 +313,34 @@ def _polygon_moments(ring2, zero):
     J = ((Sxx / 12 - A * cx * cx, Sxy / 24 - A * cx * cy),
          (Sxy / 24 - A * cx * cy, Syy / 12 - A * cy * cy))
     return A, (cx + mx, cy + my), J
+
+
+def _zero_like(values):
+    """The zero of the richest arithmetic among *values*: SymPy, then mpmath, then float; ints and Fractions
+    give an exact Fraction.  (Starting sums from a float zero turned exact coordinates into 15-digit numbers:
+    the digits a derivation lost when it first used these moments.)"""
+    kinds = {type(v).__module__.split(".")[0] for v in values}
+    if "sympy" in kinds:
+        import sympy
+        return sympy.Integer(0)
+    if "mpmath" in kinds:
+        return mpmath.mpf(0)
+    if float in {type(v) for v in values}:
+        return 0.0
+    return Fraction(0)
+
+
+def polygon_moments(points):
+    """Area, centroid and central second moments ``((Jxx, Jxy), (Jxy, Jyy))`` of a counter-clockwise polygon
+    ``[(x, y), ...]`` (the one implementation of polygon moments, :func:`_polygon_moments`), in the
+    arithmetic of its coordinates: exact for ints, Fractions and SymPy numbers, else float64 or mpmath.
+
+    >>> polygon_moments([(0, 0), (2, 0), (2, 1), (0, 1)])[::2]    # 2 x 1 rectangle: J = (8/12, 0; 0, 2/12)
+    (Fraction(2, 1), ((Fraction(2, 3), Fraction(0, 1)), (Fraction(0, 1), Fraction(1, 6))))
+    """
+    ring = [tuple(p) for p in points]
+    zero = _zero_like([c for p in ring for c in p])
+    return _polygon_moments([(zero + x, zero + y) for x, y in ring], zero)
 
 
 @_at_body_precision
