@@ -332,8 +332,9 @@ def test_arguments_are_checked_and_precision_restored():
 
 def test_polygon_moments_keep_the_arithmetic_of_the_coordinates():
     # the one implementation of polygon moments (geometry/floating.py). Scheeffer IV-V's rectangle
-    # (-1, -1/2) ... (1, 1/2) starts with a Python int: summing from a float zero made its moments 15-digit
-    # Floats (the digits lost when the derivation first used them); exact input must give exact output.
+    # (-1, -1/2) ... (1, 1/2) has Python int coordinates: their mean, divided by 4, was a float, and the
+    # moments came out as 15-digit Floats (the digits lost when the derivation first used them); exact input
+    # must give exact output.
     import sympy as sp
     from symfloat.geometry.floating import polygon_moments
     R = sp.Rational

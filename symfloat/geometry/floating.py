@@ -317,8 +317,9 @@ def _polygon_moments(ring2, zero):
 
 def _zero_like(values):
     """The zero of the richest arithmetic among *values*: SymPy, then mpmath, then float; ints and Fractions
-    give an exact Fraction.  (Starting sums from a float zero turned exact coordinates into 15-digit numbers:
-    the digits a derivation lost when it first used these moments.)"""
+    give an exact Fraction.  Every coordinate is lifted into it: the vertex mean of Python ints divided by
+    their count is a float (true division), and subtracting it made exact SymPy coordinates 15-digit Floats,
+    the digits Scheeffer IV-V lost when it first used these moments (its rectangles have int coordinates)."""
     kinds = {type(v).__module__.split(".")[0] for v in values}
     if "sympy" in kinds:
         import sympy
