@@ -21,7 +21,8 @@ from . import derivations
 from .errors import InputError
 from .model.derivation import Derivation
 
-__all__ = ["module_names", "module_path", "requires", "providing", "load", "select", "SelectorError"]
+__all__ = ["module_names", "module_path", "requires", "providing", "load", "select", "cross_use_problems",
+           "SelectorError"]
 
 
 class SelectorError(InputError):
@@ -110,3 +111,26 @@ def select(selector: str | None = None) -> list[str]:
     for i in picked:
         visit(i)
     return ordered
+
+
+def cross_use_problems(d: Derivation) -> list[str]:
+    """Every ``derivation-id:step`` in the ``uses`` of *d*'s steps that does not name a step of one of *d*'s
+    ancestors (its ``requires``, transitively): a dangling or unchecked dependency, reported as a failure."""
+    ancestors, todo = set(), list(d.requires)
+    while todo:
+        a = todo.pop()
+        if a not in ancestors:
+            ancestors.add(a)
+            todo.extend(requires(a))
+    problems = []
+    for s in d.steps:
+        for use in s.uses:
+            if ":" not in use:
+                continue
+            other, step = use.split(":", 1)
+            if other not in ancestors:
+                problems.append(f"step {s.name!r} uses {use!r}, but {other!r} is not among the derivations "
+                                f"{d.id} requires")
+            elif step not in {t.name for t in load(other)[0].steps}:
+                problems.append(f"step {s.name!r} uses {use!r}, which names no step of {other}")
+    return problems

@@ -75,3 +75,22 @@ def test_the_committed_certificates_are_exactly_the_ones_used(all_reports):
         assert path.exists(), f"{path} is missing: run `make run` and commit"
         assert path.read_text(encoding="utf-8") == ProofBook.text(r.certificates()), \
             f"{path} is stale: run `make run` and commit"
+
+
+def test_a_use_of_another_derivation_must_name_a_step_of_an_ancestor():
+    # hasab's step energy-is-13 uses scheeffer-i-iii:moment-13 (Scheeffer's (13)); a misspelt step or a
+    # derivation hasab does not require is a failure of the check, not a silent link
+    import dataclasses
+    from symfloat.engine.check import check_derivation
+    from symfloat.registry import cross_use_problems, load
+    d, _ = load("hasab")
+    assert cross_use_problems(d) == []
+    step = next(s for s in d.steps if s.name == "energy-is-13")
+    wrong = dataclasses.replace(d, steps=[dataclasses.replace(step, uses=("scheeffer-i-iii:moment-31",)),
+                                          dataclasses.replace(step, name="other", uses=("euler-192-219:x",))],
+                                printed=[], witnesses=[])
+    assert cross_use_problems(wrong) == [
+        "step 'energy-is-13' uses 'scheeffer-i-iii:moment-31', which names no step of scheeffer-i-iii",
+        "step 'other' uses 'euler-192-219:x', but 'euler-192-219' is not among the derivations hasab requires"]
+    report = check_derivation(wrong, prove=False, trust_steps=True)
+    assert [m for m in report.failures if "moment-31" in m or "euler-192-219" in m] and len(report.failures) == 2

@@ -178,7 +178,8 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
     t0 = time.perf_counter()
     book = book if book is not None else ProofBook.load(d.id)
     domain = Domain(d.domain, tuple(d.constraints))
-    failures: list[str] = []
+    from ..registry import cross_use_problems       # the registry imports the derivations: only when checking
+    failures: list[str] = [f"{d.source} {d.locator}: {m}" for m in cross_use_problems(d)]
     proofs: dict = {}
     results: dict = {}
     closed: dict = {}       # a defining integral -> its closed form, once an integration step derived it
