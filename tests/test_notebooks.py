@@ -80,3 +80,18 @@ def test_view_shows_justification_and_witnesses_without_timings(graefe_reports):
     assert "0 trivial" in summary
     shown = "\n".join(view.formula_markdown(p.name) for p in module.DERIVATION.printed) + text + summary
     assert not re.search(r"\b[0-9]+(\.[0-9]+)? (ms|s)\b|seconds|\btime\b", shown)
+
+
+def test_a_failing_cell_is_one_line_and_a_failed_check(monkeypatch, tmp_path):
+    # a notebook whose cell raises must stop the main job with exit status 1 and one line naming the
+    # derivation and the error, not a kernel traceback
+    import nbformat
+    from symfloat.errors import CheckFailed, EXIT_CHECK
+    from symfloat.report import notebooks
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("1 / 0")])
+    monkeypatch.setattr(notebooks, "build_notebook", lambda did: nb)
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(CheckFailed) as caught:
+        notebooks._executed_text("graefe-s1-prismatoid-volume", "stamp")
+    assert str(caught.value) == ("notebook graefe-s1-prismatoid-volume: a cell failed with ZeroDivisionError: "
+                                 "division by zero") and caught.value.exit_code == EXIT_CHECK

@@ -21,7 +21,9 @@ import subprocess
 
 import nbformat
 from nbclient import NotebookClient
+from nbclient.exceptions import CellExecutionError
 
+from ..errors import CheckFailed
 from ..model.source import get_source
 from ..registry import load
 from .files import write_if_changed
@@ -140,8 +142,12 @@ def write_notebooks(ids, folder: str | os.PathLike = "notebooks", progress=None,
 
 
 def _executed_text(derivation_id: str, stamp: str) -> str:
-    """The notebook of *derivation_id*, executed and stamped, as the text written to disk."""
-    nb = execute_notebook(build_notebook(derivation_id), Path.cwd())
+    """The notebook of *derivation_id*, executed and stamped, as the text written to disk; a cell that
+    fails is a failed check named in one line (:class:`~symfloat.errors.CheckFailed`), not a traceback."""
+    try:
+        nb = execute_notebook(build_notebook(derivation_id), Path.cwd())
+    except CellExecutionError as exc:
+        raise CheckFailed(f"notebook {derivation_id}: a cell failed with {exc.ename}: {exc.evalue}") from None
     nb.metadata["symfloat"] = {"stamp": stamp}
     return nbformat.writes(nb) + "\n"
 
