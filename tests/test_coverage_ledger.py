@@ -151,3 +151,11 @@ def test_cli_table_marks_pending_spans(capsys, monkeypatch, tmp_path):
 def test_cli_unknown_source(capsys):
     assert main(["coverage", "nosuch"]) == 2
     assert "unknown source" in capsys.readouterr().err
+
+
+def test_a_sentence_repeated_word_for_word_is_a_computed_repeat():
+    # metazentrum prints its stability paragraph twice (transcription 003, lines 274 and 833): the first
+    # is quoted (metazentrum/criterion-words), the second is waived as a repeat without a judged waiver
+    from symfloat.report.ledger import ledger
+    entries = [e for e in ledger("metazentrum") if e.span.kind == "sentence" and e.span.line in (274, 833)]
+    assert [(e.span.line, e.status, e.reason) for e in entries] == [(274, "quoted", ""), (833, "waived", "repeat")]

@@ -46,6 +46,8 @@ def test_metazentrum_checks_clean(meta_report):
         ("below-G", "misprint", "medium"),               # "über oder unter" under "Metazentrum unterhalb"
         ("wide-hull", "claim", "high"),                  # breadth > draught does not make a hull stable
         ("displaced-volume-claim", "claim", "high"),     # the displaced volume is at most the body's
+        ("F_g", "misprint", "low"),                      # line 513: m_g, defined nowhere, for M_s
+        ("F_b=F_g", "misprint", "low"),                  # line 519: V_w, M_w, defined nowhere, for V_b, M_b
     }
     assert all(f.verdict == "verified" for f in meta_report.formulas if not f.erratum)
 

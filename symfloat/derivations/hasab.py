@@ -35,6 +35,7 @@ s, xs, ys, OF = sp.symbols("s x y OF", real=True)
 E0h, E0v, E0, E1h, E1v, E2v, E1 = sp.symbols(
     r"E_0^{hasab} E_0^{viz} E_0^{teljes} E_1^{hasab} E_{(1)}^{viz} E_2^{viz} E_1^{teljes}", real=True)
 c0, c2, GM, R1, R2, Ru = sp.symbols("c_0 c_2 GM R_1 R_2 R_u", real=True)
+OFa, A3, h3, d3 = sp.symbols(r"OF_\alpha A_{IG_1H_1} h_{IG_1H_1} d_{IG_1H_1}", real=True)
 T1, V1, e1 = sp.symbols("T_1 V_1 e_1", real=True)
 t = sp.tan(al)
 half = sp.Rational(1, 2)
@@ -98,12 +99,30 @@ d.step("E2-water-triangle", (E2v, l * g * sec(dep, ys, rho + xi * t),
                              l * g * (xs - ys) / 2 * (xs - ys) / 3 * sp.cos(al), l * g * t ** 2 / 6 * sp.cos(al)),
        "integration", result=E2v, uses=("sides", "sides-y"),
        note="the triangle IG1H1: area (x - y)/2, centroid (x - y) cos(alpha)/3 below the water")
+d.step("G-height", (OFa, -dep.subs({xi: 0, et: half}), (half - rho) * sp.cos(al)), "geometry", result=OFa,
+       note="G = (0, 1/2) above the heeled water line eta = rho + xi tg alpha, measured across it")
+d.step("triangle-area", (A3, sec(1, ys, rho + xi * t), (xs - ys) / 2), "integration", result=A3,
+       uses=("sides", "sides-y"), note="the triangle IG1H1 between eta = y and the water line")
+d.step("triangle-height", (h3, dep.subs({xi: half, et: ys}), (xs - ys) * sp.cos(al)), "geometry", result=h3,
+       uses=("sides", "sides-y"), note="its deepest corner (xi = 1/2, eta = y) below the water line")
+d.step("triangle-centroid", (d3, sec(dep, ys, rho + xi * t) / sec(1, ys, rho + xi * t), h3 / 3), "integration",
+       result=d3, uses=("triangle-area", "triangle-height"),
+       note="the centroid lies a third of the height below the water: the medians are cut in thirds")
 d.step("E1-total", (E1, E1h + E1v + E2v,
                     l * g * (rho * (1 - rho) / 2 * sp.cos(al) + sp.sin(al) * t / 24)), "algebra", result=E1)
 d.quote("x+y", "solution, heeled", DISPLAYS[4], reading=((xs + ys) / 2, rho))
 d.quote("x-y", "solution, heeled", DISPLAYS[5], reading=(xs - ys, t))
 d.quote("x", "solution, heeled", DISPLAYS[6], reading=(xs, rho + t / 2))
 d.quote("y", "solution, heeled", DISPLAYS[7], reading=(ys, rho - t / 2))
+d.quote("G-height", "solution, heeled", r"$(1/2 - \varrho) \cos \alpha$", reading=(OFa, (half - rho) * sp.cos(al)))
+d.quote("triangle-area", "solution, heeled", r"A háromszög területe $(x - y)/2$", reading=(A3, (xs - ys) / 2))
+d.quote("triangle-height", "solution, heeled", r"magassága $(x - y) \cdot \cos \alpha$",
+        reading=(h3, (xs - ys) * sp.cos(al)))
+d.quote("triangle-centroid", "solution, heeled",
+        "Mivel a háromszög súlypontja harmadolja a súlyvonalakat, és az I csúshoz tartozó súlyvonal vízfelületre "
+        "merőleges vetülete éppen a fenti magasság", reading=(d3, h3 / 3),
+        note="the centroid of the triangle lies a third of the printed height below the water (the E_2 display "
+             "carries it as the factor 1/3)")
 d.quote("E1-prism", "solution, heeled", DISPLAYS[8], reading=(E1h, l * g * rho * (half - rho) * sp.cos(al)))
 d.quote("E1-water", "solution, heeled", DISPLAYS[9],
         reading=(E1v, l * g * ys * (rho - ys / 2) * sp.cos(al), l * g * (rho ** 2 / 2 - t ** 2 / 8) * sp.cos(al)))
@@ -130,6 +149,12 @@ d.quote("E1-total", "solution, second order", DISPLAYS[11],
         note="per l g, to second order in alpha")
 d.quote("Delta-E", "solution, second order", DISPLAYS[12],
         reading=(c2 * al ** 2, sp.Rational(1, 4) * (rho ** 2 - rho + sp.Rational(1, 6)) * al ** 2), note="per l g")
+d.quote("tg-approx", "solution, second order", r"$\text{tg } \alpha \cong \alpha$",
+        reading=(sp.Subs(sp.Derivative(sp.tan(al), al), al, 0) * al, al),
+        note="tg alpha to first order in alpha (the next term is alpha^3/3)")
+d.quote("cos-approx", "solution, second order", r"$\cos \alpha \cong 1 - \alpha^2/2$",
+        reading=(1 + sp.Subs(sp.Derivative(sp.cos(al), al, 2), al, 0) * al ** 2 / 2, 1 - al ** 2 / 2),
+        note="cos alpha to second order in alpha")
 quad = rho ** 2 - rho + sp.Rational(1, 6)
 d.quote("condition", "solution, stability", DISPLAYS[13], reading=(sp.sign(c2), sp.sign(quad)),
         note="the energy has a minimum at alpha = 0 exactly when its alpha^2 coefficient is positive")
@@ -174,6 +199,10 @@ d.step("energy-metacentric", (2 * l * c2, V1 * GM, l * rho * (1 / (12 * rho) - (
             "(V1 > 0), and with energy-duhamel both equal Duhamel's (18)")
 d.step("energy-duhamel", (2 * l * c2, T1 - V1 * e1), "lemma", uses=("scheeffer-i-iii:energy-curvature", "c2"),
        note="Scheeffer: the curvature of V1 n at 0 is T1 - V1 e1 = V1 (T1/V1 - e1), criterion (18)")
+d.quote("energy-principle", "solution", "Stabil egyensúlyi helyzetben a rendszer helyzeti energiája minimális.",
+        reading=(sp.sign(c2), sp.sign(GM)),
+        note="read for this body: the energy has a minimum at alpha = 0 (c_2 > 0) exactly where the metacentric "
+             "criterion calls the position stable (GM > 0): E''(0) = weight x GM (the step energy-metacentric)")
 
 # ---- remark: the upright prism --------------------------------------------------------------------
 GMu = (sp.Rational(1, 12)) / (rho * l) - (l / 2 - rho * l / 2)
@@ -315,6 +344,12 @@ for name, targets, quantity in (("draught", ("s",), "draught"), ("G-above-water"
                                 ("stable-upright", ("ranges",), "stable")):
     d.witness(FloatingWitness(name, f"{QUANTITIES[quantity][0]}, clipped prism lying", targets, DENSITIES,
                               body=LYING, up=(0, 1, 0), density=rho, quantity=quantity))
+d.witness(FloatingWitness("G-height-heeled", "height of G above the heeled water plane, clipped prism",
+                          ("G-height",), ECASES, body=LYING, up=(-sp.tan(al), 1, 0), density=rho,
+                          quantity="G above water"))
+d.witness(FloatingWitness("stability-sign-energy", "sign of the clipped lying prism's metacentric height",
+                          ("energy-principle",), DENSITIES, body=LYING, up=(0, 1, 0), density=rho,
+                          quantity="stability sign"))
 EXTRAP = (Precision(15, 1e-5), Precision(50, 1e-35))
 W("second-order-energy", "c0 + c2 alpha^2 from the clipped potential by extrapolated finite differences",
   ("E1-total",), second_order, methods=EXTRAP)

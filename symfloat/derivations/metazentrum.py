@@ -30,6 +30,7 @@ rho_w, rho_s = sp.symbols("rho_w rho_s", positive=True)
 x, y, z = sp.symbols("x y z", real=True)
 V_b, M_b, M_s, z_B, z_G, z_M, I_w, A_q, A_t, x_t, shift, BM, e = sp.symbols(
     "V_b M_b M_s z_B z_G z_M I_w A_q A_t x_t Delta BM e", real=True)
+g, F_b, F_g, m_g, V_w, M_w = sp.symbols("g F_b F_g m_g V_w M_w", positive=True)
 
 DERIVATION = dv = Derivation(
     id="metazentrum",
@@ -38,7 +39,8 @@ DERIVATION = dv = Derivation(
     locator="Vereinfachtes Modell: gerades Parallelepiped",
     summary="z_B = -d/2, z_G = c - d, z_M = -d/2 + b^2/(3d); stable iff e = b^2/(6c^2) - d/(2c) (1 - d/(2c)) > 0.",
     domain={a: (3, 6), b: (sp.Rational(1, 2), 3), c: (sp.Rational(1, 2), 3), d: (sp.Rational(1, 10), 5),
-            phi: (sp.Rational(1, 20), 1), rho_w: (sp.Rational(1, 2), 2)},
+            phi: (sp.Rational(1, 20), 1), rho_w: (sp.Rational(1, 2), 2), g: (1, 10), m_g: (1, 100),
+            V_w: (1, 100), M_w: (1, 100)},
     constraints=(d < 2 * c, b < a),
     assumptions=("homogeneous box 2a x 2b x 2c, centre of mass at its centre, floating upright with draught "
                  "0 < d < 2c", "heel about the long axis (b < a), angle phi, 0 < phi < pi/2; the wedges stay within "
@@ -182,6 +184,49 @@ dv.quote("displaced-volume-claim", L6, "was bedeutet, dass das verdrängte Wasse
                          corrected_reading=(sp.sign(V_b - 8 * a * b * c), -1)),
          note="the box: V_s = 8abc; read as V_b > V_s (equality needs d = 2c, outside the floating range)")
 
+dv.step("buoyancy-force", Eq(F_b, M_b * g), "definition", result=F_b, note="the weight of the displaced water")
+dv.step("gravity-force", Eq(F_g, M_s * g), "definition", result=F_g, note="the weight of the hull")
+dv.quote("wedges-equal", L2, "Wenn das Boot krängt, bewegt sich auf der einen Seite ein größerer Wasserabschnitt und auf "
+         "der gegenüberliegenden Seite derselbe kleinere Wasserabschnitt.",
+         reading=(sp.Integral(y * t, (y, 0, b)), sp.Integral(-y * t, (y, -b, 0))),
+         note="the wedge entering the water (0 < y < b) and the one leaving it (-b < y < 0) have the same area "
+              "b^2 tg(phi)/2: the displaced volume stays the same")
+dv.quote("triangles-only", L2, "Alle Massen, die auf beiden Seiten der Achse versetzt sind, tragen nicht zum Zähler bei "
+         "und nur die beiden angegebenen Dreiecke ergeben eine Fläche", reading=(first_order(A_t), b ** 2 * phi),
+         note="the two wedge triangles together, to first order in phi (the display b^2 phi follows)")
+dv.quote("arc", L3, "Da dieser Abstand der Bogen des Kreises ist, der um das Metazentrum gezogen werden kann",
+         reading=(BM, sp.Subs(sp.Derivative(shift, phi), phi, 0)),
+         note="the shift of B is the arc BM * phi for small phi: the radius is the shift's rate at phi = 0")
+dv.quote("surface-origin", L3, "$d/2$", reading=(-z_B, d / 2),
+         note="the origin on the water surface lies d/2 above the centre of buoyancy")
+dv.quote("criterion-words", L4, "Um sicherzustellen, dass der Quader stabil ist, muss die Höhe des Metazentrums "
+         "($z_M$)8671 immer größer oder gleich die Höhe des Schwerpunkts ($z_G$)8670 sein, das heißt",
+         reading=(sp.sign(z_M - z_G), stable_sign), note="the sentence that introduces z_M >= z_G")
+dv.quote("criterion-words-2", "formula list", "Damit das Objekt stabil ist, muss die Höhe des Metazentrums ($z_M$)8671 "
+         "immer größer oder gleich die Höhe des Schwerpunkts ($z_G$)8670 sein.",
+         reading=(sp.sign(z_M - z_G), stable_sign))
+dv.quote("diagram-regions", L4, "in dem das System stabil und in seinem Komplement instabil ist",
+         reading=(sp.Matrix([sp.Subs(sp.sign(e), (b, d), (2 * c, c)), sp.Subs(sp.sign(e), (b, d), (c / 2, c))]),
+                  sp.Matrix([1, -1])),
+         note="both regions exist: b = 2c, d = c (half immersed) is stable, b = c/2, d = c unstable")
+dv.quote("metacentre-from-radius", "formula list", "Die Berechnung von die Höhe des Metazentrums ($z_M$)8671 aus dem "
+         "Abstand zwischen dem Metazentrum und dem Schwerpunkt des verdrängten Wassers",
+         reading=(z_M, z_B + BM))
+dv.quote("F_b", "formula list", r"$ F_b = \rho_w V_b g $", reading=(F_b, rho_w * V_b * g))
+dv.quote("F_g", "formula list", r"$ F_g = m_g g $", reading=(F_g, m_g * g),
+         erratum=Erratum("misprint", "low", "F_g = M_s g",
+                         "The sentence before introduces the weight with the mass of the floating object M_s; m_g is "
+                         "defined nowhere on the page (a symbol of the site's general gravity lesson). With M_s the "
+                         "chain F_b = M_b g = M_s g = F_g below closes.",
+                         corrected_reading=(F_g, M_s * g)))
+dv.quote("F_b=F_g", "formula list", r"$F_b = \rho_w V_w g = M_w g = M_s g = F_g$",
+         reading=(F_b, rho_w * V_w * g, M_w * g, M_s * g, F_g),
+         erratum=Erratum("misprint", "low", r"F_b = \rho_w V_b g = M_b g = M_s g = F_g",
+                         "The page names the displaced volume V_b and the displaced mass M_b (formula list); V_w and "
+                         "M_w are defined nowhere. With V_b and M_b the chain is Archimedes' principle, rho_w V_b g = "
+                         "M_b g, and M_b = M_s. A naming slip of the lesson.",
+                         corrected_reading=(F_b, rho_w * V_b * g, M_b * g, M_s * g, F_g)))
+
 # ---- witnesses -------------------------------------------------------------------------------
 
 
@@ -236,7 +281,7 @@ CASES = (Case({a: 4, b: 1, c: 1, d: 1, rho_w: 1}, label="a=4, b=1, c=1, d=1 (hal
               label="a=3, b=2, c=3/2, d=5/2 (stable, deep)"))
 LIMIT = (Precision(15, 1e-7), Precision(50, 1e-35))
 dv.witness(FloatingWitness("stability-sign", "sign of the clipped upright box's metacentric height I_min/V - (G - B)",
-                           ("criterion", "e-sign"), CASES, body=Body.box(2 * a, 2 * b, 2 * c), up=(0, 0, 1),
+                           ("criterion", "e-sign", "criterion-words", "criterion-words-2"), CASES, body=Body.box(2 * a, 2 * b, 2 * c), up=(0, 0, 1),
                            density=d / (2 * c), quantity="stability sign"))
 
 

@@ -29,8 +29,8 @@ __all__ = ["REASONS", "JUDGED", "Entry", "LedgerError", "account", "ledger", "qu
 
 REASONS = {
     "bare-symbol": "a single symbol or label, or a list of them: it states nothing (computed)",
-    "repeat": "repeats a quoted formula, or a contiguous part of its chain, of the same source "
-              "(computed by normalised comparison)",
+    "repeat": "repeats a quoted formula, or a contiguous part of its chain, or a quoted sentence word for word, "
+              "of the same source (computed by normalised comparison)",
     "figure-reference": "points to a figure or names a figure's points or lines; states nothing to check",
     "lost-text": "the transcription lost or garbled the passage: nothing can be read from it",
     "notation": "a naming or a construction (let x denote, draw AB perpendicular to CD): it asserts "
@@ -121,6 +121,7 @@ def account(source: str, quoted, waivers) -> tuple[Entry, ...]:
     by_span: dict[Span, tuple[str, ...]] = {
         s: tuple(fid for a, b, fid in quoted if s.overlaps(a, b)) for s in all_spans}
     quoted_rows = [row for s, ids in by_span.items() if ids and s.kind != "sentence" for row in _sequences(s.text)]
+    quoted_sentences = {s.text for s, ids in by_span.items() if ids and s.kind == "sentence"}
     entries: dict[Span, Entry] = {}
     for s in all_spans:
         if by_span[s]:
@@ -129,6 +130,8 @@ def account(source: str, quoted, waivers) -> tuple[Entry, ...]:
             entries[s] = Entry(s, "waived", "bare-symbol")
         elif s.kind != "sentence" and (rows := _sequences(s.text)) and all(
                 any(_contains(q, r) for q in quoted_rows) for r in rows):
+            entries[s] = Entry(s, "waived", "repeat")
+        elif s.kind == "sentence" and s.text in quoted_sentences:
             entries[s] = Entry(s, "waived", "repeat")
     index: dict[tuple, list[Span]] = {}
     for s in all_spans:
