@@ -40,7 +40,6 @@ class SiteError(EnvironmentProblem):
 _CONF = '''\
 """Sphinx configuration written by symfloat site (symfloat/site/build.py)."""
 project = "symfloat"
-copyright = ""
 extensions = ["myst_nb", "symfloat.site.mathml"]
 myst_enable_extensions = ["dollarmath", "amsmath"]
 myst_dmath_double_inline = True
@@ -56,6 +55,7 @@ html_js_files = ["symfloat.js"]
 html_copy_source = False
 html_show_sourcelink = False
 html_show_sphinx = False
+html_show_copyright = False
 html_last_updated_fmt = None
 html_title = "symfloat: the sources, re-derived"
 exclude_patterns = ["_build"]

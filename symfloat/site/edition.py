@@ -115,6 +115,7 @@ def _legend(counts: Counter, waived: Counter, unaccounted: int) -> str:
               for r, n in sorted(waived.items())]
     if unaccounted:
         items.append(f'<span class="w w-unaccounted">not yet accounted for</span> {unaccounted}')
+    items.append('<span class="figure-missing">Fig.</span> a figure the transcription does not have')
     return '<p class="legend">' + " · ".join(items) + "</p>"
 
 
@@ -128,6 +129,7 @@ def edition_page(source: Source, records: Records) -> str:
                     and (e.span.kind != "sentence" or e.reason in ("lost-text", "figure-reference"))]
     cuts = {x for a, b, _ in quoted for x in (a, b)} | {x for e in ledger_marks for x in (e.span.start, e.span.end)}
     rank = {v: i for i, v in enumerate(VERDICTS)}
+    ends = {fid: e for _, e, fid in quoted}
 
     def wrap(a, b, body):
         fids = sorted((fid for s, e, fid in quoted if s < b and a < e),
@@ -135,8 +137,11 @@ def edition_page(source: Source, records: Records) -> str:
         if fids:
             first = records.formula(fids[0])
             title = "\n".join(_title(records.formula(fid), records.erratum_of.get(fid)) for fid in fids)
+            more = "".join(f'<a class="more v-{records.formula(fid)["verdict"]}" href="#{formula_anchor(fid)}" '
+                           f'title="{html.escape(_title(records.formula(fid), records.erratum_of.get(fid)))}">'
+                           f'{i}</a>' for i, fid in enumerate(fids[1:], 2) if ends[fid] == b)
             return (f'<a class="q v-{first["verdict"]}" href="#{formula_anchor(first["id"])}" '
-                    f'title="{html.escape(title)}">{body}</a>')
+                    f'title="{html.escape(title)}">{body}</a>' + (f'<sup class="more">{more}</sup>' if more else ""))
         inner = [e for e in ledger_marks if e.span.start < b and a < e.span.end]
         if not inner:
             return body

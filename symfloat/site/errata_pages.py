@@ -25,8 +25,8 @@ _WORDS = re.compile(r"[A-Za-zäöüß]{3,}[ ,]+[A-Za-zäöüß]{3,}")
 def corrected_html(corrected: str) -> str:
     """A correction: words (with their dollars) as prose, a formula as displayed MathML.
 
-    >>> corrected_html("x = 2,44")[:30]
-    '<div class="math-display"><ma'
+    >>> corrected_html("x = 2,44")[:31]
+    '<div class="math-display"><math'
     """
     if "$" in corrected or (_WORDS.search(re.sub(r"\\[A-Za-z]+(\{[^}]*\})?", " ", corrected))
                             and "\\" not in corrected):

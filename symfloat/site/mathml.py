@@ -59,9 +59,13 @@ _REPAIRS = (lambda t: t, _brace_primes, _close_open, lambda t: _close_open(_brac
             lambda t: _close_open(_unsized(_brace_primes(t))))
 
 
+_LEAKED = re.compile(r">[^<]*\\[A-Za-z]")
+
+
 @lru_cache(maxsize=None)
 def to_mathml(tex: str, display: bool = False) -> str:
-    """*tex* (no dollars) as a ``<math>`` element, or as marked TeX code when it cannot be converted.
+    """*tex* (no dollars) as a ``<math>`` element, or as marked TeX code when it cannot be converted
+    (a command latex2mathml does not know would otherwise be shown as text).
 
     >>> to_mathml("x^2")
     '<math xmlns="http://www.w3.org/1998/Math/MathML" display="inline" alttext="x^2"><mrow><msup><mi>x</mi><mn>2</mn></msup></mrow></math>'
@@ -73,6 +77,8 @@ def to_mathml(tex: str, display: bool = False) -> str:
         try:
             out = convert(repair(body), display="block" if display else "inline")
         except Exception:           # latex2mathml raises many kinds on TeX it cannot read
+            continue
+        if _LEAKED.search(out):     # a command it did not know, passed through as text
             continue
         alt = html.escape(" ".join(body.split()), quote=True)
         return out.replace(">", f' alttext="{alt}">', 1)

@@ -3,7 +3,8 @@
 The transcriptions are Markdown with TeX dollars.  They are shown as text, faults included: blocks
 between blank lines become headings (``#``), rules (``---``), tables (``|`` rows) or paragraphs;
 inside a block, ``**bold**`` and ``*italic*``, backslash escapes, hard line breaks, list lines and
-the ``<sub>``/``<sup>`` the transcriptions use are honoured, and every math span is MathML.
+the ``<sub>``/``<sup>`` the transcriptions use are honoured, and every math span is MathML.  A
+reference to a figure (``Fig. 12``) is marked: the transcriptions have no figures.
 
 A caller marks stretches of the text: :func:`render` takes the offsets where a mark changes and a
 function that wraps a run of HTML in its mark, and calls ``after(block_start, block_end)`` to add
@@ -22,6 +23,7 @@ __all__ = ["blocks", "inline_html", "render", "excerpt_html"]
 _BLANK = re.compile(r"\n[ \t]*\n\s*")
 _ESCAPE = re.compile(r"\\([\\`*_{}\[\]()#+\-.!|>])")
 _TAGS = re.compile(r"&lt;(/?)(sub|sup)&gt;")
+_FIGURE = re.compile(r"\b(Fig(?:ur(?:en)?|\.)\s*\d+[a-z]?(?:\s*(?:und|u\.|et|,)\s*\d+[a-z]?)*)")
 
 
 def blocks(text: str, maths) -> list[tuple[int, int]]:
@@ -45,6 +47,7 @@ def _prose(text: str) -> str:
     out = re.sub(r"\*\*(\S(?:.*?\S)?)\*\*", r"<strong>\1</strong>", out, flags=re.S)
     out = re.sub(r"(?<![*\\])\*(\S(?:[^*]*?\S)?)\*(?!\*)", r"<em>\1</em>", out, flags=re.S)
     out = _ESCAPE.sub(r"\1", out)
+    out = _FIGURE.sub(r'<span class="figure-missing" title="the figure is not in the transcription">\1</span>', out)
     out = re.sub(r" {2,}\n|\\\n", "<br>\n", out)
     return re.sub(r"\n(?=[-*] |&gt;)", "<br>\n", out)
 
