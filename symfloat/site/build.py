@@ -75,8 +75,8 @@ def _index(records: Records) -> str:
         "records (`docs/verification.json`, `docs/errata.json`, the executed notebooks).", "",
         f"{s['formulas']} printed formulas: {s['verified']} verified, {s['erratum']} errata, "
         f"{s['unverifiable']} unverifiable, {s.get('trivial', 0)} trivial.", "",
-        "```{toctree}", ":maxdepth: 1", "", "edition/index", "errata/index", "notebooks/index", "numerics",
-        "about", "```", ""])
+        "```{toctree}", ":maxdepth: 1", "", "edition/index", "errata/index", "notebooks/index",
+        *(["scheeffer-ix-grid"] if records.ix_grid else []), "numerics", "about", "```", ""])
 
 
 def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
@@ -85,10 +85,13 @@ def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
     slugs = [slug(e["id"]) for e in records.errata]
     if len(set(slugs)) != len(slugs):
         raise SiteError("two errata ids give the same page name")
+    records.ix_grid = (docs / "scheeffer-ix-grid.md").is_file()     # a document the main job adds
     files = {"conf.py": _CONF, "index.md": _index(records), "_static/symfloat.css": _asset("symfloat.css"),
              "_static/symfloat.js": _asset("symfloat.js"),
              "about.md": (docs / "site.md").read_text(encoding="utf-8"),
              "numerics.md": (docs / "numerics.md").read_text(encoding="utf-8")}
+    if records.ix_grid:
+        files["scheeffer-ix-grid.md"] = (docs / "scheeffer-ix-grid.md").read_text(encoding="utf-8")
     keys = [k for k in SOURCES if any(f["source"] == k for f in records.formulas)]
     files["edition/index.md"] = "\n".join(
         ["# The annotated edition", "", "One page per source: the transcription with each printed formula "
