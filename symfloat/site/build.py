@@ -119,10 +119,7 @@ def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
 
 def _sphinx(src: Path, out: Path, doctrees: Path) -> list[str]:
     """Build *src* into *out*; the warnings, one per line."""
-    try:
-        from sphinx.application import Sphinx
-    except ImportError:
-        raise SiteError("the site needs Sphinx and MyST-NB: pip install 'symfloat[site]'") from None
+    from sphinx.application import Sphinx
     from sphinx.util.console import nocolor
     nocolor()
     warnings = StringIO()
@@ -158,10 +155,20 @@ def _sync(built: Path, out: Path) -> list[str]:
     return changed
 
 
+def _check_tools() -> None:
+    import importlib.util
+    missing = [name for name in ("sphinx", "myst_nb", "latex2mathml") if importlib.util.find_spec(name) is None]
+    if missing:
+        raise SiteError(f"the site needs {', '.join(missing)}: pip install 'symfloat[site]'")
+
+
 def build_site(out: Path, docs: Path, notebooks: Path, progress=None) -> tuple[list[str], list[str]]:
     """Build the site into *out*; (the files changed there, Sphinx's warnings)."""
+    _check_tools()
     out = Path(out)
-    if out.exists() and (not out.is_dir() or (any(out.iterdir()) and not (out / MARKER).is_file())):
+    if out.exists() and not out.is_dir():
+        raise InputError(f"{out} is a file: the site is written into a folder")
+    if out.exists() and any(out.iterdir()) and not (out / MARKER).is_file():
         raise InputError(f"{out} is not empty and holds no earlier site ({MARKER}): give a new or empty folder")
     for needed in (docs / "verification.json", docs / "errata.json", docs / "site.md", docs / "numerics.md"):
         if not needed.is_file():
