@@ -68,6 +68,13 @@ def _asset(name: str) -> str:
 
 def _index(records: Records) -> str:
     s = records.summary
+    rows = []
+    for key, source in SOURCES.items():
+        fs = [f for f in records.formulas if f["source"] == key]
+        if fs:
+            n = {v: sum(f["verdict"] == v for f in fs) for v in ("verified", "erratum", "unverifiable", "trivial")}
+            rows.append(f"| [{source.author}, *{source.title}*](edition/{key}.md) | {len(fs)} | {n['verified']} | "
+                        f"{n['erratum']} | {n['unverifiable']} | {n['trivial']} |")
     return "\n".join([
         "# symfloat: the sources, re-derived", "",
         "Every printed formula of the library's texts re-derived step by step, its verdict with the evidence "
@@ -75,6 +82,8 @@ def _index(records: Records) -> str:
         "records (`docs/verification.json`, `docs/errata.json`, the executed notebooks).", "",
         f"{s['formulas']} printed formulas: {s['verified']} verified, {s['erratum']} errata, "
         f"{s['unverifiable']} unverifiable, {s.get('trivial', 0)} trivial.", "",
+        "| source (annotated edition) | formulas | verified | errata | unverifiable | trivial |",
+        "|---|---:|---:|---:|---:|---:|", *rows, "",
         "```{toctree}", ":maxdepth: 1", "", "edition/index", "errata/index", "notebooks/index",
         *(["scheeffer-ix-grid"] if records.ix_grid else []), "numerics", "about", "```", ""])
 
@@ -177,7 +186,10 @@ def build_site(out: Path, docs: Path, notebooks: Path, progress=None) -> tuple[l
         src, html, doctrees = Path(tmp, "src"), Path(tmp, "html"), Path(tmp, "doctrees")
         src.mkdir()
         progress and progress("staging the pages from the records")
-        stage(src, docs, notebooks)
+        try:
+            stage(src, docs, notebooks)
+        except ValueError as exc:           # an excerpt not in its transcription, a stale waiver
+            raise SiteError(f"the records do not match the transcriptions: {exc}") from None
         progress and progress("building with Sphinx")
         warnings = _sphinx(src, html, doctrees)
         out.mkdir(parents=True, exist_ok=True)
