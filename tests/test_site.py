@@ -232,6 +232,12 @@ def _browser(playwright):
         return None
 
 
+def _visible_tex(page) -> list[str]:
+    """The TeX that the browser shows as text on *page* (none where MathML was made)."""
+    text = page.inner_text("body")
+    return [raw for raw in ("$$", "\\frac") if raw in text]
+
+
 def test_every_page_in_headless_chromium(site):
     sync_api = pytest.importorskip("playwright.sync_api", reason="playwright is not installed (test extra)")
     with sync_api.sync_playwright() as p:
@@ -246,15 +252,19 @@ def test_every_page_in_headless_chromium(site):
         names = sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html"))
         for name in names:
             page.goto((site / name).as_uri(), wait_until="load")
-            text = page.inner_text("body")
-            assert "$$" not in text and "\\frac" not in text, name
+            assert not _visible_tex(page), (name, _visible_tex(page))
         assert not errors, errors[:5]
+        # the same checks see a page that shows raw TeX and logs an error
+        control = site.parent / "control.html"
+        control.write_text("<p>$$\\frac{a}{b}$$</p><script>console.error('control')</script>", encoding="utf-8")
+        page.goto(control.as_uri(), wait_until="load")
+        assert _visible_tex(page) == ["$$", "\\frac"] and errors == [(control.as_uri(), "control")]
         # The browser lays the MathML out: a fraction of (78c) has height, and following a mark opens its note.
         page.goto((site / "edition" / "scheeffer.html").as_uri())
         assert page.locator("math mfrac").first.bounding_box()["height"] > 10
         note = f"#{formula_anchor('scheeffer-vi-cf/78c')}"
         page.locator(f'a.q[href="{note}"]').first.click()
-        assert page.locator(note).get_attribute("open") is not None
+        page.wait_for_function("id => document.getElementById(id).open", arg=note[1:], timeout=5000)
         shots = [(page, "site-edition-scheeffer.png")]
         page.locator(f'a.q[href="{note}"]').first.scroll_into_view_if_needed()
         page.evaluate("window.scrollBy(0, -120)")
