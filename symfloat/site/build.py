@@ -30,7 +30,7 @@ from .records import Records, load_records, slug
 __all__ = ["build_site", "stage", "MARKER", "SiteError"]
 
 MARKER = ".symfloat-site"
-_KEEP_OUT = {".buildinfo"}
+_LEFT_OUT = {".buildinfo"}
 
 
 class SiteError(EnvironmentProblem):
@@ -147,7 +147,7 @@ def _sync(built: Path, out: Path) -> list[str]:
     new, old = _files(built), _files(out)
     changed = []
     for name, path in new.items():
-        if name in _KEEP_OUT:
+        if name in _LEFT_OUT:
             continue
         data = path.read_bytes()
         if name not in old or old[name].read_bytes() != data:
@@ -155,7 +155,7 @@ def _sync(built: Path, out: Path) -> list[str]:
             write_atomic(out / name, data)
             changed.append(name)
     for name, path in old.items():
-        if (name not in new or name in _KEEP_OUT) and name != MARKER:
+        if (name not in new or name in _LEFT_OUT) and name != MARKER:
             path.unlink()
             changed.append(name)
     for d in sorted((p for p in out.rglob("*") if p.is_dir()), key=lambda p: -len(p.parts)):

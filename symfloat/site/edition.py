@@ -20,7 +20,8 @@ from .mathml import to_mathml
 from .records import Records, slug
 from .text import render
 
-__all__ = ["VERDICTS", "quotes", "edition_page", "formula_anchor", "cell_label", "notebook_anchor", "witness_line"]
+__all__ = ["VERDICTS", "quotes", "edition_page", "note", "formula_anchor", "cell_label", "notebook_anchor",
+           "witness_line"]
 
 VERDICTS = ("erratum", "unverifiable", "verified", "trivial")      # a stretch quoted twice shows the first
 
