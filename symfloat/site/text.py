@@ -107,7 +107,7 @@ def render(text: str, cuts, wrap, after=lambda a, b: "") -> str:
             out.append(f'<h{level} class="t">{stretch(a + heading.end(), b)}</h{level}>')
         elif re.fullmatch(r"(?:-{3,}|\*{3,})", body):
             out.append("<hr>")
-        elif all(line.lstrip().startswith("|") for line in body.split("\n")):
+        elif all(re.match(r"\s*(?:- )?\|", line) for line in body.split("\n")):       # a table (in a list item)
             rows = "".join("<tr>" + "".join(f"<td>{stretch(x, y)}</td>" for x, y in row) + "</tr>"
                            for row in _cells(text, a, b, maths))
             out.append(f'<table class="t">{rows}</table>')
