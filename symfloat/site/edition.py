@@ -153,11 +153,14 @@ def edition_page(source: Source, records: Records) -> str:
         return f'<span class="w w-{reason}" title="{html.escape(title)}">{body}</span>'
 
     starts = sorted((a, fid) for a, _, fid in quoted)
+    placed: set[str] = set()
 
-    def after(a, b):
-        return "\n".join(note(records.formula(fid), records, "../") for s, fid in starts if a <= s < b)
+    def after(a, b):                    # the notes of the quotes that start before this block ends
+        due = [fid for s, fid in starts if s < b and fid not in placed]
+        placed.update(due)
+        return "\n".join(note(records.formula(fid), records, "../") for fid in due)
 
-    body = render(text, cuts, wrap, after)
+    body = render(text, cuts, wrap, after) + after(len(text), len(text) + 1)
     counts = Counter(f["verdict"] for f in formulas)
     waived = Counter(e.reason for e in entries if e.status == "waived")
     unaccounted = sum(e.status == "unaccounted" for e in entries)
@@ -169,6 +172,6 @@ def edition_page(source: Source, records: Records) -> str:
             f"and the independent witnesses' errors and times. Math spans and claims in words that no "
             f"formula quotes are marked as the coverage ledger accounts for them (lost text and figure "
             f"references among them). Locators: {source.locators or 'as printed'}.", "",
-            "```{raw} html", _legend(counts, waived, unaccounted), '<div class="edition">', body.rstrip("\n"),
-            "</div>", "```", ""]
+            "````{raw} html", _legend(counts, waived, unaccounted), '<div class="edition">', body.rstrip("\n"),
+            "</div>", "````", ""]
     return "\n".join(head)

@@ -58,7 +58,7 @@ def erratum_page(e: dict, records: Records) -> str:
         f'{html.escape(witness_line(f["numeric"]))}.</p>',
         f'<p>See {" and ".join(links)}.</p>',
     ]
-    return "\n".join([f"# Erratum {e['id']}", "", "```{raw} html", *body, "```", ""])
+    return "\n".join([f"# Erratum {e['id']}", "", "````{raw} html", *body, "````", ""])
 
 
 def _facet_values(records: Records, facet: str) -> list[str]:
