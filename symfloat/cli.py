@@ -9,6 +9,7 @@
     symfloat phase cube|box [--dims a,b,c] [--steps N] [--format table|json] [--plot FILE.png]
     symfloat bench [--quick] [--output DIR]
     symfloat coverage [SOURCE] [--format table|json] [--readings] [--write] [--update-baseline]
+    symfloat site [--out DIR]
 
 Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET`` set to anything but ``0``) silences
 it.  The default outputs (``docs/``, ``notebooks/``) are those of the project checkout, wherever
@@ -359,6 +360,22 @@ def _coverage(args) -> int:
     return run(args)
 
 
+def _site_args(p):
+    p.add_argument("--out", type=Path, help="folder for the static site (default: build/site of the checkout); "
+                                            "an existing folder must be empty or hold an earlier site")
+
+
+def _site(args) -> int:
+    from .site.build import build_site          # Sphinx and MyST-NB: only when the site is built
+    out = args.out or in_project("build/site")
+    changed, warnings = build_site(out, in_project("docs"), in_project("notebooks"),
+                                   progress=lambda msg: _say(args, msg))
+    for w in warnings:
+        _say(args, f"sphinx: {w}")
+    _say(args, f"{len(changed)} files changed in {out}")
+    return EXIT_OK
+
+
 @dataclass(frozen=True)
 class Command:
     help: str
@@ -377,6 +394,8 @@ COMMANDS = {
     "bench": Command("numerics benchmark: write docs/numerics.md and its figures", _bench_args, _bench),
     "coverage": Command("the coverage ledger: every math span and quantitative sentence quoted or waived; "
                         "with --readings the readings checked against the print", _coverage_args, _coverage),
+    "site": Command("build the static web site (annotated edition, errata, notebooks, numerics) from the "
+                    "committed records", _site_args, _site),
 }
 
 

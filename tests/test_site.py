@@ -1,0 +1,278 @@
+"""``symfloat site``: the pages it makes from the committed records, their links, their mathematics,
+their determinism, and what a real browser (headless Chromium driven by Playwright) sees.
+
+Expected values come from the committed records: docs/verification.json (verdicts, excerpts),
+docs/errata.json, the notebooks, and the transcriptions in symfloat/sources.
+"""
+from __future__ import annotations
+
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+from html.parser import HTMLParser
+from pathlib import Path
+from urllib.parse import unquote, urlsplit
+
+import pytest
+
+pytest.importorskip("sphinx", reason="the site extra is not installed (pip install 'symfloat[site]')")
+pytest.importorskip("myst_nb", reason="the site extra is not installed (pip install 'symfloat[site]')")
+pytest.importorskip("latex2mathml", reason="the site extra is not installed (pip install 'symfloat[site]')")
+
+from symfloat.model.source import SOURCES  # noqa: E402
+from symfloat.model.span import math_intervals  # noqa: E402
+from symfloat.site import mathml  # noqa: E402
+from symfloat.site.build import MARKER, _sync  # noqa: E402
+from symfloat.site.edition import edition_page, formula_anchor  # noqa: E402
+from symfloat.site.errata_pages import corrected_html  # noqa: E402
+from symfloat.site.notebooks import staged_notebook  # noqa: E402
+from symfloat.site.records import load_records, slug  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+DOCS, NOTEBOOKS = ROOT / "docs", ROOT / "notebooks"
+
+
+@pytest.fixture(scope="module")
+def records():
+    return load_records(DOCS, NOTEBOOKS)
+
+
+# ---------------------------------------------------------------- pages, without Sphinx
+
+def test_every_formula_of_the_transcriptions_becomes_mathml():
+    mathml.UNRENDERED.clear()
+    count = 0
+    for source in SOURCES.values():
+        text = source.text()
+        for a, b, kind in math_intervals(text):
+            assert mathml.to_mathml(text[a:b].strip("$"), kind == "display").startswith("<math"), text[a:b]
+            count += 1
+    assert count > 2000 and not mathml.UNRENDERED
+
+
+def test_faulty_tex_is_repaired_or_shown_marked():
+    # Scheeffer's y''^2 (a double superscript to latex2mathml) and a formula the scan cut off
+    assert mathml.to_mathml("y''^2 = r^2").startswith("<math")
+    assert mathml.to_mathml(r"\left. \begin{aligned} & \sqrt{x").startswith("<math")
+    shown = mathml.to_mathml(r"\frac{a}{b} \end{cases}")
+    assert shown.startswith('<code class="tex-unrendered"') and r"\frac{a}{b}" in shown
+
+
+def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
+    page = edition_page(SOURCES["scheeffer"], records)
+    formulas = [f for f in records.formulas if f["source"] == "scheeffer"]
+    assert len(formulas) > 400
+    for f in formulas:
+        anchor = formula_anchor(f["id"])
+        assert f'id="{anchor}"' in page, f["id"]
+        assert re.search(rf'<a class="(?:q|more) v-{f["verdict"]}" href="#{anchor}"', page), f["id"]
+    # (78c) is an erratum of the record, Scheeffer's square moments (VI.C) are verified
+    assert f'<a class="q v-erratum" href="#{formula_anchor("scheeffer-vi-cf/78c")}"' in page
+    assert f'<a class="q v-verified" href="#{formula_anchor("scheeffer-vi-cf/square-moments")}"' in page
+    note = page[page.index(f'id="{formula_anchor("scheeffer-vi-cf/78c")}"'):]
+    note = note[:note.index("</details>")]
+    assert "misprint, medium confidence" in note and "0.758 s" in note and "6.0e-01" in note
+    assert '../errata/scheeffer-78c-1.html' in note and "../notebooks/scheeffer-vi-cf.html#" in note
+    assert "\\frac" not in re.sub(r'alttext="[^"]*"|title="[^"]*"', "", page)
+
+
+def test_lost_text_and_missing_figures_are_marked(records):
+    page = edition_page(SOURCES["graefe"], records)
+    # the lemma of Graefe §1 is lost in the transcription: its formula is unverifiable, with that reason
+    anchor = formula_anchor("graefe-s1-prismatoid-volume/lemma-statement")
+    assert re.search(rf'<a class="q v-unverifiable" href="#{anchor}" title="[^"]*text lost in the transcription',
+                     page)
+    assert '<span class="figure-missing"' in page
+
+
+def test_corrections_are_formulas_or_words():
+    assert "<math" in corrected_html(r"\operatorname{tg}^2 \varphi_1 = 2 \cdot \left\{ 6 s (1 - s) - 1 \right\}")
+    words = corrected_html("e > 0 in the stable case, e < 0 in the unstable case")
+    assert "<math" not in words and "stable case" in words
+    mixed = corrected_html(r"wenn wir für  $a, b, c$  jetzt  $c, d, e$  setzen")
+    assert mixed.count("<math") == 2 and "setzen" in mixed
+
+
+def test_a_cut_quotation_in_a_notebook_is_widened_to_whole_formulas(records):
+    # euler-220-228 quotes §224 from inside one formula into the middle of the next
+    staged = json.loads(staged_notebook(NOTEBOOKS / "euler-220-228.ipynb", records, "euler-220-228",
+                                        SOURCES["euler"].text()))
+    cell = next("".join(c["source"]) for c in staged["cells"] if "`Aa-Ace-product`" in "".join(c["source"]))
+    assert cell.startswith("(euler-220-228--formula-Aa-Ace-product-")
+    assert '<blockquote class="printed">' in cell and "\n> " not in cell
+    assert cell.count("<math") >= 2
+
+
+def test_sync_touches_only_what_changed(tmp_path):
+    built, out = tmp_path / "built", tmp_path / "out"
+    (built / "a").mkdir(parents=True)
+    (built / "a" / "x.html").write_text("x")
+    (built / "y.html").write_text("y")
+    out.mkdir()
+    (out / "stale.html").write_text("old")
+    assert sorted(_sync(built, out)) == ["a/x.html", "stale.html", "y.html"]
+    assert _sync(built, out) == []
+    (built / "y.html").write_text("y2")
+    assert _sync(built, out) == ["y.html"] and (out / "y.html").read_text() == "y2"
+
+
+# ---------------------------------------------------------------- the built site
+
+def _build(out: Path) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "symfloat", "site", "--out", str(out)], cwd=ROOT,
+                          capture_output=True, text=True, env={**os.environ, "SYMFLOAT_QUIET": "0"})
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory):
+    out = tmp_path_factory.mktemp("site") / "html"
+    done = _build(out)
+    assert done.returncode == 0, done.stderr
+    assert "sphinx:" not in done.stderr, done.stderr          # Sphinx warned about nothing
+    return out
+
+
+class _Page(HTMLParser):
+    """Links, ids and the visible text of one page (scripts, styles and MathML left out)."""
+
+    def __init__(self):
+        super().__init__()
+        self.links, self.ids, self.text, self._hidden = [], set(), [], 0
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if a.get("id"):
+            self.ids.add(a["id"])
+        for key in ("href", "src"):
+            if a.get(key) and not (tag == "math" or key == "href" and tag == "link" and a.get("rel") == "search"):
+                self.links.append((tag, a[key]))
+        if tag in ("script", "style", "math"):
+            self._hidden += 1
+
+    def handle_endtag(self, tag):
+        if tag in ("script", "style", "math"):
+            self._hidden -= 1
+
+    def handle_data(self, data):
+        if not self._hidden:
+            self.text.append(data)
+
+
+def _pages(site: Path) -> dict[str, _Page]:
+    pages = {}
+    for path in sorted(site.rglob("*.html")):
+        page = _Page()
+        page.feed(path.read_text(encoding="utf-8"))
+        pages[path.relative_to(site).as_posix()] = page
+    return pages
+
+
+def test_the_site_has_its_pages_and_every_internal_link_resolves(site, records):
+    pages = _pages(site)
+    for key in ("scheeffer", "graefe", "euler", "metazentrum", "hasab"):
+        assert f"edition/{key}.html" in pages
+    assert all(f"errata/{slug(e['id'])}.html" in pages for e in records.errata)
+    assert all(f"notebooks/{d}.html" in pages for d in records.notebooks)
+    for facet in ("source-scheeffer", "kind-misprint", "confidence-high"):
+        assert f"errata/{facet}.html" in pages
+    assert (site / MARKER).is_file() and not (site / ".buildinfo").exists()
+    broken = []
+    for name, page in pages.items():
+        for tag, link in page.links:
+            parts = urlsplit(link)
+            if parts.scheme or link.startswith("//"):
+                broken.append((name, link, "leaves the site"))        # nothing is loaded or linked outside
+                continue
+            target = (site / name).parent / unquote(parts.path) if parts.path else site / name
+            target = target.resolve()
+            if not target.is_file():
+                broken.append((name, link, "no such file"))
+            elif parts.fragment and target.suffix == ".html":
+                ids = pages[target.relative_to(site.resolve()).as_posix()].ids
+                if unquote(parts.fragment) not in ids:
+                    broken.append((name, link, "no such anchor"))
+    assert not broken, broken[:10]
+
+
+def test_no_tex_is_left_where_mathematics_should_be(site):
+    for name, page in _pages(site).items():
+        text = "".join(page.text)
+        for raw in ("$$", "\\frac", "\\left", "\\begin{"):
+            assert raw not in text, (name, raw, text[max(text.find(raw) - 80, 0):text.find(raw) + 80])
+
+
+def test_rebuilding_the_same_records_gives_the_same_files(site, tmp_path):
+    again = tmp_path / "again"
+    done = _build(again)
+    assert done.returncode == 0, done.stderr
+    first = {p.relative_to(site): p.read_bytes() for p in site.rglob("*") if p.is_file()}
+    second = {p.relative_to(again): p.read_bytes() for p in again.rglob("*") if p.is_file()}
+    assert first.keys() == second.keys()
+    assert [name for name in first if first[name] != second[name]] == []
+
+
+def test_a_folder_that_is_not_a_site_is_refused(tmp_path):
+    (tmp_path / "notes.txt").write_text("mine")
+    done = _build(tmp_path)
+    assert done.returncode == 2 and done.stderr.count("\n") == 1 and MARKER in done.stderr
+    assert (tmp_path / "notes.txt").read_text() == "mine"
+
+
+# ---------------------------------------------------------------- in a real browser
+
+def _browser(playwright):
+    """Debian's chromium if installed (or SYMFLOAT_CHROMIUM), else Playwright's own; None if neither."""
+    path = os.environ.get("SYMFLOAT_CHROMIUM") or shutil.which("chromium") or shutil.which("chromium-browser")
+    try:
+        return playwright.chromium.launch(**({"executable_path": path} if path else {}))
+    except Exception:          # Playwright's browser not downloaded either
+        return None
+
+
+def _visible_tex(page) -> list[str]:
+    """The TeX that the browser shows as text on *page* (none where MathML was made)."""
+    text = page.inner_text("body")
+    return [raw for raw in ("$$", "\\frac") if raw in text]
+
+
+def test_every_page_in_headless_chromium(site):
+    sync_api = pytest.importorskip("playwright.sync_api", reason="playwright is not installed (test extra)")
+    with sync_api.sync_playwright() as p:
+        browser = _browser(p)
+        if browser is None:
+            pytest.skip("no Chromium: install Debian's chromium or run 'python -m playwright install chromium'")
+        page = browser.new_page(viewport={"width": 1200, "height": 900})
+        errors = []
+        page.on("console", lambda m: m.type == "error" and errors.append((page.url, m.text)))
+        page.on("pageerror", lambda e: errors.append((page.url, str(e))))
+        page.on("requestfailed", lambda r: errors.append((page.url, f"failed to load {r.url}")))
+        names = sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html"))
+        for name in names:
+            page.goto((site / name).as_uri(), wait_until="load")
+            assert not _visible_tex(page), (name, _visible_tex(page))
+        assert not errors, errors[:5]
+        # the same checks see a page that shows raw TeX and logs an error
+        control = site.parent / "control.html"
+        control.write_text("<p>$$\\frac{a}{b}$$</p><script>console.error('control')</script>", encoding="utf-8")
+        page.goto(control.as_uri(), wait_until="load")
+        assert _visible_tex(page) == ["$$", "\\frac"] and errors == [(control.as_uri(), "control")]
+        # The browser lays the MathML out: a fraction of (78c) has height, and following a mark opens its note.
+        page.goto((site / "edition" / "scheeffer.html").as_uri())
+        assert page.locator("math mfrac").first.bounding_box()["height"] > 10
+        note = f"#{formula_anchor('scheeffer-vi-cf/78c')}"
+        page.locator(f'a.q[href="{note}"]').first.click()
+        page.wait_for_function("id => document.getElementById(id).open", arg=note[1:], timeout=5000)
+        shots = [(page, "site-edition-scheeffer.png")]
+        page.locator(f'a.q[href="{note}"]').first.scroll_into_view_if_needed()
+        page.evaluate("window.scrollBy(0, -120)")
+        erratum = browser.new_page(viewport={"width": 1200, "height": 900})
+        erratum.goto((site / "errata" / "scheeffer-78c-1.html").as_uri())
+        shots.append((erratum, "site-erratum.png"))
+        folder = DOCS / "figures" if os.environ.get("SYMFLOAT_SCREENSHOTS") else site.parent
+        for shot, name in shots:
+            shot.screenshot(path=str(folder / name))
+            assert (folder / name).stat().st_size > 20_000
+        browser.close()
