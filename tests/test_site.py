@@ -204,6 +204,7 @@ def test_no_tex_is_left_where_mathematics_should_be(site):
             assert raw not in text, (name, raw, text[max(text.find(raw) - 80, 0):text.find(raw) + 80])
 
 
+@pytest.mark.slow     # a second full build (about 25 s of CPU); the default run checks _sync's determinism above
 def test_rebuilding_the_same_records_gives_the_same_files(site, tmp_path):
     again = tmp_path / "again"
     done = _build(again)
