@@ -1,0 +1,151 @@
+"""Building an atlas on Dask: one task per shape cell, parts written as they arrive.
+
+The cells of the grid are submitted to a Dask cluster (:mod:`distributed`): a local cluster
+with one single-threaded worker process per core by default, or an existing scheduler given by
+its address.  The workers only compute (:func:`symfloat.atlas.cell.compute_cell`); this process
+writes each returned cell as its part file, so the workers need no shared disk, and a run that
+is stopped keeps every finished cell.  ``workers=0`` computes the cells here, one after the other,
+without Dask (the serial reference the tests compare the cluster with).  The cube cell is also
+compared with the cube's own phase diagram (``symfloat phase cube``), computed once as a task and
+kept in ``parts/cube-reference.json``.
+"""
+from __future__ import annotations
+
+import json
+import logging
+import os
+import statistics
+import sys
+import time
+from dataclasses import dataclass, field
+from fractions import Fraction
+from pathlib import Path
+
+from ..errors import EnvironmentProblem
+from ..report.files import write_atomic
+from .cell import compute_cell
+from .dataset import part_done, write_combined, write_part
+
+__all__ = ["Build", "build", "cube_reference", "CUBE_REFERENCE", "ProgressBar"]
+
+CUBE_REFERENCE = "parts/cube-reference.json"
+
+
+@dataclass
+class Build:
+    cells: list                 # (b/a, c/a) in grid order
+    computed: list              # the cells computed in this run
+    skipped: list               # the cells found written
+    costs: dict = field(default_factory=dict)       # cell -> {"seconds", "thresholds", "intervals"}
+    wall: float = 0.0
+    workers: int = 0
+    path: Path | None = None
+
+    def summary(self) -> str:
+        head = (f"{len(self.cells)} cells: {len(self.computed)} computed, {len(self.skipped)} already written"
+                + (f"; {self.wall:.1f} s wall on {self.workers} worker(s)" if self.computed else ""))
+        if not self.costs:
+            return head
+        seconds = [c["seconds"] for c in self.costs.values()]
+        thresholds = sum(c["thresholds"] for c in self.costs.values())
+        per = f", {sum(seconds) / thresholds:.1f} s per threshold located" if thresholds else ""
+        return (head + f"; per cell {statistics.median(seconds):.1f} s median, {max(seconds):.1f} s max "
+                f"(worker time){per} ({thresholds} thresholds)")
+
+
+def cube_reference() -> dict:
+    """The thresholds of ``symfloat phase cube`` (its default sweep of 48 densities)."""
+    from ..solver.phase import phase_diagram
+    diagram = phase_diagram("cube")
+    return {"command": "symfloat phase cube", "steps": 48, "duality_holds": bool(diagram.duality_ok),
+            "thresholds": [{"density": t.density, "error": t.bracket, "position": t.label, "change": t.change}
+                           for t in diagram.thresholds]}
+
+
+class ProgressBar:
+    """``[#####-----] 3/8 cells`` on stderr, redrawn in place on a terminal, one line per step elsewhere."""
+
+    def __init__(self, total: int, enabled: bool, width: int = 30):
+        self.total, self.enabled, self.width, self.done = total, enabled, width, 0
+        self.tty = enabled and sys.stderr.isatty()
+        self.start = time.perf_counter()
+
+    def step(self, what: str) -> None:
+        self.done += 1
+        if not self.enabled:
+            return
+        filled = round(self.width * self.done / max(1, self.total))
+        elapsed = time.perf_counter() - self.start
+        left = elapsed / self.done * (self.total - self.done)
+        line = (f"[{'#' * filled}{'-' * (self.width - filled)}] {self.done}/{self.total} {what} "
+                f"({elapsed:.0f} s, about {left:.0f} s left)")
+        print(("\r" + line) if self.tty else line, end="" if self.tty else "\n", file=sys.stderr, flush=True)
+        if self.tty and self.done == self.total:
+            print(file=sys.stderr, flush=True)
+
+
+def _client(scheduler: str | None, workers: int):
+    from dask.distributed import Client, LocalCluster
+    if scheduler:
+        try:
+            return Client(scheduler, timeout="20s"), None
+        except (OSError, TimeoutError, ValueError) as exc:
+            raise EnvironmentProblem(f"cannot reach the Dask scheduler at {scheduler[:80]!r}: {exc}") from None
+    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                           silence_logs=logging.ERROR)
+    return Client(cluster), cluster
+
+
+def _name(cell) -> str:
+    return f"b/a = {cell[0]}, c/a = {cell[1]}"
+
+
+def build(out: Path, ba_values, ca_values, densities, scheduler: str | None = None, workers: int | None = None,
+          progress: bool = False) -> Build:
+    """Compute the missing cells of the grid into *out* and write ``atlas.parquet``."""
+    out = Path(out)
+    cells = [(Fraction(ba), Fraction(ca)) for ca in ca_values for ba in ba_values]
+    todo = [c for c in cells if not part_done(out, *c, densities)]
+    result = Build(cells, todo, [c for c in cells if c not in todo])
+    reference = out / CUBE_REFERENCE
+    want_cube = (Fraction(1), Fraction(1)) in cells and not reference.is_file()
+    bar = ProgressBar(len(todo) + want_cube, progress)
+    start = time.perf_counter()
+
+    def finished(cell, value):
+        rows, cost = value
+        write_part(out, *cell, densities, rows)
+        result.costs[cell] = cost
+        bar.step(_name(cell))
+
+    def cube_finished(value):
+        write_atomic(reference, (json.dumps(value, indent=1, sort_keys=True) + "\n").encode())
+        bar.step("the cube's own phase diagram")
+
+    if workers == 0 and not scheduler:
+        result.workers = 1
+        for cell in todo:
+            finished(cell, compute_cell(*cell, densities))
+        if want_cube:
+            cube_finished(cube_reference())
+    elif todo or want_cube:
+        from dask.distributed import as_completed
+        client, cluster = _client(scheduler, workers or os.cpu_count() or 1)
+        try:
+            result.workers = len(client.scheduler_info()["workers"])
+            futures = {client.submit(compute_cell, *cell, densities, pure=False): cell for cell in todo}
+            if want_cube:
+                futures[client.submit(cube_reference, pure=False)] = None
+            for future in as_completed(futures):
+                cell = futures[future]
+                if cell is None:
+                    cube_finished(future.result())
+                else:
+                    finished(cell, future.result())
+        finally:
+            client.close()
+            if cluster is not None:
+                cluster.close()
+    result.wall = time.perf_counter() - start
+    result.path = write_combined(out, cells, densities)
+    return result
