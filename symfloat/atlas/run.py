@@ -91,7 +91,7 @@ def _client(scheduler: str | None, workers: int):
             return Client(scheduler, timeout="20s"), None
         except (OSError, TimeoutError, ValueError) as exc:
             raise EnvironmentProblem(f"cannot reach the Dask scheduler at {scheduler[:80]!r}: {exc}") from None
-    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=":0",
                            silence_logs=logging.ERROR)
     return Client(cluster), cluster
 
@@ -101,8 +101,9 @@ def _name(cell) -> str:
 
 
 def build(out: Path, ba_values, ca_values, densities, scheduler: str | None = None, workers: int | None = None,
-          progress: bool = False) -> Build:
-    """Compute the missing cells of the grid into *out* and write ``atlas.parquet``."""
+          progress: bool = False, cell=compute_cell) -> Build:
+    """Compute the missing cells of the grid into *out* and write ``atlas.parquet``; *cell* computes
+    one cell, ``cell(b/a, c/a, densities) -> (rows, cost)``."""
     out = Path(out)
     cells = [(Fraction(ba), Fraction(ca)) for ca in ca_values for ba in ba_values]
     todo = [c for c in cells if not part_done(out, *c, densities)]
@@ -112,11 +113,11 @@ def build(out: Path, ba_values, ca_values, densities, scheduler: str | None = No
     bar = ProgressBar(len(todo) + want_cube, progress)
     start = time.perf_counter()
 
-    def finished(cell, value):
+    def finished(c, value):
         rows, cost = value
-        write_part(out, *cell, densities, rows)
-        result.costs[cell] = cost
-        bar.step(_name(cell))
+        write_part(out, *c, densities, rows)
+        result.costs[c] = cost
+        bar.step(_name(c))
 
     def cube_finished(value):
         write_atomic(reference, (json.dumps(value, indent=1, sort_keys=True) + "\n").encode())
@@ -124,8 +125,8 @@ def build(out: Path, ba_values, ca_values, densities, scheduler: str | None = No
 
     if workers == 0 and not scheduler:
         result.workers = 1
-        for cell in todo:
-            finished(cell, compute_cell(*cell, densities))
+        for c in todo:
+            finished(c, cell(*c, densities))
         if want_cube:
             cube_finished(cube_reference())
     elif todo or want_cube:
@@ -133,15 +134,14 @@ def build(out: Path, ba_values, ca_values, densities, scheduler: str | None = No
         client, cluster = _client(scheduler, workers or os.cpu_count() or 1)
         try:
             result.workers = len(client.scheduler_info()["workers"])
-            futures = {client.submit(compute_cell, *cell, densities, pure=False): cell for cell in todo}
+            futures = {client.submit(cell, *c, densities, pure=False): c for c in todo}
             if want_cube:
                 futures[client.submit(cube_reference, pure=False)] = None
             for future in as_completed(futures):
-                cell = futures[future]
-                if cell is None:
+                if futures[future] is None:
                     cube_finished(future.result())
                 else:
-                    finished(cell, future.result())
+                    finished(futures[future], future.result())
         finally:
             client.close()
             if cluster is not None:
