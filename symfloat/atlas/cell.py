@@ -27,13 +27,14 @@ __all__ = ["compute_cell", "boundaries"]
 
 def boundaries(thresholds, lo: float, hi: float) -> list[dict]:
     """The thresholds strictly inside ``(lo, hi)`` grouped by density: thresholds whose densities
-    differ by no more than their errors (plus 1e-12) are one boundary, at the middle of the group,
-    its error the group's half-width plus the largest error in it."""
+    differ by no more than the smaller of their errors (plus 1e-12) are one boundary (a threshold
+    with a large error estimate does not swallow its neighbours), at the middle of the group, its
+    error the group's half-width plus the largest error in it."""
     inside = sorted((t for t in thresholds if lo < t.density < hi), key=lambda t: (t.density, t.label, t.change))
     groups = []
     for t in inside:
         last = groups[-1][-1] if groups else None
-        if last is not None and t.density - last.density <= t.bracket + last.bracket + 1e-12:
+        if last is not None and t.density - last.density <= min(t.bracket, last.bracket) + 1e-12:
             groups[-1].append(t)
         else:
             groups.append([t])
@@ -78,7 +79,8 @@ def _failure_row(ba, ca, body, message) -> dict:
 def compute_cell(ba: Fraction, ca: Fraction, densities) -> tuple[list[dict], dict]:
     """The rows of the cell ``b/a = ba, c/a = ca`` swept over *densities*, and its cost
     ``{"seconds", "thresholds", "intervals"}`` (measured, kept out of the rows).  A self-check of the
-    solver that fails (an index sum that does not close) makes one row with the failure."""
+    solver that fails (an index sum that does not close) in the sweep makes one row with the failure
+    (``interval`` null); at an interval's sample, that row carries it."""
     start = time.perf_counter()
     body, dims = cell_body(ba, ca)
     densities = [Fraction(s) for s in densities]
@@ -105,24 +107,28 @@ def _rows(ba, ca, body, dims, densities) -> list[dict]:
     for k in range(len(ends) - 1):
         a, b = ends[k], ends[k + 1]
         sample = (a["density"] + b["density"]) / 2
-        solution = solve(make_scene(body, Fraction(sample), dims))
-        stable = _stable_classes(solution)
+        try:
+            solution = solve(make_scene(body, Fraction(sample), dims))
+            failure, stable, predictions = None, _stable_classes(solution), _predictions(solution)
+            index = solution.checks.get("poincare_hopf_index_sum")
+        except SymfloatError as exc:                    # the solver's self-check failed at this sample
+            failure, stable, predictions, index = f"{type(exc).__name__}: {exc}", [], [], None
         labels = sorted({c["position"] for c in stable})
         inside = [row for s, row in zip(diagram.densities, diagram.stable)
                   if a["density"] + a["error"] < s < b["density"] - b["error"]]
         rows.append({
             "b_a": float(ba), "c_a": float(ca), "b_a_exact": str(ba), "c_a_exact": str(ca), "body": body,
-            "failure": None, "interval": k,
+            "failure": failure, "interval": k,
             "s_from": a["density"], "s_from_error": a["error"], "s_to": b["density"], "s_to_error": b["error"],
             "from_changes": [{"position": c["position"], "change": c["change"], "note": c["note"],
                               "sources": c["sources"]} for c in a["changes"]],
             "sample_density": sample, "stable": stable, "stable_classes": len(stable),
             "stable_positions": (None if any(c["copies"] is None for c in stable)
                                  else sum(c["copies"] for c in stable)),
-            "index_sum": solution.checks.get("poincare_hopf_index_sum"),
+            "index_sum": index,
             "sweep_points": len(inside), "sweep_agrees": all(sorted(row) == labels for row in inside),
             "duality_holds": mirrored and not unpaired, "thresholds_without_dual": unpaired,
             "sources_not_found": missing,
-            "predictions": _predictions(solution),
+            "predictions": predictions,
         })
     return rows

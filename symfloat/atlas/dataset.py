@@ -2,13 +2,15 @@
 
 ``DIR/parts/b<b/a>-c<c/a>.parquet`` holds a cell's rows (:mod:`symfloat.atlas.cell`); it is
 written atomically (a temporary file renamed over it), so a killed run leaves whole parts only,
-and a part whose recorded sweep equals the requested one is not computed again.
+and a part that records the requested sweep and the same code (:func:`code_stamp`) is not
+computed again.
 ``DIR/atlas.parquet`` is every cell's rows in grid order (c/a, then b/a, then the interval),
 written when every cell is there.  The data hold no time and no date: the same grid gives the
 same bytes (for one pyarrow version).
 """
 from __future__ import annotations
 
+import functools
 import io
 import json
 from fractions import Fraction
@@ -18,8 +20,9 @@ import pyarrow as pa
 import pyarrow.parquet as pq
 
 from ..report.files import write_atomic
+from ..report.stamp import digest, package_digest
 
-__all__ = ["SCHEMA", "FORMAT", "part_path", "part_done", "write_part", "read_part", "write_combined",
+__all__ = ["SCHEMA", "FORMAT", "code_stamp", "solver_stamp", "part_path", "part_done", "write_part", "read_part", "write_combined",
            "read_atlas", "table_of"]
 
 FORMAT = 1
@@ -55,8 +58,23 @@ def part_path(out: Path, ba: Fraction, ca: Fraction) -> Path:
     return Path(out) / "parts" / f"b{_slug(ba)}-c{_slug(ca)}.parquet"
 
 
+@functools.cache
+def solver_stamp() -> str:
+    """Digest of the solver, the geometry, the model and the derivations (predictions, thresholds)."""
+    return package_digest("solver", "geometry", "model", "derivations")
+
+
+@functools.cache
+def code_stamp() -> str:
+    """Digest of the code a cell's rows depend on: the atlas's cell, grid and data modules and
+    :func:`solver_stamp`."""
+    here = Path(__file__).parent
+    return digest(*(here / f for f in ("cell.py", "grid.py", "dataset.py")), solver_stamp())
+
+
 def _meta(ba, ca, densities) -> dict:
-    return {"format": FORMAT, "b_a": str(ba), "c_a": str(ca), "densities": [str(Fraction(s)) for s in densities]}
+    return {"format": FORMAT, "code": code_stamp(), "b_a": str(ba), "c_a": str(ca),
+            "densities": [str(Fraction(s)) for s in densities]}
 
 
 def table_of(rows: list[dict], metadata: dict | None = None) -> pa.Table:
@@ -85,7 +103,7 @@ def _metadata(path: Path) -> dict | None:
 
 
 def part_done(out: Path, ba, ca, densities) -> bool:
-    """Whether the cell's part exists, is readable and records the same sweep and format."""
+    """Whether the cell's part exists, is readable and records the same sweep, format and code."""
     path = part_path(out, ba, ca)
     return path.is_file() and _metadata(path) == _meta(ba, ca, densities)
 
@@ -97,7 +115,7 @@ def read_part(out: Path, ba, ca) -> pa.Table:
 def write_combined(out: Path, cells, densities) -> Path:
     """``DIR/atlas.parquet``: the parts of *cells* (in the order given) in one file."""
     table = pa.concat_tables([read_part(out, ba, ca) for ba, ca in cells])
-    meta = {"format": FORMAT, "b_a": sorted({str(ba) for ba, _ in cells}, key=Fraction),
+    meta = {"format": FORMAT, "code": code_stamp(), "b_a": sorted({str(ba) for ba, _ in cells}, key=Fraction),
             "c_a": sorted({str(ca) for _, ca in cells}, key=Fraction),
             "densities": [str(Fraction(s)) for s in densities]}
     path = Path(out) / "atlas.parquet"

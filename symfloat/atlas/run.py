@@ -24,7 +24,7 @@ from pathlib import Path
 from ..errors import EnvironmentProblem
 from ..report.files import write_atomic
 from .cell import compute_cell
-from .dataset import part_done, write_combined, write_part
+from .dataset import part_done, solver_stamp, write_combined, write_part
 
 __all__ = ["Build", "build", "cube_reference", "CUBE_REFERENCE", "ProgressBar"]
 
@@ -57,7 +57,7 @@ def cube_reference() -> dict:
     """The thresholds of ``symfloat phase cube`` (its default sweep of 48 densities)."""
     from ..solver.phase import phase_diagram
     diagram = phase_diagram("cube")
-    return {"command": "symfloat phase cube", "steps": 48, "duality_holds": bool(diagram.duality_ok),
+    return {"command": "symfloat phase cube", "steps": 48, "code": solver_stamp(), "duality_holds": bool(diagram.duality_ok),
             "thresholds": [{"density": t.density, "error": t.bracket, "position": t.label, "change": t.change}
                            for t in diagram.thresholds]}
 
@@ -96,6 +96,14 @@ def _client(scheduler: str | None, workers: int):
     return Client(cluster), cluster
 
 
+def _stale(reference: Path) -> bool:
+    """Whether the cube's reference is missing or was computed by other solver code."""
+    try:
+        return json.loads(reference.read_text(encoding="utf-8")).get("code") != solver_stamp()
+    except (OSError, ValueError):
+        return True
+
+
 def _name(cell) -> str:
     return f"b/a = {cell[0]}, c/a = {cell[1]}"
 
@@ -109,7 +117,7 @@ def build(out: Path, ba_values, ca_values, densities, scheduler: str | None = No
     todo = [c for c in cells if not part_done(out, *c, densities)]
     result = Build(cells, todo, [c for c in cells if c not in todo])
     reference = out / CUBE_REFERENCE
-    want_cube = (Fraction(1), Fraction(1)) in cells and not reference.is_file()
+    want_cube = (Fraction(1), Fraction(1)) in cells and _stale(reference)
     bar = ProgressBar(len(todo) + want_cube, progress)
     start = time.perf_counter()
 
