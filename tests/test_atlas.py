@@ -199,3 +199,20 @@ def test_slice_figure_is_deterministic():
     first = slice_png(rows, meta, F(20), reference)
     assert first[:8] == b"\x89PNG\r\n\x1a\n" and first == slice_png(rows, meta, F(20), reference)
     assert b"Software" not in first and b"Creation" not in first
+
+
+@pytest.mark.parametrize("lopsided, status", [(False, 0), (True, 1)])
+def test_command_fails_when_a_check_fails(lopsided, status, tmp_path, capsys):
+    """Cells already written are not computed again; the checks run on them, are written to checks.md
+    and printed, and a failed one (here the duality of a lopsided cell) makes the exit status 1."""
+    from symfloat.atlas.dataset import write_part
+    densities = density_grid("1/10:9/10:3")
+    end = 0.72 if lopsided else 0.7
+    write_part(tmp_path, F(2), F(3), densities, [_row(2, 3, 0, 0.1, 0.3, [FACE_X, FACE_Y]),
+                                                _row(2, 3, 1, 0.3, end, [FACE_X]),
+                                                _row(2, 3, 2, end, 0.9, [FACE_X, FACE_Y])])
+    assert main(["atlas", "box", "--ba", "2", "--ca", "3", "--density", "1/10:9/10:3", "--out", str(tmp_path),
+                 "--workers", "0", "--quiet"]) == status
+    out = capsys.readouterr().out
+    assert ("| duality s <-> 1 - s | yes | FAILS |" in out) == lopsided
+    assert (tmp_path / "checks.md").read_text(encoding="utf-8") == out
