@@ -216,3 +216,26 @@ def test_command_fails_when_a_check_fails(lopsided, status, tmp_path, capsys):
     out = capsys.readouterr().out
     assert ("| duality s <-> 1 - s | yes | FAILS |" in out) == lopsided
     assert (tmp_path / "checks.md").read_text(encoding="utf-8") == out
+
+
+def test_existing_scheduler_by_address(tmp_path):
+    """--scheduler: the cells go to a running cluster (here one started for the test), whose workers
+    report back; the parts are those of the serial build."""
+    import cloudpickle
+    import sys
+    from dask.distributed import LocalCluster
+    cloudpickle.register_pickle_by_value(sys.modules[__name__])
+    grid = ([F(3, 2)], [F(3), F(4)], density_grid("2/5:3/5:3"))
+    with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=":0") as cluster:
+        remote = build(tmp_path / "remote", *grid, scheduler=cluster.scheduler_address, cell=_one_scene_cell)
+    serial = build(tmp_path / "serial", *grid, workers=0, cell=_one_scene_cell)
+    assert remote.workers == 2 and remote.path.read_bytes() == serial.path.read_bytes()
+
+
+@pytest.mark.slow
+def test_unreachable_scheduler_is_one_line(tmp_path, capsys):
+    """(slow: the client waits for its connection timeout, 10 s)"""
+    assert main(["atlas", "box", "--ba", "2", "--ca", "3", "--density", "1/4:3/4:3", "--out", str(tmp_path),
+                 "--scheduler", "tcp://127.0.0.1:9", "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert "cannot reach the Dask scheduler" in err and err.count("\n") == 1

@@ -88,7 +88,7 @@ def _client(scheduler: str | None, workers: int):
     from dask.distributed import Client, LocalCluster
     if scheduler:
         try:
-            return Client(scheduler, timeout="20s"), None
+            return Client(scheduler, timeout="10s"), None
         except (OSError, TimeoutError, ValueError) as exc:
             raise EnvironmentProblem(f"cannot reach the Dask scheduler at {scheduler[:80]!r}: {exc}") from None
     cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=":0",
