@@ -239,3 +239,13 @@ def test_unreachable_scheduler_is_one_line(tmp_path, capsys):
                  "--scheduler", "tcp://127.0.0.1:9", "--quiet"]) == 2
     err = capsys.readouterr().err
     assert "cannot reach the Dask scheduler" in err and err.count("\n") == 1
+
+
+def test_renamed_box_check():
+    """1 x 2 x 1 and 1 x 1 x 2 are one box: their boundaries must agree within the errors."""
+    meta = {"b_a": ["1", "2"], "c_a": ["1", "2"], "densities": ["1/10", "9/10"]}
+    one = [_row(2, 1, 0, 0.1, 0.3, [FACE_X]), _row(2, 1, 1, 0.3, 0.9, [FACE_X])]
+    other = [_row(1, 2, 0, 0.1, 0.3, [FACE_X]), _row(1, 2, 1, 0.3, 0.9, [FACE_X])]
+    assert _check(run_checks(one + other, meta), "same box").ok
+    other[0]["s_to"] = other[1]["s_from"] = 0.3 + 1e-8
+    assert not _check(run_checks(one + other, meta), "same box").ok

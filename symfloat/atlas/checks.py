@@ -10,6 +10,8 @@ Failing checks (the command exits 1 when one fails):
   its dual (the phase machinery's check), and the intervals mirror:
   boundary k at ``1 -`` boundary m-1-k within their errors, the same stable positions in
   interval k and in interval n-1-k (the box turned upside down is the same box);
+* **same box, edges renamed**: two cells that are one box (1 x 2 x 1 and 1 x 1 x 2) have the same
+  boundaries within their errors and the same number of stable classes between them;
 * **cube**: the cell b/a = c/a = 1 has the thresholds of ``symfloat phase cube`` (48 densities)
   inside the atlas's density range, and no other, each within the two errors;
 * **long box** (Scheeffer IX's printed tables, :func:`tables_prediction` in
@@ -107,6 +109,32 @@ def _check_duality(cells) -> Check:
     good = _good(cells)
     return Check("duality s <-> 1 - s", True, not bad, f"{len(good) - len({b.split(':')[0] for b in bad})} of "
                  f"{len(good)} cells dual", bad)
+
+
+def _check_permutations(cells) -> Check:
+    """Cells that are one box with its edges named in another order (1 x 2 x 1 and 1 x 1 x 2) must
+    have the same boundaries within their errors and the same number of stable classes between."""
+    same = {}
+    for c in _good(cells):
+        same.setdefault(tuple(sorted((Fraction(1), *c))), []).append(c)
+    pairs = [(g[0], other) for g in same.values() for other in g[1:]]
+    bad = []
+    for first, second in pairs:
+        a, b = cells[first], cells[second]
+        ends_a = [(r["s_from"], r["s_from_error"]) for r in a[1:]]
+        ends_b = [(r["s_from"], r["s_from_error"]) for r in b[1:]]
+        if len(ends_a) != len(ends_b):
+            bad.append(f"{_cell_name(first)} has {len(ends_a)} boundaries, {_cell_name(second)} {len(ends_b)}")
+            continue
+        for (x, ex), (y, ey) in zip(ends_a, ends_b):
+            if abs(x - y) > ex + ey + 1e-12:
+                bad.append(f"{_cell_name(first)}: boundary at {x:.13f} ± {ex:.0e}; {_cell_name(second)}: "
+                           f"{y:.13f} ± {ey:.0e} (differ by {abs(x - y):.1e})")
+        if [r["stable_classes"] for r in a] != [r["stable_classes"] for r in b]:
+            bad.append(f"{_cell_name(first)} and {_cell_name(second)}: different numbers of stable classes")
+    summary = (f"{len(pairs)} pairs of cells that are the same box with its edges renamed" if pairs else
+               "not applicable: no two cells are the same box")
+    return Check("same box, edges renamed", True, not bad, summary, bad)
 
 
 def _check_cube(cells, reference, lo, hi) -> Check:
@@ -253,7 +281,7 @@ def run_checks(rows, meta, reference=None) -> list[Check]:
     cells = _cells(rows)
     densities = [float(Fraction(s)) for s in meta["densities"]]
     return [_check_cells(cells), _check_index(cells), _check_sweep(cells), _check_duality(cells),
-            _check_cube(cells, reference, densities[0], densities[-1]), _check_long(cells, densities[0], densities[-1])] + _predictions(cells)
+            _check_permutations(cells), _check_cube(cells, reference, densities[0], densities[-1]), _check_long(cells, densities[0], densities[-1])] + _predictions(cells)
 
 
 def checks_markdown(checks, meta, limit: int = 40) -> str:
