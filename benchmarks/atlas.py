@@ -66,8 +66,10 @@ def _fit(costs, t_solve, n_densities):
 
 
 def section() -> str:
+    load_before = os.getloadavg()[0]
     t_solve = _solve_time()
     one, two = _run(1), _run(2)
+    load_after = os.getloadavg()[0]
     n = len(GRID[2])
     costs = list(one.costs.values()) + list(two.costs.values())
     fixed, per = _fit(costs, t_solve, n)
@@ -82,8 +84,9 @@ def section() -> str:
     efficiency = one.wall / (2 * two.wall)
     big_cells = 40 * 40
     lines = [BEGIN, "", "## What it costs", "",
-             f"Measured by `python benchmarks/atlas.py` on {platform.machine()}, {os.cpu_count()} cores (shared with "
-             f"other work while it ran), Python {platform.python_version()}: a 2 × 2 atlas (b/a ∈ {{3/2, 3}}, "
+             f"Measured by `python benchmarks/atlas.py` on {platform.machine()}, {os.cpu_count()} cores shared with "
+             f"other work (load average {load_before:.1f} before, {load_after:.1f} after), Python "
+             f"{platform.python_version()}: a 2 × 2 atlas (b/a ∈ {{3/2, 3}}, "
              f"c/a ∈ {{2, 5}}, {n} densities 1/20 … 19/20) built from nothing on a local Dask cluster of 1 and of 2 "
              "workers. Times vary between machines and with the load; the atlas does not.", "",
              "| workers | wall (s) | cells | worker time per cell (s): median, max | thresholds per cell (mean) |",
