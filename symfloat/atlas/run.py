@@ -26,7 +26,7 @@ from ..report.files import write_atomic
 from .cell import compute_cell
 from .dataset import part_done, solver_stamp, write_combined, write_part
 
-__all__ = ["Build", "build", "cube_reference", "CUBE_REFERENCE", "ProgressBar"]
+__all__ = ["Build", "build", "timed", "cube_reference", "CUBE_REFERENCE", "ProgressBar"]
 
 CUBE_REFERENCE = "parts/cube-reference.json"
 
@@ -36,7 +36,7 @@ class Build:
     cells: list                 # (b/a, c/a) in grid order
     computed: list              # the cells computed in this run
     skipped: list               # the cells found written
-    costs: dict = field(default_factory=dict)       # cell -> {"seconds", "thresholds", "intervals"}
+    costs: dict = field(default_factory=dict)       # cell -> {"seconds", "cpu_seconds", "thresholds", "intervals"}
     wall: float = 0.0
     workers: int = 0
     path: Path | None = None
@@ -47,10 +47,10 @@ class Build:
         if not self.costs:
             return head
         seconds = [c["seconds"] for c in self.costs.values()]
+        cpu = [c["cpu_seconds"] for c in self.costs.values()]
         thresholds = sum(c["thresholds"] for c in self.costs.values())
-        per = f", {sum(seconds) / thresholds:.1f} s per threshold located" if thresholds else ""
-        return (head + f"; per cell {statistics.median(seconds):.1f} s median, {max(seconds):.1f} s max "
-                f"(worker time){per} ({thresholds} thresholds)")
+        return (head + f"; per cell {statistics.median(seconds):.1f} s median, {max(seconds):.1f} s max on its "
+                f"worker, {statistics.median(cpu):.1f} s processor time median; {thresholds} thresholds")
 
 
 def cube_reference() -> dict:
@@ -96,6 +96,14 @@ def _client(scheduler: str | None, workers: int):
     return Client(cluster), cluster
 
 
+def timed(cell, ba, ca, densities):
+    """``cell(ba, ca, densities)`` with the processor time it took added to its cost (``cpu_seconds``:
+    unlike the wall time, it does not grow with other work on a shared machine)."""
+    start = time.process_time()
+    rows, cost = cell(ba, ca, densities)
+    return rows, {**cost, "cpu_seconds": time.process_time() - start}
+
+
 def _stale(reference: Path) -> bool:
     """Whether the cube's reference is missing or was computed by other solver code."""
     try:
@@ -134,7 +142,7 @@ def build(out: Path, ba_values, ca_values, densities, scheduler: str | None = No
     if workers == 0 and not scheduler:
         result.workers = 1
         for c in todo:
-            finished(c, cell(*c, densities))
+            finished(c, timed(cell, *c, densities))
         if want_cube:
             cube_finished(cube_reference())
     elif todo or want_cube:
@@ -142,7 +150,7 @@ def build(out: Path, ba_values, ca_values, densities, scheduler: str | None = No
         client, cluster = _client(scheduler, workers or os.cpu_count() or 1)
         try:
             result.workers = len(client.scheduler_info()["workers"])
-            futures = {client.submit(cell, *c, densities, pure=False): c for c in todo}
+            futures = {client.submit(timed, cell, *c, densities, pure=False): c for c in todo}
             if want_cube:
                 futures[client.submit(cube_reference, pure=False)] = None
             for future in as_completed(futures):
