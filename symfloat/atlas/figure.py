@@ -5,7 +5,7 @@ bounds, not to the sweep's spacing) and coloured by the number of stable classes
 the box's symmetry).  On top: the thresholds of Scheeffer IX's printed tables for the box turned
 about its c edge (cross-section 1 x b/a; the lines where the tables' number of stable positions
 changes, evaluated on a fine grid), and the cube's thresholds (``symfloat phase cube``) as dotted
-lines.  PNG through Agg, without software or date metadata: the same atlas gives the same bytes.
+lines.  A cell or interval whose solver self-check failed is left white.  PNG through Agg, without software or date metadata: the same atlas gives the same bytes.
 """
 from __future__ import annotations
 
@@ -49,7 +49,7 @@ def slice_png(rows, meta, ca: Fraction, reference=None) -> bytes:
     top = max([r["stable_classes"] for r in mine] + [3])
     cmap = ListedColormap(plt.get_cmap("viridis", top + 1)(range(top + 1)))
     norm = BoundaryNorm([k - 0.5 for k in range(top + 2)], top + 1)
-    fig, ax = plt.subplots(figsize=(6.4, 4.8))
+    fig, ax = plt.subplots(figsize=(6.4, 5.4))
     for r in mine:
         k = ba.index(Fraction(r["b_a_exact"]))
         ax.add_patch(Rectangle((edges[k], r["s_from"]), edges[k + 1] - edges[k], r["s_to"] - r["s_from"],
@@ -75,11 +75,13 @@ def slice_png(rows, meta, ca: Fraction, reference=None) -> bytes:
     ax.set_xlabel("b/a")
     ax.set_ylabel("density s (water = 1)")
     ax.set_title(f"box 1 × b/a × {ca}: number of stable positions (classes up to symmetry)", fontsize=9)
-    ax.legend(loc="upper right", fontsize=7, facecolor="0.3", labelcolor="white", framealpha=0.8)
+    ax.add_patch(Rectangle((0, 0), 0, 0, facecolor="white", edgecolor="0.5", label="no data (a solver self-check failed)"))
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, fontsize=7, facecolor="0.45",
+              labelcolor="white", framealpha=1.0)
     bar = fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, ticks=range(top + 1))
     bar.set_label("stable classes")
     buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=100, metadata={"Software": None})
+    fig.savefig(buffer, format="png", dpi=100, metadata={"Software": None}, bbox_inches="tight")
     plt.close(fig)
     return buffer.getvalue()
 
