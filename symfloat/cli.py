@@ -325,7 +325,8 @@ def _atlas_args(p):
     p.add_argument("--workers", help="worker processes of the local cluster (default: the machine's cores); "
                                      "0 computes here without Dask")
     p.add_argument("--figures", type=Path, help="directory for the slice figures atlas-c<c/a>.png")
-    p.epilog = ("Cells already written in --out with the same density sweep are skipped (a stopped run resumes). "
+    p.epilog = ("Cells already written in --out by the same code with the same density sweep are skipped (a "
+                "stopped run resumes). "
                 f"Needs the optional dependencies: pip install 'symfloat[atlas]'. {EXIT_STATUS}.")
 
 
