@@ -92,7 +92,8 @@ def section() -> str:
              f"{platform.python_version()}: a 2 × 2 atlas (b/a ∈ {{3/2, 3}}, "
              f"c/a ∈ {{2, 5}}, {n} densities 1/20 … 19/20) built from nothing on a local Dask cluster of 1 and of 2 "
              "workers. Times vary between machines and with the load; the atlas does not.", "",
-             "| workers | wall (s) | cells | per cell on its worker (s): median, max | processor time per cell (s): median | thresholds per cell (mean) |",
+             "| workers | wall (s) | cells | per cell on its worker (s): median, max "
+             "| processor time per cell (s): median | thresholds per cell (mean) |",
              "|---|---|---|---|---|---|"]
     for result in (one, two):
         secs = [c["seconds"] for c in result.costs.values()]
@@ -122,11 +123,11 @@ def section() -> str:
         hours = math.ceil(big_cells / w) * big_cell / 3600
         lines.append(f"| {w} | {hours:.1f} h |")
     rows_big = big_cells * intervals
+    part = statistics.median(p.stat().st_size for p in (ROOT / "docs" / "atlas" / "parts").glob("*.parquet"))
     lines += ["", f"Data: the committed atlas holds {len(rows)} rows in {size / 1024:.0f} KiB "
               f"({per_row:.0f} bytes a row, Parquet with zstd); at {intervals:.1f} rows a cell the 40 × 40 atlas is "
               f"about {rows_big:.0f} rows, {rows_big * per_row / 2 ** 20:.1f} MiB combined, plus the part files "
-              f"(one per cell, about {statistics.median(p.stat().st_size for p in (ROOT / 'docs' / 'atlas' / 'parts').glob('*.parquet')) / 1024:.0f} KiB each "
-              f"with the schema: {big_cells * statistics.median(p.stat().st_size for p in (ROOT / 'docs' / 'atlas' / 'parts').glob('*.parquet')) / 2 ** 20:.0f} MiB). "
+              f"(one per cell, about {part / 1024:.0f} KiB each with the schema: {big_cells * part / 2 ** 20:.0f} MiB). "
               "The number of rows does not grow with the densities; more densities find more narrow windows.",
               "", END]
     return "\n".join(lines)

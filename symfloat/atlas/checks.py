@@ -250,7 +250,8 @@ def _check_long(cells, lo, hi) -> Check:
                            f"{[round(math.degrees(p), 4) for p in printed]}°, the atlas "
                            f"{[round(math.degrees(p), 4) for p in found]}°")
     summary = (f"{cells_long} long cells (longest edge >= {LONG} x the middle one): {checked} interval samples "
-               f"and every threshold of the tables against the atlas, {len(bad)} disagreements" if checked else f"not applicable: no cell has its longest edge "
+               f"and every threshold of the tables against the atlas, {len(bad)} disagreements" if checked
+               else f"not applicable: no cell has its longest edge "
                f">= {LONG} x the middle one")
     return Check("long box (Scheeffer IX)", True, not bad, summary, bad)
 

@@ -5,7 +5,8 @@ bounds, not to the sweep's spacing) and coloured by the number of stable classes
 the box's symmetry).  On top: the thresholds of Scheeffer IX's printed tables for the box turned
 about its c edge (cross-section 1 x b/a; the lines where the tables' number of stable positions
 changes, evaluated on a fine grid), and the cube's thresholds (``symfloat phase cube``) as dotted
-lines.  A cell or interval whose solver self-check failed is left white.  PNG through Agg, without software or date metadata: the same atlas gives the same bytes.
+lines.  A cell or interval whose solver self-check failed is left white.  PNG through Agg, without
+software or date metadata: the same atlas gives the same bytes.
 """
 from __future__ import annotations
 
@@ -75,7 +76,8 @@ def slice_png(rows, meta, ca: Fraction, reference=None) -> bytes:
     ax.set_xlabel("b/a")
     ax.set_ylabel("density s (water = 1)")
     ax.set_title(f"box 1 × b/a × {ca}: number of stable positions (classes up to symmetry)", fontsize=9)
-    ax.add_patch(Rectangle((0, 0), 0, 0, facecolor="white", edgecolor="0.5", label="no data (a solver self-check failed)"))
+    ax.add_patch(Rectangle((0, 0), 0, 0, facecolor="white", edgecolor="0.5",
+                           label="no data (a solver self-check failed)"))
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, fontsize=7, facecolor="0.45",
               labelcolor="white", framealpha=1.0)
     bar = fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, ticks=range(top + 1))

@@ -57,7 +57,8 @@ def cube_reference() -> dict:
     """The thresholds of ``symfloat phase cube`` (its default sweep of 48 densities)."""
     from ..solver.phase import phase_diagram
     diagram = phase_diagram("cube")
-    return {"command": "symfloat phase cube", "steps": 48, "code": solver_stamp(), "duality_holds": bool(diagram.duality_ok),
+    return {"command": "symfloat phase cube", "steps": 48, "code": solver_stamp(),
+            "duality_holds": bool(diagram.duality_ok),
             "thresholds": [{"density": t.density, "error": t.bracket, "position": t.label, "change": t.change}
                            for t in diagram.thresholds]}
 
