@@ -172,7 +172,8 @@ def test_dask_plumbing_equals_serial(tmp_path):
 @pytest.mark.slow
 def test_dask_equals_serial_cell_for_cell(tmp_path):
     """A 2 x 2 atlas on a local cluster of two workers: every part file is byte for byte the one
-    computed serially in this process, and so is the combined dataset."""
+    computed serially in this process, and so is the combined dataset (the cell 1 x 1 x 3/2 fails the
+    solver's index check in both, identically: a failure is data too)."""
     grid = ([F(1), F(2)], [F(3, 2), F(3)], density_grid("1/4:3/4:3"))
     on_dask = build(tmp_path / "dask", *grid, workers=2)
     serial = build(tmp_path / "serial", *grid, workers=0)
@@ -183,7 +184,7 @@ def test_dask_equals_serial_cell_for_cell(tmp_path):
     again = build(tmp_path / "dask", *grid, workers=2)                   # resumable: nothing left to do
     assert again.computed == [] and again.path.read_bytes() == serial.path.read_bytes()
     rows, meta = read_atlas(serial.path)
-    assert [(r["b_a_exact"], r["c_a_exact"]) for r in rows if r["interval"] == 0] == \
+    assert list(dict.fromkeys((r["b_a_exact"], r["c_a_exact"]) for r in rows)) == \
         [("1", "3/2"), ("2", "3/2"), ("1", "3"), ("2", "3")]
     assert all(math.isclose(r["s_from"] + r["s_to"], 1.0) for r in rows if r["interval"] == 0 and
                len([x for x in rows if x["b_a_exact"] == r["b_a_exact"] and x["c_a_exact"] == r["c_a_exact"]]) == 1)
