@@ -7,6 +7,8 @@
     symfloat scene BODY --density S [--dims ...] [--sides N] [--polygon "x,y ..."] [--format table|json]
                    [--plot FILE.png]
     symfloat phase cube|box [--dims a,b,c] [--steps N] [--format table|json] [--plot FILE.png]
+    symfloat atlas box --ba A:B:N --ca A:B:N --density A:B:N --out DIR [--scheduler ADDRESS] [--workers N]
+                   [--figures DIR]
     symfloat bench [--quick] [--output DIR]
     symfloat coverage [SOURCE] [--format table|json] [--readings] [--write] [--update-baseline]
     symfloat site [--out DIR]
@@ -36,7 +38,8 @@ from pathlib import Path
 
 from .engine.cache import ReportCache
 from .engine.runner import Progress, verify
-from .errors import EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, InputError, SymfloatError
+from .errors import (EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, EnvironmentProblem, InputError,
+                     SymfloatError)
 from .project import GOLDEN, in_project, library_folders, project_root
 from .registry import load, providing, select
 from .report.errata import errata_json, errata_markdown
@@ -312,6 +315,56 @@ def _phase(args) -> int:
     return EXIT_OK
 
 
+def _atlas_args(p):
+    p.add_argument("body", help="box (edges 1, b/a, c/a; the cell b/a = c/a = 1 is the cube)")
+    p.add_argument("--ba", required=True, help="b/a: a grid A:B:N (N values from A to B), a list v1,v2,... or a value")
+    p.add_argument("--ca", required=True, help="c/a: the same forms")
+    p.add_argument("--density", required=True, help="the sweep of densities, A:B:N or a list, symmetric about 1/2")
+    p.add_argument("--out", required=True, type=Path, help="directory: parts/ (one Parquet file per cell), "
+                                                          "atlas.parquet, checks.md")
+    p.add_argument("--scheduler", help="address of a running Dask scheduler (default: a local cluster)")
+    p.add_argument("--workers", help="worker processes of the local cluster (default: the machine's cores); "
+                                     "0 computes here without Dask")
+    p.add_argument("--figures", type=Path, help="directory for the slice figures atlas-c<c/a>.png")
+    p.epilog = ("Cells already written in --out by the same code with the same density sweep are skipped (a "
+                "stopped run resumes). "
+                f"Needs the optional dependencies: pip install 'symfloat[atlas]'. {EXIT_STATUS}.")
+
+
+def _scheduler(text):
+    if text is None:
+        return None
+    if not (0 < len(text) <= 200 and text.isascii() and text.isprintable() and " " not in text):
+        raise InputError(f"--scheduler is an address such as tcp://10.0.0.5:8786, not {text[:40]!r}")
+    return text
+
+
+def _atlas(args) -> int:
+    from .solver.bodies import SceneError, parse_whole
+    if args.body != "box":
+        raise SceneError(f"the atlas is drawn for the box, not {args.body[:40]!r}")
+    try:
+        import dask.distributed  # noqa: F401
+        import pyarrow  # noqa: F401
+    except ImportError as exc:
+        raise EnvironmentProblem(f"the atlas needs dask[distributed] and pyarrow ({exc.name} is missing): "
+                                 f"pip install 'symfloat[atlas]'") from None
+    from .atlas.command import run_atlas
+    from .atlas.grid import check_domain, density_grid, shape_grid
+
+    ba, ca, densities = shape_grid(args.ba, "--ba"), shape_grid(args.ca, "--ca"), density_grid(args.density)
+    check_domain(ba, ca, densities)
+    workers = None if args.workers is None else parse_whole(args.workers, "--workers", 0, 1024)
+    scheduler = _scheduler(args.scheduler)
+    if scheduler and workers is not None:
+        raise InputError("--workers sizes the local cluster; with --scheduler the cluster has its own workers")
+    writable_target(args.out / "atlas.parquet")
+    if args.figures is not None:
+        writable_target(args.figures / "atlas-c1.png")
+    return run_atlas(args.out, ba, ca, densities, scheduler, workers, args.figures, quiet=_quiet(args),
+                     say=lambda m: _say(args, m))
+
+
 def _bench_args(p):
     p.add_argument("--quick", action="store_true", help="a few derivations and methods (for tests)")
     p.add_argument("--derivations", action="store_true",
@@ -391,6 +444,7 @@ COMMANDS = {
     "run": Command("verify everything and write every report and notebook", _search_proofs_arg, _run),
     "scene": Command("every equilibrium of one body at one density", _scene_args, _scene),
     "phase": Command("stable positions against density, thresholds located", _phase_args, _phase),
+    "atlas": Command("the stability atlas of the box over (b/a, c/a, s), computed on Dask", _atlas_args, _atlas),
     "bench": Command("numerics benchmark: write docs/numerics.md and its figures", _bench_args, _bench),
     "coverage": Command("the coverage ledger: every math span and quantitative sentence quoted or waived; "
                         "with --readings the readings checked against the print", _coverage_args, _coverage),

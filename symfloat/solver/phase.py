@@ -415,16 +415,18 @@ def _annotate_families(thresholds) -> None:
             t.note = "end of a family of equilibria: error estimated, not bounded"
 
 
-def phase_diagram(body: str, dims=None, steps: int = 48, progress=None) -> PhaseDiagram:
-    """The stable positions on a sweep of *steps* densities, every threshold located, and the
-    thresholds of the sources: each one the sweep missed (outside it, or a window narrower than
-    its spacing) is looked for at the source's density +- 1e-6 before it is called a disagreement."""
+def phase_diagram(body: str, dims=None, steps: int = 48, progress=None, densities=None) -> PhaseDiagram:
+    """The stable positions on a sweep of *steps* densities (or the given increasing *densities*,
+    symmetric about 1/2 for the duality check), every threshold located, and the thresholds of the
+    sources: each one the sweep missed (outside it, or a window narrower than its spacing) is looked
+    for at the source's density +- 1e-6 before it is called a disagreement."""
     start = time.perf_counter()
     base = make_scene(body, "1/2", dims)
     poly = box(*base.dims)
     group = box_group(base.dims)
     scale = body_scale(base)
-    densities = [Fraction(k, steps + 1) for k in range(1, steps + 1)]
+    densities = ([Fraction(k, steps + 1) for k in range(1, steps + 1)] if densities is None
+                 else [Fraction(s) for s in densities])
     stable, solutions = [], []
     for i, s in enumerate(densities, 1):
         if progress:

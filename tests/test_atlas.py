@@ -1,0 +1,252 @@
+"""The stability atlas: grid input, boundaries, checks that fail when they should, Dask = serial."""
+from __future__ import annotations
+
+import math
+from fractions import Fraction as F
+from types import SimpleNamespace
+
+import pytest
+
+pytest.importorskip("pyarrow")
+pytest.importorskip("dask.distributed")
+
+from symfloat.atlas.cell import boundaries  # noqa: E402
+from symfloat.atlas.checks import run_checks  # noqa: E402
+from symfloat.atlas.dataset import part_path, read_atlas  # noqa: E402
+from symfloat.atlas.grid import density_grid, parse_grid  # noqa: E402
+from symfloat.atlas.run import build  # noqa: E402
+from symfloat.cli import main  # noqa: E402
+from symfloat.registry import load  # noqa: E402
+
+
+def test_grid_forms_are_exact():
+    assert parse_grid("1:2:5", "--ba") == [F(1), F(5, 4), F(3, 2), F(7, 4), F(2)]
+    assert parse_grid("0.5", "--ca") == [F(1, 2)]
+    assert density_grid("1/20:19/20:10")[4] == F(9, 20)
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["--ba", "1:2:x"], "count must be a whole number"),
+    (["--ba", "2:1:3"], "start must be smaller"),
+    (["--ba", "0:2:3"], "ratios must lie in"),
+    (["--ba", "1,3,2"], "increasing order"),
+    (["--ba", "1::3"], "end must be a number"),
+    (["--density", "1/10:8/10:5"], "symmetric about 1/2"),
+    (["--density", "0:1:5"], "strictly between 0 and 1"),
+    (["--density", "1/2"], "at least 2 values"),
+    (["--workers", "-1"], "--workers must be a whole number"),
+    (["--ca", "1e4"], "ratios must lie in"),
+    (["--ba", "1/1000", "--density", "1/100:99/100:3"], "outside the range the solver handles"),
+])
+def test_bad_grids_are_one_line_and_exit_2(argv, words, capsys, tmp_path):
+    base = {"--ba": "1", "--ca": "2", "--density": "1/4:3/4:3", "--out": str(tmp_path / "a")}
+    for k in range(0, len(argv), 2):
+        base[argv[k]] = argv[k + 1]
+    args = ["atlas", "box"] + [x for kv in base.items() for x in kv]
+    assert main(args) == 2
+    err = capsys.readouterr().err
+    assert words in err and err.count("\n") == 1
+    assert not (tmp_path / "a").exists()            # nothing computed, nothing written
+
+
+def test_atlas_is_for_the_box(capsys, tmp_path):
+    assert main(["atlas", "cylinder", "--ba", "1", "--ca", "2", "--density", "1/4:3/4:3",
+                 "--out", str(tmp_path)]) == 2
+
+
+def _t(density, bracket, label, change="stable above"):
+    return SimpleNamespace(density=density, bracket=bracket, label=label, change=change, note="", source=[])
+
+
+def test_thresholds_at_one_density_are_one_boundary():
+    """A pitchfork's parent and child at the same density within their errors make one boundary;
+    thresholds outside the swept range are left out."""
+    ts = [_t(0.3, 1e-13, "face z up", "stable below"), _t(0.3 + 5e-14, 1e-13, "tilted in the x-z plane"),
+          _t(0.31, 1e-13, "tilted in the x-z plane", "stable below"), _t(0.05, 1e-13, "face y up")]
+    b = boundaries(ts, 0.1, 0.9)
+    assert [len(x["changes"]) for x in b] == [2, 1]
+    assert b[0]["error"] >= 1e-13 and abs(b[0]["density"] - 0.3) < 1e-13
+
+
+def _row(ba, ca, k, s_from, s_to, positions, **extra):
+    stable = [{"position": p, "up": up, "tilt_deg": 0.0, "family": "isolated", "g_above_b": 0.0,
+               "min_eigenvalue": 1.0, "error_rad": 1e-15, "copies": 2, "waterplane": "", "evidence": ""}
+              for p, up in positions]
+    row = {"b_a": float(ba), "c_a": float(ca), "b_a_exact": str(ba), "c_a_exact": str(ca), "body": "box",
+           "failure": None, "interval": k, "s_from": s_from, "s_from_error": 1e-13 if k else 0.0, "s_to": s_to,
+           "s_to_error": 1e-13, "from_changes": [], "sample_density": (s_from + s_to) / 2, "stable": stable,
+           "stable_classes": len(stable), "stable_positions": 2 * len(stable), "index_sum": 2, "sweep_points": 1,
+           "sweep_agrees": True, "duality_holds": True, "thresholds_without_dual": [], "sources_not_found": [],
+           "predictions": []}
+    row.update(extra)
+    return row
+
+
+META = {"b_a": ["2"], "c_a": ["3"], "densities": ["1/10", "9/10"]}
+FACE_X = ("face x up", [1.0, 0.0, 0.0])
+FACE_Y = ("face y up", [0.0, 1.0, 0.0])
+
+
+def _check(checks, name):
+    return next(c for c in checks if c.name.startswith(name))
+
+
+def test_duality_check_fails_on_an_asymmetric_cell():
+    symmetric = [_row(2, 3, 0, 0.1, 0.3, [FACE_X, FACE_Y]), _row(2, 3, 1, 0.3, 0.7, [FACE_X]),
+                 _row(2, 3, 2, 0.7, 0.9, [FACE_X, FACE_Y])]
+    assert _check(run_checks(symmetric, META), "duality").ok
+    lopsided = [_row(2, 3, 0, 0.1, 0.3, [FACE_X, FACE_Y]), _row(2, 3, 1, 0.3, 0.72, [FACE_X]),
+                _row(2, 3, 2, 0.72, 0.9, [FACE_X, FACE_Y])]
+    assert not _check(run_checks(lopsided, META), "duality").ok
+    missing = symmetric[:2] + [_row(2, 3, 2, 0.7, 0.9, [FACE_X])]
+    assert not _check(run_checks(missing, META), "duality").ok
+
+
+def test_index_and_sweep_checks_fail():
+    rows = [_row(2, 3, 0, 0.1, 0.9, [FACE_X], index_sum=0, sweep_agrees=False)]
+    checks = run_checks(rows, META)
+    assert not _check(checks, "Poincaré").ok and not _check(checks, "sweep").ok
+
+
+def test_long_box_check_against_the_printed_tables():
+    """Box 1 x 3/2 x 20 at s = 0.3: Scheeffer IX's tables (section 3/2 x 1, n = 9/4 > 6 s(1 - s)) give
+    the position with the short edge b = a vertical (face x up) as the only stable one; the atlas
+    agrees when it has exactly that, and the check fails when a stable face y up is added."""
+    tables = load("scheeffer-ix")[1].tables_prediction
+    assert [p["phi"] for p in tables(0.3, 1.5) if p["stability"] == "stable"] == [0.0]
+    meta = {"b_a": ["3/2"], "c_a": ["20"], "densities": ["1/5", "4/5"]}
+    good = [_row(F(3, 2), 20, 0, 0.2, 0.8, [FACE_X])]
+    assert _check(run_checks(good, meta), "long box").ok
+    bad = [_row(F(3, 2), 20, 0, 0.2, 0.8, [FACE_X, FACE_Y])]
+    assert not _check(run_checks(bad, meta), "long box").ok
+    short = [_row(F(3, 2), 2, 0, 0.2, 0.8, [FACE_X, FACE_Y])]          # not long: not applicable
+    assert "not applicable" in _check(run_checks(short, {**meta, "c_a": ["2"]}), "long box").summary
+
+
+def test_cube_check_compares_thresholds():
+    meta = {"b_a": ["1"], "c_a": ["1"], "densities": ["1/10", "9/10"]}
+    cube = [_row(1, 1, 0, 0.1, 1 / 6, [("face z up", [0.0, 0.0, 1.0])]),
+            _row(1, 1, 1, 1 / 6, 5 / 6, [("corner up", [3 ** -0.5] * 3)],
+                 from_changes=[{"position": "corner up", "change": "stable above", "note": "", "sources": []}])]
+    reference = {"thresholds": [{"density": 1 / 6 + 1e-14, "error": 1e-13, "position": "corner up",
+                                 "change": "stable above"},
+                                {"density": 0.05, "error": 1e-13, "position": "x", "change": "stable below"}]}
+    assert _check(run_checks(cube, meta, reference), "cube").ok          # 0.05 lies outside the range
+    reference["thresholds"].append({"density": 0.5, "error": 1e-13, "position": "edge up (xz)",
+                                    "change": "stable above"})
+    assert not _check(run_checks(cube, meta, reference), "cube").ok
+
+
+def _one_scene_cell(ba, ca, densities):
+    """A cheap cell for the plumbing test: the stable classes at the middle density only."""
+    from symfloat.atlas.cell import _stable_classes
+    from symfloat.solver import make_scene, solve
+    s = densities[len(densities) // 2]
+    stable = _stable_classes(solve(make_scene("box", s, (1, ba, ca))))
+    row = _row(ba, ca, 0, float(densities[0]), float(densities[-1]), [])
+    row.update(stable=stable, stable_classes=len(stable), sample_density=float(s))
+    return [row], {"seconds": 0.0, "thresholds": 0, "intervals": 1}
+
+
+def test_dask_plumbing_equals_serial(tmp_path):
+    """Four cells of one scene each on a local cluster of two workers: the same part files, byte for byte,
+    as computed serially here, the combined file in grid order, and a second run computes nothing."""
+    import cloudpickle
+    import sys
+    cloudpickle.register_pickle_by_value(sys.modules[__name__])       # the workers cannot import this file
+    grid = ([F(3, 2), F(2)], [F(3), F(4)], density_grid("2/5:3/5:3"))
+    on_dask = build(tmp_path / "dask", *grid, workers=2, cell=_one_scene_cell)
+    serial = build(tmp_path / "serial", *grid, workers=0, cell=_one_scene_cell)
+    assert on_dask.workers == 2 and len(on_dask.computed) == 4
+    for ba, ca in serial.cells:
+        assert part_path(tmp_path / "dask", ba, ca).read_bytes() == part_path(tmp_path / "serial", ba, ca).read_bytes()
+    assert on_dask.path.read_bytes() == serial.path.read_bytes()
+    rows, _ = read_atlas(on_dask.path)
+    assert [(r["b_a_exact"], r["c_a_exact"]) for r in rows] == [("3/2", "3"), ("2", "3"), ("3/2", "4"), ("2", "4")]
+    assert [c["position"] for c in rows[0]["stable"]] == ["face x up"]      # the thinnest edge vertical at s = 1/2
+    part_path(tmp_path / "dask", F(2), F(4)).unlink()                      # a run killed before this cell
+    again = build(tmp_path / "dask", *grid, workers=0, cell=_one_scene_cell)
+    assert again.computed == [(F(2), F(4))] and again.path.read_bytes() == serial.path.read_bytes()
+
+
+@pytest.mark.slow
+def test_dask_equals_serial_cell_for_cell(tmp_path):
+    """A 2 x 2 atlas on a local cluster of two workers: every part file is byte for byte the one
+    computed serially in this process, and so is the combined dataset (the cell 1 x 1 x 3/2 fails the
+    solver's index check in both, identically: a failure is data too)."""
+    grid = ([F(1), F(2)], [F(3, 2), F(3)], density_grid("1/4:3/4:3"))
+    on_dask = build(tmp_path / "dask", *grid, workers=2)
+    serial = build(tmp_path / "serial", *grid, workers=0)
+    assert on_dask.workers == 2 and len(on_dask.computed) == 4
+    for ba, ca in serial.cells:
+        assert part_path(tmp_path / "dask", ba, ca).read_bytes() == part_path(tmp_path / "serial", ba, ca).read_bytes()
+    assert on_dask.path.read_bytes() == serial.path.read_bytes()
+    again = build(tmp_path / "dask", *grid, workers=2)                   # resumable: nothing left to do
+    assert again.computed == [] and again.path.read_bytes() == serial.path.read_bytes()
+    rows, meta = read_atlas(serial.path)
+    assert list(dict.fromkeys((r["b_a_exact"], r["c_a_exact"]) for r in rows)) == \
+        [("1", "3/2"), ("2", "3/2"), ("1", "3"), ("2", "3")]
+    assert all(math.isclose(r["s_from"] + r["s_to"], 1.0) for r in rows if r["interval"] == 0 and
+               len([x for x in rows if x["b_a_exact"] == r["b_a_exact"] and x["c_a_exact"] == r["c_a_exact"]]) == 1)
+
+
+def test_slice_figure_is_deterministic():
+    """The same rows draw the same PNG bytes (no date or software in its metadata)."""
+    from symfloat.atlas.figure import slice_png
+    meta = {"b_a": ["1", "2"], "c_a": ["20"], "densities": ["1/10", "9/10"]}
+    rows = [_row(1, 20, 0, 0.1, 0.9, [FACE_X]), _row(2, 20, 0, 0.1, 0.4, [FACE_X, FACE_Y]),
+            _row(2, 20, 1, 0.4, 0.9, [FACE_X])]
+    reference = {"thresholds": [{"density": 1 / 6, "error": 1e-13, "position": "corner up", "change": "stable above"}]}
+    first = slice_png(rows, meta, F(20), reference)
+    assert first[:8] == b"\x89PNG\r\n\x1a\n" and first == slice_png(rows, meta, F(20), reference)
+    assert b"Software" not in first and b"Creation" not in first
+
+
+@pytest.mark.parametrize("lopsided, status", [(False, 0), (True, 1)])
+def test_command_fails_when_a_check_fails(lopsided, status, tmp_path, capsys):
+    """Cells already written are not computed again; the checks run on them, are written to checks.md
+    and printed, and a failed one (here the duality of a lopsided cell) makes the exit status 1."""
+    from symfloat.atlas.dataset import write_part
+    densities = density_grid("1/10:9/10:3")
+    end = 0.72 if lopsided else 0.7
+    write_part(tmp_path, F(2), F(3), densities, [_row(2, 3, 0, 0.1, 0.3, [FACE_X, FACE_Y]),
+                                                _row(2, 3, 1, 0.3, end, [FACE_X]),
+                                                _row(2, 3, 2, end, 0.9, [FACE_X, FACE_Y])])
+    assert main(["atlas", "box", "--ba", "2", "--ca", "3", "--density", "1/10:9/10:3", "--out", str(tmp_path),
+                 "--workers", "0", "--quiet"]) == status
+    out = capsys.readouterr().out
+    assert ("| duality s <-> 1 - s | yes | FAILS |" in out) == lopsided
+    assert (tmp_path / "checks.md").read_text(encoding="utf-8") == out
+
+
+def test_existing_scheduler_by_address(tmp_path):
+    """--scheduler: the cells go to a running cluster (here one started for the test), whose workers
+    report back; the parts are those of the serial build."""
+    import cloudpickle
+    import sys
+    from dask.distributed import LocalCluster
+    cloudpickle.register_pickle_by_value(sys.modules[__name__])
+    grid = ([F(3, 2)], [F(3), F(4)], density_grid("2/5:3/5:3"))
+    with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=":0") as cluster:
+        remote = build(tmp_path / "remote", *grid, scheduler=cluster.scheduler_address, cell=_one_scene_cell)
+    serial = build(tmp_path / "serial", *grid, workers=0, cell=_one_scene_cell)
+    assert remote.workers == 2 and remote.path.read_bytes() == serial.path.read_bytes()
+
+
+@pytest.mark.slow
+def test_unreachable_scheduler_is_one_line(tmp_path, capsys):
+    """(slow: the client waits for its connection timeout, 10 s)"""
+    assert main(["atlas", "box", "--ba", "2", "--ca", "3", "--density", "1/4:3/4:3", "--out", str(tmp_path),
+                 "--scheduler", "tcp://127.0.0.1:9", "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert "cannot reach the Dask scheduler" in err and err.count("\n") == 1
+
+
+def test_renamed_box_check():
+    """1 x 2 x 1 and 1 x 1 x 2 are one box: their boundaries must agree within the errors."""
+    meta = {"b_a": ["1", "2"], "c_a": ["1", "2"], "densities": ["1/10", "9/10"]}
+    one = [_row(2, 1, 0, 0.1, 0.3, [FACE_X]), _row(2, 1, 1, 0.3, 0.9, [FACE_X])]
+    other = [_row(1, 2, 0, 0.1, 0.3, [FACE_X]), _row(1, 2, 1, 0.3, 0.9, [FACE_X])]
+    assert _check(run_checks(one + other, meta), "same box").ok
+    other[0]["s_to"] = other[1]["s_from"] = 0.3 + 1e-8
+    assert not _check(run_checks(one + other, meta), "same box").ok
