@@ -609,6 +609,40 @@ d.quote("164", "(164)", r"$$\left( \frac{c}{b} \right)^2 > 4 (1 - s)^2 + \left( 
 d.quote("HG-max", "IX.B", r"Letzteres tritt aber für den kleinsten Wert von  $x$  oder  $z$  ein",
         reading=((HGz.subs(z, 2 * sg) ** 2 - HGz.subs(z, 1) ** 2) / b ** 2, (n - 1) * (1 - 4 * sg ** 2)))
 
+# the remaining displays of B, read from the steps above
+d.quote("F-minus-infinity", "IX.B", r"$$\text{Da für } z = -\infty \quad F(z) = +\infty$$",
+        reading=(sp.Limit(Fz / z ** 4, z, -sp.oo), 1),
+        note="read through the leading term: F/z^4 -> 1, so F -> +oo at both ends (even degree)")
+d.quote("F-plus-infinity", "IX.B", r"$$\text{,, } z = +\infty \quad F(z) = +\infty$$",
+        reading=(sp.Limit(Fz / z ** 4, z, sp.oo), 1), note="as at -oo")
+d.quote("140-n1", "IX.B", r"$$\text{wenn } \sigma - \frac{9}{32} \geq 0$$",
+        reading=(sg - sp.Rational(9, 32), sp.Subs(sp.Derivative(F_def, z), (z, a), (sp.Rational(3, 4), b)) / 3),
+        note="(139) at the smallest n = 1 (a = b): F'(3/4) over 3, F from the dry triangle")
+d.quote("F-2sigma-expanded", "IX.B", r"$$F(2\sigma) = 16(1-s)^4 - 12(1-s)^3 + 6n(1-s)^2 - 4n(1-s)^2$$",
+        reading=(F2s, 16 * (1 - s) ** 4 - 12 * (1 - s) ** 3 + 6 * n * (1 - s) ** 2 - 4 * n * (1 - s) ** 2))
+d.quote("F-2sigma-factored", "IX.B", r"$$= 2(1-s)^2 \cdot \left\{ 8(1-s)^2 - 6(1-s) + n \right\}$$",
+        reading=(F2s, 2 * (1 - s) ** 2 * (8 * (1 - s) ** 2 - 6 * (1 - s) + n)))
+d.quote("1+3t-positive", "IX.B", r"$$0 \leq 1 + 3t$$",
+        reading=(1 + 3 * t, ((7 - 3 * t) ** 2 - 9 * (5 - t) * (1 - t)) / 4),
+        note="sign identity: (160) squared is equivalent to 1 + 3t >= 0 (factor 1/4)")
+d.quote("z1-below-1", "IX.B", r"$$z_1 < 1.$$", reading=(1 - Zp, 4 * (1 + 3 * t) / (16 * (7 - 3 * t + 3 * rt))),
+        note="sign identity: 1 - z_1 is positive for t > -1/3 (s < 1)")
+d.quote("HG-less-c", "IX.B", r"$$\frac{x}{\sin \varphi_2} < c,$$", reading=(c - X / sp.sin(phi), c - HG),
+        note="HG < c with HG = x/sin phi_2")
+d.quote("HG-less-c-squared", "IX.B", r"$$x^2 + \frac{4 a^2 b^2 (1 - s)^2}{x^2} < c^2$$",
+        reading=(c ** 2 - (X ** 2 + 4 * a ** 2 * b ** 2 * (1 - s) ** 2 / X ** 2), c ** 2 - HG ** 2),
+        note="HG < c squared, HG^2 from (134)")
+
+d.quote("rho-above-1", "IX.B", r"$2(1-s)(4s-1) > 1$",
+        reading=(rho_s - 1, -F2s / (2 * sg ** 2) + ((a / b) ** 2 - 1)),
+        note="sign identity: rho - n = -F(2 sigma)/(2 sigma^2) > 0 (F(2 sigma) < 0) and n - 1 >= 0 (a >= b)")
+d.quote("z1-above-9-16", "IX.B", r"$\frac{9}{16} < z_1$", reading=(Zp - sp.Rational(9, 16), 3 * (t + rt) / 16),
+        note="positive for -1/3 < t < 1: (5 - t)(1 - t) - t^2 = 5 - 6t > 0 where t < 0")
+d.quote("z1-above-2sigma", "IX.B", r"$2\sigma < z_1$", reading=(Zp - 2 * sig_t, (27 - 15 * t + 12 * rt) / 64),
+        note="sigma from t by (150); positive for t < 1")
+d.quote("z1-at-most-1", "IX.B", r"$z_1 \leq 1$", reading=(1 - Zp, 4 * (1 + 3 * t) / (16 * (7 - 3 * t + 3 * rt))),
+        note="sign identity as (159)")
+
 # ==== C. the third region ============================================================================
 kd = sp.Dummy("k")
 
@@ -659,6 +693,16 @@ d.quote("164-reference", "IX.C", r"Ist aber die Bedingung 164 nicht erfüllt",
                         corrected_reading=((b / a) ** 2 - 6 * s * (1 - s), 12 * s / a * GM3)),
         note="read by the module's rule for conditions: the quantity of the cited condition against the one whose "
              "sign decides the upright stability of the third region (12 s/a times its metacentric height)")
+d.quote("upright-3-range", "IX.C", r"$6s(1-s) < 1$", reading=(1 - 6 * s * (1 - s), 6 * (s - shi) * (s - slo)),
+        note="positive outside [s_-, s_+] (79)")
+d.quote("rho-below-1", "IX.C", r"$2(1-s)(4s-1) < 1$",
+        reading=(1 - rho_s, 8 * (s - half) * (s - sp.Rational(3, 4))))
+d.quote("upright-3-negation", "IX.C", r"$$\text{also } \left(\frac{b}{a}\right)^2 < 6s(1-s)$$",
+        reading=(6 * s * (1 - s) - (b / a) ** 2, -12 * s / a * GM3),
+        note="sign identity, factor 12 s/a: the a-vertical position is unstable")
+d.quote("131-third", "IX.C", r"$$\text{Ist (s. 131) } \left(\frac{a}{b}\right)^2 < 2(1-s)(4s-1)$$",
+        reading=(PW(rho_s - (a / b) ** 2, 0), PW(-Q130, 0)),
+        note="for s > 1/2: the oblique position of the first region lies beyond it (130 negated)")
 d.quote("165-pre", "IX.C", r"$$\left(\frac{b}{a}\right)^2 \geq 2(1-s)(4s-1)$$",
         reading=(PW((b / a) ** 2 - rho_s, 0), PW(Q3, 0)))
 d.quote("165", "(165)",
