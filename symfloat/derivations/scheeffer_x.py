@@ -154,6 +154,24 @@ d.quote("168", "(168)",
         reading=(P, h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si))),
         note="'Setzt man diese Werte in 104 ein': the values go into (167), not (104) (the stability condition); "
              "a wrong reference in the words, not in a formula")
+Tm104, Ve104 = sp.symbols("T_m V_3e_3", positive=True)   # the members of (104), T_m - V_3 e_3 > 0, as printed
+Ul, Vl = sp.symbols("u_l v_l", real=True)                 # the letters u, v into which the values are inserted
+d.domain.update({Tm104: (0.1, 1), Ve104: (0.1, 1)})
+U_VAL, V_VAL = (rho - a / 2) * co + a / 2 * si, a / 2 * co - (a / 2 - rho * tg) * si     # the printed u, v
+d.quote("104-reference", "X", r"Setzt man diese Werte in 104 ein",
+        reading=(h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si)),
+                 sp.Subs(Tm104 - Ve104, (Ul, Vl), (U_VAL, V_VAL))),
+        erratum=Erratum("misprint", "medium", r"\text{Setzt man diese Werte in 167 ein}",
+                        "u and v, just computed, are the letters of (167), int x y df = h^3 {(v tg w - u cotg w)/6 + "
+                        "h (cotg^2 w - tg^2 w)/8}; inserted there they give (168) (derived: step 168). (104) is the "
+                        "stability condition T_m - V_3 e_3 > 0 of section VII, which contains neither u nor v and is "
+                        "no first equilibrium condition: inserting u, v into it leaves T_m - V_3 e_3, not (168). A "
+                        "wrong equation number; the scan would hardly turn 167 into 104, so the print's (medium).",
+                        corrected_reading=(h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si)),
+                                           sp.Subs(h_ ** 3 * ((Vl * tg - Ul * ctg) / 6 + h_ / 8 * (ctg ** 2 - tg ** 2)),
+                                                   (Ul, Vl), (U_VAL, V_VAL)))),
+        note="read as: (168) is the cited equation's left member with u, v inserted; (104)'s members T_m, V_3 e_3 "
+             "are quantities of their own (not of u, v)")
 d.step("half-range", (P168.subs(h_, rho * si).subs({om: pi / 2 - om, rho: rho * tg}, simultaneous=True),
                       -P168.subs(h_, rho * si)), "algebra", uses=("168", "height"),
        note="the same triangle seen from G (angle 90 deg - w, leg rho tan w) gives -P: the zeros for "
@@ -184,6 +202,9 @@ d.quote("169b", "(169b)",
         r"\\ \text{woraus} \quad & \sin \omega < \cos \omega \end{aligned} \quad (169b)$$",
         reading=(a - 2 * a * co * tg / (co + si), a / (co + si) * (co - si)),
         note="from rho_* tan w < a: sign identity, factor a/(cos w + sin w) > 0; with (169a) unsatisfiable")
+d.quote("169-unsatisfiable", "X", r"Die beiden Bedingungen 169 a, b sind aber unerfüllbar",
+        reading=((a - rs) * (a - rs * tg), -a ** 2 * (co - si) ** 2 / (co + si) ** 2),
+        note="sign identity (169-exclusive): the two margins a - rho_*, a - rho_* tan w never are both positive")
 d.quote("170", "(170)", r"$$\omega = \frac{\pi}{4} \quad (170)$$", reading=(sp.Subs(P, om, pi / 4), 0),
         note="the first condition holds at w = 45 deg for every triangle")
 d.quote("diagonal-claim", "X",
@@ -429,6 +450,15 @@ d.quote("175", "(175)",
 d.quote("factor-positive", "X", "man sieht leicht ein, dass er stets positiv ist",
         reading=(FAC, co * ((a - rho) + (a - rho * tg))),
         note="a sum of positive terms when rho < a and rho tan w < a")
+d.quote("174-positive", "X",
+        r"Die Summe  $\int x y \cdot d f$  ist also positiv und nur für  $\omega = 45^\circ$  gleich Null.",
+        reading=(P, (co - si) * POS),
+        note="sign identity (sign-of-P): P = (cos w - sin w) x (a positive factor) for 0 < w <= 45 deg")
+d.quote("175-positive", "X",
+        r"und dieser Ausdruck ist ebenfalls (wie 174) für alle Werte von  $\omega$  zwischen  $0$  und  $45^\circ$  "
+        r"positiv und nur für  $\omega = 45^\circ$  gleich Null.",
+        reading=(P1, (co - si) * h1_ ** 3 * ((a - rho1) + (a - rho1 * tg)) / (24 * si * co)),
+        note="sign identity: (175) is (168) for LDM, the factor positive for rho_1 < a, rho_1 tan w < a")
 d.quote("173-only-45", "X", r"Daher ist  $\omega = 45^\circ$  die einzige Lösung der Gleichung 173.",
         reading=(P + P1, (co - si) * (POS + POS.subs({h_: h1_, rho: rho1}))),
         note="sign identity: both terms are cos w - sin w times a positive factor (sign-of-P)")
