@@ -155,6 +155,15 @@ d.quote("T11-V1", "IX.A", r"$$\frac{T_1^1}{V_1} - e_1 = \frac{a c^3}{12 a b c s}
 d.quote("124", "(124)", r"$$\left( \frac{c}{b} \right)^2 - 6 s (1 - s) < 0, \quad (124)$$",
         reading=((c / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GMc),
         note="with the larger moment negative, both are: unstable in every direction")
+d.quote("all-directions-unstable", "IX.A", "so ist das Gleichgewicht der aufrechten Lage nach allen Richtungen labil.",
+        reading=(sp.Matrix([GMc - GMa, 12 * s / b * GMc]), sp.Matrix([(c ** 2 - a ** 2) / (12 * b * s),
+                                                                    (c / b) ** 2 - 6 * s * (1 - s)])),
+        note="under (124) the metacentric height about the a-axis is negative, and the one about the c-axis is smaller "
+             "still (c > a): every horizontal axis")
+d.quote("Tx-Ty-excluded", "IX.A",
+        r"Die dritte Lösung der Bedingungsgleichung (46)  $T_x = T_y$  ist hier ausgeschlossen, da  $c > a$  "
+        r"vorausgesetzt ist.", reading=(T11 - T1, a * c * (c ** 2 - a ** 2) / 12),
+        note="the two central moments of the base a x c differ by a c (c^2 - a^2)/12, positive for c > a")
 d.quote("32", "IX.A", r"$$T_1 \left(1 + \frac{1}{2} \operatorname{tg}^2 \varphi_1\right) - V_1 e_1 = 0$$",
         reading=(T1 * (1 + tan2a / 2) - V1 * e1, 0))
 d.quote("T1-V1e1", "IX.A", r"$T_1 = \frac{c a^3}{12}$ ,  $V_1 e_1 = \frac{a b^2 c}{2} s (1 - s)$",
