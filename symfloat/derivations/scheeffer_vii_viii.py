@@ -28,8 +28,10 @@ same for the turned body of density 1 - s); x_0 < 0 when N lies between O and E;
 enthalten die vollständigen Bedingungen' (the two horizontal offsets of S_2 are -sin phi (103b), -tan phi
 (95a)); 's > 1/2, sodass also die obere Grundfläche zum Teil eintaucht' holds only for bases reaching equally
 far on both sides of the axis (claim erratum, as in IV).  Errata: the stray '1/2' before 'Volumen' in (100)
-(scan), the sign of 2 k tg 2mu in (109) (print).
-The references '102 a', '102 b' in (116), (117) mean (103a), (103b).
+(scan), the sign of 2 k tg 2mu in (109) (print), the lost df of the split of (95a) (scan), 'nach 102 a' for
+(103a) (print), 'den Punkt N' for N_1 and 'x_3^1' for x_s^1 in VIII (scan).
+The references '102 a', '102 b' in (116), (117) mean (103a), (103b); '102 b' is not booked, since (102) with
+(100) gives (116) as well.
 
 Witnesses (``symfloat.geometry.floating``): rectangles, triangles, squares, an equilateral triangle and a
 pentagon are clipped at the tilt with the draught found from the volume; the dry part is the clipped body
@@ -325,6 +327,10 @@ d.quote("S3-offsets", "VII", "$$S_3 O_3 = P_3 O = x_3 - x_0,$$\n\n$SO$ , die hal
         reading=(sp.Matrix([MS3[0] / V3, MS3[2] / V3]), sp.Matrix([X3 / V3 - x0, b / 2 - Z3 / V3])),
         note="S_3 P_3 = z_3 (depth below the upper base), N P_3 = x_3 (the display before): the offsets of S_3 from S "
              "along NE and along the axis")
+d.quote("S3-offsets-used", "VII",
+        r"also mit Benutzung der Werte  $S_3 O_3 = x_3 - x_0$  und  $SO_3 = \frac{b}{2} - z_3$",
+        reading=(sp.Matrix([MS3[0] / V3, MS3[2] / V3]), sp.Matrix([X3 / V3 - x0, b / 2 - Z3 / V3])),
+        note="the offsets of S_3 from S along NE and along the axis, as displayed before (S3-offsets)")
 d.quote("complete", "VII", "No. 95 a, 103 a, b und 117 enthalten die vollständigen Bedingungen des Gleichgewichts "
         "und der Stabilität eines geraden Prismas (von beliebiger Form) für das zweite Drehungsgebiet.",
         reading=(sp.Matrix([M2h, M2y]), -sp.Matrix([sn2 * Q2, tg2 * Pxy])),
