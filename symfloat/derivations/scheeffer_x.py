@@ -9,7 +9,8 @@ onto the water line GH, x across GH towards B, y along GH towards G.  The first 
 is int xy df = 0 over the triangle; split at P it is (167), and with NH = u, NG = v from the square it
 becomes (168) = h^3 (cos w - sin w)(2a cos w - rho(cos w + sin w))/(24 sin w cos^2 w).  The second
 factor cannot vanish for a triangle inside the face (169a, b contradict each other), so omega = 45 deg
-(170): with a pentagonal or triangular waterplane the cut triangle is isosceles.  All of this is derived
+(170): with a pentagonal or triangular waterplane the cut triangle is isosceles ('in 104' before (168)
+means (167): misprint).  All of this is derived
 here by integrating over the triangles, and the condition itself is measured on the clipped cube as the
 moment of the dry part about the vertical plane across the axis.
 
@@ -152,8 +153,7 @@ d.quote("168", "(168)",
         r"$$\int x y \, d f = \frac{h^3 (\cos \omega - \sin \omega)}{24 \sin \omega \cdot \cos^2 \omega} \cdot "
         r"\left\{ 2 a \cdot \cos \omega - \varrho (\cos \omega + \sin \omega) \right\} = 0 \quad (168)$$",
         reading=(P, h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si))),
-        note="'Setzt man diese Werte in 104 ein': the values go into (167), not (104) (the stability condition); "
-             "a wrong reference in the words, not in a formula")
+        note="the values go into (167), not (104) as the words say (erratum 104-reference)")
 Tm104, Ve104 = sp.symbols("T_m V_3e_3", positive=True)   # the members of (104), T_m - V_3 e_3 > 0, as printed
 Ul, Vl = sp.symbols("u_l v_l", real=True)                 # the letters u, v into which the values are inserted
 d.domain.update({Tm104: (0.1, 1), Ve104: (0.1, 1)})
@@ -377,6 +377,10 @@ d.step("tetra-volume", (Vt, sp.Integral(1, (Z, 0, a - X - Y), (Y, 0, a - X), (X,
 d.step("triangle-bound", Eq(s56, 1 - Vt / a ** 3), "definition", result=s56,
        note="density at which the dry part is that tetrahedron")
 d.quote("tetra", "X", r"$$\frac{a^3}{6} = a^3 (1 - s)$$", reading=(Vt, a ** 3 * (1 - s56)))
+d.quote("diagonal-plane-bound", "X",
+        r"Die untere Grenze für  $s$  tritt ein, wenn der Wasserschnitt aus drei Flächendiagonalen gebildet wird.",
+        reading=(s56, 1 - sp.Integral(1, (Z, 0, a - X - Y), (Y, 0, a - X), (X, 0, a)) / a ** 3),
+        note="the dry part is then the corner tetrahedron cut off by the three face diagonals")
 d.quote("five-sixths", "X", r"$$s = \frac{5}{6}$$", reading=(s56, sp.Rational(5, 6)))
 ut = sp.Matrix([1, 1, 1]) / sp.sqrt(3)
 d.step("tri-symmetric", (as_printed(lambda: sp.Matrix([-L, L, 0]).cross(sp.Matrix([-L, 0, L]))), L ** 2 * sp.sqrt(3) * ut),
