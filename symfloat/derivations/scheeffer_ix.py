@@ -149,6 +149,9 @@ d.quote("stability-condition", "IX.A", r"$$\frac{c a^3}{12 a b c s} - \frac{b}{2
         reading=(c * a ** 3 / (12 * a * b * c * s) - b / 2 * (1 - s), GMa))
 d.quote("123", "(123)", r"$$\left( \frac{a}{b} \right)^2 - 6 s (1 - s) > 0 \quad (123)$$",
         reading=((a / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GMa), note="sign identity, factor 12 s/b")
+d.quote("123-negated", "IX.A", "Ist diese Bedingung nicht erfüllt, so ist die aufrechte Lage labil.",
+        reading=(6 * s * (1 - s) - (a / b) ** 2, -12 * s / b * GMa),
+        note="sign identity, factor 12 s/b: (123) violated means a negative metacentric height about the c-axis")
 d.quote("largest-moment", "IX.A", r"das grösste Trägheitsmoment  $\frac{a \cdot c^3}{12}$", reading=(T11, a * c ** 3 / 12))
 d.quote("T11-V1", "IX.A", r"$$\frac{T_1^1}{V_1} - e_1 = \frac{a c^3}{12 a b c s} - \frac{b}{2} (1 - s)$$",
         reading=(GMc, a * c ** 3 / (12 * a * b * c * s) - b / 2 * (1 - s)))
@@ -361,6 +364,11 @@ d.quote("inflections", "IX.B",
         r"Wendepunkt  $z = \frac{3}{4}$  nimmt also  $F'(z)$  ab.",
         reading=(sp.Matrix([sp.Subs(sp.Derivative(Fz, z, 2), z, 0), sp.Subs(sp.Derivative(Fz, z, 2), z, sp.Rational(3, 4))]),
                  sp.zeros(2, 1)))
+d.quote("F1-stays-positive", "IX.B",
+        r"Ist hier (für  $z = \frac{3}{4}$ )  $F'(z)$  noch positiv, so bleibt es auch positiv bis  $z = \infty$ .",
+        reading=(sp.Derivative(Fz, z) - sp.Subs(sp.Derivative(Fz, z), z, sp.Rational(3, 4)),
+                 (z - sp.Rational(3, 4)) ** 2 * (4 * z + sp.Rational(3, 2))),
+        note="F'(z) - F'(3/4) = (z - 3/4)^2 (4z + 3/2) >= 0 for z >= 0: F' >= F'(3/4) beyond the inflection")
 F1_34 = sp.diff(F_def, z).subs(z, sp.Rational(3, 4))
 d.quote("139-pre", "IX.B",
         r"$$4 \left(\frac{3}{4}\right)^3 - \frac{9}{2} \cdot \left(\frac{3}{4}\right)^2 + 3 \sigma n \geq 0$$",
