@@ -22,7 +22,7 @@ ERRATA = {"100": "transcription", "109": "misprint", "s-upper": "claim", "95a-sp
           "102a-reference": "misprint", "xs1-definition": "transcription", "N1-lower-base": "transcription"}
 # printed formulas that are logical or calculus steps on others (no numeric quantity of their own to clip)
 UNWITNESSED = {"s-upper", "95-element", "96-split", "117-cos", "regular-Ps", "106-first", "102a-reference",
-               "xs1-definition", "N1-lower-base", "fig20", "S3-offsets-used"}
+               "xs1-definition", "N1-lower-base", "fig20", "S3-offsets-used", "xs-depth", "Tmu-derivative"}
 
 
 @pytest.fixture(scope="module")

@@ -420,6 +420,12 @@ d.quote("108", "(108)", r"$$\begin{aligned} (T_2^1 - T_2) \sin 2 \mu - 2 k \cdot
         reading=(sp.Matrix([sp.diff(res(Tg), mu), sp.tan(2 * mus)]),
                  sp.Matrix([(T21g - T2g) * SC - 2 * kg * CC, 2 * kg / (T21g - T2g)])),
         note="dT_mu/dmu (the '= 0' imposed) and its root mu^*; T_2, T_2^1, k of any figure (step Tg)")
+d.quote("xs-depth", "VII", r"so ist  $x_s \operatorname{tg} \varphi_2$  seine Entfernung vom Wasserschnitt",
+        reading=(V3 / F, xs * tg2),
+        note="the mean length of the columns over F (dry volume over area): the column over the centroid, x_s tan phi_2")
+d.quote("Tmu-derivative", "VII", r"Setzt man den Differentialquotienten von  $T_\mu$  gleich Null, so erhält man",
+        reading=(sp.Derivative(Tg, mu), (T21g - T2g) * SC - 2 * kg * CC),
+        note="the derivative of (107) in mu; its zero is (108)")
 d.quote("109", "(109)", r"$$T_\mu = \frac{1}{2} (T_2 + T_2^1) - \frac{1}{2} \cos 2 \mu \left\{ T_2^1 - T_2 - 2 k "
         r"\operatorname{tg} 2 \mu \right\} \quad (109)$$",
         reading=(Tg, Sg - sp.cos(2 * mu) / 2 * (T21g - T2g - 2 * kg * sp.tan(2 * mu))),
