@@ -47,7 +47,9 @@ def test_the_errata_are_exactly_the_expected_ones(report):
     errata = {f.id.split("/")[1]: f.erratum["kind"] for f in report.formulas if f.erratum}
     assert errata == {"T1": "transcription", "133-first": "transcription", "144": "transcription",
                       "145": "transcription", "162a": "transcription", "s-three-quarters": "misprint",
-                      "table-first": "transcription", "table-third": "transcription"}
+                      "table-first": "transcription", "table-third": "transcription",
+                      "one-root-between": "transcription", "positive-whole-region": "claim",
+                      "164-reference": "misprint"}
     assert all(f.verdict == "erratum" for f in report.formulas if f.erratum)
 
 
@@ -314,3 +316,30 @@ def test_the_144_correction_must_hold():
     wrong = dataclasses.replace(p.erratum, corrected_reading=p.reading)
     rep = check_derivation(_mutated("144", erratum=wrong), prove=False, trust_steps=True)
     assert any("correction does not hold" in f for f in rep.failures)
+
+
+# ---- faults of the second review, each refuted on its own ---------------------------------------------------
+
+@pytest.mark.parametrize("name, kind, confidence", [
+    ("one-root-between", "transcription", "medium"),      # transcription line 1489: 'z = oo' for 'z = -oo'
+    ("positive-whole-region", "claim", "medium"),         # line 1539: F > 0 on the whole region for n > n_1
+    ("164-reference", "misprint", "medium"),              # line 1735: 'die Bedingung 164' (meant: before 164a)
+])
+def test_second_review_faults_are_errata(name, kind, confidence):
+    rep = check_derivation(_mutated(name), prove=False, trust_steps=True)
+    (f,) = rep.formulas
+    assert f.verdict == "erratum" and rep.failures == []
+    assert (f.erratum["kind"], f.erratum["confidence"]) == (kind, confidence)
+
+
+def test_root_counts_of_136_at_s_73_100():
+    # numpy's companion-matrix roots of (136), independent of sympy's isolation: s = 0.73 (sigma = 0.27)
+    def real(nv):
+        r = np.roots([1, -1.5, 0, 3 * nv * 0.27, -4 * nv * 0.27 ** 2])
+        return sorted(x.real for x in r if abs(x.imag) < 1e-9)
+    three = real(1.004)                      # n = 251/250 < n_1 = 1.00631: three positive roots, one negative
+    assert len([x for x in three if x > 0]) == 3 and len([x for x in three if x < 0]) == 1
+    one = real(1.02)                         # n = 51/50 > n_1: one root above 2 sigma = 0.54, left of the maximum
+    assert [round(x, 4) for x in one] == [-0.7403, 0.5586]
+    assert [int(D.results()[q].doit()) for q in (M.NPOS, M.NNEG, M.NREG, M.NRIGHT)] == [3, 1, 1, 0]
+    assert M._n1_printed(0.73) < 1.02 < 2 * 0.27 * (4 * 0.73 - 1)

@@ -44,6 +44,7 @@ EXPECTED_ERRATA = {
     ("86a", "transcription", "high"),
     ("triangle-data", "transcription", "high"),
     ("square-data", "transcription", "high"),
+    ("55-reference", "misprint", "medium"),   # transcription line 1068: 'Nach 55' for (54)
 }
 
 
@@ -56,7 +57,8 @@ def test_the_errata_are_exactly_the_expected_ones(report):
 
 def test_verified_displays_with_numbers_carry_witness_records(report):
     symbolic_only = {"sin-90", "82-half", "82-half-omega", "circle-data", "circle-T1", "decreasing",
-                     "circle-smallest", "duhamel-decreasing", "tilt-increasing", "cylinder-most-oblique"}
+                     "circle-smallest", "duhamel-decreasing", "tilt-increasing", "cylinder-most-oblique",
+                     "duhamel-fewer-sides"}
     thin = [f.id for f in report.formulas if f.verdict == "verified" and f.id.split("/")[1] not in symbolic_only
             and len(f.numeric) < 2]
     assert thin == []
@@ -210,3 +212,11 @@ def test_the_78c_correction_must_hold():
     rep = check_derivation(_mutated("78c", erratum=wrong), prove=False, trust_steps=True)
     assert any("correction does not hold" in f for f in rep.failures)
 
+
+
+def test_the_55_reference_is_an_erratum_on_its_own():
+    # transcription line 1068, 'Nach 55 ist ferner': the formula written next is (54), not the bound (55)
+    rep = check_derivation(_mutated("55-reference"), prove=False, trust_steps=True)
+    (f,) = rep.formulas
+    assert f.verdict == "erratum" and rep.failures == []
+    assert (f.erratum["kind"], f.erratum["confidence"]) == ("misprint", "medium")

@@ -56,6 +56,7 @@ EXPECTED_ERRATA = {
     ("pentagon-exists", "claim", "high"),        # below s = 0.7623 the root of (171) is a hexagon, no pentagon
     ("pentagon-stable", "claim", "medium"),      # of two pentagonal equilibria one is unstable
     ("dual-exists", "consequential", "high"),    # the same for s < 1/2
+    ("104-reference", "misprint", "medium"),     # transcription line 1817: 'in 104 ein' for (167)
 }
 
 
@@ -352,3 +353,12 @@ def test_between_the_fold_and_0_7735_the_small_leg_pentagon_is_stable_the_other_
     small, large = (_newton(c, s) for c in (small, large))     # refine to the equilibria
     assert min(np.linalg.eigvalsh(_hessian(small, s))) > 0
     assert min(np.linalg.eigvalsh(_hessian(large, s))) < 0
+
+
+def test_the_104_reference_is_an_erratum_on_its_own():
+    # transcription line 1817, 'Setzt man diese Werte in 104 ein': u, v go into (167), which gives (168)
+    p = next(q for q in D.printed if q.name == "104-reference")
+    rep = check_derivation(dataclasses.replace(D, printed=[p], witnesses=[]), prove=False, trust_steps=True)
+    (f,) = rep.formulas
+    assert f.verdict == "erratum" and rep.failures == []
+    assert (f.erratum["kind"], f.erratum["confidence"]) == ("misprint", "medium")

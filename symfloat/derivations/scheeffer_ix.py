@@ -149,12 +149,24 @@ d.quote("stability-condition", "IX.A", r"$$\frac{c a^3}{12 a b c s} - \frac{b}{2
         reading=(c * a ** 3 / (12 * a * b * c * s) - b / 2 * (1 - s), GMa))
 d.quote("123", "(123)", r"$$\left( \frac{a}{b} \right)^2 - 6 s (1 - s) > 0 \quad (123)$$",
         reading=((a / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GMa), note="sign identity, factor 12 s/b")
+d.quote("123-negated", "IX.A", "Ist diese Bedingung nicht erfüllt, so ist die aufrechte Lage labil.",
+        reading=(6 * s * (1 - s) - (a / b) ** 2, -12 * s / b * GMa),
+        note="sign identity, factor 12 s/b: (123) violated means a negative metacentric height about the c-axis")
 d.quote("largest-moment", "IX.A", r"das grösste Trägheitsmoment  $\frac{a \cdot c^3}{12}$", reading=(T11, a * c ** 3 / 12))
 d.quote("T11-V1", "IX.A", r"$$\frac{T_1^1}{V_1} - e_1 = \frac{a c^3}{12 a b c s} - \frac{b}{2} (1 - s)$$",
         reading=(GMc, a * c ** 3 / (12 * a * b * c * s) - b / 2 * (1 - s)))
 d.quote("124", "(124)", r"$$\left( \frac{c}{b} \right)^2 - 6 s (1 - s) < 0, \quad (124)$$",
         reading=((c / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GMc),
         note="with the larger moment negative, both are: unstable in every direction")
+d.quote("all-directions-unstable", "IX.A", "so ist das Gleichgewicht der aufrechten Lage nach allen Richtungen labil.",
+        reading=(sp.Matrix([GMc - GMa, 12 * s / b * GMc]), sp.Matrix([(c ** 2 - a ** 2) / (12 * b * s),
+                                                                    (c / b) ** 2 - 6 * s * (1 - s)])),
+        note="under (124) the metacentric height about the a-axis is negative, and the one about the c-axis is smaller "
+             "still (c > a): every horizontal axis")
+d.quote("Tx-Ty-excluded", "IX.A",
+        r"Die dritte Lösung der Bedingungsgleichung (46)  $T_x = T_y$  ist hier ausgeschlossen, da  $c > a$  "
+        r"vorausgesetzt ist.", reading=(T11 - T1, a * c * (c ** 2 - a ** 2) / 12),
+        note="the two central moments of the base a x c differ by a c (c^2 - a^2)/12, positive for c > a")
 d.quote("32", "IX.A", r"$$T_1 \left(1 + \frac{1}{2} \operatorname{tg}^2 \varphi_1\right) - V_1 e_1 = 0$$",
         reading=(T1 * (1 + tan2a / 2) - V1 * e1, 0))
 d.quote("T1-V1e1", "IX.A", r"$T_1 = \frac{c a^3}{12}$ ,  $V_1 e_1 = \frac{a b^2 c}{2} s (1 - s)$",
@@ -352,6 +364,11 @@ d.quote("inflections", "IX.B",
         r"Wendepunkt  $z = \frac{3}{4}$  nimmt also  $F'(z)$  ab.",
         reading=(sp.Matrix([sp.Subs(sp.Derivative(Fz, z, 2), z, 0), sp.Subs(sp.Derivative(Fz, z, 2), z, sp.Rational(3, 4))]),
                  sp.zeros(2, 1)))
+d.quote("F1-stays-positive", "IX.B",
+        r"Ist hier (für  $z = \frac{3}{4}$ )  $F'(z)$  noch positiv, so bleibt es auch positiv bis  $z = \infty$ .",
+        reading=(sp.Derivative(Fz, z) - sp.Subs(sp.Derivative(Fz, z), z, sp.Rational(3, 4)),
+                 (z - sp.Rational(3, 4)) ** 2 * (4 * z + sp.Rational(3, 2))),
+        note="F'(z) - F'(3/4) = (z - 3/4)^2 (4z + 3/2) >= 0 for z >= 0: F' >= F'(3/4) beyond the inflection")
 F1_34 = sp.diff(F_def, z).subs(z, sp.Rational(3, 4))
 d.quote("139-pre", "IX.B",
         r"$$4 \left(\frac{3}{4}\right)^3 - \frac{9}{2} \cdot \left(\frac{3}{4}\right)^2 + 3 \sigma n \geq 0$$",
@@ -498,6 +515,66 @@ d.quote("159", "(159)",
 d.quote("160", "(160)", r"$$\text{oder } 3 \sqrt{(5-t)(1-t)} \leq 7 - 3t \quad (160)$$",
         reading=(7 - 3 * t - 3 * rt, 4 * (1 + 3 * t) / (7 - 3 * t + 3 * rt)))
 t_s = (128 * (1 - s) - 9) / 27
+# ---- the root counts the text states, at exact points: sympy's real-root isolation of (136), s = 73/100
+S_CT = sp.Rational(73, 100)               # s > 23/32; sigma = 27/100, 2 sigma = 27/50, n_1 = 1.00631 (156)
+N_THREE, N_ONE = sp.Rational(251, 250), sp.Rational(51, 50)     # n below and above n_1, both below 9/(32 sigma)
+NPOS, NNEG, NREG, NRIGHT, SGN1 = sp.symbols("N_pos N_neg N_reg N_right sigma_n1")
+
+
+def _roots136(nv):
+    """The real roots of (136) at s = 73/100, n = nv, exact (CRootOf)."""
+    return sp.Poly(quartic.subs({n: nv, sg: 1 - S_CT}), z).real_roots()
+
+
+def _above(roots, lo):
+    """How many of the exact roots lie above lo: a sum of unit steps (sign of each root less lo)."""
+    return sp.Add(*[(1 + sp.sign(r_ - lo)) / 2 for r_ in roots], evaluate=False)
+
+
+Z_MAX = next(r_ for r_ in sp.Poly(sp.diff(quartic, z).subs({n: N_ONE, sg: 1 - S_CT}), z).real_roots()
+             if 0 < r_ < sp.Rational(3, 4))
+d.step("count-positive", Eq(NPOS, _above(_roots136(N_THREE), 0)), "definition", uses=("F-quartic",), result=NPOS,
+       note="real roots z > 0 of F at s = 73/100, n = 251/250 (0.5878, 0.7757, 0.8724; the fourth is -0.7360)")
+d.step("count-negative", Eq(NNEG, len(_roots136(N_THREE)) - _above(_roots136(N_THREE), 0)), "definition",
+       uses=("F-quartic",), result=NNEG, note="real roots z < 0 at the same point (F(0) < 0, so none is 0)")
+d.step("count-region", Eq(NREG, _above(_roots136(N_ONE), 2 * (1 - S_CT))), "definition", uses=("F-quartic",),
+       result=NREG, note="real roots z > 2 sigma = 27/50 of F at s = 73/100, n = 51/50 (the root 0.5586; the other is "
+                         "-0.7403)")
+d.step("count-right", Eq(NRIGHT, _above(_roots136(N_ONE), Z_MAX)), "definition", uses=("F-quartic", "F1"),
+       result=NRIGHT, note="real roots right of the maximum of F, the root z = 0.6857 of F' in (0, 3/4), at that point")
+d.step("n1-below", Eq(SGN1, sp.sign(N_ONE - sp.Subs(N1, t, t_s.subs(s, S_CT)))), "definition", uses=("n-plus",),
+       result=SGN1, note="n = 51/50 lies above n_1 = 1.00631 at s = 73/100 (t = 71/75)")
+d.quote("one-root-between", "IX.B", r"Zwischen  $z = \infty$  und  $z = 0$  liegt aber nur eine Wurzel",
+        reading=(NPOS, 1),
+        erratum=Erratum("transcription", "medium",
+                        r"Zwischen $z = -\infty$ und $z = 0$ liegt aber nur eine Wurzel",
+                        "As transcribed (between z = +infinity and 0) the sentence is false: F'' = 3z(4z - 3) (138) is "
+                        "negative on (0, 3/4), so F' does not increase there, and F can have three positive roots, as "
+                        "the text itself says for s > 23/32 ('eine oder drei reelle Wurzeln') and tables (161, 162) "
+                        "count: at s = 73/100, n = 251/250 the exact real roots of (136) are -0.7360, 0.5878, 0.7757, "
+                        "0.8724. Between -infinity and 0, where F'' > 0 and F' increases, there is exactly one. The "
+                        "display just above lists z = -infinity, and the next sentence ('zwischen - infinity und 0 ein "
+                        "Minimum', its minus set outside the formula) names the same interval: the minus of -infinity "
+                        "is lost. Medium: most likely the scan (it mangles the same minus a line later), but the print "
+                        "may have dropped it.",
+                        corrected_reading=(NNEG, 1)),
+        note="read at s = 73/100, n = 251/250 (s > 23/32, 1 <= n < n_1): the number of real roots of F in (0, oo)")
+d.quote("positive-whole-region", "IX.B", r"so ist  $F(z)$  für  $n > n_1$  in dem ganzen Gebiet positiv",
+        reading=(sp.Matrix([NREG, NRIGHT, SGN1]), sp.Matrix([0, 0, 1])),
+        erratum=Erratum("claim", "medium",
+                        r"\text{so ist } F(z) \text{ für } n > n_1 \text{ rechts von seinem Maximum positiv; links davon "
+                        r"hat } F(z) = 0 \text{ eine Wurzel, wenn } F(2\sigma) < 0 \text{ (161, I)}",
+                        "'das ganze Gebiet' is the range z = 2 sigma ... infinity of the preceding sentence. F grows with "
+                        "n there, so for n > n_1 the minimum of F is positive and F > 0 from its maximum on; but left of "
+                        "the maximum F(2 sigma) = 2 sigma^2 (n - rho) (141) is negative for n < rho, and then F has a "
+                        "root in the region. At s = 73/100, n = 51/50 (n_1 = 1.00631 < n < rho = 1.0368 < 9/(32 sigma), "
+                        "so F has a maximum and a minimum): the exact real roots of (136) are -0.7403 and 0.5586, the "
+                        "second in 2 sigma = 0.54 < z < 1, left of the maximum z = 0.6857. The author's own table "
+                        "(161), case I (F(2 sigma) < 0, n > n_1: one equilibrium), uses the right statement; the "
+                        "sentence over-generalises it (medium: 'das ganze Gebiet' may be meant loosely as the "
+                        "neighbourhood of the minimum).",
+                        corrected_reading=(sp.Matrix([NREG, NRIGHT, SGN1]), sp.Matrix([1, 0, 1]))),
+        note="read at s = 73/100, n = 51/50: roots of F in z > 2 sigma, roots right of its maximum, sign(n - n_1)")
 d.quote("t-of-s", "IX.B", r"$$\text{Nach 147 ist } t = \frac{119 - 128s}{27},$$", reading=as_printed(lambda: (t_s, (119 - 128 * s) / 27)))
 d.quote("7-3t", "IX.B", r"$$7 - 3t = 7 - \frac{119 - 128s}{9} = \frac{128s - 56}{9}$$",
         reading=as_printed(lambda: (7 - 3 * t_s, 7 - (119 - 128 * s) / 9, (128 * s - 56) / 9)))
@@ -549,6 +626,40 @@ d.quote("164", "(164)", r"$$\left( \frac{c}{b} \right)^2 > 4 (1 - s)^2 + \left( 
 d.quote("HG-max", "IX.B", r"Letzteres tritt aber für den kleinsten Wert von  $x$  oder  $z$  ein",
         reading=((HGz.subs(z, 2 * sg) ** 2 - HGz.subs(z, 1) ** 2) / b ** 2, (n - 1) * (1 - 4 * sg ** 2)))
 
+# the remaining displays of B, read from the steps above
+d.quote("F-minus-infinity", "IX.B", r"$$\text{Da für } z = -\infty \quad F(z) = +\infty$$",
+        reading=(sp.Limit(Fz / z ** 4, z, -sp.oo), 1),
+        note="read through the leading term: F/z^4 -> 1, so F -> +oo at both ends (even degree)")
+d.quote("F-plus-infinity", "IX.B", r"$$\text{,, } z = +\infty \quad F(z) = +\infty$$",
+        reading=(sp.Limit(Fz / z ** 4, z, sp.oo), 1), note="as at -oo")
+d.quote("140-n1", "IX.B", r"$$\text{wenn } \sigma - \frac{9}{32} \geq 0$$",
+        reading=(sg - sp.Rational(9, 32), sp.Subs(sp.Derivative(F_def, z), (z, a), (sp.Rational(3, 4), b)) / 3),
+        note="(139) at the smallest n = 1 (a = b): F'(3/4) over 3, F from the dry triangle")
+d.quote("F-2sigma-expanded", "IX.B", r"$$F(2\sigma) = 16(1-s)^4 - 12(1-s)^3 + 6n(1-s)^2 - 4n(1-s)^2$$",
+        reading=(F2s, 16 * (1 - s) ** 4 - 12 * (1 - s) ** 3 + 6 * n * (1 - s) ** 2 - 4 * n * (1 - s) ** 2))
+d.quote("F-2sigma-factored", "IX.B", r"$$= 2(1-s)^2 \cdot \left\{ 8(1-s)^2 - 6(1-s) + n \right\}$$",
+        reading=(F2s, 2 * (1 - s) ** 2 * (8 * (1 - s) ** 2 - 6 * (1 - s) + n)))
+d.quote("1+3t-positive", "IX.B", r"$$0 \leq 1 + 3t$$",
+        reading=(1 + 3 * t, ((7 - 3 * t) ** 2 - 9 * (5 - t) * (1 - t)) / 4),
+        note="sign identity: (160) squared is equivalent to 1 + 3t >= 0 (factor 1/4)")
+d.quote("z1-below-1", "IX.B", r"$$z_1 < 1.$$", reading=(1 - Zp, 4 * (1 + 3 * t) / (16 * (7 - 3 * t + 3 * rt))),
+        note="sign identity: 1 - z_1 is positive for t > -1/3 (s < 1)")
+d.quote("HG-less-c", "IX.B", r"$$\frac{x}{\sin \varphi_2} < c,$$", reading=(c - X / sp.sin(phi), c - HG),
+        note="HG < c with HG = x/sin phi_2")
+d.quote("HG-less-c-squared", "IX.B", r"$$x^2 + \frac{4 a^2 b^2 (1 - s)^2}{x^2} < c^2$$",
+        reading=(c ** 2 - (X ** 2 + 4 * a ** 2 * b ** 2 * (1 - s) ** 2 / X ** 2), c ** 2 - HG ** 2),
+        note="HG < c squared, HG^2 from (134)")
+
+d.quote("rho-above-1", "IX.B", r"$2(1-s)(4s-1) > 1$",
+        reading=(rho_s - 1, -F2s / (2 * sg ** 2) + ((a / b) ** 2 - 1)),
+        note="sign identity: rho - n = -F(2 sigma)/(2 sigma^2) > 0 (F(2 sigma) < 0) and n - 1 >= 0 (a >= b)")
+d.quote("z1-above-9-16", "IX.B", r"$\frac{9}{16} < z_1$", reading=(Zp - sp.Rational(9, 16), 3 * (t + rt) / 16),
+        note="positive for -1/3 < t < 1: (5 - t)(1 - t) - t^2 = 5 - 6t > 0 where t < 0")
+d.quote("z1-above-2sigma", "IX.B", r"$2\sigma < z_1$", reading=(Zp - 2 * sig_t, (27 - 15 * t + 12 * rt) / 64),
+        note="sigma from t by (150); positive for t < 1")
+d.quote("z1-at-most-1", "IX.B", r"$z_1 \leq 1$", reading=(1 - Zp, 4 * (1 + 3 * t) / (16 * (7 - 3 * t + 3 * rt))),
+        note="sign identity as (159)")
+
 # ==== C. the third region ============================================================================
 kd = sp.Dummy("k")
 
@@ -583,6 +694,32 @@ d.quote("164a-lower", "(164a)", r"\text{ d. i. } < 0,2113", reading=(slo, sp.Rat
 d.quote("unstable-3", "IX.C", r"$$\text{oder } \left(\frac{a}{b}\right)^2 > \frac{1}{6s(1-s)},$$",
         reading=((a / b) ** 2 - 1 / (6 * s * (1 - s)), -(a / b) ** 2 / (6 * s * (1 - s)) * 12 * s / a * GM3),
         note="sign identity, factor (a/b)^2/(6s(1-s)) times 12 s/a: the a-vertical position is unstable")
+d.quote("164-reference", "IX.C", r"Ist aber die Bedingung 164 nicht erfüllt",
+        reading=((c / b) ** 2 - (4 * (1 - s) ** 2 + (a / b) ** 2), 12 * s / a * GM3),
+        erratum=Erratum("misprint", "medium",
+                        r"\text{Ist aber die Bedingung } \left(\frac{b}{a}\right)^2 > 6s(1-s) \text{ (oder 164a) nicht "
+                        r"erfüllt}",
+                        "The negation the text writes next, (b/a)^2 < 6s(1-s), and its conclusion (the a-vertical "
+                        "position is unstable) belong to the condition (b/a)^2 > 6s(1-s) of the upright position in the "
+                        "third region, displayed four lines before (unnumbered, 's. 123'); (164) is "
+                        "(c/b)^2 > 4(1-s)^2 + (a/b)^2, the bound on c for complete stability in the second region, "
+                        "which neither decides nor follows from the upright stability in the third (e.g. a = 21/20, "
+                        "b = 1, c = 21/10, s = 1/20: (164) fails, yet (b/a)^2 = 0.907 > 6s(1-s) = 0.285). The reference is wrong; "
+                        "meant is the condition before (164a) or (164a) itself (which makes 6s(1-s) > 1 > (b/a)^2 when "
+                        "violated). Medium: a lost 'a' of '164a' would be the scan's.",
+                        corrected_reading=((b / a) ** 2 - 6 * s * (1 - s), 12 * s / a * GM3)),
+        note="read by the module's rule for conditions: the quantity of the cited condition against the one whose "
+             "sign decides the upright stability of the third region (12 s/a times its metacentric height)")
+d.quote("upright-3-range", "IX.C", r"$6s(1-s) < 1$", reading=(1 - 6 * s * (1 - s), 6 * (s - shi) * (s - slo)),
+        note="positive outside [s_-, s_+] (79)")
+d.quote("rho-below-1", "IX.C", r"$2(1-s)(4s-1) < 1$",
+        reading=(1 - rho_s, 8 * (s - half) * (s - sp.Rational(3, 4))))
+d.quote("upright-3-negation", "IX.C", r"$$\text{also } \left(\frac{b}{a}\right)^2 < 6s(1-s)$$",
+        reading=(6 * s * (1 - s) - (b / a) ** 2, -12 * s / a * GM3),
+        note="sign identity, factor 12 s/a: the a-vertical position is unstable")
+d.quote("131-third", "IX.C", r"$$\text{Ist (s. 131) } \left(\frac{a}{b}\right)^2 < 2(1-s)(4s-1)$$",
+        reading=(PW(rho_s - (a / b) ** 2, 0), PW(-Q130, 0)),
+        note="for s > 1/2: the oblique position of the first region lies beyond it (130 negated)")
 d.quote("165-pre", "IX.C", r"$$\left(\frac{b}{a}\right)^2 \geq 2(1-s)(4s-1)$$",
         reading=(PW((b / a) ** 2 - rho_s, 0), PW(Q3, 0)))
 d.quote("165", "(165)",

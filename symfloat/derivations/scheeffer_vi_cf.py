@@ -628,10 +628,28 @@ d.quote("circle-smallest", "VI.F", r"das kleinste der Kreis, nämlich  $\frac{F_
 d.quote("duhamel-decreasing", "VI.F", "$$T_1 - V_1 e_1$$\n\nauch um so kleiner, je grösser die Seitenzahl ist.",
         reading=(sp.Derivative(T1F - F * b * s * e1, n), -F ** 2 / (12 * pi) * 2 * pi / n ** 2 * npos / sp.sin(2 * pi / n) ** 2),
         note="V_1 e_1 = F b s e_1 does not depend on n")
+d.quote("duhamel-fewer-sides", "VI.F",
+        "Folglich wird auch nach dem Duhamel'schen Satze die Möglichkeit der aufrechten Stabilität (und ihre Grösse) "
+        "mit zunehmender Seitenzahl abnehmen.",
+        reading=(sp.Derivative(T1F / (F * b * s) - e1, n),
+                 -F / (12 * pi * b * s) * 2 * pi / n ** 2 * npos / sp.sin(2 * pi / n) ** 2),
+        note="the metacentric height T_1/V_1 - e_1 (V_1 = F b s, e_1 independent of n) decreases with n: its derivative "
+             "is a manifestly negative expression")
 tanF = F * b ** 2 * s * (1 - s) / T1F - 2
 d.quote("54-again", "VI.F", r"$$\operatorname{tg}^2 \varphi_1 = \frac{F b^2 s (1 - s)}{T_1} - 2$$",
         reading=(sp.Subs(tan2g, (Fg, Tg), (F, T1F)), tanF),
-        note="'Nach 55' of the text: the equation is (54) (55 is the bound of the first domain)")
+        note="'Nach 55' of the text: the equation is (54) (erratum 55-reference)")
+d.quote("55-reference", "VI.F", r"Nach 55 ist ferner",
+        reading=(tanF, (sp.Min(b * (1 - s), b * s) / sp.Subs(umn, r, sp.sqrt(2 * F / (n * sp.sin(2 * pi / n))))) ** 2),
+        erratum=Erratum("misprint", "medium", r"\text{Nach 54 ist ferner}",
+                        "The formula quoted after the words, tg^2 phi_1 = F b^2 s(1-s)/T_1 - 2, is (54), the oblique "
+                        "equilibrium of a prism whose base has equal moments about all central axes; (55) is the bound "
+                        "tg phi_1 <= b(1-s)/u_m (s > 1/2), b s/u_m (s < 1/2) of the first rotation region, which "
+                        "limits the tilt and does not determine it. A wrong equation number; 4 and 5 are close in "
+                        "print and in the scan alike (medium).",
+                        corrected_reading=(tanF, sp.Subs(tan2g, (Fg, Tg), (F, T1F)))),
+        note="read as: the equation cited gives the tg^2 phi_1 written next; (55) read at its bound for the regular "
+             "n-gon of area F (u_m of (88) with r^2 = 2F/(n sin 2pi/n))")
 d.quote("tilt-increasing", "VI.F",
         r"dass der Winkel  $\varphi_1$ , der die schiefe Stabilitätslage bestimmt, mit wachsender Seitenzahl zunehmen "
         r"muss",

@@ -28,8 +28,10 @@ same for the turned body of density 1 - s); x_0 < 0 when N lies between O and E;
 enthalten die vollständigen Bedingungen' (the two horizontal offsets of S_2 are -sin phi (103b), -tan phi
 (95a)); 's > 1/2, sodass also die obere Grundfläche zum Teil eintaucht' holds only for bases reaching equally
 far on both sides of the axis (claim erratum, as in IV).  Errata: the stray '1/2' before 'Volumen' in (100)
-(scan), the sign of 2 k tg 2mu in (109) (print).
-The references '102 a', '102 b' in (116), (117) mean (103a), (103b).
+(scan), the sign of 2 k tg 2mu in (109) (print), the lost df of the split of (95a) (scan), 'nach 102 a' for
+(103a) (print), 'den Punkt N' for N_1 and 'x_3^1' for x_s^1 in VIII (scan).
+The references '102 a', '102 b' in (116), (117) mean (103a), (103b); '102 b' is not booked, since (102) with
+(100) gives (116) as well.
 
 Witnesses (``symfloat.geometry.floating``): rectangles, triangles, squares, an equilateral triangle and a
 pentagon are clipped at the tilt with the draught found from the volume; the dry part is the clipped body
@@ -306,8 +308,15 @@ d.quote("97", "(97)", r"$$\int x y df = \int_s x y df + \int_2 x y df = 0. \quad
         note=EQN)
 d.quote("98", "(98)", r"$$\int x y df = \int_2 x y df = 0 \quad (98)$$", reading=(sp.Subs(res(Pxy), PO, 0), res(I2)),
         note="regular prism: P_O = 0 (step regular-product); " + EQN)
-d.quote("95a-split", "VII", r"$$\int x y \cdot = \int_1 x y df - \int_2 x y df$$", reading=(Pxy, Pwh - Pw),
-        note="int_2 over BGH still from N; the 'df' of the left side is lost in the transcription (harmless)")
+d.quote("95a-split", "VII", r"$$\int x y \cdot = \int_1 x y df - \int_2 x y df$$",
+        unreadable="the left member '\\int x y \\cdot' has no measure: an integral sign without its df",
+        erratum=Erratum("transcription", "high", r"\int x y \cdot df = \int_1 x y df - \int_2 x y df",
+                        "The left member is the sum of (95a), written 'int x y . df' one display before and 'int x y df' "
+                        "in (96) two displays after; here the df after the dot is missing, so the member is no "
+                        "formula. A lost token of the scan (the dot it followed survived); the content is the "
+                        "additivity of int x y df over ABCD = AGHCD + BGH, which holds.",
+                        corrected_reading=(Pxy, Pwh - Pw)),
+        note="int_2 over BGH still from N")
 d.quote("regular-Ps", "VII", r"so ist nach Abschnitt V auch  $\int_s x y df = 0$",
         reading=(sp.Subs(sp.Rational(1, 2) * (sp.Symbol("T_x") - sp.Symbol("T_y")) * sp.sin(2 * sp.Symbol("omega"))
                          + sp.Symbol("J") * sp.cos(2 * sp.Symbol("omega")),
@@ -318,6 +327,10 @@ d.quote("S3-offsets", "VII", "$$S_3 O_3 = P_3 O = x_3 - x_0,$$\n\n$SO$ , die hal
         reading=(sp.Matrix([MS3[0] / V3, MS3[2] / V3]), sp.Matrix([X3 / V3 - x0, b / 2 - Z3 / V3])),
         note="S_3 P_3 = z_3 (depth below the upper base), N P_3 = x_3 (the display before): the offsets of S_3 from S "
              "along NE and along the axis")
+d.quote("S3-offsets-used", "VII",
+        r"also mit Benutzung der Werte  $S_3 O_3 = x_3 - x_0$  und  $SO_3 = \frac{b}{2} - z_3$",
+        reading=(sp.Matrix([MS3[0] / V3, MS3[2] / V3]), sp.Matrix([X3 / V3 - x0, b / 2 - Z3 / V3])),
+        note="the offsets of S_3 from S along NE and along the axis, as displayed before (S3-offsets)")
 d.quote("complete", "VII", "No. 95 a, 103 a, b und 117 enthalten die vollständigen Bedingungen des Gleichgewichts "
         "und der Stabilität eines geraden Prismas (von beliebiger Form) für das zweite Drehungsgebiet.",
         reading=(sp.Matrix([M2h, M2y]), -sp.Matrix([sn2 * Q2, tg2 * Pxy])),
@@ -407,6 +420,12 @@ d.quote("108", "(108)", r"$$\begin{aligned} (T_2^1 - T_2) \sin 2 \mu - 2 k \cdot
         reading=(sp.Matrix([sp.diff(res(Tg), mu), sp.tan(2 * mus)]),
                  sp.Matrix([(T21g - T2g) * SC - 2 * kg * CC, 2 * kg / (T21g - T2g)])),
         note="dT_mu/dmu (the '= 0' imposed) and its root mu^*; T_2, T_2^1, k of any figure (step Tg)")
+d.quote("xs-depth", "VII", r"so ist  $x_s \operatorname{tg} \varphi_2$  seine Entfernung vom Wasserschnitt",
+        reading=(V3 / F, xs * tg2),
+        note="the mean length of the columns over F (dry volume over area): the column over the centroid, x_s tan phi_2")
+d.quote("Tmu-derivative", "VII", r"Setzt man den Differentialquotienten von  $T_\mu$  gleich Null, so erhält man",
+        reading=(sp.Derivative(Tg, mu), (T21g - T2g) * SC - 2 * kg * CC),
+        note="the derivative of (107) in mu; its zero is (108)")
 d.quote("109", "(109)", r"$$T_\mu = \frac{1}{2} (T_2 + T_2^1) - \frac{1}{2} \cos 2 \mu \left\{ T_2^1 - T_2 - 2 k "
         r"\operatorname{tg} 2 \mu \right\} \quad (109)$$",
         reading=(Tg, Sg - sp.cos(2 * mu) / 2 * (T21g - T2g - 2 * kg * sp.tan(2 * mu))),
@@ -462,6 +481,22 @@ d.quote("117", "(117)", r"$$\left. \begin{aligned} & \frac{T_1}{\cos^2 \varphi_2
 d.quote("117-cos", "VII", r"(nach 102 a)  $\frac{1}{\cos^2 \varphi_2} = \left| \frac{F_1 \cdot b (1 - s)}{F x_s} "
         r"\right|^2 + 1$", reading=(1 / c2 ** 2, (F1 * b * (1 - s) / (F * xs)) ** 2 + 1),
         note="'102 a' means (103a); the bars are brackets")
+Q102 = T * (1 + tg2 ** 2 / 2) - V3 * b / 2 - V3 * x0 / tg2     # the bracket of (102) as printed
+TAN_USED = F1 * b * (1 - s) / (F * xs)                            # tan phi_2 in the relation quoted after it
+d.quote("102a-reference", "VII", r"(nach 102 a)",
+        reading=(sp.Matrix([sp.Derivative(Q102, x0), tg2]), sp.Matrix([sp.Derivative(TAN_USED, x0), TAN_USED])),
+        erratum=Erratum("misprint", "medium", r"\text{(nach 103 a)}",
+                        "The relation cited, 1/cos^2 phi_2 = (F_1 b (1-s)/(F x_s))^2 + 1, is tan phi_2 = F_1 b (1-s)/"
+                        "(F x_s), i.e. (103a), which comes from the volume (100) and fixes the tilt whatever x_0. There "
+                        "is no (102a): (102) is the single moment equation T(1 + tg^2/2) - V_3 b/2 - V_3 x_0 cotg "
+                        "phi_2 = 0, which ties the tilt to x_0 (its derivative in x_0 is -F x_s, not 0) and cannot "
+                        "give it. '102 b' for (103b) before (116) is the same slip (not booked: (102) with (100) "
+                        "implies (116) as (103b) does). Two consistent numbers point to the print or an earlier "
+                        "numbering of the manuscript rather than the scan (medium).",
+                        corrected_reading=(sp.Matrix([sp.Derivative(V3 - V * (1 - s), x0), tg2]),
+                                           sp.Matrix([sp.Derivative(TAN_USED, x0), TAN_USED]))),
+        note="read as: the equation cited gives the tilt of the relation quoted after it, independent of x_0; the "
+             "derivative in x_0 of the equation cited against that of the relation, and the tilt itself")
 d.quote("117-T", "VII", "$$T_1 = T - F \\cdot x_s^2$$\n\n$$T_1^1 = T^1 - F \\cdot y_s^2.$$",
         reading=(sp.Matrix([T1, T11]), sp.Matrix([T - F * xs ** 2, Tp - F * YS ** 2])))
 d.step("O-position", Eq(sp.Symbol("x_O"), x0), "definition", result=sp.Symbol("x_O"),
@@ -511,6 +546,10 @@ d.quote("121", "(121)", r"$$\left. \begin{aligned} \frac{M_3}{\sin \varphi_3} &=
         r"\operatorname{tg}^2 \varphi_3 \right) - (x_0 + x_0^1 + b \operatorname{tg} \varphi_3) \cdot f x_s^1 \\ &\quad - "
         r"V_3 \cdot \frac{b}{2} - V_3 \cdot x_0 \cdot \operatorname{cotg} \varphi_3 \end{aligned} \right\} = 0. \quad (121)$$",
         reading=(M3c / sn3, Q3), note=EQN)
+d.quote("fig20", "VIII", r"In Fig. 20 ist Winkel  $N_2 N N_1 = \varphi_3$ ,  $N_1 N_2 = b$  und  $N N_2 = x_0 + x_0^1$",
+        reading=(sp.Matrix([sp.atan(b / (b / tg3)), b, b / tg3]), sp.Matrix([phi3, (x0 + x01) * tg3, x0 + x01])),
+        note="N_1 is where the water plane z = -x tan phi_3 reaches the lower base z = -b, at x = b cot phi_3 = N N_2; "
+             "N_1 N_2 = b is its depth there, the angle at N its slope")
 d.quote("121a", "(121a)", r"$$(x_0 + x_0^1) \operatorname{tg} \varphi_3 = b \quad (121 a)$$", reading=((x0 + x01) * tg3, b))
 d.quote("121b", "(121b)", r"$$V_3 = (F x_s - f x_s^1) \operatorname{tg} \varphi_3 = F_1 \cdot b (1 - s) \quad (121 b)$$",
         reading=(V3c, (F * xs - f * xs1) * tg3, F1 * b * (1 - s)))
@@ -518,6 +557,37 @@ d.quote("121-dry", "VIII", r"Das Volumen des nicht eintauchenden Körperteils ( 
         r"schief abgestumpften Prismen",
         reading=(V3c, termwise(col3(1), MF) - Mf_x(cut3(1))),
         note="the prism over F under the upper base down to the water plane, less its part below the lower base")
+x31 = sp.Symbol("x_3^1", positive=True)      # the letter printed in the definition of the centroid distance of f
+d.domain.update({x31: (R(1, 20), R(3, 10))})
+d.quote("xs1-definition", "VIII", r"$x_3^1$  die Entfernung des Schwerpunktes der Fläche  $f$  von  $M L$",
+        reading=(sp.Matrix([Z3c, X3c]), sp.Matrix([(T - tau) * tg3 ** 2 / 2 - b * f * x31 * tg3,
+                                                  (T - tau) * tg3 - (x0 + x01) * x31 * f * tg3])),
+        erratum=Erratum("transcription", "medium", r"x_s^1 \text{ die Entfernung des Schwerpunktes der Fläche } f "
+                                                   r"\text{ von } M L",
+                        "The distance defined here is the one (120), (121), (121b), (122) use as x_s^1 (f x_s^1 is the "
+                        "first moment of f about ML, as F x_s that of F about GH); x_3^1 appears in no formula, and "
+                        "x_3 is the dry part's centroid, another quantity. Read with the printed letter as its own "
+                        "quantity, (120) fails; with x_s^1 it is the derived moment. The scan read s as 3 (medium: "
+                        "the print may have had the slip).",
+                        corrected_reading=(sp.Matrix([Z3c, X3c]), sp.Matrix([(T - tau) * tg3 ** 2 / 2 - b * f * xs1 * tg3,
+                                                                            (T - tau) * tg3 - (x0 + x01) * xs1 * f * tg3]))),
+        note="read through (120), the moments that use the distance defined here")
+zw3 = lambda xx: -xx * tg3 + b  # noqa: E731  (height of the water plane z = -x tan phi_3 above the lower base z = -b)
+d.quote("N1-lower-base", "VIII",
+        r"bis auf den Punkt N, welcher hier (Fig. 20) in der unteren Grundfläche, dort in einer Seitenfläche liegt",
+        reading=(zw3(sp.Integer(0)), 0),
+        erratum=Erratum("transcription", "medium",
+                        r"\text{bis auf den Punkt } N_1\text{, welcher hier (Fig. 20) in der unteren Grundfläche, dort "
+                        r"in einer Seitenfläche liegt}",
+                        "N is the foot on GH of the perpendicular from O, in the upper base in both regions (Fig. 18; "
+                        "the origin of x in (118)-(121), and 'N N_2 = x_0 + x_0^1' of (121a) runs in the upper base). "
+                        "The point of the section's water line N_1 N (Fig. 17) that lies on a side face in the second "
+                        "region and in the lower base in the third is N_1: the same sentence projects it ('N_2 die "
+                        "Projektion von N_1') and (121a) uses N_1 N_2 = b. On the water plane z = -x tan phi_3 the "
+                        "point N (x = 0) lies b above the lower base, N_1 (x = x_0 + x_0^1) in it. A lost subscript "
+                        "(medium: the print may have dropped it).",
+                        corrected_reading=(zw3(x0 + x01), 0)),
+        note="read as the height above the lower base z = -b of the point on the water line (x = 0 for N)")
 L122 = ((T - tau) * tg3 * (1 + tg3 ** 2 / 2) - F1 * b * (1 - s) * (x0 + b / 2 * tg3) - b * f * xs1 * (1 + tg3 ** 2))
 d.quote("122", "(122)", r"$$\left. \begin{aligned} (T - \tau) \operatorname{tg} \varphi_3 \left( 1 + \frac{1}{2} "
         r"\operatorname{tg}^2 \varphi_3 \right) &= F_1 b (1 - s) \left( x_0 + \frac{b}{2} \operatorname{tg} \varphi_3 "

@@ -9,7 +9,8 @@ onto the water line GH, x across GH towards B, y along GH towards G.  The first 
 is int xy df = 0 over the triangle; split at P it is (167), and with NH = u, NG = v from the square it
 becomes (168) = h^3 (cos w - sin w)(2a cos w - rho(cos w + sin w))/(24 sin w cos^2 w).  The second
 factor cannot vanish for a triangle inside the face (169a, b contradict each other), so omega = 45 deg
-(170): with a pentagonal or triangular waterplane the cut triangle is isosceles.  All of this is derived
+(170): with a pentagonal or triangular waterplane the cut triangle is isosceles ('in 104' before (168)
+means (167): misprint).  All of this is derived
 here by integrating over the triangles, and the condition itself is measured on the clipped cube as the
 moment of the dry part about the vertical plane across the axis.
 
@@ -152,8 +153,25 @@ d.quote("168", "(168)",
         r"$$\int x y \, d f = \frac{h^3 (\cos \omega - \sin \omega)}{24 \sin \omega \cdot \cos^2 \omega} \cdot "
         r"\left\{ 2 a \cdot \cos \omega - \varrho (\cos \omega + \sin \omega) \right\} = 0 \quad (168)$$",
         reading=(P, h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si))),
-        note="'Setzt man diese Werte in 104 ein': the values go into (167), not (104) (the stability condition); "
-             "a wrong reference in the words, not in a formula")
+        note="the values go into (167), not (104) as the words say (erratum 104-reference)")
+Tm104, Ve104 = sp.symbols("T_m V_3e_3", positive=True)   # the members of (104), T_m - V_3 e_3 > 0, as printed
+Ul, Vl = sp.symbols("u_l v_l", real=True)                 # the letters u, v into which the values are inserted
+d.domain.update({Tm104: (0.1, 1), Ve104: (0.1, 1)})
+U_VAL, V_VAL = (rho - a / 2) * co + a / 2 * si, a / 2 * co - (a / 2 - rho * tg) * si     # the printed u, v
+d.quote("104-reference", "X", r"Setzt man diese Werte in 104 ein",
+        reading=(h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si)),
+                 sp.Subs(Tm104 - Ve104, (Ul, Vl), (U_VAL, V_VAL))),
+        erratum=Erratum("misprint", "medium", r"\text{Setzt man diese Werte in 167 ein}",
+                        "u and v, just computed, are the letters of (167), int x y df = h^3 {(v tg w - u cotg w)/6 + "
+                        "h (cotg^2 w - tg^2 w)/8}; inserted there they give (168) (derived: step 168). (104) is the "
+                        "stability condition T_m - V_3 e_3 > 0 of section VII, which contains neither u nor v and is "
+                        "no first equilibrium condition: inserting u, v into it leaves T_m - V_3 e_3, not (168). A "
+                        "wrong equation number; the scan would hardly turn 167 into 104, so the print's (medium).",
+                        corrected_reading=(h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si)),
+                                           sp.Subs(h_ ** 3 * ((Vl * tg - Ul * ctg) / 6 + h_ / 8 * (ctg ** 2 - tg ** 2)),
+                                                   (Ul, Vl), (U_VAL, V_VAL)))),
+        note="read as: (168) is the cited equation's left member with u, v inserted; (104)'s members T_m, V_3 e_3 "
+             "are quantities of their own (not of u, v)")
 d.step("half-range", (P168.subs(h_, rho * si).subs({om: pi / 2 - om, rho: rho * tg}, simultaneous=True),
                       -P168.subs(h_, rho * si)), "algebra", uses=("168", "height"),
        note="the same triangle seen from G (angle 90 deg - w, leg rho tan w) gives -P: the zeros for "
@@ -184,6 +202,9 @@ d.quote("169b", "(169b)",
         r"\\ \text{woraus} \quad & \sin \omega < \cos \omega \end{aligned} \quad (169b)$$",
         reading=(a - 2 * a * co * tg / (co + si), a / (co + si) * (co - si)),
         note="from rho_* tan w < a: sign identity, factor a/(cos w + sin w) > 0; with (169a) unsatisfiable")
+d.quote("169-unsatisfiable", "X", r"Die beiden Bedingungen 169 a, b sind aber unerfüllbar",
+        reading=((a - rs) * (a - rs * tg), -a ** 2 * (co - si) ** 2 / (co + si) ** 2),
+        note="sign identity (169-exclusive): the two margins a - rho_*, a - rho_* tan w never are both positive")
 d.quote("170", "(170)", r"$$\omega = \frac{\pi}{4} \quad (170)$$", reading=(sp.Subs(P, om, pi / 4), 0),
         note="the first condition holds at w = 45 deg for every triangle")
 d.quote("diagonal-claim", "X",
@@ -356,6 +377,10 @@ d.step("tetra-volume", (Vt, sp.Integral(1, (Z, 0, a - X - Y), (Y, 0, a - X), (X,
 d.step("triangle-bound", Eq(s56, 1 - Vt / a ** 3), "definition", result=s56,
        note="density at which the dry part is that tetrahedron")
 d.quote("tetra", "X", r"$$\frac{a^3}{6} = a^3 (1 - s)$$", reading=(Vt, a ** 3 * (1 - s56)))
+d.quote("diagonal-plane-bound", "X",
+        r"Die untere Grenze für  $s$  tritt ein, wenn der Wasserschnitt aus drei Flächendiagonalen gebildet wird.",
+        reading=(s56, 1 - sp.Integral(1, (Z, 0, a - X - Y), (Y, 0, a - X), (X, 0, a)) / a ** 3),
+        note="the dry part is then the corner tetrahedron cut off by the three face diagonals")
 d.quote("five-sixths", "X", r"$$s = \frac{5}{6}$$", reading=(s56, sp.Rational(5, 6)))
 ut = sp.Matrix([1, 1, 1]) / sp.sqrt(3)
 d.step("tri-symmetric", (as_printed(lambda: sp.Matrix([-L, L, 0]).cross(sp.Matrix([-L, 0, L]))), L ** 2 * sp.sqrt(3) * ut),
@@ -429,6 +454,15 @@ d.quote("175", "(175)",
 d.quote("factor-positive", "X", "man sieht leicht ein, dass er stets positiv ist",
         reading=(FAC, co * ((a - rho) + (a - rho * tg))),
         note="a sum of positive terms when rho < a and rho tan w < a")
+d.quote("174-positive", "X",
+        r"Die Summe  $\int x y \cdot d f$  ist also positiv und nur für  $\omega = 45^\circ$  gleich Null.",
+        reading=(P, (co - si) * POS),
+        note="sign identity (sign-of-P): P = (cos w - sin w) x (a positive factor) for 0 < w <= 45 deg")
+d.quote("175-positive", "X",
+        r"und dieser Ausdruck ist ebenfalls (wie 174) für alle Werte von  $\omega$  zwischen  $0$  und  $45^\circ$  "
+        r"positiv und nur für  $\omega = 45^\circ$  gleich Null.",
+        reading=(P1, (co - si) * h1_ ** 3 * ((a - rho1) + (a - rho1 * tg)) / (24 * si * co)),
+        note="sign identity: (175) is (168) for LDM, the factor positive for rho_1 < a, rho_1 tan w < a")
 d.quote("173-only-45", "X", r"Daher ist  $\omega = 45^\circ$  die einzige Lösung der Gleichung 173.",
         reading=(P + P1, (co - si) * (POS + POS.subs({h_: h1_, rho: rho1}))),
         note="sign identity: both terms are cos w - sin w times a positive factor (sign-of-P)")
