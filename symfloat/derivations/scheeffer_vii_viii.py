@@ -547,7 +547,7 @@ d.quote("121", "(121)", r"$$\left. \begin{aligned} \frac{M_3}{\sin \varphi_3} &=
         r"V_3 \cdot \frac{b}{2} - V_3 \cdot x_0 \cdot \operatorname{cotg} \varphi_3 \end{aligned} \right\} = 0. \quad (121)$$",
         reading=(M3c / sn3, Q3), note=EQN)
 d.quote("fig20", "VIII", r"In Fig. 20 ist Winkel  $N_2 N N_1 = \varphi_3$ ,  $N_1 N_2 = b$  und  $N N_2 = x_0 + x_0^1$",
-        reading=(sp.Matrix([sp.atan(b / (b / tg3)), b, b / tg3]), sp.Matrix([phi3, (x0 + x01) * tg3, x0 + x01])),
+        reading=(sp.Matrix([sp.atan(b / (b / tg3)), b, b / tg3]), sp.Matrix([phi3, b, x0 + x01])),
         note="N_1 is where the water plane z = -x tan phi_3 reaches the lower base z = -b, at x = b cot phi_3 = N N_2; "
              "N_1 N_2 = b is its depth there, the angle at N its slope")
 d.quote("121a", "(121a)", r"$$(x_0 + x_0^1) \operatorname{tg} \varphi_3 = b \quad (121 a)$$", reading=((x0 + x01) * tg3, b))
