@@ -125,6 +125,25 @@ d.quote("rotation-5", "(5)",
         r"$$\begin{aligned} m &= v \cos \varphi - u \sin \varphi \\ n &= v \sin \varphi + u \cos \varphi "
         r"\end{aligned} \quad (5)$$",
         reading=(sp.Matrix([m, n]), sp.Matrix([v * sp.cos(phi) - u * sp.sin(phi), v * sp.sin(phi) + u * sp.cos(phi)])))
+SS1 = e1 * eu                                  # the floating axis from S to S1 (S1 at u = e1)
+d.quote("fig3-labels", "I, Fig. 3",
+        "Schwimmachse  $S S$ , senkrecht zur Richtung der Drehungsachse gelegte (Vertikal-) Ebene dar.  "
+        "$A, B$ , sei die alte,  $A B$  die neue Wasserlinie",
+        reading=(sp.Matrix([SS1.dot(SS1), ev.dot(sp.Matrix([1, 0]))]), sp.Matrix([0, 1])),
+        note="read as the squared length of the axis named (S S: from S to S) and the cosine of the angle between "
+             "the lines named old and new waterline (both A B: one line); the old waterline A1B1 is fixed in the "
+             "body across the axis (direction v), the new one horizontal",
+        erratum=Erratum("transcription", "high",
+                        r"\text{die durch die Schwimmachse } S S_1 \ldots \; A_1 B_1 \text{ sei die alte, } A B "
+                        r"\text{ die neue Wasserlinie}",
+                        "The scan read the subscript 1 as a comma twice. 'S S ,' names no axis: the floating axis "
+                        "is S S_1 (section I: 'Die Schwimmachse S S_1', 'S S_1 werde mit e_1 ... bezeichnet'); "
+                        "'A, B, sei die alte, A B die neue Wasserlinie' gives the old and the new waterline the "
+                        "same letters, which the rotation by phi separates, while section II ('wie in Fig. 3') "
+                        "writes 'A B die neue, A_1 B_1 die alte Wasserlinie'. A comma for a subscript 1 after a "
+                        "letter is the scan's, not the printer's (high).",
+                        corrected_reading=(sp.Matrix([SS1.dot(SS1), ev.dot(sp.Matrix([1, 0]))]),
+                                           sp.Matrix([e1 ** 2, sp.cos(phi)]))))
 d.quote("moments-raw", "I",
         r"$$\begin{aligned} V_1 v &= V_3 (v_3 + v_4) \\ V_1 u &= V_1 e_1 - V_3 (u_3 - u_4). \end{aligned}$$",
         reading=(sp.Matrix([V1 * v, V1 * u]), sp.Matrix([V3 * (v3 + v4), V1 * e1 - V3 * (u3 - u4)])))
@@ -268,6 +287,38 @@ d.quote("moment-13", "(13)",
 crit15 = (1 + tg ** 2 / 2) * T1 - V1 * e1
 d.step("sign-15", (sp.sign(V1 * m), sp.sign(crit15)), "algebra", uses=("righting-moment-12",),
        note="sin phi > 0 for 0 < phi < pi/2: V1 m and the bracket of (12) have the same sign")
+
+
+def IND(rel):
+    """1 where the condition *rel* holds, else 0."""
+    return sp.Piecewise((1, rel), (0, True))
+
+
+d.quote("stable-V1m", "(15)", "so muss (nach 9 und 12)  $V_1 m$  und folglich",
+        reading=(sp.Integer(1), IND(sp.StrictGreaterThan(crit15, 0))),
+        note="read as: the condition the sentence puts on V1 m (as transcribed: none, every V1 m) is equivalent "
+             "to (15), by (12)",
+        erratum=Erratum("transcription", "high", r"\text{so muss (nach 9 und 12) } V_1 m > 0 \text{ und folglich}",
+                        "The sentence has no predicate for V1 m: 'so muss V1 m und folglich (15) sein'. Stability "
+                        "is (2), V1 m > 0, and by (12) V1 m = sin(phi) times the bracket of (15) with sin(phi) > 0, "
+                        "so V1 m > 0 exactly when the bracket is positive: the lost words are '> 0' (or "
+                        "'positiv'). The parallel sentence of the labile case has lost its '< 0' in the same way; "
+                        "a relation sign dropped after an inline formula is the scan's (high). The reference "
+                        "'nach 9' is left as printed (the numbering has gaps and no display of the transcription "
+                        "carries (9)).",
+                        corrected_reading=(IND(sp.StrictGreaterThan(V1 * m, 0)), IND(sp.StrictGreaterThan(crit15, 0)))))
+d.quote("labile-V1m", "after (15)", "so ist  $V_1 m$  und daher",
+        reading=(sp.Integer(1), IND(sp.StrictLessThan(crit15, 0))),
+        note="read as: the condition the sentence puts on V1 m (as transcribed: none) is equivalent to the "
+             "bracket being negative, by (12)",
+        erratum=Erratum("transcription", "high", r"\text{so ist } V_1 m < 0 \text{ und daher}",
+                        "As in the stable case the relation of V1 m is lost: 'so ist V1 m und daher ... < 0'. The "
+                        "labile position has V1 m < 0 ((2) fails), and by (12) V1 m < 0 exactly when the bracket "
+                        "(1 + tg^2(phi)/2) T1 - V1 e1 is negative (sin(phi) > 0): the lost words are '< 0' (or "
+                        "'negativ'). For the labile initial position this holds for the small rotations, below "
+                        "the zero phi_1 of the increasing bracket (IV (27)). The scan's loss, as in the stable "
+                        "case (high).",
+                        corrected_reading=(IND(sp.StrictLessThan(V1 * m, 0)), IND(sp.StrictLessThan(crit15, 0)))))
 d.quote("stable-15", "(15)",
         r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - V_1 e_1 > 0 \text{ sein.} \quad (15)$$",
         reading=(sp.sign(V1 * m), sp.sign(crit15)),
