@@ -365,8 +365,20 @@ d.quote("37", "(37)", r"$$\begin{aligned} T &= \int_2 \zeta^2 df_2 = \cos^2 \mu 
                       r"\cos^2 \mu + T_2^1 \cdot \sin^2 \mu + \sin 2 \mu \int_2 u_2 v_2 \cdot df. \end{aligned} "
                       r"\quad (37)$$",
         reading=as_printed(lambda: (Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
-                 T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2)),
-        note="the last integral is printed with df for df_2; it is the same integral over II (int_2)")
+                 T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * rdf * P2)),
+        note="the last integral of the second line is printed with df, the element of the waterplane I "
+             "(df = df_2 cos phi_1, ratio-df), over the waterplane II: int_2 u_2 v_2 df = cos phi_1 int_2 u_2 v_2 df_2",
+        erratum=Erratum("transcription", "low",
+                        r"T = T_2 \cos^2 \mu + T_2^1 \sin^2 \mu + \sin 2\mu \int_2 u_2 v_2 \, df_2",
+                        "The first line of (37) has sin 2mu int_2 u_2 v_2 df_2; the second, which only renames "
+                        "int_2 u_2^2 df_2 and int_2 v_2^2 df_2 as T_2 and T_2^1, repeats the term with df. The text "
+                        "defines df as the element of the waterplane I, the projection of df_2 (next line; (38*) "
+                        "pairs int_2 with df_2 and int_1 with df throughout), so int_2 u_2 v_2 df differs from "
+                        "int_2 u_2 v_2 df_2 by the factor cos phi_1 unless the integral vanishes. Harmless for (39), "
+                        "(40), where it is zero. A lost subscript 2: more likely the scan's than the printer's, but "
+                        "the text cannot tell (low).",
+                        corrected_reading=as_printed(lambda: (Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
+                                                              T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2))))
 d.quote("38-projection", "(38)", r"$$df = \frac{df_2}{\cos \varphi_1} \quad u = \frac{u_2}{\cos \varphi_1} \quad "
                                  r"v = \frac{v_2}{\cos \varphi_1}$$",
         reading=(sp.Matrix([rdf, ru, rv]), sp.Matrix([1 / sp.cos(phi1)] * 3)),
@@ -855,7 +867,9 @@ _w("wp2", "second moments of the clipped waterplane II about EF, across it, and 
 _w("wp2-ext", "the moments of the clipped waterplane II about EF and across it", ("41", "42"), "wp2-ext", EQ)
 _w("P2", "product moment of the clipped waterplane II at the equilibrium tilt", ("39",), "P2",
    ("rect-long", "tri", "quad-p"))
-_w("Tmu", "moment of the clipped waterplane II about the axis at the angle mu with EF", ("37", "40"), "Tmu",
+# not (37): its cases lie at the tilted equilibrium, where int_2 u_2 v_2 df_2 = 0 and the print of (37) (df for
+# df_2 in that term) and its correction coincide
+_w("Tmu", "moment of the clipped waterplane II about the axis at the angle mu with EF", ("40",), "Tmu",
    (("rect-long", R(1, 3), {mu: R(1, 3)}), ("quad-p", R(6, 5), {mu: R(6, 5)}), ("tri", R(7, 10), {mu: R(7, 10)})))
 _w("D2", "V times the metacentric height of the clipped tilted prism", ("33", "43", "43-again"), "D2", EQ)
 _w("D2-sign", "sign of the metacentric height of the clipped tilted prism", ("claim-43a",), "D2-sign", NONISO)
