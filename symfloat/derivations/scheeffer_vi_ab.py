@@ -34,6 +34,7 @@ x, y, X, Y, th = sp.symbols("x y X Y theta", real=True)
 a, b, s, r = sp.symbols("a b s r", positive=True)
 om = sp.Symbol("omega", real=True)
 tp = sp.Symbol("tau", positive=True)            # tan(phi) of a tilted position
+bs_ = sp.Symbol("b_s", positive=True)           # the scan's "b_s" for the draught b s (Example 10)
 Tx, Ty, Pxy = sp.symbols("T_x T_y P_xy", real=True)
 u = sp.Symbol("u", real=True)
 T = sp.Symbol("T")
@@ -52,7 +53,7 @@ DERIVATION = d = Derivation(
     requires=(),
     domain={x: (-1, 1), y: (-1, 1), om: (0, 1), Tx: (1, 2), Ty: (1, 2), Pxy: (-1, 1),
             a: (sp.Rational(1, 2), 2), b: (1, 2), s: (sp.Rational(1, 20), sp.Rational(19, 20)),
-            r: (sp.Rational(1, 2), 2), tp: (sp.Rational(1, 10), 2)},
+            r: (sp.Rational(1, 2), 2), tp: (sp.Rational(1, 10), 2), bs_: (sp.Rational(1, 10), 4)},
     constraints=(),
     assumptions=("the body is a homogeneous right prism (or cylinder) of height b and density s (0 < s < 1) "
                  "in water of density 1; the bases are perpendicular to the axis",
@@ -593,7 +594,8 @@ d.quote("ex6-root", "Example 6", r"\sqrt{1 - \frac{1}{2} \cdot \left(\frac{2}{b}
         reading=(sp.sqrt(1 - (2 / b) ** 2 / 2).subs(sq_), sp.sqrt(sp.Rational(1, 2))),
         erratum=Erratum("transcription", "medium", r"\sqrt{1 - \frac{1}{2} \cdot \left(\frac{2r}{b}\right)^2} = \sqrt{0,50}",
                         "The same lost r as in ex6-ratio; with 2r/b = 1 the radicand is 1/2 as printed.",
-                        corrected_reading=as_printed(lambda: (sp.sqrt(1 - (2 * r / b) ** 2 / 2).subs(sq_), sp.sqrt(sp.Rational(1, 2))))))
+                        corrected_reading=as_printed(lambda: (sp.sqrt(1 - (2 * r / b) ** 2 / 2).subs(sq_), sp.sqrt(sp.Rational(1, 2)))),
+                        same_as="scheeffer-vi-ab/ex6-ratio"))
 sC_hi1, sC_lo1 = (e.subs(sq_) for e in (_rootsC[1], _rootsC[0]))
 for name, exc, val, printed, tol in (
         ("ex6-root-value", r"\sqrt{0,50} = 0,7071", 2 * sC_hi1 - 1, "0.7071", sp.Rational(1, 20000)),
@@ -609,6 +611,19 @@ d.quote("72", "(72)", r"$$\text{Ist aber} \quad \frac{2r}{b} < \sqrt{8s(1-s)} \q
 d.quote("cylinder-data-72", "VI.B", r"$$F_1 = \pi r^2 \quad T_1 = \frac{\pi r^4}{4} \quad u_m = r$$",
         reading=(sp.Matrix([F1c, T1c]), sp.Matrix([pi * r ** 2, pi * r ** 4 / 4])))
 Bc = b / (2 * r)
+d.quote("72a-cited", "VI.B", "Diese ist durch die Bedingungen 55 bestimmt, wenn darin",
+        reading=(tanC ** 2, sp.Piecewise(((b * (1 - s) / r) ** 2, s > sp.Rational(1, 2)), ((b * s / r) ** 2, True))),
+        note="read as: the tilt the cited (55) determines with u_m = r (it bounds tg phi_1 only; read at its bound) "
+             "is the tilt of the cylinder's oblique equilibrium, whose tg^2 the next display gives",
+        erratum=Erratum("misprint", "low", r"\text{Diese ist durch die Bedingungen 54 und 55 bestimmt}",
+                        "The tilt tg^2 phi_1 = 16 (b/2r)^2 s(1-s) - 2 of the next display is (54), tg^2 phi_1 = "
+                        "F_1 b^2 s(1-s)/T_1 - 2, with F_1 = pi r^2, T_1 = pi r^4/4; (55) contains neither F_1 nor T_1 "
+                        "and only bounds the tilt (the second line of (72a), with u_m = r). For the triangular prism "
+                        "the text cites rightly 'aus 54 und 55' (before (60)); here 54 is missing, and again in VI.C "
+                        "('wenn die Bedingungen 55 erfüllt sind', then F_1 b^2 s(1-s)/T_1). Low: the author may have "
+                        "meant the pair (54), (55) by 'Bedingungen 55'; the print, not the scan (a number dropped "
+                        "from a reference).",
+                        corrected_reading=(tanC ** 2, F1c * b ** 2 * s * (1 - s) / T1c - 2)))
 d.quote("72a-tan", "(72a)", r"$$\text{tg}^2 \varphi_1 = 16 \left( \frac{b}{2r} \right)^2 \cdot s (1-s) - 2$$",
         reading=Eq(tanC ** 2, 16 * Bc ** 2 * s * (1 - s) - 2))
 d.quote("72a", "(72a)",
@@ -715,8 +730,20 @@ d.quote("ex10-angle", "Example 10", r"Die Ausführung der Rechnung ergibt angen�
                         "arctg(11/32) to the second (18 deg 58' 13.5''): the root was not taken. The limit "
                         "tg phi_1 <= 2(1-s) b/(2r) = 0.625 still holds, so the position exists.",
                         corrected_reading=(phi10, DMS(30, 22, 59))))
+BS_EVIDENCE = ("The upright draught of the cylinder is b s, height times specific gravity (Archimedes: pi r^2 b s "
+               "= weight; IV, after (53a): 'b s nun die Höhe des ... unter dem Wasserspiegel befindlichen "
+               "Körperteils'); 'b_s' is defined nowhere, and the next line uses 1,5 = 2,5 * 0,6 = b s. The scan set "
+               "the s as a subscript (medium: a printer's subscript is not excluded).")
+d.quote("upright-draught", "Example 10", r"In der aufrechten Schwimmlage ist diese  $b_s$",
+        reading=(V1c / F1c, bs_), note="diese: the height to which the side surface is immersed; upright V_1/F_1",
+        erratum=Erratum("transcription", "medium", r"b s \; (= b \cdot s)",
+                        "The same 'b_s' for b s as in the formula x = b_s + r tg phi (x-formula). " + BS_EVIDENCE,
+                        corrected_reading=(V1c / F1c, b * s), same_as="scheeffer-vi-ab/x-formula"))
 d.quote("x-formula", "Example 10", r"x &= b_s + r \operatorname{tg} \varphi",
-        reading=Eq(xC, b * s + r * tanC), note="'b_s' is the OCR of b s (the text says 'diese b s', the draught)")
+        reading=Eq(xC, bs_ + r * tanC),
+        note="phi: the tilt of the equilibrium, phi_1 (the formula holds for every tilt of the first region)",
+        erratum=Erratum("transcription", "medium", r"x = b s + r \operatorname{tg} \varphi", BS_EVIDENCE,
+                        corrected_reading=Eq(xC, b * s + r * tanC)))
 x10 = (b * s + r * tanC_e).subs(ex10)
 cons = "follows from the angle of ex10-angle: r tg phi_1 = 1.6 * 11/32 = 0.55 with the unrooted tangent"
 d.quote("ex10-x-sum", "Example 10", r"x &= 1,5 + 0,55", reading=(x10, sp.Rational("1.5") + sp.Rational("0.55")),
@@ -731,6 +758,14 @@ d.quote("ex10-fraction", "Example 10", r"$\frac{x}{b} = \frac{2,05}{2,50} = \fra
         reading=(x10 / sp.Rational(5, 2), sp.Rational(41, 50)), tolerance=sp.Rational(1, 100),
         erratum=Erratum("consequential", "high", r"\frac{x}{b} = \frac{2,44}{2,50} = \frac{49}{50} (0.9752)",
                         cons + "; x/b = 2.438/2.5 = 0.9752", corrected_reading=(x10 / sp.Rational(5, 2), sp.Rational(49, 50))))
+d.quote("ex10-deepest", "Example 10",
+        r"Der am tiefsten eintauchende Teil der Mantelhöhe beträgt also  $\frac{41}{50}$",
+        reading=(x10 / sp.Rational(5, 2), sp.Rational(41, 50)), tolerance=sp.Rational(1, 100),
+        erratum=Erratum("consequential", "high", r"\frac{49}{50} \; (0{,}9752)",
+                        "The x/b = 41/50 of the line before (ex10-fraction) repeated in words; " + cons
+                        + "; x/b = 2.438/2.5 = 0.9752",
+                        corrected_reading=(x10 / sp.Rational(5, 2), sp.Rational(49, 50)),
+                        same_as="scheeffer-vi-ab/ex10-fraction"))
 d.quote("ex10-dry", "Example 10", r"der kürzeste über dem Wasser befindliche Teil  $\frac{9}{50}$",
         reading=(1 - x10 / sp.Rational(5, 2), sp.Rational(9, 50)), tolerance=sp.Rational(1, 100),
         erratum=Erratum("consequential", "high", r"\frac{1}{50} (0.0248)", cons + "; 1 - 0.9752 = 0.0248",
@@ -1061,7 +1096,7 @@ cw("example-10-angle", "equilibrium tilt of the cylinder by quadrature, degrees"
    lambda c, dps: ex10c(dps)[0])
 cw("example-10-x", "water height on the dipping generator (quadrature)", ("ex10-x-sum", "ex10-x"), one,
    lambda c, dps: ex10c(dps)[1])
-cw("example-10-fraction", "the same over b", ("ex10-fraction",), one, lambda c, dps: ex10c(dps)[1] / mpmath.mpf("2.5"))
+cw("example-10-fraction", "the same over b", ("ex10-fraction", "ex10-deepest"), one, lambda c, dps: ex10c(dps)[1] / mpmath.mpf("2.5"))
 cw("example-10-dry", "the part above water, over b", ("ex10-dry",), one, lambda c, dps: 1 - ex10c(dps)[1] / mpmath.mpf("2.5"))
 cw("example-10-dry-cm", "the part above water in cm", ("ex10-dry-cm",), one,
    lambda c, dps: 100 * (mpmath.mpf("2.5") - ex10c(dps)[1]))
