@@ -147,6 +147,14 @@ d.quote("regular-polygon-theorem", "VI",
              "from other-symmetry-axis")
 
 
+def at_data(printed, derived, data):
+    """A worked example's inequality at its data: the printed margin (positive when the printed relation holds)
+    equals the derived margin there, and is positive."""
+    keys, values = tuple(data), tuple(data.values())
+    pm = sp.Subs(printed, keys, values)
+    return sp.Matrix([pm, sp.sign(pm)]), sp.Matrix([sp.Subs(derived, keys, values), 1])
+
+
 # =====================================================================================================
 # A. The regular triangular prism
 # =====================================================================================================
@@ -179,6 +187,8 @@ d.quote("triangle-condition", "VI.A",
         r"$$F_1 \cdot \frac{a^2}{24} - F_1 \cdot \frac{b^2}{2} s (1-s) > 0$$",
         reading=(F1 * a ** 2 / 24 - F1 * b ** 2 / 2 * s * (1 - s), V1 * hA),
         note="the left side is V_1 h_A, V_1 > 0")
+d.quote("duhamel-VA", "VI.A", r"$$T_1 - V_1 e_1 > 0$$", reading=(T1 - V1 * e1, V1 * hA),
+        note="Duhamel (18) times V_1 > 0: the margin is V_1 h_A")
 d.quote("57", "(57)", r"$$\left(\frac{a}{b}\right)^2 > 12 s \cdot (1-s) \tag{57}$$",
         reading=((a / b) ** 2 - 12 * s * (1 - s), 24 * s / b * hA), note="margin = (24 s / b) h_A")
 d.quote("58", "(58)",
@@ -193,6 +203,12 @@ d.quote("sqrt3", "VI.A", r"$$\left(\frac{a}{b}\right)^2 > 3 \text{ oder } \frac{
         reading=(sp.sqrt((12 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.7321")),
         tolerance=sp.Rational(1, 20000), note="the largest value of 12 s (1 - s), at s = 1/2, and its root")
 
+d.quote("every-density", "VI.A", "Gew. zwischen 0 und 1 die aufrechte Lage stabil.",
+        reading=(24 * s / b * hA, ((a / b) ** 2 - 3) + 12 * (s - sp.Rational(1, 2)) ** 2),
+        note="for (a/b)^2 > 3 the margin of (57) is a sum of positive terms for every s: stable")
+d.quote("sqrt3-below", "VI.A", r"$\frac{a}{b} < 1,7321$",
+        reading=(sp.sqrt((12 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.7321")),
+        tolerance=sp.Rational(1, 20000), note="the same bound sqrt 3, from below")
 q = sp.Symbol("q", positive=True)
 _roots = sorted(sp.solve(Eq(12 * s * (1 - s), (a / b) ** 2), s), key=lambda e: e.subs({a: 1, b: 1}))
 S_lo, S_hi = sp.symbols("s_-^A s_+^A")
@@ -366,6 +382,13 @@ d.quote("61", "(61)",
                  sp.Matrix([b * (1 - s) * sq3 / (a * tan1), b * s * sq3 / (a * tan1)])),
         note="the bound on sin(30 deg + omega) at which t_1 equals the limit (top for s > 1/2, bottom "
              "relabelled for s < 1/2)")
+d.quote("sin-90", "VI.A", r"$\sin(30^\circ + \omega) = 1$", reading=(sp.Subs(sp.sin(30 * deg + om), om, pi / 3), 1),
+        note="at the limit omega = 60 deg")
+d.quote("61-at-60", "VI.A",
+        r"$$\left( \text{für } s > \frac{1}{2} \right): \sqrt{24 s (1-s) - 2 \left(\frac{a}{b}\right)^2} \leq (1-s) \sqrt{3}$$",
+        reading=(sp.Matrix([D61, (1 - s) * sq3]), sp.Matrix([a / b * tan1, sp.Subs(a / b * Ltop, om, pi / 3)])),
+        note="(61) at sin(30 deg + omega) = 1: its two sides are a/b times t_1 and a/b times the top limit at "
+             "omega = 60 deg")
 qq = (a / b) ** 2
 d.quote("62-step-1", "VI.A", r"24 s (1-s) - 2 \left(\frac{a}{b}\right)^2 \leq 3 (1-s)^2",
         reading=(3 * (1 - s) ** 2 - (24 * s * (1 - s) - 2 * qq), 2 * (qq - Q60)), note="margin")
@@ -379,6 +402,12 @@ d.quote("62", "(62)",
         r"\\ \text{und } \frac{a}{b} &\geq \sqrt{\frac{3}{2} \cdot s (8 - 9 s)} \quad \text{für } s < \frac{1}{2}",
         reading=(sp.Matrix([(a / b - sp.sqrt(P62u)) * (a / b + sp.sqrt(P62u)), (a / b - sp.sqrt(P62l)) * (a / b + sp.sqrt(P62l))]),
                  sp.Matrix([qq - Q60, qq - Q60l])), note="margins times the positive a/b + sqrt(...)")
+d.quote("62-upper-inline", "VI.A", r"$\frac{a}{b} \geq \sqrt{\frac{3}{2} \cdot (1-s) (9 s - 1)}$",
+        reading=((a / b - sp.sqrt(P62u)) * (a / b + sp.sqrt(P62u)), qq - Q60), note="margin times a/b + sqrt(...)")
+d.quote("62-lower-inline", "VI.A", r"$\frac{a}{b} \geq \sqrt{\frac{3}{2} \cdot s (8 - 9 s)}$",
+        reading=((a / b - sp.sqrt(P62l)) * (a / b + sp.sqrt(P62l)), qq - Q60l), note="margin times a/b + sqrt(...)")
+d.quote("sin-30", "VI.A", r"$\sin 30^\circ = \frac{1}{2}$", reading=(sp.Subs(sp.sin(30 * deg + om), om, 0), sp.Rational(1, 2)),
+        note="(61) at omega = 0")
 D63 = 24 * s * (1 - s) - 2 * qq
 d.quote("63", "(63)",
         r"\sin^2(30^\circ) &> \frac{3 (1-s)^2}{24 s (1-s) - 2 \left(\frac{a}{b}\right)^2} \quad \text{für } s > "
@@ -391,6 +420,11 @@ d.quote("64", "(64)",
         r"\left(\frac{a}{b}\right)^2 &< 6(1-s)(3s-1) && \text{für } s > \frac{1}{2} \\ \text{und } "
         r"\left(\frac{a}{b}\right)^2 &< 6s(2-3s) && \text{für } s < \frac{1}{2}",
         reading=(sp.Matrix([6 * (1 - s) * (3 * s - 1) - qq, 6 * s * (2 - 3 * s) - qq]), sp.Matrix([Q0 - qq, Q0l - qq])))
+d.quote("65-IV", "(65)",
+        r"$$IV \quad \left(\frac{a}{b}\right)^2 < \begin{cases} 6(1-s)(3s-1) & \text{für } s > \frac{1}{2} \\ "
+        r"6s(2-3s) & \text{für } s < \frac{1}{2} \end{cases}$$",
+        reading=(sp.Matrix([6 * (1 - s) * (3 * s - 1) - qq, 6 * s * (2 - 3 * s) - qq]), sp.Matrix([Q0 - qq, Q0l - qq])),
+        note="margins: below Q0 the tilted equilibrium lies beyond the limit even at omega = 0, i.e. for every axis")
 d.quote("65-I", "(65)", r"$$I \quad \left(\frac{a}{b}\right)^2 \geq 12s(1-s)$$",
         reading=(qq - 12 * s * (1 - s), 24 * s / b * hA),
         note="at equality h_A = 0 but the moment sin(phi) T_1 tan^2(phi)/2 is still restoring: stable")
@@ -566,6 +600,12 @@ d.quote("sqrt2", "VI.B",
         r"$$\frac{1}{2} \cdot \left(\frac{2r}{b}\right)^2 > 1 \text{ oder } \frac{2r}{b} > \sqrt{2} \text{ d. i. } > 1,4142.$$",
         reading=as_printed(lambda: (sp.sqrt((8 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.sqrt(2), sp.Rational("1.4142"))),
         tolerance=sp.Rational(1, 20000), note="the largest 8 s (1-s), at s = 1/2")
+d.quote("cylinder-every-density", "VI.B", "Diese Bedingung ist für jeden Wert von  $s$  (zwischen 0 und 1) erfüllt, wenn",
+        reading=(16 * s / b * hC, (K2 - 2) + 8 * (s - sp.Rational(1, 2)) ** 2),
+        note="the margin of (69), (2r/b)^2 - 8 s (1-s), is a sum of positive terms for every s when (2r/b)^2 > 2")
+d.quote("sqrt2-below", "VI.B", r"$\frac{2r}{b} < 1,4142$",
+        reading=(sp.sqrt((8 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.4142")),
+        tolerance=sp.Rational(1, 20000), note="the same bound sqrt 2, from below")
 _rootsC = sorted(sp.solve(Eq(8 * s * (1 - s), K2), s), key=lambda e: e.subs({r: 1, b: 4}))
 SC_lo, SC_hi = sp.symbols("s_-^C s_+^C")
 d.step("cylinder-density-upper", Eq(SC_hi, _rootsC[1]), "definition", note="sympy.solve", result=SC_hi)
@@ -672,11 +712,30 @@ for name, exc, val, printed in (("ex7-range-lower", "zwischen 0,146", sC_lo1, "0
                  "cylinder floats upright stably, above 0.155 the lower base emerges before the tilted "
                  "equilibrium is reached")
 
+d.quote("ex7-both", "Example 7", r"$$8s(1-s) > 1 \quad \text{und} \quad 1 > 2s(4-5s)$$",
+        reading=(sp.Matrix([8 * s * (1 - s) - 1, 1 - 2 * s * (4 - 5 * s)]),
+                 sp.Matrix([full(-16 * s / b * hC).subs(sq_), full((LbotC ** 2 - tanC ** 2) * K2 / 2).subs(sq_)])),
+        note="margins of (73) at 2r = b, as the line before")
+for name, exc, val, printed in (
+        ("ex7-either", r"$$\text{also entweder } s > 0,4 + \sqrt{0,06}$$", s_b[1],
+         as_printed(lambda: sp.Rational(4, 10) + sp.sqrt(sp.Rational(6, 100)))),
+        ("ex7-or", r"$$\text{oder } s < 0,4 - \sqrt{0,06}$$", s_b[0],
+         as_printed(lambda: sp.Rational(4, 10) - sp.sqrt(sp.Rational(6, 100))))):
+    d.quote(name, "Example 7", exc, reading=(val, printed),
+            note="the roots of 1 = 2 s (4 - 5 s) (the bottom limit met, 2r = b), between which the margin is negative")
+for name, exc, val, printed in (("ex7-not", r"$s > 0,645$", s_b[1], "0.645"), ("ex7-only", r"$s < 0,155$", s_b[0], "0.155")):
+    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=sp.Rational(1, 2000),
+            note="the roots 0.4 -+ sqrt 0.06 rounded; s > 0.645 contradicts s < 1/2")
 # Example 8
 ex8 = {r: 30, b: 40, s: sp.Rational(3, 4)}
 d.quote("ex8-values", "Example 8",
         r"\left(\frac{2r}{b}\right)^2 = \frac{9}{4} \text{ und } 8s(1-s) = \frac{3}{2}",
         reading=as_printed(lambda: (sp.Matrix([K2.subs(ex8), (8 * s * (1 - s)).subs(ex8)]), sp.Matrix([sp.Rational(9, 4), sp.Rational(3, 2)]))))
+d.quote("ex8-test", "Example 8", r"$$\text{ob } \left(\frac{2r}{b}\right)^2 \geq 8s(1-s) \text{ ist.}$$",
+        reading=(K2 - 8 * s * (1 - s), 16 * s / b * hC), note="margin of (69): 16 s/b times the metacentric height")
+d.quote("ex8-therefore", "Example 8", r"$$\text{folglich } \left(\frac{2r}{b}\right)^2 > \frac{3}{2}$$",
+        reading=at_data(K2 - sp.Rational(3, 2), 16 * s / b * hC, ex8),
+        note="at 2r = 60, b = 40, s = 3/4 the printed margin 9/4 - 3/2 is 16 s/b h_C > 0")
 d.quote("ex8-claim", "Example 8",
         "Der Cylinder schwimmt also in aufrechter Lage stabil und hat unter den angegebenen Bedingungen weiter "
         "keine Gleichgewichtslage.",
@@ -689,8 +748,16 @@ ex9 = {r: 15, b: 40, s: sp.Rational(4, 5)}
 d.quote("ex9-values", "Example 9",
         r"\frac{2r}{b} = \frac{3}{4}, \quad \left(\frac{2r}{b}\right)^2 = \frac{9}{16} \quad 8s(1-s) = 8 \cdot 0,8 \cdot 0,2 = \frac{32}{25}",
         reading=as_printed(lambda: (sp.Matrix([2 * r / b, K2, 8 * s * (1 - s)]).subs(ex9), sp.Matrix([sp.Rational(3, 4), sp.Rational(9, 16), sp.Rational(32, 25)]))))
+d.quote("ex9-labile-margin", "Example 9", r"$$\text{also } \left(\frac{2r}{b}\right)^2 < 8s(1-s)$$",
+        reading=at_data(8 * s * (1 - s) - K2, -16 * s / b * hC, ex9),
+        note="at 2r = 30, b = 40, s = 0.8: 32/25 - 9/16 = -16 s/b h_C > 0")
+d.quote("ex9-labile", "Example 9", "d. h. der Cylinder schwimmt aufrecht labil.",
+        reading=(sp.sign(sp.Subs(hC, tuple(ex9), tuple(ex9.values()))), -1), note="h_C < 0 at the data")
 d.quote("ex9-bound", "Example 9", r"$$2(1-s) \cdot (5s-1) = 2 \cdot 0,2 \cdot 3 = 1,2$$",
         reading=as_printed(lambda: ((2 * (1 - s) * (5 * s - 1)).subs(ex9), sp.Rational(6, 5))))
+d.quote("ex9-beyond", "Example 9", r"$$\text{also } \left(\frac{2r}{b}\right)^2 < 2(1-s)(5s-1)$$",
+        reading=at_data(2 * (1 - s) * (5 * s - 1) - K2, -(LtopC ** 2 - tanC ** 2) * K2 / 2, ex9),
+        note="margin of (73): the tilted equilibrium lies beyond the top limit")
 d.quote("ex9-claim", "Example 9",
         "Der Cylinder hat also bei nicht eintauchender oberer Grundfläche keine stabilen Gleichgewichtslage.",
         reading=as_printed(lambda: (sp.Matrix([sp.sign(hC_e.subs(ex9)), sp.sign((LtopC_e - tanC_e).subs(ex9))]), sp.Matrix([-1, -1]))),
@@ -708,6 +775,25 @@ d.quote("ex10-ratio-2", "Example 10",
 d.quote("ex10-product-2", "Example 10", r"8s \cdot (1-s) = \frac{16 \cdot 3 \cdot 25}{25^2} = \frac{16 \cdot 75}{25^2}",
         reading=((8 * s * (1 - s)).subs(ex10), *as_printed(lambda: (sp.Integer(16) * 3 * 25 / sp.Integer(25) ** 2,
                                                           sp.Integer(16) * 75 / sp.Integer(25) ** 2))))
+d.quote("ex10-labile-margin", "Example 10", r"folgl.  $\left(\frac{2r}{b}\right)^2 < 8s(1-s)$",
+        reading=at_data(8 * s * (1 - s) - K2, -16 * s / b * hC, ex10),
+        note="at 2r = 3.2, b = 2.5, s = 0.6: 1200/625 - 1024/625 = -16 s/b h_C > 0")
+d.quote("ex10-labile", "Example 10", "Der Cylinder schwimmt also aufrecht labil.",
+        reading=(sp.sign(sp.Subs(hC, tuple(ex10), tuple(ex10.values()))), -1), note="h_C < 0 at the data")
+d.quote("ex10-test", "Example 10", r"ob  $\left(\frac{2r}{b}\right)^2 \geq 2(1-s)(5s-1)$  ist",
+        reading=at_data(K2 - 2 * (1 - s) * (5 * s - 1), (LtopC ** 2 - tanC ** 2) * K2 / 2, ex10),
+        note="margin of (73) at the data: positive, the tilted equilibrium lies within the top limit")
+d.quote("ex10-roots", "Example 10", r"oder  $\frac{32}{25} \geq \sqrt{1,6}$",
+        reading=at_data(as_printed(lambda: sp.Rational(32, 25) - sp.sqrt(sp.Rational(16, 10))),
+                        (LtopC ** 2 - tanC ** 2) * K2 / 2 / (2 * r / b + sp.sqrt(2 * (1 - s) * (5 * s - 1))), ex10),
+        note="the margin of (73) over 2r/b + sqrt(2(1-s)(5s-1)) is 2r/b - sqrt(2(1-s)(5s-1)) = 32/25 - sqrt 1.6")
+d.quote("ex10-within", "Example 10", r"also  $\left(\frac{2r}{b}\right)^2 > 2(1-s)(5s-1)$",
+        reading=at_data(K2 - 2 * (1 - s) * (5 * s - 1), (LtopC ** 2 - tanC ** 2) * K2 / 2, ex10))
+d.quote("ex10-oblique", "Example 10", "Der Cylinder hat also eine schiefe stabile Gleichgewichtslage.",
+        reading=(sp.Matrix([sp.sign(sp.Subs(tanC ** 2, tuple(ex10), tuple(ex10.values()))),
+                            sp.sign(sp.Subs(LtopC - tanC, tuple(ex10), tuple(ex10.values())))]), sp.Matrix([1, 1])),
+        note="a real tilt (tg^2 phi_1 > 0) within the top limit; the tilted position of an isotropic base is stable "
+             "(IV (43))")
 d.quote("ex10-bound", "Example 10", r"\left(\frac{32}{25}\right)^2 \geq 2 \cdot 0,4 \cdot 2",
         reading=as_printed(lambda: (sp.Rational(32, 25) ** 2 - sp.Rational(8, 5), (K2 - 2 * (1 - s) * (5 * s - 1)).subs(ex10))))
 d.quote("ex10-decimal", "Example 10", r"\frac{32}{25} = 1,28", reading=(printed_fraction(32, 25), printed_fraction(128, 100)))
