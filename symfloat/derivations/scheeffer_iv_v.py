@@ -314,6 +314,15 @@ d.quote("moment-12", "IV (12)",
 d.quote("moment-zero", "IV (27)",
         r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi_1 \right) T_1 - V_1 e_1 = 0$$",
         reading=((1 + t1 ** 2 / 2) * T1 - V1 * e1, 0))
+d.quote("Q-decreasing", "IV",
+        "Dann wird aber das Drehungsmoment, dessen negativer Faktor (absolut genommen) mit wachsendem  $\\varphi$  "
+        "kleiner wird",
+        reading=(sp.Derivative(Q, phi), T1 * tph * (1 + tph ** 2)),
+        note="the factor (1 + tg^2/2) T_1 - V_1 e_1 of (12) grows with phi (positive derivative): while negative "
+             "its absolute value shrinks, and it vanishes once, at phi_1 (27)")
+d.quote("small-negative", "IV", "für noch so kleines  $\\varphi$  negativ ist.",
+        reading=(slope, T1 / V1 - e1), note="V_1 m = phi V_1 (T_1/V_1 - e_1) + O(phi^3): negative for every small phi "
+                                            "when the criterion fails")
 d.quote("27", "(27)", r"$$\text{oder} \quad \operatorname{tg} \varphi_1 = \sqrt{2 \left( \frac{V_1 e_1}{T_1} - 1 "
                       r"\right)} \quad (27)$$", reading=(t1, sp.sqrt(2 * (V1 * e1 / T1 - 1))))
 d.quote("28", "(28)", r"$$M_2 = M_3 - M_4 = 0 \text{ sein.} \quad (28)$$", reading=(M2, M3 - M4),
@@ -321,6 +330,15 @@ d.quote("28", "(28)", r"$$M_2 = M_3 - M_4 = 0 \text{ sein.} \quad (28)$$", readi
 d.quote("element-moment", "IV (29)",
         r"$$df \cdot z \cdot v_3 = u_3 \cdot v_3 \cdot df \cdot \operatorname{tg} \varphi_1$$",
         reading=(dfs * sp.Integral(1, (z, 0, u3 * t1)) * v3, u3 * v3 * dfs * t1))
+u4, v4 = sp.Symbol("u_4", positive=True), sp.Symbol("v_4", real=True)
+d.domain.update({u4: (sp.Rational(1, 10), 1), v4: (-1, 1)})
+d.quote("column-height", "IV (29)", r"$z = u_3 \cdot \operatorname{tg} \varphi_1$",
+        reading=(sp.Integral(1, (z, 0, u3 * t1)), u3 * t1), note="the column over df at the distance u_3 from EF")
+d.quote("column-4", "IV (30)", r"$z df = u_4 \cdot \operatorname{tg} \varphi_1 \cdot df$",
+        reading=(dfs * sp.Integral(1, (z, 0, u4 * t1)), u4 * t1 * dfs), note="the emerged column over df at u_4")
+d.quote("column-4-moment", "IV (30)", r"$u_4 v_4 \cdot df \cdot \operatorname{tg} \varphi_1$",
+        reading=(dfs * sp.Integral(v4, (z, 0, u4 * t1)), u4 * v4 * dfs * t1),
+        note="its moment about the vertical plane through OS across EF (lever v_4)")
 d.quote("29", "(29)", r"$$M_3 = \int_3 u_3 v_3 \cdot df \cdot \operatorname{tg} \varphi_1, \quad (29)$$",
         reading=(M3, P3 * t1))
 d.quote("30-M4", "IV (30)", r"$$M_4 = \int_4 u_4 v_4 \cdot df \cdot \operatorname{tg} \varphi_1$$",
@@ -328,6 +346,9 @@ d.quote("30-M4", "IV (30)", r"$$M_4 = \int_4 u_4 v_4 \cdot df \cdot \operatornam
 d.quote("M2-difference", "IV (31)",
         r"$$M_2 = \int_3 u_3 v_3 \cdot df \cdot \operatorname{tg} \varphi_1 - \int_4 u_4 v_4 \cdot df \cdot "
         r"\operatorname{tg} \varphi_1$$", reading=(M2, P3 * t1 - (P3 - P) * t1))
+d.quote("u4-minus-u3", "IV (31)",
+        "oder, wenn wir beide Summen zusammenfassen (da  $u_4$  mit  $-u_3$  bezeichnet werden kann)",
+        reading=(M3 - M4, P * t1), note="with u = -u_4 on the rising side the two sums are int_1 u v df tg phi_1")
 d.quote("31", "(31)", r"$$\left. \begin{aligned} M_2 &= \int_1 u v \cdot df \cdot \operatorname{tg} \varphi_1 = 0 "
                       r"\\ \text{oder } \int_1 u v \cdot df &= 0 \end{aligned} \right\} \quad (31)$$",
         reading=(M2, P * t1), note="the identity M_2 = tan phi_1 int_1 u v df; '= 0' is the condition imposed")
@@ -349,6 +370,8 @@ d.quote("33", "(33)", r"$$T_m - V_1 e_2 > 0 \quad (33)$$", reading=(D2, Tmin - V
 d.quote("13-restated", "IV (13)",
         r"$$V_1 n = \frac{1}{2} T_1 \sin \varphi \cdot \operatorname{tg} \varphi + V_1 e_1 \cos \varphi$$",
         reading=(V1 * n, T1 * sp.sin(phi) * tph / 2 + V1 * e1 * sp.cos(phi)))
+d.quote("n-e2", "IV (34)", r"$n = e_2$", reading=(sp.Subs(n, phi, phi1), e2),
+        note="at the equilibrium phi_1, S_2 lies vertically below S (m = 0), so n = A S_2 = S S_2")
 d.quote("34", "(34)", r"$$V_1 e_2 = \frac{1}{2} T_1 \sin \varphi_1 \cdot \operatorname{tg} \varphi_1 + V_1 e_1 "
                       r"\cos \varphi_1 \quad (34)$$",
         reading=(V1 * e2, T1 * sp.sin(phi1) * t1 / 2 + V1 * e1 * sp.cos(phi1)))
@@ -401,11 +424,19 @@ d.quote("38", "(38)", r"$$\left. \begin{aligned} T_2 &= \int_2 u_2^2 df_2 = \int
 d.quote("39", "(39)", r"$$\int_2 u_2 v_2 df_2 = 0 \quad (39)$$", reading=(P2e, 0))
 d.quote("40", "(40)", r"$$T = T_2 \cdot \cos^2 \mu + T_2^1 \cdot \sin^2 \mu \quad (40)$$",
         reading=(Tmue, T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2))
+d.quote("dT-zero", "(40)", r"$$\frac{dT}{d\mu} = 0 \text{ sein, also}$$",
+        reading=(sp.Matrix([sp.Subs(sp.Derivative(Tmue, mu), mu, 0), sp.Subs(sp.Derivative(Tmue, mu), mu, sp.pi / 2)]),
+                 sp.zeros(2, 1)),
+        note="read at the extreme values of T (mu = 0, 90 deg, T-mu-between): the derivative vanishes there")
 d.quote("dT", "(40)", r"$$(T_2^1 - T_2) \cdot \sin 2\mu = 0$$",
         reading=(sp.Derivative(Tmue, mu), (T21 - T2) * sp.sin(2 * mu)), note="the left side is dT/dmu")
 d.quote("mu-0-90", "(40)", r"$$\sin 2\mu = 0, \quad \mu = \begin{cases} 0 \\ 90^\circ \end{cases}$$",
         reading=(sp.Matrix([sp.Subs(sp.Derivative(Tmue, mu), mu, 0), sp.Subs(sp.Derivative(Tmue, mu), mu, sp.pi / 2)]),
                  sp.Matrix([0, 0])))
+d.quote("extremes-40", "(41)",
+        "Diese beiden Werte für  $\\mu$  geben aus 40 das kleinste und das grösste der Trägheitsmomente T:",
+        reading=(Tmue, T2 + (T21 - T2) * sp.sin(mu) ** 2),
+        note="T(mu) = T_2 + (T_2^1 - T_2) sin^2 mu lies between its values at mu = 0 and 90 deg")
 d.quote("41", "(41)", r"$$\left. \begin{aligned} T_m &= T_2 \\ T_m^1 &= T_2^1 \end{aligned} \right\} (41)$$",
         reading=(sp.Matrix([Tm, Tm1]), sp.Matrix([T2, T21])),
         note="T_m, T_m^1: the two extreme values (at mu = 0, 90 deg), not ordered")
@@ -414,6 +445,8 @@ d.quote("42", "(42)", r"$$\left. \begin{aligned} T_m &= \frac{T_1}{\cos^3 \varph
         reading=(sp.Matrix([Tm, Tm1]), sp.Matrix([T1 / c ** 3, T11 / c])))
 d.quote("43", "(43)", r"$$T - \frac{T_1}{\cos \varphi_1} > 0 \quad (43)$$", reading=(D2, Tmin - T1 / c),
         note="T the smaller of T_m, T_m^1; read as the quantity whose sign decides")
+d.quote("T-is-Tm", "(43)", r"$T = T_m$", reading=(Tm - V1 * e2, T1 / c ** 3 - T1 / c), note="(43) with T = T_m")
+d.quote("T-is-Tm1", "(43a)", r"$T = T_m^1$", reading=(Tm1 - V1 * e2, (T11 - T1) / c), note="(43) with T = T_m^1")
 d.quote("43-Tm", "(43)", r"$$T - \frac{T_1}{\cos \varphi_1} = \frac{T_1}{\cos^3 \varphi_1} - \frac{T_1}{\cos "
                          r"\varphi_1} = \frac{T_1}{\cos \varphi_1} \cdot \text{tg}^2 \varphi_1",
         reading=(Tm - V1 * e2, T1 / c ** 3 - T1 / c, T1 / c * t1 ** 2), note="T = T_m")
@@ -467,6 +500,9 @@ d.quote("u-44", "(48)", r"$$u = y \sin \omega + x \cos \omega.$$", reading=(Uw, 
 d.quote("T1-expanded", "(48)", r"$$T_1 = \sin^2 \omega \int_1 y^2 d f + \cos^2 \omega \int_1 x^2 d f + \sin 2 \omega "
                                r"\int_1 x y \cdot d f$$",
         reading=(T1w, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty + sp.sin(2 * om) * J))
+d.quote("third-term", "(48)", "oder, da das dritte Glied gleich Null ist,",
+        reading=(sp.Subs(J * sp.sin(2 * om), J, Jsym), 0), note="the third term J sin 2 omega of T_1(omega): J = 0 "
+                                                                 "for a base with a symmetry axis")
 d.quote("T1-symmetric", "(48)", r"$$T_1 = T_x \cdot \sin^2 \omega + T_y \cdot \cos^2 \omega$$",
         reading=(T1s, Tx * sp.sin(om) ** 2 + Ty * sp.cos(om) ** 2))
 d.quote("48", "(48)", r"$$T_1 = T_x = T_y \quad (48)$$", reading=(T1iso, T0),
