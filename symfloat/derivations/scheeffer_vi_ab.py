@@ -187,6 +187,8 @@ d.quote("triangle-condition", "VI.A",
         r"$$F_1 \cdot \frac{a^2}{24} - F_1 \cdot \frac{b^2}{2} s (1-s) > 0$$",
         reading=(F1 * a ** 2 / 24 - F1 * b ** 2 / 2 * s * (1 - s), V1 * hA),
         note="the left side is V_1 h_A, V_1 > 0")
+d.quote("duhamel-VA-words", "VI.A", "Nach dem Duhamelschen Satze schwimmt das Prisma in der aufrechten Lage stabil, wenn",
+        reading=(sp.sign(V1 * hA), sp.sign(T1 - V1 * e1)), note="(18) times V_1 > 0")
 d.quote("duhamel-VA", "VI.A", r"$$T_1 - V_1 e_1 > 0$$", reading=(T1 - V1 * e1, V1 * hA),
         note="Duhamel (18) times V_1 > 0: the margin is V_1 h_A")
 d.quote("57", "(57)", r"$$\left(\frac{a}{b}\right)^2 > 12 s \cdot (1-s) \tag{57}$$",
@@ -289,6 +291,8 @@ d.step("tilted-stable-in-phi", (sp.Derivative((1 + tp ** 2 / 2) * T1 - V1 * e1, 
 
 um, umr, Ltop, Lbot = sp.symbols("u_m u_m' L_top L_bot")
 d.quote("BS", "VI.A", r"$B S = \frac{a}{3} \sqrt{3}$", reading=as_printed(lambda: (sp.sqrt(Bv[0] ** 2 + Bv[1] ** 2), a / 3 * sq3)))
+d.quote("BSD", "VI.A", r"$B S D = 30^\circ$", reading=as_printed(lambda: (sp.atan2(-Bv[1], -Bv[0]), 30 * deg)),
+        note="SB makes 30 deg with the parallel DE to BC through the centre S")
 d.step("dipping-distance", Eq(um, Bv[0] * nvec[0] + Bv[1] * nvec[1]), "definition",
        note="distance of the vertex B from the axis PQ, on the dipping side n", result=um)
 d.step("dipping-distance-value", (um, a / sq3 * sp.sin(pi / 6 + om)), "geometry", uses=("dipping-distance",))
@@ -314,6 +318,10 @@ d.step("bottom-limit-relabelled", (sp.Subs(full(Lbot), om, pi / 3 - om), b * s *
        note="for s < 1/2 Scheeffer measures omega on the lower base from its rising vertex: omega -> 60 deg - "
             "omega turns the bottom limit into b s sqrt3 / (a sin(30 deg + omega))")
 
+d.quote("60-from-54", "(60)",
+        "Wir erhalten also aus 54 und 55 für den Drehungswinkel  $\\varphi_1$  der stabilen Gleichgewichtslage die "
+        "Bedingungen:", reading=(tan1 ** 2, F1 * b ** 2 * s * (1 - s) / T1 - 2),
+        note="(54) with the triangle's F_1, T_1 gives the tilt; (55) with (59) the bound")
 d.quote("60-tan", "(60)", r"\text{tg } \varphi_1 &= \sqrt{24 \cdot \frac{b^2}{a^2} s (1-s) - 2}",
         reading=Eq(tan1, sp.sqrt(24 * b ** 2 / a ** 2 * s * (1 - s) - 2)))
 d.quote("60-bound", "(60)",
@@ -369,6 +377,17 @@ Q60l = boundary(L_bot_S, pi / 3, "Q60-lower", "the same for s < 1/2 with the low
 Q0 = boundary(Ltop, 0, "Q0", "(a/b)^2 at which t_1 = top limit at omega = 0 (edge BC across the axis)")
 Q0l = boundary(L_bot_S, 0, "Q0-lower", "the same for s < 1/2 with the lower base")
 
+d.quote("60-deg-limit", "VI.A",
+        "Ist der Grenzwert von  $\\omega = 60^\\circ$ , so kann das Prisma in der schiefen stabilen Gleichgewichtslage "
+        "um seine Hauptachse beliebig weit gedreht werden",
+        reading=(Ltop - sp.Subs(Ltop, om, pi / 3), b * (1 - s) * sq3 / a * (1 / sp.sin(pi / 6 + om) - 1)),
+        note="the top limit exceeds its value at omega = 60 deg by a non-negative amount for every omega: if the "
+             "tilt is within it there, it is within it for every axis (the upper base; the lower base: 60-one-base)")
+d.quote("less-satisfied", "VI.A",
+        "so ist sie für grössere Werte von  $\\omega$  um so weniger erfüllt",
+        reading=(sp.Derivative(sp.sin(30 * deg + om), om), sp.cos(pi / 6 + om)),
+        note="sin(30 deg + omega) increases on 0 <= omega <= 60 deg (positive derivative): (61) fails for larger "
+             "omega once it fails at omega = 0")
 D61 = sp.sqrt(24 * s * (1 - s) - 2 * (a / b) ** 2)
 d.quote("61-from-60", "VI.A",
         r"$$\sqrt{24 \cdot \frac{b^2}{a^2} s (1-s) - 2} \leq \frac{b}{a} \frac{(1-s) \sqrt{3}}{\sin(30^\circ + \omega)}$$",
@@ -425,6 +444,8 @@ d.quote("65-IV", "(65)",
         r"6s(2-3s) & \text{für } s < \frac{1}{2} \end{cases}$$",
         reading=(sp.Matrix([6 * (1 - s) * (3 * s - 1) - qq, 6 * s * (2 - 3 * s) - qq]), sp.Matrix([Q0 - qq, Q0l - qq])),
         note="margins: below Q0 the tilted equilibrium lies beyond the limit even at omega = 0, i.e. for every axis")
+d.quote("65-I-words", "(65)", "so schwimmt es in aufrechter Lage stabil.",
+        reading=(24 * s / b * hA, qq - 12 * s * (1 - s)), note="I: the margin of (57) is (24 s/b) h_A >= 0")
 d.quote("65-I", "(65)", r"$$I \quad \left(\frac{a}{b}\right)^2 \geq 12s(1-s)$$",
         reading=(qq - 12 * s * (1 - s), 24 * s / b * hA),
         note="at equality h_A = 0 but the moment sin(phi) T_1 tan^2(phi)/2 is still restoring: stable")
@@ -435,6 +456,10 @@ d.quote("65-II", "(65)",
         note="II holds for every axis also when the other base is included: over omega the top limit is "
              "smallest at omega = 60 deg and the bottom limit b s sqrt3/(a cos omega) at omega = 0, where it "
              "equals b s sqrt3 / a >= b (1-s) sqrt3 / a for s > 1/2")
+d.quote("65-II-words", "(65)",
+        "so schwimmt es in aufrechter Lage labil, erreicht aber durch Drehung um jede beliebige horizontale Achse eine "
+        "schiefe stabile Lage", reading=(tan1 ** 2, -2 * V1 * hA / T1),
+        note="upright labile (h_A < 0) exactly when the tilt of (54) is real: tg^2 phi_1 = -2 V_1 h_A / T_1 > 0")
 d.quote("65-tan", "(65)", r"$$\operatorname{tg}^2 \varphi_1 = 24 \left(\frac{b}{a}\right)^2 s(1-s) - 2$$",
         reading=Eq(tan1 ** 2, 24 * (b / a) ** 2 * s * (1 - s) - 2))
 d.quote("65-III", "(65)",
@@ -582,6 +607,9 @@ d.step("immersion-height", Eq(xC, b * s + r * tanC), "definition",
        note="the water height on the dipping generator (xi = r) in the tilted equilibrium", result=xC)
 
 K2 = (2 * r / b) ** 2
+d.quote("cylinder-duhamel", "VI.B",
+        "also nach dem Duhamelschen Satze die Bedingung für eine stabile aufrechte Gleichgewichtslage",
+        reading=(sp.sign(hC), sp.sign(T1c / V1c - e1)), note="(18) for the cylinder")
 d.quote("cylinder-data", "VI.B", r"$$T_1 = \frac{\pi}{4} r^4 \quad F_1 = \pi r^2 \quad u_m = r \quad e_1 = \frac{b}{2} (1 - s)$$",
         reading=(sp.Matrix([T1c, F1c, e1]), sp.Matrix([pi / 4 * r ** 4, pi * r ** 2, b / 2 * (1 - s)])))
 d.quote("cylinder-condition", "VI.B",
@@ -646,6 +674,10 @@ for name, exc, val, printed, tol in (
     d.quote(name, "Example 6", exc, reading=(val, sp.Rational(printed)), tolerance=tol,
             note="2r = b: the density roots s_+, s_- of (71) (and 2 s_+ - 1, 2 s_+, 2 s_-)")
 
+d.quote("cylinder-turns", "VI.B",
+        "so ist der Cylinder in der aufrechten Lage labil und dreht sich um eine horizontale Achse, bis er in eine "
+        "stabile Gleichgewichtslage gelangt.", reading=(tanC ** 2, -2 * V1c * hC / T1c),
+        note="labile (h_C < 0) exactly when the tilted equilibrium is real: tg^2 phi_1 = -2 V_1 h_C / T_1")
 d.quote("72", "(72)", r"$$\text{Ist aber} \quad \frac{2r}{b} < \sqrt{8s(1-s)} \quad (72)$$",
         reading=((sp.sqrt(8 * s * (1 - s)) - 2 * r / b) * (sp.sqrt(8 * s * (1 - s)) + 2 * r / b), -16 * s / b * hC))
 d.quote("cylinder-data-72", "VI.B", r"$$F_1 = \pi r^2 \quad T_1 = \frac{\pi r^4}{4} \quad u_m = r$$",
