@@ -307,6 +307,8 @@ d.quote("stable-18", "IV", r"$$\frac{T_1}{V_1} - e_1 > 0.$$", reading=(slope, T1
              + RED)
 d.quote("unstable-18", "IV", r"$$\frac{T_1}{V_1} - e_1 < 0,$$", reading=(slope, T1 / V1 - e1),
         note="as stable-18, the labile case")
+d.quote("stable-18-words", "IV", "Das Gleichgewicht ist stabil (18), wenn",
+        reading=(sp.sign(slope), sp.sign(T1 / V1 - e1)), note="the slope of the righting arm at the upright position")
 d.quote("moment-12", "IV (12)",
         r"$$V_1 m = \sin \varphi \cdot \left\{ \left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - "
         r"V_1 e_1 \right\}$$",
@@ -325,6 +327,10 @@ d.quote("small-negative", "IV", "für noch so kleines  $\\varphi$  negativ ist."
                                             "when the criterion fails")
 d.quote("27", "(27)", r"$$\text{oder} \quad \operatorname{tg} \varphi_1 = \sqrt{2 \left( \frac{V_1 e_1}{T_1} - 1 "
                       r"\right)} \quad (27)$$", reading=(t1, sp.sqrt(2 * (V1 * e1 / T1 - 1))))
+d.quote("first-condition", "IV (27)",
+        "das statische Moment des eintauchenden Teils für die durch den Schwerpunkt S parallel zur Drehungsachse "
+        "gelegte Vertikalebene ( $V_1 m$ ) ist Null.", reading=(sp.Subs(V1 * m, phi, phi1), 0),
+        note="at the tilt phi_1 of (27) the moment V_1 m vanishes")
 d.quote("28", "(28)", r"$$M_2 = M_3 - M_4 = 0 \text{ sein.} \quad (28)$$", reading=(M2, M3 - M4),
         note="the '= 0' is the equilibrium condition imposed, read with (32)")
 d.quote("element-moment", "IV (29)",
@@ -440,6 +446,8 @@ d.quote("extremes-40", "(41)",
 d.quote("41", "(41)", r"$$\left. \begin{aligned} T_m &= T_2 \\ T_m^1 &= T_2^1 \end{aligned} \right\} (41)$$",
         reading=(sp.Matrix([Tm, Tm1]), sp.Matrix([T2, T21])),
         note="T_m, T_m^1: the two extreme values (at mu = 0, 90 deg), not ordered")
+d.quote("42-from", "(42)", "Die Werte für diese beiden Trägheitsmomente ergeben sich aus 38 und 41:",
+        reading=(sp.Matrix([Tm, Tm1]), sp.Matrix([T1 / c ** 3, T11 / c])), note="(41) with (38*)")
 d.quote("42", "(42)", r"$$\left. \begin{aligned} T_m &= \frac{T_1}{\cos^3 \varphi_1} \\ T_m^1 &= \frac{T_1^1}{\cos "
                       r"\varphi_1} \end{aligned} \right\} (42)$$",
         reading=(sp.Matrix([Tm, Tm1]), sp.Matrix([T1 / c ** 3, T11 / c])))
@@ -503,8 +511,16 @@ d.quote("T1-expanded", "(48)", r"$$T_1 = \sin^2 \omega \int_1 y^2 d f + \cos^2 \
 d.quote("third-term", "(48)", "oder, da das dritte Glied gleich Null ist,",
         reading=(sp.Subs(J * sp.sin(2 * om), J, Jsym), 0), note="the third term J sin 2 omega of T_1(omega): J = 0 "
                                                                  "for a base with a symmetry axis")
+d.quote("mirror-pairs", "(45)",
+        "da immer die beiden Glieder, die sich auf zwei zu beiden Seiten der Symmetrieachse in gleichen Abständen von "
+        "den Hauptachsen liegende Flächenelemente beziehen, entgegengesetzte Vorzeichen haben, also einander aufheben.",
+        reading=(Jsym, 0), note="int x y df over a base symmetric about the y axis: each chord contributes int x dx = 0")
 d.quote("T1-symmetric", "(48)", r"$$T_1 = T_x \cdot \sin^2 \omega + T_y \cdot \cos^2 \omega$$",
         reading=(T1s, Tx * sp.sin(om) ** 2 + Ty * sp.cos(om) ** 2))
+d.quote("isotropic-sign", "(48)",
+        "so ist für alle Drehungsachsen die Grösse  $\\frac{T_1}{V_1} - e_1$  entweder positiv oder negativ.",
+        reading=(sp.Derivative(T1iso, om), 0),
+        note="T_1 does not depend on the direction omega of the axis (T_x = T_y), V_1 and e_1 never do")
 d.quote("48", "(48)", r"$$T_1 = T_x = T_y \quad (48)$$", reading=(T1iso, T0),
         note="T_x = T_y = T_0: the second equality is the case's hypothesis, so the reading is T_1 = T_0")
 d.quote("49", "(49)", "dass das Trägheitsmoment des Wasserschnitts I oder der Grundfläche des Prismas für alle "
@@ -581,6 +597,10 @@ d.quote("s-half", "(53)", r"Diese Formel giebt den Grenzwert von  $\varphi_1$  a
 d.quote("V1-F1", "(54)", r"$V_1 = F_1 \cdot b s$", reading=(V1, F1 * b * s))
 d.quote("e1-b", "(54)", r"$S S_1 = e_1 = \frac{b}{2} - \frac{b s}{2} = \frac{b}{2}(1 - s)$",
         reading=(e1, b / 2 - b * s / 2, b / 2 * (1 - s)))
+d.quote("54-from", "(54)",
+        "Mit Benutzung dieser Werte ergibt sich aus 52, 53, 53a für die schiefe stabile Lage ( $\\varphi_1$ ) die "
+        "Bestimmungsgleichung:", reading=(t1 ** 2, F1 * b ** 2 * s * (1 - s) / T1 - 2),
+        note="(27) with V_1 = F_1 b s, e_1 = b (1 - s)/2")
 d.quote("54", "(54)", r"$$\operatorname{tg}^2 \varphi_1 = \frac{F_1 b^2}{T_1} \cdot s (1 - s) - 2 \quad (54)$$",
         reading=(t1 ** 2, F1 * b ** 2 / T1 * s * (1 - s) - 2))
 printed55 = sp.Piecewise((b * (1 - s) / utop, s > sp.Rational(1, 2)), (b * s / ubot, True))
