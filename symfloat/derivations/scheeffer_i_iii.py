@@ -126,6 +126,10 @@ d.quote("equilibrium-moments", "I",
              "along the rotation axis vanishes in the upright position (the second plane lies in the drawing)")
 d.quote("stability-2", "(2)", r"$$V_1 m > 0. \quad (2)$$", reading=as_printed(lambda: (sp.sign(-torque), sp.sign(V1 * m))),
         note="read as: the couple restores (its moment against the heel is positive) exactly when V1 m > 0")
+d.quote("turned-back", "I",
+        "In dem Falle, den Fig. 1 darstellt, wird der Körper offenbar in seine erste Gleichgewichtslage zurückgedreht, "
+        "sein Gleichgewicht war also ein stabiles", reading=as_printed(lambda: (sp.sign(-torque), sp.sign(V1 * m))),
+        note="the couple turns the body back (its moment against the heel positive) exactly when m > 0")
 d.quote("M-side", "I", "Läge  $M$  aber auf der entgegengesetzten Seite von  $S$ , so wäre  $m$  negativ",
         reading=(sp.sign(sp.Subs(sp.Derivative(m, phi), phi, 0)), sp.sign(T1 / V1 - e1)),
         note="for small phi m = phi SM (M the metacentre on the axis, SM = T1/V1 - e1, III): m has the sign of the "
