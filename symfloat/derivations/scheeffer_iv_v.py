@@ -309,6 +309,11 @@ d.quote("unstable-18", "IV", r"$$\frac{T_1}{V_1} - e_1 < 0,$$", reading=(slope, 
         note="as stable-18, the labile case")
 d.quote("stable-18-words", "IV", "Das Gleichgewicht ist stabil (18), wenn",
         reading=(sp.sign(slope), sp.sign(T1 / V1 - e1)), note="the slope of the righting arm at the upright position")
+d.quote("labile-turns-on", "IV",
+        "so ist das Gleichgewicht für diese Achse labil und das Prisma wird, wenn äussere Kräfte es um einen noch so "
+        "kleinen Winkel um diese Achse drehen, durch Schwerkraft und Auftrieb weiter gedreht",
+        reading=(sp.sign(slope), sp.sign(T1 / V1 - e1)),
+        note="(12): the arm grows like phi (T_1/V_1 - e_1), negative when the criterion fails")
 d.quote("moment-12", "IV (12)",
         r"$$V_1 m = \sin \varphi \cdot \left\{ \left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - "
         r"V_1 e_1 \right\}$$",
@@ -331,6 +336,10 @@ d.quote("first-condition", "IV (27)",
         "das statische Moment des eintauchenden Teils für die durch den Schwerpunkt S parallel zur Drehungsachse "
         "gelegte Vertikalebene ( $V_1 m$ ) ist Null.", reading=(sp.Subs(V1 * m, phi, phi1), 0),
         note="at the tilt phi_1 of (27) the moment V_1 m vanishes")
+d.quote("second-plane", "IV (28)",
+        "Für diese Ebene muss das statische Moment des eintauchenden Körperteils gleich Null sein.",
+        reading=(M2, P * t1), note="the moment M_2 = V_1 w about the plane through OS across EF is tg phi_1 int_1 u v "
+                                   "df: zero exactly when (31) holds")
 d.quote("28", "(28)", r"$$M_2 = M_3 - M_4 = 0 \text{ sein.} \quad (28)$$", reading=(M2, M3 - M4),
         note="the '= 0' is the equilibrium condition imposed, read with (32)")
 d.quote("element-moment", "IV (29)",
@@ -371,6 +380,10 @@ d.quote("32", "(32)", r"$$\left. \begin{aligned} T_1 \left( 1 + \frac{1}{2} \ope
                         "printer cannot be excluded.",
                         corrected_reading=(sp.Matrix([V1 * res(m).subs(phi, phi1) / sp.sin(phi1), M2 / t1]),
                                            sp.Matrix([T1 * (1 + t1 ** 2 / 2) - V1 * e1, P]))))
+d.quote("33-words", "(33)",
+        "Soll nun die Gleichgewichtslage ( $\\varphi_1$ ) eine stabile sein, so muss nach dem Duhamel'schen Satze (18)",
+        reading=(D2, sp.Min(T1 / c ** 3, T11 / c) - T1 / c),
+        note="Duhamel for the tilted position: the smallest moment of II minus V_1 e_2 (D2-value)")
 d.quote("33", "(33)", r"$$T_m - V_1 e_2 > 0 \quad (33)$$", reading=(D2, Tmin - V1 * e2),
         note="T_m here is the smallest moment of inertia of II; read as the quantity whose sign decides")
 d.quote("13-restated", "IV (13)",
@@ -436,6 +449,9 @@ d.quote("dT-zero", "(40)", r"$$\frac{dT}{d\mu} = 0 \text{ sein, also}$$",
         note="read at the extreme values of T (mu = 0, 90 deg, T-mu-between): the derivative vanishes there")
 d.quote("dT", "(40)", r"$$(T_2^1 - T_2) \cdot \sin 2\mu = 0$$",
         reading=(sp.Derivative(Tmue, mu), (T21 - T2) * sp.sin(2 * mu)), note="the left side is dT/dmu")
+d.quote("nonzero-difference", "(40)", "oder, da  $(T_2^1 - T_2)$  im Allgemeinen von Null verschieden sein wird,",
+        reading=(sp.Derivative(Tmue, mu) / (T21 - T2), sp.sin(2 * mu)),
+        note="dividing dT/dmu by T_2^1 - T_2 (not zero) leaves sin 2 mu")
 d.quote("mu-0-90", "(40)", r"$$\sin 2\mu = 0, \quad \mu = \begin{cases} 0 \\ 90^\circ \end{cases}$$",
         reading=(sp.Matrix([sp.Subs(sp.Derivative(Tmue, mu), mu, 0), sp.Subs(sp.Derivative(Tmue, mu), mu, sp.pi / 2)]),
                  sp.Matrix([0, 0])))
@@ -499,6 +515,12 @@ d.quote("46", "(46)", r"$$(T_x - T_y) \sin 2 \omega = 0 \quad (46)$$",
         reading=(2 * sp.Subs(Iuv, J, Jsym), (Tx - Ty) * sp.sin(2 * om)),
         note="twice the left side of (45) with int x y df = 0; '= 0' is the condition")
 lhs46 = 2 * sp.Subs(Iuv, J, Jsym)
+d.quote("principal-or-isotropic", "(47)",
+        "In schiefer Lage kann also das Prisma im Gleichgewicht sein entweder wenn es um eine der beiden Hauptachsen "
+        "des Wasserschnitts I gedreht wird, oder wenn die Trägheitsmomente der Fläche für die beiden Hauptachsen "
+        "gleich sind.", reading=(sp.Subs(Iuv, J, Jsym), (Tx - Ty) * sp.sin(2 * om) / 2),
+        note="for a base with a symmetry axis int_1 u v df = (T_x - T_y) sin(2 omega)/2: zero only for omega = 0, "
+             "90 deg or T_x = T_y")
 d.quote("47", "(47)", r"$$\omega = 0, \omega = 90^\circ, T_x = T_y. \quad (47)$$",
         reading=(sp.Matrix([sp.Subs(lhs46, om, 0), sp.Subs(lhs46, om, sp.pi / 2), sp.Subs(lhs46, Tx, Ty)]),
                  sp.Matrix([0, 0, 0])),
@@ -535,6 +557,8 @@ d.quote("50", "(50)", r"$$\text{folglich } T_m^1 < T_m$$", reading=(sp.sign(Tmi 
 d.quote("43-again", "(51)", r"$$T - \frac{T_1}{\cos \varphi_1} > 0$$", reading=(D2, Tmin - T1 / c),
         note="(43) repeated")
 d.quote("Tm1-min", "(51)", r"$$T_m^1 = \frac{T_1}{\cos \varphi_1}$$", reading=(Tm1i, T1 / c))
+d.quote("minimum-T", "(51)", "Setzt man für T das Minimum", reading=(sp.Min(Tmi, Tm1i), T1 / c),
+        note="isotropic base: T_m^1 = T_1/cos phi_1 is the smaller of T_1/cos^3 phi_1 and T_1/cos phi_1")
 d.quote("51", "(51)", r"$$T_m^1 - \frac{T_1}{\cos \varphi_1} = 0. \quad (51)$$",
         reading=(Tm1i - V1 * e2, Tm1i - T1 / c, 0))
 d.quote("51-claim", "(51)",
