@@ -446,6 +446,12 @@ d.quote("65-IV", "(65)",
         note="margins: below Q0 the tilted equilibrium lies beyond the limit even at omega = 0, i.e. for every axis")
 d.quote("65-I-words", "(65)", "so schwimmt es in aufrechter Lage stabil.",
         reading=(24 * s / b * hA, qq - 12 * s * (1 - s)), note="I: the margin of (57) is (24 s/b) h_A >= 0")
+d.quote("65-IV-words", "(65)",
+        "so hat das Prisma ausser der aufrechten labilen keine Gleichgewichtslage weiter ohne dass eine der "
+        "Grundflächen vom Wasserspiegel durchschnitten wird.",
+        reading=(sp.Matrix([6 * (1 - s) * (3 * s - 1) - qq, 6 * s * (2 - 3 * s) - qq]), sp.Matrix([Q0 - qq, Q0l - qq])),
+        note="IV: below Q0 the tilt of (54) lies beyond the first-region limit already at omega = 0, and (61) is "
+             "harder for larger omega (less-satisfied): no axis gives a tilted position in the first region")
 d.quote("65-I", "(65)", r"$$I \quad \left(\frac{a}{b}\right)^2 \geq 12s(1-s)$$",
         reading=(qq - 12 * s * (1 - s), 24 * s / b * hA),
         note="at equality h_A = 0 but the moment sin(phi) T_1 tan^2(phi)/2 is still restoring: stable")
