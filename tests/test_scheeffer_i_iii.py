@@ -40,11 +40,35 @@ def test_every_display_of_sections_i_to_iii_is_quoted(report):
 def test_verdicts_and_errata(report):
     verdicts = {f.id.split("/")[1]: f.verdict for f in report.formulas}
     # (18) is printed "T1/V1 = e1 > 0": the scan's '=' for the minus of T1/V1 - e1 > 0 (from (16))
+    # the faults of the words (transcription lines 68, 130, 134) are pinned one by one below
     assert {(f.id, f.erratum["kind"], f.erratum["confidence"]) for f in report.formulas if f.erratum} == {
-        ("scheeffer-i-iii/duhamel-18", "transcription", "high")}
+        ("scheeffer-i-iii/duhamel-18", "transcription", "high"),
+        ("scheeffer-i-iii/fig3-labels", "transcription", "high"),
+        ("scheeffer-i-iii/stable-V1m", "transcription", "high"),
+        ("scheeffer-i-iii/labile-V1m", "transcription", "high")}
     # (1) is not displayed in the transcription: only "(1" survives
     assert [k for k, v in verdicts.items() if v == "unverifiable"] == ["equilibrium"]
-    assert sum(v == "verified" for v in verdicts.values()) == len(verdicts) - 2
+    assert sum(v == "verified" for v in verdicts.values()) == len(verdicts) - 5
+
+
+def _formula(report, name):
+    return next(f for f in report.formulas if f.id == f"scheeffer-i-iii/{name}")
+
+
+@pytest.mark.parametrize("name, line, kind", [
+    # line 68: "Schwimmachse S S ," and "A, B, sei die alte, A B die neue Wasserlinie" - the subscript 1 read
+    # as a comma (S S_1, A_1 B_1; section II, line 88, writes A_1 B_1 for the old waterline)
+    ("fig3-labels", 68, "transcription"),
+    # line 130: "so muss (nach 9 und 12) V_1 m und folglich" - the "> 0" of V_1 m (stability (2)) is lost
+    ("stable-V1m", 130, "transcription"),
+    # line 134: "so ist V_1 m und daher" - the "< 0" of the labile case is lost
+    ("labile-V1m", 134, "transcription"),
+])
+def test_faults_of_the_words_are_errata(report, name, line, kind):
+    f = _formula(report, name)
+    assert f.verdict == "erratum" and f.erratum["kind"] == kind
+    assert f.excerpt in TEXT.splitlines()[line - 1]
+    assert "the print gives" in f.erratum["evidence"]            # the engine refuted the print
 
 
 def test_verified_displays_carry_two_witness_records(report):

@@ -11,7 +11,7 @@ import symfloat.derivations.scheeffer_iv_v as M
 from symfloat.engine.check import check_derivation
 from symfloat.geometry.floating import floating_state
 
-ERRATA = {"32": "transcription", "38-projection": "misprint", "43a": "misprint", "52": "transcription",
+ERRATA = {"32": "transcription", "37": "transcription", "38-projection": "misprint", "43a": "misprint", "52": "transcription",
           "law": "claim", "s-half": "claim", "55": "claim"}
 
 
@@ -31,11 +31,22 @@ def test_no_failures_and_the_expected_errata(report):
 
 def test_numbered_displays_are_witnessed(report):
     # every verified display carrying a number (27)-(55) whose quantity is numeric has >= 2 witness records
-    numeric = {"27", "28", "31", "33", "34", "35", "37", "38", "39", "40", "41", "42", "43", "45", "51", "53", "53a",
+    # (37) is an erratum (df for df_2), its witness cases lie at the equilibrium where the term vanishes
+    numeric = {"27", "28", "31", "33", "34", "35", "38", "39", "40", "41", "42", "43", "45", "51", "53", "53a",
                "54"}
     for f in report.formulas:
         if f.id.split("/")[1] in numeric:
             assert f.verdict == "verified" and len(f.numeric) >= 2, f.id
+
+
+def test_37_df_for_df2_is_an_erratum(report):
+    # transcription line 264, second line of (37): "sin 2 mu int_2 u_2 v_2 . df" - the element of the waterplane
+    # I (df = df_2 cos phi_1) where the first line and (38*) have df_2: refuted for int u v df != 0
+    from symfloat.model.source import SOURCES
+    f = next(f for f in report.formulas if f.id == "scheeffer-iv-v/37")
+    assert f.verdict == "erratum" and (f.erratum["kind"], f.erratum["confidence"]) == ("transcription", "low")
+    assert r"\sin 2 \mu \int_2 u_2 v_2 \cdot df. " in SOURCES["scheeffer"].text().splitlines()[264 - 1]
+    assert "the print gives" in f.erratum["evidence"]
 
 
 # ---- pinned values, all measured on the clipped prism (symfloat.geometry.floating), float64 ------------------

@@ -119,12 +119,49 @@ torque = as_printed(lambda: m * (-V1) - n * 0)
 d.step("couple", (-torque, V1 * m), "algebra", uses=("m-def",),
        note="the moment of the couple against the heel is V1 m: positive m turns the body back")
 
+d.quote("equilibrium-moments", "I",
+        "Es müssen also die statischen Momente des eintauchenden Teils für zwei durch  $S$  gelegte Vertikalebene "
+        "gleich Null sein.", reading=(sp.Subs(V1 * m, phi, 0), 0),
+        note="in the plane of the drawing: the moment V1 m of the submerged part about the vertical plane through S "
+             "along the rotation axis vanishes in the upright position (the second plane lies in the drawing)")
 d.quote("stability-2", "(2)", r"$$V_1 m > 0. \quad (2)$$", reading=as_printed(lambda: (sp.sign(-torque), sp.sign(V1 * m))),
         note="read as: the couple restores (its moment against the heel is positive) exactly when V1 m > 0")
+d.quote("turned-back", "I",
+        "In dem Falle, den Fig. 1 darstellt, wird der Körper offenbar in seine erste Gleichgewichtslage zurückgedreht, "
+        "sein Gleichgewicht war also ein stabiles", reading=as_printed(lambda: (sp.sign(-torque), sp.sign(V1 * m))),
+        note="the couple turns the body back (its moment against the heel positive) exactly when m > 0")
+d.quote("M-side", "I", "Läge  $M$  aber auf der entgegengesetzten Seite von  $S$ , so wäre  $m$  negativ",
+        reading=(sp.sign(sp.Subs(sp.Derivative(m, phi), phi, 0)), sp.sign(T1 / V1 - e1)),
+        note="for small phi m = phi SM (M the metacentre on the axis, SM = T1/V1 - e1, III): m has the sign of the "
+             "height of M above S")
+d.quote("S2D", "I", r"$S_2 D (= m) \perp S L$", reading=(m, v * sp.cos(phi) - u * sp.sin(phi)),
+        note="S2D: the horizontal distance of S2 from the vertical SL through S, the X coordinate of S2")
 d.quote("rotation-5", "(5)",
         r"$$\begin{aligned} m &= v \cos \varphi - u \sin \varphi \\ n &= v \sin \varphi + u \cos \varphi "
         r"\end{aligned} \quad (5)$$",
         reading=(sp.Matrix([m, n]), sp.Matrix([v * sp.cos(phi) - u * sp.sin(phi), v * sp.sin(phi) + u * sp.cos(phi)])))
+SS1 = e1 * eu                                  # the floating axis from S to S1 (S1 at u = e1)
+d.quote("fig3-labels", "I, Fig. 3",
+        "Schwimmachse  $S S$ , senkrecht zur Richtung der Drehungsachse gelegte (Vertikal-) Ebene dar.  "
+        "$A, B$ , sei die alte,  $A B$  die neue Wasserlinie",
+        reading=(sp.Matrix([SS1.dot(SS1), ev.dot(sp.Matrix([1, 0]))]), sp.Matrix([0, 1])),
+        note="read as the squared length of the axis named (S S: from S to S) and the cosine of the angle between "
+             "the lines named old and new waterline (both A B: one line); the old waterline A1B1 is fixed in the "
+             "body across the axis (direction v), the new one horizontal",
+        erratum=Erratum("transcription", "high",
+                        r"\text{die durch die Schwimmachse } S S_1 \ldots \; A_1 B_1 \text{ sei die alte, } A B "
+                        r"\text{ die neue Wasserlinie}",
+                        "The scan read the subscript 1 as a comma twice. 'S S ,' names no axis: the floating axis "
+                        "is S S_1 (section I: 'Die Schwimmachse S S_1', 'S S_1 werde mit e_1 ... bezeichnet'); "
+                        "'A, B, sei die alte, A B die neue Wasserlinie' gives the old and the new waterline the "
+                        "same letters, which the rotation by phi separates, while section II ('wie in Fig. 3') "
+                        "writes 'A B die neue, A_1 B_1 die alte Wasserlinie'. A comma for a subscript 1 after a "
+                        "letter is the scan's, not the printer's (high).",
+                        corrected_reading=(sp.Matrix([SS1.dot(SS1), ev.dot(sp.Matrix([1, 0]))]),
+                                           sp.Matrix([e1 ** 2, sp.cos(phi)]))))
+d.quote("archimedes-3-4", "I",
+        "Nach dem Archimedischen Gesetz muss das Volumen des neu eintauchenden Körperteils gleich dem Volumen des neu "
+        "heraustretenden sein.", reading=(V3, V4), note="the wedge volumes of section II, integrated over the waterplane")
 d.quote("moments-raw", "I",
         r"$$\begin{aligned} V_1 v &= V_3 (v_3 + v_4) \\ V_1 u &= V_1 e_1 - V_3 (u_3 - u_4). \end{aligned}$$",
         reading=(sp.Matrix([V1 * v, V1 * u]), sp.Matrix([V3 * (v3 + v4), V1 * e1 - V3 * (u3 - u4)])))
@@ -220,6 +257,24 @@ rhs13 = T1 * sp.sin(phi) * tg / 2 + V1 * e1 * sp.cos(phi)
 d.step("righting-moment-12", (V1 * m, rhs12), "substitution", uses=("moments-7", "wedge-moments-10"))
 d.step("moment-13", (V1 * n, rhs13), "substitution", uses=("moments-7", "wedge-moments-10"))
 
+for name, loc, exc, lhs, rhs in (
+        ("EF-v", "I", r"$v_3 + v_4 = E F$", v3 + v4, x3 + x4),
+        ("k-u", "I", r"$u_3 - u_4 = S_3 F + S_4 E$", u3 - u4, y3 + y4),
+        ("EF-e", "II", r"$E F = e$", x3 + x4, e),
+        ("k-S3F", "II", r"$S_3 F + S_4 E = k$", y3 + y4, k),
+        ("e-x", "II", r"$e = x_3 + x_4$", e, x3 + x4),
+        ("k-y", "II", r"$k = y_3 + y_4$", k, y3 + y4)):
+    d.quote(name, loc, exc, reading=(lhs, rhs),
+            note="EF = OF + OE = x3 + x4, S3F = y3, S4E = y4 (Fig. 4): through the body coordinates of S3, S4 for any "
+                 "position of O")
+d.quote("angle-R", "II", r"$R = \varphi$", reading=(sp.acos(ev.dot(sp.Matrix([1, 0]))), phi),
+        note="the angle between the old waterplane (fixed in the body, across the axis) and the new (horizontal)")
+d.quote("element-y", "II", r"$df \cdot y \cdot \frac{1}{2} y = \frac{1}{2} df \cdot x^2 \operatorname{tg}^2 \varphi$",
+        reading=(sp.Integral(eta, (eta, 0, x * tg)), as_printed(lambda: (x * tg) * (x * tg) / 2), x ** 2 * tg ** 2 / 2),
+        note="per unit df, y = x tg phi: the moment of the element about the old waterplane")
+d.quote("element-x", "II", r"$df \cdot y \cdot x = df \cdot x^2 \operatorname{tg} \varphi$",
+        reading=(sp.Integral(x, (eta, 0, x * tg)), as_printed(lambda: (x * tg) * x), x ** 2 * tg),
+        note="per unit df: the moment about the plane through the axis perpendicular to the old waterplane")
 d.quote("moments-10", "(10)",
         r"$$\begin{aligned} V_3 e &= V_3 x_3 + V_3 x_4 \\ V_3 k &= V_3 y_3 + V_3 y_4 \end{aligned} \quad (10)$$",
         reading=(sp.Matrix([V3 * e, V3 * k]), sp.Matrix([V3 * x3 + V3 * x4, V3 * y3 + V3 * y4])))
@@ -241,6 +296,8 @@ d.quote("moments-sum", "II, after (10b)",
         r"\operatorname{tg}^2 \varphi \int x^2 df \end{aligned}$$",
         reading=(sp.Matrix([V3 * e, V3 * k]), sp.Matrix([tg * sp.Integral((s - a) ** 2 * W, (s, 0, Hh)),
                                                           tg ** 2 / 2 * sp.Integral((s - a) ** 2 * W, (s, 0, Hh))])))
+d.quote("T1-integral", "II", r"$\int x^2 df$", reading=(T1, sp.Integral((s - a) ** 2 * W, (s, 0, Hh))),
+        note="over the whole old waterplane: its moment of inertia T1 about the axis")
 d.quote("moments-11", "(11)",
         r"$$\begin{aligned} V_3 e &= T_1 \operatorname{tg} \varphi \\ V_3 k &= \frac{1}{2} T_1 \cdot "
         r"\operatorname{tg}^2 \varphi \end{aligned} \quad (11)$$",
@@ -268,6 +325,38 @@ d.quote("moment-13", "(13)",
 crit15 = (1 + tg ** 2 / 2) * T1 - V1 * e1
 d.step("sign-15", (sp.sign(V1 * m), sp.sign(crit15)), "algebra", uses=("righting-moment-12",),
        note="sin phi > 0 for 0 < phi < pi/2: V1 m and the bracket of (12) have the same sign")
+
+
+def IND(rel):
+    """1 where the condition *rel* holds, else 0."""
+    return sp.Piecewise((1, rel), (0, True))
+
+
+d.quote("stable-V1m", "(15)", "so muss (nach 9 und 12)  $V_1 m$  und folglich",
+        reading=(sp.Integer(1), IND(sp.StrictGreaterThan(crit15, 0))),
+        note="read as: the condition the sentence puts on V1 m (as transcribed: none, every V1 m) is equivalent "
+             "to (15), by (12)",
+        erratum=Erratum("transcription", "high", r"\text{so muss (nach 9 und 12) } V_1 m > 0 \text{ und folglich}",
+                        "The sentence has no predicate for V1 m: 'so muss V1 m und folglich (15) sein'. Stability "
+                        "is (2), V1 m > 0, and by (12) V1 m = sin(phi) times the bracket of (15) with sin(phi) > 0, "
+                        "so V1 m > 0 exactly when the bracket is positive: the lost words are '> 0' (or "
+                        "'positiv'). The parallel sentence of the labile case has lost its '< 0' in the same way; "
+                        "a relation sign dropped after an inline formula is the scan's (high). The reference "
+                        "'nach 9' is left as printed (the numbering has gaps and no display of the transcription "
+                        "carries (9)).",
+                        corrected_reading=(IND(sp.StrictGreaterThan(V1 * m, 0)), IND(sp.StrictGreaterThan(crit15, 0)))))
+d.quote("labile-V1m", "after (15)", "so ist  $V_1 m$  und daher",
+        reading=(sp.Integer(1), IND(sp.StrictLessThan(crit15, 0))),
+        note="read as: the condition the sentence puts on V1 m (as transcribed: none) is equivalent to the "
+             "bracket being negative, by (12)",
+        erratum=Erratum("transcription", "high", r"\text{so ist } V_1 m < 0 \text{ und daher}",
+                        "As in the stable case the relation of V1 m is lost: 'so ist V1 m und daher ... < 0'. The "
+                        "labile position has V1 m < 0 ((2) fails), and by (12) V1 m < 0 exactly when the bracket "
+                        "(1 + tg^2(phi)/2) T1 - V1 e1 is negative (sin(phi) > 0): the lost words are '< 0' (or "
+                        "'negativ'). For the labile initial position this holds for the small rotations, below "
+                        "the zero phi_1 of the increasing bracket (IV (27)). The scan's loss, as in the stable "
+                        "case (high).",
+                        corrected_reading=(IND(sp.StrictLessThan(V1 * m, 0)), IND(sp.StrictLessThan(crit15, 0)))))
 d.quote("stable-15", "(15)",
         r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - V_1 e_1 > 0 \text{ sein.} \quad (15)$$",
         reading=(sp.sign(V1 * m), sp.sign(crit15)),

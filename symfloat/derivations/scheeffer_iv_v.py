@@ -307,6 +307,13 @@ d.quote("stable-18", "IV", r"$$\frac{T_1}{V_1} - e_1 > 0.$$", reading=(slope, T1
              + RED)
 d.quote("unstable-18", "IV", r"$$\frac{T_1}{V_1} - e_1 < 0,$$", reading=(slope, T1 / V1 - e1),
         note="as stable-18, the labile case")
+d.quote("stable-18-words", "IV", "Das Gleichgewicht ist stabil (18), wenn",
+        reading=(sp.sign(slope), sp.sign(T1 / V1 - e1)), note="the slope of the righting arm at the upright position")
+d.quote("labile-turns-on", "IV",
+        "so ist das Gleichgewicht für diese Achse labil und das Prisma wird, wenn äussere Kräfte es um einen noch so "
+        "kleinen Winkel um diese Achse drehen, durch Schwerkraft und Auftrieb weiter gedreht",
+        reading=(sp.sign(slope), sp.sign(T1 / V1 - e1)),
+        note="(12): the arm grows like phi (T_1/V_1 - e_1), negative when the criterion fails")
 d.quote("moment-12", "IV (12)",
         r"$$V_1 m = \sin \varphi \cdot \left\{ \left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - "
         r"V_1 e_1 \right\}$$",
@@ -314,13 +321,39 @@ d.quote("moment-12", "IV (12)",
 d.quote("moment-zero", "IV (27)",
         r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi_1 \right) T_1 - V_1 e_1 = 0$$",
         reading=((1 + t1 ** 2 / 2) * T1 - V1 * e1, 0))
+d.quote("Q-decreasing", "IV",
+        "Dann wird aber das Drehungsmoment, dessen negativer Faktor (absolut genommen) mit wachsendem  $\\varphi$  "
+        "kleiner wird",
+        reading=(sp.Derivative(Q, phi), T1 * tph * (1 + tph ** 2)),
+        note="the factor (1 + tg^2/2) T_1 - V_1 e_1 of (12) grows with phi (positive derivative): while negative "
+             "its absolute value shrinks, and it vanishes once, at phi_1 (27)")
+d.quote("small-negative", "IV", "für noch so kleines  $\\varphi$  negativ ist.",
+        reading=(slope, T1 / V1 - e1), note="V_1 m = phi V_1 (T_1/V_1 - e_1) + O(phi^3): negative for every small phi "
+                                            "when the criterion fails")
 d.quote("27", "(27)", r"$$\text{oder} \quad \operatorname{tg} \varphi_1 = \sqrt{2 \left( \frac{V_1 e_1}{T_1} - 1 "
                       r"\right)} \quad (27)$$", reading=(t1, sp.sqrt(2 * (V1 * e1 / T1 - 1))))
+d.quote("first-condition", "IV (27)",
+        "das statische Moment des eintauchenden Teils für die durch den Schwerpunkt S parallel zur Drehungsachse "
+        "gelegte Vertikalebene ( $V_1 m$ ) ist Null.", reading=(sp.Subs(V1 * m, phi, phi1), 0),
+        note="at the tilt phi_1 of (27) the moment V_1 m vanishes")
+d.quote("second-plane", "IV (28)",
+        "Für diese Ebene muss das statische Moment des eintauchenden Körperteils gleich Null sein.",
+        reading=(M2, P * t1), note="the moment M_2 = V_1 w about the plane through OS across EF is tg phi_1 int_1 u v "
+                                   "df: zero exactly when (31) holds")
 d.quote("28", "(28)", r"$$M_2 = M_3 - M_4 = 0 \text{ sein.} \quad (28)$$", reading=(M2, M3 - M4),
         note="the '= 0' is the equilibrium condition imposed, read with (32)")
 d.quote("element-moment", "IV (29)",
         r"$$df \cdot z \cdot v_3 = u_3 \cdot v_3 \cdot df \cdot \operatorname{tg} \varphi_1$$",
         reading=(dfs * sp.Integral(1, (z, 0, u3 * t1)) * v3, u3 * v3 * dfs * t1))
+u4, v4 = sp.Symbol("u_4", positive=True), sp.Symbol("v_4", real=True)
+d.domain.update({u4: (sp.Rational(1, 10), 1), v4: (-1, 1)})
+d.quote("column-height", "IV (29)", r"$z = u_3 \cdot \operatorname{tg} \varphi_1$",
+        reading=(sp.Integral(1, (z, 0, u3 * t1)), u3 * t1), note="the column over df at the distance u_3 from EF")
+d.quote("column-4", "IV (30)", r"$z df = u_4 \cdot \operatorname{tg} \varphi_1 \cdot df$",
+        reading=(dfs * sp.Integral(1, (z, 0, u4 * t1)), u4 * t1 * dfs), note="the emerged column over df at u_4")
+d.quote("column-4-moment", "IV (30)", r"$u_4 v_4 \cdot df \cdot \operatorname{tg} \varphi_1$",
+        reading=(dfs * sp.Integral(v4, (z, 0, u4 * t1)), u4 * v4 * dfs * t1),
+        note="its moment about the vertical plane through OS across EF (lever v_4)")
 d.quote("29", "(29)", r"$$M_3 = \int_3 u_3 v_3 \cdot df \cdot \operatorname{tg} \varphi_1, \quad (29)$$",
         reading=(M3, P3 * t1))
 d.quote("30-M4", "IV (30)", r"$$M_4 = \int_4 u_4 v_4 \cdot df \cdot \operatorname{tg} \varphi_1$$",
@@ -328,6 +361,9 @@ d.quote("30-M4", "IV (30)", r"$$M_4 = \int_4 u_4 v_4 \cdot df \cdot \operatornam
 d.quote("M2-difference", "IV (31)",
         r"$$M_2 = \int_3 u_3 v_3 \cdot df \cdot \operatorname{tg} \varphi_1 - \int_4 u_4 v_4 \cdot df \cdot "
         r"\operatorname{tg} \varphi_1$$", reading=(M2, P3 * t1 - (P3 - P) * t1))
+d.quote("u4-minus-u3", "IV (31)",
+        "oder, wenn wir beide Summen zusammenfassen (da  $u_4$  mit  $-u_3$  bezeichnet werden kann)",
+        reading=(M3 - M4, P * t1), note="with u = -u_4 on the rising side the two sums are int_1 u v df tg phi_1")
 d.quote("31", "(31)", r"$$\left. \begin{aligned} M_2 &= \int_1 u v \cdot df \cdot \operatorname{tg} \varphi_1 = 0 "
                       r"\\ \text{oder } \int_1 u v \cdot df &= 0 \end{aligned} \right\} \quad (31)$$",
         reading=(M2, P * t1), note="the identity M_2 = tan phi_1 int_1 u v df; '= 0' is the condition imposed")
@@ -344,11 +380,17 @@ d.quote("32", "(32)", r"$$\left. \begin{aligned} T_1 \left( 1 + \frac{1}{2} \ope
                         "printer cannot be excluded.",
                         corrected_reading=(sp.Matrix([V1 * res(m).subs(phi, phi1) / sp.sin(phi1), M2 / t1]),
                                            sp.Matrix([T1 * (1 + t1 ** 2 / 2) - V1 * e1, P]))))
+d.quote("33-words", "(33)",
+        "Soll nun die Gleichgewichtslage ( $\\varphi_1$ ) eine stabile sein, so muss nach dem Duhamel'schen Satze (18)",
+        reading=(D2, sp.Min(T1 / c ** 3, T11 / c) - T1 / c),
+        note="Duhamel for the tilted position: the smallest moment of II minus V_1 e_2 (D2-value)")
 d.quote("33", "(33)", r"$$T_m - V_1 e_2 > 0 \quad (33)$$", reading=(D2, Tmin - V1 * e2),
         note="T_m here is the smallest moment of inertia of II; read as the quantity whose sign decides")
 d.quote("13-restated", "IV (13)",
         r"$$V_1 n = \frac{1}{2} T_1 \sin \varphi \cdot \operatorname{tg} \varphi + V_1 e_1 \cos \varphi$$",
         reading=(V1 * n, T1 * sp.sin(phi) * tph / 2 + V1 * e1 * sp.cos(phi)))
+d.quote("n-e2", "IV (34)", r"$n = e_2$", reading=(sp.Subs(n, phi, phi1), e2),
+        note="at the equilibrium phi_1, S_2 lies vertically below S (m = 0), so n = A S_2 = S S_2")
 d.quote("34", "(34)", r"$$V_1 e_2 = \frac{1}{2} T_1 \sin \varphi_1 \cdot \operatorname{tg} \varphi_1 + V_1 e_1 "
                       r"\cos \varphi_1 \quad (34)$$",
         reading=(V1 * e2, T1 * sp.sin(phi1) * t1 / 2 + V1 * e1 * sp.cos(phi1)))
@@ -365,8 +407,20 @@ d.quote("37", "(37)", r"$$\begin{aligned} T &= \int_2 \zeta^2 df_2 = \cos^2 \mu 
                       r"\cos^2 \mu + T_2^1 \cdot \sin^2 \mu + \sin 2 \mu \int_2 u_2 v_2 \cdot df. \end{aligned} "
                       r"\quad (37)$$",
         reading=as_printed(lambda: (Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
-                 T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2)),
-        note="the last integral is printed with df for df_2; it is the same integral over II (int_2)")
+                 T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * rdf * P2)),
+        note="the last integral of the second line is printed with df, the element of the waterplane I "
+             "(df = df_2 cos phi_1, ratio-df), over the waterplane II: int_2 u_2 v_2 df = cos phi_1 int_2 u_2 v_2 df_2",
+        erratum=Erratum("transcription", "low",
+                        r"T = T_2 \cos^2 \mu + T_2^1 \sin^2 \mu + \sin 2\mu \int_2 u_2 v_2 \, df_2",
+                        "The first line of (37) has sin 2mu int_2 u_2 v_2 df_2; the second, which only renames "
+                        "int_2 u_2^2 df_2 and int_2 v_2^2 df_2 as T_2 and T_2^1, repeats the term with df. The text "
+                        "defines df as the element of the waterplane I, the projection of df_2 (next line; (38*) "
+                        "pairs int_2 with df_2 and int_1 with df throughout), so int_2 u_2 v_2 df differs from "
+                        "int_2 u_2 v_2 df_2 by the factor cos phi_1 unless the integral vanishes. Harmless for (39), "
+                        "(40), where it is zero. A lost subscript 2: more likely the scan's than the printer's, but "
+                        "the text cannot tell (low).",
+                        corrected_reading=as_printed(lambda: (Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
+                                                              T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2))))
 d.quote("38-projection", "(38)", r"$$df = \frac{df_2}{\cos \varphi_1} \quad u = \frac{u_2}{\cos \varphi_1} \quad "
                                  r"v = \frac{v_2}{\cos \varphi_1}$$",
         reading=(sp.Matrix([rdf, ru, rv]), sp.Matrix([1 / sp.cos(phi1)] * 3)),
@@ -389,19 +443,34 @@ d.quote("38", "(38)", r"$$\left. \begin{aligned} T_2 &= \int_2 u_2^2 df_2 = \int
 d.quote("39", "(39)", r"$$\int_2 u_2 v_2 df_2 = 0 \quad (39)$$", reading=(P2e, 0))
 d.quote("40", "(40)", r"$$T = T_2 \cdot \cos^2 \mu + T_2^1 \cdot \sin^2 \mu \quad (40)$$",
         reading=(Tmue, T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2))
+d.quote("dT-zero", "(40)", r"$$\frac{dT}{d\mu} = 0 \text{ sein, also}$$",
+        reading=(sp.Matrix([sp.Subs(sp.Derivative(Tmue, mu), mu, 0), sp.Subs(sp.Derivative(Tmue, mu), mu, sp.pi / 2)]),
+                 sp.zeros(2, 1)),
+        note="read at the extreme values of T (mu = 0, 90 deg, T-mu-between): the derivative vanishes there")
 d.quote("dT", "(40)", r"$$(T_2^1 - T_2) \cdot \sin 2\mu = 0$$",
         reading=(sp.Derivative(Tmue, mu), (T21 - T2) * sp.sin(2 * mu)), note="the left side is dT/dmu")
+d.quote("nonzero-difference", "(40)", "oder, da  $(T_2^1 - T_2)$  im Allgemeinen von Null verschieden sein wird,",
+        reading=(sp.Derivative(Tmue, mu) / (T21 - T2), sp.sin(2 * mu)),
+        note="dividing dT/dmu by T_2^1 - T_2 (not zero) leaves sin 2 mu")
 d.quote("mu-0-90", "(40)", r"$$\sin 2\mu = 0, \quad \mu = \begin{cases} 0 \\ 90^\circ \end{cases}$$",
         reading=(sp.Matrix([sp.Subs(sp.Derivative(Tmue, mu), mu, 0), sp.Subs(sp.Derivative(Tmue, mu), mu, sp.pi / 2)]),
                  sp.Matrix([0, 0])))
+d.quote("extremes-40", "(41)",
+        "Diese beiden Werte für  $\\mu$  geben aus 40 das kleinste und das grösste der Trägheitsmomente T:",
+        reading=(Tmue, T2 + (T21 - T2) * sp.sin(mu) ** 2),
+        note="T(mu) = T_2 + (T_2^1 - T_2) sin^2 mu lies between its values at mu = 0 and 90 deg")
 d.quote("41", "(41)", r"$$\left. \begin{aligned} T_m &= T_2 \\ T_m^1 &= T_2^1 \end{aligned} \right\} (41)$$",
         reading=(sp.Matrix([Tm, Tm1]), sp.Matrix([T2, T21])),
         note="T_m, T_m^1: the two extreme values (at mu = 0, 90 deg), not ordered")
+d.quote("42-from", "(42)", "Die Werte für diese beiden Trägheitsmomente ergeben sich aus 38 und 41:",
+        reading=(sp.Matrix([Tm, Tm1]), sp.Matrix([T1 / c ** 3, T11 / c])), note="(41) with (38*)")
 d.quote("42", "(42)", r"$$\left. \begin{aligned} T_m &= \frac{T_1}{\cos^3 \varphi_1} \\ T_m^1 &= \frac{T_1^1}{\cos "
                       r"\varphi_1} \end{aligned} \right\} (42)$$",
         reading=(sp.Matrix([Tm, Tm1]), sp.Matrix([T1 / c ** 3, T11 / c])))
 d.quote("43", "(43)", r"$$T - \frac{T_1}{\cos \varphi_1} > 0 \quad (43)$$", reading=(D2, Tmin - T1 / c),
         note="T the smaller of T_m, T_m^1; read as the quantity whose sign decides")
+d.quote("T-is-Tm", "(43)", r"$T = T_m$", reading=(Tm - V1 * e2, T1 / c ** 3 - T1 / c), note="(43) with T = T_m")
+d.quote("T-is-Tm1", "(43a)", r"$T = T_m^1$", reading=(Tm1 - V1 * e2, (T11 - T1) / c), note="(43) with T = T_m^1")
 d.quote("43-Tm", "(43)", r"$$T - \frac{T_1}{\cos \varphi_1} = \frac{T_1}{\cos^3 \varphi_1} - \frac{T_1}{\cos "
                          r"\varphi_1} = \frac{T_1}{\cos \varphi_1} \cdot \text{tg}^2 \varphi_1",
         reading=(Tm - V1 * e2, T1 / c ** 3 - T1 / c, T1 / c * t1 ** 2), note="T = T_m")
@@ -446,6 +515,12 @@ d.quote("46", "(46)", r"$$(T_x - T_y) \sin 2 \omega = 0 \quad (46)$$",
         reading=(2 * sp.Subs(Iuv, J, Jsym), (Tx - Ty) * sp.sin(2 * om)),
         note="twice the left side of (45) with int x y df = 0; '= 0' is the condition")
 lhs46 = 2 * sp.Subs(Iuv, J, Jsym)
+d.quote("principal-or-isotropic", "(47)",
+        "In schiefer Lage kann also das Prisma im Gleichgewicht sein entweder wenn es um eine der beiden Hauptachsen "
+        "des Wasserschnitts I gedreht wird, oder wenn die Trägheitsmomente der Fläche für die beiden Hauptachsen "
+        "gleich sind.", reading=(sp.Subs(Iuv, J, Jsym), (Tx - Ty) * sp.sin(2 * om) / 2),
+        note="for a base with a symmetry axis int_1 u v df = (T_x - T_y) sin(2 omega)/2: zero only for omega = 0, "
+             "90 deg or T_x = T_y")
 d.quote("47", "(47)", r"$$\omega = 0, \omega = 90^\circ, T_x = T_y. \quad (47)$$",
         reading=(sp.Matrix([sp.Subs(lhs46, om, 0), sp.Subs(lhs46, om, sp.pi / 2), sp.Subs(lhs46, Tx, Ty)]),
                  sp.Matrix([0, 0, 0])),
@@ -455,8 +530,19 @@ d.quote("u-44", "(48)", r"$$u = y \sin \omega + x \cos \omega.$$", reading=(Uw, 
 d.quote("T1-expanded", "(48)", r"$$T_1 = \sin^2 \omega \int_1 y^2 d f + \cos^2 \omega \int_1 x^2 d f + \sin 2 \omega "
                                r"\int_1 x y \cdot d f$$",
         reading=(T1w, sp.sin(om) ** 2 * Tx + sp.cos(om) ** 2 * Ty + sp.sin(2 * om) * J))
+d.quote("third-term", "(48)", "oder, da das dritte Glied gleich Null ist,",
+        reading=(sp.Subs(J * sp.sin(2 * om), J, Jsym), 0), note="the third term J sin 2 omega of T_1(omega): J = 0 "
+                                                                 "for a base with a symmetry axis")
+d.quote("mirror-pairs", "(45)",
+        "da immer die beiden Glieder, die sich auf zwei zu beiden Seiten der Symmetrieachse in gleichen Abständen von "
+        "den Hauptachsen liegende Flächenelemente beziehen, entgegengesetzte Vorzeichen haben, also einander aufheben.",
+        reading=(Jsym, 0), note="int x y df over a base symmetric about the y axis: each chord contributes int x dx = 0")
 d.quote("T1-symmetric", "(48)", r"$$T_1 = T_x \cdot \sin^2 \omega + T_y \cdot \cos^2 \omega$$",
         reading=(T1s, Tx * sp.sin(om) ** 2 + Ty * sp.cos(om) ** 2))
+d.quote("isotropic-sign", "(48)",
+        "so ist für alle Drehungsachsen die Grösse  $\\frac{T_1}{V_1} - e_1$  entweder positiv oder negativ.",
+        reading=(sp.Derivative(T1iso, om), 0),
+        note="T_1 does not depend on the direction omega of the axis (T_x = T_y), V_1 and e_1 never do")
 d.quote("48", "(48)", r"$$T_1 = T_x = T_y \quad (48)$$", reading=(T1iso, T0),
         note="T_x = T_y = T_0: the second equality is the case's hypothesis, so the reading is T_1 = T_0")
 d.quote("49", "(49)", "dass das Trägheitsmoment des Wasserschnitts I oder der Grundfläche des Prismas für alle "
@@ -471,6 +557,8 @@ d.quote("50", "(50)", r"$$\text{folglich } T_m^1 < T_m$$", reading=(sp.sign(Tmi 
 d.quote("43-again", "(51)", r"$$T - \frac{T_1}{\cos \varphi_1} > 0$$", reading=(D2, Tmin - T1 / c),
         note="(43) repeated")
 d.quote("Tm1-min", "(51)", r"$$T_m^1 = \frac{T_1}{\cos \varphi_1}$$", reading=(Tm1i, T1 / c))
+d.quote("minimum-T", "(51)", "Setzt man für T das Minimum", reading=(sp.Min(Tmi, Tm1i), T1 / c),
+        note="isotropic base: T_m^1 = T_1/cos phi_1 is the smaller of T_1/cos^3 phi_1 and T_1/cos phi_1")
 d.quote("51", "(51)", r"$$T_m^1 - \frac{T_1}{\cos \varphi_1} = 0. \quad (51)$$",
         reading=(Tm1i - V1 * e2, Tm1i - T1 / c, 0))
 d.quote("51-claim", "(51)",
@@ -533,6 +621,10 @@ d.quote("s-half", "(53)", r"Diese Formel giebt den Grenzwert von  $\varphi_1$  a
 d.quote("V1-F1", "(54)", r"$V_1 = F_1 \cdot b s$", reading=(V1, F1 * b * s))
 d.quote("e1-b", "(54)", r"$S S_1 = e_1 = \frac{b}{2} - \frac{b s}{2} = \frac{b}{2}(1 - s)$",
         reading=(e1, b / 2 - b * s / 2, b / 2 * (1 - s)))
+d.quote("54-from", "(54)",
+        "Mit Benutzung dieser Werte ergibt sich aus 52, 53, 53a für die schiefe stabile Lage ( $\\varphi_1$ ) die "
+        "Bestimmungsgleichung:", reading=(t1 ** 2, F1 * b ** 2 * s * (1 - s) / T1 - 2),
+        note="(27) with V_1 = F_1 b s, e_1 = b (1 - s)/2")
 d.quote("54", "(54)", r"$$\operatorname{tg}^2 \varphi_1 = \frac{F_1 b^2}{T_1} \cdot s (1 - s) - 2 \quad (54)$$",
         reading=(t1 ** 2, F1 * b ** 2 / T1 * s * (1 - s) - 2))
 printed55 = sp.Piecewise((b * (1 - s) / utop, s > sp.Rational(1, 2)), (b * s / ubot, True))
@@ -837,7 +929,9 @@ _w("wp2", "second moments of the clipped waterplane II about EF, across it, and 
 _w("wp2-ext", "the moments of the clipped waterplane II about EF and across it", ("41", "42"), "wp2-ext", EQ)
 _w("P2", "product moment of the clipped waterplane II at the equilibrium tilt", ("39",), "P2",
    ("rect-long", "tri", "quad-p"))
-_w("Tmu", "moment of the clipped waterplane II about the axis at the angle mu with EF", ("37", "40"), "Tmu",
+# not (37): its cases lie at the tilted equilibrium, where int_2 u_2 v_2 df_2 = 0 and the print of (37) (df for
+# df_2 in that term) and its correction coincide
+_w("Tmu", "moment of the clipped waterplane II about the axis at the angle mu with EF", ("40",), "Tmu",
    (("rect-long", R(1, 3), {mu: R(1, 3)}), ("quad-p", R(6, 5), {mu: R(6, 5)}), ("tri", R(7, 10), {mu: R(7, 10)})))
 _w("D2", "V times the metacentric height of the clipped tilted prism", ("33", "43", "43-again"), "D2", EQ)
 _w("D2-sign", "sign of the metacentric height of the clipped tilted prism", ("claim-43a",), "D2-sign", NONISO)

@@ -34,6 +34,7 @@ x, y, X, Y, th = sp.symbols("x y X Y theta", real=True)
 a, b, s, r = sp.symbols("a b s r", positive=True)
 om = sp.Symbol("omega", real=True)
 tp = sp.Symbol("tau", positive=True)            # tan(phi) of a tilted position
+bs_ = sp.Symbol("b_s", positive=True)           # the scan's "b_s" for the draught b s (Example 10)
 Tx, Ty, Pxy = sp.symbols("T_x T_y P_xy", real=True)
 u = sp.Symbol("u", real=True)
 T = sp.Symbol("T")
@@ -52,7 +53,7 @@ DERIVATION = d = Derivation(
     requires=(),
     domain={x: (-1, 1), y: (-1, 1), om: (0, 1), Tx: (1, 2), Ty: (1, 2), Pxy: (-1, 1),
             a: (sp.Rational(1, 2), 2), b: (1, 2), s: (sp.Rational(1, 20), sp.Rational(19, 20)),
-            r: (sp.Rational(1, 2), 2), tp: (sp.Rational(1, 10), 2)},
+            r: (sp.Rational(1, 2), 2), tp: (sp.Rational(1, 10), 2), bs_: (sp.Rational(1, 10), 4)},
     constraints=(),
     assumptions=("the body is a homogeneous right prism (or cylinder) of height b and density s (0 < s < 1) "
                  "in water of density 1; the bases are perpendicular to the axis",
@@ -146,6 +147,14 @@ d.quote("regular-polygon-theorem", "VI",
              "from other-symmetry-axis")
 
 
+def at_data(printed, derived, data):
+    """A worked example's inequality at its data: the printed margin (positive when the printed relation holds)
+    equals the derived margin there, and is positive."""
+    keys, values = tuple(data), tuple(data.values())
+    pm = sp.Subs(printed, keys, values)
+    return sp.Matrix([pm, sp.sign(pm)]), sp.Matrix([sp.Subs(derived, keys, values), 1])
+
+
 # =====================================================================================================
 # A. The regular triangular prism
 # =====================================================================================================
@@ -178,6 +187,10 @@ d.quote("triangle-condition", "VI.A",
         r"$$F_1 \cdot \frac{a^2}{24} - F_1 \cdot \frac{b^2}{2} s (1-s) > 0$$",
         reading=(F1 * a ** 2 / 24 - F1 * b ** 2 / 2 * s * (1 - s), V1 * hA),
         note="the left side is V_1 h_A, V_1 > 0")
+d.quote("duhamel-VA-words", "VI.A", "Nach dem Duhamelschen Satze schwimmt das Prisma in der aufrechten Lage stabil, wenn",
+        reading=(sp.sign(V1 * hA), sp.sign(T1 - V1 * e1)), note="(18) times V_1 > 0")
+d.quote("duhamel-VA", "VI.A", r"$$T_1 - V_1 e_1 > 0$$", reading=(T1 - V1 * e1, V1 * hA),
+        note="Duhamel (18) times V_1 > 0: the margin is V_1 h_A")
 d.quote("57", "(57)", r"$$\left(\frac{a}{b}\right)^2 > 12 s \cdot (1-s) \tag{57}$$",
         reading=((a / b) ** 2 - 12 * s * (1 - s), 24 * s / b * hA), note="margin = (24 s / b) h_A")
 d.quote("58", "(58)",
@@ -192,6 +205,12 @@ d.quote("sqrt3", "VI.A", r"$$\left(\frac{a}{b}\right)^2 > 3 \text{ oder } \frac{
         reading=(sp.sqrt((12 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.7321")),
         tolerance=sp.Rational(1, 20000), note="the largest value of 12 s (1 - s), at s = 1/2, and its root")
 
+d.quote("every-density", "VI.A", "Gew. zwischen 0 und 1 die aufrechte Lage stabil.",
+        reading=(24 * s / b * hA, ((a / b) ** 2 - 3) + 12 * (s - sp.Rational(1, 2)) ** 2),
+        note="for (a/b)^2 > 3 the margin of (57) is a sum of positive terms for every s: stable")
+d.quote("sqrt3-below", "VI.A", r"$\frac{a}{b} < 1,7321$",
+        reading=(sp.sqrt((12 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.7321")),
+        tolerance=sp.Rational(1, 20000), note="the same bound sqrt 3, from below")
 q = sp.Symbol("q", positive=True)
 _roots = sorted(sp.solve(Eq(12 * s * (1 - s), (a / b) ** 2), s), key=lambda e: e.subs({a: 1, b: 1}))
 S_lo, S_hi = sp.symbols("s_-^A s_+^A")
@@ -272,6 +291,8 @@ d.step("tilted-stable-in-phi", (sp.Derivative((1 + tp ** 2 / 2) * T1 - V1 * e1, 
 
 um, umr, Ltop, Lbot = sp.symbols("u_m u_m' L_top L_bot")
 d.quote("BS", "VI.A", r"$B S = \frac{a}{3} \sqrt{3}$", reading=as_printed(lambda: (sp.sqrt(Bv[0] ** 2 + Bv[1] ** 2), a / 3 * sq3)))
+d.quote("BSD", "VI.A", r"$B S D = 30^\circ$", reading=as_printed(lambda: (sp.atan2(-Bv[1], -Bv[0]), 30 * deg)),
+        note="SB makes 30 deg with the parallel DE to BC through the centre S")
 d.step("dipping-distance", Eq(um, Bv[0] * nvec[0] + Bv[1] * nvec[1]), "definition",
        note="distance of the vertex B from the axis PQ, on the dipping side n", result=um)
 d.step("dipping-distance-value", (um, a / sq3 * sp.sin(pi / 6 + om)), "geometry", uses=("dipping-distance",))
@@ -297,6 +318,10 @@ d.step("bottom-limit-relabelled", (sp.Subs(full(Lbot), om, pi / 3 - om), b * s *
        note="for s < 1/2 Scheeffer measures omega on the lower base from its rising vertex: omega -> 60 deg - "
             "omega turns the bottom limit into b s sqrt3 / (a sin(30 deg + omega))")
 
+d.quote("60-from-54", "(60)",
+        "Wir erhalten also aus 54 und 55 für den Drehungswinkel  $\\varphi_1$  der stabilen Gleichgewichtslage die "
+        "Bedingungen:", reading=(tan1 ** 2, F1 * b ** 2 * s * (1 - s) / T1 - 2),
+        note="(54) with the triangle's F_1, T_1 gives the tilt; (55) with (59) the bound")
 d.quote("60-tan", "(60)", r"\text{tg } \varphi_1 &= \sqrt{24 \cdot \frac{b^2}{a^2} s (1-s) - 2}",
         reading=Eq(tan1, sp.sqrt(24 * b ** 2 / a ** 2 * s * (1 - s) - 2)))
 d.quote("60-bound", "(60)",
@@ -352,6 +377,17 @@ Q60l = boundary(L_bot_S, pi / 3, "Q60-lower", "the same for s < 1/2 with the low
 Q0 = boundary(Ltop, 0, "Q0", "(a/b)^2 at which t_1 = top limit at omega = 0 (edge BC across the axis)")
 Q0l = boundary(L_bot_S, 0, "Q0-lower", "the same for s < 1/2 with the lower base")
 
+d.quote("60-deg-limit", "VI.A",
+        "Ist der Grenzwert von  $\\omega = 60^\\circ$ , so kann das Prisma in der schiefen stabilen Gleichgewichtslage "
+        "um seine Hauptachse beliebig weit gedreht werden",
+        reading=(Ltop - sp.Subs(Ltop, om, pi / 3), b * (1 - s) * sq3 / a * (1 / sp.sin(pi / 6 + om) - 1)),
+        note="the top limit exceeds its value at omega = 60 deg by a non-negative amount for every omega: if the "
+             "tilt is within it there, it is within it for every axis (the upper base; the lower base: 60-one-base)")
+d.quote("less-satisfied", "VI.A",
+        "so ist sie für grössere Werte von  $\\omega$  um so weniger erfüllt",
+        reading=(sp.Derivative(sp.sin(30 * deg + om), om), sp.cos(pi / 6 + om)),
+        note="sin(30 deg + omega) increases on 0 <= omega <= 60 deg (positive derivative): (61) fails for larger "
+             "omega once it fails at omega = 0")
 D61 = sp.sqrt(24 * s * (1 - s) - 2 * (a / b) ** 2)
 d.quote("61-from-60", "VI.A",
         r"$$\sqrt{24 \cdot \frac{b^2}{a^2} s (1-s) - 2} \leq \frac{b}{a} \frac{(1-s) \sqrt{3}}{\sin(30^\circ + \omega)}$$",
@@ -365,6 +401,13 @@ d.quote("61", "(61)",
                  sp.Matrix([b * (1 - s) * sq3 / (a * tan1), b * s * sq3 / (a * tan1)])),
         note="the bound on sin(30 deg + omega) at which t_1 equals the limit (top for s > 1/2, bottom "
              "relabelled for s < 1/2)")
+d.quote("sin-90", "VI.A", r"$\sin(30^\circ + \omega) = 1$", reading=(sp.Subs(sp.sin(30 * deg + om), om, pi / 3), 1),
+        note="at the limit omega = 60 deg")
+d.quote("61-at-60", "VI.A",
+        r"$$\left( \text{für } s > \frac{1}{2} \right): \sqrt{24 s (1-s) - 2 \left(\frac{a}{b}\right)^2} \leq (1-s) \sqrt{3}$$",
+        reading=(sp.Matrix([D61, (1 - s) * sq3]), sp.Matrix([a / b * tan1, sp.Subs(a / b * Ltop, om, pi / 3)])),
+        note="(61) at sin(30 deg + omega) = 1: its two sides are a/b times t_1 and a/b times the top limit at "
+             "omega = 60 deg")
 qq = (a / b) ** 2
 d.quote("62-step-1", "VI.A", r"24 s (1-s) - 2 \left(\frac{a}{b}\right)^2 \leq 3 (1-s)^2",
         reading=(3 * (1 - s) ** 2 - (24 * s * (1 - s) - 2 * qq), 2 * (qq - Q60)), note="margin")
@@ -378,6 +421,12 @@ d.quote("62", "(62)",
         r"\\ \text{und } \frac{a}{b} &\geq \sqrt{\frac{3}{2} \cdot s (8 - 9 s)} \quad \text{für } s < \frac{1}{2}",
         reading=(sp.Matrix([(a / b - sp.sqrt(P62u)) * (a / b + sp.sqrt(P62u)), (a / b - sp.sqrt(P62l)) * (a / b + sp.sqrt(P62l))]),
                  sp.Matrix([qq - Q60, qq - Q60l])), note="margins times the positive a/b + sqrt(...)")
+d.quote("62-upper-inline", "VI.A", r"$\frac{a}{b} \geq \sqrt{\frac{3}{2} \cdot (1-s) (9 s - 1)}$",
+        reading=((a / b - sp.sqrt(P62u)) * (a / b + sp.sqrt(P62u)), qq - Q60), note="margin times a/b + sqrt(...)")
+d.quote("62-lower-inline", "VI.A", r"$\frac{a}{b} \geq \sqrt{\frac{3}{2} \cdot s (8 - 9 s)}$",
+        reading=((a / b - sp.sqrt(P62l)) * (a / b + sp.sqrt(P62l)), qq - Q60l), note="margin times a/b + sqrt(...)")
+d.quote("sin-30", "VI.A", r"$\sin 30^\circ = \frac{1}{2}$", reading=(sp.Subs(sp.sin(30 * deg + om), om, 0), sp.Rational(1, 2)),
+        note="(61) at omega = 0")
 D63 = 24 * s * (1 - s) - 2 * qq
 d.quote("63", "(63)",
         r"\sin^2(30^\circ) &> \frac{3 (1-s)^2}{24 s (1-s) - 2 \left(\frac{a}{b}\right)^2} \quad \text{für } s > "
@@ -390,6 +439,19 @@ d.quote("64", "(64)",
         r"\left(\frac{a}{b}\right)^2 &< 6(1-s)(3s-1) && \text{für } s > \frac{1}{2} \\ \text{und } "
         r"\left(\frac{a}{b}\right)^2 &< 6s(2-3s) && \text{für } s < \frac{1}{2}",
         reading=(sp.Matrix([6 * (1 - s) * (3 * s - 1) - qq, 6 * s * (2 - 3 * s) - qq]), sp.Matrix([Q0 - qq, Q0l - qq])))
+d.quote("65-IV", "(65)",
+        r"$$IV \quad \left(\frac{a}{b}\right)^2 < \begin{cases} 6(1-s)(3s-1) & \text{für } s > \frac{1}{2} \\ "
+        r"6s(2-3s) & \text{für } s < \frac{1}{2} \end{cases}$$",
+        reading=(sp.Matrix([6 * (1 - s) * (3 * s - 1) - qq, 6 * s * (2 - 3 * s) - qq]), sp.Matrix([Q0 - qq, Q0l - qq])),
+        note="margins: below Q0 the tilted equilibrium lies beyond the limit even at omega = 0, i.e. for every axis")
+d.quote("65-I-words", "(65)", "so schwimmt es in aufrechter Lage stabil.",
+        reading=(24 * s / b * hA, qq - 12 * s * (1 - s)), note="I: the margin of (57) is (24 s/b) h_A >= 0")
+d.quote("65-IV-words", "(65)",
+        "so hat das Prisma ausser der aufrechten labilen keine Gleichgewichtslage weiter ohne dass eine der "
+        "Grundflächen vom Wasserspiegel durchschnitten wird.",
+        reading=(sp.Matrix([6 * (1 - s) * (3 * s - 1) - qq, 6 * s * (2 - 3 * s) - qq]), sp.Matrix([Q0 - qq, Q0l - qq])),
+        note="IV: below Q0 the tilt of (54) lies beyond the first-region limit already at omega = 0, and (61) is "
+             "harder for larger omega (less-satisfied): no axis gives a tilted position in the first region")
 d.quote("65-I", "(65)", r"$$I \quad \left(\frac{a}{b}\right)^2 \geq 12s(1-s)$$",
         reading=(qq - 12 * s * (1 - s), 24 * s / b * hA),
         note="at equality h_A = 0 but the moment sin(phi) T_1 tan^2(phi)/2 is still restoring: stable")
@@ -400,6 +462,10 @@ d.quote("65-II", "(65)",
         note="II holds for every axis also when the other base is included: over omega the top limit is "
              "smallest at omega = 60 deg and the bottom limit b s sqrt3/(a cos omega) at omega = 0, where it "
              "equals b s sqrt3 / a >= b (1-s) sqrt3 / a for s > 1/2")
+d.quote("65-II-words", "(65)",
+        "so schwimmt es in aufrechter Lage labil, erreicht aber durch Drehung um jede beliebige horizontale Achse eine "
+        "schiefe stabile Lage", reading=(tan1 ** 2, -2 * V1 * hA / T1),
+        note="upright labile (h_A < 0) exactly when the tilt of (54) is real: tg^2 phi_1 = -2 V_1 h_A / T_1 > 0")
 d.quote("65-tan", "(65)", r"$$\operatorname{tg}^2 \varphi_1 = 24 \left(\frac{b}{a}\right)^2 s(1-s) - 2$$",
         reading=Eq(tan1 ** 2, 24 * (b / a) ** 2 * s * (1 - s) - 2))
 d.quote("65-III", "(65)",
@@ -547,6 +613,9 @@ d.step("immersion-height", Eq(xC, b * s + r * tanC), "definition",
        note="the water height on the dipping generator (xi = r) in the tilted equilibrium", result=xC)
 
 K2 = (2 * r / b) ** 2
+d.quote("cylinder-duhamel", "VI.B",
+        "also nach dem Duhamelschen Satze die Bedingung für eine stabile aufrechte Gleichgewichtslage",
+        reading=(sp.sign(hC), sp.sign(T1c / V1c - e1)), note="(18) for the cylinder")
 d.quote("cylinder-data", "VI.B", r"$$T_1 = \frac{\pi}{4} r^4 \quad F_1 = \pi r^2 \quad u_m = r \quad e_1 = \frac{b}{2} (1 - s)$$",
         reading=(sp.Matrix([T1c, F1c, e1]), sp.Matrix([pi / 4 * r ** 4, pi * r ** 2, b / 2 * (1 - s)])))
 d.quote("cylinder-condition", "VI.B",
@@ -565,6 +634,12 @@ d.quote("sqrt2", "VI.B",
         r"$$\frac{1}{2} \cdot \left(\frac{2r}{b}\right)^2 > 1 \text{ oder } \frac{2r}{b} > \sqrt{2} \text{ d. i. } > 1,4142.$$",
         reading=as_printed(lambda: (sp.sqrt((8 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.sqrt(2), sp.Rational("1.4142"))),
         tolerance=sp.Rational(1, 20000), note="the largest 8 s (1-s), at s = 1/2")
+d.quote("cylinder-every-density", "VI.B", "Diese Bedingung ist für jeden Wert von  $s$  (zwischen 0 und 1) erfüllt, wenn",
+        reading=(16 * s / b * hC, (K2 - 2) + 8 * (s - sp.Rational(1, 2)) ** 2),
+        note="the margin of (69), (2r/b)^2 - 8 s (1-s), is a sum of positive terms for every s when (2r/b)^2 > 2")
+d.quote("sqrt2-below", "VI.B", r"$\frac{2r}{b} < 1,4142$",
+        reading=(sp.sqrt((8 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.4142")),
+        tolerance=sp.Rational(1, 20000), note="the same bound sqrt 2, from below")
 _rootsC = sorted(sp.solve(Eq(8 * s * (1 - s), K2), s), key=lambda e: e.subs({r: 1, b: 4}))
 SC_lo, SC_hi = sp.symbols("s_-^C s_+^C")
 d.step("cylinder-density-upper", Eq(SC_hi, _rootsC[1]), "definition", note="sympy.solve", result=SC_hi)
@@ -593,7 +668,8 @@ d.quote("ex6-root", "Example 6", r"\sqrt{1 - \frac{1}{2} \cdot \left(\frac{2}{b}
         reading=(sp.sqrt(1 - (2 / b) ** 2 / 2).subs(sq_), sp.sqrt(sp.Rational(1, 2))),
         erratum=Erratum("transcription", "medium", r"\sqrt{1 - \frac{1}{2} \cdot \left(\frac{2r}{b}\right)^2} = \sqrt{0,50}",
                         "The same lost r as in ex6-ratio; with 2r/b = 1 the radicand is 1/2 as printed.",
-                        corrected_reading=as_printed(lambda: (sp.sqrt(1 - (2 * r / b) ** 2 / 2).subs(sq_), sp.sqrt(sp.Rational(1, 2))))))
+                        corrected_reading=as_printed(lambda: (sp.sqrt(1 - (2 * r / b) ** 2 / 2).subs(sq_), sp.sqrt(sp.Rational(1, 2)))),
+                        same_as="scheeffer-vi-ab/ex6-ratio"))
 sC_hi1, sC_lo1 = (e.subs(sq_) for e in (_rootsC[1], _rootsC[0]))
 for name, exc, val, printed, tol in (
         ("ex6-root-value", r"\sqrt{0,50} = 0,7071", 2 * sC_hi1 - 1, "0.7071", sp.Rational(1, 20000)),
@@ -604,11 +680,28 @@ for name, exc, val, printed, tol in (
     d.quote(name, "Example 6", exc, reading=(val, sp.Rational(printed)), tolerance=tol,
             note="2r = b: the density roots s_+, s_- of (71) (and 2 s_+ - 1, 2 s_+, 2 s_-)")
 
+d.quote("cylinder-turns", "VI.B",
+        "so ist der Cylinder in der aufrechten Lage labil und dreht sich um eine horizontale Achse, bis er in eine "
+        "stabile Gleichgewichtslage gelangt.", reading=(tanC ** 2, -2 * V1c * hC / T1c),
+        note="labile (h_C < 0) exactly when the tilted equilibrium is real: tg^2 phi_1 = -2 V_1 h_C / T_1")
 d.quote("72", "(72)", r"$$\text{Ist aber} \quad \frac{2r}{b} < \sqrt{8s(1-s)} \quad (72)$$",
         reading=((sp.sqrt(8 * s * (1 - s)) - 2 * r / b) * (sp.sqrt(8 * s * (1 - s)) + 2 * r / b), -16 * s / b * hC))
 d.quote("cylinder-data-72", "VI.B", r"$$F_1 = \pi r^2 \quad T_1 = \frac{\pi r^4}{4} \quad u_m = r$$",
         reading=(sp.Matrix([F1c, T1c]), sp.Matrix([pi * r ** 2, pi * r ** 4 / 4])))
 Bc = b / (2 * r)
+d.quote("72a-cited", "VI.B", "Diese ist durch die Bedingungen 55 bestimmt, wenn darin",
+        reading=(tanC ** 2, sp.Piecewise(((b * (1 - s) / r) ** 2, s > sp.Rational(1, 2)), ((b * s / r) ** 2, True))),
+        note="read as: the tilt the cited (55) determines with u_m = r (it bounds tg phi_1 only; read at its bound) "
+             "is the tilt of the cylinder's oblique equilibrium, whose tg^2 the next display gives",
+        erratum=Erratum("misprint", "low", r"\text{Diese ist durch die Bedingungen 54 und 55 bestimmt}",
+                        "The tilt tg^2 phi_1 = 16 (b/2r)^2 s(1-s) - 2 of the next display is (54), tg^2 phi_1 = "
+                        "F_1 b^2 s(1-s)/T_1 - 2, with F_1 = pi r^2, T_1 = pi r^4/4; (55) contains neither F_1 nor T_1 "
+                        "and only bounds the tilt (the second line of (72a), with u_m = r). For the triangular prism "
+                        "the text cites rightly 'aus 54 und 55' (before (60)); here 54 is missing, and again in VI.C "
+                        "('wenn die Bedingungen 55 erfüllt sind', then F_1 b^2 s(1-s)/T_1). Low: the author may have "
+                        "meant the pair (54), (55) by 'Bedingungen 55'; the print, not the scan (a number dropped "
+                        "from a reference).",
+                        corrected_reading=(tanC ** 2, F1c * b ** 2 * s * (1 - s) / T1c - 2)))
 d.quote("72a-tan", "(72a)", r"$$\text{tg}^2 \varphi_1 = 16 \left( \frac{b}{2r} \right)^2 \cdot s (1-s) - 2$$",
         reading=Eq(tanC ** 2, 16 * Bc ** 2 * s * (1 - s) - 2))
 d.quote("72a", "(72a)",
@@ -657,11 +750,30 @@ for name, exc, val, printed in (("ex7-range-lower", "zwischen 0,146", sC_lo1, "0
                  "cylinder floats upright stably, above 0.155 the lower base emerges before the tilted "
                  "equilibrium is reached")
 
+d.quote("ex7-both", "Example 7", r"$$8s(1-s) > 1 \quad \text{und} \quad 1 > 2s(4-5s)$$",
+        reading=(sp.Matrix([8 * s * (1 - s) - 1, 1 - 2 * s * (4 - 5 * s)]),
+                 sp.Matrix([full(-16 * s / b * hC).subs(sq_), full((LbotC ** 2 - tanC ** 2) * K2 / 2).subs(sq_)])),
+        note="margins of (73) at 2r = b, as the line before")
+for name, exc, val, printed in (
+        ("ex7-either", r"$$\text{also entweder } s > 0,4 + \sqrt{0,06}$$", s_b[1],
+         as_printed(lambda: sp.Rational(4, 10) + sp.sqrt(sp.Rational(6, 100)))),
+        ("ex7-or", r"$$\text{oder } s < 0,4 - \sqrt{0,06}$$", s_b[0],
+         as_printed(lambda: sp.Rational(4, 10) - sp.sqrt(sp.Rational(6, 100))))):
+    d.quote(name, "Example 7", exc, reading=(val, printed),
+            note="the roots of 1 = 2 s (4 - 5 s) (the bottom limit met, 2r = b), between which the margin is negative")
+for name, exc, val, printed in (("ex7-not", r"$s > 0,645$", s_b[1], "0.645"), ("ex7-only", r"$s < 0,155$", s_b[0], "0.155")):
+    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=sp.Rational(1, 2000),
+            note="the roots 0.4 -+ sqrt 0.06 rounded; s > 0.645 contradicts s < 1/2")
 # Example 8
 ex8 = {r: 30, b: 40, s: sp.Rational(3, 4)}
 d.quote("ex8-values", "Example 8",
         r"\left(\frac{2r}{b}\right)^2 = \frac{9}{4} \text{ und } 8s(1-s) = \frac{3}{2}",
         reading=as_printed(lambda: (sp.Matrix([K2.subs(ex8), (8 * s * (1 - s)).subs(ex8)]), sp.Matrix([sp.Rational(9, 4), sp.Rational(3, 2)]))))
+d.quote("ex8-test", "Example 8", r"$$\text{ob } \left(\frac{2r}{b}\right)^2 \geq 8s(1-s) \text{ ist.}$$",
+        reading=(K2 - 8 * s * (1 - s), 16 * s / b * hC), note="margin of (69): 16 s/b times the metacentric height")
+d.quote("ex8-therefore", "Example 8", r"$$\text{folglich } \left(\frac{2r}{b}\right)^2 > \frac{3}{2}$$",
+        reading=at_data(K2 - sp.Rational(3, 2), 16 * s / b * hC, ex8),
+        note="at 2r = 60, b = 40, s = 3/4 the printed margin 9/4 - 3/2 is 16 s/b h_C > 0")
 d.quote("ex8-claim", "Example 8",
         "Der Cylinder schwimmt also in aufrechter Lage stabil und hat unter den angegebenen Bedingungen weiter "
         "keine Gleichgewichtslage.",
@@ -674,8 +786,16 @@ ex9 = {r: 15, b: 40, s: sp.Rational(4, 5)}
 d.quote("ex9-values", "Example 9",
         r"\frac{2r}{b} = \frac{3}{4}, \quad \left(\frac{2r}{b}\right)^2 = \frac{9}{16} \quad 8s(1-s) = 8 \cdot 0,8 \cdot 0,2 = \frac{32}{25}",
         reading=as_printed(lambda: (sp.Matrix([2 * r / b, K2, 8 * s * (1 - s)]).subs(ex9), sp.Matrix([sp.Rational(3, 4), sp.Rational(9, 16), sp.Rational(32, 25)]))))
+d.quote("ex9-labile-margin", "Example 9", r"$$\text{also } \left(\frac{2r}{b}\right)^2 < 8s(1-s)$$",
+        reading=at_data(8 * s * (1 - s) - K2, -16 * s / b * hC, ex9),
+        note="at 2r = 30, b = 40, s = 0.8: 32/25 - 9/16 = -16 s/b h_C > 0")
+d.quote("ex9-labile", "Example 9", "d. h. der Cylinder schwimmt aufrecht labil.",
+        reading=(sp.sign(sp.Subs(hC, tuple(ex9), tuple(ex9.values()))), -1), note="h_C < 0 at the data")
 d.quote("ex9-bound", "Example 9", r"$$2(1-s) \cdot (5s-1) = 2 \cdot 0,2 \cdot 3 = 1,2$$",
         reading=as_printed(lambda: ((2 * (1 - s) * (5 * s - 1)).subs(ex9), sp.Rational(6, 5))))
+d.quote("ex9-beyond", "Example 9", r"$$\text{also } \left(\frac{2r}{b}\right)^2 < 2(1-s)(5s-1)$$",
+        reading=at_data(2 * (1 - s) * (5 * s - 1) - K2, -(LtopC ** 2 - tanC ** 2) * K2 / 2, ex9),
+        note="margin of (73): the tilted equilibrium lies beyond the top limit")
 d.quote("ex9-claim", "Example 9",
         "Der Cylinder hat also bei nicht eintauchender oberer Grundfläche keine stabilen Gleichgewichtslage.",
         reading=as_printed(lambda: (sp.Matrix([sp.sign(hC_e.subs(ex9)), sp.sign((LtopC_e - tanC_e).subs(ex9))]), sp.Matrix([-1, -1]))),
@@ -693,6 +813,25 @@ d.quote("ex10-ratio-2", "Example 10",
 d.quote("ex10-product-2", "Example 10", r"8s \cdot (1-s) = \frac{16 \cdot 3 \cdot 25}{25^2} = \frac{16 \cdot 75}{25^2}",
         reading=((8 * s * (1 - s)).subs(ex10), *as_printed(lambda: (sp.Integer(16) * 3 * 25 / sp.Integer(25) ** 2,
                                                           sp.Integer(16) * 75 / sp.Integer(25) ** 2))))
+d.quote("ex10-labile-margin", "Example 10", r"folgl.  $\left(\frac{2r}{b}\right)^2 < 8s(1-s)$",
+        reading=at_data(8 * s * (1 - s) - K2, -16 * s / b * hC, ex10),
+        note="at 2r = 3.2, b = 2.5, s = 0.6: 1200/625 - 1024/625 = -16 s/b h_C > 0")
+d.quote("ex10-labile", "Example 10", "Der Cylinder schwimmt also aufrecht labil.",
+        reading=(sp.sign(sp.Subs(hC, tuple(ex10), tuple(ex10.values()))), -1), note="h_C < 0 at the data")
+d.quote("ex10-test", "Example 10", r"ob  $\left(\frac{2r}{b}\right)^2 \geq 2(1-s)(5s-1)$  ist",
+        reading=at_data(K2 - 2 * (1 - s) * (5 * s - 1), (LtopC ** 2 - tanC ** 2) * K2 / 2, ex10),
+        note="margin of (73) at the data: positive, the tilted equilibrium lies within the top limit")
+d.quote("ex10-roots", "Example 10", r"oder  $\frac{32}{25} \geq \sqrt{1,6}$",
+        reading=at_data(as_printed(lambda: sp.Rational(32, 25) - sp.sqrt(sp.Rational(16, 10))),
+                        (LtopC ** 2 - tanC ** 2) * K2 / 2 / (2 * r / b + sp.sqrt(2 * (1 - s) * (5 * s - 1))), ex10),
+        note="the margin of (73) over 2r/b + sqrt(2(1-s)(5s-1)) is 2r/b - sqrt(2(1-s)(5s-1)) = 32/25 - sqrt 1.6")
+d.quote("ex10-within", "Example 10", r"also  $\left(\frac{2r}{b}\right)^2 > 2(1-s)(5s-1)$",
+        reading=at_data(K2 - 2 * (1 - s) * (5 * s - 1), (LtopC ** 2 - tanC ** 2) * K2 / 2, ex10))
+d.quote("ex10-oblique", "Example 10", "Der Cylinder hat also eine schiefe stabile Gleichgewichtslage.",
+        reading=(sp.Matrix([sp.sign(sp.Subs(tanC ** 2, tuple(ex10), tuple(ex10.values()))),
+                            sp.sign(sp.Subs(LtopC - tanC, tuple(ex10), tuple(ex10.values())))]), sp.Matrix([1, 1])),
+        note="a real tilt (tg^2 phi_1 > 0) within the top limit; the tilted position of an isotropic base is stable "
+             "(IV (43))")
 d.quote("ex10-bound", "Example 10", r"\left(\frac{32}{25}\right)^2 \geq 2 \cdot 0,4 \cdot 2",
         reading=as_printed(lambda: (sp.Rational(32, 25) ** 2 - sp.Rational(8, 5), (K2 - 2 * (1 - s) * (5 * s - 1)).subs(ex10))))
 d.quote("ex10-decimal", "Example 10", r"\frac{32}{25} = 1,28", reading=(printed_fraction(32, 25), printed_fraction(128, 100)))
@@ -715,8 +854,20 @@ d.quote("ex10-angle", "Example 10", r"Die Ausführung der Rechnung ergibt angen�
                         "arctg(11/32) to the second (18 deg 58' 13.5''): the root was not taken. The limit "
                         "tg phi_1 <= 2(1-s) b/(2r) = 0.625 still holds, so the position exists.",
                         corrected_reading=(phi10, DMS(30, 22, 59))))
+BS_EVIDENCE = ("The upright draught of the cylinder is b s, height times specific gravity (Archimedes: pi r^2 b s "
+               "= weight; IV, after (53a): 'b s nun die Höhe des ... unter dem Wasserspiegel befindlichen "
+               "Körperteils'); 'b_s' is defined nowhere, and the next line uses 1,5 = 2,5 * 0,6 = b s. The scan set "
+               "the s as a subscript (medium: a printer's subscript is not excluded).")
+d.quote("upright-draught", "Example 10", r"In der aufrechten Schwimmlage ist diese  $b_s$",
+        reading=(V1c / F1c, bs_), note="diese: the height to which the side surface is immersed; upright V_1/F_1",
+        erratum=Erratum("transcription", "medium", r"b s \; (= b \cdot s)",
+                        "The same 'b_s' for b s as in the formula x = b_s + r tg phi (x-formula). " + BS_EVIDENCE,
+                        corrected_reading=(V1c / F1c, b * s), same_as="scheeffer-vi-ab/x-formula"))
 d.quote("x-formula", "Example 10", r"x &= b_s + r \operatorname{tg} \varphi",
-        reading=Eq(xC, b * s + r * tanC), note="'b_s' is the OCR of b s (the text says 'diese b s', the draught)")
+        reading=Eq(xC, bs_ + r * tanC),
+        note="phi: the tilt of the equilibrium, phi_1 (the formula holds for every tilt of the first region)",
+        erratum=Erratum("transcription", "medium", r"x = b s + r \operatorname{tg} \varphi", BS_EVIDENCE,
+                        corrected_reading=Eq(xC, b * s + r * tanC)))
 x10 = (b * s + r * tanC_e).subs(ex10)
 cons = "follows from the angle of ex10-angle: r tg phi_1 = 1.6 * 11/32 = 0.55 with the unrooted tangent"
 d.quote("ex10-x-sum", "Example 10", r"x &= 1,5 + 0,55", reading=(x10, sp.Rational("1.5") + sp.Rational("0.55")),
@@ -731,6 +882,14 @@ d.quote("ex10-fraction", "Example 10", r"$\frac{x}{b} = \frac{2,05}{2,50} = \fra
         reading=(x10 / sp.Rational(5, 2), sp.Rational(41, 50)), tolerance=sp.Rational(1, 100),
         erratum=Erratum("consequential", "high", r"\frac{x}{b} = \frac{2,44}{2,50} = \frac{49}{50} (0.9752)",
                         cons + "; x/b = 2.438/2.5 = 0.9752", corrected_reading=(x10 / sp.Rational(5, 2), sp.Rational(49, 50))))
+d.quote("ex10-deepest", "Example 10",
+        r"Der am tiefsten eintauchende Teil der Mantelhöhe beträgt also  $\frac{41}{50}$",
+        reading=(x10 / sp.Rational(5, 2), sp.Rational(41, 50)), tolerance=sp.Rational(1, 100),
+        erratum=Erratum("consequential", "high", r"\frac{49}{50} \; (0{,}9752)",
+                        "The x/b = 41/50 of the line before (ex10-fraction) repeated in words; " + cons
+                        + "; x/b = 2.438/2.5 = 0.9752",
+                        corrected_reading=(x10 / sp.Rational(5, 2), sp.Rational(49, 50)),
+                        same_as="scheeffer-vi-ab/ex10-fraction"))
 d.quote("ex10-dry", "Example 10", r"der kürzeste über dem Wasser befindliche Teil  $\frac{9}{50}$",
         reading=(1 - x10 / sp.Rational(5, 2), sp.Rational(9, 50)), tolerance=sp.Rational(1, 100),
         erratum=Erratum("consequential", "high", r"\frac{1}{50} (0.0248)", cons + "; 1 - 0.9752 = 0.0248",
@@ -1061,7 +1220,7 @@ cw("example-10-angle", "equilibrium tilt of the cylinder by quadrature, degrees"
    lambda c, dps: ex10c(dps)[0])
 cw("example-10-x", "water height on the dipping generator (quadrature)", ("ex10-x-sum", "ex10-x"), one,
    lambda c, dps: ex10c(dps)[1])
-cw("example-10-fraction", "the same over b", ("ex10-fraction",), one, lambda c, dps: ex10c(dps)[1] / mpmath.mpf("2.5"))
+cw("example-10-fraction", "the same over b", ("ex10-fraction", "ex10-deepest"), one, lambda c, dps: ex10c(dps)[1] / mpmath.mpf("2.5"))
 cw("example-10-dry", "the part above water, over b", ("ex10-dry",), one, lambda c, dps: 1 - ex10c(dps)[1] / mpmath.mpf("2.5"))
 cw("example-10-dry-cm", "the part above water in cm", ("ex10-dry-cm",), one,
    lambda c, dps: 100 * (mpmath.mpf("2.5") - ex10c(dps)[1]))
