@@ -228,15 +228,30 @@ d.quote("simpson-rule", "§2 Simpson's rule", r"$$I = m \{ a + 4b + 2c + 4d + 2e
 
 # the claims in words
 Y = [sp.Symbol(f"y_{i}", positive=True) for i in range(7)]
+SIMPSON_AREAS = (m / 3 * sum(w * y for w, y in zip(simpson_weights(6), Y))).xreplace(dict(zip(Y, A_sec)))
 d.quote("simpson-identical", "§2 Simpson's rule",
         r"Diese Formel ist mit der Simpson'schen Formel zur Berechnung von Flächen, die von einer Curve "
         r"eingeschlossen sind, identisch, mit dem Unterschiede, dass dort die Grössen a, b, c etc. die Ordinaten "
         r"der begränzenden Curve bedeuten, während sie hier die Areale der Theilungsebenen bezeichnen.",
-        reading=(I, (m / 3 * sum(w * y for w, y in zip(simpson_weights(6), Y))).xreplace(dict(zip(Y, A_sec)))),
+        reading=(3 * simp_3, SIMPSON_AREAS),
+        erratum=Erratum("claim", "high",
+                        r"I = \frac{m}{3}\{a + 4b + 2c + 4d + 2e + 4f + g\} \text{ is identical with Simpson's rule; "
+                        r"the printed } I = m\{\dots\} \text{ is three times it}",
+                        "'Diese Formel' is the one printed just above, I = m {a + 4b + 2c + 4d + 2e + 4f + g}. "
+                        "Simpson's rule for the ordinates y_0, ..., y_6 at the spacing m is "
+                        "m/3 (y_0 + 4y_1 + 2y_2 + 4y_3 + 2y_4 + 4y_5 + y_6); with the ordinates replaced by the "
+                        "section areas the printed formula is three times it, not identical with it (y = x^2 "
+                        "on [0, 6], m = 1: the area is 72, Simpson's rule gives 216/3 = 72, the printed form "
+                        "216; a prism of constant section A and length 6m: 6mA, printed 18mA). The sentence "
+                        "holds for the formula derived with the factor 1/3 of the prismatoid formula, which "
+                        "the print lost at I' (erratum 'slab-a-c', misprint, high) and carried down to "
+                        "'simpson-rule'; the claim fails only through that factor, so it is the author's "
+                        "statement about his misprinted line, not a fault of the scan. High: the printed "
+                        "factor m and Simpson's m/3 are both unambiguous.",
+                        corrected_reading=(I, simp_3, SIMPSON_AREAS)),
         note="Simpson's rule for the area under a curve with the ordinates y_0, …, y_6 at spacing m, "
              "m/3 (y_0 + 4y_1 + 2y_2 + … + y_6), with the ordinates replaced by the section areas, is the "
-             "derived volume. 'Diese Formel' is the derived one; its printed factor m (for m/3) is the "
-             "erratum of 'simpson-rule'.")
+             "derived volume; the printed formula m {…} is three times it.")
 d.quote("odd-number-of-sections", "§2 Simpson's rule",
         r"Das Gesetz der Coefficienten ist einleuchtend und kann die Formel beliebig ausgedehnt werden, nur muss "
         r"die Zahl der Theilungsebenen immer eine ungrade sein, damit man eine grade Zahl von Körpertheilen erhält.",

@@ -502,6 +502,19 @@ d.step("elliptic-body-paraboloid", Eq(X_pc, sp.Integral(u * 2 * p * pi * (h - u)
 d.step("elliptic-body-as-paraboloid", (X_eb, X_pc), "integration",
        uses=("elliptic-body-centroid", "elliptic-body-paraboloid"))
 
+# the generator through b (ordinate y at the abscissa x, height 0), b' (ordinate y', height h/m) and c (on EF)
+gen_b, gen_bp, gen_c = sp.Matrix([x, y, 0]), sp.Matrix([x, yp, h / m]), sp.Matrix([x, 0, h])
+d.quote("elliptic-body-generator", "§4 elliptic body, triangular sections",
+        r"so ist  $b'b'c$  eine grade Linie, laut Voraussetzung",
+        unreadable="b'b'c names the point b' twice: a 'line' through b', b' and c says nothing",
+        erratum=Erratum("transcription", "medium", r"b b' c \text{ eine grade Linie}",
+                        "The sentence joins b with b' and extends the line to c; the straight line of the "
+                        "hypothesis (the generator cb of the body) is b b' c, which the similar triangles of "
+                        "the next line use (ab = y at height 0, a'b' = y' at h/m, c at h). The doubled b' "
+                        "names no line: a b read as b' next to the b' that follows; medium, since the print "
+                        "cannot be seen. Checked: b, b', c collinear in the coordinates of the construction "
+                        "(abscissa, ordinate, height).",
+                        corrected_reading=((gen_bp - gen_b).cross(gen_c - gen_b), sp.zeros(3, 1))))
 d.quote("elliptic-body-ratio", "§4 elliptic body, triangular sections",
         r"$$y : y' = h : h - \frac{h}{m} \text{ also}$$", reading=(y / yp, h / (h - h / m)))
 d.quote("elliptic-body-y", "§4 elliptic body, triangular sections", r"$y = \frac{y'}{1 - \frac{1}{m}}$",
@@ -581,14 +594,28 @@ d.quote("triaxial-stump-axes-G", "§4 triaxial ellipsoid stump",
         r"(m A)^2 &= \frac{c^2}{a^2} \{ a^2 - x^2 \}, (m G)^2 = \frac{b^2}{a^2} \{ a^2 - x^2 \}",
         reading=as_printed(lambda: (sp.Matrix(half_axes(x)).applyfunc(lambda e: e ** 2),
                  sp.Matrix([c ** 2 / a ** 2 * (a ** 2 - x ** 2), b ** 2 / a ** 2 * (a ** 2 - x ** 2)]))))
+A_point, p_point = sp.Matrix([x, half_axes(x)[0]]), sp.Matrix([ts_mid, 0])   # A and p in the plane NMR
 d.quote("triaxial-stump-axes-D", "§4 triaxial ellipsoid stump",
         r"(A p)^2 &= \frac{c^2}{a^2} \left\{ a^2 - \frac{(x + x')^2}{4} \right\}, (p E)^2 = \frac{b^2}{a^2} "
         r"\left\{ a^2 - \frac{(x + x')^2}{4} \right\}",
-        reading=(sp.Matrix(half_axes(ts_mid)).applyfunc(lambda e: e ** 2),
+        reading=(sp.Matrix([(A_point - p_point).dot(A_point - p_point), half_axes(ts_mid)[1] ** 2]),
                  sp.Matrix([c ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4),
                             b ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4)])),
-        note="the half axis is named 'A p' here but 'Q p' in the text ('p Q') and in D = Q p. E p. pi: a "
-             "slip of the label only (print or scan), the value is that of Q p and is right")
+        erratum=Erratum("misprint", "medium",
+                        r"(Q p)^2 = \frac{c^2}{a^2} \left\{ a^2 - \frac{(x + x')^2}{4} \right\}",
+                        "The half great axes are named m A, p Q, o D in the text before the display, and the "
+                        "middle section is D = Q p. E p. pi after it: the first member of the middle line is "
+                        "(Q p)^2, the ordinate of the ellipse NMR at n p = (x + x')/2. A is the end of the half "
+                        "axis m A of the base AB, at the abscissa x: as printed, (A p)^2 is the squared slant "
+                        "distance from A to p, ((x' - x)/2)^2 + c^2/a^2 (a^2 - x^2) (read in the plane NMR), "
+                        "not the value printed. The value is right, the label contradicts both neighbours. "
+                        "Booked as the print's: the rest of the display is letter-perfect, and an existing "
+                        "letter of the figure in the wrong place (the A of '(m A)' in the line above) is a "
+                        "compositor's kind of slip; the scan cannot be excluded: medium.",
+                        corrected_reading=(sp.Matrix(half_axes(ts_mid)).applyfunc(lambda e: e ** 2),
+                                           sp.Matrix([c ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4),
+                                                      b ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4)]))),
+        note="read with the printed label: A = (x, mA) and p = ((x + x')/2, 0) in the plane of the ellipse NMR")
 d.quote("triaxial-stump-axes-g", "§4 triaxial ellipsoid stump",
         r"(o D)^2 &= \frac{c^2}{a^2} \{ a^2 - x'^2 \}, (o F)^2 = \frac{b^2}{a^2} \{ a^2 - x'^2 \}.",
         reading=as_printed(lambda: (sp.Matrix(half_axes(xp)).applyfunc(lambda e: e ** 2),
