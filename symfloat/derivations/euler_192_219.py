@@ -382,9 +382,16 @@ d.step("quad-K-excess", (K - Dk * (a + c) ** 2 / 12, Dk * (c - a) ** 2 / 36), "a
 d.quote("quad-L-again", "§218", r"inuentum sit $= \frac{D(aa-ac+cc)}{3}$",
         reading=(Lk, Dk * (a * a - a * c + c * c) / 3),
         note=claim("the moment about ef was found to be D(a² − ac + c²)/3."))
-d.quote("Cc-again", "§218", r"$Cb = \frac{c-a}{3}$", reading=(Cc, (c - a) / 3),
-        note=claim("EF lies at the distance (c − a)/3 from ef. The transcription prints Cb; the figure has no "
-                   "point b and the distance meant is Cc (read so)."))
+d.quote("Cc-again", "§218", r"$Cb = \frac{c-a}{3}$",
+        unreadable="Cb names no distance of Tab. IX fig. 2: b is the length ce (§216), the figure has no point b",
+        erratum=Erratum(
+            "transcription", "medium", r"Cc = \frac{c-a}{3}",
+            "The distance of the true latitudinal axis EF from ef is Cc, from the centroid C to the foot c of "
+            "ef: Cc = (Bc - Ac)/3 = (c - a)/3 (§215), and §217's rule L - 2D·Cc^2 is what the paragraph "
+            "applies next. The 'Cb' for Cc of the centroid equation of §215 ('centroid-equation'), read so by "
+            "the scan at this place too.",
+            corrected_reading=(Cc, (c - a) / 3), same_as="euler-192-219/centroid-equation"),
+        note=claim("EF lies at the distance Cc = (c − a)/3 from ef."))
 d.quote("quad-K", "§218",
         "EF $= \\frac{D(aa-ac+cc)}{3} -$\n $\\frac{2D(c-a)^2}{9} = \\frac{D(aa+ac+cc)}{9} = \\frac{D(a+c)^2}{12} "
         "+ \\frac{D(c-a)^2}{36} = \\frac{D \\cdot AB^2}{12} + \\frac{D \\cdot Ce^2}{4}$",
