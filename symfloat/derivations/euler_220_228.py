@@ -555,7 +555,19 @@ d.quote("moment-grows", "§228",
         "punto axis AB medio C distet, ceteris paribus",
         reading=(sp.Derivative(KEFc, c), c * D / 4),
         note=claim("the moment about EF grows as ef moves away from the middle of AB (the text says 'C', the "
-                   "middle is O): at fixed a, b, D its derivative in c = Oc is cD/4 > 0."))
+                   "middle is O, booked at 'middle-named-C'): at fixed a, b, D its derivative in c = Oc is "
+                   "cD/4 > 0."))
+d.quote("middle-named-C", "§228", r"a punto axis AB medio C distet",
+        reading=(ACc, sp.Subs((xLc + xRc) / 2, y, 0)),
+        erratum=Erratum(
+            "transcription", "medium", r"\text{a puncto axis AB medio } O \text{ distet}",
+            "The midpoint of AB is O (§220: 'existente O puncto axis longitudinalis medio'; the same paragraph "
+            "ends 'a medio punto longitudinis O'), at AO = a; C is the centroid of the figure, at AC = a - c/4 "
+            "(§227), which is not the midpoint for c > 0: read as printed, C would be the midpoint of AB, "
+            "(x_A + x_B)/2 at y = 0. The moment AB²D/8 + ccD/8 grows with Oc = c, the distance of ef from O. "
+            "O and C are alike in the scan; medium.",
+            corrected_reading=(sp.Subs((xLc + xRc) / 2, y, 0), a)),
+        note=claim("the middle of the axis AB, from which the distance of ef is counted, is O (AO = a)."))
 d.quote("curve-c-again", "§228", r"$a = a - \frac{cyy}{bb} + \frac{c}{b}$ $V(bb-yy)$",
         reading=Eq(a, a - c * y ** 2 / b ** 2 + c / b * R),
         erratum=Erratum(
