@@ -853,7 +853,7 @@ for name, locator, excerpt in (
             reading=(SAB / M + OG, EF ** 2 * Dw / (V * V)),
             erratum=Erratum("transcription", "medium", r"\frac{EF^2.D}{\mu V}",
                             "The quantity whose excess over OG is the stability about AB is EF²D/(μV) (§239: "
-                            "M(EF²D/(μV) − OG)). Read with v as the volume V (as in §239–243), 'vv' makes it "
+                            "M(EF²D/(μV) − OG)). Read with v as the volume V (the module's reading of §239–243), 'vv' makes it "
                             "EF²D/V², not even a length. The v stands for μ, the confusion of μ, ν and v booked "
                             "at §243's EF²/(v·CD) ('stability-CD'); with V = D·CD the quantity becomes "
                             "EF²/(μ·CD) there.",
