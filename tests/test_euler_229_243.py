@@ -95,6 +95,8 @@ EXPECTED_ERRATA = {
     ("excess-maximal", "transcription", "medium"),   # §242 EF²D/vv for EF²D/(μV)
     ("excess-notable", "transcription", "medium"),
     ("excess-estimate", "transcription", "medium"),  # §243
+    ("EF-condition-241", "transcription", "low"),    # §241 ν for μ, as at stability-AB-241
+    ("AB-condition-241", "transcription", "low"),    # §241 μ for ν and a stray D'
 }
 
 # Faults of the second review: (printed name, kind, line of the transcription, the wrong piece, the erratum
@@ -109,6 +111,8 @@ SECOND_PASS = [
     ("excess-maximal", "transcription", 292, "{vv}", "stability-CD"),
     ("excess-notable", "transcription", 292, "{vv}", "stability-CD"),
     ("excess-estimate", "transcription", 294, "{vv}", "stability-CD"),
+    ("EF-condition-241", "transcription", 288, r"{\nu v}", "stability-AB-241"),
+    ("AB-condition-241", "transcription", 288, "D'", "stability-AB-241"),
 ]
 
 

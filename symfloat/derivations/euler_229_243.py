@@ -83,7 +83,8 @@ al = sp.Symbol("alpha", positive=True)   # the α it prints for a
 c1, c2 = sp.symbols("c_1 c_2", real=True)
 Ys = sp.Symbol("Y", real=True)           # the value Y(y) of the function at one ordinate
 n1, k1 = sp.symbols("n_1 kappa_1", positive=True)
-zl = sp.Symbol("z", positive=True)      # the letter z the transcription prints for the digit 2 of '2D'
+zl = sp.Symbol("z", positive=True)
+Dprime = sp.Symbol("D'", positive=True)   # the stray D' of §241      # the letter z the transcription prints for the digit 2 of '2D'
 aY, bY, gY = sp.symbols("alpha_Y beta_Y gamma_Y", positive=True)   # the coefficients of §231's Y
 
 
@@ -178,7 +179,7 @@ DERIVATION = d = Derivation(
             c1: (-1, 1), c2: (-1, 1), Ys: (-1, 1), y: (0, 1), s: (0, 1), m: (0, 1),
             n1: (1, 8), k1: (sp.Rational(1, 10), 1),
             M: (1, 5), V: (1, 5), OG: (0, 2), EF: (1, 3), AB: (3, 12), Dw: (1, 10), CD: (1, 3),
-            mu: (6, 12), nu: (6, 12), zl: (1, 3), aY: (1, 2), bY: (1, 2), gY: (1, 2)},
+            mu: (6, 12), nu: (6, 12), zl: (1, 3), Dprime: (1, 10), aY: (1, 2), bY: (1, 2), gY: (1, 2)},
     assumptions=("a, b, c > 0; the exponents n > 0 and κ > 0 (the integrals converge); 0 < y < b",
                  "Y(y) is sampled as c_1 yⁿ/bⁿ + c_2 y²ⁿ/b²ⁿ (a function vanishing at y = 0, of the kind §231 "
                  "allows); the rules derived for it are linear or quadratic in Y and hold termwise",
@@ -791,6 +792,24 @@ d.quote("EF-exceeds-AB", "§241", r"$\frac{EF^2.D}{\nu v} > OG$ multo magis erit
         reading=(sp.Subs(AB ** 2 * Dw / (mu * V) - EF ** 2 * Dw / (nu * V), nu, mu), Dw * (AB ** 2 - EF ** 2) / (mu * V)),
         note=claim("if the quantity for AB exceeds OG, the one for EF does so much more, AB being much longer than "
                    "EF: at μ = ν (the numbers 'differ little') the excess is D(AB² − EF²)/(μV) > 0 (D' read as D)."))
+NU_FOR_MU = "euler-229-243/stability-AB-241"
+d.quote("EF-condition-241", "§241", r"cum enim fuerit $\frac{EF^2.D}{\nu v} > OG$",
+        reading=(SAB / M + OG, EF ** 2 * Dw / (nu * V)),
+        erratum=Erratum("transcription", "low", r"\frac{EF^2.D}{\mu V} > OG",
+                        "The stability about AB is positive when EF²D/(μV) exceeds OG (§239); §241 writes ν for "
+                        "the number of the longitudinal moment here, the swap of μ and ν booked at its first "
+                        "place ('stability-AB-241', low: consistent through §241, so perhaps the print's).",
+                        corrected_reading=(SAB / M + OG, EF ** 2 * Dw / (mu * V)), same_as=NU_FOR_MU),
+        note=claim("the condition for stability about AB is EF²D/(μV) > OG."))
+d.quote("AB-condition-241", "§241", r"multo magis erit $\frac{AB^2.D'}{\mu v} > OG$",
+        reading=(SEF / M + OG, AB ** 2 * Dprime / (mu * V)),
+        erratum=Erratum("transcription", "low", r"\frac{AB^2.D}{\nu V} > OG",
+                        "About EF the number is ν (§238: K = AB²D/ν); §241 writes μ, the swap of μ and ν booked "
+                        "at 'stability-AB-241'. The prime of D' is the scan's: D (half the waterplane area) "
+                        "carries none anywhere else, and the same fraction is printed with D in the next "
+                        "sentence.",
+                        corrected_reading=(SEF / M + OG, AB ** 2 * Dw / (nu * V)), same_as=NU_FOR_MU),
+        note=claim("the condition for stability about EF is AB²D/(νV) > OG."))
 d.quote("ratio-16", "§241", r"$\frac{AB^2.D}{\mu v}$ circiter decies et sexies maius fit quam $\frac{EF^2.D}{\nu v}$",
         reading=(sp.Subs((AB ** 2 * Dw / (mu * V)) / (EF ** 2 * Dw / (nu * V)), (AB, nu), (4 * EF, mu)), 16),
         note=claim("with AB = 4EF and μ ≈ ν the quantity for EF is about 16 times that for AB (read at μ = ν)."))
