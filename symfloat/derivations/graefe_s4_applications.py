@@ -23,7 +23,7 @@ import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.witness import Case, PlaneSections, SectionIntegral
+from symfloat.engine.witness import Case, Computed, PlaneSections, SectionIntegral
 from symfloat.model.claim import as_printed
 
 u, t, xi, P, eta = sp.symbols("u t xi P eta", real=True)
@@ -664,3 +664,70 @@ d.quote("three-eighths", "§4 half triaxial ellipsoid",
 sections_witness("half-triaxial", "centroid of the half triaxial ellipsoid from its elliptic sections",
                  ("half-triaxial",), area_ht, a,
                  ("a = 5, b = 3, c = 2", {a: 5, b: 3, c: 2}), ("a = 3, b = 2, c = 1", {a: 3, b: 2, c: 1}))
+
+# ---- the section areas themselves, by quadrature of their chords (sections named by the text) ------------------
+# each section at distance P from the centre (or height P above the base) is measured across its chords; the
+# positions are those of the construction (poles, centre, the midpoint between base and pole)
+SPHERE_CASES = (("r = 3", {r: 3}), ("r = 7/2", {r: sp.Rational(7, 2)}))
+planes_witness("sphere-sections-areas", "sections of the sphere at both poles and at the centre",
+               ("sphere-sections",), round_sections(r ** 2 - P ** 2), (r, -r, 0),
+               lambda A, q: (A[0], A[1], A[2], 2 * q[r]), *SPHERE_CASES)
+planes_witness("hemisphere-sections-areas", "sections of the sphere at the pole, the centre and half the radius",
+               ("hemisphere-sections",), round_sections(r ** 2 - P ** 2), (r, 0, r / 2),
+               lambda A, q: tuple(A), *SPHERE_CASES)
+SEGMENT_CASES = (("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
+planes_witness("segment-1-D-area", "section of the sphere halfway between the base (distance m) and the pole",
+               ("segment-1-D",), round_sections(r ** 2 - P ** 2), ((r + m) / 2,), lambda A, q: A[0],
+               *SEGMENT_CASES)
+SEGMENT2_CASES = (("r = 5, x = 1, x' = 3", {r: 5, x: 1, xp: 3}),
+                  ("r = 9/2, x = 1/2, x' = 4", {r: sp.Rational(9, 2), x: sp.Rational(1, 2), xp: 4}))
+planes_witness("segment-2-radii-areas", "sections of the sphere at x, x' and halfway between",
+               ("segment-2-radii",), round_sections(r ** 2 - P ** 2), (x, xp, (x + xp) / 2),
+               lambda A, q: tuple(area / mpmath.pi for area in A), *SEGMENT2_CASES)
+ELLIPSOID_SEGMENT_CASES = (("a = 5, b = 3, x = 1", {a: 5, b: 3, x: 1}), ("a = 4, b = 1, x = 2", {a: 4, b: 1, x: 2}))
+planes_witness("ellipsoid-segment-D-area", "section of the ellipsoid of revolution halfway between x and the vertex",
+               ("ellipsoid-segment-D",), ellipsoid_sections, ((a + x) / 2,), lambda A, q: A[0] / mpmath.pi,
+               *ELLIPSOID_SEGMENT_CASES)
+# the elliptic body: the section at height P is bounded by the generators, chord 2 b/a sqrt(a^2 - xi^2) (1 - P/h)
+ELLIPTIC_BODY_CASES = (("a = 5, b = 3, h = 4", {a: 5, b: 3, h: 4}), ("a = 2, b = 1, h = 7/2", {a: 2, b: 1, h: sp.Rational(7, 2)}))
+elliptic_body_width = {"width": 2 * a * b * sp.cos(eta) ** 2 * (1 - P / h), "chord": (-pi / 2, pi / 2)}
+planes_witness("elliptic-body-sections-areas", "sections of the elliptic body at the heights 0, h/2 and h",
+               ("elliptic-body-sections",), elliptic_body_width, (0, h / 2, h), lambda A, q: tuple(A),
+               *ELLIPTIC_BODY_CASES)
+planes_witness("elliptic-body-D-axis-area", "the section at h/2 over pi a: its small half axis",
+               ("elliptic-body-D-axis",), elliptic_body_width, (h / 2,), lambda A, q: A[0] / (mpmath.pi * q[a]),
+               *ELLIPTIC_BODY_CASES)
+# the triaxial ellipsoid P^2/a^2 + t^2/c^2 + s^2/b^2 <= 1: at the abscissa P the chord in s over t = c sqrt(1 -
+# P^2/a^2) sin(eta) is 2 b sqrt(1 - P^2/a^2) cos(eta), times dt
+TRIAXIAL_CASES = (("a = 5, b = 3, c = 2, x = 1, x' = 4", {a: 5, b: 3, c: 2, x: 1, xp: 4}),
+                  ("a = 4, b = 1, c = 3, x = 1/2, x' = 4", {a: 4, b: 1, c: 3, x: sp.Rational(1, 2), xp: 4}))
+triaxial_width = {"width": 2 * b * c * (1 - P ** 2 / a ** 2) * sp.cos(eta) ** 2, "chord": (-pi / 2, pi / 2)}
+for name, at in (("G", x), ("D", (x + xp) / 2), ("g", xp)):
+    planes_witness(f"triaxial-stump-{name}-area", f"section of the triaxial ellipsoid at the abscissa of {name}",
+                   (f"triaxial-stump-{name}",), triaxial_width, (at,), lambda A, q: A[0], *TRIAXIAL_CASES)
+
+
+def _triaxial_half_axes(at):
+    """The squared half axes of the section at the abscissa *at*: the ordinates of the principal ellipses NMR
+    (half axes a, c) and SMV (a, b), each found by the Illinois method on its equation, bracketed in
+    [0, semi-axis]."""
+    def compute(case, dps):
+        A_, B_, C_, X_, XP_ = (mpmath.mpf(sp.N(case.params[q], dps + 10)) for q in (a, b, c, x, xp))
+        xi = {"G": X_, "D": (X_ + XP_) / 2, "g": XP_}[at]
+        tol = mpmath.mpf(10) ** (-dps)
+        out = []
+        for semi in (C_, B_):
+            yv = mpmath.findroot(lambda t: (xi / A_) ** 2 + (t / semi) ** 2 - 1, (mpmath.mpf(0), semi),
+                                 solver="illinois", tol=tol, maxsteps=400)
+            out.append(yv ** 2)
+        return tuple(out)
+    return compute
+
+
+for name in ("G", "D", "g"):
+    d.witness(Computed(f"triaxial-stump-axes-{name}-roots",
+                       f"half axes of the section at {name} by root-finding on the principal ellipses",
+                       (f"triaxial-stump-axes-{name}",),
+                       tuple(Case({q: sp.Rational(v) for q, v in params.items()}, label=label)
+                             for label, params in TRIAXIAL_CASES),
+                       compute=_triaxial_half_axes(name)))
