@@ -262,3 +262,62 @@ for target, ratio in (("ratio-1", "Coc:CoA"), ("ratio-2", "coA:Coc"), ("ratio-3"
     d.witness(Computed(f"triangles-{target}", f"the ratio {ratio} of triangles by Heron's formula",
                        (target,), tuple(_tetrahedron_case(s) for s in range(3)),
                        compute=lambda case, dps, ratio=ratio: _numeric_construction(case, dps)[ratio]))
+
+
+def _median_meet(P, p, q, r):
+    """The centroid of the triangle p q r found as the meeting point of two of its medians."""
+    return _line_meet(P[p], (P[q] + P[r]) / 2, P[q], (P[p] + P[r]) / 2)
+
+
+def _line_meet(p1, p2, q1, q2):
+    M = mpmath.matrix([[p2[k] - p1[k], q1[k] - q2[k]] for k in range(3)])
+    t = mpmath.qr_solve(M, q1 - p1)[0]
+    return p1 + t[0] * (p2 - p1)
+
+
+def _construction_points(case):
+    """Graefe's points by intersecting lines only: F, G the triangles' centroids as meeting points of
+    medians, o = CG ∩ AF, a = co ∩ AC, L = ac ∩ FG."""
+    P = {n: mpmath.matrix([mpmath.mpf(int(v)) for v in case.data[i]]) for i, n in enumerate("ABCD")}
+    c_ = (P["B"] + P["D"]) / 2
+    F_, G_ = _median_meet(P, "B", "C", "D"), _median_meet(P, "A", "B", "D")
+    o_n = _line_meet(P["C"], G_, P["A"], F_)
+    a_n = _line_meet(c_, o_n, P["A"], P["C"])
+    L_n = _line_meet(a_n, c_, F_, G_)
+    return {**P, "c": c_, "F": F_, "G": G_, "o": o_n, "a": a_n, "L": L_n}
+
+
+def _dist(p, q):
+    return mpmath.norm(p - q)
+
+
+CONSTRUCTION_MEASURES = {
+    "construction": lambda Q: tuple(Q["F"]) + tuple(Q["G"]),
+    "quarters": lambda Q: (_dist(Q["o"], Q["F"]), _dist(Q["o"], Q["G"])),
+    "a-midpoint": lambda Q: _dist(Q["a"], Q["A"]),
+    "oL-ratio": lambda Q: _dist(Q["L"], Q["o"]) / _dist(Q["o"], Q["a"]),
+    "aL": lambda Q: _dist(Q["L"], Q["a"]),
+    "CF": lambda Q: _dist(Q["F"], Q["C"]),
+    "oL": lambda Q: _dist(Q["L"], Q["o"]),
+    "oc": lambda Q: _dist(Q["c"], Q["o"]),
+}
+for target, measure in CONSTRUCTION_MEASURES.items():
+    d.witness(Computed(f"lines-{target}", "Graefe's construction by intersecting lines (least squares)",
+                       (target,), tuple(_tetrahedron_case(s) for s in range(3)),
+                       compute=lambda case, dps, measure=measure: measure(_construction_points(case))))
+
+
+def _pyramid_case(seed, apex_down):
+    """A random pyramid: base G at z = 0 and apex at h, or (apex_down) base g at z = h and apex O at z = 0."""
+    pts = random_prismatoid(seed, apex_top=True)
+    Gv, _, _, hv = prismatoid_parameters(pts)
+    area_, height = sp.Rational(Gv.numerator, Gv.denominator), sp.Rational(hv.numerator, hv.denominator)
+    if apex_down:
+        return Case({g: area_, h: height}, [(x_, y_, hv - z_) for x_, y_, z_ in pts], f"random pyramid #{seed}, apex in G")
+    return Case({G: area_, h: height}, pts, f"random pyramid #{seed}, base G")
+
+
+d.witness(HullWitness("arm-1-moment", "moment about G of random pyramids with the apex in G",
+                      ("arm-1",), lambda: tuple(_pyramid_case(s, True) for s in range(3)), quantity="moment"))
+d.witness(HullWitness("arm-2-moment", "moment about G of random pyramids standing on G",
+                      ("arm-2",), lambda: tuple(_pyramid_case(s, False) for s in range(3)), quantity="moment"))
