@@ -7,10 +7,11 @@ pyramid over each triangle of ``G`` and one tetrahedron for each side of
 ``V = (1/3) (2 P) d`` (``P`` the mid-section parallelogram, ``d`` the
 distance of the two skew edges).  Result: ``I = h/3 ((G + g)/2 + 2 D)``.
 """
+import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.witness import Case, HullWitness
+from symfloat.engine.witness import Case, Computed, HullWitness
 from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
 from symfloat.model.claim import as_printed
 
@@ -314,3 +315,34 @@ d.witness(HullWitness("pyramids", "volume of random pyramids (hull and slices)",
 d.witness(HullWitness("prismatoids", "volume of random convex prismatoids (hull and slices)",
                       ("volume-sum", "volume-collected", "prismatoid-volume"),
                       tuple(_prismatoid_case(s) for s in range(4)), quantity="volume"))
+
+
+def _pyramid_on_G_case(seed):
+    pts = random_prismatoid(seed, apex_top=True)
+    Gv, _, _, hv = prismatoid_parameters(pts)
+    return Case({G: sp.Rational(Gv.numerator, Gv.denominator), h: sp.Rational(hv.numerator, hv.denominator)},
+                pts, f"random pyramid #{seed} standing on G")
+
+
+d.witness(HullWitness("pyramids-on-G", "volume of random pyramids standing on G (hull and slices)",
+                      ("pyramids-over-G",), tuple(_pyramid_on_G_case(s) for s in range(3)), quantity="volume"))
+
+
+def _heron_halves(case, dps):
+    """The parallelogram abcd (a, b, c, d the midpoints of AC, BC, BD, AD) as the triangles abc and acd, and the
+    triangle ABE (E = B + D - C), each by Heron's formula from its side lengths; returns abcd (= ABE/2)."""
+    V = {n: mpmath.matrix([mpmath.mpf(int(v)) for v in case.data[i]]) for i, n in enumerate("ABCD")}
+    m_ = {"a": (V["A"] + V["C"]) / 2, "b": (V["B"] + V["C"]) / 2, "c": (V["B"] + V["D"]) / 2,
+          "d": (V["A"] + V["D"]) / 2}
+
+    def heron(p, q, r):
+        x_, y_, w_ = mpmath.norm(p - q), mpmath.norm(q - r), mpmath.norm(r - p)
+        s_ = (x_ + y_ + w_) / 2
+        return mpmath.sqrt(s_ * (s_ - x_) * (s_ - y_) * (s_ - w_))
+
+    return heron(m_["a"], m_["b"], m_["c"]) + heron(m_["a"], m_["c"], m_["d"])
+
+
+d.witness(Computed("mid-section-heron", "the mid-section abcd of random tetrahedra by Heron's formula",
+                   ("parallelogram-half-triangle",), tuple(_tetrahedron_case(s) for s in range(3)),
+                   compute=_heron_halves))
