@@ -25,7 +25,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.quadrature import composite_simpson
-from symfloat.engine.witness import Case, Computed, ConvergenceOrder, SectionIntegral
+from symfloat.engine.witness import Case, Computed, ConvergenceOrder, PlaneSections, SectionIntegral
 
 G, g, D, h, z, t = sp.symbols("G g D h z t", positive=True)
 r, p, x, m = sp.symbols("r p x m", positive=True)
@@ -351,3 +351,20 @@ d.witness(ConvergenceOrder("simpson-order-exp", "composite Simpson on ∫_0^1 ex
 d.witness(ConvergenceOrder("simpson-order-reciprocal", "composite Simpson on ∫_0^1 1/(1+z)",
                            ("simpson-identical", "odd-number-of-sections"), composite_simpson, _reciprocal,
                            (mpmath.mpf(0), mpmath.mpf(1)), mpmath.log(2), 4))
+
+# the sections named by the text, measured across their chords (the circle of radius² ρ²(z) written with the
+# chord coordinate ρ sin η, so that the integrand 2ρ² cos²η stays smooth)
+eta, zp = sp.symbols("eta z_P", real=True)
+
+
+def _round(rho2):
+    return {"width": 2 * rho2 * sp.cos(eta) ** 2, "chord": (-pi / 2, pi / 2), "position": zp, "across": eta}
+
+
+d.witness(PlaneSections("sphere-section-areas", "sections of the sphere at both poles and the centre",
+                        ("sphere-sections",), SPHERE_CASES, planes=(0, 2 * r, r),
+                        combine=lambda A, q: tuple(A), **_round(r ** 2 - (zp - r) ** 2)))
+for name, plane in (("paraboloid-base-radius", 0), ("paraboloid-mid-radius", x / 2)):
+    d.witness(PlaneSections(f"{name}-section", "section of the paraboloid y² = 2pt (t from the vertex, t = x - z)",
+                            (name,), PARABOLOID_CASES, planes=(plane,),
+                            combine=lambda A, q: A[0] / mpmath.pi, **_round(2 * p * (x - zp))))
