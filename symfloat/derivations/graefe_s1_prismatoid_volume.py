@@ -240,6 +240,12 @@ d.quote("mid-section-triangles", "§1 prismatoid volume",
                                            _area(*(FIG3[q] for q in "EFGHI")) / 4)),
         note="the triangles' vertices are ordered as the base triangles O E F, O F G, ... (blc as l b c)")
 
+d.quote("mid-section-triangles-sum", "§1 prismatoid volume",
+        r"ihr Inhalt beträgt also zusammen  $= \frac{G}{4}$",
+        reading=(sum(_tri(t) for t in ("mef", "ngh", "kia", "lbc", "lcd")), _area(*(FIG3[q] for q in "EFGHI")) / 4),
+        note="the five mid-sections (blc for the printed blo, see 'mid-section-triangles') together, as signed "
+             "areas in the plane coordinates of Fig. 3: G/4 for any point O of the base")
+
 MINUS_AS_EQUALS = ("The scan read the minus sign (a long dash in the print) as '='. The same term is quoted "
                    "correctly in §3 ('für deren Inhalt wir zusammen fanden h/3{2D - (G+g)/2}'), so the "
                    "print had the minus.")
