@@ -164,6 +164,18 @@ d.step("centroid-quadratic-sections",
        "integration", note="the formula is exact for every body whose section area A(z) is a quadratic "
                            "polynomial of the height: G = A(0), D = A(h/2), g = A(h)")
 
+d.quote("height-1", "§3 prismatoid centroid", r"a) Der Schwerpunkt von 1) liegt auf  $\frac{1}{4}$  der Höhe von  $g$  aus",
+        reading=(Z1, h - h / 4), note="the pyramid ABCDO (base g at the height h, apex O in G): its centroid "
+                                      "a quarter of the height below g")
+d.quote("height-2", "§3 prismatoid centroid",
+        r"b) Die Schwerpunkte der dreiseitigen Pyramiden von 2) liegen auf  $\frac{h}{4}$  von  $G$  aus",
+        reading=(Z2, h / 4))
+d.quote("height-3", "§3 prismatoid centroid",
+        r"c) Die Schwerpunkte sämtlicher Tetraeder von 3) liegen auf  $\frac{h}{2}$",
+        reading=(Z3, h / 2), note="each tetrahedron has one edge in G and one in g")
+d.quote("moment-group-3", "§3 prismatoid centroid",
+        r"das Moment von 3) ist  $\frac{h}{3} \left( 2D - \frac{G+g}{2} \right) \frac{h}{2}$",
+        reading=(V3 * Z3, h / 3 * (2 * D - (G + g) / 2) * h / 2))
 d.quote("arm-1", "§3 prismatoid centroid",
         r"der Hebelarm von  $G$  aus ist mithin  $\frac{3h}{4}$  und das Moment von 1)  "
         r"$\left(\frac{gh}{3}\right) \frac{3h}{4}$",
@@ -321,3 +333,24 @@ d.witness(HullWitness("arm-1-moment", "moment about G of random pyramids with th
                       ("arm-1",), lambda: tuple(_pyramid_case(s, True) for s in range(3)), quantity="moment"))
 d.witness(HullWitness("arm-2-moment", "moment about G of random pyramids standing on G",
                       ("arm-2",), lambda: tuple(_pyramid_case(s, False) for s in range(3)), quantity="moment"))
+
+
+def _edge_pair_case(seed):
+    """A random tetrahedron with one edge in the plane z = 0 and the opposite edge in z = h (the tetrahedra of
+    group 3)."""
+    rng = random.Random(seed)
+    while True:
+        hv = Fraction(rng.randint(2, 9), rng.randint(1, 3))
+        pts = [(Fraction(rng.randint(-6, 6)), Fraction(rng.randint(-6, 6)), zz) for zz in (0, 0, hv, hv)]
+        (x0, y0, _), (x1, y1, _), (x2, y2, _), (x3, y3, _) = pts
+        if (x1 - x0) * (y3 - y2) - (y1 - y0) * (x3 - x2) != 0:      # the two edges not parallel: a solid
+            return Case({h: sp.Rational(hv.numerator, hv.denominator)}, pts, f"random tetrahedron #{seed}, edges in G and g")
+
+
+d.witness(HullWitness("height-1-hull", "centroid height of random pyramids with the apex in G",
+                      ("height-1",), lambda: tuple(_pyramid_case(s, True) for s in range(3)), quantity="height"))
+d.witness(HullWitness("height-2-hull", "centroid height of random pyramids standing on G",
+                      ("height-2",), lambda: tuple(_pyramid_case(s, False) for s in range(3)), quantity="height"))
+d.witness(HullWitness("height-3-hull", "centroid height of random tetrahedra with an edge in G and one in g",
+                      ("height-3",), lambda: tuple(_edge_pair_case(s) for s in range(3)), quantity="height",
+                      methods=SLICES))
