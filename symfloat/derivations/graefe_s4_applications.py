@@ -160,6 +160,9 @@ d.step("pyramid-frustum-D-from-bases", (D_pf, (G_pf + 2 * sp.sqrt(G_pf * g_pf) +
 d.step("pyramid-frustum-reduced",
        (X_pf, h / 4 * (3 * g_pf + G_pf + 2 * sp.sqrt(G_pf * g_pf)) / (g_pf + G_pf + sp.sqrt(G_pf * g_pf))),
        "algebra", uses=("pyramid-frustum-centroid", "pyramid-frustum-D-from-bases"))
+d.quote("pyramid-frustum-side-D", "§4 pyramid frustum",
+        r"so ist die ähnlich liegende Seite von  $D$ ,  $\frac{S+s}{2}$",
+        reading=(sp.sqrt(D_pf / k), (S + s) / 2), note="the side of D: the square root of D/k")
 d.quote("pyramid-frustum-ratio-G", "§4 pyramid frustum",
         r"$$G : D = S^2 : \frac{(S+s)^2}{4}, \sqrt{G} : \sqrt{D} = S : \frac{S+s}{2} \text{ und}$$",
         reading=(sp.Matrix([G_pf / D_pf, sp.sqrt(G_pf) / sp.sqrt(D_pf)]),
@@ -731,3 +734,6 @@ for name in ("G", "D", "g"):
                        tuple(Case({q: sp.Rational(v) for q, v in params.items()}, label=label)
                              for label, params in TRIAXIAL_CASES),
                        compute=_triaxial_half_axes(name)))
+planes_witness("pyramid-frustum-side-D-section", "the mid-section of trapezoid frusta by quadrature of its widths",
+               ("pyramid-frustum-side-D",), pyramid_sections, (h / 2,), lambda A, q: mpmath.sqrt(A[0] / q[k]),
+               *pyramid_cases)
