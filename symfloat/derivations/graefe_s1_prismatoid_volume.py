@@ -185,6 +185,10 @@ d.quote("quarter-triangles", "§1 tetrahedron lemma", r"und  $mnb$ ,  $Bnq$  die
                                            sp.Matrix([_area_squared(XA, XM, XN)] * 2))),
         note="the sentence proves that the triangle abc is a quarter of ABE: Amn and nqE are congruent to it, "
              "the two triangles between them have their area")
+d.quote("height-is-edge-distance", "§1 tetrahedron lemma",
+        r"so ist die Höhe desselben gleich dem kürzesten Abstand der Kanten  $CD$  und  $AB$  des Tetraeders  $ABCD$",
+        reading=(3 * Ve / Tri, dist), note="the height of ABCE over the base ABE is three times its volume over "
+                                           "the base's area")
 d.quote("lemma-conclusion", "§1 tetrahedron lemma",
         r"Mithin ist der Inhalt des Tetraeders  $ABCD$  gleich dem des Tetraeders  $ABCE$ , dessen Basis gleich "
         r"der doppelten Durchschnittsfläche  $abcd$  und dessen Höhe gleich dem kürzesten Abstand der beiden "

@@ -146,6 +146,9 @@ d.quote("ellipsoid-volume-3", "§2 ellipsoid",
 d.quote("half-ellipsoid", "§2 half ellipsoid", r"$$I = \frac{2ab^2\pi}{3}. —$$",
         reading=(I_h, 2 * a * b ** 2 * pi / 3))
 
+d.quote("half-ellipsoid-x-a", "§2 half ellipsoid", r"Setzt man hierin  $x = a$ , so kommt für das halbe Ellipsoid",
+        reading=(sp.Subs(ell_4, x, a), I_h), note="the segment of height x = a is the half ellipsoid")
+
 # ---- Simpson's rule ------------------------------------------------------------------------------
 d.step("slab-a-c", Eq(I1, prismatoid(a, c, b, 2 * m)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected",), result=I1,
@@ -368,3 +371,8 @@ for name, plane in (("paraboloid-base-radius", 0), ("paraboloid-mid-radius", x /
     d.witness(PlaneSections(f"{name}-section", "section of the paraboloid y² = 2pt (t from the vertex, t = x - z)",
                             (name,), PARABOLOID_CASES, planes=(plane,),
                             combine=lambda A, q: A[0] / mpmath.pi, **_round(2 * p * (x - zp))))
+d.witness(SectionIntegral("half-ellipsoid-segment", "∫ π b² (1 - (t - a)²/a²) dt over the segment of height a",
+                          ("half-ellipsoid-x-a",), tuple(Case({a: c_.params[a], b: c_.params[b], x: c_.params[a]},
+                                                               label=f"a = {c_.params[a]}, b = {c_.params[b]}")
+                                                          for c_ in ELLIPSOID_CASES),
+                          area=A_e_centre, z=z, bounds=(0, a)))

@@ -97,6 +97,12 @@ d.quote("construction", "§3 tetrahedron centroid lemma",
 d.quote("quarters", "§3 tetrahedron centroid lemma",
         r"Auch ist  $oF = \frac{AF}{4}$  und  $oG = \frac{CG}{4}$",
         reading=(sp.Matrix([length(o_ - F), length(o_ - Gp)]), sp.Matrix([length(PA - F) / 4, length(PC - Gp) / 4])))
+d.quote("quarter-line", "§3 tetrahedron centroid lemma",
+        r"Da nun der Schwerpunkt eines Tetraeders bekanntlich auf einem Viertel der Linie von der Basis aus liegt, "
+        r"welche den Schwerpunkt derselben mit der Spitze verbindet",
+        reading=(o_, sp.Matrix([sp.Add(f_, sp.Mul(sp.Rational(1, 4), sp.Add(a_, -f_, evaluate=False), evaluate=False),
+                                       evaluate=False) for f_, a_ in zip(F, PA)])),
+        note="read for the base BCD (centroid F) and the apex A: o = F + (A - F)/4, kept unevaluated")
 d.quote("ratio-1", "§3 tetrahedron centroid lemma",
         r"$$\triangle C o c : \triangle C o A = G c : G A = 1 : 2 \text{ und ebenso:}$$",
         reading=(area(PC, o_, c) / area(PC, o_, PA), length(Gp - c) / length(Gp - PA), sp.Rational(1, 2)))
@@ -176,6 +182,10 @@ d.quote("height-3", "§3 prismatoid centroid",
 d.quote("moment-group-3", "§3 prismatoid centroid",
         r"das Moment von 3) ist  $\frac{h}{3} \left( 2D - \frac{G+g}{2} \right) \frac{h}{2}$",
         reading=(V3 * Z3, h / 3 * (2 * D - (G + g) / 2) * h / 2))
+d.quote("lemma-restated", "§3 prismatoid centroid",
+        r"Satze, dass der Schwerpunkt eines Tetraeders in der Mitte der Verbindungslinie der Mittelpunkte zweier "
+        r"nicht in einer Ebene liegenden Kanten sich befindet",
+        reading=(o_, as_printed(lambda: ((PA + PD) / 2 + (PB + PC) / 2) / 2)), note="read for the edges AD and BC")
 d.quote("arm-1", "§3 prismatoid centroid",
         r"der Hebelarm von  $G$  aus ist mithin  $\frac{3h}{4}$  und das Moment von 1)  "
         r"$\left(\frac{gh}{3}\right) \frac{3h}{4}$",
@@ -354,3 +364,6 @@ d.witness(HullWitness("height-2-hull", "centroid height of random pyramids stand
 d.witness(HullWitness("height-3-hull", "centroid height of random tetrahedra with an edge in G and one in g",
                       ("height-3",), lambda: tuple(_edge_pair_case(s) for s in range(3)), quantity="height",
                       methods=SLICES))
+d.witness(HullWitness("tetrahedron-centroid-2", "centroid of random tetrahedra by slice quadrature",
+                      ("quarter-line", "lemma-restated"), lambda: tuple(_tetrahedron_case(s) for s in range(3)),
+                      quantity="centroid", methods=SLICES))

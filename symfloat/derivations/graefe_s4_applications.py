@@ -737,3 +737,14 @@ for name in ("G", "D", "g"):
 planes_witness("pyramid-frustum-side-D-section", "the mid-section of trapezoid frusta by quadrature of its widths",
                ("pyramid-frustum-side-D",), pyramid_sections, (h / 2,), lambda A, q: mpmath.sqrt(A[0] / q[k]),
                *pyramid_cases)
+d.quote("half-ellipsoid-from-segment", "§4 half ellipsoid",
+        r"Setzt man hierin  $x = 0$ , so findet sich für den Abstand des Schwerpunktes des halben Ellipsoids",
+        reading=(sp.Subs(X_es, x, 0), X_he), note="the ellipsoid segment from x = 0 to the vertex is the half ellipsoid")
+d.quote("half-triaxial-from-stump", "§4 half triaxial ellipsoid", r"Setzt man hierin  $x' = a$  und  $x = 0$",
+        reading=(sp.Subs(X_ts, (x, xp), (0, a)), X_ht), note="the stump from the centre to the vertex")
+sections_witness("half-ellipsoid-as-segment", "centroid of the half ellipsoid from its circular sections",
+                 ("half-ellipsoid-from-segment",), area_he, a, ("a = 5, b = 3", {a: 5, b: 3}),
+                 ("a = 3, b = 2", {a: 3, b: 2}))
+sections_witness("half-triaxial-as-stump", "centroid of the half triaxial ellipsoid from its elliptic sections",
+                 ("half-triaxial-from-stump",), area_ht, a, ("a = 5, b = 3, c = 2", {a: 5, b: 3, c: 2}),
+                 ("a = 3, b = 2, c = 1", {a: 3, b: 2, c: 1}))
