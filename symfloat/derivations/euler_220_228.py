@@ -178,6 +178,15 @@ d.step("branches", (x21, sp.Matrix([xL, xR])), "algebra",
        note="§221: x = a + Y ± a√(1 - y²/b²), the branch with - bounding Ace, with + bounding Bce; "
             "a√(1 - y²/b²) = (a/b)√(b² - y²) for b > 0, the form of §§224-227. x_c = a + Y(b) is the abscissa "
             "Ac of the greatest breadth ce, where both branches meet")
+d.quote("curve", "§221", r"haec aequatio $x = a + Y \pm a \sqrt{1 - \frac{y^2}{b^2}}$, ubi Y denotat",
+        reading=(x21, sp.Matrix([xL, xR])),
+        note=claim("the curves are x = a + Y ± a√(1 − y²/b²) (read as the two branches, − and +)."))
+d.quote("portions", "§222",
+        r"valor $x = a + Y - a \sqrt{1 - \frac{y^2}{b^2}}$ valebit pro portione Ace , alter autem valor "
+        r"$x = a + Y + a \sqrt{1 - \frac{y^2}{b^2}}$ pro portione Bce",
+        reading=(sp.Matrix([sp.Subs(e, y, 0) for e in x21]), sp.Matrix([0, 2 * a])),
+        note=claim("the branch with − bounds the portion Ace (it runs through A, x = 0 at y = 0), the branch with "
+                   "+ the portion Bce (through B, x = 2a)."))
 d.quote("ends", "§221", r"Posito namque $y = 0$, fit x vel $= 0$ vel $= 2a$",
         reading=(sp.Matrix([sp.Subs(e, y, 0) for e in x21]), sp.Matrix([0, 2 * a])),
         note=claim("at y = 0 the two branches give x = 0 and x = 2a (Y vanishes at y = 0)."))
