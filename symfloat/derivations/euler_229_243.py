@@ -792,6 +792,11 @@ d.quote("EF-exceeds-AB", "§241", r"$\frac{EF^2.D}{\nu v} > OG$ multo magis erit
         reading=(sp.Subs(AB ** 2 * Dw / (mu * V) - EF ** 2 * Dw / (nu * V), nu, mu), Dw * (AB ** 2 - EF ** 2) / (mu * V)),
         note=claim("if the quantity for AB exceeds OG, the one for EF does so much more, AB being much longer than "
                    "EF: at μ = ν (the numbers 'differ little') the excess is D(AB² − EF²)/(μV) > 0 (D' read as D)."))
+d.quote("deeper-G-more-stable", "§239",
+        r"Stabilitas porro hoc casu eo erit maior, quo profundius centrum grauitatis G infra centrum magnitudinis O cadet.",
+        reading=(sp.Derivative(SABp, OG), M),
+        note=claim("with G below O the stability M(EF²D/(μV) + OG) grows with the depth OG of G below O: its "
+                   "derivative in OG is M > 0."))
 NU_FOR_MU = "euler-229-243/stability-AB-241"
 d.quote("EF-condition-241", "§241", r"cum enim fuerit $\frac{EF^2.D}{\nu v} > OG$",
         reading=(SAB / M + OG, EF ** 2 * Dw / (nu * V)),
