@@ -491,6 +491,9 @@ kefc = integral_step("moment-EF-c", KEFc, 2 * ((xRc - ACcv) ** 3 - (xLc - ACcv) 
               note="∫∫ (x - AC)² over the whole figure for Y = -cyy/bb")
 d.step("AC-c-value", (ACc, ACcv), "algebra", uses=("centroid-c", "first-moment-c", "area-c"))
 BRANCHES_C = sp.Matrix([xLc, xRc])
+d.quote("Y-c", "§227", r"Ponamus esse $Y = \frac{-cyy}{bb},$",
+        reading=(sp.Subs(a - (a + Yc), y, b), c),
+        note=claim("Y = −cyy/bb moves the greatest breadth ce (y = b, x = a + Y(b)) by Oc = c from the middle O."))
 d.quote("curve-c", "§227", r"seu $x = a - \frac{cyy}{bb} + \frac{c}{b} V(bb-yy),$",
         reading=(xRc, a - c * y ** 2 / b ** 2 + c / b * R),
         erratum=Erratum(
