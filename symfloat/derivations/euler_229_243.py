@@ -421,6 +421,9 @@ d.quote("Y-c-first", "§232",
                         corrected_reading=(JY(1, 0, k, 0, -c, 0), -c / b ** n * J(n, k), -c / m1 * J(0, k),
                                            -c * D / (2 * a * m1))),
         note=claim("with Y = −cyⁿ/bⁿ (Oc = c), ∫Y dy R = −cD/(2a(n(κ+1)+1))."))
+d.quote("Y-c", "§232", r"Sit primum antequam pro κ valores definitos accipiamus, $Y = \frac{-cy^n}{b^n}$",
+        reading=(sp.Subs(a - XA, (Ys, y), (-c * y ** n / b ** n, b)), c),
+        note=claim("with Y = −cyⁿ/bⁿ the two portions meet at y = b at the distance c from O (towards A)."))
 d.quote("Ac-Oc", "§232", r"$A_c = a - c$ et $O_c = c$",
         reading=(sp.Matrix([sp.Subs(XA, (Ys, y), (-c, b)), a - sp.Subs(XA, (Ys, y), (-c, b))]), sp.Matrix([a - c, c])),
         note=claim("with Y = −cyⁿ/bⁿ the greatest breadth ef (y = b, where both portions meet) lies at Ac = a − c, "
