@@ -90,7 +90,11 @@ def test_every_moment_formula_carries_two_quadrature_records(report):
                  "quad-L", "centroid", "moment-PQ-IK", "moment-RS-IK", "sum-invariant", "parallel-axis-rule",
                  "moment-PQ-symmetric", "moment-RS-symmetric", "moment-PQ-increasing", "ellipse-K",
                  "ellipse-I", "ellipse-quadrant-moment", "rhombus-twice", "quad-K-larger",
-                 "stability-AB", "stability-EF", "stability-I", "stability-K"}
+                 "stability-AB", "stability-EF", "stability-I", "stability-K",
+                 # second pass
+                 "strip-moment", "moment-PQ", "moment-RS", "area-2D", "square-area", "rect-area", "rhombus-area",
+                 "ellipse-ordinate", "I-K-definitions", "polar-sum", "xy-vanishes", "square-all-axes",
+                 "strip-sum-of-squares", "quadrants-cancel", "quad-area-2D", "quadrant-area-integral"}
     by_name = {f.id.split("/")[1]: f for f in report.formulas}
     for name in witnessed:
         methods = {rec["method"] for rec in by_name[name].numeric}
