@@ -376,3 +376,29 @@ d.witness(SectionIntegral("half-ellipsoid-segment", "∫ π b² (1 - (t - a)²/a
                                                                label=f"a = {c_.params[a]}, b = {c_.params[b]}")
                                                           for c_ in ELLIPSOID_CASES),
                           area=A_e_centre, z=z, bounds=(0, a)))
+
+# "so kann die eine oder auch beide Null sein": a pyramid (g = 0, D = G/4) and a body whose section area
+# 4 D z (h - z)/h² vanishes at both ends (G = g = 0)
+ZERO_BASE_AREAS = (G * (1 - z / h) ** 2, 4 * D * z * (h - z) / h ** 2)
+d.quote("zero-bases", "§2 prismatoid formula",
+        r"so kann die eine oder auch beide Null sein.",
+        reading=(sp.Matrix([sp.Integral(A_, (z, 0, h)) for A_ in ZERO_BASE_AREAS]),
+                 sp.Matrix([prismatoid(G, 0, G / 4, h), prismatoid(0, 0, D, h)])),
+        note="read on a pyramid over G (g = 0) and on a body with G = g = 0 and quadratic sections")
+
+
+def _zero_base_volumes(case, dps):
+    """The two volumes by tanh-sinh quadrature of their section areas."""
+    hv = mpmath.mpf(sp.N(case.params[h], dps + 10))
+    out = []
+    for A_ in ZERO_BASE_AREAS:
+        f_ = sp.lambdify(z, A_.xreplace(case.params), "mpmath")
+        out.append(mpmath.quad(f_, [0, hv]))
+    return tuple(out)
+
+
+d.witness(Computed("zero-bases-volumes", "∫ A dz of a pyramid and of a body with both bases zero",
+                   ("zero-bases",), (Case({G: 3, D: 2, h: sp.Rational(5, 2)}, label="G = 3, D = 2, h = 5/2"),
+                                     Case({G: sp.Rational(7, 3), D: sp.Rational(1, 2), h: 4},
+                                          label="G = 7/3, D = 1/2, h = 4")),
+                   compute=_zero_base_volumes))
