@@ -290,7 +290,7 @@ d.quote("centroid", "§215", r"$Ce = \frac{ce(Bc^2 - Ac^2)}{3 AB \cdot ce} = \fr
             "The quantity solved for is the distance Cc between the centroid C and the foot c of the "
             "breadth ef (§217 ends with L - 2D·Cc^2, §218 uses it as the distance of EF from ef). Ce, the "
             "distance from C to the vertex e, is sqrt(Cc^2 + ce^2), not (Bc - Ac)/3. An italic c read as e, "
-            "as in D·Ce^2/4 of §218.",
+            "as in D·Ce^2/4 of §218 ('quad-K').",
             corrected_reading=(Cc, b * (c ** 2 - a ** 2) / (3 * (a + c) * b), (c - a) / 3)),
         note=claim("the centroid C lies at the distance Cc = (Bc − Ac)/3 from c, towards the longer part."))
 
@@ -401,10 +401,10 @@ d.quote("quad-K", "§218",
             "transcription", "medium",
             r"= \frac{D \cdot AB^2}{12} + \frac{D \cdot Cc^2}{4}",
             "D(c-a)^2/36 = D·Cc^2/4 with Cc = (c-a)/3; Ce (C to the vertex e) would add D·ce^2/4. The same "
-            "c read as e as in Ce = (Bc - Ac)/3 of §215; all other members are right.",
+            "c read as e as in 'centroid' (Ce = (Bc - Ac)/3 of §215); all other members are right.",
             corrected_reading=(K, Dk * (a * a - a * c + c * c) / 3 - 2 * Dk * (c - a) ** 2 / 9,
                                Dk * (a * a + a * c + c * c) / 9, Dk * (a + c) ** 2 / 12 + Dk * (c - a) ** 2 / 36,
-                               Dk * (a + c) ** 2 / 12 + Dk * Cc ** 2 / 4)),
+                               Dk * (a + c) ** 2 / 12 + Dk * Cc ** 2 / 4), same_as="euler-192-219/centroid"),
         note=claim("by the rule of §217 the moment about EF is D(a² + ac + c²)/9 = D·AB²/12 + D·Cc²/4, larger "
                    "than for equal parts Ac = Bc."))
 
@@ -1020,3 +1020,23 @@ figure_witness("quad-area-quadrature", "∫∫ 1 over the quadrilateral AeBf", (
                lambda cs, dps: polygon_integral(lambda X, Y: 1 + 0 * X * Y, quadrilateral(cs, dps), dps))
 figure_witness("ellipse-quadrant-quadrature", "a quarter of ∫∫ 1 over the ellipse", ("quadrant-area-integral",),
                AB_CASES, lambda cs, dps: ellipse_integral(lambda X, Y: 1 + 0 * X * Y, cs.params[a], cs.params[b], dps) / 4)
+d.quote("L-definition", "§217", r"tum ponitur scilicet $L = \int w \cdot w n^2$", reading=(LT, tri((x - xe) ** 2)),
+        note=claim("L, the moment about ef, is ∫w·wn², wn the distance of the particle from ef (read on the "
+                   "generic rectangle, ef at x = x_e)."))
+d.quote("EF-moment-definition", "§217", r"ctu axis EF quod quaeritur $= \int w \cdot w N^2$",
+        reading=(KTe, tri((x - xCT) ** 2)),
+        note=claim("the moment about EF through the centroid is ∫w·wN², wN the distance from EF."))
+GEN_E_CASES = rational_cases(("[-1, 2] x [0, 3], x_e = 5/2", {X1: -1, Y1: 0, X2: 2, Y2: 3, xe: "5/2"}),
+                             ("[-3/2, 5/2] x [1/2, 5/2], x_e = -1", {X1: "-3/2", Y1: "1/2", X2: "5/2", Y2: "5/2", xe: -1}))
+figure_witness("L-rectangle", "∫∫ (x - x_e)^2 over a rectangle off the origin", ("L-definition",), GEN_E_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: (X - P(cs, xe, dps)) ** 2, _generic(cs), dps))
+
+
+def _about_centroid(cs, dps):
+    poly = _generic(cs)
+    xc_ = polygon_integral(lambda X, Y: X + 0 * Y, poly, dps) / polygon_integral(lambda X, Y: 1 + 0 * X * Y, poly, dps)
+    return polygon_integral(lambda X, Y: (X - xc_) ** 2, poly, dps)
+
+
+figure_witness("EF-rectangle", "∫∫ (x - x_C)^2 over a rectangle off the origin, x_C by quadrature",
+               ("EF-moment-definition",), GEN_E_CASES, _about_centroid)
