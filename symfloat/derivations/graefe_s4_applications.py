@@ -748,3 +748,27 @@ sections_witness("half-ellipsoid-as-segment", "centroid of the half ellipsoid fr
 sections_witness("half-triaxial-as-stump", "centroid of the half triaxial ellipsoid from its elliptic sections",
                  ("half-triaxial-from-stump",), area_ht, a, ("a = 5, b = 3, c = 2", {a: 5, b: 3, c: 2}),
                  ("a = 3, b = 2, c = 1", {a: 3, b: 2, c: 1}))
+planes_witness("cone-frustum-D-section", "the mid-section of the cone frustum across its chords", ("cone-frustum-D",),
+               round_sections((R + (r - R) * P / h) ** 2), (h / 2,), lambda A, q: mpmath.sqrt(A[0] / mpmath.pi),
+               ("R = 3, r = 1, h = 4", {R: 3, r: 1, h: 4}), ("R = 5/2, r = 2, h = 3/2", {R: sp.Rational(5, 2), r: 2, h: sp.Rational(3, 2)}))
+sections_witness("elliptic-body-claims", "centroid of the elliptic body from its elliptic sections",
+                 ("elliptic-body-triangles", "elliptic-body-paraboloid"), area_eb, h,
+                 ("a = 5, b = 3, h = 4, p = 2", {a: 5, b: 3, h: 4, p: 2}),
+                 ("a = 2, b = 1, h = 7/2, p = 1/2", {a: 2, b: 1, h: sp.Rational(7, 2), p: sp.Rational(1, 2)}))
+
+
+def _centroid_ratio(area, height):
+    """The centroid height over the body's height, ∫u A du / (height ∫A du), by tanh-sinh quadrature."""
+    def compute(case, dps):
+        hv = mpmath.mpf(sp.N(height.xreplace(case.params), dps + 10))
+        f_ = sp.lambdify(u, area.xreplace(case.params), "mpmath")
+        return mpmath.quad(lambda t_: t_ * f_(t_), [0, hv]) / (hv * mpmath.quad(f_, [0, hv]))
+    return compute
+
+
+HALF_CASES = tuple(Case({r: sp.Rational(rv), a: sp.Rational(av), b: sp.Rational(bv), c: sp.Rational(cv)},
+                        label=f"r = {rv}, a = {av}, b = {bv}, c = {cv}")
+                   for rv, av, bv, cv in (("2", "5", "3", "2"), ("5/3", "3", "2", "1")))
+for name, area_, height_ in (("hemisphere", area_hs, r), ("half-ellipsoid", area_he, a), ("half-triaxial", area_ht, a)):
+    d.witness(Computed(f"three-eighths-{name}", f"centroid of the {name} over its height, by quadrature",
+                       ("three-eighths",), HALF_CASES, compute=_centroid_ratio(area_, height_)))
