@@ -1196,3 +1196,23 @@ KITE = (Case({M: 3, V: 3, AB: 3, Dw: sp.Rational(3, 2), mu: 12, nu: sp.Rational(
              data={"s": sp.Rational(1, 2)}, label="kite prism, s = 1/2, OG = 1/4"))
 _w("stability-kite-prism-EF", "M·GZ/φ of the upright kite prism pitched about EF, by exact clipping, G above O",
    ("stability-EF",), KITE, lambda cs, dps: _heeled_stability(cs, dps, 1, _kite_prism, 2))
+
+# second pass: the moment named 'about the longitudinal axis EF' of §230 is the one about the latitudinal EF
+_w("family-axis-EF-named", "∫∫(x − x_C)² over the whole figure, x_C by quadrature", ("axis-EF-named",), GENERIC,
+   lambda cs, dps: _K(*_generic(cs, dps)[2][:3]))
+
+
+def _by_parts(cs, dps):
+    """∫₀ᵇ yⁿ(1 − yⁿ/bⁿ)^{3κ−1} dy / bⁿ by quadrature (tanh-sinh at 50 digits; in float64 Gauss-Legendre after
+    y = b(1 − (1 − w)⁴), as across the chords)."""
+    B, nv, kv = _params(cs, dps, b, n, k)
+    if dps > 15:
+        return mpmath.quad(lambda yv: yv ** nv * (1 - (yv / B) ** nv) ** (3 * kv - 1), [0, B]) / B ** nv
+    yv = B * (1 - (1 - GL_U) ** 4)
+    jac = 4 * B * (1 - GL_U) ** 3
+    return float(np.sum(GL_UW * jac * yv ** nv * (1 - (yv / B) ** nv) ** (3 * kv - 1))) / B ** nv
+
+
+_w("by-parts-quadrature", "∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy/bⁿ by 1-D quadrature", ("by-parts-3k",),
+   tuple(Case({b: sp.Rational(bv), n: nv, k: sp.Rational(kv)}, label=f"b = {bv}, n = {nv}, κ = {kv}")
+         for bv, nv, kv in (("1", 2, "1/2"), ("3/4", 3, "3/2"), ("2", 1, "1"))), _by_parts)
