@@ -365,8 +365,8 @@ def _round(rho2):
 
 
 d.witness(PlaneSections("sphere-section-areas", "sections of the sphere at both poles and the centre",
-                        ("sphere-sections",), SPHERE_CASES, planes=(0, 2 * r, r),
-                        combine=lambda A, q: tuple(A), **_round(r ** 2 - (zp - r) ** 2)))
+                        ("sphere-sections",), SPHERE_CASES, planes=(r, 0, 2 * r),   # a non-empty section first
+                        combine=lambda A, q: (A[1], A[2], A[0]), **_round(r ** 2 - (zp - r) ** 2)))
 for name, plane in (("paraboloid-base-radius", 0), ("paraboloid-mid-radius", x / 2)):
     d.witness(PlaneSections(f"{name}-section", "section of the paraboloid y² = 2pt (t from the vertex, t = x - z)",
                             (name,), PARABOLOID_CASES, planes=(plane,),

@@ -673,11 +673,11 @@ sections_witness("half-triaxial", "centroid of the half triaxial ellipsoid from 
 # positions are those of the construction (poles, centre, the midpoint between base and pole)
 SPHERE_CASES = (("r = 3", {r: 3}), ("r = 7/2", {r: sp.Rational(7, 2)}))
 planes_witness("sphere-sections-areas", "sections of the sphere at both poles and at the centre",
-               ("sphere-sections",), round_sections(r ** 2 - P ** 2), (r, -r, 0),
-               lambda A, q: (A[0], A[1], A[2], 2 * q[r]), *SPHERE_CASES)
+               ("sphere-sections",), round_sections(r ** 2 - P ** 2), (0, r, -r),   # a non-empty section first
+               lambda A, q: (A[1], A[2], A[0], 2 * q[r]), *SPHERE_CASES)
 planes_witness("hemisphere-sections-areas", "sections of the sphere at the pole, the centre and half the radius",
-               ("hemisphere-sections",), round_sections(r ** 2 - P ** 2), (r, 0, r / 2),
-               lambda A, q: tuple(A), *SPHERE_CASES)
+               ("hemisphere-sections",), round_sections(r ** 2 - P ** 2), (0, r, r / 2),
+               lambda A, q: (A[1], A[0], A[2]), *SPHERE_CASES)
 SEGMENT_CASES = (("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
 planes_witness("segment-1-D-area", "section of the sphere halfway between the base (distance m) and the pole",
                ("segment-1-D",), round_sections(r ** 2 - P ** 2), ((r + m) / 2,), lambda A, q: A[0],
