@@ -40,7 +40,7 @@ def test_every_display_of_the_range_is_quoted():
 # definitions of μ and ν (§237–238), the names M, V, CD.
 NOTATION = {r"$AO = Bo = a$", r"$ce = cf = b$", r"$AP = x$", r"$PM = y$", r"$y = 0$", r"$y = b$", r"$=$",
             r"$Y = \frac{-cy^n}{b^n}$",
-            r"$c=0$", r"$n = 1$", r"$n = 2$", r"$AB = \frac{EF^2 \cdot D}{\mu}$", r"$EF = \frac{AB^2 \cdot D}{\mu}$",
+            r"$n = 1$", r"$n = 2$", r"$AB = \frac{EF^2 \cdot D}{\mu}$", r"$EF = \frac{AB^2 \cdot D}{\mu}$",
             r"$= M$", r"$= V$", r"$AB = I = \frac{EF^2 \cdot D}{\mu}$",
             r"$= K = \frac{AB^2 \cdot D}{v}$", r"$= CD$"}
 

@@ -1216,3 +1216,10 @@ def _by_parts(cs, dps):
 _w("by-parts-quadrature", "∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy/bⁿ by 1-D quadrature", ("by-parts-3k",),
    tuple(Case({b: sp.Rational(bv), n: nv, k: sp.Rational(kv)}, label=f"b = {bv}, n = {nv}, κ = {kv}")
          for bv, nv, kv in (("1", 2, "1/2"), ("3/4", 3, "3/2"), ("2", 1, "1"))), _by_parts)
+d.quote("c-zero-suffices", "§234",
+        r"Ponamus esse $c=0$, quia si hoc casu momentum respectu axis EF fuerit cognitum, ex eo idem momentum pro "
+        r"valore quocunque ipsius c inueniri potest",
+        reading=(Kc, K0g + 2 * n ** 2 * (k + 1) * c ** 2 * D / (m1 ** 2 * m2)),
+        note=claim("the moment about EF for any c is that for c = 0 plus the term of §232 in c alone."))
+_w("c-zero-suffices-quadrature", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
+   ("c-zero-suffices",), CFAM, lambda cs, dps: _K(*_cfig(cs, dps)[:3]))
