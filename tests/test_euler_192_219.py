@@ -95,7 +95,7 @@ def test_every_moment_formula_carries_two_quadrature_records(report):
                  "strip-moment", "moment-PQ", "moment-RS", "area-2D", "square-area", "rect-area", "rhombus-area",
                  "ellipse-ordinate", "I-K-definitions", "polar-sum", "xy-vanishes", "square-all-axes",
                  "strip-sum-of-squares", "quadrants-cancel", "quad-area-2D", "quadrant-area-integral",
-                 "L-definition", "EF-moment-definition"}
+                 "L-definition", "EF-moment-definition", "sum-of-cubes", "aggregate", "equal-quadrants"}
     by_name = {f.id.split("/")[1]: f for f in report.formulas}
     for name in witnessed:
         methods = {rec["method"] for rec in by_name[name].numeric}

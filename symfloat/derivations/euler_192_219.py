@@ -1040,3 +1040,27 @@ def _about_centroid(cs, dps):
 
 figure_witness("EF-rectangle", "∫∫ (x - x_C)^2 over a rectangle off the origin, x_C by quadrature",
                ("EF-moment-definition",), GEN_E_CASES, _about_centroid)
+d.quote("sum-of-cubes", "§201", r"valor huius expressionis $\int (PM^3 + PN^3) Pp$",
+        reading=((PM ** 3 + PN ** 3) * Pp, 3 * sp.Integral(Pp * w ** 2, (w, -PN, PM))),
+        note=claim("the expression to be integrated is three times the second moment about AB (read for one "
+                   "strip Pp between N and M)."))
+d.quote("aggregate", "§202", r"ex quo manifestum est $\int \frac{(PM^3 + PN^3)Pp}{3}$ denotari aggregatum",
+        reading=((PM ** 3 + PN ** 3) * Pp / 3, sp.Integral(Pp * w ** 2, (w, -PN, PM))),
+        note=claim("∫(PM³ + PN³)Pp/3 is the aggregate of the particles times their squared distances from AB "
+                   "(read for one strip)."))
+d.quote("equal-quadrants", "§211", r"quod momenta cum quadrantum ACE et ACF, tum quadrantum BCE et BCF sint aequalia",
+        reading=(kite(y ** 2, lo=0), kite(y ** 2) - kite(y ** 2, lo=0)),
+        note=claim("the parts above and below AB have the same moment about AB (read on the quadrilateral of "
+                   "§215, whose halves are mirror images)."))
+figure_witness("sum-of-cubes-strip", "3 ∫∫ y^2 over the strip Pp wide from N to M", ("sum-of-cubes",), STRIP2_CASES,
+               lambda cs, dps: 3 * polygon_integral(lambda X, Y: Y ** 2,
+                                                    [(0, -cs.params[PN]), (cs.params[Pp], -cs.params[PN]),
+                                                     (cs.params[Pp], cs.params[PM]), (0, cs.params[PM])], dps))
+figure_witness("aggregate-strip", "∫∫ y^2 over the strip Pp wide from N to M", ("aggregate",), STRIP2_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2,
+                                                [(0, -cs.params[PN]), (cs.params[Pp], -cs.params[PN]),
+                                                 (cs.params[Pp], cs.params[PM]), (0, cs.params[PM])], dps))
+figure_witness("lower-half-moment", "∫∫ y^2 over the half of the quadrilateral below AB", ("equal-quadrants",), Q_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2,
+                                                [(0, 0), (cs.params[a], -cs.params[b]), (cs.params[a] + cs.params[c], 0)],
+                                                dps))
