@@ -65,7 +65,17 @@ EXPECTED_ERRATA = {
     ("quad-L", "transcription", "medium"),             # §216 D(ac+bc+cc)/3 for D(aa-ac+cc)/3
     ("quad-K", "transcription", "medium"),             # §218 D·Ce^2/4 for D·Cc^2/4
     ("ellipse-quadrant-area", "transcription", "low"),  # §219 pi/4 for pi ab/4 = D/2
+    ("Cc-again", "transcription", "medium"),           # §218 Cb for Cc again (second pass, line 126)
 }
+
+
+def test_second_pass_Cb_of_218_is_booked_as_the_repeat_of_215():
+    # Provenance: 002_9b5669e726e363a9.txt line 126, "$Cb = \frac{c-a}{3}$" (Cc of §215 read as Cb).
+    p = next(p for p in D.printed if p.name == "Cc-again")
+    assert p.excerpt in TEXT.splitlines()[125] and "Cb" in p.excerpt
+    assert p.erratum.same_as == "euler-192-219/centroid-equation"
+    booked = next(q for q in D.printed if q.name == "centroid-equation").erratum
+    assert (booked.kind, booked.confidence) == (p.erratum.kind, p.erratum.confidence) == ("transcription", "medium")
 
 
 def test_the_errata_are_exactly_the_expected_ones(report):
@@ -80,7 +90,12 @@ def test_every_moment_formula_carries_two_quadrature_records(report):
                  "quad-L", "centroid", "moment-PQ-IK", "moment-RS-IK", "sum-invariant", "parallel-axis-rule",
                  "moment-PQ-symmetric", "moment-RS-symmetric", "moment-PQ-increasing", "ellipse-K",
                  "ellipse-I", "ellipse-quadrant-moment", "rhombus-twice", "quad-K-larger",
-                 "stability-AB", "stability-EF", "stability-I", "stability-K"}
+                 "stability-AB", "stability-EF", "stability-I", "stability-K",
+                 # second pass
+                 "strip-moment", "moment-PQ", "moment-RS", "area-2D", "square-area", "rect-area", "rhombus-area",
+                 "ellipse-ordinate", "I-K-definitions", "polar-sum", "xy-vanishes", "square-all-axes",
+                 "strip-sum-of-squares", "quadrants-cancel", "quad-area-2D", "quadrant-area-integral",
+                 "L-definition", "EF-moment-definition", "sum-of-cubes", "aggregate", "equal-quadrants"}
     by_name = {f.id.split("/")[1]: f for f in report.formulas}
     for name in witnessed:
         methods = {rec["method"] for rec in by_name[name].numeric}

@@ -67,7 +67,17 @@ EXPECTED_ERRATA = {
     ("U4-value", "transcription", "low"),
     ("moment-EF-c", "transcription", "low"),        # §227 c·c²D/128 for c²D/8
     ("curve-c-again", "transcription", "low"),      # §228 a = ... for x = ..., c/b for a/b
+    ("middle-named-C", "transcription", "medium"),  # §228 'medio C' for 'medio O' (second pass, line 195)
 }
+
+
+def test_second_pass_middle_of_AB_is_O_not_C(report):
+    # Provenance: 002_9b5669e726e363a9.txt line 195, "a punto axis AB medio C distet"; §220 names the middle
+    # O, and §227 puts the centroid C at AC = a - c/4.
+    f = next(f for f in report.formulas if f.id == "euler-220-228/middle-named-C")
+    assert f.verdict == "erratum" and f.erratum["kind"] == "transcription"
+    p = next(p for p in D.printed if p.name == "middle-named-C")
+    assert p.excerpt in TEXT.splitlines()[194] and "medio C" in p.excerpt
 
 
 def test_the_errata_are_exactly_the_expected_ones(report):
@@ -81,6 +91,8 @@ def test_every_area_and_moment_carries_two_quadrature_records(report):
     unwitnessed = {"ends", "axis-AB", "greatest-breadth", "Oc-general", "breadth-b", "ellipse-at-Y0", "boundary-term",
                    "curve-c", "Oc",
                    "moment-grows", "curve-c-again", "c-limit", "c-half",
+                   "middle-named-C",   # the midpoint of AB (x = a at y = 0) against the centroid: no integral
+                   "curve", "portions", "Y-c",   # the defining branches, their ends, Oc: no integral
                    "Aa-Ace-product"}   # its printed reading has loose terms in y: no number to compare
     for f in report.formulas:
         name = f.id.split("/")[1]

@@ -36,15 +36,12 @@ def test_every_display_of_the_range_is_quoted():
 
 
 # Inline pieces of §§229–243 with =, < or > that are notation, not results: the letters of the figure
-# (AO = BO = a, ce = b, AP = x, PM = y), the defining equations of the two portions (their exponent x is
-# the κ misread, as in the quoted chord), the limits y = 0, y = b, Euler's choices of Y, c, n, the
-# definitions of μ and ν (§237–238), the names M, V, CD and the area 2D (transcribed 'z D').
-NOTATION = {r"$AO = Bo = a$", r"$ce = cf = b$", r"$AP = x$", r"$PM = y$",
-            r"$x = a + Y - a\left(1 - \frac{y^n}{b^n}\right)^x = AP$",
-            r"$x = a + Y + a\left(1 - \frac{y^n}{b^n}\right)^x = Ap$", r"$y = 0$", r"$y = b$", r"$=$",
-            r"$Y = \alpha y^n + \beta y^{n-1} + \gamma y^{n-2} + \dots + \text{etc.}$", r"$Y = \frac{-cy^n}{b^n}$",
-            r"$c=0$", r"$n = 1$", r"$n = 2$", r"$AB = \frac{EF^2 \cdot D}{\mu}$", r"$EF = \frac{AB^2 \cdot D}{\mu}$",
-            r"$= M$", r"$= V$", r"$= z D$", r"$AB = I = \frac{EF^2 \cdot D}{\mu}$",
+# (AO = BO = a, ce = b, AP = x, PM = y), the limits y = 0, y = b, Euler's choices of Y, c, n, the
+# definitions of μ and ν (§237–238), the names M, V, CD.
+NOTATION = {r"$AO = Bo = a$", r"$ce = cf = b$", r"$AP = x$", r"$PM = y$", r"$y = 0$", r"$y = b$", r"$=$",
+            r"$Y = \frac{-cy^n}{b^n}$",
+            r"$n = 1$", r"$n = 2$", r"$AB = \frac{EF^2 \cdot D}{\mu}$", r"$EF = \frac{AB^2 \cdot D}{\mu}$",
+            r"$= M$", r"$= V$", r"$AB = I = \frac{EF^2 \cdot D}{\mu}$",
             r"$= K = \frac{AB^2 \cdot D}{v}$", r"$= CD$"}
 
 
@@ -88,7 +85,48 @@ EXPECTED_ERRATA = {
     ("stability-AB-241", "transcription", "low"),    # §241 ν for μ
     ("V-prism", "transcription", "low"),             # §243 (2/3)D·CD for 2D·CD
     ("stability-CD", "transcription", "medium"),     # §243 v for μ
+    # second pass (lines of 002_9b5669e726e363a9.txt in SECOND_PASS)
+    ("portion-Ace", "transcription", "high"),        # §229 x for κ, as in the chord
+    ("portion-Bce", "transcription", "high"),
+    ("axis-EF-named", "misprint", "medium"),         # §230 'longitudinalis EF' for latitudinalis
+    ("Y-family", "transcription", "medium"),         # §231 y^{n-1}, y^{n-2} for y^{2n}, y^{3n}
+    ("waterplane-area", "transcription", "high"),    # §238 z D for 2D
+    ("waterplane-area-grows", "transcription", "high"),  # §239 z D for 2D
+    ("excess-maximal", "transcription", "medium"),   # §242 EF²D/vv for EF²D/(μV)
+    ("excess-notable", "transcription", "medium"),
+    ("excess-estimate", "transcription", "medium"),  # §243
+    ("EF-condition-241", "transcription", "low"),    # §241 ν for μ, as at stability-AB-241
+    ("AB-condition-241", "transcription", "low"),    # §241 μ for ν and a stray D'
 }
+
+# Faults of the second review: (printed name, kind, line of the transcription, the wrong piece, the erratum
+# it repeats or "").
+SECOND_PASS = [
+    ("portion-Ace", "transcription", 202, r"\right)^x = AP", "chord"),
+    ("portion-Bce", "transcription", 203, r"\right)^x = Ap", "chord"),
+    ("axis-EF-named", "misprint", 214, "longitudinalis EF", ""),
+    ("Y-family", "transcription", 230, r"y^{n-1}", ""),
+    ("waterplane-area", "transcription", 278, "$= z D$", ""),
+    ("waterplane-area-grows", "transcription", 280, "$z D$", "waterplane-area"),
+    ("excess-maximal", "transcription", 292, "{vv}", "stability-CD"),
+    ("excess-notable", "transcription", 292, "{vv}", "stability-CD"),
+    ("excess-estimate", "transcription", 294, "{vv}", "stability-CD"),
+    ("EF-condition-241", "transcription", 288, r"{\nu v}", "stability-AB-241"),
+    ("AB-condition-241", "transcription", 288, "D'", "stability-AB-241"),
+]
+
+
+@pytest.mark.parametrize("name, kind, line, fault, repeats", SECOND_PASS, ids=[f[0] for f in SECOND_PASS])
+def test_second_pass_fault_is_booked_where_it_stands(report, name, kind, line, fault, repeats):
+    f = next(f for f in report.formulas if f.id == f"euler-229-243/{name}")
+    assert f.verdict == "erratum" and f.erratum["kind"] == kind
+    p = next(p for p in D.printed if p.name == name)
+    assert fault in p.excerpt and p.excerpt in TEXT.splitlines()[line - 1]
+    target = f"euler-229-243/{repeats}" if repeats else ""
+    assert p.erratum.same_as == target
+    if target:
+        booked = next(q for q in D.printed if q.name == repeats).erratum
+        assert (booked.kind, booked.confidence) == (p.erratum.kind, p.erratum.confidence)
 
 
 def test_the_errata_are_exactly_the_expected_ones(report):

@@ -67,7 +67,35 @@ EXPECTED_ERRATA = {
     # §4 ship: "e, d, e" for "c, d, e"; x = m/3 {...} from the §2 factor, correct x = m {...}
     ("graefe-s4-ship-centroid/substitution", "transcription", "medium"),
     ("graefe-s4-ship-centroid/centroid", "consequential", "high"),
+    # second pass (the transcription's lines in SECOND_PASS below)
+    ("graefe-s1-prismatoid-volume/quarter-triangles", "transcription", "medium"),
+    ("graefe-s1-prismatoid-volume/tetrahedra-list", "transcription", "medium"),
+    ("graefe-s1-prismatoid-volume/mid-section-g", "transcription", "low"),
+    ("graefe-s1-prismatoid-volume/mid-section-triangles", "transcription", "medium"),
+    ("graefe-s2-volumes-simpson/simpson-identical", "claim", "high"),
+    ("graefe-s4-applications/elliptic-body-generator", "transcription", "medium"),
+    ("graefe-s4-applications/triaxial-stump-axes-D", "misprint", "medium"),
 }
+
+# Faults of the second review, each with the line of 001_7d23c66f8db6d29e.txt it stands on and the
+# label or words that are wrong there.
+SECOND_PASS = [
+    ("graefe-s1-prismatoid-volume/quarter-triangles", "transcription", 62, "$mnb$"),      # mnB
+    ("graefe-s1-prismatoid-volume/tetrahedra-list", "transcription", 79, "ADOL"),         # ADOI
+    ("graefe-s1-prismatoid-volume/mid-section-g", "transcription", 83, "$ABCO$"),         # ABCDO
+    ("graefe-s1-prismatoid-volume/mid-section-triangles", "transcription", 85, "$blo$"),  # blc
+    ("graefe-s2-volumes-simpson/simpson-identical", "claim", 168, "identisch"),            # m {...} is 3x Simpson
+    ("graefe-s4-applications/elliptic-body-generator", "transcription", 359, "$b'b'c$"),  # bb'c
+    ("graefe-s4-applications/triaxial-stump-axes-D", "misprint", 385, "(A p)^2"),         # (Q p)^2
+]
+
+
+@pytest.mark.parametrize("fid, kind, line, fault", SECOND_PASS, ids=[f[0].split("/")[1] for f in SECOND_PASS])
+def test_second_pass_fault_is_booked_where_it_stands(formulas, fid, kind, line, fault):
+    f = next(f for f in formulas if f.id == fid)
+    assert f.verdict == "erratum" and f.erratum["kind"] == kind
+    text_line = SOURCES["graefe"].text().splitlines()[line - 1]
+    assert fault in f.excerpt and f.excerpt.split("\n")[0] in text_line
 
 
 def test_the_errata_found_are_exactly_the_expected_ones(formulas):

@@ -51,8 +51,8 @@ def test_long_expressions_read_in_their_names(s1_notebook):
 
 def test_printed_arithmetic_is_shown_as_printed(s1_notebook):
     by_id = {c.id: c for c in s1_notebook.cells}
-    # Graefe §1: "= g/4" because the mid-section is g scaled by (1/2)^2
-    assert r"g \left(\frac{1}{2}\right)^{2} = \frac{g}{4}" in by_id[cell_id("formula", "mid-section-g")].source
+    # Graefe §1: "= g/4" because the mid-section is g scaled by (1/2)^2 (step mid-sections)
+    assert r"g \left(\frac{1}{2}\right)^{2} = \frac{g}{4}" in by_id[cell_id("step", "mid-sections")].source
 
 
 def test_named_leaves_unnamed_expressions_alone():

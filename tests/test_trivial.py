@@ -124,12 +124,14 @@ def test_no_claim_of_the_library_compares_a_thing_with_itself(derivation_id):
 
 
 def test_the_library_test_sees_a_trivial_reading():
-    # mutation: Graefe §1 'mid-section-g' read with SymPy's evaluation on is caught
+    # mutation: Graefe §1 step 'mid-sections' (g (1/2)^2 = g/4) read with SymPy's evaluation on is caught
     d, _ = load("graefe-s1-prismatoid-volume")
-    p = next(p for p in d.printed if p.name == "mid-section-g")
+    s = next(s for s in d.steps if s.name == "mid-sections")
     mutated = type(d)(id=d.id, source=d.source, title=d.title, locator=d.locator, domain=d.domain)
-    mutated.printed = [dataclasses.replace(p, reading=(g * sp.Rational(1, 2) ** 2, g / 4))]
-    assert _offenders(mutated) == [("mid-section-g", [1])]
+    mutated.steps = [dataclasses.replace(s, claim=(g * sp.Rational(1, 2) ** 2, g / 4))]
+    assert _offenders(mutated) == [("step mid-sections", [1])]
+    mutated.steps = [s]
+    assert _offenders(mutated) == []
 
 
 def test_no_verdict_of_the_library_rests_on_a_trivial_comparison(all_reports):

@@ -290,7 +290,7 @@ d.quote("centroid", "§215", r"$Ce = \frac{ce(Bc^2 - Ac^2)}{3 AB \cdot ce} = \fr
             "The quantity solved for is the distance Cc between the centroid C and the foot c of the "
             "breadth ef (§217 ends with L - 2D·Cc^2, §218 uses it as the distance of EF from ef). Ce, the "
             "distance from C to the vertex e, is sqrt(Cc^2 + ce^2), not (Bc - Ac)/3. An italic c read as e, "
-            "as in D·Ce^2/4 of §218.",
+            "as in D·Ce^2/4 of §218 ('quad-K').",
             corrected_reading=(Cc, b * (c ** 2 - a ** 2) / (3 * (a + c) * b), (c - a) / 3)),
         note=claim("the centroid C lies at the distance Cc = (Bc − Ac)/3 from c, towards the longer part."))
 
@@ -382,9 +382,16 @@ d.step("quad-K-excess", (K - Dk * (a + c) ** 2 / 12, Dk * (c - a) ** 2 / 36), "a
 d.quote("quad-L-again", "§218", r"inuentum sit $= \frac{D(aa-ac+cc)}{3}$",
         reading=(Lk, Dk * (a * a - a * c + c * c) / 3),
         note=claim("the moment about ef was found to be D(a² − ac + c²)/3."))
-d.quote("Cc-again", "§218", r"$Cb = \frac{c-a}{3}$", reading=(Cc, (c - a) / 3),
-        note=claim("EF lies at the distance (c − a)/3 from ef. The transcription prints Cb; the figure has no "
-                   "point b and the distance meant is Cc (read so)."))
+d.quote("Cc-again", "§218", r"$Cb = \frac{c-a}{3}$",
+        unreadable="Cb names no distance of Tab. IX fig. 2: b is the length ce (§216), the figure has no point b",
+        erratum=Erratum(
+            "transcription", "medium", r"Cc = \frac{c-a}{3}",
+            "The distance of the true latitudinal axis EF from ef is Cc, from the centroid C to the foot c of "
+            "ef: Cc = (Bc - Ac)/3 = (c - a)/3 (§215), and §217's rule L - 2D·Cc^2 is what the paragraph "
+            "applies next. The 'Cb' for Cc of the centroid equation of §215 ('centroid-equation'), read so by "
+            "the scan at this place too.",
+            corrected_reading=(Cc, (c - a) / 3), same_as="euler-192-219/centroid-equation"),
+        note=claim("EF lies at the distance Cc = (c − a)/3 from ef."))
 d.quote("quad-K", "§218",
         "EF $= \\frac{D(aa-ac+cc)}{3} -$\n $\\frac{2D(c-a)^2}{9} = \\frac{D(aa+ac+cc)}{9} = \\frac{D(a+c)^2}{12} "
         "+ \\frac{D(c-a)^2}{36} = \\frac{D \\cdot AB^2}{12} + \\frac{D \\cdot Ce^2}{4}$",
@@ -394,10 +401,10 @@ d.quote("quad-K", "§218",
             "transcription", "medium",
             r"= \frac{D \cdot AB^2}{12} + \frac{D \cdot Cc^2}{4}",
             "D(c-a)^2/36 = D·Cc^2/4 with Cc = (c-a)/3; Ce (C to the vertex e) would add D·ce^2/4. The same "
-            "c read as e as in Ce = (Bc - Ac)/3 of §215; all other members are right.",
+            "c read as e as in 'centroid' (Ce = (Bc - Ac)/3 of §215); all other members are right.",
             corrected_reading=(K, Dk * (a * a - a * c + c * c) / 3 - 2 * Dk * (c - a) ** 2 / 9,
                                Dk * (a * a + a * c + c * c) / 9, Dk * (a + c) ** 2 / 12 + Dk * (c - a) ** 2 / 36,
-                               Dk * (a + c) ** 2 / 12 + Dk * Cc ** 2 / 4)),
+                               Dk * (a + c) ** 2 / 12 + Dk * Cc ** 2 / 4), same_as="euler-192-219/centroid"),
         note=claim("by the rule of §217 the moment about EF is D(a² + ac + c²)/9 = D·AB²/12 + D·Cc²/4, larger "
                    "than for equal parts Ac = Bc."))
 
@@ -888,3 +895,172 @@ d.witness(Computed("stability-I-box", "M GZ/phi of a heeled box by exact clippin
                    ("stability-I",), B_CASES, compute=lambda cs, dps: _stability(cs, dps, "AB", -1)))
 d.witness(Computed("stability-K-box", "M GZ/phi of a pitched box by exact clipping, G below B",
                    ("stability-K",), B_CASES, compute=lambda cs, dps: _stability(cs, dps, "EF", -1)))
+
+# ---- second pass: the strip, the oblique axes and the areas, by quadrature over the figures themselves -------
+STRIP_CASES = rational_cases(("PM = 2, Pp = 1/2", {PM: 2, Pp: "1/2"}), ("PM = 5/3, Pp = 3/10", {PM: "5/3", Pp: "3/10"}))
+figure_witness("strip-moment", "∫∫ y^2 over the strip Pp wide from AB up to M", ("strip-moment",), STRIP_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, [(0, 0), (cs.params[Pp], 0),
+                                                                      (cs.params[Pp], cs.params[PM]),
+                                                                      (0, cs.params[PM])], dps))
+# the generic rectangle off the origin, at angles whose sine and cosine are rational (3-4-5, 5-12-13)
+GEN_CASES = rational_cases(("m = 3/5, [-1, 2] x [0, 3]", {m: "3/5", X1: -1, Y1: 0, X2: 2, Y2: 3}),
+                           ("m = 5/13, [-3/2, 5/2] x [1/2, 5/2]",
+                            {m: "5/13", X1: "-3/2", Y1: "1/2", X2: "5/2", Y2: "5/2"}))
+
+
+def _generic(cs):
+    return [(cs.params[X1], cs.params[Y1]), (cs.params[X2], cs.params[Y1]), (cs.params[X2], cs.params[Y2]),
+            (cs.params[X1], cs.params[Y2])]
+
+
+def _oblique(cs, dps, normal):
+    """∫∫ (distance from the axis through C)^2 over the generic rectangle; the axis PQ has the direction
+    (n, m), n = sqrt(1 - m^2) taken numerically; *normal* selects PQ (u = mx - ny) or RS (t = nx + my)."""
+    mv = P(cs, m, dps)
+    nv = _sqrt(1 - mv ** 2)
+    if normal:
+        return polygon_integral(lambda X, Y: (mv * X - nv * Y) ** 2, _generic(cs), dps)
+    return polygon_integral(lambda X, Y: (nv * X + mv * Y) ** 2, _generic(cs), dps)
+
+
+figure_witness("moment-PQ-rectangle", "∫∫ u^2 over a rectangle off the origin, u the distance from PQ",
+               ("moment-PQ",), GEN_CASES, lambda cs, dps: _oblique(cs, dps, True))
+figure_witness("moment-RS-rectangle", "∫∫ t^2 over a rectangle off the origin, t the distance from RS",
+               ("moment-RS",), GEN_CASES, lambda cs, dps: _oblique(cs, dps, False))
+figure_witness("generic-area", "∫∫ 1 over the rectangle off the origin", ("area-2D",), GEN_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: 1 + 0 * X * Y, _generic(cs), dps))
+figure_witness("square-area-quadrature", "∫∫ 1 over the square", ("square-area",), SQ,
+               lambda cs, dps: polygon_integral(lambda X, Y: 1 + 0 * X * Y, square(cs, dps), dps))
+figure_witness("rect-area-quadrature", "∫∫ 1 over the rectangle", ("rect-area",), AB_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: 1 + 0 * X * Y, rectangle(cs, dps), dps))
+figure_witness("rhombus-area-quadrature", "∫∫ 1 over the rhombus", ("rhombus-area",), AB_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: 1 + 0 * X * Y, rhombus(cs, dps), dps))
+ELLIPSE_POINTS = rational_cases(("a = 2, b = 1, x = 1/2", {a: 2, b: 1, x: "1/2"}),
+                                ("a = 5/2, b = 3/4, x = 2", {a: "5/2", b: "3/4", x: 2}))
+
+
+def _ellipse_ordinate(cs, dps):
+    """PM: the root in [0, b] of x^2/a^2 + y^2/b^2 = 1, by the Illinois method."""
+    A, B, X = (P(cs, q, 50) for q in (a, b, x))
+    with mpmath.workdps(max(dps, 15)):
+        return mpmath.findroot(lambda yv: (X / A) ** 2 + (yv / B) ** 2 - 1, (mpmath.mpf(0), B), solver="illinois",
+                               tol=mpmath.mpf(10) ** (-max(dps, 15)), maxsteps=400)
+
+
+figure_witness("ellipse-ordinate-root", "the ordinate of the ellipse by root-finding", ("ellipse-ordinate",),
+               ELLIPSE_POINTS, _ellipse_ordinate)
+
+# ---- second pass: spans of the review quoted ------------------------------------------------------------------
+d.quote("I-K-definitions", "§206", r"erit $\int y^2 \cdot w = I$ et $\int x^2 \cdot w = K$",
+        reading=(sp.Matrix([tri(y ** 2), tri(x ** 2)]), sp.Matrix([IT, KT])),
+        note=claim("I = ∫y²w and K = ∫x²w are the moments about AB and EF (read on the generic rectangle)."))
+d.quote("polar-sum", "§206",
+        r"Quare pro eadem sectione aquae summa duorum momentum respectu axium inter se normalium semper est constans",
+        reading=(PT + RT, tri(x ** 2 + y ** 2)),
+        note=claim("the moments about two perpendicular axes through C add up to ∫w·wC², whatever the angle."))
+d.quote("xy-vanishes", "§207", r"Cum ergo totalis valor formulae $\int yx \cdot w$ evanescat",
+        reading=(kite(x * y), 0),
+        note=claim("∫yx·w vanishes for a waterplane symmetric about AB (read on the quadrilateral of §215)."))
+d.quote("equal-moments-all-axes", "§210", r"tum eidem momento aequalia erunt momenta respectu omnium axium obliquorum",
+        reading=(sp.Subs(n ** 2 * Iw + m ** 2 * Kw, Kw, Iw), Iw),
+        note=claim("if K = I the moment n²I + m²K about every oblique axis (§207) equals I."))
+d.quote("square-all-axes", "§210",
+        r"Si ergo sectio aquae fuerit quadratum AEBF, quia momenta eius respectu axium AB et EF inter se sunt "
+        r"aequalia, momenta quoque respectu omnium omnino axium per C transversantium erunt aequalia",
+        reading=(Psq, Ksq, Isq), note=claim("the square has the same moment about every axis through C."))
+
+figure_witness("I-K-rectangle", "∫∫ y^2 and ∫∫ x^2 over a rectangle off the origin", ("I-K-definitions",), GEN_CASES,
+               lambda cs, dps: (polygon_integral(lambda X, Y: Y ** 2, _generic(cs), dps),
+                                polygon_integral(lambda X, Y: X ** 2, _generic(cs), dps)))
+figure_witness("polar-rectangle", "∫∫ (x^2 + y^2) over a rectangle off the origin", ("polar-sum",), GEN_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: X ** 2 + Y ** 2, _generic(cs), dps))
+figure_witness("xy-quadrilateral", "∫∫ xy over the quadrilateral AeBf", ("xy-vanishes",), Q_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: X * Y, quadrilateral(cs, dps), dps))
+SQ_ANGLES = rational_cases(("a = 1, m = 3/5", {a: 1, m: "3/5"}), ("a = 3/2, m = 5/13", {a: "3/2", m: "5/13"}))
+
+
+def _square_oblique(cs, dps):
+    mv = P(cs, m, dps)
+    nv = _sqrt(1 - mv ** 2)
+    return polygon_integral(lambda X, Y: (mv * X - nv * Y) ** 2, square(cs, dps), dps)
+
+
+figure_witness("square-oblique", "∫∫ u^2 over the square, u the distance from an oblique axis through C",
+               ("square-all-axes",), SQ_ANGLES, _square_oblique)
+d.quote("strip-sum-of-squares", "§202",
+        r"omnino congruere cum ea, quae prodit, si singulæ sectionis aquæ particulae multiplicentur per quadrata "
+        r"distantiarum ab axe AB",
+        reading=(sp.Integral(Pp * w ** 2, (w, -PN, PM)), (PM ** 3 + PN ** 3) * Pp / 3),
+        note=claim("for the strip Pp between N and M the particles times their squared distances from AB sum to "
+                   "(PM³ + PN³)Pp/3."))
+d.quote("quadrants-cancel", "§207",
+        r"Hinc igitur valor ipsius $\int yx \cdot w$, qui ex parte ACF oritur aequalis erit et negatus illius "
+        r"valoris, quem portio ACE praebet",
+        reading=(kite(x * y) - kite(x * y, lo=0), -kite(x * y, lo=0)),
+        note=claim("∫yx·w over the lower half equals minus that over the upper half (read on the quadrilateral "
+                   "of §215, the halves below and above AB)."))
+d.quote("quad-area-2D", "§216", r"posito $2D$ pro area totius sectionis aquae",
+        reading=(2 * Dk, (a + c) * b), note=claim("the quadrilateral's area is 2D = (Ac + Bc)·ce."))
+d.quote("quadrant-area-integral", "§219",
+        r"At $b \int dx \sqrt{1 - \frac{x^2}{a^2}}$ exprimit aream quadrantis",
+        reading=(b * sp.Integral(sp.sqrt(1 - x ** 2 / a ** 2), (x, 0, a)), Aq),
+        note=claim("b∫dx√(1 − x²/a²) over 0 ≤ x ≤ a is the area of the elliptic quadrant ACE."))
+STRIP2_CASES = rational_cases(("PM = 2, PN = 1, Pp = 1/2", {PM: 2, PN: 1, Pp: "1/2"}),
+                              ("PM = 5/3, PN = 7/4, Pp = 3/10", {PM: "5/3", PN: "7/4", Pp: "3/10"}))
+figure_witness("strip-both-sides", "∫∫ y^2 over the strip Pp wide from N to M", ("strip-sum-of-squares",),
+               STRIP2_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, [(0, -cs.params[PN]), (cs.params[Pp], -cs.params[PN]),
+                                                                      (cs.params[Pp], cs.params[PM]),
+                                                                      (0, cs.params[PM])], dps))
+figure_witness("quadrant-xy", "∫∫ xy over the lower half of the quadrilateral AeBf", ("quadrants-cancel",), Q_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: X * Y,
+                                                [(0, 0), (cs.params[a], -cs.params[b]), (cs.params[a] + cs.params[c], 0)],
+                                                dps))
+figure_witness("quad-area-quadrature", "∫∫ 1 over the quadrilateral AeBf", ("quad-area-2D",), Q_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: 1 + 0 * X * Y, quadrilateral(cs, dps), dps))
+figure_witness("ellipse-quadrant-quadrature", "a quarter of ∫∫ 1 over the ellipse", ("quadrant-area-integral",),
+               AB_CASES, lambda cs, dps: ellipse_integral(lambda X, Y: 1 + 0 * X * Y, cs.params[a], cs.params[b], dps) / 4)
+d.quote("L-definition", "§217", r"tum ponitur scilicet $L = \int w \cdot w n^2$", reading=(LT, tri((x - xe) ** 2)),
+        note=claim("L, the moment about ef, is ∫w·wn², wn the distance of the particle from ef (read on the "
+                   "generic rectangle, ef at x = x_e)."))
+d.quote("EF-moment-definition", "§217", r"ctu axis EF quod quaeritur $= \int w \cdot w N^2$",
+        reading=(KTe, tri((x - xCT) ** 2)),
+        note=claim("the moment about EF through the centroid is ∫w·wN², wN the distance from EF."))
+GEN_E_CASES = rational_cases(("[-1, 2] x [0, 3], x_e = 5/2", {X1: -1, Y1: 0, X2: 2, Y2: 3, xe: "5/2"}),
+                             ("[-3/2, 5/2] x [1/2, 5/2], x_e = -1", {X1: "-3/2", Y1: "1/2", X2: "5/2", Y2: "5/2", xe: -1}))
+figure_witness("L-rectangle", "∫∫ (x - x_e)^2 over a rectangle off the origin", ("L-definition",), GEN_E_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: (X - P(cs, xe, dps)) ** 2, _generic(cs), dps))
+
+
+def _about_centroid(cs, dps):
+    poly = _generic(cs)
+    xc_ = polygon_integral(lambda X, Y: X + 0 * Y, poly, dps) / polygon_integral(lambda X, Y: 1 + 0 * X * Y, poly, dps)
+    return polygon_integral(lambda X, Y: (X - xc_) ** 2, poly, dps)
+
+
+figure_witness("EF-rectangle", "∫∫ (x - x_C)^2 over a rectangle off the origin, x_C by quadrature",
+               ("EF-moment-definition",), GEN_E_CASES, _about_centroid)
+d.quote("sum-of-cubes", "§201", r"valor huius expressionis $\int (PM^3 + PN^3) Pp$",
+        reading=((PM ** 3 + PN ** 3) * Pp, 3 * sp.Integral(Pp * w ** 2, (w, -PN, PM))),
+        note=claim("the expression to be integrated is three times the second moment about AB (read for one "
+                   "strip Pp between N and M)."))
+d.quote("aggregate", "§202", r"ex quo manifestum est $\int \frac{(PM^3 + PN^3)Pp}{3}$ denotari aggregatum",
+        reading=((PM ** 3 + PN ** 3) * Pp / 3, sp.Integral(Pp * w ** 2, (w, -PN, PM))),
+        note=claim("∫(PM³ + PN³)Pp/3 is the aggregate of the particles times their squared distances from AB "
+                   "(read for one strip)."))
+d.quote("equal-quadrants", "§211", r"quod momenta cum quadrantum ACE et ACF, tum quadrantum BCE et BCF sint aequalia",
+        reading=(kite(y ** 2, lo=0), kite(y ** 2) - kite(y ** 2, lo=0)),
+        note=claim("the parts above and below AB have the same moment about AB (read on the quadrilateral of "
+                   "§215, whose halves are mirror images)."))
+figure_witness("sum-of-cubes-strip", "3 ∫∫ y^2 over the strip Pp wide from N to M", ("sum-of-cubes",), STRIP2_CASES,
+               lambda cs, dps: 3 * polygon_integral(lambda X, Y: Y ** 2,
+                                                    [(0, -cs.params[PN]), (cs.params[Pp], -cs.params[PN]),
+                                                     (cs.params[Pp], cs.params[PM]), (0, cs.params[PM])], dps))
+figure_witness("aggregate-strip", "∫∫ y^2 over the strip Pp wide from N to M", ("aggregate",), STRIP2_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2,
+                                                [(0, -cs.params[PN]), (cs.params[Pp], -cs.params[PN]),
+                                                 (cs.params[Pp], cs.params[PM]), (0, cs.params[PM])], dps))
+figure_witness("lower-half-moment", "∫∫ y^2 over the half of the quadrilateral below AB", ("equal-quadrants",), Q_CASES,
+               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2,
+                                                [(0, 0), (cs.params[a], -cs.params[b]), (cs.params[a] + cs.params[c], 0)],
+                                                dps))

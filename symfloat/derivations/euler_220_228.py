@@ -178,6 +178,15 @@ d.step("branches", (x21, sp.Matrix([xL, xR])), "algebra",
        note="§221: x = a + Y ± a√(1 - y²/b²), the branch with - bounding Ace, with + bounding Bce; "
             "a√(1 - y²/b²) = (a/b)√(b² - y²) for b > 0, the form of §§224-227. x_c = a + Y(b) is the abscissa "
             "Ac of the greatest breadth ce, where both branches meet")
+d.quote("curve", "§221", r"haec aequatio $x = a + Y \pm a \sqrt{1 - \frac{y^2}{b^2}}$, ubi Y denotat",
+        reading=(x21, sp.Matrix([xL, xR])),
+        note=claim("the curves are x = a + Y ± a√(1 − y²/b²) (read as the two branches, − and +)."))
+d.quote("portions", "§222",
+        r"valor $x = a + Y - a \sqrt{1 - \frac{y^2}{b^2}}$ valebit pro portione Ace , alter autem valor "
+        r"$x = a + Y + a \sqrt{1 - \frac{y^2}{b^2}}$ pro portione Bce",
+        reading=(sp.Matrix([sp.Subs(e, y, 0) for e in x21]), sp.Matrix([0, 2 * a])),
+        note=claim("the branch with − bounds the portion Ace (it runs through A, x = 0 at y = 0), the branch with "
+                   "+ the portion Bce (through B, x = 2a)."))
 d.quote("ends", "§221", r"Posito namque $y = 0$, fit x vel $= 0$ vel $= 2a$",
         reading=(sp.Matrix([sp.Subs(e, y, 0) for e in x21]), sp.Matrix([0, 2 * a])),
         note=claim("at y = 0 the two branches give x = 0 and x = 2a (Y vanishes at y = 0)."))
@@ -482,6 +491,9 @@ kefc = integral_step("moment-EF-c", KEFc, 2 * ((xRc - ACcv) ** 3 - (xLc - ACcv) 
               note="∫∫ (x - AC)² over the whole figure for Y = -cyy/bb")
 d.step("AC-c-value", (ACc, ACcv), "algebra", uses=("centroid-c", "first-moment-c", "area-c"))
 BRANCHES_C = sp.Matrix([xLc, xRc])
+d.quote("Y-c", "§227", r"Ponamus esse $Y = \frac{-cyy}{bb},$",
+        reading=(sp.Subs(a - (a + Yc), y, b), c),
+        note=claim("Y = −cyy/bb moves the greatest breadth ce (y = b, x = a + Y(b)) by Oc = c from the middle O."))
 d.quote("curve-c", "§227", r"seu $x = a - \frac{cyy}{bb} + \frac{c}{b} V(bb-yy),$",
         reading=(xRc, a - c * y ** 2 / b ** 2 + c / b * R),
         erratum=Erratum(
@@ -555,7 +567,19 @@ d.quote("moment-grows", "§228",
         "punto axis AB medio C distet, ceteris paribus",
         reading=(sp.Derivative(KEFc, c), c * D / 4),
         note=claim("the moment about EF grows as ef moves away from the middle of AB (the text says 'C', the "
-                   "middle is O): at fixed a, b, D its derivative in c = Oc is cD/4 > 0."))
+                   "middle is O, booked at 'middle-named-C'): at fixed a, b, D its derivative in c = Oc is "
+                   "cD/4 > 0."))
+d.quote("middle-named-C", "§228", r"a punto axis AB medio C distet",
+        reading=(ACc, sp.Subs((xLc + xRc) / 2, y, 0)),
+        erratum=Erratum(
+            "transcription", "medium", r"\text{a puncto axis AB medio } O \text{ distet}",
+            "The midpoint of AB is O (§220: 'existente O puncto axis longitudinalis medio'; the same paragraph "
+            "ends 'a medio punto longitudinis O'), at AO = a; C is the centroid of the figure, at AC = a - c/4 "
+            "(§227), which is not the midpoint for c > 0: read as printed, C would be the midpoint of AB, "
+            "(x_A + x_B)/2 at y = 0. The moment AB²D/8 + ccD/8 grows with Oc = c, the distance of ef from O. "
+            "O and C are alike in the scan; medium.",
+            corrected_reading=(sp.Subs((xLc + xRc) / 2, y, 0), a)),
+        note=claim("the middle of the axis AB, from which the distance of ef is counted, is O (AO = a)."))
 d.quote("curve-c-again", "§228", r"$a = a - \frac{cyy}{bb} + \frac{c}{b}$ $V(bb-yy)$",
         reading=Eq(a, a - c * y ** 2 / b ** 2 + c / b * R),
         erratum=Erratum(

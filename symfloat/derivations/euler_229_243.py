@@ -83,6 +83,9 @@ al = sp.Symbol("alpha", positive=True)   # the α it prints for a
 c1, c2 = sp.symbols("c_1 c_2", real=True)
 Ys = sp.Symbol("Y", real=True)           # the value Y(y) of the function at one ordinate
 n1, k1 = sp.symbols("n_1 kappa_1", positive=True)
+zl = sp.Symbol("z", positive=True)
+Dprime = sp.Symbol("D'", positive=True)   # the stray D' of §241      # the letter z the transcription prints for the digit 2 of '2D'
+aY, bY, gY = sp.symbols("alpha_Y beta_Y gamma_Y", positive=True)   # the coefficients of §231's Y
 
 
 def _beta_value(P, Q, N_, B_):
@@ -176,7 +179,7 @@ DERIVATION = d = Derivation(
             c1: (-1, 1), c2: (-1, 1), Ys: (-1, 1), y: (0, 1), s: (0, 1), m: (0, 1),
             n1: (1, 8), k1: (sp.Rational(1, 10), 1),
             M: (1, 5), V: (1, 5), OG: (0, 2), EF: (1, 3), AB: (3, 12), Dw: (1, 10), CD: (1, 3),
-            mu: (6, 12), nu: (6, 12)},
+            mu: (6, 12), nu: (6, 12), zl: (1, 3), Dprime: (1, 10), aY: (1, 2), bY: (1, 2), gY: (1, 2)},
     assumptions=("a, b, c > 0; the exponents n > 0 and κ > 0 (the integrals converge); 0 < y < b",
                  "Y(y) is sampled as c_1 yⁿ/bⁿ + c_2 y²ⁿ/b²ⁿ (a function vanishing at y = 0, of the kind §231 "
                  "allows); the rules derived for it are linear or quadratic in Y and hold termwise",
@@ -241,6 +244,24 @@ d.quote("area", "§229", r"area AEB prodibit $= 2a \int dy \left(1 - \frac{y^n}{
         erratum=Erratum("transcription", "high", r"= 2a \int dy \left(1 - \frac{y^n}{b^n}\right)^\kappa = D",
                         "x for κ, as in the chord Mm.", corrected_reading=(D, 2 * a * J(0, k))),
         note=claim("the area of AEB is D = 2a∫dy(1 − yⁿ/bⁿ)^κ, whatever Y (the chord does not contain Y)."))
+
+KAPPA_AS_X = "euler-229-243/chord"
+d.quote("portion-Ace", "§229", r"$x = a + Y - a\left(1 - \frac{y^n}{b^n}\right)^x = AP$",
+        reading=(XA, a + Ys - a * Rx),
+        erratum=Erratum("transcription", "high", r"x = a + Y - a\left(1 - \frac{y^n}{b^n}\right)^\kappa = AP",
+                        "The exponent of the family is κ (§231–236 print it and tabulate κ = 1/2, 1, 3/2, …); x is "
+                        "the abscissa AP itself and cannot be its own exponent. Only with κ in both portions is "
+                        "Ap − AP the chord Mm = 2a(1 − yⁿ/bⁿ)^κ the text derives next. The Greek κ read as x, the "
+                        "fault booked at the chord Mm ('chord').",
+                        corrected_reading=(XA, a + Ys - a * R), same_as=KAPPA_AS_X),
+        note=claim("the portion Ace is x = a + Y − a(1 − yⁿ/bⁿ)^κ = AP."))
+d.quote("portion-Bce", "§229", r"aequatio $x = a + Y + a\left(1 - \frac{y^n}{b^n}\right)^x = Ap$",
+        reading=(XB, a + Ys + a * Rx),
+        erratum=Erratum("transcription", "high", r"x = a + Y + a\left(1 - \frac{y^n}{b^n}\right)^\kappa = Ap",
+                        "κ read as x, the fault booked at the chord Mm ('chord'): the portion Bce is "
+                        "x = a + Y + a(1 − yⁿ/bⁿ)^κ, and Ap − AP = 2a(1 − yⁿ/bⁿ)^κ.",
+                        corrected_reading=(XB, a + Ys + a * R), same_as=KAPPA_AS_X),
+        note=claim("the portion Bce is x = a + Y + a(1 − yⁿ/bⁿ)^κ = Ap."))
 
 # ================================================================ §230: moments about AB and about the normal through O
 MO_val = 2 * n * k * a ** 3 / b ** n * J(n, 3 * k - 1) + 2 * a * JY(2, 0, k)
@@ -342,6 +363,34 @@ d.quote("moment-EF", "§231",
                         "be a fourth power of a length).", corrected_reading=(KEF, KEF_val)),
         note=claim("the moment of the whole figure about EF through C is (4nκa³/bⁿ)∫yⁿ(…)^{3κ−1} + 4a∫Y²R "
                    "− 8a²(∫YR)²/D."))
+d.quote("axis-EF-named", "§230", r"Ad momentum autem huius figurae respectu axis longitudinalis EF",
+        reading=(2 * IAB, 2 * MO - 2 * SO ** 2 / D),
+        erratum=Erratum("misprint", "medium", r"\text{respectu axis latitudinalis EF}",
+                        "EF is the latitudinal axis throughout (§198, §203, §220; §231 'momentum totius figurae "
+                        "respectu axis latitudinalis EF'); the longitudinal axis is AB, whose moment the sentence "
+                        "before found. The moment determined next, from the normal to AB through O moved to the "
+                        "parallel through C, is the one about EF. Read as printed, the moment about the "
+                        "longitudinal axis (2·I_AEB) would be 2M_O − 2S_O²/D, which it is not. A word of the "
+                        "print (a scan does not exchange 'latitudinalis' for 'longitudinalis'); medium.",
+                        corrected_reading=(KEF, 2 * MO - 2 * SO ** 2 / D)),
+        note=claim("the moment about the axis EF through the centroid C is found from the moment about the "
+                   "parallel through O (read with the names of §231: 2M_O less 2S_O²/D)."))
+Y_printed = aY * y ** n + bY * y ** (n - 1) + gY * y ** (n - 2)
+Y_corrected = aY * y ** n + bY * y ** (2 * n) + gY * y ** (3 * n)
+d.quote("Y-family", "§231", r"$Y = \alpha y^n + \beta y^{n-1} + \gamma y^{n-2} + \dots + \text{etc.}$",
+        reading=(sp.Subs(Y_printed, (y, n), (0, 2)), 0),
+        erratum=Erratum("transcription", "medium", r"Y = \alpha y^n + \beta y^{2n} + \gamma y^{3n} + \dots",
+                        "The curve must meet AB at A and B: AP = Y(0) at y = 0, so Y vanishes there (§221: "
+                        "'quae euaneat posito y = 0'). The printed terms y^{n−1}, y^{n−2} do not: at n = 2 (the "
+                        "ellipse of §236) γy^{n−2} = γ at y = 0 (read so, the '+ etc.' dropped), at n = 1 βy⁰ = β "
+                        "and y^{−1} is infinite. Nor do they reduce to the area integral ∫dy(1 − yⁿ/bⁿ)^κ = "
+                        "D/(2a), as the sentence claims: at n = 2, κ = 1/2, ∫y(1 − y²/b²)^{1/2}dy / "
+                        "∫(1 − y²/b²)^{1/2}dy = (b²/3)/(πb/4) = 4b/(3π), no rational multiple of b, while the "
+                        "powers y^{jn} reduce by the rational factors of the recurrence (§232 uses y^n and y^{2n}). "
+                        "The exponents 2n, 3n read as the descending n − 1, n − 2 of an ordinary polynomial; the "
+                        "print cannot be seen (a slip of 1749 is not excluded): medium.",
+                        corrected_reading=(sp.Subs(Y_corrected, (y, n), (0, 2)), 0)),
+        note=claim("Y is a sum of powers of y vanishing at y = 0; read at n = 2, y = 0 (the point A)."))
 d.quote("area-integral", "§231", r"$\int dy (1 - \frac{y^n}{b^n})^{\kappa} = \frac{D}{2\alpha}$",
         reading=(J(0, k), D / (2 * al)),
         erratum=Erratum("transcription", "high", r"\int dy (1 - \frac{y^n}{b^n})^{\kappa} = \frac{D}{2a}",
@@ -372,6 +421,9 @@ d.quote("Y-c-first", "§232",
                         corrected_reading=(JY(1, 0, k, 0, -c, 0), -c / b ** n * J(n, k), -c / m1 * J(0, k),
                                            -c * D / (2 * a * m1))),
         note=claim("with Y = −cyⁿ/bⁿ (Oc = c), ∫Y dy R = −cD/(2a(n(κ+1)+1))."))
+d.quote("Y-c", "§232", r"Sit primum antequam pro κ valores definitos accipiamus, $Y = \frac{-cy^n}{b^n}$",
+        reading=(sp.Subs(a - XA, (Ys, y), (-c * y ** n / b ** n, b)), c),
+        note=claim("with Y = −cyⁿ/bⁿ the two portions meet at y = b at the distance c from O (towards A)."))
 d.quote("Ac-Oc", "§232", r"$A_c = a - c$ et $O_c = c$",
         reading=(sp.Matrix([sp.Subs(XA, (Ys, y), (-c, b)), a - sp.Subs(XA, (Ys, y), (-c, b))]), sp.Matrix([a - c, c])),
         note=claim("with Y = −cyⁿ/bⁿ the greatest breadth ef (y = b, where both portions meet) lies at Ac = a − c, "
@@ -743,6 +795,29 @@ d.quote("EF-exceeds-AB", "§241", r"$\frac{EF^2.D}{\nu v} > OG$ multo magis erit
         reading=(sp.Subs(AB ** 2 * Dw / (mu * V) - EF ** 2 * Dw / (nu * V), nu, mu), Dw * (AB ** 2 - EF ** 2) / (mu * V)),
         note=claim("if the quantity for AB exceeds OG, the one for EF does so much more, AB being much longer than "
                    "EF: at μ = ν (the numbers 'differ little') the excess is D(AB² − EF²)/(μV) > 0 (D' read as D)."))
+d.quote("deeper-G-more-stable", "§239",
+        r"Stabilitas porro hoc casu eo erit maior, quo profundius centrum grauitatis G infra centrum magnitudinis O cadet.",
+        reading=(sp.Derivative(SABp, OG), M),
+        note=claim("with G below O the stability M(EF²D/(μV) + OG) grows with the depth OG of G below O: its "
+                   "derivative in OG is M > 0."))
+NU_FOR_MU = "euler-229-243/stability-AB-241"
+d.quote("EF-condition-241", "§241", r"cum enim fuerit $\frac{EF^2.D}{\nu v} > OG$",
+        reading=(SAB / M + OG, EF ** 2 * Dw / (nu * V)),
+        erratum=Erratum("transcription", "low", r"\frac{EF^2.D}{\mu V} > OG",
+                        "The stability about AB is positive when EF²D/(μV) exceeds OG (§239); §241 writes ν for "
+                        "the number of the longitudinal moment here, the swap of μ and ν booked at its first "
+                        "place ('stability-AB-241', low: consistent through §241, so perhaps the print's).",
+                        corrected_reading=(SAB / M + OG, EF ** 2 * Dw / (mu * V)), same_as=NU_FOR_MU),
+        note=claim("the condition for stability about AB is EF²D/(μV) > OG."))
+d.quote("AB-condition-241", "§241", r"multo magis erit $\frac{AB^2.D'}{\mu v} > OG$",
+        reading=(SEF / M + OG, AB ** 2 * Dprime / (mu * V)),
+        erratum=Erratum("transcription", "low", r"\frac{AB^2.D}{\nu V} > OG",
+                        "About EF the number is ν (§238: K = AB²D/ν); §241 writes μ, the swap of μ and ν booked "
+                        "at 'stability-AB-241'. The prime of D' is the scan's: D (half the waterplane area) "
+                        "carries none anywhere else, and the same fraction is printed with D in the next "
+                        "sentence.",
+                        corrected_reading=(SEF / M + OG, AB ** 2 * Dw / (nu * V)), same_as=NU_FOR_MU),
+        note=claim("the condition for stability about EF is AB²D/(νV) > OG."))
 d.quote("ratio-16", "§241", r"$\frac{AB^2.D}{\mu v}$ circiter decies et sexies maius fit quam $\frac{EF^2.D}{\nu v}$",
         reading=(sp.Subs((AB ** 2 * Dw / (mu * V)) / (EF ** 2 * Dw / (nu * V)), (AB, nu), (4 * EF, mu)), 16),
         note=claim("with AB = 4EF and μ ≈ ν the quantity for EF is about 16 times that for AB (read at μ = ν)."))
@@ -772,6 +847,45 @@ d.quote("stability-CD", "§243", r"prodit $= M(\frac{EF^2}{vCD} - OG)$",
                         "With V = D·CD, EF²D/(μV) = EF²/(μ·CD): the v left in the denominator is μ (V is gone).",
                         corrected_reading=(M * (Iw / Vwe - OG), M * (EF ** 2 / (mu * CD) - OG))),
         note=claim("with V = D·CD the stability about AB is M(EF²/(μ·CD) − OG)."))
+
+
+# the rectangle of §213 (half-length a, half-breadth b, D_r half its area) tells the factor of D in the area
+rect_whole = sp.Integral(2 * b, (xx, -a, a))
+d.quote("waterplane-area", "§238", r"Denique sit area sectionis aquae $= z D$",
+        reading=(sp.Matrix([rect_whole, Ir]), sp.Matrix([zl * Dr, (2 * b) ** 2 * (rect_whole / zl) / 6])),
+        erratum=Erratum("transcription", "high", r"\text{Denique sit area sectionis aquae } = 2D",
+                        "D is half the waterplane area throughout (§212: 'aream ... ponamus = 2D, quam "
+                        "designationem semper ... adhibebimus'; §237: 'D semissim areae sectionis aquae'), and "
+                        "the same sentence's I = EF²D/μ with μ = 6 for the rectangle (§237) needs the area 2D: "
+                        "for the rectangle of §213 the area 4ab is 2·D, and with the area z·D, I = EF²D/6 would "
+                        "give (8/(3z))ab³ instead of (4/3)ab³ (read with the rectangle). No z is defined in the "
+                        "text: the digit 2 read as the letter z; high.",
+                        corrected_reading=(sp.Matrix([rect_whole, Ir]), sp.Matrix([2 * Dr, (2 * b) ** 2 * Dr / 6]))),
+        note=claim("the waterplane has the area 2D (D half of it), I = EF²D/μ and K = AB²D/ν; read with the "
+                   "rectangle of §213, for which μ = 6."))
+d.quote("waterplane-area-grows", "§239", r"tum enim non solum area eius $z D$ eo fiet maior",
+        reading=(rect_whole, zl * Dr),
+        erratum=Erratum("transcription", "high", r"\text{tum enim non solum area eius } 2D \text{ eo fiet maior}",
+                        "The area of the waterplane is 2D (§212, §237, and the sentence of §238 with the same "
+                        "'z D', booked at 'waterplane-area'): the digit 2 read as z. The claim itself holds: at "
+                        "fixed M and V a larger waterplane raises EF²D/(μV) through D and through EF.",
+                        corrected_reading=(rect_whole, 2 * Dr), same_as="euler-229-243/waterplane-area"),
+        note=claim("the waterplane's area 2D grows with the waterplane (read with the rectangle of §213)."))
+MU_AS_V = "euler-229-243/stability-CD"
+for name, locator, excerpt in (
+        ("excess-maximal", "§242", r"excessus quantitatis $\frac{EF^2.D}{vv}$ supra OG"),
+        ("excess-notable", "§242", r"ut quantitas $\frac{EF^2.D}{vv}$ notabiliter intervallum OG superet"),
+        ("excess-estimate", "§243", r"haec quantitas $\frac{EF^2.D}{vv}$ circiter praebeat")):
+    d.quote(name, locator, excerpt,
+            reading=(SAB / M + OG, EF ** 2 * Dw / (V * V)),
+            erratum=Erratum("transcription", "medium", r"\frac{EF^2.D}{\mu V}",
+                            "The quantity whose excess over OG is the stability about AB is EF²D/(μV) (§239: "
+                            "M(EF²D/(μV) − OG)). Read with v as the volume V (the module's reading of §239–243), 'vv' makes it "
+                            "EF²D/V², not even a length. The v stands for μ, the confusion of μ, ν and v booked "
+                            "at §243's EF²/(v·CD) ('stability-CD'); with V = D·CD the quantity becomes "
+                            "EF²/(μ·CD) there.",
+                            corrected_reading=(SAB / M + OG, EF ** 2 * Dw / (mu * V)), same_as=MU_AS_V),
+            note=claim("the stability about AB is M times the excess of EF²D/(μV) over OG."))
 
 
 # ================================================================ witnesses: quadrature over the figures
@@ -1082,3 +1196,30 @@ KITE = (Case({M: 3, V: 3, AB: 3, Dw: sp.Rational(3, 2), mu: 12, nu: sp.Rational(
              data={"s": sp.Rational(1, 2)}, label="kite prism, s = 1/2, OG = 1/4"))
 _w("stability-kite-prism-EF", "M·GZ/φ of the upright kite prism pitched about EF, by exact clipping, G above O",
    ("stability-EF",), KITE, lambda cs, dps: _heeled_stability(cs, dps, 1, _kite_prism, 2))
+
+# second pass: the moment named 'about the longitudinal axis EF' of §230 is the one about the latitudinal EF
+_w("family-axis-EF-named", "∫∫(x − x_C)² over the whole figure, x_C by quadrature", ("axis-EF-named",), GENERIC,
+   lambda cs, dps: _K(*_generic(cs, dps)[2][:3]))
+
+
+def _by_parts(cs, dps):
+    """∫₀ᵇ yⁿ(1 − yⁿ/bⁿ)^{3κ−1} dy / bⁿ by quadrature (tanh-sinh at 50 digits; in float64 Gauss-Legendre after
+    y = b(1 − (1 − w)⁴), as across the chords)."""
+    B, nv, kv = _params(cs, dps, b, n, k)
+    if dps > 15:
+        return mpmath.quad(lambda yv: yv ** nv * (1 - (yv / B) ** nv) ** (3 * kv - 1), [0, B]) / B ** nv
+    yv = B * (1 - (1 - GL_U) ** 4)
+    jac = 4 * B * (1 - GL_U) ** 3
+    return float(np.sum(GL_UW * jac * yv ** nv * (1 - (yv / B) ** nv) ** (3 * kv - 1))) / B ** nv
+
+
+_w("by-parts-quadrature", "∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy/bⁿ by 1-D quadrature", ("by-parts-3k",),
+   tuple(Case({b: sp.Rational(bv), n: nv, k: sp.Rational(kv)}, label=f"b = {bv}, n = {nv}, κ = {kv}")
+         for bv, nv, kv in (("1", 2, "1/2"), ("3/4", 3, "3/2"), ("2", 1, "1"))), _by_parts)
+d.quote("c-zero-suffices", "§234",
+        r"Ponamus esse $c=0$, quia si hoc casu momentum respectu axis EF fuerit cognitum, ex eo idem momentum pro "
+        r"valore quocunque ipsius c inueniri potest",
+        reading=(Kc, K0g + 2 * n ** 2 * (k + 1) * c ** 2 * D / (m1 ** 2 * m2)),
+        note=claim("the moment about EF for any c is that for c = 0 plus the term of §232 in c alone."))
+_w("c-zero-suffices-quadrature", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
+   ("c-zero-suffices",), CFAM, lambda cs, dps: _K(*_cfig(cs, dps)[:3]))

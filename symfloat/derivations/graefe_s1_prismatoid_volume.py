@@ -7,10 +7,11 @@ pyramid over each triangle of ``G`` and one tetrahedron for each side of
 ``V = (1/3) (2 P) d`` (``P`` the mid-section parallelogram, ``d`` the
 distance of the two skew edges).  Result: ``I = h/3 ((G + g)/2 + 2 D)``.
 """
+import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.witness import Case, HullWitness
+from symfloat.engine.witness import Case, Computed, HullWitness
 from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
 from symfloat.model.claim import as_printed
 
@@ -21,6 +22,39 @@ XA, XB, XC, XD = (sp.Matrix(sp.symbols(f"x_{n} y_{n} z_{n}")) for n in "ABCD")
 Vt, Ve, Pt, dist, Tri = sp.symbols("V_ABCD V_ABCE P_abcd d T_ABE", positive=True)
 
 coords = [c for v in (XA, XB, XC, XD) for c in v]
+# Fig. 3: the base G = EFGHI in the plane z = 0 with the point O, the top g = ABCD at z = h; plane
+# coordinates (u, v) of every point, the mid-section D at z = h/2 (the midpoints of the lateral edges)
+FIG3 = {q: sp.Matrix(sp.symbols(f"u_{q} v_{q}", real=True)) for q in "ABCDEFGHIO"}
+fig3_coords = [c for v in FIG3.values() for c in v]
+
+
+def _mid(p, q):
+    return (FIG3[p] + FIG3[q]) / 2
+
+
+def _area(*pts):
+    """Signed area of the polygon with the given plane vertices (shoelace)."""
+    return sum(pts[i][0] * pts[(i + 1) % len(pts)][1] - pts[(i + 1) % len(pts)][0] * pts[i][1]
+               for i in range(len(pts))) / 2
+
+
+def _volume_squared(p, q, r, o):
+    """Squared volume of the tetrahedron p q r o with p, q in the top plane z = h and r, o in the base."""
+    lift = {p: h, q: h, r: 0, o: 0}
+    P3 = {t: sp.Matrix([*FIG3[t], lift[t]]) for t in (p, q, r, o)}
+    return ((P3[q] - P3[p]).dot((P3[r] - P3[p]).cross(P3[o] - P3[p])) / 6) ** 2
+
+
+# the points of D named in the text: k, l, m, n the midpoints of OA, OB, OC, OD; a ... i those of the lateral
+# edges AE, BE, BF, BG, CG, CH, DH, DI, AI (read off the parallelograms aklb, lmde, mngf, knhi and the
+# triangles mef, ngh, kia, cld of the text)
+MID3 = {"k": _mid("O", "A"), "l": _mid("O", "B"), "m": _mid("O", "C"), "n": _mid("O", "D"),
+        "a": _mid("A", "E"), "b": _mid("B", "E"), "c": _mid("B", "F"), "d": _mid("B", "G"), "e": _mid("C", "G"),
+        "f": _mid("C", "H"), "g": _mid("D", "H"), "h": _mid("D", "I"), "i": _mid("A", "I")}
+
+
+def _tri(name):
+    return _area(*(MID3[q] for q in name))
 DERIVATION = d = Derivation(
     id="graefe-s1-prismatoid-volume",
     source="graefe",
@@ -28,7 +62,8 @@ DERIVATION = d = Derivation(
     locator="§1",
     summary="Volume of a tetrahedron from its mid-section parallelogram; the prismatoid "
             "cut into pyramids and tetrahedra; I = h/3 ((G+g)/2 + 2D).",
-    domain={**{s: (1, 20) for s in (G, g, D, h)}, **{c: (-6, 6) for c in coords}, P: (1, 20)},
+    domain={**{s: (1, 20) for s in (G, g, D, h)}, **{c: (-6, 6) for c in coords + fig3_coords},
+            P: (1, 20)},
     constraints=(D > G / 4 + g / 4,),
     assumptions=("G, g, D, h > 0",
                  "the mid-section is larger than the halved bases together (D > G/4 + g/4), "
@@ -126,6 +161,34 @@ d.quote("lemma-statement", "§1 tetrahedron lemma",
 d.quote("parallelogram-half-triangle", "§1 tetrahedron lemma",
         r"ist halb so gross als das Dreieck  $ABE$",
         reading=(Pt, Tri / 2))
+XM, XN, XQ = (XA + XB) / 2, (XA + XE) / 2, (XB + XE) / 2   # the midpoints m, n, q of AB, AE, BE
+
+
+def _area_squared(p, q, r):
+    """Squared area of the triangle p q r in space."""
+    w_ = (q - p).cross(r - p)
+    return w_.dot(w_) / 4
+
+
+d.quote("quarter-triangles", "§1 tetrahedron lemma", r"und  $mnb$ ,  $Bnq$  diesen flächengleich sind",
+        reading=(sp.Matrix([_area_squared(XM, XN, mid["b"]), _area_squared(XB, XN, XQ)]),
+                 sp.Matrix([_area_squared(XA, XM, XN)] * 2)),
+        erratum=Erratum("transcription", "medium", r"mnB,\ Bnq \text{ diesen flächengleich}",
+                        "m, n, q are the midpoints of AB, AE, BE and n is joined with B: the median Bn cuts the "
+                        "quadrilateral mBqn left between the corner triangles Amn and nqE into mnB and Bnq, each "
+                        "half of ABn or BnE, i.e. a quarter of ABE like Amn. The lower-case b of the print is the "
+                        "corner of the mid-section abcd (the midpoint of BC), which lies outside the plane ABE: "
+                        "the triangle mnb has in general another area (read here as squared areas in the "
+                        "coordinates of the lemma). The capital B read as b by the scan (it is joined with n in "
+                        "the same sentence); medium, since a case slip of the compositor cannot be excluded.",
+                        corrected_reading=(sp.Matrix([_area_squared(XM, XN, XB), _area_squared(XB, XN, XQ)]),
+                                           sp.Matrix([_area_squared(XA, XM, XN)] * 2))),
+        note="the sentence proves that the triangle abc is a quarter of ABE: Amn and nqE are congruent to it, "
+             "the two triangles between them have their area")
+d.quote("height-is-edge-distance", "§1 tetrahedron lemma",
+        r"so ist die Höhe desselben gleich dem kürzesten Abstand der Kanten  $CD$  und  $AB$  des Tetraeders  $ABCD$",
+        reading=(3 * Ve / Tri, dist), note="the height of ABCE over the base ABE is three times its volume over "
+                                           "the base's area")
 d.quote("lemma-conclusion", "§1 tetrahedron lemma",
         r"Mithin ist der Inhalt des Tetraeders  $ABCD$  gleich dem des Tetraeders  $ABCE$ , dessen Basis gleich "
         r"der doppelten Durchschnittsfläche  $abcd$  und dessen Höhe gleich dem kürzesten Abstand der beiden "
@@ -136,10 +199,56 @@ d.quote("pyramid-over-g", "§1 prismatoid volume",
 d.quote("pyramids-over-G", "§1 prismatoid volume",
         r"deren Basis zusammen  $= G$ , deren Höhen  $= h$ , deren Inhalt zusammen  $= \frac{G h}{3}$",
         reading=Eq(V2, G * h / 3))
+g3 = _area(*(FIG3[q] for q in "ABCD"))       # the top g of Fig. 3
+d.quote("tetrahedra-list", "§1 prismatoid volume", r"nämlich ABOE, BCOG, DCOH, ADOL",
+        unreadable="'L' names no point of Fig. 3: its points are the corners A-D of g, E-I of G, O and the "
+                   "midpoints k, l, m, n; the fourth tetrahedron has no fourth vertex as printed",
+        erratum=Erratum("transcription", "medium", r"ABOE,\ BCOG,\ DCOH,\ ADOI",
+                        "One tetrahedron for each side of g, joining it with a segment from O to a corner of G: "
+                        "the text pairs the edges AB/EO, BC/OG, DC/OH, AD/OI (line 'Da nun die Höhe h zugleich "
+                        "der kürzeste Abstand der Kanten ...'), and the parallelogram knhi (k, n, h, i the "
+                        "midpoints of OA, OD, DI, AI) is named as the mid-section of the fourth. So the fourth "
+                        "is ADOI, and each tetrahedron has by the lemma the volume (1/3)(2P)h with P its "
+                        "parallelogram aklb, lmde, mngf, knhi (checked as squared volumes in the plane "
+                        "coordinates of Fig. 3, top at height h). An I read as L by the scan; medium (the print "
+                        "cannot be seen).",
+                        corrected_reading=(sp.Matrix([_volume_squared(*t) for t in ("ABEO", "BCGO", "DCHO", "ADIO")]),
+                                           sp.Matrix([(sp.Rational(2, 3) * h * _area(*(MID3[q] for q in par))) ** 2
+                                                      for par in ("aklb", "lmed", "mngf", "knhi")]))),
+        note="the parallelograms' corners in their cyclic order (lmde of the text as l m e d)")
 d.quote("mid-section-g", "§1 prismatoid volume",
         r"dessen Inhalt, weil auf der halben Höhe der Pyramide  $ABCO$ ,  $= \frac{g}{4}$",
-        reading=(g * sp.UnevaluatedExpr(sp.Rational(1, 2)) ** 2, g / 4),
-        note="read with the reason the print gives: the mid-section is g scaled by (1/2)^2")
+        reading=(_tri("klm"), g3 / 4),
+        erratum=Erratum("transcription", "low", r"\text{Pyramide } ABCDO, \ = \frac{g}{4}",
+                        "The polygon klmn (k, l, m, n the midpoints of OA, OB, OC, OD) is the mid-section of "
+                        "the pyramid ABCDO of group 1 (base g = ABCD, apex O), g scaled by 1/2: area g/4. The "
+                        "pyramid ABCO of the print has the triangle ABC for its base; its mid-section klm has "
+                        "the area ABC/4, not g/4 (read in the plane coordinates of Fig. 3). A D dropped from "
+                        "the name given to the same pyramid a few lines before (ABCDO); low, since the print may "
+                        "have dropped it as well as the scan.",
+                        corrected_reading=(_area(*(MID3[q] for q in "klmn")), g3 / 4)),
+        note="read with the printed pyramid: its mid-section is the triangle of the midpoints of OA, OB, OC")
+d.quote("mid-section-triangles", "§1 prismatoid volume",
+        r"$mef$ ,  $ngh$ ,  $kia$ ,  $blo$ ,  $cld$  als  $G$  Dreiecke enthält",
+        unreadable="'o' names no point of the mid-section D = abcdefghi nor of the construction (its midpoints "
+                   "are k, l, m, n): the fourth triangle has no third vertex as printed",
+        erratum=Erratum("transcription", "medium", r"mef,\ ngh,\ kia,\ blc,\ cld",
+                        "The triangles are the mid-sections of the pyramids EOFB, FOGB, GOHC, HOID, IOEA: each "
+                        "is the triangle of the midpoints of the three edges from the apex. For EOFB these are "
+                        "b, l, c (the midpoints of BE, BO, BF; the parallelograms aklb and lmde of the text fix "
+                        "b and c as the midpoints of BE and BF, d as that of BG), so the fourth triangle is blc; "
+                        "the others are mef, ngh, kia, cld as printed. Together they are G/4 (checked with signed "
+                        "areas in the plane coordinates of Fig. 3, for any O). A c read as o by the scan; "
+                        "medium.",
+                        corrected_reading=(sum(_tri(t) for t in ("mef", "ngh", "kia", "lbc", "lcd")),
+                                           _area(*(FIG3[q] for q in "EFGHI")) / 4)),
+        note="the triangles' vertices are ordered as the base triangles O E F, O F G, ... (blc as l b c)")
+
+d.quote("mid-section-triangles-sum", "§1 prismatoid volume",
+        r"ihr Inhalt beträgt also zusammen  $= \frac{G}{4}$",
+        reading=(sum(_tri(t) for t in ("mef", "ngh", "kia", "lbc", "lcd")), _area(*(FIG3[q] for q in "EFGHI")) / 4),
+        note="the five mid-sections (blc for the printed blo, see 'mid-section-triangles') together, as signed "
+             "areas in the plane coordinates of Fig. 3: G/4 for any point O of the base")
 
 MINUS_AS_EQUALS = ("The scan read the minus sign (a long dash in the print) as '='. The same term is quoted "
                    "correctly in §3 ('für deren Inhalt wir zusammen fanden h/3{2D - (G+g)/2}'), so the "
@@ -216,3 +325,34 @@ d.witness(HullWitness("pyramids", "volume of random pyramids (hull and slices)",
 d.witness(HullWitness("prismatoids", "volume of random convex prismatoids (hull and slices)",
                       ("volume-sum", "volume-collected", "prismatoid-volume"),
                       tuple(_prismatoid_case(s) for s in range(4)), quantity="volume"))
+
+
+def _pyramid_on_G_case(seed):
+    pts = random_prismatoid(seed, apex_top=True)
+    Gv, _, _, hv = prismatoid_parameters(pts)
+    return Case({G: sp.Rational(Gv.numerator, Gv.denominator), h: sp.Rational(hv.numerator, hv.denominator)},
+                pts, f"random pyramid #{seed} standing on G")
+
+
+d.witness(HullWitness("pyramids-on-G", "volume of random pyramids standing on G (hull and slices)",
+                      ("pyramids-over-G",), tuple(_pyramid_on_G_case(s) for s in range(3)), quantity="volume"))
+
+
+def _heron_halves(case, dps):
+    """The parallelogram abcd (a, b, c, d the midpoints of AC, BC, BD, AD) as the triangles abc and acd, and the
+    triangle ABE (E = B + D - C), each by Heron's formula from its side lengths; returns abcd (= ABE/2)."""
+    V = {n: mpmath.matrix([mpmath.mpf(int(v)) for v in case.data[i]]) for i, n in enumerate("ABCD")}
+    m_ = {"a": (V["A"] + V["C"]) / 2, "b": (V["B"] + V["C"]) / 2, "c": (V["B"] + V["D"]) / 2,
+          "d": (V["A"] + V["D"]) / 2}
+
+    def heron(p, q, r):
+        x_, y_, w_ = mpmath.norm(p - q), mpmath.norm(q - r), mpmath.norm(r - p)
+        s_ = (x_ + y_ + w_) / 2
+        return mpmath.sqrt(s_ * (s_ - x_) * (s_ - y_) * (s_ - w_))
+
+    return heron(m_["a"], m_["b"], m_["c"]) + heron(m_["a"], m_["c"], m_["d"])
+
+
+d.witness(Computed("mid-section-heron", "the mid-section abcd of random tetrahedra by Heron's formula",
+                   ("parallelogram-half-triangle",), tuple(_tetrahedron_case(s) for s in range(3)),
+                   compute=_heron_halves))

@@ -25,7 +25,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.quadrature import composite_simpson
-from symfloat.engine.witness import Case, Computed, ConvergenceOrder, SectionIntegral
+from symfloat.engine.witness import Case, Computed, ConvergenceOrder, PlaneSections, SectionIntegral
 
 G, g, D, h, z, t = sp.symbols("G g D h z t", positive=True)
 r, p, x, m = sp.symbols("r p x m", positive=True)
@@ -146,6 +146,9 @@ d.quote("ellipsoid-volume-3", "§2 ellipsoid",
 d.quote("half-ellipsoid", "§2 half ellipsoid", r"$$I = \frac{2ab^2\pi}{3}. —$$",
         reading=(I_h, 2 * a * b ** 2 * pi / 3))
 
+d.quote("half-ellipsoid-x-a", "§2 half ellipsoid", r"Setzt man hierin  $x = a$ , so kommt für das halbe Ellipsoid",
+        reading=(sp.Subs(ell_4, x, a), I_h), note="the segment of height x = a is the half ellipsoid")
+
 # ---- Simpson's rule ------------------------------------------------------------------------------
 d.step("slab-a-c", Eq(I1, prismatoid(a, c, b, 2 * m)), "lemma",
        uses=("graefe-s1-prismatoid-volume:volume-collected",), result=I1,
@@ -228,15 +231,30 @@ d.quote("simpson-rule", "§2 Simpson's rule", r"$$I = m \{ a + 4b + 2c + 4d + 2e
 
 # the claims in words
 Y = [sp.Symbol(f"y_{i}", positive=True) for i in range(7)]
+SIMPSON_AREAS = (m / 3 * sum(w * y for w, y in zip(simpson_weights(6), Y))).xreplace(dict(zip(Y, A_sec)))
 d.quote("simpson-identical", "§2 Simpson's rule",
         r"Diese Formel ist mit der Simpson'schen Formel zur Berechnung von Flächen, die von einer Curve "
         r"eingeschlossen sind, identisch, mit dem Unterschiede, dass dort die Grössen a, b, c etc. die Ordinaten "
         r"der begränzenden Curve bedeuten, während sie hier die Areale der Theilungsebenen bezeichnen.",
-        reading=(I, (m / 3 * sum(w * y for w, y in zip(simpson_weights(6), Y))).xreplace(dict(zip(Y, A_sec)))),
+        reading=(3 * simp_3, SIMPSON_AREAS),
+        erratum=Erratum("claim", "high",
+                        r"I = \frac{m}{3}\{a + 4b + 2c + 4d + 2e + 4f + g\} \text{ is identical with Simpson's rule; "
+                        r"the printed } I = m\{\dots\} \text{ is three times it}",
+                        "'Diese Formel' is the one printed just above, I = m {a + 4b + 2c + 4d + 2e + 4f + g}. "
+                        "Simpson's rule for the ordinates y_0, ..., y_6 at the spacing m is "
+                        "m/3 (y_0 + 4y_1 + 2y_2 + 4y_3 + 2y_4 + 4y_5 + y_6); with the ordinates replaced by the "
+                        "section areas the printed formula is three times it, not identical with it (y = x^2 "
+                        "on [0, 6], m = 1: the area is 72, Simpson's rule gives 216/3 = 72, the printed form "
+                        "216; a prism of constant section A and length 6m: 6mA, printed 18mA). The sentence "
+                        "holds for the formula derived with the factor 1/3 of the prismatoid formula, which "
+                        "the print lost at I' (erratum 'slab-a-c', misprint, high) and carried down to "
+                        "'simpson-rule'; the claim fails only through that factor, so it is the author's "
+                        "statement about his misprinted line, not a fault of the scan. High: the printed "
+                        "factor m and Simpson's m/3 are both unambiguous.",
+                        corrected_reading=(I, simp_3, SIMPSON_AREAS)),
         note="Simpson's rule for the area under a curve with the ordinates y_0, …, y_6 at spacing m, "
              "m/3 (y_0 + 4y_1 + 2y_2 + … + y_6), with the ordinates replaced by the section areas, is the "
-             "derived volume. 'Diese Formel' is the derived one; its printed factor m (for m/3) is the "
-             "erratum of 'simpson-rule'.")
+             "derived volume; the printed formula m {…} is three times it.")
 d.quote("odd-number-of-sections", "§2 Simpson's rule",
         r"Das Gesetz der Coefficienten ist einleuchtend und kann die Formel beliebig ausgedehnt werden, nur muss "
         r"die Zahl der Theilungsebenen immer eine ungrade sein, damit man eine grade Zahl von Körpertheilen erhält.",
@@ -336,3 +354,51 @@ d.witness(ConvergenceOrder("simpson-order-exp", "composite Simpson on ∫_0^1 ex
 d.witness(ConvergenceOrder("simpson-order-reciprocal", "composite Simpson on ∫_0^1 1/(1+z)",
                            ("simpson-identical", "odd-number-of-sections"), composite_simpson, _reciprocal,
                            (mpmath.mpf(0), mpmath.mpf(1)), mpmath.log(2), 4))
+
+# the sections named by the text, measured across their chords (the circle of radius² ρ²(z) written with the
+# chord coordinate ρ sin η, so that the integrand 2ρ² cos²η stays smooth)
+eta, zp = sp.symbols("eta z_P", real=True)
+
+
+def _round(rho2):
+    return {"width": 2 * rho2 * sp.cos(eta) ** 2, "chord": (-pi / 2, pi / 2), "position": zp, "across": eta}
+
+
+d.witness(PlaneSections("sphere-section-areas", "sections of the sphere at both poles and the centre",
+                        ("sphere-sections",), SPHERE_CASES, planes=(r, 0, 2 * r),   # a non-empty section first
+                        combine=lambda A, q: (A[1], A[2], A[0]), **_round(r ** 2 - (zp - r) ** 2)))
+for name, plane in (("paraboloid-base-radius", 0), ("paraboloid-mid-radius", x / 2)):
+    d.witness(PlaneSections(f"{name}-section", "section of the paraboloid y² = 2pt (t from the vertex, t = x - z)",
+                            (name,), PARABOLOID_CASES, planes=(plane,),
+                            combine=lambda A, q: A[0] / mpmath.pi, **_round(2 * p * (x - zp))))
+d.witness(SectionIntegral("half-ellipsoid-segment", "∫ π b² (1 - (t - a)²/a²) dt over the segment of height a",
+                          ("half-ellipsoid-x-a",), tuple(Case({a: c_.params[a], b: c_.params[b], x: c_.params[a]},
+                                                               label=f"a = {c_.params[a]}, b = {c_.params[b]}")
+                                                          for c_ in ELLIPSOID_CASES),
+                          area=A_e_centre, z=z, bounds=(0, a)))
+
+# "so kann die eine oder auch beide Null sein": a pyramid (g = 0, D = G/4) and a body whose section area
+# 4 D z (h - z)/h² vanishes at both ends (G = g = 0)
+ZERO_BASE_AREAS = (G * (1 - z / h) ** 2, 4 * D * z * (h - z) / h ** 2)
+d.quote("zero-bases", "§2 prismatoid formula",
+        r"so kann die eine oder auch beide Null sein.",
+        reading=(sp.Matrix([sp.Integral(A_, (z, 0, h)) for A_ in ZERO_BASE_AREAS]),
+                 sp.Matrix([prismatoid(G, 0, G / 4, h), prismatoid(0, 0, D, h)])),
+        note="read on a pyramid over G (g = 0) and on a body with G = g = 0 and quadratic sections")
+
+
+def _zero_base_volumes(case, dps):
+    """The two volumes by tanh-sinh quadrature of their section areas."""
+    hv = mpmath.mpf(sp.N(case.params[h], dps + 10))
+    out = []
+    for A_ in ZERO_BASE_AREAS:
+        f_ = sp.lambdify(z, A_.xreplace(case.params), "mpmath")
+        out.append(mpmath.quad(f_, [0, hv]))
+    return tuple(out)
+
+
+d.witness(Computed("zero-bases-volumes", "∫ A dz of a pyramid and of a body with both bases zero",
+                   ("zero-bases",), (Case({G: 3, D: 2, h: sp.Rational(5, 2)}, label="G = 3, D = 2, h = 5/2"),
+                                     Case({G: sp.Rational(7, 3), D: sp.Rational(1, 2), h: 4},
+                                          label="G = 7/3, D = 1/2, h = 4")),
+                   compute=_zero_base_volumes))

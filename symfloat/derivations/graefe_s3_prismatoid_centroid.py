@@ -97,6 +97,12 @@ d.quote("construction", "§3 tetrahedron centroid lemma",
 d.quote("quarters", "§3 tetrahedron centroid lemma",
         r"Auch ist  $oF = \frac{AF}{4}$  und  $oG = \frac{CG}{4}$",
         reading=(sp.Matrix([length(o_ - F), length(o_ - Gp)]), sp.Matrix([length(PA - F) / 4, length(PC - Gp) / 4])))
+d.quote("quarter-line", "§3 tetrahedron centroid lemma",
+        r"Da nun der Schwerpunkt eines Tetraeders bekanntlich auf einem Viertel der Linie von der Basis aus liegt, "
+        r"welche den Schwerpunkt derselben mit der Spitze verbindet",
+        reading=(o_, sp.Matrix([sp.Add(f_, sp.Mul(sp.Rational(1, 4), sp.Add(a_, -f_, evaluate=False), evaluate=False),
+                                       evaluate=False) for f_, a_ in zip(F, PA)])),
+        note="read for the base BCD (centroid F) and the apex A: o = F + (A - F)/4, kept unevaluated")
 d.quote("ratio-1", "§3 tetrahedron centroid lemma",
         r"$$\triangle C o c : \triangle C o A = G c : G A = 1 : 2 \text{ und ebenso:}$$",
         reading=(area(PC, o_, c) / area(PC, o_, PA), length(Gp - c) / length(Gp - PA), sp.Rational(1, 2)))
@@ -164,6 +170,22 @@ d.step("centroid-quadratic-sections",
        "integration", note="the formula is exact for every body whose section area A(z) is a quadratic "
                            "polynomial of the height: G = A(0), D = A(h/2), g = A(h)")
 
+d.quote("height-1", "§3 prismatoid centroid", r"a) Der Schwerpunkt von 1) liegt auf  $\frac{1}{4}$  der Höhe von  $g$  aus",
+        reading=(Z1, h - h / 4), note="the pyramid ABCDO (base g at the height h, apex O in G): its centroid "
+                                      "a quarter of the height below g")
+d.quote("height-2", "§3 prismatoid centroid",
+        r"b) Die Schwerpunkte der dreiseitigen Pyramiden von 2) liegen auf  $\frac{h}{4}$  von  $G$  aus",
+        reading=(Z2, h / 4))
+d.quote("height-3", "§3 prismatoid centroid",
+        r"c) Die Schwerpunkte sämtlicher Tetraeder von 3) liegen auf  $\frac{h}{2}$",
+        reading=(Z3, h / 2), note="each tetrahedron has one edge in G and one in g")
+d.quote("moment-group-3", "§3 prismatoid centroid",
+        r"das Moment von 3) ist  $\frac{h}{3} \left( 2D - \frac{G+g}{2} \right) \frac{h}{2}$",
+        reading=(V3 * Z3, h / 3 * (2 * D - (G + g) / 2) * h / 2))
+d.quote("lemma-restated", "§3 prismatoid centroid",
+        r"Satze, dass der Schwerpunkt eines Tetraeders in der Mitte der Verbindungslinie der Mittelpunkte zweier "
+        r"nicht in einer Ebene liegenden Kanten sich befindet",
+        reading=(o_, as_printed(lambda: ((PA + PD) / 2 + (PB + PC) / 2) / 2)), note="read for the edges AD and BC")
 d.quote("arm-1", "§3 prismatoid centroid",
         r"der Hebelarm von  $G$  aus ist mithin  $\frac{3h}{4}$  und das Moment von 1)  "
         r"$\left(\frac{gh}{3}\right) \frac{3h}{4}$",
@@ -262,3 +284,86 @@ for target, ratio in (("ratio-1", "Coc:CoA"), ("ratio-2", "coA:Coc"), ("ratio-3"
     d.witness(Computed(f"triangles-{target}", f"the ratio {ratio} of triangles by Heron's formula",
                        (target,), tuple(_tetrahedron_case(s) for s in range(3)),
                        compute=lambda case, dps, ratio=ratio: _numeric_construction(case, dps)[ratio]))
+
+
+def _median_meet(P, p, q, r):
+    """The centroid of the triangle p q r found as the meeting point of two of its medians."""
+    return _line_meet(P[p], (P[q] + P[r]) / 2, P[q], (P[p] + P[r]) / 2)
+
+
+def _line_meet(p1, p2, q1, q2):
+    M = mpmath.matrix([[p2[k] - p1[k], q1[k] - q2[k]] for k in range(3)])
+    t = mpmath.qr_solve(M, q1 - p1)[0]
+    return p1 + t[0] * (p2 - p1)
+
+
+def _construction_points(case):
+    """Graefe's points by intersecting lines only: F, G the triangles' centroids as meeting points of
+    medians, o = CG ∩ AF, a = co ∩ AC, L = ac ∩ FG."""
+    P = {n: mpmath.matrix([mpmath.mpf(int(v)) for v in case.data[i]]) for i, n in enumerate("ABCD")}
+    c_ = (P["B"] + P["D"]) / 2
+    F_, G_ = _median_meet(P, "B", "C", "D"), _median_meet(P, "A", "B", "D")
+    o_n = _line_meet(P["C"], G_, P["A"], F_)
+    a_n = _line_meet(c_, o_n, P["A"], P["C"])
+    L_n = _line_meet(a_n, c_, F_, G_)
+    return {**P, "c": c_, "F": F_, "G": G_, "o": o_n, "a": a_n, "L": L_n}
+
+
+def _dist(p, q):
+    return mpmath.norm(p - q)
+
+
+CONSTRUCTION_MEASURES = {
+    "construction": lambda Q: tuple(Q["F"]) + tuple(Q["G"]),
+    "quarters": lambda Q: (_dist(Q["o"], Q["F"]), _dist(Q["o"], Q["G"])),
+    "a-midpoint": lambda Q: _dist(Q["a"], Q["A"]),
+    "oL-ratio": lambda Q: _dist(Q["L"], Q["o"]) / _dist(Q["o"], Q["a"]),
+    "aL": lambda Q: _dist(Q["L"], Q["a"]),
+    "CF": lambda Q: _dist(Q["F"], Q["C"]),
+    "oL": lambda Q: _dist(Q["L"], Q["o"]),
+    "oc": lambda Q: _dist(Q["c"], Q["o"]),
+}
+for target, measure in CONSTRUCTION_MEASURES.items():
+    d.witness(Computed(f"lines-{target}", "Graefe's construction by intersecting lines (least squares)",
+                       (target,), tuple(_tetrahedron_case(s) for s in range(3)),
+                       compute=lambda case, dps, measure=measure: measure(_construction_points(case))))
+
+
+def _pyramid_case(seed, apex_down):
+    """A random pyramid: base G at z = 0 and apex at h, or (apex_down) base g at z = h and apex O at z = 0."""
+    pts = random_prismatoid(seed, apex_top=True)
+    Gv, _, _, hv = prismatoid_parameters(pts)
+    area_, height = sp.Rational(Gv.numerator, Gv.denominator), sp.Rational(hv.numerator, hv.denominator)
+    if apex_down:
+        return Case({g: area_, h: height}, [(x_, y_, hv - z_) for x_, y_, z_ in pts], f"random pyramid #{seed}, apex in G")
+    return Case({G: area_, h: height}, pts, f"random pyramid #{seed}, base G")
+
+
+d.witness(HullWitness("arm-1-moment", "moment about G of random pyramids with the apex in G",
+                      ("arm-1",), lambda: tuple(_pyramid_case(s, True) for s in range(3)), quantity="moment"))
+d.witness(HullWitness("arm-2-moment", "moment about G of random pyramids standing on G",
+                      ("arm-2",), lambda: tuple(_pyramid_case(s, False) for s in range(3)), quantity="moment"))
+
+
+def _edge_pair_case(seed):
+    """A random tetrahedron with one edge in the plane z = 0 and the opposite edge in z = h (the tetrahedra of
+    group 3)."""
+    rng = random.Random(seed)
+    while True:
+        hv = Fraction(rng.randint(2, 9), rng.randint(1, 3))
+        pts = [(Fraction(rng.randint(-6, 6)), Fraction(rng.randint(-6, 6)), zz) for zz in (0, 0, hv, hv)]
+        (x0, y0, _), (x1, y1, _), (x2, y2, _), (x3, y3, _) = pts
+        if (x1 - x0) * (y3 - y2) - (y1 - y0) * (x3 - x2) != 0:      # the two edges not parallel: a solid
+            return Case({h: sp.Rational(hv.numerator, hv.denominator)}, pts, f"random tetrahedron #{seed}, edges in G and g")
+
+
+d.witness(HullWitness("height-1-hull", "centroid height of random pyramids with the apex in G",
+                      ("height-1",), lambda: tuple(_pyramid_case(s, True) for s in range(3)), quantity="height"))
+d.witness(HullWitness("height-2-hull", "centroid height of random pyramids standing on G",
+                      ("height-2",), lambda: tuple(_pyramid_case(s, False) for s in range(3)), quantity="height"))
+d.witness(HullWitness("height-3-hull", "centroid height of random tetrahedra with an edge in G and one in g",
+                      ("height-3",), lambda: tuple(_edge_pair_case(s) for s in range(3)), quantity="height",
+                      methods=SLICES))
+d.witness(HullWitness("tetrahedron-centroid-2", "centroid of random tetrahedra by slice quadrature",
+                      ("quarter-line", "lemma-restated"), lambda: tuple(_tetrahedron_case(s) for s in range(3)),
+                      quantity="centroid", methods=SLICES))

@@ -23,7 +23,7 @@ import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.witness import Case, PlaneSections, SectionIntegral
+from symfloat.engine.witness import Case, Computed, PlaneSections, SectionIntegral
 from symfloat.model.claim import as_printed
 
 u, t, xi, P, eta = sp.symbols("u t xi P eta", real=True)
@@ -160,6 +160,9 @@ d.step("pyramid-frustum-D-from-bases", (D_pf, (G_pf + 2 * sp.sqrt(G_pf * g_pf) +
 d.step("pyramid-frustum-reduced",
        (X_pf, h / 4 * (3 * g_pf + G_pf + 2 * sp.sqrt(G_pf * g_pf)) / (g_pf + G_pf + sp.sqrt(G_pf * g_pf))),
        "algebra", uses=("pyramid-frustum-centroid", "pyramid-frustum-D-from-bases"))
+d.quote("pyramid-frustum-side-D", "§4 pyramid frustum",
+        r"so ist die ähnlich liegende Seite von  $D$ ,  $\frac{S+s}{2}$",
+        reading=(sp.sqrt(D_pf / k), (S + s) / 2), note="the side of D: the square root of D/k")
 d.quote("pyramid-frustum-ratio-G", "§4 pyramid frustum",
         r"$$G : D = S^2 : \frac{(S+s)^2}{4}, \sqrt{G} : \sqrt{D} = S : \frac{S+s}{2} \text{ und}$$",
         reading=(sp.Matrix([G_pf / D_pf, sp.sqrt(G_pf) / sp.sqrt(D_pf)]),
@@ -502,6 +505,19 @@ d.step("elliptic-body-paraboloid", Eq(X_pc, sp.Integral(u * 2 * p * pi * (h - u)
 d.step("elliptic-body-as-paraboloid", (X_eb, X_pc), "integration",
        uses=("elliptic-body-centroid", "elliptic-body-paraboloid"))
 
+# the generator through b (ordinate y at the abscissa x, height 0), b' (ordinate y', height h/m) and c (on EF)
+gen_b, gen_bp, gen_c = sp.Matrix([x, y, 0]), sp.Matrix([x, yp, h / m]), sp.Matrix([x, 0, h])
+d.quote("elliptic-body-generator", "§4 elliptic body, triangular sections",
+        r"so ist  $b'b'c$  eine grade Linie, laut Voraussetzung",
+        unreadable="b'b'c names the point b' twice: a 'line' through b', b' and c says nothing",
+        erratum=Erratum("transcription", "medium", r"b b' c \text{ eine grade Linie}",
+                        "The sentence joins b with b' and extends the line to c; the straight line of the "
+                        "hypothesis (the generator cb of the body) is b b' c, which the similar triangles of "
+                        "the next line use (ab = y at height 0, a'b' = y' at h/m, c at h). The doubled b' "
+                        "names no line: a b read as b' next to the b' that follows; medium, since the print "
+                        "cannot be seen. Checked: b, b', c collinear in the coordinates of the construction "
+                        "(abscissa, ordinate, height).",
+                        corrected_reading=((gen_bp - gen_b).cross(gen_c - gen_b), sp.zeros(3, 1))))
 d.quote("elliptic-body-ratio", "§4 elliptic body, triangular sections",
         r"$$y : y' = h : h - \frac{h}{m} \text{ also}$$", reading=(y / yp, h / (h - h / m)))
 d.quote("elliptic-body-y", "§4 elliptic body, triangular sections", r"$y = \frac{y'}{1 - \frac{1}{m}}$",
@@ -581,14 +597,28 @@ d.quote("triaxial-stump-axes-G", "§4 triaxial ellipsoid stump",
         r"(m A)^2 &= \frac{c^2}{a^2} \{ a^2 - x^2 \}, (m G)^2 = \frac{b^2}{a^2} \{ a^2 - x^2 \}",
         reading=as_printed(lambda: (sp.Matrix(half_axes(x)).applyfunc(lambda e: e ** 2),
                  sp.Matrix([c ** 2 / a ** 2 * (a ** 2 - x ** 2), b ** 2 / a ** 2 * (a ** 2 - x ** 2)]))))
+A_point, p_point = sp.Matrix([x, half_axes(x)[0]]), sp.Matrix([ts_mid, 0])   # A and p in the plane NMR
 d.quote("triaxial-stump-axes-D", "§4 triaxial ellipsoid stump",
         r"(A p)^2 &= \frac{c^2}{a^2} \left\{ a^2 - \frac{(x + x')^2}{4} \right\}, (p E)^2 = \frac{b^2}{a^2} "
         r"\left\{ a^2 - \frac{(x + x')^2}{4} \right\}",
-        reading=(sp.Matrix(half_axes(ts_mid)).applyfunc(lambda e: e ** 2),
+        reading=(sp.Matrix([(A_point - p_point).dot(A_point - p_point), half_axes(ts_mid)[1] ** 2]),
                  sp.Matrix([c ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4),
                             b ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4)])),
-        note="the half axis is named 'A p' here but 'Q p' in the text ('p Q') and in D = Q p. E p. pi: a "
-             "slip of the label only (print or scan), the value is that of Q p and is right")
+        erratum=Erratum("misprint", "medium",
+                        r"(Q p)^2 = \frac{c^2}{a^2} \left\{ a^2 - \frac{(x + x')^2}{4} \right\}",
+                        "The half great axes are named m A, p Q, o D in the text before the display, and the "
+                        "middle section is D = Q p. E p. pi after it: the first member of the middle line is "
+                        "(Q p)^2, the ordinate of the ellipse NMR at n p = (x + x')/2. A is the end of the half "
+                        "axis m A of the base AB, at the abscissa x: as printed, (A p)^2 is the squared slant "
+                        "distance from A to p, ((x' - x)/2)^2 + c^2/a^2 (a^2 - x^2) (read in the plane NMR), "
+                        "not the value printed. The value is right, the label contradicts both neighbours. "
+                        "Booked as the print's: the rest of the display is letter-perfect, and an existing "
+                        "letter of the figure in the wrong place (the A of '(m A)' in the line above) is a "
+                        "compositor's kind of slip; the scan cannot be excluded: medium.",
+                        corrected_reading=(sp.Matrix(half_axes(ts_mid)).applyfunc(lambda e: e ** 2),
+                                           sp.Matrix([c ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4),
+                                                      b ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4)]))),
+        note="read with the printed label: A = (x, mA) and p = ((x + x')/2, 0) in the plane of the ellipse NMR")
 d.quote("triaxial-stump-axes-g", "§4 triaxial ellipsoid stump",
         r"(o D)^2 &= \frac{c^2}{a^2} \{ a^2 - x'^2 \}, (o F)^2 = \frac{b^2}{a^2} \{ a^2 - x'^2 \}.",
         reading=as_printed(lambda: (sp.Matrix(half_axes(xp)).applyfunc(lambda e: e ** 2),
@@ -637,3 +667,134 @@ d.quote("three-eighths", "§4 half triaxial ellipsoid",
 sections_witness("half-triaxial", "centroid of the half triaxial ellipsoid from its elliptic sections",
                  ("half-triaxial",), area_ht, a,
                  ("a = 5, b = 3, c = 2", {a: 5, b: 3, c: 2}), ("a = 3, b = 2, c = 1", {a: 3, b: 2, c: 1}))
+
+# ---- the section areas themselves, by quadrature of their chords (sections named by the text) ------------------
+# each section at distance P from the centre (or height P above the base) is measured across its chords; the
+# positions are those of the construction (poles, centre, the midpoint between base and pole)
+SPHERE_CASES = (("r = 3", {r: 3}), ("r = 7/2", {r: sp.Rational(7, 2)}))
+planes_witness("sphere-sections-areas", "sections of the sphere at both poles and at the centre",
+               ("sphere-sections",), round_sections(r ** 2 - P ** 2), (0, r, -r),   # a non-empty section first
+               lambda A, q: (A[1], A[2], A[0], 2 * q[r]), *SPHERE_CASES)
+planes_witness("hemisphere-sections-areas", "sections of the sphere at the pole, the centre and half the radius",
+               ("hemisphere-sections",), round_sections(r ** 2 - P ** 2), (0, r, r / 2),
+               lambda A, q: (A[1], A[0], A[2]), *SPHERE_CASES)
+SEGMENT_CASES = (("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
+planes_witness("segment-1-D-area", "section of the sphere halfway between the base (distance m) and the pole",
+               ("segment-1-D",), round_sections(r ** 2 - P ** 2), ((r + m) / 2,), lambda A, q: A[0],
+               *SEGMENT_CASES)
+SEGMENT2_CASES = (("r = 5, x = 1, x' = 3", {r: 5, x: 1, xp: 3}),
+                  ("r = 9/2, x = 1/2, x' = 4", {r: sp.Rational(9, 2), x: sp.Rational(1, 2), xp: 4}))
+planes_witness("segment-2-radii-areas", "sections of the sphere at x, x' and halfway between",
+               ("segment-2-radii",), round_sections(r ** 2 - P ** 2), (x, xp, (x + xp) / 2),
+               lambda A, q: tuple(area / mpmath.pi for area in A), *SEGMENT2_CASES)
+ELLIPSOID_SEGMENT_CASES = (("a = 5, b = 3, x = 1", {a: 5, b: 3, x: 1}), ("a = 4, b = 1, x = 2", {a: 4, b: 1, x: 2}))
+planes_witness("ellipsoid-segment-D-area", "section of the ellipsoid of revolution halfway between x and the vertex",
+               ("ellipsoid-segment-D",), ellipsoid_sections, ((a + x) / 2,), lambda A, q: A[0] / mpmath.pi,
+               *ELLIPSOID_SEGMENT_CASES)
+# the elliptic body: the section at height P is bounded by the generators, chord 2 b/a sqrt(a^2 - xi^2) (1 - P/h)
+ELLIPTIC_BODY_CASES = (("a = 5, b = 3, h = 4", {a: 5, b: 3, h: 4}), ("a = 2, b = 1, h = 7/2", {a: 2, b: 1, h: sp.Rational(7, 2)}))
+elliptic_body_width = {"width": 2 * a * b * sp.cos(eta) ** 2 * (1 - P / h), "chord": (-pi / 2, pi / 2)}
+planes_witness("elliptic-body-sections-areas", "sections of the elliptic body at the heights 0, h/2 and h",
+               ("elliptic-body-sections",), elliptic_body_width, (0, h / 2, h), lambda A, q: tuple(A),
+               *ELLIPTIC_BODY_CASES)
+planes_witness("elliptic-body-D-axis-area", "the section at h/2 over pi a: its small half axis",
+               ("elliptic-body-D-axis",), elliptic_body_width, (h / 2,), lambda A, q: A[0] / (mpmath.pi * q[a]),
+               *ELLIPTIC_BODY_CASES)
+# the triaxial ellipsoid P^2/a^2 + t^2/c^2 + s^2/b^2 <= 1: at the abscissa P the chord in s over t = c sqrt(1 -
+# P^2/a^2) sin(eta) is 2 b sqrt(1 - P^2/a^2) cos(eta), times dt
+TRIAXIAL_CASES = (("a = 5, b = 3, c = 2, x = 1, x' = 4", {a: 5, b: 3, c: 2, x: 1, xp: 4}),
+                  ("a = 4, b = 1, c = 3, x = 1/2, x' = 4", {a: 4, b: 1, c: 3, x: sp.Rational(1, 2), xp: 4}))
+triaxial_width = {"width": 2 * b * c * (1 - P ** 2 / a ** 2) * sp.cos(eta) ** 2, "chord": (-pi / 2, pi / 2)}
+for name, at in (("G", x), ("D", (x + xp) / 2), ("g", xp)):
+    planes_witness(f"triaxial-stump-{name}-area", f"section of the triaxial ellipsoid at the abscissa of {name}",
+                   (f"triaxial-stump-{name}",), triaxial_width, (at,), lambda A, q: A[0], *TRIAXIAL_CASES)
+
+
+def _triaxial_half_axes(at):
+    """The squared half axes of the section at the abscissa *at*: the ordinates of the principal ellipses NMR
+    (half axes a, c) and SMV (a, b), each found by the Illinois method on its equation, bracketed in
+    [0, semi-axis]."""
+    def compute(case, dps):
+        A_, B_, C_, X_, XP_ = (mpmath.mpf(sp.N(case.params[q], dps + 10)) for q in (a, b, c, x, xp))
+        xi = {"G": X_, "D": (X_ + XP_) / 2, "g": XP_}[at]
+        tol = mpmath.mpf(10) ** (-dps)
+        out = []
+        for semi in (C_, B_):
+            yv = mpmath.findroot(lambda t: (xi / A_) ** 2 + (t / semi) ** 2 - 1, (mpmath.mpf(0), semi),
+                                 solver="illinois", tol=tol, maxsteps=400)
+            out.append(yv ** 2)
+        return tuple(out)
+    return compute
+
+
+for name in ("G", "D", "g"):
+    d.witness(Computed(f"triaxial-stump-axes-{name}-roots",
+                       f"half axes of the section at {name} by root-finding on the principal ellipses",
+                       (f"triaxial-stump-axes-{name}",),
+                       tuple(Case({q: sp.Rational(v) for q, v in params.items()}, label=label)
+                             for label, params in TRIAXIAL_CASES),
+                       compute=_triaxial_half_axes(name)))
+planes_witness("pyramid-frustum-side-D-section", "the mid-section of trapezoid frusta by quadrature of its widths",
+               ("pyramid-frustum-side-D",), pyramid_sections, (h / 2,), lambda A, q: mpmath.sqrt(A[0] / q[k]),
+               *pyramid_cases)
+d.quote("half-ellipsoid-from-segment", "§4 half ellipsoid",
+        r"Setzt man hierin  $x = 0$ , so findet sich für den Abstand des Schwerpunktes des halben Ellipsoids",
+        reading=(sp.Subs(X_es, x, 0), X_he), note="the ellipsoid segment from x = 0 to the vertex is the half ellipsoid")
+d.quote("half-triaxial-from-stump", "§4 half triaxial ellipsoid", r"Setzt man hierin  $x' = a$  und  $x = 0$",
+        reading=(sp.Subs(X_ts, (x, xp), (0, a)), X_ht), note="the stump from the centre to the vertex")
+sections_witness("half-ellipsoid-as-segment", "centroid of the half ellipsoid from its circular sections",
+                 ("half-ellipsoid-from-segment",), area_he, a, ("a = 5, b = 3", {a: 5, b: 3}),
+                 ("a = 3, b = 2", {a: 3, b: 2}))
+sections_witness("half-triaxial-as-stump", "centroid of the half triaxial ellipsoid from its elliptic sections",
+                 ("half-triaxial-from-stump",), area_ht, a, ("a = 5, b = 3, c = 2", {a: 5, b: 3, c: 2}),
+                 ("a = 3, b = 2, c = 1", {a: 3, b: 2, c: 1}))
+planes_witness("cone-frustum-D-section", "the mid-section of the cone frustum across its chords", ("cone-frustum-D",),
+               round_sections((R + (r - R) * P / h) ** 2), (h / 2,), lambda A, q: mpmath.sqrt(A[0] / mpmath.pi),
+               ("R = 3, r = 1, h = 4", {R: 3, r: 1, h: 4}), ("R = 5/2, r = 2, h = 3/2", {R: sp.Rational(5, 2), r: 2, h: sp.Rational(3, 2)}))
+sections_witness("elliptic-body-claims", "centroid of the elliptic body from its elliptic sections",
+                 ("elliptic-body-triangles", "elliptic-body-paraboloid"), area_eb, h,
+                 ("a = 5, b = 3, h = 4, p = 2", {a: 5, b: 3, h: 4, p: 2}),
+                 ("a = 2, b = 1, h = 7/2, p = 1/2", {a: 2, b: 1, h: sp.Rational(7, 2), p: sp.Rational(1, 2)}))
+
+
+def _centroid_ratio(area, height):
+    """The centroid height over the body's height, ∫u A du / (height ∫A du), by tanh-sinh quadrature."""
+    def compute(case, dps):
+        hv = mpmath.mpf(sp.N(height.xreplace(case.params), dps + 10))
+        f_ = sp.lambdify(u, area.xreplace(case.params), "mpmath")
+        return mpmath.quad(lambda t_: t_ * f_(t_), [0, hv]) / (hv * mpmath.quad(f_, [0, hv]))
+    return compute
+
+
+HALF_CASES = tuple(Case({r: sp.Rational(rv), a: sp.Rational(av), b: sp.Rational(bv), c: sp.Rational(cv)},
+                        label=f"r = {rv}, a = {av}, b = {bv}, c = {cv}")
+                   for rv, av, bv, cv in (("2", "5", "3", "2"), ("5/3", "3", "2", "1")))
+for name, area_, height_ in (("hemisphere", area_hs, r), ("half-ellipsoid", area_he, a), ("half-triaxial", area_ht, a)):
+    d.witness(Computed(f"three-eighths-{name}", f"centroid of the {name} over its height, by quadrature",
+                       ("three-eighths",), HALF_CASES, compute=_centroid_ratio(area_, height_)))
+
+
+def _without_factor(G_, D_, g_, height):
+    """The prismatoid centroid h (g/2 + D)/((G + g)/2 + 2D) with the sections' common factor left out."""
+    return height * (g_ / 2 + D_) / ((G_ + g_) / 2 + 2 * D_)
+
+
+d.quote("ellipsoid-segment-factor", "§4 ellipsoid segment",
+        r"Weglassung von  $\frac{\pi b^2}{a^2}$  im Zähler und Nenner",
+        reading=(X_es, _without_factor(a ** 2 - x ** 2, (3 * a ** 2 - 2 * a * x - x ** 2) / 4, 0, a - x)),
+        note="the factor π b²/a² common to G, D, g cancels: the centroid from the bare brackets")
+d.quote("truncated-ellipsoid-factor", "§4 truncated ellipsoid", r"wiederum  $\frac{\pi b^2}{a^2}$  fortlassen",
+        reading=(X_te, _without_factor(a ** 2 - x ** 2, a ** 2 - (x + xp) ** 2 / 4, a ** 2 - xp ** 2, xp - x)))
+d.quote("triaxial-stump-factor", "§4 triaxial ellipsoid stump",
+        r"Demnach erhalten wir mit Fortlassung von  $\frac{b c}{a^2}$  für den Abstand des Schwerpunktes von  $G$",
+        reading=(X_ts, _without_factor((a ** 2 - x ** 2) * pi, (a ** 2 - (x + xp) ** 2 / 4) * pi,
+                                       (a ** 2 - xp ** 2) * pi, xp - x)),
+        note="the factor b c/a² cancels (π is left in the brackets, as in D = Q p. E p. π)")
+sections_witness("ellipsoid-segment-factor", "centroid of the ellipsoidal segment from its circular sections",
+                 ("ellipsoid-segment-factor",), area_es, a - x, *ELLIPSOID_SEGMENT_CASES)
+sections_witness("truncated-ellipsoid-factor", "centroid of the truncated ellipsoid from its circular sections",
+                 ("truncated-ellipsoid-factor",), area_te, xp - x,
+                 ("a = 5, b = 3, x = 1, x' = 4", {a: 5, b: 3, x: 1, xp: 4}),
+                 ("a = 4, b = 1, x = 1/2, x' = 4", {a: 4, b: 1, x: sp.Rational(1, 2), xp: 4}))
+sections_witness("triaxial-stump-factor", "centroid of the triaxial ellipsoid stump from its elliptic sections",
+                 ("triaxial-stump-factor",), area_ts, xp - x, *TRIAXIAL_CASES)
