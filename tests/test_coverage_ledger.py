@@ -133,7 +133,9 @@ def test_totals_add_up():
 # ---- command line ---------------------------------------------------------------------------------
 def test_cli_json_and_exit_status(capsys, monkeypatch):
     monkeypatch.chdir(ROOT)
-    assert main(["coverage", "hasab", "--format", "json"]) == 1      # hasab has unaccounted spans
+    assert main(["coverage", "euler", "--format", "json"]) == 1      # euler has unaccounted spans
+    capsys.readouterr()
+    assert main(["coverage", "hasab", "--format", "json"]) == 0      # hasab is accounted span by span
     out = json.loads(capsys.readouterr().out)
     entries = out["sources"]["hasab"]["entries"]
     assert out["sources"]["hasab"]["totals"]["spans"] == len(entries) == len(ledger("hasab"))
@@ -142,10 +144,13 @@ def test_cli_json_and_exit_status(capsys, monkeypatch):
 
 def test_cli_table_marks_pending_spans(capsys, monkeypatch, tmp_path):
     monkeypatch.chdir(tmp_path)      # the baseline is the checkout's, wherever the command runs
+    main(["coverage", "euler"])
+    out = capsys.readouterr().out
+    assert out.startswith("euler: 386 spans")
+    assert "pending euler:" in out and "NEW" not in out
     main(["coverage", "hasab"])
     out = capsys.readouterr().out
-    assert out.startswith("hasab: 32 spans")
-    assert "pending hasab:3 " in out and "NEW" not in out
+    assert out.startswith("hasab: 32 spans") and "pending" not in out
 
 
 def test_cli_unknown_source(capsys):

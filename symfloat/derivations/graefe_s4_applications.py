@@ -783,8 +783,6 @@ d.quote("ellipsoid-segment-factor", "§4 ellipsoid segment",
         r"Weglassung von  $\frac{\pi b^2}{a^2}$  im Zähler und Nenner",
         reading=(X_es, _without_factor(a ** 2 - x ** 2, (3 * a ** 2 - 2 * a * x - x ** 2) / 4, 0, a - x)),
         note="the factor π b²/a² common to G, D, g cancels: the centroid from the bare brackets")
-d.quote("truncated-ellipsoid-factor", "§4 truncated ellipsoid", r"wiederum  $\frac{\pi b^2}{a^2}$  fortlassen",
-        reading=(X_te, _without_factor(a ** 2 - x ** 2, a ** 2 - (x + xp) ** 2 / 4, a ** 2 - xp ** 2, xp - x)))
 d.quote("triaxial-stump-factor", "§4 triaxial ellipsoid stump",
         r"Demnach erhalten wir mit Fortlassung von  $\frac{b c}{a^2}$  für den Abstand des Schwerpunktes von  $G$",
         reading=(X_ts, _without_factor((a ** 2 - x ** 2) * pi, (a ** 2 - (x + xp) ** 2 / 4) * pi,
@@ -792,9 +790,5 @@ d.quote("triaxial-stump-factor", "§4 triaxial ellipsoid stump",
         note="the factor b c/a² cancels (π is left in the brackets, as in D = Q p. E p. π)")
 sections_witness("ellipsoid-segment-factor", "centroid of the ellipsoidal segment from its circular sections",
                  ("ellipsoid-segment-factor",), area_es, a - x, *ELLIPSOID_SEGMENT_CASES)
-sections_witness("truncated-ellipsoid-factor", "centroid of the truncated ellipsoid from its circular sections",
-                 ("truncated-ellipsoid-factor",), area_te, xp - x,
-                 ("a = 5, b = 3, x = 1, x' = 4", {a: 5, b: 3, x: 1, xp: 4}),
-                 ("a = 4, b = 1, x = 1/2, x' = 4", {a: 4, b: 1, x: sp.Rational(1, 2), xp: 4}))
 sections_witness("triaxial-stump-factor", "centroid of the triaxial ellipsoid stump from its elliptic sections",
                  ("triaxial-stump-factor",), area_ts, xp - x, *TRIAXIAL_CASES)

@@ -349,8 +349,6 @@ u4, v4 = sp.Symbol("u_4", positive=True), sp.Symbol("v_4", real=True)
 d.domain.update({u4: (sp.Rational(1, 10), 1), v4: (-1, 1)})
 d.quote("column-height", "IV (29)", r"$z = u_3 \cdot \operatorname{tg} \varphi_1$",
         reading=(sp.Integral(1, (z, 0, u3 * t1)), u3 * t1), note="the column over df at the distance u_3 from EF")
-d.quote("column-4", "IV (30)", r"$z df = u_4 \cdot \operatorname{tg} \varphi_1 \cdot df$",
-        reading=(dfs * sp.Integral(1, (z, 0, u4 * t1)), u4 * t1 * dfs), note="the emerged column over df at u_4")
 d.quote("column-4-moment", "IV (30)", r"$u_4 v_4 \cdot df \cdot \operatorname{tg} \varphi_1$",
         reading=(dfs * sp.Integral(v4, (z, 0, u4 * t1)), u4 * v4 * dfs * t1),
         note="its moment about the vertical plane through OS across EF (lever v_4)")
@@ -469,8 +467,6 @@ d.quote("42", "(42)", r"$$\left. \begin{aligned} T_m &= \frac{T_1}{\cos^3 \varph
         reading=(sp.Matrix([Tm, Tm1]), sp.Matrix([T1 / c ** 3, T11 / c])))
 d.quote("43", "(43)", r"$$T - \frac{T_1}{\cos \varphi_1} > 0 \quad (43)$$", reading=(D2, Tmin - T1 / c),
         note="T the smaller of T_m, T_m^1; read as the quantity whose sign decides")
-d.quote("T-is-Tm", "(43)", r"$T = T_m$", reading=(Tm - V1 * e2, T1 / c ** 3 - T1 / c), note="(43) with T = T_m")
-d.quote("T-is-Tm1", "(43a)", r"$T = T_m^1$", reading=(Tm1 - V1 * e2, (T11 - T1) / c), note="(43) with T = T_m^1")
 d.quote("43-Tm", "(43)", r"$$T - \frac{T_1}{\cos \varphi_1} = \frac{T_1}{\cos^3 \varphi_1} - \frac{T_1}{\cos "
                          r"\varphi_1} = \frac{T_1}{\cos \varphi_1} \cdot \text{tg}^2 \varphi_1",
         reading=(Tm - V1 * e2, T1 / c ** 3 - T1 / c, T1 / c * t1 ** 2), note="T = T_m")
