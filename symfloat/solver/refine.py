@@ -11,7 +11,7 @@ import mpmath
 from ..geometry.floating import floating_state
 from .bodies import polyhedron
 
-__all__ = ["refine_sphere", "refine_planar", "planar_residual", "angle_between"]
+__all__ = ["refine_sphere", "polish", "refine_planar", "planar_residual", "angle_between"]
 
 
 def _local_mp(poly, u, s):
@@ -43,6 +43,48 @@ def refine_sphere(scene, u, dps: int = 50, steps: int = 12):
             u = [x / norm for x in v]
         st, g, _ = _local_mp(poly, u, scene.density)
         return tuple(u), mpmath.norm(g)
+
+
+def polish(poly, u, s, scale: float, steps: int = 12, cap: float = 1e-2):
+    """Newton's method at *poly*'s precision (an mpmath body) from the float unit vector *u*: returns
+    ``(u, |grad U|, eigenvalues)`` at the best point reached (mpf; the eigenvalues of the metacentric
+    Hessian there, ascending).  Steps are capped at *cap* radians and halved (up to four times) where
+    the gradient would grow: next to a bifurcation the Hessian is nearly singular and a float64 point
+    lies far from the equilibrium in its soft direction.  The iteration stops at a gradient of
+    ``10^(5 - dps) * scale`` or when it no longer falls."""
+    with mpmath.workdps(poly.dps):
+        u = [mpmath.mpf(float(x)) for x in u]
+        norm = mpmath.sqrt(sum(x * x for x in u))
+        u = [x / norm for x in u]
+        floor = mpmath.mpf(10) ** (5 - poly.dps) * scale
+        st, g, H = _local_mp(poly, u, s)
+        best = (tuple(u), mpmath.norm(g), H)
+        for _ in range(steps):
+            if best[1] <= floor:
+                break
+            try:
+                step = mpmath.lu_solve(H, -g)
+            except ZeroDivisionError:
+                break
+            length = mpmath.norm(step)
+            if length > cap:
+                step = step * (cap / length)
+            e1, e2 = st.basis
+            for _ in range(5):
+                v = [u[k] + step[0] * e1[k] + step[1] * e2[k] for k in range(3)]
+                norm = mpmath.sqrt(sum(x * x for x in v))
+                v = [x / norm for x in v]
+                st_v, g_v, H_v = _local_mp(poly, v, s)
+                if mpmath.norm(g_v) < best[1]:
+                    break
+                step = step / 2
+            else:
+                break
+            u, st, g, H = v, st_v, g_v, H_v
+            best = (tuple(u), mpmath.norm(g), H)
+        u, size, H = best
+        mean, half = (H[0, 0] + H[1, 1]) / 2, mpmath.sqrt(((H[0, 0] - H[1, 1]) / 2) ** 2 + H[0, 1] ** 2)
+        return u, size, (mean - half, mean + half)
 
 
 def refine_planar(scene, theta, dps: int = 50, steps: int = 12):

@@ -28,10 +28,11 @@ from .bodies import centred_polygon, polyhedron
 from .critical import critical_points, distinct_seeds, more_seeds, poincare_hopf_sum, sphere_seeds
 from .cylinder import cylinder_slice
 from .errors import STEP, eigenvalue_error, equilibrium_error
-from .local import local, tangent_step, waterplane_polygon
+from .degenerate import degenerate_class
+from .local import local, waterplane_polygon
 from .planar import roots
 from .refine import planar_residual
-from .selfcheck import IndexCheckError, index_of
+from .selfcheck import IndexCheckError
 from .symmetry import box_group, orbit, planar_group, prism_group, representative
 
 __all__ = ["Equilibrium", "Solution", "solve", "stability_of", "body_scale"]
@@ -54,6 +55,7 @@ class Equilibrium:
     ring_length: float = 0.0    # its length on the unit sphere of up vectors (radians)
     ring_length_error: float = 0.0  # the error of that length (the walk's step at the ends, chords)
     stability_evidence: str = "second variation"     # or "higher orders", or "undecided"
+    digits: tuple = ()          # the up vector at 30 digits (mpf) where the solver polished it (next to a bifurcation)
     formulas: list = field(default_factory=list)
     predictions: list = field(default_factory=list)
 
@@ -152,24 +154,19 @@ def _shape(vertices: list, scale: float) -> str:
     return names.get(k, f"{k}-gon")
 
 
-def _classified(poly, points, s, scale):
-    """Stability, its evidence and (for degenerate points) the index of every isolated point from
-    the second variation or, where an eigenvalue is zero to its error, the higher orders."""
+def _classified(poly, points, s, scale, group):
+    """Stability, its evidence and (for degenerate points) the index of every isolated point: from the
+    second variation at the polished point (:func:`~symfloat.solver.critical.critical_points`) or,
+    where an eigenvalue is zero to its error, from the higher orders (:mod:`~symfloat.solver.degenerate`)."""
     out = []
     for c in points:
-        tol = eigenvalue_error(c.lipschitz, c.error_rad, scale)
-        stability, evidence = stability_of(c.eigen, tol, c.ring), "second variation"
+        stability, evidence = stability_of(c.eigen, c.eigen_error, c.ring), "second variation"
         if stability == "indifferent" and not c.ring:
-            values, vectors = local(poly, c.u, s).eigen()      # at the representative itself
-            null = vectors[int(np.argmin(np.abs(values)))]
-            others = [e for e in c.eigen if abs(e) > tol]
-            sides = null_sides(lambda eps: local(poly, tangent_step(c.u, eps * null), s).U - c.U, scale)
-            stability = higher_order(sides, others)
-            evidence = "higher orders" if stability != "indifferent" else "undecided"
-            if null_index(sides) is not None and others:
-                c.index = index_of((0.0, others[0]), null_index(sides))
-            else:
-                c.flat = True       # flat to rounding along the null direction: a family too short to trace
+            others = [g @ o.u for o in points if o is not c for g in group]
+            others += [v for v in orbit(c.u, group) if np.linalg.norm(v - c.u) > 1e-9]
+            c.index, stability, _ = degenerate_class(poly, c.u, s, scale, others)
+            evidence = "higher orders" if c.index is not None else "undecided"
+            c.flat = c.index is None
         out.append((c, stability, evidence))
     return out
 
@@ -181,34 +178,39 @@ def _searched(poly, s, seeds, group, scale):
     the points with their classification, the searches made and the index sum (None with rings)."""
     searches = ["seeds"]
     points = critical_points(poly, s, seeds, group, scale)
-    classified = _classified(poly, points, s, scale)
+    classified = _classified(poly, points, s, scale, group)
     index = _index_sum(points)
-    if index in (None, 2):
+    if _holds(index, points):
         return classified, searches, index
     extra = [c.u for c in points] + more_seeds(poly, s, points, group, scale)
     points = critical_points(poly, s, extra, group, scale)
-    classified = _classified(poly, points, s, scale)
+    classified = _classified(poly, points, s, scale, group)
     index = _index_sum(points)
     searches.append("separatrices, soft directions and small gradient")
-    if index in (None, 2):
+    if _holds(index, points):
         return classified, searches, index
     for delta in (Fraction(1, 10 ** 4), -Fraction(1, 10 ** 4)):
         near = s + delta * min(s, 1 - s)
         there = critical_points(poly, near, seeds, group, scale)
         extra += [c.u for c in there] + more_seeds(poly, near, there, group, scale)
     points = critical_points(poly, s, extra, group, scale)
-    classified = _classified(poly, points, s, scale)
+    classified = _classified(poly, points, s, scale, group)
     index = _index_sum(points)
     searches.append("continuation from s +- 1e-4 s(1 - s)")
     return classified, searches, index
 
 
 def _index_sum(points):
-    """The Poincaré–Hopf sum, or None where it does not apply: a ring, or a degenerate point whose
-    potential is flat to rounding along its null direction (a family too short to walk)."""
+    """The Poincaré–Hopf sum, or None where it does not apply (a ring) or cannot be made (a degenerate
+    point whose gradient on every circle around it is rounding: :attr:`Critical.flat`)."""
     if any(c.ring or c.flat for c in points):
         return None
     return poincare_hopf_sum(points)
+
+
+def _holds(index, points) -> bool:
+    """Whether the index check passes: the sum is 2, or there is a ring (the sum does not apply)."""
+    return index == 2 or (index is None and not any(c.flat for c in points))
 
 
 def _polyhedral(scene: Scene, seeds, group):
@@ -217,6 +219,12 @@ def _polyhedral(scene: Scene, seeds, group):
     s = scene.density
     seeds = distinct_seeds(seeds, group)
     classified, searches, index = _searched(poly, s, seeds, group, scale)
+    if index is None and any(c.flat for c, _, _ in classified):
+        flat = next(c for c, _, _ in classified if c.flat)
+        raise IndexCheckError(f"{_name(scene)}: the index of the degenerate equilibrium at up "
+                              f"{tuple(round(float(x), 9) for x in flat.u)} cannot be decided (its gradient is "
+                              f"rounding on the largest circle around it that encloses no other equilibrium) after {len(searches)} searches "
+                              f"({'; '.join(searches)}): the Poincaré–Hopf check cannot be made")
     if index not in (None, 2):
         raise IndexCheckError(f"{_name(scene)}: the Poincaré–Hopf index sum of the equilibria found is {index}, "
                               f"not 2, after {len(searches)} searches ({'; '.join(searches)}): an equilibrium is "
@@ -227,12 +235,11 @@ def _polyhedral(scene: Scene, seeds, group):
         out.append(Equilibrium(_clean(c.u), _tilt(c.u), stability,
                                "ring" if c.ring else "isolated", c.U, _shape(waterplane_polygon(poly, loc.state), scale),
                                tuple(float(e) for e in c.eigen), c.error_rad, c.error_method, c.orbit,
-                               c.shape, c.length, c.length_error, evidence))
+                               c.shape, c.length, c.length_error, evidence, digits=c.digits))
     families = index is None
     return out, {"poincare_hopf_index_sum": index, "expected_index_sum": 2, "seeds": len(seeds),
                  "searches": searches,
-                 **({"note": "one-parameter families (or degenerate points flat to rounding) present: the index sum "
-                             "does not apply"} if families else {})}
+                 **({"note": "one-parameter families present: the index sum does not apply"} if families else {})}
 
 
 def _name(scene: Scene) -> str:
