@@ -25,7 +25,7 @@ from .refine import polish
 from .selfcheck import index_of
 from .symmetry import orbit, representative, same_class
 
-__all__ = ["Critical", "newton", "descend", "critical_points", "poincare_hopf_sum", "more_seeds", "polyhedron_at"]
+__all__ = ["Critical", "newton", "symmetric_newton", "descend", "critical_points", "poincare_hopf_sum", "more_seeds", "polyhedron_at"]
 
 MAX_STEP = 0.3          # radians: Newton steps are capped (a trust region)
 MIN_FAMILY = 1e-3       # radians: a family of equilibria shorter than this is not reported as one
@@ -90,6 +90,37 @@ def newton(poly: Polyhedron, u0, s, scale: float, iterations: int = 60, null_tol
     return best, np.linalg.norm(best.gradient) <= 1e-11 * scale
 
 
+def symmetric_newton(poly: Polyhedron, u0, s, scale: float, group, iterations: int = 40):
+    """Newton's method for ``grad U = 0`` restricted to the positions with the symmetries of *u0*
+    (the elements of *group* that fix it to 1e-9): steps only in the tangent directions those
+    symmetries fix.  Along a branch of symmetric equilibria this is well conditioned where the full
+    Hessian is not (the cube's diagonal positions, whose soft direction leaves the mirror, next to the
+    ring they join).  Returns the last :class:`Local` and whether the gradient fell below
+    ``1e-13 * scale`` (it is iterated further while it falls)."""
+    u = np.asarray(u0, dtype=float)
+    u = u / np.linalg.norm(u)
+    P = np.mean([g for g in group if np.linalg.norm(g @ u - u) <= 1e-9], axis=0)
+    best, size = None, math.inf
+    for _ in range(iterations):
+        loc = local(poly, u, s)
+        Pt = P - np.outer(loc.u, loc.u)
+        w, vecs = np.linalg.eigh((Pt + Pt.T) / 2)
+        B = vecs[:, w > 0.5]                        # the fixed tangent directions (0, 1 or 2)
+        F = B.T @ (loc.basis @ loc.gradient)
+        if best is not None and np.linalg.norm(F) >= size:
+            break
+        best, size = loc, float(np.linalg.norm(F))
+        if B.shape[1] == 0 or size == 0:
+            break
+        J = B.T @ (loc.basis @ loc.hessian @ loc.basis.T) @ B
+        step = B @ np.linalg.lstsq(J, -F, rcond=None)[0]
+        norm = float(np.linalg.norm(step))
+        if norm > MAX_STEP:
+            step *= MAX_STEP / norm
+        u = tangent_step(loc.u, step)
+    return best, size <= 1e-13 * scale
+
+
 def _tangent_eigen(loc):
     """The two eigenpairs ``(lambda, tangent vector)`` of the Hessian, ascending."""
     w, vecs = loc.eigen()
@@ -99,8 +130,9 @@ def _tangent_eigen(loc):
 def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), others=()) -> tuple[float, str, float]:
     """Distance bound (radians) to the true equilibrium (:func:`equilibrium_error`, the gradient
     re-evaluated at *refine_dps* digits) and the Hessian's Lipschitz constant (central differences
-    along the two eigenvectors).  Where that bound is not Kantorovich's or the smallest eigenvalue
-    is within its error of zero (next to a bifurcation), an isolated point is polished by Newton's
+    along the two eigenvectors).  Where that bound is not Kantorovich's, exceeds 1e-13 rad, or the
+    smallest eigenvalue is within ten times its error of zero (next to a bifurcation), an isolated
+    point is polished by Newton's
     method at *refine_dps* digits (:func:`polish`) and, if its error then spans a mirror or an axis,
     tried at the symmetric position: its up vector, gradient and eigenvalues are then those of that
     point, whose bound is the Kantorovich radius from a residual near ``10^-refine_dps`` (plus the
@@ -119,7 +151,7 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), ot
         return (*equilibrium_error(residual, max(abs(e) for e in c.eigen), lipschitz, scale), lipschitz)
     residual = float(np.linalg.norm(gradient_at(exact, c.u, s)))
     err, method = equilibrium_error(residual, min(abs(e) for e in c.eigen), lipschitz, scale)
-    if method == "kantorovich" and min(abs(e) for e in c.eigen) > lipschitz * err + 1e-14 * scale:
+    if method == "kantorovich" and err <= 1e-13 and min(abs(e) for e in c.eigen) > 10 * (lipschitz * err + 1e-14 * scale):
         c.eigen_error = lipschitz * err + 1e-14 * scale        # decided in float64: nothing to polish
         return err, method, lipschitz
     u, residual, eigen = polish(exact, c.u, s, scale)

@@ -51,12 +51,12 @@ def polish(poly, u, s, scale: float, steps: int = 12, cap: float = 1e-2):
     Hessian there, ascending).  Steps are capped at *cap* radians and halved (up to four times) where
     the gradient would grow: next to a bifurcation the Hessian is nearly singular and a float64 point
     lies far from the equilibrium in its soft direction.  The iteration stops at a gradient of
-    ``10^(5 - dps) * scale`` or when it no longer falls."""
+    ``10^(2 - dps) * scale`` (the arithmetic's rounding) or when it no longer falls."""
     with mpmath.workdps(poly.dps):
         u = [mpmath.mpf(float(x)) for x in u]
         norm = mpmath.sqrt(sum(x * x for x in u))
         u = [x / norm for x in u]
-        floor = mpmath.mpf(10) ** (5 - poly.dps) * scale
+        floor = mpmath.mpf(10) ** (2 - poly.dps) * scale
         st, g, H = _local_mp(poly, u, s)
         best = (tuple(u), mpmath.norm(g), H)
         for _ in range(steps):
