@@ -285,14 +285,24 @@ def _fold(poly, group, eq, value, err, side, scale) -> tuple[float, float]:
     """A fold's density from the tracked bisection's *value* (which ends where Newton's method stops
     converging, short of the fold or past it by an amount set by its tolerance): the fold itself is
     the solution of the extended system of :func:`_fold_point`, started from the branch at *value*.
-    Where that does not converge next to *value*, the bisection's value is kept with its bracket.
+    Where that does not converge next to *value*, the bisection's value is kept, its error the distance
+    past the fold at which Newton's method still accepts a point.
     Witness: the cube's fold of Scheeffer X (171), 1 - 0.76230923886637546 at 30 digits
     (tests/test_scheeffer_x.py), and its dual."""
     loc, ok = symmetric_newton(poly, np.array(eq.up), value + math.copysign(BRACKET, side - value), scale, group)
     found = _fold_point(poly, group, loc.u, value, scale) if ok else None
-    if found is None or abs(found[0] - value) > 1e-6:
+    if found is not None and abs(found[0] - value) <= 1e-6:
+        return found
+    # no convergence: past a fold Newton's method accepts the point of least gradient while that gradient is
+    # below 1e-11 * scale, and the least gradient grows at the rate |dg/ds|, so the bisection may end up to
+    # c = 1e-11 * scale / |dg/ds| past the fold: that is its error
+    from .local import local
+    loc, ok = newton(poly, np.array(eq.up), value + math.copysign(BRACKET, side - value), scale)
+    if not ok:
         return value, err
-    return found
+    h = 1e-6
+    rate = np.linalg.norm(local(poly, loc.u, value + h).gradient - local(poly, loc.u, value - h).gradient) / (2 * h)
+    return value, max(err, 1e-11 * scale / max(float(rate), 1e-300))
 
 
 def _fold_point(poly, group, u, s, scale, iterations: int = 30):

@@ -21,17 +21,18 @@ import time
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+import mpmath
 import numpy as np
 
 from ..model.prediction import Scene
 from .bodies import centred_polygon, polyhedron
 from .critical import critical_points, distinct_seeds, more_seeds, poincare_hopf_sum, sphere_seeds
 from .cylinder import cylinder_slice
-from .errors import STEP, eigenvalue_error, equilibrium_error
+from .errors import ROUNDING, STEP, eigenvalue_error, equilibrium_error
 from .degenerate import degenerate_class
 from .local import local, waterplane_polygon
 from .planar import roots
-from .refine import planar_residual
+from .refine import planar_potential, planar_residual, polish_planar
 from .selfcheck import IndexCheckError
 from .symmetry import box_group, orbit, planar_group, prism_group, representative
 
@@ -85,11 +86,12 @@ def stability_of(eigenvalues, tolerance: float, ring: bool = False) -> str:
     return "indifferent"
 
 
-def null_sides(change, scale: float) -> tuple:
+def null_sides(change, scale: float, rounding: float = 1e-13) -> tuple:
     """How the potential behaves on each side of a null direction of the second variation, from its
     change ``change(eps)`` at eps = +-1e-3, +-3e-3, +-1e-2 rad: per side +1 when it rises at every
-    step, -1 when it falls at every step, None when it is flat to rounding (or mixed)."""
-    floor = 1e-13 * scale
+    step, -1 when it falls at every step, None when it is flat to *rounding* (relative to *scale*:
+    float64's, or a smaller one where the change is evaluated in mpmath) or mixed."""
+    floor = rounding * scale
     sides = []
     for sign in (1, -1):
         changes = [change(sign * eps) for eps in (1e-3, 3e-3, 1e-2)]
@@ -271,7 +273,8 @@ def _section(scene: Scene):
         if index == 0:
             break
     else:
-        raise IndexCheckError(f"{_name(scene)}: minima - maxima of the heel angle is {index}, not 0, after "
+        found = f"is {index}, not 0" if index is not None else "cannot be made (a degenerate root's index is undecided)"
+        raise IndexCheckError(f"{_name(scene)}: minima - maxima of the heel angle {found}, after "
                               f"{len(searches)} searches ({'; '.join(searches)}): an equilibrium is missing "
                               f"or mis-classified")
     return out, {"minima_minus_maxima": index, "expected_index_sum": 0, "grid": points, "searches": searches,
@@ -293,17 +296,30 @@ def _section_roots(scene, poly, group, evaluate, found, scale):
         err, method = equilibrium_error(planar_residual(scene, r.theta), abs(r.fprime), lipschitz, scale)
         tol = eigenvalue_error(lipschitz, err, scale)
         stability, evidence = stability_of((r.fprime,), tol), "second variation"
-        side = 1 if r.fprime > 0 else -1
+        side, fprime, digits = (1 if r.fprime > 0 else -1), r.fprime, ()
         if stability == "indifferent":
-            heel = lambda t: local(poly, np.array([math.cos(t), math.sin(t), 0.0]), s).U
-            sides = null_sides(lambda eps: heel(r.theta + eps) - loc.U, scale)
+            # next to a bifurcation: the root polished at 30 digits decides where float64 does not
+            theta, residual, second = polish_planar(scene, r.theta, scale)
+            err30, method30 = equilibrium_error(float(residual), abs(float(second)), lipschitz, scale)
+            stability = stability_of((float(second),), lipschitz * max(err30 - ROUNDING, 0.0) + 1e-25 * scale)
+            if stability != "indifferent":
+                u = np.array([float(mpmath.cos(theta)), float(mpmath.sin(theta)), 0.0])
+                loc, rep, fprime = local(poly, u, s), representative(u, group), float(second)
+                err, method, side = err30, method30, (1 if second > 0 else -1)
+                digits = (mpmath.cos(theta), mpmath.sin(theta), mpmath.mpf(0))
+        if stability == "indifferent":
+            heel = planar_potential(scene)
+            centre = heel(r.theta)
+            sides = null_sides(lambda eps: float(heel(r.theta + eps) - centre), scale, rounding=1e-25)
             side = null_index(sides)
             stability = higher_order(sides, [])
             evidence = "higher orders" if stability != "indifferent" else "undecided"
-        index += len(orbit(u, group)) * (side if side is not None else (1 if r.fprime > 0 else -1))
+        if side is None:
+            return out, None            # a root whose index cannot be decided: the check cannot be made
+        index += len(orbit(u, group)) * side
         out.append(Equilibrium(_clean(rep), 90.0, stability, "isolated",
-                               loc.U, "rectangle", (r.fprime,),
-                               err, method, len(orbit(u, group)), stability_evidence=evidence))
+                               loc.U, "rectangle", (fprime,),
+                               err, method, len(orbit(u, group)), stability_evidence=evidence, digits=digits))
     out.sort(key=lambda e: (round(e.potential / scale, 12), e.up))
     return out, index
 
