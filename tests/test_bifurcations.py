@@ -216,3 +216,23 @@ def test_cube_ring_ends_where_its_axis_point_reaches_a_vertex(sa, sb, end):
     a, b = _stable(make_scene("cube", Fraction(sa))), _stable(make_scene("cube", Fraction(sb)))
     ring = [t for t in _thresholds_between(poly, group, 1.0, a, b, sa, sb) if t.label.startswith("ring")]
     assert len(ring) == 1 and abs(ring[0].density - end) <= ring[0].bracket < 1e-13
+
+
+@pytest.mark.parametrize("density, dual", [("23/32", "9/32"), ("0.718750000000001", "0.281249999999999")])
+def test_square_log_at_and_next_to_the_double_root_of_ix(density, dual):
+    # Scheeffer IX (140): the long square log's diagonal position changes stability at 23/32 (and 9/32), where a
+    # pair of tilted positions is born (a pitchfork: tests/test_scheeffer_ix.py).  At 23/32 exactly the diagonal is
+    # degenerate; float64 called it undecided there and stable by its higher orders at 9/32, breaking the
+    # duality.  At 23/32 + 1e-15 the new pair (8 copies) lies 4e-8 rad from the diagonal: polished at 30 digits
+    # it is stable by its second variation, and its position agrees with a 50-digit refinement (refine_planar)
+    square = "0,0 1,0 1,1 0,1"
+    low, high = (solve(make_scene("section", d, polygon=square)) for d in (density, dual))
+    assert low.checks["minima_minus_maxima"] == 0 == high.checks["minima_minus_maxima"]
+    stable = lambda sol: sorted((round(abs(e.up[0]), 9), round(abs(e.up[1]), 9), e.copies, e.stability_evidence)
+                                for e in sol.equilibria if e.stability == "stable")
+    assert stable(low) == stable(high)
+    for e in low.equilibria:
+        if e.stability == "stable" and e.copies == 8:
+            theta = mpmath.atan2(e.up[1], e.up[0])
+            assert e.stability_evidence == "second variation"
+            assert float(abs(refine_planar(low.scene, theta) - theta)) <= e.error_rad
