@@ -151,7 +151,7 @@ def _phase_time(steps):
 def bifurcation_section(repeats: int) -> list[str]:
     """The section "Next to a bifurcation" of docs/performance.md."""
     lines = []
-    near = _near_bifurcation(["-1e-9", "1e-3", "1e-5", "1e-7", "1e-9", "1e-11", "1e-13"], repeats)
+    near = _near_bifurcation(["-1e-9", "1e-3", "1e-5", "1e-7", "1e-9", "1e-11", "1e-13", "1e-15", "1e-17"], repeats)
     lines += ["## Next to a bifurcation", "",
               "Box 1,2,3 at s = s_z + δ, s_z = (1 − √(25/27))/2, where the upright position (face z up) gives way to a "
               "stable class of 4 tilted copies at tilt ~ √δ (issue 14: the first sweep of seeds misses it next to "
@@ -160,13 +160,17 @@ def bifurcation_section(repeats: int) -> list[str]:
               "Newton refinement.", "",
               "Past the fold at 0.0190009553002 (δ = 1e-3) the tilted class no longer exists. Where a position's "
               "smallest eigenvalue is within its float64 error of zero (δ ≤ 1e-9 here: the eigenvalue is about "
-              "150 δ), the solver polishes it by Newton's method at 30 digits: its stability is then decided down "
-              "to eigenvalues of about 1e-25, i.e. δ of about 1e-27, and its error is the Kantorovich radius of "
-              "the 30-digit point plus the rounding of the float64 vector (the JSON record carries the 30 digits "
-              "as `up_digits`). Where even that decides nothing (an exact bifurcation density), the position's "
-              "index and stability come from the winding of the gradient and the potential on a circle around "
-              "it, and the index sum is still checked. What this costs: the second search (about twice the "
-              "time of a generic scene) and a few 30-digit evaluations per polished position.", "",
+              "150 δ), the solver polishes it by Newton's method at 30 digits: its error is then the Kantorovich "
+              "radius of the 30-digit point, whose residual carries the error of the 30-digit clipping (1e-25 "
+              "times the size), plus the rounding of the float64 vector (the JSON record carries the 30 digits as "
+              "`up_digits`), and its eigenvalue decides the stability while it exceeds L times that radius: the "
+              "error grows like 1/δ and the position stays decided until δ is about 1e-15 (the rows below). "
+              "Where nothing decides (at an exact bifurcation density, or closer than that), the position's index "
+              "and stability come from the winding of the gradient and the potential on a circle around it, and "
+              "the index sum is still checked; a degenerate position whose index cannot be read there fails the "
+              "scene (exit 1). What this costs: the second search, which also runs wherever an eigenvalue is "
+              "below 1e-4 times the size (a ring of index 0 born there would escape the sum; about twice the time "
+              "of a generic scene), and up to 40 Newton steps at 30 digits per polished position.", "",
               "| δ | solver (s) | searches | index sum | tilted stable class: tilt (rad) | true error (rad) | "
               "reported (rad) | bounded | undecided positions | polished at 30 digits |",
               "|---|---|---|---|---|---|---|---|---|---|"]

@@ -129,8 +129,9 @@ def conditioning_markdown(rows) -> str:
              "triggered a second search. Where the smallest eigenvalue is within ten times its float64 error of "
              "zero, or the float64 bound is not Kantorovich's or exceeds 1e-13 rad, the solver polishes the "
              "position by Newton's method at 30 digits: its bound is then the Kantorovich radius of the 30-digit "
-             "point plus the rounding of the float64 vector (5e-16), and its eigenvalues decide the stability "
-             "down to about 1e-25 (the rows at δ = 1e-10 and 1e-12, where float64 alone decided nothing).",
+             "point (its residual including the 1e-25 error of the 30-digit clipping) plus the rounding of the "
+             "float64 vector (5e-16), and its eigenvalues decide the stability while they exceed the Lipschitz "
+             "constant times that radius (the rows at δ = 1e-10 and 1e-12, where float64 alone decided nothing).",
              "", "| case | s* | δ | tilt (°) | stability | true error (rad) | reported (rad) | how | bounded |",
              "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:

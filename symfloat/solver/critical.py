@@ -28,7 +28,9 @@ from .symmetry import orbit, representative, same_class
 __all__ = ["Critical", "newton", "symmetric_newton", "descend", "critical_points", "poincare_hopf_sum", "more_seeds", "polyhedron_at"]
 
 MAX_STEP = 0.3          # radians: Newton steps are capped (a trust region)
-MIN_FAMILY = 1e-3       # radians: a family of equilibria shorter than this is not reported as one
+MIN_FAMILY = 1e-3       # radians: an arc of equilibria shorter than this is not reported as one
+MIN_RING = 5e-4         # radians: nor a closed ring (radius 8e-5: a ring born from an axis 1e-8 in s past it; a
+                        # smaller "ring" lies within the float64 error of a degenerate point, flat to rounding)
 FLAT = 2e-14            # relative to the size of the body: a ring's potential is constant to rounding
 ZERO_EIGEN = 1e-8       # relative to the size of the body: a null direction of the Hessian
 
@@ -149,19 +151,29 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), ot
         residual = float(np.linalg.norm(gradient_at(exact, c.u, s)))
         c.eigen_error = lipschitz * residual / max(abs(e) for e in c.eigen) + 1e-14 * scale
         return (*equilibrium_error(residual, max(abs(e) for e in c.eigen), lipschitz, scale), lipschitz)
+    # the error of the clipping at refine_dps digits, added to a residual that is not exactly zero (an exact
+    # zero is a position fixed by the body's symmetries: an equilibrium in any arithmetic)
+    arithmetic = 10.0 ** (5 - refine_dps) * scale
     residual = float(np.linalg.norm(gradient_at(exact, c.u, s)))
+    residual += arithmetic if residual else 0.0
     err, method = equilibrium_error(residual, min(abs(e) for e in c.eigen), lipschitz, scale)
     if method == "kantorovich" and err <= 1e-13 and min(abs(e) for e in c.eigen) > 10 * (lipschitz * err + 1e-14 * scale):
         c.eigen_error = lipschitz * err + 1e-14 * scale        # decided in float64: nothing to polish
         return err, method, lipschitz
     u, residual, eigen = polish(exact, c.u, s, scale)
+    residual += arithmetic          # at 30 digits a residual below the arithmetic's error may round to 0
     err, method = equilibrium_error(float(residual), float(min(abs(e) for e in eigen)), lipschitz, scale)
     # the most symmetric position within the error: where the polished point's error spans a mirror or
     # an axis (a degenerate point, where Newton converges slowly), the symmetric point is the candidate
     v = symmetric_point([float(x) for x in u], group, 2 * err + 1e-12)
     if any(abs(a - float(b)) > 0 for a, b in zip(v, u)) and not any(
             o is not c and same_class(o.u, v, group, 2 * o.error_rad + 1e-12) for o in others):
-        w, size, values = polish(exact, v, s, scale, steps=0)
+        with mpmath.workdps(refine_dps):        # the symmetric point in mpmath (its float64 is not exactly symmetric)
+            fixing = [g for g in group if np.linalg.norm(g @ v - v) <= 1e-12]
+            mean = [sum(mpmath.mpf(float(g[i, j])) * mpmath.mpf(float(v[j])) for g in fixing for j in range(3))
+                    for i in range(3)]
+        w, size, values = polish(exact, mean, s, scale, steps=0)
+        size += arithmetic
         if size <= residual:
             u, residual, eigen = w, size, values
             err, method = equilibrium_error(float(residual), float(min(abs(e) for e in eigen)), lipschitz, scale)
@@ -169,7 +181,7 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), ot
     c.u = np.array([float(x) for x in u])
     c.u /= np.linalg.norm(c.u)
     c.eigen = tuple(float(e) for e in eigen)
-    c.eigen_error = lipschitz * max(err - ROUNDING, 0.0) + 10.0 ** (5 - refine_dps) * scale
+    c.eigen_error = lipschitz * max(err - ROUNDING, 0.0) + arithmetic
     return err, method, lipschitz
 
 
@@ -246,6 +258,19 @@ def more_seeds(poly: Polyhedron, s, points: list[Critical], group, scale: float,
     return seeds
 
 
+def _nearest_axis(u, group) -> float:
+    """Angle from *u* to the nearest axis of a rotation of *group* (a ring around that axis, born from
+    the position on it, has this radius: steps along it must be smaller)."""
+    angles = []
+    for g in group:
+        if np.linalg.det(g) > 0 and not np.allclose(g, np.eye(3)):
+            w, v = np.linalg.eig(g)
+            axis = np.real(v[:, int(np.argmin(np.abs(w - 1)))])
+            axis /= np.linalg.norm(axis)
+            angles.append(math.acos(min(1.0, abs(float(np.dot(axis, u))))))
+    return min(angles, default=math.pi)
+
+
 def _nearest_copy(u, group, floor: float = 1e-3) -> float:
     """Angle to the nearest symmetric copy of *u* farther than *floor* (a copy closer than that is
     the same position seen through a mirror it almost lies on, not another point of a family)."""
@@ -258,12 +283,17 @@ def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
     the point, so a small ring around an axis is not jumped over) and let Newton settle: on a
     ring it lands on another equilibrium of the same potential, not in the same class."""
     lam_null, v_null = min(pairs, key=lambda p: abs(p[0]))
-    if abs(lam_null) > 1e-6 * scale:
+    lam_across = max(abs(p[0]) for p in pairs)
+    if abs(lam_null) > 1e-6 * scale or lam_across < max(100 * abs(lam_null), 1e-11 * scale) \
+            or _nearest_axis(loc.u, group) < 1e-6:
+        # not flat; or flat both ways (a neighbourhood flat to rounding next to a bifurcation, not a ring:
+        # the point is classified by its higher orders); or on an axis (a ring is born around it, not through it)
         return False
-    delta = min(0.03, _nearest_copy(loc.u, group) / 4)
+    delta = min(0.03, _nearest_copy(loc.u, group) / 4, max(_nearest_axis(loc.u, group), 1e-9) / 4)
     for step in (delta, -delta):
         moved = tangent_step(loc.u, step * v_null)
         other, ok = newton(poly, moved, s, scale)
+        ok = ok and np.linalg.norm(other.gradient) <= 1e-13 * scale and np.linalg.norm(loc.gradient) <= 1e-13 * scale
         if ok and np.linalg.norm(other.u - loc.u) > delta / 3 and abs(other.U - loc.U) <= FLAT * scale \
                 and not same_class(other.u, loc.u, group, delta / 10):
             return True
@@ -278,12 +308,17 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
     arc by at most ``delta^3 / (24 R^2)`` on a circle of radius ``R``; an arc's end is located by
     halving the last step eight times, so each end lies within ``delta / 256`` past the point reached."""
     start = local(poly, u, s)
-    delta = min(0.005, _nearest_copy(start.u, group) / 4)   # a gap in the family narrower than this is not seen
+    # a gap in the family narrower than the step is not seen; a ring around an axis is walked in steps of a
+    # quarter of its radius at most
+    axis = max(_nearest_axis(start.u, group), 1e-9)
+    delta = min(0.005, _nearest_copy(start.u, group) / 4, axis / 4)
+    max_steps = min(max_steps, int(8 * math.pi * axis / delta) + 16)     # twice round a circle of that radius
 
     def step_from(loc, v, h):
         nxt, ok = newton(poly, tangent_step(loc.u, h * v), s, scale)
         moved = float(np.linalg.norm(nxt.u - loc.u))
-        good = ok and abs(nxt.U - start.U) <= FLAT * scale and moved >= h / 3 \
+        good = ok and np.linalg.norm(nxt.gradient) <= 1e-13 * scale and abs(nxt.U - start.U) <= FLAT * scale \
+            and moved >= h / 3 \
             and min(abs(p[0]) for p in _tangent_eigen(nxt)) <= 1e-6 * scale
         return nxt, moved, good
 
@@ -311,6 +346,9 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
             previous, loc = loc.u, nxt
             visited.append(loc.u)
             total += 2 * math.asin(min(1.0, moved / 2))
+            if total > 2 * math.pi:             # longer than a great circle: not a walk along one family
+                ends.append(loc.u)
+                break
             if total > 2 * delta and np.linalg.norm(loc.u - start.u) < delta / 2:
                 total += 2 * math.asin(min(1.0, float(np.linalg.norm(loc.u - start.u)) / 2))
                 radius = total / (2 * math.pi)
@@ -318,6 +356,8 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
                 axis = np.linalg.svd(points - points.mean(axis=0))[2][-1]
                 axis = axis if np.dot(axis, points.mean(axis=0)) > 0 else -axis
                 return "closed", total, total * (delta / radius) ** 2 / 24 + 1e-12, (axis,)
+        else:
+            ends.append(loc.u)
     radius = max(total / (2 * math.pi), delta)
     return "arc", total, 2 * delta / 256 + total * (delta / radius) ** 2 / 24 + 1e-12, tuple(ends)
 
@@ -363,7 +403,7 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
         if c.ring:
             c.shape, c.length, c.length_error, key = trace_family(poly, c.u, s, scale, group)
             # a "ring" the walk cannot follow (or only for a few steps) is an isolated degenerate point
-            c.ring = c.length >= MIN_FAMILY
+            c.ring = c.length >= (MIN_RING if c.shape == "closed" else MIN_FAMILY)
             if c.ring:
                 c.orbit = family_copies(c.shape, key, group, 1e-3)
         # a ring's error is across it (its tilt): the bound with its transverse eigenvalue

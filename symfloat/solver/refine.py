@@ -46,15 +46,15 @@ def refine_sphere(scene, u, dps: int = 50, steps: int = 12):
         return tuple(u), mpmath.norm(g)
 
 
-def polish(poly, u, s, scale: float, steps: int = 12, cap: float = 1e-2):
-    """Newton's method at *poly*'s precision (an mpmath body) from the float unit vector *u*: returns
+def polish(poly, u, s, scale: float, steps: int = 40, cap: float = 1e-2):
+    """Newton's method at *poly*'s precision (an mpmath body) from the unit vector *u* (floats or mpf): returns
     ``(u, |grad U|, eigenvalues)`` at the best point reached (mpf; the eigenvalues of the metacentric
     Hessian there, ascending).  Steps are capped at *cap* radians and halved (up to four times) where
     the gradient would grow: next to a bifurcation the Hessian is nearly singular and a float64 point
     lies far from the equilibrium in its soft direction.  The iteration stops at a gradient of
     ``10^(2 - dps) * scale`` (the arithmetic's rounding) or when it no longer falls."""
     with mpmath.workdps(poly.dps):
-        u = [mpmath.mpf(float(x)) for x in u]
+        u = [mpmath.mpf(x) if isinstance(x, mpmath.mpf) else mpmath.mpf(float(x)) for x in u]
         norm = mpmath.sqrt(sum(x * x for x in u))
         u = [x / norm for x in u]
         floor = mpmath.mpf(10) ** (2 - poly.dps) * scale

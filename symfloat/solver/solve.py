@@ -38,6 +38,8 @@ from .symmetry import box_group, orbit, planar_group, prism_group, representativ
 
 __all__ = ["Equilibrium", "Solution", "solve", "stability_of", "body_scale"]
 
+SOFT = 1e-4     # relative to the size of the body: an eigenvalue this small means a bifurcation is near
+
 
 @dataclass
 class Equilibrium:
@@ -182,7 +184,7 @@ def _searched(poly, s, seeds, group, scale):
     points = critical_points(poly, s, seeds, group, scale)
     classified = _classified(poly, points, s, scale, group)
     index = _index_sum(points)
-    if _holds(index, points):
+    if _holds(index, points, scale):
         return classified, searches, index
     extra = [c.u for c in points] + more_seeds(poly, s, points, group, scale)
     points = critical_points(poly, s, extra, group, scale)
@@ -210,8 +212,13 @@ def _index_sum(points):
     return poincare_hopf_sum(points)
 
 
-def _holds(index, points) -> bool:
-    """Whether the index check passes: the sum is 2, or there is a ring (the sum does not apply)."""
+def _holds(index, points, scale: float = 0.0) -> bool:
+    """Whether the index check passes: the sum is 2, or there is a ring (the sum does not apply).  With
+    *scale*, also whether no isolated point is nearly degenerate (its smallest eigenvalue below
+    ``SOFT * scale``): next to a bifurcation a ring of index 0 may be born beside it, which no index sum
+    sees, so the search goes on there (soft directions, small gradient)."""
+    if scale and any(not c.ring and min(abs(e) for e in c.eigen) < SOFT * scale for c in points):
+        return False
     return index == 2 or (index is None and not any(c.flat for c in points))
 
 
