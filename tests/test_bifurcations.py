@@ -218,13 +218,15 @@ def test_cube_ring_ends_where_its_axis_point_reaches_a_vertex(sa, sb, end):
     assert len(ring) == 1 and abs(ring[0].density - end) <= ring[0].bracket < 1e-13
 
 
-@pytest.mark.parametrize("density, dual", [("23/32", "9/32"), ("0.718750000000001", "0.281249999999999")])
+@pytest.mark.parametrize("density, dual", [("23/32", "9/32"), ("0.718750000000001", "0.281249999999999"),
+                                           ("0.718749999999", "0.281250000001")])
 def test_square_log_at_and_next_to_the_double_root_of_ix(density, dual):
     # Scheeffer IX (140): the long square log's diagonal position changes stability at 23/32 (and 9/32), where a
     # pair of tilted positions is born (a pitchfork: tests/test_scheeffer_ix.py).  At 23/32 exactly the diagonal is
     # degenerate; float64 called it undecided there and stable by its higher orders at 9/32, breaking the
     # duality.  At 23/32 + 1e-15 the new pair (8 copies) lies 4e-8 rad from the diagonal: polished at 30 digits
-    # it is stable by its second variation, and its position agrees with a 50-digit refinement (refine_planar)
+    # it is stable by its second variation, and its position agrees with a 50-digit refinement (refine_planar).
+    # At 23/32 - 1e-12 a float64 root 6e-6 rad off the diagonal, polished, is the diagonal itself: one class, not two
     square = "0,0 1,0 1,1 0,1"
     low, high = (solve(make_scene("section", d, polygon=square)) for d in (density, dual))
     assert low.checks["minima_minus_maxima"] == 0 == high.checks["minima_minus_maxima"]
@@ -236,3 +238,40 @@ def test_square_log_at_and_next_to_the_double_root_of_ix(density, dual):
             theta = mpmath.atan2(e.up[1], e.up[0])
             assert e.stability_evidence == "second variation"
             assert float(abs(refine_planar(low.scene, theta) - theta)) <= e.error_rad
+
+
+@pytest.mark.parametrize("offset", ["1e-6", "1e-8"])
+def test_cube_ring_born_from_the_upright_position_next_to_its_birth(offset):
+    # (79)/(80): past s* = 1/2 - sqrt(1/12) the upright cube is unstable and a closed ring of tilted positions is
+    # born around it, tan^2 phi = 12 s (1 - s) - 2 (VI.C's first region), of radius ~ sqrt(s - s*): 8e-4 rad at
+    # s* + 1e-6, 8e-5 rad at s* + 1e-8.  Its index is 0, so no index sum misses it; it was missed (the walk's step
+    # of 5e-3 jumped over it) until the solver searched on next to the nearly degenerate upright position
+    with mpmath.workdps(50):
+        s_star = mpmath.mpf(1) / 2 - mpmath.sqrt(mpmath.mpf(1) / 12)
+        s = Fraction(mpmath.nstr(s_star + mpmath.mpf(offset), 40))
+    sol = solve(make_scene("cube", s))
+    rings = [e for e in sol.equilibria if e.family == "ring"]
+    assert len(rings) == 1 and rings[0].stability == "stable" and rings[0].ring_shape == "closed"
+    assert rings[0].copies == 6
+    phi = math.atan(math.sqrt(12 * float(s) * (1 - float(s)) - 2))
+    assert abs(math.radians(rings[0].tilt_deg) - phi) <= rings[0].error_rad       # the error across the ring
+    assert abs(rings[0].ring_length - 2 * math.pi * math.sin(phi)) <= rings[0].ring_length_error
+    upright = next(e for e in sol.equilibria if e.up == (0.0, 0.0, 1.0))
+    assert upright.stability == "unstable"
+
+
+def test_box_next_to_its_threshold_and_its_dual_agree():
+    # found by the property test below (tests/test_solver_properties.py): box 1 x 2 x 4 at s* + 1e-12, s* = 1/2 -
+    # sqrt(1/4 - (1/4)^2/6) (Scheeffer IV (18)).  At 1 - s float64 saw a ring of equilibria 1e-3 rad around the
+    # axis (its points accepted with a gradient 1e-11, the potential flat to rounding there) where the true
+    # position is the tilted class at 1.371e-5 rad (50-digit refinement: the same as at s, turned upside down)
+    with mpmath.workdps(40):
+        s_star = mpmath.mpf(1) / 2 - mpmath.sqrt(mpmath.mpf(1) / 4 - (mpmath.mpf(1) / 4) ** 2 / 6)
+        s = Fraction(mpmath.nstr(s_star + mpmath.mpf("1e-12"), 35))
+    stable = []
+    for density in (s, 1 - s):
+        sol = solve(make_scene("box", density, dims="1,2,4"))
+        assert sol.checks["poincare_hopf_index_sum"] == 2
+        stable.append(sorted((round(abs(e.up[0]), 9), round(abs(e.up[1]), 9), e.copies)
+                             for e in sol.equilibria if e.stability == "stable"))
+    assert stable[0] == stable[1] and (0.000013710, 0.0, 4) in stable[0]

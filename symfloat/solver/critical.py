@@ -350,7 +350,9 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
                 ends.append(loc.u)
                 break
             if total > 2 * delta and np.linalg.norm(loc.u - start.u) < delta / 2:
-                total += 2 * math.asin(min(1.0, float(np.linalg.norm(loc.u - start.u)) / 2))
+                # the chord back to the start, or less the part of the last step that went past it
+                gap = 2 * math.asin(min(1.0, float(np.linalg.norm(loc.u - start.u)) / 2))
+                total += gap if np.dot(loc.u - previous, start.u - loc.u) > 0 else -gap
                 radius = total / (2 * math.pi)
                 points = np.array(visited)          # a circle on the sphere: the normal of its plane, towards it
                 axis = np.linalg.svd(points - points.mean(axis=0))[2][-1]
@@ -408,6 +410,9 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
                 c.orbit = family_copies(c.shape, key, group, 1e-3)
         # a ring's error is across it (its tilt): the bound with its transverse eigenvalue
         c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps, group, found)
+        if c.ring:      # a family's length scales with its radius, known to the error across it
+            radius = c.length / (2 * math.pi) if c.shape == "closed" else math.sin(_nearest_axis(c.u, group))
+            c.length_error += c.length * c.error_rad / max(radius, c.error_rad)
     # two float64 points of one equilibrium, brought together by the polishing, are one class; the copies
     # of a class are counted with a tolerance tied to its error (a point closer to a mirror than its
     # error lies on it to what is known)

@@ -314,6 +314,9 @@ def _section_roots(scene, poly, group, evaluate, found, scale):
                 loc, rep, fprime = local(poly, u, s), representative(u, group), float(second)
                 err, method, side = err30, method30, (1 if second > 0 else -1)
                 digits = (mpmath.cos(theta), mpmath.sin(theta), mpmath.mpf(0))
+                if any(np.linalg.norm(g @ u - np.array(e.up)) <= 2 * (err + e.error_rad) + 1e-12
+                       for e in out for g in group):
+                    continue            # a float64 root next to a flat one: polished, it is that one
         if stability == "indifferent":
             heel = planar_potential(scene)
             centre = heel(r.theta)
