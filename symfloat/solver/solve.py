@@ -13,6 +13,13 @@ Stability: ``stable`` when every eigenvalue of the metacentric matrix
 ``unstable`` when one is negative, ``indifferent`` when the smallest is zero to
 the working accuracy and the equilibrium is not a ring.  A ring is reported
 once; its stability is that of the direction across it.
+
+Next to a bifurcation a position whose smallest eigenvalue float64 cannot
+decide is polished at 30 digits (:func:`~symfloat.solver.refine.polish`);
+where even that decides nothing the higher orders do
+(:mod:`~symfloat.solver.degenerate`: the winding of the gradient and the
+potential on a circle around it), and the position carries that index into
+the check.  A check that still fails is an error (:class:`IndexCheckError`).
 """
 from __future__ import annotations
 
