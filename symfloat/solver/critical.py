@@ -154,18 +154,25 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), ot
         residual = float(np.linalg.norm(gradient_at(exact, c.u, s)))
         c.eigen_error = lipschitz * residual / max(abs(e) for e in c.eigen) + 1e-14 * scale
         return (*equilibrium_error(residual, max(abs(e) for e in c.eigen), lipschitz, scale), lipschitz)
-    # the error of the clipping at refine_dps digits, added to a residual that is not exactly zero (an exact
-    # zero is a position fixed by the body's symmetries: an equilibrium in any arithmetic)
-    arithmetic = 10.0 ** (5 - refine_dps) * scale
-    residual = float(np.linalg.norm(gradient_at(exact, c.u, s)))
-    residual += arithmetic if residual else 0.0
+    # the error of the clipping at refine_dps digits, added to every residual but that of a position its
+    # symmetries pin down exactly (an equilibrium in any arithmetic: face up)
+    pinned = _pinned(c.u, group)
+    arithmetic = 0.0 if pinned else 10.0 ** (5 - refine_dps) * scale
+    residual = float(np.linalg.norm(gradient_at(exact, c.u, s))) + arithmetic
     err, method = equilibrium_error(residual, min(abs(e) for e in c.eigen), lipschitz, scale)
     if method == "kantorovich" and err <= 1e-13 and min(abs(e) for e in c.eigen) > 10 * (lipschitz * err + 1e-14 * scale):
         c.eigen_error = lipschitz * err + 1e-14 * scale        # decided in float64: nothing to polish
         return err, method, lipschitz
-    u, residual, eigen = polish(exact, c.u, s, scale)
+    u, residual, eigen = polish(exact, c.u, s, scale, steps=0 if pinned else 40)
     residual += arithmetic          # at 30 digits a residual below the arithmetic's error may round to 0
     err, method = equilibrium_error(float(residual), float(min(abs(e) for e in eigen)), lipschitz, scale)
+    if not pinned and min(abs(float(e)) for e in eigen) <= lipschitz * max(err - ROUNDING, 0.0) + arithmetic:
+        # still undecided: once more at twice the digits (closer still to the bifurcation)
+        refine_dps, exact = 2 * refine_dps, polyhedron_at(poly, 2 * refine_dps)
+        arithmetic = 10.0 ** (5 - refine_dps) * scale
+        u, residual, eigen = polish(exact, u, s, scale)
+        residual += arithmetic
+        err, method = equilibrium_error(float(residual), float(min(abs(e) for e in eigen)), lipschitz, scale)
     # the most symmetric position within the error: where the polished point's error spans a mirror or
     # an axis (a degenerate point, where Newton converges slowly), the symmetric point is the candidate
     v = symmetric_point([float(x) for x in u], group, 2 * err + 1e-12)
@@ -184,8 +191,19 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), ot
     c.u = np.array([float(x) for x in u])
     c.u /= np.linalg.norm(c.u)
     c.eigen = tuple(float(e) for e in eigen)
-    c.eigen_error = lipschitz * max(err - ROUNDING, 0.0) + arithmetic
+    c.eigen_error = lipschitz * max(err - ROUNDING, 0.0) + 10.0 ** (5 - refine_dps) * scale
     return err, method, lipschitz
+
+
+def _pinned(u, group) -> bool:
+    """Whether the float64 vector *u* is fixed exactly by symmetries of the body that fix no tangent
+    direction (face up, corner up of a box given exactly): then it is an equilibrium by symmetry."""
+    u = np.asarray(u, dtype=float)
+    fixing = [g for g in group if np.array_equal(g @ u, u)]
+    if not fixing:
+        return False
+    P = np.mean(fixing, axis=0) - np.outer(u, u)
+    return not np.any(np.linalg.eigvalsh((P + P.T) / 2) > 0.5)
 
 
 def polyhedron_at(poly, dps: int) -> Polyhedron:
