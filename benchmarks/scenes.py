@@ -168,8 +168,8 @@ def bifurcation_section(repeats: int) -> list[str]:
               "Where nothing decides (at an exact bifurcation density, or closer than that), the position's index "
               "and stability come from the winding of the gradient and the potential on a circle around it, and "
               "the index sum is still checked; a degenerate position whose index cannot be read there fails the "
-              "scene (exit 1). What this costs: the second search, which also runs wherever an eigenvalue is "
-              "below 1e-4 times the size (a ring of index 0 born there would escape the sum; about twice the time "
+              "scene (exit 1). What this costs: the second search, which also runs next to a position whose "
+              "second variation, decided, is below 1e-4 times the size (a ring of index 0 born there would escape the sum; about twice the time "
               "of a generic scene), and up to 40 Newton steps at 30 digits per polished position.", "",
               "| δ | solver (s) | searches | index sum | tilted stable class: tilt (rad) | true error (rad) | "
               "reported (rad) | bounded | undecided positions | polished at 30 digits |",
