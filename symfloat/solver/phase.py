@@ -140,6 +140,9 @@ def _locate_tracked(poly, group, scale, label, eq, s_in, s_out):
         root = _eigenvalue_root(poly, group, u, lo, scale)
         if root is not None and abs(root[0] - (lo + hi) / 2) <= 2 * err + 1e-12:
             return root[0], root[1], tilt, note, u
+        fold = _fold_point(poly, group, u, lo, scale)
+        if fold is not None and abs(fold[0] - lo) <= 1e-6:
+            return fold[0], fold[1], tilt, "a fold: the position meets another branch and both end; error estimated", u
     else:
         # the family's point on the mirror of its representative (the walk along it may have drifted off)
         up = np.array(eq.up)
@@ -325,7 +328,8 @@ def _fold_point(poly, group, u, s, scale, iterations: int = 30):
             B = vecs[:, w > 0.5]
         J = B.T @ (loc.basis @ loc.hessian @ loc.basis.T) @ B
         values = np.linalg.eigvalsh(J)
-        return loc, B, B.T @ (loc.basis @ loc.gradient), J, float(values[np.argmin(np.abs(values))])
+        lam = float(values[np.argmin(np.abs(values))]) if len(values) else 0.0
+        return loc, B, B.T @ (loc.basis @ loc.gradient), J, lam
 
     last = math.inf
     for _ in range(iterations):
