@@ -1,6 +1,7 @@
 """`symfloat phase`: thresholds located to 10 digits and matched with the sources' closed forms."""
 import math
 
+import mpmath
 import pytest
 
 from symfloat.report.phase import phase_record, phase_table
@@ -34,3 +35,35 @@ def test_phase_outputs(box_phase, tmp_path):
     from test_json_schemas import errors
     assert errors("phase", record) == []                  # symfloat/schemas/phase.schema.json
     assert "duality s <-> 1 - s: holds" in phase_table(box_phase)
+
+
+def _box_fold_xz():
+    """The fold that ends the tilted window above s_z of the 1 x 2 x 3 box, independently: mpmath.findroot at
+    30 digits on U'(theta) = U''(theta) = 0 in the x-z plane, the derivatives of the exactly clipped body
+    (refine._local_mp), not the solver's float64 extended system: 0.0190009553001899470923612444513."""
+    from symfloat.geometry.floating import box
+    from symfloat.solver.refine import _local_mp
+    with mpmath.workdps(30):
+        poly = box(1, 2, 3, dps=30)
+
+        def equations(theta, s):
+            u = (mpmath.sin(theta), mpmath.mpf(0), mpmath.cos(theta))
+            e = (mpmath.cos(theta), mpmath.mpf(0), -mpmath.sin(theta))
+            st, g, H = _local_mp(poly, u, s)
+            b = [sum(basis[k] * e[k] for k in range(3)) for basis in st.basis]
+            return g[0] * b[0] + g[1] * b[1], sum(b[i] * H[i, j] * b[j] for i in range(2) for j in range(2))
+        return float(mpmath.findroot(equations, (mpmath.radians(6.56), mpmath.mpf("0.0190009553")))[1])
+
+
+def test_box_window_above_s_z_is_found_with_its_dual(box_phase):
+    # issue 14: the stable window of the 4 tilted copies from s_z = (1 - sqrt(25/27))/2 (a pitchfork of face z
+    # up, Scheeffer IV (18) with w/h = 1/3) to a fold near 0.0190 was missing from `phase box --dims 1,2,3`;
+    # the sweep of 8 densities (spacing 1/9) has no density in it.  Both ends, and their duals at 1 - s
+    s_z, fold = 0.5 - math.sqrt(0.25 - (1 / 3) ** 2 / 6), _box_fold_xz()
+    tilted = [t for t in box_phase.thresholds if t.label == "tilted in the x-z plane"]
+    for value, change in ((s_z, "stable above"), (fold, "stable below"),
+                          (1 - fold, "stable above"), (1 - s_z, "stable below")):
+        found = [t for t in tilted if abs(t.density - value) <= max(t.bracket, 1e-15) and t.change == change]
+        assert len(found) == 1, (value, change)
+        assert found[0].bracket < 1e-12
+    assert box_phase.unpaired == []

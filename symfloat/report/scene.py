@@ -4,6 +4,7 @@ from __future__ import annotations
 import json
 import math
 
+import mpmath
 import numpy as np
 
 __all__ = ["scene_record", "scene_json", "scene_table", "scene_plot"]
@@ -35,6 +36,9 @@ def scene_record(solution, evaluated, unmatched, seconds) -> dict:
         "density_exact": str(sc.density),
         "equilibria": [{
             "up": list(e.up),           # every digit of the float64 vector the error bound speaks of
+            # where the solver polished the position at 30 digits (next to a bifurcation, where error_rad can
+            # be far below the float64 rounding of up), those digits; else null (up is the result)
+            "up_digits": [mpmath.nstr(x, 30) for x in e.digits] if e.digits else None,
             "tilt_deg": round(e.tilt_deg, 12),
             "stability": e.stability,
             "stability_evidence": e.stability_evidence,

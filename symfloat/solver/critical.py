@@ -8,6 +8,9 @@ step along the null direction followed by Newton lands on another equilibrium
 of the same potential.  Completeness is checked by the Poincaré–Hopf theorem:
 over the whole sphere the indices of the isolated critical points (+1 for
 minima and maxima, -1 for saddles) add up to 2, and a Morse–Bott ring adds 0.
+A point that float64 does not pin down (a nearly singular Hessian) is polished
+at 30 digits and, where its error spans a mirror or an axis, tried at the
+symmetric position (:func:`_error_estimate`).
 """
 from __future__ import annotations
 
@@ -18,15 +21,19 @@ import mpmath
 import numpy as np
 
 from ..geometry.floating import Polyhedron
-from .errors import STEP, equilibrium_error
+from .errors import ROUNDING, STEP, equilibrium_error
 from .local import gradient_at, local, tangent_step
+from .degenerate import symmetric_point
+from .refine import polish
 from .selfcheck import index_of
 from .symmetry import orbit, representative, same_class
 
-__all__ = ["Critical", "newton", "descend", "critical_points", "poincare_hopf_sum", "more_seeds"]
+__all__ = ["Critical", "newton", "symmetric_newton", "descend", "critical_points", "poincare_hopf_sum", "more_seeds", "polyhedron_at"]
 
 MAX_STEP = 0.3          # radians: Newton steps are capped (a trust region)
-MIN_FAMILY = 1e-3       # radians: a family of equilibria shorter than this is not reported as one
+MIN_FAMILY = 1e-3       # radians: an arc of equilibria shorter than this is not reported as one
+MIN_RING = 5e-4         # radians: nor a closed ring (radius 8e-5: a ring born from an axis 1e-8 in s past it; a
+                        # smaller "ring" lies within the float64 error of a degenerate point, flat to rounding)
 FLAT = 2e-14            # relative to the size of the body: a ring's potential is constant to rounding
 ZERO_EIGEN = 1e-8       # relative to the size of the body: a null direction of the Hessian
 
@@ -50,7 +57,9 @@ class Critical:
     error_method: str = "exact"
     lipschitz: float = 0.0
     index: int | None = None    # set where the Hessian is degenerate: from the higher orders
-    flat: bool = False          # degenerate and flat to rounding along the null direction: no index
+    flat: bool = False          # degenerate and flat to rounding on the circle around it: no index
+    digits: tuple = ()          # the up vector polished at 30 digits (mpf), when it is isolated
+    eigen_error: float = 0.0    # the error of the eigenvalues (at the polished point)
 
 
 def newton(poly: Polyhedron, u0, s, scale: float, iterations: int = 60, null_tol: float | None = None):
@@ -86,30 +95,121 @@ def newton(poly: Polyhedron, u0, s, scale: float, iterations: int = 60, null_tol
     return best, np.linalg.norm(best.gradient) <= 1e-11 * scale
 
 
+def symmetric_newton(poly: Polyhedron, u0, s, scale: float, group, iterations: int = 40):
+    """Newton's method for ``grad U = 0`` restricted to the positions with the symmetries of *u0*
+    (the elements of *group* that fix it to 1e-9): steps only in the tangent directions those
+    symmetries fix.  Along a branch of symmetric equilibria this is well conditioned where the full
+    Hessian is not (the cube's diagonal positions, whose soft direction leaves the mirror, next to the
+    ring they join).  Returns the last :class:`Local` and whether the gradient fell below
+    ``1e-13 * scale`` (it is iterated further while it falls)."""
+    u = np.asarray(u0, dtype=float)
+    u = u / np.linalg.norm(u)
+    P = np.mean([g for g in group if np.linalg.norm(g @ u - u) <= 1e-9], axis=0)
+    best, size = None, math.inf
+    for _ in range(iterations):
+        loc = local(poly, u, s)
+        Pt = P - np.outer(loc.u, loc.u)
+        w, vecs = np.linalg.eigh((Pt + Pt.T) / 2)
+        B = vecs[:, w > 0.5]                        # the fixed tangent directions (0, 1 or 2)
+        F = B.T @ (loc.basis @ loc.gradient)
+        if best is not None and np.linalg.norm(F) >= size:
+            break
+        best, size = loc, float(np.linalg.norm(F))
+        if B.shape[1] == 0 or size == 0:
+            break
+        J = B.T @ (loc.basis @ loc.hessian @ loc.basis.T) @ B
+        step = B @ np.linalg.lstsq(J, -F, rcond=None)[0]
+        norm = float(np.linalg.norm(step))
+        if norm > MAX_STEP:
+            step *= MAX_STEP / norm
+        u = tangent_step(loc.u, step)
+    return best, size <= 1e-13 * scale
+
+
 def _tangent_eigen(loc):
     """The two eigenpairs ``(lambda, tangent vector)`` of the Hessian, ascending."""
     w, vecs = loc.eigen()
     return list(zip(w, vecs))
 
 
-def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int) -> tuple[float, str, float]:
-    """Distance bound (radians) to the true equilibrium (:func:`equilibrium_error`): the gradient
-    re-evaluated at *refine_dps* digits, the smallest Hessian eigenvalue, and the Hessian's
-    Lipschitz constant from central differences along the two eigenvectors."""
-    exact = Polyhedron(_faces_at(poly, refine_dps), refine_dps)
-    residual = float(np.linalg.norm(gradient_at(exact, c.u, s)))
+def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), others=()) -> tuple[float, str, float]:
+    """Distance bound (radians) to the true equilibrium (:func:`equilibrium_error`, the gradient
+    re-evaluated at *refine_dps* digits) and the Hessian's Lipschitz constant (central differences
+    along the two eigenvectors).  Where that bound is not Kantorovich's, exceeds 1e-13 rad, or the
+    smallest eigenvalue is within ten times its error of zero (next to a bifurcation), an isolated
+    point is polished by Newton's
+    method at *refine_dps* digits (:func:`polish`) and, if its error then spans a mirror or an axis,
+    tried at the symmetric position: its up vector, gradient and eigenvalues are then those of that
+    point, whose bound is the Kantorovich radius from a residual near ``10^-refine_dps`` (plus the
+    float64 rounding of the vector), and its eigenvalues are exact to ``L * distance +
+    10^(5 - refine_dps) * scale``, so that they still decide the stability.  A ring keeps its
+    float64 point (the slope across it)."""
+    exact = polyhedron_at(poly, refine_dps)
     lipschitz = 0.0
     for v in local(poly, c.u, s).eigen()[1]:        # eigenvectors at the representative itself
         plus, minus = (local(poly, tangent_step(np.asarray(c.u), sign * STEP * v), s) for sign in (1, -1))
         H = [x.basis @ x.hessian @ x.basis.T for x in (plus, minus)]
         lipschitz = max(lipschitz, float(np.linalg.norm(H[0] - H[1], 2)) / (2 * STEP))
-    slope = max(abs(e) for e in c.eigen) if c.ring else min(abs(e) for e in c.eigen)
-    return (*equilibrium_error(residual, slope, lipschitz, scale), lipschitz)
+    if c.ring:
+        residual = float(np.linalg.norm(gradient_at(exact, c.u, s)))
+        c.eigen_error = lipschitz * residual / max(abs(e) for e in c.eigen) + 1e-14 * scale
+        return (*equilibrium_error(residual, max(abs(e) for e in c.eigen), lipschitz, scale), lipschitz)
+    # the error of the clipping at refine_dps digits, added to every residual but that of a position its
+    # symmetries pin down exactly (an equilibrium in any arithmetic: face up)
+    pinned = _pinned(c.u, group)
+    arithmetic = 0.0 if pinned else 10.0 ** (5 - refine_dps) * scale
+    residual = float(np.linalg.norm(gradient_at(exact, c.u, s))) + arithmetic
+    err, method = equilibrium_error(residual, min(abs(e) for e in c.eigen), lipschitz, scale)
+    if method == "kantorovich" and err <= 1e-13 and min(abs(e) for e in c.eigen) > 10 * (lipschitz * err + 1e-14 * scale):
+        c.eigen_error = lipschitz * err + 1e-14 * scale        # decided in float64: nothing to polish
+        return err, method, lipschitz
+    u, residual, eigen = polish(exact, c.u, s, scale, steps=0 if pinned else 40)
+    residual += arithmetic          # at 30 digits a residual below the arithmetic's error may round to 0
+    err, method = equilibrium_error(float(residual), float(min(abs(e) for e in eigen)), lipschitz, scale)
+    if not pinned and min(abs(float(e)) for e in eigen) <= lipschitz * max(err - ROUNDING, 0.0) + arithmetic:
+        # still undecided: once more at twice the digits (closer still to the bifurcation)
+        refine_dps, exact = 2 * refine_dps, polyhedron_at(poly, 2 * refine_dps)
+        arithmetic = 10.0 ** (5 - refine_dps) * scale
+        u, residual, eigen = polish(exact, u, s, scale)
+        residual += arithmetic
+        err, method = equilibrium_error(float(residual), float(min(abs(e) for e in eigen)), lipschitz, scale)
+    # the most symmetric position within the error: where the polished point's error spans a mirror or
+    # an axis (a degenerate point, where Newton converges slowly), the symmetric point is the candidate
+    v = symmetric_point([float(x) for x in u], group, 2 * err + 1e-12)
+    if any(abs(a - float(b)) > 0 for a, b in zip(v, u)) and not any(
+            o is not c and same_class(o.u, v, group, 2 * o.error_rad + 1e-12) for o in others):
+        with mpmath.workdps(refine_dps):        # the symmetric point in mpmath (its float64 is not exactly symmetric)
+            fixing = [g for g in group if np.linalg.norm(g @ v - v) <= 1e-12]
+            mean = [sum(mpmath.mpf(float(g[i, j])) * mpmath.mpf(float(v[j])) for g in fixing for j in range(3))
+                    for i in range(3)]
+        w, size, values = polish(exact, mean, s, scale, steps=0)
+        size += arithmetic
+        if size <= residual:
+            u, residual, eigen = w, size, values
+            err, method = equilibrium_error(float(residual), float(min(abs(e) for e in eigen)), lipschitz, scale)
+    c.digits = u
+    c.u = np.array([float(x) for x in u])
+    c.u /= np.linalg.norm(c.u)
+    c.eigen = tuple(float(e) for e in eigen)
+    c.eigen_error = lipschitz * max(err - ROUNDING, 0.0) + 10.0 ** (5 - refine_dps) * scale
+    return err, method, lipschitz
 
 
-def _faces_at(poly, dps):
+def _pinned(u, group) -> bool:
+    """Whether the float64 vector *u* is fixed exactly by symmetries of the body that fix no tangent
+    direction (face up, corner up of a box given exactly): then it is an equilibrium by symmetry."""
+    u = np.asarray(u, dtype=float)
+    fixing = [g for g in group if np.array_equal(g @ u, u)]
+    if not fixing:
+        return False
+    P = np.mean(fixing, axis=0) - np.outer(u, u)
+    return not np.any(np.linalg.eigvalsh((P + P.T) / 2) > 0.5)
+
+
+def polyhedron_at(poly, dps: int) -> Polyhedron:
+    """*poly* (float64) as a body in mpmath at *dps* digits (its float vertices taken exactly)."""
     with mpmath.workdps(dps):
-        return tuple(tuple(tuple(mpmath.mpf(x) for x in p) for p in ring) for ring in poly.faces)
+        return Polyhedron(tuple(tuple(tuple(mpmath.mpf(x) for x in p) for p in ring) for ring in poly.faces), dps)
 
 
 def poincare_hopf_sum(points: list[Critical]) -> int:
@@ -179,6 +279,19 @@ def more_seeds(poly: Polyhedron, s, points: list[Critical], group, scale: float,
     return seeds
 
 
+def _nearest_axis(u, group) -> float:
+    """Angle from *u* to the nearest axis of a rotation of *group* (a ring around that axis, born from
+    the position on it, has this radius: steps along it must be smaller)."""
+    angles = []
+    for g in group:
+        if np.linalg.det(g) > 0 and not np.allclose(g, np.eye(3)):
+            w, v = np.linalg.eig(g)
+            axis = np.real(v[:, int(np.argmin(np.abs(w - 1)))])
+            axis /= np.linalg.norm(axis)
+            angles.append(math.acos(min(1.0, abs(float(np.dot(axis, u))))))
+    return min(angles, default=math.pi)
+
+
 def _nearest_copy(u, group, floor: float = 1e-3) -> float:
     """Angle to the nearest symmetric copy of *u* farther than *floor* (a copy closer than that is
     the same position seen through a mirror it almost lies on, not another point of a family)."""
@@ -191,27 +304,46 @@ def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
     the point, so a small ring around an axis is not jumped over) and let Newton settle: on a
     ring it lands on another equilibrium of the same potential, not in the same class."""
     lam_null, v_null = min(pairs, key=lambda p: abs(p[0]))
-    if abs(lam_null) > 1e-6 * scale:
+    lam_across = max(abs(p[0]) for p in pairs)
+    if abs(lam_null) > 1e-6 * scale or lam_across < max(100 * abs(lam_null), 1e-11 * scale) \
+            or _nearest_axis(loc.u, group) < 1e-6:
+        # not flat; or flat both ways (a neighbourhood flat to rounding next to a bifurcation, not a ring:
+        # the point is classified by its higher orders); or on an axis (a ring is born around it, not through it)
         return False
-    delta = min(0.03, _nearest_copy(loc.u, group) / 4)
+    delta = min(0.03, _nearest_copy(loc.u, group) / 4, max(_nearest_axis(loc.u, group), 1e-9) / 4)
     for step in (delta, -delta):
         moved = tangent_step(loc.u, step * v_null)
         other, ok = newton(poly, moved, s, scale)
+        ok = ok and np.linalg.norm(other.gradient) <= 1e-13 * scale and np.linalg.norm(loc.gradient) <= 1e-13 * scale
         if ok and np.linalg.norm(other.u - loc.u) > delta / 3 and abs(other.U - loc.U) <= FLAT * scale \
                 and not same_class(other.u, loc.u, group, delta / 10):
             return True
     return False
 
 
-def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, float, float]:
+def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, float, float, tuple]:
     """Walk along a ring from *u* (steps of ``delta`` along the null direction, Newton across) and
-    return ``("closed", length, error)`` when the walk comes back to *u*, else ``("arc", length,
-    error)`` with the length (radians on the sphere, the arcs between the points walked) of the arc,
-    both directions summed.  The error: an arc's end lies within one step past the last point
-    reached (``2 delta`` for both ends), a closed walk ends within ``delta / 2`` of its start."""
+    return ``("closed", length, error, (axis,))`` when the walk comes back to *u*, else ``("arc",
+    length, error, (end, end))``, the length in radians on the sphere (the chords between the points
+    walked; a closed walk adds the chord back to its start).  The error: a chord is shorter than its
+    arc by at most ``delta^3 / (24 R^2)`` on a circle of radius ``R``; an arc's end is located by
+    halving the last step eight times, so each end lies within ``delta / 256`` past the point reached."""
     start = local(poly, u, s)
-    delta = min(0.005, _nearest_copy(start.u, group) / 4)   # a gap in the family narrower than this is not seen
-    total = 0.0
+    # a gap in the family narrower than the step is not seen; a ring around an axis is walked in steps of a
+    # quarter of its radius at most
+    axis = max(_nearest_axis(start.u, group), 1e-9)
+    delta = min(0.005, _nearest_copy(start.u, group) / 4, axis / 4)
+    max_steps = min(max_steps, int(8 * math.pi * axis / delta) + 16)     # twice round a circle of that radius
+
+    def step_from(loc, v, h):
+        nxt, ok = newton(poly, tangent_step(loc.u, h * v), s, scale)
+        moved = float(np.linalg.norm(nxt.u - loc.u))
+        good = ok and np.linalg.norm(nxt.gradient) <= 1e-13 * scale and abs(nxt.U - start.U) <= FLAT * scale \
+            and moved >= h / 3 \
+            and min(abs(p[0]) for p in _tangent_eigen(nxt)) <= 1e-6 * scale
+        return nxt, moved, good
+
+    total, ends, visited = 0.0, [], [start.u]
     for direction in (1, -1):
         loc, previous = start, None
         for _ in range(max_steps):
@@ -221,16 +353,52 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
                 v = -v
             elif previous is None:
                 v = direction * v
-            nxt, ok = newton(poly, tangent_step(loc.u, delta * v), s, scale)
-            moved = float(np.linalg.norm(nxt.u - loc.u))
-            if not ok or abs(nxt.U - start.U) > FLAT * scale or moved < delta / 3 \
-                    or min(abs(p[0]) for p in _tangent_eigen(nxt)) > 1e-6 * scale:
+            nxt, moved, good = step_from(loc, v, delta)
+            if not good:
+                h = delta
+                for _ in range(8):          # the end of the arc, between loc and one step past it
+                    h /= 2
+                    nxt, moved, good = step_from(loc, v, h)
+                    if good:
+                        total += 2 * math.asin(min(1.0, moved / 2))
+                        loc = nxt
+                ends.append(loc.u)
                 break
             previous, loc = loc.u, nxt
+            visited.append(loc.u)
             total += 2 * math.asin(min(1.0, moved / 2))
+            if total > 2 * math.pi:             # longer than a great circle: not a walk along one family
+                ends.append(loc.u)
+                break
             if total > 2 * delta and np.linalg.norm(loc.u - start.u) < delta / 2:
-                return "closed", total, delta / 2
-    return "arc", total, 2 * delta
+                # the chord back to the start, or less the part of the last step that went past it
+                gap = 2 * math.asin(min(1.0, float(np.linalg.norm(loc.u - start.u)) / 2))
+                total += gap if np.dot(loc.u - previous, start.u - loc.u) > 0 else -gap
+                radius = total / (2 * math.pi)
+                points = np.array(visited)          # a circle on the sphere: the normal of its plane, towards it
+                axis = np.linalg.svd(points - points.mean(axis=0))[2][-1]
+                axis = axis if np.dot(axis, points.mean(axis=0)) > 0 else -axis
+                return "closed", total, total * (delta / radius) ** 2 / 24 + 1e-12, (axis,)
+        else:
+            ends.append(loc.u)
+    radius = max(total / (2 * math.pi), delta)
+    return "arc", total, 2 * delta / 256 + total * (delta / radius) ** 2 / 24 + 1e-12, tuple(ends)
+
+
+def family_copies(shape: str, points, group, tol: float) -> int:
+    """How many distinct families the symmetries make of one: a closed ring by its axis (pointing
+    towards the ring: the rings around ``a`` and ``-a`` are two), an arc by its pair of ends."""
+    images = []
+    for g in group:
+        key = [g @ p for p in points]
+        if shape == "closed":
+            same = lambda other: np.linalg.norm(key[0] - other[0]) <= tol
+        else:
+            same = lambda other: min(np.linalg.norm(key[0] - other[0]) + np.linalg.norm(key[1] - other[1]),
+                                     np.linalg.norm(key[0] - other[1]) + np.linalg.norm(key[1] - other[0])) <= tol
+        if not any(same(other) for other in images):
+            images.append(key)
+    return len(images)
 
 
 def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps: int = 30) -> list[Critical]:
@@ -256,11 +424,28 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
         found.append(Critical(representative(loc.u, group), loc.U, eigen, g, err, len(orbit(loc.u, group)), ring))
     for c in found:
         if c.ring:
-            c.shape, c.length, c.length_error = trace_family(poly, c.u, s, scale, group)
+            c.shape, c.length, c.length_error, key = trace_family(poly, c.u, s, scale, group)
             # a "ring" the walk cannot follow (or only for a few steps) is an isolated degenerate point
-            c.ring = c.length >= MIN_FAMILY
+            c.ring = c.length >= (MIN_RING if c.shape == "closed" else MIN_FAMILY)
+            if c.ring:
+                c.orbit = family_copies(c.shape, key, group, 1e-3)
         # a ring's error is across it (its tilt): the bound with its transverse eigenvalue
-        c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps)
+        c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps, group, found)
+        if c.ring:      # a family's length scales with its radius, known to the error across it
+            radius = c.length / (2 * math.pi) if c.shape == "closed" else math.sin(_nearest_axis(c.u, group))
+            c.length_error += c.length * c.error_rad / max(radius, c.error_rad)
+    # two float64 points of one equilibrium, brought together by the polishing, are one class; the copies
+    # of a class are counted with a tolerance tied to its error (a point closer to a mirror than its
+    # error lies on it to what is known)
+    merged = []
+    for c in sorted(found, key=lambda c: (not c.ring, c.error_rad)):
+        if not c.ring and any(not m.ring and same_class(m.u, c.u, group, 2 * (m.error_rad + c.error_rad) + 1e-12)
+                              for m in merged):
+            continue
+        if not c.ring:
+            c.orbit = len(orbit(c.u, group, max(1e-12, 4 * c.error_rad)))
+        merged.append(c)
+    found = merged
     # a point of a ring found before the ring was recognised: same potential, not an equilibrium
     # that symmetry fixes (its residual is not exactly zero), no decided second variation
     rings = [c for c in found if c.ring]

@@ -22,7 +22,7 @@ import sympy as sp
 
 from ..geometry.floating import box
 from .bodies import make_scene
-from .critical import newton
+from .critical import newton, symmetric_newton
 from .solve import body_scale, solve
 from .symmetry import box_group, representative, same_class
 
@@ -89,9 +89,10 @@ def _tracked_stable(poly, group, u, s, label, family, scale) -> tuple[bool, np.n
     """Whether the equilibrium tracked from *u* exists at density *s*, keeps its label and is
     stable.  The sign of the second variation decides, beyond rounding (``1e-14 * scale``: a point
     of a ring, where an eigenvalue is zero, is not a stable isolated position), so the predicate
-    flips at the threshold itself.  A ring must stay a ring: off every axis, one null direction,
-    positive across."""
-    loc, ok = newton(poly, u, s, scale)
+    flips at the threshold itself.  An isolated position is tracked within its symmetry
+    (:func:`symmetric_newton`: a soft direction across a mirror does not move it off the mirror).  A
+    ring must stay a ring: off every axis, one null direction, positive across."""
+    loc, ok = newton(poly, u, s, scale) if family == "ring" else symmetric_newton(poly, u, s, scale, group)
     if not ok:
         return False, u
     w = sorted(loc.eigen()[0], key=abs)
@@ -133,39 +134,88 @@ def _locate_tracked(poly, group, scale, label, eq, s_in, s_out):
     tilt = min(math.acos(min(1.0, abs(float(x)))) for x in u)     # from the nearest axis
     note = ""
     if eq.family != "ring":
-        event = _vertex_event(poly, u, lo, s_out, label, scale)
+        event = _vertex_event(poly, group, u, lo, s_out, label, scale)
         if event is not None:
             return event[0], event[1], tilt, "where the waterplane passes a vertex: the position joins a ring", u
+        root = _eigenvalue_root(poly, group, u, lo, scale)
+        if root is not None and abs(root[0] - (lo + hi) / 2) <= 2 * err + 1e-12:
+            return root[0], root[1], tilt, note, u
+        fold = _fold_point(poly, group, u, lo, scale)
+        if fold is not None and abs(fold[0] - lo) <= 1e-6:
+            return fold[0], fold[1], tilt, "a fold: the position meets another branch and both end; error estimated", u
+    else:
+        # the family's point on the mirror of its representative (the walk along it may have drifted off)
+        up = np.array(eq.up)
+        k = int(np.argmax(np.abs(u)))
+        i, j = sorted((x for x in range(3) if x != k), key=lambda x: -abs(up[x]))
+        v = np.zeros(3)
+        v[k], v[i] = u[k], math.copysign(math.hypot(u[i], u[j]), up[i] if up[i] else 1.0)
+        loc, ok = symmetric_newton(poly, v, lo, scale, group)
+        event = _vertex_event(poly, group, loc.u, lo, s_out, position_label(loc.u, "isolated"), scale,
+                              ring=True) if ok else None
+        if event is not None:
+            return event[0], event[1], tilt, "where the waterplane passes a vertex: the family ends", u
     return (lo + hi) / 2, err, tilt, note, u
 
 
-def _vertex_event(poly, u, s, s_out, label, scale, reach: float = 1e-3):
+def _eigenvalue_root(poly, group, u, s, scale, h: float = 1e-7):
+    """Where the smallest eigenvalue of the branch through *u* (followed within its symmetry) crosses
+    zero next to *s*: Newton's method on ``lambda(s) = 0`` with a central difference for its slope.
+    The bisection's predicate flips where ``lambda`` exceeds its rounding (``1e-14 * scale``), a few
+    1e-14 past the root; the root itself is found to ``2 |last correction| + 1e-14 * scale / |slope|``
+    (the rounding of ``lambda`` divided by its slope).  Returns ``(density, error)`` or None where the
+    crossing is not simple (the slope below 1e-6: a root of higher order, or a ring)."""
+    def smallest(density, v):
+        loc, ok = symmetric_newton(poly, v, density, scale, group)
+        return (min(loc.eigen()[0]), loc.u) if ok else (None, v)
+
+    for _ in range(4):
+        lam, u = smallest(s, u)
+        above, _ = smallest(s + h, u)
+        below, _ = smallest(s - h, u)
+        if lam is None or above is None or below is None:
+            return None
+        slope = (above - below) / (2 * h)
+        if abs(slope) < 1e-6 * scale or abs(lam) > 1e-8 * scale:
+            return None
+        step = lam / slope
+        s -= step
+        if abs(step) < 1e-16:
+            break
+    return float(s), float(2 * abs(step) + 1e-14 * scale / abs(slope))
+
+
+def _vertex_event(poly, group, u, s, s_out, label, scale, reach: float = 1e-3, ring: bool = False):
     """The density within *reach* of *s* where the waterplane of the branch tracked from *u* passes
-    a vertex, when the eigenvalue on the side of *s_out* is zero to rounding there (a ring point),
-    as ``(density, half-width)``; None when there is no such event."""
+    a vertex, when the eigenvalue on the side of *s_out* (*ring*: on the side of *s*, the family's)
+    is zero to rounding there (a ring point), as ``(density, half-width)``; None when there is no
+    such event.  The branch is followed by
+    Newton's method within its symmetry (:func:`symmetric_newton`): across the mirror the potential
+    is flat to rounding there, along it the position is well conditioned, so the vertices above water
+    are decided at every density and the bisection closes to ``BRACKET``."""
     from .local import local
-    if min(abs(local(poly, u, s).eigen()[0])) > 1e-6 * scale:
+    if not ring and min(abs(local(poly, u, s).eigen()[0])) > 1e-6 * scale:
         return None                                 # a simple eigenvalue crossing: the bisection is exact
     towards = math.copysign(1.0, s_out - s)
     ends = []
     for target in (s - towards * reach, s + towards * reach):
-        loc, ok = newton(poly, u, target, scale)
+        loc, ok = symmetric_newton(poly, u, target, scale, group)
         if not ok or position_label(loc.u, "isolated") != label:
             return None
         ends.append((target, loc))
     (lo, a), (hi, b) = ends
     inside = _vertices_above(poly, a)
-    if _vertices_above(poly, b) == inside or min(abs(b.eigen()[0])) > 1e-12 * scale:
+    if _vertices_above(poly, b) == inside or min(abs((a if ring else b).eigen()[0])) > 1e-12 * scale:
         return None
     v = a.u
-    while abs(hi - lo) > BRACKET:
+    while abs(hi - lo) > BRACKET / 8:
         mid = (lo + hi) / 2
-        loc, ok = newton(poly, v, mid, scale)
+        loc, ok = symmetric_newton(poly, v, mid, scale, group)
         if ok and _vertices_above(poly, loc) == inside:
             lo, v = mid, loc.u
         else:
             hi = mid
-    return (lo + hi) / 2, abs(hi - lo) / 2
+    return (lo + hi) / 2, abs(hi - lo) / 2 + 1e-14     # + the float64 test of which vertices are above water
 
 
 def _vertices_above(poly, loc) -> tuple:
@@ -234,25 +284,78 @@ def _fold_windows(poly, group, scale, solution, sa, sb) -> list:
     return out
 
 
-def _fold(poly, eq, value, err, side, scale) -> tuple[float, float]:
-    """A fold's density from the tracked bisection's *value*: past a fold Newton's method still
-    accepts the point of least gradient while that gradient is below ``1e-11 * scale`` (its
-    convergence test), and the least gradient grows with the distance from the fold at the rate
-    ``|dg/ds|`` (central difference at the fold point); so the bisection ends
-    ``c = 1e-11 * scale / |dg/ds|`` past the fold, and the fold is ``value - c`` (towards *side*).
-    The error is estimated as ``c / 20`` or the bracket if larger.  Witness: the cube's fold of
-    Scheeffer X (171), 0.76230923886638 at 30 digits (tests/test_scheeffer_x.py), is met to 1e-14
-    where the uncorrected bisection was 3e-11 and 9e-11 off."""
+def _fold(poly, group, eq, value, err, side, scale) -> tuple[float, float]:
+    """A fold's density from the tracked bisection's *value* (which ends where Newton's method stops
+    converging, short of the fold or past it by an amount set by its tolerance): the fold itself is
+    the solution of the extended system of :func:`_fold_point`, started from the branch at *value*.
+    Where that does not converge next to *value*, the bisection's value is kept, its error the distance
+    past the fold at which Newton's method still accepts a point.
+    Witness: the cube's fold of Scheeffer X (171), 1 - 0.76230923886637546 at 30 digits
+    (tests/test_scheeffer_x.py), and its dual."""
+    loc, ok = symmetric_newton(poly, np.array(eq.up), value + math.copysign(BRACKET, side - value), scale, group)
+    found = _fold_point(poly, group, loc.u, value, scale) if ok else None
+    if found is not None and abs(found[0] - value) <= 1e-6:
+        return found
+    # no convergence: past a fold Newton's method accepts the point of least gradient while that gradient is
+    # below 1e-11 * scale, and the least gradient grows at the rate |dg/ds|, so the bisection may end up to
+    # c = 1e-11 * scale / |dg/ds| past the fold: that is its error
     from .local import local
     loc, ok = newton(poly, np.array(eq.up), value + math.copysign(BRACKET, side - value), scale)
     if not ok:
         return value, err
     h = 1e-6
     rate = np.linalg.norm(local(poly, loc.u, value + h).gradient - local(poly, loc.u, value - h).gradient) / (2 * h)
-    past = 1e-11 * scale / max(float(rate), 1e-300)
-    if past > 1e-9:                 # too flat to correct: the offset is the error
-        return value, max(err, past)
-    return value + math.copysign(past, side - value), max(err, past / 20)
+    return value, max(err, 1e-11 * scale / max(float(rate), 1e-300))
+
+
+def _fold_point(poly, group, u, s, scale, iterations: int = 30):
+    """The fold next to the equilibrium *u* at density *s*: Newton's method on the extended system
+    ``F(u, s) = 0, lambda(u, s) = 0`` (Moore–Spence), ``F`` the gradient in the tangent directions
+    that the symmetries of *u* fix and ``lambda`` the smallest eigenvalue of the Hessian restricted to
+    them.  At a fold its Jacobian is regular (the branch turns back in *s*), so Newton converges to
+    the fold from either side; ``dF/du`` is the Hessian, the other derivatives central differences.
+    Returns ``(density, error)``, the error twice the last correction plus 1e-14 (the evaluation of
+    ``F`` and ``lambda`` in float64), or None when the iteration does not settle."""
+    from .local import local, tangent_step
+    u = np.asarray(u, dtype=float)
+    P = np.mean([g for g in group if np.linalg.norm(g @ u - u) <= 1e-9], axis=0)
+
+    def restricted(v, density, B=None):
+        loc = local(poly, v, density)
+        if B is None:
+            Pt = P - np.outer(loc.u, loc.u)
+            w, vecs = np.linalg.eigh((Pt + Pt.T) / 2)
+            B = vecs[:, w > 0.5]
+        J = B.T @ (loc.basis @ loc.hessian @ loc.basis.T) @ B
+        values = np.linalg.eigvalsh(J)
+        lam = float(values[np.argmin(np.abs(values))]) if len(values) else 0.0
+        return loc, B, B.T @ (loc.basis @ loc.gradient), J, lam
+
+    last = math.inf
+    for _ in range(iterations):
+        loc, B, F, J, lam = restricted(u, s)
+        k = B.shape[1]
+        if k == 0:
+            return None
+        hs, hy = 1e-7 * max(1e-3, min(s, 1 - s)), 1e-6
+        F_s = (restricted(u, s + hs, B)[2] - restricted(u, s - hs, B)[2]) / (2 * hs)
+        lam_s = (restricted(u, s + hs)[4] - restricted(u, s - hs)[4]) / (2 * hs)
+        lam_y = [(restricted(tangent_step(loc.u, hy * B[:, i]), s)[4]
+                  - restricted(tangent_step(loc.u, -hy * B[:, i]), s)[4]) / (2 * hy) for i in range(k)]
+        M = np.zeros((k + 1, k + 1))
+        M[:k, :k], M[:k, k], M[k, :k], M[k, k] = J, F_s, lam_y, lam_s
+        try:
+            step = np.linalg.solve(M, -np.append(F, lam))
+        except np.linalg.LinAlgError:
+            return None
+        dy, ds = step[:k], float(step[k])
+        if not np.all(np.isfinite(step)) or np.linalg.norm(dy) > 0.05 or abs(ds) > 1e-3:
+            return None
+        u, s = tangent_step(loc.u, B @ dy), s + ds
+        if abs(ds) < 1e-16 or (abs(ds) >= last and abs(ds) < 1e-13):
+            return s, 2 * abs(ds) + 1e-14
+        last = abs(ds)
+    return None
 
 
 @dataclass
@@ -347,7 +450,7 @@ def _windows_between(poly, group, scale, sol_a, sol_b, sa, sb) -> list[Threshold
         for label, eq, s_fold, side in _fold_windows(poly, group, scale, sol, s_from, s_to):
             upward = s_to > s_from
             value, err, tilt, note = _locate(poly, group, scale, label, eq, side, s_to)
-            value, err = _fold(poly, eq, value, err, side, scale)
+            value, err = _fold(poly, group, eq, value, err, side, scale)
             out.append(Threshold(value, err, label, "stable below" if upward else "stable above",
                                  note="a fold: the position meets another branch and both end; "
                                       "error estimated"))
@@ -383,7 +486,7 @@ def _follow(poly, group, scale, thresholds, densities) -> list[Threshold]:
         value, err, tilt, note, u = _locate_tracked(poly, group, scale, t.label, eq, start, s_end)
         if abs(value - s_end) <= 2 * err + 1e-9:
             continue                                  # stable all the way
-        value, err = _fold(poly, _Tracked(tuple(u), "isolated"), value, err, start, scale)
+        value, err = _fold(poly, group, _Tracked(tuple(u), "isolated"), value, err, start, scale)
         out.append(Threshold(value, err, t.label, "stable below" if toward > 0 else "stable above",
                              note=note or "a fold: the position meets another branch and both end; error estimated"))
     return out

@@ -11,7 +11,8 @@ import mpmath
 from ..geometry.floating import floating_state
 from .bodies import polyhedron
 
-__all__ = ["refine_sphere", "refine_planar", "planar_residual", "angle_between"]
+__all__ = ["refine_sphere", "polish", "refine_planar", "polish_planar", "planar_potential", "planar_residual",
+           "angle_between"]
 
 
 def _local_mp(poly, u, s):
@@ -45,6 +46,48 @@ def refine_sphere(scene, u, dps: int = 50, steps: int = 12):
         return tuple(u), mpmath.norm(g)
 
 
+def polish(poly, u, s, scale: float, steps: int = 40, cap: float = 1e-2):
+    """Newton's method at *poly*'s precision (an mpmath body) from the unit vector *u* (floats or mpf): returns
+    ``(u, |grad U|, eigenvalues)`` at the best point reached (mpf; the eigenvalues of the metacentric
+    Hessian there, ascending).  Steps are capped at *cap* radians and halved (up to four times) where
+    the gradient would grow: next to a bifurcation the Hessian is nearly singular and a float64 point
+    lies far from the equilibrium in its soft direction.  The iteration stops at a gradient of
+    ``10^(2 - dps) * scale`` (the arithmetic's rounding) or when it no longer falls."""
+    with mpmath.workdps(poly.dps):
+        u = [mpmath.mpf(x) if isinstance(x, mpmath.mpf) else mpmath.mpf(float(x)) for x in u]
+        norm = mpmath.sqrt(sum(x * x for x in u))
+        u = [x / norm for x in u]
+        floor = mpmath.mpf(10) ** (2 - poly.dps) * scale
+        st, g, H = _local_mp(poly, u, s)
+        best = (tuple(u), mpmath.norm(g), H)
+        for _ in range(steps):
+            if best[1] <= floor:
+                break
+            try:
+                step = mpmath.lu_solve(H, -g)
+            except ZeroDivisionError:
+                break
+            length = mpmath.norm(step)
+            if length > cap:
+                step = step * (cap / length)
+            e1, e2 = st.basis
+            for _ in range(5):
+                v = [u[k] + step[0] * e1[k] + step[1] * e2[k] for k in range(3)]
+                norm = mpmath.sqrt(sum(x * x for x in v))
+                v = [x / norm for x in v]
+                st_v, g_v, H_v = _local_mp(poly, v, s)
+                if mpmath.norm(g_v) < best[1]:
+                    break
+                step = step / 2
+            else:
+                break
+            u, st, g, H = v, st_v, g_v, H_v
+            best = (tuple(u), mpmath.norm(g), H)
+        u, size, H = best
+        mean, half = (H[0, 0] + H[1, 1]) / 2, mpmath.sqrt(((H[0, 0] - H[1, 1]) / 2) ** 2 + H[0, 1] ** 2)
+        return u, size, (mean - half, mean + half)
+
+
 def refine_planar(scene, theta, dps: int = 50, steps: int = 12):
     """The heel angle of a section's equilibrium next to *theta*, at *dps* digits."""
     poly = polyhedron(scene, dps=dps)
@@ -61,6 +104,51 @@ def refine_planar(scene, theta, dps: int = 50, steps: int = 12):
                 break
             theta -= f / fp
         return theta
+
+
+def _planar(poly, theta, s):
+    """``U'(theta)`` and ``U''(theta)`` of a section at *poly*'s precision (mpmath)."""
+    u = (mpmath.cos(theta), mpmath.sin(theta), mpmath.mpf(0))
+    e = (-mpmath.sin(theta), mpmath.cos(theta), mpmath.mpf(0))
+    st, g, H = _local_mp(poly, u, s)
+    b = [sum(basis[k] * e[k] for k in range(3)) for basis in st.basis]
+    return g[0] * b[0] + g[1] * b[1], sum(b[i] * H[i, j] * b[j] for i in range(2) for j in range(2))
+
+
+def polish_planar(scene, theta, scale: float, dps: int = 30, steps: int = 40, cap: float = 1e-2):
+    """Newton's method on ``U'(theta) = 0`` of a section at *dps* digits from the float *theta*, steps
+    capped at *cap* and halved where ``|U'|`` would grow (as :func:`polish`): returns ``(theta, |U'|,
+    U'')`` (mpf) at the best point reached."""
+    poly = polyhedron(scene, dps=dps)
+    with mpmath.workdps(dps):
+        theta = mpmath.mpf(float(theta))
+        floor = mpmath.mpf(10) ** (2 - dps) * scale
+        f, fp = _planar(poly, theta, scene.density)
+        for _ in range(steps):
+            if abs(f) <= floor or fp == 0:
+                break
+            step = -f / fp
+            step = max(-cap, min(cap, step))
+            for _ in range(5):
+                f_new, fp_new = _planar(poly, theta + step, scene.density)
+                if abs(f_new) < abs(f):
+                    break
+                step /= 2
+            else:
+                break
+            theta, f, fp = theta + step, f_new, fp_new
+        return theta, abs(f), fp
+
+
+def planar_potential(scene, dps: int = 30):
+    """The potential of a section as a function of the heel angle, at *dps* digits (mpf)."""
+    poly = polyhedron(scene, dps=dps)
+
+    def potential(theta):
+        with mpmath.workdps(dps):
+            theta = mpmath.mpf(theta)
+            return floating_state(poly, (mpmath.cos(theta), mpmath.sin(theta), mpmath.mpf(0)), scene.density).potential
+    return potential
 
 
 def planar_residual(scene, theta, dps: int = 30) -> float:

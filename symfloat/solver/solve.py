@@ -13,6 +13,13 @@ Stability: ``stable`` when every eigenvalue of the metacentric matrix
 ``unstable`` when one is negative, ``indifferent`` when the smallest is zero to
 the working accuracy and the equilibrium is not a ring.  A ring is reported
 once; its stability is that of the direction across it.
+
+Next to a bifurcation a position whose smallest eigenvalue float64 cannot
+decide is polished at 30 digits (:func:`~symfloat.solver.refine.polish`);
+where even that decides nothing the higher orders do
+(:mod:`~symfloat.solver.degenerate`: the winding of the gradient and the
+potential on a circle around it), and the position carries that index into
+the check.  A check that still fails is an error (:class:`IndexCheckError`).
 """
 from __future__ import annotations
 
@@ -21,20 +28,24 @@ import time
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+import mpmath
 import numpy as np
 
 from ..model.prediction import Scene
 from .bodies import centred_polygon, polyhedron
 from .critical import critical_points, distinct_seeds, more_seeds, poincare_hopf_sum, sphere_seeds
 from .cylinder import cylinder_slice
-from .errors import STEP, eigenvalue_error, equilibrium_error
-from .local import local, tangent_step, waterplane_polygon
+from .errors import ROUNDING, STEP, eigenvalue_error, equilibrium_error
+from .degenerate import degenerate_class
+from .local import local, waterplane_polygon
 from .planar import roots
-from .refine import planar_residual
-from .selfcheck import IndexCheckError, index_of
+from .refine import planar_potential, planar_residual, polish_planar
+from .selfcheck import IndexCheckError
 from .symmetry import box_group, orbit, planar_group, prism_group, representative
 
 __all__ = ["Equilibrium", "Solution", "solve", "stability_of", "body_scale"]
+
+SOFT = 1e-4     # relative to the size of the body: an eigenvalue this small means a bifurcation is near
 
 
 @dataclass
@@ -54,6 +65,7 @@ class Equilibrium:
     ring_length: float = 0.0    # its length on the unit sphere of up vectors (radians)
     ring_length_error: float = 0.0  # the error of that length (the walk's step at the ends, chords)
     stability_evidence: str = "second variation"     # or "higher orders", or "undecided"
+    digits: tuple = ()          # the up vector at 30 digits (mpf) where the solver polished it (next to a bifurcation)
     formulas: list = field(default_factory=list)
     predictions: list = field(default_factory=list)
 
@@ -83,11 +95,12 @@ def stability_of(eigenvalues, tolerance: float, ring: bool = False) -> str:
     return "indifferent"
 
 
-def null_sides(change, scale: float) -> tuple:
+def null_sides(change, scale: float, rounding: float = 1e-13) -> tuple:
     """How the potential behaves on each side of a null direction of the second variation, from its
     change ``change(eps)`` at eps = +-1e-3, +-3e-3, +-1e-2 rad: per side +1 when it rises at every
-    step, -1 when it falls at every step, None when it is flat to rounding (or mixed)."""
-    floor = 1e-13 * scale
+    step, -1 when it falls at every step, None when it is flat to *rounding* (relative to *scale*:
+    float64's, or a smaller one where the change is evaluated in mpmath) or mixed."""
+    floor = rounding * scale
     sides = []
     for sign in (1, -1):
         changes = [change(sign * eps) for eps in (1e-3, 3e-3, 1e-2)]
@@ -152,24 +165,19 @@ def _shape(vertices: list, scale: float) -> str:
     return names.get(k, f"{k}-gon")
 
 
-def _classified(poly, points, s, scale):
-    """Stability, its evidence and (for degenerate points) the index of every isolated point from
-    the second variation or, where an eigenvalue is zero to its error, the higher orders."""
+def _classified(poly, points, s, scale, group):
+    """Stability, its evidence and (for degenerate points) the index of every isolated point: from the
+    second variation at the polished point (:func:`~symfloat.solver.critical.critical_points`) or,
+    where an eigenvalue is zero to its error, from the higher orders (:mod:`~symfloat.solver.degenerate`)."""
     out = []
     for c in points:
-        tol = eigenvalue_error(c.lipschitz, c.error_rad, scale)
-        stability, evidence = stability_of(c.eigen, tol, c.ring), "second variation"
+        stability, evidence = stability_of(c.eigen, c.eigen_error, c.ring), "second variation"
         if stability == "indifferent" and not c.ring:
-            values, vectors = local(poly, c.u, s).eigen()      # at the representative itself
-            null = vectors[int(np.argmin(np.abs(values)))]
-            others = [e for e in c.eigen if abs(e) > tol]
-            sides = null_sides(lambda eps: local(poly, tangent_step(c.u, eps * null), s).U - c.U, scale)
-            stability = higher_order(sides, others)
-            evidence = "higher orders" if stability != "indifferent" else "undecided"
-            if null_index(sides) is not None and others:
-                c.index = index_of((0.0, others[0]), null_index(sides))
-            else:
-                c.flat = True       # flat to rounding along the null direction: a family too short to trace
+            others = [g @ o.u for o in points if o is not c for g in group]
+            others += [v for v in orbit(c.u, group) if np.linalg.norm(v - c.u) > 1e-9]
+            c.index, stability, _ = degenerate_class(poly, c.u, s, scale, others)
+            evidence = "higher orders" if c.index is not None else "undecided"
+            c.flat = c.index is None
         out.append((c, stability, evidence))
     return out
 
@@ -181,34 +189,44 @@ def _searched(poly, s, seeds, group, scale):
     the points with their classification, the searches made and the index sum (None with rings)."""
     searches = ["seeds"]
     points = critical_points(poly, s, seeds, group, scale)
-    classified = _classified(poly, points, s, scale)
+    classified = _classified(poly, points, s, scale, group)
     index = _index_sum(points)
-    if index in (None, 2):
+    if _holds(index, points, scale):
         return classified, searches, index
     extra = [c.u for c in points] + more_seeds(poly, s, points, group, scale)
     points = critical_points(poly, s, extra, group, scale)
-    classified = _classified(poly, points, s, scale)
+    classified = _classified(poly, points, s, scale, group)
     index = _index_sum(points)
     searches.append("separatrices, soft directions and small gradient")
-    if index in (None, 2):
+    if _holds(index, points):
         return classified, searches, index
     for delta in (Fraction(1, 10 ** 4), -Fraction(1, 10 ** 4)):
         near = s + delta * min(s, 1 - s)
         there = critical_points(poly, near, seeds, group, scale)
         extra += [c.u for c in there] + more_seeds(poly, near, there, group, scale)
     points = critical_points(poly, s, extra, group, scale)
-    classified = _classified(poly, points, s, scale)
+    classified = _classified(poly, points, s, scale, group)
     index = _index_sum(points)
     searches.append("continuation from s +- 1e-4 s(1 - s)")
     return classified, searches, index
 
 
 def _index_sum(points):
-    """The Poincaré–Hopf sum, or None where it does not apply: a ring, or a degenerate point whose
-    potential is flat to rounding along its null direction (a family too short to walk)."""
+    """The Poincaré–Hopf sum, or None where it does not apply (a ring) or cannot be made (a degenerate
+    point whose gradient on every circle around it is rounding: :attr:`Critical.flat`)."""
     if any(c.ring or c.flat for c in points):
         return None
     return poincare_hopf_sum(points)
+
+
+def _holds(index, points, scale: float = 0.0) -> bool:
+    """Whether the index check passes: the sum is 2, or there is a ring (the sum does not apply).  With
+    *scale*, also whether no isolated point is nearly degenerate (its smallest eigenvalue below
+    ``SOFT * scale`` but decided: next to a bifurcation, not at it) where a ring of index 0 may be born
+    beside it, which no index sum sees: the search goes on there (soft directions, small gradient)."""
+    if scale and any(not c.ring and c.index is None and min(abs(e) for e in c.eigen) < SOFT * scale for c in points):
+        return False
+    return index == 2 or (index is None and not any(c.flat for c in points))
 
 
 def _polyhedral(scene: Scene, seeds, group):
@@ -217,6 +235,12 @@ def _polyhedral(scene: Scene, seeds, group):
     s = scene.density
     seeds = distinct_seeds(seeds, group)
     classified, searches, index = _searched(poly, s, seeds, group, scale)
+    if index is None and any(c.flat for c, _, _ in classified):
+        flat = next(c for c, _, _ in classified if c.flat)
+        raise IndexCheckError(f"{_name(scene)}: the index of the degenerate equilibrium at up "
+                              f"{tuple(round(float(x), 9) for x in flat.u)} cannot be decided (its gradient is "
+                              f"rounding on the largest circle around it that encloses no other equilibrium) after {len(searches)} searches "
+                              f"({'; '.join(searches)}): the Poincaré–Hopf check cannot be made")
     if index not in (None, 2):
         raise IndexCheckError(f"{_name(scene)}: the Poincaré–Hopf index sum of the equilibria found is {index}, "
                               f"not 2, after {len(searches)} searches ({'; '.join(searches)}): an equilibrium is "
@@ -227,12 +251,11 @@ def _polyhedral(scene: Scene, seeds, group):
         out.append(Equilibrium(_clean(c.u), _tilt(c.u), stability,
                                "ring" if c.ring else "isolated", c.U, _shape(waterplane_polygon(poly, loc.state), scale),
                                tuple(float(e) for e in c.eigen), c.error_rad, c.error_method, c.orbit,
-                               c.shape, c.length, c.length_error, evidence))
+                               c.shape, c.length, c.length_error, evidence, digits=c.digits))
     families = index is None
     return out, {"poincare_hopf_index_sum": index, "expected_index_sum": 2, "seeds": len(seeds),
                  "searches": searches,
-                 **({"note": "one-parameter families (or degenerate points flat to rounding) present: the index sum "
-                             "does not apply"} if families else {})}
+                 **({"note": "one-parameter families present: the index sum does not apply"} if families else {})}
 
 
 def _name(scene: Scene) -> str:
@@ -264,7 +287,8 @@ def _section(scene: Scene):
         if index == 0:
             break
     else:
-        raise IndexCheckError(f"{_name(scene)}: minima - maxima of the heel angle is {index}, not 0, after "
+        found = f"is {index}, not 0" if index is not None else "cannot be made (a degenerate root's index is undecided)"
+        raise IndexCheckError(f"{_name(scene)}: minima - maxima of the heel angle {found}, after "
                               f"{len(searches)} searches ({'; '.join(searches)}): an equilibrium is missing "
                               f"or mis-classified")
     return out, {"minima_minus_maxima": index, "expected_index_sum": 0, "grid": points, "searches": searches,
@@ -286,17 +310,33 @@ def _section_roots(scene, poly, group, evaluate, found, scale):
         err, method = equilibrium_error(planar_residual(scene, r.theta), abs(r.fprime), lipschitz, scale)
         tol = eigenvalue_error(lipschitz, err, scale)
         stability, evidence = stability_of((r.fprime,), tol), "second variation"
-        side = 1 if r.fprime > 0 else -1
+        side, fprime, digits = (1 if r.fprime > 0 else -1), r.fprime, ()
         if stability == "indifferent":
-            heel = lambda t: local(poly, np.array([math.cos(t), math.sin(t), 0.0]), s).U
-            sides = null_sides(lambda eps: heel(r.theta + eps) - loc.U, scale)
+            # next to a bifurcation: the root polished at 30 digits decides where float64 does not
+            theta, residual, second = polish_planar(scene, r.theta, scale)
+            err30, method30 = equilibrium_error(float(residual), abs(float(second)), lipschitz, scale)
+            stability = stability_of((float(second),), lipschitz * max(err30 - ROUNDING, 0.0) + 1e-25 * scale)
+            if stability != "indifferent":
+                u = np.array([float(mpmath.cos(theta)), float(mpmath.sin(theta)), 0.0])
+                loc, rep, fprime = local(poly, u, s), representative(u, group), float(second)
+                err, method, side = err30, method30, (1 if second > 0 else -1)
+                digits = (mpmath.cos(theta), mpmath.sin(theta), mpmath.mpf(0))
+                if any(np.linalg.norm(g @ u - np.array(e.up)) <= 2 * (err + e.error_rad) + 1e-12
+                       for e in out for g in group):
+                    continue            # a float64 root next to a flat one: polished, it is that one
+        if stability == "indifferent":
+            heel = planar_potential(scene)
+            centre = heel(r.theta)
+            sides = null_sides(lambda eps: float(heel(r.theta + eps) - centre), scale, rounding=1e-25)
             side = null_index(sides)
             stability = higher_order(sides, [])
             evidence = "higher orders" if stability != "indifferent" else "undecided"
-        index += len(orbit(u, group)) * (side if side is not None else (1 if r.fprime > 0 else -1))
+        if side is None:
+            return out, None            # a root whose index cannot be decided: the check cannot be made
+        index += len(orbit(u, group)) * side
         out.append(Equilibrium(_clean(rep), 90.0, stability, "isolated",
-                               loc.U, "rectangle", (r.fprime,),
-                               err, method, len(orbit(u, group)), stability_evidence=evidence))
+                               loc.U, "rectangle", (fprime,),
+                               err, method, len(orbit(u, group)), stability_evidence=evidence, digits=digits))
     out.sort(key=lambda e: (round(e.potential / scale, 12), e.up))
     return out, index
 

@@ -1,0 +1,91 @@
+"""Degenerate critical points on the sphere: their index and stability from the higher-order terms.
+
+Where the second variation of the potential has a zero eigenvalue (to its error, after the
+equilibrium has been polished at 30 digits), the Hessian decides nothing: a quartic minimum
+(``y^2 + x^4``), a saddle-node (``y^2 + x^3``) and a monkey saddle (``Re (x + iy)^3``, both
+eigenvalues zero: the cube's corner up at s = 1/6) all have singular Hessians.  Their index is the
+winding number of the gradient on a small circle around the point (Poincaré): +1, 0, -2 for these
+three, and in general the sum of the indices of whatever critical points the circle encloses, so
+a cluster of equilibria closer together than their errors counts correctly as one.  Their stability
+is read off the potential on the same circle: stable when it rises all the way round, unstable
+when it falls somewhere.
+
+The circle's radius is a third of the distance to the nearest other critical point found (no other
+point inside it) and at most 3e-2 rad; on it the gradient must exceed the rounding of float64.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .local import local, tangent_step
+
+__all__ = ["symmetric_point", "winding", "degenerate_class"]
+
+MAX_RADIUS = 3e-2
+NOISE = 1e-12           # relative to the size of the body: a gradient smaller than this is rounding
+
+
+def symmetric_point(u, group, tol: float) -> np.ndarray:
+    """The point of highest symmetry within *tol* of *u*: the mean of the images ``g u`` that lie
+    within *tol* of *u* (the projection onto the fixed set of the symmetries that *u* has to within
+    its error), repeated until that set of symmetries no longer grows."""
+    u = np.asarray(u, dtype=float)
+    v, count = u, 0
+    for _ in range(4):
+        near = [g @ v for g in group if np.linalg.norm(g @ v - v) <= tol]
+        if len(near) == count:
+            break
+        count = len(near)
+        mean = np.sum(near, axis=0)
+        v = mean / np.linalg.norm(mean)
+    return v if np.linalg.norm(v - u) <= tol else u
+
+
+def _on_circle(poly, u, s, frame, rho, phi):
+    loc = local(poly, tangent_step(u, rho * (math.cos(phi) * frame[:, 0] + math.sin(phi) * frame[:, 1])), s)
+    g = frame.T @ (loc.basis @ loc.gradient)        # the gradient in the centre's tangent frame
+    return math.atan2(g[1], g[0]), float(np.linalg.norm(g)), loc.U
+
+
+def winding(poly, u, s, rho: float, points: int = 24, depth: int = 6):
+    """``(winding number, least |grad U|, least and largest U)`` of the gradient on the circle of radius
+    *rho* around *u*: the turning of its direction, the circle divided further wherever the direction
+    turns by more than 45 degrees between neighbours (at most *depth* times)."""
+    frame = local(poly, u, s).basis
+    angles = [2 * math.pi * k / points for k in range(points + 1)]
+    values = [_on_circle(poly, u, s, frame, rho, a) for a in angles[:-1]]
+    values.append(values[0])
+    turn, least, potentials = 0.0, math.inf, []
+    stack = [(angles[i], angles[i + 1], values[i], values[i + 1], 0) for i in range(points)][::-1]
+    while stack:
+        a, b, va, vb, level = stack.pop()
+        delta = (vb[0] - va[0] + math.pi) % (2 * math.pi) - math.pi
+        if abs(delta) > math.pi / 4 and level < depth:
+            mid = (a + b) / 2
+            vm = _on_circle(poly, u, s, frame, rho, mid)
+            stack += [(mid, b, vm, vb, level + 1), (a, mid, va, vm, level + 1)]
+            continue
+        turn += delta
+        least = min(least, va[1])
+        potentials.append(va[2])
+    return round(turn / (2 * math.pi)), least, (min(potentials), max(potentials))
+
+
+def degenerate_class(poly, u, s, scale: float, others) -> tuple[int | None, str, float]:
+    """``(index, stability, radius)`` of the degenerate critical point *u* from the circle around it
+    whose radius is a third of the distance to the nearest of *others* (unit vectors: every copy of
+    every other critical point, and the other copies of *u*), at most :data:`MAX_RADIUS`.  The index is
+    None (and the stability ``indifferent``) where the gradient on that circle is rounding."""
+    u = np.asarray(u, dtype=float)
+    nearest = min((math.acos(max(-1.0, min(1.0, float(np.dot(u, v))))) for v in others), default=math.pi)
+    rho = min(MAX_RADIUS, nearest / 3)
+    turns, least, (low, high) = winding(poly, u, s, rho)
+    if not least > NOISE * scale:
+        return None, "indifferent", rho
+    centre = local(poly, u, s).U
+    floor = 1e-14 * scale
+    if low < centre - floor:
+        return turns, "unstable", rho
+    return turns, ("stable" if low > centre + floor else "indifferent"), rho
