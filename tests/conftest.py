@@ -65,6 +65,16 @@ def check(cache_dir):
     return checked
 
 
+@pytest.fixture(scope="session", autouse=True)
+def _derivations_checked_by_both_workers(request, cache_dir):
+    """In a run of the whole suite on test workers, every worker first checks the derivations together with
+    the others (each takes the ones no other has taken), so that no worker waits on a long serial chain of
+    checks that another started for one test file; their tests then read the shared cache."""
+    if XDIST and len({item.path for item in request.session.items}) >= 10:
+        with _infinitely_slow():
+            _verify(None, cache_dir)
+
+
 @pytest.fixture(scope="session")
 def graefe_reports(cache_dir):
     with _infinitely_slow():

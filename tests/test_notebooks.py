@@ -65,6 +65,8 @@ def test_named_leaves_unnamed_expressions_alone():
 def test_a_claim_in_words_is_prose():
     assert correction_markdown("claim", "e > 0 in the stable case") == "e > 0 in the stable case"
     assert correction_markdown("misprint", r"\frac{g}{4}") == r"$$ \frac{g}{4} $$"
+    # a claim's correction written in LaTeX (metazentrum, the displaced volume) is shown as mathematics
+    assert correction_markdown("claim", r"V_b \leq V_s") == r"$$ V_b \leq V_s $$"
 
 
 def test_view_shows_justification_and_witnesses_without_timings(graefe_reports):

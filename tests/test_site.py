@@ -74,7 +74,9 @@ def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
     assert f'<a class="q v-verified" href="#{formula_anchor("scheeffer-vi-cf/square-moments")}"' in page
     note = page[page.index(f'id="{formula_anchor("scheeffer-vi-cf/78c")}"'):]
     note = note[:note.index("</details>")]
-    assert "misprint, medium confidence" in note and "0.758 s" in note and "6.0e-01" in note
+    witness = next(f for f in records.formulas if f["id"] == "scheeffer-vi-cf/78c")["numeric"][0]
+    assert "misprint, medium confidence" in note and "6.0e-01" in note      # the record's error of the print
+    assert f'{witness["seconds"]:.3f} s' in note                            # and the witness's time, as recorded
     assert '../errata/scheeffer-78c-1.html' in note and "../notebooks/scheeffer-vi-cf.html#" in note
     assert "\\frac" not in re.sub(r'alttext="[^"]*"|title="[^"]*"', "", page)
 

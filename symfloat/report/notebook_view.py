@@ -140,8 +140,9 @@ def reading_markdown(d, p) -> str:
 
 
 def correction_markdown(kind: str, corrected: str) -> str:
-    """A correction: a claim in words is prose, anything else a displayed formula."""
-    return corrected if kind == "claim" else f"$$ {corrected} $$"
+    """A correction: a claim in words is prose, anything else (a claim's correction written in LaTeX too) a
+    displayed formula."""
+    return corrected if kind == "claim" and "\\" not in corrected else f"$$ {corrected} $$"
 
 
 # ---- the engine's findings, shown when the notebook runs ----------------------------------------------------------
