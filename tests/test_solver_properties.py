@@ -8,7 +8,7 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from symfloat.geometry.convex import hull_2d, polygon_area
@@ -88,6 +88,10 @@ offsets = st.sampled_from([-1e-3, -1e-7, -1e-12, 1e-12, 1e-9, 1e-7, 1e-5, 1e-3])
 
 
 def _check_box_near_threshold(d, offset):
+    # a square cross-section (a = b) gives birth to a ring around the axis, of radius ~ sqrt(offset): closer
+    # than 1e-8 its points are beyond float64 Newton (docs/performance.md), the scene fails its check (exit 1)
+    # rather than answer, and the duality cannot be tested there
+    assume(d[0] != d[1] or abs(offset) >= 1e-8)
     import mpmath
     with mpmath.workdps(40):
         s_star = mpmath.mpf(1) / 2 - mpmath.sqrt(mpmath.mpf(1) / 4 - (mpmath.mpf(d[0].numerator) / d[2].numerator) ** 2 / 6)
