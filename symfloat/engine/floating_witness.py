@@ -81,8 +81,10 @@ def _height(u, p, t):
     return sum(a * b for a, b in zip(u, p)) - t
 
 
-def _sign(value, scale):
-    """The sign of a clipped quantity, refused when it is within the clipping's error of zero."""
+def _stability_sign(st):
+    """The sign of the metacentric height, refused when it is within the clipping's error of zero (relative
+    to the larger of its two terms)."""
+    value, scale = st.metacentric_height, max(abs(st.potential), st.I_min / st.volume)
     if abs(value) <= 1e-9 * scale:
         raise ValueError(f"a floating witness cannot decide the sign of {value}: it is within the "
                          "clipping's error of zero (choose a case away from the threshold)")
@@ -108,10 +110,9 @@ QUANTITIES = {
     "metacentric height": ("I min over the immersed volume minus the height of G above B",
                            lambda st, body: st.metacentric_height),
     "stability sign": ("sign of the metacentric height: 1 stable, -1 unstable against the weakest tilt",
-                       lambda st, body: _sign(st.metacentric_height, max(abs(st.potential), st.I_min / st.volume))),
+                       lambda st, body: _stability_sign(st)),
     "stable": ("1 when the metacentric height is positive, 0 when it is negative",
-               lambda st, body: (1 + _sign(st.metacentric_height,
-                                           max(abs(st.potential), st.I_min / st.volume))) // 2),
+               lambda st, body: (1 + _stability_sign(st)) // 2),
 }
 
 
@@ -136,9 +137,7 @@ class FloatingWitness(MeasuredWitness):
         dps = method.dps
         with mpmath.workdps(max(dps, 15)):
             body = self.body.build(case.params, dps)
-            up = tuple(number(x, case.params, dps) for x in self.up)
-            up = tuple(float(x) if dps <= 15 else (mpmath.mpf(x.numerator) / x.denominator
-                                                   if isinstance(x, Fraction) else x) for x in up)
+            up = tuple(number(x, case.params, dps) for x in self.up)      # the geometry normalises it
             st = floating_state(body, up, number(self.density, case.params, dps))
             if isinstance(self.quantity, str):
                 return QUANTITIES[self.quantity][1](st, body)
