@@ -23,6 +23,7 @@ import sympy as sp
 
 from ..model.claim import as_latex, identical_links, members
 from ..model.derivation import Derivation, Printed
+from .definitions import DefinitionRoute
 from .identity import Domain, IdentityResult, check_identity, check_rounded
 from .proofs import ProofBook
 
@@ -55,6 +56,7 @@ class FormulaReport:
     erratum: dict | None = None
     witness_notes: list = field(default_factory=list)
     corrected_numeric: list = field(default_factory=list)
+    numeric_content: bool = True      # False: no witness measured it and the definition route found it a definition
 
 
 @dataclass
@@ -233,6 +235,15 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
     for w in d.witnesses:
         for target, out in w.run(readings).items():
             outcomes.setdefault(target, []).append(out)
+    route = DefinitionRoute(d.steps, domain, d.id)       # every formula no declared witness measures
+    targeted = {t for w in d.witnesses for t in w.targets}
+    for p in d.printed:
+        if p.name in targeted or p.lost:
+            continue
+        for key, reading in ((p.name, p.reading),
+                             (p.name + "#corrected", p.erratum.corrected_reading if p.erratum else None)):
+            if reading is not None:
+                outcomes.setdefault(key, []).append(route.outcome(key, reading))
     timing["witnesses"] = time.perf_counter() - t_witnesses
     for p in d.printed:          # printed numbers agree with a witness to their printed precision
         if p.tolerance is not None:
@@ -252,13 +263,17 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
 
 def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
     where = f"{d.source} {p.locator} ({p.name})"
-    printed_out = outcomes.get(p.name, [])
-    corrected_out = outcomes.get(p.name + "#corrected", [])
+    # an outcome without records (the definition route found nothing to measure) only adds its note
+    printed_out = [o for o in outcomes.get(p.name, []) if o.records]
+    corrected_out = [o for o in outcomes.get(p.name + "#corrected", []) if o.records]
+    every = outcomes.get(p.name, []) + outcomes.get(p.name + "#corrected", [])
+    notes = [o.note for o in every if o.note]
     numeric = [r for o in printed_out for r in o.records]
     rep = FormulaReport(d.formula_id(p), d.source, p.locator, "unverifiable", None, numeric,
                         p.excerpt, _latex(p), identity=ident.to_json() if ident else None,
                         corrected_numeric=[r for o in corrected_out for r in o.records],
-                        witness_notes=[o.note for o in printed_out + corrected_out if o.note])
+                        witness_notes=notes,
+                        numeric_content=bool(printed_out or corrected_out) or all(o.measurable for o in every))
     if p.lost:
         rep.reason = f"text lost in the transcription: {p.lost}"
         return rep

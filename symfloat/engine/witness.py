@@ -52,6 +52,7 @@ class Outcome:
     records: list = field(default_factory=list)
     agrees: bool = True
     note: str = ""
+    measurable: bool = True     # False: the formula has nothing a number could check (it restates a definition)
 
 
 def _expected(reading, params):

@@ -19,6 +19,8 @@ def _formula_entry(d: DerivationReport, f) -> dict:
              "evidence": f.evidence, "numeric": f.numeric, "derivation": d.id, "printed": f.excerpt}
     if f.reason:
         entry["reason"] = f.reason
+    if not f.numeric_content:
+        entry["numeric_content"] = False
     if f.erratum:
         entry["erratum"] = {"kind": f.erratum["kind"], "confidence": f.erratum["confidence"],
                             "corrected": f.erratum["corrected"]}
@@ -33,7 +35,8 @@ def verification_record(reports: list[DerivationReport]) -> dict:
     formulas = [_formula_entry(d, f) for d in reports for f in d.formulas]
     steps = Counter(s.status for d in reports for s in d.steps)
     verdicts = Counter(f["verdict"] for f in formulas)
-    numeric_content = [f for d in reports for f in d.formulas if f.verdict in ("verified", "erratum")]
+    numeric_content = [f for d in reports for f in d.formulas
+                       if f.verdict in ("verified", "erratum") and f.numeric_content]
     return {
         "formulas": formulas,
         "summary": {

@@ -1,0 +1,261 @@
+"""The definition route: a printed formula measured from the definitions it depends on.
+
+A derivation introduces each quantity once, in the first step whose result it is (the member
+after the symbol is the definition as stated, e.g. ``T = ∫ u² df``), and later steps derive
+closed forms for it.  The identity checks compare a reading with those derived closed forms;
+this witness compares it with the *definitions*: every quantity of the reading is replaced by its
+defining member (recursively, in the order the steps introduce them), derivatives and
+substitutions are carried out exactly, and what remains -- defining integrals included -- is
+evaluated numerically at seeded sample points of the derivation's domain: integrals by nested
+tanh-sinh quadrature (``mpmath.quad``), at 15 and at 30 digits.  The first member of the chain
+is the measured quantity, every other member a value the print (or its correction) claims.
+
+It runs for every formula that no declared witness targets, so a numeric cross-check does not
+depend on someone writing one.  A member that is, once the definitions are in, the same SymPy
+expression as the measured one is not compared (that would evaluate one expression twice); a
+chain with nothing left to compare gets a note saying so and no record.
+"""
+from __future__ import annotations
+
+import functools
+import time
+from dataclasses import dataclass
+
+import mpmath
+import sympy as sp
+from sympy.printing.pycode import MpmathPrinter
+
+from ..model.claim import members
+from .identity import Domain
+from .witness import Outcome, Precision
+
+__all__ = ["DefinitionRoute", "definitions", "ROUTE_METHODS"]
+
+# A defining integral may have a square root vanishing at an endpoint (Euler's ellipse, 1/sqrt(b^2 - y^2));
+# tanh-sinh nodes rounded past it lose half the working digits.  So each precision is trusted to half
+# its digits, less one: 1e-6.5 at 15 digits, 1e-14 at 30.
+ROUTE_METHODS = (Precision(15, 10 ** -6.5), Precision(30, 1e-14))
+SAMPLES = 3
+MAX_DRAWS = 200
+
+
+def definitions(steps) -> dict:
+    """Quantity -> its defining member: the member after the symbol in the first step whose
+    result it is (the first member if the symbol is not written in that step)."""
+    out = {}
+    for s in steps:
+        if s.result is None or s.result in out:
+            continue
+        ms = members(s.claim)
+        out[s.result] = ms[1] if ms[0] == s.result else ms[0]
+    return out
+
+
+def _expanded(expr, defs, memo, stack=()):
+    """*expr* with every defined quantity replaced by its definition, recursively."""
+    if isinstance(expr, sp.MatrixBase):
+        return expr.applyfunc(lambda e: _expanded(e, defs, memo, stack))
+    expr = sp.sympify(expr)
+    found = {q for q in expr.free_symbols if q in defs}
+    if not found:
+        return expr
+    values = {}
+    for q in found:
+        if q in stack:
+            raise ValueError(f"the definition of {q} depends on itself ({' -> '.join(map(str, stack + (q,)))})")
+        if q not in memo:
+            memo[q] = _expanded(defs[q], defs, memo, stack + (q,))
+        values[q] = memo[q]
+    return expr.xreplace(values)
+
+
+def _singular(f, variables) -> bool:
+    """Can *f* be singular (a fractional power, a logarithm) in one of the *variables*?"""
+    return any(p.exp.is_Integer is not True and p.base.free_symbols & set(variables)
+               for p in f.atoms(sp.Pow)) or any(g.free_symbols & set(variables) for g in f.atoms(sp.log))
+
+
+class _NestedQuadPrinter(MpmathPrinter):
+    """Prints an integral as nested one-dimensional ``mpmath.quad`` calls, innermost variable
+    first, so that a limit may depend on the outer variables (mpmath's own multidimensional
+    ``quad`` needs constant limits, and SymPy flattens nested integrals into one).  ``maxdegree``
+    caps each rule's refinement: :class:`_RoughQuadPrinter` estimates a size, not a value."""
+
+    maxdegree = None
+
+    def _print_Integral(self, e):
+        # tanh-sinh copes with a root or logarithm singular at an endpoint (1/sqrt(b^2 - y^2) at
+        # y = b) but costs hundreds of nodes per dimension; Gauss-Legendre is exact after a few
+        # refinements for the polynomial and trigonometric integrands of moments
+        rule = "tanh-sinh" if _singular(e.function, e.variables) else "gauss-legendre"
+        cap = f", maxdegree={self.maxdegree}" if self.maxdegree else ""
+        body = self._print(e.function)
+        for lim in e.limits:
+            if len(lim) != 3:
+                raise ValueError(f"an integral over {lim[0]} without both limits has no value")
+            v, lo, hi = (self._print(t) for t in lim)
+            body = f"{self._module_format('mpmath.quad')}(lambda {v}: {body}, ({lo}, {hi}), method='{rule}'{cap})"
+        return body
+
+
+class _RoughQuadPrinter(_NestedQuadPrinter):
+    maxdegree = 2
+
+
+def _carried_out(m):
+    """Derivatives, substitutions and sums of *m* carried out exactly (integrals are left to
+    quadrature): they must be done before a sample point replaces their variables."""
+    if isinstance(m, sp.MatrixBase):
+        return m.applyfunc(_carried_out)
+    return m.doit(integrals=False) if m.has(sp.Derivative, sp.Subs, sp.Sum, sp.Limit) else m
+
+
+def _components(m):
+    return list(m) if isinstance(m, sp.MatrixBase) else [m]
+
+
+@functools.lru_cache(maxsize=512)
+def _compiled(expr, printer):
+    """*expr* as a function of its free symbols (sorted by name), integrals as nested quadrature.
+    Compiled before the numbers go in: a printer ordering a closed sum's terms would evaluate them."""
+    args = sorted(expr.free_symbols, key=lambda q: q.name)
+    return args, sp.lambdify(args, expr, modules=[{"mpmath": mpmath}, "mpmath"], printer=printer)
+
+
+def _numeric(expr, point, dps, printer=_NestedQuadPrinter):
+    """The value of *expr* at *point* (exact numbers) to *dps* digits; integrals by nested quadrature.
+    An integral that is closed at *point* (a centroid inside a moment's integrand) is computed once,
+    the smallest first, and its value inserted where it occurs."""
+    if not expr.has(sp.Integral):
+        v = sp.N(expr.xreplace(point), dps + 5, chop=True)   # an exact zero stays zero
+        if v.free_symbols or not v.is_number:
+            raise ValueError(f"free symbols {sorted(map(str, v.free_symbols))} remain")
+        return v
+    known = set(point)
+    closed = sorted((i for i in expr.atoms(sp.Integral) if i.free_symbols <= known), key=sp.count_ops)
+    values: dict = {}
+    for i in closed:
+        values[i] = _quadrature(i.xreplace(values), point, dps, printer)
+    rest = expr.xreplace(values)
+    return _quadrature(rest, point, dps, printer) if rest.has(sp.Integral) else _numeric(rest, point, dps)
+
+
+def _quadrature(expr, point, dps, printer):
+    args, f = _compiled(expr, printer)
+    missing = [q for q in args if q not in point]
+    if missing:
+        raise ValueError(f"free symbols {sorted(map(str, missing))} remain")
+    with mpmath.workdps(dps):
+        v = f(*(mpmath.mpf(point[q].p) / point[q].q if point[q].is_Rational else mpmath.mpf(sp.N(point[q], dps + 5))
+                for q in args))
+        # a node rounded past an endpoint where a square root vanishes gives an imaginary part
+        # of the order of the square root of the unit roundoff
+        if isinstance(v, mpmath.mpc):
+            if abs(v.imag) > mpmath.mpf(10) ** (2 - dps // 2) * max(1, abs(v.real)):
+                raise ValueError(f"the definitions give the complex value {v}")
+            v = v.real
+        return sp.Float(v, dps + 5)
+
+
+def _magnitude(expr):
+    """*expr* with every sum replaced by the sum of its terms' absolute values, through products,
+    integer powers and integrands (not limits, not a function's argument): the size of the numbers
+    its evaluation adds, against which a cancelling result's rounding is measured."""
+    if isinstance(expr, sp.Integral):
+        return sp.Integral(_magnitude(expr.function), *expr.limits)
+    if expr.is_Add:
+        return sp.Add(*[_magnitude(t) for t in expr.args])
+    if expr.is_Mul:
+        return sp.Mul(*[_magnitude(t) for t in expr.args])
+    if expr.is_Pow and expr.exp.is_Integer:
+        return sp.Pow(_magnitude(expr.base), expr.exp)
+    return sp.Abs(expr)
+
+
+def _difference(measured, value, claimed, point, method):
+    """Absolute and relative difference of a claimed value from the measured one at *method*'s
+    precision.  The relative difference is taken against the larger of the two values, or, where
+    that is smaller than the difference allows (a quantity that cancels to zero, an equilibrium
+    condition), against the magnitude of the terms whose sums produced them."""
+    c = _numeric(claimed, point, method.dps)
+    ab = abs(value - c)
+    scale = max(abs(value), abs(c))
+    if ab > method.tolerance * scale:
+        scale = max(scale, *(abs(_numeric(_magnitude(e), point, 10, _RoughQuadPrinter)) for e in (measured, claimed)))
+    return float(ab), float(ab / scale) if scale else float(ab)
+
+
+@dataclass
+class DefinitionRoute:
+    """The definition-route witness of one derivation (built by the checker, not declared)."""
+
+    steps: list
+    domain: Domain
+    derivation_id: str
+
+    name = "definition route"
+
+    def __post_init__(self):
+        self._defs = definitions(self.steps)
+        self._memo: dict = {}
+
+    def outcome(self, target: str, reading) -> Outcome | None:
+        """Compare the members of *reading* with its first member, measured from the definitions;
+        ``None`` when the chain offers nothing to compare (an :class:`Outcome` with only a note)."""
+        out = Outcome(self.name)
+        try:
+            ms = [_carried_out(_expanded(m, self._defs, self._memo)) for m in members(reading)]
+        except (ValueError, NotImplementedError) as exc:     # SymPy cannot carry out a limit, say
+            out.note = f"definition route: not evaluated ({exc})"
+            return out
+        first = ms[0]
+        rest = [m for m in ms[1:] if m != first]
+        if not rest:
+            out.note = ("definition route: with the derivation's definitions inserted the members are one "
+                        "SymPy expression, so nothing is left for a number to check")
+            out.measurable = False
+            return out
+        symbols = set().union(*(sp.sympify(c).free_symbols for m in ms for c in _components(m)))
+        cases = self._cases(symbols, target)
+        if cases is None:
+            out.note = "definition route: no sample point satisfies the derivation's constraints"
+            return out
+        for method in ROUTE_METHODS:
+            t0 = time.perf_counter()
+            worst_abs = worst_rel = 0.0
+            try:
+                for point in cases:
+                    measured = [sp.sympify(c) for c in _components(first)]
+                    values = [_numeric(c, point, method.dps) for c in measured]
+                    for m in rest:
+                        claimed = [sp.sympify(c) for c in _components(m)]
+                        if len(claimed) != len(measured):
+                            raise ValueError("members of different shapes")
+                        for e, v, c in zip(measured, values, claimed):
+                            ab, rel = _difference(e, v, c, point, method)
+                            worst_abs, worst_rel = max(worst_abs, ab), max(worst_rel, rel)
+            except (ValueError, TypeError, ArithmeticError, ZeroDivisionError, NotImplementedError) as exc:
+                out.records = []
+                out.note = f"definition route: not evaluated ({exc})"
+                return out
+            out.records.append({"method": f"definitions, {method.dps} digits", "abs_error": worst_abs,
+                                "rel_error": worst_rel, "seconds": time.perf_counter() - t0,
+                                "cases": len(cases)})
+            if worst_rel > method.tolerance:
+                out.agrees = False
+        if not out.agrees:
+            out.note = "definition route: the definitions give another value"
+        return out
+
+    def _cases(self, symbols, target):
+        if not symbols:
+            return [{}]
+        draw = self.domain.sampler(f"{self.derivation_id}/{target} definition route")
+        cases = []
+        for _ in range(MAX_DRAWS):
+            point = draw(symbols)
+            if self.domain.admits(point):
+                cases.append(point)
+                if len(cases) == SAMPLES:
+                    return cases
+        return cases or None

@@ -1,0 +1,99 @@
+"""The definition route: a printed formula measured from the definitions it depends on, by
+quadrature of the defining integrals, for every formula no declared witness targets."""
+import sympy as sp
+
+from symfloat import Derivation, Erratum
+from symfloat.engine.check import check_derivation
+from symfloat.engine.definitions import DefinitionRoute, definitions
+from symfloat.engine.identity import Domain
+
+a, b, h, x, y = sp.symbols("a b h x y", positive=True)
+T, M, Ys = sp.symbols("T M y_s")
+# graefe §1, verbatim: any quoted excerpt of the library serves; these tests judge readings
+MID = r"dessen Inhalt, weil auf der halben Höhe der Pyramide  $ABCO$ ,  $= \frac{g}{4}$"
+
+
+def route(steps_claims, domain):
+    d = Derivation(id="test-route", source="graefe", title="route", locator="§1", domain=domain)
+    for i, (claim, result) in enumerate(steps_claims):
+        d.step(f"s{i}", claim, "definition" if i == 0 else "integration", result=result)
+    return d, DefinitionRoute(d.steps, Domain(d.domain), d.id)
+
+
+def triangle():
+    """The right triangle 0 <= x <= a, 0 <= y <= b (1 - x/a): its moment of inertia about the x
+    axis is a b^3 / 12 (a y^2 over a triangle, integrated in x: b^3/3 (1 - x/a)^3 -> a b^3/12)."""
+    return route([((T, sp.Integral(y ** 2, (y, 0, b * (1 - x / a)), (x, 0, a))), T)],
+                 {a: (1, 3), b: (1, 3)})
+
+
+def test_the_definition_is_the_first_stated_member():
+    d, _ = triangle()
+    d.step("closed", (T, a * b ** 3 / 12), "integration", result=T)
+    assert definitions(d.steps)[T].has(sp.Integral)      # not the closed form established later
+
+
+def test_a_right_formula_agrees_at_two_precisions():
+    _, r = triangle()
+    out = r.outcome("t", (T, a * b ** 3 / 12))
+    assert out.agrees and [rec["method"] for rec in out.records] == ["definitions, 15 digits",
+                                                                    "definitions, 30 digits"]
+    assert out.records[0]["rel_error"] < 1e-13 and out.records[1]["rel_error"] < 1e-28
+    assert all(rec["cases"] == 3 and rec["seconds"] >= 0 for rec in out.records)
+
+
+def test_a_mutated_coefficient_is_refuted():
+    # mutation: 1/12 -> 1/10; the quadrature of the definition sees a difference of 1/60 a b^3,
+    # relative to the larger value, a b^3/10: 1/6
+    _, r = triangle()
+    out = r.outcome("t", (T, a * b ** 3 / 10))
+    assert not out.agrees and abs(out.records[1]["rel_error"] - 1 / 6) < 1e-12
+    assert "another value" in out.note
+
+
+def test_limits_that_depend_on_the_outer_variable_are_nested():
+    # the same triangle integrated the other way round: x from 0 to a (1 - y/b), y from 0 to b
+    _, r = route([((T, sp.Integral(y ** 2, (x, 0, a * (1 - y / b)), (y, 0, b))), T)], {a: (1, 3), b: (1, 3)})
+    assert r.outcome("t", (T, a * b ** 3 / 12)).agrees
+
+
+def test_a_square_root_vanishing_at_an_endpoint():
+    # Euler's ellipse: the half-area of x^2/a^2 + y^2/b^2 <= 1 is pi a b / 2 (an integrand
+    # sqrt(1 - y^2/b^2) whose derivative is infinite at y = b)
+    _, r = route([((M, sp.Integral(2 * a * sp.sqrt(1 - y ** 2 / b ** 2), (y, 0, b))), M)], {a: (1, 3), b: (1, 3)})
+    assert r.outcome("m", (M, sp.pi * a * b / 2)).agrees
+    assert not r.outcome("m", (M, 3 * a * b / 2)).agrees
+
+
+def test_a_quantity_that_cancels_to_zero_is_judged_against_its_terms():
+    # the first moment about the centroid vanishes: rounding at 1e-16 is not a relative error of 1
+    xbar = sp.Integral(x, (y, 0, b), (x, 0, a)) / sp.Integral(1, (y, 0, b), (x, 0, a))
+    _, r = route([((M, sp.Integral(x - xbar, (y, 0, b), (x, 0, a))), M)], {a: (1, 3), b: (1, 3)})
+    out = r.outcome("m", (M, 0))
+    assert out.agrees and out.records[0]["rel_error"] < 1e-12
+    assert not r.outcome("m", (M, a / 100)).agrees
+
+
+def test_a_restated_definition_has_no_numeric_content():
+    _, r = route([((Ys, b * x / a), Ys)], {a: (1, 3), b: (1, 3), x: (0, 1)})
+    out = r.outcome("edge", (Ys, b * x / a))
+    assert out.records == [] and not out.measurable and "nothing is left" in out.note
+
+
+def test_the_checker_runs_the_route_on_unwitnessed_formulas():
+    g, V = sp.symbols("g V", positive=True)
+    t = sp.Symbol("t")
+
+    def check(reading, erratum=None):
+        d = Derivation(id="test-route-check", source="graefe", title="mid", locator="§1", domain={g: (1, 20)})
+        d.step("area", (V, sp.Integral(4 * g * t ** 2, (t, 0, 1)) * sp.Rational(3, 16)), "definition", result=V)
+        d.quote("mid", "§1", MID, reading=reading, erratum=erratum)
+        return check_derivation(d).formulas[0]
+
+    f = check((V, g / 4))
+    assert f.verdict == "verified" and [r["method"] for r in f.numeric] == ["definitions, 15 digits",
+                                                                            "definitions, 30 digits"]
+    # mutation: g/3 printed; the route measures the print's error (1/3 of g/4) and the correction
+    f = check((V, g / 3), Erratum("calculation", "high", "g/4", "mutation", corrected_reading=(V, g / 4)))
+    assert f.verdict == "erratum" and abs(f.numeric[0]["rel_error"] - 0.25) < 1e-12
+    assert f.corrected_numeric[1]["rel_error"] < 1e-28
