@@ -8,7 +8,7 @@ such a condition raises a subclass of :class:`SymfloatError`; the command line p
 """
 from __future__ import annotations
 
-__all__ = ["SymfloatError", "CheckFailed", "InputError", "EnvironmentProblem", "EXIT_OK", "EXIT_CHECK",
+__all__ = ["SymfloatError", "CheckFailed", "DerivationError", "InputError", "EnvironmentProblem", "EXIT_OK", "EXIT_CHECK",
            "EXIT_INPUT", "EXIT_INTERRUPTED"]
 
 EXIT_OK = 0
@@ -25,6 +25,13 @@ class SymfloatError(Exception):
 
 class CheckFailed(SymfloatError):
     """A self-check of a result failed (index sum, duality, coverage): exit status 1."""
+
+    exit_code = EXIT_CHECK
+
+
+class DerivationError(SymfloatError):
+    """A derivation module that cannot be built or checked (an author's error: a symbol without a
+    sampling interval, a claim that is not a chain): exit status 1, naming the module and line."""
 
     exit_code = EXIT_CHECK
 

@@ -46,3 +46,18 @@ def test_a_library_folder_that_is_not_there_is_one_line(tmp_path):
     out = _symfloat(tmp_path / "missing", tmp_path, "verify", "cap")
     assert out.returncode == 2
     assert out.stderr == f"symfloat: SYMFLOAT_LIBRARY: {tmp_path / 'missing'} is not a folder\n"
+
+
+def test_an_authors_error_is_one_line_naming_the_module(tmp_path):
+    # mutation: h loses its sampling interval; the check cannot draw a point, and says where
+    library = tmp_path / "library"
+    shutil.copytree(TUTORIAL, library)
+    module = library / "derivations" / "cap_centroid.py"
+    text = module.read_text(encoding="utf-8")
+    broken = text.replace("domain={r: (1, 3), h: (0, 1)},", "domain={r: (1, 3)},")
+    assert broken != text
+    module.write_text(broken, encoding="utf-8")
+    out = _symfloat(library, tmp_path / "cache", "verify", "cap")
+    assert out.returncode == 1 and "Traceback" not in out.stderr
+    assert out.stderr.startswith("symfloat: derivation cap-centroid could not be checked: ValueError: symbol h has "
+                                 "no sampling interval") and out.stderr.count("\n") == 1

@@ -16,9 +16,12 @@ import signal
 import sys
 import threading
 import time
+import traceback
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from contextlib import contextmanager
+from pathlib import Path
 
+from ..errors import DerivationError, SymfloatError
 from ..registry import load, module_path, requires, select
 from ..report.files import write_if_changed
 from .cache import ReportCache, derivation_key
@@ -118,12 +121,26 @@ def _cached_report(cache: ReportCache, did: str, key: str) -> DerivationReport |
 
 
 def _check(did: str, key: str, search: bool, tick=None) -> DerivationReport:
-    """Check one derivation, replaying its proof certificates (or searching anew)."""
-    d, _ = load(did)
-    t0 = time.perf_counter()
-    report = check_derivation(d, key, book=ProofBook.load(did, search=search), progress=tick)
+    """Check one derivation, replaying its proof certificates (or searching anew).  An exception
+    from the module or its check becomes one :class:`DerivationError` naming where it arose."""
+    try:
+        d, _ = load(did)
+        t0 = time.perf_counter()
+        report = check_derivation(d, key, book=ProofBook.load(did, search=search), progress=tick)
+    except SymfloatError:
+        raise
+    except Exception as exc:
+        raise DerivationError(f"derivation {did} could not be checked: {type(exc).__name__}: {exc}"
+                              f"{_where(exc, module_path(did))}") from exc
     report.seconds = time.perf_counter() - t0
     return report
+
+
+def _where(exc: BaseException, module: Path) -> str:
+    """`` (module.py, line N)``: the last line of the derivation module in *exc*'s traceback."""
+    line = next((f.lineno for f in reversed(traceback.extract_tb(exc.__traceback__))
+                 if Path(f.filename).resolve() == module.resolve()), None)
+    return f" ({module.name}, line {line})" if line else ""
 
 
 def _check_json(did: str, key: str, search: bool) -> dict:
