@@ -5,6 +5,7 @@ only assembles SymPy objects, the engine does all the checking.
 """
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -15,7 +16,7 @@ from .erratum import Erratum
 from .prediction import Predictor
 from .source import get_source
 
-__all__ = ["Step", "Printed", "Derivation", "JUSTIFICATIONS"]
+__all__ = ["Step", "Printed", "Derivation", "JUSTIFICATIONS", "PRINTED_DIGITS", "printed_tolerance"]
 
 JUSTIFICATIONS = (
     "definition",      # introduces a quantity or the body: not checked, stated
@@ -61,6 +62,8 @@ class Printed:
     ``tolerance`` marks a printed *number* (a worked example): the reading
     then holds when its members, closed numbers, agree within the tolerance
     (half a unit of the last printed digit); a correction uses the same one.
+    Write it as :data:`PRINTED_DIGITS` and :meth:`Derivation.quote` takes it
+    from the decimal numbers of the excerpt (:func:`printed_tolerance`).
     """
 
     name: str
@@ -78,6 +81,26 @@ class Printed:
             raise ValueError(f"printed {self.name!r}: no reading, and no reason why")
         if self.unreadable and self.erratum is None:
             raise ValueError(f"printed {self.name!r}: unreadable print needs an erratum")
+
+
+PRINTED_DIGITS = "printed digits"
+_DECIMAL = re.compile(r"(?<![\d,])(\d+),(\d+)(?![\d,]*\d)")     # 0,7735 (the decimal comma of the print)
+
+
+def printed_tolerance(excerpt: str, reading) -> sp.Rational:
+    """Half a unit of the last digit of the printed decimals of *excerpt* that *reading* states,
+    the largest if several: ``0,7735`` -> 1/20000.
+
+    >>> printed_tolerance(r"$> 0,2265$", (sp.Symbol("s"), sp.Rational("0.2265")))
+    1/20000
+    """
+    values = {m for m in members(reading) if isinstance(m, sp.Rational)}
+    halves = [sp.Rational(1, 2 * 10 ** len(frac)) for whole, frac in _DECIMAL.findall(excerpt)
+              if sp.Rational(f"{whole}.{frac}") in values]
+    if not halves:
+        raise ValueError(f"no decimal number of the excerpt {excerpt[:60]!r} is a member of the reading: "
+                         f"give the tolerance explicitly")
+    return max(halves)
 
 
 PROVIDED_KINDS = ("thresholds", "forms", "report")
@@ -142,6 +165,8 @@ class Derivation:
             raise ValueError(f"{self.id}/{name}: excerpt is not verbatim in {self.source}: {excerpt[:60]!r}")
         if any(p.name == name for p in self.printed):
             raise ValueError(f"duplicate printed name {name!r} in {self.id}")
+        if tolerance == PRINTED_DIGITS:
+            tolerance = printed_tolerance(excerpt, reading)
         p = Printed(name, locator, excerpt, reading, erratum, unreadable, lost, note, tolerance)
         self.printed.append(p)
         return p
