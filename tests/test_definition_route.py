@@ -97,3 +97,11 @@ def test_the_checker_runs_the_route_on_unwitnessed_formulas():
     f = check((V, g / 3), Erratum("calculation", "high", "g/4", "mutation", corrected_reading=(V, g / 4)))
     assert f.verdict == "erratum" and abs(f.numeric[0]["rel_error"] - 0.25) < 1e-12
     assert f.corrected_numeric[1]["rel_error"] < 1e-28
+
+
+def test_a_substitution_at_a_point_where_a_term_is_singular_takes_the_limit():
+    # Scheeffer IX's F at z = 0: a term 1/z of the definition is cancelled by a factor z
+    z = sp.Symbol("z", positive=True)
+    _, r = route([((M, 6 * a * z * (sp.Rational(1, 2) - 2 * a / (3 * z))), M)], {a: (1, 3), z: (0, 1)})
+    assert r.outcome("f0", (sp.Subs(M, z, 0), -4 * a ** 2)).agrees
+    assert not r.outcome("f0", (sp.Subs(M, z, 0), -3 * a ** 2)).agrees        # mutation: 4 -> 3

@@ -107,7 +107,18 @@ def _carried_out(m):
     quadrature): they must be done before a sample point replaces their variables."""
     if isinstance(m, sp.MatrixBase):
         return m.applyfunc(_carried_out)
-    return m.doit(integrals=False) if m.has(sp.Derivative, sp.Subs, sp.Sum, sp.Limit) else m
+    if not m.has(sp.Derivative, sp.Subs, sp.Sum, sp.Limit):
+        return m
+    return m.replace(lambda e: isinstance(e, sp.Subs), _substituted).doit(integrals=False)
+
+
+def _substituted(e: sp.Subs):
+    """A substitution carried out; where a term of the definitions is singular at the point
+    (``6 a z (... - 2 a (1 - s)/(3 z))`` at z = 0) but the whole is not, its limit there."""
+    value = e.expr.doit(integrals=False).subs(dict(zip(e.variables, e.point)))
+    if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo) and len(e.variables) == 1 and not e.expr.has(sp.Integral):
+        return sp.limit(e.expr.doit(integrals=False), e.variables[0], e.point[0])
+    return value
 
 
 def _components(m):
