@@ -47,7 +47,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import Derivation, Eq, Erratum
+from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum
 from symfloat.model.derivation import Report
 from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
@@ -688,9 +688,9 @@ d.quote("164a", "(164a)",
         r"\frac{1}{2} - \sqrt{\frac{1}{12}}",
         reading=(sp.Matrix([shi, slo]), sp.Matrix([half + sp.sqrt(sp.Rational(1, 12)), half - sp.sqrt(sp.Rational(1, 12))])))
 d.quote("164a-upper", "(164a)", r"\text{ d. i. } > 0,7887", reading=(shi, sp.Rational("0.7887")),
-        tolerance=sp.Rational(1, 20000))
+        tolerance=PRINTED_DIGITS)
 d.quote("164a-lower", "(164a)", r"\text{ d. i. } < 0,2113", reading=(slo, sp.Rational("0.2113")),
-        tolerance=sp.Rational(1, 20000))
+        tolerance=PRINTED_DIGITS)
 d.quote("unstable-3", "IX.C", r"$$\text{oder } \left(\frac{a}{b}\right)^2 > \frac{1}{6s(1-s)},$$",
         reading=((a / b) ** 2 - 1 / (6 * s * (1 - s)), -(a / b) ** 2 / (6 * s * (1 - s)) * 12 * s / a * GM3),
         note="sign identity, factor (a/b)^2/(6s(1-s)) times 12 s/a: the a-vertical position is unstable")

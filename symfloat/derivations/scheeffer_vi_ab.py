@@ -18,7 +18,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import Derivation, Eq, Erratum, Prediction
+from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.geometry.floating import (cylinder_state, floating_state, right_prism, submerged)
 from symfloat.model.claim import as_printed
@@ -203,14 +203,14 @@ d.step("largest-product", (12 * s * (1 - s), 3 - 12 * (s - sp.Rational(1, 2)) **
        note="12 s (1 - s) <= 3 with equality only at s = 1/2: for (a/b)^2 > 3 every density is stable")
 d.quote("sqrt3", "VI.A", r"$$\left(\frac{a}{b}\right)^2 > 3 \text{ oder } \frac{a}{b} > 1,7321$$",
         reading=(sp.sqrt((12 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.7321")),
-        tolerance=sp.Rational(1, 20000), note="the largest value of 12 s (1 - s), at s = 1/2, and its root")
+        tolerance=PRINTED_DIGITS, note="the largest value of 12 s (1 - s), at s = 1/2, and its root")
 
 d.quote("every-density", "VI.A", "Gew. zwischen 0 und 1 die aufrechte Lage stabil.",
         reading=(24 * s / b * hA, ((a / b) ** 2 - 3) + 12 * (s - sp.Rational(1, 2)) ** 2),
         note="for (a/b)^2 > 3 the margin of (57) is a sum of positive terms for every s: stable")
 d.quote("sqrt3-below", "VI.A", r"$\frac{a}{b} < 1,7321$",
         reading=(sp.sqrt((12 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.7321")),
-        tolerance=sp.Rational(1, 20000), note="the same bound sqrt 3, from below")
+        tolerance=PRINTED_DIGITS, note="the same bound sqrt 3, from below")
 q = sp.Symbol("q", positive=True)
 _roots = sorted(sp.solve(Eq(12 * s * (1 - s), (a / b) ** 2), s), key=lambda e: e.subs({a: 1, b: 1}))
 S_lo, S_hi = sp.symbols("s_-^A s_+^A")
@@ -242,15 +242,15 @@ d.quote("ex2-root", "Example 2",
         r"\sqrt{1 - \frac{1}{3} \left( \frac{a}{b} \right)^2} = \sqrt{\frac{2}{3}}",
         reading=as_printed(lambda: (sp.sqrt(1 - (a / b) ** 2 / 3).subs(a, b), sp.sqrt(sp.Rational(2, 3)))), note="a/b = 1")
 d.quote("ex2-two-thirds", "Example 2", r"\sqrt{\frac{2}{3}} = \sqrt{0,6667}",
-        reading=(sp.Rational(2, 3), sp.Rational("0.6667")), tolerance=sp.Rational(1, 20000),
+        reading=(sp.Rational(2, 3), sp.Rational("0.6667")), tolerance=PRINTED_DIGITS,
         note="the radicand (2 s_+ - 1)^2 at a = b")
 d.quote("ex2-root-value", "Example 2", r"\sqrt{0,6667} = 0,8165",
-        reading=(2 * s_hi_1 - 1, sp.Rational("0.8165")), tolerance=sp.Rational(1, 20000),
+        reading=(2 * s_hi_1 - 1, sp.Rational("0.8165")), tolerance=PRINTED_DIGITS,
         note="the root is 2 s_+ - 1 at a = b")
 d.quote("ex2-upper", "Example 2", r"s &> 0,908", reading=(s_hi_1, sp.Rational("0.908")),
-        tolerance=sp.Rational(1, 2000))
+        tolerance=PRINTED_DIGITS)
 d.quote("ex2-lower", "Example 2", r"\text{oder } s &< 0,092", reading=(s_lo_1, sp.Rational("0.092")),
-        tolerance=sp.Rational(1, 2000))
+        tolerance=PRINTED_DIGITS)
 
 # ---- the tilted prism in the first rotation region ---------------------------------------------------
 # The rotation axis PQ through O has the direction p = (-cos w, sin w): it makes the angle w with DE || BC,
@@ -525,7 +525,7 @@ d.quote("ex3-tan", "Example 3",
 d.quote("ex3-ratio-squared", "Example 3", r"\left(\frac{a}{b}\right)^2 = \frac{5}{2}",
         reading=(Q60_3, printed_fraction(5, 2)))
 d.quote("ex3-ratio", "Example 3", r"\frac{a}{b} = 1,58 \text{ (angenähert)}",
-        reading=(sp.sqrt(Q60_3), sp.Rational("1.58")), tolerance=sp.Rational(1, 200))
+        reading=(sp.sqrt(Q60_3), sp.Rational("1.58")), tolerance=PRINTED_DIGITS)
 d.quote("ex3-ratio-fraction", "Example 3", r"$$\text{oder } \frac{a}{b} = \frac{158}{100}$$",
         reading=(sp.sqrt(Q60_3), sp.Rational(158, 100)), tolerance=sp.Rational(1, 200))
 d.quote("ex3-angle", "Example 3", r"$$\varphi_1 = 20^\circ 3' 35''$$",
@@ -633,13 +633,13 @@ d.quote("70", "(70)",
 d.quote("sqrt2", "VI.B",
         r"$$\frac{1}{2} \cdot \left(\frac{2r}{b}\right)^2 > 1 \text{ oder } \frac{2r}{b} > \sqrt{2} \text{ d. i. } > 1,4142.$$",
         reading=as_printed(lambda: (sp.sqrt((8 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.sqrt(2), sp.Rational("1.4142"))),
-        tolerance=sp.Rational(1, 20000), note="the largest 8 s (1-s), at s = 1/2")
+        tolerance=PRINTED_DIGITS, note="the largest 8 s (1-s), at s = 1/2")
 d.quote("cylinder-every-density", "VI.B", "Diese Bedingung ist für jeden Wert von  $s$  (zwischen 0 und 1) erfüllt, wenn",
         reading=(16 * s / b * hC, (K2 - 2) + 8 * (s - sp.Rational(1, 2)) ** 2),
         note="the margin of (69), (2r/b)^2 - 8 s (1-s), is a sum of positive terms for every s when (2r/b)^2 > 2")
 d.quote("sqrt2-below", "VI.B", r"$\frac{2r}{b} < 1,4142$",
         reading=(sp.sqrt((8 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.4142")),
-        tolerance=sp.Rational(1, 20000), note="the same bound sqrt 2, from below")
+        tolerance=PRINTED_DIGITS, note="the same bound sqrt 2, from below")
 _rootsC = sorted(sp.solve(Eq(8 * s * (1 - s), K2), s), key=lambda e: e.subs({r: 1, b: 4}))
 SC_lo, SC_hi = sp.symbols("s_-^C s_+^C")
 d.step("cylinder-density-upper", Eq(SC_hi, _rootsC[1]), "definition", note="sympy.solve", result=SC_hi)
@@ -654,7 +654,7 @@ d.quote("71", "(71)",
 # Example 5, 6
 d.quote("ex5", "Example 5", r"$\frac{2r}{b} > \sqrt{2}$  oder  $> 1,4142$",
         reading=(sp.sqrt((8 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.4142")),
-        tolerance=sp.Rational(1, 20000))
+        tolerance=PRINTED_DIGITS)
 sq_ = {b: 2 * r}                                # square axial section: 2r = b
 d.quote("ex6-ratio", "Example 6", r"In 71 hat man  $\frac{2}{b} = 1$  zu setzen",
         reading=((2 / b).subs(sq_), 1), note="square axial section: b = 2r",
@@ -671,13 +671,13 @@ d.quote("ex6-root", "Example 6", r"\sqrt{1 - \frac{1}{2} \cdot \left(\frac{2}{b}
                         corrected_reading=as_printed(lambda: (sp.sqrt(1 - (2 * r / b) ** 2 / 2).subs(sq_), sp.sqrt(sp.Rational(1, 2)))),
                         same_as="scheeffer-vi-ab/ex6-ratio"))
 sC_hi1, sC_lo1 = (e.subs(sq_) for e in (_rootsC[1], _rootsC[0]))
-for name, exc, val, printed, tol in (
-        ("ex6-root-value", r"\sqrt{0,50} = 0,7071", 2 * sC_hi1 - 1, "0.7071", sp.Rational(1, 20000)),
-        ("ex6-sum", r"1 + \sqrt{0,50} = 1,7071", 2 * sC_hi1, "1.7071", sp.Rational(1, 20000)),
-        ("ex6-difference", r"1 - \sqrt{0,50} = 0,2929", 2 * sC_lo1, "0.2929", sp.Rational(1, 20000)),
-        ("ex6-upper", r"folglich entweder  $s > 0,8536$", sC_hi1, "0.8536", sp.Rational(1, 20000)),
-        ("ex6-lower", r"oder  $s < 0,1464$", sC_lo1, "0.1464", sp.Rational(1, 20000))):
-    d.quote(name, "Example 6", exc, reading=(val, sp.Rational(printed)), tolerance=tol,
+for name, exc, val, printed in (
+        ("ex6-root-value", r"\sqrt{0,50} = 0,7071", 2 * sC_hi1 - 1, "0.7071"),
+        ("ex6-sum", r"1 + \sqrt{0,50} = 1,7071", 2 * sC_hi1, "1.7071"),
+        ("ex6-difference", r"1 - \sqrt{0,50} = 0,2929", 2 * sC_lo1, "0.2929"),
+        ("ex6-upper", r"folglich entweder  $s > 0,8536$", sC_hi1, "0.8536"),
+        ("ex6-lower", r"oder  $s < 0,1464$", sC_lo1, "0.1464")):
+    d.quote(name, "Example 6", exc, reading=(val, sp.Rational(printed)), tolerance=PRINTED_DIGITS,
             note="2r = b: the density roots s_+, s_- of (71) (and 2 s_+ - 1, 2 s_+, 2 s_-)")
 
 d.quote("cylinder-turns", "VI.B",
@@ -734,18 +734,18 @@ d.quote("ex7-conditions", "Example 7", r"$$8s(1-s) > 1 > 2s(4-5s)$$",
 d.quote("ex7-square", "Example 7", r"$$\left(\frac{1}{2} - s\right)^2 < \frac{1}{8}$$",
         reading=(sp.Rational(1, 8) - (sp.Rational(1, 2) - s) ** 2, full(-2 * s / b * hC).subs(sq_)))
 d.quote("ex7-lower", "Example 7", r"$$s > \frac{1}{2} \left(1 - \sqrt{\frac{1}{2}}\right) \text{ oder } s > 0,146.$$",
-        reading=(sC_lo1, (1 - sp.sqrt(sp.Rational(1, 2))) / 2, sp.Rational("0.146")), tolerance=sp.Rational(1, 2000))
+        reading=(sC_lo1, (1 - sp.sqrt(sp.Rational(1, 2))) / 2, sp.Rational("0.146")), tolerance=PRINTED_DIGITS)
 d.quote("ex7-second", "Example 7", r"ergibt sich  $(s - 0,4)^2 > 0,06$",
         reading=((s - sp.Rational(2, 5)) ** 2 - sp.Rational(6, 100), full((LbotC ** 2 - tanC ** 2) * K2 / 20).subs(sq_)))
 for name, exc, val, printed in (
         ("ex7-root", r"$\sqrt{0,06} = 0,245$", sp.Rational(2, 5) - s_b[0], "0.245"),
         ("ex7-plus", r"$$0,4 + \sqrt{0,06} = 0,645$$", s_b[1], "0.645"),
         ("ex7-minus", r"$$0,4 - \sqrt{0,06} = 0,155$$", s_b[0], "0.155")):
-    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=sp.Rational(1, 2000),
+    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=PRINTED_DIGITS,
             note="roots s of (2r/b)^2 = 2 s (4 - 5 s) at 2r = b (0.4 -+ sqrt 0.06)")
 for name, exc, val, printed in (("ex7-range-lower", "zwischen 0,146", sC_lo1, "0.146"),
                                 ("ex7-range-upper", "und 0,155 liegen", s_b[0], "0.155")):
-    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=sp.Rational(1, 2000),
+    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=PRINTED_DIGITS,
             note="'Folglich muss der Wert von s zwischen 0,146 und 0,155 liegen': right; below 0.146 the "
                  "cylinder floats upright stably, above 0.155 the lower base emerges before the tilted "
                  "equilibrium is reached")
@@ -762,7 +762,7 @@ for name, exc, val, printed in (
     d.quote(name, "Example 7", exc, reading=(val, printed),
             note="the roots of 1 = 2 s (4 - 5 s) (the bottom limit met, 2r = b), between which the margin is negative")
 for name, exc, val, printed in (("ex7-not", r"$s > 0,645$", s_b[1], "0.645"), ("ex7-only", r"$s < 0,155$", s_b[0], "0.155")):
-    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=sp.Rational(1, 2000),
+    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=PRINTED_DIGITS,
             note="the roots 0.4 -+ sqrt 0.06 rounded; s > 0.645 contradicts s < 1/2")
 # Example 8
 ex8 = {r: 30, b: 40, s: sp.Rational(3, 4)}
@@ -875,7 +875,7 @@ d.quote("ex10-x-sum", "Example 10", r"x &= 1,5 + 0,55", reading=(x10, sp.Rationa
         erratum=Erratum("consequential", "high", r"x = 1,5 + 0,94", cons + "; with tg phi_1 = sqrt(11/32) it is "
                         "1.6 * 0.5863 = 0.938",
                         corrected_reading=(x10, sp.Rational("1.5") + sp.Rational("0.94"))))
-d.quote("ex10-x", "Example 10", r"x &= 2,05", reading=(x10, sp.Rational("2.05")), tolerance=sp.Rational(1, 200),
+d.quote("ex10-x", "Example 10", r"x &= 2,05", reading=(x10, sp.Rational("2.05")), tolerance=PRINTED_DIGITS,
         erratum=Erratum("consequential", "high", r"x = 2,44", cons + "; x = 1.5 + 0.938 = 2.438 m",
                         corrected_reading=(x10, sp.Rational("2.44"))))
 d.quote("ex10-fraction", "Example 10", r"$\frac{x}{b} = \frac{2,05}{2,50} = \frac{41}{50}$",

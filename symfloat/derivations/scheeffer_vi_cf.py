@@ -33,7 +33,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import Derivation, Eq, Erratum, Prediction
+from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
 from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state, right_prism
@@ -339,9 +339,9 @@ d.quote("79", "(79)", r"s > \frac{1}{2} + \sqrt{\frac{1}{12}} \text{ d. h. } s >
                       r"\frac{1}{2} - \sqrt{\frac{1}{12}} \text{ d. h. } s < 0,2113",
         reading=(sp.Matrix([shi, slo]), sp.Matrix([half + sp.sqrt(sp.Rational(1, 12)), half - sp.sqrt(sp.Rational(1, 12))])))
 d.quote("79-upper-number", "(79)", r"s > \frac{1}{2} + \sqrt{\frac{1}{12}} \text{ d. h. } s > 0,7887",
-        reading=(shi, sp.Rational("0.7887")), tolerance=sp.Rational(1, 20000))
+        reading=(shi, sp.Rational("0.7887")), tolerance=PRINTED_DIGITS)
 d.quote("79-lower-number", "(79)", r"s < \frac{1}{2} - \sqrt{\frac{1}{12}} \text{ d. h. } s < 0,2113",
-        reading=(slo, sp.Rational("0.2113")), tolerance=sp.Rational(1, 20000))
+        reading=(slo, sp.Rational("0.2113")), tolerance=PRINTED_DIGITS)
 d.quote("cube-78a", "VI.D",
         r"$$\left\{ \begin{array}{l} s > \frac{1}{2} \text{ und } 1 \geq (1-s)(7s-1) \\ s < \frac{1}{2} \text{ und } "
         r"1 \geq s(6-7s) \end{array} \right.$$",
@@ -358,9 +358,9 @@ d.quote("80", "(80)", r"s > \frac{1}{2} \text{ und } s > \frac{1}{7}(4 + \sqrt{2
         reading=(sp.Matrix([s80hi, s80lo]), sp.Matrix([(4 + sp.sqrt(2)) / 7, (3 - sp.sqrt(2) ** 1) / 7])),
         note="'sqrt{2}^1': a stray mark of the scan; read literally it is sqrt(2) anyway")
 d.quote("80-upper-number", "(80)", r"s > \frac{1}{7}(4 + \sqrt{2}) \text{ d. i. } > 0,7735",
-        reading=(s80hi, sp.Rational("0.7735")), tolerance=sp.Rational(1, 20000))
+        reading=(s80hi, sp.Rational("0.7735")), tolerance=PRINTED_DIGITS)
 d.quote("80-lower-number", "(80)", r"s < \frac{1}{7}(3 - \sqrt{2}^1) \text{ d. i. } < 0,2265",
-        reading=(s80lo, sp.Rational("0.2265")), tolerance=sp.Rational(1, 20000))
+        reading=(s80lo, sp.Rational("0.2265")), tolerance=PRINTED_DIGITS)
 d.quote("80-roots", "VI.D",
         r"ist die erste dieser Bedingungen nur erfüllbar für  $s > \frac{4}{7}$  und die zweite nur für  "
         r"$s < \frac{3}{7}$",
@@ -368,16 +368,16 @@ d.quote("80-roots", "VI.D",
         note="the admissible root lies sqrt(2)/7 above 4/7 (below 3/7); the other root contradicts s > 1/2 (s < 1/2)")
 d.quote("81-upper", "(81)",
         r"Ein Würfel schwimmt in aufrechter Lage stabil, wenn sein spec. Gewicht  $s > 0,7887$",
-        reading=(shi, sp.Rational("0.7887")), tolerance=sp.Rational(1, 20000))
+        reading=(shi, sp.Rational("0.7887")), tolerance=PRINTED_DIGITS)
 d.quote("81-lower", "(81)", r"$s > 0,7887$  oder  $s < 0,2113$  ist.",
-        reading=(slo, sp.Rational("0.2113")), tolerance=sp.Rational(1, 20000))
+        reading=(slo, sp.Rational("0.2113")), tolerance=PRINTED_DIGITS)
 d.quote("81-oblique-upper", "VI.D", "zwischen 0,7735 und 0,7887",
-        reading=(s80hi, sp.Rational("0.7735")), tolerance=sp.Rational(1, 20000),
+        reading=(s80hi, sp.Rational("0.7735")), tolerance=PRINTED_DIGITS,
         note="the range of the claim 'aufrecht labil, ... durch Drehung um eine beliebige horizontale Achse in eine "
              "schiefe stabile Lage, in der weder seine obere noch seine untere Fläche ... durchschnitten wird': (78a) "
              "with a = b, whose conclusions are derived and tested on the clipped cube")
 d.quote("81-oblique-lower", "VI.D", "oder zwischen 0,2113 und 0,2265,",
-        reading=(s80lo, sp.Rational("0.2265")), tolerance=sp.Rational(1, 20000))
+        reading=(s80lo, sp.Rational("0.2265")), tolerance=PRINTED_DIGITS)
 d.quote("81a", "(81a)", r"$$\operatorname{tg}^2 \varphi_1 = 2 \cdot \left\{ b s (1 - s) - 1 \right\} \quad (81 a)$$",
         reading=(tan2c, 2 * (b * s * (1 - s) - 1)),
         erratum=Erratum(

@@ -43,7 +43,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import Derivation, Eq, Erratum
+from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum
 from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state, right_prism, submerged
@@ -280,7 +280,7 @@ d.quote("172", "(172)",
         note="f(0) < 0 <= f(1) for (4 - sqrt 2)/7 < s < (4 + sqrt 2)/7: a root in 0 < x <= 1 (x = 1 only at s = 5/6). "
              "Right as a statement about (171); at s = 0.77 there are three roots")
 d.quote("172-number", "(172)", r"\frac{4 + \sqrt{2}}{7} \quad \text{oder} < 0,7735",
-        reading=(s172, sp.Rational("0.7735")), tolerance=sp.Rational(1, 20000))
+        reading=(s172, sp.Rational("0.7735")), tolerance=PRINTED_DIGITS)
 d.step("first-domain-82", Eq(Sw45, (1 - s) ** 2 / (6 * s * (1 - s) - 1)), "lemma",
        uses=("scheeffer-vi-cf:cube-limit-omega",), result=Sw45,
        note="(82) of VI.D for s > 1/2: the oblique position stays in the first domain iff sin^2(45 deg + w) <= S")
@@ -358,7 +358,7 @@ d.quote("pentagon-stable", "X", "Es lässt sich auch zeigen, dass dieses Gleichg
         note="read at s = 0.77 for the two pentagonal roots of (171): stiffness signs along the diagonal plane")
 d.quote("dual-threshold", "X", r"wenn  $s > \frac{3 - \sqrt{2}}{7}$  d. i.  $> 0,2265$  ist.",
         reading=(1 - s172, (3 - r2) / 7), note="the duality s <-> 1 - s")
-d.quote("dual-number", "X", r"$> 0,2265$", reading=(1 - s172, sp.Rational("0.2265")), tolerance=sp.Rational(1, 20000))
+d.quote("dual-number", "X", r"$> 0,2265$", reading=(1 - s172, sp.Rational("0.2265")), tolerance=PRINTED_DIGITS)
 d.step("dual-vertices", Eq(NVd, NVp), "definition", result=NVd, uses=("pentagon-vertices",),
        note="the cube turned over at density 1 - s: wet and dry exchanged, the same waterplane")
 d.quote("dual-exists", "X",
