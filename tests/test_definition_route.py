@@ -105,3 +105,11 @@ def test_a_substitution_at_a_point_where_a_term_is_singular_takes_the_limit():
     _, r = route([((M, 6 * a * z * (sp.Rational(1, 2) - 2 * a / (3 * z))), M)], {a: (1, 3), z: (0, 1)})
     assert r.outcome("f0", (sp.Subs(M, z, 0), -4 * a ** 2)).agrees
     assert not r.outcome("f0", (sp.Subs(M, z, 0), -3 * a ** 2)).agrees        # mutation: 4 -> 3
+
+
+def test_substitutions_go_in_order_as_subs_does():
+    # scheeffer IX turns the log by Subs(e, (a, b, _k), (_k, a, b)): a -> _k, b -> a, _k -> b in this
+    # order exchanges the sides (a dict would let SymPy reorder them and leave _k behind)
+    k = sp.Symbol("_k")
+    _, r = route([((M, sp.Integral(x ** 2, (x, -a / 2, a / 2)) * b), M)], {a: (1, 3), b: (1, 3)})
+    assert r.outcome("swap", (sp.Subs(M, (a, b, k), (k, a, b)), a * b ** 3 / 12)).agrees

@@ -115,7 +115,7 @@ def _carried_out(m):
 def _substituted(e: sp.Subs):
     """A substitution carried out; where a term of the definitions is singular at the point
     (``6 a z (... - 2 a (1 - s)/(3 z))`` at z = 0) but the whole is not, its limit there."""
-    value = e.expr.doit(integrals=False).subs(dict(zip(e.variables, e.point)))
+    value = e.expr.doit(integrals=False).subs(list(zip(e.variables, e.point)))   # in order, as Subs.doit
     if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo) and len(e.variables) == 1 and not e.expr.has(sp.Integral):
         return sp.limit(e.expr.doit(integrals=False), e.variables[0], e.point[0])
     return value
