@@ -23,6 +23,7 @@ pytest.importorskip("matplotlib")
 from matplotlib.collections import QuadMesh  # noqa: E402
 
 from symfloat.derivations import _ix_figure as ix_figure  # noqa: E402
+from symfloat.errors import CheckFailed  # noqa: E402
 from symfloat.registry import load  # noqa: E402
 from symfloat.report import figures  # noqa: E402
 from symfloat.report.figures import Figure  # noqa: E402
@@ -43,7 +44,7 @@ def _json(name):
 
 def test_every_picture_is_committed_with_the_fingerprint_of_its_present_data_and_code():
     names = sorted(f.filename for f in figures.main_job_figures())
-    assert names == ["phase-cube.png", "phase-square-log.png", "scheeffer-ix-grid.png"]
+    assert names == ["phase-cube.png", "scheeffer-ix-grid.png"]
     for f in figures.main_job_figures():
         assert figures.recorded_fingerprint(DOCS / "figures" / f.filename) == figures.fingerprint(f, DOCS), \
             f"docs/figures/{f.filename} is stale: run `make run` and commit"
@@ -56,20 +57,20 @@ def test_the_phase_data_are_stamped_with_the_present_solver_and_sources():
 
 
 def test_drawing_a_picture_again_from_unchanged_data_gives_the_same_bytes(tmp_path):
-    fig = _figure("phase-square-log.png")
+    fig = _figure("phase-cube.png")
     committed = (DOCS / "figures" / fig.filename).read_bytes()
     again = figures.png_bytes(figures.draw(fig, DOCS), figures.fingerprint(fig, DOCS))
     assert again == committed
     # and the main job, given the same data, redraws nothing; changed data are drawn again
     docs = tmp_path / "docs"
     (docs / "figures").mkdir(parents=True)
-    for name in ("phase-square-log.json", "phase-square-log.png"):
+    for name in ("phase-cube.json", "phase-cube.png"):
         shutil.copy(DOCS / "figures" / name, docs / "figures" / name)
     assert figures.write_figures(docs, figures=[fig]) == []
-    data = json.loads((docs / "figures" / "phase-square-log.json").read_text())
+    data = json.loads((docs / "figures" / "phase-cube.json").read_text())
     data["source_thresholds_not_found"].append({"value": 0.5, "derivation": "x", "locators": [], "label": "x",
                                                 "change": "stable above"})
-    (docs / "figures" / "phase-square-log.json").write_text(json.dumps(data))
+    (docs / "figures" / "phase-cube.json").write_text(json.dumps(data))
     assert figures.write_figures(docs, figures=[fig]) == [fig.filename]
     assert (docs / "figures" / fig.filename).read_bytes() != committed
 
@@ -95,20 +96,22 @@ def test_the_phase_picture_draws_the_thresholds_of_its_record():
 
 
 def test_the_phase_bars_are_the_thresholds_and_agree_with_the_sweep():
-    record = _json("figures/phase-square-log.json")
-    spans = phase_intervals(record)          # raises when a sweep density is not what the bars say
+    record = _json("figures/phase-cube.json")
+    spans = phase_intervals(record)          # fails when a sweep density is not what the bars say
     fig = phase_figure(record)
     drawn = [[(float(p.vertices[:, 0].min()), float(p.vertices[:, 0].max())) for p in c.get_paths()]
              for c in fig.axes[0].collections]
     labels = [label for label in spans if spans[label]]
     assert [t.get_text() for t in fig.axes[0].get_yticklabels()] == labels
     assert drawn == [[(pytest.approx(a), pytest.approx(b)) for a, b in spans[label]] for label in labels]
-    # the lying log's face-up position: stable below the root of rho^2 - rho + 1/6 = 0 (the hasab condition)
-    lying = float(sp.Rational(1, 2) - sp.sqrt(3) / 6)
-    assert any(abs(b - lying) < 1e-9 for label, v in spans.items() if label.startswith("face") for _, b in v)
-    broken = copy.deepcopy(record)
-    broken["thresholds"] = [t for t in broken["thresholds"] if abs(t["density"] - lying) > 1e-9]
-    with pytest.raises(ValueError, match="the thresholds give"):
+    # the upright cube: stable up to Scheeffer's root of 6 s (1 - s) = 1 (79), and again from its dual
+    root = float(sp.Rational(1, 2) - sp.sqrt(3) / 6)
+    (a, b), (c, d) = spans["face z up"]
+    assert abs(b - root) < 1e-12 and abs(c - (1 - root)) < 1e-12
+    assert (a, d) == (record["sweep"][0]["density"], record["sweep"][-1]["density"])
+    broken = copy.deepcopy(record)          # a threshold lost: the bars no longer give the sweep
+    broken["thresholds"] = [t for t in broken["thresholds"] if abs(t["density"] - root) > 1e-9]
+    with pytest.raises(CheckFailed, match="the thresholds"):
         phase_intervals(broken)
 
 
@@ -160,4 +163,4 @@ def test_each_drawn_boundary_is_where_the_printed_tables_change(label):
 def test_a_figure_whose_data_are_missing_is_not_drawn(tmp_path):
     fig = Figure("x.png", ("nothing.json",), lambda data: None)
     assert figures.write_figures(tmp_path, figures=[fig]) == [] and not (tmp_path / "figures").exists()
-    assert [f.filename for f in phase_figures()] == ["phase-cube.png", "phase-square-log.png"]
+    assert [f.filename for f in phase_figures()] == ["phase-cube.png"]

@@ -181,8 +181,7 @@ def test_the_site_has_its_pages_and_every_internal_link_resolves(site, records):
     for facet in ("source-scheeffer", "kind-misprint", "confidence-high"):
         assert f"errata/{facet}.html" in pages
     pictures = [link for tag, link in pages["figures.html"].links if tag == "img"]
-    assert sorted(pictures) == ["_images/phase-cube.png", "_images/phase-square-log.png",
-                                "_images/scheeffer-ix-grid.png"]
+    assert sorted(pictures) == ["_images/phase-cube.png", "_images/scheeffer-ix-grid.png"]
     # the notebooks of the cube and of IX link to their pictures
     assert any(link.startswith("../figures.html#picture-phase-cube") for _, link in pages["notebooks/scheeffer-vi-cf.html"].links)
     assert any(link.startswith("../figures.html#picture-scheeffer-ix-grid")
@@ -265,7 +264,7 @@ def test_every_page_in_headless_chromium(site):
             assert not _visible_tex(page), (name, _visible_tex(page))
         assert not errors, errors[:5]
         # the pictures of the derivations load: the browser decoded each one (its natural width)
-        for name, count in (("figures.html", 3), ("scheeffer-ix-grid.html", 1)):
+        for name, count in (("figures.html", 2), ("scheeffer-ix-grid.html", 1)):
             page.goto((site / name).as_uri(), wait_until="load")
             widths = page.evaluate("Array.from(document.images).map(i => [i.getAttribute('src'), i.naturalWidth])")
             assert len(widths) == count and all(w > 0 for _, w in widths), (name, widths)

@@ -7,6 +7,8 @@ prints it, red dotted where a source prints one the solver does not find.  Used 
 """
 from __future__ import annotations
 
+from ..errors import CheckFailed
+
 __all__ = ["phase_intervals", "phase_figure"]
 
 
@@ -14,7 +16,7 @@ def phase_intervals(record) -> dict[str, list[tuple[float, float]]]:
     """Position label -> the density intervals of the sweep's range where it is stable, read from the
     thresholds alone (each one flips its position: ``stable above`` begins an interval, ``stable below``
     ends one), starting from the stable set at the first sweep density.  The sweep is the other route:
-    a sweep density whose stable set the intervals do not give is a ValueError."""
+    a sweep density whose stable set the intervals do not give fails the check (:class:`CheckFailed`)."""
     sweep = record["sweep"]
     lo, hi = sweep[0]["density"], sweep[-1]["density"]
     labels = sorted({label for row in sweep for label in row["stable"]} | {t["position"] for t in record["thresholds"]})
@@ -34,7 +36,8 @@ def phase_intervals(record) -> dict[str, list[tuple[float, float]]]:
     for row in sweep:
         drawn = sorted(label for label, spans in out.items() if any(a <= row["density"] <= b for a, b in spans))
         if drawn != sorted(row["stable"]):
-            raise ValueError(f"at s = {row['density']:.6f} the thresholds give {drawn}, the sweep {row['stable']}")
+            raise CheckFailed(f"phase diagram of the {record['body']}: at s = {row['density']:.6f} the thresholds "
+                              f"give {drawn}, the sweep {row['stable']}")
     return out
 
 
