@@ -242,8 +242,15 @@ def _run(args) -> int:
                 write_if_changed(docs / report.filename, report.build(
                     progress=None if quiet else (lambda m, f=report.filename: print(f"{f}: {m}", file=sys.stderr))))
             documents.append(report.filename)
+    from .report.figures import write_figures      # the pictures, from the data above (matplotlib: only here)
+    from .report.phase_data import write_phase_data
+
+    say = None if quiet else (lambda m: print(m, file=sys.stderr))
+    documents += [f"figures/{name}" for name in write_phase_data(docs, say)]
+    figures = write_figures(docs, say)
     print(_summary_by_source(reports))
-    print(f"wrote {', '.join('docs/' + f for f in documents)}; {len(written)} notebooks changed")
+    print(f"wrote {', '.join('docs/' + f for f in documents)}; {len(written)} notebooks changed; "
+          f"{len(figures)} figures redrawn")
     for r in reports:
         for msg in r.failures:
             print(f"FAILURE: {msg}")

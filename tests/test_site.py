@@ -180,6 +180,12 @@ def test_the_site_has_its_pages_and_every_internal_link_resolves(site, records):
     assert all(f"notebooks/{d}.html" in pages for d in records.notebooks)
     for facet in ("source-scheeffer", "kind-misprint", "confidence-high"):
         assert f"errata/{facet}.html" in pages
+    pictures = [link for tag, link in pages["figures.html"].links if tag == "img"]
+    assert sorted(pictures) == ["_images/phase-cube.png", "_images/scheeffer-ix-grid.png"]
+    # the notebooks of the cube and of IX link to their pictures
+    assert any(link.startswith("../figures.html#picture-phase-cube") for _, link in pages["notebooks/scheeffer-vi-cf.html"].links)
+    assert any(link.startswith("../figures.html#picture-scheeffer-ix-grid")
+               for _, link in pages["notebooks/scheeffer-ix.html"].links)
     assert (site / MARKER).is_file() and not (site / ".buildinfo").exists()
     broken = []
     for name, page in pages.items():
@@ -257,6 +263,11 @@ def test_every_page_in_headless_chromium(site):
             page.goto((site / name).as_uri(), wait_until="load")
             assert not _visible_tex(page), (name, _visible_tex(page))
         assert not errors, errors[:5]
+        # the pictures of the derivations load: the browser decoded each one (its natural width)
+        for name, count in (("figures.html", 2), ("scheeffer-ix-grid.html", 1)):
+            page.goto((site / name).as_uri(), wait_until="load")
+            widths = page.evaluate("Array.from(document.images).map(i => [i.getAttribute('src'), i.naturalWidth])")
+            assert len(widths) == count and all(w > 0 for _, w in widths), (name, widths)
         # the same checks see a page that shows raw TeX and logs an error
         control = site.parent / "control.html"
         control.write_text("<p>$$\\frac{a}{b}$$</p><script>console.error('control')</script>", encoding="utf-8")

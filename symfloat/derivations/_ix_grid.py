@@ -9,10 +9,12 @@ the same section, which knows nothing of the tables.  A cell agrees when both
 lists match one to one (tilt within ``MATCH_RAD``, same stability).
 
 The derivation hands the grid to the main job as a report (``provides("report", ...)``):
-``docs/scheeffer-ix-grid.md``, rebuilt when its stamp changes.
+``docs/scheeffer-ix-grid.md`` and its data ``docs/scheeffer-ix-grid.json`` (every cell's counts, the
+picture's data: :mod:`symfloat.derivations._ix_figure`), rebuilt when their stamp changes.
 """
 from __future__ import annotations
 
+import json
 import math
 import time
 from fractions import Fraction
@@ -23,7 +25,7 @@ from ..registry import load
 from ..report.stamp import digest, package_digest, stamp_line
 from ..solver import make_scene, solve
 
-__all__ = ["DENSITIES", "RATIOS", "grid_rows", "grid_markdown", "grid_stamp"]
+__all__ = ["DENSITIES", "RATIOS", "grid_rows", "report_rows", "grid_markdown", "grid_data", "grid_stamp"]
 
 DENSITIES = [Fraction(k, 40) for k in range(1, 40)]
 RATIOS = [Fraction(x) for x in ("1.02", "1.1", "1.25", "1.5", "1.75", "2", "2.5", "3", "4", "6")]
@@ -33,7 +35,7 @@ MATCH_RAD = 1e-6
 def _solver_positions(s, ratio):
     polygon = f"0,0 {ratio},0 {ratio},1 0,1"
     sol = solve(make_scene("section", s, polygon=polygon))
-    # tilt from the position with b (along y) vertical, folded by the rectangle's symmetry
+    # tilt from the position with b (along y) vertical, folded by the rectangle's symmetry; one per class
     return [(math.atan2(abs(e.up[0]), abs(e.up[1])), e.stability) for e in sol.equilibria]
 
 
@@ -83,10 +85,23 @@ def grid_rows(densities=DENSITIES, ratios=RATIOS, progress=None, extra=()) -> li
                               "solver": near[0][1], "printed": list(printed)})
         rows.append({"s": float(s), "s_exact": str(s), "ratio": float(ratio), "ratio_exact": str(ratio),
                      "boundary": (s, ratio) in extra, "table": len(table),
-                     "solver": len(solver), "missing": missing, "wrong_stability": wrong,
+                     "solver": len(solver), "table_stable": sum(t[1] == "stable" for t in table),
+                     "solver_stable": sum(q[1] == "stable" for q in solver), "missing": missing, "wrong_stability": wrong,
                      "unpredicted": [{"tilt_deg": math.degrees(q[0]), "stability": q[1]} for q in unpredicted],
                      "seconds": time.perf_counter() - t0})
     return rows
+
+
+_REPORT_ROWS: dict = {}
+
+
+def report_rows(progress=None) -> list[dict]:
+    """The rows of the main job's grid (with :func:`boundary_cells`), solved once per process for both
+    files of the report."""
+    stamp = grid_stamp()
+    if stamp not in _REPORT_ROWS:
+        _REPORT_ROWS[stamp] = grid_rows(progress=progress, extra=boundary_cells())
+    return _REPORT_ROWS[stamp]
 
 
 def grid_stamp() -> str:
@@ -95,6 +110,17 @@ def grid_stamp() -> str:
     _, module = load("scheeffer-ix")
     return digest(package_digest("solver", "geometry", "model"), Path(__file__), Path(module.__file__),
                   repr((DENSITIES, RATIOS, MATCH_RAD)))
+
+
+def grid_data(rows, stamp: str) -> str:
+    """``docs/scheeffer-ix-grid.json``: every cell (s, a/b exact and as floats, on the grid or beside a
+    boundary), the table's and the solver's number of equilibria and of stable ones, and whether they
+    agree; no times, so that the same grid gives the same bytes."""
+    cells = [{"s": r["s_exact"], "ratio": r["ratio_exact"], "s_float": r["s"], "ratio_float": r["ratio"],
+              "boundary": r["boundary"], "table": r["table"], "solver": r["solver"],
+              "table_stable": r["table_stable"], "solver_stable": r["solver_stable"],
+              "agree": not (r["missing"] or r["wrong_stability"] or r["unpredicted"])} for r in rows]
+    return json.dumps({"stamp": stamp, "match_rad": MATCH_RAD, "cells": cells}, indent=1) + "\n"
 
 
 def grid_markdown(rows, stamp: str | None = None) -> str:
@@ -123,7 +149,9 @@ def grid_markdown(rows, stamp: str | None = None) -> str:
             r = next(r for r in rows_grid if r["ratio"] == ratio and r["s"] == s)
             marks.append("✓" if not (r["missing"] or r["wrong_stability"] or r["unpredicted"]) else "✗")
         lines.append(f"| {ratio:g} | " + " | ".join(marks) + " |")
-    lines += ["", "(every fourth density shown above; every cell is listed below when it disagrees)", ""]
+    lines += ["", "(every fourth density shown above; every cell is listed below when it disagrees)", "",
+              "Every cell's counts are in `scheeffer-ix-grid.json`; drawn with the printed boundaries:", "",
+              "![The case tables of IX against the solver](figures/scheeffer-ix-grid.png)", ""]
     if bad:
         lines += ["## Cells where table and solver disagree", "",
                   "| s | a/b | table | solver | what differs |", "|---|---|---|---|---|"]

@@ -1348,8 +1348,14 @@ d.predicts(("box", "cube"), predict)
 def _grid_report(progress=None) -> str:
     """docs/scheeffer-ix-grid.md: the tables against the solver on a grid of (s, a/b) and across every
     boundary of the tables (:mod:`symfloat.derivations._ix_grid`)."""
-    from ._ix_grid import boundary_cells, grid_markdown, grid_rows, grid_stamp
-    return grid_markdown(grid_rows(progress=progress, extra=boundary_cells()), grid_stamp())
+    from ._ix_grid import grid_markdown, grid_stamp, report_rows
+    return grid_markdown(report_rows(progress), grid_stamp())
+
+
+def _grid_data(progress=None) -> str:
+    """docs/scheeffer-ix-grid.json: every cell's counts, the data of the grid's picture."""
+    from ._ix_grid import grid_data, grid_stamp, report_rows
+    return grid_data(report_rows(progress), grid_stamp())
 
 
 def _grid_stamp() -> str:
@@ -1358,3 +1364,4 @@ def _grid_stamp() -> str:
 
 
 d.provides("report", Report("scheeffer-ix-grid.md", _grid_stamp, _grid_report))
+d.provides("report", Report("scheeffer-ix-grid.json", _grid_stamp, _grid_data))

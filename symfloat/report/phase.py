@@ -52,20 +52,13 @@ def phase_table(diagram) -> str:
 
 
 def phase_plot(diagram, path) -> None:
+    """``symfloat phase --plot``: :func:`phase_figure` of the diagram, as PNG."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    labels = sorted({label for row in diagram.stable for label in row})
-    fig, ax = plt.subplots(figsize=(8, 0.5 * len(labels) + 1.8))
-    for y, label in enumerate(labels):
-        xs = [s for s, row in zip(diagram.densities, diagram.stable) if label in row]
-        ax.scatter(xs, [y] * len(xs), s=14)
-    for t in diagram.thresholds:
-        ax.axvline(t.density, color="0.6", linewidth=0.6, linestyle="--")
-    ax.set_yticks(range(len(labels)), labels, fontsize=8)
-    ax.set_xlim(0, 1)
-    ax.set_xlabel("density s (water = 1)")
-    ax.set_title(f"{diagram.body} ({','.join(diagram.dims)}): stable positions; dashed = thresholds", fontsize=9)
-    fig.savefig(path, dpi=110, bbox_inches="tight")
+    from .phase_figure import phase_figure
+
+    fig = phase_figure(phase_record(diagram))
+    fig.savefig(path, dpi=110, metadata={"Software": None})
     plt.close(fig)

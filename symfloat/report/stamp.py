@@ -15,7 +15,7 @@ from pathlib import Path
 
 __all__ = ["digest", "package_digest", "stamp_line", "stamp_of"]
 
-_STAMP = re.compile(r"<!-- content stamp: ([0-9a-f]{16,64}) -->")
+_STAMP = re.compile(r'<!-- content stamp: ([0-9a-f]{16,64}) -->|^ "stamp": "([0-9a-f]{16,64})"', re.M)
 
 
 def digest(*parts) -> str:
@@ -46,9 +46,10 @@ def stamp_line(key: str) -> str:
 
 
 def stamp_of(path: Path) -> str | None:
-    """The stamp recorded in *path*, or ``None`` (no file, or no stamp)."""
+    """The stamp recorded in *path* (a Markdown file's stamp line, a JSON file's top-level ``"stamp"`` as
+    ``json.dumps(..., indent=1)`` writes it), or ``None`` (no file, or no stamp)."""
     try:
         match = _STAMP.search(path.read_text(encoding="utf-8"))
     except OSError:
         return None
-    return match.group(1) if match else None
+    return (match.group(1) or match.group(2)) if match else None

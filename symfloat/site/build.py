@@ -1,7 +1,8 @@
 """``symfloat site``: stage the pages from the committed records, build them with Sphinx, sync the output.
 
 Sphinx with MyST-NB: MyST pages for the edition and the errata (written here from the records),
-the executed notebooks rendered as committed (execution off), the numerics report and its figures.
+the executed notebooks rendered as committed (execution off), the numerics report and its figures,
+the pictures of the derivations (:mod:`.figures`).
 Mathematics is MathML made at build time (:mod:`symfloat.site.mathml`); the theme is Sphinx's own
 ``alabaster``; nothing on a page loads from the network.
 
@@ -25,6 +26,7 @@ from ..report.files import write_atomic
 from .edition import edition_page
 from .notebooks import staged_notebook
 from .errata_pages import errata_index, erratum_page, facet_pages
+from .figures import PAGE as FIGURES, figures_page, notebook_links, pictures
 from .records import Records, load_records, slug
 
 __all__ = ["build_site", "stage", "MARKER", "SiteError"]
@@ -66,7 +68,7 @@ def _asset(name: str) -> str:
     return resources.files("symfloat.site").joinpath("assets", name).read_text(encoding="utf-8")
 
 
-def _index(records: Records) -> str:
+def _index(records: Records, with_figures: bool) -> str:
     s = records.summary
     rows = []
     for key, source in SOURCES.items():
@@ -85,6 +87,7 @@ def _index(records: Records) -> str:
         "| source (annotated edition) | formulas | verified | errata | unverifiable | trivial |",
         "|---|---:|---:|---:|---:|---:|", *rows, "",
         "```{toctree}", ":maxdepth: 1", "", "edition/index", "errata/index", "notebooks/index",
+        *([FIGURES] if with_figures else []),
         *(["scheeffer-ix-grid"] if records.ix_grid else []), "numerics", "about", "```", ""])
 
 
@@ -95,10 +98,13 @@ def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
     if len(set(slugs)) != len(slugs):
         raise SiteError("two errata ids give the same page name")
     records.ix_grid = (docs / "scheeffer-ix-grid.md").is_file()     # a document the main job adds
-    files = {"conf.py": _CONF, "index.md": _index(records), "_static/symfloat.css": _asset("symfloat.css"),
+    found = pictures(docs)
+    files = {"conf.py": _CONF, "index.md": _index(records, bool(found)), "_static/symfloat.css": _asset("symfloat.css"),
              "_static/symfloat.js": _asset("symfloat.js"),
              "about.md": (docs / "site.md").read_text(encoding="utf-8"),
              "numerics.md": (docs / "numerics.md").read_text(encoding="utf-8")}
+    if found:
+        files[f"{FIGURES}.md"] = figures_page(found, records.notebooks)
     if records.ix_grid:
         files["scheeffer-ix-grid.md"] = (docs / "scheeffer-ix-grid.md").read_text(encoding="utf-8")
     keys = [k for k in SOURCES if any(f["source"] == k for f in records.formulas)]
@@ -113,11 +119,14 @@ def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
         files[f"errata/{slug(e['id'])}.md"] = erratum_page(e, records)
     files["notebooks/index.md"] = "\n".join(
         ["# The derivations", "", "The executed notebooks as the main job committed them (not re-run here): each "
-         "step with its justification, each printed formula with its reading, verdict and witnesses.", "",
+         "step with its justification, each printed formula with its reading, verdict and witnesses."
+         + (" The phase diagrams and Scheeffer IX's case tables are drawn in [the derivations in pictures]"
+            f"(../{FIGURES}.md)." if found else ""), "",
          "```{toctree}", ":maxdepth: 1", "", *records.notebooks, "```", ""])
+    drawn = notebook_links(found)
     for d, path in records.notebooks.items():
         source = next(f["source"] for f in records.formulas if f["derivation"] == d)
-        files[f"notebooks/{d}.ipynb"] = staged_notebook(path, records, d, SOURCES[source].text())
+        files[f"notebooks/{d}.ipynb"] = staged_notebook(path, records, d, SOURCES[source].text(), drawn.get(d, ()))
     for name, text in files.items():
         (folder / name).parent.mkdir(parents=True, exist_ok=True)
         (folder / name).write_text(text, encoding="utf-8")

@@ -1,6 +1,7 @@
 """The executed notebooks as the site shows them: the committed cells and outputs, unexecuted.
 
-Three things are added to the staged copy, none changed: a MyST target before each printed formula's
+Four things are added to the staged copy, none changed: after the title, links to the pictures that draw
+the derivation's printed formulas (:mod:`.figures`); a MyST target before each printed formula's
 heading (an anchor the edition and the errata link to), the quotations (``> excerpt``) shown as the
 transcription shows them, and the fractions a note writes in TeX without dollars (``\\frac{a}{b}``
 in a line ``Note: ...``) put between dollars, so that they are rendered.  A quotation is an excerpt verbatim, and an excerpt may begin or
@@ -59,10 +60,14 @@ def _dollar_fractions(line: str) -> str:
     return "".join(out) + line[pos:]
 
 
-def staged_notebook(path: Path, records: Records, derivation: str, text: str) -> str:
+def staged_notebook(path: Path, records: Records, derivation: str, text: str, pictures=()) -> str:
     """The notebook at *path* with its formula targets and rendered quotations; *text* is the
-    transcription its derivation quotes."""
+    transcription its derivation quotes, *pictures* the pictures (:class:`.figures.Picture`) to link."""
     nb = json.loads(path.read_text(encoding="utf-8"))
+    if pictures:
+        links = ", ".join(f"{{ref}}`{p.title} <{p.name}>`" for p in pictures)
+        nb["cells"].insert(1, {"cell_type": "markdown", "id": "symfloat-site-pictures", "metadata": {},
+                               "source": f"In pictures: {links}."})
     anchors = {c.cell for fid, c in records.cells.items() if fid.startswith(derivation + "/")}
     for cell in nb["cells"]:
         if cell["cell_type"] != "markdown":

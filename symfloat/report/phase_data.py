@@ -1,0 +1,76 @@
+"""The phase diagram the main job keeps: the cube.
+
+``docs/figures/phase-<name>.json`` is the record of ``symfloat phase`` (:func:`symfloat.report.phase.
+phase_record`, without its time) plus the ``stamp`` of what it depends on: the solver, geometry and
+model packages, the derivations whose predictors and closed forms it compares with, this module
+and :mod:`symfloat.report.phase`, and the body and sweep.  The main job computes a diagram again only
+when that stamp differs (the cube costs about 25 s); the pictures are drawn from these files
+(:func:`symfloat.report.phase_figure.phase_figure`, through :mod:`symfloat.report.figures`).
+
+The long square log (the box 1 × 1 × 4) is not kept: ``symfloat phase box --dims 1,1,4 --steps 24``
+takes about 37 processor-minutes (the continuation in ``_locate_tracked`` of :mod:`symfloat.solver.phase`
+follows its tilted positions in steps it never enlarges again) and fails its own checks (duality s <->
+1 - s; its thresholds do not give its sweep's stable sets), so there is nothing to draw yet.
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from .stamp import digest, package_digest
+
+__all__ = ["PHASES", "STEPS", "phase_stamp", "phase_data", "write_phase_data", "phase_figures"]
+
+PHASES = {"cube": ("cube", None)}
+STEPS = 24
+
+
+def _derivation_files(body: str) -> list[Path]:
+    from ..registry import load, providing
+    from ..solver.coverage import predicting
+    ids = sorted(set(predicting(body)) | set(providing("thresholds")))
+    return [Path(load(did)[1].__file__) for did in ids]
+
+
+def phase_stamp(name: str) -> str:
+    body, dims = PHASES[name]
+    return digest(package_digest("solver", "geometry", "model"), *_derivation_files(body), Path(__file__),
+                  Path(__file__).with_name("phase.py"), repr((body, dims, STEPS)))
+
+
+def phase_data(name: str, progress=None) -> str:
+    """The JSON of the phase diagram *name*, computed now (``seconds`` left out)."""
+    from ..solver.phase import phase_diagram
+    from .phase import phase_record
+    body, dims = PHASES[name]
+    record = phase_record(phase_diagram(body, dims, STEPS, progress=progress))
+    del record["seconds"]
+    return json.dumps({"stamp": phase_stamp(name), "steps": STEPS, **record}, indent=1) + "\n"
+
+
+def _stamp_in(path: Path) -> str | None:
+    try:
+        return json.loads(path.read_text(encoding="utf-8")).get("stamp")
+    except (OSError, ValueError):
+        return None
+
+
+def write_phase_data(docs: Path, progress=None) -> list[str]:
+    """Compute the diagrams whose stamp changed into ``docs/figures/``; the files written."""
+    from .files import write_if_changed
+    written = []
+    for name in PHASES:
+        path = docs / "figures" / f"phase-{name}.json"
+        if _stamp_in(path) != phase_stamp(name):
+            progress and progress(f"computing the phase diagram {path.name}")
+            write_if_changed(path, phase_data(name))
+            written.append(path.name)
+    return written
+
+
+def phase_figures():
+    """The pictures of the diagrams (:class:`symfloat.report.figures.Figure`)."""
+    from .figures import Figure
+    from .phase_figure import phase_figure
+    return [Figure(f"phase-{name}.png", (f"figures/phase-{name}.json",), phase_figure,
+                   code=(Path(__file__).with_name("phase_figure.py"),)) for name in PHASES]
