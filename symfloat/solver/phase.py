@@ -119,6 +119,7 @@ def _locate_tracked(poly, group, scale, label, eq, s_in, s_out):
     by bisection on which vertices are above water."""
     u = np.array(eq.up)
     lo, step = s_in, (s_out - s_in) / 8
+    widest, before = abs(step), False
     while abs(step) > BRACKET / 2:          # continuation in s: a step is halved where the predicate fails
         mid = lo + step
         ok = abs(mid - s_in) < abs(s_out - s_in)
@@ -127,8 +128,13 @@ def _locate_tracked(poly, group, scale, label, eq, s_in, s_out):
             ok = ok and (eq.family == "ring" or np.linalg.norm(u_mid - u) <= 0.05)
         if ok:
             lo, u = mid, u_mid
+            if before and 2 * abs(step) <= widest:
+                # two steps in a row held: the step grows again (never beyond the first), so a branch that
+                # moved fast next to its birth (a pitchfork's square root) is not then walked in tiny steps
+                step *= 2
         else:
             step /= 2
+        before = ok
     hi = lo + 2 * step
     err = abs(hi - lo) / 2
     tilt = min(math.acos(min(1.0, abs(float(x)))) for x in u)     # from the nearest axis
