@@ -67,3 +67,28 @@ def test_box_window_above_s_z_is_found_with_its_dual(box_phase):
         assert len(found) == 1, (value, change)
         assert found[0].bracket < 1e-12
     assert box_phase.unpaired == []
+
+
+def test_follow_finds_the_cube_fold_from_a_birth_at_a_vertex():
+    # the atlas's cube cell (sweep 1/20 ... 19/20, no density in the diagonal window) lost the fold that ends the
+    # diagonal positions: born at (3 - sqrt 2)/7 where the waterplane passes a vertex, their second variation is
+    # zero to rounding 1e-6 past the birth, and the continuation gave up there.  The fold: Scheeffer X (171),
+    # 1 - 0.76230923886637546 at 30 digits (tests/test_scheeffer_x.py)
+    from fractions import Fraction
+
+    from symfloat.geometry.floating import box
+    from symfloat.solver import make_scene
+    from symfloat.solver.phase import _follow, _stable, _thresholds_between
+    from symfloat.solver.solve import body_scale
+    from symfloat.solver.symmetry import box_group
+    base = make_scene("cube", "1/2")
+    poly, group, scale = box(*base.dims), box_group(base.dims), body_scale(base)
+    birth = (3 - math.sqrt(2)) / 7
+    sa, sb = Fraction(birth - 1e-3), Fraction(birth + 1e-3)
+    born = _thresholds_between(poly, group, scale, _stable(make_scene("cube", sa)), _stable(make_scene("cube", sb)),
+                               float(sa), float(sb))
+    assert [(t.label, t.change) for t in born] == [("tilted, |u_x| = |u_y|", "stable above")]
+    ends = _follow(poly, group, scale, born, [1 / 20 + k / 10 for k in range(10)])
+    fold = 1 - 0.76230923886637546
+    assert [(t.label, t.change) for t in ends] == [("tilted, |u_x| = |u_y|", "stable below")]
+    assert abs(ends[0].density - fold) <= max(ends[0].bracket, 1e-13)

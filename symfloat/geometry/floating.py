@@ -344,6 +344,13 @@ def polygon_moments(points):
     return _polygon_moments([(zero + x, zero + y) for x, y in ring], zero)
 
 
+@functools.lru_cache(maxsize=64)
+def body_volume_centroid(poly):
+    """:func:`volume_centroid` of a whole body, kept for the bodies used last: every draught and floating
+    state of a scene asks for it again (a polyhedron is immutable, its precision part of it)."""
+    return volume_centroid(poly)
+
+
 @_at_body_precision
 def clip_below(poly, u, t):
     """The convex polyhedron ``{p in poly : u . p <= t}`` (``u`` normalised):
@@ -451,7 +458,7 @@ def draught(poly, u, s, tol=None):
     s = _num(s, dps)
     if not 0 < s < 1:
         raise ValueError("the density ratio s must lie strictly between 0 and 1")
-    total = volume_centroid(poly)[0]
+    total = body_volume_centroid(poly)[0]
     target = s * total
     heights = [_dot(u, p) for p in poly.vertices]
     lo, hi = min(heights), max(heights)
@@ -535,7 +542,7 @@ def floating_state(poly, u, s, tol=None, G=None):
     u = _unit(u, poly.dps)
     t, err = draught(poly, u, s, tol)
     sub = submerged(poly, u, t)
-    G = volume_centroid(poly)[1] if G is None else tuple(_num(x, poly.dps) for x in G)
+    G = body_volume_centroid(poly)[1] if G is None else tuple(_num(x, poly.dps) for x in G)
     wp = sub.waterplane
     potential = _dot(u, _sub(G, sub.centroid))
     return FloatingState(u, _num(s, poly.dps), t, err, sub.volume, sub.centroid, G, wp.area, wp.centroid,

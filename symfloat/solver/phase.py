@@ -119,6 +119,7 @@ def _locate_tracked(poly, group, scale, label, eq, s_in, s_out):
     by bisection on which vertices are above water."""
     u = np.array(eq.up)
     lo, step = s_in, (s_out - s_in) / 8
+    widest, before = abs(step), False
     while abs(step) > BRACKET / 2:          # continuation in s: a step is halved where the predicate fails
         mid = lo + step
         ok = abs(mid - s_in) < abs(s_out - s_in)
@@ -127,8 +128,13 @@ def _locate_tracked(poly, group, scale, label, eq, s_in, s_out):
             ok = ok and (eq.family == "ring" or np.linalg.norm(u_mid - u) <= 0.05)
         if ok:
             lo, u = mid, u_mid
+            if before and 2 * abs(step) <= widest:
+                # two steps in a row held: the step grows again (never beyond the first), so a branch that
+                # moved fast next to its birth (a pitchfork's square root) is not then walked in tiny steps
+                step *= 2
         else:
             step /= 2
+        before = ok
     hi = lo + 2 * step
     err = abs(hi - lo) / 2
     tilt = min(math.acos(min(1.0, abs(float(x)))) for x in u)     # from the nearest axis
@@ -474,14 +480,23 @@ def _follow(poly, group, scale, thresholds, densities) -> list[Threshold]:
         if not beyond:
             continue
         s_end = beyond[min(1, len(beyond) - 1)]
-        start = t.density + toward * max(4 * t.bracket, 1e-6)      # off a pitchfork's quartic flatness
-        ok, u0 = _tracked_stable(poly, group, np.array(t.up), start, t.label, "isolated", scale)
-        if not ok:              # next to a pitchfork Newton falls back onto the parent: look beside it
-            near = [loc.u for loc in _partners(poly, group, np.array(t.up), start, scale)
-                    if position_label(loc.u, "isolated") == t.label and min(loc.eigen()[0]) > 0]
-            if not near:
-                continue
-            u0 = near[0]
+        u0 = None
+        # off a pitchfork's quartic flatness; farther where the second variation is still zero to rounding
+        # there (born where the waterplane passes a vertex: lambda ~ (s - s*)^3, the cube's diagonal at (3 - sqrt 2)/7)
+        for offset in (max(4 * t.bracket, 1e-6), 1e-4, 1e-3):
+            start = t.density + toward * offset
+            if (s_end - start) * toward <= 0:
+                break
+            ok, u = _tracked_stable(poly, group, np.array(t.up), start, t.label, "isolated", scale)
+            if not ok:          # next to a pitchfork Newton falls back onto the parent: look beside it
+                near = [loc.u for loc in _partners(poly, group, np.array(t.up), start, scale)
+                        if position_label(loc.u, "isolated") == t.label and min(loc.eigen()[0]) > 0]
+                ok, u = bool(near), (near[0] if near else u)
+            if ok:
+                u0 = u
+                break
+        if u0 is None:
+            continue
         eq = _Tracked(tuple(u0), "isolated")
         value, err, tilt, note, u = _locate_tracked(poly, group, scale, t.label, eq, start, s_end)
         if abs(value - s_end) <= 2 * err + 1e-9:
