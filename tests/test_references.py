@@ -1,7 +1,8 @@
-"""Scheeffer's cross-references to his numbered equations, resolved to the displays that carry the numbers."""
+"""Cross-references of every source, resolved and checked against the derivations; point labels of the quotes."""
 from pathlib import Path
 
-from symfloat.report.references import references, references_markdown, tags
+from symfloat.report.labels import flagged, flags, points
+from symfloat.report.references import STATUSES, check, paragraphs, references, references_markdown, tags
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -9,17 +10,60 @@ ROOT = Path(__file__).resolve().parents[1]
 def test_tags_are_the_display_numbers():
     t = tags("scheeffer")
     # (2) closes the display "V_1 m > 0. \quad (2)" (line 60 of the transcription); (175) is the last number
-    assert t["2"] == 60 and "175" in t and "10a" in t
+    assert t["2"][0] == 60 and "175" in t and "10a" in t
     assert "8" not in t          # (8) is only referred to (tests/test_scheeffer_coverage.py, LACKING)
 
 
-def test_references_resolve_backwards_or_are_flagged():
+def test_eulers_paragraphs_include_those_set_after_a_plate_number():
+    # "Tab. IX. §. 217. Ex hac ipsa ..." opens line 105 of the transcription
+    assert paragraphs("euler")["217"][0] == 105 and paragraphs("euler")["192"][0] == 7
+
+
+def test_references_resolve_or_are_flagged():
     refs = references("scheeffer")
     by = {(r["line"], r["number"]): r for r in refs}
-    assert by[(88, "7")]["status"] == "resolved" and by[(88, "8")]["status"] == "untagged"   # "(s. 7 u. 8)"
-    assert by[(723, "73")]["target_line"] == 721                                              # "aus 73 auch"
-    assert all(r["status"] in ("resolved", "forward", "untagged") for r in refs)
-    assert all((r["target_line"] is None) == (r["status"] == "untagged") for r in refs)
+    assert by[(88, "7")]["status"] in ("resolved", "plausible") and by[(88, "8")]["status"] == "suspect"  # "(s. 7 u. 8)"
+    assert by[(723, "73")]["target_line"] == 721                                                         # "aus 73 auch"
+    assert all(r["status"] in STATUSES for r in refs)
+    assert all(r["target_line"] is not None or r["status"] in ("suspect", "wrong") for r in refs)
+
+
+def test_the_booked_wrong_references_are_found_as_wrong():
+    # each is an erratum of a derivation module: VI.B, VI.F, VII, IX.C, X
+    wrong = {(r["line"], r["number"]) for r in references("scheeffer") if r["status"] == "wrong"}
+    assert wrong == {(705, "55"), (1068, "55"), (1279, "102a"), (1735, "164"), (1817, "104")}
+    assert check([r for s in ("scheeffer", "euler", "graefe") for r in references(s)]) == []
+
+
+def test_eulers_paragraph_references():
+    # "(§. 222.)" in §225 (line 183) and "quam §. 215. considerauimus" in §236 (line 272)
+    refs = {(r["line"], r["number"]): r for r in references("euler")}
+    assert refs[(183, "222")]["target_line"] == 172 and refs[(272, "215")]["target_line"] == 99
+    assert all(r["status"] == "resolved" for r in refs.values())
+    # the heading of §221 set at the end of line 166 is no reference; nor is "acceptis." before a page number
+    assert (166, "221") not in refs and not any(n == "114" for _, n in refs)
+
+
+def test_a_note_that_reads_a_reference_otherwise_without_an_erratum_fails_the_self_check():
+    r = {"source": "x", "line": 1, "reference": "nach 5", "reason": "UNBOOKED: x/y says \"'5' means (4)\""}
+    assert check([r]) and not check([dict(r, reason="erratum x/y")])
+
+
+def test_a_made_up_label_in_a_quote_is_flagged():
+    text = ("## I.\n\nEs sei (Fig. 1) A B die Wasserlinie. Dann ist $A B = 2 a$ und $Q_7 B = a$.\n\n"
+            "## II.\n\nNun ist $A B = b$.\n")
+    starts = [(0, "opening"), (0, "I"), (text.index("## II"), "II")]
+    quote = text.index("Dann ist"), text.index("## II"), "probe"
+    found = flagged(text, starts, [quote])
+    assert [(f["label"], f["why"]) for f in found] == [("Q7", "never introduced")]   # A, B come with "Fig. 1"
+    later = text.index("Nun ist"), len(text), "later"
+    assert flagged(text, starts, [later]) == []          # A B carried over from the section before
+    assert points("S_1 O H_2") == ("S1", "O", "H2") and points("S₁") == ("S1",)
+
+
+def test_labels_flagged_in_the_sources():
+    # "v_3 + v_4 = E F" in I (line 72): E and F are named only in II (Fig. 4, line 88)
+    assert {(f["line"], f["label"]) for f in flags("scheeffer")} >= {(72, "E"), (72, "F")}
 
 
 def test_references_report_is_current():

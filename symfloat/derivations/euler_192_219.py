@@ -476,6 +476,28 @@ d.quote("moment-PQ-increasing", "§209", r"$= I + m^2 (K - I)$",
         reading=(PS, Ik + m ** 2 * (K - Ik)),
         note=claim("when K > I the moment about PQ is I + m²(K − I): it grows from I about AB (the least) to K "
                    "about EF (the greatest)."))
+d.quote("PQ-exceeds-AB", "§209", "Quare momentum respectu axis obliqui PQ maius est, quam momentum respectu axis "
+        "longitudinalis AB; atque hoc momentum continuo crescat, quoad axis PQ in latitudinalem EF incidat.",
+        reading=(sp.Matrix([PS - Ik, sp.Derivative(Ik + m ** 2 * (K - Ik), m)]),
+                 sp.Matrix([m ** 2 * (K - Ik), 2 * m * (K - Ik)])),
+        note=claim("the moment about PQ exceeds I by m²(K − I) and grows with m (derivative 2m(K − I)) until PQ "
+                   "falls on EF (m = 1): both positive for K > I and 0 < m ≤ 1."))
+d.quote("AB-least-EF-greatest", "§209", "omnium est minimum, momentum vero respectu axis latitudinalis omnium maximum.",
+        reading=(sp.Matrix([PS - Ik, K - PS]),
+                 sp.Matrix([m ** 2 * (K - Ik), n ** 2 * (K - Ik)])),
+        note=claim("I about AB is the least moment and K about EF the greatest: the moment about PQ is I + m²(K − I) "
+                   "= K − n²(K − I), n² = 1 − m², both differences non-negative for K > I."))
+d.quote("equal-stability-all-axes", "§210", "Quare si nauis eius modi habeat figuram, ut respectu binorum axium "
+        "principalium aequa sit stabilis, tum eandem stabilitatem habebit respectu aliis cuiusvis axis horizontalis.",
+        reading=(sp.Subs(Ik + m ** 2 * (K - Ik), K, Ik), Ik),
+        note=claim("equal moments about the principal axes (K = I) make the moment, hence the stability, the same "
+                   "about every horizontal axis through C."))
+d.quote("equal-moments-any-figure", "§210", "Eadem vero proprietas locum habebit si sectio aquae fuerit quaecunque "
+        "alia figura, dummodo ea ita sit comparaata, ut eius momenta respectu binorum axium principalium sint inter "
+        "se aequalia.",
+        reading=(sp.Subs(n ** 2 * IT + m ** 2 * KT, KT, IT), IT),
+        note=claim("for any figure with equal principal moments (K = I) the moment n²I + m²K about every axis "
+                   "through C is I, since n² + m² = 1."))
 
 # ================================================================ §212 square
 Dsq, Isq, Ksq, Psq = sp.symbols("D_{sq} I_{sq} K_{sq} P_{sq}")

@@ -158,6 +158,11 @@ d.quote("lemma-statement", "§1 tetrahedron lemma",
         r"Tetraeders ist.",
         lost="the statement of the lemma and the start of §1 (with Fig. 2) are missing; only the end of "
              "the statement survives. Its content is restated at the end of the proof (see 'lemma-conclusion').")
+d.quote("nine-triangles", "§1 prismatoid faces", "die untere fünf Seiten und wird der Mantel demnach von neun "
+        "Dreiecken gebildet.",
+        reading=(sp.Add(4, 5, evaluate=False), 9),
+        note="Fig. 1: one lateral triangle per side of either base, the upper base with four sides and the lower "
+             "with five")
 d.quote("parallelogram-half-triangle", "§1 tetrahedron lemma",
         r"ist halb so gross als das Dreieck  $ABE$",
         reading=(Pt, Tri / 2))

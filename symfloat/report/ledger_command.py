@@ -6,12 +6,13 @@ hand readings against the automatic ones (:mod:`symfloat.report.readings`); ``--
 ``docs/coverage.md`` (and ``docs/readings.md``); ``--update-baseline`` rewrites the baselines
 ``docs/coverage-baseline.json`` (and ``docs/readings-baseline.json``) to the current lists and says
 how many entries left and came.  Every run checks the ``same_as`` links of repeated errata
-(:mod:`symfloat.report.repeats`); ``--write`` also writes the unlinked repeats, ``docs/repeats.json``, and Scheeffer's
-cross-references to his equations, resolved, ``docs/references.md`` (:mod:`symfloat.report.references`).
+(:mod:`symfloat.report.repeats`); ``--write`` also writes the unlinked repeats, ``docs/repeats.json``, and the
+cross-references of every source, resolved and checked, with the point labels of the quotes,
+``docs/references.md`` (:mod:`symfloat.report.references`, :mod:`symfloat.report.labels`).
 
 Exit status 1 when a span is unaccounted (each is listed: ``pending`` when the baseline lists it,
 ``NEW`` otherwise), when a reading differs from the print without a declaration, or when a waiver
-is stale, or a repeat link does not hold; 2 on an unknown source.
+is stale, a repeat link does not hold, or a reference the derivations call wrong has no erratum; 2 on an unknown source.
 """
 from __future__ import annotations
 
@@ -23,7 +24,7 @@ from ..model.source import SOURCES
 from ..project import in_project
 from .files import write_if_changed
 from .ledger import LedgerError, baseline_keys, ledger, ledger_json, ledger_markdown, ledger_table
-from .references import references_markdown
+from .references import check, references, references_markdown
 from .repeats import candidates_text, link_problems
 
 __all__ = ["run", "docs_path", "load_baseline", "baseline_text"]
@@ -86,6 +87,10 @@ def run(args) -> int:
     for msg in problems:
         print(f"symfloat: repeated erratum: {msg}", file=sys.stderr)
     failed |= bool(problems)
+    wrong = check([r for s in sources for r in references(s)])
+    for msg in wrong:
+        print(f"symfloat: wrong reference without an erratum: {msg}", file=sys.stderr)
+    failed |= bool(wrong)
     if args.write:
         write_if_changed(docs_path("coverage.md"), ledger_markdown())
         write_if_changed(docs_path("repeats.json"), candidates_text())
