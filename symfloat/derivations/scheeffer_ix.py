@@ -138,6 +138,8 @@ d.step("touch-limit", Eq(tla, PW(2 * b * (1 - s) / a, 2 * b * s / a)), "definiti
 d.step("touch-limit-c", Eq(tlc, PW(2 * b * (1 - s) / c, 2 * b * s / c)), "definition", result=tlc)
 
 d.quote("122", "(122)", r"$$\frac{T_1}{V_1} - e_1 > 0 \quad (122)$$", reading=(T1 / V1 - e1, GMa))
+d.quote("122-words", "(122)", "Nach dem Duhamelschen Satze schwimmt es in dieser Lage stabil, wenn",
+        reading=(sp.sign(GMa), sp.sign(T1 / V1 - e1)), note="the metacentric height of the upright box is (122)'s margin")
 d.quote("T1", "IX.A", r"$$T_1 = \frac{c a^2}{12}$$", reading=(T1, c * a ** 2 / 12),
         erratum=Erratum("transcription", "high", r"T_1 = \frac{c a^3}{12}",
                         "the moment of the rectangle a x c about its axis parallel to c is c a^3/12; the next "
@@ -163,6 +165,16 @@ d.quote("all-directions-unstable", "IX.A", "so ist das Gleichgewicht der aufrech
                                                                     (c / b) ** 2 - 6 * s * (1 - s)])),
         note="under (124) the metacentric height about the a-axis is negative, and the one about the c-axis is smaller "
              "still (c > a): every horizontal axis")
+om_ = sp.Symbol("omega", positive=True)
+d.domain[om_] = (0.05, 1.5)
+_u, _v = x_ * sp.cos(om_) + y_ * sp.sin(om_), y_ * sp.cos(om_) - x_ * sp.sin(om_)
+d.quote("47-two-directions", "IX.A",
+        r"In Abschnitt V wurde nun gezeigt (47), dass im ersten Drehungsgebiet eine zweite (stabile) "
+        r"Gleichgewichtslage nur dann möglich ist, wenn entweder  $\omega = 0$  oder  $\omega = \frac{\pi}{2}$  ist",
+        reading=(sp.Integral(_u * _v, (x_, -a / 2, a / 2), (y_, -c / 2, c / 2)),
+                 a * c * (c ** 2 - a ** 2) / 24 * sp.sin(2 * om_)),
+        note="the second condition (32) for the a x c base turned by omega: int u v df = a c (c^2 - a^2)/24 sin 2 omega, "
+             "for c > a zero only at omega = 0, 90 deg in 0 <= omega < 180 deg; (47) is the right reference")
 d.quote("Tx-Ty-excluded", "IX.A",
         r"Die dritte Lösung der Bedingungsgleichung (46)  $T_x = T_y$  ist hier ausgeschlossen, da  $c > a$  "
         r"vorausgesetzt ist.", reading=(T11 - T1, a * c * (c ** 2 - a ** 2) / 12),
@@ -184,6 +196,14 @@ d.quote("127", "(127)",
         r"\text{also} \quad T_1^1 > T_1 \end{array} \quad (127)$$",
         reading=(sp.Matrix([T11, T1, T11 - T1]), sp.Matrix([a * c ** 3 / 12, c * a ** 3 / 12, a * c * (c - a) * (c + a) / 12])),
         note="the difference is positive for c > a: the oblique position is stable in every direction")
+d.quote("125-stable", "IX.A", "Das durch Gleichung 125 bestimmte schiefe Gleichgewicht ist daher stabil.",
+        reading=(sp.cos(phi1) * Dp, a * c * (c - a) * (c + a) / 12),
+        note="the Duhamel margin of the oblique position times cos phi_1 is T_1^1 - T_1 > 0 (c > a)")
+d.quote("128-from-125", "IX.A",
+        "so kann das Parallelepiped sich auch um eine mit  $a$  parallele Achse drehen und wird bei einem "
+        "Drehungswinkel  $\\varphi_1^1$  eine Gleichgewichtslage erreichen, welche durch die Gleichung (s. 125)",
+        reading=(tan2c, sp.Subs(12 * (b / a) ** 2 * s * (1 - s) - 2, a, c)),
+        note="(125) with c for a, the edge across the new axis: the reference is right")
 d.quote("128", "(128)",
         r"$$\operatorname{tg}^2 \varphi_1^1 = 12 \left(\frac{b}{c}\right)^2 \cdot s (1 - s) - 2 \quad (128)$$",
         reading=(tan2c, 12 * (b / c) ** 2 * s * (1 - s) - 2))
@@ -195,6 +215,10 @@ d.quote("129", "(129)",
         r"\right\} \quad (129)$$",
         reading=(PWM(sp.Matrix([2 * b * (1 - s) / a, 2 * b * (1 - s) / c]), sp.Matrix([tla, tlc])), sp.Matrix([tla, tlc])),
         note="read as the bounds: tan of the tilt at which the top face reaches the water (s > 1/2)")
+d.quote("129-words", "(129)",
+        "Damit keine der beiden Grundflächen den Wasserspiegel durchschneide, muss, wie leicht zu erkennen ist,",
+        reading=(PWM(sp.Matrix([2 * b * (1 - s) / a, 2 * b * (1 - s) / c]), sp.Matrix([tla, tlc])), sp.Matrix([tla, tlc])),
+        note="as (129): the tilts at which the top face reaches the water")
 d.quote("129-squared", "IX.A", r"$$\operatorname{tg}^2 \varphi_1 \leq 4 \cdot \left(\frac{b}{a}\right)^2 (1 - s)^2$$",
         reading=(4 * (b / a) ** 2 * (1 - s) ** 2, PW(tla ** 2, 4 * (b / a) ** 2 * (1 - s) ** 2)))
 d.quote("130-pre", "IX.A",
@@ -217,12 +241,22 @@ d.quote("131", "(131)",
 d.quote("131-mirror", "IX.A", r"$$2s(3-4s).$$", reading=as_printed(lambda: (2 * s * (3 - 4 * s), rho_s.subs(s, 1 - s))),
         note="1 - s for s in the lower bound (the bottom face reaches the water first for s < 1/2)")
 LOW = PW(rho_s, 2 * s * (3 - 4 * s))
+d.quote("131-unchanged", "IX.A", r"dann bleibt  $6s \cdot (1-s)$  ungeändert",
+        reading=as_printed(lambda: ((6 * s * (1 - s)).subs(s, 1 - s), 6 * s * (1 - s))))
 d.quote("132a", "(132a)", r"$$\text{wenn} \quad \left(\frac{a}{b}\right)^2 > 6s(1-s), \quad (132a)$$",
         reading=((a / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GMa))
+d.quote("132a-words", "(132a)",
+        "Ein rechtwinkliges Parallelepipèd schwimmt in aufrechter Lage ( $c > a$  die horizontalen Kanten,  $b$  die "
+        "vertikale) stabil,", reading=(sp.sign(12 * s / b * GMa), sp.sign((a / b) ** 2 - 6 * s * (1 - s))),
+        note="as (132a)")
 d.quote("132b", "(132b)",
         r"$$6s(1-s) > \left(\frac{a}{b}\right)^2 \geq \begin{cases} 2(1-s)(4s-1) & \left(\text{für } s > \frac{1}{2}\right) "
         r"\\ 2s(3-4s) & \left(\text{für } s < \frac{1}{2}\right) \end{cases} \quad (132b)$$",
         reading=(sp.Matrix([6 * s * (1 - s) - (a / b) ** 2, (a / b) ** 2 - LOW]), sp.Matrix([-12 * s / b * GMa, Q130])))
+d.quote("132b-words", "(132b)",
+        "in aufrechter Lage labil, dagegen in schiefer Lage stabil (Drehungsachse  $\\parallel c$ ) wenn",
+        reading=(sp.Matrix([6 * s * (1 - s) - (a / b) ** 2, (a / b) ** 2 - LOW]), sp.Matrix([-12 * s / b * GMa, Q130])),
+        note="as (132b): upright margin negative, the tilt within the first region")
 d.quote("132c", "(132c)",
         r"$$6s(1-s) > \left(\frac{c}{b}\right)^2 \geq \begin{cases} 2(1-s)(4s-1) & \text{für } s > \frac{1}{2} \\ 2s & "
         r"(3-4s) \text{ „ } s < \frac{1}{2} \end{cases} \quad (132c)$$",
@@ -230,6 +264,10 @@ d.quote("132c", "(132c)",
         note="'2s & (3-4s) „' is the scan's table of 2s(3-4s) for s < 1/2 (the ditto mark „ for 'für')")
 
 # ==== B. the second region ===========================================================================
+d.quote("132c-words", "(132c)",
+        "und in aufrechter und schiefer Lage labil\\*) (Drehungsachse  $\\parallel a$ ) wenn",
+        reading=(sp.Matrix([6 * s * (1 - s) - (c / b) ** 2, T1 - T11]), sp.Matrix([-12 * s / b * GMc, -sp.cos(phi1) * Dp])),
+        note="upright margin about the a-axis negative, and the oblique position's margin negative (128-unstable)")
 d.step("sigma", Eq(sg, 1 - s), "definition", result=sg, note="the text's sigma = 1 - s")
 d.step("n", Eq(n, (a / b) ** 2), "definition", result=n, note="the text's n = (a/b)^2")
 d.step("rho", Eq(rho, 2 * (1 - s) * (4 * s - 1)), "definition", result=rho, note="(161a)")
@@ -334,6 +372,9 @@ d.quote("133-first", "IX.B",
                         "leading 3 (medium: the print may also have dropped it). The '= 0' is the equilibrium condition.",
                         corrected_reading=(3 * M3 / b * z ** 3, sp.sin(phi_z) * Fz)),
         note="x/b = z; phi_2 the tilt belonging to z by (134)")
+d.quote("m3-zero", "IX.B", "In der Gleichgewichtslage muss  $m_3 = 0$  sein",
+        reading=(sp.Derivative(Ez, phi), sg / (1 - sg) * h_dir.dot(S3phi)),
+        note="the potential's slope is (sigma/s) m_3: an equilibrium of the second region is a zero of m_3")
 d.quote("133", "(133)",
         r"$$\frac{3 m_3}{b} \cdot \frac{z^3}{\sin \varphi_2} = z^4 - \frac{3}{2} \cdot z^3 + 3 \left(\frac{a}{b}\right)^2 "
         r"(1-s) z - 4 \left(\frac{a}{b}\right)^2 (1-s)^2 = 0 \quad (133)$$",

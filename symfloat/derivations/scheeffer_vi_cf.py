@@ -178,7 +178,7 @@ d.quote("square-moments", "VI.C",
         reading=(sp.Matrix([T1, F1]), sp.Matrix([a ** 4 / 12, a ** 2])))
 d.quote("OB", "VI.C", r"$\text{OB} = \frac{a}{2} \sqrt{2}$", reading=(OB, a / 2 * sp.sqrt(2)))
 d.quote("BG-um", "VI.C", r"$\text{BG} = u_m$",
-        reading=(um, sp.Max(*(a / 2 * sp.sqrt(2) * sp.sin(pi / 4 + om + k * pi / 2) for k in range(4)))),
+        reading=(sp.Max(*(a / 2 * sp.sqrt(2) * sp.sin(pi / 4 + om + k * pi / 2) for k in range(4))), um),
         note="BG: the distance of the corner B (at OB from O, 45 deg + omega from EF) from the axis EF, the largest "
              "signed distance of the four corners on the sinking side for 0 <= omega < 45 deg")
 d.quote("u-m", "(74)", r"$$u_m = \frac{a}{2} \sqrt{2} \cdot \sin(45^\circ + \omega) \quad (74)$$",
