@@ -398,6 +398,15 @@ d.quote("137", "(137)", r"$$F'(z) = 4 z^3 - \frac{9}{2} z^2 + 3 \sigma n \quad (
         reading=(sp.Derivative(F_def, z), 4 * z ** 3 - sp.Rational(9, 2) * z ** 2 + 3 * sg * n))
 d.quote("138", "(138)", r"$$F''(z) = 3 z (4 z - 3) \quad (138)$$", reading=(sp.Derivative(F_def, (z, 2)), 3 * z * (4 * z - 3)))
 d.quote("F-at-0", "IX.B", r"$$\text{,, } z = 0 \quad F(z) = -4 \sigma^2 n$$", reading=(sp.Subs(Fz, z, 0), -4 * sg ** 2 * n))
+d.quote("two-ranges", "IX.B",
+        "so hat die Gleichung  $F(z) = 0$  in diesen beiden Gebieten wenigstens je eine reelle Wurzel.",
+        reading=(sp.Matrix([sp.sign(sp.Subs(Fz, z, 0)), sp.Limit(Fz / z ** 4, z, -sp.oo), sp.Limit(Fz / z ** 4, z, sp.oo)]),
+                 sp.Matrix([-1, 1, 1])),
+        note="F(0) = -4 sigma^2 n < 0 and F grows like z^4 at both ends: a sign change on either side of 0")
+d.quote("minimum-negative", "IX.B", "—  $\\infty$  und 0 ein Minimum.",
+        reading=(sp.Matrix([sp.sign(sp.Subs(sp.Derivative(Fz, z), z, 0)), sp.Limit(sp.Derivative(Fz, z) / z ** 3, z, -sp.oo)]),
+                 sp.Matrix([1, 4])),
+        note="F'(0) = 3 sigma n > 0 while F' ~ 4 z^3 -> -infinity: F' vanishes on (-infinity, 0), a minimum of F")
 d.quote("F1-at-0", "IX.B", r"Da  $F'(0) = 3 \sigma n$ , also positiv ist",
         reading=(sp.Subs(sp.Derivative(Fz, z), z, 0), 3 * sg * n))
 d.quote("inflections", "IX.B",
@@ -411,6 +420,21 @@ d.quote("F1-stays-positive", "IX.B",
                  (z - sp.Rational(3, 4)) ** 2 * (4 * z + sp.Rational(3, 2))),
         note="F'(z) - F'(3/4) = (z - 3/4)^2 (4z + 3/2) >= 0 for z >= 0: F' >= F'(3/4) beyond the inflection")
 F1_34 = sp.diff(F_def, z).subs(z, sp.Rational(3, 4))
+def _count(sv, nv, lo, hi=None):
+    """How many real roots of (136) at s = sv, n = nv lie above lo (and not above hi): exact root isolation."""
+    roots = sp.Poly(quartic.subs({n: nv, sg: 1 - sv}), z).real_roots()
+    steps = [(1 + sp.sign(r_ - lo)) / 2 - (0 if hi is None else (1 + sp.sign(r_ - hi)) / 2) for r_ in roots]
+    return sp.Add(*steps, evaluate=False)
+
+
+S_LOW = sp.Rational(7, 10)                # s <= 23/32: sigma = 3/10, rho = 27/25
+d.quote("monotone-one", "IX.B",
+        "In diesem Falle nimmt  $F(z)$  beständig zu, hat also zwischen  $z = 0$  und  $z = \\infty$  auch nur eine "
+        "reelle Wurzel.", reading=(_count(sp.Rational(73, 100), 2, 0), 1),
+        note="read at s = 73/100, n = 2 (sigma n = 0.54 >= 9/32, F'(3/4) > 0): one real root z > 0")
+d.quote("F1-34-ref", "IX.B", "Dieser Fall tritt ein, wenn  $F'(\\frac{3}{4}) \\geq 0$ , also (s. 137)",
+        reading=(sp.Subs(sp.Derivative(Fz, z), z, sp.Rational(3, 4)), 3 * (sg * n - sp.Rational(9, 32))),
+        note="F'(z) of (137) at z = 3/4: the reference is right")
 d.quote("139-pre", "IX.B",
         r"$$4 \left(\frac{3}{4}\right)^3 - \frac{9}{2} \cdot \left(\frac{3}{4}\right)^2 + 3 \sigma n \geq 0$$",
         reading=(4 * sp.Rational(3, 4) ** 3 - sp.Rational(9, 2) * sp.Rational(3, 4) ** 2 + 3 * sg * n, F1_34))
@@ -421,6 +445,21 @@ d.quote("140", "(140)",
         reading=as_printed(lambda: (sp.Rational(23, 32) - s, sg - sp.Rational(9, 32),
                  sp.diff(quartic.subs(n, 1), z).subs(z, sp.Rational(3, 4)) / 3)),
         note="F'(3/4) at n = 1 over 3; F'(3/4) grows with n, so n >= 1 only helps")
+d.quote("n-least", "IX.B",
+        "ist der kleinste Wert, den  $\\left(\\frac{a}{b}\\right)^2 = n$  haben kann,  $n = 1$  und die Bedingung 139 "
+        "ist sicher erfüllt, wenn sie für diesen kleinsten Wert erfüllt ist",
+        reading=(sp.Derivative(3 * (sg * nu - sp.Rational(9, 32)), nu), 3 * sg),
+        note="a >= b gives n >= 1; the margin of (139) grows with n (slope 3 sigma > 0)")
+d.quote("140-one-root", "IX.B",
+        "Unter der Voraussetzung 140 hat also die Gleichung  $F(z) = 0$  zwischen  $z = 0$  und  $z = \\infty$  nur eine "
+        "reelle Wurzel.", reading=(_count(S_LOW, 1, 0), 1),
+        note="read at s = 7/10 <= 23/32 and the least n = 1: one real root z > 0")
+d.quote("root-in-region-if", "IX.B",
+        "Diese liegt in dem hier in Betracht kommenden Gebiet (zwischen  $z = 2\\sigma$  und  $z = 1$ ) wenn  $F(z)$  für  "
+        "$z = 2\\sigma$  negativ und für  $z = 1$  positiv ist.",
+        reading=(sp.Matrix([sp.sign(F2s.subs({sg: 1 - S_LOW, s: S_LOW, a: b})), sp.sign(F1v.subs({sg: 1 - S_LOW, s: S_LOW, a: b})),
+                            _count(S_LOW, 1, 2 * (1 - S_LOW), 1)]), sp.Matrix([-1, 1, 1])),
+        note="read at s = 7/10, n = 1 (< rho = 27/25): F(2 sigma) < 0 < F(1) and one root in (2 sigma, 1]")
 d.quote("140-steps", "IX.B", r"$$\text{oder } 1 - s - \frac{9}{32} \geq 0$$", reading=(1 - s - sp.Rational(9, 32), sg - sp.Rational(9, 32)))
 d.quote("141", "(141)",
         r"$$\text{oder } F(2\sigma) = 2(1-s)^2 \cdot \left\{ \left(\frac{a}{b}\right)^2 - 2(1-s)(4s-1) \right\} \quad (141)$$",
@@ -433,6 +472,19 @@ d.quote("142", "(142)",
         reading=(F1v, (1 - s) * (4 * s - 1) * ((a / b) ** 2 - 1 / (2 * (1 - s) * (4 * s - 1)))))
 d.quote("142-automatic", "IX.B", r"Dann ist aber  $\frac{1}{2(1-s)(4s-1)} < 1$",
         reading=(1 - 1 / rho, (rho - 1) / rho), note="rho > 1 (forced by n >= 1 and n < rho) makes 1/rho < 1 <= n")
+d.quote("F2s-negative", "IX.B",
+        r"Die Bedingung  $F(2\sigma) < 0$  kann nur erfüllt werden (141), wenn  $\left(\frac{a}{b}\right)^2 < "
+        r"2(1-s)(4s-1)$  ist.", reading=(sp.Subs(Fz, z, 2 * sg), 2 * sg ** 2 * (n - rho)),
+        note="(141): F(2 sigma) = 2 sigma^2 (n - rho), negative exactly when n < rho")
+d.quote("143-words", "(143)",
+        r"Für  $s \leq \frac{23}{32}$  hat  $F(z) = 0$  eine reelle Wurzel (zwischen  $z = 2\sigma$  und  $z = 1$ ) d. h. "
+        r"im zweiten Drehungsgebiet giebt es eine Gleichgewichtslage, wenn",
+        reading=(_count(S_LOW, 1, 2 * (1 - S_LOW), 1), 1), note="read at s = 7/10, n = 1 < rho = 27/25")
+d.quote("143-stable", "(143)",
+        r"Und zwar ist das Gleichgewicht (zunächst für die Drehungsachse) stabil, da  $F(z)$  aus dem Negativen in's "
+        r"Positive gehend gleich Null wird.",
+        reading=(sp.Subs(sp.Derivative(Ez, phi), phi, phi_z), sg / (1 - sg) * b * sp.sin(phi_z) * Fz / (3 * z ** 3)),
+        note="the potential's slope has the sign of F, and z grows with phi_2: F from - to + is a minimum (stable)")
 d.quote("143", "(143)", r"$$\left(\frac{a}{b}\right)^2 < 2(1-s)(4s-1) \quad (143)$$",
         reading=(rho_s - (a / b) ** 2, -F2s / (2 * sg ** 2)),
         note="F(2 sigma) < 0 < F(1) with F increasing: one root in (2 sigma, 1), where F goes from - to +")
@@ -442,6 +494,26 @@ d.quote("144", "(144)", r"$$\left(\frac{a}{b}\right)^2 > 2(1-s)4s-1 \quad (144)$
                         "the converse of (143) needs the same bound 2(1-s)(4s-1) (F(2 sigma) > 0 by (141)); the scan "
                         "lost the parentheses around 4s - 1, which changes the bound (e.g. by 1 - 2(1-s) at any s).",
                         corrected_reading=((a / b) ** 2 - rho_s, F2s / (2 * sg ** 2))))
+d.quote("144-words", "(144)",
+        r"Umgekehrt hat  $F(z) = 0$  keine reelle Wurzel zwischen  $z = 2\sigma$  und  $z = 1$ , wenn",
+        reading=(_count(S_LOW, sp.Rational(3, 2), 2 * (1 - S_LOW), 1), 0),
+        note="read at s = 7/10, n = 3/2 > rho = 27/25")
+d.quote("144-first-region", "(144)",
+        r"d. h. wenn im ersten Drehungsgebiet, die aufrechte Lage eingeschlossen, ein stabiles Gleichgewicht "
+        r"existiert\*).", reading=(6 * s * (1 - s) - rho, 2 * (1 - s) ** 2),
+        note="rho < 6 s (1 - s) always: n > rho is either n > 6 s(1-s) (upright stable, 132a) or "
+             "6 s(1-s) > n >= rho (oblique stable, 132b)")
+d.quote("one-or-three", "IX.B",
+        r"in diesem letzteren Falle hat  $F(z)$  zwischen  $z = 0$  und  $z = \infty$  ein Maximum und ein Minimum und "
+        r"daher  $F(z) = 0$  eine oder drei reelle Wurzeln.",
+        reading=(sp.Matrix([_count(sp.Rational(73, 100), sp.Rational(251, 250), 0), _count(sp.Rational(73, 100),
+                                                                                         sp.Rational(51, 50), 0)]),
+                 sp.Matrix([3, 1])),
+        note="read at s = 73/100 (> 23/32) and n = 251/250, 51/50 (sigma n < 9/32): three and one positive roots")
+d.quote("third-term", "(145)", r"so ist darin  $z > 2\sigma$ , also um so mehr  $z > \frac{2}{3} \cdot 2\sigma$  und "
+        r"das dritte Glied folglich positiv.",
+        reading=(sp.Subs(3 * sg * n * (z - sp.Rational(2, 3) * 2 * sg), z, 2 * sg), 2 * sg ** 2 * n),
+        note="at the left end z = 2 sigma the third term of (145) is already 2 sigma^2 n > 0, and it grows with z")
 d.quote("145", "(145)",
         r"$$F(z) = z^4 - \frac{3}{2}z^3 + \sigma n 3z - 4\sigma = z^4 - \frac{3}{2}z^3 + 3\sigma n(z - \frac{2}{3} \cdot 2\sigma) "
         r"\quad (145)$$",
@@ -616,6 +688,27 @@ d.quote("positive-whole-region", "IX.B", r"so ist  $F(z)$  für  $n > n_1$  in d
                         "neighbourhood of the minimum).",
                         corrected_reading=(sp.Matrix([NREG, NRIGHT, SGN1]), sp.Matrix([1, 0, 1]))),
         note="read at s = 73/100, n = 51/50: roots of F in z > 2 sigma, roots right of its maximum, sign(n - n_1)")
+Z_MAX3 = next(r_ for r_ in sp.Poly(sp.diff(quartic, z).subs({n: N_THREE, sg: 1 - S_CT}), z).real_roots()
+              if 0 < r_ < sp.Rational(3, 4))
+d.quote("two-below-n1", "IX.B", r"für  $n < n_1$  dagegen muss  $F(z) = 0$  zwei Wurzeln haben",
+        reading=(sp.Matrix([_above(_roots136(N_THREE), 2 * (1 - S_CT)), _above(_roots136(N_THREE), Z_MAX3)]),
+                 sp.Matrix([2, 2])),
+        erratum=Erratum("claim", "medium",
+                        r"\text{für } n < n_1 \text{ hat } F(z) = 0 \text{ rechts von seinem Maximum zwei Wurzeln, "
+                        r"links davon eine weitere, wenn } F(2\sigma) < 0",
+                        "The same over-generalisation as for n > n_1 ('in dem ganzen Gebiet'): right of the maximum "
+                        "F has two roots for n < n_1, but left of it F(2 sigma) = 2 sigma^2 (n - rho) < 0 for n < rho "
+                        "adds a third in the region. At s = 73/100, n = 251/250 (< n_1 = 1.00631 < rho = 1.0368) the "
+                        "exact roots of (136) above 2 sigma = 0.54 are 0.5878, 0.7757, 0.8724: three, two of them right "
+                        "of the maximum. Table (161), case II, counts three.",
+                        corrected_reading=(sp.Matrix([_above(_roots136(N_THREE), 2 * (1 - S_CT)),
+                                                      _above(_roots136(N_THREE), Z_MAX3)]), sp.Matrix([3, 2])),
+                        same_as="scheeffer-ix/positive-whole-region"),
+        note="read at s = 73/100, n = 251/250: roots of F in z > 2 sigma, and right of its maximum")
+d.quote("maximum-reverse", "IX.B", "Liegt die Doppelwurzel im Maximum, so ist es umgekehrt.",
+        reading=(sp.Derivative(quartic.subs(n, nu), nu), 3 * sg * (z - sp.Rational(2, 3) * 2 * sg)),
+        note="F grows with n on z > 4 sigma/3: a double root at a maximum splits into two roots for n > n_2 and "
+             "vanishes for n < n_2 (read as the monotonicity in n it rests on)")
 d.quote("t-of-s", "IX.B", r"$$\text{Nach 147 ist } t = \frac{119 - 128s}{27},$$", reading=as_printed(lambda: (t_s, (119 - 128 * s) / 27)))
 d.quote("7-3t", "IX.B", r"$$7 - 3t = 7 - \frac{119 - 128s}{9} = \frac{128s - 56}{9}$$",
         reading=as_printed(lambda: (7 - 3 * t_s, 7 - (119 - 128 * s) / 9, (128 * s - 56) / 9)))
