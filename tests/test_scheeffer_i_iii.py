@@ -45,10 +45,11 @@ def test_verdicts_and_errata(report):
         ("scheeffer-i-iii/duhamel-18", "transcription", "high"),
         ("scheeffer-i-iii/fig3-labels", "transcription", "high"),
         ("scheeffer-i-iii/stable-V1m", "transcription", "high"),
-        ("scheeffer-i-iii/labile-V1m", "transcription", "high")}
+        ("scheeffer-i-iii/labile-V1m", "transcription", "high"),
+        ("scheeffer-i-iii/GL-parallel", "transcription", "medium")}
     # (1) is not displayed in the transcription: only "(1" survives
     assert [k for k, v in verdicts.items() if v == "unverifiable"] == ["equilibrium"]
-    assert sum(v == "verified" for v in verdicts.values()) == len(verdicts) - 5
+    assert sum(v == "verified" for v in verdicts.values()) == len(verdicts) - 6
 
 
 def _formula(report, name):
@@ -63,6 +64,9 @@ def _formula(report, name):
     ("stable-V1m", 130, "transcription"),
     # line 134: "so ist V_1 m und daher" - the "< 0" of the labile case is lost
     ("labile-V1m", 134, "transcription"),
+    # line 50: "Zieht man nun SA perp S_2M und GL parallel MS_2" - no point G in section I; the weight acts
+    # "in der Richtung SL" (same sentence): SL, an S read as G
+    ("GL-parallel", 50, "transcription"),
 ])
 def test_faults_of_the_words_are_errata(report, name, line, kind):
     f = _formula(report, name)

@@ -49,7 +49,7 @@ def test_the_errata_are_exactly_the_expected_ones(report):
                       "145": "transcription", "162a": "transcription", "s-three-quarters": "misprint",
                       "table-first": "transcription", "table-third": "transcription",
                       "one-root-between": "transcription", "positive-whole-region": "claim",
-                      "164-reference": "misprint"}
+                      "164-reference": "misprint", "two-below-n1": "claim"}
     assert all(f.verdict == "erratum" for f in report.formulas if f.erratum)
 
 
@@ -324,6 +324,9 @@ def test_the_144_correction_must_hold():
     ("one-root-between", "transcription", "medium"),      # transcription line 1489: 'z = oo' for 'z = -oo'
     ("positive-whole-region", "claim", "medium"),         # line 1539: F > 0 on the whole region for n > n_1
     ("164-reference", "misprint", "medium"),              # line 1735: 'die Bedingung 164' (meant: before 164a)
+    # line 1539: 'für n < n_1 dagegen muss F(z) = 0 zwei Wurzeln haben' - three in the region when F(2 sigma) < 0;
+    # the same over-generalisation as positive-whole-region, booked as its repeat (same_as)
+    ("two-below-n1", "claim", "medium"),
 ])
 def test_second_review_faults_are_errata(name, kind, confidence):
     rep = check_derivation(_mutated(name), prove=False, trust_steps=True)

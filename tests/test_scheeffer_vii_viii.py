@@ -22,7 +22,11 @@ ERRATA = {"100": "transcription", "109": "misprint", "s-upper": "claim", "95a-sp
           "102a-reference": "misprint", "xs1-definition": "transcription", "N1-lower-base": "transcription"}
 # printed formulas that are logical or calculus steps on others (no numeric quantity of their own to clip)
 UNWITNESSED = {"s-upper", "95-element", "96-split", "117-cos", "regular-Ps", "106-first", "102a-reference",
-               "xs1-definition", "N1-lower-base", "fig20", "S3-offsets-used", "xs-depth", "Tmu-derivative"}
+               "xs1-definition", "N1-lower-base", "fig20", "S3-offsets-used", "xs-depth", "Tmu-derivative",
+               # the coverage pass: an element, a centroid-axis moment on a sample triangle, claims in words and
+               # references read symbolically
+               "95-volume-element", "centroid-axis", "second-condition-words", "into-99", "103ab-simplest",
+               "109-max-min"}
 
 
 @pytest.fixture(scope="module")

@@ -134,6 +134,23 @@ d.quote("M-side", "I", "Läge  $M$  aber auf der entgegengesetzten Seite von  $S
         reading=(sp.sign(sp.Subs(sp.Derivative(m, phi), phi, 0)), sp.sign(T1 / V1 - e1)),
         note="for small phi m = phi SM (M the metacentre on the axis, SM = T1/V1 - e1, III): m has the sign of the "
              "height of M above S")
+d.quote("labile-words", "I", "Sein Gleichgewicht wäre dann labil.",
+        reading=as_printed(lambda: (sp.sign(-torque), sp.sign(V1 * m))),
+        note="with m < 0 the moment of the couple against the heel, V1 m, is negative: the couple turns the body "
+             "further away, the equilibrium is labile")
+GX = sp.Symbol("G_X", real=True)               # the point G of the print, which section I never introduces
+d.domain[GX] = (-2, 2)
+d.quote("GL-parallel", "I", r"$GL \parallel MS_2$", reading=(GX, S2w[0] - m),
+        note="read as: the parallel to the vertical MS2 is drawn through G, and it is the line of action SL of the "
+             "weight named next (abscissa X = 0 of S in the world frame)",
+        erratum=Erratum("transcription", "medium", r"SL \parallel MS_2",
+                        "The weight acts at the centre of gravity S, and the same sentence goes on 'die in der Richtung "
+                        "SL wirkende Schwerkraft'; the next paragraph takes 'die Achsen S L und S A' as the frame of "
+                        "m and n. Section I introduces no point G (S, S1, S2, M, A, N, L, C, D only): the line "
+                        "drawn parallel to MS2 is SL, and a parallel through any other point misses the line of "
+                        "action of the weight. An S read as G by the scan is likelier than a compositor's slip "
+                        "(medium).",
+                        corrected_reading=(S2w[0] - m, 0)))
 d.quote("S2D", "I", r"$S_2 D (= m) \perp S L$", reading=(m, v * sp.cos(phi) - u * sp.sin(phi)),
         note="S2D: the horizontal distance of S2 from the vertical SL through S, the X coordinate of S2")
 d.quote("rotation-5", "(5)",

@@ -340,6 +340,13 @@ d.quote("second-plane", "IV (28)",
         "Für diese Ebene muss das statische Moment des eintauchenden Körperteils gleich Null sein.",
         reading=(M2, P * t1), note="the moment M_2 = V_1 w about the plane through OS across EF is tg phi_1 int_1 u v "
                                    "df: zero exactly when (31) holds")
+d.quote("second-plane-1", "IV (28)",
+        "noch für eine zweite durch S gelegte Vertikal-ebene gleich Null sein.", reading=(M2, P * t1),
+        note="the second condition of (1): the moment about the vertical plane through S across the axis; with "
+             "M_2 = tg phi_1 int_1 u v df it is (31)")
+d.quote("old-part-zero", "IV (28)",
+        "so muss, da das statische Moment des vorher eintauchenden Teils (G H J K) gleich Null ist, offenbar",
+        reading=(M2, M3 - M4), note="the old submerged part has its centroid in the plane (moment V_1 * 0, step M2)")
 d.quote("28", "(28)", r"$$M_2 = M_3 - M_4 = 0 \text{ sein.} \quad (28)$$", reading=(M2, M3 - M4),
         note="the '= 0' is the equilibrium condition imposed, read with (32)")
 d.quote("element-moment", "IV (29)",
@@ -352,6 +359,9 @@ d.quote("column-height", "IV (29)", r"$z = u_3 \cdot \operatorname{tg} \varphi_1
 d.quote("column-4-moment", "IV (30)", r"$u_4 v_4 \cdot df \cdot \operatorname{tg} \varphi_1$",
         reading=(dfs * sp.Integral(v4, (z, 0, u4 * t1)), u4 * v4 * dfs * t1),
         note="its moment about the vertical plane through OS across EF (lever v_4)")
+d.quote("column-4-height", "IV (30)", r"$z df = u_4 \cdot \operatorname{tg} \varphi_1 \cdot df$",
+        reading=(dfs * sp.Integral(1, (z, 0, u4 * t1)), u4 * t1 * dfs),
+        note="the emerged column over df at the distance u_4 from EF")
 d.quote("29", "(29)", r"$$M_3 = \int_3 u_3 v_3 \cdot df \cdot \operatorname{tg} \varphi_1, \quad (29)$$",
         reading=(M3, P3 * t1))
 d.quote("30-M4", "IV (30)", r"$$M_4 = \int_4 u_4 v_4 \cdot df \cdot \operatorname{tg} \varphi_1$$",
@@ -365,6 +375,12 @@ d.quote("u4-minus-u3", "IV (31)",
 d.quote("31", "(31)", r"$$\left. \begin{aligned} M_2 &= \int_1 u v \cdot df \cdot \operatorname{tg} \varphi_1 = 0 "
                       r"\\ \text{oder } \int_1 u v \cdot df &= 0 \end{aligned} \right\} \quad (31)$$",
         reading=(M2, P * t1), note="the identity M_2 = tan phi_1 int_1 u v df; '= 0' is the condition imposed")
+d.quote("32-from", "(32)",
+        "Die beiden Bedingungsgleichungen für die zweite Gleichgewichtslage ( $\\varphi_1$ ) stelle ich (aus 27 und 31) "
+        "hier zusammen:",
+        reading=(sp.Matrix([V1 * res(m).subs(phi, phi1) / sp.sin(phi1), M2 / t1]),
+                 sp.Matrix([T1 * (1 + t1 ** 2 / 2) - V1 * e1, P])),
+        note="(27) is the first, (31) the second condition: the two moments over their factors sin phi_1, tg phi_1")
 d.quote("32", "(32)", r"$$\left. \begin{aligned} T_1 \left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi_1 \right) "
                       r"- V_1 e^1 &= 0 \\ \int_1 u v \cdot df &= 0 \end{aligned} \right\} \quad (32)$$",
         reading=(sp.Matrix([V1 * res(m).subs(phi, phi1) / sp.sin(phi1), M2 / t1]),
@@ -467,6 +483,13 @@ d.quote("42", "(42)", r"$$\left. \begin{aligned} T_m &= \frac{T_1}{\cos^3 \varph
         reading=(sp.Matrix([Tm, Tm1]), sp.Matrix([T1 / c ** 3, T11 / c])))
 d.quote("43", "(43)", r"$$T - \frac{T_1}{\cos \varphi_1} > 0 \quad (43)$$", reading=(D2, Tmin - T1 / c),
         note="T the smaller of T_m, T_m^1; read as the quantity whose sign decides")
+d.quote("T-smaller", "(43)",
+        "wo für T der kleinste Wert, d. h. der kleinere von den beiden Werten  $T_m$  und  $T_m^1$  zu setzen ist.",
+        reading=(D2, sp.Min(Tm, Tm1) - V1 * e2),
+        note="Duhamel's T is the smallest moment of II about axes through its centroid; by (40) T(mu) lies between "
+             "its values T_m, T_m^1 at mu = 0, 90 deg")
+d.quote("T-Tm", "(43)", r"Es ist aber für  $T = T_m$  (s. 42)", reading=(Tm, T1 / c ** 3),
+        note="the reference: (42) gives T_m = T_1/cos^3 phi_1, the value inserted next")
 d.quote("43-Tm", "(43)", r"$$T - \frac{T_1}{\cos \varphi_1} = \frac{T_1}{\cos^3 \varphi_1} - \frac{T_1}{\cos "
                          r"\varphi_1} = \frac{T_1}{\cos \varphi_1} \cdot \text{tg}^2 \varphi_1",
         reading=(Tm - V1 * e2, T1 / c ** 3 - T1 / c, T1 / c * t1 ** 2), note="T = T_m")
@@ -483,6 +506,8 @@ d.quote("43a", "(43a)", r"$$\frac{T_1^1}{\cos \varphi_2} - \frac{T_1}{\cos \varp
                         corrected_reading=(Tm1 - V1 * e2, T11 / c - T1 / c)))
 d.quote("43a-conclusion", "(43a)", r"\text{ oder } T_1^1 > T_1 \quad (43a)$$",
         reading=(Tm1 - V1 * e2, (T11 - T1) / c), note="cos phi_1 > 0: the condition is T_1^1 > T_1")
+d.quote("T-Tm1", "(43a)", r"Es bleibt also nur ( $T = T_m^1$  gesetzt)", reading=(Tm1, T11 / c),
+        note="(42): T_m^1 = T_1^1/cos phi_1, inserted into (43) gives (43a)")
 d.quote("claim-43a", "IV (43a)",
         "„Die schiefe Gleichgewichtslage eines geraden Prismas (im I. Drehungsgebiet) ist also stabil, wenn das "
         "Trägheitsmoment des I. Wasserschnitts für die Drehungsachse kleiner ist als für die darauf senkrechte "
@@ -507,10 +532,14 @@ d.quote("Tx-Ty", "(45)", r"$$\int_1 y^2 \cdot d f = T_x \cdot \quad \int_1 x^2 \
 d.quote("45", "(45)", r"$$\frac{1}{2} (T_x - T_y) \sin 2 \omega + \int_1 x y \cdot d f \cdot \cos 2 \omega = 0 "
                       r"\quad (45)$$", reading=(Iuv, (Tx - Ty) * sp.sin(2 * om) / 2 + J * sp.cos(2 * om)))
 d.quote("xy-zero", "V", r"$$\int_1 x y \cdot d f = 0$$", reading=(Jsym, 0))
+lhs46 = 2 * sp.Subs(Iuv, J, Jsym)
 d.quote("46", "(46)", r"$$(T_x - T_y) \sin 2 \omega = 0 \quad (46)$$",
         reading=(2 * sp.Subs(Iuv, J, Jsym), (Tx - Ty) * sp.sin(2 * om)),
         note="twice the left side of (45) with int x y df = 0; '= 0' is the condition")
-lhs46 = 2 * sp.Subs(Iuv, J, Jsym)
+d.quote("46-three", "(47)", "Diese hat drei Lösungen",
+        reading=(lhs46, 2 * (Tx - Ty) * sp.sin(om) * sp.cos(om)),
+        note="read as: the left side of (46) is the product of three factors T_x - T_y, sin omega, cos omega, each "
+             "vanishing at one solution of (47) (omega in [0, 180 deg))")
 d.quote("principal-or-isotropic", "(47)",
         "In schiefer Lage kann also das Prisma im Gleichgewicht sein entweder wenn es um eine der beiden Hauptachsen "
         "des Wasserschnitts I gedreht wird, oder wenn die Trägheitsmomente der Fläche für die beiden Hauptachsen "
@@ -539,6 +568,11 @@ d.quote("isotropic-sign", "(48)",
         "so ist für alle Drehungsachsen die Grösse  $\\frac{T_1}{V_1} - e_1$  entweder positiv oder negativ.",
         reading=(sp.Derivative(T1iso, om), 0),
         note="T_1 does not depend on the direction omega of the axis (T_x = T_y), V_1 and e_1 never do")
+d.quote("isotropic-upright", "(48)",
+        "das Prisma in der aufrechten Lage stabil, im zweiten Falle ist die aufrechte Lage nach allen Richtungen labil",
+        reading=(sp.sign(slope), sp.sign(T1 / V1 - e1)),
+        note="(18): the slope of the righting arm at the upright position has the sign of T_1/V_1 - e_1, the same "
+             "for every axis here")
 d.quote("48", "(48)", r"$$T_1 = T_x = T_y \quad (48)$$", reading=(T1iso, T0),
         note="T_x = T_y = T_0: the second equality is the case's hypothesis, so the reading is T_1 = T_0")
 d.quote("49", "(49)", "dass das Trägheitsmoment des Wasserschnitts I oder der Grundfläche des Prismas für alle "

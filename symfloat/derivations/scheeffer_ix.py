@@ -138,6 +138,8 @@ d.step("touch-limit", Eq(tla, PW(2 * b * (1 - s) / a, 2 * b * s / a)), "definiti
 d.step("touch-limit-c", Eq(tlc, PW(2 * b * (1 - s) / c, 2 * b * s / c)), "definition", result=tlc)
 
 d.quote("122", "(122)", r"$$\frac{T_1}{V_1} - e_1 > 0 \quad (122)$$", reading=(T1 / V1 - e1, GMa))
+d.quote("122-words", "(122)", "Nach dem Duhamelschen Satze schwimmt es in dieser Lage stabil, wenn",
+        reading=(sp.sign(GMa), sp.sign(T1 / V1 - e1)), note="the metacentric height of the upright box is (122)'s margin")
 d.quote("T1", "IX.A", r"$$T_1 = \frac{c a^2}{12}$$", reading=(T1, c * a ** 2 / 12),
         erratum=Erratum("transcription", "high", r"T_1 = \frac{c a^3}{12}",
                         "the moment of the rectangle a x c about its axis parallel to c is c a^3/12; the next "
@@ -163,6 +165,16 @@ d.quote("all-directions-unstable", "IX.A", "so ist das Gleichgewicht der aufrech
                                                                     (c / b) ** 2 - 6 * s * (1 - s)])),
         note="under (124) the metacentric height about the a-axis is negative, and the one about the c-axis is smaller "
              "still (c > a): every horizontal axis")
+om_ = sp.Symbol("omega", positive=True)
+d.domain[om_] = (0.05, 1.5)
+_u, _v = x_ * sp.cos(om_) + y_ * sp.sin(om_), y_ * sp.cos(om_) - x_ * sp.sin(om_)
+d.quote("47-two-directions", "IX.A",
+        r"In Abschnitt V wurde nun gezeigt (47), dass im ersten Drehungsgebiet eine zweite (stabile) "
+        r"Gleichgewichtslage nur dann möglich ist, wenn entweder  $\omega = 0$  oder  $\omega = \frac{\pi}{2}$  ist",
+        reading=(sp.Integral(_u * _v, (x_, -a / 2, a / 2), (y_, -c / 2, c / 2)),
+                 a * c * (c ** 2 - a ** 2) / 24 * sp.sin(2 * om_)),
+        note="the second condition (32) for the a x c base turned by omega: int u v df = a c (c^2 - a^2)/24 sin 2 omega, "
+             "for c > a zero only at omega = 0, 90 deg in 0 <= omega < 180 deg; (47) is the right reference")
 d.quote("Tx-Ty-excluded", "IX.A",
         r"Die dritte Lösung der Bedingungsgleichung (46)  $T_x = T_y$  ist hier ausgeschlossen, da  $c > a$  "
         r"vorausgesetzt ist.", reading=(T11 - T1, a * c * (c ** 2 - a ** 2) / 12),
@@ -184,6 +196,14 @@ d.quote("127", "(127)",
         r"\text{also} \quad T_1^1 > T_1 \end{array} \quad (127)$$",
         reading=(sp.Matrix([T11, T1, T11 - T1]), sp.Matrix([a * c ** 3 / 12, c * a ** 3 / 12, a * c * (c - a) * (c + a) / 12])),
         note="the difference is positive for c > a: the oblique position is stable in every direction")
+d.quote("125-stable", "IX.A", "Das durch Gleichung 125 bestimmte schiefe Gleichgewicht ist daher stabil.",
+        reading=(sp.cos(phi1) * Dp, a * c * (c - a) * (c + a) / 12),
+        note="the Duhamel margin of the oblique position times cos phi_1 is T_1^1 - T_1 > 0 (c > a)")
+d.quote("128-from-125", "IX.A",
+        "so kann das Parallelepiped sich auch um eine mit  $a$  parallele Achse drehen und wird bei einem "
+        "Drehungswinkel  $\\varphi_1^1$  eine Gleichgewichtslage erreichen, welche durch die Gleichung (s. 125)",
+        reading=(tan2c, sp.Subs(12 * (b / a) ** 2 * s * (1 - s) - 2, a, c)),
+        note="(125) with c for a, the edge across the new axis: the reference is right")
 d.quote("128", "(128)",
         r"$$\operatorname{tg}^2 \varphi_1^1 = 12 \left(\frac{b}{c}\right)^2 \cdot s (1 - s) - 2 \quad (128)$$",
         reading=(tan2c, 12 * (b / c) ** 2 * s * (1 - s) - 2))
@@ -195,6 +215,10 @@ d.quote("129", "(129)",
         r"\right\} \quad (129)$$",
         reading=(PWM(sp.Matrix([2 * b * (1 - s) / a, 2 * b * (1 - s) / c]), sp.Matrix([tla, tlc])), sp.Matrix([tla, tlc])),
         note="read as the bounds: tan of the tilt at which the top face reaches the water (s > 1/2)")
+d.quote("129-words", "(129)",
+        "Damit keine der beiden Grundflächen den Wasserspiegel durchschneide, muss, wie leicht zu erkennen ist,",
+        reading=(PWM(sp.Matrix([2 * b * (1 - s) / a, 2 * b * (1 - s) / c]), sp.Matrix([tla, tlc])), sp.Matrix([tla, tlc])),
+        note="as (129): the tilts at which the top face reaches the water")
 d.quote("129-squared", "IX.A", r"$$\operatorname{tg}^2 \varphi_1 \leq 4 \cdot \left(\frac{b}{a}\right)^2 (1 - s)^2$$",
         reading=(4 * (b / a) ** 2 * (1 - s) ** 2, PW(tla ** 2, 4 * (b / a) ** 2 * (1 - s) ** 2)))
 d.quote("130-pre", "IX.A",
@@ -217,12 +241,22 @@ d.quote("131", "(131)",
 d.quote("131-mirror", "IX.A", r"$$2s(3-4s).$$", reading=as_printed(lambda: (2 * s * (3 - 4 * s), rho_s.subs(s, 1 - s))),
         note="1 - s for s in the lower bound (the bottom face reaches the water first for s < 1/2)")
 LOW = PW(rho_s, 2 * s * (3 - 4 * s))
+d.quote("131-unchanged", "IX.A", r"dann bleibt  $6s \cdot (1-s)$  ungeändert",
+        reading=as_printed(lambda: ((6 * s * (1 - s)).subs(s, 1 - s), 6 * s * (1 - s))))
 d.quote("132a", "(132a)", r"$$\text{wenn} \quad \left(\frac{a}{b}\right)^2 > 6s(1-s), \quad (132a)$$",
         reading=((a / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GMa))
+d.quote("132a-words", "(132a)",
+        "Ein rechtwinkliges Parallelepipèd schwimmt in aufrechter Lage ( $c > a$  die horizontalen Kanten,  $b$  die "
+        "vertikale) stabil,", reading=(sp.sign(12 * s / b * GMa), sp.sign((a / b) ** 2 - 6 * s * (1 - s))),
+        note="as (132a)")
 d.quote("132b", "(132b)",
         r"$$6s(1-s) > \left(\frac{a}{b}\right)^2 \geq \begin{cases} 2(1-s)(4s-1) & \left(\text{für } s > \frac{1}{2}\right) "
         r"\\ 2s(3-4s) & \left(\text{für } s < \frac{1}{2}\right) \end{cases} \quad (132b)$$",
         reading=(sp.Matrix([6 * s * (1 - s) - (a / b) ** 2, (a / b) ** 2 - LOW]), sp.Matrix([-12 * s / b * GMa, Q130])))
+d.quote("132b-words", "(132b)",
+        "in aufrechter Lage labil, dagegen in schiefer Lage stabil (Drehungsachse  $\\parallel c$ ) wenn",
+        reading=(sp.Matrix([6 * s * (1 - s) - (a / b) ** 2, (a / b) ** 2 - LOW]), sp.Matrix([-12 * s / b * GMa, Q130])),
+        note="as (132b): upright margin negative, the tilt within the first region")
 d.quote("132c", "(132c)",
         r"$$6s(1-s) > \left(\frac{c}{b}\right)^2 \geq \begin{cases} 2(1-s)(4s-1) & \text{für } s > \frac{1}{2} \\ 2s & "
         r"(3-4s) \text{ „ } s < \frac{1}{2} \end{cases} \quad (132c)$$",
@@ -230,6 +264,10 @@ d.quote("132c", "(132c)",
         note="'2s & (3-4s) „' is the scan's table of 2s(3-4s) for s < 1/2 (the ditto mark „ for 'für')")
 
 # ==== B. the second region ===========================================================================
+d.quote("132c-words", "(132c)",
+        "und in aufrechter und schiefer Lage labil\\*) (Drehungsachse  $\\parallel a$ ) wenn",
+        reading=(sp.Matrix([6 * s * (1 - s) - (c / b) ** 2, T1 - T11]), sp.Matrix([-12 * s / b * GMc, -sp.cos(phi1) * Dp])),
+        note="upright margin about the a-axis negative, and the oblique position's margin negative (128-unstable)")
 d.step("sigma", Eq(sg, 1 - s), "definition", result=sg, note="the text's sigma = 1 - s")
 d.step("n", Eq(n, (a / b) ** 2), "definition", result=n, note="the text's n = (a/b)^2")
 d.step("rho", Eq(rho, 2 * (1 - s) * (4 * s - 1)), "definition", result=rho, note="(161a)")
@@ -334,6 +372,9 @@ d.quote("133-first", "IX.B",
                         "leading 3 (medium: the print may also have dropped it). The '= 0' is the equilibrium condition.",
                         corrected_reading=(3 * M3 / b * z ** 3, sp.sin(phi_z) * Fz)),
         note="x/b = z; phi_2 the tilt belonging to z by (134)")
+d.quote("m3-zero", "IX.B", "In der Gleichgewichtslage muss  $m_3 = 0$  sein",
+        reading=(sp.Derivative(Ez, phi), sg / (1 - sg) * h_dir.dot(S3phi)),
+        note="the potential's slope is (sigma/s) m_3: an equilibrium of the second region is a zero of m_3")
 d.quote("133", "(133)",
         r"$$\frac{3 m_3}{b} \cdot \frac{z^3}{\sin \varphi_2} = z^4 - \frac{3}{2} \cdot z^3 + 3 \left(\frac{a}{b}\right)^2 "
         r"(1-s) z - 4 \left(\frac{a}{b}\right)^2 (1-s)^2 = 0 \quad (133)$$",
@@ -357,6 +398,15 @@ d.quote("137", "(137)", r"$$F'(z) = 4 z^3 - \frac{9}{2} z^2 + 3 \sigma n \quad (
         reading=(sp.Derivative(F_def, z), 4 * z ** 3 - sp.Rational(9, 2) * z ** 2 + 3 * sg * n))
 d.quote("138", "(138)", r"$$F''(z) = 3 z (4 z - 3) \quad (138)$$", reading=(sp.Derivative(F_def, (z, 2)), 3 * z * (4 * z - 3)))
 d.quote("F-at-0", "IX.B", r"$$\text{,, } z = 0 \quad F(z) = -4 \sigma^2 n$$", reading=(sp.Subs(Fz, z, 0), -4 * sg ** 2 * n))
+d.quote("two-ranges", "IX.B",
+        "so hat die Gleichung  $F(z) = 0$  in diesen beiden Gebieten wenigstens je eine reelle Wurzel.",
+        reading=(sp.Matrix([sp.sign(sp.Subs(Fz, z, 0)), sp.Limit(Fz / z ** 4, z, -sp.oo), sp.Limit(Fz / z ** 4, z, sp.oo)]),
+                 sp.Matrix([-1, 1, 1])),
+        note="F(0) = -4 sigma^2 n < 0 and F grows like z^4 at both ends: a sign change on either side of 0")
+d.quote("minimum-negative", "IX.B", "—  $\\infty$  und 0 ein Minimum.",
+        reading=(sp.Matrix([sp.sign(sp.Subs(sp.Derivative(Fz, z), z, 0)), sp.Limit(sp.Derivative(Fz, z) / z ** 3, z, -sp.oo)]),
+                 sp.Matrix([1, 4])),
+        note="F'(0) = 3 sigma n > 0 while F' ~ 4 z^3 -> -infinity: F' vanishes on (-infinity, 0), a minimum of F")
 d.quote("F1-at-0", "IX.B", r"Da  $F'(0) = 3 \sigma n$ , also positiv ist",
         reading=(sp.Subs(sp.Derivative(Fz, z), z, 0), 3 * sg * n))
 d.quote("inflections", "IX.B",
@@ -370,6 +420,21 @@ d.quote("F1-stays-positive", "IX.B",
                  (z - sp.Rational(3, 4)) ** 2 * (4 * z + sp.Rational(3, 2))),
         note="F'(z) - F'(3/4) = (z - 3/4)^2 (4z + 3/2) >= 0 for z >= 0: F' >= F'(3/4) beyond the inflection")
 F1_34 = sp.diff(F_def, z).subs(z, sp.Rational(3, 4))
+def _count(sv, nv, lo, hi=None):
+    """How many real roots of (136) at s = sv, n = nv lie above lo (and not above hi): exact root isolation."""
+    roots = sp.Poly(quartic.subs({n: nv, sg: 1 - sv}), z).real_roots()
+    steps = [(1 + sp.sign(r_ - lo)) / 2 - (0 if hi is None else (1 + sp.sign(r_ - hi)) / 2) for r_ in roots]
+    return sp.Add(*steps, evaluate=False)
+
+
+S_LOW = sp.Rational(7, 10)                # s <= 23/32: sigma = 3/10, rho = 27/25
+d.quote("monotone-one", "IX.B",
+        "In diesem Falle nimmt  $F(z)$  beständig zu, hat also zwischen  $z = 0$  und  $z = \\infty$  auch nur eine "
+        "reelle Wurzel.", reading=(_count(sp.Rational(73, 100), 2, 0), 1),
+        note="read at s = 73/100, n = 2 (sigma n = 0.54 >= 9/32, F'(3/4) > 0): one real root z > 0")
+d.quote("F1-34-ref", "IX.B", "Dieser Fall tritt ein, wenn  $F'(\\frac{3}{4}) \\geq 0$ , also (s. 137)",
+        reading=(sp.Subs(sp.Derivative(Fz, z), z, sp.Rational(3, 4)), 3 * (sg * n - sp.Rational(9, 32))),
+        note="F'(z) of (137) at z = 3/4: the reference is right")
 d.quote("139-pre", "IX.B",
         r"$$4 \left(\frac{3}{4}\right)^3 - \frac{9}{2} \cdot \left(\frac{3}{4}\right)^2 + 3 \sigma n \geq 0$$",
         reading=(4 * sp.Rational(3, 4) ** 3 - sp.Rational(9, 2) * sp.Rational(3, 4) ** 2 + 3 * sg * n, F1_34))
@@ -380,6 +445,21 @@ d.quote("140", "(140)",
         reading=as_printed(lambda: (sp.Rational(23, 32) - s, sg - sp.Rational(9, 32),
                  sp.diff(quartic.subs(n, 1), z).subs(z, sp.Rational(3, 4)) / 3)),
         note="F'(3/4) at n = 1 over 3; F'(3/4) grows with n, so n >= 1 only helps")
+d.quote("n-least", "IX.B",
+        "ist der kleinste Wert, den  $\\left(\\frac{a}{b}\\right)^2 = n$  haben kann,  $n = 1$  und die Bedingung 139 "
+        "ist sicher erfüllt, wenn sie für diesen kleinsten Wert erfüllt ist",
+        reading=(sp.Derivative(3 * (sg * nu - sp.Rational(9, 32)), nu), 3 * sg),
+        note="a >= b gives n >= 1; the margin of (139) grows with n (slope 3 sigma > 0)")
+d.quote("140-one-root", "IX.B",
+        "Unter der Voraussetzung 140 hat also die Gleichung  $F(z) = 0$  zwischen  $z = 0$  und  $z = \\infty$  nur eine "
+        "reelle Wurzel.", reading=(_count(S_LOW, 1, 0), 1),
+        note="read at s = 7/10 <= 23/32 and the least n = 1: one real root z > 0")
+d.quote("root-in-region-if", "IX.B",
+        "Diese liegt in dem hier in Betracht kommenden Gebiet (zwischen  $z = 2\\sigma$  und  $z = 1$ ) wenn  $F(z)$  für  "
+        "$z = 2\\sigma$  negativ und für  $z = 1$  positiv ist.",
+        reading=(sp.Matrix([sp.sign(F2s.subs({sg: 1 - S_LOW, s: S_LOW, a: b})), sp.sign(F1v.subs({sg: 1 - S_LOW, s: S_LOW, a: b})),
+                            _count(S_LOW, 1, 2 * (1 - S_LOW), 1)]), sp.Matrix([-1, 1, 1])),
+        note="read at s = 7/10, n = 1 (< rho = 27/25): F(2 sigma) < 0 < F(1) and one root in (2 sigma, 1]")
 d.quote("140-steps", "IX.B", r"$$\text{oder } 1 - s - \frac{9}{32} \geq 0$$", reading=(1 - s - sp.Rational(9, 32), sg - sp.Rational(9, 32)))
 d.quote("141", "(141)",
         r"$$\text{oder } F(2\sigma) = 2(1-s)^2 \cdot \left\{ \left(\frac{a}{b}\right)^2 - 2(1-s)(4s-1) \right\} \quad (141)$$",
@@ -392,6 +472,19 @@ d.quote("142", "(142)",
         reading=(F1v, (1 - s) * (4 * s - 1) * ((a / b) ** 2 - 1 / (2 * (1 - s) * (4 * s - 1)))))
 d.quote("142-automatic", "IX.B", r"Dann ist aber  $\frac{1}{2(1-s)(4s-1)} < 1$",
         reading=(1 - 1 / rho, (rho - 1) / rho), note="rho > 1 (forced by n >= 1 and n < rho) makes 1/rho < 1 <= n")
+d.quote("F2s-negative", "IX.B",
+        r"Die Bedingung  $F(2\sigma) < 0$  kann nur erfüllt werden (141), wenn  $\left(\frac{a}{b}\right)^2 < "
+        r"2(1-s)(4s-1)$  ist.", reading=(sp.Subs(Fz, z, 2 * sg), 2 * sg ** 2 * (n - rho)),
+        note="(141): F(2 sigma) = 2 sigma^2 (n - rho), negative exactly when n < rho")
+d.quote("143-words", "(143)",
+        r"Für  $s \leq \frac{23}{32}$  hat  $F(z) = 0$  eine reelle Wurzel (zwischen  $z = 2\sigma$  und  $z = 1$ ) d. h. "
+        r"im zweiten Drehungsgebiet giebt es eine Gleichgewichtslage, wenn",
+        reading=(_count(S_LOW, 1, 2 * (1 - S_LOW), 1), 1), note="read at s = 7/10, n = 1 < rho = 27/25")
+d.quote("143-stable", "(143)",
+        r"Und zwar ist das Gleichgewicht (zunächst für die Drehungsachse) stabil, da  $F(z)$  aus dem Negativen in's "
+        r"Positive gehend gleich Null wird.",
+        reading=(sp.Subs(sp.Derivative(Ez, phi), phi, phi_z), sg / (1 - sg) * b * sp.sin(phi_z) * Fz / (3 * z ** 3)),
+        note="the potential's slope has the sign of F, and z grows with phi_2: F from - to + is a minimum (stable)")
 d.quote("143", "(143)", r"$$\left(\frac{a}{b}\right)^2 < 2(1-s)(4s-1) \quad (143)$$",
         reading=(rho_s - (a / b) ** 2, -F2s / (2 * sg ** 2)),
         note="F(2 sigma) < 0 < F(1) with F increasing: one root in (2 sigma, 1), where F goes from - to +")
@@ -401,6 +494,26 @@ d.quote("144", "(144)", r"$$\left(\frac{a}{b}\right)^2 > 2(1-s)4s-1 \quad (144)$
                         "the converse of (143) needs the same bound 2(1-s)(4s-1) (F(2 sigma) > 0 by (141)); the scan "
                         "lost the parentheses around 4s - 1, which changes the bound (e.g. by 1 - 2(1-s) at any s).",
                         corrected_reading=((a / b) ** 2 - rho_s, F2s / (2 * sg ** 2))))
+d.quote("144-words", "(144)",
+        r"Umgekehrt hat  $F(z) = 0$  keine reelle Wurzel zwischen  $z = 2\sigma$  und  $z = 1$ , wenn",
+        reading=(_count(S_LOW, sp.Rational(3, 2), 2 * (1 - S_LOW), 1), 0),
+        note="read at s = 7/10, n = 3/2 > rho = 27/25")
+d.quote("144-first-region", "(144)",
+        r"d. h. wenn im ersten Drehungsgebiet, die aufrechte Lage eingeschlossen, ein stabiles Gleichgewicht "
+        r"existiert\*).", reading=(6 * s * (1 - s) - rho, 2 * (1 - s) ** 2),
+        note="rho < 6 s (1 - s) always: n > rho is either n > 6 s(1-s) (upright stable, 132a) or "
+             "6 s(1-s) > n >= rho (oblique stable, 132b)")
+d.quote("one-or-three", "IX.B",
+        r"in diesem letzteren Falle hat  $F(z)$  zwischen  $z = 0$  und  $z = \infty$  ein Maximum und ein Minimum und "
+        r"daher  $F(z) = 0$  eine oder drei reelle Wurzeln.",
+        reading=(sp.Matrix([_count(sp.Rational(73, 100), sp.Rational(251, 250), 0), _count(sp.Rational(73, 100),
+                                                                                         sp.Rational(51, 50), 0)]),
+                 sp.Matrix([3, 1])),
+        note="read at s = 73/100 (> 23/32) and n = 251/250, 51/50 (sigma n < 9/32): three and one positive roots")
+d.quote("third-term", "(145)", r"so ist darin  $z > 2\sigma$ , also um so mehr  $z > \frac{2}{3} \cdot 2\sigma$  und "
+        r"das dritte Glied folglich positiv.",
+        reading=(sp.Subs(3 * sg * n * (z - sp.Rational(2, 3) * 2 * sg), z, 2 * sg), 2 * sg ** 2 * n),
+        note="at the left end z = 2 sigma the third term of (145) is already 2 sigma^2 n > 0, and it grows with z")
 d.quote("145", "(145)",
         r"$$F(z) = z^4 - \frac{3}{2}z^3 + \sigma n 3z - 4\sigma = z^4 - \frac{3}{2}z^3 + 3\sigma n(z - \frac{2}{3} \cdot 2\sigma) "
         r"\quad (145)$$",
@@ -575,6 +688,27 @@ d.quote("positive-whole-region", "IX.B", r"so ist  $F(z)$  für  $n > n_1$  in d
                         "neighbourhood of the minimum).",
                         corrected_reading=(sp.Matrix([NREG, NRIGHT, SGN1]), sp.Matrix([1, 0, 1]))),
         note="read at s = 73/100, n = 51/50: roots of F in z > 2 sigma, roots right of its maximum, sign(n - n_1)")
+Z_MAX3 = next(r_ for r_ in sp.Poly(sp.diff(quartic, z).subs({n: N_THREE, sg: 1 - S_CT}), z).real_roots()
+              if 0 < r_ < sp.Rational(3, 4))
+d.quote("two-below-n1", "IX.B", r"für  $n < n_1$  dagegen muss  $F(z) = 0$  zwei Wurzeln haben",
+        reading=(sp.Matrix([_above(_roots136(N_THREE), 2 * (1 - S_CT)), _above(_roots136(N_THREE), Z_MAX3)]),
+                 sp.Matrix([2, 2])),
+        erratum=Erratum("claim", "medium",
+                        r"\text{für } n < n_1 \text{ hat } F(z) = 0 \text{ rechts von seinem Maximum zwei Wurzeln, "
+                        r"links davon eine weitere, wenn } F(2\sigma) < 0",
+                        "The same over-generalisation as for n > n_1 ('in dem ganzen Gebiet'): right of the maximum "
+                        "F has two roots for n < n_1, but left of it F(2 sigma) = 2 sigma^2 (n - rho) < 0 for n < rho "
+                        "adds a third in the region. At s = 73/100, n = 251/250 (< n_1 = 1.00631 < rho = 1.0368) the "
+                        "exact roots of (136) above 2 sigma = 0.54 are 0.5878, 0.7757, 0.8724: three, two of them right "
+                        "of the maximum. Table (161), case II, counts three.",
+                        corrected_reading=(sp.Matrix([_above(_roots136(N_THREE), 2 * (1 - S_CT)),
+                                                      _above(_roots136(N_THREE), Z_MAX3)]), sp.Matrix([3, 2])),
+                        same_as="scheeffer-ix/positive-whole-region"),
+        note="read at s = 73/100, n = 251/250: roots of F in z > 2 sigma, and right of its maximum")
+d.quote("maximum-reverse", "IX.B", "Liegt die Doppelwurzel im Maximum, so ist es umgekehrt.",
+        reading=(sp.Derivative(quartic.subs(n, nu), nu), 3 * sg * (z - sp.Rational(2, 3) * 2 * sg)),
+        note="F grows with n on z > 4 sigma/3: a double root at a maximum splits into two roots for n > n_2 and "
+             "vanishes for n < n_2 (read as the monotonicity in n it rests on)")
 d.quote("t-of-s", "IX.B", r"$$\text{Nach 147 ist } t = \frac{119 - 128s}{27},$$", reading=as_printed(lambda: (t_s, (119 - 128 * s) / 27)))
 d.quote("7-3t", "IX.B", r"$$7 - 3t = 7 - \frac{119 - 128s}{9} = \frac{128s - 56}{9}$$",
         reading=as_printed(lambda: (7 - 3 * t_s, 7 - (119 - 128 * s) / 9, (128 * s - 56) / 9)))

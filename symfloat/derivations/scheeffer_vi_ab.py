@@ -241,6 +241,10 @@ s_hi_1, s_lo_1 = (e.subs({a: 1, b: 1}) for e in (_roots[1], _roots[0]))
 d.quote("ex2-root", "Example 2",
         r"\sqrt{1 - \frac{1}{3} \left( \frac{a}{b} \right)^2} = \sqrt{\frac{2}{3}}",
         reading=as_printed(lambda: (sp.sqrt(1 - (a / b) ** 2 / 3).subs(a, b), sp.sqrt(sp.Rational(2, 3)))), note="a/b = 1")
+d.quote("ex2-from-58", "Example 2", r"Auflösung. In 58 ist  $\frac{a}{b} = 1$  zu setzen.",
+        reading=((s - sp.Rational(1, 2)) ** 2 - sp.Rational(1, 4) * (1 - sp.Rational(1, 3)), sp.Subs(2 * s / b * hA, a, b)),
+        note="the last line of (58) at a = b is the margin (2 s / b) h_A of the equilateral prism: the reference is "
+             "right, and its root sqrt(2/3) follows")
 d.quote("ex2-two-thirds", "Example 2", r"\sqrt{\frac{2}{3}} = \sqrt{0,6667}",
         reading=(sp.Rational(2, 3), sp.Rational("0.6667")), tolerance=PRINTED_DIGITS,
         note="the radicand (2 s_+ - 1)^2 at a = b")
@@ -290,12 +294,31 @@ d.step("tilted-stable-in-phi", (sp.Derivative((1 + tp ** 2 / 2) * T1 - V1 * e1, 
             "is stable against a change of phi (against a turn about the prism axis it is indifferent: (51))")
 
 um, umr, Ltop, Lbot = sp.symbols("u_m u_m' L_top L_bot")
+d.quote("57-fails", "VI.A",
+        "Ist die Bedingung 57 (oder 58) aber nicht erfüllt, so ist die aufrechte Lage labil",
+        reading=((a / b) ** 2 - 12 * s * (1 - s), 24 * s / b * hA),
+        note="the margin of (57) is (24 s / b) h_A: where it is negative, so is h_A (Duhamel, (18))")
 d.quote("BS", "VI.A", r"$B S = \frac{a}{3} \sqrt{3}$", reading=as_printed(lambda: (sp.sqrt(Bv[0] ** 2 + Bv[1] ** 2), a / 3 * sq3)))
 d.quote("BSD", "VI.A", r"$B S D = 30^\circ$", reading=as_printed(lambda: (sp.atan2(-Bv[1], -Bv[0]), 30 * deg)),
         note="SB makes 30 deg with the parallel DE to BC through the centre S")
 d.step("dipping-distance", Eq(um, Bv[0] * nvec[0] + Bv[1] * nvec[1]), "definition",
        note="distance of the vertex B from the axis PQ, on the dipping side n", result=um)
 d.step("dipping-distance-value", (um, a / sq3 * sp.sin(pi / 6 + om)), "geometry", uses=("dipping-distance",))
+
+def _reach(w):
+    """The largest distance of a vertex of ABC from the axis PQ at the angle w, on the dipping side."""
+    n = (-sp.sin(w), -sp.cos(w))
+    return sp.Max(*(V[0] * n[0] + V[1] * n[1] for V in (Av, Bv, Cv)))
+
+
+d.quote("omega-60", "VI.A",
+        r"Die Achse P Q nimmt offenbar alle nur möglichen relativen Lagen an, wenn  $\omega$  von 0 bis  "
+        r"$60^\circ$  zunimmt",
+        reading=(sp.Matrix([_reach(om + 2 * pi / 3) - _reach(om), _reach(pi / 3 + om) - _reach(pi / 3 - om)]),
+                 sp.zeros(2, 1)),
+        note="read as: what the triangle shows to the axis (here the reach u_m of its dipping side) repeats with the "
+             "period 120 deg (the turn that maps ABC onto itself) and is mirrored about omega = 60 deg (hence about "
+             "0): every direction is one of 0 <= omega <= 60 deg")
 d.step("dipping-vertex-farthest", (as_printed(lambda: (Bv[0] - Cv[0]) * nvec[0] + (Bv[1] - Cv[1]) * nvec[1]), a * sp.sin(om)),
        "geometry", note="B is at least as far as C on the dipping side for 0 <= omega <= 60 degrees (A lies on "
                         "the other side)")
@@ -555,6 +578,16 @@ d.quote("67", "(67)",
         reading=(sp.Matrix([sp.sqrt(24 * b ** 2 / a ** 2 * s * (1 - s) - 2), b / a * (1 - s) * sq3 / sp.sin(45 * deg)]),
                  sp.Matrix([tan1, full(Ltop).subs(om, w4)])),
         note="the two sides of (60) at omega = 15 deg: t_1 and the top limit (both set to tan 30 deg)")
+d.quote("ex4-from-60", "Example 4",
+        r"Da hier  $\omega = 15^\circ$  und  $\varphi_1$  als Grenzwert  $= 30^\circ$  ist, so hat man aus 60",
+        reading=(sp.Matrix([tan1, full(Ltop).subs(om, w4)]),
+                 sp.Matrix([sp.sqrt(24 * b ** 2 / a ** 2 * s * (1 - s) - 2),
+                            b / a * (1 - s) * sq3 / sp.sin(pi / 6 + pi / 12)])),
+        note="the two members of (60) at omega = 15 deg (sin(30 deg + omega) = sin 45 deg); both are set to tg 30 deg "
+             "in (67)")
+d.quote("ex3-at-two-thirds", "Example 3", r"Aus der ersten ergibt sich für  $s = \frac{2}{3}$ :",
+        reading=as_printed(lambda: (Q60_3, sp.Rational(3, 2) * (1 - s3) * (9 * s3 - 1))),
+        note="(a/b)^2 = 3/2 (1 - s)(9 s - 1) at s = 2/3 (the condition of ex3-condition)")
 d.quote("ex4-constants", "Example 4",
         r"$\operatorname{tg} 30^\circ = \frac{1}{3} \cdot \sqrt{3}$  und  $\sin 45^\circ = \frac{1}{2} \sqrt{2}$",
         reading=as_printed(lambda: (sp.Matrix([sp.tan(30 * deg), sp.sin(45 * deg)]), sp.Matrix([sq3 / 3, sp.sqrt(2) / 2]))))
@@ -731,6 +764,12 @@ d.step("example-7-bottom", (full(LbotC ** 2 - tanC ** 2).subs(sq_).subs(s, s_b[0
 d.quote("ex7-conditions", "Example 7", r"$$8s(1-s) > 1 > 2s(4-5s)$$",
         reading=(sp.Matrix([8 * s * (1 - s) - 1, 1 - 2 * s * (4 - 5 * s)]),
                  sp.Matrix([full(-16 * s / b * hC).subs(sq_), full((LbotC ** 2 - tanC ** 2) * K2 / 2).subs(sq_)])))
+d.quote("ex7-from-73", "Example 7",
+        r"Es muss  $s < \frac{1}{2}$  und  $\frac{2r}{b} = 1$  sein, also nach 73:",
+        reading=(sp.Matrix([8 * s * (1 - s) - 1, 1 - 2 * s * (4 - 5 * s)]),
+                 sp.Matrix([full(-16 * s / b * hC).subs(sq_), full((LbotC ** 2 - tanC ** 2) * K2 / 2).subs(sq_)])),
+        note="the branch s < 1/2 of (73), read as its derived margins, at 2r/b = 1: the reference is right (73 "
+             "gives >=, the example >)")
 d.quote("ex7-square", "Example 7", r"$$\left(\frac{1}{2} - s\right)^2 < \frac{1}{8}$$",
         reading=(sp.Rational(1, 8) - (sp.Rational(1, 2) - s) ** 2, full(-2 * s / b * hC).subs(sq_)))
 d.quote("ex7-lower", "Example 7", r"$$s > \frac{1}{2} \left(1 - \sqrt{\frac{1}{2}}\right) \text{ oder } s > 0,146.$$",
@@ -769,6 +808,11 @@ ex8 = {r: 30, b: 40, s: sp.Rational(3, 4)}
 d.quote("ex8-values", "Example 8",
         r"\left(\frac{2r}{b}\right)^2 = \frac{9}{4} \text{ und } 8s(1-s) = \frac{3}{2}",
         reading=as_printed(lambda: (sp.Matrix([K2.subs(ex8), (8 * s * (1 - s)).subs(ex8)]), sp.Matrix([sp.Rational(9, 4), sp.Rational(3, 2)]))))
+d.quote("ex8-data", "Example 8",
+        r"$$\text{Es ist } 2r = 60 \text{ cm} \quad b = 40 \text{ cm} \quad s = \frac{3}{4}$$",
+        reading=(sp.Matrix([2 * r, b, s]).subs(ex8), sp.Matrix([60, 40, printed_fraction(3, 4)])),
+        note="the data of the question (line 763: diameter 60 cm, height 40 cm, spec. weight 0,75) as the example "
+             "uses them (ex8)")
 d.quote("ex8-test", "Example 8", r"$$\text{ob } \left(\frac{2r}{b}\right)^2 \geq 8s(1-s) \text{ ist.}$$",
         reading=(K2 - 8 * s * (1 - s), 16 * s / b * hC), note="margin of (69): 16 s/b times the metacentric height")
 d.quote("ex8-therefore", "Example 8", r"$$\text{folglich } \left(\frac{2r}{b}\right)^2 > \frac{3}{2}$$",
@@ -804,6 +848,9 @@ d.quote("ex9-claim", "Example 9",
 ex10 = {r: sp.Rational(8, 5), b: sp.Rational(5, 2), s: sp.Rational(3, 5)}
 d.quote("ex10-ratio", "Example 10", r"\left(\frac{2r}{b}\right)^2 = \frac{32^2}{25^2}",
         reading=as_printed(lambda: (K2.subs(ex10), sp.Rational(32 ** 2, 25 ** 2))))
+d.quote("ex10-data", "Example 10", "Gew. 0,6 hat einen Durchmesser von 3,2 m und eine Höhe von 2,5 m.",
+        reading=(sp.Matrix([2 * r, b, s]).subs(ex10), sp.Matrix([printed_fraction(32, 10), printed_fraction(25, 10), printed_fraction(6, 10)])),
+        note="the data of the question as the solution uses them (2r/b = 32/25, s(1 - s) = 0.6 * 0.4)")
 d.quote("ex10-product", "Example 10", r"8s(1-s) = 8 \cdot 0,6 \cdot 0,4 = \frac{48 \cdot 25}{25^2}",
         reading=as_printed(lambda: ((8 * s * (1 - s)).subs(ex10), sp.Rational(48 * 25, 625))))
 d.quote("ex10-ratio-2", "Example 10",
@@ -858,6 +905,15 @@ BS_EVIDENCE = ("The upright draught of the cylinder is b s, height times specifi
                "= weight; IV, after (53a): 'b s nun die Höhe des ... unter dem Wasserspiegel befindlichen "
                "Körperteils'); 'b_s' is defined nowhere, and the next line uses 1,5 = 2,5 * 0,6 = b s. The scan set "
                "the s as a subscript (medium: a printer's subscript is not excluded).")
+_ax = sp.Matrix([sp.sin(sp.atan(tp)), sp.cos(sp.atan(tp))])       # the axis of the cylinder tilted by atan(tau)
+_base = sp.Matrix([sp.cos(sp.atan(tp)), -sp.sin(sp.atan(tp))])    # a diameter of its base in the drawing's plane
+d.quote("ex10-angle-meaning", "Example 10",
+        "Diesen Winkel bildet in der stabilen Lage die Hauptachse mit der Vertikalen oder die Grundfläche mit dem "
+        "Wasserspiegel.",
+        reading=(sp.Matrix([sp.acos(_ax.dot(sp.Matrix([0, 1]))), sp.acos(_base.dot(sp.Matrix([1, 0])))]),
+                 sp.Matrix([sp.atan(tp), sp.atan(tp)])),
+        note="the body turned by phi (tg phi = tau) about a horizontal axis: its axis makes phi with the vertical, "
+             "its base phi with the horizontal water plane")
 d.quote("upright-draught", "Example 10", r"In der aufrechten Schwimmlage ist diese  $b_s$",
         reading=(V1c / F1c, bs_), note="diese: the height to which the side surface is immersed; upright V_1/F_1",
         erratum=Erratum("transcription", "medium", r"b s \; (= b \cdot s)",

@@ -177,6 +177,10 @@ d.quote("square-moments", "VI.C",
         r"ist das Trägheitsmoment  $T_1 = \frac{1}{12} \cdot a^4$  und der Inhalt  $F_1 = a^2$",
         reading=(sp.Matrix([T1, F1]), sp.Matrix([a ** 4 / 12, a ** 2])))
 d.quote("OB", "VI.C", r"$\text{OB} = \frac{a}{2} \sqrt{2}$", reading=(OB, a / 2 * sp.sqrt(2)))
+d.quote("BG-um", "VI.C", r"$\text{BG} = u_m$",
+        reading=(sp.Max(*(a / 2 * sp.sqrt(2) * sp.sin(pi / 4 + om + k * pi / 2) for k in range(4))), um),
+        note="BG: the distance of the corner B (at OB from O, 45 deg + omega from EF) from the axis EF, the largest "
+             "signed distance of the four corners on the sinking side for 0 <= omega < 45 deg")
 d.quote("u-m", "(74)", r"$$u_m = \frac{a}{2} \sqrt{2} \cdot \sin(45^\circ + \omega) \quad (74)$$",
         reading=(um, a / 2 * sp.sqrt(2) * sp.sin(pi / 4 + om)))
 d.quote("V1", "VI.C", r"$V_1 = F_1 b \cdot s = a^2 b s$", reading=(V1, F1 * b * s, a ** 2 * b * s))
@@ -235,6 +239,9 @@ d.quote("77", "(77)",
         note="sign identity, factor (a/b)^2/2: (77) holds iff phi_1 does not exceed the limit tilt at 45 deg")
 d.quote("78", "(78)", r"$$\left(\frac{a}{b}\right)^2 > 6s(1 - s) \quad (78)$$",
         reading=((a / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GM))
+d.quote("78-stable", "(78)", "so schwimmt es in aufrechter Lage stabil; wenn",
+        reading=(sp.sign(12 * s / b * GM), sp.sign((a / b) ** 2 - 6 * s * (1 - s))),
+        note="under (78) the metacentric height GM of the upright prism is positive (margin of (78) = 12 s/b GM)")
 d.quote("78a", "(78a)",
         r"$$6s(1 - s) > \left(\frac{a}{b}\right)^2 \geq \begin{cases} (1 - s)(7s - 1) & \text{für } s > \frac{1}{2} "
         r"\\ s(6 - 7s) & \text{für } s < \frac{1}{2} \end{cases} \quad (78a)$$",
@@ -244,6 +251,11 @@ d.quote("78a", "(78a)",
              "omega; the stated conclusions (oblique position stable for every axis direction, stability kept "
              "under rotation about the main axis) follow from oblique-stable-in-phi and "
              "potential-independent-of-omega, and are tested on the clipped geometry in the tests")
+d.quote("78a-words", "(78a)",
+        "so schwimmt es aufrecht labil und nach einer Drehung um den Winkel  $\\varphi_1$  in schiefer Lage stabil",
+        reading=(sp.Matrix([6 * s * (1 - s) - (a / b) ** 2, (a / b) ** 2 - PW((1 - s) * (7 * s - 1), s * (6 - 7 * s))]),
+                 sp.Matrix([-12 * s / b * GM, Q77_sign])),
+        note="as (78a): GM < 0 upright, and the tilt phi_1 of (78b) stays within the limit of the first domain")
 d.quote("78b", "(78b)",
         r"$$\operatorname{tg} \varphi_1 = \sqrt{12 \cdot \left(\frac{b}{a}\right)^2 s (1 - s) - 2} \quad (78b)$$",
         reading=(tan1, sp.sqrt(12 * (b / a) ** 2 * s * (1 - s) - 2)))
@@ -269,6 +281,10 @@ d.quote("78d", "(78d)",
         reading=(Sw, PW((1 - s) ** 2 / (6 * s * (1 - s) - (a / b) ** 2), s ** 2 / (6 * s * (1 - s) - (a / b) ** 2))),
         note="read as the bound: S_omega = sin^2(45 deg + omega*) at the limiting axis direction omega*; the limit "
              "tilt decreases as omega grows, so the condition holds for omega <= omega*")
+d.quote("78d-from-76", "(78d)",
+        "Die Grenzbedingung dafür, die also den grössten Wert von  $\\omega$  bestimmt, folgt aus 76:",
+        reading=(Sw, PW((1 - s) ** 2 / (6 * s * (1 - s) - (a / b) ** 2), s ** 2 / (6 * s * (1 - s) - (a / b) ** 2))),
+        note="the reference: (76), the tilt phi_1 at its limit for the direction omega, gives the bound (78d)")
 d.quote("78e", "(78e)",
         r"$$\left(\frac{a}{b}\right)^2 < \left\{ \begin{array}{ll} 2(1-s)(4s-1) & \text{für } s > \frac{1}{2} \\ "
         r"2s(3-4s) & \text{für } s < \frac{1}{2} \end{array} \right\} \quad (78e)$$",
@@ -278,6 +294,14 @@ d.quote("78e", "(78e)",
              "equilibrium for any axis (the text's conclusion)")
 
 # ==== D. the cube ====================================================================================
+d.quote("78e-none", "(78e)",
+        "Ist diese Bedingung auch für  $\\omega = 0$  nicht erfüllt, so gibt es unter der obigen Voraussetzung "
+        "überhaupt keine stabile Gleichgewichtslage.",
+        reading=(PW(2 * (1 - s) * (4 * s - 1), 2 * s * (3 - 4 * s)) - (a / b) ** 2, (a / b) ** 2 / 2 * (tan2 - tl0 ** 2)),
+        note="as (78e): omega = 0 is the least restrictive direction; where phi_1 exceeds its limit there, it does "
+             "for every omega, and the first domain holds no oblique position")
+d.quote("sin2-45", "(78e)", r"$\sin^2(45^\circ) = \frac{1}{2}$",
+        reading=as_printed(lambda: (sp.sin(pi / 4) ** 2, sp.Rational(1, 2))))
 d.step("cube-metacentric-height", (GMc, sp.Subs(GM, a, b), b * (1 - 6 * s * (1 - s)) / (12 * s)), "substitution",
        uses=("upright-metacentric-height",), result=GMc)
 rp, rm = half + sp.sqrt(sp.Rational(1, 12)), half - sp.sqrt(sp.Rational(1, 12))
@@ -333,6 +357,9 @@ d.step("waterplane-area", (AII, over_square(sp.sqrt(1 + sp.tan(phi) ** 2)), F1 /
 
 cube = {a: b}
 d.quote("cube-78", "VI.D", r"$$1 > 6s(1-s)$$", reading=(1 - 6 * s * (1 - s), 12 * s / b * GMc))
+d.quote("cube-from-78", "VI.D", r"$\frac{a}{b} = 1$ , so erhält man aus 78:",
+        reading=(sp.Subs(12 * s / b * GM, a, b), 12 * s / b * GMc),
+        note="the margin of (78) at a = b is that of the cube: the reference is right")
 d.quote("cube-78-square", "VI.D", r"$$\left(s - \frac{1}{2}\right)^2 > \frac{1}{12}$$",
         reading=((s - half) ** 2 - sp.Rational(1, 12), 2 * s / b * GMc))
 d.quote("79", "(79)", r"s > \frac{1}{2} + \sqrt{\frac{1}{12}} \text{ d. h. } s > 0,7887 \\ \text{oder} \\ s < "
@@ -424,6 +451,10 @@ d.quote("82-half", "VI.D", r"$$\sin^2 (45^\circ + \omega) = \frac{1}{2}$$",
 d.quote("82-half-omega", "VI.D", r"$$\text{woraus } \sin (45^\circ + \omega) = \frac{1}{2} \sqrt{2}$$",
         reading=as_printed(lambda: (sp.sqrt(sp.Subs(Sw, (a, s), (b, half))), sp.sqrt(2) / 2, sp.sin(pi / 4 + 0))),
         note="hence omega = 0")
+d.quote("82-half-zero", "VI.D", "also  $\\omega = 0$  folgt.",
+        reading=as_printed(lambda: (sp.asin(sp.sqrt(sp.Subs(Sw, (a, s), (b, half)))) - pi / 4, 0)),
+        note="sin(45 deg + omega) grows on 0 <= omega <= 45 deg: the one solution of sin(45 deg + omega) = "
+             "sqrt(2)/2 there is omega = 0")
 d.quote("half-stable", "VI.D",
         r"D. h. ein Würfel vom spec. Gew.  $\frac{1}{2}$  kann aus der aufrechten labilen Lage nur durch Drehung um "
         r"eine horizontale Achse, die einer Kante parallel ist, in eine schiefe stabile Lage gelangen.",
@@ -506,6 +537,9 @@ d.step("largest-ordinate-n", Eq(umn, r * sp.cos(pi / n - om)), "definition", res
 
 d.quote("triangle-axis", "VI.E", r"$$T = T_y \cdot \sin^2 \varphi + T_x \cdot \cos^2 \varphi$$",
         reading=(TL, Ty * sp.sin(psi) ** 2 + Tx * sp.cos(psi) ** 2), note="the text's phi is psi here")
+d.quote("triangle-symmetric", "VI.E",
+        "(da O Q eine Symmetrieachse ist und folglich die Summe  $\\int x y d f$ , bezogen auf die Dreiecksfläche, "
+        "Null ist).", reading=(over_triangle(X * Y), 0))
 d.quote("83", "(83)", r"$$T = \frac{1}{2} (T_x + T_y) + \frac{1}{2} (T_x - T_y) \cos 2 \varphi. \quad (83)$$",
         reading=(TL, (Tx + Ty) / 2 + (Tx - Ty) / 2 * sp.cos(2 * psi)), note="the text's phi is psi here")
 d.quote("84", "(84)",
@@ -515,6 +549,12 @@ d.quote("85", "(85)",
         r"$$T_1 = \frac{n}{2} (T_x + T_y) + \frac{1}{2} (T_x - T_y) \left\{ \cos (\pi + 2 \alpha) + \cos (\pi + 4 "
         r"\alpha) + \dots \right\} \quad (85)$$", reading=(T1n, n / 2 * (Tx + Ty) + (Tx - Ty) / 2 * (-Sc)),
         note="cos(pi + p alpha) = -cos(p alpha): the braces hold -Sigma_c")
+p_ = sp.Symbol("p", positive=True)
+d.domain[p_] = (1, 12)
+d.quote("cos-pi", "(86)", r"$\cos (\pi + p \alpha) = - \cos p \alpha$",
+        reading=as_printed(lambda: (sp.cos(pi + p_ * alph), -sp.cos(p_ * alph))))
+d.quote("cos-pi-sum", "(86)", r"$\cos p \alpha + \cos (\pi + p \alpha) = 0$",
+        reading=as_printed(lambda: (sp.cos(p_ * alph) + sp.cos(pi + p_ * alph), 0)))
 d.quote("86", "(86)",
         r"$$2 T_1 = n (T_x + T_y) \quad \text{oder} \quad T_1 = \frac{n}{2} (T_x + T_y) \quad (86)$$",
         reading=(sp.Matrix([2 * T1n, T1n]), sp.Matrix([n * (Tx + Ty), n / 2 * (Tx + Ty)])))
@@ -582,6 +622,14 @@ d.quote("circle-T1", "VI.E",
         r"$$T_1 = \frac{1}{12} \cdot \pi r^4 \cdot 3 = \frac{\pi r^4}{4} = \frac{F_1^2}{4 \pi}$$",
         reading=as_printed(lambda: (sp.Limit(T1n, n, sp.oo), pi * r ** 4 * 3 / 12, pi * r ** 4 / 4, (pi * r ** 2) ** 2 / (4 * pi))),
         note="the limit n -> infinity at fixed r; it agrees with T_1 = pi r^4/4 of section B")
+_w3 = (r - Y) * 2 / sp.sqrt(3)           # the width at height Y of the equilateral triangle of circumradius r
+d.quote("agree-known", "VI.E", "Alle drei Werte stimmen mit den bekannten und oben benutzten überein.",
+        reading=(sp.Matrix([sp.Subs(T1n, n, 3), sp.Subs(T1n, n, 4), sp.Limit(T1n, n, sp.oo)]),
+                 sp.Matrix([sp.Integral(Y ** 2 * _w3, (Y, -r / 2, r)),
+                            sp.Integral(Y ** 2 * r * sp.sqrt(2), (Y, -r / sp.sqrt(2), r / sp.sqrt(2))),
+                            sp.Integral(Y ** 2 * 2 * sp.sqrt(r ** 2 - Y ** 2), (Y, -r, r))])),
+        note="the known moments, integrated directly over the equilateral triangle, the square (circumradius r) and "
+             "the circle: 3 sqrt3 r^4/32 = sqrt3 a^4/96 (VI.A), r^4/3 = a^4/12 (VI.C), pi r^4/4 (VI.B)")
 d.quote("88", "(88)", r"$$u_m = r \cdot \sin \left( \frac{n-2}{2n} \cdot \pi + \omega \right) \quad (88)$$",
         reading=(umn, r * sp.sin((n - 2) / (2 * n) * pi + om)))
 

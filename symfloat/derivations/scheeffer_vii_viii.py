@@ -297,6 +297,9 @@ d.quote("95-S3", "VII", r"Da nun  $S_2$  senkrecht unter  $S$  liegt, so muss au
 d.quote("95-element", "VII", r"$z \cdot y \cdot df$ , oder da  $z = x \operatorname{tg} \varphi_2$  ist,  "
         r"$x y \cdot df \cdot \operatorname{tg} \varphi_2$",
         reading=(sp.Integral(y, (z, -x * tg2, 0)), x * y * tg2), note="per unit df")
+d.quote("95-volume-element", "VII", r"Das Volumen dieses Körperelements ist  $z \cdot df$",
+        reading=(sp.Integral(1, (z, -x * tg2, 0)), x * tg2), note="per unit df: the column from the water plane z = "
+                                                                    "-x tg phi_2 to the upper base z = 0")
 d.quote("95-moment", "VII", r"stat. Moment des ganzen Körperteils  $\int x y df \cdot \operatorname{tg} \varphi_2$",
         reading=(My, Pxy * tg2))
 d.quote("95a", "(95a)", r"$$\int x y \cdot df = 0 \quad (95a)$$", reading=(Pxy, My / tg2), note=EQN)
@@ -304,6 +307,13 @@ d.quote("96", "(96)", r"$$\int x y df = \int_s (x_0 + x) y df + \int_2 x y df. \
         reading=(Pxy, Pwh + I2))
 d.quote("96-split", "VII", r"$$\int_s (x_0 + x) y df = x_0 \cdot \int_s y df + \int_s x y df.$$",
         reading=(Pwh, x0 * 0 + PO), note="int_s y df = 0 (the next sentence)")
+_p, _q = sp.symbols("p_t q_t", real=True)
+d.quote("centroid-axis", "VII",
+        r"und  $\int y df$  das statische Moment der Grundfläche für die durch ihren Schwerpunkt gehende Achse  "
+        r"$E F$ , also gleich Null.",
+        reading=(sp.Integral(sp.Integral(_q - R(1, 3), (_q, 0, 1 - _p)), (_p, 0, 1)), 0),
+        note="the first moment of a plane figure about an axis through its centroid vanishes: shown on the right "
+             "triangle (0, 0), (1, 0), (0, 1), centroid at height 1/3, by integration")
 d.quote("97", "(97)", r"$$\int x y df = \int_s x y df + \int_2 x y df = 0. \quad (97)$$", reading=(Pxy, PO + I2),
         note=EQN)
 d.quote("98", "(98)", r"$$\int x y df = \int_2 x y df = 0 \quad (98)$$", reading=(sp.Subs(res(Pxy), PO, 0), res(I2)),
@@ -339,6 +349,12 @@ d.quote("complete", "VII", "No. 95 a, 103 a, b und 117 enthalten die vollständi
              "stability is (117) (sign identity 2 cos phi_2 D, checked with (117))")
 d.quote("99", "(99)", r"$$M_3 = V_3 (x_3 - x_0) \cos \varphi_2 - V_3 \left( \frac{b}{2} - z_3 \right) \cdot \sin "
         r"\varphi_2 = 0. \quad (99)$$", reading=(M3, (X3 - V3 * x0) * c2 - (V3 * b / 2 - Z3) * sn2), note=EQN)
+d.quote("second-condition-words", "VII",
+        "„Das statische Moment des über dem Wasser befindlichen Körperteils für die durch S parallel zur "
+        "Drehungsachse gelegte Vertikalebene ist Null.“",
+        reading=(M2h, -M3),
+        note="V_1 times the offset of S_2 from the vertical through S (across the axis) is -M_3: S_2 lies under S "
+             "exactly when the moment M_3 of the dry part vanishes (as 95-S3)")
 d.quote("99-transformation", "VII",
         r"$$M_3 = V_3 \cdot \overline{S_3 O_3} \cdot \cos \varphi_2 - V_3 \cdot \overline{S O_3} \cdot \sin \varphi_2,$$",
         reading=(M3, V3 * (X3 / V3 - x0) * c2 - V3 * (b / 2 - Z3 / V3) * sn2),
@@ -370,6 +386,10 @@ d.quote("101", "(101)",
 d.quote("102-pre", "VII", r"$$M_3 = T \sin \varphi_2 - V_3 x_0 \cos \varphi_2 - V_3 \frac{b}{2} \sin \varphi_2 + "
         r"\frac{1}{2} T \operatorname{tg}^2 \varphi_2 \cdot \sin \varphi_2 = 0$$",
         reading=(M3, T * sn2 - V3 * x0 * c2 - V3 * b / 2 * sn2 + T * tg2 ** 2 * sn2 / 2), note=EQN)
+d.quote("into-99", "VII",
+        "Setzt man diese beiden Werte in die Gleichung 99, nachdem man sie mit  $V_3$  multipliziert hat, ein, so wird",
+        reading=(M3, T * sn2 - V3 * x0 * c2 - V3 * b / 2 * sn2 + T * tg2 ** 2 * sn2 / 2),
+        note="(101) inserted into (99) gives the next display (102-pre): the reference is right")
 d.quote("102", "(102)", r"$$M_3 = \sin \varphi_2 \cdot \left\{ T \left( 1 + \frac{1}{2} \operatorname{tg}^2 "
         r"\varphi_2 \right) - V_3 \cdot \frac{b}{2} - V_3 x_0 \operatorname{cotg} \varphi_2 \right\} = 0 \quad (102)$$",
         reading=(M3, sn2 * (T * (1 + tg2 ** 2 / 2) - V3 * b / 2 - V3 * x0 / tg2)), note=EQN)
@@ -379,6 +399,9 @@ d.quote("103a", "(103a)", r"$$\operatorname{tg} \varphi_2 = \frac{F_1 \cdot b (1
 d.quote("103b", "(103b)", r"$$\frac{M_3}{\sin \varphi_2} = T \left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi_2 "
         r"\right) - F_1 \frac{b^2}{2} \cdot (1 - s) - F x_s \cdot x_0 = 0 \quad (103b)$$", reading=(M3 / sn2, Q2),
         note=EQN)
+d.quote("103ab-simplest", "(103b)",
+        "Die beiden Gleichungen 103a und 103b enthalten die zweite Gleichgewichtsbedingung in möglichst einfacher Form.",
+        reading=(M3 / sn2, Q2), note="M_3 / sin phi_2 with the tilt of (103a) is the left side of (103b)")
 d.quote("s-below-half", "VII", r"Wenn das spec. Gew.  $s < \frac{1}{2}$  ist, so ist der über dem Wasser befindliche "
         r"Körperteil mit dem eintauchenden zu vertauschen, also  $s$  statt  $1 - s$  zu setzen.",
         reading=(V1 * e2, V3 * e3),
@@ -446,6 +469,11 @@ d.quote("109-extremes", "VII",
         reading=(sp.Matrix([(dbl(2 * mus) - Sg) ** 2, (dbl(2 * mus + sp.pi) - Sg) ** 2]),
                  sp.Matrix([((T2g - T21g) ** 2 + 4 * kg ** 2) / 4] * 2)),
         note="the two stationary values (mu^*, mu^* + 90 deg) lie half the root above and below the mean")
+d.quote("109-max-min", "VII", "Die beiden Werte von  $T_\\mu$  geben das Maximum und das Minimum.",
+        reading=(sp.Matrix([(dbl(2 * mus) - Sg) ** 2, (dbl(2 * mus + sp.pi) - Sg) ** 2]),
+                 sp.Matrix([((T2g - T21g) ** 2 + 4 * kg ** 2) / 4] * 2)),
+        note="T_mu = S + A cos(2 mu - delta) takes its largest and smallest value at the two stationary directions, "
+             "half the root above and below the mean S")
 d.quote("110", "(110)", r"$$T_m = \frac{1}{2} (T_2 + T_2^1) - \frac{1}{2} \cdot \sqrt{(T_2 - T_2^1)^2 + 4 k^2} \quad (110)$$",
         reading=(Tmg, Sg - sp.sqrt((T2g - T21g) ** 2 + 4 * kg ** 2) / 2))
 d.quote("111", "(111)", r"$$T_2 = \frac{T_1}{\cos^3 \varphi_2} \text{ und } T_2^1 = \frac{T_1^1}{\cos \varphi_2} \text{ ist.} "

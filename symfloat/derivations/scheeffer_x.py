@@ -180,6 +180,10 @@ d.quote("half-range", "X", r"$$0 < \omega \leq \frac{\pi}{4}$$",
         reading=(P168.subs(h_, rho * si).subs({om: pi / 2 - om, rho: rho * tg}, simultaneous=True),
                  -P168.subs(h_, rho * si)),
         note="'angenommen werden kann': read as the symmetry that allows it")
+d.quote("168-two", "X", "Unter dieser Voraussetzung hat die Gleichung 168 nur zwei Lösungen",
+        reading=(P, h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si))),
+        note="(168) is a positive factor h^3/(24 sin w cos^2 w) times two factors that can vanish: the two solutions "
+             "(169)")
 d.step("triangle-area", (Ar, sp.Integral(1, (Y, a / 2 - (X - a / 2 + rho) * tg, a / 2), (X, a / 2 - rho, a / 2)),
                          rho ** 2 * tg / 2), "integration", result=Ar)
 d.quote("area", "X", r"$$\left( \int d f = B H G \right)$$", reading=(Ar, rho * (rho * tg) / 2),
@@ -194,6 +198,13 @@ d.quote("169", "(169)",
         note="the two factors of (168) that can vanish (h > 0); each read at its zero")
 d.quote("rho-star", "X", r"$$\varrho = \frac{2 a \cos \omega}{\cos \omega + \sin \omega}$$",
         reading=(rs, 2 * a * co / (co + si)))
+d.quote("legs-in-face", "X",
+        r"$BH < a$  und  $BG < a$  oder  $\varrho < a$  und  $\varrho \cdot \tg \omega < a$",
+        reading=(sp.Matrix([a - rs, a - rs * tg]), sp.Matrix([a / (co + si) * (si - co), a / (co + si) * (co - si)])),
+        note="the legs BH = rho and BG = rho tg w of the triangle at the corner B must be shorter than the edge; at "
+             "the second solution rho_* of (169) the two margins are the conditions (169a), (169b) that follow. The "
+             "sentence cites Fig. 19 (the waterplane of VII); the triangle BHG of the cube's face is Fig. 23 - the "
+             "figures are lost, so the reference is not booked")
 d.quote("169a", "(169a)", r"$$\cos \omega < \sin \omega \quad (169a)$$",
         reading=(a - 2 * a * co / (co + si), a / (co + si) * (si - co)),
         note="from rho_* < a: sign identity, factor a/(cos w + sin w) > 0")
@@ -474,6 +485,15 @@ d.quote("hex-symmetric", "X",
 
 # ==== the regular hexagon at s = 1/2 =====================================================================
 cH = 1 / r2
+d.quote("hex-six", "X", "Da dies aber für alle sechs Dreiecke der Fall sein muss, so ergibt sich:",
+        reading=(sp.Matrix([P + P1, P]), (co - si) * sp.Matrix([POS + POS.subs({h_: h1_, rho: rho1}), POS])),
+        note="as hex-symmetric: on every pair of parallel faces the first condition is (cos w - sin w) x a positive "
+             "factor, so w = 45 deg on each")
+d.quote("hex-range", "X",
+        r"ebenso über den sechseckigen (wenn  $s$  zwischen  $\frac{1}{6}$  und  $\frac{5}{6}$  liegt)",
+        reading=(sp.Matrix([Vt / a ** 3, s56]), sp.Matrix([sp.Rational(1, 6), sp.Rational(5, 6)])),
+        note="the bounds are the corner tetrahedron's share of the cube, 1/6 (dry or wet): beyond them the water "
+             "plane cuts three faces only (triangle)")
 d.step("hex-inertia", (Ih, 2 * sp.Integral(Y ** 2 * 2 * (cH - Y / sp.sqrt(3)), (Y, 0, sp.sqrt(3) * cH / 2)),
                        5 * sp.sqrt(3) / 64), "integration", result=Ih,
        note="the regular hexagon of side 1/sqrt 2 (midpoints of six edges) about a central axis")
