@@ -54,10 +54,14 @@ def test_the_errata_are_exactly_the_expected_ones(report):
 
 
 def test_every_witnessed_formula_has_float_and_50_digit_records(report):
+    # the module's witnesses measure in float64 and at 50 digits; the formulas none of them targets
+    # are measured from the definitions (symfloat/engine/definitions.py) at 15 and 30 digits
+    own = {"float64", "mpmath, 50 digits"}
+    route = {"definitions, 15 digits", "definitions, 30 digits"}
     witnessed = [f for f in report.formulas if f.numeric]
-    assert len(witnessed) >= 60
+    assert len([f for f in witnessed if {r["method"] for r in f.numeric} == own]) >= 60
     for f in witnessed:
-        assert {r["method"] for r in f.numeric} == {"float64", "mpmath, 50 digits"}, f.id
+        assert {r["method"] for r in f.numeric} in (own, route), f.id
 
 
 # ---- pinned values, recomputed on the clipped box ---------------------------------------------------
