@@ -139,8 +139,12 @@ def _numeric(expr, point, dps, printer=_NestedQuadPrinter):
     the smallest first, and its value inserted where it occurs."""
     if not expr.has(sp.Integral):
         v = sp.N(expr.xreplace(point), dps + 5, chop=True)   # an exact zero stays zero
-        if v.free_symbols or not v.is_number:
+        if v.free_symbols:
             raise ValueError(f"free symbols {sorted(map(str, v.free_symbols))} remain")
+        if not v.is_number:
+            own = sorted({f.func.__name__ for f in v.atoms(sp.Function) if not f.func.__module__.startswith("sympy")}
+                         | {str(f.func) for f in v.atoms(sp.core.function.AppliedUndef)})
+            raise ValueError(f"{', '.join(own) or 'a part'} has no numeric value (a function no step defines)")
         return v
     known = set(point)
     closed = sorted((i for i in expr.atoms(sp.Integral) if i.free_symbols <= known), key=sp.count_ops)
