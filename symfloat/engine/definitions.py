@@ -214,9 +214,10 @@ class DefinitionRoute:
         self._defs = definitions(self.steps)
         self._memo: dict = {}
 
-    def outcome(self, target: str, reading) -> Outcome | None:
-        """Compare the members of *reading* with its first member, measured from the definitions;
-        ``None`` when the chain offers nothing to compare (an :class:`Outcome` with only a note)."""
+    def outcome(self, target: str, reading) -> Outcome:
+        """Compare the members of *reading* with its first member, measured from the definitions.
+        Where the chain offers nothing to compare, or cannot be evaluated, the outcome has no
+        records and a note saying why."""
         out = Outcome(self.name)
         try:
             ms = [_carried_out(_expanded(m, self._defs, self._memo)) for m in members(reading)]
@@ -235,17 +236,18 @@ class DefinitionRoute:
         if cases is None:
             out.note = "definition route: no sample point satisfies the derivation's constraints"
             return out
+        measured = [sp.sympify(c) for c in _components(first)]
+        claims = [[sp.sympify(c) for c in _components(m)] for m in rest]
+        if any(len(claimed) != len(measured) for claimed in claims):
+            out.note = "definition route: not evaluated (members of different shapes)"
+            return out
         for method in ROUTE_METHODS:
             t0 = time.perf_counter()
             worst_abs = worst_rel = 0.0
             try:
                 for point in cases:
-                    measured = [sp.sympify(c) for c in _components(first)]
                     values = [_numeric(c, point, method.dps) for c in measured]
-                    for m in rest:
-                        claimed = [sp.sympify(c) for c in _components(m)]
-                        if len(claimed) != len(measured):
-                            raise ValueError("members of different shapes")
+                    for claimed in claims:
                         for e, v, c in zip(measured, values, claimed):
                             ab, rel = _difference(e, v, c, point, method)
                             worst_abs, worst_rel = max(worst_abs, ab), max(worst_rel, rel)
