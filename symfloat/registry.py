@@ -69,6 +69,11 @@ def providing(kind: str) -> tuple[str, ...]:
                  if kind in _PROVIDES.findall(module_path(m).read_text(encoding="utf-8")))
 
 
+def provided(kind: str) -> list[tuple[str, object]]:
+    """``(derivation id, value)`` for every value the derivations provide as *kind*, in id order."""
+    return [(did, value) for did in providing(kind) for value in load(did)[0].provided.get(kind, ())]
+
+
 @cache
 def load(derivation_id: str) -> tuple[Derivation, object]:
     """The derivation with *derivation_id* and the module that defines it."""

@@ -158,8 +158,10 @@ def _check_cube(cells, reference, lo, hi) -> Check:
 
 
 def _ix_tables():
-    from ..registry import load
-    return load("scheeffer-ix")[1].tables_prediction
+    """The printed case tables of the long box a derivation provides (``provides("tables", ...)``)."""
+    from ..registry import provided
+    (_, tables), = provided("tables")
+    return tables
 
 
 def _long_axes(cell):
@@ -273,7 +275,7 @@ def _predictions(cells, lo, hi) -> list[Check]:
                     entry["disagree"].append(f"{_cell_name(c)}, s = {r['sample_density']:.6f}: "
                                              f"{', '.join(p['locators'])} ({verdicts}): {p['disagreement']}")
     out = []
-    for did in sorted(by, key=lambda d: (d != "scheeffer-vii-viii", d)):
+    for did in sorted(by):
         e = by[did]
         out.append(Check(f"printed: {did}", False, not e["disagree"],
                          f"{e['agree']} predictions agree; {e['erratum']} disagree where an erratum is declared; "

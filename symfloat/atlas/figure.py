@@ -31,8 +31,8 @@ def _edges(values: list[float]) -> list[float]:
 
 
 def _ix_counts(ratios, densities):
-    from ..registry import load
-    tables = load("scheeffer-ix")[1].tables_prediction
+    from .checks import _ix_tables
+    tables = _ix_tables()
     return np.array([[sum(p["stability"] == "stable" for p in tables(s, r)) for r in ratios] for s in densities])
 
 

@@ -16,7 +16,7 @@ import sympy as sp
 
 from ..registry import load
 
-__all__ = ["BOUNDARIES", "boundaries", "cell_counts", "grid_figure"]
+__all__ = ["BOUNDARIES", "boundaries", "cell_counts", "grid_figure", "grid_caption"]
 
 # (label, printed formula of scheeffer-ix, row of its printed condition, mirrored for s < 1/2): the
 # condition, read as printed, is linear in n = (a/b)^2; the boundary is where it is zero.  "Mirrored":
@@ -128,3 +128,19 @@ def grid_figure(grid: dict):
     ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.09), frameon=False)
     fig.tight_layout()
     return fig
+
+
+def grid_caption(grid: dict) -> str:
+    """The site's caption of the picture of *grid*: what is drawn, counted from the same data."""
+    cells = grid["cells"]
+    inner = [c for c in cells if not c["boundary"]]
+    bad = sum(not c["agree"] for c in cells)
+    return (
+        f"The long rectangular log (Scheeffer IX): its section a × b, density s against a/b. Each of the "
+        f"{len(inner)} grid cells is coloured by the number of stable positions the solver finds in the section "
+        f"(one per symmetry class; the dots are the {len(cells) - len(inner)} cells a relative 1e-3 in (a/b)² "
+        f"either side of a printed boundary). The black lines are the boundaries of the printed case tables, "
+        f"evaluated from the derivation's readings of (132a), (132b), the condition of IX.C, (165) and n₁ of "
+        f"(156) with t of (147); for s < 1/2 the text's rule (1 − s for s) where it prints one side only. "
+        f"{bad} of {len(cells)} cells disagree with the tables (outlined in red). Data: "
+        f"`docs/scheeffer-ix-grid.json`, written by `symfloat run` with the [table of the grid](scheeffer-ix-grid.md).")

@@ -42,13 +42,14 @@ printed tables for any box and any edge as axis.
 """
 import functools
 import math
+from pathlib import Path
 
 import mpmath
 import numpy as np
 import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum
-from symfloat.model.derivation import Report
+from symfloat.model.derivation import Figure, Report
 from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state
@@ -1499,3 +1500,19 @@ def _grid_stamp() -> str:
 
 d.provides("report", Report("scheeffer-ix-grid.md", _grid_stamp, _grid_report))
 d.provides("report", Report("scheeffer-ix-grid.json", _grid_stamp, _grid_data))
+d.provides("tables", tables_prediction)                 # the atlas compares its long boxes with the tables
+
+
+def _grid_picture(grid):
+    from ._ix_figure import grid_figure
+    return grid_figure(grid)
+
+
+def _grid_caption(grid):
+    from ._ix_figure import grid_caption
+    return grid_caption(grid)
+
+
+d.provides("figure", Figure("scheeffer-ix-grid.png", ("scheeffer-ix-grid.json",), _grid_picture,
+                            code=(Path(__file__).with_name("_ix_figure.py"),),
+                            title="Scheeffer IX: the case tables against the solver", caption=_grid_caption))

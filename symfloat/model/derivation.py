@@ -103,7 +103,7 @@ def printed_tolerance(excerpt: str, reading) -> sp.Rational:
     return max(halves)
 
 
-PROVIDED_KINDS = ("thresholds", "forms", "report")
+PROVIDED_KINDS = ("thresholds", "forms", "report", "figure", "tables")
 
 
 @dataclass(frozen=True)
@@ -115,6 +115,21 @@ class Report:
     filename: str
     stamp: Callable[[], str]
     build: Callable[..., str]
+
+
+@dataclass(frozen=True)
+class Figure:
+    """A picture of the main job, ``docs/figures/<filename>`` (PNG): ``draw(*data)`` gets the JSON files
+    ``data`` (paths under ``docs/``, written by a :class:`Report` or the phase diagrams) parsed and returns
+    a Matplotlib figure; ``code`` are the source files that decide its look (with the data, its
+    fingerprint); ``caption(*data)`` is the site's caption under ``title``."""
+
+    filename: str
+    data: tuple[str, ...]
+    draw: Callable[..., object]
+    code: tuple = ()
+    title: str = ""
+    caption: Callable[..., str] | None = None
 
 
 @dataclass
@@ -206,7 +221,10 @@ class Derivation:
           names a threshold it finds by the closed form it meets);
         * ``"forms"``: a function returning closed forms for the float64 study
           (:class:`symfloat.numerics.forms.Form`);
-        * ``"report"``: a :class:`Report`, a document the main job writes beside the record."""
+        * ``"report"``: a :class:`Report`, a document the main job writes beside the record;
+        * ``"figure"``: a :class:`Figure`, a picture the main job draws from such a document;
+        * ``"tables"``: a function ``(ratio, s) -> prediction`` of printed case tables of the long
+          rectangular box (the atlas compares its long cells with them)."""
         if kind not in PROVIDED_KINDS:
             raise ValueError(f"{self.id}: unknown kind {kind!r}; known: {', '.join(PROVIDED_KINDS)}")
         self.provided.setdefault(kind, []).append(value)

@@ -26,11 +26,26 @@ from .orders import HEELS, PANELS, convergence_witnesses, gauss_legendre_degrees
 from .report import (THRESHOLDS, cheapest, family_figure, fingerprint, fmt_err, fmt_time, method_rows,
                      write_png_if_changed)
 
-__all__ = ["generate", "QUICK_SELECTORS"]
+__all__ = ["generate", "quick_selection"]
 
-QUICK_SELECTORS = ("graefe-s2", "metazentrum")
 QUICK_KINK_PANELS = (4, 8, 16, 32, 64, 128)
-QUICK_SCAN = "hasab"
+
+
+def _smallest(ids):
+    from ..registry import module_path
+    return min(ids, key=lambda i: (module_path(i).stat().st_size, i))
+
+
+def quick_selection() -> tuple[tuple[str, ...], str]:
+    """What ``bench --quick`` measures, chosen without naming a derivation: for each witness family the
+    smallest derivation module (source size, a proxy for its cost) whose source declares such a witness,
+    and the smallest module that provides closed forms for the stiffness scan."""
+    from ..registry import module_names, module_path, providing
+    ids = [m.replace("_", "-") for m in module_names()]
+    sources = {i: module_path(i).read_text(encoding="utf-8") for i in ids}
+    picked = {_smallest([i for i in ids if f"{cls.__name__}(" in sources[i]])
+              for cls in FAMILIES if any(f"{cls.__name__}(" in sources[i] for i in ids)}
+    return tuple(sorted(picked)), _smallest(providing("forms"))
 
 
 def _slug(text):
@@ -211,9 +226,11 @@ def _section_forms(selector, progress):
 
 def generate(docs=Path("docs"), *, quick=False, progress=lambda msg: None) -> list[Path]:
     """Run the benchmark and write ``docs/numerics.md`` and its figures; return the files written
-    (timings alone never cause a write).  ``quick`` benchmarks only ``QUICK_SELECTORS`` with fewer methods."""
+    (timings alone never cause a write).  ``quick`` benchmarks only :func:`quick_selection` with fewer
+    methods."""
     docs = Path(docs)
-    selectors = QUICK_SELECTORS if quick else (None,)
+    quick_ids, quick_scan = quick_selection() if quick else ((None,), None)
+    selectors = quick_ids
     bench = Bench()
     for sel in selectors:
         part = run_bench(sel, quick=quick, progress=progress)
@@ -230,7 +247,7 @@ def generate(docs=Path("docs"), *, quick=False, progress=lambda msg: None) -> li
              "its reported bound holds; and the stiff discriminant forms of Scheeffer IX.", ""]
     lines += _section_bench(bench, figures)
     lines += _section_orders(selectors[0] if quick else None, figures, progress, quick)
-    lines += _section_forms(QUICK_SCAN if quick else None, progress)
+    lines += _section_forms(quick_scan, progress)
     progress("the solver near bifurcation densities")
     lines += [conditioning_markdown(conditioning_rows(CASES[:1], (1e-4, 1e-8)) if quick else conditioning_rows())]
     lines += ["## 5. The discriminant forms of Scheeffer IX", "",

@@ -1,9 +1,9 @@
 """The main job's pictures, ``docs/figures/*.png``, drawn from committed data.
 
 A picture (:class:`Figure`) is drawn from JSON files under ``docs/`` that another step of the main
-job wrote and stamped (the phase diagrams of :mod:`symfloat.report.phase_data`, Scheeffer IX's grid,
-a report of that derivation: :mod:`symfloat.derivations._ix_figure`), never from a new computation.  Its PNG carries a text chunk
-``Fingerprint``: the digest of the data, the code that draws it and Matplotlib's version.  The main
+job wrote and stamped (the phase diagrams of :mod:`symfloat.report.phase_data`, and the pictures the
+derivations provide with ``provides("figure", Figure(...))`` from their own reports), never from a new
+computation.  Its PNG carries a text chunk ``Fingerprint``: the digest of the data, the code that draws it and Matplotlib's version.  The main
 job redraws a picture only when that differs; Matplotlib writes the PNG without ``Software`` and
 without a date, so the same data drawn again give the same bytes.
 """
@@ -11,39 +11,20 @@ from __future__ import annotations
 
 import io
 import json
-from collections.abc import Callable
-from dataclasses import dataclass
 from pathlib import Path
 
+from ..model.derivation import Figure
 from .files import write_atomic
 from .stamp import digest
 
 __all__ = ["Figure", "main_job_figures", "fingerprint", "png_bytes", "recorded_fingerprint", "draw", "write_figures"]
 
 
-@dataclass(frozen=True)
-class Figure:
-    """A picture, ``docs/figures/<filename>`` (PNG): ``draw(*data)`` gets the JSON files ``data`` (paths
-    under ``docs/``) parsed and returns a Matplotlib figure; ``code`` are the source files that decide
-    its look (with the data, its fingerprint)."""
-
-    filename: str
-    data: tuple[str, ...]
-    draw: Callable[..., object]
-    code: tuple = ()
-
-
-def _ix_grid(grid):
-    from ..derivations._ix_figure import grid_figure
-    return grid_figure(grid)
-
-
 def main_job_figures() -> list[Figure]:
-    """The pictures of the main job: the phase diagrams and Scheeffer IX's grid."""
+    """The pictures of the main job: the phase diagrams and the pictures the derivations provide."""
+    from ..registry import provided
     from .phase_data import phase_figures
-    root = Path(__file__).resolve().parents[1]
-    return [*phase_figures(), Figure("scheeffer-ix-grid.png", ("scheeffer-ix-grid.json",), _ix_grid,
-                                     code=(root / "derivations" / "_ix_figure.py",))]
+    return [*phase_figures(), *(figure for _, figure in provided("figure"))]
 
 
 def _data(figure, docs: Path) -> list[dict]:

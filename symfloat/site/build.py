@@ -88,7 +88,15 @@ def _index(records: Records, with_figures: bool) -> str:
         "|---|---:|---:|---:|---:|---:|", *rows, "",
         "```{toctree}", ":maxdepth: 1", "", "edition/index", "errata/index", "notebooks/index",
         *([FIGURES] if with_figures else []),
-        *(["scheeffer-ix-grid"] if records.ix_grid else []), "numerics", "about", "```", ""])
+        *(Path(name).stem for name in records.reports), "numerics", "about", "```", ""])
+
+
+def _reports(docs: Path) -> tuple[str, ...]:
+    """The Markdown documents the derivations add to the main job's output (``provides("report", ...)``,
+    e.g. Scheeffer IX's grid) that are present under *docs*, in the registry's order."""
+    from ..registry import provided
+    return tuple(r.filename for _, r in provided("report")
+                 if r.filename.endswith(".md") and (docs / r.filename).is_file())
 
 
 def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
@@ -97,7 +105,7 @@ def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
     slugs = [slug(e["id"]) for e in records.errata]
     if len(set(slugs)) != len(slugs):
         raise SiteError("two errata ids give the same page name")
-    records.ix_grid = (docs / "scheeffer-ix-grid.md").is_file()     # a document the main job adds
+    records.reports = _reports(docs)
     found = pictures(docs)
     files = {"conf.py": _CONF, "index.md": _index(records, bool(found)), "_static/symfloat.css": _asset("symfloat.css"),
              "_static/symfloat.js": _asset("symfloat.js"),
@@ -105,8 +113,8 @@ def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
              "numerics.md": (docs / "numerics.md").read_text(encoding="utf-8")}
     if found:
         files[f"{FIGURES}.md"] = figures_page(found, records.notebooks)
-    if records.ix_grid:
-        files["scheeffer-ix-grid.md"] = (docs / "scheeffer-ix-grid.md").read_text(encoding="utf-8")
+    for name in records.reports:
+        files[name] = (docs / name).read_text(encoding="utf-8")
     keys = [k for k in SOURCES if any(f["source"] == k for f in records.formulas)]
     files["edition/index.md"] = "\n".join(
         ["# The annotated edition", "", "One page per source: the transcription with each printed formula "

@@ -1,9 +1,9 @@
 """The derivations in pictures: the page of the pictures the main job draws, and the notebooks they concern.
 
 The pictures and their data are committed by ``symfloat run`` (:mod:`symfloat.report.figures`): the phase
-diagrams ``docs/figures/phase-*.png`` from ``docs/figures/phase-*.json`` and Scheeffer IX's case tables
-against the solver ``docs/figures/scheeffer-ix-grid.png`` from ``docs/scheeffer-ix-grid.json``.  The
-captions say what is drawn, read from the same data; nothing is computed or drawn here.
+diagrams ``docs/figures/phase-*.png`` from ``docs/figures/phase-*.json``, and the pictures the derivations
+provide (``provides("figure", ...)``, e.g. Scheeffer IX's case tables against the solver), each with the
+caption its derivation writes from the same data.  Nothing is computed or drawn here.
 """
 from __future__ import annotations
 
@@ -48,29 +48,19 @@ def _phase(docs: Path, key: str, title: str) -> Picture | None:
     return Picture(f"picture-phase-{key}", f"phase-{key}.png", f"{title}: phase diagram", caption, derivations)
 
 
-def _ix(docs: Path) -> Picture | None:
-    data, png = docs / "scheeffer-ix-grid.json", docs / "figures" / "scheeffer-ix-grid.png"
-    if not (data.is_file() and png.is_file()):
+def _provided(docs: Path, did: str, figure) -> Picture | None:
+    data, png = [docs / name for name in figure.data], docs / "figures" / figure.filename
+    if not (all(p.is_file() for p in data) and png.is_file()):
         return None
-    cells = json.loads(data.read_text(encoding="utf-8"))["cells"]
-    grid = [c for c in cells if not c["boundary"]]
-    bad = sum(not c["agree"] for c in cells)
-    caption = (
-        f"The long rectangular log (Scheeffer IX): its section a × b, density s against a/b. Each of the "
-        f"{len(grid)} grid cells is coloured by the number of stable positions the solver finds in the section "
-        f"(one per symmetry class; the dots are the {len(cells) - len(grid)} cells a relative 1e-3 in (a/b)² "
-        f"either side of a printed boundary). The black lines are the boundaries of the printed case tables, "
-        f"evaluated from the derivation's readings of (132a), (132b), the condition of IX.C, (165) and n₁ of "
-        f"(156) with t of (147); for s < 1/2 the text's rule (1 − s for s) where it prints one side only. "
-        f"{bad} of {len(cells)} cells disagree with the tables (outlined in red). Data: "
-        f"`docs/scheeffer-ix-grid.json`, written by `symfloat run` with the [table of the grid](scheeffer-ix-grid.md).")
-    return Picture("picture-scheeffer-ix-grid", "scheeffer-ix-grid.png", "Scheeffer IX: the case tables against "
-                   "the solver", caption, ("scheeffer-ix",))
+    caption = figure.caption(*(json.loads(p.read_text(encoding="utf-8")) for p in data))
+    return Picture(f"picture-{Path(figure.filename).stem}", figure.filename, figure.title, caption, (did,))
 
 
 def pictures(docs: Path) -> list[Picture]:
     """The committed pictures with their captions, in the page's order."""
-    found = [_phase(docs, key, title) for key, title in _PHASES] + [_ix(docs)]
+    from ..registry import provided
+    found = [_phase(docs, key, title) for key, title in _PHASES]
+    found += [_provided(docs, did, figure) for did, figure in provided("figure")]
     return [p for p in found if p is not None]
 
 

@@ -44,7 +44,7 @@ class Records:
     errata: list[dict]                      # docs/errata.json
     notebooks: dict[str, Path]              # derivation id -> executed notebook
     cells: dict[str, FormulaCell] = field(default_factory=dict)     # formula id -> its notebook cell
-    ix_grid: bool = False                   # docs/scheeffer-ix-grid.md is there and shown
+    reports: tuple = ()                     # Markdown documents the derivations provide, present and shown
 
     def formula(self, fid: str) -> dict:
         return self._by_id[fid]
