@@ -113,3 +113,35 @@ def test_substitutions_go_in_order_as_subs_does():
     k = sp.Symbol("_k")
     _, r = route([((M, sp.Integral(x ** 2, (x, -a / 2, a / 2)) * b), M)], {a: (1, 3), b: (1, 3)})
     assert r.outcome("swap", (sp.Subs(M, (a, b, k), (k, a, b)), a * b ** 3 / 12)).agrees
+
+
+def ngon():
+    """The regular n-gon of circumradius r, one of its n triangles: X from 0 to the apothem r cos(pi/n),
+    |Y| < X tan(pi/n).  T, its second moment about a diameter, is half the polar moment (the n-gon's
+    moments about all axes through the centre are equal for n >= 3): n/2 times the integral of X^2 + Y^2
+    over one triangle (Scheeffer VI.E's T_1 of (87)); its limit n -> oo is the disc's pi r^4/4 (VI.B)."""
+    n, r, X, Y = sp.symbols("n r X Y", positive=True)
+    part = sp.Integral((X ** 2 + Y ** 2) / 2, (Y, -X * sp.tan(sp.pi / n), X * sp.tan(sp.pi / n)), (X, 0, r * sp.cos(sp.pi / n)))
+    return route([((T, n * part), T)], {n: (3, 12), r: (1, 2)}), n, r
+
+
+def test_a_limit_sympy_cannot_take_is_extrapolated_numerically():
+    # SymPy raises on Limit(Integral with n in its bounds, n, oo); mpmath.limit extrapolates f(2^k + 1).
+    # Expected: pi r^4/4, the disc's polar-free second moment about a diameter (Scheeffer VI.B/VI.E).
+    ((_, r_route), n, r) = ngon()
+    out = r_route.outcome("circle", (sp.Limit(T, n, sp.oo), sp.pi * r ** 4 / 4))
+    assert out.agrees and out.records[1]["rel_error"] < 1e-20, out.note
+    # mutation: pi r^4/4 -> pi r^4/5 is refuted (relative difference 1/5)
+    wrong = r_route.outcome("circle", (sp.Limit(T, n, sp.oo), sp.pi * r ** 4 / 5))
+    assert not wrong.agrees and abs(wrong.records[1]["rel_error"] - sp.Rational(1, 5)) < 1e-12
+
+
+def test_a_substitution_into_a_section_that_collapses_is_its_limit():
+    # the mean height of the strip 0 <= y <= p x over 0 <= x <= 1 is p/3 ... at p = 0 the strip is a line and
+    # the ratio of its integrals is 0/0; the route takes the limit p -> 0+ (the mean height 0), and a claim
+    # of 1/10 there is refuted
+    p = sp.Symbol("p", positive=True)
+    d, r = route([((M, sp.Integral(y, (y, 0, p * x), (x, 0, 1)) / sp.Integral(1, (y, 0, p * x), (x, 0, 1))), M)],
+                 {p: (0, 1)})
+    assert r.outcome("mean", (sp.Subs(M, p, 0), 0)).agrees
+    assert not r.outcome("mean", (sp.Subs(M, p, 0), sp.Rational(1, 10))).agrees

@@ -97,27 +97,71 @@ class _NestedQuadPrinter(MpmathPrinter):
             body = f"{self._module_format('mpmath.quad')}(lambda {v}: {body}, ({lo}, {hi}), method='{rule}'{cap})"
         return body
 
+    def _print_NumericLimit(self, e):
+        expr, z, z0, direction = e.args
+        body = f"lambda {self._print(z)}: {self._print(expr)}"
+        lim = self._module_format("mpmath.limit")
+        if z0 in (sp.oo, -sp.oo):
+            return f"{lim}({body}, {'+' if z0 == sp.oo else '-'}{self._module_format('mpmath.inf')}, exp=True)"
+        return f"{lim}({body}, {self._print(z0)}, direction={int(direction)}, exp=True)"
+
 
 class _RoughQuadPrinter(_NestedQuadPrinter):
     maxdegree = 2
 
 
+class NumericLimit(sp.Expr):
+    """``Limit(expr, z, z0, dir)`` that SymPy cannot take (a limit of an integral whose limits depend on
+    ``z``: the regular n-gon as n -> oo), left to numeric extrapolation: ``mpmath.limit`` (Richardson
+    and Shanks) from the values at z = 2^k + 1 towards infinity, z0 +- 1/(2^k + 1) towards a point."""
+
+    is_extended_real = True                 # the limit of a real quantity (a moment, an area)
+
+    def __new__(cls, expr, z, z0, direction):
+        return sp.Expr.__new__(cls, expr, z, z0, direction)
+
+    @property
+    def free_symbols(self):
+        expr, z, z0, _ = self.args
+        return (expr.free_symbols - {z}) | z0.free_symbols
+
+
+def _numeric_limit(e: sp.Limit):
+    expr, z, z0, direction = e.args
+    return NumericLimit(_carried_out(expr), z, z0, sp.Integer(-1 if str(direction) == "-" else 1))
+
+
 def _carried_out(m):
-    """Derivatives, substitutions and sums of *m* carried out exactly (integrals are left to
-    quadrature): they must be done before a sample point replaces their variables."""
+    """Derivatives, substitutions, sums and limits of *m* carried out exactly (integrals are left to
+    quadrature): they must be done before a sample point replaces their variables.  A limit SymPy
+    cannot take is left to :class:`NumericLimit`."""
     if isinstance(m, sp.MatrixBase):
         return m.applyfunc(_carried_out)
     if not m.has(sp.Derivative, sp.Subs, sp.Sum, sp.Limit):
         return m
-    return m.replace(lambda e: isinstance(e, sp.Subs), _substituted).doit(integrals=False)
+    m = m.replace(lambda e: isinstance(e, sp.Subs), _substituted)
+    try:
+        return m.doit(integrals=False)
+    except NotImplementedError:              # "Don't know how to calculate the mrv of Integral(...)"
+        return m.replace(lambda e: isinstance(e, sp.Limit), _numeric_limit).doit(integrals=False)
+
+
+def _collapsed(expr) -> bool:
+    """Has *expr* an integral over an interval of length zero (a tilted section at zero tilt), which
+    a ratio of such integrals turns into 0/0?"""
+    return any(len(lim) == 3 and (lim[1] - lim[2]).is_zero for i in expr.atoms(sp.Integral) for lim in i.limits)
 
 
 def _substituted(e: sp.Subs):
     """A substitution carried out; where a term of the definitions is singular at the point
-    (``6 a z (... - 2 a (1 - s)/(3 z))`` at z = 0) but the whole is not, its limit there."""
-    value = e.expr.doit(integrals=False).subs(list(zip(e.variables, e.point)))   # in order, as Subs.doit
-    if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo) and len(e.variables) == 1 and not e.expr.has(sp.Integral):
-        return sp.limit(e.expr.doit(integrals=False), e.variables[0], e.point[0])
+    (``6 a z (... - 2 a (1 - s)/(3 z))`` at z = 0, or an integral over a section that shrinks to a line
+    at zero tilt) but the whole is not, its limit there."""
+    inner = _carried_out(e.expr)
+    value = inner.subs(list(zip(e.variables, e.point)))                  # in order, as Subs.doit
+    if len(e.variables) == 1 and (value.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or _collapsed(value)):
+        if inner.has(sp.Integral):                      # the limit of a quadrature, by extrapolation
+            return NumericLimit(inner, e.variables[0], sp.sympify(e.point[0]), sp.Integer(1))
+        return sp.limit(inner, e.variables[0], e.point[0])
     return value
 
 
@@ -137,7 +181,7 @@ def _numeric(expr, point, dps, printer=_NestedQuadPrinter):
     """The value of *expr* at *point* (exact numbers) to *dps* digits; integrals by nested quadrature.
     An integral that is closed at *point* (a centroid inside a moment's integrand) is computed once,
     the smallest first, and its value inserted where it occurs."""
-    if not expr.has(sp.Integral):
+    if not expr.has(sp.Integral, NumericLimit):
         v = sp.N(expr.xreplace(point), dps + 5, chop=True)   # an exact zero stays zero
         if v.free_symbols:
             raise ValueError(f"free symbols {sorted(map(str, v.free_symbols))} remain")
@@ -152,7 +196,7 @@ def _numeric(expr, point, dps, printer=_NestedQuadPrinter):
     for i in closed:
         values[i] = _quadrature(i.xreplace(values), point, dps, printer)
     rest = expr.xreplace(values)
-    return _quadrature(rest, point, dps, printer) if rest.has(sp.Integral) else _numeric(rest, point, dps)
+    return _quadrature(rest, point, dps, printer) if rest.has(sp.Integral, NumericLimit) else _numeric(rest, point, dps)
 
 
 def _quadrature(expr, point, dps, printer):
@@ -178,6 +222,11 @@ def _magnitude(expr):
     its evaluation adds, against which a cancelling result's rounding is measured."""
     if isinstance(expr, sp.Integral):
         return sp.Integral(_magnitude(expr.function), *expr.limits)
+    if isinstance(expr, NumericLimit):      # the size of the terms where the extrapolation samples
+        inner, z, z0, direction = expr.args
+        if z0 in (sp.oo, -sp.oo):
+            return NumericLimit(_magnitude(inner), z, z0, direction)
+        return _magnitude(inner).xreplace({z: z0 + direction / sp.Integer(3)})     # its first sample
     if expr.is_Add:
         return sp.Add(*[_magnitude(t) for t in expr.args])
     if expr.is_Mul:
