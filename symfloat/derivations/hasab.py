@@ -387,10 +387,13 @@ d.witness(Computed("threshold-upright", "upper zero of the clipped metacentric h
 
 
 # ---- predictions: the long square prism lying on a face, and standing upright (the remark) ---------------------
+CONDITION = d.evaluator("condition", (rho,), 1)        # sign(rho^2 - rho + 1/6), the printed condition
+REMARK = d.evaluator("remark", (l,), 1, corrected=True)  # (3l + sqrt(9l^2 - 6))/(6l), the radical restored
+
+
 def _lying(rv, up):
     """Heel about the long axis: stable iff rho^2 - rho + 1/6 > 0 (the condition and its thresholds)."""
-    q = rv * rv - rv + Fraction(1, 6)
-    return Prediction(("condition", "thresholds", "Delta-E"), up, "stable" if q > 0 else "unstable",
+    return Prediction(("condition", "thresholds", "Delta-E"), up, "stable" if CONDITION(rv) > 0 else "unstable",
                       note="lying on a face (edges l horizontal), heel about the long axis")
 
 
@@ -421,8 +424,7 @@ def predict(scene):
     for k in range(3):
         i, j = [m_ for m_ in range(3) if m_ != k]
         if dims[i] == dims[j] and dims[k] ** 2 > Fraction(3, 2) * dims[i] ** 2:
-            lv = float(dims[k] / dims[i])
-            upper = (3 * lv + math.sqrt(9 * lv ** 2 - 6)) / (6 * lv)      # remark
+            upper = REMARK(float(dims[k] / dims[i]))
             up_lying, up_upright = [0.0] * 3, [0.0] * 3
             up_lying[i], up_upright[k] = 1.0, 1.0
             return [_lying(rv, tuple(up_lying)),

@@ -323,6 +323,9 @@ W("section-area", "clipped immersed volume over the length 2a", ("section",),
 
 
 # ---- predictions: the box floating upright ------------------------------------------------------------------------
+E_PRINTED = dv.evaluator("e", (b, c, d), 1)     # e = b^2/(6c^2) - d/(2c) (1 - d/(2c)) as printed
+
+
 def predict(scene):
     """Each edge direction of the box vertical in turn (height 2c, breadth 2b the shorter, length 2a the longer of
     the other two edges, draught d = 2c s): stable iff e = b^2/(6c^2) - d/(2c)(1 - d/(2c)) > 0 (the criterion
@@ -335,7 +338,7 @@ def predict(scene):
     out = []
     for k, i, j in box_uprights(dims):
         bv, cv = min(dims[i], dims[j]) / 2, dims[k] / 2
-        ev = bv ** 2 / (6 * cv ** 2) - sv * (1 - sv)
+        ev = E_PRINTED(bv, cv, 2 * cv * sv)
         up = [0.0] * 3
         up[k] = 1.0
         out.append(Prediction(("e", "criterion", "z_M"), tuple(up),

@@ -1100,9 +1100,9 @@ def _toward(phi_, k, i):
 def _square_predictions(av, bv, sv, up_of, cube):
     """Upright and oblique positions of the square prism (edge av, height bv) as (75)/(78), (78b), (77)/(78a),
     (78d)/(78e) print them; for the cube (av = bv) as VI.D prints them.  up_of(phi) is the up vector tilted by
-    phi about an axis parallel to a base edge (omega = 0).  av, bv, sv are Fractions: the conditions are exact."""
-    q, p = (av / bv) ** 2, sv * (1 - sv)
-    margin = q - 6 * p                                   # (75): (a/b)^2 > 6 s (1 - s); cube-78: 1 > 6 s (1 - s)
+    phi about an axis parallel to a base edge (omega = 0).  av, bv, sv are Fractions: the conditions, read from
+    the quoted readings, are decided exactly."""
+    margin = MARGIN_75(av, bv, sv)                       # (75): (a/b)^2 - 6 s (1 - s); the cube: 1 - 6 s (1 - s)
     upright = ("cube-78", "79") if cube else \
         ("75", "78") if margin > 0 else ("75-unstable",) if margin < 0 else ("75",)
     out = [Prediction(upright, up_of(0.0),
@@ -1110,8 +1110,8 @@ def _square_predictions(av, bv, sv, up_of, cube):
                       note="upright (axis vertical): Duhamel's condition as printed")]
     if margin >= 0:
         return out
-    phi1 = math.atan(math.sqrt(12 * p / q - 2))          # (78b); the cube: (81a) read with 6 for the scan's b
-    bound = min(sv, 1 - sv) ** 2 / (6 * p - q)           # (78d)/(82): sin^2(45 deg + omega) <= bound
+    phi1 = math.atan(TAN_78B(float(av), float(bv), float(sv)))   # (78b); the cube: (81a) corrected, the same
+    bound = BOUND_78D(av, bv, sv)                        # (78d)/(82): sin^2(45 deg + omega) <= bound
     up = up_of(phi1)
     if bound >= 1:                                       # (77)/(78a): every axis direction, the whole ring
         names = ("78a", "77", "78b") if not cube else \
@@ -1132,26 +1132,35 @@ def _square_predictions(av, bv, sv, up_of, cube):
     return out                                           # (78e): no oblique position in the first domain
 
 
+MARGIN_75 = d.evaluator("75", (a, b, s), 0)
+TAN_78B = d.evaluator("78b", (a, b, s), 1)
+BOUND_78D = d.evaluator("78d", (a, b, s), 1)
+
+
+T1_87 = d.evaluator("87-cos2", (r, n), 1)            # (87): T_1 of the regular n-gon of circumradius r
+TAN2_54 = d.evaluator("54-again", (F, b, s, n), 1)   # (54) again (VI.F): tg^2 phi_1 at the base area F
+UM_88 = d.evaluator("88", (r, n, om), 1)             # (88): u_m at the axis angle omega
+
+
 def _ngon_predictions(n_, av, bv, sv):
     """Regular n-gon prism (n >= 5, edge av, length bv): upright by T_1 - V_1 e_1 with T_1 of (87); the oblique
     ring by (54) again (VI.F) within the first domain of (88) with the bound b min(s, 1-s) / u_m."""
     r_ = av / (2 * math.sin(math.pi / n_))
-    F_ = n_ * r_ ** 2 / 2 * math.sin(2 * math.pi / n_)                    # 'area'
-    T_ = F_ * r_ ** 2 / 12 * (2 + math.cos(2 * math.pi / n_))              # (87)
-    duhamel = T_ - F_ * bv * sv * bv * (1 - sv) / 2
+    F_ = n_ * r_ ** 2 / 2 * math.sin(2 * math.pi / n_)                    # the base area
+    duhamel = T1_87(r_, n_) - F_ * bv * sv * bv * (1 - sv) / 2           # T_1 - V_1 e_1, e_1 = b (1 - s)/2
     out = [Prediction(("87-cos2", "duhamel-decreasing"), (0.0, 0.0, 1.0),
                       "stable" if duhamel > 0 else "unstable" if duhamel < 0 else None,
                       note="upright: T_1 - V_1 e_1 with T_1 of (87)")]
-    tan2_ = F_ * bv ** 2 * sv * (1 - sv) / T_ - 2                         # (54) again
+    tan2_ = TAN2_54(F_, bv, sv, n_)
     if duhamel >= 0 or tan2_ <= 0:
         return out
     t1_, m_ = math.sqrt(tan2_), bv * min(sv, 1 - sv)
-    # (88): u_m = r sin((n-2) pi/(2n) + omega) runs from r cos(pi/n) (axis parallel to a side) up to r
-    if t1_ > m_ / (r_ * math.cos(math.pi / n_)):
+    # (88): u_m runs from r cos(pi/n) (omega = 0, the axis parallel to a side) up to r (omega = pi/n)
+    if t1_ > m_ / UM_88(r_, n_, 0.0):
         return out
     phi1 = math.atan(t1_)
     ang = math.pi / n_ + (math.pi if sv > 0.5 else 0.0)   # a side dips (s > 1/2) or rises (s < 1/2)
-    full_ring = t1_ <= m_ / r_
+    full_ring = t1_ <= m_ / UM_88(r_, n_, math.pi / n_)
     out.append(Prediction(("54-again", "88"), (math.sin(phi1) * math.cos(ang), math.sin(phi1) * math.sin(ang),
                                                math.cos(phi1)), "stable", "ring",
                           note="oblique ring of the first domain" + ("" if full_ring else

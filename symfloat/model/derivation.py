@@ -8,6 +8,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from fractions import Fraction
 
 import sympy as sp
 
@@ -236,6 +237,46 @@ class Derivation:
             if s.name == name:
                 return s
         raise KeyError(f"{self.id} has no step {name!r}")
+
+    def get_printed(self, name) -> Printed:
+        for p in self.printed:
+            if p.name == name:
+                return p
+        raise KeyError(f"{self.id} quotes no printed formula {name!r}")
+
+    def evaluator(self, name, symbols, member, corrected=False):
+        """Member *member* of the reading of printed formula *name* (of its correction, with *corrected*),
+        derived quantities replaced by their derived values, as a function of *symbols*: exact (a SymPy
+        number) when every argument is rational (int, Fraction, SymPy Rational), else a float.  A
+        predictor decides with the readings the print is checked by instead of typing them again, so a
+        reading that changes changes the prediction (tests/test_predictors_read.py)."""
+        p = self.get_printed(name)
+        reading = p.erratum.corrected_reading if corrected else p.reading
+        if reading is None:
+            raise ValueError(f"{self.id}/{name}: no {'corrected ' if corrected else ''}reading to evaluate")
+        expr = sp.sympify(members(reading)[member])
+        results = self.results()
+        for _ in range(len(results) + 1):                       # derived values may use derived values
+            done = expr.xreplace(results)
+            if done == expr:
+                break
+            expr = done
+        expr = expr.replace(lambda e: isinstance(e, sp.Subs), lambda e: e.doit())
+        symbols = tuple(symbols)
+        free = expr.free_symbols - set(symbols)
+        if free:
+            raise ValueError(f"{self.id}/{name}: member {member} depends on {sorted(map(str, free))} as well")
+        rows = list(expr) if isinstance(expr, sp.MatrixBase) else None
+        floats = sp.lambdify(symbols, rows if rows is not None else expr, "math")
+
+        def value(*args):
+            if all(isinstance(x, (int, Fraction, sp.Rational)) for x in args):
+                at = {q: sp.Rational(x.numerator, x.denominator) if isinstance(x, Fraction) else sp.Rational(x)
+                      for q, x in zip(symbols, args)}
+                return tuple(r.xreplace(at) for r in rows) if rows is not None else expr.xreplace(at)
+            v = floats(*(float(x) for x in args))
+            return tuple(v) if rows is not None else v
+        return value
 
     def results(self) -> dict:
         """Quantity symbol -> derived value, from the steps that establish results."""

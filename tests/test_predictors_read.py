@@ -1,0 +1,68 @@
+"""Predictors decide with the quoted readings (``Derivation.evaluator``), not with conditions typed again
+(issue 13, item 3).  Expected values: the printed formulas named, evaluated by hand from the print."""
+from __future__ import annotations
+
+import copy
+import dataclasses
+from fractions import Fraction
+
+import pytest
+import sympy as sp
+
+from symfloat.registry import load
+
+D, CF = load("scheeffer-vi-cf")
+
+
+def test_an_evaluator_is_exact_on_rationals_and_float_otherwise():
+    # (75): (a/b)^2 > 6 s (1 - s); at a = 1, b = 2, s = 3/10: 1/4 - 126/100 = -101/100 (the upright square
+    # prism is unstable there)
+    assert CF.MARGIN_75(Fraction(1), Fraction(2), Fraction(3, 10)) == sp.Rational(-101, 100)
+    assert abs(CF.MARGIN_75(1.0, 2.0, 0.3) + 1.01) < 1e-15
+    # (78d) as printed, s < 1/2: s^2 / (6 s (1 - s) - (a/b)^2) = (9/100) / (101/100) = 9/101
+    assert CF.BOUND_78D(Fraction(1), Fraction(2), Fraction(3, 10)) == sp.Rational(9, 101)
+
+
+def test_the_correction_is_read_when_asked():
+    # (81a) prints tg^2 phi_1 = 2 {b s (1 - s) - 1}; the erratum reads 6 for the scan's b: at s = 1/2 and b = 1
+    # the print gives 2 (1/4 - 1) = -3/2, the correction 2 (6/4 - 1) = 1
+    s, b = CF.s, CF.b
+    assert D.evaluator("81a", (b, s), 1)(1, Fraction(1, 2)) == sp.Rational(-3, 2)
+    assert D.evaluator("81a", (s,), 1, corrected=True)(Fraction(1, 2)) == 1
+
+
+def test_the_evaluator_follows_a_mutated_reading():
+    # mutation: 6 s (1 - s) -> 5 s (1 - s) in (75); at a/b = 1/2, s = 3/10 the margin becomes 1/4 - 105/100
+    a, b, s = CF.a, CF.b, CF.s
+    d = copy.copy(D)
+    d.printed = [dataclasses.replace(p, reading=((a / b) ** 2 - 5 * s * (1 - s), p.reading[1])) if p.name == "75"
+                 else p for p in D.printed]
+    assert d.evaluator("75", (a, b, s), 0)(1, 2, Fraction(3, 10)) == sp.Rational(-4, 5)
+
+
+def test_a_member_with_other_quantities_is_refused():
+    # (87-cos2), member 0 is T_1 itself with F_1: asking for it in r alone names what is missing
+    with pytest.raises(ValueError, match="depends on"):
+        D.evaluator("87", (CF.r,), 1)
+
+
+def test_the_ngon_evaluators_are_the_printed_closed_forms():
+    # (87): T_1 = F_1 r^2/12 (2 + cos(2 pi/n)), F_1 = n r^2/2 sin(2 pi/n); the square (n = 4, r = 1): F_1 = 2,
+    # T_1 = 2/12 * 2 = 1/3 (= a^4/12 with a = sqrt 2, VI.E)
+    assert abs(CF.T1_87(1.0, 4) - 1 / 3) < 1e-15
+    # (88): u_m = r sin((n - 2) pi/(2n) + omega): r cos(pi/n) at omega = 0, r at omega = pi/n
+    import math
+    assert abs(CF.UM_88(2.0, 6, 0.0) - 2 * math.cos(math.pi / 6)) < 1e-15
+    assert abs(CF.UM_88(2.0, 6, math.pi / 6) - 2.0) < 1e-15
+
+
+def test_hasab_and_metazentrum_predictors_read_their_conditions():
+    import math
+    _, hasab = load("hasab")
+    # the printed condition rho^2 - rho + 1/6 > 0 (hasab, solution, stability): -1/12 at rho = 1/2, unstable
+    assert hasab.CONDITION(Fraction(1, 2)) == -1 and hasab.CONDITION(Fraction(1, 10)) == 1
+    # the remark with its radical restored (the erratum): (3l + sqrt(9l^2 - 6))/(6l) at l = 2
+    assert abs(hasab.REMARK(2.0) - (6 + math.sqrt(30)) / 12) < 1e-15
+    _, meta = load("metazentrum")
+    # e = b^2/(6c^2) - d/(2c)(1 - d/(2c)) as printed (L4): b = 1/2, c = 1, d = 1 gives 1/24 - 1/4 = -5/24
+    assert meta.E_PRINTED(Fraction(1, 2), Fraction(1), Fraction(1)) == sp.Rational(-5, 24)
