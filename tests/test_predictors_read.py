@@ -66,3 +66,18 @@ def test_hasab_and_metazentrum_predictors_read_their_conditions():
     _, meta = load("metazentrum")
     # e = b^2/(6c^2) - d/(2c)(1 - d/(2c)) as printed (L4): b = 1/2, c = 1, d = 1 gives 1/24 - 1/4 = -5/24
     assert meta.E_PRINTED(Fraction(1, 2), Fraction(1), Fraction(1)) == sp.Rational(-5, 24)
+
+
+def test_scheeffer_x_locates_the_roots_of_171_as_read():
+    import mpmath
+    import numpy as np
+    _, x = load("scheeffer-x")
+    # (172) as read: (4 + sqrt 2)/7 = 0.77345908...
+    assert abs(x.S172 - 0.7734590803390136) < 1e-15
+    # (171): 2T {z^2 + (1-s)^2} - z^3 (1-x) - z^2 (1-s), 2T = 1/6 + (1-x)^2 - x^4/12, z = 1 - x + x^3/6; at x = 1,
+    # s = 5/6: 2T = 1/12, z = 1/6: 1/12 (1/36 + 1/36) - 0 - 1/36 * 1/6 = 0 (the root at x = 1 of the note of (172))
+    assert x.f_num(1, Fraction(5, 6)) == 0
+    # the same function on floats, arrays and mpmath numbers
+    v = x.f_num(0.3, 0.77)
+    assert abs(x.f_num(np.array([0.3]), 0.77)[0] - v) < 1e-16
+    assert abs(float(x.f_num(mpmath.mpf("0.3"), mpmath.mpf("0.77"))) - v) < 1e-16

@@ -718,12 +718,9 @@ def _count_at_root(sv, flip, dps):
     return _vertices(floating_state(_cube1(dps), u, _n(sv, dps)), dps)
 
 
-def f_num(xx, ss):
-    """(171), left minus right side, for numeric x, s (used to locate its roots): mpmath numbers, floats or
-    numpy arrays alike."""
-    T2 = (1 + 6 * (1 - xx) ** 2 - xx ** 4 / 2) / 6
-    zz = 1 - xx + xx ** 3 / 6
-    return T2 * (zz ** 2 + (1 - ss) ** 2) - zz ** 3 * (1 - xx) - zz ** 2 * (1 - ss)
+# (171) as read, left minus right side with the printed 2T and z, for numeric x, s (its roots are located
+# with it): mpmath numbers, floats or numpy arrays alike
+f_num = d.evaluator("171", (xl, s), 1, row=2)
 
 
 ONE = (Case({}, label="unit cube"),)
@@ -777,7 +774,7 @@ computed("hex-GM", "sign of the metacentric height of the clipped cube, corner u
 
 
 # ==== prediction ==========================================================================================
-S172 = (4 + math.sqrt(2)) / 7
+S172 = float(d.evaluator("172", (), 1, row=0)())      # (172): (4 + sqrt 2)/7, as read
 
 
 def _roots_171_float(q):

@@ -244,17 +244,20 @@ class Derivation:
                 return p
         raise KeyError(f"{self.id} quotes no printed formula {name!r}")
 
-    def evaluator(self, name, symbols, member, corrected=False):
-        """Member *member* of the reading of printed formula *name* (of its correction, with *corrected*),
-        derived quantities replaced by their derived values, as a function of *symbols*: exact (a SymPy
-        number) when every argument is rational (int, Fraction, SymPy Rational), else a float.  A
-        predictor decides with the readings the print is checked by instead of typing them again, so a
-        reading that changes changes the prediction (tests/test_predictors_read.py)."""
+    def evaluator(self, name, symbols, member, corrected=False, row=None):
+        """Member *member* (its component *row*, for a matrix) of the reading of printed formula *name* (of
+        its correction, with *corrected*), derived quantities replaced by their derived values, as a
+        function of *symbols*: exact (a SymPy number) when every argument is rational (int, Fraction,
+        SymPy Rational), in mpmath when one is an mpmath number, elementwise for NumPy arrays, else a
+        float.  A predictor decides with the readings the print is checked by instead of typing them
+        again, so a reading that changes changes the prediction (tests/test_predictors_read.py)."""
         p = self.get_printed(name)
         reading = p.erratum.corrected_reading if corrected else p.reading
         if reading is None:
             raise ValueError(f"{self.id}/{name}: no {'corrected ' if corrected else ''}reading to evaluate")
         expr = sp.sympify(members(reading)[member])
+        if row is not None:
+            expr = expr[row]
         results = self.results()
         for _ in range(len(results) + 1):                       # derived values may use derived values
             done = expr.xreplace(results)
@@ -267,15 +270,25 @@ class Derivation:
         if free:
             raise ValueError(f"{self.id}/{name}: member {member} depends on {sorted(map(str, free))} as well")
         rows = list(expr) if isinstance(expr, sp.MatrixBase) else None
-        floats = sp.lambdify(symbols, rows if rows is not None else expr, "math")
+        target = rows if rows is not None else expr
+        compiled = {}
+
+        def numeric(kind, args):
+            if kind not in compiled:
+                compiled[kind] = sp.lambdify(symbols, target, kind)
+            v = compiled[kind](*args)
+            return tuple(v) if rows is not None else v
 
         def value(*args):
             if all(isinstance(x, (int, Fraction, sp.Rational)) for x in args):
                 at = {q: sp.Rational(x.numerator, x.denominator) if isinstance(x, Fraction) else sp.Rational(x)
                       for q, x in zip(symbols, args)}
                 return tuple(r.xreplace(at) for r in rows) if rows is not None else expr.xreplace(at)
-            v = floats(*(float(x) for x in args))
-            return tuple(v) if rows is not None else v
+            if any(type(x).__module__.startswith("mpmath") for x in args):
+                return numeric("mpmath", args)
+            if any(type(x).__module__ == "numpy" and getattr(x, "ndim", 0) for x in args):
+                return numeric("numpy", args)
+            return numeric("math", tuple(float(x) for x in args))
         return value
 
     def results(self) -> dict:
