@@ -1011,12 +1011,17 @@ def _upright(T_min, V_, e_, up):
                       "stable" if g > 0 else "unstable" if g < 0 else None, note="upright, (18) with the least moment")
 
 
+TAN2_54 = d.evaluator("54", (F1, b, T1, s), 1)                 # (54) as read: tg^2 phi_1
+BOUND_55 = d.evaluator("55", (b, s, utop, ubot), 1)            # (55) as read: the bound on tg phi_1
+
+
 def _first_region_tilt(F_, T_, h_, sv, um2):
     """(54) tan^2 phi_1 = F_1 b^2 s(1-s)/T_1 - 2 and the bound (55) tan phi_1 <= b(1-s)/u_m (s > 1/2; b s/u_m
-    for s < 1/2), um2 = u_m^2: the tilt phi_1, or None when there is none in the first rotation region."""
-    t2 = F_ * h_ ** 2 * sv * (1 - sv) / T_ - 2
-    m_ = h_ * (1 - sv) if sv > Fraction(1, 2) else h_ * sv
-    return math.atan(math.sqrt(t2)) if 0 < t2 and t2 * um2 <= m_ ** 2 else None
+    for s < 1/2), um2 = u_m^2, both evaluated from their readings (exactly for a box, whose numbers are
+    Fractions): the tilt phi_1, or None when there is none in the first rotation region."""
+    t2 = TAN2_54(F_, h_, T_, sv)
+    um = sp.sqrt(sp.Rational(um2.numerator, um2.denominator)) if isinstance(um2, Fraction) else math.sqrt(um2)
+    return math.atan(math.sqrt(float(t2))) if 0 < t2 and t2 <= BOUND_55(h_, sv, um, um) ** 2 else None
 
 
 def _isotropic_ring(F_, T_, h_, sv, um2_min, um2_max, up_of):
