@@ -27,6 +27,9 @@ EXACT = {                                               # closed forms at the ca
     "metacentric height": sp.Rational(5, 6) - sp.Rational(3, 10),
     "stability sign": sp.Integer(1),
     "stable": sp.Integer(1),
+    "B - G, x": sp.Integer(0),                          # G at the centre, B on the axis
+    "B - G, y": sp.Integer(0),
+    "B - G, z": sp.Rational(1, 5) - sp.Rational(1, 2),  # B at s c/2 = 1/5 above the bottom, G at c/2
 }
 
 
@@ -82,3 +85,60 @@ def test_an_unknown_quantity_is_one_clear_error():
 def test_rational_dimensions_reach_the_geometry_exactly():
     from symfloat.engine.floating_witness import number
     assert number(sp.Rational(1, 3) * A, {A: 3}, 40) == Fraction(1)
+
+
+# ---- a box tilted from its upright position: the wedges and the righting arm ------------------------------------
+# The box W x H (section, y and z) x L (along x), W = 2, H = 3, L = 1, half immersed, tilted by psi with tan psi =
+# 1/4 about the x axis (the -y side dips; the water line stays on the vertical sides).  The new water line passes
+# through the centre (the section is centrally symmetric): each wedge is the triangle (0, 0), (W/2, 0),
+# (W/2, W/2 tan psi) times L: volume L W^2 tan psi / 8 = 1/8, centroid W/3 from the axis and W tan psi/6 from
+# the old water plane (moments 1/12 and 1/96).  The righting arm of a wall-sided body is
+# sin psi (GM + BM tan^2 psi / 2), BM = W^2/(6H) = 2/9, GM = BM - H/4 = -19/36: -75/(144 sqrt 17).
+from symfloat.engine.floating_witness import MEASURED, TILT_QUANTITIES  # noqa: E402
+
+W_, H_, L_ = sp.symbols("W H L", positive=True)
+TILTED = Case({W_: 2, H_: 3, L_: 1, S: sp.Rational(1, 2)}, label="box 2 x 3 x 1, half immersed, tan psi = 1/4")
+TILT_EXACT = {
+    "immersed wedge volume": sp.Rational(1, 8), "emerged wedge volume": sp.Rational(1, 8),
+    "immersed wedge moment, horizontal": sp.Rational(1, 12), "emerged wedge moment, horizontal": sp.Rational(1, 12),
+    "immersed wedge moment, vertical": sp.Rational(1, 96), "emerged wedge moment, vertical": sp.Rational(1, 96),
+    "axis position": sp.Integer(0),
+    "righting arm": -sp.Rational(75, 144) / sp.sqrt(17),
+}
+
+
+def tilted(quantity, **kw):
+    kw.setdefault("up", (0, sp.Rational(1, 4), 1))
+    return FloatingWitness("tilt", "tilt", ("f",), (TILTED,), body=Body.box(L_, W_, H_), density=S,
+                           reference=(0, 0, 1), quantity=quantity, **kw)
+
+
+def test_every_tilt_quantity_is_tested():
+    assert set(TILT_EXACT) == set(TILT_QUANTITIES)
+
+
+@pytest.mark.parametrize("quantity", sorted(TILT_EXACT))
+def test_the_wedges_and_the_arm_of_a_tilted_box_agree_with_their_closed_forms(quantity):
+    w = tilted(quantity)
+    for method in w.methods:
+        assert abs(float(w.measure(TILTED, method)) - float(TILT_EXACT[quantity])) <= 1e-12, (quantity, method.name)
+
+
+def test_an_expression_in_measured_quantities():
+    # V B_z: the immersed volume (3, upright) times the height of B above G (-3/4): -9/4
+    m = MEASURED
+    w = FloatingWitness("VB", "VB", ("f",), (TILTED,), body=Body.box(L_, W_, H_), density=S,
+                        quantity=(m["immersed volume"] * m["B - G, z"], m["immersed volume"]))
+    assert [float(v) for v in w.measure(TILTED, w.methods[1])] == [-2.25, 3.0]
+    with pytest.raises(ValueError, match="needs the reference"):
+        FloatingWitness("x", "x", ("f",), (TILTED,), body=Body.box(L_, W_, H_), density=S, quantity="righting arm")
+
+
+def test_the_limit_of_the_arm_over_the_tilt_is_the_metacentric_height():
+    # GZ / psi -> GM = -19/36 as psi -> 0 (the wall-sided formula above), extrapolated from the clipped arm;
+    # a mutated expectation (-19/35) is refuted
+    psi = sp.Symbol("psi")
+    w = tilted("righting arm", up=(0, sp.sin(psi), sp.cos(psi)), limit=(psi, 1))
+    out = w.run({"f": (sp.Symbol("g"), -sp.Rational(19, 36)), "f#mutated": (sp.Symbol("g"), -sp.Rational(19, 35))})
+    assert out["f"].agrees and out["f"].records[1]["rel_error"] < 1e-35
+    assert not out["f#mutated"].agrees

@@ -22,12 +22,18 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from ..geometry.floating import box, floating_state, regular_prism, right_prism
+from ..geometry.floating import box, clip_below, draught, floating_state, regular_prism, right_prism, volume_centroid
 from .witness import MeasuredWitness, Precision
 
-__all__ = ["Body", "FloatingWitness", "QUANTITIES", "FLOATING_METHODS"]
+__all__ = ["Body", "FloatingWitness", "QUANTITIES", "TILT_QUANTITIES", "MEASURED", "FLOATING_METHODS",
+           "LIMIT_METHODS"]
 
 FLOATING_METHODS = (Precision(15, 1e-9), Precision(40, 1e-30))
+# the limit of a quantity over a power of the tilt, by Neville extrapolation: in float64 from the tilts 1e-3 ...
+# 1e-3/8 (truncation about 1e-12, rounding amplified to about 1e-9 for a second-order moment); at 50 digits
+# the clipping runs at 90 digits from 1e-10 ... 1e-10/32 (truncation about 1e-60, rounding about 1e-70)
+LIMIT_METHODS = (Precision(15, 1e-7), Precision(50, 1e-35))
+_LIMIT_STEPS = {15: (1e-3, 3, 15), 50: ("1e-10", 5, 90)}
 
 
 def number(expr, params, dps):
@@ -113,32 +119,164 @@ QUANTITIES = {
                        lambda st, body: _stability_sign(st)),
     "stable": ("1 when the metacentric height is positive, 0 when it is negative",
                lambda st, body: (1 + _stability_sign(st)) // 2),
+    **{f"B - G, {axis}": (f"{axis} component of B - G in the body frame",
+                          lambda st, body, k=k: st.B[k] - st.G[k]) for k, axis in enumerate("xyz")},
 }
+
+
+def _unit_vector(v):
+    n = sum(x * x for x in v) ** 0.5 if isinstance(v[0], float) else mpmath.sqrt(sum(x * x for x in v))
+    return tuple(x / n for x in v)
+
+
+def _dot3(p, q):
+    return sum(a * b for a, b in zip(p, q))
+
+
+@dataclass(frozen=True)
+class Tilt:
+    """The body tilted from a reference position ``r`` (unit up, draught ``t0``) to its floating state:
+    ``h0``, the horizontal of the old water plane towards the side that dips; ``alpha``, the line where the
+    old and the new water plane meet, as its coordinate along ``h0``; the immersed wedge (below the new
+    plane, above the old) and the emerged one (above the new, below the old), clipped from the body."""
+
+    r: tuple
+    t0: object
+    h0: tuple
+    alpha: object
+    arm: object
+    V3: object
+    c3: tuple
+    V4: object
+    c4: tuple
+
+
+def _tilt(body, st, reference, density):
+    r = _unit_vector(reference)
+    t0 = draught(body, r, density)[0]
+    u, ur = st.u, _dot3(st.u, r)
+    h0 = _unit_vector(tuple(ur * ri - ui for ri, ui in zip(r, u)))
+    hor = _unit_vector(tuple(ri - ur * ui for ri, ui in zip(r, u)))       # the same, in the new frame
+    imm = clip_below(clip_below(body, u, st.t), tuple(-x for x in r), -t0)
+    emg = clip_below(clip_below(body, tuple(-x for x in u), -st.t), r, t0)
+    V3, c3 = volume_centroid(imm)
+    V4, c4 = volume_centroid(emg)
+    return Tilt(r, t0, h0, (st.t - t0 * ur) / _dot3(u, h0), _dot3(tuple(b - g for b, g in zip(st.B, st.G)), hor),
+                V3, c3, V4, c4)
+
+
+# quantity -> (what it is, how to read it from the body tilted from the reference position at the same density)
+TILT_QUANTITIES = {
+    "righting arm": ("horizontal distance of B from G towards the side that dips (the arm of the couple)",
+                     lambda w: w.arm),
+    "axis position": ("where the old and the new water plane meet, along the old horizontal towards the dip",
+                      lambda w: w.alpha),
+    "immersed wedge volume": ("volume below the new and above the old water plane", lambda w: w.V3),
+    "emerged wedge volume": ("volume above the new and below the old water plane", lambda w: w.V4),
+    "immersed wedge moment, horizontal": ("its static moment about the line where the planes meet, towards the dip",
+                                          lambda w: w.V3 * (_dot3(w.c3, w.h0) - w.alpha)),
+    "immersed wedge moment, vertical": ("its static moment about the old water plane, upwards",
+                                        lambda w: w.V3 * (_dot3(w.c3, w.r) - w.t0)),
+    "emerged wedge moment, horizontal": ("its static moment about the line where the planes meet, away from the dip",
+                                         lambda w: w.V4 * (w.alpha - _dot3(w.c4, w.h0))),
+    "emerged wedge moment, vertical": ("its static moment about the old water plane, downwards",
+                                       lambda w: w.V4 * (w.t0 - _dot3(w.c4, w.r))),
+}
+# a symbol per quantity, for a witness that measures an expression in several of them (V B_x, a ratio)
+MEASURED = {name: sp.Symbol(name) for name in (*QUANTITIES, *TILT_QUANTITIES)}
+
+
+def _neville_at_zero(f, h, levels):
+    """Neville extrapolation to 0 of f at h, h/2, ..., h/2^levels (a polynomial in the step), componentwise."""
+    xs = [h / 2 ** j for j in range(levels + 1)]
+    ps = [f(x) for x in xs]
+    for j in range(1, levels + 1):
+        ps = [tuple((xs[i + j] * a - xs[i] * b) / (xs[i + j] - xs[i]) for a, b in zip(ps[i], ps[i + 1]))
+              for i in range(len(ps) - 1)]
+    return ps[0]
 
 
 @dataclass(frozen=True)
 class FloatingWitness(MeasuredWitness):
     """A quantity of :data:`QUANTITIES` of ``body`` floating at ``density`` with ``up`` (body frame, SymPy
-    expressions in the case's parameters) pointing up; ``quantity`` may also be a tuple of names, for
-    targets whose reading lists several numbers."""
+    expressions in the case's parameters) pointing up.  ``quantity`` may also be a tuple, for targets whose
+    reading lists several numbers, and each item a SymPy expression in the symbols of :data:`MEASURED` and
+    the case's parameters (a product with the immersed volume, a ratio).  Without ``body`` each case names
+    its own (``Case(..., {"body": Body...})``).  With ``reference`` (the up vector of the position the body
+    is tilted from, at the same density) the quantities of :data:`TILT_QUANTITIES` are measured too.  With
+    ``limit = (psi, k)``, ``up`` depends on the tilt ``psi`` and the witness measures the limit of the
+    quantity over psi^k as psi -> 0, by extrapolation (:data:`LIMIT_METHODS`)."""
 
     body: Body = None
     up: tuple = (0, 0, 1)
     density: object = None
     quantity: object = "draught"
     methods: tuple = FLOATING_METHODS
+    reference: tuple = None
+    limit: tuple = None
 
     def __post_init__(self):
-        for q in (self.quantity,) if isinstance(self.quantity, str) else self.quantity:
-            if q not in QUANTITIES:
-                raise ValueError(f"witness {self.name}: unknown quantity {q!r}; known: {', '.join(QUANTITIES)}")
+        items = (self.quantity,) if isinstance(self.quantity, (str, sp.Expr)) else self.quantity
+        names = set()
+        for q in items:
+            if isinstance(q, str):
+                names.add(q)
+            else:                   # its other symbols are the case's parameters (checked when measured)
+                names |= {n for n, s in MEASURED.items() if s in q.free_symbols}
+        for q in names:
+            if q not in QUANTITIES and q not in TILT_QUANTITIES:
+                raise ValueError(f"witness {self.name}: unknown quantity {q!r}; known: "
+                                 f"{', '.join((*QUANTITIES, *TILT_QUANTITIES))}")
+            if q in TILT_QUANTITIES and self.reference is None:
+                raise ValueError(f"witness {self.name}: {q!r} needs the reference position it is tilted from")
+        if self.limit is not None and self.methods == FLOATING_METHODS:
+            object.__setattr__(self, "methods", LIMIT_METHODS)
+
+    def _values(self, params, body, dps):
+        body = body.build(params, dps)
+        up = tuple(number(x, params, dps) for x in self.up)      # the geometry normalises it
+        density = number(self.density, params, dps)
+        st = floating_state(body, up, density)
+        tilt = []
+
+        def measured(name):
+            if name in QUANTITIES:
+                return QUANTITIES[name][1](st, body)
+            if not tilt:
+                ref = [number(x, params, dps) for x in self.reference]
+                ref = tuple((float(x) if dps <= 15 else mpmath.mpf(x.numerator) / x.denominator)
+                            if isinstance(x, Fraction) else x for x in ref)
+                tilt.append(_tilt(body, st, ref, density))
+            return TILT_QUANTITIES[name][1](tilt[0])
+
+        def item(q):
+            if isinstance(q, str):
+                return measured(q)
+            q = q.xreplace(params)
+            symbols = sorted(q.free_symbols, key=str)
+            unknown = [str(s) for s in symbols if MEASURED.get(str(s)) != s]
+            if unknown:
+                raise ValueError(f"witness {self.name}: {unknown} are neither measured nor given by the case")
+            return sp.lambdify(symbols, q, "mpmath")(*(measured(str(s)) for s in symbols))
+        if isinstance(self.quantity, (str, sp.Expr)):
+            return (item(self.quantity),)
+        return tuple(item(q) for q in self.quantity)
 
     def measure(self, case, method):
-        dps = method.dps
-        with mpmath.workdps(max(dps, 15)):
-            body = self.body.build(case.params, dps)
-            up = tuple(number(x, case.params, dps) for x in self.up)      # the geometry normalises it
-            st = floating_state(body, up, number(self.density, case.params, dps))
-            if isinstance(self.quantity, str):
-                return QUANTITIES[self.quantity][1](st, body)
-            return tuple(QUANTITIES[q][1](st, body) for q in self.quantity)
+        body = self.body if self.body is not None else case.data["body"]
+        if self.limit is None:
+            with mpmath.workdps(max(method.dps, 15)):
+                values = self._values(case.params, body, method.dps)
+        elif method.dps not in _LIMIT_STEPS:
+            raise ValueError(f"witness {self.name}: a limit is extrapolated at {sorted(_LIMIT_STEPS)} digits only")
+        else:
+            psi, power = self.limit
+            h, levels, dps = _LIMIT_STEPS[method.dps]
+            with mpmath.workdps(dps):
+                step = mpmath.mpf(h) if dps > 15 else h
+                values = _neville_at_zero(
+                    lambda x: tuple(v / x ** power for v in self._values({**case.params, psi: sp.Float(x, dps + 5)},
+                                                                         body, dps)), step, levels)
+        with mpmath.workdps(max(method.dps, 15)):
+            values = tuple(float(v) if method.dps <= 15 else +v for v in values)   # rounded to the method's digits
+        return values[0] if isinstance(self.quantity, (str, sp.Expr)) else values
