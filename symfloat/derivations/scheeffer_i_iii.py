@@ -28,15 +28,12 @@ vertical prisms over trapezoids tilted about an axis parallel to the parallel
 sides, wedges cut out of the clipped body; horizontal boxes and an apex-down
 triangular prism (not prismatic at the waterline) for the small-angle limits.
 """
-import math
-from fractions import Fraction
 
-import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.witness import Case, Computed, Precision
-from symfloat.geometry.floating import clip_below, draught, floating_state, right_prism, volume_centroid
+from symfloat.engine.floating_witness import MEASURED, Body, FloatingWitness
+from symfloat.engine.witness import Case, Precision
 from symfloat.model.claim import as_printed
 
 
@@ -441,161 +438,86 @@ d.quote("duhamel-statement", "III, Duhamel",
         note="for the axis of the smallest moment of inertia T1 (the critical one): stable iff e1 < T1/V1")
 
 
-# ---- witnesses ---------------------------------------------------------------------------------
+# ---- witnesses: the clipped body, named (symfloat.engine.floating_witness) --------------------------------
 
-def _prec(dps):
-    return None if dps is None or dps <= 15 else dps
-
-
-def _mp(q):
-    q = Fraction(q)
-    return mpmath.mpf(q.numerator) / q.denominator
-
-
-def _trapezoid_prism(data, dps):
-    """Vertical prism (axis z, length 4) over the trapezoid with the parallel sides P1 (x = 0) and P2
-    (x = H) parallel to y; P2 = 0 gives the triangle."""
-    p1, p2, hh = (Fraction(data[key]) for key in ("P1", "P2", "H"))
-    if p2 == 0:
-        poly = [(0, -p1 / 2), (hh, 0), (0, p1 / 2)]
-    else:
-        poly = [(0, -p1 / 2), (hh, -p2 / 2), (hh, p2 / 2), (0, p1 / 2)]
-    return right_prism(poly, 4, _prec(dps))
-
-
-def _dot(p, q):
-    return sum(pi * qi for pi, qi in zip(p, q))
-
-
-def _sub(p, q):
-    return tuple(pi - qi for pi, qi in zip(p, q))
-
-
-def trapezoid_tilt(case, dps):
-    """The tilted vertical trapezoid prism measured by clipping: tilt about an axis parallel to y with
-    tg phi = q, the side x = H dipping.  Wedges are cut from the body with the new and the old water
-    plane; the axis is taken where the two planes actually meet (not assumed at the centroid)."""
-    body = _trapezoid_prism(case.data, dps)
-    q = Fraction(case.data["q"])
-    t0, _ = draught(body, (0, 0, 1), Fraction(1, 2))
-    st = floating_state(body, (-q, 0, 1), Fraction(1, 2))
-    uu = st.u
-    imm = clip_below(clip_below(body, uu, st.t), (0, 0, -1), -t0)   # below new, above old plane
-    emg = clip_below(clip_below(body, tuple(-c for c in uu), -st.t), (0, 0, 1), t0)
-    V3m, c3 = volume_centroid(imm)
-    V4m, c4 = volume_centroid(emg)
-    xO = (st.t - uu[2] * t0) / uu[0]
-    hor = (uu[2], 0 * uu[0], -uu[0])            # horizontal, towards the dipping side
-    BG = _sub(st.B, st.G)
-    return {"V3": V3m, "V4": V4m, "xO": xO,
-            "Mx3": V3m * (c3[0] - xO), "My3": V3m * (c3[2] - t0),
-            "Mx4": V4m * (xO - c4[0]), "My4": V4m * (t0 - c4[2]),
-            "V1": st.volume, "m": _dot(BG, hor), "n": -_dot(BG, uu), "v": BG[0], "u": -BG[2]}
+M = MEASURED
+EXACT = (Precision(15, 1e-10), Precision(50, 1e-40))
+TRAPEZOID = Body.prism(((0, -P1 / 2), (Hh, -P2 / 2), (Hh, P2 / 2), (0, P1 / 2)), 4)
 
 
 def _trap_case(p1, p2, hh, q):
-    """Parameters of the trapezoid prism (length 4, half immersed): V1 = 2 * area, e1 = 1."""
+    """The vertical prism (axis z, length 4) over the trapezoid with the parallel sides P1 (x = 0) and P2
+    (x = H), half immersed (V1 = 2 * area, e1 = 1), tilted with tg phi = q, the side x = H dipping."""
     params = {P1: p1, P2: p2, Hh: hh, phi: sp.atan(sp.Rational(q)), V1: 2 * sp.Rational(hh) * (p1 + p2) / 2,
               e1: 1, c0: 0, h0: 0}
-    return Case(params, {"P1": p1, "P2": p2, "H": hh, "q": q},
-                f"vertical prism over the trapezoid P1={p1}, P2={p2}, H={hh}; tg phi = {q}")
+    return Case(params, label=f"vertical prism over the trapezoid P1={p1}, P2={p2}, H={hh}; tg phi = {q}")
 
 
 TRAP = (_trap_case(3, 3, 2, sp.Rational(1, 5)), _trap_case(2, 1, 2, sp.Rational(1, 2)),
         _trap_case(2, sp.Rational(1, 2), sp.Rational(3, 2), sp.Rational(3, 4)))
 
 
-def _w(name, description, targets, f):
-    d.witness(Computed(name, description, targets, TRAP, compute=lambda case, dps: f(trapezoid_tilt(case, dps))))
+def _w(name, description, targets, quantity):
+    """The trapezoid prism tilted from upright (both water planes clipped from the body, the axis where they
+    meet found, not assumed at the centroid)."""
+    d.witness(FloatingWitness(name, description, targets, TRAP, body=TRAPEZOID, up=(-sp.tan(phi), 0, 1),
+                              reference=(0, 0, 1), density=sp.Rational(1, 2), quantity=quantity, methods=EXACT))
 
 
 _w("wedges-e-k", "V3 e = V3 x3 + V4 x4 and V3 k = V3 y3 + V4 y4 of the clipped wedges",
-   ("moments-10", "moments-sum", "moments-11"), lambda r: (r["Mx3"] + r["Mx4"], r["My3"] + r["My4"]))
-_w("wedge-3", "static moments of the clipped immersed wedge", ("moments-10a",), lambda r: (r["My3"], r["Mx3"]))
-_w("wedge-4", "static moments of the clipped emerged wedge", ("moments-10b",), lambda r: (r["My4"], r["Mx4"]))
-_w("wedge-volume-3", "volume of the clipped immersed wedge", ("volume-V3",), lambda r: r["V3"])
-_w("wedge-volume-4", "volume of the clipped emerged wedge", ("volume-V4",), lambda r: r["V4"])
-d.witness(Computed("wedge-volume-over-tg", "clipped wedge volumes over tg phi (both wedges)", ("moments-equal",),
-                   TRAP, compute=lambda case, dps: (lambda r: r["V4"] / _mp(case.data["q"]))(trapezoid_tilt(case, dps))))
-d.witness(Computed("axis-position", "where the tilted water plane meets the old one (clipping, draught)",
-                   ("axis-centroid",), TRAP, compute=lambda case, dps: trapezoid_tilt(case, dps)["xO"]))
+   ("moments-10", "moments-sum", "moments-11"),
+   (M["immersed wedge moment, horizontal"] + M["emerged wedge moment, horizontal"],
+    M["immersed wedge moment, vertical"] + M["emerged wedge moment, vertical"]))
+_w("wedge-3", "static moments of the clipped immersed wedge", ("moments-10a",),
+   ("immersed wedge moment, vertical", "immersed wedge moment, horizontal"))
+_w("wedge-4", "static moments of the clipped emerged wedge", ("moments-10b",),
+   ("emerged wedge moment, vertical", "emerged wedge moment, horizontal"))
+_w("wedge-volume-3", "volume of the clipped immersed wedge", ("volume-V3",), "immersed wedge volume")
+_w("wedge-volume-4", "volume of the clipped emerged wedge", ("volume-V4",), "emerged wedge volume")
+_w("wedge-volume-over-tg", "clipped wedge volumes over tg phi (both wedges)", ("moments-equal",),
+   M["emerged wedge volume"] / sp.tan(phi))
+_w("axis-position", "where the tilted water plane meets the old one (clipping, draught)", ("axis-centroid",),
+   "axis position")
 _w("buoyancy-body-frame", "centre of buoyancy of the clipped tilted body in the body frame, times V1",
-   ("moments-raw", "moments-6"), lambda r: (r["V1"] * r["v"], r["V1"] * r["u"]))
-_w("buoyancy-world-frame", "centre of buoyancy of the clipped tilted body in the world frame",
-   ("rotation-5",), lambda r: (r["m"], r["n"]))
+   ("moments-raw", "moments-6"), (M["immersed volume"] * M["B - G, x"], -M["immersed volume"] * M["B - G, z"]))
+_w("buoyancy-world-frame", "centre of buoyancy of the clipped tilted body in the world frame", ("rotation-5",),
+   ("righting arm", "G above B"))
 _w("righting-moment", "V1 m, V1 n of the clipped tilted body", ("moments-7",),
-   lambda r: (r["V1"] * r["m"], r["V1"] * r["n"]))
-_w("righting-moment-m", "V1 m of the clipped tilted body", ("moment-12",), lambda r: r["V1"] * r["m"])
+   (M["immersed volume"] * M["righting arm"], M["immersed volume"] * M["G above B"]))
+_w("righting-moment-m", "V1 m of the clipped tilted body", ("moment-12",), M["immersed volume"] * M["righting arm"])
 _w("righting-moment-n", "V1 n (weight times height of S above S2) of the clipped tilted body", ("moment-13",),
-   lambda r: r["V1"] * r["n"])
+   M["immersed volume"] * M["G above B"])
 
 
-# -- small-angle limits by extrapolation --------------------------------------------------------
-
-def limit_at_zero(f, h, levels):
-    """Neville extrapolation to 0 of f at h, h/2, ..., h/2^levels (polynomial in the step)."""
-    xs = [h / 2 ** j for j in range(levels + 1)]
-    ps = [f(t) for t in xs]
-    for j in range(1, levels + 1):
-        ps = [(xs[i + j] * ps[i] - xs[i] * ps[i + 1]) / (xs[i + j] - xs[i]) for i in range(len(ps) - 1)]
-    return ps[0]
+# -- small-angle limits: horizontal prisms heeled by psi about their axis z (the side -x dips) --------------
+psi, s_body = sp.symbols("psi s_body", positive=True)
 
 
-def _horizontal_prism(data, dps):
-    return right_prism(data["polygon"], data["L"], _prec(dps))
+def _box(W, H):
+    return Body.prism(((-W / 2, -H / 2), (W / 2, -H / 2), (W / 2, H / 2), (-W / 2, H / 2)), 3)
 
 
-def _heeled(data, dps, psi):
-    """Righting arm and immersed-wedge moments of a horizontal prism heeled by psi about its axis z (the
-    side -x dips), by clipping; x is measured from the centroid x = 0 of the old waterline (symmetric
-    sections), heights from the old waterline."""
-    body = _horizontal_prism(data, dps)
-    sin, cos = (math.sin, math.cos) if dps is None else (mpmath.sin, mpmath.cos)
-    st = floating_state(body, (sin(psi), cos(psi), 0), data["s"])
-    t0, _ = draught(body, (0, 1, 0), data["s"])
-    V3m, c3 = volume_centroid(clip_below(clip_below(body, st.u, st.t), (0, -1, 0), -t0))
-    V4m, c4 = volume_centroid(clip_below(clip_below(body, tuple(-c for c in st.u), -st.t), (0, 1, 0), t0))
-    hor = (-st.u[1], st.u[0], 0)                # horizontal, towards the dipping side
-    return {"m": _dot(_sub(st.B, st.G), hor), "Mx3": V3m * (-c3[0]), "My3": V3m * (c3[1] - t0),
-            "Mx4": V4m * c4[0], "My4": V4m * (t0 - c4[1])}
-
-
-def small_angle(case, dps, key, power):
-    """lim psi->0 of quantity(psi)/psi^power by Neville extrapolation.  At 50 digits the clipping runs at
-    90 digits with steps 1e-10 .. 1e-10/2^5 (truncation ~1e-60, rounding ~1e-70); in float64 at steps
-    1e-3 .. 1e-3/8 (truncation ~1e-12, rounding amplified to ~1e-9 for the second-order moment)."""
-    if dps <= 15:
-        return limit_at_zero(lambda t: _heeled(case.data, None, t)[key] / t ** power, 1e-3, 3)
-    with mpmath.workdps(90):
-        val = limit_at_zero(lambda t: _heeled(case.data, 90, t)[key] / t ** power, mpmath.mpf("1e-10"), 5)
-    return +val
-
-
-def _box(W, H, L, s):
-    hw, hh = Fraction(W) / 2, Fraction(H) / 2
-    return {"polygon": [(-hw, -hh), (hw, -hh), (hw, hh), (-hw, hh)], "L": L, "s": Fraction(s)}
-
-
-def _apex_down(dd, L):
-    """Triangle (0,0), (1,2), (-1,2), apex down, floating at draught dd: s = (dd/2)^2, waterline width dd."""
-    return {"polygon": [(0, 0), (1, 2), (-1, 2)], "L": L, "s": Fraction(dd) ** 2 / 4}
-
-
+# the triangle (0,0), (1,2), (-1,2), apex down, floating at draught dd: s = (dd/2)^2, waterline width dd
+APEX_DOWN = Body.prism(((0, 0), (1, 2), (-1, 2)), 2)
 SMALL = (
-    Case({P1: 3, P2: 3, Hh: 2, V1: 6, e1: sp.Rational(1, 2)}, _box(2, 2, 3, Fraction(1, 2)),
+    Case({P1: 3, P2: 3, Hh: 2, V1: 6, e1: sp.Rational(1, 2), s_body: sp.Rational(1, 2)}, {"body": _box(2, 2)},
          "box 2 x 2 x 3, half immersed (prismatic at the waterline)"),
-    Case({P1: 2, P2: 2, Hh: 1, V1: 1, e1: sp.Rational(2, 3)}, _apex_down(1, 2),
+    Case({P1: 2, P2: 2, Hh: 1, V1: 1, e1: sp.Rational(2, 3), s_body: sp.Rational(1, 4)}, {"body": APEX_DOWN},
          "triangular prism apex down, draught 1 (not prismatic at the waterline; unstable)"),
-    Case({P1: 2, P2: 2, Hh: sp.Rational(9, 5), V1: sp.Rational(81, 25), e1: sp.Rational(2, 15)}, _apex_down(Fraction(9, 5), 2),
+    Case({P1: 2, P2: 2, Hh: sp.Rational(9, 5), V1: sp.Rational(81, 25), e1: sp.Rational(2, 15),
+          s_body: sp.Rational(81, 100)}, {"body": APEX_DOWN},
          "triangular prism apex down, draught 9/5 (not prismatic at the waterline; stable)"),
 )
-LIMIT_PRECISION = (Precision(15, 1e-7), Precision(50, 1e-35))
-d.witness(Computed("righting-arm-limit", "lim m(psi)/psi from the clipped heeled body (extrapolated)",
-                   ("duhamel-16", "general-body"), SMALL, methods=LIMIT_PRECISION,
-                   compute=lambda case, dps: small_angle(case, dps, "m", 1)))
-d.witness(Computed("wedge-limits", "leading terms of the clipped immersed wedge's moments (extrapolated)",
-                   ("series-3",), SMALL, methods=LIMIT_PRECISION,
-                   compute=lambda case, dps: (small_angle(case, dps, "Mx3", 1), small_angle(case, dps, "My3", 2))))
-d.witness(Computed("wedge-limits-4", "leading terms of the clipped emerged wedge's moments (extrapolated)",
-                   ("series-4",), SMALL, methods=LIMIT_PRECISION,
-                   compute=lambda case, dps: (small_angle(case, dps, "Mx4", 1), small_angle(case, dps, "My4", 2))))
+
+
+def _limit(name, description, targets, quantity):
+    d.witness(FloatingWitness(name, description, targets, SMALL, body=None, up=(sp.sin(psi), sp.cos(psi), 0),
+                              reference=(0, 1, 0), density=s_body, quantity=quantity, limit=(psi, 1)))
+
+
+_limit("righting-arm-limit", "lim m(psi)/psi from the clipped heeled body (extrapolated)",
+       ("duhamel-16", "general-body"), "righting arm")
+_limit("wedge-limits", "leading terms of the clipped immersed wedge's moments (extrapolated)", ("series-3",),
+       (M["immersed wedge moment, horizontal"], M["immersed wedge moment, vertical"] / psi))
+_limit("wedge-limits-4", "leading terms of the clipped emerged wedge's moments (extrapolated)", ("series-4",),
+       (M["emerged wedge moment, horizontal"], M["emerged wedge moment, vertical"] / psi))
