@@ -280,3 +280,20 @@ def test_the_docstring_table_shows_the_rebuilt_values():
         for nv in (1, 2):
             value = 2 * MODULE.K0_rebuilt(kv)[0].subs(MODULE.n, nv)
             assert "| %s ≈ %s |" % (value, sp.N(value, 10)) in row
+
+
+def test_the_derivative_of_IY_in_c1_and_c2_is_the_integral_of_the_derivative():
+    # IY(j, p, q, dY, n, b, c1, c2) differentiated under the integral (its fdiff) against a central difference of
+    # its own value (Beta integrals, 60 digits): with j = 2 it is a polynomial of degree at most 3 in c1 and c2,
+    # so the difference's error is h^2/6 times the third derivative, about 1e-24 here; the chain rule of the
+    # definition route relies on this derivative
+    IY = MODULE.IY
+    c1_, c2_ = sp.symbols("c1_ c2_")
+    h = sp.Rational(1, 10 ** 12)
+    for dY in (0, 1):
+        f = IY(2, 1, sp.Rational(1, 2), dY, 2, 1, c1_, c2_)
+        at = {c1_: sp.Rational(3, 10), c2_: sp.Rational(1, 5)}
+        for var in (c1_, c2_):
+            exact = sp.N(sp.diff(f, var).xreplace(at), 60)
+            up, down = (sp.N(f.xreplace({**at, var: at[var] + k * h}), 60) for k in (1, -1))
+            assert abs(exact - (up - down) / (2 * h)) < 1e-20, (dY, var)

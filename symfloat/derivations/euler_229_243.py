@@ -117,6 +117,19 @@ class IY(sp.Function):
     for Y = c_1 yⁿ/bⁿ + c_2 y²ⁿ/b²ⁿ: expanded into Beta integrals (checked in step Y-integrals)."""
     nargs = 8
 
+    def fdiff(self, argindex=1):
+        """d/dc_1 and d/dc_2 (arguments 7 and 8) under the integral: Y^j gives j Y^(j-1) y^(kn)/b^(kn) and dY
+        gives k n y^(kn-1)/b^(kn) dy (k = 1, 2); the others have no rule here."""
+        if argindex not in (7, 8):
+            raise sp.ArgumentIndexError(self, argindex)
+        j, P, Q, dY, N_, B_, C1, C2 = self.args
+        k = argindex - 6
+        scale = B_ ** (k * N_)
+        out = j / scale * IY(j - 1, P + k * N_, Q, dY, N_, B_, C1, C2) if j != 0 else sp.Integer(0)
+        if dY:
+            out += k * N_ / scale * IY(j, P + k * N_ - 1, Q, 0, N_, B_, C1, C2)
+        return out
+
     def _eval_evalf(self, prec):
         if not all(t.is_number for t in self.args):
             return None
