@@ -1,7 +1,7 @@
 """Cross-references of every source, resolved and checked against the derivations; point labels of the quotes."""
 from pathlib import Path
 
-from symfloat.report.labels import flagged, flags, points
+from symfloat.report.labels import contradicting, contradictions, flagged, flags, points
 from symfloat.report.references import STATUSES, check, paragraphs, references, references_markdown, tags
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -59,6 +59,33 @@ def test_a_made_up_label_in_a_quote_is_flagged():
     later = text.index("Nun ist"), len(text), "later"
     assert flagged(text, starts, [later]) == []          # A B carried over from the section before
     assert points("S_1 O H_2") == ("S1", "O", "H2") and points("S₁") == ("S1",)
+
+
+def test_a_point_introduced_as_two_kinds_is_a_contradiction():
+    text = ("## I.\n\nEs sei S der Schwerpunkt des Körpers (Fig. 1). Dann ist $S A = a$.\n\n"
+            "Ferner sei M der Mittelpunkt der Kante (Fig. 1).\n")
+    starts = [(0, "opening"), (0, "I")]
+    assert contradicting(text, starts, []) == []
+    # mutation: the next line uses the letter S for the midpoint instead of M
+    mutated = text.replace("sei M der", "sei S der")
+    found = contradicting(mutated, starts, [])
+    assert [(f["label"], f["why"]) for f in found] == [("S", "introduced as the centre of gravity (line 3) and as "
+                                                              "the midpoint")]
+
+
+def test_a_letter_used_as_point_and_quantity_in_one_quote_is_a_contradiction():
+    text = "## I.\n\nEs sei (Fig. 1) C D die Tiefe. Dann ist $V = D \\cdot CE$.\n"
+    starts = [(0, "opening"), (0, "I")]
+    quote = text.index("$V"), len(text), "probe"
+    assert contradicting(text, starts, [quote]) == []
+    mutated = text.replace("CE", "CD")              # mutation: the segment CD shares its D with the area D
+    assert [(f["label"], f["quote"]) for f in contradicting(mutated, starts, [quote])] == [("D", "probe")]
+    # a run whose letters are all symbols of the hand reading is a product (N D), not a segment
+    product = text.replace("CE", "ND")
+    assert contradicting(product, starts, [quote], products={"probe": {"N", "D", "V"}}) == []
+    # Euler: M the ship's weight and the end of the ordinate QM in one formula (§201); D the half area and CD
+    # the depth of the keel (§243)
+    assert {(f["line"], f["label"]) for f in contradictions("euler")} == {(37, "M"), (294, "D")}
 
 
 def test_labels_flagged_in_the_sources():
