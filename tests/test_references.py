@@ -96,3 +96,32 @@ def test_labels_flagged_in_the_sources():
 def test_references_report_is_current():
     assert (ROOT / "docs" / "references.md").read_text(encoding="utf-8") == references_markdown(), \
         "docs/references.md is stale: run `symfloat coverage --write` and commit"
+
+
+def test_a_cited_formula_the_citing_steps_do_not_use_is_suspect(monkeypatch):
+    from types import SimpleNamespace
+
+    import sympy as sp
+
+    from symfloat.model.derivation import Step
+    from symfloat.report import references as refs
+    a, T, U, W, X, Y = sp.symbols("a T U W X Y")
+    fake = SimpleNamespace(steps=[
+        Step("target", (T, a + 1), "definition", result=T),
+        Step("mid", (U, 2 * T), "algebra", uses=("target",), result=U),
+        Step("use", (W, U + 1), "algebra", result=W),                 # rests on mid through the quantity U
+        Step("other", (X, a), "definition", result=X),
+        Step("stray", (Y, X + 1), "algebra", uses=("other",), result=Y)])
+    monkeypatch.setattr(refs, "_derivation", lambda did: fake)
+    target = refs.anchors("fake", SimpleNamespace(name="(1)", reading=(T, a + 1)))
+    assert target == {("fake", "target")}
+    assert refs.uses_target(refs.anchors("fake", SimpleNamespace(name="cites-1", reading=(W, U + 1))), target) is True
+    # mutation: the citing quote reads a quantity whose steps never touch (1)
+    assert refs.uses_target(refs.anchors("fake", SimpleNamespace(name="cites-1", reading=(Y, X + 1))), target) is False
+    # a citing quote whose steps rest on nothing is not judged
+    assert refs.uses_target(refs.anchors("fake", SimpleNamespace(name="cites-1", reading=(X, a))), target) is None
+
+
+def test_references_whose_citing_steps_miss_the_target_are_listed_as_suspect():
+    missed = [r for s in ("scheeffer", "graefe", "euler") for r in references(s) if "do not rest on" in r["reason"]]
+    assert missed and all(r["status"] == "suspect" for r in missed)
