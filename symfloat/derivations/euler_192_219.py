@@ -34,9 +34,18 @@ English summary, paragraph by paragraph group:
   = D·AB²/12 + D·Cc²/4, larger than for the rhombus of the same length and breadth.
 * §219: the ellipse with semi-axes a, b: K = AB²D/8, I = EF²D/8.
 
+The claims in words of §§192–200 are read on a worked body: a long box of half-beam e and draught T,
+heeled by phi while wall-sided, whose righting arm GZ = sin phi (e²/(3T) − b + e² tan²phi/(6T)) comes
+from the centroid of the heeled section.  M·GZ/phi → M(I/V − b) (the stability is the slope of the
+moment); the moment departs from S·phi at third order (only small angles); S = 0 leaves no first-order
+arm (the box still rights at third order: indifference is a statement of the linear theory); S < 0
+drives the box to a heeled stable equilibrium at tan²phi = 2g/(I/V); the box 1 × 1 × 2 with G 1/3 above
+B is stable about EF and unstable about AB; ships resist pitching more than rolling (K > I).
+
 Witnesses: every moment is computed by two-dimensional quadrature over the figure itself
 (nested ``mpmath.quad`` at 50 digits, and fixed-order Gauss–Legendre in float64; for the
-ellipse the float64 rule runs in elliptic polar coordinates).
+ellipse the float64 rule runs in elliptic polar coordinates); the box by exact clipping, the arm
+extrapolated to phi → 0 and the heeled equilibrium found by root-finding.
 """
 import mpmath
 import numpy as np
