@@ -8,7 +8,7 @@ import pytest
 from symfloat.cli import main
 from symfloat.model.source import SOURCES
 from symfloat.model.span import math_intervals, math_spans, quantitative_sentences
-from symfloat.report.ledger import (LedgerError, account, baseline_keys, entry_key, ledger, ledger_markdown,
+from symfloat.report.ledger import (Entry, LedgerError, account, baseline_keys, entry_key, ledger, ledger_markdown,
                                     quotes, totals, waivers)
 from symfloat.report.ledger_command import baseline_text
 
@@ -131,26 +131,48 @@ def test_totals_add_up():
 
 
 # ---- command line ---------------------------------------------------------------------------------
+def _one_unaccounted(monkeypatch, source):
+    """Patch the ledger (where the command and the table read it) so that the first span of *source* is
+    unaccounted; return that entry."""
+    import symfloat.report.ledger as ledger_module
+    import symfloat.report.ledger_command as command
+    real = ledger_module.ledger
+    first = Entry(real(source)[0].span, "unaccounted")
+
+    def fake(s):
+        return (first,) + real(s)[1:] if s == source else real(s)
+    monkeypatch.setattr(ledger_module, "ledger", fake)
+    monkeypatch.setattr(command, "ledger", fake)
+    return first
+
+
 def test_cli_json_and_exit_status(capsys, monkeypatch):
     monkeypatch.chdir(ROOT)
-    assert main(["coverage", "euler", "--format", "json"]) == 1      # euler has unaccounted spans
-    capsys.readouterr()
     assert main(["coverage", "hasab", "--format", "json"]) == 0      # hasab is accounted span by span
     out = json.loads(capsys.readouterr().out)
     entries = out["sources"]["hasab"]["entries"]
     assert out["sources"]["hasab"]["totals"]["spans"] == len(entries) == len(ledger("hasab"))
     assert {e["status"] for e in entries} <= {"quoted", "waived", "unaccounted"}
+    _one_unaccounted(monkeypatch, "hasab")                              # mutation: one span left unaccounted
+    assert main(["coverage", "hasab", "--format", "json"]) == 1
+    out = json.loads(capsys.readouterr().out)
+    assert out["sources"]["hasab"]["totals"]["unaccounted"] == 1
 
 
 def test_cli_table_marks_pending_spans(capsys, monkeypatch, tmp_path):
+    import symfloat.report.ledger_command as command
     monkeypatch.chdir(tmp_path)      # the baseline is the checkout's, wherever the command runs
     main(["coverage", "euler"])
     out = capsys.readouterr().out
-    assert out.startswith("euler: 386 spans")
-    assert "pending euler:" in out and "NEW" not in out
+    assert out.startswith("euler: 386 spans") and "0 unaccounted" in out and "NEW" not in out
+    e = _one_unaccounted(monkeypatch, "hasab")
     main(["coverage", "hasab"])
     out = capsys.readouterr().out
-    assert out.startswith("hasab: 32 spans") and "pending" not in out
+    assert out.startswith("hasab: 32 spans") and "NEW     hasab:" in out and "pending" not in out
+    monkeypatch.setattr(command, "load_baseline", lambda path: {"unaccounted": [e.as_dict()]})
+    main(["coverage", "hasab"])
+    out = capsys.readouterr().out
+    assert "pending hasab:" in out and "NEW" not in out
 
 
 def test_cli_unknown_source(capsys):

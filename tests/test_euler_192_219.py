@@ -176,3 +176,27 @@ def test_the_quad_L_correction_must_hold():
     wrong = dataclasses.replace(p.erratum, corrected_reading=p.reading)
     rep = check_derivation(_mutated("quad-L", erratum=wrong), prove=False, trust_steps=True)
     assert any("correction does not hold" in f for f in rep.failures)
+
+
+def test_the_heeled_box_arm_is_the_clipped_bodys():
+    # the wall-sided box of §§192-200 (e = T = 1/2, G 1/10 above B) heeled by 1/10: the arm of step
+    # righting-arm-value against exact clipping of the box 1 x 1 x 2 at 50 digits
+    e, T, b, phi = sp.Rational(1, 2), sp.Rational(1, 2), sp.Rational(1, 10), sp.Rational(1, 10)
+    closed = sp.sin(phi) * (e ** 2 / (3 * T) - b + e ** 2 * sp.tan(phi) ** 2 / (6 * T))
+    with mpmath.workdps(50):
+        clipped = MODULE._arm(sp.Rational(1, 2), b, phi, 50)
+        assert abs(clipped - mpmath.mpf(sp.N(closed, 60))) < mpmath.mpf(10) ** -40
+        # mutation: the arm without its third-order term (S·phi alone) misses the clipped body
+        assert abs(clipped - mpmath.mpf(sp.N(sp.sin(phi) * (e ** 2 / (3 * T) - b), 60))) > mpmath.mpf(10) ** -5   # 8.4e-5
+
+
+def test_negative_stability_ends_in_a_stable_heeled_equilibrium():
+    # G 1/100 above the metacentre (I/V = 1/6): the clipped arm is negative at small angles and vanishes at
+    # tan^2 phi = 2g/(I/V) = 3/25, where it grows (Euler §195: turned until a stable position is reached)
+    g = sp.Rational(1, 100)
+    phi0 = sp.atan(sp.sqrt(2 * g / sp.Rational(1, 6)))
+    with mpmath.workdps(30):
+        hv = sp.Rational(1, 6) + g
+        assert MODULE._arm(sp.Rational(1, 2), hv, sp.Rational(1, 20), 30) < 0
+        assert abs(MODULE._arm(sp.Rational(1, 2), hv, mpmath.mpf(sp.N(phi0, 60)), 30)) < mpmath.mpf(10) ** -25
+        assert MODULE._arm(sp.Rational(1, 2), hv, mpmath.mpf(sp.N(phi0, 60)) + mpmath.mpf("0.01"), 30) > 0

@@ -115,3 +115,15 @@ def test_displacement_centroid_of_uniform_sections_is_the_middle(graefe_reports)
     areas = {s: 1 for s in corrected.free_symbols if s != module.m}
     assert sp.simplify(corrected.subs(areas)) == 3 * module.m
     assert sp.simplify(printed.subs(areas)) == module.m
+
+
+def test_side_faces_of_the_hull_count_as_graefe_says():
+    # Fig. 1: a pentagon under a quadrilateral, no sides parallel: 5 + 4 = 9 side faces, all triangles
+    from symfloat.engine.witness import Case
+    from symfloat.registry import load
+    _, module = load("graefe-s1-prismatoid-volume")
+    top = [(1, 1), (3, "3/2"), (3, 3), ("3/2", "7/2")]
+    assert module._side_faces(Case({}, (module.PENTAGON, top)), 15) == [9, 9]
+    # mutation: turn the top's first side parallel to the pentagon's first: the two triangles over them merge
+    parallel = [(1, 1), (3, 1), (3, 3), ("3/2", "7/2")]
+    assert module._side_faces(Case({}, (module.PENTAGON, parallel)), 15) == [8, 7]

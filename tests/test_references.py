@@ -1,7 +1,7 @@
 """Cross-references of every source, resolved and checked against the derivations; point labels of the quotes."""
 from pathlib import Path
 
-from symfloat.report.labels import flagged, flags, points
+from symfloat.report.labels import contradicting, contradictions, flagged, flags, points
 from symfloat.report.references import STATUSES, check, paragraphs, references, references_markdown, tags
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -61,6 +61,33 @@ def test_a_made_up_label_in_a_quote_is_flagged():
     assert points("S_1 O H_2") == ("S1", "O", "H2") and points("S₁") == ("S1",)
 
 
+def test_a_point_introduced_as_two_kinds_is_a_contradiction():
+    text = ("## I.\n\nEs sei S der Schwerpunkt des Körpers (Fig. 1). Dann ist $S A = a$.\n\n"
+            "Ferner sei M der Mittelpunkt der Kante (Fig. 1).\n")
+    starts = [(0, "opening"), (0, "I")]
+    assert contradicting(text, starts, []) == []
+    # mutation: the next line uses the letter S for the midpoint instead of M
+    mutated = text.replace("sei M der", "sei S der")
+    found = contradicting(mutated, starts, [])
+    assert [(f["label"], f["why"]) for f in found] == [("S", "introduced as the centre of gravity (line 3) and as "
+                                                              "the midpoint")]
+
+
+def test_a_letter_used_as_point_and_quantity_in_one_quote_is_a_contradiction():
+    text = "## I.\n\nEs sei (Fig. 1) C D die Tiefe. Dann ist $V = D \\cdot CE$.\n"
+    starts = [(0, "opening"), (0, "I")]
+    quote = text.index("$V"), len(text), "probe"
+    assert contradicting(text, starts, [quote]) == []
+    mutated = text.replace("CE", "CD")              # mutation: the segment CD shares its D with the area D
+    assert [(f["label"], f["quote"]) for f in contradicting(mutated, starts, [quote])] == [("D", "probe")]
+    # a run whose letters are all symbols of the hand reading is a product (N D), not a segment
+    product = text.replace("CE", "ND")
+    assert contradicting(product, starts, [quote], products={"probe": {"N", "D", "V"}}) == []
+    # Euler: M the ship's weight and the end of the ordinate QM in one formula (§201); D the half area and CD
+    # the depth of the keel (§243)
+    assert {(f["line"], f["label"]) for f in contradictions("euler")} == {(37, "M"), (294, "D")}
+
+
 def test_labels_flagged_in_the_sources():
     # "v_3 + v_4 = E F" in I (line 72): E and F are named only in II (Fig. 4, line 88)
     assert {(f["line"], f["label"]) for f in flags("scheeffer")} >= {(72, "E"), (72, "F")}
@@ -69,3 +96,32 @@ def test_labels_flagged_in_the_sources():
 def test_references_report_is_current():
     assert (ROOT / "docs" / "references.md").read_text(encoding="utf-8") == references_markdown(), \
         "docs/references.md is stale: run `symfloat coverage --write` and commit"
+
+
+def test_a_cited_formula_the_citing_steps_do_not_use_is_suspect(monkeypatch):
+    from types import SimpleNamespace
+
+    import sympy as sp
+
+    from symfloat.model.derivation import Step
+    from symfloat.report import references as refs
+    a, T, U, W, X, Y = sp.symbols("a T U W X Y")
+    fake = SimpleNamespace(steps=[
+        Step("target", (T, a + 1), "definition", result=T),
+        Step("mid", (U, 2 * T), "algebra", uses=("target",), result=U),
+        Step("use", (W, U + 1), "algebra", result=W),                 # rests on mid through the quantity U
+        Step("other", (X, a), "definition", result=X),
+        Step("stray", (Y, X + 1), "algebra", uses=("other",), result=Y)])
+    monkeypatch.setattr(refs, "_derivation", lambda did: fake)
+    target = refs.anchors("fake", SimpleNamespace(name="(1)", reading=(T, a + 1)))
+    assert target == {("fake", "target")}
+    assert refs.uses_target(refs.anchors("fake", SimpleNamespace(name="cites-1", reading=(W, U + 1))), target) is True
+    # mutation: the citing quote reads a quantity whose steps never touch (1)
+    assert refs.uses_target(refs.anchors("fake", SimpleNamespace(name="cites-1", reading=(Y, X + 1))), target) is False
+    # a citing quote whose steps rest on nothing is not judged
+    assert refs.uses_target(refs.anchors("fake", SimpleNamespace(name="cites-1", reading=(X, a))), target) is None
+
+
+def test_references_whose_citing_steps_miss_the_target_are_listed_as_suspect():
+    missed = [r for s in ("scheeffer", "graefe", "euler") for r in references(s) if "do not rest on" in r["reason"]]
+    assert missed and all(r["status"] == "suspect" for r in missed)

@@ -34,16 +34,25 @@ English summary, paragraph by paragraph group:
   = D·AB²/12 + D·Cc²/4, larger than for the rhombus of the same length and breadth.
 * §219: the ellipse with semi-axes a, b: K = AB²D/8, I = EF²D/8.
 
+The claims in words of §§192–200 are read on a worked body: a long box of half-beam e and draught T,
+heeled by phi while wall-sided, whose righting arm GZ = sin phi (e²/(3T) − b + e² tan²phi/(6T)) comes
+from the centroid of the heeled section.  M·GZ/phi → M(I/V − b) (the stability is the slope of the
+moment); the moment departs from S·phi at third order (only small angles); S = 0 leaves no first-order
+arm (the box still rights at third order: indifference is a statement of the linear theory); S < 0
+drives the box to a heeled stable equilibrium at tan²phi = 2g/(I/V); the box 1 × 1 × 2 with G 1/3 above
+B is stable about EF and unstable about AB; ships resist pitching more than rolling (K > I).
+
 Witnesses: every moment is computed by two-dimensional quadrature over the figure itself
 (nested ``mpmath.quad`` at 50 digits, and fixed-order Gauss–Legendre in float64; for the
-ellipse the float64 rule runs in elliptic polar coordinates).
+ellipse the float64 rule runs in elliptic polar coordinates); the box by exact clipping, the arm
+extrapolated to phi → 0 and the heeled equilibrium found by root-finding.
 """
 import mpmath
 import numpy as np
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.witness import Case, Computed
+from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.model.claim import as_printed
 
 
@@ -57,6 +66,8 @@ Iw, Kw, Q, Q2, GMlo, GMhi, GKlo, GKhi = sp.symbols("I_w K_w Q_{AB} Q_{EF} GM_- G
 Slo, Shi, SKlo, SKhi = sp.symbols("S_{AB-} S_{AB+} S_{EF-} S_{EF+}")
 l = sp.Symbol("l", positive=True)  # the letter the transcription prints for I in §208
 X1, Y1, X2, Y2, xe = sp.symbols("x_1 y_1 x_2 y_2 x_e", real=True)
+eb, Tb, phi = sp.symbols("e T phi", positive=True)      # §§192-200: half-beam and draught of a box, heel
+hb1, hb2, gneg, Qh, St = sp.symbols("b_1 b_2 g Q S", positive=True)
 
 DERIVATION = d = Derivation(
     id="euler-192-219",
@@ -73,7 +84,10 @@ DERIVATION = d = Derivation(
             x: (-2, 2), y: (-2, 2), w: (-2, 2), s: (0, 1), r: (0, 1),
             PM: (1, 3), PN: (1, 3), Pp: (sp.Rational(1, 10), 1), Mw: (1, 5), V: (1, 5), h: (0, 2),
             Iw: (1, 5), Kw: (1, 5), l: (1, 2),
-            X1: (-2, -1), Y1: (-1, 1), X2: (1, 3), Y2: (2, 3), xe: (-1, 3)},
+            X1: (-2, -1), Y1: (-1, 1), X2: (1, 3), Y2: (2, 3), xe: (-1, 3),
+            eb: (sp.Rational(1, 2), 1), Tb: (sp.Rational(1, 2), 1), phi: (sp.Rational(1, 100), sp.Rational(1, 5)),
+            hb1: (0, sp.Rational(1, 20)), hb2: (0, sp.Rational(1, 20)), gneg: (sp.Rational(1, 1000), sp.Rational(1, 100)),
+            Qh: (1, 5), St: (1, 5)},
     assumptions=("lengths a, b, c and the half-widths PM, PN are positive",
                  "m = sin ACP with 0 < m < 1, n = cos ACP = sqrt(1 - m^2)",
                  "b_{GB} >= 0 is Euler's distance b between the centre of gravity G and the centre of "
@@ -81,7 +95,9 @@ DERIVATION = d = Derivation(
                  "the generic figure of §205 and §217 is a rectangle [x_1, x_2] x [y_1, y_2] placed anywhere; the "
                  "rules are linear in the figure, so they hold for every union of rectangles and, in the limit, "
                  "every figure",
-                 "the quadrilateral of §215: A at the origin, e = (a, b), B = (a + c, 0), f = (a, -b)"),
+                 "the quadrilateral of §215: A at the origin, e = (a, b), B = (a + c, 0), f = (a, -b)",
+                 "the worked body of §§192-200: a long box of half-beam e and draught T heeled by phi while its "
+                 "sides stay wall-sided (e tan phi < T and below the deck); e and T between 1/2 and 1, phi < 1/5"),
 )
 
 # ---------------------------------------------------------------- regions (SymPy)
@@ -1086,3 +1102,219 @@ figure_witness("lower-half-moment", "∫∫ y^2 over the half of the quadrilater
                lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2,
                                                 [(0, 0), (cs.params[a], -cs.params[b]), (cs.params[a] + cs.params[c], 0)],
                                                 dps))
+
+# ================================================================ §§192–200 in words, on a worked body
+# A long box of half-beam e and draught T (per unit length), G at the height b above the upright centre of
+# buoyancy, heeled by phi while wall-sided: the immersed section lies between the bottom y = -T and the
+# waterline y = x tan(phi) through the middle (the area 2eT is kept).  The righting arm GZ is the distance
+# of B from G along the waterline; nothing of M(I/V - b) is used to build it.
+Ah, xBh, yBh, GZ = sp.symbols("A_phi x_B y_B GZ")
+tp = sp.tan(phi)
+d.step("heeled-area", (Ah, sp.Integral(x * tp + Tb, (x, -eb, eb)), 2 * eb * Tb), "integration", result=Ah,
+       note="the heeled section of the box: the waterline through the middle keeps the area 2eT")
+d.step("heeled-xB", (xBh, sp.Integral(x * (x * tp + Tb), (x, -eb, eb)) / Ah, eb ** 2 * tp / (3 * Tb)),
+       "integration", uses=("heeled-area",), result=xBh)
+d.step("heeled-yB", (yBh, sp.Integral(((x * tp) ** 2 - Tb ** 2) / 2, (x, -eb, eb)) / Ah,
+                     eb ** 2 * tp ** 2 / (6 * Tb) - Tb / 2), "integration", uses=("heeled-area",), result=yBh)
+d.step("righting-arm", Eq(GZ, xBh * sp.cos(phi) + (yBh - (h - Tb / 2)) * sp.sin(phi)), "definition", result=GZ,
+       note="GZ: B minus G along the waterline (cos phi, sin phi) of the body's frame, G = (0, -T/2 + b); "
+            "positive GZ turns the body back")
+d.step("righting-arm-value", (xBh * sp.cos(phi) + (yBh - (h - Tb / 2)) * sp.sin(phi), sp.sin(phi) * (eb ** 2 / (3 * Tb) - h + eb ** 2 * tp ** 2 / (6 * Tb))), "algebra",
+       uses=("righting-arm", "heeled-xB", "heeled-yB"), result=GZ)
+I_box, V_box = sp.Integral(x ** 2, (x, -eb, eb)), 2 * eb * Tb      # the box's waterplane moment and volume
+S_box = sp.Subs(Shi, (Iw, V), (I_box, V_box))                       # §201's M(I/V - b) for the box
+d.quote("same-vertical", "§192",
+        r"si centrum grauitatis totius nauis et centrum magnitudinis partis submersae in eandem rectam "
+        r"verticalem cadant", reading=(sp.Matrix([sp.Subs(xBh, phi, 0), sp.Subs(GZ, phi, 0)]), sp.zeros(2, 1)),
+        note=claim("a floating body is in equilibrium when G and B lie on one vertical: upright, the box's B lies "
+                   "on the middle line with G and the arm GZ of the couple (weight at G, buoyancy at B) is 0."))
+d.quote("more-stable-less-heel", "§192",
+        r"Quo enim stabilitas est maior eo minus nauis a viribus urgentibus inclinabitur",
+        reading=(sp.Derivative(Qh / St, St), -Qh / St ** 2),
+        note=claim("the greater the stability S, the smaller the heel a moment Q produces: by §194 the small heel "
+                   "is Q/S, whose derivative in S is -Q/S² < 0."))
+d.quote("moment-times-angle", "§194",
+        r"Prodiit autem eiusmodi expressio, quae per angulum illum infinite paruum, quo nauem ex situ aequilibrii "
+        r"inclinatam fuisse assumpsimus, erat multiplicata",
+        reading=(sp.Limit(Mw * GZ / phi, phi, 0), S_box, Mw * (I_box / V_box - h)),
+        note=claim("the restoring moment M·GZ is the small angle times an expression, the stability: for the "
+                   "heeled box M·GZ/phi tends to M(I/V - b) of §201 (I = 2e³/3, V = 2eT)."))
+d.quote("small-angles-only", "§194", r"manifestum est angulos tantum valde exiguos assumi debere",
+        reading=(sp.Limit((Mw * GZ - phi * S_box) / phi ** 3, phi, 0), Mw * (eb ** 2 / (9 * Tb) + h / 6)),
+        note=claim("S·phi gives the moment only for very small angles: for the box M·GZ - S·phi is "
+                   "M(e²/(9T) + b/6)·phi³ + O(phi⁵), not zero (positive: the box rights more than S·phi)."))
+d.quote("same-ratio", "§195",
+        r"Perspicuum enim est quo maior sit ista expressio, eo quoque fore maiorem stabilitatem, et quidem in "
+        r"eadem ratione",
+        reading=(sp.Limit(sp.Subs(GZ, h, hb1) / sp.Subs(GZ, h, hb2), phi, 0),
+                 sp.Subs(S_box, h, hb1) / sp.Subs(S_box, h, hb2), (I_box / V_box - hb1) / (I_box / V_box - hb2)),
+        note=claim("the moments that produce an equal small heel in two states are in the ratio of their "
+                   "expressions: the box with G at b_1 and at b_2 above B."))
+S0_h = I_box / V_box                                                # the height b where the expression vanishes
+d.quote("zero-indifferent", "§195",
+        r"Quodsi ergo expressio stabilitatis evanescat, id indicio erit, situm aequilibrii esse indifferentem",
+        reading=(sp.Matrix([sp.Limit(sp.Subs(GZ, h, S0_h) / phi, phi, 0), sp.Limit(sp.Subs(GZ, h, S0_h) / phi ** 3, phi, 0)]),
+                 sp.Matrix([0, eb ** 2 / (6 * Tb)])),
+        note=claim("a vanishing expression means an indifferent equilibrium: the box with b = I/V has no righting "
+                   "arm to first order in phi (first entry), the order at which §194 defines the stability. The "
+                   "second entry shows what that order hides: this box still rights with GZ = (e²/(6T))·phi³ + …, "
+                   "so 'neque restitutio neque subversio' holds for the linear expression, not for the body at a "
+                   "finite angle. Not booked: Euler states the criterion for infinitely small angles (§194)."))
+h_neg = S0_h + gneg                                                 # G the height g above the metacentre
+GZ_neg = sp.Subs(GZ, h, h_neg)
+phi0 = sp.atan(sp.sqrt(2 * gneg / S0_h))
+d.quote("negative-unstable", "§195",
+        r"Sin autem expressio stabilitatis fiat negativa, tum situs aequilibrii adeo erit instabilis, seu labilis, "
+        r"atque vel minima facta inclinatione non solum non restituetur sed etiam conuertetur, donec nauis in aliud "
+        r"aequilibrii situm qui stabilitate praeditus sit, fuerit reducta",
+        reading=(sp.Matrix([sp.Limit(Mw * GZ_neg / phi, phi, 0), sp.Subs(GZ_neg, phi, phi0),
+                            sp.Subs(sp.Derivative(GZ_neg, phi), phi, phi0)]),
+                 sp.Matrix([-Mw * gneg, 0, 2 * gneg * sp.sqrt(1 + 6 * Tb * gneg / eb ** 2)])),
+        note=claim("a negative expression means an unstable upright position, and the body turns until it reaches "
+                   "another, stable, equilibrium: the box with G the height g above the metacentre has the "
+                   "stability -Mg < 0; its arm vanishes again at tan²phi₀ = 2g/(I/V) and grows through it "
+                   "(dGZ/dphi = 2g√(1 + 6Tg/e²) > 0): a stable heeled position. The box stays wall-sided there "
+                   "(e tan phi₀ = √(6gT) < T for g ≤ 1/100)."))
+BOX_IK = {Iw: 2 * sp.Integral(x ** 2, (x, -sp.Rational(1, 2), sp.Rational(1, 2))),
+          Kw: sp.Integral(x ** 2, (x, -1, 1))}                       # the box 1 x 1 x 2: waterplane 1 wide, 2 long
+d.quote("stable-one-way", "§196", r"atque adeo ut datus aequilibrii situs in alias plagas sit stabilis",
+        reading=(sp.Matrix([sp.Subs(Shi, (Mw, Iw, V, h), (1, BOX_IK[Iw], 1, sp.Rational(1, 3))),
+                            sp.Subs(SKhi, (Mw, Kw, V, h), (1, BOX_IK[Kw], 1, sp.Rational(1, 3)))]),
+                 sp.Matrix([-sp.Rational(1, 6), sp.Rational(1, 3)])),
+        note=claim("one equilibrium can be stable about one axis and unstable about another: the box 1 × 1 × 2 "
+                   "floating half immersed (V = 1, M = 1) with G 1/3 above B has the stability -1/6 about the long "
+                   "axis AB and +1/3 about the cross axis EF."))
+d.quote("pitch-exceeds-roll", "§196",
+        r"Sic facile perspicitur naues inclinationi versus proram seu puppim magis resistere",
+        reading=(sp.Subs(SKhi - Shi, (Iw, Kw), (Ire, Kre)), Mw * 4 * a * b * (a ** 2 - b ** 2) / (3 * V)),
+        note=claim("a ship resists pitching more than rolling: with the rectangular waterplane of §213 (2a long "
+                   "along AB, 2b wide) the stability about EF exceeds that about AB by 4Mab(a² - b²)/(3V), "
+                   "positive for a > b."))
+d.quote("two-axes-suffice", "§199", r"nunc ad quaestione bipartitam est reducta",
+        reading=(Mw * (((1 - m ** 2) * Iw + m ** 2 * Kw) / V - h), (1 - m ** 2) * Shi + m ** 2 * SKhi),
+        note=claim("the stabilities about the two principal axes suffice: with the moment n²I + m²K about an axis "
+                   "PQ at the angle ACP (§207, n² = 1 - m²), the stability about PQ is n²·S_AB + m²·S_EF."))
+d.quote("only-waterplane", "§200", r"Harum quatuor rerum tres priores aequaliter ingrediuntur",
+        reading=(SKhi - Shi, Mw * (Kw - Iw) / V),
+        note=claim("weight, volume and the distance b enter alike for every axis; only the waterplane's moment "
+                   "depends on it: the stabilities about EF and AB differ by M(K - I)/V, free of b."))
+d.quote("mirror-quarters", "§207",
+        r"tam binae priores ACE et ACF quam posteriores BCE et BCF interf erunt similes et aequales",
+        reading=(sp.Matrix([sp.Integral(1, (y, 0, h1), (x, 0, a)), sp.Integral(1, (y, 0, h2), (x, a, a + c))]),
+                 sp.Matrix([sp.Integral(1, (y, -h1, 0), (x, 0, a)), sp.Integral(1, (y, -h2, 0), (x, a, a + c))])),
+        note=claim("the parts of a waterplane on either side of AB are mirror images, so the fore parts ACE, ACF "
+                   "and the aft parts BCE, BCF are equal: read on the quadrilateral of §215, split at ef (the "
+                   "mirror argument is the same for any split across AB, EF included); 'interf' is inter se."))
+Krh_half = sp.Subs(rhomb(x ** 2), a, (a + c) / 2)                    # the rhombus with the same AB = a + c and ef
+d.quote("unlike-parts-larger", "§220",
+        "maiora habere momenta, quam\neas, quae constant partibus similibus, seu rhombos cete-\nris paribus",
+        reading=(K - Krh_half, Dk * (c - a) ** 2 / 36),
+        note=claim("§220 recalls §218: a quadrilateral whose parts fore and aft of the latitudinal axis differ has "
+                   "a greater moment about EF than the rhombus of the same length and breadth (so the same area): the "
+                   "excess of ∫∫(x - x_C)² over the rhombus' ∫∫x² is D(c - a)²/36 ≥ 0."))
+
+
+def _box_case(s_, hv, label):
+    return Case({Mw: 2 * s_, V: 2 * s_, h: hv, a: 1, b: sp.Rational(1, 2)}, data={"s": s_}, label=label)
+
+
+ONE_WAY = (Case({}, data={"s": sp.Rational(1, 2)}, label="box 1 x 1 x 2, s = 1/2, G 1/3 above B"),)
+d.witness(Computed("stable-one-way-box", "M GZ/phi of the heeled and the pitched box by exact clipping",
+                   ("stable-one-way",), ONE_WAY,
+                   compute=lambda cs, dps: [_stability(Case({Mw: 1, h: sp.Rational(1, 3)}, data=cs.data), dps, ax, 1)
+                                            for ax in ("AB", "EF")]))
+d.witness(Computed("pitch-minus-roll-box", "M GZ/phi pitched minus heeled, the box 1 x 1 x 2 by exact clipping",
+                   ("pitch-exceeds-roll",),
+                   (_box_case(sp.Rational(1, 2), sp.Rational(1, 10), "s = 1/2, b = 1/10"),
+                    _box_case(sp.Rational(3, 4), sp.Rational(1, 20), "s = 3/4, b = 1/20")),
+                   compute=lambda cs, dps: _stability(cs, dps, "EF", 1) - _stability(cs, dps, "AB", 1)))
+figure_witness("quad-K-excess-220", "∫∫ (x - x_C)^2 over the quadrilateral minus that of the rhombus with the same "
+               "AB and ef, both by quadrature", ("unlike-parts-larger",), Q_CASES,
+               lambda cs, dps: _quad_K(cs, dps) - polygon_integral(
+                   lambda X, Y: X ** 2,
+                   rhombus(Case({a: (cs.params[a] + cs.params[c]) / 2, b: cs.params[b]}), dps), dps))
+
+
+# The box 1 x 1 x 2 of the clipping witnesses (e = 1/2, T = s) heeled about its long axis by exact clipping: the
+# arm GZ(phi), its slope GZ/phi and third-order term extrapolated to phi -> 0 (Richardson, errors O(phi^4)),
+# and the heeled equilibrium by root-finding.  Tolerances: float64 1e-5 and 50 digits 1e-15, what the
+# extrapolation leaves (the arm of a finite angle is exact to the working precision).
+SERIES = (Precision(15, 1e-5), Precision(50, 1e-15))
+
+
+def _arm(s_, hv, phi_, dps):
+    from symfloat.geometry.floating import box, floating_state
+    big = None if dps <= 15 else dps + 30
+    num = (lambda v: mpmath.mpf(sp.N(v, big + 10))) if big else float
+    with mpmath.workdps(big or 15):
+        poly = box(1, 1, 2, dps=big)
+        S = num(s_)
+        B0 = floating_state(poly, (0, 1, 0), S).B
+        G = (B0[0], B0[1] + num(hv), B0[2])
+        ph = float(phi_) if not big else phi_ if isinstance(phi_, mpmath.mpf) else num(phi_)
+        sin, cos = (mpmath.sin, mpmath.cos) if big else (np.sin, np.cos)
+        Bp = floating_state(poly, (sin(ph), cos(ph), 0), S, G=G).B
+        return (Bp[0] - G[0]) * -cos(ph) + (Bp[1] - G[1]) * sin(ph)
+
+
+def _richardson(f, step, dps):
+    """lim f(phi), phi -> 0, for f = f0 + f2 phi^2 + f4 phi^4 + ...: two Richardson levels from step, step/2, step/4."""
+    with mpmath.workdps(dps + 30):
+        f1, f2, f4 = (f(step / k) for k in (1, 2, 4))
+        r1, r2 = (4 * f2 - f1) / 3, (4 * f4 - f2) / 3
+        return (16 * r2 - r1) / 15
+
+
+def _step(dps):
+    return 1e-2 if dps <= 15 else mpmath.mpf(10) ** -5
+
+
+def _slope(cs, dps, hv):
+    return _richardson(lambda p: _arm(cs.data["s"], hv, p, dps) / p, _step(dps), dps)
+
+
+def _cubic(cs, dps, hv):
+    """lim (GZ - phi GM)/phi^3 from g(phi) = GZ/phi = GM + c phi^2 + ...: (g(2 phi) - g(phi))/(3 phi^2), extrapolated."""
+    def g(p):
+        return _arm(cs.data["s"], hv, p, dps) / p
+    return _richardson(lambda p: (g(2 * p) - g(p)) / (3 * p ** 2), _step(dps), dps)
+
+
+def _pv(cs, sym):
+    return cs.params[sym]
+
+
+BOX_E = {eb: sp.Rational(1, 2), Tb: sp.Rational(1, 2)}
+HALF = {"s": sp.Rational(1, 2)}
+d.witness(Computed("moment-times-angle-box", "M GZ/phi of the heeled box by exact clipping, extrapolated to phi -> 0",
+                   ("moment-times-angle",), (Case({**BOX_E, Mw: 1, h: sp.Rational(1, 10)}, data=HALF, label="b = 1/10"),
+                                             Case({**BOX_E, Mw: 1, h: sp.Rational(1, 4)}, data=HALF, label="b = 1/4")),
+                   compute=lambda cs, dps: _pv(cs, Mw) * _slope(cs, dps, _pv(cs, h)), methods=SERIES))
+d.witness(Computed("same-ratio-box", "the ratio of the heeled box's GZ/phi at two heights of G, by clipping",
+                   ("same-ratio",), (Case({**BOX_E, hb1: sp.Rational(1, 40), hb2: sp.Rational(1, 50)}, data=HALF,
+                                          label="b_1 = 1/40, b_2 = 1/50"),),
+                   compute=lambda cs, dps: _slope(cs, dps, _pv(cs, hb1)) / _slope(cs, dps, _pv(cs, hb2)), methods=SERIES))
+d.witness(Computed("small-angles-box", "M (GZ - phi GM)/phi^3 of the heeled box by clipping, extrapolated",
+                   ("small-angles-only",), (Case({**BOX_E, Mw: 1, h: sp.Rational(1, 10)}, data=HALF, label="b = 1/10"),),
+                   compute=lambda cs, dps: _pv(cs, Mw) * _cubic(cs, dps, _pv(cs, h)), methods=SERIES))
+d.witness(Computed("zero-indifferent-box", "GZ/phi and GZ/phi^3 of the box with b = I/V = 1/6, by clipping",
+                   ("zero-indifferent",), (Case(dict(BOX_E), data=HALF, label="e = T = 1/2, b = 1/6"),),
+                   compute=lambda cs, dps: [_slope(cs, dps, sp.Rational(1, 6)), _cubic(cs, dps, sp.Rational(1, 6))],
+                   methods=SERIES))
+
+
+def _heeled_equilibrium(cs, dps):
+    """M GZ/phi upright, then the heeled root phi* of GZ (secant from 0.3) and GZ, dGZ/dphi there by clipping."""
+    hv = sp.Rational(1, 6) + cs.params[gneg]
+    s_ = cs.data["s"]
+    with mpmath.workdps(max(dps, 15) + 30):
+        root = mpmath.findroot(lambda p: _arm(s_, hv, p, dps), mpmath.mpf("0.3"), verify=False)
+        dlt = 1e-4 if dps <= 15 else mpmath.mpf(10) ** -12
+        slope = (_arm(s_, hv, root + dlt, dps) - _arm(s_, hv, root - dlt, dps)) / (2 * dlt)
+        return [_pv(cs, Mw) * _slope(cs, dps, hv), _arm(s_, hv, root, dps), slope]
+
+
+d.witness(Computed("negative-unstable-box", "the box with G 1/100 above the metacentre: M GZ/phi upright, and its "
+                   "heeled equilibrium found by root-finding on the clipped arm", ("negative-unstable",),
+                   (Case({**BOX_E, Mw: 1, gneg: sp.Rational(1, 100)}, data=HALF, label="g = 1/100"),),
+                   compute=_heeled_equilibrium, methods=SERIES))

@@ -774,3 +774,10 @@ line_witness("V2", ("reduce-V2",), AB_ONLY, lambda t, A, B, Yf, r: t * t / r, "y
 line_witness("S2c", ("S2c-expanded", "S2c-value"), CFIG, lambda t, A, B, Yf, r: (A + Yf(t)) ** 2 * r,
              "(a - cy²/b²)²√(b² - y²)")
 line_witness("S1c", ("S1c-value",), CFIG, lambda t, A, B, Yf, r: (A + Yf(t)) * r, "(a - cy²/b²)√(b² - y²)")
+
+d.quote("even-Y", "§221", r"ut curva haec ad utramque partem axis AB duas habeat partes AEB et AFB similes et "
+        r"aequales, necesse est ut Y sit functio par ipsius y",
+        reading=(sp.Matrix([e - sp.Subs(e, y, -y) for e in x21]), sp.Matrix([2 * p * y, 2 * p * y])),
+        note=claim("the parts on either side of AB are mirror images (x the same at y and -y) only if Y is even: "
+                   "for Y = py + qy² the two branches move by x(y) - x(-y) = 2py, zero for every y only when the "
+                   "odd part p vanishes."))

@@ -174,6 +174,7 @@ Rx = (1 - y ** n / b ** n) ** xk          # as printed, with x for κ
 XA, XB, D, IAB, MO, SO, XC, CO, KEF, Kc, N, K0g = sp.symbols("x_A x_B D I_{AEB} M_O S_O x_C CO K_{EF} K_c N K_0")
 M, V, OG, EF, AB, Dw, CD, mu, nu = sp.symbols("M V OG EF AB D_w CD mu nu", positive=True)
 Iw, Kw, SAB, SEF, SABp, Vpy, Vpr, Vwe = sp.symbols("I_w K_w S_{AB} S_{EF} S_{AB+} V_{pyr} V_{prism} V_{wedge}")
+fb, Hh, Tq = sp.symbols("f H T", positive=True)   # §240: the share of ballast, the hull's height and draught
 
 DERIVATION = d = Derivation(
     id="euler-229-243",
@@ -192,14 +193,17 @@ DERIVATION = d = Derivation(
             c1: (-1, 1), c2: (-1, 1), Ys: (-1, 1), y: (0, 1), s: (0, 1), m: (0, 1),
             n1: (1, 8), k1: (sp.Rational(1, 10), 1),
             M: (1, 5), V: (1, 5), OG: (0, 2), EF: (1, 3), AB: (3, 12), Dw: (1, 10), CD: (1, 3),
-            mu: (6, 12), nu: (6, 12), zl: (1, 3), Dprime: (1, 10), aY: (1, 2), bY: (1, 2), gY: (1, 2)},
+            mu: (6, 12), nu: (6, 12), zl: (1, 3), Dprime: (1, 10), aY: (1, 2), bY: (1, 2), gY: (1, 2),
+            fb: (0, 1), Hh: (2, 3), Tq: (sp.Rational(1, 2), 2)},
     assumptions=("a, b, c > 0; the exponents n > 0 and κ > 0 (the integrals converge); 0 < y < b",
                  "Y(y) is sampled as c_1 yⁿ/bⁿ + c_2 y²ⁿ/b²ⁿ (a function vanishing at y = 0, of the kind §231 "
                  "allows); the rules derived for it are linear or quadratic in Y and hold termwise",
                  "integrals ∫ … dy run from y = 0 to y = b (Euler: taken to vanish at y = 0, then y = b)",
                  "the ship of §238–243: weight M, displacement V, G at the height OG above the centre of "
                  "buoyancy O; D_w is Euler's D there (half the waterplane area), CD the depth of the keel",
-                 "a Latin v in a denominator of §239–243 is read as the volume V (as in §203); ν as ν"),
+                 "a Latin v in a denominator of §239–243 is read as the volume V (as in §203); ν as ν",
+                 "§240's hull: height H, draught T < H, the share f of the weight as ballast on the keel, the "
+                 "rest spread evenly over the height (0 < f < 1)"),
 )
 
 
@@ -1236,3 +1240,46 @@ d.quote("c-zero-suffices", "§234",
         note=claim("the moment about EF for any c is that for c = 0 plus the term of §232 in c alone."))
 _w("c-zero-suffices-quadrature", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
    ("c-zero-suffices",), CFAM, lambda cs, dps: _K(*_cfig(cs, dps)[:3]))
+
+
+# ---- §237, §240–241: the claims in words ---------------------------------------------------------------------
+d.quote("moment-AB-mu", "§237", r"$AB = \frac{EF^2 \cdot D}{\mu}$",
+        reading=(sp.Matrix([Ir, Irh, Ip]), sp.Matrix([(2 * b) ** 2 * Dr / 6, (2 * b) ** 2 * Drh / 12,
+                                                      (2 * b) ** 2 * Dp / sp.Rational(35, 4)])),
+        note=claim("the moment about AB is EF²D/μ, with the μ the paragraph gives each figure (rectangle 6, "
+                   "rhombus 12, the parabola 35/4 about AB). The same letter μ stands here for the number of "
+                   "either axis, and the paragraph itself gives the parabola two values (35/4 about AB, 10 about "
+                   "EF); §238 then names them μ and ν 'quia non semper aequales valores habent'. So μ in both "
+                   "formulas of §237 is the print's usage, not a fault of print or scan: nothing booked."))
+d.quote("moment-EF-mu", "§237", r"$EF = \frac{AB^2 \cdot D}{\mu}$",
+        reading=(sp.Matrix([Kr, Krh, Kp]), sp.Matrix([(2 * a) ** 2 * Dr / 6, (2 * a) ** 2 * Drh / 12,
+                                                      (2 * a) ** 2 * Dp / 10])),
+        note=claim("the moment about EF is AB²D/μ (rectangle 6, rhombus 12, the parabola 10 about EF); the "
+                   "letter is shared with the other axis as in the formula before (see 'moment-AB-mu')."))
+d.quote("mu-near-cases", "§237", r"Provt igitur figura proposita ad aliquem horum quatuor casuum proxime accedit, "
+        r"ita valorem litterae μ vero proxime definire licebit",
+        reading=(sp.Matrix([sp.Limit(muAB_fam.subs(k, sp.Rational(1, 2)), n, 2),
+                            sp.Limit(muEF_fam.subs(k, sp.Rational(1, 2)), n, 2)]), sp.Matrix([8, 8])),
+        note=claim("a figure close to one of the four cases has μ close to that case's: in the family of "
+                   "§229–236 (c = 0, κ = 1/2) μ about both axes tends to the ellipse's 8 as n → 2."))
+yGs, yBs = sp.symbols("y_G y_B")
+d.step("ballast-G", (yGs, fb * 0 + (1 - fb) * sp.Integral(s, (s, 0, Hh)) / Hh, (1 - fb) * Hh / 2), "integration",
+       result=yGs, note="§240: the share f of the weight on the keel (height 0), the rest spread evenly over the "
+                        "height H; heights above the keel")
+d.step("box-B", (yBs, sp.Integral(s, (s, 0, Tq)) / Tq, Tq / 2), "integration", result=yBs,
+       note="the centre of buoyancy of the wall-sided hull at the draught T")
+d.quote("ballast-lowers-G", "§240", r"Quamuis enim maxime ponderosis oneribus in imum carinae collocandis centrum "
+        r"gravitatis deorsum et quidem infra centrum magnitudinis deduci posset",
+        reading=(yGs - yBs, ((1 - fb) * Hh - Tq) / 2),
+        note=claim("heavy loads laid low in the hull can bring G below the centre of buoyancy: for a wall-sided "
+                   "hull of height H and draught T with the share f of its weight as ballast on the keel, G lies "
+                   "((1 − f)H − T)/2 above B, below it once f > 1 − T/H. The rest of the sentence (warships carry "
+                   "so much above the water that G can hardly be brought below the waterline) reports practice, "
+                   "which no formula checks."))
+d.quote("EF-multo-maior", "§241", r"Quanquam enim stabilitas nauium respectu axis latitudinalis multo maior esse "
+        r"debet, quam stabilitas respectu axis longitudinalis, tamen ea satis fiet in gens, si modo stabilitas "
+        r"respectu axis longitudinalis sit aliqua",
+        reading=(sp.Subs(SEF - SAB, (AB, nu), (4 * EF, mu)), 15 * M * EF ** 2 * Dw / (mu * V)),
+        note=claim("the stability about EF exceeds that about AB by much, so it is ample once that about AB is "
+                   "positive: with AB = 4EF and ν = μ (§241) the excess is 15MEF²D/(μV) > 0, fifteen times the "
+                   "part M·EF²D/(μV) of the stability about AB; 'in gens' is ingens."))

@@ -6,6 +6,8 @@ pyramid over each triangle of ``G`` and one tetrahedron for each side of
 ``g``; the tetrahedra are measured with the lemma
 ``V = (1/3) (2 P) d`` (``P`` the mid-section parallelogram, ``d`` the
 distance of the two skew edges).  Result: ``I = h/3 ((G + g)/2 + 2 D)``.
+The side faces are counted (Fig. 1): p + q triangles over bases of p and q sides, one face and two
+triangles fewer for each pair of parallel facing sides; witnessed by the faces of the exact hull.
 """
 import mpmath
 import sympy as sp
@@ -16,6 +18,7 @@ from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoi
 from symfloat.model.claim import as_printed
 
 G, g, D, h, z = sp.symbols("G g D h z", positive=True)
+ps, qs, kp, Sf, Tf = sp.symbols("p q k S_f T_f", positive=True)   # sides of the bases, parallel pairs, faces
 P, V1, V2, V3, I = sp.symbols("P V_1 V_2 V_3 I", positive=True)
 # the tetrahedron of the lemma: vertices A, B, C, D_ (D is the mid-section)
 XA, XB, XC, XD = (sp.Matrix(sp.symbols(f"x_{n} y_{n} z_{n}")) for n in "ABCD")
@@ -63,7 +66,7 @@ DERIVATION = d = Derivation(
     summary="Volume of a tetrahedron from its mid-section parallelogram; the prismatoid "
             "cut into pyramids and tetrahedra; I = h/3 ((G+g)/2 + 2D).",
     domain={**{s: (1, 20) for s in (G, g, D, h)}, **{c: (-6, 6) for c in coords + fig3_coords},
-            P: (1, 20)},
+            P: (1, 20), ps: (3, 8), qs: (3, 8), kp: (0, 3)},
     constraints=(D > G / 4 + g / 4,),
     assumptions=("G, g, D, h > 0",
                  "the mid-section is larger than the halved bases together (D > G/4 + g/4), "
@@ -361,3 +364,53 @@ def _heron_halves(case, dps):
 d.witness(Computed("mid-section-heron", "the mid-section abcd of random tetrahedra by Heron's formula",
                    ("parallelogram-half-triangle",), tuple(_tetrahedron_case(s) for s in range(3)),
                    compute=_heron_halves))
+
+
+# ---- §1: the side faces counted (Fig. 1) -----------------------------------------------------------
+d.step("side-faces", Eq(Sf, ps + qs - kp), "definition", result=Sf,
+       note="each side of either base lies in exactly one side face of the hull, and every side face holds at "
+            "least one (a plane meeting both bases in single points only is no face); a face holding a side of "
+            "each base holds two parallel lines (the bases' planes are parallel), so with k pairs of parallel "
+            "corresponding sides the p + q sides fill p + q - k faces")
+d.step("side-triangles", Eq(Tf, Sf - kp), "definition", result=Tf,
+       note="a face with one side of a base has one vertex of the other: a triangle; the k faces with two "
+            "parallel sides are trapezoids")
+d.quote("side-faces", "§1 prismatoid faces", "Die Seitenebenen des Prismaoids werden im Allgemeinen Dreiecke sein "
+        "und zwar sind deren so viele, wie die Summe der Seiten der beiden Grundflächen",
+        reading=(sp.Matrix([sp.Subs(Sf, kp, 0), sp.Subs(Tf, kp, 0)]), sp.Matrix([ps + qs, ps + qs])),
+        note="in general (no side of one base parallel to a side of the other) the side faces are triangles, as "
+             "many as the sides of both bases together")
+d.quote("parallel-sides", "§1 prismatoid faces", "Würden aber zwei der Seiten der beiden Grundflächen parallel, so "
+        "fällt die Kante zwischen zwei Dreiecken fort",
+        reading=(sp.Matrix([sp.Subs(Sf, kp, 1), sp.Subs(Tf, kp, 1)]), sp.Matrix([ps + qs - 1, ps + qs - 2])),
+        note="when a side of the upper base is parallel to the facing side of the lower one, the two triangles "
+             "over them lie in one plane: the edge between them drops out and they make one trapezoid, so one "
+             "face less and two triangles fewer (read for one such pair; parallel sides facing away from each "
+             "other share no face and change nothing)")
+
+
+def _lift(polygon, height):
+    from fractions import Fraction as F
+    return [(F(x_), F(y_), F(height)) for x_, y_ in polygon]
+
+
+def _side_faces(case, dps):
+    """[side faces, of them triangles] of the exact hull of the two bases (faces off the planes z = 0, z = 1)."""
+    from symfloat.geometry.convex import hull_faces
+    lower, upper = case.data
+    faces = [f for f in hull_faces(_lift(lower, 0) + _lift(upper, 1)) if len({v[2] for v in f}) > 1]
+    return [len(faces), sum(len(f) == 3 for f in faces)]
+
+
+PENTAGON = [(0, 0), (4, 0), (5, 3), (2, 5), (-1, 3)]
+SQUARE = [(0, 0), (4, 0), (4, 4), (0, 4)]
+FACE_CASES = (Case({ps: 5, qs: 4, kp: 0}, (PENTAGON, [(1, 1), (3, "3/2"), (3, 3), ("3/2", "7/2")]),
+                   "pentagon under a quadrilateral, no sides parallel (Fig. 1: 5 + 4)"),
+              Case({ps: 5, qs: 3, kp: 0}, (PENTAGON, [(1, 1), (3, 2), (2, 3)]), "pentagon under a triangle"))
+d.witness(Computed("side-faces-hull", "the side faces of the exact convex hull of the two bases, counted",
+                   ("side-faces",), FACE_CASES, compute=_side_faces))
+d.witness(Computed("parallel-sides-hull", "the side faces of the exact hull when one pair of sides is parallel",
+                   ("parallel-sides",),
+                   (Case({ps: 4, qs: 4, kp: 1}, (SQUARE, [(1, 1), (3, 1), ("5/2", 3), ("3/2", "5/2")]),
+                         "square under a quadrilateral with its front side parallel"),),
+                   compute=_side_faces))

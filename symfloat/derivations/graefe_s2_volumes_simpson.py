@@ -43,6 +43,9 @@ def prismatoid(G_, g_, D_, h_):
     return (h / 3 * ((G + g) / 2 + 2 * D)).xreplace({G: G_, g: g_, D: D_, h: h_})
 
 
+Rb, rt, ng = sp.symbols("R rho N", positive=True)   # radii of the frustum's bases, number of sides
+
+
 DERIVATION = d = Derivation(
     id="graefe-s2-volumes-simpson",
     source="graefe",
@@ -53,7 +56,7 @@ DERIVATION = d = Derivation(
             "(printed without the factor 1/3).",
     requires=("graefe-s1-prismatoid-volume",),
     domain={**{s: (1, 20) for s in (G, g, D, h, t, r, p, x, a, b, c, dd, e, f, m)},
-            **{s: (-5, 5) for s in k}},
+            **{s: (-5, 5) for s in k}, Rb: (1, 5), rt: (1, 5)},
     constraints=(x <= 2 * a,),
     assumptions=("the bodies are solids of revolution about the z axis, z measured from the plane G",
                  "the ellipsoid segment is not higher than the ellipsoid: x <= 2a",
@@ -402,3 +405,21 @@ d.witness(Computed("zero-bases-volumes", "∫ A dz of a pyramid and of a body wi
                                      Case({G: sp.Rational(7, 3), D: sp.Rational(1, 2), h: 4},
                                           label="G = 7/3, D = 1/2, h = 4")),
                    compute=_zero_base_volumes))
+
+
+# ---- infinitely many sides: curved bodies as prismatoids -------------------------------------------------
+def _ngon(radius):
+    """The area of the regular N-gon of circumradius *radius*."""
+    return ng / 2 * radius ** 2 * sp.sin(2 * pi / ng)
+
+
+d.quote("infinitely-many-sides", "§2 curved surfaces",
+        "Ferner können wir die Zahl der Seiten der beiden Grundflächen, von der die Formel ebenfalls unabhängig "
+        "entwickelt, unendlich setzen, so wie die Seiten selbst unendlich klein, so dass dieselben krumme Linien "
+        "werden",
+        reading=(sp.Limit(prismatoid(_ngon(Rb), _ngon(rt), _ngon((Rb + rt) / 2), h), ng, sp.oo),
+                 sp.Integral(pi * (Rb + (rt - Rb) * z / h) ** 2, (z, 0, h))),
+        note="the formula holds for any number of sides, so also in the limit of infinitely many: the "
+             "prismatoids between regular N-gons of circumradii R and ρ (their mid-section the N-gon of "
+             "radius (R + ρ)/2) tend, as N → ∞, to the frustum of a cone, and the formula's limit is the "
+             "frustum's volume ∫π r(z)² dz")

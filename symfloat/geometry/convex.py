@@ -18,7 +18,7 @@ from __future__ import annotations
 from fractions import Fraction
 from itertools import combinations
 
-__all__ = ["hull_2d", "polygon_area", "hull_volume_centroid", "section_polygon", "section_area"]
+__all__ = ["hull_2d", "polygon_area", "hull_faces", "hull_volume_centroid", "section_polygon", "section_area"]
 
 
 def _cross2(o, a, b):
@@ -93,6 +93,12 @@ def _faces(points):
             ring.reverse()
         faces.append(ring)
     return faces
+
+
+def hull_faces(points):
+    """The faces of the convex hull of 3-D points (coplanar facets merged), each the ring of its vertices
+    (exact ``Fraction`` coordinates), counter-clockwise seen from outside."""
+    return _faces(points)
 
 
 def hull_volume_centroid(points):

@@ -7,16 +7,24 @@ quantity, ``F``, ``T``, ``V``).  A section (Scheeffer's I–X, Graefe's §§, Eu
 the others) introduces a point in the first sentence that names it next to a cue (*Fig.*, *Punkt*, *sei*,
 *Achse*, *Gerade*, *Ebene*, *Schwerpunkt*; *sit*, *ponatur*, *punctum*, *axis*, *recta*, *centrum*; ...), or in
 an earlier section.  A point used in a quote with no introduction before it is *flagged*.
+
+Two contradictions are found mechanically as well (:func:`contradictions`): a point that one section
+introduces twice as different kinds of point (the nearest kind word within a few words of the label:
+centre of gravity, centre of buoyancy, midpoint, metacentre), and a letter that one quoted formula uses both
+as a point (in a run such as ``CD``) and alone as a quantity (``D``).
 """
 from __future__ import annotations
 
 import re
 from functools import cache
 
+import sympy as sp
+
 from ..model.source import SOURCES, get_source
 from ..model.span import line_of, math_intervals
 
-__all__ = ["sections", "points", "labels_in", "introductions", "flagged", "flags", "labels_markdown"]
+__all__ = ["sections", "points", "labels_in", "introductions", "flagged", "flags", "contradicting", "contradictions",
+           "labels_markdown"]
 
 _SUB = "₀₁₂₃₄₅₆₇₈₉"
 _POINT = re.compile(rf"[A-Z](?:_\{{?[0-9a-z]\}}?|_[0-9a-z]|[{_SUB}]|')?")
@@ -27,6 +35,12 @@ _CUES = re.compile(r"Fig|Figur|Punkt|Punkte|sei|seien|heiss|Achse|Gerade|Linie|E
                    r"Seite|Kante|Basis|Grundfläche|Strecke|Dreieck|Viereck|Durchschnitt|\bsit\b|\bsint\b|ponatur|"
                    r"punct|axis|axe|recta|linea|centr|figura|sectio|curua|curva|ducatur|vocetur|pont|tengely|"
                    r"Schnitt|Lot|Abstand|parallel", re.I)
+_KINDS = {"centre of gravity": re.compile(r"schwerpunkt|centr\w*\s+gr[au]vitatis|súlypont", re.I),
+          "centre of buoyancy": re.compile(r"centr\w*\s+magnitudinis|auftriebs?punkt|verdrängungsschwerpunkt|"
+                                           r"metacentr|metazentr", re.I),
+          "midpoint": re.compile(r"mittelpunkt|halbierungspunkt|punct\w*\s+\w*\s*medi|\bmedi(?:us|um|o)\b", re.I)}
+_NEAR = 40                 # characters between a label and the kind word that describes it
+_LONE = re.compile(r"(?<![\\\w{])(?<![a-z] )[A-Z](?![\w}'])(?! [a-z]\b)")   # not beside a point o, c: "G c"
 _NOT_LABELS = {"I", "II", "III", "IV", "V", "VI", "VII", "VIII", "IX", "X", "D", "A.", "B.", "C."}
 
 
@@ -127,19 +141,90 @@ def flags(source: str) -> list[dict]:
     return flagged(text, sections(source), [(a, b, fid) for a, b, fid, _ in _quotes(source)], source, found, intro)
 
 
+def _kind(text: str, at: int, token: str) -> str | None:
+    """The kind of point the words nearest to the label at *at* describe, or None."""
+    a, b = max(0, at - _NEAR), min(len(text), at + len(token) + _NEAR)
+    best = None
+    for kind, pattern in _KINDS.items():
+        for m in pattern.finditer(text, a, b):
+            gap = m.start() - (at + len(token)) if m.start() >= at else at - m.end()
+            if best is None or gap < best[0]:
+                best = (gap, kind)
+    return best[1] if best else None
+
+
+def contradicting(text: str, starts, quoted, source: str = "", found=None, products=None) -> list[dict]:
+    """The contradictions of *text* (sections opening at *starts*; quotes ``(start, end, formula id)``): a point
+    a section introduces as two kinds of point, and a letter one quote uses as a point and as a quantity.
+    ``products`` (formula id -> the symbol names of its hand reading) tells a product from a segment: a run
+    whose letters are all symbols of the reading (``ND``) is a product."""
+    products = products or {}
+    found = labels_in(text) if found is None else found
+    kinds: dict[tuple[str, str], dict[str, int]] = {}
+    for at, token in found:
+        pts = points(token)
+        if len(pts) != 1 or not _CUES.search(_sentence(text, at)):
+            continue
+        kind = _kind(text, at, token)
+        if kind:
+            kinds.setdefault((_section_of(starts, at), pts[0]), {}).setdefault(kind, at)
+    out = []
+    for (sec, p), by_kind in kinds.items():
+        if len(by_kind) > 1:
+            (k1, a1), (k2, a2) = sorted(by_kind.items(), key=lambda kv: kv[1])[:2]
+            out.append({"source": source, "line": line_of(text, a2)[0], "section": sec, "label": p, "quote": "",
+                        "why": f"introduced as the {k1} (line {line_of(text, a1)[0]}) and as the {k2}"})
+    intervals = math_intervals(text)
+    for a, b, fid in quoted:
+        for ma, mb, _ in (iv for iv in intervals if iv[0] < b and a < iv[1]):
+            tex = text[max(a, ma):min(b, mb)]
+            runs = list(_MATH_LABEL.finditer(tex))
+            in_runs = {q for m in runs for q in points(m.group(0)) if not _ROMAN.fullmatch(m.group(0))
+                       and not set(points(m.group(0))) <= products.get(fid, set())}
+            covered = [(m.start(), m.end()) for m in runs]
+            lone = {m.group(0) for m in _LONE.finditer(tex) if not any(x <= m.start() < y for x, y in covered)}
+            for p in sorted(in_runs & lone):
+                out.append({"source": source, "line": line_of(text, ma)[0], "section": _section_of(starts, ma),
+                            "label": p, "quote": fid,
+                            "why": "one formula uses the letter as a point (in a segment) and alone as a quantity"})
+    unique = {(f["line"], f["label"], f["why"]): f for f in out}
+    return sorted(unique.values(), key=lambda f: (f["line"], f["label"]))
+
+
+def contradictions(source: str) -> list[dict]:
+    """:func:`contradicting` for the quotes of every derivation of *source*."""
+    from .references import _quotes
+    from ..model.claim import members
+    text, found, _ = _read(source)
+    products = {}
+    for a, b, fid, p in _quotes(source):
+        if p.reading is not None:
+            products[fid] = {q.name for m in members(p.reading) for q in sp.sympify(m).free_symbols}
+    return contradicting(text, sections(source), [(a, b, fid) for a, b, fid, _ in _quotes(source)], source, found,
+                         products)
+
+
 def labels_markdown(sources=tuple(SOURCES)) -> str:
-    """The labels section of ``docs/references.md``: counts per source and every flagged label."""
+    """The labels section of ``docs/references.md``: counts per source, every flagged label and every
+    contradiction."""
     out = ["# Point labels of the quotes", "",
            "A point label used in a quote is tied to the first sentence of its section that names it beside a cue",
            "(*Fig.*, *Punkt*, *sei*, *Achse*, ...; `symfloat/report/labels.py`). Flagged: a label the section",
-           "introduces only after the quote, or never (nor an earlier section).", "",
-           "| source | points introduced | labels flagged |", "|---|---:|---:|"]
+           "introduces only after the quote, or never (nor an earlier section). Contradictions: a point a section",
+           "introduces as two kinds of point (centre of gravity, centre of buoyancy, midpoint), or a letter one quote",
+           "uses both as a point (in a segment such as CD) and alone as a quantity (D); listed, for the reader to judge.",
+           "", "| source | points introduced | labels flagged | contradictions |", "|---|---:|---:|---:|"]
     found = {s: flags(s) for s in sources}
+    clashes = {s: contradictions(s) for s in sources}
     for s in sources:
-        out.append(f"| {s} | {sum(1 for (sec, p) in introductions(s))} | {len(found[s])} |")
+        out.append(f"| {s} | {sum(1 for (sec, p) in introductions(s))} | {len(found[s])} | {len(clashes[s])} |")
     for s, fl in found.items():
         if fl:
             out += ["", f"## {s}", "", "| line | section | label | in | quote | why |", "|---:|---|---|---|---|---|"]
             out += [f"| {f['line']} | {f['section']} | {f['label']} | `{f['token']}` | {f['quote']} | {f['why']} |"
                     for f in fl]
+    for s, cl in clashes.items():
+        if cl:
+            out += ["", f"## {s}: contradictions", "", "| line | section | label | quote | why |", "|---:|---|---|---|---|"]
+            out += [f"| {f['line']} | {f['section']} | {f['label']} | {f['quote'] or '–'} | {f['why']} |" for f in cl]
     return "\n".join(out) + "\n"

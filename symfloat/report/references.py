@@ -10,10 +10,16 @@ tagged with the number, ``52`` also to ``52a`` when no ``52`` is tagged) and che
 * ``wrong``: a quote that covers the reference books an erratum that corrects its number (a misprint of the
   original); a quote whose note says the number means another one *without* an erratum is a failed self-check;
 * ``resolved``: the target precedes the reference, and both the referring passage and the target are quoted by
-  the derivations (so the use is checked there);
+  the derivations (so the use is checked there), and the steps behind a quote that cites it do not miss the
+  steps behind the target's quote (:func:`uses_target`);
 * ``plausible``: the target precedes, but a side is not quoted: the derivations cannot confirm the use;
-* ``suspect``: no target (a figure the transcription lacks, a number no display carries) or a target that comes
-  later: listed, never passed.
+* ``suspect``: no target (a figure the transcription lacks, a number no display carries), a target that comes
+  later, or a cited formula the citing quote's steps do not use, directly or through their chain: listed,
+  never passed.
+
+The steps behind a quote are the step of the same name and the steps that establish a quantity of its reading;
+a step reaches the steps it ``uses`` and those that establish the quantities its claim mentions.  A citing quote
+whose steps rest on nothing is not judged.
 """
 from __future__ import annotations
 
@@ -23,7 +29,7 @@ from functools import cache
 from ..model.source import SOURCES, get_source
 from ..model.span import line_of, math_intervals
 
-__all__ = ["STATUSES", "tags", "paragraphs", "references", "check", "references_markdown"]
+__all__ = ["STATUSES", "tags", "paragraphs", "references", "check", "anchors", "uses_target", "references_markdown"]
 
 STATUSES = ("resolved", "plausible", "suspect", "wrong")
 
@@ -130,6 +136,60 @@ def _quotes(source: str) -> list[tuple[int, int, str, object]]:
     return out
 
 
+def _symbols(claim) -> set:
+    if claim is None:
+        return set()
+    from ..model.claim import members
+    import sympy as sp
+    return set().union(*(sp.sympify(m).free_symbols for m in members(claim)))
+
+
+@cache
+def _derivation(did: str):
+    from ..registry import load
+    return load(did)[0]
+
+
+def anchors(did: str, printed) -> set[tuple[str, str]]:
+    """The steps ``(derivation id, step name)`` behind a quote: the step of its name and those establishing a
+    quantity of its reading."""
+    d = _derivation(did)
+    used = _symbols(printed.reading)
+    return {(did, st.name) for st in d.steps if st.name == printed.name or st.result is not None and st.result in used}
+
+
+def _edges(did: str, name: str) -> set[tuple[str, str]]:
+    """What the step *name* of *did* rests on: its ``uses``, and the earlier steps establishing its quantities."""
+    d = _derivation(did)
+    at = next(i for i, st in enumerate(d.steps) if st.name == name)
+    st = d.steps[at]
+    out = {tuple(u.split(":", 1)) if ":" in u else (did, u) for u in st.uses}
+    mentioned = _symbols(st.claim) - ({st.result} if st.result is not None else set())
+    return out | {(did, e.name) for e in d.steps[:at] if e.result is not None and e.result in mentioned}
+
+
+def uses_target(use: set, target: set) -> bool | None:
+    """Whether the steps *use* reach the steps *target* through their uses and quantities; None when the use
+    has no step that rests on anything (nothing to check)."""
+    if use & target:
+        return True
+    if not use or not target or not any(_edges(*u) for u in use):
+        return None
+    seen, todo = set(), list(use)
+    while todo:
+        node = todo.pop()
+        if node in target:
+            return True
+        if node in seen:
+            continue
+        seen.add(node)
+        try:
+            todo += _edges(*node)
+        except (StopIteration, KeyError, ValueError):      # a step of a derivation not loaded here
+            continue
+    return False
+
+
 def _judged(number: str, lead: str, covering) -> tuple[str, str, str]:
     """What the quotes covering a reference say of its number: ("wrong", formula id, erratum) when an erratum
     corrects it, ("unbooked", id, note) when a note says it means another number without one, else ("", "", "")."""
@@ -175,9 +235,17 @@ def references(source: str) -> list[dict]:
         elif target[0] > line and not (kind == "paragraph" and target[1] < a):
             status, reason = "suspect", "the target comes later"
         else:
-            at_target = [q[2] for q in quotes if q[0] < target[2] and target[1] < q[1]]
-            at_use = [q[2] for q in covering] or [q[2] for q in quotes if line_of(text, q[0])[0] == line]
-            if at_target and at_use:
+            targets = [q for q in quotes if q[0] < target[2] and target[1] < q[1]]
+            uses = covering or [q for q in quotes if line_of(text, q[0])[0] == line]
+            at_target, at_use = [q[2] for q in targets], [q[2] for q in uses]
+            reached = [uses_target(_anchors(u), set().union(*(_anchors(t) for t in targets))) for u in uses] \
+                if targets else []
+            if at_target and at_use and False in reached and True not in reached:
+                status, u = "suspect", uses[reached.index(False)]
+                reason = (f"target quoted by {at_target[0]}, but the steps behind {u[2]} "
+                          f"({', '.join(sorted(n for _, n in _anchors(u)))}) do not rest on the steps behind "
+                          f"it ({', '.join(sorted(n for _, n in set().union(*(_anchors(t) for t in targets)))) or '–'})")
+            elif at_target and at_use:
                 status, reason = "resolved", f"target quoted by {at_target[0]}, use by {at_use[0]}"
             else:
                 status = "plausible"
@@ -186,6 +254,10 @@ def references(source: str) -> list[dict]:
                     "number": number, "target_line": target[0] if target else None, "status": status,
                     "reason": reason})
     return out
+
+
+def _anchors(q) -> set:
+    return anchors(q[2].rsplit("/", 1)[0], q[3])
 
 
 def check(refs) -> list[str]:
@@ -201,8 +273,10 @@ def references_markdown(sources=tuple(SOURCES)) -> str:
            "Generated by `symfloat coverage --write` (`symfloat/report/references.py`). A reference is an equation",
            "number after *Gleichung*, *Gl.*, *nach*, *aus*, *s.*, *vgl.*, *Bedingung* or in *in N ein*, a figure",
            "(*Fig. N*) or Euler's paragraph (*§. N* inside a paragraph). Status: **resolved** (target before the use,",
-           "both quoted by the derivations), **plausible** (target before the use, a side unquoted), **suspect** (no",
-           "target in the transcription, or a later one: undecided), **wrong** (an erratum corrects the number).", "",
+           "both quoted by the derivations, the citing quote's steps not missing the target's), **plausible** (target",
+           "before the use, a side unquoted), **suspect** (no target in the transcription, a later one, or a target",
+           "the citing quote's steps do not rest on, through their `uses` or the quantities they mention: undecided),",
+           "**wrong** (an erratum corrects the number).", "",
            "| source | references | resolved | plausible | suspect | wrong |", "|---|---:|---:|---:|---:|---:|"]
     everything = {s: references(s) for s in sources}
     for s, refs in everything.items():
