@@ -370,3 +370,22 @@ def test_complete_stability_in_the_second_region_needs_less_than_hg_below_c():
         assert abs(sum(h[k] * (st.G[k] - st.B[k]) for k in range(3))) < 1e-12      # an equilibrium
         assert abs(st.waterplane_area / c_ - hg) < 1e-9                             # HG of the clipped waterplane
         assert (st.metacentric_height > 0) == stable, c_
+
+
+@pytest.mark.parametrize("row, row161", [(r[0], r[1]) for r in M.ROWS_162])
+def test_rows_of_162_at_their_points_on_the_clipped_box(row, row161):
+    # the point at which each row of (162) is read (scheeffer-ix/162-I ...): the clipped box turned about c finds
+    # the printed equilibria of the second region (2 sigma <= z <= 1, tan phi_2 = b z^2/(2 a sigma)), in order
+    sv, nv = (float(v) for v in M.CASES_161[row161])
+    a_, sg = math.sqrt(nv), 1 - sv
+    lo, hi = math.atan(2 * sg / a_), math.atan(1 / (2 * a_ * sg))
+    found = [f[1] for f in _clipped_equilibria((a_, 1.0, 3.0), sv, (0, 1)) if lo < f[0] < hi]
+    stab = next(r[4] for r in M.ROWS_162 if r[0] == row)
+    assert found == ["stable" if x > 0 else "unstable" for x in stab]
+
+
+def test_alternation_at_the_point_of_its_reading_on_the_clipped_box():
+    # scheeffer-ix/alternate at s = 73/100, n = 251/250: between the two upright positions (both labile there) the
+    # clipped box has exactly stable, labile, stable, all in the second region
+    found = _clipped_equilibria((math.sqrt(1.004), 1.0, 3.0), 0.73, (0, 1))
+    assert [f[1] for f in found] == ["stable", "unstable", "stable"]
