@@ -915,6 +915,12 @@ d.quote("164-sufficient", "(164)",
                  (z ** 2 - 4 * sg ** 2) * ((a / b) ** 2 - z ** 2) / z ** 2),
         note="sign identity: the margin of (163) exceeds that of (164) on 2 sigma <= z <= 1 <= n, so (164) implies "
              "HG < c at every root of the region, which suffices (HG-complete)")
+_ac = sp.Dummy("k")
+d.quote("164-about-a", "(164)", "Die Bedingung 164 kann dann natürlich nicht erfüllt sein.",
+        reading=(sp.Subs(sp.Subs(sp.Subs((c / b) ** 2 - (4 * (1 - s) ** 2 + (a / b) ** 2), a, _ac), c, a), _ac, c),
+                 -((c ** 2 - a ** 2) / b ** 2 + 4 * (1 - s) ** 2)),
+        note="(164) with a and c exchanged (the axis parallel to a): its margin is minus a sum of positive terms for "
+             "c > a, so it never holds")
 
 # ==== C. the third region ============================================================================
 kd = sp.Dummy("k")
