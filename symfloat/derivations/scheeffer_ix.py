@@ -22,8 +22,9 @@ the inflections, F'(3/4) >= 0 makes F monotone (139), which holds for all n >= 1
 are found by eliminating z between F = 0 and F' = 0 (146-149) with t = (128 sigma - 9)/27; here the
 double-root locus is parametrised by the double root itself (sigma and n are rational functions of
 it), which gives S = n + 1/n (151-154), n_1 (153, 156) and the double root z_1 (155-158) and shows
-2 sigma < z_1 < 1 (159, 160).  The case tables (161, 162, 162a) and the bound for complete
-stability, HG < c (163), with the sufficient (164).
+2 sigma < z_1 < 1 (159, 160).  The case tables (161, 162, 162a), each row read at an exact point, and the
+bound for complete stability, HG < c (163), with the sufficient (164); HG < c is itself only sufficient (the
+exact condition is HG c^3/12 > V BG, erratum HG-complete).
 
 Third region (C): the first region with a and b exchanged: the other upright position (a vertical)
 and its oblique equilibrium cot^2 phi_3 = 12 (a/b)^2 s(1-s) - 2 (164a-166), and the closing tables.
@@ -1613,7 +1614,8 @@ def predict(scene):
     tables give them: the three positions with a face down (123), and for each edge as axis the oblique
     positions of the three regions.  Stability in every direction: upright by (123) with the smaller horizontal
     edge; oblique in the first region by (126)/(127) (the edge along the axis longer than the horizontal edge
-    across it), in the third likewise with b, in the second by the table and (163) (HG < edge along the axis)."""
+    across it), in the third likewise with b, in the second by the table and (163) (HG < edge along the axis, as
+    printed: sufficient, not necessary, erratum HG-complete)."""
     dims = [float(v) for v in scene.dims]
     sv = float(scene.density)
     preds, seen = [], set()
