@@ -49,7 +49,7 @@ def test_the_errata_are_exactly_the_expected_ones(report):
                       "145": "transcription", "162a": "transcription", "s-three-quarters": "misprint",
                       "table-first": "transcription", "table-third": "transcription",
                       "one-root-between": "transcription", "positive-whole-region": "claim",
-                      "164-reference": "misprint", "two-below-n1": "claim"}
+                      "164-reference": "misprint", "two-below-n1": "claim", "HG-complete": "claim"}
     assert all(f.verdict == "erratum" for f in report.formulas if f.erratum)
 
 
@@ -331,6 +331,7 @@ def test_the_144_correction_must_hold():
     # line 1539: 'für n < n_1 dagegen muss F(z) = 0 zwei Wurzeln haben' - three in the region when F(2 sigma) < 0;
     # the same over-generalisation as positive-whole-region, booked as its repeat (same_as)
     ("two-below-n1", "claim", "medium"),
+    ("HG-complete", "claim", "medium"),                   # line 1689: HG < c taken for the condition (sufficient only)
 ])
 def test_second_review_faults_are_errata(name, kind, confidence):
     rep = check_derivation(_mutated(name), prove=False, trust_steps=True)
@@ -350,3 +351,41 @@ def test_root_counts_of_136_at_s_73_100():
     assert [round(x, 4) for x in one] == [-0.7403, 0.5586]
     assert [int(D.results()[q].doit()) for q in (M.NPOS, M.NNEG, M.NREG, M.NRIGHT)] == [3, 1, 1, 0]
     assert M._n1_printed(0.73) < 1.02 < 2 * 0.27 * (4 * 0.73 - 1)
+
+
+def test_complete_stability_in_the_second_region_needs_less_than_hg_below_c():
+    # HG-complete: at s = 73/100, a/b = sqrt(51/50) (case 162 I) the clipped box, turned about c to its equilibrium
+    # in the second region, is stable in every direction for c above 1.0256 b, although HG = 1.1248 b; the bound is
+    # c^2 = 12 s a b BG/HG (HG c^3/12 = V BG), not c = HG
+    a_, sv = math.sqrt(1.02), 0.73
+    z = 0.5586397792255947                       # the root of (136) in (2 sigma, 1)
+    ph = math.atan(z * z / (2 * a_ * (1 - sv)))
+    sg = 1 - sv
+    bg = sg / sv * (math.sin(ph) * (a_ / 2 - 2 * a_ * sg / z / 3) + math.cos(ph) * (0.5 - z / 3))
+    hg, c_star = z / math.sin(ph), math.sqrt(12 * sv * a_ * bg / (z / math.sin(ph)))
+    assert round(hg, 4) == 1.1248 and round(c_star, 4) == 1.0256
+    for c_, stable in ((1.07, True), (1.03, True), (1.02, False)):
+        st = floating_state(box(a_, 1.0, c_), (math.sin(ph), math.cos(ph), 0.0), sv)
+        h = (math.cos(ph), -math.sin(ph), 0.0)
+        assert abs(sum(h[k] * (st.G[k] - st.B[k]) for k in range(3))) < 1e-12      # an equilibrium
+        assert abs(st.waterplane_area / c_ - hg) < 1e-9                             # HG of the clipped waterplane
+        assert (st.metacentric_height > 0) == stable, c_
+
+
+@pytest.mark.parametrize("row, row161", [(r[0], r[1]) for r in M.ROWS_162])
+def test_rows_of_162_at_their_points_on_the_clipped_box(row, row161):
+    # the point at which each row of (162) is read (scheeffer-ix/162-I ...): the clipped box turned about c finds
+    # the printed equilibria of the second region (2 sigma <= z <= 1, tan phi_2 = b z^2/(2 a sigma)), in order
+    sv, nv = (float(v) for v in M.CASES_161[row161])
+    a_, sg = math.sqrt(nv), 1 - sv
+    lo, hi = math.atan(2 * sg / a_), math.atan(1 / (2 * a_ * sg))
+    found = [f[1] for f in _clipped_equilibria((a_, 1.0, 3.0), sv, (0, 1)) if lo < f[0] < hi]
+    stab = next(r[4] for r in M.ROWS_162 if r[0] == row)
+    assert found == ["stable" if x > 0 else "unstable" for x in stab]
+
+
+def test_alternation_at_the_point_of_its_reading_on_the_clipped_box():
+    # scheeffer-ix/alternate at s = 73/100, n = 251/250: between the two upright positions (both labile there) the
+    # clipped box has exactly stable, labile, stable, all in the second region
+    found = _clipped_equilibria((math.sqrt(1.004), 1.0, 3.0), 0.73, (0, 1))
+    assert [f[1] for f in found] == ["stable", "unstable", "stable"]

@@ -22,8 +22,9 @@ the inflections, F'(3/4) >= 0 makes F monotone (139), which holds for all n >= 1
 are found by eliminating z between F = 0 and F' = 0 (146-149) with t = (128 sigma - 9)/27; here the
 double-root locus is parametrised by the double root itself (sigma and n are rational functions of
 it), which gives S = n + 1/n (151-154), n_1 (153, 156) and the double root z_1 (155-158) and shows
-2 sigma < z_1 < 1 (159, 160).  The case tables (161, 162, 162a) and the bound for complete
-stability, HG < c (163), with the sufficient (164).
+2 sigma < z_1 < 1 (159, 160).  The case tables (161, 162, 162a), each row read at an exact point, and the
+bound for complete stability, HG < c (163), with the sufficient (164); HG < c is itself only sufficient (the
+exact condition is HG c^3/12 > V BG, erratum HG-complete).
 
 Third region (C): the first region with a and b exchanged: the other upright position (a vertical)
 and its oblique equilibrium cot^2 phi_3 = 12 (a/b)^2 s(1-s) - 2 (164a-166), and the closing tables.
@@ -795,6 +796,134 @@ d.quote("z1-above-2sigma", "IX.B", r"$2\sigma < z_1$", reading=(Zp - 2 * sig_t, 
 d.quote("z1-at-most-1", "IX.B", r"$z_1 \leq 1$", reading=(1 - Zp, 4 * (1 + 3 * t) / (16 * (7 - 3 * t + 3 * rt))),
         note="sign identity as (159)")
 
+# ---- the sentences of B around (155)-(164): sign identities, and root counts at exact points
+d.quote("upper-sign-n1", "IX.B",
+        r"Von diesen beiden Werten entspricht der mit dem oberen Vorzeichen dem Werte  $n_1$ , sodass also",
+        reading=(sp.Rational(3, 8) * (N1 - t) * (1 + 3 * t) / (1 - t ** 2), Zp),
+        note="(155) at n = n_1 (the upper sign of (156)) is z_+, the upper sign of (157); at n_2 it would be z_-")
+d.quote("7-3t-positive", "IX.B", r"d. i. aber positiv, da  $s > \frac{1}{2}$ .",
+        reading=as_printed(lambda: (7 - 3 * t_s, sp.Rational(8, 9) * (16 * (s - half) + 1))),
+        note="sign identity: 7 - 3t = 8/9 (16 (s - 1/2) + 1) > 0 for s > 1/2 (indeed for s > 7/16)")
+d.quote("160-square", "IX.B", "Folglich ändert sich die Beziehung 160 nicht, wenn beide Seiten quadriert werden:",
+        reading=((7 - 3 * t) ** 2 - 9 * (5 - t) * (1 - t), (7 - 3 * t + 3 * rt) * (7 - 3 * t - 3 * rt)),
+        note="the difference of the squares is the difference of the sides of (160) times their sum, positive when "
+             "7 - 3t > 0: squaring keeps the relation")
+d.quote("z1-between", "IX.B", r"Die Doppelwurzel  $z_1$  liegt also unbedingt zwischen  $2\sigma$  und 1.",
+        reading=(sp.Matrix([Zp - 2 * sig_t, 1 - Zp]),
+                 sp.Matrix([(27 - 15 * t + 12 * rt) / 64, 4 * (1 + 3 * t) / (16 * (7 - 3 * t + 3 * rt))])),
+        note="sign identities, sigma from t by (150): both members positive for every s > 23/32 (-1/3 < t < 1); "
+             "the double root exists only there (t < 1)")
+
+
+def _ends(sv, nv):
+    """Signs of F(2 sigma) and F(1) from the dry triangle (b = 1, a = sqrt(nv)) and of n - n_1 (156) at s = sv."""
+    pt = {sg: 1 - sv, s: sv, a: sp.sqrt(nv), b: 1}
+    return [sp.sign(F2s.subs(pt)), sp.sign(F1v.subs(pt)), sp.sign(nv - sp.Subs(N1, t, t_s.subs(s, sv)))]
+
+
+def _stabilities(sv, nv):
+    """Signs of F' at the real roots of (136) in (2 sigma, 1) at s = sv, n = nv, in the order of z (of the tilt):
+    + where F goes from - to + (stable about the axis, righting-sign), - where it goes from + to - (labile)."""
+    q = quartic.subs({n: nv, sg: 1 - sv})
+    return [sp.sign(sp.diff(q, z).subs(z, r_)) for r_ in sp.Poly(q, z).real_roots() if 2 * (1 - sv) < r_ < 1]
+
+
+# the cases of (161) and (162) at exact points (s, n), one per row: S_CT = 73/100 has rho = 1.0368, n_1 = 1.00631;
+# 19/25: rho = 0.9792, n_1 = 1.0479; 3/4: rho = 1, n_1 = 1.0307; 4/5: rho = 0.88, n_1 = 1.1521
+CASES_161 = {"I": (S_CT, N_ONE), "II": (S_CT, N_THREE), "III": (sp.Rational(3, 4), sp.Rational(51, 50)),
+             "IV": (sp.Rational(19, 25), sp.Rational(101, 100)), "V": (sp.Rational(4, 5), 2)}
+ROWS_161 = (("I", r"- I. wenn  $F(2\sigma) < 0$ ,  $F(1) > 0$ ,  $n > n_1$  ist, eine reelle Wurzel,", (-1, 1, 1), 1),
+            ("II", r"- II. wenn  $F(2\sigma) < 0$ ,  $F(1) > 0$ ,  $n < n_1$  ist, drei reelle Wurzeln,", (-1, 1, -1), 3),
+            ("III", r"- III. wenn  $F(2\sigma) > 0$ ,  $F(1) > 0$ ,  $n < n_1$  ist, zwei reelle Wurzeln,", (1, 1, -1), 2),
+            ("IV", r"- IV. wenn  $F(2\sigma) > 0$ ,  $F(1) < 0$ ,  $n < n_1$  ist, eine reelle Wurzel,", (1, -1, -1), 1),
+            ("V", r"- V. wenn  $F(2\sigma) > 0$ ,  $F(1) > 0$ ,  $n > n_1$  ist, keine reelle Wurzel.", (1, 1, 1), 0))
+for row, text, signs, count in ROWS_161:
+    sv, nv = CASES_161[row]
+    d.quote(f"161-{row}", "(161)", text,
+            reading=(sp.Matrix(_ends(sv, nv) + [_count(sv, nv, 2 * (1 - sv), 1)]), sp.Matrix(list(signs) + [count])),
+            note=f"read at s = {sv}, n = {nv}: the signs of F(2 sigma), F(1) (the dry triangle), n - n_1 (156), and the "
+                 "number of real roots of (136) in (2 sigma, 1] by exact root isolation; the tests count the roots "
+                 "on a grid of s and n in every case")
+d.quote("162-premise", "(162)",
+        r"Das rechtwinklige Parallelepipid hat unter der Voraussetzung  $s \geq \frac{23}{32}$ , wenn es um eine mit  "
+        r"$c$  parallele Achse gedreht wird, im zweiten Drehungsgebiet",
+        reading=(sp.Subs(N1, t, t_s.subs(s, sp.Rational(23, 32))), 1),
+        note="at s = 23/32 (t = 1) n_1 = 1 <= n: n < n_1 is impossible, rows I and V of (162) are VI and VII of "
+             "(162a), so the boundary belongs to either table")
+# (162): the rows of (161) in n = (a/b)^2 against rho and 1/rho (141, 142), with the stabilities in the order of the tilt
+ROWS_162 = (("I", "I", r"I. wenn   | $\left(\frac{a}{b}\right)^2$ | $\left\{ \begin{array}{l} < \varrho \\ > "
+                       r"\frac{1}{\varrho} \\ > n_1 \end{array} \right.$ | eine Gleichgewichtslage (stabil).", (-1, 1, 1), (1,)),
+            ("II", "II", r"II. wenn  | $\left(\frac{a}{b}\right)^2$ | $\left\{ \begin{array}{l} < \varrho \\ > "
+                         r"\frac{1}{\varrho} \\ < n_1 \end{array} \right.$ | drei Gleichgew. (stabil, labil, stabil).",
+             (-1, 1, -1), (1, -1, 1)),
+            ("III", "IV", r"III. wenn | $\left(\frac{a}{b}\right)^2$ | $\left\{ \begin{array}{l} > \varrho \\ < "
+                          r"\frac{1}{\varrho} \\ < n_1 \end{array} \right.$ | eine Gleichgew. (labil).", (1, -1, -1), (-1,)),
+            ("IV", "III", r"IV. wenn  | $\left(\frac{a}{b}\right)^2$ | $\left\{ \begin{array}{l} > \varrho \\ > "
+                          r"\frac{1}{\varrho} \\ < n_1 \end{array} \right.$ | zwei Gleichgew. (labil, stabil).",
+             (1, 1, -1), (-1, 1)),
+            ("V", "V", r"V. wenn   | $\left(\frac{a}{b}\right)^2$ | $\left\{ \begin{array}{l} > \varrho \\ > "
+                       r"\frac{1}{\varrho} \\ > n_1 \end{array} \right.$ | keine Gleichgew.", (1, 1, 1), ()))
+for row, row161, text, signs, stab in ROWS_162:
+    sv, nv = CASES_161[row161]
+    r_ = rho_s.subs(s, sv)
+    d.quote(f"162-{row}", "(162)", text,
+            reading=(sp.Matrix([sp.sign(nv - r_), sp.sign(nv - 1 / r_), sp.sign(nv - sp.Subs(N1, t, t_s.subs(s, sv))),
+                                _count(sv, nv, 2 * (1 - sv), 1)] + _stabilities(sv, nv)),
+                     sp.Matrix(list(signs) + [len(stab)] + list(stab))),
+            note=f"read at s = {sv}, n = {nv} (row {row161} of (161)): the signs of n - rho, n - 1/rho, n - n_1, the "
+                 "number of roots of (136) in (2 sigma, 1] and the signs of F' there in the order of the tilt "
+                 "(+1 stable, -1 labile about the axis); docs/scheeffer-ix-grid.md compares the whole table with the "
+                 "solver")
+
+# complete stability in the second region: HG < c is sufficient, not the condition
+BGz = (sg / (1 - sg) * u_up.dot(sp.Matrix([a / 2 - 2 * a * sg / z / 3, b / 2 - b * z / 3]))).subs(phi, phi_z)
+D_perp = HGz * c ** 3 / 12 - s * a * b * c * BGz     # waterplane moment across the axis less V BG
+Z_HG = next(r_ for r_ in _roots136(N_ONE) if r_ > 2 * (1 - S_CT))
+PT_HG = {a: sp.sqrt(N_ONE), b: 1, c: sp.Rational(107, 100), s: S_CT, sg: 1 - S_CT}
+d.quote("HG-complete", "IX.B",
+        r"Was die Stabilität des Gleichgewichts in den Fällen (162 I, II, IV, VI) betrifft, so ist dieselbe eine "
+        r"vollkommene, wenn (s. Fig. 22)  $H G < c$  ist.",
+        reading=(sp.sign((c - HGz).subs(PT_HG).subs(z, Z_HG)), sp.sign(D_perp.subs(PT_HG).subs(z, Z_HG))),
+        erratum=Erratum("claim", "medium",
+                        r"\text{vollkommen stabil, wenn } H G \cdot c^3 > 12\, V \cdot \overline{B G}, \text{ d. i. } c^2 > "
+                        r"\frac{12 a b s \cdot \overline{B G}}{H G} \;(< H G^2)\text{; } H G < c \text{ ist hinreichend, "
+                        r"nicht notwendig}",
+                        "At an equilibrium of the second region the waterplane is the rectangle HG x c; turned about "
+                        "the horizontal axis across the c-axis the box is stable iff HG c^3/12 > V BG (V = s a b c, BG "
+                        "the height of G above B), i.e. c^2 > 12 s a b BG/HG. Stability about the c-axis itself is "
+                        "c HG^3/12 > V BG, so at every position stable about the axis this bound lies below HG^2: "
+                        "HG < c is sufficient, not the condition the text takes it for ('die Bedingung für vollkommene "
+                        "Stabilität', (163), and 'der genaue Grenzwert' of c/b after it). At s = 73/100, a/b = "
+                        "sqrt(51/50), c/b = 107/100 (case 162 I, the root z = 0.5586 of (136)) HG = 1.1248 b > c, yet "
+                        "the exact bound is c > 1.0256 b: the clipped box at its equilibrium tilt 0.51975 has the least "
+                        "metacentric height +0.0118 b (it changes sign at c = 1.0256 b), completely stable. Medium: "
+                        "'wenn' alone states a sufficient condition, which holds.",
+                        corrected_reading=(c ** 2 - 12 * s * a * b * BGz / HGz, 12 * D_perp / (c * HGz))),
+        note="read at s = 73/100, n = 51/50, c/b = 107/100 and the root z of (136) in the region (stable about the "
+             "axis): the sign of c - HG against the sign of HG c^3/12 - V BG, the moment of the waterplane across the "
+             "axis less V BG (the metacentric height across the axis times V); BG = E of the step 'potential'. The "
+             "correction is read as a sign identity at every z: factor 12/(c HG)")
+d.quote("HG-max-sufficient", "IX.B",
+        r"Es findet aber sicher Stabilität statt, wenn  $c$  grösser als das maximum von  $H G$  ist.",
+        reading=((HGz.subs(z, 2 * sg) ** 2 - HGz ** 2) / b ** 2, (z ** 2 - 4 * sg ** 2) * ((a / b) ** 2 - z ** 2) / z ** 2),
+        note="sign identity: HG(2 sigma)^2 - HG(z)^2 >= 0 on 2 sigma <= z <= 1 <= n, so c above the largest HG makes "
+             "HG < c at the root, which is sufficient (HG-complete)")
+d.quote("HG-max-at", "IX.B", r"nämlich für  $z = 2 \sigma = 2 \cdot (1 - s)$", reading=(Zlo, 2 * sg, 2 * (1 - s)),
+        note="the smallest z of the region (135a)")
+d.quote("164-sufficient", "(164)",
+        "Wenn die Bedingung 164 erfüllt ist, so ist das in den oben angegebenen Fällen (143, 161, 162) stattfindende "
+        "Gleichgewicht vollkommen stabil.",
+        reading=((c ** 2 - HGz ** 2) / b ** 2 - ((c / b) ** 2 - 4 * (1 - s) ** 2 - (a / b) ** 2),
+                 (z ** 2 - 4 * sg ** 2) * ((a / b) ** 2 - z ** 2) / z ** 2),
+        note="sign identity: the margin of (163) exceeds that of (164) on 2 sigma <= z <= 1 <= n, so (164) implies "
+             "HG < c at every root of the region, which suffices (HG-complete)")
+_ac = sp.Dummy("k")
+d.quote("164-about-a", "(164)", "Die Bedingung 164 kann dann natürlich nicht erfüllt sein.",
+        reading=(sp.Subs(sp.Subs(sp.Subs((c / b) ** 2 - (4 * (1 - s) ** 2 + (a / b) ** 2), a, _ac), c, a), _ac, c),
+                 -((c ** 2 - a ** 2) / b ** 2 + 4 * (1 - s) ** 2)),
+        note="(164) with a and c exchanged (the axis parallel to a): its margin is minus a sum of positive terms for "
+             "c > a, so it never holds")
+
 # ==== C. the third region ============================================================================
 kd = sp.Dummy("k")
 
@@ -911,6 +1040,57 @@ d.quote("table-third", "IX.C",
                                               sp.zeros(2, 1)))),
         note="for s > 1/2 with rho > 0")
 
+
+# ---- the sentences of C: sign identities and the alternation at an exact point
+d.quote("upright-unconditional", "IX.C", "Im ersten Gebiet ist in diesem Falle die aufrechte Lage unbedingt stabil.",
+        reading=(12 * s / b * GMa, ((a / b) ** 2 - 1) + 6 * (s - shi) * (s - slo)),
+        note="sign identity: (123)'s margin is (a/b)^2 - 1 >= 0 plus 1 - 6s(1-s), positive outside [s_-, s_+] (164a)")
+d.quote("oblique-3-if", "IX.C",
+        "so ist die aufrechte Lage labil, es giebt aber vorher eine schiefe stabile Lage, wenn (s. 131)",
+        reading=(sp.Matrix([-12 * s / a * GM3, PW(swap_ab((a / b) ** 2 - rho_s), 0)]),
+                 sp.Matrix([6 * s * (1 - s) - (b / a) ** 2, PW(Q3, 0)])),
+        note="the a-vertical position's margin is negative under (b/a)^2 < 6s(1-s), and the lower bound of (131) "
+             "with a and b exchanged is the margin of the tilt within the region (s > 1/2): the reference is right")
+d.quote("165-fails", "IX.C",
+        "also im ersten Gebiet keine stabile Lage, so kann die Bedingung 165 um so weniger erfüllt sein, dann giebt es "
+        "also im dritten Gebiet auch keine.",
+        reading=(sp.Matrix([12 * s / b * GMa, 1 / rho_s - (a / b) ** 2]),
+                 sp.Matrix([-(2 * (1 - s) ** 2 + (rho_s - (a / b) ** 2)),
+                            -(((a / b) ** 2 - 1) * ((a / b) ** 2 + 1) + (a / b) ** 2 * (rho_s - (a / b) ** 2)) / rho_s])),
+        note="sign identities for (a/b)^2 < rho (and n >= 1): the upright margin is negative (rho < 6s(1-s)), the "
+             "oblique of the first region lies beyond it (131), and 1/rho - n < 0, so (165) fails")
+d.quote("166-from-125", "(166)", "Der Drehungswinkel für die stabile Lage (165) ist aus der Gleichung (s. 125)",
+        reading=(tan2t, swap_ab(12 * (b / a) ** 2 * s * (1 - s) - 2)),
+        note="(125) with a and b exchanged is (166): the reference is right")
+d.quote("rho-bound-3", "IX.C",
+        r"Dieses schiefe stabile Gleichgewicht ist übrigens noch an eine Bedingung für s gebunden. Da  "
+        r"$\left(\frac{a}{b}\right)^2 > 1$  ist, so muss um so mehr  $\frac{1}{2(1-s)(4s-1)} > 1$  sein",
+        reading=(PW(1 / rho_s - 1, 0), PW((a / b) ** 2 / rho_s * Q3 + ((a / b) ** 2 - 1), 0)),
+        note="sign identity (s > 1/2): 1/rho - 1 is the margin of (165), (a/b)^2/rho times the tilt margin Q_3 >= 0, "
+             "plus (a/b)^2 - 1 >= 0; a condition on s alone")
+d.quote("s-above-3-4", "IX.C", r"ist also nur für  $s > \frac{3}{4}$  erfüllt.",
+        reading=(PW(s - sp.Rational(3, 4), 0), PW((1 - rho_s) / (8 * (s - half)), 0)),
+        note="for s > 1/2: 1 - rho = 8 (s - 1/2)(s - 3/4) is positive iff s > 3/4")
+_base3 = sp.Integral(zz ** 2 - x_ ** 2, (x_, -a / 2, a / 2), (zz, -c / 2, c / 2))
+d.quote("127-third", "IX.C", "Letzteres ist (nach 127) vollkommen stabil.",
+        reading=(swap_ab(_base3), b * c * (c - b) * (c + b) / 12),
+        note="(127) for the base b x c of the a-vertical position: the moment across the axis exceeds the one about "
+             "it (c > a > b), so the oblique position stable about the axis is stable in every direction")
+# the alternation at s = 73/100, n = 251/250 (b = 1): upright (b vertical), the three roots of the second region,
+# a vertical; the first and third regions hold no oblique position there (n < rho: 131; n > 1/rho: 165)
+PT_ALT = {a: sp.sqrt(N_THREE), b: 1, s: S_CT}
+d.quote("alternate", "IX.C",
+        r"Es mag noch bemerkt werden, dass wenn das Parallelepipед aus einer geraden (aufrechten) Lage um  "
+        r"$90^\circ$ , also in eine andere gerade Lage gedreht wird, immer abwechselnd eine stabile (wenigstens in "
+        r"Bezug auf die Drehungsrichtung) und eine labile auf einander folgen müssen.",
+        reading=(sp.Matrix([sp.sign(sp.Subs(e_, tuple(PT_ALT), tuple(PT_ALT.values()))) for e_ in (GMa, PW(Q130, 0))]
+                           + _stabilities(S_CT, N_THREE)
+                           + [sp.sign(sp.Subs(e_, tuple(PT_ALT), tuple(PT_ALT.values()))) for e_ in (PW(Q3, 0), GM3)]),
+                 sp.Matrix([-1, -1, 1, -1, 1, -1, -1])),
+        note="read at s = 73/100, n = 251/250 from 0 to 90 deg: upright labile, no oblique position in the first "
+             "region (margin of 131 negative), stable, labile, stable in the second (signs of F'), none in the third "
+             "(margin of 165 negative), a-vertical labile: the five equilibria alternate. The tests check the "
+             "alternation of the tables on the whole grid of docs/scheeffer-ix-grid.md")
 
 # ==== witnesses: the clipped floating box ============================================================
 def _M(p):
@@ -1435,7 +1615,8 @@ def predict(scene):
     tables give them: the three positions with a face down (123), and for each edge as axis the oblique
     positions of the three regions.  Stability in every direction: upright by (123) with the smaller horizontal
     edge; oblique in the first region by (126)/(127) (the edge along the axis longer than the horizontal edge
-    across it), in the third likewise with b, in the second by the table and (163) (HG < edge along the axis)."""
+    across it), in the third likewise with b, in the second by the table and (163) (HG < edge along the axis, as
+    printed: sufficient, not necessary, erratum HG-complete)."""
     dims = [float(v) for v in scene.dims]
     sv = float(scene.density)
     preds, seen = [], set()

@@ -147,6 +147,35 @@ d.quote("regular-polygon-theorem", "VI",
              "from other-symmetry-axis")
 
 
+
+def ngon_product(n, side):
+    """Exact product moment int u v df of the regular n-gon of edge ``side`` (vertex on the +x axis), u across the
+    axis with normal (cos omega, sin omega), v along it: over each fan triangle (O, V_k, V_k+1) area/12
+    (2 u_k v_k + u_k v_k+1 + u_k+1 v_k + 2 u_k+1 v_k+1)."""
+    R = side / (2 * sp.sin(pi / n))
+    V = [(R * sp.cos(2 * pi * k / n), R * sp.sin(2 * pi * k / n)) for k in range(n)]
+    total = 0
+    for k in range(n):
+        (x1, y1), (x2, y2) = V[k], V[(k + 1) % n]
+        area = (x1 * y2 - x2 * y1) / 2
+        u1, u2 = x1 * sp.cos(om) + y1 * sp.sin(om), x2 * sp.cos(om) + y2 * sp.sin(om)
+        v1, v2 = -x1 * sp.sin(om) + y1 * sp.cos(om), -x2 * sp.sin(om) + y2 * sp.cos(om)
+        total += area / 12 * (2 * u1 * v1 + u1 * v2 + u2 * v1 + 2 * u2 * v2)
+    return total
+
+
+d.quote("regular-prism-law", "VI",
+        "„Schwimmt ein regelmässiges gerades Prisma in schiefer Lage stabil und zwar so, dass seine obere Grundfläche "
+        "über, die untere unter dem Wasserspiegel sich befindet, und wird es um seine (zu den Grundflächen senkrechte) "
+        "Hauptachse gedreht, so bleibt es in allen Lagen im stabilen Gleichgewicht, so lange keine der Grundflächen "
+        "den Wasserspiegel durchschneidet“.",
+        reading=(sp.Matrix([ngon_product(n, a) for n in NGONS] + [sp.Derivative(ngon_T[k], om) for k in range(3)]),
+                 sp.zeros(6, 1)),
+        note="read for the regular triangle, square and hexagon of edge a turned by omega about the main axis: the "
+             "product moment int_1 u v df of the base, whose vanishing is the second equilibrium condition (45), is "
+             "0 for every omega, and the moment T_1 (hence the tilt (52) and the stability (51)) does not change; "
+             "the general law of section V (an erratum there) holds for these bases")
+
 def at_data(printed, derived, data):
     """A worked example's inequality at its data: the printed margin (positive when the printed relation holds)
     equals the derived margin there, and is positive."""

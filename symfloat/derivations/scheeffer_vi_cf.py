@@ -274,6 +274,13 @@ d.quote("78c", "(78c)",
             "Both case labels are exchanged consistently, which a scan does not do; a misprint of the original "
             "is the likelier cause (the scan cannot be excluded: medium).",
             corrected_reading=(PW((1 - s) * (7 * s - 1), s * (6 - 7 * s)) - (a / b) ** 2, -Q77_sign)))
+d.quote("78c-turn", "(78c)",
+        "so kann das Prisma in der schiefen stabilen Lage nur soweit um die Hauptachse gedreht werden, bis eine der "
+        "Grundflächen den Wasserspiegel durchschneidet.",
+        reading=(sp.Derivative(tanlim, om), -tanlim * sp.cos(pi / 4 + om) / sp.sin(pi / 4 + om)),
+        note="sign identity: the limit tilt of the first domain decreases as the axis turns from a side (omega = 0) "
+             "towards the diagonal (45 deg); under (78c) phi_1 exceeds it at 45 deg (the negation of (77)), so the "
+             "turn keeps the oblique position only up to the omega* of (78d), where a base face reaches the water")
 d.quote("78d", "(78d)",
         r"$$\sin^2 (45^\circ + \omega) \leq \begin{cases} \frac{(1 - s)^2}{6s(1 - s) - \left(\frac{a}{b}\right)^2} & "
         r"\text{für } s > \frac{1}{2} \\ \frac{s^2}{6s(1 - s) - \left(\frac{a}{b}\right)^2} & \text{für } s < "

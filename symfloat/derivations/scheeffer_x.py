@@ -275,6 +275,50 @@ d.quote("171", "(171)",
                  sp.Matrix([2 * Tq, zq, KF * dE])),
         note="x of the text is x_l here; the equation read as left minus right side = (positive factor) x dE/dt")
 
+# the cut faces: which corners of the unit cube lie above a water plane (dry); a face loses a triangle when an odd
+# number (1 or 3) of its four corners is dry, and the waterplane has as many vertices as edges join a dry corner
+# to a wet one
+CORNERS = [sp.Matrix([sx, sy, sz]) * half for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)]
+
+
+def _dry(height):
+    """Per corner 1 if height(corner) > 0 (above the water plane), else 0, as unevaluated steps."""
+    return [(1 + sp.sign(height(q))) / 2 for q in CORNERS]
+
+
+def _face_counts(height):
+    """Dry corners of the faces X = +-1/2, Y = +-1/2, Z = +-1/2 (in this order), unevaluated sums."""
+    dry = _dry(height)
+    return [sp.Add(*[dry[i] for i, q in enumerate(CORNERS) if q[ax] == sg_ * half], evaluate=False)
+            for ax in range(3) for sg_ in (1, -1)]
+
+
+def _waterplane_vertices(height):
+    """Edges of the cube from a dry to a wet corner: the vertices of the waterplane polygon."""
+    dry = _dry(height)
+    pairs = [(i, j) for i in range(8) for j in range(i + 1, 8) if sum(abs(CORNERS[i][k] - CORNERS[j][k])
+                                                                          for k in range(3)) == 1]
+    return sp.Add(*[(dry[i] - dry[j]) ** 2 for i, j in pairs], evaluate=False)
+
+
+def _top_dry(xx):
+    """Dry corners of the top face when the water line GH cuts off the corner triangle with legs xx at B (xi < 0)."""
+    return sp.Add(*[(1 - sp.sign(xi.subs({X: q[0], Y: q[1], xl: xx}))) / 2 for q in CORNERS if q[2] > 0],
+                  evaluate=False)
+
+
+def _three(count):
+    """1 if count is 3, 0 for 1, 2, 4."""
+    return (count - 1) * (count - 2) * (4 - count) / 2
+
+
+X_IN = (-sp.Rational(1, 10), sp.Rational(1, 10), sp.Rational(9, 10), sp.Rational(11, 10))
+d.quote("x-range", "X (171)", r"und  $x$  zwischen 0 und 1 liegen muss.",
+        reading=as_printed(lambda: (sp.Matrix([_three(_top_dry(xx)) for xx in X_IN]), sp.Matrix([0, 1, 1, 0]))),
+        note="read as: the top face has exactly three dry corners (the water line cuts off the corner triangle at B "
+             "alone, the pentagon of (171)) for 0 < x < 1 and not beyond: at x = -1/10, 1/10, 9/10, 11/10 it has 4, "
+             "3, 3, 1 dry corners (xi < 0, the signed distance from GH of over_F)")
+
 f_at = lambda xx, ss: F171(sp.Rational(1, 6) + (1 - xx) ** 2 - xx ** 4 / 12, 1 - xx + xx ** 3 / 6, xx, ss)  # noqa
 d.step("end-0", (F0, f_at(sp.Integer(0), s), *as_printed(lambda: ((7 * (1 - s) ** 2 - 6 * (1 - s) + 1) / 6,
                                                           7 * (s - (4 + r2) / 7) * (s - (4 - r2) / 7) / 6))),
@@ -325,6 +369,41 @@ d.step("pentagon-vertices", Eq(NVp, sp.Rational(11, 2) + sp.sign(beta(X_COUNTER,
        "definition", result=NVp, uses=("bottom-corner",),
        note="vertices of the waterplane at the only root of (171) in (0, 1) at s = 3/5 (x = 0.5498): 5 if beta < 1, "
             "6 if beta > 1; beta = 1.214 there")
+
+# the position of (171) at s = 3/5, x = 0.5498 (beta > 1, the hexagon): the water plane z = 1/2 + k_171 xi
+_hex_height = lambda q: q[2] - half - (r2 * (1 - S_COUNTER) / (1 - X_COUNTER + X_COUNTER ** 3 / 6)) * (  # noqa: E731
+    xi.subs({X: q[0], Y: q[1], xl: X_COUNTER}))
+d.quote("hex-two-faces", "X", "In diesem Falle wird von je zwei parallelen Flächen ein Dreieck abgeschnitten.",
+        reading=(sp.Matrix([_waterplane_vertices(_hex_height)] + _face_counts(_hex_height)),
+                 sp.Matrix([6, 1, 3, 1, 3, 3, 1])),
+        note="read at the position of (171) at s = 3/5, x = 0.5498 (tilt k_171, beta = 1.214): the waterplane has six "
+             "vertices and every face an odd number of dry corners (X+, X-, Y+, Y-, top, bottom: 1, 3, 1, 3, 3, 1): "
+             "the top loses the immersed triangle at B, the bottom the dry triangle at D (Fig. 21: GBH, DLM), and so "
+             "does each pair of side faces")
+# the four waterplanes of the second and third domains at exact planes n.p = d (dry where n.p > d)
+SHAPES = (("pentagon", (1, 1, 4), sp.Rational(6, 5)), ("triangle", (1, 1, 1), 1), ("hexagon", (1, 1, 1), 0),
+          ("trapezoid", (sp.Rational(1, 10), 1, 1), half))
+_plane = lambda nn, dd: (lambda q: sum(nn[k] * q[k] for k in range(3)) - dd)  # noqa: E731
+
+
+def _pair_triangles(nn, dd):
+    """The most faces with a triangle cut off in one pair of parallel faces (0, 1 or 2)."""
+    cnt = _face_counts(_plane(nn, dd))
+    odd = [(1 - (-1) ** c_) / 2 for c_ in cnt]
+    return sp.Max(*[odd[2 * k] + odd[2 * k + 1] for k in range(3)], evaluate=False)
+
+
+d.quote("one-or-both-faces", "X",
+        "In allen Fällen wird von einer oder von beiden Grundflächen je ein Dreieck abgeschnitten und es soll nun "
+        "zunächst die erste Gleichgewichtsbedingung dafür untersucht werden.",
+        reading=(sp.Matrix([_waterplane_vertices(_plane(nn, dd)) for _, nn, dd in SHAPES]
+                           + [_pair_triangles(nn, dd) for _, nn, dd in SHAPES]),
+                 sp.Matrix([5, 3, 6, 4, 1, 1, 2, 2])),
+        note="read at four exact planes, one per waterplane the text names (pentagon: three top corners dry; "
+             "triangle: one; hexagon: a corner and its three neighbours; trapezoid: one top edge): the number of "
+             "waterplane vertices, and the most faces of one parallel pair from which a triangle is cut off. The "
+             "cube's faces are alike, so the 'Grundflächen' are that pair: for the trapezoid (a dry edge) the two "
+             "faces at the ends of the edge, not the top and bottom of the turn, whose cuts are trapezoids")
 PENT_EVIDENCE = (
     "(172) is right about (171), but (171) describes an equilibrium only while the bottom face stays uncut, "
     "beta = (2 - x)(1 - s)/z < 1. For 1/2 < s < 0.7623 the root of (171) has beta > 1: at s = 3/5 it is "
