@@ -100,7 +100,33 @@ def _tracked_stable(poly, group, u, s, label, family, scale) -> tuple[bool, np.n
         tilted = position_label(loc.u, "isolated").startswith("tilted")
         off_axis = min(np.linalg.norm(np.abs(loc.u) - e) for e in np.eye(3)) > 1e-6
         return tilted and off_axis and w[1] > 0 and abs(w[0]) < 1e-6 * scale, loc.u
-    return position_label(loc.u, family) == label and min(w) > 1e-14 * scale, loc.u
+    if position_label(loc.u, family) != label or not min(w) > 1e-14 * scale:
+        return False, loc.u
+    parent = _parent(poly, group, loc.u, s, scale, NEAR_PARENT)
+    if parent is not None and min(parent.eigen()[0]) > 1e-14 * scale:
+        return False, loc.u         # the point is its stable parent, not a distinct position (past a pitchfork)
+    return True, loc.u
+
+
+NEAR_PARENT = 1e-6      # radians: a tracked point this close to a stable more symmetric equilibrium is that one
+PITCHFORK = 1e-2        # radians: a branch that ends this close to a more symmetric one ends at its pitchfork
+
+
+def _parent(poly, group, u, s, scale, near):
+    """The more symmetric equilibrium within *near* of *u* (the point of highest symmetry there,
+    :func:`~symfloat.solver.degenerate.symmetric_point`, polished within its symmetry), or None.
+    Next to a pitchfork the child lies at ``c sqrt|s - s*|`` from this parent and exists only on the
+    side where the parent is unstable across the mirror (the normal form ``x (eps - x^2)``); past
+    it, Newton's method within the child's symmetry lands on the parent only to the rounding of the
+    gradient divided by the parent's soft eigenvalue (7e-10 rad where that is 1.3e-7, the box
+    1 x 1 x 4 at 9/32 + 1e-7), which a label's tolerance of 1e-9 does not tell from a child.  A stable
+    child within 1e-6 of a stable parent would need a third equilibrium between them."""
+    from .degenerate import symmetric_point
+    v = symmetric_point(u, group, 2 * near)
+    if _fixing(group, v) <= _fixing(group, u):
+        return None
+    loc, ok = symmetric_newton(poly, v, s, scale, group)
+    return loc if ok and np.linalg.norm(loc.u - v) <= 2 * near else None
 
 
 def _locate(poly, group, scale, label, eq, s_in, s_out) -> tuple[float, float, float, str]:
@@ -143,6 +169,9 @@ def _locate_tracked(poly, group, scale, label, eq, s_in, s_out):
         event = _vertex_event(poly, group, u, lo, s_out, label, scale)
         if event is not None:
             return event[0], event[1], tilt, "where the waterplane passes a vertex: the position joins a ring", u
+        fork = _pitchfork(poly, group, u, lo, scale)
+        if fork is not None:
+            return fork[0], fork[1], tilt, f"born from the position '{fork[2]}' (pitchfork)", u
         root = _eigenvalue_root(poly, group, u, lo, scale)
         if root is not None and abs(root[0] - (lo + hi) / 2) <= 2 * err + 1e-12:
             return root[0], root[1], tilt, note, u
@@ -164,25 +193,53 @@ def _locate_tracked(poly, group, scale, label, eq, s_in, s_out):
     return (lo + hi) / 2, err, tilt, note, u
 
 
-def _eigenvalue_root(poly, group, u, s, scale, h: float = 1e-7):
-    """Where the smallest eigenvalue of the branch through *u* (followed within its symmetry) crosses
-    zero next to *s*: Newton's method on ``lambda(s) = 0`` with a central difference for its slope.
+def _pitchfork(poly, group, u, s, scale):
+    """A branch whose tracking ended at *s* next to a more symmetric equilibrium (its parent, within
+    :data:`PITCHFORK` of the last point *u*) ends at the parent's pitchfork: where the parent's soft
+    eigenvalue (across the mirror the child leaves) crosses zero, a simple crossing located by
+    :func:`_eigenvalue_root` on the parent, which exists on both sides, instead of on the child,
+    which does not (its own eigenvalue ``~ -2 lambda_parent`` is lost with it past the fork, and
+    its distance to the parent ``~ sqrt|s - s*|`` falls below what float64 resolves).  Returns
+    ``(density, error, parent's label)`` or None (no parent there, or its crossing not within 1e-4 of
+    *s*).  Witness: Scheeffer IX, the long square log at 9/32 and 23/32 (tests/test_phase_log.py)."""
+    parent = _parent(poly, group, u, s, scale, PITCHFORK)
+    if parent is None:
+        return None
+    root = _eigenvalue_root(poly, group, parent.u, s, scale, gate=None, softest=True)
+    if root is None or abs(root[0] - s) > 1e-4:
+        return None
+    return root[0], root[1], position_label(parent.u, "isolated")
+
+
+def _fixing(group, u) -> int:
+    """How many symmetries of the body fix *u* (to 1e-9, the tolerance of :func:`symmetric_newton`)."""
+    return sum(np.linalg.norm(g @ u - u) <= 1e-9 for g in group)
+
+
+def _eigenvalue_root(poly, group, u, s, scale, h: float = 1e-7, gate: float | None = 1e-8, softest=False):
+    """Where the smallest eigenvalue (*softest*: the one of least magnitude) of the branch through *u*
+    (followed within its symmetry) crosses zero next to *s*: Newton's method on ``lambda(s) = 0`` with
+    a central difference for its slope.
     The bisection's predicate flips where ``lambda`` exceeds its rounding (``1e-14 * scale``), a few
     1e-14 past the root; the root itself is found to ``2 |last correction| + 1e-14 * scale / |slope|``
     (the rounding of ``lambda`` divided by its slope).  Returns ``(density, error)`` or None where the
-    crossing is not simple (the slope below 1e-6: a root of higher order, or a ring)."""
+    crossing is not simple (the slope below 1e-6: a root of higher order, or a ring) or ``lambda``
+    at *s* exceeds ``gate * scale`` (None: no gate)."""
     def smallest(density, v):
         loc, ok = symmetric_newton(poly, v, density, scale, group)
-        return (min(loc.eigen()[0]), loc.u) if ok else (None, v)
+        if not ok:
+            return None, v
+        w = loc.eigen()[0]
+        return (float(w[np.argmin(np.abs(w))]) if softest else float(min(w))), loc.u
 
-    for _ in range(4):
+    for _ in range(8 if gate is None else 4):
         lam, u = smallest(s, u)
         above, _ = smallest(s + h, u)
         below, _ = smallest(s - h, u)
         if lam is None or above is None or below is None:
             return None
         slope = (above - below) / (2 * h)
-        if abs(slope) < 1e-6 * scale or abs(lam) > 1e-8 * scale:
+        if abs(slope) < 1e-6 * scale or (gate is not None and abs(lam) > gate * scale):
             return None
         step = lam / slope
         s -= step
@@ -455,12 +512,16 @@ def _windows_between(poly, group, scale, sol_a, sol_b, sa, sb) -> list[Threshold
             continue
         for label, eq, s_fold, side in _fold_windows(poly, group, scale, sol, s_from, s_to):
             upward = s_to > s_from
-            value, err, tilt, note = _locate(poly, group, scale, label, eq, side, s_to)
-            value, err = _fold(poly, group, eq, value, err, side, scale)
-            out.append(Threshold(value, err, label, "stable below" if upward else "stable above",
+            end, end_err, _, _ = _locate(poly, group, scale, label, eq, side, s_to)
+            value, err, tilt, note = _locate(poly, group, scale, label, eq, side, s_from)
+            if abs(end - s_to) <= 2 * end_err or abs(value - s_from) <= 2 * err:
+                # stable at a sweep density: not a window (what ended was not a fold, but a branch met its child
+                # at a pitchfork); the sweep's own change of stable sets locates it
+                continue
+            end, end_err = _fold(poly, group, eq, end, end_err, side, scale)
+            out.append(Threshold(end, end_err, label, "stable below" if upward else "stable above",
                                  note="a fold: the position meets another branch and both end; "
                                       "error estimated"))
-            value, err, tilt, note = _locate(poly, group, scale, label, eq, side, s_from)
             birth = Threshold(value, err, label, "stable above" if upward else "stable below", note=note)
             birth.tilt = tilt
             out.append(birth)
