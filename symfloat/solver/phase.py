@@ -248,8 +248,9 @@ def _eigenvalue_root(poly, group, u, s, scale, h: float = 1e-7, gate: float | No
     return float(s), float(2 * abs(step) + 1e-14 * scale / abs(slope))
 
 
-def _vertex_event(poly, group, u, s, s_out, label, scale, reach: float = 1e-3, ring: bool = False):
-    """The density within *reach* of *s* where the waterplane of the branch tracked from *u* passes
+def _vertex_event(poly, group, u, s, s_out, label, scale, ring: bool = False):
+    """The density within 1e-3 of *s* (or 1e-5, 1e-7: a window narrower than that, the long square
+    log's ring around z, 4e-5 wide) where the waterplane of the branch tracked from *u* passes
     a vertex, when the eigenvalue on the side of *s_out* (*ring*: on the side of *s*, the family's)
     is zero to rounding there (a ring point), as ``(density, half-width)``; None when there is no
     such event.  The branch is followed by
@@ -259,6 +260,14 @@ def _vertex_event(poly, group, u, s, s_out, label, scale, reach: float = 1e-3, r
     from .local import local
     if not ring and min(abs(local(poly, u, s).eigen()[0])) > 1e-6 * scale:
         return None                                 # a simple eigenvalue crossing: the bisection is exact
+    for reach in (1e-3, 1e-5, 1e-7):
+        event = _vertex_event_within(poly, group, u, s, s_out, label, scale, reach, ring)
+        if event is not None:
+            return event
+    return None
+
+
+def _vertex_event_within(poly, group, u, s, s_out, label, scale, reach, ring):
     towards = math.copysign(1.0, s_out - s)
     ends = []
     for target in (s - towards * reach, s + towards * reach):
@@ -340,10 +349,10 @@ def _fold_windows(poly, group, scale, solution, sa, sb) -> list:
         side = s - math.copysign(min(1e-4, abs(s - sa) / 2), sb - sa)
         here, ok = newton(poly, u, side, scale)
         for loc in _partners(poly, group, here.u if ok else u, side, scale):
-            w = loc.eigen()[0]
-            if min(w) > 0:
-                eq = _Tracked(tuple(loc.u), "isolated")
-                out.append((position_label(loc.u, "isolated"), eq, s, side))
+            # stable by the predicate the bisection uses (a point of a ring, flat along it to rounding, is not)
+            kind = position_label(loc.u, "isolated")
+            if _tracked_stable(poly, group, loc.u, side, kind, "isolated", scale)[0]:
+                out.append((kind, _Tracked(tuple(loc.u), "isolated"), s, side))
     return out
 
 
@@ -528,14 +537,20 @@ def _windows_between(poly, group, scale, sol_a, sol_b, sa, sb) -> list[Threshold
     return out
 
 
-def _follow(poly, group, scale, thresholds, densities) -> list[Threshold]:
-    """Every isolated position that becomes stable at a threshold is followed by continuation
-    across its stable range, up to the sweep density beyond the next one: where it stops being
-    stable before that (a fold in a window narrower than the sweep), the end is a threshold too."""
+def _follow(poly, group, scale, thresholds, densities, stable_at=None) -> list[Threshold]:
+    """Every position that becomes stable at a threshold, isolated or a ring, is followed by
+    continuation across its stable range, up to the sweep density beyond the next one: where it stops
+    being stable before that (a fold, or the end of a ring, in a window narrower than the sweep or
+    ending at a sweep density, where the ring has shrunk to nothing), the end is a threshold too.  A
+    ring born from an axis opens like ``sqrt(s - s*)`` (the long square log's ring around z: 0.8 degrees
+    1e-6 past its birth), so Newton's method from the birth falls back onto the axis; it is started
+    from the ring the solver finds at the first density past the birth (*stable_at*: density -> the
+    stable positions by label)."""
     out = []
     for t in thresholds:
-        if t.label.startswith("ring") or not t.up:
+        if not t.up:
             continue
+        family = "ring" if t.label.startswith("ring") else "isolated"
         toward = 1 if t.change == "stable above" else -1
         beyond = sorted((s for s in densities if (s - t.density) * toward > 0), key=lambda s: abs(s - t.density))
         if not beyond:
@@ -548,23 +563,30 @@ def _follow(poly, group, scale, thresholds, densities) -> list[Threshold]:
             start = t.density + toward * offset
             if (s_end - start) * toward <= 0:
                 break
-            ok, u = _tracked_stable(poly, group, np.array(t.up), start, t.label, "isolated", scale)
-            if not ok:          # next to a pitchfork Newton falls back onto the parent: look beside it
+            ok, u = _tracked_stable(poly, group, np.array(t.up), start, t.label, family, scale)
+            if not ok and family == "isolated":     # next to a pitchfork Newton falls back onto the parent: look beside it
                 near = [loc.u for loc in _partners(poly, group, np.array(t.up), start, scale)
                         if position_label(loc.u, "isolated") == t.label and min(loc.eigen()[0]) > 0]
                 ok, u = bool(near), (near[0] if near else u)
+            elif not ok and stable_at is not None:
+                ring = stable_at(start).get(t.label)
+                if ring is not None:
+                    ok, u = _tracked_stable(poly, group, np.array(ring.up), start, t.label, family, scale)
             if ok:
                 u0 = u
                 break
         if u0 is None:
             continue
-        eq = _Tracked(tuple(u0), "isolated")
-        value, err, tilt, note, u = _locate_tracked(poly, group, scale, t.label, eq, start, s_end)
+        value, err, tilt, note, u = _locate_tracked(poly, group, scale, t.label, _Tracked(tuple(u0), family),
+                                                    start, s_end)
         if abs(value - s_end) <= 2 * err + 1e-9:
             continue                                  # stable all the way
-        value, err = _fold(poly, group, _Tracked(tuple(u), "isolated"), value, err, start, scale)
-        out.append(Threshold(value, err, t.label, "stable below" if toward > 0 else "stable above",
-                             note=note or "a fold: the position meets another branch and both end; error estimated"))
+        end = Threshold(value, err, t.label, "stable below" if toward > 0 else "stable above", note=note)
+        end.tilt, end.up = tilt, tuple(u)
+        if family == "isolated" and not note:
+            end.density, end.bracket = _fold(poly, group, _Tracked(tuple(u), "isolated"), value, err, start, scale)
+            end.note = "a fold: the position meets another branch and both end; error estimated"
+        out.append(end)
     return out
 
 
@@ -643,7 +665,8 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None, densitie
             if any(t.label == k["label"] for t in new):
                 break
     _annotate_families(thresholds)          # pitchforks snapped first: a branch is followed from its birth
-    thresholds += _follow(poly, group, scale, thresholds, [float(s) for s in densities])
+    thresholds += _follow(poly, group, scale, thresholds, [float(s) for s in densities],
+                          lambda s: _stable(make_scene(body, Fraction(s), base.dims)))
     _annotate_families(thresholds)
     unique = []
     for t in thresholds:                     # one entry per position and density (after the families' snapping)
