@@ -8,7 +8,12 @@ Expected values, computed without the solver:
   w = 2 sqrt s, BM = w^3 / (12 s) = (2/3) sqrt s, BG = sqrt(2)/2 - (2/3) sqrt s, so GM = (4/3) sqrt s - sqrt(2)/2
   vanishes at s = 9/32; Scheeffer IX's boundary s = 23/32 of (161), (162) and (162a) (t of (147) is 1 there,
   n_1 = 1 by (156)), read for s < 1/2 with 1 - s as the text says;
-- on end ("face z up"), Scheeffer IV (18) / the metazentrum lesson with w/h = 1/4: s = 1/2 - sqrt(1/4 - 1/96).
+- on end ("face z up"), Scheeffer IV (18) / the metazentrum lesson with w/h = 1/4: s = 1/2 - sqrt(1/4 - 1/96);
+- the ring around z born there: while the waterplane cuts the four long edges only, a tilt of slope m about any
+  horizontal axis moves B by (a^2 m / (12 d), a^2 m^2 / (24 d)) (draught d = 4 s, a = 1), so G - B is vertical
+  where m^2 = 12 d (4 - d) - 2; the ring ends where the waterplane reaches a bottom vertex across a face,
+  d = m / 2: 128 s^2 - 96 s + 1 = 0, s = (96 - sqrt 8704)/256 = 0.0105655065722 (for the cube the same
+  reasoning gives 1/4).
 """
 import json
 import math
@@ -30,8 +35,10 @@ DOCS = Path(__file__).resolve().parent.parent / "docs"
 SIDE = (3 - math.sqrt(3)) / 6
 EDGE = 9 / 32
 END = 0.5 - math.sqrt(0.25 - 1 / 96)
+RING_END = (96 - math.sqrt(8704)) / 256
 TILTED, EDGE_UP = "tilted in the x-y plane", "edge up (xy)"
 EXPECTED = [(END, "face z up", "stable below"), (END, "ring around z", "stable above"),
+            (RING_END, "ring around z", "stable below"),
             (SIDE, "face x up", "stable below"), (SIDE, TILTED, "stable above"),
             (EDGE, EDGE_UP, "stable above"), (EDGE, TILTED, "stable below")]
 
@@ -96,6 +103,13 @@ def test_the_kept_record_has_the_closed_forms_and_every_dual():
         match = [f for f in found if f[2] == label and f[3] == change and abs(f[0] - value) <= f[1] + 1e-15]
         assert len(match) == 1, (value, label, change)
         assert match[0][1] < 1e-12
+    # the picture's bars: within the sweep's range (the upright position's thresholds 0.0105 and 0.9895 lie outside
+    # it and drew a bar from 0.96 back to 0.9895), and they give every sweep density's stable set
+    from symfloat.report.phase_figure import phase_intervals
+    lo, hi = record["sweep"][0]["density"], record["sweep"][-1]["density"]
+    spans = phase_intervals(record)
+    assert all(lo <= a <= b <= hi for v in spans.values() for a, b in v)
+    assert spans[EDGE_UP] == [(pytest.approx(EDGE, abs=1e-13), pytest.approx(1 - EDGE, abs=1e-13))]
 
 
 @pytest.mark.slow
