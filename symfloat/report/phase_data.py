@@ -4,7 +4,7 @@
 phase_record`, without its time) plus the ``stamp`` of what it depends on: the solver, geometry and
 model packages, the derivations whose predictors and closed forms it compares with, this module
 and :mod:`symfloat.report.phase`, and the body and sweep.  The main job computes a diagram again only
-when that stamp differs (about 25 s for the cube and 30 s for the long square log, processor time);
+when that stamp differs (about 25 s for the cube and 40 s for the long square log, processor time);
 the pictures are drawn from these files
 (:func:`symfloat.report.phase_figure.phase_figure`, through :mod:`symfloat.report.figures`).
 
