@@ -126,3 +126,39 @@ def test_phase_of_the_long_square_log_holds_its_duality():
         t = next(t for t in diagram.thresholds if t.label == label and t.change == change
                  and abs(t.density - value) < 1e-6)
         assert abs(t.density - value) <= t.bracket + 1e-15 and t.bracket < 1e-12
+
+
+ATLAS_SWEEP = [Fraction(1, 20) + Fraction(k, 10) for k in range(10)]      # the committed atlas's densities
+
+
+@pytest.mark.slow
+def test_atlas_cube_cell_has_the_thresholds_of_phase_cube():
+    # docs/atlas/checks.md: the cube cell had three thresholds without a dual next to (3 -+ sqrt 3)/6 (a point of
+    # the ring around z taken for a window's position) and lacked the ring's ends at 1/4 and 3/4, sweep densities
+    # of the atlas; expected: the thresholds of the kept `phase cube` record (docs/figures/phase-cube.json)
+    diagram = phase_diagram("cube", densities=ATLAS_SWEEP)
+    assert diagram.duality_ok and diagram.unpaired == []
+    record = json.loads((DOCS / "figures" / "phase-cube.json").read_text(encoding="utf-8"))
+    expected = sorted((t["position"], t["change"], t["density"], t["error"]) for t in record["thresholds"]
+                      if 1 / 20 < t["density"] < 19 / 20)
+    found = sorted((t.label, t.change, t.density, t.bracket) for t in diagram.thresholds)
+    assert [x[:2] for x in found] == [x[:2] for x in expected]
+    for (_, _, a, ea), (_, _, b, eb) in zip(found, expected):
+        assert abs(a - b) <= ea + eb + 1e-15
+
+
+@pytest.mark.slow
+def test_atlas_cell_2_1_holds_its_duality_at_the_closed_forms():
+    # the cell b/a = 2, c/a = 1 (the box 1 x 2 x 1: a square section, length 2): "tilted in the x-z plane" at
+    # 0.2113085 and 0.2812716 (1.6e-5 and 2.2e-5 off the pitchforks), at the sweep densities 1/4, 3/4, no duals
+    diagram = phase_diagram("box", "1,2,1", densities=ATLAS_SWEEP)
+    assert diagram.duality_ok and diagram.unpaired == []
+    on_end = 0.5 - math.sqrt(0.25 - 1 / 24)              # upright on the 1 x 1 end: 6 s (1 - s) = (1/2)^2
+    ring_end = (48 - math.sqrt(1792)) / 128               # as the log's ring (module docstring) with length 2
+    expected = [(on_end, "face y up"), (on_end, "ring around y"), (ring_end, "ring around y"), (SIDE, "face z up"),
+                (SIDE, "tilted in the x-z plane"), (EDGE, "edge up (xz)"), (EDGE, "tilted in the x-z plane")]
+    expected += [(1 - v, label) for v, label in expected]
+    assert len(diagram.thresholds) == len(expected)
+    for value, label in expected:
+        assert any(t.label == label and abs(t.density - value) <= t.bracket + 1e-15 for t in diagram.thresholds), \
+            (value, label)

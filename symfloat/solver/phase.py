@@ -5,6 +5,11 @@ neighbours whose sets of stable positions differ, each threshold is located
 by bisection on the density with the position *tracked* (Newton's method from
 the last stable point): the predicate "the tracked equilibrium exists and is
 stable" flips exactly at the threshold, so the bracket shrinks to ``1e-13``.
+A branch that ends at a more symmetric position (a pitchfork: the child dies
+into its parent) ends where the parent's soft eigenvalue crosses zero, located
+on the parent.  Every branch born at a threshold, isolated or a ring, is
+followed past the next sweep density, so a window narrower than the sweep, or
+ending at a sweep density, is found.
 The thresholds are then compared with the closed forms the sources print.
 Boxes are centrally symmetric, so the stable set at ``1 - s`` is the stable
 set at ``s`` turned upside down; the sweep still solves both halves (the
