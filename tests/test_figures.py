@@ -44,7 +44,7 @@ def _json(name):
 
 def test_every_picture_is_committed_with_the_fingerprint_of_its_present_data_and_code():
     names = sorted(f.filename for f in figures.main_job_figures())
-    assert names == ["phase-cube.png", "scheeffer-ix-grid.png"]
+    assert names == ["phase-cube.png", "phase-square-log.png", "scheeffer-ix-grid.png"]
     for f in figures.main_job_figures():
         assert figures.recorded_fingerprint(DOCS / "figures" / f.filename) == figures.fingerprint(f, DOCS), \
             f"docs/figures/{f.filename} is stale: run `make run` and commit"
@@ -163,4 +163,4 @@ def test_each_drawn_boundary_is_where_the_printed_tables_change(label):
 def test_a_figure_whose_data_are_missing_is_not_drawn(tmp_path):
     fig = Figure("x.png", ("nothing.json",), lambda data: None)
     assert figures.write_figures(tmp_path, figures=[fig]) == [] and not (tmp_path / "figures").exists()
-    assert [f.filename for f in phase_figures()] == ["phase-cube.png"]
+    assert [f.filename for f in phase_figures()] == ["phase-cube.png", "phase-square-log.png"]

@@ -181,7 +181,8 @@ def test_the_site_has_its_pages_and_every_internal_link_resolves(site, records):
     for facet in ("source-scheeffer", "kind-misprint", "confidence-high"):
         assert f"errata/{facet}.html" in pages
     pictures = [link for tag, link in pages["figures.html"].links if tag == "img"]
-    assert sorted(pictures) == ["_images/phase-cube.png", "_images/scheeffer-ix-grid.png"]
+    assert sorted(pictures) == ["_images/phase-cube.png", "_images/phase-square-log.png",
+                                "_images/scheeffer-ix-grid.png"]
     # the notebooks of the cube and of IX link to their pictures
     assert any(link.startswith("../figures.html#picture-phase-cube") for _, link in pages["notebooks/scheeffer-vi-cf.html"].links)
     assert any(link.startswith("../figures.html#picture-scheeffer-ix-grid")

@@ -140,5 +140,26 @@ def conditioning_markdown(rows) -> str:
         lines.append(f"| {r.case} | {r.closed_form} | {r.delta:+.0e} | {r.tilt_deg:.6f} | {r.stability} | "
                      f"{r.true_error:.1e} | {r.reported:.1e} | {r.method} | {'yes' if r.bounded else 'NO'} |")
     bounded = sum(r.bounded for r in rows)
-    lines += ["", f"The reported error bounds the true error in {bounded} of {len(rows)} rows.", ""]
+    lines += ["", f"The reported error bounds the true error in {bounded} of {len(rows)} rows.", "", PITCHFORK_THRESHOLDS, ""]
     return "\n".join(lines)
+
+
+PITCHFORK_THRESHOLDS = (   # docs/numerics.md section 4: what was wrong next to a pitchfork, what holds now
+    'Thresholds next to a pitchfork (`symfloat phase`, issue 14): a threshold is located by bisection on '
+    'the density with the position tracked, and the predicate must not outlive the position. On the long '
+    'square log (the box 1 × 1 × 4) the tilted position of the section dies at 9/32 into edge up (GM of '
+    "the edge-up section, (4/3)√s − √2/2, vanishes there; Scheeffer IX's 23/32 read with 1 − s) at a "
+    "distance 1.9 √(9/32 − s) rad from it. Past the fork Newton's method within the tilted position's "
+    'mirror lands on the now stable edge-up position only to the rounding of the gradient over its soft '
+    'eigenvalue (7e-10 rad where that eigenvalue is 1.3e-7, 1e-7 past the fork), which a label tolerance '
+    'of 1e-9 took for a tilted position: the bisection ran 5e-8 to 1e-7 past the fork, from three '
+    'brackets three different values, each claimed to 4e-14, none with a dual. Now a tracked point within '
+    '1e-6 rad of a more symmetric equilibrium that is stable is that equilibrium (a stable child beside a '
+    'stable parent would need a third equilibrium between them), and a branch that ends within 1e-2 rad '
+    "of a more symmetric one ends at that parent's pitchfork, where the parent's soft eigenvalue crosses "
+    "zero: a simple crossing on a branch that exists on both sides, found by Newton's method on λ(s) to "
+    "its stated error (9/32 ± 3e-14 and 23/32 ± 8e-14, each the other's dual). The tracking follows the "
+    "child to within about 1e-13 of the fork, where it is 6e-7 rad off the diagonal and Newton's method "
+    'in float64 resolves it only to a few 1e-6 rad on the flat potential (at 1e-9: 6e-5 rad, resolved); '
+    'the threshold comes from the parent and does not depend on that. What it costs: `symfloat phase box '
+    '--dims 1,1,4` (48 densities) about 40 processor-seconds, as before the fix.')

@@ -15,14 +15,17 @@ __all__ = ["phase_intervals", "phase_figure"]
 def phase_intervals(record) -> dict[str, list[tuple[float, float]]]:
     """Position label -> the density intervals of the sweep's range where it is stable, read from the
     thresholds alone (each one flips its position: ``stable above`` begins an interval, ``stable below``
-    ends one), starting from the stable set at the first sweep density.  The sweep is the other route:
-    a sweep density whose stable set the intervals do not give fails the check (:class:`CheckFailed`)."""
+    ends one), starting from the stable set at the first sweep density; thresholds outside the sweep's
+    range (the long square log's upright position and ring around z, 0.0105 and 0.9895) are not read.
+    The sweep is the other route: a sweep density whose stable set the intervals do not give fails the
+    check (:class:`CheckFailed`)."""
     sweep = record["sweep"]
     lo, hi = sweep[0]["density"], sweep[-1]["density"]
     labels = sorted({label for row in sweep for label in row["stable"]} | {t["position"] for t in record["thresholds"]})
     out = {}
     for label in labels:
-        events = sorted((t["density"], t["change"]) for t in record["thresholds"] if t["position"] == label)
+        events = sorted((t["density"], t["change"]) for t in record["thresholds"]
+                        if t["position"] == label and lo <= t["density"] <= hi)
         start, spans = (lo if label in sweep[0]["stable"] else None), []
         for density, change in events:
             if change == "stable above" and start is None:
@@ -49,7 +52,7 @@ def phase_figure(record):
 
     spans = phase_intervals(record)
     labels = [label for label in spans if spans[label]]
-    fig, ax = plt.subplots(figsize=(8, 0.42 * len(labels) + 1.9))
+    fig, ax = plt.subplots(figsize=(8, 0.42 * max(len(labels), 5) + 1.9))   # room for the legend below
     colours = plt.cm.tab10.colors
     for y, label in enumerate(labels):
         ax.broken_barh([(a, b - a) for a, b in spans[label]], (y - 0.3, 0.6), color=colours[y % 10])

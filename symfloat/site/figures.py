@@ -14,7 +14,7 @@ from pathlib import Path
 __all__ = ["Picture", "pictures", "figures_page", "notebook_links", "PAGE"]
 
 PAGE = "figures"
-_PHASES = (("cube", "The cube"),)
+_PHASES = (("cube", "The cube"), ("square-log", "The long square log"))
 
 
 @dataclass(frozen=True)
