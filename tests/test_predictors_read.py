@@ -91,3 +91,15 @@ def test_scheeffer_iv_v_tilts_from_54_and_55_as_read():
     # (55): b(1-s)/u_m for s > 1/2, b s/u'_m below; exact with an irrational u_m (the half diagonal 1/sqrt 2)
     assert iv.BOUND_55(2, Fraction(3, 4), Fraction(1, 2), Fraction(1, 2)) == 1
     assert iv.BOUND_55(2, Fraction(1, 4), sp.sqrt(2) / 2, sp.sqrt(2) / 2) == sp.sqrt(2) / 2
+
+
+def test_scheeffer_vi_ab_predictors_read_65_64_70_73():
+    _, ab = load("scheeffer-vi-ab")
+    # a = 1, b = 2 (q = (a/b)^2 = 1/4), s = 3/10, s(1-s) = 21/100: (65) I: 1/4 - 252/100 = -227/100; (65) II, lower
+    # row: q - 3/2 s (8 - 9 s) = 1/4 - 477/200 = -427/200; (64), lower row: 6 s (2 - 3 s) - q = 198/100 - 1/4
+    assert ab.MARGIN_65(1, 2, Fraction(3, 10)) == sp.Rational(-227, 100)
+    assert ab.RING_65(1, 2, Fraction(3, 10))[2] == sp.Rational(-427, 200)
+    assert ab.ARC_64(1, 2, Fraction(3, 10))[1] == sp.Rational(173, 100)
+    # the cylinder r = 1, b = 2 (K2 = (2r/b)^2 = 1): (70) 1 - 8 s + 8 s^2 = -17/25; (73) lower row K2 - 2 s (4 - 5 s)
+    assert ab.MARGIN_70(1, 2, Fraction(3, 10)) == sp.Rational(-17, 25)
+    assert ab.LIMIT_73(1, 2, Fraction(3, 10))[2] == sp.Rational(-1, 2)
