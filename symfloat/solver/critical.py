@@ -20,15 +20,16 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 
+from ..geometry.edgewise import states
 from ..geometry.floating import Polyhedron
 from .errors import ROUNDING, STEP, equilibrium_error
-from .local import gradient_at, local, tangent_step
+from .local import Local, gradient_at, local, tangent_step
 from .degenerate import symmetric_point
 from .refine import polish
 from .selfcheck import index_of
 from .symmetry import orbit, representative, same_class
 
-__all__ = ["Critical", "newton", "symmetric_newton", "descend", "critical_points", "poincare_hopf_sum", "more_seeds", "polyhedron_at"]
+__all__ = ["Critical", "newton", "newton_all", "symmetric_newton", "descend", "critical_points", "poincare_hopf_sum", "more_seeds", "polyhedron_at"]
 
 MAX_STEP = 0.3          # radians: Newton steps are capped (a trust region)
 MIN_FAMILY = 1e-3       # radians: an arc of equilibria shorter than this is not reported as one
@@ -93,6 +94,51 @@ def newton(poly: Polyhedron, u0, s, scale: float, iterations: int = 60, null_tol
             break
         u = tangent_step(loc.u, step)
     return best, np.linalg.norm(best.gradient) <= 1e-11 * scale
+
+
+def newton_all(poly: Polyhedron, seeds, s, scale: float, iterations: int = 60) -> list:
+    """:func:`newton` from every seed at once, the floating states of all the seeds still iterating evaluated
+    together (:func:`symfloat.geometry.edgewise.states`): the same steps, capped and stopped alike; returns
+    ``(Local, converged)`` per seed (a :class:`Local` without its ``state``)."""
+    null_tol = ZERO_EIGEN * scale
+    u = np.array(seeds, dtype=float).reshape(-1, 3)
+    u /= np.linalg.norm(u, axis=1)[:, None]
+    n = len(u)
+    out, best, best_size = [None] * n, [None] * n, np.full(n, np.inf)
+    active = np.ones(n, dtype=bool)
+    for _ in range(iterations):
+        i = np.flatnonzero(active)
+        if not len(i):
+            break
+        st = states(poly, u[i], s)
+        g = np.einsum("mkj,mk->mj", st.basis, st.G - st.B)
+        H = st.tensor / st.volume[:, None, None] - st.potential[:, None, None] * np.eye(2)
+        size = np.linalg.norm(g, axis=1)
+        for j in np.flatnonzero(size < best_size[i]):
+            best[i[j]] = Local(st.u[j], float(st.potential[j]), st.basis[j], g[j], H[j], None)
+            best_size[i[j]] = size[j]
+        converged = size <= 1e-13 * scale
+        for j in np.flatnonzero(converged):
+            out[i[j]] = (best[i[j]], True)
+        w, vecs = np.linalg.eigh(H)
+        along = np.einsum("mkj,mk->mj", vecs, g)                   # v . g for each eigenvector
+        coef = np.where(np.abs(w) > null_tol, along / np.where(np.abs(w) > null_tol, w, 1.0), 0.0)
+        step2 = -np.einsum("mkj,mj->mk", vecs, coef)
+        flat = ~(np.linalg.norm(step2, axis=1) > 0)
+        step2[flat] = -g[flat] / scale
+        step = np.einsum("mkj,mj->mk", st.basis, step2)
+        norm = np.linalg.norm(step, axis=1)
+        step *= np.where(norm > MAX_STEP, MAX_STEP / np.where(norm > 0, norm, 1.0), 1.0)[:, None]
+        stopped = ~converged & (norm < 1e-15)
+        for j in np.flatnonzero(stopped):
+            out[i[j]] = (best[i[j]], bool(best_size[i[j]] <= 1e-11 * scale))
+        active[i[converged | stopped]] = False
+        angle = np.linalg.norm(step, axis=1)
+        moved = np.where(angle > 0, np.sin(angle) / np.where(angle > 0, angle, 1.0), 0.0)
+        u[i] = np.where((angle > 0)[:, None], st.u * np.cos(angle)[:, None] + step * moved[:, None], st.u)
+    for j in np.flatnonzero(active):
+        out[j] = (best[j], bool(best_size[j] <= 1e-11 * scale))
+    return out
 
 
 def symmetric_newton(poly: Polyhedron, u0, s, scale: float, group, iterations: int = 40):
@@ -404,8 +450,7 @@ def family_copies(shape: str, points, group, tol: float) -> int:
 def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps: int = 30) -> list[Critical]:
     """Every symmetry class of critical points reached by Newton from *seeds*, sorted by potential."""
     found: list[Critical] = []
-    for seed in seeds:
-        loc, ok = newton(poly, seed, s, scale)
+    for loc, ok in newton_all(poly, seeds, s, scale):
         if not ok:
             continue
         pairs = _tangent_eigen(loc)
