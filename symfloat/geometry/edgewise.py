@@ -61,6 +61,7 @@ class EdgeBody:
                 q.append(index[ring[(i + 1) % len(ring)]])
                 face.append(f)
         self.p, self.q, self.face = np.array(p), np.array(q), np.array(face)
+        self.vp, self.vq = self.verts[self.p], self.verts[self.q]
         self.incidence = np.zeros((len(poly.faces), len(p)))
         self.incidence[face, np.arange(len(p))] = 1.0
         self.r_face = np.array([np.mean([self.verts[index[v]] for v in ring], axis=0) for ring in poly.faces])
@@ -121,11 +122,10 @@ def _cut(body: EdgeBody, heights, u, t, e1, e2, full: bool):
     below_p, below_q = hp <= tt, hq <= tt
     crossing = below_p != below_q
     # from the point below to the point above, so that the two faces sharing an edge get the same point
-    lower = np.where(below_p, body.p, body.q)
-    upper = np.where(below_p, body.q, body.p)
-    a, b = body.verts[lower], body.verts[upper]
-    ha = np.take_along_axis(heights, lower, axis=1)
-    rise = np.where(crossing, np.take_along_axis(heights, upper, axis=1) - ha, 1.0)
+    first = below_p[..., None]
+    a, b = np.where(first, body.vp, body.vq), np.where(first, body.vq, body.vp)
+    ha = np.where(below_p, hp, hq)
+    rise = np.where(crossing, np.where(below_p, hq, hp) - ha, 1.0)
     d = (b - a) / rise[..., None]                   # dx/dt along the edge
     x = a + (tt - ha)[..., None] * d
     exits, entries = (below_p & ~below_q)[..., None], (~below_p & below_q)[..., None]
@@ -137,8 +137,8 @@ def _cut(body: EdgeBody, heights, u, t, e1, e2, full: bool):
     # as the submerged part, however thin
     o = ((x_in + x_out) * crossed[..., None]).sum(axis=1) / np.maximum(2 * count, 1)[:, None]
     r = np.where(crossed[..., None], x_out, body.r_face)[:, body.face] - o[:, None]
-    start = (np.where(below_p[..., None], body.verts[body.p], x) - o[:, None]) * (below_p | below_q)[..., None]
-    end = np.where(below_q[..., None], body.verts[body.q], x) - o[:, None]
+    start = (np.where(first, body.vp, x) - o[:, None]) * (below_p | below_q)[..., None]
+    end = np.where(below_q[..., None], body.vq, x) - o[:, None]
     tets = _dot(r, _cross(start, end)) / 6
     V = tets.sum(axis=1)
     # the cap in 2-D: its segments entry -> exit (faces not crossed give zero segments)
@@ -168,24 +168,32 @@ def _cut(body: EdgeBody, heights, u, t, e1, e2, full: bool):
     return V, (A0, A1, A2), moment, area, J
 
 
-def _cubic_root(V0, A, target, width):
-    """The roots ``h`` of ``V0 + A0 h + A1 h^2 / 2 + A2 h^3 / 3 = target`` by Newton's method from
-    ``(target - V0) / A0`` (the volume increases with ``t``: its derivative is the cap's area)."""
+def _cubic(V0, A, h):
+    """``V0 + A0 h + A1 h^2 / 2 + A2 h^3 / 3``: the submerged volume at ``t0 + h`` inside the interval."""
     A0, A1, A2 = A
-    h = (target - V0) / np.where(A0 > 0, A0, np.inf)
+    return V0 + h * (A0 + h * (A1 / 2 + h * A2 / 3))
+
+
+def _cubic_root(V0, A, target, lo, hi):
+    """The root ``h`` in ``[lo, hi]`` of the increasing cubic :func:`_cubic` ``= target`` (its value at ``lo``
+    at most *target*, at ``hi`` at least): Newton's method from the secant's root, kept in ``[lo, hi]``."""
+    A0, A1, A2 = A
+    f_lo, f_hi = _cubic(V0, A, lo) - target, _cubic(V0, A, hi) - target
+    rise = f_hi - f_lo
+    h = np.where(rise > 0, lo - f_lo * (hi - lo) / np.where(rise > 0, rise, 1.0), (lo + hi) / 2)
     for _ in range(12):
-        f = V0 + h * (A0 + h * (A1 / 2 + h * A2 / 3)) - target
         slope = A0 + h * (A1 + h * A2)
-        step = np.where(slope > 0, f / np.where(slope > 0, slope, 1.0), 0.0)
-        h = h - step
-        if not np.any(np.abs(step) > 1e-15 * width):
+        step = np.where(slope > 0, (_cubic(V0, A, h) - target) / np.where(slope > 0, slope, 1.0), 0.0)
+        h = np.clip(h - step, lo, hi)
+        if not np.any(np.abs(step) > 1e-15 * (hi - lo)):
             break
     return h
 
 
-def states(poly: Polyhedron, up, s) -> States:
+def states(poly: Polyhedron, up, s, guess=None) -> States:
     """The floating states of the float64 convex *poly* at density ratio *s* (``0 < s < 1``) with each row
-    of *up* (n x 3, normalised here) up, computed edge by edge (module docstring)."""
+    of *up* (n x 3, normalised here) up, computed edge by edge (module docstring); *guess*: first guesses
+    of the draughts ``t`` (else ``lo + s (hi - lo)``), which choose the first interval between vertex heights."""
     body = edge_body(poly)
     u = np.array(up, dtype=float).reshape(-1, 3)
     u = u / np.sqrt(_dot(u, u))[:, None]
@@ -198,9 +206,12 @@ def states(poly: Polyhedron, up, s) -> States:
     lo, hi = levels[:, 0], levels[:, -1]
     target = s * body.volume
     e1, e2 = _basis(u)
-    # the interval [levels[k], levels[k+1]] that holds the root: the cubic is exact inside it
+    # the interval [levels[k], levels[k+1]] that holds the root: the cubic is V itself inside it, so the root
+    # lies below it where the cubic exceeds the target at its lower end, above it where it falls short at its
+    # upper end; the next interval is the one that holds the linear estimate of the root, among those left
     top = levels.shape[1] - 1
-    k = np.clip((levels <= (lo + s * (hi - lo))[:, None]).sum(axis=1) - 1, 0, top - 1)
+    first = lo + s * (hi - lo) if guess is None else np.asarray(guess, dtype=float) - u @ body.c
+    k = np.clip((levels <= first[:, None]).sum(axis=1) - 1, 0, top - 1)
     kmin, kmax = np.zeros(n, dtype=int), np.full(n, top - 1)
     todo = np.ones(n, dtype=bool)
     t = np.empty(n)
@@ -209,21 +220,20 @@ def states(poly: Polyhedron, up, s) -> States:
         a, b = levels[i, k[i]], levels[i, k[i] + 1]
         t0 = (a + b) / 2
         V0, A = _cut(body, heights[i], u[i], t0, e1[i], e2[i], False)
-        root = t0 + _cubic_root(V0, A, target, hi[i] - lo[i])
-        # the cubic is V itself on [a, b]: a root beyond an end lies beyond it; the next interval is the one
-        # that holds the cubic's root, within the intervals left
-        down, up_ = (root < a) & (k[i] > kmin[i]), (root > b) & (k[i] < kmax[i])
-        kmax[i[down]] = (levels[i[down]] < a[down, None]).sum(axis=1) - 1
-        kmin[i[up_]] = (levels[i[up_]] <= b[up_, None]).sum(axis=1) - 1
-        k[i] = np.clip((levels[i] <= root[:, None]).sum(axis=1) - 1, kmin[i], kmax[i])
+        down = (_cubic(V0, A, a - t0) > target) & (k[i] > kmin[i])
+        up_ = (_cubic(V0, A, b - t0) < target) & (k[i] < kmax[i])
         done = ~(down | up_)
-        t[i[done]] = np.clip(root[done], a[done], b[done])
+        t[i[done]] = t0[done] + _cubic_root(V0[done], [x[done] for x in A], target, a[done] - t0[done],
+                                            b[done] - t0[done])
         todo[i[done]] = False
         if not todo.any():
             break
-    if todo.any():
-        i = rows[todo]
-        t[i] = np.clip(root[~done], levels[i, k[i]], levels[i, k[i] + 1])
+        kmax[i[down]] = (levels[i[down]] < a[down, None]).sum(axis=1) - 1
+        kmin[i[up_]] = (levels[i[up_]] <= b[up_, None]).sum(axis=1) - 1
+        with np.errstate(divide="ignore", invalid="ignore"):
+            estimate = t0 + (target - V0) / A[0]
+        j = i[~done]
+        k[j] = np.clip((levels[j] <= np.nan_to_num(estimate[~done])[:, None]).sum(axis=1) - 1, kmin[j], kmax[j])
     V, _, moment, area, J = _cut(body, heights, u, t, e1, e2, True)
     B = moment / V[:, None] + body.c
     potential = _dot(u, body.G - B)
