@@ -283,9 +283,9 @@ def _fold_windows(poly, group, scale, solution, sa, sb) -> list:
         side = s - math.copysign(min(1e-4, abs(s - sa) / 2), sb - sa)
         here, ok = newton(poly, u, side, scale)
         # Newton's method from the fold lands on either branch that meets there (to the last bits of u): where
-        # the continued one is not stable, the one it landed on is a candidate too
-        candidates = ([here] if ok and e.stability != "stable" else []) + _partners(
-            poly, group, here.u if ok else u, side, scale)
+        # the continued one is not stable, the other one it may land on is a candidate too
+        other = ok and e.stability != "stable" and not same_class(here.u, u, group, 1e-6)
+        candidates = ([here] if other else []) + _partners(poly, group, here.u if ok else u, side, scale)
         for k, loc in enumerate(candidates):
             w = loc.eigen()[0]
             if min(w) > 0 and not any(same_class(loc.u, o.u, group, 1e-6) for o in candidates[:k]):
