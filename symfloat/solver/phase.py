@@ -100,7 +100,33 @@ def _tracked_stable(poly, group, u, s, label, family, scale) -> tuple[bool, np.n
         tilted = position_label(loc.u, "isolated").startswith("tilted")
         off_axis = min(np.linalg.norm(np.abs(loc.u) - e) for e in np.eye(3)) > 1e-6
         return tilted and off_axis and w[1] > 0 and abs(w[0]) < 1e-6 * scale, loc.u
-    return position_label(loc.u, family) == label and min(w) > 1e-14 * scale, loc.u
+    if position_label(loc.u, family) != label or not min(w) > 1e-14 * scale:
+        return False, loc.u
+    parent = _parent(poly, group, loc.u, s, scale, NEAR_PARENT)
+    if parent is not None and min(parent.eigen()[0]) > 1e-14 * scale:
+        return False, loc.u         # the point is its stable parent, not a distinct position (past a pitchfork)
+    return True, loc.u
+
+
+NEAR_PARENT = 1e-6      # radians: a tracked point this close to a stable more symmetric equilibrium is that one
+PITCHFORK = 1e-2        # radians: a branch that ends this close to a more symmetric one ends at its pitchfork
+
+
+def _parent(poly, group, u, s, scale, near):
+    """The more symmetric equilibrium within *near* of *u* (the point of highest symmetry there,
+    :func:`~symfloat.solver.degenerate.symmetric_point`, polished within its symmetry), or None.
+    Next to a pitchfork the child lies at ``c sqrt|s - s*|`` from this parent and exists only on the
+    side where the parent is unstable across the mirror (the normal form ``x (eps - x^2)``); past
+    it, Newton's method within the child's symmetry lands on the parent only to the rounding of the
+    gradient divided by the parent's soft eigenvalue (7e-10 rad where that is 1.3e-7, the box
+    1 x 1 x 4 at 9/32 + 1e-7), which a label's tolerance of 1e-9 does not tell from a child.  A stable
+    child within 1e-6 of a stable parent would need a third equilibrium between them."""
+    from .degenerate import symmetric_point
+    v = symmetric_point(u, group, 2 * near)
+    if _fixing(group, v) <= _fixing(group, u):
+        return None
+    loc, ok = symmetric_newton(poly, v, s, scale, group)
+    return loc if ok and np.linalg.norm(loc.u - v) <= 2 * near else None
 
 
 def _locate(poly, group, scale, label, eq, s_in, s_out) -> tuple[float, float, float, str]:
@@ -143,6 +169,9 @@ def _locate_tracked(poly, group, scale, label, eq, s_in, s_out):
         event = _vertex_event(poly, group, u, lo, s_out, label, scale)
         if event is not None:
             return event[0], event[1], tilt, "where the waterplane passes a vertex: the position joins a ring", u
+        fork = _pitchfork(poly, group, u, lo, scale)
+        if fork is not None:
+            return fork[0], fork[1], tilt, f"born from the position '{fork[2]}' (pitchfork)", u
         root = _eigenvalue_root(poly, group, u, lo, scale)
         if root is not None and abs(root[0] - (lo + hi) / 2) <= 2 * err + 1e-12:
             return root[0], root[1], tilt, note, u
@@ -164,25 +193,53 @@ def _locate_tracked(poly, group, scale, label, eq, s_in, s_out):
     return (lo + hi) / 2, err, tilt, note, u
 
 
-def _eigenvalue_root(poly, group, u, s, scale, h: float = 1e-7):
-    """Where the smallest eigenvalue of the branch through *u* (followed within its symmetry) crosses
-    zero next to *s*: Newton's method on ``lambda(s) = 0`` with a central difference for its slope.
+def _pitchfork(poly, group, u, s, scale):
+    """A branch whose tracking ended at *s* next to a more symmetric equilibrium (its parent, within
+    :data:`PITCHFORK` of the last point *u*) ends at the parent's pitchfork: where the parent's soft
+    eigenvalue (across the mirror the child leaves) crosses zero, a simple crossing located by
+    :func:`_eigenvalue_root` on the parent, which exists on both sides, instead of on the child,
+    which does not (its own eigenvalue ``~ -2 lambda_parent`` is lost with it past the fork, and
+    its distance to the parent ``~ sqrt|s - s*|`` falls below what float64 resolves).  Returns
+    ``(density, error, parent's label)`` or None (no parent there, or its crossing not within 1e-4 of
+    *s*).  Witness: Scheeffer IX, the long square log at 9/32 and 23/32 (tests/test_phase_log.py)."""
+    parent = _parent(poly, group, u, s, scale, PITCHFORK)
+    if parent is None:
+        return None
+    root = _eigenvalue_root(poly, group, parent.u, s, scale, gate=None, softest=True)
+    if root is None or abs(root[0] - s) > 1e-4:
+        return None
+    return root[0], root[1], position_label(parent.u, "isolated")
+
+
+def _fixing(group, u) -> int:
+    """How many symmetries of the body fix *u* (to 1e-9, the tolerance of :func:`symmetric_newton`)."""
+    return sum(np.linalg.norm(g @ u - u) <= 1e-9 for g in group)
+
+
+def _eigenvalue_root(poly, group, u, s, scale, h: float = 1e-7, gate: float | None = 1e-8, softest=False):
+    """Where the smallest eigenvalue (*softest*: the one of least magnitude) of the branch through *u*
+    (followed within its symmetry) crosses zero next to *s*: Newton's method on ``lambda(s) = 0`` with
+    a central difference for its slope.
     The bisection's predicate flips where ``lambda`` exceeds its rounding (``1e-14 * scale``), a few
     1e-14 past the root; the root itself is found to ``2 |last correction| + 1e-14 * scale / |slope|``
     (the rounding of ``lambda`` divided by its slope).  Returns ``(density, error)`` or None where the
-    crossing is not simple (the slope below 1e-6: a root of higher order, or a ring)."""
+    crossing is not simple (the slope below 1e-6: a root of higher order, or a ring) or ``lambda``
+    at *s* exceeds ``gate * scale`` (None: no gate)."""
     def smallest(density, v):
         loc, ok = symmetric_newton(poly, v, density, scale, group)
-        return (min(loc.eigen()[0]), loc.u) if ok else (None, v)
+        if not ok:
+            return None, v
+        w = loc.eigen()[0]
+        return (float(w[np.argmin(np.abs(w))]) if softest else float(min(w))), loc.u
 
-    for _ in range(4):
+    for _ in range(8 if gate is None else 4):
         lam, u = smallest(s, u)
         above, _ = smallest(s + h, u)
         below, _ = smallest(s - h, u)
         if lam is None or above is None or below is None:
             return None
         slope = (above - below) / (2 * h)
-        if abs(slope) < 1e-6 * scale or abs(lam) > 1e-8 * scale:
+        if abs(slope) < 1e-6 * scale or (gate is not None and abs(lam) > gate * scale):
             return None
         step = lam / slope
         s -= step
@@ -191,8 +248,9 @@ def _eigenvalue_root(poly, group, u, s, scale, h: float = 1e-7):
     return float(s), float(2 * abs(step) + 1e-14 * scale / abs(slope))
 
 
-def _vertex_event(poly, group, u, s, s_out, label, scale, reach: float = 1e-3, ring: bool = False):
-    """The density within *reach* of *s* where the waterplane of the branch tracked from *u* passes
+def _vertex_event(poly, group, u, s, s_out, label, scale, ring: bool = False):
+    """The density within 1e-3 of *s* (or 1e-5, 1e-7: a window narrower than that, the long square
+    log's ring around z, 4e-5 wide) where the waterplane of the branch tracked from *u* passes
     a vertex, when the eigenvalue on the side of *s_out* (*ring*: on the side of *s*, the family's)
     is zero to rounding there (a ring point), as ``(density, half-width)``; None when there is no
     such event.  The branch is followed by
@@ -202,6 +260,14 @@ def _vertex_event(poly, group, u, s, s_out, label, scale, reach: float = 1e-3, r
     from .local import local
     if not ring and min(abs(local(poly, u, s).eigen()[0])) > 1e-6 * scale:
         return None                                 # a simple eigenvalue crossing: the bisection is exact
+    for reach in (1e-3, 1e-5, 1e-7):
+        event = _vertex_event_within(poly, group, u, s, s_out, label, scale, reach, ring)
+        if event is not None:
+            return event
+    return None
+
+
+def _vertex_event_within(poly, group, u, s, s_out, label, scale, reach, ring):
     towards = math.copysign(1.0, s_out - s)
     ends = []
     for target in (s - towards * reach, s + towards * reach):
@@ -287,10 +353,12 @@ def _fold_windows(poly, group, scale, solution, sa, sb) -> list:
         other = ok and e.stability != "stable" and not same_class(here.u, u, group, 1e-6)
         candidates = ([here] if other else []) + _partners(poly, group, here.u if ok else u, side, scale)
         for k, loc in enumerate(candidates):
-            w = loc.eigen()[0]
-            if min(w) > 0 and not any(same_class(loc.u, o.u, group, 1e-6) for o in candidates[:k]):
-                eq = _Tracked(tuple(loc.u), "isolated")
-                out.append((position_label(loc.u, "isolated"), eq, s, side))
+            if any(same_class(loc.u, o.u, group, 1e-6) for o in candidates[:k]):
+                continue
+            # stable by the predicate the bisection uses (a point of a ring, flat along it to rounding, is not)
+            kind = position_label(loc.u, "isolated")
+            if _tracked_stable(poly, group, loc.u, side, kind, "isolated", scale)[0]:
+                out.append((kind, _Tracked(tuple(loc.u), "isolated"), s, side))
     return out
 
 
@@ -459,26 +527,36 @@ def _windows_between(poly, group, scale, sol_a, sol_b, sa, sb) -> list[Threshold
             continue
         for label, eq, s_fold, side in _fold_windows(poly, group, scale, sol, s_from, s_to):
             upward = s_to > s_from
-            value, err, tilt, note = _locate(poly, group, scale, label, eq, side, s_to)
-            value, err = _fold(poly, group, eq, value, err, side, scale)
-            out.append(Threshold(value, err, label, "stable below" if upward else "stable above",
+            end, end_err, _, _ = _locate(poly, group, scale, label, eq, side, s_to)
+            value, err, tilt, note = _locate(poly, group, scale, label, eq, side, s_from)
+            if abs(end - s_to) <= 2 * end_err or abs(value - s_from) <= 2 * err:
+                # stable at a sweep density: not a window (what ended was not a fold, but a branch met its child
+                # at a pitchfork); the sweep's own change of stable sets locates it
+                continue
+            end, end_err = _fold(poly, group, eq, end, end_err, side, scale)
+            out.append(Threshold(end, end_err, label, "stable below" if upward else "stable above",
                                  note="a fold: the position meets another branch and both end; "
                                       "error estimated"))
-            value, err, tilt, note = _locate(poly, group, scale, label, eq, side, s_from)
             birth = Threshold(value, err, label, "stable above" if upward else "stable below", note=note)
             birth.tilt = tilt
             out.append(birth)
     return out
 
 
-def _follow(poly, group, scale, thresholds, densities) -> list[Threshold]:
-    """Every isolated position that becomes stable at a threshold is followed by continuation
-    across its stable range, up to the sweep density beyond the next one: where it stops being
-    stable before that (a fold in a window narrower than the sweep), the end is a threshold too."""
+def _follow(poly, group, scale, thresholds, densities, stable_at=None) -> list[Threshold]:
+    """Every position that becomes stable at a threshold, isolated or a ring, is followed by
+    continuation across its stable range, up to the sweep density beyond the next one: where it stops
+    being stable before that (a fold, or the end of a ring, in a window narrower than the sweep or
+    ending at a sweep density, where the ring has shrunk to nothing), the end is a threshold too.  A
+    ring born from an axis opens like ``sqrt(s - s*)`` (the long square log's ring around z: 0.8 degrees
+    1e-6 past its birth), so Newton's method from the birth falls back onto the axis; it is started
+    from the ring the solver finds at the first density past the birth (*stable_at*: density -> the
+    stable positions by label)."""
     out = []
     for t in thresholds:
-        if t.label.startswith("ring") or not t.up:
+        if not t.up:
             continue
+        family = "ring" if t.label.startswith("ring") else "isolated"
         toward = 1 if t.change == "stable above" else -1
         beyond = sorted((s for s in densities if (s - t.density) * toward > 0), key=lambda s: abs(s - t.density))
         if not beyond:
@@ -491,23 +569,30 @@ def _follow(poly, group, scale, thresholds, densities) -> list[Threshold]:
             start = t.density + toward * offset
             if (s_end - start) * toward <= 0:
                 break
-            ok, u = _tracked_stable(poly, group, np.array(t.up), start, t.label, "isolated", scale)
-            if not ok:          # next to a pitchfork Newton falls back onto the parent: look beside it
+            ok, u = _tracked_stable(poly, group, np.array(t.up), start, t.label, family, scale)
+            if not ok and family == "isolated":     # next to a pitchfork Newton falls back onto the parent: look beside it
                 near = [loc.u for loc in _partners(poly, group, np.array(t.up), start, scale)
                         if position_label(loc.u, "isolated") == t.label and min(loc.eigen()[0]) > 0]
                 ok, u = bool(near), (near[0] if near else u)
+            elif not ok and stable_at is not None:
+                ring = stable_at(start).get(t.label)
+                if ring is not None:
+                    ok, u = _tracked_stable(poly, group, np.array(ring.up), start, t.label, family, scale)
             if ok:
                 u0 = u
                 break
         if u0 is None:
             continue
-        eq = _Tracked(tuple(u0), "isolated")
-        value, err, tilt, note, u = _locate_tracked(poly, group, scale, t.label, eq, start, s_end)
+        value, err, tilt, note, u = _locate_tracked(poly, group, scale, t.label, _Tracked(tuple(u0), family),
+                                                    start, s_end)
         if abs(value - s_end) <= 2 * err + 1e-9:
             continue                                  # stable all the way
-        value, err = _fold(poly, group, _Tracked(tuple(u), "isolated"), value, err, start, scale)
-        out.append(Threshold(value, err, t.label, "stable below" if toward > 0 else "stable above",
-                             note=note or "a fold: the position meets another branch and both end; error estimated"))
+        end = Threshold(value, err, t.label, "stable below" if toward > 0 else "stable above", note=note)
+        end.tilt, end.up = tilt, tuple(u)
+        if family == "isolated" and not note:
+            end.density, end.bracket = _fold(poly, group, _Tracked(tuple(u), "isolated"), value, err, start, scale)
+            end.note = "a fold: the position meets another branch and both end; error estimated"
+        out.append(end)
     return out
 
 
@@ -586,7 +671,8 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None, densitie
             if any(t.label == k["label"] for t in new):
                 break
     _annotate_families(thresholds)          # pitchforks snapped first: a branch is followed from its birth
-    thresholds += _follow(poly, group, scale, thresholds, [float(s) for s in densities])
+    thresholds += _follow(poly, group, scale, thresholds, [float(s) for s in densities],
+                          lambda s: _stable(make_scene(body, Fraction(s), base.dims)))
     _annotate_families(thresholds)
     unique = []
     for t in thresholds:                     # one entry per position and density (after the families' snapping)

@@ -1,0 +1,114 @@
+"""The long square log (the box 1 x 1 x 4, issue 14): its thresholds next to the pitchforks, each with its dual.
+
+Expected values, computed without the solver:
+
+- the log on a side ("face x up") against its tilted positions in the section: upright while
+  6 s (1 - s) < (a/b)^2 = 1, Scheeffer IX (123)/(132a) and the hasab problem: s = (3 - sqrt 3)/6;
+- edge up in the section (a right isosceles triangle of area s under water, legs sqrt(2 s)): the waterline
+  w = 2 sqrt s, BM = w^3 / (12 s) = (2/3) sqrt s, BG = sqrt(2)/2 - (2/3) sqrt s, so GM = (4/3) sqrt s - sqrt(2)/2
+  vanishes at s = 9/32; Scheeffer IX's boundary s = 23/32 of (161), (162) and (162a) (t of (147) is 1 there,
+  n_1 = 1 by (156)), read for s < 1/2 with 1 - s as the text says;
+- on end ("face z up"), Scheeffer IV (18) / the metazentrum lesson with w/h = 1/4: s = 1/2 - sqrt(1/4 - 1/96).
+"""
+import json
+import math
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from symfloat.geometry.floating import box
+from symfloat.solver import make_scene
+from symfloat.solver.critical import symmetric_newton
+from symfloat.solver.phase import (_stable, _thresholds_between, _tracked_stable, _windows_between,
+                                   phase_diagram)
+from symfloat.solver.solve import body_scale, solve
+from symfloat.solver.symmetry import box_group
+
+DOCS = Path(__file__).resolve().parent.parent / "docs"
+SIDE = (3 - math.sqrt(3)) / 6
+EDGE = 9 / 32
+END = 0.5 - math.sqrt(0.25 - 1 / 96)
+TILTED, EDGE_UP = "tilted in the x-y plane", "edge up (xy)"
+EXPECTED = [(END, "face z up", "stable below"), (END, "ring around z", "stable above"),
+            (SIDE, "face x up", "stable below"), (SIDE, TILTED, "stable above"),
+            (EDGE, EDGE_UP, "stable above"), (EDGE, TILTED, "stable below")]
+
+
+def _log():
+    base = make_scene("box", "1/2", "1,1,4")
+    return box(*base.dims), box_group(base.dims), body_scale(base)
+
+
+def _dual(t, thresholds):
+    opposite = {"stable below": "stable above", "stable above": "stable below"}
+    return [u for u in thresholds if u.label == t.label and u.change == opposite[t.change]
+            and abs(u.density - (1 - t.density)) <= t.bracket + u.bracket + 1e-15]
+
+
+@pytest.mark.parametrize("lo, hi, value", [(13 / 49, 14 / 49, EDGE), (35 / 49, 36 / 49, 1 - EDGE)])
+def test_the_edge_up_pitchfork_is_located_once_on_both_branches(lo, hi, value):
+    # `phase box --dims 1,1,4` put "tilted in the x-y plane: stable below" at 0.2812501034300, 0.2812500485640 and
+    # 0.2812500730713 (each "± 4e-14", from three brackets) and none at 23/32: past the fork the tracked tilted
+    # point fell onto the stable edge-up position only to 7e-10 rad, which the label's 1e-9 took for tilted
+    poly, group, scale = _log()
+    a, b = _stable(make_scene("box", Fraction(lo), "1,1,4")), _stable(make_scene("box", Fraction(hi), "1,1,4"))
+    found = sorted(_thresholds_between(poly, group, scale, a, b, lo, hi), key=lambda t: t.label)
+    up = "stable above" if value < 0.5 else "stable below"
+    down = "stable below" if value < 0.5 else "stable above"
+    assert [(t.label, t.change) for t in found] == [(EDGE_UP, up), (TILTED, down)]
+    for t in found:
+        assert abs(t.density - value) <= t.bracket < 1e-12
+    assert found[1].note == f"born from the position '{EDGE_UP}' (pitchfork)"
+
+
+def test_past_the_fork_the_tilted_position_is_its_stable_parent():
+    poly, group, scale = _log()
+    child, ok = symmetric_newton(poly, np.array([0.75, 0.66, 0.0]), EDGE - 1e-7, scale, group)
+    assert ok and abs(abs(child.u[0]) - abs(child.u[1])) > 1e-4         # 6e-4 rad off the diagonal at 9/32 - 1e-7
+    assert _tracked_stable(poly, group, child.u, EDGE - 1e-9, TILTED, "isolated", scale)[0]
+    for past in (1e-9, 1e-8, 1e-7):         # 1e-9 and 1e-8 were taken for the tilted position before the fix
+        assert not _tracked_stable(poly, group, child.u, EDGE + past, TILTED, "isolated", scale)[0]
+
+
+def test_a_pitchfork_between_sweep_densities_is_no_window_ending_at_one():
+    # the face x up branch continued from 10/49 "died" at its pitchfork (SIDE), its stable tilted child was taken
+    # for a window, and the window's end put at the next sweep density 11/49 ("stable below", dual 38/49)
+    poly, group, scale = _log()
+    sa, sb = Fraction(10, 49), Fraction(11, 49)
+    a, b = (solve(make_scene("box", s, "1,1,4")) for s in (sa, sb))
+    found = _windows_between(poly, group, scale, a, b, float(sa), float(sb))
+    assert all(abs(t.density - float(s)) > 1e-9 for t in found for s in (sa, sb))
+    assert all(t.label != TILTED or abs(t.density - SIDE) <= t.bracket for t in found)
+
+
+def test_the_kept_record_has_the_closed_forms_and_every_dual():
+    # docs/figures/phase-square-log.json (`symfloat run`; tests/test_figures.py checks that it is current)
+    record = json.loads((DOCS / "figures" / "phase-square-log.json").read_text(encoding="utf-8"))
+    assert record["dims_exact"] == ["1", "1", "4"] and record["duality_holds"]
+    assert record["thresholds_without_dual"] == []
+    found = [(t["density"], t["error"], t["position"], t["change"]) for t in record["thresholds"]]
+    flip = {"stable below": "stable above", "stable above": "stable below"}
+    expected = EXPECTED + [(1 - v, label, flip[change]) for v, label, change in EXPECTED]
+    assert len(found) == len(expected)
+    for value, label, change in expected:
+        match = [f for f in found if f[2] == label and f[3] == change and abs(f[0] - value) <= f[1] + 1e-15]
+        assert len(match) == 1, (value, label, change)
+        assert match[0][1] < 1e-12
+
+
+@pytest.mark.slow
+def test_phase_of_the_long_square_log_holds_its_duality():
+    # `symfloat phase box --dims 1,1,4` (48 densities; about 40 processor-seconds)
+    diagram = phase_diagram("box", "1,1,4")
+    assert diagram.duality_ok and diagram.unpaired == []
+    for t in diagram.thresholds:
+        assert len(_dual(t, diagram.thresholds)) == 1, t
+    flip = {"stable below": "stable above", "stable above": "stable below"}
+    expected = EXPECTED + [(1 - v, label, flip[change]) for v, label, change in EXPECTED]
+    assert sorted((t.label, t.change) for t in diagram.thresholds) == sorted((x[1], x[2]) for x in expected)
+    for value, label, change in expected:
+        t = next(t for t in diagram.thresholds if t.label == label and t.change == change
+                 and abs(t.density - value) < 1e-6)
+        assert abs(t.density - value) <= t.bracket + 1e-15 and t.bracket < 1e-12
