@@ -4,7 +4,7 @@ import math
 import numpy as np
 import pytest
 
-from symfloat.geometry.edgewise import states
+from symfloat.solver.edgewise import states
 from symfloat.geometry.floating import box, floating_state, regular_prism
 from symfloat.solver.critical import newton, newton_all, sphere_seeds
 

@@ -441,16 +441,14 @@ def _volume_and_area(poly, u, t, basis):
 
 
 @_at_body_precision
-def draught(poly, u, s, tol=None, start=None):
+def draught(poly, u, s, tol=None):
     """The offset ``t`` of the water plane ``u . p = t`` at which the submerged
     volume is ``s`` times the whole (``0 < s < 1``), and a bound ``err`` with
     ``V(t - err) <= s V <= V(t + err)`` as evaluated.
 
     ``V(t)`` increases with ``dV/dt`` = waterplane area, so Newton's method
     is run inside a bracket ``[lo, hi]`` (bisection whenever a step leaves
-    it), from *start* when given (a draught known to float64 needs two steps
-    at 30 digits) else from ``lo + s (hi - lo)``, and the result is certified
-    by evaluating ``V`` at ``t +- tol/2``.
+    it) and the result is certified by evaluating ``V`` at ``t +- tol/2``.
     The default *tol* is ``1e-13`` (float64) or ``10**(-dps + 3)`` times the
     height of the body along ``u``; evaluation rounding adds about
     ``1e-16 V / A`` (float64) to the true error.
@@ -468,8 +466,6 @@ def draught(poly, u, s, tol=None, start=None):
         tol = (hi - lo) * (_num("1e-13", dps) if dps is None else mpmath.mpf(10) ** (3 - dps))
     tol = _num(tol, dps)
     t = lo + s * (hi - lo)
-    if start is not None and lo < _num(start, dps) < hi:
-        t = _num(start, dps)
     basis = waterplane_basis(u, dps)                  # the same for every offset t
     for _ in range(400):
         volume, area = _volume_and_area(poly, u, t, basis)
@@ -535,17 +531,16 @@ class FloatingState:
 
 
 @_at_body_precision
-def floating_state(poly, u, s, tol=None, G=None, start=None):
+def floating_state(poly, u, s, tol=None, G=None):
     """The :class:`FloatingState` of *poly* with *u* up at density ratio *s*.
-    ``G`` defaults to the centroid of the body (homogeneous body); *start*
-    is a first guess of the draught (:func:`draught`).
+    ``G`` defaults to the centroid of the body (homogeneous body).
 
     >>> st = floating_state(box(2, 1, 1), (0, 0, 1), 0.5)
     >>> round(st.metacentric_height, 12)    # (2 * 1**3 / 12) / 1 - 1/4
     -0.083333333333
     """
     u = _unit(u, poly.dps)
-    t, err = draught(poly, u, s, tol, start)
+    t, err = draught(poly, u, s, tol)
     sub = submerged(poly, u, t)
     G = body_volume_centroid(poly)[1] if G is None else tuple(_num(x, poly.dps) for x in G)
     wp = sub.waterplane

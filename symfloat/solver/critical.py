@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 
-from ..geometry.edgewise import states
+from .edgewise import states
 from ..geometry.floating import Polyhedron
 from .errors import ROUNDING, STEP, equilibrium_error
 from .local import Local, gradient_at, local, tangent_step
@@ -99,7 +99,7 @@ def newton(poly: Polyhedron, u0, s, scale: float, iterations: int = 60, null_tol
 
 def newton_all(poly: Polyhedron, seeds, s, scale: float, iterations: int = 60) -> list:
     """:func:`newton` from every seed at once, the floating states of all the seeds still iterating evaluated
-    together (:func:`symfloat.geometry.edgewise.states`): the same steps, capped and stopped alike; returns
+    together (:func:`symfloat.solver.edgewise.states`): the same steps, capped and stopped alike; returns
     ``(Local, converged)`` per seed (a :class:`Local` without its ``state``)."""
     null_tol = ZERO_EIGEN * scale
     u = np.array(seeds, dtype=float).reshape(-1, 3)
@@ -197,26 +197,24 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), ot
     float64 point (the slope across it)."""
     exact = polyhedron_at(poly, refine_dps)
     lipschitz = 0.0
-    here = local(poly, c.u, s)
-    t = here.state.t                                # the float64 draught: where the digits' draught starts
-    for v in here.eigen()[1]:                       # eigenvectors at the representative itself
+    for v in local(poly, c.u, s).eigen()[1]:        # eigenvectors at the representative itself
         plus, minus = (local(poly, tangent_step(np.asarray(c.u), sign * STEP * v), s) for sign in (1, -1))
         H = [x.basis @ x.hessian @ x.basis.T for x in (plus, minus)]
         lipschitz = max(lipschitz, float(np.linalg.norm(H[0] - H[1], 2)) / (2 * STEP))
     if c.ring:
-        residual = float(np.linalg.norm(gradient_at(exact, c.u, s, t)))
+        residual = float(np.linalg.norm(gradient_at(exact, c.u, s)))
         c.eigen_error = lipschitz * residual / max(abs(e) for e in c.eigen) + 1e-14 * scale
         return (*equilibrium_error(residual, max(abs(e) for e in c.eigen), lipschitz, scale), lipschitz)
     # the error of the clipping at refine_dps digits, added to every residual but that of a position its
     # symmetries pin down exactly (an equilibrium in any arithmetic: face up)
     pinned = _pinned(c.u, group)
     arithmetic = 0.0 if pinned else 10.0 ** (5 - refine_dps) * scale
-    residual = float(np.linalg.norm(gradient_at(exact, c.u, s, t))) + arithmetic
+    residual = float(np.linalg.norm(gradient_at(exact, c.u, s))) + arithmetic
     err, method = equilibrium_error(residual, min(abs(e) for e in c.eigen), lipschitz, scale)
     if method == "kantorovich" and err <= 1e-13 and min(abs(e) for e in c.eigen) > 10 * (lipschitz * err + 1e-14 * scale):
         c.eigen_error = lipschitz * err + 1e-14 * scale        # decided in float64: nothing to polish
         return err, method, lipschitz
-    u, residual, eigen = polish(exact, c.u, s, scale, steps=0 if pinned else 40, start=t)
+    u, residual, eigen = polish(exact, c.u, s, scale, steps=0 if pinned else 40)
     residual += arithmetic          # at 30 digits a residual below the arithmetic's error may round to 0
     err, method = equilibrium_error(float(residual), float(min(abs(e) for e in eigen)), lipschitz, scale)
     if not pinned and min(abs(float(e)) for e in eigen) <= lipschitz * max(err - ROUNDING, 0.0) + arithmetic:
@@ -281,7 +279,7 @@ def descend_all(poly: Polyhedron, starts, directions, s, scale: float, iteration
     ``-direction * sum (v . g) / |lambda| v`` (``|lambda|`` floored, steps capped), then polish by
     :func:`newton_all`: from a point just off a saddle along its unstable (stable) direction this reaches
     the minimum (maximum) that the saddle's separatrix leads to, however close to the saddle it is.  The
-    floating states of all the starts are evaluated together (:func:`symfloat.geometry.edgewise.states`)."""
+    floating states of all the starts are evaluated together (:func:`symfloat.solver.edgewise.states`)."""
     u = np.array(starts, dtype=float).reshape(-1, 3)
     u /= np.linalg.norm(u, axis=1)[:, None]
     sign = np.asarray(directions, dtype=float)

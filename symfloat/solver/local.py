@@ -62,10 +62,9 @@ def local(poly, u, s) -> Local:
     return Local(np.array([float(x) for x in st.u]), U, E, E.T @ d, np.array(T) / V - U * np.eye(2), st)
 
 
-def gradient_at(poly, u, s, start=None) -> np.ndarray:
-    """The gradient (3-vector) evaluated in *poly*'s own arithmetic (float64 or mpmath); *start*: a first
-    guess of the draught (the float64 one)."""
-    st = floating_state(poly, tuple(u), s, start=start)
+def gradient_at(poly, u, s) -> np.ndarray:
+    """The gradient (3-vector) evaluated in *poly*'s own arithmetic (float64 or mpmath)."""
+    st = floating_state(poly, tuple(u), s)
     with mpmath.workdps(poly.dps or 15):
         d = [g - b for g, b in zip(st.G, st.B)]
         comps = [sum(e[k] * d[k] for k in range(3)) for e in st.basis]

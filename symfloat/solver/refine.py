@@ -15,10 +15,9 @@ __all__ = ["refine_sphere", "polish", "refine_planar", "polish_planar", "planar_
            "angle_between"]
 
 
-def _local_mp(poly, u, s, start=None):
-    """Gradient (2) and Hessian (2x2) of the potential in the waterplane basis, in mpmath; *start*: a first
-    guess of the draught."""
-    st = floating_state(poly, u, s, start=start)
+def _local_mp(poly, u, s):
+    """Gradient (2) and Hessian (2x2) of the potential in the waterplane basis, in mpmath."""
+    st = floating_state(poly, u, s)
     d = [g - b for g, b in zip(st.G, st.B)]
     grad = mpmath.matrix([sum(e[k] * d[k] for k in range(3)) for e in st.basis])
     T = mpmath.matrix([[st.tensor[0][0], st.tensor[0][1]], [st.tensor[1][0], st.tensor[1][1]]])
@@ -47,20 +46,19 @@ def refine_sphere(scene, u, dps: int = 50, steps: int = 12):
         return tuple(u), mpmath.norm(g)
 
 
-def polish(poly, u, s, scale: float, steps: int = 40, cap: float = 1e-2, start=None):
+def polish(poly, u, s, scale: float, steps: int = 40, cap: float = 1e-2):
     """Newton's method at *poly*'s precision (an mpmath body) from the unit vector *u* (floats or mpf): returns
     ``(u, |grad U|, eigenvalues)`` at the best point reached (mpf; the eigenvalues of the metacentric
     Hessian there, ascending).  Steps are capped at *cap* radians and halved (up to four times) where
     the gradient would grow: next to a bifurcation the Hessian is nearly singular and a float64 point
     lies far from the equilibrium in its soft direction.  The iteration stops at a gradient of
-    ``10^(2 - dps) * scale`` (the arithmetic's rounding) or when it no longer falls.  Each draught starts
-    from the last one (the first from *start*, when given)."""
+    ``10^(2 - dps) * scale`` (the arithmetic's rounding) or when it no longer falls."""
     with mpmath.workdps(poly.dps):
         u = [mpmath.mpf(x) if isinstance(x, mpmath.mpf) else mpmath.mpf(float(x)) for x in u]
         norm = mpmath.sqrt(sum(x * x for x in u))
         u = [x / norm for x in u]
         floor = mpmath.mpf(10) ** (2 - poly.dps) * scale
-        st, g, H = _local_mp(poly, u, s, start)
+        st, g, H = _local_mp(poly, u, s)
         best = (tuple(u), mpmath.norm(g), H)
         for _ in range(steps):
             if best[1] <= floor:
@@ -77,7 +75,7 @@ def polish(poly, u, s, scale: float, steps: int = 40, cap: float = 1e-2, start=N
                 v = [u[k] + step[0] * e1[k] + step[1] * e2[k] for k in range(3)]
                 norm = mpmath.sqrt(sum(x * x for x in v))
                 v = [x / norm for x in v]
-                st_v, g_v, H_v = _local_mp(poly, v, s, st.t)
+                st_v, g_v, H_v = _local_mp(poly, v, s)
                 if mpmath.norm(g_v) < best[1]:
                     break
                 step = step / 2

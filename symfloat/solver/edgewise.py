@@ -35,7 +35,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .floating import Polyhedron, body_volume_centroid
+from ..geometry.floating import Polyhedron, body_volume_centroid
 
 __all__ = ["EdgeBody", "edge_body", "States", "states"]
 
