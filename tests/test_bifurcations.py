@@ -149,7 +149,9 @@ def test_cube_window_narrower_than_the_sweep_is_found(sa, sb):
     # the vertex event is a theorem's threshold (to 1e-12); the fold's error is estimated: the fold of (171)
     # by mpmath.findroot at 30 digits (tests/test_scheeffer_x.py, S_FOLD) is its independent witness
     s_fold = 1 - 0.7623092388663755
-    assert x.bracket < 1e-13 and "error estimated" in fold.note and fold.bracket < 1e-13
+    # (the extended system's Newton stops once its correction, below 1e-13, no longer falls: its stated error,
+    # twice that correction plus 1e-14, is below 2.1e-13; where in that range depends on rounding)
+    assert x.bracket < 1e-13 and "error estimated" in fold.note and fold.bracket < 2.1e-13
     assert abs(fold.density - (s_fold if sa < 0.5 else 1 - s_fold)) <= fold.bracket
 
 

@@ -14,21 +14,23 @@ symmetric position (:func:`_error_estimate`).
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
 import mpmath
 import numpy as np
 
+from .edgewise import states
 from ..geometry.floating import Polyhedron
 from .errors import ROUNDING, STEP, equilibrium_error
-from .local import gradient_at, local, tangent_step
+from .local import Local, gradient_at, local, tangent_step
 from .degenerate import symmetric_point
 from .refine import polish
 from .selfcheck import index_of
 from .symmetry import orbit, representative, same_class
 
-__all__ = ["Critical", "newton", "symmetric_newton", "descend", "critical_points", "poincare_hopf_sum", "more_seeds", "polyhedron_at"]
+__all__ = ["Critical", "newton", "newton_all", "descend_all", "symmetric_newton", "critical_points", "poincare_hopf_sum", "more_seeds", "polyhedron_at"]
 
 MAX_STEP = 0.3          # radians: Newton steps are capped (a trust region)
 MIN_FAMILY = 1e-3       # radians: an arc of equilibria shorter than this is not reported as one
@@ -93,6 +95,55 @@ def newton(poly: Polyhedron, u0, s, scale: float, iterations: int = 60, null_tol
             break
         u = tangent_step(loc.u, step)
     return best, np.linalg.norm(best.gradient) <= 1e-11 * scale
+
+
+def newton_all(poly: Polyhedron, seeds, s, scale: float, iterations: int = 60) -> list:
+    """:func:`newton` from every seed at once, the floating states of all the seeds still iterating evaluated
+    together (:func:`symfloat.solver.edgewise.states`): the same steps, capped and stopped alike; returns
+    ``(Local, converged)`` per seed (a :class:`Local` without its ``state``)."""
+    null_tol = ZERO_EIGEN * scale
+    u = np.array(seeds, dtype=float).reshape(-1, 3)
+    u /= np.linalg.norm(u, axis=1)[:, None]
+    n = len(u)
+    out, best, best_size = [None] * n, [None] * n, np.full(n, np.inf)
+    active = np.ones(n, dtype=bool)
+    t = None                                        # the last draughts: each step's first guess
+    for _ in range(iterations):
+        i = np.flatnonzero(active)
+        if not len(i):
+            break
+        st = states(poly, u[i], s, None if t is None else t[i])
+        if t is None:
+            t = np.empty(n)
+        t[i] = st.t
+        g = np.einsum("mkj,mk->mj", st.basis, st.G - st.B)
+        H = st.tensor / st.volume[:, None, None] - st.potential[:, None, None] * np.eye(2)
+        size = np.linalg.norm(g, axis=1)
+        for j in np.flatnonzero(size < best_size[i]):
+            best[i[j]] = Local(st.u[j], float(st.potential[j]), st.basis[j], g[j], H[j], None)
+            best_size[i[j]] = size[j]
+        converged = size <= 1e-13 * scale
+        for j in np.flatnonzero(converged):
+            out[i[j]] = (best[i[j]], True)
+        w, vecs = np.linalg.eigh(H)
+        along = np.einsum("mkj,mk->mj", vecs, g)                   # v . g for each eigenvector
+        coef = np.where(np.abs(w) > null_tol, along / np.where(np.abs(w) > null_tol, w, 1.0), 0.0)
+        step2 = -np.einsum("mkj,mj->mk", vecs, coef)
+        flat = ~(np.linalg.norm(step2, axis=1) > 0)
+        step2[flat] = -g[flat] / scale
+        step = np.einsum("mkj,mj->mk", st.basis, step2)
+        norm = np.linalg.norm(step, axis=1)
+        step *= np.where(norm > MAX_STEP, MAX_STEP / np.where(norm > 0, norm, 1.0), 1.0)[:, None]
+        stopped = ~converged & (norm < 1e-15)
+        for j in np.flatnonzero(stopped):
+            out[i[j]] = (best[i[j]], bool(best_size[i[j]] <= 1e-11 * scale))
+        active[i[converged | stopped]] = False
+        angle = np.linalg.norm(step, axis=1)
+        moved = np.where(angle > 0, np.sin(angle) / np.where(angle > 0, angle, 1.0), 0.0)
+        u[i] = np.where((angle > 0)[:, None], st.u * np.cos(angle)[:, None] + step * moved[:, None], st.u)
+    for j in np.flatnonzero(active):
+        out[j] = (best[j], bool(best_size[j] <= 1e-11 * scale))
+    return out
 
 
 def symmetric_newton(poly: Polyhedron, u0, s, scale: float, group, iterations: int = 40):
@@ -223,37 +274,51 @@ def poincare_hopf_sum(points: list[Critical]) -> int:
     return total
 
 
-def descend(poly: Polyhedron, u0, s, scale: float, direction: int = 1, iterations: int = 200):
-    """Follow the potential down (*direction* = 1) or up (-1) from *u0* by saddle-free Newton steps
+def descend_all(poly: Polyhedron, starts, directions, s, scale: float, iterations: int = 200) -> list:
+    """Follow the potential down (*directions* 1) or up (-1) from every start by saddle-free Newton steps
     ``-direction * sum (v . g) / |lambda| v`` (``|lambda|`` floored, steps capped), then polish by
-    :func:`newton`: from a point just off a saddle along its unstable (stable) direction this reaches
-    the minimum (maximum) that the saddle's separatrix leads to, however close to the saddle it is."""
-    u = np.asarray(u0, dtype=float)
-    u = u / np.linalg.norm(u)
+    :func:`newton_all`: from a point just off a saddle along its unstable (stable) direction this reaches
+    the minimum (maximum) that the saddle's separatrix leads to, however close to the saddle it is.  The
+    floating states of all the starts are evaluated together (:func:`symfloat.solver.edgewise.states`)."""
+    u = np.array(starts, dtype=float).reshape(-1, 3)
+    u /= np.linalg.norm(u, axis=1)[:, None]
+    sign = np.asarray(directions, dtype=float)
     floor = 1e-4 * scale
+    active = np.ones(len(u), dtype=bool)
     for _ in range(iterations):
-        loc = local(poly, u, s)
-        g = loc.gradient
-        if np.linalg.norm(g) <= 1e-9 * scale:
+        i = np.flatnonzero(active)
+        if not len(i):
             break
-        w, vecs = np.linalg.eigh(loc.hessian)
-        step2 = -direction * sum(np.dot(v, g) / max(abs(lam), floor) * v for lam, v in zip(w, vecs.T))
-        step = loc.basis @ step2
-        norm = float(np.linalg.norm(step))
-        if norm > 0.1:
-            step *= 0.1 / norm
-        u = tangent_step(loc.u, step)
-    return newton(poly, u, s, scale)
+        st = states(poly, u[i], s)
+        g = np.einsum("mkj,mk->mj", st.basis, st.G - st.B)
+        u[i] = st.u
+        settled = np.linalg.norm(g, axis=1) <= 1e-9 * scale
+        active[i[settled]] = False
+        H = st.tensor / st.volume[:, None, None] - st.potential[:, None, None] * np.eye(2)
+        w, vecs = np.linalg.eigh(H)
+        coef = np.einsum("mkj,mk->mj", vecs, g) / np.maximum(np.abs(w), floor)
+        step = -sign[i, None] * np.einsum("mkj,mj->mk", st.basis, np.einsum("mkj,mj->mk", vecs, coef))
+        norm = np.linalg.norm(step, axis=1)
+        step *= np.where(norm > 0.1, 0.1 / np.where(norm > 0, norm, 1.0), 1.0)[:, None]
+        angle = np.linalg.norm(step, axis=1)
+        moved = np.where(angle > 0, np.sin(angle) / np.where(angle > 0, angle, 1.0), 0.0)
+        go = i[~settled]
+        keep = ~settled
+        u[go] = np.where((angle[keep] > 0)[:, None],
+                         st.u[keep] * np.cos(angle[keep])[:, None] + step[keep] * moved[keep, None], st.u[keep])
+    return newton_all(poly, u, s, scale)
 
 
 def more_seeds(poly: Polyhedron, s, points: list[Critical], group, scale: float,
                grid: int = 20) -> list[np.ndarray]:
     """Seeds for a second search when the index sum fails: the ends of every saddle's separatrices
-    (followed down and up from 1e-3 and 3e-2 rad off the saddle, :func:`descend`); Newton from steps
+    (followed down and up from 1e-3 and 3e-2 rad off the saddle, :func:`descend_all`); Newton from steps
     of 1e-3 ... 3e-2 rad along the softer direction of every point whose Hessian is nearly singular
     (a branch born there lies close by); and the local minima of ``|grad U|`` on a grid of
-    ``grid x grid`` points over the octant (where the gradient is small, a critical point is near)."""
-    seeds = []
+    ``grid x grid`` points over the octant (where the gradient is small, a critical point is near).
+    The descents, the Newton runs and the grid are each evaluated all at once (:func:`descend_all`,
+    :func:`newton_all`)."""
+    descents, directions, softs, order = [], [], [], []
     for c in points:
         if c.ring:
             continue
@@ -262,15 +327,21 @@ def more_seeds(poly: Polyhedron, s, points: list[Critical], group, scale: float,
             for delta in (1e-3, 3e-2):
                 for sign in (1, -1):
                     if lam < 0 < max(values) or lam > 0 > min(values):
-                        seeds.append(descend(poly, tangent_step(c.u, sign * delta * v), s, scale,
-                                             1 if lam < 0 else -1)[0].u)
+                        descents.append(tangent_step(c.u, sign * delta * v))
+                        directions.append(1 if lam < 0 else -1)
+                        order.append(("descent", len(descents) - 1))
         soft = vectors[int(np.argmin(np.abs(values)))]
         if min(abs(values)) < 1e-2 * scale:
             for delta in (1e-3, 3e-3, 1e-2, 3e-2):
                 for sign in (1, -1):
-                    seeds.append(newton(poly, tangent_step(c.u, sign * delta * soft), s, scale)[0].u)
+                    softs.append(tangent_step(c.u, sign * delta * soft))
+                    order.append(("soft", len(softs) - 1))
+    ends = {"descent": descend_all(poly, descents, directions, s, scale) if descents else [],
+            "soft": newton_all(poly, softs, s, scale) if softs else []}
+    seeds = [ends[kind][k][0].u for kind, k in order]
     patch = np.array(sphere_seeds(grid, math.pi / 2, grid))
-    size = np.array([float(np.linalg.norm(local(poly, u, s).gradient)) for u in patch])
+    st = states(poly, patch, s)
+    size = np.linalg.norm(np.einsum("mkj,mk->mj", st.basis, st.G - st.B), axis=1)
     close = patch @ patch.T >= math.cos(1.5 * math.pi / 2 / grid)
     np.fill_diagonal(close, False)
     for i in range(len(patch)):
@@ -404,8 +475,7 @@ def family_copies(shape: str, points, group, tol: float) -> int:
 def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps: int = 30) -> list[Critical]:
     """Every symmetry class of critical points reached by Newton from *seeds*, sorted by potential."""
     found: list[Critical] = []
-    for seed in seeds:
-        loc, ok = newton(poly, seed, s, scale)
+    for loc, ok in newton_all(poly, seeds, s, scale):
         if not ok:
             continue
         pairs = _tangent_eigen(loc)
@@ -456,8 +526,19 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
 
 
 def distinct_seeds(seeds, group) -> list[np.ndarray]:
-    """One seed per symmetry class (seeds in one class lead to one class of critical points)."""
-    return list({tuple(np.round(representative(u, group), 9)): u for u in seeds}.values())
+    """One seed per symmetry class (seeds in one class lead to one class of critical points); the same
+    seeds and group give the same choice, kept for the last ones asked (every scene of a body asks again)."""
+    seeds, group = np.asarray(seeds, dtype=float), np.asarray(group, dtype=float)
+    kept = _distinct(seeds.tobytes(), group.tobytes(), len(group))
+    return [seeds[k].copy() for k in kept]
+
+
+@functools.lru_cache(maxsize=16)
+def _distinct(seeds: bytes, group: bytes, order: int) -> tuple:
+    """The indices of :func:`distinct_seeds` (seeds and group as float64 bytes)."""
+    seeds = np.frombuffer(seeds).reshape(-1, 3)
+    group = list(np.frombuffer(group).reshape(order, 3, 3))
+    return tuple({tuple(np.round(representative(u, group), 9)): k for k, u in enumerate(seeds)}.values())
 
 
 def sphere_seeds(theta_steps: int, phi_max: float, phi_steps: int) -> list[np.ndarray]:

@@ -36,7 +36,8 @@ __all__ = ["Local", "local", "tangent_step", "waterplane_polygon"]
 @dataclass(frozen=True)
 class Local:
     """``u`` (unit), potential ``U``, the waterplane ``basis`` (3x2, columns e1, e2),
-    ``gradient`` and ``hessian`` in that basis (2 and 2x2), the floating ``state``."""
+    ``gradient`` and ``hessian`` in that basis (2 and 2x2), the floating ``state`` (None from the
+    batched search, :func:`symfloat.solver.critical.newton_all`)."""
     u: np.ndarray
     U: float
     basis: np.ndarray

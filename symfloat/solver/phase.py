@@ -353,7 +353,13 @@ def _fold_windows(poly, group, scale, solution, sa, sb) -> list:
         # a little back from the fold, where the two branches that meet there are apart
         side = s - math.copysign(min(1e-4, abs(s - sa) / 2), sb - sa)
         here, ok = newton(poly, u, side, scale)
-        for loc in _partners(poly, group, here.u if ok else u, side, scale):
+        # Newton's method from the fold lands on either branch that meets there (to the last bits of u): where
+        # the continued one is not stable, the other one it may land on is a candidate too
+        other = ok and e.stability != "stable" and not same_class(here.u, u, group, 1e-6)
+        candidates = ([here] if other else []) + _partners(poly, group, here.u if ok else u, side, scale)
+        for k, loc in enumerate(candidates):
+            if any(same_class(loc.u, o.u, group, 1e-6) for o in candidates[:k]):
+                continue
             # stable by the predicate the bisection uses (a point of a ring, flat along it to rounding, is not)
             kind = position_label(loc.u, "isolated")
             if _tracked_stable(poly, group, loc.u, side, kind, "isolated", scale)[0]:

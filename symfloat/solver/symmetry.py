@@ -98,5 +98,5 @@ def same_class(u, v, group, tol: float = 1e-7) -> bool:
 def representative(u, group) -> np.ndarray:
     """One member of the orbit of *u*, chosen the same way for every member: the image with the
     largest ``(z, x, y)`` after rounding to 9 decimals (ties broken by the unrounded values)."""
-    images = [g @ np.asarray(u, dtype=float) for g in group]
-    return max(images, key=lambda v: (round(v[2], 9), round(v[0], 9), round(v[1], 9), v[2], v[0], v[1]))
+    images = (np.asarray(group) @ np.asarray(u, dtype=float)).tolist()        # Python floats: round() is cheap
+    return np.array(max(images, key=lambda v: (round(v[2], 9), round(v[0], 9), round(v[1], 9), v[2], v[0], v[1])))
