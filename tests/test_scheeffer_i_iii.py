@@ -82,28 +82,35 @@ def test_verified_displays_carry_two_witness_records(report):
     assert thin == []
 
 
+def _witness(d, name):
+    return next(w for w in d.witnesses if w.name == name)
+
+
 def test_small_angle_limit_of_a_body_not_prismatic_at_the_waterline(loaded):
     # Section III ("für den allgemeinen Körper", (16)): the triangular prism with apex down, section
     # (0,0), (1,2), (-1,2), draught 9/5: T1/V1 - e1 = (2 (9/5)^3/12)/(81/25) - (4/3 - 6/5) = 3/10 - 2/15
-    # = 1/6, recomputed here by hand; the righting arm of the clipped heeled body, extrapolated to phi -> 0,
-    # must give the same.
-    mod = loaded[1]
+    # = 1/6, recomputed here by hand; the righting arm of the clipped heeled body, extrapolated to phi -> 0
+    # (the witness library's limit), must give the same.
+    d, mod = loaded
+    w = _witness(d, "righting-arm-limit")
+    fifty = next(m for m in w.methods if m.dps == 50)
     case = next(c for c in mod.SMALL if "9/5" in c.label)
     with mpmath.workdps(50):
-        value = mod.small_angle(case, 50, "m", 1)
-        assert abs(value - mpmath.mpf(1) / 6) < mpmath.mpf(10) ** -40
+        assert abs(w.measure(case, fifty) - mpmath.mpf(1) / 6) < mpmath.mpf(10) ** -40
     case = next(c for c in mod.SMALL if "draught 1 " in c.label)    # T1/V1 - e1 = 1/6 - 2/3 = -1/2
     with mpmath.workdps(50):
-        assert abs(mod.small_angle(case, 50, "m", 1) + mpmath.mpf(1) / 2) < mpmath.mpf(10) ** -40
+        assert abs(w.measure(case, fifty) + mpmath.mpf(1) / 2) < mpmath.mpf(10) ** -40
 
 
 def test_axis_passes_through_the_centroid(loaded):
     # II: the tilted plane of the trapezoid prism P1 = 2, P2 = 1, H = 2 (tg phi = 1/2) meets the old one
     # at the centroid s = H (P1 + 2 P2) / (3 (P1 + P2)) = 8/9, found here from the clipping alone.
-    mod = loaded[1]
+    d, mod = loaded
+    w = _witness(d, "axis-position")
+    fifty = next(m for m in w.methods if m.dps == 50)
     case = next(c for c in mod.TRAP if "P1=2, P2=1" in c.label)
     with mpmath.workdps(50):
-        assert abs(mod.trapezoid_tilt(case, 50)["xO"] - mpmath.mpf(8) / 9) < mpmath.mpf(10) ** -40
+        assert abs(w.measure(case, fifty) - mpmath.mpf(8) / 9) < mpmath.mpf(10) ** -40
 
 
 def test_a_mutated_coefficient_of_12_is_refuted(loaded):

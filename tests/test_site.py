@@ -265,7 +265,7 @@ def test_every_page_in_headless_chromium(site):
             assert not _visible_tex(page), (name, _visible_tex(page))
         assert not errors, errors[:5]
         # the pictures of the derivations load: the browser decoded each one (its natural width)
-        for name, count in (("figures.html", 2), ("scheeffer-ix-grid.html", 1)):
+        for name, count in (("figures.html", 3), ("scheeffer-ix-grid.html", 1)):
             page.goto((site / name).as_uri(), wait_until="load")
             widths = page.evaluate("Array.from(document.images).map(i => [i.getAttribute('src'), i.naturalWidth])")
             assert len(widths) == count and all(w > 0 for _, w in widths), (name, widths)
