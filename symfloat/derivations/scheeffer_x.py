@@ -537,7 +537,7 @@ d.quote("118-form", "X", r"$$\int x y \, d f - \int x y \, d f = 0$$", reading=(
 d.quote("173", "(173)", r"$$\int x y \cdot d f + \int x y \, d f = 0 \quad (173)$$",
         reading=(Me / k3, P + P1), note="the first condition: the moment of the dry part, over the tilt",
         condition=COND, symbols={r"\int x y \cdot d f": (P, "the first sum, over G B H: P by (174)"),
-                                 r"\int x y \, d f": (P1, "the second, over L D M with both axes turned: P_1 by (175)")})
+                                 r"\int x y \, d f": (P1, "the second, over L D M, both axes turned: P_1 (175)")})
 d.quote("174", "(174)",
         r"$$\int x y \, d f = \frac{h^3 (\cos \omega - \sin \omega)}{24 \sin \omega \cdot \cos^2 \omega} \cdot "
         r"\left\{ 2 a \cos \omega - \varrho (\cos \omega + \sin \omega) \right\} \quad (174)$$",
