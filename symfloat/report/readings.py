@@ -278,6 +278,11 @@ def compare(derivation, printed) -> dict:
     fid = derivation.formula_id(printed)
     row = {"formula": fid, "locator": printed.locator, "excerpt": printed.excerpt,
            "erratum": printed.erratum is not None}
+    declared = [f"`{tex}` is {sp.sstr(target)}: {why}" for tex, target, why in printed.symbols]
+    declared += [f"condition: {printed.condition}"] * bool(printed.condition)
+    declared += [f"not compared: {printed.not_compared}"] * bool(printed.not_compared)
+    if declared:
+        row["declared"] = declared
     hand = _hand_rows(printed.reading) if printed.reading is not None else None
     names = {canonical(s.name) for r in (hand if isinstance(hand, list) else ()) for m in r for s in m.free_symbols}
     rules: set[str] = set()
@@ -409,6 +414,14 @@ def readings_markdown(rows) -> str:
     for r in differences(rows):
         out.append(f"- `{r['formula']}` ({r['locator']}): {r['detail']}  ")
         out.append(f"  print: `{one_line(r['excerpt'], 140)}`")
+    if not differences(rows):
+        out.append("None.")
+    out += ["", "## Declared differences", "",
+            "What the quotes declare (`symbols=`, `condition=`, `not_compared=`), with their reasons, and the status",
+            "of the comparison under the declaration.", ""]
+    for r in rows:
+        if r.get("declared"):
+            out.append(f"- `{r['formula']}` ({r['locator']}, {r['status']}): " + "; ".join(r["declared"]))
     out += ["", "## Rules", "", "| rule | meaning | quotes |", "|---|---|---:|"]
     used = Counter(rule for r in rows for rule in r.get("rules", ()))
     for name, meaning in {**RULES, **MATCH_RULES}.items():
