@@ -112,6 +112,57 @@ def test_context_index_maps_a_printed_letter_to_the_derivations_symbol():
     assert row["status"] == "agrees" and "context-index" in row["rules"]
 
 
+def test_a_declared_symbol_binds_a_printed_letter_and_nothing_else():
+    # the print's alpha is the module's phi: accepted only when declared, with a reason
+    declared = compare(D, Printed("x", "probe", EXCERPT, reading=(xs, r_ + sp.tan(phi) / 2),
+                                  symbols=(("\\alpha", phi, "the text's alpha is the module's phi"),)))
+    assert declared["status"] == "agrees" and "declared-symbol" in declared["rules"]
+    # the binding does not hide a changed factor, and a binding to a letter the print lacks fails
+    assert compare(D, Printed("x", "probe", EXCERPT, reading=(xs, r_ + sp.tan(phi)),
+                              symbols=(("\\alpha", phi, "why"),)))["status"] == "differs"
+    stale = compare(D, Printed("x", "probe", EXCERPT, reading=(xs, r_ + sp.tan(al) / 2),
+                               symbols=(("\\beta", al, "why"),)))
+    assert stale["status"] == "differs" and "not in the print" in stale["detail"]
+    with pytest.raises(ValueError):
+        Printed("x", "probe", EXCERPT, reading=(xs, r_), symbols=(("\\alpha", phi, ""),))     # no reason
+
+
+def test_a_declared_condition_compares_its_left_side():
+    # Scheeffer (45): "... = 0" is a condition; the hand reading names the quantity and writes it out
+    tex = r"$$\frac{1}{2} (T_x - T_y) \sin 2 \omega + \int_1 x y \cdot d f \cdot \cos 2 \omega = 0 \quad (45)$$"
+    d = Derivation(id="probe45", source="scheeffer", title="probe", locator="probe")
+    Tx, Ty, J, om, I = sp.symbols("T_x T_y J omega I_uv")
+    binding = ((r"\int_1 x y \cdot d f", J, "J is int_1 x y df"),)
+
+    def status(right, condition="the equilibrium condition"):
+        return compare(d, Printed("45", "probe", tex, reading=(I, right), symbols=binding, condition=condition))
+
+    right = (Tx - Ty) * sp.sin(2 * om) / 2 + J * sp.cos(2 * om)
+    assert status(right)["status"] == "agrees" and "condition" in status(right)["rules"]
+    assert status(right, condition="")["status"] == "differs"              # undeclared: 0 is not the sum
+    assert status((Tx - Ty) * sp.sin(2 * om) + J * sp.cos(2 * om))["status"] == "differs"   # a lost 1/2
+
+
+def test_a_declared_assignment_is_not_compared():
+    row = compare(D, Printed("x", "probe", EXCERPT, reading=(xs, r_), not_compared="an assignment"))
+    assert row["status"] == "not-compared" and row["detail"] == "declared: an assignment"
+
+
+def test_the_same_integral_text_twice_is_two_integrals():
+    # Scheeffer X: the two sums run over two triangles the prose names; they do not cancel
+    (members, _), = read(r"\int x y \, d f - \int x y \, d f = 0").rows
+    assert members[0] != 0 and len(members[0].free_symbols) == 2
+
+
+def test_printed_numbers_agree_to_their_printed_digits():
+    d = Derivation(id="probe-ex2", source="scheeffer", title="probe", locator="probe")
+    quote = r"\sqrt{0,6667} = 0,8165"
+    exact = (sp.sqrt(sp.Rational(2, 3)), sp.Rational("0.8165"))
+    row = compare(d, Printed("ex2", "probe", quote, reading=exact, tolerance=sp.Rational(1, 20000)))
+    assert row["status"] == "agrees" and "printed-digits" in row["rules"]
+    assert compare(d, Printed("ex2", "probe", quote, reading=exact))["status"] == "differs"    # no tolerance
+
+
 # ---- the record ------------------------------------------------------------------------------------
 @pytest.fixture(scope="module")
 def rows():

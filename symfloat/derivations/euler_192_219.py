@@ -196,13 +196,14 @@ d.quote("strip-moment", "§202", r"$\frac{PM^3 \cdot Pp}{3}$",
         reading=(sp.Integral(Pp * w ** 2, (w, 0, PM)), PM ** 3 * Pp / 3),
         note=claim("the particle Pp·dw at distance w from AB, times w², integrated up to M, gives PM³·Pp/3, "
                    "so ∫(PM³+PN³)Pp/3 is the sum of the particles times their squared distances from AB."))
+VOL = "the volume V of §201 (the transcription writes it v here)"
 d.quote("stability-I", "§203", r"$M(\frac{I}{v} + b)$",
-        reading=(Slo, Mw * (Iw / V + h)),
+        reading=(Slo, Mw * (Iw / V + h)), symbols={"v": (V, VOL)},
         note=claim("with I the moment of the waterplane about the longitudinal axis, the stability about it "
                    "is M(I/V + b). The transcription prints v for V and only the + of §201's ±: read as the "
                    "case of §201 with G below B (b counted positive downwards)."))
 d.quote("stability-K", "§203", r"$M(\frac{K}{v} + b)$",
-        reading=(SKlo, Mw * (Kw / V + h)),
+        reading=(SKlo, Mw * (Kw / V + h)), symbols={"v": (V, VOL)},
         note=claim("the stability about the latitudinal axis EF is M(K/V + b)."))
 
 # ================================================================ §205–206: oblique axis, generic figure

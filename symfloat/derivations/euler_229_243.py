@@ -790,7 +790,8 @@ d.step("stability-AB-G-below", Eq(SABp, M * (Iw / V + OG)), "lemma", result=SABp
        uses=(E192 + "stability-definition", E192 + "metacentric-height-G-below"))
 d.quote("stability-AB", "§239", r"$AB = M (\frac{EF^2 \cdot D}{\mu v} - OG)$",
         reading=(SAB, M * (EF ** 2 * Dw / (mu * V) - OG)),
-        note=claim("the stability about AB is M(EF²D/(μV) − OG) (v read as V)."))
+        note=claim("the stability about AB is M(EF²D/(μV) − OG) (v read as V)."),
+        symbols={"v": (V, "the volume V of §238 (the transcription writes it v, as it writes ν)")})
 d.quote("stability-EF", "§239", r"$= M (\frac{AB^2 \cdot D}{v \mu} - OG)$",
         reading=(SEF, M * (AB ** 2 * Dw / (V * mu) - OG)),
         erratum=Erratum("transcription", "medium", r"= M (\frac{AB^2 \cdot D}{\nu V} - OG)",
@@ -800,7 +801,9 @@ d.quote("stability-EF", "§239", r"$= M (\frac{AB^2 \cdot D}{v \mu} - OG)$",
         note=claim("the stability about EF is M(AB²D/(νV) − OG)."))
 d.quote("stability-G-below", "§239", r"$- OG$ scribi deberet $+ OG$",
         reading=(SABp, M * (EF ** 2 * Dw / (mu * V) + OG)),
-        note=claim("with G below O, −OG becomes +OG (read for the axis AB)."))
+        note=claim("with G below O, −OG becomes +OG (read for the axis AB)."),
+        not_compared="an instruction (−OG is to be written +OG in the formula before); the reading is that formula "
+                     "so changed")
 d.quote("stability-AB-241", "§241", r"$= M \left(\frac{EF^2.D}{\nu v} - OG \right)$",
         reading=(SAB, M * (EF ** 2 * Dw / (nu * V) - OG)),
         erratum=Erratum("transcription", "low", r"= M \left(\frac{EF^2.D}{\mu V} - OG \right)",

@@ -176,19 +176,21 @@ d.quote("m3", "§4 ship displacement centroid",
         r"$$m''' = x''' v''' = \frac{8m^2}{3} \left\{ \frac{e+g}{2} + 2f \right\} + \frac{4m^2}{3} "
         r"\left\{ \frac{g}{2} + f \right\}.$$",
         reading=(M3, x3 * v3, m3_v))
+XBIG = ("the print names the distance of the centroid from ABC X and writes x for it in the final formula; the module "
+        "keeps the final formula's x (its X is the prismatoid's, §1/§3)")
 d.quote("moment-theorem", "§4 ship displacement centroid",
         r"$M = XV = x'v' + x''v'' + x'''v'''$",
-        reading=(M, XS * V, x1 * v1 + x2 * v2 + x3 * v3))
+        reading=(M, XS * V, x1 * v1 + x2 * v2 + x3 * v3), symbols={"X": (XS, XBIG)})
 d.quote("moment-1", "§4 ship displacement centroid",
         r"$$XV = \frac{m^2}{3} \left\{ 2c + 4b + 2c + 2e + 8d + 2e + 4d + 4e + 4g + 16f + 2g + 4f \right\}$$",
-        reading=Eq(XS * V, xv_1))
+        reading=Eq(XS * V, xv_1), symbols={"X": (XS, XBIG)})
 d.quote("moment-2", "§4 ship displacement centroid",
         r"$$XV = \frac{m^2}{3} \left\{ 4b + 4c + 12d + 8e + 20f + 6g \right\}.$$",
-        reading=Eq(XS * V, xv_2))
+        reading=Eq(XS * V, xv_2), symbols={"X": (XS, XBIG)})
 d.quote("moment-3", "§4 ship displacement centroid",
         r"$$XV = \frac{m^2}{3} \left\{ a \times 0 + 4b \times 1 + 2c \times 2 + 4d \times 3 + 2e \times 4 + "
         r"4f \times 5 + g \times 6 \right\}$$",
-        reading=Eq(XS * V, xv_3))
+        reading=Eq(XS * V, xv_3), symbols={"X": (XS, XBIG)})
 d.quote("centroid", "§4 ship displacement centroid",
         r"$$x = \frac{m}{3} \left\{ \frac{a \times 0 + 4b \times 1 + 2c \times 2 + 4d \times 3 + 2e \times 4 + "
         r"4f \times 5 + g \times 6}{a + 4b + 2c + 4d + 2e + 4f + g} \right\}.$$",

@@ -351,7 +351,9 @@ d.quote("28", "(28)", r"$$M_2 = M_3 - M_4 = 0 \text{ sein.} \quad (28)$$", readi
         note="the '= 0' is the equilibrium condition imposed, read with (32)")
 d.quote("element-moment", "IV (29)",
         r"$$df \cdot z \cdot v_3 = u_3 \cdot v_3 \cdot df \cdot \operatorname{tg} \varphi_1$$",
-        reading=(dfs * sp.Integral(1, (z, 0, u3 * t1)) * v3, u3 * v3 * dfs * t1))
+        reading=(dfs * sp.Integral(1, (z, 0, u3 * t1)) * v3, u3 * v3 * dfs * t1),
+        symbols={"z": (u3 * t1, "z is the height of the column over df, u_3 tg phi_1 (the text before); the "
+                                "reading integrates dz over it")})
 u4, v4 = sp.Symbol("u_4", positive=True), sp.Symbol("v_4", real=True)
 d.domain.update({u4: (sp.Rational(1, 10), 1), v4: (-1, 1)})
 d.quote("column-height", "IV (29)", r"$z = u_3 \cdot \operatorname{tg} \varphi_1$",
@@ -361,7 +363,9 @@ d.quote("column-4-moment", "IV (30)", r"$u_4 v_4 \cdot df \cdot \operatorname{tg
         note="its moment about the vertical plane through OS across EF (lever v_4)")
 d.quote("column-4-height", "IV (30)", r"$z df = u_4 \cdot \operatorname{tg} \varphi_1 \cdot df$",
         reading=(dfs * sp.Integral(1, (z, 0, u4 * t1)), u4 * t1 * dfs),
-        note="the emerged column over df at the distance u_4 from EF")
+        note="the emerged column over df at the distance u_4 from EF",
+        symbols={"z": (u4 * t1, "z is the height of the emerged column over df, u_4 tg phi_1 (the formula itself); "
+                                "the reading integrates dz over it")})
 d.quote("29", "(29)", r"$$M_3 = \int_3 u_3 v_3 \cdot df \cdot \operatorname{tg} \varphi_1, \quad (29)$$",
         reading=(M3, P3 * t1))
 d.quote("30-M4", "IV (30)", r"$$M_4 = \int_4 u_4 v_4 \cdot df \cdot \operatorname{tg} \varphi_1$$",
@@ -489,10 +493,12 @@ d.quote("T-smaller", "(43)",
         note="Duhamel's T is the smallest moment of II about axes through its centroid; by (40) T(mu) lies between "
              "its values T_m, T_m^1 at mu = 0, 90 deg")
 d.quote("T-Tm", "(43)", r"Es ist aber für  $T = T_m$  (s. 42)", reading=(Tm, T1 / c ** 3),
-        note="the reference: (42) gives T_m = T_1/cos^3 phi_1, the value inserted next")
+        note="the reference: (42) gives T_m = T_1/cos^3 phi_1, the value inserted next",
+        not_compared="an assignment (T is set to T_m in (43)); the reading states the value (42) gives T_m")
 d.quote("43-Tm", "(43)", r"$$T - \frac{T_1}{\cos \varphi_1} = \frac{T_1}{\cos^3 \varphi_1} - \frac{T_1}{\cos "
                          r"\varphi_1} = \frac{T_1}{\cos \varphi_1} \cdot \text{tg}^2 \varphi_1",
-        reading=(Tm - V1 * e2, T1 / c ** 3 - T1 / c, T1 / c * t1 ** 2), note="T = T_m")
+        reading=(Tm - T1 / c, T1 / c ** 3 - T1 / c, T1 / c * t1 ** 2), note="T = T_m",
+        symbols={"T": (Tm, "für T = T_m, the sentence before")})
 d.quote("43-always", "(43)", r"\text{ d. i. } > 0, \text{ also die Bedingung 43 stets erfüllt.}",
         reading=(sp.sign(Tm - V1 * e2), 1))
 d.quote("43a", "(43a)", r"$$\frac{T_1^1}{\cos \varphi_2} - \frac{T_1}{\cos \varphi_2} > 0",
@@ -507,7 +513,8 @@ d.quote("43a", "(43a)", r"$$\frac{T_1^1}{\cos \varphi_2} - \frac{T_1}{\cos \varp
 d.quote("43a-conclusion", "(43a)", r"\text{ oder } T_1^1 > T_1 \quad (43a)$$",
         reading=(Tm1 - V1 * e2, (T11 - T1) / c), note="cos phi_1 > 0: the condition is T_1^1 > T_1")
 d.quote("T-Tm1", "(43a)", r"Es bleibt also nur ( $T = T_m^1$  gesetzt)", reading=(Tm1, T11 / c),
-        note="(42): T_m^1 = T_1^1/cos phi_1, inserted into (43) gives (43a)")
+        note="(42): T_m^1 = T_1^1/cos phi_1, inserted into (43) gives (43a)",
+        not_compared="an assignment (T is set to T_m^1 in (43)); the reading states the value (42) gives T_m^1")
 d.quote("claim-43a", "IV (43a)",
         "„Die schiefe Gleichgewichtslage eines geraden Prismas (im I. Drehungsgebiet) ist also stabil, wenn das "
         "Trägheitsmoment des I. Wasserschnitts für die Drehungsachse kleiner ist als für die darauf senkrechte "
@@ -521,16 +528,22 @@ d.quote("44", "(44)", r"$$\begin{aligned} u &= y \sin \omega + x \cos \omega \\ 
         reading=(sp.Matrix([Uw, Vw]), sp.Matrix([y * sp.sin(om) + x * sp.cos(om), y * sp.cos(om) - x * sp.sin(om)])))
 d.quote("uv", "(44)", r"$$u \cdot v = (y^2 - x^2) \sin \omega \cos \omega + x y (\cos^2 \omega - \sin^2 \omega)$$",
         reading=(Uw * Vw, (y ** 2 - x ** 2) * sp.sin(om) * sp.cos(om) + x * y * (sp.cos(om) ** 2 - sp.sin(om) ** 2)))
+TXY = "the print names int_1 y^2 df = T_x, int_1 x^2 df = T_y (the next line); J is int_1 x y df"
 d.quote("second-condition", "(45)",
         r"$$\left( \int_1 y^2 \cdot d f - \int_1 x^2 \cdot d f \right) \sin \omega \cdot \cos \omega + \int_1 x y "
         r"\cdot d f \cdot (\cos^2 \omega - \sin^2 \omega) = 0$$",
         reading=(Iuv, (Tx - Ty) * sp.sin(om) * sp.cos(om) + J * (sp.cos(om) ** 2 - sp.sin(om) ** 2)),
-        note="the left side is int_1 u v df; '= 0' is the condition (32)")
+        note="the left side is int_1 u v df; '= 0' is the condition (32)",
+        condition="'= 0' is the condition (32) imposed on int_1 u v df, which the reading writes out",
+        symbols={r"\int_1 y^2 \cdot d f": (Tx, TXY), r"\int_1 x^2 \cdot d f": (Ty, TXY),
+                 r"\int_1 x y \cdot d f": (J, TXY)})
 d.quote("Tx-Ty", "(45)", r"$$\int_1 y^2 \cdot d f = T_x \cdot \quad \int_1 x^2 \cdot d f = T_y$$",
         reading=(sp.Matrix([Tx, Ty]), sp.Matrix([Tx, Ty])),
         note="the print names T_x and T_y (a definition, trivial as a claim); the stray dot after T_x is the scan's")
 d.quote("45", "(45)", r"$$\frac{1}{2} (T_x - T_y) \sin 2 \omega + \int_1 x y \cdot d f \cdot \cos 2 \omega = 0 "
-                      r"\quad (45)$$", reading=(Iuv, (Tx - Ty) * sp.sin(2 * om) / 2 + J * sp.cos(2 * om)))
+                      r"\quad (45)$$", reading=(Iuv, (Tx - Ty) * sp.sin(2 * om) / 2 + J * sp.cos(2 * om)),
+        condition="'= 0' is the condition (32) imposed on int_1 u v df, which the reading writes out",
+        symbols={r"\int_1 x y \cdot d f": (J, TXY)})
 d.quote("xy-zero", "V", r"$$\int_1 x y \cdot d f = 0$$", reading=(Jsym, 0))
 lhs46 = 2 * sp.Subs(Iuv, J, Jsym)
 d.quote("46", "(46)", r"$$(T_x - T_y) \sin 2 \omega = 0 \quad (46)$$",

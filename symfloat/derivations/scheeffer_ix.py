@@ -744,11 +744,13 @@ d.quote("162a", "(162a)",
                         corrected_reading=(sp.Matrix([rho - n, n - rho]), sp.Matrix([-F2s / (2 * sg ** 2), F2s / (2 * sg ** 2)]))),
         note="VI: one stable equilibrium iff n < rho, VII: none")
 HGz = (sp.sqrt(2 * a * b * sg * sp.tan(phi)) / sp.sin(phi)).subs(phi, phi_z)
-d.quote("HG", "IX.B", r"Es ist aber  $H G = \frac{x}{\sin \varphi_2}$", reading=(HG, X / sp.sin(phi)))
+XLEG = "the print's x is the leg X of the dry triangle (step leg); the module's x is the free leg before it is solved"
+d.quote("HG", "IX.B", r"Es ist aber  $H G = \frac{x}{\sin \varphi_2}$", reading=(HG, X / sp.sin(phi)),
+        symbols={"H G": (HG, "the segment HG, printed with a space (Fig. 22)"), "x": (X, XLEG)})
 d.quote("cot", "IX.B", r"$$\text{oder, da (aus 134) } \cotg \varphi_2 = \frac{2 a b (1 - s)}{x^2},$$",
-        reading=(sp.cot(phi), 2 * a * b * (1 - s) / X ** 2))
+        reading=(sp.cot(phi), 2 * a * b * (1 - s) / X ** 2), symbols={"x": (X, XLEG)})
 d.quote("sin2", "IX.B", r"$$\frac{1}{\sin^2 \varphi_2} = 1 + \frac{4 a^2 b^2 (1 - s)^2}{x^4}, \text{ also}$$",
-        reading=(1 / sp.sin(phi) ** 2, 1 + 4 * a ** 2 * b ** 2 * (1 - s) ** 2 / X ** 4))
+        reading=(1 / sp.sin(phi) ** 2, 1 + 4 * a ** 2 * b ** 2 * (1 - s) ** 2 / X ** 4), symbols={"x": (X, XLEG)})
 d.quote("HG2", "IX.B", r"$$\frac{x^2}{\sin^2 \varphi_2} = x^2 + \frac{4 a^2 b^2 (1 - s)^2}{x^2} \text{ folgt,}$$",
         reading=(HG ** 2, X ** 2 / sp.sin(phi) ** 2, X ** 2 + 4 * a ** 2 * b ** 2 * (1 - s) ** 2 / X ** 2))
 d.quote("163", "(163)",

@@ -275,8 +275,9 @@ d.quote("ex2-from-58", "Example 2", r"Auflösung. In 58 ist  $\frac{a}{b} = 1$  
         note="the last line of (58) at a = b is the margin (2 s / b) h_A of the equilateral prism: the reference is "
              "right, and its root sqrt(2/3) follows")
 d.quote("ex2-two-thirds", "Example 2", r"\sqrt{\frac{2}{3}} = \sqrt{0,6667}",
-        reading=(sp.Rational(2, 3), sp.Rational("0.6667")), tolerance=PRINTED_DIGITS,
-        note="the radicand (2 s_+ - 1)^2 at a = b")
+        reading=(sp.sqrt(sp.Rational(2, 3)), sp.sqrt(sp.Rational("0.6667"))), tolerance=sp.Rational(1, 20000),
+        note="the root 2 s_+ - 1 at a = b, as the roots of the radicand (2 s_+ - 1)^2 and its four printed digits: "
+             "the tolerance is half a unit of the radicand's last digit (the root moves by less)")
 d.quote("ex2-root-value", "Example 2", r"\sqrt{0,6667} = 0,8165",
         reading=(2 * s_hi_1 - 1, sp.Rational("0.8165")), tolerance=PRINTED_DIGITS,
         note="the root is 2 s_+ - 1 at a = b")
@@ -1234,8 +1235,8 @@ cw("example-2-upper", "density of zero metacentric height, a = b (clipped prism)
    lambda c, dps: ex2(dps)[0])
 cw("example-2-lower", "the same, lower", ("ex2-lower",), one, lambda c, dps: ex2(dps)[1])
 cw("example-2-root", "2 s_+ - 1 from the measured density", ("ex2-root-value",), one, lambda c, dps: 2 * ex2(dps)[0] - 1)
-cw("example-2-radicand", "(2 s_+ - 1)^2 from the measured density", ("ex2-two-thirds",), one,
-   lambda c, dps: (2 * ex2(dps)[0] - 1) ** 2)
+cw("example-2-radicand", "2 s_+ - 1, the root of the radicand, from the measured density", ("ex2-two-thirds",), one,
+   lambda c, dps: 2 * ex2(dps)[0] - 1)
 
 
 def ex3_angle(dps):

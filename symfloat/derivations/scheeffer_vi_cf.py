@@ -542,13 +542,16 @@ d.step("largest-ordinate-n", Eq(umn, r * sp.cos(pi / n - om)), "definition", res
             "the angle 90 deg - pi/n + omega from the axis; for 0 <= omega <= 2 pi/n it is the farthest vertex "
             "there (checked on the clipped polygons)")
 
+PSI = "VI.E reuses phi for the angle of the axis L with OQ; the module's varphi is the tilt, so that angle is psi"
 d.quote("triangle-axis", "VI.E", r"$$T = T_y \cdot \sin^2 \varphi + T_x \cdot \cos^2 \varphi$$",
-        reading=(TL, Ty * sp.sin(psi) ** 2 + Tx * sp.cos(psi) ** 2), note="the text's phi is psi here")
+        reading=(TL, Ty * sp.sin(psi) ** 2 + Tx * sp.cos(psi) ** 2), note="the text's phi is psi here",
+        symbols={r"\varphi": (psi, PSI)})
 d.quote("triangle-symmetric", "VI.E",
         "(da O Q eine Symmetrieachse ist und folglich die Summe  $\\int x y d f$ , bezogen auf die Dreiecksfläche, "
         "Null ist).", reading=(over_triangle(X * Y), 0))
 d.quote("83", "(83)", r"$$T = \frac{1}{2} (T_x + T_y) + \frac{1}{2} (T_x - T_y) \cos 2 \varphi. \quad (83)$$",
-        reading=(TL, (Tx + Ty) / 2 + (Tx - Ty) / 2 * sp.cos(2 * psi)), note="the text's phi is psi here")
+        reading=(TL, (Tx + Ty) / 2 + (Tx - Ty) / 2 * sp.cos(2 * psi)), note="the text's phi is psi here",
+        symbols={r"\varphi": (psi, PSI)})
 d.quote("84", "(84)",
         r"$$T_1 = \frac{n}{2} (T_x + T_y) + \frac{1}{2} (T_x - T_y) \left( \cos 2 \alpha + \cos 4 \alpha + \dots "
         r"\right) \quad (84)$$", reading=(T1n, n / 2 * (Tx + Ty) + (Tx - Ty) / 2 * Sc))

@@ -265,6 +265,8 @@ d.step("first-contact-check", ((b * (1 - s) / um - b * s / um1).subs(s, sst), 0)
 EQN = "the '= 0' is the equilibrium condition imposed; read as the identity it is imposed on"
 
 
+AT_EQ = ("read at an equilibrium: the reading inserts the equilibrium's x_0 (103b) and the derived V_3, z_3, e_3, "
+         "so that its members are no longer the printed ones")
 X0E = (T * (1 + tg2 ** 2 / 2) - F1 * b ** 2 * (1 - s) / 2) / (F * xs)   # the x_0 at which (103b) vanishes
 
 
@@ -302,7 +304,8 @@ d.quote("95-volume-element", "VII", r"Das Volumen dieses Körperelements ist  $z
                                                                     "-x tg phi_2 to the upper base z = 0")
 d.quote("95-moment", "VII", r"stat. Moment des ganzen Körperteils  $\int x y df \cdot \operatorname{tg} \varphi_2$",
         reading=(My, Pxy * tg2))
-d.quote("95a", "(95a)", r"$$\int x y \cdot df = 0 \quad (95a)$$", reading=(Pxy, My / tg2), note=EQN)
+d.quote("95a", "(95a)", r"$$\int x y \cdot df = 0 \quad (95a)$$", reading=(Pxy, My / tg2), note=EQN, condition=EQN,
+        symbols={r"\int x y \cdot df": (Pxy, "int x y df over the dry part A G H C D (the next line) is P_xy")})
 d.quote("96", "(96)", r"$$\int x y df = \int_s (x_0 + x) y df + \int_2 x y df. \quad (96)$$",
         reading=(Pxy, Pwh + I2))
 d.quote("96-split", "VII", r"$$\int_s (x_0 + x) y df = x_0 \cdot \int_s y df + \int_s x y df.$$",
@@ -358,7 +361,9 @@ d.quote("second-condition-words", "VII",
 d.quote("99-transformation", "VII",
         r"$$M_3 = V_3 \cdot \overline{S_3 O_3} \cdot \cos \varphi_2 - V_3 \cdot \overline{S O_3} \cdot \sin \varphi_2,$$",
         reading=(M3, V3 * (X3 / V3 - x0) * c2 - V3 * (b / 2 - Z3 / V3) * sn2),
-        note="S_3 O_3 = x_3 - x_0, S O_3 = b/2 - z_3 (the next lines)")
+        note="S_3 O_3 = x_3 - x_0, S O_3 = b/2 - z_3 (the next lines)",
+        symbols={r"\overline{S_3 O_3}": (X3 / V3 - x0, "the segment S_3 O_3 is x_3 - x_0 (the next lines)"),
+                 r"\overline{S O_3}": (b / 2 - Z3 / V3, "the segment S O_3 is b/2 - z_3 (the next lines)")})
 d.quote("stability-direction", "VII",
         "dass das für  $M_3 = 0$  eintretende Gleichgewicht ein (wenigstens für die Drehungsachse) stabiles sein "
         "muss, wenn  $M_3$  mit wachsendem  $\\varphi$  aus dem Negativen durch Null in's Positive übergeht",
@@ -483,7 +488,8 @@ d.quote("112-mn", "VII", r"$$m = \frac{x_s}{\cos \varphi_2} \quad n = y_s \quad 
         reading=(sp.Matrix([m_, n_, F2]), sp.Matrix([xs / c2, YS, F / c2])),
         note="y_s here is the printed one, -y_s of the frame (assumptions)")
 d.quote("112", "(112)", r"$$\text{folglich (106) } k = \frac{x_s y_s \cdot F}{\cos^2 \varphi_2} \quad (112)$$",
-        reading=(k_, xs * YS * F / c2 ** 2))
+        reading=(k_, xs * YS * F / c2 ** 2),
+        symbols={"y_s": (YS, "Fig. 19 is lost: the printed y_s is -y_s of the module's frame (assumptions)")})
 d.quote("113", "(113)", r"$$T_1 = T - F \cdot x_s^2 \quad T_1^1 = T^1 - F \cdot y_s^2 \quad (113)$$",
         reading=(sp.Matrix([T1, T11]), sp.Matrix([T - F * xs ** 2, Tp - F * YS ** 2])))
 d.quote("114", "(114)", r"$$T_m \cos \varphi_2 - V_3 e_3 \cos \varphi_2 > 0. \quad (114)$$",
@@ -493,13 +499,16 @@ d.quote("115", "(115)", r"$$T_m \cdot \cos \varphi_2 = \frac{1}{2} \left( \frac{
         r"\varphi_2}} \quad (115)$$",
         reading=(Tm * c2, (T1 / c2 ** 2 + T11) / 2 - sp.sqrt((T1 / c2 ** 2 - T11) ** 2 + (2 * F * xs * YS) ** 2 / c2 ** 2) / 2))
 d.quote("116-geometry", "VII", r"$$V_3 e_3 \cdot \cos \varphi_2 = V_3 \cdot \left( \frac{b}{2} - z_3 \right)$$",
-        reading=(at_eq(V3 * e3 * c2), at_eq(V3 * b / 2 - Z3)), note="at an equilibrium (M_3 = 0, x_0 from (103b))")
+        reading=(at_eq(V3 * e3 * c2), at_eq(V3 * b / 2 - Z3)), note="at an equilibrium (M_3 = 0, x_0 from (103b))",
+        not_compared=AT_EQ)
 d.quote("116-pre", "VII", r"$$V_3 e_3 \cos \varphi_2 = \frac{1}{2} \left\{ F_1 b^2 (1 - s) - T \operatorname{tg}^2 \varphi_2 "
         r"\right\}$$", reading=(V3 * b / 2 - Z3, (F1 * b ** 2 * (1 - s) - T * tg2 ** 2) / 2),
-        note="its right side is V_3 (b/2 - z_3) by (100), (101)")
+        note="its right side is V_3 (b/2 - z_3) by (100), (101)",
+        symbols={"e_3": ((V3 * b / 2 - Z3) / (V3 * c2), "V_3 e_3 cos phi_2 is read as V_3 (b/2 - z_3), the line "
+                                                       "before (an equilibrium's), which the witness measures")})
 d.quote("116", "(116)", r"$$V_3 e_3 \cos \varphi_2 = T - F x_s \cdot x_0 \quad (116)$$",
         reading=(at_eq(V3 * e3 * c2), at_eq(T - F * xs * x0)),
-        note="at an equilibrium ('nach 102 b)' means (103b))")
+        note="at an equilibrium ('nach 102 b)' means (103b))", not_compared=AT_EQ)
 L117 = (T1 / c2 ** 2 + T11 + 2 * F * xs * x0 - 2 * T
         - sp.sqrt((T1 / c2 ** 2 - T11) ** 2 + (2 * F * xs * YS) ** 2 / c2 ** 2))
 d.quote("117", "(117)", r"$$\left. \begin{aligned} & \frac{T_1}{\cos^2 \varphi_2} + T_1^1 + 2 F x_s x_0 - 2 T \\ & - "
@@ -562,7 +571,9 @@ d.step("M3-3", Eq(M3c, hor3.dot(MS3c)), "definition", result=M3c)
 Q3 = ((T - tau) * (1 + tg3 ** 2 / 2) - (x0 + x01 + b * tg3) * f * xs1 - V3c * b / 2 - V3c * x0 / tg3)
 d.step("M3-3-sin", (M3c / sn3, Q3), "algebra", uses=("M3-3", "moment-x-3", "moment-z-3"))
 
-d.quote("118", "(118)", r"$$\int x y d f - \int^1 x y d f = 0 \quad (118)$$", reading=(Pxy - Pf, My3 / tg3), note=EQN)
+d.quote("118", "(118)", r"$$\int x y d f - \int^1 x y d f = 0 \quad (118)$$", reading=(Pxy - Pf, My3 / tg3), note=EQN,
+        condition=EQN, symbols={r"\int x y d f": (Pxy, "int x y df over the dry part of the upper base is P_xy"),
+                                r"\int^1 x y d f": (Pf, "int^1 x y df over the dry part f of the lower base is P_f")})
 d.quote("119", "(119)", r"$$M_3 = V_3 (x_3 - x_0) \cos \varphi_3 - V_3 \left( \frac{b}{2} - z_3 \right) \sin \varphi_3 = 0 "
         r"\quad (119)$$", reading=(M3c, (X3c - V3c * x0) * c3 - (V3c * b / 2 - Z3c) * sn3), note=EQN)
 d.quote("120", "(120)", r"$$\left. \begin{aligned} V_3 z_3 &= \frac{1}{2} (T - \tau) \operatorname{tg}^2 \varphi_3 - b "
@@ -623,7 +634,9 @@ d.quote("122", "(122)", r"$$\left. \begin{aligned} (T - \tau) \operatorname{tg} 
         r"&= b \\ (F x_s - f x_s^1) \operatorname{tg} \varphi_3 &= F_1 b (1 - s) \end{aligned} \right\} \quad (122)$$",
         reading=(sp.Matrix([L122, (x0 + x01) * tg3 - b, (F * xs - f * xs1) * tg3 - F1 * b * (1 - s)]),
                  sp.Matrix([M3c * tg3 / sn3, 0, 0])),
-        note="each equation as left minus right side; the first is tan phi_3 M_3/sin phi_3 (zero at equilibrium)")
+        note="each equation as left minus right side; the first is tan phi_3 M_3/sin phi_3 (zero at equilibrium)",
+        condition="each equation is a condition of equilibrium, read as left minus right side; the first is the "
+                  "identity tan phi_3 M_3/sin phi_3 it is imposed on")
 
 
 # ==== witnesses ======================================================================================================

@@ -529,10 +529,15 @@ d.step("second-moment", (M2, k * (-Sq + Tb), k * P), "algebra", uses=("third-squ
             "axis, columns of height -k xi over the dry part of the top face")
 d.quote("98", "X (98)", r"$$\int x y \, d f = 0$$", reading=(M2 / k, P),
         note="the first condition (98): B below G needs this moment to vanish, i.e. P = 0")
+COND = ("the first condition of equilibrium imposed on the moment of the dry part over the tilt, P + P_1 (the two "
+        "integrals run over the triangles G B H and L D M the prose names)")
 d.quote("118-form", "X", r"$$\int x y \, d f - \int x y \, d f = 0$$", reading=(Me / k3, P + P1),
-        note="with the x axes of the two triangles opposite the second integral is -P_1; (173) turns its y axis too")
+        note="with the x axes of the two triangles opposite the second integral is -P_1; (173) turns its y axis too",
+        condition=COND)
 d.quote("173", "(173)", r"$$\int x y \cdot d f + \int x y \, d f = 0 \quad (173)$$",
-        reading=(Me / k3, P + P1), note="the first condition: the moment of the dry part, over the tilt")
+        reading=(Me / k3, P + P1), note="the first condition: the moment of the dry part, over the tilt",
+        condition=COND, symbols={r"\int x y \cdot d f": (P, "the first sum, over G B H: P by (174)"),
+                                 r"\int x y \, d f": (P1, "the second, over L D M, both axes turned: P_1 (175)")})
 d.quote("174", "(174)",
         r"$$\int x y \, d f = \frac{h^3 (\cos \omega - \sin \omega)}{24 \sin \omega \cdot \cos^2 \omega} \cdot "
         r"\left\{ 2 a \cos \omega - \varrho (\cos \omega + \sin \omega) \right\} \quad (174)$$",

@@ -65,6 +65,13 @@ class Printed:
     (half a unit of the last printed digit); a correction uses the same one.
     Write it as :data:`PRINTED_DIGITS` and :meth:`Derivation.quote` takes it
     from the decimal numbers of the excerpt (:func:`printed_tolerance`).
+
+    Three declarations for the check of the reading against the automatic one
+    (:mod:`symfloat.report.readings`), each with its reason: ``symbols``, triples
+    ``(printed TeX, the derivation's symbol or expression, why)`` (the print's
+    ``x`` is the module's ``X``); ``condition``, why the printed ``A = B`` is a
+    condition imposed, read as the identity it is imposed on; ``not_compared``,
+    why the automatic reading cannot be compared (an assignment, an instruction).
     """
 
     name: str
@@ -76,10 +83,16 @@ class Printed:
     lost: str = ""
     note: str = ""
     tolerance: object = None
+    symbols: tuple = ()
+    condition: str = ""
+    not_compared: str = ""
 
     def __post_init__(self):
         if self.reading is None and not (self.unreadable or self.lost):
             raise ValueError(f"printed {self.name!r}: no reading, and no reason why")
+        if any(len(b) != 3 or not (isinstance(b[0], str) and b[0] and isinstance(b[2], str) and b[2])
+               for b in self.symbols):
+            raise ValueError(f"printed {self.name!r}: a declared symbol is (printed TeX, symbol or expression, why)")
         if self.unreadable and self.erratum is None:
             raise ValueError(f"printed {self.name!r}: unreadable print needs an erratum")
 
@@ -175,15 +188,18 @@ class Derivation:
         return s
 
     def quote(self, name, locator, excerpt, reading=None, erratum=None, unreadable="", lost="", note="",
-              tolerance=None):
-        """Append a printed formula; the excerpt must be verbatim in the source."""
+              tolerance=None, symbols=None, condition="", not_compared=""):
+        """Append a printed formula; the excerpt must be verbatim in the source.  *symbols* maps a printed
+        letter (TeX, as in the excerpt) to ``(the derivation's symbol or expression, why)``."""
         if not get_source(self.source).contains(excerpt):
             raise ValueError(f"{self.id}/{name}: excerpt is not verbatim in {self.source}: {excerpt[:60]!r}")
         if any(p.name == name for p in self.printed):
             raise ValueError(f"duplicate printed name {name!r} in {self.id}")
         if tolerance == PRINTED_DIGITS:
             tolerance = printed_tolerance(excerpt, reading)
-        p = Printed(name, locator, excerpt, reading, erratum, unreadable, lost, note, tolerance)
+        bound = tuple((tex, *target) for tex, target in (symbols or {}).items())
+        p = Printed(name, locator, excerpt, reading, erratum, unreadable, lost, note, tolerance, bound, condition,
+                    not_compared)
         self.printed.append(p)
         return p
 

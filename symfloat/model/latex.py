@@ -43,7 +43,9 @@ RULES = {
                     "math of an excerpt are dropped",
     "list": "formulas separated by a comma (or by words between dollars) are read as rows",
     "integral-as-name": "an integral is read as one symbol named by its text; it matches a hand symbol of "
-                        "that name, and a member holding another is not compared",
+                        "that name, and a member holding another is not compared; the same text twice in one "
+                        "formula is two integrals (their domains are named in the prose: Scheeffer's "
+                        "\\int x y df - \\int x y df = 0 over two triangles), the second named with #2",
     "element-integral": "an integral without a differential (Euler's \\int w \\cdot u^2) runs to the next sign "
                         "or relation",
     "layout": "dollars, \\displaystyle, \\left, \\right, spacing, an equation tag (78c), words in \\text "
@@ -134,6 +136,7 @@ class _Parser:
     """Recursive descent over the tokens; names of several letters are taken from *names*."""
 
     def __init__(self, tokens, names: frozenset[str], rules: set[str], segments: set[str]):
+        self.integrals = {}             # how often each integral's text occurred in the formula so far
         self.t = [tok for tok in tokens if tok[0] != "space"]
         self.spaced = self._spacing(tokens)
         self.i = 0
@@ -459,15 +462,20 @@ class _Parser:
             kind, v = self.peek()
             if depth == 0 and v == "d" and self.peek(1)[0] == "letter" and len(parts) > 1:
                 parts += [self.take()[1], self.take()[1]]
-                return sp.Symbol(canonical("".join(parts)))
+                return self._integral_symbol(canonical("".join(parts)))
             if kind == "end" or depth == 0 and (v in RELATIONS or v in ("+", "-", r"\pm", ")", "}", r"\}")
                                                 and len(parts) > 1 and parts[-1] not in ("^", "_")):
                 if len(parts) < 2 or depth:
                     raise Unreadable("an integral without its integrand")
                 self.rules.add("element-integral")
-                return sp.Symbol(canonical("".join(parts)))
+                return self._integral_symbol(canonical("".join(parts)))
             depth += (v in ("{", "(")) - (v in ("}", ")"))
             parts.append(self.take()[1])
+
+    def _integral_symbol(self, name):
+        """The integral named *name*; a repeat of the same text in the formula is another integral."""
+        self.integrals[name] = self.integrals.get(name, 0) + 1
+        return sp.Symbol(name if self.integrals[name] == 1 else f"{name}#{self.integrals[name]}")
 
     def braced(self):
         if self.peek()[1] != "{":

@@ -13,7 +13,10 @@ hand symbol named like a formula, ``tan^2varphi_1``, stands for that formula); a
 which a member is not compared: ``values-substituted`` (the hand member shares no symbol with the
 printed one: a worked example's numbers, coordinates for a segment) and ``member-named`` (one side
 is a lone symbol naming what the other writes out).  A chain that opens with a relation is compared
-from its end (``implied-left-side``).
+from its end (``implied-left-side``).  A quote may declare more, each with its reason: ``symbols``
+(``declared-symbol``: a printed letter is the derivation's symbol or expression), ``condition`` (the
+printed equation is a condition, read as the identity it is imposed on), ``not_compared`` (an
+assignment or instruction; the row is ``not-compared`` and says why).
 
 Statuses: ``agrees``; ``differs`` (a member differs and the printed formula has no erratum: a silent
 repair or a misreading, to be looked at); ``erratum`` (differs, and the formula's erratum declares
@@ -55,6 +58,14 @@ MATCH_RULES = {
     "member-named": "one side of a member is a lone symbol naming the quantity the other side writes out "
                     "(the hand reading's T_m for the printed expression, or the printed F for its value); "
                     "that member is not compared",
+    "printed-digits": "a quote of printed numbers (with a tolerance) agrees to its printed precision, as the "
+                      "engine checks it (\\sqrt{0,6667} = 0,8165 read as sqrt(2/3) = 0,8165)",
+    "declared-symbol": "the quote binds a printed letter, segment or integral to the derivation's symbol or "
+                       "expression, with its reason (`symbols=`: the print's x is the module's X); the binding "
+                       "is substituted into the print, and one the print does not hold fails",
+    "condition": "the quote declares the printed A = B a condition imposed (an equilibrium's '= 0'), read as "
+                 "the identity it is imposed on (`condition=`): A - B is compared with the first hand member "
+                 "written in the print's symbols (the others name the quantity), else with the last",
 }
 _WORDS = re.compile(r"(tan|sin|cos|cot|tg|varphi|varrho|vartheta|phi|rho|theta|omega|alpha|beta|mu|psi|sigma)")
 _POINTS = 3             # seeded rational points per member
@@ -110,7 +121,8 @@ def _match_symbols(auto_symbols, hand_symbols, rules):
     """Map each printed (auto) symbol to the hand symbol it stands for: the same canonical name, else the
     one hand symbol that extends it (longest printed names first)."""
     by_name = {canonical(h.name): h for h in hand_symbols}
-    mapping = {a: by_name[a.name] for a in auto_symbols if a.name in by_name}
+    mapping = {a: a if a in hand_symbols else by_name[a.name] for a in auto_symbols
+               if a in hand_symbols or a.name in by_name}
     taken = set(mapping.values())
     for a in sorted(set(auto_symbols) - set(mapping), key=lambda a: -len(a.name)):
         indexed = [h for n, h in by_name.items() if h not in taken and _extends(a.name, n)]
@@ -132,8 +144,11 @@ def _values(symbols, seed: str, domain: dict):
         yield point
 
 
-def _equal(a, b, seed: str, domain: dict) -> bool | None:
-    """Whether *a* and *b* agree at seeded rational points (None when no point evaluates)."""
+def _equal(a, b, seed: str, domain: dict, tolerance=None) -> bool | None:
+    """Whether *a* and *b* agree at seeded rational points (None when no point evaluates); closed numbers
+    of a quote of printed numbers agree to its *tolerance* (``printed-digits``)."""
+    if tolerance is not None and not (a.free_symbols or b.free_symbols):
+        return bool(abs(sp.N(a - b, _DPS)) <= tolerance)
     symbols = sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name)
     checked = 0
     for point in _values(symbols, seed, domain):
@@ -181,8 +196,48 @@ def _math_parts(source: str, excerpt: str, rules: set) -> list[str]:
     return parts
 
 
-def _compare_row(fid, k, auto_members, hand, mapping, hand_symbols, domain, rules, problems, segments):
-    if auto_members[0] is None:
+def _bind(auto_rows, printed, names, rules, problems):
+    """The printed rows with the quote's declared symbols substituted (``declared-symbol``); a binding
+    whose printed TeX the print does not hold is a problem."""
+    for tex, target, _ in printed.symbols:
+        try:
+            (key,), _ = read(tex, names).rows[0]
+        except (Unreadable, ValueError):
+            problems.append(f"declared symbol {tex!r} is not one printed quantity")
+            continue
+        found = False
+        for members_, _ in auto_rows:
+            for j, m in enumerate(members_):
+                if m is None:
+                    continue
+                new = m.xreplace({key: target}) if isinstance(key, sp.Symbol) else m.subs(key, target)
+                found |= new != m
+                members_[j] = new
+        if not found:
+            problems.append(f"declared symbol {tex!r} is not in the print")
+        rules.add("declared-symbol")
+
+
+def _as_condition(auto_members, hand, mapping, where, problems):
+    """A declared condition ``A = B``: the printed ``A - B`` and the hand member it is compared with."""
+    if len(auto_members) != 2 or auto_members[0] is None:
+        problems.append(f"{where}: a condition is declared, but the print is not one equation A = B")
+        return None
+    printed = {mapping.get(s, s) for m in auto_members for s in m.free_symbols}
+    h = next((m for m in hand if m.free_symbols <= printed), hand[-1])   # the others name the quantity
+    return [auto_members[0] - auto_members[1]], [h]
+
+
+def _compare_row(fid, k, auto_members, hand, mapping, hand_symbols, domain, rules, problems, segments,
+                 condition=False, tolerance=None):
+    if condition:
+        pair = _as_condition(auto_members, hand, mapping,
+                             f"row {k + 1}" if k is not None else "the row", problems)
+        if pair is None:
+            return
+        auto_members, hand = pair
+        rules.add("condition")
+    elif auto_members[0] is None:
         auto_members = auto_members[1:]
         hand = hand[-len(auto_members):]
     elif len(auto_members) == 1 and len(hand) > 1:
@@ -209,7 +264,9 @@ def _compare_row(fid, k, auto_members, hand, mapping, hand_symbols, domain, rule
             problems.append(f"{where}: printed {sp.sstr(a)} has {', '.join(sorted(map(str, unknown)))}, "
                             f"hand {sp.sstr(h)}")
             continue
-        same = _equal(a, h, f"{fid}/{k}/{j}", domain)
+        same = _equal(a, h, f"{fid}/{k}/{j}", domain, tolerance)
+        if tolerance is not None and same and not (a.free_symbols or h.free_symbols) and a != h:
+            rules.add("printed-digits")
         if same is False:
             problems.append(f"{where}: printed {sp.sstr(a)} ≠ hand {sp.sstr(h)}")
         elif same is None:
@@ -221,6 +278,11 @@ def compare(derivation, printed) -> dict:
     fid = derivation.formula_id(printed)
     row = {"formula": fid, "locator": printed.locator, "excerpt": printed.excerpt,
            "erratum": printed.erratum is not None}
+    declared = [f"`{tex}` is {sp.sstr(target)}: {why}" for tex, target, why in printed.symbols]
+    declared += [f"condition: {printed.condition}"] * bool(printed.condition)
+    declared += [f"not compared: {printed.not_compared}"] * bool(printed.not_compared)
+    if declared:
+        row["declared"] = declared
     hand = _hand_rows(printed.reading) if printed.reading is not None else None
     names = {canonical(s.name) for r in (hand if isinstance(hand, list) else ()) for m in r for s in m.free_symbols}
     rules: set[str] = set()
@@ -240,6 +302,8 @@ def compare(derivation, printed) -> dict:
     if len(auto_rows) > 1:
         rules.add("list")
     row["rules"] = sorted(rules)
+    if printed.not_compared:
+        return {**row, "status": "not-compared", "detail": "declared: " + printed.not_compared}
     if hand is None:
         return {**row, "status": "not-compared", "detail": "the hand reading is not a chain of equal members"
                 if printed.reading is not None else "no hand reading (lost or unreadable print)"}
@@ -253,7 +317,8 @@ def compare(derivation, printed) -> dict:
         if any(r != "=" for r in relations):
             return {**row, "status": "not-compared", "detail": "the print states " + " ".join(relations)}
         n = len(auto_members) - (auto_members[0] is None)
-        if n != len(h) and not (n == 1 and len(h) > 1) and not (auto_members[0] is None and n < len(h)):
+        if n != len(h) and not (n == 1 and len(h) > 1) and not (auto_members[0] is None and n < len(h)) \
+                and not printed.condition:
             return {**row, "status": "not-compared",
                     "detail": f"{len(auto_members)} printed members against {len(h)} in the hand reading"}
     hand_symbols = set().union(*(m.free_symbols for r in hand for m in r))
@@ -262,12 +327,13 @@ def compare(derivation, printed) -> dict:
         rules.add("symbol-for-formula")
         hand = [[m.subs(formulas) for m in r] for r in hand]
         hand_symbols = set().union(*(m.free_symbols for r in hand for m in r))
+    problems: list[str] = []
+    _bind(auto_rows, printed, frozenset(names), rules, problems)
     auto_symbols = set().union(*(m.free_symbols for r, _ in auto_rows for m in r if m is not None))
     mapping = _match_symbols(auto_symbols, hand_symbols, rules)
-    problems: list[str] = []
     for k, ((auto_members, _), h) in enumerate(zip(auto_rows, hand)):
         _compare_row(fid, k if len(hand) > 1 else None, auto_members, h, mapping, hand_symbols,
-                     derivation.domain, rules, problems, segments)
+                     derivation.domain, rules, problems, segments, bool(printed.condition), printed.tolerance)
     row["rules"] = sorted(rules)
     if not problems:
         return {**row, "status": "agrees", "detail": ""}
@@ -329,6 +395,12 @@ def readings_markdown(rows) -> str:
            "Generated by `symfloat coverage --readings --write`. Every quoted excerpt is read by the allow-list",
            "reader `symfloat/model/latex.py` (no code is evaluated) and, where the hand reading is a chain of",
            "equal members, compared with it member by member at seeded rational points.", "",
+           "A difference must be fixed or declared. Declared with the quote, each with its reason (see",
+           "`docs/writing-derivations.md`): an erratum; `symbols=` (a printed letter, segment or integral is the",
+           "derivation's symbol or expression: rule `declared-symbol`); `condition=` (the printed equation is a",
+           "condition imposed, read as the identity it is imposed on: rule `condition`); `not_compared=` (an",
+           "assignment or instruction, not a formula the reading restates: status *not compared*, with the reason).",
+           "The other rules below are the reader's and the comparison's own normalisations.", "",
            "| source | quotes | claims in words | formulas read automatically | agree | differ (no erratum) |"
            " differ (erratum) | not compared | unread |", "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for s in [*dict.fromkeys(r["source"] for r in rows), None]:
@@ -342,6 +414,14 @@ def readings_markdown(rows) -> str:
     for r in differences(rows):
         out.append(f"- `{r['formula']}` ({r['locator']}): {r['detail']}  ")
         out.append(f"  print: `{one_line(r['excerpt'], 140)}`")
+    if not differences(rows):
+        out.append("None.")
+    out += ["", "## Declared differences", "",
+            "What the quotes declare (`symbols=`, `condition=`, `not_compared=`), with their reasons, and the status",
+            "of the comparison under the declaration.", ""]
+    for r in rows:
+        if r.get("declared"):
+            out.append(f"- `{r['formula']}` ({r['locator']}, {r['status']}): " + "; ".join(r["declared"]))
     out += ["", "## Rules", "", "| rule | meaning | quotes |", "|---|---|---:|"]
     used = Counter(rule for r in rows for rule in r.get("rules", ()))
     for name, meaning in {**RULES, **MATCH_RULES}.items():
