@@ -266,9 +266,15 @@ def more_seeds(poly: Polyhedron, s, points: list[Critical], group, scale: float,
                                              1 if lam < 0 else -1)[0].u)
         soft = vectors[int(np.argmin(np.abs(values)))]
         if min(abs(values)) < 1e-2 * scale:
-            for delta in (1e-3, 3e-3, 1e-2, 3e-2):
-                for sign in (1, -1):
-                    seeds.append(newton(poly, tangent_step(c.u, sign * delta * soft), s, scale)[0].u)
+            # an isotropic point (on an axis of order >= 3) has no soft direction of its own: a ring born
+            # there opens in every direction, and where it breaks, its pieces and the positions between them
+            # lie off the eigenvectors: every 30 degrees, out to 0.1 rad
+            isotropic = abs(values[0] - values[1]) <= 1e-9 * scale
+            directions = [math.cos(a) * vectors[0] + math.sin(a) * vectors[1]
+                          for a in np.arange(12) * math.pi / 6] if isotropic else [soft, -soft]
+            for delta in (1e-3, 3e-3, 1e-2, 3e-2) + ((6e-2, 1e-1) if isotropic else ()):
+                for v in directions:
+                    seeds.append(newton(poly, tangent_step(c.u, delta * v), s, scale)[0].u)
     patch = np.array(sphere_seeds(grid, math.pi / 2, grid))
     size = np.array([float(np.linalg.norm(local(poly, u, s).gradient)) for u in patch])
     close = patch @ patch.T >= math.cos(1.5 * math.pi / 2 / grid)
