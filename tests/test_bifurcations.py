@@ -149,7 +149,9 @@ def test_cube_window_narrower_than_the_sweep_is_found(sa, sb):
     # the vertex event is a theorem's threshold (to 1e-12); the fold's error is estimated: the fold of (171)
     # by mpmath.findroot at 30 digits (tests/test_scheeffer_x.py, S_FOLD) is its independent witness
     s_fold = 1 - 0.7623092388663755
-    assert x.bracket < 1e-13 and "error estimated" in fold.note and fold.bracket < 1e-13
+    # (the fold's error is twice Newton's last correction, at the rounding of its finite differences: 1e-14 to
+    # 2e-13 depending on the point it starts from; issue 14 asks for 1e-12)
+    assert x.bracket < 1e-13 and "error estimated" in fold.note and fold.bracket < 1e-12
     assert abs(fold.density - (s_fold if sa < 0.5 else 1 - s_fold)) <= fold.bracket
 
 
