@@ -60,8 +60,10 @@ def test_a_missing_equilibrium_is_an_error_not_a_footer(monkeypatch, capsys):
     solve_module = importlib.import_module("symfloat.solver.solve")
     monkeypatch.setattr(solve_module, "more_seeds", lambda *args, **kw: [])
     scene = _box_123_above_s_z("1e-5")
-    with pytest.raises(IndexCheckError, match="index sum of the equilibria found is -2"):
+    with pytest.raises(IndexCheckError, match="index sum of the equilibria found is -2") as failed:
         solve(scene)
+    # the message names the position the missed class is born from (face z up, eigenvalue ~ 150 (s - s_z))
+    assert "next to a bifurcation" in str(failed.value) and "up (0.0, 0.0, 1.0)" in str(failed.value)
     density = f"{float(scene.density):.17g}"        # a decimal within the CLI's 64 characters
     code = main(["scene", "box", "--dims", "1,2,3", "--density", density, "--quiet", "--no-cache"])
     err = capsys.readouterr().err

@@ -253,9 +253,13 @@ def _polyhedral(scene: Scene, seeds, group):
                               f"rounding on the largest circle around it that encloses no other equilibrium) after {len(searches)} searches "
                               f"({'; '.join(searches)}): the Poincaré–Hopf check cannot be made")
     if index not in (None, 2):
+        soft = [c for c, _, _ in classified if min(abs(e) for e in c.eigen) < 1e-2 * scale]
+        near = "; next to a bifurcation (smallest eigenvalue below 1e-2 of the size): " + ", ".join(
+            f"up {tuple(round(float(x), 6) for x in c.u)} x{c.orbit} (eigenvalues "
+            f"{', '.join(f'{float(e):.2e}' for e in c.eigen)})" for c in soft) if soft else ""
         raise IndexCheckError(f"{_name(scene)}: the Poincaré–Hopf index sum of the equilibria found is {index}, "
                               f"not 2, after {len(searches)} searches ({'; '.join(searches)}): an equilibrium is "
-                              f"missing or mis-classified")
+                              f"missing or mis-classified{near}")
     out = []
     for c, stability, evidence in classified:
         loc = local(poly, c.u, s)
