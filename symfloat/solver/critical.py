@@ -251,7 +251,8 @@ def more_seeds(poly: Polyhedron, s, points: list[Critical], group, scale: float,
     """Seeds for a second search when the index sum fails: the ends of every saddle's separatrices
     (followed down and up from 1e-3 and 3e-2 rad off the saddle, :func:`descend`); Newton from steps
     of 1e-3 ... 3e-2 rad along the softer direction of every point whose Hessian is nearly singular
-    (a branch born there lies close by); and the local minima of ``|grad U|`` on a grid of
+    (a branch born there lies close by), of 1e-3 ... 0.1 rad every 30 degrees around such a point with
+    an isotropic Hessian (a ring born there); and the local minima of ``|grad U|`` on a grid of
     ``grid x grid`` points over the octant (where the gradient is small, a critical point is near)."""
     seeds = []
     for c in points:

@@ -222,8 +222,9 @@ def _index_sum(points):
 def _holds(index, points, scale: float = 0.0) -> bool:
     """Whether the index check passes: the sum is 2, or there is a ring (the sum does not apply).  With
     *scale*, also whether no isolated point is nearly degenerate (its smallest eigenvalue below
-    ``SOFT * scale`` but decided: next to a bifurcation, not at it) where a ring of index 0 may be born
-    beside it, which no index sum sees: the search goes on there (soft directions, small gradient)."""
+    ``SOFT * scale`` but decided: next to a bifurcation, not at it) and none on an axis of order >= 3
+    is soft (:func:`_isotropic_soft`), where a ring of index 0 may be born beside it, which no index sum
+    sees: the search goes on there (soft directions, small gradient)."""
     if scale and any(not c.ring and c.index is None and min(abs(e) for e in c.eigen) < SOFT * scale for c in points):
         return False
     if scale and any(not c.ring and _isotropic_soft(c, scale) for c in points):
