@@ -141,6 +141,32 @@ def test_case_tables_count_the_roots_of_f_in_the_second_region():
     assert seen == {0, 1, 2, 3}
 
 
+def test_region2_roots_at_and_next_to_the_triple_root():
+    # at n = 1 the printed F (136) is (z^2 - 2 sigma)(z^2 - 3/2 z + 2 sigma) (expanded by SymPy below); at s = 23/32
+    # (sigma = 9/32) its three positive roots are the triple root 3/4 (np.roots put the middle one 1.5e-8 off, and
+    # `phase box --dims 1,1,4` found the tables' threshold at 0.2812500189990 instead of 9/32)
+    assert sp.expand(M.quartic.subs(M.n, 1) - (M.z ** 2 - 2 * M.sg) * (M.z ** 2 - sp.Rational(3, 2) * M.z + 2 * M.sg)) == 0
+    assert M._region2_roots(23 / 32, 1.0, 3) == [0.75, 0.75, 0.75]
+    # beside it and off n = 1: the roots of F with the float inputs taken exactly (SymPy, 30 digits)
+    for sv, nn in ((23 / 32 + 1e-9, 1.0), (0.73, 1.02), (0.73, 1.0063), (0.9, 3.0)):
+        exact = sorted(float(r) for r in sp.Poly(M.quartic.subs({M.n: sp.Rational(nn), M.sg: 1 - sp.Rational(sv)}),
+                                                  M.z).nroots(n=30) if r.is_real and r > 0)
+        got = M._region2_roots(sv, nn, len(exact))
+        assert len(got) == len(exact) and all(abs(a - b) <= 1e-15 for a, b in zip(got, exact)), (sv, nn, got, exact)
+
+
+def test_the_tables_threshold_of_the_square_section_is_9_32():
+    # the tables' stable set of the long square log (box 1,1,4) changes where its edge-up position does, at
+    # 1 - 23/32 = 9/32 (s < 1/2 read with 1 - s; tests/test_phase_log.py derives 9/32 from GM of the edge-up section)
+    from symfloat.solver.phase import source_thresholds
+    found = [t for t in source_thresholds("box", (1, 1, 4)) if t["derivation"] == "scheeffer-ix"
+             and t["label"] in ("edge up (xy)", "tilted in the x-y plane") and 0.25 < t["value"] < 0.75]
+    assert sorted((t["label"], t["change"]) for t in found) == [
+        ("edge up (xy)", "stable above"), ("edge up (xy)", "stable below"),
+        ("tilted in the x-y plane", "stable above"), ("tilted in the x-y plane", "stable below")]
+    assert all(min(abs(t["value"] - 9 / 32), abs(t["value"] - 23 / 32)) <= 1e-15 for t in found)
+
+
 def test_142_follows_from_143_when_n_at_least_1():
     for s in np.linspace(0.51, 0.99, 99):
         rho = 2 * (1 - s) * (4 * s - 1)

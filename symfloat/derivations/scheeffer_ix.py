@@ -1574,11 +1574,31 @@ def _second_region(sv, nn):
 
 def _region2_roots(sv, nn, k):
     """The k roots of the printed F (136) that the table speaks of: those in [2 sigma, 1], completed by the
-    positive roots nearest that interval if the count differs."""
+    positive roots nearest that interval if the count differs.  At n = 1, F = (z^2 - 2 sigma)(z^2 - 3/2 z +
+    2 sigma) (expand (136)): the roots in closed form (at s = 23/32 the triple root 3/4, which np.roots put
+    1.5e-8 off); else np.roots' roots polished at 40 digits (:func:`_polished_root`)."""
     sig = 1 - sv
-    rts = [r_.real for r_ in np.roots([1, -1.5, 0, 3 * nn * sig, -4 * nn * sig ** 2]) if abs(r_.imag) < 1e-9 and r_.real > 0]
+    if nn == 1:
+        rts = [math.sqrt(2 * sig)] + [0.75 + sign * math.sqrt(0.5625 - 2 * sig) for sign in (-1, 1) if 2 * sig <= 0.5625]
+    else:
+        rts = [_polished_root(r_.real, sv, nn) for r_ in np.roots([1, -1.5, 0, 3 * nn * sig, -4 * nn * sig ** 2])
+               if abs(r_.imag) < 1e-9 and r_.real > 0]
     dist = lambda r_: max(2 * sig - r_, r_ - 1, 0)  # noqa: E731
     return sorted(sorted(rts, key=dist)[:k])
+
+
+def _polished_root(z0, sv, nn, steps=200):
+    """A real root of F (136) near z0 by Newton's method at 40 digits on the float inputs taken exactly
+    (next to a double root float64 Newton stalls about 1e-8 off; there it converges linearly)."""
+    with mpmath.workdps(40):
+        sig, nv, z_ = 1 - mpmath.mpf(sv), mpmath.mpf(nn), mpmath.mpf(z0)
+        for _ in range(steps):
+            f = z_ ** 4 - 1.5 * z_ ** 3 + 3 * nv * sig * z_ - 4 * nv * sig ** 2
+            df = 4 * z_ ** 3 - 4.5 * z_ ** 2 + 3 * nv * sig
+            if f == 0 or df == 0 or abs(f / df) < mpmath.mpf(10) ** -30:
+                break
+            z_ -= f / df
+        return float(z_)
 
 
 def tables_prediction(s, ratio):

@@ -140,7 +140,8 @@ def conditioning_markdown(rows) -> str:
         lines.append(f"| {r.case} | {r.closed_form} | {r.delta:+.0e} | {r.tilt_deg:.6f} | {r.stability} | "
                      f"{r.true_error:.1e} | {r.reported:.1e} | {r.method} | {'yes' if r.bounded else 'NO'} |")
     bounded = sum(r.bounded for r in rows)
-    lines += ["", f"The reported error bounds the true error in {bounded} of {len(rows)} rows.", "", PITCHFORK_THRESHOLDS, ""]
+    lines += ["", f"The reported error bounds the true error in {bounded} of {len(rows)} rows.", "", PITCHFORK_THRESHOLDS, "",
+              RING_SEEDS, "", IX_TRIPLE_ROOT, ""]
     return "\n".join(lines)
 
 
@@ -163,3 +164,34 @@ PITCHFORK_THRESHOLDS = (   # docs/numerics.md section 4: what was wrong next to 
     'in float64 resolves it only to a few 1e-6 rad on the flat potential (at 1e-9: 6e-5 rad, resolved); '
     'the threshold comes from the parent and does not depend on that. What it costs: `symfloat phase box '
     '--dims 1,1,4` (48 densities) about 40 processor-seconds, as before the fix.')
+
+RING_SEEDS = (   # docs/numerics.md section 4: the ring of the long square log's end face (solve's second search)
+    "Rings born from a position on an axis of order ≥ 3 (issue 14): the long square log's ring around its"
+    ' end face, born at 1/2 − √(1/4 − 1/96) = 0.0105275, has radius about 0.048 rad at s = 0.01054 (m² = '
+    '12d(4 − d) − 2, d = 4s), inside the first ring of seeds (9°); its index is 0, so the sum closed '
+    'without it and `scene` exited 0 with no stable ring. A ring of index 0 is seen by no index sum, so '
+    'the search does not wait for one: an isolated point whose two eigenvalues are equal (its Hessian '
+    'isotropic by the symmetry of the axis) and below 1e-2 times the size triggers the second search, '
+    'whose seeds go from it every 30° at 1e-3 … 0.1 rad. Past (96 − √8768)/224 = 0.0105464, where the '
+    "ring's diagonal points reach a bottom vertex, the ring keeps arcs about the faces' directions (to "
+    '(96 − √8704)/256 = 0.0105655), and between them, as in the cube past (3 − √2)/7, a stable class and '
+    'a saddle class on the diagonal mirror live up to a fold at about 0.0105474 (a scan of the gradient '
+    'along the mirror): the scene finds the ring at 0.01054, the arcs with both diagonal classes at '
+    "0.010547 and the arcs at 0.01056 (before: index sum 10, exit 1), each ring's tilt equal to atan m to"
+    ' 1e-9 rad (tests/test_solver_log.py). Where arcs are present the index sum does not apply, so these '
+    'seeds, not the sum, are what finds the diagonal window. How close to the vertex event this stays '
+    'right (densities s and 1 − s, both solved): from 0.0105468, 4e-7 past it, to the fold both sides '
+    'give the arcs and both diagonal classes; nearer, the walk along an arc (steps of 5e-3 rad) crosses '
+    'the gap the diagonal classes open in the ring: at 0.0105465 both sides report the ring only, at 1 − '
+    '0.0105466 the arc takes in the stable diagonal class (exit 0, its dual at 0.0105466 lists it: a '
+    'wrong stable set, not fixed), at 1 − 0.0105467 the index sum is 10 (exit 1, the message names the '
+    'diagonal positions). A sum that still fails names the positions next to a bifurcation (smallest '
+    'eigenvalue below 1e-2 of the size) in its message.')
+
+IX_TRIPLE_ROOT = (   # docs/numerics.md section 4: Scheeffer IX's predictor next to the triple root of (136)
+    "Scheeffer IX's predictor next to its triple root: at n = 1 the printed quartic (136) factors as (z² "
+    '− 2σ)(z² − 3z/2 + 2σ), and at s = 23/32 its three positive roots are the triple root 3/4, which '
+    '`np.roots` returned 1.5e-8 off (a root of multiplicity k is perturbed by the k-th root of the '
+    "rounding), so the tables' threshold of the box 1 × 1 × 4 read 0.2812500189990 instead of 9/32. The "
+    "roots now come from the factors at n = 1 and are polished by Newton's method at 40 digits elsewhere "
+    '(linear convergence at a double root, 200 steps at most): the threshold reads 9/32 to 3e-16.')

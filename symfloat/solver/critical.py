@@ -314,7 +314,8 @@ def more_seeds(poly: Polyhedron, s, points: list[Critical], group, scale: float,
     """Seeds for a second search when the index sum fails: the ends of every saddle's separatrices
     (followed down and up from 1e-3 and 3e-2 rad off the saddle, :func:`descend_all`); Newton from steps
     of 1e-3 ... 3e-2 rad along the softer direction of every point whose Hessian is nearly singular
-    (a branch born there lies close by); and the local minima of ``|grad U|`` on a grid of
+    (a branch born there lies close by), of 1e-3 ... 0.1 rad every 30 degrees around such a point with
+    an isotropic Hessian (a ring born there); and the local minima of ``|grad U|`` on a grid of
     ``grid x grid`` points over the octant (where the gradient is small, a critical point is near).
     The descents, the Newton runs and the grid are each evaluated all at once (:func:`descend_all`,
     :func:`newton_all`)."""
@@ -332,9 +333,15 @@ def more_seeds(poly: Polyhedron, s, points: list[Critical], group, scale: float,
                         order.append(("descent", len(descents) - 1))
         soft = vectors[int(np.argmin(np.abs(values)))]
         if min(abs(values)) < 1e-2 * scale:
-            for delta in (1e-3, 3e-3, 1e-2, 3e-2):
-                for sign in (1, -1):
-                    softs.append(tangent_step(c.u, sign * delta * soft))
+            # an isotropic point (on an axis of order >= 3) has no soft direction of its own: a ring born
+            # there opens in every direction, and where it breaks, its pieces and the positions between them
+            # lie off the eigenvectors: every 30 degrees, out to 0.1 rad
+            isotropic = abs(values[0] - values[1]) <= 1e-9 * scale
+            ways = [math.cos(a) * vectors[0] + math.sin(a) * vectors[1]
+                    for a in np.arange(12) * math.pi / 6] if isotropic else [soft, -soft]
+            for delta in (1e-3, 3e-3, 1e-2, 3e-2) + ((6e-2, 1e-1) if isotropic else ()):
+                for v in ways:
+                    softs.append(tangent_step(c.u, delta * v))
                     order.append(("soft", len(softs) - 1))
     ends = {"descent": descend_all(poly, descents, directions, s, scale) if descents else [],
             "soft": newton_all(poly, softs, s, scale) if softs else []}
