@@ -279,3 +279,33 @@ def test_box_next_to_its_threshold_and_its_dual_agree():
         stable.append(sorted((round(abs(e.up[0]), 9), round(abs(e.up[1]), 9), e.copies)
                              for e in sol.equilibria if e.stability == "stable"))
     assert stable[0] == stable[1] and (0.000013710, 0.0, 4) in stable[0]
+
+
+def test_box_1_3half_1_just_below_1_12_short_arc_is_one_stable_class():
+    # The atlas cell b/a = 3/2, c/a = 1 looks at the printed threshold 1/12 - 1e-6 (Scheeffer VI, (78e) with
+    # a/b = 2/3 for the square prism of base edge a = 1 and side edge b = 3/2: 2 s (3 - 4 s) = 4/9 at
+    # s = 1/12, where the oblique stable position ends).  There the position tilted by phi_1 from y, with
+    # tg phi_1 = sqrt(12 (b/a)^2 s (1 - s) - 2) (78b), is left only on a short arc about each side face's
+    # azimuth, |omega| <= omega_max with sin^2(45 deg + omega_max) = s^2 / (6 s (1 - s) - (a/b)^2) (78d).
+    # The solver found the arc's ends and middle as separate degenerate points and summed -6; the arc is one
+    # class of 8 (4 side faces x 2 ends), index -1, stable across as a family.  Expected values: (78b) and
+    # (78d) evaluated here at 30 digits, independent of the solver's potential.
+    s = Fraction(1, 12) - Fraction(1, 10 ** 6)
+    sol = solve(make_scene("box", s, dims="1,3/2,1"))
+    assert sol.checks["poincare_hopf_index_sum"] == 2 and sol.checks["searches"] == ["seeds"]   # was -6
+    with mpmath.workdps(30):
+        sm = mpmath.mpf(s.numerator) / s.denominator
+        phi_1 = float(mpmath.atan(mpmath.sqrt(12 * mpmath.mpf(9) / 4 * sm * (1 - sm) - 2)))          # (78b)
+        omega = mpmath.asin(mpmath.sqrt(sm ** 2 / (6 * sm * (1 - sm) - mpmath.mpf(4) / 9))) - mpmath.pi / 4
+        half_chord = float(mpmath.sin(phi_1) * mpmath.sin(omega))      # (78d): the arc's end off the mirror
+    arc = [e for e in sol.equilibria if e.up[0] == 0 and 0 < e.up[2] < e.up[1] < 1]
+    assert len(arc) == 2                    # the arc, and the maximum beyond it where the base's edge emerges
+    e = min(arc, key=lambda e: e.potential)
+    assert e.stability == "stable" and e.copies == 8 and e.family == "isolated"
+    assert abs(math.atan2(e.up[2], e.up[1]) - phi_1) <= 1e-8 <= e.error_rad
+    assert e.error_rad == pytest.approx(half_chord, rel=1e-6)           # its extent: the whole arc
+    assert 1e-8 < omega < 2e-4                                          # shorter than a reported family
+    # just above 1/12 no base-free azimuth is left: no equilibrium tilted by about phi_1 from y
+    above = solve(make_scene("box", Fraction(1, 12) + Fraction(1, 10 ** 6), dims="1,3/2,1"))
+    assert above.checks["poincare_hopf_index_sum"] == 2
+    assert not [x for x in above.equilibria if x.stability == "stable" and 0 < x.up[2] < x.up[1] < 1]

@@ -165,3 +165,26 @@ def test_atlas_cell_2_1_holds_its_duality_at_the_closed_forms():
     for value, label in expected:
         assert any(t.label == label and abs(t.density - value) <= t.bracket + 1e-15 for t in diagram.thresholds), \
             (value, label)
+
+
+@pytest.mark.slow
+def test_atlas_cell_3half_1_holds_its_duality_at_the_printed_thresholds():
+    # the cell b/a = 3/2, c/a = 1 (the box 1 x 3/2 x 1: a square prism of base 1, height 3/2, Scheeffer VI c-f):
+    # upright on the 1 x 1 base (face y up) stable while (a/b)^2 = 4/9 > 6 s (1 - s) (78), i.e. below
+    # (1 - sqrt(19/27))/2, where the ring around y is born; the oblique position of (78b) ends at 1/12 (78e:
+    # 2 s (3 - 4 s) = 4/9), where the last of its arcs (78d) shrinks to the side faces' azimuths.  Before, the
+    # look at 1/12 - 1e-6 failed the solver's index sum, and then four points of the ring at 0.91795 (null
+    # eigenvalue 4e-14 to 7e-13, rounding) were taken for stable windows of "tilted (general)" without dual.
+    diagram = phase_diagram("box", "1,3/2,1", densities=ATLAS_SWEEP)
+    assert diagram.duality_ok and diagram.unpaired == []
+    upright = (1 - math.sqrt(19 / 27)) / 2
+    expected = [(upright, "face y up"), (upright, "ring around y"), (1 / 12, "ring around y"),
+                (1 / 12 - 1e-6, "tilted in the y-z plane"),      # the arc, shorter than a family, under its own label
+                (SIDE, "face z up"), (SIDE, "tilted in the x-z plane"), (EDGE, "edge up (xz)"),
+                (EDGE, "tilted in the x-z plane")]
+    expected += [(1 - v, label) for v, label in expected]
+    assert len(diagram.thresholds) == len(expected)
+    assert not [t for t in diagram.thresholds if t.label == "tilted (general)"]
+    for value, label in expected:
+        assert any(t.label == label and abs(t.density - value) <= t.bracket + 1e-12 for t in diagram.thresholds), \
+            (value, label)

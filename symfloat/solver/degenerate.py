@@ -21,7 +21,7 @@ import numpy as np
 
 from .local import local, tangent_step
 
-__all__ = ["symmetric_point", "winding", "degenerate_class"]
+__all__ = ["symmetric_point", "winding", "degenerate_class", "flat_cluster"]
 
 MAX_RADIUS = 3e-2
 NOISE = 1e-12           # relative to the size of the body: a gradient smaller than this is rounding
@@ -89,3 +89,32 @@ def degenerate_class(poly, u, s, scale: float, others) -> tuple[int | None, str,
     if low < centre - floor:
         return turns, "unstable", rho
     return turns, ("stable" if low > centre + floor else "indifferent"), rho
+
+
+def flat_cluster(c, points, group, scale: float, reach: float, flat: float):
+    """The degenerate points of one short flat family around *c* (an arc of equilibria shorter than the
+    solver reports as a family: the arc's ends and its middle, found as separate points): every other
+    degenerate point of *points*, and every copy of *c* or of them, within *reach* radians of *c* whose
+    potential equals c's to ``flat * scale``.  Returns ``(members, centre, extent)``: the points absorbed
+    (not *c*), the most symmetric position within the cluster's extent (:func:`symmetric_point`; the
+    middle of an arc cut by a mirror) and the largest distance from it to a point of the cluster.  A
+    circle around the centre wider than the extent encloses the whole family, and its winding is the
+    family's index; a circle around one of its points cuts the family, where the gradient vanishes."""
+    u = np.asarray(c.u, dtype=float)
+    near = [g @ u for g in group]
+    members = []
+    for o in points:
+        if o is c or abs(o.U - c.U) > flat * scale:
+            continue
+        images = [g @ np.asarray(o.u, dtype=float) for g in group]
+        close = [v for v in images if np.linalg.norm(v - u) <= reach]
+        if close:
+            members.append(o)
+            near += close
+    near = [v for v in near if np.linalg.norm(v - u) <= reach]
+    if len(near) < 2:
+        return [], u, 0.0
+    extent = max(np.linalg.norm(v - u) for v in near)
+    centre = symmetric_point(u, group, 2 * extent)
+    extent = max(float(np.linalg.norm(v - centre)) for v in near)
+    return members, centre, extent

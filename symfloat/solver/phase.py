@@ -27,7 +27,7 @@ import sympy as sp
 
 from ..geometry.floating import box
 from .bodies import make_scene
-from .critical import newton, symmetric_newton
+from .critical import _is_ring, _tangent_eigen, newton, symmetric_newton
 from .solve import body_scale, solve
 from .symmetry import box_group, representative, same_class
 
@@ -360,8 +360,11 @@ def _fold_windows(poly, group, scale, solution, sa, sb) -> list:
         for k, loc in enumerate(candidates):
             if any(same_class(loc.u, o.u, group, 1e-6) for o in candidates[:k]):
                 continue
-            # stable by the predicate the bisection uses (a point of a ring, flat along it to rounding, is not)
+            # stable by the predicate the bisection uses (a point of a ring, flat along it to rounding, is not;
+            # nor one whose null eigenvalue rounding leaves just above zero: the box 1 x 3/2 x 1 at 0.91795)
             kind = position_label(loc.u, "isolated")
+            if _is_ring(poly, loc, _tangent_eigen(loc), side, scale, group):
+                continue
             if _tracked_stable(poly, group, loc.u, side, kind, "isolated", scale)[0]:
                 out.append((kind, _Tracked(tuple(loc.u), "isolated"), s, side))
     return out

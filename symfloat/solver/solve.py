@@ -36,7 +36,8 @@ from .bodies import centred_polygon, polyhedron
 from .critical import critical_points, distinct_seeds, more_seeds, poincare_hopf_sum, sphere_seeds
 from .cylinder import cylinder_slice
 from .errors import ROUNDING, STEP, eigenvalue_error, equilibrium_error
-from .degenerate import degenerate_class
+from .critical import FLAT, MIN_FAMILY
+from .degenerate import degenerate_class, flat_cluster
 from .local import local, waterplane_polygon
 from .planar import roots
 from .refine import planar_potential, planar_residual, polish_planar
@@ -168,18 +169,41 @@ def _shape(vertices: list, scale: float) -> str:
 def _classified(poly, points, s, scale, group):
     """Stability, its evidence and (for degenerate points) the index of every isolated point: from the
     second variation at the polished point (:func:`~symfloat.solver.critical.critical_points`) or,
-    where an eigenvalue is zero to its error, from the higher orders (:mod:`~symfloat.solver.degenerate`)."""
-    out = []
+    where an eigenvalue is zero to its error, from the higher orders (:mod:`~symfloat.solver.degenerate`).
+    Degenerate points of one flat arc too short to be reported as a family (next to its birth or end:
+    the box 1 x 3/2 x 1 at s = 1/12 - 1e-6, Scheeffer VI (78d)) are one class
+    (:func:`~symfloat.solver.degenerate.flat_cluster`); the points returned are the classes."""
+    out, absorbed = [], []
     for c in points:
+        if any(c is a for a in absorbed):
+            continue
         stability, evidence = stability_of(c.eigen, c.eigen_error, c.ring), "second variation"
+        across = "indifferent"
         if stability == "indifferent" and not c.ring:
             others = [g @ o.u for o in points if o is not c for g in group]
             others += [v for v in orbit(c.u, group) if np.linalg.norm(v - c.u) > 1e-9]
             c.index, stability, _ = degenerate_class(poly, c.u, s, scale, others)
-            evidence = "higher orders" if c.index is not None else "undecided"
+            members, centre, extent = flat_cluster(c, [o for o in points if not o.ring], group, scale,
+                                                   2 * MIN_FAMILY, FLAT)
+            if extent:
+                # a flat arc shorter than a reported family, found as several points: one class, its index
+                # from a circle around its symmetric middle enclosing all of it, its stability (as a
+                # family's) that of the direction across it, where the second variation decides it
+                rest = [g @ o.u for o in points if o is not c and not any(o is m for m in members) for g in group]
+                rest += [v for v in orbit(centre, group, 2 * extent + 1e-12) if np.linalg.norm(v - centre) > 2 * extent]
+                index, family, rho = degenerate_class(poly, centre, s, scale, rest)
+                if rho > 3 * extent:
+                    absorbed += members
+                    across = stability_of(c.eigen, c.eigen_error, ring=True)
+                    c.index, stability = index, family if across == "indifferent" else across
+                    c.digits = c.digits if np.linalg.norm(centre - c.u) == 0 else ()
+                    c.u, c.error_rad = centre, max(c.error_rad, extent)
+                    c.orbit = len(orbit(centre, group, 2 * extent + 1e-12))
+            evidence = "second variation" if across != "indifferent" else \
+                "higher orders" if c.index is not None else "undecided"
             c.flat = c.index is None
         out.append((c, stability, evidence))
-    return out
+    return [x for x in out if not any(x[0] is a for a in absorbed)]
 
 
 def _searched(poly, s, seeds, group, scale):
@@ -190,12 +214,14 @@ def _searched(poly, s, seeds, group, scale):
     searches = ["seeds"]
     points = critical_points(poly, s, seeds, group, scale)
     classified = _classified(poly, points, s, scale, group)
+    points = [c for c, _, _ in classified]
     index = _index_sum(points)
     if _holds(index, points, scale):
         return classified, searches, index
     extra = [c.u for c in points] + more_seeds(poly, s, points, group, scale)
     points = critical_points(poly, s, extra, group, scale)
     classified = _classified(poly, points, s, scale, group)
+    points = [c for c, _, _ in classified]
     index = _index_sum(points)
     searches.append("separatrices, soft directions and small gradient")
     if _holds(index, points):
@@ -206,6 +232,7 @@ def _searched(poly, s, seeds, group, scale):
         extra += [c.u for c in there] + more_seeds(poly, near, there, group, scale)
     points = critical_points(poly, s, extra, group, scale)
     classified = _classified(poly, points, s, scale, group)
+    points = [c for c, _, _ in classified]
     index = _index_sum(points)
     searches.append("continuation from s +- 1e-4 s(1 - s)")
     return classified, searches, index
