@@ -94,7 +94,7 @@ def test_rational_dimensions_reach_the_geometry_exactly():
 # (W/2, W/2 tan psi) times L: volume L W^2 tan psi / 8 = 1/8, centroid W/3 from the axis and W tan psi/6 from
 # the old water plane (moments 1/12 and 1/96).  The righting arm of a wall-sided body is
 # sin psi (GM + BM tan^2 psi / 2), BM = W^2/(6H) = 2/9, GM = BM - H/4 = -19/36: -75/(144 sqrt 17).
-from symfloat.engine.floating_witness import MEASURED, TILT_QUANTITIES  # noqa: E402
+from symfloat.engine.floating_witness import LIMIT_METHODS, MEASURED, TILT_QUANTITIES  # noqa: E402
 
 W_, H_, L_ = sp.symbols("W H L", positive=True)
 TILTED = Case({W_: 2, H_: 3, L_: 1, S: sp.Rational(1, 2)}, label="box 2 x 3 x 1, half immersed, tan psi = 1/4")
@@ -138,7 +138,7 @@ def test_the_limit_of_the_arm_over_the_tilt_is_the_metacentric_height():
     # GZ / psi -> GM = -19/36 as psi -> 0 (the wall-sided formula above), extrapolated from the clipped arm;
     # a mutated expectation (-19/35) is refuted
     psi = sp.Symbol("psi")
-    w = tilted("righting arm", up=(0, sp.sin(psi), sp.cos(psi)), limit=(psi, 1))
+    w = tilted("righting arm", up=(0, sp.sin(psi), sp.cos(psi)), limit=(psi, 1), methods=LIMIT_METHODS)
     out = w.run({"f": (sp.Symbol("g"), -sp.Rational(19, 36)), "f#mutated": (sp.Symbol("g"), -sp.Rational(19, 35))})
     assert out["f"].agrees and out["f"].records[1]["rel_error"] < 1e-35
     assert not out["f#mutated"].agrees

@@ -32,7 +32,7 @@ triangular prism (not prismatic at the waterline) for the small-angle limits.
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.floating_witness import MEASURED, Body, FloatingWitness
+from symfloat.engine.floating_witness import LIMIT_METHODS, MEASURED, Body, FloatingWitness
 from symfloat.engine.witness import Case, Precision
 from symfloat.model.claim import as_printed
 
@@ -512,7 +512,8 @@ SMALL = (
 
 def _limit(name, description, targets, quantity):
     d.witness(FloatingWitness(name, description, targets, SMALL, body=None, up=(sp.sin(psi), sp.cos(psi), 0),
-                              reference=(0, 1, 0), density=s_body, quantity=quantity, limit=(psi, 1)))
+                              reference=(0, 1, 0), density=s_body, quantity=quantity, limit=(psi, 1),
+                              methods=LIMIT_METHODS))
 
 
 _limit("righting-arm-limit", "lim m(psi)/psi from the clipped heeled body (extrapolated)",

@@ -16,13 +16,15 @@ most 1e-12 of the body's size, see the geometry module) and 40-digit mpmath.
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from fractions import Fraction
 
 import mpmath
 import sympy as sp
 
-from ..geometry.floating import box, clip_below, draught, floating_state, regular_prism, right_prism, volume_centroid
+from ..geometry.floating import (_dot, _sub, _unit, box, clip_below, draught, floating_state, regular_prism, right_prism,
+                                 volume_centroid)
 from .witness import MeasuredWitness, Precision
 
 __all__ = ["Body", "FloatingWitness", "QUANTITIES", "TILT_QUANTITIES", "MEASURED", "FLOATING_METHODS",
@@ -124,13 +126,19 @@ QUANTITIES = {
 }
 
 
-def _unit_vector(v):
-    n = sum(x * x for x in v) ** 0.5 if isinstance(v[0], float) else mpmath.sqrt(sum(x * x for x in v))
-    return tuple(x / n for x in v)
+def _real(x, dps):
+    """A parameter's value in the witness's arithmetic (a Fraction becomes a float or an mpf)."""
+    if isinstance(x, Fraction):
+        return float(x) if dps <= 15 else mpmath.mpf(x.numerator) / x.denominator
+    return x
 
 
-def _dot3(p, q):
-    return sum(a * b for a, b in zip(p, q))
+@functools.lru_cache(maxsize=256)
+def _compiled(expr):
+    """*expr* (measured symbols and case parameters) as a function of its free symbols, sorted by name:
+    compiled once, called at every case, tilt and precision."""
+    symbols = tuple(sorted(expr.free_symbols, key=str))
+    return symbols, sp.lambdify(symbols, expr, "mpmath")
 
 
 @dataclass(frozen=True)
@@ -152,17 +160,16 @@ class Tilt:
 
 
 def _tilt(body, st, reference, density):
-    r = _unit_vector(reference)
+    r = _unit(reference, body.dps)
     t0 = draught(body, r, density)[0]
-    u, ur = st.u, _dot3(st.u, r)
-    h0 = _unit_vector(tuple(ur * ri - ui for ri, ui in zip(r, u)))
-    hor = _unit_vector(tuple(ri - ur * ui for ri, ui in zip(r, u)))       # the same, in the new frame
+    u, ur = st.u, _dot(st.u, r)
+    h0 = _unit(tuple(ur * ri - ui for ri, ui in zip(r, u)), body.dps)
+    hor = _unit(tuple(ri - ur * ui for ri, ui in zip(r, u)), body.dps)     # the same, in the new frame
     imm = clip_below(clip_below(body, u, st.t), tuple(-x for x in r), -t0)
     emg = clip_below(clip_below(body, tuple(-x for x in u), -st.t), r, t0)
     V3, c3 = volume_centroid(imm)
     V4, c4 = volume_centroid(emg)
-    return Tilt(r, t0, h0, (st.t - t0 * ur) / _dot3(u, h0), _dot3(tuple(b - g for b, g in zip(st.B, st.G)), hor),
-                V3, c3, V4, c4)
+    return Tilt(r, t0, h0, (st.t - t0 * ur) / _dot(u, h0), _dot(_sub(st.B, st.G), hor), V3, c3, V4, c4)
 
 
 # quantity -> (what it is, how to read it from the body tilted from the reference position at the same density)
@@ -174,13 +181,13 @@ TILT_QUANTITIES = {
     "immersed wedge volume": ("volume below the new and above the old water plane", lambda w: w.V3),
     "emerged wedge volume": ("volume above the new and below the old water plane", lambda w: w.V4),
     "immersed wedge moment, horizontal": ("its static moment about the line where the planes meet, towards the dip",
-                                          lambda w: w.V3 * (_dot3(w.c3, w.h0) - w.alpha)),
+                                          lambda w: w.V3 * (_dot(w.c3, w.h0) - w.alpha)),
     "immersed wedge moment, vertical": ("its static moment about the old water plane, upwards",
-                                        lambda w: w.V3 * (_dot3(w.c3, w.r) - w.t0)),
+                                        lambda w: w.V3 * (_dot(w.c3, w.r) - w.t0)),
     "emerged wedge moment, horizontal": ("its static moment about the line where the planes meet, away from the dip",
-                                         lambda w: w.V4 * (w.alpha - _dot3(w.c4, w.h0))),
+                                         lambda w: w.V4 * (w.alpha - _dot(w.c4, w.h0))),
     "emerged wedge moment, vertical": ("its static moment about the old water plane, downwards",
-                                       lambda w: w.V4 * (w.t0 - _dot3(w.c4, w.r))),
+                                       lambda w: w.V4 * (w.t0 - _dot(w.c4, w.r))),
 }
 # a symbol per quantity, for a witness that measures an expression in several of them (V B_x, a ratio)
 MEASURED = {name: sp.Symbol(name) for name in (*QUANTITIES, *TILT_QUANTITIES)}
@@ -229,8 +236,9 @@ class FloatingWitness(MeasuredWitness):
                                  f"{', '.join((*QUANTITIES, *TILT_QUANTITIES))}")
             if q in TILT_QUANTITIES and self.reference is None:
                 raise ValueError(f"witness {self.name}: {q!r} needs the reference position it is tilted from")
-        if self.limit is not None and self.methods == FLOATING_METHODS:
-            object.__setattr__(self, "methods", LIMIT_METHODS)
+        if self.limit is not None and any(m.dps not in _LIMIT_STEPS for m in self.methods):
+            raise ValueError(f"witness {self.name}: a limit is extrapolated at {sorted(_LIMIT_STEPS)} digits only "
+                             f"(methods=LIMIT_METHODS)")
 
     def _values(self, params, body, dps):
         body = body.build(params, dps)
@@ -243,21 +251,18 @@ class FloatingWitness(MeasuredWitness):
             if name in QUANTITIES:
                 return QUANTITIES[name][1](st, body)
             if not tilt:
-                ref = [number(x, params, dps) for x in self.reference]
-                ref = tuple((float(x) if dps <= 15 else mpmath.mpf(x.numerator) / x.denominator)
-                            if isinstance(x, Fraction) else x for x in ref)
-                tilt.append(_tilt(body, st, ref, density))
+                tilt.append(_tilt(body, st, tuple(number(x, params, dps) for x in self.reference), density))
             return TILT_QUANTITIES[name][1](tilt[0])
 
         def item(q):
             if isinstance(q, str):
                 return measured(q)
-            q = q.xreplace(params)
-            symbols = sorted(q.free_symbols, key=str)
-            unknown = [str(s) for s in symbols if MEASURED.get(str(s)) != s]
+            symbols, f = _compiled(q)
+            unknown = [str(s) for s in symbols if MEASURED.get(str(s)) != s and s not in params]
             if unknown:
                 raise ValueError(f"witness {self.name}: {unknown} are neither measured nor given by the case")
-            return sp.lambdify(symbols, q, "mpmath")(*(measured(str(s)) for s in symbols))
+            return f(*(_real(number(params[s], params, dps), dps) if s in params else measured(str(s))
+                       for s in symbols))
         if isinstance(self.quantity, (str, sp.Expr)):
             return (item(self.quantity),)
         return tuple(item(q) for q in self.quantity)
@@ -267,8 +272,6 @@ class FloatingWitness(MeasuredWitness):
         if self.limit is None:
             with mpmath.workdps(max(method.dps, 15)):
                 values = self._values(case.params, body, method.dps)
-        elif method.dps not in _LIMIT_STEPS:
-            raise ValueError(f"witness {self.name}: a limit is extrapolated at {sorted(_LIMIT_STEPS)} digits only")
         else:
             psi, power = self.limit
             h, levels, dps = _LIMIT_STEPS[method.dps]
