@@ -137,6 +137,38 @@ def test_cube_check_compares_thresholds():
     assert not _check(run_checks(cube, meta, reference), "cube").ok
 
 
+def test_printed_thresholds_not_found_are_explained_and_a_missed_change_fails():
+    """An unfound printed threshold carries what the solver sees beside it: a position stable on
+    neither side is a reported disagreement; a stable set that changes there without a located
+    threshold is a failure of the machinery.  (Entries as `compute_cell` writes them; the values are
+    Scheeffer IV (43a)'s 1/4 for the square section, which the box 1 x 1 x 2 leaves unfound.)"""
+    unstable = ("scheeffer-iv-v (43a): tilted in the x-y plane stable below at 0.25 "
+                "[stable on neither side: at s -+ 1e-06 the solver finds this position stable on neither side]")
+    rows = [_row(2, 3, 0, 0.1, 0.9, [FACE_X], sources_not_found=[unstable])]
+    checks = run_checks(rows, META)
+    reported = next(c for c in checks if c.name == "printed thresholds")
+    assert not reported.ok and not reported.fails_command and "1 where the solver finds the position stable on " \
+        "neither side" in reported.summary
+    assert next(c for c in checks if c.name == "printed thresholds located").ok
+    missed = unstable.replace("[stable on neither side", "[change not located")
+    checks = run_checks([_row(2, 3, 0, 0.1, 0.9, [FACE_X], sources_not_found=[missed])], META)
+    located = next(c for c in checks if c.name == "printed thresholds located")
+    assert not located.ok and located.fails_command
+
+
+def test_why_a_printed_threshold_is_not_found():
+    """`_why_not_found` reads the solver's view at s -+ width: no change (neither or both sides stable)
+    or a change the bisection did not locate, and names the nearest change of the same position."""
+    from symfloat.solver.phase import Threshold, _why_not_found
+    k = {"value": 0.25, "label": "tilted in the x-y plane"}
+    near = [Threshold(0.2113248654052, 1e-13, "tilted in the x-y plane", "stable above")]
+    neither = _why_not_found(k, (1e-6, False, False), near)
+    assert neither["seen"] == "stable on neither side" and "0.2113248654052" in neither["why"]
+    assert _why_not_found(k, (1e-6, True, True), [])["seen"] == "stable on both sides"
+    assert _why_not_found(k, (1e-6, True, False), near)["seen"] == "change not located"
+    assert _why_not_found(k, None, near)["seen"] == "not looked at"
+
+
 def _one_scene_cell(ba, ca, densities):
     """A cheap cell for the plumbing test: the stable classes at the middle density only."""
     from symfloat.atlas.cell import _stable_classes

@@ -102,7 +102,7 @@ def _rows(ba, ca, body, dims, densities) -> list[dict]:
                 if lo < t.density < hi]
     mirrored = all(a == b for a, b in zip(diagram.stable, reversed(diagram.stable)))
     missing = [f"{k['derivation']} {', '.join(k['locators'])}: {k['label']} {k['change']} at {k['value']:.13g}"
-               for k in diagram.unmatched_sources]
+               f" [{k['seen']}: {k['why']}]" for k in diagram.unmatched_sources]
     rows = []
     for k in range(len(ends) - 1):
         a, b = ends[k], ends[k + 1]

@@ -17,14 +17,19 @@ Failing checks (the command exits 1 when one fails):
 * **long box** (Scheeffer IX's printed tables, :func:`tables_prediction` in
   ``symfloat/derivations/scheeffer_ix.py``): where the longest edge is at least ``LONG`` times the
   middle one, the stable positions with the long edge horizontal are those the tables give for
-  the cross-section at every interval's sample density (tilt within ``MATCH_RAD``).
+  the cross-section at every interval's sample density (tilt within ``MATCH_RAD``);
+* **printed thresholds located**: where a printed threshold is not found, the solver's stable set
+  beside it (at ``s -+ 1e-6``) does not change in that position (else the bisection missed it).
 
 Reported, not failing (a printed claim may be wrong): every printed prediction read at the
 samples, by derivation — agreeing, disagreeing where the derivation declares an erratum of the
 formula, disagreeing otherwise; Scheeffer VII–VIII's tilted parallelepipeds first — and the printed
-thresholds inside the swept range that the phase machinery did not find.
+thresholds inside the swept range that the phase machinery did not find, each with what the solver
+sees beside it (the position stable on neither side, or on both: no change of the stable set there).
 """
 from __future__ import annotations
+
+from collections import Counter
 
 import math
 from dataclasses import dataclass, field
@@ -281,11 +286,29 @@ def _predictions(cells, lo, hi) -> list[Check]:
                          f"{e['agree']} predictions agree; {e['erratum']} disagree where an erratum is declared; "
                          f"{len(e['disagree'])} disagree otherwise", e["disagree"]))
     missing = sorted({f"{_cell_name(c)}: {m}" for c, rs in _good(cells).items() for m in rs[0]["sources_not_found"]
-                      if lo < float(m.rsplit(" at ", 1)[1]) < hi})
+                      if lo < _printed_value(m) < hi})
+    kinds = Counter(_seen(m) for m in missing)
     out.append(Check("printed thresholds", False, not missing,
                      f"{len(missing)} printed thresholds inside the swept range that the phase machinery does "
-                     f"not find", missing))
+                     f"not find" + (": " + ", ".join(f"{n} where the solver finds the position {k}"
+                                                    if k.startswith("stable") else f"{n} {k}"
+                                                    for k, n in sorted(kinds.items())) if kinds else ""),
+                     missing))
+    unlocated = [m for m in missing if _seen(m) == "change not located"]
+    out.append(Check("printed thresholds located", True, not unlocated,
+                     f"{len(unlocated)} printed thresholds where the solver's stable set changes but no threshold "
+                     f"was located", unlocated))
     return out
+
+
+def _printed_value(entry: str) -> float:
+    """The density of an entry of ``sources_not_found``: ``"... at VALUE [seen: why]"``."""
+    return float(entry.split(" [", 1)[0].rsplit(" at ", 1)[1])
+
+
+def _seen(entry: str) -> str:
+    """What the solver sees beside the printed threshold of an entry of ``sources_not_found``."""
+    return entry.split(" [", 1)[1].split(":", 1)[0]
 
 
 def run_checks(rows, meta, reference=None) -> list[Check]:

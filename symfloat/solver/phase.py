@@ -663,6 +663,7 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None, densitie
     def matches(k, t):
         return abs(k["value"] - t.density) <= max(1e-9, 2 * t.bracket) and k["label"] == t.label
 
+    seen = {}                               # id of a source threshold -> the solver's view beside it
     for k in known:
         if any(matches(k, t) for t in thresholds):
             continue
@@ -673,6 +674,7 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None, densitie
             if not 0 < sa < sb < 1:
                 continue
             a, b = _stable(make_scene(body, sa, base.dims)), _stable(make_scene(body, sb, base.dims))
+            seen.setdefault(id(k), (width, k["label"] in a, k["label"] in b))
             new = _thresholds_between(poly, group, scale, a, b, float(sa), float(sb))
             thresholds += [t for t in new if not any(abs(t.density - u.density) <= 1e-9 and t.label == u.label
                                                      for u in thresholds)]
@@ -690,13 +692,35 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None, densitie
     for t in thresholds:
         t.source = [k for k in known if matches(k, t)]
     matched = {id(k) for t in thresholds for k in t.source}
-    unmatched = [k for k in known if id(k) not in matched]
+    unmatched = [{**k, **_why_not_found(k, seen.get(id(k)), thresholds)} for k in known if id(k) not in matched]
     labels = [sorted(x) for x in stable]
     unpaired = _unpaired(thresholds)
     duality_ok = all(labels[k] == labels[len(labels) - 1 - k] for k in range(len(labels))) and not unpaired
     thresholds.sort(key=lambda t: (t.density, t.label))
     return PhaseDiagram(body, tuple(str(d) for d in base.dims), [float(s) for s in densities], labels, thresholds,
                         unmatched, duality_ok, time.perf_counter() - start, unpaired)
+
+
+def _why_not_found(k, seen, thresholds) -> dict:
+    """Why the printed threshold *k* is not among the thresholds found: ``{"seen", "why"}``, from what
+    the solver sees at ``k -+ width`` (``seen = (width, stable below, stable above)``; None: not looked
+    at, the threshold lying within the width of 0 or 1) and the nearest change of the same position.
+    ``seen`` is ``stable on neither side`` or ``stable on both sides`` (no change of the stable set
+    there: the print and the solver disagree), ``change not located`` (the solver's stable set does
+    change there, but its bisection found no threshold: a failure of the machinery) or ``not looked at``."""
+    near = min((t for t in thresholds if t.label == k["label"]), key=lambda t: abs(t.density - k["value"]),
+               default=None)
+    nearest = (f"; the nearest change of this position found is at {near.density:.13g} ({near.change})"
+               if near is not None else "; the solver finds no change of this position")
+    if seen is None:
+        return {"seen": "not looked at", "why": "within the look's width of 0 or 1" + nearest}
+    width, below, above = seen
+    if below == above:
+        kind = "stable on both sides" if below else "stable on neither side"
+        return {"seen": kind, "why": f"at s -+ {width:.0e} the solver finds this position {kind}" + nearest}
+    return {"seen": "change not located",
+            "why": f"at s -+ {width:.0e} the solver finds it stable {'below' if below else 'above'} only, "
+                   f"but no threshold of it was located there" + nearest}
 
 
 def _unpaired(thresholds) -> list:
