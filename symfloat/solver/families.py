@@ -30,7 +30,7 @@ from .degenerate import MAX_RADIUS, NOISE, turning
 from .edgewise import states
 from .local import tangent_step
 
-__all__ = ["family_index", "family_seeds", "stadium", "offset"]
+__all__ = ["family_index", "family_seeds", "contour_winding", "stadium", "offset"]
 
 CAP = 12            # points on each half circle round an arc's end
 REACH = 0.1         # the least cosine between the projection's centre and a point of the curve (84 degrees)
@@ -70,17 +70,18 @@ def stadium(path, rho: float) -> np.ndarray:
     return np.array(right + ahead + left[::-1] + behind)
 
 
-def _winding(poly, s, curve, centre):
-    """:func:`~symfloat.solver.degenerate.turning` on the closed polygon *curve* (unit vectors; its points
-    joined by chords, normalised), the gradient projected onto the tangent plane at *centre*; None where a
-    point lies more than 84 degrees from the centre."""
+def contour_winding(curve, centre, gradient):
+    """:func:`~symfloat.solver.degenerate.turning` on the closed polygon *curve* (unit vectors,
+    counter-clockwise seen from outside; between them the chords, normalised), the gradient projected onto
+    the tangent plane at *centre*; ``gradient(points)`` gives the gradients (3-vectors) and potentials at an
+    array of points.  None where a point lies more than 84 degrees from the centre."""
     curve = np.asarray(curve, dtype=float)
     if np.min(curve @ centre) < REACH:
         return None
     helper = np.eye(3)[int(np.argmin(np.abs(centre)))]
     f1 = np.cross(helper, centre)
     f1 /= np.linalg.norm(f1)
-    f2 = np.cross(centre, f1)                       # f1 x f2 = centre: positive seen from outside
+    frame = np.stack([f1, np.cross(centre, f1)], axis=1)       # f1 x f2 = centre: positive seen from outside
     closed = np.vstack([curve, curve[:1]])
     lengths = np.linalg.norm(np.diff(closed, axis=0), axis=1)
     params = np.concatenate([[0.0], np.cumsum(lengths)])
@@ -93,12 +94,20 @@ def _winding(poly, s, curve, centre):
         return q / np.linalg.norm(q)
 
     def evaluate(ts):
-        st = states(poly, np.array([at(t % period) for t in ts]), s)
-        g2 = np.einsum("mkj,mk->mj", st.basis, st.G - st.B)
-        g = np.einsum("mkj,mj->mk", st.basis, g2) @ np.stack([f1, f2], axis=1)
-        return [(math.atan2(b, a), math.hypot(a, b), float(U)) for (a, b), U in zip(g, st.potential)]
+        g, potentials = gradient(np.array([at(t % period) for t in ts]))
+        g = np.asarray(g) @ frame
+        return [(math.atan2(b, a), math.hypot(a, b), float(U)) for (a, b), U in zip(g, potentials)]
 
     return turning(evaluate, list(params[:-1]), period)
+
+
+def _gradient(poly, s):
+    """The gradients (3-vectors) and potentials of *poly* at density *s* at an array of up vectors, evaluated
+    together (:func:`~symfloat.solver.edgewise.states`)."""
+    def gradient(points):
+        st = states(poly, points, s)
+        return np.einsum("mkj,mj->mk", st.basis, np.einsum("mkj,mk->mj", st.basis, st.G - st.B)), st.potential
+    return gradient
 
 
 def _distance(path, points) -> float:
@@ -118,12 +127,12 @@ def family_index(poly, s, c, others, scale: float) -> tuple[int | None, float]:
     rho = min(MAX_RADIUS, _distance(path, others) / 3)
     if c.shape == "closed":
         # walked along t, the annulus lies left of the curve on the right (-n) and right of the one on the left
-        right, left = (_winding(poly, s, offset(path, sign * rho, True), c.axis) for sign in (-1, 1))
+        right, left = (contour_winding(offset(path, sign * rho, True), c.axis, _gradient(poly, s)) for sign in (-1, 1))
         if right is None or left is None or not min(right[1], left[1]) > NOISE * scale:
             return None, rho
         return right[0] - left[0], rho
     centre = path.mean(axis=0)
-    turns = _winding(poly, s, stadium(path, rho), centre / np.linalg.norm(centre))
+    turns = contour_winding(stadium(path, rho), centre / np.linalg.norm(centre), _gradient(poly, s))
     if turns is None or not turns[1] > NOISE * scale:
         return None, rho
     return turns[0], rho
