@@ -381,7 +381,7 @@ def _nearest_copy(u, group, floor: float = 1e-3) -> float:
 def on_family(u, c, group, tol: float = 5e-5) -> bool:
     """Whether the unit vector *u* lies on the family *c* or a copy of it: within an eighth of a chord of the
     chords between its walked points (a chord of a circle of radius ``R >= 4 |chord|`` strays ``|chord| / 32``
-    from it), or within *tol* (the error of an arc's end, ``2 * 0.005 / 256``) of them."""
+    from it) plus *tol* (by default the error of an arc's end, ``2 * 0.005 / 256``)."""
     images = np.asarray(group, dtype=float) @ np.asarray(u, dtype=float)         # every copy of u
     path = np.asarray(c.path, dtype=float)
     a = path if c.shape == "closed" else path[:-1]
@@ -524,9 +524,13 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
         pairs = _tangent_eigen(loc)
         eigen = (float(pairs[0][0]), float(pairs[1][0]))
         lam_min = min(abs(e) for e in eigen)
-        if lam_min < 1e-6 * scale and any(c.ring and abs(c.U - loc.U) <= 1e-10 * scale and on_family(loc.u, c, group)
-                                          for c in found):
-            continue        # a point of a family already walked
+        # a point of a family already walked, or one just past its end that Newton's method does not resolve (the
+        # gradient not below 1e-13 of the size: the potential falls there by less than the rounding); a resolved
+        # point off the family is kept (the stable class between two arcs, their potential to 1e-13)
+        unresolved = float(np.linalg.norm(loc.gradient)) > 1e-13 * scale
+        if lam_min < 1e-6 * scale and any(c.ring and abs(c.U - loc.U) <= 1e-10 * scale
+                                          and on_family(loc.u, c, group, 1e-2 if unresolved else 5e-5) for c in found):
+            continue
         ring = lam_min < 1e-6 * scale and _is_ring(poly, loc, pairs, s, scale, group)
         g = float(np.linalg.norm(loc.gradient))
         err = 0.0 if ring else min(g / max(lam_min, 1e-300), (g / scale) ** (1 / 3))
