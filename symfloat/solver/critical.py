@@ -7,7 +7,8 @@ whose Hessian has a (numerically) zero eigenvalue is tested for a *ring*: a
 step along the null direction followed by Newton lands on another equilibrium
 of the same potential.  Completeness is checked by the Poincaré–Hopf theorem:
 over the whole sphere the indices of the isolated critical points (+1 for
-minima and maxima, -1 for saddles) add up to 2, and a Morse–Bott ring adds 0.
+minima and maxima, -1 for saddles) and of the families (the winding round them,
+:mod:`symfloat.solver.families`: 0 for a Morse–Bott ring) add up to 2.
 A point that float64 does not pin down (a nearly singular Hessian) is polished
 at 30 digits and, where its error spans a mirror or an axis, tried at the
 symmetric position (:func:`_error_estimate`).

@@ -2,7 +2,8 @@
 
 * cube, box, regular prism: Newton's method on the sphere from seeds covering
   the symmetry group's fundamental domain (:mod:`symfloat.solver.critical`),
-  completeness checked by the Poincaré–Hopf index sum;
+  completeness checked by the Poincaré–Hopf index sum, a ring or an arc of
+  equilibria counted with the winding round it (:mod:`symfloat.solver.families`);
 * section (long prism): the heel angle in the cross-section's plane, every
   root of ``U'`` (:mod:`symfloat.solver.planar`);
 * cylinder: the tilt in the meridian plane (the rotations about the axis are
