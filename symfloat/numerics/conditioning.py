@@ -218,7 +218,7 @@ FAMILY_INDEX = (   # docs/numerics.md section 4: the index check with families (
     'just inside the small ring born from y up at about 0.9194352 and its dual, finds y up inside the ring '
     '(before, both sides dropped it, an equilibrium by symmetry, as a point of the ring); each with the '
     'sum 2 (tests/test_solver_families.py). What it costs: the curves round a family are one batched '
-    'evaluation of floating states (a few milliseconds); the middle of each chord one Newton run per step '
+    'evaluation of floating states (4 to 13 ms a family in these scenes); the middle of each chord one Newton run per step '
     'of the walk; a scene whose first sum fails runs the second search: 0.5 to 1.8 s of processor time '
     'for the scenes above (0.1 to 0.9 s before, with the wrong answers); the box and cube sweeps (19 '
     'densities k/20 each) are unchanged, median box scene 52 ms (51 ms before), cube 79 ms (81 ms).')

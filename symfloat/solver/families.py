@@ -13,12 +13,13 @@ curve that encloses it and no other critical point (Poincaré; its sum over the 
   counter-clockwise), measured rather than assumed (0 for a ring that is non-degenerate across).
 
 ``rho`` is a third of the distance from the family's walked points to the nearest other equilibrium (every
-copy of every other class, and the other copies of the family), at most :data:`MAX_RADIUS`; the gradient is
+copy of every other class, and the other copies of the family), at most :data:`MAX_RADIUS` (and half a
+closed ring's radius); the gradient is
 projected onto the tangent plane at the family's middle (an arc: its mean point; a ring: its axis), which
 needs the whole curve within 84 degrees of it; on the curve the gradient must exceed rounding
 (:data:`~symfloat.solver.degenerate.NOISE`).  Otherwise the index is None: the check cannot be made.
 Cost: one batched evaluation of the floating states at the curve's points (two to three per walked point,
-more where the gradient turns fast), a few milliseconds per family.
+more where the gradient turns fast), 4 to 13 ms of processor time a family in tests/test_solver_families.py.
 """
 from __future__ import annotations
 
@@ -126,6 +127,7 @@ def family_index(poly, s, c, others, scale: float) -> tuple[int | None, float]:
     path = np.asarray(c.path, dtype=float)
     rho = min(MAX_RADIUS, _distance(path, others) / 3)
     if c.shape == "closed":
+        rho = min(rho, c.length / (4 * math.pi))       # the inner curve stays on its side of the axis, found or not
         # walked along t, the annulus lies left of the curve on the right (-n) and right of the one on the left
         right, left = (contour_winding(offset(path, sign * rho, True), c.axis, _gradient(poly, s)) for sign in (-1, 1))
         if right is None or left is None or not min(right[1], left[1]) > NOISE * scale:
