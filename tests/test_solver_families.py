@@ -180,3 +180,16 @@ def test_next_to_the_vertex_events_both_sides_agree(dims, densities):
         assert len(a) == len(b) == 2 and all(any(same_class(-u, v, group, 1e-6) for v in b) for u in a), x
         assert [e.ring_shape for e in low.equilibria if e.family == "ring"] == ["arc"] == \
             [e.ring_shape for e in high.equilibria if e.family == "ring"]
+
+
+@pytest.mark.parametrize("s", [Fraction("0.2266"), Fraction("0.7734")])
+def test_the_cube_just_past_the_end_of_its_whole_ring_has_its_diagonal_class(s):
+    # issue 14: "tilted, |u_x| = |u_y|: stable above" (3 - sqrt 2)/7 = 0.2265409 (Scheeffer X); at 0.2266 and its dual
+    # the scene listed the arc round z without the stable class between two arcs (exit 0, the index sum skipped)
+    sol = solve(make_scene("cube", s))
+    diagonal = [e for e in sol.equilibria if e.stability == "stable" and e.family == "isolated"
+                and abs(abs(e.up[0]) - abs(e.up[1])) <= 1e-9 and 0.9 < abs(e.up[2]) < 1]
+    assert len(diagonal) == 1 and diagonal[0].copies == 24
+    mirror = lambda t: (math.sin(t) / math.sqrt(2), math.sin(t) / math.sqrt(2), math.cos(t))  # noqa: E731
+    assert abs(math.acos(abs(diagonal[0].up[2])) - _mirror_minimum((1, 1, 1), s, mirror, 0.25, 0.37)) <= 1e-6
+    assert sol.checks["poincare_hopf_index_sum"] == 2 and sol.checks["family_indices"] == [-1]
