@@ -437,8 +437,8 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
     arc by at most ``delta^3 / (24 R^2)`` on a circle of radius ``R``; an arc's end is located by
     halving the last step eight times, so each end lies within ``delta / 256`` past the point reached."""
     start = local(poly, u, s)
-    # a gap in the family narrower than the step is not seen; a ring around an axis is walked in steps of a
-    # quarter of its radius at most
+    # a gap in the family narrower than the step is seen where the middle of a step's chord falls in it
+    # (:func:`_joined`); a ring around an axis is walked in steps of a quarter of its radius at most
     axis = max(_nearest_axis(start.u, group), 1e-9)
     delta = min(0.005, _nearest_copy(start.u, group) / 4, axis / 4)
     max_steps = min(max_steps, int(8 * math.pi * axis / delta) + 16)     # twice round a circle of that radius
