@@ -141,7 +141,7 @@ def conditioning_markdown(rows) -> str:
                      f"{r.true_error:.1e} | {r.reported:.1e} | {r.method} | {'yes' if r.bounded else 'NO'} |")
     bounded = sum(r.bounded for r in rows)
     lines += ["", f"The reported error bounds the true error in {bounded} of {len(rows)} rows.", "", PITCHFORK_THRESHOLDS, "",
-              RING_SEEDS, "", IX_TRIPLE_ROOT, ""]
+              RING_SEEDS, "", FAMILY_INDEX, "", IX_TRIPLE_ROOT, ""]
     return "\n".join(lines)
 
 
@@ -178,15 +178,52 @@ RING_SEEDS = (   # docs/numerics.md section 4: the ring of the long square log's
     'a saddle class on the diagonal mirror live up to a fold at about 0.0105474 (a scan of the gradient '
     'along the mirror): the scene finds the ring at 0.01054, the arcs with both diagonal classes at '
     "0.010547 and the arcs at 0.01056 (before: index sum 10, exit 1), each ring's tilt equal to atan m to"
-    ' 1e-9 rad (tests/test_solver_log.py). Where arcs are present the index sum does not apply, so these '
-    'seeds, not the sum, are what finds the diagonal window. How close to the vertex event this stays '
-    'right (densities s and 1 − s, both solved): from 0.0105468, 4e-7 past it, to the fold both sides '
-    'give the arcs and both diagonal classes; nearer, the walk along an arc (steps of 5e-3 rad) crosses '
-    'the gap the diagonal classes open in the ring: at 0.0105465 both sides report the ring only, at 1 − '
-    '0.0105466 the arc takes in the stable diagonal class (exit 0, its dual at 0.0105466 lists it: a '
-    'wrong stable set, not fixed), at 1 − 0.0105467 the index sum is 10 (exit 1, the message names the '
-    'diagonal positions). A sum that still fails names the positions next to a bifurcation (smallest '
-    'eigenvalue below 1e-2 of the size) in its message.')
+    ' 1e-9 rad (tests/test_solver_log.py). These seeds find the diagonal window; the index sum, the arcs '
+    'counted with the winding round them (−1 each, below), confirms it. How close to the vertex event this '
+    'stays right (densities s and 1 − s, both solved): from 0.0105466, 2e-7 past it, to the fold both '
+    'sides give the arcs and both diagonal classes (before: from 0.0105468; at 1 − 0.0105466 the walk '
+    'along an arc crossed the gap the diagonal classes open in the ring and took in the stable one, exit '
+    '0); at 0.0105465 the walk on the 1 − s side still crosses it and reports the ring closed, with the '
+    'stable and the saddle diagonal classes inside it, whose indices cancel (+8 − 8): no index sum sees '
+    'that, not fixed. A sum that still fails names the positions next to a bifurcation (smallest '
+    'eigenvalue below 1e-2 of the size) and the families with their indices in its message.')
+
+FAMILY_INDEX = (   # docs/numerics.md section 4: the index check with families (symfloat/solver/families.py)
+    'The index check with families (issue 14): a ring or an arc of equilibria used to switch the '
+    'Poincaré–Hopf check off ("one-parameter families present"), and every silent miss left sat behind '
+    'that. Now a family counts with the winding number of the gradient on a closed curve round it that '
+    'encloses no other equilibrium (`symfloat/solver/families.py`): round an arc a stadium, its walked '
+    'points moved ρ to either side and joined by half circles round its ends, ρ a third of the distance '
+    'to the nearest other equilibrium (every copy of every other class and of the family), at most 0.03 '
+    'rad; a closed ring counts the winding on the curve ρ outside it less that on the curve ρ inside, 0 '
+    'for a Morse–Bott ring (an annulus: Euler characteristic 0), measured, not assumed. The gradient is '
+    "projected onto the tangent plane at the family's middle and must exceed rounding on the curve, or "
+    'the check cannot be made (an error). A transversally stable arc counts +1 where the potential rises '
+    'past both its ends, −1 where it falls past both, 0 where it rises past one: the box 1 × 3/2 × 1 at '
+    "0.081949 has eight arcs about the faces' directions round y, each −1 (8° past an arc's end the "
+    'potential is 3.5e-10 below the arc), and between them the stable diagonal class (+8). The sum, '
+    'families included, must be 2; when it is not, the search goes on next to every family (from up to 24 '
+    'of its walked points 1e-3 … 3e-2 rad across it, along it past an arc\'s ends out to 6e-2 rad, a '
+    "closed ring's axis), then by continuation from s ± 1e-4 s(1 − s) and from the dual scene (its "
+    'equilibria at 1 − s turned upside down); a sum that still fails is IndexCheckError naming the '
+    'families. Two changes to the walk let the sum close: a step along a family (and the test that a '
+    'point lies on one) needs the middle of the chord, settled across the family by Newton\'s method, to '
+    "be an equilibrium of the family's potential within a quarter of the chord (across a gap the gradient "
+    'along the family does not vanish); and a soft point of the potential of a family is dropped as one '
+    'of its points only where it lies on the walked family (Newton\'s method unresolved: within 1e-2 rad '
+    'of it), where before any such point was. The three scenes it was built for: the box 1 × 3/2 × 1 at '
+    '0.918051 (was exit 0 with 6 classes, the atlas\'s failed duality) finds the stable diagonal class at '
+    '(0.123210, 0.984702, 0.123210), as its dual 0.081949; the long square log at 1 − 0.0105466 keeps its '
+    'stable diagonal class beside the arcs, as its dual; the box 1 × 3/2 × 1 at 0.9194351 and 0.0805649, '
+    'just inside the small ring born from y up at about 0.9194352 and its dual, finds y up inside the ring '
+    '(before, both sides dropped it, an equilibrium by symmetry, as a point of the ring); and the cube at '
+    '0.2266 and 0.7734, just past (3 − √2)/7, finds the stable class on the diagonal mirror between the '
+    'arcs round z, which both sides missed (a miss the duality cannot see); each with the sum 2 '
+    '(tests/test_solver_families.py). What it costs: the curves round a family are one batched '
+    'evaluation of floating states (4 to 13 ms a family in these scenes); the middle of each chord one Newton run per step '
+    'of the walk; a scene whose first sum fails runs the second search: 0.5 to 1.8 s of processor time '
+    'for the scenes above (0.1 to 0.9 s before, with the wrong answers); the box and cube sweeps (19 '
+    'densities k/20 each) are unchanged, median box scene 52 ms (51 ms before), cube 79 ms (81 ms).')
 
 IX_TRIPLE_ROOT = (   # docs/numerics.md section 4: Scheeffer IX's predictor next to the triple root of (136)
     "Scheeffer IX's predictor next to its triple root: at n = 1 the printed quartic (136) factors as (z² "

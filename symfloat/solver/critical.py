@@ -7,7 +7,8 @@ whose Hessian has a (numerically) zero eigenvalue is tested for a *ring*: a
 step along the null direction followed by Newton lands on another equilibrium
 of the same potential.  Completeness is checked by the Poincaré–Hopf theorem:
 over the whole sphere the indices of the isolated critical points (+1 for
-minima and maxima, -1 for saddles) add up to 2, and a Morse–Bott ring adds 0.
+minima and maxima, -1 for saddles) and of the families (the winding round them,
+:mod:`symfloat.solver.families`: 0 for a Morse–Bott ring) add up to 2.
 A point that float64 does not pin down (a nearly singular Hessian) is polished
 at 30 digits and, where its error spans a mirror or an axis, tried at the
 symmetric position (:func:`_error_estimate`).
@@ -30,7 +31,7 @@ from .refine import polish
 from .selfcheck import index_of
 from .symmetry import orbit, representative, same_class
 
-__all__ = ["Critical", "newton", "newton_all", "descend_all", "symmetric_newton", "critical_points", "poincare_hopf_sum", "more_seeds", "polyhedron_at"]
+__all__ = ["Critical", "newton", "newton_all", "descend_all", "symmetric_newton", "critical_points", "poincare_hopf_sum", "more_seeds", "polyhedron_at", "on_family"]
 
 MAX_STEP = 0.3          # radians: Newton steps are capped (a trust region)
 MIN_FAMILY = 1e-3       # radians: an arc of equilibria shorter than this is not reported as one
@@ -58,10 +59,12 @@ class Critical:
     length_error: float = 0.0   # and the error of that length (radians)
     error_method: str = "exact"
     lipschitz: float = 0.0
-    index: int | None = None    # set where the Hessian is degenerate: from the higher orders
+    index: int | None = None    # set where the Hessian is degenerate (from the higher orders) and for a family
     flat: bool = False          # degenerate and flat to rounding on the circle around it: no index
     digits: tuple = ()          # the up vector polished at 30 digits (mpf), when it is isolated
     eigen_error: float = 0.0    # the error of the eigenvalues (at the polished point)
+    path: tuple = ()            # a family's points as walked, in order along it (unit vectors)
+    axis: np.ndarray | None = None  # a closed ring's axis (the normal of its plane, towards it)
 
 
 def newton(poly: Polyhedron, u0, s, scale: float, iterations: int = 60, null_tol: float | None = None):
@@ -264,13 +267,12 @@ def polyhedron_at(poly, dps: int) -> Polyhedron:
 
 
 def poincare_hopf_sum(points: list[Critical]) -> int:
-    """Sum of indices over the whole sphere (rings count 0); 2 when no critical point is missing.
-    A degenerate point counts with the index of its higher-order terms (``c.index``)."""
+    """Sum of indices over the whole sphere; 2 when no critical point is missing.  A degenerate point
+    counts with the index of its higher-order terms, a family with the winding round it (``c.index``,
+    :func:`~symfloat.solver.families.family_index`: 0 for a closed ring)."""
     total = 0
     for c in points:
-        if c.ring:
-            continue
-        total += c.orbit * (c.index if c.index is not None else index_of(c.eigen))
+        total += c.orbit * (c.index if c.index is not None or c.ring else index_of(c.eigen))
     return total
 
 
@@ -377,6 +379,33 @@ def _nearest_copy(u, group, floor: float = 1e-3) -> float:
     return min((a for a in angles if a > floor), default=math.pi)
 
 
+def on_family(u, c, group, tol: float = 5e-5) -> bool:
+    """Whether the unit vector *u* lies on the family *c* or a copy of it: within an eighth of a chord of the
+    chords between its walked points (a chord of a circle of radius ``R >= 4 |chord|`` strays ``|chord| / 32``
+    from it) plus *tol* (by default the error of an arc's end, ``2 * 0.005 / 256``)."""
+    images = np.asarray(group, dtype=float) @ np.asarray(u, dtype=float)         # every copy of u
+    path = np.asarray(c.path, dtype=float)
+    a = path if c.shape == "closed" else path[:-1]
+    b = np.roll(path, -1, axis=0) if c.shape == "closed" else path[1:]
+    d = b - a
+    size = np.maximum(np.sum(d * d, axis=1), 1e-300)
+    w = np.clip(np.einsum("kj,mj->km", images, d) - np.sum(a * d, axis=1), 0.0, size) / size
+    gap = np.linalg.norm(images[:, None, :] - (a[None] + w[..., None] * d[None]), axis=2)
+    return bool(np.any(gap <= np.sqrt(size) / 8 + tol))
+
+
+def _joined(poly, a, b, s, scale, potential) -> bool:
+    """Whether the equilibria *a* and *b* (unit vectors, close) lie on one family: from the middle of the
+    chord between them, Newton's method (null directions left alone) settles on an equilibrium of the same
+    potential (to :data:`FLAT`) within a quarter of the chord.  Across a gap in a family (the long square
+    log at 1 - 0.0105466: a stable class between two arcs, its potential theirs to 1e-13) the gradient along
+    the family does not vanish and Newton's method either stops short or runs to the class."""
+    middle = (np.asarray(a) + np.asarray(b)) / 2
+    settled, ok = newton(poly, middle / np.linalg.norm(middle), s, scale)
+    return bool(ok and np.linalg.norm(settled.gradient) <= 1e-13 * scale and abs(settled.U - potential) <= FLAT * scale
+                and np.linalg.norm(settled.u - middle / np.linalg.norm(middle)) <= np.linalg.norm(np.subtract(b, a)) / 4)
+
+
 def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
     """Step along the null direction (by less than the distance to the nearest symmetric copy of
     the point, so a small ring around an axis is not jumped over) and let Newton settle: on a
@@ -394,21 +423,22 @@ def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
         other, ok = newton(poly, moved, s, scale)
         ok = ok and np.linalg.norm(other.gradient) <= 1e-13 * scale and np.linalg.norm(loc.gradient) <= 1e-13 * scale
         if ok and np.linalg.norm(other.u - loc.u) > delta / 3 and abs(other.U - loc.U) <= FLAT * scale \
-                and not same_class(other.u, loc.u, group, delta / 10):
+                and not same_class(other.u, loc.u, group, delta / 10) and _joined(poly, loc.u, other.u, s, scale, loc.U):
             return True
     return False
 
 
-def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, float, float, tuple]:
+def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, float, float, tuple, tuple]:
     """Walk along a ring from *u* (steps of ``delta`` along the null direction, Newton across) and
-    return ``("closed", length, error, (axis,))`` when the walk comes back to *u*, else ``("arc",
-    length, error, (end, end))``, the length in radians on the sphere (the chords between the points
-    walked; a closed walk adds the chord back to its start).  The error: a chord is shorter than its
+    return ``("closed", length, error, (axis,), path)`` when the walk comes back to *u*, else ``("arc",
+    length, error, (end, end), path)``, the length in radians on the sphere (the chords between the points
+    walked; a closed walk adds the chord back to its start) and the points walked in order along the
+    family (from one end to the other; round a closed ring from *u*).  The error: a chord is shorter than its
     arc by at most ``delta^3 / (24 R^2)`` on a circle of radius ``R``; an arc's end is located by
     halving the last step eight times, so each end lies within ``delta / 256`` past the point reached."""
     start = local(poly, u, s)
-    # a gap in the family narrower than the step is not seen; a ring around an axis is walked in steps of a
-    # quarter of its radius at most
+    # a gap in the family narrower than the step is seen where the middle of a step's chord falls in it
+    # (:func:`_joined`); a ring around an axis is walked in steps of a quarter of its radius at most
     axis = max(_nearest_axis(start.u, group), 1e-9)
     delta = min(0.005, _nearest_copy(start.u, group) / 4, axis / 4)
     max_steps = min(max_steps, int(8 * math.pi * axis / delta) + 16)     # twice round a circle of that radius
@@ -418,12 +448,15 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
         moved = float(np.linalg.norm(nxt.u - loc.u))
         good = ok and np.linalg.norm(nxt.gradient) <= 1e-13 * scale and abs(nxt.U - start.U) <= FLAT * scale \
             and moved >= h / 3 \
-            and min(abs(p[0]) for p in _tangent_eigen(nxt)) <= 1e-6 * scale
+            and min(abs(p[0]) for p in _tangent_eigen(nxt)) <= 1e-6 * scale \
+            and _joined(poly, loc.u, nxt.u, s, scale, start.U)
         return nxt, moved, good
 
-    total, ends, visited = 0.0, [], [start.u]
+    total, ends, visited, sides = 0.0, [], [start.u], []
     for direction in (1, -1):
         loc, previous = start, None
+        walked = []
+        sides.append(walked)
         for _ in range(max_steps):
             pairs = _tangent_eigen(loc)
             v = min(pairs, key=lambda p: abs(p[0]))[1]
@@ -440,10 +473,12 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
                     if good:
                         total += 2 * math.asin(min(1.0, moved / 2))
                         loc = nxt
+                        walked.append(loc.u)
                 ends.append(loc.u)
                 break
             previous, loc = loc.u, nxt
             visited.append(loc.u)
+            walked.append(loc.u)
             total += 2 * math.asin(min(1.0, moved / 2))
             if total > 2 * math.pi:             # longer than a great circle: not a walk along one family
                 ends.append(loc.u)
@@ -456,11 +491,13 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
                 points = np.array(visited)          # a circle on the sphere: the normal of its plane, towards it
                 axis = np.linalg.svd(points - points.mean(axis=0))[2][-1]
                 axis = axis if np.dot(axis, points.mean(axis=0)) > 0 else -axis
-                return "closed", total, total * (delta / radius) ** 2 / 24 + 1e-12, (axis,)
+                path = (start.u, *walked[:-1])      # the last point is the start again, to within delta / 2
+                return "closed", total, total * (delta / radius) ** 2 / 24 + 1e-12, (axis,), path
         else:
             ends.append(loc.u)
     radius = max(total / (2 * math.pi), delta)
-    return "arc", total, 2 * delta / 256 + total * (delta / radius) ** 2 / 24 + 1e-12, tuple(ends)
+    path = (*sides[1][::-1], start.u, *sides[0])
+    return "arc", total, 2 * delta / 256 + total * (delta / radius) ** 2 / 24 + 1e-12, tuple(ends), path
 
 
 def family_copies(shape: str, points, group, tol: float) -> int:
@@ -488,8 +525,12 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
         pairs = _tangent_eigen(loc)
         eigen = (float(pairs[0][0]), float(pairs[1][0]))
         lam_min = min(abs(e) for e in eigen)
-        near = [c for c in found if c.ring and abs(c.U - loc.U) <= 1e-10 * scale and lam_min < 1e-6 * scale]
-        if near:
+        # a point of a family already walked, or one just past its end that Newton's method does not resolve (the
+        # gradient not below 1e-13 of the size: the potential falls there by less than the rounding); a resolved
+        # point off the family is kept (the stable class between two arcs, their potential to 1e-13)
+        unresolved = float(np.linalg.norm(loc.gradient)) > 1e-13 * scale
+        if lam_min < 1e-6 * scale and any(c.ring and abs(c.U - loc.U) <= 1e-10 * scale
+                                          and on_family(loc.u, c, group, 1e-2 if unresolved else 5e-5) for c in found):
             continue
         ring = lam_min < 1e-6 * scale and _is_ring(poly, loc, pairs, s, scale, group)
         g = float(np.linalg.norm(loc.gradient))
@@ -498,14 +539,18 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
         if match and not ring and match[0].gradient <= g:
             continue
         found = [c for c in found if not any(c is m for m in match)]
-        found.append(Critical(representative(loc.u, group), loc.U, eigen, g, err, len(orbit(loc.u, group)), ring))
-    for c in found:
-        if c.ring:
-            c.shape, c.length, c.length_error, key = trace_family(poly, c.u, s, scale, group)
+        c = Critical(representative(loc.u, group), loc.U, eigen, g, err, len(orbit(loc.u, group)), ring)
+        if ring:
+            c.shape, c.length, c.length_error, key, c.path = trace_family(poly, c.u, s, scale, group)
             # a "ring" the walk cannot follow (or only for a few steps) is an isolated degenerate point
             c.ring = c.length >= (MIN_RING if c.shape == "closed" else MIN_FAMILY)
             if c.ring:
                 c.orbit = family_copies(c.shape, key, group, 1e-3)
+                c.axis = key[0] if c.shape == "closed" else None
+            else:
+                c.shape, c.length, c.length_error, c.path = "", 0.0, 0.0, ()
+        found.append(c)
+    for c in found:
         # a ring's error is across it (its tilt): the bound with its transverse eigenvalue
         c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps, group, found)
         if c.ring:      # a family's length scales with its radius, known to the error across it

@@ -21,7 +21,7 @@ import numpy as np
 
 from .local import local, tangent_step
 
-__all__ = ["symmetric_point", "winding", "degenerate_class", "flat_cluster"]
+__all__ = ["symmetric_point", "turning", "winding", "degenerate_class", "flat_cluster"]
 
 MAX_RADIUS = 3e-2
 NOISE = 1e-12           # relative to the size of the body: a gradient smaller than this is rounding
@@ -49,28 +49,40 @@ def _on_circle(poly, u, s, frame, rho, phi):
     return math.atan2(g[1], g[0]), float(np.linalg.norm(g)), loc.U
 
 
+def turning(evaluate, params, period: float, depth: int = 6):
+    """``(winding number, least |grad U|, least and largest U)`` of the gradient around a closed contour
+    with parameter ``t`` from ``params[0]`` to ``params[0] + period`` (counter-clockwise seen from outside
+    the sphere), first at *params*: the turning of its direction, each piece divided at its middle
+    wherever the direction turns by more than 45 degrees between its ends (at most *depth* times).
+    ``evaluate(ts)`` gives ``(angle, |grad U|, U)`` at the contour's points for a list of parameters, the
+    angle in one tangent frame for the whole contour (the centre's: the projection onto it is a
+    trivialisation of the tangent bundle over the disc the contour bounds)."""
+    values = evaluate(list(params))
+    pieces = [(params[i], params[i + 1] if i + 1 < len(params) else params[0] + period,
+               values[i], values[(i + 1) % len(params)], 0) for i in range(len(params))]
+    turn, least, potentials = 0.0, math.inf, []
+    while pieces:
+        split = []
+        for a, b, va, vb, level in pieces:
+            delta = (vb[0] - va[0] + math.pi) % (2 * math.pi) - math.pi
+            if abs(delta) > math.pi / 4 and level < depth:
+                split.append((a, b, va, vb, level))
+                continue
+            turn += delta
+            least = min(least, va[1])
+            potentials.append(va[2])
+        middles = evaluate([(a + b) / 2 for a, b, *_ in split]) if split else []
+        pieces = [piece for (a, b, va, vb, level), vm in zip(split, middles)
+                  for piece in ((a, (a + b) / 2, va, vm, level + 1), ((a + b) / 2, b, vm, vb, level + 1))]
+    return round(turn / (2 * math.pi)), least, (min(potentials), max(potentials))
+
+
 def winding(poly, u, s, rho: float, points: int = 24, depth: int = 6):
     """``(winding number, least |grad U|, least and largest U)`` of the gradient on the circle of radius
-    *rho* around *u*: the turning of its direction, the circle divided further wherever the direction
-    turns by more than 45 degrees between neighbours (at most *depth* times)."""
+    *rho* around *u* (:func:`turning`, from *points* equally spaced points)."""
     frame = local(poly, u, s).basis
-    angles = [2 * math.pi * k / points for k in range(points + 1)]
-    values = [_on_circle(poly, u, s, frame, rho, a) for a in angles[:-1]]
-    values.append(values[0])
-    turn, least, potentials = 0.0, math.inf, []
-    stack = [(angles[i], angles[i + 1], values[i], values[i + 1], 0) for i in range(points)][::-1]
-    while stack:
-        a, b, va, vb, level = stack.pop()
-        delta = (vb[0] - va[0] + math.pi) % (2 * math.pi) - math.pi
-        if abs(delta) > math.pi / 4 and level < depth:
-            mid = (a + b) / 2
-            vm = _on_circle(poly, u, s, frame, rho, mid)
-            stack += [(mid, b, vm, vb, level + 1), (a, mid, va, vm, level + 1)]
-            continue
-        turn += delta
-        least = min(least, va[1])
-        potentials.append(va[2])
-    return round(turn / (2 * math.pi)), least, (min(potentials), max(potentials))
+    return turning(lambda phis: [_on_circle(poly, u, s, frame, rho, phi) for phi in phis],
+                   [2 * math.pi * k / points for k in range(points)], 2 * math.pi, depth)
 
 
 def degenerate_class(poly, u, s, scale: float, others) -> tuple[int | None, str, float]:

@@ -2,7 +2,8 @@
 
 * cube, box, regular prism: Newton's method on the sphere from seeds covering
   the symmetry group's fundamental domain (:mod:`symfloat.solver.critical`),
-  completeness checked by the Poincaré–Hopf index sum;
+  completeness checked by the Poincaré–Hopf index sum, a ring or an arc of
+  equilibria counted with the winding round it (:mod:`symfloat.solver.families`);
 * section (long prism): the heel angle in the cross-section's plane, every
   root of ``U'`` (:mod:`symfloat.solver.planar`);
 * cylinder: the tilt in the meridian plane (the rotations about the axis are
@@ -38,6 +39,7 @@ from .cylinder import cylinder_slice
 from .errors import ROUNDING, STEP, eigenvalue_error, equilibrium_error
 from .critical import FLAT, MIN_FAMILY
 from .degenerate import degenerate_class, flat_cluster
+from .families import family_index, family_seeds
 from .local import local, waterplane_polygon
 from .planar import roots
 from .refine import planar_potential, planar_residual, polish_planar
@@ -208,55 +210,88 @@ def _classified(poly, points, s, scale, group):
 
 def _searched(poly, s, seeds, group, scale):
     """Critical points from *seeds*; when the Poincaré–Hopf sum fails, a second search (separatrices,
-    soft directions, small gradient: :func:`more_seeds`), then continuation from the neighbouring
-    densities ``s +- 1e-4`` (every critical point there, tracked to *s* by Newton's method).  Returns
-    the points with their classification, the searches made and the index sum (None with rings)."""
+    soft directions, small gradient: :func:`more_seeds`; next to every family, across it and past its ends:
+    :func:`family_seeds`), then continuation from the neighbouring densities ``s +- 1e-4 s(1 - s)`` (every
+    critical point there, tracked to *s* by Newton's method) and from the dual scene (the equilibria at
+    ``1 - s``, turned upside down: ``u -> -u``).  Returns the points with their classification, the
+    searches made and the index sum (None where it cannot be made)."""
     searches = ["seeds"]
     points = critical_points(poly, s, seeds, group, scale)
     classified = _classified(poly, points, s, scale, group)
     points = [c for c, _, _ in classified]
-    index = _index_sum(points)
+    index = _index_sum(poly, s, points, group, scale)
     if _holds(index, points, scale):
         return classified, searches, index
-    extra = [c.u for c in points] + more_seeds(poly, s, points, group, scale)
+    extra = [c.u for c in points] + more_seeds(poly, s, points, group, scale) + _near_families(points)
     points = critical_points(poly, s, extra, group, scale)
     classified = _classified(poly, points, s, scale, group)
     points = [c for c, _, _ in classified]
-    index = _index_sum(points)
-    searches.append("separatrices, soft directions and small gradient")
+    index = _index_sum(poly, s, points, group, scale)
+    searches.append("separatrices, soft directions, small gradient and next to families")
     if _holds(index, points):
         return classified, searches, index
-    for delta in (Fraction(1, 10 ** 4), -Fraction(1, 10 ** 4)):
-        near = s + delta * min(s, 1 - s)
+    step = Fraction(1, 10 ** 4) * min(s, 1 - s)
+    for near in (s + step, s - step) + ((1 - s,) if 1 - s != s else ()):
         there = critical_points(poly, near, seeds, group, scale)
-        extra += [c.u for c in there] + more_seeds(poly, near, there, group, scale)
+        found = [c.u for c in there] + more_seeds(poly, near, there, group, scale) + _near_families(there)
+        extra += [-u for u in found] if near == 1 - s else found
     points = critical_points(poly, s, extra, group, scale)
     classified = _classified(poly, points, s, scale, group)
     points = [c for c, _, _ in classified]
-    index = _index_sum(points)
-    searches.append("continuation from s +- 1e-4 s(1 - s)")
+    index = _index_sum(poly, s, points, group, scale)
+    searches.append("continuation from s +- 1e-4 s(1 - s) and from the dual scene at 1 - s")
     return classified, searches, index
 
 
-def _index_sum(points):
-    """The Poincaré–Hopf sum, or None where it does not apply (a ring) or cannot be made (a degenerate
-    point whose gradient on every circle around it is rounding: :attr:`Critical.flat`)."""
-    if any(c.ring or c.flat for c in points):
+def _near_families(points) -> list:
+    """Seeds next to every family among *points* (:func:`~symfloat.solver.families.family_seeds`)."""
+    return [v for c in points if c.ring for v in family_seeds(c)]
+
+
+def _index_sum(poly, s, points, group, scale):
+    """The Poincaré–Hopf sum, a family counted with the winding of the gradient round it
+    (:func:`~symfloat.solver.families.family_index`), or None where it cannot be made: a degenerate point
+    whose gradient on every circle around it is rounding (:attr:`Critical.flat`), a family whose curve
+    meets rounding or reaches too far."""
+    if any(c.flat for c in points):
+        return None
+    for c in points:
+        if c.ring and c.index is None:
+            c.index, _ = family_index(poly, s, c, _around(c, points, group), scale)
+    if any(c.ring and c.index is None for c in points):
         return None
     return poincare_hopf_sum(points)
 
 
+def _around(c, points, group) -> np.ndarray:
+    """Unit vectors of the equilibria round the family *c*: every copy of every other class (of a family,
+    its walked points), and the copies of *c* that are other families (their ends, or a closed ring's
+    axis, elsewhere)."""
+    G = np.asarray(group, dtype=float)
+    out = [np.einsum("kij,mj->kmi", G, np.asarray(o.path if o.ring else [o.u], dtype=float)).reshape(-1, 3)
+           for o in points if o is not c]
+    key = np.array([c.axis] if c.shape == "closed" else [c.path[0], c.path[-1]], dtype=float)
+    path = np.asarray(c.path, dtype=float)
+    for g in G:
+        image = key @ g.T
+        same = np.linalg.norm(image - key) <= 1e-3 or (
+            len(key) == 2 and np.linalg.norm(image[::-1] - key) <= 1e-3)
+        if not same:
+            out.append(path @ g.T)
+    return np.vstack(out) if out else np.zeros((0, 3))
+
+
 def _holds(index, points, scale: float = 0.0) -> bool:
-    """Whether the index check passes: the sum is 2, or there is a ring (the sum does not apply).  With
-    *scale*, also whether no isolated point is nearly degenerate (its smallest eigenvalue below
-    ``SOFT * scale`` but decided: next to a bifurcation, not at it) and none on an axis of order >= 3
-    is soft (:func:`_isotropic_soft`), where a ring of index 0 may be born beside it, which no index sum
-    sees: the search goes on there (soft directions, small gradient)."""
+    """Whether the index check passes: the sum (families included) is 2.  With *scale*, also whether no
+    isolated point is nearly degenerate (its smallest eigenvalue below ``SOFT * scale`` but decided: next to
+    a bifurcation, not at it) and none on an axis of order >= 3 is soft (:func:`_isotropic_soft`), where a
+    ring of index 0 may be born beside it, which no index sum sees: the search goes on there (soft
+    directions, small gradient)."""
     if scale and any(not c.ring and c.index is None and min(abs(e) for e in c.eigen) < SOFT * scale for c in points):
         return False
     if scale and any(not c.ring and _isotropic_soft(c, scale) for c in points):
         return False
-    return index == 2 or (index is None and not any(c.flat for c in points))
+    return index == 2
 
 
 def _isotropic_soft(c, scale: float) -> bool:
@@ -280,14 +315,24 @@ def _polyhedral(scene: Scene, seeds, group):
                               f"{tuple(round(float(x), 9) for x in flat.u)} cannot be decided (its gradient is "
                               f"rounding on the largest circle around it that encloses no other equilibrium) after {len(searches)} searches "
                               f"({'; '.join(searches)}): the Poincaré–Hopf check cannot be made")
-    if index not in (None, 2):
-        soft = [c for c, _, _ in classified if min(abs(e) for e in c.eigen) < 1e-2 * scale]
+    families = [c for c, _, _ in classified if c.ring]
+    named = "; families: " + ", ".join(
+        f"{'ring' if c.shape == 'closed' else 'arc'} through up {tuple(round(float(x), 6) for x in c.u)} x{c.orbit} "
+        f"(length {c.length:.4g} rad, index {'undecided' if c.index is None else c.index})"
+        for c in families) if families else ""
+    if index is None:
+        raise IndexCheckError(f"{_name(scene)}: the index of a family cannot be made (the gradient is rounding on "
+                              f"the curve round it, or the curve reaches more than 84 degrees from its middle) "
+                              f"after {len(searches)} searches ({'; '.join(searches)}): the Poincaré–Hopf check "
+                              f"cannot be made{named}")
+    if index != 2:
+        soft = [c for c, _, _ in classified if not c.ring and min(abs(e) for e in c.eigen) < 1e-2 * scale]
         near = "; next to a bifurcation (smallest eigenvalue below 1e-2 of the size): " + ", ".join(
             f"up {tuple(round(float(x), 6) for x in c.u)} x{c.orbit} (eigenvalues "
             f"{', '.join(f'{float(e):.2e}' for e in c.eigen)})" for c in soft) if soft else ""
         raise IndexCheckError(f"{_name(scene)}: the Poincaré–Hopf index sum of the equilibria found is {index}, "
                               f"not 2, after {len(searches)} searches ({'; '.join(searches)}): an equilibrium is "
-                              f"missing or mis-classified{near}")
+                              f"missing or mis-classified{near}{named}")
     out = []
     for c, stability, evidence in classified:
         loc = local(poly, c.u, s)
@@ -295,10 +340,9 @@ def _polyhedral(scene: Scene, seeds, group):
                                "ring" if c.ring else "isolated", c.U, _shape(waterplane_polygon(poly, loc.state), scale),
                                tuple(float(e) for e in c.eigen), c.error_rad, c.error_method, c.orbit,
                                c.shape, c.length, c.length_error, evidence, digits=c.digits))
-    families = index is None
     return out, {"poincare_hopf_index_sum": index, "expected_index_sum": 2, "seeds": len(seeds),
                  "searches": searches,
-                 **({"note": "one-parameter families present: the index sum does not apply"} if families else {})}
+                 **({"family_indices": [c.index for c in families]} if families else {})}
 
 
 def _name(scene: Scene) -> str:
