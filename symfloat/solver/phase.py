@@ -559,8 +559,9 @@ def _follow(poly, group, scale, thresholds, densities, stable_at=None) -> list[T
     ring born from an axis opens like ``sqrt(s - s*)`` (the long square log's ring around z: 0.8 degrees
     1e-6 past its birth), so Newton's method from the birth falls back onto the axis; it is started
     from the ring the solver finds at the first density past the birth (*stable_at*: density -> the
-    stable positions by label)."""
-    out = []
+    stable positions by label).  Positions born where a followed ring breaks (:func:`_ring_breaks`) are
+    followed in turn."""
+    out, born = [], []
     for t in thresholds:
         if not t.up:
             continue
@@ -573,7 +574,8 @@ def _follow(poly, group, scale, thresholds, densities, stable_at=None) -> list[T
         u0 = None
         # off a pitchfork's quartic flatness; farther where the second variation is still zero to rounding
         # there (born where the waterplane passes a vertex: lambda ~ (s - s*)^3, the cube's diagonal at (3 - sqrt 2)/7)
-        for offset in (max(4 * t.bracket, 1e-6), 1e-4, 1e-3):
+        # (or nearer, where the window is narrower than 1e-6: the long square log's diagonal positions)
+        for offset in (max(4 * t.bracket, 1e-6), 1e-7, 1e-4, 1e-3):
             start = t.density + toward * offset
             if (s_end - start) * toward <= 0:
                 break
@@ -593,6 +595,8 @@ def _follow(poly, group, scale, thresholds, densities, stable_at=None) -> list[T
             continue
         value, err, tilt, note, u = _locate_tracked(poly, group, scale, t.label, _Tracked(tuple(u0), family),
                                                     start, s_end)
+        if family == "ring" and stable_at is not None:
+            born += _ring_breaks(poly, group, scale, t.label, u0, start, value, stable_at)
         if abs(value - s_end) <= 2 * err + 1e-9:
             continue                                  # stable all the way
         end = Threshold(value, err, t.label, "stable below" if toward > 0 else "stable above", note=note)
@@ -601,6 +605,84 @@ def _follow(poly, group, scale, thresholds, densities, stable_at=None) -> list[T
             end.density, end.bracket = _fold(poly, group, _Tracked(tuple(u), "isolated"), value, err, start, scale)
             end.note = "a fold: the position meets another branch and both end; error estimated"
         out.append(end)
+    return out + born + (_follow(poly, group, scale, born, densities) if born else [])
+
+
+def _ring_mirrors(group, axis: int) -> list[np.ndarray]:
+    """Unit directions, perpendicular to the coordinate axis *axis*, of the mirror planes of the body
+    (reflections of *group*) that contain that axis."""
+    e = np.eye(3)[axis]
+    out = []
+    for g in group:
+        g = np.asarray(g, dtype=float)
+        if np.linalg.det(g) < 0 and abs(np.trace(g) - 1) < 1e-12 and np.linalg.norm(g @ e - e) < 1e-12:
+            w, vectors = np.linalg.eigh((g + g.T) / 2)
+            d = np.cross(e, vectors[:, int(np.argmin(w))])
+            out.append(d / np.linalg.norm(d))
+    return out
+
+
+def _mirror_ring_end(poly, group, scale, u, s0, s1, tol: float = 1e-11) -> float:
+    """The density between *s0* and *s1* where the point *u* of a ring, on a mirror plane and followed
+    within it (:func:`symmetric_newton`), stops being a point of the family (its null eigenvalue
+    leaves rounding, ``1e-9 * scale``), to *tol*: continuation whose step is halved where that fails
+    and doubles again (never beyond the first) where it holds, so that a ring that opens like
+    ``sqrt(s - s*)`` next to its birth is walked in steps that grow with it."""
+    lo, first = s0, (s1 - s0) / 8
+    step = first
+    while abs(step) > tol:
+        mid = lo + step
+        if (s1 - mid) * (s1 - s0) <= 0:
+            step /= 2
+            continue
+        loc, ok = symmetric_newton(poly, u, mid, scale, group)
+        w = loc.eigen()[0] if ok else (0.0, 0.0)
+        if ok and abs(min(w, key=abs)) <= 1e-9 * scale and max(w) > 0:
+            lo, u = mid, loc.u
+            step = min(2 * abs(step), abs(first)) * (1 if first > 0 else -1)
+        else:
+            step /= 2
+    return lo
+
+
+def _ring_breaks(poly, group, scale, label, u0, start, end, stable_at) -> list[Threshold]:
+    """Positions born where a ring breaks before its end: the ring's points on the body's other mirror
+    planes through its axis (the representative *u0*'s own is the one followed to *end*) are followed
+    from *start*; where one stops being a point of the family inside ``(start, end)``, the waterplane
+    passes a vertex there and the ring breaks into arcs, and a position may become stable beside it
+    with its eigenvalue rising like a power of ``s - s*`` (the long square log's diagonal positions,
+    born at 0.0105464799 inside its ring window 0.0105275 ... 0.0105655, stable for about 1e-6 and
+    seen by the solver only from about 5e-8 past the break).  The stable set is solved on the ring
+    before the break (half-way from *start*) and at 1e-7 ... 1e-5 past it (within the window), and a
+    new stable position is located by bisection with tracking."""
+    axis = int(np.argmax(np.abs(u0)))
+    r = math.hypot(*(u0[i] for i in range(3) if i != axis))
+    toward = 1.0 if end > start else -1.0
+    out, seen = [], []
+    for d in _ring_mirrors(group, axis):
+        v = u0[axis] * np.eye(3)[axis] + r * d
+        v = v / np.linalg.norm(v)
+        if same_class(v, u0, group, 1e-6) or any(same_class(v, w, group, 1e-6) for w in seen):
+            continue
+        seen.append(v)
+        loc, ok = symmetric_newton(poly, v, start, scale, group)
+        if not ok:
+            continue
+        e = _mirror_ring_end(poly, group, scale, loc.u, start, end)
+        if not (abs(e - start) > 1e-9 and abs(end - e) > 1e-9):
+            continue
+        before = (start + e) / 2
+        a = stable_at(before)
+        for delta in (1e-7, 1e-6, 1e-5):
+            after = e + toward * delta
+            if (end - after) * toward <= 0:
+                break
+            b = stable_at(after)
+            if set(b) - set(a) - {label}:
+                (sa, sa_set), (sb, sb_set) = sorted(((before, a), (after, b)), key=lambda x: x[0])
+                out += [x for x in _thresholds_between(poly, group, scale, sa_set, sb_set, sa, sb)
+                        if x.label != label]
+                break
     return out
 
 
