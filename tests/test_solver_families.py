@@ -29,6 +29,7 @@ from symfloat.solver.selfcheck import IndexCheckError
 from symfloat.solver.symmetry import box_group, same_class
 
 solve_module = importlib.import_module("symfloat.solver.solve")    # the module, not the function it exports
+families_module = importlib.import_module("symfloat.solver.families")
 DIAGONAL = np.array([0.123210, 0.984702, 0.123210])     # the stable class of the box 1 x 3/2 x 1 at 0.081949 (its dual)
 
 
@@ -80,6 +81,39 @@ def test_the_long_log_keeps_its_stable_diagonal_class_beside_the_arcs():
     assert abs(math.acos(abs(stable[0].up[2])) - _mirror_minimum((1, 1, 4), s, diagonal, 0.055, 0.062)) <= 1e-6
     arcs = [e for e in sol.equilibria if e.family == "ring"]
     assert len(arcs) == 1 and arcs[0].ring_shape == "arc" and sol.checks["family_indices"] == [-1]
+
+
+@pytest.mark.parametrize("x", ["0.0105465"])
+def test_the_long_log_7e_8_past_its_vertex_event_keeps_its_diagonal_class_on_both_sides(x):
+    # before: at 1 - 0.0105465 the stable diagonal class (soft eigenvalue 1.2e-10, decided: the arcs' is 5e-15)
+    # was walked as a point of one closed ring round the end face; ring (index 0), stable and saddle diagonal
+    # classes (+8 - 8) summed to 2, exit 0, while the dual 0.0105465 lists the arcs and the stable class
+    low, high = (solve(make_scene("box", s, "1,1,4")) for s in (Fraction(x), 1 - Fraction(x)))
+    group = box_group(low.scene.dims)
+    a, b = _stable_isolated(low), _stable_isolated(high)
+    assert len(a) == len(b) == 2 and all(any(same_class(-u, v, group, 1e-6) for v in b) for u in a)
+    for sol in (low, high):
+        assert [e.ring_shape for e in sol.equilibria if e.family == "ring"] == ["arc"]
+        assert sol.checks["family_indices"] == [-1] and sol.checks["poincare_hopf_index_sum"] == 2
+
+
+def test_the_gradient_above_one_half_is_the_dual_bodys():
+    # floating at s with up u is floating at 1 - s with up -u: grad U_s(u) = -(1 - s) / s grad U_(1 - s)(-u) and
+    # U_s(u) = (1 - s) / s U_(1 - s)(-u), from the clipped bodies at both densities (not from the identity)
+    body, s = box(1, 1, 4), 1 - 0.0105465
+    points = np.array([[0.05, 0.02, 0.998], [0.3, 0.1, 0.9], [0.6, 0.7, 0.1]])
+    points /= np.linalg.norm(points, axis=1)[:, None]
+    g, U = families_module._gradient(body, s)(points)          # evaluated at 1 - s, up -u
+    for p, gp, Up in zip(points, g, U):
+        state = floating_state(body, tuple(p), s)               # the body itself at s, up u
+        direct = np.asarray(state.G, dtype=float) - np.asarray(state.B, dtype=float)
+        direct -= (direct @ p) * p
+        k = np.linalg.norm(direct) / np.linalg.norm(gp)
+        # same direction, not reversed; to 1e-9: the direct float64 gradient near s = 1 is a difference of two
+        # centroids 4e-7 apart and keeps about 10 digits (2e-11 here), which is why the dual is evaluated
+        assert np.linalg.norm(direct - k * gp) <= 1e-9 * np.linalg.norm(direct)
+        assert k == pytest.approx((1 - s) / s, rel=1e-9)
+        assert float(state.potential) == pytest.approx(k * Up, rel=1e-9)
 
 
 @pytest.mark.parametrize("s", [Fraction("0.9194351"), Fraction("0.0805649")])
@@ -167,12 +201,12 @@ def _stable_isolated(sol):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("dims, densities", [
-    ("1,1,4", ["0.0105466", "0.0105467", "0.0105468", "0.010547", "0.0105473"]),       # vertex event 0.0105464
+    ("1,1,4", ["0.01054645", "0.0105466", "0.0105467", "0.0105468", "0.010547", "0.0105473"]),   # vertex event 0.0105464
     ("1,3/2,1", ["0.08191", "0.081925", "0.08194", "0.081949", "0.08196", "0.08198"]),
 ])
 def test_next_to_the_vertex_events_both_sides_agree(dims, densities):
-    # duality (u -> -u, same stability) scene by scene, from 2e-7 past the long log's vertex event (0.0105464:
-    # docs/numerics.md section 4; at 0.0105465 the 1 - s side still reports the ring closed) to past the fold
+    # duality (u -> -u, same stability) scene by scene, from 2e-8 past the long log's vertex event (0.0105464:
+    # docs/numerics.md section 4) to past the fold
     for x in densities:
         low, high = (solve(make_scene("box", s, dims)) for s in (Fraction(x), 1 - Fraction(x)))
         group = box_group(low.scene.dims)

@@ -406,6 +406,40 @@ def _joined(poly, a, b, s, scale, potential) -> bool:
                 and np.linalg.norm(settled.u - middle / np.linalg.norm(middle)) <= np.linalg.norm(np.subtract(b, a)) / 4)
 
 
+def _decided(poly, loc, s, scale, refine_dps: int = 30) -> bool:
+    """Whether an isolated equilibrium lies next to *loc* whose soft eigenvalue is not zero (along a family of
+    equilibria the potential is constant and that eigenvalue vanishes).  Decided where Newton–Kantorovich holds
+    with the soft eigenvalue, ``h = L |grad| / lambda^2 <= 1/2``, and the eigenvalue exceeds ten times its error
+    at the root (``L`` times the distance ``2 |grad| / lambda``, plus the rounding: 1e-12 of the size for the
+    float64 Hessian of the clipped body, 10^(5 - dps) at *refine_dps* digits and at twice that, where the point
+    is polished by Newton's method when float64 does not decide).  The long square log at 1 - 0.0105465, 7e-8 in s past its
+    vertex event: the stable diagonal class (1.1e-8 at 30 digits, 1.2e-12 at 3.2e-9 past the event) was walked
+    as a point of one closed ring; a point of a family polishes to an eigenvalue near 1e-18 with a residual
+    1e-23 and decides nothing.  Above s = 1/2 the Hessian is the dual body's at 1 - s, up ``-u``
+    (:func:`~symfloat.solver.families._gradient`): the same up to the factor (1 - s) / s, with the same
+    rounding in absolute terms."""
+    if s > 0.5:
+        loc, s = local(poly, -np.asarray(loc.u), 1 - s), 1 - s
+    lipschitz = 0.0
+    for v in loc.eigen()[1]:
+        plus, minus = (local(poly, tangent_step(np.asarray(loc.u), sign * STEP * v), s) for sign in (1, -1))
+        H = [x.basis @ x.hessian @ x.basis.T for x in (plus, minus)]
+        lipschitz = max(lipschitz, float(np.linalg.norm(H[0] - H[1], 2)) / (2 * STEP))
+
+    def isolated(residual, soft, rounding):
+        soft = abs(soft)
+        return soft > 0 and lipschitz * residual / soft ** 2 <= 0.5 \
+            and soft > 10 * (lipschitz * 2 * residual / soft + rounding)
+    if isolated(float(np.linalg.norm(loc.gradient)), min(loc.eigen()[0], key=abs), 1e-12 * scale):
+        return True
+    u = loc.u
+    for dps in (refine_dps, 2 * refine_dps):      # once more at twice the digits, closer still to the event
+        u, residual, eigen = polish(polyhedron_at(poly, dps), u, s, scale, steps=12)
+        if isolated(float(residual) + 10.0 ** (5 - dps) * scale, float(min(eigen, key=abs)), 10.0 ** (5 - dps) * scale):
+            return True
+    return False
+
+
 def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
     """Step along the null direction (by less than the distance to the nearest symmetric copy of
     the point, so a small ring around an axis is not jumped over) and let Newton settle: on a
@@ -424,18 +458,21 @@ def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
         ok = ok and np.linalg.norm(other.gradient) <= 1e-13 * scale and np.linalg.norm(loc.gradient) <= 1e-13 * scale
         if ok and np.linalg.norm(other.u - loc.u) > delta / 3 and abs(other.U - loc.U) <= FLAT * scale \
                 and not same_class(other.u, loc.u, group, delta / 10) and _joined(poly, loc.u, other.u, s, scale, loc.U):
-            return True
+            # unless its soft eigenvalue, small as it is, is decided: a minimum just born beside the family
+            return not _decided(poly, loc, s, scale)
     return False
 
 
-def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, float, float, tuple, tuple]:
+def trace_family(poly, u, s, scale, group, max_steps: int = 2000, barriers=()) -> tuple[str, float, float, tuple, tuple]:
     """Walk along a ring from *u* (steps of ``delta`` along the null direction, Newton across) and
     return ``("closed", length, error, (axis,), path)`` when the walk comes back to *u*, else ``("arc",
     length, error, (end, end), path)``, the length in radians on the sphere (the chords between the points
     walked; a closed walk adds the chord back to its start) and the points walked in order along the
     family (from one end to the other; round a closed ring from *u*).  The error: a chord is shorter than its
     arc by at most ``delta^3 / (24 R^2)`` on a circle of radius ``R``; an arc's end is located by
-    halving the last step eight times, so each end lies within ``delta / 256`` past the point reached."""
+    halving the last step eight times, so each end lies within ``delta / 256`` past the point reached.
+    *barriers*: unit vectors of isolated equilibria the family cannot pass through (a step whose chord comes
+    within a quarter of its length of one ends the walk there)."""
     start = local(poly, u, s)
     # a gap in the family narrower than the step is seen where the middle of a step's chord falls in it
     # (:func:`_joined`); a ring around an axis is walked in steps of a quarter of its radius at most
@@ -449,7 +486,7 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
         good = ok and np.linalg.norm(nxt.gradient) <= 1e-13 * scale and abs(nxt.U - start.U) <= FLAT * scale \
             and moved >= h / 3 \
             and min(abs(p[0]) for p in _tangent_eigen(nxt)) <= 1e-6 * scale \
-            and _joined(poly, loc.u, nxt.u, s, scale, start.U)
+            and _joined(poly, loc.u, nxt.u, s, scale, start.U) and _clear(loc.u, nxt.u, barriers, h / 4)
         return nxt, moved, good
 
     total, ends, visited, sides = 0.0, [], [start.u], []
@@ -498,6 +535,70 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000) -> tuple[str, 
     radius = max(total / (2 * math.pi), delta)
     path = (*sides[1][::-1], start.u, *sides[0])
     return "arc", total, 2 * delta / 256 + total * (delta / radius) ** 2 / 24 + 1e-12, tuple(ends), path
+
+
+def _clear(a, b, points, distance: float) -> bool:
+    """Whether the chord from *a* to *b* keeps farther than *distance* from each of *points*."""
+    if not len(points):
+        return True
+    a, d = np.asarray(a), np.subtract(b, a)
+    w = np.clip((np.asarray(points) - a) @ d / max(float(d @ d), 1e-300), 0.0, 1.0)
+    return bool(np.min(np.linalg.norm(np.asarray(points) - (a + w[:, None] * d), axis=1)) > distance)
+
+
+def _mirror_points(c, group) -> list[np.ndarray]:
+    """Where the walked closed ring *c* crosses a mirror plane of the body (a reflection of *group*): the
+    chord between two walked points on either side, cut by the plane, projected onto it."""
+    out = []
+    path = np.asarray(c.path, dtype=float)
+    following = np.roll(path, -1, axis=0)
+    for g in group:
+        g = np.asarray(g, dtype=float)
+        if not (np.linalg.det(g) < 0 and abs(np.trace(g) - 1) < 1e-12):
+            continue
+        w, vectors = np.linalg.eigh((g + g.T) / 2)
+        n = vectors[:, int(np.argmin(w))]
+        a, b = path @ n, following @ n
+        for k in np.nonzero(a * b < 0)[0]:
+            q = path[k] + a[k] / (a[k] - b[k]) * (following[k] - path[k])
+            q -= (q @ n) * n
+            out.append(q / np.linalg.norm(q))
+    return out
+
+
+def _broken_rings(poly, found, s, scale, group) -> None:
+    """A family cannot pass through a point where the potential is strictly convex or concave along it: a
+    closed ring is walked again, with such points as barriers, where it passes through an isolated class found
+    with a decided second variation (:func:`_decided`), or where one of its points on a mirror plane of the
+    body, settled within the mirror (:func:`symmetric_newton`), is such a class (then added).  The walk
+    crossed a gap narrower than its step there: the long square log just past its vertex event 0.0105464
+    (and its dual), where the stable diagonal class lies between arcs about the faces' directions and was
+    walked as one ring round the end face, whose index 0 hid both.  The ring becomes the arcs between those
+    points."""
+    G = np.asarray(group, dtype=float)
+    for c in [c for c in found if c.ring and c.shape == "closed"]:
+        barriers = [image for o in found if not o.ring for image in G @ np.asarray(o.u)
+                    if on_family(image, c, group, 1e-6) and _decided(poly, local(poly, image, s), s, scale)]
+        for q in _mirror_points(c, group):
+            if any(same_class(q, o.u, group, 1e-6) for o in found if not o.ring) \
+                    or any(np.linalg.norm(q - b) <= 1e-6 for b in barriers):
+                continue
+            loc, ok = symmetric_newton(poly, q, s, scale, group)
+            if ok and abs(loc.U - c.U) <= FLAT * scale and _decided(poly, loc, s, scale):
+                pairs = _tangent_eigen(loc)
+                g = float(np.linalg.norm(loc.gradient))
+                found.append(Critical(representative(loc.u, group), loc.U, (float(pairs[0][0]), float(pairs[1][0])),
+                                      g, 0.0, len(orbit(loc.u, group)), False))
+                barriers.extend(G @ loc.u)
+        if barriers:
+            barriers = np.array(barriers)
+            path = np.asarray(c.path, dtype=float)       # walked again from its point farthest from them
+            start = path[int(np.argmax(np.min(np.linalg.norm(path[:, None] - barriers[None], axis=2), axis=1)))]
+            c.shape, c.length, c.length_error, key, c.path = trace_family(poly, start, s, scale, group,
+                                                                          barriers=barriers)
+            c.u = representative(start, group)
+            c.orbit = family_copies(c.shape, key, group, 1e-3)
+            c.axis = key[0] if c.shape == "closed" else None
 
 
 def family_copies(shape: str, points, group, tol: float) -> int:
@@ -550,6 +651,7 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
             else:
                 c.shape, c.length, c.length_error, c.path = "", 0.0, 0.0, ()
         found.append(c)
+    _broken_rings(poly, found, s, scale, group)
     for c in found:
         # a ring's error is across it (its tilt): the bound with its transverse eigenvalue
         c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps, group, found)

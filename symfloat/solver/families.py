@@ -104,10 +104,20 @@ def contour_winding(curve, centre, gradient):
 
 def _gradient(poly, s):
     """The gradients (3-vectors) and potentials of *poly* at density *s* at an array of up vectors, evaluated
-    together (:func:`~symfloat.solver.edgewise.states`)."""
+    together (:func:`~symfloat.solver.edgewise.states`), up to a positive factor.  Above s = 1/2 they are
+    those of the dual body: the part below the waterplane at 1 - s with up ``-u`` is the complement of the part
+    at s with up ``u``, so ``grad U_s(u) = -(s' / s) grad U_s'(-u)`` and ``U_s(u) = (s' / s) U_s'(-u)`` with
+    ``s' = 1 - s`` (exact; checked in tests/test_solver_families.py).  At s near 1 the float64 gradient is the
+    small difference of two centroids that nearly coincide, at 1 - s it is not: the long square log at
+    1 - 0.0105465 has a gradient 100 times smaller than at 0.0105465, with the same rounding, and the winding
+    round its arcs was rounding there."""
+    dual = s > 0.5
+
     def gradient(points):
-        st = states(poly, points, s)
-        return np.einsum("mkj,mj->mk", st.basis, np.einsum("mkj,mk->mj", st.basis, st.G - st.B)), st.potential
+        points = -np.asarray(points, dtype=float) if dual else points
+        st = states(poly, points, 1 - s if dual else s)
+        g = np.einsum("mkj,mj->mk", st.basis, np.einsum("mkj,mk->mj", st.basis, st.G - st.B))
+        return (-g if dual else g), st.potential
     return gradient
 
 
@@ -125,6 +135,8 @@ def family_index(poly, s, c, others, scale: float) -> tuple[int | None, float]:
     of the family.  The index is None where the gradient on a curve is rounding or a curve reaches too far
     from its centre."""
     path = np.asarray(c.path, dtype=float)
+    if len(path) < 3 or np.min(np.linalg.norm(np.diff(path, axis=0), axis=1)) == 0:
+        return None, 0.0            # too few distinct walked points for a curve round it
     rho = min(MAX_RADIUS, _distance(path, others) / 3)
     if c.shape == "closed":
         rho = min(rho, c.length / (4 * math.pi))       # the inner curve stays on its side of the axis, found or not
