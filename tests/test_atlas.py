@@ -106,6 +106,9 @@ def test_index_and_sweep_checks_fail():
     rows = [_row(2, 3, 0, 0.1, 0.9, [FACE_X], index_sum=0, sweep_agrees=False)]
     checks = run_checks(rows, META)
     assert not _check(checks, "Poincaré").ok and not _check(checks, "sweep").ok
+    # a sample without a sum fails too: families count with their winding, so the sum always applies
+    assert not _check(run_checks([_row(2, 3, 0, 0.1, 0.9, [FACE_X], index_sum=None)], META), "Poincaré").ok
+    assert _check(run_checks([_row(2, 3, 0, 0.1, 0.9, [FACE_X])], META), "Poincaré").ok
 
 
 def test_long_box_check_against_the_printed_tables():
