@@ -36,10 +36,15 @@ def test_sources_are_found_from_their_metadata_files():
     # the five sources of shared/sources/INDEX.md, in its order, each found from <key>.source.json
     assert list(SOURCES) == ["scheeffer", "graefe", "euler", "metazentrum", "hasab"]
     assert SOURCES["euler"].locators == "the paragraph, e.g. §216"      # INDEX.md, numbering conventions
+    # the sections' headings come from the metadata files too (Scheeffer's "# IX." lines)
+    assert SOURCES["scheeffer"].sections and not SOURCES["hasab"].sections
 
 
 @pytest.mark.parametrize("change, message", [
-    (lambda m: m.pop("locators"), "the fields must be exactly"),
+    (lambda m: m.pop("locators"), "the fields must be"),
+    (lambda m: m.update(extra="x"), "the fields must be"),
+    (lambda m: m.update(sections="^(#"), "sections is not a regular expression"),
+    (lambda m: m.update(sections="^#+ [IVX]+"), "in one group"),
     (lambda m: m.update(year="1902"), "year has the wrong type"),
     (lambda m: m.update(key="other"), "must be named after its key"),
     (lambda m: m.update(file="missing.txt"), "no transcription missing.txt"),

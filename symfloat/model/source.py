@@ -4,12 +4,14 @@ The transcriptions ship with the package (``symfloat/sources``), copied byte
 for byte from the project's shared folder, so that every quoted excerpt can be
 checked verbatim on any installation.  A source is data: its transcription and
 a metadata file ``<key>.source.json`` beside it (key, author, title, year,
-language, file, how a place in it is cited).  Adding one adds two files and
-edits none.
+language, file, how a place in it is cited, and optionally ``sections``: a regular
+expression, one group, matching the heading lines that open its sections and
+capturing their names).  Adding one adds two files and edits none.
 """
 from __future__ import annotations
 
 import json
+import re
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
@@ -28,6 +30,7 @@ class Source:
     language: str
     filename: str
     locators: str = ""
+    sections: str = ""          # a heading line's pattern (one group: the section's name); "" for one section
 
     def text(self) -> str:
         """The full transcription, exactly as shipped."""
@@ -40,6 +43,7 @@ class Source:
 
 _FIELDS = {"key": str, "author": str, "title": str, "year": (int, type(None)), "language": str, "file": str,
            "locators": str}
+_OPTIONAL = {"sections": str}
 
 
 def _folders() -> list:
@@ -60,17 +64,25 @@ def _read(filename: str) -> str:
 
 def _source(name: str, data) -> Source:
     """A source from its metadata file *name*, every field present and of its type."""
-    if not isinstance(data, dict) or set(data) != set(_FIELDS):
-        raise ValueError(f"sources/{name}: the fields must be exactly {', '.join(_FIELDS)}")
-    for field, kind in _FIELDS.items():
-        if not isinstance(data[field], kind) or isinstance(data[field], bool):
+    if not isinstance(data, dict) or not set(_FIELDS) <= set(data) <= set(_FIELDS) | set(_OPTIONAL):
+        raise ValueError(f"sources/{name}: the fields must be {', '.join(_FIELDS)} (and optionally "
+                         f"{', '.join(_OPTIONAL)})")
+    for field, kind in {**_FIELDS, **_OPTIONAL}.items():
+        if field in data and (not isinstance(data[field], kind) or isinstance(data[field], bool)):
             raise ValueError(f"sources/{name}: {field} has the wrong type")
+    if data.get("sections"):
+        try:
+            groups = re.compile(data["sections"]).groups
+        except re.error as exc:
+            raise ValueError(f"sources/{name}: sections is not a regular expression ({exc})") from None
+        if groups != 1:
+            raise ValueError(f"sources/{name}: sections must capture the section's name in one group")
     if name != f"{data['key']}.source.json":
         raise ValueError(f"sources/{name}: the file must be named after its key, {data['key']}.source.json")
     if not any(f.joinpath(data["file"]).is_file() for f in _folders()):
         raise ValueError(f"sources/{name}: no transcription {data['file']}")
     return Source(data["key"], data["author"], data["title"], data["year"], data["language"], data["file"],
-                  data["locators"])
+                  data["locators"], data.get("sections", ""))
 
 
 def _discover() -> dict[str, Source]:

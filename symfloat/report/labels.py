@@ -48,8 +48,7 @@ _NOT_LABELS = {"I", "II", "III", "IV", "V", "VI", "VII", "VIII", "IX", "X", "D",
 def sections(source: str) -> list[tuple[int, str]]:
     """(start offset, name) of every section of *source*, in order."""
     text = get_source(source).text()
-    pattern = {"scheeffer": r"^#+\s*([IVX]+)\.\s*$", "graefe": r"^#+\s*§\.\s*(\d)\.", "euler": r"^§\.?\s*(\d{3})"
-               }.get(source)
+    pattern = get_source(source).sections          # its metadata file (sources/<key>.source.json)
     found = [(m.start(), m.group(1)) for m in re.finditer(pattern, text, re.M)] if pattern else []
     return [(0, "opening")] + found
 
