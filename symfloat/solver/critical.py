@@ -186,6 +186,16 @@ def _tangent_eigen(loc):
     return list(zip(w, vecs))
 
 
+def _lipschitz(poly, loc, s) -> float:
+    """A Lipschitz constant of the Hessian at *loc*: central differences of ``STEP`` along its eigenvectors."""
+    lipschitz = 0.0
+    for v in loc.eigen()[1]:
+        plus, minus = (local(poly, tangent_step(np.asarray(loc.u), sign * STEP * v), s) for sign in (1, -1))
+        H = [x.basis @ x.hessian @ x.basis.T for x in (plus, minus)]
+        lipschitz = max(lipschitz, float(np.linalg.norm(H[0] - H[1], 2)) / (2 * STEP))
+    return lipschitz
+
+
 def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), others=()) -> tuple[float, str, float]:
     """Distance bound (radians) to the true equilibrium (:func:`equilibrium_error`, the gradient
     re-evaluated at *refine_dps* digits) and the Hessian's Lipschitz constant (central differences
@@ -199,11 +209,7 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), ot
     10^(5 - refine_dps) * scale``, so that they still decide the stability.  A ring keeps its
     float64 point (the slope across it)."""
     exact = polyhedron_at(poly, refine_dps)
-    lipschitz = 0.0
-    for v in local(poly, c.u, s).eigen()[1]:        # eigenvectors at the representative itself
-        plus, minus = (local(poly, tangent_step(np.asarray(c.u), sign * STEP * v), s) for sign in (1, -1))
-        H = [x.basis @ x.hessian @ x.basis.T for x in (plus, minus)]
-        lipschitz = max(lipschitz, float(np.linalg.norm(H[0] - H[1], 2)) / (2 * STEP))
+    lipschitz = _lipschitz(poly, local(poly, c.u, s), s)       # eigenvectors at the representative itself
     if c.ring:
         residual = float(np.linalg.norm(gradient_at(exact, c.u, s)))
         c.eigen_error = lipschitz * residual / max(abs(e) for e in c.eigen) + 1e-14 * scale
@@ -420,11 +426,7 @@ def _decided(poly, loc, s, scale, refine_dps: int = 30) -> bool:
     rounding in absolute terms."""
     if s > 0.5:
         loc, s = local(poly, -np.asarray(loc.u), 1 - s), 1 - s
-    lipschitz = 0.0
-    for v in loc.eigen()[1]:
-        plus, minus = (local(poly, tangent_step(np.asarray(loc.u), sign * STEP * v), s) for sign in (1, -1))
-        H = [x.basis @ x.hessian @ x.basis.T for x in (plus, minus)]
-        lipschitz = max(lipschitz, float(np.linalg.norm(H[0] - H[1], 2)) / (2 * STEP))
+    lipschitz = _lipschitz(poly, loc, s)
 
     def isolated(residual, soft, rounding):
         soft = abs(soft)
