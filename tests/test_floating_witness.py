@@ -209,3 +209,11 @@ def test_a_root_along_the_density_a_guard_and_a_position_found_elsewhere():
     twice = Case({**LOG.params, L_: 2})
     w = rooted("immersed volume", "righting arm", case=twice, solve_at={L_: 1})
     assert abs(float(w.measure(twice, w.methods[0])) - 3.6) < 1e-12
+
+
+def test_witnesses_of_several_bodies_joined():
+    # the draughts of the box (s c = 2/5) and of the same box on its side (s a = 6/5), in one tuple
+    from symfloat.engine.floating_witness import Joined
+    parts = (witness("draught"), witness("draught", up=(1, 0, 0)))
+    w = Joined("two", "two", ("f",), (CASE,), parts=parts)
+    assert [float(v) for v in w.measure(CASE, w.methods[0])] == pytest.approx([0.4, 1.2], abs=1e-12)

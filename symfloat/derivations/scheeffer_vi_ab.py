@@ -19,8 +19,9 @@ import numpy as np
 import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
+from symfloat.engine.floating_witness import MEASURED, Body, FloatingWitness, Joined, RootWitness, waterplane_moment
 from symfloat.engine.witness import Case, Computed, Precision
-from symfloat.geometry.floating import (cylinder_state, floating_state, right_prism, submerged)
+from symfloat.geometry.floating import cylinder_state, floating_state, polygon_moments, right_prism
 from symfloat.model.claim import as_printed
 
 
@@ -1051,12 +1052,6 @@ def triangle_upright_gm(a_, b_, s_, dps):
     return mpmath.mpf(st.metacentric_height), mpmath.mpf(st.volume)
 
 
-def triangle_equilibrium(a_, b_, s_, w_, dps):
-    """tan(phi_1): the first root of the measured righting arm."""
-    phi = _root(lambda f: triangle_tilt(a_, b_, s_, w_, f, dps)[0], mpmath.mpf("0.02"), mpmath.mpf("0.05"))
-    return mpmath.tan(phi)
-
-
 def triangle_contact(a_, b_, s_, w_, dps, which=2, flip=False):
     """tan of the tilt at which the top (which=2) or bottom (3) base first meets the water."""
     phi = _root(lambda f: triangle_tilt(a_, b_, s_, w_, f, dps, flip)[which], mpmath.mpf("0.02"), mpmath.mpf("0.05"))
@@ -1071,94 +1066,87 @@ def tri_gm(case, dps):
     return _cached(("gm", tuple(case.params.items()), dps), lambda: triangle_upright_gm(*P(case, dps, a, b, s), dps))
 
 
-def tri_eq(case, dps):
-    return _cached(("eq", tuple(case.params.items()), dps),
-                   lambda: triangle_equilibrium(*P(case, dps, a, b, s, om), dps))
-
-
 def cw(name, description, targets, cases, compute, methods=None):
     kw = {} if methods is None else {"methods": methods}
     d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=compute, **kw))
 
 
-# (56): an isosceles trapezoid (symmetric about the Y axis, not regular), moments exact
-def _trapezoid():
-    pts = [(-2, 0), (2, 0), (1, 3), (-1, 3)]
-    A = sp.Rational(0)
-    cy = sp.Rational(0)
-    for (x1, y1), (x2, y2) in zip(pts, pts[1:] + pts[:1]):
-        c = sp.Rational(x1 * y2 - x2 * y1)
-        A += c / 2
-        cy += (y1 + y2) * c / 6
-    cy /= A
-    pts = [(sp.Rational(px), sp.Rational(py) - cy) for px, py in pts]
-    Jxx = Jyy = sp.Rational(0)
-    for (x1, y1), (x2, y2) in zip(pts, pts[1:] + pts[:1]):
-        c = x1 * y2 - x2 * y1
-        Jxx += (x1 ** 2 + x1 * x2 + x2 ** 2) * c / 12
-        Jyy += (y1 ** 2 + y1 * y2 + y2 ** 2) * c / 12
-    return pts, Jyy, Jxx          # T_x = int y^2, T_y = int x^2
+# ---- floating witnesses of the triangular prism (symfloat.engine.floating_witness) ------------------------
+# the triangle B C A of the text (edge a, centre O at the origin, A on the +Y axis), the prism of height b along z;
+# tilted by psi about the axis PQ at the angle omega with OB, the side n (vertex B's side) dipping
+PSI = sp.Symbol("psi")
+U_OM = sp.Matrix([sp.cos(om), sp.sin(om), 0])           # the normal of the axis at the angle omega (u of (44))
+N_DIP = sp.Matrix([-sp.sin(om), -sp.cos(om), 0])
+UP = sp.cos(PSI) * sp.Matrix([0, 0, 1]) - sp.sin(PSI) * N_DIP
+ARM = (sp.cos(PSI) * N_DIP + sp.sin(PSI) * sp.Matrix([0, 0, 1])).dot(
+    sp.Matrix([MEASURED[f"B - G, {k}"] for k in "xyz"]))  # B - G horizontally towards the dip: the righting arm
+TOP, BOT = MEASURED["upper base above water"], MEASURED["lower base above water"]
+GM, VOL = MEASURED["metacentric height"], MEASURED["immersed volume"]
+HALF = sp.Rational(1, 2)
 
 
-TRAP, TRAP_TX, TRAP_TY = _trapezoid()
+def _triangle(edge, height):
+    return Body.prism(((-edge / 2, -edge / (2 * sq3)), (edge / 2, -edge / (2 * sq3)), (0, edge / sq3)), height)
 
 
-def moment_about(points, angle, dps):
-    """int (x cos w + y sin w)^2 df: the polygon turned so that the axis normal becomes x, then the
-    central moment int x^2 of its clipped waterplane."""
-    c, sn = mpmath.cos(angle), mpmath.sin(angle)
-    pts = [(_n(px, dps) * c + _n(py, dps) * sn, -_n(px, dps) * sn + _n(py, dps) * c) for px, py in points]
-    wp = submerged(right_prism(pts, 1, _geo_dps(dps)), (0, 0, 1), 0).waterplane
-    return mpmath.mpf(wp.tensor[0][0])
+def fw(name, description, targets, cases, quantity, body=None, up=(0, 0, 1), density=s):
+    """A quantity of the floating prism (upright unless *up* is given)."""
+    d.witness(FloatingWitness(name, description, tuple(targets), tuple(cases), body=body or _triangle(a, b),
+                              up=tuple(up), density=density, quantity=quantity))
 
 
-cw("trapezoid-moments", "moment of a symmetric trapezoid about axes through its centroid (clipped waterplane)",
+def tilted(name, description, targets, cases, quantity, vanish=ARM, body=None, **kw):
+    """A quantity at the first zero of *vanish* (the righting arm: the tilted equilibrium) as the tilt grows."""
+    d.witness(_root_witness(name, description, targets, cases, quantity, vanish, body, **kw))
+
+
+def _root_witness(name, description, targets, cases, quantity, vanish, body=None, at=None, **kw):
+    """*at*: values of the example (the axis omega) put into the up vector and the quantities."""
+    put = (lambda e: sp.sympify(e).xreplace(at)) if at else (lambda e: e)     # noqa: E731
+    kw.setdefault("up", tuple(put(c) for c in UP))
+    kw.setdefault("along", PSI)
+    kw.setdefault("bracket", (sp.Rational(1, 50), sp.Rational(3, 2)))
+    kw.setdefault("steps", 30)
+    return RootWitness(name, description, tuple(targets), tuple(cases), body=body or _triangle(a, b),
+                       density=kw.pop("density", s), quantity=put(quantity), vanish=put(vanish), **kw)
+
+
+# (56): an isosceles trapezoid (symmetric about the Y axis, not regular); T_x = int y^2, T_y = int x^2 about its
+# centroid (polygon_moments, exact)
+TRAP = ((-2, 0), (2, 0), (1, 3), (-1, 3))
+_, _, ((TRAP_TY, _), (_, TRAP_TX)) = polygon_moments([(sp.Integer(x_), sp.Integer(y_)) for x_, y_ in TRAP])
+fw("trapezoid-moments", "moment of a symmetric trapezoid about axes through its centroid (clipped waterplane)",
    ("56",), [Case({Tx: TRAP_TX, Ty: TRAP_TY, om: w_}, label=f"omega = {w_}") for w_ in (sp.Rational(2, 5), 1)],
-   lambda case, dps: moment_about(TRAP, _n(case.params[om], dps), dps))
-
-
-def _ngon_points(n, side, dps):
-    R = side / (2 * mpmath.sin(mpmath.pi / n))
-    return [(R * mpmath.cos(2 * mpmath.pi * k / n), R * mpmath.sin(2 * mpmath.pi * k / n)) for k in range(n)]
-
-
-cw("regular-polygon-moments", "moments of regular polygons about a turned axis (clipped waterplane)",
-   ("regular-polygon-theorem",), [Case({a: 1, om: sp.Rational(1, 3)}), Case({a: sp.Rational(3, 2), om: 1})],
-   lambda case, dps: tuple(moment_about(_ngon_points(n, _n(case.params[a], dps), dps), _n(case.params[om], dps), dps)
-                           for n in NGONS))
+   waterplane_moment(U_OM, U_OM), body=Body.prism(TRAP, 1), density=HALF)
+d.witness(Joined("regular-polygon-moments", "moments of regular polygons about a turned axis (clipped waterplane)",
+                 ("regular-polygon-theorem",),
+                 (Case({a: 1, om: sp.Rational(1, 3)}), Case({a: sp.Rational(3, 2), om: 1})),
+                 parts=tuple(FloatingWitness(f"{n}-gon", "", (), (), body=Body.regular(n, a, 1), density=HALF,
+                                             quantity=waterplane_moment(U_OM, U_OM)) for n in NGONS)))
 
 up_cases = [Case({a: 1, b: 1, s: sp.Rational(1, 2)}, label="labile"), Case({a: 2, b: 1, s: sp.Rational(4, 5)}, label="stable"),
             Case({a: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 4)})]
-cw("triangle-upright-57", "24 s/b times the metacentric height of the clipped upright prism", ("57", "65-I"), up_cases,
-   lambda case, dps: 24 * _n(case.params[s], dps) / _n(case.params[b], dps) * tri_gm(case, dps)[0])
-cw("triangle-upright-58", "2 s/b times the metacentric height of the clipped upright prism", ("58",), up_cases,
-   lambda case, dps: 2 * _n(case.params[s], dps) / _n(case.params[b], dps) * tri_gm(case, dps)[0])
-cw("triangle-upright-moment", "displacement times metacentric height (clipped upright prism)",
-   ("triangle-condition",), up_cases, lambda case, dps: tri_gm(case, dps)[0] * tri_gm(case, dps)[1])
+fw("triangle-upright-57", "24 s/b times the metacentric height of the clipped upright prism", ("57", "65-I"), up_cases,
+   24 * s / b * GM)
+fw("triangle-upright-58", "2 s/b times the metacentric height of the clipped upright prism", ("58",), up_cases,
+   2 * s / b * GM)
+fw("triangle-upright-moment", "displacement times metacentric height (clipped upright prism)",
+   ("triangle-condition",), up_cases, VOL * GM)
 
 tilt_cases = [Case({a: sp.Rational(83, 50), b: 1, s: sp.Rational(11, 20), om: sp.Rational(1, 5)}, label="II, s > 1/2"),
               Case({a: sp.Rational(33, 20), b: 1, s: sp.Rational(2, 5), om: sp.Rational(9, 10)}, label="II, s < 1/2")]
-cw("triangle-tilted-equilibrium", "tan of the tilt where the righting arm of the clipped prism vanishes",
-   ("60-tan", "ex3-tan"), tilt_cases, tri_eq)
-cw("triangle-tilted-equilibrium-squared", "the same, squared", ("65-tan",), tilt_cases, lambda c, p: tri_eq(c, p) ** 2)
+tilted("triangle-tilted-equilibrium", "tan of the tilt where the righting arm of the clipped prism vanishes",
+       ("60-tan", "ex3-tan"), tilt_cases, sp.tan(PSI))
+tilted("triangle-tilted-equilibrium-squared", "the same, squared", ("65-tan",), tilt_cases, sp.tan(PSI) ** 2)
 lim_cases = [Case({a: 1, b: 1, s: sp.Rational(3, 5), om: sp.Rational(3, 10)}),
              Case({a: sp.Rational(3, 2), b: 2, s: sp.Rational(7, 10), om: 1})]
-
-
-def tri_top(case, dps):
-    return _cached(("top", tuple(case.params.items()), dps),
-                   lambda: triangle_contact(*P(case, dps, a, b, s, om), dps, which=2))
-
-
-cw("triangle-top-contact", "tan of the tilt at which the clipped prism's top base meets the water",
-   ("60-bound",), lim_cases, tri_top)
-cw("triangle-top-contact-distance", "b(1-s) over the measured contact tangent: the distance of the dipping vertex",
-   ("59",), lim_cases,
-   lambda case, dps: _n(case.params[b], dps) * (1 - _n(case.params[s], dps)) / tri_top(case, dps))
-cw("triangle-first-contact", "tan of the tilt at which either base of the clipped prism meets the water",
-   ("60-one-base",), [Case({}, label="a = b = 1, s = 3/5, omega = 0")],
-   lambda case, dps: min(triangle_contact(1, 1, mpmath.mpf(3) / 5, 0, dps, which=2),
-                         triangle_contact(1, 1, mpmath.mpf(3) / 5, 0, dps, which=3)))
+tilted("triangle-top-contact", "tan of the tilt at which the clipped prism's top base meets the water",
+       ("60-bound",), lim_cases, sp.tan(PSI), TOP)
+tilted("triangle-top-contact-distance", "b(1-s) over the measured contact tangent: the distance of the dipping vertex",
+       ("59",), lim_cases, b * (1 - s) / sp.tan(PSI), TOP)
+tilted("triangle-first-contact", "tan of the tilt at which either base of the clipped prism meets the water",
+       ("60-one-base",), [Case({}, label="a = b = 1, s = 3/5, omega = 0")], sp.tan(PSI), sp.Min(TOP, -BOT),
+       body=_triangle(1, 1), density=sp.Rational(3, 5), at={om: 0})
 
 
 # ---- the cylinder: quadrature of the defining integrals over the disc (x = r sin(theta)) ---------------
@@ -1217,47 +1205,32 @@ cw("cylinder-tilted-equilibrium", "tan^2 of the tilt where the quadrature righti
 one = [Case({}, label="the example's data")]
 
 
-def ex1_ratio_geo(dps):
-    return _root(lambda q_: triangle_upright_gm(q_, 1, mpmath.mpf(4) / 5, dps)[0], mpmath.mpf("1.2"), mpmath.mpf("0.05"))
+# the examples' data are in the bodies: a root along the aspect ratio Q = a/b (b = 1) or along the density
+Q = sp.Symbol("Q", positive=True)
+tilted("example-1", "a/b at which the clipped upright prism (s = 0.8) has zero metacentric height",
+       ("ex1-root", "ex1-value"), one, Q, GM, body=_triangle(Q, 1), up=(0, 0, 1), density=sp.Rational(4, 5), along=Q,
+       bracket=(sp.Rational(6, 5), 2), steps=16)
+for nm, description, tg, quantity, lo, hi in (
+        ("example-2-upper", "density of zero metacentric height, a = b (clipped prism), upper", "ex2-upper", s,
+         HALF, sp.Rational(99, 100)),
+        ("example-2-lower", "the same, lower", "ex2-lower", s, sp.Rational(1, 100), HALF),
+        ("example-2-root", "2 s_+ - 1 from the measured density", "ex2-root-value", 2 * s - 1, HALF,
+         sp.Rational(99, 100)),
+        ("example-2-radicand", "2 s_+ - 1, the root of the radicand, from the measured density", "ex2-two-thirds",
+         2 * s - 1, HALF, sp.Rational(99, 100))):
+    tilted(nm, description, (tg,), one, quantity, GM, body=_triangle(1, 1), up=(0, 0, 1), along=s, bracket=(lo, hi),
+           steps=49)
 
 
-cw("example-1", "a/b at which the clipped upright prism (s = 0.8) has zero metacentric height", ("ex1-root", "ex1-value"),
-   one, lambda case, dps: _cached(("ex1", dps), lambda: ex1_ratio_geo(dps)))
+tilted("example-3-angle", "equilibrium tilt of the clipped prism at s = 2/3, a/b = sqrt(5/2), degrees", ("ex3-angle",),
+       one, 180 * PSI / pi, body=_triangle(sp.sqrt(Q60_3), 1), density=sp.Rational(2, 3), at={om: pi / 3})
 
 
-def ex2_roots(dps):
-    f = lambda s_: triangle_upright_gm(1, 1, s_, dps)[0]
-    return _root(f, mpmath.mpf("0.5"), mpmath.mpf("0.05")), _root(f, mpmath.mpf("0.01"), mpmath.mpf("0.02"))
-
-
-ex2 = lambda dps: _cached(("ex2", dps), lambda: ex2_roots(dps))
-cw("example-2-upper", "density of zero metacentric height, a = b (clipped prism), upper", ("ex2-upper",), one,
-   lambda c, dps: ex2(dps)[0])
-cw("example-2-lower", "the same, lower", ("ex2-lower",), one, lambda c, dps: ex2(dps)[1])
-cw("example-2-root", "2 s_+ - 1 from the measured density", ("ex2-root-value",), one, lambda c, dps: 2 * ex2(dps)[0] - 1)
-cw("example-2-radicand", "2 s_+ - 1, the root of the radicand, from the measured density", ("ex2-two-thirds",), one,
-   lambda c, dps: 2 * ex2(dps)[0] - 1)
-
-
-def ex3_angle(dps):
-    q_ = mpmath.sqrt(_n(Q60_3, dps))
-    return mpmath.degrees(mpmath.atan(triangle_equilibrium(q_, 1, mpmath.mpf(2) / 3, mpmath.pi / 3, dps)))
-
-
-cw("example-3-angle", "equilibrium tilt of the clipped prism at s = 2/3, a/b = sqrt(5/2), degrees", ("ex3-angle",), one,
-   lambda c, dps: ex3_angle(dps))
-
-
-def ex4_check(dps):
-    """At s = 7/11, a/b = 12 sqrt2/11, omega = 15 deg: the measured equilibrium tangent and the tangent at which the
-    top vertex meets the water (both tan 30 deg for the example's answer)."""
-    q_ = 12 * mpmath.sqrt(2) / 11
-    s_ = mpmath.mpf(7) / 11
-    return triangle_equilibrium(q_, 1, s_, mpmath.pi / 12, dps), triangle_contact(q_, 1, s_, mpmath.pi / 12, dps)
-
-
-cw("example-4", "clipped prism at the example's answer: equilibrium and contact tangents (omega = 15 deg)", ("67",),
-   [Case({a: 12 * sp.sqrt(2) / 11, b: 1, s: sp.Rational(7, 11)})], lambda c, dps: ex4_check(dps))
+EX4 = {"body": _triangle(12 * sp.sqrt(2) / 11, 1), "density": sp.Rational(7, 11), "at": {om: pi / 12}}
+d.witness(Joined("example-4",
+                 "clipped prism at the example's answer: equilibrium and contact tangents (omega = 15 deg)", ("67",), (Case({a: 12 * sp.sqrt(2) / 11, b: 1, s: sp.Rational(7, 11)}),),
+                 parts=(_root_witness("equilibrium", "", (), (), sp.tan(PSI), ARM, **EX4),
+                        _root_witness("top contact", "", (), (), sp.tan(PSI), TOP, **EX4))))
 cw("example-5", "2r/b at which the upright cylinder (s = 1/2) has zero metacentric height (quadrature)", ("ex5", "sqrt2"),
    one, lambda c, dps: 2 * _root(lambda r_: cylinder_gm(r_, 1, mpmath.mpf(1) / 2, dps), mpmath.mpf("0.5"), mpmath.mpf("0.05")))
 
@@ -1312,18 +1285,11 @@ cw("example-10-dry-cm", "the part above water in cm", ("ex10-dry-cm",), one,
    lambda c, dps: 100 * (mpmath.mpf("2.5") - ex10c(dps)[1]))
 
 
-def ex_III_delta(dps):
-    """At s = 11/20, (a/b)^2 = 11/5 (region III): the righting arm of the clipped prism at the first contact of
-    a base, for the axis omega_x (where both contacts coincide)."""
-    q_, s_ = mpmath.sqrt(mpmath.mpf(11) / 5), mpmath.mpf(11) / 20
-    w_ = mpmath.atan((2 - 3 * s_) / (mpmath.sqrt(3) * s_))
-    top = triangle_contact(q_, 1, s_, w_, dps, which=2)
-    bottom = triangle_contact(q_, 1, s_, w_, dps, which=3)
-    return triangle_tilt(q_, 1, s_, w_, mpmath.atan(min(top, bottom)), dps)[0]
-
-
-cw("region-III-counterexample", "righting arm at the first base contact, clipped prism", ("65-III-claim",),
-   one, lambda c, dps: ex_III_delta(dps))
+# at s = 11/20, (a/b)^2 = 11/5 (region III): the righting arm of the clipped prism at the first contact of a base,
+# for the axis omega_x where both contacts coincide
+tilted("region-III-counterexample", "righting arm at the first base contact, clipped prism", ("65-III-claim",),
+       one, ARM, sp.Min(TOP, -BOT), body=_triangle(sp.sqrt(sp.Rational(11, 5)), 1), density=sp.Rational(11, 20),
+       at={om: sp.atan((2 - 3 * sp.Rational(11, 20)) / (sq3 * sp.Rational(11, 20)))})
 
 
 # =====================================================================================================

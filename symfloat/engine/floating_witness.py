@@ -422,3 +422,19 @@ class RootWitness(FloatingWitness):
                     raise ValueError(f"witness {self.name}: {item} is not positive at the zero ({case.label})")
             params = {**case.params, self.along: root}
         return super().measure(Case(params, case.data, case.label), method)
+
+
+@dataclass(frozen=True)
+class Joined(MeasuredWitness):
+    """Several floating witnesses (``parts``, each with its own body) measured at the same case, their values
+    joined into one tuple: for a reading that lists quantities of different bodies."""
+
+    parts: tuple = ()
+    methods: tuple = FLOATING_METHODS
+
+    def measure(self, case, method):
+        out = []
+        for part in self.parts:
+            value = part.measure(case, method)
+            out.extend(value if isinstance(value, tuple) else (value,))
+        return tuple(out)
