@@ -217,3 +217,14 @@ def test_witnesses_of_several_bodies_joined():
     parts = (witness("draught"), witness("draught", up=(1, 0, 0)))
     w = Joined("two", "two", ("f",), (CASE,), parts=parts)
     assert [float(v) for v in w.measure(CASE, w.methods[0])] == pytest.approx([0.4, 1.2], abs=1e-12)
+
+
+def test_a_zero_found_inside_another():
+    # the height H at which the zero of the arm (tan^2 = 3 H^2/4 - 2 by the wall-sided formula, W = 2) reaches the
+    # upper base's contact (tan = H/2): 3 H^2/4 - 2 = H^2/4, H = 2 (the inner zero along the tilt, the outer along H)
+    inner = rooted(MEASURED["upper base above water"], "righting arm")
+    outer = RootWitness("H", "H", ("f",), (LOG,), body=Body.box(L_, W_, 1), density=S, quantity=H_, along=H_,
+                        vanish=inner, bracket=(sp.Rational(17, 10), sp.Rational(23, 10)), steps=6)
+    assert abs(float(outer.measure(LOG, outer.methods[0])) - 2) < 1e-12
+    with mpmath.workdps(50):
+        assert abs(outer.measure(LOG, outer.methods[1]) - 2) < 1e-30

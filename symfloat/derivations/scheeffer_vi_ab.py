@@ -21,7 +21,7 @@ import sympy as sp
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
 from symfloat.engine.floating_witness import MEASURED, Body, FloatingWitness, Joined, RootWitness, waterplane_moment
 from symfloat.engine.witness import Case, Computed, Precision
-from symfloat.geometry.floating import cylinder_state, floating_state, polygon_moments, right_prism
+from symfloat.geometry.floating import cylinder_state, polygon_moments
 from symfloat.model.claim import as_printed
 
 
@@ -994,14 +994,6 @@ def _n(v, dps):
     return mpmath.mpf(sp.N(sp.sympify(v), dps + 10)) if dps > 15 else mpmath.mpf(float(sp.sympify(v)))
 
 
-def _geo_dps(dps):
-    return None if dps <= 15 else dps
-
-
-def _dot(p, q):
-    return sum(x * y for x, y in zip(p, q))
-
-
 def _root(f, lo, step):
     """The first sign change of f above lo (scanned with the given step), refined by a bracketing solver."""
     lo = mpmath.mpf(lo)
@@ -1023,47 +1015,8 @@ def _cached(key, fn):
     return _CACHE[key]
 
 
-def triangle_prism(a_, b_, dps):
-    t = mpmath.sqrt(3)
-    pts = [(-a_ / 2, -a_ / (2 * t)), (a_ / 2, -a_ / (2 * t)), (mpmath.mpf(0), a_ / t)]
-    return right_prism(pts, b_, _geo_dps(dps))
-
-
-def triangle_tilt(a_, b_, s_, w_, phi, dps, flip=False):
-    """Clipped triangular prism (axis z, G at the origin) tilted by phi about the axis PQ at omega = w_;
-    the vertex B side n dips (flip: rises).  Returns the righting arm, the arm along the axis, the top
-    clearance (lowest top vertex above water) and the bottom clearance (highest bottom vertex above water)."""
-    poly = triangle_prism(a_, b_, dps)
-    sgn = -1 if flip else 1
-    n = (-sgn * mpmath.sin(w_), -sgn * mpmath.cos(w_), mpmath.mpf(0))
-    p = (-mpmath.cos(w_), mpmath.sin(w_), mpmath.mpf(0))
-    up = tuple(-mpmath.sin(phi) * n[k] + (mpmath.cos(phi) if k == 2 else 0) for k in range(3))
-    w = tuple(mpmath.cos(phi) * n[k] + (mpmath.sin(phi) if k == 2 else 0) for k in range(3))
-    st = floating_state(poly, up, s_)
-    BG = tuple(mpmath.mpf(st.B[k]) - mpmath.mpf(st.G[k]) for k in range(3))
-    top = [v for v in poly.vertices if v[2] > 0]
-    bot = [v for v in poly.vertices if v[2] < 0]
-    t = mpmath.mpf(st.t)
-    return (_dot(w, BG), _dot(p, BG), min(_dot(up, v) for v in top) - t, max(_dot(up, v) for v in bot) - t, st)
-
-
-def triangle_upright_gm(a_, b_, s_, dps):
-    st = floating_state(triangle_prism(a_, b_, dps), (0, 0, 1), s_)
-    return mpmath.mpf(st.metacentric_height), mpmath.mpf(st.volume)
-
-
-def triangle_contact(a_, b_, s_, w_, dps, which=2, flip=False):
-    """tan of the tilt at which the top (which=2) or bottom (3) base first meets the water."""
-    phi = _root(lambda f: triangle_tilt(a_, b_, s_, w_, f, dps, flip)[which], mpmath.mpf("0.02"), mpmath.mpf("0.05"))
-    return mpmath.tan(phi)
-
-
 def P(case, dps, *syms):
     return [_n(case.params[k], dps) for k in syms]
-
-
-def tri_gm(case, dps):
-    return _cached(("gm", tuple(case.params.items()), dps), lambda: triangle_upright_gm(*P(case, dps, a, b, s), dps))
 
 
 def cw(name, description, targets, cases, compute, methods=None):
@@ -1102,7 +1055,7 @@ def tilted(name, description, targets, cases, quantity, vanish=ARM, body=None, *
 
 def _root_witness(name, description, targets, cases, quantity, vanish, body=None, at=None, **kw):
     """*at*: values of the example (the axis omega) put into the up vector and the quantities."""
-    put = (lambda e: sp.sympify(e).xreplace(at)) if at else (lambda e: e)     # noqa: E731
+    put = (lambda e: e.xreplace(at) if at and isinstance(e, sp.Basic) else e)     # noqa: E731
     kw.setdefault("up", tuple(put(c) for c in UP))
     kw.setdefault("along", PSI)
     kw.setdefault("bracket", (sp.Rational(1, 50), sp.Rational(3, 2)))
@@ -1295,28 +1248,6 @@ tilted("region-III-counterexample", "righting arm at the first base contact, cli
 # =====================================================================================================
 # Witnesses for the limits (61)-(65), (71)-(73) and examples 3, 4, 8, 9
 # =====================================================================================================
-def _polish(fs, x0, dps):
-    """Refine a float solution x0 of the system fs (functions of the same unknowns) at dps digits: Newton steps
-    with a forward-difference Jacobian (step 1e-(dps/2))."""
-    if dps <= 15:
-        return x0
-    x = [mpmath.mpf(v) for v in x0]
-    h = mpmath.mpf(10) ** (-(dps // 2))
-    for _ in range(8):
-        F = fs(*x)
-        cols = []
-        for j in range(len(x)):
-            xj = list(x)
-            xj[j] += h
-            cols.append([(fj - f0) / h for fj, f0 in zip(fs(*xj), F)])
-        J = mpmath.matrix([[cols[j][i] for j in range(len(x))] for i in range(len(x))])
-        dx = mpmath.lu_solve(J, mpmath.matrix(F))
-        x = [xi - dx[i] for i, xi in enumerate(x)]
-        if max(abs(v) for v in dx) < mpmath.mpf(10) ** (-dps - 3):
-            break
-    return tuple(x)
-
-
 def two_stage(make, lo, step, dps, bracket=None):
     """Root of make(dps): located at float precision (scan from lo, or the bracket), then refined by secant steps."""
     with mpmath.workdps(15):
@@ -1328,76 +1259,58 @@ def two_stage(make, lo, step, dps, bracket=None):
     return mpmath.findroot(make(dps), (x0, x0 * (1 + mpmath.mpf(10) ** -9)), solver="secant")
 
 
-def _tri_at(q_, s_, w_, phi, dps, flip):
-    return _cached(("tt", q_, s_, w_, phi, dps, flip), lambda: triangle_tilt(mpmath.sqrt(q_), 1, s_, w_, phi, dps, flip))
+def _boundary(s_value, quantity, which, *declared):
+    """The (a/b)^2 = Q (b = 1) at which the clipped prism's tilted equilibrium reaches the contact of a base for
+    the axis omega = 60 deg: the zero along Q of the righting arm read at the first contact (which = TOP: the
+    upper base, vertex B dipping; BOT: the lower base, B rising).  *quantity* is read there, an expression in Q
+    and the case (the upright body at that Q serves only to read it); *declared*: name, description, targets,
+    cases of a witness of its own."""
+    flip = {om: pi / 3} if which == TOP else {om: pi / 3 + pi}      # B rising: the axis turned half round
+    contact = _root_witness("contact", "", (), (), ARM, which, body=_triangle(sp.sqrt(Q), 1), density=s_value, at=flip)
+    return _root_witness(*(declared or ("boundary", "", (), ())), quantity, contact, body=_triangle(sp.sqrt(Q), 1),
+                         density=s_value, along=Q, up=(0, 0, 1), steps=8,
+                         bracket=(6 * s_value * (1 - s_value), 12 * s_value * (1 - s_value) * 999 / 1000))
 
 
-def clipped_boundary(s_, w_, which, flip, dps):
-    """(a/b)^2 (b = 1) at which the clipped prism's tilted equilibrium reaches the contact of a base (which = 2:
-    top, 3: bottom) for the axis w_: the righting arm at the contact tilt vanishes.  Float: nested roots with
-    scanning; more digits: Newton on (righting arm, clearance) from the float solution."""
-    def key():
-        with mpmath.workdps(15):
-            sf, wf = mpmath.mpf(float(s_)), mpmath.mpf(float(w_))
-            qh = 12 * sf * (1 - sf)
-            def arm_at_contact(q_):
-                t_ = triangle_contact(mpmath.sqrt(q_), 1, sf, wf, 15, which, flip)
-                return triangle_tilt(mpmath.sqrt(q_), 1, sf, wf, mpmath.atan(t_), 15, flip)[0]
-            q0 = mpmath.findroot(arm_at_contact, (qh / 2, qh * mpmath.mpf("0.999")), solver="anderson")
-            p0 = mpmath.atan(triangle_contact(mpmath.sqrt(q0), 1, sf, wf, 15, which, flip))
-        return _polish(lambda q_, p_: [triangle_tilt(mpmath.sqrt(q_), 1, s_, w_, p_, dps, flip)[k] for k in (0, which)],
-                       (q0, p0), dps)[0]
-    return _cached(("cb", s_, w_, which, flip, dps), key)
-
-
-def q60_pair(case, dps):
-    """The clipped boundaries at omega = 60 deg: top base (vertex B dipping) and bottom base (B rising)."""
-    s_ = _n(case.params[s], dps)
-    w_ = mpmath.pi / 3
-    return clipped_boundary(s_, w_, 2, False, dps), clipped_boundary(s_, w_, 3, True, dps)
+q60_cases = [Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20)}, label="s = 0.55, (a/b)^2 = 2.25"),
+             Case({a: 3, b: 2, s: sp.Rational(9, 20)}, label="s = 0.45, (a/b)^2 = 2.25")]
+QQ = (a / b) ** 2
+d.witness(Joined("triangle-omega60-boundaries", "(a/b)^2 minus the (a/b)^2 at which the clipped prism's equilibrium "
+                 "reaches the upper base (B dipping) / lower base (B rising) at omega = 60 deg (righting arm zero at "
+                 "the contact)", ("62", "62-step-3"), q60_cases[:1],
+                 parts=(_boundary(s, QQ - Q, TOP), _boundary(s, QQ - Q, BOT))))
+d.witness(_boundary(s, 2 * (QQ - Q), TOP, "triangle-omega60-boundary-twice", "twice the same margin (top base)",
+                    ("62-step-1", "62-step-2"), q60_cases[:1]))
+d.witness(Joined("triangle-region-II", "-24 s/b times the clipped upright metacentric height, and the two clipped "
+                 "omega = 60 deg margins", ("65-II",), q60_cases[:1],
+                 parts=(FloatingWitness("upright", "", (), (), body=_triangle(a, b), density=s,
+                                        quantity=-24 * s / b * GM),
+                        _boundary(s, QQ - Q, TOP), _boundary(s, QQ - Q, BOT))))
+d.witness(_boundary(s, Q, TOP, "example-3-boundary", "(a/b)^2 at which the clipped prism (s = 2/3) has its "
+                    "equilibrium at the upper-base contact, omega = 60 deg", ("ex3-ratio-squared", "ex3-condition"),
+                    [Case({s: sp.Rational(2, 3)})]))
+d.witness(_boundary(sp.Rational(2, 3), sp.sqrt(Q), TOP, "example-3-ratio", "its root a/b",
+                    ("ex3-ratio", "ex3-ratio-fraction"), one))
 
 
 def _qq(case, dps):
     return (_n(case.params[a], dps) / _n(case.params[b], dps)) ** 2
 
 
-q60_cases = [Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20)}, label="s = 0.55, (a/b)^2 = 2.25"),
-             Case({a: 3, b: 2, s: sp.Rational(9, 20)}, label="s = 0.45, (a/b)^2 = 2.25")]
-cw("triangle-omega60-boundaries", "(a/b)^2 minus the (a/b)^2 at which the clipped prism's equilibrium reaches the "
-   "upper base (B dipping) / lower base (B rising) at omega = 60 deg (righting arm zero at the contact)",
-   ("62", "62-step-3"), q60_cases[:1], lambda c, dps: tuple(_qq(c, dps) - v for v in q60_pair(c, dps)))
-cw("triangle-omega60-boundary-twice", "twice the same margin (top base)", ("62-step-1", "62-step-2"), q60_cases[:1],
-   lambda c, dps: 2 * (_qq(c, dps) - q60_pair(c, dps)[0]))
-cw("triangle-region-II", "-24 s/b times the clipped upright metacentric height, and the two clipped omega = 60 deg "
-   "margins", ("65-II",), q60_cases[:1],
-   lambda c, dps: (-24 * _n(c.params[s], dps) / _n(c.params[b], dps) * tri_gm(c, dps)[0],)
-   + tuple(_qq(c, dps) - v for v in q60_pair(c, dps)))
-ex3_q = lambda dps: clipped_boundary(_n(sp.Rational(2, 3), dps), mpmath.pi / 3, 2, False, dps)
-cw("example-3-boundary", "(a/b)^2 at which the clipped prism (s = 2/3) has its equilibrium at the upper-base "
-   "contact, omega = 60 deg", ("ex3-ratio-squared", "ex3-condition"), [Case({s: sp.Rational(2, 3)})],
-   lambda c, dps: ex3_q(dps))
-cw("example-3-ratio", "its root a/b", ("ex3-ratio", "ex3-ratio-fraction"), one, lambda c, dps: mpmath.sqrt(ex3_q(dps)))
-
-
-def ex4_solve(dps):
-    """(s, a/b) at which the clipped prism tilted by 30 deg about the axis omega = 15 deg is in equilibrium with
-    the upper base just touching the water."""
-    def key():
-        w_, p_ = mpmath.pi / 12, mpmath.pi / 6
-        with mpmath.workdps(15):
-            def q_of(s_):
-                return mpmath.findroot(lambda q_: triangle_tilt(q_, 1, s_, w_, p_, 15)[2], (1, 2), solver="anderson")
-            s0 = mpmath.findroot(lambda s_: triangle_tilt(q_of(s_), 1, s_, w_, p_, 15)[0],
-                                 (mpmath.mpf("0.55"), mpmath.mpf("0.75")), solver="anderson")
-            q0 = q_of(s0)
-        return _polish(lambda s_, q_: [triangle_tilt(q_, 1, s_, w_, p_, dps)[k] for k in (0, 2)], (s0, q0), dps)
-    return _cached(("ex4s", dps), key)
-
-
-cw("example-4-density", "density of the clipped prism in equilibrium at 30 deg with the upper base touching "
-   "(omega = 15 deg)", ("ex4-density",), one, lambda c, dps: ex4_solve(dps)[0])
-cw("example-4-ratio", "a/b of the same clipped solution", ("ex4-ratio", "ex4-ratio-value"), one,
-   lambda c, dps: ex4_solve(dps)[1])
+# example 4: the clipped prism tilted by 30 deg about the axis omega = 15 deg, in equilibrium with the upper base
+# just touching the water: nested zeros, of the righting arm along s and of the upper base's height along a/b = Q
+EX4_AT = {om: pi / 12, PSI: pi / 6}
+EX4_S = (sp.Rational(11, 20), sp.Rational(3, 4))
+touching = _root_witness("touching", "", (), (), ARM, TOP, body=_triangle(Q, 1), along=Q, bracket=(1, 2), steps=10,
+                         at=EX4_AT)
+d.witness(_root_witness("example-4-density", "density of the clipped prism in equilibrium at 30 deg with the upper "
+                        "base touching (omega = 15 deg)", ("ex4-density",), one, s, touching, body=_triangle(1, 1),
+                        up=(0, 0, 1), along=s, bracket=EX4_S, steps=10))
+balanced = _root_witness("balanced", "", (), (), TOP, ARM, body=_triangle(Q, 1), along=s, bracket=EX4_S, steps=10,
+                         at=EX4_AT)
+d.witness(_root_witness("example-4-ratio", "a/b of the same clipped solution", ("ex4-ratio", "ex4-ratio-value"), one,
+                        Q, balanced, body=_triangle(Q, 1), up=(0, 0, 1), along=Q, steps=5, density=HALF,
+                        bracket=(sp.Rational(3, 2), sp.Rational(8, 5))))
 
 
 # ---- the first-region model of the triangle by quadrature (no base cut, column heights may pass the bases) --

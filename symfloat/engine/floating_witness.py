@@ -286,7 +286,9 @@ class FloatingWitness(MeasuredWitness):
 
 
 # ---- the waterplane's moments in the body frame, a prism's bases, and a root of a quantity along a parameter ----
-from .witness import Case  # noqa: E402  (kept with the pieces that use it)
+import dataclasses  # noqa: E402  (kept with the pieces that use them)
+
+from .witness import Case  # noqa: E402
 
 
 def _waterplane_moment(i, j):
@@ -375,7 +377,10 @@ def _first_root(probe, params, along, bracket, steps, dps):
     params = dict(params)
 
     def f(x):
-        return probe._values({**params, along: sp.Float(x, max(dps, 15) + 5)}, probe.body, dps)[0]
+        at = {**params, along: sp.Float(x, max(dps, 15) + 5)}
+        if type(probe) is FloatingWitness:
+            return probe._values(at, probe.body, dps)[0]
+        return probe.measure(Case(at), Precision(dps, 0.0))       # a zero found inside this one
     if dps <= 15:
         lo, hi = (float(number(x, params, 15)) for x in bracket)
         return _illinois(f, *_sign_changes(f, lo, hi, steps), 1e-15 * max(1.0, abs(hi)))
@@ -394,7 +399,7 @@ def _first_root(probe, params, along, bracket, steps, dps):
 class RootWitness(FloatingWitness):
     """A :class:`FloatingWitness` read where another quantity vanishes: the parameter ``along`` (on which the
     up vector, the density or the body depend) is set to the first zero of ``vanish`` (an item as in
-    ``quantity``) on ``bracket``,
+    ``quantity``, or a root witness with its own body: a zero found inside another) on ``bracket``,
     scanned with ``steps`` points and refined at each method's digits; ``solve_at`` replaces parameters
     while the zero is sought (the position is found in one attitude and read in another), and each item of
     ``guard`` must be positive at the zero (a condition of the source's region, such as no base cut)."""
@@ -406,14 +411,21 @@ class RootWitness(FloatingWitness):
     solve_at: dict = None
     guard: tuple = ()
 
+    def __post_init__(self):
+        super().__post_init__()
+        if isinstance(self.solve_at, dict):             # kept as pairs: a witness is a key of the roots' cache
+            object.__setattr__(self, "solve_at", tuple(self.solve_at.items()))
+
     def _probe(self, body, what):
+        if isinstance(what, FloatingWitness):
+            return dataclasses.replace(what, cases=())
         return FloatingWitness("probe", "", (), (), body=body, up=self.up, density=self.density, quantity=what,
                                reference=self.reference)
 
     def measure(self, case, method):
         body = self.body if self.body is not None else case.data["body"]
         with mpmath.workdps(max(method.dps, 15)):
-            at = {**case.params, **(self.solve_at or {})}
+            at = {**case.params, **dict(self.solve_at or ())}
             root = _first_root(self._probe(body, self.vanish), _key(at), self.along, self.bracket, self.steps,
                                method.dps)
             root = sp.Float(root, max(method.dps, 15) + 5)
