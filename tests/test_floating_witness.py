@@ -228,3 +228,14 @@ def test_a_zero_found_inside_another():
     assert abs(float(outer.measure(LOG, outer.methods[0])) - 2) < 1e-12
     with mpmath.workdps(50):
         assert abs(outer.measure(LOG, outer.methods[1]) - 2) < 1e-30
+
+
+def test_the_first_zero_of_a_function():
+    # x^2 - 2 has its first zero on [0, 3] at sqrt 2; cos has its first on [1, 10] at pi/2, not 3 pi/2
+    from symfloat.engine.floating_witness import first_zero
+    assert abs(first_zero(lambda d: lambda x: x * x - 2, 0, 3, 6, 15) - mpmath.sqrt(2)) < 1e-15
+    with mpmath.workdps(60):
+        assert abs(first_zero(lambda d: lambda x: x * x - 2, 0, 3, 6, 50) - mpmath.sqrt(2)) < 1e-44
+        assert abs(first_zero(lambda d: mpmath.cos, 1, 10, 9, 50) - mpmath.pi / 2) < 1e-44
+    with pytest.raises(ValueError, match="no sign change"):
+        first_zero(lambda d: lambda x: x * x + 1, 0, 3, 6, 15)

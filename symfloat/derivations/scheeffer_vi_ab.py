@@ -19,7 +19,8 @@ import numpy as np
 import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
-from symfloat.engine.floating_witness import MEASURED, Body, FloatingWitness, Joined, RootWitness, waterplane_moment
+from symfloat.engine.floating_witness import (MEASURED, Body, FloatingWitness, Joined, RootWitness, first_zero,
+                                              waterplane_moment)
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.geometry.floating import cylinder_state, polygon_moments
 from symfloat.model.claim import as_printed
@@ -994,18 +995,6 @@ def _n(v, dps):
     return mpmath.mpf(sp.N(sp.sympify(v), dps + 10)) if dps > 15 else mpmath.mpf(float(sp.sympify(v)))
 
 
-def _root(f, lo, step):
-    """The first sign change of f above lo (scanned with the given step), refined by a bracketing solver."""
-    lo = mpmath.mpf(lo)
-    f_lo = f(lo)
-    hi = lo + step
-    while f(hi) * f_lo > 0:
-        lo, hi = hi, hi + step
-        if hi > 20:
-            raise ValueError("no sign change")
-    return mpmath.findroot(f, (lo, hi), solver="anderson")
-
-
 _CACHE = {}
 
 
@@ -1133,7 +1122,7 @@ def cylinder_gm(r_, b_, s_, dps):
 
 
 def cylinder_equilibrium(r_, b_, s_, dps):
-    return _root(lambda f: cylinder_tilt(r_, b_, s_, f, dps)[0], mpmath.mpf("0.02"), mpmath.mpf("0.05"))
+    return first_zero(lambda p: lambda f: cylinder_tilt(r_, b_, s_, f, p)[0], "0.02", "1.52", 30, dps)
 
 
 cyl_cases = [Case({r: 1, b: 1, s: sp.Rational(1, 2)}), Case({r: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 5)}),
@@ -1181,16 +1170,18 @@ tilted("example-3-angle", "equilibrium tilt of the clipped prism at s = 2/3, a/b
 
 EX4 = {"body": _triangle(12 * sp.sqrt(2) / 11, 1), "density": sp.Rational(7, 11), "at": {om: pi / 12}}
 d.witness(Joined("example-4",
-                 "clipped prism at the example's answer: equilibrium and contact tangents (omega = 15 deg)", ("67",), (Case({a: 12 * sp.sqrt(2) / 11, b: 1, s: sp.Rational(7, 11)}),),
+                 "clipped prism at the example's answer: equilibrium and contact tangents (omega = 15 deg)", ("67",),
+                 (Case({a: 12 * sp.sqrt(2) / 11, b: 1, s: sp.Rational(7, 11)}),),
                  parts=(_root_witness("equilibrium", "", (), (), sp.tan(PSI), ARM, **EX4),
                         _root_witness("top contact", "", (), (), sp.tan(PSI), TOP, **EX4))))
 cw("example-5", "2r/b at which the upright cylinder (s = 1/2) has zero metacentric height (quadrature)", ("ex5", "sqrt2"),
-   one, lambda c, dps: 2 * _root(lambda r_: cylinder_gm(r_, 1, mpmath.mpf(1) / 2, dps), mpmath.mpf("0.5"), mpmath.mpf("0.05")))
+   one, lambda c, dps: 2 * first_zero(lambda p: lambda r_: cylinder_gm(r_, 1, mpmath.mpf(1) / 2, p), "0.5", "1.5", 20,
+                                      dps))
 
 
 def ex6_roots(dps):
-    f = lambda s_: cylinder_gm(mpmath.mpf(1) / 2, 1, s_, dps)
-    return _root(f, mpmath.mpf("0.5"), mpmath.mpf("0.05")), _root(f, mpmath.mpf("0.01"), mpmath.mpf("0.02"))
+    gm = lambda p: lambda s_: cylinder_gm(mpmath.mpf(1) / 2, 1, s_, p)      # noqa: E731
+    return first_zero(gm, "0.5", "0.99", 49, dps), first_zero(gm, "0.01", "0.49", 24, dps)
 
 
 ex6 = lambda dps: _cached(("ex6", dps), lambda: ex6_roots(dps))
@@ -1207,11 +1198,13 @@ for nm, tg, fn in (("example-6-root", "ex6-root-value", lambda dps: 2 * ex6(dps)
 
 def ex7_bottom(dps):
     """Density (2r = b = 1, s < 1/2) at which the bottom rim reaches the water in the tilted equilibrium."""
-    def gap(s_):
-        phi = cylinder_equilibrium(mpmath.mpf(1) / 2, 1, s_, dps)
-        c = cylinder_tilt(mpmath.mpf(1) / 2, 1, s_, phi, dps)[1]
-        return c - mpmath.mpf(1) / 2 * mpmath.tan(phi)          # water height over the rising rim
-    return mpmath.findroot(gap, (mpmath.mpf("0.148"), mpmath.mpf("0.165")), solver="anderson")
+    def gap(p):
+        def at(s_):
+            phi = cylinder_equilibrium(mpmath.mpf(1) / 2, 1, s_, p)
+            c = cylinder_tilt(mpmath.mpf(1) / 2, 1, s_, phi, p)[1]
+            return c - mpmath.mpf(1) / 2 * mpmath.tan(phi)          # water height over the rising rim
+        return at
+    return first_zero(gap, "0.148", "0.165", 1, dps)
 
 
 ex7 = lambda dps: _cached(("ex7", dps), lambda: ex7_bottom(dps))
@@ -1248,17 +1241,6 @@ tilted("region-III-counterexample", "righting arm at the first base contact, cli
 # =====================================================================================================
 # Witnesses for the limits (61)-(65), (71)-(73) and examples 3, 4, 8, 9
 # =====================================================================================================
-def two_stage(make, lo, step, dps, bracket=None):
-    """Root of make(dps): located at float precision (scan from lo, or the bracket), then refined by secant steps."""
-    with mpmath.workdps(15):
-        f15 = make(15)
-        x0 = _root(f15, lo, step) if bracket is None else mpmath.findroot(f15, bracket, solver="anderson")
-    if dps <= 15:
-        return x0
-    x0 = mpmath.mpf(x0)
-    return mpmath.findroot(make(dps), (x0, x0 * (1 + mpmath.mpf(10) ** -9)), solver="secant")
-
-
 def _boundary(s_value, quantity, which, *declared):
     """The (a/b)^2 = Q (b = 1) at which the clipped prism's tilted equilibrium reaches the contact of a base for
     the axis omega = 60 deg: the zero along Q of the righting arm read at the first contact (which = TOP: the
@@ -1358,13 +1340,13 @@ def model_tilt(a_, b_, s_, w_, tau, dps, flip=False):
 
 def model_eq(q_, s_, dps):
     """tan phi_1 of the model (b = 1): the first root of the righting arm."""
-    return _cached(("meq", q_, s_, dps), lambda: two_stage(
-        lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, 0, t_, p)[0]), mpmath.mpf("0.02"), mpmath.mpf("0.1"), dps))
+    return _cached(("meq", q_, s_, dps), lambda: first_zero(
+        lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, 0, t_, p)[0]), "0.02", "20.02", 200, dps))
 
 
 def model_contact(q_, s_, w_, which, flip, dps):
-    return two_stage(lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, w_, t_, p, flip)[which]),
-                     mpmath.mpf("0.02"), mpmath.mpf("0.1"), dps)
+    return first_zero(lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, w_, t_, p, flip)[which]),
+                      "0.02", "4.02", 40, dps)
 
 
 def model_boundary(s_, w_, which, flip, dps):
@@ -1372,14 +1354,13 @@ def model_boundary(s_, w_, which, flip, dps):
     qh = 12 * s_ * (1 - s_)
     make = lambda p: (lambda q_: model_tilt(mpmath.sqrt(q_), 1, s_, w_, model_eq(q_, s_, p), p, flip)[which])
     return _cached(("mb", s_, w_, which, flip, dps),
-                   lambda: two_stage(make, 0, 0, dps, bracket=(qh / 10, qh * mpmath.mpf("0.999"))))
+                   lambda: first_zero(make, qh / 10, qh * mpmath.mpf("0.999"), 1, dps))
 
 
 def model_sin_bound(q_, s_, which, flip, dps):
     """sin(30 deg + omega) of the axis at which the model's contact tangent equals its equilibrium tangent."""
     t1_ = model_eq(q_, s_, dps)
-    w_ = mpmath.findroot(lambda w: model_tilt(mpmath.sqrt(q_), 1, s_, w, t1_, dps, flip)[which],
-                         (mpmath.mpf(0), mpmath.pi / 3), solver="anderson")
+    w_ = first_zero(lambda p: lambda w: model_tilt(mpmath.sqrt(q_), 1, s_, w, t1_, p, flip)[which], 0, mpmath.pi / 3, 1, dps)
     return mpmath.sin(mpmath.pi / 6 + w_)
 
 
@@ -1433,13 +1414,12 @@ def cyl_contact(r_, b_, s_, which, dps):
         if which == "top":
             return lambda f: b_ - (cylinder_tilt(r_, b_, s_, f, p)[1] + r_ * mpmath.tan(f))
         return lambda f: cylinder_tilt(r_, b_, s_, f, p)[1] - r_ * mpmath.tan(f)
-    return mpmath.tan(two_stage(make, mpmath.mpf("0.02"), mpmath.mpf("0.1"), dps))
+    return mpmath.tan(first_zero(make, "0.02", "1.52", 15, dps))
 
 
 def cyl_eq(r_, b_, s_, dps):
     """tan phi_1: the first root of the quadrature righting arm (float scan, then secant steps)."""
-    return mpmath.tan(two_stage(lambda p: (lambda f: cylinder_tilt(r_, b_, s_, f, p)[0]), mpmath.mpf("0.02"),
-                                mpmath.mpf("0.05"), dps))
+    return mpmath.tan(first_zero(lambda p: (lambda f: cylinder_tilt(r_, b_, s_, f, p)[0]), "0.02", "1.52", 30, dps))
 
 
 def cyl_limits(c, dps):
@@ -1466,9 +1446,9 @@ cw("cylinder-73", "-16 s/b times the metacentric height, and (2r/b)^2/2 times th
 
 def cyl_density_roots(c, dps):
     r_, b_ = P(c, dps, r, b)
-    f = lambda s_: cylinder_gm(r_, b_, s_, dps)
-    return _cached(("cdr", r_, b_, dps), lambda: (_root(f, mpmath.mpf("0.5"), mpmath.mpf("0.05")),
-                                                 _root(f, mpmath.mpf("0.005"), mpmath.mpf("0.02"))))
+    gm = lambda p: lambda s_: cylinder_gm(r_, b_, s_, p)        # noqa: E731
+    return _cached(("cdr", r_, b_, dps), lambda: (first_zero(gm, "0.5", "0.99", 49, dps),
+                                                 first_zero(gm, "0.005", "0.495", 49, dps)))
 
 
 cw("cylinder-71", "densities at which the upright cylinder's metacentric height (quadrature) vanishes", ("71",),
@@ -1477,8 +1457,7 @@ cw("cylinder-71", "densities at which the upright cylinder's metacentric height 
 
 def cyl_ratio_threshold(b_, s_, dps):
     """(2r/b)^2 at which the upright cylinder (quadrature) has zero metacentric height."""
-    r0 = _root(lambda r_: cylinder_gm(r_, b_, s_, dps), b_ / 100, b_ / 20) if b_ <= 1 else \
-        b_ * _root(lambda r_: cylinder_gm(r_, 1, s_, dps), mpmath.mpf(1) / 100, mpmath.mpf(1) / 20)
+    r0 = b_ * first_zero(lambda p: lambda r_: cylinder_gm(r_, 1, s_, p), "0.01", "2.01", 40, dps)   # gm(kr, kb) = k gm
     return (2 * r0 / b_) ** 2
 
 
@@ -1493,7 +1472,7 @@ def ex9_bound(dps):
     """(2r/b)^2 (b = 1, s = 0.8) at which the quadrature equilibrium reaches the upper-base contact."""
     s_ = mpmath.mpf(4) / 5
     make = lambda p: (lambda r_: cylinder_tilt(r_, 1, s_, mpmath.atan(cyl_contact(r_, 1, s_, "top", p)), p)[0])
-    r0 = two_stage(make, 0, 0, dps, bracket=(mpmath.mpf("0.2"), mpmath.mpf("0.7")))
+    r0 = first_zero(make, "0.2", "0.7", 5, dps)
     return (2 * r0) ** 2
 
 

@@ -384,8 +384,13 @@ def _first_root(probe, params, along, bracket, steps, dps):
     if dps <= 15:
         lo, hi = (float(number(x, params, 15)) for x in bracket)
         return _illinois(f, *_sign_changes(f, lo, hi, steps), 1e-15 * max(1.0, abs(hi)))
-    rough = mpmath.mpf(_first_root(probe, _key(params), along, bracket, steps, 15))
-    width = mpmath.mpf("1e-8")
+    return _refine(f, _first_root(probe, _key(params), along, bracket, steps, 15), dps)
+
+
+def _refine(f, rough, dps):
+    """The zero of f at *dps* digits (under the caller's precision) near its float64 zero *rough*: Illinois
+    inside a bracket of 1e-8 around it, widened tenfold until f changes sign, to 10^(5 - dps)."""
+    rough, width = mpmath.mpf(rough), mpmath.mpf("1e-8")
     for _ in range(6):
         x0, x1 = rough - width, rough + width
         f0, f1 = f(x0), f(x1)
@@ -393,6 +398,21 @@ def _first_root(probe, params, along, bracket, steps, dps):
             return _illinois(f, x0, f0, x1, f1, mpmath.mpf(10) ** (5 - dps))
         width *= 10
     raise ValueError(f"no sign change around the float64 root {rough}")
+
+
+def first_zero(make, lo, hi, steps, dps):
+    """The first zero on [lo, hi] of the function ``make(d)`` (a function at d digits, called under
+    ``mpmath.workdps(d)``): located on a grid of *steps* and refined in 15-digit arithmetic, then, for more
+    digits, refined at *dps* from there.  The root finder of a measurement the floating witnesses do not
+    cover (a quadrature model)."""
+    with mpmath.workdps(15):
+        f = make(15)
+        lo, hi = mpmath.mpf(lo), mpmath.mpf(hi)
+        rough = _illinois(f, *_sign_changes(f, lo, hi, steps), mpmath.mpf("1e-15") * max(1, abs(hi)))
+    if dps <= 15:
+        return rough
+    with mpmath.workdps(dps):
+        return _refine(make(dps), rough, dps)
 
 
 @dataclass(frozen=True)
