@@ -6,6 +6,7 @@ second moments), hence the metacentric height min(a b^3, b a^3) / (12 a b s c) -
 """
 from fractions import Fraction
 
+import mpmath
 import pytest
 import sympy as sp
 
@@ -142,3 +143,99 @@ def test_the_limit_of_the_arm_over_the_tilt_is_the_metacentric_height():
     out = w.run({"f": (sp.Symbol("g"), -sp.Rational(19, 36)), "f#mutated": (sp.Symbol("g"), -sp.Rational(19, 35))})
     assert out["f"].agrees and out["f"].records[1]["rel_error"] < 1e-35
     assert not out["f#mutated"].agrees
+
+
+# ---- the waterplane's moments in the body frame, a prism's bases, a root of a quantity ----------------------------
+# Upright box 3 x 2 x 1 at s = 2/5 (CASE): the waterplane is the 3 x 2 rectangle, int x^2 = 2 * 3^3/12 = 9/2,
+# int y^2 = 3 * 2^3/12 = 2, the rest 0; the water at z = -1/2 + 2/5 = -1/10, the upper base (z = 1/2) 3/5 above
+# it, the lower base (z = -1/2) 2/5 below.  The tilted box (TILTED, up (0, 1, 4)/sqrt 17, half immersed) has the
+# water plane through its centre: the rectangle L = 1 by W / cos psi = sqrt(17)/2, whose moment about the line
+# along x is L (sqrt(17)/2)^3/12 = 17 sqrt 17/96, with normal n = (0, -4, 1)/sqrt 17, and int x^2 = sqrt(17)/24.
+from symfloat.engine.floating_witness import RootWitness, waterplane_moment  # noqa: E402
+
+EXACT.update({
+    "waterplane moment, xx": sp.Rational(9, 2), "waterplane moment, yy": sp.Integer(2),
+    **{f"waterplane moment, {k}": sp.Integer(0) for k in ("xy", "xz", "yz", "zz")},
+    "upper base above water": sp.Rational(3, 5), "lower base above water": -sp.Rational(2, 5),
+})
+
+
+def test_the_waterplane_moments_of_a_tilted_box_in_the_body_frame():
+    r17 = sp.sqrt(17)
+    n, x = (0, -4 / r17, 1 / r17), (1, 0, 0)
+    w = tilted((waterplane_moment(n, n), waterplane_moment(x, x), waterplane_moment(x, n),
+                MEASURED["waterplane moment, yz"]))
+    exact = (17 * r17 / 96, r17 / 24, 0, -r17 / 24)      # yz = n_y n_z I_nn = -4/17 * 17 sqrt 17/96
+    for method in w.methods:
+        assert all(abs(float(v - e)) < 1e-12 for v, e in zip(w.measure(TILTED, method), exact)), method.name
+
+
+# The box W x H x L = 2 x 9/5 x 1, half immersed, tilted by psi about x: the water plane passes through the
+# centre, so the upper base is reached at tan psi = H/W = 9/10, and the wall-sided righting arm
+# sin psi (GM + BM tan^2 psi/2), BM = W^2/(6H) = 10/27, GM = BM - H/4 = -43/540, vanishes at tan^2 psi =
+# -2 GM/BM = 43/100 (before the contact).
+PSI = sp.Symbol("psi")
+LOG = Case({W_: 2, H_: sp.Rational(9, 5), L_: 1, S: sp.Rational(1, 2)}, label="box 2 x 9/5 x 1, half immersed")
+
+
+def rooted(quantity, vanish, case=LOG, **kw):
+    return RootWitness("root", "root", ("f",), (case,), body=Body.box(L_, W_, H_), up=(0, sp.sin(PSI), sp.cos(PSI)),
+                       density=S, reference=(0, 0, 1), quantity=quantity, along=PSI, vanish=vanish,
+                       bracket=(sp.Rational(1, 50), sp.Rational(7, 5)), steps=28, **kw)
+
+
+def test_the_zero_of_the_righting_arm_and_the_contact_of_a_base():
+    arm = rooted(sp.tan(PSI) ** 2, "righting arm")
+    contact = rooted(sp.tan(PSI), -MEASURED["upper base above water"])
+    for w, exact in ((arm, sp.Rational(43, 100)), (contact, sp.Rational(9, 10))):
+        assert abs(float(w.measure(LOG, w.methods[0]) - exact)) < 1e-13
+        with mpmath.workdps(50):
+            assert abs(w.measure(LOG, w.methods[1]) - mpmath.mpf(exact.p) / exact.q) < 1e-35
+    out = arm.run({"f": (sp.Symbol("t"), sp.Rational(43, 100)), "f#mutated": (sp.Symbol("t"), sp.Rational(44, 100))})
+    assert out["f"].agrees and not out["f#mutated"].agrees
+
+
+def test_a_root_along_the_density_a_guard_and_a_position_found_elsewhere():
+    # the draught s H of the upright box equals 27/100 at s = 3/20
+    w = RootWitness("s", "s", ("f",), (LOG,), body=Body.box(L_, W_, H_), density=S, quantity=S, along=S,
+                    vanish=MEASURED["draught"] - sp.Rational(27, 100),
+                    bracket=(sp.Rational(1, 100), sp.Rational(99, 100)))
+    with mpmath.workdps(50):
+        assert abs(w.measure(LOG, w.methods[1]) - mpmath.mpf(3) / 20) < 1e-35
+    # the lower base stays under water at the zero of the arm: a guard asking it to be above is refused
+    with pytest.raises(ValueError, match="not positive at the zero"):
+        rooted(sp.tan(PSI), "righting arm", guard=(MEASURED["lower base above water"],)).measure(LOG, w.methods[0])
+    # the zero found for L = 1, the volume read for L = 2 (the arm does not depend on L): 2 * 2 * 9/5 / 2
+    twice = Case({**LOG.params, L_: 2})
+    w = rooted("immersed volume", "righting arm", case=twice, solve_at={L_: 1})
+    assert abs(float(w.measure(twice, w.methods[0])) - 3.6) < 1e-12
+
+
+def test_witnesses_of_several_bodies_joined():
+    # the draughts of the box (s c = 2/5) and of the same box on its side (s a = 6/5), in one tuple
+    from symfloat.engine.floating_witness import Joined
+    parts = (witness("draught"), witness("draught", up=(1, 0, 0)))
+    w = Joined("two", "two", ("f",), (CASE,), parts=parts)
+    assert [float(v) for v in w.measure(CASE, w.methods[0])] == pytest.approx([0.4, 1.2], abs=1e-12)
+
+
+def test_a_zero_found_inside_another():
+    # the height H at which the zero of the arm (tan^2 = 3 H^2/4 - 2 by the wall-sided formula, W = 2) reaches the
+    # upper base's contact (tan = H/2): 3 H^2/4 - 2 = H^2/4, H = 2 (the inner zero along the tilt, the outer along H)
+    inner = rooted(MEASURED["upper base above water"], "righting arm")
+    outer = RootWitness("H", "H", ("f",), (LOG,), body=Body.box(L_, W_, 1), density=S, quantity=H_, along=H_,
+                        vanish=inner, bracket=(sp.Rational(17, 10), sp.Rational(23, 10)), steps=6)
+    assert abs(float(outer.measure(LOG, outer.methods[0])) - 2) < 1e-12
+    with mpmath.workdps(50):
+        assert abs(outer.measure(LOG, outer.methods[1]) - 2) < 1e-30
+
+
+def test_the_first_zero_of_a_function():
+    # x^2 - 2 has its first zero on [0, 3] at sqrt 2; cos has its first on [1, 10] at pi/2, not 3 pi/2
+    from symfloat.engine.floating_witness import first_zero
+    assert abs(first_zero(lambda d: lambda x: x * x - 2, 0, 3, 6, 15) - mpmath.sqrt(2)) < 1e-15
+    with mpmath.workdps(60):
+        assert abs(first_zero(lambda d: lambda x: x * x - 2, 0, 3, 6, 50) - mpmath.sqrt(2)) < 1e-44
+        assert abs(first_zero(lambda d: mpmath.cos, 1, 10, 9, 50) - mpmath.pi / 2) < 1e-44
+    with pytest.raises(ValueError, match="no sign change"):
+        first_zero(lambda d: lambda x: x * x + 1, 0, 3, 6, 15)

@@ -4,12 +4,13 @@ import copy
 import math
 from dataclasses import replace
 
+import mpmath
 import pytest
 import sympy as sp
 
 import symfloat.derivations.scheeffer_iv_v as M
 from symfloat.engine.check import check_derivation
-from symfloat.geometry.floating import floating_state
+from symfloat.geometry.floating import floating_state, right_prism
 
 ERRATA = {"32": "transcription", "37": "transcription", "38-projection": "misprint", "43a": "misprint", "52": "transcription",
           "law": "claim", "s-half": "claim", "55": "claim"}
@@ -49,18 +50,34 @@ def test_37_df_for_df2_is_an_erratum(report):
     assert "the print gives" in f.erratum["evidence"]
 
 
-# ---- pinned values, all measured on the clipped prism (symfloat.geometry.floating), float64 ------------------
+# ---- pinned values, all measured on the clipped prism (the derivation's floating witnesses), float64 ---------
+
+def _measured(witness, label, cases=None):
+    """The float64 value of the derivation's witness at its case *label* (or at the cases of other bodies)."""
+    w = next(w for w in M.DERIVATION.witnesses if w.name == witness)
+    if cases is not None:
+        w = replace(w, cases=lambda: M._cases(cases))
+    return w.measure(next(c for c in w.instances if c.label == label), w.methods[0])
+
 
 def test_rectangle_tilt_pinned():
     # (27)/(54), base 1 x 2 turned about its long axis, b = 9/10, s = 2/5: tan^2 phi_1 = 12 b^2 s(1-s) - 2
     # = 12 * 81/100 * 6/25 - 2 = 208/625 (exact); measured as the zero of the clipped righting arm
-    assert M._measure("rect-long", "tan2", 15) == pytest.approx(208 / 625, rel=1e-12)
+    assert _measured("tilt-squared", "rect-long") == pytest.approx(208 / 625, rel=1e-12)
     # (35): V_1 e_2 = T_1 / cos phi_1 = (1/6) sqrt(1 + 208/625) = (1/6)(sqrt 833)/25
-    assert M._measure("rect-long", "Ve2", 15) == pytest.approx(math.sqrt(833) / 150, rel=1e-12)
+    assert _measured("Ve2", "rect-long") == pytest.approx(math.sqrt(833) / 150, rel=1e-12)
     # (42): T_m = T_1/cos^3 = (1/6)(833/625)^(3/2), T_m^1 = T_1^1/cos = (2/3) sqrt(833)/25
-    T2, T21 = M._measure("rect-long", "wp2-ext", 15)
+    T2, T21 = _measured("wp2-ext", "rect-long")
     assert T2 == pytest.approx((833 / 625) ** 1.5 / 6, rel=1e-12)
     assert T21 == pytest.approx(2 / 3 * math.sqrt(833) / 25, rel=1e-12)
+
+
+def test_rectangle_tilt_at_40_digits():
+    # the same zero refined at 40 digits: tan^2 phi_1 = 208/625 to the precision of the clipping
+    w = next(w for w in M.DERIVATION.witnesses if w.name == "tilt-squared")
+    case = next(c for c in w.instances if c.label == "rect-long")
+    with mpmath.workdps(50):
+        assert abs(w.measure(case, w.methods[1]) - mpmath.mpf(208) / 625) < 1e-35
 
 
 def test_claim_43a_stable_iff_T11_greater():
@@ -68,23 +85,34 @@ def test_claim_43a_stable_iff_T11_greater():
     # T_1^1 = 2/3) positive, (T_1^1 - T_1)/cos phi_1 / V = (1/2)(sqrt 833/25)/(2 * 9/10 * 2/5); about the short
     # axis (T_1 = 2/3 > 1/6) negative
     V = 2 * 9 / 10 * 2 / 5
-    assert M._measure("rect-long", "D2", 15) == pytest.approx(min((1 / 6) * 208 / 625, 1 / 2) * math.sqrt(833) / 25,
-                                                              rel=1e-10)
-    assert M._measure("rect-long", "D2", 15) / V > 0
-    assert M._measure("rect-short", "D2", 15) < 0
+    assert _measured("D2", "rect-long") == pytest.approx(min((1 / 6) * 208 / 625, 1 / 2) * math.sqrt(833) / 25,
+                                                         rel=1e-10)
+    assert _measured("D2", "rect-long") / V > 0
+    assert _measured("D2", "rect-short") < 0
 
 
 def test_isotropic_neutral_51_and_independent_of_omega():
     # (51): T_m^1 - T_1/cos phi_1 = 0 for the square prism (b = 17/20, s = 9/20), EF at 0 and 30 deg
     for name in ("square-0", "square-30", "tri-eq"):
-        assert abs(M._measure(name, "Tm1-excess", 15)) < 1e-12
+        assert abs(_measured("iso-Tm1", name)) < 1e-12
     # the tilt and V e_2 are the same in every direction (47)-(52): tan^2 phi_1 = 12 b^2 s(1-s) - 2 = 0.1458...
-    t0, t30 = M._measure("square-0", "tan2", 15), M._measure("square-30", "tan2", 15)
+    t0, t30 = _measured("tilt-squared", "square-0"), _measured("tilt-squared", "square-30")
     assert t0 == pytest.approx(t30, rel=1e-12) == pytest.approx(12 * 0.85 ** 2 * 0.45 * 0.55 - 2, rel=1e-12)
 
 
-def _potential(body, up):
-    st = floating_state(body.poly, up, body.s)
+def _tilted(name):
+    """The clipped prism of a body (float64), its density, and the frame at its tilted equilibrium: up vector,
+    horizontal across EF, EF, and the up vector for EF turned by an angle."""
+    poly, bb, ss, alpha = M.BODIES[name]
+    body = right_prism([(float(x), float(y)) for x, y in poly], float(bb))
+    psi = math.atan(_measured("tilt", name))
+    frame = lambda turn=0: [tuple(float(c) for c in v.subs({M.ALPHA: alpha + turn, M.PSI: psi}))   # noqa: E731
+                            for v in (M.UP, M.HOR, M.EV)]
+    return body, float(ss), frame
+
+
+def _potential(body, s, up):
+    st = floating_state(body, up, s)
     return st.volume * st.potential
 
 
@@ -98,30 +126,32 @@ def test_claim_51_stable_tilted_square_energy():
     # (51) claim "folglich das Gleichgewicht stabil": the potential energy V (z_G - z_B) of the clipped square
     # prism at its tilt is a (non-strict) minimum: no small turn lowers it, and turning about the prism axis
     # (the spin family: same tilt, other EF) leaves it unchanged
-    body, ph, st, ev, up, h = M._tilt("square-0", 15)
-    U0 = _potential(body, up)
+    body, s, frame = _tilted("square-0")
+    up, h, ev = frame()
+    U0 = _potential(body, s, up)
     for a in (h, ev, tuple((h[k] + ev[k]) / math.sqrt(2) for k in range(3)),
               tuple((h[k] - 2 * ev[k]) / math.sqrt(5) for k in range(3))):
         for eps in (0.02, -0.02, 0.05, -0.05):
-            assert _potential(body, _perturbed(up, a, eps)) >= U0 - 1e-12
+            assert _potential(body, s, _perturbed(up, a, eps)) >= U0 - 1e-12
     for turn in (0.1, 0.4, 1.0):
-        assert _potential(body, body.frame(ph, body.alpha + turn)[2]) == pytest.approx(U0, abs=1e-12)
+        assert _potential(body, s, frame(turn)[0]) == pytest.approx(U0, abs=1e-12)
 
 
 def test_claim_43a_unstable_tilt_energy():
     # the short-axis tilt of the 2 x 1 rectangle (T_1 > T_1^1) is a saddle: a turn about the axis across EF
     # lowers the clipped potential energy
-    body, ph, st, ev, up, h = M._tilt("rect-short", 15)
-    U0 = _potential(body, up)
-    assert _potential(body, _perturbed(up, ev, 0.05)) < U0 - 1e-6
+    body, s, frame = _tilted("rect-short")
+    up, h, ev = frame()
+    U0 = _potential(body, s, up)
+    assert _potential(body, s, _perturbed(up, ev, 0.05)) < U0 - 1e-6
 
 
 def test_law_counterexample_pinned():
     # erratum 'law': rectangle 1 x 6/5, b = 5/6, s = 1/2, stable tilt about the long axis turned by omega about
     # the prism axis: int u v df = (T_x - T_y) sin 2 omega / 2 = (18/125 - 1/10)/2 * sin 2 omega != 0
-    for om in (math.pi / 12, math.pi / 6):
-        assert M._measure("rect-law", "law", 15, om) == pytest.approx((18 / 125 - 1 / 10) / 2 * math.sin(2 * om),
-                                                                    rel=1e-10)
+    for om in (sp.pi / 12, sp.pi / 6):
+        assert _measured("law", f"rect-law, {om}") == pytest.approx((18 / 125 - 1 / 10) / 2 * math.sin(2 * om),
+                                                                     rel=1e-10)
 
 
 def test_face_limits_counterexample_pinned():
@@ -129,14 +159,15 @@ def test_face_limits_counterexample_pinned():
     # s = 2/5 < 1/2. Clipped geometry: the upper base is reached first, at tan = sqrt 3 b (1 - s) = 51 sqrt3/125
     # = 0.70668; (55) would allow up to 2 sqrt 3 b s = 68 sqrt 3/125 = 0.94224, and (54) puts tan phi_1 at
     # sqrt(24 b^2 s (1-s) - 2) = sqrt(10366)/125 = 0.81451, between the two
-    assert M._measure("tri-eq-apex", "first", 15) == pytest.approx(51 * math.sqrt(3) / 125, rel=1e-12)
-    assert M._measure("tri-eq-apex", "top", 15) < M._measure("tri-eq-apex", "bot", 15)
+    assert _measured("first", "tri-eq-apex") == pytest.approx(51 * math.sqrt(3) / 125, rel=1e-12)
+    apex = ("tri-eq-apex", "tri-eq-apex-up")
+    assert _measured("top", "tri-eq-apex") < _measured("bot", "tri-eq-apex", apex)
     printed = float(M.printed55.subs(M._params("tri-eq-apex")))
     assert printed == pytest.approx(68 * math.sqrt(3) / 125, rel=1e-14)
     assert 51 * math.sqrt(3) / 125 < math.sqrt(10366) / 125 < printed
     # apex rising, s = 3/5 > 1/2: the lower base is reached first, at tan = sqrt 3 b s = 51 sqrt3/125
-    assert M._measure("tri-eq-apex-up", "first", 15) == pytest.approx(51 * math.sqrt(3) / 125, rel=1e-12)
-    assert M._measure("tri-eq-apex-up", "bot", 15) < M._measure("tri-eq-apex-up", "top", 15)
+    assert _measured("first", "tri-eq-apex-up") == pytest.approx(51 * math.sqrt(3) / 125, rel=1e-12)
+    assert _measured("bot", "tri-eq-apex-up") < _measured("top", "tri-eq-apex-up", apex)
 
 
 # ---- mutations -------------------------------------------------------------------------------------------------

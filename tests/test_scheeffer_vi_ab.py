@@ -16,19 +16,25 @@ def deg(x):
     return math.degrees(x)
 
 
+def measured(witness, case=0):
+    """The float64 value of the derivation's witness at its case number *case*."""
+    w = next(w for w in M.DERIVATION.witnesses if w.name == witness)
+    return w.measure(w.instances[case], w.methods[0])
+
+
 # ---- Example 1 (VI.A): a/b at which the upright prism with s = 0.8 is neutral.
 # Closed form sqrt(12 * 0.8 * 0.2) (from (57)); independently the root of the metacentric height of the
 # clipped triangular prism (symfloat.geometry.floating).  Printed: 139/100.
 def test_example_1():
     assert float(M.ex1_ratio) == pytest.approx(math.sqrt(1.92), abs=1e-14)
-    assert float(M.ex1_ratio_geo(15)) == pytest.approx(1.3856406460551018, abs=1e-10)
+    assert float(measured("example-1")) == pytest.approx(1.3856406460551018, abs=1e-10)
     assert abs(1.3856406460551018 - 1.39) < 0.005
 
 
 # ---- Example 2 (VI.A): a = b; the densities of zero metacentric height (roots of 12 s(1-s) = 1),
 # sympy.solve and the clipped prism.  Printed 0.908 / 0.092, sqrt(0.6667) = 0.8165.
 def test_example_2():
-    up, lo = M.ex2_roots(15)
+    up, lo = measured("example-2-upper"), measured("example-2-lower")
     assert float(up) == pytest.approx((1 + math.sqrt(2 / 3)) / 2, abs=1e-10)      # 0.90825
     assert float(lo) == pytest.approx((1 - math.sqrt(2 / 3)) / 2, abs=1e-10)      # 0.09175
     assert float(M.s_hi_1) == pytest.approx(0.9082482904638630, abs=1e-14)
@@ -41,7 +47,7 @@ def test_example_3():
     assert M.Q60_3 == sp.Rational(5, 2)
     phi = math.atan(math.sqrt(2 / 15))
     assert deg(phi) == pytest.approx(20 + 3 / 60 + 34.5004 / 3600, abs=1e-7)
-    assert float(M.ex3_angle(15)) == pytest.approx(deg(phi), abs=1e-9)
+    assert float(measured("example-3-angle")) == pytest.approx(deg(phi), abs=1e-9)
     assert abs(math.sqrt(2.5) - 1.58) < 0.005
 
 
@@ -51,7 +57,7 @@ def test_example_3():
 def test_example_4():
     assert M.s4 == sp.Rational(7, 11)
     assert sp.simplify(M.q4 - 12 * sp.sqrt(2) / 11) == 0
-    eq, contact = M.ex4_check(15)
+    eq, contact = measured("example-4")
     assert float(eq) == pytest.approx(1 / math.sqrt(3), abs=1e-10)
     assert float(contact) == pytest.approx(1 / math.sqrt(3), abs=1e-10)
 
@@ -87,7 +93,7 @@ def test_claim_counterexamples():
     assert float(M.Ltop_cx) == pytest.approx(4 * math.sqrt(3) / 5)
     # s = 11/20, (a/b)^2 = 11/5: righting arm at the first contact (best axis) is negative
     assert float(M.Delta3) == pytest.approx(-0.0109089663071034, abs=1e-12)
-    assert float(M.ex_III_delta(15)) == pytest.approx(-0.0109089663071034, abs=1e-10)
+    assert float(measured("region-III-counterexample")) == pytest.approx(-0.0109089663071034, abs=1e-10)
 
 
 @pytest.fixture(scope="module")

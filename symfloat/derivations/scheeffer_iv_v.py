@@ -23,22 +23,22 @@ centroid of the base ``Omega`` at O; integrals over ``Omega`` of polynomials in
 here from the exact column integrals of the prism, which hold for every tilt of
 the first rotation region, not only for small ones.
 
-The witnesses measure everything on clipped prisms (``symfloat.geometry.
-floating``): tilts are roots of the righting arm or of the face contact,
-found by bracketed root finding on the clipped geometry; the draught comes
-from the submerged volume, never from the plane through EF.
+The witnesses are declarations of floating witnesses (``symfloat.engine.
+floating_witness``): the clipped prism, the quantity and the cases; tilts are
+zeros of the righting arm or of a base's height above the water
+(``RootWitness``); the draught comes from the submerged volume, never from the
+plane through EF.
 """
 from fractions import Fraction
-from functools import lru_cache
 import math
 
-import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum, Prediction
-from symfloat.engine.witness import Case, Computed
+from symfloat.engine.floating_witness import MEASURED, Body, FloatingWitness, RootWitness, waterplane_moment
+from symfloat.engine.witness import Case
 from symfloat.model.prediction import box_uprights
-from symfloat.geometry.floating import floating_state, polygon_moments, right_prism, submerged
+from symfloat.geometry.floating import polygon_moments
 from symfloat.model.claim import as_printed
 
 
@@ -740,273 +740,130 @@ def _params(name, extra=None):
     return out
 
 
-def _mp(q, dps):
-    if dps <= 15:
-        return float(sp.N(q, 20))
-    return mpmath.mpf(str(sp.N(q, dps + 10)))
-
-
-def _fn(dps):
-    return (math.sin, math.cos, math.tan) if dps <= 15 else (mpmath.sin, mpmath.cos, mpmath.tan)
-
-
-class _Body:
-    """The clipped prism of a body, at float64 (dps 15) or mpmath precision."""
-
-    def __init__(self, name, dps):
-        poly, bb, ss, alpha = BODIES[name]
-        self.dps = dps
-        self.poly = right_prism([(_mp(px, dps), _mp(py, dps)) for px, py in poly], _mp(bb, dps),
-                                None if dps <= 15 else dps)
-        self.s = _mp(ss, dps)
-        self.alpha = _mp(alpha, dps)
-        self.top = [p for p in self.poly.vertices if p[2] > 0]
-        self.bot = [p for p in self.poly.vertices if p[2] < 0]
-
-    def frame(self, phi_, alpha=None):
-        """EF direction, dipping normal, up vector and horizontal across EF for the tilt phi_ about EF."""
-        sin, cos, _ = _fn(self.dps)
-        al = self.alpha if alpha is None else alpha
-        ev = (cos(al), sin(al), 0 * cos(al))
-        nn = (sin(al), -cos(al), 0 * cos(al))
-        up = tuple(cos(phi_) * (k == 2) - sin(phi_) * nn[k] for k in range(3))
-        h = tuple(cos(phi_) * nn[k] + sin(phi_) * (k == 2) for k in range(3))
-        return ev, nn, up, h
-
-    def state(self, phi_, alpha=None):
-        ev, nn, up, h = self.frame(phi_, alpha)
-        return floating_state(self.poly, up, self.s), ev, up, h
-
-    def arm(self, phi_, alpha=None):
-        st, ev, up, h = self.state(phi_, alpha)
-        return sum(h[k] * (st.B[k] - st.G[k]) for k in range(3))
-
-    def contact(self, which, phi_):
-        """Depth below the water of the lowest vertex of the upper base (or height above the water of the
-        highest vertex of the lower base): negative while that base is clear of the water plane, which comes
-        from the submerged volume (draught), not from the axis EF."""
-        st, ev, up, h = self.state(phi_)
-        heights = [sum(up[k] * p[k] for k in range(3)) for p in (self.top if which == "top" else self.bot)]
-        return st.t - min(heights) if which == "top" else max(heights) - st.t
-
-
-def _bracket_root(f, lo, hi, dps):
-    """Illinois regula falsi on a sign change of f in [lo, hi]."""
-    tol = 1e-15 if dps <= 15 else mpmath.mpf(10) ** (4 - dps)
-    flo, fhi = f(lo), f(hi)
-    if not flo * fhi < 0:
-        raise ValueError("no sign change")
-    xm = hi
-    for _ in range(300):
-        xm = (lo * fhi - hi * flo) / (fhi - flo)
-        fm = f(xm)
-        if fm == 0:
-            return xm
-        if fm * fhi < 0:
-            lo, flo = hi, fhi
-        else:
-            flo = flo / 2
-        hi, fhi = xm, fm
-        if abs(hi - lo) < tol:
-            return xm
-    return xm
-
-
-def _scan_root(f, dps, start=0.02, stop=1.4, steps=28):
-    """First sign change of f from - to + on a grid, refined."""
-    one = 1.0 if dps <= 15 else mpmath.mpf(1)
-    prev = one * start
-    fprev = f(prev)
-    for k in range(1, steps + 1):
-        q = one * (start + (stop - start) * k / steps)
-        fq = f(q)
-        if fprev < 0 <= fq:
-            return _bracket_root(f, prev, q, dps)
-        prev, fprev = q, fq
-    raise ValueError("no root found on the grid")
-
-
-def _prec(dps):
-    return mpmath.workdps(dps if dps > 15 else 15)
-
-
-def _refine(f, rough, dps):
-    """The root of f near the float64 root *rough*, at dps digits, from a bracket of width 2e-7 around it."""
-    width = mpmath.mpf("1e-7")
-    for _ in range(8):
-        lo, hi = mpmath.mpf(rough) - width, mpmath.mpf(rough) + width
-        if f(lo) < 0 < f(hi):
-            return _bracket_root(f, lo, hi, dps)
-        width *= 10
-    raise ValueError("no bracket around the float64 root")
-
-
-@lru_cache(maxsize=None)
-def _tilt(name, dps):
-    """The tilted equilibrium: the zero of the righting arm of the clipped prism (scanned at float64, refined
-    at dps digits), its state, and a check that neither base is cut there."""
-    with _prec(dps):
-        B = _Body(name, dps)
-        ph = _scan_root(B.arm, dps) if dps <= 15 else _refine(B.arm, _tilt(name, 15)[1], dps)
-        st, ev, up, h = B.state(ph)
-        if not (B.contact("top", ph) < 0 and B.contact("bot", ph) < 0):
-            raise AssertionError(f"{name}: a base is cut at the tilt")
-        return B, ph, st, ev, up, h
-
-
-@lru_cache(maxsize=None)
-def _contacts(name, dps):
-    """The tilts at which the upper and the lower base first reach the water (clipped prism)."""
-    with _prec(dps):
-        B = _Body(name, dps)
-        top, bot = (lambda q: B.contact("top", q)), (lambda q: B.contact("bot", q))
-        if dps <= 15:
-            return _scan_root(top, dps, stop=1.5, steps=30), _scan_root(bot, dps, stop=1.5, steps=30)
-        rough = _contacts(name, 15)
-        return _refine(top, rough[0], dps), _refine(bot, rough[1], dps)
-
-
-def _in_plane(basis, vec):
-    e1, e2 = basis
-    return (sum(vec[k] * e1[k] for k in range(3)), sum(vec[k] * e2[k] for k in range(3)))
-
-
-def _quad(M, a, c_):
-    return sum(a[i] * M[i][j] * c_[j] for i in range(2) for j in range(2))
-
-
-def _measure(name, what, dps, arg=None):
-    sin, cos, tan = _fn(dps)
-    with _prec(dps):
-        if what in ("arm", "height"):                     # at a given tilt
-            B = _Body(name, dps)
-            st, ev, up, h = B.state(_mp(arg, dps))
-            if what == "height":
-                return st.volume * sum(up[k] * (st.G[k] - st.B[k]) for k in range(3))
-            return st.volume * sum(h[k] * (st.B[k] - st.G[k]) for k in range(3))
-        if what == "upright-Ve1":
-            B = _Body(name, dps)
-            st = floating_state(B.poly, (0, 0, 1), B.s)
-            return st.volume * st.potential
-        if what == "upright-slope":                       # T about EF / V - height of G above B, upright
-            B = _Body(name, dps)
-            st = floating_state(B.poly, (0, 0, 1), B.s)
-            nc = _in_plane(st.basis, B.frame(0 * B.s)[1])
-            return _quad(st.tensor, nc, nc) / st.volume - st.potential
-        if what in ("base-Tw", "base-Iuv"):               # the base's moments for EF at the angle omega (44)
-            B = _Body(name, dps)
-            wp = submerged(B.poly, (0, 0, 1), 0 * B.s).waterplane
-            om_ = _mp(arg, dps)
-            nc = _in_plane(wp.basis, (cos(om_), sin(om_), 0))       # u = n . p
-            ec = _in_plane(wp.basis, (-sin(om_), cos(om_), 0))      # v = e . p
-            return _quad(wp.tensor, nc, nc) if what == "base-Tw" else _quad(wp.tensor, nc, ec)
-        if what in ("top", "bot", "first", "first-sign"):
-            a, b_ = _contacts(name, dps)
-            if what == "first-sign":
-                return 1 if a < b_ else -1
-            return tan({"top": a, "bot": b_, "first": min(a, b_)}[what])
-        if what == "law":                                  # int u v df of the stable tilt turned by omega
-            B, ph, *_ = _tilt(name, dps)
-            st, ev, up, h = B.state(ph, B.alpha + _mp(arg, dps))
-            return st.volume * sum(ev[k] * (st.B[k] - st.G[k]) for k in range(3)) / tan(ph)
-        B, ph, st, ev, up, h = _tilt(name, dps)
-        vol = st.volume
-        hc, ec = _in_plane(st.basis, h), _in_plane(st.basis, ev)
-        T2_, T21_, P2_ = _quad(st.tensor, hc, hc), _quad(st.tensor, ec, ec), _quad(st.tensor, hc, ec)
-        Ve2 = vol * st.potential
-        if what == "Tmu":
-            mu_ = _mp(arg, dps)
-            nc = _in_plane(st.basis, tuple(cos(mu_) * h[k] + sin(mu_) * ev[k] for k in range(3)))
-            return _quad(st.tensor, nc, nc)
-        values = {
-            "tan": lambda: tan(ph), "tan2": lambda: tan(ph) ** 2, "Ve2": lambda: Ve2,
-            "M2": lambda: vol * sum(ev[k] * (st.B[k] - st.G[k]) for k in range(3)),
-            "Q": lambda: vol * sum(h[k] * (st.B[k] - st.G[k]) for k in range(3)) / sin(ph),
-            "wp2": lambda: (T2_, T21_, P2_), "wp2-ext": lambda: (T2_, T21_), "P2": lambda: P2_,
-            "D2": lambda: vol * st.metacentric_height, "D2-sign": lambda: 1 if st.metacentric_height > 0 else -1,
-            "Tm-excess": lambda: T2_ - Ve2, "Tm-excess-sign": lambda: 1 if T2_ > Ve2 else -1,
-            "Tm1-excess": lambda: T21_ - Ve2, "Tm1": lambda: T21_, "Tm1-excess-sign": lambda: 1 if T21_ > Ve2 else -1,
-            "Tm-ratio": lambda: T2_ * cos(ph) ** 2, "Tm-order": lambda: 1 if T2_ > T21_ else -1,
-        }
-        if what == "Tmu-excess":
-            return _measure(name, "Tmu", dps, arg) - Ve2
-        return values[what]()
+# the clipped prism in the body frame (symfloat.engine.floating_witness): the axis EF along (cos alpha, sin alpha, 0),
+# the side (sin alpha, -cos alpha, 0) dips; tilted by psi about EF the prism has the up vector and the horizontal
+# across EF below, and reads B - G, the waterplane's moments and the bases' heights off the clipped body
+ALPHA, PSI = sp.symbols("alpha_EF psi")
+EV = sp.Matrix([sp.cos(ALPHA), sp.sin(ALPHA), 0])
+NN = sp.Matrix([sp.sin(ALPHA), -sp.cos(ALPHA), 0])
+UP = sp.cos(PSI) * sp.Matrix([0, 0, 1]) - sp.sin(PSI) * NN
+HOR = sp.cos(PSI) * NN + sp.sin(PSI) * sp.Matrix([0, 0, 1])
+V_, GB = MEASURED["immersed volume"], MEASURED["G above B"]
+BG = sp.Matrix([MEASURED[f"B - G, {k}"] for k in "xyz"])
+TOP, BOT = MEASURED["upper base above water"], MEASURED["lower base above water"]
+ARM = HOR.dot(BG)                                       # the righting arm: B - G across EF, towards the dip
+T2_, T21_, P2_ = waterplane_moment(HOR, HOR), waterplane_moment(EV, EV), waterplane_moment(HOR, EV)
 
 
 def _cases(names, extra=None):
+    """A case per body name (or (name, argument, parameters)): its exact parameters and the axis angle, the
+    clipped prism of its base and height."""
     out = []
     for nm in names:
         arg, ex = None, {}
         if isinstance(nm, tuple):
             nm, arg, ex = nm
-        params = _params(nm, {**(extra or {}), **ex})
-        out.append(Case(params, (nm, arg), nm + (f", {arg}" if arg is not None else "")))
+        poly, bb, _, alpha = BODIES[nm]
+        out.append(Case({**_params(nm, {**(extra or {}), **ex}), ALPHA: alpha}, {"body": Body.prism(poly, bb)},
+                        nm + (f", {arg}" if arg is not None else "")))
     return tuple(out)
 
 
-def _w(name, description, targets, what, names, extra=None):
-    d.witness(Computed(name, description, tuple(targets), lambda: _cases(names, extra),
-                       compute=lambda case, dps, what=what: _measure(case.data[0], what, dps, case.data[1])))
+def _tilted(name, description, targets, quantity, names, extra=None, **kw):
+    """The quantity at the tilted equilibrium: the first zero of the clipped righting arm, no base cut there."""
+    d.witness(RootWitness(name, description, tuple(targets), lambda: _cases(names, extra), up=tuple(UP), density=s,
+                          quantity=quantity, along=PSI, vanish=ARM, bracket=(R(1, 50), R(7, 5)), steps=28,
+                          guard=(TOP, -BOT), **kw))
+
+
+def _floating(name, description, targets, quantity, names, extra=None, up=(0, 0, 1)):
+    d.witness(FloatingWitness(name, description, tuple(targets), lambda: _cases(names, extra), up=tuple(up),
+                              density=s, quantity=quantity))
+
+
+def _contact(name, description, targets, vanish, names):
+    """tan of the first tilt at which a base reaches the water (the clipped prism's draught, not EF)."""
+    d.witness(RootWitness(name, description, tuple(targets), lambda: _cases(names), up=tuple(UP), density=s,
+                          quantity=sp.tan(PSI), along=PSI, vanish=vanish, bracket=(R(1, 50), R(3, 2)), steps=30))
 
 
 EQ = ("rect-long", "rect-short", "tri", "quad-p", "square-0", "tri-eq")
 NONISO = ("rect-long", "rect-short", "tri", "quad-p")
 ISO = ("square-0", "square-30", "tri-eq")
 LIM = ("tri-eq-apex", "tri-eq-apex-up", "square-lim", "rect-long", "rect-heavy")
-_w("tilt", "tan of the tilt where the righting arm of the clipped prism vanishes", ("27",), "tan", EQ)
-_w("tilt-squared", "tan^2 of the tilt where the righting arm of the clipped prism vanishes", ("54",), "tan2",
-   EQ + ("square-30",))
-_w("Ve2", "V times the height of G above B at that tilt (clipped prism)", ("34", "35"), "Ve2", EQ)
-_w("Ve1", "V times the height of G above B, upright (clipped prism)", ("32-restated",), "upright-Ve1", EQ)
-_w("upright-slope", "T about EF / V minus the height of G above B, upright clipped prism",
-   ("stable-18", "unstable-18", "52-condition"), "upright-slope", ("rect-long", "tri", "quad-x"))
+MU_AXIS = sp.cos(mu) * HOR + sp.sin(mu) * EV            # normal of the axis at the angle mu with EF
+_tilted("tilt", "tan of the tilt where the righting arm of the clipped prism vanishes", ("27",), sp.tan(PSI), EQ)
+_tilted("tilt-squared", "tan^2 of the tilt where the righting arm of the clipped prism vanishes", ("54",),
+        sp.tan(PSI) ** 2, EQ + ("square-30",))
+_tilted("Ve2", "V times the height of G above B at that tilt (clipped prism)", ("34", "35"), V_ * GB, EQ)
+_floating("Ve1", "V times the height of G above B, upright (clipped prism)", ("32-restated",), V_ * GB, EQ)
+_floating("upright-slope", "T about EF / V minus the height of G above B, upright clipped prism",
+          ("stable-18", "unstable-18", "52-condition"), waterplane_moment(NN, NN) / V_ - GB,
+          ("rect-long", "tri", "quad-x"))
 AT_PHI = (("quad-x", R(3, 10), {phi: R(3, 10)}), ("quad-x", R(1, 2), {phi: R(1, 2)}), ("tri", R(1, 5), {phi: R(1, 5)}))
-_w("arm", "V times the righting arm of the clipped prism at a given tilt", ("moment-12",), "arm", AT_PHI)
-_w("height", "V times the height of G above B of the clipped prism at a given tilt", ("13-restated",), "height",
-   AT_PHI)
-_w("M2", "V times the offset of B from G along EF, clipped prism at the zero of the arm",
-   ("31", "28", "M2-difference"), "M2", ("quad-x", "rect-long", "tri"), {P3: R(1, 3)})
-_w("Q", "V times the arm over sin phi at the zero of the arm (clipped prism)", ("moment-zero",), "Q", EQ)
-_w("wp2", "second moments of the clipped waterplane II about EF, across it, and the product", ("38",), "wp2",
-   ("quad-x", "rect-long", "tri", "quad-p"))
-_w("wp2-ext", "the moments of the clipped waterplane II about EF and across it", ("41", "42"), "wp2-ext", EQ)
-_w("P2", "product moment of the clipped waterplane II at the equilibrium tilt", ("39",), "P2",
-   ("rect-long", "tri", "quad-p"))
+_floating("arm", "V times the righting arm of the clipped prism at a given tilt", ("moment-12",),
+          V_ * ARM.subs(PSI, phi), AT_PHI, up=UP.subs(PSI, phi))
+_floating("height", "V times the height of G above B of the clipped prism at a given tilt", ("13-restated",), V_ * GB,
+          AT_PHI, up=UP.subs(PSI, phi))
+_tilted("M2", "V times the offset of B from G along EF, clipped prism at the zero of the arm",
+        ("31", "28", "M2-difference"), V_ * EV.dot(BG), ("quad-x", "rect-long", "tri"), {P3: R(1, 3)})
+_tilted("Q", "V times the arm over sin phi at the zero of the arm (clipped prism)", ("moment-zero",),
+        V_ * ARM / sp.sin(PSI), EQ)
+_tilted("wp2", "second moments of the clipped waterplane II about EF, across it, and the product", ("38",),
+        (T2_, T21_, P2_), ("quad-x", "rect-long", "tri", "quad-p"))
+_tilted("wp2-ext", "the moments of the clipped waterplane II about EF and across it", ("41", "42"), (T2_, T21_), EQ)
+_tilted("P2", "product moment of the clipped waterplane II at the equilibrium tilt", ("39",), P2_,
+        ("rect-long", "tri", "quad-p"))
 # not (37): its cases lie at the tilted equilibrium, where int_2 u_2 v_2 df_2 = 0 and the print of (37) (df for
 # df_2 in that term) and its correction coincide
-_w("Tmu", "moment of the clipped waterplane II about the axis at the angle mu with EF", ("40",), "Tmu",
-   (("rect-long", R(1, 3), {mu: R(1, 3)}), ("quad-p", R(6, 5), {mu: R(6, 5)}), ("tri", R(7, 10), {mu: R(7, 10)})))
-_w("D2", "V times the metacentric height of the clipped tilted prism", ("33", "43", "43-again"), "D2", EQ)
-_w("D2-sign", "sign of the metacentric height of the clipped tilted prism", ("claim-43a",), "D2-sign", NONISO)
-_w("Tm-excess", "moment of II about EF minus V times the height of G over B (clipped)", ("43-Tm",), "Tm-excess", EQ)
-_w("Tm-excess-sign", "its sign", ("43-always",), "Tm-excess-sign", EQ)
-_w("Tm1-excess", "moment across EF minus V times the height of G over B (clipped)",
-   ("43a-conclusion",), "Tm1-excess", NONISO)
-_w("iso-wp2", "moments of the clipped waterplane II, isotropic bases", ("50-Tm",), "wp2-ext", ISO)
-_w("iso-ratio", "T_m cos^2 phi from the clipped waterplane II, isotropic bases", ("50-ratio",), "Tm-ratio", ISO)
-_w("iso-order", "which moment of the clipped waterplane II is larger, isotropic bases", ("50",), "Tm-order", ISO)
-_w("iso-Tm1-value", "moment of the clipped waterplane II across EF, isotropic bases", ("Tm1-min",), "Tm1", ISO)
-_w("iso-Tm1", "moment across EF minus V e_2 of the clipped waterplane II, isotropic bases", ("51",),
-   "Tm1-excess", ISO)
-_w("iso-Tmu", "moment about the axis at mu minus V e_2, clipped, isotropic bases", ("51-claim",), "Tmu-excess",
-   (("square-0", R(1, 3), {mu: R(1, 3)}), ("tri-eq", R(5, 4), {mu: R(5, 4)}), ("square-30", R(1, 2), {mu: R(1, 2)})))
+_tilted("Tmu", "moment of the clipped waterplane II about the axis at the angle mu with EF", ("40",),
+        waterplane_moment(MU_AXIS, MU_AXIS),
+        (("rect-long", R(1, 3), {mu: R(1, 3)}), ("quad-p", R(6, 5), {mu: R(6, 5)}), ("tri", R(7, 10), {mu: R(7, 10)})))
+_tilted("D2", "V times the metacentric height of the clipped tilted prism", ("33", "43", "43-again"),
+        V_ * MEASURED["metacentric height"], EQ)
+_tilted("D2-sign", "sign of the metacentric height of the clipped tilted prism", ("claim-43a",), "stability sign",
+        NONISO)
+_tilted("Tm-excess", "moment of II about EF minus V times the height of G over B (clipped)", ("43-Tm",),
+        T2_ - V_ * GB, EQ)
+_tilted("Tm-excess-sign", "its sign", ("43-always",), sp.sign(T2_ - V_ * GB), EQ)
+_tilted("Tm1-excess", "moment across EF minus V times the height of G over B (clipped)", ("43a-conclusion",),
+        T21_ - V_ * GB, NONISO)
+_tilted("iso-wp2", "moments of the clipped waterplane II, isotropic bases", ("50-Tm",), (T2_, T21_), ISO)
+_tilted("iso-ratio", "T_m cos^2 phi from the clipped waterplane II, isotropic bases", ("50-ratio",),
+        T2_ * sp.cos(PSI) ** 2, ISO)
+_tilted("iso-order", "which moment of the clipped waterplane II is larger, isotropic bases", ("50",),
+        sp.sign(T2_ - T21_), ISO)
+_tilted("iso-Tm1-value", "moment of the clipped waterplane II across EF, isotropic bases", ("Tm1-min",), T21_, ISO)
+_tilted("iso-Tm1", "moment across EF minus V e_2 of the clipped waterplane II, isotropic bases", ("51",),
+        T21_ - V_ * GB, ISO)
+_tilted("iso-Tmu", "moment about the axis at mu minus V e_2, clipped, isotropic bases", ("51-claim",),
+        waterplane_moment(MU_AXIS, MU_AXIS) - V_ * GB,
+        (("square-0", R(1, 3), {mu: R(1, 3)}), ("tri-eq", R(5, 4), {mu: R(5, 4)}),
+         ("square-30", R(1, 2), {mu: R(1, 2)})))
 QUAD_OM = (("quad-x", R(1, 3), {om: R(1, 3)}), ("quad-x", R(6, 5), {om: R(6, 5)}))
-_w("base-T1", "moment of the clipped upright waterplane about the axis EF at the angle omega",
-   ("T1-expanded", "T1-def"), "base-Tw", QUAD_OM, {Tx: QYY, Ty: QXX, J: QXY})
-_w("base-T1-sym", "moment of the clipped upright waterplane about EF, symmetric bases", ("T1-symmetric",), "base-Tw",
-   (("rect-long", R(1, 3), {om: R(1, 3), Tx: R(2, 3), Ty: R(1, 6)}),
-    ("tri", R(6, 5), {om: R(6, 5), Tx: R(2, 9), Ty: R(1, 24)})))
-_w("base-Iuv", "product moment of the clipped upright waterplane in the axes EF, GH", ("45", "second-condition"),
-   "base-Iuv", QUAD_OM, {Tx: QYY, Ty: QXX, J: QXY})
-_w("law", "int u v df of the stable tilt turned about the prism axis by omega (clipped)", ("law",), "law",
-   (("rect-law", sp.pi / 12, {om: sp.pi / 12}), ("rect-law", sp.pi / 6, {om: sp.pi / 6})),
-   {Tx: R(18, 125), Ty: R(1, 10)})
+EF_OM = sp.Matrix([-sp.sin(om), sp.cos(om), 0])         # EF at the angle omega with AB (the y axis), (44)
+U_OM = sp.Matrix([sp.cos(om), sp.sin(om), 0])           # u across it
+_floating("base-T1", "moment of the clipped upright waterplane about the axis EF at the angle omega",
+          ("T1-expanded", "T1-def"), waterplane_moment(U_OM, U_OM), QUAD_OM, {Tx: QYY, Ty: QXX, J: QXY})
+_floating("base-T1-sym", "moment of the clipped upright waterplane about EF, symmetric bases", ("T1-symmetric",),
+          waterplane_moment(U_OM, U_OM), (("rect-long", R(1, 3), {om: R(1, 3), Tx: R(2, 3), Ty: R(1, 6)}),
+                                          ("tri", R(6, 5), {om: R(6, 5), Tx: R(2, 9), Ty: R(1, 24)})))
+_floating("base-Iuv", "product moment of the clipped upright waterplane in the axes EF, GH", ("45", "second-condition"),
+          waterplane_moment(U_OM, EF_OM), QUAD_OM, {Tx: QYY, Ty: QXX, J: QXY})
+TURNED = {ALPHA: ALPHA + om}                            # the tilt found about EF, the prism then turned by omega
+d.witness(RootWitness("law", "int u v df of the stable tilt turned about the prism axis by omega (clipped)", ("law",),
+                      lambda: _cases((("rect-law", sp.pi / 12, {om: sp.pi / 12}),
+                                      ("rect-law", sp.pi / 6, {om: sp.pi / 6})), {Tx: R(18, 125), Ty: R(1, 10)}),
+                      up=tuple(UP.xreplace(TURNED)), density=s,
+                      quantity=V_ * EV.xreplace(TURNED).dot(BG) / sp.tan(PSI), along=PSI,
+                      vanish=ARM.xreplace(TURNED), bracket=(R(1, 50), R(7, 5)), steps=28, solve_at={om: 0},
+                      guard=(TOP, -BOT)))
 # (53) and (53a) hold for the base reached first (afterwards the water plane no longer passes through EF)
-_w("top", "tan of the tilt where the clipped prism's upper base reaches the water, reached first", ("53",), "top",
-   ("tri-eq-apex", "rect-heavy"))
-_w("bot", "tan of the tilt where the clipped prism's lower base reaches the water, reached first", ("53a",), "bot",
-   ("tri-eq-apex-up", "square-lim", "rect-long"))
-_w("first", "tan of the first contact of either base (clipped prism)", ("55",), "first", LIM)
+_contact("top", "tan of the tilt where the clipped prism's upper base reaches the water, reached first", ("53",), -TOP,
+         ("tri-eq-apex", "rect-heavy"))
+_contact("bot", "tan of the tilt where the clipped prism's lower base reaches the water, reached first", ("53a",), BOT,
+         ("tri-eq-apex-up", "square-lim", "rect-long"))
+_contact("first", "tan of the first contact of either base (clipped prism)", ("55",), sp.Max(-TOP, BOT), LIM)
 
 
 # ---- predictions: the upright and the tilted positions of the first rotation region (IV, V) -------------------------
@@ -1072,15 +929,11 @@ def _box_predictions(dims, sv):
 
 
 def _ngon_predictions(n_, av, h_, sv):
-    """The regular n-gon base (vertex on +x): F_1 and T_1 from its vertices (shoelace integrals), u_m from
+    """The regular n-gon base (vertex on +x): F_1 and T_1 from its vertices (polygon moments), u_m from
     r cos(pi/n) (an axis parallel to a side) to r (an axis across a vertex)."""
     R_ = av / (2 * math.sin(math.pi / n_))
-    pts = [(R_ * math.cos(2 * math.pi * k / n_), R_ * math.sin(2 * math.pi * k / n_)) for k in range(n_)]
-    F_ = Iyy = 0.0
-    for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1]):
-        cr = x0 * y1 - x1 * y0
-        F_ += cr / 2
-        Iyy += (y0 * y0 + y0 * y1 + y1 * y1) * cr / 12
+    F_, _, ((_, _), (_, Iyy)) = polygon_moments(
+        [(R_ * math.cos(2 * math.pi * k / n_), R_ * math.sin(2 * math.pi * k / n_)) for k in range(n_)])
     out = [_upright(Iyy, F_ * h_ * sv, h_ * (1 - sv) / 2, (0.0, 0.0, 1.0))]
     ang = math.pi / n_ + (math.pi if sv > 0.5 else 0.0)  # a side meets the water last: the axis parallel to it
     return out + _isotropic_ring(F_, Iyy, h_, sv, (R_ * math.cos(math.pi / n_)) ** 2, R_ ** 2, lambda ph: (

@@ -19,8 +19,10 @@ import numpy as np
 import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
+from symfloat.engine.floating_witness import (MEASURED, Body, FloatingWitness, Joined, RootWitness, first_zero,
+                                              waterplane_moment)
 from symfloat.engine.witness import Case, Computed, Precision
-from symfloat.geometry.floating import (cylinder_state, floating_state, right_prism, submerged)
+from symfloat.geometry.floating import cylinder_state, polygon_moments
 from symfloat.model.claim import as_printed
 
 
@@ -993,26 +995,6 @@ def _n(v, dps):
     return mpmath.mpf(sp.N(sp.sympify(v), dps + 10)) if dps > 15 else mpmath.mpf(float(sp.sympify(v)))
 
 
-def _geo_dps(dps):
-    return None if dps <= 15 else dps
-
-
-def _dot(p, q):
-    return sum(x * y for x, y in zip(p, q))
-
-
-def _root(f, lo, step):
-    """The first sign change of f above lo (scanned with the given step), refined by a bracketing solver."""
-    lo = mpmath.mpf(lo)
-    f_lo = f(lo)
-    hi = lo + step
-    while f(hi) * f_lo > 0:
-        lo, hi = hi, hi + step
-        if hi > 20:
-            raise ValueError("no sign change")
-    return mpmath.findroot(f, (lo, hi), solver="anderson")
-
-
 _CACHE = {}
 
 
@@ -1022,58 +1004,8 @@ def _cached(key, fn):
     return _CACHE[key]
 
 
-def triangle_prism(a_, b_, dps):
-    t = mpmath.sqrt(3)
-    pts = [(-a_ / 2, -a_ / (2 * t)), (a_ / 2, -a_ / (2 * t)), (mpmath.mpf(0), a_ / t)]
-    return right_prism(pts, b_, _geo_dps(dps))
-
-
-def triangle_tilt(a_, b_, s_, w_, phi, dps, flip=False):
-    """Clipped triangular prism (axis z, G at the origin) tilted by phi about the axis PQ at omega = w_;
-    the vertex B side n dips (flip: rises).  Returns the righting arm, the arm along the axis, the top
-    clearance (lowest top vertex above water) and the bottom clearance (highest bottom vertex above water)."""
-    poly = triangle_prism(a_, b_, dps)
-    sgn = -1 if flip else 1
-    n = (-sgn * mpmath.sin(w_), -sgn * mpmath.cos(w_), mpmath.mpf(0))
-    p = (-mpmath.cos(w_), mpmath.sin(w_), mpmath.mpf(0))
-    up = tuple(-mpmath.sin(phi) * n[k] + (mpmath.cos(phi) if k == 2 else 0) for k in range(3))
-    w = tuple(mpmath.cos(phi) * n[k] + (mpmath.sin(phi) if k == 2 else 0) for k in range(3))
-    st = floating_state(poly, up, s_)
-    BG = tuple(mpmath.mpf(st.B[k]) - mpmath.mpf(st.G[k]) for k in range(3))
-    top = [v for v in poly.vertices if v[2] > 0]
-    bot = [v for v in poly.vertices if v[2] < 0]
-    t = mpmath.mpf(st.t)
-    return (_dot(w, BG), _dot(p, BG), min(_dot(up, v) for v in top) - t, max(_dot(up, v) for v in bot) - t, st)
-
-
-def triangle_upright_gm(a_, b_, s_, dps):
-    st = floating_state(triangle_prism(a_, b_, dps), (0, 0, 1), s_)
-    return mpmath.mpf(st.metacentric_height), mpmath.mpf(st.volume)
-
-
-def triangle_equilibrium(a_, b_, s_, w_, dps):
-    """tan(phi_1): the first root of the measured righting arm."""
-    phi = _root(lambda f: triangle_tilt(a_, b_, s_, w_, f, dps)[0], mpmath.mpf("0.02"), mpmath.mpf("0.05"))
-    return mpmath.tan(phi)
-
-
-def triangle_contact(a_, b_, s_, w_, dps, which=2, flip=False):
-    """tan of the tilt at which the top (which=2) or bottom (3) base first meets the water."""
-    phi = _root(lambda f: triangle_tilt(a_, b_, s_, w_, f, dps, flip)[which], mpmath.mpf("0.02"), mpmath.mpf("0.05"))
-    return mpmath.tan(phi)
-
-
 def P(case, dps, *syms):
     return [_n(case.params[k], dps) for k in syms]
-
-
-def tri_gm(case, dps):
-    return _cached(("gm", tuple(case.params.items()), dps), lambda: triangle_upright_gm(*P(case, dps, a, b, s), dps))
-
-
-def tri_eq(case, dps):
-    return _cached(("eq", tuple(case.params.items()), dps),
-                   lambda: triangle_equilibrium(*P(case, dps, a, b, s, om), dps))
 
 
 def cw(name, description, targets, cases, compute, methods=None):
@@ -1081,84 +1013,82 @@ def cw(name, description, targets, cases, compute, methods=None):
     d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=compute, **kw))
 
 
-# (56): an isosceles trapezoid (symmetric about the Y axis, not regular), moments exact
-def _trapezoid():
-    pts = [(-2, 0), (2, 0), (1, 3), (-1, 3)]
-    A = sp.Rational(0)
-    cy = sp.Rational(0)
-    for (x1, y1), (x2, y2) in zip(pts, pts[1:] + pts[:1]):
-        c = sp.Rational(x1 * y2 - x2 * y1)
-        A += c / 2
-        cy += (y1 + y2) * c / 6
-    cy /= A
-    pts = [(sp.Rational(px), sp.Rational(py) - cy) for px, py in pts]
-    Jxx = Jyy = sp.Rational(0)
-    for (x1, y1), (x2, y2) in zip(pts, pts[1:] + pts[:1]):
-        c = x1 * y2 - x2 * y1
-        Jxx += (x1 ** 2 + x1 * x2 + x2 ** 2) * c / 12
-        Jyy += (y1 ** 2 + y1 * y2 + y2 ** 2) * c / 12
-    return pts, Jyy, Jxx          # T_x = int y^2, T_y = int x^2
+# ---- floating witnesses of the triangular prism (symfloat.engine.floating_witness) ------------------------
+# the triangle B C A of the text (edge a, centre O at the origin, A on the +Y axis), the prism of height b along z;
+# tilted by psi about the axis PQ at the angle omega with OB, the side n (vertex B's side) dipping
+PSI = sp.Symbol("psi")
+U_OM = sp.Matrix([sp.cos(om), sp.sin(om), 0])           # the normal of the axis at the angle omega (u of (44))
+N_DIP = sp.Matrix([-sp.sin(om), -sp.cos(om), 0])
+UP = sp.cos(PSI) * sp.Matrix([0, 0, 1]) - sp.sin(PSI) * N_DIP
+ARM = (sp.cos(PSI) * N_DIP + sp.sin(PSI) * sp.Matrix([0, 0, 1])).dot(
+    sp.Matrix([MEASURED[f"B - G, {k}"] for k in "xyz"]))  # B - G horizontally towards the dip: the righting arm
+TOP, BOT = MEASURED["upper base above water"], MEASURED["lower base above water"]
+GM, VOL = MEASURED["metacentric height"], MEASURED["immersed volume"]
+HALF = sp.Rational(1, 2)
 
 
-TRAP, TRAP_TX, TRAP_TY = _trapezoid()
+def _triangle(edge, height):
+    return Body.prism(((-edge / 2, -edge / (2 * sq3)), (edge / 2, -edge / (2 * sq3)), (0, edge / sq3)), height)
 
 
-def moment_about(points, angle, dps):
-    """int (x cos w + y sin w)^2 df: the polygon turned so that the axis normal becomes x, then the
-    central moment int x^2 of its clipped waterplane."""
-    c, sn = mpmath.cos(angle), mpmath.sin(angle)
-    pts = [(_n(px, dps) * c + _n(py, dps) * sn, -_n(px, dps) * sn + _n(py, dps) * c) for px, py in points]
-    wp = submerged(right_prism(pts, 1, _geo_dps(dps)), (0, 0, 1), 0).waterplane
-    return mpmath.mpf(wp.tensor[0][0])
+def fw(name, description, targets, cases, quantity, body=None, up=(0, 0, 1), density=s):
+    """A quantity of the floating prism (upright unless *up* is given)."""
+    d.witness(FloatingWitness(name, description, tuple(targets), tuple(cases), body=body or _triangle(a, b),
+                              up=tuple(up), density=density, quantity=quantity))
 
 
-cw("trapezoid-moments", "moment of a symmetric trapezoid about axes through its centroid (clipped waterplane)",
+def tilted(name, description, targets, cases, quantity, vanish=ARM, body=None, **kw):
+    """A quantity at the first zero of *vanish* (the righting arm: the tilted equilibrium) as the tilt grows."""
+    d.witness(_root_witness(name, description, targets, cases, quantity, vanish, body, **kw))
+
+
+def _root_witness(name, description, targets, cases, quantity, vanish, body=None, at=None, **kw):
+    """*at*: values of the example (the axis omega) put into the up vector and the quantities."""
+    put = (lambda e: e.xreplace(at) if at and isinstance(e, sp.Basic) else e)     # noqa: E731
+    kw.setdefault("up", tuple(put(c) for c in UP))
+    kw.setdefault("along", PSI)
+    kw.setdefault("bracket", (sp.Rational(1, 50), sp.Rational(3, 2)))
+    kw.setdefault("steps", 30)
+    return RootWitness(name, description, tuple(targets), tuple(cases), body=body or _triangle(a, b),
+                       density=kw.pop("density", s), quantity=put(quantity), vanish=put(vanish), **kw)
+
+
+# (56): an isosceles trapezoid (symmetric about the Y axis, not regular); T_x = int y^2, T_y = int x^2 about its
+# centroid (polygon_moments, exact)
+TRAP = ((-2, 0), (2, 0), (1, 3), (-1, 3))
+_, _, ((TRAP_TY, _), (_, TRAP_TX)) = polygon_moments([(sp.Integer(x_), sp.Integer(y_)) for x_, y_ in TRAP])
+fw("trapezoid-moments", "moment of a symmetric trapezoid about axes through its centroid (clipped waterplane)",
    ("56",), [Case({Tx: TRAP_TX, Ty: TRAP_TY, om: w_}, label=f"omega = {w_}") for w_ in (sp.Rational(2, 5), 1)],
-   lambda case, dps: moment_about(TRAP, _n(case.params[om], dps), dps))
-
-
-def _ngon_points(n, side, dps):
-    R = side / (2 * mpmath.sin(mpmath.pi / n))
-    return [(R * mpmath.cos(2 * mpmath.pi * k / n), R * mpmath.sin(2 * mpmath.pi * k / n)) for k in range(n)]
-
-
-cw("regular-polygon-moments", "moments of regular polygons about a turned axis (clipped waterplane)",
-   ("regular-polygon-theorem",), [Case({a: 1, om: sp.Rational(1, 3)}), Case({a: sp.Rational(3, 2), om: 1})],
-   lambda case, dps: tuple(moment_about(_ngon_points(n, _n(case.params[a], dps), dps), _n(case.params[om], dps), dps)
-                           for n in NGONS))
+   waterplane_moment(U_OM, U_OM), body=Body.prism(TRAP, 1), density=HALF)
+d.witness(Joined("regular-polygon-moments", "moments of regular polygons about a turned axis (clipped waterplane)",
+                 ("regular-polygon-theorem",),
+                 (Case({a: 1, om: sp.Rational(1, 3)}), Case({a: sp.Rational(3, 2), om: 1})),
+                 parts=tuple(FloatingWitness(f"{n}-gon", "", (), (), body=Body.regular(n, a, 1), density=HALF,
+                                             quantity=waterplane_moment(U_OM, U_OM)) for n in NGONS)))
 
 up_cases = [Case({a: 1, b: 1, s: sp.Rational(1, 2)}, label="labile"), Case({a: 2, b: 1, s: sp.Rational(4, 5)}, label="stable"),
             Case({a: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 4)})]
-cw("triangle-upright-57", "24 s/b times the metacentric height of the clipped upright prism", ("57", "65-I"), up_cases,
-   lambda case, dps: 24 * _n(case.params[s], dps) / _n(case.params[b], dps) * tri_gm(case, dps)[0])
-cw("triangle-upright-58", "2 s/b times the metacentric height of the clipped upright prism", ("58",), up_cases,
-   lambda case, dps: 2 * _n(case.params[s], dps) / _n(case.params[b], dps) * tri_gm(case, dps)[0])
-cw("triangle-upright-moment", "displacement times metacentric height (clipped upright prism)",
-   ("triangle-condition",), up_cases, lambda case, dps: tri_gm(case, dps)[0] * tri_gm(case, dps)[1])
+fw("triangle-upright-57", "24 s/b times the metacentric height of the clipped upright prism", ("57", "65-I"), up_cases,
+   24 * s / b * GM)
+fw("triangle-upright-58", "2 s/b times the metacentric height of the clipped upright prism", ("58",), up_cases,
+   2 * s / b * GM)
+fw("triangle-upright-moment", "displacement times metacentric height (clipped upright prism)",
+   ("triangle-condition",), up_cases, VOL * GM)
 
 tilt_cases = [Case({a: sp.Rational(83, 50), b: 1, s: sp.Rational(11, 20), om: sp.Rational(1, 5)}, label="II, s > 1/2"),
               Case({a: sp.Rational(33, 20), b: 1, s: sp.Rational(2, 5), om: sp.Rational(9, 10)}, label="II, s < 1/2")]
-cw("triangle-tilted-equilibrium", "tan of the tilt where the righting arm of the clipped prism vanishes",
-   ("60-tan", "ex3-tan"), tilt_cases, tri_eq)
-cw("triangle-tilted-equilibrium-squared", "the same, squared", ("65-tan",), tilt_cases, lambda c, p: tri_eq(c, p) ** 2)
+tilted("triangle-tilted-equilibrium", "tan of the tilt where the righting arm of the clipped prism vanishes",
+       ("60-tan", "ex3-tan"), tilt_cases, sp.tan(PSI))
+tilted("triangle-tilted-equilibrium-squared", "the same, squared", ("65-tan",), tilt_cases, sp.tan(PSI) ** 2)
 lim_cases = [Case({a: 1, b: 1, s: sp.Rational(3, 5), om: sp.Rational(3, 10)}),
              Case({a: sp.Rational(3, 2), b: 2, s: sp.Rational(7, 10), om: 1})]
-
-
-def tri_top(case, dps):
-    return _cached(("top", tuple(case.params.items()), dps),
-                   lambda: triangle_contact(*P(case, dps, a, b, s, om), dps, which=2))
-
-
-cw("triangle-top-contact", "tan of the tilt at which the clipped prism's top base meets the water",
-   ("60-bound",), lim_cases, tri_top)
-cw("triangle-top-contact-distance", "b(1-s) over the measured contact tangent: the distance of the dipping vertex",
-   ("59",), lim_cases,
-   lambda case, dps: _n(case.params[b], dps) * (1 - _n(case.params[s], dps)) / tri_top(case, dps))
-cw("triangle-first-contact", "tan of the tilt at which either base of the clipped prism meets the water",
-   ("60-one-base",), [Case({}, label="a = b = 1, s = 3/5, omega = 0")],
-   lambda case, dps: min(triangle_contact(1, 1, mpmath.mpf(3) / 5, 0, dps, which=2),
-                         triangle_contact(1, 1, mpmath.mpf(3) / 5, 0, dps, which=3)))
+tilted("triangle-top-contact", "tan of the tilt at which the clipped prism's top base meets the water",
+       ("60-bound",), lim_cases, sp.tan(PSI), TOP)
+tilted("triangle-top-contact-distance", "b(1-s) over the measured contact tangent: the distance of the dipping vertex",
+       ("59",), lim_cases, b * (1 - s) / sp.tan(PSI), TOP)
+tilted("triangle-first-contact", "tan of the tilt at which either base of the clipped prism meets the water",
+       ("60-one-base",), [Case({}, label="a = b = 1, s = 3/5, omega = 0")], sp.tan(PSI), sp.Min(TOP, -BOT),
+       body=_triangle(1, 1), density=sp.Rational(3, 5), at={om: 0})
 
 
 # ---- the cylinder: quadrature of the defining integrals over the disc (x = r sin(theta)) ---------------
@@ -1192,7 +1122,7 @@ def cylinder_gm(r_, b_, s_, dps):
 
 
 def cylinder_equilibrium(r_, b_, s_, dps):
-    return _root(lambda f: cylinder_tilt(r_, b_, s_, f, dps)[0], mpmath.mpf("0.02"), mpmath.mpf("0.05"))
+    return first_zero(lambda p: lambda f: cylinder_tilt(r_, b_, s_, f, p)[0], "0.02", "1.52", 30, dps)
 
 
 cyl_cases = [Case({r: 1, b: 1, s: sp.Rational(1, 2)}), Case({r: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 5)}),
@@ -1217,54 +1147,41 @@ cw("cylinder-tilted-equilibrium", "tan^2 of the tilt where the quadrature righti
 one = [Case({}, label="the example's data")]
 
 
-def ex1_ratio_geo(dps):
-    return _root(lambda q_: triangle_upright_gm(q_, 1, mpmath.mpf(4) / 5, dps)[0], mpmath.mpf("1.2"), mpmath.mpf("0.05"))
+# the examples' data are in the bodies: a root along the aspect ratio Q = a/b (b = 1) or along the density
+Q = sp.Symbol("Q", positive=True)
+tilted("example-1", "a/b at which the clipped upright prism (s = 0.8) has zero metacentric height",
+       ("ex1-root", "ex1-value"), one, Q, GM, body=_triangle(Q, 1), up=(0, 0, 1), density=sp.Rational(4, 5), along=Q,
+       bracket=(sp.Rational(6, 5), 2), steps=16)
+for nm, description, tg, quantity, lo, hi in (
+        ("example-2-upper", "density of zero metacentric height, a = b (clipped prism), upper", "ex2-upper", s,
+         HALF, sp.Rational(99, 100)),
+        ("example-2-lower", "the same, lower", "ex2-lower", s, sp.Rational(1, 100), HALF),
+        ("example-2-root", "2 s_+ - 1 from the measured density", "ex2-root-value", 2 * s - 1, HALF,
+         sp.Rational(99, 100)),
+        ("example-2-radicand", "2 s_+ - 1, the root of the radicand, from the measured density", "ex2-two-thirds",
+         2 * s - 1, HALF, sp.Rational(99, 100))):
+    tilted(nm, description, (tg,), one, quantity, GM, body=_triangle(1, 1), up=(0, 0, 1), along=s, bracket=(lo, hi),
+           steps=49)
 
 
-cw("example-1", "a/b at which the clipped upright prism (s = 0.8) has zero metacentric height", ("ex1-root", "ex1-value"),
-   one, lambda case, dps: _cached(("ex1", dps), lambda: ex1_ratio_geo(dps)))
+tilted("example-3-angle", "equilibrium tilt of the clipped prism at s = 2/3, a/b = sqrt(5/2), degrees", ("ex3-angle",),
+       one, 180 * PSI / pi, body=_triangle(sp.sqrt(Q60_3), 1), density=sp.Rational(2, 3), at={om: pi / 3})
 
 
-def ex2_roots(dps):
-    f = lambda s_: triangle_upright_gm(1, 1, s_, dps)[0]
-    return _root(f, mpmath.mpf("0.5"), mpmath.mpf("0.05")), _root(f, mpmath.mpf("0.01"), mpmath.mpf("0.02"))
-
-
-ex2 = lambda dps: _cached(("ex2", dps), lambda: ex2_roots(dps))
-cw("example-2-upper", "density of zero metacentric height, a = b (clipped prism), upper", ("ex2-upper",), one,
-   lambda c, dps: ex2(dps)[0])
-cw("example-2-lower", "the same, lower", ("ex2-lower",), one, lambda c, dps: ex2(dps)[1])
-cw("example-2-root", "2 s_+ - 1 from the measured density", ("ex2-root-value",), one, lambda c, dps: 2 * ex2(dps)[0] - 1)
-cw("example-2-radicand", "2 s_+ - 1, the root of the radicand, from the measured density", ("ex2-two-thirds",), one,
-   lambda c, dps: 2 * ex2(dps)[0] - 1)
-
-
-def ex3_angle(dps):
-    q_ = mpmath.sqrt(_n(Q60_3, dps))
-    return mpmath.degrees(mpmath.atan(triangle_equilibrium(q_, 1, mpmath.mpf(2) / 3, mpmath.pi / 3, dps)))
-
-
-cw("example-3-angle", "equilibrium tilt of the clipped prism at s = 2/3, a/b = sqrt(5/2), degrees", ("ex3-angle",), one,
-   lambda c, dps: ex3_angle(dps))
-
-
-def ex4_check(dps):
-    """At s = 7/11, a/b = 12 sqrt2/11, omega = 15 deg: the measured equilibrium tangent and the tangent at which the
-    top vertex meets the water (both tan 30 deg for the example's answer)."""
-    q_ = 12 * mpmath.sqrt(2) / 11
-    s_ = mpmath.mpf(7) / 11
-    return triangle_equilibrium(q_, 1, s_, mpmath.pi / 12, dps), triangle_contact(q_, 1, s_, mpmath.pi / 12, dps)
-
-
-cw("example-4", "clipped prism at the example's answer: equilibrium and contact tangents (omega = 15 deg)", ("67",),
-   [Case({a: 12 * sp.sqrt(2) / 11, b: 1, s: sp.Rational(7, 11)})], lambda c, dps: ex4_check(dps))
+EX4 = {"body": _triangle(12 * sp.sqrt(2) / 11, 1), "density": sp.Rational(7, 11), "at": {om: pi / 12}}
+d.witness(Joined("example-4",
+                 "clipped prism at the example's answer: equilibrium and contact tangents (omega = 15 deg)", ("67",),
+                 (Case({a: 12 * sp.sqrt(2) / 11, b: 1, s: sp.Rational(7, 11)}),),
+                 parts=(_root_witness("equilibrium", "", (), (), sp.tan(PSI), ARM, **EX4),
+                        _root_witness("top contact", "", (), (), sp.tan(PSI), TOP, **EX4))))
 cw("example-5", "2r/b at which the upright cylinder (s = 1/2) has zero metacentric height (quadrature)", ("ex5", "sqrt2"),
-   one, lambda c, dps: 2 * _root(lambda r_: cylinder_gm(r_, 1, mpmath.mpf(1) / 2, dps), mpmath.mpf("0.5"), mpmath.mpf("0.05")))
+   one, lambda c, dps: 2 * first_zero(lambda p: lambda r_: cylinder_gm(r_, 1, mpmath.mpf(1) / 2, p), "0.5", "1.5", 20,
+                                      dps))
 
 
 def ex6_roots(dps):
-    f = lambda s_: cylinder_gm(mpmath.mpf(1) / 2, 1, s_, dps)
-    return _root(f, mpmath.mpf("0.5"), mpmath.mpf("0.05")), _root(f, mpmath.mpf("0.01"), mpmath.mpf("0.02"))
+    gm = lambda p: lambda s_: cylinder_gm(mpmath.mpf(1) / 2, 1, s_, p)      # noqa: E731
+    return first_zero(gm, "0.5", "0.99", 49, dps), first_zero(gm, "0.01", "0.49", 24, dps)
 
 
 ex6 = lambda dps: _cached(("ex6", dps), lambda: ex6_roots(dps))
@@ -1281,11 +1198,13 @@ for nm, tg, fn in (("example-6-root", "ex6-root-value", lambda dps: 2 * ex6(dps)
 
 def ex7_bottom(dps):
     """Density (2r = b = 1, s < 1/2) at which the bottom rim reaches the water in the tilted equilibrium."""
-    def gap(s_):
-        phi = cylinder_equilibrium(mpmath.mpf(1) / 2, 1, s_, dps)
-        c = cylinder_tilt(mpmath.mpf(1) / 2, 1, s_, phi, dps)[1]
-        return c - mpmath.mpf(1) / 2 * mpmath.tan(phi)          # water height over the rising rim
-    return mpmath.findroot(gap, (mpmath.mpf("0.148"), mpmath.mpf("0.165")), solver="anderson")
+    def gap(p):
+        def at(s_):
+            phi = cylinder_equilibrium(mpmath.mpf(1) / 2, 1, s_, p)
+            c = cylinder_tilt(mpmath.mpf(1) / 2, 1, s_, phi, p)[1]
+            return c - mpmath.mpf(1) / 2 * mpmath.tan(phi)          # water height over the rising rim
+        return at
+    return first_zero(gap, "0.148", "0.165", 1, dps)
 
 
 ex7 = lambda dps: _cached(("ex7", dps), lambda: ex7_bottom(dps))
@@ -1312,126 +1231,68 @@ cw("example-10-dry-cm", "the part above water in cm", ("ex10-dry-cm",), one,
    lambda c, dps: 100 * (mpmath.mpf("2.5") - ex10c(dps)[1]))
 
 
-def ex_III_delta(dps):
-    """At s = 11/20, (a/b)^2 = 11/5 (region III): the righting arm of the clipped prism at the first contact of
-    a base, for the axis omega_x (where both contacts coincide)."""
-    q_, s_ = mpmath.sqrt(mpmath.mpf(11) / 5), mpmath.mpf(11) / 20
-    w_ = mpmath.atan((2 - 3 * s_) / (mpmath.sqrt(3) * s_))
-    top = triangle_contact(q_, 1, s_, w_, dps, which=2)
-    bottom = triangle_contact(q_, 1, s_, w_, dps, which=3)
-    return triangle_tilt(q_, 1, s_, w_, mpmath.atan(min(top, bottom)), dps)[0]
-
-
-cw("region-III-counterexample", "righting arm at the first base contact, clipped prism", ("65-III-claim",),
-   one, lambda c, dps: ex_III_delta(dps))
+# at s = 11/20, (a/b)^2 = 11/5 (region III): the righting arm of the clipped prism at the first contact of a base,
+# for the axis omega_x where both contacts coincide
+tilted("region-III-counterexample", "righting arm at the first base contact, clipped prism", ("65-III-claim",),
+       one, ARM, sp.Min(TOP, -BOT), body=_triangle(sp.sqrt(sp.Rational(11, 5)), 1), density=sp.Rational(11, 20),
+       at={om: sp.atan((2 - 3 * sp.Rational(11, 20)) / (sq3 * sp.Rational(11, 20)))})
 
 
 # =====================================================================================================
 # Witnesses for the limits (61)-(65), (71)-(73) and examples 3, 4, 8, 9
 # =====================================================================================================
-def _polish(fs, x0, dps):
-    """Refine a float solution x0 of the system fs (functions of the same unknowns) at dps digits: Newton steps
-    with a forward-difference Jacobian (step 1e-(dps/2))."""
-    if dps <= 15:
-        return x0
-    x = [mpmath.mpf(v) for v in x0]
-    h = mpmath.mpf(10) ** (-(dps // 2))
-    for _ in range(8):
-        F = fs(*x)
-        cols = []
-        for j in range(len(x)):
-            xj = list(x)
-            xj[j] += h
-            cols.append([(fj - f0) / h for fj, f0 in zip(fs(*xj), F)])
-        J = mpmath.matrix([[cols[j][i] for j in range(len(x))] for i in range(len(x))])
-        dx = mpmath.lu_solve(J, mpmath.matrix(F))
-        x = [xi - dx[i] for i, xi in enumerate(x)]
-        if max(abs(v) for v in dx) < mpmath.mpf(10) ** (-dps - 3):
-            break
-    return tuple(x)
+def _boundary(s_value, quantity, which, *declared):
+    """The (a/b)^2 = Q (b = 1) at which the clipped prism's tilted equilibrium reaches the contact of a base for
+    the axis omega = 60 deg: the zero along Q of the righting arm read at the first contact (which = TOP: the
+    upper base, vertex B dipping; BOT: the lower base, B rising).  *quantity* is read there, an expression in Q
+    and the case (the upright body at that Q serves only to read it); *declared*: name, description, targets,
+    cases of a witness of its own."""
+    flip = {om: pi / 3} if which == TOP else {om: pi / 3 + pi}      # B rising: the axis turned half round
+    contact = _root_witness("contact", "", (), (), ARM, which, body=_triangle(sp.sqrt(Q), 1), density=s_value, at=flip)
+    return _root_witness(*(declared or ("boundary", "", (), ())), quantity, contact, body=_triangle(sp.sqrt(Q), 1),
+                         density=s_value, along=Q, up=(0, 0, 1), steps=8,
+                         bracket=(6 * s_value * (1 - s_value), 12 * s_value * (1 - s_value) * 999 / 1000))
 
 
-def two_stage(make, lo, step, dps, bracket=None):
-    """Root of make(dps): located at float precision (scan from lo, or the bracket), then refined by secant steps."""
-    with mpmath.workdps(15):
-        f15 = make(15)
-        x0 = _root(f15, lo, step) if bracket is None else mpmath.findroot(f15, bracket, solver="anderson")
-    if dps <= 15:
-        return x0
-    x0 = mpmath.mpf(x0)
-    return mpmath.findroot(make(dps), (x0, x0 * (1 + mpmath.mpf(10) ** -9)), solver="secant")
-
-
-def _tri_at(q_, s_, w_, phi, dps, flip):
-    return _cached(("tt", q_, s_, w_, phi, dps, flip), lambda: triangle_tilt(mpmath.sqrt(q_), 1, s_, w_, phi, dps, flip))
-
-
-def clipped_boundary(s_, w_, which, flip, dps):
-    """(a/b)^2 (b = 1) at which the clipped prism's tilted equilibrium reaches the contact of a base (which = 2:
-    top, 3: bottom) for the axis w_: the righting arm at the contact tilt vanishes.  Float: nested roots with
-    scanning; more digits: Newton on (righting arm, clearance) from the float solution."""
-    def key():
-        with mpmath.workdps(15):
-            sf, wf = mpmath.mpf(float(s_)), mpmath.mpf(float(w_))
-            qh = 12 * sf * (1 - sf)
-            def arm_at_contact(q_):
-                t_ = triangle_contact(mpmath.sqrt(q_), 1, sf, wf, 15, which, flip)
-                return triangle_tilt(mpmath.sqrt(q_), 1, sf, wf, mpmath.atan(t_), 15, flip)[0]
-            q0 = mpmath.findroot(arm_at_contact, (qh / 2, qh * mpmath.mpf("0.999")), solver="anderson")
-            p0 = mpmath.atan(triangle_contact(mpmath.sqrt(q0), 1, sf, wf, 15, which, flip))
-        return _polish(lambda q_, p_: [triangle_tilt(mpmath.sqrt(q_), 1, s_, w_, p_, dps, flip)[k] for k in (0, which)],
-                       (q0, p0), dps)[0]
-    return _cached(("cb", s_, w_, which, flip, dps), key)
-
-
-def q60_pair(case, dps):
-    """The clipped boundaries at omega = 60 deg: top base (vertex B dipping) and bottom base (B rising)."""
-    s_ = _n(case.params[s], dps)
-    w_ = mpmath.pi / 3
-    return clipped_boundary(s_, w_, 2, False, dps), clipped_boundary(s_, w_, 3, True, dps)
+q60_cases = [Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20)}, label="s = 0.55, (a/b)^2 = 2.25"),
+             Case({a: 3, b: 2, s: sp.Rational(9, 20)}, label="s = 0.45, (a/b)^2 = 2.25")]
+QQ = (a / b) ** 2
+d.witness(Joined("triangle-omega60-boundaries", "(a/b)^2 minus the (a/b)^2 at which the clipped prism's equilibrium "
+                 "reaches the upper base (B dipping) / lower base (B rising) at omega = 60 deg (righting arm zero at "
+                 "the contact)", ("62", "62-step-3"), q60_cases[:1],
+                 parts=(_boundary(s, QQ - Q, TOP), _boundary(s, QQ - Q, BOT))))
+d.witness(_boundary(s, 2 * (QQ - Q), TOP, "triangle-omega60-boundary-twice", "twice the same margin (top base)",
+                    ("62-step-1", "62-step-2"), q60_cases[:1]))
+d.witness(Joined("triangle-region-II", "-24 s/b times the clipped upright metacentric height, and the two clipped "
+                 "omega = 60 deg margins", ("65-II",), q60_cases[:1],
+                 parts=(FloatingWitness("upright", "", (), (), body=_triangle(a, b), density=s,
+                                        quantity=-24 * s / b * GM),
+                        _boundary(s, QQ - Q, TOP), _boundary(s, QQ - Q, BOT))))
+d.witness(_boundary(s, Q, TOP, "example-3-boundary", "(a/b)^2 at which the clipped prism (s = 2/3) has its "
+                    "equilibrium at the upper-base contact, omega = 60 deg", ("ex3-ratio-squared", "ex3-condition"),
+                    [Case({s: sp.Rational(2, 3)})]))
+d.witness(_boundary(sp.Rational(2, 3), sp.sqrt(Q), TOP, "example-3-ratio", "its root a/b",
+                    ("ex3-ratio", "ex3-ratio-fraction"), one))
 
 
 def _qq(case, dps):
     return (_n(case.params[a], dps) / _n(case.params[b], dps)) ** 2
 
 
-q60_cases = [Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20)}, label="s = 0.55, (a/b)^2 = 2.25"),
-             Case({a: 3, b: 2, s: sp.Rational(9, 20)}, label="s = 0.45, (a/b)^2 = 2.25")]
-cw("triangle-omega60-boundaries", "(a/b)^2 minus the (a/b)^2 at which the clipped prism's equilibrium reaches the "
-   "upper base (B dipping) / lower base (B rising) at omega = 60 deg (righting arm zero at the contact)",
-   ("62", "62-step-3"), q60_cases[:1], lambda c, dps: tuple(_qq(c, dps) - v for v in q60_pair(c, dps)))
-cw("triangle-omega60-boundary-twice", "twice the same margin (top base)", ("62-step-1", "62-step-2"), q60_cases[:1],
-   lambda c, dps: 2 * (_qq(c, dps) - q60_pair(c, dps)[0]))
-cw("triangle-region-II", "-24 s/b times the clipped upright metacentric height, and the two clipped omega = 60 deg "
-   "margins", ("65-II",), q60_cases[:1],
-   lambda c, dps: (-24 * _n(c.params[s], dps) / _n(c.params[b], dps) * tri_gm(c, dps)[0],)
-   + tuple(_qq(c, dps) - v for v in q60_pair(c, dps)))
-ex3_q = lambda dps: clipped_boundary(_n(sp.Rational(2, 3), dps), mpmath.pi / 3, 2, False, dps)
-cw("example-3-boundary", "(a/b)^2 at which the clipped prism (s = 2/3) has its equilibrium at the upper-base "
-   "contact, omega = 60 deg", ("ex3-ratio-squared", "ex3-condition"), [Case({s: sp.Rational(2, 3)})],
-   lambda c, dps: ex3_q(dps))
-cw("example-3-ratio", "its root a/b", ("ex3-ratio", "ex3-ratio-fraction"), one, lambda c, dps: mpmath.sqrt(ex3_q(dps)))
-
-
-def ex4_solve(dps):
-    """(s, a/b) at which the clipped prism tilted by 30 deg about the axis omega = 15 deg is in equilibrium with
-    the upper base just touching the water."""
-    def key():
-        w_, p_ = mpmath.pi / 12, mpmath.pi / 6
-        with mpmath.workdps(15):
-            def q_of(s_):
-                return mpmath.findroot(lambda q_: triangle_tilt(q_, 1, s_, w_, p_, 15)[2], (1, 2), solver="anderson")
-            s0 = mpmath.findroot(lambda s_: triangle_tilt(q_of(s_), 1, s_, w_, p_, 15)[0],
-                                 (mpmath.mpf("0.55"), mpmath.mpf("0.75")), solver="anderson")
-            q0 = q_of(s0)
-        return _polish(lambda s_, q_: [triangle_tilt(q_, 1, s_, w_, p_, dps)[k] for k in (0, 2)], (s0, q0), dps)
-    return _cached(("ex4s", dps), key)
-
-
-cw("example-4-density", "density of the clipped prism in equilibrium at 30 deg with the upper base touching "
-   "(omega = 15 deg)", ("ex4-density",), one, lambda c, dps: ex4_solve(dps)[0])
-cw("example-4-ratio", "a/b of the same clipped solution", ("ex4-ratio", "ex4-ratio-value"), one,
-   lambda c, dps: ex4_solve(dps)[1])
+# example 4: the clipped prism tilted by 30 deg about the axis omega = 15 deg, in equilibrium with the upper base
+# just touching the water: nested zeros, of the righting arm along s and of the upper base's height along a/b = Q
+EX4_AT = {om: pi / 12, PSI: pi / 6}
+EX4_S = (sp.Rational(11, 20), sp.Rational(3, 4))
+touching = _root_witness("touching", "", (), (), ARM, TOP, body=_triangle(Q, 1), along=Q, bracket=(1, 2), steps=10,
+                         at=EX4_AT)
+d.witness(_root_witness("example-4-density", "density of the clipped prism in equilibrium at 30 deg with the upper "
+                        "base touching (omega = 15 deg)", ("ex4-density",), one, s, touching, body=_triangle(1, 1),
+                        up=(0, 0, 1), along=s, bracket=EX4_S, steps=10))
+balanced = _root_witness("balanced", "", (), (), TOP, ARM, body=_triangle(Q, 1), along=s, bracket=EX4_S, steps=10,
+                         at=EX4_AT)
+d.witness(_root_witness("example-4-ratio", "a/b of the same clipped solution", ("ex4-ratio", "ex4-ratio-value"), one,
+                        Q, balanced, body=_triangle(Q, 1), up=(0, 0, 1), along=Q, steps=5, density=HALF,
+                        bracket=(sp.Rational(3, 2), sp.Rational(8, 5))))
 
 
 # ---- the first-region model of the triangle by quadrature (no base cut, column heights may pass the bases) --
@@ -1479,13 +1340,13 @@ def model_tilt(a_, b_, s_, w_, tau, dps, flip=False):
 
 def model_eq(q_, s_, dps):
     """tan phi_1 of the model (b = 1): the first root of the righting arm."""
-    return _cached(("meq", q_, s_, dps), lambda: two_stage(
-        lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, 0, t_, p)[0]), mpmath.mpf("0.02"), mpmath.mpf("0.1"), dps))
+    return _cached(("meq", q_, s_, dps), lambda: first_zero(
+        lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, 0, t_, p)[0]), "0.02", "20.02", 200, dps))
 
 
 def model_contact(q_, s_, w_, which, flip, dps):
-    return two_stage(lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, w_, t_, p, flip)[which]),
-                     mpmath.mpf("0.02"), mpmath.mpf("0.1"), dps)
+    return first_zero(lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, w_, t_, p, flip)[which]),
+                      "0.02", "4.02", 40, dps)
 
 
 def model_boundary(s_, w_, which, flip, dps):
@@ -1493,14 +1354,13 @@ def model_boundary(s_, w_, which, flip, dps):
     qh = 12 * s_ * (1 - s_)
     make = lambda p: (lambda q_: model_tilt(mpmath.sqrt(q_), 1, s_, w_, model_eq(q_, s_, p), p, flip)[which])
     return _cached(("mb", s_, w_, which, flip, dps),
-                   lambda: two_stage(make, 0, 0, dps, bracket=(qh / 10, qh * mpmath.mpf("0.999"))))
+                   lambda: first_zero(make, qh / 10, qh * mpmath.mpf("0.999"), 1, dps))
 
 
 def model_sin_bound(q_, s_, which, flip, dps):
     """sin(30 deg + omega) of the axis at which the model's contact tangent equals its equilibrium tangent."""
     t1_ = model_eq(q_, s_, dps)
-    w_ = mpmath.findroot(lambda w: model_tilt(mpmath.sqrt(q_), 1, s_, w, t1_, dps, flip)[which],
-                         (mpmath.mpf(0), mpmath.pi / 3), solver="anderson")
+    w_ = first_zero(lambda p: lambda w: model_tilt(mpmath.sqrt(q_), 1, s_, w, t1_, p, flip)[which], 0, mpmath.pi / 3, 1, dps)
     return mpmath.sin(mpmath.pi / 6 + w_)
 
 
@@ -1554,13 +1414,12 @@ def cyl_contact(r_, b_, s_, which, dps):
         if which == "top":
             return lambda f: b_ - (cylinder_tilt(r_, b_, s_, f, p)[1] + r_ * mpmath.tan(f))
         return lambda f: cylinder_tilt(r_, b_, s_, f, p)[1] - r_ * mpmath.tan(f)
-    return mpmath.tan(two_stage(make, mpmath.mpf("0.02"), mpmath.mpf("0.1"), dps))
+    return mpmath.tan(first_zero(make, "0.02", "1.52", 15, dps))
 
 
 def cyl_eq(r_, b_, s_, dps):
     """tan phi_1: the first root of the quadrature righting arm (float scan, then secant steps)."""
-    return mpmath.tan(two_stage(lambda p: (lambda f: cylinder_tilt(r_, b_, s_, f, p)[0]), mpmath.mpf("0.02"),
-                                mpmath.mpf("0.05"), dps))
+    return mpmath.tan(first_zero(lambda p: (lambda f: cylinder_tilt(r_, b_, s_, f, p)[0]), "0.02", "1.52", 30, dps))
 
 
 def cyl_limits(c, dps):
@@ -1587,9 +1446,9 @@ cw("cylinder-73", "-16 s/b times the metacentric height, and (2r/b)^2/2 times th
 
 def cyl_density_roots(c, dps):
     r_, b_ = P(c, dps, r, b)
-    f = lambda s_: cylinder_gm(r_, b_, s_, dps)
-    return _cached(("cdr", r_, b_, dps), lambda: (_root(f, mpmath.mpf("0.5"), mpmath.mpf("0.05")),
-                                                 _root(f, mpmath.mpf("0.005"), mpmath.mpf("0.02"))))
+    gm = lambda p: lambda s_: cylinder_gm(r_, b_, s_, p)        # noqa: E731
+    return _cached(("cdr", r_, b_, dps), lambda: (first_zero(gm, "0.5", "0.99", 49, dps),
+                                                 first_zero(gm, "0.005", "0.495", 49, dps)))
 
 
 cw("cylinder-71", "densities at which the upright cylinder's metacentric height (quadrature) vanishes", ("71",),
@@ -1598,8 +1457,7 @@ cw("cylinder-71", "densities at which the upright cylinder's metacentric height 
 
 def cyl_ratio_threshold(b_, s_, dps):
     """(2r/b)^2 at which the upright cylinder (quadrature) has zero metacentric height."""
-    r0 = _root(lambda r_: cylinder_gm(r_, b_, s_, dps), b_ / 100, b_ / 20) if b_ <= 1 else \
-        b_ * _root(lambda r_: cylinder_gm(r_, 1, s_, dps), mpmath.mpf(1) / 100, mpmath.mpf(1) / 20)
+    r0 = b_ * first_zero(lambda p: lambda r_: cylinder_gm(r_, 1, s_, p), "0.01", "2.01", 40, dps)   # gm(kr, kb) = k gm
     return (2 * r0 / b_) ** 2
 
 
@@ -1614,7 +1472,7 @@ def ex9_bound(dps):
     """(2r/b)^2 (b = 1, s = 0.8) at which the quadrature equilibrium reaches the upper-base contact."""
     s_ = mpmath.mpf(4) / 5
     make = lambda p: (lambda r_: cylinder_tilt(r_, 1, s_, mpmath.atan(cyl_contact(r_, 1, s_, "top", p)), p)[0])
-    r0 = two_stage(make, 0, 0, dps, bracket=(mpmath.mpf("0.2"), mpmath.mpf("0.7")))
+    r0 = first_zero(make, "0.2", "0.7", 5, dps)
     return (2 * r0) ** 2
 
 

@@ -283,3 +283,190 @@ class FloatingWitness(MeasuredWitness):
         with mpmath.workdps(max(method.dps, 15)):
             values = tuple(float(v) if method.dps <= 15 else +v for v in values)   # rounded to the method's digits
         return values[0] if isinstance(self.quantity, (str, sp.Expr)) else values
+
+
+# ---- the waterplane's moments in the body frame, a prism's bases, and a root of a quantity along a parameter ----
+import dataclasses  # noqa: E402  (kept with the pieces that use them)
+
+from .witness import Case  # noqa: E402
+
+
+def _waterplane_moment(i, j):
+    """int p_i p_j over the waterplane about its centroid, body-frame components i, j: the tensor of the
+    floating state (in the waterplane basis e1, e2) carried back, sum_ab e_a[i] J_ab e_b[j]."""
+    def read(st, body):
+        J, (e1, e2) = st.tensor, st.basis
+        e = (e1, e2)
+        return sum(e[a][i] * J[a][b] * e[b][j] for a in range(2) for b in range(2))
+    return read
+
+
+def _base_vertices(body, sign):
+    """The vertices of the base of a prism (axis z) on the side *sign* of z: those at its largest or smallest z."""
+    end = max(sign * p[2] for p in body.vertices)
+    return [p for p in body.vertices if sign * p[2] == end]
+
+
+BODY_FRAME_QUANTITIES = {
+    **{f"waterplane moment, {'xyz'[i]}{'xyz'[j]}": (
+        f"int {'xyz'[i]} {'xyz'[j]} (body frame) over the waterplane, about its centroid", _waterplane_moment(i, j))
+       for i in range(3) for j in range(i, 3)},
+    "upper base above water": ("height above the water plane of the lowest vertex of the base at +z (negative "
+                               "once that base is cut)",
+                               lambda st, body: min(_dot(st.u, p) for p in _base_vertices(body, 1)) - st.t),
+    "lower base above water": ("height above the water plane of the highest vertex of the base at -z (positive "
+                               "once that base is cut)",
+                               lambda st, body: max(_dot(st.u, p) for p in _base_vertices(body, -1)) - st.t),
+}
+QUANTITIES.update(BODY_FRAME_QUANTITIES)
+MEASURED.update({name: sp.Symbol(name) for name in BODY_FRAME_QUANTITIES})
+
+
+def waterplane_moment(n, m):
+    """The expression int (n . p)(m . p) over the waterplane about its centroid for body-frame vectors n, m
+    (SymPy expressions in the case's parameters): with n = m the unit normal of a horizontal line in the
+    waterplane, the waterplane's moment of inertia about that line; with n, m the normal and the direction of
+    the line, its product moment in those axes."""
+    k = "xyz"
+    return sp.Add(*(n[i] * m[j] * MEASURED[f"waterplane moment, {k[min(i, j)]}{k[max(i, j)]}"]
+                    for i in range(3) for j in range(3)))
+
+
+def _sign_changes(f, lo, hi, steps):
+    """The first subinterval of the grid lo + (hi - lo) k/steps on which f changes sign, with f at its ends."""
+    x0, f0 = lo, f(lo)
+    for k in range(1, steps + 1):
+        x1 = lo + (hi - lo) * k / steps
+        f1 = f(x1)
+        if f0 == 0 or (f0 < 0) != (f1 < 0):
+            return x0, f0, x1, f1
+        x0, f0 = x1, f1
+    raise ValueError(f"no sign change on [{lo}, {hi}] with {steps} steps")
+
+
+def _illinois(f, x0, f0, x1, f1, tol):
+    """The root of f in the bracket [x0, x1] (f0, f1 of opposite signs) by the Illinois variant of regula
+    falsi, to a bracket narrower than tol."""
+    if f0 == 0:
+        return x0
+    for _ in range(200):
+        x = (x0 * f1 - x1 * f0) / (f1 - f0)
+        fx = f(x)
+        if fx == 0:
+            return x
+        if (fx < 0) != (f1 < 0):
+            x0, f0 = x1, f1
+        else:
+            f0 = f0 / 2
+        x1, f1 = x, fx
+        if abs(x1 - x0) <= tol:
+            return x1
+    raise ValueError("the root did not converge in 200 steps")
+
+
+def _key(params):
+    """A case's parameters as a hashable key, in a fixed order."""
+    return tuple(sorted(params.items(), key=lambda kv: str(kv[0])))
+
+
+@functools.lru_cache(maxsize=512)
+def _first_root(probe, params, along, bracket, steps, dps):
+    """The first zero of the quantity of the witness *probe* as the parameter *along* runs over *bracket*
+    (a grid of *steps*): in float64 scanned and refined to 1e-15; at more digits refined from the float64
+    root inside a bracket of 1e-8 (widened tenfold until f changes sign) to 10^(5 - dps)."""
+    params = dict(params)
+
+    def f(x):
+        at = {**params, along: sp.Float(x, max(dps, 15) + 5)}
+        if type(probe) is FloatingWitness:
+            return probe._values(at, probe.body, dps)[0]
+        return probe.measure(Case(at), Precision(dps, 0.0))       # a zero found inside this one
+    if dps <= 15:
+        lo, hi = (float(number(x, params, 15)) for x in bracket)
+        return _illinois(f, *_sign_changes(f, lo, hi, steps), 1e-15 * max(1.0, abs(hi)))
+    return _refine(f, _first_root(probe, _key(params), along, bracket, steps, 15), dps)
+
+
+def _refine(f, rough, dps):
+    """The zero of f at *dps* digits (under the caller's precision) near its float64 zero *rough*: Illinois
+    inside a bracket of 1e-8 around it, widened tenfold until f changes sign, to 10^(5 - dps)."""
+    rough, width = mpmath.mpf(rough), mpmath.mpf("1e-8")
+    for _ in range(6):
+        x0, x1 = rough - width, rough + width
+        f0, f1 = f(x0), f(x1)
+        if (f0 < 0) != (f1 < 0):
+            return _illinois(f, x0, f0, x1, f1, mpmath.mpf(10) ** (5 - dps))
+        width *= 10
+    raise ValueError(f"no sign change around the float64 root {rough}")
+
+
+def first_zero(make, lo, hi, steps, dps):
+    """The first zero on [lo, hi] of the function ``make(d)`` (a function at d digits, called under
+    ``mpmath.workdps(d)``): located on a grid of *steps* and refined in 15-digit arithmetic, then, for more
+    digits, refined at *dps* from there.  The root finder of a measurement the floating witnesses do not
+    cover (a quadrature model)."""
+    with mpmath.workdps(15):
+        f = make(15)
+        lo, hi = mpmath.mpf(lo), mpmath.mpf(hi)
+        rough = _illinois(f, *_sign_changes(f, lo, hi, steps), mpmath.mpf("1e-15") * max(1, abs(hi)))
+    if dps <= 15:
+        return rough
+    with mpmath.workdps(dps):
+        return _refine(make(dps), rough, dps)
+
+
+@dataclass(frozen=True)
+class RootWitness(FloatingWitness):
+    """A :class:`FloatingWitness` read where another quantity vanishes: the parameter ``along`` (on which the
+    up vector, the density or the body depend) is set to the first zero of ``vanish`` (an item as in
+    ``quantity``, or a root witness with its own body: a zero found inside another) on ``bracket``,
+    scanned with ``steps`` points and refined at each method's digits; ``solve_at`` replaces parameters
+    while the zero is sought (the position is found in one attitude and read in another), and each item of
+    ``guard`` must be positive at the zero (a condition of the source's region, such as no base cut)."""
+
+    along: sp.Symbol = None
+    vanish: object = None
+    bracket: tuple = (0, 1)
+    steps: int = 30
+    solve_at: dict = None
+    guard: tuple = ()
+
+    def __post_init__(self):
+        super().__post_init__()
+        if isinstance(self.solve_at, dict):             # kept as pairs: a witness is a key of the roots' cache
+            object.__setattr__(self, "solve_at", tuple(self.solve_at.items()))
+
+    def _probe(self, body, what):
+        if isinstance(what, FloatingWitness):
+            return dataclasses.replace(what, cases=())
+        return FloatingWitness("probe", "", (), (), body=body, up=self.up, density=self.density, quantity=what,
+                               reference=self.reference)
+
+    def measure(self, case, method):
+        body = self.body if self.body is not None else case.data["body"]
+        with mpmath.workdps(max(method.dps, 15)):
+            at = {**case.params, **dict(self.solve_at or ())}
+            root = _first_root(self._probe(body, self.vanish), _key(at), self.along, self.bracket, self.steps,
+                               method.dps)
+            root = sp.Float(root, max(method.dps, 15) + 5)
+            for item in self.guard:
+                if not self._probe(body, item)._values({**at, self.along: root}, body, method.dps)[0] > 0:
+                    raise ValueError(f"witness {self.name}: {item} is not positive at the zero ({case.label})")
+            params = {**case.params, self.along: root}
+        return super().measure(Case(params, case.data, case.label), method)
+
+
+@dataclass(frozen=True)
+class Joined(MeasuredWitness):
+    """Several floating witnesses (``parts``, each with its own body) measured at the same case, their values
+    joined into one tuple: for a reading that lists quantities of different bodies."""
+
+    parts: tuple = ()
+    methods: tuple = FLOATING_METHODS
+
+    def measure(self, case, method):
+        out = []
+        for part in self.parts:
+            value = part.measure(case, method)
+            out.extend(value if isinstance(value, tuple) else (value,))
+        return tuple(out)
