@@ -322,8 +322,10 @@ d.quote("x-range", "X (171)", r"und  $x$  zwischen 0 und 1 liegen muss.",
 f_at = lambda xx, ss: F171(sp.Rational(1, 6) + (1 - xx) ** 2 - xx ** 4 / 12, 1 - xx + xx ** 3 / 6, xx, ss)  # noqa
 d.step("end-0", (F0, f_at(sp.Integer(0), s), *as_printed(lambda: ((7 * (1 - s) ** 2 - 6 * (1 - s) + 1) / 6,
                                                           7 * (s - (4 + r2) / 7) * (s - (4 - r2) / 7) / 6))),
-       "algebra", result=F0)
-d.step("end-1", (F1v, f_at(sp.Integer(1), s), (6 * (1 - s) - 1) ** 2 / 432), "algebra", result=F1v)
+       "algebra", result=F0,
+       uses=("T", "z"))
+d.step("end-1", (F1v, f_at(sp.Integer(1), s), (6 * (1 - s) - 1) ** 2 / 432), "algebra", result=F1v,
+       uses=("T", "z"))
 d.step("172-root", Eq(s172, (4 + r2) / 7), "definition", result=s172, uses=("end-0",),
        note="f(0, s) = 0 on s > 1/2: a root of (171) enters 0 < x through x = 0 (the corner B just touching)")
 d.step("172-check", (f_at(sp.Integer(0), s172), 0), "algebra", uses=("172-root",))
