@@ -38,9 +38,9 @@ def test_references_resolve_or_are_flagged():
 
 
 def test_the_booked_wrong_references_are_found_as_wrong():
-    # each is an erratum of a derivation module: VI.B, VI.F, VII, IX.C, X
+    # each is an erratum of a derivation module: VI.B, VI.F, VII, IX.C, X (two)
     wrong = {(r["line"], r["number"]) for r in references("scheeffer") if r["status"] == "wrong"}
-    assert wrong == {(705, "55"), (1068, "55"), (1279, "102a"), (1735, "164"), (1817, "104"),
+    assert wrong == {(705, "55"), (1068, "55"), (1279, "102a"), (1735, "164"), (1817, "104"), (1833, "19"),
                      (1270, "102b")}     # "nach 102 b)": judged, the slip booked once with "nach 102 a)"
     assert check([r for s in ("scheeffer", "euler", "graefe") for r in references(s)]) == []
 
@@ -158,7 +158,9 @@ def test_figures_are_lost_not_suspect():
                                                                             (141, "figure lost", 144)]
     by = {(r["line"], r["number"]): r for r in references("scheeffer")}
     assert by[(50, "1")]["status"] == "figure lost" and "neither the figure nor its caption" in by[(50, "1")]["reason"]
-    assert by[(1833, "19")]["status"] == "figure lost" and by[(1833, "19")]["target_line"] == 1973
+    assert by[(1891, "21")]["status"] == "figure lost" and by[(1891, "21")]["target_line"] == 1997
+    # "(s. Fig. 19)" in X: the legs BH, BG of the cube's face are in Fig. 23, not in the waterplane of VII
+    assert by[(1833, "19")]["status"] == "wrong" and "scheeffer-x/fig19-reference" in by[(1833, "19")]["reason"]
 
 
 def test_a_back_reference_naming_labels_foreign_to_the_figure_is_suspect(monkeypatch):
@@ -201,3 +203,11 @@ def test_a_malformed_judged_entry_is_refused(monkeypatch, tmp_path):
             judged("scheeffer")
     finally:
         refs_module.judged.cache_clear()
+
+
+def test_coverage_json_counts_the_references_by_status(capsys, monkeypatch):
+    from symfloat.cli import main
+    monkeypatch.chdir(ROOT)
+    assert main(["coverage", "euler", "--format", "json"]) == 0
+    counts = json.loads(capsys.readouterr().out)["references"]["euler"]
+    assert counts == status_counts(references("euler")) and counts["references"] == 2 and counts["resolved"] == 2

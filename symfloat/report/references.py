@@ -1,7 +1,8 @@
 """Cross-references of every source to its equations, paragraphs and figures, resolved and checked (issue 12, item 3).
 
-Targets: the displays a transcription tags (``\\quad (78c)``, ``(78c)`` closing a display) are equations; a line
-opening with ``§. N`` is Euler's paragraph N; ``Fig. N`` points to a figure, which no transcription carries.
+Targets: the displays a transcription tags (``\\quad (78c)``, ``(78c)`` or ``(38^*)`` closing a display) are
+equations; a line opening with ``§. N`` is Euler's paragraph N; ``Fig. N`` points to a figure, of which no
+transcription carries more than a caption standing alone on its line (``Fig. 3a``, ``Fig. 1.``: no reference).
 References: a number after ``Gleichung``, ``Gl.``, ``nach``/``Nach``, ``aus``, ``s.``, ``vgl.``,
 ``Bedingung(en)``, or in ``in N ein``, with its ``u.``/``und``/comma lists (Scheeffer); ``§. N`` inside a
 paragraph, ``per §. N`` (Euler); ``Fig. N``/``Figur N`` (all).  Each is resolved (an equation to the first display
@@ -13,9 +14,18 @@ tagged with the number, ``52`` also to ``52a`` when no ``52`` is tagged) and che
   the derivations (so the use is checked there), and the steps behind a quote that cites it do not miss the
   steps behind the target's quote (:func:`uses_target`);
 * ``plausible``: the target precedes, but a side is not quoted: the derivations cannot confirm the use;
-* ``suspect``: no target (a figure the transcription lacks, a number no display carries), a target that comes
-  later, or a cited formula the citing quote's steps do not use, directly or through their chain: listed,
-  never passed.
+* ``figure lost``: a figure, whose caption survives or not; what the text still checks is checked
+  (:func:`_figure_status`): a surviving caption names no point the text does not name with the figure, and a
+  reference back to the figure of an earlier section names only points that section names;
+* ``target lost``: the transcription lost the display that carried the number (judged, below);
+* ``suspect``: no target (a number no display carries), a target that comes later, a cited formula the citing
+  quote's steps do not use, directly or through their chain, or a figure whose labels fail the check.
+
+A ``suspect`` or ``figure lost`` reference may be decided by a judgement kept as data,
+``symfloat/sources/<key>.references.json`` (:func:`judged`): resolved to a target line, wrong (naming the
+erratum that books it) or target lost, with the passage quoted verbatim and a one-line reason.  An entry that no
+longer matches (no such reference, a reference the rules decide by themselves, a passage not on its line or
+without the number's tag, an erratum that does not exist) fails :func:`check`, as does a reference with no status.
 
 The steps behind a quote are the step of the same name and the steps that establish a quantity of its reading;
 a step reaches the steps it ``uses`` and those that establish the quantities its claim mentions.  A citing quote
