@@ -211,3 +211,17 @@ def test_coverage_json_counts_the_references_by_status(capsys, monkeypatch):
     assert main(["coverage", "euler", "--format", "json"]) == 0
     counts = json.loads(capsys.readouterr().out)["references"]["euler"]
     assert counts == status_counts(references("euler")) and counts["references"] == 2 and counts["resolved"] == 2
+
+
+def test_a_caption_naming_a_point_the_text_does_not_give_the_figure_is_suspect(monkeypatch):
+    real = refs_module._captions("scheeffer")
+    assert real["5"][0] == 1979                                   # "Fig. 5" alone on its line: no labels
+    by = {(r["line"], r["number"]): r for r in references("scheeffer")}
+    assert by[(98, "5")]["status"] == "figure lost"
+    # mutation: the caption of Fig. 5 read from the line that names the cube's triangle BHG (line 1785)
+    text = refs_module.get_source("scheeffer").text()
+    at = text.index("Es stelle Fig. 23")
+    fake = dict(real, **{"5": (1979, at, text.index("\n", at))})
+    monkeypatch.setattr(refs_module, "_captions", lambda source: fake if source == "scheeffer" else real)
+    r = next(r for r in references("scheeffer") if (r["line"], r["number"]) == (98, "5"))
+    assert r["status"] == "suspect" and "the caption names" in r["reason"] and "B" in r["reason"]

@@ -97,7 +97,7 @@ def _captions(source: str) -> dict[str, tuple[int, int, int]]:
     return out
 
 
-_SENTENCE_END = re.compile(r"(?<!Fig)(?<!Figg)(?<!\bs)(?<!vgl)(?<!\bd)(?<!\bh)(?<!\bu)(?<!Gl)(?<!\d)\.\s+(?=[A-ZÄÖÜ$„(])")
+_SENTENCE_END = re.compile(r"(?<!Fig)(?<!\bs)(?<!vgl)(?<!\bd)(?<!\bh)(?<!\bu)(?<!Gl)(?<!\d)\.\s+(?=[A-ZÄÖÜ$„(])")
 
 
 def _sentence_at(text: str, offset: int) -> tuple[int, int]:
