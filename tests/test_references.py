@@ -185,6 +185,7 @@ def _entry(**changes):
     ({"line": 294, "reference": "aus 38 und 41", "number": "38", "target": 270, "passage": "(38^*)"},
      "the rules decide it"),                                          # a reference resolved without judgement
     ({"verdict": "wrong", "erratum": "scheeffer-vii-viii/103b"}, "is no erratum"),
+    ({"verdict": "figure lost"}, "of kind equation judged 'figure lost'"),
 ])
 def test_a_stale_judged_entry_fails_the_check(monkeypatch, changes, message):
     entry = _entry(**changes)

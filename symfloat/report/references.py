@@ -374,7 +374,7 @@ def judged(source: str) -> tuple[dict, ...]:
     for j in entries:
         extra = {"erratum"} if j.get("verdict") == "wrong" else set()
         if (set(j) != keys | extra or j["verdict"] not in VERDICTS or not j["reason"].strip()
-                or (j["target"] is None) != (j["verdict"] == "target lost") and j["verdict"] != "figure lost"):
+                or ((j["target"] is None) != (j["verdict"] == "target lost") and j["verdict"] != "figure lost")):
             raise ValueError(f"{source}.references.json: malformed entry {j!r}: needs {sorted(keys | extra)}, a "
                              f"verdict of {VERDICTS} and a target line unless the target is lost")
     return tuple(entries)
@@ -382,23 +382,27 @@ def judged(source: str) -> tuple[dict, ...]:
 
 def stale(source: str) -> list[str]:
     """The judged entries of *source* that no longer match: no such reference on the line, a reference the
-    rules decide by themselves, a passage not on its line, or an erratum that does not exist."""
+    rules decide by themselves, ``figure lost`` for an equation or resolved/target lost for a figure, a passage
+    not on its line or (resolved) without the number's tag, or an erratum that does not exist."""
     text = get_source(source).text()
     lines = text.split("\n")
     found = {}
     quotes = _quotes(source)
     for kind, a, b, matched, number, line, target in _found_refs(source):
         found[(line, number, " ".join(matched.split()))] = \
-            _automatic(source, kind, a, b, matched, number, line, quotes, target)[0]
+            kind, _automatic(source, kind, a, b, matched, number, line, quotes, target)[0]
     errata = {q[2] for q in quotes if q[3].erratum is not None}
     out = []
     for j in judged(source):
         where = f"{source}.references.json line {j['line']} {j['reference']!r}"
         at = j["target"] if j["target"] is not None else j["line"]
-        if (j["line"], j["number"], j["reference"]) not in found:
+        kind, status = found.get((j["line"], j["number"], j["reference"]), (None, None))
+        if kind is None:
             out.append(f"{where}: no such reference of number {j['number']} on that line")
-        elif found[(j["line"], j["number"], j["reference"])] not in JUDGEABLE:
-            out.append(f"{where}: the rules decide it ({found[(j['line'], j['number'], j['reference'])]}); drop the entry")
+        elif status not in JUDGEABLE:
+            out.append(f"{where}: the rules decide it ({status}); drop the entry")
+        elif j["verdict"] != "wrong" and (kind == "figure") != (j["verdict"] == "figure lost"):
+            out.append(f"{where}: a reference of kind {kind} judged {j['verdict']!r}")
         if not 1 <= at <= len(lines) or j["passage"] not in lines[at - 1]:
             out.append(f"{where}: the passage {j['passage']!r} is not on line {at}")
         carried = {_key(n) for n in re.findall(r"\((\d{1,3}\s?[a-e]?)", j["passage"])}
