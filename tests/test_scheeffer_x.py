@@ -57,6 +57,7 @@ EXPECTED_ERRATA = {
     ("pentagon-stable", "claim", "medium"),      # of two pentagonal equilibria one is unstable
     ("dual-exists", "consequential", "high"),    # the same for s < 1/2
     ("104-reference", "misprint", "medium"),     # transcription line 1817: 'in 104 ein' for (167)
+    ("fig19-reference", "misprint", "low"),      # line 1833: '(s. Fig. 19)', the waterplane of VII, for Fig. 23
 }
 
 

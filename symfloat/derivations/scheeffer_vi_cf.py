@@ -334,6 +334,7 @@ d.step("cube-oblique-threshold-lower", Eq(s80lo, r8m), "definition", result=s80l
 d.step("cube-edge-axis-factor", (sp.Matrix([2 * (1 - s) ** 2 - (6 * s * (1 - s) - 1), 2 * s ** 2 - (6 * s * (1 - s) - 1)]),
                                  sp.Matrix([1 - 2 * (1 - s) * (4 * s - 1), 1 - 2 * s * (3 - 4 * s)]),
                                  sp.Matrix([(2 * s - 1) * (4 * s - 3), (2 * s - 1) * (4 * s - 1)])), "algebra",
+       uses=("limit-omega", "cube-oblique-tilt"),
        note="(82) at omega = 0 (sin^2 45 deg = 1/2) holds iff these are >= 0 (denominator 6s(1-s) - 1 > 0 in the "
             "unstable range): for s > 1/2 iff s >= 3/4, for s < 1/2 iff s <= 1/4 (and at s = 1/2)")
 d.step("cube-edge-threshold-upper", Eq(sedhi, sp.Rational(3, 4)), "definition", result=sedhi,

@@ -204,7 +204,24 @@ d.quote("legs-in-face", "X",
         note="the legs BH = rho and BG = rho tg w of the triangle at the corner B must be shorter than the edge; at "
              "the second solution rho_* of (169) the two margins are the conditions (169a), (169b) that follow. The "
              "sentence cites Fig. 19 (the waterplane of VII); the triangle BHG of the cube's face is Fig. 23 - the "
-             "figures are lost, so the reference is not booked")
+             "figures are lost; the reference is booked in fig19-reference")
+phi19 = sp.Symbol("varphi_19", positive=True)     # the tilt of the water plane about GH against the top face
+d.domain.update({phi19: (0.1, 1.4)})
+d.quote("fig19-reference", "X", "Da nun (s. Fig. 19)",
+        reading=(sp.Matrix([n_.dot(Q - Hp) * sp.sin(phi19) for Q in (Bp, Hp, Gp)]), sp.zeros(3, 1)),
+        erratum=Erratum("misprint", "low", r"\text{Da nun (s. Fig. 23)}",
+                        "The legs BH, BG are those of the corner triangle BHG that the top face loses: 'Es stelle "
+                        "Fig. 23 die obere Würfelfläche vor, von der das Dreieck BHG eintaucht'. Fig. 19 is the "
+                        "waterplane of section VII ('Fig. 19 stelle den Wasserschnitt dar'): it holds the water line "
+                        "GH but not the immersed corner B, which lies h sin phi below it (h = BP = rho sin w, phi the "
+                        "tilt about GH), so neither leg is in the figure cited. The figure that shows them is Fig. 23 "
+                        "(by analogy with VII, the top face of Fig. 18). The figures are lost and an 18 read as 19 "
+                        "cannot be excluded, hence low.",
+                        corrected_reading=(sp.Matrix([sp.Subs(n_.dot(Q - Hp) * sp.sin(phi19), phi19, 0)
+                                                      for Q in (Bp, Hp, Gp)]), sp.zeros(3, 1))),
+        note="read as: the corners B, H, G of the triangle whose legs the sentence bounds lie in the plane of the "
+             "figure cited (their heights above it vanish); Fig. 19 is the water plane through GH, tilted by phi "
+             "against the top face, Fig. 23 the top face itself (tilt 0 about GH)")
 d.quote("169a", "(169a)", r"$$\cos \omega < \sin \omega \quad (169a)$$",
         reading=(a - 2 * a * co / (co + si), a / (co + si) * (si - co)),
         note="from rho_* < a: sign identity, factor a/(cos w + sin w) > 0")
@@ -322,8 +339,10 @@ d.quote("x-range", "X (171)", r"und  $x$  zwischen 0 und 1 liegen muss.",
 f_at = lambda xx, ss: F171(sp.Rational(1, 6) + (1 - xx) ** 2 - xx ** 4 / 12, 1 - xx + xx ** 3 / 6, xx, ss)  # noqa
 d.step("end-0", (F0, f_at(sp.Integer(0), s), *as_printed(lambda: ((7 * (1 - s) ** 2 - 6 * (1 - s) + 1) / 6,
                                                           7 * (s - (4 + r2) / 7) * (s - (4 - r2) / 7) / 6))),
-       "algebra", result=F0)
-d.step("end-1", (F1v, f_at(sp.Integer(1), s), (6 * (1 - s) - 1) ** 2 / 432), "algebra", result=F1v)
+       "algebra", result=F0,
+       uses=("T", "z"))
+d.step("end-1", (F1v, f_at(sp.Integer(1), s), (6 * (1 - s) - 1) ** 2 / 432), "algebra", result=F1v,
+       uses=("T", "z"))
 d.step("172-root", Eq(s172, (4 + r2) / 7), "definition", result=s172, uses=("end-0",),
        note="f(0, s) = 0 on s > 1/2: a root of (171) enters 0 < x through x = 0 (the corner B just touching)")
 d.step("172-check", (f_at(sp.Integer(0), s172), 0), "algebra", uses=("172-root",))

@@ -2,7 +2,8 @@
 
 Prints the coverage ledger (:mod:`symfloat.report.ledger`) and, with ``--readings``, the check of the
 hand readings against the automatic ones (:mod:`symfloat.report.readings`); ``--format json`` gives
-``{"sources": {key: {"totals", "entries"}}, "readings": [...]}``.  ``--write`` writes
+``{"sources": {key: {"totals", "entries"}}, "readings": [...], "references": {key: counts}}`` (the
+references of every source counted by status, :func:`symfloat.report.references.status_counts`).  ``--write`` writes
 ``docs/coverage.md`` (and ``docs/readings.md``); ``--update-baseline`` rewrites the baselines
 ``docs/coverage-baseline.json`` (and ``docs/readings-baseline.json``) to the current lists and says
 how many entries left and came.  Every run checks the ``same_as`` links of repeated errata
@@ -12,7 +13,8 @@ cross-references of every source, resolved and checked, with the point labels of
 
 Exit status 1 when a span is unaccounted (each is listed: ``pending`` when the baseline lists it,
 ``NEW`` otherwise), when a reading differs from the print without a declaration, or when a waiver
-is stale, a repeat link does not hold, or a reference the derivations call wrong has no erratum; 2 on an unknown source.
+is stale, a repeat link does not hold, a reference the derivations call wrong has no erratum, a reference has no
+status or a judged reference (``symfloat/sources/<key>.references.json``) is stale; 2 on an unknown source.
 """
 from __future__ import annotations
 
@@ -24,7 +26,7 @@ from ..model.source import SOURCES
 from ..project import in_project
 from .files import write_if_changed
 from .ledger import LedgerError, baseline_keys, ledger, ledger_json, ledger_markdown, ledger_table
-from .references import check, references, references_markdown
+from .references import check, references, references_markdown, status_counts
 from .repeats import candidates_text, link_problems
 
 __all__ = ["run", "docs_path", "load_baseline", "baseline_text"]
@@ -75,9 +77,14 @@ def run(args) -> int:
         record = json.loads(ledger_json(sources))
         if args.readings:
             record["readings"] = rows
+        record["references"] = {s: status_counts(references(s)) for s in sources}
         print(json.dumps(record, ensure_ascii=False, indent=1))
     else:
         print(ledger_table(sources, pending) + (readings_table(rows) if args.readings else ""), end="")
+        for s in sources:
+            counts = status_counts(references(s))
+            print(f"{s}: {counts.pop('references')} references — "
+                  + ", ".join(f"{n} {st}" for st, n in counts.items() if n))
     if args.readings:
         if args.write:
             write_if_changed(docs_path("readings.md"), readings_markdown(reading_rows(tuple(SOURCES))))
@@ -89,7 +96,7 @@ def run(args) -> int:
     failed |= bool(problems)
     wrong = check([r for s in sources for r in references(s)])
     for msg in wrong:
-        print(f"symfloat: wrong reference without an erratum: {msg}", file=sys.stderr)
+        print(f"symfloat: reference: {msg}", file=sys.stderr)
     failed |= bool(wrong)
     if args.write:
         write_if_changed(docs_path("coverage.md"), ledger_markdown())

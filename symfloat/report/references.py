@@ -1,7 +1,8 @@
 """Cross-references of every source to its equations, paragraphs and figures, resolved and checked (issue 12, item 3).
 
-Targets: the displays a transcription tags (``\\quad (78c)``, ``(78c)`` closing a display) are equations; a line
-opening with ``§. N`` is Euler's paragraph N; ``Fig. N`` points to a figure, which no transcription carries.
+Targets: the displays a transcription tags (``\\quad (78c)``, ``(78c)`` or ``(38^*)`` closing a display) are
+equations; a line opening with ``§. N`` is Euler's paragraph N; ``Fig. N`` points to a figure, of which no
+transcription carries more than a caption standing alone on its line (``Fig. 3a``, ``Fig. 1.``: no reference).
 References: a number after ``Gleichung``, ``Gl.``, ``nach``/``Nach``, ``aus``, ``s.``, ``vgl.``,
 ``Bedingung(en)``, or in ``in N ein``, with its ``u.``/``und``/comma lists (Scheeffer); ``§. N`` inside a
 paragraph, ``per §. N`` (Euler); ``Fig. N``/``Figur N`` (all).  Each is resolved (an equation to the first display
@@ -13,9 +14,18 @@ tagged with the number, ``52`` also to ``52a`` when no ``52`` is tagged) and che
   the derivations (so the use is checked there), and the steps behind a quote that cites it do not miss the
   steps behind the target's quote (:func:`uses_target`);
 * ``plausible``: the target precedes, but a side is not quoted: the derivations cannot confirm the use;
-* ``suspect``: no target (a figure the transcription lacks, a number no display carries), a target that comes
-  later, or a cited formula the citing quote's steps do not use, directly or through their chain: listed,
-  never passed.
+* ``figure lost``: a figure, whose caption survives or not; what the text still checks is checked
+  (:func:`_figure_status`): a surviving caption names no point the text does not name with the figure, and a
+  reference back to the figure of an earlier section names only points that section names;
+* ``target lost``: the transcription lost the display that carried the number (judged, below);
+* ``suspect``: no target (a number no display carries), a target that comes later, a cited formula the citing
+  quote's steps do not use, directly or through their chain, or a figure whose labels fail the check.
+
+A ``suspect`` or ``figure lost`` reference may be decided by a judgement kept as data,
+``symfloat/sources/<key>.references.json`` (:func:`judged`): resolved to a target line, wrong (naming the
+erratum that books it) or target lost, with the passage quoted verbatim and a one-line reason.  An entry that no
+longer matches (no such reference, a reference the rules decide by themselves, a passage not on its line or
+without the number's tag, an erratum that does not exist) fails :func:`check`, as does a reference with no status.
 
 The steps behind a quote are the step of the same name and the steps that establish a quantity of its reading;
 a step reaches the steps it ``uses`` and those that establish the quantities its claim mentions.  A citing quote
@@ -23,17 +33,22 @@ whose steps rest on nothing is not judged.
 """
 from __future__ import annotations
 
+import json
 import re
 from functools import cache
+from importlib import resources
 
 from ..model.source import SOURCES, get_source
 from ..model.span import line_of, math_intervals
 
-__all__ = ["STATUSES", "tags", "paragraphs", "references", "check", "anchors", "uses_target", "references_markdown"]
+__all__ = ["STATUSES", "JUDGEABLE", "VERDICTS", "tags", "paragraphs", "references", "judged", "stale", "check",
+           "anchors", "uses_target", "status_counts", "references_markdown"]
 
-STATUSES = ("resolved", "plausible", "suspect", "wrong")
+STATUSES = ("resolved", "plausible", "figure lost", "target lost", "wrong", "suspect")
+JUDGEABLE = ("suspect", "figure lost")           # the statuses a judged entry may decide
+VERDICTS = ("resolved", "wrong", "target lost", "figure lost")  # what a judged entry may say
 
-_TAG = re.compile(r"(?:\\quad\s*|\\qquad\s*|\\tag\{)\(?(\d{1,3}\s?[a-e]?)\)?\}?\s*\$\$$|\((\d{1,3}\s?[a-e]?)\)\s*\$\$$")
+_TAG = re.compile(r"(?:\\quad\s*|\\qquad\s*|\\tag\{)\(?(\d{1,3}\s?[a-e]?)\)?\}?\s*\$\$$|\((\d{1,3}\s?[a-e]?)(?:\^\*)?\)\s*\$\$$")
 _NUMBER = r"\(?\d{1,3}(?: ?[a-e](?![a-zäöü]))?\)?(?![\d,]\d)"
 _LIST = rf"{_NUMBER}(?:\s*(?:,|u\.|und)\s*{_NUMBER})*"
 _EQUATION = re.compile(rf"(?<!\w)(?P<lead>Gleichung(?:en)?|Gl\.|[Nn]ach|aus|s\.|vgl\.|Bedingung(?:en)?)[ \t]*\n?[ \t]*(?P<nums>{_LIST})"
@@ -77,9 +92,74 @@ def _captions(source: str) -> dict[str, tuple[int, int, int]]:
     """Figure number -> (line, start, end) of a line that carries only its caption (``Fig. 3a``)."""
     text = get_source(source).text()
     out: dict[str, tuple[int, int, int]] = {}
-    for m in re.finditer(r"^[ \t]*Fig\.\s*(\d{1,2})[a-z]?[ \t]*$", text, re.M):
+    for m in re.finditer(r"^[ \t]*Fig\.\s*(\d{1,2})[a-z]?\.?[ \t]*$", text, re.M):
         out.setdefault(m.group(1), (line_of(text, m.start())[0], m.start(), m.end()))
     return out
+
+
+_SENTENCE_END = re.compile(r"(?<!Fig)(?<!\bs)(?<!vgl)(?<!\bd)(?<!\bh)(?<!\bu)(?<!Gl)(?<!\d)\.\s+(?=[A-ZÄÖÜ$„(])")
+
+
+def _sentence_at(text: str, offset: int) -> tuple[int, int]:
+    """(start, end) of the sentence around *offset*, inside its line (a paragraph of the transcription)."""
+    bol, eol = text.rfind("\n", 0, offset) + 1, text.find("\n", offset)
+    eol = len(text) if eol < 0 else eol
+    a = max((m.end() for m in _SENTENCE_END.finditer(text, bol, offset)), default=bol)
+    m = _SENTENCE_END.search(text, offset, eol)
+    return a, m.start() + 1 if m else eol
+
+
+@cache
+def _figure_mentions(source: str) -> dict[str, tuple[tuple[int, int], ...]]:
+    """Figure number -> the sentences ``(start, end)`` that refer to it, in text order."""
+    text = get_source(source).text()
+    out: dict[str, list] = {}
+    for kind, a, b, matched, number in _found(source):
+        if kind == "figure" and _sentence_at(text, a) not in out.setdefault(number, []):
+            out[number].append(_sentence_at(text, a))
+    return {k: tuple(v) for k, v in out.items()}
+
+
+def _points_in(source: str, a: int, b: int) -> set[str]:
+    from .labels import _read, points
+    return {p for at, token in _read(source)[1] if a <= at < b for p in points(token)}
+
+
+def _section_span(source: str, at: int) -> tuple[int, int, str]:
+    """(start, end, name) of the section (:func:`symfloat.report.labels.sections`) around *at*."""
+    from .labels import sections
+    starts = sections(source) + [(len(get_source(source).text()), "")]
+    i = max(i for i, (start, _) in enumerate(starts[:-1]) if start <= at)
+    return starts[i][0], starts[i + 1][0], starts[i][1]
+
+
+def _figure_status(source: str, number: str, at: int, caption) -> tuple[str, str]:
+    """``figure lost``, with what the text still checks: a caption that survives names no point the text does
+    not name with the figure, and a reference back to a figure of an earlier section uses only labels that
+    section names; ``suspect`` where either fails."""
+    text = get_source(source).text()
+    where = (f"only its caption survives (line {caption[0]})" if caption else
+             "neither the figure nor its caption is in the transcription")
+    sentence = _sentence_at(text, at)
+    mentions = _figure_mentions(source)[number]
+    named = set().union(*(_points_in(source, *m) for m in mentions))
+    on_caption = _points_in(source, caption[1], caption[2]) if caption else set()
+    if on_caption - named:
+        return "suspect", (f"figure lost, {where}: the caption names {', '.join(sorted(on_caption - named))}, "
+                           f"which the text never names with Fig. {number}")
+    own = _points_in(source, *sentence)
+    home, here = _section_span(source, mentions[0][0]), _section_span(source, at)
+    if home == here:
+        first = mentions[0] == sentence
+        return "figure lost", (f"{where}; " + ("first mentioned here" if first else
+                                               f"first mentioned on line {line_of(text, mentions[0][0])[0]}")
+                               + (f", with {', '.join(sorted(own))}" if own else ""))
+    foreign = sorted(own - _points_in(source, home[0], home[1]))
+    if foreign:
+        return "suspect", (f"figure lost, {where}: a reference back to the figure of section {home[2]}, which "
+                           f"never names {', '.join(foreign)}")
+    return "figure lost", (f"{where}; a reference back to the figure of section {home[2]}"
+                           + (f", which names {', '.join(sorted(own))} as well" if own else ""))
 
 
 def _next_head(text: str, offset: int) -> str | None:
@@ -105,8 +185,8 @@ def _found(source: str):
             out.append(("equation", m.start(), m.end(), m.group(0), _key(n)))
     for m in _FIGURE.finditer(prose):
         bol, eol = prose.rfind("\n", 0, m.start()) + 1, prose.find("\n", m.end())
-        if not (prose[bol:m.start()] + prose[m.end():eol]).strip(" \ta"):
-            continue                              # a caption standing alone: where the figure would be
+        if re.fullmatch(r"[a-z]?\.?", (prose[bol:m.start()] + prose[m.end():eol]).strip()):
+            continue                              # a caption standing alone (Fig. 3a, Fig. 23.): where the figure was
         for n in re.findall(r"\d{1,2}", m.group("nums")):
             out.append(("figure", m.start(), m.end(), m.group(0), n))
     for m in _PARAGRAPH.finditer(text):
@@ -205,14 +285,42 @@ def _judged(number: str, lead: str, covering) -> tuple[str, str, str]:
     return "", "", ""
 
 
-def references(source: str) -> list[dict]:
-    """Every reference of *source* with its target and status (see the module docstring)."""
+def _automatic(source: str, kind: str, a: int, b: int, matched: str, number: str, line: int, quotes,
+               target) -> tuple[str, str]:
+    """The status the rules of the module docstring give a reference, and why."""
     text = get_source(source).text()
-    quotes = _quotes(source)
+    covering = [q for q in quotes if q[0] < b and a < q[1]]
+    verdict, by, why = _judged(number, matched.split()[0], covering)
+    if verdict == "wrong":
+        return "wrong", f"erratum {by} ({why})"
+    if verdict == "unbooked":
+        return "wrong", f"UNBOOKED: {by} says {why!r}"
+    if kind == "figure":
+        return _figure_status(source, number, a, target)
+    if target is None:
+        return "suspect", "no display carries the number: lost in the transcription, or a wrong reference"
+    if target[0] > line and not (kind == "paragraph" and target[1] < a):
+        return "suspect", "the target comes later"
+    targets = [q for q in quotes if q[0] < target[2] and target[1] < q[1]]
+    uses = covering or [q for q in quotes if line_of(text, q[0])[0] == line]
+    at_target, at_use = [q[2] for q in targets], [q[2] for q in uses]
+    reached = [uses_target(_anchors(u), set().union(*(_anchors(t) for t in targets))) for u in uses] \
+        if targets else []
+    if at_target and at_use and False in reached and True not in reached:
+        u = uses[reached.index(False)]
+        return "suspect", (f"target quoted by {at_target[0]}, but the steps behind {u[2]} "
+                           f"({', '.join(sorted(n for _, n in _anchors(u)))}) do not rest on the steps behind "
+                           f"it ({', '.join(sorted(n for _, n in set().union(*(_anchors(t) for t in targets)))) or '–'})")
+    if at_target and at_use:
+        return "resolved", f"target quoted by {at_target[0]}, use by {at_use[0]}"
+    return "plausible", "the target is not quoted" if not at_target else "the passage that uses it is not quoted"
+
+
+def _found_refs(source: str):
+    """(kind, start, end, matched text, number, line, target) of every reference of *source*."""
+    text = get_source(source).text()
     equations, sections = tags(source), paragraphs(source)
-    out = []
     for kind, a, b, matched, number in _found(source):
-        line = line_of(text, a)[0]
         if kind == "equation":
             target = equations.get(number) or min(
                 (v for k, v in equations.items() if re.fullmatch(rf"{number}[a-e]", k)), default=None)
@@ -220,39 +328,25 @@ def references(source: str) -> list[dict]:
             target = sections.get(number)
         else:
             target = _captions(source).get(number)
-        covering = [q for q in quotes if q[0] < b and a < q[1]]
-        verdict, by, why = _judged(number, matched.split()[0], covering)
-        if verdict == "wrong":
-            status, reason = "wrong", f"erratum {by} ({why})"
-        elif verdict == "unbooked":
-            status, reason = "wrong", f"UNBOOKED: {by} says {why!r}"
-        elif target is None:
-            status = "suspect"
-            reason = ("the figure is not in the transcription" if kind == "figure" else
-                      "no display carries the number: lost in the transcription, or a wrong reference")
-        elif kind == "figure":
-            status, reason = "suspect", f"only the caption survives (line {target[0]}): the figure is not transcribed"
-        elif target[0] > line and not (kind == "paragraph" and target[1] < a):
-            status, reason = "suspect", "the target comes later"
-        else:
-            targets = [q for q in quotes if q[0] < target[2] and target[1] < q[1]]
-            uses = covering or [q for q in quotes if line_of(text, q[0])[0] == line]
-            at_target, at_use = [q[2] for q in targets], [q[2] for q in uses]
-            reached = [uses_target(_anchors(u), set().union(*(_anchors(t) for t in targets))) for u in uses] \
-                if targets else []
-            if at_target and at_use and False in reached and True not in reached:
-                status, u = "suspect", uses[reached.index(False)]
-                reason = (f"target quoted by {at_target[0]}, but the steps behind {u[2]} "
-                          f"({', '.join(sorted(n for _, n in _anchors(u)))}) do not rest on the steps behind "
-                          f"it ({', '.join(sorted(n for _, n in set().union(*(_anchors(t) for t in targets)))) or '–'})")
-            elif at_target and at_use:
-                status, reason = "resolved", f"target quoted by {at_target[0]}, use by {at_use[0]}"
-            else:
-                status = "plausible"
-                reason = "the target is not quoted" if not at_target else "the passage that uses it is not quoted"
-        out.append({"source": source, "line": line, "kind": kind, "reference": " ".join(matched.split()),
-                    "number": number, "target_line": target[0] if target else None, "status": status,
-                    "reason": reason})
+        yield kind, a, b, matched, number, line_of(text, a)[0], target
+
+
+def references(source: str) -> list[dict]:
+    """Every reference of *source* with its target and status (see the module docstring); a judged entry
+    (:func:`judged`) decides a reference the rules leave ``suspect`` or ``figure lost``."""
+    quotes = _quotes(source)
+    judgements = {(j["line"], j["number"], j["reference"]): j for j in judged(source)}
+    out = []
+    for kind, a, b, matched, number, line, target in _found_refs(source):
+        status, reason = _automatic(source, kind, a, b, matched, number, line, quotes, target)
+        reference = " ".join(matched.split())
+        j = judgements.get((line, number, reference))
+        target_line = target[0] if target else None
+        if j is not None and status in JUDGEABLE:
+            status, target_line = j["verdict"], j["target"]
+            reason = f"judged: {j['reason']}" + (f" (erratum {j['erratum']})" if j.get("erratum") else "")
+        out.append({"source": source, "line": line, "kind": kind, "reference": reference, "number": number,
+                    "target_line": target_line, "status": status, "reason": reason})
     return out
 
 
@@ -260,10 +354,78 @@ def _anchors(q) -> set:
     return anchors(q[2].rsplit("/", 1)[0], q[3])
 
 
+def judged_file(source: str):
+    """``symfloat/sources/<key>.references.json``, the judged references of *source*."""
+    return resources.files("symfloat").joinpath("sources", f"{source}.references.json")
+
+
+@cache
+def judged(source: str) -> tuple[dict, ...]:
+    """The judged references of *source*, ``symfloat/sources/<key>.references.json``, checked for form: each has
+    ``line``, ``reference`` and ``number`` (as :func:`references` lists them), ``target`` (the line of the target,
+    or null when it is lost), ``passage`` (verbatim on the target's line, or on the reference's when the target is
+    lost), a ``verdict`` of :data:`VERDICTS`, a one-line ``reason``, and for ``wrong`` the ``erratum`` (a formula
+    id) that books it.  A figure's target is its caption's line, or null when no caption survives."""
+    path = judged_file(source)
+    if not path.is_file():
+        return ()
+    entries = json.loads(path.read_text(encoding="utf-8"))
+    keys = {"line", "reference", "number", "target", "passage", "verdict", "reason"}
+    for j in entries:
+        extra = {"erratum"} if j.get("verdict") == "wrong" else set()
+        if (set(j) != keys | extra or j["verdict"] not in VERDICTS or not j["reason"].strip()
+                or ((j["target"] is None) != (j["verdict"] == "target lost") and j["verdict"] != "figure lost")):
+            raise ValueError(f"{source}.references.json: malformed entry {j!r}: needs {sorted(keys | extra)}, a "
+                             f"verdict of {VERDICTS} and a target line unless the target is lost")
+    return tuple(entries)
+
+
+def stale(source: str) -> list[str]:
+    """The judged entries of *source* that no longer match: no such reference on the line, a reference the
+    rules decide by themselves, ``figure lost`` for an equation or resolved/target lost for a figure, a passage
+    not on its line or (resolved) without the number's tag, or an erratum that does not exist."""
+    text = get_source(source).text()
+    lines = text.split("\n")
+    found = {}
+    quotes = _quotes(source)
+    for kind, a, b, matched, number, line, target in _found_refs(source):
+        found[(line, number, " ".join(matched.split()))] = \
+            kind, _automatic(source, kind, a, b, matched, number, line, quotes, target)[0]
+    errata = {q[2] for q in quotes if q[3].erratum is not None}
+    out = []
+    for j in judged(source):
+        where = f"{source}.references.json line {j['line']} {j['reference']!r}"
+        at = j["target"] if j["target"] is not None else j["line"]
+        kind, status = found.get((j["line"], j["number"], j["reference"]), (None, None))
+        if kind is None:
+            out.append(f"{where}: no such reference of number {j['number']} on that line")
+        elif status not in JUDGEABLE:
+            out.append(f"{where}: the rules decide it ({status}); drop the entry")
+        elif j["verdict"] != "wrong" and (kind == "figure") != (j["verdict"] == "figure lost"):
+            out.append(f"{where}: a reference of kind {kind} judged {j['verdict']!r}")
+        if not 1 <= at <= len(lines) or j["passage"] not in lines[at - 1]:
+            out.append(f"{where}: the passage {j['passage']!r} is not on line {at}")
+        carried = {_key(n) for n in re.findall(r"\((\d{1,3}\s?[a-e]?)", j["passage"])}
+        if j["verdict"] == "resolved" and not carried & {j["number"], *(j["number"] + c for c in "abcde")}:
+            out.append(f"{where}: the passage {j['passage']!r} carries no tag ({j['number']})")
+        if j["verdict"] == "wrong" and j["erratum"] not in errata:
+            out.append(f"{where}: {j['erratum']!r} is no erratum of a quote of {source}")
+    return out
+
+
 def check(refs) -> list[str]:
-    """The failed self-checks: references the derivations call wrong with no erratum booked."""
-    return [f"{r['source']} line {r['line']}: {r['reference']!r}: {r['reason']}" for r in refs
-            if r["reason"].startswith("UNBOOKED")]
+    """The failed self-checks: references the derivations call wrong with no erratum booked, a reference with no
+    status, and the stale judged entries of the sources of *refs*."""
+    out = [f"{r['source']} line {r['line']}: {r['reference']!r}: {r['reason']}" for r in refs
+           if r["reason"].startswith("UNBOOKED")]
+    out += [f"{r['source']} line {r['line']}: {r['reference']!r}: no status" for r in refs
+            if r.get("status") not in STATUSES]
+    return out + [msg for s in dict.fromkeys(r["source"] for r in refs) if s in SOURCES for msg in stale(s)]
+
+
+def status_counts(refs) -> dict[str, int]:
+    """``{"references": n, status: count, ...}`` for the references *refs* of one source."""
+    return {"references": len(refs), **{st: sum(r["status"] == st for r in refs) for st in STATUSES}}
 
 
 def references_markdown(sources=tuple(SOURCES)) -> str:
@@ -274,15 +436,21 @@ def references_markdown(sources=tuple(SOURCES)) -> str:
            "number after *Gleichung*, *Gl.*, *nach*, *aus*, *s.*, *vgl.*, *Bedingung* or in *in N ein*, a figure",
            "(*Fig. N*) or Euler's paragraph (*§. N* inside a paragraph). Status: **resolved** (target before the use,",
            "both quoted by the derivations, the citing quote's steps not missing the target's), **plausible** (target",
-           "before the use, a side unquoted), **suspect** (no target in the transcription, a later one, or a target",
-           "the citing quote's steps do not rest on, through their `uses` or the quantities they mention: undecided),",
-           "**wrong** (an erratum corrects the number).", "",
-           "| source | references | resolved | plausible | suspect | wrong |", "|---|---:|---:|---:|---:|---:|"]
+           "before the use, a side unquoted), **figure lost** (no transcription carries the figures: the caption",
+           "survives or not; a surviving caption names no point the text does not give the figure, and a reference",
+           "back to the figure of an earlier section names only points that section names), **target lost** (the",
+           "transcription lost the display that carried the number; judged),",
+           "**wrong** (an erratum corrects the number), **suspect** (undecided: no target, a later one, a target the",
+           "citing quote's steps do not rest on through their `uses` or the quantities they mention, or a figure",
+           "whose labels do not agree). Where the rules cannot decide, a judgement is kept as data in",
+           "`symfloat/sources/<key>.references.json` (line, reference, target, verdict, a reason quoting the passage);",
+           "an entry that no longer matches a reference of the transcription fails the check.", "",
+           "| source | references | " + " | ".join(STATUSES) + " |", "|---|---:|" + "---:|" * len(STATUSES)]
     everything = {s: references(s) for s in sources}
     for s, refs in everything.items():
-        counts = [sum(r["status"] == st for r in refs) for st in STATUSES]
-        out.append(f"| {s} | {len(refs)} | " + " | ".join(map(str, counts)) + " |")
-    order = {"wrong": 0, "suspect": 1, "plausible": 2, "resolved": 3}
+        counts = status_counts(refs)
+        out.append(f"| {s} | {counts['references']} | " + " | ".join(str(counts[st]) for st in STATUSES) + " |")
+    order = {st: i for i, st in enumerate(("wrong", "suspect", "target lost", "figure lost", "plausible", "resolved"))}
     for s, refs in everything.items():
         if not refs:
             continue
