@@ -225,7 +225,8 @@ def bifurcation_section(repeats: int) -> list[str]:
               "fold near 0.0105474; the stable class's soft eigenvalue grows like δ³ (1.2e-12 at δ = 3e-9, 1.1e-8 at "
               "7e-8). A point whose soft eigenvalue Newton–Kantorovich decides (at 30 or 60 digits where float64 "
               "does not) is no point of a family; a closed ring is walked again with such points, and its points "
-              "on the body's mirror planes settled within them, as barriers, which breaks it into arcs; above "
+              "on the body's mirror planes settled within them, as barriers, which breaks it into arcs (an arc "
+              "that ends at a minimum at both ends counts −1); above "
               "s = 1/2 the eigenvalues and the gradient round a family are the dual body's at 1 − s (the same up "
               "to a factor, 100 times better resolved). Before, the scene reported one closed ring (index 0) with "
               "the stable and the saddle diagonal classes summing to zero, exit 0, up to 2e-7 past e on the 1 − s side.",

@@ -216,6 +216,30 @@ def test_next_to_the_vertex_events_both_sides_agree(dims, densities):
             [e.ring_shape for e in high.equilibria if e.family == "ring"]
 
 
+def test_the_cube_1e_6_past_the_end_of_its_whole_ring_counts_its_arcs():
+    # (3 - sqrt 2)/7 + 1e-6, the atlas's look beside Scheeffer X's threshold (80): the stable diagonal class's soft
+    # eigenvalue is 8e-15 (decided at 30 digits), the arcs' walk stops 2.4e-5 short of it and the winding round
+    # their ends was rounding (index 0, sum 26, exit 1); each arc falls past both ends into a minimum: -1
+    import mpmath
+    with mpmath.workdps(50):
+        s = Fraction(mpmath.nstr((3 - mpmath.sqrt(2)) / 7 + mpmath.mpf("1e-6"), 40))
+    sol = solve(make_scene("cube", s))
+    diagonal = [e for e in sol.equilibria if e.stability == "stable" and e.family == "isolated"
+                and abs(abs(e.up[0]) - abs(e.up[1])) <= 1e-9 and 0.9 < abs(e.up[2]) < 1]
+    assert len(diagonal) == 1 and diagonal[0].copies == 24
+    assert sol.checks["family_indices"] == [-1] and sol.checks["poincare_hopf_index_sum"] == 2
+
+
+def test_an_arc_walked_past_its_end_is_not_closed():
+    # the box 1 x 3/2 x 1 at 0.0820247 (an interval sample of the atlas's cell b/a = 3/2, c/a = 1): past the end of
+    # the arc about y Newton's method settled behind the walk, which went back through its start and called the
+    # arc a closed ring of length 0.176 (index 0, sum 10, exit 1); a step must now go ahead
+    sol = solve(make_scene("box", Fraction(1477625250177179, 18014398509481984), "1,3/2,1"))
+    rings = [e for e in sol.equilibria if e.family == "ring"]
+    assert [e.ring_shape for e in rings] == ["arc"] and sol.checks["family_indices"] == [-1]
+    assert len(_stable_in_class(sol, np.array([0.12674, 0.98381, 0.12674]), 1e-4)) == 1
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("delta", ["1e-11", "1e-10", "1e-9", "3e-9"])
 def test_closer_to_the_vertex_event_a_scene_is_right_or_stops(delta):

@@ -412,9 +412,9 @@ def _joined(poly, a, b, s, scale, potential) -> bool:
                 and np.linalg.norm(settled.u - middle / np.linalg.norm(middle)) <= np.linalg.norm(np.subtract(b, a)) / 4)
 
 
-def _decided(poly, loc, s, scale, refine_dps: int = 30) -> bool:
-    """Whether an isolated equilibrium lies next to *loc* whose soft eigenvalue is not zero (along a family of
-    equilibria the potential is constant and that eigenvalue vanishes).  Decided where Newton–Kantorovich holds
+def _decided(poly, loc, s, scale, refine_dps: int = 30) -> float:
+    """The soft eigenvalue of an isolated equilibrium next to *loc* where it is decided not to be zero (along a
+    family of equilibria the potential is constant and that eigenvalue vanishes), else 0.0.  Decided where Newton–Kantorovich holds
     with the soft eigenvalue, ``h = L |grad| / lambda^2 <= 1/2``, and the eigenvalue exceeds ten times its error
     at the root (``L`` times the distance ``2 |grad| / lambda``, plus the rounding: 1e-12 of the size for the
     float64 Hessian of the clipped body, 10^(5 - dps) at *refine_dps* digits and at twice that, where the point
@@ -423,7 +423,7 @@ def _decided(poly, loc, s, scale, refine_dps: int = 30) -> bool:
     as a point of one closed ring; a point of a family polishes to an eigenvalue near 1e-18 with a residual
     1e-23 and decides nothing.  Above s = 1/2 the Hessian is the dual body's at 1 - s, up ``-u``
     (:func:`~symfloat.solver.families._gradient`): the same up to the factor (1 - s) / s, with the same
-    rounding in absolute terms."""
+    rounding in absolute terms (and its sign)."""
     if s > 0.5:
         loc, s = local(poly, -np.asarray(loc.u), 1 - s), 1 - s
     lipschitz = _lipschitz(poly, loc, s)
@@ -432,14 +432,16 @@ def _decided(poly, loc, s, scale, refine_dps: int = 30) -> bool:
         soft = abs(soft)
         return soft > 0 and lipschitz * residual / soft ** 2 <= 0.5 \
             and soft > 10 * (lipschitz * 2 * residual / soft + rounding)
-    if isolated(float(np.linalg.norm(loc.gradient)), min(loc.eigen()[0], key=abs), 1e-12 * scale):
-        return True
+    soft = float(min(loc.eigen()[0], key=abs))
+    if isolated(float(np.linalg.norm(loc.gradient)), soft, 1e-12 * scale):
+        return soft
     u = loc.u
     for dps in (refine_dps, 2 * refine_dps):      # once more at twice the digits, closer still to the event
         u, residual, eigen = polish(polyhedron_at(poly, dps), u, s, scale, steps=12)
-        if isolated(float(residual) + 10.0 ** (5 - dps) * scale, float(min(eigen, key=abs)), 10.0 ** (5 - dps) * scale):
-            return True
-    return False
+        soft = float(min(eigen, key=abs))
+        if isolated(float(residual) + 10.0 ** (5 - dps) * scale, soft, 10.0 ** (5 - dps) * scale):
+            return soft
+    return 0.0
 
 
 def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
@@ -476,7 +478,9 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000, barriers=()) -
     *barriers*: unit vectors of isolated equilibria the family cannot pass through (a step whose chord comes
     within a quarter of its length of one ends the walk there)."""
     start = local(poly, u, s)
-    # a gap in the family narrower than the step is seen where the middle of a step's chord falls in it
+    # a gap in the family narrower than the step is seen where the middle of a step's chord falls in it; a
+    # step must go ahead by a third of itself (past an arc's end Newton's method may settle behind the point,
+    # and the walk went back through its start and called the arc closed: the box 1 x 3/2 x 1 at 0.0820247)
     # (:func:`_joined`); a ring around an axis is walked in steps of a quarter of its radius at most
     axis = max(_nearest_axis(start.u, group), 1e-9)
     delta = min(0.005, _nearest_copy(start.u, group) / 4, axis / 4)
@@ -486,7 +490,7 @@ def trace_family(poly, u, s, scale, group, max_steps: int = 2000, barriers=()) -
         nxt, ok = newton(poly, tangent_step(loc.u, h * v), s, scale)
         moved = float(np.linalg.norm(nxt.u - loc.u))
         good = ok and np.linalg.norm(nxt.gradient) <= 1e-13 * scale and abs(nxt.U - start.U) <= FLAT * scale \
-            and moved >= h / 3 \
+            and float(np.dot(nxt.u - loc.u, v)) >= h / 3 \
             and min(abs(p[0]) for p in _tangent_eigen(nxt)) <= 1e-6 * scale \
             and _joined(poly, loc.u, nxt.u, s, scale, start.U) and _clear(loc.u, nxt.u, barriers, h / 4)
         return nxt, moved, good
@@ -576,22 +580,38 @@ def _broken_rings(poly, found, s, scale, group) -> None:
     crossed a gap narrower than its step there: the long square log just past its vertex event 0.0105464
     (and its dual), where the stable diagonal class lies between arcs about the faces' directions and was
     walked as one ring round the end face, whose index 0 hid both.  The ring becomes the arcs between those
-    points."""
+    points, and where both ends of an arc stop at a minimum or a maximum, its index follows from them
+    (:func:`_index_between`): next to such an event the gradient round the arc's ends is rounding."""
     G = np.asarray(group, dtype=float)
     for c in [c for c in found if c.ring and c.shape == "closed"]:
-        barriers = [image for o in found if not o.ring for image in G @ np.asarray(o.u)
-                    if on_family(image, c, group, 1e-6) and _decided(poly, local(poly, image, s), s, scale)]
+        barriers, kinds = [], []
+
+        def bar(u, soft, across):
+            images = list(G @ np.asarray(u))
+            barriers.extend(images)
+            kind = -1 if soft > 0 and across > 0 else 1 if soft < 0 and across < 0 else None
+            kinds.extend([kind] * len(images))
+        for o in found:
+            if o.ring:
+                continue
+            across = max(o.eigen, key=abs)
+            for image in G @ np.asarray(o.u):
+                soft = on_family(image, c, group, 1e-6) and _decided(poly, local(poly, image, s), s, scale)
+                if soft:
+                    bar(o.u, soft, across)
+                    break
         for q in _mirror_points(c, group):
             if any(same_class(q, o.u, group, 1e-6) for o in found if not o.ring) \
                     or any(np.linalg.norm(q - b) <= 1e-6 for b in barriers):
                 continue
             loc, ok = symmetric_newton(poly, q, s, scale, group)
-            if ok and abs(loc.U - c.U) <= FLAT * scale and _decided(poly, loc, s, scale):
+            soft = ok and abs(loc.U - c.U) <= FLAT * scale and _decided(poly, loc, s, scale)
+            if soft:
                 pairs = _tangent_eigen(loc)
                 g = float(np.linalg.norm(loc.gradient))
                 found.append(Critical(representative(loc.u, group), loc.U, (float(pairs[0][0]), float(pairs[1][0])),
                                       g, 0.0, len(orbit(loc.u, group)), False))
-                barriers.extend(G @ loc.u)
+                bar(loc.u, soft, max((p[0] for p in pairs), key=abs))
         if barriers:
             barriers = np.array(barriers)
             path = np.asarray(c.path, dtype=float)       # walked again from its point farthest from them
@@ -601,6 +621,26 @@ def _broken_rings(poly, found, s, scale, group) -> None:
             c.u = representative(start, group)
             c.orbit = family_copies(c.shape, key, group, 1e-3)
             c.axis = key[0] if c.shape == "closed" else None
+            if c.shape == "arc":
+                c.index = _index_between(c, barriers, kinds)
+
+
+def _index_between(c, barriers, kinds, reach: float = 2e-4):
+    """The index of the arc *c* whose walk stopped at isolated classes: each end within *reach* (the walk's
+    last step is at most ``0.005 / 256``, the chord kept a quarter of it from the class) of a minimum (the
+    potential falls past that end: -1) or a maximum (+1); the index is the sign of the second variation across
+    the arc times that, where both ends agree, 0 where they differ (a transversally stable arc falling past
+    both ends is a saddle of the ring, docs/numerics.md section 4), None (the winding decides) where an end
+    meets no such class."""
+    ends = []
+    for end in (np.asarray(c.path[0]), np.asarray(c.path[-1])):
+        d = np.linalg.norm(barriers - end, axis=1)
+        k = int(np.argmin(d))
+        if d[k] > reach or kinds[k] is None:
+            return None
+        ends.append(kinds[k])
+    across = 1 if max(c.eigen, key=abs) > 0 else -1
+    return across * ends[0] if ends[0] == ends[1] else 0
 
 
 def family_copies(shape: str, points, group, tol: float) -> int:
