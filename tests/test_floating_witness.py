@@ -30,6 +30,9 @@ EXACT = {                                               # closed forms at the ca
     "B - G, x": sp.Integer(0),                          # G at the centre, B on the axis
     "B - G, y": sp.Integer(0),
     "B - G, z": sp.Rational(1, 5) - sp.Rational(1, 2),  # B at s c/2 = 1/5 above the bottom, G at c/2
+    "top clearance": sp.Rational(3, 5),                 # c - s c: the top face above the water
+    "bottom clearance": sp.Rational(2, 5),              # s c: the bottom face below it
+    "waterplane corners": sp.Integer(4),                # the rectangle a x b
 }
 
 
@@ -142,3 +145,71 @@ def test_the_limit_of_the_arm_over_the_tilt_is_the_metacentric_height():
     out = w.run({"f": (sp.Symbol("g"), -sp.Rational(19, 36)), "f#mutated": (sp.Symbol("g"), -sp.Rational(19, 35))})
     assert out["f"].agrees and out["f"].records[1]["rel_error"] < 1e-35
     assert not out["f#mutated"].agrees
+
+
+# ---- roots along a parameter ---------------------------------------------------------------------------------
+# A box 1 x 1 x h (h = 137/100) at density s > 1/2, tilted by phi about the x axis (up = (0, sin phi, cos phi)).
+# While the water plane cuts the side faces only (wall-sided), it passes through the centre of the upright
+# waterplane, so the top face reaches the water at tan phi_t = 2 h (1 - s) (the edge at y = -1/2 rises by
+# tan phi / 2 above it, h (1 - s) being its height over the water upright); the righting arm of a wall-sided
+# body is sin phi (GM + BM tan^2 phi / 2), BM = 1/(12 s h), GM = BM - h (1 - s)/2, so the oblique equilibrium
+# has tan^2 phi_1 = 12 s (1 - s) h^2 - 2; the two meet where h^2 (1 - s)(16 s - 4) = 2.
+PHI, DENS, H = sp.symbols("phi_r s_r h_r", positive=True)
+TILT_UP = (0, sp.sin(PHI), sp.cos(PHI))
+H_CASE = {H: sp.Rational(137, 100)}
+
+
+def _root_witness(quantity, roots, density=DENS, params=None, methods=None):
+    from symfloat.engine.floating_witness import FLOATING_METHODS, FloatingRootWitness
+    case = Case({**H_CASE, **(params or {})}, label="box 1 x 1 x 137/100")
+    return FloatingRootWitness("root", "root", ("f",), (case,), body=Body.box(1, 1, H), up=TILT_UP,
+                               density=density, quantity=quantity, roots=roots,
+                               methods=methods or FLOATING_METHODS), case
+
+
+def test_the_tilt_at_which_the_top_face_reaches_the_water():
+    from symfloat.engine.floating_witness import Root
+    w, case = _root_witness(sp.tan(PHI), ((PHI, Root("top clearance", PHI, [0.05 * k for k in range(1, 25)])),),
+                            params={DENS: sp.Rational(9, 10)})
+    exact = 2 * sp.Rational(137, 100) * sp.Rational(1, 10)
+    for method, tol in zip(w.methods, (1e-12, 1e-30)):
+        assert abs(w.measure(case, method) - sp.N(exact, 50)) <= tol, method.name
+
+
+def test_an_oblique_equilibrium_is_a_root_of_the_potential_slope():
+    from symfloat.engine.floating_witness import Root, potential_slope
+    w, case = _root_witness(sp.tan(PHI) ** 2, ((PHI, Root(potential_slope(TILT_UP, PHI), PHI,
+                                                       [0.01 * k for k in range(1, 26)])),),
+                            params={DENS: sp.Rational(9, 10)})
+    h, s_ = sp.Rational(137, 100), sp.Rational(9, 10)
+    exact = 12 * s_ * (1 - s_) * h ** 2 - 2
+    for method, tol in zip(w.methods, (1e-10, 1e-28)):
+        assert abs(w.measure(case, method) - sp.N(exact, 50)) <= tol, method.name
+
+
+def test_the_density_where_the_equilibrium_reaches_the_top_face_by_nested_roots():
+    from symfloat.engine.floating_witness import Root, potential_slope
+    touch = Root("top clearance", PHI, [0.05 * k for k in range(1, 25)])
+    slope_at_touch = Root(potential_slope(TILT_UP, PHI), DENS, [0.86 + 0.02 * k for k in range(6)],
+                          roots=((PHI, touch),))
+    from symfloat.engine.floating_witness import FLOATING_METHODS
+    # float64 only (the nested search at 40 digits takes half a minute; the digits are tested above)
+    w, case = _root_witness(DENS, ((DENS, slope_at_touch), (PHI, touch)), methods=FLOATING_METHODS[:1])
+    h2 = sp.Rational(137, 100) ** 2
+    exact = (20 + sp.sqrt(400 - 64 * (4 + 2 / h2))) / 32          # 16 s^2 - 20 s + 4 + 2/h^2 = 0
+    for method, tol in zip(w.methods, (1e-10,)):
+        assert abs(w.measure(case, method) - sp.N(exact, 50)) <= tol, method.name
+
+
+def test_a_root_that_is_not_on_its_grid_is_one_clear_error():
+    from symfloat.engine.floating_witness import Root
+    w, case = _root_witness(PHI, ((PHI, Root("top clearance", PHI, [0.01, 0.02])),), params={DENS: sp.Rational(9, 10)})
+    with pytest.raises(ValueError, match="no root"):
+        w.measure(case, w.methods[0])
+
+
+def test_the_corners_of_a_cube_corner_up_at_half_density():
+    # the plane through the centre normal to a body diagonal cuts the cube in a regular hexagon
+    w = FloatingWitness("corners", "corners", ("f",), (CASE,), body=Body.box(1, 1, 1), up=(1, 1, 1),
+                        density=sp.Rational(1, 2), quantity="waterplane corners")
+    assert [w.measure(CASE, m) for m in w.methods] == [6, 6]

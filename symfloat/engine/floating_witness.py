@@ -17,7 +17,7 @@ most 1e-12 of the body's size, see the geometry module) and 40-digit mpmath.
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 
 import mpmath
@@ -25,7 +25,7 @@ import sympy as sp
 
 from ..geometry.floating import (_dot, _sub, _unit, box, clip_below, draught, floating_state, regular_prism, right_prism,
                                  volume_centroid)
-from .witness import MeasuredWitness, Precision
+from .witness import Case, MeasuredWitness, Precision
 
 __all__ = ["Body", "FloatingWitness", "QUANTITIES", "TILT_QUANTITIES", "MEASURED", "FLOATING_METHODS",
            "LIMIT_METHODS"]
@@ -283,3 +283,102 @@ class FloatingWitness(MeasuredWitness):
         with mpmath.workdps(max(method.dps, 15)):
             values = tuple(float(v) if method.dps <= 15 else +v for v in values)   # rounded to the method's digits
         return values[0] if isinstance(self.quantity, (str, sp.Expr)) else values
+
+
+# ---- roots of a quantity along a parameter, face clearances, the waterplane's corners -----------------------------
+
+def _face_heights(st, body, top):
+    """Heights above the water plane of the vertices of the body's top (largest z) or bottom (least z) face."""
+    zs = [p[2] for p in body.vertices]
+    end = max(zs) if top else min(zs)
+    return [_height(st.u, p, st.t) for p in body.vertices if p[2] == end]
+
+
+def _corners(st, body):
+    """Distinct corners of the clipped waterplane polygon (points closer than 1e-9 of the body's size, in
+    float64, or half the digits, in mpmath, are one corner)."""
+    from ..geometry.floating import submerged
+    size = max(abs(c) for p in body.vertices for c in p)
+    eps = size * (1e-9 if body.dps is None else mpmath.mpf(10) ** (-body.dps // 2))
+    pts = []
+    for p in submerged(body, st.u, st.t).waterplane.polygon:
+        if all(max(abs(a - b) for a, b in zip(p, q)) > eps for q in pts):
+            pts.append(p)
+    return len(pts)
+
+
+QUANTITIES.update({
+    "top clearance": ("height above the water plane of the lowest vertex of the top face (largest z): positive "
+                      "while that face is dry, zero when it reaches the water",
+                      lambda st, body: min(_face_heights(st, body, True))),
+    "bottom clearance": ("depth below the water plane of the highest vertex of the bottom face (least z): "
+                         "positive while that face is submerged", lambda st, body: -max(_face_heights(st, body, False))),
+    "waterplane corners": ("number of distinct corners of the clipped waterplane polygon",
+                           lambda st, body: _corners(st, body)),
+})
+MEASURED.update({name: sp.Symbol(name) for name in QUANTITIES if name not in MEASURED})
+
+
+def potential_slope(up, variable):
+    """dE/d(variable) of the potential E = u.(G - B) (height of G above B) along a family of up vectors
+    ``up(variable)``, as an expression in :data:`MEASURED`: -(du/dvariable).(B - G), u = up/|up|; B moves
+    perpendicular to u to first order, so only u is differentiated (the righting arm of a tilt)."""
+    up = sp.Matrix(up)
+    u = up / sp.sqrt(up.dot(up))
+    return -sum(sp.diff(u[k], variable) * MEASURED[f"B - G, {axis}"] for k, axis in enumerate("xyz"))
+
+
+@dataclass(frozen=True)
+class Root:
+    """A root in ``variable`` of ``quantity`` (a name of :data:`QUANTITIES` or an expression in :data:`MEASURED`),
+    the others of the witness's body, up vector and density: the sign changes on ``grid`` (floats) refined by
+    :func:`symfloat.engine.roots.grid_roots` in float64 and at the method's digits; ``which`` is ``"first"``,
+    ``"last"`` or an index into all of them.  ``at`` overrides parameters for this search (expressions in the
+    case's parameters and the roots found before it), ``roots`` are found at each trial value first (nested)."""
+
+    quantity: object
+    variable: sp.Symbol
+    grid: tuple
+    which: object = "first"
+    at: dict = None
+    roots: tuple = ()
+
+
+@dataclass(frozen=True)
+class FloatingRootWitness(FloatingWitness):
+    """A :class:`FloatingWitness` whose case parameters are completed by roots: ``roots`` is a tuple of
+    ``(symbol, Root)``, found in order at the method's digits; ``quantity`` and ``up`` may use the symbols
+    (an equilibrium tilt as a root of the :func:`potential_slope`, the tilt or density at which a face reaches
+    the water as a root of a clearance)."""
+
+    roots: tuple = ()
+
+    def _solve(self, params, body, roots, dps):
+        from .roots import grid_roots
+        params = dict(params)
+        for symbol, root in roots:
+            at = {**params, **{k: sp.sympify(v).xreplace(params) for k, v in (root.at or {}).items()}}
+            probe = replace(self, quantity=root.quantity, name=f"{self.name}: {symbol}")
+
+            def make(p, at=at, root=root, probe=probe):
+                def f(v):
+                    trial = probe._solve({**at, root.variable: sp.Float(v, max(p, 15) + 5)}, body, root.roots, p)
+                    return probe._values(trial, body, p)[0]
+                return f
+            which = root.which if isinstance(root.which, str) else None
+            found = grid_roots(make, list(root.grid), dps, only=which)
+            if not isinstance(root.which, str):
+                found = found[root.which:root.which + 1]
+            if not found:
+                raise ValueError(f"witness {self.name}: no root of {root.quantity} in {root.variable} on its grid")
+            params[symbol] = sp.Float(found[0], max(dps, 15) + 5)
+        return params
+
+    def measure(self, case, method):
+        body = self.body if self.body is not None else case.data["body"]
+        with mpmath.workdps(max(method.dps, 15)):
+            params = self._solve(case.params, body, self.roots, method.dps)
+        return super().measure(Case(params, case.data, case.label), method)
+
+
+__all__ += ["Root", "FloatingRootWitness", "potential_slope"]
