@@ -33,6 +33,7 @@ EXACT = {                                               # closed forms at the ca
     "top clearance": sp.Rational(3, 5),                 # c - s c: the top face above the water
     "bottom clearance": sp.Rational(2, 5),              # s c: the bottom face below it
     "waterplane corners": sp.Integer(4),                # the rectangle a x b
+    "face clearance": sp.Rational(2, 5),                # the lesser of the two
 }
 
 
@@ -213,3 +214,17 @@ def test_the_corners_of_a_cube_corner_up_at_half_density():
     w = FloatingWitness("corners", "corners", ("f",), (CASE,), body=Body.box(1, 1, 1), up=(1, 1, 1),
                         density=sp.Rational(1, 2), quantity="waterplane corners")
     assert [w.measure(CASE, m) for m in w.methods] == [6, 6]
+
+
+def test_a_quantity_at_other_parameters_beside_a_root():
+    # the upright metacentric height BM - h (1 - s)/2 (closed form above) beside the tilt where the top face
+    # reaches the water, both in one measurement
+    from symfloat.engine.floating_witness import MEASURED, At, Root
+    gm = sp.Symbol("gm_r")
+    w, case = _root_witness((gm, sp.tan(PHI)), ((gm, At(MEASURED["metacentric height"], {PHI: 0})),
+                                                (PHI, Root("face clearance", PHI, [0.05 * k for k in range(1, 25)]))),
+                            params={DENS: sp.Rational(9, 10)})
+    h, s_ = sp.Rational(137, 100), sp.Rational(9, 10)
+    exact = (1 / (12 * s_ * h) - h * (1 - s_) / 2, 2 * h * (1 - s_))
+    for method, tol in zip(w.methods, (1e-12, 1e-30)):
+        assert all(abs(v - sp.N(e, 50)) <= tol for v, e in zip(w.measure(case, method), exact)), method.name

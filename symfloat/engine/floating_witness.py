@@ -315,6 +315,9 @@ QUANTITIES.update({
                          "positive while that face is submerged", lambda st, body: -max(_face_heights(st, body, False))),
     "waterplane corners": ("number of distinct corners of the clipped waterplane polygon",
                            lambda st, body: _corners(st, body)),
+    "face clearance": ("the lesser of the top and the bottom clearance: positive while the water plane cuts "
+                       "neither end face, zero when the first of them reaches the water",
+                       lambda st, body: min(min(_face_heights(st, body, True)), -max(_face_heights(st, body, False)))),
 })
 MEASURED.update({name: sp.Symbol(name) for name in QUANTITIES if name not in MEASURED})
 
@@ -343,6 +346,25 @@ class Root:
     at: dict = None
     roots: tuple = ()
 
+    def __post_init__(self):
+        object.__setattr__(self, "grid", tuple(self.grid))
+        object.__setattr__(self, "at", tuple(sorted(dict(self.at or {}).items(), key=str)))
+
+
+@dataclass(frozen=True)
+class At:
+    """The value of ``quantity`` (as in :class:`Root`) with the parameters ``at`` overriding the case's (an
+    upright metacentric height beside a tilted position), for the ``roots`` of a :class:`FloatingRootWitness`."""
+
+    quantity: object
+    at: dict = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "at", tuple(sorted(dict(self.at or {}).items(), key=str)))
+
+
+_SOLVED = {}     # (witness geometry, symbol, Root or At, parameters, digits) -> value: shared by the witnesses
+
 
 @dataclass(frozen=True)
 class FloatingRootWitness(FloatingWitness):
@@ -354,25 +376,34 @@ class FloatingRootWitness(FloatingWitness):
     roots: tuple = ()
 
     def _solve(self, params, body, roots, dps):
-        from .roots import grid_roots
         params = dict(params)
         for symbol, root in roots:
-            at = {**params, **{k: sp.sympify(v).xreplace(params) for k, v in (root.at or {}).items()}}
-            probe = replace(self, quantity=root.quantity, name=f"{self.name}: {symbol}")
-
-            def make(p, at=at, root=root, probe=probe):
-                def f(v):
-                    trial = probe._solve({**at, root.variable: sp.Float(v, max(p, 15) + 5)}, body, root.roots, p)
-                    return probe._values(trial, body, p)[0]
-                return f
-            which = root.which if isinstance(root.which, str) else None
-            found = grid_roots(make, list(root.grid), dps, only=which)
-            if not isinstance(root.which, str):
-                found = found[root.which:root.which + 1]
-            if not found:
-                raise ValueError(f"witness {self.name}: no root of {root.quantity} in {root.variable} on its grid")
-            params[symbol] = sp.Float(found[0], max(dps, 15) + 5)
+            key = (body, self.up, self.density, self.reference, symbol, root,
+                   tuple(sorted(params.items(), key=str)), dps)
+            if key not in _SOLVED:
+                _SOLVED[key] = self._solve_one(params, body, symbol, root, dps)
+            params[symbol] = _SOLVED[key]
         return params
+
+    def _solve_one(self, params, body, symbol, root, dps):
+        from .roots import grid_roots
+        at = {**params, **{k: sp.sympify(v).xreplace(params) for k, v in root.at}}
+        probe = replace(self, quantity=root.quantity, name=f"{self.name}: {symbol}")
+        if isinstance(root, At):
+            return sp.Float(probe._values(at, body, dps)[0], max(dps, 15) + 5)
+
+        def make(p):
+            def f(v):
+                trial = probe._solve({**at, root.variable: sp.Float(v, max(p, 15) + 5)}, body, root.roots, p)
+                return probe._values(trial, body, p)[0]
+            return f
+        which = root.which if isinstance(root.which, str) else None
+        found = grid_roots(make, list(root.grid), dps, only=which)
+        if not isinstance(root.which, str):
+            found = found[root.which:root.which + 1]
+        if not found:
+            raise ValueError(f"witness {self.name}: no root of {root.quantity} in {root.variable} on its grid")
+        return sp.Float(found[0], max(dps, 15) + 5)
 
     def measure(self, case, method):
         body = self.body if self.body is not None else case.data["body"]
@@ -381,4 +412,4 @@ class FloatingRootWitness(FloatingWitness):
         return super().measure(Case(params, case.data, case.label), method)
 
 
-__all__ += ["Root", "FloatingRootWitness", "potential_slope"]
+__all__ += ["Root", "At", "FloatingRootWitness", "potential_slope"]
