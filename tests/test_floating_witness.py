@@ -34,6 +34,8 @@ EXACT = {                                               # closed forms at the ca
     "bottom clearance": sp.Rational(2, 5),              # s c: the bottom face below it
     "waterplane corners": sp.Integer(4),                # the rectangle a x b
     "face clearance": sp.Rational(2, 5),                # the lesser of the two
+    "water level": sp.Rational(2, 5) - sp.Rational(1, 2),  # s c above the bottom face, which is c/2 below the origin
+    "freeboard": sp.Rational(3, 5),                     # the top face, c - s c
 }
 
 
@@ -228,3 +230,16 @@ def test_a_quantity_at_other_parameters_beside_a_root():
     exact = (1 / (12 * s_ * h) - h * (1 - s_) / 2, 2 * h * (1 - s_))
     for method, tol in zip(w.methods, (1e-12, 1e-30)):
         assert all(abs(v - sp.N(e, 50)) <= tol for v, e in zip(w.measure(case, method), exact)), method.name
+
+
+def test_a_water_plane_through_given_vertices():
+    # the plane through the three vertices next to the corner (1/2, 1/2, 1/2) of the unit cube cuts off the corner
+    # tetrahedron with three edges of length 1 at a right corner: volume 1/6; the plane u.p = 1/(2 sqrt 3) lies
+    # 2/sqrt 3 above the opposite corner
+    from symfloat.engine.floating_witness import CutWitness
+    w = CutWitness("cut", "cut", ("f",), (CASE,), body=Body.box(1, 1, 1), up=(1, 1, 1),
+                   through=(sp.Rational(1, 2), sp.Rational(1, 2), -sp.Rational(1, 2)),
+                   quantity=("immersed volume", "draught"))
+    for method, tol in zip(w.methods, (1e-14, 1e-35)):
+        volume, depth = w.measure(CASE, method)
+        assert abs(volume - sp.N(sp.Rational(5, 6), 50)) <= tol and abs(depth - sp.N(2 / sp.sqrt(3), 50)) <= tol, method.name

@@ -318,6 +318,9 @@ QUANTITIES.update({
     "face clearance": ("the lesser of the top and the bottom clearance: positive while the water plane cuts "
                        "neither end face, zero when the first of them reaches the water",
                        lambda st, body: min(min(_face_heights(st, body, True)), -max(_face_heights(st, body, False)))),
+    "water level": ("height of the water plane above the body's origin (along the up vector)", lambda st, body: st.t),
+    "freeboard": ("height of the highest point of the body above the water plane",
+                  lambda st, body: max(_height(st.u, p, st.t) for p in body.vertices)),
 })
 MEASURED.update({name: sp.Symbol(name) for name in QUANTITIES if name not in MEASURED})
 
@@ -369,9 +372,10 @@ _SOLVED = {}     # (witness geometry, symbol, Root or At, parameters, digits) ->
 @dataclass(frozen=True)
 class FloatingRootWitness(FloatingWitness):
     """A :class:`FloatingWitness` whose case parameters are completed by roots: ``roots`` is a tuple of
-    ``(symbol, Root)``, found in order at the method's digits; ``quantity`` and ``up`` may use the symbols
-    (an equilibrium tilt as a root of the :func:`potential_slope`, the tilt or density at which a face reaches
-    the water as a root of a clearance)."""
+    ``(symbol, Root)``, ``(symbol, At)`` or ``(symbol, expression)`` (a fixed value, in what is known so far),
+    found in order at the method's digits; ``quantity`` and ``up`` may use the symbols (an equilibrium tilt as
+    a root of the :func:`potential_slope`, the tilt or density at which a face reaches the water as a root of a
+    clearance).  A quantity in the roots and parameters alone is read off them, with no floating state."""
 
     roots: tuple = ()
 
@@ -387,6 +391,8 @@ class FloatingRootWitness(FloatingWitness):
 
     def _solve_one(self, params, body, symbol, root, dps):
         from .roots import grid_roots
+        if not isinstance(root, (Root, At)):                 # a value: an expression in what is known
+            return sp.sympify(root).xreplace(params)
         at = {**params, **{k: sp.sympify(v).xreplace(params) for k, v in root.at}}
         probe = replace(self, quantity=root.quantity, name=f"{self.name}: {symbol}")
         if isinstance(root, At):
@@ -409,7 +415,32 @@ class FloatingRootWitness(FloatingWitness):
         body = self.body if self.body is not None else case.data["body"]
         with mpmath.workdps(max(method.dps, 15)):
             params = self._solve(case.params, body, self.roots, method.dps)
+            single = isinstance(self.quantity, (str, sp.Expr))
+            items = (self.quantity,) if single else self.quantity
+            if not any(isinstance(q, str) or q.free_symbols & set(MEASURED.values()) for q in items):
+                # the roots alone: no floating state at the end
+                values = tuple(_real(number(q, params, method.dps), method.dps) for q in items)
+                values = tuple(float(v) if method.dps <= 15 else +v for v in values)
+                return values[0] if single else values
         return super().measure(Case(params, case.data, case.label), method)
 
 
-__all__ += ["Root", "At", "FloatingRootWitness", "potential_slope"]
+@dataclass(frozen=True)
+class CutWitness(FloatingRootWitness):
+    """A :class:`FloatingRootWitness` whose water plane passes through the point ``through`` (body frame, SymPy
+    expressions in the case's parameters) normal to ``up``, instead of a given density: the body floats at the
+    share of its volume below that plane (the dry part above a water line drawn in a figure, a plane through
+    three vertices)."""
+
+    through: tuple = None
+
+    def _values(self, params, body, dps):
+        from ..geometry.floating import body_volume_centroid, submerged
+        poly = body.build(params, dps)
+        u = _unit(tuple(number(x, params, dps) for x in self.up), poly.dps)
+        t = _dot(u, tuple(_real(number(x, params, dps), dps) for x in self.through))
+        share = submerged(poly, u, t).volume / body_volume_centroid(poly)[0]
+        return FloatingWitness._values(replace(self, density=sp.Float(share, max(dps, 15) + 10)), params, body, dps)
+
+
+__all__ += ["Root", "At", "FloatingRootWitness", "CutWitness", "potential_slope"]
