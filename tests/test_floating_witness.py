@@ -9,7 +9,7 @@ from fractions import Fraction
 import pytest
 import sympy as sp
 
-from symfloat.engine.floating_witness import QUANTITIES, Body, FloatingWitness
+from symfloat.engine.floating_witness import MEASURED, QUANTITIES, Body, FloatingWitness
 from symfloat.engine.witness import Case
 
 A, B, C, S = sp.symbols("a b c s", positive=True)
@@ -36,6 +36,15 @@ EXACT = {                                               # closed forms at the ca
     "face clearance": sp.Rational(2, 5),                # the lesser of the two
     "water level": sp.Rational(2, 5) - sp.Rational(1, 2),  # s c above the bottom face, which is c/2 below the origin
     "freeboard": sp.Rational(3, 5),                     # the top face, c - s c
+    "waterplane centroid, x": sp.Integer(0),            # the centre of the rectangle, at the water level
+    "waterplane centroid, y": sp.Integer(0),
+    "waterplane centroid, z": sp.Rational(2, 5) - sp.Rational(1, 2),
+    "waterplane tensor, xx": sp.Rational(2 * 27, 12),   # int x^2 dA = b a^3 / 12
+    "waterplane tensor, yy": sp.Rational(3 * 8, 12),    # int y^2 dA = a b^3 / 12
+    "waterplane tensor, xy": sp.Integer(0),
+    "waterplane tensor, xz": sp.Integer(0),             # the waterplane is horizontal: no z extent
+    "waterplane tensor, yz": sp.Integer(0),
+    "waterplane tensor, zz": sp.Integer(0),
 }
 
 
@@ -243,3 +252,17 @@ def test_a_water_plane_through_given_vertices():
     for method, tol in zip(w.methods, (1e-14, 1e-35)):
         volume, depth = w.measure(CASE, method)
         assert abs(volume - sp.N(sp.Rational(5, 6), 50)) <= tol and abs(depth - sp.N(2 / sp.sqrt(3), 50)) <= tol, method.name
+
+
+def test_the_waterplane_tensor_of_a_heeled_box_is_the_rectangle_turned():
+    # box 3 x 2 x 4 at s = 1/2 heeled about x by phi (tan phi = 3/4 keeps the water plane through the centre within
+    # the side faces): the waterplane is the rectangle 3 x 2/cos phi, its side 2/cos phi along
+    # (0, cos phi, -sin phi): T_yy = cos^2 phi * 3 (2/cos phi)^3 / 12, T_yz = -sin phi cos phi * the same / cos^2 phi
+    q = ("waterplane tensor, yy", "waterplane tensor, yz", "waterplane tensor, xx")
+    w = FloatingWitness("t", "t", ("f",), (CASE,), body=Body.box(3, 2, 4), up=(0, 3, 4), density=sp.Rational(1, 2),
+                        quantity=tuple(MEASURED[n] for n in q))
+    c, s_ = sp.Rational(4, 5), sp.Rational(3, 5)
+    along = 3 * (2 / c) ** 3 / 12                   # second moment along the heeled side
+    exact = (c ** 2 * along, -s_ * c * along, (2 / c) * 27 / 12)
+    for method in w.methods:
+        assert all(abs(v - sp.N(e, 50)) <= 1e-12 for v, e in zip(w.measure(CASE, method), exact)), method.name

@@ -322,6 +322,22 @@ QUANTITIES.update({
     "freeboard": ("height of the highest point of the body above the water plane",
                   lambda st, body: max(_height(st.u, p, st.t) for p in body.vertices)),
 })
+
+
+def _tensor3(st, i, j):
+    """Component (i, j) of the waterplane's central second-moment tensor in the body frame,
+    int (p - c)_i (p - c)_j dA = sum over the waterplane basis e_a, e_b of J_ab (e_a)_i (e_b)_j."""
+    return sum(st.tensor[a][b] * st.basis[a][i] * st.basis[b][j] for a in range(2) for b in range(2))
+
+
+QUANTITIES.update({
+    **{f"waterplane centroid, {axis}": (f"{axis} coordinate of the centroid of the clipped waterplane (body frame)",
+                                        lambda st, body, k=k: st.waterplane_centroid[k]) for k, axis in enumerate("xyz")},
+    **{f"waterplane tensor, {'xyz'[i]}{'xyz'[j]}": (
+        f"int (p - c)_{'xyz'[i]} (p - c)_{'xyz'[j]} dA over the clipped waterplane about its centroid (body frame): "
+        "v.T v is its second moment about the centroidal axis normal to v in the waterplane",
+        lambda st, body, i=i, j=j: _tensor3(st, i, j)) for i in range(3) for j in range(i, 3)},
+})
 MEASURED.update({name: sp.Symbol(name) for name in QUANTITIES if name not in MEASURED})
 
 
