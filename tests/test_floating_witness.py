@@ -9,7 +9,7 @@ from fractions import Fraction
 import pytest
 import sympy as sp
 
-from symfloat.engine.floating_witness import MEASURED, QUANTITIES, Body, FloatingWitness
+from symfloat.engine.floating_witness import QUANTITIES, Body, FloatingWitness
 from symfloat.engine.witness import Case
 
 A, B, C, S = sp.symbols("a b c s", positive=True)
