@@ -35,8 +35,7 @@ import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
 from symfloat.engine.floating_witness import MEASURED, At, Body, FloatingRootWitness, Root, potential_slope
-from symfloat.engine.witness import Case, Computed
-from symfloat.geometry.floating import polygon_moments
+from symfloat.engine.witness import Case
 from symfloat.model.claim import as_printed
 
 
@@ -918,36 +917,27 @@ floating("ngon-tilt", "tan^2 of the clipped equilibrium tilt of regular n-gon pr
          roots=((om, 0), (phi, EQUILIBRIUM)))
 
 
-# the side and the triangles BOC of the n-gon: plane geometry of the vertices (exact polygon moments)
-def _vertex(c, dps, j, turn=0):
-    """Vertex j of the case's regular n-gon (circumradius r, vertex 0 on +x) turned by *turn*, at *dps* digits."""
-    M = math if dps <= 15 else mpmath
-    R_, k = c.params[r], int(c.params[n])
-    R_, t = (float(v) if dps <= 15 else mpmath.mpf(sp.N(v, dps + 10)) for v in (R_, sp.sympify(turn)))
-    angle = 2 * M.pi * float(j) / k + t
-    return R_ * M.cos(angle), R_ * M.sin(angle)
+# the side and the triangles BOC of the n-gon (O the centre, B and C the vertices at -+pi/n from the x axis), turned
+# by -psi: the upright prism over the triangle; its moments about the axes through O are the waterplane's central
+# ones moved to O (Steiner), its side BC twice the reach of C above the x axis (the triangle is symmetric about it)
+def triangle_BOC(label, k, turned, **kw):
+    turn = -psi if turned else 0
+    corners = [(0, 0)] + [(r * sp.cos(q + turn), r * sp.sin(q + turn)) for q in (-pi / k, pi / k)]
+    return C(label, Body.prism(corners, 1), n=k, **kw)
 
 
-def _side(c, dps):
-    (x0_, y0_), (x1_, y1_) = _vertex(c, dps, 0), _vertex(c, dps, 1)
-    return (math if dps <= 15 else mpmath).sqrt((x1_ - x0_) ** 2 + (y1_ - y0_) ** 2)
-
-
-def _triangle_moments(c, dps, turn):
-    """int y^2 df and int x^2 df over the triangle BOC (B, C the vertices at -+pi/n, O the centre) turned by
-    *turn* about O: the polygon moments of the library, moved from the centroid to O (Steiner)."""
-    pts = [(0 * _vertex(c, dps, 0)[0],) * 2, _vertex(c, dps, -sp.Rational(1, 2), turn),
-           _vertex(c, dps, sp.Rational(1, 2), turn)]
-    area, (cx, cy), J = polygon_moments(pts)
-    return J[1][1] + area * cy ** 2, J[0][0] + area * cx ** 2
-
-
-d.witness(Computed("polygon-side", "distance of adjacent vertices", ("side",), NG, compute=_side))
-TRI = (C("r = 1, n = 3, psi = 0.4", r=1, n=3, psi="0.4"), C("r = 3/2, n = 7, psi = 1.1", r="1.5", n=7, psi="1.1"))
-d.witness(Computed("triangle-axis", "moment of the triangle BOC turned by -psi about the x axis through O",
-                   ("triangle-axis", "83"), TRI, compute=lambda c, p: _triangle_moments(c, p, -c.params[psi])[0]))
-d.witness(Computed("triangle-axes", "moments of the triangle BOC about OQ and the perpendicular through O",
-                   ("triangle-moments",), TRI, compute=lambda c, p: _triangle_moments(c, p, 0)))
+ABOUT_O = (M_["waterplane tensor, yy"] + M_["waterplane area"] * M_["waterplane centroid, y"] ** 2,
+           M_["waterplane tensor, xx"] + M_["waterplane area"] * M_["waterplane centroid, x"] ** 2)
+floating("polygon-side", "distance of adjacent vertices (twice the reach of C across OQ)", ("side",),
+         tuple(triangle_BOC(c.label, int(c.params[n]), False, r=c.params[r], omega=c.params[om]) for c in NG),
+         2 * (M_["freeboard"] + M_["water level"]), body=None, up=(0, 1, 0), density=half)
+TRI = (("r = 1, n = 3, psi = 0.4", 3, "1", "0.4"), ("r = 3/2, n = 7, psi = 1.1", 7, "1.5", "1.1"))
+floating("triangle-axis", "moment of the triangle BOC turned by -psi about the x axis through O (clipped waterplane)",
+         ("triangle-axis", "83"), tuple(triangle_BOC(lb, k, True, r=rv, psi=pv) for lb, k, rv, pv in TRI),
+         ABOUT_O[0], body=None, up=UPRIGHT, density=half)
+floating("triangle-axes", "moments of the triangle BOC about OQ and the perpendicular through O (clipped waterplane)",
+         ("triangle-moments",), tuple(triangle_BOC(lb, k, False, r=rv, psi=pv) for lb, k, rv, pv in TRI),
+         ABOUT_O, body=None, up=UPRIGHT, density=half)
 
 
 # ==== predictions: where the printed formulas put the square prism, the cube and the n-gon prism ======

@@ -17,7 +17,7 @@ most 1e-12 of the body's size, see the geometry module) and 40-digit mpmath.
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from fractions import Fraction
 
 import mpmath
@@ -25,7 +25,7 @@ import sympy as sp
 
 from ..geometry.floating import (_dot, _sub, _unit, box, clip_below, draught, floating_state, regular_prism, right_prism,
                                  volume_centroid)
-from .witness import Case, MeasuredWitness, Precision
+from .witness import MeasuredWitness, Precision
 
 __all__ = ["Body", "FloatingWitness", "QUANTITIES", "TILT_QUANTITIES", "MEASURED", "FLOATING_METHODS",
            "LIMIT_METHODS"]
@@ -286,6 +286,8 @@ class FloatingWitness(MeasuredWitness):
 
 
 # ---- roots of a quantity along a parameter, face clearances, the waterplane's corners -----------------------------
+from dataclasses import replace  # noqa: E402
+from .witness import Case  # noqa: E402
 
 def _face_heights(st, body, top):
     """Heights above the water plane of the vertices of the body's top (largest z) or bottom (least z) face."""
@@ -398,8 +400,8 @@ class FloatingRootWitness(FloatingWitness):
     def _solve(self, params, body, roots, dps):
         params = dict(params)
         for symbol, root in roots:
-            key = (body, self.up, self.density, self.reference, symbol, root,
-                   tuple(sorted(params.items(), key=str)), dps)
+            key = (type(self), body, self.up, self.density, self.reference, getattr(self, "through", None), symbol,
+                   root, tuple(sorted(params.items(), key=str)), dps)
             if key not in _SOLVED:
                 _SOLVED[key] = self._solve_one(params, body, symbol, root, dps)
             params[symbol] = _SOLVED[key]
