@@ -337,7 +337,8 @@ QUANTITIES.update({
                                         lambda st, body, k=k: st.waterplane_centroid[k]) for k, axis in enumerate("xyz")},
     **{f"waterplane tensor, {'xyz'[i]}{'xyz'[j]}": (
         f"int (p - c)_{'xyz'[i]} (p - c)_{'xyz'[j]} dA over the clipped waterplane about its centroid (body frame): "
-        "v.T v is its second moment about the centroidal axis normal to v in the waterplane",
+        "v . T v (T this tensor, v a unit vector in the waterplane) is its second moment about the centroidal axis "
+        "normal to v",
         lambda st, body, i=i, j=j: _tensor3(st, i, j)) for i in range(3) for j in range(i, 3)},
 })
 MEASURED.update({name: sp.Symbol(name) for name in QUANTITIES if name not in MEASURED})
