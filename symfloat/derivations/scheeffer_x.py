@@ -37,8 +37,6 @@ vertex counts, metacentric heights of the clipped cube, and equilibria found as 
 of the clipped potential u.(G - B) along the diagonal plane (its derivative is (du/dtheta).(G - B)).
 Angles in radians.
 """
-import math
-
 import mpmath
 import numpy as np
 import sympy as sp
@@ -47,7 +45,7 @@ from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum
 from symfloat.engine.floating_witness import (MEASURED, At, Body, CutWitness, FloatingRootWitness, Root,
                                               potential_slope)
 from symfloat.engine.roots import illinois
-from symfloat.engine.witness import Case, Computed
+from symfloat.engine.witness import Case
 from symfloat.geometry.floating import polygon_moments
 from symfloat.model.prediction import Prediction
 from symfloat.model.claim import as_printed
@@ -604,10 +602,6 @@ LEG = -r2 * M_["top clearance"] / sp.sin(th)           # leg of the corner trian
 CUBE, UNIT = Body.box(a, a, a), Body.box(1, 1, 1)
 
 
-def computed(name, description, targets, cases, fn):
-    d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=fn))
-
-
 def cut(name, description, targets, cases, quantity, up, through, body=CUBE, roots=()):
     """The dry part above a water plane drawn through a point (a water line of the figure, three vertices)."""
     d.witness(CutWitness(name, description, tuple(targets), tuple(cases), body=body, up=up, through=through,
@@ -647,37 +641,30 @@ cut("dry-moment-third", "moment of the clipped dry part / tan phi, water plane t
     *dry_moment(a / (a * (si + co) - (rho + rho1) * si)), H_POINT)
 
 
-# ---- the triangle BHG of the top face in the frame of the text (plane geometry; exact polygon moments)
-def _frame_triangles(c, p):
-    """The triangle BHG in the frame of the text (origin N, x towards B, y along GH towards G), built from the
-    square's corners; returns u, v and the sub-triangles HPB, GPB."""
-    M = math if p <= 15 else mpmath
-    A, W, R = ((float if p <= 15 else mpmath.mpf)(sp.N(c.params[q], p + 10)) for q in (a, om, rho))
-    e, nn = (M.cos(W), -M.sin(W)), (M.sin(W), M.cos(W))
-    Hq, Gq, Bq = (A / 2 - R, A / 2), (A / 2, A / 2 - R * M.tan(W)), (A / 2, A / 2)
-    fr = lambda q: (q[0] * nn[0] + q[1] * nn[1] - (Hq[0] * nn[0] + Hq[1] * nn[1]), q[0] * e[0] + q[1] * e[1])  # noqa
-    H2, G2, B2 = fr(Hq), fr(Gq), fr(Bq)
-    P2 = (0 * A, B2[1])
-    return -H2[1], G2[1], (H2, P2, B2), (G2, B2, P2)
+# ---- the triangle BHG of the top face in the frame of the text (origin N, x towards B, y along GH towards G), built
+# from the square's corners: the upright prism over each triangle, its waterplane's moments moved to N (Steiner);
+# NH and NG are the reach of the triangle BHG along -y and +y
+def _frame(q):
+    """A point of the top face (square coordinates) in the frame of the text."""
+    e, nn, H = (co, -si), (si, co), (a / 2 - rho, a / 2)
+    return (q[0] * nn[0] + q[1] * nn[1] - (H[0] * nn[0] + H[1] * nn[1]), q[0] * e[0] + q[1] * e[1])
 
 
-def _ccw(tri):
-    (x0_, y0_), (x1_, y1_), (x2_, y2_) = tri
-    return list(tri) if (x1_ - x0_) * (y2_ - y0_) - (y1_ - y0_) * (x2_ - x0_) > 0 else list(tri)[::-1]
-
-
-def _int_xy(tri):
-    """int x y df over a triangle: its central product moment plus area x centroid coordinates."""
-    area, (cx, cy), J = polygon_moments(_ccw(tri))
-    return J[0][1] + area * cx * cy
-
-
-computed("frame-u", "distance NH from the square's corners", ("u",), FACE, lambda c, p: _frame_triangles(c, p)[0])
-computed("frame-v", "distance NG from the square's corners", ("v",), FACE, lambda c, p: _frame_triangles(c, p)[1])
-computed("xy-HPB", "int xy df over HPB (polygon moments)", ("HPB",), FACE, lambda c, p: _int_xy(_frame_triangles(c, p)[2]))
-computed("xy-GPB", "int xy df over GPB (polygon moments)", ("GPB",), FACE, lambda c, p: _int_xy(_frame_triangles(c, p)[3]))
-computed("area-BHG", "area of the triangle BHG (polygon moments)", ("area",), FACE,
-         lambda c, p: (lambda f: polygon_moments(_ccw((f[2][0], f[3][0], f[2][2])))[0])(_frame_triangles(c, p)))
+H2, G2, B2 = (_frame(q) for q in ((a / 2 - rho, a / 2), (a / 2, a / 2 - rho * tg), (a / 2, a / 2)))
+P2 = (0, B2[1])
+HPB, GPB, BHG = Body.prism((H2, B2, P2), 1), Body.prism((G2, P2, B2), 1), Body.prism((H2, B2, G2), 1)  # counter-clockwise
+INT_XY = M_["waterplane tensor, xy"] + M_["waterplane area"] * M_["waterplane centroid, x"] * M_["waterplane centroid, y"]
+REACH = M_["freeboard"] + M_["water level"]
+floating("frame-u", "distance NH from the square's corners (reach of BHG along -y)", ("u",), FACE, REACH, up=(0, -1, 0),
+         density=half, body=BHG)
+floating("frame-v", "distance NG from the square's corners (reach of BHG along +y)", ("v",), FACE, REACH, up=(0, 1, 0),
+         density=half, body=BHG)
+floating("xy-HPB", "int xy df over HPB (clipped waterplane of the prism over it)", ("HPB",), FACE, INT_XY,
+         up=(0, 0, 1), density=half, body=HPB)
+floating("xy-GPB", "int xy df over GPB (clipped waterplane of the prism over it)", ("GPB",), FACE, INT_XY,
+         up=(0, 0, 1), density=half, body=GPB)
+floating("area-BHG", "area of the triangle BHG (clipped waterplane of the prism over it)", ("area",), FACE,
+         "waterplane area", up=(0, 0, 1), density=half, body=BHG)
 
 
 # ---- (171): the dry part F of the top face (exact polygon moments) and the clipped potential's slope where the
