@@ -78,7 +78,7 @@ def test_numeric_displays_carry_witness_records_at_both_precisions(report):
         assert methods in ({"float64", "mpmath, 50 digits"}, {"float64", "mpmath, 40 digits"}), name
     for name in ("168", "171", "173"):
         assert max(r["rel_error"] for r in by[name].numeric if r["method"] == "float64") < 1e-10
-        assert max(r["rel_error"] for r in by[name].numeric if r["method"] != "float64") < 1e-40
+        assert max(r["rel_error"] for r in by[name].numeric if r["method"] != "float64") < 1e-35   # 40 digits
 
 
 # ---- the clipped cube: gradient, Hessian, all equilibria -------------------------------------------------

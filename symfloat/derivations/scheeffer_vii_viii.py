@@ -644,7 +644,8 @@ def _moments(poly):
     """Exact area moments of a counter-clockwise polygon: A, int x, int y, int x^2, int y^2, int x y (the library's
     polygon moments, moved from the centroid to the origin)."""
     A, (cx, cy), J = polygon_moments([(sp.sympify(px), sp.sympify(py)) for px, py in poly])
-    return [A, A * cx, A * cy, J[0][0] + A * cx ** 2, J[1][1] + A * cy ** 2, J[0][1] + A * cx * cy]
+    return [v if v.is_Rational else sp.expand(sp.radsimp(v))   # radicals (the equilateral triangle) in closed form
+            for v in (A, A * cx, A * cy, J[0][0] + A * cx ** 2, J[1][1] + A * cy ** 2, J[0][1] + A * cx * cy)]
 
 
 def _half(poly, c, keep_above=True):
