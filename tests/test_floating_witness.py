@@ -31,6 +31,21 @@ EXACT = {                                               # closed forms at the ca
     "B - G, x": sp.Integer(0),                          # G at the centre, B on the axis
     "B - G, y": sp.Integer(0),
     "B - G, z": sp.Rational(1, 5) - sp.Rational(1, 2),  # B at s c/2 = 1/5 above the bottom, G at c/2
+    "top clearance": sp.Rational(3, 5),                 # c - s c: the top face above the water
+    "bottom clearance": sp.Rational(2, 5),              # s c: the bottom face below it
+    "waterplane corners": sp.Integer(4),                # the rectangle a x b
+    "face clearance": sp.Rational(2, 5),                # the lesser of the two
+    "water level": sp.Rational(2, 5) - sp.Rational(1, 2),  # s c above the bottom face, which is c/2 below the origin
+    "freeboard": sp.Rational(3, 5),                     # the top face, c - s c
+    "waterplane centroid, x": sp.Integer(0),            # the centre of the rectangle, at the water level
+    "waterplane centroid, y": sp.Integer(0),
+    "waterplane centroid, z": sp.Rational(2, 5) - sp.Rational(1, 2),
+    "waterplane tensor, xx": sp.Rational(2 * 27, 12),   # int x^2 dA = b a^3 / 12
+    "waterplane tensor, yy": sp.Rational(3 * 8, 12),    # int y^2 dA = a b^3 / 12
+    "waterplane tensor, xy": sp.Integer(0),
+    "waterplane tensor, xz": sp.Integer(0),             # the waterplane is horizontal: no z extent
+    "waterplane tensor, yz": sp.Integer(0),
+    "waterplane tensor, zz": sp.Integer(0),
 }
 
 
@@ -239,3 +254,112 @@ def test_the_first_zero_of_a_function():
         assert abs(first_zero(lambda d: mpmath.cos, 1, 10, 9, 50) - mpmath.pi / 2) < 1e-44
     with pytest.raises(ValueError, match="no sign change"):
         first_zero(lambda d: lambda x: x * x + 1, 0, 3, 6, 15)
+
+
+# ---- roots along a parameter ---------------------------------------------------------------------------------
+# A box 1 x 1 x h (h = 137/100) at density s > 1/2, tilted by phi about the x axis (up = (0, sin phi, cos phi)).
+# While the water plane cuts the side faces only (wall-sided), it passes through the centre of the upright
+# waterplane, so the top face reaches the water at tan phi_t = 2 h (1 - s) (the edge at y = -1/2 rises by
+# tan phi / 2 above it, h (1 - s) being its height over the water upright); the righting arm of a wall-sided
+# body is sin phi (GM + BM tan^2 phi / 2), BM = 1/(12 s h), GM = BM - h (1 - s)/2, so the oblique equilibrium
+# has tan^2 phi_1 = 12 s (1 - s) h^2 - 2; the two meet where h^2 (1 - s)(16 s - 4) = 2.
+PHI, DENS, H = sp.symbols("phi_r s_r h_r", positive=True)
+TILT_UP = (0, sp.sin(PHI), sp.cos(PHI))
+H_CASE = {H: sp.Rational(137, 100)}
+
+
+def _root_witness(quantity, roots, density=DENS, params=None, methods=None):
+    from symfloat.engine.floating_witness import FLOATING_METHODS, FloatingRootWitness
+    case = Case({**H_CASE, **(params or {})}, label="box 1 x 1 x 137/100")
+    return FloatingRootWitness("root", "root", ("f",), (case,), body=Body.box(1, 1, H), up=TILT_UP,
+                               density=density, quantity=quantity, roots=roots,
+                               methods=methods or FLOATING_METHODS), case
+
+
+def test_the_tilt_at_which_the_top_face_reaches_the_water():
+    from symfloat.engine.floating_witness import Root
+    w, case = _root_witness(sp.tan(PHI), ((PHI, Root("top clearance", PHI, [0.05 * k for k in range(1, 25)])),),
+                            params={DENS: sp.Rational(9, 10)})
+    exact = 2 * sp.Rational(137, 100) * sp.Rational(1, 10)
+    for method, tol in zip(w.methods, (1e-12, 1e-30)):
+        assert abs(w.measure(case, method) - sp.N(exact, 50)) <= tol, method.name
+
+
+def test_an_oblique_equilibrium_is_a_root_of_the_potential_slope():
+    from symfloat.engine.floating_witness import Root, potential_slope
+    w, case = _root_witness(sp.tan(PHI) ** 2, ((PHI, Root(potential_slope(TILT_UP, PHI), PHI,
+                                                       [0.01 * k for k in range(1, 26)])),),
+                            params={DENS: sp.Rational(9, 10)})
+    h, s_ = sp.Rational(137, 100), sp.Rational(9, 10)
+    exact = 12 * s_ * (1 - s_) * h ** 2 - 2
+    for method, tol in zip(w.methods, (1e-10, 1e-28)):
+        assert abs(w.measure(case, method) - sp.N(exact, 50)) <= tol, method.name
+
+
+def test_the_density_where_the_equilibrium_reaches_the_top_face_by_nested_roots():
+    from symfloat.engine.floating_witness import Root, potential_slope
+    touch = Root("top clearance", PHI, [0.05 * k for k in range(1, 25)])
+    slope_at_touch = Root(potential_slope(TILT_UP, PHI), DENS, [0.86 + 0.02 * k for k in range(6)],
+                          roots=((PHI, touch),))
+    from symfloat.engine.floating_witness import FLOATING_METHODS
+    # float64 only (the nested search at 40 digits takes half a minute; the digits are tested above)
+    w, case = _root_witness(DENS, ((DENS, slope_at_touch), (PHI, touch)), methods=FLOATING_METHODS[:1])
+    h2 = sp.Rational(137, 100) ** 2
+    exact = (20 + sp.sqrt(400 - 64 * (4 + 2 / h2))) / 32          # 16 s^2 - 20 s + 4 + 2/h^2 = 0
+    for method, tol in zip(w.methods, (1e-10,)):
+        assert abs(w.measure(case, method) - sp.N(exact, 50)) <= tol, method.name
+
+
+def test_a_root_that_is_not_on_its_grid_is_one_clear_error():
+    from symfloat.engine.floating_witness import Root
+    w, case = _root_witness(PHI, ((PHI, Root("top clearance", PHI, [0.01, 0.02])),), params={DENS: sp.Rational(9, 10)})
+    with pytest.raises(ValueError, match="no root"):
+        w.measure(case, w.methods[0])
+
+
+def test_the_corners_of_a_cube_corner_up_at_half_density():
+    # the plane through the centre normal to a body diagonal cuts the cube in a regular hexagon
+    w = FloatingWitness("corners", "corners", ("f",), (CASE,), body=Body.box(1, 1, 1), up=(1, 1, 1),
+                        density=sp.Rational(1, 2), quantity="waterplane corners")
+    assert [w.measure(CASE, m) for m in w.methods] == [6, 6]
+
+
+def test_a_quantity_at_other_parameters_beside_a_root():
+    # the upright metacentric height BM - h (1 - s)/2 (closed form above) beside the tilt where the top face
+    # reaches the water, both in one measurement
+    from symfloat.engine.floating_witness import MEASURED, At, Root
+    gm = sp.Symbol("gm_r")
+    w, case = _root_witness((gm, sp.tan(PHI)), ((gm, At(MEASURED["metacentric height"], {PHI: 0})),
+                                                (PHI, Root("face clearance", PHI, [0.05 * k for k in range(1, 25)]))),
+                            params={DENS: sp.Rational(9, 10)})
+    h, s_ = sp.Rational(137, 100), sp.Rational(9, 10)
+    exact = (1 / (12 * s_ * h) - h * (1 - s_) / 2, 2 * h * (1 - s_))
+    for method, tol in zip(w.methods, (1e-12, 1e-30)):
+        assert all(abs(v - sp.N(e, 50)) <= tol for v, e in zip(w.measure(case, method), exact)), method.name
+
+
+def test_a_water_plane_through_given_vertices():
+    # the plane through the three vertices next to the corner (1/2, 1/2, 1/2) of the unit cube cuts off the corner
+    # tetrahedron with three edges of length 1 at a right corner: volume 1/6; the plane u.p = 1/(2 sqrt 3) lies
+    # 2/sqrt 3 above the opposite corner
+    from symfloat.engine.floating_witness import CutWitness
+    w = CutWitness("cut", "cut", ("f",), (CASE,), body=Body.box(1, 1, 1), up=(1, 1, 1),
+                   through=(sp.Rational(1, 2), sp.Rational(1, 2), -sp.Rational(1, 2)),
+                   quantity=("immersed volume", "draught"))
+    for method, tol in zip(w.methods, (1e-14, 1e-35)):
+        volume, depth = w.measure(CASE, method)
+        assert abs(volume - sp.N(sp.Rational(5, 6), 50)) <= tol and abs(depth - sp.N(2 / sp.sqrt(3), 50)) <= tol, method.name
+
+
+def test_the_waterplane_tensor_of_a_heeled_box_is_the_rectangle_turned():
+    # box 3 x 2 x 4 at s = 1/2 heeled about x by phi (tan phi = 3/4 keeps the water plane through the centre within
+    # the side faces): the waterplane is the rectangle 3 x 2/cos phi, its side 2/cos phi along
+    # (0, cos phi, -sin phi): T_yy = cos^2 phi * 3 (2/cos phi)^3 / 12, T_yz = -sin phi cos phi * the same / cos^2 phi
+    q = ("waterplane tensor, yy", "waterplane tensor, yz", "waterplane tensor, xx")
+    w = FloatingWitness("t", "t", ("f",), (CASE,), body=Body.box(3, 2, 4), up=(0, 3, 4), density=sp.Rational(1, 2),
+                        quantity=tuple(MEASURED[n] for n in q))
+    c, s_ = sp.Rational(4, 5), sp.Rational(3, 5)
+    along = 3 * (2 / c) ** 3 / 12                   # second moment along the heeled side
+    exact = (c ** 2 * along, -s_ * c * along, (2 / c) * 27 / 12)
+    for method in w.methods:
+        assert all(abs(v - sp.N(e, 50)) <= 1e-12 for v, e in zip(w.measure(CASE, method), exact)), method.name

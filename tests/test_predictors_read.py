@@ -103,3 +103,19 @@ def test_scheeffer_vi_ab_predictors_read_65_64_70_73():
     # the cylinder r = 1, b = 2 (K2 = (2r/b)^2 = 1): (70) 1 - 8 s + 8 s^2 = -17/25; (73) lower row K2 - 2 s (4 - 5 s)
     assert ab.MARGIN_70(1, 2, Fraction(3, 10)) == sp.Rational(-17, 25)
     assert ab.LIMIT_73(1, 2, Fraction(3, 10))[2] == sp.Rational(-1, 2)
+
+
+def test_scheeffer_vii_viii_strips_from_103_117_121b_122_as_read():
+    _, v = load("scheeffer-vii-viii")
+    # the cube (F_1 = 1, b = 1) with a dry strip of width w = 1/2 (F = 1/2, x_s = 1/4): (103a) tan = (1 - s)/(1/8)
+    assert v.TAN_103A(1, 1, Fraction(3, 4), Fraction(1, 2), Fraction(1, 4)) == 2
+    # (103b) there, with T = 1/24, x_0 = 0: 1/24 (1 + 2) - 1/8 = 0, the box equilibrium at tan phi = 2, s = 3/4
+    assert v.EQ_103B(Fraction(1, 24), 1, 1, Fraction(3, 4), Fraction(1, 2), Fraction(1, 4), 0) == 0
+    # the designed cube equilibrium of tests/test_scheeffer_vii_viii.py: s = 71/98, tan phi = 4/3, labile by (117)
+    assert any(abs(t - 4 / 3) < 1e-12 and stab == "unstable" for t, stab in v._strip2(1.0, 1.0, 1.0, 71 / 98))
+    # (121b): the dry volume F_1 b (1 - s); (122) at the third-region box of the same tests (base A x 1, height 1,
+    # top strip w = 1/2, A = 2 (w - x_0)): tan phi = 5/2
+    assert v.DRY_121B(2, 3, Fraction(1, 4)) == Fraction(9, 2)
+    p = v._params("box3-eq")
+    A = float(2 * (sp.Rational(1, 2) - p[v.x0]))
+    assert any(abs(t - 5 / 2) < 1e-12 for t, _ in v._strip3(A, 1.0, 1.0, float(p[v.s])))

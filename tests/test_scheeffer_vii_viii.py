@@ -58,10 +58,20 @@ def test_numeric_formulas_have_both_precisions(report):
         if name in UNWITNESSED:
             continue
         methods = {r["method"] for r in (f.corrected_numeric if name in ERRATA else f.numeric)}
-        assert {"float64", "mpmath, 50 digits"} <= methods, name
+        assert "float64" in methods and methods & {"mpmath, 50 digits", "mpmath, 40 digits"}, name
 
 
 # ---- the designed equilibria ---------------------------------------------------------------------------------
+
+def _measure(name, what, dps):
+    """A quantity of the module's witnesses (M.MEASURE) on the clipped configuration *name*, in float64 or at 40
+    digits, as the witnesses declare it (the turned body for 'flip...')."""
+    from symfloat.engine.floating_witness import FLOATING_METHODS, FloatingRootWitness
+    flip = what.startswith("flip")
+    w = FloatingRootWitness(what, what, (), (), body=None, up=tuple(-u for u in M.UP) if flip else M.UP,
+                            density=1 - M.s if flip else M.s, quantity=M.MEASURE[what])
+    return w.measure(M._case(name), FLOATING_METHODS[0 if dps <= 15 else 1])
+
 
 @pytest.mark.parametrize("name", ["pent-eq", "box-eq", "box3-eq"])
 def test_designed_positions_are_equilibria_of_the_clipped_prism(name):
@@ -69,9 +79,9 @@ def test_designed_positions_are_equilibria_of_the_clipped_prism(name):
     # offsets of the centre of buoyancy from G vanish
     p = M._params(name)
     assert sp.simplify(M.res(M.Pxy).xreplace(p)) == 0
-    for dps in (15, 50):
-        h, e = M._measure(name, "balance", dps)
-        assert abs(h) < (1e-13 if dps == 15 else 1e-45) and abs(e) < (1e-13 if dps == 15 else 1e-45)
+    for dps in (15, 40):
+        h, e = _measure(name, "balance", dps)
+        assert abs(h) < (1e-13 if dps == 15 else 1e-35) and abs(e) < (1e-13 if dps == 15 else 1e-35)
 
 
 def test_pentagon_design_pinned():
@@ -85,8 +95,8 @@ def test_pentagon_design_pinned():
     assert sp.simplify(M.res(M.M3 / M.sn2).xreplace(p)) == 0
     assert float(p[M.s]) == pytest.approx(0.8573099415204678, rel=1e-14)
     # the equilibrium is not a symmetric one: the waterplane's central product k = m n F_2 != 0
-    assert M._measure("pent-eq", "Ks", 15) == pytest.approx(float(M.res(M.k_).xreplace(p)), rel=1e-12)
-    assert abs(M._measure("pent-eq", "Ks", 15)) > 0.05
+    assert _measure("pent-eq", "Ks", 15) == pytest.approx(float(M.res(M.k_).xreplace(p)), rel=1e-12)
+    assert abs(_measure("pent-eq", "Ks", 15)) > 0.05
 
 
 def test_stability_of_the_designed_equilibria_pinned():
@@ -96,10 +106,10 @@ def test_stability_of_the_designed_equilibria_pinned():
     # -1.55934272897988 (same reading, exact data, evaluated)
     cube = M.at_eq(M.L117).xreplace(M._params("box-eq"))
     assert sp.nsimplify(sp.simplify(cube)) == sp.Rational(-15, 1372)
-    assert M._measure("box-eq", "2cD", 15) == pytest.approx(-15 / 1372, rel=1e-12)
+    assert _measure("box-eq", "2cD", 15) == pytest.approx(-15 / 1372, rel=1e-12)
     pent = float(M.at_eq(M.L117).xreplace(M._params("pent-eq")))
     assert pent == pytest.approx(-1.5593427289798802, rel=1e-13)
-    assert M._measure("pent-eq", "2cD", 15) == pytest.approx(pent, rel=1e-12)
+    assert _measure("pent-eq", "2cD", 15) == pytest.approx(pent, rel=1e-12)
 
 
 def _box_arm(A, bb, sv, theta):
@@ -135,13 +145,13 @@ def test_claim_stability_direction_on_the_cube():
 def test_claim_s_below_half_exchanges_wet_and_dry():
     # V_1 E of density s with u up equals that of density 1 - s with -u up (the dry part becomes the submerged one)
     for name in ("rect", "tri", "pent-eq"):
-        assert M._measure(name, "V1e2", 15) == pytest.approx(M._measure(name, "flip", 15), rel=1e-12)
+        assert _measure(name, "V1e2", 15) == pytest.approx(_measure(name, "flip", 15), rel=1e-12)
 
 
 def test_claim_x0_negative_when_N_lies_between_O_and_E():
     # the pentagon's water line crosses EF on the dry side of O (N between O and E): measured x_0 < 0
-    assert M._measure("pent-eq", "x0", 15) == pytest.approx(-349 / 2196, rel=1e-12)
-    assert M._measure("rect", "x0", 15) > 0
+    assert _measure("pent-eq", "x0", 15) == pytest.approx(-349 / 2196, rel=1e-12)
+    assert _measure("rect", "x0", 15) > 0
 
 
 def test_claim_98_regular_bases_wet_part():
@@ -149,7 +159,7 @@ def test_claim_98_regular_bases_wet_part():
     for name in ("square", "eqtri"):
         p = M._params(name)
         assert p[M.PO] == 0
-        assert M._measure(name, "Pxy", 15) == pytest.approx(-float(p[M.Pw]), rel=1e-12)
+        assert _measure(name, "Pxy", 15) == pytest.approx(-float(p[M.Pw]), rel=1e-12)
 
 
 # ---- mutations ------------------------------------------------------------------------------------------------

@@ -25,8 +25,8 @@ direction (cos w, sin w, 0), w (Scheeffer's omega) measured from a side, 0 < w <
 vector is u = (sin phi sin w, -sin phi cos w, cos phi) and xi = -x sin w + y cos w, so the points
 with large xi sink.  Angles are read in radians (45 deg = pi/4).
 """
-import functools
 import math
+from dataclasses import replace
 from fractions import Fraction
 
 import mpmath
@@ -34,9 +34,8 @@ import numpy as np
 import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
-from symfloat.engine.roots import grid_roots, illinois
-from symfloat.engine.witness import Case, Computed
-from symfloat.geometry.floating import box, floating_state, right_prism
+from symfloat.engine.floating_witness import MEASURED, At, Body, FloatingRootWitness, Root, potential_slope
+from symfloat.engine.witness import Case
 from symfloat.model.claim import as_printed
 
 
@@ -724,380 +723,222 @@ d.quote("cylinder-most-oblique", "VI.F",
 
 
 # ==== witnesses: the clipped floating geometry =========================================================
-def _num(v, dps):
-    v = sp.sympify(v)
-    return float(v) if dps <= 15 else mpmath.mpf(str(sp.N(v, dps + 20)))
+UPV = (sp.sin(phi) * sp.sin(om), -sp.sin(phi) * sp.cos(om), sp.cos(phi))   # the up vector (conventions above)
+GZW = potential_slope(UPV, phi)                    # the clipped righting arm h.(B - G) = dE/dphi
+PRISM, CUBE_BODY, UNIT_CUBE = Body.box(a, a, b), Body.box(b, b, b), Body.box(1, 1, 1)
+PHI_GRID = tuple(0.005 + 0.025 * k for k in range(62))
+PHIT_GRID = tuple(0.005 + 0.1 * k for k in range(16))   # the clearance decreases monotonically in the first domain
+EQUILIBRIUM = Root(GZW, phi, PHI_GRID)             # the oblique equilibrium: the first zero of GZ in phi
+TOUCH = Root("face clearance", phi, PHIT_GRID)     # the tilt at which an end face reaches the water
+ph1, pht, ws, gm0 = sp.symbols("varphi_1w varphi_tw omega_w GM_0w")    # measured: the roots and the upright GM
+M_ = MEASURED
 
 
-def _M(dps):
-    return math if dps <= 15 else mpmath
+def floating(name, description, targets, cases, quantity, body=PRISM, up=UPV, density=s, roots=()):
+    d.witness(FloatingRootWitness(name, description, tuple(targets), tuple(cases), body=body, up=up,
+                                  density=density, quantity=quantity, roots=roots))
 
 
-def _bd(dps):
-    """Body precision: float64, or mpmath with guard digits."""
-    return None if dps <= 15 else dps + 8
-
-
-def _dot(p, q):
-    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]
-
-
-def _frame(M, ph, w):
-    """Up vector u, horizontal h across the axis, axis direction e (body frame)."""
-    sf, cf, sw, cw = M.sin(ph), M.cos(ph), M.sin(w), M.cos(w)
-    return (sf * sw, -sf * cw, cf), (-cf * sw, cf * cw, sf), (cw, sw, 0 * cw)
-
-
-def _square(av, bv, dps):
-    return box(av, av, bv, dps=_bd(dps))
-
-
-def _gz(body, ph, w, sv, M):
-    """Righting arm h.(B - G): the derivative of the clipped potential in phi (tested in the tests)."""
-    u, h, _ = _frame(M, ph, w)
-    st = floating_state(body, u, sv)
-    return _dot(h, [st.B[k] - st.G[k] for k in range(3)])
-
-
-def _clearance(body, ph, w, sv, M):
-    """Height over the clipped water plane of the lowest top-face vertex (s > 1/2) or minus that of the highest
-    bottom-face vertex (s < 1/2): positive while the face is dry (submerged), zero when it reaches the water."""
-    u, _, _ = _frame(M, ph, w)
-    st = floating_state(body, u, sv)
-    if sv > 0.5:
-        return min(_dot(u, p) - st.t for p in body.vertices if p[2] > 0)
-    return -max(_dot(u, p) - st.t for p in body.vertices if p[2] < 0)
-
-
-def _root(make_f, grid, dps):
-    """First root of f on the float grid (:func:`symfloat.engine.roots.grid_roots`)."""
-    return grid_roots(make_f, grid, dps, only="first")[0]
-
-
-PHI_GRID = [0.005 + 0.025 * k for k in range(62)]
-PHIT_GRID = [0.005 + 0.1 * k for k in range(16)]    # the clearance decreases monotonically in the first domain
-
-
-@functools.lru_cache(maxsize=None)
-def _phi1(av, bv, sv, w, dps):
-    """The oblique equilibrium: first zero of GZ (from negative to positive) in phi."""
-    def make(p):
-        M, body = _M(p), _square(av, bv, p)
-        sw, ww = _num(sv, p), _num(w, p)
-        return lambda ph: _gz(body, ph, ww, sw, M)
-    return _root(make, PHI_GRID, dps)
-
-
-@functools.lru_cache(maxsize=None)
-def _phit(av, bv, sv, w, dps):
-    """The tilt at which the top (s > 1/2) or bottom (s < 1/2) face reaches the water."""
-    def make(p):
-        M, body = _M(p), _square(av, bv, p)
-        sw, ww = _num(sv, p), _num(w, p)
-        return lambda ph: _clearance(body, ph, ww, sw, M)
-    return _root(make, PHIT_GRID, dps)
-
-
-def computed(name, description, targets, cases, fn):
-    d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=fn))
-
-
-def C(label, **kw):
+def C(label, body=None, **kw):
     syms = {"a": a, "b": b, "s": s, "omega": om, "psi": psi, "n": n, "r": r, "F": F}
-    return Case({syms[k]: sp.Rational(v) for k, v in kw.items()}, label=label)
+    return Case({syms[k]: sp.Rational(v) for k, v in kw.items()}, None if body is None else {"body": body}, label)
 
 
-def _upright(case, dps, cube=False):
-    av, bv, sv = (case.params[b] if cube else case.params[a]), case.params[b], case.params[s]
-    body = _square(av, bv, dps)
-    return floating_state(body, (0, 0, 1), _num(sv, dps)), [_num(v, dps) for v in (av, bv, sv)]
-
-
+UPRIGHT = (0, 0, 1)
 UP = (C("a = 1, b = 2, s = 3/10", a=1, b=2, s="0.3"), C("a = 3/2, b = 1, s = 4/5", a="1.5", b=1, s="0.8"),
       C("a = 1, b = 1, s = 1/2", a=1, b=1, s="0.5"))
-computed("square-moments", "waterplane moment and area of the upright square prism (clipped)",
-         ("square-moments",), UP, lambda c, p: (lambda st: (st[0].I_min, st[0].waterplane_area))(_upright(c, p)))
-computed("corner-distance", "largest distance of a vertex of the base from the axis",
-         ("OB",), UP, lambda c, p: max(_M(p).sqrt(v[0] ** 2 + v[1] ** 2) for v in _square(c.params[a], 1, p).vertices))
+floating("square-moments", "waterplane moment and area of the upright square prism (clipped)", ("square-moments",),
+         UP, ("I min", "waterplane area"), up=UPRIGHT)
+# a centred, centrally symmetric body at s = 1/2 has its water plane through the centre: the draught is then the
+# largest distance of a point from the plane through the centre normal to up
+floating("corner-distance", "largest distance of a vertex of the base from the axis (draught at s = 1/2 with up "
+         "towards a corner)", ("OB",), UP, "draught", body=Body.box(a, a, 1), up=(1, 1, 0), density=half)
 OMC = (C("a = 1, omega = 0.3", a=1, omega="0.3"), C("a = 3/2, omega = 0.7", a="1.5", omega="0.7"),
        C("a = 2, omega = 0.05", a=2, omega="0.05"))
-
-
-def _um_vertices(c, p):
-    M, w = _M(p), _num(c.params[om], p)
-    nvec = (-M.sin(w), M.cos(w), 0)
-    return max(_dot(nvec, v) for v in _square(c.params[a], 1, p).vertices)
-
-
-computed("largest-ordinate", "largest distance xi of a base vertex on the sinking side", ("u-m",), OMC, _um_vertices)
-computed("displacement-tilted", "submerged volume of the clipped prism heeled by 0.2 about an axis at omega = 0.3",
-         ("V1",), UP, lambda c, p: floating_state(_square(c.params[a], c.params[b], p),
-                                                  _frame(_M(p), _num("0.2", p), _num("0.3", p))[0],
-                                                  _num(c.params[s], p)).volume)
-computed("T-over-V", "I_min / submerged volume, upright (clipped)", ("T1-over-V1",), UP,
-         lambda c, p: (lambda st: st.I_min / st.volume)(_upright(c, p)[0]))
-computed("e1-clipped", "height of G above B, upright (clipped)", ("e1",), UP, lambda c, p: _upright(c, p)[0].potential)
-computed("metacentric-height", "metacentric height I_min/V - BG, upright (clipped)", ("upright-condition",), UP,
-         lambda c, p: _upright(c, p)[0].metacentric_height)
-computed("duhamel-75", "12 s/b x metacentric height, upright (clipped)", ("75", "78"), UP,
-         lambda c, p: (lambda st, v: 12 * v[2] / v[1] * st.metacentric_height)(*_upright(c, p)))
-computed("duhamel-75-unstable", "-12 s/b x metacentric height, upright (clipped)", ("75-unstable",), UP,
-         lambda c, p: (lambda st, v: -12 * v[2] / v[1] * st.metacentric_height)(*_upright(c, p)))
-computed("area-b2-over-T", "F_1 b^2 s(1-s)/T_1 from the clipped upright waterplane", ("Fb2-over-T1",), UP,
-         lambda c, p: (lambda st, v: st.waterplane_area * v[1] ** 2 * v[2] * (1 - v[2]) / st.I_min)(*_upright(c, p)))
+floating("largest-ordinate", "largest distance xi of a base vertex on the sinking side (draught at s = 1/2, up "
+         "along xi)", ("u-m",), OMC, "draught", body=Body.box(a, a, 1), up=(-sp.sin(om), sp.cos(om), 0), density=half)
+floating("displacement-tilted", "submerged volume of the clipped prism heeled by 0.2 about an axis at omega = 0.3",
+         ("V1",), UP, "immersed volume", up=tuple(u.subs({phi: sp.Rational(1, 5), om: sp.Rational(3, 10)}) for u in UPV))
+floating("T-over-V", "I_min / submerged volume, upright (clipped)", ("T1-over-V1",), UP, "metacentric radius",
+         up=UPRIGHT)
+floating("e1-clipped", "height of G above B, upright (clipped)", ("e1",), UP, "G above B", up=UPRIGHT)
+floating("metacentric-height", "metacentric height I_min/V - BG, upright (clipped)", ("upright-condition",), UP,
+         "metacentric height", up=UPRIGHT)
+floating("duhamel-75", "12 s/b x metacentric height, upright (clipped)", ("75", "78"), UP,
+         12 * s / b * M_["metacentric height"], up=UPRIGHT)
+floating("duhamel-75-unstable", "-12 s/b x metacentric height, upright (clipped)", ("75-unstable",), UP,
+         -12 * s / b * M_["metacentric height"], up=UPRIGHT)
+floating("area-b2-over-T", "F_1 b^2 s(1-s)/T_1 from the clipped upright waterplane", ("Fb2-over-T1",), UP,
+         M_["waterplane area"] * b ** 2 * s * (1 - s) / M_["I min"], up=UPRIGHT)
 TOP = (C("a = 1, b = 1, s = 7/10, omega = 0.3", a=1, b=1, s="0.7", omega="0.3"),
        C("a = 6/5, b = 1, s = 9/10, omega = 0.7", a="1.2", b=1, s="0.9", omega="0.7"))
-computed("touch-top", "tan of the tilt at which the top face reaches the clipped water plane", ("limit-top",), TOP,
-         lambda c, p: _M(p).tan(_phit(c.params[a], c.params[b], c.params[s], c.params[om], p)))
+floating("touch-top", "tan of the tilt at which the top face reaches the clipped water plane", ("limit-top",), TOP,
+         sp.tan(phi), roots=((phi, TOUCH),))
 # the region of (78a): (1-s)(7s-1) <= (a/b)^2 < 6s(1-s) (s > 1/2), s(6-7s) <= (a/b)^2 < 6s(1-s) (s < 1/2)
 R78A = (C("a = 11/10, b = 1, s = 7/10, omega = 0.3", a="1.1", b=1, s="0.7", omega="0.3"),
         C("a = 11/10, b = 1, s = 3/10, omega = 0.6", a="1.1", b=1, s="0.3", omega="0.6"),
         C("a = 97/100, b = 1, s = 4/5, omega = 0.1", a="0.97", b=1, s="0.8", omega="0.1"))
-
-
-def _ph1(c, p, w=None):
-    return _phi1(c.params[a], c.params[b], c.params[s], c.params[om] if w is None else sp.sympify(w), p)
-
-
-def _pht(c, p, w=None):
-    return _phit(c.params[a], c.params[b], c.params[s], c.params[om] if w is None else sp.sympify(w), p)
-
-
-def _q(c, p):
-    return (_num(c.params[a], p) / _num(c.params[b], p)) ** 2
-
-
-computed("oblique-76", "tan^2 of the clipped equilibrium tilt and tan of the clipped touching tilt at omega",
-         ("76",), R78A, lambda c, p: (_M(p).tan(_ph1(c, p)) ** 2, _M(p).tan(_pht(c, p))))
-computed("oblique-78b", "tan of the clipped equilibrium tilt (root of GZ)", ("78b",), R78A,
-         lambda c, p: _M(p).tan(_ph1(c, p)))
-computed("oblique-76-45", "tan^2 phi_1 (at omega = 0.3) and tan of the touching tilt at omega = 45 deg, clipped",
-         ("76-at-45",), R78A, lambda c, p: (_M(p).tan(_ph1(c, p)) ** 2, _M(p).tan(_pht(c, p, pi / 4))))
-computed("oblique-76-squared", "tan^2 phi_t(45 deg) - tan^2 phi_1, clipped", ("76-squared",), R78A,
-         lambda c, p: _M(p).tan(_pht(c, p, pi / 4)) ** 2 - _M(p).tan(_ph1(c, p)) ** 2)
-computed("oblique-77", "(a/b)^2/2 (tan^2 phi_t(45 deg) - tan^2 phi_1), clipped", ("77",), R78A,
-         lambda c, p: _q(c, p) / 2 * (_M(p).tan(_pht(c, p, pi / 4)) ** 2 - _M(p).tan(_ph1(c, p)) ** 2))
-computed("oblique-78a", "-12 s/b GM upright and (a/b)^2/2 (tan^2 phi_t(45 deg) - tan^2 phi_1), clipped", ("78a",),
-         R78A, lambda c, p: (-12 * _num(c.params[s], p) / _num(c.params[b], p)
-                             * floating_state(_square(c.params[a], c.params[b], p), (0, 0, 1),
-                                              _num(c.params[s], p)).metacentric_height,
-                             _q(c, p) / 2 * (_M(p).tan(_pht(c, p, pi / 4)) ** 2 - _M(p).tan(_ph1(c, p)) ** 2)))
+Q2 = (a / b) ** 2
+AT_OMEGA = ((pht, TOUCH), (phi, EQUILIBRIUM))                       # phi_t and phi_1 at the case's omega
+AT_45 = ((pht, replace(TOUCH, at={om: pi / 4})), (phi, EQUILIBRIUM))  # phi_t at 45 deg, phi_1 at omega
+floating("oblique-76", "tan^2 of the clipped equilibrium tilt and tan of the clipped touching tilt at omega",
+         ("76",), R78A, (sp.tan(phi) ** 2, sp.tan(pht)), roots=AT_OMEGA)
+floating("oblique-78b", "tan of the clipped equilibrium tilt (root of GZ)", ("78b",), R78A, sp.tan(phi),
+         roots=((phi, EQUILIBRIUM),))
+floating("oblique-76-45", "tan^2 phi_1 (at omega) and tan of the touching tilt at omega = 45 deg, clipped",
+         ("76-at-45",), R78A, (sp.tan(phi) ** 2, sp.tan(pht)), roots=AT_45)
+floating("oblique-76-squared", "tan^2 phi_t(45 deg) - tan^2 phi_1, clipped", ("76-squared",), R78A,
+         sp.tan(pht) ** 2 - sp.tan(phi) ** 2, roots=AT_45)
+floating("oblique-77", "(a/b)^2/2 (tan^2 phi_t(45 deg) - tan^2 phi_1), clipped", ("77",), R78A,
+         Q2 / 2 * (sp.tan(pht) ** 2 - sp.tan(phi) ** 2), roots=AT_45)
+floating("oblique-78a", "-12 s/b GM upright and (a/b)^2/2 (tan^2 phi_t(45 deg) - tan^2 phi_1), clipped", ("78a",),
+         R78A, (-12 * s / b * gm0, Q2 / 2 * (sp.tan(pht) ** 2 - sp.tan(phi) ** 2)),
+         roots=((gm0, At("metacentric height", {phi: 0})),) + AT_45)
 # the region of (78c): 2(1-s)(4s-1) <= (a/b)^2 < (1-s)(7s-1) (s > 1/2) and its mirror
 R78C = (C("a = 53/50, b = 1, s = 7/10", a="1.06", b=1, s="0.7"),
         C("a = 53/50, b = 1, s = 3/10", a="1.06", b=1, s="0.3"),
         C("a = 19/20, b = 1, s = 4/5", a="0.95", b=1, s="0.8"))
-computed("oblique-78c", "(a/b)^2/2 (tan^2 phi_1 - tan^2 phi_t(45 deg)), phi_1 at omega = 0, clipped", ("78c",), R78C,
-         lambda c, p: _q(c, p) / 2 * (_M(p).tan(_ph1(c, p, 0)) ** 2 - _M(p).tan(_pht(c, p, pi / 4)) ** 2))
-computed("oblique-78e", "(a/b)^2/2 (tan^2 phi_1 - tan^2 phi_t(0)), clipped", ("78e",), R78C + R78A[:1],
-         lambda c, p: _q(c, p) / 2 * (_M(p).tan(_ph1(c, p, 0)) ** 2 - _M(p).tan(_pht(c, p, 0)) ** 2))
-
-
-def _omega_star(av, bv, sv, p):
-    """The axis direction at which the face reaches the water at the clipped equilibrium tilt (phi_1 at omega = 0)."""
-    ph = _phi1(av, bv, sv, sp.Integer(0), p)
-
-    def make(q):
-        M, body = _M(q), _square(av, bv, q)
-        sw = _num(sv, q)
-        pq = float(_phi1(av, bv, sv, sp.Integer(0), 15)) if q <= 15 else ph
-        return lambda w: _clearance(body, pq, w, sw, M)
-    return _root(make, [0.001 + 0.02 * k for k in range(40)], p)
-
-
-computed("limit-omega", "sin^2(45 deg + omega*), omega* the clipped root of the face clearance at phi_1",
-         ("78d",), R78C, lambda c, p: _M(p).sin(_M(p).pi / 4 + _omega_star(c.params[a], c.params[b], c.params[s], p)) ** 2)
+EDGE = ((ph1, replace(EQUILIBRIUM, at={om: 0})),)                  # phi_1 with the axis along an edge
+floating("oblique-78c", "(a/b)^2/2 (tan^2 phi_1 - tan^2 phi_t(45 deg)), phi_1 at omega = 0, clipped", ("78c",), R78C,
+         Q2 / 2 * (sp.tan(ph1) ** 2 - sp.tan(pht) ** 2), roots=EDGE + ((om, pi / 4), (pht, TOUCH)))
+floating("oblique-78e", "(a/b)^2/2 (tan^2 phi_1 - tan^2 phi_t(0)), clipped", ("78e",), R78C + R78A[:1],
+         Q2 / 2 * (sp.tan(ph1) ** 2 - sp.tan(pht) ** 2), roots=EDGE + ((om, 0), (pht, TOUCH)))
+# omega*: the axis direction at which an end face reaches the water at the equilibrium tilt phi_1(omega = 0)
+OMEGA_STAR = EDGE + ((phi, ph1), (om, Root("face clearance", om, tuple(0.001 + 0.02 * k for k in range(40)))))
+floating("limit-omega", "sin^2(45 deg + omega*), omega* the clipped root of the face clearance at phi_1",
+         ("78d",), R78C, sp.sin(pi / 4 + om) ** 2, roots=OMEGA_STAR)
 
 # ---- the cube
 CUBE = (C("b = 1, s = 0.3", b=1, s="0.3"), C("b = 2, s = 0.8", b=2, s="0.8"), C("b = 1/2, s = 0.1", b="0.5", s="0.1"))
-computed("cube-duhamel", "12 s/b x metacentric height of the upright cube (clipped)", ("cube-78",), CUBE,
-         lambda c, p: (lambda st, v: 12 * v[2] / v[1] * st.metacentric_height)(*_upright(c, p, cube=True)))
-computed("cube-duhamel-2", "2 s/b x metacentric height of the upright cube (clipped)", ("cube-78-square",), CUBE,
-         lambda c, p: (lambda st, v: 2 * v[2] / v[1] * st.metacentric_height)(*_upright(c, p, cube=True)))
-
-
-@functools.lru_cache(maxsize=None)
-def _cube_upright(upper, dps):
-    def make(q):
-        body = box(1, 1, 1, dps=_bd(q))
-        return lambda sv: floating_state(body, (0, 0, 1), sv).metacentric_height
-    grid = [0.5 + 0.01 * k for k in range(1, 50)] if upper else [0.5 - 0.01 * k for k in range(1, 50)]
-    return _root(make, grid, dps)
-
-
-@functools.lru_cache(maxsize=None)
-def _cube_touch_equilibrium(upper, w, dps):
-    """The density at which the clipped cube's equilibrium tilt equals its touching tilt at the axis angle w:
-    root in s of GZ at the touching tilt (nested root-finding), scanned from s = 0.55 (0.45) outwards."""
-    def make(q):
-        M, body = _M(q), box(1, 1, 1, dps=_bd(q))
-
-        def f(sv):
-            sr = sp.Rational(str(sv)) if q <= 15 else None
-            if q <= 15:
-                pt = _phit(sp.Integer(1), sp.Integer(1), sr, w, 15)
-            else:
-                pt = _touch_mp(body, sv, w, q)
-            return _gz(body, pt, _num(w, q), sv, M)
-        return f
-    grid = [0.55 + 0.02 * k for k in range(13)] if upper else [0.45 - 0.02 * k for k in range(13)]
-    return _root(make, grid, dps)
-
-
-def _touch_mp(body, sv, w, q):
-    M, ww = mpmath, _num(w, q)
-    f = lambda ph: _clearance(body, ph, ww, sv, M)  # noqa: E731
-    x0 = _phit(sp.Integer(1), sp.Integer(1), sp.Rational(str(float(sv))), w, 15)
-    dlt = mpmath.mpf("1e-6")
-    return illinois(f, mpmath.mpf(x0) - dlt, mpmath.mpf(x0) + dlt, mpmath.mpf(10) ** (-q - 4))
-
-
+floating("cube-duhamel", "12 s/b x metacentric height of the upright cube (clipped)", ("cube-78",), CUBE,
+         12 * s / b * M_["metacentric height"], body=CUBE_BODY, up=UPRIGHT)
+floating("cube-duhamel-2", "2 s/b x metacentric height of the upright cube (clipped)", ("cube-78-square",), CUBE,
+         2 * s / b * M_["metacentric height"], body=CUBE_BODY, up=UPRIGHT)
 ONE = (Case({}, label="unit cube"),)
-computed("cube-upright-thresholds", "densities where the clipped upright cube's metacentric height vanishes",
-         ("79",), ONE, lambda c, p: (_cube_upright(True, p), _cube_upright(False, p)))
-computed("cube-upright-upper", "upper density where the clipped upright cube's metacentric height vanishes",
-         ("79-upper-number", "81-upper"), ONE, lambda c, p: _cube_upright(True, p))
-computed("cube-upright-lower", "lower density where the clipped upright cube's metacentric height vanishes",
-         ("79-lower-number", "81-lower"), ONE, lambda c, p: _cube_upright(False, p))
-computed("cube-oblique-thresholds", "densities where the clipped cube's equilibrium reaches a face at omega = 45 deg",
-         ("80",), ONE, lambda c, p: (_cube_touch_equilibrium(True, pi / 4, p), _cube_touch_equilibrium(False, pi / 4, p)))
-computed("cube-oblique-roots", "the same thresholds, less 4/7 and from 3/7",
-         ("80-roots",), ONE, lambda c, p: (_cube_touch_equilibrium(True, pi / 4, p) - _num(sp.Rational(4, 7), p),
-                                           _num(sp.Rational(3, 7), p) - _cube_touch_equilibrium(False, pi / 4, p)))
-computed("cube-oblique-upper", "upper density where the clipped equilibrium reaches a face at omega = 45 deg",
-         ("80-upper-number", "81-oblique-upper"), ONE, lambda c, p: _cube_touch_equilibrium(True, pi / 4, p))
-computed("cube-oblique-lower", "lower density where the clipped equilibrium reaches a face at omega = 45 deg",
-         ("80-lower-number", "81-oblique-lower"), ONE, lambda c, p: _cube_touch_equilibrium(False, pi / 4, p))
-computed("cube-edge-thresholds", "densities nearest 1/2 where the clipped equilibrium reaches a face at omega = 0",
-         ("edge-axis-range",), ONE,
-         lambda c, p: (_cube_touch_equilibrium(True, sp.Integer(0), p), _cube_touch_equilibrium(False, sp.Integer(0), p)))
+s_up, s_lo = sp.symbols("s_+w s_-w")
+UPRIGHT_S = tuple((sym, Root("metacentric height", s, tuple(0.5 + sg * 0.01 * k for k in range(1, 50))))
+                  for sym, sg in ((s_up, 1), (s_lo, -1)))          # scanned from 1/2 outwards
+floating("cube-upright-thresholds", "densities where the clipped upright cube's metacentric height vanishes",
+         ("79",), ONE, (s_up, s_lo), body=UNIT_CUBE, up=UPRIGHT, roots=UPRIGHT_S)
+floating("cube-upright-upper", "upper density where the clipped upright cube's metacentric height vanishes",
+         ("79-upper-number", "81-upper"), ONE, s_up, body=UNIT_CUBE, up=UPRIGHT, roots=UPRIGHT_S[:1])
+floating("cube-upright-lower", "lower density where the clipped upright cube's metacentric height vanishes",
+         ("79-lower-number", "81-lower"), ONE, s_lo, body=UNIT_CUBE, up=UPRIGHT, roots=UPRIGHT_S[1:])
+
+
+def touch_equilibrium(sym, upper, w):
+    """The density (scanned from 0.55, or 0.45, outwards) at which the clipped cube's equilibrium tilt at the axis
+    angle w is its touching tilt: the root in s of GZ at the root in phi of the face clearance (nested)."""
+    grid = tuple(0.5 + (1 if upper else -1) * (0.05 + 0.02 * k) for k in range(13))
+    return sym, Root(GZW, s, grid, at={om: w}, roots=((phi, TOUCH),))
+
+
+OBLIQUE_S = (touch_equilibrium(s_up, True, pi / 4), touch_equilibrium(s_lo, False, pi / 4))
+floating("cube-oblique-thresholds", "densities where the clipped cube's equilibrium reaches a face at omega = 45 deg",
+         ("80",), ONE, (s_up, s_lo), body=UNIT_CUBE, roots=OBLIQUE_S)
+floating("cube-oblique-roots", "the same thresholds, less 4/7 and from 3/7", ("80-roots",), ONE,
+         (s_up - sp.Rational(4, 7), sp.Rational(3, 7) - s_lo), body=UNIT_CUBE, roots=OBLIQUE_S)
+floating("cube-oblique-upper", "upper density where the clipped equilibrium reaches a face at omega = 45 deg",
+         ("80-upper-number", "81-oblique-upper"), ONE, s_up, body=UNIT_CUBE, roots=OBLIQUE_S[:1])
+floating("cube-oblique-lower", "lower density where the clipped equilibrium reaches a face at omega = 45 deg",
+         ("80-lower-number", "81-oblique-lower"), ONE, s_lo, body=UNIT_CUBE, roots=OBLIQUE_S[1:])
+floating("cube-edge-thresholds", "densities nearest 1/2 where the clipped equilibrium reaches a face at omega = 0",
+         ("edge-axis-range",), ONE, (s_up, s_lo), body=UNIT_CUBE,
+         roots=(touch_equilibrium(s_up, True, 0), touch_equilibrium(s_lo, False, 0)))
 CUBE_OBL = (C("b = 1, s = 0.78", b=1, s="0.78"), C("b = 2, s = 0.22", b=2, s="0.22"))
-computed("cube-oblique-tilt", "tan^2 of the clipped cube's equilibrium tilt (omega = 0.4)", ("81a",), CUBE_OBL,
-         lambda c, p: _M(p).tan(_phi1(c.params[b], c.params[b], c.params[s], sp.Rational("0.4"), p)) ** 2)
-computed("cube-78a", "1/2 (tan^2 phi_t(45 deg) - tan^2 phi_1) for the clipped cube", ("cube-78a",), CUBE_OBL,
-         lambda c, p: (_M(p).tan(_phit(c.params[b], c.params[b], c.params[s], pi / 4, p)) ** 2
-                       - _M(p).tan(_phi1(c.params[b], c.params[b], c.params[s], sp.Integer(0), p)) ** 2) / 2)
-computed("cube-78a-7", "1/14 (tan^2 phi_t(45 deg) - tan^2 phi_1) for the clipped cube", ("cube-78a-square",), CUBE_OBL,
-         lambda c, p: (_M(p).tan(_phit(c.params[b], c.params[b], c.params[s], pi / 4, p)) ** 2
-                       - _M(p).tan(_phi1(c.params[b], c.params[b], c.params[s], sp.Integer(0), p)) ** 2) / 14)
-computed("cube-limit-omega", "sin^2(45 deg + omega*) for the clipped cube", ("82",),
-         (C("b = 1, s = 0.76", b=1, s="0.76"), C("b = 2, s = 0.24", b=2, s="0.24")),
-         lambda c, p: _M(p).sin(_M(p).pi / 4 + _omega_star(c.params[b], c.params[b], c.params[s], p)) ** 2)
-
-
-def _half_delta(c, p):
-    M, body = _M(p), _square(c.params[a], c.params[a], p)
-    q4, w, h = M.pi / 4, _num(c.params[om], p), _num(half, p)
-    return (floating_state(body, _frame(M, q4, w)[0], h).potential
-            - floating_state(body, _frame(M, q4, 0 * w)[0], h).potential)
-
-
-computed("half-cube-turned", "potential change of the clipped cube (s = 1/2, phi = 45 deg) turned by omega about "
+floating("cube-oblique-tilt", "tan^2 of the clipped cube's equilibrium tilt (omega = 0.4)", ("81a",), CUBE_OBL,
+         sp.tan(phi) ** 2, body=CUBE_BODY, roots=((om, sp.Rational(2, 5)), (phi, EQUILIBRIUM)))
+CUBE_78A = EDGE + ((om, pi / 4), (pht, TOUCH))
+floating("cube-78a", "1/2 (tan^2 phi_t(45 deg) - tan^2 phi_1) for the clipped cube", ("cube-78a",), CUBE_OBL,
+         (sp.tan(pht) ** 2 - sp.tan(ph1) ** 2) / 2, body=CUBE_BODY, roots=CUBE_78A)
+floating("cube-78a-7", "1/14 (tan^2 phi_t(45 deg) - tan^2 phi_1) for the clipped cube", ("cube-78a-square",), CUBE_OBL,
+         (sp.tan(pht) ** 2 - sp.tan(ph1) ** 2) / 14, body=CUBE_BODY, roots=CUBE_78A)
+floating("cube-limit-omega", "sin^2(45 deg + omega*) for the clipped cube", ("82",),
+         (C("b = 1, s = 0.76", b=1, s="0.76"), C("b = 2, s = 0.24", b=2, s="0.24")), sp.sin(pi / 4 + om) ** 2,
+         body=CUBE_BODY, roots=OMEGA_STAR)
+floating("half-cube-turned", "potential change of the clipped cube (s = 1/2, phi = 45 deg) turned by omega about "
          "its main axis", ("half-stable",), (C("a = 1, omega = 0.1", a=1, omega="0.1"),
-                                             C("a = 2, omega = 0.3", a=2, omega="0.3")), _half_delta)
-computed("half-tilt-clipped", "clipped equilibrium tilt of the cube at s = 1/2 (root of GZ)", ("half-tilt",), ONE,
-         lambda c, p: _phi1(sp.Integer(1), sp.Integer(1), half, sp.Integer(0), p))
-computed("half-waterplane", "waterplane area of the clipped cube at s = 1/2, phi = 45 deg",
-         ("half-waterplane",), (C("b = 1", b=1), C("b = 3/2", b="1.5")),
-         lambda c, p: floating_state(_square(c.params[b], c.params[b], p), _frame(_M(p), _M(p).pi / 4, 0)[0],
-                                     _num(half, p)).waterplane_area)
+                                             C("a = 2, omega = 0.3", a=2, omega="0.3")),
+         M_["G above B"] - gm0, body=Body.box(a, a, a), density=half,
+         roots=((phi, pi / 4), (gm0, At("G above B", {om: 0}))))
+floating("half-tilt-clipped", "clipped equilibrium tilt of the cube at s = 1/2 (root of GZ)", ("half-tilt",), ONE,
+         phi, body=UNIT_CUBE, density=half, roots=((om, 0), (phi, EQUILIBRIUM)))
+floating("half-waterplane", "waterplane area of the clipped cube at s = 1/2, phi = 45 deg", ("half-waterplane",),
+         (C("b = 1", b=1), C("b = 3/2", b="1.5")), "waterplane area", body=CUBE_BODY, density=half,
+         roots=((phi, pi / 4), (om, 0)))
 
 
-# ---- the n-gon
-def _polygon(rv, nv, p, turn=0):
-    M = _M(p)
-    R, k = _num(rv, p), int(nv)
-    return [(R * M.cos(2 * M.pi * j / k + turn), R * M.sin(2 * M.pi * j / k + turn)) for j in range(k)]
+# ---- the n-gon: regular prisms (one vertex on +x), upright at s = 1/2 for the moments of the base
+def ngon(label, k, side, **kw):
+    """A case with its own body: the regular k-gon prism of edge *side* and length b (1 when not given)."""
+    return C(label, Body.regular(k, side, b if "b" in kw else 1), **kw)
 
 
-def _plane_moments(poly, p):
-    """Area, centroid and central tensor of a polygon from the clipped upright prism over it."""
-    st = floating_state(right_prism(poly, 1, dps=_bd(p)), (0, 0, 1), _num(half, p))
-    return st.waterplane_area, st.waterplane_centroid, st.tensor, st
+def by_radius(label, k, **kw):
+    return ngon(label, k, 2 * r * sp.sin(pi / k), n=k, **kw)
 
 
-NG = (C("r = 1, n = 3, omega = 0.3", r=1, n=3, omega="0.3"), C("r = 3/2, n = 5, omega = 0.5", r="1.5", n=5, omega="0.5"),
-      C("r = 1, n = 8, omega = 0.7", r=1, n=8, omega="0.7"))   # omega only enters the misread 'omega tg' prints
-computed("polygon-moment", "moment of the regular polygon about an axis through its centre (clipped waterplane)",
-         ("84", "85", "86-nA", "87", "87-cos2", "89", "89a", "86a"), NG,
-         lambda c, p: _plane_moments(_polygon(c.params[r], c.params[n], p), p)[3].I_min)
-computed("polygon-moment-2", "2 T_1 and T_1 of the regular polygon (clipped waterplane)", ("86",), NG,
-         lambda c, p: (lambda i: (2 * i, i))(_plane_moments(_polygon(c.params[r], c.params[n], p), p)[3].I_min))
-computed("polygon-area", "area of the regular polygon (clipped waterplane)", ("area",), NG,
-         lambda c, p: _plane_moments(_polygon(c.params[r], c.params[n], p), p)[0])
-computed("polygon-radius", "squared distance of the vertices from the centre", ("radius",), NG,
-         lambda c, p: max(v[0] ** 2 + v[1] ** 2 for v in _polygon(c.params[r], c.params[n], p)))
-computed("polygon-side", "distance of adjacent vertices", ("side",), NG,
-         lambda c, p: (lambda v: _M(p).sqrt((v[1][0] - v[0][0]) ** 2 + (v[1][1] - v[0][1]) ** 2))(
-             _polygon(c.params[r], c.params[n], p)))
-computed("polygon-apothem", "distance of the centre from the midpoint of a side", ("apothem",), NG,
-         lambda c, p: (lambda v: _M(p).sqrt(((v[1][0] + v[0][0]) / 2) ** 2 + ((v[1][1] + v[0][1]) / 2) ** 2))(
-             _polygon(c.params[r], c.params[n], p)))
-NG34 = {3: (C("r = 1", r=1), C("r = 3/2", r="1.5")), 4: (C("r = 1", r=1), C("r = 2/3", r="2/3"))}
-computed("triangle-moment", "moment of the equilateral triangle (clipped waterplane)", ("triangle-T1",), NG34[3],
-         lambda c, p: _plane_moments(_polygon(c.params[r], 3, p), p)[3].I_min)
-computed("square-moment", "moment of the square (clipped waterplane)", ("square-T1",), NG34[4],
-         lambda c, p: _plane_moments(_polygon(c.params[r], 4, p), p)[3].I_min)
+def by_area(label, k, **kw):
+    """The k-gon of area F: k triangles of apex angle 2 pi/k and sides R, F = k R^2 sin(2 pi/k)/2."""
+    return ngon(label, k, 2 * sp.sin(pi / k) * sp.sqrt(2 * F / (k * sp.sin(2 * pi / k))), n=k, **kw)
 
 
-def _triangle(c, p, turn):
-    M = _M(p)
-    R, k = _num(c.params[r], p), int(c.params[n])
-    O, B_, C_ = (0 * R, 0 * R), (R * M.cos(M.pi / k), -R * M.sin(M.pi / k)), (R * M.cos(M.pi / k), R * M.sin(M.pi / k))
-    rot = lambda q: (q[0] * M.cos(turn) - q[1] * M.sin(turn), q[0] * M.sin(turn) + q[1] * M.cos(turn))  # noqa: E731
-    return [rot(q) for q in (O, B_, C_)]
+NG = (by_radius("r = 1, n = 3, omega = 0.3", 3, r=1, omega="0.3"),
+      by_radius("r = 3/2, n = 5, omega = 0.5", 5, r="1.5", omega="0.5"),
+      by_radius("r = 1, n = 8, omega = 0.7", 8, r=1, omega="0.7"))   # omega only enters the misread 'omega tg' prints
+floating("polygon-moment", "moment of the regular polygon about an axis through its centre (clipped waterplane)",
+         ("84", "85", "86-nA", "87", "87-cos2", "89", "89a", "86a"), NG, "I min", body=None, up=UPRIGHT, density=half)
+floating("polygon-moment-2", "2 T_1 and T_1 of the regular polygon (clipped waterplane)", ("86",), NG,
+         (2 * M_["I min"], M_["I min"]), body=None, up=UPRIGHT, density=half)
+floating("polygon-area", "area of the regular polygon (clipped waterplane)", ("area",), NG, "waterplane area",
+         body=None, up=UPRIGHT, density=half)
+# the largest distance of a vertex from a line through the centre: the freeboard above a water plane normal to
+# that line plus the water plane's height above the centre (any density)
+floating("polygon-radius", "squared distance of the vertices from the centre (reach towards vertex 0)", ("radius",),
+         NG, (M_["freeboard"] + M_["water level"]) ** 2, body=None, up=(1, 0, 0), density=half)
+floating("polygon-apothem", "distance of the centre from the midpoint of a side (reach across the side 0-1)",
+         ("apothem",), NG, M_["freeboard"] + M_["water level"], body=None, up=(sp.cos(pi / n), sp.sin(pi / n), 0),
+         density=half)
+NG34 = {k: (by_radius("r = 1", k, r=1), by_radius(f"r = {v}", k, r=v)) for k, v in ((3, "3/2"), (4, "2/3"))}
+floating("triangle-moment", "moment of the equilateral triangle (clipped waterplane)", ("triangle-T1",), NG34[3],
+         "I min", body=None, up=UPRIGHT, density=half)
+floating("square-moment", "moment of the square (clipped waterplane)", ("square-T1",), NG34[4], "I min", body=None,
+         up=UPRIGHT, density=half)
+floating("polygon-ordinate", "largest distance of a vertex from the axis on the sinking side (reach along xi)",
+         ("88",), (by_radius("r = 1, n = 3, omega = 0.7", 3, r=1, omega="0.7"),
+                   by_radius("r = 3/2, n = 6, omega = 0.3", 6, r="1.5", omega="0.3"),
+                   by_radius("r = 1, n = 4, omega = 0.2", 4, r=1, omega="0.2")),
+         M_["freeboard"] + M_["water level"], body=None, up=(sp.cos(pi / n + om), sp.sin(pi / n + om), 0), density=half)
+floating("triangle-at-area", "moment of the equilateral triangle of area F (clipped waterplane)",
+         ("triangle-largest",), (by_area("F = 1", 3, F=1), by_area("F = 5/2", 3, F="2.5")), "I min", body=None,
+         up=UPRIGHT, density=half)
+floating("ngon-tilt", "tan^2 of the clipped equilibrium tilt of regular n-gon prisms of area F", ("54-again",),
+         (by_area("F = 1, n = 6, b = 9/10, s = 7/10", 6, F=1, b="0.9", s="0.7"),
+          by_area("F = 1, n = 3, b = 97/100, s = 7/10", 3, F=1, b="0.97", s="0.7")), sp.tan(phi) ** 2, body=None,
+         roots=((om, 0), (phi, EQUILIBRIUM)))
 
 
-def _about_axes(poly, p):
-    """Second moments about the x and y axes through the origin (central tensor plus Steiner)."""
-    A, cen, J, _ = _plane_moments(poly, p)
-    return J[1][1] + A * cen[1] ** 2, J[0][0] + A * cen[0] ** 2
+# the side and the triangles BOC of the n-gon (O the centre, B and C the vertices at -+pi/n from the x axis), turned
+# by -psi: the upright prism over the triangle; its moments about the axes through O are the waterplane's central
+# ones moved to O (Steiner), its side BC twice the reach of C above the x axis (the triangle is symmetric about it)
+def triangle_BOC(label, k, turned, **kw):
+    turn = -psi if turned else 0
+    corners = [(0, 0)] + [(r * sp.cos(q + turn), r * sp.sin(q + turn)) for q in (-pi / k, pi / k)]
+    return C(label, Body.prism(corners, 1), n=k, **kw)
 
 
-TRI = (C("r = 1, n = 3, psi = 0.4", r=1, n=3, psi="0.4"), C("r = 3/2, n = 7, psi = 1.1", r="1.5", n=7, psi="1.1"))
-computed("triangle-axis", "moment of the triangle BOC turned by -psi about the x axis through O (clipped)",
-         ("triangle-axis", "83"), TRI, lambda c, p: _about_axes(_triangle(c, p, -_num(c.params[psi], p)), p)[0])
-computed("triangle-axes", "moments of the triangle BOC about OQ and the perpendicular through O (clipped)",
-         ("triangle-moments",), TRI, lambda c, p: _about_axes(_triangle(c, p, 0), p))
-
-
-def _um_n(c, p):
-    M = _M(p)
-    k, w = int(c.params[n]), _num(c.params[om], p)
-    ang = M.pi / k + w      # normal of the axis that runs at omega to the side from vertex 0 to vertex 1
-    return max(v[0] * M.cos(ang) + v[1] * M.sin(ang) for v in _polygon(c.params[r], k, p))
-
-
-computed("polygon-ordinate", "largest distance of a vertex from the axis on the sinking side", ("88",),
-         (C("r = 1, n = 3, omega = 0.7", r=1, n=3, omega="0.7"), C("r = 3/2, n = 6, omega = 0.3", r="1.5", n=6, omega="0.3"),
-          C("r = 1, n = 4, omega = 0.2", r=1, n=4, omega="0.2")), _um_n)
-
-
-def _scaled_moment(c, p, k):
-    A0, _, _, st = _plane_moments(_polygon(1, k, p), p)
-    return st.I_min * (_num(c.params[F], p) / A0) ** 2
-
-
-computed("triangle-at-area", "moment of the equilateral triangle of area F (clipped, scaled)", ("triangle-largest",),
-         (C("F = 1", F=1), C("F = 5/2", F="2.5")), lambda c, p: _scaled_moment(c, p, 3))
-
-
-def _ngon_tilt(c, p):
-    """tan^2 of the clipped equilibrium tilt of the regular n-gon prism of area F, height b."""
-    k = int(c.params[n])
-
-    def make(q):
-        M = _M(q)
-        A0q = _plane_moments(_polygon(1, k, q), q)[0]
-        Rq = M.sqrt(_num(c.params[F], q) / A0q)
-        body = right_prism([(Rq * x_, Rq * y_) for x_, y_ in _polygon(1, k, q)], _num(c.params[b], q), dps=_bd(q))
-        sv = _num(c.params[s], q)
-        return lambda ph: _gz(body, ph, 0 * ph, sv, M)
-    return _M(p).tan(_root(make, PHI_GRID, p)) ** 2
-
-
-computed("ngon-tilt", "tan^2 of the clipped equilibrium tilt of regular n-gon prisms of area F", ("54-again",),
-         (C("F = 1, n = 6, b = 9/10, s = 7/10", F=1, n=6, b="0.9", s="0.7"),
-          C("F = 1, n = 3, b = 97/100, s = 7/10", F=1, n=3, b="0.97", s="0.7")), _ngon_tilt)
+ABOUT_O = (M_["waterplane tensor, yy"] + M_["waterplane area"] * M_["waterplane centroid, y"] ** 2,
+           M_["waterplane tensor, xx"] + M_["waterplane area"] * M_["waterplane centroid, x"] ** 2)
+floating("polygon-side", "distance of adjacent vertices (twice the reach of C across OQ)", ("side",),
+         tuple(triangle_BOC(c.label, int(c.params[n]), False, r=c.params[r], omega=c.params[om]) for c in NG),
+         2 * (M_["freeboard"] + M_["water level"]), body=None, up=(0, 1, 0), density=half)
+TRI = (("r = 1, n = 3, psi = 0.4", 3, "1", "0.4"), ("r = 3/2, n = 7, psi = 1.1", 7, "1.5", "1.1"))
+floating("triangle-axis", "moment of the triangle BOC turned by -psi about the x axis through O (clipped waterplane)",
+         ("triangle-axis", "83"), tuple(triangle_BOC(lb, k, True, r=rv, psi=pv) for lb, k, rv, pv in TRI),
+         ABOUT_O[0], body=None, up=UPRIGHT, density=half)
+floating("triangle-axes", "moments of the triangle BOC about OQ and the perpendicular through O (clipped waterplane)",
+         ("triangle-moments",), tuple(triangle_BOC(lb, k, False, r=rv, psi=pv) for lb, k, rv, pv in TRI),
+         ABOUT_O, body=None, up=UPRIGHT, density=half)
 
 
 # ==== predictions: where the printed formulas put the square prism, the cube and the n-gon prism ======

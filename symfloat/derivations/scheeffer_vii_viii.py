@@ -33,10 +33,10 @@ far on both sides of the axis (claim erratum, as in IV).  Errata: the stray '1/2
 The references '102 a', '102 b' in (116), (117) mean (103a), (103b); '102 b' is not booked, since (102) with
 (100) gives (116) as well.
 
-Witnesses (``symfloat.geometry.floating``): rectangles, triangles, squares, an equilateral triangle and a
-pentagon are clipped at the tilt with the draught found from the volume; the dry part is the clipped body
-above the water plane, its volume and centroid measured directly; x_0 is read off where the clipped water
-plane meets the upper base, the waterplane moments from the clipped waterplane polygon.  The case data (F,
+Witnesses (``symfloat.engine.floating_witness``): rectangles, triangles, squares, an equilateral triangle and a
+pentagon are clipped at the tilt with the draught found from the volume; the dry part is the body less the
+clipped submerged part (V_3 = V - V_1, V_3 (S_3 - S) = -V_1 (B - G)); x_0 is read off where the clipped water
+plane meets the upper base, the waterplane moments from the clipped waterplane's tensor and centroid.  The case data (F,
 x_s, T, ... of the plane pieces) come from exact 2-D polygon moments.  Equilibria: a pentagon (unsymmetric,
 k != 0) and two boxes (second and third region) are designed from the printed conditions in exact arithmetic
 and then checked on the clipped body (both horizontal offsets of B from G vanish); the box tilts are also
@@ -46,7 +46,6 @@ Predictions: boxes and cubes turned about an axis parallel to an edge (the dry p
 second-region positions from (103a), (103b) with their stability from (117), the third-region ones from
 (121b), (122) (no stability: the text gives none); s < 1/2 by the exchange of dry and wet parts.
 """
-import contextlib
 import functools
 import itertools
 import math
@@ -55,9 +54,10 @@ import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
+from symfloat.engine.floating_witness import MEASURED, Body, FloatingRootWitness, FloatingWitness, Root, potential_slope
 from symfloat.engine.roots import illinois
-from symfloat.engine.witness import Case, Computed
-from symfloat.geometry.floating import floating_state, right_prism, submerged
+from symfloat.engine.witness import Case
+from symfloat.geometry.floating import polygon_moments
 from symfloat.model.prediction import Prediction
 
 
@@ -640,17 +640,12 @@ d.quote("122", "(122)", r"$$\left. \begin{aligned} (T - \tau) \operatorname{tg} 
 
 
 # ==== witnesses ======================================================================================================
-def _green(poly):
-    """Exact area moments of a polygon (Green's theorem): A, int x, int y, int x^2, int y^2, int x y."""
-    out = [sp.Integer(0)] * 6
-    poly = [(sp.sympify(px), sp.sympify(py)) for px, py in poly]
-    for i in range(len(poly)):
-        (x1, y1), (x2, y2) = poly[i], poly[(i + 1) % len(poly)]
-        cr = x1 * y2 - x2 * y1
-        terms = (cr / 2, (x1 + x2) * cr / 6, (y1 + y2) * cr / 6, (x1 ** 2 + x1 * x2 + x2 ** 2) * cr / 12,
-                 (y1 ** 2 + y1 * y2 + y2 ** 2) * cr / 12, (x1 * y2 + 2 * x1 * y1 + 2 * x2 * y2 + x2 * y1) * cr / 24)
-        out = [o + t_ for o, t_ in zip(out, terms)]
-    return [sp.expand(o) for o in out]
+def _moments(poly):
+    """Exact area moments of a counter-clockwise polygon: A, int x, int y, int x^2, int y^2, int x y (the library's
+    polygon moments, moved from the centroid to the origin)."""
+    A, (cx, cy), J = polygon_moments([(sp.sympify(px), sp.sympify(py)) for px, py in poly])
+    return [v if v.is_Rational else sp.expand(sp.radsimp(v))   # radicals (the equilateral triangle) in closed form
+            for v in (A, A * cx, A * cy, J[0][0] + A * cx ** 2, J[1][1] + A * cy ** 2, J[0][1] + A * cx * cy)]
 
 
 def _half(poly, c, keep_above=True):
@@ -668,7 +663,7 @@ def _half(poly, c, keep_above=True):
 
 
 def _centred(poly):
-    A, Sx, Sy, *_ = _green(poly)
+    A, Sx, Sy, *_ = _moments(poly)
     return [(px - Sx / A, py - Sy / A) for px, py in poly]
 
 
@@ -724,16 +719,16 @@ def _params(name):
     poly, (nx, ny), x0v, t, bb, region = CONFIGS[name]
     poly = [(sp.sympify(px), sp.sympify(py)) for px, py in poly]
     base = [(px * nx + py * ny + x0v, -px * ny + py * nx) for px, py in poly]      # (X, Y) from N
-    A, _, _, _, _, _ = _green(poly)
-    PO_ = _green([(X - x0v, Y) for X, Y in base])[5]
-    Fm = _green(_half(base, 0))
-    Wm = _green(_half(base, 0, keep_above=False))
+    A, _, _, _, _, _ = _moments(poly)
+    PO_ = _moments([(X - x0v, Y) for X, Y in base])[5]
+    Fm = _moments(_half(base, 0))
+    Wm = _moments(_half(base, 0, keep_above=False))
     out = {F1: A, b: bb, F: Fm[0], xs: Fm[1] / Fm[0], ys: Fm[2] / Fm[0], T: Fm[3], Tp: Fm[4], PO: PO_, Pw: Wm[5],
            x0: x0v}
     V3v = t * Fm[1]
     if region == 3:
         dd = bb / t
-        fm = _green([(X - dd, Y) for X, Y in _half(base, dd)])
+        fm = _moments([(X - dd, Y) for X, Y in _half(base, dd)])
         out.update({f: fm[0], xs1: fm[1] / fm[0], tau: fm[3], Pf: fm[5]})
         V3v = t * (Fm[1] - fm[1])
     out[s] = 1 - V3v / (A * bb)
@@ -748,157 +743,63 @@ def _generic(name):
     return p
 
 
-def _num(v, dps):
-    return float(sp.N(v, 20)) if dps <= 15 else mpmath.mpf(sp.N(v, dps + 15))
+# the configurations measured: the prism over the case's base, tilted by tan phi = t_w towards NE = (n_x, n_y)
+NX, NY, TT, AV, A1 = sp.symbols("n_x^w n_y^w t_phi^w alpha^w alpha_1^w", real=True)
+M_ = MEASURED
+CPH, SPH = 1 / sp.sqrt(1 + TT ** 2), TT / sp.sqrt(1 + TT ** 2)
+NV, EV = sp.Matrix([NX, NY, 0]), sp.Matrix([-NY, NX, 0])         # NE, and the axis GH (body frame)
+HV = sp.Matrix([CPH * NX, CPH * NY, -SPH])                       # the horizontal across GH, towards the dry side
+UP = (TT * NX, TT * NY, sp.Integer(1))
+V1M = M_["immersed volume"]
+BG = sp.Matrix([M_[f"B - G, {axis}"] for axis in "xyz"])
+V3M = F1 * b - V1M                                               # the dry volume
+DRY = -V1M * BG                      # V_3 (S_3 - S): V S = V_1 S_2 + V_3 S_3 with S = G the origin
+X0M = -(M_["water level"] * sp.sqrt(1 + TT ** 2) - b / 2) / TT    # O from N along NE: the water line in the upper base
+TW = sp.Matrix(3, 3, lambda i, j: M_[f"waterplane tensor, {'xyz'[min(i, j)]}{'xyz'[max(i, j)]}"])
+CW = sp.Matrix([M_[f"waterplane centroid, {axis}"] for axis in "xyz"]) - sp.Matrix([-X0M * NX, -X0M * NY, b / 2])
+AW = M_["waterplane area"]
+turned = lambda a_: sp.cos(a_) * HV - sp.sin(a_) * EV  # noqa: E731  (the direction at a_ to the axis through S^1)
+SLOPE_T = 2 * (-sp.sin(AV) * HV - sp.cos(AV) * EV).dot(TW * turned(AV))   # dT_alpha/dalpha
 
 
-def _M(dps):
-    return math if dps <= 15 else mpmath
+def quad(v, w_):
+    return v.dot(TW * w_)
 
 
-@functools.lru_cache(maxsize=None)
-def _state(name, dps, flip=False):
-    """The clipped configuration at float64 (dps 15) or dps digits: floating state, dry part, frame vectors.
-    flip: the state of density 1 - s with -u up."""
-    poly, (nx, ny), x0v, t, bb, region = CONFIGS[name]
-    bd = None if dps <= 15 else dps
-    M = _M(dps)
-    body = right_prism([(_num(px, dps), _num(py, dps)) for px, py in poly], _num(bb, dps), dps=bd)
-    tt = _num(t, dps)
-    sv = _num(_params(name)[s], dps)
-    cph, sph = 1 / M.sqrt(1 + tt ** 2), tt / M.sqrt(1 + tt ** 2)
-    n3, e3v = (_num(nx, dps), _num(ny, dps), 0 * tt), (-_num(ny, dps), _num(nx, dps), 0 * tt)
-    up = (sph * n3[0], sph * n3[1], cph)
-    h = (cph * n3[0], cph * n3[1], -sph)
-    if flip:
-        st = floating_state(body, tuple(-q for q in up), 1 - sv, tol=None if bd else 1e-16 * (1 + float(bb)))
-        return st
-    st = floating_state(body, up, sv, tol=None if bd else 1e-16 * (1 + float(bb)))
-    dry = submerged(body, tuple(-q for q in up), -st.t)
-    return dict(st=st, dry=dry, up=up, h=h, n=n3, e=e3v, c=cph, sn=sph, t=tt, b=_num(bb, dps), M=M,
-                lamN=(st.t - cph * _num(bb, dps) / 2) / sph, lamN1=(st.t + cph * _num(bb, dps) / 2) / sph)
+# quantity -> what it is on the clipped configuration
+MEASURE = {
+    "V3": V3M, "My": DRY.dot(EV), "Pxy": DRY.dot(EV) / TT, "x0": X0M,
+    "balance": (V1M * BG.dot(HV), V1M * BG.dot(EV)),
+    "M3": DRY.dot(HV), "M3sin": DRY.dot(HV) / SPH,
+    "ZX": (V3M * b / 2 - DRY[2], DRY.dot(NV) + V3M * X0M),
+    "V3zeta": DRY[2], "V1e2": V1M * M_["G above B"], "offsets": (DRY.dot(NV) / V3M, DRY[2] / V3M),
+    "flip-product": V1M * BG.dot(EV) / TT, "flip": V1M * M_["G above B"],      # the turned body (see _w)
+    # the water lines in the upper and the lower base lie b cot phi apart along NE
+    "x0x01": (-(X0M - b / TT) + X0M) * TT,
+    "122": (DRY.dot(HV) / SPH * TT, (-(X0M - b / TT) + X0M) * TT - b, V3M - F1 * b * (1 - s)),
+    "Tmu": quad(turned(mu), turned(mu)), "T2": (quad(HV, HV), quad(EV, EV)), "Ks": quad(HV, EV),
+    "dT": (SLOPE_T.subs(AV, mu), sp.tan(2 * A1)), "cos2": sp.cos(2 * A1) ** 2,
+    "wp-int": (AW * CW.dot(EV), AW * CW.dot(HV)), "mnF2": (CW.dot(HV), -CW.dot(EV), AW),
+    "Imin": "I min", "extremes": ((M_["I min"] - TW.trace() / 2) ** 2, (M_["I max"] - TW.trace() / 2) ** 2),
+    "D": V1M * M_["metacentric height"], "cD": CPH * V1M * M_["metacentric height"],
+    "2cD": 2 * CPH * V1M * M_["metacentric height"], "Iminc": CPH * M_["I min"],
+    "V3e3c": CPH * V1M * M_["G above B"],
+}
+PRINCIPAL = ((A1, Root(SLOPE_T.subs(AV, AV), AV, tuple(-0.8 + 0.02 * k for k in range(81)))),)   # a root of dT/dalpha
 
 
-def _dot(a_, b_):
-    return sum(a_[k] * b_[k] for k in range(3))
-
-
-def _plane(basis, v):
-    return (_dot(basis[0], v), _dot(basis[1], v))
-
-
-def _quad(J, a_, c_):
-    return sum(a_[i] * J[i][j] * c_[j] for i in range(2) for j in range(2))
-
-
-def _measure(name, what, dps, mu_=None):
-    """One quantity of the text, measured on the clipped configuration, in *dps*-digit arithmetic
-    whatever the caller's mpmath precision."""
-    with mpmath.workdps(dps) if dps > 15 else contextlib.nullcontext():
-        return _measure_at(name, what, dps, mu_)
-
-
-def _measure_at(name, what, dps, mu_=None):
-    q = _state(name, dps)
-    st, dry, up, h, nv, ev, c, sn = (q[k] for k in ("st", "dry", "up", "h", "n", "e", "c", "sn"))
-    G = st.G
-    rel = [dry.centroid[k] - G[k] for k in range(3)]
-    V3m = dry.volume
-    x0m = -q["lamN"]                                   # O from N along NE
-    xi, eta, zeta = _dot(rel, nv), _dot(rel, ev), rel[2]
-    if what == "V3":
-        return V3m
-    if what == "My":
-        return V3m * eta
-    if what == "Pxy":
-        return V3m * eta / q["t"]
-    if what == "x0":
-        return x0m
-    if what == "balance":                              # V_1 h.(S_2 - S), V_1 e.(S_2 - S)
-        relB = [st.B[k] - G[k] for k in range(3)]
-        return st.volume * _dot(relB, h), st.volume * _dot(relB, ev)
-    if what == "M3":
-        return V3m * _dot(rel, h)
-    if what == "M3sin":
-        return V3m * _dot(rel, h) / sn
-    if what == "M3tan":
-        return V3m * _dot(rel, h) / sn * q["t"]
-    if what == "ZX":                                   # V_3 z_3, V_3 x_3
-        return V3m * (q["b"] / 2 - zeta), V3m * (xi + x0m)
-    if what == "V3zeta":
-        return V3m * zeta
-    if what == "V1e2":
-        return st.volume * st.potential
-    if what == "offsets":
-        return xi, zeta
-    if what == "flip-product":
-        fl = _state(name, dps, flip=True)
-        return fl.volume * _dot([fl.B[k] - fl.G[k] for k in range(3)], ev) / q["t"]
-    if what == "flip":
-        fl = _state(name, dps, flip=True)
-        return fl.volume * fl.potential
-    if what == "x0x01":
-        return (q["lamN1"] - q["lamN"]) * q["t"]
-    if what == "122":
-        return (V3m * _dot(rel, h) / sn * q["t"], (q["lamN1"] - q["lamN"]) * q["t"] - q["b"],
-                V3m - _num(_params(name)[F1] * _params(name)[b] * (1 - _params(name)[s]), dps))
-    J, basis = st.tensor, st.basis
-    hc, ec = _plane(basis, h), _plane(basis, ev)
-    Nw = (q["lamN"] * nv[0], q["lamN"] * nv[1], q["b"] / 2)        # the point N of the upper base
-    cw = [st.waterplane_centroid[k] - Nw[k] for k in range(3)]
-    if what == "Tmu":
-        m = _M(dps)
-        mv = _num(mu_, dps)
-        v = tuple(m.cos(mv) * hc[k] - m.sin(mv) * ec[k] for k in range(2))
-        return _quad(J, v, v)
-    if what in ("dT", "cos2"):                         # dT_mu/dmu of the clipped tensor, its root by the secant
-        m = _M(dps)
-        v = lambda a: tuple(m.cos(a) * hc[k] - m.sin(a) * ec[k] for k in range(2))  # noqa: E731
-        dv = lambda a: tuple(-m.sin(a) * hc[k] - m.cos(a) * ec[k] for k in range(2))  # noqa: E731
-        g = lambda a: 2 * _quad(J, dv(a), v(a))  # noqa: E731
-        a0, a1 = _num(R(1, 10), dps), _num(R(2, 10), dps)
-        for _ in range(100):
-            g0, g1 = g(a0), g(a1)
-            if g1 == g0 or abs(a1 - a0) < (1e-16 if dps <= 15 else mpmath.mpf(10) ** (-dps - 5)):
-                break
-            a0, a1 = a1, a1 - g1 * (a1 - a0) / (g1 - g0)
-        if what == "cos2":
-            return m.cos(2 * a1) ** 2
-        return g(_num(mu_, dps)), m.tan(2 * a1)
-    if what == "T2":
-        return _quad(J, hc, hc), _quad(J, ec, ec)
-    if what == "Ks":
-        return _quad(J, hc, ec)
-    if what == "wp-int":                               # int_1 y df, int_1 x df over the waterplane from N
-        return st.waterplane_area * _dot(cw, ev), st.waterplane_area * _dot(cw, h)
-    if what == "mnF2":
-        return _dot(cw, h), -_dot(cw, ev), st.waterplane_area
-    if what == "Imin":
-        return st.I_min
-    if what == "extremes":
-        mean = (J[0][0] + J[1][1]) / 2
-        return (st.I_min - mean) ** 2, (st.I_max - mean) ** 2
-    if what == "D":
-        return st.volume * st.metacentric_height
-    if what == "cD":
-        return c * st.volume * st.metacentric_height
-    if what == "2cD":
-        return 2 * c * st.volume * st.metacentric_height
-    if what == "Iminc":
-        return st.I_min * c
-    if what == "V3e3c":
-        return V3m * _dot(rel, up) * c
-    raise ValueError(what)
+def _case(nm, extra=None, generic=False):
+    poly, (nx, ny), _, t, bb, _ = CONFIGS[nm]
+    p = _generic(nm) if generic else dict(_params(nm))
+    return Case({**p, **(extra or {}), NX: nx, NY: ny, TT: t}, {"body": Body.prism(poly, bb)}, nm)
 
 
 def _w(wname, description, targets, names, what, extra=None, generic=False):
-    def cases():
-        for nm in names:
-            p = _generic(nm) if generic else dict(_params(nm))
-            p.update(extra or {})
-            yield Case(p, (nm, (extra or {}).get(mu)), nm)
-    d.witness(Computed(wname, description, tuple(targets), cases,
-                       compute=lambda case, dps, what=what: _measure(case.data[0], what, dps, case.data[1])))
+    flip = what.startswith("flip")       # density 1 - s with -u up: dry and wet parts exchanged
+    d.witness(FloatingRootWitness(wname, description, tuple(targets),
+                                  lambda: tuple(_case(nm, extra, generic) for nm in names), body=None,
+                                  up=tuple(-u for u in UP) if flip else UP, density=1 - s if flip else s,
+                                  quantity=MEASURE[what], roots=PRINCIPAL if what in ("dT", "cos2") else ()))
 
 
 G2 = ("rect", "tri", "square", "pent-eq", "box-eq")
@@ -964,134 +865,87 @@ _w("122", "tan phi M_3/sin phi, (x_0 + x_0^1) tan phi - b and V_3 - F_1 b (1 - s
 
 
 # ---- the stability remark on clipped boxes, the tilt (103a) by root finding, the moments of F (113)
-def _box_potential(A, C, bb, sv, theta, dps):
-    """Height of G above B of the clipped box A x C x b tilted by theta about an axis parallel to the side C."""
-    M, bd = _M(dps), (None if dps <= 15 else dps)
-    body = right_prism([(-A / 2, -C / 2), (A / 2, -C / 2), (A / 2, C / 2), (-A / 2, C / 2)], bb, dps=bd)
-    st = floating_state(body, (M.sin(theta), 0 * theta, M.cos(theta)), sv, tol=None if bd else 1e-16 * (1 + bb))
-    return st.potential
-
-
-def _box_slope(case, dps):
-    """V_1 dE/dtheta of the clipped box: central differences, Richardson-extrapolated (order 4 in float64 with
-    h = 1e-3; order 6 with h = 1e-8 on a 70-digit body for the 50-digit method)."""
-    hi = 15 if dps <= 15 else 70
-    with mpmath.workdps(hi if dps > 15 else 15):
-        A, C, bb, sv, t0 = (_num(case.params[k], hi) for k in (A_, C_, b, s, th))
-        E = lambda q: _box_potential(A, C, bb, sv, q, hi)  # noqa: E731
-        D = lambda h: (E(t0 + h) - E(t0 - h)) / (2 * h)  # noqa: E731
-        if dps <= 15:
-            h = 1e-3
-            slope = (4 * D(h / 2) - D(h)) / 3
-        else:
-            h = mpmath.mpf("1e-8")
-            d1, d2, d4 = D(h), D(h / 2), D(h / 4)
-            r1, r2 = (4 * d2 - d1) / 3, (4 * d4 - d2) / 3
-            slope = (16 * r2 - r1) / 15
-        return sv * A * C * bb * slope
-
-
 BOXES = (Case({A_: 1, C_: 1, b: 1, s: R(3, 4), th: R(3, 5)}, label="cube, s = 3/4, theta = 0.6"),
          Case({A_: 1, C_: 1, b: 1, s: R(3, 4), th: R(9, 10)}, label="cube, s = 3/4, theta = 0.9"),
          Case({A_: R(3, 2), C_: R(1, 2), b: 1, s: R(4, 5), th: R(1, 2)}, label="box 3/2 x 1/2 x 1, s = 4/5"))
-d.witness(Computed("box-slope", "V_1 dE/dtheta of clipped boxes (difference quotients of the clipped potential)",
-                   ("stability-direction",), BOXES, compute=_box_slope))
+BOX_UP = (sp.sin(th), 0, sp.cos(th))
+d.witness(FloatingRootWitness("box-slope", "V_1 dE/dtheta of clipped boxes (the slope of the clipped potential)",
+                              ("stability-direction",), BOXES, body=Body.box(A_, C_, b), up=BOX_UP, density=s,
+                              quantity=s * A_ * C_ * b * potential_slope(BOX_UP, th)))
+# the tilt tan phi = q t_w at which the clipped water line passes through N at the case's x_0 (q within 2 % of 1)
+QW = sp.Symbol("q^w", positive=True)
+d.witness(FloatingRootWitness("tilt-root", "tan of the tilt at which the clipped water line passes through N",
+                              ("103a",), lambda: tuple(_case(nm) for nm in ("rect", "tri")), body=None,
+                              up=tuple(u.subs(TT, QW * TT) for u in UP), density=s, quantity=QW * TT,
+                              roots=((QW, Root(X0M.subs(TT, QW * TT) - x0, QW,
+                                               tuple(0.98 + 0.001 * k for k in range(41)))),)))
 
 
-@functools.lru_cache(maxsize=None)
-def _tilt_root(name, dps):
-    """tan phi at which the clipped water plane meets EF in the upper base at the given x_0 (secant method on the
-    measured x_0, from tan phi +- 1e-3 of the configuration)."""
-    t = CONFIGS[name][3]
-    target = _num(_params(name)[x0], dps)
-    f = lambda q: _x0_at(name, q, dps) - target  # noqa: E731
-    t0, w = (_num(t, dps), 1e-2) if dps <= 15 else (mpmath.mpf(_tilt_root(name, 15)), mpmath.mpf("1e-9"))
-    a_, c_ = t0 * (1 - w), t0 * (1 + w)
-    fa, fc = f(a_), f(c_)
-    for _ in range(60):
-        if fc == fa:
-            break
-        a_, fa, c_ = c_, fc, c_ - fc * (c_ - a_) / (fc - fa)
-        fc = f(c_)
-        if abs(c_ - a_) < (1e-15 if dps <= 15 else mpmath.mpf(10) ** (-dps - 3)):
-            break
-    return c_
-
-
-def _x0_at(name, q, dps):
-    """x_0 of the clipped water line for the tilt tan phi = q (a number at the working precision)."""
-    poly, (nx, ny), _, _, bb, _ = CONFIGS[name]
-    M, bd = _M(dps), (None if dps <= 15 else dps)
-    body = _bodies(name, dps)
-    cph, sph = 1 / M.sqrt(1 + q ** 2), q / M.sqrt(1 + q ** 2)
-    st = floating_state(body, (sph * _num(nx, dps), sph * _num(ny, dps), cph), _num(_params(name)[s], dps),
-                        tol=None if bd else 1e-16 * (1 + float(bb)))
-    return -(st.t - cph * _num(bb, dps) / 2) / sph
-
-
-@functools.lru_cache(maxsize=None)
-def _bodies(name, dps):
-    poly, _, _, _, bb, _ = CONFIGS[name]
-    return right_prism([(_num(px, dps), _num(py, dps)) for px, py in poly], _num(bb, dps),
-                       dps=None if dps <= 15 else dps)
-
-
-d.witness(Computed("tilt-root", "tan of the tilt at which the clipped water line passes through N (secant method)",
-                   ("103a",), tuple(Case(_params(nm), nm, nm) for nm in ("rect", "tri")),
-                   compute=lambda case, dps: _tilt_root(case.data, dps)))
-
-
-def _dry_face_moments(name, dps):
-    """Central moments of the dry part F of the upper base from the clipped upright prism over it."""
-    poly, (nx, ny), x0v, _, _, _ = CONFIGS[name]
+def _dry_face(nm):
+    """The dry part F of the upper base (beyond GH, in the frame of N) as the base of a prism of its own."""
+    poly, (nx, ny), x0v, _, _, _ = CONFIGS[nm]
     base = [(px * nx + py * ny + x0v, -px * ny + py * nx) for px, py in poly]
-    Fp = _half([(sp.sympify(X), sp.sympify(Y)) for X, Y in base], 0)
-    pr = right_prism([(_num(X, dps), _num(Y, dps)) for X, Y in Fp], 1, dps=None if dps <= 15 else dps)
-    J = floating_state(pr, (0, 0, 1), _num(R(1, 2), dps)).tensor
-    return J[0][0], J[1][1]
+    return Case(_params(nm), {"body": Body.prism(_half([(sp.sympify(X), sp.sympify(Y)) for X, Y in base], 0), 1)}, nm)
 
 
-d.witness(Computed("F-moments", "central moments of F (clipped upright prism over the dry part of the base)",
-                   ("113", "117-T"), tuple(Case(_params(nm), nm, nm) for nm in ("rect", "tri", "pent-eq")),
-                   compute=lambda case, dps: _dry_face_moments(case.data, dps)))
+d.witness(FloatingWitness("F-moments", "central moments of F (clipped upright prism over the dry part of the base)",
+                          ("113", "117-T"), lambda: tuple(_dry_face(nm) for nm in ("rect", "tri", "pent-eq")),
+                          body=None, up=(0, 0, 1), density=R(1, 2),
+                          quantity=("waterplane tensor, xx", "waterplane tensor, yy")))
 
 
 # ==== predictions: boxes turned about an axis parallel to an edge ====================================================
-TAN_GRID = [10 ** (-2 + 4 * k / 400) for k in range(401)]
+# the readings the predictions decide with: the tilt (103a), the second condition (103b) and the stability (117)
+# of the second region; the dry volume (121b) and the first condition (122) of the third
+TAN_103A = d.evaluator("103a", (F1, b, s, F, xs), 1)
+EQ_103B = d.evaluator("103b", (T, F1, b, s, F, xs, x0), 1)
+STABLE_117 = d.evaluator("117", (T, Tp, F, xs, ys, F1, b, s), 0)
+DRY_121B = d.evaluator("121b", (F1, b, s), 2)
+EQ_122 = d.evaluator("122", (T, tau, F1, b, s, x0, f, xs1, F, xs), 0, row=0)
+LOG_GRID = [10 ** (-2 + 4 * k / 400) for k in range(401)]       # tan phi in (0.01, 100)
 
 
-def _roots(f, valid):
-    """Sign changes of f on a log grid of tan phi in (0.01, 100) where valid(t) holds, refined (Illinois)."""
-    negative = [f(t) < 0 if valid(t) else None for t in TAN_GRID]
-    return [illinois(f, TAN_GRID[k], TAN_GRID[k + 1], 1e-15) for k in range(len(TAN_GRID) - 1)
-            if None not in negative[k:k + 2] and negative[k] != negative[k + 1]]
-
-
-def _strip2(A, C, H, sv):
-    """Second region, dry strip of width w across the side C: (103a) gives w, (103b) the tilt; (117) the
-    stability (as printed, k = 0 by symmetry)."""
-    w = lambda t: math.sqrt(2 * A * H * (1 - sv) / t)  # noqa: E731
-    f = lambda t: w(t) * (t * t - 1) / 6 - (H * t - A) / 4  # noqa: E731  (103b) over C w^2/2
+def _roots(f, valid, grid):
+    """Sign changes of f on the grid where valid holds, refined (Illinois) in float64 and then at 30 digits within
+    1e-9 of the float root (the readings cancel to about 1e-11 of their terms in float64 near a root)."""
+    negative = [f(g) < 0 if valid(g) else None for g in grid]
     out = []
-    for t in _roots(f, lambda t: w(t) < A and w(t) * t < H):
-        ww = w(t)
-        T_, Fxs, x0_ = C * ww ** 3 / 3, C * ww ** 2 / 2, ww - A / 2
-        T1_, T11_, c2_ = T_ - Fxs * ww / 2, ww * C ** 3 / 12, 1 / (1 + t * t)
-        lhs = T1_ / c2_ + T11_ + 2 * Fxs * x0_ - 2 * T_ - abs(T1_ / c2_ - T11_)     # (117), y_s = 0
-        out.append((t, "stable" if lhs > 0 else "unstable"))
+    for k in range(len(grid) - 1):
+        if None in negative[k:k + 2] or negative[k] == negative[k + 1]:
+            continue
+        x_ = illinois(f, grid[k], grid[k + 1], 1e-15)
+        with mpmath.workdps(30):
+            lo, hi = mpmath.mpf(x_) * (1 - mpmath.mpf("1e-9")), mpmath.mpf(x_) * (1 + mpmath.mpf("1e-9"))
+            if (f(lo) < 0) != (f(hi) < 0):
+                x_ = float(illinois(f, lo, hi, mpmath.mpf(10) ** -25))
+        out.append(x_)
     return out
 
 
+def _strip2(A, C, H, sv):
+    """Second region, base A x C, height H, the dry part F of the upper base a strip of width w across the side C
+    (F = C w, x_s = w/2, T = C w^3/3, T^1 = w C^3/12, y_s = 0, x_0 = w - A/2): the tilt of (103a), the widths where
+    (103b) vanishes, the stability of (117) (k = 0 by symmetry).  Scanned in w where tan phi lies in (0.01, 100)."""
+    tilt = lambda w: TAN_103A(A * C, H, sv, C * w, w / 2)  # noqa: E731
+    f = lambda w: EQ_103B(C * w ** 3 / 3, A * C, H, sv, C * w, w / 2, w - A / 2)  # noqa: E731
+    widths = [math.sqrt(2 * A * H * (1 - sv) / t) for t in reversed(LOG_GRID)]       # F x_s tan phi = V (1 - s)
+    out = []
+    for w in _roots(f, lambda w: w < A and w * tilt(w) < H, widths):
+        lhs = STABLE_117(C * w ** 3 / 3, w * C ** 3 / 12, C * w, w / 2, 0.0, A * C, H, sv)
+        out.append((tilt(w), "stable" if lhs > 0 else "unstable"))
+    return sorted(out)
+
+
 def _strip3(A, C, H, sv):
-    """Third region, dry strips of widths w, w - H/t in the two bases: (121b) gives w, (122) the tilt."""
-    w = lambda t: A * (1 - sv) + H / (2 * t)  # noqa: E731  (121b)
+    """Third region, dry strips of widths w and w - H/t in the two bases: w from the dry volume of (121b), the tilt
+    from (122) (F = C w, x_s = w/2, T = C w^3/3, f = C w_2, x_s^1 = w_2/2, tau = C w_2^3/3, x_0 = w - A/2)."""
+    w = lambda t: DRY_121B(A * C, H, sv) / (C * H) + H / (2 * t)  # noqa: E731  (C (w^2 - w_2^2) t/2 = V_3)
     w2 = lambda t: w(t) - H / t  # noqa: E731
 
     def f(t):
-        T_, tau_, fx1 = C * w(t) ** 3 / 3, C * w2(t) ** 3 / 3, C * w2(t) ** 2 / 2
-        return ((T_ - tau_) * t * (1 + t * t / 2) - A * C * H * (1 - sv) * (w(t) - A / 2 + H * t / 2)
-                - H * fx1 * (1 + t * t))
-    return [(t, None) for t in _roots(f, lambda t: w2(t) > 0 and w(t) < A)]
+        return EQ_122(C * w(t) ** 3 / 3, C * w2(t) ** 3 / 3, A * C, H, sv, w(t) - A / 2, C * w2(t), w2(t) / 2,
+                      C * w(t), w(t) / 2)
+    return [(t, None) for t in _roots(f, lambda t: w2(t) > 0 and w(t) < A, LOG_GRID)]
 
 
 def _predict(scene):

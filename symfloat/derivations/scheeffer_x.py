@@ -37,16 +37,16 @@ vertex counts, metacentric heights of the clipped cube, and equilibria found as 
 of the clipped potential u.(G - B) along the diagonal plane (its derivative is (du/dtheta).(G - B)).
 Angles in radians.
 """
-import math
-
 import mpmath
 import numpy as np
 import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum
-from symfloat.engine.roots import grid_roots, illinois
-from symfloat.engine.witness import Case, Computed
-from symfloat.geometry.floating import box, floating_state, right_prism, submerged
+from symfloat.engine.floating_witness import (MEASURED, At, Body, CutWitness, FloatingRootWitness, Root,
+                                              potential_slope)
+from symfloat.engine.roots import illinois
+from symfloat.engine.witness import Case
+from symfloat.geometry.floating import polygon_moments
 from symfloat.model.prediction import Prediction
 from symfloat.model.claim import as_printed
 
@@ -613,42 +613,23 @@ d.quote("hex-half", "X",
 
 
 # ==== witnesses: the clipped cube ========================================================================
-def _M(dps):
-    return math if dps <= 15 else mpmath
+M_ = MEASURED
+th = sp.Symbol("theta_w")                              # the tilt in the diagonal plane
+UD = (-sp.sin(th) / r2, -sp.sin(th) / r2, sp.cos(th))  # up, turned from the top face towards the corner B
+SLOPE = potential_slope(UD, th)                        # dE/dtheta of the clipped potential u.(G - B)
+LEG = -r2 * M_["top clearance"] / sp.sin(th)           # leg of the corner triangle cut at B: B lies u_x leg below
+CUBE, UNIT = Body.box(a, a, a), Body.box(1, 1, 1)
 
 
-def _n(v, dps):
-    v = sp.sympify(v)
-    return float(v) if dps <= 15 else mpmath.mpf(sp.N(v, dps + 20))
+def cut(name, description, targets, cases, quantity, up, through, body=CUBE, roots=()):
+    """The dry part above a water plane drawn through a point (a water line of the figure, three vertices)."""
+    d.witness(CutWitness(name, description, tuple(targets), tuple(cases), body=body, up=up, through=through,
+                         quantity=quantity, roots=roots))
 
 
-def _bd(dps):
-    return None if dps <= 15 else dps + 8
-
-
-def _dot(p, q):
-    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]
-
-
-def _unit(v, M):
-    nv = M.sqrt(_dot(v, v))
-    return tuple(c / nv for c in v)
-
-
-def _dry_moment_e(av, wv, rv, kv, dps):
-    """Moment of the clipped dry part about the vertical plane through G across the axis, over the tilt: the
-    water plane through the top water line GH (leg rho at B, angle w) rising towards B with slope k."""
-    M = _M(dps)
-    A, W, R, K = (_n(q, dps) for q in (av, wv, rv, kv))
-    body = box(A, A, A, dps=_bd(dps))
-    sw, cw = M.sin(W), M.cos(W)
-    u = _unit((-K * sw, -K * cw, 1 + 0 * K), M)
-    sub = submerged(body, u, _dot(u, (A / 2 - R, A / 2, A / 2)))
-    return -sub.volume * _dot(sub.centroid, (cw, -sw, 0 * cw)) / K
-
-
-def computed(name, description, targets, cases, fn):
-    d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=fn))
+def floating(name, description, targets, cases, quantity, up=UD, density=s, body=UNIT, roots=()):
+    d.witness(FloatingRootWitness(name, description, tuple(targets), cases if callable(cases) else tuple(cases),
+                                  body=body, up=up, density=density, quantity=quantity, roots=roots))
 
 
 def C(label, **kw):
@@ -656,224 +637,129 @@ def C(label, **kw):
     return Case({syms[q]: sp.Rational(v) for q, v in kw.items()}, label=label)
 
 
+def dry_moment(K):
+    """The water plane rising towards B with slope K across GH (up (-K sin w, -K cos w, 1)): the moment of the
+    clipped dry part about the vertical plane through G across the axis (along (cos w, -sin w, 0)) over K, i.e.
+    minus that of the submerged part, G being the origin."""
+    return (-M_["immersed volume"] * (co * M_["B - G, x"] - si * M_["B - G, y"]) / K, (-K * si, -K * co, 1))
+
+
 FACE = (C("a = 1, omega = 0.3, rho = 0.6", a=1, omega="0.3", rho="0.6"),
         C("a = 3/2, omega = 0.6, rho = 1/2", a="1.5", omega="0.6", rho="0.5"),
         C("a = 1, omega = 0.7, rho = 0.9", a=1, omega="0.7", rho="0.9"))
-computed("dry-moment", "moment of the clipped dry part about the vertical plane across the axis / tan phi "
-         "(tan phi = 1/4)", ("98", "167-sum", "167", "168", "174", "diagonal-claim"),
-         FACE, lambda c, p: _dry_moment_e(c.params[a], c.params[om], c.params[rho], "0.25", p))
-def _frame_triangles(c, p):
-    """The triangle BHG in the frame of the text (origin N, x towards B, y along GH towards G), built from the
-    square's corners; returns u, v and the sub-triangles HPB, GPB."""
-    M = _M(p)
-    A, W, R = (_n(c.params[q], p) for q in (a, om, rho))
-    e, nn = (M.cos(W), -M.sin(W)), (M.sin(W), M.cos(W))
-    Hq, Gq, Bq = (A / 2 - R, A / 2), (A / 2, A / 2 - R * M.tan(W)), (A / 2, A / 2)
-    fr = lambda q: (q[0] * nn[0] + q[1] * nn[1] - (Hq[0] * nn[0] + Hq[1] * nn[1]), q[0] * e[0] + q[1] * e[1])  # noqa
-    H2, G2, B2 = fr(Hq), fr(Gq), fr(Bq)
-    P2 = (0 * A, B2[1])
-    return -H2[1], G2[1], (H2, P2, B2), (G2, B2, P2)
+H_POINT = (a / 2 - rho, a / 2, a / 2)                  # H on the top edge, rho from the corner B
+cut("dry-moment", "moment of the clipped dry part about the vertical plane across the axis / tan phi (tan phi = 1/4)",
+    ("98", "167-sum", "167", "168", "174", "diagonal-claim"), FACE, *dry_moment(sp.Rational(1, 4)), H_POINT)
+cut("dry-moment-45", "the same with the axis along a face diagonal", ("170",),
+    (C("a = 1, rho = 0.6", a=1, rho="0.6"), C("a = 3/2, rho = 1/5", a="1.5", rho="0.2")),
+    *dry_moment(sp.Rational(1, 4)), H_POINT, roots=((om, pi / 4),))
+cut("dry-moment-third", "moment of the clipped dry part / tan phi, water plane through both water lines",
+    ("173", "118-form", "173-only-45"),
+    (C("a = 1, omega = 0.3, rho = 0.6, rho_1 = 0.4", a=1, omega="0.3", rho="0.6", rho1="0.4"),
+     C("a = 3/2, omega = 0.5, rho = 0.7, rho_1 = 0.9", a="1.5", omega="0.5", rho="0.7", rho1="0.9")),
+    *dry_moment(a / (a * (si + co) - (rho + rho1) * si)), H_POINT)
 
 
-def _flat(tri, p):
-    """The clipped upright prism over a triangle (counter-clockwise), floating half immersed: its waterplane."""
-    pts = list(tri)
-    if (pts[1][0] - pts[0][0]) * (pts[2][1] - pts[0][1]) - (pts[1][1] - pts[0][1]) * (pts[2][0] - pts[0][0]) < 0:
-        pts = pts[::-1]
-    return floating_state(right_prism(pts, 1, dps=_bd(p)), (0, 0, 1), 1 / (2 + 0 * pts[0][1]))
+# ---- the triangle BHG of the top face in the frame of the text (origin N, x towards B, y along GH towards G), built
+# from the square's corners: the upright prism over each triangle, its waterplane's moments moved to N (Steiner);
+# NH and NG are the reach of the triangle BHG along -y and +y
+def _frame(q):
+    """A point of the top face (square coordinates) in the frame of the text."""
+    e, nn, H = (co, -si), (si, co), (a / 2 - rho, a / 2)
+    return (q[0] * nn[0] + q[1] * nn[1] - (H[0] * nn[0] + H[1] * nn[1]), q[0] * e[0] + q[1] * e[1])
 
 
-def _int_xy(tri, p):
-    """int x y df over a triangle: central product moment plus area x centroid coordinates."""
-    st = _flat(tri, p)
-    return st.tensor[0][1] + st.waterplane_area * st.waterplane_centroid[0] * st.waterplane_centroid[1]
+H2, G2, B2 = (_frame(q) for q in ((a / 2 - rho, a / 2), (a / 2, a / 2 - rho * tg), (a / 2, a / 2)))
+P2 = (0, B2[1])
+HPB, GPB, BHG = Body.prism((H2, B2, P2), 1), Body.prism((G2, P2, B2), 1), Body.prism((H2, B2, G2), 1)  # counter-clockwise
+INT_XY = M_["waterplane tensor, xy"] + M_["waterplane area"] * M_["waterplane centroid, x"] * M_["waterplane centroid, y"]
+REACH = M_["freeboard"] + M_["water level"]
+floating("frame-u", "distance NH from the square's corners (reach of BHG along -y)", ("u",), FACE, REACH, up=(0, -1, 0),
+         density=half, body=BHG)
+floating("frame-v", "distance NG from the square's corners (reach of BHG along +y)", ("v",), FACE, REACH, up=(0, 1, 0),
+         density=half, body=BHG)
+floating("xy-HPB", "int xy df over HPB (clipped waterplane of the prism over it)", ("HPB",), FACE, INT_XY,
+         up=(0, 0, 1), density=half, body=HPB)
+floating("xy-GPB", "int xy df over GPB (clipped waterplane of the prism over it)", ("GPB",), FACE, INT_XY,
+         up=(0, 0, 1), density=half, body=GPB)
+floating("area-BHG", "area of the triangle BHG (clipped waterplane of the prism over it)", ("area",), FACE,
+         "waterplane area", up=(0, 0, 1), density=half, body=BHG)
 
 
-computed("frame-u", "distance NH from the square's corners", ("u",), FACE, lambda c, p: _frame_triangles(c, p)[0])
-computed("frame-v", "distance NG from the square's corners", ("v",), FACE, lambda c, p: _frame_triangles(c, p)[1])
-computed("xy-HPB", "int xy df over HPB (clipped prism over the triangle)", ("HPB",), FACE,
-         lambda c, p: _int_xy(_frame_triangles(c, p)[2], p))
-computed("xy-GPB", "int xy df over GPB (clipped prism over the triangle)", ("GPB",), FACE,
-         lambda c, p: _int_xy(_frame_triangles(c, p)[3], p))
-computed("area-BHG", "area of the triangle BHG (clipped prism over it)", ("area",), FACE,
-         lambda c, p: (lambda f: _flat((f[2][0], f[3][0], f[2][2]), p).waterplane_area)(_frame_triangles(c, p)))
-computed("dry-moment-45", "the same with the axis along a face diagonal", ("170",),
-         (C("a = 1, rho = 0.6", a=1, rho="0.6"), C("a = 3/2, rho = 1/5", a="1.5", rho="0.2")),
-         lambda c, p: _dry_moment_e(c.params[a], _M(p).pi / 4, c.params[rho], "0.25", p))
+# ---- (171): the dry part F of the top face (exact polygon moments) and the clipped potential's slope where the
+# water line cuts the leg x off the corner B
+TH_GRID = tuple(0.02 * j for j in range(1, 48))       # up to the diagonal direction atan(sqrt 2) = 0.9553
+T_F, z_F = sp.symbols("T_F z_F")
 
 
-def _third(c, p):
-    M = _M(p)
-    A, W, R, R1 = (_n(c.params[q], p) for q in (a, om, rho, rho1))
-    kv = A / (A * (M.sin(W) + M.cos(W)) - (R + R1) * M.sin(W))
-    return _dry_moment_e(c.params[a], c.params[om], c.params[rho], kv, p)
+def _face_F(label, xv, sv):
+    """The case with the moments of F, the top face less the corner triangle of leg x at B: T about the water
+    line (along the diagonal through (1/2 - x, 1/2)) and z = sqrt 2 times F's moment about it (F's area times the
+    distance of its centroid, on the side away from B)."""
+    x_ = sp.Rational(xv)
+    hf = sp.Rational(1, 2)
+    area, (cx, cy), J = polygon_moments([(-hf, -hf), (hf, -hf), (hf, hf - x_), (hf - x_, hf), (-hf, hf)])
+    dist = ((cx - (hf - x_)) + (cy - hf)) / r2          # from the water line towards B
+    T = (J[0][0] + 2 * J[0][1] + J[1][1]) / 2 + area * dist ** 2
+    return Case({xl: x_, s: sp.Rational(sv), T_F: T, z_F: -r2 * area * dist}, label=label)
 
 
-computed("dry-moment-third", "moment of the clipped dry part / tan phi, water plane through both water lines",
-         ("173", "118-form", "173-only-45"),
-         (C("a = 1, omega = 0.3, rho = 0.6, rho_1 = 0.4", a=1, omega="0.3", rho="0.6", rho1="0.4"),
-          C("a = 3/2, omega = 0.5, rho = 0.7, rho_1 = 0.9", a="1.5", omega="0.5", rho="0.7", rho1="0.9")),
-         _third)
-
-
-def _u_theta(th, M):
-    return (-M.sin(th) / M.sqrt(2), -M.sin(th) / M.sqrt(2), M.cos(th))
-
-
-def _dEdtheta(body, th, sv, M):
-    """Derivative of the clipped potential u.(G - B) along the diagonal plane: (du/dtheta).(G - B)."""
-    st = floating_state(body, _u_theta(th, M), sv)
-    du = (-M.cos(th) / M.sqrt(2), -M.cos(th) / M.sqrt(2), -M.sin(th))
-    return _dot(du, [st.G[i] - st.B[i] for i in range(3)]), st
-
-
-def _leg(body, th, sv, M):
-    """Leg of the corner triangle cut from the top face at B by the clipped water plane (negative: B dry)."""
-    st = floating_state(body, _u_theta(th, M), sv)
-    u = st.u
-    Xc = (st.t - u[1] / 2 - u[2] / 2) / u[0]
-    return 1 / (2 + 0 * Xc) - Xc
-
-
-def _roots(make, grid, dps):
-    """Every sign change of f on the float grid, refined in float64 and then (dps > 15) at dps digits."""
-    return grid_roots(make, grid, dps)
-
-
-TH_GRID = [0.02 * j for j in range(1, 48)]       # up to the diagonal direction atan(sqrt 2) = 0.9553
-
-
-def _cube1(dps):
-    return box(1, 1, 1, dps=_bd(dps))
-
-
-def _theta_at_leg(xv, sv, dps):
-    def make(q):
-        M, body, S, Xv = _M(q), _cube1(q), _n(sv, q), _n(xv, q)
-        return lambda th: _leg(body, th, S, M) - Xv
-    return _roots(make, TH_GRID, dps)[0]
-
-
-def _w171(c, p):
-    """(2T, z, f): moments of the dry part F of the top face (clipped upright prism over F) and the clipped
-    derivative of the potential at the orientation whose water line has leg x, times sqrt2 s z^3 sqrt(1+k^2)/(1-s)."""
-    M = _M(p)
-    xv, sv = _n(c.params[xl], p), _n(c.params[s], p)
-    hf = 1 / (2 + 0 * xv)
-    F = [(-hf, -hf), (hf, -hf), (hf, hf - xv), (hf - xv, hf), (-hf, hf)]
-    st = floating_state(right_prism(F, 1, dps=_bd(p)), (0, 0, 1), hf)
-    nrm = (1 / M.sqrt(2), 1 / M.sqrt(2))
-    dc = nrm[0] * (st.waterplane_centroid[0] - (hf - xv)) + nrm[1] * (st.waterplane_centroid[1] - hf)
-    J = st.tensor
-    T = nrm[0] ** 2 * J[0][0] + 2 * nrm[0] * nrm[1] * J[0][1] + nrm[1] ** 2 * J[1][1] + st.waterplane_area * dc ** 2
-    zz = -M.sqrt(2) * st.waterplane_area * dc
-    th = _theta_at_leg(c.params[xl], c.params[s], p)
-    g, _ = _dEdtheta(_cube1(p), th, sv, M)
-    return 2 * T, zz, M.sqrt(2) * sv * zz ** 3 * M.sqrt(1 + M.tan(th) ** 2) / (1 - sv) * g
-
-
-computed("171-clipped", "moments of the dry face part F; clipped dE/dtheta at the orientation with leg x",
-         ("171",), (C("x = 3/10, s = 77/100", x="0.3", s="0.77"), C("x = 1/2, s = 4/5", x="0.5", s="0.8"),
-                    C("x = 1/10, s = 3/4", x="0.1", s="0.75")), _w171)
-
-
-def _th_touch(body, sv, q):
-    """Tilt in the diagonal plane at which the corner B reaches the clipped water plane (leg 0)."""
-    def make(r):
-        M, bd = _M(r), (body if r == q else _cube1(r))
-        S = sv if r == q else _n(sp.nsimplify(float(sv)), r)
-        return lambda t_: _leg(bd, t_, S, M)
-    return _roots(make, [0.2 + 0.05 * j for j in range(9)], q)[0]
-
-
-def _s_touch_equilibrium(dps):
-    """Density at which the clipped equilibrium in the diagonal plane has leg 0 (nested root-finding)."""
-    def make(q):
-        M, body = _M(q), _cube1(q)
-        return lambda sv: _dEdtheta(body, _th_touch(body, sv, q), sv, M)[0]
-    return _roots(make, [0.765, 0.77, 0.775, 0.78], dps)[0]
-
-
-computed("172-clipped", "density where the clipped equilibrium in the diagonal plane has its corner B at the water",
-         ("172-number",), (Case({}, label="unit cube"),), lambda c, p: _s_touch_equilibrium(p))
-
-
-def _vertices(st, dps):
-    """Distinct vertices of the clipped waterplane polygon."""
-    eps = 1e-9 if dps <= 15 else mpmath.mpf(10) ** (-dps // 2)
-    pts = []
-    for p_ in submerged(_cube1(dps), st.u, st.t).waterplane.polygon:
-        if all(max(abs(p_[i] - q[i]) for i in range(3)) > eps for q in pts):
-            pts.append(p_)
-    return len(pts)
-
-
-def _count_at_root(sv, flip, dps):
-    """Vertices of the clipped waterplane at the orientation the root of (171) prescribes, u ~ (-p, -p, 1),
-    p = (1 - s)/z (density sv; flip: the dual position, the cube turned over at 1 - sv)."""
-    q = 1 - sv if flip else sv
-    with mpmath.workdps(max(dps, 15) + 10):
-        q = mpmath.mpf(q.p) / q.q
-        xr = mpmath.findroot(lambda t_: f_num(t_, q), (0.5, 0.6), solver="anderson")
-        pv = (1 - q) / (1 - xr + xr ** 3 / 6)
-    pv = _n(sp.Float(pv, max(dps, 15) + 10), dps)
-    u = (pv, pv, -1 + 0 * pv) if flip else (-pv, -pv, 1 + 0 * pv)
-    return _vertices(floating_state(_cube1(dps), u, _n(sv, dps)), dps)
-
+floating("171-clipped", "moments of the dry face part F; clipped dE/dtheta at the orientation with leg x",
+         ("171",), (_face_F("x = 3/10, s = 77/100", "0.3", "0.77"), _face_F("x = 1/2, s = 4/5", "0.5", "0.8"),
+                    _face_F("x = 1/10, s = 3/4", "0.1", "0.75")),
+         (2 * T_F, z_F, r2 * s * z_F ** 3 * sp.sqrt(1 + sp.tan(th) ** 2) / (1 - s) * SLOPE),
+         roots=((th, Root(LEG - xl, th, TH_GRID)),))
+TOUCH_B = Root("top clearance", th, tuple(0.2 + 0.05 * j for j in range(9)))     # the corner B at the water
+floating("172-clipped", "density where the clipped equilibrium in the diagonal plane has its corner B at the water",
+         ("172-number",), (Case({}, label="unit cube"),), s,
+         roots=((s, Root(SLOPE, s, (0.765, 0.77, 0.775, 0.78), roots=((th, TOUCH_B),))),))
 
 # (171) as read, left minus right side with the printed 2T and z, for numeric x, s (its roots are located
 # with it): mpmath numbers, floats or numpy arrays alike
 f_num = d.evaluator("171", (xl, s), 1, row=2)
 
 
+def _root_slope(sv, flip):
+    """The slope p = (1 - s)/z of the up vector (-p, -p, 1) at the root x of (171) as read, density sv (flip: the
+    cube turned over at 1 - sv, up (p, p, -1)), at 60 digits."""
+    q = 1 - sv if flip else sv
+    with mpmath.workdps(60):
+        q = mpmath.mpf(q.p) / q.q
+        xr = mpmath.findroot(lambda t_: f_num(t_, q), (0.5, 0.6), solver="anderson")
+        return sp.Float((1 - q) / (1 - xr + xr ** 3 / 6), 60)
+
+
+p_w = sp.Symbol("p_w")
 ONE = (Case({}, label="unit cube"),)
-computed("pentagon-count", "vertices of the clipped waterplane at the root of (171), s = 3/5", ("pentagon-exists",),
-         ONE, lambda c, p: _count_at_root(sp.Rational(3, 5), False, p))
-computed("pentagon-count-dual", "vertices of the clipped waterplane at the dual root, s = 2/5", ("dual-exists",),
-         ONE, lambda c, p: _count_at_root(sp.Rational(2, 5), True, p))
+floating("pentagon-count", "vertices of the clipped waterplane at the root of (171), s = 3/5", ("pentagon-exists",),
+         lambda: (Case({p_w: _root_slope(sp.Rational(3, 5), False)}, label="unit cube"),), "waterplane corners",
+         up=(-p_w, -p_w, 1), density=sp.Rational(3, 5))
+floating("pentagon-count-dual", "vertices of the clipped waterplane at the dual root, s = 2/5", ("dual-exists",),
+         lambda: (Case({p_w: _root_slope(sp.Rational(2, 5), True)}, label="unit cube"),), "waterplane corners",
+         up=(p_w, p_w, -1), density=sp.Rational(2, 5))
+t1_, t2_, e1p, e1m, e2p, e2m = sp.symbols("theta_1w theta_2w E_1p E_1m E_2p E_2m")
+EQ_GRID = tuple(0.25 + 0.05 * j for j in range(10))
+STEP = sp.Rational(1, 10 ** 6)                          # the difference quotient's half step
+floating("pentagon-stiffness", "signs of the clipped second derivative of the potential at the two pentagonal "
+         "equilibria in the diagonal plane, s = 0.77", ("pentagon-stable",), ONE,
+         (sp.sign(e1p - e1m), sp.sign(e2p - e2m)), density=sp.Rational(77, 100),
+         roots=((t1_, Root(SLOPE, th, EQ_GRID, which=0)), (t2_, Root(SLOPE, th, EQ_GRID, which=1)),
+                (e1p, At(SLOPE, {th: t1_ + STEP})), (e1m, At(SLOPE, {th: t1_ - STEP})),
+                (e2p, At(SLOPE, {th: t2_ + STEP})), (e2m, At(SLOPE, {th: t2_ - STEP}))))
 
-
-def _stiffness_signs(c, p):
-    """Signs of d^2E/dtheta^2 at the clipped equilibria in the diagonal plane at s = 0.77 (first two roots)."""
-    sv = sp.Rational(77, 100)
-
-    def make(q):
-        M, body, S = _M(q), _cube1(q), _n(sv, q)
-        return lambda th: _dEdtheta(body, th, S, M)[0]
-    ths = _roots(make, [0.25 + 0.05 * j for j in range(10)], p)[:2]
-    M, body, S = _M(p), _cube1(p), _n(sv, p)
-    hh = 1e-5 if p <= 15 else mpmath.mpf("1e-12")
-    return tuple(1 if _dEdtheta(body, t_ + hh, S, M)[0] - _dEdtheta(body, t_ - hh, S, M)[0] > 0 else -1 for t_ in ths)
-
-
-computed("pentagon-stiffness", "signs of the clipped second derivative of the potential at the two pentagonal "
-         "equilibria in the diagonal plane, s = 0.77", ("pentagon-stable",), ONE, _stiffness_signs)
-
-
-def _diag_state(sv, dps):
-    return floating_state(_cube1(dps), (1, 1, 1), _n(sv, dps))
-
-
-def _below_diagonals(av, dps):
-    """Submerged volume of the clipped cube of edge av below the plane through three face diagonals at a corner."""
-    A = _n(av, dps)
-    u = _unit((1, 1, 1), _M(dps))
-    return submerged(box(A, A, A, dps=_bd(dps)), u, _dot(u, (A / 2, A / 2, -A / 2))).volume
-
-
-computed("tetra-dry", "dry volume of the clipped cube above the plane through three face diagonals",
-         ("tetra",), (C("a = 1", a=1), C("a = 3/2", a="1.5")),
-         lambda c, p: _n(c.params[a], p) ** 3 - _below_diagonals(c.params[a], p))
-computed("five-sixths", "submerged fraction of the unit cube below the plane through three face diagonals",
-         ("five-sixths",), ONE, lambda c, p: _below_diagonals(1, p))
-computed("tri-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1 - L^3/6", ("tri-unstable",),
-         (C("L = 1/2", L="0.5"), C("L = 4/5", L="0.8")),
-         lambda c, p: 1 if _diag_state(1 - c.params[L] ** 3 / 6, p).metacentric_height > 0 else -1)
-computed("diagonal-shape", "+1 if the clipped waterplane of the cube turned corner up is a hexagon, -1 if a triangle",
-         ("hex-follows",), (C("s = 4/5", s="0.8"), C("s = 9/10", s="0.9")),
-         lambda c, p: 1 if _vertices(_diag_state(c.params[s], p), p) == 6 else -1)
-computed("hex-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1/2", ("hex-half",), ONE,
-         lambda c, p: 1 if _diag_state(half, p).metacentric_height > 0 else -1)
+# ---- the cube turned corner up: the plane through three face diagonals, triangles and hexagons
+DIAGONAL = (1, 1, 1)
+cut("tetra-dry", "dry volume of the clipped cube above the plane through three face diagonals", ("tetra",),
+    (C("a = 1", a=1), C("a = 3/2", a="1.5")), a ** 3 - M_["immersed volume"], DIAGONAL, (a / 2, a / 2, -a / 2))
+cut("five-sixths", "submerged fraction of the unit cube below the plane through three face diagonals",
+    ("five-sixths",), ONE, "immersed volume", DIAGONAL, (half, half, -half), body=UNIT)
+floating("tri-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1 - L^3/6", ("tri-unstable",),
+         (C("L = 1/2", L="0.5"), C("L = 4/5", L="0.8")), "stability sign", up=DIAGONAL, density=1 - L ** 3 / 6)
+floating("diagonal-shape", "+1 if the clipped waterplane of the cube turned corner up is a hexagon, -1 if a triangle",
+         ("hex-follows",), (C("s = 4/5", s="0.8"), C("s = 9/10", s="0.9")), (2 * M_["waterplane corners"] - 9) / 3,
+         up=DIAGONAL)
+floating("hex-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1/2", ("hex-half",), ONE,
+         "stability sign", up=DIAGONAL, density=half)
 
 
 # ==== prediction ==========================================================================================

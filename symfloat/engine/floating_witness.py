@@ -470,3 +470,183 @@ class Joined(MeasuredWitness):
             value = part.measure(case, method)
             out.extend(value if isinstance(value, tuple) else (value,))
         return tuple(out)
+
+
+# ---- roots of a quantity along a parameter, face clearances, the waterplane's corners -----------------------------
+from dataclasses import replace  # noqa: E402
+from .witness import Case  # noqa: E402
+
+def _face_heights(st, body, top):
+    """Heights above the water plane of the vertices of the body's top (largest z) or bottom (least z) face."""
+    zs = [p[2] for p in body.vertices]
+    end = max(zs) if top else min(zs)
+    return [_height(st.u, p, st.t) for p in body.vertices if p[2] == end]
+
+
+def _corners(st, body):
+    """Distinct corners of the clipped waterplane polygon (points closer than 1e-9 of the body's size, in
+    float64, or half the digits, in mpmath, are one corner)."""
+    from ..geometry.floating import submerged
+    size = max(abs(c) for p in body.vertices for c in p)
+    eps = size * (1e-9 if body.dps is None else mpmath.mpf(10) ** (-body.dps // 2))
+    pts = []
+    for p in submerged(body, st.u, st.t).waterplane.polygon:
+        if all(max(abs(a - b) for a, b in zip(p, q)) > eps for q in pts):
+            pts.append(p)
+    return len(pts)
+
+
+QUANTITIES.update({
+    "top clearance": ("height above the water plane of the lowest vertex of the top face (largest z): positive "
+                      "while that face is dry, zero when it reaches the water",
+                      lambda st, body: min(_face_heights(st, body, True))),
+    "bottom clearance": ("depth below the water plane of the highest vertex of the bottom face (least z): "
+                         "positive while that face is submerged", lambda st, body: -max(_face_heights(st, body, False))),
+    "waterplane corners": ("number of distinct corners of the clipped waterplane polygon",
+                           lambda st, body: _corners(st, body)),
+    "face clearance": ("the lesser of the top and the bottom clearance: positive while the water plane cuts "
+                       "neither end face, zero when the first of them reaches the water",
+                       lambda st, body: min(min(_face_heights(st, body, True)), -max(_face_heights(st, body, False)))),
+    "water level": ("height of the water plane above the body's origin (along the up vector)", lambda st, body: st.t),
+    "freeboard": ("height of the highest point of the body above the water plane",
+                  lambda st, body: max(_height(st.u, p, st.t) for p in body.vertices)),
+})
+
+
+def _tensor3(st, i, j):
+    """Component (i, j) of the waterplane's central second-moment tensor in the body frame,
+    int (p - c)_i (p - c)_j dA = sum over the waterplane basis e_a, e_b of J_ab (e_a)_i (e_b)_j."""
+    return sum(st.tensor[a][b] * st.basis[a][i] * st.basis[b][j] for a in range(2) for b in range(2))
+
+
+QUANTITIES.update({
+    **{f"waterplane centroid, {axis}": (f"{axis} coordinate of the centroid of the clipped waterplane (body frame)",
+                                        lambda st, body, k=k: st.waterplane_centroid[k]) for k, axis in enumerate("xyz")},
+    **{f"waterplane tensor, {'xyz'[i]}{'xyz'[j]}": (
+        f"int (p - c)_{'xyz'[i]} (p - c)_{'xyz'[j]} dA over the clipped waterplane about its centroid (body frame): "
+        "v . T v (T this tensor, v a unit vector in the waterplane) is its second moment about the centroidal axis "
+        "normal to v",
+        lambda st, body, i=i, j=j: _tensor3(st, i, j)) for i in range(3) for j in range(i, 3)},
+})
+MEASURED.update({name: sp.Symbol(name) for name in QUANTITIES if name not in MEASURED})
+
+
+def potential_slope(up, variable):
+    """dE/d(variable) of the potential E = u.(G - B) (height of G above B) along a family of up vectors
+    ``up(variable)``, as an expression in :data:`MEASURED`: -(du/dvariable).(B - G), u = up/|up|; B moves
+    perpendicular to u to first order, so only u is differentiated (the righting arm of a tilt)."""
+    up = sp.Matrix(up)
+    u = up / sp.sqrt(up.dot(up))
+    return -sum(sp.diff(u[k], variable) * MEASURED[f"B - G, {axis}"] for k, axis in enumerate("xyz"))
+
+
+@dataclass(frozen=True)
+class Root:
+    """A root in ``variable`` of ``quantity`` (a name of :data:`QUANTITIES` or an expression in :data:`MEASURED`),
+    the others of the witness's body, up vector and density: the sign changes on ``grid`` (floats) refined by
+    :func:`symfloat.engine.roots.grid_roots` in float64 and at the method's digits; ``which`` is ``"first"``,
+    ``"last"`` or an index into all of them.  ``at`` overrides parameters for this search (expressions in the
+    case's parameters and the roots found before it), ``roots`` are found at each trial value first (nested)."""
+
+    quantity: object
+    variable: sp.Symbol
+    grid: tuple
+    which: object = "first"
+    at: dict = None
+    roots: tuple = ()
+
+    def __post_init__(self):
+        object.__setattr__(self, "grid", tuple(self.grid))
+        object.__setattr__(self, "at", tuple(sorted(dict(self.at or {}).items(), key=str)))
+
+
+@dataclass(frozen=True)
+class At:
+    """The value of ``quantity`` (as in :class:`Root`) with the parameters ``at`` overriding the case's (an
+    upright metacentric height beside a tilted position), for the ``roots`` of a :class:`FloatingRootWitness`."""
+
+    quantity: object
+    at: dict = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "at", tuple(sorted(dict(self.at or {}).items(), key=str)))
+
+
+_SOLVED = {}     # (witness geometry, symbol, Root or At, parameters, digits) -> value: shared by the witnesses
+
+
+@dataclass(frozen=True)
+class FloatingRootWitness(FloatingWitness):
+    """A :class:`FloatingWitness` whose case parameters are completed by roots: ``roots`` is a tuple of
+    ``(symbol, Root)``, ``(symbol, At)`` or ``(symbol, expression)`` (a fixed value, in what is known so far),
+    found in order at the method's digits; ``quantity`` and ``up`` may use the symbols (an equilibrium tilt as
+    a root of the :func:`potential_slope`, the tilt or density at which a face reaches the water as a root of a
+    clearance).  A quantity in the roots and parameters alone is read off them, with no floating state."""
+
+    roots: tuple = ()
+
+    def _solve(self, params, body, roots, dps):
+        params = dict(params)
+        for symbol, root in roots:
+            key = (type(self), body, self.up, self.density, self.reference, getattr(self, "through", None), symbol,
+                   root, tuple(sorted(params.items(), key=str)), dps)
+            if key not in _SOLVED:
+                _SOLVED[key] = self._solve_one(params, body, symbol, root, dps)
+            params[symbol] = _SOLVED[key]
+        return params
+
+    def _solve_one(self, params, body, symbol, root, dps):
+        from .roots import grid_roots
+        if not isinstance(root, (Root, At)):                 # a value: an expression in what is known
+            return sp.sympify(root).xreplace(params)
+        at = {**params, **{k: sp.sympify(v).xreplace(params) for k, v in root.at}}
+        probe = replace(self, quantity=root.quantity, name=f"{self.name}: {symbol}")
+        if isinstance(root, At):
+            return sp.Float(probe._values(at, body, dps)[0], max(dps, 15) + 5)
+
+        def make(p):
+            def f(v):
+                trial = probe._solve({**at, root.variable: sp.Float(v, max(p, 15) + 5)}, body, root.roots, p)
+                return probe._values(trial, body, p)[0]
+            return f
+        which = root.which if isinstance(root.which, str) else None
+        found = grid_roots(make, list(root.grid), dps, only=which)
+        if not isinstance(root.which, str):
+            found = found[root.which:root.which + 1]
+        if not found:
+            raise ValueError(f"witness {self.name}: no root of {root.quantity} in {root.variable} on its grid")
+        return sp.Float(found[0], max(dps, 15) + 5)
+
+    def measure(self, case, method):
+        body = self.body if self.body is not None else case.data["body"]
+        with mpmath.workdps(max(method.dps, 15)):
+            params = self._solve(case.params, body, self.roots, method.dps)
+            single = isinstance(self.quantity, (str, sp.Expr))
+            items = (self.quantity,) if single else self.quantity
+            if not any(isinstance(q, str) or q.free_symbols & set(MEASURED.values()) for q in items):
+                # the roots alone: no floating state at the end
+                values = tuple(_real(number(q, params, method.dps), method.dps) for q in items)
+                values = tuple(float(v) if method.dps <= 15 else +v for v in values)
+                return values[0] if single else values
+        return super().measure(Case(params, case.data, case.label), method)
+
+
+@dataclass(frozen=True)
+class CutWitness(FloatingRootWitness):
+    """A :class:`FloatingRootWitness` whose water plane passes through the point ``through`` (body frame, SymPy
+    expressions in the case's parameters) normal to ``up``, instead of a given density: the body floats at the
+    share of its volume below that plane (the dry part above a water line drawn in a figure, a plane through
+    three vertices)."""
+
+    through: tuple = None
+
+    def _values(self, params, body, dps):
+        from ..geometry.floating import body_volume_centroid, submerged
+        poly = body.build(params, dps)
+        u = _unit(tuple(number(x, params, dps) for x in self.up), poly.dps)
+        t = _dot(u, tuple(_real(number(x, params, dps), dps) for x in self.through))
+        share = submerged(poly, u, t).volume / body_volume_centroid(poly)[0]
+        return FloatingWitness._values(replace(self, density=sp.Float(share, max(dps, 15) + 10)), params, body, dps)
+
+
+__all__ += ["Root", "At", "FloatingRootWitness", "CutWitness", "potential_slope"]
