@@ -649,4 +649,5 @@ class CutWitness(FloatingRootWitness):
         return FloatingWitness._values(replace(self, density=sp.Float(share, max(dps, 15) + 10)), params, body, dps)
 
 
-__all__ += ["Root", "At", "FloatingRootWitness", "CutWitness", "potential_slope"]
+__all__ += ["RootWitness", "Joined", "first_zero", "waterplane_moment", "Root", "At", "FloatingRootWitness", "CutWitness",
+            "potential_slope"]
