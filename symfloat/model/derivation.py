@@ -15,6 +15,7 @@ import sympy as sp
 from .claim import members
 from .erratum import Erratum
 from .prediction import Predictor
+from .relation import is_relation
 from .source import get_source
 
 __all__ = ["Step", "Printed", "Derivation", "JUSTIFICATIONS", "PRINTED_DIGITS", "printed_tolerance"]
@@ -218,6 +219,9 @@ class Derivation:
         missing = [t for t in w.targets if t not in names]
         if missing:
             raise ValueError(f"witness {w.name!r} targets unknown printed formulas {missing}")
+        related = [p.name for p in self.printed if p.name in w.targets and is_relation(p.reading)]
+        if related:
+            raise ValueError(f"witness {w.name!r} targets relations {related}: the relation check samples them")
         self.witnesses.append(w)
         return w
 
