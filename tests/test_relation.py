@@ -109,3 +109,10 @@ def test_relation_reading_in_a_derivation():
     assert not rep.failures
     assert "the print gives true" in rep.formulas[1].erratum["evidence"]
     assert r"\leq" in as_latex(d.printed[0].reading)
+
+
+def test_a_row_that_never_occurs_is_undecided():
+    table = Cases(((n < 1, sp.Eq(RealRoots(CUBIC, z, -sp.oo, sp.oo), 1)), (n > 5, sp.true)), {n: (0, 3)},
+                  exhaustive=False)
+    r = check_relation(table, {}, DOMAIN, "t")
+    assert r.status == "undecided" and "row 2" in r.tried[-1]

@@ -23,7 +23,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import Derivation, Erratum, Prediction
+from symfloat import Derivation, Erratum, Iff, Prediction
 from symfloat.engine.floating_witness import QUANTITIES, Body, FloatingWitness
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.geometry.floating import box, clip_below, floating_state, volume_centroid
@@ -163,10 +163,8 @@ d.step("roots", (sp.Matrix([quad.subs(rho, r1), quad.subs(rho, r2)]), sp.Matrix(
 d.step("R1", (R1, r1), "definition", result=R1, uses=("roots",), note="the smaller root of rho^2 - rho + 1/6")
 d.step("R2", (R2, r2), "definition", result=R2, uses=("roots",), note="the larger root")
 d.step("ranges", (sp.sign(quad), sp.sign((rho - R1) * (rho - R2))), "algebra", uses=("roots", "R1", "R2"))
-stable_set = sp.Piecewise((1, (rho < R1) | (rho > R2)), (0, True))
 d.quote("ranges", "solution, stability", DISPLAYS[14],
-        reading=(sp.Piecewise((1, sp.StrictGreaterThan(quad, 0)), (0, True)),
-                 sp.Piecewise((1, (rho < r1) | sp.StrictLessThan(r2, 1)), (0, True))),
+        reading=Iff(quad > 0, (rho < r1) | sp.StrictLessThan(r2, 1, evaluate=False), {rho: (0, 1)}),
         erratum=Erratum("transcription", "medium",
                         r"0 < \varrho < \frac{3 - \sqrt{3}}{6} \varrho_{\text{víz}} \quad \text{vagy} \quad "
                         r"\frac{3 + \sqrt{3}}{6} \varrho_{\text{víz}} < \varrho < \varrho_{\text{víz}}",
@@ -175,7 +173,8 @@ d.quote("ranges", "solution, stability", DISPLAYS[14],
                         "density stable. The roots of rho^2 - rho + 1/6 are (3 -+ sqrt 3)/6 (printed right) and the "
                         "condition holds outside them; the layout of the first range shows the intended form. "
                         "Lost in the transcription rather than the print (the thresholds are correct).",
-                        corrected_reading=(sp.Piecewise((1, sp.StrictGreaterThan(quad, 0)), (0, True)), stable_set)))
+                        corrected_reading=Iff(quad > 0, (rho < R1) | (rho > R2), {rho: (0, 1)})),
+        note="read as: the condition holds exactly on the printed ranges, for 0 < rho < 1 (rho_viz = 1)")
 d.quote("thresholds", "solution, stability",
         r"\frac{3 - \sqrt{3}}{6} \cdot \varrho_{\text{víz}}, \quad \text{vagy} \quad \frac{3 + \sqrt{3}}{6}",
         reading=(sp.Matrix([R1, R2]), sp.Matrix([r1, r2])), note="rho_viz = 1")

@@ -18,7 +18,7 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Eq, Erratum, Prediction
+from symfloat import Derivation, Eq, Erratum, Holds, Prediction
 from symfloat.engine.floating_witness import Body, FloatingWitness
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.model.prediction import box_uprights
@@ -139,7 +139,8 @@ dv.quote("vasa", L4, "Eine Lösung wäre gewesen, es tiefer zu versenken oder ei
 # ---- the words around the formulas (second pass) -----------------------------------------------------
 L5 = "Metazentrum unterhalb des Schwerpunkts"
 L6 = "formula list"
-stable_sign = sp.sign(I_w / V_b - (z_G - z_B))          # Duhamel's criterion for this hull (the step criterion)
+stable_margin = I_w / V_b - (z_G - z_B)                 # Duhamel's criterion for this hull (the step criterion)
+stable_sign = sp.sign(stable_margin)
 dv.quote("buoyancy-point", L4, "Daher ist mit die Höhe des Schwerpunkts ($z_G$)8670 als dem Angriffspunkt der "
          "gegebenen Auftriebskraft", reading=(z_B, c - d),
          erratum=Erratum("misprint", "high", r"z_G \text{ als dem Angriffspunkt der Schwerkraft}",
@@ -161,7 +162,7 @@ dv.quote("below-G", L5, "Wenn der Metazentrum über oder unter dem Schwerpunkt l
                          corrected_reading=(sp.Piecewise((stable_sign, z_M < z_G), (-1, True)), -1)))
 dv.quote("wide-hull", L4, "Mit anderen Worten: Stabilität wird mit großen Werten von $b/c$ (Breite größer als "
          "Tiefgang) erreicht.",
-         reading=(sp.Piecewise((stable_sign, 2 * b > d), (1, True)), 1),
+         reading=Holds(sp.Implies(2 * b > d, stable_margin > 0)),
          erratum=Erratum("claim", "high", r"\text{Stabilität bei jedem Tiefgang, wenn } b/c > \sqrt{3/2} "
                          r"\text{ (Breite groß gegen die Höhe)}",
                          "e = b^2/(6c^2) - s(1 - s) with s = d/(2c), and s(1 - s) <= 1/4: every draught is stable "
@@ -169,8 +170,7 @@ dv.quote("wide-hull", L4, "Mit anderen Worten: Stabilität wird mit großen Wert
                          "the draught. As printed ('breadth greater than draught' makes the hull stable) it fails: "
                          "b = 0.9 c, d = 0.8 c has 2b > d but e = 0.135 - 0.24 < 0 (z_M - z_G = -0.2625 c), "
                          "unstable. A claim of the lesson.",
-                         corrected_reading=(sp.Piecewise((stable_sign, b > sp.sqrt(sp.Rational(3, 2)) * c), (1, True)),
-                                            1)),
+                         corrected_reading=Holds(sp.Implies(b > sp.sqrt(sp.Rational(3, 2)) * c, stable_margin > 0))),
          note="read as: a hull whose breadth 2b exceeds its draught d is stable")
 dv.quote("displaced-volume-claim", L6, "was bedeutet, dass das verdrängte Wasser ein gleiches oder größeres Volumen "
          "als der Gegenstand einnimmt.",

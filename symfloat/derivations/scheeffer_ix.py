@@ -49,7 +49,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum
+from symfloat import PRINTED_DIGITS, Cases, Derivation, Eq, Erratum, RealRoots
 from symfloat.model.derivation import Figure, Report
 from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
@@ -839,13 +839,18 @@ ROWS_161 = (("I", r"- I. wenn  $F(2\sigma) < 0$ ,  $F(1) > 0$ ,  $n > n_1$  ist,
             ("III", r"- III. wenn  $F(2\sigma) > 0$ ,  $F(1) > 0$ ,  $n < n_1$  ist, zwei reelle Wurzeln,", (1, 1, -1), 2),
             ("IV", r"- IV. wenn  $F(2\sigma) > 0$ ,  $F(1) < 0$ ,  $n < n_1$  ist, eine reelle Wurzel,", (1, -1, -1), 1),
             ("V", r"- V. wenn  $F(2\sigma) > 0$ ,  $F(1) > 0$ ,  $n > n_1$  ist, keine reelle Wurzel.", (1, 1, 1), 0))
+F_S = quartic.subs(sg, 1 - s)              # (136) with sigma = 1 - s
+REGION_161 = {s: (sp.Rational(23, 32), 1), n: (1, 3)}         # s > 23/32, a >= b; n = 3 is far into row V
 for row, text, signs, count in ROWS_161:
-    sv, nv = CASES_161[row]
+    ends = (F_S.subs(z, 2 * (1 - s)), F_S.subs(z, 1), n - sp.Subs(N1, t, t_s))
+    cond = sp.And(*(e < 0 if sign < 0 else e > 0 for e, sign in zip(ends, signs)))
     d.quote(f"161-{row}", "(161)", text,
-            reading=(sp.Matrix(_ends(sv, nv) + [_count(sv, nv, 2 * (1 - sv), 1)]), sp.Matrix(list(signs) + [count])),
-            note=f"read at s = {sv}, n = {nv}: the signs of F(2 sigma), F(1) (the dry triangle), n - n_1 (156), and the "
-                 "number of real roots of (136) in (2 sigma, 1] by exact root isolation; the tests count the roots "
-                 "on a grid of s and n in every case")
+            reading=Cases(((cond, sp.Eq(RealRoots(F_S, z, 2 * (1 - s), 1), count)),), REGION_161,
+                          exhaustive=False),
+            note="a row of the case table on the whole region s > 23/32, 1 < n < 3: where F(2 sigma), F(1) (136) and "
+                 "n - n_1 (156) have the row's signs, F has the row's number of real roots in 2 sigma < z < 1 (Sturm "
+                 f"counts); the row occurs (at s = {CASES_161[row][0]}, n = {CASES_161[row][1]} for one), and the "
+                 "tests count the roots on a grid of s and n in every case")
 d.quote("162-premise", "(162)",
         r"Das rechtwinklige Parallelepipid hat unter der Voraussetzung  $s \geq \frac{23}{32}$ , wenn es um eine mit  "
         r"$c$  parallele Achse gedreht wird, im zweiten Drehungsgebiet",

@@ -175,9 +175,9 @@ def _relation(reading, results, domain, seed, timing) -> IdentityResult:
 
 
 def _relation_outcome(name) -> Outcome:
-    """A relation has no quantity for the definition route to measure: the relation check samples it."""
+    """A case table has no quantity for the definition route to measure: the relation check samples it."""
     out = Outcome(name)
-    out.note = "definition route: a relation, decided on its domain by the relation check"
+    out.note = "definition route: a case table, decided on its domain by the relation check"
     out.measurable = False
     return out
 
@@ -234,6 +234,8 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
     for p in d.printed:      # witnesses evaluate closed forms, never a defining integral again
         if is_relation(p.reading):
             identities[p.name] = _relation(p.reading, results, domain, f"{d.id}/{p.name}", timing)
+            if p.reading.indicators() is not None:       # what a witness measuring a truth compares with
+                readings[p.name] = _resolved(p.reading.indicators(), results, closed)
         elif p.reading is not None:
             t0 = time.perf_counter()
             readings[p.name] = _resolved(p.reading, results, closed)
@@ -243,6 +245,8 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
         if p.erratum is not None and is_relation(p.erratum.corrected_reading):
             corrected[p.name] = _relation(p.erratum.corrected_reading, results, domain,
                                           f"{d.id}/{p.name}#corrected", timing)
+            if p.erratum.corrected_reading.indicators() is not None:
+                readings[p.name + "#corrected"] = _resolved(p.erratum.corrected_reading.indicators(), results, closed)
         elif p.erratum is not None and p.erratum.corrected_reading is not None:
             t0 = time.perf_counter()
             readings[p.name + "#corrected"] = _resolved(p.erratum.corrected_reading, results, closed)
@@ -265,7 +269,9 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
             continue
         for key, reading in ((p.name, p.reading),
                              (p.name + "#corrected", p.erratum.corrected_reading if p.erratum else None)):
-            if is_relation(reading):
+            if is_relation(reading) and reading.indicators() is not None:     # its truth, measured as 1/0
+                outcomes.setdefault(key, []).append(route.outcome(key, reading.indicators()))
+            elif is_relation(reading):
                 outcomes.setdefault(key, []).append(_relation_outcome(route.name))
             elif reading is not None:
                 outcomes.setdefault(key, []).append(route.outcome(key, reading))

@@ -21,6 +21,7 @@ shown and counted, never a pass.
 """
 from __future__ import annotations
 
+import functools
 import itertools
 import time
 from fractions import Fraction
@@ -34,8 +35,10 @@ from .roots import grid_roots
 
 __all__ = ["check_relation", "statement", "SAMPLES"]
 
+DIGITS = 60            # working precision of the numeric sign of a relation
 SAMPLES = 40           # random points after the boundary points
-SLICES = 4             # random points through which the statement is followed along each symbol
+LINES = 16             # at most so many lines through boundary and random points
+SLICES = 3             # random points through which the statement is followed along each symbol
 NEAR = sp.Rational(1, 1000)
 
 
@@ -58,8 +61,51 @@ def statement(r: Relation) -> list[tuple[str, sp.Basic]]:
     return out
 
 
+@functools.lru_cache(maxsize=4096)
+def _compiled(rel):
+    """The two sides of *rel* as one mpmath function of its free symbols (sorted by name), or None."""
+    if rel.has(RealRoots):
+        return None
+    symbols = tuple(sorted(rel.free_symbols, key=lambda q: q.name))
+    try:
+        return symbols, sp.lambdify(symbols, [rel.lhs, rel.rhs], "mpmath")
+    except (TypeError, ValueError, NameError, SyntaxError):
+        return None
+
+
+def _numeric(rel, point):
+    """*rel* at a rational *point* by the signs of its sides' difference at 60 digits, when that
+    difference is clearly away from zero (else None: the exact evaluation decides)."""
+    compiled = _compiled(rel)
+    if compiled is None or not all(point.get(q, sp.S.Half).is_Rational for q in compiled[0]):
+        return None
+    symbols, f = compiled
+    if any(q not in point for q in symbols):
+        return None
+    with mpmath.workdps(DIGITS):
+        try:
+            lhs, rhs = f(*(mpmath.mpf(point[q].p) / point[q].q for q in symbols))
+            lhs, rhs = mpmath.mpf(lhs), mpmath.mpf(rhs)
+        except (ArithmeticError, TypeError, ValueError, ZeroDivisionError, NameError):
+            return None
+        if not (mpmath.isfinite(lhs) and mpmath.isfinite(rhs)):
+            return None
+        d = lhs - rhs
+        if abs(d) <= mpmath.mpf(10) ** (15 - DIGITS) * max(1, abs(lhs), abs(rhs)):
+            return None
+        return bool(type(rel)(sp.Float(d, 20), 0))
+
+
 def _truth(expr, point):
-    """True/False of a boolean statement at *point*, or None when SymPy cannot decide it."""
+    """True/False of a boolean statement at *point*, or None when SymPy cannot decide it.  Each
+    relation is decided by :func:`_numeric` where its difference is clearly not zero, else exactly."""
+    known = {}
+    for rel in expr.atoms(sp.core.relational.Relational):
+        v = _numeric(rel, point)
+        if v is not None:
+            known[rel] = sp.true if v else sp.false
+    if known:
+        expr = expr.xreplace(known)
     try:
         v = expr.xreplace(point).doit()
         v = sp.simplify_logic(v) if isinstance(v, sp.logic.boolalg.Boolean) and v not in (sp.true, sp.false) \
@@ -91,6 +137,8 @@ def _valid(point, where) -> bool | None:
 def _finite_ok(expr, point) -> bool:
     """The relations of the statement are defined at *point* (no division by zero)."""
     for rel in expr.atoms(sp.core.relational.Relational):
+        if rel.has(RealRoots) or _numeric(rel, point) is not None:
+            continue                    # a root count is always a number
         for side in (rel.lhs, rel.rhs):
             v = sp.sympify(side).xreplace(point)
             if v.has(sp.zoo, sp.nan) or (v.is_number and not v.is_finite):
@@ -144,9 +192,9 @@ def _random(symbols, intervals, seed):
 
 
 def _sampled(parts, symbols, intervals, where, seed, samples, slices=SLICES):
-    """Boundary points, then random points; through the first *slices* valid random points, the
-    statement along each symbol (the others fixed) around the roots of its relations."""
-    good, undecided, sliced = 0, 0, 0
+    """Boundary points, then random points; through every boundary point and the first *slices* valid
+    random points, the statement along each symbol (the others fixed) around the roots of its relations."""
+    good, undecided, sliced, lines = 0, 0, 0, set()
     points = itertools.chain(_boundary(symbols, intervals),
                              itertools.islice(_random(symbols, intervals, seed), samples * 10))
     randoms, edge = 0, len(list(_boundary(symbols, intervals)))
@@ -167,11 +215,14 @@ def _sampled(parts, symbols, intervals, where, seed, samples, slices=SLICES):
             undecided += 1
             continue
         good += 1
-        if k >= edge and sliced < slices:
-            sliced += 1
+        if (k < edge and len(symbols) > 1) or (k >= edge and sliced < slices):
+            sliced += k >= edge
             for x in symbols:
                 fixed = {y: v for y, v in point.items() if y != x}
-                status, at, bad, n = _univariate(parts, x, intervals[x], where, fixed)
+                if (x, tuple(sorted(fixed.items(), key=str))) in lines or len(lines) >= LINES:
+                    continue
+                lines.add((x, tuple(sorted(fixed.items(), key=str))))
+                status, at, bad, n = _univariate(parts, x, intervals[x], where, fixed, exact=len(symbols) == 1)
                 if status == "refuted":
                     return "refuted", good + n, at, bad
                 good += n
@@ -315,14 +366,19 @@ def _numeric_roots(parts, x, lo, hi) -> list:
                     continue            # a root count jumps where its roots merge, not where it vanishes
                 with mpmath.workdps(30):
                     try:
-                        if piece.is_polynomial(x):
-                            found += [mpmath.mpf(sp.re(r)) for r in sp.Poly(piece, x).nroots(n=30, maxsteps=200)
+                        poly = sp.Poly(piece, x) if piece.is_polynomial(x) else None
+                        if poly is not None and poly.domain.is_QQ or poly is not None and poly.domain.is_ZZ:
+                            found += [mpmath.mpf(sp.N((u + v) / 2, 30)) for (u, v), _ in
+                                      poly.intervals(eps=sp.Rational(1, 10 ** 25))]
+                        elif poly is not None:
+                            found += [mpmath.mpf(sp.re(r)) for r in poly.nroots(n=30, maxsteps=200)
                                       if abs(sp.im(r)) < 1e-20]
                         else:
                             f = sp.lambdify(x, piece, "mpmath")
                             grid = [flo + (fhi - flo) * k / 400 for k in range(401)]
                             found += grid_roots(lambda dps: f, grid, 15)
-                    except (ArithmeticError, TypeError, ValueError, ZeroDivisionError, sp.PolynomialError):
+                    except (ArithmeticError, TypeError, ValueError, ZeroDivisionError, sp.PolynomialError,
+                            mpmath.libmp.NoConvergence):
                         continue
     return sorted(r for r in found if flo < r < fhi)
 
@@ -356,7 +412,7 @@ def _around_roots(parts, x, iv) -> list:
     return sorted({q for q in points if iv.contains(q) == sp.true})
 
 
-def _univariate(parts, x, iv, where, fixed):
+def _univariate(parts, x, iv, where, fixed, exact=True):
     """The statement along *x* with the other symbols *fixed*: ``(status, point, failed parts, checks)``,
     status ``proved``/``refuted`` by sign cells, else ``sampled`` (or ``refuted``) at the points around
     its numeric roots."""
@@ -367,7 +423,7 @@ def _univariate(parts, x, iv, where, fixed):
         status, point, bad, cells = proof
         return status, ({**fixed, **point} if point else None), bad, cells
     checked = 0
-    for q in _exact_roots(parts, x, iv) + _around_roots(parts, x, iv):
+    for q in (_exact_roots(parts, x, iv) if exact else []) + _around_roots(parts, x, iv):
         at = {x: q}
         if _valid(at, where) is not True or not all(_finite_ok(e, at) for _, e in parts):
             continue
@@ -433,8 +489,21 @@ def check_relation(r: Relation, results: dict, domain: Domain, seed_text: str, s
         elif status == "undecided":
             result.tried.append(f"{extra} points where SymPy could not decide the statement" if extra
                                 else "no point satisfies the domain's conditions")
+    if isinstance(r, Cases) and result.holds:
+        _rows_occur(r, results, domain, seed_text, samples, result)
     result.seconds = time.perf_counter() - t0
     return result
+
+
+def _rows_occur(r: Cases, results, domain, seed_text, samples, result):
+    """A row whose condition holds at no point checked states nothing: the table is then undecided.
+    Each row is looked for as a counterexample to its condition's negation."""
+    for i, (cond, _) in enumerate(r.rows):
+        probe = check_relation(Holds(sp.Not(cond), dict(r.domain), r.where), results, domain,
+                               f"{seed_text}/row {i + 1}", samples)
+        if probe.status != "refuted":
+            result.status, result.strategy = "undecided", ""
+            result.tried.append(f"row {i + 1}: its condition held at no point checked")
 
 
 def _counterexample(point, bad) -> dict:

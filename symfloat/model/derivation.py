@@ -219,9 +219,10 @@ class Derivation:
         missing = [t for t in w.targets if t not in names]
         if missing:
             raise ValueError(f"witness {w.name!r} targets unknown printed formulas {missing}")
-        related = [p.name for p in self.printed if p.name in w.targets and is_relation(p.reading)]
-        if related:
-            raise ValueError(f"witness {w.name!r} targets relations {related}: the relation check samples them")
+        tables = [p.name for p in self.printed if p.name in w.targets and is_relation(p.reading)
+                  and p.reading.indicators() is None]
+        if tables:
+            raise ValueError(f"witness {w.name!r} targets case tables {tables}: the relation check samples them")
         self.witnesses.append(w)
         return w
 

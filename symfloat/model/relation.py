@@ -24,7 +24,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-__all__ = ["Relation", "Holds", "Iff", "Cases", "RealRoots", "is_relation", "relation_latex", "conditions"]
+__all__ = ["Relation", "Holds", "Iff", "Cases", "RealRoots", "is_relation", "relation_latex", "conditions",
+           "indicator"]
 
 
 def _interval(bounds) -> sp.Interval:
@@ -57,6 +58,12 @@ class Relation:
         """The conditions of the relation, in order (for symbols and display)."""
         raise NotImplementedError
 
+    def indicators(self):
+        """The relation as a chain of 1/0 indicators, for a witness that measures a truth (a stable
+        position: 1 or 0) at its cases: ``Holds(c)`` is ``(1 if c, 1)``, ``Iff(a, b)`` is ``(1 if a, 1 if b)``;
+        None for a case table."""
+        return None
+
     def symbols(self) -> set:
         return set().union(*(sp.sympify(c).free_symbols for c in self.parts()))
 
@@ -80,6 +87,9 @@ class Holds(Relation):
     def parts(self):
         return (self.condition,)
 
+    def indicators(self):
+        return (indicator(self.condition), sp.Integer(1))
+
 
 @dataclass(frozen=True, init=False)
 class Iff(Relation):
@@ -98,6 +108,9 @@ class Iff(Relation):
 
     def parts(self):
         return (self.a, self.b)
+
+    def indicators(self):
+        return (indicator(self.a), indicator(self.b))
 
 
 @dataclass(frozen=True, init=False)
@@ -123,6 +136,11 @@ class Cases(Relation):
 
     def parts(self):
         return tuple(x for row in self.rows for x in row)
+
+
+def indicator(condition) -> sp.Piecewise:
+    """1 where *condition* holds, else 0."""
+    return sp.Piecewise((1, condition), (0, True))
 
 
 def is_relation(reading) -> bool:
@@ -167,7 +185,12 @@ class RealRoots(sp.Function):
     def eval(cls, p, x, lo, hi):
         if (p.free_symbols - {x}) or lo.free_symbols or hi.free_symbols:
             return None
-        poly = sp.Poly(sp.sqf_part(sp.expand(p), x), x)
+        if not all(e.is_Rational or e.is_infinite for e in (lo, hi)):
+            return None
+        poly = sp.Poly(p, x)
+        if not (poly.domain.is_QQ or poly.domain.is_ZZ):
+            return None                 # Sturm counts are exact over the rationals only: left unevaluated
+        poly = poly.sqf_part()
         if poly.is_zero:
             raise ValueError("RealRoots of the zero polynomial")
         n = poly.count_roots(None if lo == -sp.oo else lo, None if hi == sp.oo else hi)
