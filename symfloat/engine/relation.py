@@ -172,7 +172,7 @@ def _rational_near(x, towards):
     return q
 
 
-def _boundary(symbols, intervals, limit=243):
+def _boundary(symbols, intervals, limit=81):
     """Every combination of the symbols' ends and midpoints (at most *limit*, in a stable order)."""
     grids = [_ends(intervals[s]) for s in symbols]
     for i, combo in enumerate(itertools.product(*grids)):
@@ -194,7 +194,7 @@ def _random(symbols, intervals, seed):
 def _sampled(parts, symbols, intervals, where, seed, samples, slices=SLICES):
     """Boundary points, then random points; through every boundary point and the first *slices* valid
     random points, the statement along each symbol (the others fixed) around the roots of its relations."""
-    good, undecided, sliced, lines = 0, 0, 0, set()
+    good, undecided, sliced, lines = 0, 0, 0, {}
     points = itertools.chain(_boundary(symbols, intervals),
                              itertools.islice(_random(symbols, intervals, seed), samples * 10))
     randoms, edge = 0, len(list(_boundary(symbols, intervals)))
@@ -219,13 +219,14 @@ def _sampled(parts, symbols, intervals, where, seed, samples, slices=SLICES):
             sliced += k >= edge
             for x in symbols:
                 fixed = {y: v for y, v in point.items() if y != x}
-                if (x, tuple(sorted(fixed.items(), key=str))) in lines or len(lines) >= LINES:
-                    continue
-                lines.add((x, tuple(sorted(fixed.items(), key=str))))
-                status, at, bad, n = _univariate(parts, x, intervals[x], where, fixed, exact=len(symbols) == 1)
-                if status == "refuted":
-                    return "refuted", good + n, at, bad
-                good += n
+                key = (x, tuple(sorted(fixed.items(), key=str)))
+                if key not in lines and len(lines) < LINES:
+                    lines[key] = fixed
+    for (x, _), fixed in lines.items():           # the points first, then the lines through them
+        status, at, bad, n = _univariate(parts, x, intervals[x], where, fixed, exact=len(symbols) == 1)
+        if status == "refuted":
+            return "refuted", good + n, at, bad
+        good += n
     return ("sampled" if good and not undecided else "undecided"), good, None, undecided
 
 
