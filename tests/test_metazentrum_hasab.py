@@ -167,3 +167,13 @@ def test_relations_of_the_claims_in_words_refute_their_mutants(meta, hasab):
     assert _relation_status(h, ranges.erratum.corrected_reading) == "sampled"
     mutant = Iff(hm.quad > 0, (hm.rho < sp.Rational(21, 100)) | (hm.rho > hm.R2), {hm.rho: (0, 1)})
     assert _relation_status(h, mutant) == "refuted"
+
+
+def test_long_prism_statement_is_a_relation(hasab):
+    """'l >> 1: no need to look at turns about the axis across the prism' read as the pitching metacentric
+    height l^2/(12 rho) - (1 - rho)/2 > 0 for l > 2; for a short prism (l down to 1/2) it fails (l = 1/2,
+    rho = 1/2: 1/24 - 1/4 < 0)."""
+    from symfloat.model import Holds
+    h, hm = hasab
+    assert _relation_status(h, h.get_printed("long-prism").reading) == "sampled"
+    assert _relation_status(h, Holds(hm.GMp > 0, {hm.l: (sp.Rational(1, 2), 1000)})) == "refuted"

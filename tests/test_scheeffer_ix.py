@@ -431,3 +431,21 @@ def test_rows_of_161_are_case_table_rows_that_refute_a_wrong_count(row, wrong):
     r = _relation(mutant, D.results(), Domain(D.domain, tuple(D.constraints)), "mutant",
                   {"proofs": 0.0, "sampling": 0.0})
     assert r.status == "refuted" and "row 1" in r.counterexample["lhs"]
+
+
+def test_root_counts_in_words_are_relations_on_their_regions():
+    """(143), (144) in words and 'eine oder drei reelle Wurzeln' hold on their regions; a wrong count, or the
+    region of (143) stretched past s = 23/32 where F is no longer monotone, is refuted."""
+    from symfloat.engine.check import _relation
+    from symfloat.engine.identity import Domain
+    from symfloat.model import Holds, RealRoots
+    dom = Domain(D.domain, tuple(D.constraints))
+
+    def status(reading):
+        return _relation(reading, D.results(), dom, "mutant", {"proofs": 0.0, "sampling": 0.0}).status
+    for name in ("143-words", "144-words", "one-or-three"):
+        assert status(D.get_printed(name).reading) == "sampled"
+    count = RealRoots(M.F_S, M.z, 2 * (1 - M.s), 1)
+    assert status(Holds(sp.Implies(M.n < M.rho_s, sp.Eq(count, 2)), M.REGION_143)) == "refuted"
+    assert status(Holds(sp.Implies(M.n < M.rho_s, sp.Eq(count, 1)), {M.s: (sp.Rational(1, 2), 1), M.n: (1, 3)})) \
+        == "refuted"

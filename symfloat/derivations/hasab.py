@@ -23,7 +23,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import Derivation, Erratum, Iff, Prediction
+from symfloat import Derivation, Erratum, Holds, Iff, Prediction
 from symfloat.engine.floating_witness import QUANTITIES, Body, FloatingWitness
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.geometry.floating import box, clip_below, floating_state, volume_centroid
@@ -202,6 +202,19 @@ d.quote("energy-principle", "solution", "Stabil egyensúlyi helyzetben a rendsze
         reading=(sp.sign(c2), sp.sign(GM)),
         note="read for this body: the energy has a minimum at alpha = 0 (c_2 > 0) exactly where the metacentric "
              "criterion calls the position stable (GM > 0): E''(0) = weight x GM (the step energy-metacentric)")
+
+# ---- the statement: a long prism need not be checked about the axis across it -------------------------------
+Tp, GMp = sp.symbols("T_p GM_p", real=True)
+d.step("T-pitch", (Tp, sp.Integral(xi ** 2, (xi, -l / 2, l / 2)), l ** 3 / 12), "integration", result=Tp,
+       note="the waterplane l x 1 about its axis across the prism (parallel to the square end faces)")
+d.step("GM-pitch", (GMp, Tp / V1 - e1), "definition", result=GMp, uses=("T-pitch", "V1", "e1"),
+       note="metacentric height for pitching: l^2/(12 rho) - (1 - rho)/2")
+d.quote("long-prism", "problem", r"Mivel a hasáb hosszú, azaz mivel $l \gg 1$, felesleges foglalkozni az alaplappal "
+        "párhuzamos tengely körüli elfordulásokkal",
+        reading=Holds(GMp > 0, {l: (2, 1000)}),
+        note="read as: for a long prism (here l > 2) the position is stable against pitching at every density, so "
+             "only the heel about the long axis needs a study. l^2/(12 rho) > (1 - rho)/2 holds for l^2 > 6 rho "
+             "(1 - rho), at most 3/2: every l > sqrt(3/2) = 1.22 will do, and 'l >> 1' is more than is needed")
 
 # ---- remark: the upright prism --------------------------------------------------------------------
 GMu = (sp.Rational(1, 12)) / (rho * l) - (l / 2 - rho * l / 2)

@@ -49,7 +49,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import PRINTED_DIGITS, Cases, Derivation, Eq, Erratum, RealRoots
+from symfloat import PRINTED_DIGITS, Cases, Derivation, Eq, Erratum, Holds, RealRoots
 from symfloat.model.derivation import Figure, Report
 from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
@@ -478,10 +478,14 @@ d.quote("F2s-negative", "IX.B",
         r"Die Bedingung  $F(2\sigma) < 0$  kann nur erfüllt werden (141), wenn  $\left(\frac{a}{b}\right)^2 < "
         r"2(1-s)(4s-1)$  ist.", reading=(sp.Subs(Fz, z, 2 * sg), 2 * sg ** 2 * (n - rho)),
         note="(141): F(2 sigma) = 2 sigma^2 (n - rho), negative exactly when n < rho")
+F_S = quartic.subs(sg, 1 - s)              # (136) with sigma = 1 - s
+REGION_143 = {s: sp.Interval.Lopen(sp.Rational(1, 2), sp.Rational(23, 32)), n: (1, 3)}   # s <= 23/32, a >= b
 d.quote("143-words", "(143)",
         r"Für  $s \leq \frac{23}{32}$  hat  $F(z) = 0$  eine reelle Wurzel (zwischen  $z = 2\sigma$  und  $z = 1$ ) d. h. "
         r"im zweiten Drehungsgebiet giebt es eine Gleichgewichtslage, wenn",
-        reading=(_count(S_LOW, 1, 2 * (1 - S_LOW), 1), 1), note="read at s = 7/10, n = 1 < rho = 27/25")
+        reading=Holds(sp.Implies(n < rho_s, sp.Eq(RealRoots(F_S, z, 2 * (1 - s), 1), 1)), REGION_143),
+        note="read on the region 1/2 < s <= 23/32, 1 < n < 3: where (143) holds, F has one real root in "
+             "2 sigma < z < 1 (Sturm counts)")
 d.quote("143-stable", "(143)",
         r"Und zwar ist das Gleichgewicht (zunächst für die Drehungsachse) stabil, da  $F(z)$  aus dem Negativen in's "
         r"Positive gehend gleich Null wird.",
@@ -498,8 +502,9 @@ d.quote("144", "(144)", r"$$\left(\frac{a}{b}\right)^2 > 2(1-s)4s-1 \quad (144)$
                         corrected_reading=((a / b) ** 2 - rho_s, F2s / (2 * sg ** 2))))
 d.quote("144-words", "(144)",
         r"Umgekehrt hat  $F(z) = 0$  keine reelle Wurzel zwischen  $z = 2\sigma$  und  $z = 1$ , wenn",
-        reading=(_count(S_LOW, sp.Rational(3, 2), 2 * (1 - S_LOW), 1), 0),
-        note="read at s = 7/10, n = 3/2 > rho = 27/25")
+        reading=Holds(sp.Implies(n > rho_s, sp.Eq(RealRoots(F_S, z, 2 * (1 - s), 1), 0)), REGION_143),
+        note="read on the region 1/2 < s <= 23/32, 1 < n < 3: where (144) holds, F has no real root in "
+             "2 sigma < z < 1 (Sturm counts)")
 d.quote("144-first-region", "(144)",
         r"d. h. wenn im ersten Drehungsgebiet, die aufrechte Lage eingeschlossen, ein stabiles Gleichgewicht "
         r"existiert\*).", reading=(6 * s * (1 - s) - rho, 2 * (1 - s) ** 2),
@@ -508,10 +513,12 @@ d.quote("144-first-region", "(144)",
 d.quote("one-or-three", "IX.B",
         r"in diesem letzteren Falle hat  $F(z)$  zwischen  $z = 0$  und  $z = \infty$  ein Maximum und ein Minimum und "
         r"daher  $F(z) = 0$  eine oder drei reelle Wurzeln.",
-        reading=(sp.Matrix([_count(sp.Rational(73, 100), sp.Rational(251, 250), 0), _count(sp.Rational(73, 100),
-                                                                                         sp.Rational(51, 50), 0)]),
-                 sp.Matrix([3, 1])),
-        note="read at s = 73/100 (> 23/32) and n = 251/250, 51/50 (sigma n < 9/32): three and one positive roots")
+        reading=Holds(sp.Implies((1 - s) * n < sp.Rational(9, 32),
+                                 sp.Eq(RealRoots(F_S, z, 0, sp.oo), 1) | sp.Eq(RealRoots(F_S, z, 0, sp.oo), 3)),
+                      {s: (sp.Rational(23, 32), 1), n: (1, 3)}),
+        note="read on the region s > 23/32, 1 < n < 3: where sigma n < 9/32 (F has a maximum and a minimum in "
+             "z > 0) F has one or three positive real roots (Sturm counts; at s = 73/100 three for n = 251/250, "
+             "one for n = 51/50)")
 d.quote("third-term", "(145)", r"so ist darin  $z > 2\sigma$ , also um so mehr  $z > \frac{2}{3} \cdot 2\sigma$  und "
         r"das dritte Glied folglich positiv.",
         reading=(sp.Subs(3 * sg * n * (z - sp.Rational(2, 3) * 2 * sg), z, 2 * sg), 2 * sg ** 2 * n),
@@ -839,7 +846,6 @@ ROWS_161 = (("I", r"- I. wenn  $F(2\sigma) < 0$ ,  $F(1) > 0$ ,  $n > n_1$  ist,
             ("III", r"- III. wenn  $F(2\sigma) > 0$ ,  $F(1) > 0$ ,  $n < n_1$  ist, zwei reelle Wurzeln,", (1, 1, -1), 2),
             ("IV", r"- IV. wenn  $F(2\sigma) > 0$ ,  $F(1) < 0$ ,  $n < n_1$  ist, eine reelle Wurzel,", (1, -1, -1), 1),
             ("V", r"- V. wenn  $F(2\sigma) > 0$ ,  $F(1) > 0$ ,  $n > n_1$  ist, keine reelle Wurzel.", (1, 1, 1), 0))
-F_S = quartic.subs(sg, 1 - s)              # (136) with sigma = 1 - s
 REGION_161 = {s: (sp.Rational(23, 32), 1), n: (1, 3)}         # s > 23/32, a >= b; n = 3 is far into row V
 for row, text, signs, count in ROWS_161:
     ends = (F_S.subs(z, 2 * (1 - s)), F_S.subs(z, 1), n - sp.Subs(N1, t, t_s))
