@@ -116,3 +116,14 @@ def test_a_row_that_never_occurs_is_undecided():
                   exhaustive=False)
     r = check_relation(table, {}, DOMAIN, "t")
     assert r.status == "undecided" and "row 2" in r.tried[-1]
+
+
+def test_sign_of_factors_proves_in_several_variables():
+    """c a / 4 + r c > 0 for a, c, r on positive intervals: SymPy's assumptions decide the factored sign once
+    the symbols are positive; a factor of unknown sign leaves it to sampling, which refutes a wrong claim."""
+    a, c, r = sp.symbols("a c r", real=True)
+    dom = Domain({a: (1, 2), c: (0, 3), r: (0, 1)})
+    proved = check_relation(Holds(c * a / 4 + r * c > 0), {}, dom, "t")
+    assert (proved.status, proved.strategy) == ("proved", "sign of factors")
+    assert check_relation(Holds(c * (a - 1) > 0), {}, dom, "t").status == "sampled"
+    assert check_relation(Holds(c * (a - sp.Rational(3, 2)) > 0), {}, dom, "t").status == "refuted"

@@ -154,8 +154,8 @@ def _ends(iv: sp.Interval) -> list:
         hi = hi if hi.is_finite else lo + 2000
         iv = sp.Interval(lo, hi, iv.left_open or not iv.start.is_finite, iv.right_open or not iv.end.is_finite)
     w = hi - lo
-    left = lo if not iv.left_open else _rational_near(lo, lo + NEAR * w)
-    right = hi if not iv.right_open else _rational_near(hi, hi - NEAR * w)
+    left = lo if not iv.left_open else _rational_near(lo + NEAR * w, lo)
+    right = hi if not iv.right_open else _rational_near(hi - NEAR * w, hi)
     return [left, _rational_near((lo + hi) / 2, (lo + 3 * hi) / 4), right]
 
 
@@ -435,6 +435,27 @@ def _univariate(parts, x, iv, where, fixed, exact=True):
     return "sampled", None, [], checked
 
 
+# ---- proof by the sign of factors, any number of variables ---------------------------------------------------
+def _signed(parts, intervals) -> bool:
+    """The statement is one relation ``f > g`` (or ``>=``, ``<``, ``<=``) whose difference, factored, is a
+    product of factors SymPy's assumptions call positive once every symbol whose interval lies in (0, oo) is
+    a positive symbol (``c D / 4`` for c, D > 0)."""
+    if len(parts) != 1 or not isinstance(parts[0][1], sp.core.relational.Relational):
+        return False
+    rel = parts[0][1]
+    if not isinstance(rel, (sp.StrictGreaterThan, sp.GreaterThan, sp.StrictLessThan, sp.LessThan)):
+        return False
+    if rel.has(RealRoots):
+        return False
+    diff = rel.lhs - rel.rhs if isinstance(rel, (sp.StrictGreaterThan, sp.GreaterThan)) else rel.rhs - rel.lhs
+    positive = {q: sp.Dummy(q.name, positive=True) for q, iv in intervals.items()
+                if iv.start.is_nonnegative and (iv.start.is_positive or iv.left_open)}
+    try:
+        return bool(sp.factor(sp.together(diff.xreplace(positive))).is_positive)
+    except (sp.PolynomialError, TypeError, ValueError):
+        return False
+
+
 # ---- the check ---------------------------------------------------------------------------------------------
 def _substituted(expr, results):
     for _ in range(len(results) + 1):
@@ -471,7 +492,10 @@ def check_relation(r: Relation, results: dict, domain: Domain, seed_text: str, s
     proof = None
     if len(symbols) == 1:
         proof = _proved(parts, symbols[0], intervals[symbols[0]], where)
-    if proof is not None:
+    if proof is None and _signed(parts, intervals):
+        result.status, result.strategy = "proved", "sign of factors"
+        result.tried = ["sign of factors: the difference factors into terms of known sign on the domain"]
+    elif proof is not None:
         status, point, bad, cells = proof
         result.tried = [f"sign cells: {cells} cells between the real roots of the relations' numerators and "
                         f"denominators, and the roots themselves"]
