@@ -175,10 +175,11 @@ def _relation(reading, results, domain, seed, timing) -> IdentityResult:
 
 
 def _relation_outcome(name) -> Outcome:
-    """A case table, or a relation on a domain of its own, has nothing for the definition route to measure
-    at the derivation's points: the relation check samples it on its domain."""
+    """A relation has no quantity for the definition route to measure: its truth at the route's three points
+    would confirm a relation that fails elsewhere.  The relation check samples its whole domain; a declared
+    witness may still measure its indicators at cases of its own."""
     out = Outcome(name)
-    out.note = "definition route: a relation on its own domain, decided there by the relation check"
+    out.note = "definition route: a relation, decided on its domain by the relation check"
     out.measurable = False
     return out
 
@@ -270,10 +271,7 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
             continue
         for key, reading in ((p.name, p.reading),
                              (p.name + "#corrected", p.erratum.corrected_reading if p.erratum else None)):
-            if is_relation(reading) and reading.indicators() is not None and not (reading.domain or reading.where):
-                # its truth, measured as 1/0 at the route's points (which know the derivation's domain only)
-                outcomes.setdefault(key, []).append(route.outcome(key, reading.indicators()))
-            elif is_relation(reading):
+            if is_relation(reading):
                 outcomes.setdefault(key, []).append(_relation_outcome(route.name))
             elif reading is not None:
                 outcomes.setdefault(key, []).append(route.outcome(key, reading))
