@@ -475,6 +475,14 @@ def check_relation(r: Relation, results: dict, domain: Domain, seed_text: str, s
     if all(c in (sp.true, sp.false) for c in r.parts()):
         return IdentityResult("trivial", tried=["none: SymPy decided the relation when it was built"])
     parts = [(name, _substituted(e, results)) for name, e in statement(r)]
+    if all(e in (sp.true, sp.false) for _, e in parts):       # the derived values let SymPy decide it
+        bad = [name for name, e in parts if e == sp.false]
+        result = IdentityResult("refuted" if bad else "proved", strategy="" if bad else "assumptions",
+                                tried=["the derived values inserted, SymPy's assumptions on the symbols decide it"])
+        if bad:
+            result.counterexample = {"point": {}, "lhs": "false (" + ", ".join(bad) + ")", "rhs": "true"}
+        result.seconds = time.perf_counter() - t0
+        return result
     symbols = set().union(*(e.free_symbols for _, e in parts))
     where = [w for w in (_substituted(sp.sympify(w), results) for w in tuple(domain.constraints) + r.where)
              if w.free_symbols & symbols]          # a constraint on other symbols does not restrict these
