@@ -824,12 +824,6 @@ d.quote("z1-between", "IX.B", r"Die Doppelwurzel  $z_1$  liegt also unbedingt zw
              "the double root exists only there (t < 1)")
 
 
-def _ends(sv, nv):
-    """Signs of F(2 sigma) and F(1) from the dry triangle (b = 1, a = sqrt(nv)) and of n - n_1 (156) at s = sv."""
-    pt = {sg: 1 - sv, s: sv, a: sp.sqrt(nv), b: 1}
-    return [sp.sign(F2s.subs(pt)), sp.sign(F1v.subs(pt)), sp.sign(nv - sp.Subs(N1, t, t_s.subs(s, sv)))]
-
-
 def _stabilities(sv, nv):
     """Signs of F' at the real roots of (136) in (2 sigma, 1) at s = sv, n = nv, in the order of z (of the tilt):
     + where F goes from - to + (stable about the axis, righting-sign), - where it goes from + to - (labile)."""

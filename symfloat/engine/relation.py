@@ -1,4 +1,4 @@
-"""Checking a relation (:mod:`symfloat.model.relation`): a proof where one variable is left, else sampling.
+"""Checking a relation (:mod:`symfloat.model.relation`): a proof where it can, else sampling.
 
 The statement checked at a point is: for :class:`Holds` its condition; for :class:`Iff` that both
 sides have the same truth; for :class:`Cases` that each row's claim holds where its condition does,
@@ -10,14 +10,21 @@ that some condition holds (``exhaustive``) and that no two do (``exclusive``).
   exactly (irreducible factors over Q, rational isolating intervals); the statement is evaluated
   exactly at a rational point of every cell between them, and at every root inside the domain, where
   a relation whose factor vanishes compares 0 and the others keep the sign of the neighbouring cell.
+* **Proof by signs** (evidence ``symbolic``), in any number of variables: the statement becomes
+  true once the derived values are inserted (SymPy's assumptions decide ``pi a b c/8 > 0``), or it
+  is one relation whose difference, factored, is positive once every symbol on a positive interval
+  is a positive symbol.
 * **Sampling** (evidence ``sampled``): the boundary of the domain first -- a closed end exactly, an
   open end approached to 1/1000 of the interval, in every combination with the other symbols' ends
   and midpoints -- then seeded random rational points; points outside *where* or the derivation's
-  constraints, or where the statement cannot be evaluated, are skipped.
+  constraints, or where the statement cannot be evaluated, are skipped.  Through the boundary points
+  and a few random ones the statement is then followed along each symbol, on both sides of every
+  root of its relations (exact roots where they are radicals, else 30-digit ones).  Each relation
+  is decided by its sign at 60 digits where that is clearly not zero, else exactly.
 
 A point where the statement is false refutes (the counterexample names the point and which part
-failed).  No valid point, or a relation SymPy cannot decide at a point, leaves it ``undecided``:
-shown and counted, never a pass.
+failed).  No valid point, a relation SymPy cannot decide at a point, or a row of a case table whose
+condition held at no point checked leaves it ``undecided``: shown and counted, never a pass.
 """
 from __future__ import annotations
 

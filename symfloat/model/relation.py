@@ -15,8 +15,9 @@ apply too):
 
 :class:`RealRoots` counts the distinct real roots of a polynomial in an open interval, so that "drei
 reelle Wurzeln" is read ``Eq(RealRoots(F, z, -oo, oo), 3)``.  The checks live in
-:mod:`symfloat.engine.relation`: a proof where the condition is univariate and rational, else exact
-sampling with the domain's boundary; a sampled counterexample refutes.
+:mod:`symfloat.engine.relation`: a proof where one variable is left and the relations are rational,
+or where the signs of the symbols decide, else exact sampling with the domain's boundary; a sampled
+counterexample refutes.
 """
 from __future__ import annotations
 
@@ -24,8 +25,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-__all__ = ["Relation", "Holds", "Iff", "Cases", "RealRoots", "is_relation", "relation_latex", "conditions",
-           "indicator"]
+__all__ = ["Relation", "Holds", "Iff", "Cases", "RealRoots", "is_relation", "relation_latex", "indicator"]
 
 
 def _interval(bounds) -> sp.Interval:
@@ -63,9 +63,6 @@ class Relation:
         position: 1 or 0) at its cases: ``Holds(c)`` is ``(1 if c, 1)``, ``Iff(a, b)`` is ``(1 if a, 1 if b)``;
         None for a case table."""
         return None
-
-    def symbols(self) -> set:
-        return set().union(*(sp.sympify(c).free_symbols for c in self.parts()))
 
     def intervals(self) -> dict:
         return dict(self.domain)
@@ -145,11 +142,6 @@ def indicator(condition) -> sp.Piecewise:
 
 def is_relation(reading) -> bool:
     return isinstance(reading, Relation)
-
-
-def conditions(reading) -> tuple:
-    """The SymPy conditions a relation states (its free symbols are the reading's symbols)."""
-    return reading.parts()
 
 
 def _domain_latex(r: Relation) -> str:
