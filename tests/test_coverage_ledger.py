@@ -89,8 +89,9 @@ def test_a_stale_or_malformed_waiver_is_an_error():
         account("hasab", quoted, [{"line": 11, "text": "$$s = \\varrho.$$", "reason": "notation", "note": "x"}])
     with pytest.raises(LedgerError, match="no span"):
         account("hasab", quoted, [{"line": 12, "text": "$$s = \\varrho.$$", "reason": "notation", "note": "x"}])
-    ok = account("hasab", quoted, [{"line": 3, "text": "$l \\gg 1$", "reason": "notation", "note": "assumption"}])
-    assert [e.reason for e in ok if e.span.text == "$l \\gg 1$"] == ["notation"]
+    text = "A teljes energia két részre bontható, a hasáb és a kiszorított víz helyzeti energiájára."
+    ok = account("hasab", quoted, [{"line": 7, "text": text, "reason": "notation", "note": "a splitting"}])
+    assert [e.reason for e in ok if e.span.text == text] == ["notation"]
 
 
 def test_waiver_files_use_judged_reasons_with_notes():

@@ -219,3 +219,19 @@ def test_the_correction_must_hold():
     rep = check_derivation(_mutated("Aa-whole", {"semi-ellipse", "Aa-AEB", "Aa-whole", "S2"}, erratum=wrong),
                            prove=False)
     assert any("correction does not hold" in f for f in rep.failures)
+
+
+def test_growth_in_words_is_a_relation_that_refutes_its_mutant():
+    """§228 'momentum ... maius fieri, quo magis ... distet': the derivative of the moment about EF in c = Oc is
+    positive (pi a b c/8, proved by the signs of a, b, c); the moment claimed to fall is refuted."""
+    from symfloat.engine.check import _relation
+    from symfloat.engine.identity import Domain
+    import sympy as sp
+
+    from symfloat.model import Holds
+    d, m = load("euler-220-228")
+    dom = Domain(d.domain, tuple(d.constraints))
+    p = d.get_printed("moment-grows")
+    status = _relation(p.reading, d.results(), dom, "t", {"proofs": 0.0, "sampling": 0.0}).status
+    falls = _relation(Holds(sp.Derivative(m.KEFc, m.c) < 0), d.results(), dom, "t", {"proofs": 0.0, "sampling": 0.0})
+    assert (status, falls.status) == ("proved", "refuted")

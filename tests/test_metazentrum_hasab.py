@@ -140,3 +140,40 @@ def test_wide_hull_counterexample_is_unstable_when_clipped():
         narrow = floating_state(box(8, Fraction(18, 10), 2, dps=40), (0, 0, 1), Fraction(2, 5))
         wide = floating_state(box(8, Fraction(25, 10), 2, dps=40), (0, 0, 1), Fraction(2, 5))
     assert narrow.metacentric_height < 0 < wide.metacentric_height
+
+
+def _relation_status(d, reading):
+    from symfloat.engine.check import _relation
+    from symfloat.engine.identity import Domain
+    return _relation(reading, d.results(), Domain(d.domain, tuple(d.constraints)), "mutant",
+                     {"proofs": 0.0, "sampling": 0.0}).status
+
+
+def test_relations_of_the_claims_in_words_refute_their_mutants(meta, hasab):
+    """The wide-hull claim and the hasab ranges are relations: the printed and corrected readings decide as the
+    record says, and a threshold moved off its closed form is refuted (sqrt(3/2) = 1.2247 from e = b^2/(6c^2) -
+    s(1 - s) >= b^2/(6c^2) - 1/4, moved to 1: e = -1/12 at b = c, s = 1/2; (3 -+ sqrt 3)/6 the roots of
+    rho^2 - rho + 1/6, the first moved to 0.21). A threshold moved by 2 % in four variables (b > 1.2 c) fails only
+    in a thin wedge around s = 1/2 that sampling need not meet: the check refutes, it does not prove."""
+    from symfloat.model import Holds, Iff
+    d, m = meta
+    wide = d.get_printed("wide-hull")
+    assert _relation_status(d, wide.reading) == "refuted"
+    assert _relation_status(d, wide.erratum.corrected_reading) == "sampled"
+    assert _relation_status(d, Holds(sp.Implies(m.b > m.c, m.stable_margin > 0))) == "refuted"   # b = c, s = 1/2
+    h, hm = hasab
+    ranges = h.get_printed("ranges")
+    assert _relation_status(h, ranges.reading) == "refuted"
+    assert _relation_status(h, ranges.erratum.corrected_reading) == "sampled"
+    mutant = Iff(hm.quad > 0, (hm.rho < sp.Rational(21, 100)) | (hm.rho > hm.R2), {hm.rho: (0, 1)})
+    assert _relation_status(h, mutant) == "refuted"
+
+
+def test_long_prism_statement_is_a_relation(hasab):
+    """'l >> 1: no need to look at turns about the axis across the prism' read as the pitching metacentric
+    height l^2/(12 rho) - (1 - rho)/2 > 0 for l > 2; for a short prism (l down to 1/2) it fails (l = 1/2,
+    rho = 1/2: 1/24 - 1/4 < 0)."""
+    from symfloat.model import Holds
+    h, hm = hasab
+    assert _relation_status(h, h.get_printed("long-prism").reading) == "sampled"
+    assert _relation_status(h, Holds(hm.GMp > 0, {hm.l: (sp.Rational(1, 2), 1000)})) == "refuted"

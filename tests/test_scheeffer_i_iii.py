@@ -121,3 +121,21 @@ def test_a_mutated_coefficient_of_12_is_refuted(loaded):
     mutated = dataclasses.replace(d, printed=[dataclasses.replace(p, reading=(V1 * m, wrong))], witnesses=[])
     rep = check_derivation(mutated, trust_steps=True)
     assert any("(12)" in f and "refuted" in f for f in rep.failures)
+
+
+def test_lost_relations_of_15_are_relations_that_refute_their_mutants():
+    """stable-V1m and labile-V1m: as printed (no relation of V1 m) refuted, corrected (V1 m > 0 iff the bracket
+    of (15) is positive; < 0 iff negative) sampled on the domain; the crossed equivalence is refuted."""
+    from symfloat.engine.check import _relation
+    from symfloat.engine.identity import Domain
+    from symfloat.model import Iff
+    d, m = load("scheeffer-i-iii")
+    dom = Domain(d.domain, tuple(d.constraints))
+
+    def status(reading):
+        return _relation(reading, d.results(), dom, "mutant", {"proofs": 0.0, "sampling": 0.0}).status
+    for name in ("stable-V1m", "labile-V1m"):
+        p = d.get_printed(name)
+        assert status(p.reading) == "refuted"
+        assert status(p.erratum.corrected_reading) == "sampled"
+    assert status(Iff(m.V1 * m.m > 0, m.crit15 < 0)) == "refuted"

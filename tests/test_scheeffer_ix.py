@@ -415,3 +415,37 @@ def test_alternation_at_the_point_of_its_reading_on_the_clipped_box():
     # clipped box has exactly stable, labile, stable, all in the second region
     found = _clipped_equilibria((math.sqrt(1.004), 1.0, 3.0), 0.73, (0, 1))
     assert [f[1] for f in found] == ["stable", "unstable", "stable"]
+
+
+@pytest.mark.parametrize("row, wrong", [("II", 2), ("IV", 0)])
+def test_rows_of_161_are_case_table_rows_that_refute_a_wrong_count(row, wrong):
+    """Each row of (161) is read on the whole region s > 23/32, 1 < n < 3 (the engine samples it and finds the
+    row's region); the same row with another root count is refuted (counts by Sturm's theorem)."""
+    from symfloat.engine.check import _relation
+    from symfloat.engine.identity import Domain
+    from symfloat.model import Cases, RealRoots
+    p = D.get_printed(f"161-{row}")
+    (cond, claim), = p.reading.rows
+    mutant = Cases(((cond, sp.Eq(claim.lhs, wrong)),), dict(p.reading.domain), exhaustive=False)
+    assert isinstance(claim.lhs, RealRoots)
+    r = _relation(mutant, D.results(), Domain(D.domain, tuple(D.constraints)), "mutant",
+                  {"proofs": 0.0, "sampling": 0.0})
+    assert r.status == "refuted" and "row 1" in r.counterexample["lhs"]
+
+
+def test_root_counts_in_words_are_relations_on_their_regions():
+    """(143), (144) in words and 'eine oder drei reelle Wurzeln' hold on their regions; a wrong count, or the
+    region of (143) stretched past s = 23/32 where F is no longer monotone, is refuted."""
+    from symfloat.engine.check import _relation
+    from symfloat.engine.identity import Domain
+    from symfloat.model import Holds, RealRoots
+    dom = Domain(D.domain, tuple(D.constraints))
+
+    def status(reading):
+        return _relation(reading, D.results(), dom, "mutant", {"proofs": 0.0, "sampling": 0.0}).status
+    for name in ("143-words", "144-words", "one-or-three"):
+        assert status(D.get_printed(name).reading) == "sampled"
+    count = RealRoots(M.F_S, M.z, 2 * (1 - M.s), 1)
+    assert status(Holds(sp.Implies(M.n < M.rho_s, sp.Eq(count, 2)), M.REGION_143)) == "refuted"
+    assert status(Holds(sp.Implies(M.n < M.rho_s, sp.Eq(count, 1)), {M.s: (sp.Rational(1, 2), 1), M.n: (1, 3)})) \
+        == "refuted"

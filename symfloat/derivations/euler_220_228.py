@@ -55,7 +55,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import Derivation, Eq, Erratum
+from symfloat import Derivation, Eq, Erratum, Holds
 from symfloat.engine.witness import Case, Computed
 from symfloat.model.claim import as_printed
 
@@ -565,10 +565,10 @@ d.step("left-branch-slope", (sp.Limit(xLc * b ** 2 / y ** 2, y, 0), a / 2 - c), 
 d.quote("moment-grows", "§228",
         "momentum sectionis aquae respectu axis latitudinalis EF maius fieri, quo magis latitudo maxima ef a "
         "punto axis AB medio C distet, ceteris paribus",
-        reading=(sp.Derivative(KEFc, c), c * D / 4),
+        reading=Holds(sp.Derivative(KEFc, c) > 0),
         note=claim("the moment about EF grows as ef moves away from the middle of AB (the text says 'C', the "
                    "middle is O, booked at 'middle-named-C'): at fixed a, b, D its derivative in c = Oc is "
-                   "cD/4 > 0."))
+                   "cD/4 = pi a b c/8 > 0 (read as the relation: the derivative is positive)."))
 d.quote("middle-named-C", "§228", r"a punto axis AB medio C distet",
         reading=(ACc, sp.Subs((xLc + xRc) / 2, y, 0)),
         erratum=Erratum(

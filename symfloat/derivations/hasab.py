@@ -23,7 +23,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import Derivation, Erratum, Prediction
+from symfloat import Derivation, Erratum, Holds, Iff, Prediction
 from symfloat.engine.floating_witness import QUANTITIES, Body, FloatingWitness
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.geometry.floating import box, clip_below, floating_state, volume_centroid
@@ -163,10 +163,8 @@ d.step("roots", (sp.Matrix([quad.subs(rho, r1), quad.subs(rho, r2)]), sp.Matrix(
 d.step("R1", (R1, r1), "definition", result=R1, uses=("roots",), note="the smaller root of rho^2 - rho + 1/6")
 d.step("R2", (R2, r2), "definition", result=R2, uses=("roots",), note="the larger root")
 d.step("ranges", (sp.sign(quad), sp.sign((rho - R1) * (rho - R2))), "algebra", uses=("roots", "R1", "R2"))
-stable_set = sp.Piecewise((1, (rho < R1) | (rho > R2)), (0, True))
 d.quote("ranges", "solution, stability", DISPLAYS[14],
-        reading=(sp.Piecewise((1, sp.StrictGreaterThan(quad, 0)), (0, True)),
-                 sp.Piecewise((1, (rho < r1) | sp.StrictLessThan(r2, 1)), (0, True))),
+        reading=Iff(quad > 0, (rho < r1) | sp.StrictLessThan(r2, 1, evaluate=False), {rho: (0, 1)}),
         erratum=Erratum("transcription", "medium",
                         r"0 < \varrho < \frac{3 - \sqrt{3}}{6} \varrho_{\text{víz}} \quad \text{vagy} \quad "
                         r"\frac{3 + \sqrt{3}}{6} \varrho_{\text{víz}} < \varrho < \varrho_{\text{víz}}",
@@ -175,7 +173,8 @@ d.quote("ranges", "solution, stability", DISPLAYS[14],
                         "density stable. The roots of rho^2 - rho + 1/6 are (3 -+ sqrt 3)/6 (printed right) and the "
                         "condition holds outside them; the layout of the first range shows the intended form. "
                         "Lost in the transcription rather than the print (the thresholds are correct).",
-                        corrected_reading=(sp.Piecewise((1, sp.StrictGreaterThan(quad, 0)), (0, True)), stable_set)))
+                        corrected_reading=Iff(quad > 0, (rho < R1) | (rho > R2), {rho: (0, 1)})),
+        note="read as: the condition holds exactly on the printed ranges, for 0 < rho < 1 (rho_viz = 1)")
 d.quote("thresholds", "solution, stability",
         r"\frac{3 - \sqrt{3}}{6} \cdot \varrho_{\text{víz}}, \quad \text{vagy} \quad \frac{3 + \sqrt{3}}{6}",
         reading=(sp.Matrix([R1, R2]), sp.Matrix([r1, r2])), note="rho_viz = 1")
@@ -203,6 +202,19 @@ d.quote("energy-principle", "solution", "Stabil egyensúlyi helyzetben a rendsze
         reading=(sp.sign(c2), sp.sign(GM)),
         note="read for this body: the energy has a minimum at alpha = 0 (c_2 > 0) exactly where the metacentric "
              "criterion calls the position stable (GM > 0): E''(0) = weight x GM (the step energy-metacentric)")
+
+# ---- the statement: a long prism need not be checked about the axis across it -------------------------------
+Tp, GMp = sp.symbols("T_p GM_p", real=True)
+d.step("T-pitch", (Tp, sp.Integral(xi ** 2, (xi, -l / 2, l / 2)), l ** 3 / 12), "integration", result=Tp,
+       note="the waterplane l x 1 about its axis across the prism (parallel to the square end faces)")
+d.step("GM-pitch", (GMp, Tp / V1 - e1), "definition", result=GMp, uses=("T-pitch", "V1", "e1"),
+       note="metacentric height for pitching: l^2/(12 rho) - (1 - rho)/2")
+d.quote("long-prism", "problem", r"Mivel a hasáb hosszú, azaz mivel $l \gg 1$, felesleges foglalkozni az alaplappal "
+        "párhuzamos tengely körüli elfordulásokkal",
+        reading=Holds(GMp > 0, {l: (2, 1000)}),
+        note="read as: for a long prism (here l > 2) the position is stable against pitching at every density, so "
+             "only the heel about the long axis needs a study. l^2/(12 rho) > (1 - rho)/2 holds for l^2 > 6 rho "
+             "(1 - rho), at most 3/2: every l > sqrt(3/2) = 1.22 will do, and 'l >> 1' is more than is needed")
 
 # ---- remark: the upright prism --------------------------------------------------------------------
 GMu = (sp.Rational(1, 12)) / (rho * l) - (l / 2 - rho * l / 2)

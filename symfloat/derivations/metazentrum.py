@@ -18,7 +18,7 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Eq, Erratum, Prediction
+from symfloat import Derivation, Eq, Erratum, Holds, Prediction
 from symfloat.engine.floating_witness import Body, FloatingWitness
 from symfloat.engine.witness import Case, Computed, Precision
 from symfloat.model.prediction import box_uprights
@@ -139,7 +139,8 @@ dv.quote("vasa", L4, "Eine Lösung wäre gewesen, es tiefer zu versenken oder ei
 # ---- the words around the formulas (second pass) -----------------------------------------------------
 L5 = "Metazentrum unterhalb des Schwerpunkts"
 L6 = "formula list"
-stable_sign = sp.sign(I_w / V_b - (z_G - z_B))          # Duhamel's criterion for this hull (the step criterion)
+stable_margin = I_w / V_b - (z_G - z_B)                 # Duhamel's criterion for this hull (the step criterion)
+stable_sign = sp.sign(stable_margin)
 dv.quote("buoyancy-point", L4, "Daher ist mit die Höhe des Schwerpunkts ($z_G$)8670 als dem Angriffspunkt der "
          "gegebenen Auftriebskraft", reading=(z_B, c - d),
          erratum=Erratum("misprint", "high", r"z_G \text{ als dem Angriffspunkt der Schwerkraft}",
@@ -151,17 +152,18 @@ dv.quote("buoyancy-point", L4, "Daher ist mit die Höhe des Schwerpunkts ($z_G$)
                          corrected_reading=(z_G, c - d)),
          note="read as: the point where the buoyancy acts is at height c - d")
 dv.quote("below-G", L5, "Wenn der Metazentrum über oder unter dem Schwerpunkt liegt",
-         reading=(sp.Piecewise((stable_sign, sp.Ne(z_M, z_G)), (-1, True)), -1),
+         reading=Holds(sp.Implies(sp.Ne(z_M, z_G), stable_margin < 0)),
          erratum=Erratum("misprint", "medium", r"\text{Wenn das Metazentrum unter dem Schwerpunkt liegt}",
                          "The paragraph, headed 'Metazentrum unterhalb des Schwerpunkts', concludes that the system "
                          "becomes unstable; by the lesson's own criterion z_M >= z_G that holds for M below G only. "
                          "'über oder unter' makes every hull with M above G unstable too, against the paragraph "
                          "'Stabile Situation' just before it (e.g. b = 3/2, c = 1, d = 1/2: z_M - z_G = 3/4 > 0, "
                          "stable). Read: wherever M is not at G the hull is unstable.",
-                         corrected_reading=(sp.Piecewise((stable_sign, z_M < z_G), (-1, True)), -1)))
+                         corrected_reading=Holds(sp.Implies(z_M < z_G, stable_margin < 0))),
+         note="read as: wherever M is not at G (above or below) the hull is unstable")
 dv.quote("wide-hull", L4, "Mit anderen Worten: Stabilität wird mit großen Werten von $b/c$ (Breite größer als "
          "Tiefgang) erreicht.",
-         reading=(sp.Piecewise((stable_sign, 2 * b > d), (1, True)), 1),
+         reading=Holds(sp.Implies(2 * b > d, stable_margin > 0)),
          erratum=Erratum("claim", "high", r"\text{Stabilität bei jedem Tiefgang, wenn } b/c > \sqrt{3/2} "
                          r"\text{ (Breite groß gegen die Höhe)}",
                          "e = b^2/(6c^2) - s(1 - s) with s = d/(2c), and s(1 - s) <= 1/4: every draught is stable "
@@ -169,20 +171,19 @@ dv.quote("wide-hull", L4, "Mit anderen Worten: Stabilität wird mit großen Wert
                          "the draught. As printed ('breadth greater than draught' makes the hull stable) it fails: "
                          "b = 0.9 c, d = 0.8 c has 2b > d but e = 0.135 - 0.24 < 0 (z_M - z_G = -0.2625 c), "
                          "unstable. A claim of the lesson.",
-                         corrected_reading=(sp.Piecewise((stable_sign, b > sp.sqrt(sp.Rational(3, 2)) * c), (1, True)),
-                                            1)),
+                         corrected_reading=Holds(sp.Implies(b > sp.sqrt(sp.Rational(3, 2)) * c, stable_margin > 0))),
          note="read as: a hull whose breadth 2b exceeds its draught d is stable")
 dv.quote("displaced-volume-claim", L6, "was bedeutet, dass das verdrängte Wasser ein gleiches oder größeres Volumen "
          "als der Gegenstand einnimmt.",
-         reading=(sp.sign(V_b - 8 * a * b * c), 1),
+         reading=Holds(V_b >= 8 * a * b * c),
          erratum=Erratum("claim", "high", r"V_b \leq V_s: \text{das verdrängte Wasser nimmt ein kleineres oder "
                          r"gleiches Volumen ein}",
                          "A floating body weighs less than water of its volume, rho_s <= rho_w; with M_b = M_s, "
                          "rho_w V_b = rho_s V_s, so V_b / V_s = rho_s / rho_w <= 1: the displaced water takes at most "
                          "the body's volume (for the box V_b / V_s = d/(2c) < 1, the draught below the height). "
                          "'gleiches oder größeres' reverses the inequality; it would describe a body that sinks.",
-                         corrected_reading=(sp.sign(V_b - 8 * a * b * c), -1)),
-         note="the box: V_s = 8abc; read as V_b > V_s (equality needs d = 2c, outside the floating range)")
+                         corrected_reading=Holds(V_b <= 8 * a * b * c)),
+         note="the box: V_s = 8abc; read as V_b >= V_s, 'ein gleiches oder größeres Volumen'")
 
 dv.step("buoyancy-force", Eq(F_b, M_b * g), "definition", result=F_b, note="the weight of the displaced water")
 dv.step("gravity-force", Eq(F_g, M_s * g), "definition", result=F_g, note="the weight of the hull")

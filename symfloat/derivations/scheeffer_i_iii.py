@@ -31,7 +31,7 @@ triangular prism (not prismatic at the waterline) for the small-angle limits.
 
 import sympy as sp
 
-from symfloat import Derivation, Eq, Erratum
+from symfloat import Derivation, Eq, Erratum, Holds, Iff
 from symfloat.engine.floating_witness import LIMIT_METHODS, MEASURED, Body, FloatingWitness
 from symfloat.engine.witness import Case, Precision
 from symfloat.model.claim import as_printed
@@ -341,15 +341,10 @@ d.step("sign-15", (sp.sign(V1 * m), sp.sign(crit15)), "algebra", uses=("righting
        note="sin phi > 0 for 0 < phi < pi/2: V1 m and the bracket of (12) have the same sign")
 
 
-def IND(rel):
-    """1 where the condition *rel* holds, else 0."""
-    return sp.Piecewise((1, rel), (0, True))
-
-
 d.quote("stable-V1m", "(15)", "so muss (nach 9 und 12)  $V_1 m$  und folglich",
-        reading=(sp.Integer(1), IND(sp.StrictGreaterThan(crit15, 0))),
+        reading=Holds(crit15 > 0),
         note="read as: the condition the sentence puts on V1 m (as transcribed: none, every V1 m) is equivalent "
-             "to (15), by (12)",
+             "to (15), by (12): so (15) would hold everywhere",
         erratum=Erratum("transcription", "high", r"\text{so muss (nach 9 und 12) } V_1 m > 0 \text{ und folglich}",
                         "The sentence has no predicate for V1 m: 'so muss V1 m und folglich (15) sein'. Stability "
                         "is (2), V1 m > 0, and by (12) V1 m = sin(phi) times the bracket of (15) with sin(phi) > 0, "
@@ -358,11 +353,11 @@ d.quote("stable-V1m", "(15)", "so muss (nach 9 und 12)  $V_1 m$  und folglich",
                         "a relation sign dropped after an inline formula is the scan's (high). The reference "
                         "'nach 9' is left as printed (the numbering has gaps and no display of the transcription "
                         "carries (9)).",
-                        corrected_reading=(IND(sp.StrictGreaterThan(V1 * m, 0)), IND(sp.StrictGreaterThan(crit15, 0)))))
+                        corrected_reading=Iff(V1 * m > 0, crit15 > 0)))
 d.quote("labile-V1m", "after (15)", "so ist  $V_1 m$  und daher",
-        reading=(sp.Integer(1), IND(sp.StrictLessThan(crit15, 0))),
+        reading=Holds(crit15 < 0),
         note="read as: the condition the sentence puts on V1 m (as transcribed: none) is equivalent to the "
-             "bracket being negative, by (12)",
+             "bracket being negative, by (12): so the bracket would be negative everywhere",
         erratum=Erratum("transcription", "high", r"\text{so ist } V_1 m < 0 \text{ und daher}",
                         "As in the stable case the relation of V1 m is lost: 'so ist V1 m und daher ... < 0'. The "
                         "labile position has V1 m < 0 ((2) fails), and by (12) V1 m < 0 exactly when the bracket "
@@ -370,7 +365,7 @@ d.quote("labile-V1m", "after (15)", "so ist  $V_1 m$  und daher",
                         "'negativ'). For the labile initial position this holds for the small rotations, below "
                         "the zero phi_1 of the increasing bracket (IV (27)). The scan's loss, as in the stable "
                         "case (high).",
-                        corrected_reading=(IND(sp.StrictLessThan(V1 * m, 0)), IND(sp.StrictLessThan(crit15, 0)))))
+                        corrected_reading=Iff(V1 * m < 0, crit15 < 0)))
 d.quote("stable-15", "(15)",
         r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - V_1 e_1 > 0 \text{ sein.} \quad (15)$$",
         reading=(sp.sign(V1 * m), sp.sign(crit15)),

@@ -49,7 +49,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum
+from symfloat import PRINTED_DIGITS, Cases, Derivation, Eq, Erratum, Holds, RealRoots
 from symfloat.model.derivation import Figure, Report
 from symfloat.engine.roots import grid_roots, illinois
 from symfloat.engine.witness import Case, Computed
@@ -478,10 +478,14 @@ d.quote("F2s-negative", "IX.B",
         r"Die Bedingung  $F(2\sigma) < 0$  kann nur erfüllt werden (141), wenn  $\left(\frac{a}{b}\right)^2 < "
         r"2(1-s)(4s-1)$  ist.", reading=(sp.Subs(Fz, z, 2 * sg), 2 * sg ** 2 * (n - rho)),
         note="(141): F(2 sigma) = 2 sigma^2 (n - rho), negative exactly when n < rho")
+F_S = quartic.subs(sg, 1 - s)              # (136) with sigma = 1 - s
+REGION_143 = {s: sp.Interval.Lopen(sp.Rational(1, 2), sp.Rational(23, 32)), n: (1, 3)}   # s <= 23/32, a >= b
 d.quote("143-words", "(143)",
         r"Für  $s \leq \frac{23}{32}$  hat  $F(z) = 0$  eine reelle Wurzel (zwischen  $z = 2\sigma$  und  $z = 1$ ) d. h. "
         r"im zweiten Drehungsgebiet giebt es eine Gleichgewichtslage, wenn",
-        reading=(_count(S_LOW, 1, 2 * (1 - S_LOW), 1), 1), note="read at s = 7/10, n = 1 < rho = 27/25")
+        reading=Holds(sp.Implies(n < rho_s, sp.Eq(RealRoots(F_S, z, 2 * (1 - s), 1), 1)), REGION_143),
+        note="read on the region 1/2 < s <= 23/32, 1 < n < 3: where (143) holds, F has one real root in "
+             "2 sigma < z < 1 (Sturm counts)")
 d.quote("143-stable", "(143)",
         r"Und zwar ist das Gleichgewicht (zunächst für die Drehungsachse) stabil, da  $F(z)$  aus dem Negativen in's "
         r"Positive gehend gleich Null wird.",
@@ -498,8 +502,9 @@ d.quote("144", "(144)", r"$$\left(\frac{a}{b}\right)^2 > 2(1-s)4s-1 \quad (144)$
                         corrected_reading=((a / b) ** 2 - rho_s, F2s / (2 * sg ** 2))))
 d.quote("144-words", "(144)",
         r"Umgekehrt hat  $F(z) = 0$  keine reelle Wurzel zwischen  $z = 2\sigma$  und  $z = 1$ , wenn",
-        reading=(_count(S_LOW, sp.Rational(3, 2), 2 * (1 - S_LOW), 1), 0),
-        note="read at s = 7/10, n = 3/2 > rho = 27/25")
+        reading=Holds(sp.Implies(n > rho_s, sp.Eq(RealRoots(F_S, z, 2 * (1 - s), 1), 0)), REGION_143),
+        note="read on the region 1/2 < s <= 23/32, 1 < n < 3: where (144) holds, F has no real root in "
+             "2 sigma < z < 1 (Sturm counts)")
 d.quote("144-first-region", "(144)",
         r"d. h. wenn im ersten Drehungsgebiet, die aufrechte Lage eingeschlossen, ein stabiles Gleichgewicht "
         r"existiert\*).", reading=(6 * s * (1 - s) - rho, 2 * (1 - s) ** 2),
@@ -508,10 +513,12 @@ d.quote("144-first-region", "(144)",
 d.quote("one-or-three", "IX.B",
         r"in diesem letzteren Falle hat  $F(z)$  zwischen  $z = 0$  und  $z = \infty$  ein Maximum und ein Minimum und "
         r"daher  $F(z) = 0$  eine oder drei reelle Wurzeln.",
-        reading=(sp.Matrix([_count(sp.Rational(73, 100), sp.Rational(251, 250), 0), _count(sp.Rational(73, 100),
-                                                                                         sp.Rational(51, 50), 0)]),
-                 sp.Matrix([3, 1])),
-        note="read at s = 73/100 (> 23/32) and n = 251/250, 51/50 (sigma n < 9/32): three and one positive roots")
+        reading=Holds(sp.Implies((1 - s) * n < sp.Rational(9, 32),
+                                 sp.Eq(RealRoots(F_S, z, 0, sp.oo), 1) | sp.Eq(RealRoots(F_S, z, 0, sp.oo), 3)),
+                      {s: (sp.Rational(23, 32), 1), n: (1, 3)}),
+        note="read on the region s > 23/32, 1 < n < 3: where sigma n < 9/32 (F has a maximum and a minimum in "
+             "z > 0) F has one or three positive real roots (Sturm counts; at s = 73/100 three for n = 251/250, "
+             "one for n = 51/50)")
 d.quote("third-term", "(145)", r"so ist darin  $z > 2\sigma$ , also um so mehr  $z > \frac{2}{3} \cdot 2\sigma$  und "
         r"das dritte Glied folglich positiv.",
         reading=(sp.Subs(3 * sg * n * (z - sp.Rational(2, 3) * 2 * sg), z, 2 * sg), 2 * sg ** 2 * n),
@@ -817,12 +824,6 @@ d.quote("z1-between", "IX.B", r"Die Doppelwurzel  $z_1$  liegt also unbedingt zw
              "the double root exists only there (t < 1)")
 
 
-def _ends(sv, nv):
-    """Signs of F(2 sigma) and F(1) from the dry triangle (b = 1, a = sqrt(nv)) and of n - n_1 (156) at s = sv."""
-    pt = {sg: 1 - sv, s: sv, a: sp.sqrt(nv), b: 1}
-    return [sp.sign(F2s.subs(pt)), sp.sign(F1v.subs(pt)), sp.sign(nv - sp.Subs(N1, t, t_s.subs(s, sv)))]
-
-
 def _stabilities(sv, nv):
     """Signs of F' at the real roots of (136) in (2 sigma, 1) at s = sv, n = nv, in the order of z (of the tilt):
     + where F goes from - to + (stable about the axis, righting-sign), - where it goes from + to - (labile)."""
@@ -839,13 +840,17 @@ ROWS_161 = (("I", r"- I. wenn  $F(2\sigma) < 0$ ,  $F(1) > 0$ ,  $n > n_1$  ist,
             ("III", r"- III. wenn  $F(2\sigma) > 0$ ,  $F(1) > 0$ ,  $n < n_1$  ist, zwei reelle Wurzeln,", (1, 1, -1), 2),
             ("IV", r"- IV. wenn  $F(2\sigma) > 0$ ,  $F(1) < 0$ ,  $n < n_1$  ist, eine reelle Wurzel,", (1, -1, -1), 1),
             ("V", r"- V. wenn  $F(2\sigma) > 0$ ,  $F(1) > 0$ ,  $n > n_1$  ist, keine reelle Wurzel.", (1, 1, 1), 0))
+REGION_161 = {s: (sp.Rational(23, 32), 1), n: (1, 3)}         # s > 23/32, a >= b; n = 3 is far into row V
 for row, text, signs, count in ROWS_161:
-    sv, nv = CASES_161[row]
+    ends = (F_S.subs(z, 2 * (1 - s)), F_S.subs(z, 1), n - sp.Subs(N1, t, t_s))
+    cond = sp.And(*(e < 0 if sign < 0 else e > 0 for e, sign in zip(ends, signs)))
     d.quote(f"161-{row}", "(161)", text,
-            reading=(sp.Matrix(_ends(sv, nv) + [_count(sv, nv, 2 * (1 - sv), 1)]), sp.Matrix(list(signs) + [count])),
-            note=f"read at s = {sv}, n = {nv}: the signs of F(2 sigma), F(1) (the dry triangle), n - n_1 (156), and the "
-                 "number of real roots of (136) in (2 sigma, 1] by exact root isolation; the tests count the roots "
-                 "on a grid of s and n in every case")
+            reading=Cases(((cond, sp.Eq(RealRoots(F_S, z, 2 * (1 - s), 1), count)),), REGION_161,
+                          exhaustive=False),
+            note="a row of the case table on the whole region s > 23/32, 1 < n < 3: where F(2 sigma), F(1) (136) and "
+                 "n - n_1 (156) have the row's signs, F has the row's number of real roots in 2 sigma < z < 1 (Sturm "
+                 f"counts); the row occurs (at s = {CASES_161[row][0]}, n = {CASES_161[row][1]} for one), and the "
+                 "tests count the roots on a grid of s and n in every case")
 d.quote("162-premise", "(162)",
         r"Das rechtwinklige Parallelepipid hat unter der Voraussetzung  $s \geq \frac{23}{32}$ , wenn es um eine mit  "
         r"$c$  parallele Achse gedreht wird, im zweiten Drehungsgebiet",

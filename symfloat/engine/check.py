@@ -23,9 +23,12 @@ import sympy as sp
 
 from ..model.claim import as_latex, identical_links, members
 from ..model.derivation import Derivation, Printed
+from ..model.relation import is_relation
 from .definitions import DefinitionRoute
+from .witness import Outcome
 from .identity import Domain, IdentityResult, check_identity, check_rounded
 from .proofs import ProofBook
+from .relation import check_relation
 
 __all__ = ["StepReport", "FormulaReport", "DerivationReport", "check_derivation"]
 
@@ -164,6 +167,23 @@ def _check_chain(chain, names, results, domain, seed, book, proofs, tolerance=No
     return worst
 
 
+def _relation(reading, results, domain, seed, timing) -> IdentityResult:
+    """A relation's check (:mod:`symfloat.engine.relation`), its time counted as sampling or proof."""
+    r = check_relation(reading, results, domain, seed)
+    timing["proofs" if r.status == "proved" else "sampling"] += r.seconds
+    return r
+
+
+def _relation_outcome(name) -> Outcome:
+    """A relation has no quantity for the definition route to measure: its truth at the route's three points
+    would confirm a relation that fails elsewhere.  The relation check samples its whole domain; a declared
+    witness may still measure its indicators at cases of its own."""
+    out = Outcome(name)
+    out.note = "definition route: a relation, decided on its domain by the relation check"
+    out.measurable = False
+    return out
+
+
 def _latex(p: Printed) -> str:
     return as_latex(p.reading) if p.reading is not None else ""
 
@@ -214,13 +234,22 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
 
     readings, identities, corrected = {}, {}, {}
     for p in d.printed:      # witnesses evaluate closed forms, never a defining integral again
-        if p.reading is not None:
+        if is_relation(p.reading):
+            identities[p.name] = _relation(p.reading, results, domain, f"{d.id}/{p.name}", timing)
+            if p.reading.indicators() is not None:       # what a witness measuring a truth compares with
+                readings[p.name] = _resolved(p.reading.indicators(), results, closed)
+        elif p.reading is not None:
             t0 = time.perf_counter()
             readings[p.name] = _resolved(p.reading, results, closed)
             timing["evaluation"] += time.perf_counter() - t0
             identities[p.name] = _check_chain(p.reading, set(), results, domain,
                                               f"{d.id}/{p.name}", book, proofs, p.tolerance, prove, timing)
-        if p.erratum is not None and p.erratum.corrected_reading is not None:
+        if p.erratum is not None and is_relation(p.erratum.corrected_reading):
+            corrected[p.name] = _relation(p.erratum.corrected_reading, results, domain,
+                                          f"{d.id}/{p.name}#corrected", timing)
+            if p.erratum.corrected_reading.indicators() is not None:
+                readings[p.name + "#corrected"] = _resolved(p.erratum.corrected_reading.indicators(), results, closed)
+        elif p.erratum is not None and p.erratum.corrected_reading is not None:
             t0 = time.perf_counter()
             readings[p.name + "#corrected"] = _resolved(p.erratum.corrected_reading, results, closed)
             timing["evaluation"] += time.perf_counter() - t0
@@ -242,7 +271,9 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
             continue
         for key, reading in ((p.name, p.reading),
                              (p.name + "#corrected", p.erratum.corrected_reading if p.erratum else None)):
-            if reading is not None:
+            if is_relation(reading):
+                outcomes.setdefault(key, []).append(_relation_outcome(route.name))
+            elif reading is not None:
                 outcomes.setdefault(key, []).append(route.outcome(key, reading))
     timing["witnesses"] = time.perf_counter() - t_witnesses
     for p in d.printed:          # printed numbers agree with a witness to their printed precision

@@ -8,7 +8,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["Eq", "members", "as_latex", "pairs", "identical_links", "as_printed"]
+from .relation import is_relation, relation_latex
+
+__all__ = ["Eq", "members", "as_latex", "pairs", "identical_links", "as_printed", "expressions"]
 
 
 def Eq(lhs, rhs) -> sp.Equality:
@@ -44,8 +46,16 @@ def pairs(claim):
     return list(zip(ms, ms[1:]))
 
 
+def expressions(reading) -> tuple:
+    """The SymPy objects a reading states: the members of a chain, the conditions of a relation
+    (:mod:`symfloat.model.relation`); for the symbols a reading uses."""
+    return reading.parts() if is_relation(reading) else members(reading)
+
+
 def as_latex(claim) -> str:
-    """The chain as one LaTeX line ``a = b = c``."""
+    """The chain as one LaTeX line ``a = b = c`` (a relation as its own line)."""
+    if is_relation(claim):
+        return relation_latex(claim)
     return " = ".join(sp.latex(m) for m in members(claim))
 
 

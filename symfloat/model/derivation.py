@@ -15,6 +15,7 @@ import sympy as sp
 from .claim import members
 from .erratum import Erratum
 from .prediction import Predictor
+from .relation import is_relation
 from .source import get_source
 
 __all__ = ["Step", "Printed", "Derivation", "JUSTIFICATIONS", "PRINTED_DIGITS", "printed_tolerance"]
@@ -218,6 +219,10 @@ class Derivation:
         missing = [t for t in w.targets if t not in names]
         if missing:
             raise ValueError(f"witness {w.name!r} targets unknown printed formulas {missing}")
+        tables = [p.name for p in self.printed if p.name in w.targets and is_relation(p.reading)
+                  and p.reading.indicators() is None]
+        if tables:
+            raise ValueError(f"witness {w.name!r} targets case tables {tables}: the relation check samples them")
         self.witnesses.append(w)
         return w
 

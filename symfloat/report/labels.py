@@ -193,12 +193,12 @@ def contradicting(text: str, starts, quoted, source: str = "", found=None, produ
 def contradictions(source: str) -> list[dict]:
     """:func:`contradicting` for the quotes of every derivation of *source*."""
     from .references import _quotes
-    from ..model.claim import members
+    from ..model.claim import expressions
     text, found, _ = _read(source)
     products = {}
     for a, b, fid, p in _quotes(source):
         if p.reading is not None:
-            products[fid] = {q.name for m in members(p.reading) for q in sp.sympify(m).free_symbols}
+            products[fid] = {q.name for m in expressions(p.reading) for q in sp.sympify(m).free_symbols}
     return contradicting(text, sections(source), [(a, b, fid) for a, b, fid, _ in _quotes(source)], source, found,
                          products)
 

@@ -14,7 +14,8 @@ from __future__ import annotations
 import sympy as sp
 
 from ..engine.runner import verify
-from ..model.claim import members
+from ..model.claim import expressions, members
+from ..model.relation import is_relation, relation_latex
 
 __all__ = ["NotebookView", "definitions_markdown", "step_markdown", "reading_markdown", "correction_markdown",
            "named", "chain_latex", "show"]
@@ -59,7 +60,10 @@ def _latex(d, expr) -> str:
 
 
 def chain_latex(d, claim) -> str:
-    """The chain ``a = b = c`` of a claim, one member per line when long, in the derivation's names."""
+    """The chain ``a = b = c`` of a claim, one member per line when long, in the derivation's names
+    (a relation, :mod:`symfloat.model.relation`, on one line)."""
+    if is_relation(claim):
+        return "$$ " + relation_latex(claim, lambda e: _latex(d, e)) + " $$"
     ms = [_latex(d, m) for m in members(claim)]
     if sum(len(m) for m in ms) < 90:
         return "$$ " + " = ".join(ms) + " $$"
@@ -109,7 +113,7 @@ def _derived_symbols(d, claims) -> str:
     where = {s.result: (i, s.name) for i, s in enumerate(d.steps, 1) if s.result is not None}
     found = {}
     for claim in claims:
-        for m in members(claim):
+        for m in expressions(claim):
             for sym in sorted(getattr(m, "free_symbols", set()), key=str):
                 if sym in where:
                     found[sym] = where[sym]

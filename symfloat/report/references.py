@@ -219,9 +219,9 @@ def _quotes(source: str) -> list[tuple[int, int, str, object]]:
 def _symbols(claim) -> set:
     if claim is None:
         return set()
-    from ..model.claim import members
+    from ..model.claim import expressions
     import sympy as sp
-    return set().union(*(sp.sympify(m).free_symbols for m in members(claim)))
+    return set().union(*(sp.sympify(m).free_symbols for m in expressions(claim)))
 
 
 @cache
