@@ -48,6 +48,9 @@ def test_metazentrum_checks_clean(meta_report):
         ("displaced-volume-claim", "claim", "high"),     # the displaced volume is at most the body's
         ("F_g", "misprint", "low"),                      # line 513: m_g, defined nowhere, for M_s
         ("F_b=F_g", "misprint", "low"),                  # line 519: V_w, M_w, defined nowhere, for V_b, M_b
+        # third pass (lines 155 and 187):
+        ("half-length", "misprint", "medium"),           # "Mittlere Länge" for a, half the length 2a
+        ("moving-centroid", "claim", "medium"),          # the body's centroid named for the displaced water's
     }
     assert all(f.verdict == "verified" for f in meta_report.formulas if not f.erratum)
 

@@ -185,6 +185,39 @@ dv.quote("displaced-volume-claim", L6, "was bedeutet, dass das verdrängte Wasse
                          corrected_reading=Holds(V_b <= 8 * a * b * c)),
          note="the box: V_s = 8abc; read as V_b >= V_s, 'ein gleiches oder größeres Volumen'")
 
+dv.quote("half-length", L1, "der Mittlere Länge des Parallelepipeds ($a$)8673, der Halbe Breite des Parallelepipeds "
+         "($b$)8674 und die Halbe Höhe des Parallelepipeds ($c$)8672 reduziert, was zu Abmessungen von "
+         "$2a \\times 2b \\times 2c$ führt",
+         reading=(sp.Matrix([a, b, c]), sp.Matrix([sp.Integral(1, (x, -a, a)), sp.Integral(1, (y, -b, b)) / 2,
+                                                     sp.Integral(1, (z, -d, 2 * c - d)) / 2])),
+         erratum=Erratum("misprint", "medium", r"\text{der Halbe Länge des Parallelepipeds } (a)",
+                         "The box is 2a x 2b x 2c, so a is half its length, as b and c are the halves of the "
+                         "breadth and the height ('Halbe Breite', 'Halbe Höhe'), and the lesson's own formulas use "
+                         "it so: M_s = 8abc rho_s, V_b = 4abd. 'Mittlere Länge' (mean length) names the whole length "
+                         "2a of a box of constant length. The same name is the page's label of a in every list "
+                         "and sentence after it (the variable's glossary entry): one fault, booked here.",
+                         corrected_reading=(sp.Matrix([a, b, c]),
+                                            sp.Matrix([sp.Integral(1, (x, -a, a)) / 2, sp.Integral(1, (y, -b, b)) / 2,
+                                                       sp.Integral(1, (z, -d, 2 * c - d)) / 2]))),
+         note="read as: a, b, c are the box's length, half breadth and half height, its extents measured along x, y "
+              "and z")
+dv.quote("moving-centroid", "Definition der Position des Metazentrums",
+         "Das Metazentrum wird berechnet, indem der Schwerpunkt des gekippten Körpers unter der Bedingung bestimmt "
+         "wird, dass die Fläche unter der Wasserlinie (blaue Linie) konstant bleibt:",
+         reading=(sp.Integral(y, (y, -b, b), (z, -d, 2 * c - d)) / sp.Integral(1, (y, -b, b), (z, -d, 2 * c - d)),
+                  shift),
+         erratum=Erratum("claim", "medium",
+                         r"\text{indem der Schwerpunkt des verdrängten Wassers (des eingetauchten Querschnitts) "
+                         r"\ldots bestimmt wird}",
+                         "The centroid whose shift on heel gives the metacentre is that of the displaced water: the "
+                         "next section is 'Berechnung der Lage des Massenschwerpunktes des verdrängten Wassers' and "
+                         "moves the two wedge triangles of the immersed section, b^2 tg phi/(3d). The tilted body's "
+                         "own centroid is fixed in the body (z_G = c - d throughout the lesson): across the ship it "
+                         "stays on the centre line, shift 0, whatever the heel.",
+                         corrected_reading=(shift, x_t * A_t / A_q)),
+         note="read as: the shift across the ship of the tilted body's centroid (in the body frame, the centroid of "
+              "its whole section 2b x 2c) is the shift the lesson computes, b^2 tg phi/(3d)")
+
 dv.step("buoyancy-force", Eq(F_b, M_b * g), "definition", result=F_b, note="the weight of the displaced water")
 dv.step("gravity-force", Eq(F_g, M_s * g), "definition", result=F_g, note="the weight of the hull")
 dv.quote("wedges-equal", L2, "Wenn das Boot krängt, bewegt sich auf der einen Seite ein größerer Wasserabschnitt und auf "
