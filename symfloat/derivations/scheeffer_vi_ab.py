@@ -19,10 +19,10 @@ import numpy as np
 import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
-from symfloat.engine.floating_witness import (MEASURED, Body, FloatingWitness, Joined, RootWitness, first_zero,
-                                              waterplane_moment)
+from symfloat.engine.floating_witness import (FLOATING_METHODS, MEASURED, PART, Body, Combined, FloatingWitness, Joined,
+                                              RootWitness, first_zero, waterplane_moment)
 from symfloat.engine.witness import Case, Computed, Precision
-from symfloat.geometry.floating import cylinder_state, polygon_moments
+from symfloat.geometry.floating import polygon_moments
 from symfloat.model.claim import as_printed
 
 
@@ -1004,10 +1004,6 @@ def _cached(key, fn):
     return _CACHE[key]
 
 
-def P(case, dps, *syms):
-    return [_n(case.params[k], dps) for k in syms]
-
-
 def cw(name, description, targets, cases, compute, methods=None):
     kw = {} if methods is None else {"methods": methods}
     d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=compute, **kw))
@@ -1091,57 +1087,38 @@ tilted("triangle-first-contact", "tan of the tilt at which either base of the cl
        body=_triangle(1, 1), density=sp.Rational(3, 5), at={om: 0})
 
 
-# ---- the cylinder: quadrature of the defining integrals over the disc (x = r sin(theta)) ---------------
-def _disc_moments(dps):
-    """M_k = integral over the unit disc of x^k dA, k = 0, 1, 2, by quadrature in theta (x = sin theta, chord width
-    2 cos theta, dx = cos theta dtheta), once per working precision: every integral over a disc of radius r cut by
-    a plane z = c + x tan(phi) is a combination r^(k+2) M_k of these."""
-    return _cached(("disc", mpmath.mp.prec),
-                   lambda: [mpmath.quad(lambda t: 2 * mpmath.cos(t) ** 2 * mpmath.sin(t) ** k,
-                                        [-mpmath.pi / 2, mpmath.pi / 2]) for k in range(3)])
+# ---- the cylinder: Body.cylinder (quadrature of exact slices, symfloat.engine.floating_witness) --------------
+# axis z, centred, tilted by psi towards +x: the side -x dips, the righting arm is B - G horizontally towards it
+UP_C = (sp.sin(PSI), 0, sp.cos(PSI))
+ARM_C = -sp.cos(PSI) * MEASURED["B - G, x"] + sp.sin(PSI) * MEASURED["B - G, z"]
+R = sp.Symbol("R", positive=True)                   # a radius sought, b = 1
 
 
-def cylinder_tilt(r_, b_, s_, phi, dps):
-    """Disc of radius r_, axis z from 0 to b_, water plane z = c + x tan(phi) (no base cut): the draught c
-    from the volume s F b, the centre of buoyancy from the disc's moments (quadrature); returns (righting arm,
-    c)."""
-    M0, M1, M2 = _disc_moments(dps)
-    tn = mpmath.tan(phi)
-    A0 = r_ ** 2 * M0                                     # area
-    A1 = r_ ** 3 * M1 * tn                                # integral of x tan(phi) dA
-    c = (s_ * A0 * b_ - A1) / A0
-    V = s_ * A0 * b_
-    xB = (c * r_ ** 3 * M1 + r_ ** 4 * M2 * tn) / V       # integral of x h dA, h = c + x tan(phi)
-    zB = (c ** 2 * r_ ** 2 * M0 + 2 * c * r_ ** 3 * M1 * tn + r_ ** 4 * M2 * tn ** 2) / 2 / V   # of h^2/2 dA
-    return mpmath.cos(phi) * xB + mpmath.sin(phi) * (zB - b_ / 2), c
+def cyl(name, description, targets, cases, quantity, body=Body.cylinder(r, b), density=s):
+    """A quantity of the upright cylinder."""
+    d.witness(FloatingWitness(name, description, tuple(targets), tuple(cases), body=body, density=density,
+                              quantity=quantity))
 
 
-def cylinder_gm(r_, b_, s_, dps):
-    M0, _, M2 = _disc_moments(dps)
-    return r_ ** 4 * M2 / (s_ * r_ ** 2 * M0 * b_) - (b_ / 2 - s_ * b_ / 2)
-
-
-def cylinder_equilibrium(r_, b_, s_, dps):
-    return first_zero(lambda p: lambda f: cylinder_tilt(r_, b_, s_, f, p)[0], "0.02", "1.52", 30, dps)
+def cyl_root(name, description, targets, cases, quantity, vanish=ARM_C, body=Body.cylinder(r, b), **kw):
+    """A quantity of the cylinder at the first zero of *vanish* (the righting arm: the tilted equilibrium) as the
+    tilt grows, or along ``along``."""
+    kw = {"up": UP_C, "along": PSI, "bracket": (sp.Rational(1, 50), sp.Rational(3, 2)), "steps": 30, "density": s,
+          **kw}
+    return RootWitness(name, description, tuple(targets), tuple(cases), body=body, quantity=quantity, vanish=vanish,
+                       **kw)
 
 
 cyl_cases = [Case({r: 1, b: 1, s: sp.Rational(1, 2)}), Case({r: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 5)}),
              Case({r: sp.Rational(1, 2), b: 2, s: sp.Rational(9, 10)})]
-cw("cylinder-upright-69", "16 s/b times the metacentric height (disc inertia by quadrature)", ("69", "70"), cyl_cases,
-   lambda case, dps: 16 * _n(case.params[s], dps) / _n(case.params[b], dps) * cylinder_gm(*P(case, dps, r, b, s), dps))
-cw("cylinder-upright-72", "-16 s/b times the metacentric height (quadrature)", ("72",), cyl_cases,
-   lambda case, dps: -16 * _n(case.params[s], dps) / _n(case.params[b], dps) * cylinder_gm(*P(case, dps, r, b, s), dps))
-cw("cylinder-upright-gm", "metacentric height (quadrature)", ("cylinder-condition",), cyl_cases,
-   lambda case, dps: cylinder_gm(*P(case, dps, r, b, s), dps))
-cw("cylinder-polygon-gm", "metacentric height of inscribed 64/128-gon prisms, Richardson (cylinder_state), float64",
-   ("cylinder-condition",), cyl_cases,
-   lambda case, dps: mpmath.mpf(cylinder_state(*[float(case.params[k]) for k in (r, b)], (0, 0, 1), float(case.params[s]),
-                                               sides=64, phases=1).metacentric_height[0]),
-   methods=(Precision(15, 1e-4),))
+cyl("cylinder-upright-69", "16 s/b times the metacentric height of the upright cylinder", ("69", "70"), cyl_cases,
+    16 * s / b * GM)
+cyl("cylinder-upright-72", "-16 s/b times the metacentric height", ("72",), cyl_cases, -16 * s / b * GM)
+cyl("cylinder-upright-gm", "metacentric height of the upright cylinder", ("cylinder-condition",), cyl_cases, GM)
 tiltc_cases = [Case({r: sp.Rational(8, 5), b: sp.Rational(5, 2), s: sp.Rational(3, 5)}, label="example 10"),
                Case({r: sp.Rational(1, 2), b: 1, s: sp.Rational(3, 20)}, label="square section, s = 0.15")]
-cw("cylinder-tilted-equilibrium", "tan^2 of the tilt where the quadrature righting arm vanishes", ("72a-tan",),
-   tiltc_cases, lambda case, dps: mpmath.tan(cylinder_equilibrium(*P(case, dps, r, b, s), dps)) ** 2)
+d.witness(cyl_root("cylinder-tilted-equilibrium", "tan^2 of the tilt where the cylinder's righting arm vanishes",
+                   ("72a-tan",), tiltc_cases, sp.tan(PSI) ** 2))
 
 # ---- worked examples: the printed numbers that are geometric quantities ------------------------------------
 one = [Case({}, label="the example's data")]
@@ -1174,61 +1151,43 @@ d.witness(Joined("example-4",
                  (Case({a: 12 * sp.sqrt(2) / 11, b: 1, s: sp.Rational(7, 11)}),),
                  parts=(_root_witness("equilibrium", "", (), (), sp.tan(PSI), ARM, **EX4),
                         _root_witness("top contact", "", (), (), sp.tan(PSI), TOP, **EX4))))
-cw("example-5", "2r/b at which the upright cylinder (s = 1/2) has zero metacentric height (quadrature)", ("ex5", "sqrt2"),
-   one, lambda c, dps: 2 * first_zero(lambda p: lambda r_: cylinder_gm(r_, 1, mpmath.mpf(1) / 2, p), "0.5", "1.5", 20,
-                                      dps))
+d.witness(cyl_root("example-5", "2r/b at which the upright cylinder (s = 1/2) has zero metacentric height",
+                   ("ex5", "sqrt2"), one, 2 * R, GM, body=Body.cylinder(R, 1), up=(0, 0, 1), density=HALF, along=R,
+                   bracket=(HALF, sp.Rational(3, 2)), steps=20))
+SQUARE = Body.cylinder(HALF, 1)                     # examples 6, 7: 2r = b
+for nm, tg, quantity, lo, hi, steps in (
+        ("example-6-root", "ex6-root-value", 2 * s - 1, HALF, sp.Rational(99, 100), 49),
+        ("example-6-sum", "ex6-sum", 2 * s, HALF, sp.Rational(99, 100), 49),
+        ("example-6-difference", "ex6-difference", 2 * s, sp.Rational(1, 100), sp.Rational(49, 100), 24),
+        ("example-6-upper", "ex6-upper", s, HALF, sp.Rational(99, 100), 49),
+        ("example-6-lower", "ex6-lower", s, sp.Rational(1, 100), sp.Rational(49, 100), 24),
+        ("example-7-lower", "ex7-lower", s, sp.Rational(1, 100), sp.Rational(49, 100), 24),
+        ("example-7-range-lower", "ex7-range-lower", s, sp.Rational(1, 100), sp.Rational(49, 100), 24)):
+    d.witness(cyl_root(nm, "density of zero metacentric height of the upright cylinder with 2r = b", (tg,), one,
+                       quantity, GM, body=SQUARE, up=(0, 0, 1), along=s, bracket=(lo, hi), steps=steps))
 
+# example 7: the density at which the tilted equilibrium reaches the lower base (2r = b, s < 1/2): the righting
+# arm vanishes where the lower base meets the water
+arm_at_bottom = cyl_root("bottom", "", (), (), ARM_C, BOT, body=SQUARE)
+NESTED = (FLOATING_METHODS[0], Precision(30, 1e-20))   # a zero inside a zero: 30 digits (40 cost minutes)
+EX7 = {"body": SQUARE, "up": (0, 0, 1), "along": s, "bracket": (sp.Rational(37, 250), sp.Rational(33, 200)), "steps": 1,
+       "methods": NESTED}
+d.witness(cyl_root("example-7-minus", "density at which the tilted equilibrium of the cylinder reaches the lower base",
+                   ("ex7-minus", "ex7-range-upper"), one, s, arm_at_bottom, **EX7))
+d.witness(cyl_root("example-7-root", "0.4 minus that density", ("ex7-root",), one, sp.Rational(2, 5) - s,
+                   arm_at_bottom, **EX7))
 
-def ex6_roots(dps):
-    gm = lambda p: lambda s_: cylinder_gm(mpmath.mpf(1) / 2, 1, s_, p)      # noqa: E731
-    return first_zero(gm, "0.5", "0.99", 49, dps), first_zero(gm, "0.01", "0.49", 24, dps)
-
-
-ex6 = lambda dps: _cached(("ex6", dps), lambda: ex6_roots(dps))
-for nm, tg, fn in (("example-6-root", "ex6-root-value", lambda dps: 2 * ex6(dps)[0] - 1),
-                   ("example-6-sum", "ex6-sum", lambda dps: 2 * ex6(dps)[0]),
-                   ("example-6-difference", "ex6-difference", lambda dps: 2 * ex6(dps)[1]),
-                   ("example-6-upper", "ex6-upper", lambda dps: ex6(dps)[0]),
-                   ("example-6-lower", "ex6-lower", lambda dps: ex6(dps)[1]),
-                   ("example-7-lower", "ex7-lower", lambda dps: ex6(dps)[1]),
-                   ("example-7-range-lower", "ex7-range-lower", lambda dps: ex6(dps)[1])):
-    cw(nm, "density of zero metacentric height of the upright cylinder with 2r = b (quadrature)", (tg,), one,
-       (lambda fn_: lambda c, dps: fn_(dps))(fn))
-
-
-def ex7_bottom(dps):
-    """Density (2r = b = 1, s < 1/2) at which the bottom rim reaches the water in the tilted equilibrium."""
-    def gap(p):
-        def at(s_):
-            phi = cylinder_equilibrium(mpmath.mpf(1) / 2, 1, s_, p)
-            c = cylinder_tilt(mpmath.mpf(1) / 2, 1, s_, phi, p)[1]
-            return c - mpmath.mpf(1) / 2 * mpmath.tan(phi)          # water height over the rising rim
-        return at
-    return first_zero(gap, "0.148", "0.165", 1, dps)
-
-
-ex7 = lambda dps: _cached(("ex7", dps), lambda: ex7_bottom(dps))
-cw("example-7-minus", "density at which the tilted cylinder's bottom rim meets the water (quadrature)",
-   ("ex7-minus", "ex7-range-upper"), one, lambda c, dps: ex7(dps))
-cw("example-7-root", "0.4 minus that density", ("ex7-root",), one, lambda c, dps: mpmath.mpf(2) / 5 - ex7(dps))
-
-
-def ex10(dps):
-    r_, b_, s_ = mpmath.mpf(8) / 5, mpmath.mpf(5) / 2, mpmath.mpf(3) / 5
-    phi = cylinder_equilibrium(r_, b_, s_, dps)
-    c = cylinder_tilt(r_, b_, s_, phi, dps)[1]
-    return mpmath.degrees(phi), c + r_ * mpmath.tan(phi)
-
-
-ex10c = lambda dps: _cached(("ex10", dps), lambda: ex10(dps))
-cw("example-10-angle", "equilibrium tilt of the cylinder by quadrature, degrees", ("ex10-angle",), one,
-   lambda c, dps: ex10c(dps)[0])
-cw("example-10-x", "water height on the dipping generator (quadrature)", ("ex10-x-sum", "ex10-x"), one,
-   lambda c, dps: ex10c(dps)[1])
-cw("example-10-fraction", "the same over b", ("ex10-fraction", "ex10-deepest"), one, lambda c, dps: ex10c(dps)[1] / mpmath.mpf("2.5"))
-cw("example-10-dry", "the part above water, over b", ("ex10-dry",), one, lambda c, dps: 1 - ex10c(dps)[1] / mpmath.mpf("2.5"))
-cw("example-10-dry-cm", "the part above water in cm", ("ex10-dry-cm",), one,
-   lambda c, dps: 100 * (mpmath.mpf("2.5") - ex10c(dps)[1]))
+# example 10: the tilted equilibrium of r = 1.6, b = 2.5, s = 0.6; x, the water's height on the dipping side line
+# above the lower base, is b minus the upper base's lowest point above water over cos(psi)
+EX10 = {"body": Body.cylinder(sp.Rational(8, 5), sp.Rational(5, 2)), "density": sp.Rational(3, 5)}
+X10 = sp.Rational(5, 2) - TOP / sp.cos(PSI)
+for nm, description, tg, quantity in (
+        ("example-10-angle", "equilibrium tilt of the cylinder, degrees", ("ex10-angle",), 180 * PSI / pi),
+        ("example-10-x", "water height on the dipping side line", ("ex10-x-sum", "ex10-x"), X10),
+        ("example-10-fraction", "the same over b", ("ex10-fraction", "ex10-deepest"), X10 / sp.Rational(5, 2)),
+        ("example-10-dry", "the part above water, over b", ("ex10-dry",), 1 - X10 / sp.Rational(5, 2)),
+        ("example-10-dry-cm", "the part above water in cm", ("ex10-dry-cm",), 100 * (sp.Rational(5, 2) - X10))):
+    d.witness(cyl_root(nm, description, tg, one, quantity, **EX10))
 
 
 # at s = 11/20, (a/b)^2 = 11/5 (region III): the righting arm of the clipped prism at the first contact of a base,
@@ -1406,99 +1365,57 @@ cw("model-region-III", "the model's boundaries at omega = 60 deg and 0 against (
                    q60_model_pair(c, dps)[1] - _qq(c, dps), _qq(c, dps) - q0_pair(c, dps)[1]))
 
 
-# ---- the cylinder: quadrature model (as cylinder_tilt) -----------------------------------------------------
-def cyl_contact(r_, b_, s_, which, dps):
-    """tan of the tilt at which the water height c + r tan(phi) on the dipping generator reaches the top (which = 'top')
-    or c - r tan(phi) on the rising one reaches the bottom; c by quadrature (cylinder_tilt)."""
-    def make(p):
-        if which == "top":
-            return lambda f: b_ - (cylinder_tilt(r_, b_, s_, f, p)[1] + r_ * mpmath.tan(f))
-        return lambda f: cylinder_tilt(r_, b_, s_, f, p)[1] - r_ * mpmath.tan(f)
-    return mpmath.tan(first_zero(make, "0.02", "1.52", 15, dps))
+# ---- the cylinder: the limits (72a), (73) and examples 8, 9 ------------------------------------------------
+# the tangents at which the upper base meets the water (tilting up) and the lower base (the upper one not cut:
+# the cylinder extended upwards to 2b at the same draught), and of the tilted equilibrium
+CONTACTS = (cyl_root("upper", "", (), (), sp.tan(PSI), TOP),
+            cyl_root("lower", "", (), (), sp.tan(PSI), BOT, body=Body.cylinder(r, 2 * b), density=s / 2))
+EQUILIBRIUM = cyl_root("equilibrium", "", (), (), sp.tan(PSI))
+K2_ = (2 * r / b) ** 2
+d.witness(Joined("cylinder-contacts", "tangents of the tilts at which the upper and the lower base meet the water",
+                 ("72a",), tiltc_cases[:1], parts=CONTACTS))
+d.witness(Combined("cylinder-contact-margins", "squared contact tangents minus the squared equilibrium tangent",
+                   ("72a-squared",), tiltc_cases[:1], parts=(*CONTACTS, EQUILIBRIUM),
+                   values=(PART[0] ** 2 - PART[2] ** 2, PART[1] ** 2 - PART[2] ** 2)))
+d.witness(Combined("cylinder-73", "-16 s/b times the upright metacentric height, and (2r/b)^2/2 times the "
+                   "squared-tangent margins", ("73",), tiltc_cases[:1],
+                   parts=(FloatingWitness("upright", "", (), (), body=Body.cylinder(r, b), density=s, quantity=GM),
+                          *CONTACTS, EQUILIBRIUM),
+                   values=(-16 * s / b * PART[0], (PART[1] ** 2 - PART[3] ** 2) * K2_ / 2,
+                           (PART[2] ** 2 - PART[3] ** 2) * K2_ / 2)))
+d.witness(Joined("cylinder-71", "densities at which the upright cylinder's metacentric height vanishes", ("71",),
+                 (Case({r: sp.Rational(3, 5), b: 1}), Case({r: 1, b: 3})),
+                 parts=tuple(cyl_root(f"root {k}", "", (), (), s, GM, up=(0, 0, 1), along=s, bracket=bracket,
+                                      steps=49)
+                             for k, bracket in enumerate(((HALF, sp.Rational(99, 100)),
+                                                          (sp.Rational(1, 200), sp.Rational(99, 200)))))))
 
 
-def cyl_eq(r_, b_, s_, dps):
-    """tan phi_1: the first root of the quadrature righting arm (float scan, then secant steps)."""
-    return mpmath.tan(first_zero(lambda p: (lambda f: cylinder_tilt(r_, b_, s_, f, p)[0]), "0.02", "1.52", 30, dps))
+def threshold(density, *values):
+    """*values* and (2R)^2, at which the upright cylinder of radius R, b = 1 (the ratio 2r/b: the metacentric
+    height is homogeneous of degree 1 in r, b) has zero metacentric height at *density*."""
+    return dict(quantity=(*values, (2 * R) ** 2), vanish=GM, body=Body.cylinder(R, 1), up=(0, 0, 1),
+                density=density, along=R, bracket=(sp.Rational(1, 100), sp.Rational(201, 100)), steps=40)
 
 
-def cyl_limits(c, dps):
-    r_, b_, s_ = P(c, dps, r, b, s)
-    return _cached(("cl", r_, b_, s_, dps), lambda: (cyl_contact(r_, b_, s_, "top", dps), cyl_contact(r_, b_, s_, "bottom", dps),
-                                                   cyl_eq(r_, b_, s_, dps)))
-
-
-cw("cylinder-contacts", "contact tangents of the upper and lower base (quadrature)", ("72a",), tiltc_cases[:1],
-   lambda c, dps: cyl_limits(c, dps)[:2])
-cw("cylinder-contact-margins", "squared contact tangents minus the squared equilibrium tangent (quadrature)",
-   ("72a-squared",), tiltc_cases[:1], lambda c, dps: tuple(v ** 2 - cyl_limits(c, dps)[2] ** 2 for v in cyl_limits(c, dps)[:2]))
-
-
-def _k2(c, dps):
-    return (2 * _n(c.params[r], dps) / _n(c.params[b], dps)) ** 2
-
-
-cw("cylinder-73", "-16 s/b times the metacentric height, and (2r/b)^2/2 times the squared-tangent margins (quadrature)",
-   ("73",), tiltc_cases[:1],
-   lambda c, dps: (-16 * _n(c.params[s], dps) / _n(c.params[b], dps) * cylinder_gm(*P(c, dps, r, b, s), dps),)
-   + tuple((v ** 2 - cyl_limits(c, dps)[2] ** 2) * _k2(c, dps) / 2 for v in cyl_limits(c, dps)[:2]))
-
-
-def cyl_density_roots(c, dps):
-    r_, b_ = P(c, dps, r, b)
-    gm = lambda p: lambda s_: cylinder_gm(r_, b_, s_, p)        # noqa: E731
-    return _cached(("cdr", r_, b_, dps), lambda: (first_zero(gm, "0.5", "0.99", 49, dps),
-                                                 first_zero(gm, "0.005", "0.495", 49, dps)))
-
-
-cw("cylinder-71", "densities at which the upright cylinder's metacentric height (quadrature) vanishes", ("71",),
-   [Case({r: sp.Rational(3, 5), b: 1}), Case({r: 1, b: 3})], cyl_density_roots)
-
-
-def cyl_ratio_threshold(b_, s_, dps):
-    """(2r/b)^2 at which the upright cylinder (quadrature) has zero metacentric height."""
-    r0 = b_ * first_zero(lambda p: lambda r_: cylinder_gm(r_, 1, s_, p), "0.01", "2.01", 40, dps)   # gm(kr, kb) = k gm
-    return (2 * r0 / b_) ** 2
-
-
-cw("example-8-values", "(2r/b)^2 of the data and the (2r/b)^2 of zero metacentric height at s = 3/4 (quadrature)",
-   ("ex8-values",), one, lambda c, dps: ((mpmath.mpf(2 * 30) / 40) ** 2, cyl_ratio_threshold(mpmath.mpf(40), mpmath.mpf(3) / 4, dps)))
-cw("example-9-values", "2r/b, (2r/b)^2 of the data and the threshold (2r/b)^2 at s = 0.8 (quadrature)", ("ex9-values",),
-   one, lambda c, dps: (mpmath.mpf(2 * 15) / 40, (mpmath.mpf(2 * 15) / 40) ** 2,
-                        cyl_ratio_threshold(mpmath.mpf(40), mpmath.mpf(4) / 5, dps)))
-
-
-def ex9_bound(dps):
-    """(2r/b)^2 (b = 1, s = 0.8) at which the quadrature equilibrium reaches the upper-base contact."""
-    s_ = mpmath.mpf(4) / 5
-    make = lambda p: (lambda r_: cylinder_tilt(r_, 1, s_, mpmath.atan(cyl_contact(r_, 1, s_, "top", p)), p)[0])
-    r0 = first_zero(make, "0.2", "0.7", 5, dps)
-    return (2 * r0) ** 2
-
-
-cw("example-9-bound", "(2r/b)^2 at which the tilted equilibrium of the cylinder (s = 0.8) meets the upper base",
-   ("ex9-bound",), one, lambda c, dps: _cached(("ex9b", dps), lambda: ex9_bound(dps)),
-   methods=(Precision(15, 1e-10), Precision(30, 1e-25)))
-
-
-def ex8_signs(dps):
-    r_, b_, s_ = mpmath.mpf(30), mpmath.mpf(40), mpmath.mpf(3) / 4
-    top = cyl_contact(r_, b_, s_, "top", dps)
-    arms = [cylinder_tilt(r_, b_, s_, mpmath.atan(top * k / 8), dps)[0] for k in range(1, 9)]
-    return mpmath.sign(cylinder_gm(r_, b_, s_, dps)), mpmath.sign(min(arms))
-
-
-def ex9_signs(dps):
-    r_, b_, s_ = mpmath.mpf(15), mpmath.mpf(40), mpmath.mpf(4) / 5
-    top = cyl_contact(r_, b_, s_, "top", dps)
-    t1_ = cyl_eq(r_, b_, s_, dps)
-    return mpmath.sign(cylinder_gm(r_, b_, s_, dps)), mpmath.sign(top - t1_)
-
-
-cw("example-8-claim", "signs of the upright metacentric height and of the smallest righting arm on 8 tilts up to the "
-   "upper-base contact (quadrature)", ("ex8-claim",), one, lambda c, dps: ex8_signs(dps))
-cw("example-9-claim", "signs of the upright metacentric height and of (contact tangent - equilibrium tangent) "
-   "(quadrature)", ("ex9-claim",), one, lambda c, dps: ex9_signs(dps))
+d.witness(cyl_root("example-8-values", "(2r/b)^2 of the data, and the (2r/b)^2 of zero metacentric height at s = 3/4",
+                   ("ex8-values",), [Case({r: 30, b: 40}, label="the example's data")],
+                   **threshold(sp.Rational(3, 4), K2_)))
+d.witness(cyl_root("example-9-values", "2r/b, (2r/b)^2 of the data and the threshold (2r/b)^2 at s = 0.8",
+                   ("ex9-values",), [Case({r: 15, b: 40}, label="the example's data")],
+                   **threshold(sp.Rational(4, 5), 2 * r / b, K2_)))
+d.witness(cyl_root("example-9-bound", "(2r/b)^2 at which the tilted equilibrium of the cylinder (s = 0.8) meets "
+                   "the upper base", ("ex9-bound",), one, (2 * R) ** 2,
+                   cyl_root("contact", "", (), (), ARM_C, TOP, body=Body.cylinder(R, 1), density=sp.Rational(4, 5)),
+                   body=Body.cylinder(R, 1), up=(0, 0, 1), density=sp.Rational(4, 5), along=R,
+                   bracket=(sp.Rational(1, 5), sp.Rational(7, 10)), steps=5, methods=NESTED))
+for nm, example, r_, s_ in (("example-8-claim", "ex8-claim", 30, sp.Rational(3, 4)),
+                            ("example-9-claim", "ex9-claim", 15, sp.Rational(4, 5))):
+    body_ = Body.cylinder(r_, 40)
+    d.witness(Joined(nm, "signs of the upright metacentric height and of the righting arm where the upper base "
+                     "meets the water (positive: no tilted equilibrium before)", (example,), one,
+                     parts=(FloatingWitness("upright", "", (), (), body=body_, density=s_, quantity="stability sign"),
+                            cyl_root("arm", "", (), (), sp.sign(ARM_C), TOP, body=body_, density=s_))))
 
 
 # =====================================================================================================
