@@ -7,8 +7,9 @@ water plane is z = b s + x tan(phi) in body coordinates (z along the axis from t
 rotation axis).  As long as it cuts no base, the submerged part is the set 0 <= z <= b s + x tan(phi) over
 F, whose volume, centroid and righting arm follow from the area, first and second moments of F
 (integrated here over the equilateral triangle and the disc).  The witnesses clip the real polyhedra
-(symfloat.geometry.floating) or integrate the disc by quadrature, and find equilibria as roots of the
-measured righting arm.
+(symfloat.geometry.floating) and float the real cylinder (Body.cylinder, quadrature of exact slices), and
+find equilibria as roots of the measured righting arm; the first-region model of the triangle (column
+heights not cut by the bases) is integrated by Gauss quadrature.
 """
 
 import math
@@ -989,7 +990,7 @@ d.quote("ex10-dry-cm", "Example 10", "der ganzen Höhe oder 45 cm",
 
 
 # =====================================================================================================
-# Witnesses: clipped polyhedra (symfloat.geometry.floating) and quadrature over the disc
+# Witnesses: clipped polyhedra (symfloat.geometry.floating) and the floating cylinder (Body.cylinder)
 # =====================================================================================================
 def _n(v, dps):
     return mpmath.mpf(sp.N(sp.sympify(v), dps + 10)) if dps > 15 else mpmath.mpf(float(sp.sympify(v)))
