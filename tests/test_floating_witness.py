@@ -306,3 +306,16 @@ def test_witnesses_combined_by_an_expression():
     w = Combined("c", "c", ("f",), (CASE,), parts=(witness("draught"), witness("draught", up=(1, 0, 0))),
                  values=(PART[1] - PART[0], PART[0] / C))
     assert [float(v) for v in w.measure(CASE, w.methods[0])] == pytest.approx([0.8, 0.4], abs=1e-14)
+
+
+def test_a_body_with_a_given_centre_of_gravity():
+    # the box 3 x 2 x 1 at s = 2/5 with G lowered by 1/10 from its centroid: G above B is 3/10 - 1/10 and the
+    # metacentric height 5/6 - 1/5 (the waterplane and B do not depend on G)
+    from symfloat.engine.floating_witness import Loaded
+    for q, exact in (("G above B", Fraction(1, 5)), ("metacentric height", Fraction(5, 6) - Fraction(1, 5)),
+                     ("B below water", Fraction(1, 5))):
+        w = FloatingWitness(q, q, ("f",), (CASE,), body=Loaded.of(Body.box(A, B, C), (0, 0, -C / 10)), density=S,
+                            quantity=q)
+        assert float(w.measure(CASE, w.methods[0])) == pytest.approx(float(exact), abs=1e-13)
+        with mpmath.workdps(40):
+            assert abs(w.measure(CASE, w.methods[1]) - mpmath.mpf(exact.numerator) / exact.denominator) < 1e-35

@@ -544,10 +544,41 @@ def _cylinder_state(cyl, u, s):
                          (e1, e2), min(I_w, I_y), max(I_w, I_y), potential, min(I_w, I_y) / V - potential)
 
 
+@dataclass(frozen=True)
+class Loaded(Body):
+    """A :class:`Body` whose centre of gravity ``G`` (body frame, SymPy expressions in the case's parameters) is
+    given, not its centroid: a body with a light part, such as a prism extended beyond a base that the water
+    must not cut (the wall-sided model of a source that lets the water rise above that base)."""
+
+    G: tuple = (0, 0, 0)
+
+    @classmethod
+    def of(cls, body, G):
+        return cls(body.kind, body.dims, tuple(G))
+
+    def build(self, params, dps):
+        return _Built(Body(self.kind, self.dims).build(params, dps), tuple(number(x, params, dps) for x in self.G))
+
+
+@dataclass(frozen=True)
+class _Built:
+    """A built body (``poly``) with its centre of gravity ``G``."""
+
+    poly: object
+    G: tuple
+
+    @property
+    def vertices(self):
+        return self.poly.vertices
+
+
 def _floating_state(body, up, density):
-    """The floating state of a built body: a clipped polyhedron, or a :class:`Cylinder`."""
+    """The floating state of a built body: a clipped polyhedron (with a given centre of gravity), or a
+    :class:`Cylinder`."""
     if isinstance(body, Cylinder):
         return _cylinder_state(body, up, density)
+    if isinstance(body, _Built):
+        return floating_state(body.poly, up, density, G=body.G)
     return floating_state(body, up, density)
 
 
