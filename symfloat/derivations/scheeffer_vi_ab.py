@@ -21,8 +21,8 @@ import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
 from symfloat.engine.floating_witness import (FLOATING_METHODS, MEASURED, PART, Body, Combined, FloatingWitness, Joined,
-                                              RootWitness, first_zero, waterplane_moment)
-from symfloat.engine.witness import Case, Computed, Precision
+                                              Loaded, RootWitness, waterplane_moment)
+from symfloat.engine.witness import Case, Precision
 from symfloat.geometry.floating import polygon_moments
 from symfloat.model.claim import as_printed
 
@@ -992,24 +992,6 @@ d.quote("ex10-dry-cm", "Example 10", "der ganzen Höhe oder 45 cm",
 # =====================================================================================================
 # Witnesses: clipped polyhedra (symfloat.geometry.floating) and the floating cylinder (Body.cylinder)
 # =====================================================================================================
-def _n(v, dps):
-    return mpmath.mpf(sp.N(sp.sympify(v), dps + 10)) if dps > 15 else mpmath.mpf(float(sp.sympify(v)))
-
-
-_CACHE = {}
-
-
-def _cached(key, fn):
-    if key not in _CACHE:
-        _CACHE[key] = fn()
-    return _CACHE[key]
-
-
-def cw(name, description, targets, cases, compute, methods=None):
-    kw = {} if methods is None else {"methods": methods}
-    d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=compute, **kw))
-
-
 # ---- floating witnesses of the triangular prism (symfloat.engine.floating_witness) ------------------------
 # the triangle B C A of the text (edge a, centre O at the origin, A on the +Y axis), the prism of height b along z;
 # tilted by psi about the axis PQ at the angle omega with OB, the side n (vertex B's side) dipping
@@ -1235,10 +1217,6 @@ d.witness(_boundary(sp.Rational(2, 3), sp.sqrt(Q), TOP, "example-3-ratio", "its 
                     ("ex3-ratio", "ex3-ratio-fraction"), one))
 
 
-def _qq(case, dps):
-    return (_n(case.params[a], dps) / _n(case.params[b], dps)) ** 2
-
-
 # example 4: the clipped prism tilted by 30 deg about the axis omega = 15 deg, in equilibrium with the upper base
 # just touching the water: nested zeros, of the righting arm along s and of the upper base's height along a/b = Q
 EX4_AT = {om: pi / 12, PSI: pi / 6}
@@ -1255,115 +1233,72 @@ d.witness(_root_witness("example-4-ratio", "a/b of the same clipped solution", (
                         bracket=(sp.Rational(3, 2), sp.Rational(8, 5))))
 
 
-# ---- the first-region model of the triangle by quadrature (no base cut, column heights may pass the bases) --
-_GL = None
+# ---- the first-region model of the triangle: columns over the base from the bottom to the water plane --------
+# (61)-(65) let a column rise above the upper base or fall below the lower one (a negative height).  The same
+# zeros: the prism extended by b on either side (length 3b, the real one its middle third) at the same water
+# plane, its lower third a neutral part (weight equal to its buoyancy, always immersed): it adds F b to the
+# volume and G = -b/(1 + s) (the weighted centre of the two parts), and B - G is the model's times
+# V / (V + F b), so the righting arm vanishes where the model's does.  A column's height above the real bottom
+# is its depth over cos(psi) minus b: the upper base's clearance at the deepest vertex and the lower base's at
+# the shallowest follow from the draught and the lower base's height above water.
+def _model(edge, height):
+    return Loaded.of(_triangle(edge, 3 * height), (0, 0, -height / (1 + s)))
 
 
-def _gauss3(dps):
-    r = mpmath.sqrt(mpmath.mpf(3) / 5)
-    return [((1 - r) / 2, mpmath.mpf(5) / 18), (mpmath.mpf(1) / 2, mpmath.mpf(8) / 18), ((1 + r) / 2, mpmath.mpf(5) / 18)]
+def _top(height):
+    return 2 * height - MEASURED["draught"] / sp.cos(PSI)
 
 
-def model_tilt(a_, b_, s_, w_, tau, dps, flip=False):
-    """Triangle of edge a_ (B, C, A as in the text), axis PQ at omega = w_, B on the dipping side (flip: rising),
-    water plane z = c + xi tau over the base with the column heights integrated by a collapsed 3x3 Gauss rule
-    (exact for these polynomials); c from the volume s F b.  Returns (righting arm, top clearance, bottom
-    clearance): the clearances are b minus the highest water height at a vertex and the lowest water height."""
-    t3 = mpmath.sqrt(3)
-    P = [(-a_ / 2, -a_ / (2 * t3)), (a_ / 2, -a_ / (2 * t3)), (mpmath.mpf(0), a_ / t3)]
-    sg = -1 if flip else 1
-    n = (-sg * mpmath.sin(w_), -sg * mpmath.cos(w_))
-    xi = lambda X_, Y_: X_ * n[0] + Y_ * n[1]
-    (x0, y0), (x1, y1), (x2, y2) = P
-    J = abs((x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0))
-    g = _gauss3(dps)
-
-    def integ(f):
-        tot = 0
-        for uu, wu in g:
-            for vv, wv in g:
-                X_ = x0 + uu * (x1 - x0) + uu * vv * (x2 - x1)
-                Y_ = y0 + uu * (y1 - y0) + uu * vv * (y2 - y1)
-                tot += wu * wv * uu * J * f(X_, Y_)
-        return tot
-    F = integ(lambda X_, Y_: 1)
-    c = (s_ * F * b_ - tau * integ(xi)) / F
-    col = lambda X_, Y_: c + xi(X_, Y_) * tau
-    V = integ(col)
-    Mxi = integ(lambda X_, Y_: xi(X_, Y_) * col(X_, Y_))
-    Mz = integ(lambda X_, Y_: col(X_, Y_) ** 2 / 2)
-    phi = mpmath.atan(tau)
-    arm = (mpmath.cos(phi) * Mxi + mpmath.sin(phi) * (Mz - V * b_ / 2)) / V
-    heights = [col(*p) for p in P]
-    return arm, b_ - max(heights), min(heights)
+def _bottom(height):
+    return -BOT / sp.cos(PSI) - height
 
 
-def model_eq(q_, s_, dps):
-    """tan phi_1 of the model (b = 1): the first root of the righting arm."""
-    return _cached(("meq", q_, s_, dps), lambda: first_zero(
-        lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, 0, t_, p)[0]), "0.02", "20.02", 200, dps))
+MODEL = {"body": _model(a, b), "density": (1 + s) / 3}
+B_RISING = {om: om + pi}                            # the axis turned half round: vertex B on the rising side
 
 
-def model_contact(q_, s_, w_, which, flip, dps):
-    return first_zero(lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, w_, t_, p, flip)[which]),
-                      "0.02", "4.02", 40, dps)
+def _model_sin(quantity):
+    """*quantity* at the axis omega (0 ... 60 deg) at which the model's equilibrium reaches the upper base (B
+    dipping) and the lower base (B rising): the righting arm at the contact vanishes there."""
+    return tuple(_root_witness("sin", "", (), (), quantity, _root_witness("contact", "", (), (), ARM, which, at=at,
+                                                                          **MODEL),
+                               up=(0, 0, 1), along=om, bracket=(0, pi / 3), steps=1, **MODEL)
+                 for which, at in ((_top(b), None), (_bottom(b), B_RISING)))
 
 
-def model_boundary(s_, w_, which, flip, dps):
-    """(a/b)^2 at which the model's equilibrium tangent equals its contact tangent for the axis w_."""
-    qh = 12 * s_ * (1 - s_)
-    make = lambda p: (lambda q_: model_tilt(mpmath.sqrt(q_), 1, s_, w_, model_eq(q_, s_, p), p, flip)[which])
-    return _cached(("mb", s_, w_, which, flip, dps),
-                   lambda: first_zero(make, qh / 10, qh * mpmath.mpf("0.999"), 1, dps))
+d.witness(Joined("model-61", "sin(30 deg + omega) of the axis where the first-region model's upper-base (B dipping) "
+                 "/ lower-base (B rising) contact meets its equilibrium", ("61",), q60_cases,
+                 parts=_model_sin(sp.sin(pi / 6 + om))))
+d.witness(Joined("model-65-III-omega", "the same, squared", ("65-III-omega",), q60_cases,
+                 parts=_model_sin(sp.sin(pi / 6 + om) ** 2)))
+d.witness(Joined("model-61-from-60", "the model's equilibrium tangent and upper-base contact tangent at the case's "
+                 "axis", ("61-from-60",),
+                 (Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20), om: sp.Rational(3, 10)}),
+                  Case({a: 3, b: 2, s: sp.Rational(7, 10), om: 1})),
+                 parts=(_root_witness("equilibrium", "", (), (), sp.tan(PSI), ARM, **MODEL),
+                        _root_witness("contact", "", (), (), sp.tan(PSI), _top(b), **MODEL))))
 
 
-def model_sin_bound(q_, s_, which, flip, dps):
-    """sin(30 deg + omega) of the axis at which the model's contact tangent equals its equilibrium tangent."""
-    t1_ = model_eq(q_, s_, dps)
-    w_ = first_zero(lambda p: lambda w: model_tilt(mpmath.sqrt(q_), 1, s_, w, t1_, p, flip)[which], 0, mpmath.pi / 3, 1, dps)
-    return mpmath.sin(mpmath.pi / 6 + w_)
+def _model_boundaries(omega):
+    """The (a/b)^2 = Q (b = 1) at which the model's equilibrium reaches the upper base (B dipping) and the lower
+    base (B rising) for the axis *omega*: zeros along Q of the righting arm at the contact."""
+    body = {"body": _model(sp.sqrt(Q), 1), "density": (1 + s) / 3}
+    return tuple(_root_witness("boundary", "", (), (), Q,
+                               _root_witness("contact", "", (), (), ARM, which, at={om: omega + turn}, **body),
+                               up=(0, 0, 1), along=Q, steps=1,
+                               bracket=(12 * s * (1 - s) / 10, 12 * s * (1 - s) * 999 / 1000), **body)
+                 for which, turn in ((_top(1), 0), (_bottom(1), pi)))
 
 
-def _qs(c, dps):
-    return _qq(c, dps), _n(c.params[s], dps)
-
-
-def sin_bounds(c, dps):
-    q_, s_ = _qs(c, dps)
-    return _cached(("sb", q_, s_, dps), lambda: (model_sin_bound(q_, s_, 1, False, dps), model_sin_bound(q_, s_, 2, True, dps)))
-
-
-def model_q(c, dps, w_, which, flip):
-    return model_boundary(_qs(c, dps)[1], w_, which, flip, dps)
-
-
-cw("model-61", "sin(30 deg + omega) of the axis where the first-region model's upper-base (B dipping) / lower-base "
-   "(B rising) contact tangent equals its equilibrium tangent (Gauss quadrature over the triangle, roots)",
-   ("61",), q60_cases, sin_bounds)
-cw("model-65-III-omega", "the same, squared", ("65-III-omega",), q60_cases, lambda c, dps: tuple(v ** 2 for v in sin_bounds(c, dps)))
-cw("model-61-from-60", "the model's equilibrium tangent and upper-base contact tangent at the case's axis",
-   ("61-from-60",), [Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20), om: sp.Rational(3, 10)}),
-                     Case({a: 3, b: 2, s: sp.Rational(7, 10), om: 1})],
-   lambda c, dps: (model_eq(_qs(c, dps)[0], _qs(c, dps)[1], dps),
-                   model_contact(_qs(c, dps)[0], _qs(c, dps)[1], _n(c.params[om], dps), 1, False, dps)))
-
-
-def q0_pair(c, dps):
-    return model_q(c, dps, 0, 1, False), model_q(c, dps, 0, 2, True)
-
-
-def q60_model_pair(c, dps):
-    return model_q(c, dps, mpmath.pi / 3, 1, False), model_q(c, dps, mpmath.pi / 3, 2, True)
-
-
-cw("model-omega0-63", "half of the (a/b)^2 at which the model's equilibrium meets the upper (B dipping) / lower "
-   "(B rising) base contact at omega = 0, minus half of (a/b)^2", ("63",), q60_cases,
-   lambda c, dps: tuple((v - _qq(c, dps)) / 2 for v in q0_pair(c, dps)))
-cw("model-omega0-64", "the same margins, not halved", ("64",), q60_cases,
-   lambda c, dps: tuple(v - _qq(c, dps) for v in q0_pair(c, dps)))
-cw("model-region-III", "the model's boundaries at omega = 60 deg and 0 against (a/b)^2", ("65-III",), q60_cases,
-   lambda c, dps: (q60_model_pair(c, dps)[0] - _qq(c, dps), _qq(c, dps) - q0_pair(c, dps)[0],
-                   q60_model_pair(c, dps)[1] - _qq(c, dps), _qq(c, dps) - q0_pair(c, dps)[1]))
+Q0_M, Q60_M = _model_boundaries(0), _model_boundaries(pi / 3)
+d.witness(Combined("model-omega0-63", "half of the (a/b)^2 at which the model's equilibrium meets the upper (B "
+                   "dipping) / lower (B rising) base contact at omega = 0, minus half of (a/b)^2", ("63",), q60_cases,
+                   parts=Q0_M, values=((PART[0] - QQ) / 2, (PART[1] - QQ) / 2)))
+d.witness(Combined("model-omega0-64", "the same margins, not halved", ("64",), q60_cases, parts=Q0_M,
+                   values=(PART[0] - QQ, PART[1] - QQ)))
+d.witness(Combined("model-region-III", "the model's boundaries at omega = 60 deg and 0 against (a/b)^2", ("65-III",),
+                   q60_cases, parts=(*Q60_M, *Q0_M),
+                   values=(PART[0] - QQ, QQ - PART[2], PART[1] - QQ, QQ - PART[3])))
 
 
 # ---- the cylinder: the limits (72a), (73) and examples 8, 9 ------------------------------------------------
