@@ -255,6 +255,7 @@ def test_the_first_zero_of_a_function():
 # centroid of a half disc, 4r/(3 pi) below the axis; the metacentric height 2r^3 L/3 / (pi r^2 L/2) - 4r/(3 pi)
 # vanishes (a circular section is neutral).
 R_, L2_, PHI_ = sp.symbols("r L phi", positive=True)
+UPRIGHT_GM = sp.Rational(1, 4 * 4) / sp.Rational(3, 10) - sp.Rational(7, 10) * 4 / 2    # r = 1, L = 4, s = 3/10
 
 
 def cylinder(quantity, up, s):
@@ -268,8 +269,8 @@ def cylinder(quantity, up, s):
     ("draught", (0, 0, 1), sp.Rational(3, 10), sp.Rational(6, 5)),
     ("waterplane area", (0, 0, 1), sp.Rational(3, 10), sp.pi),
     ("I min", (0, 0, 1), sp.Rational(3, 10), sp.pi / 4),
-    ("metacentric height", (0, 0, 1), sp.Rational(3, 10), sp.Rational(1, 4 * 4) / sp.Rational(3, 10) - sp.Rational(7, 10) * 4 / 2),
-    ("metacentric height", (0, 0, -1), sp.Rational(3, 10), sp.Rational(1, 4 * 4) / sp.Rational(3, 10) - sp.Rational(7, 10) * 4 / 2),
+    ("metacentric height", (0, 0, 1), sp.Rational(3, 10), UPRIGHT_GM),
+    ("metacentric height", (0, 0, -1), sp.Rational(3, 10), UPRIGHT_GM),
     ("immersed volume", (sp.sin(PHI_), 0, sp.cos(PHI_)), HALF := sp.Rational(1, 2), 2 * sp.pi),
     ("B - G, x", (sp.sin(PHI_), 0, sp.cos(PHI_)), HALF, -sp.Rational(1, 4) / (4 * HALF * 4)),
     ("B - G, z", (sp.sin(PHI_), 0, sp.cos(PHI_)), HALF, -2 * HALF + sp.Rational(1, 16) / (8 * HALF * 4)),
