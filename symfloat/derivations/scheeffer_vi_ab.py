@@ -9,7 +9,7 @@ F, whose volume, centroid and righting arm follow from the area, first and secon
 (integrated here over the equilateral triangle and the disc).  The witnesses clip the real polyhedra
 (symfloat.geometry.floating) and float the real cylinder (Body.cylinder, quadrature of exact slices), and
 find equilibria as roots of the measured righting arm; the first-region model of the triangle (column
-heights not cut by the bases) is integrated by Gauss quadrature.
+heights not cut by the bases) is the clipped prism extended on either side with a neutral lower part.
 """
 
 import math
