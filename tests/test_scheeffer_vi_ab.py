@@ -105,6 +105,17 @@ def test_claim_counterexamples():
     assert float(measured("region-III-counterexample")) == pytest.approx(-0.0109089663071034, abs=1e-10)
 
 
+# ---- (61), (63): the first-region model (columns not cut by the bases) at s = 0.55, (a/b)^2 = 2.25: the axis at
+# which the equilibrium, tg^2 = 24 (b/a)^2 s(1-s) - 2 = 0.64, meets the upper base (B dipping) has
+# sin(30 deg + omega) = (1-s) sqrt3 / sqrt(24 s(1-s) - 2 (a/b)^2) = 0.45 sqrt3 / 1.2, the lower base (B rising)
+# 0.55 sqrt3 / 1.2; at omega = 0 the boundaries (a/b)^2 = 6(1-s)(3s-1) = 1.755 and 6s(2-3s) = 1.155 ((64)),
+# derived by hand from the column model.
+def test_the_first_region_model():
+    assert [float(v) for v in measured("model-61")] == pytest.approx([0.45 * math.sqrt(3) / 1.2,
+                                                                      0.55 * math.sqrt(3) / 1.2], abs=1e-10)
+    assert [float(v) for v in measured("model-omega0-64")] == pytest.approx([1.755 - 2.25, 1.155 - 2.25], abs=1e-10)
+
+
 @pytest.fixture(scope="module")
 def report(reports_by_id):
     return reports_by_id["scheeffer-vi-ab"]
