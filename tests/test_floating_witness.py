@@ -363,3 +363,84 @@ def test_the_waterplane_tensor_of_a_heeled_box_is_the_rectangle_turned():
     exact = (c ** 2 * along, -s_ * c * along, (2 / c) * 27 / 12)
     for method in w.methods:
         assert all(abs(v - sp.N(e, 50)) <= 1e-12 for v, e in zip(w.measure(CASE, method), exact)), method.name
+
+
+# ---- the circular cylinder (Body.cylinder), radius r, length L, axis z, against closed forms -------------------
+# Upright at density s (Archimedes): draught s L, B at s L/2 and G at L/2 above the bottom, the waterplane a disc
+# of area pi r^2 and second moment pi r^4/4 (int y^2 over the disc = int_0^2pi int_0^r rho^3 sin^2 = pi r^4/4),
+# hence the metacentric height (pi r^4/4)/(pi r^2 s L) - (1 - s) L/2 = r^2/(4 L s) - (1 - s) L/2 (Scheeffer's
+# (69) is this sign condition; the reference is derived here, not taken from the module).
+# Tilted by phi with no base cut (the waterplane a whole ellipse): the immersed part is the column over the disc
+# from the bottom to z_c + x tan(phi) (x towards the dipping side), z_c = (s - 1/2) L from the volume s pi r^2 L;
+# with int x dA = 0 and int x^2 dA = pi r^4/4 its moments give B - G = (tan(phi) r^2/(4 s L) towards the dip,
+# -(1 - s) L/2 + tan^2(phi) r^2/(8 s L) along the axis); the waterplane is the ellipse with semi-axes
+# r / cos(phi) and r: area pi r^2 / cos(phi), I = pi r^4 / (4 cos phi) and pi r^4 / (4 cos^3 phi) (pi a b^3/4).
+# Lying at s = 1/2: the waterplane is the rectangle L x 2r (I min = L (2r)^3/12, I max = 2r L^3/12), B the
+# centroid of a half disc, 4r/(3 pi) below the axis; the metacentric height 2r^3 L/3 / (pi r^2 L/2) - 4r/(3 pi)
+# vanishes (a circular section is neutral).
+R_, L2_, PHI_ = sp.symbols("r L phi", positive=True)
+UPRIGHT_GM = sp.Rational(1, 4 * 4) / sp.Rational(3, 10) - sp.Rational(7, 10) * 4 / 2    # r = 1, L = 4, s = 3/10
+
+
+def cylinder(quantity, up, s):
+    case = Case({R_: 1, L2_: 4, S: s, PHI_: sp.atan(sp.Rational(1, 4))})
+    w = FloatingWitness(quantity, quantity, ("f",), (case,), body=Body.cylinder(R_, L2_), up=up, density=S,
+                        quantity=quantity)
+    return [w.measure(case, m) for m in w.methods]
+
+
+@pytest.mark.parametrize("quantity, up, s, exact", [
+    ("draught", (0, 0, 1), sp.Rational(3, 10), sp.Rational(6, 5)),
+    ("waterplane area", (0, 0, 1), sp.Rational(3, 10), sp.pi),
+    ("I min", (0, 0, 1), sp.Rational(3, 10), sp.pi / 4),
+    ("metacentric height", (0, 0, 1), sp.Rational(3, 10), UPRIGHT_GM),
+    ("metacentric height", (0, 0, -1), sp.Rational(3, 10), UPRIGHT_GM),
+    ("immersed volume", (sp.sin(PHI_), 0, sp.cos(PHI_)), HALF := sp.Rational(1, 2), 2 * sp.pi),
+    ("B - G, x", (sp.sin(PHI_), 0, sp.cos(PHI_)), HALF, -sp.Rational(1, 4) / (4 * HALF * 4)),
+    ("B - G, z", (sp.sin(PHI_), 0, sp.cos(PHI_)), HALF, -2 * HALF + sp.Rational(1, 16) / (8 * HALF * 4)),
+    ("B - G, y", (0, sp.sin(PHI_), -sp.cos(PHI_)), HALF, -sp.Rational(1, 4) / (4 * HALF * 4)),  # -y dips
+    ("waterplane area", (sp.sin(PHI_), 0, sp.cos(PHI_)), HALF, sp.pi / sp.cos(PHI_)),
+    ("I min", (sp.sin(PHI_), 0, sp.cos(PHI_)), HALF, sp.pi / (4 * sp.cos(PHI_))),
+    ("I max", (sp.sin(PHI_), 0, sp.cos(PHI_)), HALF, sp.pi / (4 * sp.cos(PHI_) ** 3)),
+    ("I min", (1, 0, 0), HALF, 4 * sp.Integer(2) ** 3 / 12),
+    ("I max", (1, 0, 0), HALF, 2 * sp.Integer(4) ** 3 / 12),
+    ("B below water", (1, 0, 0), HALF, 4 / (3 * sp.pi)),
+    ("metacentric height", (0, 1, 0), HALF, sp.Integer(0)),
+])
+def test_the_cylinder_against_closed_forms(quantity, up, s, exact):
+    ref = sp.N(exact.subs(PHI_, sp.atan(sp.Rational(1, 4))), 50)
+    low, high = cylinder(quantity, up, s)
+    assert abs(float(low) - float(ref)) < 1e-12
+    with mpmath.workdps(50):
+        assert abs(high - mpmath.mpf(str(ref))) < 1e-30
+
+
+def test_the_cylinder_with_a_base_cut_keeps_its_volume():
+    # tilted by 60 deg at s = 0.3: the upper water line crosses the lower base, which a column model cannot
+    # float; the volume is still s pi r^2 L and G - B has no component along the waterplane's normal axis
+    up = (sp.sqrt(3) / 2, 0, sp.Rational(1, 2))
+    (vol, _), (cut, _) = cylinder("immersed volume", up, sp.Rational(3, 10)), cylinder("lower base above water", up,
+                                                                                       sp.Rational(3, 10))
+    assert cut > 0 and abs(vol - 1.2 * float(mpmath.pi)) < 1e-12
+    assert abs(cylinder("B - G, y", up, sp.Rational(3, 10))[0]) < 1e-15
+
+
+def test_witnesses_combined_by_an_expression():
+    # the draughts of the box upright (2/5) and on its side (6/5): their difference and the ratio to c
+    from symfloat.engine.floating_witness import PART, Combined
+    w = Combined("c", "c", ("f",), (CASE,), parts=(witness("draught"), witness("draught", up=(1, 0, 0))),
+                 values=(PART[1] - PART[0], PART[0] / C))
+    assert [float(v) for v in w.measure(CASE, w.methods[0])] == pytest.approx([0.8, 0.4], abs=1e-14)
+
+
+def test_a_body_with_a_given_centre_of_gravity():
+    # the box 3 x 2 x 1 at s = 2/5 with G lowered by 1/10 from its centroid: G above B is 3/10 - 1/10 and the
+    # metacentric height 5/6 - 1/5 (the waterplane and B do not depend on G)
+    from symfloat.engine.floating_witness import Loaded
+    for q, exact in (("G above B", Fraction(1, 5)), ("metacentric height", Fraction(5, 6) - Fraction(1, 5)),
+                     ("B below water", Fraction(1, 5))):
+        w = FloatingWitness(q, q, ("f",), (CASE,), body=Loaded.of(Body.box(A, B, C), (0, 0, -C / 10)), density=S,
+                            quantity=q)
+        assert float(w.measure(CASE, w.methods[0])) == pytest.approx(float(exact), abs=1e-13)
+        with mpmath.workdps(40):
+            assert abs(w.measure(CASE, w.methods[1]) - mpmath.mpf(exact.numerator) / exact.denominator) < 1e-35

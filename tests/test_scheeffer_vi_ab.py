@@ -62,16 +62,17 @@ def test_example_4():
     assert float(contact) == pytest.approx(1 / math.sqrt(3), abs=1e-10)
 
 
-# ---- Examples 5-7 (VI.B): cylinder thresholds, closed forms and quadrature of the disc.
+# ---- Examples 5-7 (VI.B): cylinder thresholds, closed forms and the floating cylinder (Body.cylinder).
+# 2r = b: the roots of 8 s(1-s) = 1 are (1 -+ sqrt 0.5)/2 (printed 0.8536, 0.1464); the equilibrium reaches the
+# lower base where (2s)^2 = 16 s(1-s) - 2, s = 0.4 - sqrt(0.06) = 0.15505 (printed 0.155); 2r/b = sqrt 2 at s = 1/2.
 def test_examples_5_to_7():
     assert float(M.sC_hi1) == pytest.approx(0.8535533905932737, abs=1e-14)    # (1 + sqrt 0.5)/2, printed 0.8536
     assert float(M.sC_lo1) == pytest.approx(0.1464466094067262, abs=1e-14)    # printed 0.1464 and 0.146
-    up, lo = M.ex6_roots(15)
-    assert float(up) == pytest.approx(0.8535533905932737, abs=1e-10)
-    assert float(lo) == pytest.approx(0.1464466094067262, abs=1e-10)
-    # Example 7: the bottom rim meets the water at s = 0.4 - sqrt(0.06) = 0.15505
+    assert float(measured("example-5")) == pytest.approx(math.sqrt(2), abs=1e-10)
+    assert float(measured("example-6-upper")) == pytest.approx(0.8535533905932737, abs=1e-10)
+    assert float(measured("example-6-lower")) == pytest.approx(0.1464466094067262, abs=1e-10)
     assert float(M.s_b[0]) == pytest.approx(0.4 - math.sqrt(0.06), abs=1e-14)
-    assert float(M.ex7_bottom(15)) == pytest.approx(0.4 - math.sqrt(0.06), abs=1e-9)
+    assert float(measured("example-7-minus")) == pytest.approx(0.4 - math.sqrt(0.06), abs=1e-9)
 
 
 # ---- Example 10 (VI.B): tan(phi_1) = sqrt(11/32): phi_1 = 30 deg 22' 59.45'' (printed 18 deg 58' 13'' =
@@ -80,10 +81,18 @@ def test_example_10():
     phi = math.atan(math.sqrt(11 / 32))
     assert deg(phi) == pytest.approx(30 + 22 / 60 + 59.448 / 3600, abs=1e-6)
     assert deg(math.atan(11 / 32)) == pytest.approx(18 + 58 / 60 + 13.468 / 3600, abs=1e-6)
-    angle, x = M.ex10(15)
-    assert float(angle) == pytest.approx(deg(phi), abs=1e-9)
-    assert float(x) == pytest.approx(1.5 + 1.6 * math.sqrt(11 / 32), abs=1e-10)     # 2.43808
-    assert 250 * (1 - float(x) / 2.5) == pytest.approx(6.1917, abs=1e-3)
+    assert float(measured("example-10-angle")) == pytest.approx(deg(phi), abs=1e-9)
+    x = float(measured("example-10-x"))
+    assert x == pytest.approx(1.5 + 1.6 * math.sqrt(11 / 32), abs=1e-10)     # 2.43808
+    assert 250 * (1 - x / 2.5) == pytest.approx(6.1917, abs=1e-3)
+
+
+# ---- (72a), (73) at example 10's data: the contact tangents 2(1-s) b/(2r) = 0.625 and 2 s b/(2r) = 0.9375, the
+# equilibrium tangent^2 11/32; (73)'s margins 8 s(1-s) - (2r/b)^2 = 0.2816, 0.0384 and 0.4384 (times (2r/b)^2/2)
+def test_cylinder_limits():
+    assert [float(v) for v in measured("cylinder-contacts")] == pytest.approx([0.625, 0.9375], abs=1e-10)
+    assert [float(v) for v in measured("cylinder-73")] == pytest.approx([0.2816, 0.0384, 0.4384], abs=1e-10)
+    assert [float(v) for v in measured("example-9-claim")] == [-1, -1]
 
 
 # ---- claims: the triangle's lower base (60-one-base) and region III (65-III-claim)
@@ -94,6 +103,17 @@ def test_claim_counterexamples():
     # s = 11/20, (a/b)^2 = 11/5: righting arm at the first contact (best axis) is negative
     assert float(M.Delta3) == pytest.approx(-0.0109089663071034, abs=1e-12)
     assert float(measured("region-III-counterexample")) == pytest.approx(-0.0109089663071034, abs=1e-10)
+
+
+# ---- (61), (63): the first-region model (columns not cut by the bases) at s = 0.55, (a/b)^2 = 2.25: the axis at
+# which the equilibrium, tg^2 = 24 (b/a)^2 s(1-s) - 2 = 0.64, meets the upper base (B dipping) has
+# sin(30 deg + omega) = (1-s) sqrt3 / sqrt(24 s(1-s) - 2 (a/b)^2) = 0.45 sqrt3 / 1.2, the lower base (B rising)
+# 0.55 sqrt3 / 1.2; at omega = 0 the boundaries (a/b)^2 = 6(1-s)(3s-1) = 1.755 and 6s(2-3s) = 1.155 ((64)),
+# derived by hand from the column model.
+def test_the_first_region_model():
+    assert [float(v) for v in measured("model-61")] == pytest.approx([0.45 * math.sqrt(3) / 1.2,
+                                                                      0.55 * math.sqrt(3) / 1.2], abs=1e-10)
+    assert [float(v) for v in measured("model-omega0-64")] == pytest.approx([1.755 - 2.25, 1.155 - 2.25], abs=1e-10)
 
 
 @pytest.fixture(scope="module")

@@ -7,8 +7,9 @@ water plane is z = b s + x tan(phi) in body coordinates (z along the axis from t
 rotation axis).  As long as it cuts no base, the submerged part is the set 0 <= z <= b s + x tan(phi) over
 F, whose volume, centroid and righting arm follow from the area, first and second moments of F
 (integrated here over the equilateral triangle and the disc).  The witnesses clip the real polyhedra
-(symfloat.geometry.floating) or integrate the disc by quadrature, and find equilibria as roots of the
-measured righting arm.
+(symfloat.geometry.floating) and float the real cylinder (Body.cylinder, quadrature of exact slices), and
+find equilibria as roots of the measured righting arm; the first-region model of the triangle (column
+heights not cut by the bases) is the clipped prism extended on either side with a neutral lower part.
 """
 
 import math
@@ -19,10 +20,10 @@ import numpy as np
 import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
-from symfloat.engine.floating_witness import (MEASURED, Body, FloatingWitness, Joined, RootWitness, first_zero,
-                                              waterplane_moment)
-from symfloat.engine.witness import Case, Computed, Precision
-from symfloat.geometry.floating import cylinder_state, polygon_moments
+from symfloat.engine.floating_witness import (FLOATING_METHODS, MEASURED, PART, Body, Combined, FloatingWitness, Joined,
+                                              Loaded, RootWitness, waterplane_moment)
+from symfloat.engine.witness import Case, Precision
+from symfloat.geometry.floating import polygon_moments
 from symfloat.model.claim import as_printed
 
 
@@ -989,30 +990,8 @@ d.quote("ex10-dry-cm", "Example 10", "der ganzen Höhe oder 45 cm",
 
 
 # =====================================================================================================
-# Witnesses: clipped polyhedra (symfloat.geometry.floating) and quadrature over the disc
+# Witnesses: clipped polyhedra (symfloat.geometry.floating) and the floating cylinder (Body.cylinder)
 # =====================================================================================================
-def _n(v, dps):
-    return mpmath.mpf(sp.N(sp.sympify(v), dps + 10)) if dps > 15 else mpmath.mpf(float(sp.sympify(v)))
-
-
-_CACHE = {}
-
-
-def _cached(key, fn):
-    if key not in _CACHE:
-        _CACHE[key] = fn()
-    return _CACHE[key]
-
-
-def P(case, dps, *syms):
-    return [_n(case.params[k], dps) for k in syms]
-
-
-def cw(name, description, targets, cases, compute, methods=None):
-    kw = {} if methods is None else {"methods": methods}
-    d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=compute, **kw))
-
-
 # ---- floating witnesses of the triangular prism (symfloat.engine.floating_witness) ------------------------
 # the triangle B C A of the text (edge a, centre O at the origin, A on the +Y axis), the prism of height b along z;
 # tilted by psi about the axis PQ at the angle omega with OB, the side n (vertex B's side) dipping
@@ -1091,57 +1070,42 @@ tilted("triangle-first-contact", "tan of the tilt at which either base of the cl
        body=_triangle(1, 1), density=sp.Rational(3, 5), at={om: 0})
 
 
-# ---- the cylinder: quadrature of the defining integrals over the disc (x = r sin(theta)) ---------------
-def _disc_moments(dps):
-    """M_k = integral over the unit disc of x^k dA, k = 0, 1, 2, by quadrature in theta (x = sin theta, chord width
-    2 cos theta, dx = cos theta dtheta), once per working precision: every integral over a disc of radius r cut by
-    a plane z = c + x tan(phi) is a combination r^(k+2) M_k of these."""
-    return _cached(("disc", mpmath.mp.prec),
-                   lambda: [mpmath.quad(lambda t: 2 * mpmath.cos(t) ** 2 * mpmath.sin(t) ** k,
-                                        [-mpmath.pi / 2, mpmath.pi / 2]) for k in range(3)])
+# ---- the cylinder: Body.cylinder (quadrature of exact slices, symfloat.engine.floating_witness) --------------
+# axis z, centred, tilted by psi towards +x: the side -x dips, the righting arm is B - G horizontally towards it
+UP_C = (sp.sin(PSI), 0, sp.cos(PSI))
+ARM_C = -sp.cos(PSI) * MEASURED["B - G, x"] + sp.sin(PSI) * MEASURED["B - G, z"]
+R = sp.Symbol("R", positive=True)                   # a radius sought, b = 1
 
 
-def cylinder_tilt(r_, b_, s_, phi, dps):
-    """Disc of radius r_, axis z from 0 to b_, water plane z = c + x tan(phi) (no base cut): the draught c
-    from the volume s F b, the centre of buoyancy from the disc's moments (quadrature); returns (righting arm,
-    c)."""
-    M0, M1, M2 = _disc_moments(dps)
-    tn = mpmath.tan(phi)
-    A0 = r_ ** 2 * M0                                     # area
-    A1 = r_ ** 3 * M1 * tn                                # integral of x tan(phi) dA
-    c = (s_ * A0 * b_ - A1) / A0
-    V = s_ * A0 * b_
-    xB = (c * r_ ** 3 * M1 + r_ ** 4 * M2 * tn) / V       # integral of x h dA, h = c + x tan(phi)
-    zB = (c ** 2 * r_ ** 2 * M0 + 2 * c * r_ ** 3 * M1 * tn + r_ ** 4 * M2 * tn ** 2) / 2 / V   # of h^2/2 dA
-    return mpmath.cos(phi) * xB + mpmath.sin(phi) * (zB - b_ / 2), c
+def cyl(name, description, targets, cases, quantity, body=Body.cylinder(r, b), density=s):
+    """A quantity of the upright cylinder."""
+    d.witness(FloatingWitness(name, description, tuple(targets), tuple(cases), body=body, density=density,
+                              quantity=quantity))
 
 
-def cylinder_gm(r_, b_, s_, dps):
-    M0, _, M2 = _disc_moments(dps)
-    return r_ ** 4 * M2 / (s_ * r_ ** 2 * M0 * b_) - (b_ / 2 - s_ * b_ / 2)
-
-
-def cylinder_equilibrium(r_, b_, s_, dps):
-    return first_zero(lambda p: lambda f: cylinder_tilt(r_, b_, s_, f, p)[0], "0.02", "1.52", 30, dps)
+def cyl_root(name, description, targets, cases, quantity, vanish=ARM_C, body=Body.cylinder(r, b), **kw):
+    """A quantity of the cylinder at the first zero of *vanish* (the righting arm: the tilted equilibrium) as the
+    tilt grows, or along ``along``."""
+    kw = {"up": UP_C, "along": PSI, "bracket": (sp.Rational(1, 50), sp.Rational(3, 2)), "steps": 30, "density": s,
+          **kw}
+    return RootWitness(name, description, tuple(targets), tuple(cases), body=body, quantity=quantity, vanish=vanish,
+                       **kw)
 
 
 cyl_cases = [Case({r: 1, b: 1, s: sp.Rational(1, 2)}), Case({r: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 5)}),
              Case({r: sp.Rational(1, 2), b: 2, s: sp.Rational(9, 10)})]
-cw("cylinder-upright-69", "16 s/b times the metacentric height (disc inertia by quadrature)", ("69", "70"), cyl_cases,
-   lambda case, dps: 16 * _n(case.params[s], dps) / _n(case.params[b], dps) * cylinder_gm(*P(case, dps, r, b, s), dps))
-cw("cylinder-upright-72", "-16 s/b times the metacentric height (quadrature)", ("72",), cyl_cases,
-   lambda case, dps: -16 * _n(case.params[s], dps) / _n(case.params[b], dps) * cylinder_gm(*P(case, dps, r, b, s), dps))
-cw("cylinder-upright-gm", "metacentric height (quadrature)", ("cylinder-condition",), cyl_cases,
-   lambda case, dps: cylinder_gm(*P(case, dps, r, b, s), dps))
-cw("cylinder-polygon-gm", "metacentric height of inscribed 64/128-gon prisms, Richardson (cylinder_state), float64",
-   ("cylinder-condition",), cyl_cases,
-   lambda case, dps: mpmath.mpf(cylinder_state(*[float(case.params[k]) for k in (r, b)], (0, 0, 1), float(case.params[s]),
-                                               sides=64, phases=1).metacentric_height[0]),
-   methods=(Precision(15, 1e-4),))
+cyl("cylinder-upright-69", "16 s/b times the metacentric height of the upright cylinder", ("69", "70"), cyl_cases,
+    16 * s / b * GM)
+cyl("cylinder-upright-72", "-16 s/b times the metacentric height", ("72",), cyl_cases, -16 * s / b * GM)
+cyl("cylinder-upright-gm", "metacentric height of the upright cylinder", ("cylinder-condition",), cyl_cases, GM)
+d.witness(FloatingWitness("cylinder-polygon-gm", "metacentric height of the inscribed regular 256-gon prism (exact "
+                          "clipping; its area and moment fall short by (2 pi/256)^2/6 = 1e-4)", ("cylinder-condition",),
+                          tuple(cyl_cases), body=Body.regular(256, 2 * r * sp.sin(pi / 256), b), density=s,
+                          quantity=GM, methods=(Precision(15, 1e-3),)))
 tiltc_cases = [Case({r: sp.Rational(8, 5), b: sp.Rational(5, 2), s: sp.Rational(3, 5)}, label="example 10"),
                Case({r: sp.Rational(1, 2), b: 1, s: sp.Rational(3, 20)}, label="square section, s = 0.15")]
-cw("cylinder-tilted-equilibrium", "tan^2 of the tilt where the quadrature righting arm vanishes", ("72a-tan",),
-   tiltc_cases, lambda case, dps: mpmath.tan(cylinder_equilibrium(*P(case, dps, r, b, s), dps)) ** 2)
+d.witness(cyl_root("cylinder-tilted-equilibrium", "tan^2 of the tilt where the cylinder's righting arm vanishes",
+                   ("72a-tan",), tiltc_cases, sp.tan(PSI) ** 2))
 
 # ---- worked examples: the printed numbers that are geometric quantities ------------------------------------
 one = [Case({}, label="the example's data")]
@@ -1174,61 +1138,43 @@ d.witness(Joined("example-4",
                  (Case({a: 12 * sp.sqrt(2) / 11, b: 1, s: sp.Rational(7, 11)}),),
                  parts=(_root_witness("equilibrium", "", (), (), sp.tan(PSI), ARM, **EX4),
                         _root_witness("top contact", "", (), (), sp.tan(PSI), TOP, **EX4))))
-cw("example-5", "2r/b at which the upright cylinder (s = 1/2) has zero metacentric height (quadrature)", ("ex5", "sqrt2"),
-   one, lambda c, dps: 2 * first_zero(lambda p: lambda r_: cylinder_gm(r_, 1, mpmath.mpf(1) / 2, p), "0.5", "1.5", 20,
-                                      dps))
+d.witness(cyl_root("example-5", "2r/b at which the upright cylinder (s = 1/2) has zero metacentric height",
+                   ("ex5", "sqrt2"), one, 2 * R, GM, body=Body.cylinder(R, 1), up=(0, 0, 1), density=HALF, along=R,
+                   bracket=(HALF, sp.Rational(3, 2)), steps=20))
+SQUARE = Body.cylinder(HALF, 1)                     # examples 6, 7: 2r = b
+for nm, tg, quantity, lo, hi, steps in (
+        ("example-6-root", "ex6-root-value", 2 * s - 1, HALF, sp.Rational(99, 100), 49),
+        ("example-6-sum", "ex6-sum", 2 * s, HALF, sp.Rational(99, 100), 49),
+        ("example-6-difference", "ex6-difference", 2 * s, sp.Rational(1, 100), sp.Rational(49, 100), 24),
+        ("example-6-upper", "ex6-upper", s, HALF, sp.Rational(99, 100), 49),
+        ("example-6-lower", "ex6-lower", s, sp.Rational(1, 100), sp.Rational(49, 100), 24),
+        ("example-7-lower", "ex7-lower", s, sp.Rational(1, 100), sp.Rational(49, 100), 24),
+        ("example-7-range-lower", "ex7-range-lower", s, sp.Rational(1, 100), sp.Rational(49, 100), 24)):
+    d.witness(cyl_root(nm, "density of zero metacentric height of the upright cylinder with 2r = b", (tg,), one,
+                       quantity, GM, body=SQUARE, up=(0, 0, 1), along=s, bracket=(lo, hi), steps=steps))
 
+# example 7: the density at which the tilted equilibrium reaches the lower base (2r = b, s < 1/2): the righting
+# arm vanishes where the lower base meets the water
+arm_at_bottom = cyl_root("bottom", "", (), (), ARM_C, BOT, body=SQUARE)
+NESTED = (FLOATING_METHODS[0], Precision(30, 1e-20))   # a zero inside a zero: 30 digits (40 cost minutes)
+EX7 = {"body": SQUARE, "up": (0, 0, 1), "along": s, "bracket": (sp.Rational(37, 250), sp.Rational(33, 200)), "steps": 1,
+       "methods": NESTED}
+d.witness(cyl_root("example-7-minus", "density at which the tilted equilibrium of the cylinder reaches the lower base",
+                   ("ex7-minus", "ex7-range-upper"), one, s, arm_at_bottom, **EX7))
+d.witness(cyl_root("example-7-root", "0.4 minus that density", ("ex7-root",), one, sp.Rational(2, 5) - s,
+                   arm_at_bottom, **EX7))
 
-def ex6_roots(dps):
-    gm = lambda p: lambda s_: cylinder_gm(mpmath.mpf(1) / 2, 1, s_, p)      # noqa: E731
-    return first_zero(gm, "0.5", "0.99", 49, dps), first_zero(gm, "0.01", "0.49", 24, dps)
-
-
-ex6 = lambda dps: _cached(("ex6", dps), lambda: ex6_roots(dps))
-for nm, tg, fn in (("example-6-root", "ex6-root-value", lambda dps: 2 * ex6(dps)[0] - 1),
-                   ("example-6-sum", "ex6-sum", lambda dps: 2 * ex6(dps)[0]),
-                   ("example-6-difference", "ex6-difference", lambda dps: 2 * ex6(dps)[1]),
-                   ("example-6-upper", "ex6-upper", lambda dps: ex6(dps)[0]),
-                   ("example-6-lower", "ex6-lower", lambda dps: ex6(dps)[1]),
-                   ("example-7-lower", "ex7-lower", lambda dps: ex6(dps)[1]),
-                   ("example-7-range-lower", "ex7-range-lower", lambda dps: ex6(dps)[1])):
-    cw(nm, "density of zero metacentric height of the upright cylinder with 2r = b (quadrature)", (tg,), one,
-       (lambda fn_: lambda c, dps: fn_(dps))(fn))
-
-
-def ex7_bottom(dps):
-    """Density (2r = b = 1, s < 1/2) at which the bottom rim reaches the water in the tilted equilibrium."""
-    def gap(p):
-        def at(s_):
-            phi = cylinder_equilibrium(mpmath.mpf(1) / 2, 1, s_, p)
-            c = cylinder_tilt(mpmath.mpf(1) / 2, 1, s_, phi, p)[1]
-            return c - mpmath.mpf(1) / 2 * mpmath.tan(phi)          # water height over the rising rim
-        return at
-    return first_zero(gap, "0.148", "0.165", 1, dps)
-
-
-ex7 = lambda dps: _cached(("ex7", dps), lambda: ex7_bottom(dps))
-cw("example-7-minus", "density at which the tilted cylinder's bottom rim meets the water (quadrature)",
-   ("ex7-minus", "ex7-range-upper"), one, lambda c, dps: ex7(dps))
-cw("example-7-root", "0.4 minus that density", ("ex7-root",), one, lambda c, dps: mpmath.mpf(2) / 5 - ex7(dps))
-
-
-def ex10(dps):
-    r_, b_, s_ = mpmath.mpf(8) / 5, mpmath.mpf(5) / 2, mpmath.mpf(3) / 5
-    phi = cylinder_equilibrium(r_, b_, s_, dps)
-    c = cylinder_tilt(r_, b_, s_, phi, dps)[1]
-    return mpmath.degrees(phi), c + r_ * mpmath.tan(phi)
-
-
-ex10c = lambda dps: _cached(("ex10", dps), lambda: ex10(dps))
-cw("example-10-angle", "equilibrium tilt of the cylinder by quadrature, degrees", ("ex10-angle",), one,
-   lambda c, dps: ex10c(dps)[0])
-cw("example-10-x", "water height on the dipping generator (quadrature)", ("ex10-x-sum", "ex10-x"), one,
-   lambda c, dps: ex10c(dps)[1])
-cw("example-10-fraction", "the same over b", ("ex10-fraction", "ex10-deepest"), one, lambda c, dps: ex10c(dps)[1] / mpmath.mpf("2.5"))
-cw("example-10-dry", "the part above water, over b", ("ex10-dry",), one, lambda c, dps: 1 - ex10c(dps)[1] / mpmath.mpf("2.5"))
-cw("example-10-dry-cm", "the part above water in cm", ("ex10-dry-cm",), one,
-   lambda c, dps: 100 * (mpmath.mpf("2.5") - ex10c(dps)[1]))
+# example 10: the tilted equilibrium of r = 1.6, b = 2.5, s = 0.6; x, the water's height on the dipping side line
+# above the lower base, is b minus the upper base's lowest point above water over cos(psi)
+EX10 = {"body": Body.cylinder(sp.Rational(8, 5), sp.Rational(5, 2)), "density": sp.Rational(3, 5)}
+X10 = sp.Rational(5, 2) - TOP / sp.cos(PSI)
+for nm, description, tg, quantity in (
+        ("example-10-angle", "equilibrium tilt of the cylinder, degrees", ("ex10-angle",), 180 * PSI / pi),
+        ("example-10-x", "water height on the dipping side line", ("ex10-x-sum", "ex10-x"), X10),
+        ("example-10-fraction", "the same over b", ("ex10-fraction", "ex10-deepest"), X10 / sp.Rational(5, 2)),
+        ("example-10-dry", "the part above water, over b", ("ex10-dry",), 1 - X10 / sp.Rational(5, 2)),
+        ("example-10-dry-cm", "the part above water in cm", ("ex10-dry-cm",), 100 * (sp.Rational(5, 2) - X10))):
+    d.witness(cyl_root(nm, description, tg, one, quantity, **EX10))
 
 
 # at s = 11/20, (a/b)^2 = 11/5 (region III): the righting arm of the clipped prism at the first contact of a base,
@@ -1275,10 +1221,6 @@ d.witness(_boundary(sp.Rational(2, 3), sp.sqrt(Q), TOP, "example-3-ratio", "its 
                     ("ex3-ratio", "ex3-ratio-fraction"), one))
 
 
-def _qq(case, dps):
-    return (_n(case.params[a], dps) / _n(case.params[b], dps)) ** 2
-
-
 # example 4: the clipped prism tilted by 30 deg about the axis omega = 15 deg, in equilibrium with the upper base
 # just touching the water: nested zeros, of the righting arm along s and of the upper base's height along a/b = Q
 EX4_AT = {om: pi / 12, PSI: pi / 6}
@@ -1295,210 +1237,125 @@ d.witness(_root_witness("example-4-ratio", "a/b of the same clipped solution", (
                         bracket=(sp.Rational(3, 2), sp.Rational(8, 5))))
 
 
-# ---- the first-region model of the triangle by quadrature (no base cut, column heights may pass the bases) --
-_GL = None
+# ---- the first-region model of the triangle: columns over the base from the bottom to the water plane --------
+# (61)-(65) let a column rise above the upper base or fall below the lower one (a negative height).  The same
+# zeros: the prism extended by b on either side (length 3b, the real one its middle third) at the same water
+# plane, its lower third a neutral part (weight equal to its buoyancy, always immersed): it adds F b to the
+# volume and G = -b/(1 + s) (the weighted centre of the two parts), and B - G is the model's times
+# V / (V + F b), so the righting arm vanishes where the model's does.  A column's height above the real bottom
+# is its depth over cos(psi) minus b: the upper base's clearance at the deepest vertex and the lower base's at
+# the shallowest follow from the draught and the lower base's height above water.
+def _model(edge, height):
+    return Loaded.of(_triangle(edge, 3 * height), (0, 0, -height / (1 + s)))
 
 
-def _gauss3(dps):
-    r = mpmath.sqrt(mpmath.mpf(3) / 5)
-    return [((1 - r) / 2, mpmath.mpf(5) / 18), (mpmath.mpf(1) / 2, mpmath.mpf(8) / 18), ((1 + r) / 2, mpmath.mpf(5) / 18)]
+def _top(height):
+    return 2 * height - MEASURED["draught"] / sp.cos(PSI)
 
 
-def model_tilt(a_, b_, s_, w_, tau, dps, flip=False):
-    """Triangle of edge a_ (B, C, A as in the text), axis PQ at omega = w_, B on the dipping side (flip: rising),
-    water plane z = c + xi tau over the base with the column heights integrated by a collapsed 3x3 Gauss rule
-    (exact for these polynomials); c from the volume s F b.  Returns (righting arm, top clearance, bottom
-    clearance): the clearances are b minus the highest water height at a vertex and the lowest water height."""
-    t3 = mpmath.sqrt(3)
-    P = [(-a_ / 2, -a_ / (2 * t3)), (a_ / 2, -a_ / (2 * t3)), (mpmath.mpf(0), a_ / t3)]
-    sg = -1 if flip else 1
-    n = (-sg * mpmath.sin(w_), -sg * mpmath.cos(w_))
-    xi = lambda X_, Y_: X_ * n[0] + Y_ * n[1]
-    (x0, y0), (x1, y1), (x2, y2) = P
-    J = abs((x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0))
-    g = _gauss3(dps)
-
-    def integ(f):
-        tot = 0
-        for uu, wu in g:
-            for vv, wv in g:
-                X_ = x0 + uu * (x1 - x0) + uu * vv * (x2 - x1)
-                Y_ = y0 + uu * (y1 - y0) + uu * vv * (y2 - y1)
-                tot += wu * wv * uu * J * f(X_, Y_)
-        return tot
-    F = integ(lambda X_, Y_: 1)
-    c = (s_ * F * b_ - tau * integ(xi)) / F
-    col = lambda X_, Y_: c + xi(X_, Y_) * tau
-    V = integ(col)
-    Mxi = integ(lambda X_, Y_: xi(X_, Y_) * col(X_, Y_))
-    Mz = integ(lambda X_, Y_: col(X_, Y_) ** 2 / 2)
-    phi = mpmath.atan(tau)
-    arm = (mpmath.cos(phi) * Mxi + mpmath.sin(phi) * (Mz - V * b_ / 2)) / V
-    heights = [col(*p) for p in P]
-    return arm, b_ - max(heights), min(heights)
+def _bottom(height):
+    return -BOT / sp.cos(PSI) - height
 
 
-def model_eq(q_, s_, dps):
-    """tan phi_1 of the model (b = 1): the first root of the righting arm."""
-    return _cached(("meq", q_, s_, dps), lambda: first_zero(
-        lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, 0, t_, p)[0]), "0.02", "20.02", 200, dps))
+MODEL = {"body": _model(a, b), "density": (1 + s) / 3}
+B_RISING = {om: om + pi}                            # the axis turned half round: vertex B on the rising side
 
 
-def model_contact(q_, s_, w_, which, flip, dps):
-    return first_zero(lambda p: (lambda t_: model_tilt(mpmath.sqrt(q_), 1, s_, w_, t_, p, flip)[which]),
-                      "0.02", "4.02", 40, dps)
+def _model_sin(quantity):
+    """*quantity* at the axis omega (0 ... 60 deg) at which the model's equilibrium reaches the upper base (B
+    dipping) and the lower base (B rising): the righting arm at the contact vanishes there."""
+    return tuple(_root_witness("sin", "", (), (), quantity, _root_witness("contact", "", (), (), ARM, which, at=at,
+                                                                          **MODEL),
+                               up=(0, 0, 1), along=om, bracket=(0, pi / 3), steps=1, **MODEL)
+                 for which, at in ((_top(b), None), (_bottom(b), B_RISING)))
 
 
-def model_boundary(s_, w_, which, flip, dps):
-    """(a/b)^2 at which the model's equilibrium tangent equals its contact tangent for the axis w_."""
-    qh = 12 * s_ * (1 - s_)
-    make = lambda p: (lambda q_: model_tilt(mpmath.sqrt(q_), 1, s_, w_, model_eq(q_, s_, p), p, flip)[which])
-    return _cached(("mb", s_, w_, which, flip, dps),
-                   lambda: first_zero(make, qh / 10, qh * mpmath.mpf("0.999"), 1, dps))
+d.witness(Joined("model-61", "sin(30 deg + omega) of the axis where the first-region model's upper-base (B dipping) "
+                 "/ lower-base (B rising) contact meets its equilibrium", ("61",), q60_cases,
+                 parts=_model_sin(sp.sin(pi / 6 + om))))
+d.witness(Joined("model-65-III-omega", "the same, squared", ("65-III-omega",), q60_cases,
+                 parts=_model_sin(sp.sin(pi / 6 + om) ** 2)))
+d.witness(Joined("model-61-from-60", "the model's equilibrium tangent and upper-base contact tangent at the case's "
+                 "axis", ("61-from-60",),
+                 (Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20), om: sp.Rational(3, 10)}),
+                  Case({a: 3, b: 2, s: sp.Rational(7, 10), om: 1})),
+                 parts=(_root_witness("equilibrium", "", (), (), sp.tan(PSI), ARM, **MODEL),
+                        _root_witness("contact", "", (), (), sp.tan(PSI), _top(b), **MODEL))))
 
 
-def model_sin_bound(q_, s_, which, flip, dps):
-    """sin(30 deg + omega) of the axis at which the model's contact tangent equals its equilibrium tangent."""
-    t1_ = model_eq(q_, s_, dps)
-    w_ = first_zero(lambda p: lambda w: model_tilt(mpmath.sqrt(q_), 1, s_, w, t1_, p, flip)[which], 0, mpmath.pi / 3, 1, dps)
-    return mpmath.sin(mpmath.pi / 6 + w_)
+def _model_boundaries(omega):
+    """The (a/b)^2 = Q (b = 1) at which the model's equilibrium reaches the upper base (B dipping) and the lower
+    base (B rising) for the axis *omega*: zeros along Q of the righting arm at the contact."""
+    body = {"body": _model(sp.sqrt(Q), 1), "density": (1 + s) / 3}
+    return tuple(_root_witness("boundary", "", (), (), Q,
+                               _root_witness("contact", "", (), (), ARM, which, at={om: omega + turn}, **body),
+                               up=(0, 0, 1), along=Q, steps=1,
+                               bracket=(12 * s * (1 - s) / 10, 12 * s * (1 - s) * 999 / 1000), **body)
+                 for which, turn in ((_top(1), 0), (_bottom(1), pi)))
 
 
-def _qs(c, dps):
-    return _qq(c, dps), _n(c.params[s], dps)
+Q0_M, Q60_M = _model_boundaries(0), _model_boundaries(pi / 3)
+d.witness(Combined("model-omega0-63", "half of the (a/b)^2 at which the model's equilibrium meets the upper (B "
+                   "dipping) / lower (B rising) base contact at omega = 0, minus half of (a/b)^2", ("63",), q60_cases,
+                   parts=Q0_M, values=((PART[0] - QQ) / 2, (PART[1] - QQ) / 2)))
+d.witness(Combined("model-omega0-64", "the same margins, not halved", ("64",), q60_cases, parts=Q0_M,
+                   values=(PART[0] - QQ, PART[1] - QQ)))
+d.witness(Combined("model-region-III", "the model's boundaries at omega = 60 deg and 0 against (a/b)^2", ("65-III",),
+                   q60_cases, parts=(*Q60_M, *Q0_M),
+                   values=(PART[0] - QQ, QQ - PART[2], PART[1] - QQ, QQ - PART[3])))
 
 
-def sin_bounds(c, dps):
-    q_, s_ = _qs(c, dps)
-    return _cached(("sb", q_, s_, dps), lambda: (model_sin_bound(q_, s_, 1, False, dps), model_sin_bound(q_, s_, 2, True, dps)))
+# ---- the cylinder: the limits (72a), (73) and examples 8, 9 ------------------------------------------------
+# the tangents at which the upper base meets the water (tilting up) and the lower base (the upper one not cut:
+# the cylinder extended upwards to 2b at the same draught), and of the tilted equilibrium
+CONTACTS = (cyl_root("upper", "", (), (), sp.tan(PSI), TOP),
+            cyl_root("lower", "", (), (), sp.tan(PSI), BOT, body=Body.cylinder(r, 2 * b), density=s / 2))
+EQUILIBRIUM = cyl_root("equilibrium", "", (), (), sp.tan(PSI))
+K2_ = (2 * r / b) ** 2
+d.witness(Joined("cylinder-contacts", "tangents of the tilts at which the upper and the lower base meet the water",
+                 ("72a",), tiltc_cases[:1], parts=CONTACTS))
+d.witness(Combined("cylinder-contact-margins", "squared contact tangents minus the squared equilibrium tangent",
+                   ("72a-squared",), tiltc_cases[:1], parts=(*CONTACTS, EQUILIBRIUM),
+                   values=(PART[0] ** 2 - PART[2] ** 2, PART[1] ** 2 - PART[2] ** 2)))
+d.witness(Combined("cylinder-73", "-16 s/b times the upright metacentric height, and (2r/b)^2/2 times the "
+                   "squared-tangent margins", ("73",), tiltc_cases[:1],
+                   parts=(FloatingWitness("upright", "", (), (), body=Body.cylinder(r, b), density=s, quantity=GM),
+                          *CONTACTS, EQUILIBRIUM),
+                   values=(-16 * s / b * PART[0], (PART[1] ** 2 - PART[3] ** 2) * K2_ / 2,
+                           (PART[2] ** 2 - PART[3] ** 2) * K2_ / 2)))
+d.witness(Joined("cylinder-71", "densities at which the upright cylinder's metacentric height vanishes", ("71",),
+                 (Case({r: sp.Rational(3, 5), b: 1}), Case({r: 1, b: 3})),
+                 parts=tuple(cyl_root(f"root {k}", "", (), (), s, GM, up=(0, 0, 1), along=s, bracket=bracket,
+                                      steps=49)
+                             for k, bracket in enumerate(((HALF, sp.Rational(99, 100)),
+                                                          (sp.Rational(1, 200), sp.Rational(99, 200)))))))
 
 
-def model_q(c, dps, w_, which, flip):
-    return model_boundary(_qs(c, dps)[1], w_, which, flip, dps)
+def threshold(density, *values):
+    """*values* and (2R)^2, at which the upright cylinder of radius R, b = 1 (the ratio 2r/b: the metacentric
+    height is homogeneous of degree 1 in r, b) has zero metacentric height at *density*."""
+    return dict(quantity=(*values, (2 * R) ** 2), vanish=GM, body=Body.cylinder(R, 1), up=(0, 0, 1),
+                density=density, along=R, bracket=(sp.Rational(1, 100), sp.Rational(201, 100)), steps=40)
 
 
-cw("model-61", "sin(30 deg + omega) of the axis where the first-region model's upper-base (B dipping) / lower-base "
-   "(B rising) contact tangent equals its equilibrium tangent (Gauss quadrature over the triangle, roots)",
-   ("61",), q60_cases, sin_bounds)
-cw("model-65-III-omega", "the same, squared", ("65-III-omega",), q60_cases, lambda c, dps: tuple(v ** 2 for v in sin_bounds(c, dps)))
-cw("model-61-from-60", "the model's equilibrium tangent and upper-base contact tangent at the case's axis",
-   ("61-from-60",), [Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20), om: sp.Rational(3, 10)}),
-                     Case({a: 3, b: 2, s: sp.Rational(7, 10), om: 1})],
-   lambda c, dps: (model_eq(_qs(c, dps)[0], _qs(c, dps)[1], dps),
-                   model_contact(_qs(c, dps)[0], _qs(c, dps)[1], _n(c.params[om], dps), 1, False, dps)))
-
-
-def q0_pair(c, dps):
-    return model_q(c, dps, 0, 1, False), model_q(c, dps, 0, 2, True)
-
-
-def q60_model_pair(c, dps):
-    return model_q(c, dps, mpmath.pi / 3, 1, False), model_q(c, dps, mpmath.pi / 3, 2, True)
-
-
-cw("model-omega0-63", "half of the (a/b)^2 at which the model's equilibrium meets the upper (B dipping) / lower "
-   "(B rising) base contact at omega = 0, minus half of (a/b)^2", ("63",), q60_cases,
-   lambda c, dps: tuple((v - _qq(c, dps)) / 2 for v in q0_pair(c, dps)))
-cw("model-omega0-64", "the same margins, not halved", ("64",), q60_cases,
-   lambda c, dps: tuple(v - _qq(c, dps) for v in q0_pair(c, dps)))
-cw("model-region-III", "the model's boundaries at omega = 60 deg and 0 against (a/b)^2", ("65-III",), q60_cases,
-   lambda c, dps: (q60_model_pair(c, dps)[0] - _qq(c, dps), _qq(c, dps) - q0_pair(c, dps)[0],
-                   q60_model_pair(c, dps)[1] - _qq(c, dps), _qq(c, dps) - q0_pair(c, dps)[1]))
-
-
-# ---- the cylinder: quadrature model (as cylinder_tilt) -----------------------------------------------------
-def cyl_contact(r_, b_, s_, which, dps):
-    """tan of the tilt at which the water height c + r tan(phi) on the dipping generator reaches the top (which = 'top')
-    or c - r tan(phi) on the rising one reaches the bottom; c by quadrature (cylinder_tilt)."""
-    def make(p):
-        if which == "top":
-            return lambda f: b_ - (cylinder_tilt(r_, b_, s_, f, p)[1] + r_ * mpmath.tan(f))
-        return lambda f: cylinder_tilt(r_, b_, s_, f, p)[1] - r_ * mpmath.tan(f)
-    return mpmath.tan(first_zero(make, "0.02", "1.52", 15, dps))
-
-
-def cyl_eq(r_, b_, s_, dps):
-    """tan phi_1: the first root of the quadrature righting arm (float scan, then secant steps)."""
-    return mpmath.tan(first_zero(lambda p: (lambda f: cylinder_tilt(r_, b_, s_, f, p)[0]), "0.02", "1.52", 30, dps))
-
-
-def cyl_limits(c, dps):
-    r_, b_, s_ = P(c, dps, r, b, s)
-    return _cached(("cl", r_, b_, s_, dps), lambda: (cyl_contact(r_, b_, s_, "top", dps), cyl_contact(r_, b_, s_, "bottom", dps),
-                                                   cyl_eq(r_, b_, s_, dps)))
-
-
-cw("cylinder-contacts", "contact tangents of the upper and lower base (quadrature)", ("72a",), tiltc_cases[:1],
-   lambda c, dps: cyl_limits(c, dps)[:2])
-cw("cylinder-contact-margins", "squared contact tangents minus the squared equilibrium tangent (quadrature)",
-   ("72a-squared",), tiltc_cases[:1], lambda c, dps: tuple(v ** 2 - cyl_limits(c, dps)[2] ** 2 for v in cyl_limits(c, dps)[:2]))
-
-
-def _k2(c, dps):
-    return (2 * _n(c.params[r], dps) / _n(c.params[b], dps)) ** 2
-
-
-cw("cylinder-73", "-16 s/b times the metacentric height, and (2r/b)^2/2 times the squared-tangent margins (quadrature)",
-   ("73",), tiltc_cases[:1],
-   lambda c, dps: (-16 * _n(c.params[s], dps) / _n(c.params[b], dps) * cylinder_gm(*P(c, dps, r, b, s), dps),)
-   + tuple((v ** 2 - cyl_limits(c, dps)[2] ** 2) * _k2(c, dps) / 2 for v in cyl_limits(c, dps)[:2]))
-
-
-def cyl_density_roots(c, dps):
-    r_, b_ = P(c, dps, r, b)
-    gm = lambda p: lambda s_: cylinder_gm(r_, b_, s_, p)        # noqa: E731
-    return _cached(("cdr", r_, b_, dps), lambda: (first_zero(gm, "0.5", "0.99", 49, dps),
-                                                 first_zero(gm, "0.005", "0.495", 49, dps)))
-
-
-cw("cylinder-71", "densities at which the upright cylinder's metacentric height (quadrature) vanishes", ("71",),
-   [Case({r: sp.Rational(3, 5), b: 1}), Case({r: 1, b: 3})], cyl_density_roots)
-
-
-def cyl_ratio_threshold(b_, s_, dps):
-    """(2r/b)^2 at which the upright cylinder (quadrature) has zero metacentric height."""
-    r0 = b_ * first_zero(lambda p: lambda r_: cylinder_gm(r_, 1, s_, p), "0.01", "2.01", 40, dps)   # gm(kr, kb) = k gm
-    return (2 * r0 / b_) ** 2
-
-
-cw("example-8-values", "(2r/b)^2 of the data and the (2r/b)^2 of zero metacentric height at s = 3/4 (quadrature)",
-   ("ex8-values",), one, lambda c, dps: ((mpmath.mpf(2 * 30) / 40) ** 2, cyl_ratio_threshold(mpmath.mpf(40), mpmath.mpf(3) / 4, dps)))
-cw("example-9-values", "2r/b, (2r/b)^2 of the data and the threshold (2r/b)^2 at s = 0.8 (quadrature)", ("ex9-values",),
-   one, lambda c, dps: (mpmath.mpf(2 * 15) / 40, (mpmath.mpf(2 * 15) / 40) ** 2,
-                        cyl_ratio_threshold(mpmath.mpf(40), mpmath.mpf(4) / 5, dps)))
-
-
-def ex9_bound(dps):
-    """(2r/b)^2 (b = 1, s = 0.8) at which the quadrature equilibrium reaches the upper-base contact."""
-    s_ = mpmath.mpf(4) / 5
-    make = lambda p: (lambda r_: cylinder_tilt(r_, 1, s_, mpmath.atan(cyl_contact(r_, 1, s_, "top", p)), p)[0])
-    r0 = first_zero(make, "0.2", "0.7", 5, dps)
-    return (2 * r0) ** 2
-
-
-cw("example-9-bound", "(2r/b)^2 at which the tilted equilibrium of the cylinder (s = 0.8) meets the upper base",
-   ("ex9-bound",), one, lambda c, dps: _cached(("ex9b", dps), lambda: ex9_bound(dps)),
-   methods=(Precision(15, 1e-10), Precision(30, 1e-25)))
-
-
-def ex8_signs(dps):
-    r_, b_, s_ = mpmath.mpf(30), mpmath.mpf(40), mpmath.mpf(3) / 4
-    top = cyl_contact(r_, b_, s_, "top", dps)
-    arms = [cylinder_tilt(r_, b_, s_, mpmath.atan(top * k / 8), dps)[0] for k in range(1, 9)]
-    return mpmath.sign(cylinder_gm(r_, b_, s_, dps)), mpmath.sign(min(arms))
-
-
-def ex9_signs(dps):
-    r_, b_, s_ = mpmath.mpf(15), mpmath.mpf(40), mpmath.mpf(4) / 5
-    top = cyl_contact(r_, b_, s_, "top", dps)
-    t1_ = cyl_eq(r_, b_, s_, dps)
-    return mpmath.sign(cylinder_gm(r_, b_, s_, dps)), mpmath.sign(top - t1_)
-
-
-cw("example-8-claim", "signs of the upright metacentric height and of the smallest righting arm on 8 tilts up to the "
-   "upper-base contact (quadrature)", ("ex8-claim",), one, lambda c, dps: ex8_signs(dps))
-cw("example-9-claim", "signs of the upright metacentric height and of (contact tangent - equilibrium tangent) "
-   "(quadrature)", ("ex9-claim",), one, lambda c, dps: ex9_signs(dps))
+d.witness(cyl_root("example-8-values", "(2r/b)^2 of the data, and the (2r/b)^2 of zero metacentric height at s = 3/4",
+                   ("ex8-values",), [Case({r: 30, b: 40}, label="the example's data")],
+                   **threshold(sp.Rational(3, 4), K2_)))
+d.witness(cyl_root("example-9-values", "2r/b, (2r/b)^2 of the data and the threshold (2r/b)^2 at s = 0.8",
+                   ("ex9-values",), [Case({r: 15, b: 40}, label="the example's data")],
+                   **threshold(sp.Rational(4, 5), 2 * r / b, K2_)))
+d.witness(cyl_root("example-9-bound", "(2r/b)^2 at which the tilted equilibrium of the cylinder (s = 0.8) meets "
+                   "the upper base", ("ex9-bound",), one, (2 * R) ** 2,
+                   cyl_root("contact", "", (), (), ARM_C, TOP, body=Body.cylinder(R, 1), density=sp.Rational(4, 5)),
+                   body=Body.cylinder(R, 1), up=(0, 0, 1), density=sp.Rational(4, 5), along=R,
+                   bracket=(sp.Rational(1, 5), sp.Rational(7, 10)), steps=5, methods=NESTED))
+for nm, example, r_, s_ in (("example-8-claim", "ex8-claim", 30, sp.Rational(3, 4)),
+                            ("example-9-claim", "ex9-claim", 15, sp.Rational(4, 5))):
+    body_ = Body.cylinder(r_, 40)
+    d.witness(Joined(nm, "signs of the upright metacentric height and of the righting arm where the upper base "
+                     "meets the water (positive: no tilted equilibrium before)", (example,), one,
+                     parts=(FloatingWitness("upright", "", (), (), body=body_, density=s_, quantity="stability sign"),
+                            cyl_root("arm", "", (), (), sp.sign(ARM_C), TOP, body=body_, density=s_))))
 
 
 # =====================================================================================================

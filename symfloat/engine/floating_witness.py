@@ -72,10 +72,17 @@ class Body:
     def regular(cls, n, side, length):
         return cls("regular", (int(n), side, length))
 
+    @classmethod
+    def cylinder(cls, radius, length):
+        """A circular cylinder, axis z, centred (see :class:`Cylinder`)."""
+        return cls("cylinder", (radius, length))
+
     def build(self, params, dps):
         """The :class:`~symfloat.geometry.floating.Polyhedron` at *params*, float64 (``dps`` 15) or mpmath."""
         prec = None if dps <= 15 else dps
         at = lambda e: number(e, params, dps)      # noqa: E731
+        if self.kind == "cylinder":
+            return Cylinder(*(_real(at(x), dps) for x in self.dims), prec)
         if self.kind == "box":
             return box(*(at(x) for x in self.dims), prec)
         if self.kind == "prism":
@@ -244,7 +251,7 @@ class FloatingWitness(MeasuredWitness):
         body = body.build(params, dps)
         up = tuple(number(x, params, dps) for x in self.up)      # the geometry normalises it
         density = number(self.density, params, dps)
-        st = floating_state(body, up, density)
+        st = _floating_state(body, up, density)
         tilt = []
 
         def measured(name):
@@ -651,3 +658,134 @@ class CutWitness(FloatingRootWitness):
 
 __all__ += ["RootWitness", "Joined", "first_zero", "waterplane_moment", "Root", "At", "FloatingRootWitness", "CutWitness",
             "potential_slope"]
+
+
+# ---- the circular cylinder (quadrature of exact slices) and witnesses combined by an expression ----
+import math  # noqa: E402
+
+from ..geometry.floating import FloatingState  # noqa: E402
+from ..solver.cylinder import _draught, _Math, _volume_moments, _waterplane  # noqa: E402
+
+
+@dataclass
+class Cylinder:
+    """A circular cylinder of radius ``r``, axis z from -length/2 to length/2 (G at the origin), in float64
+    (``dps`` None) or mpmath.  Floated with up vector u it is turned about its axis so that u lies in the
+    meridian plane of :mod:`symfloat.solver.cylinder`: draught, volume, centre of buoyancy and waterplane
+    there by quadrature of exact slices (exact branches upright and lying; base cuts included).
+    ``vertices``: the four rim points extreme along the last up vector, the only points that a reading of
+    the extreme heights of the body or of a base sees."""
+
+    r: object
+    length: object
+    dps: int | None = None
+    vertices: tuple = ()
+
+
+def _waterplane_y(M, r, L, theta, t):
+    """int y^2 over the waterplane, y its axis normal to the meridian plane (the waterplane is symmetric
+    about y = 0): the half-width r sin p of the slices of ``solver.cylinder._waterplane`` (x = -r cos p,
+    dw = r sin p dp / cos theta), each contributing 2 (r sin p)^3 / 3."""
+    st, ct = M.trig(theta)
+    if st == 0:
+        return M.pi * r ** 4 / 4
+    if ct == 0:
+        half = M.sqrt(max(r * r - t * t, 0))
+        return L * (2 * half) ** 3 / 12
+    w_lo, w_hi = (-r - t * st) / ct, (r - t * st) / ct
+    z_lo, z_hi = (t * ct - L / 2) / st, (t * ct + L / 2) / st
+    phi_of = lambda w: M.acos(min(max(-(t * st + w * ct) / r, -1), 1))     # noqa: E731
+    p0, p1 = sorted((phi_of(max(w_lo, z_lo)), phi_of(min(w_hi, z_hi))))
+    return M.integrate(lambda p: 2 * (r * M.sin(p)) ** 3 / 3 * r * M.sin(p) / ct, p0, p1)
+
+
+def _cylinder_state(cyl, u, s):
+    """The :class:`~symfloat.geometry.floating.FloatingState` of a :class:`Cylinder` with *u* (body frame) up
+    at density ratio *s*; the waterplane's tensor in the basis (e_theta, e_y), diagonal by symmetry."""
+    M, dps = _Math(cyl.dps), cyl.dps or 15
+    u = tuple(_real(x, dps) for x in u)
+    norm = M.sqrt(sum(x * x for x in u))
+    u = tuple(x / norm for x in u)
+    w = M.sqrt(u[0] ** 2 + u[1] ** 2)
+    h = (u[0] / w, u[1] / w) if w > 0 else (M.num(1), M.num(0))       # the meridian's horizontal x
+    sign = 1 if u[2] >= 0 else -1                                      # z mirrored when the axis points down
+    theta = (math.atan2 if cyl.dps is None else mpmath.atan2)(w, abs(u[2]))
+    r, L, s = cyl.r, cyl.length, M.num(_real(s, dps))
+    t = _draught(M, r, L, theta, s)
+    V, Mx, Mz = _volume_moments(M, r, L, theta, t)
+    area, centre, I_w, _ = _waterplane(M, r, L, theta, t)
+    I_y = _waterplane_y(M, r, L, theta, t)
+    st, ct = M.trig(theta)
+    B = (Mx / V * h[0], Mx / V * h[1], sign * Mz / V)
+    e1, e2 = (ct * h[0], ct * h[1], -sign * st), (-h[1], h[0], M.num(0))
+    cyl.vertices = tuple((k * r * h[0], k * r * h[1], z) for k in (1, -1) for z in (L / 2, -L / 2))
+    potential = -_dot(u, B)
+    return FloatingState(u, s, t, M.num(0), V, B, (M.num(0),) * 3, area,
+                         tuple(t * a + centre * b for a, b in zip(u, e1)), ((I_w, M.num(0)), (M.num(0), I_y)),
+                         (e1, e2), min(I_w, I_y), max(I_w, I_y), potential, min(I_w, I_y) / V - potential)
+
+
+@dataclass(frozen=True)
+class Loaded(Body):
+    """A :class:`Body` whose centre of gravity ``G`` (body frame, SymPy expressions in the case's parameters) is
+    given, not its centroid: a body with a light part, such as a prism extended beyond a base that the water
+    must not cut (the wall-sided model of a source that lets the water rise above that base)."""
+
+    G: tuple = (0, 0, 0)
+
+    @classmethod
+    def of(cls, body, G):
+        return cls(body.kind, body.dims, tuple(G))
+
+    def build(self, params, dps):
+        return _Built(Body(self.kind, self.dims).build(params, dps), tuple(number(x, params, dps) for x in self.G))
+
+
+@dataclass(frozen=True)
+class _Built:
+    """A built body (``poly``) with its centre of gravity ``G``."""
+
+    poly: object
+    G: tuple
+
+    @property
+    def vertices(self):
+        return self.poly.vertices
+
+
+def _floating_state(body, up, density):
+    """The floating state of a built body: a clipped polyhedron (with a given centre of gravity), or a
+    :class:`Cylinder`."""
+    if isinstance(body, Cylinder):
+        return _cylinder_state(body, up, density)
+    if isinstance(body, _Built):
+        return floating_state(body.poly, up, density, G=body.G)
+    return floating_state(body, up, density)
+
+
+PART = sp.symbols("part0:8")
+
+
+@dataclass(frozen=True)
+class Combined(MeasuredWitness):
+    """Witnesses measured at the same case (``parts``, one value each) and combined: ``values``, SymPy
+    expressions in ``PART[i]`` (the value of part i) and the case's parameters, such as the difference of
+    two roots."""
+
+    parts: tuple = ()
+    values: tuple = ()
+    methods: tuple = FLOATING_METHODS
+
+    def measure(self, case, method):
+        got = {PART[i]: part.measure(case, method) for i, part in enumerate(self.parts)}
+        with mpmath.workdps(max(method.dps, 15)):
+            out = []
+            for expr in self.values:
+                symbols, f = _compiled(sp.sympify(expr))
+                out.append(f(*(got[x] if x in got else _real(number(case.params[x], case.params, method.dps),
+                                                                method.dps) for x in symbols)))
+            out = tuple(float(v) if method.dps <= 15 else +v for v in out)
+        return out[0] if len(out) == 1 else out
+
+
+__all__ += ["Combined", "Loaded"]
