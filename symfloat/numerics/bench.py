@@ -36,6 +36,7 @@ from ..engine.quadrature import Composite, GaussLegendre64, GaussLegendreMP, Tan
 from ..engine.witness import (Computed, ConvergenceOrder, ExactHull, HullSlices, HullWitness, PlaneSections,
                               Precision, SectionIntegral)
 from ..model.claim import members
+from ..model.relation import is_relation
 from ..registry import load, select
 
 __all__ = ["Measurement", "Bench", "methods_for", "newton_cotes", "run_bench", "DIGITS", "REFERENCE_DPS",
@@ -123,9 +124,10 @@ def _rel_error(value, ref):
 
 
 def _valid_reading(p):
-    if p.erratum is None:
-        return p.reading
-    return p.erratum.corrected_reading
+    """The reading that holds (the corrected one of an erratum); a relation as its chain of 1/0 indicators
+    (:meth:`~symfloat.model.relation.Relation.indicators`; None for a case table)."""
+    reading = p.reading if p.erratum is None else p.erratum.corrected_reading
+    return reading.indicators() if is_relation(reading) else reading
 
 
 def _exact_reference(chain, params):

@@ -191,6 +191,7 @@ def scan(selector=None) -> list[ScanRow]:
     ``expand`` as stable rewrites."""
     from ..engine.check import _resolved
     from ..model.claim import members
+    from ..model.relation import is_relation
     from ..registry import select
     from .bench import _results, _valid_reading
     rows = []
@@ -204,7 +205,7 @@ def scan(selector=None) -> list[ScanRow]:
         mids = {sym: float(sp.Rational(lo) + sp.Rational(hi)) / 2 for sym, (lo, hi) in d.domain.items()}
         for p in d.printed:
             chain = _valid_reading(p)
-            if chain is None:
+            if chain is None or is_relation(p.reading):       # a relation states conditions, not closed forms
                 continue
             for m in members(_resolved(chain, results)):
                 for e in (list(m) if isinstance(m, sp.MatrixBase) else [sp.sympify(m)]):
