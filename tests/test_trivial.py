@@ -11,7 +11,7 @@ from symfloat.engine.check import check_derivation
 from sympy.logic.boolalg import BooleanAtom
 
 from symfloat.model.claim import identical_links, members
-from symfloat.model.relation import Iff, is_relation
+from symfloat.model.relation import Holds, Iff, is_relation
 from symfloat.registry import load, select
 
 g, V, P = sp.symbols("g V P", positive=True)
@@ -140,7 +140,6 @@ def test_no_claim_of_the_library_compares_a_thing_with_itself(derivation_id):
 def test_the_library_test_sees_a_trivial_relation():
     # mutation: a relation decided as SymPy builds it (x > x - 1 is True) or an Iff of a condition with itself
     x = sp.Symbol("x", real=True)
-    from symfloat.model.relation import Holds
     assert any(identical_links(_links(Holds(x > x - 1))))
     assert any(identical_links(_links(Iff(x > 0, x > 0))))
     assert not any(identical_links(_links(Iff(x > 0, x ** 3 > 0))))

@@ -29,7 +29,7 @@ from .local import Local, gradient_at, local, tangent_step
 from .degenerate import symmetric_point
 from .refine import polish
 from .selfcheck import index_of
-from .symmetry import orbit, representative, same_class
+from .symmetry import mirror_normals, orbit, representative, same_class
 
 __all__ = ["Critical", "newton", "newton_all", "descend_all", "symmetric_newton", "critical_points", "poincare_hopf_sum", "more_seeds", "polyhedron_at", "on_family"]
 
@@ -558,12 +558,7 @@ def _mirror_points(c, group) -> list[np.ndarray]:
     out = []
     path = np.asarray(c.path, dtype=float)
     following = np.roll(path, -1, axis=0)
-    for g in group:
-        g = np.asarray(g, dtype=float)
-        if not (np.linalg.det(g) < 0 and abs(np.trace(g) - 1) < 1e-12):
-            continue
-        w, vectors = np.linalg.eigh((g + g.T) / 2)
-        n = vectors[:, int(np.argmin(w))]
+    for n in mirror_normals(group):
         a, b = path @ n, following @ n
         for k in np.nonzero(a * b < 0)[0]:
             q = path[k] + a[k] / (a[k] - b[k]) * (following[k] - path[k])

@@ -29,7 +29,7 @@ from ..geometry.floating import box
 from .bodies import make_scene
 from .critical import _is_ring, _tangent_eigen, newton, symmetric_newton
 from .solve import body_scale, solve
-from .symmetry import box_group, representative, same_class
+from .symmetry import box_group, mirror_normals, representative, same_class
 
 __all__ = ["Threshold", "PhaseDiagram", "phase_diagram", "position_label", "source_thresholds"]
 
@@ -613,11 +613,9 @@ def _ring_mirrors(group, axis: int) -> list[np.ndarray]:
     (reflections of *group*) that contain that axis."""
     e = np.eye(3)[axis]
     out = []
-    for g in group:
-        g = np.asarray(g, dtype=float)
-        if np.linalg.det(g) < 0 and abs(np.trace(g) - 1) < 1e-12 and np.linalg.norm(g @ e - e) < 1e-12:
-            w, vectors = np.linalg.eigh((g + g.T) / 2)
-            d = np.cross(e, vectors[:, int(np.argmin(w))])
+    for n in mirror_normals(group):
+        if abs(float(n @ e)) < 1e-12:           # the plane contains the axis
+            d = np.cross(e, n)
             out.append(d / np.linalg.norm(d))
     return out
 

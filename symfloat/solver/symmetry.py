@@ -14,7 +14,7 @@ import math
 import mpmath
 import numpy as np
 
-__all__ = ["box_group", "prism_group", "planar_group", "orbit", "same_class", "representative"]
+__all__ = ["box_group", "prism_group", "planar_group", "orbit", "same_class", "representative", "mirror_normals"]
 
 
 def box_group(dims) -> list[np.ndarray]:
@@ -100,3 +100,15 @@ def representative(u, group) -> np.ndarray:
     largest ``(z, x, y)`` after rounding to 9 decimals (ties broken by the unrounded values)."""
     images = (np.asarray(group) @ np.asarray(u, dtype=float)).tolist()        # Python floats: round() is cheap
     return np.array(max(images, key=lambda v: (round(v[2], 9), round(v[0], 9), round(v[1], 9), v[2], v[0], v[1])))
+
+
+def mirror_normals(group) -> list[np.ndarray]:
+    """Unit normals of the mirror planes of *group*: its reflections (determinant -1, trace 1), each the
+    eigenvector of its eigenvalue -1."""
+    out = []
+    for g in group:
+        g = np.asarray(g, dtype=float)
+        if np.linalg.det(g) < 0 and abs(np.trace(g) - 1) < 1e-12:
+            w, vectors = np.linalg.eigh((g + g.T) / 2)
+            out.append(vectors[:, int(np.argmin(w))])
+    return out
