@@ -9,6 +9,7 @@ from fractions import Fraction
 import pytest
 import sympy as sp
 
+from symfloat.model.prediction import Scene
 from symfloat.registry import load
 
 D, CF = load("scheeffer-vi-cf")
@@ -119,3 +120,17 @@ def test_scheeffer_vii_viii_strips_from_103_117_121b_122_as_read():
     p = v._params("box3-eq")
     A = float(2 * (sp.Rational(1, 2) - p[v.x0]))
     assert any(abs(t - 5 / 2) < 1e-12 for t, _ in v._strip3(A, 1.0, 1.0, float(p[v.s])))
+
+
+@pytest.mark.parametrize("offset, stability", [(Fraction(507, 10 ** 11), "stable"), (Fraction(1, 10 ** 10), "stable"),
+                                               (Fraction(-5, 10 ** 9), "unstable"), (Fraction(-1, 10 ** 9), "unstable")])
+def test_scheeffer_vii_viii_keeps_the_edge_up_root_next_to_its_pitchfork(offset, stability):
+    _, v = load("scheeffer-vii-viii")
+    # the box 1 x 1 x 2 turned about its long edge, edge up (tan phi = 1, the square section's diagonal): its
+    # stability changes at 9/32 (Scheeffer IX (140); tests/test_phase_log.py derives 9/32 from GM of the edge-up
+    # section), where (103b) has a triple root.  A sign scan on a grid lost the root at 9/32 + 5.07e-9 and
+    # 9/32 - 5e-9 (docs/atlas.md); exact isolation keeps it on both sides, with (117) deciding the change.
+    scene = Scene(body="box", density=Fraction(9, 32) + offset, dims=(Fraction(1), Fraction(1), Fraction(2)))
+    edge_up = [p for p in v._predict(scene) if abs(abs(p.up[0]) - abs(p.up[1])) < 1e-12 and p.up[2] == 0]
+    assert [p.stability for p in edge_up] == [stability]
+    assert "117" in edge_up[0].printed

@@ -49,6 +49,7 @@ second-region positions from (103a), (103b) with their stability from (117), the
 import functools
 import itertools
 import math
+from fractions import Fraction
 
 import mpmath
 import sympy as sp
@@ -902,58 +903,89 @@ EQ_103B = d.evaluator("103b", (T, F1, b, s, F, xs, x0), 1)
 STABLE_117 = d.evaluator("117", (T, Tp, F, xs, ys, F1, b, s), 0)
 DRY_121B = d.evaluator("121b", (F1, b, s), 2)
 EQ_122 = d.evaluator("122", (T, tau, F1, b, s, x0, f, xs1, F, xs), 0, row=0)
-LOG_GRID = [10 ** (-2 + 4 * k / 400) for k in range(401)]       # tan phi in (0.01, 100)
+WV, TV, AV, CV, HV, SV = sp.symbols("w t A C H s", positive=True)   # the predictors' unknowns and the box
 
 
-def _roots(f, valid, grid):
-    """Sign changes of f on the grid where valid holds, refined (Illinois) in float64 and then at 30 digits within
-    1e-9 of the float root (the readings cancel to about 1e-11 of their terms in float64 near a root)."""
-    negative = [f(g) < 0 if valid(g) else None for g in grid]
-    out = []
-    for k in range(len(grid) - 1):
-        if None in negative[k:k + 2] or negative[k] == negative[k + 1]:
-            continue
-        x_ = illinois(f, grid[k], grid[k + 1], 1e-15)
-        with mpmath.workdps(30):
-            lo, hi = mpmath.mpf(x_) * (1 - mpmath.mpf("1e-9")), mpmath.mpf(x_) * (1 + mpmath.mpf("1e-9"))
-            if (f(lo) < 0) != (f(hi) < 0):
-                x_ = float(illinois(f, lo, hi, mpmath.mpf(10) ** -25))
-        out.append(x_)
-    return out
+@functools.cache
+def _strip_equations():
+    """The conditions of the two strip regions as read, (103b) in the width w of the dry strip and (122) in
+    t = tan phi, each as the terms of its numerator and denominator polynomials in (unknown, A, C, H, s), built
+    once (base A x C, height H):
+      second region: F = C w, x_s = w/2, T = C w^3/3, x_0 = w - A/2;
+      third region: w = V_3/(C H) + H/(2t) from (121b), w_2 = w - H/t, f = C w_2, x_s^1 = w_2/2, tau = C w_2^3/3."""
+    second = EQ_103B(CV * WV ** 3 / 3, AV * CV, HV, SV, CV * WV, WV / 2, WV - AV / 2)
+    w = DRY_121B(AV * CV, HV, SV) / (CV * HV) + HV / (2 * TV)
+    w2 = w - HV / TV
+    third = EQ_122(CV * w ** 3 / 3, CV * w2 ** 3 / 3, AV * CV, HV, SV, w - AV / 2, CV * w2, w2 / 2, CV * w, w / 2)
+    return {unknown: tuple(tuple((m, Fraction(int(c.p), int(c.q)))
+                                 for m, c in sp.Poly(part, unknown, AV, CV, HV, SV).terms())
+                           for part in sp.fraction(sp.together(expr)))
+            for unknown, expr in ((WV, second), (TV, third))}
+
+
+def _univariate(terms, unknown, box):
+    """The polynomial in *unknown* of *terms* (monomial exponents, coefficient) at the exact *box* = (A, C, H, s)."""
+    coefficients = {}
+    for (k, *powers), c in terms:
+        for q, e in zip(box, powers):
+            c *= q ** e
+        coefficients[k] = coefficients.get(k, 0) + c
+    top = max(coefficients)
+    return sp.Poly([sp.Rational(coefficients.get(k, 0)) for k in range(top, -1, -1)], unknown, domain=sp.QQ)
+
+
+def _real_roots(unknown, box, valid):
+    """The distinct real roots in *unknown* of a strip condition for *box* = (A, C, H, s) (Fractions), where
+    *valid* holds, at 40 digits: the numerator's square-free part without the denominator's roots, isolated exactly
+    by SymPy.  Exact isolation keeps the roots of a pitchfork apart: next to 9/32 the edge-up root of (103b) is
+    nearly triple, and a sign scan on a grid missed it at isolated densities."""
+    numerator, denominator = (_univariate(part, unknown, box) for part in _strip_equations()[unknown])
+    numerator = numerator.quo(numerator.gcd(denominator)).sqf_part()
+    mp = lambda q: mpmath.mpf(int(q.p)) / int(q.q)  # noqa: E731
+    rational = [lo for (lo, hi), _ in numerator.intervals() if lo == hi]
+    for r in rational:                                     # divided out: no root is left on an interval's end
+        numerator = numerator.quo(sp.Poly([1, -r], unknown, domain=sp.QQ))
+    coefficients = [mp(c) for c in numerator.all_coeffs()]
+    roots = [mp(r) for r in rational] + [illinois(lambda x: mpmath.polyval(coefficients, x), mp(lo), mp(hi),
+                                                  mpmath.mpf(10) ** -38)
+                                         for (lo, hi), _ in numerator.intervals()]   # simple roots: a sign change
+    return sorted(v for v in roots if v > 0 and valid(v))
 
 
 def _strip2(A, C, H, sv):
     """Second region, base A x C, height H, the dry part F of the upper base a strip of width w across the side C
     (F = C w, x_s = w/2, T = C w^3/3, T^1 = w C^3/12, y_s = 0, x_0 = w - A/2): the tilt of (103a), the widths where
-    (103b) vanishes, the stability of (117) (k = 0 by symmetry).  Scanned in w where tan phi lies in (0.01, 100)."""
-    tilt = lambda w: TAN_103A(A * C, H, sv, C * w, w / 2)  # noqa: E731
-    f = lambda w: EQ_103B(C * w ** 3 / 3, A * C, H, sv, C * w, w / 2, w - A / 2)  # noqa: E731
-    widths = [math.sqrt(2 * A * H * (1 - sv) / t) for t in reversed(LOG_GRID)]       # F x_s tan phi = V (1 - s)
+    (103b) vanishes, the stability of (117) (k = 0 by symmetry).  Exact arguments (int or Fraction); the roots with
+    tan phi in (0.01, 100), each as (tan phi, 'stable' or 'unstable') with (117) decided at 40 digits."""
+    A, C, H, sv = map(Fraction, (A, C, H, sv))
     out = []
-    for w in _roots(f, lambda w: w < A and w * tilt(w) < H, widths):
-        lhs = STABLE_117(C * w ** 3 / 3, w * C ** 3 / 12, C * w, w / 2, 0.0, A * C, H, sv)
-        out.append((tilt(w), "stable" if lhs > 0 else "unstable"))
+    with mpmath.workdps(40):
+        a, c, h, s_ = (mpmath.mpf(q.numerator) / q.denominator for q in (A, C, H, sv))
+        tilt = lambda w: TAN_103A(a * c, h, s_, c * w, w / 2)  # noqa: E731
+        for w in _real_roots(WV, (A, C, H, sv), lambda w: w < a and 0.01 < tilt(w) < 100 and w * tilt(w) < h):
+            lhs = STABLE_117(c * w ** 3 / 3, w * c ** 3 / 12, c * w, w / 2, mpmath.mpf(0), a * c, h, s_)
+            out.append((float(tilt(w)), "stable" if lhs > 0 else "unstable"))
     return sorted(out)
 
 
 def _strip3(A, C, H, sv):
-    """Third region, dry strips of widths w and w - H/t in the two bases: w from the dry volume of (121b), the tilt
-    from (122) (F = C w, x_s = w/2, T = C w^3/3, f = C w_2, x_s^1 = w_2/2, tau = C w_2^3/3, x_0 = w - A/2)."""
-    w = lambda t: DRY_121B(A * C, H, sv) / (C * H) + H / (2 * t)  # noqa: E731  (C (w^2 - w_2^2) t/2 = V_3)
-    w2 = lambda t: w(t) - H / t  # noqa: E731
-
-    def f(t):
-        return EQ_122(C * w(t) ** 3 / 3, C * w2(t) ** 3 / 3, A * C, H, sv, w(t) - A / 2, C * w2(t), w2(t) / 2,
-                      C * w(t), w(t) / 2)
-    return [(t, None) for t in _roots(f, lambda t: w2(t) > 0 and w(t) < A, LOG_GRID)]
+    """Third region, dry strips of widths w and w_2 = w - H/t in the two bases, t = tan phi from (122) with w from
+    the dry volume V_3 of (121b); exact as in :func:`_strip2`.  Each root as (tan phi, None): the text gives no
+    stability here."""
+    A, C, H, sv = map(Fraction, (A, C, H, sv))
+    with mpmath.workdps(40):
+        a, c, h, s_ = (mpmath.mpf(q.numerator) / q.denominator for q in (A, C, H, sv))
+        w = lambda t: DRY_121B(a * c, h, s_) / (c * h) + h / (2 * t)  # noqa: E731
+        valid = lambda t: 0.01 < t < 100 and w(t) - h / t > 0 and w(t) < a  # noqa: E731
+        return [(float(t), None) for t in _real_roots(TV, (A, C, H, sv), valid)]
 
 
 def _predict(scene):
     if scene.body not in ("box", "cube"):
         return []
-    dims = [float(q) for q in scene.dims]
-    s0 = float(scene.density)
-    sv, flip = (s0, 1) if s0 >= 0.5 else (1 - s0, -1)     # s < 1/2: s for 1 - s, dry and wet exchanged
+    dims = tuple(scene.dims)
+    s0 = scene.density
+    sv, flip = (s0, 1) if s0 >= Fraction(1, 2) else (1 - s0, -1)     # s < 1/2: s for 1 - s, dry and wet exchanged
     preds, seen = [], []
     perms = [pm for pm in itertools.permutations(range(3)) if all(dims[pm[m]] == dims[m] for m in range(3))]
     for k in range(3):                                   # prism axis

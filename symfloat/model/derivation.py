@@ -269,8 +269,9 @@ class Derivation:
         """Member *member* (its component *row*, for a matrix) of the reading of printed formula *name* (of
         its correction, with *corrected*), derived quantities replaced by their derived values, as a
         function of *symbols*: exact (a SymPy number) when every argument is exact (int, Fraction, a
-        SymPy number such as a Rational or sqrt(2)), in mpmath when one is an mpmath number, elementwise for NumPy arrays, else a
-        float.  A predictor decides with the readings the print is checked by instead of typing them
+        SymPy number such as a Rational or sqrt(2)), a SymPy expression when an argument holds a symbol (a
+        predictor solving for it), in mpmath when one is an mpmath number, elementwise for NumPy arrays,
+        else a float.  A predictor decides with the readings the print is checked by instead of typing them
         again, so a reading that changes changes the prediction (tests/test_predictors_read.py)."""
         p = self.get_printed(name)
         reading = p.erratum.corrected_reading if corrected else p.reading
@@ -301,7 +302,7 @@ class Derivation:
             return tuple(v) if rows is not None else v
 
         def value(*args):
-            if all(isinstance(x, (int, Fraction)) or isinstance(x, sp.Expr) and x.is_number for x in args):
+            if all(isinstance(x, (int, Fraction, sp.Expr)) for x in args):   # exact, or symbolic in SymPy symbols
                 at = {q: sp.Rational(x.numerator, x.denominator) if isinstance(x, Fraction) else sp.sympify(x)
                       for q, x in zip(symbols, args)}
                 return tuple(r.xreplace(at) for r in rows) if rows is not None else expr.xreplace(at)

@@ -450,11 +450,12 @@ class _Tracked:
     family: str
 
 
-def _predicted_stable(d, scene, group) -> dict:
-    """Label -> locators of the positions the derivation *d* predicts stable at this scene."""
+def _predicted(d, scene, group, stability=("stable",)) -> dict:
+    """Label -> locators of the positions the derivation *d* predicts at this scene with a stability in
+    *stability* (``"stable"``, ``"unstable"``, ``None`` for no claim)."""
     out = {}
     for p in d.predictor.predict(scene):
-        if p.stability != "stable":
+        if p.stability not in stability:
             continue
         label = position_label(representative(np.asarray(p.up, dtype=float) / np.linalg.norm(p.up), group), p.family)
         out.setdefault(label, set()).update(x.locator for x in d.printed if x.name in p.printed)
@@ -463,9 +464,12 @@ def _predicted_stable(d, scene, group) -> dict:
 
 def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
     """Densities where the printed formulas change their predicted set of stable positions: each
-    ``{"value", "label", "change", "locators", "derivation", "expression"}``.  Found on the
+    ``{"value", "label", "change", "claim", "locators", "derivation", "expression"}``.  Found on the
     predictors (:mod:`symfloat.model.prediction`) by a sweep and bisection to ``1e-15``; the
-    printed closed form is named where a derivation's result gives it (``expression``)."""
+    printed closed form is named where a derivation's result gives it (``expression``).  ``claim``
+    is ``"unstable beyond"`` where the formulas predict the position unstable on the other side (the
+    print claims a change of stability) and ``"silent beyond"`` where they predict it there with no
+    stability or not at all (the position ceases to exist, or leaves the region the formulas cover)."""
     from ..registry import load
     from .coverage import predicting
     group = box_group(dims)
@@ -473,7 +477,7 @@ def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
     out = []
     for did in predicting(body):
         d, _ = load(did)
-        at = lambda s: _predicted_stable(d, make_scene(body, s, dims), group)
+        at = lambda s: _predicted(d, make_scene(body, s, dims), group)
         densities = [Fraction(k, grid) for k in range(1, grid)]
         states = [at(s) for s in densities]
         for k in range(len(densities) - 1):
@@ -495,7 +499,9 @@ def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
                 if same:
                     same[0]["locators"] = sorted(set(same[0]["locators"]) | set(locators))
                     continue
+                beyond = _predicted(d, make_scene(body, hi if inside else lo, dims), group, ("unstable",))
                 out.append({"value": value, "label": label, "change": "stable below" if inside else "stable above",
+                            "claim": "unstable beyond" if label in beyond else "silent beyond",
                             "locators": locators, "derivation": did, "expression": expression})
     return out
 
@@ -797,7 +803,12 @@ def _why_not_found(k, seen, thresholds) -> dict:
     width, below, above = seen
     if below == above:
         kind = "stable on both sides" if below else "stable on neither side"
-        return {"seen": kind, "why": f"at s -+ {width:.0e} the solver finds this position {kind}" + nearest}
+        why = f"at s -+ {width:.0e} the solver finds this position {kind}" + nearest
+        if below and k["claim"] == "silent beyond":
+            return {"seen": "stable on both sides, the print silent beyond",
+                    "why": why + "; the printed formulas do not predict it unstable beyond this density (their region"
+                                 " ends, or the position ceases to exist by them)"}
+        return {"seen": kind, "why": why}
     return {"seen": "change not located",
             "why": f"at s -+ {width:.0e} the solver finds it stable {'below' if below else 'above'} only, "
                    f"but no threshold of it was located there" + nearest}
