@@ -163,7 +163,7 @@ def test_why_a_printed_threshold_is_not_found():
     """`_why_not_found` reads the solver's view at s -+ width: no change (neither or both sides stable)
     or a change the bisection did not locate, and names the nearest change of the same position."""
     from symfloat.solver.phase import Threshold, _why_not_found
-    k = {"value": 0.25, "label": "tilted in the x-y plane", "claim": "unstable beyond"}
+    k = {"value": 0.25, "label": "tilted in the x-y plane", "claim": "unstable beyond", "errata": []}
     near = [Threshold(0.2113248654052, 1e-13, "tilted in the x-y plane", "stable above")]
     neither = _why_not_found(k, (1e-6, False, False), near)
     assert neither["seen"] == "stable on neither side" and "0.2113248654052" in neither["why"]
@@ -173,6 +173,9 @@ def test_why_a_printed_threshold_is_not_found():
     silent = _why_not_found({**k, "claim": "silent beyond"}, (1e-6, True, True), [])
     assert silent["seen"] == "stable on both sides, the print silent beyond" and "region" in silent["why"]
     assert _why_not_found({**k, "claim": "silent beyond"}, (1e-6, False, False), [])["seen"] == "stable on neither side"
+    # a printed claim the project already refutes (an erratum on one of its formulas) says so
+    booked = _why_not_found({**k, "errata": ["VI.D"]}, (1e-6, False, False), [])
+    assert booked["seen"] == "stable on neither side, erratum declared" and "VI.D" in booked["why"]
     assert _why_not_found(k, (1e-6, True, False), near)["seen"] == "change not located"
     assert _why_not_found(k, None, near)["seen"] == "not looked at"
 

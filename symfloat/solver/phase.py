@@ -451,25 +451,26 @@ class _Tracked:
 
 
 def _predicted(d, scene, group, stability=("stable",)) -> dict:
-    """Label -> locators of the positions the derivation *d* predicts at this scene with a stability in
-    *stability* (``"stable"``, ``"unstable"``, ``None`` for no claim)."""
+    """Label -> names of the printed formulas by which the derivation *d* predicts a position at this scene
+    with a stability in *stability* (``"stable"``, ``"unstable"``, ``None`` for no claim)."""
     out = {}
     for p in d.predictor.predict(scene):
         if p.stability not in stability:
             continue
         label = position_label(representative(np.asarray(p.up, dtype=float) / np.linalg.norm(p.up), group), p.family)
-        out.setdefault(label, set()).update(x.locator for x in d.printed if x.name in p.printed)
+        out.setdefault(label, set()).update(p.printed)
     return out
 
 
 def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
     """Densities where the printed formulas change their predicted set of stable positions: each
-    ``{"value", "label", "change", "claim", "locators", "derivation", "expression"}``.  Found on the
+    ``{"value", "label", "change", "claim", "locators", "errata", "derivation", "expression"}``.  Found on the
     predictors (:mod:`symfloat.model.prediction`) by a sweep and bisection to ``1e-15``; the
     printed closed form is named where a derivation's result gives it (``expression``).  ``claim``
     is ``"unstable beyond"`` where the formulas predict the position unstable on the other side (the
     print claims a change of stability) and ``"silent beyond"`` where they predict it there with no
-    stability or not at all (the position ceases to exist, or leaves the region the formulas cover)."""
+    stability or not at all (the position ceases to exist, or leaves the region the formulas cover);
+    ``errata`` the locators among them whose printed formula carries an erratum."""
     from ..registry import load
     from .coverage import predicting
     group = box_group(dims)
@@ -492,17 +493,21 @@ def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
                     else:
                         hi = mid
                 value = float((lo + hi) / 2)
-                locators = sorted(states[k].get(label, set()) | states[k + 1].get(label, set()))
+                names = states[k].get(label, set()) | states[k + 1].get(label, set())
+                printed = [x for x in d.printed if x.name in names]
+                locators = sorted({x.locator for x in printed})
+                errata = sorted({x.locator for x in printed if x.erratum is not None})
                 expression = next((e for v, e in closed if abs(v - value) <= 1e-12), "")
                 same = [o for o in out if o["derivation"] == did and o["label"] == label
                         and abs(o["value"] - value) <= 1e-13]
                 if same:
                     same[0]["locators"] = sorted(set(same[0]["locators"]) | set(locators))
+                    same[0]["errata"] = sorted(set(same[0]["errata"]) | set(errata))
                     continue
                 beyond = _predicted(d, make_scene(body, hi if inside else lo, dims), group, ("unstable",))
                 out.append({"value": value, "label": label, "change": "stable below" if inside else "stable above",
                             "claim": "unstable beyond" if label in beyond else "silent beyond",
-                            "locators": locators, "derivation": did, "expression": expression})
+                            "locators": locators, "errata": errata, "derivation": did, "expression": expression})
     return out
 
 
@@ -808,6 +813,9 @@ def _why_not_found(k, seen, thresholds) -> dict:
             return {"seen": "stable on both sides, the print silent beyond",
                     "why": why + "; the printed formulas do not predict it unstable beyond this density (their region"
                                  " ends, or the position ceases to exist by them)"}
+        if k["errata"]:
+            return {"seen": f"{kind}, erratum declared",
+                    "why": why + f"; an erratum is declared on {', '.join(k['errata'])}"}
         return {"seen": kind, "why": why}
     return {"seen": "change not located",
             "why": f"at s -+ {width:.0e} the solver finds it stable {'below' if below else 'above'} only, "
