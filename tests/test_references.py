@@ -194,6 +194,46 @@ def test_a_stale_judged_entry_fails_the_check(monkeypatch, changes, message):
     assert (found == []) if message is None else any(message in m for m in found), found
 
 
+def _plausible_entry(line, number, **changes):
+    base = dict(next(j for j in judged("scheeffer") if (j["line"], j["number"]) == (line, number)))
+    return dict(base, **changes)
+
+
+@pytest.mark.parametrize("line, number, changes, message", [
+    # "Aus Gleichung 103a folgt nun" (line 1457): (103a) on line 1172, tg phi_2 = F_1 b (1-s)/(F x_s)
+    (1457, "103a", {}, None),
+    (1457, "103a", {"target": 1166, "passage": r"V_3 = F \cdot x_s \cdot \operatorname{tg} \varphi_2"},
+     "carries no tag (103a)"),                                         # the untagged display just before
+    (1457, "103a", {"target": 1188, "passage": r"T_m - V_3 e_3 > 0 \quad (104)"},
+     "carries no tag (103a)"),                                         # another numbered display
+    (1457, "103a", {"passage": r"\frac{F_1 \cdot b (1 - s)}{F \cdot x_s} \quad (103b)"}, "is not on line 1172"),
+    (1457, "103a", {"verdict": "target lost", "target": None, "passage": "Aus Gleichung 103a folgt nun"},
+     "the rules found its target"),
+    # "Umgekehrt folgt aus 57" (line 499): (57) closes with \tag{57} (line 497), which carries the number too
+    (499, "57", {}, None),
+    (499, "57", {"passage": r"12 s \cdot (1-s)"}, "carries no tag (57)"),
+])
+def test_a_judged_plausible_reference_must_name_its_target(monkeypatch, line, number, changes, message):
+    entry = _plausible_entry(line, number, **changes)
+    monkeypatch.setattr(refs_module, "judged", lambda source: (entry,) if source == "scheeffer" else ())
+    found = stale("scheeffer")
+    assert (found == []) if message is None else any(message in m for m in found), found
+
+
+def test_plausible_references_are_judged(monkeypatch):
+    # a side unquoted by the derivations: each use judged against its target in scheeffer.references.json
+    monkeypatch.setattr(refs_module, "judged", lambda source: ())
+    plausible = {(r["line"], r["number"], r["reference"]) for r in references("scheeffer")
+                 if r["status"] == "plausible"}
+    monkeypatch.undo()
+    assert plausible and plausible <= {(j["line"], j["number"], j["reference"]) for j in judged("scheeffer")}
+    by = {(r["line"], r["number"], r["reference"]): r for r in references("scheeffer")}
+    assert all(by[k]["status"] in ("resolved", "wrong") for k in plausible)
+    assert status_counts(references("scheeffer"))["plausible"] == 0
+    # "also aus 86" (line 1020) reads (86) in its form (86a), the display with cotg^2(pi/n) it evaluates
+    assert by[(1020, "86", "aus 86")]["target_line"] == 1002
+
+
 def test_a_malformed_judged_entry_is_refused(monkeypatch, tmp_path):
     path = tmp_path / "scheeffer.references.json"
     path.write_text(json.dumps([_entry(verdict="target lost")]), encoding="utf-8")   # a lost target with a line

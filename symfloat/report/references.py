@@ -21,11 +21,13 @@ tagged with the number, ``52`` also to ``52a`` when no ``52`` is tagged) and che
 * ``suspect``: no target (a number no display carries), a target that comes later, a cited formula the citing
   quote's steps do not use, directly or through their chain, or a figure whose labels fail the check.
 
-A ``suspect`` or ``figure lost`` reference may be decided by a judgement kept as data,
+A ``suspect``, ``figure lost`` or ``plausible`` reference may be decided by a judgement kept as data,
 ``symfloat/sources/<key>.references.json`` (:func:`judged`): resolved to a target line, wrong (naming the
-erratum that books it) or target lost, with the passage quoted verbatim and a one-line reason.  An entry that no
-longer matches (no such reference, a reference the rules decide by themselves, a passage not on its line or
-without the number's tag, an erratum that does not exist) fails :func:`check`, as does a reference with no status.
+erratum that books it) or target lost, with the passage quoted verbatim and a one-line reason that quotes what the
+target gives and what the citing sentence takes from it.  A ``plausible`` reference has a target the rules found,
+so it is judged resolved or wrong only.  An entry that no longer matches (no such reference, a reference the rules
+decide by themselves, a passage not on its line or without the number's tag, an erratum that does not exist, a
+found target judged lost) fails :func:`check`, as does a reference with no status.
 
 The steps behind a quote are the step of the same name and the steps that establish a quantity of its reading;
 a step reaches the steps it ``uses`` and those that establish the quantities its claim mentions.  A citing quote
@@ -45,7 +47,7 @@ __all__ = ["STATUSES", "JUDGEABLE", "VERDICTS", "tags", "paragraphs", "reference
            "anchors", "uses_target", "status_counts", "references_markdown"]
 
 STATUSES = ("resolved", "plausible", "figure lost", "target lost", "wrong", "suspect")
-JUDGEABLE = ("suspect", "figure lost")           # the statuses a judged entry may decide
+JUDGEABLE = ("suspect", "figure lost", "plausible")   # the statuses a judged entry may decide
 VERDICTS = ("resolved", "wrong", "target lost", "figure lost")  # what a judged entry may say
 
 _TAG = re.compile(r"(?:\\quad\s*|\\qquad\s*|\\tag\{)\(?(\d{1,3}\s?[a-e]?)\)?\}?\s*\$\$$|\((\d{1,3}\s?[a-e]?)(?:\^\*)?\)\s*\$\$$")
@@ -333,7 +335,7 @@ def _found_refs(source: str):
 
 def references(source: str) -> list[dict]:
     """Every reference of *source* with its target and status (see the module docstring); a judged entry
-    (:func:`judged`) decides a reference the rules leave ``suspect`` or ``figure lost``."""
+    (:func:`judged`) decides a reference the rules leave ``suspect``, ``figure lost`` or ``plausible``."""
     quotes = _quotes(source)
     judgements = {(j["line"], j["number"], j["reference"]): j for j in judged(source)}
     out = []
@@ -382,8 +384,9 @@ def judged(source: str) -> tuple[dict, ...]:
 
 def stale(source: str) -> list[str]:
     """The judged entries of *source* that no longer match: no such reference on the line, a reference the
-    rules decide by themselves, ``figure lost`` for an equation or resolved/target lost for a figure, a passage
-    not on its line or (resolved) without the number's tag, or an erratum that does not exist."""
+    rules decide by themselves, ``figure lost`` for an equation or resolved/target lost for a figure, a
+    ``plausible`` reference (its target found) judged neither resolved nor wrong, a passage not on its line or
+    (resolved) without the number's tag, or an erratum that does not exist."""
     text = get_source(source).text()
     lines = text.split("\n")
     found = {}
@@ -403,9 +406,12 @@ def stale(source: str) -> list[str]:
             out.append(f"{where}: the rules decide it ({status}); drop the entry")
         elif j["verdict"] != "wrong" and (kind == "figure") != (j["verdict"] == "figure lost"):
             out.append(f"{where}: a reference of kind {kind} judged {j['verdict']!r}")
+        elif status == "plausible" and j["verdict"] not in ("resolved", "wrong"):
+            out.append(f"{where}: the rules found its target; a plausible reference is judged resolved or wrong, "
+                       f"not {j['verdict']!r}")
         if not 1 <= at <= len(lines) or j["passage"] not in lines[at - 1]:
             out.append(f"{where}: the passage {j['passage']!r} is not on line {at}")
-        carried = {_key(n) for n in re.findall(r"\((\d{1,3}\s?[a-e]?)", j["passage"])}
+        carried = {_key(n) for n in re.findall(r"(?:\(|\\tag\{)(\d{1,3}\s?[a-e]?)", j["passage"])}   # (57) or \tag{57}
         if j["verdict"] == "resolved" and not carried & {j["number"], *(j["number"] + c for c in "abcde")}:
             out.append(f"{where}: the passage {j['passage']!r} carries no tag ({j['number']})")
         if j["verdict"] == "wrong" and j["erratum"] not in errata:
@@ -435,11 +441,11 @@ def references_markdown(sources=tuple(SOURCES)) -> str:
            "Generated by `symfloat coverage --write` (`symfloat/report/references.py`). A reference is an equation",
            "number after *Gleichung*, *Gl.*, *nach*, *aus*, *s.*, *vgl.*, *Bedingung* or in *in N ein*, a figure",
            "(*Fig. N*) or Euler's paragraph (*§. N* inside a paragraph). Status: **resolved** (target before the use,",
-           "both quoted by the derivations, the citing quote's steps not missing the target's), **plausible** (target",
-           "before the use, a side unquoted), **figure lost** (no transcription carries the figures: the caption",
-           "survives or not; a surviving caption names no point the text does not give the figure, and a reference",
-           "back to the figure of an earlier section names only points that section names), **target lost** (the",
-           "transcription lost the display that carried the number; judged),",
+           "both quoted by the derivations, the citing quote's steps not missing the target's; or judged), **plausible**",
+           "(target before the use, a side unquoted, not judged), **figure lost** (no transcription carries the figures:",
+           "the caption survives or not; a surviving caption names no point the text does not give the figure, and a",
+           "reference back to the figure of an earlier section names only points that section names), **target lost**",
+           "(the transcription lost the display that carried the number; judged),",
            "**wrong** (an erratum corrects the number), **suspect** (undecided: no target, a later one, a target the",
            "citing quote's steps do not rest on through their `uses` or the quantities they mention, or a figure",
            "whose labels do not agree). Where the rules cannot decide, a judgement is kept as data in",
