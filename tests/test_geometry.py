@@ -61,3 +61,28 @@ def test_random_polygon_is_convex_and_ccw():
     for i in range(n):
         (ax, ay), (bx, by), (cx, cy) = poly[i], poly[(i + 1) % n], poly[(i + 2) % n]
         assert (bx - ax) * (cy - by) - (by - ay) * (cx - bx) > 0
+
+
+def test_heron_area_against_the_cross_product_and_line_meet_against_exact_rationals():
+    # symfloat.geometry.construction: Heron's formula from the side lengths alone against |(q - p) x (r - p)|/2 in
+    # exact rationals (its square), at 50 digits; the meeting point of two lines against Cramer's rule in Fractions
+    import random
+    from fractions import Fraction as F
+    import mpmath
+    from symfloat.geometry.construction import heron_area, line_meet
+    rng = random.Random(5)
+    with mpmath.workdps(50):
+        for _ in range(5):
+            p, q, r = ([F(rng.randint(-9, 9)) for _ in range(3)] for _ in range(3))
+            u, v = [b - a for a, b in zip(p, q)], [b - a for a, b in zip(p, r)]
+            cross = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+            area2 = sum(c * c for c in cross) / 4
+            exact2 = mpmath.mpf(area2.numerator) / area2.denominator
+            got = heron_area(*(mpmath.matrix([mpmath.mpf(int(x)) for x in pt]) for pt in (p, q, r)))
+            assert abs(got ** 2 - exact2) < mpmath.mpf(10) ** -40 * (1 + exact2)
+            # the lines p + t (q - p) and r + t' (m - r), m the midpoint of p q (they meet there, t = 1/2)
+            m = [(a + b) / 2 for a, b in zip(p, q)]
+            meet = line_meet(*(mpmath.matrix([mpmath.mpf(x.numerator) / x.denominator for x in pt]) for pt in (p, q, r, m)))
+            if area2:
+                assert all(abs(meet[k] - mpmath.mpf(m[k].numerator) / m[k].denominator) < mpmath.mpf(10) ** -40
+                           for k in range(3))

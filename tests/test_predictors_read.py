@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import math
 from fractions import Fraction
 
 import pytest
@@ -134,3 +135,104 @@ def test_scheeffer_vii_viii_keeps_the_edge_up_root_next_to_its_pitchfork(offset,
     edge_up = [p for p in v._predict(scene) if abs(abs(p.up[0]) - abs(p.up[1])) < 1e-12 and p.up[2] == 0]
     assert [p.stability for p in edge_up] == [stability]
     assert "117" in edge_up[0].printed
+
+
+# ---- Scheeffer IX: the case tables decide with the readings of the printed formulas ----------------------------
+IXD, IX = load("scheeffer-ix")
+R = Fraction
+
+
+def _ix_mutated(name, member, change):
+    """A copy of scheeffer-ix whose reading of *name* has member *member* replaced by change(that member)."""
+    d = copy.copy(IXD)
+    d.printed = [dataclasses.replace(p, reading=tuple(change(m) if k == member else m for k, m in enumerate(p.reading)))
+                 if p.name == name else p for p in IXD.printed]
+    return d
+
+
+def _tables(s, ratio):
+    return lambda: IX.tables_prediction(s, ratio)
+
+
+def _box(s, *dims):
+    return lambda: [(p.up, p.stability, p.printed) for p in IX.predict(Scene(body="box", density=s, dims=dims))]
+
+
+a_, b_, c_, s_, z_, t_ = IX.a, IX.b, IX.c, IX.s, IX.z, IX.t
+_IX_MUTATIONS = {
+    # (a/b)^2 > 6 s(1-s) -> 5 s(1-s); s = 3/5, a/b = 57/50: n = 1.2996 between 5 s(1-s) = 1.2 and 6 s(1-s) = 1.44, the
+    # upright position turns stable
+    "UPRIGHT_132A": ("132a", (a_, b_, s_), 0, None, lambda m: (a_ / b_) ** 2 - 5 * s_ * (1 - s_), _tables(R(3, 5), R(57, 50))),
+    # 6 s(1-s) > (a/b)^2 of (132b) -> 5 s(1-s): the oblique position of the first region goes, same point
+    "OBLIQUE_132B": ("132b", (a_, b_, s_), 0, None, lambda m: sp.Matrix([5 * s_ * (1 - s_) - (a_ / b_) ** 2, m[1]]),
+                     _tables(R(3, 5), R(57, 50))),
+    # (125) 12 -> 13: its tilt moves
+    "TAN2_125": ("125", (a_, b_, s_), 1, None, lambda m: 13 * (b_ / a_) ** 2 * s_ * (1 - s_) - 2, _tables(R(3, 5), R(57, 50))),
+    # (140) s <= 23/32 -> s <= 3/4: at s = 73/100, n = 1.004 the three roots of (162) II become the one of (162a) VI
+    "BELOW_140": ("140", (s_,), 0, None, lambda m: sp.Rational(3, 4) - s_, _tables(R(73, 100), R(501, 500))),
+    # (162a) VI: rho - n -> rho - n + 2: at s = 7/10, a/b = 3/2 (n = 2.25 > rho = 1.08) a stable root appears
+    "ROOT_162A": ("162a", (a_, b_, s_), 0, 0, lambda m: sp.Matrix([m[0] + 2, m[1]]), _tables(R(7, 10), R(3, 2))),
+    # (162) n - rho -> n - rho - 1: at s = 73/100, a/b = 11/10 (row V, none) row I (one stable)
+    "ENDS_162": ("162", (a_, b_, s_), 0, None, lambda m: sp.Matrix([m[0] - 1, m[1]]), _tables(R(73, 100), R(11, 10))),
+    # t = (119 - 128 s)/27 -> (120 - 128 s)/27: n_1 at s = 73/100 from 1.00631 to 1.0011, and n = 1.004004 (a/b =
+    # 501/500) rises from row II (three roots) to row I (one)
+    "T_147": ("t-of-s", (s_,), 1, None, lambda m: (120 - 128 * s_) / 27, _tables(R(73, 100), R(501, 500))),
+    # (156) n_1 - 1/100: the same change of row
+    "N1_156": ("156", (t_,), 1, 0, lambda m: sp.Matrix([m[0] - sp.Rational(1, 100), m[1]]), _tables(R(73, 100), R(501, 500))),
+    # (136) -4 n sigma^2 -> -5 n sigma^2: the root z (and its tilt) at s = 7/10, a/b = 51/50 moves
+    "F_136": ("136", (z_, a_, b_, s_), 1, None, lambda m: m - IX.n * IX.sg ** 2, _tables(R(7, 10), R(51, 50))),
+    # (a/b)^2 > 1/(6 s(1-s)) -> 1/(5 s(1-s)): at s = 4/5, a/b = 21/20 (n = 1.1025) the oblique of the third region goes
+    "UNSTABLE_3": ("unstable-3", (a_, b_, s_), 0, None, lambda m: (a_ / b_) ** 2 - 1 / (5 * s_ * (1 - s_)),
+                   _tables(R(4, 5), R(21, 20))),
+    # (165) 1/rho - n -> 1/rho - n - 1/10: the same oblique leaves the third region (1/rho = 1.136)
+    "BOUND_165": ("165", (a_, b_, s_), 0, None,
+                  lambda m: IX.PW(1 / IX.rho_s - (a_ / b_) ** 2 - sp.Rational(1, 10), 0), _tables(R(4, 5), R(21, 20))),
+    # (166) 12 -> 13: its tilt moves
+    "COT2_166": ("166", (a_, b_, s_), 1, None, lambda m: 13 * (a_ / b_) ** 2 * s_ * (1 - s_) - 2, _tables(R(4, 5), R(21, 20))),
+    # (b/a)^2 > 6 s(1-s) -> 5 s(1-s): at s = 4/5, a/b = 21/20 the other upright position (0.907 against 0.96, 0.8)
+    # turns stable
+    "UPRIGHT_3": ("upright-3", (a_, b_, s_), 0, None, lambda m: (b_ / a_) ** 2 - 5 * s_ * (1 - s_), _tables(R(4, 5), R(21, 20))),
+    # (123) 6 -> 5: the box 21/20 x 1 x 11/10 at s = 7/10 with y up (1.1025 against 1.26, 1.05) turns stable
+    "FACE_123": ("123", (a_, b_, s_), 0, None, lambda m: (a_ / b_) ** 2 - 5 * s_ * (1 - s_),
+                 _box(R(7, 10), R(21, 20), R(1), R(11, 10))),
+    # (163) HG^2 -> 10 HG^2: the stable root of the second region of the box 51/50 x 1 x 3 at s = 7/10 no longer
+    # has HG < c
+    "HG_163": ("163", (a_, b_, c_, s_, z_), 0, None, lambda m: (c_ / b_) ** 2 - 10 * ((c_ / b_) ** 2 - m),
+               _box(R(7, 10), R(51, 50), R(1), R(3))),
+    # (127) T_1^1 - T_1 -> T_1 - T_1^1: the first region's oblique positions of the box 21/20 x 1 x 11/10 flip
+    "PERP_127": ("127", (a_, c_), 0, 2, lambda m: sp.Matrix([m[0], m[1], -m[2]]), _box(R(7, 10), R(21, 20), R(1), R(11, 10))),
+}
+
+
+@pytest.mark.parametrize("attribute", sorted(_IX_MUTATIONS))
+def test_scheeffer_ix_tables_follow_a_mutated_reading(attribute, monkeypatch):
+    name, symbols, member, row, change, predict = _IX_MUTATIONS[attribute]
+    before = predict()
+    monkeypatch.setattr(IX, attribute, _ix_mutated(name, member, change).evaluator(name, symbols, member, row=row)
+                        if attribute != "BOUND_165" else IX._case_above_half(name, symbols, member,
+                                                                             _ix_mutated(name, member, change)))
+    assert predict() != before
+
+
+def test_scheeffer_ix_tilt_of_the_second_region_follows_134():
+    # (134) x^2 = 2 a b (1-s) tg phi_2 -> 3 a b (1-s) tg phi_2: the tilt of the root at s = 7/10, a/b = 51/50 moves,
+    # its z stays
+    before = IX.tables_prediction(R(7, 10), R(51, 50))
+    mutated = _ix_mutated("134", 1, lambda m: 3 * a_ * b_ * (1 - s_) * sp.tan(IX.phi))
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(IX, "TAN_134", IX._tan_134(mutated))
+        after = IX.tables_prediction(R(7, 10), R(51, 50))
+    (old,), (new,) = ([e for e in x if e["region"] == 2] for x in (before, after))
+    assert old["z"] == new["z"] and abs(math.tan(new["phi"]) / math.tan(old["phi"]) - 2 / 3) < 1e-12
+
+
+def test_scheeffer_ix_rows_of_162_are_read():
+    # (162) II: 'drei Gleichgew. (stabil, labil, stabil)' read as (+1, -1, +1); mutated to (-1, +1, -1) the three
+    # roots at s = 73/100, n = 1.004004 (a/b = 501/500 < sqrt n_1) change their stabilities
+    assert [e["stability"] for e in IX.tables_prediction(R(73, 100), R(501, 500)) if e["region"] == 2] == \
+        ["stable", "unstable", "stable"]
+    mutated = _ix_mutated("162-II", 1, lambda m: sp.Matrix(list(m[:4]) + [-1, 1, -1]))
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(IX, "TABLE_162", dict(IX.TABLE_162, II=mutated.evaluator("162-II", (), 1)()))
+        after = IX.tables_prediction(R(73, 100), R(501, 500))
+    assert [e["stability"] for e in after if e["region"] == 2] == ["unstable", "stable", "unstable"]

@@ -21,6 +21,8 @@ from fractions import Fraction
 
 from pathlib import Path
 
+import sympy as sp
+
 from ..registry import load
 from ..report.stamp import digest, package_digest, stamp_line
 from ..solver import make_scene, solve
@@ -39,18 +41,27 @@ def _solver_positions(s, ratio):
     return [(math.atan2(abs(e.up[0]), abs(e.up[1])), e.stability) for e in sol.equilibria]
 
 
+def _bound(margin, s):
+    """The n = (a/b)^2 where the printed *margin* (a reading of :mod:`scheeffer_ix` in (a, b, s), linear in n)
+    vanishes at the exact density *s*."""
+    n = sp.Symbol("n", positive=True)
+    (root,) = sp.solve(margin(sp.sqrt(n), 1, s), n)
+    return Fraction(int(root.p), int(root.q))
+
+
 def boundary_cells(densities=DENSITIES[::2], margin=Fraction(1, 1000)) -> list[tuple[Fraction, Fraction]]:
     """Cells just inside and just outside every boundary of the tables, at each density: the
-    curves n = (a/b)^2 = 6 s(1-s), 1/(6 s(1-s)), 2(1-s)(4s-1), its inverse, and n_1(s) of (156)
-    as printed, each where it lies above n = 1 (a/b = sqrt(n), rounded to 6 digits)."""
+    curves n = (a/b)^2 = 6 s(1-s) (132a), 1/(6 s(1-s)) (IX.C), 2(1-s)(4s-1) (132b), its inverse (165), and n_1(s)
+    of (156) as printed, each where it lies above n = 1 (a/b = sqrt(n), rounded to 6 digits); the curves from the
+    readings the tables decide with."""
     _, module = load("scheeffer-ix")
+    margins = (module.UPRIGHT_132A, module.UNSTABLE_3, lambda *x: module.OBLIQUE_132B(*x)[1], module.BOUND_165)
     cells = []
     for s in densities:
         sv = max(s, 1 - s)
-        ss, r_ = sv * (1 - sv), 2 * (1 - sv) * (4 * sv - 1)
-        curves = [6 * ss, 1 / (6 * ss)] + ([r_, 1 / r_] if r_ > 0 else [])
+        curves = [_bound(m, sv) for m in margins]
         if sv > Fraction(23, 32):
-            curves.append(Fraction(module._n1_printed(float(sv))).limit_denominator(10 ** 12))
+            curves.append(Fraction(float(module._n1_printed(float(sv)))).limit_denominator(10 ** 12))
         for n in curves:
             for side in (1 - margin, 1 + margin):
                 if n * side > 1:
@@ -71,7 +82,7 @@ def grid_rows(densities=DENSITIES, ratios=RATIOS, progress=None, extra=()) -> li
         t0 = time.perf_counter()
         solver = _solver_positions(s, ratio)
         table = [(p["phi"], p["stability"], p["region"], p["printed"])
-                 for p in module.tables_prediction(float(s), float(ratio))]
+                 for p in module.tables_prediction(s, ratio)]
         missing, wrong, unpredicted = [], [], list(solver)
         for phi, stab, region, printed in table:
             near = [q for q in unpredicted if abs(q[0] - phi) <= MATCH_RAD]

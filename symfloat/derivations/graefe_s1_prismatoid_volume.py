@@ -14,6 +14,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.witness import Case, Computed, HullWitness
+from symfloat.geometry.construction import heron_area
 from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
 from symfloat.model.claim import as_printed
 
@@ -352,13 +353,7 @@ def _heron_halves(case, dps):
     V = {n: mpmath.matrix([mpmath.mpf(int(v)) for v in case.data[i]]) for i, n in enumerate("ABCD")}
     m_ = {"a": (V["A"] + V["C"]) / 2, "b": (V["B"] + V["C"]) / 2, "c": (V["B"] + V["D"]) / 2,
           "d": (V["A"] + V["D"]) / 2}
-
-    def heron(p, q, r):
-        x_, y_, w_ = mpmath.norm(p - q), mpmath.norm(q - r), mpmath.norm(r - p)
-        s_ = (x_ + y_ + w_) / 2
-        return mpmath.sqrt(s_ * (s_ - x_) * (s_ - y_) * (s_ - w_))
-
-    return heron(m_["a"], m_["b"], m_["c"]) + heron(m_["a"], m_["c"], m_["d"])
+    return heron_area(m_["a"], m_["b"], m_["c"]) + heron_area(m_["a"], m_["c"], m_["d"])
 
 
 d.witness(Computed("mid-section-heron", "the mid-section abcd of random tetrahedra by Heron's formula",

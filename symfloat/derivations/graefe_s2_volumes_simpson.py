@@ -25,7 +25,8 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.quadrature import composite_simpson
-from symfloat.engine.witness import Case, Computed, ConvergenceOrder, PlaneSections, SectionIntegral
+from symfloat.engine.witness import Case, ConvergenceOrder, PlaneSections, SectionIntegral
+from symfloat.registry import load
 
 G, g, D, h, z, t = sp.symbols("G g D h z t", positive=True)
 r, p, x, m = sp.symbols("r p x m", positive=True)
@@ -38,9 +39,8 @@ I1, I2, I3, I = sp.symbols("I' I'' I''' I", positive=True)
 pi = sp.pi
 
 
-def prismatoid(G_, g_, D_, h_):
-    """Graefe's §1 formula I = h/3 ((G + g)/2 + 2 D) at the given values."""
-    return (h / 3 * ((G + g) / 2 + 2 * D)).xreplace({G: G_, g: g_, D: D_, h: h_})
+# Graefe's §1 formula I = h/3 ((G + g)/2 + 2 D) at given (G, g, D, h): the reading of §1's print
+prismatoid = load("graefe-s1-prismatoid-volume")[0].evaluator("prismatoid-volume", (G, g, D, h), 1)
 
 
 Rb, rt, ng = sp.symbols("R rho N", positive=True)   # radii of the frustum's bases, number of sides
@@ -270,19 +270,6 @@ d.quote("odd-number-of-sections", "§2 Simpson's rule",
 # ---- witnesses -----------------------------------------------------------------------------------------
 
 
-def _ellipse_chords(case, dps):
-    """The squared radii y², y'² of the ellipsoid sections at t = x and t = x/2
-    from the vertex: the half-chord of the ellipse (u/a)² + (y/b)² = 1 (centre
-    at u = 0) at u = t - a, found by root-finding, squared."""
-    A_, B_, X_ = (mpmath.mpf(case.params[q].p) / case.params[q].q for q in (a, b, x))
-    out = []
-    for tv in (X_, X_ / 2):
-        u = tv - A_
-        y = mpmath.findroot(lambda yy: (u / A_) ** 2 + (yy / B_) ** 2 - 1, B_, tol=mpmath.mpf(10) ** (-dps))
-        out.append(y ** 2)
-    return tuple(out)
-
-
 def _q(v):
     return sp.Rational(v)
 
@@ -298,8 +285,6 @@ d.witness(SectionIntegral("sphere-volume", "∫ π (r² - (z - r)²) dz over the
                           SPHERE_CASES, area=pi * (r ** 2 - (z - r) ** 2), z=z, bounds=(0, 2 * r)))
 d.witness(SectionIntegral("paraboloid-volume", "∫ π 2p (x - z) dz over the height", ("paraboloid-volume",),
                           PARABOLOID_CASES, area=pi * 2 * p * (x - z), z=z, bounds=(0, x)))
-d.witness(Computed("ellipse-chords", "half-chords of the ellipse at the base and the mid-section, by root-finding",
-                    ("ellipsoid-radii",), ELLIPSOID_CASES, compute=_ellipse_chords))
 d.witness(SectionIntegral("ellipsoid-volume", "∫ π b² (1 - (t - a)²/a²) dt over the segment (centre equation)",
                           ("ellipsoid-volume-1", "ellipsoid-volume-2", "ellipsoid-volume-3"), ELLIPSOID_CASES,
                           area=A_e_centre, z=z, bounds=(0, x)))
@@ -334,15 +319,9 @@ d.witness(SectionIntegral("whole-body", "∫ A dz over 6m for bodies with cubic 
                           area=A3, z=z, bounds=(0, 6 * m)))
 
 
-def _prefix_volumes(case, dps):
-    """The volumes ∫_0^{2nm} A dz for n = 1, 2, 3, 4 (3, 5, 7, 9 sections), by tanh-sinh quadrature."""
-    f = sp.lambdify(z, A3.xreplace(case.params), "mpmath")
-    mv = mpmath.mpf(case.params[m].p) / case.params[m].q
-    return tuple(mpmath.quad(f, [0, 2 * n * mv]) for n in range(1, 5))
-
-
-d.witness(Computed("odd-number-of-sections", "∫ A dz over 2m, 4m, 6m, 8m for bodies with cubic section areas",
-                   ("odd-number-of-sections",), CUBIC_CASES, compute=_prefix_volumes))
+d.witness(SectionIntegral("odd-number-of-sections", "∫ A dz over 2m, 4m, 6m, 8m for bodies with cubic section areas",
+                          ("odd-number-of-sections",), CUBIC_CASES, area=A3, z=z,
+                          bounds=tuple((0, 2 * n * m) for n in range(1, 5))))
 
 
 def _reciprocal(u):
@@ -374,6 +353,9 @@ for name, plane in (("paraboloid-base-radius", 0), ("paraboloid-mid-radius", x /
     d.witness(PlaneSections(f"{name}-section", "section of the paraboloid y² = 2pt (t from the vertex, t = x - z)",
                             (name,), PARABOLOID_CASES, planes=(plane,),
                             combine=lambda A, q: A[0] / mpmath.pi, **_round(2 * p * (x - zp))))
+d.witness(PlaneSections("ellipse-chords", "the ellipsoid's sections at the base and the mid-section, over pi",
+                        ("ellipsoid-radii",), ELLIPSOID_CASES, planes=(0, x / 2),
+                        combine=lambda A, q: (A[0] / mpmath.pi, A[1] / mpmath.pi), **_round(A_e_centre.subs(z, zp) / pi)))
 d.witness(SectionIntegral("half-ellipsoid-segment", "∫ π b² (1 - (t - a)²/a²) dt over the segment of height a",
                           ("half-ellipsoid-x-a",), tuple(Case({a: c_.params[a], b: c_.params[b], x: c_.params[a]},
                                                                label=f"a = {c_.params[a]}, b = {c_.params[b]}")
@@ -390,21 +372,11 @@ d.quote("zero-bases", "§2 prismatoid formula",
         note="read on a pyramid over G (g = 0) and on a body with G = g = 0 and quadratic sections")
 
 
-def _zero_base_volumes(case, dps):
-    """The two volumes by tanh-sinh quadrature of their section areas."""
-    hv = mpmath.mpf(sp.N(case.params[h], dps + 10))
-    out = []
-    for A_ in ZERO_BASE_AREAS:
-        f_ = sp.lambdify(z, A_.xreplace(case.params), "mpmath")
-        out.append(mpmath.quad(f_, [0, hv]))
-    return tuple(out)
-
-
-d.witness(Computed("zero-bases-volumes", "∫ A dz of a pyramid and of a body with both bases zero",
-                   ("zero-bases",), (Case({G: 3, D: 2, h: sp.Rational(5, 2)}, label="G = 3, D = 2, h = 5/2"),
-                                     Case({G: sp.Rational(7, 3), D: sp.Rational(1, 2), h: 4},
-                                          label="G = 7/3, D = 1/2, h = 4")),
-                   compute=_zero_base_volumes))
+d.witness(SectionIntegral("zero-bases-volumes", "∫ A dz of a pyramid and of a body with both bases zero",
+                          ("zero-bases",), (Case({G: 3, D: 2, h: sp.Rational(5, 2)}, label="G = 3, D = 2, h = 5/2"),
+                                            Case({G: sp.Rational(7, 3), D: sp.Rational(1, 2), h: 4},
+                                                 label="G = 7/3, D = 1/2, h = 4")),
+                          area=ZERO_BASE_AREAS, z=z, bounds=(0, h)))
 
 
 # ---- infinitely many sides: curved bodies as prismatoids -------------------------------------------------

@@ -16,6 +16,7 @@ from symfloat import Derivation, Eq, Erratum
 import mpmath
 
 from symfloat.engine.witness import Case, Computed, HullSlices, HullWitness
+from symfloat.geometry.construction import heron_area, line_meet
 from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
 from symfloat.model.claim import as_printed
 
@@ -258,26 +259,12 @@ def _numeric_construction(case, dps):
     line co meeting AC are intersected by least squares, triangles are
     measured by Heron's formula from their side lengths."""
     P = {n: mpmath.matrix([mpmath.mpf(int(v)) for v in case.data[i]]) for i, n in enumerate("ABCD")}
-
-    def line_meet(p1, p2, q1, q2):
-        M = mpmath.matrix([[p2[k] - p1[k], q1[k] - q2[k]] for k in range(3)])
-        t = mpmath.qr_solve(M, q1 - p1)[0]
-        return p1 + t[0] * (p2 - p1)
-
-    def dist(p, q):
-        return mpmath.norm(p - q)
-
-    def heron(p, q, r):
-        x, y, w = dist(p, q), dist(q, r), dist(r, p)
-        half = (x + y + w) / 2
-        return mpmath.sqrt(half * (half - x) * (half - y) * (half - w))
-
     c = (P["B"] + P["D"]) / 2
     F, Gq = c + (P["C"] - c) / 3, c + (P["A"] - c) / 3
     o = line_meet(P["C"], Gq, P["A"], F)
-    return {"Coc:CoA": heron(P["C"], o, c) / heron(P["C"], o, P["A"]),
-            "coA:Coc": heron(c, o, P["A"]) / heron(P["C"], o, c),
-            "coA:CoA": heron(c, o, P["A"]) / heron(P["C"], o, P["A"])}
+    return {"Coc:CoA": heron_area(P["C"], o, c) / heron_area(P["C"], o, P["A"]),
+            "coA:Coc": heron_area(c, o, P["A"]) / heron_area(P["C"], o, c),
+            "coA:CoA": heron_area(c, o, P["A"]) / heron_area(P["C"], o, P["A"])}
 
 
 for target, ratio in (("ratio-1", "Coc:CoA"), ("ratio-2", "coA:Coc"), ("ratio-3", "coA:CoA"), ("ratio-4", "coA:CoA")):
@@ -288,13 +275,7 @@ for target, ratio in (("ratio-1", "Coc:CoA"), ("ratio-2", "coA:Coc"), ("ratio-3"
 
 def _median_meet(P, p, q, r):
     """The centroid of the triangle p q r found as the meeting point of two of its medians."""
-    return _line_meet(P[p], (P[q] + P[r]) / 2, P[q], (P[p] + P[r]) / 2)
-
-
-def _line_meet(p1, p2, q1, q2):
-    M = mpmath.matrix([[p2[k] - p1[k], q1[k] - q2[k]] for k in range(3)])
-    t = mpmath.qr_solve(M, q1 - p1)[0]
-    return p1 + t[0] * (p2 - p1)
+    return line_meet(P[p], (P[q] + P[r]) / 2, P[q], (P[p] + P[r]) / 2)
 
 
 def _construction_points(case):
@@ -303,9 +284,9 @@ def _construction_points(case):
     P = {n: mpmath.matrix([mpmath.mpf(int(v)) for v in case.data[i]]) for i, n in enumerate("ABCD")}
     c_ = (P["B"] + P["D"]) / 2
     F_, G_ = _median_meet(P, "B", "C", "D"), _median_meet(P, "A", "B", "D")
-    o_n = _line_meet(P["C"], G_, P["A"], F_)
-    a_n = _line_meet(c_, o_n, P["A"], P["C"])
-    L_n = _line_meet(a_n, c_, F_, G_)
+    o_n = line_meet(P["C"], G_, P["A"], F_)
+    a_n = line_meet(c_, o_n, P["A"], P["C"])
+    L_n = line_meet(a_n, c_, F_, G_)
     return {**P, "c": c_, "F": F_, "G": G_, "o": o_n, "a": a_n, "L": L_n}
 
 

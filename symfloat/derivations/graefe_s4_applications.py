@@ -25,6 +25,7 @@ import sympy as sp
 from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.witness import Case, Computed, PlaneSections, SectionIntegral
 from symfloat.model.claim import as_printed
+from symfloat.registry import load
 
 u, t, xi, P, eta = sp.symbols("u t xi P eta", real=True)
 r, R, h, m, a, b, c, p, k, S, s = sp.symbols("r R h m a b c p k S s", positive=True)
@@ -34,6 +35,9 @@ y, yp, n = sp.symbols("y y' n", positive=True)
 pi = sp.pi
 
 S3 = "graefe-s3-prismatoid-centroid"
+# the prismatoid centroid X = h (g/2 + D)/((G + g)/2 + 2D) above G at given (G, g, D, h): the reading of §3's print
+_S3D, _S3M = load(S3)
+centroid = _S3D.evaluator("centroid", (_S3M.G, _S3M.g, _S3M.D, _S3M.h), 1)
 QUADRATIC = ("A(u) is a polynomial of degree <= 2 in u, so the prismatoid formula of §3 is exact "
              "for this body (§3, centroid-quadratic-sections)")
 
@@ -69,7 +73,7 @@ def body(slug, key, area, height, G_val, D_val, g_val, note):
     d.step(f"{slug}-G", (G, sp.Subs(area, u, 0), G_val), "substitution", uses=sec, result=G)
     d.step(f"{slug}-D", (D, sp.Subs(area, u, height / 2), D_val), "substitution", uses=sec, result=D)
     d.step(f"{slug}-g", (g, sp.Subs(area, u, height), g_val), "substitution", uses=sec, result=g)
-    d.step(f"{slug}-centroid", Eq(X, height * (g / 2 + D) / ((G + g) / 2 + 2 * D)), "lemma",
+    d.step(f"{slug}-centroid", Eq(X, centroid(G, g, D, height)), "lemma",
            uses=(f"{S3}:centroid", f"{S3}:centroid-quadratic-sections", f"{slug}-G", f"{slug}-D", f"{slug}-g"),
            note=QUADRATIC, result=X)
     d.step(f"{slug}-centroid-by-integration",
@@ -757,36 +761,24 @@ sections_witness("elliptic-body-claims", "centroid of the elliptic body from its
                  ("a = 2, b = 1, h = 7/2, p = 1/2", {a: 2, b: 1, h: sp.Rational(7, 2), p: sp.Rational(1, 2)}))
 
 
-def _centroid_ratio(area, height):
-    """The centroid height over the body's height, ∫u A du / (height ∫A du), by tanh-sinh quadrature."""
-    def compute(case, dps):
-        hv = mpmath.mpf(sp.N(height.xreplace(case.params), dps + 10))
-        f_ = sp.lambdify(u, area.xreplace(case.params), "mpmath")
-        return mpmath.quad(lambda t_: t_ * f_(t_), [0, hv]) / (hv * mpmath.quad(f_, [0, hv]))
-    return compute
-
-
 HALF_CASES = tuple(Case({r: sp.Rational(rv), a: sp.Rational(av), b: sp.Rational(bv), c: sp.Rational(cv)},
                         label=f"r = {rv}, a = {av}, b = {bv}, c = {cv}")
                    for rv, av, bv, cv in (("2", "5", "3", "2"), ("5/3", "3", "2", "1")))
+fraction = sp.Symbol("w", positive=True)         # the height above G as a fraction of the body's height: u = w height
 for name, area_, height_ in (("hemisphere", area_hs, r), ("half-ellipsoid", area_he, a), ("half-triaxial", area_ht, a)):
-    d.witness(Computed(f"three-eighths-{name}", f"centroid of the {name} over its height, by quadrature",
-                       ("three-eighths",), HALF_CASES, compute=_centroid_ratio(area_, height_)))
-
-
-def _without_factor(G_, D_, g_, height):
-    """The prismatoid centroid h (g/2 + D)/((G + g)/2 + 2D) with the sections' common factor left out."""
-    return height * (g_ / 2 + D_) / ((G_ + g_) / 2 + 2 * D_)
+    d.witness(SectionIntegral(f"three-eighths-{name}", f"centroid of the {name} over its height, by quadrature",
+                              ("three-eighths",), HALF_CASES, area=area_.subs(u, height_ * fraction), z=fraction,
+                              bounds=(0, 1), quantity="centroid"))
 
 
 d.quote("ellipsoid-segment-factor", "§4 ellipsoid segment",
         r"Weglassung von  $\frac{\pi b^2}{a^2}$  im Zähler und Nenner",
-        reading=(X_es, _without_factor(a ** 2 - x ** 2, (3 * a ** 2 - 2 * a * x - x ** 2) / 4, 0, a - x)),
+        reading=(X_es, centroid(a ** 2 - x ** 2, 0, (3 * a ** 2 - 2 * a * x - x ** 2) / 4, a - x)),
         note="the factor π b²/a² common to G, D, g cancels: the centroid from the bare brackets")
 d.quote("triaxial-stump-factor", "§4 triaxial ellipsoid stump",
         r"Demnach erhalten wir mit Fortlassung von  $\frac{b c}{a^2}$  für den Abstand des Schwerpunktes von  $G$",
-        reading=(X_ts, _without_factor((a ** 2 - x ** 2) * pi, (a ** 2 - (x + xp) ** 2 / 4) * pi,
-                                       (a ** 2 - xp ** 2) * pi, xp - x)),
+        reading=(X_ts, centroid((a ** 2 - x ** 2) * pi, (a ** 2 - xp ** 2) * pi, (a ** 2 - (x + xp) ** 2 / 4) * pi,
+                                xp - x)),
         note="the factor b c/a² cancels (π is left in the brackets, as in D = Q p. E p. π)")
 sections_witness("ellipsoid-segment-factor", "centroid of the ellipsoidal segment from its circular sections",
                  ("ellipsoid-segment-factor",), area_es, a - x, *ELLIPSOID_SEGMENT_CASES)

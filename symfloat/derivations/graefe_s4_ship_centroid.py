@@ -21,6 +21,7 @@ import sympy as sp
 from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.witness import Case, SectionIntegral
 from symfloat.model.claim import as_printed
+from symfloat.registry import load
 
 G, g, D, h, z = sp.symbols("G g D h z", positive=True)
 a, b, c, dd, e, f, m = sp.symbols("a b c d e f m", positive=True)
@@ -33,14 +34,10 @@ M1, M2, M3 = sp.symbols("m' m'' m'''", positive=True)         # the moments (pri
 M, V, XS = sp.symbols("M V x", positive=True)                 # the whole body: moment, volume, centroid
 
 
-def centroid(G_, g_, D_, h_):
-    """§3: X = h (g/2 + D) / ((G + g)/2 + 2D), distance of the centroid from the plane G."""
-    return (h * (g / 2 + D) / ((G + g) / 2 + 2 * D)).xreplace({G: G_, g: g_, D: D_, h: h_})
-
-
-def volume(G_, g_, D_, h_):
-    """§1: V = h/3 ((G + g)/2 + 2D)."""
-    return (h / 3 * ((G + g) / 2 + 2 * D)).xreplace({G: G_, g: g_, D: D_, h: h_})
+# the prismatoid's centroid X = h (g/2 + D) / ((G + g)/2 + 2D) above G (§3) and volume V = h/3 ((G + g)/2 + 2D) (§1)
+# at given (G, g, D, h): the readings of their prints
+centroid = load("graefe-s3-prismatoid-centroid")[0].evaluator("centroid", (G, g, D, h), 1)
+volume = load("graefe-s1-prismatoid-volume")[0].evaluator("prismatoid-volume", (G, g, D, h), 1)
 
 
 DERIVATION = d = Derivation(

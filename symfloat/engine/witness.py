@@ -177,6 +177,9 @@ class SectionIntegral(MeasuredWitness):
     ``quantity`` is ``volume`` (∫A dz), ``moment`` (∫(z - o) A dz) or
     ``centroid`` (moment / volume: the distance of the centroid from the
     plane ``z = o``); ``o`` is ``origin``, by default the lower bound.
+    Several bodies at once: ``area`` a tuple of section areas, or ``bounds``
+    a tuple of ``(lower, upper)`` pairs; the value is then the tuple of the
+    quantity for each area over each pair (areas outer), in that order.
     """
 
     area: sp.Expr = None
@@ -186,10 +189,24 @@ class SectionIntegral(MeasuredWitness):
     origin: object = None
     methods: tuple = DEFAULT_METHODS
 
+    @property
+    def parts(self) -> tuple:
+        """``(area, (lower, upper))`` of each integral, in the order of the value's components."""
+        areas = self.area if isinstance(self.area, tuple) else (self.area,)
+        spans = self.bounds if isinstance(self.bounds[0], tuple) else (self.bounds,)
+        return tuple((area, span) for area in areas for span in spans)
+
+    def combined(self, values):
+        """The measured value from the values of :attr:`parts`: a number for one part, else the tuple."""
+        return tuple(values) if len(values) > 1 else values[0]
+
     def measure(self, case, method):
-        lo, hi = (sp.sympify(b).xreplace(case.params) for b in self.bounds)
+        return self.combined([self._one(area, span, case, method) for area, span in self.parts])
+
+    def _one(self, area, bounds, case, method):
+        lo, hi = (sp.sympify(b).xreplace(case.params) for b in bounds)
         origin = lo if self.origin is None else sp.sympify(self.origin).xreplace(case.params)
-        area = self.area.xreplace(case.params)
+        area = area.xreplace(case.params)
         modules = "mpmath" if method.arithmetic == "mpmath" else "numpy"
         with mpmath.workdps(method.dps):
             lo_n, hi_n = (mpmath.mpf(sp.N(b, method.dps + 10)) for b in (lo, hi))

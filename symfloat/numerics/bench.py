@@ -171,15 +171,17 @@ def _timed(run, repeats):
 
 def _section_integral(w, case):
     """``method -> value`` for a :class:`SectionIntegral` case, the integrands built once."""
-    lo, hi = (sp.sympify(b).xreplace(case.params) for b in w.bounds)
-    origin = lo if w.origin is None else sp.sympify(w.origin).xreplace(case.params)
-    area = w.area.xreplace(case.params)
-    with mpmath.workdps(REFERENCE_DPS + 20):
-        points = [mpmath.mpf(sp.N(b, REFERENCE_DPS + 20)) for b in (lo, hi)]
-    built = {mod: (sp.lambdify(w.z, area, mod), sp.lambdify(w.z, (w.z - origin) * area, mod))
-             for mod in ("mpmath", "numpy")}
+    parts = []
+    for area, bounds in w.parts:
+        lo, hi = (sp.sympify(b).xreplace(case.params) for b in bounds)
+        origin = lo if w.origin is None else sp.sympify(w.origin).xreplace(case.params)
+        area = area.xreplace(case.params)
+        with mpmath.workdps(REFERENCE_DPS + 20):
+            points = [mpmath.mpf(sp.N(b, REFERENCE_DPS + 20)) for b in (lo, hi)]
+        parts.append(({mod: (sp.lambdify(w.z, area, mod), sp.lambdify(w.z, (w.z - origin) * area, mod))
+                       for mod in ("mpmath", "numpy")}, points))
 
-    def value(method):
+    def one(built, points, method):
         f, g = built["mpmath" if method.arithmetic == "mpmath" else "numpy"]
         with mpmath.workdps(method.dps):
             volume = method.integrate(f, points)[0]
@@ -187,6 +189,9 @@ def _section_integral(w, case):
                 return volume
             moment = method.integrate(g, points)[0]
             return moment if w.quantity == "moment" else moment / volume
+
+    def value(method):
+        return w.combined([one(built, points, method) for built, points in parts])
     return value
 
 

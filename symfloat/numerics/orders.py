@@ -85,8 +85,9 @@ def _theory(expr, var, lo, hi):
 def _integrand(w, case):
     """(expression, variable, lo, hi) of the first integral a witness evaluates."""
     if isinstance(w, SectionIntegral):
-        lo, hi = (sp.sympify(b).xreplace(case.params) for b in w.bounds)
-        return w.area.xreplace(case.params), w.z, lo, hi
+        area, bounds = w.parts[0]
+        lo, hi = (sp.sympify(b).xreplace(case.params) for b in bounds)
+        return area.xreplace(case.params), w.z, lo, hi
     at = {**case.params, w.position: sp.sympify(w.planes[0]).xreplace(case.params)}
     lo, hi = (sp.sympify(e).xreplace(at) for e in w.chord)
     return w.width.xreplace(at), w.across, lo, hi
