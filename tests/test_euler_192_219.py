@@ -10,6 +10,8 @@ import pytest
 import sympy as sp
 
 from symfloat.engine.check import check_derivation
+from symfloat.engine.floating_witness import FloatingWitness
+from symfloat.engine.witness import Case, Precision
 from symfloat.model.source import SOURCES
 from symfloat.registry import load
 
@@ -178,13 +180,21 @@ def test_the_quad_L_correction_must_hold():
     assert any("correction does not hold" in f for f in rep.failures)
 
 
+def _arm(hv, phi, dps):
+    """The righting arm of the module's witness box (1 x 1 x 2 at s = 1/2, G hv above B) heeled by phi, clipped
+    by the floating witness at dps digits."""
+    w = FloatingWitness("arm", "", (), (), body=MODULE.box_with_G(sp.sympify(hv)), up=MODULE.HEEL,
+                        density=MODULE.sw, quantity=MODULE.ARM[MODULE.HEEL])
+    return w.measure(Case({MODULE.sw: sp.Rational(1, 2), MODULE.phi: sp.sympify(phi)}), Precision(dps, 0.0))
+
+
 def test_the_heeled_box_arm_is_the_clipped_bodys():
     # the wall-sided box of §§192-200 (e = T = 1/2, G 1/10 above B) heeled by 1/10: the arm of step
     # righting-arm-value against exact clipping of the box 1 x 1 x 2 at 50 digits
     e, T, b, phi = sp.Rational(1, 2), sp.Rational(1, 2), sp.Rational(1, 10), sp.Rational(1, 10)
     closed = sp.sin(phi) * (e ** 2 / (3 * T) - b + e ** 2 * sp.tan(phi) ** 2 / (6 * T))
     with mpmath.workdps(50):
-        clipped = MODULE._arm(sp.Rational(1, 2), b, phi, 50)
+        clipped = _arm(b, phi, 50)
         assert abs(clipped - mpmath.mpf(sp.N(closed, 60))) < mpmath.mpf(10) ** -40
         # mutation: the arm without its third-order term (S·phi alone) misses the clipped body
         assert abs(clipped - mpmath.mpf(sp.N(sp.sin(phi) * (e ** 2 / (3 * T) - b), 60))) > mpmath.mpf(10) ** -5   # 8.4e-5
@@ -197,6 +207,6 @@ def test_negative_stability_ends_in_a_stable_heeled_equilibrium():
     phi0 = sp.atan(sp.sqrt(2 * g / sp.Rational(1, 6)))
     with mpmath.workdps(30):
         hv = sp.Rational(1, 6) + g
-        assert MODULE._arm(sp.Rational(1, 2), hv, sp.Rational(1, 20), 30) < 0
-        assert abs(MODULE._arm(sp.Rational(1, 2), hv, mpmath.mpf(sp.N(phi0, 60)), 30)) < mpmath.mpf(10) ** -25
-        assert MODULE._arm(sp.Rational(1, 2), hv, mpmath.mpf(sp.N(phi0, 60)) + mpmath.mpf("0.01"), 30) > 0
+        assert _arm(hv, sp.Rational(1, 20), 30) < 0
+        assert abs(_arm(hv, sp.N(phi0, 60), 30)) < mpmath.mpf(10) ** -25
+        assert _arm(hv, sp.N(phi0, 60) + sp.Rational(1, 100), 30) > 0

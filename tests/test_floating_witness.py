@@ -444,3 +444,56 @@ def test_a_body_with_a_given_centre_of_gravity():
         assert float(w.measure(CASE, w.methods[0])) == pytest.approx(float(exact), abs=1e-13)
         with mpmath.workdps(40):
             assert abs(w.measure(CASE, w.methods[1]) - mpmath.mpf(exact.numerator) / exact.denominator) < 1e-35
+
+
+# ---- the coefficients of a quantity's expansion in the tilt (SeriesWitness) ------------------------------------
+# Reference: the box 1 x 1 x 2 (across x, height y, length z) half immersed, G the height g above its upright
+# centre of buoyancy, heeled by phi about z while wall-sided (tan phi < 1): the immersed section is the trapezoid
+# below the waterline through the middle, whose centroid gives the arm
+# GZ = sin phi (e²/(3T) - g + e² tan²phi/(6T)), e = T = 1/2 (Euler §§192-200, the worked body; Atwood's
+# formula for a wall-sided section).  Its Taylor coefficients: phi: 1/6 - g; phi³: -(1/6 - g)/6 + 1/12.
+
+def _heeled_box(g):
+    from symfloat.engine.floating_witness import Loaded
+    return Loaded.of(Body.box(1, 1, 2), (0, S / 2 - sp.Rational(1, 2) + g, 0))
+
+
+TILT = sp.Symbol("phi", positive=True)
+HEEL = (sp.sin(TILT), sp.cos(TILT), 0)
+
+
+@pytest.mark.parametrize("k", [1, 3])
+def test_the_arm_coefficients_of_a_heeled_box(k):
+    from symfloat.engine.floating_witness import SeriesWitness, potential_slope
+    g = sp.Rational(1, 10)
+    exact = {1: sp.Rational(1, 6) - g, 3: -(sp.Rational(1, 6) - g) / 6 + sp.Rational(1, 12)}[k]
+    case = Case({S: sp.Rational(1, 2)})
+    for odd in (True, False):
+        w = SeriesWitness("arm", "", (), (case,), body=_heeled_box(g), up=HEEL, density=S,
+                          quantity=potential_slope(HEEL, TILT), series=(TILT, k), odd=odd)
+        for method in w.methods:
+            with mpmath.workdps(60):
+                err = abs(w.measure(case, method) - mpmath.mpf(sp.N(exact, 60))) / abs(mpmath.mpf(sp.N(exact, 60)))
+            assert err < method.tolerance, (k, odd, method.name, err)
+    # mutation: the coefficient of phi^3 is not the linear theory's zero, nor the coefficient of phi
+    if k == 3:
+        assert abs(float(exact)) > 0.05 and exact != sp.Rational(1, 6) - g
+
+
+def test_the_slope_of_the_arm_at_a_heeled_equilibrium():
+    # G the height g = 1/6 + 1/100 above B: the arm vanishes again at tan²phi* = 2 (g - 1/6)/(1/6) = 3/25 and its
+    # slope there is dGZ/dphi = 2 (g - 1/6) sqrt(1 + 6 T (g - 1/6)/e²) = (1/50) sqrt(112/100) (from the arm above)
+    from symfloat.engine.floating_witness import FloatingRootWitness, Root, SeriesWitness, potential_slope
+    g, star = sp.Rational(1, 6) + sp.Rational(1, 100), sp.Symbol("phi_star", positive=True)
+    arm = potential_slope(HEEL, TILT)
+    root = Root(arm, TILT, tuple(sp.Rational(j, 20) for j in range(1, 15)))
+    case = Case({S: sp.Rational(1, 2)})
+    slope = SeriesWitness("slope", "", (), (case,), body=_heeled_box(g), up=HEEL, density=S, quantity=arm,
+                          series=(TILT, 1), centre=star, roots=((star, root),))
+    where = FloatingRootWitness("root", "", (), (case,), body=_heeled_box(g), up=HEEL, density=S,
+                                quantity=sp.tan(TILT) ** 2, roots=((TILT, root),))
+    exact = sp.Rational(1, 50) * sp.sqrt(sp.Rational(112, 100))
+    for method in slope.methods:
+        with mpmath.workdps(60):
+            assert abs(slope.measure(case, method) - mpmath.mpf(sp.N(exact, 60))) < method.tolerance * float(exact)
+            assert abs(where.measure(case, method) - mpmath.mpf(3) / 25) < method.tolerance

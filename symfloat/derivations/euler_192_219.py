@@ -42,17 +42,18 @@ arm (the box still rights at third order: indifference is a statement of the lin
 drives the box to a heeled stable equilibrium at tan²phi = 2g/(I/V); the box 1 × 1 × 2 with G 1/3 above
 B is stable about EF and unstable about AB; ships resist pitching more than rolling (K > I).
 
-Witnesses: every moment is computed by two-dimensional quadrature over the figure itself
-(nested ``mpmath.quad`` at 50 digits, and fixed-order Gauss–Legendre in float64; for the
-ellipse the float64 rule runs in elliptic polar coordinates); the box by exact clipping, the arm
-extrapolated to phi → 0 and the heeled equilibrium found by root-finding.
+Witnesses: every figure is declared by its vertices (the ellipse by its half-breadth) and its moments
+measured by the figure witnesses (exact polygon integrals, the ellipse by quadrature of its chords, in
+float64 and at 50 digits); the boxes by exact clipping, the arm's coefficients extrapolated to phi → 0
+and the heeled equilibrium found as a root of the clipped arm.
 """
-import mpmath
-import numpy as np
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.witness import Case, Computed, Precision
+from symfloat.engine.figure_witness import CENTROID, FIGURE_METHODS, CurveRoot, Figure, FigureWitness, Over
+from symfloat.engine.floating_witness import (LIMIT_METHODS, PART, SERIES_METHODS, Body, Combined, FloatingRootWitness,
+                                              FloatingWitness, Joined, Loaded, Root, SeriesWitness, potential_slope)
+from symfloat.engine.witness import Case
 from symfloat.model.claim import as_printed
 
 
@@ -650,344 +651,159 @@ d.quote("ellipse-I", "§219", r"fore = $\frac{EF^2 D}{8}$", reading=(Iel, (2 * b
         note=claim("likewise about AB the moment is EF²D/8: the denominator is 6 for the rectangle, 12 for "
                    "the rhombus, 8 for the ellipse."))
 
-# ================================================================ witnesses: 2-D quadrature over each figure
-
-
-def _num(v, dps):
-    return mpmath.mpf(sp.N(v, dps + 10)) if dps > 15 else float(v)
-
-
-def _edges_at(poly, xv):
-    ys = []
-    for i in range(len(poly)):
-        (x0, y0), (x1, y1) = poly[i], poly[(i + 1) % len(poly)]
-        if x0 != x1 and min(x0, x1) <= xv <= max(x0, x1):
-            ys.append(y0 + (y1 - y0) * (xv - x0) / (x1 - x0))
-    return min(ys), max(ys)
-
-
-def polygon_integral(f, poly, dps):
-    """∫∫ f over a convex polygon, in strips between the vertices' abscissae, the inner integral across
-    the vertical chord.  dps > 15: nested mpmath.quad; otherwise float64 Gauss-Legendre, 24 x 24 nodes
-    per strip (numpy leggauss)."""
-    if dps > 15:
-        P = [(_num(p, dps), _num(q, dps)) for p, q in poly]
-        xs = sorted({p[0] for p in P})
-
-        def inner(xv):
-            lo, hi = _edges_at(P, xv)
-            return mpmath.quad(lambda yv: f(xv, yv), [lo, hi], method="gauss-legendre")
-        return mpmath.quad(inner, xs, method="gauss-legendre")
-    P = [(float(p), float(q)) for p, q in poly]
-    xs = sorted({p[0] for p in P})
-    nodes, weights = np.polynomial.legendre.leggauss(24)
-    total = 0.0
-    for x0, x1 in zip(xs, xs[1:]):
-        for xi, wi in zip((x1 - x0) / 2 * nodes + (x1 + x0) / 2, weights):
-            lo, hi = _edges_at(P, xi)
-            yv = (hi - lo) / 2 * nodes + (hi + lo) / 2
-            total += wi * (x1 - x0) / 2 * (hi - lo) / 2 * float(np.dot(weights, f(xi, yv) + 0 * yv))
-    return total
-
-
-def ellipse_integral(f, A, B, dps):
-    """∫∫ f over x^2/A^2 + y^2/B^2 <= 1.  dps > 15: nested mpmath.quad (tanh-sinh outside, where the
-    chord has a square-root end); otherwise float64 Gauss-Legendre (32 x 32) in the elliptic polar
-    coordinates x = A rho cos(th), y = B rho sin(th)."""
-    if dps > 15:
-        A, B = _num(A, dps), _num(B, dps)
-
-        def inner(xv):
-            hh = B * mpmath.sqrt(1 - (xv / A) ** 2)
-            return mpmath.quad(lambda yv: f(xv, yv), [-hh, hh], method="gauss-legendre")
-        return mpmath.quad(inner, [-A, A])
-    A, B = float(A), float(B)
-    nodes, weights = np.polynomial.legendre.leggauss(32)
-    rho, wr = (nodes + 1) / 2, weights / 2
-    th, wt = np.pi * (nodes + 1), np.pi * weights
-    R, T = np.meshgrid(rho, th, indexing="ij")
-    return float(np.sum(np.outer(wr, wt) * A * B * R * f(A * R * np.cos(T), B * R * np.sin(T))))
-
-
-def _sqrt(v):
-    return mpmath.sqrt(v) if isinstance(v, mpmath.mpf) else float(np.sqrt(v))
+# ================================================================ witnesses: the moments of each figure
+# Every figure is declared with its vertices (or, the ellipse, its half-breadth) and measured by the figure
+# witnesses (symfloat.engine.figure_witness): exact polygon integrals in float64 and at 50 digits, the ellipse by
+# quadrature of its chords.  The boxes of §§192-203 float, heeled or pitched, by exact clipping
+# (symfloat.engine.floating_witness).  Nothing of the formulas under test is used.
 
 
 def rational_cases(*rows):
     return tuple(Case({k: sp.Rational(v) for k, v in params.items()}, label=label) for label, params in rows)
 
 
-def figure_witness(name, description, targets, cases, compute):
-    d.witness(Computed(name, description, tuple(targets), cases, compute=compute))
+def figure_witness(name, description, targets, cases, figure, quantity):
+    d.witness(FigureWitness(name, description, tuple(targets), cases, figure=figure, coords=(x, y), quantity=quantity))
 
 
-def P(case, sym, dps):
-    return _num(case.params[sym], dps)
-
+XC = CENTROID[0]
+N_OF_M = sp.sqrt(1 - m ** 2)                       # n, the cosine of the angle whose sine is m (§205)
+SQUARE = Figure.polygon([(-a, -a), (a, -a), (a, a), (-a, a)])
+RECTANGLE = Figure.polygon([(-a, -b), (a, -b), (a, b), (-a, b)])
+RHOMBUS = Figure.polygon([(-a, 0), (0, -b), (a, 0), (0, b)])
+KITE = Figure.polygon([(0, 0), (a, -b), (a + c, 0), (a, b)])             # A, f, B, e of §215
+KITE_LOWER = Figure.polygon([(0, 0), (a, -b), (a + c, 0)])              # its half below AB
+RHOMBUS_OF_KITE = Figure.polygon([(-(a + c) / 2, 0), (0, -b), ((a + c) / 2, 0), (0, b)])   # same AB and ef
+ACE, BCE = Figure.polygon([(0, 0), (a, 0), (a, b)]), Figure.polygon([(a, 0), (a + c, 0), (a, b)])
+GENERIC = Figure.polygon([(X1, Y1), (X2, Y1), (X2, Y2), (X1, Y2)])      # the rectangle off the origin
+STRIP = Figure.polygon([(0, 0), (Pp, 0), (Pp, PM), (0, PM)])            # the strip Pp from AB up to M
+STRIP_NM = Figure.polygon([(0, -PN), (Pp, -PN), (Pp, PM), (0, PM)])     # ... from N to M
+ELLIPSE = Figure.strips(y, x, -a, a, (-Yel, Yel))
 
 SQ = rational_cases(("a = 1", {a: 1}), ("a = 3/2", {a: "3/2"}))
 AB_CASES = rational_cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
 Q_CASES = rational_cases(("a = 1, b = 1, c = 2", {a: 1, b: 1, c: 2}),
                          ("a = 5/2, b = 3/4, c = 3/2", {a: "5/2", b: "3/4", c: "3/2"}))
 
-
-def square(case, dps):
-    A = case.params[a]
-    return [(-A, -A), (A, -A), (A, A), (-A, A)]
-
-
-def rectangle(case, dps):
-    A, B = case.params[a], case.params[b]
-    return [(-A, -B), (A, -B), (A, B), (-A, B)]
-
-
-def rhombus(case, dps):
-    A, B = case.params[a], case.params[b]
-    return [(-A, 0), (0, -B), (A, 0), (0, B)]
-
-
-def quadrilateral(case, dps):
-    A, B, C = case.params[a], case.params[b], case.params[c]
-    return [(0, 0), (A, -B), (A + C, 0), (A, B)]
-
-
-figure_witness("square-moment", "∫∫ y^2 over the square by 2-D quadrature", ("square-I", "square-D"), SQ,
-               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, square(cs, dps), dps))
+figure_witness("square-moment", "∫∫ y^2 over the square", ("square-I", "square-D"), SQ, SQUARE, Over(y ** 2))
 figure_witness("square-quadrant", "∫∫ y^2 and ∫∫ x^2 over the quadrant ACE of the square",
-               ("square-quadrant-I", "square-quadrant-K"), SQ,
-               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2,
-                                                [(0, 0), (cs.params[a], 0), (cs.params[a], cs.params[a]),
-                                                 (0, cs.params[a])], dps))
-figure_witness("rect-I", "∫∫ y^2 over the rectangle", ("rect-I",), AB_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, rectangle(cs, dps), dps))
-figure_witness("rect-K", "∫∫ x^2 over the rectangle", ("rect-K",), AB_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: X ** 2, rectangle(cs, dps), dps))
-figure_witness("rhombus-I", "∫∫ y^2 over the rhombus", ("rhombus-I",), AB_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, rhombus(cs, dps), dps))
-figure_witness("rhombus-K", "∫∫ x^2 over the rhombus", ("rhombus-K",), AB_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: X ** 2, rhombus(cs, dps), dps))
-figure_witness("quad-I", "∫∫ y^2 over the quadrilateral AeBf", ("quad-I",), Q_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, quadrilateral(cs, dps), dps))
-figure_witness("Ace-I", "∫∫ y^2 over the triangle Ace", ("Ace-I",), Q_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, [(0, 0), (cs.params[a], 0),
-                                                                      (cs.params[a], cs.params[b])], dps))
-figure_witness("Ace-L", "∫∫ (x - a)^2 over the triangle Ace", ("Ace-L",), Q_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: (X - P(cs, a, dps)) ** 2,
-                                                [(0, 0), (cs.params[a], 0), (cs.params[a], cs.params[b])], dps))
-
-
-def _tri_Bce(cs):
-    A, B, C = cs.params[a], cs.params[b], cs.params[c]
-    return [(A, 0), (A + C, 0), (A, B)]
-
-
-figure_witness("Bce-I", "∫∫ y^2 over the triangle Bce", ("Bce-I",), Q_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, _tri_Bce(cs), dps))
-figure_witness("Bce-L", "∫∫ (x - a)^2 over the triangle Bce", ("Bce-L",), Q_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: (X - P(cs, a, dps)) ** 2, _tri_Bce(cs), dps))
+               ("square-quadrant-I", "square-quadrant-K"), SQ, Figure.polygon([(0, 0), (a, 0), (a, a), (0, a)]),
+               Over(y ** 2))
+figure_witness("rect-I", "∫∫ y^2 over the rectangle", ("rect-I",), AB_CASES, RECTANGLE, Over(y ** 2))
+figure_witness("rect-K", "∫∫ x^2 over the rectangle", ("rect-K",), AB_CASES, RECTANGLE, Over(x ** 2))
+figure_witness("rhombus-I", "∫∫ y^2 over the rhombus", ("rhombus-I",), AB_CASES, RHOMBUS, Over(y ** 2))
+figure_witness("rhombus-K", "∫∫ x^2 over the rhombus", ("rhombus-K",), AB_CASES, RHOMBUS, Over(x ** 2))
+figure_witness("quad-I", "∫∫ y^2 over the quadrilateral AeBf", ("quad-I",), Q_CASES, KITE, Over(y ** 2))
+figure_witness("Ace-I", "∫∫ y^2 over the triangle Ace", ("Ace-I",), Q_CASES, ACE, Over(y ** 2))
+figure_witness("Ace-L", "∫∫ (x - a)^2 over the triangle Ace", ("Ace-L",), Q_CASES, ACE, Over((x - a) ** 2))
+figure_witness("Bce-I", "∫∫ y^2 over the triangle Bce", ("Bce-I",), Q_CASES, BCE, Over(y ** 2))
+figure_witness("Bce-L", "∫∫ (x - a)^2 over the triangle Bce", ("Bce-L",), Q_CASES, BCE, Over((x - a) ** 2))
 figure_witness("quad-L", "∫∫ (x - a)^2 over the quadrilateral, ef at x = a", ("quad-L", "quad-L-again"), Q_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: (X - P(cs, a, dps)) ** 2, quadrilateral(cs, dps), dps))
-
-
-def _centroid_x(cs, dps):
-    poly = quadrilateral(cs, dps)
-    return (polygon_integral(lambda X, Y: X + 0 * Y, poly, dps)
-            / polygon_integral(lambda X, Y: 1 + 0 * X * Y, poly, dps))
-
-
-figure_witness("quad-centroid", "Cc = ∫∫x / ∫∫1 - a over the quadrilateral", ("centroid", "Cc-again"), Q_CASES,
-               lambda cs, dps: _centroid_x(cs, dps) - P(cs, a, dps))
-
-
-def _quad_K(cs, dps):
-    xc = _centroid_x(cs, dps)
-    return polygon_integral(lambda X, Y: (X - xc) ** 2, quadrilateral(cs, dps), dps)
-
-
-figure_witness("quad-K", "∫∫ (x - x_C)^2 over the quadrilateral, x_C by quadrature", ("quad-K",), Q_CASES, _quad_K)
-
-
-def _sym_rot(cs, dps, normal):
-    xc = _centroid_x(cs, dps)
-    mm = P(cs, m, dps)
-    nn = _sqrt(1 - mm * mm)
-    return polygon_integral(lambda X, Y: normal(mm, nn, X - xc, Y) ** 2, quadrilateral(cs, dps), dps)
-
-
+               KITE, Over((x - a) ** 2))
+figure_witness("quad-centroid", "Cc = x_C - a, x_C the quadrilateral's centroid", ("centroid", "Cc-again"), Q_CASES,
+               KITE, XC - a)
+figure_witness("quad-K", "∫∫ (x - x_C)^2 over the quadrilateral, x_C its centroid", ("quad-K",), Q_CASES, KITE,
+               Over((x - XC) ** 2))
 QM_CASES = rational_cases(("a = 1, b = 1, c = 2, m = 3/5", {a: 1, b: 1, c: 2, m: "3/5"}),
                           ("a = 5/2, b = 3/4, c = 3/2, m = 1/3", {a: "5/2", b: "3/4", c: "3/2", m: "1/3"}))
 figure_witness("quad-PQ", "∫∫ (m X - n y)^2 over the quadrilateral about its centroid",
-               ("moment-PQ-symmetric", "moment-PQ-increasing"), QM_CASES,
-               lambda cs, dps: _sym_rot(cs, dps, lambda mm, nn, X, Y: mm * X - nn * Y))
+               ("moment-PQ-symmetric", "moment-PQ-increasing"), QM_CASES, KITE,
+               Over((m * (x - XC) - N_OF_M * y) ** 2))
 figure_witness("quad-RS", "∫∫ (n X + m y)^2 over the quadrilateral about its centroid",
-               ("moment-RS-symmetric",), QM_CASES,
-               lambda cs, dps: _sym_rot(cs, dps, lambda mm, nn, X, Y: nn * X + mm * Y))
+               ("moment-RS-symmetric",), QM_CASES, KITE, Over((N_OF_M * (x - XC) + m * y) ** 2))
 
 T_CASES = rational_cases(
     ("rectangle [-3/2, 5/2] x [-1/2, 5/2], m = 3/5, x_e = 2",
      {X1: "-3/2", Y1: "-1/2", X2: "5/2", Y2: "5/2", m: "3/5", xe: 2}),
     ("rectangle [-1, 1] x [1/4, 2], m = 1/4, x_e = -1/2",
      {X1: -1, Y1: "1/4", X2: 1, Y2: 2, m: "1/4", xe: "-1/2"}))
-
-
-def _triangle(cs):
-    X_1, Y_1, X_2, Y_2 = (cs.params[k] for k in (X1, Y1, X2, Y2))
-    return [(X_1, Y_1), (X_2, Y_1), (X_2, Y_2), (X_1, Y_2)]
-
-
-def _tri_rot(cs, dps, normal):
-    mm = P(cs, m, dps)
-    nn = _sqrt(1 - mm * mm)
-    return polygon_integral(lambda X, Y: normal(mm, nn, X, Y) ** 2, _triangle(cs), dps)
-
-
-figure_witness("generic-PQ", "∫∫ (m x - n y)^2 over the generic rectangle", ("moment-PQ-IK", "moment-PQ-restated"), T_CASES,
-               lambda cs, dps: _tri_rot(cs, dps, lambda mm, nn, X, Y: mm * X - nn * Y))
-figure_witness("generic-RS", "∫∫ (n x + m y)^2 over the generic rectangle", ("moment-RS-IK",), T_CASES,
-               lambda cs, dps: _tri_rot(cs, dps, lambda mm, nn, X, Y: nn * X + mm * Y))
-figure_witness("generic-sum", "∫∫ (x^2 + y^2) over the generic rectangle (polar moment about the origin)", ("sum-invariant",),
-               T_CASES, lambda cs, dps: polygon_integral(lambda X, Y: X ** 2 + Y ** 2, _triangle(cs), dps))
-
-
-def _tri_EF(cs, dps):
-    poly = _triangle(cs)
-    xc = (polygon_integral(lambda X, Y: X + 0 * Y, poly, dps)
-          / polygon_integral(lambda X, Y: 1 + 0 * X * Y, poly, dps))
-    return polygon_integral(lambda X, Y: (X - xc) ** 2, poly, dps)
-
-
-figure_witness("generic-parallel", "∫∫ (x - x_C)^2 over the generic rectangle, x_C by quadrature",
-               ("parallel-axis-rule",), T_CASES, _tri_EF)
+figure_witness("generic-PQ", "∫∫ (m x - n y)^2 over the generic rectangle", ("moment-PQ-IK", "moment-PQ-restated"),
+               T_CASES, GENERIC, Over((m * x - N_OF_M * y) ** 2))
+figure_witness("generic-RS", "∫∫ (n x + m y)^2 over the generic rectangle", ("moment-RS-IK",), T_CASES, GENERIC,
+               Over((N_OF_M * x + m * y) ** 2))
+figure_witness("generic-sum", "∫∫ (x^2 + y^2) over the generic rectangle (polar moment about the origin)",
+               ("sum-invariant",), T_CASES, GENERIC, Over(x ** 2 + y ** 2))
+figure_witness("generic-parallel", "∫∫ (x - x_C)^2 over the generic rectangle, x_C its centroid",
+               ("parallel-axis-rule",), T_CASES, GENERIC, Over((x - XC) ** 2))
 
 E_CASES = rational_cases(("a = 3, b = 2", {a: 3, b: 2}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
-figure_witness("ellipse-K", "∫∫ x^2 over the ellipse", ("ellipse-K",), E_CASES,
-               lambda cs, dps: ellipse_integral(lambda X, Y: X ** 2, cs.params[a], cs.params[b], dps))
-figure_witness("ellipse-I", "∫∫ y^2 over the ellipse", ("ellipse-I",), E_CASES,
-               lambda cs, dps: ellipse_integral(lambda X, Y: Y ** 2, cs.params[a], cs.params[b], dps))
+figure_witness("ellipse-K", "∫∫ x^2 over the ellipse", ("ellipse-K",), E_CASES, ELLIPSE, Over(x ** 2))
+figure_witness("ellipse-I", "∫∫ y^2 over the ellipse", ("ellipse-I",), E_CASES, ELLIPSE, Over(y ** 2))
 figure_witness("ellipse-quadrant", "a quarter of ∫∫ x^2 over the ellipse (the quadrants are congruent)",
-               ("ellipse-quadrant-K", "ellipse-quadrant-moment"), E_CASES,
-               lambda cs, dps: ellipse_integral(lambda X, Y: X ** 2, cs.params[a], cs.params[b], dps) / 4)
+               ("ellipse-quadrant-K", "ellipse-quadrant-moment"), E_CASES, ELLIPSE, Over(x ** 2) / 4)
 figure_witness("ellipse-quadrant-area", "a quarter of ∫∫ 1 over the ellipse", ("ellipse-quadrant-area",), E_CASES,
-               lambda cs, dps: ellipse_integral(lambda X, Y: 1 + 0 * X * Y, cs.params[a], cs.params[b], dps) / 4)
+               ELLIPSE, Over(1) / 4)
 
 
-def _ratios(cs, dps):
-    rc, rh = rectangle(cs, dps), rhombus(cs, dps)
-    return [polygon_integral(lambda X, Y: Y ** 2, rc, dps) / polygon_integral(lambda X, Y: Y ** 2, rh, dps),
-            polygon_integral(lambda X, Y: X ** 2, rc, dps) / polygon_integral(lambda X, Y: X ** 2, rh, dps)]
+def figure_part(figure, quantity):
+    return FigureWitness("", "", (), (), figure=figure, coords=(x, y), quantity=quantity)
 
 
-figure_witness("rect-rhombus-ratios", "the rectangle's moments over the rhombus' (same a, b) by quadrature",
-               ("rhombus-twice",), AB_CASES, _ratios)
-figure_witness("quad-K-excess", "∫∫ (x - x_C)^2 over the quadrilateral minus that of the rhombus with the same "
-               "AB and ef, both by quadrature", ("quad-K-larger",), Q_CASES,
-               lambda cs, dps: _quad_K(cs, dps) - polygon_integral(
-                   lambda X, Y: X ** 2,
-                   rhombus(Case({a: (cs.params[a] + cs.params[c]) / 2, b: cs.params[b]}), dps), dps))
+d.witness(Combined("rect-rhombus-ratios", "the rectangle's moments over the rhombus' (same a, b)", ("rhombus-twice",),
+                   AB_CASES, parts=(figure_part(RECTANGLE, Over(y ** 2)), figure_part(RHOMBUS, Over(y ** 2)),
+                                    figure_part(RECTANGLE, Over(x ** 2)), figure_part(RHOMBUS, Over(x ** 2))),
+                   values=(PART[0] / PART[1], PART[2] / PART[3]), methods=FIGURE_METHODS))
+KITE_EXCESS = dict(parts=(figure_part(KITE, Over((x - XC) ** 2)), figure_part(RHOMBUS_OF_KITE, Over(x ** 2))),
+                   values=(PART[0] - PART[1],), methods=FIGURE_METHODS)
+d.witness(Combined("quad-K-excess", "∫∫ (x - x_C)^2 over the quadrilateral minus that of the rhombus with the same "
+                   "AB and ef", ("quad-K-larger",), Q_CASES, **KITE_EXCESS))
 
 
 # ---------------------------------------------------------------- §201/§203: stability of a floating box
-# The box 1 (across, x) x 1 (height, y) x 2 (length, z), homogeneous, floats at the density ratio s; its
-# centre of gravity is moved to the depth b below, or the height b above, the upright centre of buoyancy.
-# The stability per unit angle is M GZ(phi)/phi for phi -> 0, with GZ the horizontal distance between the
-# centre of buoyancy of the clipped (heeled) body and G: computed at two small angles and Richardson-
-# extrapolated (GZ/phi = GM + O(phi^2)); float64 at phi = 1e-3, 50 digits at phi = 1e-11 with the clipping
-# carried out at 80 digits.  Nothing of the formula M(I/V ± b) is used.
-
-def _stability(cs, dps, axis, sign):
-    from symfloat.geometry.floating import box, floating_state
-    big = None if dps <= 15 else dps + 30
-    ctx = mpmath.workdps(big) if big else mpmath.workdps(15)
-    with ctx:
-        def num(v):
-            return mpmath.mpf(sp.N(v, big + 10)) if big else float(v)
-        S = num(cs.data["s"])
-        poly = box(1, 1, 2, dps=big)
-        sin, cos = (mpmath.sin, mpmath.cos) if big else (np.sin, np.cos)
-        B0 = floating_state(poly, (0, 1, 0), S).B
-        G = (B0[0], B0[1] + sign * num(cs.params[h]), B0[2])
-
-        def arm(phi):
-            if axis == "AB":       # heel about the long axis z
-                up, e = (sin(phi), cos(phi), 0), (-cos(phi), sin(phi), 0)
-            else:                  # pitch about the cross axis x
-                up, e = (0, cos(phi), sin(phi)), (0, sin(phi), -cos(phi))
-            Bp = floating_state(poly, up, S, G=G).B
-            return sum((Bp[i] - G[i]) * e[i] for i in range(3)) / phi
-
-        phi = num(sp.Rational(1, 10 ** 3)) if not big else num(sp.Rational(1, 10 ** 11))
-        gm = (4 * arm(phi / 2) - arm(phi)) / 3
-        return num(cs.params[Mw]) * gm
+# The box 1 (across, x) x 1 (height, y) x 2 (length, z), homogeneous, floats at the density ratio s_w; its
+# centre of gravity is moved to the depth b below, or the height b above, the upright centre of buoyancy (at half
+# the draught s_w).  The stability per unit angle is M GZ(phi)/phi for phi -> 0, GZ the righting arm of the
+# clipped (heeled or pitched) body, extrapolated (LIMIT_METHODS).  Nothing of the formula M(I/V ± b) is used.
+sw = sp.Symbol("s_w", positive=True)               # the density ratio of the witnesses' boxes
+HEEL = (sp.sin(phi), sp.cos(phi), 0)               # about the long axis z (AB)
+PITCH = (0, sp.cos(phi), sp.sin(phi))              # about the cross axis x (EF)
+ARM = {HEEL: potential_slope(HEEL, phi), PITCH: potential_slope(PITCH, phi)}
 
 
-B_CASES = (Case({Mw: 1, V: 1, Iw: sp.Rational(1, 6), Kw: sp.Rational(2, 3), h: sp.Rational(1, 10)},
-                data={"s": sp.Rational(1, 2)}, label="box 1 x 1 x 2, s = 1/2, b = 1/10"),
+def box_with_G(height):
+    """The box 1 x 1 x 2 with G at *height* above its upright centre of buoyancy."""
+    return Loaded.of(Body.box(1, 1, 2), (0, sw / 2 - sp.Rational(1, 2) + height, 0))
+
+
+def stability(up, height, factor=Mw):
+    """factor times lim GZ/phi of the box heeled (HEEL) or pitched (PITCH) with G at *height* above B."""
+    return FloatingWitness("", "", (), (), body=box_with_G(height), up=up, density=sw, quantity=factor * ARM[up],
+                           limit=(phi, 1), methods=LIMIT_METHODS)
+
+
+B_CASES = (Case({Mw: 1, V: 1, Iw: sp.Rational(1, 6), Kw: sp.Rational(2, 3), h: sp.Rational(1, 10),
+                 sw: sp.Rational(1, 2)}, label="box 1 x 1 x 2, s = 1/2, b = 1/10"),
            Case({Mw: sp.Rational(3, 2), V: sp.Rational(3, 2), Iw: sp.Rational(1, 6), Kw: sp.Rational(2, 3),
-                 h: sp.Rational(1, 20)}, data={"s": sp.Rational(3, 4)}, label="box 1 x 1 x 2, s = 3/4, b = 1/20"))
-d.witness(Computed("stability-AB-box", "M GZ/phi of a heeled box by exact clipping (G below, G above B)",
-                   ("stability-AB",), B_CASES,
-                   compute=lambda cs, dps: [_stability(cs, dps, "AB", -1), _stability(cs, dps, "AB", 1)]))
-d.witness(Computed("stability-EF-box", "M GZ/phi of a pitched box by exact clipping (G below, G above B)",
-                   ("stability-EF",), B_CASES,
-                   compute=lambda cs, dps: [_stability(cs, dps, "EF", -1), _stability(cs, dps, "EF", 1)]))
-d.witness(Computed("stability-I-box", "M GZ/phi of a heeled box by exact clipping, G below B",
-                   ("stability-I",), B_CASES, compute=lambda cs, dps: _stability(cs, dps, "AB", -1)))
-d.witness(Computed("stability-K-box", "M GZ/phi of a pitched box by exact clipping, G below B",
-                   ("stability-K",), B_CASES, compute=lambda cs, dps: _stability(cs, dps, "EF", -1)))
+                 h: sp.Rational(1, 20), sw: sp.Rational(3, 4)}, label="box 1 x 1 x 2, s = 3/4, b = 1/20"))
+d.witness(Joined("stability-AB-box", "M GZ/phi of a heeled box by exact clipping (G below, G above B)",
+                 ("stability-AB",), B_CASES, parts=(stability(HEEL, -h), stability(HEEL, h)), methods=LIMIT_METHODS))
+d.witness(Joined("stability-EF-box", "M GZ/phi of a pitched box by exact clipping (G below, G above B)",
+                 ("stability-EF",), B_CASES, parts=(stability(PITCH, -h), stability(PITCH, h)), methods=LIMIT_METHODS))
+d.witness(Joined("stability-I-box", "M GZ/phi of a heeled box by exact clipping, G below B",
+                 ("stability-I",), B_CASES, parts=(stability(HEEL, -h),), methods=LIMIT_METHODS))
+d.witness(Joined("stability-K-box", "M GZ/phi of a pitched box by exact clipping, G below B",
+                 ("stability-K",), B_CASES, parts=(stability(PITCH, -h),), methods=LIMIT_METHODS))
 
-# ---- second pass: the strip, the oblique axes and the areas, by quadrature over the figures themselves -------
+# ---- second pass: the strip, the oblique axes and the areas, by the moments of the figures themselves ----------
 STRIP_CASES = rational_cases(("PM = 2, Pp = 1/2", {PM: 2, Pp: "1/2"}), ("PM = 5/3, Pp = 3/10", {PM: "5/3", Pp: "3/10"}))
 figure_witness("strip-moment", "∫∫ y^2 over the strip Pp wide from AB up to M", ("strip-moment",), STRIP_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, [(0, 0), (cs.params[Pp], 0),
-                                                                      (cs.params[Pp], cs.params[PM]),
-                                                                      (0, cs.params[PM])], dps))
+               STRIP, Over(y ** 2))
 # the generic rectangle off the origin, at angles whose sine and cosine are rational (3-4-5, 5-12-13)
 GEN_CASES = rational_cases(("m = 3/5, [-1, 2] x [0, 3]", {m: "3/5", X1: -1, Y1: 0, X2: 2, Y2: 3}),
                            ("m = 5/13, [-3/2, 5/2] x [1/2, 5/2]",
                             {m: "5/13", X1: "-3/2", Y1: "1/2", X2: "5/2", Y2: "5/2"}))
-
-
-def _generic(cs):
-    return [(cs.params[X1], cs.params[Y1]), (cs.params[X2], cs.params[Y1]), (cs.params[X2], cs.params[Y2]),
-            (cs.params[X1], cs.params[Y2])]
-
-
-def _oblique(cs, dps, normal):
-    """∫∫ (distance from the axis through C)^2 over the generic rectangle; the axis PQ has the direction
-    (n, m), n = sqrt(1 - m^2) taken numerically; *normal* selects PQ (u = mx - ny) or RS (t = nx + my)."""
-    mv = P(cs, m, dps)
-    nv = _sqrt(1 - mv ** 2)
-    if normal:
-        return polygon_integral(lambda X, Y: (mv * X - nv * Y) ** 2, _generic(cs), dps)
-    return polygon_integral(lambda X, Y: (nv * X + mv * Y) ** 2, _generic(cs), dps)
-
-
 figure_witness("moment-PQ-rectangle", "∫∫ u^2 over a rectangle off the origin, u the distance from PQ",
-               ("moment-PQ",), GEN_CASES, lambda cs, dps: _oblique(cs, dps, True))
+               ("moment-PQ",), GEN_CASES, GENERIC, Over((m * x - N_OF_M * y) ** 2))
 figure_witness("moment-RS-rectangle", "∫∫ t^2 over a rectangle off the origin, t the distance from RS",
-               ("moment-RS",), GEN_CASES, lambda cs, dps: _oblique(cs, dps, False))
-figure_witness("generic-area", "∫∫ 1 over the rectangle off the origin", ("area-2D",), GEN_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: 1 + 0 * X * Y, _generic(cs), dps))
-figure_witness("square-area-quadrature", "∫∫ 1 over the square", ("square-area",), SQ,
-               lambda cs, dps: polygon_integral(lambda X, Y: 1 + 0 * X * Y, square(cs, dps), dps))
-figure_witness("rect-area-quadrature", "∫∫ 1 over the rectangle", ("rect-area",), AB_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: 1 + 0 * X * Y, rectangle(cs, dps), dps))
-figure_witness("rhombus-area-quadrature", "∫∫ 1 over the rhombus", ("rhombus-area",), AB_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: 1 + 0 * X * Y, rhombus(cs, dps), dps))
+               ("moment-RS",), GEN_CASES, GENERIC, Over((N_OF_M * x + m * y) ** 2))
+figure_witness("generic-area", "∫∫ 1 over the rectangle off the origin", ("area-2D",), GEN_CASES, GENERIC, Over(1))
+figure_witness("square-area-quadrature", "∫∫ 1 over the square", ("square-area",), SQ, SQUARE, Over(1))
+figure_witness("rect-area-quadrature", "∫∫ 1 over the rectangle", ("rect-area",), AB_CASES, RECTANGLE, Over(1))
+figure_witness("rhombus-area-quadrature", "∫∫ 1 over the rhombus", ("rhombus-area",), AB_CASES, RHOMBUS, Over(1))
 ELLIPSE_POINTS = rational_cases(("a = 2, b = 1, x = 1/2", {a: 2, b: 1, x: "1/2"}),
                                 ("a = 5/2, b = 3/4, x = 2", {a: "5/2", b: "3/4", x: 2}))
-
-
-def _ellipse_ordinate(cs, dps):
-    """PM: the root in [0, b] of x^2/a^2 + y^2/b^2 = 1, by the Illinois method."""
-    A, B, X = (P(cs, q, 50) for q in (a, b, x))
-    with mpmath.workdps(max(dps, 15)):
-        return mpmath.findroot(lambda yv: (X / A) ** 2 + (yv / B) ** 2 - 1, (mpmath.mpf(0), B), solver="illinois",
-                               tol=mpmath.mpf(10) ** (-max(dps, 15)), maxsteps=400)
-
-
-figure_witness("ellipse-ordinate-root", "the ordinate of the ellipse by root-finding", ("ellipse-ordinate",),
-               ELLIPSE_POINTS, _ellipse_ordinate)
+d.witness(CurveRoot("ellipse-ordinate-root", "the ordinate of the ellipse by root-finding", ("ellipse-ordinate",),
+                    ELLIPSE_POINTS, equation=x ** 2 / a ** 2 + y ** 2 / b ** 2 - 1, variable=y, bracket=(0, b)))
 
 # ---- second pass: spans of the review quoted ------------------------------------------------------------------
 d.quote("I-K-definitions", "§206", r"erit $\int y^2 \cdot w = I$ et $\int x^2 \cdot w = K$",
@@ -1009,23 +825,13 @@ d.quote("square-all-axes", "§210",
         reading=(Psq, Ksq, Isq), note=claim("the square has the same moment about every axis through C."))
 
 figure_witness("I-K-rectangle", "∫∫ y^2 and ∫∫ x^2 over a rectangle off the origin", ("I-K-definitions",), GEN_CASES,
-               lambda cs, dps: (polygon_integral(lambda X, Y: Y ** 2, _generic(cs), dps),
-                                polygon_integral(lambda X, Y: X ** 2, _generic(cs), dps)))
+               GENERIC, (Over(y ** 2), Over(x ** 2)))
 figure_witness("polar-rectangle", "∫∫ (x^2 + y^2) over a rectangle off the origin", ("polar-sum",), GEN_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: X ** 2 + Y ** 2, _generic(cs), dps))
-figure_witness("xy-quadrilateral", "∫∫ xy over the quadrilateral AeBf", ("xy-vanishes",), Q_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: X * Y, quadrilateral(cs, dps), dps))
+               GENERIC, Over(x ** 2 + y ** 2))
+figure_witness("xy-quadrilateral", "∫∫ xy over the quadrilateral AeBf", ("xy-vanishes",), Q_CASES, KITE, Over(x * y))
 SQ_ANGLES = rational_cases(("a = 1, m = 3/5", {a: 1, m: "3/5"}), ("a = 3/2, m = 5/13", {a: "3/2", m: "5/13"}))
-
-
-def _square_oblique(cs, dps):
-    mv = P(cs, m, dps)
-    nv = _sqrt(1 - mv ** 2)
-    return polygon_integral(lambda X, Y: (mv * X - nv * Y) ** 2, square(cs, dps), dps)
-
-
 figure_witness("square-oblique", "∫∫ u^2 over the square, u the distance from an oblique axis through C",
-               ("square-all-axes",), SQ_ANGLES, _square_oblique)
+               ("square-all-axes",), SQ_ANGLES, SQUARE, Over((m * x - N_OF_M * y) ** 2))
 d.quote("strip-sum-of-squares", "§202",
         r"omnino congruere cum ea, quae prodit, si singulæ sectionis aquæ particulae multiplicentur per quadrata "
         r"distantiarum ab axe AB",
@@ -1047,18 +853,12 @@ d.quote("quadrant-area-integral", "§219",
 STRIP2_CASES = rational_cases(("PM = 2, PN = 1, Pp = 1/2", {PM: 2, PN: 1, Pp: "1/2"}),
                               ("PM = 5/3, PN = 7/4, Pp = 3/10", {PM: "5/3", PN: "7/4", Pp: "3/10"}))
 figure_witness("strip-both-sides", "∫∫ y^2 over the strip Pp wide from N to M", ("strip-sum-of-squares",),
-               STRIP2_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2, [(0, -cs.params[PN]), (cs.params[Pp], -cs.params[PN]),
-                                                                      (cs.params[Pp], cs.params[PM]),
-                                                                      (0, cs.params[PM])], dps))
+               STRIP2_CASES, STRIP_NM, Over(y ** 2))
 figure_witness("quadrant-xy", "∫∫ xy over the lower half of the quadrilateral AeBf", ("quadrants-cancel",), Q_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: X * Y,
-                                                [(0, 0), (cs.params[a], -cs.params[b]), (cs.params[a] + cs.params[c], 0)],
-                                                dps))
-figure_witness("quad-area-quadrature", "∫∫ 1 over the quadrilateral AeBf", ("quad-area-2D",), Q_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: 1 + 0 * X * Y, quadrilateral(cs, dps), dps))
+               KITE_LOWER, Over(x * y))
+figure_witness("quad-area-quadrature", "∫∫ 1 over the quadrilateral AeBf", ("quad-area-2D",), Q_CASES, KITE, Over(1))
 figure_witness("ellipse-quadrant-quadrature", "a quarter of ∫∫ 1 over the ellipse", ("quadrant-area-integral",),
-               AB_CASES, lambda cs, dps: ellipse_integral(lambda X, Y: 1 + 0 * X * Y, cs.params[a], cs.params[b], dps) / 4)
+               AB_CASES, ELLIPSE, Over(1) / 4)
 d.quote("L-definition", "§217", r"tum ponitur scilicet $L = \int w \cdot w n^2$", reading=(LT, tri((x - xe) ** 2)),
         note=claim("L, the moment about ef, is ∫w·wn², wn the distance of the particle from ef (read on the "
                    "generic rectangle, ef at x = x_e)."))
@@ -1068,17 +868,9 @@ d.quote("EF-moment-definition", "§217", r"ctu axis EF quod quaeritur $= \int w 
 GEN_E_CASES = rational_cases(("[-1, 2] x [0, 3], x_e = 5/2", {X1: -1, Y1: 0, X2: 2, Y2: 3, xe: "5/2"}),
                              ("[-3/2, 5/2] x [1/2, 5/2], x_e = -1", {X1: "-3/2", Y1: "1/2", X2: "5/2", Y2: "5/2", xe: -1}))
 figure_witness("L-rectangle", "∫∫ (x - x_e)^2 over a rectangle off the origin", ("L-definition",), GEN_E_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: (X - P(cs, xe, dps)) ** 2, _generic(cs), dps))
-
-
-def _about_centroid(cs, dps):
-    poly = _generic(cs)
-    xc_ = polygon_integral(lambda X, Y: X + 0 * Y, poly, dps) / polygon_integral(lambda X, Y: 1 + 0 * X * Y, poly, dps)
-    return polygon_integral(lambda X, Y: (X - xc_) ** 2, poly, dps)
-
-
-figure_witness("EF-rectangle", "∫∫ (x - x_C)^2 over a rectangle off the origin, x_C by quadrature",
-               ("EF-moment-definition",), GEN_E_CASES, _about_centroid)
+               GENERIC, Over((x - xe) ** 2))
+figure_witness("EF-rectangle", "∫∫ (x - x_C)^2 over a rectangle off the origin, x_C its centroid",
+               ("EF-moment-definition",), GEN_E_CASES, GENERIC, Over((x - XC) ** 2))
 d.quote("sum-of-cubes", "§201", r"valor huius expressionis $\int (PM^3 + PN^3) Pp$",
         reading=((PM ** 3 + PN ** 3) * Pp, 3 * sp.Integral(Pp * w ** 2, (w, -PN, PM))),
         note=claim("the expression to be integrated is three times the second moment about AB (read for one "
@@ -1092,17 +884,11 @@ d.quote("equal-quadrants", "§211", r"quod momenta cum quadrantum ACE et ACF, tu
         note=claim("the parts above and below AB have the same moment about AB (read on the quadrilateral of "
                    "§215, whose halves are mirror images)."))
 figure_witness("sum-of-cubes-strip", "3 ∫∫ y^2 over the strip Pp wide from N to M", ("sum-of-cubes",), STRIP2_CASES,
-               lambda cs, dps: 3 * polygon_integral(lambda X, Y: Y ** 2,
-                                                    [(0, -cs.params[PN]), (cs.params[Pp], -cs.params[PN]),
-                                                     (cs.params[Pp], cs.params[PM]), (0, cs.params[PM])], dps))
+               STRIP_NM, 3 * Over(y ** 2))
 figure_witness("aggregate-strip", "∫∫ y^2 over the strip Pp wide from N to M", ("aggregate",), STRIP2_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2,
-                                                [(0, -cs.params[PN]), (cs.params[Pp], -cs.params[PN]),
-                                                 (cs.params[Pp], cs.params[PM]), (0, cs.params[PM])], dps))
+               STRIP_NM, Over(y ** 2))
 figure_witness("lower-half-moment", "∫∫ y^2 over the half of the quadrilateral below AB", ("equal-quadrants",), Q_CASES,
-               lambda cs, dps: polygon_integral(lambda X, Y: Y ** 2,
-                                                [(0, 0), (cs.params[a], -cs.params[b]), (cs.params[a] + cs.params[c], 0)],
-                                                dps))
+               KITE_LOWER, Over(y ** 2))
 
 # ================================================================ §§192–200 in words, on a worked body
 # A long box of half-beam e and draught T (per unit length), G at the height b above the upright centre of
@@ -1216,106 +1002,56 @@ d.quote("unlike-parts-larger", "§220",
 
 
 def _box_case(s_, hv, label):
-    return Case({Mw: 2 * s_, V: 2 * s_, h: hv, a: 1, b: sp.Rational(1, 2)}, data={"s": s_}, label=label)
+    return Case({Mw: 2 * s_, V: 2 * s_, h: hv, a: 1, b: sp.Rational(1, 2), sw: s_}, label=label)
 
 
-ONE_WAY = (Case({}, data={"s": sp.Rational(1, 2)}, label="box 1 x 1 x 2, s = 1/2, G 1/3 above B"),)
-d.witness(Computed("stable-one-way-box", "M GZ/phi of the heeled and the pitched box by exact clipping",
-                   ("stable-one-way",), ONE_WAY,
-                   compute=lambda cs, dps: [_stability(Case({Mw: 1, h: sp.Rational(1, 3)}, data=cs.data), dps, ax, 1)
-                                            for ax in ("AB", "EF")]))
-d.witness(Computed("pitch-minus-roll-box", "M GZ/phi pitched minus heeled, the box 1 x 1 x 2 by exact clipping",
+ONE_WAY = (Case({sw: sp.Rational(1, 2)}, label="box 1 x 1 x 2, s = 1/2, G 1/3 above B"),)
+d.witness(Joined("stable-one-way-box", "M GZ/phi of the heeled and the pitched box by exact clipping",
+                 ("stable-one-way",), ONE_WAY,
+                 parts=tuple(stability(up, sp.Rational(1, 3), 1) for up in (HEEL, PITCH)), methods=LIMIT_METHODS))
+d.witness(Combined("pitch-minus-roll-box", "M GZ/phi pitched minus heeled, the box 1 x 1 x 2 by exact clipping",
                    ("pitch-exceeds-roll",),
                    (_box_case(sp.Rational(1, 2), sp.Rational(1, 10), "s = 1/2, b = 1/10"),
                     _box_case(sp.Rational(3, 4), sp.Rational(1, 20), "s = 3/4, b = 1/20")),
-                   compute=lambda cs, dps: _stability(cs, dps, "EF", 1) - _stability(cs, dps, "AB", 1)))
-figure_witness("quad-K-excess-220", "∫∫ (x - x_C)^2 over the quadrilateral minus that of the rhombus with the same "
-               "AB and ef, both by quadrature", ("unlike-parts-larger",), Q_CASES,
-               lambda cs, dps: _quad_K(cs, dps) - polygon_integral(
-                   lambda X, Y: X ** 2,
-                   rhombus(Case({a: (cs.params[a] + cs.params[c]) / 2, b: cs.params[b]}), dps), dps))
+                   parts=(stability(PITCH, h), stability(HEEL, h)), values=(PART[0] - PART[1],), methods=LIMIT_METHODS))
+d.witness(Combined("quad-K-excess-220", "∫∫ (x - x_C)^2 over the quadrilateral minus that of the rhombus with the "
+                   "same AB and ef", ("unlike-parts-larger",), Q_CASES, **KITE_EXCESS))
 
 
 # The box 1 x 1 x 2 of the clipping witnesses (e = 1/2, T = s) heeled about its long axis by exact clipping: the
-# arm GZ(phi), its slope GZ/phi and third-order term extrapolated to phi -> 0 (Richardson, errors O(phi^4)),
-# and the heeled equilibrium by root-finding.  Tolerances: float64 1e-5 and 50 digits 1e-15, what the
-# extrapolation leaves (the arm of a finite angle is exact to the working precision).
-SERIES = (Precision(15, 1e-5), Precision(50, 1e-15))
+# coefficients of phi and phi^3 in its arm GZ(phi) (odd in phi), and the heeled equilibrium as the first root of the
+# arm beyond the upright position, with the arm's slope there (SERIES_METHODS).
+def arm_series(height, k, factor=1, **kw):
+    """The coefficient of phi^k (about ``centre``, default 0) in factor times the arm of the box with G at *height*
+    above B, heeled."""
+    return SeriesWitness("", "", (), (), body=box_with_G(height), up=HEEL, density=sw, quantity=factor * ARM[HEEL],
+                         series=(phi, k), odd="centre" not in kw, **kw)
 
 
-def _arm(s_, hv, phi_, dps):
-    from symfloat.geometry.floating import box, floating_state
-    big = None if dps <= 15 else dps + 30
-    num = (lambda v: mpmath.mpf(sp.N(v, big + 10))) if big else float
-    with mpmath.workdps(big or 15):
-        poly = box(1, 1, 2, dps=big)
-        S = num(s_)
-        B0 = floating_state(poly, (0, 1, 0), S).B
-        G = (B0[0], B0[1] + num(hv), B0[2])
-        ph = float(phi_) if not big else phi_ if isinstance(phi_, mpmath.mpf) else num(phi_)
-        sin, cos = (mpmath.sin, mpmath.cos) if big else (np.sin, np.cos)
-        Bp = floating_state(poly, (sin(ph), cos(ph), 0), S, G=G).B
-        return (Bp[0] - G[0]) * -cos(ph) + (Bp[1] - G[1]) * sin(ph)
-
-
-def _richardson(f, step, dps):
-    """lim f(phi), phi -> 0, for f = f0 + f2 phi^2 + f4 phi^4 + ...: two Richardson levels from step, step/2, step/4."""
-    with mpmath.workdps(dps + 30):
-        f1, f2, f4 = (f(step / k) for k in (1, 2, 4))
-        r1, r2 = (4 * f2 - f1) / 3, (4 * f4 - f2) / 3
-        return (16 * r2 - r1) / 15
-
-
-def _step(dps):
-    return 1e-2 if dps <= 15 else mpmath.mpf(10) ** -5
-
-
-def _slope(cs, dps, hv):
-    return _richardson(lambda p: _arm(cs.data["s"], hv, p, dps) / p, _step(dps), dps)
-
-
-def _cubic(cs, dps, hv):
-    """lim (GZ - phi GM)/phi^3 from g(phi) = GZ/phi = GM + c phi^2 + ...: (g(2 phi) - g(phi))/(3 phi^2), extrapolated."""
-    def g(p):
-        return _arm(cs.data["s"], hv, p, dps) / p
-    return _richardson(lambda p: (g(2 * p) - g(p)) / (3 * p ** 2), _step(dps), dps)
-
-
-def _pv(cs, sym):
-    return cs.params[sym]
-
-
-BOX_E = {eb: sp.Rational(1, 2), Tb: sp.Rational(1, 2)}
-HALF = {"s": sp.Rational(1, 2)}
-d.witness(Computed("moment-times-angle-box", "M GZ/phi of the heeled box by exact clipping, extrapolated to phi -> 0",
-                   ("moment-times-angle",), (Case({**BOX_E, Mw: 1, h: sp.Rational(1, 10)}, data=HALF, label="b = 1/10"),
-                                             Case({**BOX_E, Mw: 1, h: sp.Rational(1, 4)}, data=HALF, label="b = 1/4")),
-                   compute=lambda cs, dps: _pv(cs, Mw) * _slope(cs, dps, _pv(cs, h)), methods=SERIES))
-d.witness(Computed("same-ratio-box", "the ratio of the heeled box's GZ/phi at two heights of G, by clipping",
-                   ("same-ratio",), (Case({**BOX_E, hb1: sp.Rational(1, 40), hb2: sp.Rational(1, 50)}, data=HALF,
+BOX_E = {eb: sp.Rational(1, 2), Tb: sp.Rational(1, 2), sw: sp.Rational(1, 2)}
+d.witness(SeriesWitness("moment-times-angle-box", "M GZ/phi of the heeled box by exact clipping, phi -> 0",
+                        ("moment-times-angle",), (Case({**BOX_E, Mw: 1, h: sp.Rational(1, 10)}, label="b = 1/10"),
+                                                  Case({**BOX_E, Mw: 1, h: sp.Rational(1, 4)}, label="b = 1/4")),
+                        body=box_with_G(h), up=HEEL, density=sw, quantity=Mw * ARM[HEEL], series=(phi, 1), odd=True))
+d.witness(Combined("same-ratio-box", "the ratio of the heeled box's GZ/phi at two heights of G, by clipping",
+                   ("same-ratio",), (Case({**BOX_E, hb1: sp.Rational(1, 40), hb2: sp.Rational(1, 50)},
                                           label="b_1 = 1/40, b_2 = 1/50"),),
-                   compute=lambda cs, dps: _slope(cs, dps, _pv(cs, hb1)) / _slope(cs, dps, _pv(cs, hb2)), methods=SERIES))
-d.witness(Computed("small-angles-box", "M (GZ - phi GM)/phi^3 of the heeled box by clipping, extrapolated",
-                   ("small-angles-only",), (Case({**BOX_E, Mw: 1, h: sp.Rational(1, 10)}, data=HALF, label="b = 1/10"),),
-                   compute=lambda cs, dps: _pv(cs, Mw) * _cubic(cs, dps, _pv(cs, h)), methods=SERIES))
-d.witness(Computed("zero-indifferent-box", "GZ/phi and GZ/phi^3 of the box with b = I/V = 1/6, by clipping",
-                   ("zero-indifferent",), (Case(dict(BOX_E), data=HALF, label="e = T = 1/2, b = 1/6"),),
-                   compute=lambda cs, dps: [_slope(cs, dps, sp.Rational(1, 6)), _cubic(cs, dps, sp.Rational(1, 6))],
-                   methods=SERIES))
-
-
-def _heeled_equilibrium(cs, dps):
-    """M GZ/phi upright, then the heeled root phi* of GZ (secant from 0.3) and GZ, dGZ/dphi there by clipping."""
-    hv = sp.Rational(1, 6) + cs.params[gneg]
-    s_ = cs.data["s"]
-    with mpmath.workdps(max(dps, 15) + 30):
-        root = mpmath.findroot(lambda p: _arm(s_, hv, p, dps), mpmath.mpf("0.3"), verify=False)
-        dlt = 1e-4 if dps <= 15 else mpmath.mpf(10) ** -12
-        slope = (_arm(s_, hv, root + dlt, dps) - _arm(s_, hv, root - dlt, dps)) / (2 * dlt)
-        return [_pv(cs, Mw) * _slope(cs, dps, hv), _arm(s_, hv, root, dps), slope]
-
-
-d.witness(Computed("negative-unstable-box", "the box with G 1/100 above the metacentre: M GZ/phi upright, and its "
-                   "heeled equilibrium found by root-finding on the clipped arm", ("negative-unstable",),
-                   (Case({**BOX_E, Mw: 1, gneg: sp.Rational(1, 100)}, data=HALF, label="g = 1/100"),),
-                   compute=_heeled_equilibrium, methods=SERIES))
+                   parts=(arm_series(hb1, 1), arm_series(hb2, 1)), values=(PART[0] / PART[1],),
+                   methods=SERIES_METHODS))
+d.witness(SeriesWitness("small-angles-box", "M (GZ - phi GM)/phi^3 of the heeled box by clipping, phi -> 0",
+                        ("small-angles-only",), (Case({**BOX_E, Mw: 1, h: sp.Rational(1, 10)}, label="b = 1/10"),),
+                        body=box_with_G(h), up=HEEL, density=sw, quantity=Mw * ARM[HEEL], series=(phi, 3), odd=True))
+d.witness(Joined("zero-indifferent-box", "GZ/phi and GZ/phi^3 of the box with b = I/V = 1/6, by clipping",
+                 ("zero-indifferent",), (Case(dict(BOX_E), label="e = T = 1/2, b = 1/6"),),
+                 parts=(arm_series(sp.Rational(1, 6), 1), arm_series(sp.Rational(1, 6), 3)), methods=SERIES_METHODS))
+phi_eq = sp.Symbol("phi_*", positive=True)         # the heeled equilibrium
+HEELED = Root(ARM[HEEL], phi, tuple(sp.Rational(k, 20) for k in range(1, 15)))     # beyond the upright position
+d.witness(Joined("negative-unstable-box", "the box with G 1/100 above the metacentre: M GZ/phi upright, and its "
+                 "heeled equilibrium, the first root of the clipped arm beyond the upright position, with the arm's "
+                 "slope there", ("negative-unstable",),
+                 (Case({**BOX_E, Mw: 1, gneg: sp.Rational(1, 100)}, label="g = 1/100"),),
+                 parts=(arm_series(sp.Rational(1, 6) + gneg, 1, Mw),
+                        FloatingRootWitness("", "", (), (), body=box_with_G(sp.Rational(1, 6) + gneg), up=HEEL,
+                                            density=sw, quantity=ARM[HEEL], roots=((phi, HEELED),)),
+                        arm_series(sp.Rational(1, 6) + gneg, 1, centre=phi_eq, roots=((phi_eq, HEELED),))),
+                 methods=SERIES_METHODS))

@@ -44,19 +44,18 @@ Checking: the integrals with √(b² − y²) are stated once each, closed by th
 the readings are built on them; Y is checked in the general form Y = p|y| + qy² (even, vanishing at 0)
 and in Euler's case Y = −cy²/b².
 
-Witnesses: every area and moment is computed by two-dimensional quadrature over the figure itself
-(x from the left to the right boundary at height y, then y): adaptive ``mpmath.quad`` (tanh-sinh, which
-copes with the square-root end at y = b) in y at 50 digits, and fixed-order Gauss–Legendre in float64
-after y = b sin θ.  The inner integrand is a polynomial of degree at most two in x, integrated exactly by
-the three-point Gauss rule in both.  The one-dimensional integrals of §§225–227 are witnessed by
-quadrature of their integrands in the same two ways.
+Witnesses: every figure is declared by its chords and its areas and moments measured by the figure
+witnesses (the chord by the three-point Gauss rule, exact for its integrand of degree at most two in x;
+across the chords tanh-sinh at 50 digits and Gauss–Legendre after a smoothing substitution in float64).
+The one-dimensional integrals of §§225–227 are witnessed by quadrature of their integrands in the same
+two ways.
 """
-import mpmath
-import numpy as np
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum, Holds
-from symfloat.engine.witness import Case, Computed
+from symfloat.engine.figure_witness import CENTROID, FIGURE_METHODS, Figure, FigureWitness, Over
+from symfloat.engine.floating_witness import PART, Combined
+from symfloat.engine.witness import Case
 from symfloat.model.claim import as_printed
 
 
@@ -613,91 +612,32 @@ d.quote("sixteenth", "§228", "momentum respectu axis latitudinalis sui parte de
         note=claim("moving ef to Oc = AB/4 increases the moment about EF by a sixteenth of the ellipse's "
                    "(c = 0)."))
 
-# ================================================================ witnesses: quadrature over each figure
-# The figure at height y runs from x_L(y) = a + Y - (a/b)√(b² - y²) to x_R(y) = a + Y + (a/b)√(b² - y²),
-# split at x_c = a + Y(b) into Ace and Bce; the whole figure takes y from -b to b with Y(|y|).  The
-# integrand is a polynomial of degree <= 2 in x: the three-point Gauss rule across the chord is exact.
-# In y: mpmath.quad (tanh-sinh, adaptive) at 50 digits; Gauss-Legendre in theta (y = b sin theta,
-# 48 nodes per half) in float64.  Nothing of the formulas under test is used.
-
-_GL3 = ((sp.Rational(5, 9), -sp.sqrt(sp.Rational(3, 5))), (sp.Rational(8, 9), 0),
-        (sp.Rational(5, 9), sp.sqrt(sp.Rational(3, 5))))
-_NODES, _WEIGHTS = np.polynomial.legendre.leggauss(48)
-_MEMO = {}
-
-
-def _num(v, dps):
-    return mpmath.mpf(sp.N(v, dps + 10)) if dps > 15 else float(v)
-
-
-def _figure(case, dps):
-    """(a, b, Y) of the case as numbers; Y(y) of the generic figure (p, q; 0 when absent) or of Euler's (c)."""
-    A, B = _num(case.params[a], dps), _num(case.params[b], dps)
-    if c in case.params:
-        C = _num(case.params[c], dps)
-        return A, B, lambda t: -C * t * t / (B * B)
-    P, Q = (_num(case.params.get(k, 0), dps) for k in (p, q))
-    return A, B, lambda t: P * abs(t) + Q * t * t
-
-
-def figure_integral(case, region, f, dps, whole=False):
-    """∫∫ f(x, y) over the region ('Ace', 'Bce' or 'AEB') of the half y >= 0, or over the whole figure."""
-    key = (case.label, tuple(sorted((str(k), str(v)) for k, v in case.params.items())), region, f, whole, dps)
-    if key in _MEMO:
-        return _MEMO[key]
-    A, B, Yf = _figure(case, dps)
-    sq = mpmath.sqrt if dps > 15 else np.sqrt
-    gl = [(_num(w, dps), _num(t, dps)) for w, t in _GL3]
-
-    def strip(t):
-        r = A / B * sq(B * B - t * t)
-        xl, xr, xc = A + Yf(t) - r, A + Yf(t) + r, A + Yf(B)
-        lo, hi = {"Ace": (xl, xc), "Bce": (xc, xr), "AEB": (xl, xr)}[region]
-        h, m = (hi - lo) / 2, (hi + lo) / 2
-        return h * sum(w * f(m + h * u, t) for w, u in gl)
-
-    if dps > 15:
-        value = mpmath.quad(strip, [-B, 0, B] if whole else [0, B])
-    else:
-        halves = ((-np.pi / 2, 0), (0, np.pi / 2)) if whole else ((0, np.pi / 2),)
-        value = 0.0
-        for lo, hi in halves:
-            tt = (hi - lo) / 2 * _NODES + (hi + lo) / 2
-            value += float(np.sum((hi - lo) / 2 * _WEIGHTS * B * np.cos(tt) * strip(B * np.sin(tt))))
-    _MEMO[key] = value
-    return value
-
-
-def line_integral(case, g, dps):
-    """∫_0^b g(y) dy: mpmath.quad in y (tanh-sinh) at 50 digits, Gauss-Legendre in theta (y = b sin theta)
-    in float64."""
-    A, B, Yf = _figure(case, dps)
-    if dps > 15:   # twice the digits: the nodes crowd at y = b, where b - y must keep its digits
-        with mpmath.workdps(2 * dps):
-            A, B, Yf = _figure(case, 2 * dps)
-            return +mpmath.quad(lambda t: g(t, A, B, Yf, mpmath.sqrt((B - t) * (B + t))), [0, B])
-    tt = np.pi / 4 * (_NODES + 1)
-    return float(np.sum(np.pi / 4 * _WEIGHTS * B * np.cos(tt) * g(B * np.sin(tt), A, B, Yf, B * np.cos(tt))))
-
-
-def ONE(X, Y):
-    return 1 + 0 * X
-
-
-def YY(X, Y):
-    return Y * Y + 0 * X
-
-
-def XX(X, Y):
-    return X * X
-
-
-def XONE(X, Y):
-    return X + 0 * Y
+# ================================================================ witnesses: the moments of each figure
+# Each figure is declared by its chords, x from the left to the right boundary at the height y (the branches of
+# §221, split at x_c = a + Y(b) into Ace and Bce; the whole figure takes y from -b to b with Y(|y|)), and
+# measured by the figure witness (symfloat.engine.figure_witness): the chord by the three-point Gauss rule, exact
+# for an integrand of degree <= 2 in x, across the chords by quadrature in float64 and at 50 digits.  The
+# one-dimensional integrals of §§225-227 are integrals over the segment 0 <= y <= b.  Nothing of the formulas
+# under test is used.
+XC = CENTROID[0]
+x_ = sp.Symbol("x", real=True)                    # the abscissa AP of the figures
 
 
 def _cases(*rows):
     return tuple(Case({k: sp.Rational(v) for k, v in params.items()}, label=label) for label, params in rows)
+
+
+def curve_figure(Y, region, whole=False):
+    """The region ('Ace', 'Bce' or 'AEB') of the half y >= 0 of the figure with the function Y (of y >= 0), or
+    the whole figure (y from -b to b, Y taken at |y|)."""
+    at = {y: sp.Abs(y)} if whole else {}
+    left, right, ce = ((a + Y - a * R / b).xreplace(at), (a + Y + a * R / b).xreplace(at), a + Y.subs(y, b))
+    ends = {"Ace": (left, ce), "Bce": (ce, right), "AEB": (left, right)}[region]
+    return Figure.strips(x_, y, -b if whole else 0, b, ends, breaks=(0,) if whole else ())
+
+
+def figure_witness(name, description, targets, cases, figure, quantity):
+    d.witness(FigureWitness(name, description, tuple(targets), cases, figure=figure, coords=(x_, y), quantity=quantity))
 
 
 GEN = _cases(("a = 2, b = 1, Y = |y|/4 + y²/8", {a: 2, b: 1, p: "1/4", q: "1/8"}),
@@ -706,74 +646,47 @@ CFIG = _cases(("a = 2, b = 1, c = 1/2", {a: 2, b: 1, c: "1/2"}),
               ("a = 5/2, b = 3/4, c = 1", {a: "5/2", b: "3/4", c: 1}))
 AB_ONLY = _cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
 
-
-def figure_witness(name, description, targets, cases, compute):
-    d.witness(Computed(name, description, tuple(targets), cases, compute=compute))
-
-
 for _region in ("Ace", "Bce", "AEB"):
-    figure_witness(f"area-{_region}", f"∫∫ 1 over {_region} by 2-D quadrature", (f"area-{_region}",), GEN,
-                   lambda cs, dps, r=_region: figure_integral(cs, r, ONE, dps))
-    figure_witness(f"AB-{_region}", f"∫∫ y² over {_region} by 2-D quadrature", (f"AB-{_region}",), GEN,
-                   lambda cs, dps, r=_region: figure_integral(cs, r, YY, dps))
+    figure_witness(f"area-{_region}", f"∫∫ 1 over {_region}", (f"area-{_region}",), GEN,
+                   curve_figure(Yg, _region), Over(1))
+    figure_witness(f"AB-{_region}", f"∫∫ y² over {_region}", (f"AB-{_region}",), GEN,
+                   curve_figure(Yg, _region), Over(y ** 2))
 figure_witness("area-whole", "∫∫ 1 over the whole figure AEBF", ("area-ellipse",), GEN,
-               lambda cs, dps: figure_integral(cs, "AEB", ONE, dps, whole=True))
+               curve_figure(Yg, "AEB", whole=True), Over(1))
 figure_witness("AB-whole", "∫∫ y² over the whole figure AEBF", ("AB-whole",), GEN,
-               lambda cs, dps: figure_integral(cs, "AEB", YY, dps, whole=True))
+               curve_figure(Yg, "AEB", whole=True), Over(y ** 2))
 figure_witness("Aa-Ace", "∫∫ x² over Ace (moment about aAa, x = 0)", ("Aa-Ace-expanded",), GEN,
-               lambda cs, dps: figure_integral(cs, "Ace", XX, dps))
-figure_witness("Aa-Bce", "∫∫ x² over Bce", ("Aa-Bce-expanded",), GEN,
-               lambda cs, dps: figure_integral(cs, "Bce", XX, dps))
-figure_witness("Aa-AEB", "∫∫ x² over AEB", ("Aa-AEB", "Aa-AEB-value"), GEN,
-               lambda cs, dps: figure_integral(cs, "AEB", XX, dps))
+               curve_figure(Yg, "Ace"), Over(x_ ** 2))
+figure_witness("Aa-Bce", "∫∫ x² over Bce", ("Aa-Bce-expanded",), GEN, curve_figure(Yg, "Bce"), Over(x_ ** 2))
+figure_witness("Aa-AEB", "∫∫ x² over AEB", ("Aa-AEB", "Aa-AEB-value"), GEN, curve_figure(Yg, "AEB"), Over(x_ ** 2))
 figure_witness("Aa-whole", "∫∫ x² over the whole figure", ("Aa-whole",), GEN,
-               lambda cs, dps: figure_integral(cs, "AEB", XX, dps, whole=True))
-figure_witness("first-moment", "∫∫ x over AEB (D·AC)", ("DAC-definition", "DAC"), GEN,
-               lambda cs, dps: figure_integral(cs, "AEB", XONE, dps))
-
-
-def _centroid(cs, dps):
-    return figure_integral(cs, "AEB", XONE, dps) / figure_integral(cs, "AEB", ONE, dps)
-
-
-def _moment_EF(cs, dps):
-    xc = _centroid(cs, dps)
-    return figure_integral(cs, "AEB", lambda X, Y: (X - xc) ** 2, dps, whole=True)
-
-
-figure_witness("centroid", "∫∫ x / ∫∫ 1 over AEB", ("AC",), GEN, _centroid)
-figure_witness("moment-EF", "∫∫ (x - x_C)² over the whole figure, x_C by quadrature", ("moment-EF",), GEN,
-               _moment_EF)
-figure_witness("centroid-c", "∫∫ x / ∫∫ 1 over AEB, Y = -cy²/b²", ("AC-c",), CFIG, _centroid)
+               curve_figure(Yg, "AEB", whole=True), Over(x_ ** 2))
+figure_witness("first-moment", "∫∫ x over AEB (D·AC)", ("DAC-definition", "DAC"), GEN, curve_figure(Yg, "AEB"),
+               Over(x_))
+figure_witness("centroid", "x_C of AEB", ("AC",), GEN, curve_figure(Yg, "AEB"), XC)
+figure_witness("moment-EF", "∫∫ (x - x_C)² over the whole figure, x_C its centroid", ("moment-EF",), GEN,
+               curve_figure(Yg, "AEB", whole=True), Over((x_ - XC) ** 2))
+figure_witness("centroid-c", "x_C of AEB, Y = -cy²/b²", ("AC-c",), CFIG, curve_figure(Yc, "AEB"), XC)
 figure_witness("moment-EF-c", "∫∫ (x - x_C)² over the whole figure, Y = -cy²/b²", ("moment-EF-c",), CFIG,
-               _moment_EF)
-
-
-def _at(cs, cval):
-    params = dict(cs.params)
-    params[c] = cval
-    return Case(params, label=f"{cs.label}, c = {cval}")
-
-
+               curve_figure(Yc, "AEB", whole=True), Over((x_ - XC) ** 2))
 figure_witness("moment-EF-half", "∫∫ (x - x_C)² over the figure with c = a/2", ("moment-EF-half",), AB_ONLY,
-               lambda cs, dps: _moment_EF(_at(cs, cs.params[a] / 2), dps))
-figure_witness("sixteenth", "(K(c = a/2) - K(c = 0))/K(c = 0), both moments by quadrature", ("sixteenth",),
-               AB_ONLY, lambda cs, dps: (_moment_EF(_at(cs, cs.params[a] / 2), dps) - _moment_EF(_at(cs, 0), dps))
-               / _moment_EF(_at(cs, 0), dps))
+               curve_figure(Yc.subs(c, a / 2), "AEB", whole=True), Over((x_ - XC) ** 2))
+d.witness(Combined("sixteenth", "(K(c = a/2) - K(c = 0))/K(c = 0), both moments measured", ("sixteenth",), AB_ONLY,
+                   parts=tuple(FigureWitness("", "", (), (), figure=curve_figure(Yc.subs(c, cv), "AEB", whole=True),
+                                             coords=(x_, y), quantity=Over((x_ - XC) ** 2)) for cv in (a / 2, 0)),
+                   values=((PART[0] - PART[1]) / PART[1],), methods=FIGURE_METHODS))
 
 
 def line_witness(name, targets, cases, g, text):
-    figure_witness(name, f"∫_0^b {text} dy by quadrature", targets, cases, lambda cs, dps: line_integral(cs, g, dps))
+    figure_witness(name, f"∫_0^b {text} dy by quadrature", targets, cases, Figure.interval(y, 0, b), Over(g))
 
 
-line_witness("U0", ("reduce-U0", "U0-value"), AB_ONLY, lambda t, A, B, Yf, r: r, "√(b² - y²)")
-line_witness("U2", ("U2-value", "reduce-U2", "U2-value-c"), AB_ONLY, lambda t, A, B, Yf, r: t * t * r,
-             "y²√(b² - y²)")
-line_witness("U4", ("U4-value",), AB_ONLY, lambda t, A, B, Yf, r: t ** 4 * r, "y⁴√(b² - y²)")
-line_witness("V2", ("reduce-V2",), AB_ONLY, lambda t, A, B, Yf, r: t * t / r, "y²/√(b² - y²)")
-line_witness("S2c", ("S2c-expanded", "S2c-value"), CFIG, lambda t, A, B, Yf, r: (A + Yf(t)) ** 2 * r,
-             "(a - cy²/b²)²√(b² - y²)")
-line_witness("S1c", ("S1c-value",), CFIG, lambda t, A, B, Yf, r: (A + Yf(t)) * r, "(a - cy²/b²)√(b² - y²)")
+line_witness("U0", ("reduce-U0", "U0-value"), AB_ONLY, R, "√(b² - y²)")
+line_witness("U2", ("U2-value", "reduce-U2", "U2-value-c"), AB_ONLY, y ** 2 * R, "y²√(b² - y²)")
+line_witness("U4", ("U4-value",), AB_ONLY, y ** 4 * R, "y⁴√(b² - y²)")
+line_witness("V2", ("reduce-V2",), AB_ONLY, y ** 2 / R, "y²/√(b² - y²)")
+line_witness("S2c", ("S2c-expanded", "S2c-value"), CFIG, (a + Yc) ** 2 * R, "(a - cy²/b²)²√(b² - y²)")
+line_witness("S1c", ("S1c-value",), CFIG, (a + Yc) * R, "(a - cy²/b²)√(b² - y²)")
 
 d.quote("even-Y", "§221", r"ut curva haec ad utramque partem axis AB duas habeat partes AEB et AFB similes et "
         r"aequales, necesse est ut Y sit functio par ipsius y",

@@ -55,10 +55,11 @@ K₀ = moment about EF for c = 0):
 | 5/2 | $N = \frac{7n}{(2+7n)(2+9n)(2+11n)(2+13n)}$ | $\frac{7n \cdot 9n \cdot 11n \cdot 13n}{(2+7n)(2+9n)(2+11n)(2+13n)}$ | 7/15 ≈ 0.4666666667 | 429/640 ≈ 0.6703125000 | $2a^2 D \cdot \frac{5n}{(2+7n)(2+9n)} \cdot \frac{7n}{(2+9n)(2+11n)} \cdot \frac{9n}{(2+11n)(2+13n)} \cdot \frac{11n}{(2+13n)(2+15n)} \cdot \frac{13n}{(2+15n)(2+17n)}$ | $2a^2 D \cdot \frac{5n \cdot 7n \cdot 9n \cdot 11n \cdot 13n}{(2+7n)(2+9n)(2+11n)(2+13n)(2+15n)}$ | 14/51 ≈ 0.2745098039 | 429/1024 ≈ 0.4189453125 |
 | 3 | $N = \frac{8n}{(2+8n)(2+10n)(2+12n)(2+14n)(2+16n)}$ | $\frac{8n \cdot 10n \cdot 12n \cdot 14n \cdot 16n}{(2+8n)(2+10n)(2+12n)(2+14n)(2+16n)}$ | 4/9 ≈ 0.4444444444 | 14336/21879 ≈ 0.6552401846 | $2a^2 D \cdot \frac{6n}{(2+8n)(2+10n)} \cdot \frac{8n}{(2+10n)(2+12n)} \cdot \frac{10n}{(2+12n)(2+14n)} \cdot \frac{12n}{(2+14n)(2+16n)} \cdot \frac{14n}{(2+16n)(2+18n)} \cdot \frac{16n}{(2+18n)(2+20n)}$ | $2a^2 D \cdot \frac{6n \cdot 8n \cdot 10n \cdot 12n \cdot 14n \cdot 16n}{(2+8n)(2+10n)(2+12n)(2+14n)(2+16n)(2+18n)}$ | 4/15 ≈ 0.2666666667 | 57344/138567 ≈ 0.4138359061 |
 
-Witnesses: every moment is computed by two-dimensional quadrature over the figure itself (the chord by
-three-point Gauss–Legendre, exact for its quadratic integrand; across the chords mpmath's tanh-sinh at
-50 digits, and fixed-order Gauss–Legendre in float64 after the substitution y = b(1 − (1 − w)⁴), which
-smooths the endpoint singularity of (1 − yⁿ/bⁿ)^κ for integer n and κ a multiple of 1/4), the tables over
+Witnesses: every figure is declared by its chords (the rectangle and the rhombus of §237 by their vertices)
+and its moments measured by the figure witnesses (the chord by three-point Gauss–Legendre, exact for its
+quadratic integrand; across the chords tanh-sinh at 50 digits, and Gauss–Legendre in float64 after a
+substitution of order 4, which smooths the endpoint singularity of (1 − yⁿ/bⁿ)^κ for κ a multiple of 1/4;
+the polygons by exact polygon integrals), the tables over
 the grid n ∈ {1, 2, 3} × κ ∈ {1/2, 1, 3/2, 2, 5/2, 3}; N by the same rules on its two one-dimensional
 integrals; the volumes of §243 by exact convex hulls; the stabilities of §239–243 by heeling a V-shaped
 prism and pitching an upright prism over the quadrilateral of §215 (whose μ = 12 and ν = 81/7 differ) —
@@ -67,11 +68,14 @@ exact clipping, M·GZ/φ extrapolated to φ → 0.
 from fractions import Fraction
 
 import mpmath
-import numpy as np
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.witness import Case, Computed, HullWitness
+from symfloat.engine.figure_witness import CENTROID, FIGURE_METHODS, Figure, FigureWitness, Over
+from symfloat.engine.floating_witness import (LIMIT_METHODS, PART, Body, Combined, FloatingWitness, Joined, Loaded,
+                                              potential_slope)
+from symfloat.engine.witness import Case, HullWitness
+from symfloat.geometry.floating import polygon_moments
 from symfloat.model.claim import as_printed
 
 
@@ -908,219 +912,102 @@ for name, locator, excerpt in (
             note=claim("the stability about AB is M times the excess of EF²D/(μV) over OG."))
 
 
-# ================================================================ witnesses: quadrature over the figures
-GL_X, GL_W = np.polynomial.legendre.leggauss(64)
-GL_U, GL_UW = (GL_X + 1) / 2, GL_W / 2
-CHORD3 = ((-np.sqrt(0.6), 5 / 9), (0.0, 8 / 9), (np.sqrt(0.6), 5 / 9))
+# ================================================================ witnesses: the moments of the figures
+# Each figure is declared by its chords and measured by the figure witness (symfloat.engine.figure_witness): the
+# half AEB of the family by its chords a + Y ± a(1 − yⁿ/bⁿ)^κ at the height y (three-point Gauss across, exact
+# for the quadratic integrand; along y tanh-sinh at 50 digits and, in float64, Gauss–Legendre after the
+# substitution of order 4, which makes (1 − yⁿ/bⁿ)^κ smooth at y = b for κ a multiple of 1/4); the whole
+# figure is twice the half (AFB mirrors AEB); the rectangle and the rhombus of §237 by exact polygon integrals,
+# the parabola by its chords across AB; N by quadrature of its two integrals.  Nothing of the formulas under test
+# is used.
+XP = sp.Symbol("x_P", real=True)                   # the abscissa AP of the figures
+XC = CENTROID[0]
 
 
-def _num(v, dps):
-    return mpmath.mpf(sp.N(v, dps + 10)) if dps > 15 else float(v)
+def family(Y, N_=n, K_=k):
+    """The half AEB of the figure of §229 with the function Y (of y) and the exponents n, κ."""
+    R_ = (1 - (y / b) ** N_) ** K_
+    return Figure.strips(XP, y, 0, b, (a + Y - a * R_, a + Y + a * R_), smooth=4)
 
 
-def _chord_rule(dps):
-    if dps <= 15:
-        return CHORD3
-    r = mpmath.sqrt(mpmath.mpf(3) / 5)
-    return ((-r, mpmath.mpf(5) / 9), (mpmath.mpf(0), mpmath.mpf(8) / 9), (r, mpmath.mpf(5) / 9))
+def _w(name, description, targets, cases, figure, quantity):
+    d.witness(FigureWitness(name, description, tuple(targets), cases, figure=figure, coords=(XP, y), quantity=quantity))
 
 
-def family_moments(A, B, nv, kv, Yfun, dps):
-    """Over the half AEB (0 ≤ y ≤ B, x_A(y) ≤ x ≤ x_B(y)): the area, ∫∫(x − A), ∫∫(x − A)², ∫∫y².
-    The chord by 3-point Gauss-Legendre (exact: the integrand is at most quadratic in x); across the chords
-    mpmath.quad (tanh-sinh, 50 digits) or, in float64, 64-point Gauss-Legendre in w with
-    y = B(1 − (1 − w)^4), which makes (1 − yⁿ/Bⁿ)^κ smooth at y = B."""
-    rule = _chord_rule(dps)
-
-    def chord(yv):
-        u = yv / B
-        Rv = (1 - u ** nv) ** kv
-        Yv = Yfun(yv)
-        lo, hi = Yv - A * Rv, Yv + A * Rv                  # x − A at the two ends
-        half, mid = (hi - lo) / 2, (hi + lo) / 2
-        out = [0, 0, 0, 0]
-        for t, wgt in rule:
-            xv = mid + half * t
-            out[0] += wgt * half
-            out[1] += wgt * half * xv
-            out[2] += wgt * half * xv * xv
-        out[3] = out[0] * yv * yv
-        return out
-
-    if dps > 15:
-        return [mpmath.quad(lambda yv, i=i: chord(yv)[i], [0, B]) for i in range(4)]
-    w = GL_U
-    yv = B * (1 - (1 - w) ** 4)
-    jac = B * 4 * (1 - w) ** 3
-    parts = chord(yv)
-    return [float(np.sum(GL_UW * jac * part)) for part in parts]
+def part(figure, quantity):
+    return FigureWitness("", "", (), (), figure=figure, coords=(XP, y), quantity=quantity)
 
 
-def _params(case, dps, *syms):
-    return [_num(case.params[v], dps) for v in syms]
-
-
-def _Yfun(C1, C2, B, nv):
-    return lambda yv: C1 * (yv / B) ** nv + C2 * (yv / B) ** (2 * nv)
-
-
-def _generic(case, dps):
-    A, B, nv, kv, C1, C2 = _params(case, dps, a, b, n, k, c1, c2)
-    return A, B, family_moments(A, B, nv, kv, _Yfun(C1, C2, B, nv), dps)
-
-
+Y_GENERIC = c1 * (y / b) ** n + c2 * (y / b) ** (2 * n)
+Y_C = -c * (y / b) ** n
+K_WHOLE = 2 * Over((XP - XC) ** 2)                  # the moment of the whole figure about EF through C
 GENERIC = (Case({a: 1, b: 1, n: 2, k: sp.Rational(1, 2), c1: sp.Rational(-1, 4), c2: sp.Rational(1, 8),
                  al: sp.Rational(3, 2), xk: 2}, label="n = 2, κ = 1/2, Y = −y²/4 + y⁴/8, a = b = 1"),
            Case({a: sp.Rational(3, 2), b: sp.Rational(1, 2), n: 3, k: sp.Rational(3, 2), c1: sp.Rational(1, 3),
                  c2: sp.Rational(-1, 5), al: 2, xk: sp.Rational(1, 2)},
                 label="n = 3, κ = 3/2, Y = y³/3·8 − y⁶·64/5, a = 3/2, b = 1/2"))
-
-
-def _w(name, description, targets, cases, compute):
-    d.witness(Computed(name, description, tuple(targets), cases, compute=compute))
-
-
-def _area(cs, dps):
-    return _generic(cs, dps)[2][0]
-
-
-def _K(area, sx, sxx):
-    return 2 * (sxx - sx * sx / area)
-
-
-_w("family-area", "the half area ∫∫1 over AEB by 2-D quadrature", ("area",), GENERIC, _area)
-_w("family-area-integral", "∫∫1 over AEB divided by 2a", ("area-integral",), GENERIC,
-   lambda cs, dps: _area(cs, dps) / (2 * _num(cs.params[a], dps)))
-_w("family-moment-AB", "∫∫y² over AEB", ("moment-AB",), GENERIC, lambda cs, dps: _generic(cs, dps)[2][3])
-_w("family-moment-O", "∫∫(x − a)² over AEB", ("moment-O",), GENERIC, lambda cs, dps: _generic(cs, dps)[2][2])
+_w("family-area", "the half area ∫∫1 over AEB", ("area",), GENERIC, family(Y_GENERIC), Over(1))
+_w("family-area-integral", "∫∫1 over AEB divided by 2a", ("area-integral",), GENERIC, family(Y_GENERIC),
+   Over(1) / (2 * a))
+_w("family-moment-AB", "∫∫y² over AEB", ("moment-AB",), GENERIC, family(Y_GENERIC), Over(y ** 2))
+_w("family-moment-O", "∫∫(x − a)² over AEB", ("moment-O",), GENERIC, family(Y_GENERIC), Over((XP - a) ** 2))
 _w("family-moment-O-whole", "∫∫(x − a)² over the whole figure (both halves)", ("moment-O-whole",), GENERIC,
-   lambda cs, dps: 2 * _generic(cs, dps)[2][2])
-_w("family-centroid-moment", "D·CO = −∫∫(x − a) over AEB", ("centroid-moment",), GENERIC,
-   lambda cs, dps: -_generic(cs, dps)[2][1])
-_w("family-CO", "CO = −∫∫(x − a)/∫∫1", ("CO",), GENERIC,
-   lambda cs, dps: -_generic(cs, dps)[2][1] / _generic(cs, dps)[2][0])
-_w("family-moment-EF", "∫∫(x − x_C)² over the whole figure, x_C by quadrature", ("moment-EF",), GENERIC,
-   lambda cs, dps: _K(*_generic(cs, dps)[2][:3]))
-
-
-def _cfig(cs, dps, cv=None):
-    A, B, nv, kv, C = _params(cs, dps, a, b, n, k, c)
-    C = C if cv is None else cv
-    return family_moments(A, B, nv, kv, _Yfun(-C, 0, B, nv), dps)
-
+   family(Y_GENERIC), 2 * Over((XP - a) ** 2))
+_w("family-centroid-moment", "D·CO = −∫∫(x − a) over AEB", ("centroid-moment",), GENERIC, family(Y_GENERIC),
+   -Over(XP - a))
+_w("family-CO", "CO = a − x_C, x_C the centroid of AEB", ("CO",), GENERIC, family(Y_GENERIC), a - XC)
+_w("family-moment-EF", "∫∫(x − x_C)² over the whole figure, x_C its centroid", ("moment-EF",), GENERIC,
+   family(Y_GENERIC), K_WHOLE)
 
 CFAM = (Case({a: 1, b: 1, n: 2, k: sp.Rational(1, 2), c: sp.Rational(1, 4), al: sp.Rational(3, 2)},
              label="n = 2, κ = 1/2, c = 1/4, a = b = 1"),
         Case({a: sp.Rational(3, 2), b: sp.Rational(1, 2), n: 3, k: sp.Rational(3, 2), c: sp.Rational(1, 3), al: 2},
              label="n = 3, κ = 3/2, c = 1/3, a = 3/2, b = 1/2"))
-_w("c-first", "∫Y R dy = −D·CO/(2a) from ∫∫(x − a) over AEB (Y = −cyⁿ/bⁿ)", ("Y-c-first",), CFAM,
-   lambda cs, dps: _cfig(cs, dps)[1] / (2 * _num(cs.params[a], dps)))
-_w("c-second", "∫Y²R dy = (∫∫(x − a)² at c minus at c = 0)/(2a) over AEB", ("Y-c-second",), CFAM,
-   lambda cs, dps: (_cfig(cs, dps)[2] - _cfig(cs, dps, 0)[2]) / (2 * _num(cs.params[a], dps)))
+_w("c-first", "∫Y R dy = −D·CO/(2a) from ∫∫(x − a) over AEB (Y = −cyⁿ/bⁿ)", ("Y-c-first",), CFAM, family(Y_C),
+   Over(XP - a) / (2 * a))
+d.witness(Combined("c-second", "∫Y²R dy = (∫∫(x − a)² at c minus at c = 0)/(2a) over AEB", ("Y-c-second",), CFAM,
+                   parts=(part(family(Y_C), Over((XP - a) ** 2)), part(family(0), Over((XP - a) ** 2))),
+                   values=((PART[0] - PART[1]) / (2 * a),), methods=FIGURE_METHODS))
 _w("c-moment-EF", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
-   ("moment-EF-c", "moment-EF-c-p118", "moment-EF-N"), CFAM, lambda cs, dps: _K(*_cfig(cs, dps)[:3]))
+   ("moment-EF-c", "moment-EF-c-p118", "moment-EF-N"), CFAM, family(Y_C), K_WHOLE)
+d.witness(Combined("c-excess", "K at c minus K at c = 0, both measured", ("unequal-halves",), CFAM,
+                   parts=(part(family(Y_C), K_WHOLE), part(family(0), K_WHOLE)), values=(PART[0] - PART[1],),
+                   methods=FIGURE_METHODS))
 
-
-_w("c-excess", "K at c minus K at c = 0, both by quadrature", ("unequal-halves",), CFAM,
-   lambda cs, dps: _K(*_cfig(cs, dps)[:3]) - _K(*_cfig(cs, dps, 0)[:3]))
-
-
-def _K0(nv, kv, A, B, dps):
-    return _K(*family_moments(A, B, nv, kv, lambda yv: 0 * yv, dps)[:3])
-
-
-def _N_quad(nv, kv, dps):
-    """N = ∫₀¹(1 − uⁿ)^{3κ−1}du / ∫₀¹(1 − uⁿ)^κ du (1-D, same rules as across the chords)."""
-    if dps > 15:
-        return (mpmath.quad(lambda u: (1 - u ** nv) ** (3 * kv - 1), [0, 1])
-                / mpmath.quad(lambda u: (1 - u ** nv) ** kv, [0, 1]))
-    u = 1 - (1 - GL_U) ** 4
-    jac = 4 * (1 - GL_U) ** 3
-    return (float(np.sum(GL_UW * jac * (1 - u ** nv) ** (3 * kv - 1)))
-            / float(np.sum(GL_UW * jac * (1 - u ** nv) ** kv)))
-
-
+u = sp.Symbol("u", positive=True)
 for kv in KAPPAS:
     grid = tuple(Case({n: nv, a: 1, b: sp.Rational(3, 4)}, label="κ = %s, n = %s, a = 1, b = 3/4" % (kv, nv))
                  for nv in (1, 2, 3))
-    _w("K-table-%s" % _label(kv), "∫∫(x − x_C)² over the figure κ = %s, c = 0 by 2-D quadrature" % kv,
-       ("K-table-%s" % _label(kv),), grid,
-       lambda cs, dps, kv=kv: _K0(_num(cs.params[n], dps), _num(kv, dps), *_params(cs, dps, a, b), dps))
-    _w("N-table-%s" % _label(kv), "N for κ = %s by quadrature of its two integrals" % kv,
-       ("N-table-%s" % _label(kv),), grid,
-       lambda cs, dps, kv=kv: _N_quad(_num(cs.params[n], dps), _num(kv, dps), dps))
+    _w("K-table-%s" % _label(kv), "∫∫(x − x_C)² over the figure κ = %s, c = 0" % kv, ("K-table-%s" % _label(kv),),
+       grid, family(0, K_=kv), K_WHOLE)
+    _w("N-table-%s" % _label(kv), "N for κ = %s by quadrature of its two integrals" % kv, ("N-table-%s" % _label(kv),),
+       grid, Figure.interval(u, 0, 1, smooth=4), Over((1 - u ** n) ** (3 * kv - 1)) / Over((1 - u ** n) ** kv))
 
 AB1 = (Case({a: 1, b: sp.Rational(3, 4)}, label="a = 1, b = 3/4"), Case({a: 2, b: 1}, label="a = 2, b = 1"))
 for name, kv, nv, *_ in CASES236:
-    _w("case-" + name, "∫∫(x − x_C)² over the figure κ = %s, n = %s by 2-D quadrature" % (kv, nv),
-       ("case-" + name,), AB1,
-       lambda cs, dps, kv=kv, nv=nv: _K0(_num(nv, dps), _num(kv, dps), *_params(cs, dps, a, b), dps))
+    _w("case-" + name, "∫∫(x − x_C)² over the figure κ = %s, n = %s" % (kv, nv), ("case-" + name,), AB1,
+       family(0, nv, kv), K_WHOLE)
 
-
-def halfwidth_mu(h, A, B, dps, breaks=()):
-    """μ about AB and EF for the figure |y| ≤ h(x), −A ≤ x ≤ A: EF²D/I and AB²D/K, D, I, K by 2-D quadrature
-    (the chord across AB by the 3-point rule, along AB mpmath.quad or 64-point Gauss-Legendre per piece)."""
-    rule = _chord_rule(dps)
-
-    def chord(xv):
-        hv = h(xv)
-        area = sum(wgt * hv for _, wgt in rule)
-        yy = sum(wgt * hv * (hv * t) ** 2 for t, wgt in rule)
-        return [area, 2 * yy, 2 * area * xv * xv]       # D-strip (upper half), I-strip, K-strip
-
-    pts = [-A, *breaks, A]
-    if dps > 15:
-        D_, I_, K_ = (mpmath.quad(lambda xv, i=i: chord(xv)[i], pts) for i in range(3))
-    else:
-        D_ = I_ = K_ = 0.0
-        for x0, x1 in zip(pts, pts[1:]):
-            xv = x0 + (x1 - x0) * GL_U
-            parts = chord(xv)
-            D_, I_, K_ = (acc + (x1 - x0) * float(np.sum(GL_UW * part)) for acc, part in zip((D_, I_, K_), parts))
-    return [(2 * B) ** 2 * D_ / I_, (2 * A) ** 2 * D_ / K_]
-
-
+# μ about AB and about EF, EF²D/I and AB²D/K (2D the area, EF = 2b, AB = 2a), for figures symmetric about both axes
+MU_OF_FIGURE = ((2 * b) ** 2 * Over(1) / 2 / Over(y ** 2), (2 * a) ** 2 * Over(1) / 2 / Over(XP ** 2))
+MU_OF_HALF = ((2 * b) ** 2 * Over(1) / (2 * Over(y ** 2)), (2 * a) ** 2 * Over(1) / K_WHOLE)   # from the half AEB
 MU = (Case({a: 2, b: 1}, label="a = 2, b = 1"), Case({a: 3, b: sp.Rational(1, 2)}, label="a = 3, b = 1/2"))
-
-
-def _mu(shape):
-    def compute(cs, dps):
-        A, B = _params(cs, dps, a, b)
-        absf = mpmath.fabs if dps > 15 else np.abs
-        h = {"rect": lambda xv: B + 0 * xv, "rhombus": lambda xv: B * (1 - absf(xv) / A),
-             "parabola": lambda xv: B * (1 - xv * xv / (A * A))}[shape]
-        return halfwidth_mu(h, A, B, dps, breaks=(0,) if shape == "rhombus" else ())
-    return compute
-
-
-_w("mu-rectangle", "μ of the rectangle by 2-D quadrature", ("mu-rectangle",), MU, _mu("rect"))
-_w("mu-rhombus", "μ of the rhombus by 2-D quadrature", ("mu-rhombus",), MU, _mu("rhombus"))
-_w("mu-parabola-AB", "μ about AB of the parabola y = b(1 − x²/a²)", ("mu-parabola-AB",), MU,
-   lambda cs, dps: _mu("parabola")(cs, dps)[0])
-_w("mu-parabola-EF", "μ about EF of the parabola y = b(1 − x²/a²)", ("mu-parabola-EF",), MU,
-   lambda cs, dps: _mu("parabola")(cs, dps)[1])
-
-
-def _mu_ellipse(cs, dps):
-    A, B = _params(cs, dps, a, b)
-    area, sx, sxx, syy = family_moments(A, B, _num(2, dps), _num(sp.Rational(1, 2), dps), lambda yv: 0 * yv, dps)
-    return [(2 * B) ** 2 * area / (2 * syy), (2 * A) ** 2 * area / _K(area, sx, sxx)]
-
-
-_w("mu-ellipse", "μ of the ellipse (the member n = 2, κ = 1/2) by 2-D quadrature", ("mu-ellipse",), MU, _mu_ellipse)
-
-
-def _mu_family(cs, dps):
-    A, B, nv, kv = _params(cs, dps, a, b, n1, k1)
-    area, sx, sxx, syy = family_moments(A, B, nv, kv, lambda yv: 0 * yv, dps)
-    return [(2 * B) ** 2 * area / (2 * syy), (2 * A) ** 2 * area / _K(area, sx, sxx)]
-
-
+PARABOLA = Figure.strips(y, XP, -a, a, (-b * (1 - XP ** 2 / a ** 2), b * (1 - XP ** 2 / a ** 2)))
+_w("mu-rectangle", "μ of the rectangle from its moments", ("mu-rectangle",), MU,
+   Figure.polygon([(-a, -b), (a, -b), (a, b), (-a, b)]), MU_OF_FIGURE)
+_w("mu-rhombus", "μ of the rhombus from its moments", ("mu-rhombus",), MU,
+   Figure.polygon([(-a, 0), (0, -b), (a, 0), (0, b)]), MU_OF_FIGURE)
+_w("mu-parabola-AB", "μ about AB of the parabola y = b(1 − x²/a²)", ("mu-parabola-AB",), MU, PARABOLA,
+   MU_OF_FIGURE[0])
+_w("mu-parabola-EF", "μ about EF of the parabola y = b(1 − x²/a²)", ("mu-parabola-EF",), MU, PARABOLA,
+   MU_OF_FIGURE[1])
+_w("mu-ellipse", "μ of the ellipse (the member n = 2, κ = 1/2) from its moments", ("mu-ellipse",), MU,
+   family(0, 2, sp.Rational(1, 2)), MU_OF_HALF)
 MU_ADM = tuple(Case({a: 1, b: 1, n1: nv, k1: kv}, label="n = %s, κ = %s" % (nv, kv))
                for nv, kv in ((1, sp.Rational(1, 4)), (1, 1), (2, sp.Rational(1, 4)), (3, sp.Rational(1, 2)),
                               (4, sp.Rational(3, 4))))
-_w("mu-bounds", "μ about AB and EF of admissible members of the family by 2-D quadrature", ("mu-bounds",), MU_ADM,
-   _mu_family)
+_w("mu-bounds", "μ about AB and EF of admissible members of the family from their moments", ("mu-bounds",), MU_ADM,
+   family(0, n1, k1), MU_OF_HALF)
 
 
 # ---------------------------------------------------------------- §243: the three solids, exact hulls
@@ -1149,40 +1036,24 @@ for kind, target in (("pyramid", "V-pyramid"), ("prism", "V-prism"), ("wedge", "
 # The right prism over the triangle (0, 0), (W, T), (−W, T), apex down, length L along z, floats at the
 # density ratio s; its submerged part is the similar triangle of depth CD = T√s: the waterplane is the
 # rectangle EF × L (μ = 6), V = D·CD exactly.  G is put at the height OG above (or below) the upright centre
-# of buoyancy O.  The stability per unit angle is M·GZ(φ)/φ for φ → 0, GZ from the centre of buoyancy of the
-# exactly clipped heeled prism (Richardson from φ and φ/2; float64 at φ = 1e-3, 50 digits at φ = 1e-11 with
-# the clipping at 80 digits).  Nothing of M(EF²D/(μV) ∓ OG) is used.  ν = 8 is given to the cases only so that
-# §241's print with ν in place of μ becomes a number (the prism's latitudinal μ is not needed).
-
-def _heeled_stability(cs, dps, sign, body, up_axis):
-    """M·GZ/φ for φ → 0 of the homogeneous prism ``body(dps)`` floating at the density ratio cs.data["s"] with
-    ``up_axis`` (1: y, 2: z) up, heeled in the plane of x and the up axis; G at ±OG above the upright O."""
-    from symfloat.geometry.floating import floating_state
-    big = None if dps <= 15 else dps + 30
-    with mpmath.workdps(big or 15):
-        def num(v):
-            return mpmath.mpf(sp.N(v, big + 10)) if big else float(v)
-        S = num(cs.data["s"])
-        poly = body(big)
-        sin, cos = (mpmath.sin, mpmath.cos) if big else (np.sin, np.cos)
-        upright = tuple(1 if i == up_axis else 0 for i in range(3))
-        B0 = floating_state(poly, upright, S).B
-        G = tuple(B0[i] + (sign * num(cs.params[OG]) if i == up_axis else 0) for i in range(3))
-
-        def arm(phi):
-            up = tuple(sin(phi) if i == 0 else (cos(phi) if i == up_axis else 0) for i in range(3))
-            e = tuple(-cos(phi) if i == 0 else (sin(phi) if i == up_axis else 0) for i in range(3))
-            Bp = floating_state(poly, up, S, G=G).B
-            return sum((Bp[i] - G[i]) * e[i] for i in range(3)) / phi
-
-        phi = num(sp.Rational(1, 10 ** 3)) if not big else num(sp.Rational(1, 10 ** 11))
-        return num(cs.params[M]) * (4 * arm(phi / 2) - arm(phi)) / 3
+# of buoyancy O, two thirds of CD above the apex.  The stability per unit angle is M·GZ(φ)/φ for φ → 0, GZ the
+# righting arm of the exactly clipped heeled prism, extrapolated (LIMIT_METHODS).  Nothing of M(EF²D/(μV) ∓ OG)
+# is used.  ν = 8 is given to the cases only so that §241's print with ν in place of μ becomes a number (the
+# prism's latitudinal μ is not needed).
+phi = sp.Symbol("phi", positive=True)              # the heel of the witnesses' prisms
+Wv, Tv, Lv, sv = sp.symbols("W_v T_v L_v s_v", positive=True)   # the V prism's half-width, height, length, density
+HEEL = (sp.sin(phi), sp.cos(phi), 0)               # y up, heeled in the plane of x and y
+TILT = (sp.sin(phi), 0, sp.cos(phi))               # z up, heeled in the plane of x and z
 
 
-def _v_prism_stability(cs, dps, sign):
-    from symfloat.geometry.floating import right_prism
-    W, T, L = (cs.data[key] for key in ("W", "T", "L"))
-    return _heeled_stability(cs, dps, sign, lambda big: right_prism([(0, 0), (W, T), (-W, T)], L, dps=big), 1)
+def heeled_stability(body, up, sign):
+    """M·lim GZ/φ of *body* (G ``sign``·OG above O) heeled from the position ``up`` at φ = 0, by clipping."""
+    return FloatingWitness("", "", (), (), body=body(sign * OG), up=up, density=sv, quantity=M * potential_slope(up, phi),
+                           limit=(phi, 1), methods=LIMIT_METHODS)
+
+
+def v_prism(og):
+    return Loaded.of(Body.prism([(0, 0), (Wv, Tv), (-Wv, Tv)], Lv), (0, 2 * CD / 3 + og, 0))
 
 
 def _v_case(W, T, L, s, og):
@@ -1190,59 +1061,51 @@ def _v_case(W, T, L, s, og):
     depth = T * sp.sqrt(s)
     half = W * depth / T
     Dv, Vv = half * L, half * L * depth
-    return Case({M: Vv, V: Vv, EF: 2 * half, Dw: Dv, CD: depth, mu: 6, nu: 8, OG: sp.Rational(og)},
-                data={"W": W, "T": T, "L": L, "s": s},
-                label="V-prism W = %s, T = %s, L = %s, s = %s, OG = %s" % (W, T, L, s, og))
+    return Case({M: Vv, V: Vv, EF: 2 * half, Dw: Dv, CD: depth, mu: 6, nu: 8, OG: sp.Rational(og),
+                 Wv: W, Tv: T, Lv: L, sv: s}, label="V-prism W = %s, T = %s, L = %s, s = %s, OG = %s" % (W, T, L, s, og))
 
 
 V_CASES = (_v_case(1, 2, 3, "1/4", "1/10"), _v_case(1, 2, 2, "9/16", "1/20"))
-_w("stability-V-prism", "M·GZ/φ of the heeled V-prism by exact clipping, G above O",
-   ("stability-AB", "stability-CD", "stability-AB-241"), V_CASES, lambda cs, dps: _v_prism_stability(cs, dps, 1))
-_w("stability-V-prism-G-below", "M·GZ/φ of the heeled V-prism by exact clipping, G below O",
-   ("stability-G-below",), V_CASES, lambda cs, dps: _v_prism_stability(cs, dps, -1))
+d.witness(Joined("stability-V-prism", "M·GZ/φ of the heeled V-prism by exact clipping, G above O",
+                 ("stability-AB", "stability-CD", "stability-AB-241"), V_CASES,
+                 parts=(heeled_stability(v_prism, HEEL, 1),), methods=LIMIT_METHODS))
+d.witness(Joined("stability-V-prism-G-below", "M·GZ/φ of the heeled V-prism by exact clipping, G below O",
+                 ("stability-G-below",), V_CASES, parts=(heeled_stability(v_prism, HEEL, -1),), methods=LIMIT_METHODS))
 
 
 # §239 about EF: an upright right prism over the quadrilateral of §215 (A = (0, 0), e = (1, 1), B = (3, 0),
 # f = (1, −1); axis vertical, height 2) at s = 1/2: the waterplane has μ = 12 about AB and
-# ν = AB²D/K = 9(a + c)²/(a² + ac + c²) = 81/7 about EF (§216, §218), so μ and ν differ; pitched about EF.
-def _kite_prism(big):
-    from symfloat.geometry.floating import right_prism
-    return right_prism([(0, 0), (1, -1), (3, 0), (1, 1)], 2, dps=big)
+# ν = AB²D/K = 9(a + c)²/(a² + ac + c²) = 81/7 about EF (§216, §218), so μ and ν differ; pitched about EF.  G lies
+# above the kite's centroid (its polygon moments), OG above O, which is half the immersed height 1 below the water.
+KITE = [(0, 0), (1, -1), (3, 0), (1, 1)]
+KITE_CX = sp.Rational(polygon_moments(KITE)[1][0])
 
 
-KITE = (Case({M: 3, V: 3, AB: 3, Dw: sp.Rational(3, 2), mu: 12, nu: sp.Rational(81, 7), OG: sp.Rational(1, 10)},
-             data={"s": sp.Rational(1, 2)}, label="kite prism, s = 1/2, OG = 1/10"),
-        Case({M: 3, V: 3, AB: 3, Dw: sp.Rational(3, 2), mu: 12, nu: sp.Rational(81, 7), OG: sp.Rational(1, 4)},
-             data={"s": sp.Rational(1, 2)}, label="kite prism, s = 1/2, OG = 1/4"))
-_w("stability-kite-prism-EF", "M·GZ/φ of the upright kite prism pitched about EF, by exact clipping, G above O",
-   ("stability-EF",), KITE, lambda cs, dps: _heeled_stability(cs, dps, 1, _kite_prism, 2))
+def kite_prism(og):
+    return Loaded.of(Body.prism(KITE, 2), (KITE_CX, 0, og - sp.Rational(1, 2)))
+
+
+KITE_CASES = tuple(Case({M: 3, V: 3, AB: 3, Dw: sp.Rational(3, 2), mu: 12, nu: sp.Rational(81, 7), OG: og,
+                         sv: sp.Rational(1, 2)}, label=f"kite prism, s = 1/2, OG = {og}")
+                   for og in (sp.Rational(1, 10), sp.Rational(1, 4)))
+d.witness(Joined("stability-kite-prism-EF", "M·GZ/φ of the upright kite prism pitched about EF, by exact clipping, "
+                 "G above O", ("stability-EF",), KITE_CASES, parts=(heeled_stability(kite_prism, TILT, 1),),
+                 methods=LIMIT_METHODS))
 
 # second pass: the moment named 'about the longitudinal axis EF' of §230 is the one about the latitudinal EF
-_w("family-axis-EF-named", "∫∫(x − x_C)² over the whole figure, x_C by quadrature", ("axis-EF-named",), GENERIC,
-   lambda cs, dps: _K(*_generic(cs, dps)[2][:3]))
-
-
-def _by_parts(cs, dps):
-    """∫₀ᵇ yⁿ(1 − yⁿ/bⁿ)^{3κ−1} dy / bⁿ by quadrature (tanh-sinh at 50 digits; in float64 Gauss-Legendre after
-    y = b(1 − (1 − w)⁴), as across the chords)."""
-    B, nv, kv = _params(cs, dps, b, n, k)
-    if dps > 15:
-        return mpmath.quad(lambda yv: yv ** nv * (1 - (yv / B) ** nv) ** (3 * kv - 1), [0, B]) / B ** nv
-    yv = B * (1 - (1 - GL_U) ** 4)
-    jac = 4 * B * (1 - GL_U) ** 3
-    return float(np.sum(GL_UW * jac * yv ** nv * (1 - (yv / B) ** nv) ** (3 * kv - 1))) / B ** nv
-
-
+_w("family-axis-EF-named", "∫∫(x − x_C)² over the whole figure, x_C its centroid", ("axis-EF-named",), GENERIC,
+   family(Y_GENERIC), K_WHOLE)
 _w("by-parts-quadrature", "∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy/bⁿ by 1-D quadrature", ("by-parts-3k",),
    tuple(Case({b: sp.Rational(bv), n: nv, k: sp.Rational(kv)}, label=f"b = {bv}, n = {nv}, κ = {kv}")
-         for bv, nv, kv in (("1", 2, "1/2"), ("3/4", 3, "3/2"), ("2", 1, "1"))), _by_parts)
+         for bv, nv, kv in (("1", 2, "1/2"), ("3/4", 3, "3/2"), ("2", 1, "1"))),
+   Figure.interval(y, 0, b, smooth=4), Over(y ** n * (1 - (y / b) ** n) ** (3 * k - 1)) / b ** n)
 d.quote("c-zero-suffices", "§234",
         r"Ponamus esse $c=0$, quia si hoc casu momentum respectu axis EF fuerit cognitum, ex eo idem momentum pro "
         r"valore quocunque ipsius c inueniri potest",
         reading=(Kc, K0g + 2 * n ** 2 * (k + 1) * c ** 2 * D / (m1 ** 2 * m2)),
         note=claim("the moment about EF for any c is that for c = 0 plus the term of §232 in c alone."))
 _w("c-zero-suffices-quadrature", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
-   ("c-zero-suffices",), CFAM, lambda cs, dps: _K(*_cfig(cs, dps)[:3]))
+   ("c-zero-suffices",), CFAM, family(Y_C), K_WHOLE)
 
 
 # ---- §237, §240–241: the claims in words ---------------------------------------------------------------------

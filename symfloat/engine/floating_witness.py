@@ -789,3 +789,67 @@ class Combined(MeasuredWitness):
 
 
 __all__ += ["Combined", "Loaded"]
+
+
+# ---- the coefficients of a quantity's expansion in a parameter (a tilt), about a value or a root -----------------
+# float64: the nodes h j / N, j = 1 .. N, of h = 0.3, N = 6 (odd), or 0 and +-h j / N of h = 0.05, N = 3, clipped
+# in float64 (the coefficients of phi and phi^3 of an arm to about 1e-9 and 1e-6); 50 digits: h = 1e-3, N = 8,
+# clipped at 90 digits (about 1e-45)
+SERIES_METHODS = (Precision(15, 1e-5), Precision(50, 1e-15))
+_SERIES_STEPS = {15: {"odd": (0.3, 6, 15), None: (0.05, 3, 15)}, 50: {"odd": ("1e-3", 8, 90), None: ("1e-3", 8, 90)}}
+
+
+def series_coefficient(f, k, h, nodes, odd=False):
+    """The coefficient of t^k of the polynomial interpolating f at t = h j / nodes, j = 1 .. nodes, in odd powers
+    t, t^3, ..., t^(2 nodes - 1) (``odd``, f odd in t), or at t = 0, +-h j / nodes in all powers up to
+    t^(2 nodes): the Taylor coefficient of f at 0 up to the interpolation's truncation.  Solved at the current
+    mpmath precision.
+
+    >>> import mpmath
+    >>> round(float(series_coefficient(mpmath.sin, 3, mpmath.mpf("0.01"), 5, odd=True) * 6), 8)   # sin t = t - t^3/6 ...
+    -1.0
+    """
+    if odd:
+        ts = [mpmath.mpf(h) * j / nodes for j in range(1, nodes + 1)]
+        powers = [2 * i + 1 for i in range(nodes)]
+    else:
+        ts = [mpmath.mpf(h) * j / nodes for j in range(-nodes, nodes + 1)]
+        powers = list(range(2 * nodes + 1))
+    if k not in powers:
+        raise ValueError(f"the power {k} is not among the interpolated {powers}")
+    A = mpmath.matrix([[t ** p for p in powers] for t in ts])
+    c = mpmath.lu_solve(A, mpmath.matrix([mpmath.mpf(f(t)) for t in ts]))
+    return c[powers.index(k)]
+
+
+@dataclass(frozen=True)
+class SeriesWitness(FloatingRootWitness):
+    """The coefficient of (psi - centre)^k in the expansion of the quantity in the tilt ``series = (psi, k)``,
+    ``up`` depending on psi: the quantity at nodes about ``centre`` (an expression in the case's parameters and
+    the ``roots``, which are found first, as in :class:`FloatingRootWitness`) interpolated by
+    :func:`series_coefficient`; ``odd`` when the quantity is odd about the centre (the arm of a symmetric body
+    heeled from its symmetric position), which halves the nodes.  The stability of a position is the coefficient
+    of psi in the arm, its departure from the linear theory the coefficient of psi^3 (:data:`SERIES_METHODS`)."""
+
+    series: tuple = None
+    centre: object = 0
+    odd: bool = False
+    methods: tuple = SERIES_METHODS
+
+    def measure(self, case, method):
+        body = self.body if self.body is not None else case.data["body"]
+        psi, k = self.series
+        h, nodes, dps = _SERIES_STEPS[method.dps]["odd" if self.odd else None]
+        with mpmath.workdps(max(method.dps, 15)):
+            params = self._solve(case.params, body, self.roots, method.dps)
+            centre = sp.sympify(self.centre).xreplace(params)
+        with mpmath.workdps(max(dps, 30)):
+            def f(t):
+                at = {**params, psi: sp.Float(centre + sp.Float(t, max(dps, 30) + 5), max(dps, 15) + 5)}
+                return self._values(at, body, dps)[0]
+            value = series_coefficient(f, k, mpmath.mpf(h), nodes, self.odd)
+        with mpmath.workdps(max(method.dps, 15)):
+            return float(value) if method.dps <= 15 else +value
+
+
+__all__ += ["SeriesWitness", "SERIES_METHODS", "series_coefficient"]
