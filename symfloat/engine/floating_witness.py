@@ -556,7 +556,7 @@ __all__ += ["Joined", "waterplane_moment", "Root", "At", "FloatingRootWitness", 
 import math  # noqa: E402
 
 from ..geometry.floating import FloatingState  # noqa: E402
-from ..solver.cylinder import _draught, _Math, _volume_moments, _waterplane  # noqa: E402
+from ..solver.cylinder import cylinder_state  # noqa: E402
 
 
 @dataclass
@@ -574,47 +574,28 @@ class Cylinder:
     vertices: tuple = ()
 
 
-def _waterplane_y(M, r, L, theta, t):
-    """int y^2 over the waterplane, y its axis normal to the meridian plane (the waterplane is symmetric
-    about y = 0): the half-width r sin p of the slices of ``solver.cylinder._waterplane`` (x = -r cos p,
-    dw = r sin p dp / cos theta), each contributing 2 (r sin p)^3 / 3."""
-    st, ct = M.trig(theta)
-    if st == 0:
-        return M.pi * r ** 4 / 4
-    if ct == 0:
-        half = M.sqrt(max(r * r - t * t, 0))
-        return L * (2 * half) ** 3 / 12
-    w_lo, w_hi = (-r - t * st) / ct, (r - t * st) / ct
-    z_lo, z_hi = (t * ct - L / 2) / st, (t * ct + L / 2) / st
-    phi_of = lambda w: M.acos(min(max(-(t * st + w * ct) / r, -1), 1))     # noqa: E731
-    p0, p1 = sorted((phi_of(max(w_lo, z_lo)), phi_of(min(w_hi, z_hi))))
-    return M.integrate(lambda p: 2 * (r * M.sin(p)) ** 3 / 3 * r * M.sin(p) / ct, p0, p1)
-
-
 def _cylinder_state(cyl, u, s):
     """The :class:`~symfloat.geometry.floating.FloatingState` of a :class:`Cylinder` with *u* (body frame) up
-    at density ratio *s*; the waterplane's tensor in the basis (e_theta, e_y), diagonal by symmetry."""
-    M, dps = _Math(cyl.dps), cyl.dps or 15
+    at density ratio *s*: :func:`symfloat.solver.cylinder.cylinder_state` in the meridian plane of u, carried
+    to the body frame; the waterplane's tensor in the basis (e_theta, e_y), diagonal by symmetry."""
+    dps = cyl.dps or 15
+    m, zero = (math, 0.0) if cyl.dps is None else (mpmath, mpmath.mpf(0))
     u = tuple(_real(x, dps) for x in u)
-    norm = M.sqrt(sum(x * x for x in u))
+    norm = m.sqrt(sum(x * x for x in u))
     u = tuple(x / norm for x in u)
-    w = M.sqrt(u[0] ** 2 + u[1] ** 2)
-    h = (u[0] / w, u[1] / w) if w > 0 else (M.num(1), M.num(0))       # the meridian's horizontal x
+    w = m.sqrt(u[0] ** 2 + u[1] ** 2)
+    h = (u[0] / w, u[1] / w) if w > 0 else (zero + 1, zero)             # the meridian's horizontal x
     sign = 1 if u[2] >= 0 else -1                                      # z mirrored when the axis points down
-    theta = (math.atan2 if cyl.dps is None else mpmath.atan2)(w, abs(u[2]))
-    r, L, s = cyl.r, cyl.length, M.num(_real(s, dps))
-    t = _draught(M, r, L, theta, s)
-    V, Mx, Mz = _volume_moments(M, r, L, theta, t)
-    area, centre, I_w, _ = _waterplane(M, r, L, theta, t)
-    I_y = _waterplane_y(M, r, L, theta, t)
-    st, ct = M.trig(theta)
-    B = (Mx / V * h[0], Mx / V * h[1], sign * Mz / V)
-    e1, e2 = (ct * h[0], ct * h[1], -sign * st), (-h[1], h[0], M.num(0))
+    r, L, s = cyl.r, cyl.length, zero + _real(s, dps)
+    c = cylinder_state(r, L, m.atan2(w, abs(u[2])), s, cyl.dps)
+    B = (c.Mx / c.V * h[0], c.Mx / c.V * h[1], sign * c.Mz / c.V)
+    e1, e2 = (c.cos * h[0], c.cos * h[1], -sign * c.sin), (-h[1], h[0], zero)
     cyl.vertices = tuple((k * r * h[0], k * r * h[1], z) for k in (1, -1) for z in (L / 2, -L / 2))
     potential = -_dot(u, B)
-    return FloatingState(u, s, t, M.num(0), V, B, (M.num(0),) * 3, area,
-                         tuple(t * a + centre * b for a, b in zip(u, e1)), ((I_w, M.num(0)), (M.num(0), I_y)),
-                         (e1, e2), min(I_w, I_y), max(I_w, I_y), potential, min(I_w, I_y) / V - potential)
+    I_min, I_max = min(c.I_w, c.I_y), max(c.I_w, c.I_y)
+    return FloatingState(u, s, c.t, zero, c.V, B, (zero,) * 3, c.area,
+                         tuple(c.t * a + c.centre * b for a, b in zip(u, e1)), ((c.I_w, zero), (zero, c.I_y)),
+                         (e1, e2), I_min, I_max, potential, I_min / c.V - potential)
 
 
 @dataclass(frozen=True)
