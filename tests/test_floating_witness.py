@@ -4,6 +4,7 @@ References: a box a x b x c floating upright (c vertical) at density s has draug
 c/2 above the bottom, B at s c / 2, waterplane a x b with I = a b^3 / 12 and b a^3 / 12 (the rectangle's
 second moments), hence the metacentric height min(a b^3, b a^3) / (12 a b s c) - c (1 - s) / 2.
 """
+import math
 from fractions import Fraction
 
 import mpmath
@@ -253,6 +254,23 @@ def test_a_zero_found_inside_another():
     assert abs(float(outer.measure(LOG, outer.methods[0])) - 2) < 1e-12
     with mpmath.workdps(50):
         assert abs(outer.measure(LOG, outer.methods[1]) - 2) < 1e-30
+
+
+def test_grid_roots_first_last_and_all_and_the_grid_scanned_until_found():
+    # x^2 - 2 has its zero on [0, 3] at sqrt 2; cos on [1, 10] has zeros at pi/2, 3 pi/2, 5 pi/2 (the exact values)
+    from symfloat.engine.roots import grid_roots
+    grid = [0.5 * k for k in range(7)]
+    assert abs(grid_roots(lambda d: lambda x: x * x - 2, grid, 15, only="first")[0] - math.sqrt(2)) < 1e-15
+    with mpmath.workdps(60):
+        assert abs(grid_roots(lambda d: lambda x: x * x - 2, grid, 50)[0] - mpmath.sqrt(2)) < 1e-44
+        cos_grid = [1 + k for k in range(10)]
+        first, last = (grid_roots(lambda d: mpmath.cos, cos_grid, 50, only=w)[0] for w in ("first", "last"))
+        assert abs(first - mpmath.pi / 2) < 1e-44 and abs(last - 5 * mpmath.pi / 2) < 1e-44
+        assert len(grid_roots(lambda d: mpmath.cos, cos_grid, 15)) == 3
+    assert grid_roots(lambda d: lambda x: x * x + 1, grid, 15) == []
+    seen = []
+    grid_roots(lambda d: lambda x: seen.append(x) or x - 1.2, grid, 15, only="first")
+    assert seen[:4] == [0, 0.5, 1.0, 1.5] and 3.0 not in seen     # the cell [1, 3/2] found, the rest not scanned
 
 
 # ---- roots along a parameter ---------------------------------------------------------------------------------

@@ -774,10 +774,10 @@ def _cases(names, extra=None):
 EQUILIBRIUM = Root.scan(ARM, PSI, R(1, 50), R(7, 5), 28, guard=(TOP, -BOT))
 
 
-def _tilted(name, description, targets, quantity, names, extra=None, **kw):
+def _tilted(name, description, targets, quantity, names, extra=None):
     """The quantity at the tilted equilibrium: the first zero of the clipped righting arm, no base cut there."""
     d.witness(FloatingRootWitness(name, description, tuple(targets), lambda: _cases(names, extra), up=tuple(UP),
-                                  density=s, quantity=quantity, roots=((PSI, EQUILIBRIUM),), **kw))
+                                  density=s, quantity=quantity, roots=((PSI, EQUILIBRIUM),)))
 
 
 def _floating(name, description, targets, quantity, names, extra=None, up=(0, 0, 1)):
