@@ -145,3 +145,66 @@ def test_a_substitution_into_a_section_that_collapses_is_its_limit():
                  {p: (0, 1)})
     assert r.outcome("mean", (sp.Subs(M, p, 0), 0)).agrees
     assert not r.outcome("mean", (sp.Subs(M, p, 0), sp.Rational(1, 10))).agrees
+
+
+# ---- relations: their sides from the definitions ----------------------------------------------------------------
+# The triangle's T = a b^3/12 (docstring of triangle()) lies between a b^3/13 and a b^3/11 for every a, b.
+def test_a_relation_is_measured_from_the_definitions_at_two_precisions():
+    from symfloat.model.relation import Holds
+    _, r = triangle()
+    out = r.relation_outcome("t", Holds(T < a * b ** 3 / 11), {T: a * b ** 3 / 12})
+    assert out.agrees and out.measurable and out.note == ""
+    assert [rec["method"] for rec in out.records] == ["definitions, 15 digits", "definitions, 30 digits"]
+    assert out.records[0]["rel_error"] < 1e-13 and out.records[1]["rel_error"] < 1e-28
+    assert all(rec["cases"] == 3 for rec in out.records)
+
+
+def test_a_mutated_relation_fails_with_the_definitions_values():
+    # mutation: < turned into >, and the bound 1/11 lowered to 1/13 with < kept: both fail at every point
+    from symfloat.model.relation import Holds, Iff
+    _, r = triangle()
+    for mutated in (Holds(T > a * b ** 3 / 11), Holds(T < a * b ** 3 / 13),
+                    Iff(T < a * b ** 3 / 11, a > 5)):
+        out = r.relation_outcome("t", mutated, {T: a * b ** 3 / 12})
+        assert not out.agrees and "fails at" in out.note, mutated
+        assert out.records[1]["rel_error"] < 1e-28           # the values agree: the relation is what fails
+
+
+def test_a_wrong_closed_form_under_a_relation_is_seen():
+    # the relation check would decide T < a b^3/9 from a wrong derived value a b^3/10 (true either way); the side
+    # T - a b^3/9 is -a b^3/36 by the definitions and -a b^3/90 by the closed form: a difference of a b^3/60,
+    # judged against the size of the side's terms, a b^3 (1/12 + 1/9) = 7/36 a b^3 (it is a difference): 3/35
+    from symfloat.model.relation import Holds
+    _, r = triangle()
+    out = r.relation_outcome("t", Holds(T < a * b ** 3 / 9), {T: a * b ** 3 / 10})
+    assert not out.agrees and "another value" in out.note
+    assert abs(out.records[1]["rel_error"] - 3 / 35) < 1e-12
+
+
+def test_a_relation_of_closed_forms_has_no_numeric_content():
+    from symfloat.model.relation import Holds
+    _, r = triangle()
+    out = r.relation_outcome("t", Holds(a * b > 0), {T: a * b ** 3 / 12})
+    assert out.records == [] and not out.measurable and "nothing is left" in out.note
+
+
+def test_the_checker_cross_checks_relations_and_confirms_a_counterexample():
+    from symfloat.model.relation import Holds
+    g, V = sp.symbols("g V", positive=True)
+    t = sp.Symbol("t")
+
+    def check(reading, erratum=None):
+        d = Derivation(id="test-route-relation", source="graefe", title="mid", locator="§1", domain={g: (1, 20)})
+        d.step("area", (V, sp.Integral(4 * g * t ** 2, (t, 0, 1)) * sp.Rational(3, 16)), "definition", result=V)
+        d.quote("mid", "§1", MID, reading=reading, erratum=erratum)
+        report = check_derivation(d)
+        return report.formulas[0], report.failures
+
+    f, failures = check(Holds(V > g / 5))                 # V = g/4
+    assert f.verdict == "verified" and f.numeric_content and not failures
+    assert [r["method"] for r in f.numeric] == ["definitions, 15 digits", "definitions, 30 digits"]
+    # mutation: V > g/3 printed, refuted by the relation check; the route finds it false at the counterexample
+    f, failures = check(Holds(V > g / 3), Erratum("calculation", "high", "V < g/3", "mutation",
+                                                  corrected_reading=Holds(V < g / 3)))
+    assert f.verdict == "erratum" and not failures and f.corrected_numeric
+    assert any("fails at" in n for n in f.witness_notes)

@@ -4,6 +4,7 @@ References: a box a x b x c floating upright (c vertical) at density s has draug
 c/2 above the bottom, B at s c / 2, waterplane a x b with I = a b^3 / 12 and b a^3 / 12 (the rectangle's
 second moments), hence the metacentric height min(a b^3, b a^3) / (12 a b s c) - c (1 - s) / 2.
 """
+import math
 from fractions import Fraction
 
 import mpmath
@@ -166,7 +167,7 @@ def test_the_limit_of_the_arm_over_the_tilt_is_the_metacentric_height():
 # it, the lower base (z = -1/2) 2/5 below.  The tilted box (TILTED, up (0, 1, 4)/sqrt 17, half immersed) has the
 # water plane through its centre: the rectangle L = 1 by W / cos psi = sqrt(17)/2, whose moment about the line
 # along x is L (sqrt(17)/2)^3/12 = 17 sqrt 17/96, with normal n = (0, -4, 1)/sqrt 17, and int x^2 = sqrt(17)/24.
-from symfloat.engine.floating_witness import RootWitness, waterplane_moment  # noqa: E402
+from symfloat.engine.floating_witness import FloatingRootWitness, Root, waterplane_moment  # noqa: E402
 
 EXACT.update({
     "waterplane moment, xx": sp.Rational(9, 2), "waterplane moment, yy": sp.Integer(2),
@@ -193,10 +194,12 @@ PSI = sp.Symbol("psi")
 LOG = Case({W_: 2, H_: sp.Rational(9, 5), L_: 1, S: sp.Rational(1, 2)}, label="box 2 x 9/5 x 1, half immersed")
 
 
-def rooted(quantity, vanish, case=LOG, **kw):
-    return RootWitness("root", "root", ("f",), (case,), body=Body.box(L_, W_, H_), up=(0, sp.sin(PSI), sp.cos(PSI)),
-                       density=S, reference=(0, 0, 1), quantity=quantity, along=PSI, vanish=vanish,
-                       bracket=(sp.Rational(1, 50), sp.Rational(7, 5)), steps=28, **kw)
+def rooted(quantity, vanish, case=LOG, guard=(), at=None):
+    """*quantity* at the first zero of *vanish* as the tilt psi grows (scanned in 28 steps over [1/50, 7/5])."""
+    return FloatingRootWitness("root", "root", ("f",), (case,), body=Body.box(L_, W_, H_),
+                               up=(0, sp.sin(PSI), sp.cos(PSI)), density=S, reference=(0, 0, 1), quantity=quantity,
+                               roots=((PSI, Root.scan(vanish, PSI, sp.Rational(1, 50), sp.Rational(7, 5), 28,
+                                                      guard=guard, at=at)),))
 
 
 def test_the_zero_of_the_righting_arm_and_the_contact_of_a_base():
@@ -206,23 +209,29 @@ def test_the_zero_of_the_righting_arm_and_the_contact_of_a_base():
         assert abs(float(w.measure(LOG, w.methods[0]) - exact)) < 1e-13
         with mpmath.workdps(50):
             assert abs(w.measure(LOG, w.methods[1]) - mpmath.mpf(exact.p) / exact.q) < 1e-35
+    # the wall-sided root, and the same root perturbed in its second digit (refuted at both precisions)
     out = arm.run({"f": (sp.Symbol("t"), sp.Rational(43, 100)), "f#mutated": (sp.Symbol("t"), sp.Rational(44, 100))})
+    assert out["f"].agrees and not out["f#mutated"].agrees
+    out = contact.run({"f": (sp.Symbol("t"), sp.Rational(9, 10)),
+                       "f#mutated": (sp.Symbol("t"), sp.Rational(9, 10) + sp.Rational(1, 10 ** 12))})
     assert out["f"].agrees and not out["f#mutated"].agrees
 
 
 def test_a_root_along_the_density_a_guard_and_a_position_found_elsewhere():
-    # the draught s H of the upright box equals 27/100 at s = 3/20
-    w = RootWitness("s", "s", ("f",), (LOG,), body=Body.box(L_, W_, H_), density=S, quantity=S, along=S,
-                    vanish=MEASURED["draught"] - sp.Rational(27, 100),
-                    bracket=(sp.Rational(1, 100), sp.Rational(99, 100)))
+    # the draught s H of the upright box equals 27/100 at s = 3/20; the grid's ends are expressions in the case
+    # (from H/180 to H/2: 1/100 ... 9/10)
+    w = FloatingRootWitness("s", "s", ("f",), (LOG,), body=Body.box(L_, W_, H_), density=S, quantity=S,
+                            roots=((S, Root.scan(MEASURED["draught"] - sp.Rational(27, 100), S, H_ / 180, H_ / 2,
+                                                 30)),))
+    assert abs(float(w.measure(LOG, w.methods[0])) - 0.15) < 1e-15
     with mpmath.workdps(50):
         assert abs(w.measure(LOG, w.methods[1]) - mpmath.mpf(3) / 20) < 1e-35
     # the lower base stays under water at the zero of the arm: a guard asking it to be above is refused
-    with pytest.raises(ValueError, match="not positive at the zero"):
+    with pytest.raises(ValueError, match="not positive at the root"):
         rooted(sp.tan(PSI), "righting arm", guard=(MEASURED["lower base above water"],)).measure(LOG, w.methods[0])
     # the zero found for L = 1, the volume read for L = 2 (the arm does not depend on L): 2 * 2 * 9/5 / 2
     twice = Case({**LOG.params, L_: 2})
-    w = rooted("immersed volume", "righting arm", case=twice, solve_at={L_: 1})
+    w = rooted("immersed volume", "righting arm", case=twice, at={L_: 1})
     assert abs(float(w.measure(twice, w.methods[0])) - 3.6) < 1e-12
 
 
@@ -237,23 +246,31 @@ def test_witnesses_of_several_bodies_joined():
 def test_a_zero_found_inside_another():
     # the height H at which the zero of the arm (tan^2 = 3 H^2/4 - 2 by the wall-sided formula, W = 2) reaches the
     # upper base's contact (tan = H/2): 3 H^2/4 - 2 = H^2/4, H = 2 (the inner zero along the tilt, the outer along H)
-    inner = rooted(MEASURED["upper base above water"], "righting arm")
-    outer = RootWitness("H", "H", ("f",), (LOG,), body=Body.box(L_, W_, 1), density=S, quantity=H_, along=H_,
-                        vanish=inner, bracket=(sp.Rational(17, 10), sp.Rational(23, 10)), steps=6)
+    inner = Root.scan("righting arm", PSI, sp.Rational(1, 50), sp.Rational(7, 5), 28)
+    outer = FloatingRootWitness("H", "H", ("f",), (LOG,), body=Body.box(L_, W_, H_), up=(0, sp.sin(PSI), sp.cos(PSI)),
+                                density=S, reference=(0, 0, 1), quantity=H_,
+                                roots=((H_, Root.scan(MEASURED["upper base above water"], H_, sp.Rational(17, 10),
+                                                      sp.Rational(23, 10), 6, roots=((PSI, inner),))),))
     assert abs(float(outer.measure(LOG, outer.methods[0])) - 2) < 1e-12
     with mpmath.workdps(50):
         assert abs(outer.measure(LOG, outer.methods[1]) - 2) < 1e-30
 
 
-def test_the_first_zero_of_a_function():
-    # x^2 - 2 has its first zero on [0, 3] at sqrt 2; cos has its first on [1, 10] at pi/2, not 3 pi/2
-    from symfloat.engine.floating_witness import first_zero
-    assert abs(first_zero(lambda d: lambda x: x * x - 2, 0, 3, 6, 15) - mpmath.sqrt(2)) < 1e-15
+def test_grid_roots_first_last_and_all_and_the_grid_scanned_until_found():
+    # x^2 - 2 has its zero on [0, 3] at sqrt 2; cos on [1, 10] has zeros at pi/2, 3 pi/2, 5 pi/2 (the exact values)
+    from symfloat.engine.roots import grid_roots
+    grid = [0.5 * k for k in range(7)]
+    assert abs(grid_roots(lambda d: lambda x: x * x - 2, grid, 15, only="first")[0] - math.sqrt(2)) < 1e-15
     with mpmath.workdps(60):
-        assert abs(first_zero(lambda d: lambda x: x * x - 2, 0, 3, 6, 50) - mpmath.sqrt(2)) < 1e-44
-        assert abs(first_zero(lambda d: mpmath.cos, 1, 10, 9, 50) - mpmath.pi / 2) < 1e-44
-    with pytest.raises(ValueError, match="no sign change"):
-        first_zero(lambda d: lambda x: x * x + 1, 0, 3, 6, 15)
+        assert abs(grid_roots(lambda d: lambda x: x * x - 2, grid, 50)[0] - mpmath.sqrt(2)) < 1e-44
+        cos_grid = [1 + k for k in range(10)]
+        first, last = (grid_roots(lambda d: mpmath.cos, cos_grid, 50, only=w)[0] for w in ("first", "last"))
+        assert abs(first - mpmath.pi / 2) < 1e-44 and abs(last - 5 * mpmath.pi / 2) < 1e-44
+        assert len(grid_roots(lambda d: mpmath.cos, cos_grid, 15)) == 3
+    assert grid_roots(lambda d: lambda x: x * x + 1, grid, 15) == []
+    seen = []
+    grid_roots(lambda d: lambda x: seen.append(x) or x - 1.2, grid, 15, only="first")
+    assert seen[:4] == [0, 0.5, 1.0, 1.5] and 3.0 not in seen     # the cell [1, 3/2] found, the rest not scanned
 
 
 # ---- roots along a parameter ---------------------------------------------------------------------------------

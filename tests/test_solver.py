@@ -82,6 +82,29 @@ def test_cylinder_upright_condition():
     assert lying.tilt_deg == 90 and lying.stability == "stable" and lying.waterplane == "rectangle"
 
 
+@pytest.mark.parametrize("dps", [None, 40])
+def test_cylinder_state_against_the_ellipse_and_the_rectangle(dps):
+    # r = 1, L = 10 at s = 1/2 tilted by theta = 3/10: by symmetry the water plane passes through the centre (t = 0)
+    # and cuts neither base (the waterplane reaches z = +-r tan(theta), well inside +-5): it is the ellipse with
+    # semi-axes r/cos(theta) along w and r along y, area pi r^2/cos, int w^2 = pi r^4/(4 cos^3), int y^2 =
+    # pi r^4/(4 cos) (the ellipse's second moments).  Lying (theta = pi/2), the rectangle 2r x L: int w^2 =
+    # 2r L^3/12, int y^2 = L (2r)^3/12.  Half the volume is submerged in both.
+    import mpmath
+    from symfloat.solver.cylinder import cylinder_state
+    with mpmath.workdps(50):
+        c = mpmath.cos(mpmath.mpf(3) / 10)
+        pi = mpmath.pi
+        tilted = cylinder_state(1, 10, mpmath.mpf(3) / 10 if dps else 0.3, 0.5, dps)
+        lying = cylinder_state(1, 10, pi / 2 if dps else math.pi / 2, 0.5, dps)
+        tol = 1e-12 if dps is None else mpmath.mpf(10) ** -30
+        for got, exact in ((tilted.t, 0), (tilted.V, 5 * pi), (tilted.area, pi / c), (tilted.centre, 0),
+                           (tilted.I_w, pi / (4 * c ** 3)), (tilted.I_y, pi / (4 * c)), (lying.t, 0),
+                           (lying.V, 5 * pi), (lying.area, 20), (lying.I_w, 2 * 1000 / mpmath.mpf(12)),
+                           (lying.I_y, 10 * mpmath.mpf(8) / 12)):
+            assert abs(got - exact) <= tol * max(1, abs(exact)), (got, exact)
+    assert (tilted.shape, lying.shape) == ("ellipse", "rectangle")
+
+
 def test_cylinder_lying_at_half_density_with_length_2r_is_decided_by_higher_orders():
     # lying, s = 1/2: G above B by 4r/(3 pi) (half-disk centroid); pitching moment of the waterplane
     # 2r L^3/12 over the volume pi r^2 L / 2 gives L^2 / (3 pi r): equal when L = 2r, so the second

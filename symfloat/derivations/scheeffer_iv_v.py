@@ -26,7 +26,7 @@ the first rotation region, not only for small ones.
 The witnesses are declarations of floating witnesses (``symfloat.engine.
 floating_witness``): the clipped prism, the quantity and the cases; tilts are
 zeros of the righting arm or of a base's height above the water
-(``RootWitness``); the draught comes from the submerged volume, never from the
+(``FloatingRootWitness``); the draught comes from the submerged volume, never from the
 plane through EF.
 """
 from fractions import Fraction
@@ -35,7 +35,8 @@ import math
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum, Prediction
-from symfloat.engine.floating_witness import MEASURED, Body, FloatingWitness, RootWitness, waterplane_moment
+from symfloat.engine.floating_witness import (MEASURED, Body, FloatingRootWitness, FloatingWitness, Root,
+                                              waterplane_moment)
 from symfloat.engine.witness import Case
 from symfloat.model.prediction import box_uprights
 from symfloat.geometry.floating import polygon_moments
@@ -769,11 +770,14 @@ def _cases(names, extra=None):
     return tuple(out)
 
 
-def _tilted(name, description, targets, quantity, names, extra=None, **kw):
+# the tilted equilibrium: the first zero of the clipped righting arm as the tilt grows, no base cut there
+EQUILIBRIUM = Root.scan(ARM, PSI, R(1, 50), R(7, 5), 28, guard=(TOP, -BOT))
+
+
+def _tilted(name, description, targets, quantity, names, extra=None):
     """The quantity at the tilted equilibrium: the first zero of the clipped righting arm, no base cut there."""
-    d.witness(RootWitness(name, description, tuple(targets), lambda: _cases(names, extra), up=tuple(UP), density=s,
-                          quantity=quantity, along=PSI, vanish=ARM, bracket=(R(1, 50), R(7, 5)), steps=28,
-                          guard=(TOP, -BOT), **kw))
+    d.witness(FloatingRootWitness(name, description, tuple(targets), lambda: _cases(names, extra), up=tuple(UP),
+                                  density=s, quantity=quantity, roots=((PSI, EQUILIBRIUM),)))
 
 
 def _floating(name, description, targets, quantity, names, extra=None, up=(0, 0, 1)):
@@ -783,8 +787,8 @@ def _floating(name, description, targets, quantity, names, extra=None, up=(0, 0,
 
 def _contact(name, description, targets, vanish, names):
     """tan of the first tilt at which a base reaches the water (the clipped prism's draught, not EF)."""
-    d.witness(RootWitness(name, description, tuple(targets), lambda: _cases(names), up=tuple(UP), density=s,
-                          quantity=sp.tan(PSI), along=PSI, vanish=vanish, bracket=(R(1, 50), R(3, 2)), steps=30))
+    d.witness(FloatingRootWitness(name, description, tuple(targets), lambda: _cases(names), up=tuple(UP), density=s,
+                                  quantity=sp.tan(PSI), roots=((PSI, Root.scan(vanish, PSI, R(1, 50), R(3, 2), 30)),)))
 
 
 EQ = ("rect-long", "rect-short", "tri", "quad-p", "square-0", "tri-eq")
@@ -851,13 +855,14 @@ _floating("base-T1-sym", "moment of the clipped upright waterplane about EF, sym
 _floating("base-Iuv", "product moment of the clipped upright waterplane in the axes EF, GH", ("45", "second-condition"),
           waterplane_moment(U_OM, EF_OM), QUAD_OM, {Tx: QYY, Ty: QXX, J: QXY})
 TURNED = {ALPHA: ALPHA + om}                            # the tilt found about EF, the prism then turned by omega
-d.witness(RootWitness("law", "int u v df of the stable tilt turned about the prism axis by omega (clipped)", ("law",),
-                      lambda: _cases((("rect-law", sp.pi / 12, {om: sp.pi / 12}),
-                                      ("rect-law", sp.pi / 6, {om: sp.pi / 6})), {Tx: R(18, 125), Ty: R(1, 10)}),
-                      up=tuple(UP.xreplace(TURNED)), density=s,
-                      quantity=V_ * EV.xreplace(TURNED).dot(BG) / sp.tan(PSI), along=PSI,
-                      vanish=ARM.xreplace(TURNED), bracket=(R(1, 50), R(7, 5)), steps=28, solve_at={om: 0},
-                      guard=(TOP, -BOT)))
+d.witness(FloatingRootWitness("law", "int u v df of the stable tilt turned about the prism axis by omega (clipped)",
+                              ("law",), lambda: _cases((("rect-law", sp.pi / 12, {om: sp.pi / 12}),
+                                                        ("rect-law", sp.pi / 6, {om: sp.pi / 6})),
+                                                       {Tx: R(18, 125), Ty: R(1, 10)}),
+                              up=tuple(UP.xreplace(TURNED)), density=s,
+                              quantity=V_ * EV.xreplace(TURNED).dot(BG) / sp.tan(PSI),
+                              roots=((PSI, Root.scan(ARM.xreplace(TURNED), PSI, R(1, 50), R(7, 5), 28, at={om: 0},
+                                                     guard=(TOP, -BOT))),)))
 # (53) and (53a) hold for the base reached first (afterwards the water plane no longer passes through EF)
 _contact("top", "tan of the tilt where the clipped prism's upper base reaches the water, reached first", ("53",), -TOP,
          ("tri-eq-apex", "rect-heavy"))

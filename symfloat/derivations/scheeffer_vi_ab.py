@@ -20,8 +20,8 @@ import numpy as np
 import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
-from symfloat.engine.floating_witness import (FLOATING_METHODS, MEASURED, PART, Body, Combined, FloatingWitness, Joined,
-                                              Loaded, RootWitness, waterplane_moment)
+from symfloat.engine.floating_witness import (FLOATING_METHODS, MEASURED, PART, Body, Combined, FloatingRootWitness,
+                                              FloatingWitness, Joined, Loaded, Root, waterplane_moment)
 from symfloat.engine.witness import Case, Precision
 from symfloat.geometry.floating import polygon_moments
 from symfloat.model.claim import as_printed
@@ -1021,15 +1021,23 @@ def tilted(name, description, targets, cases, quantity, vanish=ARM, body=None, *
     d.witness(_root_witness(name, description, targets, cases, quantity, vanish, body, **kw))
 
 
-def _root_witness(name, description, targets, cases, quantity, vanish, body=None, at=None, **kw):
-    """*at*: values of the example (the axis omega) put into the up vector and the quantities."""
+TILTS = (sp.Rational(1, 50), sp.Rational(3, 2))          # the bracket of a tilt, scanned in 30 steps
+
+
+def first_tilt(vanish):
+    """The first zero of *vanish* as the tilt grows (a base's contact, the tilted equilibrium)."""
+    return Root.scan(vanish, PSI, *TILTS, 30)
+
+
+def _root_witness(name, description, targets, cases, quantity, vanish, body=None, at=None, up=UP, density=s,
+                  along=PSI, bracket=TILTS, steps=30, roots=(), **kw):
+    """*quantity* at the first zero of *vanish* along *along* (scanned in *steps* steps over *bracket*), *roots*
+    found at each trial value first (a zero inside a zero); *at*: values of the example (the axis omega) put into
+    the up vector and the quantities."""
     put = (lambda e: e.xreplace(at) if at and isinstance(e, sp.Basic) else e)     # noqa: E731
-    kw.setdefault("up", tuple(put(c) for c in UP))
-    kw.setdefault("along", PSI)
-    kw.setdefault("bracket", (sp.Rational(1, 50), sp.Rational(3, 2)))
-    kw.setdefault("steps", 30)
-    return RootWitness(name, description, tuple(targets), tuple(cases), body=body or _triangle(a, b),
-                       density=kw.pop("density", s), quantity=put(quantity), vanish=put(vanish), **kw)
+    return FloatingRootWitness(name, description, tuple(targets), tuple(cases), body=body or _triangle(a, b),
+                               up=tuple(put(c) for c in up), density=density, quantity=put(quantity),
+                               roots=((along, Root.scan(put(vanish), along, *bracket, steps, roots=roots)),), **kw)
 
 
 # (56): an isosceles trapezoid (symmetric about the Y axis, not regular); T_x = int y^2, T_y = int x^2 about its
@@ -1083,13 +1091,13 @@ def cyl(name, description, targets, cases, quantity, body=Body.cylinder(r, b), d
                               quantity=quantity))
 
 
-def cyl_root(name, description, targets, cases, quantity, vanish=ARM_C, body=Body.cylinder(r, b), **kw):
+def cyl_root(name, description, targets, cases, quantity, vanish=ARM_C, body=Body.cylinder(r, b), up=UP_C,
+             density=s, along=PSI, bracket=TILTS, steps=30, roots=(), **kw):
     """A quantity of the cylinder at the first zero of *vanish* (the righting arm: the tilted equilibrium) as the
-    tilt grows, or along ``along``."""
-    kw = {"up": UP_C, "along": PSI, "bracket": (sp.Rational(1, 50), sp.Rational(3, 2)), "steps": 30, "density": s,
-          **kw}
-    return RootWitness(name, description, tuple(targets), tuple(cases), body=body, quantity=quantity, vanish=vanish,
-                       **kw)
+    tilt grows, or along ``along``; *roots* found at each trial value first."""
+    return FloatingRootWitness(name, description, tuple(targets), tuple(cases), body=body, up=up, density=density,
+                               quantity=quantity,
+                               roots=((along, Root.scan(vanish, along, *bracket, steps, roots=roots)),), **kw)
 
 
 cyl_cases = [Case({r: 1, b: 1, s: sp.Rational(1, 2)}), Case({r: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 5)}),
@@ -1154,15 +1162,14 @@ for nm, tg, quantity, lo, hi, steps in (
                        quantity, GM, body=SQUARE, up=(0, 0, 1), along=s, bracket=(lo, hi), steps=steps))
 
 # example 7: the density at which the tilted equilibrium reaches the lower base (2r = b, s < 1/2): the righting
-# arm vanishes where the lower base meets the water
-arm_at_bottom = cyl_root("bottom", "", (), (), ARM_C, BOT, body=SQUARE)
+# arm vanishes where the lower base meets the water (the tilt of that contact found at each trial density)
 NESTED = (FLOATING_METHODS[0], Precision(30, 1e-20))   # a zero inside a zero: 30 digits (40 cost minutes)
-EX7 = {"body": SQUARE, "up": (0, 0, 1), "along": s, "bracket": (sp.Rational(37, 250), sp.Rational(33, 200)), "steps": 1,
-       "methods": NESTED}
+EX7 = {"body": SQUARE, "along": s, "bracket": (sp.Rational(37, 250), sp.Rational(33, 200)), "steps": 1,
+       "roots": ((PSI, first_tilt(BOT)),), "methods": NESTED}
 d.witness(cyl_root("example-7-minus", "density at which the tilted equilibrium of the cylinder reaches the lower base",
-                   ("ex7-minus", "ex7-range-upper"), one, s, arm_at_bottom, **EX7))
-d.witness(cyl_root("example-7-root", "0.4 minus that density", ("ex7-root",), one, sp.Rational(2, 5) - s,
-                   arm_at_bottom, **EX7))
+                   ("ex7-minus", "ex7-range-upper"), one, s, ARM_C, **EX7))
+d.witness(cyl_root("example-7-root", "0.4 minus that density", ("ex7-root",), one, sp.Rational(2, 5) - s, ARM_C,
+                   **EX7))
 
 # example 10: the tilted equilibrium of r = 1.6, b = 2.5, s = 0.6; x, the water's height on the dipping side line
 # above the lower base, is b minus the upper base's lowest point above water over cos(psi)
@@ -1194,10 +1201,10 @@ def _boundary(s_value, quantity, which, *declared):
     and the case (the upright body at that Q serves only to read it); *declared*: name, description, targets,
     cases of a witness of its own."""
     flip = {om: pi / 3} if which == TOP else {om: pi / 3 + pi}      # B rising: the axis turned half round
-    contact = _root_witness("contact", "", (), (), ARM, which, body=_triangle(sp.sqrt(Q), 1), density=s_value, at=flip)
-    return _root_witness(*(declared or ("boundary", "", (), ())), quantity, contact, body=_triangle(sp.sqrt(Q), 1),
-                         density=s_value, along=Q, up=(0, 0, 1), steps=8,
-                         bracket=(6 * s_value * (1 - s_value), 12 * s_value * (1 - s_value) * 999 / 1000))
+    return _root_witness(*(declared or ("boundary", "", (), ())), quantity, ARM, body=_triangle(sp.sqrt(Q), 1),
+                         density=s_value, at=flip, along=Q, steps=8,
+                         bracket=(6 * s_value * (1 - s_value), 12 * s_value * (1 - s_value) * 999 / 1000),
+                         roots=((PSI, first_tilt(which)),))
 
 
 q60_cases = [Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20)}, label="s = 0.55, (a/b)^2 = 2.25"),
@@ -1225,16 +1232,14 @@ d.witness(_boundary(sp.Rational(2, 3), sp.sqrt(Q), TOP, "example-3-ratio", "its 
 # just touching the water: nested zeros, of the righting arm along s and of the upper base's height along a/b = Q
 EX4_AT = {om: pi / 12, PSI: pi / 6}
 EX4_S = (sp.Rational(11, 20), sp.Rational(3, 4))
-touching = _root_witness("touching", "", (), (), ARM, TOP, body=_triangle(Q, 1), along=Q, bracket=(1, 2), steps=10,
-                         at=EX4_AT)
+TOUCHING = Root.scan(TOP, Q, 1, 2, 10)                              # the a/b at which the upper base touches
+BALANCED = Root.scan(ARM.xreplace(EX4_AT), s, *EX4_S, 10)           # the density of equilibrium at the tilt
 d.witness(_root_witness("example-4-density", "density of the clipped prism in equilibrium at 30 deg with the upper "
-                        "base touching (omega = 15 deg)", ("ex4-density",), one, s, touching, body=_triangle(1, 1),
-                        up=(0, 0, 1), along=s, bracket=EX4_S, steps=10))
-balanced = _root_witness("balanced", "", (), (), TOP, ARM, body=_triangle(Q, 1), along=s, bracket=EX4_S, steps=10,
-                         at=EX4_AT)
+                        "base touching (omega = 15 deg)", ("ex4-density",), one, s, ARM, body=_triangle(Q, 1),
+                        at=EX4_AT, along=s, bracket=EX4_S, steps=10, roots=((Q, TOUCHING),)))
 d.witness(_root_witness("example-4-ratio", "a/b of the same clipped solution", ("ex4-ratio", "ex4-ratio-value"), one,
-                        Q, balanced, body=_triangle(Q, 1), up=(0, 0, 1), along=Q, steps=5, density=HALF,
-                        bracket=(sp.Rational(3, 2), sp.Rational(8, 5))))
+                        Q, TOP, body=_triangle(Q, 1), at=EX4_AT, along=Q, steps=5,
+                        bracket=(sp.Rational(3, 2), sp.Rational(8, 5)), roots=((s, BALANCED),)))
 
 
 # ---- the first-region model of the triangle: columns over the base from the bottom to the water plane --------
@@ -1264,10 +1269,9 @@ B_RISING = {om: om + pi}                            # the axis turned half round
 def _model_sin(quantity):
     """*quantity* at the axis omega (0 ... 60 deg) at which the model's equilibrium reaches the upper base (B
     dipping) and the lower base (B rising): the righting arm at the contact vanishes there."""
-    return tuple(_root_witness("sin", "", (), (), quantity, _root_witness("contact", "", (), (), ARM, which, at=at,
-                                                                          **MODEL),
-                               up=(0, 0, 1), along=om, bracket=(0, pi / 3), steps=1, **MODEL)
-                 for which, at in ((_top(b), None), (_bottom(b), B_RISING)))
+    return tuple(_root_witness("sin", "", (), (), quantity, ARM.xreplace(turn), up=UP.xreplace(turn), along=om,
+                               bracket=(0, pi / 3), steps=1, roots=((PSI, first_tilt(which)),), **MODEL)
+                 for which, turn in ((_top(b), {}), (_bottom(b), B_RISING)))
 
 
 d.witness(Joined("model-61", "sin(30 deg + omega) of the axis where the first-region model's upper-base (B dipping) "
@@ -1287,10 +1291,9 @@ def _model_boundaries(omega):
     """The (a/b)^2 = Q (b = 1) at which the model's equilibrium reaches the upper base (B dipping) and the lower
     base (B rising) for the axis *omega*: zeros along Q of the righting arm at the contact."""
     body = {"body": _model(sp.sqrt(Q), 1), "density": (1 + s) / 3}
-    return tuple(_root_witness("boundary", "", (), (), Q,
-                               _root_witness("contact", "", (), (), ARM, which, at={om: omega + turn}, **body),
-                               up=(0, 0, 1), along=Q, steps=1,
-                               bracket=(12 * s * (1 - s) / 10, 12 * s * (1 - s) * 999 / 1000), **body)
+    return tuple(_root_witness("boundary", "", (), (), Q, ARM, at={om: omega + turn}, along=Q, steps=1,
+                               bracket=(12 * s * (1 - s) / 10, 12 * s * (1 - s) * 999 / 1000),
+                               roots=((PSI, first_tilt(which)),), **body)
                  for which, turn in ((_top(1), 0), (_bottom(1), pi)))
 
 
@@ -1345,10 +1348,9 @@ d.witness(cyl_root("example-9-values", "2r/b, (2r/b)^2 of the data and the thres
                    ("ex9-values",), [Case({r: 15, b: 40}, label="the example's data")],
                    **threshold(sp.Rational(4, 5), 2 * r / b, K2_)))
 d.witness(cyl_root("example-9-bound", "(2r/b)^2 at which the tilted equilibrium of the cylinder (s = 0.8) meets "
-                   "the upper base", ("ex9-bound",), one, (2 * R) ** 2,
-                   cyl_root("contact", "", (), (), ARM_C, TOP, body=Body.cylinder(R, 1), density=sp.Rational(4, 5)),
-                   body=Body.cylinder(R, 1), up=(0, 0, 1), density=sp.Rational(4, 5), along=R,
-                   bracket=(sp.Rational(1, 5), sp.Rational(7, 10)), steps=5, methods=NESTED))
+                   "the upper base", ("ex9-bound",), one, (2 * R) ** 2, ARM_C, body=Body.cylinder(R, 1),
+                   density=sp.Rational(4, 5), along=R, bracket=(sp.Rational(1, 5), sp.Rational(7, 10)), steps=5,
+                   roots=((PSI, first_tilt(TOP)),), methods=NESTED))
 for nm, example, r_, s_ in (("example-8-claim", "ex8-claim", 30, sp.Rational(3, 4)),
                             ("example-9-claim", "ex9-claim", 15, sp.Rational(4, 5))):
     body_ = Body.cylinder(r_, 40)

@@ -25,7 +25,6 @@ from ..model.claim import as_latex, identical_links, members
 from ..model.derivation import Derivation, Printed
 from ..model.relation import is_relation
 from .definitions import DefinitionRoute
-from .witness import Outcome
 from .identity import Domain, IdentityResult, check_identity, check_rounded
 from .proofs import ProofBook
 from .relation import check_relation
@@ -174,16 +173,6 @@ def _relation(reading, results, domain, seed, timing) -> IdentityResult:
     return r
 
 
-def _relation_outcome(name) -> Outcome:
-    """A relation has no quantity for the definition route to measure: its truth at the route's three points
-    would confirm a relation that fails elsewhere.  The relation check samples its whole domain; a declared
-    witness may still measure its indicators at cases of its own."""
-    out = Outcome(name)
-    out.note = "definition route: a relation, decided on its domain by the relation check"
-    out.measurable = False
-    return out
-
-
 def _latex(p: Printed) -> str:
     return as_latex(p.reading) if p.reading is not None else ""
 
@@ -271,8 +260,9 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
             continue
         for key, reading in ((p.name, p.reading),
                              (p.name + "#corrected", p.erratum.corrected_reading if p.erratum else None)):
-            if is_relation(reading):
-                outcomes.setdefault(key, []).append(_relation_outcome(route.name))
+            if is_relation(reading):      # its sides from the definitions, at the relation check's counterexample too
+                check = identities.get(p.name) if key == p.name else corrected.get(p.name)
+                outcomes.setdefault(key, []).append(route.relation_outcome(key, reading, results, check))
             elif reading is not None:
                 outcomes.setdefault(key, []).append(route.outcome(key, reading))
     timing["witnesses"] = time.perf_counter() - t_witnesses

@@ -14,6 +14,14 @@ It runs for every formula that no declared witness targets, so a numeric cross-c
 depend on someone writing one.  A member that is, once the definitions are in, the same SymPy
 expression as the measured one is not compared (that would evaluate one expression twice); a
 chain with nothing left to compare gets a note saying so and no record.
+
+A relation (:mod:`symfloat.model.relation`) is decided on its domain by the relation check, from
+the derived closed forms.  The route cross-checks it where its quantities have definitions: each
+inequality of its statement compares a difference ``lhs - rhs``, measured from the definitions and
+compared with the closed form the relation check used, at the relation check's counterexample (when
+it found one) and at seeded points of the domain, at 15 and 30 digits; with the definitions' values
+(their signs clearly away from zero) the statement must hold at those points.  A relation whose
+differences are, with the definitions in, the closed forms themselves has no numeric content.
 """
 from __future__ import annotations
 
@@ -27,6 +35,7 @@ from sympy.printing.pycode import MpmathPrinter
 
 from ..model.claim import members
 from .identity import Domain
+from .relation import inserted, random_points, relation_intervals, statement, truth
 from .witness import Outcome, Precision
 
 __all__ = ["DefinitionRoute", "definitions", "ROUTE_METHODS"]
@@ -325,3 +334,121 @@ class DefinitionRoute:
                 if len(cases) == SAMPLES:
                     return cases
         return cases or None
+
+    def relation_outcome(self, target: str, relation, results: dict, check=None) -> Outcome:
+        """Cross-check the relation *relation* (see the module docstring): *results* are the derivation's
+        derived values, *check* the relation check's result (its counterexample is measured first)."""
+        out = Outcome(self.name)
+        parts = statement(relation)
+        atoms = sorted(set().union(*(e.atoms(sp.core.relational.Relational) for _, e in parts)),
+                       key=sp.default_sort_key)
+        try:
+            sides = {a: (_carried_out(_expanded(a.lhs - a.rhs, self._defs, self._memo)),
+                         inserted(a.lhs - a.rhs, results)) for a in atoms}
+        except (ValueError, NotImplementedError) as exc:
+            out.note = f"definition route: not evaluated ({exc})"
+            return out
+        measured = {a: rc for a, rc in sides.items() if rc[0] != rc[1]}
+        if not measured:
+            out.note = ("definition route: with the derivation's definitions inserted the relation compares the "
+                        "closed forms the relation check decides, so nothing is left for a number to check")
+            out.measurable = False
+            return out
+        where = [inserted(sp.sympify(w), results) for w in tuple(self.domain.constraints) + relation.where]
+        symbols = set().union(*(e.free_symbols for rc in sides.values() for e in rc))
+        symbols |= {q for w in where if w.free_symbols & symbols for q in w.free_symbols}
+        try:
+            points = self._relation_points(target, relation, symbols, where, check)
+        except ValueError as exc:
+            out.note = f"definition route: not evaluated ({exc})"
+            return out
+        if not points:
+            out.note = "definition route: no sample point satisfies the relation's and the derivation's conditions"
+            return out
+        failed, undecided = [], 0
+        for method in ROUTE_METHODS:
+            t0 = time.perf_counter()
+            worst_abs = worst_rel = 0.0
+            try:
+                for point in points:
+                    signs = {}
+                    for a, (route, closed) in measured.items():
+                        v = _numeric(route, point, method.dps)
+                        ab, rel = _difference(route, v, closed, point, method)
+                        worst_abs, worst_rel = max(worst_abs, ab), max(worst_rel, rel)
+                        size = abs(_numeric(_magnitude(route), point, 10, _RoughQuadPrinter))
+                        if abs(v) > 10 * method.tolerance * size:
+                            signs[a] = sp.true if a.func(v, 0) else sp.false
+                    if method is ROUTE_METHODS[-1]:         # the statement, at the finer values
+                        verdict = self._statement_at(parts, sides, signs, point)
+                        if verdict is None:
+                            undecided += 1
+                        elif verdict:
+                            failed.append((point, verdict))
+            except (ValueError, TypeError, ArithmeticError, ZeroDivisionError, NotImplementedError) as exc:
+                out.records = []
+                out.note = f"definition route: not evaluated ({exc})"
+                return out
+            out.records.append({"method": f"definitions, {method.dps} digits", "abs_error": worst_abs,
+                                "rel_error": worst_rel, "seconds": time.perf_counter() - t0, "cases": len(points)})
+            if worst_rel > method.tolerance:
+                out.agrees = False
+        notes = []
+        if not out.agrees:
+            notes.append("the definitions give another value of a side")
+        if failed:
+            out.agrees = False
+            point, bad = failed[0]
+            at = ", ".join(f"{k}={v}" for k, v in sorted(point.items(), key=lambda kv: kv[0].name))
+            notes.append(f"with the definitions' values the relation fails at {at} ({', '.join(bad)})")
+        if undecided:
+            notes.append(f"at {undecided} of {len(points)} points a side is within its error of zero: the statement "
+                         "is not read there")
+        out.note = "definition route: " + "; ".join(notes) if notes else ""
+        return out
+
+    def _relation_points(self, target, relation, symbols, where, check):
+        """The relation check's counterexample (when it is a rational point of these symbols), then seeded
+        points of the domain that satisfy the derivation's constraints and the relation's conditions."""
+        points = []
+        if check is not None and check.counterexample:
+            try:
+                points.append({q: sp.Rational(check.counterexample["point"][q.name]) for q in symbols})
+            except (KeyError, TypeError, ValueError):
+                pass                    # a point not rational, or of other symbols: the samples only
+        intervals = relation_intervals(relation, symbols, self.domain, target)
+        draws = random_points(sorted(symbols, key=lambda q: q.name), intervals,
+                              f"{self.derivation_id}/{target} definition route")
+        sampled = []
+        for _ in range(MAX_DRAWS):
+            point = next(draws)
+            if self.domain.admits(point) and all(truth(w, point) is True for w in where):
+                sampled.append(point)
+                if len(sampled) == SAMPLES:
+                    break
+        return points + sampled
+
+    @staticmethod
+    def _statement_at(parts, sides, signs, point):
+        """The names of the statement's parts that fail at *point* (an empty list: it holds), the inequalities
+        measured by the definitions taking their *signs*, the others their closed forms; None when a sign is
+        not known there."""
+        known = {}
+        for a, (route, closed) in sides.items():
+            if route != closed:
+                if a not in signs:
+                    return None
+                known[a] = signs[a]
+            else:
+                t = truth(a.func(closed, 0), point)
+                if t is None:
+                    return None
+                known[a] = sp.true if t else sp.false
+        bad = []
+        for name, e in parts:
+            t = truth(e.xreplace(known), {})
+            if t is None:
+                return None
+            if not t:
+                bad.append(name)
+        return bad

@@ -292,12 +292,7 @@ class FloatingWitness(MeasuredWitness):
         return values[0] if isinstance(self.quantity, (str, sp.Expr)) else values
 
 
-# ---- the waterplane's moments in the body frame, a prism's bases, and a root of a quantity along a parameter ----
-import dataclasses  # noqa: E402  (kept with the pieces that use them)
-
-from .witness import Case  # noqa: E402
-
-
+# ---- the waterplane's moments in the body frame, a prism's bases ---------------------------------------------
 def _waterplane_moment(i, j):
     """int p_i p_j over the waterplane about its centroid, body-frame components i, j: the tensor of the
     floating state (in the waterplane basis e1, e2) carried back, sum_ab e_a[i] J_ab e_b[j]."""
@@ -339,130 +334,6 @@ def waterplane_moment(n, m):
                     for i in range(3) for j in range(3)))
 
 
-def _sign_changes(f, lo, hi, steps):
-    """The first subinterval of the grid lo + (hi - lo) k/steps on which f changes sign, with f at its ends."""
-    x0, f0 = lo, f(lo)
-    for k in range(1, steps + 1):
-        x1 = lo + (hi - lo) * k / steps
-        f1 = f(x1)
-        if f0 == 0 or (f0 < 0) != (f1 < 0):
-            return x0, f0, x1, f1
-        x0, f0 = x1, f1
-    raise ValueError(f"no sign change on [{lo}, {hi}] with {steps} steps")
-
-
-def _illinois(f, x0, f0, x1, f1, tol):
-    """The root of f in the bracket [x0, x1] (f0, f1 of opposite signs) by the Illinois variant of regula
-    falsi, to a bracket narrower than tol."""
-    if f0 == 0:
-        return x0
-    for _ in range(200):
-        x = (x0 * f1 - x1 * f0) / (f1 - f0)
-        fx = f(x)
-        if fx == 0:
-            return x
-        if (fx < 0) != (f1 < 0):
-            x0, f0 = x1, f1
-        else:
-            f0 = f0 / 2
-        x1, f1 = x, fx
-        if abs(x1 - x0) <= tol:
-            return x1
-    raise ValueError("the root did not converge in 200 steps")
-
-
-def _key(params):
-    """A case's parameters as a hashable key, in a fixed order."""
-    return tuple(sorted(params.items(), key=lambda kv: str(kv[0])))
-
-
-@functools.lru_cache(maxsize=512)
-def _first_root(probe, params, along, bracket, steps, dps):
-    """The first zero of the quantity of the witness *probe* as the parameter *along* runs over *bracket*
-    (a grid of *steps*): in float64 scanned and refined to 1e-15; at more digits refined from the float64
-    root inside a bracket of 1e-8 (widened tenfold until f changes sign) to 10^(5 - dps)."""
-    params = dict(params)
-
-    def f(x):
-        at = {**params, along: sp.Float(x, max(dps, 15) + 5)}
-        if type(probe) is FloatingWitness:
-            return probe._values(at, probe.body, dps)[0]
-        return probe.measure(Case(at), Precision(dps, 0.0))       # a zero found inside this one
-    if dps <= 15:
-        lo, hi = (float(number(x, params, 15)) for x in bracket)
-        return _illinois(f, *_sign_changes(f, lo, hi, steps), 1e-15 * max(1.0, abs(hi)))
-    return _refine(f, _first_root(probe, _key(params), along, bracket, steps, 15), dps)
-
-
-def _refine(f, rough, dps):
-    """The zero of f at *dps* digits (under the caller's precision) near its float64 zero *rough*: Illinois
-    inside a bracket of 1e-8 around it, widened tenfold until f changes sign, to 10^(5 - dps)."""
-    rough, width = mpmath.mpf(rough), mpmath.mpf("1e-8")
-    for _ in range(6):
-        x0, x1 = rough - width, rough + width
-        f0, f1 = f(x0), f(x1)
-        if (f0 < 0) != (f1 < 0):
-            return _illinois(f, x0, f0, x1, f1, mpmath.mpf(10) ** (5 - dps))
-        width *= 10
-    raise ValueError(f"no sign change around the float64 root {rough}")
-
-
-def first_zero(make, lo, hi, steps, dps):
-    """The first zero on [lo, hi] of the function ``make(d)`` (a function at d digits, called under
-    ``mpmath.workdps(d)``): located on a grid of *steps* and refined in 15-digit arithmetic, then, for more
-    digits, refined at *dps* from there.  The root finder of a measurement the floating witnesses do not
-    cover (a quadrature model)."""
-    with mpmath.workdps(15):
-        f = make(15)
-        lo, hi = mpmath.mpf(lo), mpmath.mpf(hi)
-        rough = _illinois(f, *_sign_changes(f, lo, hi, steps), mpmath.mpf("1e-15") * max(1, abs(hi)))
-    if dps <= 15:
-        return rough
-    with mpmath.workdps(dps):
-        return _refine(make(dps), rough, dps)
-
-
-@dataclass(frozen=True)
-class RootWitness(FloatingWitness):
-    """A :class:`FloatingWitness` read where another quantity vanishes: the parameter ``along`` (on which the
-    up vector, the density or the body depend) is set to the first zero of ``vanish`` (an item as in
-    ``quantity``, or a root witness with its own body: a zero found inside another) on ``bracket``,
-    scanned with ``steps`` points and refined at each method's digits; ``solve_at`` replaces parameters
-    while the zero is sought (the position is found in one attitude and read in another), and each item of
-    ``guard`` must be positive at the zero (a condition of the source's region, such as no base cut)."""
-
-    along: sp.Symbol = None
-    vanish: object = None
-    bracket: tuple = (0, 1)
-    steps: int = 30
-    solve_at: dict = None
-    guard: tuple = ()
-
-    def __post_init__(self):
-        super().__post_init__()
-        if isinstance(self.solve_at, dict):             # kept as pairs: a witness is a key of the roots' cache
-            object.__setattr__(self, "solve_at", tuple(self.solve_at.items()))
-
-    def _probe(self, body, what):
-        if isinstance(what, FloatingWitness):
-            return dataclasses.replace(what, cases=())
-        return FloatingWitness("probe", "", (), (), body=body, up=self.up, density=self.density, quantity=what,
-                               reference=self.reference)
-
-    def measure(self, case, method):
-        body = self.body if self.body is not None else case.data["body"]
-        with mpmath.workdps(max(method.dps, 15)):
-            at = {**case.params, **dict(self.solve_at or ())}
-            root = _first_root(self._probe(body, self.vanish), _key(at), self.along, self.bracket, self.steps,
-                               method.dps)
-            root = sp.Float(root, max(method.dps, 15) + 5)
-            for item in self.guard:
-                if not self._probe(body, item)._values({**at, self.along: root}, body, method.dps)[0] > 0:
-                    raise ValueError(f"witness {self.name}: {item} is not positive at the zero ({case.label})")
-            params = {**case.params, self.along: root}
-        return super().measure(Case(params, case.data, case.label), method)
-
-
 @dataclass(frozen=True)
 class Joined(MeasuredWitness):
     """Several floating witnesses (``parts``, each with its own body) measured at the same case, their values
@@ -481,7 +352,10 @@ class Joined(MeasuredWitness):
 
 # ---- roots of a quantity along a parameter, face clearances, the waterplane's corners -----------------------------
 from dataclasses import replace  # noqa: E402
+
+from .roots import grid_roots  # noqa: E402
 from .witness import Case  # noqa: E402
+
 
 def _face_heights(st, body, top):
     """Heights above the water plane of the vertices of the body's top (largest z) or bottom (least z) face."""
@@ -550,10 +424,13 @@ def potential_slope(up, variable):
 @dataclass(frozen=True)
 class Root:
     """A root in ``variable`` of ``quantity`` (a name of :data:`QUANTITIES` or an expression in :data:`MEASURED`),
-    the others of the witness's body, up vector and density: the sign changes on ``grid`` (floats) refined by
-    :func:`symfloat.engine.roots.grid_roots` in float64 and at the method's digits; ``which`` is ``"first"``,
-    ``"last"`` or an index into all of them.  ``at`` overrides parameters for this search (expressions in the
-    case's parameters and the roots found before it), ``roots`` are found at each trial value first (nested)."""
+    the others of the witness's body, up vector and density: the sign changes on ``grid`` (numbers, or SymPy
+    expressions in the case's parameters) refined by :func:`symfloat.engine.roots.grid_roots` in float64 and at
+    the method's digits; ``which`` is ``"first"``, ``"last"`` or an index into all of them.  ``at`` overrides
+    parameters for this search (expressions in the case's parameters and the roots found before it: the position
+    found in one attitude and read in another), ``roots`` are found at each trial value first (nested: the
+    aspect ratio at which an equilibrium reaches a base), and each item of ``guard`` (as ``quantity``) must be
+    positive at the root (a condition of the source's region, such as no base cut)."""
 
     quantity: object
     variable: sp.Symbol
@@ -561,10 +438,19 @@ class Root:
     which: object = "first"
     at: dict = None
     roots: tuple = ()
+    guard: tuple = ()
 
     def __post_init__(self):
         object.__setattr__(self, "grid", tuple(self.grid))
         object.__setattr__(self, "at", tuple(sorted(dict(self.at or {}).items(), key=str)))
+        object.__setattr__(self, "guard", tuple(self.guard))
+
+    @classmethod
+    def scan(cls, quantity, variable, lo, hi, steps, **kw):
+        """The root sought on the grid ``lo + (hi - lo) k / steps``, k = 0 ... steps (``lo``, ``hi`` numbers or
+        SymPy expressions in the case's parameters)."""
+        lo, hi = sp.sympify(lo), sp.sympify(hi)
+        return cls(quantity, variable, tuple(lo + (hi - lo) * sp.Rational(k, steps) for k in range(steps + 1)), **kw)
 
 
 @dataclass(frozen=True)
@@ -603,7 +489,6 @@ class FloatingRootWitness(FloatingWitness):
         return params
 
     def _solve_one(self, params, body, symbol, root, dps):
-        from .roots import grid_roots
         if not isinstance(root, (Root, At)):                 # a value: an expression in what is known
             return sp.sympify(root).xreplace(params)
         at = {**params, **{k: sp.sympify(v).xreplace(params) for k, v in root.at}}
@@ -616,13 +501,20 @@ class FloatingRootWitness(FloatingWitness):
                 trial = probe._solve({**at, root.variable: sp.Float(v, max(p, 15) + 5)}, body, root.roots, p)
                 return probe._values(trial, body, p)[0]
             return f
-        which = root.which if isinstance(root.which, str) else None
-        found = grid_roots(make, list(root.grid), dps, only=which)
+        grid = [g if isinstance(g, float) else float(number(g, at, 15)) for g in root.grid]
+        found = grid_roots(make, grid, dps, only=root.which if isinstance(root.which, str) else None)
         if not isinstance(root.which, str):
             found = found[root.which:root.which + 1]
         if not found:
             raise ValueError(f"witness {self.name}: no root of {root.quantity} in {root.variable} on its grid")
-        return sp.Float(found[0], max(dps, 15) + 5)
+        value = sp.Float(found[0], max(dps, 15) + 5)
+        if root.guard:
+            there = probe._solve({**at, root.variable: value}, body, root.roots, dps)
+            for item in root.guard:
+                if not replace(probe, quantity=item)._values(there, body, dps)[0] > 0:
+                    raise ValueError(f"witness {self.name}: {item} is not positive at the root {root.variable} = "
+                                     f"{float(value):.6g}")
+        return value
 
     def measure(self, case, method):
         body = self.body if self.body is not None else case.data["body"]
@@ -656,7 +548,7 @@ class CutWitness(FloatingRootWitness):
         return FloatingWitness._values(replace(self, density=sp.Float(share, max(dps, 15) + 10)), params, body, dps)
 
 
-__all__ += ["RootWitness", "Joined", "first_zero", "waterplane_moment", "Root", "At", "FloatingRootWitness", "CutWitness",
+__all__ += ["Joined", "waterplane_moment", "Root", "At", "FloatingRootWitness", "CutWitness",
             "potential_slope"]
 
 
@@ -664,7 +556,7 @@ __all__ += ["RootWitness", "Joined", "first_zero", "waterplane_moment", "Root", 
 import math  # noqa: E402
 
 from ..geometry.floating import FloatingState  # noqa: E402
-from ..solver.cylinder import _draught, _Math, _volume_moments, _waterplane  # noqa: E402
+from ..solver.cylinder import cylinder_state  # noqa: E402
 
 
 @dataclass
@@ -682,47 +574,28 @@ class Cylinder:
     vertices: tuple = ()
 
 
-def _waterplane_y(M, r, L, theta, t):
-    """int y^2 over the waterplane, y its axis normal to the meridian plane (the waterplane is symmetric
-    about y = 0): the half-width r sin p of the slices of ``solver.cylinder._waterplane`` (x = -r cos p,
-    dw = r sin p dp / cos theta), each contributing 2 (r sin p)^3 / 3."""
-    st, ct = M.trig(theta)
-    if st == 0:
-        return M.pi * r ** 4 / 4
-    if ct == 0:
-        half = M.sqrt(max(r * r - t * t, 0))
-        return L * (2 * half) ** 3 / 12
-    w_lo, w_hi = (-r - t * st) / ct, (r - t * st) / ct
-    z_lo, z_hi = (t * ct - L / 2) / st, (t * ct + L / 2) / st
-    phi_of = lambda w: M.acos(min(max(-(t * st + w * ct) / r, -1), 1))     # noqa: E731
-    p0, p1 = sorted((phi_of(max(w_lo, z_lo)), phi_of(min(w_hi, z_hi))))
-    return M.integrate(lambda p: 2 * (r * M.sin(p)) ** 3 / 3 * r * M.sin(p) / ct, p0, p1)
-
-
 def _cylinder_state(cyl, u, s):
     """The :class:`~symfloat.geometry.floating.FloatingState` of a :class:`Cylinder` with *u* (body frame) up
-    at density ratio *s*; the waterplane's tensor in the basis (e_theta, e_y), diagonal by symmetry."""
-    M, dps = _Math(cyl.dps), cyl.dps or 15
+    at density ratio *s*: :func:`symfloat.solver.cylinder.cylinder_state` in the meridian plane of u, carried
+    to the body frame; the waterplane's tensor in the basis (e_theta, e_y), diagonal by symmetry."""
+    dps = cyl.dps or 15
+    m, zero = (math, 0.0) if cyl.dps is None else (mpmath, mpmath.mpf(0))
     u = tuple(_real(x, dps) for x in u)
-    norm = M.sqrt(sum(x * x for x in u))
+    norm = m.sqrt(sum(x * x for x in u))
     u = tuple(x / norm for x in u)
-    w = M.sqrt(u[0] ** 2 + u[1] ** 2)
-    h = (u[0] / w, u[1] / w) if w > 0 else (M.num(1), M.num(0))       # the meridian's horizontal x
+    w = m.sqrt(u[0] ** 2 + u[1] ** 2)
+    h = (u[0] / w, u[1] / w) if w > 0 else (zero + 1, zero)             # the meridian's horizontal x
     sign = 1 if u[2] >= 0 else -1                                      # z mirrored when the axis points down
-    theta = (math.atan2 if cyl.dps is None else mpmath.atan2)(w, abs(u[2]))
-    r, L, s = cyl.r, cyl.length, M.num(_real(s, dps))
-    t = _draught(M, r, L, theta, s)
-    V, Mx, Mz = _volume_moments(M, r, L, theta, t)
-    area, centre, I_w, _ = _waterplane(M, r, L, theta, t)
-    I_y = _waterplane_y(M, r, L, theta, t)
-    st, ct = M.trig(theta)
-    B = (Mx / V * h[0], Mx / V * h[1], sign * Mz / V)
-    e1, e2 = (ct * h[0], ct * h[1], -sign * st), (-h[1], h[0], M.num(0))
+    r, L, s = cyl.r, cyl.length, zero + _real(s, dps)
+    c = cylinder_state(r, L, m.atan2(w, abs(u[2])), s, cyl.dps)
+    B = (c.Mx / c.V * h[0], c.Mx / c.V * h[1], sign * c.Mz / c.V)
+    e1, e2 = (c.cos * h[0], c.cos * h[1], -sign * c.sin), (-h[1], h[0], zero)
     cyl.vertices = tuple((k * r * h[0], k * r * h[1], z) for k in (1, -1) for z in (L / 2, -L / 2))
     potential = -_dot(u, B)
-    return FloatingState(u, s, t, M.num(0), V, B, (M.num(0),) * 3, area,
-                         tuple(t * a + centre * b for a, b in zip(u, e1)), ((I_w, M.num(0)), (M.num(0), I_y)),
-                         (e1, e2), min(I_w, I_y), max(I_w, I_y), potential, min(I_w, I_y) / V - potential)
+    I_min, I_max = min(c.I_w, c.I_y), max(c.I_w, c.I_y)
+    return FloatingState(u, s, c.t, zero, c.V, B, (zero,) * 3, c.area,
+                         tuple(c.t * a + c.centre * b for a, b in zip(u, e1)), ((c.I_w, zero), (zero, c.I_y)),
+                         (e1, e2), I_min, I_max, potential, I_min / c.V - potential)
 
 
 @dataclass(frozen=True)

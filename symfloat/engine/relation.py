@@ -40,7 +40,7 @@ from ..model.relation import Cases, Holds, Iff, RealRoots, Relation
 from .identity import Domain, IdentityResult
 from .roots import grid_roots
 
-__all__ = ["check_relation", "statement", "SAMPLES"]
+__all__ = ["check_relation", "statement", "truth", "inserted", "relation_intervals", "random_points", "SAMPLES"]
 
 DIGITS = 60            # working precision of the numeric sign of a relation
 SAMPLES = 40           # random points after the boundary points
@@ -103,7 +103,7 @@ def _numeric(rel, point):
         return bool(type(rel)(sp.Float(d, 20), 0))
 
 
-def _truth(expr, point):
+def truth(expr, point):
     """True/False of a boolean statement at *point*, or None when SymPy cannot decide it.  Each
     relation is decided by :func:`_numeric` where its difference is clearly not zero, else exactly."""
     known = {}
@@ -135,7 +135,7 @@ def _truth(expr, point):
 
 def _valid(point, where) -> bool | None:
     for w in where:
-        t = _truth(w, point)
+        t = truth(w, point)
         if t is not True:
             return t
     return True
@@ -188,7 +188,8 @@ def _boundary(symbols, intervals, limit=81):
         yield dict(zip(symbols, combo))
 
 
-def _random(symbols, intervals, seed):
+def random_points(symbols, intervals, seed):
+    """Seeded rational points inside the *intervals* (an open end kept 1/1000 of the interval away)."""
     bounds = {}
     for s in symbols:
         lo, mid, hi = _ends(intervals[s])
@@ -203,7 +204,7 @@ def _sampled(parts, symbols, intervals, where, seed, samples, slices=SLICES):
     random points, the statement along each symbol (the others fixed) around the roots of its relations."""
     good, undecided, sliced, lines = 0, 0, 0, {}
     points = itertools.chain(_boundary(symbols, intervals),
-                             itertools.islice(_random(symbols, intervals, seed), samples * 10))
+                             itertools.islice(random_points(symbols, intervals, seed), samples * 10))
     randoms, edge = 0, len(list(_boundary(symbols, intervals)))
     for k, point in enumerate(points):
         if k >= edge:
@@ -214,7 +215,7 @@ def _sampled(parts, symbols, intervals, where, seed, samples, slices=SLICES):
             continue
         if not all(_finite_ok(e, point) for _, e in parts):
             continue
-        values = [(name, _truth(e, point)) for name, e in parts]
+        values = [(name, truth(e, point)) for name, e in parts]
         bad = [name for name, t in values if t is False]
         if bad:
             return "refuted", good + 1, point, bad
@@ -297,7 +298,7 @@ def _at_root(expr, x, root, cell_point, factors_of):
         else:
             repl[rel] = sp.sympify(rel.xreplace({x: cell_point}))
     v = expr.xreplace(repl)
-    return _truth(v, {})
+    return truth(v, {})
 
 
 def _factor_sets(parts, x):
@@ -344,7 +345,7 @@ def _proved(parts, x, iv, where):
         if neighbour is None:
             if not all(_finite_ok(e, at) for _, e in ps):
                 continue
-            values = [(name, _truth(e, at)) for name, e in ps]
+            values = [(name, truth(e, at)) for name, e in ps]
             shown = at
         else:
             values = [(name, _at_root(e, x, at, neighbour, factors_of)) for name, e in ps]
@@ -435,7 +436,7 @@ def _univariate(parts, x, iv, where, fixed, exact=True):
         at = {x: q}
         if _valid(at, where) is not True or not all(_finite_ok(e, at) for _, e in parts):
             continue
-        bad = [name for name, e in parts if _truth(e, at) is False]
+        bad = [name for name, e in parts if truth(e, at) is False]
         if bad:
             return "refuted", {**fixed, **at}, bad, checked + 1
         checked += 1
@@ -464,7 +465,9 @@ def _signed(parts, intervals) -> bool:
 
 
 # ---- the check ---------------------------------------------------------------------------------------------
-def _substituted(expr, results):
+def inserted(expr, results):
+    """*expr* with the derivation's derived values (*results*) inserted and its derivatives, integrals and
+    limits carried out: the closed forms the relation check decides."""
     for _ in range(len(results) + 1):
         new = expr.xreplace(results)
         if new == expr:
@@ -474,6 +477,21 @@ def _substituted(expr, results):
     return expr.doit() if expr.has(sp.Derivative, sp.Integral, sp.Limit) else expr
 
 
+def relation_intervals(r: Relation, symbols, domain: Domain, seed_text: str) -> dict:
+    """Symbol -> the interval it is sampled on: the relation's own, else the derivation's (open)."""
+    named = r.intervals()
+    out = {}
+    for s in symbols:
+        if s in named:
+            out[s] = named[s]
+        elif s in domain.intervals:
+            lo, hi = domain.intervals[s]
+            out[s] = sp.Interval.open(sp.Rational(Fraction(str(lo))), sp.Rational(Fraction(str(hi))))
+        else:
+            raise ValueError(f"{seed_text}: symbol {s} has no interval in the relation's or the derivation's domain")
+    return out
+
+
 def check_relation(r: Relation, results: dict, domain: Domain, seed_text: str, samples: int = SAMPLES) \
         -> IdentityResult:
     """Decide the relation *r* with the derivation's *results* inserted, on its domain (symbols it does
@@ -481,7 +499,7 @@ def check_relation(r: Relation, results: dict, domain: Domain, seed_text: str, s
     t0 = time.perf_counter()
     if all(c in (sp.true, sp.false) for c in r.parts()):
         return IdentityResult("trivial", tried=["none: SymPy decided the relation when it was built"])
-    parts = [(name, _substituted(e, results)) for name, e in statement(r)]
+    parts = [(name, inserted(e, results)) for name, e in statement(r)]
     if all(e in (sp.true, sp.false) for _, e in parts):       # the derived values let SymPy decide it
         bad = [name for name, e in parts if e == sp.false]
         result = IdentityResult("refuted" if bad else "proved", strategy="" if bad else "assumptions",
@@ -491,18 +509,10 @@ def check_relation(r: Relation, results: dict, domain: Domain, seed_text: str, s
         result.seconds = time.perf_counter() - t0
         return result
     symbols = set().union(*(e.free_symbols for _, e in parts))
-    where = [w for w in (_substituted(sp.sympify(w), results) for w in tuple(domain.constraints) + r.where)
+    where = [w for w in (inserted(sp.sympify(w), results) for w in tuple(domain.constraints) + r.where)
              if w.free_symbols & symbols]          # a constraint on other symbols does not restrict these
-    named = r.intervals()
-    intervals = {}
-    for s in set(symbols) | set().union(*(sp.sympify(w).free_symbols for w in where)):
-        if s in named:
-            intervals[s] = named[s]
-        elif s in domain.intervals:
-            lo, hi = domain.intervals[s]
-            intervals[s] = sp.Interval.open(sp.Rational(Fraction(str(lo))), sp.Rational(Fraction(str(hi))))
-        else:
-            raise ValueError(f"{seed_text}: symbol {s} has no interval in the relation's or the derivation's domain")
+    intervals = relation_intervals(r, set(symbols) | set().union(*(sp.sympify(w).free_symbols for w in where)),
+                                   domain, seed_text)
     symbols = sorted(intervals, key=lambda s: s.name)
     result = IdentityResult("undecided")
     proof = None

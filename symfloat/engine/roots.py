@@ -45,15 +45,32 @@ def illinois(f, lo, hi, eps):
     return c
 
 
+def _cells(f, grid, only):
+    """The indices i of the grid cells [grid[i], grid[i + 1]] on which *f* changes sign; ``only="first"``
+    (``"last"``): the first (last) of them, the grid scanned from its start (end) until it is found."""
+    order = range(len(grid) - 1)
+    if only == "last":
+        order = reversed(order)
+    values, cells = {}, []
+    for i in order:
+        for j in (i, i + 1):
+            if j not in values:
+                values[j] = f(grid[j])
+        if (values[i] > 0) != (values[i + 1] > 0):
+            cells.append(i)
+            if only is not None:
+                break
+    return sorted(cells)
+
+
 def grid_roots(make_f, grid, dps, only=None) -> list:
     """Every sign change of ``make_f(15)`` on *grid* (``only="first"`` or ``"last"``: just that
-    one), refined in float64 and, for ``dps > 15``, at *dps* digits (in a bracket of 1e-9 around
-    the float root, or the grid cell)."""
+    one, the grid scanned until it is found), refined in float64 and, for ``dps > 15``, at *dps*
+    digits (in a bracket of 1e-9 around the float root, or the grid cell) to a relative 10^(5 - dps):
+    a measured function is known to about its working digits, and Illinois steps below its
+    rounding only stall."""
     ff = make_f(15)
-    values = [ff(g) for g in grid]
-    cells = [i for i in range(len(grid) - 1) if (values[i] > 0) != (values[i + 1] > 0)]
-    if only is not None:
-        cells = cells[:1] if only == "first" else cells[-1:]
+    cells = _cells(ff, grid, only)
     out = []
     for i in cells:
         x0 = illinois(ff, grid[i], grid[i + 1], 1e-15)
@@ -64,6 +81,6 @@ def grid_roots(make_f, grid, dps, only=None) -> list:
                 lo, hi = mpmath.mpf(x0) - delta, mpmath.mpf(x0) + delta
                 if (fm(lo) > 0) == (fm(hi) > 0):
                     lo, hi = mpmath.mpf(grid[i]), mpmath.mpf(grid[i + 1])
-                x0 = illinois(fm, lo, hi, mpmath.mpf(10) ** (-dps - 4))
+                x0 = illinois(fm, lo, hi, mpmath.mpf(10) ** (5 - dps))
         out.append(x0)
     return out

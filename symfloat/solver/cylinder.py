@@ -13,7 +13,8 @@ polynomials in ``psi`` (Gauss–Legendre is exact to rounding), plus the
 fully submerged disks.  The waterplane ``(w, y)``, ``p = t u + w e_theta + y
 e_y``, has half-width ``sqrt(r^2 - x^2)`` with ``x = t sin theta + w cos
 theta``; with ``x = -r cos phi`` its area and second moment are integrals of
-the same kind.  Upright (``theta = 0``) and lying (``theta = pi/2``)
+the same kind (about e_y, the slices contribute ``w^2`` times their width; about
+the w axis, ``2 (r sin phi)^3 / 3``).  Upright (``theta = 0``) and lying (``theta = pi/2``)
 positions have their own closed forms.  Nothing here uses a formula of a
 source.
 """
@@ -25,7 +26,7 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 
-__all__ = ["CylinderSlice", "cylinder_slice"]
+__all__ = ["CylinderSlice", "cylinder_slice", "CylinderState", "cylinder_state"]
 
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(40)
 
@@ -101,31 +102,38 @@ def _volume_moments(M, r, L, theta, t):
     return V, Mx, Mz
 
 
-def _waterplane(M, r, L, theta, t):
-    """Area, centroid ``w`` and central second moment (about e_y) of the waterplane, and its shape."""
+def _waterplane(M, r, L, theta, t, area_only=False):
+    """Area, centroid ``w``, central second moments about e_y (``I_w``) and about the w axis (``I_y``: the
+    waterplane is symmetric about y = 0) of the waterplane, and its shape (``area_only``: the area alone)."""
     st, ct = M.trig(theta)
     if st == 0:
-        return M.pi * r * r, M.num(0), M.pi * r ** 4 / 4, "circle"
+        return M.pi * r * r if area_only else (M.pi * r * r, M.num(0), M.pi * r ** 4 / 4, M.pi * r ** 4 / 4, "circle")
     if ct == 0:
         half = M.sqrt(max(r * r - t * t, 0))
-        return 2 * half * L, M.num(0), 2 * half * L ** 3 / 12, "rectangle"
+        if area_only:
+            return 2 * half * L
+        return 2 * half * L, M.num(0), 2 * half * L ** 3 / 12, L * (2 * half) ** 3 / 12, "rectangle"
     w_lo, w_hi = (-r - t * st) / ct, (r - t * st) / ct
     z_lo, z_hi = (t * ct - L / 2) / st, (t * ct + L / 2) / st
     a, b = max(w_lo, z_lo), min(w_hi, z_hi)
     shape = "ellipse" if (a == w_lo and b == w_hi) else "truncated ellipse"
     phi_of = lambda w: M.acos(min(max(-(t * st + w * ct) / r, -1), 1))
     w_of = lambda p: (-r * M.cos(p) - t * st) / ct
-    weight = lambda p: 2 * r * M.sin(p) * r * M.sin(p) / ct
+    dw = lambda p: r * M.sin(p) / ct                     # dw/dphi
+    weight = lambda p: 2 * r * M.sin(p) * dw(p)          # the slice's width times dw/dphi
     p0, p1 = phi_of(a), phi_of(b)
     if p0 > p1:
         p0, p1 = p1, p0
     area = M.integrate(weight, p0, p1)
+    if area_only:
+        return area
     if not area > 0:
-        return area, M.num(0), M.num(0), shape
+        return area, M.num(0), M.num(0), M.num(0), shape
     mw = M.integrate(lambda p: w_of(p) * weight(p), p0, p1)
     mww = M.integrate(lambda p: w_of(p) ** 2 * weight(p), p0, p1)
+    I_y = M.integrate(lambda p: 2 * (r * M.sin(p)) ** 3 / 3 * dw(p), p0, p1)
     centre = mw / area
-    return area, centre, mww - area * centre ** 2, shape
+    return area, centre, mww - area * centre ** 2, I_y, shape
 
 
 def _draught(M, r, L, theta, s):
@@ -141,7 +149,7 @@ def _draught(M, r, L, theta, s):
             lo = t
         else:
             hi = t
-        area = _waterplane(M, r, L, theta, t)[0]
+        area = _waterplane(M, r, L, theta, t, area_only=True)
         new = t - f / area if area > 0 else (lo + hi) / 2
         if not lo < new < hi:
             new = (lo + hi) / 2
@@ -162,8 +170,38 @@ def cylinder_slice(r, L, theta, s, dps=None) -> CylinderSlice:
         st, ct = M.trig(theta)
         U = -(st * B[0] + ct * B[1])
         f = -(ct * B[0] - st * B[1])
-        area, centre, I, shape = _waterplane(M, r, L, theta, t)
+        area, centre, I, _, shape = _waterplane(M, r, L, theta, t)
         return CylinderSlice(theta, U, f, I / V - U, t, shape)
+
+
+@dataclass(frozen=True)
+class CylinderState:
+    """The cylinder floating at tilt ``theta`` in its meridian plane: ``sin``, ``cos`` of the tilt (0 below the
+    arithmetic's resolution: the upright and lying branches), the draught ``t`` (the water plane ``u . p = t``),
+    the submerged volume ``V`` and its moments ``Mx = int x dV``, ``Mz = int z dV``, and the waterplane
+    ``p = t u + w e_theta + y e_y``: its ``area``, centroid ``centre`` (along w), central second moments
+    ``I_w`` (about the line along e_y) and ``I_y`` (about the w axis), and its ``shape``."""
+    sin: object
+    cos: object
+    t: object
+    V: object
+    Mx: object
+    Mz: object
+    area: object
+    centre: object
+    I_w: object
+    I_y: object
+    shape: str
+
+
+def cylinder_state(r, L, theta, s, dps=None) -> CylinderState:
+    """The floating state of the cylinder of radius *r*, length *L* at tilt *theta* and density ratio *s*, in
+    float64 (``dps`` None) or at *dps* digits."""
+    M = _Math(dps)
+    with (mpmath.workdps(dps) if dps else _nothing()):
+        r, L, theta, s = M.num(r), M.num(L), M.num(theta), M.num(s)
+        t = _draught(M, r, L, theta, s)
+        return CylinderState(*M.trig(theta), t, *_volume_moments(M, r, L, theta, t), *_waterplane(M, r, L, theta, t))
 
 
 class _nothing:
