@@ -89,6 +89,7 @@ EXPECTED_ERRATA = {
     ("portion-Ace", "transcription", "high"),        # §229 x for κ, as in the chord
     ("portion-Bce", "transcription", "high"),
     ("axis-EF-named", "misprint", "medium"),         # §230 'longitudinalis EF' for latitudinalis
+    ("kappa-1-acute", "claim", "low"),               # §236 'anguli ad e et f erunt acuti': obtuse for a > b
     ("Y-family", "transcription", "medium"),         # §231 y^{n-1}, y^{n-2} for y^{2n}, y^{3n}
     ("waterplane-area", "transcription", "high"),    # §238 z D for 2D
     ("waterplane-area-grows", "transcription", "high"),  # §239 z D for 2D
@@ -113,6 +114,7 @@ SECOND_PASS = [
     ("excess-estimate", "transcription", 294, "{vv}", "stability-CD"),
     ("EF-condition-241", "transcription", 288, r"{\nu v}", "stability-AB-241"),
     ("AB-condition-241", "transcription", 288, "D'", "stability-AB-241"),
+    ("kappa-1-acute", "claim", 272, "erunt acuti", ""),
 ]
 
 
@@ -297,3 +299,29 @@ def test_the_derivative_of_IY_in_c1_and_c2_is_the_integral_of_the_derivative():
             exact = sp.N(sp.diff(f, var).xreplace(at), 60)
             up, down = (sp.N(f.xreplace({**at, var: at[var] + k * h}), 60) for k in (1, -1))
             assert abs(exact - (up - down) / (2 * h)) < 1e-20, (dY, var)
+
+
+def test_the_angle_at_e_of_the_kappa_1_figure_is_obtuse_for_a_long_figure():
+    # §236 (transcription line 272) and §215: the straight portions from e = (a - c, b) to A = (0, 0) and to
+    # B = (2a, 0); the angle between the vectors e->A and e->B by the dot product, independent of the module
+    import math
+
+    def angle(a_, b_, c_):
+        u, v = (-(a_ - c_), -b_), (a_ + c_, -b_)
+        return math.degrees(math.acos((u[0] * v[0] + u[1] * v[1]) / math.hypot(*u) / math.hypot(*v)))
+    assert angle(4, 1, 0) == pytest.approx(151.93, abs=0.01)     # the rhombus with AB = 4 EF: obtuse
+    assert angle(1, 2, 0) < 90 and angle(2, 1, sp.Rational(1, 2)) > 90
+    module = MODULE
+    p = next(q for q in D.printed if q.name == "kappa-1-acute")
+    res = D.results()
+    at = {module.a: 4, module.b: 1, module.c: sp.Rational(1, 100)}
+    e = module.ANGLE_E
+    for _ in range(4):
+        e = e.xreplace(res)
+    assert float(sp.deg(e.doit().subs(at))) == pytest.approx(angle(4, 1, 0.01), abs=1e-9)
+    # mutation: the correction with the inequality reversed ((a - c)(a + c) > b^2 for acute) must be refuted
+    wrong = dataclasses.replace(p.erratum, corrected_reading=type(p.erratum.corrected_reading)(
+        p.erratum.corrected_reading.a, (module.a - module.c) * (module.a + module.c) > module.b ** 2))
+    rep = check_derivation(dataclasses.replace(D, printed=[dataclasses.replace(p, erratum=wrong)], witnesses=[]),
+                           prove=False, trust_steps=True)
+    assert any("correction does not hold" in f for f in rep.failures)

@@ -75,6 +75,8 @@ EXPECTED_ERRATA = {
     ("graefe-s2-volumes-simpson/simpson-identical", "claim", "high"),
     ("graefe-s4-applications/elliptic-body-generator", "transcription", "medium"),
     ("graefe-s4-applications/triaxial-stump-axes-D", "misprint", "medium"),
+    ("graefe-s4-applications/elliptic-body-triangle", "transcription", "low"),
+    ("graefe-s4-ship-centroid/symmetry-plane", "transcription", "low"),
 }
 
 # Faults of the second review, each with the line of 001_7d23c66f8db6d29e.txt it stands on and the
@@ -87,6 +89,8 @@ SECOND_PASS = [
     ("graefe-s2-volumes-simpson/simpson-identical", "claim", 168, "identisch"),            # m {...} is 3x Simpson
     ("graefe-s4-applications/elliptic-body-generator", "transcription", 359, "$b'b'c$"),  # bb'c
     ("graefe-s4-applications/triaxial-stump-axes-D", "misprint", 385, "(A p)^2"),         # (Q p)^2
+    ("graefe-s4-applications/elliptic-body-triangle", "transcription", 359, "$ab'c$"),    # abc
+    ("graefe-s4-ship-centroid/symmetry-plane", "transcription", 416, "BB'V'V'"),         # BB'V'V
 ]
 
 
@@ -127,3 +131,47 @@ def test_side_faces_of_the_hull_count_as_graefe_says():
     # mutation: turn the top's first side parallel to the pentagon's first: the two triangles over them merge
     parallel = [(1, 1), (3, 1), (3, 3), ("3/2", "7/2")]
     assert module._side_faces(Case({}, (module.PENTAGON, parallel)), 15) == [8, 7]
+
+
+def test_the_symmetry_plane_of_the_hull_is_BBprime_VprimeV():
+    # graefe line 416: the plane through the midpoints B', V' of AC, UW, perpendicular to the base, holds B and V;
+    # numbers: A(0,1,0) C(0,5,0) B(0,3,-2), U(7,2,0) W(7,4,0) V(7,3,-1): the plane is y = 3 (by hand)
+    import dataclasses
+    import sympy as sp
+    from symfloat.engine.check import check_derivation
+    from symfloat.registry import load
+    d, module = load("graefe-s4-ship-centroid")
+    pts = {module.mu: 3, module.L_: 7, module.wA: 2, module.wU: 1, module.dB: 2, module.dV: 1}
+    p = next(q for q in d.printed if q.name == "symmetry-plane")
+    lhs, rhs = p.erratum.corrected_reading
+    assert list(lhs.subs(pts).doit()) == [0, 5, 0, 7, 4, 0, 7, 3, -1] == list(rhs.subs(pts))   # C, W, V
+    # mutation: V off the plane (V'V' read as a line through V' alone leaves V free) must be refuted
+    off = module.mirrored(module.B_, (module.A_ + module.C_) / 2, (module.U_ + module.W_) / 2,
+                          module.V_ + sp.Matrix([0, 1, 0]))
+    wrong = dataclasses.replace(p.erratum, corrected_reading=(sp.Matrix([*lhs[:6], *off]),
+                                                              sp.Matrix([*rhs[:6], *(module.V_ + sp.Matrix([0, 1, 0]))])))
+    rep = check_derivation(dataclasses.replace(d, printed=[dataclasses.replace(p, erratum=wrong)], witnesses=[]),
+                           prove=False, trust_steps=True)
+    assert any("correction does not hold" in f for f in rep.failures)
+
+
+def test_the_similar_triangles_of_the_elliptic_body():
+    # graefe line 359: y : y' = h : (h - h/m) is the ratio of the triangles abc and a'b'c (ab = y at height 0,
+    # a'b' = y' at h/m, c at h): y = 3, h = 4, m = 2 gives y' = 3/2; the triangle ab'c has neither as a side
+    import dataclasses
+    import sympy as sp
+    from symfloat.engine.check import check_derivation
+    from symfloat.registry import load
+    d, module = load("graefe-s4-applications")
+    p = next(q for q in d.printed if q.name == "elliptic-body-triangle")
+    assert p.erratum.kind == "transcription" and p.locator == "§4 elliptic body, triangular sections"
+    yp = sp.Rational(3) * (1 - sp.Rational(1, 2))
+    assert sp.Rational(3) * (4 - sp.Rational(4, 2)) == yp * 4
+    # mutation: the proportion with the heights swapped must not satisfy the correction
+    lhs, rhs = p.erratum.corrected_reading
+    swapped = lhs.subs(module.h - module.h / module.m, module.h / module.m)
+    assert swapped != lhs
+    wrong = dataclasses.replace(p.erratum, corrected_reading=(swapped, rhs))
+    rep = check_derivation(dataclasses.replace(d, printed=[dataclasses.replace(p, erratum=wrong)], witnesses=[]),
+                           prove=False, trust_steps=True)
+    assert any("correction does not hold" in f for f in rep.failures)

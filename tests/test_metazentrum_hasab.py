@@ -45,6 +45,7 @@ def test_metazentrum_checks_clean(meta_report):
         ("buoyancy-point", "misprint", "high"),          # z_G named the point where the buoyancy acts
         ("below-G", "misprint", "medium"),               # "über oder unter" under "Metazentrum unterhalb"
         ("wide-hull", "claim", "high"),                  # breadth > draught does not make a hull stable
+        ("diagram-axes", "claim", "high"),               # line 298: b/c called Breite/Tiefe (same_as wide-hull)
         ("displaced-volume-claim", "claim", "high"),     # the displaced volume is at most the body's
         ("F_g", "misprint", "low"),                      # line 513: m_g, defined nowhere, for M_s
         ("F_b=F_g", "misprint", "low"),                  # line 519: V_w, M_w, defined nowhere, for V_b, M_b
@@ -180,3 +181,20 @@ def test_long_prism_statement_is_a_relation(hasab):
     h, hm = hasab
     assert _relation_status(h, h.get_printed("long-prism").reading) == "sampled"
     assert _relation_status(h, Holds(hm.GMp > 0, {hm.l: (sp.Rational(1, 2), 1000)})) == "refuted"
+
+
+def test_the_diagram_axes_repeat_the_wide_hull_fault(meta):
+    # metazentrum line 298: 'b/c (Breite/Tiefe) versus d/2c (Tiefe/Höhe)'; 'Tiefe' is the draught d in the second
+    # pair, so the first reads b/c as breadth over draught. Box b = 3/2, c = 1, d = 1/2: b/c = 3/2 = 2b/2c (breadth
+    # over height), breadth over draught 2b/d = 6; d/2c = 1/4 (draught over height) in both readings
+    d, _ = meta
+    p = next(q for q in d.printed if q.name == "diagram-axes")
+    assert p.erratum.same_as == "metazentrum/wide-hull"
+    booked = next(q for q in d.printed if q.name == "wide-hull").erratum
+    assert (booked.kind, booked.confidence) == (p.erratum.kind, p.erratum.confidence) == ("claim", "high")
+    box = {"b": sp.Rational(3, 2), "c": 1, "d": sp.Rational(1, 2)}
+    at = {q: box[q.name] for q in p.reading[0].free_symbols}
+    assert list(p.reading[0].subs(at)) == [sp.Rational(3, 2), sp.Rational(1, 4)]
+    assert [sp.nsimplify(v.subs(at).doit()) for v in p.reading[1]] == [6, sp.Rational(1, 4)]
+    assert [sp.nsimplify(v.subs(at).doit()) for v in p.erratum.corrected_reading[1]] == [sp.Rational(3, 2),
+                                                                                      sp.Rational(1, 4)]

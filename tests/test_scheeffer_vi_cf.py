@@ -6,6 +6,7 @@ import math
 import re
 
 import pytest
+import sympy as sp
 
 from symfloat.engine.check import check_derivation
 from symfloat.geometry.floating import box, floating_state, right_prism
@@ -45,6 +46,7 @@ EXPECTED_ERRATA = {
     ("triangle-data", "transcription", "high"),
     ("square-data", "transcription", "high"),
     ("55-reference", "misprint", "medium"),   # transcription line 1068: 'Nach 55' for (54)
+    ("height-OV", "misprint", "low"),         # line 980: the height 'O V' of BOC, defined as OQ (line 968)
 }
 
 
@@ -224,3 +226,26 @@ def test_the_55_reference_is_an_erratum_on_its_own():
     (f,) = rep.formulas
     assert f.verdict == "erratum" and rep.failures == []
     assert (f.erratum["kind"], f.erratum["confidence"]) == ("misprint", "medium")
+
+
+def test_the_height_of_BOC_lies_at_the_central_angle_from_MN():
+    # transcription lines 968/980: OQ (Q the middle of BC) makes the angle alpha = 2 pi/n with MN (M the middle of
+    # AB), computed here with the vertices at the angles (k - 1/2) alpha; the erratum height-OV corrects 'O V' to it
+    for n in (3, 5, 8):
+        al = 2 * math.pi / n
+        bx, by = math.cos(al / 2), math.sin(al / 2)
+        cx, cy = math.cos(3 * al / 2), math.sin(3 * al / 2)
+        assert math.atan2((by + cy) / 2, (bx + cx) / 2) == pytest.approx(al, rel=1e-12)
+    rep = check_derivation(_mutated("height-OV"), prove=False, trust_steps=True)
+    (f,) = rep.formulas
+    assert f.verdict == "erratum" and rep.failures == []
+    assert (f.locator, f.erratum["kind"], f.erratum["confidence"]) == ("VI.E", "misprint", "low")
+    # mutation: the edge OB (at alpha/2 from MN) in place of the height OQ must not satisfy the correction
+    p = next(q for q in D.printed if q.name == "height-OV")
+    al, r = MODULE.alph, MODULE.r
+    ob = sp.Matrix([sp.cos(al / 2), sp.sin(al / 2)]) * r
+    wrong = dataclasses.replace(p.erratum, corrected_reading=(
+        sp.Matrix([ob[0] * sp.sin(al) - ob[1] * sp.cos(al), ob[0] * sp.cos(al) + ob[1] * sp.sin(al)]),
+        p.erratum.corrected_reading[1]))
+    rep = check_derivation(_mutated("height-OV", erratum=wrong), prove=False, trust_steps=True)
+    assert any("correction does not hold" in f for f in rep.failures)

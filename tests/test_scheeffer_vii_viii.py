@@ -19,14 +19,17 @@ from symfloat.model.source import SOURCES
 TEXT = SOURCES["scheeffer"].text()
 RANGE = TEXT[TEXT.index("## VII."):TEXT.index("## IX.")]
 ERRATA = {"100": "transcription", "109": "misprint", "s-upper": "claim", "95a-split": "transcription",
-          "102a-reference": "misprint", "xs1-definition": "transcription", "N1-lower-base": "transcription"}
+          "102a-reference": "misprint", "xs1-definition": "transcription", "N1-lower-base": "transcription",
+          "prism-bases": "misprint", "118-domain": "misprint", "x-direction": "misprint"}
 # printed formulas that are logical or calculus steps on others (no numeric quantity of their own to clip)
 UNWITNESSED = {"s-upper", "95-element", "96-split", "117-cos", "regular-Ps", "106-first", "102a-reference",
                "xs1-definition", "N1-lower-base", "fig20", "S3-offsets-used", "xs-depth", "Tmu-derivative",
                # the coverage pass: an element, a centroid-axis moment on a sample triangle, claims in words and
                # references read symbolically
                "95-volume-element", "centroid-axis", "second-condition-words", "into-99", "103ab-simplest",
-               "109-max-min"}
+               "109-max-min",
+               # labels read on a model (Fig. 21's square base, the +x sense of Fig. 19): nothing to clip
+               "prism-bases", "118-domain", "x-direction"}
 
 
 @pytest.fixture(scope="module")
@@ -245,9 +248,36 @@ def test_claim_s_upper_counterexample():
     ("102a-reference", "misprint", "medium"),         # line 1279: '(nach 102 a)' for (103a)
     ("N1-lower-base", "transcription", "medium"),     # line 1295: 'den Punkt N' for N_1
     ("xs1-definition", "transcription", "medium"),    # line 1305: 'x_3^1' for x_s^1
+    ("prism-bases", "misprint", "low"),               # line 1295: 'Grundflächen G B H' for AGHCD (F of VII)
+    ("118-domain", "misprint", "medium"),             # line 1299: 'G H D = F' for AGHCD = F
+    ("x-direction", "misprint", "low"),               # line 1190: 'S S^1' (S not in Fig. 19) for L S^1
 ])
 def test_second_review_faults_are_errata(name, kind, confidence):
     rep = check_derivation(_mutated(name), prove=False, trust_steps=True)
     (f,) = rep.formulas
     assert f.verdict == "erratum" and rep.failures == []
     assert (f.erratum["kind"], f.erratum["confidence"]) == (kind, confidence)
+
+
+def test_the_labels_of_F_in_VIII_against_the_dry_part_of_VII():
+    # transcription lines 1084/1092 (VII): F = AGHCD, the wet triangle BGH; VIII keeps the letters (line 1295).
+    # On the unit square A(0,1) B(1,1) C(1,0) D(0,0), G = (2/3, 1) on AB, H = (1, 1/4) on BC (shoelace by hand):
+    # F = 1 - BGH = 1 - (1/3)(3/4)/2 = 7/8; GBH = 1/8 (line 1295) and GHD = |2/3 * 1/4 - 1 * 1|/2 = 5/12 (line 1299)
+    area = {q: sp.nsimplify(M.area21(q).doit()) for q in ("AGHCD", "GBH", "GHD")}
+    assert area["AGHCD"] == sp.Rational(7, 8) == sp.nsimplify(M.F21.doit())
+    assert area["GBH"] == sp.Rational(1, 8) and area["GHD"] == sp.Rational(5, 12)
+    for name in ("prism-bases", "118-domain"):
+        p = next(q for q in M.d.printed if q.name == name)
+        wrong = dataclasses.replace(p.erratum, corrected_reading=p.reading)     # the printed label kept
+        rep = check_derivation(_mutated(name, erratum=wrong), prove=False, trust_steps=True)
+        assert any("correction does not hold" in f for f in rep.failures)
+
+
+def test_the_x_direction_correction_needs_the_sense_from_L_to_S1():
+    # transcription line 1198: 'x - m statt x ... wenn S^1 L = m': the moment about HN is +m F_2 along L S^1; the
+    # opposite sense (S^1 L) would give -m F_2 and must be refuted
+    p = next(q for q in M.d.printed if q.name == "x-direction")
+    lhs, rhs = p.erratum.corrected_reading
+    wrong = dataclasses.replace(p.erratum, corrected_reading=(lhs, -rhs))
+    rep = check_derivation(_mutated("x-direction", erratum=wrong), prove=False, trust_steps=True)
+    assert any("correction does not hold" in f for f in rep.failures)

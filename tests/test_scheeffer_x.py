@@ -17,6 +17,7 @@ from symfloat.engine.cache import ReportCache
 from symfloat.engine.check import check_derivation
 from symfloat.engine.runner import verify
 from symfloat.geometry.floating import box, floating_state, submerged
+from symfloat import Cases
 from symfloat.model.prediction import Scene
 from symfloat.model.source import SOURCES
 from symfloat.registry import load
@@ -57,6 +58,7 @@ EXPECTED_ERRATA = {
     ("dual-exists", "consequential", "high"),    # the same for s < 1/2
     ("104-reference", "misprint", "medium"),     # transcription line 1817: 'in 104 ein' for (167)
     ("fig19-reference", "misprint", "low"),      # line 1833: '(s. Fig. 19)', the waterplane of VII, for Fig. 23
+    ("172", "claim", "medium"),                  # lines 1857-1859: 'eine reelle Wurzel': three for 0.7623 < s < 0.7735
 }
 
 
@@ -363,3 +365,63 @@ def test_the_104_reference_is_an_erratum_on_its_own():
     (f,) = rep.formulas
     assert f.verdict == "erratum" and rep.failures == []
     assert (f.erratum["kind"], f.erratum["confidence"]) == ("misprint", "medium")
+
+
+# ---- (172) read as a root count -----------------------------------------------------------------------------
+def _poly_171(sv):
+    """(171) as printed (transcription line 1853: 2T = 1/6 + (1-x)^2 - x^4/12, z = 1 - x + x^3/6), left minus
+    right side times 432, at the density sv: typed here from the print, not taken from the module."""
+    xx = sp.Symbol("x")
+    two_t, z = sp.Rational(1, 6) + (1 - xx) ** 2 - xx ** 4 / 12, 1 - xx + xx ** 3 / 6
+    return sp.Poly(sp.expand(432 * (two_t * (z ** 2 + (1 - sv) ** 2) - z ** 3 * (1 - xx) - z ** 2 * (1 - sv))), xx)
+
+
+# s -> number of distinct roots in 0 < x < 1 (SymPy's exact isolation; the same counts as numpy's eigenvalue roots
+# below): one up to the fold 0.7623, three up to (4 + sqrt 2)/7 = 0.77346, two up to 5/6, none beyond
+COUNTS_171 = {"1/2": 1, "7/10": 1, "0.762": 1, "0.763": 3, "0.77": 3, "0.773": 3, "0.774": 2, "0.8": 2,
+              "0.833": 2, "0.834": 0}
+
+
+@pytest.mark.parametrize("sv, count", sorted(COUNTS_171.items()))
+def test_root_counts_of_171(sv, count):
+    poly = _poly_171(sp.Rational(sv))
+    exact = sorted({r for r in poly.real_roots() if 0 < r < 1}, key=float)
+    assert len(exact) == count
+    companion = [r.real for r in np.roots([float(c) for c in poly.all_coeffs()])
+                 if abs(r.imag) < 1e-9 and 1e-9 < r.real < 1 - 1e-9]
+    assert len(companion) == count
+
+
+def test_the_fold_of_171_lies_between_the_bounds_of_the_172_correction():
+    # the count jumps where f and df/dx vanish together: a root of the resultant in x, between 0.7623 and 0.7624
+    s_ = sp.Symbol("s")
+    xx_ = _poly_171(s_).gens[0]
+    f = _poly_171(s_).as_expr()
+    res = sp.Poly(sp.resultant(f, sp.diff(f, xx_), xx_), s_)
+    assert res.count_roots(sp.Rational("0.7623"), sp.Rational("0.7624")) == 1
+    assert res.count_roots(sp.Rational("0.7624"), sp.Rational("0.7734")) == 0     # (4 + sqrt 2)/7 = 0.77346
+    assert MODULE.S_FOLD_BELOW == sp.Rational("0.7623") and MODULE.S_FOLD_ABOVE == sp.Rational("0.7624")
+
+
+def test_172_is_a_claim_erratum_on_the_root_count():
+    # transcription lines 1857-1859: 'eine reelle Wurzel, wenn s < (4 + sqrt 2)/7': three roots at 0.7623 < s < 0.7735
+    p = next(q for q in D.printed if q.name == "172")
+    assert p.locator == "(172)"
+    rep = check_derivation(dataclasses.replace(D, printed=[p], witnesses=[]), prove=False, trust_steps=True)
+    (f,) = rep.formulas
+    assert f.verdict == "erratum" and rep.failures == []
+    assert (f.erratum["kind"], f.erratum["confidence"]) == ("claim", "medium")
+    point = sp.Rational(f.identity["counterexample"]["point"]["s"])       # where the print fails: three roots
+    assert sp.Rational("0.7623") < point < (4 + sp.sqrt(2)) / 7
+
+
+def test_a_wrong_count_in_the_172_correction_is_refuted():
+    # the correction with 'one root' kept between the fold and (4 + sqrt 2)/7 (the print's count) must not hold
+    p = next(q for q in D.printed if q.name == "172")
+    rows = list(p.erratum.corrected_reading.rows)
+    rows[1] = (rows[1][0], sp.Eq(rows[1][1].lhs, 1))
+    wrong = dataclasses.replace(p.erratum, corrected_reading=Cases(rows, {MODULE.s: (sp.Rational(1, 2), 1)},
+                                                                   exhaustive=False))
+    rep = check_derivation(dataclasses.replace(D, printed=[dataclasses.replace(p, erratum=wrong)], witnesses=[]),
+                           prove=False, trust_steps=True)
+    assert any("correction does not hold" in f for f in rep.failures)

@@ -70,7 +70,7 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from symfloat import Derivation, Eq, Erratum
+from symfloat import Derivation, Eq, Erratum, Holds, Iff
 from symfloat.engine.figure_witness import CENTROID, FIGURE_METHODS, Figure, FigureWitness, Over
 from symfloat.engine.floating_witness import (LIMIT_METHODS, PART, Body, Combined, FloatingWitness, Joined, Loaded,
                                               potential_slope)
@@ -713,12 +713,28 @@ d.quote("kappa-above-1", "§236", r"posito enim $\kappa > 1$ tum curua in e et f
         note=claim("for κ > 1 the two portions meet at e with dx/dy → 0, a common tangent normal to AB: a cusp "
                    "(read at κ = 2, n = 2, c = 0)."))
 quad_portions = sp.Matrix([sp.Subs(XA, (Ys, n, k), (-c * y / b, 1, 1)), sp.Subs(XB, (Ys, n, k), (-c * y / b, 1, 1))])
+ANGLE_E = sp.atan(sp.Derivative(quad_portions[0], y)) + sp.atan(-sp.Derivative(quad_portions[1], y))
+d.quote("kappa-1-acute", "§236", r"Quodsi autem sit $\kappa = 1$ anguli ad e et f erunt acuti",
+        reading=Holds(ANGLE_E < sp.pi / 2),
+        erratum=Erratum("claim", "low",
+                        r"\text{anguli ad e et f erunt obtusi, si } (a - c)(a + c) > b^2 "
+                        r"\text{ (omni figurae longae, } a > b, c = 0\text{)}",
+                        "For κ = 1 (n = 1) both portions are straight: eA from e = (a − c, b) to A, eB from e to B = "
+                        "(2a, 0) (Ac = a − c, Bc = a + c, ce = b). The interior angle at e is atan((a − c)/b) + "
+                        "atan((a + c)/b), which is less than a right angle exactly when (a − c)(a + c) < b^2: acute "
+                        "only for a figure broader than it is long. For every waterplane Euler considers, AB the "
+                        "longitudinal axis longer than EF (§241: AB four times EF), it is obtuse: the rhombus of "
+                        "this paragraph with a = 4b has 152° at e and f. A claim of the author; low, since 'acutus' "
+                        "may mean a sharp corner (against the cusps of κ > 1 and the smooth ends of κ < 1) rather "
+                        "than an angle below 90°.",
+                        corrected_reading=Iff(ANGLE_E < sp.pi / 2, (a - c) * (a + c) < b ** 2)),
+        note=claim("for κ = 1 the angles at e and f are acute; read as the interior angle at e, between the "
+                   "straight portions towards A and B (f is its mirror image), below a right angle."))
 d.quote("kappa-1-quadrilateral", "§236", r"hocque casu continetur figura rectilinea quadrilatera quam §. 215. "
         r"considerauimus", reading=(quad_portions.applyfunc(lambda e: sp.Derivative(e, y, 2)), sp.zeros(2, 1)),
         note=claim("κ = 1 (with n = 1 and Y = −cy/b) gives the rectilinear quadrilateral of §215: both portions "
-                   "are straight (second derivative 0). The 'anguli acuti' at e and f before it are read as sharp "
-                   "corners: the interior angle at e is atan((a − c)/b) + atan((a + c)/b), obtuse for a long "
-                   "figure (a > b, c = 0), so not acute in the geometric sense; not read as a formula."))
+                   "are straight (second derivative 0). The 'anguli acuti' at e and f before it are booked in "
+                   "kappa-1-acute."))
 d.quote("kappa-below-1", "§236", r"At si ponatur $\kappa < 1$ tum curuae in e et f habebunt tangentes axi AB "
         r"parallelas", reading=(sp.Limit(1 / slope.subs({k: sp.Rational(1, 2), n: 2}), y, b, "-"), 0),
         note=claim("for κ < 1 dy/dx → 0 at e: the tangent is parallel to AB (read at κ = 1/2, n = 2)."))

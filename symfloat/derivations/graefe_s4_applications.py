@@ -522,6 +522,19 @@ d.quote("elliptic-body-generator", "§4 elliptic body, triangular sections",
                         "cannot be seen. Checked: b, b', c collinear in the coordinates of the construction "
                         "(abscissa, ordinate, height).",
                         corrected_reading=((gen_bp - gen_b).cross(gen_c - gen_b), sp.zeros(3, 1))))
+gen_a, gen_ap = sp.Matrix([x, 0, 0]), sp.Matrix([x, 0, h / m])     # a, a': the feet of the ordinates on GH's plane
+d.quote("elliptic-body-triangle", "§4 elliptic body, triangular sections", r"Nun ist im Dreieck  $ab'c$ ,",
+        unreadable="a triangle a b' c has neither ordinate as a side (ab = y lies at the height 0, a'b' = y' at "
+                   "h/m), so the proportion y : y' = h : (h - h/m) that follows is not one between its sides",
+        erratum=Erratum("transcription", "low", r"\text{Nun ist im Dreieck } abc",
+                        "The proportion that follows compares the ordinate ab = y (height 0) with a'b' = y' "
+                        "(height h/m) as the heights of c above them, h and h - h/m: the similar triangles abc and "
+                        "a'b'c, a'b' parallel to ab. Read in the triangle abc (its leg ab, its side bc through b' "
+                        "by the preceding line): ab (h - h/m) = a'b' h, checked with the coordinates of the "
+                        "construction. A stray prime on the a, like the doubled b' of 'b'b'c' one line before "
+                        "(elliptic-body-generator): the scan's; low, since the print cannot be seen.",
+                        corrected_reading=((gen_b - gen_a).norm() * (h - h / m), (gen_bp - gen_ap).norm() * h)),
+        note="a, a' are the feet of the ordinates ab, a'b' on the major axis and on GH")
 d.quote("elliptic-body-ratio", "§4 elliptic body, triangular sections",
         r"$$y : y' = h : h - \frac{h}{m} \text{ also}$$", reading=(y / yp, h / (h - h / m)))
 d.quote("elliptic-body-y", "§4 elliptic body, triangular sections", r"$y = \frac{y'}{1 - \frac{1}{m}}$",

@@ -114,7 +114,41 @@ d.step("centroid-equal-sections", (sp.Subs(m * NUM / DEN, (b, c, dd, e, f, g), (
        note="check of the rule: with all sections equal (a prism of length 6m) the centroid lies in the "
             "middle, 3m from ABC")
 
+# ---- the hull of Fig. 9 (lost): base AUWC in the plane z = 0, the end sections ABC at x = 0 and UVW at x = L
+# across the base, each symmetric about the midpoint (B', V') of its base line AC, UW at the same y = mu
+mu, L_, wA, wU, dB, dV = sp.symbols("mu L w_A w_U d_B d_V", positive=True)
+d.domain.update({q: (1, 5) for q in (mu, L_, wA, wU, dB, dV)})
+A_, C_, B_ = sp.Matrix([0, mu - wA, 0]), sp.Matrix([0, mu + wA, 0]), sp.Matrix([0, mu, -dB])
+U_, W_, V_ = sp.Matrix([L_, mu - wU, 0]), sp.Matrix([L_, mu + wU, 0]), sp.Matrix([L_, mu, -dV])
+
+
+def mirrored(P, Q, R, X):
+    """X reflected in the plane through P, Q, R (built unevaluated: the engine carries out the arithmetic)."""
+    def build():
+        nrm = (Q - P).cross(R - P)
+        return X - 2 * ((X - P).dot(nrm) / nrm.dot(nrm)) * nrm
+    return as_printed(build)
+
+
 # ---- printed -------------------------------------------------------------------------------------
+d.quote("symmetry-plane", "§4 ship displacement centroid",
+        "Der Körper sei in Bezug auf eine durch die Mitten von AC und UW gelegte, zur Basis senkrechte Ebene "
+        "BB'V'V' symmetrisch.",
+        unreadable="BB'V'V' names the point V' twice: four letters for three points, and V, the end section's "
+                   "point of UVW on the plane, is missing",
+        erratum=Erratum("transcription", "low", r"\text{Ebene } B B' V' V",
+                        "The plane passes through the midpoints B', V' of AC and UW and, being a plane of symmetry "
+                        "of the end sections ABC and UVW, through their points B and V: B B' V' V, as the letters "
+                        "of the two end sections pair up (B with B', V with V'). Checked with a hull whose end "
+                        "sections are symmetric about their midpoints: the plane through B, B', V' contains V, "
+                        "and the reflection in it exchanges A with C and U with W. A prime added to the last V, "
+                        "as in Graefe's 'b'b'c' (§4, elliptic body); the scan's, low.",
+                        corrected_reading=(sp.Matrix([*mirrored(B_, (A_ + C_) / 2, (U_ + W_) / 2, A_),
+                                                      *mirrored(B_, (A_ + C_) / 2, (U_ + W_) / 2, U_),
+                                                      *mirrored(B_, (A_ + C_) / 2, (U_ + W_) / 2, V_)]),
+                                           sp.Matrix([*C_, *W_, *V_]))),
+        note="the base AUWC horizontal, the end sections vertical across it; the body's centroid then lies in "
+             "the plane, and only its distances from ABC and from the base are sought")
 d.quote("prismatoid-centroid", "§4 ship displacement centroid",
         r"$$X = h \left\{ \frac{\frac{g}{2} + D}{\frac{G + g}{2} + 2D} \right\}$$",
         reading=Eq(Xp, h * (g / 2 + D) / ((G + g) / 2 + 2 * D)))

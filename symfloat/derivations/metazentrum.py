@@ -113,7 +113,11 @@ dv.quote("e", L4, r"$ e = \displaystyle\frac{1}{6}\displaystyle\frac{ b ^2}{ c ^
          r"\left(1-\displaystyle\frac{ d }{2 c }\right)$", reading=(e, e_print))
 dv.quote("M_b", "formula list", r"$ M_b =4 a b d \rho_w $", reading=(M_b, 4 * a * b * d * rho_w))
 dv.quote("M_s", "formula list", r"$ M_s =8 a b c \rho_s $", reading=(M_s, 8 * a * b * c * rho_s))
-dv.quote("M_b=M_s", "formula list", r"$ M_b = M_s $", reading=(M_b, M_s))
+dv.quote("M_b=M_s", "formula list", r"$ M_b = M_s $", reading=(M_b, M_s),
+         note="the page calls M_b = M_s Archimedes' principle ('Das Archimedes-Prinzip besagt, dass die Masse des "
+              "verdrängten Wassers gleich der Masse des Objekts ist', and again for 'eines schwimmenden Objekts'): "
+              "not booked, since the page applies it to the floating hull only, where it is what the principle "
+              "gives (F_b = rho_w V_b g = M_s g, F_b=F_g), a loose naming rather than a false formula")
 dv.quote("density", "formula list", r"$ \displaystyle\frac{ \rho_s }{ \rho_w }= \displaystyle\frac{ d }{ 2 c }$",
          reading=(rho_s / rho_w, d / (2 * c)))
 dv.quote("V_b", "formula list", "$ V_b = 4 a b d $", reading=(V_b, 4 * a * b * d))
@@ -239,6 +243,21 @@ dv.quote("criterion-words", L4, "Um sicherzustellen, dass der Quader stabil ist,
 dv.quote("criterion-words-2", "formula list", "Damit das Objekt stabil ist, muss die Höhe des Metazentrums ($z_M$)8671 "
          "immer größer oder gleich die Höhe des Schwerpunkts ($z_G$)8670 sein.",
          reading=(sp.sign(z_M - z_G), stable_sign))
+BREADTH, HEIGHT, DRAUGHT = (sp.Integral(1, (y, -b, b)), sp.Integral(1, (z, -d, 2 * c - d)),
+                            sp.Integral(1, (z, -d, 0)))
+dv.quote("diagram-axes", L4, "Das bedeutet, dass es im Diagramm $b/c$ (Breite/Tiefe) versus $d/2c$ (Tiefe/Höhe)",
+         reading=(sp.Matrix([b / c, d / (2 * c)]), sp.Matrix([BREADTH / DRAUGHT, DRAUGHT / HEIGHT])),
+         erratum=Erratum("claim", "high", r"b/c\ (\text{Breite/Höhe}) \text{ versus } d/2c\ (\text{Tiefe/Höhe})",
+                         "In one sentence 'Tiefe' names the draught d (d/2c, Tiefe/Höhe: the draught over the "
+                         "height 2c) and the denominator of b/c, which is the half height c: b/c = 2b/2c is the "
+                         "breadth over the height, not over the draught (b = 3/2, c = 1, d = 1/2: b/c = 3/2, "
+                         "breadth/draught = 6). The same confusion of the height with the draught as the next "
+                         "sentence's '(Breite größer als Tiefgang)', booked there (wide-hull).",
+                         corrected_reading=(sp.Matrix([b / c, d / (2 * c)]),
+                                            sp.Matrix([BREADTH / HEIGHT, DRAUGHT / HEIGHT])),
+                         same_as="metazentrum/wide-hull"),
+         note="read with one meaning of 'Tiefe' in the sentence, the draught d of the second axis: the axes as the "
+              "ratios of the box's breadth 2b, draught d and height 2c that the words name")
 dv.quote("diagram-regions", L4, "in dem das System stabil und in seinem Komplement instabil ist",
          reading=(sp.Matrix([sp.Subs(sp.sign(e), (b, d), (2 * c, c)), sp.Subs(sp.sign(e), (b, d), (c / 2, c))]),
                   sp.Matrix([1, -1])),

@@ -140,7 +140,10 @@ d.step("touch-limit", Eq(tla, PW(2 * b * (1 - s) / a, 2 * b * s / a)), "definiti
        result=tla, note="tan of the tilt at which a base face reaches the water (bottom face for s < 1/2)")
 d.step("touch-limit-c", Eq(tlc, PW(2 * b * (1 - s) / c, 2 * b * s / c)), "definition", result=tlc)
 
-d.quote("122", "(122)", r"$$\frac{T_1}{V_1} - e_1 > 0 \quad (122)$$", reading=(T1 / V1 - e1, GMa))
+d.quote("122", "(122)", r"$$\frac{T_1}{V_1} - e_1 > 0 \quad (122)$$", reading=(T1 / V1 - e1, GMa),
+        note="the print numbers this display (122) as it numbered VIII's last system (transcription lines 1327, 1339; "
+             "(123) follows): not booked, since both displays read right and the one reference to it, '(in 122)' "
+             "before (123), is resolved by its section; a duplicate number is no formula to refute")
 d.quote("122-words", "(122)", "Nach dem Duhamelschen Satze schwimmt es in dieser Lage stabil, wenn",
         reading=(sp.sign(GMa), sp.sign(T1 / V1 - e1)), note="the metacentric height of the upright box is (122)'s margin")
 d.quote("T1", "IX.A", r"$$T_1 = \frac{c a^2}{12}$$", reading=(T1, c * a ** 2 / 12),

@@ -552,6 +552,26 @@ d.quote("triangle-symmetric", "VI.E",
 d.quote("83", "(83)", r"$$T = \frac{1}{2} (T_x + T_y) + \frac{1}{2} (T_x - T_y) \cos 2 \varphi. \quad (83)$$",
         reading=(TL, (Tx + Ty) / 2 + (Tx - Ty) / 2 * sp.cos(2 * psi)), note="the text's phi is psi here",
         symbols={r"\varphi": (psi, PSI)})
+# Fig. 15 (lost): the vertices on the circle of radius r at the angles (k - 1/2) alpha from MN, so that M, the
+# middle of AB, lies on MN: B at alpha/2, C at 3 alpha/2; Q, the foot of the height OQ of BOC, is the middle of BC
+Q_BOC = (sp.Matrix([sp.cos(alph / 2), sp.sin(alph / 2)]) + sp.Matrix([sp.cos(3 * alph / 2), sp.sin(3 * alph / 2)])) * r / 2
+d.quote("height-OV", "VI.E",
+        r"so bildet für das Dreieck B O C die Achse M N mit der Höhe O V den Winkel  $\varphi = \alpha$",
+        unreadable="V names no point of VI.E: the height of the triangle BOC is OQ (defined before (83), whose angle "
+                   "phi is measured from OQ); no point V is introduced",
+        erratum=Erratum("misprint", "low", r"\text{mit der Höhe } O Q \text{ den Winkel } \varphi = \alpha",
+                        "The paragraph defines the height of the isosceles triangle BCO as OQ = h and measures the "
+                        "angle phi of (83) between the axis L and OQ; the sentence applies (83) to BOC with L = MN, so "
+                        "the height meant is OQ, the only height of BOC the text names (the line OV occurs nowhere "
+                        "else in the section). With the vertices at the angles (k - 1/2) alpha from MN, OQ (Q the "
+                        "middle of BC) lies at the angle alpha from MN, as the sentence says. A Q printed as V "
+                        "(a letter of another drawing of Fig. 15, or the typesetter's); low, since the figure is lost "
+                        "and the scan may have misread the letter.",
+                        corrected_reading=(sp.Matrix([Q_BOC[0] * sp.sin(alph) - Q_BOC[1] * sp.cos(alph),
+                                                      Q_BOC[0] * sp.cos(alph) + Q_BOC[1] * sp.sin(alph)]),
+                                           sp.Matrix([0, h_]))),
+        note="read as: OQ lies at the angle alpha from MN (its component across the direction alpha vanishes, along "
+             "it is the apothem OQ = h)")
 d.quote("84", "(84)",
         r"$$T_1 = \frac{n}{2} (T_x + T_y) + \frac{1}{2} (T_x - T_y) \left( \cos 2 \alpha + \cos 4 \alpha + \dots "
         r"\right) \quad (84)$$", reading=(T1n, n / 2 * (Tx + Ty) + (Tx - Ty) / 2 * Sc))

@@ -29,7 +29,8 @@ enthalten die vollständigen Bedingungen' (the two horizontal offsets of S_2 are
 (95a)); 's > 1/2, sodass also die obere Grundfläche zum Teil eintaucht' holds only for bases reaching equally
 far on both sides of the axis (claim erratum, as in IV).  Errata: the stray '1/2' before 'Volumen' in (100)
 (scan), the sign of 2 k tg 2mu in (109) (print), the lost df of the split of (95a) (scan), 'nach 102 a' for
-(103a) (print), 'den Punkt N' for N_1 and 'x_3^1' for x_s^1 in VIII (scan).
+(103a) (print), 'den Punkt N' for N_1 and 'x_3^1' for x_s^1 in VIII (scan), the labels 'G B H' (a base of the
+dry part) and 'G H D = F' ((118)'s domain) for F = AGHCD in VIII (print).
 The references '102 a', '102 b' in (116), (117) mean (103a), (103b); '102 b' is not booked, since (102) with
 (100) gives (116) as well.
 
@@ -424,6 +425,19 @@ d.quote("106-first", "VII", r"folglich auch  $\int_1",
 d.quote("104", "(104)", r"$$T_m - V_3 e_3 > 0 \quad (104)$$", reading=(Tm - V3 * e3, D),
         note="D = T_m - V_1 e_2 (Duhamel), V_1 e_2 = V_3 e_3 (step e2-e3); T_m the least moment at equilibrium")
 d.quote("104-balance", "VII", r"so ist  $V_1 e_2 = V_3 e_3$", reading=(V1 * e2, V3 * e3))
+d.quote("x-direction", "VII", r"Nimmt man  $S S^1$  als  $(+ x)$  Richtung",
+        unreadable="S is the centroid of the body (Fig. 17), no point of the water section of Fig. 19, whose points "
+                   "are O_1, H, N, E_1, S^1, L, J_1, K_1, P, Q: 'S S^1' names no direction in its plane",
+        erratum=Erratum("misprint", "low", r"\text{Nimmt man } L S^1 \text{ als } (+ x) \text{ Richtung}",
+                        "The x axis of Fig. 19 runs through the centroid S^1 across the principal axis J_1 K_1, "
+                        "which is perpendicular to S^1 L: it lies along S^1 L. Its sense follows from the shift two "
+                        "sentences on, 'x - m statt x ... wenn S^1 L = m', which moves the origin to HN: the points "
+                        "of HN have x = -m, so +x points from L to S^1: measured from HN in that sense, the first "
+                        "moment of the water section is +m F_2 (its area F_2, pulled back to F: int x/cos phi_2 df "
+                        "over F, stretched by 1/cos phi_2). Neither 'S' for 'L' by the scan nor by the typesetter "
+                        "can be told without the figure; low.",
+                        corrected_reading=(termwise(x / c2 ** 2, MF), m_ * F2)),
+        note="x is measured in F from GH (the projection of HN) and stretched by 1/cos phi_2 in the waterplane")
 d.quote("105-def", "VII", r"$$T_\mu = \int_s (x \cos \mu - y \sin \mu)^2 \cdot d f$$",
         reading=(Tmu, termwise(((x / c2 - m_) * sp.cos(mu) - (y + n_) * sp.sin(mu)) ** 2 / c2, MF)),
         note="integral over the waterplane from its centroid, pulled back to F")
@@ -575,6 +589,38 @@ d.step("M3-3-sin", (M3c / sn3, Q3), "algebra", uses=("M3-3", "moment-x-3", "mome
 d.quote("118", "(118)", r"$$\int x y d f - \int^1 x y d f = 0 \quad (118)$$", reading=(Pxy - Pf, My3 / tg3), note=EQN,
         condition=EQN, symbols={r"\int x y d f": (Pxy, "int x y df over the dry part of the upper base is P_xy"),
                                 r"\int^1 x y d f": (Pf, "int^1 x y df over the dry part f of the lower base is P_f")})
+# Fig. 21 (lost) with the letters of Fig. 18 (VIII: 'die Buchstaben hier dieselbe Bedeutung haben wie dort'): the
+# upper base ABCD, the water line GH (G on AB, H on BC) cuts off the wet corner B (VII: int_2 df = BGH) and leaves
+# the dry part F = AGHCD (VII: int df = AGHCD); D is the corner of the dry triangle DML of the lower base, projected
+FIG21 = {"A": (0, 1), "B": (1, 1), "C": (1, 0), "D": (0, 0), "G": (R(2, 3), 1), "H": (1, R(1, 4))}
+
+
+def area21(labels):
+    """Area of the polygon of Fig. 21 named by its letters in order (shoelace, exact; built unevaluated, so that
+    the engine, not SymPy on building, carries out the arithmetic)."""
+    pts = [tuple(sp.sympify(v) for v in FIG21[q]) for q in labels]
+    with sp.evaluate(False):
+        return sp.Abs(sp.Add(*[p[0] * q[1] - q[0] * p[1] for p, q in zip(pts, pts[1:] + pts[:1])])) / 2
+
+
+with sp.evaluate(False):
+    F21 = area21("ABCD") - area21("BGH")  # the dry part of the upper base: the base less the wet triangle
+F_LABEL = ("F is the dry part AGHCD of the upper base, as in VII: the area whose moments F x_s, T (120)-(122) and "
+           "V_3 = (F x_s - f x_s^1) tg phi_3 (121b) use; VIII keeps the letters of VII, where G, H lie on the sides "
+           "at the wet corner B (int_2 df = BGH, the remark after (95a)). Checked on a square ABCD with G = (2/3, 1), "
+           "H = (1, 1/4): the dry part is 1 - 1/8 = 7/8")
+d.quote("118-domain", "(118)",
+        r"wo das Zeichen  $\int$  auf die Fläche  $G H D = F$  und das Zeichen  $\int^1$  auf die Fläche  $D M L = f$  "
+        r"auszudehnen ist.",
+        reading=(area21("GHD"), F21),
+        erratum=Erratum("misprint", "medium", r"\text{auf die Fläche } A G H C D = F",
+                        F_LABEL + ". GHD is a triangle with the vertex D, the corner where the dry part f = DML of the "
+                        "lower base lies; its area (5/12 on the square) is not F. Not a scan fault (two letters "
+                        "missing and none misread); medium, since Fig. 21 is lost but VII fixes F, and (118) "
+                        "integrates over F ((95a) over AGHCD).",
+                        corrected_reading=(area21("AGHCD"), F21)),
+        note="read on a square base: the printed domain of int has the area of F, the dry part of the upper base; f = "
+             "DML is the projected dry part of the lower base, as the section's construction says")
 d.quote("119", "(119)", r"$$M_3 = V_3 (x_3 - x_0) \cos \varphi_3 - V_3 \left( \frac{b}{2} - z_3 \right) \sin \varphi_3 = 0 "
         r"\quad (119)$$", reading=(M3c, (X3c - V3c * x0) * c3 - (V3c * b / 2 - Z3c) * sn3), note=EQN)
 d.quote("120", "(120)", r"$$\left. \begin{aligned} V_3 z_3 &= \frac{1}{2} (T - \tau) \operatorname{tg}^2 \varphi_3 - b "
@@ -597,6 +643,15 @@ d.quote("121-dry", "VIII", r"Das Volumen des nicht eintauchenden Körperteils ( 
         r"schief abgestumpften Prismen",
         reading=(V3c, termwise(col3(1), MF) - Mf_x(cut3(1))),
         note="the prism over F under the upper base down to the water plane, less its part below the lower base")
+d.quote("prism-bases", "VIII", r"mit den Grundflächen  $G B H$  und  $M D L$",
+        reading=(area21("GBH"), F21),
+        erratum=Erratum("misprint", "low", r"\text{mit den Grundflächen } A G H C D \text{ und } M D L",
+                        F_LABEL + ". The dry part is the prism over F less the prism over the projected dry part "
+                        "DML of the lower base; GBH is the wet triangle of the upper base, whose prism lies under "
+                        "water. Two labels of the same paragraph name F wrongly (GBH here, GHD in (118)'s domain: "
+                        "118-domain); the scan does not turn AGHCD into GBH; low, since Fig. 21 is lost.",
+                        corrected_reading=(area21("AGHCD"), F21)),
+        note="read on a square base: the first prism's base has the area of the dry part F of the upper base")
 x31 = sp.Symbol("x_3^1", positive=True)      # the letter printed in the definition of the centroid distance of f
 d.domain.update({x31: (R(1, 20), R(3, 10))})
 d.quote("xs1-definition", "VIII", r"$x_3^1$  die Entfernung des Schwerpunktes der Fläche  $f$  von  $M L$",

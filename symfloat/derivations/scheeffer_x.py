@@ -18,11 +18,13 @@ Second condition, pentagonal waterplane (171), (172).  With omega = 45 deg, a = 
 cut triangle, the dry part is the set of columns over the dry part F of the top face down to the water
 plane; its volume 1 - s fixes the tilt, and B below G gives (171) (derived: 2T(z^2 + (1-s)^2) - z^3(1-x)
 - z^2(1-s) is a positive multiple of the derivative of the potential along the diagonal plane).  (171)
-has a root in 0 < x < 1 for (4 - sqrt 2)/7 < s < (4 + sqrt 2)/7 (172, right).  But the text's
-conclusion, a stable pentagonal equilibrium for every 1/2 < s < 0.7735, is wrong: below s = 0.7623 the
-root of (171) lies where the bottom face is already cut (the waterplane there is a hexagon, the clipped
-cube has no pentagonal equilibrium at all), and where two pentagonal roots exist (0.7623 < s < 0.7735)
-one of them is unstable.  The same holds mirrored for s < 1/2.
+has a root in 0 < x < 1 for (4 - sqrt 2)/7 < s < (4 + sqrt 2)/7, but not one alone as (172) says: for
+s > 1/2 one up to the fold s = 0.7623, three from there to (4 + sqrt 2)/7 (where a root leaves through
+x = 0), two up to 5/6 (Sturm counts; claim erratum 172).  The text's conclusion, a stable pentagonal
+equilibrium for every 1/2 < s < 0.7735, is wrong: below s = 0.7623 the root of (171) lies where the
+bottom face is already cut (the waterplane there is a hexagon, the clipped cube has no pentagonal
+equilibrium at all), and where two pentagonal roots exist (0.7623 < s < 0.7735) one of them is unstable.
+The same holds mirrored for s < 1/2.
 
 Triangle and hexagon.  The dry corner is a tetrahedron, a triangular waterplane needs s >= 5/6 (right);
 by (170) on all three faces it lies across a diagonal, and it is always unstable (metacentric height
@@ -41,7 +43,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum
+from symfloat import PRINTED_DIGITS, Cases, Derivation, Eq, Erratum, Holds, RealRoots
 from symfloat.engine.floating_witness import (MEASURED, At, Body, CutWitness, FloatingRootWitness, Root,
                                               potential_slope)
 from symfloat.engine.roots import illinois
@@ -346,13 +348,33 @@ d.step("end-1", (F1v, f_at(sp.Integer(1), s), (6 * (1 - s) - 1) ** 2 / 432), "al
 d.step("172-root", Eq(s172, (4 + r2) / 7), "definition", result=s172, uses=("end-0",),
        note="f(0, s) = 0 on s > 1/2: a root of (171) enters 0 < x through x = 0 (the corner B just touching)")
 d.step("172-check", (f_at(sp.Integer(0), s172), 0), "algebra", uses=("172-root",))
+S_FOLD_BELOW, S_FOLD_ABOVE = sp.Rational("0.7623"), sp.Rational("0.7624")   # the fold of (171) lies between
+COUNT_171 = lambda lo, hi: RealRoots(F171(2 * Tq, zq, xl, s), xl, lo, hi)  # noqa: E731  (T, z of (171) inserted)
 d.quote("172", "(172)",
         r"Die Gleichung 171 hat (zwischen  $x = 0$  und  $x = 1$ ) eine reelle Wurzel, wenn" "\n\n" r"$$s < "
         r"\frac{4 + \sqrt{2}}{7} \quad \text{oder} < 0,7735. \quad (172)$$",
-        reading=(sp.Matrix([s172, F0, F1v]), sp.Matrix([(4 + r2) / 7, 7 * (s - (4 + r2) / 7) * (s - (4 - r2) / 7) / 6,
-                                                        (5 - 6 * s) ** 2 / 432])),
-        note="f(0) < 0 <= f(1) for (4 - sqrt 2)/7 < s < (4 + sqrt 2)/7: a root in 0 < x <= 1 (x = 1 only at s = 5/6). "
-             "Right as a statement about (171); at s = 0.77 there are three roots")
+        reading=Holds(sp.Implies(s < s172, sp.Eq(COUNT_171(0, 1), 1)), {s: (half, 1)}),
+        erratum=Erratum(
+            "claim", "medium",
+            "(171) has exactly one root in 0 < x < 1 for 1/2 < s <= 0.7623, three for 0.7623 < s < (4 + sqrt 2)/7, "
+            "two for (4 + sqrt 2)/7 <= s < 5/6 and none from 5/6 on; (4 + sqrt 2)/7 is where a root enters "
+            "through x = 0 (f(0) = 0), not where the count of roots changes from one",
+            "Sturm counts of (171) (T and z inserted) in 0 < x < 1: one root at s = 1/2, 7/10, 0.762; three at "
+            "0.763, 0.77, 0.773 (at 0.77: x = 0.0858, 0.5684, 0.8768); two at 0.774, 0.8, 0.833; none at 0.834. "
+            "The count jumps from one to three at the fold of (171) (f = df/dx = 0 at x = 0.358, s = 0.762309, "
+            "a root of the resultant of f and df/dx in x), and the two roots left above (4 + sqrt 2)/7 meet at "
+            "x = 1 at s = 5/6 (f(1) = (5 - 6s)^2/432). What (4 + sqrt 2)/7 marks is f(0) = 0: the smallest root "
+            "leaves 0 < x through x = 0 (the corner B just touching). The author gives the result without the "
+            "discussion ('Aus Mangel an Raum'); read as 'one root if s < 0.7735' the sentence is false on "
+            "0.7623 < s < 0.7735; medium, since 'eine reelle Wurzel' may mean 'at least one', which holds.",
+            corrected_reading=Cases(((s <= S_FOLD_BELOW, sp.Eq(COUNT_171(0, 1), 1)),
+                                     ((s >= S_FOLD_ABOVE) & (s < s172), sp.Eq(COUNT_171(0, 1), 3)),
+                                     ((s >= s172) & (s < sp.Rational(5, 6)), sp.Eq(COUNT_171(0, 1), 2)),
+                                     (s >= sp.Rational(5, 6), sp.Eq(COUNT_171(0, 1), 0))),
+                                    {s: (half, 1)}, exhaustive=False)),
+        note="read on 1/2 < s < 1 as a root count (Sturm counts, T and z inserted): where s < (4 + sqrt 2)/7, (171) "
+             "has one root in 0 < x < 1. The correction leaves out the fold, which lies in 0.7623 < s < 0.7624; "
+             "f(0) < 0 <= f(1) there (steps end-0, end-1), so at least one root, as the sentence may also mean")
 d.quote("172-number", "(172)", r"\frac{4 + \sqrt{2}}{7} \quad \text{oder} < 0,7735",
         reading=(s172, sp.Rational("0.7735")), tolerance=PRINTED_DIGITS)
 d.step("first-domain-82", Eq(Sw45, (1 - s) ** 2 / (6 * s * (1 - s) - 1)), "lemma",
@@ -424,7 +446,7 @@ d.quote("one-or-both-faces", "X",
              "cube's faces are alike, so the 'Grundflächen' are that pair: for the trapezoid (a dry edge) the two "
              "faces at the ends of the edge, not the top and bottom of the turn, whose cuts are trapezoids")
 PENT_EVIDENCE = (
-    "(172) is right about (171), but (171) describes an equilibrium only while the bottom face stays uncut, "
+    "(171) describes an equilibrium only while the bottom face stays uncut, "
     "beta = (2 - x)(1 - s)/z < 1. For 1/2 < s < 0.7623 the root of (171) has beta > 1: at s = 3/5 it is "
     "x = 0.5498, beta = 1.214, the bottom corner is dry and the waterplane a hexagon, so (171) does not apply; "
     "the clipped cube has no pentagonal equilibrium there (a search over all orientations finds as its only stable "
@@ -763,7 +785,7 @@ floating("hex-GM", "sign of the metacentric height of the clipped cube, corner u
 
 
 # ==== prediction ==========================================================================================
-S172 = float(d.evaluator("172", (), 1, row=0)())      # (172): (4 + sqrt 2)/7, as read
+S172 = float(d.evaluator("172-number", (), 0)())      # (172): (4 + sqrt 2)/7, as read
 
 
 def _roots_171_float(q):
