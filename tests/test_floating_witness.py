@@ -514,3 +514,22 @@ def test_the_slope_of_the_arm_at_a_heeled_equilibrium():
         with mpmath.workdps(60):
             assert abs(slope.measure(case, method) - mpmath.mpf(sp.N(exact, 60))) < method.tolerance * float(exact)
             assert abs(where.measure(case, method) - mpmath.mpf(3) / 25) < method.tolerance
+
+
+def test_polynomial_roots_part_a_nearly_triple_root_and_keep_rational_roots_exact():
+    from symfloat.engine.roots import polynomial_roots
+    x = sp.Symbol("x")
+    # (x - 3/4)((x - 3/4)^2 - 1e-10): three roots 1e-5 apart, the middle one rational (a pitchfork's shape, as
+    # Scheeffer IX's quartic next to s = 9/32); a grid of step 1e-3 sees one sign change there
+    eps2 = sp.Rational(1, 10 ** 10)
+    poly = sp.Poly(sp.expand((x - sp.Rational(3, 4)) * ((x - sp.Rational(3, 4)) ** 2 - eps2) * (x + 2)), x, domain=sp.QQ)
+    with mpmath.workdps(40):
+        roots = polynomial_roots(poly, mpmath.mpf(10) ** -38)
+        expected = [-2, mpmath.mpf(3) / 4 - mpmath.mpf(10) ** -5, mpmath.mpf(3) / 4, mpmath.mpf(3) / 4 + mpmath.mpf(10) ** -5]
+        assert len(roots) == 4
+        assert all(abs(r - e) < mpmath.mpf(10) ** -36 for r, e in zip(roots, expected))
+        assert roots[2] == mpmath.mpf(3) / 4 and roots[0] == -2         # rational roots come out exact
+    # x^2 - 2: the irrational pair, refined to the tolerance asked
+    with mpmath.workdps(30):
+        r = polynomial_roots(sp.Poly(x ** 2 - 2, x, domain=sp.QQ), mpmath.mpf(10) ** -28)
+        assert abs(r[1] - mpmath.sqrt(2)) < mpmath.mpf(10) ** -27 and abs(r[0] + mpmath.sqrt(2)) < mpmath.mpf(10) ** -27

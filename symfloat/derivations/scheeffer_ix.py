@@ -52,7 +52,7 @@ import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Cases, Derivation, Eq, Erratum, Holds, RealRoots
 from symfloat.model.derivation import Figure, Report
-from symfloat.engine.roots import grid_roots, illinois
+from symfloat.engine.roots import grid_roots, illinois, polynomial_roots
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state
 from symfloat.model.prediction import Prediction
@@ -1675,18 +1675,11 @@ def _region2_roots(sv, nn, k):
     for (k_z, k_n, k_s), q in _terms_136(F_136):
         by_degree[k_z] = by_degree.get(k_z, 0) + q * nn ** k_n * sv ** k_s
     poly = sp.Poly([sp.Rational(by_degree.get(i, 0)) for i in range(max(by_degree), -1, -1)], z, domain=sp.QQ)
-    mp = lambda q: mpmath.mpf(int(q.p)) / int(q.q)  # noqa: E731
     rts = []
     with mpmath.workdps(30):
         for factor, multiplicity in poly.sqf_list()[1]:
-            rational = [lo for (lo, hi), _ in factor.intervals() if lo == hi]
-            for q in rational:                             # divided out: no root is left on an interval's end
-                factor = factor.quo(sp.Poly([1, -q], z, domain=sp.QQ))
-            coefficients = [mp(q) for q in factor.all_coeffs()]
-            found = [mp(q) for q in rational] + [illinois(lambda x: mpmath.polyval(coefficients, x), mp(lo), mp(hi),
-                                                          mpmath.mpf(10) ** -24)
-                                                 for (lo, hi), _ in factor.intervals() if hi > 0]   # positive roots only
-            rts += [float(r_) for r_ in found if r_ > 0 for _ in range(multiplicity)]
+            rts += [float(r_) for r_ in polynomial_roots(factor, mpmath.mpf(10) ** -24) if r_ > 0
+                    for _ in range(multiplicity)]
     sig = float(1 - sv)
     dist = lambda r_: max(2 * sig - r_, r_ - 1, 0)  # noqa: E731
     return sorted(sorted(sorted(rts), key=dist)[:k])

@@ -57,7 +57,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.floating_witness import MEASURED, Body, FloatingRootWitness, FloatingWitness, Root, potential_slope
-from symfloat.engine.roots import illinois
+from symfloat.engine.roots import polynomial_roots
 from symfloat.engine.witness import Case
 from symfloat.geometry.floating import polygon_moments
 from symfloat.model.prediction import Prediction
@@ -996,15 +996,7 @@ def _real_roots(unknown, box, valid):
     nearly triple, and a sign scan on a grid missed it at isolated densities."""
     numerator, denominator = (_univariate(part, unknown, box) for part in _strip_equations()[unknown])
     numerator = numerator.quo(numerator.gcd(denominator)).sqf_part()
-    mp = lambda q: mpmath.mpf(int(q.p)) / int(q.q)  # noqa: E731
-    rational = [lo for (lo, hi), _ in numerator.intervals() if lo == hi]
-    for r in rational:                                     # divided out: no root is left on an interval's end
-        numerator = numerator.quo(sp.Poly([1, -r], unknown, domain=sp.QQ))
-    coefficients = [mp(c) for c in numerator.all_coeffs()]
-    roots = [mp(r) for r in rational] + [illinois(lambda x: mpmath.polyval(coefficients, x), mp(lo), mp(hi),
-                                                  mpmath.mpf(10) ** -38)
-                                         for (lo, hi), _ in numerator.intervals()]   # simple roots: a sign change
-    return sorted(v for v in roots if v > 0 and valid(v))
+    return [v for v in polynomial_roots(numerator, mpmath.mpf(10) ** -38) if v > 0 and valid(v)]
 
 
 def _strip2(A, C, H, sv):

@@ -4,13 +4,15 @@ Witnesses find tilts and densities where a measured quantity (a righting arm, a
 clearance) changes sign.  :func:`illinois` refines one bracket; :func:`grid_roots`
 finds every sign change on a float grid, refines it in float64 and, for
 ``dps > 15``, again at ``dps`` digits in a narrow bracket around the float root
-(``make_f(dps)`` builds the function at that precision).
+(``make_f(dps)`` builds the function at that precision).  :func:`polynomial_roots` isolates the
+real roots of a polynomial with rational coefficients exactly, so that roots a grid cannot part
+(next to a pitchfork, a nearly triple root) stay apart.
 """
 from __future__ import annotations
 
 import mpmath
 
-__all__ = ["illinois", "grid_roots"]
+__all__ = ["illinois", "grid_roots", "polynomial_roots"]
 
 
 def illinois(f, lo, hi, eps):
@@ -84,3 +86,18 @@ def grid_roots(make_f, grid, dps, only=None) -> list:
                 x0 = illinois(fm, lo, hi, mpmath.mpf(10) ** (5 - dps))
         out.append(x0)
     return out
+
+
+def polynomial_roots(poly, eps) -> list:
+    """The distinct real roots of the square-free SymPy ``Poly`` *poly* over QQ, ascending, as mpmath numbers
+    at the working precision: isolated exactly by SymPy's isolating intervals, rational roots exact, each
+    other root refined by :func:`illinois` to relative tolerance *eps* in its interval.  Rational roots are
+    divided out first, so that no root lies on an interval's end and every interval has a sign change."""
+    import sympy as sp
+    mp = lambda q: mpmath.mpf(int(q.p)) / int(q.q)  # noqa: E731
+    rational = [lo for (lo, hi), _ in poly.intervals() if lo == hi]
+    for r in rational:
+        poly = poly.quo(sp.Poly([1, -r], *poly.gens, domain=sp.QQ))
+    coefficients = [mp(c) for c in poly.all_coeffs()]
+    return sorted([mp(r) for r in rational] + [illinois(lambda x: mpmath.polyval(coefficients, x), mp(lo), mp(hi), eps)
+                                               for (lo, hi), _ in poly.intervals()])
