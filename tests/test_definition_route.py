@@ -188,6 +188,21 @@ def test_a_relation_of_closed_forms_has_no_numeric_content():
     assert out.records == [] and not out.measurable and "nothing is left" in out.note
 
 
+def test_a_root_count_is_left_to_the_relation_check():
+    # RealRoots is decided exactly by Sturm sequences on the closed form (Scheeffer X (172)); with T a defining
+    # integral it used to stop the route with "Unsupported by the printer: RealRoots" and count as unmeasured
+    from symfloat.model.relation import Holds, RealRoots
+    _, r = triangle()
+    z = sp.Symbol("z")
+    count = RealRoots(z ** 2 - T, z, 0, sp.oo)
+    out = r.relation_outcome("t", Holds(sp.Eq(count, 1)), {T: a * b ** 3 / 12})
+    assert out.records == [] and not out.measurable and "nothing is left" in out.note
+    # an inequality beside the count is still measured from the definition of T
+    out = r.relation_outcome("t", Holds(sp.Eq(count, 1) & (T > 0)), {T: a * b ** 3 / 12})
+    assert out.measurable and [rec["method"] for rec in out.records] == ["definitions, 15 digits",
+                                                                         "definitions, 30 digits"]
+
+
 def test_the_checker_cross_checks_relations_and_confirms_a_counterexample():
     from symfloat.model.relation import Holds
     g, V = sp.symbols("g V", positive=True)
