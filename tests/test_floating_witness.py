@@ -533,3 +533,14 @@ def test_polynomial_roots_part_a_nearly_triple_root_and_keep_rational_roots_exac
     with mpmath.workdps(30):
         r = polynomial_roots(sp.Poly(x ** 2 - 2, x, domain=sp.QQ), mpmath.mpf(10) ** -28)
         assert abs(r[1] - mpmath.sqrt(2)) < mpmath.mpf(10) ** -27 and abs(r[0] + mpmath.sqrt(2)) < mpmath.mpf(10) ** -27
+
+
+def test_polynomial_terms_built_once_and_evaluated_exactly():
+    from symfloat.engine.roots import polynomial_at, polynomial_terms
+    x, a, s = sp.symbols("x a s")
+    # (a x - s)^2 (x + a/3) at a = 3/2, s = 1/4 against SymPy's own substitution
+    expr = sp.expand((a * x - s) ** 2 * (x + a / 3))
+    terms = polynomial_terms(expr, x, (a, s))
+    got = polynomial_at(terms, x, (Fraction(3, 2), Fraction(1, 4)))
+    assert got == sp.Poly(expr.subs({a: sp.Rational(3, 2), s: sp.Rational(1, 4)}), x, domain=sp.QQ)
+    assert got.degree() == 3 and got.eval(sp.Rational(1, 6)) == 0          # a x = s at x = 1/6

@@ -52,7 +52,7 @@ import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Cases, Derivation, Eq, Erratum, Holds, RealRoots
 from symfloat.model.derivation import Figure, Report
-from symfloat.engine.roots import grid_roots, illinois, polynomial_roots
+from symfloat.engine.roots import grid_roots, illinois, polynomial_at, polynomial_roots, polynomial_terms
 from symfloat.engine.witness import Case, Computed
 from symfloat.geometry.floating import box, floating_state
 from symfloat.model.prediction import Prediction
@@ -1661,8 +1661,7 @@ def _terms_136(quartic_read):
     """The terms ((exponents of z, n, s), coefficient) of F(z) of (136) as read (*quartic_read*, its evaluator), with
     n = (a/b)^2 for a/b: built once, evaluated in Fractions by :func:`_region2_roots`."""
     nu_ = sp.Symbol("n", positive=True)
-    poly = sp.Poly(sp.expand(quartic_read(z, sp.sqrt(nu_), 1, s)), z, nu_, s)
-    return tuple((m, Fraction(int(q.p), int(q.q))) for m, q in poly.terms())
+    return polynomial_terms(sp.expand(quartic_read(z, sp.sqrt(nu_), 1, s)), z, (nu_, s))
 
 
 def _region2_roots(sv, nn, k):
@@ -1671,10 +1670,7 @@ def _region2_roots(sv, nn, k):
     their multiplicity (at s = 23/32, n = 1 the triple root 3/4), isolated exactly by SymPy (square-free factors)
     and refined at 30 digits (to 1e-24), as floats."""
     sv, nn = _exact(sv, nn)
-    by_degree = {}
-    for (k_z, k_n, k_s), q in _terms_136(F_136):
-        by_degree[k_z] = by_degree.get(k_z, 0) + q * nn ** k_n * sv ** k_s
-    poly = sp.Poly([sp.Rational(by_degree.get(i, 0)) for i in range(max(by_degree), -1, -1)], z, domain=sp.QQ)
+    poly = polynomial_at(_terms_136(F_136), z, (nn, sv))
     rts = []
     with mpmath.workdps(30):
         for factor, multiplicity in poly.sqf_list()[1]:

@@ -57,7 +57,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.floating_witness import MEASURED, Body, FloatingRootWitness, FloatingWitness, Root, potential_slope
-from symfloat.engine.roots import polynomial_roots
+from symfloat.engine.roots import polynomial_at, polynomial_roots, polynomial_terms
 from symfloat.engine.witness import Case
 from symfloat.geometry.floating import polygon_moments
 from symfloat.model.prediction import Prediction
@@ -972,21 +972,9 @@ def _strip_equations():
     w = DRY_121B(AV * CV, HV, SV) / (CV * HV) + HV / (2 * TV)
     w2 = w - HV / TV
     third = EQ_122(CV * w ** 3 / 3, CV * w2 ** 3 / 3, AV * CV, HV, SV, w - AV / 2, CV * w2, w2 / 2, CV * w, w / 2)
-    return {unknown: tuple(tuple((m, Fraction(int(c.p), int(c.q)))
-                                 for m, c in sp.Poly(part, unknown, AV, CV, HV, SV).terms())
+    return {unknown: tuple(polynomial_terms(part, unknown, (AV, CV, HV, SV))
                            for part in sp.fraction(sp.together(expr)))
             for unknown, expr in ((WV, second), (TV, third))}
-
-
-def _univariate(terms, unknown, box):
-    """The polynomial in *unknown* of *terms* (monomial exponents, coefficient) at the exact *box* = (A, C, H, s)."""
-    coefficients = {}
-    for (k, *powers), c in terms:
-        for q, e in zip(box, powers):
-            c *= q ** e
-        coefficients[k] = coefficients.get(k, 0) + c
-    top = max(coefficients)
-    return sp.Poly([sp.Rational(coefficients.get(k, 0)) for k in range(top, -1, -1)], unknown, domain=sp.QQ)
 
 
 def _real_roots(unknown, box, valid):
@@ -994,7 +982,7 @@ def _real_roots(unknown, box, valid):
     *valid* holds, at 40 digits: the numerator's square-free part without the denominator's roots, isolated exactly
     by SymPy.  Exact isolation keeps the roots of a pitchfork apart: next to 9/32 the edge-up root of (103b) is
     nearly triple, and a sign scan on a grid missed it at isolated densities."""
-    numerator, denominator = (_univariate(part, unknown, box) for part in _strip_equations()[unknown])
+    numerator, denominator = (polynomial_at(part, unknown, box) for part in _strip_equations()[unknown])
     numerator = numerator.quo(numerator.gcd(denominator)).sqf_part()
     return [v for v in polynomial_roots(numerator, mpmath.mpf(10) ** -38) if v > 0 and valid(v)]
 

@@ -6,13 +6,18 @@ finds every sign change on a float grid, refines it in float64 and, for
 ``dps > 15``, again at ``dps`` digits in a narrow bracket around the float root
 (``make_f(dps)`` builds the function at that precision).  :func:`polynomial_roots` isolates the
 real roots of a polynomial with rational coefficients exactly, so that roots a grid cannot part
-(next to a pitchfork, a nearly triple root) stay apart.
+(next to a pitchfork, a nearly triple root) stay apart; :func:`polynomial_terms` and
+:func:`polynomial_at` build such a polynomial once with symbolic parameters and evaluate it at
+exact values.
 """
 from __future__ import annotations
 
-import mpmath
+from fractions import Fraction
 
-__all__ = ["illinois", "grid_roots", "polynomial_roots"]
+import mpmath
+import sympy as sp
+
+__all__ = ["illinois", "grid_roots", "polynomial_roots", "polynomial_terms", "polynomial_at"]
 
 
 def illinois(f, lo, hi, eps):
@@ -93,7 +98,6 @@ def polynomial_roots(poly, eps) -> list:
     at the working precision: isolated exactly by SymPy's isolating intervals, rational roots exact, each
     other root refined by :func:`illinois` to relative tolerance *eps* in its interval.  Rational roots are
     divided out first, so that no root lies on an interval's end and every interval has a sign change."""
-    import sympy as sp
     mp = lambda q: mpmath.mpf(int(q.p)) / int(q.q)  # noqa: E731
     rational = [lo for (lo, hi), _ in poly.intervals() if lo == hi]
     for r in rational:
@@ -101,3 +105,22 @@ def polynomial_roots(poly, eps) -> list:
     coefficients = [mp(c) for c in poly.all_coeffs()]
     return sorted([mp(r) for r in rational] + [illinois(lambda x: mpmath.polyval(coefficients, x), mp(lo), mp(hi), eps)
                                                for (lo, hi), _ in poly.intervals()])
+
+
+def polynomial_terms(expr, unknown, parameters) -> tuple:
+    """The terms ``((k, e_1, ..., e_m), c)`` of *expr*, a polynomial in *unknown* and the symbols *parameters*
+    with rational coefficients: ``c unknown^k p_1^e_1 ... p_m^e_m``, ``c`` a Fraction.  Built once; evaluated
+    at exact parameter values by :func:`polynomial_at`."""
+    return tuple((m, Fraction(int(c.p), int(c.q))) for m, c in sp.Poly(expr, unknown, *parameters).terms())
+
+
+def polynomial_at(terms, unknown, values):
+    """The polynomial in *unknown* over QQ (a SymPy ``Poly``) of *terms* (:func:`polynomial_terms`) at the exact
+    parameter *values* (ints or Fractions, in the order of the parameters)."""
+    coefficients = {}
+    for (k, *powers), c in terms:
+        for q, e in zip(values, powers):
+            c *= q ** e
+        coefficients[k] = coefficients.get(k, 0) + c
+    return sp.Poly([sp.Rational(coefficients.get(k, 0)) for k in range(max(coefficients), -1, -1)], unknown,
+                   domain=sp.QQ)
