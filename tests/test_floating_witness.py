@@ -47,6 +47,12 @@ EXACT = {                                               # closed forms at the ca
     "waterplane tensor, xz": sp.Integer(0),             # the waterplane is horizontal: no z extent
     "waterplane tensor, yz": sp.Integer(0),
     "waterplane tensor, zz": sp.Integer(0),
+    # an unmarked body is split by the water plane itself: the lower part is all of the immersed part (volume
+    # a b s c = 12/5, its centroid s c / 2 = 1/5 deep), the upper part is empty
+    "lower part volume": sp.Rational(12, 5),
+    "lower part moment": sp.Rational(12, 5) * sp.Rational(1, 5),
+    "upper part volume": sp.Integer(0),
+    "upper part moment": sp.Integer(0),
 }
 
 
@@ -544,3 +550,57 @@ def test_polynomial_terms_built_once_and_evaluated_exactly():
     got = polynomial_at(terms, x, (Fraction(3, 2), Fraction(1, 4)))
     assert got == sp.Poly(expr.subs({a: sp.Rational(3, 2), s: sp.Rational(1, 4)}), x, domain=sp.QQ)
     assert got.degree() == 3 and got.eval(sp.Rational(1, 6)) == 0          # a x = s at x = 1/6
+
+
+# ---- where the water plane crosses a side, and the immersed part split at the water line's lowest point ------------
+# The tilted box of the wedges above (W = 2 across y, H = 3 high, L = 1 long, half immersed, up (0, 1/4, 1)): the water
+# plane passes through the centre, so the water line meets the side y = +1 at z = -1/4 and the side y = -1 at
+# z = +1/4 (z = -y/4): from the bottom z = -3/2 their immersed lengths are 5/4 and 7/4.  Marked with the upright
+# direction z, the immersed part splits at z = -1/4 into the block 1 x 2 x 5/4 (volume 5/2, centroid at z = -7/8, so
+# 7/8 * 4/sqrt 17 below the water plane u . p = 0) and the triangle (-1, -1/4), (1, -1/4), (-1, 1/4) times L (volume
+# 1/2, centroid (y, z) = (-1/3, -1/12), depth (1/12 + 1/12) * 4/sqrt 17); the two moments add up to V times the
+# depth of B, 3 * 109/(36 sqrt 17) (B from the two centroids).
+SPLIT_EXACT = {
+    "lower part volume": sp.Rational(5, 2), "lower part moment": sp.Rational(5, 2) * sp.Rational(7, 2) / sp.sqrt(17),
+    "upper part volume": sp.Rational(1, 2), "upper part moment": sp.Rational(1, 2) * sp.Rational(2, 3) / sp.sqrt(17),
+}
+
+
+@pytest.mark.parametrize("quantity", sorted(SPLIT_EXACT))
+def test_the_immersed_part_of_a_tilted_box_split_at_the_lowest_point_of_its_water_line(quantity):
+    from symfloat.engine.floating_witness import Marked
+    w = FloatingWitness(quantity, quantity, ("f",), (TILTED,), body=Marked.of(Body.box(L_, W_, H_), (0, 0, 1)),
+                        up=(0, sp.Rational(1, 4), 1), density=S, quantity=quantity)
+    for method in w.methods:
+        with mpmath.workdps(50):
+            err = abs(w.measure(TILTED, method) - mpmath.mpf(sp.N(SPLIT_EXACT[quantity], 50)))
+        assert err < (1e-13 if method.dps <= 15 else 1e-35), (quantity, method.name, err)
+
+
+def test_the_split_parts_make_up_the_immersed_part():
+    from symfloat.engine.floating_witness import Marked
+    parts = (MEASURED["lower part moment"] + MEASURED["upper part moment"]
+             - MEASURED["immersed volume"] * MEASURED["B below water"],
+             MEASURED["lower part volume"] + MEASURED["upper part volume"] - MEASURED["immersed volume"])
+    w = FloatingWitness("sum", "", ("f",), (TILTED,), body=Marked.of(Body.box(L_, W_, H_), (0, 0, 1)),
+                        up=(0, sp.Rational(1, 4), 1), density=S, quantity=parts)
+    assert max(abs(v) for v in w.measure(TILTED, w.methods[1])) < 1e-35
+    # marked along the tilted up vector itself, the plane is the water plane: nothing lies above it
+    w = FloatingWitness("up", "", ("f",), (TILTED,), body=Marked.of(Body.box(L_, W_, H_), (0, sp.Rational(1, 4), 1)),
+                        up=(0, sp.Rational(1, 4), 1), density=S, quantity="upper part volume")
+    assert abs(w.measure(TILTED, w.methods[1])) < 1e-35
+
+
+def test_where_the_water_plane_crosses_the_sides_of_a_tilted_box():
+    from symfloat.engine.floating_witness import crossing
+    up = (0, sp.Rational(1, 4), 1)
+    for point, exact in (((0, 1, -H_ / 2), sp.Rational(5, 4)), ((0, -1, -H_ / 2), sp.Rational(7, 4)),
+                         ((0, 0, -H_ / 2), sp.Rational(3, 2))):       # the centre line: the plane passes through 0
+        w = FloatingWitness("x", "", ("f",), (TILTED,), body=Body.box(L_, W_, H_), up=up, density=S,
+                            quantity=crossing(up, point, (0, 0, 1)))
+        for method in w.methods:
+            assert abs(float(w.measure(TILTED, method)) - float(exact)) < 1e-14, (point, method.name)
+    # along the width, at the height of the bottom: the plane y/4 + z = 0 meets z = -3/2 at y = 6, outside the box
+    w = FloatingWitness("y", "", ("f",), (TILTED,), body=Body.box(L_, W_, H_), up=up, density=S,
+                        quantity=crossing(up, (0, 0, -H_ / 2), (0, 1, 0)))
+    assert abs(float(w.measure(TILTED, w.methods[0])) - 6) < 1e-13

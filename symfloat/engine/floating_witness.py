@@ -726,3 +726,76 @@ class SeriesWitness(FloatingRootWitness):
 
 
 __all__ += ["SeriesWitness", "SERIES_METHODS", "series_coefficient"]
+
+
+# ---- where the water plane crosses a line of the body; the immersed part split at the water line's lowest point ----
+from ..geometry.floating import body_volume_centroid, submerged  # noqa: E402
+
+
+def crossing(up, point, direction):
+    """The parameter lam at which the water plane meets the body-frame line ``point + lam direction``, as an
+    expression in ``MEASURED["water level"]`` (t) and the up vector: u . (point + lam direction) = t with
+    u = up/|up| gives lam = (|up| t - up . point)/(up . direction).  From a bottom corner up a side of a heeled
+    prism, the immersed length of that side."""
+    up, point, direction = (sp.Matrix(v) for v in (up, point, direction))
+    return (sp.sqrt(up.dot(up)) * MEASURED["water level"] - up.dot(point)) / up.dot(direction)
+
+
+@dataclass(frozen=True)
+class Marked(Body):
+    """A :class:`Body` (a polyhedron) with a direction marked on it: ``direction`` (body frame, SymPy expressions in
+    the case's parameters), the up vector of the position it is heeled from.  The quantities ``lower part ...`` and
+    ``upper part ...`` split its immersed part by the plane normal to that direction through the lowest point of
+    the water line (a heeled box lying on a face: the rectangle below the lower end of the water line, the
+    triangle above it).  An unmarked body is split along the up vector, by the water plane itself: all of the
+    immersed part is the lower part."""
+
+    direction: tuple = (0, 0, 1)
+
+    @classmethod
+    def of(cls, body, direction):
+        return cls(body.kind, body.dims, tuple(direction))
+
+    def build(self, params, dps):
+        poly = Body(self.kind, self.dims).build(params, dps)
+        if isinstance(poly, Cylinder):
+            raise ValueError("a marked body is a polyhedron, not a cylinder")
+        return _MarkedBuilt(poly, body_volume_centroid(poly)[1], tuple(number(x, params, dps) for x in self.direction))
+
+
+@dataclass(frozen=True)
+class _MarkedBuilt(_Built):
+    """A built polyhedron (``poly``, its centroid ``G``) with its marked ``direction``."""
+
+    direction: tuple
+
+
+def _split_part(st, body, upper):
+    """Volume and moment (volume times the depth of its centroid below the water plane) of the immersed part
+    below (``upper`` False) or above the plane normal to the body's marked direction (the up vector when it has
+    none) through the lowest point of the water line along that direction."""
+    if isinstance(body, Cylinder):
+        raise ValueError("the immersed part is split on a polyhedron, not a cylinder")
+    poly = body.poly if isinstance(body, _Built) else body
+    n = _unit(getattr(body, "direction", st.u), poly.dps)
+    level = min(_dot(n, p) for p in submerged(poly, st.u, st.t).waterplane.polygon)
+    immersed = clip_below(poly, st.u, st.t)
+    part = clip_below(immersed, tuple(-x for x in n), -level) if upper else clip_below(immersed, n, level)
+    volume, centroid = volume_centroid(part)
+    return volume, (volume * (st.t - _dot(st.u, centroid)) if centroid is not None else volume)
+
+
+SPLIT_QUANTITIES = {
+    "lower part volume": ("volume of the immersed part below the plane normal to the marked direction through the "
+                          "lowest point of the water line (Marked)", lambda st, body: _split_part(st, body, False)[0]),
+    "lower part moment": ("its volume times the depth of its centroid below the water plane (the work to lift it to "
+                          "the surface per unit weight)", lambda st, body: _split_part(st, body, False)[1]),
+    "upper part volume": ("volume of the immersed part above that plane (Marked)",
+                          lambda st, body: _split_part(st, body, True)[0]),
+    "upper part moment": ("its volume times the depth of its centroid below the water plane",
+                          lambda st, body: _split_part(st, body, True)[1]),
+}
+QUANTITIES.update(SPLIT_QUANTITIES)
+MEASURED.update({name: sp.Symbol(name) for name in SPLIT_QUANTITIES})
+
+__all__ += ["crossing", "Marked", "SPLIT_QUANTITIES"]
