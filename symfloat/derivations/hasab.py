@@ -11,10 +11,10 @@ the energy method is shown equal to the metacentric criterion and to Duhamel's c
 (section III there): the exact energy of the heeled prism is Scheeffer's V1 n of (13).  The remark's second
 position is the prism standing upright (the edges of length l vertical).
 
-Witnesses: exact clipping of the floating prism (``symfloat.geometry.floating``): energies from the
-clipped immersed part (potential = height of G above B), the second-order coefficient by extrapolated
-finite differences of the clipped potential, the density thresholds by root-finding on the clipped
-metacentric height.
+Witnesses: exact clipping of the floating prism (``symfloat.engine.floating_witness``): energies from the
+clipped immersed part and its two pieces at the lower end of the water line, the sides where the water plane
+crosses them, the second-order coefficient interpolated from the clipped potential at small heels, the density
+thresholds as zeros of the clipped metacentric height.
 """
 from fractions import Fraction
 import math
@@ -24,9 +24,10 @@ import numpy as np
 import sympy as sp
 
 from symfloat import Derivation, Erratum, Holds, Iff, Prediction
-from symfloat.engine.floating_witness import QUANTITIES, Body, FloatingWitness
-from symfloat.engine.witness import Case, Computed, Precision
-from symfloat.geometry.floating import box, clip_below, floating_state, volume_centroid
+from symfloat.engine.floating_witness import (MEASURED, PART, QUANTITIES, SERIES_METHODS, Body, Combined,
+                                              FloatingRootWitness, FloatingWitness, Marked, Root, SeriesWitness,
+                                              crossing)
+from symfloat.engine.witness import Case
 from symfloat.model.source import get_source
 
 rho, al, l, g = sp.symbols("varrho alpha l g", positive=True)
@@ -250,105 +251,44 @@ d.quote("remark-position", "Megjegyzés", "amikor az 1 hosszúságú élek függ
              "face; its printed condition (the upper threshold Ru) is compared with the lying prism's")
 
 
-# ---- witnesses ------------------------------------------------------------------------------------
-
-def _prec(dps):
-    return None if dps <= 15 else dps
-
-
-def _f(v):
-    return Fraction(str(v))
-
-
-def _mpf(q):
-    q = Fraction(q)
-    return mpmath.mpf(q.numerator) / q.denominator
-
-
-def state(case, dps, q=None, tilt=None):
-    """The clipped prism (box 1 x 1 x l) floating at density rho, heeled with tg alpha = q (exact) or by the
-    angle tilt; returns the floating state and the body.  The side xi = +1/2 dips."""
-    body = box(1, 1, _f(case.params[l]), _prec(dps))
-    if tilt is not None:
-        u = (-mpmath.sin(tilt), mpmath.cos(tilt), 0) if dps > 15 else (-__import__("math").sin(tilt),
-                                                                        __import__("math").cos(tilt), 0)
-    else:
-        u = (-(q or 0), 1, 0)
-    return floating_state(body, u, _f(case.params[rho])), body
-
-
-def energies(case, dps):
-    """Energies from the clipped prism: prism weight times the height of G above the water, water weight
-    times the depth of the centroid of the immersed part and of its rectangle (eta <= y)."""
-    q = Fraction(case.data["q"])
-    r, L, G_ = _f(case.params[rho]), _mpf(_f(case.params[l])), _mpf(_f(case.params[g]))
-    st, body = state(case, dps, q)
-    u, tt = st.u, st.t
-    height = lambda p: sum(ui * pi for ui, pi in zip(u, p)) - tt
-    # the immersed lengths of the sides xi = +-1/2 (body y = eta - 1/2): where the plane u.p = t meets them
-    h_ = mpmath.mpf(1) / 2 if dps > 15 else 0.5
-    side = lambda xv: (tt - u[0] * xv) / u[1] + h_
-    xv, yv = side(h_), side(-h_)
-    rect = clip_below(clip_below(body, u, tt), (0, 1, 0), yv - h_)
-    Vr, cr = volume_centroid(rect)
-    E_w = G_ * L * (st.volume / L) * (-height(st.B))        # displaced water: weight * depth of B
-    E_r = G_ * Vr * (-height(cr))
-    return {"prism": G_ * L * _mpf(r) * height(st.G), "water": E_w, "rect": E_r, "tri": E_w - E_r,
-            "x": xv, "y": yv, "pot": st.potential}
-
-
-def second_order(case, dps):
-    """c0 + c2 alpha^2 (per l g) with c0 = rho * potential(0) and c2 = lim (E(h) - E(0))/h^2 from the clipped
-    potential (Neville extrapolation; at 50 digits clipping at 90 digits, h = 1e-10 .. 1e-10/32; in float64
-    h = 1e-2 .. 1e-2/8: the draught's tolerance, 1e-13 of the height, over E(h) - E(0) ~ 1e-6 and the
-    truncation ~h^4 bound the error by about 1e-7 of c2 alpha^2, hence the float64 tolerance 1e-5)."""
-    r = _mpf(_f(case.params[rho]))
-    A = mpmath.atan(_mpf(Fraction(case.data["q"])))
-    p = 90 if dps > 15 else 15
-    with mpmath.workdps(p):
-        E = lambda h: r * state(case, p, tilt=h)[0].potential
-        E0_ = r * state(case, p, q=0)[0].potential
-        hs = [(mpmath.mpf("1e-10") if p > 15 else 1e-2) / 2 ** j for j in range(6 if p > 15 else 4)]
-        ps = [(E(h) - E0_) / h ** 2 for h in hs]
-        for j in range(1, len(hs)):
-            ps = [(hs[i + j] * ps[i] - hs[i] * ps[i + 1]) / (hs[i + j] - hs[i]) for i in range(len(ps) - 1)]
-        return +(E0_ + ps[0] * A ** 2)
-
-
-ECASES = tuple(Case({rho: r, l: 4, g: sp.Rational(981, 100), al: sp.atan(q)}, {"q": q},
-                    f"rho = {r}, l = 4, g = 9.81, tg alpha = {q}")
+# ---- witnesses: the prism clipped exactly (symfloat.engine.floating_witness) -----------------------------------
+# The prism is the box 1 x 1 x l, the y axis of the box up when it lies on a face (eta = y + 1/2); heeled with
+# tg alpha the side xi = +1/2 dips.  Marked with its upright up, its immersed part splits at the lower end of the
+# water line (the side xi = -1/2) into the rectangle ABG1I and the triangle IG1H1.  Energies: weight times the height
+# of the centre of gravity above the water, or weight of a part of the displaced water times its depth (its moment).
+M = MEASURED
+LYING = Body.box(1, 1, l)
+HEELED = Marked.of(LYING, (0, 1, 0))
+UPRIGHT_UP, UP = (0, 1, 0), (-sp.tan(al), 1, 0)
+PRISM = g * l * rho * M["G above water"]               # the prism's weight l g rho times the height of G
+WATER = g * M["immersed volume"] * M["B below water"]  # the displaced water's weight times the depth of B
+SIDE_X = crossing(UP, (half, -half, 0), (0, 1, 0))     # the water line on the dipping side, above the bottom
+SIDE_Y = crossing(UP, (-half, -half, 0), (0, 1, 0))    # on the rising side
+ECASES = tuple(Case({rho: r, l: 4, g: sp.Rational(981, 100), al: sp.atan(q)},
+                    label=f"rho = {r}, l = 4, g = 9.81, tg alpha = {q}")
                for r, q in ((sp.Rational(1, 2), sp.Rational(1, 5)), (sp.Rational(1, 10), sp.Rational(1, 10)),
                             (sp.Rational(17, 20), sp.Rational(1, 4))))
-
-
-UPRIGHT = tuple(Case({rho: r, l: 4, g: sp.Rational(981, 100)}, {"q": 0}, f"rho = {r}, l = 4, g = 9.81, upright")
+UPRIGHT = tuple(Case({rho: r, l: 4, g: sp.Rational(981, 100)}, label=f"rho = {r}, l = 4, g = 9.81, upright")
                 for r in (sp.Rational(1, 2), sp.Rational(1, 10), sp.Rational(17, 20)))
-
-
-def W(name, description, targets, f, cases=ECASES, methods=None):
-    kw = {"methods": methods} if methods else {}
-    d.witness(Computed(name, description, targets, cases, compute=f, **kw))
-
-
-W("prism-energy-upright", "prism weight times height of G above the water, clipped prism", ("E0-prism",),
-  lambda case, dps: energies(case, dps)["prism"], UPRIGHT)
-W("prism-energy", "prism weight times height of G above the water, clipped heeled prism", ("E1-prism",),
-  lambda case, dps: energies(case, dps)["prism"])
-W("water-energy", "displaced water's weight times the depth of the clipped immersed part's centroid",
-  ("E0-water",), lambda case, dps: energies(case, dps)["water"], UPRIGHT)
-W("water-rectangle", "energy of the clipped rectangle eta <= y of the immersed part", ("E1-water",),
-  lambda case, dps: energies(case, dps)["rect"])
-W("water-triangle", "energy of the immersed part minus its rectangle, clipped", ("E2-water",),
-  lambda case, dps: energies(case, dps)["tri"])
-W("total-energy", "prism and water energies of the clipped upright prism", ("E0-total",),
-  lambda case, dps: (lambda e: e["prism"] + e["water"])(energies(case, dps)), UPRIGHT)
-W("side-x", "immersed length of the dipping side, clipped plane", ("x",), lambda case, dps: energies(case, dps)["x"])
-W("side-y", "immersed length of the rising side, clipped plane", ("y",), lambda case, dps: energies(case, dps)["y"])
-W("sides-mean", "mean immersed side length, clipped plane", ("x+y",),
-  lambda case, dps: (lambda e: (e["x"] + e["y"]) / 2)(energies(case, dps)))
-W("sides-difference", "difference of the immersed side lengths, clipped plane", ("x-y",),
-  lambda case, dps: (lambda e: e["x"] - e["y"])(energies(case, dps)))
-LYING = Body.box(1, 1, l)                  # the prism lying, the y axis of the box up (eta = y + 1/2)
+for name, description, targets, cases, up, quantity in (
+        ("prism-energy-upright", "prism weight times the height of G above the water, clipped prism", ("E0-prism",),
+         UPRIGHT, UPRIGHT_UP, PRISM),
+        ("prism-energy", "prism weight times the height of G above the water, clipped heeled prism", ("E1-prism",),
+         ECASES, UP, PRISM),
+        ("water-energy", "displaced water's weight times the depth of the clipped immersed part's centroid",
+         ("E0-water",), UPRIGHT, UPRIGHT_UP, WATER),
+        ("water-rectangle", "g times the moment of the clipped immersed part below the lower end of the water line",
+         ("E1-water",), ECASES, UP, g * M["lower part moment"]),
+        ("water-triangle", "g times the moment of the clipped immersed part above the lower end of the water line",
+         ("E2-water",), ECASES, UP, g * M["upper part moment"]),
+        ("total-energy", "prism and water energies of the clipped upright prism", ("E0-total",), UPRIGHT, UPRIGHT_UP,
+         PRISM + WATER),
+        ("side-x", "immersed length of the dipping side, clipped plane", ("x",), ECASES, UP, SIDE_X),
+        ("side-y", "immersed length of the rising side, clipped plane", ("y",), ECASES, UP, SIDE_Y),
+        ("sides-mean", "mean immersed side length, clipped plane", ("x+y",), ECASES, UP, (SIDE_X + SIDE_Y) / 2),
+        ("sides-difference", "difference of the immersed side lengths, clipped plane", ("x-y",), ECASES, UP,
+         SIDE_X - SIDE_Y)):
+    d.witness(FloatingWitness(name, description, targets, cases, body=HEELED, up=up, density=rho, quantity=quantity))
 DENSITIES = tuple(Case({rho: r, l: 4}, label=f"rho = {r}, l = 4")          # none at a threshold
                   for r in (sp.Rational(1, 2), sp.Rational(1, 10), sp.Rational(17, 20)))
 for name, targets, quantity in (("draught", ("s",), "draught"), ("G-above-water", ("OF",), "G above water"),
@@ -362,40 +302,34 @@ d.witness(FloatingWitness("G-height-heeled", "height of G above the heeled water
 d.witness(FloatingWitness("stability-sign-energy", "sign of the clipped lying prism's metacentric height",
                           ("energy-principle",), DENSITIES, body=LYING, up=(0, 1, 0), density=rho,
                           quantity="stability sign"))
-EXTRAP = (Precision(15, 1e-5), Precision(50, 1e-35))
-W("second-order-energy", "c0 + c2 alpha^2 from the clipped potential by extrapolated finite differences",
-  ("E1-total",), second_order, methods=EXTRAP)
-W("energy-change", "c2 alpha^2 from the clipped potential by extrapolated finite differences", ("Delta-E",),
-  lambda case, dps: second_order(case, dps) - _mpf(_f(case.params[rho])) * state(case, 90 if dps > 15 else 15, q=0)[0].potential,
-  methods=EXTRAP)
 
+# the energy per l g is rho times the height of G above B (weight times it, Scheeffer's V1 n): its value upright and
+# its coefficient of psi^2 interpolated at small heels psi
+psi = sp.Symbol("psi", real=True)
+ENERGY = rho * M["G above B"]
+C0 = FloatingWitness("", "", (), (), body=LYING, up=UPRIGHT_UP, density=rho, quantity=ENERGY)
+C2 = SeriesWitness("", "", (), (), body=LYING, up=(-sp.sin(psi), sp.cos(psi), 0), density=rho, quantity=ENERGY,
+                   series=(psi, 2))
+d.witness(Combined("second-order-energy", "c0 + c2 alpha^2: the clipped prism's energy upright and its alpha^2 "
+                   "coefficient interpolated at small heels", ("E1-total",), ECASES, parts=(C0, C2),
+                   values=(PART[0] + PART[1] * al ** 2,), methods=SERIES_METHODS))
+d.witness(Combined("energy-change", "c2 alpha^2: the alpha^2 coefficient of the clipped prism's energy, interpolated "
+                   "at small heels", ("Delta-E",), ECASES, parts=(C2,), values=(PART[0] * al ** 2,),
+                   methods=SERIES_METHODS))
 
-def threshold(lo, hi, L=None):
-    """Root of the clipped metacentric height in the density, by bisection-safe findroot (Anderson) on
-    [lo, hi]; L given: the prism upright (axis vertical), else lying (heel about the long axis)."""
-    def gm(r, p):
-        if L is None:
-            body = box(1, 1, 4, p)
-            return floating_state(body, (0, 1, 0), r).metacentric_height
-        body = box(1, 1, L, p)
-        return floating_state(body, (0, 0, 1), r).metacentric_height
-
-    def compute(case, dps):
-        p = _prec(dps)
-        if p is None:
-            return mpmath.findroot(lambda r: gm(float(r), None), (lo, hi), solver="anderson")
-        return mpmath.findroot(lambda r: gm(r, p), (mpmath.mpf(lo), mpmath.mpf(hi)), solver="anderson")
-    return compute
-
-
-W("thresholds-lying", "zeros of the clipped metacentric height of the lying prism in rho (root-finding)",
-  ("thresholds",), lambda case, dps: (threshold(0.1, 0.3)(case, dps), threshold(0.7, 0.9)(case, dps)),
-  cases=(Case({}, label="lying prism 1 x 1 x 4"),), methods=(Precision(15, 1e-9), Precision(50, 1e-40)))
-RCASES = (Case({l: 2}, {"L": 2}, "upright prism, l = 2"), Case({l: 5}, {"L": 5}, "upright prism, l = 5"))
-d.witness(Computed("threshold-upright", "upper zero of the clipped metacentric height of the upright prism",
-                   ("remark", "remark-position"), RCASES, methods=(Precision(15, 1e-9), Precision(50, 1e-40)),
-                   compute=lambda case, dps: threshold(0.6, 0.999, case.data["L"])(case, dps)))
-
+# the density thresholds: zeros in rho of the clipped metacentric height, lying (heel about the long axis) and
+# standing upright (the remark)
+GM_ZERO = lambda lo, hi, which: Root.scan("metacentric height", rho, lo, hi, 18, which=which)  # noqa: E731
+d.witness(FloatingRootWitness("thresholds-lying", "zeros of the clipped metacentric height of the lying prism in rho",
+                              ("thresholds",), (Case({l: 4}, label="lying prism 1 x 1 x 4"),), body=LYING, up=(0, 1, 0),
+                              density=rho, quantity=(R1, R2),
+                              roots=((R1, GM_ZERO(sp.Rational(1, 20), sp.Rational(19, 20), "first")),
+                                     (R2, GM_ZERO(sp.Rational(1, 20), sp.Rational(19, 20), "last")))))
+d.witness(FloatingRootWitness("threshold-upright", "upper zero of the clipped metacentric height of the upright prism",
+                              ("remark", "remark-position"), (Case({l: 2}, label="upright prism, l = 2"),
+                                                              Case({l: 5}, label="upright prism, l = 5")),
+                              body=LYING, up=(0, 0, 1), density=rho, quantity=Ru,
+                              roots=((Ru, GM_ZERO(sp.Rational(1, 2), sp.Rational(999, 1000), "last")),)))
 
 
 # ---- predictions: the long square prism lying on a face, and standing upright (the remark) ---------------------
