@@ -198,3 +198,52 @@ def test_the_diagram_axes_repeat_the_wide_hull_fault(meta):
     assert [sp.nsimplify(v.subs(at).doit()) for v in p.reading[1]] == [6, sp.Rational(1, 4)]
     assert [sp.nsimplify(v.subs(at).doit()) for v in p.erratum.corrected_reading[1]] == [sp.Rational(3, 2),
                                                                                       sp.Rational(1, 4)]
+
+
+def _witness(d, name):
+    return next(w for w in d.witnesses if w.name == name)
+
+
+@pytest.mark.parametrize("name, target, right, wrong", [
+    # hasab, heeled: the rectangle ABG1I, l g (rho^2/2 - tg^2 alpha/8) cos alpha (1/8 mutated to 1/6)
+    ("water-rectangle", "E1-water", lambda m: m.l * m.g * (m.rho ** 2 / 2 - sp.tan(m.al) ** 2 / 8) * sp.cos(m.al),
+     lambda m: m.l * m.g * (m.rho ** 2 / 2 - sp.tan(m.al) ** 2 / 6) * sp.cos(m.al)),
+    # the triangle IG1H1 with the factor l g restored, l g tg^2 alpha/6 cos alpha (1/6 mutated to 1/5)
+    ("water-triangle", "E2-water", lambda m: m.l * m.g * sp.tan(m.al) ** 2 / 6 * sp.cos(m.al),
+     lambda m: m.l * m.g * sp.tan(m.al) ** 2 / 5 * sp.cos(m.al)),
+    # the rising side y = rho - tg alpha/2 (1/2 mutated to 1/3)
+    ("side-y", "y", lambda m: m.rho - sp.tan(m.al) / 2, lambda m: m.rho - sp.tan(m.al) / 3),
+    # Delta E = (rho^2 - rho + 1/6) alpha^2/4 per l g (1/4 mutated to 1/5)
+    ("energy-change", "Delta-E", lambda m: (m.rho ** 2 - m.rho + sp.Rational(1, 6)) * m.al ** 2 / 4,
+     lambda m: (m.rho ** 2 - m.rho + sp.Rational(1, 6)) * m.al ** 2 / 5),
+    # the remark's upper threshold with the radical restored, against the printed one without it
+    ("threshold-upright", "remark", lambda m: (3 * m.l + sp.sqrt(9 * m.l ** 2 - 6)) / (6 * m.l),
+     lambda m: (3 * m.l + 9 * m.l ** 2 - 6) / (6 * m.l)),
+])
+def test_the_declared_witnesses_of_hasab_refute_mutated_readings(hasab, name, target, right, wrong):
+    d, mod = hasab
+    E = sp.Symbol("E")
+    out = _witness(d, name).run({target: (E, right(mod)), f"{target}#mutated": (E, wrong(mod))})
+    assert out[target].agrees and not out[f"{target}#mutated"].agrees
+    assert len(out[target].records) >= 2
+
+
+@pytest.mark.parametrize("name, target, right, wrong", [
+    # metazentrum: z_M = -d/2 + b^2/(3d) by the heeled box's righting arm (3d mutated to 2d)
+    ("metacentre-heel", "z_M", lambda m: -m.d / 2 + m.b ** 2 / (3 * m.d), lambda m: -m.d / 2 + m.b ** 2 / (2 * m.d)),
+    # the density ratio d/(2c) by the share of the box below the draught (2c mutated to 3c)
+    ("density-ratio", "density", lambda m: m.d / (2 * m.c), lambda m: m.d / (3 * m.c)),
+])
+def test_the_declared_witnesses_of_metazentrum_refute_mutated_readings(meta, name, target, right, wrong):
+    d, mod = meta
+    E = sp.Symbol("E")
+    out = _witness(d, name).run({target: (E, right(mod)), f"{target}#mutated": (E, wrong(mod))})
+    assert out[target].agrees and not out[f"{target}#mutated"].agrees
+    assert len(out[target].records) >= 2
+
+
+def test_the_witnesses_are_declarations():
+    """No one-off measurement code in the two modules: each witness names a body, a quantity and its cases."""
+    from symfloat.engine.witness import Computed
+    for d, _ in (load("hasab"), load("metazentrum")):
+        assert not [w.name for w in d.witnesses if isinstance(w, Computed)]

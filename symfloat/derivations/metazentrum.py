@@ -9,20 +9,20 @@ read to first order in phi as the lesson does), the metacentre from it, and
 the stability function e from z_M >= z_G.  The closing sentence ("größer als
 eins" for stability) and the Vasa remark are checked as claims.
 
-Witnesses: the floating box clipped exactly (``symfloat.geometry.floating``):
-draught, centres of buoyancy and gravity, the waterplane's I_min / V - (G - B)
-upright, and the righting arm at small heels extrapolated to phi -> 0.
+Witnesses: the floating box clipped exactly (``symfloat.engine.floating_witness``):
+immersed volume, centres of buoyancy and gravity, the waterplane's I_min / V -
+(G - B) upright, the righting arm at small heels extrapolated to phi -> 0, and
+the share of the volume below the draught.
 """
 from fractions import Fraction
 
-import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum, Holds, Prediction
-from symfloat.engine.floating_witness import Body, FloatingWitness
-from symfloat.engine.witness import Case, Computed, Precision
+from symfloat.engine.floating_witness import (LIMIT_METHODS, MEASURED, PART, Body, Combined, CutWitness,
+                                              FloatingWitness, potential_slope)
+from symfloat.engine.witness import Case
 from symfloat.model.prediction import box_uprights
-from symfloat.geometry.floating import clip_below, floating_state, right_prism, volume_centroid
 
 a, b, c, d = sp.symbols("a b c d", positive=True)
 phi = sp.Symbol("phi", positive=True)
@@ -280,99 +280,52 @@ dv.quote("F_b=F_g", "formula list", r"$F_b = \rho_w V_w g = M_w g = M_s g = F_g$
                          "M_b g, and M_b = M_s. A naming slip of the lesson.",
                          corrected_reading=(F_b, rho_w * V_b * g, M_b * g, M_s * g, F_g)))
 
-# ---- witnesses -------------------------------------------------------------------------------
-
-
-def _hull(case, dps):
-    """The box as a horizontal prism: cross-section 2b x 2c in (x, y), length 2a along z."""
-    B, C, A = (Fraction(str(case.params[s])) for s in (b, c, a))
-    return right_prism([(-B, -C), (B, -C), (B, C), (-B, C)], 2 * A, None if dps <= 15 else dps)
-
-
-def _s(case):
-    return Fraction(str(case.params[d])) / (2 * Fraction(str(case.params[c])))
-
-
-def upright(case, dps):
-    body = _hull(case, dps)
-    st = floating_state(body, (0, 1, 0), _s(case))
-    return st, body
-
-
-def measured(case, dps):
-    st, body = upright(case, dps)
-    zG = st.G[1] - st.t
-    zB = st.B[1] - st.t
-    return {"zG": zG, "zB": zB, "V": st.volume, "GM": st.metacentric_height, "body": body, "t": st.t}
-
-
-def righting_limit(case, dps):
-    """lim m(psi)/psi of the clipped heeled box (Neville from psi = h .. h/2^k), 90 digits at dps 50."""
-    def arm(t, p):
-        body = _hull(case, p)
-        sin, cos = (mpmath.sin, mpmath.cos) if p > 15 else (__import__("math").sin, __import__("math").cos)
-        st = floating_state(body, (sin(t), cos(t), 0), _s(case))
-        return ((st.B[0] - st.G[0]) * (-st.u[1]) + (st.B[1] - st.G[1]) * st.u[0]) / t
-
-    def neville(f, h, levels):
-        xs = [h / 2 ** j for j in range(levels + 1)]
-        ps = [f(q) for q in xs]
-        for j in range(1, levels + 1):
-            ps = [(xs[i + j] * ps[i] - xs[i] * ps[i + 1]) / (xs[i + j] - xs[i]) for i in range(len(ps) - 1)]
-        return ps[0]
-    if dps <= 15:
-        return neville(lambda q: arm(q, 15), 1e-3, 3)
-    with mpmath.workdps(90):
-        val = neville(lambda q: arm(q, 90), mpmath.mpf("1e-10"), 5)
-    return +val
-
-
+# ---- witnesses: the box clipped exactly (symfloat.engine.floating_witness) -------------------------------------
+# The hull is the box 2a x 2b x 2c (x along the length), upright at the density d/(2c) of the step density-ratio,
+# heeled by psi about the long axis (up (0, sin psi, cos psi)); z up from the water surface.
+M = MEASURED
+HULL = Body.box(2 * a, 2 * b, 2 * c)
+UPRIGHT_UP, psi = (0, 0, 1), sp.Symbol("psi", real=True)
+HEEL = (0, sp.sin(psi), sp.cos(psi))
 CASES = (Case({a: 4, b: 1, c: 1, d: 1, rho_w: 1}, label="a=4, b=1, c=1, d=1 (half immersed, unstable)"),
          Case({a: 5, b: sp.Rational(3, 2), c: 1, d: sp.Rational(1, 2), rho_w: 1},
               label="a=5, b=3/2, c=1, d=1/2 (stable)"),
          Case({a: 3, b: 2, c: sp.Rational(3, 2), d: sp.Rational(5, 2), rho_w: 1},
               label="a=3, b=2, c=3/2, d=5/2 (stable, deep)"))
-LIMIT = (Precision(15, 1e-7), Precision(50, 1e-35))
-dv.witness(FloatingWitness("stability-sign", "sign of the clipped upright box's metacentric height I_min/V - (G - B)",
-                           ("criterion", "e-sign", "criterion-words", "criterion-words-2"), CASES, body=Body.box(2 * a, 2 * b, 2 * c), up=(0, 0, 1),
-                           density=d / (2 * c), quantity="stability sign"))
 
 
-def W(name, description, targets, f, methods=None):
-    kw = {"methods": methods} if methods else {}
-    dv.witness(Computed(name, description, targets, CASES, compute=f, **kw))
+def upright(name, description, targets, quantity):
+    """A quantity of the clipped box floating upright at the density d/(2c)."""
+    return FloatingWitness(name, description, targets, CASES, body=HULL, up=UPRIGHT_UP, density=d / (2 * c),
+                           quantity=quantity)
 
 
-W("metacentre-inertia", "z_M = (I_min/V - (G - B)) + z_G of the clipped upright box", ("z_M",),
-  lambda case, dps: (lambda r: r["GM"] + r["zG"])(measured(case, dps)))
-W("metacentre-heel", "z_M = lim m/phi + z_G: righting arm of the clipped heeled box, extrapolated", ("z_M",),
-  lambda case, dps: righting_limit(case, dps) + measured(case, dps)["zG"], LIMIT)
-W("radius-heel", "BM = lim m/phi + (z_G - z_B) from the clipped heeled box", ("radius",),
-  lambda case, dps: (lambda r: righting_limit(case, dps) + r["zG"] - r["zB"])(measured(case, dps)), LIMIT)
-W("stability-function", "e = d/(2c^2) (I_min/V - (G - B)) of the clipped box", ("e",),
-  lambda case, dps: measured(case, dps)["GM"] * mpmath.mpf(_s(case).numerator) / _s(case).denominator
-  / mpmath.mpf(str(case.params[c])))
-W("centre-of-gravity", "height of G above the water plane, clipped box", ("z_G",),
-  lambda case, dps: measured(case, dps)["zG"])
-W("centre-of-buoyancy", "height of B above the water plane, clipped box", ("z_B",),
-  lambda case, dps: measured(case, dps)["zB"])
-W("displaced-volume", "volume of the clipped immersed part", ("V_b",), lambda case, dps: measured(case, dps)["V"])
-W("displaced-mass", "rho_w times the clipped immersed volume", ("M_b", "M_s", "M_b=M_s"),
-  lambda case, dps: measured(case, dps)["V"])
-
-
-def _density(case, dps):
-    """The density ratio at which the box floats with draught d: clipped volume below the plane at depth d
-    over the whole volume."""
-    body = _hull(case, dps)
-    cc, dd = Fraction(str(case.params[c])), Fraction(str(case.params[d]))
-    return volume_centroid(clip_below(body, (0, 1, 0), dd - cc))[0] / volume_centroid(body)[0]
-
-
-W("density-ratio", "clipped volume below depth d over the box volume", ("density",), _density)
-W("section-area", "clipped immersed volume over the length 2a", ("section",),
-  lambda case, dps: measured(case, dps)["V"] / (2 * mpmath.mpf(str(case.params[a]))))
-
+for name, description, targets, quantity in (
+        ("stability-sign", "sign of the clipped upright box's metacentric height I_min/V - (G - B)",
+         ("criterion", "e-sign", "criterion-words", "criterion-words-2"), "stability sign"),
+        ("metacentre-inertia", "z_M = (I_min/V - (G - B)) + z_G of the clipped upright box", ("z_M",),
+         M["metacentric height"] + M["G above water"]),
+        ("stability-function", "e = d/(2c^2) (I_min/V - (G - B)) of the clipped box", ("e",),
+         d / (2 * c ** 2) * M["metacentric height"]),
+        ("centre-of-gravity", "height of G above the water plane, clipped box", ("z_G",), "G above water"),
+        ("centre-of-buoyancy", "height of B above the water plane, clipped box", ("z_B",), -M["B below water"]),
+        ("displaced-volume", "volume of the clipped immersed part", ("V_b",), "immersed volume"),
+        ("displaced-mass", "rho_w times the clipped immersed volume", ("M_b", "M_s", "M_b=M_s"),
+         rho_w * M["immersed volume"]),
+        ("section-area", "clipped immersed volume over the length 2a", ("section",), M["immersed volume"] / (2 * a))):
+    dv.witness(upright(name, description, targets, quantity))
+# the righting arm over the heel, extrapolated to psi -> 0, and a height of the upright box
+ARM = FloatingWitness("", "", (), (), body=HULL, up=HEEL, density=d / (2 * c), quantity=potential_slope(HEEL, psi),
+                      limit=(psi, 1), methods=LIMIT_METHODS)
+dv.witness(Combined("metacentre-heel", "z_M = lim m/phi + z_G: righting arm of the clipped heeled box, extrapolated",
+                    ("z_M",), CASES, parts=(ARM, upright("", "", (), "G above water")), values=(PART[0] + PART[1],),
+                    methods=LIMIT_METHODS))
+dv.witness(Combined("radius-heel", "BM = lim m/phi + (z_G - z_B) from the clipped heeled box", ("radius",), CASES,
+                    parts=(ARM, upright("", "", (), "G above B")), values=(PART[0] + PART[1],), methods=LIMIT_METHODS))
+# the density at which the box floats with draught d: the share of its volume below the plane d above its bottom
+dv.witness(CutWitness("density-ratio", "clipped volume below depth d over the box volume", ("density",), CASES,
+                      body=HULL, up=UPRIGHT_UP, through=(0, 0, d - c),
+                      quantity=M["immersed volume"] / (2 * a * 2 * b * 2 * c)))
 
 
 # ---- predictions: the box floating upright ------------------------------------------------------------------------
