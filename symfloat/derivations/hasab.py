@@ -295,12 +295,11 @@ for name, targets, quantity in (("draught", ("s",), "draught"), ("G-above-water"
                                 ("stability-sign", ("condition",), "stability sign"),
                                 ("stable-upright", ("ranges",), "stable")):
     d.witness(FloatingWitness(name, f"{QUANTITIES[quantity][0]}, clipped prism lying", targets, DENSITIES,
-                              body=LYING, up=(0, 1, 0), density=rho, quantity=quantity))
+                              body=LYING, up=UPRIGHT_UP, density=rho, quantity=quantity))
 d.witness(FloatingWitness("G-height-heeled", "height of G above the heeled water plane, clipped prism",
-                          ("G-height",), ECASES, body=LYING, up=(-sp.tan(al), 1, 0), density=rho,
-                          quantity="G above water"))
+                          ("G-height",), ECASES, body=LYING, up=UP, density=rho, quantity="G above water"))
 d.witness(FloatingWitness("stability-sign-energy", "sign of the clipped lying prism's metacentric height",
-                          ("energy-principle",), DENSITIES, body=LYING, up=(0, 1, 0), density=rho,
+                          ("energy-principle",), DENSITIES, body=LYING, up=UPRIGHT_UP, density=rho,
                           quantity="stability sign"))
 
 # the energy per l g is rho times the height of G above B (weight times it, Scheeffer's V1 n): its value upright and
@@ -319,17 +318,21 @@ d.witness(Combined("energy-change", "c2 alpha^2: the alpha^2 coefficient of the 
 
 # the density thresholds: zeros in rho of the clipped metacentric height, lying (heel about the long axis) and
 # standing upright (the remark)
-GM_ZERO = lambda lo, hi, which: Root.scan("metacentric height", rho, lo, hi, 18, which=which)  # noqa: E731
+def gm_zero(lo, hi, which):
+    """The first or last zero in rho of the clipped metacentric height, scanned from lo to hi in 18 steps."""
+    return Root.scan("metacentric height", rho, lo, hi, 18, which=which)
+
+
 d.witness(FloatingRootWitness("thresholds-lying", "zeros of the clipped metacentric height of the lying prism in rho",
-                              ("thresholds",), (Case({l: 4}, label="lying prism 1 x 1 x 4"),), body=LYING, up=(0, 1, 0),
-                              density=rho, quantity=(R1, R2),
-                              roots=((R1, GM_ZERO(sp.Rational(1, 20), sp.Rational(19, 20), "first")),
-                                     (R2, GM_ZERO(sp.Rational(1, 20), sp.Rational(19, 20), "last")))))
+                              ("thresholds",), (Case({l: 4}, label="lying prism 1 x 1 x 4"),), body=LYING,
+                              up=UPRIGHT_UP, density=rho, quantity=(R1, R2),
+                              roots=((R1, gm_zero(sp.Rational(1, 20), sp.Rational(19, 20), "first")),
+                                     (R2, gm_zero(sp.Rational(1, 20), sp.Rational(19, 20), "last")))))
 d.witness(FloatingRootWitness("threshold-upright", "upper zero of the clipped metacentric height of the upright prism",
                               ("remark", "remark-position"), (Case({l: 2}, label="upright prism, l = 2"),
                                                               Case({l: 5}, label="upright prism, l = 5")),
                               body=LYING, up=(0, 0, 1), density=rho, quantity=Ru,
-                              roots=((Ru, GM_ZERO(sp.Rational(1, 2), sp.Rational(999, 1000), "last")),)))
+                              roots=((Ru, gm_zero(sp.Rational(1, 2), sp.Rational(999, 1000), "last")),)))
 
 
 # ---- predictions: the long square prism lying on a face, and standing upright (the remark) ---------------------
