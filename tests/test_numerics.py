@@ -6,7 +6,7 @@ from PIL import Image
 
 from symfloat.cli import main
 from symfloat.engine.witness import SectionIntegral
-from symfloat.numerics.bench import methods_for, newton_cotes, run_bench
+from symfloat.numerics.bench import DECLARED, methods_for, newton_cotes, run_bench
 from symfloat.numerics.forms import CATASTROPHIC, STABLE_TOLERANCE, evaluate, forms, scan
 from symfloat.numerics.orders import (HEELS, convergence_witnesses, gauss_legendre_degrees, kink_study,
                                       registry_orders)
@@ -148,3 +148,22 @@ def test_cheapest_prefers_lower_precision_among_near_equal_times():
     assert cheapest(bench, 1e-30)["d/f"][0] == "mpmath, 30 digits"     # within a factor 2: lower precision
     assert cheapest(bench, 1e-12)["d/f"][0] == "float64"
     assert cheapest(bench, 1e-60)["d/f"] is None
+
+
+def test_declared_witnesses_are_measured_with_their_own_methods():
+    """The metazentrum box's declared floating-body witnesses (exact clipping) are benchmarked with the methods
+    they declare, each within its own tolerance of the exact values of the readings (metazentrum, 'Metazentrum
+    eines Quaders'): a witness family dropped from the bench, or a method measured against the wrong
+    reference, fails here."""
+    d, _ = load("metazentrum")
+    bench = run_bench("metazentrum", quick=True)
+    declared = {w.name: w for w in d.witnesses if isinstance(w, DECLARED)}
+    for w in declared.values():
+        assert methods_for(w, d) == tuple(w.methods)
+    ms = [m for m in bench.measurements if m.family == "floating bodies by exact clipping"]
+    assert len({m.witness for m in ms}) >= 8 and all(m.witness in declared for m in ms)
+    assert all(v == "exact" for v in bench.references.values())
+    for m in ms:
+        tolerance = next(x.tolerance for x in declared[m.witness].methods if x.name == m.method)
+        worst = max(e for e in m.errors.values() if e is not None)
+        assert worst < tolerance, (m.witness, m.method, worst)

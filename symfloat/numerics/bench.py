@@ -13,7 +13,11 @@ method that applies to its kind:
 * :class:`~symfloat.engine.witness.HullWitness`: exact rational hull faces, and
   slices by Gauss–Legendre at several orders and precisions;
 * :class:`~symfloat.engine.witness.Computed`: the witness's own computation at
-  15 (float64), 30 and 50 digits, and at 100 digits where no exact reference exists.
+  15 (float64), 30 and 50 digits, and at 100 digits where no exact reference exists;
+* the declared witnesses of floating bodies (:mod:`symfloat.engine.floating_witness`: exact clipping, roots,
+  limits and series) and of plane figures (:mod:`symfloat.engine.figure_witness`): the methods the witness
+  declares (their precisions and steps are tied to its limits and series, so no others apply), the
+  highest-precision one the reference where no exact reference exists.
 
 The reference of a targeted formula is the exact value of its valid reading
 (the reading as printed when no erratum is declared, the corrected reading
@@ -32,6 +36,8 @@ import mpmath
 import sympy as sp
 
 from ..engine.check import _resolved, _substitute
+from ..engine.figure_witness import CurveRoot, FigureWitness
+from ..engine.floating_witness import Combined, FloatingWitness, Joined
 from ..engine.quadrature import Composite, GaussLegendre64, GaussLegendreMP, TanhSinh
 from ..engine.witness import (Computed, ConvergenceOrder, ExactHull, HullSlices, HullWitness, PlaneSections,
                               Precision, SectionIntegral)
@@ -40,7 +46,7 @@ from ..model.relation import is_relation
 from ..registry import load, select
 
 __all__ = ["Measurement", "Bench", "methods_for", "newton_cotes", "run_bench", "DIGITS", "REFERENCE_DPS",
-           "FAMILIES"]
+           "FAMILIES", "DECLARED"]
 
 DIGITS = (15, 30, 50, 100)
 REFERENCE_DPS = 100
@@ -51,7 +57,13 @@ FAMILIES = {
     PlaneSections: "plane-section chords",
     HullWitness: "convex hulls",
     Computed: "floating-geometry computations",
+    FloatingWitness: "floating bodies by exact clipping",
+    Joined: "floating bodies by exact clipping",
+    Combined: "floating bodies by exact clipping",
+    FigureWitness: "plane figures",
+    CurveRoot: "plane figures",
 }
+DECLARED = (FloatingWitness, Joined, Combined, FigureWitness, CurveRoot)   # measured with their own methods
 
 
 @dataclass
@@ -100,6 +112,8 @@ def methods_for(w, d, digits=DIGITS, orders=FLOAT64_ORDERS, panels=PANELS) -> tu
             HullSlices(3, p, 0) for p in digits if p > 15)
     if isinstance(w, Computed):
         return tuple(Precision(p, 0) for p in digits if p < REFERENCE_DPS)
+    if isinstance(w, DECLARED):
+        return tuple(w.methods)
     return ()
 
 
@@ -250,6 +264,8 @@ def _reference_run(w):
         return Precision(REFERENCE_DPS, 0)
     if isinstance(w, HullWitness):
         return ExactHull()
+    if isinstance(w, DECLARED):
+        return max(w.methods, key=lambda m: m.dps)
     return TanhSinh(f"tanh-sinh, {REFERENCE_DPS} digits", 0, "mpmath", REFERENCE_DPS)
 
 
@@ -276,7 +292,7 @@ def bench_derivation(d, bench: Bench, digits=DIGITS, orders=FLOAT64_ORDERS, pane
         if missing:
             ref_values = runs[ref_method.name][0]
             for name, refs in targets.items():
-                kind = "exact" if all(r is not None for r in refs) else f"{REFERENCE_DPS} digits"
+                kind = "exact" if all(r is not None for r in refs) else f"{getattr(ref_method, 'dps', REFERENCE_DPS)} digits"
                 bench.references[f"{d.id}/{name}"] = kind
                 targets[name] = [r if r is not None else _vector(v) for r, v in zip(refs, ref_values)]
         else:

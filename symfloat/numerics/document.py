@@ -66,16 +66,18 @@ def _section_bench(bench, figures):
              "section integrals and plane sections (plus composite Simpson and trapezoid in float64 where the "
              "source's own method is Simpson's rule); exact hull faces and Gauss–Legendre slices for hulls; the "
              "witness's own computation at 15 (float64), 30 and 50 digits for computed witnesses (100 digits only "
-             "where no exact reference exists). The error is relative, against the exact value of the formula's "
-             "valid reading (the print, or its correction where an erratum is declared) at the case's parameters, "
-             f"else against the 100-digit measurement: {n_exact} formulas have an exact reference, "
-             f"{len(bench.references) - n_exact} a 100-digit one (the witness's own 100-digit run: tanh-sinh for "
-             "quadrature, which then shows error 0; for computed witnesses that run is not listed). Times are "
+             "where no exact reference exists); the methods a declared witness of a floating body or a plane figure "
+             "names (float64 and 40 or 50 digits, tied to its limit and series steps). The error is relative, "
+             "against the exact value of the formula's valid reading (the print, or its correction where an "
+             "erratum is declared) at the case's parameters, else against the witness's most precise measurement: "
+             f"{n_exact} formulas have an exact reference, {len(bench.references) - n_exact} a measured one (the "
+             "100-digit run for quadrature, which then shows error 0, and for computed witnesses, where that run "
+             "is not listed; a declared witness's highest precision, which then shows error 0). Times are "
              "wall times of all cases of a witness, median of repeats (they vary from run to run, and so may "
              "the choice of the cheapest method; nothing "
              "else does). A worst error that does not fall with the precision is the witness's own approximation "
              "(the cylinder as a polygon of many sides, a limit by Richardson extrapolation), not rounding.", ""]
-    for family in FAMILIES.values():
+    for family in dict.fromkeys(FAMILIES.values()):
         ms = [m for m in bench.measurements if m.family == family]
         if not ms:
             continue
