@@ -604,3 +604,47 @@ def test_where_the_water_plane_crosses_the_sides_of_a_tilted_box():
     w = FloatingWitness("y", "", ("f",), (TILTED,), body=Body.box(L_, W_, H_), up=up, density=S,
                         quantity=crossing(up, (0, 0, -H_ / 2), (0, 1, 0)))
     assert abs(float(w.measure(TILTED, w.methods[0])) - 6) < 1e-13
+
+
+# ---- the potential's curvature along a turn, derivatives along a parameter ------------------------------------
+# The wall-sided box 1 x 1 x h of the tests above, tilted by phi with no face cut: the arm is
+# sin phi (GM + BM tan^2 phi / 2).
+def test_the_curvature_of_the_potential_is_the_slope_of_the_arm():
+    from symfloat.engine.floating_witness import potential_curvature
+    h, s_ = sp.Rational(137, 100), sp.Rational(9, 10)
+    bm = 1 / (12 * s_ * h)
+    gm = bm - h * (1 - s_) / 2
+    x = sp.Symbol("x")
+    arm = sp.sin(x) * (gm + bm * sp.tan(x) ** 2 / 2)
+    for phi in (0, sp.Rational(1, 5)):
+        w, case = _root_witness(potential_curvature(TILT_UP, PHI), (), params={DENS: s_, PHI: phi})
+        exact = sp.diff(arm, x).subs(x, phi)                # at 0 the upright metacentric height gm
+        for method, tol in zip(w.methods, (1e-12, 1e-30)):
+            assert abs(w.measure(case, method) - sp.N(exact, 50)) <= tol, (phi, method.name)
+    with pytest.raises(ValueError, match="unit rate"):
+        potential_curvature((0, 2 * sp.sin(PHI), 2 * sp.cos(PHI)), PHI)
+
+
+def test_derivatives_along_a_parameter_by_central_differences():
+    from symfloat.engine.floating_witness import Difference, Root
+    d1, d2 = sp.symbols("d1 d2")
+    # I max of the upright 3 x 2 x 1 box is B A^3/12 (the waterplane A x B, A > B): d/dA = B A^2/4, d2/dA2 = B A/2
+    from symfloat.engine.floating_witness import FloatingRootWitness
+    w = FloatingRootWitness("d", "d", ("f",), (CASE,), body=Body.box(A, B, C), up=(0, 0, 1), density=S,
+                            quantity=(d1, d2), roots=((d1, Difference("I max", A, sp.Rational(1, 10))),
+                                                      (d2, Difference("I max", A, sp.Rational(1, 10), order=2))))
+    for method, tol in zip(w.methods, (1e-12, 1e-28)):
+        assert all(abs(v - sp.N(e, 50)) <= tol for v, e in zip(w.measure(CASE, method), (sp.Rational(9, 2), 3))), \
+            method.name
+    # with a root at each point: the tilt at which the top face reaches the water, tan phi_t = 2 h (1 - s), so
+    # d tan(phi_t)/ds = -2 h
+    touch = Root("top clearance", PHI, [0.05 * k for k in range(1, 25)])
+    w, case = _root_witness(d1, ((d1, Difference(sp.tan(PHI), DENS, sp.Rational(1, 100), roots=((PHI, touch),))),),
+                            params={DENS: sp.Rational(9, 10)})
+    for method, tol in zip(w.methods, (1e-9, 1e-28)):
+        assert abs(w.measure(case, method) - sp.N(-2 * sp.Rational(137, 100), 50)) <= tol, method.name
+    with pytest.raises(ValueError, match="order 1 or 2"):
+        Difference("I max", A, 1, order=3)
+    w, case = _root_witness(d1, ((d1, Difference("I max", A, 1)),), params={DENS: sp.Rational(9, 10)})
+    with pytest.raises(ValueError, match="needs its value"):
+        w.measure(case, w.methods[0])

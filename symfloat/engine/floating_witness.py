@@ -489,6 +489,8 @@ class FloatingRootWitness(FloatingWitness):
         return params
 
     def _solve_one(self, params, body, symbol, root, dps):
+        if isinstance(root, Difference):                     # a derivative along a parameter (its block below)
+            return root.value(self, params, body, dps)
         if not isinstance(root, (Root, At)):                 # a value: an expression in what is known
             return sp.sympify(root).xreplace(params)
         at = {**params, **{k: sp.sympify(v).xreplace(params) for k, v in root.at}}
@@ -799,3 +801,59 @@ QUANTITIES.update(SPLIT_QUANTITIES)
 MEASURED.update({name: sp.Symbol(name) for name in SPLIT_QUANTITIES})
 
 __all__ += ["crossing", "Marked", "SPLIT_QUANTITIES"]
+
+
+# ---- the potential's curvature along a turn, derivatives of a quantity along a parameter -----------------------
+def potential_curvature(up, variable):
+    """d^2E/d(variable)^2 of the potential E = u.(G - B) along a turn of the body about a fixed horizontal axis
+    at unit rate (``up(variable)`` a unit vector turning in a plane, so that h = du/dvariable is a unit vector
+    and dh/dvariable = -u), as an expression in :data:`MEASURED`: I_h/V - E, I_h the waterplane's moment about
+    its centroidal line along the axis (normal to h).  dE/dvariable = h.(G - B) (:func:`potential_slope`); B
+    moves by the wedges, V dB/dvariable = -I_h h along h, so the slope of the righting arm is the metacentric
+    height for that axis, at any tilt (an extremum of the arm is a root of it)."""
+    up = sp.Matrix(up)
+    h = sp.diff(up, variable)
+    if sp.simplify(up.dot(up) - 1) != 0 or sp.simplify(sp.diff(h, variable) + up) != sp.zeros(3, 1):
+        raise ValueError(f"potential_curvature needs a unit up vector turning at unit rate in {variable}, not {tuple(up)}")
+    return waterplane_moment(h, h) / MEASURED["immersed volume"] - MEASURED["G above B"]
+
+
+_STENCILS = {1: ((-2, 1), (-1, -8), (1, 8), (2, -1)), 2: ((-2, -1), (-1, 16), (0, -30), (1, 16), (2, -1))}
+
+
+@dataclass(frozen=True)
+class Difference:
+    """For the ``roots`` of a :class:`FloatingRootWitness`: the derivative of order 1 or 2 of ``quantity`` (as in
+    :class:`Root`) in the parameter ``variable``, at its value in the parameters known so far, by the five-point
+    central difference of step ``step`` (a number or an expression in the parameters):
+    f' = (f(-2h) - 8 f(-h) + 8 f(h) - f(2h))/(12 h), exact for a polynomial of degree 4, and
+    f'' = (-f(-2h) + 16 f(-h) - 30 f(0) + 16 f(h) - f(2h))/(12 h^2), exact for degree 5; else the truncation is
+    of order h^4.  ``roots`` are found at each point first (the tilt at which a measured length takes the point's
+    value), as in :class:`Root`."""
+
+    quantity: object
+    variable: sp.Symbol
+    step: object
+    order: int = 1
+    roots: tuple = ()
+
+    def __post_init__(self):
+        if self.order not in _STENCILS:
+            raise ValueError(f"a Difference is of order 1 or 2, not {self.order}")
+
+    def value(self, witness, params, body, dps):
+        """The derivative at *params* (a SymPy Float at the method's digits and guard digits)."""
+        if self.variable not in params:
+            raise ValueError(f"witness {witness.name}: the derivative in {self.variable} needs its value (a case "
+                             "parameter or a root found before it)")
+        probe = replace(witness, quantity=self.quantity, name=f"{witness.name}: d/d{self.variable}")
+        x0, h = sp.sympify(params[self.variable]), sp.sympify(self.step).xreplace(params)
+
+        def f(k):
+            there = probe._solve({**params, self.variable: x0 + k * h}, body, self.roots, dps)
+            return probe._values(there, body, dps)[0]
+        total = sum(w * f(k) for k, w in _STENCILS[self.order])
+        return sp.Float(total / (12 * _real(number(h, params, dps), dps) ** self.order), max(dps, 15) + 5)
+
+
+__all__ += ["potential_curvature", "Difference"]
