@@ -12,6 +12,7 @@ import pytest
 import sympy as sp
 
 from symfloat.engine.check import check_derivation
+from symfloat.engine.witness import Case
 from symfloat.geometry.floating import box, floating_state
 from symfloat.model.prediction import Scene
 from symfloat.model.source import SOURCES
@@ -52,10 +53,11 @@ def test_the_errata_are_exactly_the_expected_ones(report):
     assert all(f.verdict == "erratum" for f in report.formulas if f.erratum)
 
 
-def test_every_witnessed_formula_has_float_and_50_digit_records(report):
-    # the module's witnesses measure in float64 and at 50 digits; the formulas none of them targets
-    # are measured from the definitions (symfloat/engine/definitions.py) at 15 and 30 digits
-    own = {"float64", "mpmath, 50 digits"}
+def test_every_witnessed_formula_has_float_and_40_digit_records(report):
+    # the module's witnesses (the clipped box, symfloat/engine/floating_witness.py) measure in float64 and at 40
+    # digits; the formulas none of them targets are measured from the definitions (symfloat/engine/definitions.py)
+    # at 15 and 30 digits
+    own = {"float64", "mpmath, 40 digits"}
     route = {"definitions, 15 digits", "definitions, 30 digits"}
     witnessed = [f for f in report.formulas if f.numeric]
     assert len([f for f in witnessed if {r["method"] for r in f.numeric} == own]) >= 60
@@ -65,39 +67,56 @@ def test_every_witnessed_formula_has_float_and_50_digit_records(report):
 
 # ---- pinned values, recomputed on the clipped box ---------------------------------------------------
 
+def _witness(name):
+    return next(w for w in D.witnesses if w.name == name)
+
+
+def _measured(name, params, label="pinned"):
+    """The float64 measurement of the module's witness *name* at *params*."""
+    w = _witness(name)
+    return w.measure(Case(params, label=label), w.methods[0])
+
+
 def test_double_root_at_t_one_half():
     # (157), (158), (153) at t = 1/2 (sigma = 45/256, s = 211/256): the locus w -> (sigma(w), n(w)) of the
-    # derivation gives z_1 = 15/16, n_1 = 5/4, z_2 = 3/8, n_2 = 4/5 exactly; the clipped box (Newton on
-    # GZ = 0 = dGZ/dphi in the tilt and the edge a, b = 1) must find them
+    # derivation gives z_1 = 15/16, n_1 = 5/4, z_2 = 3/8, n_2 = 4/5 exactly; the clipped box (the edge a, b = 1,
+    # at which the clipped righting arm vanishes at an extremum inside the second region) must find them
     w = sp.Rational(15, 16)
     assert M.sg_of_w.subs(M.w, w) == sp.Rational(45, 256) and M.n_of_w.subs(M.w, w) == sp.Rational(5, 4)
-    zp, n1 = M._double_root(sp.Rational(1, 2), True, 15)
-    zm, n2 = M._double_root(sp.Rational(1, 2), False, 15)
+    zp, zm = _measured("double-roots", {M.t: sp.Rational(1, 2)})
+    n1, n2, _ = _measured("double-root-n", {M.t: sp.Rational(1, 2)})
     assert abs(zp - 15 / 16) < 1e-10 and abs(n1 - 5 / 4) < 1e-10
     assert abs(zm - 3 / 8) < 1e-10 and abs(n2 - 4 / 5) < 1e-10
 
 
 def test_printed_n1_against_the_clipped_double_root_at_t_two_thirds():
-    # (156) upper sign at t = 2/3 (s = 1 - 27/128): n_1 = 1.11745528...; clipped Newton solution (float)
-    zp, n1 = M._double_root(sp.Rational(2, 3), True, 15)
+    # (156) upper sign at t = 2/3 (s = 1 - 27/128): n_1 = 1.11745528...; the clipped double root (float64)
+    n1 = _measured("double-root-n", {M.t: sp.Rational(2, 3)})[0]
+    zp = _measured("double-root-plus", {M.t: sp.Rational(2, 3)})
     assert abs(n1 - M._n1_printed(1 - 27 / 128)) < 1e-10
     assert abs(zp - 3 / 16 * (3 + 2 / 3 + math.sqrt((5 - 2 / 3) / 3))) < 1e-10
 
 
 def test_threshold_23_32_on_the_clipped_square_section():
-    # (140): for a = b the clipped F'(3/4) (five-point stencil) is positive below s = 23/32, negative above
-    below = M._stencil(1, 1, sp.Rational(23, 32) - sp.Rational(1, 100), sp.Rational(3, 4), 15, 1)
-    above = M._stencil(1, 1, sp.Rational(23, 32) + sp.Rational(1, 100), sp.Rational(3, 4), 15, 1)
+    # (140): for a = b the clipped F'(3/4)/3 (five-point stencil) is positive below s = 23/32, negative above:
+    # sigma - 9/32 = +-1/100 there
+    below = _measured("threshold-140", {M.s: sp.Rational(23, 32) - sp.Rational(1, 100)})
+    above = _measured("threshold-140", {M.s: sp.Rational(23, 32) + sp.Rational(1, 100)})
     assert below > 0 > above
-    assert abs(below - 3 * 0.01) < 1e-12 and abs(above + 3 * 0.01) < 1e-12
+    assert abs(below - 0.01) < 1e-12 and abs(above + 0.01) < 1e-12
 
 
-def test_gz_is_the_derivative_of_the_clipped_potential():
-    body = box(1.5, 1, 2)
-    for ph in (0.3, 0.9):
-        h = 1e-6
-        e = [floating_state(body, M._frame(math, q, "c")[0], 0.8).potential for q in (ph - h, ph + h)]
-        assert abs((e[1] - e[0]) / (2 * h) - M._gz(body, ph, 0.8, "c", math)) < 1e-8
+def test_the_measured_slope_is_the_derivative_of_the_clipped_potential():
+    # the module's SLOPE_C (potential_slope of its turn about c) against a central difference of G above B
+    from symfloat.engine.floating_witness import Body, FloatingWitness
+    params = {M.a: sp.Rational(3, 2), M.b: 1, M.s: sp.Rational(4, 5)}
+    for ph in (sp.Rational(3, 10), sp.Rational(9, 10)):
+        def at(q, quantity):
+            w = FloatingWitness("slope", "", (), (), body=M.SECTION, up=M.UP_C, density=M.s, quantity=quantity)
+            return w.measure(Case({**params, M.ph: q}), w.methods[0])
+        h = sp.Rational(1, 10 ** 6)
+        quotient = (at(ph + h, "G above B") - at(ph - h, "G above B")) / (2 * float(h))
+        assert abs(quotient - at(ph, M.SLOPE_C)) < 1e-8
 
 
 # ---- the text's claims --------------------------------------------------------------------------------
@@ -281,11 +300,12 @@ def test_third_region_oblique_needs_s_above_three_quarters():
 
 def test_first_region_oblique_stability_on_the_clipped_box():
     # (127): about c (c > a) stable in every direction; (128): about a, partly unstable
-    body = box(1.05, 1.0, 1.1)
-    ph_c = M._tilt(sp.Rational(21, 20), 1, sp.Rational(11, 10), sp.Rational(7, 10), "c", "eq", 15)
-    ph_a = M._tilt(sp.Rational(21, 20), 1, sp.Rational(11, 10), sp.Rational(7, 10), "a", "eq", 15)
-    assert floating_state(body, M._frame(math, ph_c, "c")[0], 0.7).metacentric_height > 0
-    assert floating_state(body, M._frame(math, ph_a, "a")[0], 0.7).metacentric_height < 0
+    from symfloat.engine.floating_witness import FloatingRootWitness
+    case = Case({M.a: sp.Rational(21, 20), M.b: 1, M.c: sp.Rational(11, 10), M.s: sp.Rational(7, 10)})
+    for up, equilibrium, sign in ((M.UP_C, M.EQ_C, 1), (M.UP_A, M.EQ_A, -1)):
+        w = FloatingRootWitness("oblique", "", (), (), body=M.BOX, up=up, density=M.s, quantity="stability sign",
+                                roots=((M.ph, equilibrium),))
+        assert w.measure(case, w.methods[0]) == sign
 
 
 # ---- the predictor --------------------------------------------------------------------------------------

@@ -29,13 +29,15 @@ exact condition is HG c^3/12 > V BG, erratum HG-complete).
 Third region (C): the first region with a and b exchanged: the other upright position (a vertical)
 and its oblique equilibrium cot^2 phi_3 = 12 (a/b)^2 s(1-s) - 2 (164a-166), and the closing tables.
 
-Witnesses (``symfloat.geometry.floating``): the box is clipped by the water plane at the draught
-found from the volume.  Metacentric heights come from the clipped waterplane; equilibrium tilts are
-roots of the righting arm h.(G - B) (the derivative of the clipped potential, checked against a
-difference quotient in the tests); the dry leg x is the distance of the rising corner from the
-clipped water plane along the side b; m_3 is the offset of the centroid of the clipped dry part;
-F', F'' are difference stencils of the clipped quantity; the double root (z_1, n_1) is the solution
-of GZ = 0 = dGZ/dphi in (phi, a) by Newton's method on the clipped geometry.
+Witnesses (declared, ``symfloat.engine.floating_witness``): the box is clipped by the water plane at
+the draught found from the volume.  Metacentric heights come from the clipped waterplane; equilibrium
+tilts are roots of the righting arm h.(G - B) (``potential_slope``, checked against a difference
+quotient of the clipped potential in the tests); a corner reaching the water is a root of the length
+from it along its side to the water (``crossing``); the dry leg x is that length from the rising
+corner down the side b; m_3 is the offset of the centroid of the clipped dry part; F', F'' are
+five-point differences in z of the clipped quantity (``Difference``); the double root (z_1, n_1) is
+the edge a at which the clipped arm vanishes at its extremum in the second region, a root of the
+arm's slope I_h/V - E (``potential_curvature``).
 
 Conventions: body frame x along a, y along b, z along c; the up vector u = (sin phi, cos phi, 0)
 raises the corner D = (a/2, b/2); h = du/dphi.  The predictor (``tables_prediction``) reads the
@@ -44,6 +46,7 @@ and the quartic (``Derivation.evaluator``), exactly.
 """
 import functools
 import math
+from dataclasses import replace
 from fractions import Fraction
 from pathlib import Path
 
@@ -52,9 +55,10 @@ import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Cases, Derivation, Eq, Erratum, Holds, RealRoots
 from symfloat.model.derivation import Figure, Report
-from symfloat.engine.roots import grid_roots, illinois, polynomial_at, polynomial_roots, polynomial_terms
-from symfloat.engine.witness import Case, Computed
-from symfloat.geometry.floating import box, floating_state
+from symfloat.engine.floating_witness import (MEASURED, At, Body, Difference, FloatingRootWitness, Joined, Root,
+                                              crossing, potential_curvature, potential_slope)
+from symfloat.engine.roots import polynomial_at, polynomial_roots, polynomial_terms
+from symfloat.engine.witness import Case
 from symfloat.model.prediction import Prediction
 from symfloat.model.claim import as_printed
 
@@ -1104,144 +1108,47 @@ d.quote("alternate", "IX.C",
              "alternation of the tables on the whole grid of docs/scheeffer-ix-grid.md")
 
 # ==== witnesses: the clipped floating box ============================================================
-def _M(p):
-    return math if p <= 15 else mpmath
+# The box is clipped by the water plane at the draught found from the volume (symfloat.engine.floating_witness):
+# metacentric heights from the clipped waterplane, equilibrium tilts roots of the clipped potential's slope, the
+# tilts at which a corner reaches the water roots of its height over the water, the leg x the height of the
+# rising corner D over the water along the side b, m_3 the offset of the centroid of the clipped dry part,
+# F', F'' central differences of the clipped quantity in z, the double roots extrema of the clipped righting arm
+# at which it vanishes.
+M_ = MEASURED
+ph = sp.Symbol("varphi_w")                           # a witness's tilt from the position with b vertical
+UP_C = (sp.sin(ph), sp.cos(ph), 0)                   # turned about the c-axis, raising the corner D = (a/2, b/2)
+UP_A = (0, sp.cos(ph), sp.sin(ph))                   # turned about the a-axis
+SLOPE_C, SLOPE_A = potential_slope(UP_C, ph), potential_slope(UP_A, ph)
+BOX = Body.box(a, b, c)
+SECTION = Body.box(a, b, 2)                          # the plane problem of the second region: any length along c
+PHI = tuple(0.004 + 0.025 * k for k in range(63))    # (0, pi/2)
+EQ_C = Root(SLOPE_C, ph, PHI)                        # the first oblique equilibrium about c
+EQ_A = Root(SLOPE_A, ph, PHI)
+DOWN, UPWARD = (0, -1, 0), (0, 1, 0)                # along the sides b
+DRY_C = crossing(UP_C, (-a / 2, b / 2, 0), DOWN)    # from the top corner C down its side to the water
+WET_A = crossing(UP_C, (a / 2, -b / 2, 0), UPWARD)  # from the bottom corner A up its side to the water
+CORNER_C, CORNER_A = Root(DRY_C, ph, PHI), Root(WET_A, ph, PHI)            # C or A reaches the water
+# the first of the two faces b to reach the water (the top face for s > 1/2, the bottom face for s < 1/2): about c
+# their vertices nearest to the water are C and A, about a the edges at z = -c/2 on top and z = c/2 below
+TOUCH_C = Root(sp.Min(DRY_C, WET_A), ph, PHI)
+TOUCH_A = Root(sp.Min(crossing(UP_A, (0, b / 2, -c / 2), DOWN), crossing(UP_A, (0, -b / 2, c / 2), UPWARD)), ph, PHI)
+LEG = crossing(UP_C, (a / 2, b / 2, 0), DOWN)       # x: from the rising corner D down the side b to the water
+M3 = s / (1 - s) * SLOPE_C                         # m_3 = h.S_3 = -(s/sigma) h.(B - G), G at the origin
+G_W = 3 * M3 * (LEG / b) ** 3 / (b * sp.sin(ph))   # 3 m_3 z^3/(b sin phi_2), z the measured x/b
+HG_W = M_["waterplane area"] / 2                   # the waterplane's width across the axis (SECTION)
+TILT_Z = Root(LEG / b - z, ph, PHI)                # the tilt at which x/b = z
+ph1w, phtw, phCw, phAw, FCw, FAw, HCw, HAw, dFw = sp.symbols("varphi_1w varphi_tw varphi_Cw varphi_Aw F_Cw F_Aw "
+                                                              "HG_Cw HG_Aw dF_w")
 
 
-def _num(v, p):
-    v = sp.sympify(v)
-    return float(v) if p <= 15 else mpmath.mpf(str(sp.N(v, p + 20)))
+def floating(name, description, targets, cases, quantity, up=UP_C, body=BOX, roots=(), density=s):
+    d.witness(FloatingRootWitness(name, description, tuple(targets), tuple(cases), body=body, up=up, density=density,
+                                  quantity=quantity, roots=roots))
 
 
-def _bd(p):
-    """Body precision: float64, or mpmath with guard digits."""
-    return None if p <= 15 else p + 8
-
-
-def _dot(p, q):
-    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]
-
-
-@functools.lru_cache(maxsize=None)
-def _body(av, bv, cv, p):
-    return box(_num(av, p), _num(bv, p), _num(cv, p), dps=_bd(p))
-
-
-def _frame(M, ph, axis):
-    """Up vector u and h = du/dphi for a turn by phi about the edge direction z ('c') or x ('a')."""
-    sn, cs = M.sin(ph), M.cos(ph)
-    o = 0 * sn
-    return ((sn, cs, o), (cs, -sn, o)) if axis == "c" else ((o, cs, sn), (o, -sn, cs))
-
-
-def _state(body, ph, sv, axis, M):
-    return floating_state(body, _frame(M, ph, axis)[0], sv)
-
-
-def _gz(body, ph, sv, axis, M):
-    """dE/dphi = h.(G - B): the derivative of the clipped potential (tested against a difference quotient)."""
-    st = _state(body, ph, sv, axis, M)
-    h = _frame(M, ph, axis)[1]
-    return _dot(h, [st.G[k] - st.B[k] for k in range(3)])
-
-
-def _clearance(body, ph, sv, axis, M):
-    """Height of the lowest top-face vertex over the water (s > 1/2), or depth of the highest bottom-face vertex
-    (s < 1/2): zero when the face reaches the water."""
-    st = _state(body, ph, sv, axis, M)
-    u = st.u
-    if sv > 0.5:
-        return min(_dot(u, q) - st.t for q in body.vertices if q[1] > 0)
-    return -max(_dot(u, q) - st.t for q in body.vertices if q[1] < 0)
-
-
-def _corner(body, ph, sv, which, M):
-    """Height over the water of the corner C = (-a/2, b/2) or A = (a/2, -b/2) (turn about c)."""
-    st = _state(body, ph, sv, "c", M)
-    sx, sy = (-1, 1) if which == "C" else (1, -1)
-    q = next(v for v in body.vertices if (v[0] > 0) == (sx > 0) and (v[1] > 0) == (sy > 0) and v[2] > 0)
-    return _dot(st.u, q) - st.t
-
-
-def _root(make_f, grid, p, last=False):
-    """First (or last) root of f on the float grid (:func:`symfloat.engine.roots.grid_roots`)."""
-    return grid_roots(make_f, grid, p, only="last" if last else "first")[0]
-
-
-PHI = [0.004 + 0.025 * k for k in range(63)]      # (0, pi/2)
-
-
-@functools.lru_cache(maxsize=None)
-def _tilt(av, bv, cv, sv, axis, kind, p):
-    """A clipped tilt: 'eq' the first root of GZ (first region), 'eq3' the last root below 90 deg (third
-    region), 'touch' a base face reaching the water, 'C'/'A' the corners C, A reaching the water."""
-    def make(q):
-        M, body, s_ = _M(q), _body(av, bv, cv, q), _num(sv, q)
-        if kind in ("eq", "eq3"):
-            return lambda ph: _gz(body, ph, s_, axis, M)
-        if kind == "touch":
-            return lambda ph: _clearance(body, ph, s_, axis, M)
-        return lambda ph: _corner(body, ph, s_, kind, M)
-    grid = PHI[:-1] if kind == "eq3" else PHI
-    return _root(make, grid, p, last=(kind == "eq3"))
-
-
-def _leg(body, ph, sv, bv, M):
-    """z = x/b: the distance of the rising corner D = (a/2, b/2) from the water along the side b, over b."""
-    st = _state(body, ph, sv, "c", M)
-    Dq = next(v for v in body.vertices if v[0] > 0 and v[1] > 0 and v[2] > 0)
-    return (_dot(st.u, Dq) - st.t) / M.cos(ph) / bv
-
-
-def _dry(body, ph, sv, M):
-    """The clipped state, m_3 = h.S_3 (S_3 the centroid of the dry part) and HG (waterplane width)."""
-    st = _state(body, ph, sv, "c", M)
-    h = _frame(M, ph, "c")[1]
-    vol = st.volume / sv
-    S3 = [(vol * st.G[k] - st.volume * st.B[k]) / (vol - st.volume) for k in range(3)]
-    zs = [q[2] for q in body.vertices]
-    return st, _dot(h, S3), st.waterplane_area / (max(zs) - min(zs))
-
-
-@functools.lru_cache(maxsize=None)
-def _tilt_of_z(av, bv, sv, zv, p):
-    """The clipped tilt at which x/b = z (root in phi of the measured leg)."""
-    def make(q):
-        M, body = _M(q), _body(av, bv, 2, q)
-        s_, b_, z_ = _num(sv, q), _num(bv, q), _num(zv, q)
-        return lambda ph: _leg(body, ph, s_, b_, M) - z_
-    return _root(make, PHI, p)
-
-
-def _G_at(av, bv, sv, ph, p):
-    """3 m_3 z^3/(b sin phi) of the clipped box at the tilt phi, z the measured x/b."""
-    M, body = _M(p), _body(av, bv, 2, p)
-    s_, b_ = _num(sv, p), _num(bv, p)
-    zm = _leg(body, ph, s_, b_, M)
-    return 3 * _dry(body, ph, s_, M)[1] * zm ** 3 / (b_ * M.sin(ph))
-
-
-def _G(av, bv, sv, zv, p):
-    return _G_at(av, bv, sv, _tilt_of_z(av, bv, sv, zv, p), p)
-
-
-def _stencil(av, bv, sv, zv, p, order):
-    """F' or F'' of the clipped quantity by five-point central differences in z, step 1/25: exact for polynomials of
-    degree 4 (5 for F''); a clipped quantity that were not a quartic would show as a difference of order h^4."""
-    h = sp.Rational(1, 25)
-    f = [_G(av, bv, sv, zv + k * h, p) for k in (-2, -1, 1, 2)]
-    hn = _num(h, p)
-    if order == 1:
-        return (f[0] - 8 * f[1] + 8 * f[2] - f[3]) / (12 * hn)
-    return (-f[0] + 16 * f[1] - 30 * _G(av, bv, sv, zv, p) + 16 * f[2] - f[3]) / (12 * hn ** 2)
-
-
-def P(c_):
-    return [c_.params[k] for k in (a, b, c, s)]
-
-
-def computed(name, description, targets, cases, fn):
-    d.witness(Computed(name, description, tuple(targets), tuple(cases), compute=fn))
+def part(quantity, up, roots=()):
+    """A witness measured as a part of :class:`Joined` (its name, targets and cases are the whole's)."""
+    return FloatingRootWitness("part", "", (), (), body=BOX, up=up, density=s, quantity=quantity, roots=roots)
 
 
 def C(label, **kw):
@@ -1249,316 +1156,182 @@ def C(label, **kw):
     return Case({syms[k]: sp.Rational(v) for k, v in kw.items()}, label=label)
 
 
-def _upright(c_, p, axis_up="b"):
-    av, bv, cv, sv = P(c_)
-    u = (0, 1, 0) if axis_up == "b" else (1, 0, 0)
-    return floating_state(_body(av, bv, cv, p), u, _num(sv, p)), [_num(v, p) for v in (av, bv, cv, sv)]
-
-
 UP = (C("a = 1, b = 2, c = 3, s = 3/10", a=1, b=2, c=3, s="0.3"), C("a = 3/2, b = 1, c = 2, s = 4/5", a="1.5", b=1, c=2, s="0.8"),
       C("a = 1, b = 1, c = 5/4, s = 1/2", a=1, b=1, c="1.25", s="0.5"))
-
-
-def _gm(st, which):
-    return (st.I_min if which == "min" else st.I_max) / st.volume - st.potential
-
-
-computed("upright-min", "metacentric height about the axis parallel to c, upright (clipped, I_min for c > a)",
-         ("122", "stability-condition"), UP, lambda c_, p: _gm(_upright(c_, p)[0], "min"))
-computed("upright-min-12", "12 s/b x the same", ("123", "132a"), UP,
-         lambda c_, p: (lambda st, v: 12 * v[3] / v[1] * _gm(st, "min"))(*_upright(c_, p)))
-computed("upright-max", "metacentric height about the axis parallel to a (I_max), upright (clipped)", ("T11-V1",), UP,
-         lambda c_, p: _gm(_upright(c_, p)[0], "max"))
-computed("upright-max-12", "12 s/b x the same", ("124",), UP,
-         lambda c_, p: (lambda st, v: 12 * v[3] / v[1] * _gm(st, "max"))(*_upright(c_, p)))
-computed("moments", "smallest and largest waterplane moments, upright (clipped)", ("T1",), UP,
-         lambda c_, p: _upright(c_, p)[0].I_min)
-computed("largest", "largest waterplane moment, upright (clipped)", ("largest-moment",), UP,
-         lambda c_, p: _upright(c_, p)[0].I_max)
-computed("volume-height", "submerged volume and height of G above B, upright (clipped)", ("V1-e1",), UP,
-         lambda c_, p: (lambda st: (st.volume, st.potential))(_upright(c_, p)[0]))
-computed("moment-volume-height", "I_min and volume x height of G above B, upright (clipped)", ("T1-V1e1",), UP,
-         lambda c_, p: (lambda st: (st.I_min, st.volume * st.potential))(_upright(c_, p)[0]))
-computed("moment-difference", "I_max - I_min and the moments, upright (clipped)", ("127",), UP,
-         lambda c_, p: (lambda st: (st.I_max, st.I_min, st.I_max - st.I_min))(_upright(c_, p)[0]))
-computed("moment-difference-2", "I_max - I_min, upright (clipped)", ("126",), UP,
-         lambda c_, p: (lambda st: st.I_max - st.I_min)(_upright(c_, p)[0]))
-computed("moment-difference-3", "I_min - I_max, upright (clipped)", ("128-unstable",), UP,
-         lambda c_, p: (lambda st: st.I_min - st.I_max)(_upright(c_, p)[0]))
+GM_MAX = M_["I max"] / M_["immersed volume"] - M_["G above B"]     # the metacentric height about the a-axis
+UPRIGHT = (0, 1, 0)
+floating("upright-min", "metacentric height about the axis parallel to c, upright (clipped, I_min for c > a)",
+         ("122", "stability-condition"), UP, "metacentric height", up=UPRIGHT)
+floating("upright-min-12", "12 s/b x the same", ("123", "132a"), UP, 12 * s / b * M_["metacentric height"], up=UPRIGHT)
+floating("upright-max", "metacentric height about the axis parallel to a (I_max), upright (clipped)", ("T11-V1",), UP,
+         GM_MAX, up=UPRIGHT)
+floating("upright-max-12", "12 s/b x the same", ("124",), UP, 12 * s / b * GM_MAX, up=UPRIGHT)
+floating("moments", "smallest waterplane moment, upright (clipped)", ("T1",), UP, "I min", up=UPRIGHT)
+floating("largest", "largest waterplane moment, upright (clipped)", ("largest-moment",), UP, "I max", up=UPRIGHT)
+floating("volume-height", "submerged volume and height of G above B, upright (clipped)", ("V1-e1",), UP,
+         ("immersed volume", "G above B"), up=UPRIGHT)
+floating("moment-volume-height", "I_min and volume x height of G above B, upright (clipped)", ("T1-V1e1",), UP,
+         ("I min", M_["immersed volume"] * M_["G above B"]), up=UPRIGHT)
+floating("moment-difference", "I_max - I_min and the moments, upright (clipped)", ("127",), UP,
+         ("I max", "I min", M_["I max"] - M_["I min"]), up=UPRIGHT)
+floating("moment-difference-2", "I_max - I_min, upright (clipped)", ("126",), UP, M_["I max"] - M_["I min"], up=UPRIGHT)
+floating("moment-difference-3", "I_min - I_max, upright (clipped)", ("128-unstable",), UP, M_["I min"] - M_["I max"],
+         up=UPRIGHT)
 
 # first region: both oblique positions inside the region (6s(1-s) > (a/b)^2, (c/b)^2 >= rho)
 R1 = (C("a = 21/20, b = 1, c = 11/10, s = 7/10", a="1.05", b=1, c="1.1", s="0.7"),
       C("a = 21/20, b = 1, c = 11/10, s = 3/10", a="1.05", b=1, c="1.1", s="0.3"),
       C("a = 53/50, b = 1, c = 11/10, s = 17/25", a="1.06", b=1, c="1.1", s="0.68"))
-
-
-def _tan2(c_, p, axis, kind="eq"):
-    return _M(p).tan(_tilt(*P(c_), axis, kind, p)) ** 2
-
-
-computed("oblique-c", "tan^2 of the clipped equilibrium tilt about the c-axis (root of GZ)", ("125",), R1,
-         lambda c_, p: _tan2(c_, p, "c"))
-computed("oblique-c-pre", "1 + tan^2/2 of the clipped equilibrium tilt about the c-axis", ("125-pre",), R1,
-         lambda c_, p: 1 + _tan2(c_, p, "c") / 2)
-computed("oblique-c-32", "I_min (1 + tan^2 phi_1/2) - V e_1 with the clipped upright moment, volume, height and tilt",
-         ("32",), R1, lambda c_, p: (lambda st: st.I_min * (1 + _tan2(c_, p, "c") / 2) - st.volume * st.potential)(
-             _upright(c_, p)[0]))
-computed("oblique-a", "tan^2 of the clipped equilibrium tilt about the a-axis", ("128",), R1, lambda c_, p: _tan2(c_, p, "a"))
 R1U = R1[:1] + R1[2:]
-computed("touch", "tan of the clipped tilt at which the top face reaches the water, about c and about a", ("129",), R1U,
-         lambda c_, p: (_M(p).tan(_tilt(*P(c_), "c", "touch", p)), _M(p).tan(_tilt(*P(c_), "a", "touch", p))))
-computed("touch-2", "tan^2 of the clipped touching tilt about c", ("129-squared",), R1U,
-         lambda c_, p: _tan2(c_, p, "c", "touch"))
-computed("margin", "tan^2(touch) - tan^2(equilibrium) about c, clipped", ("130-pre",), R1U,
-         lambda c_, p: _tan2(c_, p, "c", "touch") - _tan2(c_, p, "c"))
-
-
-def _q(c_, p, axis):
-    av, bv, cv, _ = [_num(v, p) for v in P(c_)]
-    e_ = av if axis == "c" else cv
-    return (e_ / bv) ** 2 / 2 * (_tan2(c_, p, axis, "touch") - _tan2(c_, p, axis))
-
-
-def _m12(c_, p, which):
-    st, v = _upright(c_, p)
-    return -12 * v[3] / v[1] * _gm(st, which)
-
-
-computed("margin-130", "(a/b)^2/2 (tan^2 touch - tan^2 equilibrium) about c, clipped", ("130",), R1U, lambda c_, p: _q(c_, p, "c"))
-computed("region-131", "-12 s/b GM and the margins, both axes, clipped", ("131",), R1U,
-         lambda c_, p: (_m12(c_, p, "min"), _q(c_, p, "c"), _m12(c_, p, "max"), _q(c_, p, "a")))
-computed("region-132b", "-12 s/b GM about c and the margin, clipped", ("132b",), R1,
-         lambda c_, p: (_m12(c_, p, "min"), _q(c_, p, "c")))
-computed("region-132c", "-12 s/b GM about a and the margin, clipped", ("132c",), R1,
-         lambda c_, p: (_m12(c_, p, "max"), _q(c_, p, "a")))
+floating("oblique-c", "tan^2 of the clipped equilibrium tilt about the c-axis (root of the potential's slope)",
+         ("125",), R1, sp.tan(ph) ** 2, roots=((ph, EQ_C),))
+floating("oblique-c-pre", "1 + tan^2/2 of the clipped equilibrium tilt about the c-axis", ("125-pre",), R1,
+         1 + sp.tan(ph) ** 2 / 2, roots=((ph, EQ_C),))
+floating("oblique-c-32", "I_min (1 + tan^2 phi_1/2) - V e_1 with the clipped upright moment, volume, height and tilt",
+         ("32",), R1, M_["I min"] * (1 + sp.tan(ph1w) ** 2 / 2) - M_["immersed volume"] * M_["G above B"],
+         roots=((ph1w, EQ_C), (ph, 0)))
+floating("oblique-a", "tan^2 of the clipped equilibrium tilt about the a-axis", ("128",), R1, sp.tan(ph) ** 2, up=UP_A,
+         roots=((ph, EQ_A),))
+d.witness(Joined("touch", "tan of the clipped tilt at which the top face reaches the water, about c and about a",
+                 ("129",), R1U, parts=(part(sp.tan(ph), UP_C, ((ph, TOUCH_C),)), part(sp.tan(ph), UP_A, ((ph, TOUCH_A),)))))
+floating("touch-2", "tan^2 of the clipped touching tilt about c", ("129-squared",), R1U, sp.tan(ph) ** 2,
+         roots=((ph, TOUCH_C),))
+MARGIN = sp.tan(phtw) ** 2 - sp.tan(ph1w) ** 2
+TILTS_C, TILTS_A = ((phtw, TOUCH_C), (ph1w, EQ_C), (ph, 0)), ((phtw, TOUCH_A), (ph1w, EQ_A), (ph, 0))
+floating("margin", "tan^2(touch) - tan^2(equilibrium) about c, clipped", ("130-pre",), R1U, MARGIN, roots=TILTS_C)
+floating("margin-130", "(a/b)^2/2 (tan^2 touch - tan^2 equilibrium) about c, clipped", ("130",), R1U,
+         (a / b) ** 2 / 2 * MARGIN, roots=TILTS_C)
+# -12 s/b GM upright and the margin of the oblique tilt, about c (I_min) and about a (I_max)
+REGION_C = part((-12 * s / b * M_["metacentric height"], (a / b) ** 2 / 2 * MARGIN), UP_C, TILTS_C)
+REGION_A = part((-12 * s / b * GM_MAX, (c / b) ** 2 / 2 * MARGIN), UP_A, TILTS_A)
+d.witness(Joined("region-131", "-12 s/b GM and the margins, both axes, clipped", ("131",), R1U,
+                 parts=(REGION_C, REGION_A)))
+d.witness(Joined("region-132b", "-12 s/b GM about c and the margin, clipped", ("132b",), R1, parts=(REGION_C,)))
+d.witness(Joined("region-132c", "-12 s/b GM about a and the margin, clipped", ("132c",), R1, parts=(REGION_A,)))
 
 # second region
 R2 = (C("a = 3/2, b = 1, s = 4/5, z = 3/4", a="1.5", b=1, s="0.8", z="0.75"),
       C("a = 6/5, b = 1, s = 9/10, z = 1/2", a="1.2", b=1, s="0.9", z="0.5"),
       C("a = 1, b = 1, s = 7/10, z = 9/10", a=1, b=1, s="0.7", z="0.9"))
-
-
-def _Gz(c_, p):
-    return _G(c_.params[a], c_.params[b], c_.params[s], c_.params[z], p)
-
-
-computed("quartic", "3 m_3 z^3/(b sin phi_2) of the clipped box at the tilt where x/b = z", ("133", "136"), R2, _Gz)
-computed("quartic-first", "3 m_3 z^3/b of the clipped box at the tilt where x/b = z", ("133-first",), R2,
-         lambda c_, p: (lambda ph: _G_at(c_.params[a], c_.params[b], c_.params[s], ph, p) * _M(p).sin(ph))(
-             _tilt_of_z(c_.params[a], c_.params[b], c_.params[s], c_.params[z], p)))
-computed("quartic-d1", "five-point derivative in z of the clipped quantity", ("137",), R2[:2],
-         lambda c_, p: _stencil(c_.params[a], c_.params[b], c_.params[s], c_.params[z], p, 1))
-computed("quartic-d2", "five-point second derivative in z of the clipped quantity", ("138",), R2[:2],
-         lambda c_, p: _stencil(c_.params[a], c_.params[b], c_.params[s], c_.params[z], p, 2))
-R34 = (C("a = 3/2, b = 1, s = 4/5", a="1.5", b=1, s="0.8"),)
-computed("quartic-d1-34", "five-point derivative of the clipped quantity at z = 3/4", ("139", "139-pre"), R34,
-         lambda c_, p: _stencil(c_.params[a], c_.params[b], c_.params[s], sp.Rational(3, 4), p, 1))
-computed("threshold-140", "F'(3/4)/3 of the clipped box with a = b", ("140",),
-         (C("s = 4/5", s="0.8"),),
-         lambda c_, p: _stencil(1, 1, c_.params[s], sp.Rational(3, 4), p, 1) / 3)
+STEP_Z = sp.Rational(1, 25)
+D1 = Difference(G_W, z, STEP_Z, 1, roots=((ph, TILT_Z),))
+floating("quartic", "3 m_3 z^3/(b sin phi_2) of the clipped box at the tilt where x/b = z", ("133", "136"), R2, G_W,
+         body=SECTION, roots=((ph, TILT_Z),))
+floating("quartic-first", "3 m_3 z^3/b of the clipped box at the tilt where x/b = z", ("133-first",), R2,
+         G_W * sp.sin(ph), body=SECTION, roots=((ph, TILT_Z),))
+floating("quartic-d1", "five-point derivative in z of the clipped quantity", ("137",), R2[:2], dFw, body=SECTION,
+         roots=((dFw, D1),))
+floating("quartic-d2", "five-point second derivative in z of the clipped quantity", ("138",), R2[:2], dFw,
+         body=SECTION, roots=((dFw, Difference(G_W, z, STEP_Z, 2, roots=((ph, TILT_Z),))),))
+floating("quartic-d1-34", "five-point derivative of the clipped quantity at z = 3/4", ("139", "139-pre"),
+         (C("a = 3/2, b = 1, s = 4/5", a="1.5", b=1, s="0.8"),), dFw, body=SECTION,
+         roots=((z, sp.Rational(3, 4)), (dFw, D1)))
+floating("threshold-140", "F'(3/4)/3 of the clipped box with a = b", ("140",), (C("s = 4/5", s="0.8"),), dFw / 3,
+         body=SECTION, roots=((a, 1), (b, 1), (z, sp.Rational(3, 4)), (dFw, D1)))
 R2T = (C("a = 3/2, b = 1, s = 4/5, varphi_2 = 1/2", a="1.5", b=1, s="0.8", varphi_2="0.5"),
        C("a = 6/5, b = 1, s = 9/10, varphi_2 = 3/5", a="1.2", b=1, s="0.9", varphi_2="0.6"))
-
-
-def _at_phi(c_, p):
-    M = _M(p)
-    body, s_ = _body(c_.params[a], c_.params[b], 2, p), _num(c_.params[s], p)
-    ph = _num(c_.params[phi], p)
-    xm = _leg(body, ph, s_, 1, M)
-    return xm, _dry(body, ph, s_, M)[2]
-
-
-computed("leg", "x^2: the clipped distance of the rising corner from the water along b, squared", ("134",), R2T,
-         lambda c_, p: _at_phi(c_, p)[0] ** 2)
-computed("waterline", "HG: clipped waterplane width across the axis", ("HG",), R2T, lambda c_, p: _at_phi(c_, p)[1])
-computed("waterline-2", "HG^2 (clipped)", ("HG2",), R2T, lambda c_, p: _at_phi(c_, p)[1] ** 2)
-computed("waterline-ratio", "(HG/x)^2 (clipped)", ("sin2",), R2T, lambda c_, p: (_at_phi(c_, p)[1] / _at_phi(c_, p)[0]) ** 2)
-computed("cot-leg", "2 a b (1-s)/x^2 with the clipped x", ("cot",), R2T,
-         lambda c_, p: 2 * _num(c_.params[a] * c_.params[b] * (1 - c_.params[s]), p) / _at_phi(c_, p)[0] ** 2)
+AT_PHI = ((ph, phi),)
+floating("leg", "x^2: the clipped distance of the rising corner from the water along b, squared", ("134",), R2T,
+         LEG ** 2, body=SECTION, roots=AT_PHI)
+floating("waterline", "HG: clipped waterplane width across the axis", ("HG",), R2T, HG_W, body=SECTION, roots=AT_PHI)
+floating("waterline-2", "HG^2 (clipped)", ("HG2",), R2T, HG_W ** 2, body=SECTION, roots=AT_PHI)
+floating("waterline-ratio", "(HG/x)^2 (clipped)", ("sin2",), R2T, (HG_W / LEG) ** 2, body=SECTION, roots=AT_PHI)
+floating("cot-leg", "2 a b (1-s)/x^2 with the clipped x", ("cot",), R2T, 2 * a * b * (1 - s) / LEG ** 2, body=SECTION,
+         roots=AT_PHI)
 R2E = (C("a = 3/2, b = 1, c = 3, s = 4/5", a="1.5", b=1, c=3, s="0.8"), C("a = 6/5, b = 1, c = 2, s = 7/10", a="1.2", b=1, c=2, s="0.7"),
        C("a = 1, b = 1, c = 2, s = 13/20", a=1, b=1, c=2, s="0.65"))
+AT_C, AT_A = ((ph, CORNER_C),), ((ph, CORNER_A),)   # the start of the region (corner C at the water) and its end (A)
+ENDS = ((phCw, CORNER_C), (phAw, CORNER_A), (FCw, At(G_W, {ph: phCw})), (FAw, At(G_W, {ph: phAw})),
+        (HCw, At(HG_W, {ph: phCw})), (HAw, At(HG_W, {ph: phAw})))
+SIG2 = 2 * (1 - s) ** 2
 
 
-def _end(c_, p, which):
-    """(z, G, HG) at the clipped tilt where corner C (start of the region) or A (end) reaches the water."""
-    av, bv, sv = c_.params[a], c_.params[b], c_.params[s]
-    ph = _tilt(av, bv, 2, sv, "c", which, p)
-    M, body, s_ = _M(p), _body(av, bv, 2, p), _num(sv, p)
-    return _leg(body, ph, s_, _num(bv, p), M), _G_at(av, bv, sv, ph, p), _dry(body, ph, s_, M)[2]
+def second(name, description, targets, quantity, roots):
+    floating(name, description, targets, R2E, quantity, body=SECTION, roots=roots)
 
 
-computed("x-low", "x at the clipped tilt where corner C reaches the water (twice)", ("x-low",), R2E,
-         lambda c_, p: (lambda e: (e[0] * _num(c_.params[b], p),) * 2)(_end(c_, p, "C")))
-computed("z-low", "x/b at the clipped tilt where corner C reaches the water", ("135a",), R2E, lambda c_, p: _end(c_, p, "C")[0])
-computed("z-high", "x/b at the clipped tilt where corner A reaches the water", ("135b",), R2E, lambda c_, p: _end(c_, p, "A")[0])
-computed("F-low", "the clipped quantity at the start of the region", ("141",), R2E, lambda c_, p: _end(c_, p, "C")[1])
-computed("F-high", "the clipped quantity at the end of the region", ("142",), R2E, lambda c_, p: _end(c_, p, "A")[1])
+second("x-low", "x at the clipped tilt where corner C reaches the water (twice)", ("x-low",), (LEG, LEG), AT_C)
+second("z-low", "x/b at the clipped tilt where corner C reaches the water", ("135a",), LEG / b, AT_C)
+second("z-high", "x/b at the clipped tilt where corner A reaches the water", ("135b",), LEG / b, AT_A)
+second("F-low", "the clipped quantity at the start of the region", ("141",), G_W, AT_C)
+second("F-high", "the clipped quantity at the end of the region", ("142",), G_W, AT_A)
+second("F-low-143", "-F(2 sigma)/(2 sigma^2), clipped", ("143",), -G_W / SIG2, AT_C)
+second("F-low-144", "F(2 sigma)/(2 sigma^2), clipped", ("144",), G_W / SIG2, AT_C)
+second("F-ends", "the clipped quantity at both ends of the region", ("161",), (FCw, FAw), ENDS)
+second("F-ends-162", "F(2 sigma)/(2 sigma^2) and 2 F(1)/rho, clipped", ("162",), (FCw / SIG2, 2 * FAw / rho_s), ENDS)
+second("F-ends-162a", "-F(2 sigma)/(2 sigma^2) and F(2 sigma)/(2 sigma^2), clipped", ("162a",), (-FCw / SIG2, FCw / SIG2),
+       ENDS)
+second("HG-start", "(c^2 - HG^2)/b^2 at the start of the region (clipped)", ("164",), (c ** 2 - HG_W ** 2) / b ** 2, AT_C)
+second("HG-ends", "(HG_start^2 - HG_end^2)/b^2 (clipped)", ("HG-max",), (HCw ** 2 - HAw ** 2) / b ** 2, ENDS)
+floating("HG-z", "(c^2 - HG^2)/b^2 at the tilt where x/b = z (clipped)", ("163",),
+         (C("a = 3/2, b = 1, c = 2, s = 4/5, z = 3/4", a="1.5", b=1, c=2, s="0.8", z="0.75"),
+          C("a = 6/5, b = 1, c = 3/2, s = 9/10, z = 1/2", a="1.2", b=1, c="1.5", s="0.9", z="0.5")),
+         (c ** 2 - HG_W ** 2) / b ** 2, body=SECTION, roots=((ph, TILT_Z),))
 
-
-def _sig2(c_, p):
-    return 2 * _num(1 - c_.params[s], p) ** 2
-
-
-computed("F-low-143", "-F(2 sigma)/(2 sigma^2), clipped", ("143",), R2E, lambda c_, p: -_end(c_, p, "C")[1] / _sig2(c_, p))
-computed("F-low-144", "F(2 sigma)/(2 sigma^2), clipped", ("144",), R2E, lambda c_, p: _end(c_, p, "C")[1] / _sig2(c_, p))
-computed("F-ends", "the clipped quantity at both ends of the region", ("161",), R2E,
-         lambda c_, p: (_end(c_, p, "C")[1], _end(c_, p, "A")[1]))
-computed("F-ends-162", "F(2 sigma)/(2 sigma^2) and 2 F(1)/rho, clipped", ("162",), R2E,
-         lambda c_, p: (_end(c_, p, "C")[1] / _sig2(c_, p),
-                        2 * _end(c_, p, "A")[1] / _num(rho_s.subs(s, c_.params[s]), p)))
-computed("F-ends-162a", "-F(2 sigma)/(2 sigma^2) and F(2 sigma)/(2 sigma^2), clipped", ("162a",), R2E,
-         lambda c_, p: (-_end(c_, p, "C")[1] / _sig2(c_, p), _end(c_, p, "C")[1] / _sig2(c_, p)))
-computed("HG-start", "(c^2 - HG^2)/b^2 at the start of the region (clipped)", ("164",), R2E,
-         lambda c_, p: (_num(c_.params[c], p) ** 2 - _end(c_, p, "C")[2] ** 2) / _num(c_.params[b], p) ** 2)
-computed("HG-ends", "(HG_start^2 - HG_end^2)/b^2 (clipped)", ("HG-max",), R2E,
-         lambda c_, p: (_end(c_, p, "C")[2] ** 2 - _end(c_, p, "A")[2] ** 2) / _num(c_.params[b], p) ** 2)
-R2C = (C("a = 3/2, b = 1, c = 2, s = 4/5, z = 3/4", a="1.5", b=1, c=2, s="0.8", z="0.75"),
-       C("a = 6/5, b = 1, c = 3/2, s = 9/10, z = 1/2", a="1.2", b=1, c="1.5", s="0.9", z="0.5"))
-
-
-def _hg_z(c_, p):
-    av, bv, sv = c_.params[a], c_.params[b], c_.params[s]
-    ph = _tilt_of_z(av, bv, sv, c_.params[z], p)
-    return _dry(_body(av, bv, 2, p), ph, _num(sv, p), _M(p))[2]
-
-
-computed("HG-z", "(c^2 - HG^2)/b^2 at the tilt where x/b = z (clipped)", ("163",), R2C,
-         lambda c_, p: (_num(c_.params[c], p) ** 2 - _hg_z(c_, p) ** 2) / _num(c_.params[b], p) ** 2)
-
-# third region: the a-vertical position and its oblique neighbour
+# third region: the a-vertical position and its oblique neighbour, the last equilibrium before 90 deg; the face
+# x = a/2 on top there reaches the water when the corner A does
 R3 = (C("a = 21/20, b = 1, c = 2, s = 4/5", a="1.05", b=1, c=2, s="0.8"),
       C("a = 27/25, b = 1, c = 3/2, s = 41/50", a="1.08", b=1, c="1.5", s="0.82"))
 R3M = R3 + (C("a = 21/20, b = 1, c = 2, s = 1/5", a="1.05", b=1, c=2, s="0.2"),)
+EQ_3 = Root(SLOPE_C, ph, PHI[:-1], which="last")
+MARGIN_3 = (b / a) ** 2 / 2 * (1 / sp.tan(phAw) ** 2 - 1 / sp.tan(ph) ** 2)   # tan of the tilt from a vertical: cot
+floating("oblique-3", "cot^2 of the clipped equilibrium tilt next to the a-vertical position (last root of the slope)",
+         ("166",), R3M, 1 / sp.tan(ph) ** 2, roots=((ph, EQ_3),))
+floating("upright-3", "12 s/a x metacentric height with a vertical (clipped)", ("upright-3",), R3M,
+         12 * s / a * M_["metacentric height"], up=(1, 0, 0))
+floating("unstable-3", "-(a/b)^2/(6s(1-s)) 12 s/a x metacentric height with a vertical (clipped)", ("unstable-3",), R3M,
+         -(a / b) ** 2 / (6 * s * (1 - s)) * 12 * s / a * M_["metacentric height"], up=(1, 0, 0))
+floating("margin-3", "(b/a)^2/2 (tan^2 touch - tan^2 equilibrium) next to the a-vertical position (clipped)",
+         ("165-pre",), R3, MARGIN_3, roots=((phAw, CORNER_A), (ph, EQ_3)))
+floating("margin-165", "(a/b)^2/rho x the same (clipped)", ("165",), R3, (a / b) ** 2 / rho_s * MARGIN_3,
+         roots=((phAw, CORNER_A), (ph, EQ_3)))
 
 
-def _cot2_3(c_, p):
-    return 1 / _M(p).tan(_tilt(*P(c_), "c", "eq3", p)) ** 2
+# the double roots at t = 1/2 (b = 1): the edge a at which the clipped righting arm vanishes at an extremum inside
+# the second region, a minimum (a > b, the last extremum) or a maximum (a < b, the first)
+CURVATURE_C = potential_curvature(UP_C, ph)          # the slope of the righting arm
+a_p, a_m, z_p, z_m, phCd, phAd = sp.symbols("a_+w a_-w z_+w z_-w varphi_Cd varphi_Ad")
 
 
-def _q3(c_, p):
-    """(b/a)^2/2 (tan^2 of the touching tilt - tan^2 of the equilibrium tilt), both from the a-vertical position."""
-    av, bv = _num(c_.params[a], p), _num(c_.params[b], p)
-    return (bv / av) ** 2 / 2 * (_tan_touch3(c_, p) ** 2 - _cot2_3(c_, p))
+def _extremum(which):
+    """The tilt of the extremum of the arm in the second region (between the corners C and A at the water)."""
+    return ((phCd, CORNER_C), (phAd, CORNER_A), (ph, Root.scan(CURVATURE_C, ph, phCd, phAd, 60, which=which)))
 
 
-def _tan_touch3(c_, p):
-    """tan of the tilt from the a-vertical position at which the face x = +a/2 (s > 1/2) reaches the water."""
-    av, bv, cv, sv = P(c_)
-
-    def make(q):
-        M, body, s_ = _M(q), _body(av, bv, cv, q), _num(sv, q)
-
-        def f(ps):
-            st = _state(body, M.pi / 2 - ps, s_, "c", M)
-            return min(_dot(st.u, v) - st.t for v in body.vertices if v[0] > 0)
-        return f
-    return _M(p).tan(_root(make, PHI, p))
+def _double(edge, which, grid, zw):
+    """The edge (a) and x/b (z) at a double root: roots for a FloatingRootWitness."""
+    found = Root(SLOPE_C, a, grid, roots=_extremum(which))
+    at = tuple((sym, replace(spec, at={a: edge})) for sym, spec in _extremum(which))
+    return ((edge, found),) + at + ((zw, At(LEG, {a: edge})),)
 
 
-computed("oblique-3", "cot^2 of the clipped equilibrium tilt next to the a-vertical position (last root of GZ)",
-         ("166",), R3M, _cot2_3)
-computed("upright-3", "12 s/a x metacentric height with a vertical (clipped)", ("upright-3",), R3M,
-         lambda c_, p: (lambda st, v: 12 * v[3] / v[0] * st.metacentric_height)(*_upright(c_, p, "a")))
-computed("unstable-3", "-(a/b)^2/(6s(1-s)) 12 s/a x metacentric height with a vertical (clipped)", ("unstable-3",), R3M,
-         lambda c_, p: (lambda st, v: -(v[0] / v[1]) ** 2 / (6 * v[3] * (1 - v[3])) * 12 * v[3] / v[0]
-                        * st.metacentric_height)(*_upright(c_, p, "a")))
-computed("margin-3", "(b/a)^2/2 (tan^2 touch - tan^2 equilibrium) next to the a-vertical position (clipped)",
-         ("165-pre",), R3, _q3)
-computed("margin-165", "(a/b)^2/rho x the same (clipped)", ("165",), R3,
-         lambda c_, p: (_num(c_.params[a] / c_.params[b], p)) ** 2 / _num(rho_s.subs(s, c_.params[s]), p) * _q3(c_, p))
-
-
-# the double roots: GZ = 0 = dGZ/dphi in (phi, a), b = 1, by Newton's method on the clipped box
-def _gz_a(av, ph, sv, p):
-    M = _M(p)
-    return _gz(box(av, 1, 2, dps=_bd(p)), ph, sv, "c", M)
-
-
-def _dgz(av, ph, sv, p):
-    """dGZ/dphi by a sixth-order central difference."""
-    h = 1e-3 if p <= 15 else mpmath.mpf(10) ** -9
-    w3 = ((1, 45), (2, -9), (3, 1))
-    return sum(wk * (_gz_a(av, ph + k * h, sv, p) - _gz_a(av, ph - k * h, sv, p)) for k, wk in w3) / (60 * h)
-
-
-def _newton(av, ph, sv, p):
-    """Newton's method with the Jacobian (difference quotients) of the first step kept (chord method)."""
-    da = 1e-7 if p <= 15 else mpmath.mpf(10) ** -20
-    hh = 1e-4 if p <= 15 else mpmath.mpf(10) ** -12
-    jac = None
-    for _ in range(12):
-        r1, r2 = _gz_a(av, ph, sv, p), _dgz(av, ph, sv, p)
-        if jac is None or p <= 15:
-            j21 = (_gz_a(av, ph + hh, sv, p) - 2 * r1 + _gz_a(av, ph - hh, sv, p)) / hh ** 2
-            j12 = (_gz_a(av + da, ph, sv, p) - r1) / da
-            j22 = (_dgz(av + da, ph, sv, p) - r2) / da
-            jac = (r2, j12, j21, j22)
-        j11, j12, j21, j22 = jac
-        det = j11 * j22 - j12 * j21
-        dph, dav = (r1 * j22 - r2 * j12) / det, (j11 * r2 - j21 * r1) / det
-        ph, av = ph - dph, av - dav
-        if abs(dph) + abs(dav) < (1e-14 if p <= 15 else mpmath.mpf(10) ** (4 - p)):
-            break
-    return av, ph
-
-
-@functools.lru_cache(maxsize=None)
-def _double_root(tv, upper, p):
-    """(z, n) at the double root of the clipped righting arm: the minimum (upper, a > b) or the maximum (a < b).
-    Start: the a on a grid at which the interior extremum of GZ over the second region changes sign."""
-    sv = 1 - float(9 * (1 + 3 * tv) / 128)
-    best = None
-    grid = [1.02 + 0.04 * k for k in range(40)] if upper else [0.98 - 0.02 * k for k in range(30)]
-    prev = None
-    for av in grid:
-        body = box(av, 1, 2)
-        lo = illinois(lambda q: _corner(body, q, sv, "C", math), 1e-3, 1.57, 1e-12)
-        hi = illinois(lambda q: _corner(body, q, sv, "A", math), 1e-3, 1.57, 1e-12)
-        phs = [lo + (hi - lo) * (k + 0.5) / 60 for k in range(60)]
-        g = [_gz(body, q, sv, "c", math) for q in phs]
-        ext = [i for i in range(1, 59) if (g[i] < g[i - 1] and g[i] < g[i + 1]) == upper
-               and (g[i] > g[i - 1] and g[i] > g[i + 1]) != upper]
-        if not ext:
-            continue
-        i = ext[-1] if upper else ext[0]
-        if prev is not None and (prev[1] > 0) != (g[i] > 0):
-            best = (av, phs[i])
-            break
-        prev = (av, g[i])
-    av, ph = _newton(best[0], best[1], sv, 15)
-    if p > 15:
-        with mpmath.workdps(p + 8):
-            av, ph = _newton(mpmath.mpf(av), mpmath.mpf(ph), 1 - _num(9 * (1 + 3 * tv) / 128, p + 8), p)
-    M = _M(p)
-    sp_ = 1 - _num(9 * (1 + 3 * tv) / 128, p) if p > 15 else sv
-    return _leg(box(av, 1, 2, dps=_bd(p)), ph, sp_, 1, M), av ** 2
-
-
+DOUBLE = ((b, 1),) + (_double(a_p, "last", tuple(1.02 + sp.Rational(4, 100) * k for k in range(10)), z_p)
+          + _double(a_m, "first", tuple(sp.Rational(98, 100) - sp.Rational(2, 100) * k for k in range(10)), z_m))
 DRC = (C("t = 1/2", t="1/2"),)
+S_T = 1 - 9 * (1 + 3 * t) / 128                       # s of t by (150)
 
 
-def _dr(c_, p):
-    tv = c_.params[t]
-    (zp, n1), (zm, n2) = _double_root(tv, True, p), _double_root(tv, False, p)
-    return zp, n1, zm, n2
+def double(name, description, targets, quantity):
+    d.witness(FloatingRootWitness(name, description, tuple(targets), DRC, body=Body.box(a, 1, 2), up=UP_C, density=S_T,
+                                  quantity=quantity, roots=DOUBLE))
 
 
-computed("double-root-plus", "x/b at the clipped double root (minimum of GZ, a > b)", ("158",), DRC, lambda c_, p: _dr(c_, p)[0])
-computed("double-roots", "x/b at the clipped double roots (minimum, a > b; maximum, a < b)",
-         ("157", "155", "155-pre"), DRC, lambda c_, p: (_dr(c_, p)[0], _dr(c_, p)[2]))
-computed("double-root-n", "(a/b)^2 at the clipped double roots and their product", ("153",), DRC,
-         lambda c_, p: (_dr(c_, p)[1], _dr(c_, p)[3], _dr(c_, p)[1] * _dr(c_, p)[3]))
-computed("double-root-n-156", "(a/b)^2 at the clipped double roots", ("156",), DRC, lambda c_, p: (_dr(c_, p)[1], _dr(c_, p)[3]))
-computed("double-root-n-156b", "n (1 + 3t)/(1 - t^2) at the clipped double roots", ("156-b",), DRC,
-         lambda c_, p: tuple(_dr(c_, p)[k] * _num((1 + 3 * c_.params[t]) / (1 - c_.params[t] ** 2), p) for k in (1, 3)))
-computed("double-root-S", "n + 1/n at the clipped double root", ("151", "152", "n-sum", "n-sum-t", "156-S"), DRC,
-         lambda c_, p: _dr(c_, p)[1] + 1 / _dr(c_, p)[1])
-computed("double-root-S-154", "S - 2, S + 2, S^2 - 4 with S = n + 1/n at the clipped double root", ("154",), DRC,
-         lambda c_, p: (lambda S_: (S_ - 2, S_ + 2, S_ ** 2 - 4))(_dr(c_, p)[1] + 1 / _dr(c_, p)[1]))
-computed("double-root-order", "z_+ - z_-, 4 z_+ - 3, 3 - 4 z_- at the clipped double roots", ("minimum",), DRC,
-         lambda c_, p: (_dr(c_, p)[0] - _dr(c_, p)[2], 4 * _dr(c_, p)[0] - 3, 3 - 4 * _dr(c_, p)[2]))
-computed("double-root-159", "1 - z_+ and 16 (1 - z_+) at the clipped double root", ("159",), DRC, lambda c_, p: 1 - _dr(c_, p)[0])
-computed("double-root-160", "16 (1 - z_+) at the clipped double root", ("160",), DRC, lambda c_, p: 16 * (1 - _dr(c_, p)[0]))
+double("double-root-plus", "x/b at the clipped double root (minimum of the arm, a > b)", ("158",), z_p)
+double("double-roots", "x/b at the clipped double roots (minimum, a > b; maximum, a < b)", ("157", "155", "155-pre"),
+       (z_p, z_m))
+double("double-root-n", "(a/b)^2 at the clipped double roots and their product", ("153",),
+       (a_p ** 2, a_m ** 2, a_p ** 2 * a_m ** 2))
+double("double-root-n-156", "(a/b)^2 at the clipped double roots", ("156",), (a_p ** 2, a_m ** 2))
+double("double-root-n-156b", "n (1 + 3t)/(1 - t^2) at the clipped double roots", ("156-b",),
+       tuple(e ** 2 * (1 + 3 * t) / (1 - t ** 2) for e in (a_p, a_m)))
+S_W = a_p ** 2 + 1 / a_p ** 2
+double("double-root-S", "n + 1/n at the clipped double root", ("151", "152", "n-sum", "n-sum-t", "156-S"), S_W)
+double("double-root-S-154", "S - 2, S + 2, S^2 - 4 with S = n + 1/n at the clipped double root", ("154",),
+       (S_W - 2, S_W + 2, S_W ** 2 - 4))
+double("double-root-order", "z_+ - z_-, 4 z_+ - 3, 3 - 4 z_- at the clipped double roots", ("minimum",),
+       (z_p - z_m, 4 * z_p - 3, 3 - 4 * z_m))
+double("double-root-159", "1 - z_+ at the clipped double root", ("159",), 1 - z_p)
+double("double-root-160", "16 (1 - z_+) at the clipped double root", ("160",), 16 * (1 - z_p))
 
 
 # ==== the printed tables as a predictor ================================================================
