@@ -23,7 +23,9 @@ import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.witness import Case, Computed, PlaneSections, SectionIntegral
+from symfloat.engine.figure_witness import FIGURE_METHODS, CurveRoot
+from symfloat.engine.floating_witness import PART, Combined
+from symfloat.engine.witness import Case, PlaneSections, SectionIntegral
 from symfloat.model.claim import as_printed
 from symfloat.registry import load
 
@@ -727,30 +729,18 @@ for name, at in (("G", x), ("D", (x + xp) / 2), ("g", xp)):
                    (f"triaxial-stump-{name}",), triaxial_width, (at,), lambda A, q: A[0], *TRIAXIAL_CASES)
 
 
-def _triaxial_half_axes(at):
-    """The squared half axes of the section at the abscissa *at*: the ordinates of the principal ellipses NMR
-    (half axes a, c) and SMV (a, b), each found by the Illinois method on its equation, bracketed in
-    [0, semi-axis]."""
-    def compute(case, dps):
-        A_, B_, C_, X_, XP_ = (mpmath.mpf(sp.N(case.params[q], dps + 10)) for q in (a, b, c, x, xp))
-        xi = {"G": X_, "D": (X_ + XP_) / 2, "g": XP_}[at]
-        tol = mpmath.mpf(10) ** (-dps)
-        out = []
-        for semi in (C_, B_):
-            yv = mpmath.findroot(lambda t: (xi / A_) ** 2 + (t / semi) ** 2 - 1, (mpmath.mpf(0), semi),
-                                 solver="illinois", tol=tol, maxsteps=400)
-            out.append(yv ** 2)
-        return tuple(out)
-    return compute
-
-
-for name in ("G", "D", "g"):
-    d.witness(Computed(f"triaxial-stump-axes-{name}-roots",
+# the half axes of the section at an abscissa: the ordinates there of the principal ellipses NMR (half axes a, c)
+# and SMV (a, b), each a root of the ellipse's equation on [0, semi-axis]
+for name, at in (("G", x), ("D", (x + xp) / 2), ("g", xp)):
+    d.witness(Combined(f"triaxial-stump-axes-{name}-roots",
                        f"half axes of the section at {name} by root-finding on the principal ellipses",
                        (f"triaxial-stump-axes-{name}",),
                        tuple(Case({q: sp.Rational(v) for q, v in params.items()}, label=label)
                              for label, params in TRIAXIAL_CASES),
-                       compute=_triaxial_half_axes(name)))
+                       parts=tuple(CurveRoot(f"{name}-ordinate-{semi}", "", (), (), equation=(at / a) ** 2
+                                             + (t / semi) ** 2 - 1, variable=t, bracket=(0, semi))
+                                   for semi in (c, b)),
+                       values=(PART[0] ** 2, PART[1] ** 2), methods=FIGURE_METHODS))
 planes_witness("pyramid-frustum-side-D-section", "the mid-section of trapezoid frusta by quadrature of its widths",
                ("pyramid-frustum-side-D",), pyramid_sections, (h / 2,), lambda A, q: mpmath.sqrt(A[0] / q[k]),
                *pyramid_cases)
