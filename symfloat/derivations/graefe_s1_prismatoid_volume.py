@@ -9,12 +9,11 @@ distance of the two skew edges).  Result: ``I = h/3 ((G + g)/2 + 2 D)``.
 The side faces are counted (Fig. 1): p + q triangles over bases of p and q sides, one face and two
 triangles fewer for each pair of parallel facing sides; witnessed by the faces of the exact hull.
 """
-import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
+from symfloat.engine.construction_witness import Area, ConstructionWitness, Mid, Sum
 from symfloat.engine.witness import Case, Computed, HullWitness
-from symfloat.geometry.construction import heron_area
 from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
 from symfloat.model.claim import as_printed
 
@@ -347,18 +346,14 @@ d.witness(HullWitness("pyramids-on-G", "volume of random pyramids standing on G 
                       ("pyramids-over-G",), tuple(_pyramid_on_G_case(s) for s in range(3)), quantity="volume"))
 
 
-def _heron_halves(case, dps):
-    """The parallelogram abcd (a, b, c, d the midpoints of AC, BC, BD, AD) as the triangles abc and acd, and the
-    triangle ABE (E = B + D - C), each by Heron's formula from its side lengths; returns abcd (= ABE/2)."""
-    V = {n: mpmath.matrix([mpmath.mpf(int(v)) for v in case.data[i]]) for i, n in enumerate("ABCD")}
-    m_ = {"a": (V["A"] + V["C"]) / 2, "b": (V["B"] + V["C"]) / 2, "c": (V["B"] + V["D"]) / 2,
-          "d": (V["A"] + V["D"]) / 2}
-    return heron_area(m_["a"], m_["b"], m_["c"]) + heron_area(m_["a"], m_["c"], m_["d"])
-
-
-d.witness(Computed("mid-section-heron", "the mid-section abcd of random tetrahedra by Heron's formula",
-                   ("parallelogram-half-triangle",), tuple(_tetrahedron_case(s) for s in range(3)),
-                   compute=_heron_halves))
+# the parallelogram abcd (a, b, c, d the midpoints of AC, BC, BD, AD) as the triangles abc and acd, each by Heron's
+# formula from its side lengths
+d.witness(ConstructionWitness("mid-section-heron", "the mid-section abcd of random tetrahedra by Heron's formula",
+                              ("parallelogram-half-triangle",), tuple(_tetrahedron_case(s) for s in range(3)),
+                              names=("A", "B", "C", "D"),
+                              points=(("a", Mid("A", "C")), ("b", Mid("B", "C")), ("c", Mid("B", "D")),
+                                      ("d", Mid("A", "D"))),
+                              quantity=Sum(Area("a", "b", "c"), Area("a", "c", "d"))))
 
 
 # ---- §1: the side faces counted (Fig. 1) -----------------------------------------------------------

@@ -13,10 +13,9 @@ from fractions import Fraction
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-import mpmath
-
-from symfloat.engine.witness import Case, Computed, HullSlices, HullWitness
-from symfloat.geometry.construction import heron_area, line_meet
+from symfloat.engine.construction_witness import (Along, Area, Centroid, ConstructionWitness, Coordinates, Length,
+                                                  Meet, Mid, Ratio)
+from symfloat.engine.witness import Case, HullSlices, HullWitness
 from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
 from symfloat.model.claim import as_printed
 
@@ -254,60 +253,36 @@ d.witness(HullWitness("prismatoid-volume", "volume of random convex prismatoids"
                       ("volume",), tuple(_prismatoid_case(s) for s in range(4)), quantity="volume"))
 
 
-def _numeric_construction(case, dps):
-    """Graefe's construction done numerically: the lines CG and AF and the
-    line co meeting AC are intersected by least squares, triangles are
-    measured by Heron's formula from their side lengths."""
-    P = {n: mpmath.matrix([mpmath.mpf(int(v)) for v in case.data[i]]) for i, n in enumerate("ABCD")}
-    c = (P["B"] + P["D"]) / 2
-    F, Gq = c + (P["C"] - c) / 3, c + (P["A"] - c) / 3
-    o = line_meet(P["C"], Gq, P["A"], F)
-    return {"Coc:CoA": heron_area(P["C"], o, c) / heron_area(P["C"], o, P["A"]),
-            "coA:Coc": heron_area(c, o, P["A"]) / heron_area(P["C"], o, c),
-            "coA:CoA": heron_area(c, o, P["A"]) / heron_area(P["C"], o, P["A"])}
-
-
+# Graefe's construction done numerically: c the midpoint of BD, F and G a third of the way from c to C and A, o the
+# meeting point of CG and AF; the triangles measured by Heron's formula from their side lengths
+TRISECTED = (("c", Mid("B", "D")), ("F", Along("c", "C", sp.Rational(1, 3))), ("G", Along("c", "A", sp.Rational(1, 3))),
+             ("o", Meet("C", "G", "A", "F")))
+RATIOS = {"Coc:CoA": Ratio(Area("C", "o", "c"), Area("C", "o", "A")),
+          "coA:Coc": Ratio(Area("c", "o", "A"), Area("C", "o", "c")),
+          "coA:CoA": Ratio(Area("c", "o", "A"), Area("C", "o", "A"))}
 for target, ratio in (("ratio-1", "Coc:CoA"), ("ratio-2", "coA:Coc"), ("ratio-3", "coA:CoA"), ("ratio-4", "coA:CoA")):
-    d.witness(Computed(f"triangles-{target}", f"the ratio {ratio} of triangles by Heron's formula",
-                       (target,), tuple(_tetrahedron_case(s) for s in range(3)),
-                       compute=lambda case, dps, ratio=ratio: _numeric_construction(case, dps)[ratio]))
+    d.witness(ConstructionWitness(f"triangles-{target}", f"the ratio {ratio} of triangles by Heron's formula",
+                                  (target,), tuple(_tetrahedron_case(s) for s in range(3)), names=("A", "B", "C", "D"),
+                                  points=TRISECTED, quantity=RATIOS[ratio]))
 
-
-def _median_meet(P, p, q, r):
-    """The centroid of the triangle p q r found as the meeting point of two of its medians."""
-    return line_meet(P[p], (P[q] + P[r]) / 2, P[q], (P[p] + P[r]) / 2)
-
-
-def _construction_points(case):
-    """Graefe's points by intersecting lines only: F, G the triangles' centroids as meeting points of
-    medians, o = CG ∩ AF, a = co ∩ AC, L = ac ∩ FG."""
-    P = {n: mpmath.matrix([mpmath.mpf(int(v)) for v in case.data[i]]) for i, n in enumerate("ABCD")}
-    c_ = (P["B"] + P["D"]) / 2
-    F_, G_ = _median_meet(P, "B", "C", "D"), _median_meet(P, "A", "B", "D")
-    o_n = line_meet(P["C"], G_, P["A"], F_)
-    a_n = line_meet(c_, o_n, P["A"], P["C"])
-    L_n = line_meet(a_n, c_, F_, G_)
-    return {**P, "c": c_, "F": F_, "G": G_, "o": o_n, "a": a_n, "L": L_n}
-
-
-def _dist(p, q):
-    return mpmath.norm(p - q)
-
-
+# Graefe's points by intersecting lines only: F, G the centroids of BCD and ABD as meeting points of medians,
+# o = CG ∩ AF, a = co ∩ AC, L = ac ∩ FG
+CONSTRUCTED = (("c", Mid("B", "D")), ("F", Centroid("B", "C", "D")), ("G", Centroid("A", "B", "D")),
+               ("o", Meet("C", "G", "A", "F")), ("a", Meet("c", "o", "A", "C")), ("L", Meet("a", "c", "F", "G")))
 CONSTRUCTION_MEASURES = {
-    "construction": lambda Q: tuple(Q["F"]) + tuple(Q["G"]),
-    "quarters": lambda Q: (_dist(Q["o"], Q["F"]), _dist(Q["o"], Q["G"])),
-    "a-midpoint": lambda Q: _dist(Q["a"], Q["A"]),
-    "oL-ratio": lambda Q: _dist(Q["L"], Q["o"]) / _dist(Q["o"], Q["a"]),
-    "aL": lambda Q: _dist(Q["L"], Q["a"]),
-    "CF": lambda Q: _dist(Q["F"], Q["C"]),
-    "oL": lambda Q: _dist(Q["L"], Q["o"]),
-    "oc": lambda Q: _dist(Q["c"], Q["o"]),
+    "construction": (Coordinates("F"), Coordinates("G")),
+    "quarters": (Length("o", "F"), Length("o", "G")),
+    "a-midpoint": Length("a", "A"),
+    "oL-ratio": Ratio(Length("L", "o"), Length("o", "a")),
+    "aL": Length("L", "a"),
+    "CF": Length("F", "C"),
+    "oL": Length("L", "o"),
+    "oc": Length("c", "o"),
 }
 for target, measure in CONSTRUCTION_MEASURES.items():
-    d.witness(Computed(f"lines-{target}", "Graefe's construction by intersecting lines (least squares)",
-                       (target,), tuple(_tetrahedron_case(s) for s in range(3)),
-                       compute=lambda case, dps, measure=measure: measure(_construction_points(case))))
+    d.witness(ConstructionWitness(f"lines-{target}", "Graefe's construction by intersecting lines (least squares)",
+                                  (target,), tuple(_tetrahedron_case(s) for s in range(3)), names=("A", "B", "C", "D"),
+                                  points=CONSTRUCTED, quantity=measure))
 
 
 def _pyramid_case(seed, apex_down):
