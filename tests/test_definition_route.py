@@ -188,19 +188,63 @@ def test_a_relation_of_closed_forms_has_no_numeric_content():
     assert out.records == [] and not out.measurable and "nothing is left" in out.note
 
 
-def test_a_root_count_is_left_to_the_relation_check():
-    # RealRoots is decided exactly by Sturm sequences on the closed form (Scheeffer X (172)); with T a defining
-    # integral it used to stop the route with "Unsupported by the printer: RealRoots" and count as unmeasured
+def test_a_root_count_is_counted_numerically_at_two_precisions():
+    # RealRoots is decided exactly by Sturm sequences on the closed form (Scheeffer X (172)); the route counts the
+    # roots again from the coefficients' values (polyroots and inclusion discs): z^2 - T has the one root sqrt(T) in
+    # z > 0 for T = a b^3/12 > 0, and the Sturm count at each point is 1 too
     from symfloat.model.relation import Holds, RealRoots
     _, r = triangle()
     z = sp.Symbol("z")
     count = RealRoots(z ** 2 - T, z, 0, sp.oo)
     out = r.relation_outcome("t", Holds(sp.Eq(count, 1)), {T: a * b ** 3 / 12})
-    assert out.records == [] and not out.measurable and "nothing is left" in out.note
+    assert out.agrees and out.measurable and out.note == ""
+    assert [rec["method"] for rec in out.records] == [f"root count, polyroots and inclusion discs, {n} digits"
+                                                      for n in (15, 30)]
+    assert all(rec["abs_error"] == 0 and rec["cases"] == 3 for rec in out.records)
+    assert out.records[0]["radius"] < 1e-10 and out.records[1]["radius"] < 1e-25
     # an inequality beside the count is still measured from the definition of T
     out = r.relation_outcome("t", Holds(sp.Eq(count, 1) & (T > 0)), {T: a * b ** 3 / 12})
-    assert out.measurable and [rec["method"] for rec in out.records] == ["definitions, 15 digits",
-                                                                         "definitions, 30 digits"]
+    assert out.agrees and {rec["method"] for rec in out.records} >= {"definitions, 15 digits", "definitions, 30 digits"}
+    # mutation: the printed count raised by one fails at every point by the numeric count
+    out = r.relation_outcome("t", Holds(sp.Eq(count, 2)), {T: a * b ** 3 / 12})
+    assert not out.agrees and "fails at" in out.note
+    assert all(rec["abs_error"] == 0 for rec in out.records)       # the counts agree: the print is what fails
+
+
+# x^3 - 3 n x + 2 = (x - 1)^2 (x + 2) at n = 1 (discriminant 108 (n^3 - 1)): three real roots for n > 1, one for
+# n < 1 (tests/test_relation.py)
+CUBIC_N = sp.Symbol("n", positive=True)
+CUBIC_Z = sp.Symbol("z", real=True)
+CUBIC = CUBIC_Z ** 3 - 3 * CUBIC_N * CUBIC_Z + 2
+
+
+def cubic_route():
+    d = Derivation(id="test-route-cubic", source="graefe", title="cubic", locator="§1", domain={CUBIC_N: (0, 3)})
+    return DefinitionRoute(d.steps, Domain(d.domain), d.id)
+
+
+def test_a_case_table_of_root_counts_is_counted_and_a_mutated_row_fails():
+    from symfloat.model.relation import Cases, RealRoots
+    count = RealRoots(CUBIC, CUBIC_Z, -sp.oo, sp.oo)
+    table = lambda above: Cases(((CUBIC_N < 1, sp.Eq(count, 1)), (CUBIC_N > 1, sp.Eq(count, above))),  # noqa: E731
+                                {CUBIC_N: (0, 3)}, exhaustive=False)
+    out = cubic_route().relation_outcome("t", table(3), {})
+    assert out.agrees and out.note == "" and len(out.records) == 2
+    assert all(rec["abs_error"] == 0 for rec in out.records)
+    out = cubic_route().relation_outcome("t", table(2), {})      # mutation: three roots printed as two
+    assert not out.agrees and "(row 2)" in out.note
+
+
+def test_a_near_double_root_is_not_counted():
+    # 1 < n < 1 + 10^-40: the roots near z = 1 lie about 10^-20 apart, closer than 30 digits can part (a double
+    # root's approximations are good to the square root of the precision); Sturm counts 3, the printed 2 is wrong,
+    # and the route says it cannot count there rather than give a count
+    from symfloat.model.relation import Holds, RealRoots
+    count = RealRoots(CUBIC, CUBIC_Z, -sp.oo, sp.oo)
+    out = cubic_route().relation_outcome("t", Holds(sp.Eq(count, 2), {CUBIC_N: (1, 1 + sp.Rational(1, 10 ** 40))}),
+                                         {})
+    assert out.records == [] and out.agrees and out.measurable
+    assert "not parted" in out.note and "not read there" in out.note
 
 
 def test_the_checker_cross_checks_relations_and_confirms_a_counterexample():

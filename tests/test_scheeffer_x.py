@@ -415,6 +415,20 @@ def test_172_is_a_claim_erratum_on_the_root_count():
     assert sp.Rational("0.7623") < point < (4 + sp.sqrt(2)) / 7
 
 
+def test_the_172_root_counts_are_counted_again_numerically():
+    # the definition route counts the roots of (171) from its coefficients' values (polyroots and inclusion
+    # discs) at the relation check's counterexample and at seeded densities: the counts agree with Sturm's, and the
+    # print fails at its counterexample by them too (three roots where it says one)
+    p = next(q for q in D.printed if q.name == "172")
+    rep = check_derivation(dataclasses.replace(D, printed=[p], witnesses=[]), prove=False, trust_steps=True)
+    (f,) = rep.formulas
+    assert rep.failures == [] and f.numeric_content
+    methods = [f"root count, polyroots and inclusion discs, {n} digits" for n in (15, 30)]
+    assert [r["method"] for r in f.numeric] == methods == [r["method"] for r in f.corrected_numeric]
+    assert all(r["abs_error"] == 0 and r["cases"] >= 4 for r in f.numeric + f.corrected_numeric)
+    assert any("relation fails at" in n and "(condition)" in n for n in f.witness_notes)
+
+
 def test_a_wrong_count_in_the_172_correction_is_refuted():
     # the correction with 'one root' kept between the fold and (4 + sqrt 2)/7 (the print's count) must not hold
     p = next(q for q in D.printed if q.name == "172")

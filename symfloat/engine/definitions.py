@@ -21,9 +21,15 @@ inequality of its statement compares a difference ``lhs - rhs``, measured from t
 compared with the closed form the relation check used, at the relation check's counterexample (when
 it found one) and at seeded points of the domain, at 15 and 30 digits; with the definitions' values
 (their signs clearly away from zero) the statement must hold at those points.  A relation whose
-differences are, with the definitions in, the closed forms themselves has no numeric content; nor has
-a root count (``RealRoots``, exact by Sturm sequences on the closed form: Scheeffer IX's case tables,
-X (172)), which the route leaves to the relation check.
+differences are, with the definitions in, the closed forms themselves has no numeric content.
+
+A root count (``RealRoots``, exact by Sturm sequences on the closed form in the relation check:
+Scheeffer IX's case tables, X (172)) is counted by another method at the same points, and for a case
+table or an implication also at a point where each row's condition holds (if one is drawn): the
+polynomial's coefficients evaluated there at 15 and 30 digits, its roots by ``mpmath.polyroots`` with
+inclusion discs (:mod:`symfloat.engine.root_count`); a count the discs do not decide leaves the point
+unread (said in the note).  The records compare the numeric count with the Sturm count at each point,
+and the statement is read with the numeric counts.
 """
 from __future__ import annotations
 
@@ -36,9 +42,10 @@ import sympy as sp
 from sympy.printing.pycode import MpmathPrinter
 
 from ..model.claim import members
-from ..model.relation import RealRoots
+from ..model.relation import Cases, Holds, RealRoots
 from .identity import Domain
-from .relation import inserted, random_points, relation_intervals, statement, truth
+from .relation import boundary_points, inserted, random_points, relation_intervals, statement, truth
+from .root_count import count_real_roots
 from .witness import Outcome, Precision
 
 __all__ = ["DefinitionRoute", "definitions", "ROUTE_METHODS"]
@@ -49,6 +56,7 @@ __all__ = ["DefinitionRoute", "definitions", "ROUTE_METHODS"]
 ROUTE_METHODS = (Precision(15, 10 ** -6.5), Precision(30, 1e-14))
 SAMPLES = 3
 MAX_DRAWS = 200
+PREMISE_DRAWS = 800         # further draws for a case-table row or premise the first draws did not meet
 
 
 def definitions(steps) -> dict:
@@ -261,6 +269,53 @@ def _difference(measured, value, claimed, point, method):
     return float(ab), float(ab / scale) if scale else float(ab)
 
 
+def _premises(relation) -> list:
+    """The conditions under which a relation claims something: the premise of ``Holds(Implies(a, b))``, the
+    rows' conditions of a case table (a point where each holds is sampled too)."""
+    if isinstance(relation, Cases):
+        return [c for c, _ in relation.rows]
+    if isinstance(relation, Holds) and isinstance(relation.condition, sp.Implies):
+        return [relation.condition.args[0]]
+    return []
+
+
+@functools.lru_cache(maxsize=256)
+def _coefficients(p, x) -> tuple:
+    """The coefficients of the polynomial *p* in *x* (highest power first), expressions in the parameters."""
+    try:
+        return tuple(sp.Poly(sp.expand(p), x).all_coeffs())
+    except sp.PolynomialError as exc:
+        raise ValueError(f"a root count of {p}, which is not a polynomial in {x}") from exc
+
+
+def _mp(expr, point, dps):
+    """*expr* at *point* as an mpmath number at *dps* digits (``-oo``, ``oo`` as mpmath's infinities)."""
+    if expr in (sp.oo, -sp.oo):
+        return mpmath.inf if expr == sp.oo else -mpmath.inf
+    return mpmath.mpf(sp.Float(_numeric(sp.sympify(expr), point, dps), dps + 5)._mpf_)
+
+
+def _counted(closed, point, dps):
+    """``(value, pairs, radius)``: the difference *closed* (with root counts ``RealRoots`` in it) at *point*,
+    each count taken numerically by :func:`~symfloat.engine.root_count.count_real_roots` at *dps* digits from
+    the polynomial's coefficients evaluated there; *pairs* ``(numeric count, Sturm count)`` for each count,
+    *radius* the largest inclusion radius of a counted root.  ``value`` is None when a count is undecided."""
+    counts, pairs, widest = {}, [], 0.0
+    for f in sorted(closed.atoms(RealRoots), key=sp.default_sort_key):
+        p, x, lo, hi = f.args
+        with mpmath.workdps(dps):
+            coeffs = [_mp(c, point, dps) for c in _coefficients(p, x)]
+            n, radius = count_real_roots(coeffs, _mp(lo, point, dps), _mp(hi, point, dps))
+        if n is None:
+            return None, [], float(radius)
+        counts[f] = sp.Integer(n)
+        exact = f.xreplace(point)               # RealRoots evaluates itself by Sturm sequences at a rational point
+        if exact.is_Integer:
+            pairs.append((n, int(exact)))
+        widest = max(widest, float(radius))
+    return _numeric(closed.xreplace(counts), point, dps), pairs, widest
+
+
 @dataclass
 class DefinitionRoute:
     """The definition-route witness of one derivation (built by the checker, not declared)."""
@@ -345,34 +400,37 @@ class DefinitionRoute:
         parts = statement(relation)
         atoms = sorted(set().union(*(e.atoms(sp.core.relational.Relational) for _, e in parts)),
                        key=sp.default_sort_key)
-        try:                            # a root count (Sturm sequences on the closed form) is no quantity to measure
-            sides = {a: ((_carried_out(_expanded(a.lhs - a.rhs, self._defs, self._memo))
-                          if not a.has(RealRoots) else inserted(a.lhs - a.rhs, results)),
-                         inserted(a.lhs - a.rhs, results)) for a in atoms}
+        try:                            # a root count is counted, not measured from definitions
+            counted = {a: inserted(a.lhs - a.rhs, results) for a in atoms if a.has(RealRoots)}
+            sides = {a: (_carried_out(_expanded(a.lhs - a.rhs, self._defs, self._memo)),
+                         inserted(a.lhs - a.rhs, results)) for a in atoms if a not in counted}
         except (ValueError, NotImplementedError) as exc:
             out.note = f"definition route: not evaluated ({exc})"
             return out
         measured = {a: rc for a, rc in sides.items() if rc[0] != rc[1]}
-        if not measured:
+        if not measured and not counted:
             out.note = ("definition route: with the derivation's definitions inserted the relation compares the "
                         "closed forms the relation check decides, so nothing is left for a number to check")
             out.measurable = False
             return out
         where = [inserted(sp.sympify(w), results) for w in tuple(self.domain.constraints) + relation.where]
-        symbols = set().union(*(e.free_symbols for rc in sides.values() for e in rc))
+        symbols = set().union(*(e.free_symbols for rc in sides.values() for e in rc),
+                              *(e.free_symbols for e in counted.values()))
         symbols |= {q for w in where if w.free_symbols & symbols for q in w.free_symbols}
+        premises = [inserted(c, results) for c in _premises(relation)] if counted else []
         try:
-            points = self._relation_points(target, relation, symbols, where, check)
+            points = self._relation_points(target, relation, symbols, where, check, premises)
         except ValueError as exc:
             out.note = f"definition route: not evaluated ({exc})"
             return out
         if not points:
             out.note = "definition route: no sample point satisfies the relation's and the derivation's conditions"
             return out
-        failed, undecided = [], 0
+        failed, undecided, uncounted, differs = [], 0, {}, False
         for method in ROUTE_METHODS:
             t0 = time.perf_counter()
             worst_abs = worst_rel = 0.0
+            count = {"abs": 0, "rel": 0.0, "radius": 0.0, "points": 0, "seconds": 0.0}
             try:
                 for point in points:
                     signs = {}
@@ -383,8 +441,22 @@ class DefinitionRoute:
                         size = abs(_numeric(_magnitude(route), point, 10, _RoughQuadPrinter))
                         if abs(v) > 10 * method.tolerance * size:
                             signs[a] = sp.true if a.func(v, 0) else sp.false
+                    t1, decided = time.perf_counter(), True
+                    for a, closed in counted.items():
+                        v, pairs, radius = _counted(closed, point, method.dps)
+                        if v is None:
+                            decided = False
+                            continue
+                        signs[a] = sp.true if a.func(v, 0) else sp.false
+                        for got, exact in pairs:
+                            count["abs"] = max(count["abs"], abs(got - exact))
+                            count["rel"] = max(count["rel"], abs(got - exact) / max(1, exact))
+                        count["radius"] = max(count["radius"], radius)
+                    count["points"] += decided
+                    uncounted[method.dps] = uncounted.get(method.dps, 0) + (not decided)
+                    count["seconds"] += time.perf_counter() - t1
                     if method is ROUTE_METHODS[-1]:         # the statement, at the finer values
-                        verdict = self._statement_at(parts, sides, signs, point)
+                        verdict = self._statement_at(parts, sides, counted, signs, point)
                         if verdict is None:
                             undecided += 1
                         elif verdict:
@@ -393,27 +465,44 @@ class DefinitionRoute:
                 out.records = []
                 out.note = f"definition route: not evaluated ({exc})"
                 return out
-            out.records.append({"method": f"definitions, {method.dps} digits", "abs_error": worst_abs,
-                                "rel_error": worst_rel, "seconds": time.perf_counter() - t0, "cases": len(points)})
-            if worst_rel > method.tolerance:
-                out.agrees = False
+            if measured:
+                out.records.append({"method": f"definitions, {method.dps} digits", "abs_error": worst_abs,
+                                    "rel_error": worst_rel, "seconds": time.perf_counter() - t0 - count["seconds"],
+                                    "cases": len(points)})
+                if worst_rel > method.tolerance:
+                    out.agrees = False
+            if counted and count["points"]:
+                out.records.append({"method": f"root count, polyroots and inclusion discs, {method.dps} digits",
+                                    "abs_error": float(count["abs"]), "rel_error": float(count["rel"]),
+                                    "seconds": count["seconds"], "cases": count["points"],
+                                    "radius": float(count["radius"])})
+                if count["abs"]:
+                    out.agrees, differs = False, True
         notes = []
-        if not out.agrees:
+        if not out.agrees and not differs:
             notes.append("the definitions give another value of a side")
+        if differs:
+            notes.append("a numeric root count differs from the Sturm count")
         if failed:
             out.agrees = False
             point, bad = failed[0]
             at = ", ".join(f"{k}={v}" for k, v in sorted(point.items(), key=lambda kv: kv[0].name))
             notes.append(f"with the definitions' values the relation fails at {at} ({', '.join(bad)})")
+        for dps, n in uncounted.items():
+            if n:
+                notes.append(f"at {dps} digits the roots at {n} of {len(points)} points are not parted from each "
+                             "other or from an end by their inclusion discs: not counted there")
         if undecided:
             notes.append(f"at {undecided} of {len(points)} points a side is within its error of zero: the statement "
                          "is not read there")
         out.note = "definition route: " + "; ".join(notes) if notes else ""
         return out
 
-    def _relation_points(self, target, relation, symbols, where, check):
+    def _relation_points(self, target, relation, symbols, where, check, premises=()):
         """The relation check's counterexample (when it is a rational point of these symbols), then seeded
-        points of the domain that satisfy the derivation's constraints and the relation's conditions."""
+        points of the domain that satisfy the derivation's constraints and the relation's conditions, and for
+        each of the *premises* the first such point where it holds: among the seeded draws (continued for up to
+        :data:`PREMISE_DRAWS` more), else among the domain's boundary points the relation check starts from."""
         points = []
         if check is not None and check.counterexample:
             try:
@@ -423,21 +512,41 @@ class DefinitionRoute:
         intervals = relation_intervals(relation, symbols, self.domain, target)
         draws = random_points(sorted(symbols, key=lambda q: q.name), intervals,
                               f"{self.derivation_id}/{target} definition route")
-        sampled = []
+        sampled, wanted = [], list(premises)
         for _ in range(MAX_DRAWS):
             point = next(draws)
             if self.domain.admits(point) and all(truth(w, point) is True for w in where):
-                sampled.append(point)
-                if len(sampled) == SAMPLES:
+                met = [c for c in wanted if truth(c, point) is True]
+                if len(sampled) < SAMPLES or met:
+                    sampled.append(point)
+                wanted = [c for c in wanted if c not in met]
+                if len(sampled) >= SAMPLES and not wanted:
                     break
+        for _ in range(PREMISE_DRAWS if wanted else 0):     # a narrow case: more draws, its condition first
+            point = next(draws)
+            met = [c for c in wanted if truth(c, point) is True]
+            if met and self.domain.admits(point) and all(truth(w, point) is True for w in where):
+                sampled.append(point)
+                wanted = [c for c in wanted if c not in met]
+                if not wanted:
+                    break
+        for point in boundary_points(sorted(symbols, key=lambda q: q.name), intervals) if wanted else ():
+            met = [c for c in wanted if truth(c, point) is True]  # a narrow case next to the domain's edge
+            if met and self.domain.admits(point) and all(truth(w, point) is True for w in where):
+                sampled.append(point)
+                wanted = [c for c in wanted if c not in met]
         return points + sampled
 
     @staticmethod
-    def _statement_at(parts, sides, signs, point):
+    def _statement_at(parts, sides, counted, signs, point):
         """The names of the statement's parts that fail at *point* (an empty list: it holds), the inequalities
-        measured by the definitions taking their *signs*, the others their closed forms; None when a sign is
-        not known there."""
+        measured by the definitions or counted taking their *signs*, the others their closed forms; None when a
+        sign is not known there."""
         known = {}
+        for a in counted:
+            if a not in signs:
+                return None
+            known[a] = signs[a]
         for a, (route, closed) in sides.items():
             if route != closed:
                 if a not in signs:

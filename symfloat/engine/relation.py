@@ -40,7 +40,8 @@ from ..model.relation import Cases, Holds, Iff, RealRoots, Relation
 from .identity import Domain, IdentityResult
 from .roots import grid_roots
 
-__all__ = ["check_relation", "statement", "truth", "inserted", "relation_intervals", "random_points", "SAMPLES"]
+__all__ = ["check_relation", "statement", "truth", "inserted", "relation_intervals", "random_points", "boundary_points",
+           "SAMPLES"]
 
 DIGITS = 60            # working precision of the numeric sign of a relation
 SAMPLES = 40           # random points after the boundary points
@@ -186,6 +187,12 @@ def _boundary(symbols, intervals, limit=81):
         if i >= limit:
             return
         yield dict(zip(symbols, combo))
+
+
+def boundary_points(symbols, intervals) -> list:
+    """The domain's boundary points the sampling starts from: every combination of the symbols' ends (an open
+    end 1/1000 of the interval inside) and midpoints, at most 81."""
+    return list(_boundary(symbols, intervals))
 
 
 def random_points(symbols, intervals, seed):
