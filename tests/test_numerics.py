@@ -167,3 +167,16 @@ def test_declared_witnesses_are_measured_with_their_own_methods():
         tolerance = next(x.tolerance for x in declared[m.witness].methods if x.name == m.method)
         worst = max(e for e in m.errors.values() if e is not None)
         assert worst < tolerance, (m.witness, m.method, worst)
+
+
+def test_straightedge_constructions_are_benchmarked_like_computations():
+    """Graefe §3's straightedge constructions (ConstructionWitness: meeting lines, Heron areas) are measured at the
+    bench's precisions against the exact values of the readings they target (ratios and lengths of §3's
+    tetrahedron lemma at the cases' integer vertices): a family dropped from the bench fails here."""
+    bench = run_bench("graefe-s3", quick=True)
+    ms = [m for m in bench.measurements if m.family == "straightedge constructions"]
+    assert {"lines-construction", "lines-oc", "triangles-ratio-1"} <= {m.witness for m in ms}
+    assert {m.method for m in ms} == {"float64", "mpmath, 30 digits"}
+    for m in ms:
+        worst = max(e for e in m.errors.values() if e is not None)
+        assert worst < (1e-12 if m.method == "float64" else 1e-26), (m.witness, m.method, worst)

@@ -12,7 +12,8 @@ method that applies to its kind:
   Simpson and trapezoid in float64 at several panel counts;
 * :class:`~symfloat.engine.witness.HullWitness`: exact rational hull faces, and
   slices by Gauss–Legendre at several orders and precisions;
-* :class:`~symfloat.engine.witness.Computed`: the witness's own computation at
+* :class:`~symfloat.engine.witness.Computed` and the straightedge constructions
+  (:class:`~symfloat.engine.construction_witness.ConstructionWitness`): the witness's own computation at
   15 (float64), 30 and 50 digits, and at 100 digits where no exact reference exists;
 * the declared witnesses of floating bodies (:mod:`symfloat.engine.floating_witness`: exact clipping, roots,
   limits and series) and of plane figures (:mod:`symfloat.engine.figure_witness`): the methods the witness
@@ -36,6 +37,7 @@ import mpmath
 import sympy as sp
 
 from ..engine.check import _resolved, _substitute
+from ..engine.construction_witness import ConstructionWitness
 from ..engine.figure_witness import CurveRoot, FigureWitness
 from ..engine.floating_witness import Combined, FloatingWitness, Joined
 from ..engine.quadrature import Composite, GaussLegendre64, GaussLegendreMP, TanhSinh
@@ -57,6 +59,7 @@ FAMILIES = {
     PlaneSections: "plane-section chords",
     HullWitness: "convex hulls",
     Computed: "floating-geometry computations",
+    ConstructionWitness: "straightedge constructions",
     FloatingWitness: "floating bodies by exact clipping",
     Joined: "floating bodies by exact clipping",
     Combined: "floating bodies by exact clipping",
@@ -110,7 +113,7 @@ def methods_for(w, d, digits=DIGITS, orders=FLOAT64_ORDERS, panels=PANELS) -> tu
     if isinstance(w, HullWitness):
         return (ExactHull(),) + tuple(HullSlices(n, 15, 0) for n in (1, 2, 3)) + tuple(
             HullSlices(3, p, 0) for p in digits if p > 15)
-    if isinstance(w, Computed):
+    if isinstance(w, (Computed, ConstructionWitness)):
         return tuple(Precision(p, 0) for p in digits if p < REFERENCE_DPS)
     if isinstance(w, DECLARED):
         return tuple(w.methods)
@@ -260,7 +263,7 @@ def _witness_targets(d, w, results):
 
 
 def _reference_run(w):
-    if isinstance(w, Computed):
+    if isinstance(w, (Computed, ConstructionWitness)):
         return Precision(REFERENCE_DPS, 0)
     if isinstance(w, HullWitness):
         return ExactHull()
