@@ -36,3 +36,18 @@ def test_a_tuple_of_bounds_gives_one_value_per_pair_and_the_witness_refutes_a_wr
     # one area and one pair: a number, as before
     single = SectionIntegral("one", "one", ("t",), (CASE,), area=r ** 2 + z ** 2, z=z, bounds=(0, r))
     assert not isinstance(single.measure(CASE, single.methods[0]), tuple)
+
+
+def test_plane_sections_combined_by_an_expression_in_the_areas():
+    # the disc of radius r cut at the heights 0 and r/2 of a sphere of radius r: areas pi r^2 and 3 pi r^2/4 (by
+    # hand); the combination sqrt(A_0/pi), A_1/A_0 is the radius r and 3/4, and 2 r a parameter carried through
+    from symfloat.engine.witness import SECTION, PlaneSections
+    P, eta = sp.symbols("P eta", real=True)
+    w = PlaneSections("discs", "two sections", ("t",), (CASE,), width=2 * (r ** 2 - P ** 2) * sp.cos(eta) ** 2,
+                      position=P, across=eta, chord=(-sp.pi / 2, sp.pi / 2), planes=(0, r / 2),
+                      combine=(sp.sqrt(SECTION[0] / sp.pi), SECTION[1] / SECTION[0], 2 * r))
+    for method in w.methods:
+        got = w.measure(CASE, method)
+        assert all(abs(g - e) < max(method.tolerance, 1e-45) for g, e in zip(got, (1.5, 0.75, 3.0))), method.name
+    assert w.run({"t": (sp.Symbol("q"), sp.Matrix([r, sp.Rational(3, 4), 2 * r]))})["t"].agrees
+    assert not w.run({"t": (sp.Symbol("q"), sp.Matrix([r, sp.Rational(2, 3), 2 * r]))})["t"].agrees   # mutation

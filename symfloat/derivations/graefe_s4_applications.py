@@ -19,13 +19,12 @@ Notation: ``x``, ``x'`` are abscissae from the centre (spheres, ellipsoids,
 ``x < x'``: ``G`` is the larger base); for the paraboloid with two bases the
 abscissae from the vertex are written ``x_v > x'_v``.
 """
-import mpmath
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.figure_witness import FIGURE_METHODS, CurveRoot
 from symfloat.engine.floating_witness import PART, Combined
-from symfloat.engine.witness import Case, PlaneSections, SectionIntegral
+from symfloat.engine.witness import SECTION, Case, PlaneSections, SectionIntegral
 from symfloat.model.claim import as_printed
 from symfloat.registry import load
 
@@ -209,11 +208,11 @@ pyramid_cases = (("square frustum S = 3, s = 1, h = 2", {k: 1, S: 3, s: 1, h: 2}
                  ("trapezoid frustum k = 3/4, S = 2, s = 5/4, h = 3",
                   {k: sp.Rational(3, 4), S: 2, s: sp.Rational(5, 4), h: 3}))
 for target, combine in (
-        ("pyramid-frustum-ratio-G", lambda A, q: (A[0] / A[1], mpmath.sqrt(A[0] / A[1]))),
-        ("pyramid-frustum-ratio-g", lambda A, q: (A[2] / A[1], mpmath.sqrt(A[2] / A[1]))),
-        ("pyramid-frustum-roots", lambda A, q: (mpmath.sqrt(A[0]), mpmath.sqrt(A[2]))),
-        ("pyramid-frustum-root-sum", lambda A, q: mpmath.sqrt(A[0]) + mpmath.sqrt(A[2])),
-        ("pyramid-frustum-D", lambda A, q: A[1])):
+        ("pyramid-frustum-ratio-G", (SECTION[0] / SECTION[1], sp.sqrt(SECTION[0] / SECTION[1]))),
+        ("pyramid-frustum-ratio-g", (SECTION[2] / SECTION[1], sp.sqrt(SECTION[2] / SECTION[1]))),
+        ("pyramid-frustum-roots", (sp.sqrt(SECTION[0]), sp.sqrt(SECTION[2]))),
+        ("pyramid-frustum-root-sum", sp.sqrt(SECTION[0]) + sp.sqrt(SECTION[2])),
+        ("pyramid-frustum-D", SECTION[1])):
     planes_witness(f"{target}-sections", "sections G, D, g of trapezoid frusta by quadrature of their widths",
                    (target,), pyramid_sections, (0, h / 2, h), combine, *pyramid_cases)
 
@@ -271,7 +270,7 @@ sections_witness("segment-1", "centroid of the spherical segment from its circul
                  ("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
 
 planes_witness("segment-1-G-sections", "sections of the sphere at distances m and r from the centre",
-               ("segment-1-G",), round_sections(r ** 2 - P ** 2), (m, r), lambda A, q: (A[0], A[1], q[r] - q[m]),
+               ("segment-1-G",), round_sections(r ** 2 - P ** 2), (m, r), (SECTION[0], SECTION[1], r - m),
                ("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
 
 # ---- spherical segment, two bases ----------------------------------------------------------------
@@ -336,7 +335,7 @@ sections_witness("paraboloid-1", "centroid of the paraboloid from its circular s
 
 planes_witness("paraboloid-1-radii-sections", "sections of the paraboloid y^2 = 2 p P (P from the vertex)",
                ("paraboloid-1-radii",), round_sections(2 * p * P), (x, x / 2, 0),
-               lambda A, q: (A[0] / mpmath.pi, A[1] / mpmath.pi, A[2]),
+               (SECTION[0] / pi, SECTION[1] / pi, SECTION[2]),
                ("p = 1, x = 2", {p: 1, x: 2}), ("p = 5/2, x = 3/2", {p: sp.Rational(5, 2), x: sp.Rational(3, 2)}))
 
 # ---- paraboloid, two bases -----------------------------------------------------------------------------
@@ -367,7 +366,7 @@ sections_witness("paraboloid-2", "centroid of the paraboloid frustum from its ci
 
 planes_witness("paraboloid-2-radii-sections", "sections of the paraboloid y^2 = 2 p P (P from the vertex)",
                ("paraboloid-2-radii",), round_sections(2 * p * P), (xv, xvp, (xv + xvp) / 2),
-               lambda A, q: tuple(area / mpmath.pi for area in A),
+               (SECTION[0] / pi, SECTION[1] / pi, SECTION[2] / pi),
                ("p = 1, x = 4, x' = 1", {p: 1, xv: 4, xvp: 1}),
                ("p = 3/2, x = 3, x' = 2", {p: sp.Rational(3, 2), xv: 3, xvp: 2}))
 
@@ -408,7 +407,7 @@ sections_witness("ellipsoid-segment", "centroid of the ellipsoidal segment from 
 ellipsoid_sections = round_sections(b ** 2 / a ** 2 * (a ** 2 - P ** 2))
 planes_witness("ellipsoid-segment-radii-sections", "sections of the ellipsoid of revolution",
                ("ellipsoid-segment-radii",), ellipsoid_sections, (x, (a + x) / 2),
-               lambda A, q: tuple(area / mpmath.pi for area in A),
+               (SECTION[0] / pi, SECTION[1] / pi),
                ("a = 5, b = 3, x = 1", {a: 5, b: 3, x: 1}), ("a = 4, b = 1, x = 2", {a: 4, b: 1, x: 2}))
 
 area_he = pi * b ** 2 / a ** 2 * (a ** 2 - u ** 2)
@@ -474,10 +473,10 @@ truncated_cases = (("a = 5, b = 2, x = 1, x' = 4", {a: 5, b: 2, x: 1, xp: 4}),
                    ("a = 6, b = 3, x = 1/2, x' = 3", {a: 6, b: 3, x: sp.Rational(1, 2), xp: 3}))
 planes_witness("truncated-ellipsoid-radii-1-sections", "sections of the ellipsoid of revolution",
                ("truncated-ellipsoid-radii-1",), ellipsoid_sections, (x, xp),
-               lambda A, q: tuple(area / mpmath.pi for area in A), *truncated_cases)
+               (SECTION[0] / pi, SECTION[1] / pi), *truncated_cases)
 planes_witness("truncated-ellipsoid-radii-2-sections", "sections of the ellipsoid of revolution",
                ("truncated-ellipsoid-radii-2",), ellipsoid_sections, ((x + xp) / 2,),
-               lambda A, q: A[0] / mpmath.pi, *truncated_cases)
+               SECTION[0] / pi, *truncated_cases)
 
 # ---- the elliptic body with isosceles triangular sections --------------------------------------------------
 # Base: the ellipse with semi-axes a, b; EF of length 2a at height h above the major axis.  The generator cb
@@ -577,13 +576,13 @@ elliptic_cases = (("a = 5, b = 3, h = 4, m = 2, x = 1", {a: 5, b: 3, h: 4, m: 2,
 planes_witness("elliptic-body-ratio-sections", "sections of the elliptic body at the heights 0 and h/m",
                ("elliptic-body-ratio",),
                {"width": 2 * a * b * sp.cos(eta) ** 2 * (1 - P / h), "chord": (-pi / 2, pi / 2)},
-               (0, h / m), lambda A, q: A[0] / A[1], *elliptic_cases)
+               (0, h / m), SECTION[0] / SECTION[1], *elliptic_cases)
 # the triangle perpendicular to the major axis at abscissa P: width 2 b/a sqrt(a^2 - P^2) (1 - eta/h) at height
 # eta; its area is y h
 planes_witness("elliptic-body-base-sections", "the triangular section at abscissa x",
                ("elliptic-body-base",),
                {"width": 2 * b / a * sp.sqrt(a ** 2 - P ** 2) * (1 - eta / h), "chord": (0, h)},
-               (x,), lambda A, q: (A[0] / q[h]) ** 2, *elliptic_cases)
+               (x,), (SECTION[0] / h) ** 2, *elliptic_cases)
 
 # ---- triaxial ellipsoid: stump and half ----------------------------------------------------------------------
 # Semi-axes: a along the axis of the stump (nM), c (nR) and b (Sn) across it.  The section at abscissa xi from
@@ -693,31 +692,31 @@ sections_witness("half-triaxial", "centroid of the half triaxial ellipsoid from 
 SPHERE_CASES = (("r = 3", {r: 3}), ("r = 7/2", {r: sp.Rational(7, 2)}))
 planes_witness("sphere-sections-areas", "sections of the sphere at both poles and at the centre",
                ("sphere-sections",), round_sections(r ** 2 - P ** 2), (0, r, -r),   # a non-empty section first
-               lambda A, q: (A[1], A[2], A[0], 2 * q[r]), *SPHERE_CASES)
+               (SECTION[1], SECTION[2], SECTION[0], 2 * r), *SPHERE_CASES)
 planes_witness("hemisphere-sections-areas", "sections of the sphere at the pole, the centre and half the radius",
                ("hemisphere-sections",), round_sections(r ** 2 - P ** 2), (0, r, r / 2),
-               lambda A, q: (A[1], A[0], A[2]), *SPHERE_CASES)
+               (SECTION[1], SECTION[0], SECTION[2]), *SPHERE_CASES)
 SEGMENT_CASES = (("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
 planes_witness("segment-1-D-area", "section of the sphere halfway between the base (distance m) and the pole",
-               ("segment-1-D",), round_sections(r ** 2 - P ** 2), ((r + m) / 2,), lambda A, q: A[0],
+               ("segment-1-D",), round_sections(r ** 2 - P ** 2), ((r + m) / 2,), SECTION[0],
                *SEGMENT_CASES)
 SEGMENT2_CASES = (("r = 5, x = 1, x' = 3", {r: 5, x: 1, xp: 3}),
                   ("r = 9/2, x = 1/2, x' = 4", {r: sp.Rational(9, 2), x: sp.Rational(1, 2), xp: 4}))
 planes_witness("segment-2-radii-areas", "sections of the sphere at x, x' and halfway between",
                ("segment-2-radii",), round_sections(r ** 2 - P ** 2), (x, xp, (x + xp) / 2),
-               lambda A, q: tuple(area / mpmath.pi for area in A), *SEGMENT2_CASES)
+               (SECTION[0] / pi, SECTION[1] / pi, SECTION[2] / pi), *SEGMENT2_CASES)
 ELLIPSOID_SEGMENT_CASES = (("a = 5, b = 3, x = 1", {a: 5, b: 3, x: 1}), ("a = 4, b = 1, x = 2", {a: 4, b: 1, x: 2}))
 planes_witness("ellipsoid-segment-D-area", "section of the ellipsoid of revolution halfway between x and the vertex",
-               ("ellipsoid-segment-D",), ellipsoid_sections, ((a + x) / 2,), lambda A, q: A[0] / mpmath.pi,
+               ("ellipsoid-segment-D",), ellipsoid_sections, ((a + x) / 2,), SECTION[0] / pi,
                *ELLIPSOID_SEGMENT_CASES)
 # the elliptic body: the section at height P is bounded by the generators, chord 2 b/a sqrt(a^2 - xi^2) (1 - P/h)
 ELLIPTIC_BODY_CASES = (("a = 5, b = 3, h = 4", {a: 5, b: 3, h: 4}), ("a = 2, b = 1, h = 7/2", {a: 2, b: 1, h: sp.Rational(7, 2)}))
 elliptic_body_width = {"width": 2 * a * b * sp.cos(eta) ** 2 * (1 - P / h), "chord": (-pi / 2, pi / 2)}
 planes_witness("elliptic-body-sections-areas", "sections of the elliptic body at the heights 0, h/2 and h",
-               ("elliptic-body-sections",), elliptic_body_width, (0, h / 2, h), lambda A, q: tuple(A),
+               ("elliptic-body-sections",), elliptic_body_width, (0, h / 2, h), (SECTION[0], SECTION[1], SECTION[2]),
                *ELLIPTIC_BODY_CASES)
 planes_witness("elliptic-body-D-axis-area", "the section at h/2 over pi a: its small half axis",
-               ("elliptic-body-D-axis",), elliptic_body_width, (h / 2,), lambda A, q: A[0] / (mpmath.pi * q[a]),
+               ("elliptic-body-D-axis",), elliptic_body_width, (h / 2,), SECTION[0] / (pi * a),
                *ELLIPTIC_BODY_CASES)
 # the triaxial ellipsoid P^2/a^2 + t^2/c^2 + s^2/b^2 <= 1: at the abscissa P the chord in s over t = c sqrt(1 -
 # P^2/a^2) sin(eta) is 2 b sqrt(1 - P^2/a^2) cos(eta), times dt
@@ -726,7 +725,7 @@ TRIAXIAL_CASES = (("a = 5, b = 3, c = 2, x = 1, x' = 4", {a: 5, b: 3, c: 2, x: 1
 triaxial_width = {"width": 2 * b * c * (1 - P ** 2 / a ** 2) * sp.cos(eta) ** 2, "chord": (-pi / 2, pi / 2)}
 for name, at in (("G", x), ("D", (x + xp) / 2), ("g", xp)):
     planes_witness(f"triaxial-stump-{name}-area", f"section of the triaxial ellipsoid at the abscissa of {name}",
-                   (f"triaxial-stump-{name}",), triaxial_width, (at,), lambda A, q: A[0], *TRIAXIAL_CASES)
+                   (f"triaxial-stump-{name}",), triaxial_width, (at,), SECTION[0], *TRIAXIAL_CASES)
 
 
 # the half axes of the section at an abscissa: the ordinates there of the principal ellipses NMR (half axes a, c)
@@ -742,7 +741,7 @@ for name, at in (("G", x), ("D", (x + xp) / 2), ("g", xp)):
                                    for semi in (c, b)),
                        values=(PART[0] ** 2, PART[1] ** 2), methods=FIGURE_METHODS))
 planes_witness("pyramid-frustum-side-D-section", "the mid-section of trapezoid frusta by quadrature of its widths",
-               ("pyramid-frustum-side-D",), pyramid_sections, (h / 2,), lambda A, q: mpmath.sqrt(A[0] / q[k]),
+               ("pyramid-frustum-side-D",), pyramid_sections, (h / 2,), sp.sqrt(SECTION[0] / k),
                *pyramid_cases)
 d.quote("half-ellipsoid-from-segment", "§4 half ellipsoid",
         r"Setzt man hierin  $x = 0$ , so findet sich für den Abstand des Schwerpunktes des halben Ellipsoids",
@@ -756,7 +755,7 @@ sections_witness("half-triaxial-as-stump", "centroid of the half triaxial ellips
                  ("half-triaxial-from-stump",), area_ht, a, ("a = 5, b = 3, c = 2", {a: 5, b: 3, c: 2}),
                  ("a = 3, b = 2, c = 1", {a: 3, b: 2, c: 1}))
 planes_witness("cone-frustum-D-section", "the mid-section of the cone frustum across its chords", ("cone-frustum-D",),
-               round_sections((R + (r - R) * P / h) ** 2), (h / 2,), lambda A, q: mpmath.sqrt(A[0] / mpmath.pi),
+               round_sections((R + (r - R) * P / h) ** 2), (h / 2,), sp.sqrt(SECTION[0] / pi),
                ("R = 3, r = 1, h = 4", {R: 3, r: 1, h: 4}), ("R = 5/2, r = 2, h = 3/2", {R: sp.Rational(5, 2), r: 2, h: sp.Rational(3, 2)}))
 sections_witness("elliptic-body-claims", "centroid of the elliptic body from its elliptic sections",
                  ("elliptic-body-triangles", "elliptic-body-paraboloid"), area_eb, h,

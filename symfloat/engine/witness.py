@@ -24,7 +24,7 @@ from ..geometry.convex import hull_volume_centroid, section_area
 from ..model.claim import members
 from .quadrature import DEFAULT_METHODS, TANH_SINH_15, TANH_SINH_50
 
-__all__ = ["Case", "Outcome", "MeasuredWitness", "Computed", "Precision", "SectionIntegral", "PlaneSections",
+__all__ = ["Case", "Outcome", "MeasuredWitness", "Computed", "Precision", "SectionIntegral", "PlaneSections", "SECTION",
            "HullWitness",
            "ExactHull", "HullSlices", "ConvergenceOrder"]
 
@@ -219,13 +219,34 @@ class SectionIntegral(MeasuredWitness):
             return moment if self.quantity == "moment" else moment / volume
 
 
+SECTION = sp.symbols("section_area0:16")    # the areas of the planes of a PlaneSections witness, in order
+
+
+def _combined(expr, areas, params):
+    """*expr* (an expression or a tuple of them in :data:`SECTION` and the case's parameters) with the measured
+    *areas* and the exact parameter values, in mpmath at the working precision."""
+    items = expr if isinstance(expr, tuple) else (expr,)
+    out = []
+    for item in items:
+        e = sp.sympify(item).xreplace(params)
+        args = sorted(e.free_symbols, key=lambda q: q.name)
+        if any(q not in SECTION[:len(areas)] for q in args):
+            raise ValueError(f"{item} names {args}, not only the section areas and the case's parameters")
+        value = sp.lambdify(args, e, "mpmath")(*(areas[SECTION.index(q)] for q in args))
+        out.append(value if isinstance(value, mpmath.mpf) else mpmath.mpf(sp.Float(sp.N(value, mpmath.mp.dps + 10),
+                                                                                     mpmath.mp.dps + 10)._mpf_))
+    return tuple(out) if isinstance(expr, tuple) else out[0]
+
+
 @dataclass(frozen=True)
 class PlaneSections(MeasuredWitness):
     """Areas of plane sections of a solid, each by quadrature of the solid's chord
     widths across the section: ``width`` (in the plane position ``position`` and
     the chord coordinate ``across``) integrated over ``chord``, for each plane of
     ``planes``;
-    ``combine(areas, params)`` turns the areas into the quantity the targets state.
+    ``combine`` turns the areas into the quantity the targets state: an expression (or a tuple) in
+    ``SECTION[i]``, the area of the i-th plane, and the case's parameters (``sp.sqrt(SECTION[0] / pi)``, a
+    radius), or a function ``combine(areas, params)`` of the areas and the parameters' mpmath values.
     Witnesses the value-free displays (radii, section areas, their ratios)."""
 
     width: sp.Expr = None
@@ -244,8 +265,13 @@ class PlaneSections(MeasuredWitness):
                 f = sp.lambdify(self.across, self.width.xreplace(at), "mpmath")
                 lo, hi = (mpmath.mpf(sp.N(sp.sympify(e).xreplace(at), method.dps + 10)) for e in self.chord)
                 areas.append(method.integrate(f, [lo, hi])[0])
-            params = {q: mpmath.mpf(sp.N(v, method.dps + 10)) for q, v in case.params.items()}
-            return self.combine(areas, params)
+            return self.combined(areas, case)
+
+    def combined(self, areas, case):
+        """The targets' quantity from the planes' *areas* at *case*, at the working precision."""
+        if not callable(self.combine):
+            return _combined(self.combine, areas, case.params)
+        return self.combine(areas, {q: mpmath.mpf(sp.N(v, mpmath.mp.dps + 10)) for q, v in case.params.items()})
 
 
 @dataclass(frozen=True)

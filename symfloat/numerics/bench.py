@@ -223,9 +223,7 @@ def _plane_sections(w, case):
 
     def value(method):
         with mpmath.workdps(method.dps):
-            areas = [method.integrate(f, chord)[0] for f, chord in planes]
-            params = {q: mpmath.mpf(sp.N(v, method.dps + 10)) for q, v in case.params.items()}
-            return w.combine(areas, params)
+            return w.combined([method.integrate(f, chord)[0] for f, chord in planes], case)
     return value
 
 
