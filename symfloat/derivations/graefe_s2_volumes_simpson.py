@@ -25,7 +25,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.quadrature import composite_simpson
-from symfloat.engine.witness import Case, ConvergenceOrder, PlaneSections, SectionIntegral
+from symfloat.engine.witness import SECTION, Case, ConvergenceOrder, PlaneSections, SectionIntegral
 from symfloat.registry import load
 
 G, g, D, h, z, t = sp.symbols("G g D h z t", positive=True)
@@ -348,14 +348,14 @@ def _round(rho2):
 
 d.witness(PlaneSections("sphere-section-areas", "sections of the sphere at both poles and the centre",
                         ("sphere-sections",), SPHERE_CASES, planes=(r, 0, 2 * r),   # a non-empty section first
-                        combine=lambda A, q: (A[1], A[2], A[0]), **_round(r ** 2 - (zp - r) ** 2)))
+                        combine=(SECTION[1], SECTION[2], SECTION[0]), **_round(r ** 2 - (zp - r) ** 2)))
 for name, plane in (("paraboloid-base-radius", 0), ("paraboloid-mid-radius", x / 2)):
     d.witness(PlaneSections(f"{name}-section", "section of the paraboloid y² = 2pt (t from the vertex, t = x - z)",
                             (name,), PARABOLOID_CASES, planes=(plane,),
-                            combine=lambda A, q: A[0] / mpmath.pi, **_round(2 * p * (x - zp))))
+                            combine=SECTION[0] / pi, **_round(2 * p * (x - zp))))
 d.witness(PlaneSections("ellipse-chords", "the ellipsoid's sections at the base and the mid-section, over pi",
                         ("ellipsoid-radii",), ELLIPSOID_CASES, planes=(0, x / 2),
-                        combine=lambda A, q: (A[0] / mpmath.pi, A[1] / mpmath.pi), **_round(A_e_centre.subs(z, zp) / pi)))
+                        combine=(SECTION[0] / pi, SECTION[1] / pi), **_round(A_e_centre.subs(z, zp) / pi)))
 d.witness(SectionIntegral("half-ellipsoid-segment", "∫ π b² (1 - (t - a)²/a²) dt over the segment of height a",
                           ("half-ellipsoid-x-a",), tuple(Case({a: c_.params[a], b: c_.params[b], x: c_.params[a]},
                                                                label=f"a = {c_.params[a]}, b = {c_.params[b]}")

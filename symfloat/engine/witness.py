@@ -246,7 +246,7 @@ class PlaneSections(MeasuredWitness):
     ``planes``;
     ``combine`` turns the areas into the quantity the targets state: an expression (or a tuple) in
     ``SECTION[i]``, the area of the i-th plane, and the case's parameters (``sp.sqrt(SECTION[0] / pi)``, a
-    radius), or a function ``combine(areas, params)`` of the areas and the parameters' mpmath values.
+    radius).
     Witnesses the value-free displays (radii, section areas, their ratios)."""
 
     width: sp.Expr = None
@@ -269,9 +269,7 @@ class PlaneSections(MeasuredWitness):
 
     def combined(self, areas, case):
         """The targets' quantity from the planes' *areas* at *case*, at the working precision."""
-        if not callable(self.combine):
-            return _combined(self.combine, areas, case.params)
-        return self.combine(areas, {q: mpmath.mpf(sp.N(v, mpmath.mp.dps + 10)) for q, v in case.params.items()})
+        return _combined(self.combine, areas, case.params)
 
 
 @dataclass(frozen=True)
