@@ -86,3 +86,39 @@ def test_heron_area_against_the_cross_product_and_line_meet_against_exact_ration
             if area2:
                 assert all(abs(meet[k] - mpmath.mpf(m[k].numerator) / m[k].denominator) < mpmath.mpf(10) ** -40
                            for k in range(3))
+
+
+# ---- side faces of prismatoids: the hull's faces and two plane sections --------------------------------------
+# counts by hand: a prism has one rectangle per side; a pyramid one triangle per side of its base; a square over
+# the same square turned by 45 degrees (an antiprism) 4 + 4 triangles; a trapezoid frustum one trapezoid per side
+PRISMATOIDS = {
+    "triangular prism": ([(0, 0, 0), (3, 0, 0), (0, 3, 0), (0, 0, 2), (3, 0, 2), (0, 3, 2)], (3, 0)),
+    "square pyramid": ([(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (1, 1, 3)], (4, 4)),
+    "square antiprism": ([(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0), (0, -2, 1), (2, 0, 1), (0, 2, 1), (-2, 0, 1)],
+                         (8, 8)),
+    "frustum with a parallel pair": ([(0, 0, 0), (4, 0, 0), (4, 4, 0), (0, 4, 0), (1, 1, 1), (3, 1, 1), ("5/2", 3, 1),
+                                      ("3/2", "5/2", 1)], (7, 6)),
+}
+
+
+@pytest.mark.parametrize("name", sorted(PRISMATOIDS))
+def test_side_faces_by_the_hull_and_by_sections(name):
+    from symfloat.geometry.convex import side_faces, side_faces_by_sections
+    points, expected = PRISMATOIDS[name]
+    assert side_faces(points) == expected == side_faces_by_sections(points)
+
+
+def test_side_faces_by_sections_refuse_a_point_between_the_bases():
+    from symfloat.geometry.convex import side_faces_by_sections
+    with pytest.raises(ValueError):
+        side_faces_by_sections([(0, 0, 0), (2, 0, 0), (0, 2, 0), (0, 0, 2), (1, 1, 1)])
+
+
+def test_the_side_faces_witness_refutes_a_wrong_count():
+    import sympy as sp
+    from symfloat.engine.witness import Case, SideFaces
+    points, (faces, triangles) = PRISMATOIDS["frustum with a parallel pair"]
+    w = SideFaces("f", "faces", ("t",), (Case({}, points),))
+    assert w.run({"t": (sp.Symbol("q"), sp.Matrix([faces, triangles]))})["t"].agrees
+    out = w.run({"t": (sp.Symbol("q"), sp.Matrix([faces, triangles + 1]))})["t"]     # mutation: one triangle more
+    assert not out.agrees and len(out.records) == 2

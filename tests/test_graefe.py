@@ -122,15 +122,16 @@ def test_displacement_centroid_of_uniform_sections_is_the_middle(graefe_reports)
 
 
 def test_side_faces_of_the_hull_count_as_graefe_says():
-    # Fig. 1: a pentagon under a quadrilateral, no sides parallel: 5 + 4 = 9 side faces, all triangles
-    from symfloat.engine.witness import Case
+    # Fig. 1: a pentagon under a quadrilateral, no sides parallel: 5 + 4 = 9 side faces, all triangles (the hull's
+    # faces and two plane sections, the methods of the witness)
+    from symfloat.geometry.convex import side_faces, side_faces_by_sections
     from symfloat.registry import load
     _, module = load("graefe-s1-prismatoid-volume")
-    top = [(1, 1), (3, "3/2"), (3, 3), ("3/2", "7/2")]
-    assert module._side_faces(Case({}, (module.PENTAGON, top)), 15) == [9, 9]
+    top = module._prismatoid(module.PENTAGON, [(1, 1), (3, "3/2"), (3, 3), ("3/2", "7/2")])
+    assert side_faces(top) == side_faces_by_sections(top) == (9, 9)
     # mutation: turn the top's first side parallel to the pentagon's first: the two triangles over them merge
-    parallel = [(1, 1), (3, 1), (3, 3), ("3/2", "7/2")]
-    assert module._side_faces(Case({}, (module.PENTAGON, parallel)), 15) == [8, 7]
+    parallel = module._prismatoid(module.PENTAGON, [(1, 1), (3, 1), (3, 3), ("3/2", "7/2")])
+    assert side_faces(parallel) == side_faces_by_sections(parallel) == (8, 7)
 
 
 def test_the_symmetry_plane_of_the_hull_is_BBprime_VprimeV():

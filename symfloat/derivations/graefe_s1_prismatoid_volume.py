@@ -13,7 +13,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.construction_witness import Area, ConstructionWitness, Mid, Sum
-from symfloat.engine.witness import Case, Computed, HullWitness
+from symfloat.engine.witness import Case, HullWitness, SideFaces
 from symfloat.geometry.prismatoid import prismatoid_parameters, random_prismatoid
 from symfloat.model.claim import as_printed
 
@@ -379,28 +379,19 @@ d.quote("parallel-sides", "§1 prismatoid faces", "Würden aber zwei der Seiten 
              "other share no face and change nothing)")
 
 
-def _lift(polygon, height):
-    from fractions import Fraction as F
-    return [(F(x_), F(y_), F(height)) for x_, y_ in polygon]
-
-
-def _side_faces(case, dps):
-    """[side faces, of them triangles] of the exact hull of the two bases (faces off the planes z = 0, z = 1)."""
-    from symfloat.geometry.convex import hull_faces
-    lower, upper = case.data
-    faces = [f for f in hull_faces(_lift(lower, 0) + _lift(upper, 1)) if len({v[2] for v in f}) > 1]
-    return [len(faces), sum(len(f) == 3 for f in faces)]
+def _prismatoid(lower, upper):
+    """The vertices of the prismatoid with the base *lower* at height 0 and the top *upper* at height 1."""
+    return [(x_, y_, 0) for x_, y_ in lower] + [(x_, y_, 1) for x_, y_ in upper]
 
 
 PENTAGON = [(0, 0), (4, 0), (5, 3), (2, 5), (-1, 3)]
 SQUARE = [(0, 0), (4, 0), (4, 4), (0, 4)]
-FACE_CASES = (Case({ps: 5, qs: 4, kp: 0}, (PENTAGON, [(1, 1), (3, "3/2"), (3, 3), ("3/2", "7/2")]),
+FACE_CASES = (Case({ps: 5, qs: 4, kp: 0}, _prismatoid(PENTAGON, [(1, 1), (3, "3/2"), (3, 3), ("3/2", "7/2")]),
                    "pentagon under a quadrilateral, no sides parallel (Fig. 1: 5 + 4)"),
-              Case({ps: 5, qs: 3, kp: 0}, (PENTAGON, [(1, 1), (3, 2), (2, 3)]), "pentagon under a triangle"))
-d.witness(Computed("side-faces-hull", "the side faces of the exact convex hull of the two bases, counted",
-                   ("side-faces",), FACE_CASES, compute=_side_faces))
-d.witness(Computed("parallel-sides-hull", "the side faces of the exact hull when one pair of sides is parallel",
-                   ("parallel-sides",),
-                   (Case({ps: 4, qs: 4, kp: 1}, (SQUARE, [(1, 1), (3, 1), ("5/2", 3), ("3/2", "5/2")]),
-                         "square under a quadrilateral with its front side parallel"),),
-                   compute=_side_faces))
+              Case({ps: 5, qs: 3, kp: 0}, _prismatoid(PENTAGON, [(1, 1), (3, 2), (2, 3)]), "pentagon under a triangle"))
+d.witness(SideFaces("side-faces-hull", "the side faces of the convex hull of the two bases, counted",
+                    ("side-faces",), FACE_CASES))
+d.witness(SideFaces("parallel-sides-hull", "the side faces of the convex hull when one pair of sides is parallel",
+                    ("parallel-sides",),
+                    (Case({ps: 4, qs: 4, kp: 1}, _prismatoid(SQUARE, [(1, 1), (3, 1), ("5/2", 3), ("3/2", "5/2")]),
+                          "square under a quadrilateral with its front side parallel"),)))

@@ -20,13 +20,13 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from ..geometry.convex import hull_volume_centroid, section_area
+from ..geometry.convex import hull_volume_centroid, section_area, side_faces, side_faces_by_sections
 from ..model.claim import members
 from .quadrature import DEFAULT_METHODS, TANH_SINH_15, TANH_SINH_50
 
 __all__ = ["Case", "Outcome", "MeasuredWitness", "Computed", "Precision", "SectionIntegral", "PlaneSections", "SECTION",
-           "HullWitness",
-           "ExactHull", "HullSlices", "ConvergenceOrder"]
+           "HullWitness", "SideFaces",
+           "ExactHull", "HullSlices", "FaceSections", "ConvergenceOrder"]
 
 REFERENCE_DIGITS = 60
 
@@ -360,6 +360,28 @@ class HullWitness(MeasuredWitness):
                 return height if self.quantity == "height" else height * volume
             volume = method.integrate(pts, 0, 0)
             return tuple(method.integrate(pts, ax, 1) / volume for ax in range(3))
+
+
+@dataclass(frozen=True)
+class FaceSections:
+    """Side faces counted from two exact plane sections (:func:`~symfloat.geometry.convex.side_faces_by_sections`)."""
+
+    name: str = "plane sections at 1/3 and 2/3 of the height, rational"
+    tolerance: float = 0.0
+
+
+@dataclass(frozen=True)
+class SideFaces(MeasuredWitness):
+    """The side faces of the convex hull of ``case.data`` (3-D rational points, each in one of the two extreme
+    planes along ``axis``: a prismatoid) counted, and how many of them are triangles: ``(faces, triangles)``,
+    from the exact hull's faces and, independently, from two plane sections."""
+
+    axis: int = 2
+    methods: tuple = (ExactHull(), FaceSections())
+
+    def measure(self, case, method):
+        count = side_faces if isinstance(method, ExactHull) else side_faces_by_sections
+        return tuple(_mpf(Fraction(n)) for n in count(case.data, self.axis))
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,8 @@ from __future__ import annotations
 from fractions import Fraction
 from itertools import combinations
 
-__all__ = ["hull_2d", "polygon_area", "hull_faces", "hull_volume_centroid", "section_polygon", "section_area"]
+__all__ = ["hull_2d", "polygon_area", "hull_faces", "hull_volume_centroid", "section_polygon", "section_area",
+           "side_faces", "side_faces_by_sections"]
 
 
 def _cross2(o, a, b):
@@ -144,3 +145,47 @@ def section_polygon(points, axis, height):
 def section_area(points, axis, height):
     """Area of :func:`section_polygon`."""
     return polygon_area(section_polygon(points, axis, height))
+
+
+def _exact(points):
+    return [tuple(Fraction(c) for c in p) for p in points]
+
+
+def side_faces(points, axis=2):
+    """``(faces, triangles)``: the faces of the hull of *points* that do not lie in a plane ``x[axis] = const``
+    (the side faces of a prismatoid), and how many of them are triangles, from the hull's faces.
+
+    >>> side_faces([(0, 0, 0), (2, 0, 0), (0, 2, 0), (0, 0, 1), (1, 0, 1), (0, 1, 1)])    # a frustum: 3 trapezoids
+    (3, 0)
+    """
+    faces = [f for f in _faces(_exact(points)) if len({v[axis] for v in f}) > 1]
+    return len(faces), sum(len(f) == 3 for f in faces)
+
+
+def side_faces_by_sections(points, axis=2):
+    """:func:`side_faces` of a prismatoid (every point in one of the two extreme planes along *axis*) from two
+    plane sections instead of the hull's faces: a plane between the bases cuts every side face in one edge of
+    the section polygon, of the same direction from plane to plane (no two edges of a convex polygon share
+    one) and of a length linear in the height; so the edges of the sections at 1/3 and 2/3 of the height,
+    matched by direction, are the side faces, and a face is a triangle where its length extrapolates to
+    zero at a base (``2 l_1 - l_2`` or ``2 l_2 - l_1``).
+
+    >>> side_faces_by_sections([(0, 0, 0), (2, 0, 0), (0, 2, 0), (0, 0, 1), (1, 0, 1), (0, 1, 1)])
+    (3, 0)
+    >>> side_faces_by_sections([(0, 0, 0), (2, 0, 0), (0, 2, 0), (0, 0, 1)])         # a tetrahedron: 3 triangles
+    (3, 3)
+    """
+    pts = _exact(points)
+    lo, hi = min(p[axis] for p in pts), max(p[axis] for p in pts)
+    if any(lo < p[axis] < hi for p in pts):
+        raise ValueError("a point lies between the extreme planes: not a prismatoid")
+    rings = [section_polygon(pts, axis, lo + (hi - lo) * t) for t in (Fraction(1, 3), Fraction(2, 3))]
+    edges = [[(q[0] - p[0], q[1] - p[1]) for p, q in zip(r, r[1:] + r[:1])] for r in rings]
+    triangles = 0
+    for e in edges[0]:
+        f = next((g for g in edges[1] if e[0] * g[1] - e[1] * g[0] == 0 and e[0] * g[0] + e[1] * g[1] > 0), None)
+        if f is None or len(edges[0]) != len(edges[1]):
+            raise ValueError("the two sections' edges do not pair up: not a prismatoid's side faces")
+        k = 0 if e[0] != 0 else 1              # lengths along the common direction, by one nonzero component
+        triangles += 2 * e[k] - f[k] == 0 or 2 * f[k] - e[k] == 0
+    return len(edges[0]), triangles

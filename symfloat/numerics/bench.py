@@ -11,7 +11,8 @@ method that applies to its kind:
   Newton–Cotes rule (the derivation speaks of Simpson's rule), composite
   Simpson and trapezoid in float64 at several panel counts;
 * :class:`~symfloat.engine.witness.HullWitness`: exact rational hull faces, and
-  slices by Gauss–Legendre at several orders and precisions;
+  slices by Gauss–Legendre at several orders and precisions; the counts of side faces
+  (:class:`~symfloat.engine.witness.SideFaces`): the hull's faces and two plane sections, both exact;
 * :class:`~symfloat.engine.witness.Computed` and the straightedge constructions
   (:class:`~symfloat.engine.construction_witness.ConstructionWitness`): the witness's own computation at
   15 (float64), 30 and 50 digits, and at 100 digits where no exact reference exists;
@@ -42,7 +43,7 @@ from ..engine.figure_witness import CurveRoot, FigureWitness
 from ..engine.floating_witness import Combined, FloatingWitness, Joined
 from ..engine.quadrature import Composite, GaussLegendre64, GaussLegendreMP, TanhSinh
 from ..engine.witness import (Computed, ConvergenceOrder, ExactHull, HullSlices, HullWitness, PlaneSections,
-                              Precision, SectionIntegral)
+                              Precision, SectionIntegral, SideFaces)
 from ..model.claim import members
 from ..model.relation import is_relation
 from ..registry import load, select
@@ -58,6 +59,7 @@ FAMILIES = {
     SectionIntegral: "section-area quadrature",
     PlaneSections: "plane-section chords",
     HullWitness: "convex hulls",
+    SideFaces: "convex hulls",
     Computed: "floating-geometry computations",
     ConstructionWitness: "straightedge constructions",
     FloatingWitness: "floating bodies by exact clipping",
@@ -110,6 +112,8 @@ def methods_for(w, d, digits=DIGITS, orders=FLOAT64_ORDERS, panels=PANELS) -> tu
             ms += [Composite(f"{rule} {n} panels, float64", 0, "float64", 15, rule, n)
                    for rule in ("Simpson", "trapezoid") for n in panels]
         return tuple(ms)
+    if isinstance(w, SideFaces):
+        return tuple(w.methods)                 # counts: the exact hull's faces and two exact sections
     if isinstance(w, HullWitness):
         return (ExactHull(),) + tuple(HullSlices(n, 15, 0) for n in (1, 2, 3)) + tuple(
             HullSlices(3, p, 0) for p in digits if p > 15)
@@ -263,7 +267,7 @@ def _witness_targets(d, w, results):
 def _reference_run(w):
     if isinstance(w, (Computed, ConstructionWitness)):
         return Precision(REFERENCE_DPS, 0)
-    if isinstance(w, HullWitness):
+    if isinstance(w, (HullWitness, SideFaces)):
         return ExactHull()
     if isinstance(w, DECLARED):
         return max(w.methods, key=lambda m: m.dps)
