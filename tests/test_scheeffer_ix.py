@@ -56,13 +56,16 @@ def test_the_errata_are_exactly_the_expected_ones(report):
 def test_every_witnessed_formula_has_float_and_40_digit_records(report):
     # the module's witnesses (the clipped box, symfloat/engine/floating_witness.py) measure in float64 and at 40
     # digits; the formulas none of them targets are measured from the definitions (symfloat/engine/definitions.py)
-    # at 15 and 30 digits
+    # at 15 and 30 digits, their root counts (the case tables (161), (143), (144)) counted again at 15 and 30 digits
     own = {"float64", "mpmath, 40 digits"}
     route = {"definitions, 15 digits", "definitions, 30 digits"}
+    counted = {f"root count, polyroots and inclusion discs, {n} digits" for n in (15, 30)}
     witnessed = [f for f in report.formulas if f.numeric]
     assert len([f for f in witnessed if {r["method"] for r in f.numeric} == own]) >= 60
     for f in witnessed:
-        assert {r["method"] for r in f.numeric} in (own, route), f.id
+        assert {r["method"] for r in f.numeric} in (own, route, counted), f.id
+    rows = {f.id.split("/")[1]: f for f in report.formulas if f.id.split("/")[1].startswith("161-")}
+    assert len(rows) == 5 and all({r["method"] for r in f.numeric} == counted for f in rows.values())
 
 
 # ---- pinned values, recomputed on the clipped box ---------------------------------------------------
