@@ -180,3 +180,15 @@ def test_straightedge_constructions_are_benchmarked_like_computations():
     for m in ms:
         worst = max(e for e in m.errors.values() if e is not None)
         assert worst < (1e-12 if m.method == "float64" else 1e-26), (m.witness, m.method, worst)
+
+
+def test_a_combined_witness_is_listed_with_its_parts():
+    """Graefe §4's triaxial stump combines roots along its principal ellipses (CurveRoot, plane figures);
+    metazentrum's heeled metacentre combines clipped-box measurements: each is listed under its parts' family."""
+    from symfloat.engine.floating_witness import Combined
+    from symfloat.numerics.bench import family_of
+    graefe, _ = load("graefe-s4-applications")
+    meta, _ = load("metazentrum")
+    stump = next(w for w in graefe.witnesses if isinstance(w, Combined) and w.name.startswith("triaxial-stump"))
+    heel = next(w for w in meta.witnesses if w.name == "metacentre-heel")
+    assert family_of(stump) == "plane figures" and family_of(heel) == "floating bodies by exact clipping"

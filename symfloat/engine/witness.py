@@ -24,7 +24,7 @@ from ..geometry.convex import hull_volume_centroid, section_area, side_faces, si
 from ..model.claim import members
 from .quadrature import DEFAULT_METHODS, TANH_SINH_15, TANH_SINH_50
 
-__all__ = ["Case", "Outcome", "MeasuredWitness", "Computed", "Precision", "SectionIntegral", "PlaneSections", "SECTION",
+__all__ = ["Case", "Outcome", "MeasuredWitness", "Precision", "SectionIntegral", "PlaneSections", "SECTION",
            "HullWitness", "SideFaces",
            "ExactHull", "HullSlices", "FaceSections", "ConvergenceOrder"]
 
@@ -145,7 +145,8 @@ class MeasuredWitness:
 
 @dataclass(frozen=True)
 class Precision:
-    """Working precision of a :class:`Computed` witness."""
+    """Working precision of a declared witness: ``dps`` digits (float64 for 15) and the tolerance its
+    measurement is trusted to."""
 
     dps: int
     tolerance: float
@@ -153,21 +154,6 @@ class Precision:
     @property
     def name(self):
         return "float64" if self.dps <= 15 else f"mpmath, {self.dps} digits"
-
-
-@dataclass(frozen=True)
-class Computed(MeasuredWitness):
-    """A first-principles computation written for one quantity:
-    ``compute(case, dps)`` returns the value (or a tuple) at ``dps`` digits
-    (float64 for 15).  For constructions that no generic witness covers, such
-    as intersecting lines and measuring triangles by Heron's formula."""
-
-    compute: object = None
-    methods: tuple = (Precision(15, 1e-10), Precision(50, 1e-40))
-
-    def measure(self, case, method):
-        with mpmath.workdps(method.dps):
-            return self.compute(case, method.dps)
 
 
 @dataclass(frozen=True)

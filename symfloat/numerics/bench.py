@@ -13,7 +13,7 @@ method that applies to its kind:
 * :class:`~symfloat.engine.witness.HullWitness`: exact rational hull faces, and
   slices by Gauss–Legendre at several orders and precisions; the counts of side faces
   (:class:`~symfloat.engine.witness.SideFaces`): the hull's faces and two plane sections, both exact;
-* :class:`~symfloat.engine.witness.Computed` and the straightedge constructions
+* the straightedge constructions
   (:class:`~symfloat.engine.construction_witness.ConstructionWitness`): the witness's own computation at
   15 (float64), 30 and 50 digits, and at 100 digits where no exact reference exists;
 * the declared witnesses of floating bodies (:mod:`symfloat.engine.floating_witness`: exact clipping, roots,
@@ -42,14 +42,14 @@ from ..engine.construction_witness import ConstructionWitness
 from ..engine.figure_witness import CurveRoot, FigureWitness
 from ..engine.floating_witness import Combined, FloatingWitness, Joined
 from ..engine.quadrature import Composite, GaussLegendre64, GaussLegendreMP, TanhSinh
-from ..engine.witness import (Computed, ConvergenceOrder, ExactHull, HullSlices, HullWitness, PlaneSections,
+from ..engine.witness import (ConvergenceOrder, ExactHull, HullSlices, HullWitness, PlaneSections,
                               Precision, SectionIntegral, SideFaces)
 from ..model.claim import members
 from ..model.relation import is_relation
 from ..registry import load, select
 
 __all__ = ["Measurement", "Bench", "methods_for", "newton_cotes", "run_bench", "DIGITS", "REFERENCE_DPS",
-           "FAMILIES", "DECLARED"]
+           "FAMILIES", "DECLARED", "family_of"]
 
 DIGITS = (15, 30, 50, 100)
 REFERENCE_DPS = 100
@@ -60,11 +60,9 @@ FAMILIES = {
     PlaneSections: "plane-section chords",
     HullWitness: "convex hulls",
     SideFaces: "convex hulls",
-    Computed: "floating-geometry computations",
     ConstructionWitness: "straightedge constructions",
     FloatingWitness: "floating bodies by exact clipping",
     Joined: "floating bodies by exact clipping",
-    Combined: "floating bodies by exact clipping",
     FigureWitness: "plane figures",
     CurveRoot: "plane figures",
 }
@@ -96,6 +94,13 @@ class Bench:
     locators: dict = field(default_factory=dict)     # "derivation/formula" -> source locator
 
 
+def family_of(w):
+    """The witness family *w* is listed under (a :class:`Combined` witness under its first part's), or None."""
+    if isinstance(w, Combined):
+        return family_of(w.parts[0]) if w.parts else None
+    return next((f for cls, f in FAMILIES.items() if isinstance(w, cls)), None)
+
+
 def newton_cotes(d) -> bool:
     """Whether the derivation's own method is a Newton–Cotes rule (it speaks of Simpson's rule)."""
     text = " ".join([d.title, d.summary] + [p.excerpt for p in d.printed] + [s.note for s in d.steps])
@@ -117,7 +122,7 @@ def methods_for(w, d, digits=DIGITS, orders=FLOAT64_ORDERS, panels=PANELS) -> tu
     if isinstance(w, HullWitness):
         return (ExactHull(),) + tuple(HullSlices(n, 15, 0) for n in (1, 2, 3)) + tuple(
             HullSlices(3, p, 0) for p in digits if p > 15)
-    if isinstance(w, (Computed, ConstructionWitness)):
+    if isinstance(w, ConstructionWitness):
         return tuple(Precision(p, 0) for p in digits if p < REFERENCE_DPS)
     if isinstance(w, DECLARED):
         return tuple(w.methods)
@@ -236,11 +241,6 @@ def _runner(w, case):
         return _section_integral(w, case)
     if isinstance(w, PlaneSections):
         return _plane_sections(w, case)
-    if isinstance(w, Computed):
-        def value(method):
-            with mpmath.workdps(method.dps):
-                return w.compute(case, method.dps)
-        return value
     return lambda method: w.measure(case, method)
 
 
@@ -265,7 +265,7 @@ def _witness_targets(d, w, results):
 
 
 def _reference_run(w):
-    if isinstance(w, (Computed, ConstructionWitness)):
+    if isinstance(w, ConstructionWitness):
         return Precision(REFERENCE_DPS, 0)
     if isinstance(w, (HullWitness, SideFaces)):
         return ExactHull()
@@ -279,7 +279,7 @@ def bench_derivation(d, bench: Bench, digits=DIGITS, orders=FLOAT64_ORDERS, pane
     """Measure every witness of derivation *d* into *bench*."""
     results = _results(d)
     for w in d.witnesses:
-        family = next((f for cls, f in FAMILIES.items() if isinstance(w, cls)), None)
+        family = family_of(w)
         if family is None or isinstance(w, ConvergenceOrder):
             continue
         targets = _witness_targets(d, w, results)
