@@ -76,7 +76,9 @@ def _section_bench(bench, figures):
              "wall times of all cases of a witness, median of repeats (they vary from run to run, and so may "
              "the choice of the cheapest method; nothing "
              "else does). A worst error that does not fall with the precision is the witness's own approximation "
-             "(the cylinder as a polygon of many sides, a limit by Richardson extrapolation), not rounding.", ""]
+             "(the cylinder as a polygon of many sides, a limit by Richardson extrapolation) or the printed "
+             "number's own rounding (Scheeffer's worked examples print four or five digits; the verdict allows "
+             "for them by the printed digits), not the method's rounding.", ""]
     for family in dict.fromkeys(FAMILIES.values()):
         ms = [m for m in bench.measurements if m.family == family]
         if not ms:
