@@ -4,7 +4,7 @@ is refuted with a counterexample."""
 import sympy as sp
 import pytest
 
-from symfloat import Derivation, Erratum
+from symfloat import Derivation, Eq, Erratum
 from symfloat.engine.check import _check_chain, check_derivation
 from symfloat.engine.identity import Domain
 from symfloat.engine.witness import Case, SectionIntegral
@@ -123,3 +123,27 @@ def test_printed_number_off_in_the_last_digit_is_refuted():
     rep = check_derivation(_example_derivation(sp.Rational("14.1374"), err))
     assert rep.failures == [] and rep.formulas[0].verdict == "erratum"
     assert "allowed difference" in rep.formulas[0].erratum["evidence"]
+
+
+def _solve_derivation(pick):
+    """x^2 = 2 solved for x (the positive root picked), then x^4 = 4 claimed from it."""
+    x, X = sp.Symbol("x", positive=True), sp.Symbol("X")
+    d = Derivation(id="test-solve", source="graefe", title="solve", locator="§2", domain={})
+    d.solve("root", Eq(x ** 2, 2), x, X, pick=pick, note="the positive root")
+    d.step("fourth", (X ** 4, 4), "algebra", uses=("root",))
+    return d
+
+
+def test_a_solve_step_is_proved_by_putting_the_solution_back():
+    """d.solve: sp.solve's root establishes X (a definition) and '<name>-check' proves it as an identity."""
+    rep = check_derivation(_solve_derivation(max))
+    steps = {s.name: s.status for s in rep.steps}
+    assert steps == {"root": "definition", "root-check": "proved", "fourth": "proved"}, steps
+    assert rep.failures == []
+
+
+def test_a_wrong_solution_is_refuted_by_its_check():
+    """A pick that returns no solution (the root plus 1/10) is refuted by the check step, not trusted."""
+    rep = check_derivation(_solve_derivation(lambda sols: max(sols) + sp.Rational(1, 10)))
+    steps = {s.name: s.status for s in rep.steps}
+    assert steps["root-check"] not in ("proved", "sampled", "definition") and rep.failures, steps

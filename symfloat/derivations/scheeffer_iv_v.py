@@ -292,11 +292,8 @@ d.step("bottom-contact-check", (-ubot * sp.tan(phbot), -b * s), "geometry", uses
 d.step("limit", Eq(Lim, sp.Min(sp.tan(phtop), sp.tan(phbot))), "definition", result=Lim,
        note="the first rotation region: tan phi up to the first contact of either base")
 sstar = sp.Symbol("s^*")
-d.step("threshold", Eq(sstar, sp.solve(Eq(b * (1 - s) / utop, b * s / ubot), s, simplify=False, check=False)[0]),
-       "definition",
-       result=sstar, note="the specific gravity at which both bases are reached at the same tilt (sp.solve)")
-d.step("threshold-check", (sp.Subs(b * (1 - s) / utop - b * s / ubot, s, sstar), 0), "algebra",
-       uses=("threshold",))
+d.solve("threshold", Eq(b * (1 - s) / utop, b * s / ubot), s, sstar, simplify=False, check=False,
+        note="the specific gravity at which both bases are reached at the same tilt (sympy.solve)")
 d.step("top-first", (sp.sign(sp.tan(phbot) - sp.tan(phtop)), sp.sign(s - sstar)), "algebra",
        uses=("top-contact", "bottom-contact", "threshold"),
        note="the upper base is reached first iff s > s^* = u_m'/(u_m + u_m'), which is 1/2 only when u_m = u_m'")

@@ -12,7 +12,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from .claim import members
+from .claim import Eq, members
 from .erratum import Erratum
 from .prediction import Predictor
 from .relation import is_relation
@@ -187,6 +187,22 @@ class Derivation:
         s = Step(name, claim, why, tuple(uses), note, result)
         self.steps.append(s)
         return s
+
+    def solve(self, name, equation, unknown, result, pick=0, uses=(), note="", **options) -> Step:
+        """A solve-and-check pair of steps.  ``result`` is established as a solution of ``equation`` (an
+        :func:`~symfloat.model.claim.Eq`) for ``unknown``, found by ``sp.solve(equation, unknown, **options)``
+        (``pick``: an index into its solutions, or a function of the list returning one): a definition,
+        since the solver is not the proof.  The step ``<name>-check`` is the proof: the solution put back,
+        ``Subs(lhs - rhs, unknown, result) = 0``, checked as an identity like any algebra step."""
+        solutions = sp.solve(equation, unknown, **options)
+        if not solutions:
+            raise ValueError(f"step {name!r}: sp.solve finds no solution of {equation} for {unknown}")
+        chosen = pick(solutions) if callable(pick) else solutions[pick]
+        first = self.step(name, Eq(result, chosen), "definition", uses=uses, result=result,
+                          note=note or f"a solution of {equation} for {unknown} (sympy.solve)")
+        self.step(f"{name}-check", (sp.Subs(equation.lhs - equation.rhs, unknown, result), 0), "algebra",
+                  uses=(name,), note=f"the solution of {name!r} put back into its equation")
+        return first
 
     def quote(self, name, locator, excerpt, reading=None, erratum=None, unreadable="", lost="", note="",
               tolerance=None, symbols=None, condition="", not_compared=""):
