@@ -37,14 +37,19 @@ def _smallest(ids):
 
 
 def quick_selection() -> tuple[tuple[str, ...], str]:
-    """What ``bench --quick`` measures, chosen without naming a derivation: for each witness family the
-    smallest derivation module (source size, a proxy for its cost) whose source declares such a witness,
-    and the smallest module that provides closed forms for the stiffness scan."""
+    """What ``bench --quick`` measures, chosen without naming a derivation: for each witness family (the
+    classes listed under one name in :data:`~symfloat.numerics.bench.FAMILIES`) the smallest derivation
+    module (source size, a proxy for its cost) whose source declares such a witness, and the smallest module
+    that provides closed forms for the stiffness scan."""
     from ..registry import module_names, module_path, providing
     ids = [m.replace("_", "-") for m in module_names()]
     sources = {i: module_path(i).read_text(encoding="utf-8") for i in ids}
-    picked = {_smallest([i for i in ids if f"{cls.__name__}(" in sources[i]])
-              for cls in FAMILIES if any(f"{cls.__name__}(" in sources[i] for i in ids)}
+    picked = set()
+    for family in dict.fromkeys(FAMILIES.values()):
+        names = [f"{cls.__name__}(" for cls, f in FAMILIES.items() if f == family]
+        declaring = [i for i in ids if any(n in sources[i] for n in names)]
+        if declaring:
+            picked.add(_smallest(declaring))
     return tuple(sorted(picked)), _smallest(providing("forms"))
 
 
