@@ -34,6 +34,7 @@ and the statement is read with the numeric counts.
 from __future__ import annotations
 
 import functools
+import itertools
 import time
 from dataclasses import dataclass
 
@@ -522,19 +523,16 @@ class DefinitionRoute:
                 wanted = [c for c in wanted if c not in met]
                 if len(sampled) >= SAMPLES and not wanted:
                     break
-        for _ in range(PREMISE_DRAWS if wanted else 0):     # a narrow case: more draws, its condition first
-            point = next(draws)
+        # a narrow case: more draws, then the domain's boundary points (a case next to its edge), its condition first
+        more = itertools.chain(itertools.islice(draws, PREMISE_DRAWS),
+                               boundary_points(sorted(symbols, key=lambda q: q.name), intervals)) if wanted else ()
+        for point in more:
             met = [c for c in wanted if truth(c, point) is True]
             if met and self.domain.admits(point) and all(truth(w, point) is True for w in where):
                 sampled.append(point)
                 wanted = [c for c in wanted if c not in met]
                 if not wanted:
                     break
-        for point in boundary_points(sorted(symbols, key=lambda q: q.name), intervals) if wanted else ():
-            met = [c for c in wanted if truth(c, point) is True]  # a narrow case next to the domain's edge
-            if met and self.domain.admits(point) and all(truth(w, point) is True for w in where):
-                sampled.append(point)
-                wanted = [c for c in wanted if c not in met]
         return points + sampled
 
     @staticmethod

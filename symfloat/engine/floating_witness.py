@@ -17,14 +17,16 @@ most 1e-12 of the body's size, see the geometry module) and 40-digit mpmath.
 from __future__ import annotations
 
 import functools
+import math
 from dataclasses import dataclass
 from fractions import Fraction
 
 import mpmath
 import sympy as sp
 
-from ..geometry.floating import (_dot, _sub, _unit, box, clip_below, draught, floating_state, regular_prism, right_prism,
-                                 volume_centroid)
+from ..geometry.floating import (FloatingState, _dot, _sub, _unit, body_volume_centroid, box, clip_below, draught,
+                                 floating_state, regular_prism, right_prism, submerged, volume_centroid)
+from ..solver.cylinder import cylinder_state
 from .witness import MeasuredWitness, Precision
 
 __all__ = ["Body", "FloatingWitness", "QUANTITIES", "TILT_QUANTITIES", "MEASURED", "FLOATING_METHODS",
@@ -555,11 +557,6 @@ __all__ += ["Joined", "waterplane_moment", "Root", "At", "FloatingRootWitness", 
 
 
 # ---- the circular cylinder (quadrature of exact slices) and witnesses combined by an expression ----
-import math  # noqa: E402
-
-from ..geometry.floating import FloatingState  # noqa: E402
-from ..solver.cylinder import cylinder_state  # noqa: E402
-
 
 @dataclass
 class Cylinder:
@@ -731,8 +728,6 @@ __all__ += ["SeriesWitness", "SERIES_METHODS", "series_coefficient"]
 
 
 # ---- where the water plane crosses a line of the body; the immersed part split at the water line's lowest point ----
-from ..geometry.floating import body_volume_centroid, submerged  # noqa: E402
-
 
 def crossing(up, point, direction):
     """The parameter lam at which the water plane meets the body-frame line ``point + lam direction``, as an
