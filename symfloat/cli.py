@@ -41,7 +41,7 @@ from .engine.runner import Progress, verify
 from .errors import (EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, EnvironmentProblem, InputError,
                      SymfloatError)
 from .project import GOLDEN, in_project, library_folders, project_root
-from .registry import load, providing, select
+from .registry import provided, select
 from .report.errata import errata_json, errata_markdown
 from .report.files import write_atomic, write_if_changed, writable_target
 from .report.record import record_json, verification_table, write_record
@@ -234,10 +234,8 @@ def _run(args) -> int:
                               (lambda d: print(f"executed notebook {d}", file=sys.stderr, flush=True)))
     documents = ["verification.json", "errata.json", "errata.md"]
     checked = {r.id for r in reports}
-    for did in providing("report"):             # documents the derivations add (e.g. Scheeffer IX's grid)
-        if did not in checked:
-            continue
-        for report in load(did)[0].provided["report"]:
+    for did, report in provided("report"):      # documents the derivations add (e.g. Scheeffer IX's grid)
+        if did in checked:
             if stamp_of(docs / report.filename) != report.stamp():         # what it depends on changed
                 write_if_changed(docs / report.filename, report.build(
                     progress=None if quiet else (lambda m, f=report.filename: print(f"{f}: {m}", file=sys.stderr))))

@@ -1,8 +1,8 @@
 """A cache of derivation reports keyed by content, verified when read.
 
-The key hashes the derivation module's source, its proof certificates, the
-source of the library itself (model, engine, geometry) and the keys of the
-derivations it requires, so any change to what a result depends on re-checks it.
+The key (:mod:`symfloat.engine.key`) hashes everything a derivation's report depends on: its package,
+the transcription it quotes, the library modules its check executes and the keys of the derivations it
+requires, so any change to what a result depends on re-checks it.
 
 An entry is ``{"format", "derivation", "key", "sha256", "report"}`` in the file
 ``<derivation>.<key>.json``; ``sha256`` is the hash of the report's canonical JSON
@@ -18,41 +18,17 @@ import hashlib
 import json
 import os
 import tempfile
-from functools import cache
 from pathlib import Path
 
 from ..errors import EnvironmentProblem
 
-__all__ = ["library_fingerprint", "derivation_key", "report_hash", "ReportCache", "CacheError", "FORMAT"]
+__all__ = ["report_hash", "ReportCache", "CacheError", "FORMAT"]
 
-_LIBRARY_PARTS = ("model", "engine", "geometry", "__init__.py")
-FORMAT = 2
+from .key import FORMAT
 
 
 class CacheError(EnvironmentProblem):
     """The cache directory cannot be used (exit status 2)."""
-
-
-@cache
-def library_fingerprint() -> str:
-    root = Path(__file__).resolve().parents[1]
-    h = hashlib.sha256()
-    for part in _LIBRARY_PARTS:
-        for f in sorted((root / part).rglob("*.py")) if (root / part).is_dir() else [root / part]:
-            h.update(f.relative_to(root).as_posix().encode())
-            h.update(f.read_bytes())
-    return h.hexdigest()
-
-
-def derivation_key(source: Path, required_keys, proofs: Path | None = None) -> str:
-    """The cache key of the derivation whose module is *source*."""
-    h = hashlib.sha256(library_fingerprint().encode())
-    h.update(Path(source).read_bytes())
-    if proofs is not None and proofs.exists():
-        h.update(proofs.read_bytes())
-    for k in required_keys:
-        h.update(k.encode())
-    return h.hexdigest()[:32]
 
 
 def report_hash(report) -> str:

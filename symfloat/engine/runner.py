@@ -22,10 +22,11 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from ..errors import DerivationError, SymfloatError
-from ..registry import load, module_path, requires, select
+from ..registry import files, load, manifest, requires, select
 from ..report.files import write_if_changed
-from .cache import ReportCache, derivation_key
+from .cache import ReportCache
 from .check import DerivationReport, check_derivation
+from .key import derivation_key
 from .proofs import ProofBook
 
 __all__ = ["verify", "derivation_keys", "Progress", "default_workers", "worker_pool"]
@@ -131,16 +132,22 @@ def _check(did: str, key: str, search: bool, tick=None) -> DerivationReport:
         raise
     except Exception as exc:
         raise DerivationError(f"derivation {did} could not be checked: {type(exc).__name__}: {exc}"
-                              f"{_where(exc, module_path(did))}") from exc
+                              f"{_where(exc, files(did))}") from exc
     report.seconds = time.perf_counter() - t0
     return report
 
 
-def _where(exc: BaseException, module: Path) -> str:
-    """`` (module.py, line N)``: the last line of the derivation module in *exc*'s traceback."""
-    line = next((f.lineno for f in reversed(traceback.extract_tb(exc.__traceback__))
-                 if Path(f.filename).resolve() == module.resolve()), None)
-    return f" ({module.name}, line {line})" if line else ""
+def _where(exc: BaseException, package: list[Path]) -> str:
+    """`` (module.py, line N)``: the last line of one of the derivation's files in *exc*'s traceback."""
+    mine = {f.resolve() for f in package}
+    frame = next((f for f in reversed(traceback.extract_tb(exc.__traceback__)) if Path(f.filename).resolve() in mine),
+                 None)
+    return f" ({Path(frame.filename).name}, line {frame.lineno})" if frame else ""
+
+
+def _size(did: str) -> int:
+    """The bytes of a derivation's package: a proxy for the cost of checking it."""
+    return sum(f.stat().st_size for f in files(did) if f.suffix == ".py")
 
 
 def _check_json(did: str, key: str, search: bool) -> dict:
@@ -155,7 +162,11 @@ def derivation_keys(ids) -> dict[str, str]:
 
     def key(did):
         if did not in keys:
-            keys[did] = derivation_key(module_path(did), [key(r) for r in requires(did)], ProofBook.path(did))
+            m = manifest(did)
+            package = "symfloat.derivations" + ("" if m.folder.suffix == ".py" else f".{m.package}")
+            keys[did] = derivation_key(files(did) + [ProofBook.path(did)] * (m.folder.suffix == ".py"
+                                                                            and ProofBook.path(did).exists()),
+                                       m.source, [key(r) for r in requires(did)], package)
         return keys[did]
 
     return {did: key(did) for did in ids}
@@ -207,7 +218,7 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
         with worker_pool(min(workers, len(pending))) as pool:
             # the largest modules first (a proxy for their cost), so that no worker is left with a long
             # check at the end while the other idles
-            largest_first = sorted(pending, key=lambda did: -module_path(did).stat().st_size)
+            largest_first = sorted(pending, key=lambda did: -_size(did))
             futures = {pool.submit(_check_json, did, keys[did], search_proofs): did for did in largest_first}
             for future in as_completed(futures):
                 did = futures[future]
@@ -215,7 +226,7 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
                 progress.start(done, len(ids), did)
                 progress.done(reports[did])
     else:
-        shared = _shared(cache, sorted(pending, key=lambda did: -module_path(did).stat().st_size)) if share else None
+        shared = _shared(cache, sorted(pending, key=lambda did: -_size(did))) if share else None
         for did, lock in shared or ((did, None) for did in pending):
             report = _cached_report(cache, did, keys[did]) if lock is not None else None
             if report is None:

@@ -12,6 +12,7 @@ from fractions import Fraction
 
 import sympy as sp
 
+from ..manifest import PROVIDED_KINDS
 from .claim import Eq, members
 from .erratum import Erratum
 from .prediction import Predictor
@@ -118,7 +119,6 @@ def printed_tolerance(excerpt: str, reading) -> sp.Rational:
     return max(halves)
 
 
-PROVIDED_KINDS = ("thresholds", "forms", "report", "figure", "tables")
 
 
 @dataclass(frozen=True)

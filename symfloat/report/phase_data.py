@@ -25,10 +25,9 @@ STEPS = 24
 
 
 def _derivation_files(body: str) -> list[Path]:
-    from ..registry import load, providing
-    from ..solver.coverage import predicting
+    from ..registry import files, predicting, providing
     ids = sorted(set(predicting(body)) | set(providing("thresholds")))
-    return [Path(load(did)[1].__file__) for did in ids]
+    return [f for did in ids for f in files(did) if f.suffix == ".py"]
 
 
 def phase_stamp(name: str) -> str:

@@ -1,9 +1,8 @@
 """Which printed formulas predict each equilibrium of a scene, and whether they agree.
 
-The derivations that speak about a body are found without importing every
-module: each registers ``d.predicts((bodies...), predict)`` with a literal
-tuple, which is read from the module's source (:func:`predicting`).  Only
-those derivations are read: their predictors evaluate the printed formulas at
+The derivations that speak about a body are found without importing any: each
+lists the bodies it predicts in its manifest (:func:`symfloat.registry.predicting`).
+Only those derivations' statements and predictors are read: their predictors evaluate the printed formulas at
 the scene's numbers.  Nothing is re-proved and no witness runs; each printed
 formula carries the verdict its derivation *declares* (an erratum where one is
 declared, ``unverifiable`` where the text is lost, else ``verified``), which
@@ -14,16 +13,13 @@ matching equilibrium is a disagreement of its own.
 """
 from __future__ import annotations
 
-import ast
 import math
-import re
-from functools import cache
 
 import numpy as np
 
 from ..model.derivation import Printed
 from ..model.prediction import Scene
-from ..registry import load, module_names, module_path
+from ..registry import predicting, predictor
 from .bodies import centred_polygon, polyhedron
 from .local import local
 from .solve import Solution, body_scale
@@ -32,27 +28,6 @@ from .symmetry import box_group, planar_group, prism_group
 __all__ = ["predicting", "cover", "symmetry_group", "declared_verdict"]
 
 MATCH_RAD = 1e-6
-
-
-_PREDICTS = re.compile(r"\.predicts\(\s*(\([^()]*\))")
-
-
-@cache
-def _declared_bodies(module: str) -> tuple[str, ...]:
-    """The literal bodies of ``*.predicts((...), ...)`` in a derivation module's source."""
-    text = module_path(module).read_text(encoding="utf-8")
-    found = _PREDICTS.search(text)
-    if found is None:
-        return ()
-    try:
-        return tuple(ast.literal_eval(found.group(1)))
-    except (ValueError, SyntaxError):
-        raise RuntimeError(f"{module}: the bodies of predicts(...) must be a literal tuple") from None
-
-
-def predicting(body: str) -> list[str]:
-    """Ids of the derivations that predict equilibria of *body*."""
-    return [m.replace("_", "-") for m in module_names() if body in _declared_bodies(m)]
 
 
 def symmetry_group(scene: Scene):
@@ -100,7 +75,7 @@ def cover(solution: Solution) -> tuple[list[str], list[dict]]:
     group = symmetry_group(scene)
     unmatched = []
     for did in ids:
-        d, _ = load(did)
+        d = predictor(did)
         for pred in d.predictor.predict(scene):
             printed = [p for p in d.printed if p.name in pred.printed]
             entry = {"derivation": did, "printed": [d.formula_id(p) for p in printed],

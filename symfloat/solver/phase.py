@@ -471,13 +471,12 @@ def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
     print claims a change of stability) and ``"silent beyond"`` where they predict it there with no
     stability or not at all (the position ceases to exist, or leaves the region the formulas cover);
     ``errata`` the locators among them whose printed formula carries an erratum."""
-    from ..registry import load
-    from .coverage import predicting
+    from ..registry import predicting, predictor
     group = box_group(dims)
     closed = _closed_forms()
     out = []
     for did in predicting(body):
-        d, _ = load(did)
+        d = predictor(did)
         at = lambda s: _predicted(d, make_scene(body, s, dims), group)
         densities = [Fraction(k, grid) for k in range(1, grid)]
         states = [at(s) for s in densities]
@@ -514,11 +513,11 @@ def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
 def _closed_forms() -> list[tuple[float, str]]:
     """Closed-form thresholds the derivations establish as results (value, expression): the results each
     derivation names with ``provides("thresholds", names)``."""
-    from ..registry import load, providing
+    from ..registry import provided, statements
     out = []
-    for did in providing("thresholds"):
-        d, _ = load(did)
-        names = {str(symbol) for group in d.provided["thresholds"] for symbol in group}
+    for did, group in provided("thresholds"):
+        d = statements(did)
+        names = {str(symbol) for symbol in group}
         out += [(float(sp.N(value, 30)), str(sp.nsimplify(value)))
                 for symbol, value in d.results().items() if str(symbol) in names]
     return out

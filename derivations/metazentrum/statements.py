@@ -1,28 +1,7 @@
-"""Web lesson "Auftrieb Stabilität": the metacentre of a rectangular hull.
-
-The hull is a homogeneous box 2a x 2b x 2c (length, breadth, height) floating
-upright with draught d; heel about the long axis (a > b).  Coordinates: z up
-from the water surface, y across.  Volumes, centroids and the waterplane's
-moment of inertia are integrated; the shift of the centre of buoyancy on heel
-is computed from the two wedge triangles (the lesson's route, exact in tg phi,
-read to first order in phi as the lesson does), the metacentre from it, and
-the stability function e from z_M >= z_G.  The closing sentence ("größer als
-eins" for stability) and the Vasa remark are checked as claims.
-
-Witnesses: the floating box clipped exactly (``symfloat.engine.floating_witness``):
-immersed volume, centres of buoyancy and gravity, the waterplane's I_min / V -
-(G - B) upright, the righting arm at small heels extrapolated to phi -> 0, and
-the share of the volume below the draught.
-"""
-from fractions import Fraction
-
+"""What the metacentre lesson says and how each formula is derived (see the package's docstring)."""
 import sympy as sp
 
-from symfloat import Derivation, Eq, Erratum, Holds, Prediction
-from symfloat.engine.floating_witness import (LIMIT_METHODS, MEASURED, PART, Body, Combined, CutWitness,
-                                              FloatingWitness, potential_slope)
-from symfloat.engine.witness import Case
-from symfloat.model.prediction import box_uprights
+from symfloat import Derivation, Eq, Erratum, Holds
 
 a, b, c, d = sp.symbols("a b c d", positive=True)
 phi = sp.Symbol("phi", positive=True)
@@ -279,82 +258,3 @@ dv.quote("F_b=F_g", "formula list", r"$F_b = \rho_w V_w g = M_w g = M_s g = F_g$
                          "M_w are defined nowhere. With V_b and M_b the chain is Archimedes' principle, rho_w V_b g = "
                          "M_b g, and M_b = M_s. A naming slip of the lesson.",
                          corrected_reading=(F_b, rho_w * V_b * g, M_b * g, M_s * g, F_g)))
-
-# ---- witnesses: the box clipped exactly (symfloat.engine.floating_witness) -------------------------------------
-# The hull is the box 2a x 2b x 2c (x along the length), upright at the density d/(2c) of the step density-ratio,
-# heeled by psi about the long axis (up (0, sin psi, cos psi)); z up from the water surface.
-M = MEASURED
-HULL = Body.box(2 * a, 2 * b, 2 * c)
-UPRIGHT_UP, psi = (0, 0, 1), sp.Symbol("psi", real=True)
-HEEL = (0, sp.sin(psi), sp.cos(psi))
-CASES = (Case({a: 4, b: 1, c: 1, d: 1, rho_w: 1}, label="a=4, b=1, c=1, d=1 (half immersed, unstable)"),
-         Case({a: 5, b: sp.Rational(3, 2), c: 1, d: sp.Rational(1, 2), rho_w: 1},
-              label="a=5, b=3/2, c=1, d=1/2 (stable)"),
-         Case({a: 3, b: 2, c: sp.Rational(3, 2), d: sp.Rational(5, 2), rho_w: 1},
-              label="a=3, b=2, c=3/2, d=5/2 (stable, deep)"))
-
-
-def upright(name, description, targets, quantity):
-    """A quantity of the clipped box floating upright at the density d/(2c)."""
-    return FloatingWitness(name, description, targets, CASES, body=HULL, up=UPRIGHT_UP, density=d / (2 * c),
-                           quantity=quantity)
-
-
-for name, description, targets, quantity in (
-        ("stability-sign", "sign of the clipped upright box's metacentric height I_min/V - (G - B)",
-         ("criterion", "e-sign", "criterion-words", "criterion-words-2"), "stability sign"),
-        ("metacentre-inertia", "z_M = (I_min/V - (G - B)) + z_G of the clipped upright box", ("z_M",),
-         M["metacentric height"] + M["G above water"]),
-        ("stability-function", "e = d/(2c^2) (I_min/V - (G - B)) of the clipped box", ("e",),
-         d / (2 * c ** 2) * M["metacentric height"]),
-        ("centre-of-gravity", "height of G above the water plane, clipped box", ("z_G",), "G above water"),
-        ("centre-of-buoyancy", "height of B above the water plane, clipped box", ("z_B",), -M["B below water"]),
-        ("displaced-volume", "volume of the clipped immersed part", ("V_b",), "immersed volume"),
-        ("displaced-mass", "rho_w times the clipped immersed volume", ("M_b", "M_s", "M_b=M_s"),
-         rho_w * M["immersed volume"]),
-        ("section-area", "clipped immersed volume over the length 2a", ("section",), M["immersed volume"] / (2 * a))):
-    dv.witness(upright(name, description, targets, quantity))
-# the righting arm over the heel, extrapolated to psi -> 0, and a height of the upright box
-ARM = FloatingWitness("", "", (), (), body=HULL, up=HEEL, density=d / (2 * c), quantity=potential_slope(HEEL, psi),
-                      limit=(psi, 1), methods=LIMIT_METHODS)
-dv.witness(Combined("metacentre-heel", "z_M = lim m/phi + z_G: righting arm of the clipped heeled box, extrapolated",
-                    ("z_M",), CASES, parts=(ARM, upright("", "", (), "G above water")), values=(PART[0] + PART[1],),
-                    methods=LIMIT_METHODS))
-dv.witness(Combined("radius-heel", "BM = lim m/phi + (z_G - z_B) from the clipped heeled box", ("radius",), CASES,
-                    parts=(ARM, upright("", "", (), "G above B")), values=(PART[0] + PART[1],), methods=LIMIT_METHODS))
-# the density at which the box floats with draught d: the share of its volume below the plane d above its bottom
-dv.witness(CutWitness("density-ratio", "clipped volume below depth d over the box volume", ("density",), CASES,
-                      body=HULL, up=UPRIGHT_UP, through=(0, 0, d - c),
-                      quantity=M["immersed volume"] / (2 * a * 2 * b * 2 * c)))
-
-
-# ---- predictions: the box floating upright ------------------------------------------------------------------------
-E_PRINTED = dv.evaluator("e", (b, c, d), 1)     # e = b^2/(6c^2) - d/(2c) (1 - d/(2c)) as printed
-
-
-def predict(scene):
-    """Each edge direction of the box vertical in turn (height 2c, breadth 2b the shorter, length 2a the longer of
-    the other two edges, draught d = 2c s): stable iff e = b^2/(6c^2) - d/(2c)(1 - d/(2c)) > 0 (the criterion
-    z_M >= z_G, decided in exact arithmetic); where 0 < e <= 1 the closing sentence ('größer als eins' when
-    stable) says otherwise."""
-    if scene.body != "box":
-        return []
-    sv = Fraction(scene.density)
-    dims = [Fraction(x_) for x_ in scene.dims]
-    out = []
-    for k, i, j in box_uprights(dims):
-        bv, cv = min(dims[i], dims[j]) / 2, dims[k] / 2
-        ev = E_PRINTED(bv, cv, 2 * cv * sv)
-        up = [0.0] * 3
-        up[k] = 1.0
-        out.append(Prediction(("e", "criterion", "z_M"), tuple(up),
-                              "stable" if ev > 0 else "unstable" if ev < 0 else None,
-                              note=f"upright, edge {k} vertical: e = {float(ev):.4g}"))
-        if 0 < ev <= 1:
-            out.append(Prediction(("e-sign",), tuple(up), "unstable",
-                                  note=f"e = {float(ev):.4g} is not 'größer als eins': the closing sentence's "
-                                       "stable case excludes it"))
-    return out
-
-
-dv.predicts(("box",), predict)
