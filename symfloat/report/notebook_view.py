@@ -16,6 +16,7 @@ import sympy as sp
 from ..engine.runner import verify
 from ..model.claim import expressions, members
 from ..model.relation import is_relation, relation_latex
+from ..registry import load
 
 __all__ = ["NotebookView", "definitions_markdown", "step_markdown", "reading_markdown", "correction_markdown",
            "named", "chain_latex", "show"]
@@ -202,7 +203,7 @@ class NotebookView:
     and its ancestors checked, or read from the cache when unchanged)."""
 
     def __init__(self, module, report=None):
-        self.derivation = module.DERIVATION
+        self.derivation = load(module.DERIVATION.id)[0]        # with its witnesses declared
         self.report = report or next(r for r in verify(self.derivation.id) if r.id == self.derivation.id)
         self.failures = self.report.failures
 
