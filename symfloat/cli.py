@@ -43,7 +43,7 @@ from .errors import (EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFai
 from .project import GOLDEN, in_project, library_folders, project_root
 from .registry import provided, select
 from .report.errata import errata_json, errata_markdown
-from .report.files import write_atomic, write_if_changed, writable_target
+from .files import write_atomic, write_if_changed, writable_target
 from .report.record import record_json, verification_table, write_record
 from .report.stamp import stamp_of
 
@@ -270,7 +270,7 @@ def _scene_args(p):
 def _scene(args) -> int:
     from .report.scene import scene_json, scene_plot, scene_record, scene_table
     from .solver import make_scene, solve
-    from .solver.coverage import cover
+    from .comparison.coverage import cover
 
     start = time.perf_counter()
     scene = make_scene(args.body, args.density, args.dims, args.sides, args.polygon)
@@ -299,7 +299,7 @@ def _phase(args) -> int:
 
     from .report.phase import phase_json, phase_plot, phase_table
     from .solver.bodies import SceneError, make_scene, parse_whole
-    from .solver.phase import phase_diagram
+    from .comparison.thresholds import phase_with_sources
 
     if args.body not in ("cube", "box"):
         raise SceneError(f"phase diagrams are drawn for cube and box, not {args.body[:40]!r}")
@@ -310,8 +310,8 @@ def _phase(args) -> int:
         except SceneError as exc:
             raise SceneError(f"--steps {steps}: {exc}") from None
     plot = _plot_target(args.plot)
-    diagram = phase_diagram(args.body, args.dims, steps, progress=None if _quiet(args) else
-                            (lambda msg: print(msg, file=sys.stderr)))
+    diagram = phase_with_sources(args.body, args.dims, steps, progress=None if _quiet(args) else
+                                 (lambda msg: print(msg, file=sys.stderr)))
     print(phase_json(diagram) if args.format == "json" else phase_table(diagram))
     if plot:
         _write_plot(phase_plot, diagram, plot, args)

@@ -19,7 +19,7 @@ import symfloat.project as project
 from symfloat.engine.cache import ReportCache
 from symfloat.engine.runner import verify
 from symfloat.errors import CheckFailed
-from symfloat.report.files import OutputError, write_atomic, write_if_changed
+from symfloat.files import OutputError, write_atomic, write_if_changed
 
 ROOT = Path(__file__).resolve().parents[1]
 

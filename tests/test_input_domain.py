@@ -311,7 +311,7 @@ def no_work(monkeypatch, tmp_path):
     monkeypatch.setattr(solver_package, "solve", work)
     monkeypatch.setattr(cli, "verify", work)
     monkeypatch.setattr(cli, "select", work)            # importing derivations is work too
-    monkeypatch.setattr("symfloat.solver.phase.phase_diagram", work)
+    monkeypatch.setattr("symfloat.comparison.thresholds.phase_with_sources", work)
     monkeypatch.setattr("symfloat.numerics.document.generate", work)
     monkeypatch.setenv("SYMFLOAT_CACHE", str(tmp_path / "cache"))
     monkeypatch.chdir(tmp_path)

@@ -5,14 +5,14 @@ import mpmath
 import pytest
 
 from symfloat.report.phase import phase_record, phase_table
-from symfloat.solver.phase import phase_diagram
+from symfloat.comparison.thresholds import phase_with_sources
 
 
 @pytest.fixture(scope="module")
 def box_phase():
     # a box 1 x 2 x 3 on a coarse sweep: every threshold is still found (the source thresholds outside the
     # sweep are looked for at their own density)
-    return phase_diagram("box", "1,2,3", steps=8)
+    return phase_with_sources("box", "1,2,3", steps=8)
 
 
 def test_box_thresholds_match_the_upright_closed_form(box_phase):

@@ -90,6 +90,10 @@ def source_files(source_key: str) -> list[Path]:
     return [Path(str(folder.joinpath(n))) for n in names for folder in _folders() if folder.joinpath(n).is_file()][:2]
 
 
+def _content(path: Path) -> bytes:
+    return path.read_bytes()
+
+
 def derivation_key(package_files, source_key: str, required_keys, package_name: str = "") -> str:
     """The cache key of a derivation: its package, its source, the library its check runs, its premises."""
     h = hashlib.sha256(f"symfloat-key-{FORMAT}".encode())
@@ -98,7 +102,7 @@ def derivation_key(package_files, source_key: str, required_keys, package_name: 
     for label, paths in groups:
         for f in paths:
             h.update(f"{label}:{f.name if label != 'library' else f.relative_to(_LIBRARY).as_posix()}".encode())
-            h.update(f.read_bytes())
+            h.update(_content(f))
     for k in required_keys:
         h.update(k.encode())
     return h.hexdigest()[:32]

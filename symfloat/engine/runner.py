@@ -23,7 +23,7 @@ from pathlib import Path
 
 from ..errors import DerivationError, SymfloatError
 from ..registry import files, load, manifest, requires, select
-from ..report.files import write_if_changed
+from ..files import write_if_changed
 from .cache import ReportCache
 from .check import DerivationReport, check_derivation
 from .key import derivation_key

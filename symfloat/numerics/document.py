@@ -17,7 +17,7 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import sympy as sp
 
-from ..report.files import write_if_changed
+from ..files import write_if_changed
 from .bench import FAMILIES, Bench, run_bench
 from .conditioning import CASES, conditioning_markdown, conditioning_rows
 from .discriminant import table_markdown as discriminant_markdown

@@ -24,7 +24,7 @@ from pathlib import Path
 
 from ..model.source import SOURCES
 from ..project import in_project
-from .files import write_if_changed
+from ..files import write_if_changed
 from .ledger import LedgerError, baseline_keys, ledger, ledger_json, ledger_markdown, ledger_table
 from .references import check, references, references_markdown, status_counts
 from .repeats import candidates_text, link_problems

@@ -26,7 +26,7 @@ from nbclient.exceptions import CellExecutionError
 from ..errors import CheckFailed
 from ..model.source import get_source
 from ..registry import load
-from .files import write_if_changed
+from ..files import write_if_changed
 from .notebook_view import definitions_markdown, reading_markdown, step_markdown
 from .stamp import digest
 

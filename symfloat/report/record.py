@@ -6,7 +6,7 @@ from collections import Counter
 from pathlib import Path
 
 from ..engine.check import DerivationReport
-from .files import write_if_changed
+from ..files import write_if_changed
 
 __all__ = ["verification_record", "verification_table", "record_differences", "record_json", "write_record",
            "VERDICTS"]

@@ -115,7 +115,7 @@ def scene_plot(solution, path) -> None:
 
     from ..geometry.floating import clip_below, draught
     from ..solver.bodies import polyhedron
-    from ..solver.cylinder import cylinder_slice
+    from ..geometry.cylinder import cylinder_slice
 
     scene = solution.scene
     stable = [e for e in solution.equilibria if e.stability == "stable"] or solution.equilibria

@@ -22,7 +22,7 @@ from pathlib import Path
 
 from ..errors import EnvironmentProblem, InputError
 from ..model.source import SOURCES
-from ..report.files import write_atomic
+from ..files import write_atomic
 from .edition import edition_page
 from .notebooks import staged_notebook
 from .errata_pages import errata_index, erratum_page, facet_pages

@@ -7,7 +7,7 @@
 * section (long prism): the heel angle in the cross-section's plane, every
   root of ``U'`` (:mod:`symfloat.solver.planar`);
 * cylinder: the tilt in the meridian plane (the rotations about the axis are
-  a continuous symmetry), from slice quadrature (:mod:`symfloat.solver.cylinder`).
+  a continuous symmetry), from slice quadrature (:mod:`symfloat.geometry.cylinder`).
 
 Stability: ``stable`` when every eigenvalue of the metacentric matrix
 ``T/V - U`` (the second variation of the potential) is positive,
@@ -35,7 +35,7 @@ import numpy as np
 from ..model.prediction import Scene
 from .bodies import centred_polygon, polyhedron
 from .critical import critical_points, distinct_seeds, more_seeds, poincare_hopf_sum, sphere_seeds
-from .cylinder import cylinder_slice
+from ..geometry.cylinder import cylinder_slice
 from .errors import ROUNDING, STEP, eigenvalue_error, equilibrium_error
 from .critical import FLAT, MIN_FAMILY
 from .degenerate import degenerate_class, flat_cluster

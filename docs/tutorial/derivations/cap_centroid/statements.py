@@ -1,14 +1,7 @@
-"""The centre of gravity of a spherical segment (tutorial source ``cap``): volume, moment, centroid.
-
-The section at abscissa x is the circle pi (r^2 - x^2); the segment of height h lies between
-x = r - h and x = r.  Volume and moment are defined by their integrals and integrated; the centroid
-is their quotient.  The print's denominator 4 (3r + h) is a misprint for 4 (3r - h): its own
-hemisphere value 3r/8 needs the minus sign.
-"""
+"""What the tutorial's paragraph says of the spherical segment, and how each formula is derived."""
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.witness import Case, SectionIntegral
 
 r, h, x, V, M, X = sp.symbols("r h x V M x_s", positive=True)
 
@@ -36,11 +29,3 @@ d.quote("centroid", "centroid", r"$$x_s = \frac{3 (2r - h)^2}{4 (3r + h)}.$$",
                         corrected_reading=(X, 3 * (2 * r - h) ** 2 / (4 * (3 * r - h)))))
 d.quote("hemisphere", "hemisphere", r"For the hemisphere, $h = r$, this gives $x_s = \frac{3}{8} r$.",
         reading=(sp.Subs(X, h, r), sp.Rational(3, 8) * r))
-
-CASES = (Case({r: 1, h: sp.Rational(1, 2)}), Case({r: 2, h: sp.Rational(3, 2)}))
-d.witness(SectionIntegral("volume-quadrature", "volume by quadrature of the section area", ("volume",), CASES,
-                          area=AREA, z=x, bounds=(r - h, r), quantity="volume"))
-d.witness(SectionIntegral("moment-quadrature", "moment about the centre by quadrature", ("moment",), CASES,
-                          area=AREA, z=x, bounds=(r - h, r), quantity="moment", origin=0))
-d.witness(SectionIntegral("centroid-quadrature", "centroid: moment over volume by quadrature", ("centroid",), CASES,
-                          area=AREA, z=x, bounds=(r - h, r), quantity="centroid", origin=0))

@@ -17,7 +17,7 @@ import stat
 import tempfile
 from pathlib import Path
 
-from ..errors import EnvironmentProblem
+from .errors import EnvironmentProblem
 
 __all__ = ["write_if_changed", "write_atomic", "without_timings", "OutputError", "writable_target"]
 

@@ -18,27 +18,15 @@ import math
 import numpy as np
 
 from ..model.derivation import Printed
-from ..model.prediction import Scene
 from ..registry import predicting, predictor
-from .bodies import centred_polygon, polyhedron
-from .local import local
-from .solve import Solution, body_scale
-from .symmetry import box_group, planar_group, prism_group
+from ..solver.bodies import polyhedron
+from ..solver.local import local
+from ..solver.solve import Solution, body_scale
+from ..solver.symmetry import symmetry_group
 
-__all__ = ["predicting", "cover", "symmetry_group", "declared_verdict"]
+__all__ = ["predicting", "cover", "declared_verdict"]
 
 MATCH_RAD = 1e-6
-
-
-def symmetry_group(scene: Scene):
-    if scene.body in ("cube", "box"):
-        return box_group(scene.dims)
-    if scene.body == "prism":
-        return prism_group(scene.sides)
-    if scene.body == "section":
-        return planar_group(centred_polygon(scene))
-    return [np.diag(d) for d in ((1, 1, 1), (1, -1, 1), (-1, 1, 1), (-1, -1, 1),
-                                 (1, 1, -1), (1, -1, -1), (-1, 1, -1), (-1, -1, -1))]
 
 
 def _distance(scene, group, predicted, eq) -> float:
