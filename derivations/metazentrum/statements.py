@@ -68,6 +68,8 @@ L1 = "Vereinfachtes Modell: gerades Parallelepiped"
 L2 = "Berechnung der Lage des Massenschwerpunktes des verdrängten Wassers"
 L3 = "Berechnung der Position des Metazentrums"
 L4 = "Analyse der Stabilitätsbedingung für das Parallelepiped"
+L_SHIP = "Modell eines Schiffsrumpfes"
+L6 = "formula list"                     # the page's second part, "Modell": its formulas, one block each
 dv.quote("z_G", L1, "$ z_G = c - d $", reading=(z_G, c - d))
 dv.quote("section", L2, "$2b d$", reading=(A_q, 2 * b * d))
 def first_order(q):
@@ -101,7 +103,7 @@ dv.quote("density", "formula list", r"$ \displaystyle\frac{ \rho_s }{ \rho_w }= 
          reading=(rho_s / rho_w, d / (2 * c)))
 dv.quote("V_b", "formula list", "$ V_b = 4 a b d $", reading=(V_b, 4 * a * b * d))
 dv.quote("z_B", "formula list", r"$ z_B =-\displaystyle\frac{ d }{2}$", reading=(z_B, -d / 2))
-dv.quote("e-sign", L4, "was größer als eins im Falle einer stabilen Situation und negativ im Falle von Instabilität ist.",
+dv.quote("e-sign", L6, "was größer als eins im Falle einer stabilen Situation und negativ im Falle von Instabilität ist.",
          reading=(sp.sign(z_M - z_G), sp.sign(e - 1)),
          erratum=Erratum("claim", "high", "e > 0 in the stable case, e < 0 in the unstable case",
                          "e = d/(2c^2) (z_M - z_G) has the sign of z_M - z_G, so the boundary of stability is e = 0, "
@@ -121,7 +123,6 @@ dv.quote("vasa", L4, "Eine Lösung wäre gewesen, es tiefer zu versenken oder ei
 
 # ---- the words around the formulas (second pass) -----------------------------------------------------
 L5 = "Metazentrum unterhalb des Schwerpunkts"
-L6 = "formula list"
 stable_margin = I_w / V_b - (z_G - z_B)                 # Duhamel's criterion for this hull (the step criterion)
 stable_sign = sp.sign(stable_margin)
 dv.quote("buoyancy-point", L4, "Daher ist mit die Höhe des Schwerpunkts ($z_G$)8670 als dem Angriffspunkt der "
@@ -168,7 +169,7 @@ dv.quote("displaced-volume-claim", L6, "was bedeutet, dass das verdrängte Wasse
                          corrected_reading=Holds(V_b <= 8 * a * b * c)),
          note="the box: V_s = 8abc; read as V_b >= V_s, 'ein gleiches oder größeres Volumen'")
 
-dv.quote("half-length", L1, "der Mittlere Länge des Parallelepipeds ($a$)8673, der Halbe Breite des Parallelepipeds "
+dv.quote("half-length", L_SHIP, "der Mittlere Länge des Parallelepipeds ($a$)8673, der Halbe Breite des Parallelepipeds "
          "($b$)8674 und die Halbe Höhe des Parallelepipeds ($c$)8672 reduziert, was zu Abmessungen von "
          "$2a \\times 2b \\times 2c$ führt",
          reading=(sp.Matrix([a, b, c]), sp.Matrix([sp.Integral(1, (x, -a, a)), sp.Integral(1, (y, -b, b)) / 2,
