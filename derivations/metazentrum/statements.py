@@ -133,7 +133,7 @@ dv.quote("buoyancy-point", L4, "Daher ist mit die Höhe des Schwerpunkts ($z_G$)
                          "As printed the sentence puts the buoyancy at z_G = c - d (e.g. c = 1, d = 1/2: z_G = 1/2, "
                          "z_B = -1/4). The sentence appears twice on the page, with the same words: a slip of the "
                          "lesson, not of the transcription.",
-                         corrected_reading=(z_G, c - d)),
+                         corrected_reading=(z_G, c - d), places=(L6,)),
          note="read as: the point where the buoyancy acts is at height c - d")
 dv.quote("below-G", L5, "Wenn der Metazentrum über oder unter dem Schwerpunkt liegt",
          reading=Holds(sp.Implies(sp.Ne(z_M, z_G), stable_margin < 0)),
@@ -179,10 +179,12 @@ dv.quote("half-length", L_SHIP, "der Mittlere Länge des Parallelepipeds ($a$)86
                          "breadth and the height ('Halbe Breite', 'Halbe Höhe'), and the lesson's own formulas use "
                          "it so: M_s = 8abc rho_s, V_b = 4abd. 'Mittlere Länge' (mean length) names the whole length "
                          "2a of a box of constant length. The same name is the page's label of a in every list "
-                         "and sentence after it (the variable's glossary entry): one fault, booked here.",
+                         "and sentence after it (the variable's glossary entry): one fault at eight places.",
                          corrected_reading=(sp.Matrix([a, b, c]),
                                             sp.Matrix([sp.Integral(1, (x, -a, a)) / 2, sp.Integral(1, (y, -b, b)) / 2,
-                                                       sp.Integral(1, (z, -d, 2 * c - d)) / 2]))),
+                                                       sp.Integral(1, (z, -d, 2 * c - d)) / 2])),
+                         fault="der Mittlere Länge des Parallelepipeds",
+                         places=(L1, L3, L6, L6, L6, L6, L6)),
          note="read as: a, b, c are the box's length, half breadth and half height, its extents measured along x, y "
               "and z")
 dv.quote("moving-centroid", "Definition der Position des Metazentrums",

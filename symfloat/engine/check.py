@@ -354,5 +354,6 @@ def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
     rep.erratum = {
         "kind": p.erratum.kind, "confidence": p.erratum.confidence, "corrected": p.erratum.corrected,
         "evidence": p.erratum.evidence + (" Engine: " + "; ".join(found) + "." if found else ""),
+        **({"places": list(p.erratum.places)} if p.erratum.places else {}),
     }
     return rep

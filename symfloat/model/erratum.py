@@ -20,7 +20,11 @@ class Erratum:
     right; the engine appends the counterexample it finds.  ``same_as`` books a
     repeat: the formula id (``derivation-id/name``) of the erratum that books
     the same fault once; kind and confidence must then be the same
-    (:mod:`symfloat.report.repeats` checks it).
+    (:mod:`symfloat.report.repeats` checks it).  A fault printed in several places is one erratum with
+    all of them: ``fault`` is its words, verbatim (a part of the quoted excerpt; the whole excerpt when
+    empty), ``places`` the locators of its other places, one entry per place
+    (``tests/test_repeated_faults.py`` finds every occurrence of the fault in the transcription and
+    holds each to the quote's locator or to one of its places).
     """
 
     kind: str
@@ -29,6 +33,8 @@ class Erratum:
     evidence: str
     corrected_reading: object = None
     same_as: str = ""
+    fault: str = ""
+    places: tuple[str, ...] = ()
 
     def __post_init__(self):
         if self.kind not in KINDS:

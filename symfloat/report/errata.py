@@ -25,6 +25,7 @@ def errata_entries(reports: list[DerivationReport]) -> list[dict]:
                 "corrected": f.erratum["corrected"], "kind": f.erratum["kind"],
                 "confidence": f.erratum["confidence"], "evidence": f.erratum["evidence"],
                 "derivation": d.id, "formula": f.id,
+                **({"places": f.erratum["places"]} if f.erratum.get("places") else {}),
             })
     return entries
 
