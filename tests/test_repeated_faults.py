@@ -40,3 +40,11 @@ def test_an_unlisted_place_is_found():
     # the metacentre lesson calls a 'Mittlere Länge' at eight places (symfloat/sources/003_02a33f8f897eb570.txt,
     # lines 155, 168, 243, 540, 578, 616, 677, 683); the first place alone accounts for one of them
     assert len(unlisted("metazentrum", "der Mittlere Länge des Parallelepipeds", ("Modell eines Schiffsrumpfes",))) == 7
+
+
+def test_an_objection_comes_with_its_answer():
+    from symfloat import Erratum
+    with pytest.raises(ValueError, match="objection needs its answer"):
+        Erratum("misprint", "low", "x", "why", objection="the author's convention")
+    e = Erratum("misprint", "low", "x", "why", objection="the author's convention", answer="he uses it nowhere else")
+    assert (e.objection, e.answer) == ("the author's convention", "he uses it nowhere else")

@@ -355,5 +355,6 @@ def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
         "kind": p.erratum.kind, "confidence": p.erratum.confidence, "corrected": p.erratum.corrected,
         "evidence": p.erratum.evidence + (" Engine: " + "; ".join(found) + "." if found else ""),
         **({"places": list(p.erratum.places)} if p.erratum.places else {}),
+        **({"objection": p.erratum.objection, "answer": p.erratum.answer} if p.erratum.objection else {}),
     }
     return rep

@@ -24,7 +24,10 @@ class Erratum:
     all of them: ``fault`` is its words, verbatim (a part of the quoted excerpt; the whole excerpt when
     empty), ``places`` the locators of its other places, one entry per place
     (``tests/test_repeated_faults.py`` finds every occurrence of the fault in the transcription and
-    holds each to the quote's locator or to one of its places).
+    holds each to the quote's locator or to one of its places).  ``objection`` is the strongest case
+    that the print is right (the grammar or usage of its period, a second sense of a word, a convention of
+    the author, a reading of a lost figure) and ``answer`` why it does not stand; an erratum whose
+    objection cannot be answered is withdrawn or lowered to ``low``.
     """
 
     kind: str
@@ -35,6 +38,8 @@ class Erratum:
     same_as: str = ""
     fault: str = ""
     places: tuple[str, ...] = ()
+    objection: str = ""
+    answer: str = ""
 
     def __post_init__(self):
         if self.kind not in KINDS:
@@ -43,5 +48,7 @@ class Erratum:
             raise ValueError(f"erratum confidence {self.confidence!r} not in {CONFIDENCES}")
         if not self.corrected or not self.evidence:
             raise ValueError("an erratum needs a correction and its evidence")
+        if bool(self.objection) != bool(self.answer):
+            raise ValueError("an erratum's objection needs its answer, and an answer its objection")
         if self.same_as and self.same_as.count("/") != 1:
             raise ValueError(f"same_as {self.same_as!r} is not a formula id 'derivation-id/name'")

@@ -25,7 +25,7 @@ def errata_entries(reports: list[DerivationReport]) -> list[dict]:
                 "corrected": f.erratum["corrected"], "kind": f.erratum["kind"],
                 "confidence": f.erratum["confidence"], "evidence": f.erratum["evidence"],
                 "derivation": d.id, "formula": f.id,
-                **({"places": f.erratum["places"]} if f.erratum.get("places") else {}),
+                **{k: f.erratum[k] for k in ("places", "objection", "answer") if f.erratum.get(k)},
             })
     return entries
 
@@ -63,4 +63,8 @@ def errata_markdown(reports: list[DerivationReport]) -> str:
                         "Printed:", "", _fence(e["printed"]), "",
                         "Corrected:", "", _fence(e["corrected"]), "",
                         f"Evidence: {e['evidence']}"]
+                if e.get("places"):
+                    out += ["", f"Also printed at: {', '.join(e['places'])}."]
+                if e.get("objection"):
+                    out += ["", f"Objection: {e['objection']}", "", f"Answer: {e['answer']}"]
     return "\n".join(out) + "\n"
