@@ -112,7 +112,13 @@ dv.quote("e-sign", L6, "was größer als eins im Falle einer stabilen Situation 
                          "c/4 > 0). e > 1 needs b > sqrt(6) c at least (e <= b^2/(6c^2)), so 'größer als eins' "
                          "would declare most stable hulls unstable. Probably a slip for 'größer als null' (the German web "
                          "page is a translation), so a claim fault of the lesson, not of the transcription.",
-                         corrected_reading=(sp.sign(z_M - z_G), sp.sign(e))))
+                         corrected_reading=(sp.sign(z_M - z_G), sp.sign(e)),
+                         objection="The lesson might measure stability by a ratio (z_M/z_G, or a moment ratio), for "
+                                   "which 'greater than one' is the right boundary.",
+                         answer="The page defines e by the display just before, b^2/(6c^2) - d/(2c)(1 - d/(2c)): a "
+                                "difference whose sign is that of z_M - z_G, not a ratio; and the sentence itself "
+                                "pairs 'negativ' with instability, which leaves 0 < e <= 1 in neither case unless the"
+                                " threshold is 0."))
 dv.quote("vasa", L4, "Eine Lösung wäre gewesen, es tiefer zu versenken oder einen höheren $d/c$-Wert zu erreichen, "
          "um die Zone der Instabilität zu vermeiden.",
          reading=(sp.sign(sp.Limit(e, d, 2 * c, "-")), 1),
@@ -133,7 +139,12 @@ dv.quote("buoyancy-point", L4, "Daher ist mit die Höhe des Schwerpunkts ($z_G$)
                          "As printed the sentence puts the buoyancy at z_G = c - d (e.g. c = 1, d = 1/2: z_G = 1/2, "
                          "z_B = -1/4). The sentence appears twice on the page, with the same words: a slip of the "
                          "lesson, not of the transcription.",
-                         corrected_reading=(z_G, c - d), places=(L6,)),
+                         corrected_reading=(z_G, c - d), places=(L6,),
+                         objection="'Schwerpunkt' alone may mean the centroid of the displaced water, which is where "
+                                   "the buoyancy acts.",
+                         answer="The sentence names it by the symbol z_G and gives it the value c - d, the page's "
+                                "symbols for the hull's centre of gravity; the displaced water's centroid is z_B = "
+                                "-d/2 on the same page."),
          note="read as: the point where the buoyancy acts is at height c - d")
 dv.quote("below-G", L5, "Wenn der Metazentrum über oder unter dem Schwerpunkt liegt",
          reading=Holds(sp.Implies(sp.Ne(z_M, z_G), stable_margin < 0)),
@@ -143,7 +154,13 @@ dv.quote("below-G", L5, "Wenn der Metazentrum über oder unter dem Schwerpunkt l
                          "'über oder unter' makes every hull with M above G unstable too, against the paragraph "
                          "'Stabile Situation' just before it (e.g. b = 3/2, c = 1, d = 1/2: z_M - z_G = 3/4 > 0, "
                          "stable). Read: wherever M is not at G the hull is unstable.",
-                         corrected_reading=Holds(sp.Implies(z_M < z_G, stable_margin < 0))),
+                         corrected_reading=Holds(sp.Implies(z_M < z_G, stable_margin < 0)),
+                         objection="'über oder unter' may open a case distinction ('whether above or below ...') of "
+                                   "which the paragraph treats the 'below' case only.",
+                         answer="As printed the clause leads straight to one conclusion, that the system becomes "
+                                "unstable, with no second branch for 'über'; the heading 'Metazentrum unterhalb des"
+                                " Schwerpunkts' supports reading a slip, but the case-distinction reading is "
+                                "grammatical, hence medium."),
          note="read as: wherever M is not at G (above or below) the hull is unstable")
 dv.quote("wide-hull", L4, "Mit anderen Worten: Stabilität wird mit großen Werten von $b/c$ (Breite größer als "
          "Tiefgang) erreicht.",
@@ -155,7 +172,12 @@ dv.quote("wide-hull", L4, "Mit anderen Worten: Stabilität wird mit großen Wert
                          "the draught. As printed ('breadth greater than draught' makes the hull stable) it fails: "
                          "b = 0.9 c, d = 0.8 c has 2b > d but e = 0.135 - 0.24 < 0 (z_M - z_G = -0.2625 c), "
                          "unstable. A claim of the lesson.",
-                         corrected_reading=Holds(sp.Implies(b > sp.sqrt(sp.Rational(3, 2)) * c, stable_margin > 0))),
+                         corrected_reading=Holds(sp.Implies(b > sp.sqrt(sp.Rational(3, 2)) * c, stable_margin > 0)),
+                         objection="'Große Werte von b/c' is right (e grows with b/c); the parenthesis is a loose "
+                                   "gloss, and 'Tiefgang' may stand loosely for the hull's height.",
+                         answer="The sentence states the gloss as what stability needs; read with the draught it "
+                                "fails (b = 0.9c, d = 0.8c), and read with the height (breadth 2b greater than "
+                                "height 2c) it fails too: b = c, d = c gives e = 1/6 - 1/4 < 0."),
          note="read as: a hull whose breadth 2b exceeds its draught d is stable")
 dv.quote("displaced-volume-claim", L6, "was bedeutet, dass das verdrängte Wasser ein gleiches oder größeres Volumen "
          "als der Gegenstand einnimmt.",
@@ -166,7 +188,12 @@ dv.quote("displaced-volume-claim", L6, "was bedeutet, dass das verdrängte Wasse
                          "rho_w V_b = rho_s V_s, so V_b / V_s = rho_s / rho_w <= 1: the displaced water takes at most "
                          "the body's volume (for the box V_b / V_s = d/(2c) < 1, the draught below the height). "
                          "'gleiches oder größeres' reverses the inequality; it would describe a body that sinks.",
-                         corrected_reading=Holds(V_b <= 8 * a * b * c)),
+                         corrected_reading=Holds(V_b <= 8 * a * b * c),
+                         objection="The sentence may speak loosely of the displaced water's weight, which equals the "
+                                   "body's.",
+                         answer="It says 'Volumen' and compares the volumes; a floating body's displaced volume is "
+                                "a part of its own, V_b = (d/2c) V_s < V_s for the box, so 'gleiches oder größeres'"
+                                " is false as written."),
          note="the box: V_s = 8abc; read as V_b >= V_s, 'ein gleiches oder größeres Volumen'")
 
 dv.quote("half-length", L_SHIP, "der Mittlere Länge des Parallelepipeds ($a$)8673, der Halbe Breite des Parallelepipeds "
@@ -184,7 +211,12 @@ dv.quote("half-length", L_SHIP, "der Mittlere Länge des Parallelepipeds ($a$)86
                                             sp.Matrix([sp.Integral(1, (x, -a, a)) / 2, sp.Integral(1, (y, -b, b)) / 2,
                                                        sp.Integral(1, (z, -d, 2 * c - d)) / 2])),
                          fault="der Mittlere Länge des Parallelepipeds",
-                         places=(L1, L3, L6, L6, L6, L6, L6)),
+                         places=(L1, L3, L6, L6, L6, L6, L6),
+                         objection="'Mittlere Länge' might mean the length measured from the middle, the half length,"
+                                   " as the page's own 'Halbe' means for b and c.",
+                         answer="'mittlere Länge' means the mean length in German usage, and the page writes "
+                                "'Halbe' for the two other halves in the same phrase; a coined sense cannot be "
+                                "excluded, hence medium."),
          note="read as: a, b, c are the box's length, half breadth and half height, its extents measured along x, y "
               "and z")
 dv.quote("moving-centroid", "Definition der Position des Metazentrums",
@@ -192,7 +224,7 @@ dv.quote("moving-centroid", "Definition der Position des Metazentrums",
          "wird, dass die Fläche unter der Wasserlinie (blaue Linie) konstant bleibt:",
          reading=(sp.Integral(y, (y, -b, b), (z, -d, 2 * c - d)) / sp.Integral(1, (y, -b, b), (z, -d, 2 * c - d)),
                   shift),
-         erratum=Erratum("claim", "medium",
+         erratum=Erratum("claim", "low",
                          r"\text{indem der Schwerpunkt des verdrängten Wassers (des eingetauchten Querschnitts) "
                          r"\ldots bestimmt wird}",
                          "The centroid whose shift on heel gives the metacentre is that of the displaced water: the "
@@ -200,7 +232,14 @@ dv.quote("moving-centroid", "Definition der Position des Metazentrums",
                          "moves the two wedge triangles of the immersed section, b^2 tg phi/(3d). The tilted body's "
                          "own centroid is fixed in the body (z_G = c - d throughout the lesson): across the ship it "
                          "stays on the centre line, shift 0, whatever the heel.",
-                         corrected_reading=(shift, x_t * A_t / A_q)),
+                         corrected_reading=(shift, x_t * A_t / A_q),
+                         objection="'Der Schwerpunkt des gekippten Körpers' may mean the centroid of the body's "
+                                   "immersed part, as the same sentence's condition 'die Fläche unter der Wasserlinie"
+                                   " ... konstant' concerns the immersed section.",
+                         answer="The page keeps 'Körper' for the hull (z_G) and the displaced water for z_B, and "
+                                "the next section is titled 'Massenschwerpunkt des verdrängten Wassers'; but the "
+                                "sentence's own condition supports the loose reading, so the objection is not fully"
+                                " answered: lowered to low."),
          note="read as: the shift across the ship of the tilted body's centroid (in the body frame, the centroid of "
               "its whole section 2b x 2c) is the shift the lesson computes, b^2 tg phi/(3d)")
 
@@ -237,7 +276,12 @@ dv.quote("diagram-axes", L4, "Das bedeutet, dass es im Diagramm $b/c$ (Breite/Ti
                          "sentence's '(Breite größer als Tiefgang)', booked there (wide-hull).",
                          corrected_reading=(sp.Matrix([b / c, d / (2 * c)]),
                                             sp.Matrix([BREADTH / HEIGHT, DRAUGHT / HEIGHT])),
-                         same_as="metazentrum/wide-hull"),
+                         same_as="metazentrum/wide-hull",
+                         objection="In naval architecture 'depth' is the hull's height, so b/c as breadth over "
+                                   "'Tiefe' (depth) is the usual B/D ratio and the first label is right.",
+                         answer="The same sentence labels d/2c 'Tiefe/Höhe', with 2c the height, so 'Tiefe' there "
+                                "is the draught; one word names two quantities in one sentence, which is the fault "
+                                "booked, whichever label one mends."),
          note="read with one meaning of 'Tiefe' in the sentence, the draught d of the second axis: the axes as the "
               "ratios of the box's breadth 2b, draught d and height 2c that the words name")
 dv.quote("diagram-regions", L4, "in dem das System stabil und in seinem Komplement instabil ist",
@@ -253,11 +297,19 @@ dv.quote("F_g", "formula list", r"$ F_g = m_g g $", reading=(F_g, m_g * g),
                          "The sentence before introduces the weight with the mass of the floating object M_s; m_g is "
                          "defined nowhere on the page (a symbol of the site's general gravity lesson). With M_s the "
                          "chain F_b = M_b g = M_s g = F_g below closes.",
-                         corrected_reading=(F_g, M_s * g)))
+                         corrected_reading=(F_g, M_s * g),
+                         objection="m_g may be the site's general symbol for the gravitating mass, here the hull's "
+                                   "M_s: a correct formula.",
+                         answer="On this page the floating object's mass is M_s and m_g is defined nowhere; the "
+                                "formula holds only by identifying the two, which the page does not do (hence low)."))
 dv.quote("F_b=F_g", "formula list", r"$F_b = \rho_w V_w g = M_w g = M_s g = F_g$",
          reading=(F_b, rho_w * V_w * g, M_w * g, M_s * g, F_g),
          erratum=Erratum("misprint", "low", r"F_b = \rho_w V_b g = M_b g = M_s g = F_g",
                          "The page names the displaced volume V_b and the displaced mass M_b (formula list); V_w and "
                          "M_w are defined nowhere. With V_b and M_b the chain is Archimedes' principle, rho_w V_b g = "
                          "M_b g, and M_b = M_s. A naming slip of the lesson.",
-                         corrected_reading=(F_b, rho_w * V_b * g, M_b * g, M_s * g, F_g)))
+                         corrected_reading=(F_b, rho_w * V_b * g, M_b * g, M_s * g, F_g),
+                         objection="V_w and M_w may be the site's general names for the displaced water's volume and "
+                                   "mass.",
+                         answer="The page names them V_b and M_b in its formula list and never defines V_w, M_w; the "
+                                "chain holds by identifying them (hence low)."))
