@@ -127,8 +127,8 @@ def part(derivation_id: str, name: str):
 
 @cache
 def statements(derivation_id: str):
-    """The derivation *derivation_id* as its statements module defines it (no witness, predictor or
-    output declared yet): cheap, and all a reader of the quotes needs."""
+    """The derivation *derivation_id*, importing its statements module and no other part: cheap, and all
+    a reader of the quotes needs (held to the manifest's id, source and requires)."""
     d = part(derivation_id, "statements").DERIVATION
     m = manifest(derivation_id)
     if d.id != derivation_id or d.source != m.source:
