@@ -127,10 +127,10 @@ def test_side_faces_of_the_hull_count_as_graefe_says():
     from symfloat.geometry.convex import side_faces, side_faces_by_sections
     from symfloat.registry import load
     _, module = load("graefe-s1-prismatoid-volume")
-    top = module._prismatoid(module.PENTAGON, [(1, 1), (3, "3/2"), (3, 3), ("3/2", "7/2")])
+    top = module.witnesses._prismatoid(module.witnesses.PENTAGON, [(1, 1), (3, "3/2"), (3, 3), ("3/2", "7/2")])
     assert side_faces(top) == side_faces_by_sections(top) == (9, 9)
     # mutation: turn the top's first side parallel to the pentagon's first: the two triangles over them merge
-    parallel = module._prismatoid(module.PENTAGON, [(1, 1), (3, 1), (3, 3), ("3/2", "7/2")])
+    parallel = module.witnesses._prismatoid(module.witnesses.PENTAGON, [(1, 1), (3, 1), (3, 3), ("3/2", "7/2")])
     assert side_faces(parallel) == side_faces_by_sections(parallel) == (8, 7)
 
 
