@@ -38,7 +38,7 @@ pi = sp.pi
 S3 = "graefe-s3-prismatoid-centroid"
 # the prismatoid centroid X = h (g/2 + D)/((G + g)/2 + 2D) above G at given (G, g, D, h): the reading of §3's print
 _S3D, _S3M = load(S3)
-centroid = _S3D.evaluator("centroid", (_S3M.G, _S3M.g, _S3M.D, _S3M.h), 1)
+centroid = _S3D.evaluator("centroid", (_S3M.statements.G, _S3M.statements.g, _S3M.statements.D, _S3M.statements.h), 1)
 QUADRATIC = ("A(u) is a polynomial of degree <= 2 in u, so the prismatoid formula of §3 is exact "
              "for this body (§3, centroid-quadratic-sections)")
 
