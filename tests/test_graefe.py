@@ -170,7 +170,8 @@ def test_the_similar_triangles_of_the_elliptic_body():
     assert sp.Rational(3) * (4 - sp.Rational(4, 2)) == yp * 4
     # mutation: the proportion with the heights swapped must not satisfy the correction
     lhs, rhs = p.erratum.corrected_reading
-    swapped = lhs.subs(module.h - module.h / module.m, module.h / module.m)
+    h, m = module.statements.h, module.statements.m
+    swapped = lhs.subs(h - h / m, h / m)
     assert swapped != lhs
     wrong = dataclasses.replace(p.erratum, corrected_reading=(swapped, rhs))
     rep = check_derivation(dataclasses.replace(d, printed=[dataclasses.replace(p, erratum=wrong)], witnesses=[]),
