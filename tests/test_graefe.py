@@ -127,10 +127,10 @@ def test_side_faces_of_the_hull_count_as_graefe_says():
     from symfloat.geometry.convex import side_faces, side_faces_by_sections
     from symfloat.registry import load
     _, module = load("graefe-s1-prismatoid-volume")
-    top = module._prismatoid(module.PENTAGON, [(1, 1), (3, "3/2"), (3, 3), ("3/2", "7/2")])
+    top = module.witnesses._prismatoid(module.witnesses.PENTAGON, [(1, 1), (3, "3/2"), (3, 3), ("3/2", "7/2")])
     assert side_faces(top) == side_faces_by_sections(top) == (9, 9)
     # mutation: turn the top's first side parallel to the pentagon's first: the two triangles over them merge
-    parallel = module._prismatoid(module.PENTAGON, [(1, 1), (3, 1), (3, 3), ("3/2", "7/2")])
+    parallel = module.witnesses._prismatoid(module.witnesses.PENTAGON, [(1, 1), (3, 1), (3, 3), ("3/2", "7/2")])
     assert side_faces(parallel) == side_faces_by_sections(parallel) == (8, 7)
 
 
@@ -170,7 +170,8 @@ def test_the_similar_triangles_of_the_elliptic_body():
     assert sp.Rational(3) * (4 - sp.Rational(4, 2)) == yp * 4
     # mutation: the proportion with the heights swapped must not satisfy the correction
     lhs, rhs = p.erratum.corrected_reading
-    swapped = lhs.subs(module.h - module.h / module.m, module.h / module.m)
+    h, m = module.statements.h, module.statements.m
+    swapped = lhs.subs(h - h / m, h / m)
     assert swapped != lhs
     wrong = dataclasses.replace(p.erratum, corrected_reading=(swapped, rhs))
     rep = check_derivation(dataclasses.replace(d, printed=[dataclasses.replace(p, erratum=wrong)], witnesses=[]),

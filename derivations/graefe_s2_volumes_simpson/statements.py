@@ -1,32 +1,9 @@
-"""Graefe 1866, §2: consequences of the prismatoid formula.
-
-For every body whose section area ``A(z)`` is a polynomial of degree at most
-three in the height ``z``, ``∫_0^h A dz = h/3 ((A(0) + A(h))/2 + 2 A(h/2))``:
-the prismatoid formula ``I = h/3 ((G + g)/2 + 2 D)`` of §1 holds with
-``G = A(0)``, ``g = A(h)``, ``D = A(h/2)``.  This is why bodies with curved
-surfaces are "Specialitäten des Prismatoids".  Graefe applies it to
-
-* the sphere (``G = g = 0``, ``h = 2 r``, ``D = r² π``): ``I = 4 r³ π / 3``;
-* the paraboloid of height ``x`` (``y² = 2 p x``): ``I = p x² π``;
-* the segment of height ``x`` of the prolate ellipsoid
-  (``y² = b²/a² (2 a x - x²)``): ``I = b² π x² (3 a - x) / (3 a²)``, and for
-  ``x = a`` the half ellipsoid ``2 a b² π / 3``;
-
-and derives Simpson's rule for volumes from equidistant sections ``a, b, …, g``
-at spacing ``m``: ``I = m/3 (a + 4b + 2c + 4d + 2e + 4f + g)``.
-
-The print drops the factor 1/3 from the first slab ``I' = 2m/3 (…)`` on, and
-carries the omission through to ``I = m (a + 4b + … + g)``; §4 relies on the
-wrong factor (see ``graefe-s4-ship-centroid``).
-"""
-
-import mpmath
+"""What Graefe's §2 says and how each formula is derived (see the package's docstring)."""
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.quadrature import composite_simpson
-from symfloat.engine.witness import SECTION, Case, ConvergenceOrder, PlaneSections, SectionIntegral
-from symfloat.registry import load
+
+from ..graefe_s1_prismatoid_volume.statements import DERIVATION as PRISMATOID_VOLUME
 
 G, g, D, h, z, t = sp.symbols("G g D h z t", positive=True)
 r, p, x, m = sp.symbols("r p x m", positive=True)
@@ -40,7 +17,7 @@ pi = sp.pi
 
 
 # Graefe's §1 formula I = h/3 ((G + g)/2 + 2 D) at given (G, g, D, h): the reading of §1's print
-prismatoid = load("graefe-s1-prismatoid-volume")[0].evaluator("prismatoid-volume", (G, g, D, h), 1)
+prismatoid = PRISMATOID_VOLUME.evaluator("prismatoid-volume", (G, g, D, h), 1)
 
 
 Rb, rt, ng = sp.symbols("R rho N", positive=True)   # radii of the frustum's bases, number of sides
@@ -267,101 +244,6 @@ d.quote("odd-number-of-sections", "§2 Simpson's rule",
              "1, 4, 2, 4, …, 2, 4, 1 times m/3 give the volume, exactly when the section area is a cubic "
              "polynomial of the height. The factor m/3 (printed m) is the erratum of 'simpson-rule'.")
 
-# ---- witnesses -----------------------------------------------------------------------------------------
-
-
-def _q(v):
-    return sp.Rational(v)
-
-
-SPHERE_CASES = tuple(Case({r: _q(v)}, label=f"r = {v}") for v in ("1", "3/2", "7/3"))
-PARABOLOID_CASES = tuple(Case({p: _q(pv), x: _q(xv)}, label=f"p = {pv}, x = {xv}")
-                         for pv, xv in (("1", "2"), ("5/2", "3/4"), ("1/3", "7")))
-ELLIPSOID_CASES = tuple(Case({a: _q(av), b: _q(bv), x: _q(xv)}, label=f"a = {av}, b = {bv}, x = {xv}")
-                        for av, bv, xv in (("2", "1", "3/2"), ("5/2", "3/2", "4"), ("1", "1/3", "1/5")))
-A_e_centre = pi * b ** 2 * (1 - ((x - z) - a) ** 2 / a ** 2)   # from the centre equation, t = x - z
-
-d.witness(SectionIntegral("sphere-volume", "∫ π (r² - (z - r)²) dz over the diameter", ("sphere-volume",),
-                          SPHERE_CASES, area=pi * (r ** 2 - (z - r) ** 2), z=z, bounds=(0, 2 * r)))
-d.witness(SectionIntegral("paraboloid-volume", "∫ π 2p (x - z) dz over the height", ("paraboloid-volume",),
-                          PARABOLOID_CASES, area=pi * 2 * p * (x - z), z=z, bounds=(0, x)))
-d.witness(SectionIntegral("ellipsoid-volume", "∫ π b² (1 - (t - a)²/a²) dt over the segment (centre equation)",
-                          ("ellipsoid-volume-1", "ellipsoid-volume-2", "ellipsoid-volume-3"), ELLIPSOID_CASES,
-                          area=A_e_centre, z=z, bounds=(0, x)))
-d.witness(SectionIntegral("half-ellipsoid-volume", "∫ π b² (1 - (t - a)²/a²) dt from the vertex to the centre",
-                          ("half-ellipsoid",), tuple(Case({a: c_.params[a], b: c_.params[b], x: c_.params[a]},
-                                                          label=f"a = {c_.params[a]}, b = {c_.params[b]}")
-                                                     for c_ in ELLIPSOID_CASES),
-                          area=A_e_centre, z=z, bounds=(0, a)))
-
-# bodies with cubic section areas (exact for the prismatoid formula and for Simpson's rule)
-CUBICS = ((sp.Rational(3), sp.Rational(1, 2), sp.Rational(-1, 5), sp.Rational(1, 40), sp.Rational(1, 2)),
-          (sp.Rational(1), sp.Rational(2), sp.Rational(1, 3), sp.Rational(-1, 30), sp.Rational(3, 4)),
-          (sp.Rational(5, 2), sp.Rational(-1, 3), sp.Rational(1, 7), sp.Rational(1, 11), sp.Rational(1, 3)))
-
-
-def _cubic_case(coeffs):
-    *ks, mv = coeffs
-    values = {kk: v for kk, v in zip(k, ks)}
-    area = A3.xreplace(values)
-    sections = {s: area.subs(z, i * mv) for i, s in enumerate(A_sec)}
-    assert all(area.subs(z, mv * j / 10) > 0 for j in range(61)), "section areas must be positive"
-    return Case({**values, m: mv, **sections}, label=f"A(z) = {area}, m = {mv}")
-
-
-CUBIC_CASES = tuple(_cubic_case(cf) for cf in CUBICS)
-for name, targets, lo in (("slab-a-c", ("slab-a-c",), 0), ("slab-c-e", ("slab-c-e",), 2),
-                          ("slab-e-g", ("slab-e-g",), 4)):
-    d.witness(SectionIntegral(name, f"∫ A dz over the slab {name[5:]} of bodies with cubic section areas",
-                              targets, CUBIC_CASES, area=A3, z=z, bounds=(lo * m, (lo + 2) * m)))
-d.witness(SectionIntegral("whole-body", "∫ A dz over 6m for bodies with cubic section areas",
-                          ("sum-1", "sum-2", "simpson-rule", "simpson-identical"), CUBIC_CASES,
-                          area=A3, z=z, bounds=(0, 6 * m)))
-
-
-d.witness(SectionIntegral("odd-number-of-sections", "∫ A dz over 2m, 4m, 6m, 8m for bodies with cubic section areas",
-                          ("odd-number-of-sections",), CUBIC_CASES, area=A3, z=z,
-                          bounds=tuple((0, 2 * n * m) for n in range(1, 5))))
-
-
-def _reciprocal(u):
-    return 1 / (1 + u)
-
-
-d.witness(ConvergenceOrder("simpson-order-exp", "composite Simpson on ∫_0^1 exp",
-                           ("simpson-identical", "odd-number-of-sections"), composite_simpson, mpmath.exp,
-                           (mpmath.mpf(0), mpmath.mpf(1)), mpmath.e - 1, 4))
-# (not 1/(1+z²) on [0, 1]: its third derivative vanishes at both ends, which cancels the h⁴ term
-# of the error and makes the measured order 6)
-d.witness(ConvergenceOrder("simpson-order-reciprocal", "composite Simpson on ∫_0^1 1/(1+z)",
-                           ("simpson-identical", "odd-number-of-sections"), composite_simpson, _reciprocal,
-                           (mpmath.mpf(0), mpmath.mpf(1)), mpmath.log(2), 4))
-
-# the sections named by the text, measured across their chords (the circle of radius² ρ²(z) written with the
-# chord coordinate ρ sin η, so that the integrand 2ρ² cos²η stays smooth)
-eta, zp = sp.symbols("eta z_P", real=True)
-
-
-def _round(rho2):
-    return {"width": 2 * rho2 * sp.cos(eta) ** 2, "chord": (-pi / 2, pi / 2), "position": zp, "across": eta}
-
-
-d.witness(PlaneSections("sphere-section-areas", "sections of the sphere at both poles and the centre",
-                        ("sphere-sections",), SPHERE_CASES, planes=(r, 0, 2 * r),   # a non-empty section first
-                        combine=(SECTION[1], SECTION[2], SECTION[0]), **_round(r ** 2 - (zp - r) ** 2)))
-for name, plane in (("paraboloid-base-radius", 0), ("paraboloid-mid-radius", x / 2)):
-    d.witness(PlaneSections(f"{name}-section", "section of the paraboloid y² = 2pt (t from the vertex, t = x - z)",
-                            (name,), PARABOLOID_CASES, planes=(plane,),
-                            combine=SECTION[0] / pi, **_round(2 * p * (x - zp))))
-d.witness(PlaneSections("ellipse-chords", "the ellipsoid's sections at the base and the mid-section, over pi",
-                        ("ellipsoid-radii",), ELLIPSOID_CASES, planes=(0, x / 2),
-                        combine=(SECTION[0] / pi, SECTION[1] / pi), **_round(A_e_centre.subs(z, zp) / pi)))
-d.witness(SectionIntegral("half-ellipsoid-segment", "∫ π b² (1 - (t - a)²/a²) dt over the segment of height a",
-                          ("half-ellipsoid-x-a",), tuple(Case({a: c_.params[a], b: c_.params[b], x: c_.params[a]},
-                                                               label=f"a = {c_.params[a]}, b = {c_.params[b]}")
-                                                          for c_ in ELLIPSOID_CASES),
-                          area=A_e_centre, z=z, bounds=(0, a)))
-
 # "so kann die eine oder auch beide Null sein": a pyramid (g = 0, D = G/4) and a body whose section area
 # 4 D z (h - z)/h² vanishes at both ends (G = g = 0)
 ZERO_BASE_AREAS = (G * (1 - z / h) ** 2, 4 * D * z * (h - z) / h ** 2)
@@ -370,14 +252,6 @@ d.quote("zero-bases", "§2 prismatoid formula",
         reading=(sp.Matrix([sp.Integral(A_, (z, 0, h)) for A_ in ZERO_BASE_AREAS]),
                  sp.Matrix([prismatoid(G, 0, G / 4, h), prismatoid(0, 0, D, h)])),
         note="read on a pyramid over G (g = 0) and on a body with G = g = 0 and quadratic sections")
-
-
-d.witness(SectionIntegral("zero-bases-volumes", "∫ A dz of a pyramid and of a body with both bases zero",
-                          ("zero-bases",), (Case({G: 3, D: 2, h: sp.Rational(5, 2)}, label="G = 3, D = 2, h = 5/2"),
-                                            Case({G: sp.Rational(7, 3), D: sp.Rational(1, 2), h: 4},
-                                                 label="G = 7/3, D = 1/2, h = 4")),
-                          area=ZERO_BASE_AREAS, z=z, bounds=(0, h)))
-
 
 # ---- infinitely many sides: curved bodies as prismatoids -------------------------------------------------
 def _ngon(radius):

@@ -1,32 +1,15 @@
-"""Graefe 1866, §4: applications of the centroid formula of the prismatoid.
-
-Every body of §4 (except the ship's displacement, treated separately) has a
-section area ``A(u)`` that is a polynomial of degree at most 2 in the height
-``u`` above the base ``G``.  For such bodies the prismatoid formula of §3,
-
-    X = h (g/2 + D) / ((G + g)/2 + 2 D),   G = A(0), D = A(h/2), g = A(h),
-
-is exact.  For each body ``A(u)`` is built from its own geometry (the
-generating circle, parabola or ellipse, similar sections, ...), ``G``, ``D``,
-``g`` are read off, the formula is applied and its value is compared with the
-direct integral ``∫ u A du / ∫ A du``; the printed lines are then checked.
-Bodies: sphere, cone and pyramid frustum, hemisphere, spherical segments with
-one and two bases, paraboloids with one and two bases, ellipsoid segment,
-half and truncated ellipsoid of revolution, the elliptic body with triangular
-sections, triaxial ellipsoid stump and half triaxial ellipsoid.
-
-Notation: ``x``, ``x'`` are abscissae from the centre (spheres, ellipsoids,
-``x < x'``: ``G`` is the larger base); for the paraboloid with two bases the
-abscissae from the vertex are written ``x_v > x'_v``.
-"""
+"""What Graefe's §4 says of the bodies other than the ship and how each formula is derived (see the package's
+docstring)."""
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.figure_witness import FIGURE_METHODS, CurveRoot
-from symfloat.engine.floating_witness import PART, Combined
-from symfloat.engine.witness import SECTION, Case, PlaneSections, SectionIntegral
 from symfloat.model.claim import as_printed
-from symfloat.registry import load
+
+from ..graefe_s3_prismatoid_centroid.statements import D as S3_D
+from ..graefe_s3_prismatoid_centroid.statements import DERIVATION as PRISMATOID_CENTROID
+from ..graefe_s3_prismatoid_centroid.statements import G as S3_G
+from ..graefe_s3_prismatoid_centroid.statements import g as S3_g
+from ..graefe_s3_prismatoid_centroid.statements import h as S3_h
 
 u, t, xi, P, eta = sp.symbols("u t xi P eta", real=True)
 r, R, h, m, a, b, c, p, k, S, s = sp.symbols("r R h m a b c p k S s", positive=True)
@@ -37,8 +20,7 @@ pi = sp.pi
 
 S3 = "graefe-s3-prismatoid-centroid"
 # the prismatoid centroid X = h (g/2 + D)/((G + g)/2 + 2D) above G at given (G, g, D, h): the reading of §3's print
-_S3D, _S3M = load(S3)
-centroid = _S3D.evaluator("centroid", (_S3M.G, _S3M.g, _S3M.D, _S3M.h), 1)
+centroid = PRISMATOID_CENTROID.evaluator("centroid", (S3_G, S3_g, S3_D, S3_h), 1)
 QUADRATIC = ("A(u) is a polynomial of degree <= 2 in u, so the prismatoid formula of §3 is exact "
              "for this body (§3, centroid-quadratic-sections)")
 
@@ -84,28 +66,6 @@ def body(slug, key, area, height, G_val, D_val, g_val, note):
     return G, D, g, X
 
 
-def sections_witness(slug, description, targets, area, height, *cases):
-    """Quadrature of the body's own section area: the centroid height above G.
-    Parameter values become SymPy rationals (the witness substitutes them with xreplace)."""
-    d.witness(SectionIntegral(f"{slug}-sections", description, tuple(targets),
-                              tuple(Case({q: sp.Rational(v) for q, v in params.items()}, label=label)
-                                    for label, params in cases),
-                              area=area, z=u, bounds=(0, height), quantity="centroid"))
-
-
-def round_sections(rho2):
-    """Width and chord of the circular section of radius^2 ``rho2`` (a function of ``P``),
-    the chord coordinate written rho sin(eta) so that the integrand stays smooth."""
-    return {"width": 2 * rho2 * sp.cos(eta) ** 2, "chord": (-pi / 2, pi / 2)}
-
-
-def planes_witness(name, description, targets, sections, planes, combine, *cases):
-    d.witness(PlaneSections(name, description, tuple(targets),
-                            tuple(Case({q: sp.Rational(v) for q, v in params.items()}, label=label)
-                                  for label, params in cases),
-                            planes=tuple(planes), combine=combine, position=P, across=eta, **sections))
-
-
 # ---- sphere ------------------------------------------------------------------------
 h_sp = sp.Symbol("h_{sp}")
 d.step("sphere-height", Eq(h_sp, 2 * r), "definition", note="from pole to pole", result=h_sp)
@@ -116,8 +76,6 @@ d.quote("sphere-sections", "§4 sphere", r"Für die Kugel ist  $G$  und  $g = 0$
         reading=(sp.Matrix([G_sp, g_sp, D_sp, h_sp]), sp.Matrix([0, 0, r ** 2 * pi, 2 * r])))
 d.quote("sphere", "§4 sphere", r"$$X = 2r \frac{r^2\pi}{2r^2\pi} = r.$$",
         reading=as_printed(lambda: (X_sp, 2 * r * (r ** 2 * pi / (2 * r ** 2 * pi)), r)))
-sections_witness("sphere", "centroid of the sphere from its circular sections", ("sphere",), area_sp, 2 * r,
-                 ("r = 3", {r: 3}), ("r = 7/2", {r: sp.Rational(7, 2)}))
 
 # ---- cone frustum --------------------------------------------------------------------
 area_cf = pi * (R + (r - R) * u / h) ** 2
@@ -150,10 +108,6 @@ d.quote("cone-frustum-2", "§4 cone frustum",
 d.quote("cone-frustum-3", "§4 cone frustum",
         r"$$X = \frac{h}{4} \left\{ \frac{3r^2 + 2Rr + R^2}{r^2 + Rr + R^2} \right\}.$$",
         reading=Eq(X_cf, h / 4 * ((3 * r ** 2 + 2 * R * r + R ** 2) / (r ** 2 + R * r + R ** 2))))
-sections_witness("cone-frustum", "centroid of the cone frustum from its circular sections",
-                 ("cone-frustum-1", "cone-frustum-2", "cone-frustum-3"), area_cf, h,
-                 ("R = 3, r = 1, h = 4", {R: 3, r: 1, h: 4}),
-                 ("R = 5/2, r = 2, h = 3/2", {R: sp.Rational(5, 2), r: 2, h: sp.Rational(3, 2)}))
 
 # ---- pyramid frustum -------------------------------------------------------------------
 area_pf = k * (S + (s - S) * u / h) ** 2
@@ -195,26 +149,6 @@ d.quote("pyramid-frustum-2", "§4 pyramid frustum",
         r"$$X = \frac{h}{4} \left\{ \frac{3g + G + 2\sqrt{Gg}}{g + G + \sqrt{Gg}} \right\} . -$$",
         reading=Eq(X_pf, h / 4 * ((3 * g_pf + G_pf + 2 * sp.sqrt(G_pf * g_pf))
                                      / (g_pf + G_pf + sp.sqrt(G_pf * g_pf)))))
-sections_witness("pyramid-frustum", "centroid of the pyramid frustum from its similar sections",
-                 ("pyramid-frustum-1", "pyramid-frustum-2"), area_pf, h,
-                 ("square frustum S = 3, s = 1, h = 2", {k: 1, S: 3, s: 1, h: 2}),
-                 ("k = 3/2, S = 2, s = 5/4, h = 3", {k: sp.Rational(3, 2), S: 2, s: sp.Rational(5, 4), h: 3}))
-
-# a frustum over the right trapezoid with parallel sides sigma and (2k - 1) sigma and height sigma (k = 1: the
-# square); sigma, the side corresponding to S, runs linearly from S to s
-sigma = S + (s - S) * P / h
-pyramid_sections = {"width": sigma - 2 * (1 - k) * eta, "chord": (0, sigma)}
-pyramid_cases = (("square frustum S = 3, s = 1, h = 2", {k: 1, S: 3, s: 1, h: 2}),
-                 ("trapezoid frustum k = 3/4, S = 2, s = 5/4, h = 3",
-                  {k: sp.Rational(3, 4), S: 2, s: sp.Rational(5, 4), h: 3}))
-for target, combine in (
-        ("pyramid-frustum-ratio-G", (SECTION[0] / SECTION[1], sp.sqrt(SECTION[0] / SECTION[1]))),
-        ("pyramid-frustum-ratio-g", (SECTION[2] / SECTION[1], sp.sqrt(SECTION[2] / SECTION[1]))),
-        ("pyramid-frustum-roots", (sp.sqrt(SECTION[0]), sp.sqrt(SECTION[2]))),
-        ("pyramid-frustum-root-sum", sp.sqrt(SECTION[0]) + sp.sqrt(SECTION[2])),
-        ("pyramid-frustum-D", SECTION[1])):
-    planes_witness(f"{target}-sections", "sections G, D, g of trapezoid frusta by quadrature of their widths",
-                   (target,), pyramid_sections, (0, h / 2, h), combine, *pyramid_cases)
 
 # ---- hemisphere --------------------------------------------------------------------------
 area_hs = pi * (r ** 2 - u ** 2)
@@ -228,8 +162,6 @@ d.quote("hemisphere", "§4 hemisphere",
         r"\frac{r}{2} \cdot \frac{3}{4} = \frac{3r}{8} . -$$",
         reading=as_printed(lambda: (X_hs, r * ((3 * r ** 2 * pi / 4) / (r ** 2 * pi / 2 + 3 * r ** 2 * pi / 2)),
                  r / 2 * sp.Rational(3, 4), 3 * r / 8)))
-sections_witness("hemisphere", "centroid of the hemisphere from its circular sections", ("hemisphere",),
-                 area_hs, r, ("r = 2", {r: 2}), ("r = 5/3", {r: sp.Rational(5, 3)}))
 
 # ---- spherical segment, one base ---------------------------------------------------------------
 h_s1 = sp.Symbol("h_{s1}")
@@ -265,13 +197,6 @@ d.quote("segment-1-3", "§4 spherical segment, one base",
 d.quote("segment-1-4", "§4 spherical segment, one base",
         r"$$X = \frac{r - m}{4} \left\{ \frac{3r + m}{2r + m} \right\}.$$",
         reading=Eq(X_s1, (r - m) / 4 * ((3 * r + m) / (2 * r + m))))
-sections_witness("segment-1", "centroid of the spherical segment from its circular sections",
-                 ("segment-1-1", "segment-1-2", "segment-1-3", "segment-1-4"), area_s1, r - m,
-                 ("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
-
-planes_witness("segment-1-G-sections", "sections of the sphere at distances m and r from the centre",
-               ("segment-1-G",), round_sections(r ** 2 - P ** 2), (m, r), (SECTION[0], SECTION[1], r - m),
-               ("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
 
 # ---- spherical segment, two bases ----------------------------------------------------------------
 area_s2 = pi * (r ** 2 - (x + u) ** 2)
@@ -312,10 +237,6 @@ d.quote("segment-2-2", "§4 spherical segment, two bases",
 d.quote("segment-2-3", "§4 spherical segment, two bases",
         r"$$X = \frac{x' - x}{4} \left\{ \frac{6r^2 - 3x'^2 - 2x'x - x^2}{3r^2 - x'^2 - x'x - x^2} \right\}.$$",
         reading=Eq(X_s2, (xp - x) / 4 * (num_s2 / den_s2)))
-sections_witness("segment-2", "centroid of the spherical zone from its circular sections",
-                 ("segment-2-1", "segment-2-2", "segment-2-3"), area_s2, xp - x,
-                 ("r = 5, x = 1, x' = 3", {r: 5, x: 1, xp: 3}),
-                 ("r = 4, x = 1/2, x' = 7/2", {r: 4, x: sp.Rational(1, 2), xp: sp.Rational(7, 2)}))
 
 # ---- paraboloid, one base ------------------------------------------------------------------------------
 area_p1 = pi * 2 * p * (x - u)
@@ -329,14 +250,6 @@ d.quote("paraboloid-1-radii", "§4 paraboloid, one base",
 d.quote("paraboloid-1", "§4 paraboloid, one base",
         r"$$X = x \left\{ \frac{px}{px + 2px} \right\} = \frac{x}{3}.$$",
         reading=as_printed(lambda: (X_p1, x * (p * x / (p * x + 2 * p * x)), x / 3)))
-sections_witness("paraboloid-1", "centroid of the paraboloid from its circular sections", ("paraboloid-1",),
-                 area_p1, x, ("p = 1, x = 2", {p: 1, x: 2}),
-                 ("p = 5/2, x = 3/2", {p: sp.Rational(5, 2), x: sp.Rational(3, 2)}))
-
-planes_witness("paraboloid-1-radii-sections", "sections of the paraboloid y^2 = 2 p P (P from the vertex)",
-               ("paraboloid-1-radii",), round_sections(2 * p * P), (x, x / 2, 0),
-               (SECTION[0] / pi, SECTION[1] / pi, SECTION[2]),
-               ("p = 1, x = 2", {p: 1, x: 2}), ("p = 5/2, x = 3/2", {p: sp.Rational(5, 2), x: sp.Rational(3, 2)}))
 
 # ---- paraboloid, two bases -----------------------------------------------------------------------------
 area_p2 = pi * 2 * p * (xv - u)
@@ -359,16 +272,6 @@ d.quote("paraboloid-2-2", "§4 paraboloid, two bases",
         r"\frac{2 x' + x}{x' + x} \right\}$$",
         reading=(X_p2, (xv - xvp) * ((2 * xvp + xv) / (3 * xvp + 3 * xv)),
                  (xv - xvp) / 3 * ((2 * xvp + xv) / (xvp + xv))))
-sections_witness("paraboloid-2", "centroid of the paraboloid frustum from its circular sections",
-                 ("paraboloid-2-1", "paraboloid-2-2"), area_p2, xv - xvp,
-                 ("p = 1, x = 4, x' = 1", {p: 1, xv: 4, xvp: 1}),
-                 ("p = 3/2, x = 3, x' = 2", {p: sp.Rational(3, 2), xv: 3, xvp: 2}))
-
-planes_witness("paraboloid-2-radii-sections", "sections of the paraboloid y^2 = 2 p P (P from the vertex)",
-               ("paraboloid-2-radii",), round_sections(2 * p * P), (xv, xvp, (xv + xvp) / 2),
-               (SECTION[0] / pi, SECTION[1] / pi, SECTION[2] / pi),
-               ("p = 1, x = 4, x' = 1", {p: 1, xv: 4, xvp: 1}),
-               ("p = 3/2, x = 3, x' = 2", {p: sp.Rational(3, 2), xv: 3, xvp: 2}))
 
 # ---- ellipsoid of revolution: segment with one base, half ellipsoid -------------------------------------
 h_es = sp.Symbol("h_{es}")
@@ -400,28 +303,16 @@ d.quote("ellipsoid-segment-2", "§4 ellipsoid segment",
         r"$$X = \frac{a - x}{4} \left\{ \frac{3 a^2 - 2 a x - x^2}{2 a^2 - a x - x^2} \right\} = "
         r"\frac{3 a^2 - 2 a x - x^2}{4 (2 a + x)}$$",
         reading=(X_es, (a - x) / 4 * (num_es / (2 * a ** 2 - a * x - x ** 2)), num_es / (4 * (2 * a + x))))
-sections_witness("ellipsoid-segment", "centroid of the ellipsoidal segment from its circular sections",
-                 ("ellipsoid-segment-1", "ellipsoid-segment-2"), area_es, a - x,
-                 ("a = 5, b = 3, x = 1", {a: 5, b: 3, x: 1}), ("a = 4, b = 1, x = 2", {a: 4, b: 1, x: 2}))
-
-ellipsoid_sections = round_sections(b ** 2 / a ** 2 * (a ** 2 - P ** 2))
-planes_witness("ellipsoid-segment-radii-sections", "sections of the ellipsoid of revolution",
-               ("ellipsoid-segment-radii",), ellipsoid_sections, (x, (a + x) / 2),
-               (SECTION[0] / pi, SECTION[1] / pi),
-               ("a = 5, b = 3, x = 1", {a: 5, b: 3, x: 1}), ("a = 4, b = 1, x = 2", {a: 4, b: 1, x: 2}))
 
 area_he = pi * b ** 2 / a ** 2 * (a ** 2 - u ** 2)
-*_, X_he = body("half-ellipsoid", "he", area_he, a, pi * b ** 2, 3 * pi * b ** 2 / 4, 0,
-                "circle of radius^2 = b^2/a^2 (a^2 - u^2), u from the centre")
+X_he = body("half-ellipsoid", "he", area_he, a, pi * b ** 2, 3 * pi * b ** 2 / 4, 0,
+            "circle of radius^2 = b^2/a^2 (a^2 - u^2), u from the centre")[-1]
 d.step("half-ellipsoid-from-segment", (X_he, sp.Subs(X_es, x, 0), 3 * a / 8), "substitution",
        uses=("half-ellipsoid-centroid", "ellipsoid-segment-reduced"),
        note="the segment with x = 0 is the half ellipsoid")
 d.quote("half-ellipsoid", "§4 half ellipsoid", r"$$X = \frac{3a}{8}, \text{ wie für die Halbkugel.}$$",
         reading=(X_he, 3 * a / 8, sp.Subs(X_hs, r, a)),
         note="'wie für die Halbkugel': the hemisphere of radius a has the same centroid height")
-sections_witness("half-ellipsoid", "centroid of the half ellipsoid of revolution from its circular sections",
-                 ("half-ellipsoid",), area_he, a,
-                 ("a = 5, b = 3", {a: 5, b: 3}), ("a = 2, b = 7/2", {a: 2, b: sp.Rational(7, 2)}))
 
 # ---- truncated ellipsoid of revolution --------------------------------------------------------------------
 area_te = pi * b ** 2 / a ** 2 * (a ** 2 - (x + u) ** 2)
@@ -464,19 +355,6 @@ d.quote("truncated-ellipsoid-1", "§4 truncated ellipsoid",
 d.quote("truncated-ellipsoid-2", "§4 truncated ellipsoid",
         r"$$X = \frac{x' - x}{4} \left\{ \frac{6a^2 - 3x'^2 - 2x'x - x^2}{3a^2 - x'^2 - x'x - x^2} \right\}.$$",
         reading=Eq(X_te, (xp - x) / 4 * (num_te / den_te)))
-sections_witness("truncated-ellipsoid", "centroid of the truncated ellipsoid from its circular sections",
-                 ("truncated-ellipsoid-1", "truncated-ellipsoid-2"), area_te, xp - x,
-                 ("a = 5, b = 2, x = 1, x' = 4", {a: 5, b: 2, x: 1, xp: 4}),
-                 ("a = 6, b = 3, x = 1/2, x' = 3", {a: 6, b: 3, x: sp.Rational(1, 2), xp: 3}))
-
-truncated_cases = (("a = 5, b = 2, x = 1, x' = 4", {a: 5, b: 2, x: 1, xp: 4}),
-                   ("a = 6, b = 3, x = 1/2, x' = 3", {a: 6, b: 3, x: sp.Rational(1, 2), xp: 3}))
-planes_witness("truncated-ellipsoid-radii-1-sections", "sections of the ellipsoid of revolution",
-               ("truncated-ellipsoid-radii-1",), ellipsoid_sections, (x, xp),
-               (SECTION[0] / pi, SECTION[1] / pi), *truncated_cases)
-planes_witness("truncated-ellipsoid-radii-2-sections", "sections of the ellipsoid of revolution",
-               ("truncated-ellipsoid-radii-2",), ellipsoid_sections, ((x + xp) / 2,),
-               SECTION[0] / pi, *truncated_cases)
 
 # ---- the elliptic body with isosceles triangular sections --------------------------------------------------
 # Base: the ellipse with semi-axes a, b; EF of length 2a at height h above the major axis.  The generator cb
@@ -564,25 +442,6 @@ d.quote("elliptic-body-paraboloid", "§4 elliptic body, triangular sections",
         r"Der Körper hat also die Eigenschaft, dass sein Schwerpunct mit dem eines mit ihm concentrischen "
         r"Paraboloids von gleicher Höhe zusammen fällt.",
         reading=(X_eb, X_pc))
-sections_witness("elliptic-body", "centroid of the elliptic body from its elliptic sections",
-                 ("elliptic-body",), area_eb, h,
-                 ("a = 5, b = 3, h = 4", {a: 5, b: 3, h: 4}),
-                 ("a = 2, b = 1, h = 7/2", {a: 2, b: 1, h: sp.Rational(7, 2)}))
-
-elliptic_cases = (("a = 5, b = 3, h = 4, m = 2, x = 1", {a: 5, b: 3, h: 4, m: 2, x: 1}),
-                  ("a = 2, b = 1, h = 7/2, m = 3, x = 3/2", {a: 2, b: 1, h: sp.Rational(7, 2), m: 3,
-                                                             x: sp.Rational(3, 2)}))
-# horizontal section at height P: chord 2 b/a sqrt(a^2 - xi^2) (1 - P/h) across the major axis, xi = a sin(eta)
-planes_witness("elliptic-body-ratio-sections", "sections of the elliptic body at the heights 0 and h/m",
-               ("elliptic-body-ratio",),
-               {"width": 2 * a * b * sp.cos(eta) ** 2 * (1 - P / h), "chord": (-pi / 2, pi / 2)},
-               (0, h / m), SECTION[0] / SECTION[1], *elliptic_cases)
-# the triangle perpendicular to the major axis at abscissa P: width 2 b/a sqrt(a^2 - P^2) (1 - eta/h) at height
-# eta; its area is y h
-planes_witness("elliptic-body-base-sections", "the triangular section at abscissa x",
-               ("elliptic-body-base",),
-               {"width": 2 * b / a * sp.sqrt(a ** 2 - P ** 2) * (1 - eta / h), "chord": (0, h)},
-               (x,), (SECTION[0] / h) ** 2, *elliptic_cases)
 
 # ---- triaxial ellipsoid: stump and half ----------------------------------------------------------------------
 # Semi-axes: a along the axis of the stump (nM), c (nR) and b (Sn) across it.  The section at abscissa xi from
@@ -662,14 +521,10 @@ d.quote("triaxial-stump-same-expression", "§4 triaxial ellipsoid stump",
 d.quote("triaxial-stump-2", "§4 triaxial ellipsoid stump",
         r"$$X = \frac{x' - x}{4} \left\{ \frac{6a^2 - 3x'^2 - 2x'x - x^2}{3a^2 - x'^2 - x'x - x^2} \right\}$$",
         reading=Eq(X_ts, (xp - x) / 4 * (num_ts / den_ts)))
-sections_witness("triaxial-stump", "centroid of the triaxial ellipsoid stump from its elliptic sections",
-                 ("triaxial-stump-1", "triaxial-stump-2"), area_ts, xp - x,
-                 ("a = 5, b = 3, c = 2, x = 1, x' = 4", {a: 5, b: 3, c: 2, x: 1, xp: 4}),
-                 ("a = 4, b = 1, c = 3, x = 1/2, x' = 4", {a: 4, b: 1, c: 3, x: sp.Rational(1, 2), xp: 4}))
 
 area_ht = pi * half_axes(u)[0] * half_axes(u)[1]
-*_, X_ht = body("half-triaxial", "ht", area_ht, a, b * c * pi, 3 * b * c * pi / 4, 0,
-                "ellipse with the half axes c sqrt(a^2 - u^2)/a and b sqrt(a^2 - u^2)/a, u from the centre")
+X_ht = body("half-triaxial", "ht", area_ht, a, b * c * pi, 3 * b * c * pi / 4, 0,
+            "ellipse with the half axes c sqrt(a^2 - u^2)/a and b sqrt(a^2 - u^2)/a, u from the centre")[-1]
 d.step("half-triaxial-from-stump", (X_ht, sp.Subs(X_ts, (x, xp), (0, a)), 3 * a / 8), "substitution",
        uses=("half-triaxial-centroid", "triaxial-stump-reduced"),
        note="the stump with x = 0, x' = a is the half triaxial ellipsoid")
@@ -682,95 +537,11 @@ d.quote("three-eighths", "§4 half triaxial ellipsoid",
         "Basis aus.",
         reading=(X_hs / r, X_he / a, X_ht / a, sp.Rational(3, 8)),
         note="centroid height over the height r (hemisphere) or a (half ellipsoids)")
-sections_witness("half-triaxial", "centroid of the half triaxial ellipsoid from its elliptic sections",
-                 ("half-triaxial",), area_ht, a,
-                 ("a = 5, b = 3, c = 2", {a: 5, b: 3, c: 2}), ("a = 3, b = 2, c = 1", {a: 3, b: 2, c: 1}))
-
-# ---- the section areas themselves, by quadrature of their chords (sections named by the text) ------------------
-# each section at distance P from the centre (or height P above the base) is measured across its chords; the
-# positions are those of the construction (poles, centre, the midpoint between base and pole)
-SPHERE_CASES = (("r = 3", {r: 3}), ("r = 7/2", {r: sp.Rational(7, 2)}))
-planes_witness("sphere-sections-areas", "sections of the sphere at both poles and at the centre",
-               ("sphere-sections",), round_sections(r ** 2 - P ** 2), (0, r, -r),   # a non-empty section first
-               (SECTION[1], SECTION[2], SECTION[0], 2 * r), *SPHERE_CASES)
-planes_witness("hemisphere-sections-areas", "sections of the sphere at the pole, the centre and half the radius",
-               ("hemisphere-sections",), round_sections(r ** 2 - P ** 2), (0, r, r / 2),
-               (SECTION[1], SECTION[0], SECTION[2]), *SPHERE_CASES)
-SEGMENT_CASES = (("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
-planes_witness("segment-1-D-area", "section of the sphere halfway between the base (distance m) and the pole",
-               ("segment-1-D",), round_sections(r ** 2 - P ** 2), ((r + m) / 2,), SECTION[0],
-               *SEGMENT_CASES)
-SEGMENT2_CASES = (("r = 5, x = 1, x' = 3", {r: 5, x: 1, xp: 3}),
-                  ("r = 9/2, x = 1/2, x' = 4", {r: sp.Rational(9, 2), x: sp.Rational(1, 2), xp: 4}))
-planes_witness("segment-2-radii-areas", "sections of the sphere at x, x' and halfway between",
-               ("segment-2-radii",), round_sections(r ** 2 - P ** 2), (x, xp, (x + xp) / 2),
-               (SECTION[0] / pi, SECTION[1] / pi, SECTION[2] / pi), *SEGMENT2_CASES)
-ELLIPSOID_SEGMENT_CASES = (("a = 5, b = 3, x = 1", {a: 5, b: 3, x: 1}), ("a = 4, b = 1, x = 2", {a: 4, b: 1, x: 2}))
-planes_witness("ellipsoid-segment-D-area", "section of the ellipsoid of revolution halfway between x and the vertex",
-               ("ellipsoid-segment-D",), ellipsoid_sections, ((a + x) / 2,), SECTION[0] / pi,
-               *ELLIPSOID_SEGMENT_CASES)
-# the elliptic body: the section at height P is bounded by the generators, chord 2 b/a sqrt(a^2 - xi^2) (1 - P/h)
-ELLIPTIC_BODY_CASES = (("a = 5, b = 3, h = 4", {a: 5, b: 3, h: 4}), ("a = 2, b = 1, h = 7/2", {a: 2, b: 1, h: sp.Rational(7, 2)}))
-elliptic_body_width = {"width": 2 * a * b * sp.cos(eta) ** 2 * (1 - P / h), "chord": (-pi / 2, pi / 2)}
-planes_witness("elliptic-body-sections-areas", "sections of the elliptic body at the heights 0, h/2 and h",
-               ("elliptic-body-sections",), elliptic_body_width, (0, h / 2, h), (SECTION[0], SECTION[1], SECTION[2]),
-               *ELLIPTIC_BODY_CASES)
-planes_witness("elliptic-body-D-axis-area", "the section at h/2 over pi a: its small half axis",
-               ("elliptic-body-D-axis",), elliptic_body_width, (h / 2,), SECTION[0] / (pi * a),
-               *ELLIPTIC_BODY_CASES)
-# the triaxial ellipsoid P^2/a^2 + t^2/c^2 + s^2/b^2 <= 1: at the abscissa P the chord in s over t = c sqrt(1 -
-# P^2/a^2) sin(eta) is 2 b sqrt(1 - P^2/a^2) cos(eta), times dt
-TRIAXIAL_CASES = (("a = 5, b = 3, c = 2, x = 1, x' = 4", {a: 5, b: 3, c: 2, x: 1, xp: 4}),
-                  ("a = 4, b = 1, c = 3, x = 1/2, x' = 4", {a: 4, b: 1, c: 3, x: sp.Rational(1, 2), xp: 4}))
-triaxial_width = {"width": 2 * b * c * (1 - P ** 2 / a ** 2) * sp.cos(eta) ** 2, "chord": (-pi / 2, pi / 2)}
-for name, at in (("G", x), ("D", (x + xp) / 2), ("g", xp)):
-    planes_witness(f"triaxial-stump-{name}-area", f"section of the triaxial ellipsoid at the abscissa of {name}",
-                   (f"triaxial-stump-{name}",), triaxial_width, (at,), SECTION[0], *TRIAXIAL_CASES)
-
-
-# the half axes of the section at an abscissa: the ordinates there of the principal ellipses NMR (half axes a, c)
-# and SMV (a, b), each a root of the ellipse's equation on [0, semi-axis]
-for name, at in (("G", x), ("D", (x + xp) / 2), ("g", xp)):
-    d.witness(Combined(f"triaxial-stump-axes-{name}-roots",
-                       f"half axes of the section at {name} by root-finding on the principal ellipses",
-                       (f"triaxial-stump-axes-{name}",),
-                       tuple(Case({q: sp.Rational(v) for q, v in params.items()}, label=label)
-                             for label, params in TRIAXIAL_CASES),
-                       parts=tuple(CurveRoot(f"{name}-ordinate-{semi}", "", (), (), equation=(at / a) ** 2
-                                             + (t / semi) ** 2 - 1, variable=t, bracket=(0, semi))
-                                   for semi in (c, b)),
-                       values=(PART[0] ** 2, PART[1] ** 2), methods=FIGURE_METHODS))
-planes_witness("pyramid-frustum-side-D-section", "the mid-section of trapezoid frusta by quadrature of its widths",
-               ("pyramid-frustum-side-D",), pyramid_sections, (h / 2,), sp.sqrt(SECTION[0] / k),
-               *pyramid_cases)
 d.quote("half-ellipsoid-from-segment", "§4 half ellipsoid",
         r"Setzt man hierin  $x = 0$ , so findet sich für den Abstand des Schwerpunktes des halben Ellipsoids",
         reading=(sp.Subs(X_es, x, 0), X_he), note="the ellipsoid segment from x = 0 to the vertex is the half ellipsoid")
 d.quote("half-triaxial-from-stump", "§4 half triaxial ellipsoid", r"Setzt man hierin  $x' = a$  und  $x = 0$",
         reading=(sp.Subs(X_ts, (x, xp), (0, a)), X_ht), note="the stump from the centre to the vertex")
-sections_witness("half-ellipsoid-as-segment", "centroid of the half ellipsoid from its circular sections",
-                 ("half-ellipsoid-from-segment",), area_he, a, ("a = 5, b = 3", {a: 5, b: 3}),
-                 ("a = 3, b = 2", {a: 3, b: 2}))
-sections_witness("half-triaxial-as-stump", "centroid of the half triaxial ellipsoid from its elliptic sections",
-                 ("half-triaxial-from-stump",), area_ht, a, ("a = 5, b = 3, c = 2", {a: 5, b: 3, c: 2}),
-                 ("a = 3, b = 2, c = 1", {a: 3, b: 2, c: 1}))
-planes_witness("cone-frustum-D-section", "the mid-section of the cone frustum across its chords", ("cone-frustum-D",),
-               round_sections((R + (r - R) * P / h) ** 2), (h / 2,), sp.sqrt(SECTION[0] / pi),
-               ("R = 3, r = 1, h = 4", {R: 3, r: 1, h: 4}), ("R = 5/2, r = 2, h = 3/2", {R: sp.Rational(5, 2), r: 2, h: sp.Rational(3, 2)}))
-sections_witness("elliptic-body-claims", "centroid of the elliptic body from its elliptic sections",
-                 ("elliptic-body-triangles", "elliptic-body-paraboloid"), area_eb, h,
-                 ("a = 5, b = 3, h = 4, p = 2", {a: 5, b: 3, h: 4, p: 2}),
-                 ("a = 2, b = 1, h = 7/2, p = 1/2", {a: 2, b: 1, h: sp.Rational(7, 2), p: sp.Rational(1, 2)}))
-
-
-HALF_CASES = tuple(Case({r: sp.Rational(rv), a: sp.Rational(av), b: sp.Rational(bv), c: sp.Rational(cv)},
-                        label=f"r = {rv}, a = {av}, b = {bv}, c = {cv}")
-                   for rv, av, bv, cv in (("2", "5", "3", "2"), ("5/3", "3", "2", "1")))
-fraction = sp.Symbol("w", positive=True)         # the height above G as a fraction of the body's height: u = w height
-for name, area_, height_ in (("hemisphere", area_hs, r), ("half-ellipsoid", area_he, a), ("half-triaxial", area_ht, a)):
-    d.witness(SectionIntegral(f"three-eighths-{name}", f"centroid of the {name} over its height, by quadrature",
-                              ("three-eighths",), HALF_CASES, area=area_.subs(u, height_ * fraction), z=fraction,
-                              bounds=(0, 1), quantity="centroid"))
 
 
 d.quote("ellipsoid-segment-factor", "§4 ellipsoid segment",
@@ -782,7 +553,3 @@ d.quote("triaxial-stump-factor", "§4 triaxial ellipsoid stump",
         reading=(X_ts, centroid((a ** 2 - x ** 2) * pi, (a ** 2 - xp ** 2) * pi, (a ** 2 - (x + xp) ** 2 / 4) * pi,
                                 xp - x)),
         note="the factor b c/a² cancels (π is left in the brackets, as in D = Q p. E p. π)")
-sections_witness("ellipsoid-segment-factor", "centroid of the ellipsoidal segment from its circular sections",
-                 ("ellipsoid-segment-factor",), area_es, a - x, *ELLIPSOID_SEGMENT_CASES)
-sections_witness("triaxial-stump-factor", "centroid of the triaxial ellipsoid stump from its elliptic sections",
-                 ("triaxial-stump-factor",), area_ts, xp - x, *TRIAXIAL_CASES)
