@@ -177,7 +177,13 @@ d.quote("quarter-triangles", "§1 tetrahedron lemma", r"und  $mnb$ ,  $Bnq$  die
                         "coordinates of the lemma). The capital B read as b by the scan (it is joined with n in "
                         "the same sentence); medium, since a case slip of the compositor cannot be excluded.",
                         corrected_reading=(sp.Matrix([_area_squared(XM, XN, XB), _area_squared(XB, XN, XQ)]),
-                                           sp.Matrix([_area_squared(XA, XM, XN)] * 2))),
+                                           sp.Matrix([_area_squared(XA, XM, XN)] * 2)),
+                        objection="The lower-case b may be right: b is a point of the mid-section abcd, and the lost"
+                                  " figure may show a triangle mnb of the area the text needs.",
+                        answer="b, the midpoint of BC, lies outside the plane ABE, so mnb is not a part of the "
+                               "quadrilateral mBqn that the sentence divides; its area differs from a quarter of ABE"
+                               " in the lemma's coordinates, whatever the figure showed. The capital B is joined "
+                               "with n in the same sentence."),
         note="the sentence proves that the triangle abc is a quarter of ABE: Amn and nqE are congruent to it, "
              "the two triangles between them have their area")
 d.quote("height-is-edge-distance", "§1 tetrahedron lemma",
@@ -209,7 +215,12 @@ d.quote("tetrahedra-list", "§1 prismatoid volume", r"nämlich ABOE, BCOG, DCOH,
                         "cannot be seen).",
                         corrected_reading=(sp.Matrix([_volume_squared(*t) for t in ("ABEO", "BCGO", "DCHO", "ADIO")]),
                                            sp.Matrix([(sp.Rational(2, 3) * h * _area(*(MID3[q] for q in par))) ** 2
-                                                      for par in ("aklb", "lmed", "mngf", "knhi")]))),
+                                                      for par in ("aklb", "lmed", "mngf", "knhi")])),
+                        objection="L may be a corner of G in the lost figure, so that ADOL names a tetrahedron the "
+                                  "figure shows.",
+                        answer="The text pairs the edges AD and OI (the shortest distance of the edges), and names "
+                               "knhi, with i the midpoint of AI, as the fourth tetrahedron's mid-section; a corner L"
+                               " would give another mid-section. No L joins AD anywhere else in the section."),
         note="the parallelograms' corners in their cyclic order (lmde of the text as l m e d)")
 d.quote("mid-section-g", "§1 prismatoid volume",
         r"dessen Inhalt, weil auf der halben Höhe der Pyramide  $ABCO$ ,  $= \frac{g}{4}$",
@@ -221,7 +232,12 @@ d.quote("mid-section-g", "§1 prismatoid volume",
                         "the area ABC/4, not g/4 (read in the plane coordinates of Fig. 3). A D dropped from "
                         "the name given to the same pyramid a few lines before (ABCDO); low, since the print may "
                         "have dropped it as well as the scan.",
-                        corrected_reading=(_area(*(MID3[q] for q in "klmn")), g3 / 4)),
+                        corrected_reading=(_area(*(MID3[q] for q in "klmn")), g3 / 4),
+                        objection="'Pyramide ABCO' may be the author's shorthand for the pyramid over the polygon "
+                                  "ABC... with apex O, naming only its first corners.",
+                        answer="A few lines before, the same pyramid is named ABCDO with all its corners; the "
+                               "shorthand would name a triangle's pyramid, whose mid-section is ABC/4, not g/4. "
+                               "Whether the print or the scan dropped the D cannot be told: low."),
         note="read with the printed pyramid: its mid-section is the triangle of the midpoints of OA, OB, OC")
 d.quote("mid-section-triangles", "§1 prismatoid volume",
         r"$mef$ ,  $ngh$ ,  $kia$ ,  $blo$ ,  $cld$  als  $G$  Dreiecke enthält",
@@ -236,7 +252,11 @@ d.quote("mid-section-triangles", "§1 prismatoid volume",
                         "areas in the plane coordinates of Fig. 3, for any O). A c read as o by the scan; "
                         "medium.",
                         corrected_reading=(sum(_tri(t) for t in ("mef", "ngh", "kia", "lbc", "lcd")),
-                                           _area(*(FIG3[q] for q in "EFGHI")) / 4)),
+                                           _area(*(FIG3[q] for q in "EFGHI")) / 4),
+                        objection="o may be a point of the lost figure, making blo a triangle the figure shows.",
+                        answer="The five triangles are the mid-sections of the pyramids over the faces of G, each "
+                               "made of the midpoints of its three edges from the apex; the midpoint of BF is c (the"
+                               " parallelograms aklb and lmde fix it), and no midpoint is called o."),
         note="the triangles' vertices are ordered as the base triangles O E F, O F G, ... (blc as l b c)")
 
 d.quote("mid-section-triangles-sum", "§1 prismatoid volume",
@@ -254,33 +274,52 @@ d.quote("parallelogram-sum", "§1 prismatoid volume",
         erratum=Erratum("transcription", "high", r"P = D - \frac{g}{4} - \frac{G}{4}",
                         "The sum P of the parallelograms is what remains of D after the polygon (g/4) and "
                         "the triangles (G/4). " + MINUS_AS_EQUALS,
-                        corrected_reading=(P, D - g / 4 - G / 4)))
+                        corrected_reading=(P, D - g / 4 - G / 4),
+                        objection="The '=' may be the print's own (a broken dash of the type), or an older notation "
+                                  "that writes a remainder inside braces with '='.",
+                        answer="No notation of the period writes a difference with '=', and §3 quotes this very term"
+                               " with the minus ('für deren Inhalt wir zusammen fanden h/3{2D - (G+g)/2}'), so the "
+                               "print had the minus; a long dash read as '=' is the scan's usual confusion, and it "
+                               "recurs at all five places of §1."))
 d.quote("tetrahedra-volume", "§1 prismatoid volume",
         r"$$\frac{h}{3} \times 2 \left\{ D = \frac{g}{4} + \frac{G}{4} \right\} \text{ oder}$$",
         unreadable="'=' inside the braces: the expression is not well formed",
         erratum=Erratum("transcription", "high",
                         r"\frac{h}{3} \times 2 \left\{ D - \frac{g}{4} - \frac{G}{4} \right\}",
                         "Volume of all tetrahedra by the lemma. " + MINUS_AS_EQUALS,
-                        corrected_reading=(V3, h / 3 * 2 * (D - g / 4 - G / 4))))
+                        corrected_reading=(V3, h / 3 * 2 * (D - g / 4 - G / 4)),
+                        objection="The '=' may be the print's own, or an older notation for a remainder.",
+                        answer="§3 quotes the same term with the minus, so the print had it; the same dash read as "
+                               "'=' at every place of §1 is the scan's systematic confusion, not five slips of a "
+                               "compositor."))
 d.quote("tetrahedra-volume-2", "§1 prismatoid volume",
         r"$$\frac{h}{3} \left\{ 2D = \frac{G+g}{2} \right\}.$$",
         unreadable="'=' inside the braces: the expression is not well formed",
         erratum=Erratum("transcription", "high", r"\frac{h}{3} \left\{ 2D - \frac{G+g}{2} \right\}",
-                        MINUS_AS_EQUALS, corrected_reading=(V3, h / 3 * (2 * D - (G + g) / 2))))
+                        MINUS_AS_EQUALS, corrected_reading=(V3, h / 3 * (2 * D - (G + g) / 2)),
+                        objection="The '=' may be the print's own, or an older notation for a remainder.",
+                        answer="§3 quotes this very expression, h/3{2D - (G+g)/2}, with the minus; the scan reads "
+                               "the long dash as '=' throughout §1."))
 d.quote("volume-sum", "§1 prismatoid volume",
         r"$$I = \frac{gh}{3} + \frac{Gh}{3} + \frac{h}{3} \left\{ 2D = \frac{G+g}{2} \right\}$$",
         unreadable="'=' inside the braces: the expression is not well formed",
         erratum=Erratum("transcription", "high",
                         r"I = \frac{gh}{3} + \frac{Gh}{3} + \frac{h}{3} \left\{ 2D - \frac{G+g}{2} \right\}",
                         MINUS_AS_EQUALS,
-                        corrected_reading=Eq(I, g * h / 3 + G * h / 3 + h / 3 * (2 * D - (G + g) / 2))))
+                        corrected_reading=Eq(I, g * h / 3 + G * h / 3 + h / 3 * (2 * D - (G + g) / 2)),
+                        objection="The '=' may be the print's own, or an older notation for a remainder.",
+                        answer="§3 quotes the term with the minus; the scan reads the long dash as '=' throughout "
+                               "§1."))
 d.quote("volume-collected", "§1 prismatoid volume",
         r"$$I = \frac{h}{3} \left\{ g + G = \frac{G}{2} + \frac{g}{2} + 2D \right\}$$",
         unreadable="'=' inside the braces: the expression is not well formed",
         erratum=Erratum("transcription", "high",
                         r"I = \frac{h}{3} \left\{ g + G - \frac{G}{2} - \frac{g}{2} + 2D \right\}",
                         MINUS_AS_EQUALS,
-                        corrected_reading=Eq(I, h / 3 * (g + G - G / 2 - g / 2 + 2 * D))))
+                        corrected_reading=Eq(I, h / 3 * (g + G - G / 2 - g / 2 + 2 * D)),
+                        objection="The '=' may be the print's own, or an older notation for a remainder.",
+                        answer="The result I = h/3 {(G+g)/2 + 2D} that follows needs the minus, and §3 quotes the "
+                               "term with it; the scan reads the long dash as '=' throughout §1."))
 d.quote("prismatoid-volume", "§1 prismatoid volume",
         r"$$I = \frac{h}{3} \left\{ \frac{G+g}{2} + 2D \right\}, \text{ welches die oben erwähnte}$$",
         reading=Eq(I, collected))

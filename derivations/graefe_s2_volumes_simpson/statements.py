@@ -178,36 +178,57 @@ CONSEQUENTIAL = ("Follows from the misprint of I' (factor 2m instead of 2m/3, se
 d.quote("slab-a-c", "§2 Simpson's rule", r"$$I' = 2m \left\{ \frac{a+c}{2} + 2b \right\}.$$",
         reading=Eq(I1, 2 * m * ((a + c) / 2 + 2 * b)),
         erratum=Erratum("misprint", "high", r"I' = \frac{2m}{3} \left\{ \frac{a+c}{2} + 2b \right\}",
-                        MISSING_THIRD, corrected_reading=Eq(I1, 2 * m / 3 * ((a + c) / 2 + 2 * b))))
+                        MISSING_THIRD, corrected_reading=Eq(I1, 2 * m / 3 * ((a + c) / 2 + 2 * b)),
+                        objection="Graefe may absorb the 1/3 into a unit of his own (m standing for a third of the "
+                                  "spacing), a convention under which 2m {...} is right.",
+                        answer="m is the spacing of the sections (each slab has the height 2m), and §4 writes the "
+                               "same slab v' = 2m/3 {...} with the same m; with m as defined the printed slab is "
+                               "three times the prismatoid formula's value."))
 d.quote("slab-c-e", "§2 Simpson's rule", r"$$I'' = 2m \left\{ \frac{c+e}{2} + 2d \right\}.$$",
         reading=Eq(I2, 2 * m * ((c + e) / 2 + 2 * dd)),
         erratum=Erratum("consequential", "high", r"I'' = \frac{2m}{3} \left\{ \frac{c+e}{2} + 2d \right\}",
                         "The same omission of the factor 1/3 as in I' ('Ebenso').",
-                        corrected_reading=Eq(I2, 2 * m / 3 * ((c + e) / 2 + 2 * dd))))
+                        corrected_reading=Eq(I2, 2 * m / 3 * ((c + e) / 2 + 2 * dd)),
+                        objection="As for I': a convention absorbing the 1/3.",
+                        answer="The same m as for I', whose value §4 writes with the 2m/3; 'Ebenso' repeats the "
+                               "omission."))
 d.quote("slab-e-g", "§2 Simpson's rule", r"$$I''' = 2m \left\{ \frac{e+g}{2} + 2f \right\}.$$",
         reading=Eq(I3, 2 * m * ((e + g) / 2 + 2 * f)),
         erratum=Erratum("consequential", "high", r"I''' = \frac{2m}{3} \left\{ \frac{e+g}{2} + 2f \right\}",
                         "The same omission of the factor 1/3 as in I'.",
-                        corrected_reading=Eq(I3, 2 * m / 3 * ((e + g) / 2 + 2 * f))))
+                        corrected_reading=Eq(I3, 2 * m / 3 * ((e + g) / 2 + 2 * f)),
+                        objection="As for I': a convention absorbing the 1/3.",
+                        answer="The same m as for I', whose value §4 writes with the 2m/3."))
 d.quote("sum-1", "§2 Simpson's rule",
         r"$$I = 2m \left\{ \frac{a+c}{2} + 2b + \frac{c+e}{2} + 2d + \frac{e+g}{2} + 2f \right\}$$",
         reading=Eq(I, 3 * simp_1),
         erratum=Erratum("consequential", "high",
                         r"I = \frac{2m}{3} \left\{ \frac{a+c}{2} + 2b + \frac{c+e}{2} + 2d + \frac{e+g}{2} + 2f \right\}",
-                        CONSEQUENTIAL, corrected_reading=Eq(I, simp_1)))
+                        CONSEQUENTIAL, corrected_reading=Eq(I, simp_1),
+                        objection="As for I': a convention absorbing the 1/3.",
+                        answer="The sum of the three slabs carries their factor; the algebra is right and the fault "
+                               "is that of I'."))
 d.quote("sum-2", "§2 Simpson's rule",
         r"$$I = 2m \left\{ \frac{a+c+4b+c+e+4d+e+g+4f}{2} \right\}$$",
         reading=Eq(I, 3 * simp_2),
         erratum=Erratum("consequential", "high",
                         r"I = \frac{2m}{3} \left\{ \frac{a+c+4b+c+e+4d+e+g+4f}{2} \right\}",
-                        CONSEQUENTIAL, corrected_reading=Eq(I, simp_2)))
+                        CONSEQUENTIAL, corrected_reading=Eq(I, simp_2),
+                        objection="As for I': a convention absorbing the 1/3.",
+                        answer="The sum of the three slabs carries their factor; the algebra is right and the fault "
+                               "is that of I'."))
 d.quote("simpson-rule", "§2 Simpson's rule", r"$$I = m \{ a + 4b + 2c + 4d + 2e + 4f + g \}.$$",
         reading=Eq(I, 3 * simp_3),
         erratum=Erratum("consequential", "high", r"I = \frac{m}{3} \{ a + 4b + 2c + 4d + 2e + 4f + g \}",
                         CONSEQUENTIAL + " With m/3 it is Simpson's rule, as the following sentence says; with "
                         "m it overstates every volume threefold (all sections equal to A: 6mA is the volume, "
                         "the print gives 18mA).",
-                        corrected_reading=Eq(I, simp_3)))
+                        corrected_reading=Eq(I, simp_3),
+                        objection="As for I': a convention absorbing the 1/3; then I = m{a + 4b + ... + g} would be "
+                                  "Simpson's rule in Graefe's unit.",
+                        answer="With m the spacing the printed rule overstates every volume threefold (equal "
+                               "sections A over the length 6m: 6mA, the print 18mA), and Simpson's rule carries the "
+                               "m/3."))
 
 # the claims in words
 Y = [sp.Symbol(f"y_{i}", positive=True) for i in range(7)]
@@ -217,7 +238,7 @@ d.quote("simpson-identical", "§2 Simpson's rule",
         r"eingeschlossen sind, identisch, mit dem Unterschiede, dass dort die Grössen a, b, c etc. die Ordinaten "
         r"der begränzenden Curve bedeuten, während sie hier die Areale der Theilungsebenen bezeichnen.",
         reading=(3 * simp_3, SIMPSON_AREAS),
-        erratum=Erratum("claim", "high",
+        erratum=Erratum("claim", "medium",
                         r"I = \frac{m}{3}\{a + 4b + 2c + 4d + 2e + 4f + g\} \text{ is identical with Simpson's rule; "
                         r"the printed } I = m\{\dots\} \text{ is three times it}",
                         "'Diese Formel' is the one printed just above, I = m {a + 4b + 2c + 4d + 2e + 4f + g}. "
@@ -231,7 +252,14 @@ d.quote("simpson-identical", "§2 Simpson's rule",
                         "'simpson-rule'; the claim fails only through that factor, so it is the author's "
                         "statement about his misprinted line, not a fault of the scan. High: the printed "
                         "factor m and Simpson's m/3 are both unambiguous.",
-                        corrected_reading=(I, simp_3, SIMPSON_AREAS)),
+                        corrected_reading=(I, simp_3, SIMPSON_AREAS),
+                        objection="'identisch' may mean identical in form (the weights 1, 4, 2, 4, ..., 4, 1 that "
+                                  "define Simpson's rule), not equal in value, the factor in front being a matter of"
+                                  " units.",
+                        answer="The weights are Simpson's, and the sentence is true of the formula derived with the "
+                               "factor 1/3; of the formula printed just above, which it calls 'Diese Formel', it is "
+                               "not: its value is three times Simpson's. The form-only reading is defensible, so the"
+                               " claim is lowered to medium."),
         note="Simpson's rule for the area under a curve with the ordinates y_0, …, y_6 at spacing m, "
              "m/3 (y_0 + 4y_1 + 2y_2 + … + y_6), with the ordinates replaced by the section areas, is the "
              "derived volume; the printed formula m {…} is three times it.")

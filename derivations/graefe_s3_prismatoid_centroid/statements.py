@@ -114,7 +114,12 @@ d.quote("CF", "§3 tetrahedron centroid lemma",
                         "F was constructed with cF = Cc/3, so CF = 2Cc/3; 'G' for 'C' is a typical confusion "
                         "of the scan (the reason given, that L divides ac as F divides Cc, needs Cc). With "
                         "Gc = Ac/3 the printed relation would tie CF to the other median.",
-                        corrected_reading=(length(F - PC), 2 * length(c - PC) / 3)))
+                        corrected_reading=(length(F - PC), 2 * length(c - PC) / 3),
+                        objection="G may be a point of the lemma (the tetrahedron's centroid, 'Schwerpunkt'), and Gc"
+                                  " a segment the lost figure shows.",
+                        answer="F was constructed with cF = Cc/3, so CF = 2Cc/3; the reason given (L divides ac as F"
+                               " divides Cc) needs Cc, while with Gc = Ac/3 the relation would tie CF to the other "
+                               "median. G elsewhere in Graefe is the base area, not a point of this lemma."))
 d.quote("oL", "§3 tetrahedron centroid lemma",
         r"$o L = \frac{2 a c}{12} = \frac{a c}{6}$",
         reading=(length(L_ - o_), *as_printed(lambda: (2 * length(c - a_) / 12, length(c - a_) / 6))))

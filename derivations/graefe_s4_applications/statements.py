@@ -99,7 +99,12 @@ d.quote("cone-frustum-1", "§4 cone frustum",
             "lost fraction bar under R^2 + r^2, as in the first line of the truncated ellipsoid; from the "
             "transcription alone a misprint of the 1866 print cannot be excluded, hence low confidence.",
             corrected_reading=Eq(X_cf, h * ((r ** 2 / 2 + (R + r) ** 2 / 4)
-                                               / ((R ** 2 + r ** 2) / 2 + (R + r) ** 2 / 2)))))
+                                               / ((R ** 2 + r ** 2) / 2 + (R + r) ** 2 / 2))),
+                        objection="The print itself may have lacked the half under R^2 + r^2, the fault being the "
+                                  "author's and not the scan's.",
+                        answer="The next printed line follows only from the corrected form, so the author had the "
+                               "half; whether the 1866 print or the scan lost the bar cannot be told from the "
+                               "transcription, hence low."))
 d.quote("cone-frustum-2", "§4 cone frustum",
         r"$$X = \frac{h}{2} \left\{ \frac{2r^2 + R^2 + 2Rr + r^2}{R^2 + r^2 + R^2 + 2Rr + r^2} \right\}, "
         r"\text{ also}$$",
@@ -233,7 +238,13 @@ d.quote("segment-2-2", "§4 spherical segment, two bases",
             "again carries (x' - x)/4 and is right, so the slip did not propagate: a fault of the printed "
             "line (the factor 4 anticipates the next line), not of the scan, which renders the other factors "
             "faithfully. The same value results if instead the denominator is halved.",
-            corrected_reading=Eq(X_s2, (xp - x) / 2 * frac_s2)))
+            corrected_reading=Eq(X_s2, (xp - x) / 2 * frac_s2),
+                        objection="The 4 may be the scan's reading of a 2, a fault of the transcription rather than "
+                                  "of the print.",
+                        answer="The scan renders every other factor of this display and of the next faithfully, and "
+                               "the next line's (x' - x)/4 is right with its halved denominator: the 4 anticipates "
+                               "that line, a compositor's or author's slip. The same value follows if the "
+                               "denominator is halved instead, so medium."))
 d.quote("segment-2-3", "§4 spherical segment, two bases",
         r"$$X = \frac{x' - x}{4} \left\{ \frac{6r^2 - 3x'^2 - 2x'x - x^2}{3r^2 - x'^2 - x'x - x^2} \right\}.$$",
         reading=Eq(X_s2, (xp - x) / 4 * (num_s2 / den_s2)))
@@ -351,7 +362,11 @@ d.quote("truncated-ellipsoid-1", "§4 truncated ellipsoid",
             "first line of the cone frustum; a misprint cannot be excluded from the transcription alone, "
             "hence low confidence.",
             corrected_reading=Eq(X_te, (xp - x) * (num_te_1 / ((a ** 2 - x ** 2 + a ** 2 - xp ** 2) / 2
-                                                                  + (4 * a ** 2 - (xp + x) ** 2) / 2)))))
+                                                                  + (4 * a ** 2 - (xp + x) ** 2) / 2))),
+                        objection="The print itself may have lacked the half, the fault being the author's.",
+                        answer="The spherical zone's line and the triaxial stump ('derselbe Ausdruck') print the "
+                               "half, and this body's final line is right; print or scan cannot be told apart, hence"
+                               " low."))
 d.quote("truncated-ellipsoid-2", "§4 truncated ellipsoid",
         r"$$X = \frac{x' - x}{4} \left\{ \frac{6a^2 - 3x'^2 - 2x'x - x^2}{3a^2 - x'^2 - x'x - x^2} \right\}.$$",
         reading=Eq(X_te, (xp - x) / 4 * (num_te / den_te)))
@@ -400,7 +415,12 @@ d.quote("elliptic-body-generator", "§4 elliptic body, triangular sections",
                         "names no line: a b read as b' next to the b' that follows; medium, since the print "
                         "cannot be seen. Checked: b, b', c collinear in the coordinates of the construction "
                         "(abscissa, ordinate, height).",
-                        corrected_reading=((gen_bp - gen_b).cross(gen_c - gen_b), sp.zeros(3, 1))))
+                        corrected_reading=((gen_bp - gen_b).cross(gen_c - gen_b), sp.zeros(3, 1)),
+                        objection="'b'b'c' may be a notation of the lost figure (a point b' twice, or a double prime"
+                                  " lost), not a slip.",
+                        answer="The sentence joins b with b' and extends the line to c; the similar triangles of the"
+                               " next line use b, b' and c on one line (the generator cb of the hypothesis). No "
+                               "point is named b'b'."))
 gen_a, gen_ap = sp.Matrix([x, 0, 0]), sp.Matrix([x, 0, h / m])     # a, a': the feet of the ordinates on GH's plane
 d.quote("elliptic-body-triangle", "§4 elliptic body, triangular sections", r"Nun ist im Dreieck  $ab'c$ ,",
         unreadable="a triangle a b' c has neither ordinate as a side (ab = y lies at the height 0, a'b' = y' at "
@@ -412,7 +432,12 @@ d.quote("elliptic-body-triangle", "§4 elliptic body, triangular sections", r"Nu
                         "by the preceding line): ab (h - h/m) = a'b' h, checked with the coordinates of the "
                         "construction. A stray prime on the a, like the doubled b' of 'b'b'c' one line before "
                         "(elliptic-body-generator): the scan's; low, since the print cannot be seen.",
-                        corrected_reading=((gen_b - gen_a).norm() * (h - h / m), (gen_bp - gen_ap).norm() * h)),
+                        corrected_reading=((gen_b - gen_a).norm() * (h - h / m), (gen_bp - gen_ap).norm() * h),
+                        objection="The triangle ab'c may be meant: the lost figure may draw it.",
+                        answer="The proportion that follows compares ab with a'b' as the heights of c above them, h "
+                               "and h - h/m, which is the similar-triangle relation of abc and a'b'c; in ab'c the "
+                               "leg ab and the parallel a'b' do not stand as the proportion needs. A stray prime, as"
+                               " in the line before; low, since the print cannot be seen."),
         note="a, a' are the feet of the ordinates ab, a'b' on the major axis and on GH")
 d.quote("elliptic-body-ratio", "§4 elliptic body, triangular sections",
         r"$$y : y' = h : h - \frac{h}{m} \text{ also}$$", reading=(y / yp, h / (h - h / m)))
@@ -494,7 +519,11 @@ d.quote("triaxial-stump-axes-D", "§4 triaxial ellipsoid stump",
                         "compositor's kind of slip; the scan cannot be excluded: medium.",
                         corrected_reading=(sp.Matrix(half_axes(ts_mid)).applyfunc(lambda e: e ** 2),
                                            sp.Matrix([c ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4),
-                                                      b ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4)]))),
+                                                      b ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4)])),
+                        objection="A may be another label of the same point as Q in the lost figure.",
+                        answer="The text names the half axes mA, pQ, oD and defines A as the end of mA at the "
+                               "abscissa x of the base AB; the middle section D = Qp.Ep.pi after the display uses "
+                               "Qp. (Ap)^2 as printed is the slant distance from A to p, not the value printed."),
         note="read with the printed label: A = (x, mA) and p = ((x + x')/2, 0) in the plane of the ellipse NMR")
 d.quote("triaxial-stump-axes-g", "§4 triaxial ellipsoid stump",
         r"(o D)^2 &= \frac{c^2}{a^2} \{ a^2 - x'^2 \}, (o F)^2 = \frac{b^2}{a^2} \{ a^2 - x'^2 \}.",
