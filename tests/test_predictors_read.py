@@ -60,12 +60,12 @@ def test_the_ngon_evaluators_are_the_printed_closed_forms():
 
 def test_hasab_and_metazentrum_predictors_read_their_conditions():
     import math
-    _, hasab = load("hasab")
+    hasab = load("hasab")[1].predictors
     # the printed condition rho^2 - rho + 1/6 > 0 (hasab, solution, stability): -1/12 at rho = 1/2, unstable
     assert hasab.CONDITION(Fraction(1, 2)) == -1 and hasab.CONDITION(Fraction(1, 10)) == 1
     # the remark with its radical restored (the erratum): (3l + sqrt(9l^2 - 6))/(6l) at l = 2
     assert abs(hasab.REMARK(2.0) - (6 + math.sqrt(30)) / 12) < 1e-15
-    _, meta = load("metazentrum")
+    meta = load("metazentrum")[1].predictors
     # e = b^2/(6c^2) - d/(2c)(1 - d/(2c)) as printed (L4): b = 1/2, c = 1, d = 1 gives 1/24 - 1/4 = -5/24
     assert meta.E_PRINTED(Fraction(1, 2), Fraction(1), Fraction(1)) == sp.Rational(-5, 24)
 

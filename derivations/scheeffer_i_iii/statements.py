@@ -1,39 +1,7 @@
-"""Scheeffer 1902, sections I-III: equilibrium, the righting moment of a
-body prismatic at the waterline, and Duhamel's criterion.
-
-I.  Body frame of the tilted body: ``v`` across the floating axis (towards
-the side that dips), ``u`` down the floating axis from the centroid S.  The
-new submerged part is the old one (volume V1, centroid S1 at u = e1) less
-the emerged wedge (V3, centroid S4) plus the immersed wedge (V3, centroid
-S3): the moment theorem gives (6); the rotation of the frame by phi gives (5)
-and with it (7).  World frame of the checks: X horizontal towards the dipping
-side, Y vertically down (Scheeffer's SL), so that m (the righting arm SA) is
-the X coordinate and n the Y coordinate of S2.
-
-II.  The wedges of a body prismatic near the waterline are sums of prismatic
-elements over the old waterplane: the element over df at distance x from the
-axis has height x tg phi.  The element integrals are done in general; the
-waterplane is then taken concretely as a trapezoid whose parallel sides P1,
-P2 (at s = 0 and s = Hh) run parallel to the rotation axis: P2 = P1 is a
-rectangle (the box), P2 -> 0 a triangle.  Its wedge volumes, moments and its
-moment of inertia T1 are integrated symbolically, the axis is shown to pass
-through the centroid of the waterplane (V3 = V4), and (10)-(13) follow.
-
-III.  The expansion of (12) in phi gives (16) and Duhamel's criterion (18);
-the curvature of V1 n (the energy of the system in units of the weight,
-Schülen's approach quoted in the preface) gives the same criterion.
-
-Witnesses: exact clipping of floating prisms (``symfloat.geometry.floating``):
-vertical prisms over trapezoids tilted about an axis parallel to the parallel
-sides, wedges cut out of the clipped body; horizontal boxes and an apex-down
-triangular prism (not prismatic at the waterline) for the small-angle limits.
-"""
-
+"""What Scheeffer's sections I-III say and how each formula is derived (see the package's docstring)."""
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum, Holds, Iff
-from symfloat.engine.floating_witness import LIMIT_METHODS, MEASURED, Body, FloatingWitness
-from symfloat.engine.witness import Case, Precision
 from symfloat.model.claim import as_printed
 
 
@@ -252,8 +220,9 @@ d.step("wedge-moments-3", (sp.Matrix([My3, Mx3]), sp.Matrix([tg ** 2 / 2 * J3, t
 d.step("wedge-moments-4", (sp.Matrix([My4, Mx4]), sp.Matrix([tg ** 2 / 2 * J4, tg * J4])), "integration",
        uses=("element-moment-y", "element-moment-x", "My4", "Mx4", "J4"))
 # the wedge centroids in the frame of the old waterline (O the axis), and their body coordinates
-for sym, val, nm in ((x3, Mx3 / V3, "x3"), (y3, My3 / V3, "y3"), (x4, Mx4 / V4, "x4"), (y4, My4 / V4, "y4")):
-    d.step(nm, Eq(sym, val), "definition", result=sym, note="wedge centroid: moment over volume")
+for centroid, ratio, label in ((x3, Mx3 / V3, "x3"), (y3, My3 / V3, "y3"), (x4, Mx4 / V4, "x4"),
+                               (y4, My4 / V4, "y4")):
+    d.step(label, Eq(centroid, ratio), "definition", result=centroid, note="wedge centroid: moment over volume")
 d.step("body-coordinates", Eq(v3, c0 + x3), "definition", result=v3,
        note="O, the trace of the axis, lies at v = c0 on the old waterline, which lies at the height h0 above S; "
             "S3 lies beyond O by x3 (OF) and above the old waterline by y3 (S3F)")
@@ -387,13 +356,13 @@ d.step("series-m2", (sp.Subs(sp.Derivative(m, phi, 2), phi, 0), 0), "series", us
 d.step("series-m3", (sp.Subs(sp.Derivative(m, phi, 3), phi, 0) / 6, T1 / (3 * V1) + e1 / 6), "series",
        uses=("righting-moment-12",), note="m = phi (T1/V1 - e1) + phi^3 (T1/(3 V1) + e1/6) + O(phi^5)")
 cx3, cy3, cx4, cy4 = sp.symbols("c_{x3} c_{y3} c_{x4} c_{y4}", real=True)
-for sym, expr, val, nm, note in (
+for coefficient, derivative, leading, series_name, note in (
         (cx3, sp.Subs(sp.Derivative(Mx3, phi), phi, 0), J3, "series-x3", "tg phi = phi + O(phi^3)"),
         (cy3, sp.Subs(sp.Derivative(My3, phi, 2), phi, 0) / 2, J3 / 2, "series-y3", "tg^2 phi = phi^2 + O(phi^4)"),
         (cx4, sp.Subs(sp.Derivative(Mx4, phi), phi, 0), J4, "series-x4", ""),
         (cy4, sp.Subs(sp.Derivative(My4, phi, 2), phi, 0) / 2, J4 / 2, "series-y4", "")):
-    d.step(nm, (sym, expr, val), "series", uses=("wedge-moments-3", "wedge-moments-4"), result=sym,
-           note="leading Taylor coefficient in phi (V x of first, V y of second order); " + note)
+    d.step(series_name, (coefficient, derivative, leading), "series", uses=("wedge-moments-3", "wedge-moments-4"),
+           result=coefficient, note="leading Taylor coefficient in phi (V x of first, V y of second order); " + note)
 d.step("energy-curvature", (sp.Subs(sp.Derivative(V1 * n, phi, 2), phi, 0), T1 - V1 * e1, V1 * m1), "series",
        uses=("moment-13", "series-16"),
        note="V1 n is the height of S above S2 times the weight: the potential energy of body and displaced "
@@ -431,89 +400,3 @@ d.quote("duhamel-statement", "III, Duhamel",
         "Geraden, dividiert durch das eingetauchte Volumen",
         reading=(sp.sign(m1), sp.sign(T1 / V1 - e1)),
         note="for the axis of the smallest moment of inertia T1 (the critical one): stable iff e1 < T1/V1")
-
-
-# ---- witnesses: the clipped body, named (symfloat.engine.floating_witness) --------------------------------
-
-M = MEASURED
-EXACT = (Precision(15, 1e-10), Precision(50, 1e-40))
-TRAPEZOID = Body.prism(((0, -P1 / 2), (Hh, -P2 / 2), (Hh, P2 / 2), (0, P1 / 2)), 4)
-
-
-def _trap_case(p1, p2, hh, q):
-    """The vertical prism (axis z, length 4) over the trapezoid with the parallel sides P1 (x = 0) and P2
-    (x = H), half immersed (V1 = 2 * area, e1 = 1), tilted with tg phi = q, the side x = H dipping."""
-    params = {P1: p1, P2: p2, Hh: hh, phi: sp.atan(sp.Rational(q)), V1: 2 * sp.Rational(hh) * (p1 + p2) / 2,
-              e1: 1, c0: 0, h0: 0}
-    return Case(params, label=f"vertical prism over the trapezoid P1={p1}, P2={p2}, H={hh}; tg phi = {q}")
-
-
-TRAP = (_trap_case(3, 3, 2, sp.Rational(1, 5)), _trap_case(2, 1, 2, sp.Rational(1, 2)),
-        _trap_case(2, sp.Rational(1, 2), sp.Rational(3, 2), sp.Rational(3, 4)))
-
-
-def _w(name, description, targets, quantity):
-    """The trapezoid prism tilted from upright (both water planes clipped from the body, the axis where they
-    meet found, not assumed at the centroid)."""
-    d.witness(FloatingWitness(name, description, targets, TRAP, body=TRAPEZOID, up=(-sp.tan(phi), 0, 1),
-                              reference=(0, 0, 1), density=sp.Rational(1, 2), quantity=quantity, methods=EXACT))
-
-
-_w("wedges-e-k", "V3 e = V3 x3 + V4 x4 and V3 k = V3 y3 + V4 y4 of the clipped wedges",
-   ("moments-10", "moments-sum", "moments-11"),
-   (M["immersed wedge moment, horizontal"] + M["emerged wedge moment, horizontal"],
-    M["immersed wedge moment, vertical"] + M["emerged wedge moment, vertical"]))
-_w("wedge-3", "static moments of the clipped immersed wedge", ("moments-10a",),
-   ("immersed wedge moment, vertical", "immersed wedge moment, horizontal"))
-_w("wedge-4", "static moments of the clipped emerged wedge", ("moments-10b",),
-   ("emerged wedge moment, vertical", "emerged wedge moment, horizontal"))
-_w("wedge-volume-3", "volume of the clipped immersed wedge", ("volume-V3",), "immersed wedge volume")
-_w("wedge-volume-4", "volume of the clipped emerged wedge", ("volume-V4",), "emerged wedge volume")
-_w("wedge-volume-over-tg", "clipped wedge volumes over tg phi (both wedges)", ("moments-equal",),
-   M["emerged wedge volume"] / sp.tan(phi))
-_w("axis-position", "where the tilted water plane meets the old one (clipping, draught)", ("axis-centroid",),
-   "axis position")
-_w("buoyancy-body-frame", "centre of buoyancy of the clipped tilted body in the body frame, times V1",
-   ("moments-raw", "moments-6"), (M["immersed volume"] * M["B - G, x"], -M["immersed volume"] * M["B - G, z"]))
-_w("buoyancy-world-frame", "centre of buoyancy of the clipped tilted body in the world frame", ("rotation-5",),
-   ("righting arm", "G above B"))
-_w("righting-moment", "V1 m, V1 n of the clipped tilted body", ("moments-7",),
-   (M["immersed volume"] * M["righting arm"], M["immersed volume"] * M["G above B"]))
-_w("righting-moment-m", "V1 m of the clipped tilted body", ("moment-12",), M["immersed volume"] * M["righting arm"])
-_w("righting-moment-n", "V1 n (weight times height of S above S2) of the clipped tilted body", ("moment-13",),
-   M["immersed volume"] * M["G above B"])
-
-
-# -- small-angle limits: horizontal prisms heeled by psi about their axis z (the side -x dips) --------------
-psi, s_body = sp.symbols("psi s_body", positive=True)
-
-
-def _box(W, H):
-    return Body.prism(((-W / 2, -H / 2), (W / 2, -H / 2), (W / 2, H / 2), (-W / 2, H / 2)), 3)
-
-
-# the triangle (0,0), (1,2), (-1,2), apex down, floating at draught dd: s = (dd/2)^2, waterline width dd
-APEX_DOWN = Body.prism(((0, 0), (1, 2), (-1, 2)), 2)
-SMALL = (
-    Case({P1: 3, P2: 3, Hh: 2, V1: 6, e1: sp.Rational(1, 2), s_body: sp.Rational(1, 2)}, {"body": _box(2, 2)},
-         "box 2 x 2 x 3, half immersed (prismatic at the waterline)"),
-    Case({P1: 2, P2: 2, Hh: 1, V1: 1, e1: sp.Rational(2, 3), s_body: sp.Rational(1, 4)}, {"body": APEX_DOWN},
-         "triangular prism apex down, draught 1 (not prismatic at the waterline; unstable)"),
-    Case({P1: 2, P2: 2, Hh: sp.Rational(9, 5), V1: sp.Rational(81, 25), e1: sp.Rational(2, 15),
-          s_body: sp.Rational(81, 100)}, {"body": APEX_DOWN},
-         "triangular prism apex down, draught 9/5 (not prismatic at the waterline; stable)"),
-)
-
-
-def _limit(name, description, targets, quantity):
-    d.witness(FloatingWitness(name, description, targets, SMALL, body=None, up=(sp.sin(psi), sp.cos(psi), 0),
-                              reference=(0, 1, 0), density=s_body, quantity=quantity, limit=(psi, 1),
-                              methods=LIMIT_METHODS))
-
-
-_limit("righting-arm-limit", "lim m(psi)/psi from the clipped heeled body (extrapolated)",
-       ("duhamel-16", "general-body"), "righting arm")
-_limit("wedge-limits", "leading terms of the clipped immersed wedge's moments (extrapolated)", ("series-3",),
-       (M["immersed wedge moment, horizontal"], M["immersed wedge moment, vertical"] / psi))
-_limit("wedge-limits-4", "leading terms of the clipped emerged wedge's moments (extrapolated)", ("series-4",),
-       (M["emerged wedge moment, horizontal"], M["emerged wedge moment, vertical"] / psi))
