@@ -73,7 +73,7 @@ def test_hasab_and_metazentrum_predictors_read_their_conditions():
 def test_scheeffer_x_locates_the_roots_of_171_as_read():
     import mpmath
     import numpy as np
-    _, x = load("scheeffer-x")
+    x = load("scheeffer-x")[1].predictors
     # (172) as read: (4 + sqrt 2)/7 = 0.77345908...
     assert abs(x.S172 - 0.7734590803390136) < 1e-15
     # (171): 2T {z^2 + (1-s)^2} - z^3 (1-x) - z^2 (1-s), 2T = 1/6 + (1-x)^2 - x^4/12, z = 1 - x + x^3/6; at x = 1,
