@@ -113,7 +113,8 @@ def test_displacement_centroid_of_uniform_sections_is_the_middle(graefe_reports)
     import sympy as sp
     from symfloat.model.claim import members
     from symfloat.registry import load
-    d, module = load("graefe-s4-ship-centroid")
+    d, package = load("graefe-s4-ship-centroid")
+    module = package.statements
     p = next(p for p in d.printed if p.name == "centroid")
     corrected, printed = members(p.erratum.corrected_reading)[-1], members(p.reading)[-1]
     areas = {s: 1 for s in corrected.free_symbols if s != module.m}
@@ -141,7 +142,8 @@ def test_the_symmetry_plane_of_the_hull_is_BBprime_VprimeV():
     import sympy as sp
     from symfloat.engine.check import check_derivation
     from symfloat.registry import load
-    d, module = load("graefe-s4-ship-centroid")
+    d, package = load("graefe-s4-ship-centroid")
+    module = package.statements
     pts = {module.mu: 3, module.L_: 7, module.wA: 2, module.wU: 1, module.dB: 2, module.dV: 1}
     p = next(q for q in d.printed if q.name == "symmetry-plane")
     lhs, rhs = p.erratum.corrected_reading

@@ -1,27 +1,11 @@
-"""Graefe 1866, end of §4: the centroid of a ship's displacement.
-
-The immersed body is cut by equidistant planes (spacing ``m``) with areas
-``a, b, c, d, e, f, g``; each pair of slabs between ``a`` and ``c``, ``c``
-and ``e``, ``e`` and ``g`` is treated as a prismatoid of height ``2m``.  The
-centroid of each from §3, ``X = h (g/2 + D) / ((G + g)/2 + 2 D)``, and its
-volume from §1 give the moments about the plane ``ABC``; their sum is
-
-    ``X V = m²/3 (a·0 + 4b·1 + 2c·2 + 4d·3 + 2e·4 + 4f·5 + g·6)``
-
-and with ``V = m/3 (a + 4b + 2c + 4d + 2e + 4f + g)``
-
-    ``x = m (a·0 + 4b·1 + … + g·6) / (a + 4b + 2c + 4d + 2e + 4f + g)``.
-
-The print has ``x = m/3 (…)/(…)``: it divides by the ``V = m (…)`` printed
-in §2 (where the factor 1/3 is lost), although §4 itself uses the correct
-slab volumes ``v' = 2m/3 (…)``.
-"""
+"""What the end of Graefe's §4 says and how each formula is derived (see the package's docstring)."""
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
-from symfloat.engine.witness import Case, SectionIntegral
 from symfloat.model.claim import as_printed
-from symfloat.registry import load
+
+from ..graefe_s1_prismatoid_volume.statements import DERIVATION as PRISMATOID_VOLUME
+from ..graefe_s3_prismatoid_centroid.statements import DERIVATION as PRISMATOID_CENTROID
 
 G, g, D, h, z = sp.symbols("G g D h z", positive=True)
 a, b, c, dd, e, f, m = sp.symbols("a b c d e f m", positive=True)
@@ -36,8 +20,8 @@ M, V, XS = sp.symbols("M V x", positive=True)                 # the whole body: 
 
 # the prismatoid's centroid X = h (g/2 + D) / ((G + g)/2 + 2D) above G (§3) and volume V = h/3 ((G + g)/2 + 2D) (§1)
 # at given (G, g, D, h): the readings of their prints
-centroid = load("graefe-s3-prismatoid-centroid")[0].evaluator("centroid", (G, g, D, h), 1)
-volume = load("graefe-s1-prismatoid-volume")[0].evaluator("prismatoid-volume", (G, g, D, h), 1)
+centroid = PRISMATOID_CENTROID.evaluator("centroid", (G, g, D, h), 1)
+volume = PRISMATOID_VOLUME.evaluator("prismatoid-volume", (G, g, D, h), 1)
 
 
 DERIVATION = d = Derivation(
@@ -235,51 +219,3 @@ d.quote("centroid", "§4 ship displacement centroid",
                         "exactly the printed m/3 {...}. Check: with all sections equal the body is a prism of "
                         "length 6m, its centroid lies at 3m; the print gives m.",
                         corrected_reading=Eq(XS, m * (NUM / DEN))))
-
-# ---- witnesses ----------------------------------------------------------------------------------------
-# Bodies whose section area is a quadratic polynomial of the distance from ABC: every slab is then
-# exactly a prismatoid in the sense of §3 (its z·A(z) is cubic), and so is the whole body.
-A2 = k[0] + k[1] * z + k[2] * z ** 2
-SEC = (a, b, c, dd, e, f, g)
-QUADRATICS = ((sp.Rational(2), sp.Rational(1, 2), sp.Rational(-1, 9), sp.Rational(1, 2)),
-              (sp.Rational(1, 3), sp.Rational(3), sp.Rational(-2, 5), sp.Rational(1, 3)),
-              (sp.Rational(5), sp.Rational(-1, 2), sp.Rational(1, 7), sp.Rational(3, 4)))
-
-
-def _case(coeffs):
-    *ks, mv = coeffs
-    values = dict(zip(k, ks))
-    area = A2.xreplace(values)
-    assert all(area.subs(z, mv * j / 10) > 0 for j in range(61)), "section areas must be positive"
-    sections = {s: area.subs(z, i * mv) for i, s in enumerate(SEC)}
-    return Case({**values, m: mv, **sections}, label=f"A(z) = {area}, m = {mv}")
-
-
-CASES = tuple(_case(q) for q in QUADRATICS)
-PRISMATOID_CASES = tuple(Case({**c_.params, G: c_.params[a], D: c_.params[b], g: c_.params[c], h: 2 * c_.params[m]},
-                              label=c_.label + ", the slab a to c") for c_ in CASES)
-
-d.witness(SectionIntegral("prismatoid-centroid", "centroid of bodies with quadratic A(z) above G",
-                          ("prismatoid-centroid",), PRISMATOID_CASES, area=A2, z=z, bounds=(0, h),
-                          quantity="centroid"))
-d.witness(SectionIntegral("prismatoid-volume", "volume of bodies with quadratic A(z)",
-                          ("prismatoid-volume",), PRISMATOID_CASES, area=A2, z=z, bounds=(0, h)))
-for n, (lo, tc, tv, tm) in enumerate(((0, ("x1",), ("v1",), ("m1",)),
-                                      (2, ("x2-a", "x2-b"), ("v2",), ("m2",)),
-                                      (4, ("x3-a", "x3-b"), ("v3",), ("m3",))), 1):
-    bounds = (lo * m, (lo + 2) * m)
-    d.witness(SectionIntegral(f"slab-{n}-centroid", f"centroid of slab {n} from the plane ABC",
-                              tc, CASES, area=A2, z=z, bounds=bounds, quantity="centroid", origin=0))
-    d.witness(SectionIntegral(f"slab-{n}-volume", f"volume of slab {n}", tv, CASES, area=A2, z=z, bounds=bounds))
-    d.witness(SectionIntegral(f"slab-{n}-moment", f"moment of slab {n} about the plane ABC",
-                              tm, CASES, area=A2, z=z, bounds=bounds, quantity="moment", origin=0))
-d.witness(SectionIntegral("slab-2-local-centroid", "centroid of slab 2 from the plane c",
-                          ("substitution", "x2-local"), CASES, area=A2, z=z, bounds=(2 * m, 4 * m),
-                          quantity="centroid"))
-d.witness(SectionIntegral("slab-3-local-centroid", "centroid of slab 3 from the plane e",
-                          ("x3-local",), CASES, area=A2, z=z, bounds=(4 * m, 6 * m), quantity="centroid"))
-d.witness(SectionIntegral("body-moment", "moment of the whole body about the plane ABC",
-                          ("moment-theorem", "moment-1", "moment-2", "moment-3"), CASES, area=A2, z=z,
-                          bounds=(0, 6 * m), quantity="moment", origin=0))
-d.witness(SectionIntegral("body-centroid", "centroid of the whole body from the plane ABC",
-                          ("centroid",), CASES, area=A2, z=z, bounds=(0, 6 * m), quantity="centroid", origin=0))
