@@ -191,13 +191,11 @@ Mx3i, Mx4i = wedge(x, a)
 My3i, My4i = wedge(eta, a)
 
 
-def closed(expr):
-    """The closed form of a wedge or waterplane integral (evaluated here; the step checks it)."""
-    return sp.factor(sp.simplify(expr.doit().subs(a, sbar)))
-
-
-K3c, K4c = closed(sp.Integral((s - a) * W, (s, a, Hh))), closed(sp.Integral((a - s) * W, (s, 0, a)))
-J3c, J4c = closed(sp.Integral((s - a) ** 2 * W, (s, a, Hh))), closed(sp.Integral((a - s) ** 2 * W, (s, 0, a)))
+# the closed forms of the wedges' integrals over the two parts of the waterplane, with the axis at its centroid
+# (the steps V3, V4, Mx3 ... J4 below integrate and prove them)
+K3c = K4c = Hh ** 2 * (P1 + 2 * P2) ** 2 * (2 * P1 + P2) ** 2 / (81 * (P1 + P2) ** 3)
+J3c = Hh ** 3 * (2 * P1 + P2) ** 3 * (2 * P1 ** 2 + 11 * P1 * P2 + 11 * P2 ** 2) / (972 * (P1 + P2) ** 4)
+J4c = Hh ** 3 * (P1 + 2 * P2) ** 3 * (11 * P1 ** 2 + 11 * P1 * P2 + 2 * P2 ** 2) / (972 * (P1 + P2) ** 4)
 T1c = Hh ** 3 * (P1 ** 2 + 4 * P1 * P2 + P2 ** 2) / (36 * (P1 + P2))
 d.step("V3", (V3, V3i, tg * K3c), "integration", result=V3, uses=("element-volume", "axis"),
        note="immersed wedge: the sum of the elements over part 3 of the waterplane")
