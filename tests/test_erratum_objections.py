@@ -6,7 +6,7 @@ import pytest
 
 from symfloat import registry
 
-DEFENDED = ("metazentrum",)       # sources whose every erratum has been held against its objection
+DEFENDED = ("metazentrum", "hasab", "graefe")   # sources whose every erratum has been held against its objection
 
 
 @pytest.mark.parametrize("source", DEFENDED)

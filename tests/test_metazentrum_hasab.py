@@ -51,7 +51,7 @@ def test_metazentrum_checks_clean(meta_report):
         ("F_b=F_g", "misprint", "low"),                  # line 519: V_w, M_w, defined nowhere, for V_b, M_b
         # third pass (lines 155 and 187):
         ("half-length", "misprint", "medium"),           # "Mittlere Länge" for a, half the length 2a
-        ("moving-centroid", "claim", "medium"),          # the body's centroid named for the displaced water's
+        ("moving-centroid", "claim", "low"),             # the body's centroid named for the displaced water's
     }
     assert all(f.verdict == "verified" for f in meta_report.formulas if not f.erratum)
 
@@ -88,7 +88,7 @@ def test_hasab_checks_clean(hasab_report):
         ("E0-water", "transcription", "medium"),   # l g rho/2 for l g rho^2/2 (the total is right)
         ("E2-water", "misprint", "medium"),        # the factor l g dropped in the last member
         ("ranges", "transcription", "medium"),     # "< rho" lost in the second range
-        ("remark", "transcription", "medium"),     # radical over 9l^2 - 6 lost; the upright prism
+        ("remark", "transcription", "low"),        # radical over 9l^2 - 6 and "< rho" lost (two changes); upright prism
         ("remark-position", "transcription", "medium"),  # transcription 004 line 69: "1 hosszúságú" for l
     }
     assert all(f.verdict == "verified" for f in hasab_report.formulas if not f.erratum)

@@ -130,7 +130,14 @@ d.quote("symmetry-plane", "§4 ship displacement centroid",
                         corrected_reading=(sp.Matrix([*mirrored(B_, (A_ + C_) / 2, (U_ + W_) / 2, A_),
                                                       *mirrored(B_, (A_ + C_) / 2, (U_ + W_) / 2, U_),
                                                       *mirrored(B_, (A_ + C_) / 2, (U_ + W_) / 2, V_)]),
-                                           sp.Matrix([*C_, *W_, *V_]))),
+                                           sp.Matrix([*C_, *W_, *V_])),
+                        objection="V' may be a point of the lost figure (the midpoint of UW is V', and the plane may"
+                                  " be named by a second primed point).",
+                        answer="The plane is named by four of its points; the letters pair the two end sections (B "
+                               "with B', V with V'), and B B' V' V is the plane through the end sections' points of "
+                               "symmetry and the midpoints of AC and UW. A second V' names the same point twice and "
+                               "leaves three points. A stray prime, as in 'b'b'c' (§4, elliptic body): low, since "
+                               "the print cannot be seen."),
         note="the base AUWC horizontal, the end sections vertical across it; the body's centroid then lies in "
              "the plane, and only its distances from ABC and from the base are sought")
 d.quote("prismatoid-centroid", "§4 ship displacement centroid",
@@ -158,7 +165,11 @@ d.quote("substitution", "§4 ship displacement centroid",
                         "2d)}, is x' with a, b, c replaced by c, d, e, not by e, d, e (which would give "
                         "2m{(e/2 + d)/(e + 2d)}). c and e are easily confused in the scan of this print; whether "
                         "the print itself had the slip cannot be told from the transcription.",
-                        corrected_reading=(x2l, x1_expr.xreplace({a: c, b: dd, c: e}))))
+                        corrected_reading=(x2l, x1_expr.xreplace({a: c, b: dd, c: e})),
+                        objection="'e, d, e' may be the print's own slip, the author's, not the scan's.",
+                        answer="The next display is x' with a, b, c replaced by c, d, e, so the author had the right"
+                               " letters when he computed; c and e are among the letters the scan of this print "
+                               "confuses. Print or scan cannot be told apart: medium."))
 d.quote("x2-local", "§4 ship displacement centroid",
         r"$$2m \left\{ \frac{\frac{e}{2} + d}{\frac{c+e}{2} + 2d} \right\}$$",
         reading=(x2l, 2 * m * ((e / 2 + dd) / ((c + e) / 2 + 2 * dd))))
@@ -218,4 +229,9 @@ d.quote("centroid", "§4 ship displacement centroid",
                         "Simpson's rule is lost (graefe-s2-volumes-simpson/simpson-rule): XV / (m {...}) is "
                         "exactly the printed m/3 {...}. Check: with all sections equal the body is a prism of "
                         "length 6m, its centroid lies at 3m; the print gives m.",
-                        corrected_reading=Eq(XS, m * (NUM / DEN))))
+                        corrected_reading=Eq(XS, m * (NUM / DEN)),
+                        objection="The printed x = m/3 {...} may be right in the author's own unit, if the factor "
+                                  "1/3 lost in §2 is a convention carried consistently.",
+                        answer="With all sections equal the body is a prism of length 6m, whose centroid lies at 3m "
+                               "from the first section; the print gives m. Whatever the unit, the quotient of the "
+                               "moment by the volume must give 3m there, and it does only with the factor m."))
