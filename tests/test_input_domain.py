@@ -257,6 +257,18 @@ def test_inside_the_domain_the_index_check_closes_long(case):
     _in_domain_property(case)
 
 
+def test_a_polygon_whose_vertices_round_to_one_float_is_refused_or_answered():
+    # symfloat issue 32: both were ZeroDivisionError in _polygon_extent (float edges of length 0)
+    with pytest.raises(SceneError, match="measures 0 across"):
+        make_scene("section", "1/2", polygon="0,0 1e-400,0 0,1e-400")
+    near = make_scene("section", "1/2", polygon=f"0,0 1,0 1,1 0.{'9' * 59},1.{'0' * 58}1 0,1")
+    assert Fraction(near.polygon[3][1]) - 1 == Fraction(1, 10**59)
+    width, diameter = thinness(near)
+    # the unit square with a bump of 1e-59: width 1 (between y = 0 and the top, within 1e-59), diameter
+    # the diagonal from (0, 0) to (1 - 1e-59, 1 + 1e-59), sqrt(2) to double precision
+    assert width == pytest.approx(1, abs=1e-15) and diameter == pytest.approx(2 ** 0.5, abs=1e-15)
+
+
 # ------------------------------------------------------------------ the command line, every field
 
 class _Work(Exception):
