@@ -182,4 +182,6 @@ def test_an_atlas_too_large_or_with_too_many_workers_is_refused_before_any_work(
     assert "--workers must lie between 0 and 64, got 1024" in capsys.readouterr().err
     assert cli.main([*grid[:5], "/proc/at", "--quiet", "--ba", "2", "--ca", "3"]) == 2
     assert "cannot write into /proc/at" in capsys.readouterr().err
+    assert cli.main([*grid[:5], str(tmp_path / ("a" * 300)), "--quiet", "--ba", "2", "--ca", "3"]) == 2
+    assert "File name too long" in capsys.readouterr().err                  # not OSError 36
     assert not (tmp_path / "a").exists()
