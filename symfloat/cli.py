@@ -15,7 +15,8 @@
 
 Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET`` set to anything but ``0``) silences
 it.  The default outputs (``docs/``, ``notebooks/``) are those of the project checkout, wherever
-the command runs; a path given with ``--output`` or ``--plot`` is taken as given.  A selection
+the command runs; a path given with ``--output`` or ``--plot`` is taken as given, and checked
+before any work (a file's folder must exist; :mod:`symfloat.files`).  A selection
 never overwrites the record of everything (``docs/errata.md``, ``docs/errata.json``,
 ``docs/verification.json``): ``errata SELECTOR`` prints its report, or writes it to ``--output``.
 
@@ -37,18 +38,21 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .engine.cache import ReportCache
-from .engine.runner import Progress, verify
+from .engine.runner import MAX_WORKERS, Progress, check_environment, verify
 from .errors import (EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, EnvironmentProblem, InputError,
                      SymfloatError)
 from .project import GOLDEN, in_project, library_folders, project_root
 from .registry import provided, select
 from .report.errata import errata_json, errata_markdown
-from .files import write_atomic, write_if_changed, writable_target
+from .files import write_atomic, write_if_changed, writable_folder, writable_target
 from .report.record import record_json, verification_table, write_record
 from .report.stamp import stamp_of
 
 EXIT_STATUS = ("Exit status: 0 success; 1 a check failed (verdict, index sum, duality, coverage); "
-               "2 bad input or an environment problem; 130 interrupted")
+               "2 bad input or an environment problem (an output whose folder is missing or takes no file: "
+               "no folder is made for a file, an output folder may be new in an existing one; "
+               "SYMFLOAT_WORKERS not 1 to 64, SYMFLOAT_SLOWDOWN not a number >= 1; a worker process killed, "
+               "finished checks kept); 130 interrupted")
 
 
 def _one_line(message: str) -> str:
@@ -183,7 +187,7 @@ def _errata(args) -> int:
         if args.output is not None:
             out = _not_golden(writable_target(args.output)) if selector else writable_target(args.output)
         elif selector is None:
-            out = writable_target(in_project("docs/errata.md"))
+            out = writable_folder(in_project("docs")) / "errata.md"     # the checkout's own folder may be made
     reports = _reports(args, selector)
     if args.format == "json":
         print(errata_json(reports), end="")
@@ -203,8 +207,7 @@ def _notebooks_args(p):
 
 def _notebooks(args) -> int:
     selector = _selector(args.selector)
-    folder = args.output or in_project("notebooks")
-    writable_target(folder / "x.ipynb")
+    folder = writable_folder(args.output or in_project("notebooks"))
     ids = select(selector)
     cache = _cache(args)
     _kernels_share(cache)
@@ -219,8 +222,8 @@ def _notebooks(args) -> int:
 
 def _run(args) -> int:
     docs, notebooks = in_project("docs"), in_project("notebooks")
-    for path in (docs / "errata.md", notebooks / "x.ipynb"):
-        writable_target(path)
+    for folder in (docs, notebooks):
+        writable_folder(folder)
     cache = _cache(args)
     _kernels_share(cache)
     reports = _reports(args, cache=cache)
@@ -322,13 +325,14 @@ def _phase(args) -> int:
 
 def _atlas_args(p):
     p.add_argument("body", help="box (edges 1, b/a, c/a; the cell b/a = c/a = 1 is the cube)")
-    p.add_argument("--ba", required=True, help="b/a: a grid A:B:N (N values from A to B), a list v1,v2,... or a value")
+    p.add_argument("--ba", required=True, help="b/a: a grid A:B:N (N values from A to B), a list v1,v2,... or a value "
+                                               "(at most 2000 values; at most 10000 shapes b/a x c/a)")
     p.add_argument("--ca", required=True, help="c/a: the same forms")
     p.add_argument("--density", required=True, help="the sweep of densities, A:B:N or a list, symmetric about 1/2")
     p.add_argument("--out", required=True, type=Path, help="directory: parts/ (one Parquet file per cell), "
                                                           "atlas.parquet, checks.md")
     p.add_argument("--scheduler", help="address of a running Dask scheduler (default: a local cluster)")
-    p.add_argument("--workers", help="worker processes of the local cluster (default: the machine's cores); "
+    p.add_argument("--workers", help="worker processes of the local cluster, 0 to 64 (default: the machine's cores); "
                                      "0 computes here without Dask")
     p.add_argument("--figures", type=Path, help="directory for the slice figures atlas-c<c/a>.png")
     p.epilog = ("Cells already written in --out by the same code with the same density sweep are skipped (a "
@@ -359,13 +363,13 @@ def _atlas(args) -> int:
 
     ba, ca, densities = shape_grid(args.ba, "--ba"), shape_grid(args.ca, "--ca"), density_grid(args.density)
     check_domain(ba, ca, densities)
-    workers = None if args.workers is None else parse_whole(args.workers, "--workers", 0, 1024)
+    workers = None if args.workers is None else parse_whole(args.workers, "--workers", 0, MAX_WORKERS)
     scheduler = _scheduler(args.scheduler)
     if scheduler and workers is not None:
         raise InputError("--workers sizes the local cluster; with --scheduler the cluster has its own workers")
-    writable_target(args.out / "atlas.parquet")
+    writable_folder(args.out)
     if args.figures is not None:
-        writable_target(args.figures / "atlas-c1.png")
+        writable_folder(args.figures)
     return run_atlas(args.out, ba, ca, densities, scheduler, workers, args.figures, quiet=_quiet(args),
                      say=lambda m: _say(args, m))
 
@@ -384,7 +388,7 @@ def _bench(args) -> int:
     folder = args.output or in_project("docs")
     if args.derivations:
         return _bench_derivations(args, folder)
-    writable_target(folder / "numerics.md")
+    writable_folder(folder)
     quiet = _quiet(args)
     written = generate(folder, quick=args.quick,
                        progress=lambda msg: quiet or print(msg, file=sys.stderr, flush=True))
@@ -396,7 +400,7 @@ def _bench_derivations(args, folder: Path) -> int:
     import platform
 
     from .numerics.cost import cost_markdown, cost_rows, write_section
-    path = writable_target(folder / "performance.md")
+    path = writable_folder(folder) / "performance.md"
     rows = cost_rows(progress=lambda msg: _say(args, msg))
     machine = f"{platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}"
     write_atomic(path, write_section(path, cost_markdown(rows, machine)).encode("utf-8"))
@@ -425,7 +429,7 @@ def _site_args(p):
 
 def _site(args) -> int:
     from .site.build import build_site          # Sphinx and MyST-NB: only when the site is built
-    out = args.out or in_project("build/site")
+    out = writable_folder(args.out) if args.out else in_project("build/site")
     changed, warnings = build_site(out, in_project("docs"), in_project("notebooks"),
                                    progress=lambda msg: _say(args, msg))
     for w in warnings:
@@ -501,6 +505,7 @@ def main(argv=None) -> int:
     with _Interrupts() as interrupts:
         try:
             library_folders()                 # a further library of texts that is not there: one line, exit 2
+            check_environment()               # SYMFLOAT_WORKERS, SYMFLOAT_SLOWDOWN: likewise
             return COMMANDS[args.command].run(args)
         except KeyboardInterrupt:
             pass

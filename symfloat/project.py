@@ -45,8 +45,13 @@ def library_folders() -> list[Path]:
     that does not exist is an :class:`InputError` (the command line checks before any work)."""
     folders = [Path(p) for p in os.environ.get(LIBRARY_VARIABLE, "").split(os.pathsep) if p]
     for folder in folders:
-        if not folder.is_dir():
-            raise InputError(f"{LIBRARY_VARIABLE}: {folder} is not a folder")
+        shown = str(folder) if len(str(folder)) <= 120 else f"{str(folder)[:60]}...{str(folder)[-50:]}"
+        try:
+            if "\0" in str(folder) or not folder.is_dir():
+                raise InputError(f"{LIBRARY_VARIABLE}: {shown} is not a folder")
+            folder.resolve(strict=True)
+        except OSError as exc:                  # a name too long for the file system, a loop of links
+            raise InputError(f"{LIBRARY_VARIABLE}: {shown} is not a usable folder ({exc.strerror or exc})") from None
     return [folder.resolve() for folder in folders]
 
 

@@ -20,9 +20,8 @@ import hashlib
 from functools import cache
 from pathlib import Path
 
-__all__ = ["derivation_key", "library_files", "source_files", "FORMAT"]
+__all__ = ["derivation_key", "library_files", "source_files"]
 
-FORMAT = 3              # raised when what a key covers changes, so that no old entry is read
 _LIBRARY = Path(__file__).resolve().parents[1]      # the symfloat package
 _CHECKER = ("symfloat.engine.check",)
 
@@ -96,7 +95,7 @@ def _content(path: Path) -> bytes:
 
 def derivation_key(package_files, source_key: str, required_keys, package_name: str = "") -> str:
     """The cache key of a derivation: its package, its source, the library its check runs, its premises."""
-    h = hashlib.sha256(f"symfloat-key-{FORMAT}".encode())
+    h = hashlib.sha256(b"symfloat-key")
     groups = (("package", sorted(package_files)), ("source", source_files(source_key)),
               ("library", library_files(package_files, package_name)))
     for label, paths in groups:

@@ -26,6 +26,8 @@ from pathlib import Path
 
 import sympy as sp
 
+from ..errors import EnvironmentProblem
+
 __all__ = ["Certificate", "ProofBook", "claim_digest", "proofs_file", "slowdown"]
 
 
@@ -77,11 +79,11 @@ def slowdown() -> float:
     certificates use no time limit, so no verdict can depend on it."""
     raw = os.environ.get("SYMFLOAT_SLOWDOWN", "")
     try:
-        factor = float(raw) if raw else 1.0
+        factor = float(raw) if raw and len(raw) <= 40 and raw.isascii() else 1.0 if not raw else None
     except ValueError:
-        raise ValueError(f"SYMFLOAT_SLOWDOWN must be a number >= 1, not {raw!r}") from None
-    if not factor >= 1:
-        raise ValueError(f"SYMFLOAT_SLOWDOWN must be a number >= 1, not {raw!r}")
+        factor = None
+    if factor is None or not factor >= 1:
+        raise EnvironmentProblem(f"SYMFLOAT_SLOWDOWN must be a number >= 1, not {raw[:40]!r}")
     return factor
 
 

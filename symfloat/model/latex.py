@@ -12,17 +12,26 @@ SymPy objects by constructors and evaluates no code, but its grammar rejects ``\
 ``\text{...}``, relation chains ``a = b = c`` and ``a < b < c``, and it reads ``\varrho`` as ``rho``,
 so most excerpts would fail or lose distinctions; this reader is used instead, with no dependency.)
 
+Nothing is computed beyond a bound, so that no text can make the reader run long: a number has at
+most :data:`MAX_DIGITS` digits, a number in an exponent is at most :data:`MAX_EXPONENT` in size, and a
+power of two numbers has at most :data:`MAX_DIGITS` digits; a formula past a bound is
+:class:`Unreadable` (``10^{10^{10}}``, a 5,000-digit literal), read in no time.
+
 Normalisations, each a named rule that the reader reports when it applies (:data:`RULES`).
 """
 from __future__ import annotations
 
+import math
 import re
 import unicodedata
 from dataclasses import dataclass, field
 
 import sympy as sp
 
-__all__ = ["Unreadable", "Reading", "read", "canonical", "RULES", "RELATIONS"]
+__all__ = ["Unreadable", "Reading", "read", "canonical", "RULES", "RELATIONS", "MAX_DIGITS", "MAX_EXPONENT"]
+
+MAX_DIGITS = 100            # digits of a literal, and of a power of two numbers
+MAX_EXPONENT = 100          # the size of a number in an exponent (the prints raise to 1/2 ... 4)
 
 RULES = {
     "tg": r"\operatorname{tg}, \text{tg}, \tg read as tan; cotg, ctg as cot",
@@ -251,7 +260,7 @@ class _Parser:
                 base = base * sp.pi / 180
                 continue
             exponent = self.group_or_atom()
-            base = sp.Pow(base, exponent)
+            base = _power(base, exponent)
         return base
 
     def group_or_atom(self):
@@ -274,6 +283,8 @@ class _Parser:
         raise Unreadable(f"cannot read an exponent from {v!r}")
 
     def _number(self, v):
+        if len(v) > MAX_DIGITS:
+            raise Unreadable(f"a number of {len(v)} digits (the reader takes at most {MAX_DIGITS})")
         if "," in v:
             self.rules.add("decimal-comma")
         whole, _, frac = v.replace(",", ".").partition(".")
@@ -484,6 +495,28 @@ class _Parser:
         inner = self.expr()
         self.take("}")
         return inner
+
+
+def _power(base, exponent):
+    """``base ** exponent``, unless it would be too large to compute: a number in the exponent larger than
+    :data:`MAX_EXPONENT`, or a number raised to one with more than :data:`MAX_DIGITS` digits.
+
+    >>> _power(sp.Integer(10), sp.Integer(3))
+    1000
+    >>> _power(sp.Integer(10), sp.Integer(10) ** 10)
+    Traceback (most recent call last):
+    ...
+    symfloat.model.latex.Unreadable: an exponent of 10000000000 (the reader takes at most 100)
+    """
+    numbers = [abs(n) for n in exponent.atoms(sp.Number) if n.is_finite]
+    if numbers and max(numbers) > MAX_EXPONENT:
+        raise Unreadable(f"an exponent of {max(numbers) if max(numbers) < 10 ** 30 else 'more than 1e30'} "
+                         f"(the reader takes at most {MAX_EXPONENT})")
+    if base.is_Rational and exponent.is_Number and base not in (0, 1, -1):
+        digits = max(abs(base.p).bit_length(), base.q.bit_length()) * math.log10(2)
+        if float(abs(exponent)) * max(digits, 1.0) > MAX_DIGITS:
+            raise Unreadable(f"a power of more than {MAX_DIGITS} digits")
+    return sp.Pow(base, exponent)
 
 
 def _text_function(token: str):

@@ -14,6 +14,7 @@ not empty and holds no earlier site is refused.
 """
 from __future__ import annotations
 
+import os
 import shutil
 import tempfile
 from importlib import resources
@@ -21,6 +22,7 @@ from io import StringIO
 from pathlib import Path
 
 from ..errors import EnvironmentProblem, InputError
+from ..leftovers import sweep_orphans
 from ..model.source import SOURCES
 from ..files import write_atomic
 from .edition import edition_page
@@ -199,7 +201,8 @@ def build_site(out: Path, docs: Path, notebooks: Path, progress=None) -> tuple[l
     for needed in (docs / "verification.json", docs / "errata.json", docs / "site.md", docs / "numerics.md"):
         if not needed.is_file():
             raise InputError(f"no {needed}: the site is built from the committed records")
-    with tempfile.TemporaryDirectory(prefix="symfloat-site-") as tmp:
+    sweep_orphans(tempfile.gettempdir(), "symfloat-site-")      # the build folders of killed builds
+    with tempfile.TemporaryDirectory(prefix=f"symfloat-site-{os.getpid()}-") as tmp:
         src, html, doctrees = Path(tmp, "src"), Path(tmp, "html"), Path(tmp, "doctrees")
         src.mkdir()
         progress and progress("staging the pages from the records")
