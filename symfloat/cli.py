@@ -12,6 +12,8 @@
     symfloat bench [--quick] [--output DIR]
     symfloat coverage [SOURCE] [--format table|json] [--readings] [--write] [--update-baseline]
     symfloat site [--out DIR]
+    symfloat check PRINTED --against DEFINITION [--against ...] [--where INEQUALITIES] [--domain x=A:B,...]
+                   [--format text|json] [--output FILE]
 
 Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET`` set to anything but ``0``) silences
 it.  The default outputs (``docs/``, ``notebooks/``) are those of the project checkout, wherever
@@ -420,6 +422,33 @@ def _coverage(args) -> int:
     return run(args)
 
 
+def _check_args(p):
+    p.add_argument("printed", help=r"the printed formula in LaTeX, e.g. '\bar z = \frac{3(2r-h)^2}{3(3r-h)}'")
+    p.add_argument("--against", action="append", required=True,
+                   help=r"a formula or definition in LaTeX (S = expression, integrals \int_a^b f \, dx "
+                        "allowed); repeat for several")
+    p.add_argument("--where", default="", help="inequalities that restrict the domain, e.g. '0 < h < r'")
+    p.add_argument("--domain", help="sampling intervals, e.g. 'r=1:3, h=0:1' (default 0:4 for every symbol)")
+    p.add_argument("--format", choices=("text", "json"), default="text")
+    p.add_argument("--output", type=Path, help="write the report to this file instead of stdout")
+    p.epilog = ("Exit status 0: the print holds; 1: it is refuted or undecided; 2: a formula the reader "
+                f"does not accept. {EXIT_STATUS}.")
+
+
+def _check(args) -> int:
+    from .engine.formula_check import check, parse_domain
+    from .report.formula_check import check_json, check_text
+    out = writable_target(args.output) if args.output is not None else None
+    result = check(args.printed, args.against, where=args.where, domain=parse_domain(args.domain))
+    text = check_json(result) if args.format == "json" else check_text(result)
+    if out is None:
+        print(text, end="")
+    else:
+        write_atomic(out, text.encode("utf-8"))
+        _say(args, f"wrote {out}")
+    return EXIT_OK if result.verdict == "holds" else EXIT_CHECK
+
+
 def _site_args(p):
     p.add_argument("--out", type=Path, help="folder for the static site (default: build/site of the checkout); "
                                             "an existing folder must be empty or hold an earlier site")
@@ -457,6 +486,8 @@ COMMANDS = {
                         "with --readings the readings checked against the print", _coverage_args, _coverage),
     "site": Command("build the static web site (annotated edition, errata, notebooks, numerics) from the "
                     "committed records", _site_args, _site),
+    "check": Command("check one printed formula (LaTeX) against a formula or a definition; a refuted print "
+                     "gets a counterexample and the likeliest corrections", _check_args, _check),
 }
 
 
