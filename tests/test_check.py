@@ -80,3 +80,11 @@ def test_bad_input_is_one_line_and_exit_2(argv, says, capsys):
     assert main(["check", *argv]) == 2
     err = capsys.readouterr().err
     assert says in err and err.count("\n") == 1
+
+
+def test_two_confusions_at_two_places_are_one_candidate():
+    # Euler's scan reads "\mu V" as "\nu v" (docs/errata.json, euler §241): ν/μ and v/V together
+    from symfloat.engine.corrections import candidates
+    found = {c.text: c for c in candidates(r"D = \nu v")}
+    assert r"D = \mu V" in found and found[r"D = \mu V"].kind == "scan-like"
+    assert r"D = \mu V" not in {c.text for c in candidates(r"D = \nu w")}      # mutated: w/V is no confusion

@@ -25,6 +25,7 @@ from ..model.claim import as_latex, identical_links, members
 from ..model.derivation import Derivation, Printed
 from ..model.relation import is_relation
 from .definitions import DefinitionRoute
+from .print_corrections import print_corrections
 from .identity import Domain, IdentityResult, check_identity, check_rounded
 from .proofs import ProofBook
 from .relation import check_relation
@@ -273,7 +274,15 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
                     out.agrees = all(r["abs_error"] <= float(p.tolerance) * (1 + 1e-9) for r in out.records)
                     out.note = "" if out.agrees else f"{out.witness}: differs by more than the printed precision"
 
-    formulas = [_verdict(d, p, identities.get(p.name), corrected.get(p.name), outcomes, failures)
+    def correction(p) -> str:           # the smallest edit of a refuted print that makes it hold
+        found = print_corrections(p, results, domain, f"{d.id}/{p.name}", lambda chain: _check_chain(
+            chain, set(), results, domain, f"{d.id}/{p.name}#edit", None, {}, p.tolerance, prove), limit=1)
+        if not found:
+            return "no single small edit of the print makes it hold"
+        c = found[0]
+        return f"the smallest correction found is {c.text} ({c.change}: {c.what}, {c.kind}; {c.status})"
+
+    formulas = [_verdict(d, p, identities.get(p.name), corrected.get(p.name), outcomes, failures, correction)
                 for p in d.printed]
     failures += [f"{d.source} {d.locator}: the proof certificate of {k} ({c['strategy']}) no longer proves "
                  f"it; search anew with `symfloat verify {d.id} --search-proofs`"
@@ -282,7 +291,14 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
                             step_reports, formulas, failures, proofs=proofs, timing=timing)
 
 
-def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
+def _refutation(cx: dict) -> str:
+    """A counterexample with labelled sides: ``at h=1, r=2 (printed: 9/5, derived: 27/20)``."""
+    point = ", ".join(f"{k}={v}" for k, v in cx["point"].items())
+    within = f", allowed difference {cx['tolerance']}" if "tolerance" in cx else ""
+    return f"{'at ' + point + ' ' if point else ''}(printed: {cx['rhs']}, derived: {cx['lhs']}{within})"
+
+
+def _verdict(d, p, ident, corr, outcomes, failures, correction) -> FormulaReport:
     where = f"{d.source} {p.locator} ({p.name})"
     # an outcome without records (the definition route found nothing to measure) only adds its note
     printed_out = [o for o in outcomes.get(p.name, []) if o.records]
@@ -318,7 +334,8 @@ def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
         return rep
     # refuted (or unreadable) print
     if p.erratum is None:
-        failures.append(f"{where}: the print is refuted ({ident.counterexample}) and no erratum is declared")
+        shown = _refutation(ident.counterexample) if ident is not None and ident.counterexample else ""
+        failures.append(f"{where}: the print is refuted {shown} and no erratum is declared; {correction(p)}")
         rep.verdict, rep.evidence = "erratum", "sampled"
         return rep
     if printed_out and all(o.agrees for o in printed_out):

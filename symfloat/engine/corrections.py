@@ -19,6 +19,7 @@ allow-list reader and the identity check), so nothing here evaluates the text.
 """
 from __future__ import annotations
 
+import itertools
 import json
 import re
 from dataclasses import asdict, dataclass
@@ -30,6 +31,7 @@ __all__ = ["Correction", "candidates", "corrections", "CONFUSIONS"]
 
 CONFUSIONS = json.loads((Path(__file__).with_name("confusions.json")).read_text(encoding="utf-8"))
 _COST = CONFUSIONS["edits"]
+_PAIRED = 40           # the likeliest single confusions that are also tried two at a time
 _RELATIONS = {"<": ">", ">": "<", r"\leq": r"\geq", r"\geq": r"\leq", r"\le": r"\ge", r"\ge": r"\le"}
 
 
@@ -59,19 +61,27 @@ def _replace(tex: str, start: int, end: int, new: str) -> str:
 
 
 def _glyph_edits(tex, starts, ends):
-    """The confusions of the table, at each occurrence and at every occurrence at once."""
+    """The confusions of the table: at each occurrence, at every occurrence at once, and two at two places
+    (a scan that confuses ν/μ and v/V reads "\\mu V" as "\\nu v")."""
+    singles = []
     for a, b, cost in CONFUSIONS["glyphs"]:
         for old, new in ((a, b), (b, a)):
             spots = [m.start() for m in re.finditer(re.escape(old), tex)
                      if m.start() in starts and m.start() + len(old) in ends]
-            for at in spots:
-                yield _replace(tex, at, at + len(old), new), f"{old} → {new}", "glyph", "scan-like", cost
+            singles += [(at, old, new, cost) for at in spots]
             if len(spots) > 1:
                 text = tex
                 for at in reversed(spots):
                     text = _replace(text, at, at + len(old), new)
                 yield (text, f"{old} → {new} at all {len(spots)} places", "glyph", "scan-like",
                        cost + CONFUSIONS["every-occurrence"])
+    for at, old, new, cost in singles:
+        yield _replace(tex, at, at + len(old), new), f"{old} → {new}", "glyph", "scan-like", cost
+    singles = sorted(singles, key=lambda e: e[3])[:_PAIRED]
+    for (a1, o1, n1, c1), (a2, o2, n2, c2) in itertools.combinations(sorted(singles), 2):
+        if a1 + len(o1) <= a2:
+            text = _replace(_replace(tex, a2, a2 + len(o2), n2), a1, a1 + len(o1), n1)
+            yield text, f"{o1} → {n1} and {o2} → {n2}", "glyph", "scan-like", c1 + c2
 
 
 def _braced_end(tex: str, at: int) -> int:
