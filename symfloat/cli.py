@@ -16,8 +16,9 @@
                    [--format text|json] [--output FILE]
 
 Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET`` set to anything but ``0``) silences
-it.  The default outputs (``docs/``, ``notebooks/``) are those of the project checkout, wherever
-the command runs; a path given with ``--output`` or ``--plot`` is taken as given.  A selection
+it.  The default outputs (``docs/``, ``notebooks/``, ``build/site``) are those of the library of texts
+``SYMFLOAT_LIBRARY`` names, else of the project checkout, wherever the command runs
+(:mod:`symfloat.project`); a path given with ``--output`` is taken as given.  A selection
 never overwrites the record of everything (``docs/errata.md``, ``docs/errata.json``,
 ``docs/verification.json``): ``errata SELECTOR`` prints its report, or writes it to ``--output``.
 
@@ -42,7 +43,7 @@ from .engine.cache import ReportCache
 from .engine.runner import Progress, verify
 from .errors import (EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, EnvironmentProblem, InputError,
                      SymfloatError)
-from .project import GOLDEN, in_project, library_folders, project_root
+from .project import GOLDEN, in_outputs, in_project, library_folders, outputs_root
 from .registry import load, providing, select
 from .report.errata import errata_json, errata_markdown
 from .report.files import write_atomic, write_if_changed, writable_target
@@ -121,7 +122,7 @@ def _failed(reports) -> int:
 
 def _not_golden(path: Path) -> Path:
     """*path*, unless it is one of the files that record everything (a selection must not replace them)."""
-    root = project_root()
+    root = outputs_root()
     if root is not None and path.resolve() in {(root / g).resolve() for g in GOLDEN}:
         raise InputError(f"{path} is the record of every source; a selection is printed, or written to "
                          f"another --output")
@@ -185,7 +186,7 @@ def _errata(args) -> int:
         if args.output is not None:
             out = _not_golden(writable_target(args.output)) if selector else writable_target(args.output)
         elif selector is None:
-            out = writable_target(in_project("docs/errata.md"))
+            out = writable_target(in_outputs("docs/errata.md"))
     reports = _reports(args, selector)
     if args.format == "json":
         print(errata_json(reports), end="")
@@ -205,7 +206,7 @@ def _notebooks_args(p):
 
 def _notebooks(args) -> int:
     selector = _selector(args.selector)
-    folder = args.output or in_project("notebooks")
+    folder = args.output or in_outputs("notebooks")
     writable_target(folder / "x.ipynb")
     ids = select(selector)
     cache = _cache(args)
@@ -220,7 +221,7 @@ def _notebooks(args) -> int:
 
 
 def _run(args) -> int:
-    docs, notebooks = in_project("docs"), in_project("notebooks")
+    docs, notebooks = in_outputs("docs"), in_outputs("notebooks")
     for path in (docs / "errata.md", notebooks / "x.ipynb"):
         writable_target(path)
     cache = _cache(args)
@@ -385,7 +386,7 @@ def _bench_args(p):
 
 def _bench(args) -> int:
     from .numerics.document import generate
-    folder = args.output or in_project("docs")
+    folder = args.output or in_outputs("docs")
     if args.derivations:
         return _bench_derivations(args, folder)
     writable_target(folder / "numerics.md")
@@ -456,7 +457,7 @@ def _site_args(p):
 
 def _site(args) -> int:
     from .site.build import build_site          # Sphinx and MyST-NB: only when the site is built
-    out = args.out or in_project("build/site")
+    out = args.out or in_outputs("build/site")
     changed, warnings = build_site(out, in_project("docs"), in_project("notebooks"),
                                    progress=lambda msg: _say(args, msg))
     for w in warnings:

@@ -23,7 +23,7 @@ import sys
 from pathlib import Path
 
 from ..model.source import SOURCES
-from ..project import in_project
+from ..project import in_outputs
 from .files import write_if_changed
 from .ledger import LedgerError, baseline_keys, ledger, ledger_json, ledger_markdown, ledger_table
 from .references import check, references, references_markdown, status_counts
@@ -33,9 +33,9 @@ __all__ = ["run", "docs_path", "load_baseline", "baseline_text"]
 
 
 def docs_path(name: str) -> Path:
-    """``docs/<name>`` of the project checkout, wherever the command is run from
-    (:func:`symfloat.project.in_project`)."""
-    return in_project(f"docs/{name}")
+    """``docs/<name>`` of the library of texts, else of the project checkout, wherever the command is run
+    from (:func:`symfloat.project.in_outputs`)."""
+    return in_outputs(f"docs/{name}")
 
 
 def load_baseline(path: Path) -> dict:
