@@ -83,7 +83,7 @@ def test_a_read_only_directory_is_refused_before_any_work(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("argv, message", [
-    (["scene", "cube", "--density", "0.3", "--plot", "x.txt"], "--plot writes a PNG image"),
+    (["scene", "cube", "--density", "0.3", "--plot", "x.txt"], "--output writes a PNG image"),
     (["scene", "cube", "--density", "0.3", "--plot", "/dev/null/x.png"], "/dev/null is not a directory"),
     (["errata", "graefe-s1", "--output", "."], "it is a directory"),
     (["errata", "graefe", "--output", str(ROOT / "docs" / "errata.md")], "is the record of every source"),
@@ -140,8 +140,8 @@ def test_default_outputs_belong_to_the_checkout(monkeypatch, tmp_path, capsys, g
     assert project.project_root() == ROOT                     # wherever the command runs
     monkeypatch.setattr(cli, "verify", lambda *a, **k: graefe_reports)
     (tmp_path / "checkout").mkdir()                           # a checkout (its docs/ is made if missing)
+    monkeypatch.delenv("SYMFLOAT_LIBRARY", raising=False)                 # no library: the checkout's
     monkeypatch.setattr(project, "project_root", lambda: tmp_path / "checkout")
-    monkeypatch.setattr(cli, "project_root", lambda: tmp_path / "checkout")
     assert cli.main(["errata", "--quiet"]) == 0
     assert (tmp_path / "checkout" / "docs" / "errata.md").read_text(encoding="utf-8").startswith("# Errata")
     assert not (tmp_path / "docs").exists()

@@ -54,16 +54,17 @@ def _umask() -> int:
 
 
 def _default_root() -> Path:
-    from ..project import project_root
+    from ..project import outputs_root
     env = os.environ.get("SYMFLOAT_CACHE")
     if env:
         return Path(env)
-    return (project_root() or Path.cwd()) / ".symfloat-cache"
+    return (outputs_root() or Path.cwd()) / ".symfloat-cache"
 
 
 class ReportCache:
     """Reports stored as verified JSON entries under *root* (``$SYMFLOAT_CACHE``, else
-    ``.symfloat-cache`` in the project checkout, else in the working directory)."""
+    ``.symfloat-cache`` in the library of ``SYMFLOAT_LIBRARY`` or the project checkout, else in the
+    working directory)."""
 
     def __init__(self, root: str | os.PathLike | None = None, enabled: bool = True):
         self.root = Path(root) if root else _default_root()

@@ -29,6 +29,7 @@ from ..model.claim import as_latex, identical_links, members
 from ..model.derivation import Derivation, Printed
 from ..model.relation import is_relation
 from .definitions import DefinitionRoute
+from .print_corrections import print_corrections
 from .identity import Domain, IdentityResult, check_identity, check_rounded
 from .proofs import ProofBook
 from .relation import check_relation
@@ -285,7 +286,15 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
                     out.agrees = all(record_agrees(r) for r in out.records)
                     out.note = "" if out.agrees else f"{out.witness}: differs by more than the printed precision"
 
-    formulas = [_verdict(d, p, identities.get(p.name), corrected.get(p.name), outcomes, failures)
+    def correction(p) -> str:           # the smallest edit of a refuted print that makes it hold
+        found = print_corrections(p, results, domain, f"{d.id}/{p.name}", lambda chain: _check_chain(
+            chain, set(), results, domain, f"{d.id}/{p.name}#edit", None, {}, p.tolerance, prove), limit=1)
+        if not found:
+            return "no single small edit of the print makes it hold"
+        c = found[0]
+        return f"the smallest correction found is {c.text} ({c.change}: {c.what}, {c.kind}; {c.status})"
+
+    formulas = [_verdict(d, p, identities.get(p.name), corrected.get(p.name), outcomes, failures, correction)
                 for p in d.printed]
     failures += [f"{d.source} {d.locator}: {m}" for m in _proof_failures(d.id, proofs)]
     return DerivationReport(d.id, d.source, d.title, d.locator, key, time.perf_counter() - t0,
@@ -345,7 +354,14 @@ def judge(f: FormulaReport, erratum_declared: bool) -> tuple[str, str | None, li
     return "erratum", corr.evidence if corr is not None and corr.holds else "sampled", failures
 
 
-def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
+def _refutation(cx: dict) -> str:
+    """A counterexample with labelled sides: ``at h=1, r=2 (printed: 9/5, derived: 27/20)``."""
+    point = ", ".join(f"{k}={v}" for k, v in cx["point"].items())
+    within = f", allowed difference {cx['tolerance']}" if "tolerance" in cx else ""
+    return f"{'at ' + point + ' ' if point else ''}(printed: {cx['rhs']}, derived: {cx['lhs']}{within})"
+
+
+def _verdict(d, p, ident, corr, outcomes, failures, correction) -> FormulaReport:
     where = f"{d.source} {p.locator} ({p.name})"
     # an outcome without records (the definition route found nothing to measure) only adds its note
     printed_out = [o for o in outcomes.get(p.name, []) if o.records]
@@ -361,6 +377,10 @@ def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
                         against=[o.witness for o in printed_out if not o.agrees],
                         against_correction=[o.witness for o in corrected_out if not o.agrees])
     rep.verdict, rep.evidence, found = judge(rep, p.erratum is not None)
+    if p.erratum is None and rep.verdict == "erratum":       # a refuted print: its sides labelled, a correction offered
+        shown = _refutation(ident.counterexample) if ident is not None and ident.counterexample else ""
+        found = [f"the print is refuted {shown} and no erratum is declared; {correction(p)}"
+                 if m.startswith("the print is refuted") else m for m in found]
     failures += [f"{where}: {m}" for m in found]
     if rep.verdict == "erratum" and p.erratum is not None and corr is None and p.erratum.corrected_reading is not None:
         failures.append(f"{where}: the correction was not checked")

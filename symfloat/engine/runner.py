@@ -47,6 +47,13 @@ class Progress:
         if not self.quiet:
             print(f"[{i}/{n}] {derivation_id} ...", end="", file=self.stream, flush=True)
 
+    def checking(self, pending: int, cached: int, workers: int):
+        """The line that opens a check: what is checked, what is read from the cache, on how many workers."""
+        if not self.quiet:
+            on = f" on {workers} workers, a line as each is done" if workers > 1 and pending > 1 else ""
+            print(f"checking {pending} derivation{'s' * (pending != 1)}{on}; {cached} read from the cache",
+                  file=self.stream, flush=True)
+
     def tick(self):
         if not self.quiet:
             print(".", end="", file=self.stream, flush=True)
@@ -263,6 +270,7 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
                 write_if_changed(ProofBook.path(did), ProofBook.text(report.certificates()))
         reports[did] = report
 
+    progress.checking(len(pending), len(ids) - len(pending), workers)
     for did in ids:
         if did in reports:
             done += 1

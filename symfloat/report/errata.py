@@ -1,26 +1,46 @@
-"""The errata report: ``docs/errata.md`` and ``symfloat errata --format json``."""
+"""The errata report: ``docs/errata.md`` and ``symfloat errata --format json|csv|latex``."""
 from __future__ import annotations
 
+import csv
+import io
 import json
+import re
+import unicodedata
 from collections import Counter
 
 from ..engine.check import DerivationReport
 from ..model.source import get_source
 
-__all__ = ["errata_entries", "errata_json", "errata_markdown"]
+__all__ = ["errata_entries", "errata_json", "errata_markdown", "errata_csv", "errata_latex", "erratum_slug",
+           "ERRATA_FORMATS"]
+
+
+def erratum_slug(source: str, locator: str) -> str:
+    """The stem of an erratum's id: lower-case ASCII letters, digits and single hyphens, ``§`` as ``s`` (as
+    the derivation ids write it), accents dropped; usable as a key, a file name and an anchor.
+
+    >>> erratum_slug("graefe", "§1 prismatoid volume"), erratum_slug("hasab", "Megjegyzés"), erratum_slug("scheeffer", "(78c)")
+    ('graefe-s1-prismatoid-volume', 'hasab-megjegyzes', 'scheeffer-78c')
+    """
+    text = unicodedata.normalize("NFKD", f"{source}-{locator}".replace("§", "s")).encode("ascii", "ignore").decode()
+    return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")
 
 
 def errata_entries(reports: list[DerivationReport]) -> list[dict]:
-    """One entry per erratum, in source order; ids ``source-locator-n``."""
+    """One entry per erratum, in source order; ids ``<slug of source and locator>-n``, the earlier form
+    ``source-locator-n`` kept as ``alias``."""
     counter: Counter = Counter()
+    slugs: Counter = Counter()
     entries = []
     for d in reports:
         for f in d.formulas:
             if f.verdict != "erratum" or not f.erratum:
                 continue
             counter[(f.source, f.locator)] += 1
+            slugs[erratum_slug(f.source, f.locator)] += 1
             entries.append({
-                "id": f"{f.source}-{f.locator}-{counter[(f.source, f.locator)]}",
+                "id": f"{erratum_slug(f.source, f.locator)}-{slugs[erratum_slug(f.source, f.locator)]}",
+                "alias": f"{f.source}-{f.locator}-{counter[(f.source, f.locator)]}",
                 "source": f.source, "locator": f.locator, "printed": f.excerpt,
                 "corrected": f.erratum["corrected"], "kind": f.erratum["kind"],
                 "confidence": f.erratum["confidence"], "evidence": f.erratum["evidence"],
@@ -32,6 +52,73 @@ def errata_entries(reports: list[DerivationReport]) -> list[dict]:
 
 def errata_json(reports) -> str:
     return json.dumps(errata_entries(reports), indent=1, ensure_ascii=False) + "\n"
+
+
+_CSV_FIELDS = ("id", "source", "locator", "kind", "confidence", "printed", "corrected", "evidence", "derivation")
+
+
+def errata_csv(reports) -> str:
+    """One row per erratum (RFC 4180, a header row first): id, source, locator, kind, confidence, the printed
+    and corrected text, the evidence, the derivation."""
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(_CSV_FIELDS)
+    for e in errata_entries(reports):
+        writer.writerow([e[k] for k in _CSV_FIELDS])
+    return out.getvalue()
+
+
+_TEX_SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
+                "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
+
+
+def _tex_text(text: str) -> str:
+    """*text* as LaTeX prose: its special characters escaped."""
+    return "".join(_TEX_SPECIAL.get(c, c) for c in text)
+
+
+_MATH = re.compile(r"\$\$(.+?)\$\$|\$(.+?)\$", re.S)
+
+
+def _tex_of(text: str) -> str:
+    r"""A printed or corrected text as LaTeX: the transcription's math kept (a display as ``\[...\]``), its
+    words escaped; a text without dollars is one formula when it reads as one (a backslash, a relation, an
+    index), else words.
+
+    >>> _tex_of(r"so ist $x_s = \frac{3}{8} r$ & mehr"), _tex_of("x_s = 3 r / 8"), _tex_of("only for s > 1/2 and more")
+    ('so ist $x_s = \\frac{3}{8} r$ \\& mehr', '$x_s = 3 r / 8$', 'only for s > 1/2 and more')
+    """
+    if "$" not in text:
+        words = re.sub(r"\\[A-Za-z]+(\{[^{}]*\})?", "", text)
+        if re.search(r"[\\=^_]", text) and len(re.findall(r"[A-Za-z]{3,}", words)) <= 2:
+            return f"${text.strip()}$"
+        return _tex_text(text)
+    out, at = [], 0
+    for m in _MATH.finditer(text):
+        out.append(_tex_text(text[at:m.start()]))
+        out.append(f"\\[{m[1].strip()}\\]" if m[1] is not None else f"${m[2]}$")
+        at = m.end()
+    out.append(_tex_text(text[at:]))
+    return " ".join("".join(out).split())
+
+
+def errata_latex(reports) -> str:
+    """An errata list an editor can paste into a LaTeX document (``\\usepackage{amsmath}``): per source a
+    subsection, per erratum an item with its locator, what is printed, what should stand, kind and confidence."""
+    entries = errata_entries(reports)
+    out = ["% Errata generated by `symfloat errata --format latex`; do not edit by hand."]
+    for key in dict.fromkeys(e["source"] for e in entries):
+        src = get_source(key)
+        year = f", {src.year}" if src.year else ""
+        out += ["", f"\\subsection*{{{_tex_text(src.author)}, \\emph{{{_tex_text(src.title)}}}{year}}}",
+                "\\begin{itemize}"]
+        for e in (e for e in entries if e["source"] == key):
+            out += [f"  \\item \\textbf{{{_tex_text(e['locator'])}}} ({e['kind']}, confidence {e['confidence']}; "
+                    f"\\texttt{{{_tex_text(e['id'])}}}).\\\\",
+                    f"  Printed: {_tex_of(e['printed'])}\\\\",
+                    f"  Read: {_tex_of(e['corrected'])}"]
+        out.append("\\end{itemize}")
+    return "\n".join(out) + "\n"
 
 
 def _fence(text: str) -> str:
@@ -68,3 +155,6 @@ def errata_markdown(reports: list[DerivationReport]) -> str:
                 if e.get("objection"):
                     out += ["", f"Objection: {e['objection']}", "", f"Answer: {e['answer']}"]
     return "\n".join(out) + "\n"
+
+
+ERRATA_FORMATS = {"md": errata_markdown, "json": errata_json, "csv": errata_csv, "latex": errata_latex}

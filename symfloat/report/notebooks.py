@@ -27,6 +27,7 @@ from traitlets.config import Config
 from ..errors import CheckFailed, EnvironmentProblem
 from ..leftovers import sweep_orphans
 from ..model.source import get_source
+from ..project import library_folders
 from ..registry import load
 from ..files import write_if_changed
 from .notebook_view import definitions_markdown, reading_markdown, step_markdown
@@ -48,9 +49,22 @@ def cell_id(kind: str, name: str = "") -> str:
     return f"{kind}-{safe}-{digest}" if name else kind
 
 
-def build_notebook(derivation_id: str) -> nbformat.NotebookNode:
-    """The unexecuted notebook of one derivation."""
+def _library_of(module) -> Path | None:
+    """The library of texts (``SYMFLOAT_LIBRARY``) whose ``derivations/`` holds *module*, else ``None``."""
+    where = Path(module.__file__).resolve().parent
+    return next((folder for folder in library_folders() if (folder / "derivations").resolve() == where), None)
+
+
+def build_notebook(derivation_id: str, folder: str | os.PathLike | None = None) -> nbformat.NotebookNode:
+    """The unexecuted notebook of one derivation; one of a library of texts finds its library from
+    *folder*, where it is written (so it re-runs there without ``SYMFLOAT_LIBRARY``)."""
     d, module = load(derivation_id)
+    library = _library_of(module)
+    setup = ""
+    if library is not None:
+        path = Path(os.path.relpath(library, Path(folder or ".").resolve())).as_posix()
+        setup = ("import os  # the derivation belongs to a library of texts, found from this notebook's folder\n"
+                 f"os.environ['SYMFLOAT_LIBRARY'] = os.path.abspath({path!r})\n")
     src = get_source(d.source)
     about = inspect.cleandoc(module.__doc__ or "")
     md, code = nbformat.v4.new_markdown_cell, nbformat.v4.new_code_cell
@@ -63,7 +77,7 @@ def build_notebook(derivation_id: str) -> nbformat.NotebookNode:
             + "\n".join(f"- {a}" for a in d.assumptions))),
         *([(cell_id("about"), md("## About this section\n\n" + about))] if about else []),
         (cell_id("setup"), code(
-            f"from symfloat.derivations import {module.__name__.split('.')[-1]} as derivation\n"
+            setup + f"from symfloat.derivations import {module.__name__.split('.')[-1]} as derivation\n"
             "from symfloat.report.notebook_view import NotebookView\n\n"
             "view = NotebookView(derivation)   # what the engine found on this derivation\n"
             "assert not view.failures, view.failures\n"
@@ -149,21 +163,28 @@ def write_notebooks(ids, folder: str | os.PathLike = "notebooks", progress=None,
 
     if default_workers() > 1 and len(stale) > 1:          # one kernel per notebook, as many at once as cores
         with worker_pool(min(default_workers(), len(stale))) as pool:
-            futures = {pool.submit(_executed_text, did, stamp): did for did, stamp in stale}
+            futures = {pool.submit(_executed_text, did, stamp, folder): did for did, stamp in stale}
             for did, text in completed(futures, "notebooks"):
                 finished(did, text)
     else:
         for did, stamp in stale:
-            finished(did, _executed_text(did, stamp))
+            finished(did, _executed_text(did, stamp, folder))
     order = {did: i for i, (did, _) in enumerate(stale)}
     return sorted(written, key=lambda path: order[path.stem])
 
 
-def _executed_text(derivation_id: str, stamp: str) -> str:
-    """The notebook of *derivation_id*, executed and stamped, as the text written to disk; a cell that
-    fails is a failed check named in one line (:class:`~symfloat.errors.CheckFailed`), not a traceback."""
+def _executed_text(derivation_id: str, stamp: str, folder: Path) -> str:
+    """The notebook of *derivation_id* (to be written in *folder*), executed and stamped, as the text
+    written to disk; a cell that fails is a failed check named in one line
+    (:class:`~symfloat.errors.CheckFailed`), not a traceback.  A library's notebook runs in *folder*, as
+    it will when re-run there."""
+    nb = build_notebook(derivation_id, folder)
+    where = Path.cwd()
+    if _library_of(load(derivation_id)[1]) is not None:
+        where = Path(folder)
+        where.mkdir(parents=True, exist_ok=True)
     try:
-        nb = execute_notebook(build_notebook(derivation_id), Path.cwd())
+        nb = execute_notebook(nb, where)
     except CellExecutionError as exc:
         raise CheckFailed(f"notebook {derivation_id}: a cell failed with {exc.ename}: {exc.evalue}") from None
     except DeadKernelError:
