@@ -12,7 +12,8 @@ from symfloat.engine.check import check_derivation
 from symfloat.model.source import SOURCES
 from symfloat.registry import load
 
-D, MODULE = load("euler-220-228")
+D, PACKAGE = load("euler-220-228")
+MODULE = PACKAGE.statements              # the symbols and quantities of the statements
 TEXT = SOURCES["euler"].text()
 # §229 begins with "§ 229." (no dot after §) in the transcription: the range ends there.
 RANGE = TEXT[TEXT.index("§. 220."):TEXT.index("§ 229. Consideremus")]
@@ -229,7 +230,8 @@ def test_growth_in_words_is_a_relation_that_refutes_its_mutant():
     import sympy as sp
 
     from symfloat.model import Holds
-    d, m = load("euler-220-228")
+    d, package = load("euler-220-228")
+    m = package.statements
     dom = Domain(d.domain, tuple(d.constraints))
     p = d.get_printed("moment-grows")
     status = _relation(p.reading, d.results(), dom, "t", {"proofs": 0.0, "sampling": 0.0}).status

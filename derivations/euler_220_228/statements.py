@@ -1,63 +1,8 @@
-"""Euler, Scientia navalis (1749), Cap. III "De stabilitate situs aequilibrii", §§220–228.
-
-English summary, paragraph by paragraph:
-
-* §220: for the quadrilaterals (§218) unequal parts fore and aft of the latitudinal axis gave a larger
-  moment than the rhombus; is it the same for curved figures?  Take a figure AEBF with the same
-  longitudinal axis AB, the same greatest breadth ef and the same area as the ellipse of §219, but with
-  ef cutting AB unequally at c; O is the midpoint of AB, C the centroid, EF the latitudinal axis.  Put
-  AO = BO = a, ce = cf = b, Oc = c.
-* §221: infinitely many such curves: with AP = x, PM = y, x = a + Y ± a√(1 − y²/b²), Y a function of
-  y vanishing at y = 0.  At y = 0, x = 0 or 2a, so AB = 2a; the greatest breadth b lies at the abscissa
-  a + Y(b), not at O; the halves AEB, AFB are equal when Y is even.  Take Y = −cy²/b², so that Oc = c.
-* §222: whatever (single-valued) Y is, the area equals that of the ellipse with axes 2a, 2b: the portion
-  Ace has the area ∫y dY + (a/b)∫y²dy/√(b² − y²) (from y = 0 to b), Bce the same with the opposite sign
-  of the second term and the limits reversed, so AEB = (2a/b)∫y²dy/√(b² − y²) = D, the half ellipse.
-* §223: the moment about AB does not depend on Y either: (1/3)∫y³dx over Ace and Bce gives
-  (2a/3b)∫y⁴dy/√(b² − y²) for AEB, and for the whole figure Db²/2 = ef²D/8, as for the ellipse.
-* §224: the moment about the line aAa through A normal to AB: for Ace, ∫y x² dx with
-  x = a + Y − (a/b)√(b² − y²), expanded into six integrals; for Bce the same with the signs of the odd
-  powers of √(b² − y²) changed and the limits reversed.
-* §225: adding, AEB about aAa = −(4a/b)∫y dY (a+Y)√(b² − y²) + (2a/b)∫y²dy(a+Y)²/√(b² − y²)
-  + (2a³/b³)∫y²dy√(b² − y²) = (2a³/b³)∫y²dy√ + (2a/b)∫(a+Y)²dy√ (by parts, the boundary term vanishes
-  at y = 0 and y = b); with ∫y²dy√(b² − y²) = b³D/8a this is a²D/4 + (2a/b)∫(a+Y)²dy√, and the
-  whole figure has twice as much (printed a²D/2 + (2a/b)∫..., see the errata).
-* §226: the centroid: D·AC = ∫xy dx over AEB = (2a/b)∫(a+Y)dy√(b² − y²); the moment about EF through
-  C is the moment about aAa less 2D·AC², a²D/2 + (4a/b)∫(a+Y)²dy√ − (8a²/b²D)(∫(a+Y)dy√)² (printed
-  with 2a/b, aa/bbD and no square).  For even Y the integrals reduce to ∫y²dy/√(b² − y²) = bD/2a,
-  ∫y²dy√(b² − y²) = b³D/8a, ∫dy√(b² − y²) = bD/2a.
-* §227: Y = −cy²/b²: ∫(a+Y)²dy√ = bD(8a² − 4ac + c²)/16a, ∫(a+Y)dy√ = bD(4a − c)/8a, AC = a − c/4,
-  and the moment about EF is a²D/2 + c²D/8 = AB²D/8 + c²D/8.
-* §228: so, as for the quadrilaterals, the moment about EF grows as ef moves away from the middle O
-  (the text says C).  The
-  curve does not allow c > a/2 (it would cross the line aa); at c = a/2 (Oc = AB/4) the moment is
-  AB²D/8 + AB²D/128, a sixteenth more than the ellipse's.
-
-What the print or its transcription gets wrong (each argued in its erratum, the kind saying which): a fraction bar lost three times in
-§223; the vinculum over the factor x² and a 'dy' in §224; 'dy' for 'dY' in §225 and §226; 'D³' for D
-in §225; the factor 2a/b (for 4a/b) of the whole figure in §225, repeated in §226 together with a lost
-factor 8 and a lost square; ∫y dx for ∫xy dx in §226; c/b for a/b and Oc = a for Oc = c in §227, with
-the three auxiliary integrals of §227 shifted against their values and c·c² D/128 for c²D/8; the
-curve of §227 again in §228, with a for x.
-
-Checking: the integrals with √(b² − y²) are stated once each, closed by the substitution y = b sin θ, and
-the readings are built on them; Y is checked in the general form Y = p|y| + qy² (even, vanishing at 0)
-and in Euler's case Y = −cy²/b².
-
-Witnesses: every figure is declared by its chords and its areas and moments measured by the figure
-witnesses (the chord by the three-point Gauss rule, exact for its integrand of degree at most two in x;
-across the chords tanh-sinh at 50 digits and Gauss–Legendre after a smoothing substitution in float64).
-The one-dimensional integrals of §§225–227 are witnessed by quadrature of their integrands in the same
-two ways.
-"""
+"""What Euler's §§220-228 say and how each formula is derived (see the package's docstring)."""
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum, Holds
-from symfloat.engine.figure_witness import CENTROID, FIGURE_METHODS, Figure, FigureWitness, Over
-from symfloat.engine.floating_witness import PART, Combined
-from symfloat.engine.witness import Case
 from symfloat.model.claim import as_printed
-
 
 y = sp.Symbol("y", real=True)
 th = sp.Symbol("theta", real=True)
@@ -612,81 +557,6 @@ d.quote("sixteenth", "§228", "momentum respectu axis latitudinalis sui parte de
         note=claim("moving ef to Oc = AB/4 increases the moment about EF by a sixteenth of the ellipse's "
                    "(c = 0)."))
 
-# ================================================================ witnesses: the moments of each figure
-# Each figure is declared by its chords, x from the left to the right boundary at the height y (the branches of
-# §221, split at x_c = a + Y(b) into Ace and Bce; the whole figure takes y from -b to b with Y(|y|)), and
-# measured by the figure witness (symfloat.engine.figure_witness): the chord by the three-point Gauss rule, exact
-# for an integrand of degree <= 2 in x, across the chords by quadrature in float64 and at 50 digits.  The
-# one-dimensional integrals of §§225-227 are integrals over the segment 0 <= y <= b.  Nothing of the formulas
-# under test is used.
-XC = CENTROID[0]
-x_ = sp.Symbol("x", real=True)                    # the abscissa AP of the figures
-
-
-def _cases(*rows):
-    return tuple(Case({k: sp.Rational(v) for k, v in params.items()}, label=label) for label, params in rows)
-
-
-def curve_figure(Y, region, whole=False):
-    """The region ('Ace', 'Bce' or 'AEB') of the half y >= 0 of the figure with the function Y (of y >= 0), or
-    the whole figure (y from -b to b, Y taken at |y|)."""
-    at = {y: sp.Abs(y)} if whole else {}
-    left, right, ce = ((a + Y - a * R / b).xreplace(at), (a + Y + a * R / b).xreplace(at), a + Y.subs(y, b))
-    ends = {"Ace": (left, ce), "Bce": (ce, right), "AEB": (left, right)}[region]
-    return Figure.strips(x_, y, -b if whole else 0, b, ends, breaks=(0,) if whole else ())
-
-
-def figure_witness(name, description, targets, cases, figure, quantity):
-    d.witness(FigureWitness(name, description, tuple(targets), cases, figure=figure, coords=(x_, y), quantity=quantity))
-
-
-GEN = _cases(("a = 2, b = 1, Y = |y|/4 + y²/8", {a: 2, b: 1, p: "1/4", q: "1/8"}),
-             ("a = 5/2, b = 3/4, Y = |y|/10 - y²/3", {a: "5/2", b: "3/4", p: "1/10", q: "-1/3"}))
-CFIG = _cases(("a = 2, b = 1, c = 1/2", {a: 2, b: 1, c: "1/2"}),
-              ("a = 5/2, b = 3/4, c = 1", {a: "5/2", b: "3/4", c: 1}))
-AB_ONLY = _cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
-
-for _region in ("Ace", "Bce", "AEB"):
-    figure_witness(f"area-{_region}", f"∫∫ 1 over {_region}", (f"area-{_region}",), GEN,
-                   curve_figure(Yg, _region), Over(1))
-    figure_witness(f"AB-{_region}", f"∫∫ y² over {_region}", (f"AB-{_region}",), GEN,
-                   curve_figure(Yg, _region), Over(y ** 2))
-figure_witness("area-whole", "∫∫ 1 over the whole figure AEBF", ("area-ellipse",), GEN,
-               curve_figure(Yg, "AEB", whole=True), Over(1))
-figure_witness("AB-whole", "∫∫ y² over the whole figure AEBF", ("AB-whole",), GEN,
-               curve_figure(Yg, "AEB", whole=True), Over(y ** 2))
-figure_witness("Aa-Ace", "∫∫ x² over Ace (moment about aAa, x = 0)", ("Aa-Ace-expanded",), GEN,
-               curve_figure(Yg, "Ace"), Over(x_ ** 2))
-figure_witness("Aa-Bce", "∫∫ x² over Bce", ("Aa-Bce-expanded",), GEN, curve_figure(Yg, "Bce"), Over(x_ ** 2))
-figure_witness("Aa-AEB", "∫∫ x² over AEB", ("Aa-AEB", "Aa-AEB-value"), GEN, curve_figure(Yg, "AEB"), Over(x_ ** 2))
-figure_witness("Aa-whole", "∫∫ x² over the whole figure", ("Aa-whole",), GEN,
-               curve_figure(Yg, "AEB", whole=True), Over(x_ ** 2))
-figure_witness("first-moment", "∫∫ x over AEB (D·AC)", ("DAC-definition", "DAC"), GEN, curve_figure(Yg, "AEB"),
-               Over(x_))
-figure_witness("centroid", "x_C of AEB", ("AC",), GEN, curve_figure(Yg, "AEB"), XC)
-figure_witness("moment-EF", "∫∫ (x - x_C)² over the whole figure, x_C its centroid", ("moment-EF",), GEN,
-               curve_figure(Yg, "AEB", whole=True), Over((x_ - XC) ** 2))
-figure_witness("centroid-c", "x_C of AEB, Y = -cy²/b²", ("AC-c",), CFIG, curve_figure(Yc, "AEB"), XC)
-figure_witness("moment-EF-c", "∫∫ (x - x_C)² over the whole figure, Y = -cy²/b²", ("moment-EF-c",), CFIG,
-               curve_figure(Yc, "AEB", whole=True), Over((x_ - XC) ** 2))
-figure_witness("moment-EF-half", "∫∫ (x - x_C)² over the figure with c = a/2", ("moment-EF-half",), AB_ONLY,
-               curve_figure(Yc.subs(c, a / 2), "AEB", whole=True), Over((x_ - XC) ** 2))
-d.witness(Combined("sixteenth", "(K(c = a/2) - K(c = 0))/K(c = 0), both moments measured", ("sixteenth",), AB_ONLY,
-                   parts=tuple(FigureWitness("", "", (), (), figure=curve_figure(Yc.subs(c, cv), "AEB", whole=True),
-                                             coords=(x_, y), quantity=Over((x_ - XC) ** 2)) for cv in (a / 2, 0)),
-                   values=((PART[0] - PART[1]) / PART[1],), methods=FIGURE_METHODS))
-
-
-def line_witness(name, targets, cases, g, text):
-    figure_witness(name, f"∫_0^b {text} dy by quadrature", targets, cases, Figure.interval(y, 0, b), Over(g))
-
-
-line_witness("U0", ("reduce-U0", "U0-value"), AB_ONLY, R, "√(b² - y²)")
-line_witness("U2", ("U2-value", "reduce-U2", "U2-value-c"), AB_ONLY, y ** 2 * R, "y²√(b² - y²)")
-line_witness("U4", ("U4-value",), AB_ONLY, y ** 4 * R, "y⁴√(b² - y²)")
-line_witness("V2", ("reduce-V2",), AB_ONLY, y ** 2 / R, "y²/√(b² - y²)")
-line_witness("S2c", ("S2c-expanded", "S2c-value"), CFIG, (a + Yc) ** 2 * R, "(a - cy²/b²)²√(b² - y²)")
-line_witness("S1c", ("S1c-value",), CFIG, (a + Yc) * R, "(a - cy²/b²)√(b² - y²)")
 
 d.quote("even-Y", "§221", r"ut curva haec ad utramque partem axis AB duas habeat partes AEB et AFB similes et "
         r"aequales, necesse est ut Y sit functio par ipsius y",
