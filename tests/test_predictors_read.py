@@ -87,7 +87,7 @@ def test_scheeffer_x_locates_the_roots_of_171_as_read():
 
 def test_scheeffer_iv_v_tilts_from_54_and_55_as_read():
     import sympy as sp
-    _, iv = load("scheeffer-iv-v")
+    iv = load("scheeffer-iv-v")[1].predictors
     # (54): tg^2 phi_1 = F_1 b^2 s(1-s)/T_1 - 2; the unit square base (F_1 = 1, T_1 = 1/12), b = 2, s = 1/2: 12 - 2
     assert iv.TAN2_54(1, 2, Fraction(1, 12), Fraction(1, 2)) == 10
     # (55): b(1-s)/u_m for s > 1/2, b s/u'_m below; exact with an irrational u_m (the half diagonal 1/sqrt 2)
