@@ -13,7 +13,8 @@ import sympy as sp
 from symfloat.model.prediction import Scene
 from symfloat.registry import load
 
-D, CF = load("scheeffer-vi-cf")
+D, _PACKAGE = load("scheeffer-vi-cf")
+CF, CF_SYMBOLS = _PACKAGE.predictors, _PACKAGE.statements
 
 
 def test_an_evaluator_is_exact_on_rationals_and_float_otherwise():
@@ -28,14 +29,14 @@ def test_an_evaluator_is_exact_on_rationals_and_float_otherwise():
 def test_the_correction_is_read_when_asked():
     # (81a) prints tg^2 phi_1 = 2 {b s (1 - s) - 1}; the erratum reads 6 for the scan's b: at s = 1/2 and b = 1
     # the print gives 2 (1/4 - 1) = -3/2, the correction 2 (6/4 - 1) = 1
-    s, b = CF.s, CF.b
+    s, b = CF_SYMBOLS.s, CF_SYMBOLS.b
     assert D.evaluator("81a", (b, s), 1)(1, Fraction(1, 2)) == sp.Rational(-3, 2)
     assert D.evaluator("81a", (s,), 1, corrected=True)(Fraction(1, 2)) == 1
 
 
 def test_the_evaluator_follows_a_mutated_reading():
     # mutation: 6 s (1 - s) -> 5 s (1 - s) in (75); at a/b = 1/2, s = 3/10 the margin becomes 1/4 - 105/100
-    a, b, s = CF.a, CF.b, CF.s
+    a, b, s = CF_SYMBOLS.a, CF_SYMBOLS.b, CF_SYMBOLS.s
     d = copy.copy(D)
     d.printed = [dataclasses.replace(p, reading=((a / b) ** 2 - 5 * s * (1 - s), p.reading[1])) if p.name == "75"
                  else p for p in D.printed]
@@ -45,7 +46,7 @@ def test_the_evaluator_follows_a_mutated_reading():
 def test_a_member_with_other_quantities_is_refused():
     # (87-cos2), member 0 is T_1 itself with F_1: asking for it in r alone names what is missing
     with pytest.raises(ValueError, match="depends on"):
-        D.evaluator("87", (CF.r,), 1)
+        D.evaluator("87", (CF_SYMBOLS.r,), 1)
 
 
 def test_the_ngon_evaluators_are_the_printed_closed_forms():
@@ -87,7 +88,7 @@ def test_scheeffer_x_locates_the_roots_of_171_as_read():
 
 def test_scheeffer_iv_v_tilts_from_54_and_55_as_read():
     import sympy as sp
-    _, iv = load("scheeffer-iv-v")
+    iv = load("scheeffer-iv-v")[1].predictors
     # (54): tg^2 phi_1 = F_1 b^2 s(1-s)/T_1 - 2; the unit square base (F_1 = 1, T_1 = 1/12), b = 2, s = 1/2: 12 - 2
     assert iv.TAN2_54(1, 2, Fraction(1, 12), Fraction(1, 2)) == 10
     # (55): b(1-s)/u_m for s > 1/2, b s/u'_m below; exact with an irrational u_m (the half diagonal 1/sqrt 2)

@@ -13,7 +13,7 @@ from symfloat.geometry.floating import box, floating_state, right_prism
 from symfloat.model.source import SOURCES
 from symfloat.registry import load
 
-D, MODULE = load("scheeffer-vi-cf")
+D, PACKAGE = load("scheeffer-vi-cf")
 TEXT = SOURCES["scheeffer"].text()
 
 
@@ -242,7 +242,7 @@ def test_the_height_of_BOC_lies_at_the_central_angle_from_MN():
     assert (f.locator, f.erratum["kind"], f.erratum["confidence"]) == ("VI.E", "misprint", "low")
     # mutation: the edge OB (at alpha/2 from MN) in place of the height OQ must not satisfy the correction
     p = next(q for q in D.printed if q.name == "height-OV")
-    al, r = MODULE.alph, MODULE.r
+    al, r = PACKAGE.statements.alph, PACKAGE.statements.r
     ob = sp.Matrix([sp.cos(al / 2), sp.sin(al / 2)]) * r
     wrong = dataclasses.replace(p.erratum, corrected_reading=(
         sp.Matrix([ob[0] * sp.sin(al) - ob[1] * sp.cos(al), ob[0] * sp.cos(al) + ob[1] * sp.sin(al)]),
