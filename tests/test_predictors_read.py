@@ -97,7 +97,7 @@ def test_scheeffer_iv_v_tilts_from_54_and_55_as_read():
 
 
 def test_scheeffer_vi_ab_predictors_read_65_64_70_73():
-    _, ab = load("scheeffer-vi-ab")
+    ab = load("scheeffer-vi-ab")[1].predictors
     # a = 1, b = 2 (q = (a/b)^2 = 1/4), s = 3/10, s(1-s) = 21/100: (65) I: 1/4 - 252/100 = -227/100; (65) II, lower
     # row: q - 3/2 s (8 - 9 s) = 1/4 - 477/200 = -427/200; (64), lower row: 6 s (2 - 3 s) - q = 198/100 - 1/4
     assert ab.MARGIN_65(1, 2, Fraction(3, 10)) == sp.Rational(-227, 100)

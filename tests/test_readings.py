@@ -224,5 +224,5 @@ def test_cli_prints_the_readings(capsys, monkeypatch):
     monkeypatch.chdir(ROOT)
     main(["coverage", "hasab", "--readings"])
     from symfloat.registry import load
-    quotes = len(load("hasab")[0].printed)       # every printed formula of symfloat/derivations/hasab.py
+    quotes = len(load("hasab")[0].printed)       # every printed formula of derivations/hasab/
     assert f"readings: {quotes} quotes" in capsys.readouterr().out

@@ -1,29 +1,7 @@
-"""Scheeffer 1902, section VI (opening), A and B: the regular polygon, the regular triangular prism and
-the circular cylinder floating with vertical axis, in the first rotation region (no base cut).
-
-Geometry (derived here, not quoted): a right prism (base F, height b, density s) floats upright with the
-submerged height b s; tilted by phi about a horizontal axis through the centre O of the waterplane, the
-water plane is z = b s + x tan(phi) in body coordinates (z along the axis from the bottom, x across the
-rotation axis).  As long as it cuts no base, the submerged part is the set 0 <= z <= b s + x tan(phi) over
-F, whose volume, centroid and righting arm follow from the area, first and second moments of F
-(integrated here over the equilateral triangle and the disc).  The witnesses clip the real polyhedra
-(symfloat.geometry.floating) and float the real cylinder (Body.cylinder, quadrature of exact slices), and
-find equilibria as roots of the measured righting arm; the first-region model of the triangle (column
-heights not cut by the bases) is the clipped prism extended on either side with a neutral lower part.
-"""
-
-import math
-from fractions import Fraction
-
-import mpmath
-import numpy as np
+"""What Scheeffer's VI (opening), VI.A and VI.B say and how each formula is derived (see the package's docstring)."""
 import sympy as sp
 
-from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Prediction
-from symfloat.engine.floating_witness import (FLOATING_METHODS, MEASURED, PART, Body, Combined, FloatingRootWitness,
-                                              FloatingWitness, Joined, Loaded, Root, waterplane_moment)
-from symfloat.engine.witness import Case, Precision
-from symfloat.geometry.floating import polygon_moments
+from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
 
 
@@ -599,9 +577,9 @@ d.step("example-4-top", Eq(B68, sp.simplify(sol68[0])), "definition",
 d.step("example-4-top-check", ((b * (1 - s) / (a / sq3 * sp.sin(pi / 6 + om))).subs(om, w4).subs(b, a * sp.sqrt(B68)) ** 2,
                                t4 ** 2), "substitution", uses=("example-4-top", "dipping-distance-value"))
 eq4 = Eq((24 * Bsq * s * (1 - s) - 2).subs(Bsq, sol68[0]), t4 ** 2)
-s4 = [e for e in sp.solve(eq4, s) if 0 < e < 1]
-assert len(s4) == 1
-s4 = s4[0]
+s4_roots = [e for e in sp.solve(eq4, s) if 0 < e < 1]
+assert len(s4_roots) == 1
+s4 = s4_roots[0]
 q4 = 1 / sp.sqrt(sol68[0].subs(s, s4))
 d.step("example-4-density", (sp.Subs(full(24 * B68 * s * (1 - s) - 2), s, s4), t4 ** 2), "substitution",
        uses=("example-4-top", "tilted-equilibrium-54"), note="t_1 = tan 30 deg with (b/a)^2 = B_68 (sympy.solve)")
@@ -737,13 +715,13 @@ d.quote("ex6-root", "Example 6", r"\sqrt{1 - \frac{1}{2} \cdot \left(\frac{2}{b}
                         corrected_reading=as_printed(lambda: (sp.sqrt(1 - (2 * r / b) ** 2 / 2).subs(sq_), sp.sqrt(sp.Rational(1, 2)))),
                         same_as="scheeffer-vi-ab/ex6-ratio"))
 sC_hi1, sC_lo1 = (e.subs(sq_) for e in (_rootsC[1], _rootsC[0]))
-for name, exc, val, printed in (
+for ex6_name, ex6_words, ex6_value, ex6_printed in (
         ("ex6-root-value", r"\sqrt{0,50} = 0,7071", 2 * sC_hi1 - 1, "0.7071"),
         ("ex6-sum", r"1 + \sqrt{0,50} = 1,7071", 2 * sC_hi1, "1.7071"),
         ("ex6-difference", r"1 - \sqrt{0,50} = 0,2929", 2 * sC_lo1, "0.2929"),
         ("ex6-upper", r"folglich entweder  $s > 0,8536$", sC_hi1, "0.8536"),
         ("ex6-lower", r"oder  $s < 0,1464$", sC_lo1, "0.1464")):
-    d.quote(name, "Example 6", exc, reading=(val, sp.Rational(printed)), tolerance=PRINTED_DIGITS,
+    d.quote(ex6_name, "Example 6", ex6_words, reading=(ex6_value, sp.Rational(ex6_printed)), tolerance=PRINTED_DIGITS,
             note="2r = b: the density roots s_+, s_- of (71) (and 2 s_+ - 1, 2 s_+, 2 s_-)")
 
 d.quote("cylinder-turns", "VI.B",
@@ -790,8 +768,7 @@ d.quote("73", "(73)",
 # Example 7: 2r = b, s < 1/2
 res = d.results()
 hC_e, tanC_e, LbotC_e, LtopC_e = (full(k) for k in (hC, tanC, LbotC, LtopC))
-s_b = [e for e in sp.solve(Eq((LbotC_e ** 2 - tanC_e ** 2).subs(sq_), 0), s)]
-s_b = sorted(s_b, key=lambda e: float(e))
+s_b = sorted(sp.solve(Eq((LbotC_e ** 2 - tanC_e ** 2).subs(sq_), 0), s), key=lambda e: float(e))
 d.step("example-7-bottom", (full(LbotC ** 2 - tanC ** 2).subs(sq_).subs(s, s_b[0]), 0), "substitution",
        note="the density at which the tilted equilibrium meets the bottom limit, 2r = b (sympy.solve)")
 d.quote("ex7-conditions", "Example 7", r"$$8s(1-s) > 1 > 2s(4-5s)$$",
@@ -809,15 +786,18 @@ d.quote("ex7-lower", "Example 7", r"$$s > \frac{1}{2} \left(1 - \sqrt{\frac{1}{2
         reading=(sC_lo1, (1 - sp.sqrt(sp.Rational(1, 2))) / 2, sp.Rational("0.146")), tolerance=PRINTED_DIGITS)
 d.quote("ex7-second", "Example 7", r"ergibt sich  $(s - 0,4)^2 > 0,06$",
         reading=((s - sp.Rational(2, 5)) ** 2 - sp.Rational(6, 100), full((LbotC ** 2 - tanC ** 2) * K2 / 20).subs(sq_)))
-for name, exc, val, printed in (
+for root_name, root_words, root_value, root_printed in (
         ("ex7-root", r"$\sqrt{0,06} = 0,245$", sp.Rational(2, 5) - s_b[0], "0.245"),
         ("ex7-plus", r"$$0,4 + \sqrt{0,06} = 0,645$$", s_b[1], "0.645"),
         ("ex7-minus", r"$$0,4 - \sqrt{0,06} = 0,155$$", s_b[0], "0.155")):
-    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=PRINTED_DIGITS,
+    d.quote(root_name, "Example 7", root_words, reading=(root_value, sp.Rational(root_printed)),
+            tolerance=PRINTED_DIGITS,
             note="roots s of (2r/b)^2 = 2 s (4 - 5 s) at 2r = b (0.4 -+ sqrt 0.06)")
-for name, exc, val, printed in (("ex7-range-lower", "zwischen 0,146", sC_lo1, "0.146"),
-                                ("ex7-range-upper", "und 0,155 liegen", s_b[0], "0.155")):
-    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=PRINTED_DIGITS,
+for range_name, range_words, range_value, range_printed in (
+        ("ex7-range-lower", "zwischen 0,146", sC_lo1, "0.146"),
+        ("ex7-range-upper", "und 0,155 liegen", s_b[0], "0.155")):
+    d.quote(range_name, "Example 7", range_words, reading=(range_value, sp.Rational(range_printed)),
+            tolerance=PRINTED_DIGITS,
             note="'Folglich muss der Wert von s zwischen 0,146 und 0,155 liegen': right; below 0.146 the "
                  "cylinder floats upright stably, above 0.155 the lower base emerges before the tilted "
                  "equilibrium is reached")
@@ -826,15 +806,17 @@ d.quote("ex7-both", "Example 7", r"$$8s(1-s) > 1 \quad \text{und} \quad 1 > 2s(4
         reading=(sp.Matrix([8 * s * (1 - s) - 1, 1 - 2 * s * (4 - 5 * s)]),
                  sp.Matrix([full(-16 * s / b * hC).subs(sq_), full((LbotC ** 2 - tanC ** 2) * K2 / 2).subs(sq_)])),
         note="margins of (73) at 2r = b, as the line before")
-for name, exc, val, printed in (
+for side_name, side_words, side_value, side_printed in (
         ("ex7-either", r"$$\text{also entweder } s > 0,4 + \sqrt{0,06}$$", s_b[1],
          as_printed(lambda: sp.Rational(4, 10) + sp.sqrt(sp.Rational(6, 100)))),
         ("ex7-or", r"$$\text{oder } s < 0,4 - \sqrt{0,06}$$", s_b[0],
          as_printed(lambda: sp.Rational(4, 10) - sp.sqrt(sp.Rational(6, 100))))):
-    d.quote(name, "Example 7", exc, reading=(val, printed),
+    d.quote(side_name, "Example 7", side_words, reading=(side_value, side_printed),
             note="the roots of 1 = 2 s (4 - 5 s) (the bottom limit met, 2r = b), between which the margin is negative")
-for name, exc, val, printed in (("ex7-not", r"$s > 0,645$", s_b[1], "0.645"), ("ex7-only", r"$s < 0,155$", s_b[0], "0.155")):
-    d.quote(name, "Example 7", exc, reading=(val, sp.Rational(printed)), tolerance=PRINTED_DIGITS,
+for claim_name, claim_words, claim_value, claim_printed in (("ex7-not", r"$s > 0,645$", s_b[1], "0.645"),
+                                                         ("ex7-only", r"$s < 0,155$", s_b[0], "0.155")):
+    d.quote(claim_name, "Example 7", claim_words, reading=(claim_value, sp.Rational(claim_printed)),
+            tolerance=PRINTED_DIGITS,
             note="the roots 0.4 -+ sqrt 0.06 rounded; s > 0.645 contradicts s < 1/2")
 # Example 8
 ex8 = {r: 30, b: 40, s: sp.Rational(3, 4)}
@@ -987,472 +969,3 @@ d.quote("ex10-dry-cm", "Example 10", "der ganzen Höhe oder 45 cm",
         reading=(250 * (1 - x10 / sp.Rational(5, 2)), 45), tolerance=sp.Rational(1, 2),
         erratum=Erratum("consequential", "high", "6 cm (6.2 cm)", cons + "; 250 cm * 0.0248 = 6.2 cm",
                         corrected_reading=(250 * (1 - x10 / sp.Rational(5, 2)), 6)))
-
-
-# =====================================================================================================
-# Witnesses: clipped polyhedra (symfloat.geometry.floating) and the floating cylinder (Body.cylinder)
-# =====================================================================================================
-# ---- floating witnesses of the triangular prism (symfloat.engine.floating_witness) ------------------------
-# the triangle B C A of the text (edge a, centre O at the origin, A on the +Y axis), the prism of height b along z;
-# tilted by psi about the axis PQ at the angle omega with OB, the side n (vertex B's side) dipping
-PSI = sp.Symbol("psi")
-U_OM = sp.Matrix([sp.cos(om), sp.sin(om), 0])           # the normal of the axis at the angle omega (u of (44))
-N_DIP = sp.Matrix([-sp.sin(om), -sp.cos(om), 0])
-UP = sp.cos(PSI) * sp.Matrix([0, 0, 1]) - sp.sin(PSI) * N_DIP
-ARM = (sp.cos(PSI) * N_DIP + sp.sin(PSI) * sp.Matrix([0, 0, 1])).dot(
-    sp.Matrix([MEASURED[f"B - G, {k}"] for k in "xyz"]))  # B - G horizontally towards the dip: the righting arm
-TOP, BOT = MEASURED["upper base above water"], MEASURED["lower base above water"]
-GM, VOL = MEASURED["metacentric height"], MEASURED["immersed volume"]
-HALF = sp.Rational(1, 2)
-
-
-def _triangle(edge, height):
-    return Body.prism(((-edge / 2, -edge / (2 * sq3)), (edge / 2, -edge / (2 * sq3)), (0, edge / sq3)), height)
-
-
-def fw(name, description, targets, cases, quantity, body=None, up=(0, 0, 1), density=s):
-    """A quantity of the floating prism (upright unless *up* is given)."""
-    d.witness(FloatingWitness(name, description, tuple(targets), tuple(cases), body=body or _triangle(a, b),
-                              up=tuple(up), density=density, quantity=quantity))
-
-
-def tilted(name, description, targets, cases, quantity, vanish=ARM, body=None, **kw):
-    """A quantity at the first zero of *vanish* (the righting arm: the tilted equilibrium) as the tilt grows."""
-    d.witness(_root_witness(name, description, targets, cases, quantity, vanish, body, **kw))
-
-
-TILTS = (sp.Rational(1, 50), sp.Rational(3, 2))          # the bracket of a tilt, scanned in 30 steps
-
-
-def first_tilt(vanish):
-    """The first zero of *vanish* as the tilt grows (a base's contact, the tilted equilibrium)."""
-    return Root.scan(vanish, PSI, *TILTS, 30)
-
-
-def _root_witness(name, description, targets, cases, quantity, vanish, body=None, at=None, up=UP, density=s,
-                  along=PSI, bracket=TILTS, steps=30, roots=(), **kw):
-    """*quantity* at the first zero of *vanish* along *along* (scanned in *steps* steps over *bracket*), *roots*
-    found at each trial value first (a zero inside a zero); *at*: values of the example (the axis omega) put into
-    the up vector and the quantities."""
-    put = (lambda e: e.xreplace(at) if at and isinstance(e, sp.Basic) else e)     # noqa: E731
-    return FloatingRootWitness(name, description, tuple(targets), tuple(cases), body=body or _triangle(a, b),
-                               up=tuple(put(c) for c in up), density=density, quantity=put(quantity),
-                               roots=((along, Root.scan(put(vanish), along, *bracket, steps, roots=roots)),), **kw)
-
-
-# (56): an isosceles trapezoid (symmetric about the Y axis, not regular); T_x = int y^2, T_y = int x^2 about its
-# centroid (polygon_moments, exact)
-TRAP = ((-2, 0), (2, 0), (1, 3), (-1, 3))
-_, _, ((TRAP_TY, _), (_, TRAP_TX)) = polygon_moments([(sp.Integer(x_), sp.Integer(y_)) for x_, y_ in TRAP])
-fw("trapezoid-moments", "moment of a symmetric trapezoid about axes through its centroid (clipped waterplane)",
-   ("56",), [Case({Tx: TRAP_TX, Ty: TRAP_TY, om: w_}, label=f"omega = {w_}") for w_ in (sp.Rational(2, 5), 1)],
-   waterplane_moment(U_OM, U_OM), body=Body.prism(TRAP, 1), density=HALF)
-d.witness(Joined("regular-polygon-moments", "moments of regular polygons about a turned axis (clipped waterplane)",
-                 ("regular-polygon-theorem",),
-                 (Case({a: 1, om: sp.Rational(1, 3)}), Case({a: sp.Rational(3, 2), om: 1})),
-                 parts=tuple(FloatingWitness(f"{n}-gon", "", (), (), body=Body.regular(n, a, 1), density=HALF,
-                                             quantity=waterplane_moment(U_OM, U_OM)) for n in NGONS)))
-
-up_cases = [Case({a: 1, b: 1, s: sp.Rational(1, 2)}, label="labile"), Case({a: 2, b: 1, s: sp.Rational(4, 5)}, label="stable"),
-            Case({a: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 4)})]
-fw("triangle-upright-57", "24 s/b times the metacentric height of the clipped upright prism", ("57", "65-I"), up_cases,
-   24 * s / b * GM)
-fw("triangle-upright-58", "2 s/b times the metacentric height of the clipped upright prism", ("58",), up_cases,
-   2 * s / b * GM)
-fw("triangle-upright-moment", "displacement times metacentric height (clipped upright prism)",
-   ("triangle-condition",), up_cases, VOL * GM)
-
-tilt_cases = [Case({a: sp.Rational(83, 50), b: 1, s: sp.Rational(11, 20), om: sp.Rational(1, 5)}, label="II, s > 1/2"),
-              Case({a: sp.Rational(33, 20), b: 1, s: sp.Rational(2, 5), om: sp.Rational(9, 10)}, label="II, s < 1/2")]
-tilted("triangle-tilted-equilibrium", "tan of the tilt where the righting arm of the clipped prism vanishes",
-       ("60-tan", "ex3-tan"), tilt_cases, sp.tan(PSI))
-tilted("triangle-tilted-equilibrium-squared", "the same, squared", ("65-tan",), tilt_cases, sp.tan(PSI) ** 2)
-lim_cases = [Case({a: 1, b: 1, s: sp.Rational(3, 5), om: sp.Rational(3, 10)}),
-             Case({a: sp.Rational(3, 2), b: 2, s: sp.Rational(7, 10), om: 1})]
-tilted("triangle-top-contact", "tan of the tilt at which the clipped prism's top base meets the water",
-       ("60-bound",), lim_cases, sp.tan(PSI), TOP)
-tilted("triangle-top-contact-distance", "b(1-s) over the measured contact tangent: the distance of the dipping vertex",
-       ("59",), lim_cases, b * (1 - s) / sp.tan(PSI), TOP)
-tilted("triangle-first-contact", "tan of the tilt at which either base of the clipped prism meets the water",
-       ("60-one-base",), [Case({}, label="a = b = 1, s = 3/5, omega = 0")], sp.tan(PSI), sp.Min(TOP, -BOT),
-       body=_triangle(1, 1), density=sp.Rational(3, 5), at={om: 0})
-
-
-# ---- the cylinder: Body.cylinder (quadrature of exact slices, symfloat.engine.floating_witness) --------------
-# axis z, centred, tilted by psi towards +x: the side -x dips, the righting arm is B - G horizontally towards it
-UP_C = (sp.sin(PSI), 0, sp.cos(PSI))
-ARM_C = -sp.cos(PSI) * MEASURED["B - G, x"] + sp.sin(PSI) * MEASURED["B - G, z"]
-R = sp.Symbol("R", positive=True)                   # a radius sought, b = 1
-
-
-def cyl(name, description, targets, cases, quantity, body=Body.cylinder(r, b), density=s):
-    """A quantity of the upright cylinder."""
-    d.witness(FloatingWitness(name, description, tuple(targets), tuple(cases), body=body, density=density,
-                              quantity=quantity))
-
-
-def cyl_root(name, description, targets, cases, quantity, vanish=ARM_C, body=Body.cylinder(r, b), up=UP_C,
-             density=s, along=PSI, bracket=TILTS, steps=30, roots=(), **kw):
-    """A quantity of the cylinder at the first zero of *vanish* (the righting arm: the tilted equilibrium) as the
-    tilt grows, or along ``along``; *roots* found at each trial value first."""
-    return FloatingRootWitness(name, description, tuple(targets), tuple(cases), body=body, up=up, density=density,
-                               quantity=quantity,
-                               roots=((along, Root.scan(vanish, along, *bracket, steps, roots=roots)),), **kw)
-
-
-cyl_cases = [Case({r: 1, b: 1, s: sp.Rational(1, 2)}), Case({r: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 5)}),
-             Case({r: sp.Rational(1, 2), b: 2, s: sp.Rational(9, 10)})]
-cyl("cylinder-upright-69", "16 s/b times the metacentric height of the upright cylinder", ("69", "70"), cyl_cases,
-    16 * s / b * GM)
-cyl("cylinder-upright-72", "-16 s/b times the metacentric height", ("72",), cyl_cases, -16 * s / b * GM)
-cyl("cylinder-upright-gm", "metacentric height of the upright cylinder", ("cylinder-condition",), cyl_cases, GM)
-d.witness(FloatingWitness("cylinder-polygon-gm", "metacentric height of the inscribed regular 256-gon prism (exact "
-                          "clipping; its area and moment fall short by (2 pi/256)^2/6 = 1e-4)", ("cylinder-condition",),
-                          tuple(cyl_cases), body=Body.regular(256, 2 * r * sp.sin(pi / 256), b), density=s,
-                          quantity=GM, methods=(Precision(15, 1e-3),)))
-tiltc_cases = [Case({r: sp.Rational(8, 5), b: sp.Rational(5, 2), s: sp.Rational(3, 5)}, label="example 10"),
-               Case({r: sp.Rational(1, 2), b: 1, s: sp.Rational(3, 20)}, label="square section, s = 0.15")]
-d.witness(cyl_root("cylinder-tilted-equilibrium", "tan^2 of the tilt where the cylinder's righting arm vanishes",
-                   ("72a-tan",), tiltc_cases, sp.tan(PSI) ** 2))
-
-# ---- worked examples: the printed numbers that are geometric quantities ------------------------------------
-one = [Case({}, label="the example's data")]
-
-
-# the examples' data are in the bodies: a root along the aspect ratio Q = a/b (b = 1) or along the density
-Q = sp.Symbol("Q", positive=True)
-tilted("example-1", "a/b at which the clipped upright prism (s = 0.8) has zero metacentric height",
-       ("ex1-root", "ex1-value"), one, Q, GM, body=_triangle(Q, 1), up=(0, 0, 1), density=sp.Rational(4, 5), along=Q,
-       bracket=(sp.Rational(6, 5), 2), steps=16)
-for nm, description, tg, quantity, lo, hi in (
-        ("example-2-upper", "density of zero metacentric height, a = b (clipped prism), upper", "ex2-upper", s,
-         HALF, sp.Rational(99, 100)),
-        ("example-2-lower", "the same, lower", "ex2-lower", s, sp.Rational(1, 100), HALF),
-        ("example-2-root", "2 s_+ - 1 from the measured density", "ex2-root-value", 2 * s - 1, HALF,
-         sp.Rational(99, 100)),
-        ("example-2-radicand", "2 s_+ - 1, the root of the radicand, from the measured density", "ex2-two-thirds",
-         2 * s - 1, HALF, sp.Rational(99, 100))):
-    tilted(nm, description, (tg,), one, quantity, GM, body=_triangle(1, 1), up=(0, 0, 1), along=s, bracket=(lo, hi),
-           steps=49)
-
-
-tilted("example-3-angle", "equilibrium tilt of the clipped prism at s = 2/3, a/b = sqrt(5/2), degrees", ("ex3-angle",),
-       one, 180 * PSI / pi, body=_triangle(sp.sqrt(Q60_3), 1), density=sp.Rational(2, 3), at={om: pi / 3})
-
-
-EX4 = {"body": _triangle(12 * sp.sqrt(2) / 11, 1), "density": sp.Rational(7, 11), "at": {om: pi / 12}}
-d.witness(Joined("example-4",
-                 "clipped prism at the example's answer: equilibrium and contact tangents (omega = 15 deg)", ("67",),
-                 (Case({a: 12 * sp.sqrt(2) / 11, b: 1, s: sp.Rational(7, 11)}),),
-                 parts=(_root_witness("equilibrium", "", (), (), sp.tan(PSI), ARM, **EX4),
-                        _root_witness("top contact", "", (), (), sp.tan(PSI), TOP, **EX4))))
-d.witness(cyl_root("example-5", "2r/b at which the upright cylinder (s = 1/2) has zero metacentric height",
-                   ("ex5", "sqrt2"), one, 2 * R, GM, body=Body.cylinder(R, 1), up=(0, 0, 1), density=HALF, along=R,
-                   bracket=(HALF, sp.Rational(3, 2)), steps=20))
-SQUARE = Body.cylinder(HALF, 1)                     # examples 6, 7: 2r = b
-for nm, tg, quantity, lo, hi, steps in (
-        ("example-6-root", "ex6-root-value", 2 * s - 1, HALF, sp.Rational(99, 100), 49),
-        ("example-6-sum", "ex6-sum", 2 * s, HALF, sp.Rational(99, 100), 49),
-        ("example-6-difference", "ex6-difference", 2 * s, sp.Rational(1, 100), sp.Rational(49, 100), 24),
-        ("example-6-upper", "ex6-upper", s, HALF, sp.Rational(99, 100), 49),
-        ("example-6-lower", "ex6-lower", s, sp.Rational(1, 100), sp.Rational(49, 100), 24),
-        ("example-7-lower", "ex7-lower", s, sp.Rational(1, 100), sp.Rational(49, 100), 24),
-        ("example-7-range-lower", "ex7-range-lower", s, sp.Rational(1, 100), sp.Rational(49, 100), 24)):
-    d.witness(cyl_root(nm, "density of zero metacentric height of the upright cylinder with 2r = b", (tg,), one,
-                       quantity, GM, body=SQUARE, up=(0, 0, 1), along=s, bracket=(lo, hi), steps=steps))
-
-# example 7: the density at which the tilted equilibrium reaches the lower base (2r = b, s < 1/2): the righting
-# arm vanishes where the lower base meets the water (the tilt of that contact found at each trial density)
-NESTED = (FLOATING_METHODS[0], Precision(30, 1e-20))   # a zero inside a zero: 30 digits (40 cost minutes)
-EX7 = {"body": SQUARE, "along": s, "bracket": (sp.Rational(37, 250), sp.Rational(33, 200)), "steps": 1,
-       "roots": ((PSI, first_tilt(BOT)),), "methods": NESTED}
-d.witness(cyl_root("example-7-minus", "density at which the tilted equilibrium of the cylinder reaches the lower base",
-                   ("ex7-minus", "ex7-range-upper"), one, s, ARM_C, **EX7))
-d.witness(cyl_root("example-7-root", "0.4 minus that density", ("ex7-root",), one, sp.Rational(2, 5) - s, ARM_C,
-                   **EX7))
-
-# example 10: the tilted equilibrium of r = 1.6, b = 2.5, s = 0.6; x, the water's height on the dipping side line
-# above the lower base, is b minus the upper base's lowest point above water over cos(psi)
-EX10 = {"body": Body.cylinder(sp.Rational(8, 5), sp.Rational(5, 2)), "density": sp.Rational(3, 5)}
-X10 = sp.Rational(5, 2) - TOP / sp.cos(PSI)
-for nm, description, tg, quantity in (
-        ("example-10-angle", "equilibrium tilt of the cylinder, degrees", ("ex10-angle",), 180 * PSI / pi),
-        ("example-10-x", "water height on the dipping side line", ("ex10-x-sum", "ex10-x"), X10),
-        ("example-10-fraction", "the same over b", ("ex10-fraction", "ex10-deepest"), X10 / sp.Rational(5, 2)),
-        ("example-10-dry", "the part above water, over b", ("ex10-dry",), 1 - X10 / sp.Rational(5, 2)),
-        ("example-10-dry-cm", "the part above water in cm", ("ex10-dry-cm",), 100 * (sp.Rational(5, 2) - X10))):
-    d.witness(cyl_root(nm, description, tg, one, quantity, **EX10))
-
-
-# at s = 11/20, (a/b)^2 = 11/5 (region III): the righting arm of the clipped prism at the first contact of a base,
-# for the axis omega_x where both contacts coincide
-tilted("region-III-counterexample", "righting arm at the first base contact, clipped prism", ("65-III-claim",),
-       one, ARM, sp.Min(TOP, -BOT), body=_triangle(sp.sqrt(sp.Rational(11, 5)), 1), density=sp.Rational(11, 20),
-       at={om: sp.atan((2 - 3 * sp.Rational(11, 20)) / (sq3 * sp.Rational(11, 20)))})
-
-
-# =====================================================================================================
-# Witnesses for the limits (61)-(65), (71)-(73) and examples 3, 4, 8, 9
-# =====================================================================================================
-def _boundary(s_value, quantity, which, *declared):
-    """The (a/b)^2 = Q (b = 1) at which the clipped prism's tilted equilibrium reaches the contact of a base for
-    the axis omega = 60 deg: the zero along Q of the righting arm read at the first contact (which = TOP: the
-    upper base, vertex B dipping; BOT: the lower base, B rising).  *quantity* is read there, an expression in Q
-    and the case (the upright body at that Q serves only to read it); *declared*: name, description, targets,
-    cases of a witness of its own."""
-    flip = {om: pi / 3} if which == TOP else {om: pi / 3 + pi}      # B rising: the axis turned half round
-    return _root_witness(*(declared or ("boundary", "", (), ())), quantity, ARM, body=_triangle(sp.sqrt(Q), 1),
-                         density=s_value, at=flip, along=Q, steps=8,
-                         bracket=(6 * s_value * (1 - s_value), 12 * s_value * (1 - s_value) * 999 / 1000),
-                         roots=((PSI, first_tilt(which)),))
-
-
-q60_cases = [Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20)}, label="s = 0.55, (a/b)^2 = 2.25"),
-             Case({a: 3, b: 2, s: sp.Rational(9, 20)}, label="s = 0.45, (a/b)^2 = 2.25")]
-QQ = (a / b) ** 2
-d.witness(Joined("triangle-omega60-boundaries", "(a/b)^2 minus the (a/b)^2 at which the clipped prism's equilibrium "
-                 "reaches the upper base (B dipping) / lower base (B rising) at omega = 60 deg (righting arm zero at "
-                 "the contact)", ("62", "62-step-3"), q60_cases[:1],
-                 parts=(_boundary(s, QQ - Q, TOP), _boundary(s, QQ - Q, BOT))))
-d.witness(_boundary(s, 2 * (QQ - Q), TOP, "triangle-omega60-boundary-twice", "twice the same margin (top base)",
-                    ("62-step-1", "62-step-2"), q60_cases[:1]))
-d.witness(Joined("triangle-region-II", "-24 s/b times the clipped upright metacentric height, and the two clipped "
-                 "omega = 60 deg margins", ("65-II",), q60_cases[:1],
-                 parts=(FloatingWitness("upright", "", (), (), body=_triangle(a, b), density=s,
-                                        quantity=-24 * s / b * GM),
-                        _boundary(s, QQ - Q, TOP), _boundary(s, QQ - Q, BOT))))
-d.witness(_boundary(s, Q, TOP, "example-3-boundary", "(a/b)^2 at which the clipped prism (s = 2/3) has its "
-                    "equilibrium at the upper-base contact, omega = 60 deg", ("ex3-ratio-squared", "ex3-condition"),
-                    [Case({s: sp.Rational(2, 3)})]))
-d.witness(_boundary(sp.Rational(2, 3), sp.sqrt(Q), TOP, "example-3-ratio", "its root a/b",
-                    ("ex3-ratio", "ex3-ratio-fraction"), one))
-
-
-# example 4: the clipped prism tilted by 30 deg about the axis omega = 15 deg, in equilibrium with the upper base
-# just touching the water: nested zeros, of the righting arm along s and of the upper base's height along a/b = Q
-EX4_AT = {om: pi / 12, PSI: pi / 6}
-EX4_S = (sp.Rational(11, 20), sp.Rational(3, 4))
-TOUCHING = Root.scan(TOP, Q, 1, 2, 10)                              # the a/b at which the upper base touches
-BALANCED = Root.scan(ARM.xreplace(EX4_AT), s, *EX4_S, 10)           # the density of equilibrium at the tilt
-d.witness(_root_witness("example-4-density", "density of the clipped prism in equilibrium at 30 deg with the upper "
-                        "base touching (omega = 15 deg)", ("ex4-density",), one, s, ARM, body=_triangle(Q, 1),
-                        at=EX4_AT, along=s, bracket=EX4_S, steps=10, roots=((Q, TOUCHING),)))
-d.witness(_root_witness("example-4-ratio", "a/b of the same clipped solution", ("ex4-ratio", "ex4-ratio-value"), one,
-                        Q, TOP, body=_triangle(Q, 1), at=EX4_AT, along=Q, steps=5,
-                        bracket=(sp.Rational(3, 2), sp.Rational(8, 5)), roots=((s, BALANCED),)))
-
-
-# ---- the first-region model of the triangle: columns over the base from the bottom to the water plane --------
-# (61)-(65) let a column rise above the upper base or fall below the lower one (a negative height).  The same
-# zeros: the prism extended by b on either side (length 3b, the real one its middle third) at the same water
-# plane, its lower third a neutral part (weight equal to its buoyancy, always immersed): it adds F b to the
-# volume and G = -b/(1 + s) (the weighted centre of the two parts), and B - G is the model's times
-# V / (V + F b), so the righting arm vanishes where the model's does.  A column's height above the real bottom
-# is its depth over cos(psi) minus b: the upper base's clearance at the deepest vertex and the lower base's at
-# the shallowest follow from the draught and the lower base's height above water.
-def _model(edge, height):
-    return Loaded.of(_triangle(edge, 3 * height), (0, 0, -height / (1 + s)))
-
-
-def _top(height):
-    return 2 * height - MEASURED["draught"] / sp.cos(PSI)
-
-
-def _bottom(height):
-    return -BOT / sp.cos(PSI) - height
-
-
-MODEL = {"body": _model(a, b), "density": (1 + s) / 3}
-B_RISING = {om: om + pi}                            # the axis turned half round: vertex B on the rising side
-
-
-def _model_sin(quantity):
-    """*quantity* at the axis omega (0 ... 60 deg) at which the model's equilibrium reaches the upper base (B
-    dipping) and the lower base (B rising): the righting arm at the contact vanishes there."""
-    return tuple(_root_witness("sin", "", (), (), quantity, ARM.xreplace(turn), up=UP.xreplace(turn), along=om,
-                               bracket=(0, pi / 3), steps=1, roots=((PSI, first_tilt(which)),), **MODEL)
-                 for which, turn in ((_top(b), {}), (_bottom(b), B_RISING)))
-
-
-d.witness(Joined("model-61", "sin(30 deg + omega) of the axis where the first-region model's upper-base (B dipping) "
-                 "/ lower-base (B rising) contact meets its equilibrium", ("61",), q60_cases,
-                 parts=_model_sin(sp.sin(pi / 6 + om))))
-d.witness(Joined("model-65-III-omega", "the same, squared", ("65-III-omega",), q60_cases,
-                 parts=_model_sin(sp.sin(pi / 6 + om) ** 2)))
-d.witness(Joined("model-61-from-60", "the model's equilibrium tangent and upper-base contact tangent at the case's "
-                 "axis", ("61-from-60",),
-                 (Case({a: sp.Rational(3, 2), b: 1, s: sp.Rational(11, 20), om: sp.Rational(3, 10)}),
-                  Case({a: 3, b: 2, s: sp.Rational(7, 10), om: 1})),
-                 parts=(_root_witness("equilibrium", "", (), (), sp.tan(PSI), ARM, **MODEL),
-                        _root_witness("contact", "", (), (), sp.tan(PSI), _top(b), **MODEL))))
-
-
-def _model_boundaries(omega):
-    """The (a/b)^2 = Q (b = 1) at which the model's equilibrium reaches the upper base (B dipping) and the lower
-    base (B rising) for the axis *omega*: zeros along Q of the righting arm at the contact."""
-    body = {"body": _model(sp.sqrt(Q), 1), "density": (1 + s) / 3}
-    return tuple(_root_witness("boundary", "", (), (), Q, ARM, at={om: omega + turn}, along=Q, steps=1,
-                               bracket=(12 * s * (1 - s) / 10, 12 * s * (1 - s) * 999 / 1000),
-                               roots=((PSI, first_tilt(which)),), **body)
-                 for which, turn in ((_top(1), 0), (_bottom(1), pi)))
-
-
-Q0_M, Q60_M = _model_boundaries(0), _model_boundaries(pi / 3)
-d.witness(Combined("model-omega0-63", "half of the (a/b)^2 at which the model's equilibrium meets the upper (B "
-                   "dipping) / lower (B rising) base contact at omega = 0, minus half of (a/b)^2", ("63",), q60_cases,
-                   parts=Q0_M, values=((PART[0] - QQ) / 2, (PART[1] - QQ) / 2)))
-d.witness(Combined("model-omega0-64", "the same margins, not halved", ("64",), q60_cases, parts=Q0_M,
-                   values=(PART[0] - QQ, PART[1] - QQ)))
-d.witness(Combined("model-region-III", "the model's boundaries at omega = 60 deg and 0 against (a/b)^2", ("65-III",),
-                   q60_cases, parts=(*Q60_M, *Q0_M),
-                   values=(PART[0] - QQ, QQ - PART[2], PART[1] - QQ, QQ - PART[3])))
-
-
-# ---- the cylinder: the limits (72a), (73) and examples 8, 9 ------------------------------------------------
-# the tangents at which the upper base meets the water (tilting up) and the lower base (the upper one not cut:
-# the cylinder extended upwards to 2b at the same draught), and of the tilted equilibrium
-CONTACTS = (cyl_root("upper", "", (), (), sp.tan(PSI), TOP),
-            cyl_root("lower", "", (), (), sp.tan(PSI), BOT, body=Body.cylinder(r, 2 * b), density=s / 2))
-EQUILIBRIUM = cyl_root("equilibrium", "", (), (), sp.tan(PSI))
-K2_ = (2 * r / b) ** 2
-d.witness(Joined("cylinder-contacts", "tangents of the tilts at which the upper and the lower base meet the water",
-                 ("72a",), tiltc_cases[:1], parts=CONTACTS))
-d.witness(Combined("cylinder-contact-margins", "squared contact tangents minus the squared equilibrium tangent",
-                   ("72a-squared",), tiltc_cases[:1], parts=(*CONTACTS, EQUILIBRIUM),
-                   values=(PART[0] ** 2 - PART[2] ** 2, PART[1] ** 2 - PART[2] ** 2)))
-d.witness(Combined("cylinder-73", "-16 s/b times the upright metacentric height, and (2r/b)^2/2 times the "
-                   "squared-tangent margins", ("73",), tiltc_cases[:1],
-                   parts=(FloatingWitness("upright", "", (), (), body=Body.cylinder(r, b), density=s, quantity=GM),
-                          *CONTACTS, EQUILIBRIUM),
-                   values=(-16 * s / b * PART[0], (PART[1] ** 2 - PART[3] ** 2) * K2_ / 2,
-                           (PART[2] ** 2 - PART[3] ** 2) * K2_ / 2)))
-d.witness(Joined("cylinder-71", "densities at which the upright cylinder's metacentric height vanishes", ("71",),
-                 (Case({r: sp.Rational(3, 5), b: 1}), Case({r: 1, b: 3})),
-                 parts=tuple(cyl_root(f"root {k}", "", (), (), s, GM, up=(0, 0, 1), along=s, bracket=bracket,
-                                      steps=49)
-                             for k, bracket in enumerate(((HALF, sp.Rational(99, 100)),
-                                                          (sp.Rational(1, 200), sp.Rational(99, 200)))))))
-
-
-def threshold(density, *values):
-    """*values* and (2R)^2, at which the upright cylinder of radius R, b = 1 (the ratio 2r/b: the metacentric
-    height is homogeneous of degree 1 in r, b) has zero metacentric height at *density*."""
-    return dict(quantity=(*values, (2 * R) ** 2), vanish=GM, body=Body.cylinder(R, 1), up=(0, 0, 1),
-                density=density, along=R, bracket=(sp.Rational(1, 100), sp.Rational(201, 100)), steps=40)
-
-
-d.witness(cyl_root("example-8-values", "(2r/b)^2 of the data, and the (2r/b)^2 of zero metacentric height at s = 3/4",
-                   ("ex8-values",), [Case({r: 30, b: 40}, label="the example's data")],
-                   **threshold(sp.Rational(3, 4), K2_)))
-d.witness(cyl_root("example-9-values", "2r/b, (2r/b)^2 of the data and the threshold (2r/b)^2 at s = 0.8",
-                   ("ex9-values",), [Case({r: 15, b: 40}, label="the example's data")],
-                   **threshold(sp.Rational(4, 5), 2 * r / b, K2_)))
-d.witness(cyl_root("example-9-bound", "(2r/b)^2 at which the tilted equilibrium of the cylinder (s = 0.8) meets "
-                   "the upper base", ("ex9-bound",), one, (2 * R) ** 2, ARM_C, body=Body.cylinder(R, 1),
-                   density=sp.Rational(4, 5), along=R, bracket=(sp.Rational(1, 5), sp.Rational(7, 10)), steps=5,
-                   roots=((PSI, first_tilt(TOP)),), methods=NESTED))
-for nm, example, r_, s_ in (("example-8-claim", "ex8-claim", 30, sp.Rational(3, 4)),
-                            ("example-9-claim", "ex9-claim", 15, sp.Rational(4, 5))):
-    body_ = Body.cylinder(r_, 40)
-    d.witness(Joined(nm, "signs of the upright metacentric height and of the righting arm where the upper base "
-                     "meets the water (positive: no tilted equilibrium before)", (example,), one,
-                     parts=(FloatingWitness("upright", "", (), (), body=body_, density=s_, quantity="stability sign"),
-                            cyl_root("arm", "", (), (), sp.sign(ARM_C), TOP, body=body_, density=s_))))
-
-
-# =====================================================================================================
-# Predictions: the positions of the first rotation region as (65) and (69)-(73) print them
-# =====================================================================================================
-def _tilted(phi_, toward_x):
-    """Up vector tilted by phi_ from the axis towards +x (toward_x > 0) or -x."""
-    return (math.copysign(math.sin(phi_), toward_x), 0.0, math.cos(phi_))
-
-
-MARGIN_65 = d.evaluator("65-I", (a, b, s), 0)          # (65) I: (a/b)^2 - 12 s(1-s), equality counted stable
-TAN2_65 = d.evaluator("65-tan", (a, b, s), 1)          # (65): tg^2 phi_1 = 24 (b/a)^2 s(1-s) - 2
-RING_65 = d.evaluator("65-II", (a, b, s), 0)           # (65) II: rows 12s(1-s) - q, q - (62) upper, q - (62) lower
-ARC_64 = d.evaluator("64", (a, b, s), 0)               # (64): rows 6(1-s)(3s-1) - q, 6s(2-3s) - q
-MARGIN_70 = d.evaluator("70", (r, b, s), 0)            # (69)/(70): (2r/b)^2 - 8 s + 8 s^2
-LIMIT_73 = d.evaluator("73", (r, b, s), 0)             # (73): rows 8s(1-s) - K2, K2 - 2(1-s)(5s-1), K2 - 2s(4-5s)
-TAN2_72A = d.evaluator("72a-tan", (r, b, s), 1)        # (72a): tg^2 phi_1 = 16 (b/2r)^2 s(1-s) - 2
-
-
-def _triangle_predictions(av, bv, sv):
-    """(65): I upright stable; II upright labile, an oblique stable position for every horizontal axis (a ring);
-    III the same for a restricted axis direction (an arc of the ring, (61)); IV no oblique position.  The
-    conditions are the readings of (65) and (64), evaluated exactly."""
-    margin = MARGIN_65(av, bv, sv)
-    out = [Prediction(("57", "65-I", "density-range") if margin >= 0 else ("57", "density-range"), (0.0, 0.0, 1.0),
-                      "stable" if margin >= 0 else "unstable",
-                      note="upright: (57) (a/b)^2 > 12 s(1-s); (65) I counts equality as stable")]
-    if margin >= 0:
-        return out
-    phi1 = math.atan(math.sqrt(TAN2_65(float(av), float(bv), float(sv))))
-    upper = sv >= Fraction(1, 2)
-    ring = RING_65(av, bv, sv)[1 if upper else 2]       # q - (62), the whole ring
-    arc = ARC_64(av, bv, sv)[0 if upper else 1]         # (64) - q, an arc
-    # omega = 0 of the text: an edge on the side of the base that meets the water first (the upper base on the
-    # dipping side for s > 1/2, the lower one on the rising side for s < 1/2), the vertex opposite
-    up = _tilted(phi1, 1 if upper else -1)
-    if ring >= 0:
-        out.append(Prediction(("65-II", "65-tan", "60-tan"), up, "stable", "ring",
-                              note="(65) II: oblique ring, any horizontal axis"))
-    elif arc <= 0:
-        out.append(Prediction(("65-III", "65-III-omega", "65-III-claim", "65-tan"), up, "stable", "ring",
-                              note="(65) III: the arc of axis directions allowed by (61) around omega = 0"))
-    return out
-
-
-def _cylinder_predictions(rv, bv, sv):
-    """(69)-(73): upright stable iff 2r/b > sqrt(8 s(1-s)); else the oblique ring (72a) when (73) holds; the
-    readings of (70) and (73) evaluated exactly."""
-    margin = MARGIN_70(rv, bv, sv)
-    out = [Prediction(("69", "71") if margin > 0 else ("72", "71") if margin < 0 else ("69",), (0.0, 0.0, 1.0),
-                      "stable" if margin > 0 else "unstable" if margin < 0 else None,
-                      note="upright: (69) 2r/b > sqrt(8 s(1-s)), (72) the labile case")]
-    if margin >= 0:
-        return out
-    if LIMIT_73(rv, bv, sv)[1 if sv > Fraction(1, 2) else 2] >= 0:
-        phi1 = math.atan(math.sqrt(TAN2_72A(float(rv), float(bv), float(sv))))
-        out.append(Prediction(("72a-tan", "72a", "73"), _tilted(phi1, 1), "stable", "ring",
-                              note="(73): the oblique ring of the first region, tilt from (72a)"))
-    return out
-
-
-def predict(scene):
-    """VI.A: the regular triangular prism (prism, 3 sides); VI.B: the circular cylinder.  The conditions are
-    decided in exact arithmetic (Fractions), the tilts in floating point."""
-    sv, dims = Fraction(scene.density), [Fraction(x_) for x_ in scene.dims]
-    if scene.body == "prism" and scene.sides == 3:
-        return _triangle_predictions(dims[0], dims[1], sv)
-    if scene.body == "cylinder":
-        return _cylinder_predictions(dims[0], dims[1], sv)
-    return []
-
-
-d.predicts(("prism", "cylinder"), predict)
-
-
-def _stiff_forms():
-    """The printed thresholds (1 -+ sqrt(1 - (a/b)^2/3))/2 pushed to their ends, for the float64 study
-    (docs/numerics.md, §4): aspect a/b -> 0 and the double root at a/b -> sqrt 3."""
-    from symfloat.numerics.forms import Form, ends, reading, split
-    k = sp.Symbol("k", positive=True)
-    a_, b_ = sp.symbols("a b", positive=True)
-    lower = reading(d, "density-range", 0)[1].subs(a_, k * b_)
-    ks = tuple((float(v),) for v in np.logspace(-6, np.log10(1.7), 40))
-    out = [Form("triangular prism: lower threshold density (1 - sqrt(1 - (a/b)^2/3))/2", f"{d.id}/density-range",
-                lower, (k,), (("k = a/b = 1e-6 ... 1.7", ks),),
-                lambda kv: (kv * kv / 12) / (0.5 + 0.5 * math.sqrt(1 - kv * kv / 3)),
-                "(k^2/12) / s_+ (product of the roots)")]
-    with mpmath.workdps(40):
-        r3_hi, r3_lo = split(mpmath.sqrt(3))
-    near3 = tuple((r3_hi * (1 - dl),) for dl in ends())
-    out.append(Form("triangular prism: discriminant sqrt(1 - (a/b)^2/3) near a/b = sqrt 3", f"{d.id}/density-range",
-                    sp.sqrt(1 - k ** 2 / 3), (k,), (("a/b within 1e-15 ... 1e-1 below sqrt 3", near3),),
-                    lambda kv: math.sqrt(((r3_hi - kv) + r3_lo) * (r3_hi + kv) / 3),
-                    "sqrt((sqrt3 - k)(sqrt3 + k)/3), sqrt 3 a sum of two doubles"))
-    return out
-
-
-d.provides("forms", _stiff_forms)
