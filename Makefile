@@ -4,6 +4,7 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
+KATEX := node_modules/.installed
 
 .PHONY: run test clean
 
@@ -13,11 +14,17 @@ $(STAMP): pyproject.toml
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 	touch $(STAMP)
 
+# KaTeX, which typesets the site's mathematics at build time (symfloat/site/typeset.py), pinned by
+# package-lock.json; without node the site's tests skip and say why.
+$(KATEX): package.json package-lock.json
+	@if command -v npm >/dev/null 2>&1; then npm ci --no-audit --no-fund --loglevel=error && touch $(KATEX); \
+	else echo "make: npm not found: KaTeX is not installed, so the site cannot be built (install node >= 18)" >&2; fi
+
 run: $(STAMP)
 	$(BIN)/symfloat run
 
-test: $(STAMP)
+test: $(STAMP) $(KATEX)
 	$(BIN)/python -m pytest -q -n 2 --dist loadfile
 
 clean:
-	rm -rf $(VENV) .symfloat-cache
+	rm -rf $(VENV) .symfloat-cache node_modules

@@ -20,11 +20,11 @@ import pytest
 
 pytest.importorskip("sphinx", reason="the site extra is not installed (pip install 'symfloat[site]')")
 pytest.importorskip("myst_nb", reason="the site extra is not installed (pip install 'symfloat[site]')")
-pytest.importorskip("latex2mathml", reason="the site extra is not installed (pip install 'symfloat[site]')")
 
 from symfloat.model.source import SOURCES  # noqa: E402
+from symfloat.model.symbol_names import GREEK  # noqa: E402
 from symfloat.model.span import math_intervals  # noqa: E402
-from symfloat.site import mathml  # noqa: E402
+from symfloat.site import typeset  # noqa: E402
 from symfloat.site.build import MARKER, _sync  # noqa: E402
 from symfloat.site.edition import edition_page, formula_anchor  # noqa: E402
 from symfloat.site.errata_pages import corrected_html  # noqa: E402
@@ -42,23 +42,45 @@ def records():
 
 # ---------------------------------------------------------------- pages, without Sphinx
 
-def test_every_formula_of_the_transcriptions_becomes_mathml():
-    mathml.UNRENDERED.clear()
+_KATEX = '<span class="katex'
+
+
+def _need_katex():
+    try:
+        typeset.katex_dist()
+    except typeset.TypesetterMissing as exc:
+        pytest.skip(str(exc))
+
+
+def test_every_formula_of_the_transcriptions_is_typeset():
+    _need_katex()
+    typeset.UNRENDERED.clear()
     count = 0
     for source in SOURCES.values():
         text = source.text()
         for a, b, kind in math_intervals(text):
-            assert mathml.to_mathml(text[a:b].strip("$"), kind == "display").startswith("<math"), text[a:b]
+            assert typeset.typeset(text[a:b].strip("$"), kind == "display").startswith(_KATEX), text[a:b]
             count += 1
-    assert count > 2000 and not mathml.UNRENDERED
+    assert count > 2000 and not typeset.UNRENDERED
 
 
 def test_faulty_tex_is_repaired_or_shown_marked():
-    # Scheeffer's y''^2 (a double superscript to latex2mathml) and a formula the scan cut off
-    assert mathml.to_mathml("y''^2 = r^2").startswith("<math")
-    assert mathml.to_mathml(r"\left. \begin{aligned} & \sqrt{x").startswith("<math")
-    shown = mathml.to_mathml(r"\frac{a}{b} \end{cases}")
+    _need_katex()
+    # Scheeffer's y''^2 and a formula the scan cut off (an open \left, environment and root)
+    assert typeset.typeset("y''^2 = r^2").startswith(_KATEX)
+    assert typeset.typeset(r"\left. \begin{aligned} & \sqrt{x").startswith(_KATEX)
+    shown = typeset.typeset(r"\frac{a}{b} \end{cases}")
     assert shown.startswith('<code class="tex-unrendered"') and r"\frac{a}{b}" in shown
+
+
+def test_an_aligned_display_is_set_in_rows():
+    _need_katex()
+    # Scheeffer (5): two rows aligned at "=", no ampersand left as text
+    html = typeset.typeset(r"\begin{aligned} m &= v \cos \varphi - u \sin \varphi \\ n &= v \sin \varphi + u \cos "
+                           r"\varphi \end{aligned} \quad (5)", display=True)
+    shown = re.sub(r"<annotation.*?</annotation>", "", html)
+    assert shown.count('class="vlist-r"') >= 1 and "&amp;" not in shown and "<mtable" in shown
+    assert html.count("<mtr>") == 2
 
 
 def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
@@ -78,7 +100,7 @@ def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
     assert "misprint, medium confidence" in note and "6.0e-01" in note      # the record's error of the print
     assert f'{witness["seconds"]:.3g} s' in note                            # and the witness's time, as recorded
     assert '../errata/scheeffer-78c-1.html' in note and "../notebooks/scheeffer-vi-cf.html#" in note
-    assert "\\frac" not in re.sub(r'alttext="[^"]*"|title="[^"]*"', "", page)
+    assert "\\frac" not in re.sub(r'<annotation.*?</annotation>|title="[^"]*"', "", page, flags=re.S)
 
 
 def test_lost_text_and_missing_figures_are_marked(records):
@@ -130,6 +152,7 @@ def _build(out: Path) -> subprocess.CompletedProcess:
 
 @pytest.fixture(scope="module")
 def site(tmp_path_factory):
+    _need_katex()
     out = tmp_path_factory.mktemp("site") / "html"
     done = _build(out)
     assert done.returncode == 0, done.stderr
@@ -248,22 +271,52 @@ def _visible_tex(page) -> list[str]:
     return [raw for raw in ("$$", "\\frac") if raw in text]
 
 
+# Runs of single-letter identifiers in a formula's MathML (KaTeX's, beside the glyphs) that spell the name of a
+# Greek letter or a function: a name set as italic letters (t·a·n·v·a·r·p·h·i) instead of its sign (tan φ).
+_BARE_NAMES = r"""names => {
+  const bare = new RegExp("(" + names.join("|") + ")");
+  const found = [];
+  for (const math of document.querySelectorAll(".katex-mathml math")) {
+    for (const parent of [math, ...math.querySelectorAll("mrow, mtd, mstyle, mpadded")]) {
+      let run = "";
+      for (const child of [...parent.children, null]) {
+        if (child && child.tagName.toLowerCase() === "mi" && /^[A-Za-z]$/.test(child.textContent)) {
+          run += child.textContent;
+          continue;
+        }
+        if (bare.test(run)) found.push(run + " in " + (math.querySelector("annotation") || math).textContent);
+        run = "";
+      }
+    }
+  }
+  for (const shown of document.querySelectorAll(".katex-html")) {
+    if (shown.textContent.includes("&")) found.push("a visible & in " + shown.textContent);
+  }
+  return found;
+}"""
+_NAMES = sorted([g for g in GREEK if g[0].islower()] + ["sin", "cos", "tan", "cot", "tg", "log", "lim"],
+                key=len, reverse=True)
+
+
 def test_every_page_in_headless_chromium(site):
     sync_api = pytest.importorskip("playwright.sync_api", reason="playwright is not installed (test extra)")
     with sync_api.sync_playwright() as p:
         browser = _browser(p)
         if browser is None:
             pytest.skip("no Chromium: install Debian's chromium or run 'python -m playwright install chromium'")
-        page = browser.new_page(viewport={"width": 1200, "height": 900})
+        page = browser.new_page(viewport={"width": 1400, "height": 900})
         errors = []
         page.on("console", lambda m: m.type == "error" and errors.append((page.url, m.text)))
         page.on("pageerror", lambda e: errors.append((page.url, str(e))))
         page.on("requestfailed", lambda r: errors.append((page.url, f"failed to load {r.url}")))
         names = sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html"))
+        bare = []
         for name in names:
             page.goto((site / name).as_uri(), wait_until="load")
             assert not _visible_tex(page), (name, _visible_tex(page))
+            bare += [(name, b) for b in page.evaluate(_BARE_NAMES, _NAMES)]
         assert not errors, errors[:5]
+        assert not bare, bare[:5]
         # the pictures of the derivations load: the browser decoded each one (its natural width)
         for name, count in (("figures.html", 3), ("scheeffer-ix-grid.html", 1)):
             page.goto((site / name).as_uri(), wait_until="load")
@@ -271,19 +324,23 @@ def test_every_page_in_headless_chromium(site):
             assert len(widths) == count and all(w > 0 for _, w in widths), (name, widths)
         # the same checks see a page that shows raw TeX and logs an error
         control = site.parent / "control.html"
-        control.write_text("<p>$$\\frac{a}{b}$$</p><script>console.error('control')</script>", encoding="utf-8")
+        control.write_text("<p>$$\\frac{a}{b}$$</p><script>console.error('control')</script>"
+                           '<span class="katex"><span class="katex-mathml"><math><mrow><mi>x</mi><mi>t</mi><mi>a</mi>'
+                           '<mi>n</mi><mo>=</mo><mi>t</mi><mi>a</mi><mi>u</mi></mrow></math></span>'
+                           '<span class="katex-html">x &amp; y</span></span>', encoding="utf-8")
         page.goto(control.as_uri(), wait_until="load")
         assert _visible_tex(page) == ["$$", "\\frac"] and errors == [(control.as_uri(), "control")]
-        # The browser lays the MathML out: a fraction of (78c) has height, and following a mark opens its note.
+        assert [b.split(" ")[0] for b in page.evaluate(_BARE_NAMES, _NAMES)] == ["xtan", "tau", "a"]
+        # KaTeX laid the formulas out: a fraction of (78c) has height, and following a mark opens its note.
         page.goto((site / "edition" / "scheeffer.html").as_uri())
-        assert page.locator("math mfrac >> visible=true").first.bounding_box()["height"] > 10
+        assert page.locator(".katex-display:has(.mfrac) >> visible=true").first.bounding_box()["height"] > 30
         note = f"#{formula_anchor('scheeffer-vi-cf/78c')}"
         page.locator(f'a.q[href="{note}"]').first.click()
         page.wait_for_function("id => document.getElementById(id).open", arg=note[1:], timeout=5000)
         shots = [(page, "site-edition-scheeffer.png")]
         page.locator(f'a.q[href="{note}"]').first.scroll_into_view_if_needed()
         page.evaluate("window.scrollBy(0, -120)")
-        erratum = browser.new_page(viewport={"width": 1200, "height": 900})
+        erratum = browser.new_page(viewport={"width": 1400, "height": 900})
         erratum.goto((site / "errata" / "scheeffer-78c-1.html").as_uri())
         shots.append((erratum, "site-erratum.png"))
         folder = DOCS / "figures" if os.environ.get("SYMFLOAT_SCREENSHOTS") else site.parent

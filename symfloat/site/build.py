@@ -3,7 +3,8 @@
 Sphinx with MyST-NB: MyST pages for the edition and the errata (written here from the records),
 the executed notebooks rendered as committed (execution off), the numerics report and its figures,
 the pictures of the derivations (:mod:`.figures`).
-Mathematics is MathML made at build time (:mod:`symfloat.site.mathml`); the theme is Sphinx's own
+Mathematics is typeset by KaTeX at build time (:mod:`symfloat.site.typeset`; its stylesheet and fonts are
+copied into the site); the theme is Sphinx's own
 ``alabaster``; nothing on a page loads from the network.
 
 Determinism: the pages are staged and built in a temporary folder (Sphinx's environment pickles
@@ -28,6 +29,7 @@ from .notebooks import staged_notebook
 from .errata_pages import errata_index, erratum_page, facet_pages
 from .figures import PAGE as FIGURES, figures_page, notebook_links, pictures
 from .records import Records, load_records, slug
+from .typeset import katex_dist
 
 __all__ = ["build_site", "stage", "MARKER", "SiteError"]
 
@@ -42,17 +44,17 @@ class SiteError(EnvironmentProblem):
 _CONF = '''\
 """Sphinx configuration written by symfloat site (symfloat/site/build.py)."""
 project = "symfloat"
-extensions = ["myst_nb", "symfloat.site.mathml"]
+extensions = ["myst_nb", "symfloat.site.typeset"]
 myst_enable_extensions = ["dollarmath", "amsmath"]
 myst_dmath_double_inline = True
 nb_execution_mode = "off"
 nb_render_markdown_format = "myst"
 nb_merge_streams = True
-html_math_renderer = "mathml"
+html_math_renderer = "katex"
 html_theme = "alabaster"
 html_theme_options = {"show_powered_by": False, "sidebar_width": "220px", "page_width": "1100px"}
 html_static_path = ["_static"]
-html_css_files = ["symfloat.css"]
+html_css_files = ["katex/katex.min.css", "symfloat.css"]
 html_js_files = ["symfloat.js"]
 html_copy_source = False
 html_show_sourcelink = False
@@ -140,6 +142,11 @@ def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
         (folder / name).write_text(text, encoding="utf-8")
     if (docs / "figures").is_dir():
         shutil.copytree(docs / "figures", folder / "figures")
+    katex = katex_dist()
+    (folder / "_static" / "katex" / "fonts").mkdir(parents=True)
+    shutil.copy(katex / "katex.min.css", folder / "_static" / "katex")
+    for font in sorted((katex / "fonts").glob("*.woff2")):        # the format every current browser takes first
+        shutil.copy(font, folder / "_static" / "katex" / "fonts")
     return records
 
 
@@ -183,9 +190,10 @@ def _sync(built: Path, out: Path) -> list[str]:
 
 def _check_tools() -> None:
     import importlib.util
-    missing = [name for name in ("sphinx", "myst_nb", "latex2mathml") if importlib.util.find_spec(name) is None]
+    missing = [name for name in ("sphinx", "myst_nb") if importlib.util.find_spec(name) is None]
     if missing:
         raise SiteError(f"the site needs {', '.join(missing)}: pip install 'symfloat[site]'")
+    katex_dist()                        # node and KaTeX, or one line saying how to install them
 
 
 def build_site(out: Path, docs: Path, notebooks: Path, progress=None) -> tuple[list[str], list[str]]:

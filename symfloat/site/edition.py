@@ -16,9 +16,10 @@ from collections import Counter
 from ..model.source import Source
 from ..model.span import math_intervals
 from ..report.ledger import REASONS, account, waivers
-from .mathml import to_mathml
+from .names import typeset_names
 from .records import Records, slug
 from .text import render
+from .typeset import typeset
 
 __all__ = ["VERDICTS", "quotes", "edition_page", "note", "formula_anchor", "cell_label", "notebook_anchor",
            "witness_line"]
@@ -98,7 +99,8 @@ def note(f: dict, records: Records, root: str) -> str:
              f'<p>Evidence: <strong>{f["evidence"]}</strong>'
              + (f' — {html.escape(f["reason"])}' if f.get("reason") else "") + "</p>"]
     if cell and cell.reading:
-        lines.append(f'<p>Read as printed:</p><div class="reading">{to_mathml(cell.reading, display=True)}</div>')
+        lines.append(f'<p>Read as printed:</p><div class="reading">'
+                     f'{typeset(typeset_names(f["derivation"], cell.reading), display=True)}</div>')
     if erratum:
         lines.append(f'<p>Erratum <a href="{root}errata/{slug(erratum["id"])}.html">{html.escape(erratum["id"])}</a>: '
                      f'{erratum["kind"]}, {erratum["confidence"]} confidence.</p>')

@@ -12,7 +12,7 @@ import re
 
 from ..model.source import SOURCES
 from .edition import formula_anchor, notebook_anchor, quotes, witness_line
-from .mathml import to_mathml
+from .typeset import typeset
 from .records import Records, slug
 from .text import excerpt_html
 
@@ -23,7 +23,7 @@ _WORDS = re.compile(r"[A-Za-zäöüß]{3,}[ ,]+[A-Za-zäöüß]{3,}")
 
 
 def corrected_html(corrected: str) -> str:
-    """A correction: words (with their dollars) as prose, a formula as displayed MathML.
+    """A correction: words (with their dollars) as prose, a formula typeset as a display.
 
     >>> corrected_html("x = 2,44")[:31]
     '<div class="math-display"><math'
@@ -31,7 +31,7 @@ def corrected_html(corrected: str) -> str:
     if "$" in corrected or (_WORDS.search(re.sub(r"\\[A-Za-z]+(\{[^}]*\})?", " ", corrected))
                             and "\\" not in corrected):
         return excerpt_html(corrected)
-    return f'<div class="math-display">{to_mathml(corrected, display=True)}</div>'
+    return f'<div class="math-display">{typeset(corrected, display=True)}</div>'
 
 
 def erratum_page(e: dict, records: Records) -> str:

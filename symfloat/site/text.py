@@ -1,9 +1,9 @@
-"""A transcription, or a piece of one, as HTML: its Markdown blocks and its dollars as MathML.
+"""A transcription, or a piece of one, as HTML: its Markdown blocks and its dollars typeset.
 
 The transcriptions are Markdown with TeX dollars.  They are shown as text, faults included: blocks
 between blank lines become headings (``#``), rules (``---``), tables (``|`` rows) or paragraphs;
 inside a block, ``**bold**`` and ``*italic*``, backslash escapes, hard line breaks, list lines and
-the ``<sub>``/``<sup>`` the transcriptions use are honoured, and every math span is MathML.  A
+the ``<sub>``/``<sup>`` the transcriptions use are honoured, and every math span is typeset.  A
 reference to a figure (``Fig. 12``) is marked: the transcriptions have no figures.
 
 A caller marks stretches of the text: :func:`render` takes the offsets where a mark changes and a
@@ -16,7 +16,7 @@ import html
 import re
 
 from ..model.span import math_intervals
-from .mathml import to_mathml
+from .typeset import typeset
 
 __all__ = ["blocks", "inline_html", "render", "excerpt_html"]
 
@@ -62,7 +62,7 @@ def inline_html(text: str, a: int, b: int, maths) -> str:
         out.append(_prose(text[pos:s]))
         tex = text[s:e]
         display = kind == "display" and tex.startswith("$$")
-        out.append(to_mathml(tex.strip("$"), display=kind == "display"))
+        out.append(typeset(tex.strip("$"), display=kind == "display"))
         if display:
             out[-1] = f'<span class="math-display">{out[-1]}</span>'
         pos = e
