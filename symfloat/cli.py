@@ -40,6 +40,7 @@ from .engine.cache import ReportCache
 from .engine.runner import Progress, verify
 from .errors import (EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, EnvironmentProblem, InputError,
                      SymfloatError)
+from .model.erratum import apparatus
 from .project import GOLDEN, in_project, library_folders, project_root
 from .registry import load, providing, select
 from .report.errata import errata_json, errata_markdown
@@ -147,8 +148,10 @@ def _summary_by_source(reports) -> str:
     for source in dict.fromkeys(r.source for r in reports):
         fs = [f for r in reports if r.source == source for f in r.formulas]
         c = Counter(f.verdict for f in fs)
+        faults = Counter(apparatus(f.erratum["kind"]) for f in fs if f.verdict == "erratum" and f.erratum)
         secs = sum(r.seconds for r in reports if r.source == source)
-        lines.append(f"{source}: {len(fs)} printed formulas — {c['verified']} verified, {c['erratum']} errata, "
+        lines.append(f"{source}: {len(fs)} printed formulas — {c['verified']} verified, {faults['original']} "
+                     f"faults of the original, {faults['transcription']} transcription corrected, "
                      f"{c['unverifiable']} unverifiable, {c['trivial']} trivial ({secs:.1f} s)")
     return "\n".join(lines)
 
