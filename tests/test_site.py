@@ -26,8 +26,9 @@ from symfloat.model.symbol_names import GREEK  # noqa: E402
 from symfloat.model.span import math_intervals  # noqa: E402
 from symfloat.site import typeset  # noqa: E402
 from symfloat.site.build import MARKER, _sync  # noqa: E402
-from symfloat.site.edition import edition_page, formula_anchor  # noqa: E402
-from symfloat.site.errata_pages import corrected_html  # noqa: E402
+from symfloat.site.edition import edition_page, formula_anchor, mark_of  # noqa: E402
+from symfloat.site.errata_pages import errata_index  # noqa: E402
+from symfloat.site.difference import corrected_html  # noqa: E402
 from symfloat.site.notebooks import staged_notebook  # noqa: E402
 from symfloat.site.records import load_records, slug  # noqa: E402
 
@@ -90,9 +91,9 @@ def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
     for f in formulas:
         anchor = formula_anchor(f["id"])
         assert f'id="{anchor}"' in page, f["id"]
-        assert re.search(rf'<a class="(?:q|more) v-{f["verdict"]}" href="#{anchor}"', page), f["id"]
-    # (78c) is an erratum of the record, Scheeffer's square moments (VI.C) are verified
-    assert f'<a class="q v-erratum" href="#{formula_anchor("scheeffer-vi-cf/78c")}"' in page
+        assert re.search(rf'<a class="(?:q|more) v-{mark_of(f, records)}" href="#{anchor}"', page), f["id"]
+    # (78c) is a misprint of the original (the record's erratum), Scheeffer's square moments (VI.C) are verified
+    assert f'<a class="q v-fault" href="#{formula_anchor("scheeffer-vi-cf/78c")}"' in page
     assert f'<a class="q v-verified" href="#{formula_anchor("scheeffer-vi-cf/square-moments")}"' in page
     note = page[page.index(f'id="{formula_anchor("scheeffer-vi-cf/78c")}"'):]
     note = note[:note.index("</details>")]
@@ -101,6 +102,56 @@ def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
     assert f'{witness["seconds"]:.3g} s' in note                            # and the witness's time, as recorded
     assert '../errata/scheeffer-78c-1.html' in note and "../notebooks/scheeffer-vi-cf.html#" in note
     assert "\\frac" not in re.sub(r'<annotation.*?</annotation>|title="[^"]*"', "", page, flags=re.S)
+
+
+def test_the_two_apparatus_are_marked_apart(records):
+    # docs/errata.json: (81a) is the scan's "b" for "6" (transcription), (78c) a misprint of the print
+    page = edition_page(SOURCES["scheeffer"], records)
+    scan, printer = formula_anchor("scheeffer-vi-cf/81a"), formula_anchor("scheeffer-vi-cf/78c")
+    assert f'<a class="q v-transcription" href="#{scan}"' in page and f'<a class="q v-fault" href="#{printer}"' in page
+    legend = page[page.index('<p class="legend">'):]
+    legend = legend[:legend.index("</p>")]
+    faults = sum(mark_of(f, records) == "fault" for f in records.formulas if f["source"] == "scheeffer")
+    scans = sum(mark_of(f, records) == "transcription" for f in records.formulas if f["source"] == "scheeffer")
+    assert f"✗ fault of the original</span> {faults}" in legend and f"✎ transcription corrected</span> {scans}" in legend
+    words = re.sub(r"<[^>]+>", "", legend)                                   # the legend's visible text
+    assert faults and scans and "waived" not in words and "bare-symbol" not in words and "a lone symbol" in words
+    index = errata_index(records)
+    original = index.index("## Faults of the original")
+    transcription = index.index("## Corrections of the transcription")
+    assert index.index("(81a)", transcription) > transcription and original < index.index("(78c)") < transcription
+    assert "(81a)" not in index[original:transcription]
+
+
+def test_the_correction_is_shown_in_place(records):
+    page = edition_page(SOURCES["scheeffer"], records)
+    at = page.index(f'id="{formula_anchor("scheeffer-vi-cf/81a")}"')
+    note = page[at:page.index("</details>\n</details>", at)]
+    evidence = note.index('<details class="evidence">')
+    # before the evidence: what the transcription reads and what the original very probably printed, the
+    # change (the 6 the scan read as b) marked, kind, confidence and a one-sentence reason
+    head = note[:evidence]
+    assert head.index("The transcription reads") < head.index("The original very probably printed")
+    assert re.search(r'<span class="enclosing changed">.*?6', head) and "transcription, high confidence." in head
+    reason = head[head.index('<p class="reason">'):]
+    reason = reason[reason.index("</strong>"):reason.index("</p>")]
+    assert reason.count(". ") == 0 and len(reason) < 400
+    assert "sampled" not in head and "witness" not in head                  # the evidence waits behind its summary
+    assert "<table" in note[evidence:]
+    misprint = page[page.index(f'id="{formula_anchor("scheeffer-vi-cf/78c")}"'):]
+    assert misprint.index("Printed</span>") < misprint.index("Corrected</span>") < misprint.index('class="evidence"')
+
+
+def test_places_have_anchors_and_the_sources_a_citation(records):
+    euler, scheeffer = edition_page(SOURCES["euler"], records), edition_page(SOURCES["scheeffer"], records)
+    assert 'id="s-224"' in euler and 'href="#s-224"' in euler                # Euler's paragraph §224
+    assert "Eneström E110" in euler and "Petropoli" in euler and "1749" in euler
+    for anchor in ("eq-78c", "eq-81a", "eq-5", "s-ix", "example-1"):        # Scheeffer (78c), (81 a), (5), IX, Example 1
+        assert f'id="{anchor}"' in scheeffer and f'href="#{anchor}"' in scheeffer, anchor
+    assert scheeffer.count('id="eq-78c"') == 1
+    hasab, web = edition_page(SOURCES["hasab"], records), edition_page(SOURCES["metazentrum"], records)
+    assert "1987-04-183-1.eps" not in hasab.split('<div class="edition">')[1]     # a file name, not the text's words
+    assert "ID:(1610, 0)" not in web and "(web lesson)" not in web
 
 
 def test_lost_text_and_missing_figures_are_marked(records):
@@ -247,6 +298,13 @@ def test_rebuilding_the_same_records_gives_the_same_files(site, tmp_path):
     assert [name for name in first if first[name] != second[name]] == []
 
 
+def test_without_katex_the_build_says_so_in_one_line(tmp_path):
+    done = subprocess.run([sys.executable, "-m", "symfloat", "site", "--out", str(tmp_path / "out")], cwd=ROOT,
+                          capture_output=True, text=True, env={**os.environ, "SYMFLOAT_NODE_MODULES": str(tmp_path)})
+    assert done.returncode == 2 and done.stderr.count("\n") == 1 and "npm ci" in done.stderr, done.stderr
+    assert not (tmp_path / "out").exists()
+
+
 def test_a_folder_that_is_not_a_site_is_refused(tmp_path):
     (tmp_path / "notes.txt").write_text("mine")
     done = _build(tmp_path)
@@ -310,13 +368,31 @@ def test_every_page_in_headless_chromium(site):
         page.on("pageerror", lambda e: errors.append((page.url, str(e))))
         page.on("requestfailed", lambda r: errors.append((page.url, f"failed to load {r.url}")))
         names = sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html"))
-        bare = []
+        bare, wide = [], []
         for name in names:
             page.goto((site / name).as_uri(), wait_until="load")
             assert not _visible_tex(page), (name, _visible_tex(page))
             bare += [(name, b) for b in page.evaluate(_BARE_NAMES, _NAMES)]
+            for width in (1400, 420):           # the page never scrolls sideways; a long formula scrolls in its box
+                page.set_viewport_size({"width": width, "height": 900})
+                overflow = page.evaluate("document.documentElement.scrollWidth - window.innerWidth")
+                if overflow > 0:
+                    wide.append((name, width, overflow))
+            page.set_viewport_size({"width": 1400, "height": 900})
         assert not errors, errors[:5]
         assert not bare, bare[:5]
+        assert not wide, wide[:10]
+        # every mark of the edition carries a sign and words besides its colour
+        page.goto((site / "edition" / "scheeffer.html").as_uri())
+        legend = page.inner_text("p.legend")
+        assert all(f"{sign} {words}" in legend for sign, words in
+                   (("✗", "fault of the original"), ("✎", "transcription corrected"), ("✓", "verified")))
+        badges = page.evaluate("Array.from(document.querySelectorAll('.badge')).map(b => b.textContent)")
+        assert badges and all(re.fullmatch(r"\S \w.+", b) for b in badges), badges[:3]
+        # search from disk: hits listed, no error (Sphinx's summaries, which would fetch each page, are off)
+        page.goto((site / "search.html").as_uri() + "?q=Schwerpunkt")
+        page.wait_for_selector("#search-results li", timeout=20000)
+        assert page.locator("#search-results li").count() > 3 and not errors, errors[:3]
         # the pictures of the derivations load: the browser decoded each one (its natural width)
         for name, count in (("figures.html", 3), ("scheeffer-ix-grid.html", 1)):
             page.goto((site / name).as_uri(), wait_until="load")
@@ -333,7 +409,9 @@ def test_every_page_in_headless_chromium(site):
         assert [b.split(" ")[0] for b in page.evaluate(_BARE_NAMES, _NAMES)] == ["xtan", "tau", "a"]
         # KaTeX laid the formulas out: a fraction of (78c) has height, and following a mark opens its note.
         page.goto((site / "edition" / "scheeffer.html").as_uri())
-        assert page.locator(".katex-display:has(.mfrac) >> visible=true").first.bounding_box()["height"] > 30
+        heights = page.evaluate("Array.from(document.querySelectorAll('.katex-html .mfrac')).slice(0, 50)"
+                                ".map(e => e.getBoundingClientRect().height)")
+        assert heights and max(heights) > 10, heights[:5]
         note = f"#{formula_anchor('scheeffer-vi-cf/78c')}"
         page.locator(f'a.q[href="{note}"]').first.click()
         page.wait_for_function("id => document.getElementById(id).open", arg=note[1:], timeout=5000)
@@ -341,8 +419,11 @@ def test_every_page_in_headless_chromium(site):
         page.locator(f'a.q[href="{note}"]').first.scroll_into_view_if_needed()
         page.evaluate("window.scrollBy(0, -120)")
         erratum = browser.new_page(viewport={"width": 1400, "height": 900})
-        erratum.goto((site / "errata" / "scheeffer-78c-1.html").as_uri())
+        erratum.goto((site / "errata" / "scheeffer-81a-1.html").as_uri())
         shots.append((erratum, "site-erratum.png"))
+        narrow = browser.new_page(viewport={"width": 420, "height": 900})
+        narrow.goto((site / "edition" / "scheeffer.html").as_uri() + f"#{formula_anchor('scheeffer-vi-cf/81a')}")
+        shots.append((narrow, "site-edition-scheeffer-420.png"))
         folder = DOCS / "figures" if os.environ.get("SYMFLOAT_SCREENSHOTS") else site.parent
         for shot, name in shots:
             shot.screenshot(path=str(folder / name))

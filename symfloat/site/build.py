@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import shutil
 import tempfile
+from collections import Counter
 from importlib import resources
 from io import StringIO
 from pathlib import Path
@@ -24,7 +25,7 @@ from pathlib import Path
 from ..errors import EnvironmentProblem, InputError
 from ..model.source import SOURCES
 from ..report.files import write_atomic
-from .edition import edition_page
+from .edition import MARKS, edition_page, mark_of
 from .notebooks import staged_notebook
 from .errata_pages import errata_index, erratum_page, facet_pages
 from .figures import PAGE as FIGURES, figures_page, notebook_links, pictures
@@ -61,6 +62,7 @@ html_show_sourcelink = False
 html_show_sphinx = False
 html_show_copyright = False
 html_last_updated_fmt = None
+html_show_search_summary = False    # a hit's summary would fetch its page, which a browser refuses from disk
 html_title = "symfloat: the sources, re-derived"
 exclude_patterns = ["_build"]
 '''
@@ -72,25 +74,28 @@ def _asset(name: str) -> str:
 
 def _index(records: Records, with_figures: bool) -> str:
     s = records.summary
-    rows = []
+    rows, total = [], Counter()
     for key, source in SOURCES.items():
         fs = [f for f in records.formulas if f["source"] == key]
         if fs:
-            n = {v: sum(f["verdict"] == v for f in fs) for v in ("verified", "erratum", "unverifiable", "trivial")}
-            rows.append(f"| [{source.author}, *{source.title}*](edition/{key}.md) | {len(fs)} | {n['verified']} | "
-                        f"{n['erratum']} | {n['unverifiable']} | {n['trivial']} |")
+            n = Counter(mark_of(f, records) for f in fs)
+            total.update(n)
+            rows.append(f"| [{source.author}, *{source.title}*](edition/{key}.md) | {len(fs)} | "
+                        + " | ".join(str(n[m]) for m in MARKS) + " |")
     return "\n".join([
         "# symfloat: the sources, re-derived", "",
         "Every printed formula of the library's texts re-derived step by step, its verdict with the evidence "
-        "and the independent numeric witnesses, and the errata. Built by `symfloat site` from the committed "
+        "and the independent numeric witnesses, and the errata in two apparatus: the faults of the original "
+        "print, and the corrections of the transcription. Built by `symfloat site` from the committed "
         "records (`docs/verification.json`, `docs/errata.json`, the executed notebooks).", "",
-        f"{s['formulas']} printed formulas: {s['verified']} verified, {s['erratum']} errata, "
-        f"{s['unverifiable']} unverifiable, {s.get('trivial', 0)} trivial.", "",
-        "| source (annotated edition) | formulas | verified | errata | unverifiable | trivial |",
-        "|---|---:|---:|---:|---:|---:|", *rows, "",
+        f"{s['formulas']} printed formulas: " + ", ".join(f"{total[m]} {MARKS[m][1].split(':')[0]}" for m in MARKS)
+        + ".", "",
+        "| source (annotated edition) | formulas | " + " | ".join(f"{MARKS[m][0]} {MARKS[m][1].split(':')[0]}"
+                                                                for m in MARKS) + " |",
+        "|---|---:|" + "---:|" * len(MARKS), *rows, "",
         "```{toctree}", ":maxdepth: 1", "", "edition/index", "errata/index", "notebooks/index",
         *([FIGURES] if with_figures else []),
-        *(Path(name).stem for name in records.reports), "numerics", "about", "```", ""])
+        *(Path(name).stem for name in records.reports), "numerics", "errata-kinds", "about", "```", ""])
 
 
 def _reports(docs: Path) -> tuple[str, ...]:
@@ -112,6 +117,7 @@ def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
     files = {"conf.py": _CONF, "index.md": _index(records, bool(found)), "_static/symfloat.css": _asset("symfloat.css"),
              "_static/symfloat.js": _asset("symfloat.js"),
              "about.md": (docs / "site.md").read_text(encoding="utf-8"),
+             "errata-kinds.md": (docs / "errata-kinds.md").read_text(encoding="utf-8"),
              "numerics.md": (docs / "numerics.md").read_text(encoding="utf-8")}
     if found:
         files[f"{FIGURES}.md"] = figures_page(found, records.notebooks)
@@ -204,7 +210,8 @@ def build_site(out: Path, docs: Path, notebooks: Path, progress=None) -> tuple[l
         raise InputError(f"{out} is a file: the site is written into a folder")
     if out.exists() and any(out.iterdir()) and not (out / MARKER).is_file():
         raise InputError(f"{out} is not empty and holds no earlier site ({MARKER}): give a new or empty folder")
-    for needed in (docs / "verification.json", docs / "errata.json", docs / "site.md", docs / "numerics.md"):
+    for needed in (docs / "verification.json", docs / "errata.json", docs / "site.md", docs / "numerics.md",
+                   docs / "errata-kinds.md"):
         if not needed.is_file():
             raise InputError(f"no {needed}: the site is built from the committed records")
     with tempfile.TemporaryDirectory(prefix="symfloat-site-") as tmp:
