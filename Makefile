@@ -4,6 +4,7 @@ PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
+KATEX := node_modules/.installed
 
 .PHONY: run test clean
 
@@ -16,12 +17,18 @@ $(STAMP): pyproject.toml
 	touch $(STAMP)
 	@echo "make: $(VENV) is ready"
 
+# KaTeX, which typesets the site's mathematics at build time (symfloat/site/typeset.py), pinned by
+# package-lock.json; without node the site's tests skip and say why.
+$(KATEX): package.json package-lock.json
+	@if command -v npm >/dev/null 2>&1; then npm ci --no-audit --no-fund --loglevel=error && touch $(KATEX); \
+	else echo "make: npm not found: KaTeX is not installed, so the site cannot be built (install node >= 18)" >&2; fi
+
 run: $(STAMP)
 	@echo "make: symfloat run checks every derivation (finished checks are cached) and writes every record; one line per derivation follows"
 	$(BIN)/symfloat run
 
-test: $(STAMP)
+test: $(STAMP) $(KATEX)
 	$(BIN)/python -m pytest -q -n 2 --dist loadfile
 
 clean:
-	rm -rf $(VENV) .symfloat-cache
+	rm -rf $(VENV) .symfloat-cache node_modules

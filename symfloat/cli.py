@@ -48,6 +48,7 @@ from .engine.runner import MAX_WORKERS, Progress, check_environment, verify
 from .errors import (EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, EnvironmentProblem, InputError,
                      SymfloatError)
 from .files import write_atomic, write_if_changed, writable_folder, writable_target
+from .model.erratum import apparatus
 from .project import GOLDEN, in_outputs, in_project, library_folders, outputs_root
 from .registry import provided, select
 from .report.errata import ERRATA_FORMATS, errata_json, errata_markdown
@@ -157,8 +158,10 @@ def _summary_by_source(reports) -> str:
     for source in dict.fromkeys(r.source for r in reports):
         fs = [f for r in reports if r.source == source for f in r.formulas]
         c = Counter(f.verdict for f in fs)
+        faults = Counter(apparatus(f.erratum["kind"]) for f in fs if f.verdict == "erratum" and f.erratum)
         secs = sum(r.seconds for r in reports if r.source == source)
-        lines.append(f"{source}: {len(fs)} printed formulas — {c['verified']} verified, {c['erratum']} errata, "
+        lines.append(f"{source}: {len(fs)} printed formulas — {c['verified']} verified, {faults['original']} "
+                     f"faults of the original, {faults['transcription']} transcription corrected, "
                      f"{c['unverifiable']} unverifiable, {c['trivial']} trivial (checking time recorded {secs:.1f} s)")
     return "\n".join(lines)
 

@@ -40,7 +40,7 @@ ALLOWED = {
 PART_ALLOWED = {
     "statements": ("symfloat", "symfloat.model"),
     "witnesses": ("symfloat", "symfloat.model", "symfloat.engine", "symfloat.geometry"),
-    "predictors": ("symfloat", "symfloat.model", "symfloat.engine.roots"),
+    "predictors": ("symfloat", "symfloat.model", "symfloat.engine.roots", "symfloat.geometry"),
     "outputs": None,
 }
 STATEMENTS_MAY_IMPORT = {"sympy", "fractions", "math", "__future__"}

@@ -3,10 +3,23 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["Erratum", "KINDS", "CONFIDENCES"]
+__all__ = ["Erratum", "KINDS", "CONFIDENCES", "APPARATUS", "apparatus"]
 
 KINDS = ("transcription", "misprint", "calculation", "consequential", "claim")
 CONFIDENCES = ("high", "medium", "low")
+# The two apparatus of the edition (docs/errata-kinds.md): the faults of the original print, and the
+# corrections of this project's transcription of the scan; apparatus -> (title, its kinds).
+APPARATUS = {"original": ("faults of the original", ("misprint", "calculation", "consequential", "claim")),
+             "transcription": ("corrections of the transcription", ("transcription",))}
+
+
+def apparatus(kind: str) -> str:
+    """The apparatus an erratum of *kind* belongs to: ``original`` or ``transcription``.
+
+    >>> apparatus("misprint"), apparatus("transcription")
+    ('original', 'transcription')
+    """
+    return next(a for a, (_, kinds) in APPARATUS.items() if kind in kinds)
 
 
 @dataclass(frozen=True)

@@ -16,6 +16,7 @@ import sympy as sp
 from ..engine.runner import verify
 from ..model.claim import expressions, members
 from ..model.relation import is_relation, relation_latex
+from ..model.symbol_names import latex
 from ..registry import load
 
 __all__ = ["NotebookView", "definitions_markdown", "step_markdown", "reading_markdown", "correction_markdown",
@@ -57,7 +58,7 @@ def _as_printed(expr) -> bool:
 def _latex(d, expr) -> str:
     """LaTeX of *expr* in the derivation's names; an expression kept as printed keeps its order of terms."""
     expr = named(d.names, expr)
-    return sp.latex(expr, order="none") if _as_printed(expr) else sp.latex(expr)
+    return latex(expr, order="none") if _as_printed(expr) else latex(expr)
 
 
 def chain_latex(d, claim) -> str:
@@ -79,8 +80,8 @@ def definitions_markdown(d) -> str:
              "Helper expressions of the derivation, each shown once; the steps and readings below "
              "write them by these names.", ""]
     for i, (symbol, value, text) in enumerate(d.names):
-        shown = sp.latex(named(d.names[:i], value))
-        lines.append(f"- {text}: ${sp.latex(symbol)} = {shown}$" if text else f"- ${sp.latex(symbol)} = {shown}$")
+        shown = latex(named(d.names[:i], value))
+        lines.append(f"- {text}: ${latex(symbol)} = {shown}$" if text else f"- ${latex(symbol)} = {shown}$")
     return "\n".join(lines)
 
 
@@ -105,7 +106,7 @@ def step_markdown(d, index: int, step) -> str:
     out.append(("Definition:" if step.why == "definition" else "Before and after:") + "\n\n"
                + chain_latex(d, step.claim))
     if step.result is not None:
-        out.append(f"This establishes ${sp.latex(step.result)}$, used in later steps and readings.")
+        out.append(f"This establishes ${latex(step.result)}$, used in later steps and readings.")
     return "\n\n".join(out)
 
 
@@ -121,7 +122,7 @@ def _derived_symbols(d, claims) -> str:
     if not found:
         return ""
     return ("Compared with the derivation: " + "; ".join(
-        f"${sp.latex(sym)}$ is the value of step {i} (`{name}`)" for sym, (i, name) in found.items()) + ".")
+        f"${latex(sym)}$ is the value of step {i} (`{name}`)" for sym, (i, name) in found.items()) + ".")
 
 
 def reading_markdown(d, p) -> str:
@@ -145,9 +146,10 @@ def reading_markdown(d, p) -> str:
 
 
 def correction_markdown(kind: str, corrected: str) -> str:
-    """A correction: a claim in words is prose, anything else (a claim's correction written in LaTeX too) a
-    displayed formula."""
-    return corrected if kind == "claim" and "\\" not in corrected else f"$$ {corrected} $$"
+    """A correction: words (a claim in words, or words with their own dollars) are prose, anything else (a
+    claim's correction written in LaTeX too) a displayed formula."""
+    prose = "$" in corrected or (kind == "claim" and "\\" not in corrected)
+    return corrected if prose else f"$$ {corrected} $$"
 
 
 # ---- the engine's findings, shown when the notebook runs ----------------------------------------------------------
