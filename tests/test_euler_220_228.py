@@ -58,10 +58,12 @@ EXPECTED_ERRATA = {
     ("U2-value", "transcription", "high"),          # §225 b³D³/8a for b³D/8a
     ("Aa-AEB-value", "transcription", "high"),      # §225 aaD³/4 for aaD/4
     ("Aa-whole", "misprint", "medium"),             # §225 2a/b for 4a/b (and D³)
-    ("DAC-definition", "transcription", "medium"),  # §226 ∫y dx for ∫xy dx
+    ("DAC-definition", "transcription", "low"),     # §226 ∫y dx for ∫xy dx; low: a whole letter lost, print or
+                                                    # scan cannot be told (its objection, issue 31)
     ("DAC", "transcription", "medium"),             # §226 ∫y dy√ for ∫y dY√
     ("moment-EF", "misprint", "medium"),            # §226 2a/b, aa/bbD, no square: 4a/b, 8aa/bbD, (..)²
-    ("curve-c", "transcription", "medium"),         # §227 (c/b)√ for ±(a/b)√
+    ("curve-c", "transcription", "low"),            # §227 (c/b)√ for ±(a/b)√; low: the same c/b stands in
+                                                    # §228, as well the print's as the scan's (its objection)
     ("Oc", "transcription", "medium"),              # §227 Oc = a for Oc = c
     ("U0-value", "transcription", "low"),           # §227 the three values shifted by one integral
     ("U2-value-c", "transcription", "low"),

@@ -208,19 +208,37 @@ d.quote("AB-Ace", "§223",
         reading=(IAce, CIA / 3, Yd3 / 3 + a / (3 * b) * U4),
         erratum=Erratum("transcription", "medium",
                         r"= \frac{1}{3} \int y^3 dx = \frac{1}{3} \int y^3 dY + \frac{a}{3b} \int \frac{y^4 dy}{\sqrt{bb-yy}}",
-                        BAR, corrected_reading=(IAce, CIA / 3, Yd3 / 3 + a / (3 * b) * V4)),
+                        BAR, corrected_reading=(IAce, CIA / 3, Yd3 / 3 + a / (3 * b) * V4),
+                        objection="The product form stands three times in this paragraph, the same way each time; a "
+                                  "form that runs through several places is the print's or Euler's own, not a glyph "
+                                  "the scan lost once.",
+                        answer="Euler's own result needs the quotient: with y⁴dy/√(bb-yy) the moment of AEB is "
+                               "(2a/3b)·3πb⁴/16 = πab³/8, and twice it is the Dbb/2 he concludes with; with the "
+                               "product it is not. The three places are one integral carried from Ace to Bce to "
+                               "their sum, so one lost sign of division (a bar or Euler's ':') in the scan's reading"
+                               " explains all three; §222 keeps its bars. The print cannot be seen, so medium "
+                               "stands."),
         note=claim("the portion Ace has the moment (1/3)∫y³dx = (1/3)∫y³dY + (a/3b)∫y⁴dy/√(bb-yy) about AB."))
 d.quote("AB-Bce", "§223", r"$= \frac{1}{3} \int y^3 dY - \frac{a}{3b} \int y^4 dy \sqrt{bb-yy}$",
         reading=(IBce, -CIB / 3, -Yd3 / 3 - a / (3 * b) * (-U4)),
         erratum=Erratum("transcription", "medium",
                         r"= \frac{1}{3} \int y^3 dY - \frac{a}{3b} \int \frac{y^4 dy}{\sqrt{bb-yy}}", BAR,
-                        corrected_reading=(IBce, -CIB / 3, -Yd3 / 3 - a / (3 * b) * (-V4))),
+                        corrected_reading=(IBce, -CIB / 3, -Yd3 / 3 - a / (3 * b) * (-V4)),
+                        objection="As for Ace: the same product form three times in one paragraph may be the "
+                                  "print's.",
+                        answer="The same integral as Ace's, with the opposite sign; the conclusion Dbb/2 needs the "
+                               "quotient, so Euler had it. Medium, since the print cannot be seen."),
         note=claim("the portion Bce has the moment (1/3)∫y³dY - (a/3b)∫y⁴dy/√(bb-yy), integrals from b to 0 (read "
                    "as -∫_0^b)."))
 d.quote("AB-AEB", "§223", r"$= \frac{2a}{3b} \int y^4 dy \sqrt{bb-yy}$, in quo quantitas Y non ineft",
         reading=(IAEB, 2 * a / (3 * b) * U4),
         erratum=Erratum("transcription", "medium", r"= \frac{2a}{3b} \int \frac{y^4 dy}{\sqrt{bb-yy}}", BAR,
-                        corrected_reading=(IAEB, 2 * a / (3 * b) * V4)),
+                        corrected_reading=(IAEB, 2 * a / (3 * b) * V4),
+                        objection="As for Ace: the product may be the print's; and 'in quo quantitas Y non inest' is"
+                                  " true of either form.",
+                        answer="The remark on Y holds for both forms, but the next sentence's moment Dbb/2 = ef²D/8 "
+                               "of the whole figure is twice (2a/3b)∫y⁴dy/√(bb-yy) = πab³/8 (D = πab/2), and the "
+                               "product does not give it. Medium, since the print cannot be seen."),
         note=claim("AEB has the moment (2a/3b)∫y⁴dy/√(bb-yy) about AB, free of Y."))
 d.quote("AB-whole", "§223", r"$= \frac{Dbb}{2} = \frac{ef^2 D}{8}$",
         reading=as_printed(lambda: (Iwhole, D * b ** 2 / 2, (2 * b) ** 2 * D / 8)),
@@ -268,7 +286,15 @@ d.quote("Aa-Ace-product", "§224",
             "2a(a+Y)√(bb-yy)/b + aa - aayy/bb: the whole four-term square multiplies y dx, as the six "
             "integrals that follow show. As transcribed only (a+Y)² stands under the integral and three "
             "loose terms in y follow; the vinculum (or brackets) over the second factor is lost.",
-            corrected_reading=(KAce, sp.Integral(y * (dYg + a * y / (b * R)) * X2L, (y, 0, b)))),
+            corrected_reading=(KAce, sp.Integral(y * (dYg + a * y / (b * R)) * X2L, (y, 0, b))),
+                        objection="Euler's page may set the second factor on its own line without brackets, the line"
+                                  " break (and perhaps a vinculum the scan cannot render) showing the product, so "
+                                  "that the print is right in its own notation.",
+                        answer="That is the reading the erratum makes: the six integrals that follow multiply y dx "
+                               "by all four terms of x², so Euler meant the product, and the fault is the "
+                               "transcription's, which flattens the two lines into a sum with three loose terms. "
+                               "Whether the print marked the factor with a vinculum or by its layout cannot be seen;"
+                               " medium."),
         note=claim("the portion Ace has the moment ∫y(dY + ay dy/(b√(bb-yy)))·x² about aAa, "
                    "x² = (a+Y)² - 2a(a+Y)√(bb-yy)/b + aa - aayy/bb."))
 d.quote("Aa-Ace-expanded", "§224",
@@ -282,7 +308,12 @@ d.quote("Aa-Ace-expanded", "§224",
             "The fourth integral comes from (a/b)·y·y dy/√(bb-yy) times (a+Y)²: ∫yy dy (a+Y)²/√(bb-yy), "
             "printed so for Bce in the same paragraph. 'yy^2 y' has no differential and reads as y⁴: the "
             "'dy' garbled into '^2 y'. The other five terms are right.",
-            corrected_reading=(KAce, six_terms(-1, False))),
+            corrected_reading=(KAce, six_terms(-1, False)),
+                        objection="The slip may be the print's: a compositor setting the fourth integrand wrongly in"
+                                  " one place.",
+                        answer="'yy^2 y' is a superscript 2 where the d of 'dy' stands, a glyph the scan confuses, "
+                               "not a sort a compositor would take; the same integral is printed right for Bce in "
+                               "the same paragraph, and §225 carries it on as ∫yydy(a+Y)²/√(bb-yy) with 2a/b. High."),
         note=claim("the moment of Ace about aAa is the sum of the six integrals, taken from y = 0 to b "
                    "(the excerpt continues the product quoted above)."))
 d.quote("Aa-Bce-expanded", "§224",
@@ -316,7 +347,13 @@ d.quote("Aa-AEB", "§225",
             "-(2a/b)∫y d.(a+Y)²√(bb-yy), the next member. The capital Y of 'dY' read as a small y, as "
             "again in §226; a misprint of 1749 cannot be excluded, hence medium. The other members hold.",
             corrected_reading=(KAEB, -4 * a / b * T2 + 2 * a / b * T4 + 2 * a ** 3 / b ** 3 * U2,
-                               2 * a ** 3 / b ** 3 * U2 - 2 * a / b * G2, 2 * a ** 3 / b ** 3 * U2 + 2 * a / b * S2)),
+                               2 * a ** 3 / b ** 3 * U2 - 2 * a / b * G2, 2 * a ** 3 / b ** 3 * U2 + 2 * a / b * S2),
+                        objection="dy for dY stands also in §226; the same swap in two paragraphs of Euler's working"
+                                  " would be his own (or the print's), not the scan's.",
+                        answer="In both places the very next member, -(2a/b)∫y d.(a+Y)²√ here and -(2a/b)∫y d.(a+Y)√"
+                               " in §226, equals the line only with dY, and the values Euler goes on to use hold, so"
+                               " the swap is not carried on in his working. Y and y of one italic fount differ by "
+                               "size, a confusion of the scan as of a compositor; medium."),
         note=claim("adding the two portions, AEB has the moment -(4a/b)∫y dY(a+Y)√ + (2a/b)∫yy dy(a+Y)²/√ "
                    "+ (2a³/b³)∫yy dy√ = (2a³/b³)∫yy dy√ - (2a/b)∫y d.(a+Y)²√ = (2a³/b³)∫yy dy√ "
                    "+ (2a/b)∫(a+Y)²dy√ about aAa (√ = √(bb-yy), integrals from 0 to b)."))
@@ -332,12 +369,22 @@ d.quote("U2-value", "§225",
         reading=(U2, b * b / 4 * V2, b ** 3 * D ** 3 / (8 * a)),
         erratum=Erratum("transcription", "high",
                         r"\int yy dy \sqrt{bb-yy} = \frac{bb}{4} \int \frac{yydy}{\sqrt{bb-yy}} = \frac{b^3 D}{8a}",
-                        DCUBE, corrected_reading=(U2, b * b / 4 * V2, b ** 3 * D / (8 * a))),
+                        DCUBE, corrected_reading=(U2, b * b / 4 * V2, b ** 3 * D / (8 * a)),
+                        objection="D³ may be the print's: a compositor's stray superscript, or a mark of Euler's "
+                                  "after D.",
+                        answer="A compositor's slip does not recur, and D³ stands in three formulas of this "
+                               "paragraph; §226 prints the same value as b³D/8a and starts its moment about EF from "
+                               "aaD/2, twice the corrected aaD/4, so in Euler's working D carried no exponent. A "
+                               "mark after D read as an exponent is the scan's; high."),
         note=claim("from y = 0 to b, ∫yy dy√(bb-yy) = (bb/4)∫yy dy/√(bb-yy) = b³D/8a (by §222)."))
 d.quote("Aa-AEB-value", "§225", r"$= \frac{aaD^3}{4} + \frac{2a}{b} \int (a+Y)^2 dy V(bb-yy);$",
         reading=(KAEB, a * a * D ** 3 / 4 + 2 * a / b * S2),
         erratum=Erratum("transcription", "high", r"= \frac{aaD}{4} + \frac{2a}{b} \int (a+Y)^2 dy \sqrt{bb-yy}",
-                        DCUBE, corrected_reading=(KAEB, a * a * D / 4 + 2 * a / b * S2)),
+                        DCUBE, corrected_reading=(KAEB, a * a * D / 4 + 2 * a / b * S2),
+                        objection="As for the value of ∫yy dy√(bb-yy): D³ may be the print's.",
+                        answer="aaD/4 is (2a³/b³)·b³D/8a, the value §226 prints without the cube, and §226 starts "
+                               "its moment about EF from aaD/2, twice this; D³ in three formulas of one paragraph is"
+                               " the scan's reading of one mark; high."),
         note=claim("AEB has the moment a²D/4 + (2a/b)∫(a+Y)²dy√(bb-yy) about aAa."))
 d.quote("Aa-whole", "§225", r"$= \frac{aaD^3}{2} + \frac{2a}{b} \int (a+Y)^2 dy V(bb-yy),$",
         reading=(Kwhole, a * a * D ** 3 / 2 + 2 * a / b * S2),
@@ -348,7 +395,14 @@ d.quote("Aa-whole", "§225", r"$= \frac{aaD^3}{2} + \frac{2a}{b} \int (a+Y)^2 dy
             "2a/b is repeated in the moment about EF of §226, so it stood in the print (or in Euler's "
             "manuscript). §227's result a²D/2 + c²D/8 needs 4a/b, so the slip did not enter the "
             "calculation; medium.",
-            corrected_reading=(Kwhole, a * a * D / 2 + 4 * a / b * S2)),
+            corrected_reading=(Kwhole, a * a * D / 2 + 4 * a / b * S2),
+                        objection="The 2a/b is repeated in §226, so it runs through two places of Euler's working: a"
+                                  " fault of his calculation rather than a misprint.",
+                        answer="It is not carried on: §227's a²D/2 + c²D/8 follows only from 4a/b (with 2a/b and the"
+                               " rest corrected the moment about EF would be (ac - a²)D/2, negative for c < a), so "
+                               "Euler computed with the right factor and the 2a/b is a slip in writing the formula "
+                               "out, restated in §226; a fault of the original, the author's pen or the "
+                               "compositor's, hence misprint at medium."),
         note=claim("with the half AFB equal to AEB, the whole figure has the moment a²D/2 + (2a/b)∫(a+Y)²dy√ "
                    "about aAa."))
 
@@ -377,12 +431,17 @@ d.step("parallel-axes", (KEF, Kwhole - 2 * D * AC ** 2), "algebra",
 d.quote("DAC-definition", "§226", r"$DAC = \int y dx$",
         reading=(D * AC, CA - CB),
         erratum=Erratum(
-            "transcription", "medium", r"D \cdot AC = \int xy\,dx",
+            "transcription", "low", r"D \cdot AC = \int xy\,dx",
             "D·AC is the moment of AEB about aAa, ∫xy dx (the strip y dx at the distance x); ∫y dx over AEB "
             "is the area D itself (§222), which would make AC = 1. The next member, (2a/b)∫yy dy(a+Y)/√ - "
             "..., is the moment. An x lost in the transcription ('yx dx'), or omitted by the printer: "
-            "medium.",
-            corrected_reading=(D * AC, XY)),
+            "low.",
+            corrected_reading=(D * AC, XY),
+                        objection="The x may have been lost in the print: a compositor dropping one letter of 'xy "
+                                  "dx' (or 'yx dx'), which the scan then read faithfully.",
+                        answer="The next member is the moment, so Euler meant ∫xy dx; but the loss of a whole letter"
+                               " is not a glyph the scan confuses, and nothing in the text tells the print's "
+                               "omission from the scan's. Lowered to low."),
         note=claim("D·AC is the integral ∫y dx (as printed) extended over AEB."))
 d.quote("DAC", "§226",
         r"$DAC = \frac{2a}{b} \int \frac{y^2 dy(a+Y)}{\sqrt{bb-yy}} - \frac{2a}{b} \int y dy V(bb-yy) = "
@@ -394,7 +453,12 @@ d.quote("DAC", "§226",
             "x dx = d(x²/2) on both branches gives (2a/b)∫yy dy(a+Y)/√(bb-yy) - (2a/b)∫y dY√(bb-yy), and "
             "only so is it -(2a/b)∫y d.(a+Y)√(bb-yy), the next member (d.(a+Y)√ = dY√ - (a+Y)y dy/√). "
             "dY read as dy, as in §225; the other members hold.",
-            corrected_reading=(D * AC, 2 * a / b * W1 - 2 * a / b * Z1, -2 * a / b * G1, 2 * a / b * S1)),
+            corrected_reading=(D * AC, 2 * a / b * W1 - 2 * a / b * Z1, -2 * a / b * G1, 2 * a / b * S1),
+                        objection="As in §225: dy for dY in two paragraphs may be the same slip of Euler's or of the"
+                                  " print, not the scan's.",
+                        answer="The next member -(2a/b)∫y d.(a+Y)√(bb-yy) expands to dY√ - (a+Y)y dy/√ and equals "
+                               "the line only with dY, and AC = a - c/4 in §227 follows; the slip is not carried on."
+                               " The Y/y confusion of the scan is the likelier; medium."),
         note=claim("D·AC = (2a/b)∫y²dy(a+Y)/√ - (2a/b)∫y dY√ = -(2a/b)∫y d.(a+Y)√ = (2a/b)∫(a+Y)dy√ "
                    "(√ = √(bb-yy), from 0 to b)."))
 d.quote("AC", "§226", r"$AC = \frac{2a}{bD} \int (a+Y) dy V(bb-yy).$", reading=(AC, 2 * a / (b * D) * S1),
@@ -410,7 +474,13 @@ d.quote("moment-EF", "§226",
             "aa/bbD without the square of the integral (the last term then is not even a moment); the "
             "square and the 8 may be the transcription's losses, the 2a/b is the print's. §227's value "
             "a²D/2 + c²D/8 follows only from the corrected formula; medium.",
-            corrected_reading=(KEF, a * a * D / 2 + 4 * a / b * S2 - 8 * a * a / (b * b * D) * S1 ** 2)),
+            corrected_reading=(KEF, a * a * D / 2 + 4 * a / b * S2 - 8 * a * a / (b * b * D) * S1 ** 2),
+                        objection="The correction needs three changes (4a/b, the 8, the square); booked as one "
+                                  "misprint it claims more than one slip of the compositor.",
+                        answer="The kind rests on the 2a/b, which repeats §225's and so stood in the print; the 8 "
+                               "and the square are needed whoever lost them, since without the square the last term "
+                               "is not a moment and §227's a²D/2 + c²D/8 follows only from the corrected formula. "
+                               "Which of the three the scan lost cannot be told; medium."),
         note=claim("about the latitudinal axis EF through C the whole figure has the moment "
                    "a²D/2 + (2a/b)∫(a+Y)²dy√ - (aa/bbD)(∫(a+Y)dy√)."))
 d.quote("reduce-V2", "§226", r"$\int \frac{yydy}{\sqrt{bb-yy}} = \frac{bD}{2a}$", reading=(V2, b * D / (2 * a)),
@@ -441,12 +511,18 @@ d.quote("Y-c", "§227", r"Ponamus esse $Y = \frac{-cyy}{bb},$",
 d.quote("curve-c", "§227", r"seu $x = a - \frac{cyy}{bb} + \frac{c}{b} V(bb-yy),$",
         reading=(xRc, a - c * y ** 2 / b ** 2 + c / b * R),
         erratum=Erratum(
-            "transcription", "medium", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
+            "transcription", "low", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
             "Y = -cyy/bb put into x = a + Y ± a√(1 - yy/bb) of §221 gives a - cyy/bb ± (a/b)√(bb-yy); with "
             "(c/b)√ the curve would not end at B (x = a + c at y = 0, not 2a). The letters a and c are "
-            "confused again in 'Oc = a' next to it; the ± of §221 shortened to the branch of Bce. Medium.",
+            "confused again in 'Oc = a' next to it; the ± of §221 shortened to the branch of Bce. Low.",
             corrected_reading=as_printed(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
-                                                      a - c * y ** 2 / b ** 2 + a / b * R])))),
+                                                      a - c * y ** 2 / b ** 2 + a / b * R]))),
+                        objection="The same c/b stands again in §228's 'aequatio assumta', so the print may have had"
+                                  " it in both places, Euler copying his own line or the compositor repeating it.",
+                        answer="Euler's working does not use it: x = a + Y ± a√(1 - yy/bb) of §221 with Y = -cyy/bb "
+                               "gives his ∫(a+Y)²dy√ and AC = a - c/4, and with c/b the curve would not end at B. "
+                               "But a slip repeated in §228 is as well the print's as the scan's a/c confusion of "
+                               "these lines; the transcription cannot tell them apart. Lowered to low."),
         note=claim("with Y = -cyy/bb the curve is x = a - cyy/bb + (c/b)√(bb-yy); read as the branch Bce."))
 d.quote("Oc", "§227", r"ex qua fit $Oc = a$ vti assumsumus",
         reading=(sp.Subs(a - xLc, y, b), a),
@@ -454,7 +530,13 @@ d.quote("Oc", "§227", r"ex qua fit $Oc = a$ vti assumsumus",
             "transcription", "medium", r"Oc = c",
             "At y = b both branches give x = a - c, so Ac = a - c and Oc = AO - Ac = c, 'as we assumed' "
             "(§220, §221, and §232: 'Ac = a - c et Oc = c'). a for c, the confusion of the line before.",
-            corrected_reading=(sp.Subs(a - xLc, y, b), c)),
+            corrected_reading=(sp.Subs(a - xLc, y, b), c),
+                        objection="'Oc = a' may be the print's (a compositor's a for c), or Oc may name another "
+                                  "segment of the lost figure.",
+                        answer="§221 closes with the same words, 'quo fiat interuallum Oc = c uti assumimus', and "
+                               "§232 has 'Oc = c'; at y = b the curve gives Ac = a - c, so Oc = c. The a for c in a "
+                               "line where the scan confuses a, c and x is the likelier reading; medium, since the "
+                               "print cannot be seen."),
         note=claim("the breadth ef stands at Oc = c from the middle O, as assumed."))
 d.quote("S2c-expanded", "§227",
         "$\\int (a+Y)^2 dy V(bb-yy) = a^2 \\int dy V(bb-yy) - \\frac{2ac}{bb} \\int yy dy$\n "
@@ -469,15 +551,26 @@ SHIFT = ("From y = 0 to b: ∫dy√(bb-yy) = πb²/4 = bD/2a, ∫yy dy√ = πb�
 d.quote("U0-value", "§227", r"Verum est $\int dy V(bb-yy) = \frac{b^3 D}{8a}$",
         reading=(U0, b ** 3 * D / (8 * a)),
         erratum=Erratum("transcription", "low", r"\int dy \sqrt{bb-yy} = \frac{bD}{2a}", SHIFT,
-                        corrected_reading=(U0, b * D / (2 * a))),
+                        corrected_reading=(U0, b * D / (2 * a)),
+                        objection="The shift of three values by one integral is no glyph an OCR confuses; it may be "
+                                  "the print's, a compositor setting the values against the wrong integrals.",
+                        answer="The line after is made of the right values, so Euler had them; whether the print or "
+                               "the transcription moved them cannot be told, which is why the erratum is low. The "
+                               "kind is the likelier, not a certainty."),
         note=claim("∫dy√(bb-yy) = b³D/8a (as printed)."))
 d.quote("U2-value-c", "§227", r"$\int yy dy V(bb-yy) = \frac{b^5 D}{16a}$", reading=(U2, b ** 5 * D / (16 * a)),
         erratum=Erratum("transcription", "low", r"\int yy dy \sqrt{bb-yy} = \frac{b^3 D}{8a}", SHIFT,
-                        corrected_reading=(U2, b ** 3 * D / (8 * a))),
+                        corrected_reading=(U2, b ** 3 * D / (8 * a)),
+                        objection="As for ∫dy√(bb-yy): the shift may be the print's.",
+                        answer="abD/2 - bcD/4 + bccD/16a uses b³D/8a for this integral, as §226 prints it; print or "
+                               "scan cannot be told, hence low."),
         note=claim("∫yy dy√(bb-yy) = b⁵D/16a (as printed)."))
 d.quote("U4-value", "§227", r"$\int y^4 dy V(bb-yy) = \frac{b^9 D}{16a}$", reading=(U4, b ** 9 * D / (16 * a)),
         erratum=Erratum("transcription", "low", r"\int y^4 dy \sqrt{bb-yy} = \frac{b^5 D}{16a}", SHIFT,
-                        corrected_reading=(U4, b ** 5 * D / (16 * a))),
+                        corrected_reading=(U4, b ** 5 * D / (16 * a)),
+                        objection="As for ∫dy√(bb-yy): the shift may be the print's; b⁹ may be Euler's own.",
+                        answer="The term bccD/16a of the next line is (cc/b⁴)·b⁵D/16a, so Euler had b⁵; print or "
+                               "scan cannot be told, hence low."),
         note=claim("∫y⁴dy√(bb-yy) = b⁹D/16a (as printed)."))
 d.quote("S2c-value", "§227",
         r"$\int (a+Y)^2 dy V(bb-yy) = \frac{abD}{2} - \frac{bcD}{4} + \frac{bccD}{16a} = \frac{bD}{16a} (8aa - 4ac + cc)$",
@@ -497,7 +590,12 @@ d.quote("moment-EF-c", "§227",
             "a²D/2 + c²D/8 (the member before, which holds) with AB = 2a is AB²D/8 + c²D/8; c·c²D/128 is "
             "neither. The 128 belongs to §228's AB²D/128 (c = a/2); what the print had after '+' cannot be "
             "told from the transcription, low.",
-            corrected_reading=as_printed(lambda: (KEFc, a * a * D / 2 + c * c * D / 8, (2 * a) ** 2 * D / 8 + c * c * D / 8))),
+            corrected_reading=as_printed(lambda: (KEFc, a * a * D / 2 + c * c * D / 8, (2 * a) ** 2 * D / 8 + c * c * D / 8)),
+                        objection="The print may have had '+ ccD/128' or another form Euler meant for a special "
+                                  "case, anticipating §228.",
+                        answer="The member before, a²D/2 + c²D/8, holds and with AB = 2a is AB²D/8 + c²D/8; any "
+                               "other last term contradicts it for general c, and §228 sets c = a/2 only afterwards."
+                               " What the print had cannot be told, so low."),
         note=claim("the whole figure AEBF has the moment a²D/2 + c²D/8 = AB²D/8 + ... about EF."))
 
 # ================================================================ §228: growth, the limit c <= a/2, c = a/2
@@ -522,7 +620,15 @@ d.quote("middle-named-C", "§228", r"a punto axis AB medio C distet",
             "(§227), which is not the midpoint for c > 0: read as printed, C would be the midpoint of AB, "
             "(x_A + x_B)/2 at y = 0. The moment AB²D/8 + ccD/8 grows with Oc = c, the distance of ef from O. "
             "O and C are alike in the scan; medium.",
-            corrected_reading=(sp.Subs((xLc + xRc) / 2, y, 0), a)),
+            corrected_reading=(sp.Subs((xLc + xRc) / 2, y, 0), a),
+                        objection="Read with C the sentence is still true: ef stands at 3c/4 from the centroid C (AC"
+                                  " = a - c/4, Ac = a - c), and the moment a²D/2 + c²D/8 grows with that distance "
+                                  "too; 'medio' may loosely mean the centre of the figure.",
+                        answer="The growth holds either way, but 'punctum axis AB medium' is Euler's own name for O "
+                               "(§220 'O puncto axis longitudinalis medio', §232 'punctum axis longitudinalis medium"
+                               " O'), and this paragraph ends 'a medio punto longitudinis O'; C is not the midpoint "
+                               "for c > 0. O and C are alike in the scan; the print's slip is the one alternative "
+                               "left, medium."),
         note=claim("the middle of the axis AB, from which the distance of ef is counted, is O (AO = a)."))
 d.quote("curve-c-again", "§228", r"$a = a - \frac{cyy}{bb} + \frac{c}{b}$ $V(bb-yy)$",
         reading=Eq(a, a - c * y ** 2 / b ** 2 + c / b * R),
@@ -531,7 +637,12 @@ d.quote("curve-c-again", "§228", r"$a = a - \frac{cyy}{bb} + \frac{c}{b}$ $V(bb
             "The assumed equation is the curve of §227, x = a - cyy/bb ± (a/b)√(bb-yy); the transcription "
             "has a for x and repeats the c/b of §227. Low: three letters differ.",
             corrected_reading=as_printed(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
-                                                      a - c * y ** 2 / b ** 2 + a / b * R])))),
+                                                      a - c * y ** 2 / b ** 2 + a / b * R]))),
+                        objection="The same c/b as in §227 repeated here suggests the print had it; and 'a =' may be"
+                                  " a heading letter run into the equation.",
+                        answer="The assumed equation is §227's, whose right form Euler's working shows; the excerpt "
+                               "differs in three letters, so neither a single slip nor a single glyph explains it, "
+                               "and print and scan cannot be told apart: low, as booked."),
         note=claim("the assumed equation (of §227)."))
 d.quote("c-limit", "§228",
         r"non permittit, vt capiatur $c > \frac{1}{2}a$, alias enim curua ultra rectam aa excurreret",
