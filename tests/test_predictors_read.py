@@ -140,7 +140,8 @@ def test_scheeffer_vii_viii_keeps_the_edge_up_root_next_to_its_pitchfork(offset,
 
 
 # ---- Scheeffer IX: the case tables decide with the readings of the printed formulas ----------------------------
-IXD, IX = load("scheeffer-ix")
+IXD, IX_PACKAGE = load("scheeffer-ix")
+IX, IXS = IX_PACKAGE.predictors, IX_PACKAGE.statements
 R = Fraction
 
 
@@ -160,7 +161,7 @@ def _box(s, *dims):
     return lambda: [(p.up, p.stability, p.printed) for p in IX.predict(Scene(body="box", density=s, dims=dims))]
 
 
-a_, b_, c_, s_, z_, t_ = IX.a, IX.b, IX.c, IX.s, IX.z, IX.t
+a_, b_, c_, s_, z_, t_ = IXS.a, IXS.b, IXS.c, IXS.s, IXS.z, IXS.t
 _IX_MUTATIONS = {
     # (a/b)^2 > 6 s(1-s) -> 5 s(1-s); s = 3/5, a/b = 57/50: n = 1.2996 between 5 s(1-s) = 1.2 and 6 s(1-s) = 1.44, the
     # upright position turns stable
@@ -182,13 +183,14 @@ _IX_MUTATIONS = {
     # (156) n_1 - 1/100: the same change of row
     "N1_156": ("156", (t_,), 1, 0, lambda m: sp.Matrix([m[0] - sp.Rational(1, 100), m[1]]), _tables(R(73, 100), R(501, 500))),
     # (136) -4 n sigma^2 -> -5 n sigma^2: the root z (and its tilt) at s = 7/10, a/b = 51/50 moves
-    "F_136": ("136", (z_, a_, b_, s_), 1, None, lambda m: m - IX.n * IX.sg ** 2, _tables(R(7, 10), R(51, 50))),
+    "F_136": ("136", (z_, a_, b_, s_), 1, None, lambda m: m - IXS.n * IXS.sg ** 2, _tables(R(7, 10), R(51, 50))),
     # (a/b)^2 > 1/(6 s(1-s)) -> 1/(5 s(1-s)): at s = 4/5, a/b = 21/20 (n = 1.1025) the oblique of the third region goes
     "UNSTABLE_3": ("unstable-3", (a_, b_, s_), 0, None, lambda m: (a_ / b_) ** 2 - 1 / (5 * s_ * (1 - s_)),
                    _tables(R(4, 5), R(21, 20))),
     # (165) 1/rho - n -> 1/rho - n - 1/10: the same oblique leaves the third region (1/rho = 1.136)
     "BOUND_165": ("165", (a_, b_, s_), 0, None,
-                  lambda m: IX.PW(1 / IX.rho_s - (a_ / b_) ** 2 - sp.Rational(1, 10), 0), _tables(R(4, 5), R(21, 20))),
+                  lambda m: IXS.PW(1 / IXS.rho_s - (a_ / b_) ** 2 - sp.Rational(1, 10), 0),
+                  _tables(R(4, 5), R(21, 20))),
     # (166) 12 -> 13: its tilt moves
     "COT2_166": ("166", (a_, b_, s_), 1, None, lambda m: 13 * (a_ / b_) ** 2 * s_ * (1 - s_) - 2, _tables(R(4, 5), R(21, 20))),
     # (b/a)^2 > 6 s(1-s) -> 5 s(1-s): at s = 4/5, a/b = 21/20 the other upright position (0.907 against 0.96, 0.8)
@@ -220,7 +222,7 @@ def test_scheeffer_ix_tilt_of_the_second_region_follows_134():
     # (134) x^2 = 2 a b (1-s) tg phi_2 -> 3 a b (1-s) tg phi_2: the tilt of the root at s = 7/10, a/b = 51/50 moves,
     # its z stays
     before = IX.tables_prediction(R(7, 10), R(51, 50))
-    mutated = _ix_mutated("134", 1, lambda m: 3 * a_ * b_ * (1 - s_) * sp.tan(IX.phi))
+    mutated = _ix_mutated("134", 1, lambda m: 3 * a_ * b_ * (1 - s_) * sp.tan(IXS.phi))
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(IX, "TAN_134", IX._tan_134(mutated))
         after = IX.tables_prediction(R(7, 10), R(51, 50))

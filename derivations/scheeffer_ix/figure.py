@@ -1,6 +1,6 @@
 """Scheeffer IX's case tables against the solver, as a picture: density s against a/b.
 
-Each cell of the grid (``docs/scheeffer-ix-grid.json``, :mod:`symfloat.derivations._ix_grid`) is
+Each cell of the grid (``docs/scheeffer-ix-grid.json``, :mod:`.grid`) is
 coloured by the number of stable positions the solver finds in the section a x b; a cell where the
 printed tables and the solver disagree is outlined in red, and the cells beside the boundaries are
 dots in the same colours.  On top, the boundaries of the printed tables, each evaluated from the
@@ -14,7 +14,7 @@ import math
 import numpy as np
 import sympy as sp
 
-from ..registry import load
+from . import statements
 
 __all__ = ["BOUNDARIES", "boundaries", "cell_counts", "grid_figure", "grid_caption"]
 
@@ -53,8 +53,8 @@ def _curve(expr, s):
 
 def boundaries(densities) -> dict[str, np.ndarray]:
     """Label -> n = (a/b)^2 on the printed boundary at each of *densities* (NaN where it is not drawn)."""
-    d, module = load("scheeffer-ix")
-    a, b, s, t, n = module.a, module.b, module.s, module.t, sp.Symbol("n", positive=True)
+    d = statements.DERIVATION
+    a, b, s, t, n = statements.a, statements.b, statements.s, statements.t, sp.Symbol("n", positive=True)
     out = {}
     for label, name, row, mirrored in BOUNDARIES:
         condition = sp.sympify(_member(_printed(d, name).reading[0], row)).subs(a, sp.sqrt(n) * b).doit()

@@ -3,14 +3,14 @@
 Scheeffer IX turns the rectangular parallelepiped about an edge: a 2-D
 problem for the cross-section ``a x b`` (``a/b >= 1``).  For every cell of
 the grid the equilibria the printed tables give (:func:`tables_prediction`
-in ``symfloat/derivations/scheeffer_ix.py``: region, tilt from the position with ``b``
+in ``derivations/scheeffer_ix/predictors.py``: region, tilt from the position with ``b``
 vertical, stability) are compared with the equilibria the solver finds in
 the same section, which knows nothing of the tables.  A cell agrees when both
 lists match one to one (tilt within ``MATCH_RAD``, same stability).
 
 The derivation hands the grid to the main job as a report (``provides("report", ...)``):
 ``docs/scheeffer-ix-grid.md`` and its data ``docs/scheeffer-ix-grid.json`` (every cell's counts, the
-picture's data: :mod:`symfloat.derivations._ix_figure`), rebuilt when their stamp changes.
+picture's data: :mod:`.figure`), rebuilt when their stamp changes.
 """
 from __future__ import annotations
 
@@ -23,9 +23,10 @@ from pathlib import Path
 
 import sympy as sp
 
-from ..registry import load
-from ..report.stamp import digest, package_digest, stamp_line
-from ..solver import make_scene, solve
+from symfloat.report.stamp import digest, package_digest, stamp_line
+from symfloat.solver import make_scene, solve
+
+from . import predictors, statements
 
 __all__ = ["DENSITIES", "RATIOS", "grid_rows", "report_rows", "grid_markdown", "grid_data", "grid_stamp"]
 
@@ -42,7 +43,7 @@ def _solver_positions(s, ratio):
 
 
 def _bound(margin, s):
-    """The n = (a/b)^2 where the printed *margin* (a reading of :mod:`scheeffer_ix` in (a, b, s), linear in n)
+    """The n = (a/b)^2 where the printed *margin* (a reading of :mod:`.predictors` in (a, b, s), linear in n)
     vanishes at the exact density *s*."""
     n = sp.Symbol("n", positive=True)
     (root,) = sp.solve(margin(sp.sqrt(n), 1, s), n)
@@ -54,14 +55,14 @@ def boundary_cells(densities=DENSITIES[::2], margin=Fraction(1, 1000)) -> list[t
     curves n = (a/b)^2 = 6 s(1-s) (132a), 1/(6 s(1-s)) (IX.C), 2(1-s)(4s-1) (132b), its inverse (165), and n_1(s)
     of (156) as printed, each where it lies above n = 1 (a/b = sqrt(n), rounded to 6 digits); the curves from the
     readings the tables decide with."""
-    _, module = load("scheeffer-ix")
-    margins = (module.UPRIGHT_132A, module.UNSTABLE_3, lambda *x: module.OBLIQUE_132B(*x)[1], module.BOUND_165)
+    margins = (predictors.UPRIGHT_132A, predictors.UNSTABLE_3, lambda *x: predictors.OBLIQUE_132B(*x)[1],
+               predictors.BOUND_165)
     cells = []
     for s in densities:
         sv = max(s, 1 - s)
         curves = [_bound(m, sv) for m in margins]
         if sv > Fraction(23, 32):
-            curves.append(Fraction(float(module._n1_printed(float(sv)))).limit_denominator(10 ** 12))
+            curves.append(Fraction(float(predictors._n1_printed(float(sv)))).limit_denominator(10 ** 12))
         for n in curves:
             for side in (1 - margin, 1 + margin):
                 if n * side > 1:
@@ -73,7 +74,6 @@ def boundary_cells(densities=DENSITIES[::2], margin=Fraction(1, 1000)) -> list[t
 def grid_rows(densities=DENSITIES, ratios=RATIOS, progress=None, extra=()) -> list[dict]:
     """One row per cell of the grid (and per *extra* cell ``(s, a/b)``): the table's and the
     solver's equilibria and the differences."""
-    _, module = load("scheeffer-ix")
     cells = [(s, r) for r in ratios for s in densities] + list(extra)
     rows = []
     for i, (s, ratio) in enumerate(cells, 1):
@@ -82,7 +82,7 @@ def grid_rows(densities=DENSITIES, ratios=RATIOS, progress=None, extra=()) -> li
         t0 = time.perf_counter()
         solver = _solver_positions(s, ratio)
         table = [(p["phi"], p["stability"], p["region"], p["printed"])
-                 for p in module.tables_prediction(s, ratio)]
+                 for p in predictors.tables_prediction(s, ratio)]
         missing, wrong, unpredicted = [], [], list(solver)
         for phi, stab, region, printed in table:
             near = [q for q in unpredicted if abs(q[0] - phi) <= MATCH_RAD]
@@ -117,10 +117,9 @@ def report_rows(progress=None) -> list[dict]:
 
 def grid_stamp() -> str:
     """The content stamp of the grid: the solver, geometry and model sources, this module and
-    the derivation whose tables it reads (see :mod:`symfloat.report.stamp`)."""
-    _, module = load("scheeffer-ix")
-    return digest(package_digest("solver", "geometry", "model"), Path(__file__), Path(module.__file__),
-                  repr((DENSITIES, RATIOS, MATCH_RAD)))
+    the statements and predictors whose tables it reads (see :mod:`symfloat.report.stamp`)."""
+    return digest(package_digest("solver", "geometry", "model"), Path(__file__), Path(statements.__file__),
+                  Path(predictors.__file__), repr((DENSITIES, RATIOS, MATCH_RAD)))
 
 
 def grid_data(rows, stamp: str) -> str:
@@ -143,7 +142,7 @@ def grid_markdown(rows, stamp: str | None = None) -> str:
     lines = ["# Scheeffer IX: the printed case tables against the solver", "",
              "Generated by `symfloat run`. The box turned about an edge is the 2-D problem of its "
              "cross-section a × b (a/b ≥ 1). For each cell the equilibria of the printed tables (131)–(132b), "
-             "(161), (162), (162a), (164a)–(166) — as `tables_prediction` in `symfloat/derivations/scheeffer_ix.py` reads "
+             "(161), (162), (162a), (164a)–(166) — as `tables_prediction` in `derivations/scheeffer_ix/predictors.py` reads "
              "them — are matched with those the solver finds in the section (tilt from the position with b "
              f"vertical within {MATCH_RAD:g} rad, same stability).", "",
              f"Grid: {len(densities)} densities s from {densities[0]:g} to {densities[-1]:g} in steps of "
