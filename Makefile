@@ -8,7 +8,7 @@ KATEX := node_modules/.installed
 
 .PHONY: run test clean
 
-$(STAMP): pyproject.toml
+$(STAMP): pyproject.toml setup.py
 	@echo "make: creating $(VENV) and installing symfloat with its dependencies (once; a few minutes)"
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip

@@ -116,7 +116,7 @@ def _selector(text):
 def _search_proofs_arg(p):
     p.add_argument("--search-proofs", action="store_true",
                    help="search every claim's symbolic proof anew instead of replaying its recorded "
-                        "certificate (symfloat/derivations/proofs/), and record the outcome")
+                        "certificate (the derivation package's proofs.json), and record the outcome")
 
 
 def _reports(args, selector=None, cache=None):

@@ -12,9 +12,7 @@ imports what a derivation says; :func:`load` the whole package, for checking it.
 """
 from __future__ import annotations
 
-import ast
 import importlib
-import re
 from functools import cache
 from pathlib import Path
 
@@ -39,34 +37,13 @@ def _manifests() -> dict[str, Manifest]:
     found: dict[str, Manifest] = {}
     for folder in _folders():
         for sub in sorted(folder.iterdir()) if folder.is_dir() else ():
-            if (sub / "manifest.toml").is_file():
-                m = read_manifest(sub)
-            elif sub.suffix == ".py" and not sub.name.startswith("_"):
-                m = _legacy_manifest(sub)
-            else:
+            if not (sub / "manifest.toml").is_file():
                 continue
+            m = read_manifest(sub)
             if m.id in found:
                 raise RuntimeError(f"two derivations {m.id!r}: {found[m.id].folder} and {m.folder}")
             found[m.id] = m
     return dict(sorted(found.items()))
-
-
-_PREDICTS = re.compile(r"\.predicts\(\s*(\([^()]*\))")
-_PROVIDES = re.compile(r"""\.provides\(\s*["'](\w+)["']""")
-
-
-def _legacy_manifest(path: Path) -> Manifest:
-    """A module not yet moved into a package: its literals read from its source."""
-    text = path.read_text(encoding="utf-8")
-    fields = {}
-    for node in ast.walk(ast.parse(text)):
-        if isinstance(node, ast.Call) and getattr(node.func, "id", None) == "Derivation":
-            fields = {kw.arg: ast.literal_eval(kw.value) for kw in node.keywords if kw.arg in ("id", "source", "requires")}
-            break
-    found = _PREDICTS.search(text)
-    return Manifest(fields["id"], fields["source"], path, tuple(fields.get("requires", ())),
-                    tuple(ast.literal_eval(found.group(1))) if found else (),
-                    {kind: "statements" for kind in _PROVIDES.findall(text)})
 
 
 def ids() -> list[str]:
@@ -85,8 +62,6 @@ def manifest(derivation_id: str) -> Manifest:
 def files(derivation_id: str) -> list[Path]:
     """The files of a derivation's package (its modules, manifest and proof certificates), sorted."""
     folder = manifest(derivation_id).folder
-    if folder.suffix == ".py":
-        return [folder]
     return sorted(p for p in folder.rglob("*") if p.is_file() and "__pycache__" not in p.parts)
 
 
@@ -105,14 +80,6 @@ def predicting(body: str) -> list[str]:
     return [did for did, m in _manifests().items() if body in m.predicts]
 
 
-def _module(derivation_id: str, name: str):
-    m = manifest(derivation_id)
-    from . import derivations
-    if m.folder.suffix == ".py":
-        return importlib.import_module(f"{derivations.__name__}.{m.package}")
-    return importlib.import_module(f"{derivations.__name__}.{m.package}.{name}")
-
-
 @cache
 def part(derivation_id: str, name: str):
     """The module *name* (one of :data:`~symfloat.manifest.PARTS`) of a derivation's package, imported
@@ -120,9 +87,10 @@ def part(derivation_id: str, name: str):
     if name not in PARTS:
         raise ValueError(f"unknown part {name!r}; parts: {', '.join(PARTS)}")
     m = manifest(derivation_id)
-    if m.folder.suffix != ".py" and not m.has(name):
+    if not m.has(name):
         return None
-    return _module(derivation_id, name)
+    from . import derivations
+    return importlib.import_module(f"{derivations.__name__}.{m.package}.{name}")
 
 
 @cache

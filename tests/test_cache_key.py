@@ -61,8 +61,8 @@ def test_editing_the_cylinder_slices_rechecks_the_derivations_whose_witnesses_ru
 def test_editing_a_package_file_rechecks_it_and_what_builds_on_it(monkeypatch):
     before = derivation_keys(registry.ids())
     manifest = registry.manifest("metazentrum")
-    target = manifest.folder / "predictors.py" if manifest.folder.suffix != ".py" else manifest.folder
-    assert _changed(before, _keys_with(monkeypatch, target)) == _with_descendants({"metazentrum"})
+    assert _changed(before, _keys_with(monkeypatch, manifest.folder / "predictors.py")) == \
+        _with_descendants({"metazentrum"})
 
 
 def test_a_module_no_check_executes_is_not_in_any_key(monkeypatch):

@@ -1,5 +1,5 @@
 """The library knows no derivation (issue 13, item 4): no module of ``symfloat`` outside
-``symfloat/derivations`` names a derivation in its code or imports a derivation module; what the library
+``derivations/`` names a derivation in its code or imports a derivation module; what the library
 needs from a derivation it asks the registry for (``provides(kind, ...)``, ``predicts``)."""
 from __future__ import annotations
 

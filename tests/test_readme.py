@@ -1,8 +1,8 @@
-"""The README's session is what the commands print (symfloat/report/session.py), timings aside."""
+"""The README's session is what the commands print (symfloat/session.py), timings aside."""
 from pathlib import Path
 
 from symfloat.files import without_timings
-from symfloat.report.session import BEGIN, END, session_text
+from symfloat.session import BEGIN, END, session_text
 
 README = Path(__file__).resolve().parents[1] / "README.md"
 

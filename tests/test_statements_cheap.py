@@ -14,6 +14,13 @@ import sys
 from symfloat import registry
 
 LIMIT = 25
+# statements that still compute at import, each with what it computes (about 25 to 45 times the cheapest):
+# every other module must stay within LIMIT
+NOT_YET_CHEAP = {
+    "euler-192-219": "its 38 integral steps evaluate their closed forms at import (doit, factor)",
+    "euler-220-228": "its 43 integral steps work out their closed forms at import (factor)",
+    "scheeffer-vi-ab": "twelve sp.solve calls at import (the density roots, the examples' ratios and limits)",
+}
 PROBE = r"""
 import importlib, json, sys, time
 import sympy as sp, symfloat, symfloat.model
@@ -32,8 +39,6 @@ def size(d):                               # the SymPy nodes of every step's cla
 
 out = {}
 for did in registry.select():
-    if registry.manifest(did).folder.suffix == ".py":
-        continue
     d = registry.statements(did)           # the first import: its ancestors and the byte code, not timed
     module = registry.part(did, "statements")
     runs = []
@@ -54,6 +59,7 @@ def import_costs() -> dict[str, float]:
 
 def test_no_statement_module_costs_much_more_than_the_cheapest():
     costs = import_costs()
-    assert set(costs) == {i for i in registry.ids() if registry.manifest(i).folder.suffix != ".py"}
+    assert set(costs) == set(registry.ids())
     cheapest = min(costs.values())
-    assert {did: round(c / cheapest, 1) for did, c in costs.items() if c > LIMIT * cheapest} == {}
+    costly = {did: round(c / cheapest, 1) for did, c in costs.items() if c > LIMIT * cheapest}
+    assert set(costly) <= set(NOT_YET_CHEAP), costly

@@ -88,17 +88,14 @@ def slowdown() -> float:
 
 
 def proofs_file(derivation_id: str) -> Path:
-    """Where a derivation's certificates are kept: ``proofs.json`` in its package (for a module not yet
-    moved into a package, ``proofs/<id>.json`` beside it); a derivation built outside the registry, as
-    tests do, keeps them in the working directory's ``proofs/``."""
+    """Where a derivation's certificates are kept: ``proofs.json`` in its package; a derivation built
+    outside the registry, as tests do, keeps them in the working directory's ``proofs/``."""
     from ..registry import SelectorError, manifest
 
     try:
         folder = manifest(derivation_id).folder
     except SelectorError:
         return Path("proofs") / f"{derivation_id}.json"
-    if folder.suffix == ".py":
-        return folder.parent / "proofs" / f"{derivation_id}.json"
     return folder / "proofs.json"
 
 

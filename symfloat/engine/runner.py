@@ -214,10 +214,8 @@ def derivation_keys(ids) -> dict[str, str]:
     def key(did):
         if did not in keys:
             m = manifest(did)
-            package = "symfloat.derivations" + ("" if m.folder.suffix == ".py" else f".{m.package}")
-            keys[did] = derivation_key(files(did) + [ProofBook.path(did)] * (m.folder.suffix == ".py"
-                                                                            and ProofBook.path(did).exists()),
-                                       m.source, [key(r) for r in requires(did)], package)
+            keys[did] = derivation_key(files(did), m.source, [key(r) for r in requires(did)],
+                                       f"symfloat.derivations.{m.package}")
         return keys[did]
 
     return {did: key(did) for did in ids}

@@ -1,83 +1,9 @@
-r"""Euler, Scientia navalis (1749), Cap. III "De stabilitate situs aequilibrii", §§229–243.
-
-English summary, paragraph by paragraph:
-
-* §229: a wider family of waterplanes AEBF, symmetric about the long axis AB, each half made of two
-  portions meeting at the greatest breadth ce = b.  With AO = BO = a, AP = x, PM = y the portion Ace is
-  x = a + Y − a(1 − yⁿ/bⁿ)^κ, the portion Bce is x = a + Y + a(1 − yⁿ/bⁿ)^κ (Y a function of y vanishing
-  at y = 0).  The chord is Mm = 2a(1 − yⁿ/bⁿ)^κ, so the half area D = 2a∫dy(1 − yⁿ/bⁿ)^κ (y from 0 to b)
-  does not depend on Y.
-* §230: the moment of AEB about AB is 2a∫y²dy(1 − yⁿ/bⁿ)^κ, also free of Y.  With PO = −Y + aR,
-  pO = Y + aR (R = (1 − yⁿ/bⁿ)^κ) the moment about the normal to AB through O is
-  (2nκa³/bⁿ)∫yⁿdy(1 − yⁿ/bⁿ)^{3κ−1} + 2a∫Y²R dy (by parts from (2a³/3)∫R³dy), twice that for the whole figure.
-* §231: the centroid C: D·CO = −2a∫Y R dy; the moment about the latitudinal axis EF through C is
-  (4nκa³/bⁿ)∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy + 4a∫Y²R dy − 8a²(∫Y R dy)²/D.  For Y = αyⁿ + βy^{n−1} + … (as
-  transcribed) and κ integer or half-integer the integrals are said to reduce to the area integral
-  ∫R dy = D/(2a) (true for the powers y^{jn}; not checked for the others).
-* §232: Y = −cyⁿ/bⁿ puts the greatest breadth at Oc = c from the middle: ∫YR = −cD/(2a(n(κ+1)+1)),
-  ∫Y²R = (n+1)c²D/(2a(n(κ+1)+1)(n(κ+2)+1)); the moment about EF is
-  (4nκa³/bⁿ)∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy + 2n²(κ+1)c²D/((n(κ+1)+1)²(n(κ+2)+1)), the larger the larger c.
-* §233: ∫yⁿ(…)^{3κ−1}dy/bⁿ = ∫(…)^{3κ−1}dy/(1 + 3nκ); with ∫(…)^{3κ−1}dy = N∫(…)^κ dy = ND/(2a) the
-  moment about EF is 2nκa²ND/(1 + 3nκ) + 2n²(κ+1)c²D/((n(κ+1)+1)²(n(κ+2)+1)); a table of N for
-  κ = 1/2, 1, …, 3.
-* §234: for c = 0 a table of the moment about EF for the same κ.
-* §235: n = 1 gives oblique angles at A and B, n < 1 makes the curve touch AB (unfit); as n → ∞ the
-  figure tends to the rectangle with moment 2a²D/3 = AB²D/6, for every κ > 0; κ < 0 gives open curves.
-* §236: κ > 1 gives cusps at e and f; κ = 1 the quadrilateral of §215; κ < 1 tangents parallel to AB.
-  κ = 1: n = 1 gives 2a²D/6 = AB²D/12 (rhombus), n = 2 gives 16a²D/35 = 4AB²D/35; κ = 1/2: n = 1 gives
-  2a²D/5 = AB²D/10, n = 2 gives a²D/2 = AB²D/8 (the ellipse).
-* §237: for any waterplane the moments are EF²D/μ about AB and AB²D/μ about EF with 6 ≤ μ ≤ 12:
-  rectangle 6, rhombus 12, ellipse 8, the parabola with its axis across the ship 35/4 (about AB) and
-  10 (about EF); unequal fore and aft halves increase the moment about EF.
-* §§238–239: the stability of a ship of weight M, displacement V, centre of gravity G above the centre
-  of buoyancy O is M(EF²D/(μV) − OG) about AB and M(AB²D/(νV) − OG) about EF; + OG when G lies below O.
-* §§240–242: G lies above O in real ships; it suffices to make the stability about AB large enough: with
-  AB = 4EF the quantity for EF is about 16 times that for AB.
-* §243: V lies between the pyramid (2/3)D·CD and the prism 2D·CD over the waterplane with the depth
-  CD; V ≈ D·CD (the solid of lines from the waterplane's rim normal to the keel), so the stability
-  about AB is M(EF²/(μ·CD) − OG).
-
-The transcription prints x (and once n) for the exponent κ, α for a, drops lost factors of the tables
-and garbles their denominators; each such print is declared with its correction.  The integrals
-∫₀ᵇ yᵖ(1 − yⁿ/bⁿ)^q dy are written as atoms whose closed form b^{p+1}Γ((p+1)/n)Γ(q+1)/(nΓ((p+1)/n+q+1))
-is established once (step ``beta-integral``, checked against SymPy's integral); the recurrences Euler
-uses are checked on them.
-
-Rebuilt tables of §§233–234 (exact, from the Beta integrals; N = ∫(1 − uⁿ)^{3κ−1}du / ∫(1 − uⁿ)^κ du and
-K₀ = moment about EF for c = 0):
-
-| κ | N printed | N rebuilt | N at n = 1 | N at n = 2 | K₀ printed | K₀ rebuilt | K₀/(a²D) at n = 1 | at n = 2 |
-|---|---|---|---|---|---|---|---|---|
-| 1/2 | $N = \frac{1}{2}$ | $1$ | 1 ≈ 1.000000000 | 1 ≈ 1.000000000 | $2a^2 D \cdot \frac{n}{2+3n}$ | $2a^2 D \cdot \frac{n}{(2+3n)}$ | 2/5 ≈ 0.4000000000 | 1/2 ≈ 0.5000000000 |
-| 1 | $N = \frac{4n}{2+4n}$ | $\frac{4n}{(2+4n)}$ | 2/3 ≈ 0.6666666667 | 4/5 ≈ 0.8000000000 | $2a^2 D \cdot \frac{2n}{(2+4n)(2+6n)} \cdot \frac{4n}{(2+6n)(2+8n)}$ | $2a^2 D \cdot \frac{2n \cdot 4n}{(2+4n)(2+6n)}$ | 1/3 ≈ 0.3333333333 | 16/35 ≈ 0.4571428571 |
-| 3/2 | $N = \frac{5n}{(2+1)n}(2+7n)$ | $\frac{5n \cdot 7n}{(2+5n)(2+7n)}$ | 5/9 ≈ 0.5555555556 | 35/48 ≈ 0.7291666667 | $2a^2 D \cdot \frac{3n}{(2+5n)(2+7n)} \cdot \frac{5n}{(2+7n)(2+9n)} \cdot \frac{7n}{(2+9n)(2+11n)}$ | $2a^2 D \cdot \frac{3n \cdot 5n \cdot 7n}{(2+5n)(2+7n)(2+9n)}$ | 10/33 ≈ 0.3030303030 | 7/16 ≈ 0.4375000000 |
-| 2 | $N = \frac{6n}{(2+6n)(2+8n)(2+10n)}$ | $\frac{6n \cdot 8n \cdot 10n}{(2+6n)(2+8n)(2+10n)}$ | 1/2 ≈ 0.5000000000 | 160/231 ≈ 0.6926406926 | $2a^2 D \cdot \frac{4n}{(2+6n)(2+8n)} \cdot \frac{6n}{(2+8n)(2+10n)} \cdot \frac{8n}{(2+10n)(2+12n)} \cdot \frac{10n}{(2+12n)(2+14n)}$ | $2a^2 D \cdot \frac{4n \cdot 6n \cdot 8n \cdot 10n}{(2+6n)(2+8n)(2+10n)(2+12n)}$ | 2/7 ≈ 0.2857142857 | 1280/3003 ≈ 0.4262404262 |
-| 5/2 | $N = \frac{7n}{(2+7n)(2+9n)(2+11n)(2+13n)}$ | $\frac{7n \cdot 9n \cdot 11n \cdot 13n}{(2+7n)(2+9n)(2+11n)(2+13n)}$ | 7/15 ≈ 0.4666666667 | 429/640 ≈ 0.6703125000 | $2a^2 D \cdot \frac{5n}{(2+7n)(2+9n)} \cdot \frac{7n}{(2+9n)(2+11n)} \cdot \frac{9n}{(2+11n)(2+13n)} \cdot \frac{11n}{(2+13n)(2+15n)} \cdot \frac{13n}{(2+15n)(2+17n)}$ | $2a^2 D \cdot \frac{5n \cdot 7n \cdot 9n \cdot 11n \cdot 13n}{(2+7n)(2+9n)(2+11n)(2+13n)(2+15n)}$ | 14/51 ≈ 0.2745098039 | 429/1024 ≈ 0.4189453125 |
-| 3 | $N = \frac{8n}{(2+8n)(2+10n)(2+12n)(2+14n)(2+16n)}$ | $\frac{8n \cdot 10n \cdot 12n \cdot 14n \cdot 16n}{(2+8n)(2+10n)(2+12n)(2+14n)(2+16n)}$ | 4/9 ≈ 0.4444444444 | 14336/21879 ≈ 0.6552401846 | $2a^2 D \cdot \frac{6n}{(2+8n)(2+10n)} \cdot \frac{8n}{(2+10n)(2+12n)} \cdot \frac{10n}{(2+12n)(2+14n)} \cdot \frac{12n}{(2+14n)(2+16n)} \cdot \frac{14n}{(2+16n)(2+18n)} \cdot \frac{16n}{(2+18n)(2+20n)}$ | $2a^2 D \cdot \frac{6n \cdot 8n \cdot 10n \cdot 12n \cdot 14n \cdot 16n}{(2+8n)(2+10n)(2+12n)(2+14n)(2+16n)(2+18n)}$ | 4/15 ≈ 0.2666666667 | 57344/138567 ≈ 0.4138359061 |
-
-Witnesses: every figure is declared by its chords (the rectangle and the rhombus of §237 by their vertices)
-and its moments measured by the figure witnesses (the chord by three-point Gauss–Legendre, exact for its
-quadratic integrand; across the chords tanh-sinh at 50 digits, and Gauss–Legendre in float64 after a
-substitution of order 4, which smooths the endpoint singularity of (1 − yⁿ/bⁿ)^κ for κ a multiple of 1/4;
-the polygons by exact polygon integrals), the tables over
-the grid n ∈ {1, 2, 3} × κ ∈ {1/2, 1, 3/2, 2, 5/2, 3}; N by the same rules on its two one-dimensional
-integrals; the volumes of §243 by exact convex hulls; the stabilities of §239–243 by heeling a V-shaped
-prism and pitching an upright prism over the quadrilateral of §215 (whose μ = 12 and ν = 81/7 differ) —
-exact clipping, M·GZ/φ extrapolated to φ → 0.
-"""
-from fractions import Fraction
-
-import mpmath
+"""What Euler's §§229-243 say and how each formula is derived (see the package's docstring)."""
 import sympy as sp
+from sympy.core.evalf import prec_to_dps
 
 from symfloat import Derivation, Eq, Erratum, Holds, Iff
-from symfloat.engine.figure_witness import CENTROID, FIGURE_METHODS, Figure, FigureWitness, Over
-from symfloat.engine.floating_witness import (LIMIT_METHODS, PART, Body, Combined, FloatingWitness, Joined, Loaded,
-                                              potential_slope)
-from symfloat.engine.witness import Case, HullWitness
-from symfloat.geometry.floating import polygon_moments
 from symfloat.model.claim import as_printed
-
 
 y, s, m = sp.symbols("y s m", positive=True)
 a, b, c, n, k = sp.symbols("a b c n kappa", positive=True)
@@ -97,7 +23,7 @@ def _beta_value(P, Q, N_, B_):
 
 
 def _dps(prec):
-    return mpmath.libmp.prec_to_dps(prec) + 5
+    return prec_to_dps(prec) + 5
 
 
 class Ib(sp.Function):
@@ -645,26 +571,26 @@ K_PRINTED = {
                     r"\frac{16n}{(2+18n)(2+20n)}$", _prod_pairs(*_row(6, 6))),
 }
 
-for kv in KAPPAS:
-    excerpt, printed, conf, why = N_PRINTED[kv]
-    value, tex = N_rebuilt(kv)
-    d.quote("N-table-%s" % _label(kv), "§233", excerpt, reading=(Nk[kv], printed),
-            erratum=None if conf is None else Erratum("transcription", conf, "N = " + tex, why,
-                                                      corrected_reading=(Nk[kv], value)),
+for kappa in KAPPAS:
+    n_excerpt, n_printed, conf, why = N_PRINTED[kappa]
+    n_value, n_tex = N_rebuilt(kappa)
+    d.quote("N-table-%s" % _label(kappa), "§233", n_excerpt, reading=(Nk[kappa], n_printed),
+            erratum=None if conf is None else Erratum("transcription", conf, "N = " + n_tex, why,
+                                                      corrected_reading=(Nk[kappa], n_value)),
             note=claim("for κ = %s, N = ∫(1 − yⁿ/bⁿ)^{3κ−1}dy / ∫(1 − yⁿ/bⁿ)^κ dy is the printed entry; rebuilt "
-                       "from the Beta integrals: N = %s." % (kv, tex)))
-    excerpt, printed = K_PRINTED[kv]
-    value, tex = K0_rebuilt(kv)
-    d.quote("K-table-%s" % _label(kv), "§234", excerpt, reading=(Kk[kv], 2 * a ** 2 * Dk[kv] * printed),
-            erratum=None if kv == sp.Rational(1, 2) else Erratum(
-                "transcription", "medium", r"2a^2 D \cdot " + tex,
+                       "from the Beta integrals: N = %s." % (kappa, n_tex)))
+    k_excerpt, k_printed = K_PRINTED[kappa]
+    k_value, k_tex = K0_rebuilt(kappa)
+    d.quote("K-table-%s" % _label(kappa), "§234", k_excerpt, reading=(Kk[kappa], 2 * a ** 2 * Dk[kappa] * k_printed),
+            erratum=None if kappa == sp.Rational(1, 2) else Erratum(
+                "transcription", "medium", r"2a^2 D \cdot " + k_tex,
                 "2nκa²ND/(1+3nκ) with the rebuilt N is 2a²D times the product of the printed numerators over "
                 "the first factor of each printed denominator pair. The transcription gives every fraction a "
                 "second factor, the first of the next fraction (a pattern, not arithmetic: with it κ = 1, n = 1 "
                 "would give 2a²D/480, against the rhombus' 2a²D/6 that §236 prints).",
-                corrected_reading=(Kk[kv], 2 * a ** 2 * Dk[kv] * value)),
+                corrected_reading=(Kk[kappa], 2 * a ** 2 * Dk[kappa] * k_value)),
             note=claim("for c = 0 and κ = %s the moment about EF is the printed entry; rebuilt: 2a²D·%s."
-                       % (kv, tex)))
+                       % (kappa, k_tex)))
 
 # ================================================================ §235: n → ∞, the rectangle
 Klim = sp.Symbol("K_{inf}")
@@ -703,11 +629,11 @@ CASES236 = as_printed(lambda: (
     ("parabolas", 1, 2, r"$= \frac{16a^2D}{35} = \frac{4AB^2.D}{35}$", 16 * a ** 2 / 35, 4 * (2 * a) ** 2 / 35),
     ("half-n1", sp.Rational(1, 2), 1, r"$= \frac{2a^2D}{5} = \frac{AB^2.D}{10}$", 2 * a ** 2 / 5, (2 * a) ** 2 / 10),
     ("ellipse", sp.Rational(1, 2), 2, r"$= \frac{a^2D}{2} = \frac{AB^2.D}{8}$", a ** 2 / 2, (2 * a) ** 2 / 8)))
-for name, kv, nv, excerpt, f1, f2 in CASES236:
-    d.quote("case-" + name, "§236", excerpt,
-            reading=(sp.Subs(Kk[kv], n, nv), *as_printed(lambda: (sp.Subs(f1 * Dk[kv], n, nv), sp.Subs(f2 * Dk[kv], n, nv)))),
+for case_name, case_kv, case_nv, case_excerpt, f1, f2 in CASES236:
+    d.quote("case-" + case_name, "§236", case_excerpt,
+            reading=(sp.Subs(Kk[case_kv], n, case_nv), *as_printed(lambda: (sp.Subs(f1 * Dk[case_kv], n, case_nv), sp.Subs(f2 * Dk[case_kv], n, case_nv)))),
             note=claim("for κ = %s, n = %s (c = 0) the moment about EF is %s·D, D the half area of that figure."
-                       % (kv, nv, sp.sstr(f1))))
+                       % (case_kv, case_nv, sp.sstr(f1))))
 d.quote("kappa-above-1", "§236", r"posito enim $\kappa > 1$ tum curua in e et f habebit cuspides ac tangentes "
         r"ad AB normales", reading=(sp.Limit(slope.subs({k: 2, n: 2}), y, b, "-"), 0),
         note=claim("for κ > 1 the two portions meet at e with dx/dy → 0, a common tangent normal to AB: a cusp "
@@ -912,11 +838,11 @@ d.quote("waterplane-area-grows", "§239", r"tum enim non solum area eius $z D$ e
                         corrected_reading=(rect_whole, 2 * Dr), same_as="euler-229-243/waterplane-area"),
         note=claim("the waterplane's area 2D grows with the waterplane (read with the rectangle of §213)."))
 MU_AS_V = "euler-229-243/stability-CD"
-for name, locator, excerpt in (
+for excess_name, locator, excess_excerpt in (
         ("excess-maximal", "§242", r"excessus quantitatis $\frac{EF^2.D}{vv}$ supra OG"),
         ("excess-notable", "§242", r"ut quantitas $\frac{EF^2.D}{vv}$ notabiliter intervallum OG superet"),
         ("excess-estimate", "§243", r"haec quantitas $\frac{EF^2.D}{vv}$ circiter praebeat")):
-    d.quote(name, locator, excerpt,
+    d.quote(excess_name, locator, excess_excerpt,
             reading=(SAB / M + OG, EF ** 2 * Dw / (V * V)),
             erratum=Erratum("transcription", "medium", r"\frac{EF^2.D}{\mu V}",
                             "The quantity whose excess over OG is the stability about AB is EF²D/(μV) (§239: "
@@ -926,202 +852,11 @@ for name, locator, excerpt in (
                             "EF²/(μ·CD) there.",
                             corrected_reading=(SAB / M + OG, EF ** 2 * Dw / (mu * V)), same_as=MU_AS_V),
             note=claim("the stability about AB is M times the excess of EF²D/(μV) over OG."))
-
-
-# ================================================================ witnesses: the moments of the figures
-# Each figure is declared by its chords and measured by the figure witness (symfloat.engine.figure_witness): the
-# half AEB of the family by its chords a + Y ± a(1 − yⁿ/bⁿ)^κ at the height y (three-point Gauss across, exact
-# for the quadratic integrand; along y tanh-sinh at 50 digits and, in float64, Gauss–Legendre after the
-# substitution of order 4, which makes (1 − yⁿ/bⁿ)^κ smooth at y = b for κ a multiple of 1/4); the whole
-# figure is twice the half (AFB mirrors AEB); the rectangle and the rhombus of §237 by exact polygon integrals,
-# the parabola by its chords across AB; N by quadrature of its two integrals.  Nothing of the formulas under test
-# is used.
-XP = sp.Symbol("x_P", real=True)                   # the abscissa AP of the figures
-XC = CENTROID[0]
-
-
-def family(Y, N_=n, K_=k):
-    """The half AEB of the figure of §229 with the function Y (of y) and the exponents n, κ."""
-    R_ = (1 - (y / b) ** N_) ** K_
-    return Figure.strips(XP, y, 0, b, (a + Y - a * R_, a + Y + a * R_), smooth=4)
-
-
-def _w(name, description, targets, cases, figure, quantity):
-    d.witness(FigureWitness(name, description, tuple(targets), cases, figure=figure, coords=(XP, y), quantity=quantity))
-
-
-def part(figure, quantity):
-    return FigureWitness("", "", (), (), figure=figure, coords=(XP, y), quantity=quantity)
-
-
-Y_GENERIC = c1 * (y / b) ** n + c2 * (y / b) ** (2 * n)
-Y_C = -c * (y / b) ** n
-K_WHOLE = 2 * Over((XP - XC) ** 2)                  # the moment of the whole figure about EF through C
-GENERIC = (Case({a: 1, b: 1, n: 2, k: sp.Rational(1, 2), c1: sp.Rational(-1, 4), c2: sp.Rational(1, 8),
-                 al: sp.Rational(3, 2), xk: 2}, label="n = 2, κ = 1/2, Y = −y²/4 + y⁴/8, a = b = 1"),
-           Case({a: sp.Rational(3, 2), b: sp.Rational(1, 2), n: 3, k: sp.Rational(3, 2), c1: sp.Rational(1, 3),
-                 c2: sp.Rational(-1, 5), al: 2, xk: sp.Rational(1, 2)},
-                label="n = 3, κ = 3/2, Y = y³/3·8 − y⁶·64/5, a = 3/2, b = 1/2"))
-_w("family-area", "the half area ∫∫1 over AEB", ("area",), GENERIC, family(Y_GENERIC), Over(1))
-_w("family-area-integral", "∫∫1 over AEB divided by 2a", ("area-integral",), GENERIC, family(Y_GENERIC),
-   Over(1) / (2 * a))
-_w("family-moment-AB", "∫∫y² over AEB", ("moment-AB",), GENERIC, family(Y_GENERIC), Over(y ** 2))
-_w("family-moment-O", "∫∫(x − a)² over AEB", ("moment-O",), GENERIC, family(Y_GENERIC), Over((XP - a) ** 2))
-_w("family-moment-O-whole", "∫∫(x − a)² over the whole figure (both halves)", ("moment-O-whole",), GENERIC,
-   family(Y_GENERIC), 2 * Over((XP - a) ** 2))
-_w("family-centroid-moment", "D·CO = −∫∫(x − a) over AEB", ("centroid-moment",), GENERIC, family(Y_GENERIC),
-   -Over(XP - a))
-_w("family-CO", "CO = a − x_C, x_C the centroid of AEB", ("CO",), GENERIC, family(Y_GENERIC), a - XC)
-_w("family-moment-EF", "∫∫(x − x_C)² over the whole figure, x_C its centroid", ("moment-EF",), GENERIC,
-   family(Y_GENERIC), K_WHOLE)
-
-CFAM = (Case({a: 1, b: 1, n: 2, k: sp.Rational(1, 2), c: sp.Rational(1, 4), al: sp.Rational(3, 2)},
-             label="n = 2, κ = 1/2, c = 1/4, a = b = 1"),
-        Case({a: sp.Rational(3, 2), b: sp.Rational(1, 2), n: 3, k: sp.Rational(3, 2), c: sp.Rational(1, 3), al: 2},
-             label="n = 3, κ = 3/2, c = 1/3, a = 3/2, b = 1/2"))
-_w("c-first", "∫Y R dy = −D·CO/(2a) from ∫∫(x − a) over AEB (Y = −cyⁿ/bⁿ)", ("Y-c-first",), CFAM, family(Y_C),
-   Over(XP - a) / (2 * a))
-d.witness(Combined("c-second", "∫Y²R dy = (∫∫(x − a)² at c minus at c = 0)/(2a) over AEB", ("Y-c-second",), CFAM,
-                   parts=(part(family(Y_C), Over((XP - a) ** 2)), part(family(0), Over((XP - a) ** 2))),
-                   values=((PART[0] - PART[1]) / (2 * a),), methods=FIGURE_METHODS))
-_w("c-moment-EF", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
-   ("moment-EF-c", "moment-EF-c-p118", "moment-EF-N"), CFAM, family(Y_C), K_WHOLE)
-d.witness(Combined("c-excess", "K at c minus K at c = 0, both measured", ("unequal-halves",), CFAM,
-                   parts=(part(family(Y_C), K_WHOLE), part(family(0), K_WHOLE)), values=(PART[0] - PART[1],),
-                   methods=FIGURE_METHODS))
-
-u = sp.Symbol("u", positive=True)
-for kv in KAPPAS:
-    grid = tuple(Case({n: nv, a: 1, b: sp.Rational(3, 4)}, label="κ = %s, n = %s, a = 1, b = 3/4" % (kv, nv))
-                 for nv in (1, 2, 3))
-    _w("K-table-%s" % _label(kv), "∫∫(x − x_C)² over the figure κ = %s, c = 0" % kv, ("K-table-%s" % _label(kv),),
-       grid, family(0, K_=kv), K_WHOLE)
-    _w("N-table-%s" % _label(kv), "N for κ = %s by quadrature of its two integrals" % kv, ("N-table-%s" % _label(kv),),
-       grid, Figure.interval(u, 0, 1, smooth=4), Over((1 - u ** n) ** (3 * kv - 1)) / Over((1 - u ** n) ** kv))
-
-AB1 = (Case({a: 1, b: sp.Rational(3, 4)}, label="a = 1, b = 3/4"), Case({a: 2, b: 1}, label="a = 2, b = 1"))
-for name, kv, nv, *_ in CASES236:
-    _w("case-" + name, "∫∫(x − x_C)² over the figure κ = %s, n = %s" % (kv, nv), ("case-" + name,), AB1,
-       family(0, nv, kv), K_WHOLE)
-
-# μ about AB and about EF, EF²D/I and AB²D/K (2D the area, EF = 2b, AB = 2a), for figures symmetric about both axes
-MU_OF_FIGURE = ((2 * b) ** 2 * Over(1) / 2 / Over(y ** 2), (2 * a) ** 2 * Over(1) / 2 / Over(XP ** 2))
-MU_OF_HALF = ((2 * b) ** 2 * Over(1) / (2 * Over(y ** 2)), (2 * a) ** 2 * Over(1) / K_WHOLE)   # from the half AEB
-MU = (Case({a: 2, b: 1}, label="a = 2, b = 1"), Case({a: 3, b: sp.Rational(1, 2)}, label="a = 3, b = 1/2"))
-PARABOLA = Figure.strips(y, XP, -a, a, (-b * (1 - XP ** 2 / a ** 2), b * (1 - XP ** 2 / a ** 2)))
-_w("mu-rectangle", "μ of the rectangle from its moments", ("mu-rectangle",), MU,
-   Figure.polygon([(-a, -b), (a, -b), (a, b), (-a, b)]), MU_OF_FIGURE)
-_w("mu-rhombus", "μ of the rhombus from its moments", ("mu-rhombus",), MU,
-   Figure.polygon([(-a, 0), (0, -b), (a, 0), (0, b)]), MU_OF_FIGURE)
-_w("mu-parabola-AB", "μ about AB of the parabola y = b(1 − x²/a²)", ("mu-parabola-AB",), MU, PARABOLA,
-   MU_OF_FIGURE[0])
-_w("mu-parabola-EF", "μ about EF of the parabola y = b(1 − x²/a²)", ("mu-parabola-EF",), MU, PARABOLA,
-   MU_OF_FIGURE[1])
-_w("mu-ellipse", "μ of the ellipse (the member n = 2, κ = 1/2) from its moments", ("mu-ellipse",), MU,
-   family(0, 2, sp.Rational(1, 2)), MU_OF_HALF)
-MU_ADM = tuple(Case({a: 1, b: 1, n1: nv, k1: kv}, label="n = %s, κ = %s" % (nv, kv))
-               for nv, kv in ((1, sp.Rational(1, 4)), (1, 1), (2, sp.Rational(1, 4)), (3, sp.Rational(1, 2)),
-                              (4, sp.Rational(3, 4))))
-_w("mu-bounds", "μ about AB and EF of admissible members of the family from their moments", ("mu-bounds",), MU_ADM,
-   family(0, n1, k1), MU_OF_HALF)
-
-
-# ---------------------------------------------------------------- §243: the three solids, exact hulls
-def _hull_case(kind, A, B, H):
-    """The waterplane rectangle 2A x 2B at z = 0 with the pyramid's apex, the prism's bottom or the wedge's keel
-    (under the whole length AB) at the depth H, as exact rational points."""
-    A, B, H = (Fraction(v) for v in (A, B, H))
-    if kind == "pyramid":
-        pts, Dv = [(-A, -B, 0), (A, -B, 0), (A, B, 0), (-A, B, 0), (0, 0, -H)], 2 * A * B
-    elif kind == "prism":
-        pts, Dv = [(u, v, z) for u in (-A, A) for v in (-B, B) for z in (0, -H)], 2 * A * B
-    else:
-        pts, Dv = [(u, v, 0) for u in (-A, A) for v in (-B, B)] + [(-A, 0, -H), (A, 0, -H)], 2 * A * B
-    pts = [tuple(Fraction(v) for v in pt) for pt in pts]
-    return Case({Dw: sp.Rational(Dv.numerator, Dv.denominator), CD: sp.Rational(H.numerator, H.denominator)},
-                pts, "%s, half-axes %s, %s, CD = %s" % (kind, A, B, H))
-
-
-for kind, target in (("pyramid", "V-pyramid"), ("prism", "V-prism"), ("wedge", "V-wedge")):
-    d.witness(HullWitness("volume-" + kind, "volume of the %s over the waterplane (exact hull and slices)" % kind,
-                          (target,), (_hull_case(kind, 2, Fraction(1, 2), Fraction(3, 2)),
-                                      _hull_case(kind, 3, 1, 1)), quantity="volume"))
-
-
-# ---------------------------------------------------------------- §239/§243: a heeled V-shaped prism
-# The right prism over the triangle (0, 0), (W, T), (−W, T), apex down, length L along z, floats at the
-# density ratio s; its submerged part is the similar triangle of depth CD = T√s: the waterplane is the
-# rectangle EF × L (μ = 6), V = D·CD exactly.  G is put at the height OG above (or below) the upright centre
-# of buoyancy O, two thirds of CD above the apex.  The stability per unit angle is M·GZ(φ)/φ for φ → 0, GZ the
-# righting arm of the exactly clipped heeled prism, extrapolated (LIMIT_METHODS).  Nothing of M(EF²D/(μV) ∓ OG)
-# is used.  ν = 8 is given to the cases only so that §241's print with ν in place of μ becomes a number (the
-# prism's latitudinal μ is not needed).
-phi = sp.Symbol("phi", positive=True)              # the heel of the witnesses' prisms
-Wv, Tv, Lv, sv = sp.symbols("W_v T_v L_v s_v", positive=True)   # the V prism's half-width, height, length, density
-HEEL = (sp.sin(phi), sp.cos(phi), 0)               # y up, heeled in the plane of x and y
-TILT = (sp.sin(phi), 0, sp.cos(phi))               # z up, heeled in the plane of x and z
-
-
-def heeled_stability(body, up, sign):
-    """M·lim GZ/φ of *body* (G ``sign``·OG above O) heeled from the position ``up`` at φ = 0, by clipping."""
-    return FloatingWitness("", "", (), (), body=body(sign * OG), up=up, density=sv, quantity=M * potential_slope(up, phi),
-                           limit=(phi, 1), methods=LIMIT_METHODS)
-
-
-def v_prism(og):
-    return Loaded.of(Body.prism([(0, 0), (Wv, Tv), (-Wv, Tv)], Lv), (0, 2 * CD / 3 + og, 0))
-
-
-def _v_case(W, T, L, s, og):
-    W, T, L, s = (sp.Rational(v) for v in (W, T, L, s))
-    depth = T * sp.sqrt(s)
-    half = W * depth / T
-    Dv, Vv = half * L, half * L * depth
-    return Case({M: Vv, V: Vv, EF: 2 * half, Dw: Dv, CD: depth, mu: 6, nu: 8, OG: sp.Rational(og),
-                 Wv: W, Tv: T, Lv: L, sv: s}, label="V-prism W = %s, T = %s, L = %s, s = %s, OG = %s" % (W, T, L, s, og))
-
-
-V_CASES = (_v_case(1, 2, 3, "1/4", "1/10"), _v_case(1, 2, 2, "9/16", "1/20"))
-d.witness(Joined("stability-V-prism", "M·GZ/φ of the heeled V-prism by exact clipping, G above O",
-                 ("stability-AB", "stability-CD", "stability-AB-241"), V_CASES,
-                 parts=(heeled_stability(v_prism, HEEL, 1),), methods=LIMIT_METHODS))
-d.witness(Joined("stability-V-prism-G-below", "M·GZ/φ of the heeled V-prism by exact clipping, G below O",
-                 ("stability-G-below",), V_CASES, parts=(heeled_stability(v_prism, HEEL, -1),), methods=LIMIT_METHODS))
-
-
-# §239 about EF: an upright right prism over the quadrilateral of §215 (A = (0, 0), e = (1, 1), B = (3, 0),
-# f = (1, −1); axis vertical, height 2) at s = 1/2: the waterplane has μ = 12 about AB and
-# ν = AB²D/K = 9(a + c)²/(a² + ac + c²) = 81/7 about EF (§216, §218), so μ and ν differ; pitched about EF.  G lies
-# above the kite's centroid (its polygon moments), OG above O, which is half the immersed height 1 below the water.
-KITE = [(0, 0), (1, -1), (3, 0), (1, 1)]
-KITE_CX = sp.Rational(polygon_moments(KITE)[1][0])
-
-
-def kite_prism(og):
-    return Loaded.of(Body.prism(KITE, 2), (KITE_CX, 0, og - sp.Rational(1, 2)))
-
-
-KITE_CASES = tuple(Case({M: 3, V: 3, AB: 3, Dw: sp.Rational(3, 2), mu: 12, nu: sp.Rational(81, 7), OG: og,
-                         sv: sp.Rational(1, 2)}, label=f"kite prism, s = 1/2, OG = {og}")
-                   for og in (sp.Rational(1, 10), sp.Rational(1, 4)))
-d.witness(Joined("stability-kite-prism-EF", "M·GZ/φ of the upright kite prism pitched about EF, by exact clipping, "
-                 "G above O", ("stability-EF",), KITE_CASES, parts=(heeled_stability(kite_prism, TILT, 1),),
-                 methods=LIMIT_METHODS))
-
-# second pass: the moment named 'about the longitudinal axis EF' of §230 is the one about the latitudinal EF
-_w("family-axis-EF-named", "∫∫(x − x_C)² over the whole figure, x_C its centroid", ("axis-EF-named",), GENERIC,
-   family(Y_GENERIC), K_WHOLE)
-_w("by-parts-quadrature", "∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy/bⁿ by 1-D quadrature", ("by-parts-3k",),
-   tuple(Case({b: sp.Rational(bv), n: nv, k: sp.Rational(kv)}, label=f"b = {bv}, n = {nv}, κ = {kv}")
-         for bv, nv, kv in (("1", 2, "1/2"), ("3/4", 3, "3/2"), ("2", 1, "1"))),
-   Figure.interval(y, 0, b, smooth=4), Over(y ** n * (1 - (y / b) ** n) ** (3 * k - 1)) / b ** n)
 d.quote("c-zero-suffices", "§234",
         r"Ponamus esse $c=0$, quia si hoc casu momentum respectu axis EF fuerit cognitum, ex eo idem momentum pro "
         r"valore quocunque ipsius c inueniri potest",
         reading=(Kc, K0g + 2 * n ** 2 * (k + 1) * c ** 2 * D / (m1 ** 2 * m2)),
         note=claim("the moment about EF for any c is that for c = 0 plus the term of §232 in c alone."))
-_w("c-zero-suffices-quadrature", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
-   ("c-zero-suffices",), CFAM, family(Y_C), K_WHOLE)
 
 
 # ---- §237, §240–241: the claims in words ---------------------------------------------------------------------
