@@ -22,7 +22,8 @@ import sympy as sp
 
 from symfloat.solver import make_scene, solve
 from symfloat.solver.bodies import polyhedron
-from symfloat.solver.exact import exact_second_variation, integer_direction, prism_axis_second_variation
+from symfloat.solver.exact import (exact_second_variation, integer_direction, lateral_second_variation,
+                                  prism_axis_second_variation)
 from symfloat.solver.local import local
 
 CUBE = sp.Rational(1, 2) - sp.sqrt(3) / 6
@@ -76,6 +77,17 @@ def test_a_pentagonal_prism_axis_agrees_with_the_clipped_body():
     scene = make_scene("prism", "0.3", "1,2", 5)
     exact = prism_axis_second_variation(scene)
     assert exact.eigenvalues == pytest.approx(np.linalg.eigvalsh(local(polyhedron(scene), (0, 0, 1), scene.density).hessian),
+                                              abs=1e-12)
+
+
+@pytest.mark.parametrize("k", [0, 1])
+def test_a_pentagonal_prism_lying_agrees_with_the_clipped_body(k):
+    # vertex up (k = 0) and face up (k = 1), at 30 digits against float64
+    scene = make_scene("prism", "0.3", "1,2", 5)
+    exact = lateral_second_variation(scene, k)
+    u = (math.cos(math.pi * k / 5), math.sin(math.pi * k / 5), 0.0)
+    assert exact.draught == "30 digits"
+    assert exact.eigenvalues == pytest.approx(np.linalg.eigvalsh(local(polyhedron(scene), u, scene.density).hessian),
                                               abs=1e-12)
 
 
@@ -151,3 +163,42 @@ def test_both_sides_of_every_axis_threshold(sides, delta):
         return
     threshold, ratio = _prism_axis_threshold(sides, 3)
     _probe_axis("prism", "1,3", sides, threshold, ratio, 3, 1 / (2 * math.sin(math.pi / sides)), delta)
+
+
+def _odd_face_up_threshold(n: int):
+    """An odd regular n-gon prism of side 1 lying face up (a vertex down): while the water reaches no other
+    vertex the section under water is the triangle at the bottom vertex, apex angle ``pi - 2 pi/n``, depth
+    ``d``: width ``w = 2 d cot(pi/n)``, area ``d^2 cot(pi/n)``, its centroid ``2d/3`` above the vertex and G at
+    the circumradius ``R`` above it.  The heel's eigenvalue ``w^3 / 12 / A - (R - 2d/3)`` vanishes at ``d = 3 R
+    sin^2(pi/n) / 2`` (below the next vertices, ``2 R sin^2(pi/n)`` up), where ``s = 9 sin^2(pi/n) / (4 n)``."""
+    return 9 * sp.sin(sp.pi / n) ** 2 / (4 * n)
+
+
+def _hexagon_face_up_threshold():
+    """The hexagonal prism of side 1 lying face up (on the opposite face): under water a trapezoid of depth
+    ``d``, widths 1 and ``w = 1 + 2 d / sqrt 3``, area ``A = d (1 + d / sqrt 3)``, centroid ``d (1 + 2w) / (3 (1 + w))``
+    above the bottom face, G at the inradius ``sqrt(3)/2``; the heel's eigenvalue vanishes where ``w^3 / 12 =
+    A (sqrt(3)/2 - y_B)``, a root found at 40 digits, and ``s = A / (3 sqrt(3) / 2)``."""
+    d = sp.Symbol("d", positive=True)
+    w, A = 1 + 2 * d / sp.sqrt(3), d * (1 + d / sp.sqrt(3))
+    depth = sp.nsolve(w ** 3 / 12 - A * (sp.sqrt(3) / 2 - d * (1 + 2 * w) / (3 * (1 + w))), d, 0.2, prec=40)
+    return (A / (3 * sp.sqrt(3) / 2)).subs(d, depth)
+
+
+@pytest.mark.parametrize("sides, offset", [(6, "-1e-9"), (6, "1e-6"), (7, "-1e-9"), (7, "1e-6"),
+                                           pytest.param(5, "-1e-9", marks=pytest.mark.slow),
+                                           pytest.param(5, "1e-6", marks=pytest.mark.slow)])
+def test_the_lateral_face_thresholds_answer(sides, offset):
+    # issue 33: the 5-, 6- and 7-gon prisms 1e-9 below and 1e-6 above a lateral face's threshold exited 1 (the
+    # hexagon: index sums -4 and 8, a float64 copy of the face 1e-8 off its mirrors counted 12 times).  The face
+    # up's heel eigenvalue changes sign there (decided at 30 digits); the index sum closes on both sides
+    threshold = _hexagon_face_up_threshold() if sides == 6 else _odd_face_up_threshold(sides)
+    sol = solve(make_scene("prism", _near(threshold, offset), "1,1", sides))
+    assert sol.checks["poincare_hopf_index_sum"] == 2
+    angle = math.pi / sides
+    face = next(e for e in sol.equilibria if e.up == pytest.approx((math.cos(angle), math.sin(angle), 0.0), abs=1e-12))
+    assert face.error_method == "exact" and face.stability == "unstable"
+    # the heel's eigenvalue (the soft one) is positive below the threshold for the hexagon, negative for the
+    # odd prisms (their pair of saddles is born below it), and the other way round above
+    soft = min(face.eigenvalues, key=abs)
+    assert (soft > 0) == ((offset.startswith("-")) == (sides == 6))

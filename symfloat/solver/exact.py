@@ -28,7 +28,8 @@ A regular prism's vertices are not rational; its axis up is decided from the n-g
 ``J = n R^4 sin(2 pi/n) (2 + cos(2 pi/n)) / 12`` (the fan of triangles from the centre, each
 ``area (|P_k|^2 + |P_k+1|^2 + P_k . P_k+1) / 6``): ``lambda = R^2 (2 + cos(2 pi/n)) / (12 s b) - b (1 - s) / 2``,
 zero exactly only where ``cos(2 pi/n)`` is rational (n = 3, 4, 6: exact rationals), else never at a
-rational density, so enough digits decide its sign.
+rational density, so enough digits decide its sign.  Its lateral faces and edges up are decided from
+the body clipped at 30 digits or more (:func:`lateral_second_variation`), not exactly.
 """
 from __future__ import annotations
 
@@ -42,10 +43,12 @@ import numpy as np
 import sympy as sp
 
 from ..geometry.convex import hull_2d
-from ..geometry.floating import Polyhedron, _clip, polygon_moments
+from ..geometry.floating import Polyhedron, _clip, floating_state, polygon_moments
+from .bodies import polyhedron
 from .symmetry import same_class
 
-__all__ = ["ExactSecondVariation", "exact_second_variation", "prism_axis_second_variation", "symmetric_positions",
+__all__ = ["ExactSecondVariation", "exact_second_variation", "prism_axis_second_variation", "lateral_second_variation",
+           "symmetric_positions",
            "rational_faces", "integer_direction"]
 
 _TAU = sp.Symbol("tau")
@@ -53,10 +56,10 @@ _TAU = sp.Symbol("tau")
 
 @dataclass(frozen=True)
 class ExactSecondVariation:
-    """The metacentric eigenvalues at a symmetric position: the exact signs of their sum and product
-    (``sum_sign``, ``product_sign``: -1, 0, +1), the eigenvalues from 40 digits (floats, ascending), whether
-    they are equal exactly (``isotropic``) and the draught's kind (``draught``: "rational" or "algebraic of
-    degree k")."""
+    """The metacentric eigenvalues at a symmetric position: the signs of their sum and product
+    (``sum_sign``, ``product_sign``: -1, 0, +1), the eigenvalues (floats, ascending), whether they are equal
+    exactly (``isotropic``) and how the signs were decided (``draught``: "rational" or "algebraic of degree k",
+    exactly; "N digits" for a prism lying, from the body clipped at N digits)."""
     eigenvalues: tuple
     sum_sign: int
     product_sign: int
@@ -279,13 +282,45 @@ def _sign(x) -> int:
     return (x > 0) - (x < 0)
 
 
+def lateral_second_variation(scene, k: int) -> ExactSecondVariation:
+    """The second variation of a regular prism lying with ``u = (cos(k pi/n), sin(k pi/n), 0)`` up (a lateral
+    face or edge up), from the body clipped in mpmath at 30, 60, 120 and 240 digits (its vertices ``cos`` and
+    ``sin`` of multiples of ``2 pi/n``, irrational but for n = 3, 4, 6): the first precision at which the
+    smaller eigenvalue exceeds ``10^(5 - dps)`` of the size in magnitude (the clipping's stated error,
+    :mod:`symfloat.geometry.floating`) decides the signs; where none does, the position is taken as
+    degenerate and its higher orders decide (:mod:`~symfloat.solver.degenerate`)."""
+    n, scale = scene.sides, float(max(scene.dims[0] / (2 * math.sin(math.pi / scene.sides)), scene.dims[1]))
+    for dps in (30, 60, 120, 240):
+        body = polyhedron(scene, dps=dps)
+        with mpmath.workdps(dps):
+            u = (mpmath.cospi(mpmath.mpf(k) / n), mpmath.sinpi(mpmath.mpf(k) / n), mpmath.mpf(0))
+            st = floating_state(body, u, scene.density)
+            T = st.tensor
+            a, b, c = T[0][0] / st.volume - st.potential, T[0][1] / st.volume, T[1][1] / st.volume - st.potential
+            mean, half = (a + c) / 2, mpmath.sqrt(((a - c) / 2) ** 2 + b ** 2)
+            eigen = (mean - half, mean + half)
+            rounding = mpmath.mpf(10) ** (5 - dps) * scale
+            if min(abs(e) for e in eigen) > rounding:
+                return ExactSecondVariation(tuple(float(e) for e in eigen), _sign(eigen[0] + eigen[1]),
+                                            _sign(eigen[0] * eigen[1]), False, f"{dps} digits")
+    small = min(range(2), key=lambda i: abs(eigen[i]))
+    values = tuple(sorted(0.0 if i == small else float(eigen[i]) for i in range(2)))
+    return ExactSecondVariation(values, _sign(eigen[1 - small]), 0, False, f"{dps} digits")
+
+
 def symmetric_positions(scene, group) -> list:
     """One up vector per symmetry class of the positions a symmetry of the body fixes with no tangent
     direction fixed, with the exact direction and its second variation: ``(u, n, exact)``.  Cube and box:
-    the faces, and the edges and corners where the symmetries fix them; a regular prism: its axis (its
-    lateral positions have irrational vertices and are decided by the polished float path)."""
+    the faces, and the edges and corners where the symmetries fix them; a regular prism: its axis (exact)
+    and its lateral faces and edges up (*n* None: decided at 30 digits or more,
+    :func:`lateral_second_variation`)."""
     if scene.body == "prism":
-        return [(np.array([0.0, 0.0, 1.0]), (0, 0, 1), prism_axis_second_variation(scene))]
+        out = [(np.array([0.0, 0.0, 1.0]), (0, 0, 1), prism_axis_second_variation(scene))]
+        for k in range(2 * scene.sides):
+            u = np.array([math.cos(math.pi * k / scene.sides), math.sin(math.pi * k / scene.sides), 0.0])
+            if not any(same_class(u, w, group, 1e-9) for w, _, _ in out):
+                out.append((u, None, lateral_second_variation(scene, k)))
+        return out
     if scene.body not in ("cube", "box"):
         return []
     out = []

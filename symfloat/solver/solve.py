@@ -38,7 +38,7 @@ import numpy as np
 
 from ..model.prediction import Scene
 from .bodies import centred_polygon, polyhedron
-from .born import born_families
+from .born import SOFT_AXIS, born_families
 from .critical import Critical, critical_points, distinct_seeds, more_seeds, poincare_hopf_sum, sphere_seeds
 from .cylinder import cylinder_slice
 from .errors import ROUNDING, STEP, eigenvalue_error, equilibrium_error
@@ -75,6 +75,7 @@ class Equilibrium:
     ring_length_error: float = 0.0  # the error of that length (the walk's step at the ends, chords)
     stability_evidence: str = "second variation"     # or "higher orders", or "undecided"
     digits: tuple = ()          # the up vector at 30 digits (mpf) where the solver polished it (next to a bifurcation)
+    decided: str = ""           # how the second variation's signs were decided where not in float64 (exact, digits)
     formulas: list = field(default_factory=list)
     predictions: list = field(default_factory=list)
 
@@ -261,7 +262,12 @@ def _symmetric(points, fixed, poly, s, group, scale) -> list:
     closer than float64 resolves is seen as points, arcs or nothing)."""
     out = list(points)
     for u, exact, born in fixed:
-        out = [c for c in out if c.ring or not same_class(c.u, u, group, min(max(2 * c.error_rad, 1e-9), 1e-6))]
+        # next to a soft position (its eigenvalue small but decided) float64 points within 1e-6 of it are its
+        # rounding (the hexagonal prism 1 x 1 1e-9 below its lateral face's threshold 0.0689685: a copy 1e-8 off
+        # both mirrors, counted 12 times); the equilibria born there are the scan's (born_families)
+        soft = min(abs(e) for e in exact.eigenvalues) < SOFT_AXIS * scale
+        out = [c for c in out if c.ring or not same_class(c.u, u, group, 1e-6 if soft else
+                                                          min(max(2 * c.error_rad, 1e-9), 1e-6))]
         out.append(Critical(representative(u, group), local(poly, u, s).U, exact.eigenvalues, 0.0, 0.0,
                             len(orbit(u, group)), error_method="exact", exact=exact))
         for b in born:
@@ -387,10 +393,20 @@ def _polyhedral(scene: Scene, seeds, group):
         out.append(Equilibrium(_clean(c.u), _tilt(c.u), stability,
                                "ring" if c.ring else "isolated", c.U, _shape(waterplane_polygon(poly, loc.state), scale),
                                tuple(float(e) for e in c.eigen), c.error_rad, c.error_method, c.orbit,
-                               c.shape, c.length, c.length_error, evidence, digits=c.digits))
+                               c.shape, c.length, c.length_error, evidence, digits=c.digits, decided=_decided(c)))
     return out, {"poincare_hopf_index_sum": index, "expected_index_sum": 2, "seeds": len(seeds),
                  "searches": searches,
                  **({"family_indices": [c.index for c in families]} if families else {})}
+
+
+def _decided(c) -> str:
+    """How the signs of the second variation of *c* were decided, where float64 did not: exactly at a position
+    symmetry fixes (its draught rational or algebraic), at 30 digits or more (a prism lying), or from the
+    change of sign of the slope along a mirror (a family born at such a position)."""
+    if c.exact is not None:
+        kind = c.exact.draught
+        return f"at {kind}" if kind.endswith("digits") else f"exactly (draught {kind})"
+    return "change of sign along a mirror, at 30 digits or more" if c.error_method == "sign change" else ""
 
 
 def _prism_axis(scene: Scene, n) -> tuple | None:
@@ -398,7 +414,7 @@ def _prism_axis(scene: Scene, n) -> tuple | None:
     a box's face normal): the circumradius of its base and its length; else None."""
     if scene.body == "prism":
         return (float(scene.dims[0]) / (2 * math.sin(math.pi / scene.sides)), float(scene.dims[1])) if n == (0, 0, 1) else None
-    if sum(1 for x in n if x) != 1:
+    if n is None or sum(1 for x in n if x) != 1:
         return None
     k = next(i for i, x in enumerate(n) if x)
     base = [float(scene.dims[i]) for i in range(3) if i != k]
