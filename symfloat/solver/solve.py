@@ -253,7 +253,7 @@ def _searched(poly, s, seeds, group, scale, fixed=()):
 
 
 def _symmetric(points, fixed, poly, s, group, scale) -> list:
-    """*points* with every position a symmetry fixes (*fixed*: ``(u, exact, born)`` from
+    """*points* with every position a symmetry fixes (*fixed*: ``(u, exact, born, prism)`` from
     :func:`~symfloat.solver.exact.symmetric_positions` and :func:`~symfloat.solver.born.born_families`) in
     place of the isolated points found within their error of it (at most 1e-6: a float64 point there, or one polished
     onto a family being born beside it, whose eigenvalues were not the position's: the cube 1e-9 past its
@@ -261,7 +261,7 @@ def _symmetric(points, fixed, poly, s, group, scale) -> list:
     there, located at 30 digits or more, in place of what the search found of them (a ring around it
     closer than float64 resolves is seen as points, arcs or nothing)."""
     out = list(points)
-    for u, exact, born in fixed:
+    for u, exact, born, prism in fixed:
         # next to a soft position (its eigenvalue small but decided) float64 points within 1e-6 of it are its
         # rounding (the hexagonal prism 1 x 1 1e-9 below its lateral face's threshold 0.0689685: a copy 1e-8 off
         # both mirrors, counted 12 times); the equilibria born there are the scan's (born_families)
@@ -274,13 +274,15 @@ def _symmetric(points, fixed, poly, s, group, scale) -> list:
             # the float64 search's view of a family born here (points on it, pieces of it, or the ring walked
             # at float64's resolution) gives way to the family located at its exact radius
             if b.ring:
-                # a point within a quarter of its radius of it (the potential depends on the tilt alone there,
-                # so nothing but circles of equilibria lies there, and the next is not that close), a family
-                # that meets it there (a connected set of equilibria meeting the ring is part of it)
-                radius = b.length / (2 * math.pi)
+                # a point within a quarter of its radius of it and inside the disc where the waterplane meets
+                # the lateral faces only (the potential depends on the tilt alone there, so nothing but circles
+                # of equilibria lies there, and the next is not that close), a family that meets it there (a
+                # connected set of equilibria meeting the ring is part of it)
+                radius, (R, L) = b.length / (2 * math.pi), prism
+                lateral = math.atan(L * float(min(s, 1 - s)) / R)
                 out = [c for c in out if c.exact is not None
                        or not any(abs(_angle_to(p, b.axis, group) - radius) <= radius / 4
-                                  for p in (c.path if c.ring else [c.u]))]
+                                  and _angle_to(p, b.axis, group) < lateral for p in (c.path if c.ring else [c.u]))]
             else:
                 out = [c for c in out if c.ring or c.exact is not None
                        or not same_class(c.u, b.u, group, 2 * c.error_rad + 1e-6)]
@@ -360,7 +362,7 @@ def _polyhedral(scene: Scene, seeds, group):
     scale = body_scale(scene)
     s = scene.density
     seeds = distinct_seeds(seeds, group)
-    fixed = [(u, exact, born_families(scene, poly, u, exact, group, scale, _prism_axis(scene, n)))
+    fixed = [(u, exact, born_families(scene, poly, u, exact, group, scale, _prism_axis(scene, n)), _prism_axis(scene, n))
              for u, n, exact in symmetric_positions(scene, group)]
     classified, searches, index = _searched(poly, s, seeds, group, scale, fixed)
     if index is None and any(c.flat for c, _, _ in classified):
