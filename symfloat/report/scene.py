@@ -52,6 +52,7 @@ def scene_record(solution, evaluated, unmatched, seconds) -> dict:
             "metacentric_eigenvalues": list(e.eigenvalues),
             "error_rad": e.error_rad,          # for a ring: across it (its tilt)
             "error_method": e.error_method,
+            **({"stability_decided": e.decided} if e.decided else {}),
             "copies": e.copies,
         } for e in solution.equilibria],
         "unmatched_predictions": _predictions(unmatched),
