@@ -28,7 +28,7 @@ import mpmath
 import numpy as np
 
 from ..geometry.floating import floating_state
-from .critical import Critical, polyhedron_at
+from .critical import Critical
 from .bodies import polyhedron
 from .errors import ROUNDING
 from .exact import integer_direction
