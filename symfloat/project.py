@@ -59,14 +59,17 @@ def library_folders() -> list[Path]:
     return [folder.resolve() for folder in folders]
 
 
-def in_project(relative: str | os.PathLike) -> Path:
-    """*relative* (``docs/errata.md``) inside the project checkout; outside one, an
-    :class:`InputError` that asks for an explicit path."""
-    root = project_root()
+def _under(root: Path | None, relative: str | os.PathLike) -> Path:
     if root is None:
         raise InputError(f"not inside a symfloat checkout, so there is no default {relative}: "
                          f"give the output path (--output) or run in the checkout")
     return root / relative
+
+
+def in_project(relative: str | os.PathLike) -> Path:
+    """*relative* (``docs/errata.md``) inside the project checkout; outside one, an
+    :class:`InputError` that asks for an explicit path."""
+    return _under(project_root(), relative)
 
 
 def outputs_root() -> Path | None:
@@ -78,8 +81,4 @@ def outputs_root() -> Path | None:
 def in_outputs(relative: str | os.PathLike) -> Path:
     """*relative* (``docs/errata.md``) under :func:`outputs_root`; outside a library and a checkout, an
     :class:`InputError` that asks for an explicit path."""
-    root = outputs_root()
-    if root is None:
-        raise InputError(f"not inside a symfloat checkout, so there is no default {relative}: "
-                         f"give the output path (--output) or run in the checkout")
-    return root / relative
+    return _under(outputs_root(), relative)
