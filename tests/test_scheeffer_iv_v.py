@@ -154,6 +154,16 @@ def test_law_counterexample_pinned():
                                                                      rel=1e-10)
 
 
+def test_law_is_a_claim_of_medium_confidence():
+    # the law (transcription line 422) is drawn ('so ergibt sich daraus') from the assumption of line 418 that T_1
+    # is the same for every axis through O; read in that context it holds, so the objection stands in part and the
+    # erratum is medium, not high (issue 31, item 1)
+    law = next(p for p in M.DERIVATION.printed if p.name == "law")
+    (f,) = _check_only("law", law.reading).formulas
+    assert f.verdict == "erratum" and (f.erratum["kind"], f.erratum["confidence"]) == ("claim", "medium")
+    assert "obigen Voraussetzungen" in f.erratum["objection"]
+
+
 def test_face_limits_counterexample_pinned():
     # erratum (55) / 's-half': equilateral triangle side 1, EF parallel to a side, apex dipping, b = 17/25,
     # s = 2/5 < 1/2. Clipped geometry: the upper base is reached first, at tan = sqrt 3 b (1 - s) = 51 sqrt3/125

@@ -45,7 +45,8 @@ EXPECTED_ERRATA = {
     ("86a", "transcription", "high"),
     ("triangle-data", "transcription", "high"),
     ("square-data", "transcription", "high"),
-    ("55-reference", "misprint", "medium"),   # transcription line 1068: 'Nach 55' for (54)
+    ("55-reference", "misprint", "low"),      # transcription line 1068: 'Nach 55' for (54); low: 4 and 5 are
+                                              # close in print and scan, which erred cannot be told (issue 31)
     ("height-OV", "misprint", "low"),         # line 980: the height 'O V' of BOC, defined as OQ (line 968)
 }
 
@@ -225,7 +226,8 @@ def test_the_55_reference_is_an_erratum_on_its_own():
     rep = check_derivation(_mutated("55-reference"), prove=False, trust_steps=True)
     (f,) = rep.formulas
     assert f.verdict == "erratum" and rep.failures == []
-    assert (f.erratum["kind"], f.erratum["confidence"]) == ("misprint", "medium")
+    # low since issue 31 (item 1): the print's 54 or the scan's reading of it as 55 cannot be told apart
+    assert (f.erratum["kind"], f.erratum["confidence"]) == ("misprint", "low")
 
 
 def test_the_height_of_BOC_lies_at_the_central_angle_from_MN():

@@ -115,7 +115,13 @@ d.quote("GL-parallel", "I", r"$GL \parallel MS_2$", reading=(GX, S2w[0] - m),
                         "drawn parallel to MS2 is SL, and a parallel through any other point misses the line of "
                         "action of the weight. An S read as G by the scan is likelier than a compositor's slip "
                         "(medium).",
-                        corrected_reading=(S2w[0] - m, 0)))
+                        corrected_reading=(S2w[0] - m, 0),
+                        objection="G may be a point of the lost Fig. 1, the letter often used for the centre of "
+                                  "gravity, so that GL is the line of the weight as the figure draws it.",
+                        answer="Section I calls the centre of gravity S and introduces no G, and the same sentence "
+                               "speaks of 'die in der Richtung SL wirkende Schwerkraft', the next paragraph of 'die "
+                               "Achsen S L und S A'. S read as G is a confusion of the scan, but a compositor's slip"
+                               " is left open: medium."))
 d.quote("S2D", "I", r"$S_2 D (= m) \perp S L$", reading=(m, v * sp.cos(phi) - u * sp.sin(phi)),
         note="S2D: the horizontal distance of S2 from the vertical SL through S, the X coordinate of S2")
 d.quote("rotation-5", "(5)",
@@ -140,7 +146,13 @@ d.quote("fig3-labels", "I, Fig. 3",
                         "writes 'A B die neue, A_1 B_1 die alte Wasserlinie'. A comma for a subscript 1 after a "
                         "letter is the scan's, not the printer's (high).",
                         corrected_reading=(sp.Matrix([SS1.dot(SS1), ev.dot(sp.Matrix([1, 0]))]),
-                                           sp.Matrix([e1 ** 2, sp.cos(phi)]))))
+                                           sp.Matrix([e1 ** 2, sp.cos(phi)])),
+                        objection="The commas may be the print's punctuation: 'A, B,' a list of the two points, 'S "
+                                  "S,' the axis named by S and a point of the figure.",
+                        answer="Read so, the old and the new waterline both are A B, which the rotation by phi "
+                               "separates; section II ('wie in Fig. 3') writes 'A B die neue, A_1 B_1 die alte "
+                               "Wasserlinie', and the floating axis is S S_1 throughout section I. A subscript 1 "
+                               "read as a comma is the scan's."))
 d.quote("archimedes-3-4", "I",
         "Nach dem Archimedischen Gesetz muss das Volumen des neu eintauchenden Körperteils gleich dem Volumen des neu "
         "heraustretenden sein.", reading=(V3, V4), note="the wedge volumes of section II, integrated over the waterplane")
@@ -320,7 +332,13 @@ d.quote("stable-V1m", "(15)", "so muss (nach 9 und 12)  $V_1 m$  und folglich",
                         "a relation sign dropped after an inline formula is the scan's (high). The reference "
                         "'nach 9' is left as printed (the numbering has gaps and no display of the transcription "
                         "carries (9)).",
-                        corrected_reading=Iff(V1 * m > 0, crit15 > 0)))
+                        corrected_reading=Iff(V1 * m > 0, crit15 > 0),
+                        objection="'so muss V_1 m und folglich ... sein' may be the author's ellipsis, the predicate"
+                                  " of V_1 m understood from the stability condition (2).",
+                        answer="'muss ... sein' asks for a predicate to each member, and the second member carries "
+                               "its '> 0' in (15); the stability condition (2) is V_1 m > 0, and by (12) V_1 m has "
+                               "the sign of the bracket of (15). The parallel labile sentence lost its '< 0' in the "
+                               "same place, after an inline formula, where this scan drops relation signs."))
 d.quote("labile-V1m", "after (15)", "so ist  $V_1 m$  und daher",
         reading=Holds(crit15 < 0),
         note="read as: the condition the sentence puts on V1 m (as transcribed: none) is equivalent to the "
@@ -332,7 +350,11 @@ d.quote("labile-V1m", "after (15)", "so ist  $V_1 m$  und daher",
                         "'negativ'). For the labile initial position this holds for the small rotations, below "
                         "the zero phi_1 of the increasing bracket (IV (27)). The scan's loss, as in the stable "
                         "case (high).",
-                        corrected_reading=Iff(V1 * m < 0, crit15 < 0)))
+                        corrected_reading=Iff(V1 * m < 0, crit15 < 0),
+                        objection="As in the stable case, an ellipsis of the author, the predicate understood.",
+                        answer="The second member carries its '< 0', and the labile position is the failure of (2), "
+                               "V_1 m < 0, which by (12) has the sign of the bracket; the same loss after an inline "
+                               "formula as in the stable sentence is the scan's."))
 d.quote("stable-15", "(15)",
         r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - V_1 e_1 > 0 \text{ sein.} \quad (15)$$",
         reading=(sp.sign(V1 * m), sp.sign(crit15)),
@@ -391,7 +413,13 @@ d.quote("duhamel-18", "(18)", r"$$\frac{T_1}{V_1} = e_1 > 0. \quad (18)$$",
                         "The '=' is the scan's reading of a minus (a known fault of this transcription); printed "
                         "as an equation the line would fix T1/V1 = e1, the boundary case, and '= e1 > 0' would "
                         "make no condition. Duhamel's sentence quoted right after states the difference.",
-                        corrected_reading=(sp.sign(m1), sp.sign(T1 / V1 - e1))))
+                        corrected_reading=(sp.sign(m1), sp.sign(T1 / V1 - e1)),
+                        objection="'T_1/V_1 = e_1 > 0' may be a chain meant as printed: the boundary T_1/V_1 = e_1 "
+                                  "together with e_1 > 0.",
+                        answer="(16), m = phi (T_1/V_1 - e_1), makes the sign of the difference the condition, and "
+                               "Duhamel's sentence quoted next states the difference; an equation would fix the "
+                               "boundary case only. The scan reads the minus as '=' elsewhere in this "
+                               "transcription."))
 d.quote("duhamel-statement", "III, Duhamel",
         "nur muss dann die Entfernung dieser beiden Punkte kleiner sein als das kleinste der Trägheitsmomente der "
         "Schnittfläche des Körpers mit der Wasseroberfläche in Bezug auf die durch ihren Schwerpunkt gezogenen "

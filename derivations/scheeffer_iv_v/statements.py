@@ -357,7 +357,12 @@ d.quote("32", "(32)", r"$$\left. \begin{aligned} T_1 \left( 1 + \frac{1}{2} \ope
                         "(T_1^1), so e^1 is a misplaced index of the scan rather than a new symbol; a slip of the "
                         "printer cannot be excluded.",
                         corrected_reading=(sp.Matrix([V1 * res(m).subs(phi, phi1) / sp.sin(phi1), M2 / t1]),
-                                           sp.Matrix([T1 * (1 + t1 ** 2 / 2) - V1 * e1, P]))))
+                                           sp.Matrix([T1 * (1 + t1 ** 2 / 2) - V1 * e1, P])),
+                        objection="e^1 may be a symbol of its own: Scheeffer writes a superscript 1 for a prime "
+                                  "(T_1^1), so V_1 e^1 could name a second distance e' of the section.",
+                        answer="No e with a superscript is defined anywhere, and the same condition two lines "
+                               "earlier, like (27) and (34), reads V_1 e_1; an index set high instead of low is the "
+                               "scan's usual fault, but the print may have had it, hence medium."))
 d.quote("33-words", "(33)",
         "Soll nun die Gleichgewichtslage ( $\\varphi_1$ ) eine stabile sein, so muss nach dem Duhamel'schen Satze (18)",
         reading=(D2, sp.Min(T1 / c ** 3, T11 / c) - T1 / c),
@@ -398,7 +403,14 @@ d.quote("37", "(37)", r"$$\begin{aligned} T &= \int_2 \zeta^2 df_2 = \cos^2 \mu 
                         "(40), where it is zero. A lost subscript 2: more likely the scan's than the printer's, but "
                         "the text cannot tell (low).",
                         corrected_reading=as_printed(lambda: (Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
-                                                              T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2))))
+                                                              T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2)),
+                        objection="df in the second line may be Scheeffer's loose writing for the element of "
+                                  "whatever plane the integral's index names, int_2 ... df meaning the integral over"
+                                  " plane II.",
+                        answer="The first line of (37) writes df_2 under int_2, and the next lines (38*) keep df_2 "
+                               "with int_2 and df with int_1 apart, the two differing by cos phi_1; so the print "
+                               "distinguishes them here too. Whether print or scan lost the subscript 2 cannot be "
+                               "told, and the term vanishes in (39), (40): low."))
 d.quote("38-projection", "(38)", r"$$df = \frac{df_2}{\cos \varphi_1} \quad u = \frac{u_2}{\cos \varphi_1} \quad "
                                  r"v = \frac{v_2}{\cos \varphi_1}$$",
         reading=(sp.Matrix([rdf, ru, rv]), sp.Matrix([1 / sp.cos(phi1)] * 3)),
@@ -411,7 +423,13 @@ d.quote("38-projection", "(38)", r"$$df = \frac{df_2}{\cos \varphi_1} \quad u = 
                         "(38*) are right and need exactly the corrected relations (int_1 v^2 df / cos phi_1 needs "
                         "v_2 = v). Three consistent inversions are unlikely to be a scan fault: a slip of the "
                         "author or printer (roles of the planes exchanged), medium confidence.",
-                        corrected_reading=(sp.Matrix([rdf, ru, rv]), sp.Matrix([sp.cos(phi1), sp.cos(phi1), 1]))))
+                        corrected_reading=(sp.Matrix([rdf, ru, rv]), sp.Matrix([sp.cos(phi1), sp.cos(phi1), 1])),
+                        objection="The roles of the planes may be as printed if plane II, not I, is the projection; "
+                                  "then df = df_2/cos phi_1 and u = u_2/cos phi_1 would be right.",
+                        answer="v = v_2/cos phi_1 is wrong in either direction, since lengths along EF are kept by "
+                               "the projection, and (38*) that follows needs v_2 = v (int_1 v^2 df / cos phi_1) and "
+                               "df = df_2 cos phi_1. Three coherent inversions are no scan fault; author or printer "
+                               "cannot be told, hence medium."))
 d.quote("38", "(38)", r"$$\left. \begin{aligned} T_2 &= \int_2 u_2^2 df_2 = \int_1 \frac{u^2 \cdot df}{\cos^3 "
                       r"\varphi_1} = \frac{T_1}{\cos^3 \varphi_1} \\ T_2^1 &= \int_2 v_2^2 df_2 = \int_1 \frac{v^2 "
                       r"df}{\cos \varphi_1} = \frac{T_1^1}{\cos \varphi_1} \\ \int_2 u_2 v_2 df_2 &= \frac{1}"
@@ -469,7 +487,13 @@ d.quote("43a", "(43a)", r"$$\frac{T_1^1}{\cos \varphi_2} - \frac{T_1}{\cos \varp
                         "so both denominators are cos phi_1. The index 2 appears twice, which points to the print "
                         "(perhaps contaminated by T_2, e_2 nearby) rather than a scan confusion of 1 and 2; the "
                         "conclusion T_1^1 > T_1 is unaffected.",
-                        corrected_reading=(Tm1 - V1 * e2, T11 / c - T1 / c)))
+                        corrected_reading=(Tm1 - V1 * e2, T11 / c - T1 / c),
+                        objection="The 2 of phi_2 may be the scan's reading of a 1, a fault of the transcription "
+                                  "rather than of the print.",
+                        answer="The same line reads the subscripts of T_1^1 and T_1 as 1 correctly, and 1 read as 2 "
+                               "is no usual confusion of this scan; the index 2 twice points to the print (T_2, e_2 "
+                               "stand nearby). The correction follows from (42), T = T_1^1/cos phi_1, but the print "
+                               "cannot be seen, so medium."))
 d.quote("43a-conclusion", "(43a)", r"\text{ oder } T_1^1 > T_1 \quad (43a)$$",
         reading=(Tm1 - V1 * e2, (T11 - T1) / c), note="cos phi_1 > 0: the condition is T_1^1 > T_1")
 d.quote("T-Tm1", "(43a)", r"Es bleibt also nur ( $T = T_m^1$  gesetzt)", reading=(Tm1, T11 / c),
@@ -578,7 +602,12 @@ d.quote("52", "(52)", r"$$\operatorname{tg} \varphi_1 = \sqrt{2 \left( \frac{V_1
         erratum=Erratum("transcription", "high", r"\operatorname{tg}\varphi_1 = \sqrt{2\left(\frac{V_1 e_1}{T_1} - 1\right)}",
                         "(52) is (27) repeated ('ist zu berechnen aus Gleichung 27'); c_1 is never defined and 'c' "
                         "for 'e' is a common scan confusion.",
-                        corrected_reading=(t1, sp.sqrt(2 * (V1 * e1 / T1 - 1)))))
+                        corrected_reading=(t1, sp.sqrt(2 * (V1 * e1 / T1 - 1))),
+                        objection="c_1 may be a quantity of the author's, a distance c of the first section that the"
+                                  " transcription does not show defined.",
+                        answer="The text says (52) 'ist zu berechnen aus Gleichung 27', and (27) has V_1 e_1; no c_1"
+                               " is defined in sections I-V, and c read for e is a common glyph confusion of the "
+                               "scan."))
 d.quote("52-condition", "(52)", r"$$\frac{T_1}{V_1} - e_1 < 0 \text{ ist.}$$",
         reading=(slope, T1 / V1 - e1), note="as stable-18")
 law_R = sp.Rational(1, 2) * (Tx - Ty) * sp.sin(2 * om)
@@ -589,7 +618,7 @@ d.quote("law", "V",
         reading=(res(Iuv).subs(J, Jsym), 0),
         note="read for a symmetric base turned by omega about its axis from a principal tilt: the second "
              "equilibrium moment int_1 u v df would have to vanish for every omega",
-        erratum=Erratum("claim", "high",
+        erratum=Erratum("claim", "medium",
                         "Only for prisms whose base has equal principal moments (T_x = T_y: isotropic bases such as "
                         "squares, regular polygons); otherwise int_1 u v df = (T_x - T_y) sin 2 omega / 2 != 0 for "
                         "0 < omega < 90 deg and the turned position is no equilibrium at all.",
@@ -600,7 +629,14 @@ d.quote("law", "V",
                         "times the moment of the submerged part about the vertical plane through OS = "
                         "(T_x - T_y) sin 2 omega / 2, not 0. The text before the law (and section VI) means the "
                         "isotropic case; the claim holds exactly there.",
-                        corrected_reading=(res(Iuv).subs(J, Jsym), law_R)))
+                        corrected_reading=(res(Iuv).subs(J, Jsym), law_R),
+                        objection="The law is drawn ('so ergibt sich daraus') from the paragraph's assumption 'nach "
+                                  "den obigen Voraussetzungen' that T_1 is the same for every axis through O, so "
+                                  "'ein gerades Prisma' means a prism of that kind, and for it the law holds.",
+                        answer="The law itself, set off in quotation marks, names every obliquely stable right "
+                               "prism, and the next sentence compares 'ein gerades Prisma' with the circular "
+                               "cylinder without the restriction; for the 1 x 6/5 rectangle it is false. The "
+                               "contextual reading is a real alternative, so the claim is lowered to medium."))
 d.quote("QQ1", "(53)", r"$Q Q_1 = b(1 - s)$", reading=(b - b * s, b * (1 - s)),
         note="height above water of the upright prism: b minus the draught b s")
 d.quote("53", "(53)", r"$$\operatorname{tg} \varphi_1 = \frac{b(1 - s)}{u_m} \quad (53)$$",
@@ -620,7 +656,14 @@ d.quote("s-half", "(53)", r"Diese Formel giebt den Grenzwert von  $\varphi_1$  a
                         "EF parallel to a side, apex dipping (u_m = 1/sqrt 3, u_m' = 1/(2 sqrt 3)), s = 2/5 < 1/2: "
                         "the clipped prism touches the water with its upper base first (tan = b (1-s) sqrt 3 = 1.039 b "
                         "< 2 sqrt 3 b s = 1.386 b). Regular prisms with odd n (section VI) are of this kind.",
-                        corrected_reading=(sstar, ubot / (utop + ubot))))
+                        corrected_reading=(sstar, ubot / (utop + ubot)),
+                        objection="Scheeffer may tacitly assume bases that reach equally far on both sides of EF "
+                                  "(u_m = u_m'), as his examples, the rectangle and the square, do; then s > 1/2 "
+                                  "decides.",
+                        answer="He distinguishes u_m of the dipping and of the rising side himself in (53a), so he "
+                               "does not assume them equal, and the regular prisms of odd n in section VI are his "
+                               "own examples with u_m != u_m' (the triangle at s = 2/5 touches the upper base "
+                               "first)."))
 d.quote("V1-F1", "(54)", r"$V_1 = F_1 \cdot b s$", reading=(V1, F1 * b * s))
 d.quote("e1-b", "(54)", r"$S S_1 = e_1 = \frac{b}{2} - \frac{b s}{2} = \frac{b}{2}(1 - s)$",
         reading=(e1, b / 2 - b * s / 2, b / 2 * (1 - s)))
@@ -647,4 +690,8 @@ d.quote("55", "(55)", r"$$\operatorname{tg} \varphi_1 \leq \begin{cases} \frac{b
                         "sqrt 3 b (1-s) = 0.707, and (54) gives tan phi_1 = 0.815 in between: the tilted position of "
                         "(54) is not in the first rotation region although (55) says it is. Same with the apex "
                         "rising and s = 3/5 > 1/2 (lower base first).",
-                        corrected_reading=(Lim, sp.Min(b * (1 - s) / utop, b * s / ubot))))
+                        corrected_reading=(Lim, sp.Min(b * (1 - s) / utop, b * s / ubot)),
+                        objection="As for s-half: with u_m = u_m' tacitly assumed, the case split by s is right.",
+                        answer="(53a) distinguishes u_m and u_m', and (55) is applied in section VI to regular "
+                               "prisms of odd n, where they differ; for the triangle at b = 17/25, s = 2/5 the tilt "
+                               "of (54) passes the bound that (55) allows."))

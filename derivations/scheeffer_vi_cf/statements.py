@@ -238,7 +238,14 @@ d.quote("78c", "(78c)",
             "With the swap the condition is wrong, e.g. for s = 0.3 it gives the bound 0.77 instead of 1.17. "
             "Both case labels are exchanged consistently, which a scan does not do; a misprint of the original "
             "is the likelier cause (the scan cannot be excluded: medium).",
-            corrected_reading=(PW((1 - s) * (7 * s - 1), s * (6 - 7 * s)) - (a / b) ** 2, -Q77_sign)))
+            corrected_reading=(PW((1 - s) * (7 * s - 1), s * (6 - 7 * s)) - (a / b) ** 2, -Q77_sign),
+                        objection="(78c) may be meant as printed, as a condition of its own for the second-region "
+                                  "case rather than the negation of (78a)'s right half.",
+                        answer="The text goes on that the prism can be turned about its main axis only until a base "
+                               "face is cut, which is the negation of (78a); its bounds are those of (77)/(78a) with"
+                               " the cases as there, and the printed attachment gives at s = 0.3 the bound 0.77 "
+                               "instead of 1.17. Both labels exchanged together is no glyph fault of the scan; "
+                               "medium, since the transcriber may have set the cases in the wrong order."))
 d.quote("78c-turn", "(78c)",
         "so kann das Prisma in der schiefen stabilen Lage nur soweit um die Hauptachse gedreht werden, bis eine der "
         "Grundflächen den Wasserspiegel durchschneidet.",
@@ -385,7 +392,12 @@ d.quote("81a", "(81a)", r"$$\operatorname{tg}^2 \varphi_1 = 2 \cdot \left\{ b s 
             "(78b) with a = b gives tan^2 phi_1 = 12 s(1-s) - 2 = 2{6 s(1-s) - 1}. The printed 'b' makes the "
             "formula depend on a length, which a cube's angle cannot; 'b' for '6' is a typical confusion of "
             "the scan, and the same 'b s (1 - s) - 1' recurs in (82), where 6s(1-s) - 1 is again required.",
-            corrected_reading=(tan2c, 2 * (6 * s * (1 - s) - 1))))
+            corrected_reading=(tan2c, 2 * (6 * s * (1 - s) - 1)),
+                        objection="b may be the prism's height, kept by the author in a formula written for the cube"
+                                  " before setting a = b.",
+                        answer="(78b) with a = b gives 12 s(1 - s) - 2 = 2{6 s(1 - s) - 1}, free of lengths; an "
+                               "angle of the cube cannot depend on its size, and (82) needs the same 6 (its value "
+                               "1/2 at s = 1/2 follows only with it). b for 6 is the scan's usual confusion."))
 d.quote("edge-axis-range", "VI.D",
         "zwischen 0,2265 und 0,7735,  \n so gelangt er ebenfalls aus der labilen aufrechten Lage in eine schiefe "
         "stabile (die auch aus Gleichung 81 zu bestimmen ist), wenn die Drehungsachse entweder mit einer Grundkante "
@@ -405,7 +417,14 @@ d.quote("edge-axis-range", "VI.D",
             "is 0.16/0.44 = 0.364 < 1/2 = sin^2(45 deg + omega) for omega = 0, so no axis works; on the clipped "
             "cube the root of GZ at 43.2 deg lies beyond the tilt 38.7 deg at which the top face reaches the water for "
             "an edge-parallel axis (GZ there is -0.0104 for the unit cube). Scheeffer's own case s = 1/2 (omega = 0 only) is the isolated root s = 1/2.",
-            corrected_reading=(sp.Matrix([sedhi, sedlo]), sp.Matrix([sp.Rational(3, 4), sp.Rational(1, 4)]))))
+            corrected_reading=(sp.Matrix([sedhi, sedlo]), sp.Matrix([sp.Rational(3, 4), sp.Rational(1, 4)])),
+                        objection="The range 0.2265 < s < 0.7735 may be meant for the existence of an oblique stable"
+                                  " position by some rotation, 'ebenfalls' pointing back to the second region, not "
+                                  "to the first domain alone.",
+                        answer="The sentence bounds the axis angle by (78d), (82), which are conditions of the first"
+                               " domain, and (82) itself at omega = 0 holds only for s >= 3/4 or s <= 1/4; at s = "
+                               "0.6 the edge-parallel tilt reaches the top face at 38.7 deg before the root of GZ at"
+                               " 43.2 deg."))
 d.quote("82", "(82)",
         r"$$\sin^2 (45^\circ + \omega) \leq \begin{cases} \frac{(1 - s)^2}{b s (1 - s) - 1} & \text{für } s > "
         r"\frac{1}{2} \\ \frac{s^2}{b s (1 - s) - 1} & \text{für } s < \frac{1}{2} \end{cases} \quad (82)$$",
@@ -418,7 +437,11 @@ d.quote("82", "(82)",
             "sin^2 = 1/2, follows only with 6 (with the letter b it would depend on the cube's size). The same "
             "'6' read as 'b' as in (81a).",
             corrected_reading=(Swc, PW((1 - s) ** 2 / (6 * s * (1 - s) - 1),
-                                                     s ** 2 / (6 * s * (1 - s) - 1)))))
+                                                     s ** 2 / (6 * s * (1 - s) - 1))),
+                        objection="b may be the prism's height kept in the formula, as for (81a).",
+                        answer="(78d) with a/b = 1 has the denominator 6 s(1 - s) - 1, and the text's own value "
+                               "sin^2 = 1/2 at s = 1/2 follows only with 6 (with b it would depend on the size). The"
+                               " same 6 read as b as in (81a)."))
 d.quote("82-half", "VI.D", r"$$\sin^2 (45^\circ + \omega) = \frac{1}{2}$$",
         reading=(sp.Subs(Sw, (a, s), (b, half)), half))
 d.quote("82-half-omega", "VI.D", r"$$\text{woraus } \sin (45^\circ + \omega) = \frac{1}{2} \sqrt{2}$$",
@@ -449,7 +472,14 @@ d.quote("half-stable", "VI.D",
             "Delta(0.1) = -6.0e-6, Delta(0.3) = -1.03e-4 (potential in units of the edge), agreeing with the closed "
             "form; the metacentric height of that position is exactly 0. Counterexample to 'stabil': any omega "
             "!= 0.",
-            corrected_reading=(Dlt, -sp.Abs(Dlt))))
+            corrected_reading=(Dlt, -sp.Abs(Dlt)),
+            objection="Just before (52) Scheeffer calls the oblique equilibrium stable although the moment vanishes "
+                      "for the axis G_2 H_2: a position neutral in one direction counts as stable in his usage, so "
+                      "the cube at s = 1/2 is stable in his sense.",
+            answer="His neutral direction is harmless because turning about the main axis leads through new "
+                   "equilibria (the law of V); here it leaves the first domain at once and the potential falls (by "
+                   "about sqrt(2) a omega^3/192, -6.0e-6 at omega = 0.1 on the unit cube), so the position is not "
+                   "stable even in that sense."))
 d.quote("half-tilt", "VI.D", r"$\varphi_1 = 45^\circ$",
         reading=(sp.atan(sp.sqrt(sp.Subs(tan2, (a, s), (b, half)))), pi / 4))
 d.quote("half-waterplane", "VI.D",
@@ -535,7 +565,11 @@ d.quote("height-OV", "VI.E",
                         "and the scan may have misread the letter.",
                         corrected_reading=(sp.Matrix([Q_BOC[0] * sp.sin(alph) - Q_BOC[1] * sp.cos(alph),
                                                       Q_BOC[0] * sp.cos(alph) + Q_BOC[1] * sp.sin(alph)]),
-                                           sp.Matrix([0, h_]))),
+                                           sp.Matrix([0, h_])),
+                        objection="OV may be the name of the height in the lost Fig. 15, V the foot on BC that the "
+                                  "text elsewhere calls Q.",
+                        answer="The paragraph names the height of BCO OQ = h and the line OV nowhere else; whether "
+                               "the figure, the typesetter or the scan wrote V cannot be told, so it stays low."),
         note="read as: OQ lies at the angle alpha from MN (its component across the direction alpha vanishes, along "
              "it is the apothem OQ = h)")
 d.quote("84", "(84)",
@@ -564,7 +598,12 @@ d.quote("apothem", "VI.E", r"$h = \frac{a}{2} \omega \operatorname{tg} \left( \f
                         "The apothem of the regular n-gon of side a is (a/2) cot(pi/n) (half the side over the tangent "
                         "of half the central angle). 'cotg' read as 'omega tg' is a known confusion of the scan; "
                         "omega (the axis angle) has no place here.",
-                        corrected_reading=(h_, aE / 2 * sp.cot(pi / n))))
+                        corrected_reading=(h_, aE / 2 * sp.cot(pi / n)),
+                        objection="'omega tg' may be read as printed, the product of the axis angle omega and "
+                                  "tg(pi/n).",
+                        answer="omega, the angle of the axis, has no place in the apothem of the n-gon, (a/2) "
+                               "cot(pi/n); the examples after (86a) use cot^2 60 deg = 1/3 and cot^2 45 deg = 1, "
+                               "which only cotg gives. 'cotg' read as 'omega tg' is the scan's."))
 d.quote("86a", "(86a)",
         r"$$T_1 = \frac{F_1 a^2}{16} \left\{ \frac{1}{3} + \omega \operatorname{tg}^2 \left( \frac{\pi}{n} \right) "
         r"\right\} \quad (86a)$$",
@@ -575,7 +614,10 @@ d.quote("86a", "(86a)",
                         "With h = (a/2) cot(pi/n), n A (a^2/12 + h^2)/4 = F_1 a^2 (1/3 + cot^2(pi/n))/16; the "
                         "examples that follow use cot^2 60 deg = 1/3 and cot^2 45 deg = 1, and (87) follows only "
                         "with cot. The same 'cotg' -> 'omega tg' of the scan as in h.",
-                        corrected_reading=(T1n, F1n * aE ** 2 / 16 * (sp.Rational(1, 3) + sp.cot(pi / n) ** 2))))
+                        corrected_reading=(T1n, F1n * aE ** 2 / 16 * (sp.Rational(1, 3) + sp.cot(pi / n) ** 2)),
+                        objection="As for h: 'omega tg^2' read as the product of the axis angle and tg^2(pi/n).",
+                        answer="n A (a^2/12 + h^2)/4 with h = (a/2) cot(pi/n) gives the cotg; the examples' values "
+                               "1/3 and 1 and (87) follow only from it."))
 d.quote("side", "VI.E", r"$$a = 2 r \cdot \sin \left( \frac{\pi}{n} \right)$$", reading=(aE, 2 * r * sp.sin(pi / n)))
 d.quote("87", "(87)",
         r"$$T_1 = \frac{1}{12} \cdot F_1 r^2 \left\{ 1 + 2 \cos^2 \left( \frac{\pi}{n} \right) \right\} \quad (87)$$",
@@ -593,7 +635,10 @@ d.quote("triangle-data", "VI.E",
                         r"\operatorname{cotg}^2 \left( \frac{\pi}{n} \right) = \frac{1}{3}",
                         "cot^2 60 deg = 1/3, whereas tan^2 60 deg = 3; 'cotg' read as 'omega tg' as in (86a).",
                         corrected_reading=(sp.Matrix([sp.Subs(F1n, n, 3), sp.Subs(sp.cot(pi / n) ** 2, n, 3)]),
-                                           sp.Matrix([sp.Subs(aE ** 2 / 4 * sp.sqrt(3), n, 3), sp.Rational(1, 3)]))))
+                                           sp.Matrix([sp.Subs(aE ** 2 / 4 * sp.sqrt(3), n, 3), sp.Rational(1, 3)])),
+                        objection="'omega tg^2(pi/n) = 1/3' may be read as printed, fixing omega for the triangle.",
+                        answer="tg^2 60 deg = 3 and cot^2 60 deg = 1/3; the value is the cotangent's, and omega is "
+                               "free in the section (the law of V)."))
 d.quote("triangle-T1", "VI.E",
         r"$$T_1 = F_1 \cdot \frac{a^2}{24} = \frac{a^4}{96} \cdot \sqrt{3} = \frac{F_1^2}{6 \sqrt{3}}$$",
         reading=tuple(sp.Subs(e_, n, 3) for e_ in (T1n, F1n * aE ** 2 / 24, aE ** 4 / 96 * sp.sqrt(3),
@@ -607,7 +652,10 @@ d.quote("square-data", "VI.E",
                         "cot^2 45 deg = 1; as printed the value would depend on the axis angle omega. 'cotg' read "
                         "as 'omega tg' as in (86a).",
                         corrected_reading=(sp.Matrix([sp.Subs(F1n, n, 4), sp.Subs(sp.cot(pi / n) ** 2, n, 4)]),
-                                           sp.Matrix([sp.Subs(aE ** 2, n, 4), 1]))))
+                                           sp.Matrix([sp.Subs(aE ** 2, n, 4), 1])),
+                        objection="'omega tg^2(pi/n) = 1' may be read as printed, fixing omega = 1 for the square.",
+                        answer="tg^2 45 deg = cot^2 45 deg = 1, so the value is the cotangent's, as in (86a); an "
+                               "axis angle of one radian has no role in the section."))
 d.quote("square-T1", "VI.E", r"$$T_1 = \frac{F_1 a^2}{12} = \frac{a^4}{12} = \frac{F_1^2}{12}$$",
         reading=tuple(sp.Subs(e_, n, 4) for e_ in (T1n, F1n * aE ** 2 / 12, aE ** 4 / 12, F1n ** 2 / 12)))
 d.quote("circle-data", "VI.E",
@@ -685,13 +733,18 @@ d.quote("54-again", "VI.F", r"$$\operatorname{tg}^2 \varphi_1 = \frac{F b^2 s (1
         note="'Nach 55' of the text: the equation is (54) (erratum 55-reference)")
 d.quote("55-reference", "VI.F", r"Nach 55 ist ferner",
         reading=(tanF, (sp.Min(b * (1 - s), b * s) / sp.Subs(umn, r, sp.sqrt(2 * F / (n * sp.sin(2 * pi / n))))) ** 2),
-        erratum=Erratum("misprint", "medium", r"\text{Nach 54 ist ferner}",
+        erratum=Erratum("misprint", "low", r"\text{Nach 54 ist ferner}",
                         "The formula quoted after the words, tg^2 phi_1 = F b^2 s(1-s)/T_1 - 2, is (54), the oblique "
                         "equilibrium of a prism whose base has equal moments about all central axes; (55) is the bound "
                         "tg phi_1 <= b(1-s)/u_m (s > 1/2), b s/u_m (s < 1/2) of the first rotation region, which "
                         "limits the tilt and does not determine it. A wrong equation number; 4 and 5 are close in "
-                        "print and in the scan alike (medium).",
-                        corrected_reading=(tanF, sp.Subs(tan2g, (Fg, Tg), (F, T1F)))),
+                        "print and in the scan alike (low).",
+                        corrected_reading=(tanF, sp.Subs(tan2g, (Fg, Tg), (F, T1F))),
+                        objection="55 may be the scan's reading of a 54, the fault being the transcription's and not"
+                                  " the print's.",
+                        answer="The formula quoted after the words is (54), not the bound (55), so the reference is "
+                               "wrong; but 4 and 5 are close in print and in the scan alike and nothing in the text "
+                               "tells which erred, so the kind cannot be fixed: lowered to low."),
         note="read as: the equation cited gives the tg^2 phi_1 written next; (55) read at its bound for the regular "
              "n-gon of area F (u_m of (88) with r^2 = 2F/(n sin 2pi/n))")
 d.quote("tilt-increasing", "VI.F",

@@ -230,7 +230,15 @@ d.quote("s-upper", "VII", "Es soll dabei das spec. Gew.  $s > \\frac{1}{2}$\n\nv
                         "that side dipping (u_m = 1/(2 sqrt 3), u_m' = 1/sqrt 3, s^* = 2/3): the clipped prism's lower "
                         "base reaches the water at tan phi = 1.0392 (= sqrt 3 s), the upper one only at 1.3856 "
                         "(= 2 sqrt 3 (1 - s)).",
-                        corrected_reading=(sst, um1 / (um + um1))))
+                        corrected_reading=(sst, um1 / (um + um1)),
+                        objection="'sodass also die obere Grundfläche zum Teil eintaucht' may be a stipulation of "
+                                  "the case to be treated (s > 1/2 and the upper base cut), not an inference from s "
+                                  "> 1/2.",
+                        answer="'also' marks a consequence, and the same inference is drawn in IV (53) for the first"
+                               " region; for bases that reach unequally far on the two sides (the triangular prism "
+                               "at s = 3/5) the lower base is cut first, so the inference fails. The stipulation "
+                               "reading would leave the case 'lower base first, s > 1/2' untreated, which the "
+                               "section's closing sentence ('vollständigen Bedingungen') denies."))
 d.quote("95", "(95)", "„Das statische Moment des über dem Wasser befindlichen Körperteils für die durch  $S$  "
         "senkrecht zur Drehungsachse gelegte Vertikalebene (Ebene der Figur 17) ist Null.“ (95)",
         reading=(My, Pxy * tg2),
@@ -270,7 +278,12 @@ d.quote("95a-split", "VII", r"$$\int x y \cdot = \int_1 x y df - \int_2 x y df$$
                         "in (96) two displays after; here the df after the dot is missing, so the member is no "
                         "formula. A lost token of the scan (the dot it followed survived); the content is the "
                         "additivity of int x y df over ABCD = AGHCD + BGH, which holds.",
-                        corrected_reading=(Pxy, Pwh - Pw)),
+                        corrected_reading=(Pxy, Pwh - Pw),
+                        objection="'int x y ·' may be the author's abbreviation, the element df understood from the "
+                                  "right member.",
+                        answer="One display before and in (96) two displays after the same member is written 'int x "
+                               "y · df' and 'int x y df' in full; a dot followed by nothing is no notation of the "
+                               "text, and the dot that stood before df survived."),
         note="int_2 over BGH still from N")
 d.quote("regular-Ps", "VII", r"so ist nach Abschnitt V auch  $\int_s x y df = 0$",
         reading=(sp.Subs(sp.Rational(1, 2) * (sp.Symbol("T_x") - sp.Symbol("T_y")) * sp.sin(2 * sp.Symbol("omega"))
@@ -319,7 +332,13 @@ d.quote("100", "(100)", r"so ist das  $\frac{1}{2}$  Volumen des über dem Wasse
                         "The dry part's whole volume is V (1 - s) (the submerged part is s V); the text uses V_3 "
                         "so in (103a), (121b). The '1/2' before 'Volumen' is a stray sign of the scan (perhaps a "
                         "misread mark); a slip of the printer is possible (medium).",
-                        corrected_reading=(V3, V * (1 - s), F1 * b * (1 - s))))
+                        corrected_reading=(V3, V * (1 - s), F1 * b * (1 - s)),
+                        objection="The '1/2' may be the print's own, e.g. a half of the volume meant in a sentence "
+                                  "the scan has shortened.",
+                        answer="The display that follows is the whole dry volume V (1 - s), and (103a), (121b) use "
+                               "V_3 so; no half of it enters any later formula. A stray sign before 'Volumen' is "
+                               "more likely the scan's reading of a mark than a compositor's word, but the print "
+                               "cannot be seen: medium."))
 d.quote("101", "(101)",
         r"$$\left. \begin{aligned} V_3 z_3 &= \int \frac{1}{2} z^2 \cdot d f = \frac{1}{2} \operatorname{tg}^2 "
         r"\varphi_2 \cdot \int x^2 d f = \frac{1}{2} T \cdot \operatorname{tg}^2 \varphi_2 \\ V_3 x_3 &= \int z x \cdot "
@@ -376,7 +395,12 @@ d.quote("x-direction", "VII", r"Nimmt man  $S S^1$  als  $(+ x)$  Richtung",
                         "moment of the water section is +m F_2 (its area F_2, pulled back to F: int x/cos phi_2 df "
                         "over F, stretched by 1/cos phi_2). Neither 'S' for 'L' by the scan nor by the typesetter "
                         "can be told without the figure; low.",
-                        corrected_reading=(termwise(x / c2 ** 2, MF), m_ * F2)),
+                        corrected_reading=(termwise(x / c2 ** 2, MF), m_ * F2),
+                        objection="S S^1 may be right: S, the centroid of the body, projects onto the water section,"
+                                  " and the lost Fig. 19 may mark that projection on the line through S^1.",
+                        answer="The shift 'x - m statt x ... wenn S^1 L = m' fixes the axis along S^1 L and its "
+                               "sense from L to S^1; whether the figure also carried S on that line, and whether "
+                               "scan or print wrote S for L, cannot be told without the figure, so it stays low."),
         note="x is measured in F from GH (the projection of HN) and stretched by 1/cos phi_2 in the waterplane")
 d.quote("105-def", "VII", r"$$T_\mu = \int_s (x \cos \mu - y \sin \mu)^2 \cdot d f$$",
         reading=(Tmu, termwise(((x / c2 - m_) * sp.cos(mu) - (y + n_) * sp.sin(mu)) ** 2 / c2, MF)),
@@ -420,7 +444,14 @@ d.quote("109", "(109)", r"$$T_\mu = \frac{1}{2} (T_2 + T_2^1) - \frac{1}{2} \cos
                         "the next step give (T_2 + T_2^1)/2 -+ sqrt((T_2 - T_2^1)^2 + 4k^2)/2 (with - the root would be "
                         "of ((T_2^1 - T_2)^2 - 4k^2)^2/((T_2^1 - T_2)^2 + 4k^2)). A sign slip of the author or "
                         "printer; a scan turning + into - is unusual (medium).",
-                        corrected_reading=(Tg, Sg - sp.cos(2 * mu) / 2 * (T21g - T2g + 2 * kg * sp.tan(2 * mu)))))
+                        corrected_reading=(Tg, Sg - sp.cos(2 * mu) / 2 * (T21g - T2g + 2 * kg * sp.tan(2 * mu))),
+                        objection="The minus may be right if k is taken with the opposite sign, k = -int_2 u_2 v_2"
+                                  " df_2.",
+                        answer="(109) only rewrites (107), T_mu = T_2 cos^2 mu + T_2^1 sin^2 mu - k sin 2mu, with the"
+                               " same k, whatever its sign: -k sin 2mu is -(1/2) cos 2mu (2k tg 2mu), so the brace "
+                               "has + 2k tg 2mu, and with the tg 2mu of (108) only that gives the root of the next "
+                               "line. A plus read as minus is no usual scan fault, so the print's; medium, since "
+                               "author and printer cannot be told."))
 d.quote("109-cos", "VII", r"$$\cos 2 \mu = \pm \frac{T_2^1 - T_2}{\sqrt{(T_2^1 - T_2)^2 + 4 k^2}}$$",
         reading=(sp.cos(2 * mus) ** 2, (T21g - T2g) ** 2 / ((T21g - T2g) ** 2 + 4 * kg ** 2)),
         note="the +- read through the square, at the root mu^* of (108)")
@@ -486,7 +517,13 @@ d.quote("102a-reference", "VII", r"(nach 102 a)",
                         "implies (116) as (103b) does). Two consistent numbers point to the print or an earlier "
                         "numbering of the manuscript rather than the scan (medium).",
                         corrected_reading=(sp.Matrix([sp.Derivative(V3 - V * (1 - s), x0), tg2]),
-                                           sp.Matrix([sp.Derivative(TAN_USED, x0), TAN_USED]))),
+                                           sp.Matrix([sp.Derivative(TAN_USED, x0), TAN_USED])),
+                        objection="The print may have numbered (102a), (102b) displays that the transcription lost, "
+                                  "so that both references are right.",
+                        answer="The transcription carries (102), then (103a) and (103b), and the summary cites '95 "
+                               "a, 103 a, b und 117'; the relation cited is (103a) squared plus one, and (102) "
+                               "cannot give it (it ties the tilt to x_0). Both references off by one in the same way"
+                               " point to the print or an earlier numbering, hence medium."),
         note="read as: the equation cited gives the tilt of the relation quoted after it, independent of x_0; the "
              "derivative in x_0 of the equation cited against that of the relation, and the tilt itself")
 d.quote("117-T", "VII", "$$T_1 = T - F \\cdot x_s^2$$\n\n$$T_1^1 = T^1 - F \\cdot y_s^2.$$",
@@ -558,7 +595,13 @@ d.quote("118-domain", "(118)",
                         "lower base lies; its area (5/12 on the square) is not F. Not a scan fault (two letters "
                         "missing and none misread); medium, since Fig. 21 is lost but VII fixes F, and (118) "
                         "integrates over F ((95a) over AGHCD).",
-                        corrected_reading=(area21("AGHCD"), F21)),
+                        corrected_reading=(area21("AGHCD"), F21),
+                        objection="In the third region the lost Fig. 21 may letter the points anew, so that GHD "
+                                  "names the dry part of the upper base (G, H on the sides at D).",
+                        answer="The section says the letters keep their meaning of Figs. 17, 18 ('dass auch die "
+                               "Buchstaben hier dieselbe Bedeutung haben wie dort') except N, and there G, H lie at "
+                               "the wet corner B and F is AGHCD; (121b) needs F to be the upper base's whole dry "
+                               "part. Medium, since Fig. 21 is lost."),
         note="read on a square base: the printed domain of int has the area of F, the dry part of the upper base; f = "
              "DML is the projected dry part of the lower base, as the section's construction says")
 d.quote("119", "(119)", r"$$M_3 = V_3 (x_3 - x_0) \cos \varphi_3 - V_3 \left( \frac{b}{2} - z_3 \right) \sin \varphi_3 = 0 "
@@ -590,7 +633,13 @@ d.quote("prism-bases", "VIII", r"mit den Grundflächen  $G B H$  und  $M D L$",
                         "DML of the lower base; GBH is the wet triangle of the upper base, whose prism lies under "
                         "water. Two labels of the same paragraph name F wrongly (GBH here, GHD in (118)'s domain: "
                         "118-domain); the scan does not turn AGHCD into GBH; low, since Fig. 21 is lost.",
-                        corrected_reading=(area21("AGHCD"), F21)),
+                        corrected_reading=(area21("AGHCD"), F21),
+                        objection="GBH may be meant: the prism over the wet triangle GBH of the upper base could be "
+                                  "the body whose volume is taken.",
+                        answer="The volume built here is V_3 = (F x_s - f x_s^1) tg phi_3 (121b), the dry part, a "
+                               "prism over F less one over the dry part DML of the lower base; the prism over GBH "
+                               "lies under water. The letters differ from 118's GHD too, so which label the print "
+                               "had cannot be recovered: low."),
         note="read on a square base: the first prism's base has the area of the dry part F of the upper base")
 x31 = sp.Symbol("x_3^1", positive=True)      # the letter printed in the definition of the centroid distance of f
 d.domain.update({x31: (R(1, 20), R(3, 10))})
@@ -605,7 +654,12 @@ d.quote("xs1-definition", "VIII", r"$x_3^1$  die Entfernung des Schwerpunktes de
                         "quantity, (120) fails; with x_s^1 it is the derived moment. The scan read s as 3 (medium: "
                         "the print may have had the slip).",
                         corrected_reading=(sp.Matrix([Z3c, X3c]), sp.Matrix([(T - tau) * tg3 ** 2 / 2 - b * f * xs1 * tg3,
-                                                                            (T - tau) * tg3 - (x0 + x01) * xs1 * f * tg3]))),
+                                                                            (T - tau) * tg3 - (x0 + x01) * xs1 * f * tg3])),
+                        objection="x_3^1 may be a quantity of its own, a distance of the dry part's centroid x_3 "
+                                  "carried to the lower base.",
+                        answer="x_3^1 occurs in no formula, while (120), (121), (121b), (122) use x_s^1 with f as F "
+                               "x_s with F; read as its own quantity (120) fails. s read as 3 is a glyph confusion "
+                               "of the scan, but the print may have had it: medium."),
         note="read through (120), the moments that use the distance defined here")
 zw3 = lambda xx: -xx * tg3 + b  # noqa: E731  (height of the water plane z = -x tan phi_3 above the lower base z = -b)
 d.quote("N1-lower-base", "VIII",
@@ -621,7 +675,13 @@ d.quote("N1-lower-base", "VIII",
                         "Projektion von N_1') and (121a) uses N_1 N_2 = b. On the water plane z = -x tan phi_3 the "
                         "point N (x = 0) lies b above the lower base, N_1 (x = x_0 + x_0^1) in it. A lost subscript "
                         "(medium: the print may have dropped it).",
-                        corrected_reading=(zw3(x0 + x01), 0)),
+                        corrected_reading=(zw3(x0 + x01), 0),
+                        objection="N may be right: the sentence may mean the foot N of the perpendicular, whose "
+                                  "place changes with the region.",
+                        answer="(121a) measures 'N N_2 = x_0 + x_0^1' in the upper base, so N stays there; the point"
+                               " of the water line that moves from a side face to the lower base is N_1, which the "
+                               "same sentence projects ('N_2 die Projektion von N_1'). A lost subscript, scan or "
+                               "print: medium."),
         note="read as the height above the lower base z = -b of the point on the water line (x = 0 for N)")
 L122 = ((T - tau) * tg3 * (1 + tg3 ** 2 / 2) - F1 * b * (1 - s) * (x0 + b / 2 * tg3) - b * f * xs1 * (1 + tg3 ** 2))
 d.quote("122", "(122)", r"$$\left. \begin{aligned} (T - \tau) \operatorname{tg} \varphi_3 \left( 1 + \frac{1}{2} "

@@ -122,7 +122,14 @@ d.quote("104-reference", "X", r"Setzt man diese Werte in 104 ein",
                         "wrong equation number; the scan would hardly turn 167 into 104, so the print's (medium).",
                         corrected_reading=(h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si)),
                                            sp.Subs(h_ ** 3 * ((Vl * tg - Ul * ctg) / 6 + h_ / 8 * (ctg ** 2 - tg ** 2)),
-                                                   (Ul, Vl), (U_VAL, V_VAL)))),
+                                                   (Ul, Vl), (U_VAL, V_VAL))),
+                        objection="(104) may be meant as printed: Scheeffer may refer back to the condition of "
+                                  "section VII that the second region's formulas are built on, the values of u and v"
+                                  " entering it through its moment T_m.",
+                        answer="(104) is T_m - V_3 e_3 > 0, an inequality without u and v, and inserting them leaves"
+                               " it unchanged; only (167), the integral written in u and v just before, turns into "
+                               "(168). A scan does not read 167 as 104 (two digits of three), so the slip is the "
+                               "print's; medium, since the author may have had an earlier numbering in mind."),
         note="read as: (168) is the cited equation's left member with u, v inserted; (104)'s members T_m, V_3 e_3 "
              "are quantities of their own (not of u, v)")
 d.step("half-range", (P168.subs(h_, rho * si).subs({om: pi / 2 - om, rho: rho * tg}, simultaneous=True),
@@ -171,7 +178,12 @@ d.quote("fig19-reference", "X", "Da nun (s. Fig. 19)",
                         "(by analogy with VII, the top face of Fig. 18). The figures are lost and an 18 read as 19 "
                         "cannot be excluded, hence low.",
                         corrected_reading=(sp.Matrix([sp.Subs(n_.dot(Q - Hp) * sp.sin(phi19), phi19, 0)
-                                                      for Q in (Bp, Hp, Gp)]), sp.zeros(3, 1))),
+                                                      for Q in (Bp, Hp, Gp)]), sp.zeros(3, 1)),
+                        objection="Fig. 19 may be right: the lost Fig. 19 (the waterplane of VII) may also draw the "
+                                  "corner triangle of the top face, so that the legs BH, BG can be read off it.",
+                        answer="The sentence before names Fig. 23 as the top face from which the triangle BHG dips, "
+                               "and B lies below the waterplane that Fig. 19 shows; but the figures are lost and a "
+                               "scan reading 23 or 18 as 19 cannot be told from the print's slip, so it stays low."),
         note="read as: the corners B, H, G of the triangle whose legs the sentence bounds lie in the plane of the "
              "figure cited (their heights above it vanish); Fig. 19 is the water plane through GH, tilted by phi "
              "against the top face, Fig. 23 the top face itself (tilt 0 about GH)")
@@ -322,7 +334,13 @@ d.quote("172", "(172)",
                                      ((s >= S_FOLD_ABOVE) & (s < s172), sp.Eq(COUNT_171(0, 1), 3)),
                                      ((s >= s172) & (s < sp.Rational(5, 6)), sp.Eq(COUNT_171(0, 1), 2)),
                                      (s >= sp.Rational(5, 6), sp.Eq(COUNT_171(0, 1), 0))),
-                                    {s: (half, 1)}, exhaustive=False)),
+                                    {s: (half, 1)}, exhaustive=False),
+                        objection="'eine reelle Wurzel' may mean 'at least one real root', and read so the sentence "
+                                  "is true: (171) has a root in 0 < x < 1 for every s below 0.7735.",
+                        answer="Read so, the number 0.7735 marks nothing: roots exist up to 5/6, and the count "
+                               "changes at 0.7623 (the fold), not at (4 + sqrt 2)/7, where a root only enters "
+                               "through x = 0. The 'at least one' reading leaves the sentence true but its bound "
+                               "idle, hence medium."),
         note="read on 1/2 < s < 1 as a root count (Sturm counts, T and z inserted): where s < (4 + sqrt 2)/7, (171) "
              "has one root in 0 < x < 1. The correction leaves out the fold, which lies in 0.7623 < s < 0.7624; "
              "f(0) < 0 <= f(1) there (steps end-0, end-1), so at least one root, as the sentence may also mean")
@@ -413,7 +431,14 @@ d.quote("pentagon-exists", "X",
         erratum=Erratum("claim", "high",
                         "a pentagonal equilibrium exists only for 0.7623 < s < 5/6 (and 1/6 < s < 0.2377); for "
                         "1/2 < s <= 0.7623 the root of (171) lies beyond the second domain (hexagonal waterplane)",
-                        PENT_EVIDENCE, corrected_reading=(NVp, 6)),
+                        PENT_EVIDENCE, corrected_reading=(NVp, 6),
+                        objection="The hypothesis 'keine neue Gleichgewichtslage im ersten Drehungsgebiet' may "
+                                  "exclude exactly the densities where the root of (171) leaves the second domain, "
+                                  "so that the claim is right within its hypothesis.",
+                        answer="For 1/4 < s < 3/4 the first domain holds no oblique equilibrium (scheeffer-vi-cf, "
+                               "edge-axis-range), so s = 3/5 meets the hypothesis; there the root x = 0.5498 of "
+                               "(171) has beta = 1.214 > 1, the waterplane is a hexagon, and the clipped cube has no"
+                               " pentagonal equilibrium. The word 'sicher' admits no exception."),
         note="read at s = 3/5 (upright unstable, no oblique position in the first domain): the print says the "
              "root of (171) is a pentagonal equilibrium")
 
@@ -436,7 +461,13 @@ d.quote("pentagon-stable", "X", "Es lässt sich auch zeigen, dass dieses Gleichg
                         "second derivative of the potential. The text proves nothing here ('worauf ich jedoch hier "
                         "ebenfalls nicht näher eingehen kann'); medium, since 'dieses' may mean the small-leg branch "
                         "alone.",
-                        corrected_reading=(SIG, sp.Matrix([1, -1]))),
+                        corrected_reading=(SIG, sp.Matrix([1, -1])),
+                        objection="'dieses Gleichgewicht' may mean only the branch that enters at x = 0 as s passes "
+                                  "(4 + sqrt 2)/7, the one (172) points to, which is stable.",
+                        answer="The sentence before speaks of the pentagonal equilibrium of the whole range s < "
+                               "0.7735, and on 0.7623 < s < 0.7735 it is two equilibria of which the larger-leg one "
+                               "is unstable (df/dx < 0 at x = 0.5684, s = 0.77). The narrow reading of 'dieses' is "
+                               "left open, hence medium."),
         note="read at s = 0.77 for the two pentagonal roots of (171): stiffness signs along the diagonal plane")
 d.quote("dual-threshold", "X", r"wenn  $s > \frac{3 - \sqrt{2}}{7}$  d. i.  $> 0,2265$  ist.",
         reading=(1 - s172, (3 - r2) / 7), note="the duality s <-> 1 - s")
@@ -450,7 +481,13 @@ d.quote("dual-exists", "X",
                         "The mirror image of pentagon-exists (s <-> 1 - s): at s = 2/5 the root of (171) at "
                         "1 - s = 3/5 "
                         "gives a hexagonal waterplane.",
-                        corrected_reading=(NVd, 6)),
+                        corrected_reading=(NVd, 6),
+                        objection="For the cube the exchange s <-> 1 - s (turning the cube upside down) is an exact "
+                                  "symmetry, so the statement for s < 1/2 follows from that for s > 1/2 and cannot "
+                                  "be wrong on its own.",
+                        answer="The symmetry holds and carries the fault over with it: s = 2/5 mirrors s = 3/5, "
+                               "where the root of (171) lies beyond the second domain (hexagonal waterplane). The "
+                               "erratum is booked as consequential of pentagon-exists for that reason."),
         note="read at s = 2/5")
 
 # ==== triangle ===========================================================================================
