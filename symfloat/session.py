@@ -67,5 +67,5 @@ def write_session(readme: Path) -> bool:
 
 
 if __name__ == "__main__":  # pragma: no cover
-    README = Path(__file__).resolve().parents[2] / "README.md"
+    README = Path(__file__).resolve().parents[1] / "README.md"
     print(f"{README}: {'rewritten' if write_session(README) else 'unchanged'}", file=sys.stderr)
