@@ -100,7 +100,7 @@ def test_a_notebook_phase_stopped_late_keeps_the_notebooks_it_finished(tmp_path,
     monkeypatch.setenv("SYMFLOAT_WORKERS", "1")
     ids = ["graefe-s1-prismatoid-volume", "graefe-s2-volumes-simpson"]
 
-    def executed(did, stamp):
+    def executed(did, stamp, folder):
         if did == ids[1]:
             raise KeyboardInterrupt                          # Ctrl-C (or a kill) during the second notebook
         return json.dumps({"cells": [], "metadata": {"symfloat": {"stamp": stamp}}, "nbformat": 4,

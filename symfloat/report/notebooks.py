@@ -51,7 +51,7 @@ def cell_id(kind: str, name: str = "") -> str:
 
 def _library_of(module) -> Path | None:
     """The library of texts (``SYMFLOAT_LIBRARY``) whose ``derivations/`` holds *module*, else ``None``."""
-    where = Path(module.__file__).resolve().parent
+    where = Path(module.__file__).resolve().parents[1]          # the package's __init__.py, in derivations/<name>/
     return next((folder for folder in library_folders() if (folder / "derivations").resolve() == where), None)
 
 
