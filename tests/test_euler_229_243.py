@@ -72,7 +72,8 @@ EXPECTED_ERRATA = {
     ("moment-EF-c", "transcription", "medium"),      # §232 garbled start of the p. 118 term
     ("moment-EF-c-p118", "transcription", "medium"),  # p. 118 a² for a³
     ("N-definition", "transcription", "medium"),     # §233 exponent 3κ−1 lost
-    ("N-table-1_2", "transcription", "medium"),      # §233 N = 1/2 for 1
+    ("N-table-1_2", "transcription", "low"),         # §233 N = 1/2 for 1 (low: a fraction copied from the κ
+                                                     # column, the compositor's copy or the scan's)
     ("N-table-3_2", "transcription", "medium"),      # §233 garbled
     ("N-table-2", "transcription", "medium"),        # §233 numerator factors lost
     ("N-table-5_2", "transcription", "medium"),
@@ -82,23 +83,25 @@ EXPECTED_ERRATA = {
     ("K-table-2", "transcription", "medium"),
     ("K-table-5_2", "transcription", "medium"),
     ("K-table-3", "transcription", "medium"),
-    ("stability-EF", "transcription", "medium"),     # §239 μ for ν
-    ("stability-AB-241", "transcription", "low"),    # §241 ν for μ
+    ("stability-EF", "transcription", "low"),        # §239 μ for ν (low: Euler mixes μ and ν in §241 too)
+    ("stability-AB-241", "misprint", "medium"),      # §241 ν for μ: the swap runs through all five places
+                                                     # of §241, Euler's (was the scan's, low)
     ("V-prism", "transcription", "low"),             # §243 (2/3)D·CD for 2D·CD
-    ("stability-CD", "transcription", "medium"),     # §243 v for μ
+    ("stability-CD", "transcription", "low"),        # §243 v for μ (low: the v may be a ν of §241's swap)
     # second pass (lines of 002_9b5669e726e363a9.txt in SECOND_PASS)
     ("portion-Ace", "transcription", "high"),        # §229 x for κ, as in the chord
     ("portion-Bce", "transcription", "high"),
     ("axis-EF-named", "misprint", "medium"),         # §230 'longitudinalis EF' for latitudinalis
     ("kappa-1-acute", "claim", "low"),               # §236 'anguli ad e et f erunt acuti': obtuse for a > b
-    ("Y-family", "transcription", "medium"),         # §231 y^{n-1}, y^{n-2} for y^{2n}, y^{3n}
+    ("Y-family", "transcription", "low"),            # §231 y^{n-1}, y^{n-2} for y^{2n}, y^{3n} (low: no
+                                                     # glyph the scan confuses, print or scan undecided)
     ("waterplane-area", "transcription", "high"),    # §238 z D for 2D
     ("waterplane-area-grows", "transcription", "high"),  # §239 z D for 2D
-    ("excess-maximal", "transcription", "medium"),   # §242 EF²D/vv for EF²D/(μV)
-    ("excess-notable", "transcription", "medium"),
-    ("excess-estimate", "transcription", "medium"),  # §243
-    ("EF-condition-241", "transcription", "low"),    # §241 ν for μ, as at stability-AB-241
-    ("AB-condition-241", "transcription", "low"),    # §241 μ for ν and a stray D'
+    ("excess-maximal", "transcription", "low"),      # §242 EF²D/vv for EF²D/(μV) (low, as stability-CD)
+    ("excess-notable", "transcription", "low"),
+    ("excess-estimate", "transcription", "low"),     # §243
+    ("EF-condition-241", "misprint", "medium"),      # §241 ν for μ, as at stability-AB-241
+    ("AB-condition-241", "misprint", "medium"),      # §241 μ for ν and a stray D'
 }
 
 # Faults of the second review: (printed name, kind, line of the transcription, the wrong piece, the erratum
@@ -113,8 +116,8 @@ SECOND_PASS = [
     ("excess-maximal", "transcription", 292, "{vv}", "stability-CD"),
     ("excess-notable", "transcription", 292, "{vv}", "stability-CD"),
     ("excess-estimate", "transcription", 294, "{vv}", "stability-CD"),
-    ("EF-condition-241", "transcription", 288, r"{\nu v}", "stability-AB-241"),
-    ("AB-condition-241", "transcription", 288, "D'", "stability-AB-241"),
+    ("EF-condition-241", "misprint", 288, r"{\nu v}", "stability-AB-241"),
+    ("AB-condition-241", "misprint", 288, "D'", "stability-AB-241"),
     ("kappa-1-acute", "claim", 272, "erunt acuti", ""),
 ]
 

@@ -184,12 +184,24 @@ d.quote("chord", "§229", "erit ergo $Mm =$\n $2a\\left(1 - \\frac{y^n}{b^n}\\ri
         erratum=Erratum("transcription", "high", r"Mm = 2a\left(1 - \frac{y^n}{b^n}\right)^\kappa",
                         "The portions are x = a + Y ∓ aR with the exponent κ (κ is printed in §231–236); the x "
                         "of the transcription is the Greek κ misread (x is the abscissa AP).",
-                        corrected_reading=(XB - XA, 2 * a * R)),
+                        corrected_reading=(XB - XA, 2 * a * R),
+                        objection="The exponent is printed x in all seven formulas of §229–230 and never κ there; a "
+                                  "letter that runs the same way through two paragraphs may be Euler's own in the "
+                                  "print (κ first named in §231), not a glyph the scan lost once.",
+                        answer="The same sentence defines AP = x, and Euler would not give the exponent the letter "
+                               "of the abscissa in the very equation that defines it (x = a + Y − a(…)^x = AP); §231"
+                               " speaks of κ as a letter already in play ('et κ denotet vel numerum integrum vel "
+                               "fractum'), and §232–236 print κ where these formulas return. The old kappa ϰ has the"
+                               " shape of an x, a glyph the scan confuses, and one misread glyph repeats on "
+                               "consecutive lines: high."),
         note=claim("the chord between the two portions is Mm = 2a(1 − yⁿ/bⁿ)^κ."))
 d.quote("area", "§229", r"area AEB prodibit $= 2a \int dy \left(1 - \frac{y^n}{b^n}\right)^x = D$",
         reading=(D, 2 * a * J(0, xk)),
         erratum=Erratum("transcription", "high", r"= 2a \int dy \left(1 - \frac{y^n}{b^n}\right)^\kappa = D",
-                        "x for κ, as in the chord Mm.", corrected_reading=(D, 2 * a * J(0, k))),
+                        "x for κ, as in the chord Mm.", corrected_reading=(D, 2 * a * J(0, k)),
+                        objection="As for the chord: x may be the print's letter for the exponent in §229–230.",
+                        answer="D = 2a∫dy(1 − yⁿ/bⁿ)^κ returns with κ in §231 ('∫dy(1 − yⁿ/bⁿ)^κ = D/2a') and §233 "
+                               "('= ND/2a'), and x is the abscissa AP of the same sentence; the ϰ read as x, high."),
         note=claim("the area of AEB is D = 2a∫dy(1 − yⁿ/bⁿ)^κ, whatever Y (the chord does not contain Y)."))
 
 KAPPA_AS_X = "euler-229-243/chord"
@@ -200,14 +212,21 @@ d.quote("portion-Ace", "§229", r"$x = a + Y - a\left(1 - \frac{y^n}{b^n}\right)
                         "the abscissa AP itself and cannot be its own exponent. Only with κ in both portions is "
                         "Ap − AP the chord Mm = 2a(1 − yⁿ/bⁿ)^κ the text derives next. The Greek κ read as x, the "
                         "fault booked at the chord Mm ('chord').",
-                        corrected_reading=(XA, a + Ys - a * R), same_as=KAPPA_AS_X),
+                        corrected_reading=(XA, a + Ys - a * R), same_as=KAPPA_AS_X,
+                        objection="As for the chord: x may be the print's letter for the exponent.",
+                        answer="Here x stands on both sides of one equation (x = … (…)^x = AP), which Euler would "
+                               "not write for an explicit curve; §231 and §236 treat κ as the exponent of these "
+                               "portions (cusps at e for κ > 1). The ϰ read as x, the fault booked at 'chord': high."),
         note=claim("the portion Ace is x = a + Y − a(1 − yⁿ/bⁿ)^κ = AP."))
 d.quote("portion-Bce", "§229", r"aequatio $x = a + Y + a\left(1 - \frac{y^n}{b^n}\right)^x = Ap$",
         reading=(XB, a + Ys + a * Rx),
         erratum=Erratum("transcription", "high", r"x = a + Y + a\left(1 - \frac{y^n}{b^n}\right)^\kappa = Ap",
                         "κ read as x, the fault booked at the chord Mm ('chord'): the portion Bce is "
                         "x = a + Y + a(1 − yⁿ/bⁿ)^κ, and Ap − AP = 2a(1 − yⁿ/bⁿ)^κ.",
-                        corrected_reading=(XB, a + Ys + a * R), same_as=KAPPA_AS_X),
+                        corrected_reading=(XB, a + Ys + a * R), same_as=KAPPA_AS_X,
+                        objection="As for the chord: x may be the print's letter for the exponent.",
+                        answer="As for the portion Ace: x on both sides of the equation, κ in §231–236 for this "
+                               "exponent; the ϰ read as x, high."),
         note=claim("the portion Bce is x = a + Y + a(1 − yⁿ/bⁿ)^κ = Ap."))
 
 # ================================================================ §230: moments about AB and about the normal through O
@@ -225,17 +244,30 @@ d.quote("moment-AB", "§230", "erit momentum respectu axis $AB = 2a \\int y dy$\
                         "The chord Mm at the distance y from AB gives y²·Mm·dy; ∫y·Mm dy would be the first "
                         "moment, which vanishes for the whole figure and is not what §237 calls momentum. A "
                         "'yy' read as 'y' and κ read as x; the transcription alone cannot exclude a slip of "
-                        "1749, hence medium.", corrected_reading=(IAB, 2 * a * J(2, k))),
+                        "1749, hence medium.", corrected_reading=(IAB, 2 * a * J(2, k)),
+                        objection="'Momentum' may mean the static moment here (weight times distance, the usual "
+                                  "sense in mechanics), and 2a∫y dy R is the first moment of AEB about AB, so the "
+                                  "print is right in that sense.",
+                        answer="In this chapter 'momentum respectu axis' is the second moment: §237 gives it as "
+                               "EF²D/μ with μ = 6 for the rectangle, which only ∫y²·Mm dy gives, and §233's moment "
+                               "about EF is 2a²D times a number, a fourth power of a length. So one y of 'yy' is "
+                               "lost; a letter lost by the scan or by the compositor cannot be told apart from the "
+                               "text, and the correction itself is certain: medium."),
         note=claim("the moment of AEB about AB is 2a∫y²dy(1 − yⁿ/bⁿ)^κ, independent of Y."))
 d.quote("PO", "§230", r"$PO = -Y + a\left(1 - \frac{y^n}{b^n}\right)^x$",
         reading=(a - XA, -Ys + a * Rx),
         erratum=Erratum("transcription", "high", r"PO = -Y + a\left(1 - \frac{y^n}{b^n}\right)^\kappa",
-                        "x for κ.", corrected_reading=(a - XA, -Ys + a * R)),
+                        "x for κ.", corrected_reading=(a - XA, -Ys + a * R),
+                        objection="As for the chord: x may be the print's letter for the exponent.",
+                        answer="PO = a − AP of the portion Ace, whose exponent §231–236 call κ; the ϰ read as x on "
+                               "the same line as the chord's, high."),
         note=claim("the distance of M (on Ace) from the normal through O is PO = −Y + aR."))
 d.quote("pO", "§230", "et $pO =$\n\n$Y + a\\left(1 - \\frac{y^n}{b^n}\\right)^x$",
         reading=(XB - a, Ys + a * Rx),
         erratum=Erratum("transcription", "high", r"pO = Y + a\left(1 - \frac{y^n}{b^n}\right)^\kappa",
-                        "x for κ.", corrected_reading=(XB - a, Ys + a * R)),
+                        "x for κ.", corrected_reading=(XB - a, Ys + a * R),
+                        objection="As for the chord: x may be the print's letter for the exponent.",
+                        answer="pO = Ap − a of the portion Bce; the ϰ read as x, high."),
         note=claim("and that of m (on Bce) is pO = Y + aR."))
 MO_print = (2 * n * n * a ** 3 / b ** n * Ib(n, 3 * n - 1, n, b) + 2 * a * JY(2, 0, xk))
 d.quote("moment-O", "§230",
@@ -247,7 +279,15 @@ d.quote("moment-O", "§230",
                         r"2a \int Y^2 dy \left(1 - \frac{y^n}{b^n}\right)^\kappa",
                         "(1/3)∫((pO)³ + (PO)³)dy = (2a³/3)∫R³dy + 2a∫Y²R dy, and by parts (2a³/3)∫R³dy = "
                         "(2nκa³/bⁿ)∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy. κ read as n (twice) and as x; §232 prints the "
-                        "whole figure's term with the exponent 3κ−1.", corrected_reading=(MO, MO_val)),
+                        "whole figure's term with the exponent 3κ−1.", corrected_reading=(MO, MO_val),
+                        objection="n stands for κ four times in §230 (2nn and 3n − 1 in both lines) and again in "
+                                  "§232 (n(n + 1) + 1): a letter wrong the same way in several places of Euler's "
+                                  "working is his own, not the scan's.",
+                        answer="It is not carried on: §232 prints the same term with the exponent 3κ − 1 and p. 118 "
+                               "with 4nκ and 3κ − 1, and §233's 2nκa²ND/(1 + 3nκ) and the tables of §234 (checked "
+                               "against §236's rhombus and ellipse) need κ, so Euler computed with κ. The page also "
+                               "reads κ as x and α, the marks of a scan that cannot tell this glyph; but a lost κ in"
+                               " the print is not excluded: medium."),
         note=claim("the moment of AEB about the normal to AB through O is (2nκa³/bⁿ)∫yⁿdy(1 − yⁿ/bⁿ)^{3κ−1} "
                    "+ 2a∫Y²dy(1 − yⁿ/bⁿ)^κ."))
 d.quote("moment-O-whole", "§230",
@@ -258,7 +298,11 @@ d.quote("moment-O-whole", "§230",
                         r"= \frac{4n\kappa a^3}{b^n} \int y^n dy \left(1 - \frac{y^n}{b^n}\right)^{3\kappa-1} + "
                         r"4a \int Y^2 dy \left(1 - \frac{y^n}{b^n}\right)^\kappa",
                         "Twice the half figure's moment (AFB is equal to AEB); the same κ read as n and x.",
-                        corrected_reading=(2 * MO, 2 * MO_val)),
+                        corrected_reading=(2 * MO, 2 * MO_val),
+                        objection="As for the half figure: n for κ recurs in Euler's working and may be his.",
+                        answer="Twice the half figure's moment, with the same letters; §232 and p. 118 print the "
+                               "term with κ and §233 builds on it, so the fault is not carried on: medium, as for "
+                               "the half figure."),
         note=claim("the whole figure's moment about the normal through O is twice that."))
 
 # ================================================================ §231: centroid and the moment about EF
@@ -289,13 +333,27 @@ d.quote("centroid-moment", "§231",
                         "Y-dependent centroid), the factor of the second is 2nκa, and α stands for a (as in "
                         "CO = −2α∫…/D next). Several letters at once: low.",
                         corrected_reading=(D * CO, 2 * a * JY(0, 1, k, 1) - 2 * n * k * a / b ** n * JY(1, n, k - 1),
-                                           -2 * a * JY(1, 0, k))),
+                                           -2 * a * JY(1, 0, k)),
+                        objection="The first integral ∫y dy R may be the print's (Euler's slip while integrating by "
+                                  "parts), and α may be a letter of the print, since §231 has just introduced α as "
+                                  "the first coefficient of Y.",
+                        answer="The line's own end, −2α∫Y dy R, and the next formula CO = −2α∫…/D need ∫y dY and the"
+                               " factor a: ∫y dy R has no Y and could not give a centroid that depends on Y. Several"
+                               " letters at once, some the scan's (α for a and κ) and the dY perhaps the print's, "
+                               "cannot be told apart: low stands."),
         note=claim("the centroid C satisfies D·CO = 2a∫y dY R − (2nκa/bⁿ)∫yⁿY dy(1 − yⁿ/bⁿ)^{κ−1} = −2a∫Y dy R."))
 d.quote("CO", "§231", r"$CO = \frac{-2 \alpha \int Y dy (1 - \frac{y^n}{b^n})^{\kappa}}{D}$",
         reading=(CO, -2 * al * JY(1, 0, k) / D),
         erratum=Erratum("transcription", "high", r"CO = \frac{-2a \int Y dy (1 - \frac{y^n}{b^n})^{\kappa}}{D}",
                         "α for a: the half-length a multiplies the chord 2aR; no α is defined before §231's "
-                        "Y = αyⁿ + ….", corrected_reading=(CO, -2 * a * JY(1, 0, k) / D)),
+                        "Y = αyⁿ + ….", corrected_reading=(CO, -2 * a * JY(1, 0, k) / D),
+                        objection="α stands for a in seven formulas of §231–232, consistently: by the rule for a "
+                                  "fault running through the author's working, Euler's or the print's, not the "
+                                  "scan's; and α is a letter of the paragraph (Y = αyⁿ + …).",
+                        answer="It is not carried on: §233 writes ND/2a and 2nκa²ND/(1 + 3nκ), which need the "
+                               "half-length a, and the same pages print α also where κ belongs (4nαa³), where "
+                               "neither author nor compositor would set the coefficient of Y; italic a and α differ "
+                               "by a stroke. The scan's reading of p. 117, against the author's own later use: high."),
         note=claim("hence CO = −2a∫Y dy R / D."))
 d.quote("moment-EF", "§231",
         r"$= \frac{4n\alpha a^3}{b^n} \int y^n dy (1 - \frac{y^n}{b^n})^{\kappa-1} + 4 \alpha \int Y^2 dy "
@@ -307,7 +365,14 @@ d.quote("moment-EF", "§231",
                         "The moment about EF is the moment about the parallel through O, 2M_O, less 2D·CO² "
                         "(§217) = 8a²(∫YR)²/D. Printed: α for κ and for a, the exponent κ−1 for 3κ−1 (§232 "
                         "repeats the term with 3κ−1) and the divisor D of the last term lost (the term must "
-                        "be a fourth power of a length).", corrected_reading=(KEF, KEF_val)),
+                        "be a fourth power of a length).", corrected_reading=(KEF, KEF_val),
+                        objection="The fix needs three different changes (α for κ and a, κ − 1 for 3κ − 1, the "
+                                  "divisor D lost), more than one slip of the scan: the line may be Euler's own "
+                                  "wrong formula.",
+                        answer="Euler's next results are computed from the right one: §232 repeats the first term "
+                               "with 3κ − 1, and its c-terms 2(n + 1)c²D/(…) − 2c²D/(n(κ + 1) + 1)² come from "
+                               "8a²(∫YR)²/D, so the divisor D was in his working. α for κ and a is the scan's fault "
+                               "of this page; a lost 3 and a lost fraction bar are faults of either. Medium."),
         note=claim("the moment of the whole figure about EF through C is (4nκa³/bⁿ)∫yⁿ(…)^{3κ−1} + 4a∫Y²R "
                    "− 8a²(∫YR)²/D."))
 d.quote("axis-EF-named", "§230", r"Ad momentum autem huius figurae respectu axis longitudinalis EF",
@@ -319,14 +384,22 @@ d.quote("axis-EF-named", "§230", r"Ad momentum autem huius figurae respectu axi
                         "parallel through C, is the one about EF. Read as printed, the moment about the "
                         "longitudinal axis (2·I_AEB) would be 2M_O − 2S_O²/D, which it is not. A word of the "
                         "print (a scan does not exchange 'latitudinalis' for 'longitudinalis'); medium.",
-                        corrected_reading=(KEF, 2 * MO - 2 * SO ** 2 / D)),
+                        corrected_reading=(KEF, 2 * MO - 2 * SO ** 2 / D),
+                        objection="'Axis longitudinalis' may be the axis of longitudinal rotation: the moment about "
+                                  "EF governs pitching, which later usage calls longitudinal stability; in that "
+                                  "sense 'longitudinalis EF' is right.",
+                        answer="Euler's adjective names the direction of the axis itself: §237 'AB designet axem "
+                               "longitudinalem EF latitudinalem', §231 'respectu axis latitudinalis EF', §241 "
+                               "'stabilitas respectu axis longitudinalis' for the stability about AB. So the print "
+                               "names EF with AB's word. A scan that models words could exchange one '-tudinalis' "
+                               "for the other, the alternative left: medium."),
         note=claim("the moment about the axis EF through the centroid C is found from the moment about the "
                    "parallel through O (read with the names of §231: 2M_O less 2S_O²/D)."))
 Y_printed = aY * y ** n + bY * y ** (n - 1) + gY * y ** (n - 2)
 Y_corrected = aY * y ** n + bY * y ** (2 * n) + gY * y ** (3 * n)
 d.quote("Y-family", "§231", r"$Y = \alpha y^n + \beta y^{n-1} + \gamma y^{n-2} + \dots + \text{etc.}$",
         reading=(sp.Subs(Y_printed, (y, n), (0, 2)), 0),
-        erratum=Erratum("transcription", "medium", r"Y = \alpha y^n + \beta y^{2n} + \gamma y^{3n} + \dots",
+        erratum=Erratum("transcription", "low", r"Y = \alpha y^n + \beta y^{2n} + \gamma y^{3n} + \dots",
                         "The curve must meet AB at A and B: AP = Y(0) at y = 0, so Y vanishes there (§221: "
                         "'quae euaneat posito y = 0'). The printed terms y^{n−1}, y^{n−2} do not: at n = 2 (the "
                         "ellipse of §236) γy^{n−2} = γ at y = 0 (read so, the '+ etc.' dropped), at n = 1 βy⁰ = β "
@@ -336,12 +409,25 @@ d.quote("Y-family", "§231", r"$Y = \alpha y^n + \beta y^{n-1} + \gamma y^{n-2} 
                         "powers y^{jn} reduce by the rational factors of the recurrence (§232 uses y^n and y^{2n}). "
                         "The exponents 2n, 3n read as the descending n − 1, n − 2 of an ordinary polynomial; the "
                         "print cannot be seen (a slip of 1749 is not excluded): medium.",
-                        corrected_reading=(sp.Subs(Y_corrected, (y, n), (0, 2)), 0)),
+                        corrected_reading=(sp.Subs(Y_corrected, (y, n), (0, 2)), 0),
+                        objection="A descending polynomial αyⁿ + βy^{n−1} + γy^{n−2} + … is the most ordinary way of"
+                                  " writing a general function, and the change to y^{2n}, y^{3n} is no glyph the "
+                                  "scan confuses (2n does not look like n − 1): if wrong, the slip is as likely "
+                                  "Euler's own pen or the compositor's.",
+                        answer="The correction stands: Y must vanish at y = 0, and only powers y^{jn} reduce to "
+                               "∫dy(1 − yⁿ/bⁿ)^κ as the sentence claims (§232 uses yⁿ). But the fault is not a glyph"
+                               " confusion and Euler's later working shows only yⁿ, not y^{2n}, so print and scan "
+                               "cannot be told apart: lowered to low."),
         note=claim("Y is a sum of powers of y vanishing at y = 0; read at n = 2, y = 0 (the point A)."))
 d.quote("area-integral", "§231", r"$\int dy (1 - \frac{y^n}{b^n})^{\kappa} = \frac{D}{2\alpha}$",
         reading=(J(0, k), D / (2 * al)),
         erratum=Erratum("transcription", "high", r"\int dy (1 - \frac{y^n}{b^n})^{\kappa} = \frac{D}{2a}",
-                        "α for a (§229: D = 2a∫R dy).", corrected_reading=(J(0, k), D / (2 * a))),
+                        "α for a (§229: D = 2a∫R dy).", corrected_reading=(J(0, k), D / (2 * a)),
+                        objection="α may be meant: §231 has just introduced α as the first coefficient of Y, and the"
+                                  " print may write D/2α.",
+                        answer="D = 2a∫dy R (§229) gives D/2a, and §233 prints ∫dy(…)^κ = ND/2a with a; the "
+                               "coefficient α of Y has no place in the area. α for a, the scan's reading of this "
+                               "page: high."),
         note=claim("the integral to which the others reduce is ∫dy R = D/(2a)."))
 
 # ================================================================ §232: Y = −c yⁿ/bⁿ
@@ -366,7 +452,14 @@ d.quote("Y-c-first", "§232",
                         "∫yⁿR dy/bⁿ = ∫R dy/(n(κ+1)+1) by parts; the display at the top of p. 118 prints "
                         "n(κ+1)+1 in the same place: κ read as n, and α for a.",
                         corrected_reading=(JY(1, 0, k, 0, -c, 0), -c / b ** n * J(n, k), -c / m1 * J(0, k),
-                                           -c * D / (2 * a * m1))),
+                                           -c * D / (2 * a * m1)),
+                        objection="n(n + 1) + 1 stands in four places of §232 (both integrals and their values), "
+                                  "consistently: by the rule for a repeated fault, Euler's working rather than the "
+                                  "scan's.",
+                        answer="The display at the top of p. 118, which combines exactly these terms, prints n(κ + "
+                               "1) + 1 and n(κ + 2) + 1 and its combined c-term is right, so Euler computed with κ; "
+                               "the n is the scan's reading of κ on p. 117, where it also reads κ as x and α. High: "
+                               "the author's own next line shows the form."),
         note=claim("with Y = −cyⁿ/bⁿ (Oc = c), ∫Y dy R = −cD/(2a(n(κ+1)+1))."))
 d.quote("Y-c", "§232", r"Sit primum antequam pro κ valores definitos accipiamus, $Y = \frac{-cy^n}{b^n}$",
         reading=(sp.Subs(a - XA, (Ys, y), (-c * y ** n / b ** n, b)), c),
@@ -390,7 +483,15 @@ d.quote("Y-c-second", "§232",
                         "as in the line before; p. 118 prints (n(κ+1)+1)(n(κ+2)+1).",
                         corrected_reading=(JY(2, 0, k, 0, -c, 0), c ** 2 / b ** (2 * n) * J(2 * n, k),
                                            (n + 1) * c ** 2 / (m1 * m2) * J(0, k),
-                                           (n + 1) * c ** 2 * D / (2 * a * m1 * m2))),
+                                           (n + 1) * c ** 2 * D / (2 * a * m1 * m2)),
+                        objection="The fix needs several changes (κ for n twice, a for α, the comma taken as part of"
+                                  " a product), more than the one slip that high asks for; and the comma may be the "
+                                  "print's, closing one equation and opening another.",
+                        answer="As separate equations the first ends in ∫Y²R = (n + 1)c²/(…), a square of a length "
+                               "where the integral is a cube, and the second makes ∫dy R depend on c; read as one "
+                               "product its value is the one p. 118 uses, (n + 1)c²D/(2a(…)(…)) times 4a = "
+                               "2(n + 1)c²D/((n(κ + 1) + 1)(n(κ + 2) + 1)). Each change is the page's known misreading "
+                               "(κ as n, a as α) and p. 118 prints the result: high."),
         note=claim("∫Y²dy R = (n+1)c²D/(2a(n(κ+1)+1)(n(κ+2)+1))."))
 d.quote("moment-EF-c", "§232",
         r"$= \frac{4n\alpha a^3}{b^n} \int y^n dy (1 - \frac{y^n}{b^n})^{3\kappa-1} + "
@@ -404,7 +505,14 @@ d.quote("moment-EF-c", "§232",
                         "2(n+1)ccD/((n(κ+1)+1)(n(κ+2)+1)) − 2ccD/(n(κ+1)+1)²; the transcription's last fraction "
                         "is a garbled start of that term (ccD lost, 2α and n for κ). α for κ in 4nκa³.",
                         corrected_reading=(Kc, 4 * n * k * a ** 3 / b ** n * J(n, 3 * k - 1)
-                                           + 2 * (n + 1) * c ** 2 * D / (m1 * m2) - 2 * c ** 2 * D / m1 ** 2)),
+                                           + 2 * (n + 1) * c ** 2 * D / (m1 * m2) - 2 * c ** 2 * D / m1 ** 2),
+                        objection="The line ends the page; the print itself may break the formula there with an "
+                                  "incomplete fraction, so that what stands is Euler's and only its continuation is "
+                                  "on p. 118.",
+                        answer="That is the reading the erratum makes: p. 118 continues with 2(n + 1)ccD/(…)(…) − "
+                               "2ccD/(…)², so the page's last fraction is its start; but 2α in the denominator and "
+                               "the lost ccD are not a compositor's break, and α for κ in 4nαa³ is the scan's. "
+                               "Whether the print set the whole term on p. 117 cannot be seen: medium."),
         note=claim("for Y = −cyⁿ/bⁿ the moment about EF is (4nκa³/bⁿ)∫yⁿ(…)^{3κ−1}dy + "
                    "2(n+1)c²D/((n(κ+1)+1)(n(κ+2)+1)) − 2c²D/(n(κ+1)+1)², continued on p. 118."))
 d.quote("moment-EF-c-p118", "§232",
@@ -423,7 +531,13 @@ d.quote("moment-EF-c-p118", "§232",
                         "exponent misread, or a misprint of 1749; medium.",
                         corrected_reading=(Kc, 4 * n * k * a ** 3 / b ** n * J(n, 3 * k - 1)
                                            + 2 * (n + 1) * c ** 2 * D / (m1 * m2) - 2 * c ** 2 * D / m1 ** 2,
-                                           Kc_val)),
+                                           Kc_val),
+                        objection="a² may be the print's: §233 carries a² on (2nκa²ND/(1 + 3nκ)), so the square may "
+                                  "be Euler's own through two places of his working.",
+                        answer="§233's a² is right there, since D = 2a∫R absorbs one a: 4nκa³/bⁿ∫yⁿ(…)^{3κ−1} = "
+                               "2nκa²ND/(1 + 3nκ) needs a³ in the line before. So the a² of p. 118 is not carried "
+                               "on; a 3 read as 2 (the scan) or set as 2 (the compositor) cannot be told apart: "
+                               "medium."),
         note=claim("the two c-terms combine: the moment about EF is (4nκa³/bⁿ)∫yⁿ(…)^{3κ−1}dy + "
                    "2n²(κ+1)c²D/((n(κ+1)+1)²(n(κ+2)+1)) (read with the first term of the line before)."))
 d.quote("moment-grows-with-c", "§232",
@@ -454,7 +568,13 @@ d.quote("N-definition", "§233",
                         "As transcribed N would be 1. The integral being replaced is the ∫dy(…)^{3κ−1} of the "
                         "line before, and the table of N (κ = 1: 4n/(2+4n) = ∫(1−uⁿ)²/∫(1−uⁿ)) confirms it: the "
                         "exponent 3κ−1 of the first integral is lost.",
-                        corrected_reading=(J(0, 3 * k - 1), N * J(0, k), N * D / (2 * a))),
+                        corrected_reading=(J(0, 3 * k - 1), N * J(0, k), N * D / (2 * a)),
+                        objection="The print may have lost the exponent itself (a compositor's omission), the kind "
+                                  "then the printer's.",
+                        answer="The line defines N, and as transcribed N would be 1, while the table of N that "
+                               "follows gives values other than 1 and §234's rows are built from them; the integral "
+                               "replaced is the ∫dy(…)^{3κ−1} of the line before. A lost superscript is the scan's "
+                               "commonest fault in displays and a printer's rarer one: medium."),
         note=claim("N is defined by ∫dy(1 − yⁿ/bⁿ)^{3κ−1} = N∫dy(1 − yⁿ/bⁿ)^κ = ND/(2a)."))
 d.quote("moment-EF-N", "§233",
         "\\text{ erit momentum respectu axis EF} = \\frac{2n\\kappa a^2 ND}{1+3n\\kappa} \\\\ & + "
@@ -521,23 +641,49 @@ for kv in KAPPAS:
            uses=("moment-EF-c", "moment-EF-N"), result=Kk[kv], note="c = 0, κ = %s" % kv)
 
 N_PRINTED = {
-    sp.Rational(1, 2): (r"$\kappa = \frac{1}{2}$	$N = \frac{1}{2}$", sp.Rational(1, 2), "medium",
+    sp.Rational(1, 2): (r"$\kappa = \frac{1}{2}$	$N = \frac{1}{2}$", sp.Rational(1, 2), "low",
                         "N = ∫(1−uⁿ)^{1/2}/∫(1−uⁿ)^{1/2} = 1 (3κ − 1 = κ), and the row κ = 1/2 of §234, "
                         "2a²D·n/(2+3n) = 2nκa²ND/(1+3nκ), needs N = 1. Perhaps a 1 read as the 1/2 of the κ "
-                        "column beside it."),
-    sp.Integer(1): (r"$\kappa = 1$	$N = \frac{4n}{2+4n}$", 4 * n / (2 + 4 * n), None, ""),
+                        "column beside it.",
+                        "The 1/2 may be the print's: the compositor setting the κ column's 1/2 again in the N column "
+                        "beside it, or Euler's slip, since nothing in §233 is computed from this row.",
+                        "N = 1 here (3κ − 1 = κ), and §234's row κ = 1/2, 2a²D·n/(2 + 3n), is computed with N = 1, "
+                        "so Euler had the value. But a whole fraction copied from the next column is no glyph the "
+                        "scan confuses with 1, and the compositor's copy cannot be told from the transcription's: "
+                        "lowered to low."),
+    sp.Integer(1): (r"$\kappa = 1$	$N = \frac{4n}{2+4n}$", 4 * n / (2 + 4 * n), None, "", "", ""),
     sp.Rational(3, 2): (r"$\kappa = \frac{3}{2}$	$N = \frac{5n}{(2+1)n}(2+7n)$", 5 * n / ((2 + 1) * n) * (2 + 7 * n),
                         "medium", "The rebuilt N is 5n·7n/((2+5n)(2+7n)); the transcription keeps 5n, 2+…n and "
-                        "(2+7n) of it but loses the factor 7n and scrambles the denominator."),
+                        "(2+7n) of it but loses the factor 7n and scrambles the denominator.",
+                        "The row may be garbled in the print itself, a compositor's muddle of a two-line fraction, "
+                        "the kind then the printer's.",
+                        "§234's row κ = 3/2, 3n·5n·7n over (2 + 5n)(2 + 7n)(2 + 9n), is 3n/(2 + 9n) times this N "
+                        "rebuilt, so Euler had it; the pieces kept (5n, (2 + 7n), '(2+1)n' with a 5 read as 1) "
+                        "are those of a two-line fraction flattened. The compositor's muddle is the alternative "
+                        "left: medium."),
     sp.Integer(2): (r"$\kappa = 2$	$N = \frac{6n}{(2+6n)(2+8n)(2+10n)}$", 6 * n / ((2 + 6 * n) * (2 + 8 * n) * (2 + 10 * n)),
                     "medium", "The denominator is right; the numerator 6n·8n·10n lost its last two factors "
-                              "(the pattern of every row: one factor jn over each 2 + jn)."),
+                              "(the pattern of every row: one factor jn over each 2 + jn).",
+                    "The same loss, only the first numerator factor kept, runs through the rows κ = 2, 5/2 and 3: "
+                    "a fault consistent through a table is the print's (Euler's abbreviation of the product by its "
+                    "first factor, or the compositor's), not the scan's.",
+                    "§234's row κ = 2, built from N, prints every factor: 4n·6n·8n·10n over (2 + 6n)(2 + 8n)"
+                    "(2 + 10n)(2 + 12n), 4n/(2 + 12n) times N rebuilt, so Euler had the whole product and the "
+                    "loss is not carried on; the row κ = 1, with one factor, is printed whole. Whether the print "
+                    "abbreviated or the transcription dropped the rest of a long numerator cannot be seen: "
+                    "medium."),
     sp.Rational(5, 2): (r"$\kappa = \frac{5}{2}$	$N = \frac{7n}{(2+7n)(2+9n)(2+11n)(2+13n)}$",
                         7 * n / ((2 + 7 * n) * (2 + 9 * n) * (2 + 11 * n) * (2 + 13 * n)), "medium",
-                        "Denominator right, numerator 7n·9n·11n·13n lost three factors."),
+                        "Denominator right, numerator 7n·9n·11n·13n lost three factors.",
+                        "As for κ = 2: the same loss through three rows may be the print's abbreviation.",
+                        "§234's row κ = 5/2 prints the numerators 5n·7n·9n·11n·13n, 5n/(2 + 15n) times N rebuilt: "
+                        "Euler had the whole product; print or transcription cannot be seen, medium."),
     sp.Integer(3): (r"$\kappa = 3$	$N = \frac{8n}{(2+8n)(2+10n)(2+12n)(2+14n)(2+16n)}$",
                     8 * n / ((2 + 8 * n) * (2 + 10 * n) * (2 + 12 * n) * (2 + 14 * n) * (2 + 16 * n)), "medium",
-                    "Denominator right, numerator 8n·10n·12n·14n·16n lost four factors."),
+                    "Denominator right, numerator 8n·10n·12n·14n·16n lost four factors.",
+                    "As for κ = 2: the same loss through three rows may be the print's abbreviation.",
+                    "§234's row κ = 3 prints the numerators 6n·8n·10n·12n·14n·16n, 6n/(2 + 18n) times N "
+                    "rebuilt: Euler had the whole product; print or transcription cannot be seen, medium."),
 }
 
 
@@ -572,11 +718,12 @@ K_PRINTED = {
 }
 
 for kappa in KAPPAS:
-    n_excerpt, n_printed, conf, why = N_PRINTED[kappa]
+    n_excerpt, n_printed, conf, why, n_objection, n_answer = N_PRINTED[kappa]
     n_value, n_tex = N_rebuilt(kappa)
     d.quote("N-table-%s" % _label(kappa), "§233", n_excerpt, reading=(Nk[kappa], n_printed),
             erratum=None if conf is None else Erratum("transcription", conf, "N = " + n_tex, why,
-                                                      corrected_reading=(Nk[kappa], n_value)),
+                                                      corrected_reading=(Nk[kappa], n_value),
+                                                      objection=n_objection, answer=n_answer),
             note=claim("for κ = %s, N = ∫(1 − yⁿ/bⁿ)^{3κ−1}dy / ∫(1 − yⁿ/bⁿ)^κ dy is the printed entry; rebuilt "
                        "from the Beta integrals: N = %s." % (kappa, n_tex)))
     k_excerpt, k_printed = K_PRINTED[kappa]
@@ -588,7 +735,16 @@ for kappa in KAPPAS:
                 "the first factor of each printed denominator pair. The transcription gives every fraction a "
                 "second factor, the first of the next fraction (a pattern, not arithmetic: with it κ = 1, n = 1 "
                 "would give 2a²D/480, against the rhombus' 2a²D/6 that §236 prints).",
-                corrected_reading=(Kk[kappa], 2 * a ** 2 * Dk[kappa] * k_value)),
+                corrected_reading=(Kk[kappa], 2 * a ** 2 * Dk[kappa] * k_value),
+                objection="Every fraction of the five rows carries the same second factor, the first of the next "
+                          "fraction: a pattern consistent through the whole table is the print's (Euler's or the "
+                          "compositor's), not a glyph the scan confused.",
+                answer="Euler's later values are computed without it: §236's rhombus 2a²D/6 and 16a²D/35 are the "
+                       "row κ = 1 at n = 1 and 2 with one factor 2 + jn under each numerator (with the printed "
+                       "pairs n = 1 gives 2a²D/480). The pairs bring in factors foreign to the value (2 + 8n in "
+                       "the row κ = 1), which a compositor following a right manuscript would not add to every "
+                       "fraction and a transcription that continues a pattern does; the print cannot be seen: "
+                       "medium."),
             note=claim("for c = 0 and κ = %s the moment about EF is the printed entry; rebuilt: 2a²D·%s."
                        % (kappa, k_tex)))
 
@@ -653,7 +809,15 @@ d.quote("kappa-1-acute", "§236", r"Quodsi autem sit $\kappa = 1$ anguli ad e et
                         "this paragraph with a = 4b has 152° at e and f. A claim of the author; low, since 'acutus' "
                         "may mean a sharp corner (against the cusps of κ > 1 and the smooth ends of κ < 1) rather "
                         "than an angle below 90°.",
-                        corrected_reading=Iff(ANGLE_E < sp.pi / 2, (a - c) * (a + c) < b ** 2)),
+                        corrected_reading=Iff(ANGLE_E < sp.pi / 2, (a - c) * (a + c) < b ** 2),
+                        objection="'Anguli ad e et f' may be the angles each straight portion makes with the breadth"
+                                  " ef (or with AB), both acute for every quadrilateral; or 'acuti' may mean sharp "
+                                  "corners, between the cusps of κ > 1 and the smooth ends of κ < 1; either way the "
+                                  "print is right.",
+                        answer="The paragraph names one angle at e and one at f, the corners of the figure as in "
+                               "§215's quadrilateral, and that interior angle is obtuse for every figure longer than"
+                               " broad ((a − c)(a + c) > b²), a rhombus with §241's AB = 4EF included. The other "
+                               "two readings cannot be excluded from the words alone: low stands."),
         note=claim("for κ = 1 the angles at e and f are acute; read as the interior angle at e, between the "
                    "straight portions towards A and B (f is its mirror image), below a right angle."))
 d.quote("kappa-1-quadrilateral", "§236", r"hocque casu continetur figura rectilinea quadrilatera quam §. 215. "
@@ -740,10 +904,17 @@ d.quote("stability-AB", "§239", r"$AB = M (\frac{EF^2 \cdot D}{\mu v} - OG)$",
         symbols={"v": (V, "the volume V of §238 (the transcription writes it v, as it writes ν)")})
 d.quote("stability-EF", "§239", r"$= M (\frac{AB^2 \cdot D}{v \mu} - OG)$",
         reading=(SEF, M * (AB ** 2 * Dw / (V * mu) - OG)),
-        erratum=Erratum("transcription", "medium", r"= M (\frac{AB^2 \cdot D}{\nu V} - OG)",
-                        "About EF the moment is K = AB²D/ν (§238), so the number is ν; the transcription "
-                        "shuffles μ, ν and v throughout §239–243 (compare §241).",
-                        corrected_reading=(SEF, M * (AB ** 2 * Dw / (nu * V) - OG))),
+        erratum=Erratum("transcription", "low", r"= M (\frac{AB^2 \cdot D}{\nu V} - OG)",
+                        "About EF the moment is K = AB²D/ν (§238), so the number is ν; the μ may be the scan's "
+                        "or Euler's (he swaps the two letters in §241).",
+                        corrected_reading=(SEF, M * (AB ** 2 * Dw / (nu * V) - OG)),
+                        objection="μ about EF may be the print's: §237 gave both moments with the one letter μ, and "
+                                  "Euler's own pen mixes μ and ν in §241 (five places), so the letter here may be "
+                                  "his slip rather than the scan's.",
+                        answer="The correction stands: §238, the sentence before, names the number of the moment "
+                               "about EF ν ('diversas autem litteras μ et v assumpsimus'). But the scan renders ν as"
+                               " v in §238 and Euler swaps the two letters in §241, so whether the print has μ here "
+                               "or the scan made it cannot be told: lowered to low."),
         note=claim("the stability about EF is M(AB²D/(νV) − OG)."))
 d.quote("stability-G-below", "§239", r"$- OG$ scribi deberet $+ OG$",
         reading=(SABp, M * (EF ** 2 * Dw / (mu * V) + OG)),
@@ -752,10 +923,18 @@ d.quote("stability-G-below", "§239", r"$- OG$ scribi deberet $+ OG$",
                      "so changed")
 d.quote("stability-AB-241", "§241", r"$= M \left(\frac{EF^2.D}{\nu v} - OG \right)$",
         reading=(SAB, M * (EF ** 2 * Dw / (nu * V) - OG)),
-        erratum=Erratum("transcription", "low", r"= M \left(\frac{EF^2.D}{\mu V} - OG \right)",
+        erratum=Erratum("misprint", "medium", r"= M \left(\frac{EF^2.D}{\mu V} - OG \right)",
                         "The number of the moment about AB is μ (§238, §239); §241 has ν for it and μ for the "
-                        "latitudinal one consistently, so the swap may be the print's; low.",
-                        corrected_reading=(SAB, M * (EF ** 2 * Dw / (mu * V) - OG))),
+                        "latitudinal one consistently, in all five places of the paragraph: Euler's swap.",
+                        corrected_reading=(SAB, M * (EF ** 2 * Dw / (mu * V) - OG)),
+                        objection="Euler may mean ν here: from §241 on he writes ν for the number of the moment "
+                                  "about AB in every place (five in §241), a relettering of his own, not a fault; "
+                                  "and he says the two numbers hardly differ.",
+                        answer="§238 defines I = EF²D/μ and K = AB²D/ν and keeps the letters apart on purpose ('quia"
+                               " non semper aequales valores habent'); §239 uses them so. §241 swaps them "
+                               "consistently in five places (this stability, the two conditions and both sides of "
+                               "the ratio of sixteen), the author's slip and not a glyph the scan confuses: "
+                               "misprint, medium (was booked as the scan's at low)."),
         note=claim("the stability about AB is M(EF²D/(μV) − OG)."))
 d.quote("EF-exceeds-AB", "§241", r"$\frac{EF^2.D}{\nu v} > OG$ multo magis erit $\frac{AB^2.D'}{\mu v} > OG$",
         reading=(sp.Subs(AB ** 2 * Dw / (mu * V) - EF ** 2 * Dw / (nu * V), nu, mu), Dw * (AB ** 2 - EF ** 2) / (mu * V)),
@@ -769,20 +948,30 @@ d.quote("deeper-G-more-stable", "§239",
 NU_FOR_MU = "euler-229-243/stability-AB-241"
 d.quote("EF-condition-241", "§241", r"cum enim fuerit $\frac{EF^2.D}{\nu v} > OG$",
         reading=(SAB / M + OG, EF ** 2 * Dw / (nu * V)),
-        erratum=Erratum("transcription", "low", r"\frac{EF^2.D}{\mu V} > OG",
+        erratum=Erratum("misprint", "medium", r"\frac{EF^2.D}{\mu V} > OG",
                         "The stability about AB is positive when EF²D/(μV) exceeds OG (§239); §241 writes ν for "
                         "the number of the longitudinal moment here, the swap of μ and ν booked at its first "
-                        "place ('stability-AB-241', low: consistent through §241, so perhaps the print's).",
-                        corrected_reading=(SAB / M + OG, EF ** 2 * Dw / (mu * V)), same_as=NU_FOR_MU),
+                        "place ('stability-AB-241': consistent through §241, Euler's).",
+                        corrected_reading=(SAB / M + OG, EF ** 2 * Dw / (mu * V)), same_as=NU_FOR_MU,
+                        objection="As at 'stability-AB-241': ν may be Euler's relettering in §241.",
+                        answer="The condition is the one for the stability about AB just written, whose number §238 "
+                               "calls μ; the same swap as at 'stability-AB-241', running through §241, is Euler's: "
+                               "misprint, medium."),
         note=claim("the condition for stability about AB is EF²D/(μV) > OG."))
 d.quote("AB-condition-241", "§241", r"multo magis erit $\frac{AB^2.D'}{\mu v} > OG$",
         reading=(SEF / M + OG, AB ** 2 * Dprime / (mu * V)),
-        erratum=Erratum("transcription", "low", r"\frac{AB^2.D}{\nu V} > OG",
+        erratum=Erratum("misprint", "medium", r"\frac{AB^2.D}{\nu V} > OG",
                         "About EF the number is ν (§238: K = AB²D/ν); §241 writes μ, the swap of μ and ν booked "
                         "at 'stability-AB-241'. The prime of D' is the scan's: D (half the waterplane area) "
                         "carries none anywhere else, and the same fraction is printed with D in the next "
                         "sentence.",
-                        corrected_reading=(SEF / M + OG, AB ** 2 * Dw / (nu * V)), same_as=NU_FOR_MU),
+                        corrected_reading=(SEF / M + OG, AB ** 2 * Dw / (nu * V)), same_as=NU_FOR_MU,
+                        objection="As at 'stability-AB-241': μ may be Euler's relettering; and D' may be a mark of "
+                                  "the print (a second area).",
+                        answer="The number of the moment about EF is ν (§238), and §241 swaps the two letters in all"
+                               " five places: Euler's slip, misprint, medium. The prime is a second, smaller fault "
+                               "booked with it, the scan's: D carries no prime anywhere else and the same fraction "
+                               "stands with D in the next sentence."),
         note=claim("the condition for stability about EF is AB²D/(νV) > OG."))
 d.quote("ratio-16", "§241", r"$\frac{AB^2.D}{\mu v}$ circiter decies et sexies maius fit quam $\frac{EF^2.D}{\nu v}$",
         reading=(sp.Subs((AB ** 2 * Dw / (mu * V)) / (EF ** 2 * Dw / (nu * V)), (AB, nu), (4 * EF, mu)), 16),
@@ -803,15 +992,29 @@ d.quote("V-prism", "§243", r"$V < \frac{2}{3}D.CD$", reading=(Vpr, sp.Rational(
                         "The prism of base 2D and height CD has the volume 2D·CD, three times the pyramid; the "
                         "print repeats the pyramid's 2/3, and V ≈ D·CD of the next sentence lies between the "
                         "bounds only with 2D·CD. A copied fraction of the transcription or of the composing "
-                        "stick: low.", corrected_reading=(Vpr, 2 * Dw * CD)),
+                        "stick: low.", corrected_reading=(Vpr, 2 * Dw * CD),
+                        objection="The repeated 2/3 may be the print's: a compositor's eye skipping to the line "
+                                  "above, or Euler's own slip, since nothing later is computed from this bound.",
+                        answer="The prism on the base 2D with the height CD has 2D·CD, and V = D·CD of the next "
+                               "sentence lies between the bounds only then; the correction is certain. A fraction "
+                               "copied from the line above is as likely the compositor's as the transcription's, so "
+                               "the kind cannot be told: low stands."),
         note=claim("V is less than the prism of the same base and height."))
 d.quote("V-wedge", "§243", r"accipi posse $V = D.CD$", reading=(Vwe, Dw * CD),
         note=claim("the solid of straight lines from the waterplane's rim normal to the keel has V = D·CD."))
 d.quote("stability-CD", "§243", r"prodit $= M(\frac{EF^2}{vCD} - OG)$",
         reading=(M * (Iw / Vwe - OG), M * (EF ** 2 / (V * CD) - OG)),
-        erratum=Erratum("transcription", "medium", r"= M(\frac{EF^2}{\mu CD} - OG)",
+        erratum=Erratum("transcription", "low", r"= M(\frac{EF^2}{\mu CD} - OG)",
                         "With V = D·CD, EF²D/(μV) = EF²/(μ·CD): the v left in the denominator is μ (V is gone).",
-                        corrected_reading=(M * (Iw / Vwe - OG), M * (EF ** 2 / (mu * CD) - OG))),
+                        corrected_reading=(M * (Iw / Vwe - OG), M * (EF ** 2 / (mu * CD) - OG)),
+                        objection="The v may be a ν the scan renders as v (as it does in §238, 'μ et v numeros'): "
+                                  "the print would then have EF²/(ν·CD), Euler's own letter of §241 for the number "
+                                  "of the moment about AB, so the fault is his swap booked at 'stability-AB-241' and"
+                                  " not the scan's.",
+                        answer="The correction stands: with V = D·CD the stability about AB is M(EF²/(μ·CD) − OG), "
+                               "and v as the volume would leave V and CD both in the denominator. But the v is as "
+                               "well a ν carried on from §241 as a μ garbled by the scan, so which fault it is "
+                               "cannot be told: lowered to low."),
         note=claim("with V = D·CD the stability about AB is M(EF²/(μ·CD) − OG)."))
 
 
@@ -826,7 +1029,13 @@ d.quote("waterplane-area", "§238", r"Denique sit area sectionis aquae $= z D$",
                         "for the rectangle of §213 the area 4ab is 2·D, and with the area z·D, I = EF²D/6 would "
                         "give (8/(3z))ab³ instead of (4/3)ab³ (read with the rectangle). No z is defined in the "
                         "text: the digit 2 read as the letter z; high.",
-                        corrected_reading=(sp.Matrix([rect_whole, Ir]), sp.Matrix([2 * Dr, (2 * b) ** 2 * Dr / 6]))),
+                        corrected_reading=(sp.Matrix([rect_whole, Ir]), sp.Matrix([2 * Dr, (2 * b) ** 2 * Dr / 6])),
+                        objection="z may be a number of Euler's own, the area being z times D for a z left open, and"
+                                  " I = EF²D/μ a second definition independent of it.",
+                        answer="No z is defined or used anywhere in the text; §212 names the area 2D 'quam "
+                               "designationem semper ad aream cuiusvis sectionis aquae designandam adhibebimus' and "
+                               "§237 calls D half the area, and with the area zD the rectangle's μ = 6 of §237 would"
+                               " not hold. The digit 2 read as z, a glyph the scan confuses: high."),
         note=claim("the waterplane has the area 2D (D half of it), I = EF²D/μ and K = AB²D/ν; read with the "
                    "rectangle of §213, for which μ = 6."))
 d.quote("waterplane-area-grows", "§239", r"tum enim non solum area eius $z D$ eo fiet maior",
@@ -835,7 +1044,10 @@ d.quote("waterplane-area-grows", "§239", r"tum enim non solum area eius $z D$ e
                         "The area of the waterplane is 2D (§212, §237, and the sentence of §238 with the same "
                         "'z D', booked at 'waterplane-area'): the digit 2 read as z. The claim itself holds: at "
                         "fixed M and V a larger waterplane raises EF²D/(μV) through D and through EF.",
-                        corrected_reading=(rect_whole, 2 * Dr), same_as="euler-229-243/waterplane-area"),
+                        corrected_reading=(rect_whole, 2 * Dr), same_as="euler-229-243/waterplane-area",
+                        objection="As at 'waterplane-area': z may be a number of Euler's.",
+                        answer="The same 'z D' for the area 2D (§212, §237), the digit 2 read as z: high, as at "
+                               "'waterplane-area'."),
         note=claim("the waterplane's area 2D grows with the waterplane (read with the rectangle of §213)."))
 MU_AS_V = "euler-229-243/stability-CD"
 for excess_name, locator, excess_excerpt in (
@@ -844,13 +1056,21 @@ for excess_name, locator, excess_excerpt in (
         ("excess-estimate", "§243", r"haec quantitas $\frac{EF^2.D}{vv}$ circiter praebeat")):
     d.quote(excess_name, locator, excess_excerpt,
             reading=(SAB / M + OG, EF ** 2 * Dw / (V * V)),
-            erratum=Erratum("transcription", "medium", r"\frac{EF^2.D}{\mu V}",
+            erratum=Erratum("transcription", "low", r"\frac{EF^2.D}{\mu V}",
                             "The quantity whose excess over OG is the stability about AB is EF²D/(μV) (§239: "
                             "M(EF²D/(μV) − OG)). Read with v as the volume V (the module's reading of §239–243), 'vv' makes it "
                             "EF²D/V², not even a length. The v stands for μ, the confusion of μ, ν and v booked "
                             "at §243's EF²/(v·CD) ('stability-CD'); with V = D·CD the quantity becomes "
                             "EF²/(μ·CD) there.",
-                            corrected_reading=(SAB / M + OG, EF ** 2 * Dw / (mu * V)), same_as=MU_AS_V),
+                            corrected_reading=(SAB / M + OG, EF ** 2 * Dw / (mu * V)), same_as=MU_AS_V,
+                            objection="'vv' may be the scan's rendering of 'νv' (it writes ν as v in §238): the "
+                                      "print would then have EF²D/(νV), Euler's letter of §241 for the number of "
+                                      "the moment about AB, and the fault his swap booked at 'stability-AB-241', "
+                                      "not the scan's.",
+                            answer="The correction stands: the quantity whose excess over OG is the stability about "
+                                   "AB is EF²D/(μV), and EF²D/V² is not even a length. But whether the first v is a "
+                                   "ν carried on from §241 or a μ the scan garbled cannot be told: low, as at "
+                                   "'stability-CD'."),
             note=claim("the stability about AB is M times the excess of EF²D/(μV) over OG."))
 d.quote("c-zero-suffices", "§234",
         r"Ponamus esse $c=0$, quia si hoc casu momentum respectu axis EF fuerit cognitum, ex eo idem momentum pro "
