@@ -1,6 +1,7 @@
 """Benchmark: what the commands cost a user, from an empty directory with no cache.
 
     python benchmarks/commands.py [--skip-run] [--skip-test]    (writes a section of docs/performance.md)
+    python benchmarks/commands.py --quick     (--help and the scenes only: their rows of the section, the rest kept)
 
 Each command runs once as a user would run it (``python -m symfloat ...``) in a new empty working
 directory with an empty cache (``SYMFLOAT_CACHE``); ``make run`` is the main job, timed cold (empty
@@ -37,6 +38,7 @@ SCENES = [
      ["scene", "section", "--polygon", "0,0 2,0 2,1 0,1", "--density", "0.3"], 0.5),
     ("phase cube --steps 24", ["phase", "cube", "--steps", "24"], 60.0),
 ]
+QUICK = {"--help", "scene"}           # the rows of --quick: seconds each, where the targets are strictest
 
 
 def timed(argv, cache: Path) -> tuple[float, str]:
@@ -51,6 +53,12 @@ def timed(argv, cache: Path) -> tuple[float, str]:
     if out.returncode not in (0, 1):
         raise RuntimeError(f"symfloat {' '.join(argv)} failed:\n{out.stderr[-2000:]}")
     return seconds, out.stdout
+
+
+def children_cpu() -> float:
+    """CPU seconds (user and system) of every process this one has waited for so far."""
+    used = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return used.ru_utime + used.ru_stime
 
 
 def scene_cost(argv, cache: Path) -> tuple[float, str]:
@@ -76,17 +84,25 @@ def timed_tests() -> tuple[float, float, float]:
     return seconds, cpu, load
 
 
-def rows(skip_run: bool = False, skip_test: bool = False) -> list[tuple]:
-    """``(command, seconds, target)`` per command, and a note where there is more to say."""
+def rows(skip_run: bool = False, skip_test: bool = False, quick: bool = False) -> list[tuple]:
+    """``(command, seconds, target)`` per command, and a note where there is more to say; *quick*: ``--help``
+    and the scenes alone."""
     out = []
+    skip_run, skip_test = skip_run or quick, skip_test or quick
+    load = f"load average {os.getloadavg()[0]:.1f} when the rows were measured"
     with tempfile.TemporaryDirectory() as caches:
         for label, argv, target in SCENES:
+            if quick and argv[0] not in QUICK:
+                continue
             cache = Path(caches) / re.sub(r"\W+", "-", label)
+            cpu = children_cpu()
             if argv[0] == "scene":
                 seconds, ratio = scene_cost(argv, cache)
-                out.append((f"symfloat {label}", seconds, target, ratio))
+                out.append((f"symfloat {label}", seconds, target,
+                            f"{ratio}; {children_cpu() - cpu:.2f} CPU-seconds; {load}"))
             else:
-                out.append((f"symfloat {label}", timed(argv, cache)[0], target))
+                seconds = timed(argv, cache)[0]
+                out.append((f"symfloat {label}", seconds, target, f"{children_cpu() - cpu:.2f} CPU-seconds; {load}"))
         if not skip_run:
             cache = Path(caches) / "run"
             out.append(("symfloat run (make run), cold", timed(["run"], cache)[0], 90.0))
@@ -97,6 +113,30 @@ def rows(skip_run: bool = False, skip_test: bool = False) -> list[tuple]:
                     f"{cpu:.0f} CPU-seconds over both workers, so {cpu / 2:.0f} s on two idle cores; "
                     f"load average {load:.1f} when it started"))
     return out
+
+
+def _table(text: str) -> tuple[dict, dict]:
+    """The rows ``(command, seconds, target)`` and the notes of a section as :func:`section` writes it, by
+    command."""
+    rows, notes = {}, {}
+    for line in text.splitlines():
+        row = re.fullmatch(r"\| `(.+)` \| ([0-9.]+) \| ([0-9.]+) \| .* \|", line)
+        note = re.fullmatch(r"`(.+?)`: (.+)\.", line)
+        if row:
+            rows[row[1]] = (row[1], float(row[2]), float(row[3]))
+        elif note:
+            notes[note[1]] = note[2]
+    return rows, notes
+
+
+def kept(measured, old: str) -> list[tuple]:
+    """*measured* and the rows of the section in *old* that it does not measure, the commands of
+    :data:`SCENES` first, in their order."""
+    rows, notes = _table(old.split(BEGIN, 1)[1].split(END, 1)[0]) if BEGIN in old and END in old else ({}, {})
+    rows = {label: (*row, notes[label]) if label in notes else row for label, row in rows.items()}
+    rows.update({m[0]: m for m in measured})
+    first = [f"symfloat {label}" for label, _, _ in SCENES if f"symfloat {label}" in rows]
+    return [rows[label] for label in first] + [row for label, row in rows.items() if label not in first]
 
 
 def section(measured) -> str:
@@ -129,10 +169,13 @@ def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--skip-run", action="store_true", help="leave out the main job (minutes)")
     p.add_argument("--skip-test", action="store_true", help="leave out make test (minutes)")
+    p.add_argument("--quick", action="store_true",
+                   help="only --help and the scenes (seconds): their rows are replaced, the others kept")
     p.add_argument("--output", type=Path, default=ROOT / "docs" / "performance.md")
     args = p.parse_args(argv)
-    measured = rows(args.skip_run, args.skip_test)
-    write(args.output, section(measured))
+    measured = rows(args.skip_run, args.skip_test, args.quick)
+    old = args.output.read_text(encoding="utf-8") if args.output.exists() else ""
+    write(args.output, section(kept(measured, old) if args.quick else measured))
     for label, sec, target, *note in measured:
         print(f"{label}: {sec:.1f} s (target {target:g} s)" + (f"; {note[0]}" if note else ""))
     return 0

@@ -44,22 +44,24 @@ from pathlib import Path
 
 from . import __version__
 from .engine.cache import ReportCache
-from .engine.runner import MAX_WORKERS, Progress, check_environment, verify
 from .errors import (EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, EnvironmentProblem, InputError,
                      SymfloatError)
 from .files import write_atomic, write_if_changed, writable_folder, writable_target
-from .model.erratum import apparatus
 from .project import GOLDEN, in_outputs, in_project, library_folders, outputs_root
 from .registry import provided, select
-from .report.errata import ERRATA_FORMATS, errata_json, errata_markdown
-from .report.record import record_json, verification_table, write_record
-from .report.stamp import stamp_of
 
 EXIT_STATUS = ("Exit status: 0 success; 1 a check failed (verdict, index sum, duality, coverage); "
                "2 bad input or an environment problem (an output whose folder is missing or takes no file: "
                "no folder is made for a file, an output folder may be new in an existing one; "
                "SYMFLOAT_WORKERS not 1 to 64, SYMFLOAT_SLOWDOWN not a number >= 1; a worker process killed, "
                "finished checks kept); 130 interrupted")
+
+
+def verify(*args, **kwargs):
+    """The engine's :func:`~symfloat.engine.runner.verify`, imported when a command checks (``--help`` does
+    not load the engine)."""
+    from .engine.runner import verify as run
+    return run(*args, **kwargs)
 
 
 def _one_line(message: str) -> str:
@@ -120,6 +122,7 @@ def _search_proofs_arg(p):
 
 
 def _reports(args, selector=None, cache=None):
+    from .engine.runner import Progress
     return verify(selector, cache=cache or _cache(args), progress=Progress(quiet=_quiet(args)),
                   search_proofs=args.search_proofs, record_proofs=True)
 
@@ -154,6 +157,7 @@ def _write_plot(draw, subject, path: Path, args) -> None:
 
 
 def _summary_by_source(reports) -> str:
+    from .model.erratum import apparatus
     lines = []
     for source in dict.fromkeys(r.source for r in reports):
         fs = [f for r in reports if r.source == source for f in r.formulas]
@@ -175,6 +179,7 @@ def _verify_args(p):
 
 
 def _verify(args) -> int:
+    from .report.record import record_json, verification_table
     start = time.perf_counter()
     reports = _reports(args, _selector(args.selector))
     print(record_json(reports) if args.format == "json" else
@@ -183,6 +188,7 @@ def _verify(args) -> int:
 
 
 def _errata_args(p):
+    from .report.errata import ERRATA_FORMATS
     _search_proofs_arg(p)
     p.add_argument("selector", nargs="?", help="a source key or derivation-id prefix: print (or --output) "
                                                "the report of that selection")
@@ -193,6 +199,7 @@ def _errata_args(p):
 
 
 def _errata(args) -> int:
+    from .report.errata import ERRATA_FORMATS
     selector = _selector(args.selector)
     out = None
     if args.output is not None:
@@ -237,6 +244,9 @@ def _run_args(p):
 
 
 def _run(args) -> int:
+    from .report.errata import errata_json, errata_markdown
+    from .report.record import write_record
+    from .report.stamp import stamp_of
     docs, notebooks = ((args.output / "docs", args.output / "notebooks") if args.output is not None
                        else (in_outputs("docs"), in_outputs("notebooks")))
     for folder in (docs, notebooks):
@@ -380,6 +390,7 @@ def _atlas(args) -> int:
                                  f"pip install 'symfloat[atlas]'") from None
     from .atlas.command import run_atlas
     from .atlas.grid import check_domain, density_grid, shape_grid
+    from .engine.runner import MAX_WORKERS
 
     ba, ca, densities = shape_grid(args.ba, "--ba"), shape_grid(args.ca, "--ca"), density_grid(args.density)
     check_domain(ba, ca, densities)
@@ -514,7 +525,14 @@ COMMANDS = {
 }
 
 
-def _parser():
+def _command_in(argv) -> str | None:
+    """The subcommand *argv* names (its first word that is not an option), or None."""
+    return next((a for a in argv if not a.startswith("-")), None)
+
+
+def _parser(only=None):
+    """The command line; with *only*, the options of that subcommand alone are built (the others import
+    what their options list, e.g. the errata formats or the scene's domain, which ``--help`` does not need)."""
     common = _Parser(add_help=False)
     common.add_argument("--quiet", action="store_true", help="no progress on stderr (or SYMFLOAT_QUIET=1)")
     common.add_argument("--no-cache", action="store_true", help="re-check every derivation")
@@ -524,7 +542,8 @@ def _parser():
     sub = p.add_subparsers(dest="command", required=True)
     for name, command in COMMANDS.items():
         sp = sub.add_parser(name, parents=[common], help=command.help, epilog=EXIT_STATUS + ".")
-        command.arguments(sp)
+        if only is None or only == name:
+            command.arguments(sp)
     return p
 
 
@@ -554,10 +573,11 @@ class _Interrupts:
 
 def main(argv=None) -> int:
     """Run one subcommand; every anticipated failure is one line on stderr and its exit status."""
-    args = _parser().parse_args(argv)
+    args = _parser(_command_in(sys.argv[1:] if argv is None else argv) or "").parse_args(argv)
     with _Interrupts() as interrupts:
         try:
             library_folders()                 # a further library of texts that is not there: one line, exit 2
+            from .engine.runner import check_environment
             check_environment()               # SYMFLOAT_WORKERS, SYMFLOAT_SLOWDOWN: likewise
             return COMMANDS[args.command].run(args)
         except KeyboardInterrupt:

@@ -89,10 +89,9 @@ def ell(f, quadrant=False):
     return sp.Integral(g, (rho, 0, 1), (th, 0, sp.pi / 2 if quadrant else 2 * sp.pi))
 
 
-def integral_step(name, S, integral, note="", uses=()):
-    """S is defined by an integral over the figure; the step carries it out, and the closed value
-    (checked against the integral by the engine) becomes S's value for the later steps and readings."""
-    value = sp.factor(sp.sympify(integral).doit())
+def integral_step(name, S, integral, value, note="", uses=()):
+    """S is defined by an integral over the figure, stated with its closed value (factored): the engine
+    checks the integral against it, and the value becomes S's for the later steps and readings."""
     return d.step(name, (S, integral, value), "integration", uses=uses, note=note, result=S)
 
 
@@ -186,12 +185,21 @@ d.quote("rotated-coordinates", "§205", r"$u = mx - ny$ et $t = nx + my$",
 
 IT, KT, JT, PT, RT = sp.symbols("I_T K_T J_T P_T R_T")
 integral_step("generic-I", IT, tri(y ** 2),
+              (X1 - X2) * (Y1 - Y2) * (Y1 ** 2 + Y2 ** 2 + Y1 * Y2) / 3,
        note="generic figure (a rectangle off the origin): I = ∫ y^2 w, the moment about the axis AB (y = 0)")
-integral_step("generic-K", KT, tri(x ** 2), note="K = ∫ x^2 w about EF (x = 0)")
-integral_step("generic-J", JT, tri(x * y), note="the product integral ∫ xy w")
+integral_step("generic-K", KT, tri(x ** 2),
+              (X1 - X2) * (Y1 - Y2) * (X1 ** 2 + X2 ** 2 + X1 * X2) / 3, note="K = ∫ x^2 w about EF (x = 0)")
+integral_step("generic-J", JT, tri(x * y),
+              (X1 + X2) * (X1 - X2) * (Y1 + Y2) * (Y1 - Y2) / 4, note="the product integral ∫ xy w")
 integral_step("generic-PQ", PT, tri((m * x - n * y) ** 2),
+              (X1 - X2) * (Y1 - Y2) * (2 * n ** 2 * Y1 ** 2 + 2 * n ** 2 * Y2 ** 2 + 2 * X1 ** 2 * m ** 2
+              + 2 * X2 ** 2 * m ** 2 + 2 * X1 * X2 * m ** 2 + 2 * Y1 * Y2 * n ** 2 - 3 * n * X1 * Y1 * m
+              - 3 * n * X1 * Y2 * m - 3 * n * X2 * Y1 * m - 3 * n * X2 * Y2 * m) / 6,
        note="the moment about PQ: ∫ w u^2 with u = mx - ny from axis-coordinates")
 integral_step("generic-RS", RT, tri((n * x + m * y) ** 2),
+              (X1 - X2) * (Y1 - Y2) * (2 * n ** 2 * X1 ** 2 + 2 * n ** 2 * X2 ** 2 + 2 * Y1 ** 2 * m ** 2
+              + 2 * Y2 ** 2 * m ** 2 + 2 * X1 * X2 * n ** 2 + 2 * Y1 * Y2 * m ** 2 + 3 * n * X1 * Y1 * m
+              + 3 * n * X1 * Y2 * m + 3 * n * X2 * Y1 * m + 3 * n * X2 * Y2 * m) / 6,
        note="the moment about RS ⟂ PQ: ∫ w t^2")
 d.step("generic-PQ-expanded", (PT, m ** 2 * KT + n ** 2 * IT - 2 * m * n * JT), "integration",
        uses=("generic-I", "generic-K", "generic-J", "generic-PQ"))
@@ -222,9 +230,11 @@ d.quote("sum-invariant", "§206", r"erit $= I + K$ ob",
 # ================================================================ §215–216: the quadrilateral (also the symmetric figure of §207)
 Dk, xC, Cc, Ce, Ik, Lk, K, I = sp.symbols("D_q x_C Cc Ce I_q L_q K I")
 IAce, IBce, LAce, LBce = sp.symbols("I_{Ace} I_{Bce} L_{Ace} L_{Bce}")
-integral_step("quad-area", Dk, kite(1) / 2, note="2D is the area (§212)")
+integral_step("quad-area", Dk, kite(1) / 2,
+              b * (a + c) / 2, note="2D is the area (§212)")
 d.step("quad-area-value", (Dk, (a + c) * b / 2), "integration", uses=("quad-area",))
 integral_step("quad-centroid", xC, kite(x) / kite(1),
+              sp.Mul(sp.Rational(1, 3), c + 2 * a, evaluate=False),
        note="abscissa of the centroid C measured from A")
 d.step("quad-centroid-value", (xC, (2 * a + c) / 3), "integration", uses=("quad-centroid",))
 d.step("Cc", Eq(Cc, xC - a), "definition", result=Cc, note="Cc, counted from c towards B")
@@ -259,18 +269,24 @@ d.quote("centroid", "§215", r"$Ce = \frac{ce(Bc^2 - Ac^2)}{3 AB \cdot ce} = \fr
             corrected_reading=(Cc, b * (c ** 2 - a ** 2) / (3 * (a + c) * b), (c - a) / 3)),
         note=claim("the centroid C lies at the distance Cc = (Bc − Ac)/3 from c, towards the longer part."))
 
-integral_step("quad-I", Ik, kite(y ** 2), note="moment about AB")
+integral_step("quad-I", Ik, kite(y ** 2),
+              b ** 3 * (a + c) / 6, note="moment about AB")
 integral_step("Ace-I", IAce, sp.Integral(y ** 2, (y, 0, h1), (x, 0, a)),
+              a * b ** 3 / 12,
        note="triangle Ace (x from 0 to a, y from 0 to PM = bx/a) about AB")
-integral_step("Bce-I", IBce, sp.Integral(y ** 2, (y, 0, h2), (x, a, a + c)))
+integral_step("Bce-I", IBce, sp.Integral(y ** 2, (y, 0, h2), (x, a, a + c)),
+              c * b ** 3 / 12)
 d.step("Ace-I-value", (IAce, sp.Integral(h1 ** 3, (x, 0, a)) / 3, a * b ** 3 / 12), "integration", uses=("Ace-I",))
 d.step("Bce-I-value", (IBce, c * b ** 3 / 12), "integration", uses=("Bce-I",))
 d.step("quad-I-value", (Ik, 2 * IAce + 2 * IBce, (a + c) * b ** 3 / 6), "integration",
        uses=("quad-I", "Ace-I-value", "Bce-I-value"), note="the halves below AB mirror those above")
 integral_step("Ace-L", LAce, sp.Integral((x - a) ** 2, (y, 0, h1), (x, 0, a)),
+              b * a ** 3 / 12,
        note="triangle Ace about ef (x = a)")
-integral_step("Bce-L", LBce, sp.Integral((x - a) ** 2, (y, 0, h2), (x, a, a + c)))
-integral_step("quad-L", Lk, kite((x - a) ** 2), note="moment about ef")
+integral_step("Bce-L", LBce, sp.Integral((x - a) ** 2, (y, 0, h2), (x, a, a + c)),
+              b * c ** 3 / 12)
+integral_step("quad-L", Lk, kite((x - a) ** 2),
+              b * (a + c) * (a ** 2 + c ** 2 - a * c) / 6, note="moment about ef")
 d.step("quad-L-value", (Lk, 2 * LAce + 2 * LBce, (a ** 3 + c ** 3) * b / 6, Dk * (a ** 2 - a * c + c ** 2) / 3),
        "integration", uses=("quad-L", "Ace-L", "Bce-L", "quad-area-value"))
 Ye = sp.Symbol("y_{AE}")
@@ -311,11 +327,15 @@ d.quote("quad-L", "§216", r"$= \frac{a^3 b + c^3 b}{6} = \frac{D(ac + bc + cc)}
 
 # ================================================================ §217: parallel axes (generic figure)
 DT, xCT, LT, KTe, Nn = sp.symbols("D_T x_{CT} L_T K_{ET} Nn")
-integral_step("generic-area", DT, tri(1) / 2)
-integral_step("generic-centroid", xCT, tri(x) / tri(1))
+integral_step("generic-area", DT, tri(1) / 2,
+              (X1 - X2) * (Y1 - Y2) / 2)
+integral_step("generic-centroid", xCT, tri(x) / tri(1),
+              sp.Mul(sp.S.Half, X1 + X2, evaluate=False))
 integral_step("generic-L", LT, tri((x - xe) ** 2),
+              (X1 - X2) * (Y1 - Y2) * (X1 ** 2 + X2 ** 2 + 3 * xe ** 2 + X1 * X2 - 3 * X1 * xe - 3 * X2 * xe) / 3,
        note="moment about a line ef: x = x_e; the distance of a particle is wn = x - x_e")
 integral_step("generic-EF", KTe, tri((x - xCT) ** 2),
+              (X1 - X2) * (Y1 - Y2) * (X1 ** 2 + X2 ** 2 + 3 * xCT ** 2 + X1 * X2 - 3 * xCT * X1 - 3 * xCT * X2) / 3,
        note="moment about the parallel EF through C: wN = x - x_C")
 d.step("axis-distance", Eq(Nn, xe - xCT), "definition", result=Nn, note="wn = wN - Nn")
 d.step("first-moment-vanishes", (tri(x - xCT), 0), "integration", uses=("generic-centroid",))
@@ -336,7 +356,9 @@ d.quote("parallel-axis-rule", "§217", r"$- 2D \cdot Nn^2 = L - 2D \cdot Cc^2$",
                    "moment about the parallel axis ef and Cc their distance (the excerpt continues '= L')."))
 
 # ================================================================ §218: the quadrilateral about EF
-integral_step("quad-K", K, kite((x - xC) ** 2), note="moment about EF through C")
+integral_step("quad-K", K, kite((x - xC) ** 2),
+              b * (a + c) * (c ** 2 + 3 * a ** 2 + 6 * xC ** 2 - 8 * xC * a - 4 * xC * c + 3 * a * c) / 6,
+              note="moment about EF through C")
 d.step("quad-K-parallel", (K, Lk - 2 * Dk * Cc ** 2), "lemma", uses=("parallel-axes", "quad-L", "Cc"),
        note="§217 applied to the quadrilateral")
 d.step("quad-K-value", (K, Dk * (a ** 2 + a * c + c ** 2) / 9), "integration", uses=("quad-K", "quad-area-value"))
@@ -386,8 +408,12 @@ d.step("symmetric-product", (sp.Integral(y, (y, -w ** 2 - 1, w ** 2 + 1)), 0), "
             "so ∫ xy w = 0 for every figure symmetric about AB")
 d.step("quad-product", (kite(Xc * y), 0), "integration", uses=("symmetric-product",))
 integral_step("sym-PQ", PS, kite((m * Xc - n * y) ** 2),
+              b * (a + c) * (n ** 2 * b ** 2 + c ** 2 * m ** 2 + 3 * a ** 2 * m ** 2 + 6 * xC ** 2 * m ** 2
+              - 8 * xC * a * m ** 2 - 4 * xC * c * m ** 2 + 3 * a * c * m ** 2) / 6,
        note="moment of the quadrilateral about PQ through C (u = mX - ny, X = x - x_C)")
-integral_step("sym-RS", RS_, kite((n * Xc + m * y) ** 2))
+integral_step("sym-RS", RS_, kite((n * Xc + m * y) ** 2),
+              b * (a + c) * (n ** 2 * c ** 2 + b ** 2 * m ** 2 + 3 * n ** 2 * a ** 2 + 6 * xC ** 2 * n ** 2
+              - 8 * xC * a * n ** 2 - 4 * xC * c * n ** 2 + 3 * a * c * n ** 2) / 6)
 d.step("sym-PQ-value", (PS, n ** 2 * Ik + m ** 2 * K), "integration",
        uses=("sym-PQ", "quad-product", "quad-I", "quad-K", "generic-PQ-expanded"))
 d.step("sym-PQ-monotone", (PS, Ik + m ** 2 * (K - Ik), K - n ** 2 * (K - Ik)), "algebra", uses=("sym-PQ-value",),
@@ -398,6 +424,7 @@ d.step("sym-PQ-derivative", (sp.Derivative(Ik + m ** 2 * (K - Ik), m), 2 * m * (
 d.step("equal-moments", (sp.Subs(Ik + m ** 2 * (K - Ik), K, Ik), Ik), "algebra",
        note="§210: I = K makes every axis through C equal")
 integral_step("sym-45", P45, kite(((Xc - y) / sp.sqrt(2)) ** 2),
+              b * (a + c) * (b ** 2 + c ** 2 + 3 * a ** 2 + 6 * xC ** 2 - 8 * xC * a - 4 * xC * c + 3 * a * c) / 12,
        note="PQ at 45 degrees: m = n = 1/sqrt(2)")
 d.step("sym-45-value", (P45, (Ik + K) / 2, kite(((Xc + y) / sp.sqrt(2)) ** 2)), "integration",
        uses=("sym-45", "quad-product"), note="the arithmetic mean, equal to the moment about RS")
@@ -466,17 +493,23 @@ d.quote("equal-moments-any-figure", "§210", "Eadem vero proprietas locum habebi
 
 # ================================================================ §212 square
 Dsq, Isq, Ksq, Psq = sp.symbols("D_{sq} I_{sq} K_{sq} P_{sq}")
-integral_step("square-area", Dsq, rect(1, a, a) / 2)
-integral_step("square-I", Isq, rect(y ** 2, a, a))
-integral_step("square-K", Ksq, rect(x ** 2, a, a))
-integral_step("square-PQ", Psq, rect((m * x - n * y) ** 2, a, a))
+integral_step("square-area", Dsq, rect(1, a, a) / 2,
+              2 * a ** 2)
+integral_step("square-I", Isq, rect(y ** 2, a, a),
+              4 * a ** 4 / 3)
+integral_step("square-K", Ksq, rect(x ** 2, a, a),
+              4 * a ** 4 / 3)
+integral_step("square-PQ", Psq, rect((m * x - n * y) ** 2, a, a),
+              4 * a ** 4 * (n ** 2 + m ** 2) / 3)
 d.step("square-I-value", (Isq, 4 * sp.Integral(sp.Integral(y ** 2, (y, 0, a)), (x, 0, a)), 4 * a ** 4 / 3),
        "integration", uses=("square-I",), note="four equal quadrants, each (1/3)∫y^3 dx with y = a (§211)")
 d.step("square-equal", (Psq, Ksq, Isq), "integration", uses=("square-PQ", "square-K", "square-I", "cosine"),
        note="§210/§212: the square has the same moment about every axis through C")
 Iqs, Kqs = sp.symbols("I_{sqq} K_{sqq}")
-integral_step("square-quadrant-I", Iqs, sp.Integral(y ** 2, (y, 0, a), (x, 0, a)), note="the quadrant ACE about AB")
-integral_step("square-quadrant-K", Kqs, sp.Integral(x ** 2, (y, 0, a), (x, 0, a)), note="the quadrant ACE about EF")
+integral_step("square-quadrant-I", Iqs, sp.Integral(y ** 2, (y, 0, a), (x, 0, a)),
+              a ** 4 / 3, note="the quadrant ACE about AB")
+integral_step("square-quadrant-K", Kqs, sp.Integral(x ** 2, (y, 0, a), (x, 0, a)),
+              a ** 4 / 3, note="the quadrant ACE about EF")
 d.quote("square-cubes", "§212", r"$\int y^3 dx = a^4$", reading=(sp.Integral(a ** 3, (x, 0, a)), a ** 4),
         note=claim("for the quadrant of the square (y = a, x from 0 to a) ∫y³dx = a⁴."))
 d.quote("square-quadrant-I", "§212", r"$\frac{1}{3} \int y^3 dx = \frac{a^4}{3}$",
@@ -500,9 +533,12 @@ d.quote("square-D", "§212", r"$= \frac{AB^2 \cdot D}{6} =$", reading=(Isq, (2 *
 
 # ================================================================ §213 rectangle
 Dre, Ire, Kre = sp.symbols("D_{re} I_{re} K_{re}")
-integral_step("rect-area", Dre, rect(1, a, b) / 2)
-integral_step("rect-I", Ire, rect(y ** 2, a, b))
-integral_step("rect-K", Kre, rect(x ** 2, a, b))
+integral_step("rect-area", Dre, rect(1, a, b) / 2,
+              2 * a * b)
+integral_step("rect-I", Ire, rect(y ** 2, a, b),
+              4 * a * b ** 3 / 3)
+integral_step("rect-K", Kre, rect(x ** 2, a, b),
+              4 * b * a ** 3 / 3)
 d.step("rect-I-value", (Ire, 4 * sp.Integral(b ** 3, (x, 0, a)) / 3, 4 * a * b ** 3 / 3), "integration",
        uses=("rect-I",))
 d.step("rect-ratio", (Ire / Kre, (2 * b) ** 2 / (2 * a) ** 2), "integration", uses=("rect-I", "rect-K"),
@@ -519,9 +555,12 @@ d.quote("rect-K", "§213", r"latitudinalis $= \frac{AB^2 \cdot D}{6}$", reading=
 
 # ================================================================ §214 rhombus
 Drh, Irh, Krh = sp.symbols("D_{rh} I_{rh} K_{rh}")
-integral_step("rhombus-area", Drh, rhomb(1) / 2)
-integral_step("rhombus-I", Irh, rhomb(y ** 2))
-integral_step("rhombus-K", Krh, rhomb(x ** 2))
+integral_step("rhombus-area", Drh, rhomb(1) / 2,
+              a * b)
+integral_step("rhombus-I", Irh, rhomb(y ** 2),
+              a * b ** 3 / 3)
+integral_step("rhombus-K", Krh, rhomb(x ** 2),
+              b * a ** 3 / 3)
 d.step("rhombus-I-value", (Irh, 4 * sp.Integral((b * s / a) ** 3, (s, 0, a)) / 3, a * b ** 3 / 3), "integration",
        uses=("rhombus-I",), note="four quadrants, AP = s from the vertex A, PM = bs/a")
 d.step("rhombus-quarter-of-rectangle", (Ire / Irh, Kre / Krh, 4), "integration",
@@ -565,12 +604,17 @@ d.quote("rhombus-K", "§214", r"EF erit $= \frac{AB^2 \cdot D}{12}$", reading=(K
 Del, Iel, Kel, Kq, Aq, Yq = sp.symbols("D_{el} I_{el} K_{el} K_{qu} A_{qu} Y_{el}")
 d.step("ellipse-ordinate", Eq(Yq, Yel), "definition", result=Yq, note="PM = y on the ellipse")
 d.step("ellipse-equation", (x ** 2 / a ** 2 + Yq ** 2 / b ** 2, 1), "algebra", uses=("ellipse-ordinate",))
-integral_step("ellipse-area", Del, ell(1) / 2)
+integral_step("ellipse-area", Del, ell(1) / 2,
+              sp.pi * a * b / 2)
 d.step("ellipse-area-value", (Del, sp.pi * a * b / 2), "integration", uses=("ellipse-area",))
-integral_step("ellipse-quadrant-K", Kq, ell(x ** 2, quadrant=True))
-integral_step("ellipse-quadrant-area", Aq, ell(1, quadrant=True))
-integral_step("ellipse-K", Kel, ell(x ** 2))
-integral_step("ellipse-I", Iel, ell(y ** 2))
+integral_step("ellipse-quadrant-K", Kq, ell(x ** 2, quadrant=True),
+              sp.pi * b * a ** 3 / 16)
+integral_step("ellipse-quadrant-area", Aq, ell(1, quadrant=True),
+              sp.pi * a * b / 4)
+integral_step("ellipse-K", Kel, ell(x ** 2),
+              sp.pi * b * a ** 3 / 4)
+integral_step("ellipse-I", Iel, ell(y ** 2),
+              sp.pi * a * b ** 3 / 4)
 d.step("ellipse-K-quadrants", (Kel, 4 * Kq, sp.pi * a ** 3 * b / 4), "integration",
        uses=("ellipse-K", "ellipse-quadrant-K"))
 d.step("ellipse-I-value", (Iel, sp.pi * a * b ** 3 / 4), "integration", uses=("ellipse-I",))

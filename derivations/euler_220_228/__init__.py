@@ -41,7 +41,9 @@ the three auxiliary integrals of §227 shifted against their values and c·c² D
 curve of §227 again in §228, with a for x.
 
 Checking: the integrals with √(b² − y²) are stated once each, closed by the substitution y = b sin θ, and
-the readings are built on them; Y is checked in the general form Y = p|y| + qy² (even, vanishing at 0)
+the readings are built on them; every integral is stated with its closed value and its integrand written as
+a polynomial plus P(y)/√(b² − y²) (the engine integrates it and compares; the step "integrands" checks each
+written integrand against the strip's); Y is checked in the general form Y = p|y| + qy² (even, vanishing at 0)
 and in Euler's case Y = −cy²/b².
 
 Witnesses: every figure is declared by its chords and its areas and moments measured by the figure

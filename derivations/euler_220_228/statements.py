@@ -38,60 +38,34 @@ DERIVATION = d = Derivation(
 R = sp.sqrt(b ** 2 - y ** 2)
 
 
-def _theta_form(f):
-    """The integrand f(y) dy under y = b sin(theta): the powers of b^2 - y^2 become powers of b cos(theta)."""
-    g = sp.expand(f).replace(lambda e: e.is_Pow and e.base == b ** 2 - y ** 2,
-                             lambda e: (b * sp.cos(th)) ** (2 * e.exp))
-    return sp.expand(g.xreplace({y: b * sp.sin(th)}) * b * sp.cos(th))
-
-
-def _closed(f):
-    """∫_0^b f dy carried out in theta, term by term with ∫_0^{π/2} sin^k cos^m = B((k+1)/2, (m+1)/2)/2:
-    the stated closed value, which the engine checks against its own evaluation of the integral in y."""
-    poly = sp.Poly(_theta_form(f), sp.sin(th), sp.cos(th))
-    return sp.factor(sum(coeff * sp.gamma(sp.Rational(k + 1, 2)) * sp.gamma(sp.Rational(m + 1, 2))
-                         / (2 * sp.gamma(sp.Rational(k + m, 2) + 1)) for (k, m), coeff in poly.terms()))
-
-
 def integral_symbol(latex):
     """A symbol that prints as Euler's integral (taken from 0 to b); its value is stated by one step."""
     return sp.Symbol(r"{\int_{0}^{b} " + latex + "}")   # braces: printed after the letters in products
 
 
-def named(name, latex, f, note=""):
+# pairs (a strip's integrand, the same as written for integration): the step "integrands" checks each pair equal
+REWRITTEN = []
+
+
+def integral_step(name, S, f, integrand, value, note="", theta=None):
+    """S := ∫_0^b f dy, stated with its integrand and its closed value (and, with theta, the integrand
+    under y = b sin θ, integrated over 0 <= θ <= π/2, between).  The integrand is f written as a
+    polynomial plus P(y)/√(b² - y²), every odd power of √(b² - y²) a power of (b - y)(b + y) over
+    √(b² - y²): SymPy integrates this form several times faster.  The engine checks the closed value
+    against its own evaluation of the integrals; the step "integrands" checks the integrand against f."""
+    REWRITTEN.append((f, integrand))
+    chain = (S, sp.Integral(integrand, (y, 0, b)))
+    chain += (sp.Integral(theta, (th, 0, sp.pi / 2)),) if theta is not None else ()
+    d.step(name, chain + (value,), "integration", note=note, result=S)
+    return value
+
+
+def named(name, latex, f, integrand, value, note=""):
     """A printed integral ∫_0^b f dy as a quantity of its own (its symbol prints as the integral), stated
     once with its closed value; the readings use the symbol, the witnesses its value."""
     S = sp.Symbol("{" + latex + "}") if latex.startswith(r"\left(") else integral_symbol(latex)
-    integral_step(name, S, f, note=note)
+    integral_step(name, S, f, integrand, value, note=note)
     return S
-
-
-def _over_root(f):
-    """The same integrand as a polynomial plus P(y)/√(b² - y²), every odd power of √(b² - y²) written as
-    a power of (b - y)(b + y) over √(b² - y²): SymPy integrates this form several times faster."""
-    W = b ** 2 - y ** 2
-    poly, over = sp.Integer(0), sp.Integer(0)
-    for t in sp.Add.make_args(sp.expand(f)):
-        pw = [g for g in sp.Mul.make_args(t) if g.is_Pow and g.base == W]
-        e = sum((g.exp for g in pw), sp.Integer(0))
-        rest = t / sp.Mul(*pw)
-        if e.is_integer:
-            poly += rest * W ** e
-        else:
-            over += rest * W ** (e + sp.S.Half)
-    if over == 0:
-        return sp.expand(poly)
-    return sp.expand(poly) + sp.factor(sp.expand(over)).xreplace({W: (b - y) * (b + y)}) / R
-
-
-def integral_step(name, S, f, note="", theta=False):
-    """S := ∫_0^b f dy, stated with its closed value (and, if theta, with the substituted integral
-    y = b sin theta between); the integrand is written as _over_root gives it."""
-    value = _closed(f)
-    chain = (S, sp.Integral(_over_root(f), (y, 0, b)))
-    chain += (sp.Integral(_theta_form(f), (th, 0, sp.pi / 2)),) if theta else ()
-    d.step(name, chain + (value,), "integration", note=note, result=S)
-    return value
 
 
 def claim(text):
@@ -103,12 +77,24 @@ U0, U2, U4, V2, V4 = (integral_symbol(t) for t in (r"dy \sqrt{bb-yy}", r"yy\,dy 
                                                    r"y^4 dy \sqrt{bb-yy}", r"\frac{yy\,dy}{\sqrt{bb-yy}}",
                                                    r"\frac{y^4 dy}{\sqrt{bb-yy}}"))
 D = sp.Symbol("D", positive=True)
-integral_step("U0", U0, R, theta=True, note="∫_0^b √(b²-y²) dy, by y = b sin θ")
-integral_step("U2", U2, y ** 2 * R, theta=True, note="∫_0^b y² √(b²-y²) dy")
-integral_step("U4", U4, y ** 4 * R, theta=True, note="∫_0^b y⁴ √(b²-y²) dy")
-integral_step("V2", V2, y ** 2 / R, theta=True, note="∫_0^b y² dy/√(b²-y²)")
-integral_step("V4", V4, y ** 4 / R, theta=True, note="∫_0^b y⁴ dy/√(b²-y²)")
+integral_step("U0", U0, R,
+              -((y + b) * (y - b) / sp.sqrt(b ** 2 - y ** 2)),
+              sp.pi * b ** 2 / 4, theta=b ** 2 * sp.cos(th) ** 2, note="∫_0^b √(b²-y²) dy, by y = b sin θ")
+integral_step("U2", U2, y ** 2 * R,
+              -(y ** 2 * (y + b) * (y - b) / sp.sqrt(b ** 2 - y ** 2)),
+              sp.pi * b ** 4 / 16, theta=b ** 4 * sp.cos(th) ** 2 * sp.sin(th) ** 2, note="∫_0^b y² √(b²-y²) dy")
+integral_step("U4", U4, y ** 4 * R,
+              -(y ** 4 * (y + b) * (y - b) / sp.sqrt(b ** 2 - y ** 2)),
+              sp.pi * b ** 6 / 32, theta=b ** 6 * sp.cos(th) ** 2 * sp.sin(th) ** 4, note="∫_0^b y⁴ √(b²-y²) dy")
+integral_step("V2", V2, y ** 2 / R,
+              y ** 2 / sp.sqrt(b ** 2 - y ** 2),
+              sp.pi * b ** 2 / 4, theta=b ** 2 * sp.sin(th) ** 2, note="∫_0^b y² dy/√(b²-y²)")
+integral_step("V4", V4, y ** 4 / R,
+              y ** 4 / sp.sqrt(b ** 2 - y ** 2),
+              3 * sp.pi * b ** 4 / 16, theta=b ** 4 * sp.sin(th) ** 4, note="∫_0^b y⁴ dy/√(b²-y²)")
 integral_step("semi-ellipse", D, 2 * a * R / b,
+              -2 * a * (y + b) * (y - b) / (b * sp.sqrt(b ** 2 - y ** 2)),
+              sp.pi * a * b / 2,
               note="D: the area of the half ellipse with semi-axes a (along AB) and b, by chords "
                    "2a√(1 - y²/b²) at the height y; the figures below have the area 2D (§222)")
 
@@ -151,15 +137,27 @@ d.quote("Oc-general", "§221", r"ponamus $Y = -\frac{cyy}{b^2}$, quo fiat interu
 
 # ================================================================ §222: areas
 AAce, ABce, AAEB, Awhole = sp.symbols("A_{Ace} A_{Bce} A_{AEB} A_{AEBF}")
-integral_step("area-Ace", AAce, xc - xL, note="horizontal strips of Ace from the curve to ce")
-integral_step("area-Bce", ABce, xR - xc)
-integral_step("area-AEB", AAEB, xR - xL, note="the strip width 2(a/b)√(b²-y²) does not contain Y")
+integral_step("area-Ace", AAce, xc - xL,
+              p * b + q * b ** 2 - p * y - q * y ** 2 - (a * (y + b) * (y - b) / (b * sp.sqrt(b ** 2 - y ** 2))),
+              b * (3 * sp.pi * a + 6 * p * b + 8 * q * b ** 2) / 12, note="horizontal strips of Ace from the curve to ce")
+integral_step("area-Bce", ABce, xR - xc,
+              p * y + q * y ** 2 - p * b - q * b ** 2 - (a * (y + b) * (y - b) / (b * sp.sqrt(b ** 2 - y ** 2))),
+              -b * (-3 * sp.pi * a + 6 * p * b + 8 * q * b ** 2) / 12)
+integral_step("area-AEB", AAEB, xR - xL,
+              -2 * a * (y + b) * (y - b) / (b * sp.sqrt(b ** 2 - y ** 2)),
+              sp.pi * a * b / 2, note="the strip width 2(a/b)√(b²-y²) does not contain Y")
 d.step("area-whole", Eq(Awhole, 2 * AAEB), "definition", result=Awhole,
        note="AFB is the mirror image of AEB (Y even)")
-Yd1 = named("int-y-dY", r"y\,dY", y * dYg)
+Yd1 = named("int-y-dY", r"y\,dY", y * dYg,
+              p * y + 2 * q * y ** 2,
+              b ** 2 * (3 * p + 4 * q * b) / 6)
 CA = named("int-y-dx-Ace", r"y\,dx_{Ace}", y * sp.diff(xL, y),
+              p * y + 2 * q * y ** 2 + a * y ** 2 / (b * sp.sqrt(b ** 2 - y ** 2)),
+              b * (3 * sp.pi * a + 6 * p * b + 8 * q * b ** 2) / 12,
            note="Euler's ∫y dx along the curve Ace (x = x_L) from A to e")
-CB = named("int-y-dx-Bce", r"y\,dx_{Bce}", y * sp.diff(xR, y), note="the same along Bce, from 0 to b")
+CB = named("int-y-dx-Bce", r"y\,dx_{Bce}", y * sp.diff(xR, y),
+              p * y + 2 * q * y ** 2 - a * y ** 2 / (b * sp.sqrt(b ** 2 - y ** 2)),
+              b * (-3 * sp.pi * a + 6 * p * b + 8 * q * b ** 2) / 12, note="the same along Bce, from 0 to b")
 d.step("by-parts-Ace", (CA, b * xc - sp.Integral(xL, (y, 0, b)), AAce), "integration", uses=("area-Ace",),
        note="∫y dx along the curve is the area of the strips, by parts (x_L(b) = x_c)")
 d.step("by-parts-Bce", (-CB, ABce), "integration", uses=("area-Bce",),
@@ -183,13 +181,27 @@ d.quote("area-ellipse", "§222",
 
 # ================================================================ §223: moment about AB
 IAce, IBce, IAEB, Iwhole = sp.symbols("I_{Ace} I_{Bce} I_{AEB} I_{AEBF}")
-integral_step("AB-Ace", IAce, y ** 2 * (xc - xL), note="∫∫ y² over Ace, horizontal strips")
-integral_step("AB-Bce", IBce, y ** 2 * (xR - xc))
-integral_step("AB-AEB", IAEB, y ** 2 * (xR - xL))
+integral_step("AB-Ace", IAce, y ** 2 * (xc - xL),
+              -p * y ** 3 - q * y ** 4 + p * b * y ** 2 + q * y ** 2 * b ** 2
+              - (a * y ** 2 * (y + b) * (y - b) / (b * sp.sqrt(b ** 2 - y ** 2))),
+              b ** 3 * (15 * sp.pi * a + 20 * p * b + 32 * q * b ** 2) / 240, note="∫∫ y² over Ace, horizontal strips")
+integral_step("AB-Bce", IBce, y ** 2 * (xR - xc),
+              p * y ** 3 + q * y ** 4 - p * b * y ** 2 - q * y ** 2 * b ** 2
+              - (a * y ** 2 * (y + b) * (y - b) / (b * sp.sqrt(b ** 2 - y ** 2))),
+              -b ** 3 * (-15 * sp.pi * a + 20 * p * b + 32 * q * b ** 2) / 240)
+integral_step("AB-AEB", IAEB, y ** 2 * (xR - xL),
+              -2 * a * y ** 2 * (y + b) * (y - b) / (b * sp.sqrt(b ** 2 - y ** 2)),
+              sp.pi * a * b ** 3 / 8)
 d.step("AB-whole", Eq(Iwhole, 2 * IAEB), "definition", result=Iwhole, note="AFB mirrors AEB")
-Yd3 = named("int-y3-dY", r"y^3\,dY", y ** 3 * dYg)
-CIA = named("int-y3-dx-Ace", r"y^3\,dx_{Ace}", y ** 3 * sp.diff(xL, y))
-CIB = named("int-y3-dx-Bce", r"y^3\,dx_{Bce}", y ** 3 * sp.diff(xR, y))
+Yd3 = named("int-y3-dY", r"y^3\,dY", y ** 3 * dYg,
+              p * y ** 3 + 2 * q * y ** 4,
+              b ** 4 * (5 * p + 8 * q * b) / 20)
+CIA = named("int-y3-dx-Ace", r"y^3\,dx_{Ace}", y ** 3 * sp.diff(xL, y),
+              p * y ** 3 + 2 * q * y ** 4 + a * y ** 4 / (b * sp.sqrt(b ** 2 - y ** 2)),
+              b ** 3 * (15 * sp.pi * a + 20 * p * b + 32 * q * b ** 2) / 80)
+CIB = named("int-y3-dx-Bce", r"y^3\,dx_{Bce}", y ** 3 * sp.diff(xR, y),
+              p * y ** 3 + 2 * q * y ** 4 - a * y ** 4 / (b * sp.sqrt(b ** 2 - y ** 2)),
+              b ** 3 * (-15 * sp.pi * a + 20 * p * b + 32 * q * b ** 2) / 80)
 d.step("AB-by-parts", (CIA / 3, IAce), "integration", uses=("AB-Ace",),
        note="(1/3)∫y³dx along the curve (vertical strips of height y) is the strip integral")
 d.step("AB-by-parts-Bce", (-CIB / 3, IBce), "integration", uses=("AB-Bce",))
@@ -246,23 +258,84 @@ d.quote("AB-whole", "§223", r"$= \frac{Dbb}{2} = \frac{ef^2 D}{8}$",
 
 # ================================================================ §224: moment about aAa (x = 0)
 KAce, KBce, KAEB, Kwhole = sp.symbols("K_{Ace} K_{Bce} K_{AEB} K_{AEBF}")
-integral_step("Aa-Ace", KAce, (xc ** 3 - xL ** 3) / 3, note="∫∫ x² over Ace, horizontal strips")
-integral_step("Aa-Bce", KBce, (xR ** 3 - xc ** 3) / 3)
-integral_step("Aa-AEB", KAEB, (xR ** 3 - xL ** 3) / 3)
+integral_step("Aa-Ace", KAce, (xc ** 3 - xL ** 3) / 3,
+              -a ** 3 - p ** 3 * y ** 3 / 3 - q ** 3 * y ** 6 / 3 + p ** 3 * b ** 3 / 3 + q ** 3 * b ** 6 / 3
+              + p * b * a ** 2 + p * q ** 2 * b ** 5 + q * p ** 2 * b ** 4 + q * a ** 2 * b ** 2
+              + a * p ** 2 * b ** 2 + a * q ** 2 * b ** 4 + y ** 2 * a ** 3 / b ** 2 - p * q ** 2 * y ** 5
+              - q * p ** 2 * y ** 4 - a * p ** 2 * y ** 2 - a * q ** 2 * y ** 4 - 2 * p * y * a ** 2
+              - 2 * q * y ** 2 * a ** 2 + p * y ** 3 * a ** 2 / b ** 2 + q * y ** 4 * a ** 2 / b ** 2
+              - 2 * p * q * a * y ** 3 + 2 * p * q * a * b ** 3
+              - a * (y + b) * (y - b) * (-y ** 2 * a ** 2 + 4 * a ** 2 * b ** 2 + 3 * p ** 2 * y ** 2 * b ** 2
+              + 3 * q ** 2 * y ** 4 * b ** 2 + 6 * p * q * y ** 3 * b ** 2 + 6 * p * y * a * b ** 2
+              + 6 * q * a * y ** 2 * b ** 2) / (3 * b ** 3 * sp.sqrt(b ** 2 - y ** 2)),
+              b * (-2240 * a ** 3 + 840 * p ** 3 * b ** 3 + 960 * q ** 3 * b ** 6 + 1050 * sp.pi * a ** 3
+              + 1792 * q * a ** 2 * b ** 2 + 2240 * a * p ** 2 * b ** 2 + 2688 * q * p ** 2 * b ** 4
+              + 2688 * a * q ** 2 * b ** 4 + 2800 * p * q ** 2 * b ** 5 + 3080 * p * b * a ** 2
+              + 105 * sp.pi * a * q ** 2 * b ** 4 + 210 * sp.pi * a * p ** 2 * b ** 2
+              + 420 * sp.pi * q * a ** 2 * b ** 2 + 5936 * p * q * a * b ** 3) / 3360, note="∫∫ x² over Ace, horizontal strips")
+integral_step("Aa-Bce", KBce, (xR ** 3 - xc ** 3) / 3,
+              a ** 3 - p ** 3 * b ** 3 / 3 - q ** 3 * b ** 6 / 3 + p ** 3 * y ** 3 / 3 + q ** 3 * y ** 6 / 3
+              + p * q ** 2 * y ** 5 + q * p ** 2 * y ** 4 + a * p ** 2 * y ** 2 + a * q ** 2 * y ** 4
+              - p * b * a ** 2 - p * q ** 2 * b ** 5 - q * p ** 2 * b ** 4 - q * a ** 2 * b ** 2
+              - a * p ** 2 * b ** 2 - a * q ** 2 * b ** 4 - y ** 2 * a ** 3 / b ** 2 + 2 * p * y * a ** 2
+              + 2 * q * y ** 2 * a ** 2 - p * y ** 3 * a ** 2 / b ** 2 - q * y ** 4 * a ** 2 / b ** 2
+              - 2 * p * q * a * b ** 3 + 2 * p * q * a * y ** 3
+              - a * (y + b) * (y - b) * (-y ** 2 * a ** 2 + 4 * a ** 2 * b ** 2 + 3 * p ** 2 * y ** 2 * b ** 2
+              + 3 * q ** 2 * y ** 4 * b ** 2 + 6 * p * q * y ** 3 * b ** 2 + 6 * p * y * a * b ** 2
+              + 6 * q * a * y ** 2 * b ** 2) / (3 * b ** 3 * sp.sqrt(b ** 2 - y ** 2)),
+              -b * (-2240 * a ** 3 - 1050 * sp.pi * a ** 3 + 840 * p ** 3 * b ** 3 + 960 * q ** 3 * b ** 6
+              - 1400 * p * b * a ** 2 + 1792 * q * a ** 2 * b ** 2 + 2240 * a * p ** 2 * b ** 2
+              + 2688 * q * p ** 2 * b ** 4 + 2688 * a * q ** 2 * b ** 4 + 2800 * p * q ** 2 * b ** 5
+              - 420 * sp.pi * q * a ** 2 * b ** 2 - 210 * sp.pi * a * p ** 2 * b ** 2
+              - 105 * sp.pi * a * q ** 2 * b ** 4 + 4144 * p * q * a * b ** 3) / 3360)
+integral_step("Aa-AEB", KAEB, (xR ** 3 - xL ** 3) / 3,
+              -2 * a * (y + b) * (y - b) * (-y ** 2 * a ** 2 + 4 * a ** 2 * b ** 2 + 3 * p ** 2 * y ** 2 * b ** 2
+              + 3 * q ** 2 * y ** 4 * b ** 2 + 6 * p * q * y ** 3 * b ** 2 + 6 * p * y * a * b ** 2
+              + 6 * q * a * y ** 2 * b ** 2) / (3 * b ** 3 * sp.sqrt(b ** 2 - y ** 2)),
+              a * b * (150 * sp.pi * a ** 2 + 15 * sp.pi * q ** 2 * b ** 4 + 30 * sp.pi * p ** 2 * b ** 2
+              + 128 * p * q * b ** 3 + 320 * p * a * b + 60 * sp.pi * q * a * b ** 2) / 240)
 d.step("Aa-whole", Eq(Kwhole, 2 * KAEB), "definition", result=Kwhole, note="AFB mirrors AEB")
 T2, T4 = integral_symbol(r"y\,dY (a+Y) \sqrt{bb-yy}"), integral_symbol(r"\frac{yy\,dy (a+Y)^2}{\sqrt{bb-yy}}")
-integral_step("T2", T2, y * (a + Yg) * R * dYg, note="Euler's ∫y dY (a+Y)√(bb-yy), from 0 to b")
-integral_step("T4", T4, y ** 2 * (a + Yg) ** 2 / R, note="∫yy dy (a+Y)²/√(bb-yy)")
-d.step("Aa-Ace-by-parts", (sp.Integral(_over_root(y * xL ** 2 * sp.diff(xL, y)), (y, 0, b)), KAce), "integration",
+integral_step("T2", T2, y * (a + Yg) * R * dYg,
+              -(y * (p + 2 * q * y) * (y + b) * (y - b) * (a + p * y + q * y ** 2) / sp.sqrt(b ** 2 - y ** 2)),
+              b ** 3 * (80 * p * a + 15 * sp.pi * b * p ** 2 + 15 * sp.pi * q ** 2 * b ** 3 + 96 * p * q * b ** 2
+              + 30 * sp.pi * q * a * b) / 240, note="Euler's ∫y dY (a+Y)√(bb-yy), from 0 to b")
+integral_step("T4", T4, y ** 2 * (a + Yg) ** 2 / R,
+              y ** 2 * (a + p * y + q * y ** 2) ** 2 / sp.sqrt(b ** 2 - y ** 2),
+              b ** 2 * (120 * sp.pi * a ** 2 + 75 * sp.pi * q ** 2 * b ** 4 + 90 * sp.pi * p ** 2 * b ** 2
+              + 512 * p * q * b ** 3 + 640 * p * a * b + 180 * sp.pi * q * a * b ** 2) / 480, note="∫yy dy (a+Y)²/√(bb-yy)")
+BY_PARTS = (p ** 3 * y ** 3 + 2 * q ** 3 * y ** 6 - 2 * y ** 2 * a ** 3 / b ** 2 + 2 * p * y * a ** 2
+            + 2 * a * p ** 2 * y ** 2 + 4 * q * p ** 2 * y ** 4 + 4 * q * y ** 2 * a ** 2 + 4 * a * q ** 2 * y ** 4
+            + 5 * p * q ** 2 * y ** 5 - 4 * q * y ** 4 * a ** 2 / b ** 2 - 3 * p * y ** 3 * a ** 2 / b ** 2
+            + 6 * p * q * a * y ** 3
+            + y * a * (-y ** 3 * a ** 2 - 4 * q ** 2 * y ** 3 * b ** 4 - 2 * p * a * b ** 4 - 2 * y * p ** 2 * b ** 4
+                       + 2 * y * a ** 2 * b ** 2 + 3 * p ** 2 * y ** 3 * b ** 2 + 5 * q ** 2 * y ** 5 * b ** 2
+                       - 6 * p * q * y ** 2 * b ** 4 - 4 * q * y * a * b ** 4 + 4 * p * a * y ** 2 * b ** 2
+                       + 6 * q * a * y ** 3 * b ** 2 + 8 * p * q * y ** 4 * b ** 2) / (b ** 3 * sp.sqrt(b ** 2 - y ** 2)))
+REWRITTEN.append((y * xL ** 2 * sp.diff(xL, y), BY_PARTS))
+d.step("Aa-Ace-by-parts", (sp.Integral(BY_PARTS, (y, 0, b)), KAce), "integration",
        uses=("Aa-Ace",), note="Euler's ∫y x² dx along the curve (vertical strips) is the strip integral")
 X2L = (a + Yg) ** 2 - 2 * a * (a + Yg) / b * R + a * a - a * a * y ** 2 / b ** 2
 d.step("x-squared", (xL ** 2, X2L), "algebra", note="the square of x = a + Y - (a/b)√(bb-yy)")
 
 
-P1 = named("int-P1", r"y (a+Y)^2\,dY", y * (a + Yg) ** 2 * dYg)
-P3 = named("int-P3", r"y (bb-yy)\,dY", y * (b * b - y * y) * dYg)
-P5 = named("int-P5", r"yy (a+Y)\,dy", y * y * (a + Yg))
+P1 = named("int-P1", r"y (a+Y)^2\,dY", y * (a + Yg) ** 2 * dYg,
+              p ** 3 * y ** 3 + 2 * q ** 3 * y ** 6 + p * y * a ** 2 + 2 * q * y ** 2 * a ** 2
+              + 2 * a * p ** 2 * y ** 2 + 4 * q * p ** 2 * y ** 4 + 4 * a * q ** 2 * y ** 4
+              + 5 * p * q ** 2 * y ** 5 + 6 * p * q * a * y ** 3,
+              b ** 2 * (105 * p ** 3 * b ** 2 + 120 * q ** 3 * b ** 5 + 210 * p * a ** 2 + 280 * q * b * a ** 2
+              + 280 * a * b * p ** 2 + 336 * q * p ** 2 * b ** 3 + 336 * a * q ** 2 * b ** 3
+              + 350 * p * q ** 2 * b ** 4 + 630 * p * q * a * b ** 2) / 420)
+P3 = named("int-P3", r"y (bb-yy)\,dY", y * (b * b - y * y) * dYg,
+              -p * y ** 3 - 2 * q * y ** 4 + p * y * b ** 2 + 2 * q * y ** 2 * b ** 2,
+              b ** 4 * (15 * p + 16 * q * b) / 60)
+P5 = named("int-P5", r"yy (a+Y)\,dy", y * y * (a + Yg),
+              p * y ** 3 + q * y ** 4 + a * y ** 2,
+              b ** 3 * (20 * a + 12 * q * b ** 2 + 15 * p * b) / 60)
 E4 = named("int-E4", r"\frac{y^4 (a+Y)^2\,dy}{\sqrt{bb-yy}}", y ** 4 * (a + Yg) ** 2 / R,
+              y ** 4 * (a + p * y + q * y ** 2) ** 2 / sp.sqrt(b ** 2 - y ** 2),
+              b ** 4 * (5040 * sp.pi * a ** 2 + 3675 * sp.pi * q ** 2 * b ** 4 + 4200 * sp.pi * p ** 2 * b ** 2
+              + 24576 * p * q * b ** 3 + 28672 * p * a * b + 8400 * sp.pi * q * a * b ** 2) / 26880,
            note="the fourth integral of §224 as transcribed")
 
 
@@ -326,9 +399,18 @@ d.quote("Aa-Bce-expanded", "§224",
 
 # ================================================================ §225: AEB about aAa
 G2, S2 = integral_symbol(r"y\,d.(a+Y)^2 \sqrt{bb-yy}"), integral_symbol(r"(a+Y)^2 dy \sqrt{bb-yy}")
-E1 = named("int-E1", r"y\,dy (a+Y) \sqrt{bb-yy}", y * (a + Yg) * R, note="the first integral of §225 as transcribed")
-integral_step("G2", G2, y * sp.diff((a + Yg) ** 2 * R, y), note="∫y d.(a+Y)²√(bb-yy), from 0 to b")
-integral_step("S2", S2, (a + Yg) ** 2 * R, note="∫(a+Y)² dy √(bb-yy)")
+E1 = named("int-E1", r"y\,dy (a+Y) \sqrt{bb-yy}", y * (a + Yg) * R,
+              -(y * (y + b) * (y - b) * (a + p * y + q * y ** 2) / sp.sqrt(b ** 2 - y ** 2)),
+              b ** 3 * (80 * a + 32 * q * b ** 2 + 15 * sp.pi * p * b) / 240, note="the first integral of §225 as transcribed")
+integral_step("G2", G2, y * sp.diff((a + Yg) ** 2 * R, y),
+              -(y * (a + p * y + q * y ** 2) * (y * a - 2 * p * b ** 2 + 3 * p * y ** 2 + 5 * q * y ** 3
+              - 4 * q * y * b ** 2) / sp.sqrt(b ** 2 - y ** 2)),
+              -b ** 2 * (120 * sp.pi * a ** 2 + 15 * sp.pi * q ** 2 * b ** 4 + 30 * sp.pi * p ** 2 * b ** 2
+              + 128 * p * q * b ** 3 + 320 * p * a * b + 60 * sp.pi * q * a * b ** 2) / 480, note="∫y d.(a+Y)²√(bb-yy), from 0 to b")
+integral_step("S2", S2, (a + Yg) ** 2 * R,
+              -((a + p * y + q * y ** 2) ** 2 * (y + b) * (y - b) / sp.sqrt(b ** 2 - y ** 2)),
+              b ** 2 * (120 * sp.pi * a ** 2 + 15 * sp.pi * q ** 2 * b ** 4 + 30 * sp.pi * p ** 2 * b ** 2
+              + 128 * p * q * b ** 3 + 320 * p * a * b + 60 * sp.pi * q * a * b ** 2) / 480, note="∫(a+Y)² dy √(bb-yy)")
 F2 = y * (a + Yg) ** 2 * R
 d.step("G2-by-parts", (G2, sp.Subs(F2, y, b) - sp.Subs(F2, y, 0) - S2, -S2), "integration", uses=("G2", "S2"))
 d.quote("Aa-AEB", "§225",
@@ -410,20 +492,46 @@ d.quote("Aa-whole", "§225", r"$= \frac{aaD^3}{2} + \frac{2a}{b} \int (a+Y)^2 dy
 FAEB, AC, KEF = sp.symbols("F_{AEB} AC K_{EF}")
 W1, Z1, G1, S1 = (integral_symbol(t) for t in (r"\frac{y^2 dy (a+Y)}{\sqrt{bb-yy}}", r"y\,dY \sqrt{bb-yy}",
                                                r"y\,d.(a+Y) \sqrt{bb-yy}", r"(a+Y) dy \sqrt{bb-yy}"))
-integral_step("first-moment", FAEB, (xR ** 2 - xL ** 2) / 2, note="∫∫ x over AEB (moment about aAa)")
+integral_step("first-moment", FAEB, (xR ** 2 - xL ** 2) / 2,
+              -2 * a * (y + b) * (y - b) * (a + p * y + q * y ** 2) / (b * sp.sqrt(b ** 2 - y ** 2)),
+              a * b * (12 * sp.pi * a + 16 * p * b + 3 * sp.pi * q * b ** 2) / 24, note="∫∫ x over AEB (moment about aAa)")
 d.step("centroid", Eq(AC, FAEB / AAEB), "definition", result=AC,
        note="the abscissa of the centroid C of AEB, and of the whole figure (AFB mirrors AEB)")
-integral_step("W1", W1, y ** 2 * (a + Yg) / R, note="∫y²dy(a+Y)/√(bb-yy), from 0 to b")
-integral_step("Z1", Z1, y * R * dYg, note="∫y dY √(bb-yy)")
-integral_step("G1", G1, y * sp.diff((a + Yg) * R, y), note="∫y d.(a+Y)√(bb-yy)")
-integral_step("S1", S1, (a + Yg) * R, note="∫(a+Y) dy √(bb-yy)")
-ACv = sp.factor(_closed((xR ** 2 - xL ** 2) / 2) / _closed(xR - xL))
+integral_step("W1", W1, y ** 2 * (a + Yg) / R,
+              y ** 2 * (a + p * y + q * y ** 2) / sp.sqrt(b ** 2 - y ** 2),
+              b ** 2 * (12 * sp.pi * a + 32 * p * b + 9 * sp.pi * q * b ** 2) / 48, note="∫y²dy(a+Y)/√(bb-yy), from 0 to b")
+integral_step("Z1", Z1, y * R * dYg,
+              -(y * (p + 2 * q * y) * (y + b) * (y - b) / sp.sqrt(b ** 2 - y ** 2)),
+              b ** 3 * (8 * p + 3 * sp.pi * q * b) / 24, note="∫y dY √(bb-yy)")
+integral_step("G1", G1, y * sp.diff((a + Yg) * R, y),
+              -(y * (y * a - p * b ** 2 + 2 * p * y ** 2 + 3 * q * y ** 3 - 2 * q * y * b ** 2) / sp.sqrt(b ** 2
+              - y ** 2)),
+              -b ** 2 * (12 * sp.pi * a + 16 * p * b + 3 * sp.pi * q * b ** 2) / 48, note="∫y d.(a+Y)√(bb-yy)")
+integral_step("S1", S1, (a + Yg) * R,
+              -((y + b) * (y - b) * (a + p * y + q * y ** 2) / sp.sqrt(b ** 2 - y ** 2)),
+              b ** 2 * (12 * sp.pi * a + 16 * p * b + 3 * sp.pi * q * b ** 2) / 48, note="∫(a+Y) dy √(bb-yy)")
+# the centroid's abscissa, F_AEB / A_AEB of the closed values (the step AC-value checks it)
+ACv = (12 * sp.pi * a + 16 * p * b + 3 * sp.pi * q * b ** 2) / (12 * sp.pi)
 integral_step("moment-EF", KEF, 2 * ((xR - ACv) ** 3 - (xL - ACv) ** 3) / 3,
+              -a * (y + b) * (y - b) * (256 * p ** 2 * b ** 4 - 48 * sp.pi ** 2 * y ** 2 * a ** 2
+              + 9 * sp.pi ** 2 * q ** 2 * b ** 6 + 48 * sp.pi ** 2 * a ** 2 * b ** 2
+              - 384 * sp.pi * y * p ** 2 * b ** 3 - 72 * sp.pi ** 2 * q ** 2 * y ** 2 * b ** 4
+              + 96 * sp.pi * p * q * b ** 5 + 144 * sp.pi ** 2 * p ** 2 * y ** 2 * b ** 2
+              + 144 * sp.pi ** 2 * q ** 2 * y ** 4 * b ** 2 - 384 * sp.pi * p * q * y ** 2 * b ** 3
+              - 72 * p * q * y * sp.pi ** 2 * b ** 4
+              + 288 * p * q * sp.pi ** 2 * y ** 3 * b ** 2) / (36 * sp.pi ** 2 * b ** 3 * sp.sqrt(b ** 2 - y ** 2)),
+              a * b * (-1280 * p ** 2 * b ** 2 + 180 * sp.pi ** 2 * a ** 2 + 45 * sp.pi ** 2 * q ** 2 * b ** 4
+              + 180 * sp.pi ** 2 * p ** 2 * b ** 2 + 288 * sp.pi * p * q * b ** 3) / (720 * sp.pi),
               note="∫∫ (x - AC)² over the whole figure (twice AEB), about EF through the centroid")
 d.step("AC-value", (AC, ACv), "algebra", uses=("centroid", "first-moment", "area-AEB"))
 XY = named("int-xy-dx", r"\left(\int_{0}^{b} xy\,dx_{Ace} - \int_{0}^{b} xy\,dx_{Bce}\right)", y * (xL * sp.diff(xL, y) - xR * sp.diff(xR, y)),
+              2 * y * a * (y * a - p * b ** 2 + 2 * p * y ** 2 + 3 * q * y ** 3
+              - 2 * q * y * b ** 2) / (b * sp.sqrt(b ** 2 - y ** 2)),
+              a * b * (12 * sp.pi * a + 16 * p * b + 3 * sp.pi * q * b ** 2) / 24,
            note="∫xy dx along Ace from A to e and back along Bce from e to B")
-E0 = named("int-E0", r"y\,dy \sqrt{bb-yy}", y * R, note="the second integral of §226 as transcribed")
+E0 = named("int-E0", r"y\,dy \sqrt{bb-yy}", y * R,
+              -(y * (y + b) * (y - b) / sp.sqrt(b ** 2 - y ** 2)),
+              b ** 3 / 3, note="the second integral of §226 as transcribed")
 d.step("DAC-by-parts", (XY, FAEB), "integration",
        uses=("first-moment",), note="∫xy dx along Ace and back along Bce is the strip integral")
 d.step("parallel-axes", (KEF, Kwhole - 2 * D * AC ** 2), "algebra",
@@ -495,15 +603,31 @@ xLc, xRc = a + Yc - a * R / b, a + Yc + a * R / b
 AEBc, FAEBc, ACc, KEFc = sp.symbols("A_{AEBc} F_{AEBc} AC_c K_{EFc}")
 S2c = integral_symbol(r"\left(a - \tfrac{cyy}{bb}\right)^2 dy \sqrt{bb-yy}")
 S1c = integral_symbol(r"\left(a - \tfrac{cyy}{bb}\right) dy \sqrt{bb-yy}")
-integral_step("S2c", S2c, (a + Yc) ** 2 * R, note="∫(a+Y)²dy√(bb-yy) with Y = -cyy/bb")
-integral_step("S1c", S1c, (a + Yc) * R)
-integral_step("area-c", AEBc, xRc - xLc)
-integral_step("first-moment-c", FAEBc, (xRc ** 2 - xLc ** 2) / 2)
+integral_step("S2c", S2c, (a + Yc) ** 2 * R,
+              -((c * y ** 2 - a * b ** 2) ** 2 * (y + b) * (y - b) / (b ** 4 * sp.sqrt(b ** 2 - y ** 2))),
+              sp.pi * b ** 2 * (c ** 2 + 8 * a ** 2 - 4 * a * c) / 32, note="∫(a+Y)²dy√(bb-yy) with Y = -cyy/bb")
+integral_step("S1c", S1c, (a + Yc) * R,
+              (y + b) * (y - b) * (c * y ** 2 - a * b ** 2) / (b ** 2 * sp.sqrt(b ** 2 - y ** 2)),
+              sp.pi * b ** 2 * (-c + 4 * a) / 16)
+integral_step("area-c", AEBc, xRc - xLc,
+              -2 * a * (y + b) * (y - b) / (b * sp.sqrt(b ** 2 - y ** 2)),
+              sp.pi * a * b / 2)
+integral_step("first-moment-c", FAEBc, (xRc ** 2 - xLc ** 2) / 2,
+              2 * a * (y + b) * (y - b) * (c * y ** 2 - a * b ** 2) / (b ** 3 * sp.sqrt(b ** 2 - y ** 2)),
+              sp.pi * a * b * (-c + 4 * a) / 8)
 d.step("centroid-c", Eq(ACc, FAEBc / AEBc), "definition", result=ACc)
-ACcv = sp.factor(_closed((xRc ** 2 - xLc ** 2) / 2) / _closed(xRc - xLc))
+# the same for Y = -cyy/bb: (4a - c)/4 (the step AC-c-value checks it)
+ACcv = sp.Mul(sp.Rational(1, 4), -c + 4 * a, evaluate=False)
 kefc = integral_step("moment-EF-c", KEFc, 2 * ((xRc - ACcv) ** 3 - (xLc - ACcv) ** 3) / 3,
+              -a * (y + b) * (y - b) * (3 * b ** 4 * c ** 2 + 16 * a ** 2 * b ** 4 + 48 * y ** 4 * c ** 2
+              - 24 * y ** 2 * b ** 2 * c ** 2
+              - 16 * y ** 2 * a ** 2 * b ** 2) / (12 * b ** 5 * sp.sqrt(b ** 2 - y ** 2)),
+              sp.pi * a * b * (c ** 2 + 4 * a ** 2) / 16,
               note="∫∫ (x - AC)² over the whole figure for Y = -cyy/bb")
 d.step("AC-c-value", (ACc, ACcv), "algebra", uses=("centroid-c", "first-moment-c", "area-c"))
+d.step("integrands", (sp.Matrix([f for f, _ in REWRITTEN]), sp.Matrix([w for _, w in REWRITTEN])), "algebra",
+       note="every strip's integrand above, as stated for integration (a polynomial plus P(y)/√(b² - y²)), is the "
+            "integrand it was written from")
 BRANCHES_C = sp.Matrix([xLc, xRc])
 d.quote("Y-c", "§227", r"Ponamus esse $Y = \frac{-cyy}{bb},$",
         reading=(sp.Subs(a - (a + Yc), y, b), c),

@@ -221,11 +221,11 @@ d.quote("every-density", "VI.A", "Gew. zwischen 0 und 1 die aufrechte Lage stabi
 d.quote("sqrt3-below", "VI.A", r"$\frac{a}{b} < 1,7321$",
         reading=(sp.sqrt((12 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.7321")),
         tolerance=PRINTED_DIGITS, note="the same bound sqrt 3, from below")
-q = sp.Symbol("q", positive=True)
-_roots = sorted(sp.solve(Eq(12 * s * (1 - s), (a / b) ** 2), s), key=lambda e: e.subs({a: 1, b: 1}))
+# the two roots of 12 s (1 - s) = (a/b)^2, the smaller first (the step density-factor checks both)
+_roots = ((b / 2 - sp.sqrt(-3 * a ** 2 + 9 * b ** 2) / 6) / b, (b / 2 + sp.sqrt(-3 * a ** 2 + 9 * b ** 2) / 6) / b)
 S_lo, S_hi = sp.symbols("s_-^A s_+^A")
 d.step("density-roots", Eq(S_hi, _roots[1]), "definition",
-       note="the larger root of 12 s (1 - s) = (a/b)^2 (sympy.solve)", result=S_hi)
+       note="the larger root of 12 s (1 - s) = (a/b)^2", result=S_hi)
 d.step("density-roots-lower", Eq(S_lo, _roots[0]), "definition", note="the smaller root", result=S_lo)
 d.step("density-factor", ((a / b) ** 2 - 12 * s * (1 - s), 12 * (s - S_hi) * (s - S_lo)), "algebra",
        uses=("density-roots", "density-roots-lower"),
@@ -238,10 +238,9 @@ d.quote("density-range", "VI.A",
                  sp.Matrix([S_hi, S_lo])))
 
 # ---- Examples 1 and 2 ------------------------------------------------------------------------------
-ex1_ratio = [e for e in sp.solve(Eq((a ** 2 - 12 * b ** 2 * s * (1 - s)).subs({s: sp.Rational(4, 5), a: q * b}), 0), q)
-             if e.is_positive][0]
+ex1_ratio = 4 * sp.sqrt(3) / 5          # sqrt(12 * 0.8 * 0.2): the step example-1-threshold checks it
 d.step("example-1-threshold", (sp.Subs(full(hA), (s, a), (sp.Rational(4, 5), ex1_ratio * b)), 0), "substitution",
-       uses=("metacentric-height",), note="a/b at which h_A = 0 for s = 0.8 (sympy.solve)")
+       uses=("metacentric-height",), note="a/b at which h_A = 0 for s = 0.8")
 d.quote("ex1-root", "Example 1", r"$$\frac{a}{b} > \sqrt{12 \cdot 0,8 \cdot 0,2}$$",
         reading=as_printed(lambda: (sp.sqrt(12 * sp.Rational(8, 10) * sp.Rational(2, 10)), ex1_ratio)))
 d.quote("ex1-value", "Example 1", r"$$\frac{a}{b} > \frac{139}{100}$$",
@@ -292,9 +291,9 @@ d.step("righting-arm", Eq(mA, (cphi * Mx + sphi * (Mz - Vt * b / 2)) / Vt), "def
             "w = (cos phi, sin phi) in the (xi, z) plane; positive = restoring", result=mA)
 d.step("righting-moment", (V1 * mA, sphi * ((1 + tp ** 2 / 2) * T1 - V1 * e1)), "algebra",
        uses=("righting-arm", "tilted-volume", "tilted-moment-xi", "tilted-moment-z"), note="(12)")
-_tan_roots = sp.solve(Eq((1 + tp ** 2 / 2) * (sq3 * a ** 4 / 96) - (sq3 * a ** 2 / 4) * b * s * (b / 2 - b * s / 2), 0), tp)
-d.step("tilted-equilibrium", Eq(tan1, _tan_roots[0]), "definition",
-       note="the positive root tau of the bracket of righting-moment (sympy.solve; tau > 0 was assumed)",
+d.step("tilted-equilibrium", Eq(tan1, sp.sqrt(-2 * a ** 2 - 24 * b ** 2 * s ** 2 + 24 * s * b ** 2) / a), "definition",
+       note="the positive root tau of the bracket of righting-moment (tau > 0 was assumed; the step "
+            "tilted-equilibrium-check puts it back)",
        result=tan1)
 d.step("tilted-equilibrium-check", ((1 + tan1 ** 2 / 2) * T1 - V1 * e1, 0), "algebra",
        uses=("tilted-equilibrium", "righting-moment"))
@@ -388,16 +387,13 @@ d.quote("60-one-base", "(60)",
             corrected_reading=as_printed(lambda: (sp.Min(Ltop_cx, Lbot_cx), Lbot_cx))))
 
 # ---- (61)-(65): limits of omega and of a/b ---------------------------------------------------------
-Qsym = sp.Symbol("Q", positive=True)
 
 
-def boundary(limit, at, name, note):
-    """(a/b)^2 at which the tilted equilibrium t_1 meets a first-region limit (sympy.solve)."""
-    expr = full(tan1 ** 2 - limit ** 2).subs(om, at).subs(a, b * sp.sqrt(Qsym))
-    sol = [e for e in sp.solve(sp.simplify(expr), Qsym)]
-    assert len(sol) == 1, sol
+def boundary(limit, at, name, value, note):
+    """(a/b)^2 at which the tilted equilibrium t_1 meets a first-region limit, stated as *value*; the step
+    <name>-check puts it back into t_1^2 = limit^2."""
     sym = sp.Symbol(name)
-    d.step(name, Eq(sym, sp.factor(sol[0])), "definition", note=note, result=sym)
+    d.step(name, Eq(sym, value), "definition", note=note, result=sym)
     d.step(name + "-check", (full(tan1 ** 2 - limit ** 2).subs(om, at).subs(a, b * sp.sqrt(sym)), 0),
            "substitution", uses=(name,))
     return sym
@@ -405,11 +401,16 @@ def boundary(limit, at, name, note):
 
 L_top_S = b / a * (1 - s) * sq3 / sp.sin(pi / 6 + om)       # Scheeffer's bound for s > 1/2
 L_bot_S = b / a * s * sq3 / sp.sin(pi / 6 + om)             # and for s < 1/2 (omega on the lower base)
-Q60 = boundary(Ltop, pi / 3, "Q60", "(a/b)^2 at which t_1 = top limit at omega = 60 deg (vertex B straight "
-                                     "across the axis): below it the upper base is cut for some axis")
-Q60l = boundary(L_bot_S, pi / 3, "Q60-lower", "the same for s < 1/2 with the lower base")
-Q0 = boundary(Ltop, 0, "Q0", "(a/b)^2 at which t_1 = top limit at omega = 0 (edge BC across the axis)")
-Q0l = boundary(L_bot_S, 0, "Q0-lower", "the same for s < 1/2 with the lower base")
+# the four values, -(3/2)(s - 1)(9s - 1) and so on, kept in the factored form the certificates were made for
+Q60 = boundary(Ltop, pi / 3, "Q60", sp.Mul(-1, sp.Rational(3, 2), s - 1, 9 * s - 1, evaluate=False),
+               "(a/b)^2 at which t_1 = top limit at omega = 60 deg (vertex B straight across the axis): below it "
+               "the upper base is cut for some axis")
+Q60l = boundary(L_bot_S, pi / 3, "Q60-lower", sp.Mul(-1, sp.Rational(3, 2), s, 9 * s - 8, evaluate=False),
+                "the same for s < 1/2 with the lower base")
+Q0 = boundary(Ltop, 0, "Q0", sp.Mul(-1, 6, s - 1, 3 * s - 1, evaluate=False),
+              "(a/b)^2 at which t_1 = top limit at omega = 0 (edge BC across the axis)")
+Q0l = boundary(L_bot_S, 0, "Q0-lower", sp.Mul(-1, 6, s, 3 * s - 2, evaluate=False),
+               "the same for s < 1/2 with the lower base")
 
 d.quote("60-deg-limit", "VI.A",
         "Ist der Grenzwert von  $\\omega = 60^\\circ$ , so kann das Prisma in der schiefen stabilen Gleichgewichtslage "
@@ -567,22 +568,16 @@ d.quote("ex3-angle", "Example 3", r"$$\varphi_1 = 20^\circ 3' 35''$$",
         note="degrees; exact 20 deg 3' 34.50''")
 
 w4, t4 = pi / 12, sp.tan(pi / 6)
-Bsq = sp.Symbol("beta", positive=True)          # (b/a)^2
-top4 = (b * (1 - s) / (a / sq3 * sp.sin(pi / 6 + om))).subs(om, w4)
-sol68 = sp.solve(Eq((top4 ** 2).subs(b, a * sp.sqrt(Bsq)), t4 ** 2), Bsq)
-assert len(sol68) == 1
+beta68 = 1 / (18 * (-1 + s) ** 2)       # (b/a)^2: the step example-4-top-check puts it back
 B68 = sp.Symbol("B_68")
-d.step("example-4-top", Eq(B68, sp.simplify(sol68[0])), "definition",
-       note="(b/a)^2 from: top limit at omega = 15 deg equals tan 30 deg (sympy.solve)", result=B68)
+d.step("example-4-top", Eq(B68, beta68), "definition",
+       note="(b/a)^2 from: top limit at omega = 15 deg equals tan 30 deg", result=B68)
 d.step("example-4-top-check", ((b * (1 - s) / (a / sq3 * sp.sin(pi / 6 + om))).subs(om, w4).subs(b, a * sp.sqrt(B68)) ** 2,
                                t4 ** 2), "substitution", uses=("example-4-top", "dipping-distance-value"))
-eq4 = Eq((24 * Bsq * s * (1 - s) - 2).subs(Bsq, sol68[0]), t4 ** 2)
-s4_roots = [e for e in sp.solve(eq4, s) if 0 < e < 1]
-assert len(s4_roots) == 1
-s4 = s4_roots[0]
-q4 = 1 / sp.sqrt(sol68[0].subs(s, s4))
+s4 = sp.Rational(7, 11)                 # the density of t_1 = tan 30 deg there: the step example-4-density checks it
+q4 = 1 / sp.sqrt(beta68.subs(s, s4))
 d.step("example-4-density", (sp.Subs(full(24 * B68 * s * (1 - s) - 2), s, s4), t4 ** 2), "substitution",
-       uses=("example-4-top", "tilted-equilibrium-54"), note="t_1 = tan 30 deg with (b/a)^2 = B_68 (sympy.solve)")
+       uses=("example-4-top", "tilted-equilibrium-54"), note="t_1 = tan 30 deg with (b/a)^2 = B_68")
 d.quote("67", "(67)",
         r"\operatorname{tg} 30^\circ &= \sqrt{24 \cdot \frac{b^2}{a^2} s (1 - s) - 2} \\ \text{und } "
         r"\operatorname{tg} 30^\circ &= \frac{b}{a} \cdot \frac{(1 - s) \sqrt{3}}{\sin 45^\circ}",
@@ -640,9 +635,9 @@ d.step("cylinder-tilted-moments",
                    sp.Integral(col_c ** 2 / 2 * rho, *disc)]),
         sp.Matrix([T1c * tp, 0, F1c * b ** 2 * s ** 2 / 2 + T1c * tp ** 2 / 2])), "integration",
        note="the same moments as for the triangle: righting-moment holds with T_1^C, V_1^C")
-_tanC = [e for e in sp.solve(Eq((1 + tp ** 2 / 2) * pi * r ** 4 / 4 - pi * r ** 2 * b * s * (b / 2 - b * s / 2), 0), tp)]
-d.step("cylinder-tilted-equilibrium", Eq(tanC, _tanC[0]), "definition",
-       note="positive root of (1 + tau^2/2) T_1 - V_1 e_1 (sympy.solve)", result=tanC)
+d.step("cylinder-tilted-equilibrium", Eq(tanC, sp.sqrt(-2 * r ** 2 - 4 * b ** 2 * s ** 2 + 4 * s * b ** 2) / r),
+       "definition",
+       note="positive root of (1 + tau^2/2) T_1 - V_1 e_1 (the next step puts it back)", result=tanC)
 d.step("cylinder-tilted-equilibrium-check", ((1 + tanC ** 2 / 2) * T1c - V1c * e1, 0), "algebra",
        uses=("cylinder-tilted-equilibrium",))
 d.step("cylinder-limits", (sp.Matrix([b * s + r * LtopC, b * s - r * LbotC]), sp.Matrix([b, 0])), "definition",
@@ -684,9 +679,10 @@ d.quote("cylinder-every-density", "VI.B", "Diese Bedingung ist für jeden Wert v
 d.quote("sqrt2-below", "VI.B", r"$\frac{2r}{b} < 1,4142$",
         reading=(sp.sqrt((8 * s * (1 - s)).subs(s, sp.Rational(1, 2))), sp.Rational("1.4142")),
         tolerance=PRINTED_DIGITS, note="the same bound sqrt 2, from below")
-_rootsC = sorted(sp.solve(Eq(8 * s * (1 - s), K2), s), key=lambda e: e.subs({r: 1, b: 4}))
+# the two roots of 8 s (1 - s) = (2r/b)^2, the smaller first (the step cylinder-density-factor checks both)
+_rootsC = ((b - sp.sqrt(b ** 2 - 2 * r ** 2)) / (2 * b), (b + sp.sqrt(b ** 2 - 2 * r ** 2)) / (2 * b))
 SC_lo, SC_hi = sp.symbols("s_-^C s_+^C")
-d.step("cylinder-density-upper", Eq(SC_hi, _rootsC[1]), "definition", note="sympy.solve", result=SC_hi)
+d.step("cylinder-density-upper", Eq(SC_hi, _rootsC[1]), "definition", note="the larger root", result=SC_hi)
 d.step("cylinder-density-lower", Eq(SC_lo, _rootsC[0]), "definition", result=SC_lo)
 d.step("cylinder-density-factor", (K2 - 8 * s * (1 - s), 8 * (s - SC_hi) * (s - SC_lo)), "algebra",
        uses=("cylinder-density-upper", "cylinder-density-lower"))
@@ -767,10 +763,12 @@ d.quote("73", "(73)",
 
 # Example 7: 2r = b, s < 1/2
 res = d.results()
-hC_e, tanC_e, LbotC_e, LtopC_e = (full(k) for k in (hC, tanC, LbotC, LtopC))
-s_b = sorted(sp.solve(Eq((LbotC_e ** 2 - tanC_e ** 2).subs(sq_), 0), s), key=lambda e: float(e))
+hC_e, tanC_e, LtopC_e = (full(k) for k in (hC, tanC, LtopC))
+s_b = (sp.Rational(2, 5) - sp.sqrt(6) / 10, sp.Rational(2, 5) + sp.sqrt(6) / 10)     # 0.4 -+ sqrt 0.06
 d.step("example-7-bottom", (full(LbotC ** 2 - tanC ** 2).subs(sq_).subs(s, s_b[0]), 0), "substitution",
-       note="the density at which the tilted equilibrium meets the bottom limit, 2r = b (sympy.solve)")
+       note="the density at which the tilted equilibrium meets the bottom limit, 2r = b")
+d.step("example-7-bottom-upper", (full(LbotC ** 2 - tanC ** 2).subs(sq_).subs(s, s_b[1]), 0), "substitution",
+       note="the other root of the same equation (s > 1/2, outside the example)")
 d.quote("ex7-conditions", "Example 7", r"$$8s(1-s) > 1 > 2s(4-5s)$$",
         reading=(sp.Matrix([8 * s * (1 - s) - 1, 1 - 2 * s * (4 - 5 * s)]),
                  sp.Matrix([full(-16 * s / b * hC).subs(sq_), full((LbotC ** 2 - tanC ** 2) * K2 / 2).subs(sq_)])))

@@ -1,0 +1,38 @@
+"""The command line loads what a command needs (issue 28, item 4): ``symfloat --help`` and ``--version`` import
+neither SymPy nor NumPy nor the checking engine (measured by the modules a fresh process holds, not by a clock);
+a subcommand's own help builds its options."""
+import json
+import subprocess
+import sys
+
+HEAVY = ("sympy", "numpy", "mpmath", "symfloat.engine.check", "symfloat.engine.runner", "symfloat.solver",
+         "symfloat.report.errata")
+PROBE = """
+import contextlib, io, json, sys
+from symfloat.cli import main
+with contextlib.redirect_stdout(io.StringIO()) as out:
+    try:
+        main(sys.argv[1:])
+    except SystemExit:
+        pass
+print(json.dumps({"modules": sorted(sys.modules), "out": out.getvalue()}))
+"""
+
+
+def _run(*argv):
+    done = subprocess.run([sys.executable, "-c", PROBE, *argv], capture_output=True, text=True, check=True)
+    return json.loads(done.stdout)
+
+
+def test_help_and_version_load_no_mathematics():
+    for argv in (["--help"], ["--version"]):
+        ran = _run(*argv)
+        assert ran["out"] and not set(HEAVY) & set(ran["modules"]), (argv, set(HEAVY) & set(ran["modules"]))
+    assert "scene" in _run("--help")["out"]          # the commands are still listed
+
+
+def test_a_subcommands_help_lists_its_options():
+    ran = _run("scene", "--help")
+    assert "--density" in ran["out"] and "Supported inputs" in ran["out"]
+    assert "--density" not in _run("errata", "--help")["out"]
+    assert "latex" in _run("errata", "--help")["out"]        # the formats come from the errata writer
