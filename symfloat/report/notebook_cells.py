@@ -1,0 +1,258 @@
+"""The code cells of a derivation notebook: each step and each printed formula in plain SymPy.
+
+A step's cell states its chain of members (:class:`~symfloat.report.notebook_code.Code`), puts in
+the values earlier steps established (``insert``), runs the strategy of the step's proof
+certificate on the difference of each link and asserts that it gives 0, evaluates the members at a
+small rational point inside the assumptions and, for a step that establishes a quantity, records
+its value in ``derived``.  A link the engine confirmed by sampling only is asserted at that point;
+a printed formula the engine refuted is shown at a small point where its members differ, both
+values printed, and its correction is checked like a step.  The notebook runs with SymPy alone:
+a changed member that no longer holds stops it with an ``AssertionError``.
+"""
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from ..engine.identity import Domain
+from ..model.claim import identical_links, members
+from ..model.relation import is_relation
+from .notebook_code import HELPERS, STRATEGY_WORDS, Code, agree, finite, functions_of, point_source, \
+    proof_source, small_point
+
+__all__ = ["CellWriter"]
+
+
+def _expressions(d) -> list:
+    """Every SymPy object the notebook states: members of steps, readings and corrections, conditions of
+    relations."""
+    out = []
+    for s in d.steps:
+        out += list(members(s.claim))
+    for p in d.printed:
+        for reading in (p.reading, p.erratum.corrected_reading if p.erratum is not None else None):
+            if reading is None:
+                continue
+            out += list(reading.parts() if is_relation(reading) else members(reading))
+    return out
+
+
+def _symbols(exprs) -> set:
+    """The symbols of *exprs*, without the direction of a limit (a symbol ``+`` to SymPy)."""
+    found = set()
+    for e in exprs:
+        if isinstance(e, (sp.Basic, sp.MatrixBase)):
+            found |= e.atoms(sp.Symbol) - {lim.args[3] for lim in e.atoms(sp.Limit)}
+    return found
+
+
+class CellWriter:
+    """The SymPy source of the cells of one derivation's notebook, from the derivation *d* and the
+    engine's *report* on it (which link each proof certificate proves, and how).  Steps must be asked
+    for in order: each step's value enters ``derived`` as in the notebook."""
+
+    def __init__(self, d, report):
+        self.d, self.report = d, report
+        exprs = _expressions(d)
+        preferred = {s.result: s.name.replace("-", "_") for s in d.steps
+                     if s.result is not None and not s.result.name.isidentifier()}
+        self.code = Code(_symbols(exprs) | set(d.domain), functions_of(exprs), preferred)
+        self.domain = Domain(d.domain, tuple(d.constraints))
+        self.derived: dict = {}
+        self.calls: set = set()     # the SymPy functions the checks call
+
+    # -- the notebook's helpers, mirrored at build time --------------------------------------------------------------
+    def insert(self, expr):
+        for _ in range(12):
+            new = expr.xreplace(self.derived)
+            if new == expr:
+                break
+            expr = new
+        return expr.doit()
+
+    def setup(self) -> str:
+        """The first code cell: SymPy's names the cells use, every symbol declared, the two helpers."""
+        used = sorted(self.code.used | self.calls | {"Symbol", "symbols", "Function", "MatrixBase", "evaluate",
+                                                     "S", "N", "Rational"})
+        return ("from sympy import " + ", ".join(used) + "\n\n"
+                + "# the symbols of the derivation, with the assumptions it states\n"
+                + self.code.declarations() + "\n\n" + HELPERS)
+
+    # -- one chain ---------------------------------------------------------------------------------------------------
+    def _chain(self, ms, name: str = "chain") -> list[str]:
+        """``chain = [...]`` (or *name*): the members as SymPy; a member that keeps the print's arithmetic is built
+        under ``evaluate(False)`` first."""
+        lines, shown = [], []
+        kept = [(m, *self.code.member(m)) for m in ms]
+        if any(not ok for _, _, ok in kept):
+            lines.append("with evaluate(False):   # the print's arithmetic, kept as printed")
+        n = 0
+        for m, text, ok in kept:
+            if ok:
+                shown.append(text)
+            else:
+                n += 1
+                lines.append(f"    as_printed_{n} = {text}")
+                shown.append(f"as_printed_{n}")
+        lines.append(f"{name} = [\n" + "".join(f"    {t},\n" for t in shown) + "]")
+        return lines
+
+    def _point(self, values, accept_pair=None):
+        """A small point at which every value is finite (and *accept_pair* holds), or ``None``."""
+        free = set()
+        for v in values:
+            free |= v.free_symbols
+        if not free:
+            return {}
+
+        def accept(point):
+            try:
+                vs = [v.xreplace(point).doit() for v in values]
+            except (ArithmeticError, TypeError, ValueError):
+                return False
+            return all(finite(v) for v in vs) and (accept_pair is None or accept_pair(vs))
+        return small_point(free, self.domain, accept)
+
+    def _links(self, ms, key: str, tolerance=None) -> tuple[list[str], list, list[int]]:
+        """Check lines for each link of *ms* not identical as built (a proof certificate's strategy, or the
+        printed precision), the values of the members, and the links that rest on sampling alone."""
+        same = identical_links(ms)
+        values = [self.insert(m) for m in ms]
+        lines = ["values = [insert(e) for e in chain]"]
+        matrix = any(isinstance(v, sp.MatrixBase) for v in values)
+        sampled = []
+        for i, _ in enumerate(zip(ms, ms[1:])):
+            if same[i]:
+                continue
+            a, b = f"values[{i}]", f"values[{i + 1}]"
+            label = "the difference" if len(ms) == 2 else f"member {i + 1} minus member {i + 2}"
+            if tolerance is not None:
+                lines.append(f"gap = abs(N({a} - {b}, 60))")
+                lines.append(f"print({label!r} + ', at 60 digits:', gap.evalf(5), "
+                             f"'(printed precision {tolerance})')")
+                lines.append(f"assert gap <= {self.code.source(sp.sympify(tolerance))}")
+                continue
+            strategy = (self.report.proofs.get(f"{key}#{i}") or {}).get("strategy")
+            if strategy:
+                call = proof_source(strategy, a, b, matrix)
+                self.calls |= {n for n in re.findall(r"([a-z]+)\(", call) if n in self.code.namespace}
+                lines.append(f"proof = {call}")
+                lines.append(f"print({label + ', ' + STRATEGY_WORDS[strategy] + ':'!r}, proof)")
+                lines.append("assert proof.is_zero_matrix" if matrix else "assert proof == 0")
+            else:
+                sampled.append(i)
+        return lines, values, sampled
+
+    def _evaluation(self, values, sampled, lines):
+        """The members at a small point; the links without a proof asserted there."""
+        point = self._point(values, lambda vs: all(agree(vs[i], vs[i + 1]) for i in sampled))
+        if point is None:
+            if sampled:
+                lines.append("# no small point inside the assumptions where every member is finite: "
+                             "these links rest on the engine's sampling alone")
+            return
+        if not point:
+            lines.append("print('the values:', at({}, *values))")
+            return
+        lines.append(f"point = {point_source(self.code, point)}   # inside the assumptions")
+        lines.append("print('at', point, ':', at(point, *values))")
+        for i in sampled:
+            lines.append(f"left, right = at(point, values[{i}], values[{i + 1}])   # no symbolic proof: "
+                         f"equal at the point")
+            lines.append("assert same(left, right)")
+
+    # -- the cells ---------------------------------------------------------------------------------------------------
+    def step(self, s) -> str:
+        """The code of step *s* (the next one in order)."""
+        rep = next(r for r in self.report.steps if r.name == s.name)
+        ms = list(members(s.claim))
+        name = self.code.names.get(s.result) if s.result is not None else None
+        out = []
+        if rep.status in ("definition", "applied"):
+            what = ("a definition: stated, not checked" if rep.status == "definition"
+                    else "a lemma applied: checked where the lemma is derived")
+            if s.result is not None and ms[0] == s.result and len(ms) == 2:
+                text, ok = self.code.member(ms[1])
+                if ok:
+                    out.append(f"derived[{name}] = {text}   # {what}")
+                else:
+                    out += ["with evaluate(False):   # the print's arithmetic, kept as printed",
+                            f"    as_printed_1 = {text}", f"derived[{name}] = as_printed_1   # {what}"]
+            else:
+                out += self._chain(ms) + [f"# {what}"]
+                if s.result is not None:
+                    out.append(f"derived[{name}] = chain[-1]")
+            out.append(f"print({name}, '=', insert(derived[{name}]))" if s.result is not None else "")
+            self._record(s)
+            return "\n".join(line for line in out if line)
+        checked = [m for m in ms if not (s.result is not None and m == s.result)]
+        out += self._chain(checked)
+        links, values, sampled = self._links(checked, f"step {self.d.id}/{s.name}")
+        out += links
+        self._evaluation(values, sampled, out)
+        if s.result is not None:
+            out.append(f"derived[{name}] = chain[-1]   # the value this step establishes for {name}")
+        self._record(s)
+        return "\n".join(out)
+
+    def _record(self, s):
+        if s.result is not None:
+            self.derived[s.result] = members(s.claim)[-1]
+
+    def formula(self, p) -> str | None:
+        """The code of printed formula *p*: its reading, the check of the print, the correction."""
+        f = next(f for f in self.report.formulas if f.id == self.d.formula_id(p))
+        if p.reading is None or f.verdict == "trivial":
+            return None
+        key = f"printed {self.d.id}/{p.name}"
+        if is_relation(p.reading):
+            return self._relation(p.reading, f)
+        out = ["# read as printed"] + self._chain(members(p.reading))
+        if f.verdict == "erratum":
+            out += self._refutation(list(members(p.reading)), p.tolerance)
+            corrected = p.erratum.corrected_reading if p.erratum is not None else None
+            if corrected is not None and not is_relation(corrected):
+                out += ["", "# the correction, checked as a step is"] + self._chain(members(corrected))
+                links, values, sampled = self._links(list(members(corrected)), key + "#corrected", p.tolerance)
+                out += links
+                self._evaluation(values, sampled, out)
+            return "\n".join(out)
+        links, values, sampled = self._links(list(members(p.reading)), key, p.tolerance)
+        out += links
+        if f.verdict == "verified":
+            self._evaluation(values, sampled, out)
+        else:
+            out.append(f"# {f.verdict}: {f.reason}")
+            point = self._point(values)
+            if point:
+                out.append(f"point = {point_source(self.code, point)}")
+                out.append("print('at', point, ':', at(point, *values))")
+        return "\n".join(out)
+
+    def _refutation(self, ms, tolerance) -> list[str]:
+        """A small point where two members of the refuted reading differ, both values shown."""
+        values = [self.insert(m) for m in ms]
+        out = ["values = [insert(e) for e in chain]"]
+        for i in range(len(ms) - 1):
+            if tolerance is not None:
+                gap = abs(sp.N(values[i] - values[i + 1], 60))
+                if gap.is_number and gap > sp.N(tolerance, 60):
+                    return out + [f"print('member {i + 1}:', N(values[{i}], 15), '  member {i + 2}:', "
+                                  f"N(values[{i + 1}], 15))",
+                                  f"assert abs(N(values[{i}] - values[{i + 1}], 60)) > "
+                                  f"{self.code.source(sp.sympify(tolerance))}   # the print is refuted"]
+                continue
+            point = self._point(values[i:i + 2], lambda vs: not agree(vs[0], vs[1]))
+            if point is not None:
+                return out + [f"point = {point_source(self.code, point)}   # inside the assumptions",
+                              f"left, right = at(point, values[{i}], values[{i + 1}])",
+                              f"print('at', point, ': member {i + 1} =', left, ', member {i + 2} =', right)",
+                              "assert not same(left, right)   # the print is refuted"]
+        return out + ["# no small point shows the difference: the engine's counterexample is in the text above"]
+
+    def _relation(self, reading, f) -> str:
+        lines = ["# the conditions the relation states; the engine's relation check decides it (see above)"]
+        lines += self._chain(list(reading.parts()), "conditions")
+        lines.append("print(conditions)")
+        return "\n".join(lines)
