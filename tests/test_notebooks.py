@@ -5,6 +5,8 @@ import copy
 import dataclasses
 import json
 import re
+import subprocess
+import sys
 
 import nbformat
 import pytest
@@ -198,3 +200,18 @@ def test_a_scheeffer_and_an_euler_notebook_run_top_to_bottom(derivation, check, 
     code = [c for c in nb.cells if c.cell_type == "code"]
     assert all("view." not in c.source for c in code)
     assert not [o for c in code for o in c.get("outputs", []) if o.get("output_type") == "error"]
+
+
+def test_nbconvert_writes_html_that_loads_nothing_from_the_network(s1_notebook, tmp_path):
+    # `jupyter nbconvert --to html` in the project's environment (make .venv/.installed installs the template
+    # and the configuration, symfloat.report.notebook_html.install): MathML, no script or style from a CDN
+    path = tmp_path / "s1.ipynb"
+    nbformat.write(s1_notebook, path)
+    done = subprocess.run([sys.executable, "-m", "jupyter", "nbconvert", "--to", "html", str(path)],
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    page = (tmp_path / "s1.html").read_text(encoding="utf-8")
+    assert not re.findall(r"<script[^>]*\bsrc=|<link[^>]*href=\"https?:", page)
+    assert "mathjax" not in page.lower()
+    assert page.count("<math") >= sum(c.source.count("$$") // 2 for c in s1_notebook.cells if c.cell_type == "markdown")
+    assert "<mfrac>" in page and "$$" not in page          # the steps' fractions typeset, no TeX left over

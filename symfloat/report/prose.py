@@ -105,13 +105,28 @@ def _unmatched(run: list) -> int | None:
 
 
 def _joined(tokens) -> str:
-    """TeX of the tokens, a space after a command that a letter follows (``\\int y``, not ``\\inty``)."""
-    out = ""
-    for t in tokens:
+    """TeX of the tokens, a space after a command that a letter follows (``\\int y``, not ``\\inty``), a
+    root's bracket as its argument (``sqrt(b^2 - y^2)`` is ``\\sqrt{b^{2} - y^{2}}``)."""
+    tokens = list(tokens)
+    out, i = "", 0
+    while i < len(tokens):
+        t = tokens[i]
+        if t in ("sqrt", "√") and i + 1 < len(tokens) and tokens[i + 1] == "(":
+            depth, j = 0, i + 1
+            while j < len(tokens):
+                depth += {"(": 1, ")": -1}.get(tokens[j], 0)
+                if depth == 0:
+                    break
+                j += 1
+            if j < len(tokens):
+                out += r"\sqrt{" + _joined(tokens[i + 2:j]) + "}"
+                i = j + 1
+                continue
         tex = _tex(t)
         if re.search(r"\\[A-Za-z]+$", out) and re.match(r"[A-Za-z0-9]", tex):
             out += " "
         out += tex
+        i += 1
     return out.strip()
 
 
