@@ -164,7 +164,16 @@ class CellWriter:
 
     # -- the cells ---------------------------------------------------------------------------------------------------
     def step(self, s) -> str:
-        """The code of step *s* (the next one in order)."""
+        """The code of step *s* (the next one in order).  A step whose expressions have no SymPy source that
+        reads back (:meth:`Code.member`) gets a cell that says so; the notebook's ``derived`` then lacks its
+        value, so a later cell that needs it fails rather than passing unchecked."""
+        try:
+            return self._step(s)
+        except ValueError as exc:
+            self._record(s)
+            return f"# no SymPy source reads back as this step's expressions ({exc}); the engine's check is above"
+
+    def _step(self, s) -> str:
         rep = next(r for r in self.report.steps if r.name == s.name)
         ms = list(members(s.claim))
         name = self.code.names.get(s.result) if s.result is not None else None
@@ -201,7 +210,14 @@ class CellWriter:
             self.derived[s.result] = members(s.claim)[-1]
 
     def formula(self, p) -> str | None:
-        """The code of printed formula *p*: its reading, the check of the print, the correction."""
+        """The code of printed formula *p*: its reading, the check of the print, the correction (a comment
+        when its expressions have no SymPy source that reads back)."""
+        try:
+            return self._formula(p)
+        except ValueError as exc:
+            return f"# no SymPy source reads back as this reading ({exc}); the engine's check is above"
+
+    def _formula(self, p) -> str | None:
         f = next(f for f in self.report.formulas if f.id == self.d.formula_id(p))
         if p.reading is None or f.verdict == "trivial":
             return None
@@ -210,7 +226,7 @@ class CellWriter:
             return self._relation(p.reading, f)
         out = ["# read as printed"] + self._chain(members(p.reading))
         if f.verdict == "erratum":
-            out += self._refutation(list(members(p.reading)), p.tolerance)
+            out += self._refutation(list(members(p.reading)), p.tolerance, (f.identity or {}).get("counterexample"))
             corrected = p.erratum.corrected_reading if p.erratum is not None else None
             if corrected is not None and not is_relation(corrected):
                 out += ["", "# the correction, checked as a step is"] + self._chain(members(corrected))
@@ -230,9 +246,13 @@ class CellWriter:
                 out.append("print('at', point, ':', at(point, *values))")
         return "\n".join(out)
 
-    def _refutation(self, ms, tolerance) -> list[str]:
-        """A small point where two members of the refuted reading differ, both values shown."""
+    def _refutation(self, ms, tolerance, counterexample=None) -> list[str]:
+        """A small point where two members of the refuted reading differ, both values shown; failing one,
+        the engine's *counterexample* (its random point)."""
         values = [self.insert(m) for m in ms]
+        free = set().union(*(v.free_symbols for v in values))
+        engine = {s: sp.Rational(counterexample["point"][s.name]) for s in free
+                  if counterexample and s.name in counterexample.get("point", {})}
         out = ["values = [insert(e) for e in chain]"]
         for i in range(len(ms) - 1):
             if tolerance is not None:
@@ -244,12 +264,16 @@ class CellWriter:
                                   f"{self.code.source(sp.sympify(tolerance))}   # the print is refuted"]
                 continue
             point = self._point(values[i:i + 2], lambda vs: not agree(vs[0], vs[1]))
+            where = "inside the assumptions"
+            if point is None and len(engine) == len(free) and not agree(
+                    *(v.xreplace(engine).doit() for v in values[i:i + 2])):
+                point, where = engine, "the engine's random point: no small one shows the difference"
             if point is not None:
-                return out + [f"point = {point_source(self.code, point)}   # inside the assumptions",
+                return out + [f"point = {point_source(self.code, point)}   # {where}",
                               f"left, right = at(point, values[{i}], values[{i + 1}])",
                               f"print('at', point, ': member {i + 1} =', left, ', member {i + 2} =', right)",
                               "assert not same(left, right)   # the print is refuted"]
-        return out + ["# no small point shows the difference: the engine's counterexample is in the text above"]
+        return out + ["# no point found where two members differ: the erratum above says why the print is wrong"]
 
     def _relation(self, reading, f) -> str:
         lines = ["# the conditions the relation states; the engine's relation check decides it (see above)"]

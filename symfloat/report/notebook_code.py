@@ -46,7 +46,7 @@ def at(point, *exprs):
     for e in exprs:
         v = e.xreplace(point).doit()
         exact = all(c.is_Rational for c in v) if isinstance(v, MatrixBase) else v.is_Rational
-        values.append(v if exact else v.evalf(30))
+        values.append(v if exact else v.evalf(30, chop=True))
     return values
 
 
@@ -137,8 +137,9 @@ def _python_name(name: str, taken: set) -> str:
     return n
 
 
-_RESERVED = {"derived", "insert", "at", "same", "chain", "values", "proof", "point", "left", "right", "gap", "conditions",
-             "p", "q", "e", "new", "expr", "exprs", "sp"}
+# the names the cells assign (the helpers' own names are local to them)
+_RESERVED = {"derived", "insert", "at", "same", "chain", "values", "proof", "point", "left", "right", "gap",
+             "conditions"}
 
 
 class Code:
@@ -277,10 +278,12 @@ def _candidates(lo, hi) -> list:
     return sorted(out, key=lambda x: (x.denominator, abs(x - mid), x))[:6]
 
 
-def small_point(symbols, domain, accept, tries: int = 400):
+def small_point(symbols, domain, accept, tries: int = 1500):
     """A point of small rationals inside *domain* (:class:`~symfloat.engine.identity.Domain`) for
     *symbols*, distinct values where it can, at which ``accept(point)`` holds; ``None`` if none is found
-    among the first *tries* candidates (ordered by how simple they are)."""
+    among the first *tries* candidates (ordered by how simple they are).  The symbols a constraint ties
+    to *symbols* are drawn too, so that the point keeps the constraint, and left out of the answer."""
+    own = set(symbols)
     symbols = set(symbols)
     for c in domain.constraints:
         if sp.sympify(c).free_symbols & symbols:
@@ -301,7 +304,7 @@ def small_point(symbols, domain, accept, tries: int = 400):
         if len(set(values)) < len(values) and n < tries // 2:      # distinct values first: no coincidence
             continue
         if domain.admits(point) and accept(point):
-            return point
+            return {k: v for k, v in point.items() if k in own}
     return None
 
 

@@ -20,7 +20,7 @@ from ..model.relation import is_relation, relation_latex
 from .notebook_code import STRATEGY_WORDS
 from .prose import typeset
 
-__all__ = ["NotebookView", "definitions_markdown", "step_markdown", "step_title", "reading_markdown",
+__all__ = ["NotebookView", "definitions_markdown", "step_markdown", "step_title", "step_titles", "reading_markdown",
            "correction_markdown", "named", "chain_latex"]
 
 JUSTIFICATION = {
@@ -95,25 +95,31 @@ def _quoted(text: str) -> str:
     return "\n".join("> " + line if line.strip() else ">" for line in text.splitlines())
 
 
+def _capital(text: str) -> str:
+    """*text* with a capital first letter, unless it begins with a symbol (``k is the normal``) or a formula."""
+    if re.match(r"[a-z]\b", text) or text.startswith("$"):
+        return text
+    return text[0].upper() + text[1:]
+
+
 def _sentence(text: str) -> str:
     text = typeset(text.strip())
-    return text[0].upper() + text[1:] + ("" if text.endswith((".", "?", "!")) else ".")
+    return _capital(text) + ("" if text.endswith((".", "?", "!")) else ".")
 
 
 def step_title(d, step) -> str:
     """A step's title in words: the first phrase of its note, else what it establishes, else the printed
     formula it derives, else what it does to its first member.
 
-    The note's first phrase ends at the first ``;``, ``:`` or bracket when that leaves at least three
-    words; a longer phrase is cut at a word before 70 characters."""
+    The note's first phrase ends at the first ``;``, ``:``, comma or bracket (not a locator's) when that
+    leaves at least three words; a longer phrase is cut at a word before 70 characters."""
     if step.note:
         note = step.note.strip()
-        cut = re.search(r"[;:]\s|\s\(|,\s", note)
+        cut = re.search(r"[;:]\s|\s\((?![\d§])|,\s", note)      # not before a locator: "in (12)"
         phrase = note[:cut.start()] if cut and len(note[:cut.start()].split()) >= 3 else note
         if len(phrase) > 70:
             phrase = phrase[:70].rsplit(" ", 1)[0] + " …"
-        phrase = typeset(phrase)
-        return phrase[0].upper() + phrase[1:]
+        return _capital(typeset(phrase))
     quoted = [p for p in d.printed if p.name == step.name]
     if quoted:
         return f"The printed formula {quoted[0].locator}"
@@ -124,6 +130,19 @@ def step_title(d, step) -> str:
         return f"{what}: the value of ${sp.latex(step.result)}$"
     first = _latex(d, members(step.claim)[0])
     return f"{what} for ${first}$" if len(first) < 60 else what
+
+
+def step_titles(d) -> dict:
+    """Step name -> its title (:func:`step_title`); a title two steps share names what each establishes
+    (or its number) after it."""
+    titles = {s.name: step_title(d, s) for s in d.steps}
+    count: dict = {}
+    for t in titles.values():
+        count[t] = count.get(t, 0) + 1
+    for i, s in enumerate(d.steps, 1):
+        if count[titles[s.name]] > 1:
+            titles[s.name] += f": ${sp.latex(s.result)}$" if s.result is not None else f" (step {i})"
+    return titles
 
 
 def _uses(d, step) -> str:
@@ -140,10 +159,10 @@ def _uses(d, step) -> str:
     return " and ".join(parts)
 
 
-def step_markdown(d, index: int, step, findings: str = "") -> str:
-    """A step's heading in words, its statement in the source's words and its chain of expressions, then
-    what the engine found (*findings*)."""
-    head = f"### Step {index}: {step_title(d, step)}\n\n*{JUSTIFICATION[step.why]}*"
+def step_markdown(d, index: int, step, findings: str = "", title: str = "") -> str:
+    """A step's heading in words (*title*, by default :func:`step_title`), its statement in the source's
+    words and its chain of expressions, then what the engine found (*findings*)."""
+    head = f"### Step {index}: {title or step_title(d, step)}\n\n*{JUSTIFICATION[step.why]}*"
     if step.uses:
         head += " — uses " + _uses(d, step)
     out = [head]
@@ -183,6 +202,9 @@ def reading_markdown(d, p, findings: str = "") -> str:
     its reading as printed and the correction's, then what the engine found (*findings*)."""
     same = [q for q in d.printed if q.locator == p.locator]
     head = f"### {p.locator}" + (f", formula {same.index(p) + 1} of {len(same)}" if len(same) > 1 else "")
+    derived_by = [s for s in d.steps if s.name == p.name and s.note]
+    if derived_by:
+        head += f": {step_title(d, derived_by[0])[0].lower()}{step_title(d, derived_by[0])[1:]}"
     out = [head, _quoted(p.excerpt)]
     if p.lost:
         out.append(f"Text lost in the transcription: {p.lost}")

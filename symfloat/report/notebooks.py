@@ -32,7 +32,7 @@ from ..model.source import get_source
 from ..registry import load
 from .files import write_if_changed
 from .notebook_cells import CellWriter
-from .notebook_view import NotebookView, definitions_markdown, reading_markdown, step_markdown
+from .notebook_view import NotebookView, definitions_markdown, reading_markdown, step_markdown, step_titles
 from .prose import typeset
 from .stamp import digest
 
@@ -92,8 +92,9 @@ def build_notebook(derivation_id: str, report=None) -> nbformat.NotebookNode:
         "## Derivation\n\nEach step: what it says, its expressions before and after, how the engine justified "
         "it, and the step in SymPy (a step is checked as an identity inside the stated assumptions, unless it "
         "is a definition).")))
+    titles = step_titles(d)
     for i, s in enumerate(d.steps, 1):
-        body.append((cell_id("step", s.name), md(step_markdown(d, i, s, view.step_markdown(s.name)),
+        body.append((cell_id("step", s.name), md(step_markdown(d, i, s, view.step_markdown(s.name), titles[s.name]),
                                                  metadata={"symfloat": {"step": s.name}})))
         body.append((cell_id("step-check", s.name), code(writer.step(s))))
     body.append((cell_id("printed"), md(

@@ -27,15 +27,15 @@ FUNCTIONS = ("sin", "cos", "tan", "cot", "sqrt", "arctan", "atan", "log", "exp",
 _TEX = {"phi": r"\varphi", "varphi": r"\varphi", "epsilon": r"\varepsilon", "atan": r"\arctan",
         "sqrt": r"\sqrt", "int": r"\int", "√": r"\sqrt", "∫": r"\int", "·": r"\cdot", "−": "-",
         "<=": r"\le", ">=": r"\ge", "≤": r"\le", "≥": r"\ge", "±": r"\pm", "+-": r"\pm", "oo": r"\infty",
-        "*": r"\cdot", "π": r"\pi",
-        "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu", "≈": r"\approx", "→": r"\to", "∞": r"\infty"}
+        "*": r"\cdot", "π": r"\pi", "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu",
+        "≈": r"\approx", "→": r"\to", "∞": r"\infty"}
 _SUPER = {"²": "2", "³": "3", "⁴": "4", "¹": "1", "⁰": "0", "⁵": "5", "⁶": "6"}
 
 _TOKEN = re.compile(r"""
     (?P<space>[ ]+)
-  | (?P<name>[A-Za-z][A-Za-z0-9]*(?:_\{?[A-Za-z0-9]+\}?|\^\{?[A-Za-z0-9]+\}?)+'?)    # T_1^1, u_m', tan^2
+  | (?P<name>[A-Za-z][A-Za-z0-9]*(?:_\{?[A-Za-z0-9]+\}?|\^\{?[A-Za-z0-9*]+\}?)+'?)   # T_1^1, u_m', s^*
   | (?P<word>[A-Za-z][A-Za-z]*'?(?:s\b)?)
-  | (?P<index>[_^]\{?[A-Za-z0-9]+\}?)                                               # ∫_0^b
+  | (?P<index>[_^]\{?[A-Za-z0-9*]+\}?)                                              # ∫_0^b, s^*
   | (?P<number>\d+(?:\.\d+)?)
   | (?P<relation><=|>=|[=<>≤≥≈]|->|→)
   | (?P<operator>\+-|[-+*/()±·−√∫²³⁴¹⁰πθφωμ∞])
@@ -65,13 +65,13 @@ def _tex(token: str) -> str:
         return _TEX[token]
     if token in _SUPER:
         return "^{" + _SUPER[token] + "}"
-    m = re.fullmatch(r"([A-Za-z][A-Za-z0-9]*)((?:[_^]\{?[A-Za-z0-9]+\}?)*)('?)", token)
+    m = re.fullmatch(r"([A-Za-z][A-Za-z0-9]*)((?:[_^]\{?[A-Za-z0-9*]+\}?)*)('?)", token)
     if m and (m.group(2) or m.group(1) in GREEK or m.group(1) in FUNCTIONS):
         base = m.group(1)
         base = _TEX.get(base, "\\" + base if base in GREEK or base in FUNCTIONS else base)
-        scripts = re.sub(r"([_^])\{?([A-Za-z0-9]+)\}?", lambda s: f"{s.group(1)}{{{s.group(2)}}}", m.group(2))
+        scripts = re.sub(r"([_^])\{?([A-Za-z0-9*]+)\}?", lambda s: f"{s.group(1)}{{{s.group(2)}}}", m.group(2))
         return base + scripts + m.group(3)
-    if re.fullmatch(r"[_^]\{?[A-Za-z0-9]+\}?", token):
+    if re.fullmatch(r"[_^]\{?[A-Za-z0-9*]+\}?", token):
         return token[0] + "{" + token[1:].strip("{}") + "}"
     return token
 
@@ -195,6 +195,8 @@ def typeset(text: str) -> str:
         elif part.startswith("`"):
             inner = part.strip("`")
             done = _typeset_plain(inner)
+            if re.fullmatch(r"[A-Za-z]", inner):                    # ``b``: a letter of the mathematics
+                done = f"${inner}$"
             out.append(done if done.startswith("$") and done.endswith("$") and done.count("$") == 2 else part)
         else:
             out.append(_typeset_plain(part))
