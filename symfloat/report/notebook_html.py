@@ -55,12 +55,25 @@ def _math(match: re.Match) -> str:
     return f"\n\n<div class=\"math\">{out}</div>\n\n" if display else out
 
 
+_HEADING = re.compile(r"(?m)^(#{1,6}) (.*\$.*)$")
+
+
+def _heading(match: re.Match) -> str:
+    """A Markdown heading with a formula as an HTML heading (nbconvert keeps only the text of a Markdown
+    heading's markup, so its MathML would lose its layout)."""
+    level = len(match[1])
+    return f"<h{level}>{_MATH.sub(_math, html.escape(match[2], quote=False))}</h{level}>"
+
+
 def mathml(markdown: str) -> str:
     """*markdown* with its ``$…$`` and ``$$…$$`` formulas as MathML (code spans left alone).
 
     >>> mathml("the arm $m$ and `$x$`")
     'the arm <math xmlns="http://www.w3.org/1998/Math/MathML" display="inline"><mrow><mi>m</mi></mrow></math> and `$x$`'
+    >>> mathml("### Step 2: the value of $e$")
+    '<h3>Step 2: the value of <math xmlns="http://www.w3.org/1998/Math/MathML" display="inline"><mrow><mi>e</mi></mrow></math></h3>'
     """
+    markdown = _HEADING.sub(_heading, markdown)
     return "".join(part if _CODE.fullmatch(part) else _MATH.sub(_math, part) for part in _CODE.split(markdown))
 
 

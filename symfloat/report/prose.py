@@ -122,7 +122,7 @@ def _joined(tokens) -> str:
                 out += r"\sqrt{" + _joined(tokens[i + 2:j]) + "}"
                 i = j + 1
                 continue
-        tex = _tex(t)
+        tex = r"\surd" if t in ("sqrt", "√") else _tex(t)       # a root sign without its bracket
         if re.search(r"\\[A-Za-z]+$", out) and re.match(r"[A-Za-z0-9]", tex):
             out += " "
         out += tex
