@@ -23,7 +23,8 @@ from sympy.printing.str import StrPrinter
 
 from ..engine.identity import AGREEMENT, DIGITS
 
-__all__ = ["SymPyCode", "Code", "HELPERS", "proof_source", "small_point", "point_source", "STRATEGY_WORDS"]
+__all__ = ["SymPyCode", "Code", "HELPERS", "STRATEGY_WORDS", "proof_source", "small_point", "point_source", "agree",
+           "finite", "functions_of"]
 
 HELPERS = '''\
 derived = {}   # symbol -> the value a step established for it (its last member)
@@ -189,17 +190,18 @@ class Code:
     def _reads_back(self, text: str, expr, evaluate: bool) -> bool:
         try:
             with sp.evaluate(evaluate):
-                back = eval(text, dict(self.namespace))      # noqa: S307 - text printed here, from SymPy objects
+                # the text was printed here from the derivation's SymPy objects, and runs with SymPy's names only
+                back = eval(text, {"__builtins__": {}, **self.namespace})      # noqa: S307
         except Exception:                                   # a form SymPy cannot read back: try the next one
             return False
         if not (back == expr or isinstance(expr, sp.MatrixBase) and isinstance(back, sp.MatrixBase)
                 and back.shape == expr.shape and all(x == y for x, y in zip(back, expr))):
             return False
         self.used |= {n for n in re.findall(r"[A-Za-z_]\w*", text) if n in self.namespace
-                      and n not in self.namespace_own()}
+                      and n not in self._own()}
         return True
 
-    def namespace_own(self) -> set:
+    def _own(self) -> set:
         return set(self.names.values()) | set(self.functions.values())
 
     def declarations(self) -> str:

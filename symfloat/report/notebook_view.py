@@ -17,6 +17,7 @@ import sympy as sp
 
 from ..model.claim import expressions, members
 from ..model.relation import is_relation, relation_latex
+from ..registry import load
 from .notebook_code import STRATEGY_WORDS
 from .prose import typeset
 
@@ -111,15 +112,20 @@ def step_title(d, step) -> str:
     """A step's title in words: the first phrase of its note, else what it establishes, else the printed
     formula it derives, else what it does to its first member.
 
-    The note's first phrase ends at the first ``;``, ``:``, comma or bracket (not a locator's) when that
-    leaves at least three words; a longer phrase is cut at a word before 70 characters."""
+    The note, typeset, ends at the first ``;``, ``:``, comma or bracket outside its formulas and brackets
+    (not a locator's bracket, "in (12)") that leaves at least three words; a longer phrase is cut at a space
+    outside its formulas before 70 characters."""
     if step.note:
-        note = step.note.strip()
-        cut = re.search(r"[;:]\s|\s\((?![\d§])|,\s", note)      # not before a locator: "in (12)"
-        phrase = note[:cut.start()] if cut and len(note[:cut.start()].split()) >= 3 else note
+        note = typeset(step.note.strip())
+        outside = _outside_formulas(note)
+        cuts = [m.start() for m in re.finditer(r"[;:]\s|\s\((?![\d§])|,\s", note)
+                if outside[m.start()] and len(note[:m.start()].split()) >= 3
+                and note[:m.start()].count("(") == note[:m.start()].count(")")]
+        phrase = note[:cuts[0]] if cuts else note
         if len(phrase) > 70:
-            phrase = phrase[:70].rsplit(" ", 1)[0] + " …"
-        return _capital(typeset(phrase))
+            spaces = [i for i, ch in enumerate(phrase[:70]) if ch == " " and outside[i]]
+            phrase = phrase[:spaces[-1]] + " …" if spaces else phrase
+        return _capital(phrase)
     quoted = [p for p in d.printed if p.name == step.name]
     if quoted:
         return f"The printed formula {quoted[0].locator}"
@@ -130,6 +136,18 @@ def step_title(d, step) -> str:
         return f"{what}: the value of ${sp.latex(step.result)}$"
     first = _latex(d, members(step.claim)[0])
     return f"{what} for ${first}$" if len(first) < 60 else what
+
+
+def _outside_formulas(text: str) -> list[bool]:
+    """For each character of *text*: is it outside the ``$…$`` formulas?"""
+    out, inside = [], False
+    for ch in text:
+        if ch == "$":
+            inside = not inside
+            out.append(False)
+        else:
+            out.append(not inside)
+    return out
 
 
 def step_titles(d) -> dict:
@@ -154,7 +172,6 @@ def _uses(d, step) -> str:
     if own:
         parts.append(("step " if len(own) == 1 else "steps ") + ", ".join(str(i) for i in own))
     if other:
-        from ..registry import load
         parts.append(", ".join(f"*{load(o)[0].title}* ({load(o)[0].locator})" for o in other))
     return " and ".join(parts)
 

@@ -159,6 +159,7 @@ def _typeset_plain(text: str) -> str:
         if cut is not None:                      # a bracket the run does not close: the formula ends before it
             rest = run[run.index(core[0]) + cut:]
             run = run[:run.index(core[0]) + cut]
+            out.append("".join(lead))
             flush()
             out.append("".join(t for t, _ in rest) + "".join(tail))
             return
