@@ -81,11 +81,12 @@ def test_a_proved_step_calls_the_strategy_of_its_certificate(s1_notebook, s1_rep
     assert "g*(UnevaluatedExpr(Rational(1, 2)))**2" in code    # the print's arithmetic (1/2)^2 kept as printed
 
 
-def test_cell_ids_follow_content_not_position(s1_notebook):
+def test_cell_ids_follow_content_not_position(s1_notebook, s1_report):
     ids = [c.id for c in s1_notebook.cells]
     assert len(ids) == len(set(ids))
     assert all(re.fullmatch(r"[A-Za-z0-9_-]{1,64}", i) for i in ids)
-    assert [c.id for c in build_notebook(S1).cells] == ids           # rebuilt: identical
+    rebuilt = build_notebook(S1, s1_report)                             # rebuilt: identical, code included
+    assert [(c.id, c.source) for c in rebuilt.cells] == [(c.id, c.source) for c in s1_notebook.cells]
     assert cell_id("step", "lemma") != cell_id("step", "lemma-2")
 
 

@@ -61,8 +61,11 @@ _HEADING = re.compile(r"(?m)^(#{1,6}) (.*\$.*)$")
 def _heading(match: re.Match) -> str:
     """A Markdown heading with a formula as an HTML heading (nbconvert keeps only the text of a Markdown
     heading's markup, so its MathML would lose its layout)."""
-    level = len(match[1])
-    return f"<h{level}>{_MATH.sub(_math, html.escape(match[2], quote=False))}</h{level}>"
+    level, text, out, at = len(match[1]), match[2], [], 0
+    for m in _MATH.finditer(text):                 # the words escaped for HTML, the formulas as MathML
+        out += [html.escape(text[at:m.start()], quote=False), _math(m)]
+        at = m.end()
+    return f"<h{level}>{''.join(out)}{html.escape(text[at:], quote=False)}</h{level}>"
 
 
 def mathml(markdown: str) -> str:
@@ -72,6 +75,8 @@ def mathml(markdown: str) -> str:
     'the arm <math xmlns="http://www.w3.org/1998/Math/MathML" display="inline"><mrow><mi>m</mi></mrow></math> and `$x$`'
     >>> mathml("### Step 2: the value of $e$")
     '<h3>Step 2: the value of <math xmlns="http://www.w3.org/1998/Math/MathML" display="inline"><mrow><mi>e</mi></mrow></math></h3>'
+    >>> "&gt;" in mathml("### $a > 0$ & more")
+    False
     """
     markdown = _HEADING.sub(_heading, markdown)
     return "".join(part if _CODE.fullmatch(part) else _MATH.sub(_math, part) for part in _CODE.split(markdown))
