@@ -251,7 +251,7 @@ class CellWriter:
         the engine's *counterexample* (its random point)."""
         values = [self.insert(m) for m in ms]
         free = set().union(*(v.free_symbols for v in values))
-        engine = {s: sp.Rational(counterexample["point"][s.name]) for s in free
+        engine = {s: sp.Rational(counterexample["point"][s.name]) for s in sorted(free, key=lambda s: s.name)
                   if counterexample and s.name in counterexample.get("point", {})}
         out = ["values = [insert(e) for e in chain]"]
         for i in range(len(ms) - 1):

@@ -280,6 +280,17 @@ def _candidates(lo, hi) -> list:
     return sorted(out, key=lambda x: (x.denominator, abs(x - mid), x))[:6]
 
 
+def _indices(sizes: list[int], total: int):
+    """Every tuple of indices below *sizes* that sums to *total*, in lexicographic order."""
+    if not sizes:
+        if total == 0:
+            yield ()
+        return
+    for first in range(min(sizes[0] - 1, total), -1, -1):
+        for rest in _indices(sizes[1:], total - first):
+            yield (first, *rest)
+
+
 def small_point(symbols, domain, accept, tries: int = 1500):
     """A point of small rationals inside *domain* (:class:`~symfloat.engine.identity.Domain`) for
     *symbols*, distinct values where it can, at which ``accept(point)`` holds; ``None`` if none is found
@@ -296,8 +307,8 @@ def small_point(symbols, domain, accept, tries: int = 1500):
     lists = [_candidates(*domain.intervals[s]) for s in symbols]
     if any(not c for c in lists):
         return None
-    combos = sorted(itertools.islice(itertools.product(*[range(len(c)) for c in lists]), 20000),
-                    key=lambda idx: (sum(idx), idx))
+    combos = itertools.chain.from_iterable(_indices([len(c) for c in lists], total)
+                                           for total in range(sum(len(c) - 1 for c in lists) + 1))
     for n, idx in enumerate(combos):
         if n >= tries:
             break
