@@ -63,7 +63,8 @@ step and checks it:
   the integrals, limits and derivatives;
 - the difference of each pair of members is reduced to 0 by the SymPy call of the step's proof
   certificate (`cancel`, `expand`, `radsimp`, `simplify`, or comparing squares), and asserted;
-- `at` evaluates the members at a small point inside the assumptions: the same number twice.
+- `at` evaluates the members at a small point inside the assumptions: the same number twice
+  (`same` compares two such values, exactly or to 25 digits, where a step has no symbolic proof).
 
 Change a member and run the cells again: a step that no longer holds stops with an
 `AssertionError`.  A printed formula is read as printed the same way; where the print is wrong,
