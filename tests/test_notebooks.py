@@ -47,7 +47,7 @@ def test_every_step_is_a_heading_in_words_with_its_chain_and_a_sympy_cell(s1_not
     for p in d.printed:
         assert by_id[cell_id("formula", p.name)].source.startswith(f"### {p.locator}")
     setup = by_id[cell_id("setup")].source
-    assert setup.startswith("from sympy import ") and "symbols(" in setup and "def insert(expr):" in setup
+    assert setup.startswith("from sympy import (") and "symbols(" in setup and "def insert(expr):" in setup
 
 
 def test_no_title_is_a_slug(s1_notebook):

@@ -12,6 +12,7 @@ a changed member that no longer holds stops it with an ``AssertionError``.
 from __future__ import annotations
 
 import re
+import textwrap
 
 import sympy as sp
 
@@ -64,6 +65,7 @@ class CellWriter:
 
     # -- the notebook's helpers, mirrored at build time --------------------------------------------------------------
     def insert(self, expr):
+        """*expr* with the values established so far put in and carried out, as the notebook's ``insert``."""
         for _ in range(12):
             new = expr.xreplace(self.derived)
             if new == expr:
@@ -72,10 +74,11 @@ class CellWriter:
         return expr.doit()
 
     def setup(self) -> str:
-        """The first code cell: SymPy's names the cells use, every symbol declared, the two helpers."""
+        """The first code cell: SymPy's names the cells use, every symbol declared, the helpers."""
         used = sorted(self.code.used | self.calls | {"Symbol", "symbols", "Function", "MatrixBase", "evaluate",
                                                      "S", "N", "Rational"})
-        return ("from sympy import " + ", ".join(used) + "\n\n"
+        names = textwrap.fill(", ".join(used), width=96, initial_indent="    ", subsequent_indent="    ")
+        return ("from sympy import (\n" + names + ",\n)\n\n"
                 + "# the symbols of the derivation, with the assumptions it states\n"
                 + self.code.declarations() + "\n\n" + HELPERS)
 
