@@ -220,8 +220,11 @@ def reading_markdown(d, p, findings: str = "") -> str:
     same = [q for q in d.printed if q.locator == p.locator]
     head = f"### {p.locator}" + (f", formula {same.index(p) + 1} of {len(same)}" if len(same) > 1 else "")
     derived_by = [s for s in d.steps if s.name == p.name and s.note]
+    first = _latex(d, members(p.reading)[0]) if p.reading is not None and not is_relation(p.reading) else ""
     if derived_by:
         head += f": {step_title(d, derived_by[0])[0].lower()}{step_title(d, derived_by[0])[1:]}"
+    elif first and len(first) < 40:
+        head += f": ${first}$"                     # what the formula gives, when the quotation is long to read
     out = [head, _quoted(p.excerpt)]
     if p.lost:
         out.append(f"Text lost in the transcription: {p.lost}")
