@@ -62,16 +62,31 @@ class CellWriter:
         self.domain = Domain(d.domain, tuple(d.constraints))
         self.derived: dict = {}
         self.calls: set = set()     # the SymPy functions the checks call
+        self._values: dict = {}     # (value, point) -> the value at the point (:meth:`at`)
 
     # -- the notebook's helpers, mirrored at build time --------------------------------------------------------------
     def insert(self, expr):
-        """*expr* with the values established so far put in and carried out, as the notebook's ``insert``."""
+        """*expr* with the values established so far put in, as the notebook's ``insert`` puts them in, but
+        its integrals, limits and derivatives not carried out: they are carried out at a point
+        (:meth:`at`), where they are integrals of numbers, not symbolic ones."""
         for _ in range(12):
             new = expr.xreplace(self.derived)
             if new == expr:
                 break
             expr = new
-        return expr.doit()
+        return expr
+
+    def at(self, value, point: dict):
+        """*value* (from :meth:`insert`) at *point*, carried out: the notebook's ``at`` before its rounding,
+        remembered (the point search tries a value at the same points for several links).  Limits are taken
+        first (a limit's variable is no symbol to put a number in for), then the point is put in."""
+        key = (value.as_immutable() if isinstance(value, sp.MatrixBase) else value,
+               tuple(sorted(point.items(), key=lambda kv: kv[0].name)))
+        if key not in self._values:
+            if value.has(sp.Limit):
+                value = value.replace(lambda e: isinstance(e, sp.Limit), lambda e: e.doit())
+            self._values[key] = value.subs(point).doit()
+        return self._values[key]
 
     def setup(self) -> str:
         """The first code cell: SymPy's names the cells use, every symbol declared, the helpers."""
@@ -111,7 +126,7 @@ class CellWriter:
 
         def accept(point):
             try:
-                vs = [v.xreplace(point).doit() for v in values]
+                vs = [self.at(v, point) for v in values]
             except (ArithmeticError, TypeError, ValueError):
                 return False
             return all(finite(v) for v in vs) and (accept_pair is None or accept_pair(vs))
@@ -259,7 +274,7 @@ class CellWriter:
         out = ["values = [insert(e) for e in chain]"]
         for i in range(len(ms) - 1):
             if tolerance is not None:
-                gap = abs(sp.N(values[i] - values[i + 1], 60))
+                gap = abs(sp.N(self.at(values[i] - values[i + 1], {}), 60))
                 if gap.is_number and gap > sp.N(tolerance, 60):
                     return out + [f"print('member {i + 1}:', N(values[{i}], 15), '  member {i + 2}:', "
                                   f"N(values[{i + 1}], 15))",
@@ -269,7 +284,7 @@ class CellWriter:
             point = self._point(values[i:i + 2], lambda vs: not agree(vs[0], vs[1]))
             where = "inside the assumptions"
             if point is None and len(engine) == len(free) and not agree(
-                    *(v.xreplace(engine).doit() for v in values[i:i + 2])):
+                    *(self.at(v, engine) for v in values[i:i + 2])):
                 point, where = engine, "the engine's random point: no small one shows the difference"
             if point is not None:
                 return out + [f"point = {point_source(self.code, point)}   # {where}",

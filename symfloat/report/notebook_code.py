@@ -28,6 +28,7 @@ __all__ = ["SymPyCode", "Code", "HELPERS", "STRATEGY_WORDS", "proof_source", "sm
 
 HELPERS = '''\
 derived = {}   # symbol -> the value a step established for it (its last member)
+done = {}      # expression -> the expression with its integrals, limits, ... carried out (each done once)
 
 
 def insert(expr):
@@ -38,7 +39,10 @@ def insert(expr):
         if new == expr:
             break
         expr = new
-    return expr.doit()
+    key = expr.as_immutable() if isinstance(expr, MatrixBase) else expr
+    if key not in done:
+        done[key] = expr.doit()
+    return done[key]
 
 
 def at(point, *exprs):
@@ -139,7 +143,7 @@ def _python_name(name: str, taken: set) -> str:
 
 
 # the names the cells assign (the helpers' own names are local to them)
-_RESERVED = {"derived", "insert", "at", "same", "chain", "values", "proof", "point", "left", "right", "gap",
+_RESERVED = {"derived", "done", "insert", "at", "same", "chain", "values", "proof", "point", "left", "right", "gap",
              "conditions"}
 
 
