@@ -11,6 +11,7 @@ notebook never shows code that states something else than what the engine checke
 """
 from __future__ import annotations
 
+import functools
 import itertools
 import keyword
 import re
@@ -271,8 +272,10 @@ def functions_of(exprs) -> set:
 
 
 # ---- a small point inside the assumptions ------------------------------------------------------------------------
-def _candidates(lo, hi) -> list:
-    """Rationals of small denominator strictly inside (lo, hi), the simplest and most central first."""
+@functools.lru_cache(maxsize=None)
+def _candidates(lo, hi) -> tuple:
+    """Rationals of small denominator strictly inside (lo, hi), the simplest and most central first
+    (remembered: every small point searches the same intervals)."""
     lo, hi = Fraction(str(lo)), Fraction(str(hi))
     mid = (lo + hi) / 2
     out = set()
@@ -281,7 +284,7 @@ def _candidates(lo, hi) -> list:
             x = Fraction(p, q)
             if lo < x < hi:
                 out.add(x)
-    return sorted(out, key=lambda x: (x.denominator, abs(x - mid), x))[:6]
+    return tuple(sorted(out, key=lambda x: (x.denominator, abs(x - mid), x))[:6])
 
 
 def _indices(sizes: list[int], total: int):
