@@ -254,7 +254,8 @@ class _Tree(ReprPrinter):
         self.names = names
 
     def _print_Symbol(self, expr):
-        return self.names[expr]
+        # a limit's direction is a symbol ('+') of SymPy's, not the derivation's
+        return self.names[expr] if expr in self.names else super()._print_Symbol(expr)
 
     def _print_Function(self, expr):
         if isinstance(expr, AppliedUndef) and expr.func in self.names:
