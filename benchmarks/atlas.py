@@ -30,7 +30,7 @@ import numpy as np
 from symfloat.atlas.dataset import read_atlas
 from symfloat.atlas.grid import density_grid
 from symfloat.atlas.run import build
-from symfloat.report.files import write_atomic
+from symfloat.files import write_atomic
 from symfloat.solver import make_scene, solve
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -1,7 +1,21 @@
 """symfloat: machine-checked re-derivation of classical texts on floating
-bodies and centroids."""
-from .model import (PRINTED_DIGITS, SOURCES, Cases, Derivation, Eq, Erratum, Holds, Iff, Prediction, Printed,
-                    RealRoots, Scene, Step, get_source)
+bodies and centroids.
+
+The names a derivation uses (``from symfloat import Derivation, Eq, Erratum``) come from
+:mod:`symfloat.model`, and :func:`check` (one printed formula against its derivation) from
+:mod:`symfloat.engine.formula_check`, each imported when first asked for, so that a command that needs
+no formula (``symfloat --help``, a scene's solver) does not pay for SymPy."""
+from importlib import import_module
 
 __version__ = "0.1.0"
-__all__ = ["PRINTED_DIGITS", "Cases", "Derivation", "Eq", "Erratum", "Holds", "Iff", "RealRoots", "Prediction", "Printed", "Scene", "Step", "SOURCES", "get_source", "__version__"]
+_MODEL = ("PRINTED_DIGITS", "Cases", "Derivation", "Eq", "Erratum", "Holds", "Iff", "RealRoots", "Prediction",
+          "Printed", "Scene", "Step", "SOURCES", "get_source")
+__all__ = [*_MODEL, "check", "__version__"]
+
+
+def __getattr__(name):
+    if name in _MODEL:
+        return getattr(import_module(".model", __name__), name)
+    if name == "check":
+        return import_module(".engine.formula_check", __name__).check
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,23 +1,29 @@
 """The ``symfloat`` command line.
 
     symfloat verify [SELECTOR] [--format table|json]
-    symfloat errata [SELECTOR] [--format md|json] [--output FILE]
+    symfloat errata [SELECTOR] [--format md|json|csv|latex] [--output FILE]
     symfloat notebooks [SELECTOR] [--output DIR]
-    symfloat run
+    symfloat run [--output DIR]
     symfloat scene BODY --density S [--dims ...] [--sides N] [--polygon "x,y ..."] [--format table|json]
-                   [--plot FILE.png]
-    symfloat phase cube|box [--dims a,b,c] [--steps N] [--format table|json] [--plot FILE.png]
-    symfloat atlas box --ba A:B:N --ca A:B:N --density A:B:N --out DIR [--scheduler ADDRESS] [--workers N]
+                   [--output FILE.png]
+    symfloat phase cube|box [--dims a,b,c] [--steps N] [--format table|json] [--output FILE.png]
+    symfloat atlas box --ba A:B:N --ca A:B:N --density A:B:N --output DIR [--scheduler ADDRESS] [--workers N]
                    [--figures DIR]
     symfloat bench [--quick] [--output DIR]
-    symfloat coverage [SOURCE] [--format table|json] [--readings] [--write] [--update-baseline]
-    symfloat site [--out DIR]
+    symfloat coverage [SOURCE] [--format table|json] [--readings] [--write] [--update-baseline] [--output DIR]
+    symfloat site [--output DIR]
+    symfloat check PRINTED --against DEFINITION [--against ...] [--where INEQUALITIES] [--domain x=A:B,...]
+                   [--format text|json] [--output FILE]
 
 Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET`` set to anything but ``0``) silences
-it.  The default outputs (``docs/``, ``notebooks/``) are those of the project checkout, wherever
-the command runs; a path given with ``--output`` or ``--plot`` is taken as given.  A selection
+it.  The default outputs (``docs/``, ``notebooks/``, ``build/site``) are those of the library of texts
+``SYMFLOAT_LIBRARY`` names, else of the project checkout, wherever the command runs
+(:mod:`symfloat.project`); a path given with ``--output`` is taken as given, and checked before any work
+(a file's folder must exist; :mod:`symfloat.files`).  A selection
 never overwrites the record of everything (``docs/errata.md``, ``docs/errata.json``,
 ``docs/verification.json``): ``errata SELECTOR`` prints its report, or writes it to ``--output``.
+Every file a command writes is named by ``--output`` (``--out`` and ``--plot``, the earlier names, are
+kept as aliases for one release); ``symfloat --version`` names the version.
 
 Exit status, the same for every subcommand (:mod:`symfloat.errors`): 0 success; 1 a check failed
 (a verdict not as declared, an index sum, a duality, a coverage count); 2 bad input or an
@@ -36,19 +42,24 @@ from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
 
+from . import __version__
 from .engine.cache import ReportCache
-from .engine.runner import Progress, verify
+from .engine.runner import MAX_WORKERS, Progress, check_environment, verify
 from .errors import (EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, EnvironmentProblem, InputError,
                      SymfloatError)
-from .project import GOLDEN, in_project, library_folders, project_root
-from .registry import load, providing, select
-from .report.errata import errata_json, errata_markdown
-from .report.files import write_atomic, write_if_changed, writable_target
+from .files import write_atomic, write_if_changed, writable_folder, writable_target
+from .model.erratum import apparatus
+from .project import GOLDEN, in_outputs, in_project, library_folders, outputs_root
+from .registry import provided, select
+from .report.errata import ERRATA_FORMATS, errata_json, errata_markdown
 from .report.record import record_json, verification_table, write_record
 from .report.stamp import stamp_of
 
 EXIT_STATUS = ("Exit status: 0 success; 1 a check failed (verdict, index sum, duality, coverage); "
-               "2 bad input or an environment problem; 130 interrupted")
+               "2 bad input or an environment problem (an output whose folder is missing or takes no file: "
+               "no folder is made for a file, an output folder may be new in an existing one; "
+               "SYMFLOAT_WORKERS not 1 to 64, SYMFLOAT_SLOWDOWN not a number >= 1; a worker process killed, "
+               "finished checks kept); 130 interrupted")
 
 
 def _one_line(message: str) -> str:
@@ -105,7 +116,7 @@ def _selector(text):
 def _search_proofs_arg(p):
     p.add_argument("--search-proofs", action="store_true",
                    help="search every claim's symbolic proof anew instead of replaying its recorded "
-                        "certificate (symfloat/derivations/proofs/), and record the outcome")
+                        "certificate (the derivation package's proofs.json), and record the outcome")
 
 
 def _reports(args, selector=None, cache=None):
@@ -119,7 +130,7 @@ def _failed(reports) -> int:
 
 def _not_golden(path: Path) -> Path:
     """*path*, unless it is one of the files that record everything (a selection must not replace them)."""
-    root = project_root()
+    root = outputs_root()
     if root is not None and path.resolve() in {(root / g).resolve() for g in GOLDEN}:
         raise InputError(f"{path} is the record of every source; a selection is printed, or written to "
                          f"another --output")
@@ -127,11 +138,11 @@ def _not_golden(path: Path) -> Path:
 
 
 def _plot_target(path):
-    """The ``--plot`` file: a ``.png`` whose directory exists and is writable (checked before solving)."""
+    """The ``--output`` file: a ``.png`` whose directory exists and is writable (checked before solving)."""
     if path is None:
         return None
     if path.suffix.lower() != ".png":
-        raise InputError(f"--plot writes a PNG image: give a file name ending in .png, not {str(path)[:60]!r}")
+        raise InputError(f"--output writes a PNG image: give a file name ending in .png, not {str(path)[:60]!r}")
     return writable_target(path)
 
 
@@ -147,9 +158,11 @@ def _summary_by_source(reports) -> str:
     for source in dict.fromkeys(r.source for r in reports):
         fs = [f for r in reports if r.source == source for f in r.formulas]
         c = Counter(f.verdict for f in fs)
+        faults = Counter(apparatus(f.erratum["kind"]) for f in fs if f.verdict == "erratum" and f.erratum)
         secs = sum(r.seconds for r in reports if r.source == source)
-        lines.append(f"{source}: {len(fs)} printed formulas — {c['verified']} verified, {c['erratum']} errata, "
-                     f"{c['unverifiable']} unverifiable, {c['trivial']} trivial ({secs:.1f} s)")
+        lines.append(f"{source}: {len(fs)} printed formulas — {c['verified']} verified, {faults['original']} "
+                     f"faults of the original, {faults['transcription']} transcription corrected, "
+                     f"{c['unverifiable']} unverifiable, {c['trivial']} trivial (checking time recorded {secs:.1f} s)")
     return "\n".join(lines)
 
 
@@ -162,8 +175,10 @@ def _verify_args(p):
 
 
 def _verify(args) -> int:
+    start = time.perf_counter()
     reports = _reports(args, _selector(args.selector))
-    print(record_json(reports) if args.format == "json" else verification_table(reports), end="")
+    print(record_json(reports) if args.format == "json" else
+          verification_table(reports, elapsed=time.perf_counter() - start), end="")
     return _failed(reports)
 
 
@@ -171,26 +186,25 @@ def _errata_args(p):
     _search_proofs_arg(p)
     p.add_argument("selector", nargs="?", help="a source key or derivation-id prefix: print (or --output) "
                                                "the report of that selection")
-    p.add_argument("--format", choices=("md", "json"), default="md")
-    p.add_argument("--output", type=Path, help="file for the Markdown report (default: docs/errata.md of "
-                                               "the checkout without a selector, stdout with one)")
+    p.add_argument("--format", choices=tuple(ERRATA_FORMATS), default="md",
+                   help="md (Markdown), json, csv (one row per erratum) or latex (a list to paste)")
+    p.add_argument("--output", type=Path, help="file for the report (default: stdout; the Markdown report of "
+                                               "everything, without a selector, goes to docs/errata.md)")
 
 
 def _errata(args) -> int:
     selector = _selector(args.selector)
     out = None
-    if args.format == "md":
-        if args.output is not None:
-            out = _not_golden(writable_target(args.output)) if selector else writable_target(args.output)
-        elif selector is None:
-            out = writable_target(in_project("docs/errata.md"))
+    if args.output is not None:
+        out = _not_golden(writable_target(args.output)) if selector else writable_target(args.output)
+    elif selector is None and args.format == "md":
+        out = writable_folder(in_outputs("docs")) / "errata.md"     # the checkout's own folder may be made
     reports = _reports(args, selector)
-    if args.format == "json":
-        print(errata_json(reports), end="")
-    elif out is None:
-        print(errata_markdown(reports), end="")
+    text = ERRATA_FORMATS[args.format](reports)
+    if out is None:
+        print(text, end="")
     else:
-        write_if_changed(out, errata_markdown(reports))
+        write_if_changed(out, text)
         _say(args, f"wrote {out}")
     return _failed(reports)
 
@@ -203,8 +217,7 @@ def _notebooks_args(p):
 
 def _notebooks(args) -> int:
     selector = _selector(args.selector)
-    folder = args.output or in_project("notebooks")
-    writable_target(folder / "x.ipynb")
+    folder = writable_folder(args.output or in_outputs("notebooks"))
     ids = select(selector)
     cache = _cache(args)
     _kernels_share(cache)
@@ -217,10 +230,17 @@ def _notebooks(args) -> int:
     return _failed(reports)
 
 
+def _run_args(p):
+    _search_proofs_arg(p)
+    p.add_argument("--output", type=Path, help="folder under which docs/ and notebooks/ are written (default: "
+                                               "the library of SYMFLOAT_LIBRARY, else the checkout)")
+
+
 def _run(args) -> int:
-    docs, notebooks = in_project("docs"), in_project("notebooks")
-    for path in (docs / "errata.md", notebooks / "x.ipynb"):
-        writable_target(path)
+    docs, notebooks = ((args.output / "docs", args.output / "notebooks") if args.output is not None
+                       else (in_outputs("docs"), in_outputs("notebooks")))
+    for folder in (docs, notebooks):
+        writable_folder(folder)
     cache = _cache(args)
     _kernels_share(cache)
     reports = _reports(args, cache=cache)
@@ -234,10 +254,8 @@ def _run(args) -> int:
                               (lambda d: print(f"executed notebook {d}", file=sys.stderr, flush=True)))
     documents = ["verification.json", "errata.json", "errata.md"]
     checked = {r.id for r in reports}
-    for did in providing("report"):             # documents the derivations add (e.g. Scheeffer IX's grid)
-        if did not in checked:
-            continue
-        for report in load(did)[0].provided["report"]:
+    for did, report in provided("report"):      # documents the derivations add (e.g. Scheeffer IX's grid)
+        if did in checked:
             if stamp_of(docs / report.filename) != report.stamp():         # what it depends on changed
                 write_if_changed(docs / report.filename, report.build(
                     progress=None if quiet else (lambda m, f=report.filename: print(f"{f}: {m}", file=sys.stderr))))
@@ -265,18 +283,19 @@ def _scene_args(p):
     p.add_argument("--sides", help="number of sides of the prism's regular base")
     p.add_argument("--polygon", help='section: convex polygon "x1,y1 x2,y2 ..."')
     p.add_argument("--format", choices=("table", "json"), default="table")
-    p.add_argument("--plot", type=Path, help="draw the stable positions into this PNG file")
+    p.add_argument("--output", "--plot", type=Path, dest="output",
+                   help="draw the stable positions into this PNG file (--plot: the earlier name)")
     p.epilog = f"Supported inputs: {DOMAIN}. Numbers are ASCII decimals or p/q, kept exact. {EXIT_STATUS}."
 
 
 def _scene(args) -> int:
     from .report.scene import scene_json, scene_plot, scene_record, scene_table
     from .solver import make_scene, solve
-    from .solver.coverage import cover
+    from .comparison.coverage import cover
 
     start = time.perf_counter()
     scene = make_scene(args.body, args.density, args.dims, args.sides, args.polygon)
-    plot = _plot_target(args.plot)
+    plot = _plot_target(args.output)
     solution = solve(scene)
     evaluated, unmatched = cover(solution)
     record = scene_record(solution, evaluated, unmatched, time.perf_counter() - start)
@@ -290,7 +309,8 @@ def _phase_args(p):
     p.add_argument("body", help="cube or box")
     p.add_argument("--dims", help="box a,b,c")
     p.add_argument("--format", choices=("table", "json"), default="table")
-    p.add_argument("--plot", type=Path, help="draw the phase diagram into this PNG file")
+    p.add_argument("--output", "--plot", type=Path, dest="output",
+                   help="draw the phase diagram into this PNG file (--plot: the earlier name)")
     p.add_argument("--steps", default="48", help="densities in the sweep, 4 to 2000 (default 48)")
     p.epilog = ("The sweep's densities k/(steps+1) must all lie in the scene's supported range "
                 f"(symfloat scene --help). {EXIT_STATUS}.")
@@ -301,7 +321,7 @@ def _phase(args) -> int:
 
     from .report.phase import phase_json, phase_plot, phase_table
     from .solver.bodies import SceneError, make_scene, parse_whole
-    from .solver.phase import phase_diagram
+    from .comparison.thresholds import phase_with_sources
 
     if args.body not in ("cube", "box"):
         raise SceneError(f"phase diagrams are drawn for cube and box, not {args.body[:40]!r}")
@@ -311,9 +331,9 @@ def _phase(args) -> int:
             make_scene(args.body, s, args.dims)
         except SceneError as exc:
             raise SceneError(f"--steps {steps}: {exc}") from None
-    plot = _plot_target(args.plot)
-    diagram = phase_diagram(args.body, args.dims, steps, progress=None if _quiet(args) else
-                            (lambda msg: print(msg, file=sys.stderr)))
+    plot = _plot_target(args.output)
+    diagram = phase_with_sources(args.body, args.dims, steps, progress=None if _quiet(args) else
+                                 (lambda msg: print(msg, file=sys.stderr)))
     print(phase_json(diagram) if args.format == "json" else phase_table(diagram))
     if plot:
         _write_plot(phase_plot, diagram, plot, args)
@@ -324,16 +344,18 @@ def _phase(args) -> int:
 
 def _atlas_args(p):
     p.add_argument("body", help="box (edges 1, b/a, c/a; the cell b/a = c/a = 1 is the cube)")
-    p.add_argument("--ba", required=True, help="b/a: a grid A:B:N (N values from A to B), a list v1,v2,... or a value")
+    p.add_argument("--ba", required=True, help="b/a: a grid A:B:N (N values from A to B), a list v1,v2,... or a value "
+                                               "(at most 2000 values; at most 10000 shapes b/a x c/a)")
     p.add_argument("--ca", required=True, help="c/a: the same forms")
     p.add_argument("--density", required=True, help="the sweep of densities, A:B:N or a list, symmetric about 1/2")
-    p.add_argument("--out", required=True, type=Path, help="directory: parts/ (one Parquet file per cell), "
-                                                          "atlas.parquet, checks.md")
+    p.add_argument("--output", "--out", required=True, type=Path, dest="output",
+                   help="directory: parts/ (one Parquet file per cell), atlas.parquet, checks.md (--out: the "
+                        "earlier name)")
     p.add_argument("--scheduler", help="address of a running Dask scheduler (default: a local cluster)")
-    p.add_argument("--workers", help="worker processes of the local cluster (default: the machine's cores); "
+    p.add_argument("--workers", help="worker processes of the local cluster, 0 to 64 (default: the machine's cores); "
                                      "0 computes here without Dask")
     p.add_argument("--figures", type=Path, help="directory for the slice figures atlas-c<c/a>.png")
-    p.epilog = ("Cells already written in --out by the same code with the same density sweep are skipped (a "
+    p.epilog = ("Cells already written in --output by the same code with the same density sweep are skipped (a "
                 "stopped run resumes). "
                 f"Needs the optional dependencies: pip install 'symfloat[atlas]'. {EXIT_STATUS}.")
 
@@ -361,14 +383,14 @@ def _atlas(args) -> int:
 
     ba, ca, densities = shape_grid(args.ba, "--ba"), shape_grid(args.ca, "--ca"), density_grid(args.density)
     check_domain(ba, ca, densities)
-    workers = None if args.workers is None else parse_whole(args.workers, "--workers", 0, 1024)
+    workers = None if args.workers is None else parse_whole(args.workers, "--workers", 0, MAX_WORKERS)
     scheduler = _scheduler(args.scheduler)
     if scheduler and workers is not None:
         raise InputError("--workers sizes the local cluster; with --scheduler the cluster has its own workers")
-    writable_target(args.out / "atlas.parquet")
+    writable_folder(args.output)
     if args.figures is not None:
-        writable_target(args.figures / "atlas-c1.png")
-    return run_atlas(args.out, ba, ca, densities, scheduler, workers, args.figures, quiet=_quiet(args),
+        writable_folder(args.figures)
+    return run_atlas(args.output, ba, ca, densities, scheduler, workers, args.figures, quiet=_quiet(args),
                      say=lambda m: _say(args, m))
 
 
@@ -383,10 +405,10 @@ def _bench_args(p):
 
 def _bench(args) -> int:
     from .numerics.document import generate
-    folder = args.output or in_project("docs")
+    folder = args.output or in_outputs("docs")
     if args.derivations:
         return _bench_derivations(args, folder)
-    writable_target(folder / "numerics.md")
+    writable_folder(folder)
     quiet = _quiet(args)
     written = generate(folder, quick=args.quick,
                        progress=lambda msg: quiet or print(msg, file=sys.stderr, flush=True))
@@ -398,7 +420,7 @@ def _bench_derivations(args, folder: Path) -> int:
     import platform
 
     from .numerics.cost import cost_markdown, cost_rows, write_section
-    path = writable_target(folder / "performance.md")
+    path = writable_folder(folder) / "performance.md"
     rows = cost_rows(progress=lambda msg: _say(args, msg))
     machine = f"{platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}"
     write_atomic(path, write_section(path, cost_markdown(rows, machine)).encode("utf-8"))
@@ -413,6 +435,8 @@ def _coverage_args(p):
     p.add_argument("--write", action="store_true", help="write docs/coverage.md (and docs/readings.md)")
     p.add_argument("--update-baseline", action="store_true", help="rewrite docs/coverage-baseline.json "
                    "(and docs/readings-baseline.json) to the current lists")
+    p.add_argument("--output", type=Path, help="folder of the documents and baselines read and written instead "
+                                               "of docs/ (of the library, else of the checkout)")
 
 
 def _coverage(args) -> int:
@@ -420,14 +444,42 @@ def _coverage(args) -> int:
     return run(args)
 
 
+def _check_args(p):
+    p.add_argument("printed", help=r"the printed formula in LaTeX, e.g. '\bar z = \frac{3(2r-h)^2}{3(3r-h)}'")
+    p.add_argument("--against", action="append", required=True,
+                   help=r"a formula or definition in LaTeX (S = expression, integrals \int_a^b f \, dx "
+                        "allowed); repeat for several")
+    p.add_argument("--where", default="", help="inequalities that restrict the domain, e.g. '0 < h < r'")
+    p.add_argument("--domain", help="sampling intervals, e.g. 'r=1:3, h=0:1' (default 0:4 for every symbol)")
+    p.add_argument("--format", choices=("text", "json"), default="text")
+    p.add_argument("--output", type=Path, help="write the report to this file instead of stdout")
+    p.epilog = ("Exit status 0: the print holds; 1: it is refuted or undecided; 2: a formula the reader "
+                f"does not accept. {EXIT_STATUS}.")
+
+
+def _check(args) -> int:
+    from .engine.formula_check import check, parse_domain
+    from .report.formula_check import check_json, check_text
+    out = writable_target(args.output) if args.output is not None else None
+    result = check(args.printed, args.against, where=args.where, domain=parse_domain(args.domain))
+    text = check_json(result) if args.format == "json" else check_text(result)
+    if out is None:
+        print(text, end="")
+    else:
+        write_atomic(out, text.encode("utf-8"))
+        _say(args, f"wrote {out}")
+    return EXIT_OK if result.verdict == "holds" else EXIT_CHECK
+
+
 def _site_args(p):
-    p.add_argument("--out", type=Path, help="folder for the static site (default: build/site of the checkout); "
-                                            "an existing folder must be empty or hold an earlier site")
+    p.add_argument("--output", "--out", type=Path, dest="output",
+                   help="folder for the static site (default: build/site of the library or the checkout; --out: "
+                        "the earlier name); an existing folder must be empty or hold an earlier site")
 
 
 def _site(args) -> int:
     from .site.build import build_site          # Sphinx and MyST-NB: only when the site is built
-    out = args.out or in_project("build/site")
+    out = writable_folder(args.output) if args.output else in_outputs("build/site")
     changed, warnings = build_site(out, in_project("docs"), in_project("notebooks"),
                                    progress=lambda msg: _say(args, msg))
     for w in warnings:
@@ -448,7 +500,7 @@ COMMANDS = {
     "errata": Command("write docs/errata.md, or print a selection's errata (Markdown or JSON)",
                       _errata_args, _errata),
     "notebooks": Command("build and execute the derivation notebooks", _notebooks_args, _notebooks),
-    "run": Command("verify everything and write every report and notebook", _search_proofs_arg, _run),
+    "run": Command("verify everything and write every report and notebook", _run_args, _run),
     "scene": Command("every equilibrium of one body at one density", _scene_args, _scene),
     "phase": Command("stable positions against density, thresholds located", _phase_args, _phase),
     "atlas": Command("the stability atlas of the box over (b/a, c/a, s), computed on Dask", _atlas_args, _atlas),
@@ -457,6 +509,8 @@ COMMANDS = {
                         "with --readings the readings checked against the print", _coverage_args, _coverage),
     "site": Command("build the static web site (annotated edition, errata, notebooks, numerics) from the "
                     "committed records", _site_args, _site),
+    "check": Command("check one printed formula (LaTeX) against a formula or a definition; a refuted print "
+                     "gets a counterexample and the likeliest corrections", _check_args, _check),
 }
 
 
@@ -466,6 +520,7 @@ def _parser():
     common.add_argument("--no-cache", action="store_true", help="re-check every derivation")
     p = _Parser(prog="symfloat", description="Machine-checked re-derivation of classical "
                 "texts on floating bodies and centroids.", epilog=EXIT_STATUS + ".")
+    p.add_argument("--version", action="version", version=f"symfloat {__version__}")
     sub = p.add_subparsers(dest="command", required=True)
     for name, command in COMMANDS.items():
         sp = sub.add_parser(name, parents=[common], help=command.help, epilog=EXIT_STATUS + ".")
@@ -503,6 +558,7 @@ def main(argv=None) -> int:
     with _Interrupts() as interrupts:
         try:
             library_folders()                 # a further library of texts that is not there: one line, exit 2
+            check_environment()               # SYMFLOAT_WORKERS, SYMFLOAT_SLOWDOWN: likewise
             return COMMANDS[args.command].run(args)
         except KeyboardInterrupt:
             pass

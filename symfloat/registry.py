@@ -1,92 +1,148 @@
-"""The derivation modules and their dependency graph.
+"""The derivation packages and their dependency graph.
 
-Each module of the ``derivations`` package defines one ``DERIVATION``; its
-module name is the derivation id with ``-`` written as ``_``.  A selector (a
-source key or an id prefix) picks derivations by module name.  The dependency
-graph is read from the modules' source (the literal ``requires=(...)`` of
-their ``Derivation``), so selecting, ordering and finding a cached report
-import no derivation module at all; :func:`load` imports one when it is
-checked, and confirms that what it declares is what was read.
+Each derivation is a package of ``symfloat.derivations`` (the checkout's top-level ``derivations/``
+folder, mapped into the installed package, and the ``derivations/`` folders of the libraries named by
+``SYMFLOAT_LIBRARY``), split by concern (:data:`symfloat.manifest.PARTS`): ``statements`` (what the
+source says and how it is derived: symbols, steps, quotes, errata; defines ``DERIVATION``),
+``witnesses`` (declared first-principles witnesses), ``predictors`` (the printed formulas read at a
+scene's numbers) and ``outputs`` (reports and figures).  Its ``manifest.toml`` holds the literals the
+library needs before importing anything (:mod:`symfloat.manifest`): selecting, ordering, keying the
+cache and finding who predicts a body or provides a kind import no derivation.  :func:`statements`
+imports what a derivation says; :func:`load` the whole package, for checking it.
 """
 from __future__ import annotations
 
-import ast
 import importlib
-import pkgutil
-import re
 from functools import cache
 from pathlib import Path
 
-from . import derivations
 from .errors import InputError
-from .model.derivation import Derivation
+from .manifest import PARTS, Manifest, read_manifest
 
-__all__ = ["module_names", "module_path", "requires", "providing", "load", "select", "cross_use_problems",
-           "SelectorError"]
+__all__ = ["ids", "manifest", "files", "requires", "providing", "predicting", "provided", "predictor", "statements",
+           "load", "part", "select", "cross_use_problems", "SelectorError"]
 
 
 class SelectorError(InputError):
     """A selector that matches no derivation (exit status 2)."""
 
 
-@cache
-def module_names() -> list[str]:
-    """All derivation module names, sorted."""
-    return sorted(m.name for m in pkgutil.iter_modules(derivations.__path__) if not m.name.startswith("_"))
-
-
-def module_path(derivation_id: str) -> Path:
-    """The source file of the derivation module *derivation_id*."""
-    name = derivation_id.replace("-", "_")
-    if name not in module_names():
-        raise SelectorError(f"no derivation {derivation_id!r}")
-    return next(Path(folder) / f"{name}.py" for folder in derivations.__path__ if (Path(folder) / f"{name}.py").is_file())
+def _folders() -> list[Path]:
+    from . import derivations
+    return [Path(p) for p in derivations.__path__]
 
 
 @cache
+def _manifests() -> dict[str, Manifest]:
+    found: dict[str, Manifest] = {}
+    for folder in _folders():
+        for sub in sorted(folder.iterdir()) if folder.is_dir() else ():
+            if not (sub / "manifest.toml").is_file():
+                continue
+            m = read_manifest(sub)
+            if m.id in found:
+                raise RuntimeError(f"two derivations {m.id!r}: {found[m.id].folder} and {m.folder}")
+            found[m.id] = m
+    return dict(sorted(found.items()))
+
+
+def ids() -> list[str]:
+    """All derivation ids, sorted."""
+    return list(_manifests())
+
+
+def manifest(derivation_id: str) -> Manifest:
+    """The manifest of *derivation_id*."""
+    try:
+        return _manifests()[derivation_id]
+    except KeyError:
+        raise SelectorError(f"no derivation {derivation_id!r}") from None
+
+
+def files(derivation_id: str) -> list[Path]:
+    """The files of a derivation's package (its modules, manifest and proof certificates), sorted."""
+    folder = manifest(derivation_id).folder
+    return sorted(p for p in folder.rglob("*") if p.is_file() and "__pycache__" not in p.parts)
+
+
 def requires(derivation_id: str) -> tuple[str, ...]:
-    """The ids a derivation builds on, read from the literal ``requires=`` of its ``Derivation(...)``."""
-    path = module_path(derivation_id)
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-        if isinstance(node, ast.Call) and getattr(node.func, "id", None) == "Derivation":
-            for kw in node.keywords:
-                if kw.arg == "requires":
-                    try:
-                        return tuple(ast.literal_eval(kw.value))
-                    except ValueError:
-                        raise RuntimeError(f"{path.name}: requires=... must be a literal tuple of ids") from None
-            return ()
-    raise RuntimeError(f"{path.name}: no Derivation(...) found")
+    """The ids a derivation builds on (its manifest's ``requires``)."""
+    return manifest(derivation_id).requires
 
 
-_PROVIDES = re.compile(r"""\.provides\(\s*["'](\w+)["']""")
+def providing(kind: str) -> tuple[str, ...]:
+    """Ids of the derivations whose manifest says they provide *kind*."""
+    return tuple(did for did, m in _manifests().items() if kind in m.provides)
+
+
+def predicting(body: str) -> list[str]:
+    """Ids of the derivations whose manifest says they predict equilibria of *body*."""
+    return [did for did, m in _manifests().items() if body in m.predicts]
 
 
 @cache
-def providing(kind: str) -> tuple[str, ...]:
-    """Ids of the derivations that provide *kind* (``d.provides("kind", ...)``, read from their source)."""
-    return tuple(m.replace("_", "-") for m in module_names()
-                 if kind in _PROVIDES.findall(module_path(m).read_text(encoding="utf-8")))
+def part(derivation_id: str, name: str):
+    """The module *name* (one of :data:`~symfloat.manifest.PARTS`) of a derivation's package, imported
+    (its declarations join the derivation), or ``None`` when the package has none."""
+    if name not in PARTS:
+        raise ValueError(f"unknown part {name!r}; parts: {', '.join(PARTS)}")
+    m = manifest(derivation_id)
+    if not m.has(name):
+        return None
+    from . import derivations
+    return importlib.import_module(f"{derivations.__name__}.{m.package}.{name}")
+
+
+@cache
+def statements(derivation_id: str):
+    """The derivation *derivation_id*, importing its statements module and no other part: cheap, and all
+    a reader of the quotes needs (held to the manifest's id, source and requires)."""
+    d = part(derivation_id, "statements").DERIVATION
+    m = manifest(derivation_id)
+    if d.id != derivation_id or d.source != m.source:
+        raise RuntimeError(f"{m.folder}: the statements define {d.id!r} of {d.source!r}, the manifest "
+                           f"{derivation_id!r} of {m.source!r}")
+    if tuple(d.requires) != m.requires:
+        raise RuntimeError(f"{m.folder}: requires {d.requires} differs from the manifest's {m.requires}")
+    return d
+
+
+@cache
+def load(derivation_id: str):
+    """The derivation with every part of its package imported (witnesses declared, predictor and
+    provided values registered), and the package: what a check, a bench or a test needs.  The
+    declarations are held to the manifest (bodies predicted, kinds provided)."""
+    d = statements(derivation_id)
+    for name in PARTS[1:]:
+        part(derivation_id, name)
+    m = manifest(derivation_id)
+    bodies = tuple(d.predictor.bodies) if d.predictor else ()
+    if set(bodies) != set(m.predicts) or set(d.provided) != set(m.provides):
+        raise RuntimeError(f"{m.folder}: the package predicts {bodies} and provides {sorted(d.provided)}, the "
+                           f"manifest says {m.predicts} and {sorted(m.provides)}")
+    from . import derivations
+    return d, importlib.import_module(f"{derivations.__name__}.{m.package}")
+
+
+def predictor(derivation_id: str):
+    """The derivation with its predictor registered: its statements and predictors imported and nothing
+    else (no witness is declared), as a scene reads it."""
+    part(derivation_id, "predictors")
+    d = statements(derivation_id)
+    if d.predictor is None or set(d.predictor.bodies) != set(manifest(derivation_id).predicts):
+        raise RuntimeError(f"{manifest(derivation_id).folder}: the predictors do not predict the bodies the "
+                           f"manifest lists ({manifest(derivation_id).predicts})")
+    return d
 
 
 def provided(kind: str) -> list[tuple[str, object]]:
-    """``(derivation id, value)`` for every value the derivations provide as *kind*, in id order."""
-    return [(did, value) for did in providing(kind) for value in load(did)[0].provided.get(kind, ())]
-
-
-@cache
-def load(derivation_id: str) -> tuple[Derivation, object]:
-    """The derivation with *derivation_id* and the module that defines it."""
-    name = derivation_id.replace("-", "_")
-    if name not in module_names():
-        raise SelectorError(f"no derivation {derivation_id!r}")
-    module = importlib.import_module(f"{derivations.__name__}.{name}")
-    d = module.DERIVATION
-    if d.id != derivation_id:
-        raise RuntimeError(f"module {name} defines {d.id!r}, expected {derivation_id!r}")
-    if tuple(d.requires) != requires(derivation_id):
-        raise RuntimeError(f"module {name}: requires {d.requires} differs from what its source declares")
-    return d, module
+    """``(derivation id, value)`` for every value the derivations provide as *kind*, in id order; imports
+    only the module each manifest names for it."""
+    out = []
+    for did in providing(kind):
+        part(did, manifest(did).provides[kind])
+        out += [(did, value) for value in statements(did).provided.get(kind, ())]
+    return out
 
 
 def select(selector: str | None = None) -> list[str]:
@@ -95,13 +151,13 @@ def select(selector: str | None = None) -> list[str]:
     ``None`` selects everything; a source key selects its derivations; any
     other string selects the ids that start with it.
     """
-    ids = [m.replace("_", "-") for m in module_names()]
+    known = ids()
     if selector:
-        picked = [i for i in ids if i.startswith(selector)]
+        picked = [i for i in known if i.startswith(selector)]
         if not picked:
-            raise SelectorError(f"selector {selector!r} matches no derivation; known: {', '.join(ids)}")
+            raise SelectorError(f"selector {selector!r} matches no derivation; known: {', '.join(known)}")
     else:
-        picked = ids
+        picked = known
     ordered: list[str] = []
 
     def visit(i, trail=()):
@@ -118,7 +174,7 @@ def select(selector: str | None = None) -> list[str]:
     return ordered
 
 
-def cross_use_problems(d: Derivation) -> list[str]:
+def cross_use_problems(d) -> list[str]:
     """Every ``derivation-id:step`` in the ``uses`` of *d*'s steps that does not name a step of one of *d*'s
     ancestors (its ``requires``, transitively): a dangling or unchecked dependency, reported as a failure."""
     ancestors, todo = set(), list(d.requires)
@@ -136,6 +192,6 @@ def cross_use_problems(d: Derivation) -> list[str]:
             if other not in ancestors:
                 problems.append(f"step {s.name!r} uses {use!r}, but {other!r} is not among the derivations "
                                 f"{d.id} requires")
-            elif step not in {t.name for t in load(other)[0].steps}:
+            elif step not in {t.name for t in statements(other).steps}:
                 problems.append(f"step {s.name!r} uses {use!r}, which names no step of {other}")
     return problems

@@ -3,7 +3,13 @@
 The library is checked as on a machine a billion times slower than this one
 (``SYMFLOAT_SLOWDOWN``): every proof search would stop at once, so the
 committed verdicts must rest on replayed certificates alone, which no clock
-can change."""
+can change.
+
+A test run reads no cache it did not write: its cache (:func:`cache_dir`) is a folder of this run's
+temporary directory, which pytest makes anew for every run (and empties first when ``--basetemp``
+names it), and ``SYMFLOAT_CACHE`` points there for the whole run, so that a command a test runs
+without naming a cache, in this process or a subprocess, cannot read the checkout's
+``.symfloat-cache`` or one the environment named."""
 import os
 from contextlib import contextmanager
 
@@ -34,6 +40,18 @@ def cache_dir(tmp_path_factory):
         shared.mkdir(exist_ok=True)
         return shared
     return tmp_path_factory.mktemp("symfloat-cache")
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _the_runs_own_cache(cache_dir):
+    """``SYMFLOAT_CACHE`` is the run's cache while the tests run (see the module docstring)."""
+    old = os.environ.get("SYMFLOAT_CACHE")
+    os.environ["SYMFLOAT_CACHE"] = str(cache_dir)
+    yield
+    if old is None:
+        os.environ.pop("SYMFLOAT_CACHE", None)
+    else:
+        os.environ["SYMFLOAT_CACHE"] = old
 
 
 def _verify(selector, cache_dir):

@@ -115,7 +115,7 @@ def test_long_box_check_against_the_printed_tables():
     """Box 1 x 3/2 x 20 at s = 0.3: Scheeffer IX's tables (section 3/2 x 1, n = 9/4 > 6 s(1 - s)) give
     the position with the short edge b = a vertical (face x up) as the only stable one; the atlas
     agrees when it has exactly that, and the check fails when a stable face y up is added."""
-    tables = load("scheeffer-ix")[1].tables_prediction
+    tables = load("scheeffer-ix")[1].predictors.tables_prediction
     assert [p["phi"] for p in tables(0.3, 1.5) if p["stability"] == "stable"] == [0.0]
     meta = {"b_a": ["3/2"], "c_a": ["20"], "densities": ["1/5", "4/5"]}
     good = [_row(F(3, 2), 20, 0, 0.2, 0.8, [FACE_X])]

@@ -53,6 +53,7 @@ def test_a_selection_prints_its_errata_or_writes_them_where_asked(in_tmp, capsys
     printed = capsys.readouterr().out
     assert printed.startswith("# Errata") and "## graefe" in printed and "## scheeffer" not in printed
     assert not (in_tmp / "docs").exists()
+    (in_tmp / "sel").mkdir()
     assert main(["errata", "graefe", "--quiet", "--output", "sel/graefe.md"]) == 0
     assert (in_tmp / "sel" / "graefe.md").read_text(encoding="utf-8") == printed
 

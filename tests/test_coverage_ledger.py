@@ -63,7 +63,7 @@ def test_every_span_has_one_status_and_quoted_spans_overlap_their_quote():
 
 
 def test_known_entries():
-    # hasab line 11 is quoted as hasab/s (DISPLAYS[0] of symfloat/derivations/hasab.py)
+    # hasab line 11 is quoted as hasab/s (DISPLAYS[0] of derivations/hasab/statements.py)
     assert _entry("hasab", 11, "$$s = \\varrho.$$").quoted_by == ("hasab/s",)
     # scheeffer line 48: "über dem Schwerpunkt $S_1$" -- a bare symbol
     assert _entry("scheeffer", 48, "$S_1$").reason == "bare-symbol"

@@ -15,7 +15,8 @@ from symfloat.engine.witness import Case, Precision
 from symfloat.model.source import SOURCES
 from symfloat.registry import load
 
-D, MODULE = load("euler-192-219")
+D, PACKAGE = load("euler-192-219")
+MODULE, WITNESSES = PACKAGE.statements, PACKAGE.witnesses
 TEXT = SOURCES["euler"].text()
 RANGE = TEXT[TEXT.index("§. 192."):TEXT.index("§. 220.")]
 
@@ -183,9 +184,9 @@ def test_the_quad_L_correction_must_hold():
 def _arm(hv, phi, dps):
     """The righting arm of the module's witness box (1 x 1 x 2 at s = 1/2, G hv above B) heeled by phi, clipped
     by the floating witness at dps digits."""
-    w = FloatingWitness("arm", "", (), (), body=MODULE.box_with_G(sp.sympify(hv)), up=MODULE.HEEL,
-                        density=MODULE.sw, quantity=MODULE.ARM[MODULE.HEEL])
-    return w.measure(Case({MODULE.sw: sp.Rational(1, 2), MODULE.phi: sp.sympify(phi)}), Precision(dps, 0.0))
+    w = FloatingWitness("arm", "", (), (), body=WITNESSES.box_with_G(sp.sympify(hv)), up=WITNESSES.HEEL,
+                        density=WITNESSES.sw, quantity=WITNESSES.ARM[WITNESSES.HEEL])
+    return w.measure(Case({WITNESSES.sw: sp.Rational(1, 2), MODULE.phi: sp.sympify(phi)}), Precision(dps, 0.0))
 
 
 def test_the_heeled_box_arm_is_the_clipped_bodys():

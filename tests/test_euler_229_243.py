@@ -13,7 +13,8 @@ from symfloat.engine.check import check_derivation
 from symfloat.model.source import SOURCES
 from symfloat.registry import load
 
-D, MODULE = load("euler-229-243")
+D, PACKAGE = load("euler-229-243")
+MODULE = PACKAGE.statements                      # the statements: symbols, the tables rebuilt, the Beta integrals
 TEXT = SOURCES["euler"].text()
 RANGE = TEXT[TEXT.index("§ 229."):]          # §229 to the end of the transcription (§243)
 
@@ -274,7 +275,7 @@ def test_a_table_correction_must_hold():
 
 def test_the_docstring_table_shows_the_rebuilt_values():
     # the Markdown table of the module docstring: one row per κ with the transcribed and the rebuilt entries
-    doc = MODULE.__doc__
+    doc = PACKAGE.__doc__
     for kv in MODULE.KAPPAS:
         row = next(line for line in doc.splitlines() if line.startswith("| %s |" % kv))
         assert MODULE.N_PRINTED[kv][0].split("\t")[1] in row and MODULE.K_PRINTED[kv][0].split("\t")[1] in row

@@ -22,7 +22,7 @@ pytest.importorskip("matplotlib")
 
 from matplotlib.collections import QuadMesh  # noqa: E402
 
-from symfloat.derivations import _ix_figure as ix_figure  # noqa: E402
+from symfloat.derivations.scheeffer_ix import figure as ix_figure  # noqa: E402
 from symfloat.errors import CheckFailed  # noqa: E402
 from symfloat.registry import load  # noqa: E402
 from symfloat.report import figures  # noqa: E402
@@ -31,7 +31,7 @@ from symfloat.report.phase_figure import phase_figure, phase_intervals  # noqa: 
 from symfloat.report.phase_data import PHASES, phase_figures, phase_stamp  # noqa: E402
 
 DOCS = Path(__file__).resolve().parents[1] / "docs"
-_, IX = load("scheeffer-ix")
+IX = load("scheeffer-ix")[1].predictors
 
 
 def _figure(name):

@@ -19,7 +19,7 @@ import symfloat.project as project
 from symfloat.engine.cache import ReportCache
 from symfloat.engine.runner import verify
 from symfloat.errors import CheckFailed
-from symfloat.report.files import OutputError, write_atomic, write_if_changed
+from symfloat.files import OutputError, write_atomic, write_if_changed
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -83,12 +83,21 @@ def test_a_read_only_directory_is_refused_before_any_work(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("argv, message", [
-    (["scene", "cube", "--density", "0.3", "--plot", "x.txt"], "--plot writes a PNG image"),
+    (["scene", "cube", "--density", "0.3", "--plot", "x.txt"], "--output writes a PNG image"),
     (["scene", "cube", "--density", "0.3", "--plot", "/dev/null/x.png"], "/dev/null is not a directory"),
     (["errata", "graefe-s1", "--output", "."], "it is a directory"),
     (["errata", "graefe", "--output", str(ROOT / "docs" / "errata.md")], "is the record of every source"),
     (["verify", ""], "a selector is a source key"),
     (["verify", "graefe\n"], "a selector is a source key"),
+    # symfloat issue 32: a folder that is not there is not created, /proc takes no file even as root,
+    # a name longer than the file system allows (255 bytes) is one line, not OSError 36
+    (["scene", "cube", "--density", "0.3", "--plot", "/nonexistent-symfloat/dir/x.png"],
+     "the folder /nonexistent-symfloat/dir does not exist"),
+    (["scene", "cube", "--density", "0.3", "--plot", "/proc/x.png"], "cannot write /proc/x.png"),
+    (["scene", "cube", "--density", "0.3", "--plot", "a" * 300 + ".png"], "File name too long"),
+    (["errata", "graefe-s1", "--output", "a" * 300 + ".md"], "File name too long"),
+    (["notebooks", "graefe-s1", "--output", "a" * 300], "File name too long"),
+    (["notebooks", "graefe-s1", "--output", "no/such/tree"], "symfloat creates one folder, not a tree"),
 ])
 def test_bad_paths_and_selectors_are_one_line_before_any_work(argv, message, capsys, monkeypatch, tmp_path):
     monkeypatch.chdir(tmp_path)
@@ -107,12 +116,32 @@ def test_an_unusable_cache_is_one_line(capsys, monkeypatch):
     assert "cannot use the cache directory /dev/null (SYMFLOAT_CACHE): not a directory" in capsys.readouterr().err
 
 
+@pytest.mark.parametrize("variable, value, message", [
+    # symfloat issue 32: each of these was a ValueError or OSError traceback
+    ("SYMFLOAT_WORKERS", "²", "SYMFLOAT_WORKERS must be a whole number from 1 to 64, not '²'"),
+    ("SYMFLOAT_WORKERS", "9" * 5000, "SYMFLOAT_WORKERS must be a whole number from 1 to 64"),
+    ("SYMFLOAT_WORKERS", "0", "SYMFLOAT_WORKERS must be a whole number from 1 to 64, not '0'"),
+    ("SYMFLOAT_SLOWDOWN", "fast", "SYMFLOAT_SLOWDOWN must be a number >= 1, not 'fast'"),
+    ("SYMFLOAT_SLOWDOWN", "0.5", "SYMFLOAT_SLOWDOWN must be a number >= 1, not '0.5'"),
+    ("SYMFLOAT_SLOWDOWN", "nan", "SYMFLOAT_SLOWDOWN must be a number >= 1, not 'nan'"),
+    ("SYMFLOAT_CACHE", "/tmp/" + "a" * 300, "SYMFLOAT_CACHE): File name too long"),
+    ("SYMFLOAT_LIBRARY", "/tmp/" + "a" * 300, "is not a usable folder (File name too long)"),
+])
+def test_an_unusable_environment_variable_is_one_line_and_exit_2(variable, value, message, capsys, monkeypatch):
+    monkeypatch.setenv(variable, value)
+    monkeypatch.setattr("symfloat.engine.runner.select", lambda *a, **k: pytest.fail("work started"))
+    assert cli.main(["verify", "graefe-s1", "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("symfloat: ") and message in err and err.count("\n") == 1, err
+
+
 def test_default_outputs_belong_to_the_checkout(monkeypatch, tmp_path, capsys, graefe_reports):
     monkeypatch.chdir(tmp_path)
     assert project.project_root() == ROOT                     # wherever the command runs
     monkeypatch.setattr(cli, "verify", lambda *a, **k: graefe_reports)
+    (tmp_path / "checkout").mkdir()                           # a checkout (its docs/ is made if missing)
+    monkeypatch.delenv("SYMFLOAT_LIBRARY", raising=False)                 # no library: the checkout's
     monkeypatch.setattr(project, "project_root", lambda: tmp_path / "checkout")
-    monkeypatch.setattr(cli, "project_root", lambda: tmp_path / "checkout")
     assert cli.main(["errata", "--quiet"]) == 0
     assert (tmp_path / "checkout" / "docs" / "errata.md").read_text(encoding="utf-8").startswith("# Errata")
     assert not (tmp_path / "docs").exists()

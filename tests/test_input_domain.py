@@ -257,6 +257,18 @@ def test_inside_the_domain_the_index_check_closes_long(case):
     _in_domain_property(case)
 
 
+def test_a_polygon_whose_vertices_round_to_one_float_is_refused_or_answered():
+    # symfloat issue 32: both were ZeroDivisionError in _polygon_extent (float edges of length 0)
+    with pytest.raises(SceneError, match="measures 0 across"):
+        make_scene("section", "1/2", polygon="0,0 1e-400,0 0,1e-400")
+    near = make_scene("section", "1/2", polygon=f"0,0 1,0 1,1 0.{'9' * 59},1.{'0' * 58}1 0,1")
+    assert Fraction(near.polygon[3][1]) - 1 == Fraction(1, 10**59)
+    width, diameter = thinness(near)
+    # the unit square with a bump of 1e-59: width 1 (between y = 0 and the top, within 1e-59), diameter
+    # the diagonal from (0, 0) to (1 - 1e-59, 1 + 1e-59), sqrt(2) to double precision
+    assert width == pytest.approx(1, abs=1e-15) and diameter == pytest.approx(2 ** 0.5, abs=1e-15)
+
+
 # ------------------------------------------------------------------ the command line, every field
 
 class _Work(Exception):
@@ -311,7 +323,7 @@ def no_work(monkeypatch, tmp_path):
     monkeypatch.setattr(solver_package, "solve", work)
     monkeypatch.setattr(cli, "verify", work)
     monkeypatch.setattr(cli, "select", work)            # importing derivations is work too
-    monkeypatch.setattr("symfloat.solver.phase.phase_diagram", work)
+    monkeypatch.setattr("symfloat.comparison.thresholds.phase_with_sources", work)
     monkeypatch.setattr("symfloat.numerics.document.generate", work)
     monkeypatch.setenv("SYMFLOAT_CACHE", str(tmp_path / "cache"))
     monkeypatch.chdir(tmp_path)
@@ -333,3 +345,68 @@ def test_every_field_of_the_command_line_is_answered_or_refused_in_one_line(no_w
 @given(command_lines())
 def test_every_field_of_the_command_line_long(no_work, argv):
     _cli_property(argv)
+
+
+# ------------------------------------------------------------------ environment variables and paths
+
+env_values = st.one_of(
+    st.text(max_size=20),
+    st.text(alphabet=st.characters(categories=["Nd", "No"]), min_size=1, max_size=6),   # ², ٣, unicode digits
+    st.builds(lambda k: "9" * k, st.integers(1, 6000)),                                 # past int()'s 4300 digits
+    st.sampled_from(["0", "1", "2", "64", "65", "-1", "1e9", "inf", "nan", "0.5", "1e400", " 2", "2\n"]),
+)
+components = st.one_of(
+    st.text(alphabet=st.characters(blacklist_categories=["Cs"], blacklist_characters="/\x00"), min_size=1,
+            max_size=12).filter(lambda c: c != ".."),
+    st.builds(lambda k: "a" * k, st.integers(250, 300)),                               # around NAME_MAX = 255
+    st.sampled_from([".", "proc", "dev", "null", "nonexistent"]),
+)
+# relative paths stay in the test's own folder (a cache is created where SYMFLOAT_CACHE says); the absolute
+# ones can take nothing: /proc, a path through a device, a name longer than any file system allows
+paths = st.one_of(
+    st.lists(components, min_size=1, max_size=4).map("/".join),
+    st.builds(lambda root, parts: root + "/".join(parts), st.sampled_from(["/proc/", "/dev/null/", "/" + "a" * 300 + "/"]),
+              st.lists(components, min_size=0, max_size=2)),
+)
+
+
+@st.composite
+def environments(draw):
+    """A command and values for the environment variables a command reads, or a path for its output."""
+    env = {}
+    for variable in ("SYMFLOAT_WORKERS", "SYMFLOAT_SLOWDOWN", "SYMFLOAT_QUIET"):
+        if draw(st.booleans()):
+            env[variable] = draw(env_values)
+    for variable in ("SYMFLOAT_CACHE", "SYMFLOAT_LIBRARY"):
+        if draw(st.booleans()):
+            env[variable] = draw(paths)
+    argv = draw(st.sampled_from([["verify", "graefe-s1"], ["errata", "graefe-s1", "--output"],
+                                 ["scene", "cube", "--density", "0.3", "--plot"], ["notebooks", "graefe-s1", "--output"]]))
+    if argv[-1].startswith("--"):
+        argv = [*argv, draw(paths) + (".png" if argv[0] == "scene" else "")]
+    return env, argv
+
+
+def _environment_property(env, argv, monkeypatch):
+    for variable, value in env.items():
+        monkeypatch.setenv(variable, value.replace("\x00", ""))
+    code, err = _exit_status([*argv, "--quiet"])
+    assert "Traceback" not in err
+    if code is None:
+        return                                       # accepted: the work would start here
+    assert code == 2, (env, argv, code, err)
+    assert err.startswith("symfloat: ") and err.count("\n") == 1, err
+
+
+@QUICK
+@given(case=environments())
+@example(case=({"SYMFLOAT_WORKERS": "²"}, ["verify", "graefe-s1"]))
+@example(case=({"SYMFLOAT_WORKERS": "9" * 5000}, ["verify", "graefe-s1"]))
+@example(case=({"SYMFLOAT_SLOWDOWN": "fast"}, ["verify", "graefe-s1"]))
+@example(case=({"SYMFLOAT_CACHE": "/tmp/" + "a" * 300}, ["verify", "graefe-s1"]))
+@example(case=({"SYMFLOAT_LIBRARY": "/tmp/" + "a" * 300}, ["verify", "graefe-s1"]))
+@example(case=({}, ["scene", "cube", "--density", "0.3", "--plot", "a" * 300 + ".png"]))
+@example(case=({}, ["errata", "graefe-s1", "--output", "/proc/x.md"]))
+def test_every_environment_variable_and_path_is_accepted_or_refused_in_one_line(no_work, monkeypatch, case):
+    with monkeypatch.context() as m:
+        _environment_property(*case, m)

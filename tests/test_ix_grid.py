@@ -4,9 +4,9 @@ from fractions import Fraction
 from pathlib import Path
 
 from symfloat.registry import load
-from symfloat.derivations import _ix_grid as ix_grid
+from symfloat.derivations.scheeffer_ix import grid as ix_grid
 
-_, IX = load("scheeffer-ix")
+IX = load("scheeffer-ix")[1].predictors
 
 
 def _cells(densities, ratios):

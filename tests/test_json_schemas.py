@@ -33,7 +33,7 @@ def run(capsys, monkeypatch, cache_dir, tmp_path):
     return call
 
 
-@pytest.mark.parametrize("name", ["verify", "errata", "scene", "phase"])
+@pytest.mark.parametrize("name", ["verify", "errata", "scene", "phase", "report", "check"])
 def test_schemas_are_valid_json_schemas(name):
     Draft202012Validator.check_schema(schema(name))
 

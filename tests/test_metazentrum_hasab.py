@@ -1,5 +1,5 @@
-"""The metacentre lesson (symfloat/derivations/metazentrum.py) and the square prism by the energy method
-(symfloat/derivations/hasab.py): verdicts and errata pinned, the density thresholds of hasab recomputed here by
+"""The metacentre lesson (derivations/metazentrum/) and the square prism by the energy method
+(derivations/hasab/): verdicts and errata pinned, the density thresholds of hasab recomputed here by
 root-finding on clipped geometry, and mutated coefficients refuted by the engine."""
 import dataclasses
 from fractions import Fraction
@@ -51,7 +51,7 @@ def test_metazentrum_checks_clean(meta_report):
         ("F_b=F_g", "misprint", "low"),                  # line 519: V_w, M_w, defined nowhere, for V_b, M_b
         # third pass (lines 155 and 187):
         ("half-length", "misprint", "medium"),           # "Mittlere Länge" for a, half the length 2a
-        ("moving-centroid", "claim", "medium"),          # the body's centroid named for the displaced water's
+        ("moving-centroid", "claim", "low"),             # the body's centroid named for the displaced water's
     }
     assert all(f.verdict == "verified" for f in meta_report.formulas if not f.erratum)
 
@@ -88,7 +88,7 @@ def test_hasab_checks_clean(hasab_report):
         ("E0-water", "transcription", "medium"),   # l g rho/2 for l g rho^2/2 (the total is right)
         ("E2-water", "misprint", "medium"),        # the factor l g dropped in the last member
         ("ranges", "transcription", "medium"),     # "< rho" lost in the second range
-        ("remark", "transcription", "medium"),     # radical over 9l^2 - 6 lost; the upright prism
+        ("remark", "transcription", "low"),        # radical over 9l^2 - 6 and "< rho" lost (two changes); upright prism
         ("remark-position", "transcription", "medium"),  # transcription 004 line 69: "1 hosszúságú" for l
     }
     assert all(f.verdict == "verified" for f in hasab_report.formulas if not f.erratum)
@@ -123,13 +123,15 @@ def test_hasab_remark_threshold_upright_prism():
 
 
 def test_mutated_coefficients_are_refuted(hasab, meta):
-    d, mod = hasab
+    d, package = hasab
+    mod = package.statements
     p = next(p for p in d.printed if p.name == "Delta-E")
     rho, al = mod.rho, mod.al
     wrong = sp.Rational(1, 5) * (rho ** 2 - rho + sp.Rational(1, 6)) * al ** 2         # 1/4 mutated to 1/5
     mutated = dataclasses.replace(d, printed=[dataclasses.replace(p, reading=(mod.c2 * al ** 2, wrong))], witnesses=[])
     assert any("Delta-E" in f and "refuted" in f for f in check_derivation(mutated).failures)
-    d, mod = meta
+    d, package = meta
+    mod = package.statements
     p = next(p for p in d.printed if p.name == "z_M")
     wrong = -mod.d / 2 + mod.b ** 2 / (2 * mod.d)                                       # 3d mutated to 2d
     mutated = dataclasses.replace(d, printed=[dataclasses.replace(p, reading=(mod.z_M, wrong))], witnesses=[])
@@ -160,12 +162,14 @@ def test_relations_of_the_claims_in_words_refute_their_mutants(meta, hasab):
     rho^2 - rho + 1/6, the first moved to 0.21). A threshold moved by 2 % in four variables (b > 1.2 c) fails only
     in a thin wedge around s = 1/2 that sampling need not meet: the check refutes, it does not prove."""
     from symfloat.model import Holds, Iff
-    d, m = meta
+    d, package = meta
+    m = package.statements
     wide = d.get_printed("wide-hull")
     assert _relation_status(d, wide.reading) == "refuted"
     assert _relation_status(d, wide.erratum.corrected_reading) == "sampled"
     assert _relation_status(d, Holds(sp.Implies(m.b > m.c, m.stable_margin > 0))) == "refuted"   # b = c, s = 1/2
-    h, hm = hasab
+    h, package = hasab
+    hm = package.statements
     ranges = h.get_printed("ranges")
     assert _relation_status(h, ranges.reading) == "refuted"
     assert _relation_status(h, ranges.erratum.corrected_reading) == "sampled"
@@ -178,7 +182,8 @@ def test_long_prism_statement_is_a_relation(hasab):
     height l^2/(12 rho) - (1 - rho)/2 > 0 for l > 2; for a short prism (l down to 1/2) it fails (l = 1/2,
     rho = 1/2: 1/24 - 1/4 < 0)."""
     from symfloat.model import Holds
-    h, hm = hasab
+    h, package = hasab
+    hm = package.statements
     assert _relation_status(h, h.get_printed("long-prism").reading) == "sampled"
     assert _relation_status(h, Holds(hm.GMp > 0, {hm.l: (sp.Rational(1, 2), 1000)})) == "refuted"
 
@@ -223,7 +228,7 @@ def _witness(d, name):
 def test_the_declared_witnesses_of_hasab_refute_mutated_readings(hasab, name, target, right, wrong):
     d, mod = hasab
     E = sp.Symbol("E")
-    out = _witness(d, name).run({target: (E, right(mod)), f"{target}#mutated": (E, wrong(mod))})
+    out = _witness(d, name).run({target: (E, right(mod.statements)), f"{target}#mutated": (E, wrong(mod.statements))})
     assert out[target].agrees and not out[f"{target}#mutated"].agrees
     assert len(out[target].records) >= 2
 
@@ -237,7 +242,7 @@ def test_the_declared_witnesses_of_hasab_refute_mutated_readings(hasab, name, ta
 def test_the_declared_witnesses_of_metazentrum_refute_mutated_readings(meta, name, target, right, wrong):
     d, mod = meta
     E = sp.Symbol("E")
-    out = _witness(d, name).run({target: (E, right(mod)), f"{target}#mutated": (E, wrong(mod))})
+    out = _witness(d, name).run({target: (E, right(mod.statements)), f"{target}#mutated": (E, wrong(mod.statements))})
     assert out[target].agrees and not out[f"{target}#mutated"].agrees
     assert len(out[target].records) >= 2
 

@@ -143,10 +143,10 @@ def test_a_failing_cell_is_one_line_and_a_failed_check(monkeypatch, tmp_path):
     from symfloat.errors import CheckFailed, EXIT_CHECK
     from symfloat.report import notebooks
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("1 / 0")])
-    monkeypatch.setattr(notebooks, "build_notebook", lambda did: nb)
+    monkeypatch.setattr(notebooks, "build_notebook", lambda did, folder=None: nb)
     monkeypatch.chdir(tmp_path)
     with pytest.raises(CheckFailed) as caught:
-        notebooks._executed_text("graefe-s1-prismatoid-volume", "stamp")
+        notebooks._executed_text("graefe-s1-prismatoid-volume", "stamp", tmp_path)
     assert str(caught.value) == ("notebook graefe-s1-prismatoid-volume: a cell failed with ZeroDivisionError: "
                                  "division by zero") and caught.value.exit_code == EXIT_CHECK
 

@@ -12,7 +12,7 @@ import nbformat
 import pytest
 
 from symfloat.report.errata import errata_json, errata_markdown
-from symfloat.report.files import without_timings
+from symfloat.files import without_timings
 from symfloat.engine.runner import derivation_keys
 from symfloat.report.notebooks import build_notebook, notebook_stamp, recorded_stamp, write_notebooks
 from symfloat.report.record import record_differences, record_json, verification_record, write_record

@@ -31,8 +31,8 @@ import pytest
 from symfloat.geometry.floating import box
 from symfloat.solver import make_scene
 from symfloat.solver.critical import symmetric_newton
-from symfloat.solver.phase import (_stable, _thresholds_between, _tracked_stable, _windows_between,
-                                   phase_diagram)
+from symfloat.comparison.thresholds import phase_with_sources
+from symfloat.solver.phase import _stable, _thresholds_between, _tracked_stable, _windows_between
 from symfloat.solver.solve import body_scale, solve
 from symfloat.solver.symmetry import box_group
 
@@ -126,7 +126,7 @@ def test_the_kept_record_has_the_closed_forms_and_every_dual():
 @pytest.mark.slow
 def test_phase_of_the_long_square_log_holds_its_duality():
     # `symfloat phase box --dims 1,1,4` (48 densities; about 40 processor-seconds)
-    diagram = phase_diagram("box", "1,1,4")
+    diagram = phase_with_sources("box", "1,1,4")
     assert diagram.duality_ok and diagram.unpaired == []
     for t in diagram.thresholds:
         assert len(_dual(t, diagram.thresholds)) == 1, t
@@ -173,7 +173,7 @@ def test_atlas_cube_cell_has_the_thresholds_of_phase_cube():
     # docs/atlas/checks.md: the cube cell had three thresholds without a dual next to (3 -+ sqrt 3)/6 (a point of
     # the ring around z taken for a window's position) and lacked the ring's ends at 1/4 and 3/4, sweep densities
     # of the atlas; expected: the thresholds of the kept `phase cube` record (docs/figures/phase-cube.json)
-    diagram = phase_diagram("cube", densities=ATLAS_SWEEP)
+    diagram = phase_with_sources("cube", densities=ATLAS_SWEEP)
     assert diagram.duality_ok and diagram.unpaired == []
     record = json.loads((DOCS / "figures" / "phase-cube.json").read_text(encoding="utf-8"))
     expected = sorted((t["position"], t["change"], t["density"], t["error"]) for t in record["thresholds"]
@@ -188,7 +188,7 @@ def test_atlas_cube_cell_has_the_thresholds_of_phase_cube():
 def test_atlas_cell_2_1_holds_its_duality_at_the_closed_forms():
     # the cell b/a = 2, c/a = 1 (the box 1 x 2 x 1: a square section, length 2): "tilted in the x-z plane" at
     # 0.2113085 and 0.2812716 (1.6e-5 and 2.2e-5 off the pitchforks), at the sweep densities 1/4, 3/4, no duals
-    diagram = phase_diagram("box", "1,2,1", densities=ATLAS_SWEEP)
+    diagram = phase_with_sources("box", "1,2,1", densities=ATLAS_SWEEP)
     assert diagram.duality_ok and diagram.unpaired == []
     on_end = 0.5 - math.sqrt(0.25 - 1 / 24)              # upright on the 1 x 1 end: 6 s (1 - s) = (1/2)^2
     ring_end = (48 - math.sqrt(1792)) / 128               # as the log's ring (module docstring) with length 2
@@ -209,7 +209,7 @@ def test_atlas_cell_3half_1_holds_its_duality_at_the_printed_thresholds():
     # 2 s (3 - 4 s) = 4/9), where the last of its arcs (78d) shrinks to the side faces' azimuths.  Before, the
     # look at 1/12 - 1e-6 failed the solver's index sum, and then four points of the ring at 0.91795 (null
     # eigenvalue 4e-14 to 7e-13, rounding) were taken for stable windows of "tilted (general)" without dual.
-    diagram = phase_diagram("box", "1,3/2,1", densities=ATLAS_SWEEP)
+    diagram = phase_with_sources("box", "1,3/2,1", densities=ATLAS_SWEEP)
     assert diagram.duality_ok and diagram.unpaired == []
     upright = (1 - math.sqrt(19 / 27)) / 2
     expected = [(upright, "face y up"), (upright, "ring around y"), (1 / 12, "ring around y"),

@@ -13,7 +13,8 @@ import sympy as sp
 from symfloat.model.prediction import Scene
 from symfloat.registry import load
 
-D, CF = load("scheeffer-vi-cf")
+D, _PACKAGE = load("scheeffer-vi-cf")
+CF, CF_SYMBOLS = _PACKAGE.predictors, _PACKAGE.statements
 
 
 def test_an_evaluator_is_exact_on_rationals_and_float_otherwise():
@@ -28,14 +29,14 @@ def test_an_evaluator_is_exact_on_rationals_and_float_otherwise():
 def test_the_correction_is_read_when_asked():
     # (81a) prints tg^2 phi_1 = 2 {b s (1 - s) - 1}; the erratum reads 6 for the scan's b: at s = 1/2 and b = 1
     # the print gives 2 (1/4 - 1) = -3/2, the correction 2 (6/4 - 1) = 1
-    s, b = CF.s, CF.b
+    s, b = CF_SYMBOLS.s, CF_SYMBOLS.b
     assert D.evaluator("81a", (b, s), 1)(1, Fraction(1, 2)) == sp.Rational(-3, 2)
     assert D.evaluator("81a", (s,), 1, corrected=True)(Fraction(1, 2)) == 1
 
 
 def test_the_evaluator_follows_a_mutated_reading():
     # mutation: 6 s (1 - s) -> 5 s (1 - s) in (75); at a/b = 1/2, s = 3/10 the margin becomes 1/4 - 105/100
-    a, b, s = CF.a, CF.b, CF.s
+    a, b, s = CF_SYMBOLS.a, CF_SYMBOLS.b, CF_SYMBOLS.s
     d = copy.copy(D)
     d.printed = [dataclasses.replace(p, reading=((a / b) ** 2 - 5 * s * (1 - s), p.reading[1])) if p.name == "75"
                  else p for p in D.printed]
@@ -45,7 +46,7 @@ def test_the_evaluator_follows_a_mutated_reading():
 def test_a_member_with_other_quantities_is_refused():
     # (87-cos2), member 0 is T_1 itself with F_1: asking for it in r alone names what is missing
     with pytest.raises(ValueError, match="depends on"):
-        D.evaluator("87", (CF.r,), 1)
+        D.evaluator("87", (CF_SYMBOLS.r,), 1)
 
 
 def test_the_ngon_evaluators_are_the_printed_closed_forms():
@@ -60,12 +61,12 @@ def test_the_ngon_evaluators_are_the_printed_closed_forms():
 
 def test_hasab_and_metazentrum_predictors_read_their_conditions():
     import math
-    _, hasab = load("hasab")
+    hasab = load("hasab")[1].predictors
     # the printed condition rho^2 - rho + 1/6 > 0 (hasab, solution, stability): -1/12 at rho = 1/2, unstable
     assert hasab.CONDITION(Fraction(1, 2)) == -1 and hasab.CONDITION(Fraction(1, 10)) == 1
     # the remark with its radical restored (the erratum): (3l + sqrt(9l^2 - 6))/(6l) at l = 2
     assert abs(hasab.REMARK(2.0) - (6 + math.sqrt(30)) / 12) < 1e-15
-    _, meta = load("metazentrum")
+    meta = load("metazentrum")[1].predictors
     # e = b^2/(6c^2) - d/(2c)(1 - d/(2c)) as printed (L4): b = 1/2, c = 1, d = 1 gives 1/24 - 1/4 = -5/24
     assert meta.E_PRINTED(Fraction(1, 2), Fraction(1), Fraction(1)) == sp.Rational(-5, 24)
 
@@ -73,7 +74,7 @@ def test_hasab_and_metazentrum_predictors_read_their_conditions():
 def test_scheeffer_x_locates_the_roots_of_171_as_read():
     import mpmath
     import numpy as np
-    _, x = load("scheeffer-x")
+    x = load("scheeffer-x")[1].predictors
     # (172) as read: (4 + sqrt 2)/7 = 0.77345908...
     assert abs(x.S172 - 0.7734590803390136) < 1e-15
     # (171): 2T {z^2 + (1-s)^2} - z^3 (1-x) - z^2 (1-s), 2T = 1/6 + (1-x)^2 - x^4/12, z = 1 - x + x^3/6; at x = 1,
@@ -87,7 +88,7 @@ def test_scheeffer_x_locates_the_roots_of_171_as_read():
 
 def test_scheeffer_iv_v_tilts_from_54_and_55_as_read():
     import sympy as sp
-    _, iv = load("scheeffer-iv-v")
+    iv = load("scheeffer-iv-v")[1].predictors
     # (54): tg^2 phi_1 = F_1 b^2 s(1-s)/T_1 - 2; the unit square base (F_1 = 1, T_1 = 1/12), b = 2, s = 1/2: 12 - 2
     assert iv.TAN2_54(1, 2, Fraction(1, 12), Fraction(1, 2)) == 10
     # (55): b(1-s)/u_m for s > 1/2, b s/u'_m below; exact with an irrational u_m (the half diagonal 1/sqrt 2)
@@ -96,7 +97,7 @@ def test_scheeffer_iv_v_tilts_from_54_and_55_as_read():
 
 
 def test_scheeffer_vi_ab_predictors_read_65_64_70_73():
-    _, ab = load("scheeffer-vi-ab")
+    ab = load("scheeffer-vi-ab")[1].predictors
     # a = 1, b = 2 (q = (a/b)^2 = 1/4), s = 3/10, s(1-s) = 21/100: (65) I: 1/4 - 252/100 = -227/100; (65) II, lower
     # row: q - 3/2 s (8 - 9 s) = 1/4 - 477/200 = -427/200; (64), lower row: 6 s (2 - 3 s) - q = 198/100 - 1/4
     assert ab.MARGIN_65(1, 2, Fraction(3, 10)) == sp.Rational(-227, 100)
@@ -108,7 +109,8 @@ def test_scheeffer_vi_ab_predictors_read_65_64_70_73():
 
 
 def test_scheeffer_vii_viii_strips_from_103_117_121b_122_as_read():
-    _, v = load("scheeffer-vii-viii")
+    _, package = load("scheeffer-vii-viii")
+    v = package.predictors
     # the cube (F_1 = 1, b = 1) with a dry strip of width w = 1/2 (F = 1/2, x_s = 1/4): (103a) tan = (1 - s)/(1/8)
     assert v.TAN_103A(1, 1, Fraction(3, 4), Fraction(1, 2), Fraction(1, 4)) == 2
     # (103b) there, with T = 1/24, x_0 = 0: 1/24 (1 + 2) - 1/8 = 0, the box equilibrium at tan phi = 2, s = 3/4
@@ -118,7 +120,7 @@ def test_scheeffer_vii_viii_strips_from_103_117_121b_122_as_read():
     # (121b): the dry volume F_1 b (1 - s); (122) at the third-region box of the same tests (base A x 1, height 1,
     # top strip w = 1/2, A = 2 (w - x_0)): tan phi = 5/2
     assert v.DRY_121B(2, 3, Fraction(1, 4)) == Fraction(9, 2)
-    p = v._params("box3-eq")
+    p = package.witnesses._params("box3-eq")
     A = float(2 * (sp.Rational(1, 2) - p[v.x0]))
     assert any(abs(t - 5 / 2) < 1e-12 for t, _ in v._strip3(A, 1.0, 1.0, float(p[v.s])))
 
@@ -126,7 +128,7 @@ def test_scheeffer_vii_viii_strips_from_103_117_121b_122_as_read():
 @pytest.mark.parametrize("offset, stability", [(Fraction(507, 10 ** 11), "stable"), (Fraction(1, 10 ** 10), "stable"),
                                                (Fraction(-5, 10 ** 9), "unstable"), (Fraction(-1, 10 ** 9), "unstable")])
 def test_scheeffer_vii_viii_keeps_the_edge_up_root_next_to_its_pitchfork(offset, stability):
-    _, v = load("scheeffer-vii-viii")
+    v = load("scheeffer-vii-viii")[1].predictors
     # the box 1 x 1 x 2 turned about its long edge, edge up (tan phi = 1, the square section's diagonal): its
     # stability changes at 9/32 (Scheeffer IX (140); tests/test_phase_log.py derives 9/32 from GM of the edge-up
     # section), where (103b) has a triple root.  A sign scan on a grid lost the root at 9/32 + 5.07e-9 and
@@ -138,7 +140,8 @@ def test_scheeffer_vii_viii_keeps_the_edge_up_root_next_to_its_pitchfork(offset,
 
 
 # ---- Scheeffer IX: the case tables decide with the readings of the printed formulas ----------------------------
-IXD, IX = load("scheeffer-ix")
+IXD, IX_PACKAGE = load("scheeffer-ix")
+IX, IXS = IX_PACKAGE.predictors, IX_PACKAGE.statements
 R = Fraction
 
 
@@ -158,7 +161,7 @@ def _box(s, *dims):
     return lambda: [(p.up, p.stability, p.printed) for p in IX.predict(Scene(body="box", density=s, dims=dims))]
 
 
-a_, b_, c_, s_, z_, t_ = IX.a, IX.b, IX.c, IX.s, IX.z, IX.t
+a_, b_, c_, s_, z_, t_ = IXS.a, IXS.b, IXS.c, IXS.s, IXS.z, IXS.t
 _IX_MUTATIONS = {
     # (a/b)^2 > 6 s(1-s) -> 5 s(1-s); s = 3/5, a/b = 57/50: n = 1.2996 between 5 s(1-s) = 1.2 and 6 s(1-s) = 1.44, the
     # upright position turns stable
@@ -180,13 +183,14 @@ _IX_MUTATIONS = {
     # (156) n_1 - 1/100: the same change of row
     "N1_156": ("156", (t_,), 1, 0, lambda m: sp.Matrix([m[0] - sp.Rational(1, 100), m[1]]), _tables(R(73, 100), R(501, 500))),
     # (136) -4 n sigma^2 -> -5 n sigma^2: the root z (and its tilt) at s = 7/10, a/b = 51/50 moves
-    "F_136": ("136", (z_, a_, b_, s_), 1, None, lambda m: m - IX.n * IX.sg ** 2, _tables(R(7, 10), R(51, 50))),
+    "F_136": ("136", (z_, a_, b_, s_), 1, None, lambda m: m - IXS.n * IXS.sg ** 2, _tables(R(7, 10), R(51, 50))),
     # (a/b)^2 > 1/(6 s(1-s)) -> 1/(5 s(1-s)): at s = 4/5, a/b = 21/20 (n = 1.1025) the oblique of the third region goes
     "UNSTABLE_3": ("unstable-3", (a_, b_, s_), 0, None, lambda m: (a_ / b_) ** 2 - 1 / (5 * s_ * (1 - s_)),
                    _tables(R(4, 5), R(21, 20))),
     # (165) 1/rho - n -> 1/rho - n - 1/10: the same oblique leaves the third region (1/rho = 1.136)
     "BOUND_165": ("165", (a_, b_, s_), 0, None,
-                  lambda m: IX.PW(1 / IX.rho_s - (a_ / b_) ** 2 - sp.Rational(1, 10), 0), _tables(R(4, 5), R(21, 20))),
+                  lambda m: IXS.PW(1 / IXS.rho_s - (a_ / b_) ** 2 - sp.Rational(1, 10), 0),
+                  _tables(R(4, 5), R(21, 20))),
     # (166) 12 -> 13: its tilt moves
     "COT2_166": ("166", (a_, b_, s_), 1, None, lambda m: 13 * (a_ / b_) ** 2 * s_ * (1 - s_) - 2, _tables(R(4, 5), R(21, 20))),
     # (b/a)^2 > 6 s(1-s) -> 5 s(1-s): at s = 4/5, a/b = 21/20 the other upright position (0.907 against 0.96, 0.8)
@@ -218,7 +222,7 @@ def test_scheeffer_ix_tilt_of_the_second_region_follows_134():
     # (134) x^2 = 2 a b (1-s) tg phi_2 -> 3 a b (1-s) tg phi_2: the tilt of the root at s = 7/10, a/b = 51/50 moves,
     # its z stays
     before = IX.tables_prediction(R(7, 10), R(51, 50))
-    mutated = _ix_mutated("134", 1, lambda m: 3 * a_ * b_ * (1 - s_) * sp.tan(IX.phi))
+    mutated = _ix_mutated("134", 1, lambda m: 3 * a_ * b_ * (1 - s_) * sp.tan(IXS.phi))
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(IX, "TAN_134", IX._tan_134(mutated))
         after = IX.tables_prediction(R(7, 10), R(51, 50))

@@ -72,6 +72,21 @@ def test_refuses_what_it_does_not_read(tex):
         read(tex)
 
 
+@pytest.mark.parametrize("tex, why", [
+    # symfloat issue 32: the first never returned (the power computed: 10^10 000 000 000), the second was a
+    # ValueError from int() (more than Python's 4300 digits) that escaped the reader's Unreadable
+    (r"$x = 10^{10^{10}}$", "an exponent of 10000000000"),
+    ("$x = " + "7" * 5000 + "$", "a number of 5000 digits"),
+    (r"$y = x^{10^{10} a}$", "an exponent of 10000000000"),
+    (r"$x = 10^{100}$", "a power of more than 100 digits"),        # 101 digits; 7^{99} (84 digits) is read
+    ("$x = 0," + "5" * 120 + "$", "a number of 122 digits"),
+])
+def test_what_would_take_long_to_compute_is_refused_unread(tex, why):
+    with pytest.raises(Unreadable, match=why):
+        read(tex)
+    assert _one(r"x = 7^{99}")[0] == [x, sp.Integer(7) ** 99] and _one(r"x = 0,5^2")[0] == [x, sp.Rational(1, 4)]
+
+
 # ---- the comparison (mutation tests on one quote of hasab) ------------------------------------------
 EXCERPT = r"$$x = \varrho + 1/2 \text{tg } \alpha,$$"        # hasab, the heeled prism's side x
 D = Derivation(id="probe", source="hasab", title="probe", locator="probe")
@@ -209,5 +224,5 @@ def test_cli_prints_the_readings(capsys, monkeypatch):
     monkeypatch.chdir(ROOT)
     main(["coverage", "hasab", "--readings"])
     from symfloat.registry import load
-    quotes = len(load("hasab")[0].printed)       # every printed formula of symfloat/derivations/hasab.py
+    quotes = len(load("hasab")[0].printed)       # every printed formula of derivations/hasab/
     assert f"readings: {quotes} quotes" in capsys.readouterr().out

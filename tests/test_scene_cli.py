@@ -6,7 +6,7 @@ import pytest
 
 from symfloat.cli import main
 from symfloat.solver import make_scene, solve
-from symfloat.solver.coverage import cover, predicting
+from symfloat.comparison.coverage import cover, predicting
 
 
 @pytest.fixture

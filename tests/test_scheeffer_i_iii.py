@@ -1,4 +1,4 @@
-"""Scheeffer 1902, sections I-III (symfloat/derivations/scheeffer_i_iii.py): every display of the range quoted and
+"""Scheeffer 1902, sections I-III (derivations/scheeffer_i_iii/): every display of the range quoted and
 judged, the erratum of (18) pinned, the small-angle limits pinned against clipped geometry, and a mutated
 coefficient of (12) refuted by the engine."""
 import dataclasses
@@ -94,10 +94,10 @@ def test_small_angle_limit_of_a_body_not_prismatic_at_the_waterline(loaded):
     d, mod = loaded
     w = _witness(d, "righting-arm-limit")
     fifty = next(m for m in w.methods if m.dps == 50)
-    case = next(c for c in mod.SMALL if "9/5" in c.label)
+    case = next(c for c in mod.witnesses.SMALL if "9/5" in c.label)
     with mpmath.workdps(50):
         assert abs(w.measure(case, fifty) - mpmath.mpf(1) / 6) < mpmath.mpf(10) ** -40
-    case = next(c for c in mod.SMALL if "draught 1 " in c.label)    # T1/V1 - e1 = 1/6 - 2/3 = -1/2
+    case = next(c for c in mod.witnesses.SMALL if "draught 1 " in c.label)    # T1/V1 - e1 = 1/6 - 2/3 = -1/2
     with mpmath.workdps(50):
         assert abs(w.measure(case, fifty) + mpmath.mpf(1) / 2) < mpmath.mpf(10) ** -40
 
@@ -108,14 +108,15 @@ def test_axis_passes_through_the_centroid(loaded):
     d, mod = loaded
     w = _witness(d, "axis-position")
     fifty = next(m for m in w.methods if m.dps == 50)
-    case = next(c for c in mod.TRAP if "P1=2, P2=1" in c.label)
+    case = next(c for c in mod.witnesses.TRAP if "P1=2, P2=1" in c.label)
     with mpmath.workdps(50):
         assert abs(w.measure(case, fifty) - mpmath.mpf(8) / 9) < mpmath.mpf(10) ** -40
 
 
 def test_a_mutated_coefficient_of_12_is_refuted(loaded):
     d, mod = loaded
-    phi, T1, V1, e1, m = mod.phi, mod.T1, mod.V1, mod.e1, mod.m
+    st = mod.statements
+    phi, T1, V1, e1, m = st.phi, st.T1, st.V1, st.e1, st.m
     p = next(p for p in d.printed if p.name == "moment-12")
     wrong = sp.sin(phi) * ((1 + sp.tan(phi) ** 2 / 3) * T1 - V1 * e1)     # 1/2 mutated to 1/3
     mutated = dataclasses.replace(d, printed=[dataclasses.replace(p, reading=(V1 * m, wrong))], witnesses=[])
@@ -138,4 +139,5 @@ def test_lost_relations_of_15_are_relations_that_refute_their_mutants():
         p = d.get_printed(name)
         assert status(p.reading) == "refuted"
         assert status(p.erratum.corrected_reading) == "sampled"
-    assert status(Iff(m.V1 * m.m > 0, m.crit15 < 0)) == "refuted"
+    st = m.statements
+    assert status(Iff(st.V1 * st.m > 0, st.crit15 < 0)) == "refuted"

@@ -8,7 +8,7 @@ import mpmath
 import pytest
 import sympy as sp
 
-import symfloat.derivations.scheeffer_iv_v as M
+from symfloat.derivations.scheeffer_iv_v import statements as M, witnesses as W
 from symfloat.engine.check import check_derivation
 from symfloat.geometry.floating import floating_state, right_prism
 
@@ -56,7 +56,7 @@ def _measured(witness, label, cases=None):
     """The float64 value of the derivation's witness at its case *label* (or at the cases of other bodies)."""
     w = next(w for w in M.DERIVATION.witnesses if w.name == witness)
     if cases is not None:
-        w = replace(w, cases=lambda: M._cases(cases))
+        w = replace(w, cases=lambda: W._cases(cases))
     return w.measure(next(c for c in w.instances if c.label == label), w.methods[0])
 
 
@@ -103,11 +103,11 @@ def test_isotropic_neutral_51_and_independent_of_omega():
 def _tilted(name):
     """The clipped prism of a body (float64), its density, and the frame at its tilted equilibrium: up vector,
     horizontal across EF, EF, and the up vector for EF turned by an angle."""
-    poly, bb, ss, alpha = M.BODIES[name]
+    poly, bb, ss, alpha = W.BODIES[name]
     body = right_prism([(float(x), float(y)) for x, y in poly], float(bb))
     psi = math.atan(_measured("tilt", name))
-    frame = lambda turn=0: [tuple(float(c) for c in v.subs({M.ALPHA: alpha + turn, M.PSI: psi}))   # noqa: E731
-                            for v in (M.UP, M.HOR, M.EV)]
+    frame = lambda turn=0: [tuple(float(c) for c in v.subs({W.ALPHA: alpha + turn, W.PSI: psi}))   # noqa: E731
+                            for v in (W.UP, W.HOR, W.EV)]
     return body, float(ss), frame
 
 
@@ -154,6 +154,16 @@ def test_law_counterexample_pinned():
                                                                      rel=1e-10)
 
 
+def test_law_is_a_claim_of_medium_confidence():
+    # the law (transcription line 422) is drawn ('so ergibt sich daraus') from the assumption of line 418 that T_1
+    # is the same for every axis through O; read in that context it holds, so the objection stands in part and the
+    # erratum is medium, not high (issue 31, item 1)
+    law = next(p for p in M.DERIVATION.printed if p.name == "law")
+    (f,) = _check_only("law", law.reading).formulas
+    assert f.verdict == "erratum" and (f.erratum["kind"], f.erratum["confidence"]) == ("claim", "medium")
+    assert "obigen Voraussetzungen" in f.erratum["objection"]
+
+
 def test_face_limits_counterexample_pinned():
     # erratum (55) / 's-half': equilateral triangle side 1, EF parallel to a side, apex dipping, b = 17/25,
     # s = 2/5 < 1/2. Clipped geometry: the upper base is reached first, at tan = sqrt 3 b (1 - s) = 51 sqrt3/125
@@ -162,7 +172,7 @@ def test_face_limits_counterexample_pinned():
     assert _measured("first", "tri-eq-apex") == pytest.approx(51 * math.sqrt(3) / 125, rel=1e-12)
     apex = ("tri-eq-apex", "tri-eq-apex-up")
     assert _measured("top", "tri-eq-apex") < _measured("bot", "tri-eq-apex", apex)
-    printed = float(M.printed55.subs(M._params("tri-eq-apex")))
+    printed = float(M.printed55.subs(W._params("tri-eq-apex")))
     assert printed == pytest.approx(68 * math.sqrt(3) / 125, rel=1e-14)
     assert 51 * math.sqrt(3) / 125 < math.sqrt(10366) / 125 < printed
     # apex rising, s = 3/5 > 1/2: the lower base is reached first, at tan = sqrt 3 b s = 51 sqrt3/125

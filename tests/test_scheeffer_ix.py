@@ -19,6 +19,7 @@ from symfloat.model.source import SOURCES
 from symfloat.registry import load
 
 D, M = load("scheeffer-ix")
+ST, WIT, PRED = M.statements, M.witnesses, M.predictors      # the parts of the package
 TEXT = SOURCES["scheeffer"].text()
 RANGE = TEXT[TEXT.index("## IX."):TEXT.index("## X.")]
 
@@ -85,26 +86,26 @@ def test_double_root_at_t_one_half():
     # derivation gives z_1 = 15/16, n_1 = 5/4, z_2 = 3/8, n_2 = 4/5 exactly; the clipped box (the edge a, b = 1,
     # at which the clipped righting arm vanishes at an extremum inside the second region) must find them
     w = sp.Rational(15, 16)
-    assert M.sg_of_w.subs(M.w, w) == sp.Rational(45, 256) and M.n_of_w.subs(M.w, w) == sp.Rational(5, 4)
-    zp, zm = _measured("double-roots", {M.t: sp.Rational(1, 2)})
-    n1, n2, _ = _measured("double-root-n", {M.t: sp.Rational(1, 2)})
+    assert ST.sg_of_w.subs(ST.w, w) == sp.Rational(45, 256) and ST.n_of_w.subs(ST.w, w) == sp.Rational(5, 4)
+    zp, zm = _measured("double-roots", {ST.t: sp.Rational(1, 2)})
+    n1, n2, _ = _measured("double-root-n", {ST.t: sp.Rational(1, 2)})
     assert abs(zp - 15 / 16) < 1e-10 and abs(n1 - 5 / 4) < 1e-10
     assert abs(zm - 3 / 8) < 1e-10 and abs(n2 - 4 / 5) < 1e-10
 
 
 def test_printed_n1_against_the_clipped_double_root_at_t_two_thirds():
     # (156) upper sign at t = 2/3 (s = 1 - 27/128): n_1 = 1.11745528...; the clipped double root (float64)
-    n1 = _measured("double-root-n", {M.t: sp.Rational(2, 3)})[0]
-    zp = _measured("double-root-plus", {M.t: sp.Rational(2, 3)})
-    assert abs(n1 - M._n1_printed(1 - 27 / 128)) < 1e-10
+    n1 = _measured("double-root-n", {ST.t: sp.Rational(2, 3)})[0]
+    zp = _measured("double-root-plus", {ST.t: sp.Rational(2, 3)})
+    assert abs(n1 - PRED._n1_printed(1 - 27 / 128)) < 1e-10
     assert abs(zp - 3 / 16 * (3 + 2 / 3 + math.sqrt((5 - 2 / 3) / 3))) < 1e-10
 
 
 def test_threshold_23_32_on_the_clipped_square_section():
     # (140): for a = b the clipped F'(3/4)/3 (five-point stencil) is positive below s = 23/32, negative above:
     # sigma - 9/32 = +-1/100 there
-    below = _measured("threshold-140", {M.s: sp.Rational(23, 32) - sp.Rational(1, 100)})
-    above = _measured("threshold-140", {M.s: sp.Rational(23, 32) + sp.Rational(1, 100)})
+    below = _measured("threshold-140", {ST.s: sp.Rational(23, 32) - sp.Rational(1, 100)})
+    above = _measured("threshold-140", {ST.s: sp.Rational(23, 32) + sp.Rational(1, 100)})
     assert below > 0 > above
     assert abs(below - 0.01) < 1e-12 and abs(above + 0.01) < 1e-12
 
@@ -112,14 +113,14 @@ def test_threshold_23_32_on_the_clipped_square_section():
 def test_the_measured_slope_is_the_derivative_of_the_clipped_potential():
     # the module's SLOPE_C (potential_slope of its turn about c) against a central difference of G above B
     from symfloat.engine.floating_witness import Body, FloatingWitness
-    params = {M.a: sp.Rational(3, 2), M.b: 1, M.s: sp.Rational(4, 5)}
+    params = {ST.a: sp.Rational(3, 2), ST.b: 1, ST.s: sp.Rational(4, 5)}
     for ph in (sp.Rational(3, 10), sp.Rational(9, 10)):
         def at(q, quantity):
-            w = FloatingWitness("slope", "", (), (), body=M.SECTION, up=M.UP_C, density=M.s, quantity=quantity)
-            return w.measure(Case({**params, M.ph: q}), w.methods[0])
+            w = FloatingWitness("slope", "", (), (), body=WIT.SECTION, up=WIT.UP_C, density=ST.s, quantity=quantity)
+            return w.measure(Case({**params, WIT.ph: q}), w.methods[0])
         h = sp.Rational(1, 10 ** 6)
         quotient = (at(ph + h, "G above B") - at(ph - h, "G above B")) / (2 * float(h))
-        assert abs(quotient - at(ph, M.SLOPE_C)) < 1e-8
+        assert abs(quotient - at(ph, WIT.SLOPE_C)) < 1e-8
 
 
 # ---- the text's claims --------------------------------------------------------------------------------
@@ -138,7 +139,7 @@ def _far_from_boundaries(s, n):
     rho = 2 * sg * (4 * s - 1)
     near = [abs(n - rho), abs(n - 1 / rho)]
     if s > 23 / 32:
-        near.append(abs(n - M._n1_printed(s)))
+        near.append(abs(n - PRED._n1_printed(s)))
     return min(near) > 1e-6
 
 
@@ -152,7 +153,7 @@ def test_case_tables_count_the_roots_of_f_in_the_second_region():
         if not _far_from_boundaries(s, n):
             continue
         roots = _roots_in(n, 1 - s)
-        eqs = [e for e in M.tables_prediction(s, math.sqrt(n)) if e["region"] == 2]
+        eqs = [e for e in PRED.tables_prediction(s, math.sqrt(n)) if e["region"] == 2]
         assert len(eqs) == len(roots), (s, n)
         for e, r in zip(eqs, roots):
             slope = 4 * r ** 3 - 4.5 * r ** 2 + 3 * n * (1 - s)
@@ -166,20 +167,21 @@ def test_region2_roots_at_and_next_to_the_triple_root():
     # at n = 1 the printed F (136) is (z^2 - 2 sigma)(z^2 - 3/2 z + 2 sigma) (expanded by SymPy below); at s = 23/32
     # (sigma = 9/32) its three positive roots are the triple root 3/4 (np.roots put the middle one 1.5e-8 off, and
     # `phase box --dims 1,1,4` found the tables' threshold at 0.2812500189990 instead of 9/32)
-    assert sp.expand(M.quartic.subs(M.n, 1) - (M.z ** 2 - 2 * M.sg) * (M.z ** 2 - sp.Rational(3, 2) * M.z + 2 * M.sg)) == 0
-    assert M._region2_roots(23 / 32, 1.0, 3) == [0.75, 0.75, 0.75]
+    z, sg = ST.z, ST.sg
+    assert sp.expand(ST.quartic.subs(ST.n, 1) - (z ** 2 - 2 * sg) * (z ** 2 - sp.Rational(3, 2) * z + 2 * sg)) == 0
+    assert PRED._region2_roots(23 / 32, 1.0, 3) == [0.75, 0.75, 0.75]
     # beside it and off n = 1: the roots of F with the float inputs taken exactly (SymPy, 30 digits)
     for sv, nn in ((23 / 32 + 1e-9, 1.0), (0.73, 1.02), (0.73, 1.0063), (0.9, 3.0)):
-        exact = sorted(float(r) for r in sp.Poly(M.quartic.subs({M.n: sp.Rational(nn), M.sg: 1 - sp.Rational(sv)}),
-                                                  M.z).nroots(n=30) if r.is_real and r > 0)
-        got = M._region2_roots(sv, nn, len(exact))
+        exact = sorted(float(r) for r in sp.Poly(ST.quartic.subs({ST.n: sp.Rational(nn), ST.sg: 1 - sp.Rational(sv)}),
+                                                  ST.z).nroots(n=30) if r.is_real and r > 0)
+        got = PRED._region2_roots(sv, nn, len(exact))
         assert len(got) == len(exact) and all(abs(a - b) <= 1e-15 for a, b in zip(got, exact)), (sv, nn, got, exact)
 
 
 def test_the_tables_threshold_of_the_square_section_is_9_32():
     # the tables' stable set of the long square log (box 1,1,4) changes where its edge-up position does, at
     # 1 - 23/32 = 9/32 (s < 1/2 read with 1 - s; tests/test_phase_log.py derives 9/32 from GM of the edge-up section)
-    from symfloat.solver.phase import source_thresholds
+    from symfloat.comparison.thresholds import source_thresholds
     found = [t for t in source_thresholds("box", (1, 1, 4)) if t["derivation"] == "scheeffer-ix"
              and t["label"] in ("edge up (xy)", "tilted in the x-y plane") and 0.25 < t["value"] < 0.75]
     assert sorted((t["label"], t["change"]) for t in found) == [
@@ -267,7 +269,7 @@ def _clipped_equilibria(dims, sv, axis_dims):
                                       ((1.05, 1.0, 2.0), 0.8), ((1.05, 1.0, 2.0), 0.2)])
 def test_tables_agree_with_the_clipped_box_about_the_longest_edge(dims, sv):
     found = _clipped_equilibria(dims, sv, (0, 1))
-    pred = [e for e in M.tables_prediction(sv, dims[0] / dims[1]) if 0 < e["phi"] < math.pi / 2]
+    pred = [e for e in PRED.tables_prediction(sv, dims[0] / dims[1]) if 0 < e["phi"] < math.pi / 2]
     assert len(pred) == len(found)
     assert all(abs(e["phi"] - f[0]) < 1e-7 for e, f in zip(pred, found))
     assert [e["stability"] for e in pred] == [f[1] for f in found]
@@ -284,7 +286,7 @@ def test_alternation_of_stable_and_unstable_positions():
     # "immer abwechselnd eine stabile ... und eine labile": along 0..90 deg about the axis
     for s in np.linspace(0.52, 0.98, 24):
         for ratio in (1.0, 1.02, 1.1, 1.3, 2.0):
-            st = [e["stability"] for e in sorted(M.tables_prediction(s, ratio), key=lambda e: e["phi"])]
+            st = [e["stability"] for e in sorted(PRED.tables_prediction(s, ratio), key=lambda e: e["phi"])]
             assert all(x != y for x, y in zip(st, st[1:])), (s, ratio, st)
 
 
@@ -295,19 +297,19 @@ def test_third_region_oblique_needs_s_above_three_quarters():
         ss, rho = s * (1 - s), 2 * (1 - s) * (4 * s - 1)
         if s < 0.75:
             assert not any(e["region"] == 3 and e["phi"] < math.pi / 2 for r in ratios
-                           for e in M.tables_prediction(s, r)), s
+                           for e in PRED.tables_prediction(s, r)), s
         else:
             r = math.sqrt((max(1, 1 / (6 * ss)) + 1 / rho) / 2)  # inside the window of (165), and >= 1
-            assert r >= 1 and any(e["region"] == 3 and e["phi"] < math.pi / 2 for e in M.tables_prediction(s, r)), s
+            assert r >= 1 and any(e["region"] == 3 and e["phi"] < math.pi / 2 for e in PRED.tables_prediction(s, r)), s
 
 
 def test_first_region_oblique_stability_on_the_clipped_box():
     # (127): about c (c > a) stable in every direction; (128): about a, partly unstable
     from symfloat.engine.floating_witness import FloatingRootWitness
-    case = Case({M.a: sp.Rational(21, 20), M.b: 1, M.c: sp.Rational(11, 10), M.s: sp.Rational(7, 10)})
-    for up, equilibrium, sign in ((M.UP_C, M.EQ_C, 1), (M.UP_A, M.EQ_A, -1)):
-        w = FloatingRootWitness("oblique", "", (), (), body=M.BOX, up=up, density=M.s, quantity="stability sign",
-                                roots=((M.ph, equilibrium),))
+    case = Case({ST.a: sp.Rational(21, 20), ST.b: 1, ST.c: sp.Rational(11, 10), ST.s: sp.Rational(7, 10)})
+    for up, equilibrium, sign in ((WIT.UP_C, WIT.EQ_C, 1), (WIT.UP_A, WIT.EQ_A, -1)):
+        w = FloatingRootWitness("oblique", "", (), (), body=WIT.BOX, up=up, density=ST.s, quantity="stability sign",
+                                roots=((WIT.ph, equilibrium),))
         assert w.measure(case, w.methods[0]) == sign
 
 
@@ -319,14 +321,14 @@ def test_predictor_names_printed_formulas():
     for dims, sv in [((1, 1, 1), Fraction(4, 5)), ((Fraction(3, 2), 1, 3), Fraction(9, 10)),
                      ((Fraction(21, 20), 1, Fraction(11, 10)), Fraction(7, 10))]:
         sc = Scene("box", sv, tuple(Fraction(x) for x in dims))
-        preds = M.predict(sc)
+        preds = PRED.predict(sc)
         assert preds and all(set(p.printed) <= names for p in preds)
 
 
 def test_predictor_on_a_box_with_oblique_positions():
     # box 21/20 x 1 x 11/10, s = 7/10: three faces down, the first-region obliques about z (stable, (127))
     # and about x (partly unstable, (128)), and about y the obliques of the section 11/10 x 21/20
-    preds = M.predict(Scene("box", Fraction(7, 10), (Fraction(21, 20), Fraction(1), Fraction(11, 10))))
+    preds = PRED.predict(Scene("box", Fraction(7, 10), (Fraction(21, 20), Fraction(1), Fraction(11, 10))))
     faces = [p for p in preds if sorted(map(abs, p.up)) == [0, 0, 1]]
     assert len(faces) == 3
     about_z = [p for p in preds if p.up[2] == 0 and p not in faces]
@@ -339,7 +341,7 @@ def test_predictor_on_a_box_with_oblique_positions():
 
 
 def test_predictor_for_the_cube_gives_the_obliques_without_stability():
-    preds = M.predict(Scene("cube", Fraction(4, 5), (Fraction(1),) * 3))
+    preds = PRED.predict(Scene("cube", Fraction(4, 5), (Fraction(1),) * 3))
     assert [p.stability for p in preds if sorted(map(abs, p.up)) == [0, 0, 1]] == ["stable"]
     assert len(preds) >= 1
 
@@ -355,8 +357,8 @@ def _mutated(name, reading=None, erratum="keep"):
 
 def test_a_mutated_coefficient_of_the_quartic_is_refuted():
     # (136) with 3/2 z^3 mutated to 5/4 z^3
-    z, n, sg = M.z, M.n, M.sg
-    rep = check_derivation(_mutated("136", reading=(M.Fz, z ** 4 - sp.Rational(5, 4) * z ** 3 + 3 * n * sg * z
+    z, n, sg = ST.z, ST.n, ST.sg
+    rep = check_derivation(_mutated("136", reading=(ST.Fz, z ** 4 - sp.Rational(5, 4) * z ** 3 + 3 * n * sg * z
                                                      - 4 * n * sg ** 2)), prove=False, trust_steps=True)
     assert rep.formulas[0].verdict == "erratum"
     assert any("136" in f and "no erratum" in f for f in rep.failures)
@@ -396,8 +398,8 @@ def test_root_counts_of_136_at_s_73_100():
     assert len([x for x in three if x > 0]) == 3 and len([x for x in three if x < 0]) == 1
     one = real(1.02)                         # n = 51/50 > n_1: one root above 2 sigma = 0.54, left of the maximum
     assert [round(x, 4) for x in one] == [-0.7403, 0.5586]
-    assert [int(D.results()[q].doit()) for q in (M.NPOS, M.NNEG, M.NREG, M.NRIGHT)] == [3, 1, 1, 0]
-    assert M._n1_printed(0.73) < 1.02 < 2 * 0.27 * (4 * 0.73 - 1)
+    assert [int(D.results()[q].doit()) for q in (ST.NPOS, ST.NNEG, ST.NREG, ST.NRIGHT)] == [3, 1, 1, 0]
+    assert PRED._n1_printed(0.73) < 1.02 < 2 * 0.27 * (4 * 0.73 - 1)
 
 
 def test_complete_stability_in_the_second_region_needs_less_than_hg_below_c():
@@ -419,15 +421,15 @@ def test_complete_stability_in_the_second_region_needs_less_than_hg_below_c():
         assert (st.metacentric_height > 0) == stable, c_
 
 
-@pytest.mark.parametrize("row, row161", [(r[0], r[1]) for r in M.ROWS_162])
+@pytest.mark.parametrize("row, row161", [(r[0], r[1]) for r in ST.ROWS_162])
 def test_rows_of_162_at_their_points_on_the_clipped_box(row, row161):
     # the point at which each row of (162) is read (scheeffer-ix/162-I ...): the clipped box turned about c finds
     # the printed equilibria of the second region (2 sigma <= z <= 1, tan phi_2 = b z^2/(2 a sigma)), in order
-    sv, nv = (float(v) for v in M.CASES_161[row161])
+    sv, nv = (float(v) for v in ST.CASES_161[row161])
     a_, sg = math.sqrt(nv), 1 - sv
     lo, hi = math.atan(2 * sg / a_), math.atan(1 / (2 * a_ * sg))
     found = [f[1] for f in _clipped_equilibria((a_, 1.0, 3.0), sv, (0, 1)) if lo < f[0] < hi]
-    stab = next(r[4] for r in M.ROWS_162 if r[0] == row)
+    stab = next(r[4] for r in ST.ROWS_162 if r[0] == row)
     assert found == ["stable" if x > 0 else "unstable" for x in stab]
 
 
@@ -466,7 +468,7 @@ def test_root_counts_in_words_are_relations_on_their_regions():
         return _relation(reading, D.results(), dom, "mutant", {"proofs": 0.0, "sampling": 0.0}).status
     for name in ("143-words", "144-words", "one-or-three"):
         assert status(D.get_printed(name).reading) == "sampled"
-    count = RealRoots(M.F_S, M.z, 2 * (1 - M.s), 1)
-    assert status(Holds(sp.Implies(M.n < M.rho_s, sp.Eq(count, 2)), M.REGION_143)) == "refuted"
-    assert status(Holds(sp.Implies(M.n < M.rho_s, sp.Eq(count, 1)), {M.s: (sp.Rational(1, 2), 1), M.n: (1, 3)})) \
+    count = RealRoots(ST.F_S, ST.z, 2 * (1 - ST.s), 1)
+    assert status(Holds(sp.Implies(ST.n < ST.rho_s, sp.Eq(count, 2)), ST.REGION_143)) == "refuted"
+    assert status(Holds(sp.Implies(ST.n < ST.rho_s, sp.Eq(count, 1)), {ST.s: (sp.Rational(1, 2), 1), ST.n: (1, 3)})) \
         == "refuted"

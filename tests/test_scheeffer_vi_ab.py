@@ -1,4 +1,4 @@
-"""Scheeffer 1902, VI, VI.A, VI.B (symfloat/derivations/scheeffer_vi_ab.py): recomputed worked examples and
+"""Scheeffer 1902, VI, VI.A, VI.B (derivations/scheeffer_vi_ab/): recomputed worked examples and
 thresholds, each pinned with its provenance, and a mutation test."""
 import dataclasses
 import math
@@ -6,10 +6,9 @@ import math
 import pytest
 import sympy as sp
 
+from symfloat.derivations.scheeffer_vi_ab import statements as M
 from symfloat.engine.check import check_derivation
 from symfloat.registry import load
-
-import symfloat.derivations.scheeffer_vi_ab as M
 
 
 def deg(x):
@@ -18,7 +17,7 @@ def deg(x):
 
 def measured(witness, case=0):
     """The float64 value of the derivation's witness at its case number *case*."""
-    w = next(w for w in M.DERIVATION.witnesses if w.name == witness)
+    w = next(w for w in load("scheeffer-vi-ab")[0].witnesses if w.name == witness)
     return w.measure(w.instances[case], w.methods[0])
 
 

@@ -13,7 +13,7 @@ from symfloat.geometry.floating import box, floating_state, right_prism
 from symfloat.model.source import SOURCES
 from symfloat.registry import load
 
-D, MODULE = load("scheeffer-vi-cf")
+D, PACKAGE = load("scheeffer-vi-cf")
 TEXT = SOURCES["scheeffer"].text()
 
 
@@ -45,7 +45,8 @@ EXPECTED_ERRATA = {
     ("86a", "transcription", "high"),
     ("triangle-data", "transcription", "high"),
     ("square-data", "transcription", "high"),
-    ("55-reference", "misprint", "medium"),   # transcription line 1068: 'Nach 55' for (54)
+    ("55-reference", "misprint", "low"),      # transcription line 1068: 'Nach 55' for (54); low: 4 and 5 are
+                                              # close in print and scan, which erred cannot be told (issue 31)
     ("height-OV", "misprint", "low"),         # line 980: the height 'O V' of BOC, defined as OQ (line 968)
 }
 
@@ -225,7 +226,8 @@ def test_the_55_reference_is_an_erratum_on_its_own():
     rep = check_derivation(_mutated("55-reference"), prove=False, trust_steps=True)
     (f,) = rep.formulas
     assert f.verdict == "erratum" and rep.failures == []
-    assert (f.erratum["kind"], f.erratum["confidence"]) == ("misprint", "medium")
+    # low since issue 31 (item 1): the print's 54 or the scan's reading of it as 55 cannot be told apart
+    assert (f.erratum["kind"], f.erratum["confidence"]) == ("misprint", "low")
 
 
 def test_the_height_of_BOC_lies_at_the_central_angle_from_MN():
@@ -242,7 +244,7 @@ def test_the_height_of_BOC_lies_at_the_central_angle_from_MN():
     assert (f.locator, f.erratum["kind"], f.erratum["confidence"]) == ("VI.E", "misprint", "low")
     # mutation: the edge OB (at alpha/2 from MN) in place of the height OQ must not satisfy the correction
     p = next(q for q in D.printed if q.name == "height-OV")
-    al, r = MODULE.alph, MODULE.r
+    al, r = PACKAGE.statements.alph, PACKAGE.statements.r
     ob = sp.Matrix([sp.cos(al / 2), sp.sin(al / 2)]) * r
     wrong = dataclasses.replace(p.erratum, corrected_reading=(
         sp.Matrix([ob[0] * sp.sin(al) - ob[1] * sp.cos(al), ob[0] * sp.cos(al) + ob[1] * sp.sin(al)]),

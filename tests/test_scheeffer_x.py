@@ -23,6 +23,7 @@ from symfloat.model.source import SOURCES
 from symfloat.registry import load
 
 D, MODULE = load("scheeffer-x")
+STATEMENTS, PREDICTORS = MODULE.statements, MODULE.predictors
 TEXT = SOURCES["scheeffer"].text()
 RANGE = TEXT[TEXT.index("## X."):TEXT.index("#### Druckfehler.")]
 CUBE = box(1, 1, 1)
@@ -175,11 +176,11 @@ S_FOLD = 0.7623092388663755
 
 
 def test_the_fold_of_171_where_the_pentagonal_equilibria_are_born():
-    f = MODULE.f_num
+    f = PREDICTORS.f_num
     mpmath.mp.dps = 30
     x0, s0 = mpmath.findroot(lambda x, s: [f(x, s), mpmath.diff(lambda t: f(t, s), x)], (0.36, 0.762))
     assert abs(float(s0) - S_FOLD) < 1e-12 and abs(float(x0) - 0.3581293505777) < 1e-10
-    assert MODULE.beta(float(x0), float(s0)) < 1            # the fold itself is pentagonal
+    assert STATEMENTS.beta(float(x0), float(s0)) < 1            # the fold itself is pentagonal
     # the clipped cube, diagonal plane: no pentagonal equilibrium just below, two just above
     below, above = _diagonal_roots(S_FOLD - 0.002), _diagonal_roots(S_FOLD + 0.002)
     assert [nv for _, nv in below] == [6] and [nv for _, nv in above] == [5, 5, 6]
@@ -222,7 +223,7 @@ def test_the_waterplane_is_a_triangle_quadrilateral_pentagon_or_hexagon():
 
 def test_pentagonal_equilibria_at_077_are_the_roots_of_171(eq077):
     # (171) at s = 0.77: roots 0.0858 and 0.5684 with beta < 1 (pentagons), 0.8768 with beta > 1
-    xs = [float(r) for r in MODULE.roots_171(sp.Rational(77, 100))]
+    xs = [float(r) for r in STATEMENTS.roots_171(sp.Rational(77, 100))]
     assert [round(v, 4) for v in xs] == [0.0858, 0.5684, 0.8768]
     pent = sorted(((c, ev) for c, nv, ev in eq077 if nv == 5 and abs(c[0] - c[1]) < 1e-6), key=lambda q: q[0][0])
     assert len(pent) == 2
@@ -231,7 +232,7 @@ def test_pentagonal_equilibria_at_077_are_the_roots_of_171(eq077):
         assert abs(c[0] - p) < 1e-7
     assert all(ev > 0 for ev in pent[0][1])                 # the small leg: stable
     assert min(pent[1][1]) < 0                              # the other: unstable (the claim's exception)
-    assert MODULE.beta(xs[2], 0.77) > 1
+    assert STATEMENTS.beta(xs[2], 0.77) > 1
 
 
 def test_no_pentagonal_equilibrium_where_the_text_promises_one():
@@ -241,8 +242,8 @@ def test_no_pentagonal_equilibrium_where_the_text_promises_one():
     assert not any(nv == 5 for _, nv, _ in eq)
     stable = [(c, nv) for c, nv, ev in eq if all(ev > 0)]
     assert len(stable) == 1 and stable[0][1] == 6 and np.allclose(stable[0][0], (1, 1))   # the corner up
-    xr = float(MODULE.X_COUNTER)
-    assert abs(xr - 0.5498088) < 1e-6 and abs(MODULE.beta(xr, 0.6) - 1.2138) < 1e-4
+    xr = float(STATEMENTS.X_COUNTER)
+    assert abs(xr - 0.5498088) < 1e-6 and abs(STATEMENTS.beta(xr, 0.6) - 1.2138) < 1e-4
     p = 0.4 / (1 - xr + xr ** 3 / 6)
     assert _vertices(_up((-p, -p)), 0.6) == 6
     assert np.linalg.norm(_grad((-p, -p), 0.6)) > 1e-3
@@ -281,7 +282,7 @@ def test_first_condition_off_the_diagonal_has_the_sign_of_cos_minus_sin():
     from symfloat.engine.witness import Case
     witness = next(w_ for w_ in D.witnesses if w_.name == "dry-moment")
     for w in ("0.2", "0.5", "0.7", "0.9", "1.2"):
-        case = Case({MODULE.a: 1, MODULE.om: sp.Rational(w), MODULE.rho: sp.Rational(2, 5)})
+        case = Case({STATEMENTS.a: 1, STATEMENTS.om: sp.Rational(w), STATEMENTS.rho: sp.Rational(2, 5)})
         m = witness.measure(case, witness.methods[0])
         assert (m > 0) == (math.cos(float(w)) > math.sin(float(w)))
 
@@ -294,30 +295,30 @@ def _scene(s):
 
 def test_predictor_speaks_only_about_cubes():
     for s in ("1/10", "2/5", "1/2", "77/100", "9/10"):
-        assert MODULE.predict(_scene(s))
-    assert MODULE.predict(Scene("box", Fraction(1, 2), (Fraction(1), Fraction(2), Fraction(1)))) == []
-    assert MODULE.predict(Scene("box", Fraction(1, 2), (Fraction(2),) * 3))
+        assert PREDICTORS.predict(_scene(s))
+    assert PREDICTORS.predict(Scene("box", Fraction(1, 2), (Fraction(1), Fraction(2), Fraction(1)))) == []
+    assert PREDICTORS.predict(Scene("box", Fraction(1, 2), (Fraction(2),) * 3))
 
 
 def test_predictions_against_the_clipped_cube():
     names = {p.name for p in D.printed}
     # s = 0.77: three roots of (171) predicted stable; the first is a stable equilibrium, the second an
     # unstable one, the third no equilibrium at all (beta > 1)
-    preds = [p for p in MODULE.predict(_scene("77/100")) if "171" in p.printed]
-    assert all(set(p.printed) <= names for p in MODULE.predict(_scene("77/100")))
+    preds = [p for p in PREDICTORS.predict(_scene("77/100")) if "171" in p.printed]
+    assert all(set(p.printed) <= names for p in PREDICTORS.predict(_scene("77/100")))
     assert [p.stability for p in preds] == ["stable"] * 3
     ab = [(p.up[0] / p.up[2], p.up[1] / p.up[2]) for p in preds]
     assert np.linalg.norm(_grad(ab[0], 0.77)) < 1e-9 and all(np.linalg.eigvalsh(_hessian(ab[0], 0.77)) > 0)
     assert np.linalg.norm(_grad(ab[1], 0.77)) < 1e-9 and min(np.linalg.eigvalsh(_hessian(ab[1], 0.77))) < 0
     assert np.linalg.norm(_grad(ab[2], 0.77)) > 1e-5       # 5.8e-5: near, but not at, the corner-up position
     # s = 2/5 (dual): the predicted pentagon is no equilibrium
-    pent = [p for p in MODULE.predict(_scene("2/5")) if "171" in p.printed]
+    pent = [p for p in PREDICTORS.predict(_scene("2/5")) if "171" in p.printed]
     assert len(pent) == 1 and np.linalg.norm(_grad((pent[0].up[0] / pent[0].up[2], pent[0].up[1] / pent[0].up[2]),
                                                    0.4)) > 1e-3
     # s = 9/10: the triangle, unstable; s = 1/2: the regular hexagon, stable
-    (tri,) = MODULE.predict(_scene("9/10"))
+    (tri,) = PREDICTORS.predict(_scene("9/10"))
     assert tri.stability == "unstable" and max(np.linalg.eigvalsh(_hessian((1.0, 1.0), 0.9))) < 0
-    (hexa,) = MODULE.predict(_scene("1/2"))
+    (hexa,) = PREDICTORS.predict(_scene("1/2"))
     assert hexa.stability == "stable" and np.linalg.norm(_grad((1.0, 1.0), 0.5)) < 1e-12
 
 
@@ -325,7 +326,7 @@ def test_predictions_against_the_clipped_cube():
 
 def test_a_mutated_coefficient_of_168_is_refuted():
     # (168) with the divisor 24 mutated to 12
-    m = MODULE
+    m = STATEMENTS
     p = next(q for q in D.printed if q.name == "168")
     wrong = (m.P, m.h_ ** 3 * (m.co - m.si) / (12 * m.si * m.co ** 2) * (2 * m.a * m.co - m.rho * (m.co + m.si)))
     dm = dataclasses.replace(D, printed=[dataclasses.replace(p, reading=wrong)], witnesses=[])
@@ -339,9 +340,9 @@ def test_each_root_of_171_is_an_equilibrium_exactly_when_its_waterplane_is_a_pen
     # p = (1 - s)/z, the clipped waterplane is a pentagon iff beta < 1, and only then is the gradient zero
     seen = {True: 0, False: 0}
     for s in [k / 100 for k in range(52, 84)] + [0.7625 + 0.002 * j for j in range(6)]:
-        for xr in MODULE._roots_171_float(s):
+        for xr in PREDICTORS._roots_171_float(s):
             p = (1 - s) / (1 - xr + xr ** 3 / 6)
-            pent = MODULE.beta(xr, s) < 1
+            pent = STATEMENTS.beta(xr, s) < 1
             assert (_vertices(_up((-p, -p)), s) == 5) == pent
             assert (np.linalg.norm(_grad((-p, -p), s)) < 1e-9) == pent
             seen[pent] += 1
@@ -400,7 +401,7 @@ def test_the_fold_of_171_lies_between_the_bounds_of_the_172_correction():
     res = sp.Poly(sp.resultant(f, sp.diff(f, xx_), xx_), s_)
     assert res.count_roots(sp.Rational("0.7623"), sp.Rational("0.7624")) == 1
     assert res.count_roots(sp.Rational("0.7624"), sp.Rational("0.7734")) == 0     # (4 + sqrt 2)/7 = 0.77346
-    assert MODULE.S_FOLD_BELOW == sp.Rational("0.7623") and MODULE.S_FOLD_ABOVE == sp.Rational("0.7624")
+    assert STATEMENTS.S_FOLD_BELOW == sp.Rational("0.7623") and STATEMENTS.S_FOLD_ABOVE == sp.Rational("0.7624")
 
 
 def test_172_is_a_claim_erratum_on_the_root_count():
@@ -434,7 +435,7 @@ def test_a_wrong_count_in_the_172_correction_is_refuted():
     p = next(q for q in D.printed if q.name == "172")
     rows = list(p.erratum.corrected_reading.rows)
     rows[1] = (rows[1][0], sp.Eq(rows[1][1].lhs, 1))
-    wrong = dataclasses.replace(p.erratum, corrected_reading=Cases(rows, {MODULE.s: (sp.Rational(1, 2), 1)},
+    wrong = dataclasses.replace(p.erratum, corrected_reading=Cases(rows, {STATEMENTS.s: (sp.Rational(1, 2), 1)},
                                                                    exhaustive=False))
     rep = check_derivation(dataclasses.replace(D, printed=[dataclasses.replace(p, erratum=wrong)], witnesses=[]),
                            prove=False, trust_steps=True)

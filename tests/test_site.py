@@ -20,14 +20,15 @@ import pytest
 
 pytest.importorskip("sphinx", reason="the site extra is not installed (pip install 'symfloat[site]')")
 pytest.importorskip("myst_nb", reason="the site extra is not installed (pip install 'symfloat[site]')")
-pytest.importorskip("latex2mathml", reason="the site extra is not installed (pip install 'symfloat[site]')")
 
 from symfloat.model.source import SOURCES  # noqa: E402
+from symfloat.model.symbol_names import GREEK  # noqa: E402
 from symfloat.model.span import math_intervals  # noqa: E402
-from symfloat.site import mathml  # noqa: E402
+from symfloat.site import typeset  # noqa: E402
 from symfloat.site.build import MARKER, _sync  # noqa: E402
-from symfloat.site.edition import edition_page, formula_anchor  # noqa: E402
-from symfloat.site.errata_pages import corrected_html  # noqa: E402
+from symfloat.site.edition import edition_page, formula_anchor, mark_of  # noqa: E402
+from symfloat.site.errata_pages import errata_index  # noqa: E402
+from symfloat.site.difference import corrected_html  # noqa: E402
 from symfloat.site.notebooks import staged_notebook  # noqa: E402
 from symfloat.site.records import load_records, slug  # noqa: E402
 
@@ -42,23 +43,45 @@ def records():
 
 # ---------------------------------------------------------------- pages, without Sphinx
 
-def test_every_formula_of_the_transcriptions_becomes_mathml():
-    mathml.UNRENDERED.clear()
+_KATEX = '<span class="katex'
+
+
+def _need_katex():
+    try:
+        typeset.katex_dist()
+    except typeset.TypesetterMissing as exc:
+        pytest.skip(str(exc))
+
+
+def test_every_formula_of_the_transcriptions_is_typeset():
+    _need_katex()
+    typeset.UNRENDERED.clear()
     count = 0
     for source in SOURCES.values():
         text = source.text()
         for a, b, kind in math_intervals(text):
-            assert mathml.to_mathml(text[a:b].strip("$"), kind == "display").startswith("<math"), text[a:b]
+            assert typeset.typeset(text[a:b].strip("$"), kind == "display").startswith(_KATEX), text[a:b]
             count += 1
-    assert count > 2000 and not mathml.UNRENDERED
+    assert count > 2000 and not typeset.UNRENDERED
 
 
 def test_faulty_tex_is_repaired_or_shown_marked():
-    # Scheeffer's y''^2 (a double superscript to latex2mathml) and a formula the scan cut off
-    assert mathml.to_mathml("y''^2 = r^2").startswith("<math")
-    assert mathml.to_mathml(r"\left. \begin{aligned} & \sqrt{x").startswith("<math")
-    shown = mathml.to_mathml(r"\frac{a}{b} \end{cases}")
+    _need_katex()
+    # Scheeffer's y''^2 and a formula the scan cut off (an open \left, environment and root)
+    assert typeset.typeset("y''^2 = r^2").startswith(_KATEX)
+    assert typeset.typeset(r"\left. \begin{aligned} & \sqrt{x").startswith(_KATEX)
+    shown = typeset.typeset(r"\frac{a}{b} \end{cases}")
     assert shown.startswith('<code class="tex-unrendered"') and r"\frac{a}{b}" in shown
+
+
+def test_an_aligned_display_is_set_in_rows():
+    _need_katex()
+    # Scheeffer (5): two rows aligned at "=", no ampersand left as text
+    html = typeset.typeset(r"\begin{aligned} m &= v \cos \varphi - u \sin \varphi \\ n &= v \sin \varphi + u \cos "
+                           r"\varphi \end{aligned} \quad (5)", display=True)
+    shown = re.sub(r"<annotation.*?</annotation>", "", html)
+    assert shown.count('class="vlist-r"') >= 1 and "&amp;" not in shown and "<mtable" in shown
+    assert html.count("<mtr>") == 2
 
 
 def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
@@ -68,9 +91,9 @@ def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
     for f in formulas:
         anchor = formula_anchor(f["id"])
         assert f'id="{anchor}"' in page, f["id"]
-        assert re.search(rf'<a class="(?:q|more) v-{f["verdict"]}" href="#{anchor}"', page), f["id"]
-    # (78c) is an erratum of the record, Scheeffer's square moments (VI.C) are verified
-    assert f'<a class="q v-erratum" href="#{formula_anchor("scheeffer-vi-cf/78c")}"' in page
+        assert re.search(rf'<a class="(?:q|more) v-{mark_of(f, records)}" href="#{anchor}"', page), f["id"]
+    # (78c) is a misprint of the original (the record's erratum), Scheeffer's square moments (VI.C) are verified
+    assert f'<a class="q v-fault" href="#{formula_anchor("scheeffer-vi-cf/78c")}"' in page
     assert f'<a class="q v-verified" href="#{formula_anchor("scheeffer-vi-cf/square-moments")}"' in page
     note = page[page.index(f'id="{formula_anchor("scheeffer-vi-cf/78c")}"'):]
     note = note[:note.index("</details>")]
@@ -78,7 +101,57 @@ def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
     assert "misprint, medium confidence" in note and "6.0e-01" in note      # the record's error of the print
     assert f'{witness["seconds"]:.3g} s' in note                            # and the witness's time, as recorded
     assert '../errata/scheeffer-78c-1.html' in note and "../notebooks/scheeffer-vi-cf.html#" in note
-    assert "\\frac" not in re.sub(r'alttext="[^"]*"|title="[^"]*"', "", page)
+    assert "\\frac" not in re.sub(r'<annotation.*?</annotation>|title="[^"]*"', "", page, flags=re.S)
+
+
+def test_the_two_apparatus_are_marked_apart(records):
+    # docs/errata.json: (81a) is the scan's "b" for "6" (transcription), (78c) a misprint of the print
+    page = edition_page(SOURCES["scheeffer"], records)
+    scan, printer = formula_anchor("scheeffer-vi-cf/81a"), formula_anchor("scheeffer-vi-cf/78c")
+    assert f'<a class="q v-transcription" href="#{scan}"' in page and f'<a class="q v-fault" href="#{printer}"' in page
+    legend = page[page.index('<p class="legend">'):]
+    legend = legend[:legend.index("</p>")]
+    faults = sum(mark_of(f, records) == "fault" for f in records.formulas if f["source"] == "scheeffer")
+    scans = sum(mark_of(f, records) == "transcription" for f in records.formulas if f["source"] == "scheeffer")
+    assert f"✗ fault of the original</span> {faults}" in legend and f"✎ transcription corrected</span> {scans}" in legend
+    words = re.sub(r"<[^>]+>", "", legend)                                   # the legend's visible text
+    assert faults and scans and "waived" not in words and "bare-symbol" not in words and "a lone symbol" in words
+    index = errata_index(records)
+    original = index.index("## Faults of the original")
+    transcription = index.index("## Corrections of the transcription")
+    assert index.index("(81a)", transcription) > transcription and original < index.index("(78c)") < transcription
+    assert "(81a)" not in index[original:transcription]
+
+
+def test_the_correction_is_shown_in_place(records):
+    page = edition_page(SOURCES["scheeffer"], records)
+    at = page.index(f'id="{formula_anchor("scheeffer-vi-cf/81a")}"')
+    note = page[at:page.index("</details>\n</details>", at)]
+    evidence = note.index('<details class="evidence">')
+    # before the evidence: what the transcription reads and what the original very probably printed, the
+    # change (the 6 the scan read as b) marked, kind, confidence and a one-sentence reason
+    head = note[:evidence]
+    assert head.index("The transcription reads") < head.index("The original very probably printed")
+    assert re.search(r'<span class="enclosing changed">.*?6', head) and "transcription, high confidence." in head
+    reason = head[head.index('<p class="reason">'):]
+    reason = reason[reason.index("</strong>"):reason.index("</p>")]
+    assert reason.count(". ") == 0 and len(reason) < 400
+    assert "sampled" not in head and "witness" not in head                  # the evidence waits behind its summary
+    assert "<table" in note[evidence:]
+    misprint = page[page.index(f'id="{formula_anchor("scheeffer-vi-cf/78c")}"'):]
+    assert misprint.index("Printed</span>") < misprint.index("Corrected</span>") < misprint.index('class="evidence"')
+
+
+def test_places_have_anchors_and_the_sources_a_citation(records):
+    euler, scheeffer = edition_page(SOURCES["euler"], records), edition_page(SOURCES["scheeffer"], records)
+    assert 'id="s-224"' in euler and 'href="#s-224"' in euler                # Euler's paragraph §224
+    assert "Eneström E110" in euler and "Petropoli" in euler and "1749" in euler
+    for anchor in ("eq-78c", "eq-81a", "eq-5", "s-ix", "example-1"):        # Scheeffer (78c), (81 a), (5), IX, Example 1
+        assert f'id="{anchor}"' in scheeffer and f'href="#{anchor}"' in scheeffer, anchor
+    assert scheeffer.count('id="eq-78c"') == 1
+    hasab, web = edition_page(SOURCES["hasab"], records), edition_page(SOURCES["metazentrum"], records)
+    assert "1987-04-183-1.eps" not in hasab.split('<div class="edition">')[1]     # a file name, not the text's words
+    assert "ID:(1610, 0)" not in web and "(web lesson)" not in web
 
 
 def test_lost_text_and_missing_figures_are_marked(records):
@@ -130,6 +203,7 @@ def _build(out: Path) -> subprocess.CompletedProcess:
 
 @pytest.fixture(scope="module")
 def site(tmp_path_factory):
+    _need_katex()
     out = tmp_path_factory.mktemp("site") / "html"
     done = _build(out)
     assert done.returncode == 0, done.stderr
@@ -224,6 +298,13 @@ def test_rebuilding_the_same_records_gives_the_same_files(site, tmp_path):
     assert [name for name in first if first[name] != second[name]] == []
 
 
+def test_without_katex_the_build_says_so_in_one_line(tmp_path):
+    done = subprocess.run([sys.executable, "-m", "symfloat", "site", "--out", str(tmp_path / "out")], cwd=ROOT,
+                          capture_output=True, text=True, env={**os.environ, "SYMFLOAT_NODE_MODULES": str(tmp_path)})
+    assert done.returncode == 2 and done.stderr.count("\n") == 1 and "npm ci" in done.stderr, done.stderr
+    assert not (tmp_path / "out").exists()
+
+
 def test_a_folder_that_is_not_a_site_is_refused(tmp_path):
     (tmp_path / "notes.txt").write_text("mine")
     done = _build(tmp_path)
@@ -248,22 +329,70 @@ def _visible_tex(page) -> list[str]:
     return [raw for raw in ("$$", "\\frac") if raw in text]
 
 
+# Runs of single-letter identifiers in a formula's MathML (KaTeX's, beside the glyphs) that spell the name of a
+# Greek letter or a function: a name set as italic letters (t·a·n·v·a·r·p·h·i) instead of its sign (tan φ).
+_BARE_NAMES = r"""names => {
+  const bare = new RegExp("(" + names.join("|") + ")");
+  const found = [];
+  for (const math of document.querySelectorAll(".katex-mathml math")) {
+    for (const parent of [math, ...math.querySelectorAll("mrow, mtd, mstyle, mpadded")]) {
+      let run = "";
+      for (const child of [...parent.children, null]) {
+        if (child && child.tagName.toLowerCase() === "mi" && /^[A-Za-z]$/.test(child.textContent)) {
+          run += child.textContent;
+          continue;
+        }
+        if (bare.test(run)) found.push(run + " in " + (math.querySelector("annotation") || math).textContent);
+        run = "";
+      }
+    }
+  }
+  for (const shown of document.querySelectorAll(".katex-html")) {
+    if (shown.textContent.includes("&")) found.push("a visible & in " + shown.textContent);
+  }
+  return found;
+}"""
+_NAMES = sorted([g for g in GREEK if g[0].islower()] + ["sin", "cos", "tan", "cot", "tg", "log", "lim"],
+                key=len, reverse=True)
+
+
 def test_every_page_in_headless_chromium(site):
     sync_api = pytest.importorskip("playwright.sync_api", reason="playwright is not installed (test extra)")
     with sync_api.sync_playwright() as p:
         browser = _browser(p)
         if browser is None:
             pytest.skip("no Chromium: install Debian's chromium or run 'python -m playwright install chromium'")
-        page = browser.new_page(viewport={"width": 1200, "height": 900})
+        page = browser.new_page(viewport={"width": 1400, "height": 900})
         errors = []
         page.on("console", lambda m: m.type == "error" and errors.append((page.url, m.text)))
         page.on("pageerror", lambda e: errors.append((page.url, str(e))))
         page.on("requestfailed", lambda r: errors.append((page.url, f"failed to load {r.url}")))
         names = sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html"))
+        bare, wide = [], []
         for name in names:
             page.goto((site / name).as_uri(), wait_until="load")
             assert not _visible_tex(page), (name, _visible_tex(page))
+            bare += [(name, b) for b in page.evaluate(_BARE_NAMES, _NAMES)]
+            for width in (1400, 420):           # the page never scrolls sideways; a long formula scrolls in its box
+                page.set_viewport_size({"width": width, "height": 900})
+                overflow = page.evaluate("document.documentElement.scrollWidth - window.innerWidth")
+                if overflow > 0:
+                    wide.append((name, width, overflow))
+            page.set_viewport_size({"width": 1400, "height": 900})
         assert not errors, errors[:5]
+        assert not bare, bare[:5]
+        assert not wide, wide[:10]
+        # every mark of the edition carries a sign and words besides its colour
+        page.goto((site / "edition" / "scheeffer.html").as_uri())
+        legend = page.inner_text("p.legend")
+        assert all(f"{sign} {words}" in legend for sign, words in
+                   (("✗", "fault of the original"), ("✎", "transcription corrected"), ("✓", "verified")))
+        badges = page.evaluate("Array.from(document.querySelectorAll('.badge')).map(b => b.textContent)")
+        assert badges and all(re.fullmatch(r"\S \w.+", b) for b in badges), badges[:3]
+        # search from disk: hits listed, no error (Sphinx's summaries, which would fetch each page, are off)
+        page.goto((site / "search.html").as_uri() + "?q=Schwerpunkt")
+        page.wait_for_selector("#search-results li", timeout=20000)
+        assert page.locator("#search-results li").count() > 3 and not errors, errors[:3]
         # the pictures of the derivations load: the browser decoded each one (its natural width)
         for name, count in (("figures.html", 3), ("scheeffer-ix-grid.html", 1)):
             page.goto((site / name).as_uri(), wait_until="load")
@@ -271,21 +400,30 @@ def test_every_page_in_headless_chromium(site):
             assert len(widths) == count and all(w > 0 for _, w in widths), (name, widths)
         # the same checks see a page that shows raw TeX and logs an error
         control = site.parent / "control.html"
-        control.write_text("<p>$$\\frac{a}{b}$$</p><script>console.error('control')</script>", encoding="utf-8")
+        control.write_text("<p>$$\\frac{a}{b}$$</p><script>console.error('control')</script>"
+                           '<span class="katex"><span class="katex-mathml"><math><mrow><mi>x</mi><mi>t</mi><mi>a</mi>'
+                           '<mi>n</mi><mo>=</mo><mi>t</mi><mi>a</mi><mi>u</mi></mrow></math></span>'
+                           '<span class="katex-html">x &amp; y</span></span>', encoding="utf-8")
         page.goto(control.as_uri(), wait_until="load")
         assert _visible_tex(page) == ["$$", "\\frac"] and errors == [(control.as_uri(), "control")]
-        # The browser lays the MathML out: a fraction of (78c) has height, and following a mark opens its note.
+        assert [b.split(" ")[0] for b in page.evaluate(_BARE_NAMES, _NAMES)] == ["xtan", "tau", "a"]
+        # KaTeX laid the formulas out: a fraction of (78c) has height, and following a mark opens its note.
         page.goto((site / "edition" / "scheeffer.html").as_uri())
-        assert page.locator("math mfrac >> visible=true").first.bounding_box()["height"] > 10
+        heights = page.evaluate("Array.from(document.querySelectorAll('.katex-html .mfrac')).slice(0, 50)"
+                                ".map(e => e.getBoundingClientRect().height)")
+        assert heights and max(heights) > 10, heights[:5]
         note = f"#{formula_anchor('scheeffer-vi-cf/78c')}"
         page.locator(f'a.q[href="{note}"]').first.click()
         page.wait_for_function("id => document.getElementById(id).open", arg=note[1:], timeout=5000)
         shots = [(page, "site-edition-scheeffer.png")]
         page.locator(f'a.q[href="{note}"]').first.scroll_into_view_if_needed()
         page.evaluate("window.scrollBy(0, -120)")
-        erratum = browser.new_page(viewport={"width": 1200, "height": 900})
-        erratum.goto((site / "errata" / "scheeffer-78c-1.html").as_uri())
+        erratum = browser.new_page(viewport={"width": 1400, "height": 900})
+        erratum.goto((site / "errata" / "scheeffer-81a-1.html").as_uri())
         shots.append((erratum, "site-erratum.png"))
+        narrow = browser.new_page(viewport={"width": 420, "height": 900})
+        narrow.goto((site / "edition" / "scheeffer.html").as_uri() + f"#{formula_anchor('scheeffer-vi-cf/81a')}")
+        shots.append((narrow, "site-edition-scheeffer-420.png"))
         folder = DOCS / "figures" if os.environ.get("SYMFLOAT_SCREENSHOTS") else site.parent
         for shot, name in shots:
             shot.screenshot(path=str(folder / name))

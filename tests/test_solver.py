@@ -90,7 +90,7 @@ def test_cylinder_state_against_the_ellipse_and_the_rectangle(dps):
     # pi r^4/(4 cos) (the ellipse's second moments).  Lying (theta = pi/2), the rectangle 2r x L: int w^2 =
     # 2r L^3/12, int y^2 = L (2r)^3/12.  Half the volume is submerged in both.
     import mpmath
-    from symfloat.solver.cylinder import cylinder_state
+    from symfloat.geometry.cylinder import cylinder_state
     with mpmath.workdps(50):
         c = mpmath.cos(mpmath.mpf(3) / 10)
         pi = mpmath.pi

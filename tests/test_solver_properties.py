@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 
 from symfloat.geometry.convex import hull_2d, polygon_area
 from symfloat.solver import make_scene, solve
-from symfloat.solver.coverage import symmetry_group
+from symfloat.solver.symmetry import symmetry_group
 from symfloat.solver.symmetry import same_class
 
 densities = st.integers(2, 98).map(lambda k: Fraction(k, 100) + Fraction(1, 997))

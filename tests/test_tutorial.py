@@ -31,7 +31,7 @@ def test_the_tutorial_finds_its_misprint(tmp_path):
 def test_a_wrong_correction_is_refused(tmp_path):
     library = tmp_path / "library"
     shutil.copytree(TUTORIAL, library)
-    module = library / "derivations" / "cap_centroid.py"
+    module = library / "derivations" / "cap_centroid" / "statements.py"
     text = module.read_text(encoding="utf-8")
     wrong = text.replace("corrected_reading=(X, 3 * (2 * r - h) ** 2 / (4 * (3 * r - h)))",
                          "corrected_reading=(X, 3 * (2 * r - h) ** 2 / (4 * (3 * r + h)))")
@@ -52,7 +52,7 @@ def test_an_authors_error_is_one_line_naming_the_module(tmp_path):
     # mutation: h loses its sampling interval; the check cannot draw a point, and says where
     library = tmp_path / "library"
     shutil.copytree(TUTORIAL, library)
-    module = library / "derivations" / "cap_centroid.py"
+    module = library / "derivations" / "cap_centroid" / "statements.py"
     text = module.read_text(encoding="utf-8")
     broken = text.replace("domain={r: (1, 3), h: (0, 1)},", "domain={r: (1, 3)},")
     assert broken != text

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from symfloat.report.files import without_timings
+from symfloat.files import without_timings
 from symfloat.report.record import record_differences
 
 ROOT = Path(__file__).resolve().parents[1]

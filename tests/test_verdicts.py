@@ -1,6 +1,8 @@
 """The engine can fail: wrong prints become errata or failures, never
 'verified'; every derived step of the library, with one coefficient changed,
 is refuted with a counterexample."""
+import dataclasses
+
 import sympy as sp
 import pytest
 
@@ -147,3 +149,16 @@ def test_a_wrong_solution_is_refuted_by_its_check():
     rep = check_derivation(_solve_derivation(lambda sols: max(sols) + sp.Rational(1, 10)))
     steps = {s.name: s.status for s in rep.steps}
     assert steps["root-check"] not in ("proved", "sampled", "definition") and rep.failures, steps
+
+
+def test_refuted_print_without_erratum_names_its_sides_and_the_smallest_correction():
+    # Graefe's sphere with the denominator misprinted 5 for 3 (a mutation of the verbatim SPHERE)
+    d = Derivation(id="test-sphere", source="graefe", title="sphere", locator="§2", domain={r: (1, 3)})
+    d.step("volume", sp.Eq(V, sp.Integral(sp.pi * (r**2 - z**2), (z, -r, r))), "definition", result=V)
+    d.step("value", (V, 4 * sp.pi * r**3 / 3), "integration")
+    d.quote("sphere", "§2 sphere", SPHERE, reading=sp.Eq(V, 4 * r**3 * sp.pi / 5))
+    d.printed[0] = dataclasses.replace(d.printed[0], excerpt=r"$$V = \frac{4r^3\pi}{5}.$$")   # as if printed so
+    message = next(m for m in check_derivation(d).failures if "no erratum is declared" in m)
+    assert "printed: " in message and "derived: " in message and "{'point'" not in message
+    # the print gives 4/5 of the volume 4 pi r^3/3 at the counterexample; the edit 5 -> 3 repairs it
+    assert r"the smallest correction found is V = \frac{4r^3\pi}{3}. (5 → 3: digit, print-like; proved)" in message

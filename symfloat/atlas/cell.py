@@ -1,6 +1,6 @@
 """One shape cell of the atlas: the stable set of the box ``1 x b/a x c/a`` along the density.
 
-The phase machinery (:func:`symfloat.solver.phase.phase_diagram`: a sweep, each change of the
+The phase machinery (:func:`symfloat.comparison.thresholds.phase_with_sources`: a sweep, each change of the
 stable set located by bisection with the position tracked, narrow windows found at folds and at
 the printed thresholds) splits the swept range ``[A, B]`` at its thresholds; thresholds at the
 same density (within their errors: a pitchfork's parent and child) make one boundary.  Each
@@ -8,7 +8,7 @@ interval between boundaries is one row: its ends with their error bounds, the th
 lower end, and the stable classes solved at its midpoint (orientation, tilt, G above B, smallest
 eigenvalue, error), the Poincaré–Hopf sum there, whether the sweep densities inside the interval
 saw the same stable set, the duality s <-> 1 - s inside the swept range (the sweep's stable sets
-mirror, every threshold has its dual), and every printed prediction read there (:func:`symfloat.solver.coverage.cover`).
+mirror, every threshold has its dual), and every printed prediction read there (:func:`symfloat.comparison.coverage.cover`).
 Nothing in a row depends on the clock; the time a cell took is returned beside its rows.
 """
 from __future__ import annotations
@@ -18,8 +18,9 @@ from fractions import Fraction
 
 from ..errors import SymfloatError
 from ..solver import make_scene, solve
-from ..solver.coverage import cover
-from ..solver.phase import phase_diagram, position_label
+from ..comparison.coverage import cover
+from ..comparison.thresholds import phase_with_sources
+from ..solver.phase import position_label
 from .grid import cell_body
 
 __all__ = ["compute_cell", "boundaries"]
@@ -94,7 +95,7 @@ def compute_cell(ba: Fraction, ca: Fraction, densities) -> tuple[list[dict], dic
 
 
 def _rows(ba, ca, body, dims, densities) -> list[dict]:
-    diagram = phase_diagram(body, dims, densities=densities)
+    diagram = phase_with_sources(body, dims, densities=densities)
     lo, hi = float(densities[0]), float(densities[-1])
     bounds = boundaries(diagram.thresholds, lo, hi)
     ends = [{"density": lo, "error": 0.0, "changes": []}] + bounds + [{"density": hi, "error": 0.0, "changes": []}]

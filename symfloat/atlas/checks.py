@@ -16,7 +16,7 @@ Failing checks (the command exits 1 when one fails):
 * **cube**: the cell b/a = c/a = 1 has the thresholds of ``symfloat phase cube`` (48 densities)
   inside the atlas's density range, and no other, each within the two errors;
 * **long box** (Scheeffer IX's printed tables, :func:`tables_prediction` in
-  ``symfloat/derivations/scheeffer_ix.py``): where the longest edge is at least ``LONG`` times the
+  ``derivations/scheeffer_ix/predictors.py``): where the longest edge is at least ``LONG`` times the
   middle one, the stable positions with the long edge horizontal are those the tables give for
   the cross-section at every interval's sample density (tilt within ``MATCH_RAD``);
 * **printed thresholds located**: where a printed threshold is not found, the solver's stable set

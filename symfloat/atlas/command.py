@@ -5,7 +5,7 @@ import json
 from pathlib import Path
 
 from ..errors import EXIT_CHECK, EXIT_OK
-from ..report.files import write_if_changed
+from ..files import write_if_changed
 from .checks import checks_markdown, run_checks
 from .dataset import read_atlas
 from .run import CUBE_REFERENCE, build

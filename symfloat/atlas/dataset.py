@@ -19,7 +19,7 @@ from pathlib import Path
 import pyarrow as pa
 import pyarrow.parquet as pq
 
-from ..report.files import write_atomic
+from ..files import write_atomic
 from ..report.stamp import digest, package_digest
 
 __all__ = ["SCHEMA", "FORMAT", "code_stamp", "solver_stamp", "part_path", "part_done", "write_part", "read_part", "write_combined",

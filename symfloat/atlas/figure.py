@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..report.files import write_atomic
+from ..files import write_atomic
 
 __all__ = ["write_slices", "slice_png"]
 

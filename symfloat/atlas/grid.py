@@ -17,9 +17,11 @@ from fractions import Fraction
 
 from ..solver.bodies import SceneError, make_scene, parse_number, parse_whole
 
-__all__ = ["parse_grid", "density_grid", "shape_grid", "cell_body", "check_domain", "MAX_POINTS", "MAX_RATIO"]
+__all__ = ["parse_grid", "density_grid", "shape_grid", "cell_body", "check_domain", "MAX_POINTS", "MAX_RATIO",
+           "MAX_CELLS"]
 
 MAX_POINTS = 2000           # values on one axis
+MAX_CELLS = 10000           # shapes b/a x c/a in one atlas (about 60 worker-hours at 22 s a cell, docs/atlas.md)
 MAX_RATIO = Fraction(1000)  # an aspect ratio b/a or c/a
 
 
@@ -80,7 +82,11 @@ def cell_body(ba: Fraction, ca: Fraction) -> tuple[str, tuple[Fraction, Fraction
 
 
 def check_domain(ba_values, ca_values, densities) -> None:
-    """Every shape at both ends of the sweep is a scene the solver answers (else one line)."""
+    """At most :data:`MAX_CELLS` shapes, and every shape at both ends of the sweep is a scene the solver
+    answers (else one line)."""
+    if len(ba_values) * len(ca_values) > MAX_CELLS:
+        raise SceneError(f"the grid has {len(ba_values)} x {len(ca_values)} = {len(ba_values) * len(ca_values)} "
+                         f"shapes; an atlas takes at most {MAX_CELLS} (split it into several --out folders)")
     for ba in ba_values:
         for ca in ca_values:
             body, dims = cell_body(ba, ca)

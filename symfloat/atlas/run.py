@@ -22,7 +22,7 @@ from fractions import Fraction
 from pathlib import Path
 
 from ..errors import EnvironmentProblem
-from ..report.files import write_atomic
+from ..files import write_atomic
 from .cell import compute_cell
 from .dataset import part_done, solver_stamp, write_combined, write_part
 
@@ -55,8 +55,8 @@ class Build:
 
 def cube_reference() -> dict:
     """The thresholds of ``symfloat phase cube`` (its default sweep of 48 densities)."""
-    from ..solver.phase import phase_diagram
-    diagram = phase_diagram("cube")
+    from ..comparison.thresholds import phase_with_sources
+    diagram = phase_with_sources("cube")
     return {"command": "symfloat phase cube", "steps": 48, "code": solver_stamp(),
             "duality_holds": bool(diagram.duality_ok),
             "thresholds": [{"density": t.density, "error": t.bracket, "position": t.label, "change": t.change}

@@ -1,8 +1,8 @@
 """A cache of derivation reports keyed by content, verified when read.
 
-The key hashes the derivation module's source, its proof certificates, the
-source of the library itself (model, engine, geometry) and the keys of the
-derivations it requires, so any change to what a result depends on re-checks it.
+The key (:mod:`symfloat.engine.key`) hashes everything a derivation's report depends on: its package,
+the transcription it quotes, the library modules its check executes and the keys of the derivations it
+requires, so any change to what a result depends on re-checks it.
 
 An entry is ``{"format", "derivation", "key", "sha256", "report"}`` in the file
 ``<derivation>.<key>.json``; ``sha256`` is the hash of the report's canonical JSON
@@ -10,7 +10,11 @@ An entry is ``{"format", "derivation", "key", "sha256", "report"}`` in the file
 stored under and the hash; an entry that fails any check (truncated, corrupted,
 edited by hand, written by another format) is a miss: the derivation is checked
 again and the entry replaced.  Entries are written to a temporary file and
-renamed, so concurrent runs read either a whole old entry or a whole new one.
+renamed, so concurrent runs read either a whole old entry or a whole new one; an entry gets the
+mode the umask gives (``0644`` under ``022``), and the temporary file of a write that a killed run
+left is removed by the next run that prepares the cache.  What the cache returns is checked
+once more by the runner: the report must stand up to the checker's own rules
+(:func:`symfloat.engine.check.rejudged`).
 """
 from __future__ import annotations
 
@@ -18,41 +22,19 @@ import hashlib
 import json
 import os
 import tempfile
-from functools import cache
 from pathlib import Path
 
 from ..errors import EnvironmentProblem
+from ..leftovers import sweep_stale
 
-__all__ = ["library_fingerprint", "derivation_key", "report_hash", "ReportCache", "CacheError", "FORMAT"]
+__all__ = ["report_hash", "ReportCache", "CacheError", "FORMAT"]
 
-_LIBRARY_PARTS = ("model", "engine", "geometry", "__init__.py")
-FORMAT = 2
+FORMAT = 4          # 4: reports carry what their verdicts are judged again from (see check.rejudged), keys
+                    # cover whole derivation packages (engine/key.py)
 
 
 class CacheError(EnvironmentProblem):
     """The cache directory cannot be used (exit status 2)."""
-
-
-@cache
-def library_fingerprint() -> str:
-    root = Path(__file__).resolve().parents[1]
-    h = hashlib.sha256()
-    for part in _LIBRARY_PARTS:
-        for f in sorted((root / part).rglob("*.py")) if (root / part).is_dir() else [root / part]:
-            h.update(f.relative_to(root).as_posix().encode())
-            h.update(f.read_bytes())
-    return h.hexdigest()
-
-
-def derivation_key(source: Path, required_keys, proofs: Path | None = None) -> str:
-    """The cache key of the derivation whose module is *source*."""
-    h = hashlib.sha256(library_fingerprint().encode())
-    h.update(Path(source).read_bytes())
-    if proofs is not None and proofs.exists():
-        h.update(proofs.read_bytes())
-    for k in required_keys:
-        h.update(k.encode())
-    return h.hexdigest()[:32]
 
 
 def report_hash(report) -> str:
@@ -65,53 +47,75 @@ def report_hash(report) -> str:
     return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
+def _umask() -> int:
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
 def _default_root() -> Path:
-    from ..project import project_root
+    from ..project import outputs_root
     env = os.environ.get("SYMFLOAT_CACHE")
     if env:
         return Path(env)
-    return (project_root() or Path.cwd()) / ".symfloat-cache"
+    return (outputs_root() or Path.cwd()) / ".symfloat-cache"
 
 
 class ReportCache:
     """Reports stored as verified JSON entries under *root* (``$SYMFLOAT_CACHE``, else
-    ``.symfloat-cache`` in the project checkout, else in the working directory)."""
+    ``.symfloat-cache`` in the library of ``SYMFLOAT_LIBRARY`` or the project checkout, else in the
+    working directory)."""
 
     def __init__(self, root: str | os.PathLike | None = None, enabled: bool = True):
         self.root = Path(root) if root else _default_root()
         self.enabled = enabled
 
-    def _path(self, derivation_id, key):
+    def path(self, derivation_id, key) -> Path:
+        """The file of the entry of *derivation_id* under *key*."""
         return self.root / f"{derivation_id}.{key}.json"
 
     def prepare(self) -> None:
-        """Create the cache directory and make sure it can be written, before any work."""
+        """Create the cache directory and make sure it can be written, before any work; remove the
+        temporary files of writes a killed run left (:func:`~symfloat.leftovers.sweep_stale`)."""
         if not self.enabled:
             return
-        if self.root.exists() and not self.root.is_dir():
-            raise CacheError(f"cannot use the cache directory {self.root} (SYMFLOAT_CACHE): not a directory")
+        shown = str(self.root) if len(str(self.root)) <= 120 else f"{str(self.root)[:60]}...{str(self.root)[-50:]}"
         try:
+            if self.root.exists() and not self.root.is_dir():
+                raise CacheError(f"cannot use the cache directory {shown} (SYMFLOAT_CACHE): not a directory")
             self.root.mkdir(parents=True, exist_ok=True)
+            fd, probe = tempfile.mkstemp(dir=self.root, prefix=".probe.", suffix=".tmp")
+            os.close(fd)
+            os.unlink(probe)
         except OSError as exc:
-            raise CacheError(f"cannot use the cache directory {self.root} (SYMFLOAT_CACHE): "
+            if isinstance(exc, CacheError):
+                raise
+            raise CacheError(f"cannot use the cache directory {shown} (SYMFLOAT_CACHE): "
                              f"{exc.strerror or exc}") from None
-        if not self.root.is_dir() or not os.access(self.root, os.W_OK | os.X_OK):
-            raise CacheError(f"cannot use the cache directory {self.root} (SYMFLOAT_CACHE): not a writable "
-                             f"directory")
+        sweep_stale(self.root, ".*.tmp")
 
     def get(self, derivation_id, key):
         """The stored report, or ``None`` when there is none or it fails a check."""
+        return self.read(derivation_id, key)[0]
+
+    def read(self, derivation_id, key) -> tuple[dict | None, str]:
+        """``(report, "")``, or ``(None, why)``: ``why`` is empty when there is no entry, else the check
+        the entry fails (its envelope, the derivation and key it was stored under, its content hash)."""
         if not self.enabled:
-            return None
+            return None, ""
         try:
-            entry = json.loads(self._path(derivation_id, key).read_text(encoding="utf-8"))
-        except (OSError, ValueError):
-            return None
-        if not (isinstance(entry, dict) and entry.get("format") == FORMAT
-                and entry.get("derivation") == derivation_id and entry.get("key") == key
-                and isinstance(entry.get("report"), dict) and entry.get("sha256") == report_hash(entry["report"])):
-            return None
-        return entry["report"]
+            entry = json.loads(self.path(derivation_id, key).read_text(encoding="utf-8"))
+        except FileNotFoundError:
+            return None, ""
+        except (OSError, ValueError) as exc:
+            return None, f"not readable JSON ({getattr(exc, 'strerror', None) or type(exc).__name__})"
+        if not (isinstance(entry, dict) and entry.get("format") == FORMAT):
+            return None, f"not an entry of format {FORMAT}"
+        if entry.get("derivation") != derivation_id or entry.get("key") != key:
+            return None, "stored under another derivation or key than its name says"
+        if not isinstance(entry.get("report"), dict) or entry.get("sha256") != report_hash(entry["report"]):
+            return None, "its content hash does not match the report"
+        return entry["report"], ""
 
     def put(self, derivation_id, key, data):
         if not self.enabled:
@@ -126,7 +130,8 @@ class ReportCache:
             fd, tmp = tempfile.mkstemp(dir=self.root, prefix=f".{derivation_id}.", suffix=".tmp")
             with os.fdopen(fd, "w", encoding="utf-8") as f:
                 f.write(json.dumps(entry, ensure_ascii=False))
-            os.replace(tmp, self._path(derivation_id, key))
+            os.chmod(tmp, 0o666 & ~_umask())          # the umask's mode, not mkstemp's 0600
+            os.replace(tmp, self.path(derivation_id, key))
             tmp = None
         except OSError as exc:
             raise CacheError(f"cannot write to the cache directory {self.root} (SYMFLOAT_CACHE): "

@@ -16,20 +16,27 @@ algebra — is a *failure*: it is reported with the locator and makes
 """
 from __future__ import annotations
 
+import json
 import time
 from dataclasses import asdict, dataclass, field
+from functools import cache
+from importlib.resources import files
 
 import sympy as sp
+import fastjsonschema
 
 from ..model.claim import as_latex, identical_links, members
 from ..model.derivation import Derivation, Printed
 from ..model.relation import is_relation
 from .definitions import DefinitionRoute
+from .print_corrections import print_corrections
 from .identity import Domain, IdentityResult, check_identity, check_rounded
 from .proofs import ProofBook
 from .relation import check_relation
+from .witness import record_agrees
 
-__all__ = ["StepReport", "FormulaReport", "DerivationReport", "check_derivation"]
+__all__ = ["StepReport", "FormulaReport", "DerivationReport", "check_derivation", "judge", "step_failure",
+           "rejudged", "Unsound"]
 
 
 @dataclass
@@ -59,6 +66,10 @@ class FormulaReport:
     witness_notes: list = field(default_factory=list)
     corrected_numeric: list = field(default_factory=list)
     numeric_content: bool = True      # False: no witness measured it and the definition route found it a definition
+    lost: str = ""                    # what the transcription lost of it
+    corrected_identity: dict | None = None    # the check of the declared correction
+    against: list = field(default_factory=list)             # witnesses at odds with the printed reading
+    against_correction: list = field(default_factory=list)  # ... and with the declared correction
 
 
 @dataclass
@@ -208,8 +219,8 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
             r = _check_chain(s.claim, names, results, domain, f"{d.id}/{s.name}", book, proofs, prove=prove,
                              timing=timing, kind="step")
             rep = StepReport(s.name, s.why, list(s.uses), as_latex(s.claim), s.note, r.status, r.to_json())
-            if r.status == "refuted":
-                failures.append(f"{d.source} {d.locator}: step {s.name!r} is refuted: {r.counterexample}")
+            if step_failure(rep):
+                failures.append(f"{d.source} {d.locator}: {step_failure(rep)}")
         if s.result is not None:
             results[s.result] = _substitute(members(s.claim)[-1], results)
         first, last = members(s.claim)[0], members(s.claim)[-1]
@@ -258,82 +269,135 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
     for p in d.printed:
         if p.name in targeted or p.lost:
             continue
-        for key, reading in ((p.name, p.reading),
+        for target, reading in ((p.name, p.reading),
                              (p.name + "#corrected", p.erratum.corrected_reading if p.erratum else None)):
             if is_relation(reading):      # its sides from the definitions, at the relation check's counterexample too
-                check = identities.get(p.name) if key == p.name else corrected.get(p.name)
-                outcomes.setdefault(key, []).append(route.relation_outcome(key, reading, results, check))
+                check = identities.get(p.name) if target == p.name else corrected.get(p.name)
+                outcomes.setdefault(target, []).append(route.relation_outcome(target, reading, results, check))
             elif reading is not None:
-                outcomes.setdefault(key, []).append(route.outcome(key, reading))
+                outcomes.setdefault(target, []).append(route.outcome(target, reading))
     timing["witnesses"] = time.perf_counter() - t_witnesses
     for p in d.printed:          # printed numbers agree with a witness to their printed precision
         if p.tolerance is not None:
-            for key in (p.name, p.name + "#corrected"):
-                for out in outcomes.get(key, []):
-                    out.agrees = all(r["abs_error"] <= float(p.tolerance) * (1 + 1e-9) for r in out.records)
+            for target in (p.name, p.name + "#corrected"):
+                for out in outcomes.get(target, []):
+                    for r in out.records:
+                        r["abs_tolerance"] = float(p.tolerance) * (1 + 1e-9)
+                    out.agrees = all(record_agrees(r) for r in out.records)
                     out.note = "" if out.agrees else f"{out.witness}: differs by more than the printed precision"
 
-    formulas = [_verdict(d, p, identities.get(p.name), corrected.get(p.name), outcomes, failures)
+    def correction(p) -> str:           # the smallest edit of a refuted print that makes it hold
+        found = print_corrections(p, results, domain, f"{d.id}/{p.name}", lambda chain: _check_chain(
+            chain, set(), results, domain, f"{d.id}/{p.name}#edit", None, {}, p.tolerance, prove), limit=1)
+        if not found:
+            return "no single small edit of the print makes it hold"
+        c = found[0]
+        return f"the smallest correction found is {c.text} ({c.change}: {c.what}, {c.kind}; {c.status})"
+
+    formulas = [_verdict(d, p, identities.get(p.name), corrected.get(p.name), outcomes, failures, correction)
                 for p in d.printed]
-    failures += [f"{d.source} {d.locator}: the proof certificate of {k} ({c['strategy']}) no longer proves "
-                 f"it; search anew with `symfloat verify {d.id} --search-proofs`"
-                 for k, c in proofs.items() if c["how"] == "replay failed"]
+    failures += [f"{d.source} {d.locator}: {m}" for m in _proof_failures(d.id, proofs)]
     return DerivationReport(d.id, d.source, d.title, d.locator, key, time.perf_counter() - t0,
                             step_reports, formulas, failures, proofs=proofs, timing=timing)
 
 
-def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
+def step_failure(step: StepReport) -> str:
+    """The failure a step's status makes (a refuted step), or ``""``."""
+    if step.status != "refuted":
+        return ""
+    return f"step {step.name!r} is refuted: {(step.identity or {}).get('counterexample')}"
+
+
+def _proof_failures(derivation_id: str, proofs: dict) -> list[str]:
+    """A certificate that no longer proves its claim is a failure of the derivation."""
+    return [f"the proof certificate of {k} ({c['strategy']}) no longer proves it; search anew with "
+            f"`symfloat verify {derivation_id} --search-proofs`" for k, c in proofs.items() if c["how"] == "replay failed"]
+
+
+def judge(f: FormulaReport, erratum_declared: bool) -> tuple[str, str | None, list[str]]:
+    """The verdict, evidence and failures that the recorded evidence of *f* gives: the check of its
+    reading (``f.identity``), of the declared correction (``f.corrected_identity``), the witness records
+    (each within the bound it carries, :func:`~symfloat.engine.witness.record_agrees`) and the witnesses
+    found at odds (``f.against``, ``f.against_correction``).  The checker decides every verdict here, and
+    a cached report is judged again by the same function when it is read (:func:`rejudged`)."""
+    ident = IdentityResult.from_json(f.identity) if f.identity else None
+    corr = IdentityResult.from_json(f.corrected_identity) if f.corrected_identity else None
+    printed_agree = not f.against and all(record_agrees(r) for r in f.numeric)
+    corrected_agree = not f.against_correction and all(record_agrees(r) for r in f.corrected_numeric)
+    if f.lost:
+        return "unverifiable", None, []
+    if ident is not None and ident.status == "trivial":
+        return "trivial", None, ["an erratum is declared but the reading compares a thing with itself"] \
+            if erratum_declared else []
+    if ident is not None and ident.status == "undecided":
+        return "unverifiable", None, []
+    failures = []
+    if ident is not None and ident.holds:
+        if erratum_declared:
+            failures.append("an erratum is declared but the print holds")
+        if not printed_agree:
+            failures.append("derived and printed agree but a witness disagrees")
+        return "verified", ident.evidence, failures
+    if not erratum_declared:       # refuted (or unreadable) print
+        failures.append(f"the print is refuted ({ident.counterexample if ident else None}) and no erratum is "
+                        f"declared")
+        return "erratum", "sampled", failures
+    if f.numeric and printed_agree:
+        failures.append("the print is refuted but the witnesses agree with it")
+    if corr is not None and corr.status == "trivial":
+        failures.append("the reading of the correction compares a thing with itself")
+    elif corr is not None and not corr.holds:
+        failures.append(f"the declared correction does not hold ({corr.status}: "
+                        f"{corr.counterexample or corr.residual})")
+    if f.corrected_numeric and not corrected_agree:
+        failures.append("a witness disagrees with the declared correction")
+    return "erratum", corr.evidence if corr is not None and corr.holds else "sampled", failures
+
+
+def _refutation(cx: dict) -> str:
+    """A counterexample with labelled sides: ``at h=1, r=2 (printed: 9/5, derived: 27/20)``."""
+    point = ", ".join(f"{k}={v}" for k, v in cx["point"].items())
+    within = f", allowed difference {cx['tolerance']}" if "tolerance" in cx else ""
+    return f"{'at ' + point + ' ' if point else ''}(printed: {cx['rhs']}, derived: {cx['lhs']}{within})"
+
+
+def _verdict(d, p, ident, corr, outcomes, failures, correction) -> FormulaReport:
     where = f"{d.source} {p.locator} ({p.name})"
     # an outcome without records (the definition route found nothing to measure) only adds its note
     printed_out = [o for o in outcomes.get(p.name, []) if o.records]
     corrected_out = [o for o in outcomes.get(p.name + "#corrected", []) if o.records]
     every = outcomes.get(p.name, []) + outcomes.get(p.name + "#corrected", [])
-    notes = [o.note for o in every if o.note]
-    numeric = [r for o in printed_out for r in o.records]
-    rep = FormulaReport(d.formula_id(p), d.source, p.locator, "unverifiable", None, numeric,
-                        p.excerpt, _latex(p), identity=ident.to_json() if ident else None,
+    rep = FormulaReport(d.formula_id(p), d.source, p.locator, "unverifiable", None,
+                        [r for o in printed_out for r in o.records], p.excerpt, _latex(p),
+                        identity=ident.to_json() if ident else None,
                         corrected_numeric=[r for o in corrected_out for r in o.records],
-                        witness_notes=notes,
-                        numeric_content=bool(printed_out or corrected_out) or all(o.measurable for o in every))
+                        witness_notes=[o.note for o in every if o.note],
+                        numeric_content=bool(printed_out or corrected_out) or all(o.measurable for o in every),
+                        lost=p.lost or "", corrected_identity=corr.to_json() if corr else None,
+                        against=[o.witness for o in printed_out if not o.agrees],
+                        against_correction=[o.witness for o in corrected_out if not o.agrees])
+    rep.verdict, rep.evidence, found = judge(rep, p.erratum is not None)
+    if p.erratum is None and rep.verdict == "erratum":       # a refuted print: its sides labelled, a correction offered
+        shown = _refutation(ident.counterexample) if ident is not None and ident.counterexample else ""
+        found = [f"the print is refuted {shown} and no erratum is declared; {correction(p)}"
+                 if m.startswith("the print is refuted") else m for m in found]
+    failures += [f"{where}: {m}" for m in found]
+    if rep.verdict == "erratum" and p.erratum is not None and corr is None and p.erratum.corrected_reading is not None:
+        failures.append(f"{where}: the correction was not checked")
     if p.lost:
         rep.reason = f"text lost in the transcription: {p.lost}"
-        return rep
-    if ident is not None and ident.status == "trivial":
-        rep.verdict = "trivial"
+    elif rep.verdict == "trivial":
         rep.reason = "the reading's members are identical as built: the comparison proves nothing"
-        if p.erratum is not None:
-            failures.append(f"{where}: an erratum is declared but the reading compares a thing with itself")
-        return rep
-    if ident is not None and ident.status == "undecided":
+    elif rep.verdict == "unverifiable":
         rep.reason = (f"the checks could not decide: {ident.samples} valid samples, and the recorded proof "
                       f"search found no symbolic proof (details in the identity record)")
-        return rep
-    holds = ident is not None and ident.holds
-    if holds:
-        if p.erratum is not None:
-            failures.append(f"{where}: an erratum is declared but the print holds")
-        if not all(o.agrees for o in printed_out):
-            failures.append(f"{where}: derived and printed agree but a witness disagrees")
-        rep.verdict, rep.evidence = "verified", ident.evidence
-        return rep
-    # refuted (or unreadable) print
-    if p.erratum is None:
-        failures.append(f"{where}: the print is refuted ({ident.counterexample}) and no erratum is declared")
-        rep.verdict, rep.evidence = "erratum", "sampled"
-        return rep
-    if printed_out and all(o.agrees for o in printed_out):
-        failures.append(f"{where}: the print is refuted but the witnesses agree with it")
-    if corr is None and p.erratum.corrected_reading is not None:
-        failures.append(f"{where}: the correction was not checked")
-    if corr is not None and corr.status == "trivial":
-        failures.append(f"{where}: the reading of the correction compares a thing with itself")
-    elif corr is not None and not corr.holds:
-        failures.append(f"{where}: the declared correction does not hold ({corr.status}: "
-                        f"{corr.counterexample or corr.residual})")
-    if corrected_out and not all(o.agrees for o in corrected_out):
-        failures.append(f"{where}: a witness disagrees with the declared correction")
-    rep.verdict = "erratum"
-    rep.evidence = corr.evidence if corr is not None and corr.holds else "sampled"
+    elif rep.verdict == "erratum" and p.erratum is not None:
+        rep.erratum = _erratum(p, ident, corr, corrected_out)
+    return rep
+
+
+def _erratum(p, ident, corr, corrected_out) -> dict:
+    """The erratum's entry: its declaration, with what the engine found."""
     found = []
     if ident is not None and ident.counterexample:
         cx = ident.counterexample
@@ -351,8 +415,58 @@ def _verdict(d, p, ident, corr, outcomes, failures) -> FormulaReport:
             best = min(o.records, key=lambda r: r["rel_error"])
             found.append(f"{o.witness} agrees with the correction to {best['rel_error']:.1e} "
                          f"({best['method']})")
-    rep.erratum = {
+    return {
         "kind": p.erratum.kind, "confidence": p.erratum.confidence, "corrected": p.erratum.corrected,
         "evidence": p.erratum.evidence + (" Engine: " + "; ".join(found) + "." if found else ""),
+        **({"places": list(p.erratum.places)} if p.erratum.places else {}),
+        **({"objection": p.erratum.objection, "answer": p.erratum.answer} if p.erratum.objection else {}),
     }
-    return rep
+
+
+class Unsound(ValueError):
+    """A stored report that the checker's rules do not give back (see :func:`rejudged`)."""
+
+
+@cache
+def _report_schema():
+    """The report schema compiled to a validator (fastjsonschema: a cached report is read in about a
+    millisecond, where jsonschema would take twenty)."""
+    text = files("symfloat").joinpath("schemas", "report.schema.json").read_text(encoding="utf-8")
+    return fastjsonschema.compile(json.loads(text))
+
+
+def rejudged(data, derivation_id: str, key: str) -> DerivationReport:
+    """The report *data* (as :meth:`DerivationReport.to_json` wrote it, read back from the cache) when it
+    stands up to the checker's own rules, else :class:`Unsound` saying why: it follows the report schema
+    (``symfloat/schemas/report.schema.json``), it is the report of *derivation_id* under the cache *key*
+    it was stored under, every step's status is its identity check's, no step is refuted and no
+    certificate failed, and every formula's verdict and evidence are those :func:`judge` gives from its
+    own recorded checks, witness records and erratum, with no failure.  A stored report never has
+    failures: a report with any is not cached."""
+    try:
+        _report_schema()(data)
+    except fastjsonschema.JsonSchemaException as exc:
+        message = exc.message.replace("data", "the report", 1)
+        raise Unsound(message if len(message) < 160 else message[:160] + " ...") from None
+    report = DerivationReport.from_json(data)
+    if report.id != derivation_id or report.key != key:
+        raise Unsound(f"it is the report of {report.id} under key {report.key}, not of {derivation_id} under {key}")
+    if report.failures:
+        raise Unsound("it records failures")
+    for step in report.steps:
+        if step.identity is not None and step.identity["status"] != step.status:
+            raise Unsound(f"step {step.name!r} is {step.status!r} but its check says {step.identity['status']!r}")
+        if step_failure(step):
+            raise Unsound(step_failure(step))
+    for problem in _proof_failures(report.id, report.proofs):
+        raise Unsound(problem)
+    for f in report.formulas:
+        if not f.id.startswith(f"{report.id}/"):
+            raise Unsound(f"formula {f.id} is not one of {report.id}")
+        verdict, evidence, problems = judge(f, f.erratum is not None)
+        if (verdict, evidence) != (f.verdict, f.evidence):
+            raise Unsound(f"{f.id} is recorded {f.verdict!r} ({f.evidence}) where its own evidence gives "
+                          f"{verdict!r} ({evidence})")
+        if problems:
+            raise Unsound(f"{f.id}: {problems[0] if len(problems[0]) < 160 else problems[0][:160] + ' ...'}")
+    return report

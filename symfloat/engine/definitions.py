@@ -47,7 +47,7 @@ from ..model.relation import Cases, Holds, RealRoots
 from .identity import Domain
 from .relation import boundary_points, inserted, random_points, relation_intervals, statement, truth
 from .root_count import count_real_roots
-from .witness import Outcome, Precision
+from .witness import Outcome, Precision, record_agrees
 
 __all__ = ["DefinitionRoute", "definitions", "ROUTE_METHODS"]
 
@@ -374,8 +374,8 @@ class DefinitionRoute:
                 return out
             out.records.append({"method": f"definitions, {method.dps} digits", "abs_error": worst_abs,
                                 "rel_error": worst_rel, "seconds": time.perf_counter() - t0,
-                                "cases": len(cases)})
-            if worst_rel > method.tolerance:
+                                "cases": len(cases), "rel_tolerance": method.tolerance})
+            if not record_agrees(out.records[-1]):
                 out.agrees = False
         if not out.agrees:
             out.note = "definition route: the definitions give another value"
@@ -469,15 +469,15 @@ class DefinitionRoute:
             if measured:
                 out.records.append({"method": f"definitions, {method.dps} digits", "abs_error": worst_abs,
                                     "rel_error": worst_rel, "seconds": time.perf_counter() - t0 - count["seconds"],
-                                    "cases": len(points)})
-                if worst_rel > method.tolerance:
+                                    "cases": len(points), "rel_tolerance": method.tolerance})
+                if not record_agrees(out.records[-1]):
                     out.agrees = False
             if counted and count["points"]:
                 out.records.append({"method": f"root count, polyroots and inclusion discs, {method.dps} digits",
                                     "abs_error": float(count["abs"]), "rel_error": float(count["rel"]),
                                     "seconds": count["seconds"], "cases": count["points"],
-                                    "radius": float(count["radius"])})
-                if count["abs"]:
+                                    "radius": float(count["radius"]), "abs_tolerance": 0.0})
+                if not record_agrees(out.records[-1]):
                     out.agrees, differs = False, True
         notes = []
         if not out.agrees and not differs:

@@ -26,7 +26,7 @@ import sympy as sp
 
 from ..geometry.floating import (FloatingState, _dot, _sub, _unit, body_volume_centroid, box, clip_below, draught,
                                  floating_state, regular_prism, right_prism, submerged, volume_centroid)
-from ..solver.cylinder import cylinder_state
+from ..geometry.cylinder import cylinder_state
 from .witness import MeasuredWitness, Precision
 
 __all__ = ["Body", "FloatingWitness", "QUANTITIES", "TILT_QUANTITIES", "MEASURED", "FLOATING_METHODS",
@@ -562,7 +562,7 @@ __all__ += ["Joined", "waterplane_moment", "Root", "At", "FloatingRootWitness", 
 class Cylinder:
     """A circular cylinder of radius ``r``, axis z from -length/2 to length/2 (G at the origin), in float64
     (``dps`` None) or mpmath.  Floated with up vector u it is turned about its axis so that u lies in the
-    meridian plane of :mod:`symfloat.solver.cylinder`: draught, volume, centre of buoyancy and waterplane
+    meridian plane of :mod:`symfloat.geometry.cylinder`: draught, volume, centre of buoyancy and waterplane
     there by quadrature of exact slices (exact branches upright and lying; base cuts included).
     ``vertices``: the four rim points extreme along the last up vector, the only points that a reading of
     the extreme heights of the body or of a base sees."""
@@ -575,7 +575,7 @@ class Cylinder:
 
 def _cylinder_state(cyl, u, s):
     """The :class:`~symfloat.geometry.floating.FloatingState` of a :class:`Cylinder` with *u* (body frame) up
-    at density ratio *s*: :func:`symfloat.solver.cylinder.cylinder_state` in the meridian plane of u, carried
+    at density ratio *s*: :func:`symfloat.geometry.cylinder.cylinder_state` in the meridian plane of u, carried
     to the body frame; the waterplane's tensor in the basis (e_theta, e_y), diagonal by symmetry."""
     dps = cyl.dps or 15
     m, zero = (math, 0.0) if cyl.dps is None else (mpmath, mpmath.mpf(0))

@@ -26,7 +26,9 @@ from pathlib import Path
 
 import sympy as sp
 
-__all__ = ["Certificate", "ProofBook", "claim_digest", "proofs_folder", "slowdown"]
+from ..errors import EnvironmentProblem
+
+__all__ = ["Certificate", "ProofBook", "claim_digest", "proofs_file", "slowdown"]
 
 
 @dataclass(frozen=True)
@@ -77,24 +79,24 @@ def slowdown() -> float:
     certificates use no time limit, so no verdict can depend on it."""
     raw = os.environ.get("SYMFLOAT_SLOWDOWN", "")
     try:
-        factor = float(raw) if raw else 1.0
+        factor = float(raw) if raw and len(raw) <= 40 and raw.isascii() else 1.0 if not raw else None
     except ValueError:
-        raise ValueError(f"SYMFLOAT_SLOWDOWN must be a number >= 1, not {raw!r}") from None
-    if not factor >= 1:
-        raise ValueError(f"SYMFLOAT_SLOWDOWN must be a number >= 1, not {raw!r}")
+        factor = None
+    if factor is None or not factor >= 1:
+        raise EnvironmentProblem(f"SYMFLOAT_SLOWDOWN must be a number >= 1, not {raw[:40]!r}")
     return factor
 
 
-def proofs_folder(derivation_id: str) -> Path:
-    """Where a derivation's certificates are kept: ``proofs/`` beside its module (the package's own
-    for a derivation built outside a module, as tests do)."""
-    from .. import derivations
-    from ..registry import SelectorError, module_path
+def proofs_file(derivation_id: str) -> Path:
+    """Where a derivation's certificates are kept: ``proofs.json`` in its package; a derivation built
+    outside the registry, as tests do, keeps them in the working directory's ``proofs/``."""
+    from ..registry import SelectorError, manifest
 
     try:
-        return module_path(derivation_id).parent / "proofs"
+        folder = manifest(derivation_id).folder
     except SelectorError:
-        return Path(derivations.__path__[0]) / "proofs"
+        return Path("proofs") / f"{derivation_id}.json"
+    return folder / "proofs.json"
 
 
 class ProofBook:
@@ -110,7 +112,7 @@ class ProofBook:
 
     @classmethod
     def load(cls, derivation_id: str, search: bool = False, folder: Path | None = None) -> "ProofBook":
-        path = (folder or proofs_folder(derivation_id)) / f"{derivation_id}.json"
+        path = cls.path(derivation_id, folder)
         try:
             data = json.loads(path.read_text(encoding="utf-8"))
         except FileNotFoundError:
@@ -131,4 +133,4 @@ class ProofBook:
 
     @staticmethod
     def path(derivation_id: str, folder: Path | None = None) -> Path:
-        return (folder or proofs_folder(derivation_id)) / f"{derivation_id}.json"
+        return folder / f"{derivation_id}.json" if folder else proofs_file(derivation_id)

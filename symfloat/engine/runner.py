@@ -4,7 +4,9 @@ Worker processes end with their parent: each asks the kernel for ``SIGKILL`` whe
 parent dies (Linux ``PR_SET_PDEATHSIG``; elsewhere a watcher thread notices the new parent
 within half a second), and ignores ``SIGINT``, which the parent handles: on Ctrl-C it kills
 its workers at once, keeps every report already finished (each is cached as it arrives)
-and lets the ``KeyboardInterrupt`` go on to the command line.
+and lets the ``KeyboardInterrupt`` go on to the command line.  A worker that dies (killed by a
+signal) breaks the pool: the command ends with one line naming the checks left unfinished
+(:class:`WorkerLost`, exit status 2), the finished ones cached.
 """
 from __future__ import annotations
 
@@ -18,17 +20,20 @@ import threading
 import time
 import traceback
 from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
 from contextlib import contextmanager
 from pathlib import Path
 
-from ..errors import DerivationError, SymfloatError
-from ..registry import load, module_path, requires, select
-from ..report.files import write_if_changed
-from .cache import ReportCache, derivation_key
-from .check import DerivationReport, check_derivation
-from .proofs import ProofBook
+from ..errors import DerivationError, EnvironmentProblem, SymfloatError
+from ..files import write_if_changed
+from ..registry import files, load, manifest, requires, select
+from .cache import CacheError, ReportCache
+from .check import DerivationReport, Unsound, check_derivation, rejudged
+from .key import derivation_key
+from .proofs import ProofBook, slowdown
 
-__all__ = ["verify", "derivation_keys", "Progress", "default_workers", "worker_pool"]
+__all__ = ["verify", "derivation_keys", "Progress", "default_workers", "check_environment", "worker_pool", "completed",
+           "WorkerLost", "MAX_WORKERS"]
 
 
 class Progress:
@@ -42,6 +47,13 @@ class Progress:
         if not self.quiet:
             print(f"[{i}/{n}] {derivation_id} ...", end="", file=self.stream, flush=True)
 
+    def checking(self, pending: int, cached: int, workers: int):
+        """The line that opens a check: what is checked, what is read from the cache, on how many workers."""
+        if not self.quiet:
+            on = f" on {workers} workers, a line as each is done" if workers > 1 and pending > 1 else ""
+            print(f"checking {pending} derivation{'s' * (pending != 1)}{on}; {cached} read from the cache",
+                  file=self.stream, flush=True)
+
     def tick(self):
         if not self.quiet:
             print(".", end="", file=self.stream, flush=True)
@@ -53,12 +65,26 @@ class Progress:
             print(f" {how}{bad}", file=self.stream, flush=True)
 
 
+MAX_WORKERS = 64
+
+
 def default_workers() -> int:
-    """Processes for checking: ``$SYMFLOAT_WORKERS``, else the usable cores (at most 4)."""
+    """Processes for checking: ``$SYMFLOAT_WORKERS`` (1 to :data:`MAX_WORKERS`), else the usable cores
+    (at most 4).  Any other value of the variable is an environment problem (exit status 2)."""
     env = os.environ.get("SYMFLOAT_WORKERS", "")
-    if env.isdigit() and int(env) >= 1:
+    if env:
+        if not (env.isascii() and env.isdigit() and len(env) <= 2 and 1 <= int(env) <= MAX_WORKERS):
+            raise EnvironmentProblem(f"SYMFLOAT_WORKERS must be a whole number from 1 to {MAX_WORKERS}, "
+                                     f"not {env[:40]!r}")
         return int(env)
     return max(1, min(4, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1))
+
+
+def check_environment() -> None:
+    """The environment variables of checking (``SYMFLOAT_WORKERS``, ``SYMFLOAT_SLOWDOWN``) are usable, else
+    :class:`~symfloat.errors.EnvironmentProblem` (exit status 2): the command line asks before any work."""
+    default_workers()
+    slowdown()
 
 
 def _end_with_parent(parent: int) -> None:
@@ -89,6 +115,29 @@ def _kill(pool: ProcessPoolExecutor) -> None:
     pool.shutdown(wait=False, cancel_futures=True)
 
 
+class WorkerLost(EnvironmentProblem):
+    """A worker process died (a signal, the out-of-memory killer): exit status 2, one line naming
+    what was not finished; what was finished is kept."""
+
+
+def completed(futures: dict, what: str):
+    """``(name, result)`` of each of *futures* (future -> name) as it completes.  When a worker process
+    dies, the pool breaks: :class:`WorkerLost` names the *what* (``checks``, ``notebooks``) left
+    unfinished, after the caller has kept every result yielded before."""
+    done = 0
+    names = set(futures.values())
+    try:
+        for future in as_completed(futures):
+            result = future.result()
+            done += 1
+            names.discard(futures[future])
+            yield futures[future], result
+    except BrokenProcessPool:
+        raise WorkerLost(f"a worker process died (killed by a signal, perhaps for want of memory): the {what} of "
+                         f"{', '.join(sorted(names))} did not finish; the {done} finished are kept, run the "
+                         f"command again to do the rest") from None
+
+
 @contextmanager
 def worker_pool(workers: int):
     """A pool of *workers* forked processes that end with this one; on any exception, Ctrl-C
@@ -105,19 +154,22 @@ def worker_pool(workers: int):
 
 def _cached_report(cache: ReportCache, did: str, key: str) -> DerivationReport | None:
     """The cached report of *did* when its entry passes the cache's checks (envelope, key, content
-    hash) and reads back as a report of that derivation, else ``None`` (it is then checked again
-    and the entry replaced)."""
-    data = cache.get(did, key)
-    if data is None:
-        return None
-    try:
-        report = DerivationReport.from_json(data)
-    except (TypeError, KeyError, ValueError, AttributeError):
-        return None
-    if report.id != did or report.failures:
-        return None
-    report.cached = True
-    return report
+    hash) and the report stands up to the checker's rules (:func:`~symfloat.engine.check.rejudged`),
+    else ``None``: it is then checked again and the entry replaced.  A refused entry is named on
+    stderr with the reason, one line."""
+    data, why = cache.read(did, key)
+    if data is not None:
+        try:
+            report = rejudged(data, did, key)
+        except Unsound as exc:
+            why = f"its report does not stand up to the checker's rules: {exc}"
+        else:
+            report.cached = True
+            return report
+    if why:
+        print(f"symfloat: cache entry {cache.path(did, key)} refused ({why}); checking {did} again",
+              file=sys.stderr, flush=True)
+    return None
 
 
 def _check(did: str, key: str, search: bool, tick=None) -> DerivationReport:
@@ -131,16 +183,22 @@ def _check(did: str, key: str, search: bool, tick=None) -> DerivationReport:
         raise
     except Exception as exc:
         raise DerivationError(f"derivation {did} could not be checked: {type(exc).__name__}: {exc}"
-                              f"{_where(exc, module_path(did))}") from exc
+                              f"{_where(exc, files(did))}") from exc
     report.seconds = time.perf_counter() - t0
     return report
 
 
-def _where(exc: BaseException, module: Path) -> str:
-    """`` (module.py, line N)``: the last line of the derivation module in *exc*'s traceback."""
-    line = next((f.lineno for f in reversed(traceback.extract_tb(exc.__traceback__))
-                 if Path(f.filename).resolve() == module.resolve()), None)
-    return f" ({module.name}, line {line})" if line else ""
+def _where(exc: BaseException, package: list[Path]) -> str:
+    """`` (module.py, line N)``: the last line of one of the derivation's files in *exc*'s traceback."""
+    mine = {f.resolve() for f in package}
+    frame = next((f for f in reversed(traceback.extract_tb(exc.__traceback__)) if Path(f.filename).resolve() in mine),
+                 None)
+    return f" ({Path(frame.filename).name}, line {frame.lineno})" if frame else ""
+
+
+def _size(did: str) -> int:
+    """The bytes of a derivation's package: a proxy for the cost of checking it."""
+    return sum(f.stat().st_size for f in files(did) if f.suffix == ".py")
 
 
 def _check_json(did: str, key: str, search: bool) -> dict:
@@ -155,7 +213,9 @@ def derivation_keys(ids) -> dict[str, str]:
 
     def key(did):
         if did not in keys:
-            keys[did] = derivation_key(module_path(did), [key(r) for r in requires(did)], ProofBook.path(did))
+            m = manifest(did)
+            keys[did] = derivation_key(files(did), m.source, [key(r) for r in requires(did)],
+                                       f"symfloat.derivations.{m.package}")
         return keys[did]
 
     return {did: key(did) for did in ids}
@@ -168,13 +228,15 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
 
     Derivations missing from the cache are checked in *workers* processes (checks are independent
     of one another; only the cache keys chain through the ancestors).  *search_proofs* searches every
-    claim's proof anew instead of replaying its certificate (and so bypasses the cache);
+    claim's proof anew instead of replaying its certificate (so it reads no cached report, whatever the
+    cache holds, and caches what it finds);
     *record_proofs* writes the certificates of every derivation checked without failure to
     ``proofs/<id>.json`` (see :mod:`symfloat.engine.proofs`).  *share*: other processes verify into
     the same cache at the same time (test workers); each derivation is checked by whichever process
     takes its lock first, the others read its report from the cache (:func:`_shared`)."""
-    cache = cache or ReportCache(enabled=use_cache and not search_proofs)
+    cache = cache or ReportCache(enabled=use_cache)
     progress = progress or Progress(quiet=True)
+    check_environment()
     workers = default_workers() if workers is None else workers
     ids = select(selector)
     keys: dict[str, str] = {}
@@ -182,22 +244,31 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
     pending = []
     keys.update(derivation_keys(ids))
     for did in ids:
-        report = _cached_report(cache, did, keys[did])
+        report = None if search_proofs else _cached_report(cache, did, keys[did])
         if report is not None:
             reports[did] = report
         else:
             pending.append(did)
     done = 0
 
+    unkept = []
+
     def finish(did, report):
         nonlocal done
         done += 1
         if not report.failures:
-            cache.put(did, keys[did], report.to_json())
+            try:
+                cache.put(did, keys[did], report.to_json())
+            except CacheError as exc:       # a full disk: the check is used, not thrown away, and said once
+                if not unkept:
+                    print(f"symfloat: {exc}; the results of this run are used but not kept", file=sys.stderr,
+                          flush=True)
+                unkept.append(did)
             if record_proofs:
                 write_if_changed(ProofBook.path(did), ProofBook.text(report.certificates()))
         reports[did] = report
 
+    progress.checking(len(pending), len(ids) - len(pending), workers)
     for did in ids:
         if did in reports:
             done += 1
@@ -207,17 +278,16 @@ def verify(selector: str | None = None, *, use_cache: bool = True, cache: Report
         with worker_pool(min(workers, len(pending))) as pool:
             # the largest modules first (a proxy for their cost), so that no worker is left with a long
             # check at the end while the other idles
-            largest_first = sorted(pending, key=lambda did: -module_path(did).stat().st_size)
+            largest_first = sorted(pending, key=lambda did: -_size(did))
             futures = {pool.submit(_check_json, did, keys[did], search_proofs): did for did in largest_first}
-            for future in as_completed(futures):
-                did = futures[future]
-                finish(did, DerivationReport.from_json(future.result()))
+            for did, data in completed(futures, "checks"):
+                finish(did, DerivationReport.from_json(data))
                 progress.start(done, len(ids), did)
                 progress.done(reports[did])
     else:
-        shared = _shared(cache, sorted(pending, key=lambda did: -module_path(did).stat().st_size)) if share else None
+        shared = _shared(cache, sorted(pending, key=lambda did: -_size(did))) if share else None
         for did, lock in shared or ((did, None) for did in pending):
-            report = _cached_report(cache, did, keys[did]) if lock is not None else None
+            report = _cached_report(cache, did, keys[did]) if lock is not None and not search_proofs else None
             if report is None:
                 progress.start(done + 1, len(ids), did)
                 finish(did, _check(did, keys[did], search_proofs, progress.tick))

@@ -8,7 +8,9 @@ checks to obtain the measurement.
 
 Each comparison becomes a record ``{method, abs_error, rel_error, seconds}``:
 the error of the formula's value against that method's measurement (maximum
-over the cases) and the time the method took (sum over the cases).
+over the cases) and the time the method took (sum over the cases), with the
+bound it is held to (:func:`record_agrees`), so that a record read back says
+by itself whether the formula agrees with the witness.
 """
 from __future__ import annotations
 
@@ -24,7 +26,7 @@ from ..geometry.convex import hull_volume_centroid, section_area, side_faces, si
 from ..model.claim import members
 from .quadrature import DEFAULT_METHODS, TANH_SINH_15, TANH_SINH_50
 
-__all__ = ["Case", "Outcome", "MeasuredWitness", "Precision", "SectionIntegral", "PlaneSections", "SECTION",
+__all__ = ["Case", "Outcome", "record_agrees", "MeasuredWitness", "Precision", "SectionIntegral", "PlaneSections", "SECTION",
            "HullWitness", "SideFaces",
            "ExactHull", "HullSlices", "FaceSections", "ConvergenceOrder"]
 
@@ -53,6 +55,28 @@ class Outcome:
     agrees: bool = True
     note: str = ""
     measurable: bool = True     # False: the formula has nothing a number could check (it restates a definition)
+
+
+def record_agrees(record: dict) -> bool:
+    """Whether a witness record lies within the bound it carries: ``abs_tolerance`` (a printed number's
+    precision; 0 for a count, which must be exact), else ``rel_tolerance`` (the method's), else a
+    measured convergence ``order`` within ``slack`` of ``expected_order``.  A record with none of them
+    agrees with nothing.
+
+    >>> record_agrees({"abs_error": 1e-3, "rel_error": 2e-2, "rel_tolerance": 1e-10})
+    False
+    >>> record_agrees({"abs_error": 1e-3, "rel_error": 2e-2, "abs_tolerance": 5e-3})
+    True
+    >>> record_agrees({"order": 3.96, "expected_order": 4, "slack": 0.15})
+    True
+    """
+    if "abs_tolerance" in record:
+        return record["abs_error"] <= record["abs_tolerance"]
+    if "rel_tolerance" in record:
+        return record["rel_error"] <= record["rel_tolerance"]
+    if "expected_order" in record:
+        return record["order"] is not None and abs(record["order"] - record["expected_order"]) <= record["slack"]
+    return False
 
 
 def _expected(reading, params):
@@ -134,8 +158,8 @@ class MeasuredWitness:
                         worst_abs, worst_rel = max(worst_abs, a), max(worst_rel, r)
                 out.records.append({"method": method.name, "abs_error": worst_abs,
                                     "rel_error": worst_rel, "seconds": seconds,
-                                    "cases": len(self.instances)})
-                if worst_rel > max(method.tolerance, 1e-50):
+                                    "cases": len(self.instances), "rel_tolerance": max(method.tolerance, 1e-50)})
+                if not record_agrees(out.records[-1]):
                     out.agrees = False
             if not out.agrees:
                 out.note = f"{self.description}: disagrees beyond the methods' tolerances"
@@ -408,7 +432,7 @@ class ConvergenceOrder:
         measured = float(slope)
         agrees = abs(measured - self.order) <= self.slack
         for r in records:
-            r["order"] = round(measured, 3)
+            r.update(order=round(measured, 3), expected_order=self.order, slack=self.slack)
         note = f"measured order {measured:.3f} (expected {self.order:g})"
         return {t: Outcome(self.name, [dict(r) for r in records], agrees, note)
                 for t in readings if t.split("#")[0] in self.targets}

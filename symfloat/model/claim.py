@@ -9,6 +9,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .relation import is_relation, relation_latex
+from .symbol_names import latex
 
 __all__ = ["Eq", "members", "as_latex", "pairs", "identical_links", "as_printed", "expressions"]
 
@@ -56,7 +57,7 @@ def as_latex(claim) -> str:
     """The chain as one LaTeX line ``a = b = c`` (a relation as its own line)."""
     if is_relation(claim):
         return relation_latex(claim)
-    return " = ".join(sp.latex(m) for m in members(claim))
+    return " = ".join(latex(m) for m in members(claim))
 
 
 def identical_links(ms) -> list[bool]:

@@ -12,6 +12,7 @@ from fractions import Fraction
 
 import sympy as sp
 
+from ..manifest import PROVIDED_KINDS
 from .claim import Eq, members
 from .erratum import Erratum
 from .prediction import Predictor
@@ -118,7 +119,6 @@ def printed_tolerance(excerpt: str, reading) -> sp.Rational:
     return max(halves)
 
 
-PROVIDED_KINDS = ("thresholds", "forms", "report", "figure", "tables")
 
 
 @dataclass(frozen=True)
@@ -212,6 +212,8 @@ class Derivation:
             raise ValueError(f"{self.id}/{name}: excerpt is not verbatim in {self.source}: {excerpt[:60]!r}")
         if any(p.name == name for p in self.printed):
             raise ValueError(f"duplicate printed name {name!r} in {self.id}")
+        if erratum is not None and erratum.fault and erratum.fault not in excerpt:
+            raise ValueError(f"{self.id}/{name}: the erratum's fault {erratum.fault!r} is not in its excerpt")
         if tolerance == PRINTED_DIGITS:
             tolerance = printed_tolerance(excerpt, reading)
         bound = tuple((tex, *target) for tex, target in (symbols or {}).items())

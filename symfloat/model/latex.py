@@ -12,17 +12,31 @@ SymPy objects by constructors and evaluates no code, but its grammar rejects ``\
 ``\text{...}``, relation chains ``a = b = c`` and ``a < b < c``, and it reads ``\varrho`` as ``rho``,
 so most excerpts would fail or lose distinctions; this reader is used instead, with no dependency.)
 
-Normalisations, each a named rule that the reader reports when it applies (:data:`RULES`).
+Nothing is computed beyond a bound, so that no text can make the reader run long: a number has at
+most :data:`MAX_DIGITS` digits, a number in an exponent is at most :data:`MAX_EXPONENT` in size, and a
+power of two numbers has at most :data:`MAX_DIGITS` digits; a formula past a bound is
+:class:`Unreadable` (``10^{10^{10}}``, a 5,000-digit literal), read in no time.
+
+Normalisations, each a named rule that the reader reports when it applies (:data:`RULES`).  Two
+readings are not normalisations and are not reported: ``\bar z`` is the symbol ``zbar``, kept apart
+from ``z`` (an ``\overline`` names a segment, ``\overline{OF}`` is ``OF``); and with ``integrals=True``
+(a definition to check a print against) ``\int_a^b f \, dx`` is the integral of *f* over *x* from
+*a* to *b*.
 """
 from __future__ import annotations
 
+import math
 import re
 import unicodedata
 from dataclasses import dataclass, field
 
 import sympy as sp
 
-__all__ = ["Unreadable", "Reading", "read", "canonical", "RULES", "RELATIONS"]
+__all__ = ["Unreadable", "Reading", "read", "canonical", "token_spans", "RULES", "RELATIONS", "MAX_DIGITS",
+           "MAX_EXPONENT"]
+
+MAX_DIGITS = 100            # digits of a literal, and of a power of two numbers
+MAX_EXPONENT = 100          # the size of a number in an exponent (the prints raise to 1/2 ... 4)
 
 RULES = {
     "tg": r"\operatorname{tg}, \text{tg}, \tg read as tan; cotg, ctg as cot",
@@ -119,6 +133,22 @@ def _tokens(tex: str) -> list[tuple[str, str]]:
     return out
 
 
+def token_spans(tex: str) -> list[tuple[str, str, int, int]]:
+    r"""The tokens of *tex* as ``(kind, text, start, end)``, spaces and layout included (where an edit of
+    the print may fall); a character the reader does not know is a token of kind ``other``.
+
+    >>> [t[1] for t in token_spans(r"x_s = \frac{3}{4}")]
+    ['x', '_', 's', ' ', '=', ' ', '\\frac', '{', '3', '}', '{', '4', '}']
+    """
+    out, pos = [], 0
+    while pos < len(tex):
+        m = _TOKEN.match(tex, pos)
+        kind, end = (m.lastgroup, m.end()) if m else ("other", pos + 1)
+        out.append((kind, tex[pos:end], pos, end))
+        pos = end
+    return out
+
+
 def _strip_layout(tex: str, rules: set[str]) -> str:
     s = tex.strip().strip("$").strip()
     s2 = re.sub(r"\\quad\s*\(\d+\s?[a-z]?\)\s*$|\(\d+\s?[a-z]?\)\s*$", "", s).strip()
@@ -135,8 +165,9 @@ def _strip_layout(tex: str, rules: set[str]) -> str:
 class _Parser:
     """Recursive descent over the tokens; names of several letters are taken from *names*."""
 
-    def __init__(self, tokens, names: frozenset[str], rules: set[str], segments: set[str]):
+    def __init__(self, tokens, names: frozenset[str], rules: set[str], segments: set[str], integrate=False):
         self.integrals = {}             # how often each integral's text occurred in the formula so far
+        self.integrate = integrate      # read a bounded integral with its differential as an integral
         self.t = [tok for tok in tokens if tok[0] != "space"]
         self.spaced = self._spacing(tokens)
         self.i = 0
@@ -251,7 +282,7 @@ class _Parser:
                 base = base * sp.pi / 180
                 continue
             exponent = self.group_or_atom()
-            base = sp.Pow(base, exponent)
+            base = _power(base, exponent)
         return base
 
     def group_or_atom(self):
@@ -274,6 +305,8 @@ class _Parser:
         raise Unreadable(f"cannot read an exponent from {v!r}")
 
     def _number(self, v):
+        if len(v) > MAX_DIGITS:
+            raise Unreadable(f"a number of {len(v)} digits (the reader takes at most {MAX_DIGITS})")
         if "," in v:
             self.rules.add("decimal-comma")
         whole, _, frac = v.replace(",", ".").partition(".")
@@ -412,9 +445,12 @@ class _Parser:
             if name in _GREEK:
                 self.take()
                 return self._symbol(v)
-            if name in ("overline", "bar"):
+            if name == "overline":
                 self.take()
                 return self._symbol(self._index())
+            if name == "bar":
+                self.take()
+                return self._symbol(canonical(self._index()) + "bar")
             if name in _FUNCTIONS:
                 self.take()
                 if name in ("tg", "cotg", "ctg"):
@@ -455,6 +491,8 @@ class _Parser:
         integrate; a hand reading that names the same integral the same way matches it.  Without a
         differential (Euler's ``\\int w \\cdot u^2``, the element ``w`` standing for it) the integral runs to
         the next sign, relation or closing bracket at its level."""
+        if self.integrate:
+            return self.definite_integral()
         self.take()
         self.rules.add("integral-as-name")
         parts, depth = [r"\int"], 0
@@ -472,6 +510,34 @@ class _Parser:
             depth += (v in ("{", "(")) - (v in ("}", ")"))
             parts.append(self.take()[1])
 
+    def definite_integral(self):
+        """``\\int_a^b f \\, dx``: the integral of *f* over *x* from *a* to *b* (both bounds and the
+        differential are required: an integral is checked as a definite number or function)."""
+        self.take()
+        bounds = {}
+        while self.peek()[1] in ("_", "^"):
+            which = self.take()[1]
+            bounds[which] = self.group_or_atom()
+        if set(bounds) != {"_", "^"}:
+            raise Unreadable("an integral needs both bounds, \\int_a^b")
+        start, depth = self.i, 0
+        while True:
+            kind, v = self.peek()
+            if kind == "end":
+                raise Unreadable("an integral without its differential (dx)")
+            if depth == 0 and v == "d" and self.peek(1)[0] == "letter" and self.i > start:
+                break
+            depth += (v in ("{", "(", "[")) - (v in ("}", ")", "]"))
+            self.take()
+        inner = _Parser([], self.names, self.rules, self.segments, integrate=True)
+        inner.t, inner.spaced = self.t[start:self.i], self.spaced[start:self.i]     # the integrand's tokens
+        integrand = inner.chain()
+        if len(integrand[0]) != 1:
+            raise Unreadable("a relation inside an integral")
+        self.take()
+        variable = self._symbol(self.take()[1])
+        return sp.Integral(integrand[0][0], (variable, bounds["_"], bounds["^"]))
+
     def _integral_symbol(self, name):
         """The integral named *name*; a repeat of the same text in the formula is another integral."""
         self.integrals[name] = self.integrals.get(name, 0) + 1
@@ -486,18 +552,42 @@ class _Parser:
         return inner
 
 
+def _power(base, exponent):
+    """``base ** exponent``, unless it would be too large to compute: a number in the exponent larger than
+    :data:`MAX_EXPONENT`, or a number raised to one with more than :data:`MAX_DIGITS` digits.
+
+    >>> _power(sp.Integer(10), sp.Integer(3))
+    1000
+    >>> _power(sp.Integer(10), sp.Integer(10) ** 10)
+    Traceback (most recent call last):
+    ...
+    symfloat.model.latex.Unreadable: an exponent of 10000000000 (the reader takes at most 100)
+    """
+    numbers = [abs(n) for n in exponent.atoms(sp.Number) if n.is_finite]
+    if numbers and max(numbers) > MAX_EXPONENT:
+        raise Unreadable(f"an exponent of {max(numbers) if max(numbers) < 10 ** 30 else 'more than 1e30'} "
+                         f"(the reader takes at most {MAX_EXPONENT})")
+    if base.is_Rational and exponent.is_Number and base not in (0, 1, -1):
+        digits = max(abs(base.p).bit_length(), base.q.bit_length()) * math.log10(2)
+        if float(abs(exponent)) * max(digits, 1.0) > MAX_DIGITS:
+            raise Unreadable(f"a power of more than {MAX_DIGITS} digits")
+    return sp.Pow(base, exponent)
+
+
 def _text_function(token: str):
     word = re.sub(r"^\\(?:text|mathrm|operatorname)\s*\{|\}$", "", token).strip()
     return _FUNCTIONS.get(word)
 
 
-def read(tex: str, names=frozenset()) -> Reading:
+def read(tex: str, names=frozenset(), *, integrals=False) -> Reading:
     r"""Read *tex* (an excerpt's math, dollars allowed) into rows of members and relations.
 
     *names* are the canonical symbol names of the hand reading: a run of letters forms one of them when
     it can (``AB``, ``Pp``), a superscript stays in a name that continues with it (``T_2^1``); otherwise
     juxtaposed letters multiply, except a run none of whose letters the hand reading has (a segment
-    ``GH``, ``ef``; capitals are a segment also without a hand reading).
+    ``GH``, ``ef``; capitals are a segment also without a hand reading).  With *integrals*, an integral
+    with both bounds and its differential is read as the integral (a definition to check against);
+    otherwise it is one opaque symbol named by its text.
 
     >>> r = read(r"$$x = \varrho + 1/2 \text{tg } \alpha,$$")
     >>> r.rows, sorted(r.rules)
@@ -508,6 +598,8 @@ def read(tex: str, names=frozenset()) -> Reading:
     Traceback (most recent call last):
     ...
     symfloat.model.latex.Unreadable: \begin is not read
+    >>> read(r"\bar z = \int_0^h x \, dx", integrals=True).rows
+    [([zbar, Integral(x, (x, 0, h))], ['='])]
     """
     rules: set[str] = set()
     body = _strip_layout(tex, rules)
@@ -519,7 +611,7 @@ def read(tex: str, names=frozenset()) -> Reading:
         continued = part.lstrip().startswith("&") and rows and rows[-1][1]
         part = part.replace("&", "").strip()
         for tokens in _split_list(_tokens(part)):
-            members, relations = _Parser(tokens, frozenset(names), rules, segments).chain()
+            members, relations = _Parser(tokens, frozenset(names), rules, segments, integrals).chain()
             if continued and not relations and members[0] is not None:
                 rules.add("continued-row")        # "= a \\ & + b" is a + b, "= a \\ & b" is a b
                 last = rows[-1][0][-1]

@@ -25,6 +25,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from .symbol_names import latex
+
 __all__ = ["Relation", "Holds", "Iff", "Cases", "RealRoots", "is_relation", "relation_latex", "indicator"]
 
 
@@ -145,11 +147,11 @@ def is_relation(reading) -> bool:
 
 
 def _domain_latex(r: Relation) -> str:
-    out = [f"{sp.latex(s)} \\in {sp.latex(i)}" for s, i in r.domain] + [sp.latex(w) for w in r.where]
+    out = [f"{latex(s)} \\in {latex(i)}" for s, i in r.domain] + [latex(w) for w in r.where]
     return (r"\quad \text{on } " + ", ".join(out)) if out else ""
 
 
-def relation_latex(r: Relation, show=sp.latex) -> str:
+def relation_latex(r: Relation, show=latex) -> str:
     """One LaTeX line for the relation; *show* writes a SymPy expression (a notebook passes its own)."""
     if isinstance(r, Holds):
         body = show(r.condition)

@@ -6,7 +6,10 @@ checked verbatim on any installation.  A source is data: its transcription and
 a metadata file ``<key>.source.json`` beside it (key, author, title, year,
 language, file, how a place in it is cited, and optionally ``sections``: a regular
 expression, one group, matching the heading lines that open its sections and
-capturing their names).  Adding one adds two files and edits none.
+capturing their names; ``citation``: the rest of the bibliographic record, each a
+string — ``place``, ``publisher``, ``series``, ``number`` (e.g. Euler's Eneström
+number), ``edition`` (a modern edition), ``note`` — and ``provenance``: where the
+transcription comes from).  Adding one adds two files and edits none.
 """
 from __future__ import annotations
 
@@ -16,7 +19,7 @@ from dataclasses import dataclass
 from functools import cache
 from importlib import resources
 
-__all__ = ["Source", "SOURCES", "get_source"]
+__all__ = ["Source", "SOURCES", "get_source", "CITATION_FIELDS"]
 
 
 @dataclass(frozen=True)
@@ -31,6 +34,8 @@ class Source:
     filename: str
     locators: str = ""
     sections: str = ""          # a heading line's pattern (one group: the section's name); "" for one section
+    citation: tuple = ()        # (field, text) pairs of the bibliographic record beyond author, title, year
+    provenance: str = ""        # where the transcription comes from
 
     def text(self) -> str:
         """The full transcription, exactly as shipped."""
@@ -43,7 +48,8 @@ class Source:
 
 _FIELDS = {"key": str, "author": str, "title": str, "year": (int, type(None)), "language": str, "file": str,
            "locators": str}
-_OPTIONAL = {"sections": str}
+_OPTIONAL = {"sections": str, "citation": dict, "provenance": str}
+CITATION_FIELDS = ("place", "publisher", "series", "number", "edition", "note")
 
 
 def _folders() -> list:
@@ -77,12 +83,16 @@ def _source(name: str, data) -> Source:
             raise ValueError(f"sources/{name}: sections is not a regular expression ({exc})") from None
         if groups != 1:
             raise ValueError(f"sources/{name}: sections must capture the section's name in one group")
+    citation = data.get("citation", {})
+    if not set(citation) <= set(CITATION_FIELDS) or not all(isinstance(v, str) for v in citation.values()):
+        raise ValueError(f"sources/{name}: citation's fields are {', '.join(CITATION_FIELDS)}, each a string")
     if name != f"{data['key']}.source.json":
         raise ValueError(f"sources/{name}: the file must be named after its key, {data['key']}.source.json")
     if not any(f.joinpath(data["file"]).is_file() for f in _folders()):
         raise ValueError(f"sources/{name}: no transcription {data['file']}")
     return Source(data["key"], data["author"], data["title"], data["year"], data["language"], data["file"],
-                  data["locators"], data.get("sections", ""))
+                  data["locators"], data.get("sections", ""),
+                  tuple((k, citation[k]) for k in CITATION_FIELDS if k in citation), data.get("provenance", ""))
 
 
 def _discover() -> dict[str, Source]:

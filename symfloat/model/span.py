@@ -7,39 +7,28 @@ pair up; a stray one is an error, since it would shift every later span.
 
 A *quantitative sentence* is a sentence whose words (its math masked) assert a range, a count, an
 inequality, a monotonicity, an identity, a stability or a decimal number: the claims in words.
-The word lists are per language and deliberately broad; what they catch is accounted for in the
-ledger (:mod:`symfloat.report.ledger`), quoted or waived, never dropped.
+The word lists are per language, kept as data (``claim_words.json``; a library of texts may add its
+own languages) and deliberately broad; a language without a list is judged by its decimal numbers.
+What they catch is accounted for in the ledger (:mod:`symfloat.report.ledger`), quoted or waived, never dropped.
 """
 from __future__ import annotations
 
+import json
 import re
 from dataclasses import dataclass
 from functools import cache
+from pathlib import Path
 
 from .source import get_source
 
 __all__ = ["Span", "KINDS", "math_intervals", "math_spans", "is_quantitative", "quantitative_sentences", "spans",
-           "line_of"]
+           "line_of", "claim_words"]
 
 KINDS = ("display", "inline", "sentence")
 
 _DISPLAY = re.compile(r"\$\$(.+?)\$\$", re.S)
 _INLINE = re.compile(r"\$([^$\n]+?)\$")
 
-# Words that make a sentence quantitative, by language (lower case, matched at a word start).
-_CLAIM_WORDS = {
-    "German": r"grö(?:ss|ß)er|kleiner|zwischen|mindestens|höchstens|positiv|negativ|null\b|unendlich|"
-              r"maxim|minim|wächst|wachsen|zunimmt|zunehm|abnimmt|abnehm|desto|um so|identisch|"
-              r"übereinstimm|stabil(?:e[nmrs]?)?\b|labil(?:e[nmrs]?)?\b|indifferent|wurzel|lösung|schnittpunkt|"
-              r"gleichgewichtslagen|immer|stets|genau|einzig|keine|beide|"
-              r"(?:zwei|drei|vier|fünf|sechs|sieben|acht|neun|zehn)(?:e[nr]?)?\b",
-    "Latin": r"maior|minor|aequal|aequat|dupl|tripl|quadrupl|cresc|decresc|augeri|minu[ie]|stabil(?:is|e|em)\b|"
-             r"labil(?:is|e|em)\b|"
-             r"indifferen|euanesc|evanesc|positiv|negativ|infinit|maxim|minim|radic|semper|nunquam|"
-             r"congru|(?:duae|duo|tres|tria|quatuor|quinque|sex)\b|proportion|inuers|invers",
-    "Hungarian": r"nagyobb|kisebb|között|egyenl|azonos|stabil\b|labil\b|instabil\b|pozitív|negatív|minimál|"
-                 r"maximál|legalább|legfeljebb|kettő|két\b|három|négy|gyök|megoldás",
-}
 _DECIMAL = re.compile(r"\d+[,.]\d+")
 _MATH_MASK = "\u2063"      # invisible separator: stands for masked math in the prose
 _SENTENCE_END = re.compile(r"(?<=[.;!?])\s+(?=[A-ZÄÖÜÁÉÍÓÚ„\"(])")
@@ -134,8 +123,28 @@ def is_quantitative(prose: str, language: str) -> bool:
     >>> is_quantitative("so ist die Lage stabil.", "German"), is_quantitative("Stabile Lage", "German")
     (True, False)
     """
-    words = re.compile(rf"(?<![\w])(?:{_CLAIM_WORDS[language]})", re.I)
-    return len(prose.split()) >= 4 and bool(words.search(prose) or _DECIMAL.search(prose))
+    listed = claim_words().get(language)
+    words = re.compile(rf"(?<![\w])(?:{listed})", re.I) if listed else None
+    return len(prose.split()) >= 4 and bool((words and words.search(prose)) or _DECIMAL.search(prose))
+
+
+@cache
+def claim_words() -> dict[str, str]:
+    """Language -> the claim words' regular expression: the package's ``claim_words.json``, extended by
+    each library's ``sources/claim-words.json`` (``{"languages": {...}}``); a library's list for a
+    language the package has is added to it.
+
+    >>> sorted(claim_words())[:4]
+    ['English', 'German', 'Hungarian', 'Latin']
+    """
+    from ..project import library_folders
+    words = dict(json.loads((Path(__file__).with_name("claim_words.json")).read_text(encoding="utf-8"))["languages"])
+    for folder in library_folders():
+        extra = folder / "sources" / "claim-words.json"
+        if extra.is_file():
+            for language, pattern in json.loads(extra.read_text(encoding="utf-8"))["languages"].items():
+                words[language] = f"{words[language]}|{pattern}" if language in words else pattern
+    return words
 
 
 @cache

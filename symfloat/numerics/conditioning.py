@@ -17,7 +17,7 @@ from fractions import Fraction
 import mpmath
 
 from ..solver import make_scene, solve
-from ..solver.coverage import symmetry_group
+from ..solver.symmetry import symmetry_group
 from ..solver.refine import angle_between, refine_planar, refine_sphere
 
 __all__ = ["Case", "CASES", "Row", "conditioning_rows", "conditioning_markdown"]

@@ -17,7 +17,7 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import sympy as sp
 
-from ..report.files import write_if_changed
+from ..files import write_if_changed
 from .bench import FAMILIES, Bench, run_bench
 from .conditioning import CASES, conditioning_markdown, conditioning_rows
 from .discriminant import table_markdown as discriminant_markdown
@@ -32,8 +32,8 @@ QUICK_KINK_PANELS = (4, 8, 16, 32, 64, 128)
 
 
 def _smallest(ids):
-    from ..registry import module_path
-    return min(ids, key=lambda i: (module_path(i).stat().st_size, i))
+    from ..registry import files
+    return min(ids, key=lambda i: (sum(f.stat().st_size for f in files(i) if f.suffix == ".py"), i))
 
 
 def quick_selection() -> tuple[tuple[str, ...], str]:
@@ -41,9 +41,9 @@ def quick_selection() -> tuple[tuple[str, ...], str]:
     classes listed under one name in :data:`~symfloat.numerics.bench.FAMILIES`) the smallest derivation
     module (source size, a proxy for its cost) whose source declares such a witness, and the smallest module
     that provides closed forms for the stiffness scan."""
-    from ..registry import module_names, module_path, providing
-    ids = [m.replace("_", "-") for m in module_names()]
-    sources = {i: module_path(i).read_text(encoding="utf-8") for i in ids}
+    from ..registry import files, ids as all_ids, providing
+    ids = all_ids()
+    sources = {i: "".join(f.read_text(encoding="utf-8") for f in files(i) if f.suffix == ".py") for i in ids}
     picked = set()
     for family in dict.fromkeys(FAMILIES.values()):
         names = [f"{cls.__name__}(" for cls, f in FAMILIES.items() if f == family]

@@ -31,7 +31,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from ..registry import load, providing
+from ..registry import provided
 
 __all__ = ["Form", "FormResult", "forms", "evaluate", "scan", "ScanRow", "CATASTROPHIC", "STABLE_TOLERANCE",
            "REFERENCE_DPS", "reading", "ends", "near", "split", "ngon_excess_series"]
@@ -110,10 +110,8 @@ def ngon_excess_series():
 def forms() -> tuple[Form, ...]:
     """The closed forms the derivations hand to the study (``provides("forms", build)``; built once)."""
     out = []
-    for did in providing("forms"):
-        d, _ = load(did)
-        for build in d.provided["forms"]:
-            out += build()
+    for _, build in provided("forms"):
+        out += build()
     return tuple(out)
 
 
@@ -192,12 +190,12 @@ def scan(selector=None) -> list[ScanRow]:
     from ..engine.check import _resolved
     from ..model.claim import members
     from ..model.relation import is_relation
-    from ..registry import select
+    from ..registry import select, statements
     from .bench import _results, _valid_reading
     rows = []
     ends_ = ends()
     for did in select(selector):
-        d, _ = load(did)
+        d = statements(did)
         dens = [sym for sym in d.domain if sym.name in DENSITY_NAMES]
         if not dens:
             continue

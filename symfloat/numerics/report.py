@@ -1,6 +1,6 @@
 """docs/numerics.md and its figures from the benchmark, the orders and the stiff cases.
 
-Times are printed as ``12.3 ms`` / ``1.2 s`` so that :func:`~symfloat.report.files.write_if_changed`
+Times are printed as ``12.3 ms`` / ``1.2 s`` so that :func:`~symfloat.files.write_if_changed`
 ignores them; a figure is rewritten only when its fingerprint (everything it shows except timings,
 stored in the PNG's text chunk) changed.
 """

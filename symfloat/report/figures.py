@@ -14,7 +14,7 @@ import json
 from pathlib import Path
 
 from ..model.derivation import Figure
-from .files import write_atomic
+from ..files import write_atomic
 from .stamp import digest
 
 __all__ = ["Figure", "main_job_figures", "fingerprint", "png_bytes", "recorded_fingerprint", "draw", "write_figures"]

@@ -23,8 +23,8 @@ import sys
 from pathlib import Path
 
 from ..model.source import SOURCES
-from ..project import in_project
-from .files import write_if_changed
+from ..files import write_if_changed
+from ..project import in_outputs
 from .ledger import LedgerError, baseline_keys, ledger, ledger_json, ledger_markdown, ledger_table
 from .references import check, references, references_markdown, status_counts
 from .repeats import candidates_text, link_problems
@@ -32,10 +32,10 @@ from .repeats import candidates_text, link_problems
 __all__ = ["run", "docs_path", "load_baseline", "baseline_text"]
 
 
-def docs_path(name: str) -> Path:
-    """``docs/<name>`` of the project checkout, wherever the command is run from
-    (:func:`symfloat.project.in_project`)."""
-    return in_project(f"docs/{name}")
+def docs_path(name: str, folder: Path | None = None) -> Path:
+    """*folder*/<name> (``--output``), else ``docs/<name>`` of the library of texts or the project checkout,
+    wherever the command is run from (:func:`symfloat.project.in_outputs`)."""
+    return folder / name if folder is not None else in_outputs(f"docs/{name}")
 
 
 def load_baseline(path: Path) -> dict:
@@ -66,7 +66,7 @@ def run(args) -> int:
     except LedgerError as exc:
         print(f"symfloat: coverage ledger: {exc}", file=sys.stderr)
         return 1
-    pending = baseline_keys(load_baseline(docs_path("coverage-baseline.json")))
+    pending = baseline_keys(load_baseline(docs_path("coverage-baseline.json", args.output)))
     failed = any(e.status == "unaccounted" for e in entries)
     rows = []
     if args.readings:
@@ -87,9 +87,9 @@ def run(args) -> int:
                   + ", ".join(f"{n} {st}" for st, n in counts.items() if n))
     if args.readings:
         if args.write:
-            write_if_changed(docs_path("readings.md"), readings_markdown(reading_rows(tuple(SOURCES))))
+            write_if_changed(docs_path("readings.md", args.output), readings_markdown(reading_rows(tuple(SOURCES))))
         if args.update_baseline:
-            write_if_changed(docs_path("readings-baseline.json"), readings_baseline_text(reading_rows(tuple(SOURCES))))
+            write_if_changed(docs_path("readings-baseline.json", args.output), readings_baseline_text(reading_rows(tuple(SOURCES))))
     problems = link_problems()
     for msg in problems:
         print(f"symfloat: repeated erratum: {msg}", file=sys.stderr)
@@ -99,14 +99,14 @@ def run(args) -> int:
         print(f"symfloat: reference: {msg}", file=sys.stderr)
     failed |= bool(wrong)
     if args.write:
-        write_if_changed(docs_path("coverage.md"), ledger_markdown())
-        write_if_changed(docs_path("repeats.json"), candidates_text())
-        write_if_changed(docs_path("references.md"), references_markdown())
+        write_if_changed(docs_path("coverage.md", args.output), ledger_markdown())
+        write_if_changed(docs_path("repeats.json", args.output), candidates_text())
+        write_if_changed(docs_path("references.md", args.output), references_markdown())
     if args.update_baseline:
         new = baseline_text()
-        before = baseline_keys(load_baseline(docs_path("coverage-baseline.json")))
+        before = baseline_keys(load_baseline(docs_path("coverage-baseline.json", args.output)))
         after = baseline_keys(json.loads(new))
-        write_if_changed(docs_path("coverage-baseline.json"), new)
+        write_if_changed(docs_path("coverage-baseline.json", args.output), new)
         print(f"coverage baseline: {len(before - after)} entries accounted for and removed, "
               f"{len(after - before)} added", file=sys.stderr)
     return 1 if failed else 0

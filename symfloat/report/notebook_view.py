@@ -17,6 +17,7 @@ import sympy as sp
 
 from ..model.claim import expressions, members
 from ..model.relation import is_relation, relation_latex
+from ..model.symbol_names import latex
 from ..registry import load
 from .notebook_code import STRATEGY_WORDS
 from .prose import typeset
@@ -60,7 +61,7 @@ def _as_printed(expr) -> bool:
 def _latex(d, expr) -> str:
     """LaTeX of *expr* in the derivation's names; an expression kept as printed keeps its order of terms."""
     expr = named(d.names, expr)
-    return sp.latex(expr, order="none") if _as_printed(expr) else sp.latex(expr)
+    return latex(expr, order="none") if _as_printed(expr) else latex(expr)
 
 
 def chain_latex(d, claim, split: bool = True) -> str:
@@ -87,8 +88,8 @@ def definitions_markdown(d) -> str:
              "Helper expressions of the derivation, each shown once; the steps and readings below "
              "write them by these names.", ""]
     for i, (symbol, value, text) in enumerate(d.names):
-        shown = sp.latex(named(d.names[:i], value))
-        lines.append(f"- {text}: ${sp.latex(symbol)} = {shown}$" if text else f"- ${sp.latex(symbol)} = {shown}$")
+        shown = latex(named(d.names[:i], value))
+        lines.append(f"- {text}: ${latex(symbol)} = {shown}$" if text else f"- ${latex(symbol)} = {shown}$")
     return "\n".join(lines)
 
 
@@ -133,7 +134,7 @@ def step_title(d, step) -> str:
             "integration": "Integration", "geometry": "Geometry", "lemma": "A lemma", "limit": "A limit",
             "series": "A series"}[step.why]
     if step.result is not None:
-        return f"{what}: the value of ${sp.latex(step.result)}$"
+        return f"{what}: the value of ${latex(step.result)}$"
     first = _latex(d, members(step.claim)[0])
     return f"{what} for ${first}$" if len(first) < 60 else what
 
@@ -159,7 +160,7 @@ def step_titles(d) -> dict:
         count[t] = count.get(t, 0) + 1
     for i, s in enumerate(d.steps, 1):
         if count[titles[s.name]] > 1:
-            titles[s.name] += f": ${sp.latex(s.result)}$" if s.result is not None else f" (step {i})"
+            titles[s.name] += f": ${latex(s.result)}$" if s.result is not None else f" (step {i})"
     return titles
 
 
@@ -193,7 +194,7 @@ def step_markdown(d, index: int, step, findings: str = "", title: str = "") -> s
     out.append(("Definition:" if step.why == "definition" else "Before and after:") + "\n\n"
                + chain_latex(d, step.claim))
     if step.result is not None:
-        out.append(f"This establishes ${sp.latex(step.result)}$, used in later steps and readings.")
+        out.append(f"This establishes ${latex(step.result)}$, used in later steps and readings.")
     if findings:
         out.append(findings)
     return "\n\n".join(out)
@@ -211,7 +212,7 @@ def _derived_symbols(d, claims) -> str:
     if not found:
         return ""
     return ("Compared with the derivation: " + "; ".join(
-        f"${sp.latex(sym)}$ is the value established in step {i}" for sym, i in found.items()) + ".")
+        f"${latex(sym)}$ is the value established in step {i}" for sym, i in found.items()) + ".")
 
 
 def reading_markdown(d, p, findings: str = "") -> str:
@@ -246,9 +247,10 @@ def reading_markdown(d, p, findings: str = "") -> str:
 
 
 def correction_markdown(kind: str, corrected: str) -> str:
-    """A correction: a claim in words is prose, anything else (a claim's correction written in LaTeX too) a
-    displayed formula."""
-    return corrected if kind == "claim" and "\\" not in corrected else f"$$ {corrected} $$"
+    """A correction: words (a claim in words, or words with their own dollars) are prose, anything else (a
+    claim's correction written in LaTeX too) a displayed formula."""
+    prose = "$" in corrected or (kind == "claim" and "\\" not in corrected)
+    return corrected if prose else f"$$ {corrected} $$"
 
 
 # ---- the engine's findings, from its report ----------------------------------------------------------------------

@@ -16,27 +16,29 @@ from __future__ import annotations
 import hashlib
 import inspect
 import os
-from concurrent.futures import as_completed
 import re
-from pathlib import Path
-
 import subprocess
+import tempfile
+import uuid
+from pathlib import Path
 
 import nbformat
 from nbclient import NotebookClient
-from nbclient.exceptions import CellExecutionError
+from nbclient.exceptions import CellExecutionError, DeadKernelError
+from traitlets.config import Config
 
 from ..engine.runner import verify
-from ..errors import CheckFailed
+from ..errors import CheckFailed, EnvironmentProblem
+from ..files import write_if_changed
+from ..leftovers import sweep_orphans
 from ..model.source import get_source
 from ..registry import load
-from .files import write_if_changed
 from .notebook_cells import CellWriter
 from .notebook_view import NotebookView, definitions_markdown, reading_markdown, step_markdown, step_titles
 from .prose import typeset
 from .stamp import digest
 
-__all__ = ["build_notebook", "execute_notebook", "write_notebooks", "notebook_stamp", "recorded_stamp"]
+__all__ = ["build_notebook", "execute_notebook", "kernel_files", "write_notebooks", "notebook_stamp", "recorded_stamp"]
 
 KERNEL = {"name": "python3", "display_name": "Python 3", "language": "python"}
 
@@ -130,9 +132,23 @@ def build_notebook(derivation_id: str, report=None) -> nbformat.NotebookNode:
     return nb
 
 
+def kernel_files() -> Path:
+    """The folder of the kernels' connection files (``symfloat-kernels-<uid>`` in the temporary
+    directory, private to the user): each is named after the process that started its kernel, and
+    one whose process is gone (killed before it could remove the file) is removed here."""
+    folder = Path(tempfile.gettempdir()) / f"symfloat-kernels-{os.getuid()}"
+    folder.mkdir(mode=0o700, exist_ok=True)
+    sweep_orphans(folder, "kernel-")
+    return folder
+
+
 def execute_notebook(nb, cwd: str | os.PathLike) -> nbformat.NotebookNode:
+    """Execute *nb* in a fresh kernel whose connection file lies in :func:`kernel_files` (nbclient
+    removes it when the kernel ends; a killed run's is removed by the next)."""
+    connection = kernel_files() / f"kernel-{os.getpid()}-{uuid.uuid4().hex[:12]}.json"
     client = NotebookClient(nb, timeout=900, kernel_name="python3", record_timing=False,
-                            resources={"metadata": {"path": str(cwd)}})
+                            resources={"metadata": {"path": str(cwd)}},
+                            config=Config({"KernelManager": {"connection_file": str(connection)}}))
     # The kernel's own log (a transport warning at start) is noise here; a
     # failing cell raises CellExecutionError with its traceback regardless.
     client.execute(stderr=subprocess.DEVNULL)
@@ -155,38 +171,47 @@ def write_notebooks(ids, folder: str | os.PathLike = "notebooks", progress=None,
 
     A notebook whose recorded content stamp (its metadata ``symfloat.stamp``) equals the present
     one is current and is neither executed nor written, unless *force*."""
-    from ..engine.runner import default_workers, derivation_keys, worker_pool
+    from ..engine.runner import completed, default_workers, derivation_keys, worker_pool
 
     folder = Path(folder)
     os.environ.setdefault("SYMFLOAT_CACHE", str(Path(".symfloat-cache").resolve()))
     keys = derivation_keys(ids)
     stale = [(did, notebook_stamp(did, keys)) for did in ids]
     stale = [(did, stamp) for did, stamp in stale if force or recorded_stamp(folder / f"{did}.ipynb") != stamp]
-    texts = {}
+    written = []
+
+    def finished(did, text):          # written as soon as executed: a killed run keeps what it finished
+        if write_if_changed(folder / f"{did}.ipynb", text):
+            written.append(folder / f"{did}.ipynb")
+        if progress:
+            progress(did)
+
     if default_workers() > 1 and len(stale) > 1:          # one kernel per notebook, as many at once as cores
         with worker_pool(min(default_workers(), len(stale))) as pool:
-            futures = {pool.submit(_executed_text, did, stamp): did for did, stamp in stale}
-            for future in as_completed(futures):
-                did = futures[future]
-                texts[did] = future.result()
-                if progress:
-                    progress(did)
+            futures = {pool.submit(_executed_text, did, stamp, folder): did for did, stamp in stale}
+            for did, text in completed(futures, "notebooks"):
+                finished(did, text)
     else:
         for did, stamp in stale:
-            texts[did] = _executed_text(did, stamp)
-            if progress:
-                progress(did)
-    return [folder / f"{did}.ipynb" for did, _ in stale
-            if write_if_changed(folder / f"{did}.ipynb", texts[did])]
+            finished(did, _executed_text(did, stamp, folder))
+    order = {did: i for i, (did, _) in enumerate(stale)}
+    return sorted(written, key=lambda path: order[path.stem])
 
 
-def _executed_text(derivation_id: str, stamp: str) -> str:
-    """The notebook of *derivation_id*, executed and stamped, as the text written to disk; a cell that
-    fails is a failed check named in one line (:class:`~symfloat.errors.CheckFailed`), not a traceback."""
+def _executed_text(derivation_id: str, stamp: str, folder: Path) -> str:
+    """The notebook of *derivation_id* (to be written in *folder*), executed in *folder* as a reader
+    re-runs it there (its kernel needs SymPy alone, so a library's notebook runs without
+    ``SYMFLOAT_LIBRARY``) and stamped, as the text written to disk; a cell that fails is a failed check
+    named in one line (:class:`~symfloat.errors.CheckFailed`), not a traceback."""
+    nb = build_notebook(derivation_id)
+    Path(folder).mkdir(parents=True, exist_ok=True)
     try:
-        nb = execute_notebook(build_notebook(derivation_id), Path.cwd())
+        nb = execute_notebook(nb, folder)
     except CellExecutionError as exc:
         raise CheckFailed(f"notebook {derivation_id}: a cell failed with {exc.ename}: {exc.evalue}") from None
+    except DeadKernelError:
+        raise EnvironmentProblem(f"notebook {derivation_id}: its kernel died (killed by a signal, perhaps for "
+                                 f"want of memory); the notebooks finished before are kept") from None
     nb.metadata["symfloat"] = {"stamp": stamp}
     return nbformat.writes(nb) + "\n"
 

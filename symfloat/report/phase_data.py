@@ -25,10 +25,9 @@ STEPS = 24
 
 
 def _derivation_files(body: str) -> list[Path]:
-    from ..registry import load, providing
-    from ..solver.coverage import predicting
+    from ..registry import files, predicting, providing
     ids = sorted(set(predicting(body)) | set(providing("thresholds")))
-    return [Path(load(did)[1].__file__) for did in ids]
+    return [f for did in ids for f in files(did) if f.suffix == ".py"]
 
 
 def phase_stamp(name: str) -> str:
@@ -39,10 +38,10 @@ def phase_stamp(name: str) -> str:
 
 def phase_data(name: str, progress=None) -> str:
     """The JSON of the phase diagram *name*, computed now (``seconds`` left out)."""
-    from ..solver.phase import phase_diagram
+    from ..comparison.thresholds import phase_with_sources
     from .phase import phase_record
     body, dims = PHASES[name]
-    record = phase_record(phase_diagram(body, dims, STEPS, progress=progress))
+    record = phase_record(phase_with_sources(body, dims, STEPS, progress=progress))
     del record["seconds"]
     return json.dumps({"stamp": phase_stamp(name), "steps": STEPS, **record}, indent=1) + "\n"
 
@@ -56,7 +55,7 @@ def _stamp_in(path: Path) -> str | None:
 
 def write_phase_data(docs: Path, progress=None) -> list[str]:
     """Compute the diagrams whose stamp changed into ``docs/figures/``; the files written."""
-    from .files import write_if_changed
+    from ..files import write_if_changed
     written = []
     for name in PHASES:
         path = docs / "figures" / f"phase-{name}.json"

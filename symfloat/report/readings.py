@@ -41,6 +41,7 @@ from ..model.claim import members
 from ..model.latex import RULES, Unreadable, canonical, read
 from ..model.source import SOURCES
 from ..model.span import math_intervals
+from ..model.symbol_match import formula_symbols, match_symbols
 from ..registry import load, select
 from .ledger import one_line
 
@@ -67,7 +68,6 @@ MATCH_RULES = {
                  "the identity it is imposed on (`condition=`): A - B is compared with the first hand member "
                  "written in the print's symbols (the others name the quantity), else with the last",
 }
-_WORDS = re.compile(r"(tan|sin|cos|cot|tg|varphi|varrho|vartheta|phi|rho|theta|omega|alpha|beta|mu|psi|sigma)")
 _POINTS = 3             # seeded rational points per member
 _DPS = 60               # digits of the evaluation; members agree to half of them
 _CLAIM_WORDS = 6        # an excerpt with this many words outside its math is a claim in words
@@ -92,45 +92,6 @@ def _hand_rows(reading):
     if all(isinstance(m, sp.Expr) and not isinstance(m, sp.MatrixBase) for m in ms):
         return [[m.doit() for m in ms]]
     return None
-
-
-def _formula_symbols(hand_symbols) -> dict:
-    """Hand symbols whose names read as formulas (``tan^2varphi_1``), with the formula."""
-    out = {}
-    for s in hand_symbols:
-        if not re.search(r"(tan|sin|cos|cot|tg)", s.name):
-            continue
-        tex = _WORDS.sub(lambda m: "\\" + m.group(1) + " ", s.name)
-        try:
-            r = read(tex)
-        except (Unreadable, ValueError, TypeError, IndexError):
-            continue
-        if len(r.rows) == 1 and len(r.rows[0][0]) == 1 and not isinstance(r.rows[0][0][0], sp.Symbol):
-            out[s] = r.rows[0][0][0]
-    return out
-
-
-def _extends(printed: str, hand: str) -> bool:
-    """Whether *hand* is the printed name with an index added (``G`` → ``G_pf``, ``T_1`` → ``T_1n``,
-    ``T_1`` → ``T_1^iso``, ``u_m`` → ``u_m'``)."""
-    rest = hand[len(printed):]
-    return hand.startswith(printed) and bool(rest) and (rest[0] in "_^'" or ("_" in printed and rest.isalnum()))
-
-
-def _match_symbols(auto_symbols, hand_symbols, rules):
-    """Map each printed (auto) symbol to the hand symbol it stands for: the same canonical name, else the
-    one hand symbol that extends it (longest printed names first)."""
-    by_name = {canonical(h.name): h for h in hand_symbols}
-    mapping = {a: a if a in hand_symbols else by_name[a.name] for a in auto_symbols
-               if a in hand_symbols or a.name in by_name}
-    taken = set(mapping.values())
-    for a in sorted(set(auto_symbols) - set(mapping), key=lambda a: -len(a.name)):
-        indexed = [h for n, h in by_name.items() if h not in taken and _extends(a.name, n)]
-        if len(indexed) == 1:
-            mapping[a] = indexed[0]
-            taken.add(indexed[0])
-            rules.add("context-index")
-    return mapping
 
 
 def _values(symbols, seed: str, domain: dict):
@@ -322,7 +283,7 @@ def compare(derivation, printed) -> dict:
             return {**row, "status": "not-compared",
                     "detail": f"{len(auto_members)} printed members against {len(h)} in the hand reading"}
     hand_symbols = set().union(*(m.free_symbols for r in hand for m in r))
-    formulas = _formula_symbols(hand_symbols)
+    formulas = formula_symbols(hand_symbols)
     if formulas:
         rules.add("symbol-for-formula")
         hand = [[m.subs(formulas) for m in r] for r in hand]
@@ -330,7 +291,7 @@ def compare(derivation, printed) -> dict:
     problems: list[str] = []
     _bind(auto_rows, printed, frozenset(names), rules, problems)
     auto_symbols = set().union(*(m.free_symbols for r, _ in auto_rows for m in r if m is not None))
-    mapping = _match_symbols(auto_symbols, hand_symbols, rules)
+    mapping = match_symbols(auto_symbols, hand_symbols, rules)
     for k, ((auto_members, _), h) in enumerate(zip(auto_rows, hand)):
         _compare_row(fid, k if len(hand) > 1 else None, auto_members, h, mapping, hand_symbols,
                      derivation.domain, rules, problems, segments, bool(printed.condition), printed.tolerance)

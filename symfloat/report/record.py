@@ -6,7 +6,7 @@ from collections import Counter
 from pathlib import Path
 
 from ..engine.check import DerivationReport
-from .files import write_if_changed
+from ..files import write_if_changed
 
 __all__ = ["verification_record", "verification_table", "record_differences", "record_json", "write_record",
            "VERDICTS"]
@@ -77,8 +77,10 @@ def _best(numeric):
     return f"{r['rel_error']:.1e} ({len(numeric)} methods)"
 
 
-def verification_table(reports: list[DerivationReport]) -> str:
-    """A readable plain-text table, one row per printed formula, then the summary."""
+def verification_table(reports: list[DerivationReport], elapsed: float | None = None) -> str:
+    """A readable plain-text table, one row per printed formula, then the summary; *elapsed* is how long
+    this command took, shown beside the checking time recorded (which a cached report keeps from when it
+    was checked)."""
     rows = [("formula", "locator", "verdict", "evidence", "best witness rel. error")]
     for d in reports:
         for f in d.formulas:
@@ -90,9 +92,12 @@ def verification_table(reports: list[DerivationReport]) -> str:
     s = verification_record(reports)["summary"]
     cached = sum(d.cached for d in reports)
     lines.append("")
+    now = f"took {elapsed:.1f} s now; " if elapsed is not None else ""
     lines.append(f"{s['formulas']} printed formulas: {s['verified']} verified, {s['erratum']} errata, "
-                 f"{s['unverifiable']} unverifiable, {s['trivial']} trivial; steps {s['steps']}; checking time {s['seconds']:.1f} s"
-                 + (f" ({cached} of {len(s['derivations'])} derivations read from the cache)" if cached else ""))
+                 f"{s['unverifiable']} unverifiable, {s['trivial']} trivial; steps {s['steps']}; {now}checking time "
+                 f"{'recorded ' if cached else ''}{s['seconds']:.1f} s"
+                 + (f" ({cached} of {len(s['derivations'])} derivations read from the cache, their time as "
+                    f"recorded when they were checked)" if cached else ""))
     x = s["cross_checked"]
     if x["with_numeric_content"]:
         lines.append(f"numeric cross-checks: {x['formulas']} of {x['with_numeric_content']} verified formulas and "

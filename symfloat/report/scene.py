@@ -52,6 +52,7 @@ def scene_record(solution, evaluated, unmatched, seconds) -> dict:
             "metacentric_eigenvalues": list(e.eigenvalues),
             "error_rad": e.error_rad,          # for a ring: across it (its tilt)
             "error_method": e.error_method,
+            **({"stability_decided": e.decided} if e.decided else {}),
             "copies": e.copies,
         } for e in solution.equilibria],
         "unmatched_predictions": _predictions(unmatched),
@@ -115,7 +116,7 @@ def scene_plot(solution, path) -> None:
 
     from ..geometry.floating import clip_below, draught
     from ..solver.bodies import polyhedron
-    from ..solver.cylinder import cylinder_slice
+    from ..geometry.cylinder import cylinder_slice
 
     scene = solution.scene
     stable = [e for e in solution.equilibria if e.stability == "stable"] or solution.equilibria

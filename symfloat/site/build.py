@@ -3,7 +3,8 @@
 Sphinx with MyST-NB: MyST pages for the edition and the errata (written here from the records),
 the executed notebooks rendered as committed (execution off), the numerics report and its figures,
 the pictures of the derivations (:mod:`.figures`).
-Mathematics is MathML made at build time (:mod:`symfloat.site.mathml`); the theme is Sphinx's own
+Mathematics is typeset by KaTeX at build time (:mod:`symfloat.site.typeset`; its stylesheet and fonts are
+copied into the site); the theme is Sphinx's own
 ``alabaster``; nothing on a page loads from the network.
 
 Determinism: the pages are staged and built in a temporary folder (Sphinx's environment pickles
@@ -14,20 +15,24 @@ not empty and holds no earlier site is refused.
 """
 from __future__ import annotations
 
+import os
 import shutil
 import tempfile
+from collections import Counter
 from importlib import resources
 from io import StringIO
 from pathlib import Path
 
 from ..errors import EnvironmentProblem, InputError
+from ..leftovers import sweep_orphans
 from ..model.source import SOURCES
-from ..report.files import write_atomic
-from .edition import edition_page
+from ..files import write_atomic
+from .edition import MARKS, edition_page, mark_of
 from .notebooks import staged_notebook
 from .errata_pages import errata_index, erratum_page, facet_pages
 from .figures import PAGE as FIGURES, figures_page, notebook_links, pictures
 from .records import Records, load_records, slug
+from .typeset import katex_dist
 
 __all__ = ["build_site", "stage", "MARKER", "SiteError"]
 
@@ -42,23 +47,24 @@ class SiteError(EnvironmentProblem):
 _CONF = '''\
 """Sphinx configuration written by symfloat site (symfloat/site/build.py)."""
 project = "symfloat"
-extensions = ["myst_nb", "symfloat.site.mathml"]
+extensions = ["myst_nb", "symfloat.site.typeset"]
 myst_enable_extensions = ["dollarmath", "amsmath"]
 myst_dmath_double_inline = True
 nb_execution_mode = "off"
 nb_render_markdown_format = "myst"
 nb_merge_streams = True
-html_math_renderer = "mathml"
+html_math_renderer = "katex"
 html_theme = "alabaster"
 html_theme_options = {"show_powered_by": False, "sidebar_width": "220px", "page_width": "1100px"}
 html_static_path = ["_static"]
-html_css_files = ["symfloat.css"]
+html_css_files = ["katex/katex.min.css", "symfloat.css"]
 html_js_files = ["symfloat.js"]
 html_copy_source = False
 html_show_sourcelink = False
 html_show_sphinx = False
 html_show_copyright = False
 html_last_updated_fmt = None
+html_show_search_summary = False    # a hit's summary would fetch its page, which a browser refuses from disk
 html_title = "symfloat: the sources, re-derived"
 exclude_patterns = ["_build"]
 '''
@@ -70,25 +76,28 @@ def _asset(name: str) -> str:
 
 def _index(records: Records, with_figures: bool) -> str:
     s = records.summary
-    rows = []
+    rows, total = [], Counter()
     for key, source in SOURCES.items():
         fs = [f for f in records.formulas if f["source"] == key]
         if fs:
-            n = {v: sum(f["verdict"] == v for f in fs) for v in ("verified", "erratum", "unverifiable", "trivial")}
-            rows.append(f"| [{source.author}, *{source.title}*](edition/{key}.md) | {len(fs)} | {n['verified']} | "
-                        f"{n['erratum']} | {n['unverifiable']} | {n['trivial']} |")
+            n = Counter(mark_of(f, records) for f in fs)
+            total.update(n)
+            rows.append(f"| [{source.author}, *{source.title}*](edition/{key}.md) | {len(fs)} | "
+                        + " | ".join(str(n[m]) for m in MARKS) + " |")
     return "\n".join([
         "# symfloat: the sources, re-derived", "",
         "Every printed formula of the library's texts re-derived step by step, its verdict with the evidence "
-        "and the independent numeric witnesses, and the errata. Built by `symfloat site` from the committed "
+        "and the independent numeric witnesses, and the errata in two apparatus: the faults of the original "
+        "print, and the corrections of the transcription. Built by `symfloat site` from the committed "
         "records (`docs/verification.json`, `docs/errata.json`, the executed notebooks).", "",
-        f"{s['formulas']} printed formulas: {s['verified']} verified, {s['erratum']} errata, "
-        f"{s['unverifiable']} unverifiable, {s.get('trivial', 0)} trivial.", "",
-        "| source (annotated edition) | formulas | verified | errata | unverifiable | trivial |",
-        "|---|---:|---:|---:|---:|---:|", *rows, "",
+        f"{s['formulas']} printed formulas: " + ", ".join(f"{total[m]} {MARKS[m][1].split(':')[0]}" for m in MARKS)
+        + ".", "",
+        "| source (annotated edition) | formulas | " + " | ".join(f"{MARKS[m][0]} {MARKS[m][1].split(':')[0]}"
+                                                                for m in MARKS) + " |",
+        "|---|---:|" + "---:|" * len(MARKS), *rows, "",
         "```{toctree}", ":maxdepth: 1", "", "edition/index", "errata/index", "notebooks/index",
         *([FIGURES] if with_figures else []),
-        *(Path(name).stem for name in records.reports), "numerics", "about", "```", ""])
+        *(Path(name).stem for name in records.reports), "numerics", "errata-kinds", "about", "```", ""])
 
 
 def _reports(docs: Path) -> tuple[str, ...]:
@@ -110,6 +119,7 @@ def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
     files = {"conf.py": _CONF, "index.md": _index(records, bool(found)), "_static/symfloat.css": _asset("symfloat.css"),
              "_static/symfloat.js": _asset("symfloat.js"),
              "about.md": (docs / "site.md").read_text(encoding="utf-8"),
+             "errata-kinds.md": (docs / "errata-kinds.md").read_text(encoding="utf-8"),
              "numerics.md": (docs / "numerics.md").read_text(encoding="utf-8")}
     if found:
         files[f"{FIGURES}.md"] = figures_page(found, records.notebooks)
@@ -140,6 +150,11 @@ def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
         (folder / name).write_text(text, encoding="utf-8")
     if (docs / "figures").is_dir():
         shutil.copytree(docs / "figures", folder / "figures")
+    katex = katex_dist()
+    (folder / "_static" / "katex" / "fonts").mkdir(parents=True)
+    shutil.copy(katex / "katex.min.css", folder / "_static" / "katex")
+    for font in sorted((katex / "fonts").glob("*.woff2")):        # the format every current browser takes first
+        shutil.copy(font, folder / "_static" / "katex" / "fonts")
     return records
 
 
@@ -183,9 +198,10 @@ def _sync(built: Path, out: Path) -> list[str]:
 
 def _check_tools() -> None:
     import importlib.util
-    missing = [name for name in ("sphinx", "myst_nb", "latex2mathml") if importlib.util.find_spec(name) is None]
+    missing = [name for name in ("sphinx", "myst_nb") if importlib.util.find_spec(name) is None]
     if missing:
         raise SiteError(f"the site needs {', '.join(missing)}: pip install 'symfloat[site]'")
+    katex_dist()                        # node and KaTeX, or one line saying how to install them
 
 
 def build_site(out: Path, docs: Path, notebooks: Path, progress=None) -> tuple[list[str], list[str]]:
@@ -196,10 +212,12 @@ def build_site(out: Path, docs: Path, notebooks: Path, progress=None) -> tuple[l
         raise InputError(f"{out} is a file: the site is written into a folder")
     if out.exists() and any(out.iterdir()) and not (out / MARKER).is_file():
         raise InputError(f"{out} is not empty and holds no earlier site ({MARKER}): give a new or empty folder")
-    for needed in (docs / "verification.json", docs / "errata.json", docs / "site.md", docs / "numerics.md"):
+    for needed in (docs / "verification.json", docs / "errata.json", docs / "site.md", docs / "numerics.md",
+                   docs / "errata-kinds.md"):
         if not needed.is_file():
             raise InputError(f"no {needed}: the site is built from the committed records")
-    with tempfile.TemporaryDirectory(prefix="symfloat-site-") as tmp:
+    sweep_orphans(tempfile.gettempdir(), "symfloat-site-")      # the build folders of killed builds
+    with tempfile.TemporaryDirectory(prefix=f"symfloat-site-{os.getpid()}-") as tmp:
         src, html, doctrees = Path(tmp, "src"), Path(tmp, "html"), Path(tmp, "doctrees")
         src.mkdir()
         progress and progress("staging the pages from the records")

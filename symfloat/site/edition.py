@@ -4,26 +4,57 @@ A printed formula's excerpt is found where the coverage ledger finds it (its fir
 the transcription; a mark that would begin or end inside a math span takes the whole span).  The
 ledger (:func:`symfloat.report.ledger.account`, given these quotes) says how every other math span
 and quantitative sentence is accounted for: waived with its reason (lost text and figures among
-them) or not yet accounted for.  Each quoted stretch links to its note below the paragraph: the
-formula's verdict, the reading, the evidence, the erratum and the witnesses' errors and times; its
-``title`` says the same in one line for a pointer that rests on it.
+them) or not yet accounted for.  A mark (:data:`MARKS`) carries a sign, words and a shade; an
+erratum's mark says its apparatus (a fault of the original, or a correction of the transcription).
+Each quoted stretch links to its note below the paragraph: for an erratum the printed and the
+corrected form with the change marked, the reason in one sentence, kind and confidence; then the
+evidence, the reading, the witnesses and the links on demand.  The page opens with the work's
+bibliographic record and the transcription's provenance (:func:`citation_html`), and a contents
+list of the places a reader cites, each with an anchor (:func:`anchors`).
 """
 from __future__ import annotations
 
 import html
+import re
 from collections import Counter
 
+from ..model.erratum import apparatus
 from ..model.source import Source
 from ..model.span import math_intervals
+from ..report.labels import sections
 from ..report.ledger import REASONS, account, waivers
-from .mathml import to_mathml
+from .difference import corrected_html
+from .names import typeset_names
 from .records import Records, slug
-from .text import render
+from .text import excerpt_html, render
+from .typeset import typeset
 
-__all__ = ["VERDICTS", "quotes", "edition_page", "note", "formula_anchor", "cell_label", "notebook_anchor",
-           "witness_line"]
+__all__ = ["MARKS", "EVIDENCE_WORDS", "mark_of", "badge", "quotes", "edition_page", "note", "formula_anchor",
+           "cell_label", "notebook_anchor", "witness_line", "reason_of", "correction_html", "anchors", "citation_html"]
 
-VERDICTS = ("erratum", "unverifiable", "verified", "trivial")      # a stretch quoted twice shows the first
+# The marks of the edition, gravest first (a stretch quoted twice shows the first): mark -> (sign, words).
+# An erratum is a fault of the original or a correction of the transcription (docs/errata-kinds.md).
+MARKS = {"fault": ("✗", "fault of the original"), "transcription": ("✎", "transcription corrected"),
+         "unverifiable": ("?", "not decided"), "verified": ("✓", "verified"),
+         "trivial": ("=", "nothing to check: the print states its own definition")}
+EVIDENCE_WORDS = {"symbolic": "proved symbolically", "sampled": "checked exactly at sampled rational points",
+             "numeric": "checked numerically", None: "no evidence could be obtained"}
+_WAIVED = {"bare-symbol": "a lone symbol or label", "repeat": "repeats a checked formula",
+           "figure-reference": "refers to a figure", "lost-text": "text lost in the transcription",
+           "notation": "a naming or a construction"}
+
+
+def mark_of(f: dict, records: Records) -> str:
+    """The mark of formula *f*: its verdict, an erratum told by its apparatus."""
+    if f["verdict"] != "erratum":
+        return f["verdict"]
+    e = records.erratum_of.get(f["id"])
+    return "transcription" if e and apparatus(e["kind"]) == "transcription" else "fault"
+
+
+def badge(mark: str) -> str:
+    sign, words = MARKS[mark]
+    return f'<span class="badge v-{mark}"><span class="sign" aria-hidden="true">{sign}</span> {words}</span>'
 
 
 def formula_anchor(fid: str) -> str:
@@ -67,14 +98,41 @@ def witness_line(numeric) -> str:
                      f"rel {n['rel_error']:.1e}, {n['seconds']:.3g} s" for n in numeric) or "no numeric witness"
 
 
-def _title(f: dict, erratum: dict | None) -> str:
-    head = f"{f['locator']} · {f['verdict']}"
+def _title(f: dict, records: Records) -> str:
+    erratum = records.erratum_of.get(f["id"])
+    mark = mark_of(f, records)
+    head = f"{f['locator']} · {MARKS[mark][0]} {MARKS[mark][1]}"
     if erratum:
         head += f" ({erratum['kind']}, {erratum['confidence']} confidence)"
-    parts = [head, f"evidence: {f['evidence']}", f"witnesses: {witness_line(f['numeric'])}"]
+    parts = [head, EVIDENCE_WORDS.get(f["evidence"], f["evidence"])]
+    if erratum:
+        parts.append(reason_of(erratum))
     if f.get("reason"):
         parts.append(f["reason"])
     return " — ".join(parts)
+
+
+_SENTENCE_END = re.compile(r"(?<=[a-z0-9)\]}'])(?<!i\.e)(?<!e\.g)\. (?=[A-Z(])")
+
+
+def reason_of(erratum: dict) -> str:
+    """The erratum's reason in one sentence: the first of its evidence."""
+    first = _SENTENCE_END.split(erratum["evidence"], maxsplit=1)[0].rstrip(".")
+    return first + "."
+
+
+def correction_html(erratum: dict, printed_html: str) -> str:
+    """The printed (or transcribed) form beside the corrected one, its change marked; kind, confidence and
+    the reason in one sentence."""
+    scan = apparatus(erratum["kind"]) == "transcription"
+    shown, right = ("The transcription reads", "The original very probably printed") if scan else \
+        ("Printed", "Corrected")
+    printed_tex = erratum["printed"].strip().strip("$")
+    return (f'<div class="correction"><p class="reason"><strong>{erratum["kind"]}, {erratum["confidence"]} '
+            f'confidence.</strong> {html.escape(reason_of(erratum))}</p>'
+            f'<div class="printed"><span class="label">{shown}</span>{printed_html}</div>'
+            f'<div class="corrected"><span class="label">{right}</span>'
+            f'{corrected_html(erratum["corrected"], printed_tex)}</div></div>')
 
 
 def _witness_table(numeric) -> str:
@@ -87,37 +145,117 @@ def _witness_table(numeric) -> str:
             f"<th>rel. error</th><th>time</th></tr>{rows}</table>")
 
 
-def note(f: dict, records: Records, root: str) -> str:
-    """A formula's note (``<details>``): verdict, reading, evidence, erratum, witnesses, links.
-    *root* is the relative path from the page to the site's root."""
+def note(f: dict, records: Records, root: str, printed_html: str = "") -> str:
+    """A formula's note (``<details>``): its mark and locator; for an erratum the printed and the corrected
+    form, the reason, kind and confidence; then the evidence on demand: how it was checked, the reading,
+    the witnesses and the links.  *root* is the relative path from the page to the site's root;
+    *printed_html* the printed excerpt as rendered."""
     erratum = records.erratum_of.get(f["id"])
     cell = records.cells.get(f["id"])
-    lines = [f'<details class="note v-{f["verdict"]}" id="{formula_anchor(f["id"])}">',
-             f'<summary><span class="badge v-{f["verdict"]}">{f["verdict"]}</span> {html.escape(f["locator"])} '
-             f'<code>{html.escape(f["id"])}</code></summary>',
-             f'<p>Evidence: <strong>{f["evidence"]}</strong>'
-             + (f' — {html.escape(f["reason"])}' if f.get("reason") else "") + "</p>"]
-    if cell and cell.reading:
-        lines.append(f'<p>Read as printed:</p><div class="reading">{to_mathml(cell.reading, display=True)}</div>')
+    mark = mark_of(f, records)
+    lines = [f'<details class="note v-{mark}" id="{formula_anchor(f["id"])}">',
+             f'<summary>{badge(mark)} {html.escape(f["locator"])}</summary>']
     if erratum:
-        lines.append(f'<p>Erratum <a href="{root}errata/{slug(erratum["id"])}.html">{html.escape(erratum["id"])}</a>: '
-                     f'{erratum["kind"]}, {erratum["confidence"]} confidence.</p>')
+        lines.append(correction_html(erratum, printed_html))
+    if f.get("reason"):
+        lines.append(f'<p>{html.escape(f["reason"])}</p>')
+    how = EVIDENCE_WORDS.get(f["evidence"], f["evidence"])
+    lines += ['<details class="evidence"><summary>Evidence</summary>',
+              f"<p>{how[0].upper() + how[1:]}." + (f' {html.escape(erratum["evidence"])}' if erratum else "") + "</p>"]
+    if cell and cell.reading:
+        lines.append(f'<p>Read as printed:</p><div class="reading">'
+                     f'{typeset(typeset_names(f["derivation"], cell.reading), display=True)}</div>')
     lines.append(_witness_table(f["numeric"]))
+    links = []
+    if erratum:
+        links.append(f'<a href="{root}errata/{slug(erratum["id"])}.html">the erratum\'s page</a>')
     if cell and f["derivation"] in records.notebooks:
-        lines.append(f'<p><a href="{root}notebooks/{f["derivation"]}.html#{notebook_anchor(f["derivation"], cell.cell)}">'
-                     f'The derivation step by step</a> (notebook <code>{f["derivation"]}</code>).</p>')
-    lines.append("</details>")
+        links.append(f'<a href="{root}notebooks/{f["derivation"]}.html#{notebook_anchor(f["derivation"], cell.cell)}">'
+                     f'the derivation step by step</a>')
+    if links:
+        lines.append(f'<p>See {" and ".join(links)}.</p>')
+    lines += ["</details>", "</details>"]
     return "\n".join(lines)
 
 
-def _legend(counts: Counter, waived: Counter, unaccounted: int) -> str:
-    items = [f'<span class="q v-{v}">{v}</span> {counts[v]}' for v in VERDICTS if counts[v]]
-    items += [f'<span class="w w-{r}" title="{html.escape(REASONS[r])}">waived: {r}</span> {n}'
+def _legend(counts: Counter, waived: Counter, unaccounted: int, root: str) -> str:
+    items = [f'<span class="q v-{m}">{MARKS[m][0]} {MARKS[m][1]}</span> {counts[m]}' for m in MARKS if counts[m]]
+    items += [f'<span class="w w-{r}" title="{html.escape(REASONS[r])}">{_WAIVED.get(r, r)}</span> {n}'
               for r, n in sorted(waived.items())]
     if unaccounted:
         items.append(f'<span class="w w-unaccounted">not yet accounted for</span> {unaccounted}')
     items.append('<span class="figure-missing">Fig.</span> a figure the transcription does not have')
-    return '<p class="legend">' + " · ".join(items) + "</p>"
+    return ('<p class="legend">' + " · ".join(items) + f' · <a href="{root}errata-kinds.html">how an erratum\'s '
+            'kind is decided</a></p>')
+
+
+_EQUATION = re.compile(r"\\q?quad\s*\((\d{1,3})\s?([a-z]?)\)")
+_EXAMPLES = re.compile(r"Zahlenbeispiel")
+_EXAMPLE = re.compile(r"(\d{1,2})\.\s")
+
+
+def anchors(source: Source) -> dict[int, list[tuple[str, str]]]:
+    """Offset -> ``(id, label)`` of the places of *source* a reader cites: sections (§ paragraphs),
+    equation numbers, worked examples; each id once, at its first place."""
+    text = source.text()
+    found: dict[int, list[tuple[str, str]]] = {}
+    seen = set()
+
+    def put(at, anchor, label):
+        if anchor not in seen:
+            seen.add(anchor)
+            found.setdefault(at, []).append((anchor, label))
+
+    starts = sections(source.key)[1:]
+    for at, name in starts:
+        put(at, f"s-{slug(name)}", ("§" if name.isdigit() else "") + name)
+    for m in _EQUATION.finditer(text):
+        put(m.start(), f"eq-{m.group(1)}{m.group(2)}", f"({m.group(1)}{m.group(2)})")
+    examples = False
+    for m in re.finditer(r"(?m)^.*$", text):
+        line = m.group(0)
+        if _EXAMPLES.match(line):
+            examples = True
+        elif any(at == m.start() for at, _ in starts):
+            examples = False
+        elif examples and _EXAMPLE.match(line):
+            put(m.start(), f"example-{_EXAMPLE.match(line).group(1)}", f"Example {_EXAMPLE.match(line).group(1)}")
+    return found
+
+
+def citation_html(source: Source) -> str:
+    """The bibliographic record of *source* and the transcription's provenance."""
+    fields = dict(source.citation)
+    parts = [html.escape(source.author), f"<em>{html.escape(source.title)}</em>"]
+    if fields.get("series"):
+        parts.append(html.escape(fields["series"]))
+    imprint = ", ".join(html.escape(x) for x in (fields.get("place"), fields.get("publisher")) if x)
+    parts.append(" ".join(x for x in (imprint, str(source.year) if source.year else "n.d.") if x))
+    record = ". ".join(parts) + "."
+    extra = [html.escape(fields[k]) for k in ("number", "edition") if fields.get(k)]
+    if extra:
+        record += " " + "; ".join(extra) + "."
+    if fields.get("note"):
+        record += " " + html.escape(fields["note"][0].upper() + fields["note"][1:]) + "."
+    return (f'<div class="bibliography"><p><strong>The work.</strong> {record} In {html.escape(source.language)}.</p>'
+            f'<p><strong>The transcription.</strong> {html.escape(source.provenance[:1].upper() + source.provenance[1:])}'
+            f'{"." if source.provenance else ""} Places are cited as {html.escape(source.locators or "printed")}; '
+            "each has an anchor on this page (the page's address with #s-224 for a section or paragraph, "
+            "#eq-78c for an equation number, #example-3 for a worked example).</p></div>")
+
+
+def _contents(found: dict[int, list[tuple[str, str]]]) -> str:
+    flat = [x for at in sorted(found) for x in found[at]]
+    groups = [("Sections", [x for x in flat if x[0].startswith("s-")]),
+              ("Equations", [x for x in flat if x[0].startswith("eq-")]),
+              ("Worked examples", [x for x in flat if x[0].startswith("example-")])]
+    out = ['<nav class="contents" aria-label="contents">']
+    for title, items in groups:
+        if items:
+            links = " ".join(f'<a href="#{i}">{html.escape(label)}</a>' for i, label in items)
+            out.append(f"<details{' open' if title == 'Sections' else ''}><summary>{title} ({len(items)})</summary>"
+                       f"<p>{links}</p></details>")
+    return "\n".join(out + ["</nav>"])
 
 
 def edition_page(source: Source, records: Records) -> str:
@@ -129,26 +267,28 @@ def edition_page(source: Source, records: Records) -> str:
     ledger_marks = [e for e in entries if e.status != "quoted"
                     and (e.span.kind != "sentence" or e.reason in ("lost-text", "figure-reference"))]
     cuts = {x for a, b, _ in quoted for x in (a, b)} | {x for e in ledger_marks for x in (e.span.start, e.span.end)}
-    rank = {v: i for i, v in enumerate(VERDICTS)}
+    rank = {v: i for i, v in enumerate(MARKS)}
+    mark = {f["id"]: mark_of(f, records) for f in formulas}
     ends = {fid: e for _, e, fid in quoted}
 
     def wrap(a, b, body):
         fids = sorted((fid for s, e, fid in quoted if s < b and a < e),
-                      key=lambda fid: rank[records.formula(fid)["verdict"]])
+                      key=lambda fid: rank[mark[fid]])
         if fids:
-            first = records.formula(fids[0])
-            title = "\n".join(_title(records.formula(fid), records.erratum_of.get(fid)) for fid in fids)
-            more = "".join(f'<a class="more v-{records.formula(fid)["verdict"]}" href="#{formula_anchor(fid)}" '
-                           f'title="{html.escape(_title(records.formula(fid), records.erratum_of.get(fid)))}">'
+            title = "\n".join(_title(records.formula(fid), records) for fid in fids)
+            more = "".join(f'<a class="more v-{mark[fid]}" href="#{formula_anchor(fid)}" '
+                           f'title="{html.escape(_title(records.formula(fid), records))}">'
                            f'{i}</a>' for i, fid in enumerate(fids[1:], 2) if ends[fid] == b)
-            return (f'<a class="q v-{first["verdict"]}" href="#{formula_anchor(first["id"])}" '
-                    f'title="{html.escape(title)}">{body}</a>' + (f'<sup class="more">{more}</sup>' if more else ""))
+            sign = (f'<span class="sign" aria-hidden="true">{MARKS[mark[fids[0]]][0]}</span>'
+                    f'<span class="visually-hidden"> ({MARKS[mark[fids[0]]][1]})</span>' if ends[fids[0]] == b else "")
+            return (f'<a class="q v-{mark[fids[0]]}" href="#{formula_anchor(fids[0])}" '
+                    f'title="{html.escape(title)}">{body}{sign}</a>' + (f'<sup class="more">{more}</sup>' if more else ""))
         inner = [e for e in ledger_marks if e.span.start < b and a < e.span.end]
         if not inner:
             return body
         e = min(inner, key=lambda e: e.span.end - e.span.start)          # the math span inside a sentence
         reason = e.reason or "unaccounted"
-        title = f"waived: {e.reason} — {e.note or REASONS[e.reason]}" if e.reason else \
+        title = f"{_WAIVED.get(e.reason, e.reason)} — {e.note or REASONS[e.reason]}" if e.reason else \
             "not yet accounted for by any derivation (docs/coverage-baseline.json)"
         return f'<span class="w w-{reason}" title="{html.escape(title)}">{body}</span>'
 
@@ -158,20 +298,30 @@ def edition_page(source: Source, records: Records) -> str:
     def after(a, b):                    # the notes of the quotes that start before this block ends
         due = [fid for s, fid in starts if s < b and fid not in placed]
         placed.update(due)
-        return "\n".join(note(records.formula(fid), records, "../") for fid in due)
+        return "\n".join(note(records.formula(fid), records, "../", printed.get(fid, "")) for fid in due)
 
-    body = render(text, cuts, wrap, after) + after(len(text), len(text) + 1)
-    counts = Counter(f["verdict"] for f in formulas)
+    printed = {fid: excerpt_html(text[a:b]) for a, b, fid in quoted if fid in records.erratum_of}
+    found = anchors(source)
+    pending = sorted(found)
+
+    def ids(a, b):                      # the anchors up to this block's end (a skipped block's go to the next)
+        due = [at for at in pending if at < b]
+        del pending[:len(due)]
+        return [i for at in due for i, _ in found[at]]
+
+    body = render(text, cuts, wrap, after, ids) + after(len(text), len(text) + 1)
+    counts = Counter(mark.values())
     waived = Counter(e.reason for e in entries if e.status == "waived")
     unaccounted = sum(e.status == "unaccounted" for e in entries)
     year = f", {source.year}" if source.year else ""
     head = [f"# {source.author}: {source.title}{year}", "",
-            f"The transcription of `{source.key}` ({source.language}) as text, every printed formula that a "
-            f"derivation quotes marked by its verdict. Rest the pointer on a mark for the verdict in one line, "
-            f"or follow it to the note below its paragraph: the reading as printed, the evidence, the erratum "
-            f"and the independent witnesses' errors and times. Math spans and claims in words that no "
-            f"formula quotes are marked as the coverage ledger accounts for them (lost text and figure "
-            f"references among them). Locators: {source.locators or 'as printed'}.", "",
-            "````{raw} html", _legend(counts, waived, unaccounted), '<div class="edition">', body.rstrip("\n"),
-            "</div>", "````", ""]
+            "````{raw} html", citation_html(source),
+            "<p>The transcription as text, every printed formula that a derivation quotes marked by its verdict: "
+            "a sign and a shade for each (the legend below). Rest the pointer on a mark for the verdict in one "
+            "line, or follow it to the note below its paragraph: for an erratum the printed and the corrected "
+            "form with the change marked, the reason, its kind and confidence, then the evidence on demand. "
+            "Math spans and claims in words that no formula quotes are marked as the coverage ledger accounts "
+            "for them.</p>",
+            _contents(found), _legend(counts, waived, unaccounted, "../"), '<div class="edition">',
+            body.rstrip("\n"), "</div>", "````", ""]
     return "\n".join(head)

@@ -1,41 +1,36 @@
-"""The errata as pages: one per erratum, and one list per facet (source, kind, confidence).
+"""The errata as pages: one per erratum, and one list per facet (apparatus, source, kind, confidence).
 
-An erratum's page shows the printed excerpt and the correction rendered, kind, confidence, the
-evidence, and links to the passage in the annotated edition and to the derivation's notebook
-section.  A correction is mathematics unless it is written in words (then it is prose, its
-dollars rendered as in the transcriptions).
+The errata are kept in two apparatus (:data:`symfloat.model.erratum.APPARATUS`): the faults of the
+original and the corrections of the transcription, marked, counted and listed apart.  An erratum's
+page shows the printed (for the transcription's: the transcribed) excerpt and the correction with
+its change marked (:mod:`.difference`), the reason in one sentence, kind and confidence, then the
+evidence and links to the passage in the annotated edition and to the derivation's notebook section.
 """
 from __future__ import annotations
 
 import html
 import re
 
+from ..model.erratum import APPARATUS, apparatus
 from ..model.source import SOURCES
-from .edition import formula_anchor, notebook_anchor, quotes, witness_line
-from .mathml import to_mathml
+from .edition import (EVIDENCE_WORDS, badge, correction_html, formula_anchor, notebook_anchor, quotes, reason_of,
+                      witness_line)
 from .records import Records, slug
 from .text import excerpt_html
 
-__all__ = ["erratum_page", "facet_pages", "errata_index", "corrected_html", "FACETS"]
+__all__ = ["erratum_page", "facet_pages", "errata_index", "FACETS"]
 
-FACETS = ("source", "kind", "confidence")
-_WORDS = re.compile(r"[A-Za-zäöüß]{3,}[ ,]+[A-Za-zäöüß]{3,}")
+FACETS = ("apparatus", "source", "kind", "confidence")
+_APPARATUS_WORDS = {a: title for a, (title, _) in APPARATUS.items()}
 
 
-def corrected_html(corrected: str) -> str:
-    """A correction: words (with their dollars) as prose, a formula as displayed MathML.
-
-    >>> corrected_html("x = 2,44")[:31]
-    '<div class="math-display"><math'
-    """
-    if "$" in corrected or (_WORDS.search(re.sub(r"\\[A-Za-z]+(\{[^}]*\})?", " ", corrected))
-                            and "\\" not in corrected):
-        return excerpt_html(corrected)
-    return f'<div class="math-display">{to_mathml(corrected, display=True)}</div>'
+def _apparatus(e: dict) -> str:
+    return e.get("apparatus") or apparatus(e["kind"])
 
 
 def erratum_page(e: dict, records: Records) -> str:
-    """The MyST page of erratum *e*."""
+    """The MyST page of erratum *e*: the printed (or transcribed) and the corrected form, its change marked,
+    the reason in one sentence, kind and confidence, then the evidence."""
     f = records.formula(e["formula"])
     text = SOURCES[e["source"]].text()
     [(a, b, _)] = quotes(text, [f])                # the excerpt widened to whole math spans
@@ -45,34 +40,43 @@ def erratum_page(e: dict, records: Records) -> str:
              f'annotated edition</a>']
     if cell and e["derivation"] in records.notebooks:
         links.append(f'<a href="../notebooks/{e["derivation"]}.html#{notebook_anchor(e["derivation"], cell.cell)}">the '
-                     f'derivation\'s notebook section</a>')
+                     f'derivation step by step</a>')
+    mark = "transcription" if _apparatus(e) == "transcription" else "fault"
     body = [
-        f'<p class="facts"><span class="badge k-{e["kind"]}">{e["kind"]}</span> '
-        f'<span class="badge c-{e["confidence"]}">{e["confidence"]} confidence</span> '
-        f'{html.escape(source.author)}, {html.escape(e["locator"])} · derivation <code>{e["derivation"]}</code> · '
-        f'formula <code>{html.escape(e["formula"])}</code></p>',
-        '<h2>Printed</h2>', f'<div class="printed">{excerpt_html(text[a:b])}</div>',
-        '<h2>Corrected</h2>', f'<div class="corrected">{corrected_html(e["corrected"])}</div>',
+        f'<p class="facts">{badge(mark)} {html.escape(source.author)}, <em>{html.escape(source.title)}</em>, '
+        f'{html.escape(e["locator"])} · <a href="../errata-kinds.html">how the kind is decided</a></p>',
+        correction_html(e, excerpt_html(text[a:b])),
         '<h2>Evidence</h2>', f'<p class="evidence">{html.escape(e["evidence"])}</p>',
-        f'<p>Verdict of the printed formula: {f["verdict"]} (evidence: {f["evidence"]}). Witnesses: '
+        f'<p>The printed formula: {EVIDENCE_WORDS.get(f["evidence"], f["evidence"])}. Witnesses: '
         f'{html.escape(witness_line(f["numeric"]))}.</p>',
         f'<p>See {" and ".join(links)}.</p>',
     ]
-    return "\n".join([f"# Erratum {e['id']}", "", "````{raw} html", *body, "````", ""])
+    what = "Correction of the transcription" if mark == "transcription" else "Fault of the original"
+    return "\n".join([f"# {what}: {source.author.split()[-1]}, {e['locator']}", "",
+                      "````{raw} html", *body, "````", ""])
 
 
 def _facet_values(records: Records, facet: str) -> list[str]:
-    order = {"source": list(SOURCES), "kind": ["transcription", "misprint", "calculation", "consequential", "claim"],
+    order = {"apparatus": list(APPARATUS), "source": list(SOURCES),
+             "kind": ["misprint", "calculation", "consequential", "claim", "transcription"],
              "confidence": ["high", "medium", "low"]}[facet]
-    present = {e[facet] for e in records.errata}
+    present = {_value(e, facet) for e in records.errata}
     return [v for v in order if v in present] + sorted(present - set(order))
 
 
+def _value(e: dict, facet: str) -> str:
+    return _apparatus(e) if facet == "apparatus" else e[facet]
+
+
+def _label(facet: str, value: str) -> str:
+    return _APPARATUS_WORDS[value] if facet == "apparatus" else value
+
+
 def _line(e: dict) -> str:
-    first = e["evidence"].split(". ")[0].rstrip(".")
+    first = reason_of(e).rstrip(".")
     first = first if len(first) <= 160 else first[:159] + "…"
-    return (f"- [{e['source']} {e['locator']}]({slug(e['id'])}.md) — {e['kind']}, {e['confidence']} confidence: "
-            f"{_plain(first)}")
+    author = SOURCES[e["source"]].author.split()[-1]
+    return f"- [{author}, {e['locator']}]({slug(e['id'])}.md) — {e['kind']}, {e['confidence']} confidence: {_plain(first)}"
 
 
 def _plain(text: str) -> str:
@@ -85,23 +89,30 @@ def facet_pages(records: Records) -> dict[str, str]:
     pages = {}
     for facet in FACETS:
         for value in _facet_values(records, facet):
-            chosen = [e for e in records.errata if e[facet] == value]
+            chosen = [e for e in records.errata if _value(e, facet) == value]
             pages[f"{facet}-{slug(value)}.md"] = "\n".join(
-                [f"# Errata: {facet} {value}", "", f"{len(chosen)} of {len(records.errata)} errata.", "",
-                 *(_line(e) for e in chosen), ""])
+                [f"# Errata: {_label(facet, value)}" if facet == "apparatus" else f"# Errata: {facet} {value}", "",
+                 f"{len(chosen)} of {len(records.errata)} errata.", "", *(_line(e) for e in chosen), ""])
     return pages
 
 
 def errata_index(records: Records) -> str:
-    """The errata's front page: the facets with their counts, then every erratum."""
-    out = ["# Errata", "", f"{len(records.errata)} errata, each with the printed excerpt, the correction, its kind, "
-           "confidence and evidence. By facet:", ""]
+    """The errata's front page: the two apparatus, the facets with their counts, then every erratum, the
+    faults of the original first."""
+    out = ["# Errata", "", f"{len(records.errata)} errata in two apparatus, as an edition keeps them: the faults of the "
+           "original print, and the corrections of this project's transcription of the scan (with what the "
+           "original very probably printed). Each has the printed excerpt, the correction, its kind, confidence and "
+           "evidence; [how the kind is decided](../errata-kinds.md). By facet:", ""]
     for facet in FACETS:
         values = _facet_values(records, facet)
-        counts = {v: sum(e[facet] == v for e in records.errata) for v in values}
-        out.append(f"- {facet}: " + ", ".join(f"[{v}]({facet}-{slug(v)}.md) ({counts[v]})" for v in values))
-    out += ["", "## Every erratum", "", *(_line(e) for e in records.errata), "",
-            "```{toctree}", ":hidden:", "", *(f"{facet}-{slug(v)}" for facet in FACETS
-                                               for v in _facet_values(records, facet)),
+        counts = {v: sum(_value(e, facet) == v for e in records.errata) for v in values}
+        out.append(f"- {facet}: " + ", ".join(f"[{_label(facet, v)}]({facet}-{slug(v)}.md) ({counts[v]})"
+                                              for v in values))
+    for key, (title, _) in APPARATUS.items():
+        chosen = [e for e in records.errata if _apparatus(e) == key]
+        if chosen:
+            out += ["", f"## {title[0].upper() + title[1:]} ({len(chosen)})", "", *(_line(e) for e in chosen)]
+    out += ["", "```{toctree}", ":hidden:", "", *(f"{facet}-{slug(v)}" for facet in FACETS
+                                                  for v in _facet_values(records, facet)),
             *(slug(e["id"]) for e in records.errata), "```", ""]
     return "\n".join(out)

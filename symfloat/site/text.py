@@ -1,9 +1,10 @@
-"""A transcription, or a piece of one, as HTML: its Markdown blocks and its dollars as MathML.
+"""A transcription, or a piece of one, as HTML: its Markdown blocks and its dollars typeset.
 
 The transcriptions are Markdown with TeX dollars.  They are shown as text, faults included: blocks
 between blank lines become headings (``#``), rules (``---``), tables (``|`` rows) or paragraphs;
 inside a block, ``**bold**`` and ``*italic*``, backslash escapes, hard line breaks, list lines and
-the ``<sub>``/``<sup>`` the transcriptions use are honoured, and every math span is MathML.  A
+the ``<sub>``/``<sup>`` the transcriptions use are honoured, and every math span is typeset.  A block
+that is only a web page's element number (``ID:(1610, 0)``) or a figure's file name is left out.  A
 reference to a figure (``Fig. 12``) is marked: the transcriptions have no figures.
 
 A caller marks stretches of the text: :func:`render` takes the offsets where a mark changes and a
@@ -16,13 +17,15 @@ import html
 import re
 
 from ..model.span import math_intervals
-from .mathml import to_mathml
+from .typeset import typeset
 
 __all__ = ["blocks", "inline_html", "render", "excerpt_html"]
 
 _BLANK = re.compile(r"\n[ \t]*\n\s*")
 _ESCAPE = re.compile(r"\\([\\`*_{}\[\]()#+\-.!|>])")
 _TAGS = re.compile(r"&lt;(/?)(sub|sup)&gt;")
+# The web page's element numbers and a figure's file name, alone on their line: not the text's words
+_BOILERPLATE = re.compile(r"ID:\(\d+, \d+\)|[\w-]+\.(?:eps|png|jpe?g|gif)")
 _FIGURE = re.compile(r"\b(Fig(?:ur(?:en)?|\.)\s*\d+[a-z]?(?:\s*(?:und|u\.|et|,)\s*\d+[a-z]?)*)")
 
 
@@ -62,7 +65,7 @@ def inline_html(text: str, a: int, b: int, maths) -> str:
         out.append(_prose(text[pos:s]))
         tex = text[s:e]
         display = kind == "display" and tex.startswith("$$")
-        out.append(to_mathml(tex.strip("$"), display=kind == "display"))
+        out.append(typeset(tex.strip("$"), display=kind == "display"))
         if display:
             out[-1] = f'<span class="math-display">{out[-1]}</span>'
         pos = e
@@ -90,9 +93,10 @@ def _cells(text: str, a: int, b: int, maths) -> list[list[tuple[int, int]]]:
     return rows
 
 
-def render(text: str, cuts, wrap, after=lambda a, b: "") -> str:
+def render(text: str, cuts, wrap, after=lambda a, b: "", ids=lambda a, b: ()) -> str:
     """*text* as HTML blocks; the stretch between two consecutive offsets of *cuts* goes through
-    ``wrap(start, end, html)``; ``after(block_start, block_end)`` is appended below each block."""
+    ``wrap(start, end, html)``; ``after(block_start, block_end)`` is appended below each block, and
+    ``ids(block_start, block_end)`` are the anchors placed at its start."""
     maths = math_intervals(text)
 
     def stretch(a, b):
@@ -101,6 +105,9 @@ def render(text: str, cuts, wrap, after=lambda a, b: "") -> str:
     out = []
     for a, b in blocks(text, maths):
         body = text[a:b]
+        if _BOILERPLATE.fullmatch(body):
+            continue
+        out.extend(f'<span class="anchor" id="{i}"></span>' for i in ids(a, b))
         heading = re.match(r"(#{1,5})\s+", body)
         if heading:
             level = min(len(heading.group(1)) + 1, 6)

@@ -151,15 +151,22 @@ def _convex(points):
 
 def _polygon_extent(points) -> tuple[float, float]:
     """Width (the smallest distance between two parallel supporting lines: for a convex polygon,
-    one of them carries an edge) and diameter of a convex polygon given as float pairs."""
+    one of them carries an edge) and diameter of a convex polygon, computed from its exact vertices
+    (squares of distances in rational arithmetic: distinct vertices that round to one float, 1e-400
+    apart, still have an edge of non-zero length).
+
+    >>> _polygon_extent([(Fraction(0), Fraction(0)), (Fraction(4), Fraction(0)), (Fraction(0), Fraction(3))])
+    (2.4, 5.0)
+    """
     n = len(points)
-    diameter = max(math.dist(p, q) for p in points for q in points)
-    width = math.inf
+    diameter2 = max((px - qx) ** 2 + (py - qy) ** 2 for px, py in points for qx, qy in points)
+    width2 = None
     for i in range(n):
         (ax, ay), (bx, by) = points[i], points[(i + 1) % n]
-        length = math.hypot(bx - ax, by - ay)
-        width = min(width, max(abs((bx - ax) * (py - ay) - (by - ay) * (px - ax)) for px, py in points) / length)
-    return width, diameter
+        height = max(abs((bx - ax) * (py - ay) - (by - ay) * (px - ax)) for px, py in points)
+        w2 = height ** 2 / ((bx - ax) ** 2 + (by - ay) ** 2)
+        width2 = w2 if width2 is None or w2 < width2 else width2
+    return math.sqrt(width2), math.sqrt(diameter2)
 
 
 def thinness(scene: Scene) -> tuple[float, float]:
@@ -169,7 +176,7 @@ def thinness(scene: Scene) -> tuple[float, float]:
     (1.0, 3.0)
     """
     if scene.body == "section":
-        return _polygon_extent([(float(x), float(y)) for x, y in centred_polygon(scene)])
+        return _polygon_extent(centred_polygon(scene))
     if scene.body == "prism":
         n, a, b = scene.sides, float(scene.dims[0]), float(scene.dims[1])
         outer, inner = a / (2 * math.sin(math.pi / n)), a / (2 * math.tan(math.pi / n))

@@ -65,6 +65,7 @@ class Critical:
     eigen_error: float = 0.0    # the error of the eigenvalues (at the polished point)
     path: tuple = ()            # a family's points as walked, in order along it (unit vectors)
     axis: np.ndarray | None = None  # a closed ring's axis (the normal of its plane, towards it)
+    exact: object = None        # a position symmetry fixes: its exact second variation (symfloat.solver.exact)
 
 
 def newton(poly: Polyhedron, u0, s, scale: float, iterations: int = 60, null_tol: float | None = None):

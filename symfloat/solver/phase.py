@@ -10,7 +10,8 @@ into its parent) ends where the parent's soft eigenvalue crosses zero, located
 on the parent.  Every branch born at a threshold, isolated or a ring, is
 followed past the next sweep density, so a window narrower than the sweep, or
 ending at a sweep density, is found.
-The thresholds are then compared with the closed forms the sources print.
+Thresholds known from elsewhere (the closed forms the sources print, handed in by
+:mod:`symfloat.comparison.thresholds`) are looked for where the sweep missed them and matched.
 Boxes are centrally symmetric, so the stable set at ``1 - s`` is the stable
 set at ``s`` turned upside down; the sweep still solves both halves (the
 duality is checked, not assumed).
@@ -23,15 +24,14 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 
 import numpy as np
-import sympy as sp
 
 from ..geometry.floating import box
 from .bodies import make_scene
 from .critical import _is_ring, _tangent_eigen, newton, symmetric_newton
 from .solve import body_scale, solve
-from .symmetry import box_group, mirror_normals, representative, same_class
+from .symmetry import box_group, mirror_normals, same_class
 
-__all__ = ["Threshold", "PhaseDiagram", "phase_diagram", "position_label", "source_thresholds"]
+__all__ = ["Threshold", "PhaseDiagram", "phase_diagram", "position_label"]
 
 BRACKET = 1e-13
 RING_ERROR = 1e-6       # stated error of a threshold where a ring or arc of equilibria ends
@@ -450,86 +450,19 @@ class _Tracked:
     family: str
 
 
-def _predicted(d, scene, group, stability=("stable",)) -> dict:
-    """Label -> names of the printed formulas by which the derivation *d* predicts a position at this scene
-    with a stability in *stability* (``"stable"``, ``"unstable"``, ``None`` for no claim)."""
-    out = {}
-    for p in d.predictor.predict(scene):
-        if p.stability not in stability:
-            continue
-        label = position_label(representative(np.asarray(p.up, dtype=float) / np.linalg.norm(p.up), group), p.family)
-        out.setdefault(label, set()).update(p.printed)
-    return out
-
-
-def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
-    """Densities where the printed formulas change their predicted set of stable positions: each
-    ``{"value", "label", "change", "claim", "locators", "errata", "derivation", "expression"}``.  Found on the
-    predictors (:mod:`symfloat.model.prediction`) by a sweep and bisection to ``1e-15``; the
-    printed closed form is named where a derivation's result gives it (``expression``).  ``claim``
-    is ``"unstable beyond"`` where the formulas predict the position unstable on the other side (the
-    print claims a change of stability) and ``"silent beyond"`` where they predict it there with no
-    stability or not at all (the position ceases to exist, or leaves the region the formulas cover);
-    ``errata`` the locators among them whose printed formula carries an erratum."""
-    from ..registry import load
-    from .coverage import predicting
-    group = box_group(dims)
-    closed = _closed_forms()
-    out = []
-    for did in predicting(body):
-        d, _ = load(did)
-        at = lambda s: _predicted(d, make_scene(body, s, dims), group)
-        densities = [Fraction(k, grid) for k in range(1, grid)]
-        states = [at(s) for s in densities]
-        for k in range(len(densities) - 1):
-            for label in sorted(set(states[k]) ^ set(states[k + 1])):
-                inside = label in states[k]
-                lo, hi = densities[k], densities[k + 1]
-                while float(hi - lo) > 1e-15:
-                    mid = (lo + hi) / 2
-                    mid = Fraction(mid).limit_denominator(10 ** 18)
-                    if (label in at(mid)) == inside:
-                        lo = mid
-                    else:
-                        hi = mid
-                value = float((lo + hi) / 2)
-                names = states[k].get(label, set()) | states[k + 1].get(label, set())
-                printed = [x for x in d.printed if x.name in names]
-                locators = sorted({x.locator for x in printed})
-                errata = sorted({x.locator for x in printed if x.erratum is not None})
-                expression = next((e for v, e in closed if abs(v - value) <= 1e-12), "")
-                same = [o for o in out if o["derivation"] == did and o["label"] == label
-                        and abs(o["value"] - value) <= 1e-13]
-                if same:
-                    same[0]["locators"] = sorted(set(same[0]["locators"]) | set(locators))
-                    same[0]["errata"] = sorted(set(same[0]["errata"]) | set(errata))
-                    continue
-                beyond = _predicted(d, make_scene(body, hi if inside else lo, dims), group, ("unstable",))
-                out.append({"value": value, "label": label, "change": "stable below" if inside else "stable above",
-                            "claim": "unstable beyond" if label in beyond else "silent beyond",
-                            "locators": locators, "errata": errata, "derivation": did, "expression": expression})
-    return out
-
-
-def _closed_forms() -> list[tuple[float, str]]:
-    """Closed-form thresholds the derivations establish as results (value, expression): the results each
-    derivation names with ``provides("thresholds", names)``."""
-    from ..registry import load, providing
-    out = []
-    for did in providing("thresholds"):
-        d, _ = load(did)
-        names = {str(symbol) for group in d.provided["thresholds"] for symbol in group}
-        out += [(float(sp.N(value, 30)), str(sp.nsimplify(value)))
-                for symbol, value in d.results().items() if str(symbol) in names]
-    return out
-
-
 def _thresholds_between(poly, group, scale, a, b, sa, sb) -> list[Threshold]:
-    """Thresholds between two densities whose stable sets *a* and *b* differ."""
+    """Thresholds between two densities whose stable sets *a* and *b* differ.  A position the scene calls
+    stable that the tracking predicate does not hold at its own density (:func:`_tracked_stable`: a short arc
+    of equilibria next to a ring's end, flat along it, that the scene reports as one class stable across it,
+    the box 1 x 3/2 x 1 at 1/12 - 1e-6) cannot be followed: the bisection never left that density and the
+    threshold was reported at it, 1/12 - 1e-6 and its dual 11/12 + 1e-6 in `phase box --dims 1,3/2,1` (the
+    source's look at 1/12 -+ 1e-6).  Such a position gives no threshold here."""
     out = []
     for label, side, (s_in, s_out) in [(x, "stable below", (sa, sb)) for x in sorted(set(a) - set(b))] + \
                                       [(x, "stable above", (sb, sa)) for x in sorted(set(b) - set(a))]:
         eq = (a if side == "stable below" else b)[label]
+        if eq.family != "ring" and not _tracked_stable(poly, group, np.array(eq.up), s_in, label, eq.family, scale)[0]:
+            continue
         value, err, tilt, note, u = _locate_tracked(poly, group, scale, label, eq, s_in, s_out)
         t = Threshold(value, err, label, side, note=note)
         t.tilt, t.up = tilt, tuple(u)
@@ -721,11 +654,13 @@ def _annotate_families(thresholds) -> None:
             t.note = "end of a family of equilibria: error estimated, not bounded"
 
 
-def phase_diagram(body: str, dims=None, steps: int = 48, progress=None, densities=None) -> PhaseDiagram:
+def phase_diagram(body: str, dims=None, steps: int = 48, progress=None, densities=None, known=()) -> PhaseDiagram:
     """The stable positions on a sweep of *steps* densities (or the given increasing *densities*,
-    symmetric about 1/2 for the duality check), every threshold located, and the thresholds of the
-    sources: each one the sweep missed (outside it, or a window narrower than its spacing) is looked
-    for at the source's density +- 1e-6 before it is called a disagreement."""
+    symmetric about 1/2 for the duality check) and every threshold located.  *known*: thresholds found
+    elsewhere (``{"value", "label", "locators", "claim", "errata", ...}``, the sources' printed ones:
+    :func:`symfloat.comparison.thresholds.phase_with_sources`); each one the sweep missed (outside it,
+    or a window narrower than its spacing) is looked for at its density +- 1e-6 before it is called a
+    disagreement, and every threshold found lists those it matches."""
     start = time.perf_counter()
     base = make_scene(body, "1/2", dims)
     poly = box(*base.dims)
@@ -749,7 +684,7 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None, densitie
     first, last = float(densities[0]), float(densities[-1])
     thresholds += _windows_between(poly, group, scale, None, solutions[0], first / 64, first)
     thresholds += _windows_between(poly, group, scale, solutions[-1], None, last, 1 - (1 - last) / 64)
-    known = source_thresholds(body, base.dims)
+    known = list(known)
 
     def matches(k, t):
         return abs(k["value"] - t.density) <= max(1e-9, 2 * t.bracket) and k["label"] == t.label

@@ -7,13 +7,17 @@
 * section (long prism): the heel angle in the cross-section's plane, every
   root of ``U'`` (:mod:`symfloat.solver.planar`);
 * cylinder: the tilt in the meridian plane (the rotations about the axis are
-  a continuous symmetry), from slice quadrature (:mod:`symfloat.solver.cylinder`).
+  a continuous symmetry), from slice quadrature (:mod:`symfloat.geometry.cylinder`).
 
 Stability: ``stable`` when every eigenvalue of the metacentric matrix
 ``T/V - U`` (the second variation of the potential) is positive,
 ``unstable`` when one is negative, ``indifferent`` when the smallest is zero to
 the working accuracy and the equilibrium is not a ring.  A ring is reported
 once; its stability is that of the direction across it.
+
+At a position a symmetry of the body fixes (face, edge, corner or axis up) the stability is decided
+exactly (:mod:`~symfloat.solver.exact`), and a family born there is located from the local expansion
+(:mod:`~symfloat.solver.born`); the float64 search's view of both gives way to them.
 
 Next to a bifurcation a position whose smallest eigenvalue float64 cannot
 decide is polished at 30 digits (:func:`~symfloat.solver.refine.polish`);
@@ -34,9 +38,11 @@ import numpy as np
 
 from ..model.prediction import Scene
 from .bodies import centred_polygon, polyhedron
-from .critical import critical_points, distinct_seeds, more_seeds, poincare_hopf_sum, sphere_seeds
-from .cylinder import cylinder_slice
+from ..geometry.cylinder import cylinder_slice
+from .born import SOFT_AXIS, born_families
+from .critical import Critical, critical_points, distinct_seeds, more_seeds, poincare_hopf_sum, sphere_seeds
 from .errors import ROUNDING, STEP, eigenvalue_error, equilibrium_error
+from .exact import symmetric_positions
 from .critical import FLAT, MIN_FAMILY
 from .degenerate import degenerate_class, flat_cluster
 from .families import family_index, family_seeds
@@ -44,7 +50,7 @@ from .local import local, waterplane_polygon
 from .planar import roots
 from .refine import planar_potential, planar_residual, polish_planar
 from .selfcheck import IndexCheckError
-from .symmetry import box_group, orbit, planar_group, prism_group, representative
+from .symmetry import box_group, orbit, planar_group, prism_group, representative, same_class
 
 __all__ = ["Equilibrium", "Solution", "solve", "stability_of", "body_scale"]
 
@@ -69,6 +75,7 @@ class Equilibrium:
     ring_length_error: float = 0.0  # the error of that length (the walk's step at the ends, chords)
     stability_evidence: str = "second variation"     # or "higher orders", or "undecided"
     digits: tuple = ()          # the up vector at 30 digits (mpf) where the solver polished it (next to a bifurcation)
+    decided: str = ""           # how the second variation's signs were decided where not in float64 (exact, digits)
     formulas: list = field(default_factory=list)
     predictions: list = field(default_factory=list)
 
@@ -136,7 +143,9 @@ def _clean(u) -> tuple:
 
 
 def _tilt(u) -> float:
-    return math.degrees(math.acos(max(-1.0, min(1.0, float(u[2])))))
+    """The angle from +z (degrees), as ``atan2(|(x, y)|, z)``: ``acos z`` loses ``1e-16 / sin(tilt)`` to the
+    rounding of ``z`` (1e-12 rad at a ring of tilt 1e-4)."""
+    return math.degrees(math.atan2(math.hypot(float(u[0]), float(u[1])), float(u[2])))
 
 
 def _shape(vertices: list, scale: float) -> str:
@@ -185,7 +194,7 @@ def _classified(poly, points, s, scale, group):
             others = [g @ o.u for o in points if o is not c for g in group]
             others += [v for v in orbit(c.u, group) if np.linalg.norm(v - c.u) > 1e-9]
             c.index, stability, _ = degenerate_class(poly, c.u, s, scale, others)
-            members, centre, extent = flat_cluster(c, [o for o in points if not o.ring], group, scale,
+            members, centre, extent = flat_cluster(c, [o for o in points if not o.ring and o.exact is None], group, scale,
                                                    2 * MIN_FAMILY, FLAT)
             if extent:
                 # a flat arc shorter than a reported family, found as several points: one class, its index
@@ -208,7 +217,7 @@ def _classified(poly, points, s, scale, group):
     return [x for x in out if not any(x[0] is a for a in absorbed)]
 
 
-def _searched(poly, s, seeds, group, scale):
+def _searched(poly, s, seeds, group, scale, fixed=()):
     """Critical points from *seeds*; when the Poincaré–Hopf sum fails, a second search (separatrices,
     soft directions, small gradient: :func:`more_seeds`; next to every family, across it and past its ends:
     :func:`family_seeds`), then continuation from the neighbouring densities ``s +- 1e-4 s(1 - s)`` (every
@@ -216,14 +225,14 @@ def _searched(poly, s, seeds, group, scale):
     ``1 - s``, turned upside down: ``u -> -u``).  Returns the points with their classification, the
     searches made and the index sum (None where it cannot be made)."""
     searches = ["seeds"]
-    points = critical_points(poly, s, seeds, group, scale)
+    points = _symmetric(critical_points(poly, s, seeds, group, scale), fixed, poly, s, group, scale)
     classified = _classified(poly, points, s, scale, group)
     points = [c for c, _, _ in classified]
     index = _index_sum(poly, s, points, group, scale)
     if _holds(index, points, scale):
         return classified, searches, index
     extra = [c.u for c in points] + more_seeds(poly, s, points, group, scale) + _near_families(points)
-    points = critical_points(poly, s, extra, group, scale)
+    points = _symmetric(critical_points(poly, s, extra, group, scale), fixed, poly, s, group, scale)
     classified = _classified(poly, points, s, scale, group)
     points = [c for c, _, _ in classified]
     index = _index_sum(poly, s, points, group, scale)
@@ -235,12 +244,57 @@ def _searched(poly, s, seeds, group, scale):
         there = critical_points(poly, near, seeds, group, scale)
         found = [c.u for c in there] + more_seeds(poly, near, there, group, scale) + _near_families(there)
         extra += [-u for u in found] if near == 1 - s else found
-    points = critical_points(poly, s, extra, group, scale)
+    points = _symmetric(critical_points(poly, s, extra, group, scale), fixed, poly, s, group, scale)
     classified = _classified(poly, points, s, scale, group)
     points = [c for c, _, _ in classified]
     index = _index_sum(poly, s, points, group, scale)
     searches.append("continuation from s +- 1e-4 s(1 - s) and from the dual scene at 1 - s")
     return classified, searches, index
+
+
+def _symmetric(points, fixed, poly, s, group, scale) -> list:
+    """*points* with every position a symmetry fixes (*fixed*: ``(u, exact, born, prism)`` from
+    :func:`~symfloat.solver.exact.symmetric_positions` and :func:`~symfloat.solver.born.born_families`) in
+    place of the isolated points found within their error of it (at most 1e-6: a float64 point there, or one polished
+    onto a family being born beside it, whose eigenvalues were not the position's: the cube 1e-9 past its
+    face-up pitchfork at 1/2 - sqrt(3)/6), carrying its exact second variation; and the equilibria born
+    there, located at 30 digits or more, in place of what the search found of them (a ring around it
+    closer than float64 resolves is seen as points, arcs or nothing)."""
+    out = list(points)
+    for u, exact, born, prism in fixed:
+        # next to a soft position (its eigenvalue small but decided) float64 points within 1e-6 of it are its
+        # rounding (the hexagonal prism 1 x 1 1e-9 below its lateral face's threshold 0.0689685: a copy 1e-8 off
+        # both mirrors, counted 12 times); the equilibria born there are the scan's (born_families)
+        soft = min(abs(e) for e in exact.eigenvalues) < SOFT_AXIS * scale
+        out = [c for c in out if c.ring or not same_class(c.u, u, group, 1e-6 if soft else
+                                                          min(max(2 * c.error_rad, 1e-9), 1e-6))]
+        out.append(Critical(representative(u, group), local(poly, u, s).U, exact.eigenvalues, 0.0, 0.0,
+                            len(orbit(u, group)), error_method="exact", exact=exact))
+        for b in born:
+            # the float64 search's view of a family born here (points on it, pieces of it, or the ring walked
+            # at float64's resolution) gives way to the family located at its exact radius
+            if b.ring:
+                # a point within a quarter of its radius of it and inside the disc where the waterplane meets
+                # the lateral faces only (the potential depends on the tilt alone there, so nothing but circles
+                # of equilibria lies there, and the next is not that close), a family that meets it there (a
+                # connected set of equilibria meeting the ring is part of it)
+                radius, (R, L) = b.length / (2 * math.pi), prism
+                lateral = math.atan(L * float(min(s, 1 - s)) / R)
+                out = [c for c in out if c.exact is not None
+                       or not any(abs(_angle_to(p, b.axis, group) - radius) <= radius / 4
+                                  and _angle_to(p, b.axis, group) < lateral for p in (c.path if c.ring else [c.u]))]
+            else:
+                out = [c for c in out if c.ring or c.exact is not None
+                       or not same_class(c.u, b.u, group, 2 * c.error_rad + 1e-6)]
+            out.append(b)
+    out.sort(key=lambda c: (round(c.U / scale, 12), -c.u[2], -c.u[0], -c.u[1]))
+    return out
+
+
+def _angle_to(u, axis, group) -> float:
+    """The least angle between *u* and a copy of *axis*."""
+    return float(np.arccos(np.clip(np.max(np.asarray(group, dtype=float) @ np.asarray(axis, dtype=float) @ np.asarray(u)),
+                                   -1.0, 1.0)))
 
 
 def _near_families(points) -> list:
@@ -308,7 +362,9 @@ def _polyhedral(scene: Scene, seeds, group):
     scale = body_scale(scene)
     s = scene.density
     seeds = distinct_seeds(seeds, group)
-    classified, searches, index = _searched(poly, s, seeds, group, scale)
+    fixed = [(u, exact, born_families(scene, poly, u, exact, group, scale, _prism_axis(scene, n)), _prism_axis(scene, n))
+             for u, n, exact in symmetric_positions(scene, group)]
+    classified, searches, index = _searched(poly, s, seeds, group, scale, fixed)
     if index is None and any(c.flat for c, _, _ in classified):
         flat = next(c for c, _, _ in classified if c.flat)
         raise IndexCheckError(f"{_name(scene)}: the index of the degenerate equilibrium at up "
@@ -339,10 +395,32 @@ def _polyhedral(scene: Scene, seeds, group):
         out.append(Equilibrium(_clean(c.u), _tilt(c.u), stability,
                                "ring" if c.ring else "isolated", c.U, _shape(waterplane_polygon(poly, loc.state), scale),
                                tuple(float(e) for e in c.eigen), c.error_rad, c.error_method, c.orbit,
-                               c.shape, c.length, c.length_error, evidence, digits=c.digits))
+                               c.shape, c.length, c.length_error, evidence, digits=c.digits, decided=_decided(c)))
     return out, {"poincare_hopf_index_sum": index, "expected_index_sum": 2, "seeds": len(seeds),
                  "searches": searches,
                  **({"family_indices": [c.index for c in families]} if families else {})}
+
+
+def _decided(c) -> str:
+    """How the signs of the second variation of *c* were decided, where float64 did not: exactly at a position
+    symmetry fixes (its draught rational or algebraic), at 30 digits or more (a prism lying), or from the
+    change of sign of the slope along a mirror (a family born at such a position)."""
+    if c.exact is not None:
+        kind = c.exact.draught
+        return f"at {kind}" if kind.endswith("digits") else f"exactly (draught {kind})"
+    return "change of sign along a mirror, at 30 digits or more" if c.error_method == "sign change" else ""
+
+
+def _prism_axis(scene: Scene, n) -> tuple | None:
+    """``(R, L)`` where the integer direction *n* is the axis of the body as a right prism (a prism's axis,
+    a box's face normal): the circumradius of its base and its length; else None."""
+    if scene.body == "prism":
+        return (float(scene.dims[0]) / (2 * math.sin(math.pi / scene.sides)), float(scene.dims[1])) if n == (0, 0, 1) else None
+    if n is None or sum(1 for x in n if x) != 1:
+        return None
+    k = next(i for i, x in enumerate(n) if x)
+    base = [float(scene.dims[i]) for i in range(3) if i != k]
+    return math.hypot(*base) / 2, float(scene.dims[k])
 
 
 def _name(scene: Scene) -> str:

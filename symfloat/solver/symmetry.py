@@ -14,7 +14,10 @@ import math
 import mpmath
 import numpy as np
 
-__all__ = ["box_group", "prism_group", "planar_group", "orbit", "same_class", "representative", "mirror_normals"]
+from .bodies import centred_polygon
+
+__all__ = ["box_group", "prism_group", "planar_group", "orbit", "same_class", "representative", "mirror_normals",
+           "symmetry_group"]
 
 
 def box_group(dims) -> list[np.ndarray]:
@@ -112,3 +115,15 @@ def mirror_normals(group) -> list[np.ndarray]:
             w, vectors = np.linalg.eigh((g + g.T) / 2)
             out.append(vectors[:, int(np.argmin(w))])
     return out
+
+
+def symmetry_group(scene):
+    """The symmetry group of a scene's body (orthogonal matrices in the body frame)."""
+    if scene.body in ("cube", "box"):
+        return box_group(scene.dims)
+    if scene.body == "prism":
+        return prism_group(scene.sides)
+    if scene.body == "section":
+        return planar_group(centred_polygon(scene))
+    return [np.diag(d) for d in ((1, 1, 1), (1, -1, 1), (-1, 1, 1), (-1, -1, 1),
+                                 (1, 1, -1), (1, -1, -1), (-1, 1, -1), (-1, -1, -1))]

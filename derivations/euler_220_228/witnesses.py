@@ -1,0 +1,85 @@
+"""Euler §§220-228's witnesses: every figure declared by its chords, its areas and moments measured
+(:mod:`symfloat.engine.figure_witness`); the integrals of §§225-227 by quadrature of their integrands."""
+import sympy as sp
+
+from symfloat.engine.figure_witness import CENTROID, FIGURE_METHODS, Figure, FigureWitness, Over
+from symfloat.engine.floating_witness import PART, Combined
+from symfloat.engine.witness import Case
+
+from .statements import R, Yc, Yg, a, b, c, d, p, q, y
+
+# ================================================================ witnesses: the moments of each figure
+# Each figure is declared by its chords, x from the left to the right boundary at the height y (the branches of
+# §221, split at x_c = a + Y(b) into Ace and Bce; the whole figure takes y from -b to b with Y(|y|)), and
+# measured by the figure witness (symfloat.engine.figure_witness): the chord by the three-point Gauss rule, exact
+# for an integrand of degree <= 2 in x, across the chords by quadrature in float64 and at 50 digits.  The
+# one-dimensional integrals of §§225-227 are integrals over the segment 0 <= y <= b.  Nothing of the formulas
+# under test is used.
+XC = CENTROID[0]
+x_ = sp.Symbol("x", real=True)                    # the abscissa AP of the figures
+
+
+def _cases(*rows):
+    return tuple(Case({k: sp.Rational(v) for k, v in params.items()}, label=label) for label, params in rows)
+
+
+def curve_figure(Y, region, whole=False):
+    """The region ('Ace', 'Bce' or 'AEB') of the half y >= 0 of the figure with the function Y (of y >= 0), or
+    the whole figure (y from -b to b, Y taken at |y|)."""
+    at = {y: sp.Abs(y)} if whole else {}
+    left, right, ce = ((a + Y - a * R / b).xreplace(at), (a + Y + a * R / b).xreplace(at), a + Y.subs(y, b))
+    ends = {"Ace": (left, ce), "Bce": (ce, right), "AEB": (left, right)}[region]
+    return Figure.strips(x_, y, -b if whole else 0, b, ends, breaks=(0,) if whole else ())
+
+
+def figure_witness(name, description, targets, cases, figure, quantity):
+    d.witness(FigureWitness(name, description, tuple(targets), cases, figure=figure, coords=(x_, y), quantity=quantity))
+
+
+GEN = _cases(("a = 2, b = 1, Y = |y|/4 + y²/8", {a: 2, b: 1, p: "1/4", q: "1/8"}),
+             ("a = 5/2, b = 3/4, Y = |y|/10 - y²/3", {a: "5/2", b: "3/4", p: "1/10", q: "-1/3"}))
+CFIG = _cases(("a = 2, b = 1, c = 1/2", {a: 2, b: 1, c: "1/2"}),
+              ("a = 5/2, b = 3/4, c = 1", {a: "5/2", b: "3/4", c: 1}))
+AB_ONLY = _cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
+
+for _region in ("Ace", "Bce", "AEB"):
+    figure_witness(f"area-{_region}", f"∫∫ 1 over {_region}", (f"area-{_region}",), GEN,
+                   curve_figure(Yg, _region), Over(1))
+    figure_witness(f"AB-{_region}", f"∫∫ y² over {_region}", (f"AB-{_region}",), GEN,
+                   curve_figure(Yg, _region), Over(y ** 2))
+figure_witness("area-whole", "∫∫ 1 over the whole figure AEBF", ("area-ellipse",), GEN,
+               curve_figure(Yg, "AEB", whole=True), Over(1))
+figure_witness("AB-whole", "∫∫ y² over the whole figure AEBF", ("AB-whole",), GEN,
+               curve_figure(Yg, "AEB", whole=True), Over(y ** 2))
+figure_witness("Aa-Ace", "∫∫ x² over Ace (moment about aAa, x = 0)", ("Aa-Ace-expanded",), GEN,
+               curve_figure(Yg, "Ace"), Over(x_ ** 2))
+figure_witness("Aa-Bce", "∫∫ x² over Bce", ("Aa-Bce-expanded",), GEN, curve_figure(Yg, "Bce"), Over(x_ ** 2))
+figure_witness("Aa-AEB", "∫∫ x² over AEB", ("Aa-AEB", "Aa-AEB-value"), GEN, curve_figure(Yg, "AEB"), Over(x_ ** 2))
+figure_witness("Aa-whole", "∫∫ x² over the whole figure", ("Aa-whole",), GEN,
+               curve_figure(Yg, "AEB", whole=True), Over(x_ ** 2))
+figure_witness("first-moment", "∫∫ x over AEB (D·AC)", ("DAC-definition", "DAC"), GEN, curve_figure(Yg, "AEB"),
+               Over(x_))
+figure_witness("centroid", "x_C of AEB", ("AC",), GEN, curve_figure(Yg, "AEB"), XC)
+figure_witness("moment-EF", "∫∫ (x - x_C)² over the whole figure, x_C its centroid", ("moment-EF",), GEN,
+               curve_figure(Yg, "AEB", whole=True), Over((x_ - XC) ** 2))
+figure_witness("centroid-c", "x_C of AEB, Y = -cy²/b²", ("AC-c",), CFIG, curve_figure(Yc, "AEB"), XC)
+figure_witness("moment-EF-c", "∫∫ (x - x_C)² over the whole figure, Y = -cy²/b²", ("moment-EF-c",), CFIG,
+               curve_figure(Yc, "AEB", whole=True), Over((x_ - XC) ** 2))
+figure_witness("moment-EF-half", "∫∫ (x - x_C)² over the figure with c = a/2", ("moment-EF-half",), AB_ONLY,
+               curve_figure(Yc.subs(c, a / 2), "AEB", whole=True), Over((x_ - XC) ** 2))
+d.witness(Combined("sixteenth", "(K(c = a/2) - K(c = 0))/K(c = 0), both moments measured", ("sixteenth",), AB_ONLY,
+                   parts=tuple(FigureWitness("", "", (), (), figure=curve_figure(Yc.subs(c, cv), "AEB", whole=True),
+                                             coords=(x_, y), quantity=Over((x_ - XC) ** 2)) for cv in (a / 2, 0)),
+                   values=((PART[0] - PART[1]) / PART[1],), methods=FIGURE_METHODS))
+
+
+def line_witness(name, targets, cases, g, text):
+    figure_witness(name, f"∫_0^b {text} dy by quadrature", targets, cases, Figure.interval(y, 0, b), Over(g))
+
+
+line_witness("U0", ("reduce-U0", "U0-value"), AB_ONLY, R, "√(b² - y²)")
+line_witness("U2", ("U2-value", "reduce-U2", "U2-value-c"), AB_ONLY, y ** 2 * R, "y²√(b² - y²)")
+line_witness("U4", ("U4-value",), AB_ONLY, y ** 4 * R, "y⁴√(b² - y²)")
+line_witness("V2", ("reduce-V2",), AB_ONLY, y ** 2 / R, "y²/√(b² - y²)")
+line_witness("S2c", ("S2c-expanded", "S2c-value"), CFIG, (a + Yc) ** 2 * R, "(a - cy²/b²)²√(b² - y²)")
+line_witness("S1c", ("S1c-value",), CFIG, (a + Yc) * R, "(a - cy²/b²)√(b² - y²)")

@@ -1,0 +1,19 @@
+"""Web lesson "Auftrieb Stabilität": the metacentre of a rectangular hull.
+
+The hull is a homogeneous box 2a x 2b x 2c (length, breadth, height) floating
+upright with draught d; heel about the long axis (a > b).  Coordinates: z up
+from the water surface, y across.  Volumes, centroids and the waterplane's
+moment of inertia are integrated; the shift of the centre of buoyancy on heel
+is computed from the two wedge triangles (the lesson's route, exact in tg phi,
+read to first order in phi as the lesson does), the metacentre from it, and
+the stability function e from z_M >= z_G.  The closing sentence ("größer als
+eins" for stability) and the Vasa remark are checked as claims.
+
+Witnesses: the floating box clipped exactly (``symfloat.engine.floating_witness``):
+immersed volume, centres of buoyancy and gravity, the waterplane's I_min / V -
+(G - B) upright, the righting arm at small heels extrapolated to phi -> 0, and
+the share of the volume below the draught.
+"""
+from .statements import DERIVATION
+
+__all__ = ["DERIVATION"]

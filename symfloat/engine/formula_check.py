@@ -1,0 +1,290 @@
+r"""Checking one formula of any text: a printed formula in LaTeX against another formula or a definition.
+
+``check(printed, against)`` reads both with the allow-list reader (:mod:`symfloat.model.latex`;
+nothing is evaluated as code), the definitions with their integrals (``\int_a^b f \, dx``).  Each row
+``S = e`` of *against* whose left side is a symbol defines ``S``; a row without one is the value the
+printed formula must have.  The definitions are put into the printed formula and every link of its
+chain is decided by the engine's identity check (:func:`~symfloat.engine.identity.check_identity`):
+exact sampling at seeded rational points of the domain, then a symbolic proof.  A refuted link is
+shown at the simplest point where it fails (small whole numbers and halves first), its sides labelled
+*printed* and *derived*.  Where a definition is an integral, a numeric witness integrates it by
+quadrature (mpmath's tanh-sinh, never the closed form) at that point.  A refuted print gets the
+likeliest small edits that make it hold (:mod:`symfloat.engine.corrections`), each proved or sampled.
+
+>>> r = check(r"\bar z = \frac{3(2r-h)^2}{3(3r-h)}",
+...           r"\bar z = \frac{\int_{r-h}^{r} x \pi (r^2 - x^2) \, dx}{\int_{r-h}^{r} \pi (r^2 - x^2) \, dx}",
+...           where="h < r")
+>>> r.verdict, r.counterexample["point"], r.counterexample["printed"], r.counterexample["derived"]
+('refuted', {'h': '1', 'r': '2'}, '9/5', '27/20')
+>>> r.witness["agrees_with"], [(c.text, c.kind, c.status) for c in r.corrections][:1]
+('derived', [('\\bar z = \\frac{3(2r-h)^2}{4(3r-h)}', 'print-like', 'proved')])
+>>> check(r"V = \frac{\pi h^2}{3} (3r - h)", r"V = \int_{r-h}^{r} \pi (r^2 - x^2) \, dx").verdict
+'holds'
+"""
+from __future__ import annotations
+
+import itertools
+import re
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import sympy as sp
+
+from ..errors import InputError
+from ..model.latex import Unreadable, read
+from .corrections import Correction, corrections
+from .identity import Domain, check_identity
+
+__all__ = ["FormulaCheck", "check", "proposed", "parse_domain", "DEFAULT_INTERVAL"]
+
+DEFAULT_INTERVAL = (0, 4)      # where a symbol without --domain is sampled: a positive length or ratio
+_SMALL_POINTS = 400            # at most this many simple points are tried for the shown counterexample
+_PROOF_SECONDS = 5.0           # the proof search of one link (the clock can end a search, never refute)
+_RELATIONS = {"<": sp.StrictLessThan, ">": sp.StrictGreaterThan, "<=": sp.LessThan, ">=": sp.GreaterThan}
+
+
+@dataclass
+class FormulaCheck:
+    """The verdict on a printed formula: ``holds`` (with ``evidence`` ``symbolic`` or ``sampled``),
+    ``refuted`` (with the counterexample, its sides labelled) or ``undecided``; the witness's
+    measurement where a definition is an integral; the corrections that make a refuted print hold."""
+
+    printed: str
+    against: list
+    verdict: str
+    evidence: str
+    strategy: str = ""
+    samples: int = 0
+    counterexample: dict | None = None
+    witness: dict | None = None
+    corrections: list = field(default_factory=list)
+    tried: list = field(default_factory=list)
+
+    def to_json(self) -> dict:
+        data = dict(self.__dict__)
+        data["corrections"] = [c.to_json() for c in self.corrections]
+        return data
+
+
+_INTERVAL = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*)\s*=\s*(-?\d+(?:/\d+)?)\s*:\s*(-?\d+(?:/\d+)?)\s*")
+
+
+def parse_domain(text: str | None) -> dict:
+    """``--domain 'r=1:3, h=0:1'``: symbol name -> (low, high), numbers as whole numbers or p/q.
+
+    >>> parse_domain("r=1:3, h=0:1/2")
+    {'r': (Fraction(1, 1), Fraction(3, 1)), 'h': (Fraction(0, 1), Fraction(1, 2))}
+    """
+    out = {}
+    for part in (text or "").split(","):
+        if not part.strip():
+            continue
+        m = _INTERVAL.fullmatch(part)
+        if not m or Fraction(m[2]) >= Fraction(m[3]):
+            raise InputError(f"--domain is name=low:high, ... with low < high (r=1:3, h=0:1/2), not {part[:40]!r}")
+        out[m[1]] = (Fraction(m[2]), Fraction(m[3]))
+    return out
+
+
+def _reading(tex: str, what: str, integrals=False):
+    try:
+        return read(tex, integrals=integrals)
+    except Unreadable as exc:
+        raise InputError(f"{what}: {exc}") from None
+
+
+def _definitions(against: list[str]):
+    """Symbol -> its definition, and the value a formula must have (``None`` if no row gives one)."""
+    defined, target = {}, None
+    for tex in against:
+        for members, relations in _reading(tex, "--against", integrals=True).rows:
+            if any(r != "=" for r in relations) or members[0] is None:
+                raise InputError(f"--against: a definition is S = expression or an expression, not {tex[:60]!r}")
+            if len(members) == 1:
+                target = members[0]
+            elif isinstance(members[0], sp.Symbol):
+                defined[members[0]] = members[-1]
+            else:
+                raise InputError(f"--against: the left side of {tex[:60]!r} is not a symbol")
+    for _ in range(len(defined)):                                   # definitions may use earlier ones
+        defined = {s: e.xreplace(defined) for s, e in defined.items()}
+    return defined, target
+
+
+def _constraints(where: str):
+    """``h < r``, ``0 < h < r``: the relations that restrict the domain."""
+    if not where:
+        return ()
+    out = []
+    for members, relations in _reading(where, "--where").rows:
+        if members[0] is None or any(r not in _RELATIONS for r in relations):
+            raise InputError(f"--where holds inequalities such as 0 < h < r, not {where[:60]!r}")
+        out += [_RELATIONS[r](a, b) for a, b, r in zip(members, members[1:], relations)]
+    return tuple(out)
+
+
+def _domain(symbols, intervals: dict, constraints) -> Domain:
+    names = {s.name for s in symbols}
+    unknown = sorted(set(intervals) - names)
+    if unknown:
+        raise InputError(f"--domain names {', '.join(unknown)}, which the formulas do not have")
+    return Domain({s: intervals.get(s.name, DEFAULT_INTERVAL) for s in symbols}, constraints)
+
+
+def _links(printed, defined, target):
+    """The pairs to decide, each ``(a, b, label of a, label of b)``: a member that is a defined symbol
+    (or the target value) is *derived*, the others *printed*."""
+    members, relations = printed
+    if any(r != "=" for r in relations) or members[0] is None:
+        raise InputError("the printed formula is an equation (a = b, a chain a = b = c or an expression)")
+
+    def side(m):
+        return (defined[m], "derived") if isinstance(m, sp.Symbol) and m in defined else (m, "printed")
+
+    sides = [side(m) for m in members]
+    if target is not None:
+        sides.insert(0, (target, "derived"))
+    if len(sides) < 2:
+        raise InputError("nothing to compare: give --against the value or a definition of the printed symbol")
+    return [(a, b, la, lb) for (a, la), (b, lb) in zip(sides, sides[1:])]
+
+
+def _simple_values(lo, hi):
+    """The simplest rationals inside (lo, hi): whole numbers, then halves, thirds, quarters."""
+    lo, hi = Fraction(str(lo)), Fraction(str(hi))
+    seen = []
+    for q in range(1, 5):
+        for p in range(int(lo * q) - 1, int(hi * q) + 2):
+            v = Fraction(p, q)
+            if lo < v < hi and v not in seen:
+                seen.append(v)
+    return seen
+
+
+def _simple_points(symbols, domain: Domain):
+    """Admissible points of *symbols*, simplest first (small denominators, then small values)."""
+    grids = [_simple_values(*domain.intervals[s]) for s in symbols]
+    points = sorted(itertools.product(*grids), key=lambda p: (sum(v.denominator for v in p), sum(p)))
+    for values in points[:_SMALL_POINTS]:
+        point = {s: sp.Rational(v.numerator, v.denominator) for s, v in zip(symbols, values)}
+        if domain.admits(point):
+            yield point
+
+
+def _simplest_counterexample(a, b, domain: Domain):
+    """The first point, in order of simplicity, where *a* and *b* (evaluated) differ, with both values."""
+    for point in _simple_points(sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name), domain):
+        try:
+            va, vb = sp.simplify(a.xreplace(point)), sp.simplify(b.xreplace(point))
+        except (ArithmeticError, ZeroDivisionError, TypeError):
+            continue
+        if not (va.is_number and vb.is_number) or va.has(sp.zoo, sp.nan) or vb.has(sp.zoo, sp.nan):
+            continue
+        if sp.simplify(va - vb) != 0:
+            return point, va, vb
+    return None
+
+
+def _shown(point, va, vb, la, lb) -> dict:
+    values = {la: str(va), lb: str(vb)}
+    return {"point": {str(k): str(v) for k, v in point.items()},
+            "printed": values.get("printed", ""), "derived": values.get("derived", "")}
+
+
+def _counterexample(a, b, la, lb, domain, sampled: dict):
+    """The counterexample shown: the simplest failing point, else the sampled one."""
+    ea, eb = a.doit(), b.doit()
+    simple = _simplest_counterexample(ea, eb, domain)
+    if simple is not None:
+        return _shown(*simple, la, lb)
+    return _shown({sp.Symbol(k): v for k, v in sampled["point"].items()}, sampled["lhs"], sampled["rhs"], la, lb)
+
+
+def _witness(links, point) -> dict | None:
+    """Where a derived side holds an integral: both sides at *point*, the integral by quadrature."""
+    for a, b, la, lb in links:
+        derived, printed = (a, b) if la == "derived" else (b, a)
+        if la == lb or not derived.has(sp.Integral):
+            continue
+        subs = {sp.Symbol(k): sp.Rational(v) for k, v in point.items()}
+        measured = sp.N(derived.xreplace(subs), 30)                # Integral.evalf: quadrature, not integration
+        claimed = sp.N(printed.xreplace(subs).doit(), 30)
+        closed = sp.N(derived.doit().xreplace(subs), 30)
+        scale = max(abs(measured), 1)
+        agree_printed = abs(measured - claimed) <= sp.Float(10) ** -20 * scale
+        agree_derived = abs(measured - closed) <= sp.Float(10) ** -20 * scale
+        return {"method": "quadrature (mpmath tanh-sinh, 30 digits)", "point": dict(point),
+                "measured": sp.sstr(measured, full_prec=False), "printed": sp.sstr(claimed, full_prec=False),
+                "agrees_with": "printed" if agree_printed else "derived" if agree_derived else "neither"}
+    return None
+
+
+def _decide(links, domain, seed, prove=True):
+    """The weakest link's outcome: ``(status, result, link)``."""
+    order = {"refuted": 0, "undecided": 1, "sampled": 2, "proved": 3}
+    worst = None
+    for link in links:
+        r = check_identity(link[0], link[1], domain, seed, prove=prove, limit=_PROOF_SECONDS)
+        if worst is None or order[r.status] < order[worst[0].status]:
+            worst = (r, link)
+        if r.status == "refuted":
+            break
+    return worst
+
+
+def check(printed: str, against, *, where: str = "", domain: dict | None = None,
+          propose: bool = True) -> FormulaCheck:
+    r"""Check the LaTeX formula *printed* against *against* (a LaTeX formula or definition, or a list of
+    them) on *domain* (symbol name -> interval, default :data:`DEFAULT_INTERVAL`) restricted by
+    *where* (inequalities, ``0 < h < r``).  See the module docstring; *propose* searches the corrections
+    of a refuted print."""
+    against = [against] if isinstance(against, str) else list(against)
+    defined, target = _definitions(against)
+    rows = _reading(printed, "the printed formula").rows
+    if len(rows) != 1:
+        raise InputError("check one printed formula at a time")
+    constraints = _constraints(where)
+    links = _links(rows[0], defined, target)
+    symbols = set().union(*(a.free_symbols | b.free_symbols for a, b, *_ in links),
+                          *(c.free_symbols for c in constraints))
+    space = _domain(symbols, domain or {}, constraints)
+    r, link = _decide(links, space, printed)
+    verdict = {"proved": "holds", "sampled": "holds", "refuted": "refuted"}.get(r.status, "undecided")
+    evidence = r.evidence or ("counterexample (exact)" if r.exact else "counterexample (60 digits)")
+    result = FormulaCheck(printed, against, verdict, evidence if verdict != "undecided" else "", r.strategy,
+                          r.samples, tried=list(r.tried))
+    if r.status == "refuted":
+        result.counterexample = _counterexample(*link, space, r.counterexample)
+        result.witness = _witness(links, result.counterexample["point"])
+        if propose:
+            result.corrections = proposed(printed, defined, target, space)
+    elif verdict == "holds":
+        point = _first_point(links, space)
+        result.witness = _witness(links, point) if point else None
+    return result
+
+
+def _first_point(links, domain):
+    """The simplest admissible point of the links' symbols (where a witness measures a print that holds)."""
+    symbols = sorted(set().union(*(a.free_symbols | b.free_symbols for a, b, *_ in links)), key=lambda s: s.name)
+    point = next(_simple_points(symbols, domain), {})
+    return {str(s): str(v) for s, v in point.items()}
+
+
+def proposed(printed: str, defined: dict, target, domain: Domain) -> list[Correction]:
+    """The likeliest edits of *printed* that make it hold against the same definitions."""
+    def holds(text):
+        try:
+            rows = read(text).rows
+            links = _links(rows[0], defined, target) if len(rows) == 1 else None
+        except (Unreadable, InputError):
+            return None
+        if links is None or not set().union(*(a.free_symbols | b.free_symbols for a, b, *_ in links)) \
+                <= set(domain.intervals):
+            return None
+        if _decide(links, domain, printed, prove=False)[0].status != "sampled":
+            return None
+        status = _decide(links, domain, printed)[0].status
+        return status if status in ("proved", "sampled") else None
+
+    return corrections(printed, holds)

@@ -1,0 +1,43 @@
+"""``symfloat check``'s report: the verdict on one printed formula, as text or JSON."""
+from __future__ import annotations
+
+import json
+
+from ..engine.formula_check import FormulaCheck
+
+__all__ = ["check_json", "check_text"]
+
+
+def check_json(result: FormulaCheck) -> str:
+    return json.dumps(result.to_json(), indent=1, ensure_ascii=False) + "\n"
+
+
+def _point(point: dict) -> str:
+    return ", ".join(f"{k} = {v}" for k, v in point.items())
+
+
+def check_text(result: FormulaCheck) -> str:
+    """The verdict, its evidence, the counterexample with labelled sides, the witness, the corrections."""
+    lines = [f"printed:  {result.printed}"] + [f"against:  {a}" for a in result.against]
+    if result.verdict == "holds":
+        how = f"proved ({result.strategy})" if result.evidence == "symbolic" else \
+            f"every one of {result.samples} exact samples agrees, no symbolic proof"
+        lines.append(f"verdict:  holds: {how}")
+    elif result.verdict == "refuted":
+        cx = result.counterexample
+        at = f" at {_point(cx['point'])}" if cx["point"] else ""
+        lines.append(f"verdict:  refuted{at}: printed {cx['printed']}, derived {cx['derived']}")
+    else:
+        lines.append("verdict:  undecided: the samples could not be evaluated (see --format json, 'tried')")
+    w = result.witness
+    if w:
+        agrees = {"printed": "agrees with the print", "derived": "agrees with the derivation, not the print",
+                  "neither": "agrees with neither"}[w["agrees_with"]]
+        lines.append(f"witness:  {w['method']} at {_point(w['point'])}: {w['measured']} ({agrees})")
+    if result.corrections:
+        lines.append("corrections that make the print hold, likeliest first:")
+        for i, c in enumerate(result.corrections, 1):
+            lines.append(f"  {i}. {c.text}    [{c.change}; {c.what}, {c.kind}; {c.status}]")
+    elif result.verdict == "refuted":
+        lines.append("corrections: no single small edit of the print makes it hold")
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,81 @@
+r"""What a correction changes: the corrected TeX with the parts that differ from the printed TeX marked,
+and the correction rendered (:func:`corrected_html`).
+
+The two formulas are cut into TeX tokens (a command, a number, a letter, any other character); the
+runs of the correction that the print does not have, or has otherwise (:class:`difflib.SequenceMatcher`
+on the tokens, spaces ignored), are wrapped in ``\htmlClass{changed}{...}``, which KaTeX sets as a
+``<span class="changed">`` (the stylesheet frames and shades it).  A run is marked only where it
+is a whole TeX group: balanced braces, no ``&``, ``\\``, ``\left``, ``\right``, ``\begin`` or
+``\end`` inside, not starting with a sub- or superscript sign, not ending in a command that waits for
+its argument.  Changed letters of a name (``\\operatorname{cotg}``) mark the whole name.
+
+>>> highlighted(r"\frac{b}{2} = b s (1 - s)", r"\frac{b}{2} = 6 s (1 - s)")
+'\\frac{b}{2} = \\htmlClass{changed}{6} s (1 - s)'
+"""
+from __future__ import annotations
+
+import re
+from difflib import SequenceMatcher
+
+from .text import excerpt_html
+from .typeset import UNRENDERED, typeset
+
+__all__ = ["highlighted", "corrected_html"]
+
+_WORDS = re.compile(r"[A-Za-zäöüß]{3,}[ ,]+[A-Za-zäöüß]{3,}")
+_TOKEN = re.compile(r"\\[A-Za-z]+\*?|\\.|\d+(?:[.,]\d+)?|\S")
+_UNSAFE = re.compile(r"&|\\\\|\\(?:left|right|middle|begin|end)\b")
+_ARGUMENT = re.compile(r"\\[A-Za-z]+$")
+_NAMED = re.compile(r"\\(?:operatorname|mathrm)\{[^{}]*$")
+
+
+def _tokens(tex: str) -> list[tuple[int, int, str]]:
+    return [(m.start(), m.end(), m.group(0)) for m in _TOKEN.finditer(tex)]
+
+
+def _whole(run: str) -> bool:
+    depth = 0
+    for c in run:
+        depth += {"{": 1, "}": -1}.get(c, 0)
+        if depth < 0:
+            return False
+    return depth == 0 and not _UNSAFE.search(run) and run[0] not in "^_'" and not _ARGUMENT.search(run)
+
+
+def highlighted(printed: str, corrected: str) -> str:
+    """*corrected* with the runs that differ from *printed* in ``\\htmlClass{changed}{...}``."""
+    old, new = _tokens(printed), _tokens(corrected)
+    matcher = SequenceMatcher(None, [t for _, _, t in old], [t for _, _, t in new], autojunk=False)
+    out, pos = [], 0
+    for op, _, _, j1, j2 in matcher.get_opcodes():
+        if op not in ("replace", "insert") or j1 == j2:
+            continue
+        a, b = new[j1][0], new[j2 - 1][1]
+        inside = _NAMED.search(corrected, 0, a)          # letters of a name: the whole name is marked
+        if inside and "}" in corrected[b:]:
+            a, b = inside.start(), corrected.index("}", b) + 1
+        if a < pos:
+            continue
+        run = corrected[a:b]
+        if _whole(run):
+            out += [corrected[pos:a], r"\htmlClass{changed}{", run, "}"]
+            pos = b
+    return "".join(out) + corrected[pos:]
+
+
+def corrected_html(corrected: str, printed: str = "") -> str:
+    """A correction: words (with their dollars) as prose, a formula as a typeset display, its change
+    from the *printed* TeX marked.
+
+    >>> corrected_html("x = 2,44")[:26]
+    '<div class="math-display">'
+    """
+    if "$" in corrected or (_WORDS.search(re.sub(r"\\[A-Za-z]+(\{[^}]*\})?", " ", corrected))
+                            and "\\" not in corrected):
+        return excerpt_html(corrected)
+    marked = highlighted(printed, corrected) if printed else corrected
+    shown = typeset(marked, display=True)
+    if marked != corrected and shown.startswith("<code"):        # the marks made it untypesettable
+        UNRENDERED.discard(marked)
+        shown = typeset(corrected, display=True)
+    return f'<div class="math-display">{shown}</div>'

@@ -1,0 +1,90 @@
+"""``symfloat check`` and ``symfloat.check``: one printed formula against a formula or a definition."""
+import json
+from importlib.resources import files
+
+import pytest
+from jsonschema import Draft202012Validator
+
+import symfloat
+from symfloat.cli import main
+from symfloat.model.latex import read
+
+CAP_CENTROID = r"\bar z = \frac{\int_{r-h}^{r} x \pi (r^2 - x^2) \, dx}{\int_{r-h}^{r} \pi (r^2 - x^2) \, dx}"
+SCHEMA = json.loads(files("symfloat").joinpath("schemas", "check.schema.json").read_text(encoding="utf-8"))
+
+
+def test_the_bar_is_kept():
+    # \bar z and z are two quantities (the centroid and a coordinate): the reader must not merge them
+    (bar,), = [r[0][:1] for r in read(r"\bar z = z").rows]
+    assert bar.name == "zbar" and read(r"\bar z = z").rows[0][0][1].name == "z"
+
+
+def test_a_misprinted_centroid_is_refuted_with_labelled_sides_and_corrected():
+    r = symfloat.check(r"\bar z = \frac{3(2r-h)^2}{3(3r-h)}", CAP_CENTROID, where="h < r")
+    assert r.verdict == "refuted"
+    # at r = 2, h = 1 (the simplest admissible point): the print gives 3·9/(3·5) = 9/5, the moment over
+    # the volume of the segment is 3·9/(4·5) = 27/20 (V = pi h^2 (3r - h)/3, M = pi h^2 (2r - h)^2/4)
+    assert r.counterexample == {"point": {"h": "1", "r": "2"}, "printed": "9/5", "derived": "27/20"}
+    assert r.witness["agrees_with"] == "derived" and r.witness["measured"].startswith("1.35")
+    best = r.corrections[0]
+    assert best.text == r"\bar z = \frac{3(2r-h)^2}{4(3r-h)}" and best.status == "proved"
+    assert best.kind == "print-like" and best.what == "digit"
+
+
+def test_a_right_print_holds_by_proof_and_quadrature():
+    r = symfloat.check(r"V = \frac{\pi h^2}{3} (3r - h)", r"V = \int_{r-h}^{r} \pi (r^2 - x^2) \, dx", where="h < r")
+    assert (r.verdict, r.evidence, r.corrections) == ("holds", "symbolic", [])
+    assert r.witness["agrees_with"] == "printed"
+    # mutated: the exponent of h changed, the same definition refutes it
+    wrong = symfloat.check(r"V = \frac{\pi h^3}{3} (3r - h)", r"V = \int_{r-h}^{r} \pi (r^2 - x^2) \, dx",
+                           where="h < r")
+    assert wrong.verdict == "refuted"
+    assert [c.text for c in wrong.corrections][:1] == [r"V = \frac{\pi h^2}{3} (3r - h)"]
+
+
+def test_an_ocr_confusion_is_proposed_as_scan_like():
+    # Scheeffer (81a) as scanned: "b s" for "6 s" (docs/errata.json, scheeffer-IV-V)
+    r = symfloat.check(r"T = 2 \cdot \left\{ b s (1 - s) - 1 \right\}", r"T = 2 (6 s (1 - s) - 1)",
+                       domain={"s": (0, 1), "b": (0, 1)})
+    assert r.verdict == "refuted"
+    assert (r.corrections[0].change, r.corrections[0].kind) == ("b → 6", "scan-like")
+
+
+def test_several_definitions_chain():
+    r = symfloat.check(r"x_s = \frac{3 (2r - h)^2}{4 (3r + h)}",
+                       [r"V = \frac{\pi h^2}{3} (3r - h)", r"M = \frac{\pi h^2}{4} (2r - h)^2", "x_s = M/V"],
+                       where="0 < h < r")
+    assert r.verdict == "refuted" and r.corrections[0].change == "+ → -"
+
+
+def test_command_line_text_json_and_exit_status(tmp_path, capsys):
+    assert main(["check", r"\bar z = \frac{3(2r-h)^2}{3(3r-h)}", "--against", CAP_CENTROID, "--where", "h < r"]) == 1
+    out = capsys.readouterr().out
+    assert "refuted at h = 1, r = 2: printed 9/5, derived 27/20" in out and "[3 → 4; digit" in out
+    target = tmp_path / "check.json"
+    assert main(["check", r"V = \frac{\pi h^2}{3} (3r - h)", "--against", r"V = \int_{r-h}^{r} \pi (r^2 - x^2) \, dx",
+                 "--format", "json", "--output", str(target), "--quiet"]) == 0
+    record = json.loads(target.read_text(encoding="utf-8"))
+    assert list(Draft202012Validator(SCHEMA).iter_errors(record)) == []
+    record["verdict"], record["counterexample"] = "refuted", None          # the schema is not vacuous
+    assert list(Draft202012Validator(SCHEMA).iter_errors(record))
+
+
+@pytest.mark.parametrize("argv, says", [
+    (["x = 1 +", "--against", "x = 1"], "the formula ends too early"),
+    (["x = 1", "--against", "x = 1", "--domain", "y=0:1"], "--domain names y"),
+    (["x = 1", "--against", "x = 1", "--domain", "x=2:1"], "--domain is name=low:high"),
+    (["x = __import__('os')", "--against", "x = 1"], "symfloat:"),
+])
+def test_bad_input_is_one_line_and_exit_2(argv, says, capsys):
+    assert main(["check", *argv]) == 2
+    err = capsys.readouterr().err
+    assert says in err and err.count("\n") == 1
+
+
+def test_two_confusions_at_two_places_are_one_candidate():
+    # Euler's scan reads "\mu V" as "\nu v" (docs/errata.json, euler §241): ν/μ and v/V together
+    from symfloat.engine.corrections import candidates
+    found = {c.text: c for c in candidates(r"D = \nu v")}
+    assert r"D = \mu V" in found and found[r"D = \mu V"].kind == "scan-like"
+    assert r"D = \mu V" not in {c.text for c in candidates(r"D = \nu w")}      # mutated: w/V is no confusion

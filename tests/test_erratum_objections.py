@@ -1,0 +1,16 @@
+"""Every erratum against its strongest objection (issue 31, item 1): in the sources whose errata have been
+defended, each erratum states the best case that the print is right and the answer to it."""
+from __future__ import annotations
+
+import pytest
+
+from symfloat import registry
+
+DEFENDED = ("metazentrum", "hasab", "graefe")   # sources whose every erratum has been held against its objection
+
+
+@pytest.mark.parametrize("source", DEFENDED)
+def test_every_erratum_of_a_defended_source_states_its_objection_and_answer(source):
+    errata = {f"{did}/{p.name}": p.erratum for did in registry.ids() if registry.manifest(did).source == source
+              for p in registry.statements(did).printed if p.erratum is not None}
+    assert errata and [f for f, e in errata.items() if not (e.objection and e.answer)] == []

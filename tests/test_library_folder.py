@@ -1,0 +1,74 @@
+"""A library of texts keeps to its own folder (issue 34, item 3): with SYMFLOAT_LIBRARY its records, notebooks
+and cache go under the library's folder, never into the project's checkout; its source may be in any language;
+its notebooks re-run from their own folder without the variable."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import nbformat
+from nbclient import NotebookClient
+
+from symfloat.engine.cache import ReportCache
+from symfloat.model import span
+from symfloat.project import in_outputs, project_root
+
+TUTORIAL = Path(__file__).resolve().parents[1] / "docs" / "tutorial"
+
+
+def test_default_outputs_go_under_the_library(tmp_path, monkeypatch):
+    monkeypatch.delenv("SYMFLOAT_CACHE", raising=False)
+    monkeypatch.setenv("SYMFLOAT_LIBRARY", str(tmp_path))
+    assert in_outputs("docs/errata.md") == tmp_path.resolve() / "docs" / "errata.md"
+    assert ReportCache().root == tmp_path.resolve() / ".symfloat-cache"
+    monkeypatch.delenv("SYMFLOAT_LIBRARY")
+    assert in_outputs("docs/errata.md") == project_root() / "docs" / "errata.md"     # without one: the checkout
+
+
+def test_claim_words_for_every_language_and_a_librarys_own(tmp_path, monkeypatch):
+    # the tutorial's source is English; German, Latin, Hungarian were the only lists (KeyError 'English')
+    assert span.is_quantitative("the segment floats stable for every height", "English")
+    assert not span.is_quantitative("the segment of a sphere", "English")
+    assert span.is_quantitative("il y a 0,25 de plus", "French")           # no list: its decimals count
+    assert not span.is_quantitative("le segment est stable ici", "French")
+    (tmp_path / "sources").mkdir()
+    (tmp_path / "sources" / "claim-words.json").write_text(json.dumps({"languages": {"French": "stable"}}))
+    monkeypatch.setenv("SYMFLOAT_LIBRARY", str(tmp_path))
+    span.claim_words.cache_clear()
+    try:
+        assert span.is_quantitative("le segment est stable ici", "French")
+    finally:
+        monkeypatch.delenv("SYMFLOAT_LIBRARY")
+        span.claim_words.cache_clear()
+
+
+def _symfloat(library, *argv, cwd):
+    env = {k: v for k, v in os.environ.items() if k != "SYMFLOAT_CACHE"}
+    env.update(SYMFLOAT_LIBRARY=str(library), SYMFLOAT_QUIET="1", SYMFLOAT_SLOWDOWN="1e9")
+    return subprocess.run([sys.executable, "-m", "symfloat", *argv], env=env, capture_output=True, text=True,
+                          check=False, cwd=cwd)
+
+
+def test_a_librarys_notebook_and_cache_stay_in_its_folder_and_rerun_there(tmp_path):
+    library = tmp_path / "library"
+    shutil.copytree(TUTORIAL, library)
+    checkout = project_root()
+    before = sorted(p.name for p in (checkout / "notebooks").iterdir())
+    out = _symfloat(library, "notebooks", "cap", cwd=tmp_path)
+    assert out.returncode == 0, out.stderr
+    written = library / "notebooks" / "cap-centroid.ipynb"
+    assert written.is_file() and (library / ".symfloat-cache").is_dir()
+    assert sorted(p.name for p in (checkout / "notebooks").iterdir()) == before       # nothing in the checkout
+    # re-run where it lies, without SYMFLOAT_LIBRARY: the notebook finds its library from its folder
+    nb = nbformat.read(written, as_version=4)
+    env_before = os.environ.pop("SYMFLOAT_LIBRARY", None)
+    try:
+        NotebookClient(nb, timeout=300, kernel_name="python3",
+                       resources={"metadata": {"path": str(written.parent)}}).execute()
+    finally:
+        if env_before is not None:
+            os.environ["SYMFLOAT_LIBRARY"] = env_before
+    errors = [o for c in nb.cells if c.cell_type == "code" for o in c.outputs if o.output_type == "error"]
+    assert errors == []
