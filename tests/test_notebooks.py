@@ -16,7 +16,7 @@ from nbclient.exceptions import CellExecutionError
 from symfloat.engine.identity import Domain
 from symfloat.registry import load
 from symfloat.report.notebook_cells import CellWriter
-from symfloat.report.notebook_code import small_point
+from symfloat.report.notebook_code import Code, bound_names, definitions_source, small_point
 from symfloat.report.notebook_view import NotebookView, correction_markdown, named
 from symfloat.report.notebooks import build_notebook, cell_id, execute_notebook
 
@@ -216,3 +216,74 @@ def test_nbconvert_writes_html_that_loads_nothing_from_the_network(s1_notebook, 
     assert "mathjax" not in page.lower()
     assert page.count("<math") >= sum(c.source.count("$$") // 2 for c in s1_notebook.cells if c.cell_type == "markdown")
     assert "<mfrac>" in page and "$$" not in page          # the steps' fractions typeset, no TeX left over
+
+
+def test_a_function_the_derivation_defines_is_defined_in_the_notebook_with_sympy_alone():
+    # Euler SS229-243 writes its Beta integrals as its own functions Ib, IY (derivations/euler_229_243/statements.py);
+    # the notebook's setup carries their definitions, so a cell that states Ib(...) runs with SymPy alone
+    from symfloat.derivations.euler_229_243.statements import IY, Ib
+    source = definitions_source({Ib, IY})
+    assert "import symfloat" not in source and "from symfloat" not in source
+    kernel: dict = {}
+    exec(source, kernel)                                   # noqa: S102 - the package's own source, as the kernel runs it
+    args = (1, sp.Rational(1, 2), 2, 3)
+    # int_0^3 y (1 - y^2/9)^(1/2) dy = 3 (by hand: u = 1 - y^2/9, 9/2 int_0^1 u^(1/2) du = 3)
+    assert abs(kernel["Ib"](*args).evalf(30) - 3) < sp.Float("1e-25")
+    assert kernel["Ib"](*args).evalf(30) == Ib(*args).evalf(30)
+    assert bound_names(source) >= {"Ib", "IY"}
+    code = Code({sp.Symbol("p", positive=True)}, defined={Ib})
+    assert code.source(Ib(sp.Symbol("p", positive=True), 1, 2, 3)) == "Ib(p, 1, 2, 3)"     # reads back as built
+
+
+def test_a_step_without_sympy_source_leaves_the_steps_needing_its_value_as_comments(s1_report, tmp_path, monkeypatch):
+    # Graefe S1: if step pyramid-over-g (V_1) had no SymPy source, the steps using V_1 cannot run in the kernel
+    # (its derived lacks V_1): they are comments that say so, and the notebook still runs to its end
+    real = CellWriter._step
+
+    def unstated(self, s):
+        if s.name == "pyramid-over-g":
+            raise ValueError("no source")
+        return real(self, s)
+    monkeypatch.setattr(CellWriter, "_step", unstated)
+    nb = build_notebook(S1, s1_report)
+    by_id = {c.id: c.source for c in nb.cells}
+    assert by_id[cell_id("step-check", "pyramid-over-g")].startswith("# no SymPy source reads back")
+    for name in ("pyramid-over-g-value", "volume"):                                # they use V_1 (step 11)
+        assert by_id[cell_id("step-check", name)].startswith("# this step needs the value of V_1 (step 11)")
+    # and the volume I (step 19), built on V_1, is missing in turn
+    assert by_id[cell_id("step-check", "volume-collected")].startswith("# this step needs the value of I_ (step 19)")
+    assert by_id[cell_id("step-check", "mid-sections")].startswith("chain = [")     # no V_1 in it: SymPy
+    execute_notebook(nb, tmp_path)
+
+
+def test_an_erratum_is_shown_in_its_apparatus(graefe_reports):
+    # the faults of the original and the corrections of the transcription are kept apart (issue 30, item 2):
+    # a transcription erratum says what the original very probably printed, a fault of the original its kind
+    seen = set()
+    for report in graefe_reports:
+        d, _ = load(report.id)
+        view = NotebookView(d, report)
+        errata = [f for f in report.formulas if f.erratum]
+        for f in errata:
+            text = view.formula_markdown(f.id.split("/", 1)[1])
+            transcription = f.erratum["kind"] == "transcription"
+            assert ("Correction of the transcription" in text) == transcription
+            assert (f"Fault of the original ({f.erratum['kind']}," in text) == (not transcription)
+            seen.add(f.erratum["kind"] == "transcription")
+        if errata:
+            n = sum(f.erratum["kind"] == "transcription" for f in errata)
+            assert (f"{len(errata)} erratum ({len(errata) - n} faults of the original, {n} corrections of the "
+                    f"transcription)") in view.summary_markdown()
+    assert seen == {True, False}              # Graefe has both (docs/errata.md: misprints and transcriptions)
+
+
+def test_a_cells_printing_is_one_piece_however_the_kernel_flushed_it():
+    # Scheeffer VI.C-F, step 9 printed "the difference, simplified by SymPy's simplify:" and " 0\n..." as two
+    # pieces in one run and as one in the next (a slow simplify): the notebook must not depend on that
+    from symfloat.report.notebooks import _coalesced
+    out = nbformat.v4.new_output
+    pieces = [out("stream", name="stdout", text="the difference, simplified:"), out("stream", name="stdout", text=" 0\n"),
+              out("stream", name="stderr", text="warning\n"), out("stream", name="stdout", text="at {a: 1} : [1, 1]\n")]
+    joined = _coalesced(pieces)
+    assert [(o.name, o.text) for o in joined] == [("stdout", "the difference, simplified: 0\n"),
+                                                   ("stderr", "warning\n"), ("stdout", "at {a: 1} : [1, 1]\n")]

@@ -7,7 +7,10 @@ small rational point inside the assumptions and, for a step that establishes a q
 its value in ``derived``.  A link the engine confirmed by sampling only is asserted at that point;
 a printed formula the engine refuted is shown at a small point where its members differ, both
 values printed, and its correction is checked like a step.  The notebook runs with SymPy alone:
-a changed member that no longer holds stops it with an ``AssertionError``.
+a changed member that no longer holds stops it with an ``AssertionError``.  A step whose expressions
+no SymPy source states (a function the derivation defines itself, as Euler's Beta integrals) gets a
+comment instead, and so does every later step and reading that needs its value: the kernel has no
+value for it, and the engine's check in the Markdown above stands.
 """
 from __future__ import annotations
 
@@ -19,8 +22,8 @@ import sympy as sp
 from ..engine.identity import Domain
 from ..model.claim import identical_links, members
 from ..model.relation import is_relation
-from .notebook_code import HELPERS, STRATEGY_WORDS, Code, agree, finite, functions_of, point_source, \
-    proof_source, small_point
+from .notebook_code import HELPERS, STRATEGY_WORDS, Code, agree, bound_names, defined_functions, \
+    definitions_source, finite, functions_of, point_source, proof_source, small_point
 
 __all__ = ["CellWriter"]
 
@@ -58,9 +61,19 @@ class CellWriter:
         exprs = _expressions(d)
         preferred = {s.result: s.name.replace("-", "_") for s in d.steps
                      if s.result is not None and not s.result.name.isidentifier()}
-        self.code = Code(_symbols(exprs) | set(d.domain), functions_of(exprs), preferred)
+        symbols, functions = _symbols(exprs) | set(d.domain), functions_of(exprs)
+        defined = defined_functions(exprs)
+        self.definitions = definitions_source(defined) if defined else ""
+        self.code = Code(symbols, functions, preferred, defined if self.definitions else ())
+        if self.definitions and bound_names(self.definitions) & (set(self.code.names.values())
+                                                                 | set(self.code.functions.values())):
+            self.definitions = None        # they would rebind a name of the notebook's: not stated
+        if not self.definitions:
+            self.code = Code(symbols, functions, preferred)
         self.domain = Domain(d.domain, tuple(d.constraints))
         self.derived: dict = {}
+        self.missing: dict = {}     # symbol -> the number of the step that established it without SymPy source
+        self.number = {st.name: i for i, st in enumerate(d.steps, 1)}
         self.calls: set = set()     # the SymPy functions the checks call
         self._values: dict = {}     # (value, point) -> the value at the point (:meth:`at`)
 
@@ -93,7 +106,9 @@ class CellWriter:
         used = sorted(self.code.used | self.calls | {"Symbol", "symbols", "Function", "MatrixBase", "evaluate",
                                                      "S", "N", "Rational"})
         names = textwrap.fill(", ".join(used), width=96, initial_indent="    ", subsequent_indent="    ")
-        return ("from sympy import (\n" + names + ",\n)\n\n"
+        own = ("# the functions the derivation defines itself, as its package defines them (SymPy only)\n"
+               + self.definitions + "\n\n") if self.definitions else ""
+        return ("from sympy import (\n" + names + ",\n)\n" + own + "\n"
                 + "# the symbols of the derivation, with the assumptions it states\n"
                 + self.code.declarations() + "\n\n" + HELPERS)
 
@@ -183,13 +198,47 @@ class CellWriter:
     # -- the cells ---------------------------------------------------------------------------------------------------
     def step(self, s) -> str:
         """The code of step *s* (the next one in order).  A step whose expressions have no SymPy source that
-        reads back (:meth:`Code.member`) gets a cell that says so; the notebook's ``derived`` then lacks its
-        value, so a later cell that needs it fails rather than passing unchecked."""
+        reads back (:meth:`Code.member`), or that needs the value of such a step, gets a comment that says so;
+        the notebook's ``derived`` lacks its value, and the later cells that need it are comments too."""
+        needs = self._needs_missing(members(s.claim))
+        if needs:
+            self._record(s, missing=True)
+            return f"# this step needs {needs}: the engine's check is above"
         try:
             return self._step(s)
-        except ValueError as exc:
-            self._record(s)
-            return f"# no SymPy source reads back as this step's expressions ({exc}); the engine's check is above"
+        except ValueError:
+            self._record(s, missing=True)
+            return f"# {self._unstated(members(s.claim), 'this step')}: the engine's check is above"
+
+    def _needs_missing(self, exprs) -> str:
+        """The values without SymPy source that *exprs* need (through the values established so far), in words,
+        or ``""``."""
+        found, seen = set(), set()
+        todo = [e for e in exprs if isinstance(e, (sp.Basic, sp.MatrixBase))]
+        while todo:
+            e = todo.pop()
+            for sym in _symbols([e]) - seen:
+                seen.add(sym)
+                if sym in self.missing:
+                    found.add(sym)
+                elif sym in self.derived:
+                    todo.append(self.derived[sym])
+        if not found:
+            return ""
+        ordered = sorted(found, key=lambda sym: self.missing[sym])
+        return "the value" + ("s" if len(found) > 1 else "") + " of " + ", ".join(
+            f"{self.code.names.get(sym, sym.name)} (step {self.missing[sym]})" for sym in ordered) \
+            + ", which plain SymPy does not state here"
+
+    @staticmethod
+    def _unstated(exprs, what: str) -> str:
+        """Why no SymPy source states *exprs*: the functions of the derivation's own they use, if any."""
+        own = sorted({type(a).__name__ for e in exprs if isinstance(e, (sp.Basic, sp.MatrixBase))
+                      for a in e.atoms(sp.Function) if not type(a).__module__.startswith("sympy")})
+        if own:
+            return (f"{what} uses {', '.join(own)}, defined by the derivation itself (not a function of SymPy's), "
+                    "so no plain SymPy states it")
+        return f"no SymPy source reads back as {what}'s expressions"
 
     def _step(self, s) -> str:
         rep = next(r for r in self.report.steps if r.name == s.name)
@@ -223,17 +272,25 @@ class CellWriter:
         self._record(s)
         return "\n".join(out)
 
-    def _record(self, s):
+    def _record(self, s, missing: bool = False):
         if s.result is not None:
             self.derived[s.result] = members(s.claim)[-1]
+            if missing:
+                self.missing[s.result] = self.number[s.name]
 
     def formula(self, p) -> str | None:
         """The code of printed formula *p*: its reading, the check of the print, the correction (a comment
         when its expressions have no SymPy source that reads back)."""
+        readings = [r for r in (p.reading, p.erratum.corrected_reading if p.erratum is not None else None)
+                    if r is not None]
+        exprs = [e for r in readings for e in (r.parts() if is_relation(r) else members(r))]
+        needs = self._needs_missing(exprs)
+        if needs:
+            return f"# this reading needs {needs}: the engine's check is above"
         try:
             return self._formula(p)
-        except ValueError as exc:
-            return f"# no SymPy source reads back as this reading ({exc}); the engine's check is above"
+        except ValueError:
+            return f"# {self._unstated(exprs, 'this reading')}: the engine's check is above"
 
     def _formula(self, p) -> str | None:
         f = next(f for f in self.report.formulas if f.id == self.d.formula_id(p))

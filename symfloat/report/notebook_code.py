@@ -11,7 +11,9 @@ notebook never shows code that states something else than what the engine checke
 """
 from __future__ import annotations
 
+import ast
 import functools
+import inspect
 import itertools
 import keyword
 import re
@@ -25,7 +27,7 @@ from sympy.printing.str import StrPrinter
 from ..engine.identity import AGREEMENT, DIGITS
 
 __all__ = ["SymPyCode", "Code", "HELPERS", "STRATEGY_WORDS", "proof_source", "small_point", "point_source", "agree",
-           "finite", "functions_of"]
+           "finite", "functions_of", "defined_functions", "definitions_source", "bound_names"]
 
 HELPERS = '''\
 derived = {}   # symbol -> the value a step established for it (its last member)
@@ -152,9 +154,10 @@ class Code:
     """Python names for the symbols and undefined functions of a derivation, and the SymPy source of its
     expressions in those names."""
 
-    def __init__(self, symbols, functions=(), preferred=None):
+    def __init__(self, symbols, functions=(), preferred=None, defined=()):
         preferred = preferred or {}
-        taken: set = set()
+        self.defined = {f.__name__: f for f in defined}     # the derivation's own function classes, by name
+        taken: set = set(self.defined)
         self.names: dict = {}
         ordered = sorted(symbols, key=lambda s: (s.name, str(s.assumptions0)))
         for s in ordered:                      # names that are identifiers already keep them
@@ -167,6 +170,7 @@ class Code:
         self.namespace = {k: getattr(sp, k) for k in dir(sp) if not k.startswith("_")}
         self.namespace.update({v: k for k, v in self.names.items()})
         self.namespace.update({v: k for k, v in self.functions.items()})
+        self.namespace.update(self.defined)
         self.used: set = set()
 
     def source(self, expr) -> str:
@@ -207,7 +211,7 @@ class Code:
         return True
 
     def _own(self) -> set:
-        return set(self.names.values()) | set(self.functions.values())
+        return set(self.names.values()) | set(self.functions.values()) | set(self.defined)
 
     def declarations(self) -> str:
         """The cell that declares every symbol by name, with the assumptions the derivation gave it."""
@@ -261,6 +265,80 @@ class _Tree(ReprPrinter):
         if isinstance(expr, AppliedUndef) and expr.func in self.names:
             return f"{self.names[expr.func]}({', '.join(self._print(a) for a in expr.args)})"
         return super()._print_Function(expr)
+
+
+def defined_functions(exprs) -> set:
+    """The function classes of the derivation's own (a SymPy ``Function`` subclass defined outside SymPy,
+    as Euler's Beta integral ``Ib``) the expressions apply."""
+    out = set()
+    for e in exprs:
+        if isinstance(e, (sp.Basic, sp.MatrixBase)):
+            out |= {type(a) for a in e.atoms(sp.Function)
+                    if not isinstance(a, AppliedUndef) and not type(a).__module__.startswith("sympy.")}
+    return out
+
+
+def _free_names(node) -> set:
+    """The names *node* reads that it does not bind itself (its arguments and assignments are its own)."""
+    if isinstance(node, ast.Assign):
+        return {n.id for n in ast.walk(node.value) if isinstance(n, ast.Name)}
+    read = {n.id for n in ast.walk(node) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)}
+    bound = {n.id for n in ast.walk(node) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)}
+    bound |= {a.arg for n in ast.walk(node) if isinstance(n, ast.arguments)
+              for a in (*n.posonlyargs, *n.args, *n.kwonlyargs, n.vararg, n.kwarg) if a is not None}
+    return read - bound
+
+
+def bound_names(source: str) -> set:
+    """The names the top-level statements of *source* bind."""
+    out = set()
+    for node in ast.parse(source).body:
+        if isinstance(node, (ast.Import, ast.ImportFrom)):
+            out |= {a.asname or a.name.split(".")[0] for a in node.names}
+        elif isinstance(node, (ast.FunctionDef, ast.ClassDef)):
+            out.add(node.name)
+        elif isinstance(node, ast.Assign):
+            out |= {n.id for t in node.targets for n in ast.walk(t) if isinstance(n, ast.Name)}
+    return out
+
+
+def definitions_source(classes) -> str | None:
+    """The source that defines *classes* in a notebook: the statements of their modules they need (SymPy
+    imports, functions, classes, assignments), followed name by name and kept in the modules' order;
+    ``None`` when they need an import from anything but SymPy."""
+    chosen = {}
+    for module in sorted({inspect.getmodule(c) for c in classes}, key=lambda m: m.__name__):
+        text = inspect.getsource(module)
+        body = ast.parse(text).body
+        defines = {}
+        for node in body:
+            if isinstance(node, (ast.Import, ast.ImportFrom)):
+                for alias in node.names:
+                    defines[alias.asname or alias.name.split(".")[0]] = node
+            elif isinstance(node, (ast.FunctionDef, ast.ClassDef)):
+                defines[node.name] = node
+            elif isinstance(node, ast.Assign):
+                for target in node.targets:
+                    for n in ast.walk(target):
+                        if isinstance(n, ast.Name):
+                            defines[n.id] = node
+        todo = [c.__name__ for c in classes if inspect.getmodule(c) is module]
+        seen = set()
+        while todo:
+            name = todo.pop()
+            if name in seen or name not in defines:
+                continue
+            seen.add(name)
+            node = defines[name]
+            if isinstance(node, (ast.Import, ast.ImportFrom)):
+                root = node.module if isinstance(node, ast.ImportFrom) else node.names[0].name
+                if (root or "").split(".")[0] != "sympy":
+                    return None
+            chosen[(module.__name__, node.lineno)] = ast.get_source_segment(text, node)
+            todo += sorted(_free_names(node))
+    imports = [src for _, src in sorted(chosen.items()) if src.startswith(("import ", "from "))]
+    rest = [src for _, src in sorted(chosen.items()) if not src.startswith(("import ", "from "))]
+    return "\n".join(imports) + "\n\n\n" + "\n\n\n".join(rest) + "\n"
 
 
 def functions_of(exprs) -> set:

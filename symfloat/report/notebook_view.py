@@ -16,6 +16,7 @@ import re
 import sympy as sp
 
 from ..model.claim import expressions, members
+from ..model.erratum import APPARATUS, apparatus
 from ..model.relation import is_relation, relation_latex
 from ..model.symbol_names import latex
 from ..registry import load
@@ -304,10 +305,13 @@ class NotebookView:
         verdicts = {}
         for f in self.report.formulas:
             verdicts[f.verdict] = verdicts.get(f.verdict, 0) + 1
+        kinds = [apparatus(f.erratum["kind"]) for f in self.report.formulas if f.erratum]
+        apart = ", ".join(f"{kinds.count(a)} {title}" for a, (title, _) in APPARATUS.items())
         order = ("verified", "erratum", "unverifiable", "trivial")
         return (f"{len(self.report.steps)} steps: " + ", ".join(f"{n} {k}" for k, n in sorted(steps.items()))
                 + f".\n\n{len(self.report.formulas)} printed formulas: "
-                + ", ".join(f"{verdicts.get(v, 0)} {v}" for v in order) + ".")
+                + ", ".join(f"{verdicts.get(v, 0)} {v}" + (f" ({apart})" if v == "erratum" and kinds else "")
+                            for v in order) + ".")
 
     def _witnesses(self, target: str) -> str:
         """What the first-principles witnesses of *target* compute, in the derivation's words."""
@@ -335,8 +339,10 @@ class NotebookView:
         if f.erratum:
             e = f.erratum
             why = self.derivation.get_printed(name).erratum.evidence
-            out.append(f"Erratum ({e['kind']}, confidence {e['confidence']}). Corrected:\n\n"
-                       f"{correction_markdown(e['kind'], e['corrected'])}\n\n{why}")
+            head = (f"Correction of the transcription (confidence {e['confidence']}); the original very probably "
+                    f"printed:" if apparatus(e["kind"]) == "transcription"
+                    else f"Fault of the original ({e['kind']}, confidence {e['confidence']}). Corrected:")
+            out.append(f"{head}\n\n{correction_markdown(e['kind'], e['corrected'])}\n\n{why}")
         what = self._witnesses(name) or ("the derivation's definitions evaluated at concrete values (no declared "
                                          "witness measures this formula)")
         out += _records(f"Witnesses against the printed formula — {what}:", f.numeric)

@@ -73,6 +73,14 @@ Change a member and run the cells again: a step that no longer holds stops with 
 its cell shows a point where its members differ and checks the correction instead."""
 
 
+def _work(derivation_id: str) -> str:
+    """A derivation this one builds on, as a reader finds it: its title, the work and the place in it
+    (Euler's §§192-219 build on results derived for Scheeffer's VI.C-F)."""
+    d = load(derivation_id)[0]
+    src = get_source(d.source)
+    return f"*{d.title}* ({src.author}{', ' + str(src.year) if src.year else ''}, {d.locator})"
+
+
 def build_notebook(derivation_id: str, report=None) -> nbformat.NotebookNode:
     """The unexecuted notebook of one derivation; *report* is the engine's report on it (by default
     :func:`~symfloat.engine.runner.verify` gives it, from the cache when the derivation is unchanged).
@@ -114,7 +122,7 @@ def build_notebook(derivation_id: str, report=None) -> nbformat.NotebookNode:
         (cell_id("title"), md(
             f"# {d.title}\n\n{src.author}, *{src.title}*{', ' + str(src.year) if src.year else ''} — "
             f"{d.locator}.\n\n{typeset(d.summary)}\n\n"
-            + (f"Building on {', '.join(f'*{load(r)[0].title}*' for r in d.requires)}.\n\n" if d.requires else "")
+            + (f"Building on {', '.join(_work(r) for r in d.requires)}.\n\n" if d.requires else "")
             + f"Checked by `symfloat verify {d.id}`.\n\n**Assumptions**\n\n"
             + "\n".join(f"- {typeset(a)}" for a in d.assumptions))),
         *([(cell_id("about"), md("## About this section\n\n" + typeset(about)))] if about else []),
@@ -153,7 +161,23 @@ def execute_notebook(nb, cwd: str | os.PathLike) -> nbformat.NotebookNode:
     # failing cell raises CellExecutionError with its traceback regardless.
     client.execute(stderr=subprocess.DEVNULL)
     nb.metadata.pop("language_info", None)   # the kernel's Python version: machine, not mathematics
+    for cell in nb.cells:
+        if cell.cell_type == "code":
+            cell.outputs = _coalesced(cell.outputs)
     return nb
+
+
+def _coalesced(outputs) -> list:
+    """*outputs* with consecutive pieces of one stream joined: the kernel sends a cell's printing in as
+    many pieces as it happened to flush (a slow step's line comes in two), which is the clock's, not the
+    notebook's."""
+    out = []
+    for o in outputs:
+        if out and o.output_type == "stream" and out[-1].output_type == "stream" and out[-1].name == o.name:
+            out[-1].text += o.text
+        else:
+            out.append(o)
+    return out
 
 
 def notebook_stamp(derivation_id: str, keys: dict) -> str:
