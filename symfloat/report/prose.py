@@ -13,6 +13,8 @@ relation sign stays text (``a`` is an article, ``(i)`` a label).
 'stable iff $T_{1}^{1} > T_{1}$'
 >>> typeset("a solution of the equation")
 'a solution of the equation'
+>>> typeset("the regular n-gon F_1 r^2 (2 + cos 2pi/n)/12")
+'the regular n-gon $F_{1} r^{2} (2 + \\\\cos 2\\\\pi/n)/12$'
 """
 from __future__ import annotations
 
@@ -33,6 +35,7 @@ _SUPER = {"²": "2", "³": "3", "⁴": "4", "¹": "1", "⁰": "0", "⁵": "5", "
 
 _TOKEN = re.compile(r"""
     (?P<space>[ ]+)
+  | (?P<compound>\b[A-Za-z]-(?!(?:sin|cos|tan|cot|log|exp|sqrt)\b)[a-z]{3,}\b)        # n-gon, x-axis: a word
   | (?P<name>[A-Za-z][A-Za-z0-9]*(?:_\{?[A-Za-z0-9]+\}?|\^\{?[A-Za-z0-9*]+\}?)+'?)   # T_1^1, u_m', s^*
   | (?P<word>[A-Za-z][A-Za-z]*'?(?:s\b)?)
   | (?P<index>[_^]\{?[A-Za-z0-9*]+\}?)                                              # ∫_0^b, s^*
