@@ -287,3 +287,14 @@ def test_a_cells_printing_is_one_piece_however_the_kernel_flushed_it():
     joined = _coalesced(pieces)
     assert [(o.name, o.text) for o in joined] == [("stdout", "the difference, simplified: 0\n"),
                                                    ("stderr", "warning\n"), ("stdout", "at {a: 1} : [1, 1]\n")]
+
+
+def test_the_declarations_run_and_give_every_symbol_ten_to_a_line():
+    # Scheeffer VI.C-F declared 38 symbols in one line of some 400 characters, past the cell's width
+    syms = {sp.Symbol(f"A_{i}") for i in range(21)} | {sp.Symbol("b", positive=True)}
+    code = Code(syms)
+    text = code.declarations()
+    assert [len(line.split(" = ")[0].split(", ")) for line in text.splitlines()] == [1, 10, 10, 1]   # b; the 21 A_i
+    kernel: dict = {}
+    exec("from sympy import Symbol, symbols\n" + text, kernel)            # noqa: S102 - code printed here
+    assert all(kernel[code.names[s]] == s for s in syms)                  # a single symbol too (not 'b, = ...')

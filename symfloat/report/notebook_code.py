@@ -224,10 +224,13 @@ class Code:
             else:
                 single.append((s, n, given))
         lines = []
-        for given, syms in sorted(groups.items(), key=lambda g: str(g[0])):
+        for given, group in sorted(groups.items(), key=lambda g: str(g[0])):
             kw = "".join(f", {k}={v}" for k, v in given)
-            names = ", ".join(self.names[s] for s in syms)
-            lines.append(f"{names}{',' if len(syms) == 1 else ''} = symbols({' '.join(s.name for s in syms)!r}{kw})")
+            for i in range(0, len(group), 10):              # ten to a line: a line the cell shows whole
+                syms = group[i:i + 10]
+                names = ", ".join(self.names[s] for s in syms)
+                lines.append(f"{names} = Symbol({syms[0].name!r}{kw})" if len(syms) == 1 else
+                             f"{names} = symbols({' '.join(s.name for s in syms)!r}{kw})")
         for s, n, given in single:
             kw = "".join(f", {k}={v}" for k, v in given.items())
             lines.append(f"{n} = Symbol({s.name!r}{kw})")
