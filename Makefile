@@ -14,6 +14,7 @@ $(STAMP): pyproject.toml setup.py
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	@echo "make: pip is installing sympy, mpmath, numpy, matplotlib, nbclient and the test tools ..."
 	$(BIN)/python -m pip install --quiet -e '.[test]'
+	$(BIN)/python -c "from symfloat.report.notebook_html import install; install()"
 	touch $(STAMP)
 	@echo "make: $(VENV) is ready"
 

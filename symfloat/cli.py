@@ -100,7 +100,7 @@ def _cache(args) -> ReportCache:
 
 
 def _kernels_share(cache: ReportCache) -> None:
-    """Point the notebook kernels (separate processes) at the command's cache."""
+    """Point the processes that build the notebooks at the command's cache."""
     if cache.enabled:
         os.environ["SYMFLOAT_CACHE"] = str(cache.root.resolve())
 

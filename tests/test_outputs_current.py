@@ -81,7 +81,7 @@ def test_notebooks_are_stamped_with_their_present_inputs(all_reports):
         committed = ROOT / "notebooks" / f"{did}.ipynb"
         assert committed.exists(), f"notebooks/{did}.ipynb is missing: run `make run`"
         assert recorded_stamp(committed) == notebook_stamp(did, keys), f"notebooks/{did}.ipynb is stale"
-        built = build_notebook(did)
+        built = build_notebook(did, next(r for r in all_reports if r.id == did))
         assert [(c.id, c.cell_type, c.source) for c in nbformat.read(committed, as_version=4).cells] == \
             [(c.id, c.cell_type, c.source) for c in built.cells], f"notebooks/{did}.ipynb is stale"
     assert sorted(p.stem for p in (ROOT / "notebooks").glob("*.ipynb")) == sorted(ids)

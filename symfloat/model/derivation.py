@@ -201,7 +201,7 @@ class Derivation:
         first = self.step(name, Eq(result, chosen), "definition", uses=uses, result=result,
                           note=note or f"a solution of {equation} for {unknown} (sympy.solve)")
         self.step(f"{name}-check", (sp.Subs(equation.lhs - equation.rhs, unknown, result), 0), "algebra",
-                  uses=(name,), note=f"the solution of {name!r} put back into its equation")
+                  uses=(name,), note="the solution of the step before put back into its equation")
         return first
 
     def quote(self, name, locator, excerpt, reading=None, erratum=None, unreadable="", lost="", note="",

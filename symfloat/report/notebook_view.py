@@ -1,26 +1,30 @@
-"""What the derivation notebooks display: steps, printed formulas, witnesses.
+"""What the derivation notebooks say in words and typeset mathematics.
 
-Two kinds of content.  The mathematics of a derivation — its named helper
-expressions, each step's statement and its chain of expressions, each printed
-formula's reading — is rendered from the derivation module when the notebook is
-built (:func:`definitions_markdown`, :func:`step_markdown`,
-:func:`reading_markdown`).  The engine's findings — how each step was justified,
-each verdict, the witness tables — are shown by a :class:`NotebookView` when the
-notebook runs.  No timing is displayed: times go to the verification record and
-the benchmark, so a regenerated notebook changes only when mathematics changes.
+The mathematics of a derivation — its named helper expressions, each step's title, statement and
+chain of expressions, each printed formula's quotation and reading — is rendered from the
+derivation module (:func:`definitions_markdown`, :func:`step_markdown`, :func:`reading_markdown`);
+the engine's findings on it — how each step was justified, each verdict, the erratum, the witness
+tables — from its report (:class:`NotebookView`), when the notebook is built.  The code cells
+(:mod:`symfloat.report.notebook_cells`) state and check the same steps in SymPy.  No timing is
+displayed: times go to the verification record and the benchmark, so a regenerated notebook
+changes only when mathematics changes.
 """
 from __future__ import annotations
 
+import re
+
 import sympy as sp
 
-from ..engine.runner import verify
 from ..model.claim import expressions, members
+from ..model.erratum import APPARATUS, apparatus
 from ..model.relation import is_relation, relation_latex
 from ..model.symbol_names import latex
 from ..registry import load
+from .notebook_code import STRATEGY_WORDS
+from .prose import typeset
 
-__all__ = ["NotebookView", "definitions_markdown", "step_markdown", "reading_markdown", "correction_markdown",
-           "named", "chain_latex", "show"]
+__all__ = ["NotebookView", "definitions_markdown", "step_markdown", "step_title", "step_titles", "reading_markdown",
+           "correction_markdown", "named", "chain_latex"]
 
 JUSTIFICATION = {
     "definition": "definition (stated, not checked)",
@@ -61,15 +65,20 @@ def _latex(d, expr) -> str:
     return latex(expr, order="none") if _as_printed(expr) else latex(expr)
 
 
-def chain_latex(d, claim) -> str:
-    """The chain ``a = b = c`` of a claim, one member per line when long, in the derivation's names
-    (a relation, :mod:`symfloat.model.relation`, on one line)."""
+def chain_latex(d, claim, split: bool = True) -> str:
+    """The chain ``a = b = c`` of a claim in the derivation's names, a member the same as the one before it
+    shown once (no ``5/2 = 5/2``), one member per line when long and *split* (a relation,
+    :mod:`symfloat.model.relation`, on one line)."""
     if is_relation(claim):
         return "$$ " + relation_latex(claim, lambda e: _latex(d, e)) + " $$"
-    ms = [_latex(d, m) for m in members(claim)]
-    if sum(len(m) for m in ms) < 90:
+    ms = []
+    for m in members(claim):
+        text = _latex(d, m)
+        if not ms or text != ms[-1]:
+            ms.append(text)
+    if sum(len(m) for m in ms) < 90 or not split:
         return "$$ " + " = ".join(ms) + " $$"
-    return "$$ \\begin{aligned} " + ms[0] + " &= " + " \\\\ &= ".join(ms[1:]) + " \\end{aligned} $$"
+    return "\n\n".join([f"$$ {ms[0]} $$"] + [f"$$ = {m} $$" for m in ms[1:]])
 
 
 def definitions_markdown(d) -> str:
@@ -89,30 +98,112 @@ def _quoted(text: str) -> str:
     return "\n".join("> " + line if line.strip() else ">" for line in text.splitlines())
 
 
-def step_markdown(d, index: int, step) -> str:
-    """A step's heading, its statement in the source's words and its chain of expressions."""
-    head = f"### Step {index}: {step.name}\n\n*{JUSTIFICATION[step.why]}*"
+def _capital(text: str) -> str:
+    """*text* with a capital first letter, unless it begins with a symbol (``k is the normal``) or a formula."""
+    if re.match(r"[a-z]\b", text) or text.startswith("$"):
+        return text
+    return text[0].upper() + text[1:]
+
+
+def _sentence(text: str) -> str:
+    text = typeset(text.strip())
+    return _capital(text) + ("" if text.endswith((".", "?", "!")) else ".")
+
+
+def step_title(d, step) -> str:
+    """A step's title in words: the first phrase of its note, else what it establishes, else the printed
+    formula it derives, else what it does to its first member.
+
+    The note, typeset, ends at the first ``;``, ``:``, comma or bracket outside its formulas and brackets
+    (not a locator's bracket, "in (12)") that leaves at least three words; a longer phrase is cut at a space
+    outside its formulas before 70 characters."""
+    if step.note:
+        note = typeset(step.note.strip())
+        outside = _outside_formulas(note)
+        cuts = [m.start() for m in re.finditer(r"[;:]\s|\s\((?![\d§])|,\s", note)
+                if outside[m.start()] and len(note[:m.start()].split()) >= 3
+                and note[:m.start()].count("(") == note[:m.start()].count(")")]
+        phrase = note[:cuts[0]] if cuts else note
+        if len(phrase) > 70:
+            spaces = [i for i, ch in enumerate(phrase[:70]) if ch == " " and outside[i]]
+            phrase = phrase[:spaces[-1]] + " …" if spaces else phrase
+        return _capital(phrase)
+    quoted = [p for p in d.printed if p.name == step.name]
+    if quoted:
+        return f"The printed formula {quoted[0].locator}"
+    what = {"definition": "Definition", "algebra": "Algebra", "substitution": "Substitution",
+            "integration": "Integration", "geometry": "Geometry", "lemma": "A lemma", "limit": "A limit",
+            "series": "A series"}[step.why]
+    if step.result is not None:
+        return f"{what}: the value of ${latex(step.result)}$"
+    first = _latex(d, members(step.claim)[0])
+    return f"{what} for ${first}$" if len(first) < 60 else what
+
+
+def _outside_formulas(text: str) -> list[bool]:
+    """For each character of *text*: is it outside the ``$…$`` formulas?"""
+    out, inside = [], False
+    for ch in text:
+        if ch == "$":
+            inside = not inside
+            out.append(False)
+        else:
+            out.append(not inside)
+    return out
+
+
+def step_titles(d) -> dict:
+    """Step name -> its title (:func:`step_title`); a title two steps share names what each establishes
+    (or its number) after it."""
+    titles = {s.name: step_title(d, s) for s in d.steps}
+    count: dict = {}
+    for t in titles.values():
+        count[t] = count.get(t, 0) + 1
+    for i, s in enumerate(d.steps, 1):
+        if count[titles[s.name]] > 1:
+            titles[s.name] += f": ${latex(s.result)}$" if s.result is not None else f" (step {i})"
+    return titles
+
+
+def _uses(d, step) -> str:
+    """The steps a step uses, by number (an earlier derivation's by its title)."""
+    index = {s.name: i for i, s in enumerate(d.steps, 1)}
+    own = [index[u] for u in step.uses if ":" not in u]
+    other = sorted({u.split(":", 1)[0] for u in step.uses if ":" in u})
+    parts = []
+    if own:
+        parts.append(("step " if len(own) == 1 else "steps ") + ", ".join(str(i) for i in own))
+    if other:
+        parts.append(", ".join(f"*{load(o)[0].title}* ({load(o)[0].locator})" for o in other))
+    return " and ".join(parts)
+
+
+def step_markdown(d, index: int, step, findings: str = "", title: str = "") -> str:
+    """A step's heading in words (*title*, by default :func:`step_title`), its statement in the source's
+    words and its chain of expressions, then what the engine found (*findings*)."""
+    head = f"### Step {index}: {title or step_title(d, step)}\n\n*{JUSTIFICATION[step.why]}*"
     if step.uses:
-        head += " — uses " + ", ".join(f"`{u}`" for u in step.uses)
+        head += " — uses " + _uses(d, step)
     out = [head]
     quotes = [p for p in d.printed if p.name == step.name]
     for p in quotes:
-        fault = (f" (as transcribed; the printed formula `{p.name}` below has its erratum)"
+        fault = (f" (as transcribed; the printed formula {p.locator} below has its erratum)"
                  if p.erratum is not None else "")
         out.append(f"The source ({p.locator}){fault}:\n\n{_quoted(p.excerpt)}")
     if step.note:
-        out.append(f"In our words ({d.locator}): {step.note[0].upper() + step.note[1:]}"
-                   + ("" if step.note.rstrip().endswith(".") else "."))
+        out.append(f"In our words ({d.locator}): {_sentence(step.note)}")
     out.append(("Definition:" if step.why == "definition" else "Before and after:") + "\n\n"
                + chain_latex(d, step.claim))
     if step.result is not None:
         out.append(f"This establishes ${latex(step.result)}$, used in later steps and readings.")
+    if findings:
+        out.append(findings)
     return "\n\n".join(out)
 
 
 def _derived_symbols(d, claims) -> str:
     """Which symbols of *claims* stand for values the steps derived, and where."""
-    where = {s.result: (i, s.name) for i, s in enumerate(d.steps, 1) if s.result is not None}
+    where = {s.result: i for i, s in enumerate(d.steps, 1) if s.result is not None}
     found = {}
     for claim in claims:
         for m in expressions(claim):
@@ -122,26 +213,37 @@ def _derived_symbols(d, claims) -> str:
     if not found:
         return ""
     return ("Compared with the derivation: " + "; ".join(
-        f"${latex(sym)}$ is the value of step {i} (`{name}`)" for sym, (i, name) in found.items()) + ".")
+        f"${latex(sym)}$ is the value established in step {i}" for sym, i in found.items()) + ".")
 
 
-def reading_markdown(d, p) -> str:
-    """A printed formula: locator, the verbatim quotation and its reading as printed."""
-    out = [f"### {p.locator}: `{p.name}`", _quoted(p.excerpt)]
+def reading_markdown(d, p, findings: str = "") -> str:
+    """A printed formula: its locator as heading (numbered when several share it), the verbatim quotation,
+    its reading as printed and the correction's, then what the engine found (*findings*)."""
+    same = [q for q in d.printed if q.locator == p.locator]
+    head = f"### {p.locator}" + (f", formula {same.index(p) + 1} of {len(same)}" if len(same) > 1 else "")
+    derived_by = [s for s in d.steps if s.name == p.name and s.note]
+    first = _latex(d, members(p.reading)[0]) if p.reading is not None and not is_relation(p.reading) else ""
+    if derived_by:
+        head += f": {step_title(d, derived_by[0])[0].lower()}{step_title(d, derived_by[0])[1:]}"
+    elif first and len(first) < 40:
+        head += f": ${first}$"                     # what the formula gives, when the quotation is long to read
+    out = [head, _quoted(p.excerpt)]
     if p.lost:
         out.append(f"Text lost in the transcription: {p.lost}")
     if p.unreadable:
         out.append(f"Not readable as printed: {p.unreadable}")
     if p.reading is not None:
-        out.append("Read as printed:\n\n" + chain_latex(d, p.reading))
+        out.append("Read as printed:\n\n" + chain_latex(d, p.reading, split=False))
     corrected = p.erratum.corrected_reading if p.erratum is not None else None
     if corrected is not None:
-        out.append("The correction, read:\n\n" + chain_latex(d, corrected))
+        out.append("The correction, read:\n\n" + chain_latex(d, corrected, split=False))
     derived = _derived_symbols(d, [c for c in (p.reading, corrected) if c is not None])
     if derived:
         out.append(derived)
     if p.note:
-        out.append(f"Note: {p.note}")
+        out.append(f"Note: {_sentence(p.note)}")
+    if findings:
+        out.append(findings)
     return "\n\n".join(out)
 
 
@@ -152,7 +254,7 @@ def correction_markdown(kind: str, corrected: str) -> str:
     return corrected if prose else f"$$ {corrected} $$"
 
 
-# ---- the engine's findings, shown when the notebook runs ----------------------------------------------------------
+# ---- the engine's findings, from its report ----------------------------------------------------------------------
 def _how(identity: dict | None, status: str) -> str:
     if status == "definition":
         return "stated as a definition: not checked"
@@ -165,16 +267,15 @@ def _how(identity: dict | None, status: str) -> str:
     kind = "exact rational" if identity.get("exact", True) else "60-digit"
     sampled = f"equal at {points} random {kind} points of the assumptions"
     if status == "proved":
-        return f"proved symbolically (strategy `{identity.get('strategy')}`), after being {sampled}"
+        strategy = identity.get("strategy")
+        return (f"proved symbolically, the difference {STRATEGY_WORDS.get(strategy, strategy)} to 0 (strategy "
+                f"*{strategy}* of its proof certificate, the call in the cell below), after being {sampled}")
     if status == "sampled":
-        return f"{sampled}; no symbolic proof"
+        return f"{sampled}; no symbolic proof (the cell below asserts it at a small point)"
     if status == "agrees":
         return "agrees with the computed value to the printed precision"
     if status == "refuted":
-        cx = identity.get("counterexample") or {}
-        point = ", ".join(f"{k} = {v}" for k, v in cx.get("point", {}).items())
-        return (f"**refuted**: at {point or 'the printed numbers'} the left member gives {cx.get('lhs')}, "
-                f"the right {cx.get('rhs')}")
+        return "**refuted**: the cell below shows a point inside the assumptions where its members differ"
     return f"undecided: {sampled}, no symbolic proof found"
 
 
@@ -188,26 +289,14 @@ def _records(title, records) -> list[str]:
     return [title, "\n".join(rows)]
 
 
-def show(markdown: str):
-    """Display Markdown in a notebook (plain text elsewhere)."""
-    try:
-        from IPython.display import Markdown, display
-    except ImportError:  # pragma: no cover - outside IPython
-        print(markdown)
-        return
-    display(Markdown(markdown))
-
-
 class NotebookView:
-    """The engine's findings on one derivation module, for its notebook.
+    """The engine's *report* (:class:`~symfloat.engine.check.DerivationReport`) on the derivation *d*, in
+    words, for its notebook."""
 
-    The report comes from :func:`symfloat.engine.runner.verify` (the derivation
-    and its ancestors checked, or read from the cache when unchanged)."""
-
-    def __init__(self, module, report=None):
-        self.derivation = load(module.DERIVATION.id)[0]        # with its witnesses declared
-        self.report = report or next(r for r in verify(self.derivation.id) if r.id == self.derivation.id)
-        self.failures = self.report.failures
+    def __init__(self, d, report):
+        self.derivation = d
+        self.report = report
+        self.failures = report.failures
 
     def summary_markdown(self) -> str:
         steps = {}
@@ -216,10 +305,13 @@ class NotebookView:
         verdicts = {}
         for f in self.report.formulas:
             verdicts[f.verdict] = verdicts.get(f.verdict, 0) + 1
+        kinds = [apparatus(f.erratum["kind"]) for f in self.report.formulas if f.erratum]
+        apart = ", ".join(f"{kinds.count(a)} {title}" for a, (title, _) in APPARATUS.items())
         order = ("verified", "erratum", "unverifiable", "trivial")
         return (f"{len(self.report.steps)} steps: " + ", ".join(f"{n} {k}" for k, n in sorted(steps.items()))
                 + f".\n\n{len(self.report.formulas)} printed formulas: "
-                + ", ".join(f"{verdicts.get(v, 0)} {v}" for v in order) + ".")
+                + ", ".join(f"{verdicts.get(v, 0)} {v}" + (f" ({apart})" if v == "erratum" and kinds else "")
+                            for v in order) + ".")
 
     def _witnesses(self, target: str) -> str:
         """What the first-principles witnesses of *target* compute, in the derivation's words."""
@@ -232,7 +324,9 @@ class NotebookView:
         out = [f"Justification: {_how(s.identity, s.status)}."]
         for f in self.report.formulas:
             if f.id.endswith("/" + name):
-                out += _records(f"Witnesses of the printed formula `{name}` — {self._witnesses(name)}:", f.numeric)
+                p = self.derivation.get_printed(name)
+                out += _records(f"Witnesses of the printed formula {p.locator} — {self._witnesses(name)}:",
+                                f.numeric)
         return "\n\n".join(out)
 
     def formula_markdown(self, name: str) -> str:
@@ -244,18 +338,14 @@ class NotebookView:
             out.append(f"Reason: {f.reason}")
         if f.erratum:
             e = f.erratum
-            out.append(f"Erratum ({e['kind']}, confidence {e['confidence']}). Corrected:\n\n"
-                       f"{correction_markdown(e['kind'], e['corrected'])}\n\n{e['evidence']}")
-        out += _records(f"Witnesses against the printed formula — {self._witnesses(name)}:", f.numeric)
-        out += _records(f"Witnesses against the correction — {self._witnesses(name)}:", f.corrected_numeric)
+            why = self.derivation.get_printed(name).erratum.evidence
+            head = (f"Correction of the transcription (confidence {e['confidence']}); the original very probably "
+                    f"printed:" if apparatus(e["kind"]) == "transcription"
+                    else f"Fault of the original ({e['kind']}, confidence {e['confidence']}). Corrected:")
+            out.append(f"{head}\n\n{correction_markdown(e['kind'], e['corrected'])}\n\n{why}")
+        what = self._witnesses(name) or ("the derivation's definitions evaluated at concrete values (no declared "
+                                         "witness measures this formula)")
+        out += _records(f"Witnesses against the printed formula — {what}:", f.numeric)
+        out += _records(f"Witnesses against the correction — {what}:", f.corrected_numeric)
         out += [f"> {n}" for n in f.witness_notes]
         return "\n\n".join(out)
-
-    def summary(self):
-        show(self.summary_markdown())
-
-    def step(self, name: str):
-        show(self.step_markdown(name))
-
-    def formula(self, name: str):
-        show(self.formula_markdown(name))

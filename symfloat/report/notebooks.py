@@ -1,11 +1,14 @@
 """Building and executing the derivation notebooks.
 
-One notebook per derivation module, built with nbformat and executed with
-nbclient.  The mathematics (names, steps, quotations, readings) is written
-into Markdown cells from the derivation module when the notebook is built; the
-code cells import the module and show what the engine found.  Cell ids derive
-from what a cell shows (step or formula name), so an unchanged derivation
-regenerates an identical notebook and a new step changes only its own cells;
+One notebook per derivation, built with nbformat and executed with nbclient.  A notebook is
+plain SymPy a reader can change and run again: its first code cell declares the derivation's
+symbols, and each step and printed formula is a Markdown cell (title in words, the source's
+quotation, the explanation, the chain typeset, what the engine found) above a code cell that
+states it in SymPy and checks it (:mod:`symfloat.report.notebook_cells`); a check that no longer
+holds stops the notebook.  The derivation is read through :func:`symfloat.registry.load` and the
+engine's report through :func:`symfloat.engine.runner.verify` when the notebook is built; the
+kernel imports SymPy only.  Cell ids derive from what a cell shows (step or formula name), so an
+unchanged derivation regenerates an identical notebook and a new step changes only its own cells;
 no output carries a timing.
 """
 from __future__ import annotations
@@ -24,13 +27,15 @@ from nbclient import NotebookClient
 from nbclient.exceptions import CellExecutionError, DeadKernelError
 from traitlets.config import Config
 
+from ..engine.runner import verify
 from ..errors import CheckFailed, EnvironmentProblem
+from ..files import write_if_changed
 from ..leftovers import sweep_orphans
 from ..model.source import get_source
-from ..project import library_folders
 from ..registry import load
-from ..files import write_if_changed
-from .notebook_view import definitions_markdown, reading_markdown, step_markdown
+from .notebook_cells import CellWriter
+from .notebook_view import NotebookView, definitions_markdown, reading_markdown, step_markdown, step_titles
+from .prose import typeset
 from .stamp import digest
 
 __all__ = ["build_notebook", "execute_notebook", "kernel_files", "write_notebooks", "notebook_stamp", "recorded_stamp"]
@@ -49,56 +54,83 @@ def cell_id(kind: str, name: str = "") -> str:
     return f"{kind}-{safe}-{digest}" if name else kind
 
 
-def _library_of(module) -> Path | None:
-    """The library of texts (``SYMFLOAT_LIBRARY``) whose ``derivations/`` holds *module*, else ``None``."""
-    where = Path(module.__file__).resolve().parents[1]          # the package's __init__.py, in derivations/<name>/
-    return next((folder for folder in library_folders() if (folder / "derivations").resolve() == where), None)
+READING = """## How to read this notebook
+
+Every step of the derivation below is a Markdown cell — what the step says, in the source's words
+and ours, and its expressions before and after — above a code cell in plain SymPy that states the
+step and checks it:
+
+- `chain` holds the members of the step, which it asserts equal;
+- `insert` puts in the values the earlier steps established (kept in `derived`) and carries out
+  the integrals, limits and derivatives;
+- the difference of each pair of members is reduced to 0 by the SymPy call of the step's proof
+  certificate (`cancel`, `expand`, `radsimp`, `simplify`, or comparing squares), and asserted;
+- `at` evaluates the members at a small point inside the assumptions: the same number twice
+  (`same` compares two such values, exactly or to 25 digits, where a step has no symbolic proof).
+
+Change a member and run the cells again: a step that no longer holds stops with an
+`AssertionError`.  A printed formula is read as printed the same way; where the print is wrong,
+its cell shows a point where its members differ and checks the correction instead."""
 
 
-def build_notebook(derivation_id: str, folder: str | os.PathLike | None = None) -> nbformat.NotebookNode:
-    """The unexecuted notebook of one derivation; one of a library of texts finds its library from
-    *folder*, where it is written (so it re-runs there without ``SYMFLOAT_LIBRARY``)."""
+def _work(derivation_id: str) -> str:
+    """A derivation this one builds on, as a reader finds it: its title, the work and the place in it
+    (Euler's §§192-219 build on results derived for Scheeffer's VI.C-F)."""
+    d = load(derivation_id)[0]
+    src = get_source(d.source)
+    return f"*{d.title}* ({src.author}{', ' + str(src.year) if src.year else ''}, {d.locator})"
+
+
+def build_notebook(derivation_id: str, report=None) -> nbformat.NotebookNode:
+    """The unexecuted notebook of one derivation; *report* is the engine's report on it (by default
+    :func:`~symfloat.engine.runner.verify` gives it, from the cache when the derivation is unchanged).
+    A report with failures is a failed check (:class:`~symfloat.errors.CheckFailed`)."""
     d, module = load(derivation_id)
-    library = _library_of(module)
-    setup = ""
-    if library is not None:
-        path = Path(os.path.relpath(library, Path(folder or ".").resolve())).as_posix()
-        setup = ("import os  # the derivation belongs to a library of texts, found from this notebook's folder\n"
-                 f"os.environ['SYMFLOAT_LIBRARY'] = os.path.abspath({path!r})\n")
+    if report is None:
+        report = next(r for r in verify(derivation_id) if r.id == derivation_id)
+    if report.failures:
+        raise CheckFailed(f"notebook {derivation_id}: the check fails: {report.failures[0]}")
+    view = NotebookView(d, report)
+    writer = CellWriter(d, report)
     src = get_source(d.source)
     about = inspect.cleandoc(module.__doc__ or "")
     md, code = nbformat.v4.new_markdown_cell, nbformat.v4.new_code_cell
+    body = []
+    names = definitions_markdown(d)
+    if names:
+        body.append((cell_id("names"), md(names)))
+    body.append((cell_id("derivation"), md(
+        "## Derivation\n\nEach step: what it says, its expressions before and after, how the engine justified "
+        "it, and the step in SymPy (a step is checked as an identity inside the stated assumptions, unless it "
+        "is a definition).")))
+    titles = step_titles(d)
+    for i, s in enumerate(d.steps, 1):
+        body.append((cell_id("step", s.name), md(step_markdown(d, i, s, view.step_markdown(s.name), titles[s.name]),
+                                                 metadata={"symfloat": {"step": s.name}})))
+        body.append((cell_id("step-check", s.name), code(writer.step(s))))
+    body.append((cell_id("printed"), md(
+        "## Printed formulas\n\nThe transcription quoted verbatim and read as printed (the print's "
+        "arithmetic kept), then the verdict, the erratum if there is one, and the independent witnesses; "
+        "below each, the reading in SymPy and its check.")))
+    for p in d.printed:
+        body.append((cell_id("formula", p.name), md(reading_markdown(d, p, view.formula_markdown(p.name)),
+                                                    metadata={"symfloat": {"formula": p.name}})))
+        check = writer.formula(p)
+        if check is not None:
+            body.append((cell_id("formula-check", p.name), code(check)))
     cells = [
         (cell_id("title"), md(
             f"# {d.title}\n\n{src.author}, *{src.title}*{', ' + str(src.year) if src.year else ''} — "
-            f"{d.locator} (source key `{d.source}`).\n\n{d.summary}\n\n"
-            f"Derivation `{d.id}`" + (f", building on {', '.join(f'`{r}`' for r in d.requires)}" if d.requires
-                                      else "") + ".\n\n**Assumptions**\n\n"
-            + "\n".join(f"- {a}" for a in d.assumptions))),
-        *([(cell_id("about"), md("## About this section\n\n" + about))] if about else []),
-        (cell_id("setup"), code(
-            setup + f"from symfloat.derivations import {module.__name__.split('.')[-1]} as derivation\n"
-            "from symfloat.report.notebook_view import NotebookView\n\n"
-            "view = NotebookView(derivation)   # what the engine found on this derivation\n"
-            "assert not view.failures, view.failures\n"
-            "view.summary()")),
+            f"{d.locator}.\n\n{typeset(d.summary)}\n\n"
+            + (f"Building on {', '.join(_work(r) for r in d.requires)}.\n\n" if d.requires else "")
+            + f"Checked by `symfloat verify {d.id}`.\n\n**Assumptions**\n\n"
+            + "\n".join(f"- {typeset(a)}" for a in d.assumptions))),
+        *([(cell_id("about"), md("## About this section\n\n" + typeset(about)))] if about else []),
+        (cell_id("engine"), md("## What the engine found\n\n" + view.summary_markdown())),
+        (cell_id("reading"), md(READING)),
+        (cell_id("setup"), code(writer.setup())),
+        *body,
     ]
-    names = definitions_markdown(d)
-    if names:
-        cells.append((cell_id("names"), md(names)))
-    cells.append((cell_id("derivation"), md(
-        "## Derivation\n\nEach step: what it says, its expressions before and after, and how the engine "
-        "justified it (a step is checked as an identity inside the stated assumptions, unless it is a "
-        "definition).")))
-    for i, s in enumerate(d.steps, 1):
-        cells.append((cell_id("step", s.name), md(step_markdown(d, i, s))))
-        cells.append((cell_id("step-check", s.name), code(f"view.step({s.name!r})")))
-    cells.append((cell_id("printed"), md(
-        "## Printed formulas\n\nThe transcription quoted verbatim and read as printed (the print's "
-        "arithmetic kept), then the verdict, the erratum if there is one, and the independent witnesses.")))
-    for p in d.printed:
-        cells.append((cell_id("formula", p.name), md(reading_markdown(d, p))))
-        cells.append((cell_id("formula-check", p.name), code(f"view.formula({p.name!r})")))
     nb = nbformat.v4.new_notebook(cells=[c for _, c in cells], metadata={"kernelspec": KERNEL})
     nb.nbformat_minor = 5
     for cid, cell in cells:
@@ -129,7 +161,23 @@ def execute_notebook(nb, cwd: str | os.PathLike) -> nbformat.NotebookNode:
     # failing cell raises CellExecutionError with its traceback regardless.
     client.execute(stderr=subprocess.DEVNULL)
     nb.metadata.pop("language_info", None)   # the kernel's Python version: machine, not mathematics
+    for cell in nb.cells:
+        if cell.cell_type == "code":
+            cell.outputs = _coalesced(cell.outputs)
     return nb
+
+
+def _coalesced(outputs) -> list:
+    """*outputs* with consecutive pieces of one stream joined: the kernel sends a cell's printing in as
+    many pieces as it happened to flush (a slow step's line comes in two), which is the clock's, not the
+    notebook's."""
+    out = []
+    for o in outputs:
+        if out and o.output_type == "stream" and out[-1].output_type == "stream" and out[-1].name == o.name:
+            out[-1].text += o.text
+        else:
+            out.append(o)
+    return out
 
 
 def notebook_stamp(derivation_id: str, keys: dict) -> str:
@@ -138,7 +186,8 @@ def notebook_stamp(derivation_id: str, keys: dict) -> str:
     import sympy
 
     here = Path(__file__).resolve().parent
-    return digest(keys[derivation_id], here / "notebooks.py", here / "notebook_view.py", sympy.__version__)
+    return digest(keys[derivation_id], *(here / f for f in ("notebooks.py", "notebook_view.py", "notebook_cells.py",
+                                                            "notebook_code.py", "prose.py")), sympy.__version__)
 
 
 def write_notebooks(ids, folder: str | os.PathLike = "notebooks", progress=None, *, force: bool = False) -> list[Path]:
@@ -174,17 +223,14 @@ def write_notebooks(ids, folder: str | os.PathLike = "notebooks", progress=None,
 
 
 def _executed_text(derivation_id: str, stamp: str, folder: Path) -> str:
-    """The notebook of *derivation_id* (to be written in *folder*), executed and stamped, as the text
-    written to disk; a cell that fails is a failed check named in one line
-    (:class:`~symfloat.errors.CheckFailed`), not a traceback.  A library's notebook runs in *folder*, as
-    it will when re-run there."""
-    nb = build_notebook(derivation_id, folder)
-    where = Path.cwd()
-    if _library_of(load(derivation_id)[1]) is not None:
-        where = Path(folder)
-        where.mkdir(parents=True, exist_ok=True)
+    """The notebook of *derivation_id* (to be written in *folder*), executed in *folder* as a reader
+    re-runs it there (its kernel needs SymPy alone, so a library's notebook runs without
+    ``SYMFLOAT_LIBRARY``) and stamped, as the text written to disk; a cell that fails is a failed check
+    named in one line (:class:`~symfloat.errors.CheckFailed`), not a traceback."""
+    nb = build_notebook(derivation_id)
+    Path(folder).mkdir(parents=True, exist_ok=True)
     try:
-        nb = execute_notebook(nb, where)
+        nb = execute_notebook(nb, folder)
     except CellExecutionError as exc:
         raise CheckFailed(f"notebook {derivation_id}: a cell failed with {exc.ename}: {exc.evalue}") from None
     except DeadKernelError:

@@ -55,14 +55,19 @@ class Records:
 
 
 def formula_cells(derivation: str, notebook: dict) -> dict[str, FormulaCell]:
-    """Formula id -> the markdown cell before each ``view.formula(NAME)`` check of *notebook*."""
+    """Formula id -> the markdown cell that presents it in *notebook*: the cell whose metadata
+    ``symfloat.formula`` names it, or (a notebook written before the cells were SymPy) the markdown cell
+    before its ``view.formula(NAME)`` check."""
     found, previous = {}, None
     for cell in notebook["cells"]:
         source = "".join(cell["source"])
         m = _CHECK.match(source.strip()) if cell["cell_type"] == "code" else None
-        if m and previous is not None:
-            r = _READING.search("".join(previous["source"]))
-            found[f"{derivation}/{m['name']}"] = FormulaCell(previous["id"], r["tex"].strip() if r else None)
+        name = cell.get("metadata", {}).get("symfloat", {}).get("formula") if cell["cell_type"] == "markdown" \
+            else None
+        shown = cell if name else previous if m else None
+        if shown is not None:
+            r = _READING.search("".join(shown["source"]))
+            found[f"{derivation}/{name or m['name']}"] = FormulaCell(shown["id"], r["tex"].strip() if r else None)
         if cell["cell_type"] == "markdown":
             previous = cell
     return found

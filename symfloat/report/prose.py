@@ -1,0 +1,207 @@
+"""Prose for readers: the ASCII mathematics of a derivation's notes typeset as ``$…$``.
+
+The notes, assumptions and summaries of the derivation modules write mathematics in ASCII
+(``T_1 (1 + tan^2/2) = V_1 e_1``, ``tan phi <= b(1-s)/u_m``, ``int u v df = 0``).  For a notebook
+each maximal run of mathematical tokens — names with an index or exponent, Greek letters, the
+functions, numbers, operators and the one-letter names between them — becomes one inline formula
+in TeX; words stay words.  A run without a name with an index, a Greek letter, a function or a
+relation sign stays text (``a`` is an article, ``(i)`` a label).
+
+>>> typeset("the arm grows like phi (T_1/V_1 - e_1)")
+'the arm grows like $\\\\varphi (T_{1}/V_{1} - e_{1})$'
+>>> typeset("stable iff T_1^1 > T_1")
+'stable iff $T_{1}^{1} > T_{1}$'
+>>> typeset("a solution of the equation")
+'a solution of the equation'
+>>> typeset("the regular n-gon F_1 r^2 (2 + cos 2pi/n)/12")
+'the regular n-gon $F_{1} r^{2} (2 + \\\\cos 2\\\\pi/n)/12$'
+"""
+from __future__ import annotations
+
+import re
+
+__all__ = ["typeset"]
+
+GREEK = ("alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda", "mu",
+         "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "varphi", "chi", "psi", "omega",
+         "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega")
+FUNCTIONS = ("sin", "cos", "tan", "cot", "sqrt", "arctan", "atan", "log", "exp", "int", "lim", "max", "min")
+_TEX = {"phi": r"\varphi", "varphi": r"\varphi", "epsilon": r"\varepsilon", "atan": r"\arctan",
+        "sqrt": r"\sqrt", "int": r"\int", "√": r"\sqrt", "∫": r"\int", "·": r"\cdot", "−": "-",
+        "<=": r"\le", ">=": r"\ge", "≤": r"\le", "≥": r"\ge", "±": r"\pm", "+-": r"\pm", "oo": r"\infty",
+        "*": r"\cdot", "π": r"\pi", "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu",
+        "≈": r"\approx", "→": r"\to", "∞": r"\infty"}
+_SUPER = {"²": "2", "³": "3", "⁴": "4", "¹": "1", "⁰": "0", "⁵": "5", "⁶": "6"}
+
+_TOKEN = re.compile(r"""
+    (?P<space>[ ]+)
+  | (?P<compound>\b[A-Za-z]-(?!(?:sin|cos|tan|cot|log|exp|sqrt)\b)[a-z]{3,}\b)        # n-gon, x-axis: a word
+  | (?P<name>[A-Za-z][A-Za-z0-9]*(?:_\{?[A-Za-z0-9]+\}?|\^\{?[A-Za-z0-9*]+\}?)+'?)   # T_1^1, u_m', s^*
+  | (?P<word>[A-Za-z][A-Za-z]*'?(?:s\b)?)
+  | (?P<index>[_^]\{?[A-Za-z0-9*]+\}?)                                              # ∫_0^b, s^*
+  | (?P<number>\d+(?:\.\d+)?)
+  | (?P<relation><=|>=|[=<>≤≥≈]|->|→)
+  | (?P<operator>\+-|[-+*/()±·−√∫²³⁴¹⁰πθφωμ∞])
+  | (?P<other>.)
+""", re.X | re.S)
+
+
+def _kind(token: str, group: str) -> str:
+    """``strong`` (certainly mathematics), ``weak`` (mathematics inside a run), ``relation``, ``space`` or
+    ``text``."""
+    if group == "name":
+        base = re.match(r"[A-Za-z][A-Za-z0-9]*", token).group(0)
+        return "strong" if len(base) <= 3 or base in GREEK or base in FUNCTIONS else "text"
+    if group == "word":
+        if token in GREEK or token in FUNCTIONS:
+            return "strong"
+        if len(token) == 1 or re.fullmatch(r"d[A-Za-z]", token) or token == "oo":
+            return "weak"
+        return "text"
+    if group in ("index", "number", "operator"):
+        return "strong" if token in ("√", "∫", "²", "³", "⁴") or group == "index" else "weak"
+    return {"relation": "relation", "space": "space"}.get(group, "text")
+
+
+def _tex(token: str) -> str:
+    if token in _TEX:
+        return _TEX[token]
+    if token in _SUPER:
+        return "^{" + _SUPER[token] + "}"
+    m = re.fullmatch(r"([A-Za-z][A-Za-z0-9]*)((?:[_^]\{?[A-Za-z0-9*]+\}?)*)('?)", token)
+    if m and (m.group(2) or m.group(1) in GREEK or m.group(1) in FUNCTIONS):
+        base = m.group(1)
+        base = _TEX.get(base, "\\" + base if base in GREEK or base in FUNCTIONS else base)
+        scripts = re.sub(r"([_^])\{?([A-Za-z0-9*]+)\}?", lambda s: f"{s.group(1)}{{{s.group(2)}}}", m.group(2))
+        return base + scripts + m.group(3)
+    if re.fullmatch(r"[_^]\{?[A-Za-z0-9*]+\}?", token):
+        return token[0] + "{" + token[1:].strip("{}") + "}"
+    return token
+
+
+def _trim(run: list) -> list:
+    """Drop spaces and unmatched brackets at the ends of a run, and a relation sign left at an end."""
+    changed = True
+    while run and changed:
+        changed = False
+        opened = sum(t == "(" for t, _ in run) - sum(t == ")" for t, _ in run)
+        if run[-1][1] in ("space", "relation") or run[-1][0] == "(" or (run[-1][0] == ")" and opened < 0):
+            run.pop()
+            changed = True
+        elif run[0][1] in ("space", "relation") or run[0][0] == ")" or (run[0][0] == "(" and opened > 0):
+            run.pop(0)
+            changed = True
+    return run
+
+
+def _unmatched(run: list) -> int | None:
+    """The index of the first bracket of *run* that has no partner, or ``None``."""
+    opened = []
+    for i, (t, _) in enumerate(run):
+        if t == "(":
+            opened.append(i)
+        elif t == ")":
+            if not opened:
+                return i if i > 0 else None
+            opened.pop()
+    return opened[0] if opened else None
+
+
+def _joined(tokens) -> str:
+    """TeX of the tokens, a space after a command that a letter follows (``\\int y``, not ``\\inty``), a
+    root's bracket as its argument (``sqrt(b^2 - y^2)`` is ``\\sqrt{b^{2} - y^{2}}``)."""
+    tokens = list(tokens)
+    out, i = "", 0
+    while i < len(tokens):
+        t = tokens[i]
+        if t in ("sqrt", "√") and i + 1 < len(tokens) and tokens[i + 1] == "(":
+            depth, j = 0, i + 1
+            while j < len(tokens):
+                depth += {"(": 1, ")": -1}.get(tokens[j], 0)
+                if depth == 0:
+                    break
+                j += 1
+            if j < len(tokens):
+                out += r"\sqrt{" + _joined(tokens[i + 2:j]) + "}"
+                i = j + 1
+                continue
+        tex = r"\surd" if t in ("sqrt", "√") else _tex(t)       # a root sign without its bracket
+        if re.search(r"\\[A-Za-z]+$", out) and re.match(r"[A-Za-z0-9]", tex):
+            out += " "
+        out += tex
+        i += 1
+    return out.strip()
+
+
+def _attached(tokens: list) -> list:
+    """A short word written against an operator, an index or a number (``cy²``, ``-cy``) is mathematics."""
+    out = list(tokens)
+    for i, (t, k, g) in enumerate(tokens):
+        if k == "text" and g == "word" and len(t) <= 3:
+            near = [tokens[j] for j in (i - 1, i + 1) if 0 <= j < len(tokens)]
+            if any(n[2] in ("operator", "index", "number") and n[0] not in "()" for n in near):
+                out[i] = (t, "weak", g)
+    return out
+
+
+def _typeset_plain(text: str) -> str:
+    tokens = [(m.group(0), _kind(m.group(0), m.lastgroup), m.lastgroup) for m in _TOKEN.finditer(text)]
+    tokens = [(t, k) for t, k, _ in _attached(tokens)]
+    out, run = [], []
+
+    def flush():
+        nonlocal run
+        lead = []
+        while run and (run[0][1] in ("space", "relation") or run[0][0] == ")"):
+            lead.append(run.pop(0)[0])
+        tail = []
+        while run and (run[-1][1] in ("space", "relation") or run[-1][0] == "("):
+            tail.insert(0, run.pop()[0])
+        core = _trim(list(run))
+        cut = _unmatched(core)
+        if cut is not None:                      # a bracket the run does not close: the formula ends before it
+            rest = run[run.index(core[0]) + cut:]
+            run = run[:run.index(core[0]) + cut]
+            out.append("".join(lead))
+            flush()
+            out.append("".join(t for t, _ in rest) + "".join(tail))
+            return
+        if core and (any(k == "strong" for _, k in core)
+                     or any(k == "relation" for _, k in core) and len([k for _, k in core if k == "weak"]) >= 2):
+            start = run.index(core[0])
+            end = start + len(core)
+            before = "".join(t for t, _ in run[:start])
+            after = "".join(t for t, _ in run[end:])
+            out.append("".join(lead) + before + "$" + _joined(t for t, _ in core) + "$" + after
+                       + "".join(tail))
+        else:
+            out.append("".join(lead) + "".join(t for t, _ in run) + "".join(tail))
+        run = []
+
+    for token, kind in tokens:
+        if kind == "text":
+            flush()
+            out.append(token)
+        else:
+            run.append((token, kind))
+    flush()
+    return "".join(out)
+
+
+def typeset(text: str) -> str:
+    """*text* with its ASCII mathematics typeset as ``$…$``; existing ``$…$`` spans and code spans are
+    left alone, except a code span holding mathematics (````tan phi_1````), which becomes a formula."""
+    parts = re.split(r"(\$[^$]*\$|``[^`]+``|`[^`]+`)", text)
+    out = []
+    for part in parts:
+        if part.startswith("$"):
+            out.append(part)
+        elif part.startswith("`"):
+            inner = part.strip("`")
+            done = _typeset_plain(inner)
+            if re.fullmatch(r"[A-Za-z]", inner):                    # ``b``: a letter of the mathematics
+                done = f"${inner}$"
+            out.append(done if done.startswith("$") and done.endswith("$") and done.count("$") == 2 else part)
+        else:
+            out.append(_typeset_plain(part))
+    return "".join(out)
