@@ -11,7 +11,7 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symfloat.engine.floating_witness import QUANTITIES, Body, FloatingWitness
+from symfloat.engine.floating_witness import QUANTITIES, Body, FloatingWitness, number
 from symfloat.engine.witness import Case
 
 A, B, C, S = sp.symbols("a b c s", positive=True)
@@ -648,3 +648,20 @@ def test_derivatives_along_a_parameter_by_central_differences():
     w, case = _root_witness(d1, ((d1, Difference("I max", A, 1)),), params={DENS: sp.Rational(9, 10)})
     with pytest.raises(ValueError, match="needs its value"):
         w.measure(case, w.methods[0])
+
+
+def test_a_number_at_a_trial_value_is_computed_to_the_method_digits():
+    # a root search's trial value is a SymPy Float: the expression is evaluated by its compiled form at dps + 10
+    # digits, not by SymPy; against SymPy's own evaluation at 60 digits it holds to the method's digits (a
+    # compiled form run at 15 digits would miss 40 digits by 1e-17), and the exact numbers of a case stay exact
+    x, y = sp.symbols("x y", positive=True)
+    expr = sp.sqrt(x) * sp.cos(y) + sp.pi / 3
+    params = {x: sp.Rational(3, 7), y: sp.Float("0.7123456789012345678901234567890123456789012345", 50)}
+    exact = sp.N(expr.xreplace(params), 60)
+    for dps, tol in ((15, 1e-15), (40, mpmath.mpf(10) ** -39)):
+        with mpmath.workdps(max(dps, 15)):
+            got = number(expr, params, dps)
+            assert abs(got - mpmath.mpf(exact)) <= tol * abs(mpmath.mpf(exact)), dps
+    assert number(x ** 2 + 1, params, 40) == Fraction(58, 49)
+    with pytest.raises(ValueError, match="needs a number"):
+        number(x + sp.Symbol("z"), params, 15)

@@ -42,15 +42,45 @@ _LIMIT_STEPS = {15: (1e-3, 3, 15), 50: ("1e-10", 5, 90)}
 
 def number(expr, params, dps):
     """The value of a SymPy expression at *params*: a :class:`Fraction` when it is rational (the geometry
-    then works with the exact value), else a float (``dps`` 15) or an mpf at ``dps`` digits."""
-    v = sp.sympify(expr).xreplace(params)
-    if v.free_symbols:
-        raise ValueError(f"a floating witness needs a number, {expr} is {v} at {params}")
-    if v.is_Rational:
-        return Fraction(int(v.p), int(v.q))
+    then works with the exact value), else a float (``dps`` 15) or an mpf at ``dps`` digits.  Where a parameter
+    it depends on is a float (a trial value of a root search), the expression is evaluated by its compiled form
+    (:func:`_compiled`) at ``dps + 10`` digits, not by SymPy."""
+    expr = sp.sympify(expr)
+    symbols = expr.free_symbols
+    if not any(isinstance(params.get(x), sp.Float) for x in symbols):
+        value = _exact(expr, tuple(sorted(((x, params[x]) for x in symbols if x in params), key=str)), dps)
+        return +value if isinstance(value, mpmath.mpf) else value
+    names, f = _compiled(expr)
+    missing = [x for x in names if x not in params]
+    if missing:
+        raise ValueError(f"a floating witness needs a number, {expr} is not one at {params} ({missing} unknown)")
+    with mpmath.workdps(max(dps, 15) + 10):
+        value = f(*(_mp(params[x], dps) for x in names))
+    return float(value) if dps <= 15 else +value
+
+
+@functools.lru_cache(maxsize=4096)
+def _exact(expr, params, dps):
+    """:func:`number` of *expr* at exact *params* (pairs of a symbol and a SymPy number): the same case's
+    dimensions and constants are met at every trial value of a root search, and evaluated once."""
+    value = expr.xreplace(dict(params))
+    if value.free_symbols:
+        raise ValueError(f"a floating witness needs a number, {expr} is {value} at {dict(params)}")
+    if value.is_Rational:
+        return Fraction(int(value.p), int(value.q))
     if dps <= 15:
-        return float(sp.N(v, 30))
-    return mpmath.mpf(sp.N(v, dps + 10))
+        return float(sp.N(value, 30))
+    with mpmath.workdps(dps + 10):
+        return mpmath.mpf(sp.N(value, dps + 10))
+
+
+def _mp(x, dps):
+    """A parameter's value (a SymPy number) as an mpf at the working precision."""
+    if isinstance(x, sp.Float):
+        return mpmath.mpf(x)
+    if isinstance(x, sp.Rational):
+        return mpmath.mpf(int(x.p)) / int(x.q)
+    return mpmath.mpf(sp.N(x, max(dps, 15) + 15))
 
 
 @dataclass(frozen=True)
@@ -142,7 +172,7 @@ def _real(x, dps):
     return x
 
 
-@functools.lru_cache(maxsize=256)
+@functools.lru_cache(maxsize=4096)
 def _compiled(expr):
     """*expr* (measured symbols and case parameters) as a function of its free symbols, sorted by name:
     compiled once, called at every case, tilt and precision."""

@@ -155,7 +155,15 @@ def _finite_ok(expr, point) -> bool:
 
 
 # ---- sampling ---------------------------------------------------------------------------------------------
-def _ends(iv: sp.Interval) -> list:
+@functools.lru_cache(maxsize=4096)
+def _simplest(x):
+    """``sp.nsimplify(x)``, once per number: the same ends of a domain are met at every boundary point, random
+    point and slice, and identifying an irrational end (PSLQ) costs tens of milliseconds."""
+    return sp.nsimplify(x)
+
+
+@functools.lru_cache(maxsize=4096)
+def _ends(iv: sp.Interval) -> tuple:
     lo, hi = iv.start, iv.end
     if not (lo.is_finite and hi.is_finite):
         lo = lo if lo.is_finite else (hi - 1000 if hi.is_finite else sp.Integer(-1000))
@@ -164,12 +172,13 @@ def _ends(iv: sp.Interval) -> list:
     w = hi - lo
     left = lo if not iv.left_open else _rational_near(lo + NEAR * w, lo)
     right = hi if not iv.right_open else _rational_near(hi - NEAR * w, hi)
-    return [left, _rational_near((lo + hi) / 2, (lo + 3 * hi) / 4), right]
+    return left, _rational_near((lo + hi) / 2, (lo + 3 * hi) / 4), right
 
 
+@functools.lru_cache(maxsize=4096)
 def _rational_near(x, towards):
     """*x* when rational, else a rational strictly between *x* and *towards* (20 digits)."""
-    x = sp.nsimplify(x)
+    x = _simplest(x)
     if x.is_Rational:
         return x
     mid = (x + towards) / 2
@@ -423,7 +432,7 @@ def _around_roots(parts, x, iv) -> list:
     for r in roots:
         d = mpmath.mpf("1e-12") * max(1, abs(r))
         points += [sp.Rational(mpmath.nstr(r - d, 25)), sp.Rational(mpmath.nstr(r + d, 25))]
-    cuts = [sp.nsimplify(lo)] + [sp.Rational(mpmath.nstr(r, 25)) for r in roots] + [sp.nsimplify(hi)]
+    cuts = [_simplest(lo)] + [sp.Rational(mpmath.nstr(r, 25)) for r in roots] + [_simplest(hi)]
     points += [(a + b) / 2 for a, b in zip(cuts, cuts[1:])]
     return sorted({q for q in points if iv.contains(q) == sp.true})
 

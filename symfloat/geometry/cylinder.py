@@ -8,13 +8,16 @@ is a disk; the part below the water plane ``u . p = t`` is the segment
     A(psi) = r^2 (pi - psi + sin psi cos psi),   int x dA = -(2/3) r^3 sin^3 psi,
     z(psi) = (t - r cos psi sin theta) / cos theta,  dz = r tan theta sin psi dpsi,
 
-so the submerged volume and its moments are integrals of trigonometric
-polynomials in ``psi`` (Gauss–Legendre is exact to rounding), plus the
+so the submerged volume and its moments are integrals of ``(pi - psi + sin psi
+cos psi) sin psi``, the same times ``cos psi``, and ``sin^4 psi``, plus the
 fully submerged disks.  The waterplane ``(w, y)``, ``p = t u + w e_theta + y
 e_y``, has half-width ``sqrt(r^2 - x^2)`` with ``x = t sin theta + w cos
 theta``; with ``x = -r cos phi`` its area and second moment are integrals of
-the same kind (about e_y, the slices contribute ``w^2`` times their width; about
-the w axis, ``2 (r sin phi)^3 / 3``).  Upright (``theta = 0``) and lying (``theta = pi/2``)
+``sin^2 phi`` times ``1``, ``cos phi`` and ``cos^2 phi``, and of ``sin^4 phi``
+(about e_y, the slices contribute ``w^2`` times their width; about the w axis,
+``2 (r sin phi)^3 / 3``).  Each of these has an elementary primitive
+(:func:`_primitives`), which takes the slice integrals in mpmath; float64 takes
+them by Gauss–Legendre at 40 nodes, exact to rounding.  Upright (``theta = 0``) and lying (``theta = pi/2``)
 positions have their own closed forms.  Nothing here uses a formula of a
 source.
 """
@@ -61,14 +64,52 @@ class _Math:
     def num(self, x):
         return float(x) if self.dps is None else mpmath.mpf(x)
 
-    def integrate(self, f, a, b):
-        """Integral of a smooth (trigonometric-polynomial) integrand over ``[a, b]``."""
-        if not b > a:
-            return self.num(0)
-        if self.dps is None:
-            half, mid = (b - a) / 2, (a + b) / 2
-            return half * sum(w * f(mid + half * x) for x, w in zip(_NODES, _WEIGHTS))
-        return mpmath.quad(f, [a, b], method="gauss-legendre")
+
+_INTEGRANDS = ("A sin", "A sin cos", "sin^4", "sin^2", "sin^2 cos", "sin^2 cos^2")
+
+
+def _primitives(M, p):
+    """The primitives at *p* of the slice integrands, with A(p) = pi - p + sin p cos p:
+
+    int A sin p = -(pi - p) cos p - sin p + sin^3 p / 3,
+    int A sin p cos p = -(pi - p) cos 2p / 4 - sin 2p / 8 + p / 8 - sin 4p / 32,
+    int sin^4 p = 3p/8 - sin 2p / 4 + sin 4p / 32,
+    int sin^2 p = p/2 - sin 2p / 4,   int sin^2 p cos p = sin^3 p / 3,   int sin^2 p cos^2 p = p/8 - sin 4p / 32
+
+    (each checked by differentiation in ``tests/test_cylinder_slices.py``)."""
+    sn, cs = M.sin(p), M.cos(p)
+    s2, c2 = 2 * sn * cs, cs * cs - sn * sn
+    s4 = 2 * s2 * c2
+    rest = M.pi - p
+    return {"A sin": -rest * cs - sn + sn ** 3 / 3,
+            "A sin cos": -rest * c2 / 4 - s2 / 8 + p / 8 - s4 / 32,
+            "sin^4": 3 * p / 8 - s2 / 4 + s4 / 32,
+            "sin^2": p / 2 - s2 / 4,
+            "sin^2 cos": sn ** 3 / 3,
+            "sin^2 cos^2": p / 8 - s4 / 32}
+
+
+def _integrals(M, a, b, about=0):
+    """The slice integrals over ``[a, b]`` (all 0 unless b > a), and ``"central"``, int (cos p - about)^2 sin^2 p:
+    in float64 by Gauss–Legendre at 40 nodes (exact to rounding for these integrands on ``[0, pi]``, and as
+    accurate on a narrow interval); in mpmath by the primitives of :func:`_primitives`, their differences taken
+    with 4 guard bits per bit of ``1/(b - a)`` (on a narrow interval a primitive's terms cancel to about the
+    fourth power of its width)."""
+    if not b > a:
+        return dict.fromkeys((*_INTEGRANDS, "central"), M.num(0))
+    if M.dps is None:
+        half, mid = (b - a) / 2, (a + b) / 2
+        p = mid + half * _NODES
+        sn, cs = np.sin(p), np.cos(p)
+        rest = np.pi - p + sn * cs
+        values = {"A sin": rest * sn, "A sin cos": rest * sn * cs, "sin^4": sn ** 4, "sin^2": sn * sn,
+                  "sin^2 cos": sn * sn * cs, "sin^2 cos^2": (sn * cs) ** 2, "central": ((cs - about) * sn) ** 2}
+        return {k: float(half * np.dot(_WEIGHTS, v)) for k, v in values.items()}
+    with mpmath.extraprec(4 * max(0, -mpmath.mag(b - a)) + 10):
+        lo, hi = _primitives(M, a), _primitives(M, b)
+        out = {k: hi[k] - lo[k] for k in _INTEGRANDS}
+        out["central"] = out["sin^2 cos^2"] - 2 * about * out["sin^2 cos"] + about * about * out["sin^2"]
+        return out
 
 
 def _volume_moments(M, r, L, theta, t):
@@ -91,14 +132,14 @@ def _volume_moments(M, r, L, theta, t):
         Mz += M.pi * r * r * (full_hi ** 2 - lo ** 2) / 2
     a, b = max(lo, z_full), min(hi, z_empty)
     if b > a:
+        # the slice at z(psi) = (t - r cos psi sin theta)/cos theta: area r^2 A(psi), int x dA = -(2/3) r^3 sin^3 psi,
+        # dz = jac sin psi dpsi
         psi_of = lambda z: M.acos(min(max((t - z * ct) / st / r, -1), 1))
         jac = r * st / ct
-        area = lambda p: r * r * (M.pi - p + M.sin(p) * M.cos(p))
-        z_of = lambda p: (t - r * M.cos(p) * st) / ct
-        p0, p1 = psi_of(a), psi_of(b)
-        V += M.integrate(lambda p: area(p) * jac * M.sin(p), p0, p1)
-        Mz += M.integrate(lambda p: z_of(p) * area(p) * jac * M.sin(p), p0, p1)
-        Mx += M.integrate(lambda p: -2 * r ** 3 * M.sin(p) ** 3 / 3 * jac * M.sin(p), p0, p1)
+        i = _integrals(M, psi_of(a), psi_of(b))
+        V += r * r * jac * i["A sin"]
+        Mz += r * r * jac / ct * (t * i["A sin"] - r * st * i["A sin cos"])
+        Mx += -2 * r ** 3 / 3 * jac * i["sin^4"]
     return V, Mx, Mz
 
 
@@ -117,23 +158,26 @@ def _waterplane(M, r, L, theta, t, area_only=False):
     z_lo, z_hi = (t * ct - L / 2) / st, (t * ct + L / 2) / st
     a, b = max(w_lo, z_lo), min(w_hi, z_hi)
     shape = "ellipse" if (a == w_lo and b == w_hi) else "truncated ellipse"
+    # the slice at w(phi) = (-r cos phi - t sin theta)/cos theta, dw = r sin phi / cos theta dphi, of width
+    # 2 r sin phi: area int 2 r^2 sin^2 phi / cos theta, int w dA, int (w - centre)^2 dA, and
+    # int y^2 dA = int 2 (r sin phi)^3/3 dw
     phi_of = lambda w: M.acos(min(max(-(t * st + w * ct) / r, -1), 1))
-    w_of = lambda p: (-r * M.cos(p) - t * st) / ct
-    dw = lambda p: r * M.sin(p) / ct                     # dw/dphi
-    weight = lambda p: 2 * r * M.sin(p) * dw(p)          # the slice's width times dw/dphi
     p0, p1 = phi_of(a), phi_of(b)
     if p0 > p1:
         p0, p1 = p1, p0
-    area = M.integrate(weight, p0, p1)
+    i = _integrals(M, p0, p1)
+    weight = 2 * r * r / ct
+    area = weight * i["sin^2"]
     if area_only:
         return area
     if not area > 0:
         return area, M.num(0), M.num(0), M.num(0), shape
-    mw = M.integrate(lambda p: w_of(p) * weight(p), p0, p1)
-    mww = M.integrate(lambda p: w_of(p) ** 2 * weight(p), p0, p1)
-    I_y = M.integrate(lambda p: 2 * (r * M.sin(p)) ** 3 / 3 * dw(p), p0, p1)
-    centre = mw / area
-    return area, centre, mww - area * centre ** 2, I_y, shape
+    centre = weight / ct * (-r * i["sin^2 cos"] - t * st * i["sin^2"]) / area
+    # about the centroid: w - centre = -(r / cos theta)(cos phi - k), k = -(t sin theta + centre cos theta)/r
+    about = -(t * st + centre * ct) / r
+    I_w = weight * (r / ct) ** 2 * _integrals(M, p0, p1, about)["central"]
+    I_y = 2 * r ** 4 / (3 * ct) * i["sin^4"]
+    return area, centre, I_w, I_y, shape
 
 
 def _draught(M, r, L, theta, s):
