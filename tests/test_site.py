@@ -26,7 +26,7 @@ from symfloat.model.symbol_names import GREEK  # noqa: E402
 from symfloat.model.span import math_intervals  # noqa: E402
 from symfloat.site import typeset  # noqa: E402
 from symfloat.site.build import MARKER, _sync  # noqa: E402
-from symfloat.site.edition import edition_page, formula_anchor, mark_of  # noqa: E402
+from symfloat.site.edition import edition_page, fault_words, formula_anchor, mark_of, places  # noqa: E402
 from symfloat.site.errata_pages import errata_index  # noqa: E402
 from symfloat.site.difference import corrected_html  # noqa: E402
 from symfloat.site.notebooks import staged_notebook  # noqa: E402
@@ -152,6 +152,28 @@ def test_places_have_anchors_and_the_sources_a_citation(records):
     hasab, web = edition_page(SOURCES["hasab"], records), edition_page(SOURCES["metazentrum"], records)
     assert "1987-04-183-1.eps" not in hasab.split('<div class="edition">')[1]     # a file name, not the text's words
     assert "ID:(1610, 0)" not in web and "(web lesson)" not in web
+
+
+def test_a_fault_printed_at_several_places_is_marked_at_each(records):
+    # metazentrum half-length: 'der Mittlere Länge des Parallelepipeds' stands at eight places of the lesson
+    # (symfloat/sources/003_02a33f8f897eb570.txt, lines 155, 168, 243, 540, 578, 616, 677, 683;
+    # tests/test_repeated_faults.py), one erratum with its places
+    page = edition_page(SOURCES["metazentrum"], records)
+    fid = "metazentrum/half-length"
+    anchor = formula_anchor(fid)
+    assert fault_words(records.formula(fid), records) == "der Mittlere Länge des Parallelepipeds"
+    # a marked stretch may run through several links (cut where other marks begin); its sign ends the last one
+    first = re.findall(rf'<a class="q v-fault" href="#{anchor}"[^>]*>(?:(?!</a>).)*?'
+                       r'<span class="visually-hidden"> \(fault of the original\)</span></a>', page, flags=re.S)
+    again = re.findall(rf'<a class="q again v-fault" href="#{anchor}" title="The same fault printed here too[^"]*">'
+                       r'((?:(?!</a>).)*?)</a>', page, flags=re.S)
+    shown = re.sub(r"<[^>]+>", "", "".join(again))
+    assert len(first) == 1 and shown.count("(fault of the original, printed here too)") == 7
+    assert shown.count("Parallelepipeds") == 7
+    assert page.count(f'id="{anchor}"') == 1                                 # the one note of the one erratum
+    # a fault printed once has no other place; a place inside its quote is not marked again
+    assert fault_words(records.formula("scheeffer-vi-cf/78c"), records) == ""
+    assert places("ab x ab", "ab", (0, 2)) == [(5, 7)] and places("$a + b$ c", "b", (8, 9)) == [(0, 7)]
 
 
 def test_lost_text_and_missing_figures_are_marked(records):

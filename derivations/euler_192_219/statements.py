@@ -3,6 +3,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
+from symfloat.model.symbol_names import symbol
 
 x, y, w, s, r = sp.symbols("x y w s r", real=True)
 a, b, c = sp.symbols("a b c", positive=True)
@@ -492,7 +493,7 @@ d.quote("equal-moments-any-figure", "§210", "Eadem vero proprietas locum habebi
                    "through C is I, since n² + m² = 1."))
 
 # ================================================================ §212 square
-Dsq, Isq, Ksq, Psq = sp.symbols("D_{sq} I_{sq} K_{sq} P_{sq}")
+Dsq, Isq, Ksq, Psq = (symbol(f"{q}_{{sq}}", rf"{q}_{{\text{{square}}}}") for q in "DIKP")
 integral_step("square-area", Dsq, rect(1, a, a) / 2,
               2 * a ** 2)
 integral_step("square-I", Isq, rect(y ** 2, a, a),
@@ -532,7 +533,7 @@ d.quote("square-D", "§212", r"$= \frac{AB^2 \cdot D}{6} =$", reading=(Isq, (2 *
                    "read as the moment."))
 
 # ================================================================ §213 rectangle
-Dre, Ire, Kre = sp.symbols("D_{re} I_{re} K_{re}")
+Dre, Ire, Kre = (symbol(f"{q}_{{re}}", rf"{q}_{{\text{{rectangle}}}}") for q in "DIK")
 integral_step("rect-area", Dre, rect(1, a, b) / 2,
               2 * a * b)
 integral_step("rect-I", Ire, rect(y ** 2, a, b),
@@ -554,7 +555,7 @@ d.quote("rect-K", "§213", r"latitudinalis $= \frac{AB^2 \cdot D}{6}$", reading=
         note=claim("and about EF it is AB²·D/6, so the two moments are inversely as the squares of the axes."))
 
 # ================================================================ §214 rhombus
-Drh, Irh, Krh = sp.symbols("D_{rh} I_{rh} K_{rh}")
+Drh, Irh, Krh = (symbol(f"{q}_{{rh}}", rf"{q}_{{\text{{rhombus}}}}") for q in "DIK")
 integral_step("rhombus-area", Drh, rhomb(1) / 2,
               a * b)
 integral_step("rhombus-I", Irh, rhomb(y ** 2),
@@ -601,7 +602,8 @@ d.quote("rhombus-K", "§214", r"EF erit $= \frac{AB^2 \cdot D}{12}$", reading=(K
         note=claim("about EF it is AB²·D/12: the denominators 12 instead of the rectangle's 6."))
 
 # ================================================================ §219 ellipse
-Del, Iel, Kel, Kq, Aq, Yq = sp.symbols("D_{el} I_{el} K_{el} K_{qu} A_{qu} Y_{el}")
+Del, Iel, Kel, Yq = (symbol(f"{q}_{{el}}", rf"{q}_{{\text{{ellipse}}}}") for q in "DIKY")
+Kq, Aq = (symbol(f"{q}_{{qu}}", rf"{q}_{{\text{{quadrant}}}}") for q in "KA")
 d.step("ellipse-ordinate", Eq(Yq, Yel), "definition", result=Yq, note="PM = y on the ellipse")
 d.step("ellipse-equation", (x ** 2 / a ** 2 + Yq ** 2 / b ** 2, 1), "algebra", uses=("ellipse-ordinate",))
 integral_step("ellipse-area", Del, ell(1) / 2,

@@ -4,6 +4,7 @@ from sympy.core.evalf import prec_to_dps
 
 from symfloat import Derivation, Eq, Erratum, Holds, Iff
 from symfloat.model.claim import as_printed
+from symfloat.model.symbol_names import symbol
 
 y, s, m = sp.symbols("y s m", positive=True)
 a, b, c, n, k = sp.symbols("a b c n kappa", positive=True)
@@ -835,7 +836,8 @@ def istep(name, S, integral, note=""):
     return d.step(name, (S, integral, sp.factor(integral.doit())), "integration", result=S, note=note)
 
 
-Dr, Ir, Kr, Drh, Irh, Krh, Dp, Ip, Kp = sp.symbols("D_r I_r K_r D_{rh} I_{rh} K_{rh} D_p I_p K_p")
+Dr, Ir, Kr, Dp, Ip, Kp = sp.symbols("D_r I_r K_r D_p I_p K_p")
+Drh, Irh, Krh = (symbol(f"{q}_{{rh}}", rf"{q}_{{\text{{rhombus}}}}") for q in "DIK")
 xx = sp.Symbol("xi", real=True)
 istep("rect-area", Dr, sp.Integral(b, (xx, -a, a)), note="half area, ordinate b")
 istep("rect-I", Ir, sp.Integral(2 * b ** 3 / 3, (xx, -a, a)),

@@ -4,6 +4,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
+from symfloat.model.symbol_names import symbol
 
 from ..graefe_s3_prismatoid_centroid.statements import D as S3_D
 from ..graefe_s3_prismatoid_centroid.statements import DERIVATION as PRISMATOID_CENTROID
@@ -50,7 +51,8 @@ def body(slug, key, area, height, G_val, D_val, g_val, note):
     ``G = A(0)``, ``D = A(h/2)``, ``g = A(h)``, the centroid by the prismatoid
     formula and the same centroid by direct integration.  Returns the symbols
     ``(G, D, g, X)``."""
-    A, G, D, g, X = sp.symbols(f"A_{{{key}}} G_{{{key}}} D_{{{key}}} g_{{{key}}} X_{{{key}}}")
+    words = slug.replace("-", " ")
+    A, G, D, g, X = (symbol(f"{q}_{{{key}}}", rf"{q}_{{\text{{{words}}}}}") for q in "AGDgX")
     d.step(f"{slug}-section", Eq(A, area), "definition", note=note, result=A)
     sec = (f"{slug}-section",)
     d.step(f"{slug}-G", (G, sp.Subs(area, u, 0), G_val), "substitution", uses=sec, result=G)
@@ -67,7 +69,7 @@ def body(slug, key, area, height, G_val, D_val, g_val, note):
 
 
 # ---- sphere ------------------------------------------------------------------------
-h_sp = sp.Symbol("h_{sp}")
+h_sp = symbol("h_{sp}", r"h_{\text{sphere}}")
 d.step("sphere-height", Eq(h_sp, 2 * r), "definition", note="from pole to pole", result=h_sp)
 area_sp = pi * (r ** 2 - (u - r) ** 2)
 G_sp, D_sp, g_sp, X_sp = body("sphere", "sp", area_sp, h_sp, 0, pi * r ** 2, 0,
@@ -169,7 +171,7 @@ d.quote("hemisphere", "§4 hemisphere",
                  r / 2 * sp.Rational(3, 4), 3 * r / 8)))
 
 # ---- spherical segment, one base ---------------------------------------------------------------
-h_s1 = sp.Symbol("h_{s1}")
+h_s1 = symbol("h_{s1}", r"h_{\text{segment 1}}")
 d.step("segment-1-height", Eq(h_s1, r - m), "definition", note="from the base to the pole", result=h_s1)
 area_s1 = pi * (r ** 2 - (m + u) ** 2)
 G_s1, D_s1, g_s1, X_s1 = body("segment-1", "s1", area_s1, h_s1, pi * (r ** 2 - m ** 2),
@@ -285,7 +287,7 @@ d.quote("paraboloid-2-2", "§4 paraboloid, two bases",
                  (xv - xvp) / 3 * ((2 * xvp + xv) / (xvp + xv))))
 
 # ---- ellipsoid of revolution: segment with one base, half ellipsoid -------------------------------------
-h_es = sp.Symbol("h_{es}")
+h_es = symbol("h_{es}", r"h_{\text{ellipsoid segment}}")
 d.step("ellipsoid-segment-height", Eq(h_es, a - x), "definition", note="from the base to the vertex",
        result=h_es)
 area_es = pi * b ** 2 / a ** 2 * (a ** 2 - (x + u) ** 2)
@@ -395,7 +397,7 @@ d.step("elliptic-body-triangles",
        "integration", uses=("elliptic-body-ordinate", "elliptic-body-centroid"),
        note="Graefe's second argument: every section perpendicular to the major axis is an isosceles "
             "triangle of height h, whose centroid lies at h/3")
-X_pc = sp.Symbol("X_{pc}")
+X_pc = symbol("X_{pc}", r"X_{\text{paraboloid}}")
 d.step("elliptic-body-paraboloid", Eq(X_pc, sp.Integral(u * 2 * p * pi * (h - u), (u, 0, h))
                                          / sp.Integral(2 * p * pi * (h - u), (u, 0, h))), "definition",
        note="centroid of a paraboloid of revolution of height h standing on its base (vertex equation "

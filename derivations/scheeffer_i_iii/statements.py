@@ -3,6 +3,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum, Holds, Iff
 from symfloat.model.claim import as_printed
+from symfloat.model.symbol_names import symbol
 
 
 phi = sp.Symbol("varphi", positive=True)
@@ -15,7 +16,8 @@ P1, P2, Hh = sp.symbols("P_1 P_2 H", positive=True)
 a, a0, c0, h0 = sp.symbols("a a_0 c_0 h_0", real=True)
 x, s, eta = sp.symbols("x s eta", real=True)
 T1, J3, J4 = sp.symbols(r"T_1 \int_3{x^2df} \int_4{x^2df}", positive=True)
-Mx3, My3, Mx4, My4 = sp.symbols(r"V_3x_3 V_3y_3 V_4x_4 V_4y_4", real=True)
+Mx3, My3, Mx4, My4 = (symbol(name, tex, real=True) for name, tex in (
+    ("V_3x_3", r"V_{3} x_{3}"), ("V_3y_3", r"V_{3} y_{3}"), ("V_4x_4", r"V_{4} x_{4}"), ("V_4y_4", r"V_{4} y_{4}")))
 tg = sp.tan(phi)
 
 DERIVATION = d = Derivation(

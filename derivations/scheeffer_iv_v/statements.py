@@ -3,6 +3,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
+from symfloat.model.symbol_names import symbol
 
 
 # ---- symbols -------------------------------------------------------------------------------------------------
@@ -18,10 +19,12 @@ dfs = sp.Symbol("df", positive=True)
 # results
 V1, e1, zS, zS1, Mu, Mv, Mz = sp.symbols("V_1 e_1 z_S z_{S_1} M_u M_v M_z")
 m, n, wax, phi1, M2, M3, M4, e2 = sp.symbols("m n w varphi_1 M_2 M_3 M_4 e_2")
-rdf, ru, rv, T2, T21, P2, P2e, zeta = sp.symbols("r_{df} r_u r_v T_2 T_2^1 P_2 P_2^{eq} zeta")
-Tmu, Tmue, Tm, Tm1, Tmin, D2, Q = sp.symbols("T(mu) T_eq(mu) T_m T_m^1 T_min D_2 Q")
-Uw, Vw, T1w, T11w, Iuv, Jsym, T1s, T1iso, T11iso, Tmi, Tm1i = sp.symbols(
-    "u_omega v_omega T_1(omega) T_1^1(omega) I_uv J_sym T_1^s T_1^iso T_1^1iso T_m^iso T_m^1iso")
+rdf, ru, rv, T2, T21, P2, zeta = sp.symbols("r_{df} r_u r_v T_2 T_2^1 P_2 zeta")
+Tmu, Tm, Tm1, Tmin, D2, Q = sp.symbols("T(mu) T_m T_m^1 T_min D_2 Q")
+P2e, Tmue = symbol("P_2^{eq}", r"P_{2}^{\text{eq}}"), symbol("T_eq(mu)", r"T_{\text{eq}}(\mu)")
+Uw, Vw, T1w, T11w, Iuv, Jsym, T1s, T1iso, Tmi = sp.symbols(
+    "u_omega v_omega T_1(omega) T_1^1(omega) I_uv J_sym T_1^s T_1^iso T_m^iso")
+T11iso, Tm1i = symbol("T_1^1iso", r"T_{1}^{1,\text{iso}}"), symbol("T_m^1iso", r"T_{m}^{1,\text{iso}}")
 phtop, phbot, Lim = sp.symbols("varphi_top varphi_bot L")
 
 DERIVATION = d = Derivation(
@@ -152,7 +155,6 @@ t1 = sp.tan(phi1)
 # ---- IV.2  the second condition (28)-(32) -----------------------------------------------------------------------
 u3, v3 = sp.symbols("u_3 v_3", positive=True)
 d.domain.update({u3: (sp.Rational(1, 10), 1), v3: (-1, 1)})
-zel = sp.Symbol("z_el")
 d.step("column-3", (sp.Integral(v3, (z, 0, u3 * t1)), u3 * v3 * t1), "integration",
        note="moment of the column over df (height z = u_3 tan phi_1) about the vertical plane through OS "
             "across EF, per unit df")

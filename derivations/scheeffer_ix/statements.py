@@ -3,6 +3,7 @@ import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Cases, Derivation, Eq, Erratum, Holds, RealRoots
 from symfloat.model.claim import as_printed
+from symfloat.model.symbol_names import symbol
 
 a, b, c, s = sp.symbols("a b c s", positive=True)
 phi, phi1, z, t, w = sp.symbols("varphi_2 varphi_1 z t w", positive=True)
@@ -14,11 +15,12 @@ half = sp.Rational(1, 2)
 
 # results
 T1, T11, V1, e1, GZ1, GMa, GMc, GM3 = sp.symbols("T_1 T_1^1 V_1 e_1 GZ_1 GM_a GM_c GM_3")
-tan2a, tan2c, tan2t, Dp, tla, tlc, tl3 = sp.symbols("tan^2varphi_1 tan^2varphi_1^1 cot^2varphi_3 D_p "
-                                                    "tanvarphi_la tanvarphi_lc tanvarphi_l3")
+tan2a, tan2c, tan2t, Dp = sp.symbols("tan^2varphi_1 tan^2varphi_1^1 cot^2varphi_3 D_p")
+tla, tlc, tl3 = (symbol(f"tanvarphi_l{k}", rf"\tan\varphi_{{\lim {k}}}") for k in "ac3")   # a base face reaches the water
 sg, n, rho = sp.symbols("sigma n varrho")
 X, M3, Ez, Fz, HG = sp.symbols("X m_3 E_2 F H_G")
-Zlo, Zhi, Zp, Zm, N1, N2, Ssum = sp.symbols("z_lo z_hi z_+ z_- n_1 n_2 S")
+Zp, Zm, N1, N2, Ssum = sp.symbols("z_+ z_- n_1 n_2 S")
+Zlo, Zhi = symbol("z_lo", r"z_{\text{low}}"), symbol("z_hi", r"z_{\text{high}}")
 shi, slo = sp.symbols("s_+ s_-")
 
 DERIVATION = d = Derivation(

@@ -3,6 +3,7 @@ import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
+from symfloat.model.symbol_names import symbol
 
 
 a, b, s, F = sp.symbols("a b s F", positive=True)
@@ -19,9 +20,10 @@ tan2, tan1, um, OB, tanlim, Sw = sp.symbols("tan^2varphi_1 tanvarphi_1 u_m OB ta
 GMc, shi, slo, s80hi, s80lo, sedhi, sedlo = sp.symbols("GM_c s_+ s_- s_80+ s_80- s_e+ s_e-")
 Ah, Jtri, Dlt, AII = sp.symbols("A_h J_T Delta A_II")
 Fg, Tg, tan2g = sp.symbols("F_g T_g tan^2varphi_g")
-h_, A_, Tx, Ty, TL, aE, alph, Sc, T1n, F1n, umn, rE = sp.symbols(
-    "h A T_x T_y T_L a_E alpha Sigma_c T_1n F_1n u_mn r_E")
-T1F, tan2F = sp.symbols("T_1F tan^2varphi_F")
+h_, A_, Tx, Ty, TL, aE, alph, Sc, rE = sp.symbols("h A T_x T_y T_L a_E alpha Sigma_c r_E")
+# the regular n-gon prism's T_1, F_1, u_m; its T_1 at a given base area F
+T1n, F1n, umn = symbol("T_1n", r"T_{1}^{(n)}"), symbol("F_1n", r"F_{1}^{(n)}"), symbol("u_mn", r"u_{m}^{(n)}")
+T1F, tan2F = symbol("T_1F", r"T_{1}^{(n)}(F)"), sp.Symbol("tan^2varphi_F")
 
 DERIVATION = d = Derivation(
     id="scheeffer-vi-cf",

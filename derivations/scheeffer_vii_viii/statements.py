@@ -2,17 +2,23 @@
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
+from symfloat.model.symbol_names import symbol
 
 R = sp.Rational
 b, s, F1, F, xs, T, Tp, f, xs1, tau = sp.symbols("b s F_1 F x_s T T^1 f x_s^1 tau", positive=True)
 ys, x0, PO, Pw, Pf, x, y, z, xp, mu = sp.symbols("y_s x_0 P_O P_w P_f x y z x' mu", real=True)
 # results (VII)
-phi2, V, V3, My, X3, Z3, M3, e3, e2, V1 = sp.symbols("varphi_2 V V_3 M_y V_3x_3 V_3z_3 M_3 e_3 e_2 V_1")
+phi2, V, V3, My, M3, e3, e2, V1 = sp.symbols("varphi_2 V V_3 M_y M_3 e_3 e_2 V_1")
+X3, Z3 = symbol("V_3x_3", r"V_{3} x_{3}"), symbol("V_3z_3", r"V_{3} z_{3}")        # the moments as printed
 Pxy, Pwh, I2, F2, m_, n_, T2, T21, Ks, J1, k_, T1, T11 = sp.symbols(
     "P_xy P_ABCD I_2 F_2 m n T_2 T_2^1 k_s J_1 k T_1 T_1^1")
 Tmu, Tm, D = sp.symbols("T_mu T_m D")
 # results (VIII)
-phi3, x01, V3c, My3, X3c, Z3c, M3c = sp.symbols("varphi_3 x_0^1 V_3c M_y3 V_3cx_3 V_3cz_3 M_3c")
+phi3, x01, My3 = sp.symbols("varphi_3 x_0^1 M_y3")
+# VIII prints V_3, V_3 x_3, V_3 z_3, M_3 again for the third region; marked here by the section's number
+V3c, X3c, Z3c, M3c = (symbol(name, tex) for name, tex in (
+    ("V_3c", r"V_{3}^{\text{VIII}}"), ("V_3cx_3", r"(V_{3} x_{3})^{\text{VIII}}"),
+    ("V_3cz_3", r"(V_{3} z_{3})^{\text{VIII}}"), ("M_3c", r"M_{3}^{\text{VIII}}")))
 
 DERIVATION = d = Derivation(
     id="scheeffer-vii-viii",
@@ -182,7 +188,7 @@ d.step("D", Eq(D, Tm - V1 * e2), "definition", result=D,
        note="Duhamel: V_1 times the metacentric height of the position; stable iff D > 0 (scheeffer-iv-v (33))")
 d.step("e3-cos", (e3 * c2, b / 2 - Z3 / V3 + sn2 * M3 / V3), "algebra", uses=("e3", "M3"),
        note="so e_3 cos phi_2 = b/2 - z_3 wherever M_3 = 0")
-M2h, M2y = sp.symbols("M_2h M_2y")
+M2h, M2y = symbol("M_2h", r"M_{2,h}"), symbol("M_2y", r"M_{2,y}")
 d.step("balance-h", Eq(M2h, -hor2.dot(MS3)), "definition", result=M2h,
        note="V_1 h.(S_2 - S) from V S = V_1 S_2 + V_3 S_3")
 d.step("balance-y", Eq(M2y, -My), "definition", result=M2y)

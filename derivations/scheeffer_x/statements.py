@@ -3,6 +3,7 @@ import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Cases, Derivation, Eq, Erratum, Holds, RealRoots
 from symfloat.model.claim import as_printed
+from symfloat.model.symbol_names import symbol
 
 a, om, rho, rho1, k, s, L = sp.symbols("a omega rho rho_1 k s L", positive=True)
 x, y, X, Y, Z, w, xl = sp.symbols("x y X Y Z w x_l", real=True)
@@ -12,10 +13,12 @@ tg, ctg = si / co, co / si                      # tg, cotg of the text
 
 # quantities established by steps
 u_, v_, h_, h1_, IH, IG, P, P1, rs = sp.symbols("u v h h_1 J_HPB J_GPB P P_1 rho_*")
-Sq, Tb, Td, M2, Ar = sp.symbols("J_sq J_top J_bot M_2 A_BHG")
+Tb, Td, M2, Ar = sp.symbols("J_top J_bot M_2 A_BHG")
+Sq = symbol("J_sq", r"J_{\text{square}}")
 Tq, zq, V3, kq, MX, Mz, dE, F0, F1v = sp.symbols("T z V_3 k_171 M_X M_z E_theta f_0 f_1")
-s172, Sw45, Vt, s56, It, uD, GMt, Ih, Bh, GMh, k3, Me, NVp, NVd = sp.symbols(
-    "s_172 S_45 V_t s_56 I_t uD_t GM_t I_h BG_h GM_h k_3 M_e N_p N_d")
+s172, Sw45, Vt, s56, It, GMt, Ih, Bh, GMh, k3, Me, NVp, NVd = sp.symbols(
+    "s_172 S_45 V_t s_56 I_t GM_t I_h BG_h GM_h k_3 M_e N_p N_d")
+uD = symbol("uD_t", r"u_{D,t}")             # the dry tetrahedron's centroid D along the up vector u
 
 DERIVATION = d = Derivation(
     id="scheeffer-x",
@@ -107,7 +110,7 @@ d.quote("168", "(168)",
         r"\left\{ 2 a \cdot \cos \omega - \varrho (\cos \omega + \sin \omega) \right\} = 0 \quad (168)$$",
         reading=(P, h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si))),
         note="the values go into (167), not (104) as the words say (erratum 104-reference)")
-Tm104, Ve104 = sp.symbols("T_m V_3e_3", positive=True)   # the members of (104), T_m - V_3 e_3 > 0, as printed
+Tm104, Ve104 = sp.Symbol("T_m", positive=True), symbol("V_3e_3", r"V_{3} e_{3}", positive=True)   # the members of (104), T_m - V_3 e_3 > 0, as printed
 Ul, Vl = sp.symbols("u_l v_l", real=True)                 # the letters u, v into which the values are inserted
 d.domain.update({Tm104: (0.1, 1), Ve104: (0.1, 1)})
 U_VAL, V_VAL = (rho - a / 2) * co + a / 2 * si, a / 2 * co - (a / 2 - rho * tg) * si     # the printed u, v

@@ -1,7 +1,9 @@
 """The annotated edition: a source's transcription with every quoted span marked by its verdict.
 
 A printed formula's excerpt is found where the coverage ledger finds it (its first occurrence in
-the transcription; a mark that would begin or end inside a math span takes the whole span).  The
+the transcription; a mark that would begin or end inside a math span takes the whole span).  A fault
+printed in several places (an erratum with ``places``) is marked at every occurrence of its words, each
+mark linking to the one note of its erratum (:func:`places`).  The
 ledger (:func:`symfloat.report.ledger.account`, given these quotes) says how every other math span
 and quantitative sentence is accounted for: waived with its reason (lost text and figures among
 them) or not yet accounted for.  A mark (:data:`MARKS`) carries a sign, words and a shade; an
@@ -18,6 +20,7 @@ import html
 import re
 from collections import Counter
 
+from ..registry import statements
 from ..model.erratum import apparatus
 from ..model.source import Source
 from ..model.span import math_intervals
@@ -30,7 +33,8 @@ from .text import excerpt_html, render
 from .typeset import typeset
 
 __all__ = ["MARKS", "EVIDENCE_WORDS", "mark_of", "badge", "quotes", "edition_page", "note", "formula_anchor",
-           "cell_label", "notebook_anchor", "witness_line", "reason_of", "correction_html", "anchors", "citation_html"]
+           "cell_label", "notebook_anchor", "witness_line", "reason_of", "correction_html", "anchors", "citation_html",
+           "fault_words", "places"]
 
 # The marks of the edition, gravest first (a stretch quoted twice shows the first): mark -> (sign, words).
 # An erratum is a fault of the original or a correction of the transcription (docs/errata-kinds.md).
@@ -74,6 +78,16 @@ def notebook_anchor(derivation: str, cell: str) -> str:
     return make_id(cell_label(derivation, cell))
 
 
+def _widened(a: int, b: int, maths) -> tuple[int, int]:
+    """*a*..*b* widened to the whole math spans it begins or ends in."""
+    for s, e, _ in maths:
+        if s < a < e:
+            a = s
+        if s < b < e:
+            b = e
+    return a, b
+
+
 def quotes(text: str, formulas) -> list[tuple[int, int, str]]:
     """``(start, end, formula id)`` of each formula's excerpt in *text*, widened to whole math spans."""
     maths = math_intervals(text)
@@ -82,14 +96,27 @@ def quotes(text: str, formulas) -> list[tuple[int, int, str]]:
         at = text.find(f["printed"])
         if at < 0:
             raise ValueError(f"{f['id']}: the printed excerpt is not in the transcription")
-        a, b = at, at + len(f["printed"])
-        for s, e, _ in maths:
-            if s < a < e:
-                a = s
-            if s < b < e:
-                b = e
-        out.append((a, b, f["id"]))
+        out.append((*_widened(at, at + len(f["printed"]), maths), f["id"]))
     return out
+
+
+def fault_words(f: dict, records: Records) -> str:
+    """The words of formula *f*'s fault where its erratum lists other places (``places``): the erratum's
+    ``fault``, else the whole excerpt, as the derivation declares it; "" for a fault printed once."""
+    erratum = records.erratum_of.get(f["id"])
+    if not erratum or not erratum.get("places"):
+        return ""
+    derivation, name = f["id"].split("/", 1)
+    declared = next(p for p in statements(derivation).printed if p.name == name).erratum
+    return declared.fault or f["printed"]
+
+
+def places(text: str, fault: str, quote: tuple[int, int]) -> list[tuple[int, int]]:
+    """``(start, end)`` of every other place of a repeated fault: each occurrence of its words *fault* in
+    *text* outside its quote's stretch *quote*, widened to whole math spans."""
+    maths = math_intervals(text)
+    return [_widened(m.start(), m.end(), maths) for m in re.finditer(re.escape(fault), text)
+            if not quote[0] <= m.start() < quote[1]]
 
 
 def witness_line(numeric) -> str:
@@ -270,6 +297,9 @@ def edition_page(source: Source, records: Records) -> str:
     rank = {v: i for i, v in enumerate(MARKS)}
     mark = {f["id"]: mark_of(f, records) for f in formulas}
     ends = {fid: e for _, e, fid in quoted}
+    again = [(s, e, fid) for a, b, fid in quoted for s, e in places(text, fault_words(records.formula(fid), records),
+                                                                     (a, b))]
+    cuts |= {x for s, e, _ in again for x in (s, e)}
 
     def wrap(a, b, body):
         fids = sorted((fid for s, e, fid in quoted if s < b and a < e),
@@ -283,6 +313,15 @@ def edition_page(source: Source, records: Records) -> str:
                     f'<span class="visually-hidden"> ({MARKS[mark[fids[0]]][1]})</span>' if ends[fids[0]] == b else "")
             return (f'<a class="q v-{mark[fids[0]]}" href="#{formula_anchor(fids[0])}" '
                     f'title="{html.escape(title)}">{body}{sign}</a>' + (f'<sup class="more">{more}</sup>' if more else ""))
+        repeated = [(e, fid) for s, e, fid in again if s < b and a < e]
+        if repeated:                    # another place of a repeated fault: the same mark, the one erratum
+            end, fid = repeated[0]
+            sign = (f'<span class="sign" aria-hidden="true">{MARKS[mark[fid]][0]}</span>'
+                    f'<span class="visually-hidden"> ({MARKS[mark[fid]][1]}, printed here too)</span>'
+                    if end == b else "")
+            title = "The same fault printed here too. " + _title(records.formula(fid), records)
+            return (f'<a class="q again v-{mark[fid]}" href="#{formula_anchor(fid)}" '
+                    f'title="{html.escape(title)}">{body}{sign}</a>')
         inner = [e for e in ledger_marks if e.span.start < b and a < e.span.end]
         if not inner:
             return body
