@@ -61,14 +61,18 @@ EXPECTED_ERRATA = {
     ("sine", "transcription", "medium"),               # §205 (xy+yt)/(xx+yy) for (xu+yt)/(xx+yy)
     ("moment-PQ-sine", "transcription", "high"),       # §208 'l' for I in I - m^2 (I - K)
     ("moment-45", "transcription", "high"),            # §208 (l+K)/2 for (I+K)/2
-    ("rhombus-twice", "claim", "high"),                # §214 'twice': four times at equal length/breadth
-    ("centroid-equation", "transcription", "medium"),  # §215 colons for multiplication dots, Cb for Cc
+    ("rhombus-twice", "claim", "medium"),              # §214 'twice': four times at equal length/breadth;
+                                                       # medium: per unit of area it is twice (its objection)
+    ("centroid-equation", "transcription", "low"),     # §215 colons for multiplication dots, Cb for Cc; low:
+                                                       # Cb stands again in §218, print or scan (its objection)
     ("centroid", "transcription", "medium"),           # §215 Ce for Cc
     ("Ace-cubes", "transcription", "low"),             # §216 ∫y^2dx for ∫y^3dx
-    ("quad-L", "transcription", "medium"),             # §216 D(ac+bc+cc)/3 for D(aa-ac+cc)/3
+    ("quad-L", "transcription", "low"),                # §216 D(ac+bc+cc)/3 for D(aa-ac+cc)/3; low: a letter
+                                                       # and a sign, print or scan (its objection, issue 31)
     ("quad-K", "transcription", "medium"),             # §218 D·Ce^2/4 for D·Cc^2/4
     ("ellipse-quadrant-area", "transcription", "low"),  # §219 pi/4 for pi ab/4 = D/2
-    ("Cc-again", "transcription", "medium"),           # §218 Cb for Cc again (second pass, line 126)
+    ("Cc-again", "transcription", "low"),              # §218 Cb for Cc again (second pass, line 126); low
+                                                       # with its booking centroid-equation
 }
 
 
@@ -78,7 +82,7 @@ def test_second_pass_Cb_of_218_is_booked_as_the_repeat_of_215():
     assert p.excerpt in TEXT.splitlines()[125] and "Cb" in p.excerpt
     assert p.erratum.same_as == "euler-192-219/centroid-equation"
     booked = next(q for q in D.printed if q.name == "centroid-equation").erratum
-    assert (booked.kind, booked.confidence) == (p.erratum.kind, p.erratum.confidence) == ("transcription", "medium")
+    assert (booked.kind, booked.confidence) == (p.erratum.kind, p.erratum.confidence) == ("transcription", "low")
 
 
 def test_the_errata_are_exactly_the_expected_ones(report):

@@ -376,7 +376,9 @@ def test_the_144_correction_must_hold():
 @pytest.mark.parametrize("name, kind, confidence", [
     ("one-root-between", "transcription", "medium"),      # transcription line 1489: 'z = oo' for 'z = -oo'
     ("positive-whole-region", "claim", "medium"),         # line 1539: F > 0 on the whole region for n > n_1
-    ("164-reference", "misprint", "medium"),              # line 1735: 'die Bedingung 164' (meant: before 164a)
+    ("164-reference", "misprint", "low"),                 # line 1735: 'die Bedingung 164' (meant: before 164a);
+                                                          # low: the print's number or a lost 'a' of '164a' (its
+                                                          # objection, issue 31)
     # line 1539: 'für n < n_1 dagegen muss F(z) = 0 zwei Wurzeln haben' - three in the region when F(2 sigma) < 0;
     # the same over-generalisation as positive-whole-region, booked as its repeat (same_as)
     ("two-below-n1", "claim", "medium"),

@@ -97,7 +97,13 @@ d.quote("T1", "IX.A", r"$$T_1 = \frac{c a^2}{12}$$", reading=(T1, c * a ** 2 / 1
         erratum=Erratum("transcription", "high", r"T_1 = \frac{c a^3}{12}",
                         "the moment of the rectangle a x c about its axis parallel to c is c a^3/12; the next "
                         "display and line 'da T_1 = c a^3/12' of the text use a^3, so the scan lost the exponent 3.",
-                        corrected_reading=(T1, c * a ** 3 / 12)))
+                        corrected_reading=(T1, c * a ** 3 / 12),
+                        objection="The exponent 2 may be the print's, a compositor's 2 for 3, and then the fault is "
+                                  "a misprint, not the scan's.",
+                        answer="The author computed with a^3: the next display divides c a^3 by 12 a b c s, and the "
+                               "text writes 'da T_1 = c a^3/12' again before (125) and in (127), beside T_1^1 = a "
+                               "c^3/12. A small superscript 3 read as 2 in one place, where the author's own later "
+                               "use shows the right form, is the scan's; high stands."))
 d.quote("V1-e1", "IX.A", r"$V_1 = a b c \cdot s$  und  $e_1 = \frac{b}{2} (1 - s)$",
         reading=(sp.Matrix([V1, e1]), sp.Matrix([a * b * c * s, b / 2 * (1 - s)])))
 d.quote("stability-condition", "IX.A", r"$$\frac{c a^3}{12 a b c s} - \frac{b}{2} (1 - s) > 0.$$",
@@ -323,7 +329,14 @@ d.quote("133-first", "IX.B",
                         "the centroid of the dry triangle gives 3 m_3 z^3/b = sin phi_2 F(z); the factor 3 is in (133) two "
                         "lines below, written from this display, so the print most likely had it and the scan lost the "
                         "leading 3 (medium: the print may also have dropped it). The '= 0' is the equilibrium condition.",
-                        corrected_reading=(3 * M3 / b * z ** 3, sp.sin(phi_z) * Fz)),
+                        corrected_reading=(3 * M3 / b * z ** 3, sp.sin(phi_z) * Fz),
+                        objection="The display ends in '= 0': at the equilibrium both sides vanish, so without the "
+                                  "factor 3 it is still a true equilibrium condition, and only the sign of m_3 "
+                                  "decides the stability that follows.",
+                        answer="The display first gives m_3 as a function of x, and (133), written from it two lines"
+                               " below, carries 3 m_3; as that identity it is false without the 3, though the factor"
+                               " changes neither the equilibrium nor the sign the text uses. Print or scan lost the "
+                               "leading 3, the scan the likelier: medium."),
         note="x/b = z; phi_2 the tilt belonging to z by (134)")
 d.quote("m3-zero", "IX.B", "In der Gleichgewichtslage muss  $m_3 = 0$  sein",
         reading=(sp.Derivative(Ez, phi), sg / (1 - sg) * h_dir.dot(S3phi)),
@@ -450,7 +463,13 @@ d.quote("144", "(144)", r"$$\left(\frac{a}{b}\right)^2 > 2(1-s)4s-1 \quad (144)$
         erratum=Erratum("transcription", "medium", r"\left(\frac{a}{b}\right)^2 > 2(1-s)(4s-1)",
                         "the converse of (143) needs the same bound 2(1-s)(4s-1) (F(2 sigma) > 0 by (141)); the scan "
                         "lost the parentheses around 4s - 1, which changes the bound (e.g. by 1 - 2(1-s) at any s).",
-                        corrected_reading=((a / b) ** 2 - rho_s, F2s / (2 * sg ** 2))))
+                        corrected_reading=((a / b) ** 2 - rho_s, F2s / (2 * sg ** 2)),
+                        objection="The print may have set 2(1-s)4s-1 as it stands, the compositor dropping the "
+                                  "parentheses, or the author relying on the reader to supply them from (143).",
+                        answer="(141), (143) and (161a) carry the same bound 2(1-s)(4s-1) with its parentheses, and "
+                               "(144) is the converse of (143), so the author had them; brackets dropped in the "
+                               "transcription's formulas are the scan's commoner fault, but a compositor's omission "
+                               "cannot be excluded: medium."))
 d.quote("144-words", "(144)",
         r"Umgekehrt hat  $F(z) = 0$  keine reelle Wurzel zwischen  $z = 2\sigma$  und  $z = 1$ , wenn",
         reading=Holds(sp.Implies(n > rho_s, sp.Eq(RealRoots(F_S, z, 2 * (1 - s), 1), 0)), REGION_143),
@@ -486,7 +505,12 @@ d.quote("145", "(145)",
                         "middle member lost '^2 n'. A scan that drops a superscript and the following letter is "
                         "likelier than a misprint in a line whose other half is right, but both are possible (low).",
                         corrected_reading=(Fz, z ** 4 - sp.Rational(3, 2) * z ** 3 + sg * n * 3 * z - 4 * sg ** 2 * n,
-                                           z ** 4 - sp.Rational(3, 2) * z ** 3 + 3 * sg * n * (z - sp.Rational(2, 3) * 2 * sg))))
+                                           z ** 4 - sp.Rational(3, 2) * z ** 3 + 3 * sg * n * (z - sp.Rational(2, 3) * 2 * sg)),
+                        objection="-4 sigma may be the print's slip, or the author's shorthand for the term he "
+                                  "writes out in the second member.",
+                        answer="(136) has -4 n sigma^2, and the second member of the same line, 3 sigma n(z - "
+                               "(2/3)·2 sigma), expands to it, so the author had the term; whether the print or the "
+                               "scan lost '^2 n' cannot be told: low stands."))
 d.quote("145-monotone", "IX.B",
         r"Daher muss  $F(z)$  für jeden Wert von  $z$  zwischen  $z = 2\sigma$  und  $z = \infty$  mit wachsendem  $n$  "
         r"zunehmen",
@@ -630,7 +654,14 @@ d.quote("one-root-between", "IX.B", r"Zwischen  $z = \infty$  und  $z = 0$  lieg
                         "Minimum', its minus set outside the formula) names the same interval: the minus of -infinity "
                         "is lost. Medium: most likely the scan (it mangles the same minus a line later), but the print "
                         "may have dropped it.",
-                        corrected_reading=(NNEG, 1)),
+                        corrected_reading=(NNEG, 1),
+                        objection="The print may have dropped the minus; or 'zwischen z = ∞ und z = 0' may be the "
+                                  "author's loose way of naming the half-line on the other side of 0.",
+                        answer="On (0, ∞) the sentence is false: F'' = 3z(4z - 3) is negative on (0, 3/4), and the "
+                               "text itself later finds one or three roots there for s > 23/32; its reason, 'F'(z) "
+                               "beständig zunimmt', holds only for z < 0, and the display above lists z = -∞ while "
+                               "the next sentence names '- ∞ und 0', its minus set apart. The lost minus is most "
+                               "likely the scan's, which mangles the same minus a line later: medium."),
         note="read at s = 73/100, n = 251/250 (s > 23/32, 1 <= n < n_1): the number of real roots of F in (0, oo)")
 d.quote("positive-whole-region", "IX.B", r"so ist  $F(z)$  für  $n > n_1$  in dem ganzen Gebiet positiv",
         reading=(sp.Matrix([NREG, NRIGHT, SGN1]), sp.Matrix([0, 0, 1])),
@@ -646,7 +677,14 @@ d.quote("positive-whole-region", "IX.B", r"so ist  $F(z)$  für  $n > n_1$  in d
                         "(161), case I (F(2 sigma) < 0, n > n_1: one equilibrium), uses the right statement; the "
                         "sentence over-generalises it (medium: 'das ganze Gebiet' may be meant loosely as the "
                         "neighbourhood of the minimum).",
-                        corrected_reading=(sp.Matrix([NREG, NRIGHT, SGN1]), sp.Matrix([1, 0, 1]))),
+                        corrected_reading=(sp.Matrix([NREG, NRIGHT, SGN1]), sp.Matrix([1, 0, 1])),
+                        objection="'In dem ganzen Gebiet' may be meant loosely, of the neighbourhood of the minimum "
+                                  "where the double root lies; the author's table (161) handles the left part with "
+                                  "F(2 sigma) and counts right.",
+                        answer="The sentence before names the range, 'für jeden Wert von z zwischen z = 2 sigma und "
+                               "z = ∞', and on it the statement fails: at s = 73/100, n = 51/50 (> n_1) F has the "
+                               "root 0.5586 left of its maximum. That (161) counts right shows the slip changes no "
+                               "result; the loose reading is the alternative behind medium."),
         note="read at s = 73/100, n = 51/50: roots of F in z > 2 sigma, roots right of its maximum, sign(n - n_1)")
 Z_MAX3 = next(r_ for r_ in sp.Poly(sp.diff(quartic, z).subs({n: N_THREE, sg: 1 - S_CT}), z).real_roots()
               if 0 < r_ < sp.Rational(3, 4))
@@ -663,7 +701,15 @@ d.quote("two-below-n1", "IX.B", r"für  $n < n_1$  dagegen muss  $F(z) = 0$  zwe
                         "of the maximum. Table (161), case II, counts three.",
                         corrected_reading=(sp.Matrix([_above(_roots136(N_THREE), 2 * (1 - S_CT)),
                                                       _above(_roots136(N_THREE), Z_MAX3)]), sp.Matrix([3, 2])),
-                        same_as="scheeffer-ix/positive-whole-region"),
+                        same_as="scheeffer-ix/positive-whole-region",
+                        objection="'muss F(z) = 0 zwei Wurzeln haben' may be an existence statement (at least two, "
+                                  "the pair around the minimum), which holds.",
+                        answer="It is the counterpart of 'in dem ganzen Gebiet positiv' (no root in the range) and "
+                               "counts the roots of the same range, where there are three when F(2 sigma) < 0 (at s "
+                               "= 73/100, n = 251/250: 0.5878, 0.7757, 0.8724), as (161) II counts. Read as 'at "
+                               "least two' or as the pair around the minimum it holds; that reading is the "
+                               "alternative behind medium, as for the sentence before on n > n_1, whose booking this"
+                               " repeats."),
         note="read at s = 73/100, n = 251/250: roots of F in z > 2 sigma, and right of its maximum")
 d.quote("maximum-reverse", "IX.B", "Liegt die Doppelwurzel im Maximum, so ist es umgekehrt.",
         reading=(sp.Derivative(quartic.subs(n, nu), nu), 3 * sg * (z - sp.Rational(2, 3) * 2 * sg)),
@@ -699,7 +745,14 @@ d.quote("162a", "(162a)",
                         "sets the table, VII reads n > 1/rho, which holds for every n >= 1 when rho >= 1 and would deny "
                         "the equilibrium of VI. The bracketed (redundant) condition n > 1/rho of VI and the bound rho "
                         "of VII were merged by the scan of the brace table.",
-                        corrected_reading=(sp.Matrix([rho - n, n - rho]), sp.Matrix([-F2s / (2 * sg ** 2), F2s / (2 * sg ** 2)]))),
+                        corrected_reading=(sp.Matrix([rho - n, n - rho]), sp.Matrix([-F2s / (2 * sg ** 2), F2s / (2 * sg ** 2)])),
+                        objection="The print may itself have set VI and VII with one brace as transcribed, a "
+                                  "compositor's or the author's table; the fault would then be the print's.",
+                        answer="The text says just above that conditions implied by the others are bracketed, and "
+                               "(141), (142) give no root in the region for s <= 23/32 iff n > rho; VII as "
+                               "transcribed (n > 1/rho) holds for every n >= 1 when rho >= 1 and would deny VI. A "
+                               "brace table merged by the scan is the likelier, but the print's table cannot be "
+                               "seen: low stands."),
         note="VI: one stable equilibrium iff n < rho, VII: none")
 HGz = (sp.sqrt(2 * a * b * sg * sp.tan(phi)) / sp.sin(phi)).subs(phi, phi_z)
 XLEG = "the print's x is the leg X of the dry triangle (step leg); the module's x is the free leg before it is solved"
@@ -856,7 +909,15 @@ d.quote("HG-complete", "IX.B",
                         "the exact bound is c > 1.0256 b: the clipped box at its equilibrium tilt 0.51975 has the least "
                         "metacentric height +0.0118 b (it changes sign at c = 1.0256 b), completely stable. Medium: "
                         "'wenn' alone states a sufficient condition, which holds.",
-                        corrected_reading=(c ** 2 - 12 * s * a * b * BGz / HGz, 12 * D_perp / (c * HGz))),
+                        corrected_reading=(c ** 2 - 12 * s * a * b * BGz / HGz, 12 * D_perp / (c * HGz)),
+                        objection="'wenn' states a sufficient condition, and the text says as much later ('Es findet"
+                                  " aber sicher Stabilität statt, wenn c grösser als das maximum von H G ist'); HG <"
+                                  " c is sufficient, so the sentence is right.",
+                        answer="The text calls (163) 'die Bedingung für vollkommene Stabilität' and says that 'der "
+                               "genaue Grenzwert' of c/b cannot be given in general, taking HG < c for the exact "
+                               "bound; at s = 73/100, a/b = sqrt(51/50), c/b = 107/100 the box is completely stable "
+                               "with HG = 1.1248 b > c. The sufficient reading of 'wenn' is the alternative behind "
+                               "medium."),
         note="read at s = 73/100, n = 51/50, c/b = 107/100 and the root z of (136) in the region (stable about the "
              "axis): the sign of c - HG against the sign of HG c^3/12 - V BG, the moment of the waterplane across the "
              "axis less V BG (the metacentric height across the axis times V); BG = E of the step 'potential'. The "
@@ -918,7 +979,7 @@ d.quote("unstable-3", "IX.C", r"$$\text{oder } \left(\frac{a}{b}\right)^2 > \fra
         note="sign identity, factor (a/b)^2/(6s(1-s)) times 12 s/a: the a-vertical position is unstable")
 d.quote("164-reference", "IX.C", r"Ist aber die Bedingung 164 nicht erfüllt",
         reading=((c / b) ** 2 - (4 * (1 - s) ** 2 + (a / b) ** 2), 12 * s / a * GM3),
-        erratum=Erratum("misprint", "medium",
+        erratum=Erratum("misprint", "low",
                         r"\text{Ist aber die Bedingung } \left(\frac{b}{a}\right)^2 > 6s(1-s) \text{ (oder 164a) nicht "
                         r"erfüllt}",
                         "The negation the text writes next, (b/a)^2 < 6s(1-s), and its conclusion (the a-vertical "
@@ -928,8 +989,15 @@ d.quote("164-reference", "IX.C", r"Ist aber die Bedingung 164 nicht erfüllt",
                         "which neither decides nor follows from the upright stability in the third (e.g. a = 21/20, "
                         "b = 1, c = 21/10, s = 1/20: (164) fails, yet (b/a)^2 = 0.907 > 6s(1-s) = 0.285). The reference is wrong; "
                         "meant is the condition before (164a) or (164a) itself (which makes 6s(1-s) > 1 > (b/a)^2 when "
-                        "violated). Medium: a lost 'a' of '164a' would be the scan's.",
-                        corrected_reading=((b / a) ** 2 - 6 * s * (1 - s), 12 * s / a * GM3)),
+                        "violated). Low: a lost 'a' of '164a' would be the scan's, a wrong number the print's.",
+                        corrected_reading=((b / a) ** 2 - 6 * s * (1 - s), 12 * s / a * GM3),
+                        objection="'164' may be the scan's reading of '164a', the letter lost as in '162 a', and "
+                                  "(164a) negated gives the same conclusion; the fault would then be the "
+                                  "transcription's.",
+                        answer="Either reading makes the reference point at the condition of the upright position in"
+                               " the third region, not at (164): the print's number of the unnumbered condition "
+                               "before (164a), or a lost letter of '164a'. The two cannot be told apart from the "
+                               "transcription (as for the reference to 55 in VI.C): lowered to low."),
         note="read by the module's rule for conditions: the quantity of the cited condition against the one whose "
              "sign decides the upright stability of the third region (12 s/a times its metacentric height)")
 d.quote("upright-3-range", "IX.C", r"$6s(1-s) < 1$", reading=(1 - 6 * s * (1 - s), 6 * (s - shi) * (s - slo)),
@@ -965,7 +1033,14 @@ d.quote("s-three-quarters", "IX.C",
                         "reverses both inequalities (and the mirror bound 1/4). Two consistent reversals are not a scan "
                         "fault; the text's own derivation (and the clipped box) give s > 3/4, s < 1/4.",
                         corrected_reading=(PW(s - sp.Rational(3, 4), sp.Rational(1, 4) - s),
-                                           PW((1 - rho_s) / (8 * (s - half)), (1 - rho_s.subs(s, 1 - s)) / (8 * (half - s))))),
+                                           PW((1 - rho_s) / (8 * (s - half)), (1 - rho_s.subs(s, 1 - s)) / (8 * (half - s)))),
+                        objection="All four inequalities of the summary are reversed the same way, with the mirror "
+                                  "bound 1/4: a reversal that runs consistently is the author's conclusion, a claim,"
+                                  " rather than a slip of the print.",
+                        answer="The line before derives 'nur für s > 3/4 erfüllt' from 0 < (s - 1/2)(s - 3/4), so "
+                               "the author's reasoning was right and the summary reverses its signs in writing out; "
+                               "a claim or a misprint, the fault is the original's either way, and the text's own "
+                               "derivation (and the clipped box) fixes s > 3/4, s < 1/4. Kind and medium stand."),
         note="sign identity: the region-3 oblique equilibrium needs rho < 1, i.e. (s - 1/2)(s - 3/4) > 0")
 d.quote("table-first", "IX.C",
         r"- I. wenn  $\left(\frac{a}{b}\right)^2 \left\{ \begin{array}{l} > 6s(1-s), \\ > e \end{array} \right.$  eine "
@@ -980,7 +1055,14 @@ d.quote("table-first", "IX.C",
                         "'e' is not defined in the section: the bound is rho = 2(1-s)(4s-1) of (161a) (the condition (130) "
                         "for the oblique position of the first region); the scan read the Greek varrho as e.",
                         corrected_reading=(PWM(sp.Matrix([(a / b) ** 2 - 6 * s * (1 - s), (a / b) ** 2 - rho]), sp.zeros(2, 1)),
-                                           PWM(sp.Matrix([12 * s / b * GMa, Q130]), sp.zeros(2, 1)))),
+                                           PWM(sp.Matrix([12 * s / b * GMa, Q130]), sp.zeros(2, 1))),
+                        objection="'e' stands in every row of the table, the same letter five times: the print's own"
+                                  " letter for the bound, perhaps e_1 or a quantity of a lost line, not a glyph "
+                                  "misread.",
+                        answer="No e without index is defined in the section (e_1 is the distance of the centroids, "
+                               "not a bound on (a/b)^2), and the bound of the first region's oblique position is rho"
+                               " = 2(1-s)(4s-1) of (161a), with 1/rho in (165); the curly ϱ of the fount read as e "
+                               "is the scan's, consistent over one page as a scan is. High stands."),
         note="for s > 1/2 (the mirror with 1 - s): I upright stable; II upright unstable and the oblique (125) stable; "
              "III upright unstable, the oblique beyond the region")
 d.quote("table-third", "IX.C",
@@ -995,7 +1077,10 @@ d.quote("table-third", "IX.C",
                         "as in the table of the first region, e is the scan's varrho; 1/rho is the bound (165).",
                         corrected_reading=(PWM(sp.Matrix([1 / (6 * s * (1 - s)) - (a / b) ** 2, 1 / rho - (a / b) ** 2]), sp.zeros(2, 1)),
                                            PWM(sp.Matrix([(a / b) ** 2 / (6 * s * (1 - s)) * 12 * s / a * GM3, (a / b) ** 2 / rho * Q3]),
-                                              sp.zeros(2, 1)))),
+                                              sp.zeros(2, 1))),
+                        objection="As in the first table: 1/e in every row may be the print's letter.",
+                        answer="1/e is the bound (165), (a/b)^2 <= 1/(2(1-s)(4s-1)) = 1/rho, written as the text "
+                               "names it in (161a); the same ϱ read as e as in the table of the first region: high."),
         note="for s > 1/2 with rho > 0")
 
 
