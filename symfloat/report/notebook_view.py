@@ -18,6 +18,7 @@ from ..model.claim import expressions, members
 from ..model.relation import is_relation, relation_latex
 from ..model.symbol_names import latex
 from ..registry import load
+from .witness_words import error_cells
 
 __all__ = ["NotebookView", "definitions_markdown", "step_markdown", "reading_markdown", "correction_markdown",
            "named", "chain_latex", "show"]
@@ -184,7 +185,8 @@ def _records(title, records) -> list[str]:
         return []
     rows = ["| method | cases | abs. error | rel. error |", "|---|---|---|---|"]
     for r in records:
-        rows.append(f"| {r['method']} | {r.get('cases', 1)} | {r['abs_error']:.1e} | {r['rel_error']:.1e} |")
+        abs_cell, rel_cell = error_cells(r)
+        rows.append(f"| {r['method']} | {r.get('cases', 1)} | {abs_cell} | {rel_cell} |")
     return [title, "\n".join(rows)]
 
 
