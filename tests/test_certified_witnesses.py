@@ -15,6 +15,7 @@ import sympy as sp
 from flint import arb
 
 from symfloat.engine.check import FormulaReport, judge
+from symfloat.engine.construction_witness import Area, Centroid, ConstructionWitness, Coordinates
 from symfloat.engine.enclosure import Unsupported, ball, integral, working_precision
 from symfloat.engine.witness import (CERTIFIED, SECTION, Case, HullWitness, MeasuredWitness, PlaneSections,
                                      SectionIntegral, SideFaces, record_decision)
@@ -166,3 +167,13 @@ def test_an_enclosure_too_wide_is_undecided_and_never_passed():
     assert (verdict, failures) == ("verified", [])
     f.identity = {"status": "refuted"}
     assert "the print is refuted but the witnesses agree with it" not in judge(f, True)[2]
+
+
+def test_a_construction_is_enclosed_point_by_point():
+    # the right triangle (0,0,0), (3,0,0), (0,4,0): area 6 by Heron, centroid (1, 4/3, 0) where two medians meet
+    w = ConstructionWitness("s", "a right triangle", ("t",), (Case({}, [(0, 0, 0), (3, 0, 0), (0, 4, 0)]),),
+                            names=("P", "Q", "R"), points=(("S", Centroid("P", "Q", "R")),),
+                            quantity=(Area("P", "Q", "R"), Coordinates("S")))
+    assert w.run({"t": chain(sp.Matrix([6, 1, sp.Rational(4, 3), 0]))})["t"].agrees
+    off = w.run({"t": chain(sp.Matrix([6, 1, sp.Rational(1334, 1000), 0]))})["t"]     # 1.333 one unit off
+    assert record_decision(_certified(off)) == "refuted"

@@ -331,15 +331,14 @@ class MeasuredWitness:
         with working_precision(bits):
             for case, members_, value in zip(self.instances, readings_by_case, enclosures):
                 measured = _components(value)
-                for member in members_:
-                    for r, m in zip(member, measured):
-                        d = _difference(r, m, bits)
-                        scale = _scale(case, (r, m), bits)
-                        worst_upper = max(worst_upper, upper(d))
-                        worst_lower = max(worst_lower, lower(d))
-                        width = min(width, math.ldexp(scale, -bits // 2))
-                        size = upper(_as_ball(r, bits))
-                        worst_rel = max(worst_rel, upper(d) / size if size else upper(d))
+                pairs = [(r, m) for member in members_ for r, m in zip(member, measured)]
+                width = min(width, math.ldexp(_scale(case, [v for pair in pairs for v in pair], bits), -bits // 2))
+                for r, m in pairs:
+                    d = _difference(r, m, bits)
+                    worst_upper = max(worst_upper, upper(d))
+                    worst_lower = max(worst_lower, lower(d))
+                    size = upper(_as_ball(r, bits))
+                    worst_rel = max(worst_rel, upper(d) / size if size else upper(d))
         finite = math.isfinite(worst_upper)
         record.update(abs_error=worst_upper if finite else None, abs_error_lower=worst_lower,
                       rel_error=worst_rel if finite else 0.0, width=width if math.isfinite(width) else 0.0)
