@@ -17,6 +17,7 @@ from flint import arb
 from symfloat.engine.check import FormulaReport, judge
 from symfloat.engine.construction_witness import Area, Centroid, ConstructionWitness, Coordinates
 from symfloat.engine.enclosure import Unsupported, ball, integral, working_precision
+from symfloat.engine.figure_witness import CENTROID, CurveRoot, Figure, FigureWitness, Over
 from symfloat.engine.witness import (CERTIFIED, SECTION, Case, HullWitness, MeasuredWitness, PlaneSections,
                                      SectionIntegral, SideFaces, record_decision)
 
@@ -177,3 +178,27 @@ def test_a_construction_is_enclosed_point_by_point():
     assert w.run({"t": chain(sp.Matrix([6, 1, sp.Rational(4, 3), 0]))})["t"].agrees
     off = w.run({"t": chain(sp.Matrix([6, 1, sp.Rational(1334, 1000), 0]))})["t"]     # 1.333 one unit off
     assert record_decision(_certified(off)) == "refuted"
+
+
+def test_plane_figures_polygons_exact_strips_by_rigorous_quadrature():
+    X, Y, a, b = sp.symbols("X Y a b", positive=True)
+    case = Case({a: 3, b: 2})
+    ellipse = Figure.strips(Y, X, -a, a, (-b * sp.sqrt(1 - X ** 2 / a ** 2), b * sp.sqrt(1 - X ** 2 / a ** 2)))
+    # ∫∫ x² over the ellipse: pi a³ b / 4 (= 27 pi / 2 here); the coefficient 1/4 read 0.251 is refuted
+    w = FigureWitness("e", "the ellipse", ("m",), (case,), coords=(X, Y), figure=ellipse, quantity=Over(X ** 2))
+    assert w.run({"m": chain(sp.pi * a ** 3 * b / 4)})["m"].agrees
+    assert record_decision(_certified(w.run({"m": chain(sp.Rational(251, 1000) * sp.pi * a ** 3 * b)})["m"])) \
+        == "refuted"
+    # the triangle (0,0), (a,0), (0,b): centroid (a/3, b/3), exact: the difference is a ball of radius 0
+    tri = FigureWitness("t", "a triangle", ("c",), (case,), coords=(X, Y),
+                        figure=Figure.polygon([(0, 0), (a, 0), (0, b)]), quantity=(CENTROID[0], CENTROID[1]))
+    record = _certified(tri.run({"c": chain(sp.Matrix([a / 3, b / 3]))})["c"])
+    assert record_decision(record) == "agrees" and record["abs_error"] == 0.0
+
+
+def test_a_curve_root_is_proven_by_a_sign_change():
+    X, Y, a, b = sp.symbols("X Y a b", positive=True)
+    w = CurveRoot("y", "the ellipse's ordinate", ("y",), (Case({a: 2, b: 1, X: sp.Rational(1, 2)}),),
+                  equation=X ** 2 / a ** 2 + Y ** 2 / b ** 2 - 1, variable=Y, bracket=(0, b))
+    assert w.run({"y": chain(b * sp.sqrt(1 - X ** 2 / a ** 2))})["y"].agrees       # sqrt(15) / 4
+    assert record_decision(_certified(w.run({"y": chain(sp.Rational(9683, 10000))})["y"])) == "refuted"  # 0.9682 + 1

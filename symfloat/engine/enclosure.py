@@ -35,7 +35,7 @@ from contextlib import contextmanager
 import sympy as sp
 from flint import acb, arb, ctx
 
-__all__ = ["Unsupported", "ball", "integral", "working_precision", "exact", "upper", "lower"]
+__all__ = ["Unsupported", "ball", "integral", "real_function", "sign_change_root", "working_precision", "exact", "upper", "lower"]
 
 
 class Unsupported(ValueError):
@@ -201,14 +201,46 @@ def ball(expr, prec: int, at: dict | None = None) -> arb:
         return _real(f(tuple(acb(at[v]) for v in variables), False), e)
 
 
-def integral(expr, var, lo, hi, prec: int) -> arb:
-    """``∫_lo^hi expr dvar`` (*expr* closed but for *var*; *lo*, *hi* closed SymPy numbers or balls) as a ball
-    at *prec* bits, by ``acb.integral`` with its goal ``2^-prec`` relative; non-finite when the integrand
-    is not holomorphic near the path (see the module)."""
-    f = _compile(sp.sympify(expr), (var,))
+def real_function(expr, variables):
+    """*expr* (closed but for *variables*) as a function of their balls returning a real ball, at the
+    working precision of the call: compiled once, for an expression evaluated many times."""
+    f = _compile(sp.sympify(expr), tuple(variables))
+    return lambda *values: _real(f(tuple(acb(v) for v in values), False), expr)
+
+
+def sign_change_root(f, lo: float, hi: float, prec: int) -> arb:
+    """A root of the real function *f* (of a ball) in ``[lo, hi]``, where ``f(lo)`` and ``f(hi)`` are balls of
+    strictly opposite signs, as a ball of radius at most ``2^-prec (1 + |root|)`` or as narrow as the signs
+    of *f* allow: bisection with exact dyadic midpoints, each half kept where the sign change is proven
+    (intermediate value theorem).  Non-finite when the signs at the ends are not proven opposite."""
     with working_precision(prec):
+        a, b = arb(lo), arb(hi)
+        fa, fb = f(a), f(b)
+        if not ((fa < 0 and fb > 0) or (fa > 0 and fb < 0)):
+            return arb.nan()
+        negative_at_a = fa < 0
+        while (b - a) > arb(2) ** -prec * (1 + abs(a)):
+            m = (a + b) / 2                 # exact: a dyadic midpoint of dyadic ends
+            fm = f(m)
+            if (fm < 0) == negative_at_a and (fm < 0 or fm > 0):
+                a = m
+            elif fm < 0 or fm > 0:
+                b = m
+            else:
+                break
+        return a.union(b)
+
+
+def integral(expr, var, lo, hi, prec: int, at: dict | None = None) -> arb:
+    """``∫_lo^hi expr dvar`` (*expr* closed but for *var* and the symbols of *at*, given as balls; *lo*, *hi*
+    closed SymPy numbers or balls) as a ball at *prec* bits, by ``acb.integral`` with its goal ``2^-prec``
+    relative; non-finite when the integrand is not holomorphic near the path (see the module)."""
+    constants = tuple(at or ())
+    f = _compile(sp.sympify(expr), (var, *constants))
+    with working_precision(prec):
+        fixed = tuple(acb(at[c]) for c in constants)
         a, b = (x if isinstance(x, arb) else ball(x, prec) for x in (lo, hi))
-        value = acb.integral(lambda z, analytic: f((z,), analytic), a, b)
+        value = acb.integral(lambda z, analytic: f((z, *fixed), analytic), a, b)
         if not value.is_finite():
             return arb.nan()
         return _real(value, f"the integral of {expr}")

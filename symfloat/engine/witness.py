@@ -307,6 +307,8 @@ class MeasuredWitness:
             seconds += time.perf_counter() - t0
             if enclosures is not None and any(e is None for e in enclosures):
                 return None
+            if enclosures is not None and not all(_finite(e) for e in enclosures):
+                enclosures, failure = None, f"no finite enclosure at {bits} bits"
             for target in sorted(pending):
                 record = self._decision(exact_readings[target], enclosures, bits, allowances.get(target.split("#")[0]),
                                         seconds, failure)
@@ -379,6 +381,10 @@ class MeasuredWitness:
                                 "rel_error": worst_rel, "seconds": seconds,
                                 "cases": len(self.instances), "rel_tolerance": max(method.tolerance, 1e-50)})
         return out
+
+
+def _finite(value) -> bool:
+    return all(not isinstance(v, arb) or v.is_finite() for v in _components(value))
 
 
 def _value_ball(v) -> arb:
