@@ -202,3 +202,11 @@ def test_a_curve_root_is_proven_by_a_sign_change():
                   equation=X ** 2 / a ** 2 + Y ** 2 / b ** 2 - 1, variable=Y, bracket=(0, b))
     assert w.run({"y": chain(b * sp.sqrt(1 - X ** 2 / a ** 2))})["y"].agrees       # sqrt(15) / 4
     assert record_decision(_certified(w.run({"y": chain(sp.Rational(9683, 10000))})["y"])) == "refuted"  # 0.9682 + 1
+
+
+def test_a_reading_without_a_rigorous_rule_is_undecided_and_still_compared():
+    # Gamma is not on the enclosure's whitelist: 4/3 pi r^3 written as Gamma(1/2)^2 4/3 r^3 (Gamma(1/2)^2 = pi)
+    out = SPHERE.run({"v": chain(sp.gamma(sp.Rational(1, 2), evaluate=False) ** 2 * sp.Rational(4, 3) * r ** 3)})["v"]
+    record = _certified(out)
+    assert "gamma" in record["unsupported"] and record_decision(record) == "undecided" and out.undecided
+    assert [record_decision(r) for r in out.records[1:]] == ["agrees"] * len(SPHERE.methods)    # the former route

@@ -277,7 +277,7 @@ class MeasuredWitness:
                 out = self._compared(readings[target], measured)
             else:
                 record, enclosures, bits = certified[target]
-                if enclosures is None:       # a node without a rigorous rule: undecided, the methods compared
+                if "unsupported" in record:   # a node without a rigorous rule: undecided, the methods compared
                     out = self._compared(readings[target], measured)
                     out.records.insert(0, record)
                 else:
@@ -328,6 +328,13 @@ class MeasuredWitness:
         if failure:
             record["unsupported"] = failure
             return record
+        try:
+            return self._bounds(record, readings_by_case, enclosures, bits)
+        except Unsupported as exc:         # the reading has a node without a rigorous rule
+            record["unsupported"] = str(exc)
+            return record
+
+    def _bounds(self, record, readings_by_case, enclosures, bits):
         worst_upper = worst_lower = worst_rel = 0.0
         width = float("inf")
         with working_precision(bits):
@@ -352,8 +359,6 @@ class MeasuredWitness:
         records = []
         for method, (values, seconds) in measured.items():
             worst_abs = worst_rel = 0.0
-            if enclosures is None:
-                continue
             with working_precision(bits):
                 for value, enclosure in zip(values, enclosures):
                     for v, e in zip(_components(value), _components(enclosure)):
