@@ -125,20 +125,29 @@ _UNARY = {
 
 
 def _constant(e):
-    """A number node as a function of the working precision (evaluated when called, at ``ctx.prec``)."""
+    """A number node as a function of the working precision: evaluated at ``ctx.prec`` when first called at
+    that precision, kept for the calls at the same precision (an integrand is evaluated thousands of times)."""
     if isinstance(e, sp.Rational):           # Integer too: an exact integer, or p / q rounded once
-        return lambda: acb(exact(e))
-    if isinstance(e, sp.Float):
+        make = lambda: acb(exact(e))  # noqa: E731
+    elif isinstance(e, sp.Float):
         sign, man, exp, _ = e._mpf_
         value = arb(-int(man) if sign else int(man)) * arb(2) ** int(exp)     # exact: a dyadic number
-        return lambda: acb(value)
-    if e is sp.pi:
-        return lambda: acb(arb.pi())
-    if e is sp.E:
-        return lambda: acb(arb(1).exp())
-    if e is sp.I:
-        return lambda: acb(0, 1)
-    raise Unsupported(f"no enclosure for the number {e} ({type(e).__name__})")
+        make = lambda: acb(value)  # noqa: E731
+    elif e is sp.pi:
+        make = lambda: acb(arb.pi())  # noqa: E731
+    elif e is sp.E:
+        make = lambda: acb(arb(1).exp())  # noqa: E731
+    elif e is sp.I:
+        make = lambda: acb(0, 1)  # noqa: E731
+    else:
+        raise Unsupported(f"no enclosure for the number {e} ({type(e).__name__})")
+    kept = {}
+
+    def at_precision():
+        if ctx.prec not in kept:
+            kept[ctx.prec] = make()
+        return kept[ctx.prec]
+    return at_precision
 
 
 def _compile(e, variables):

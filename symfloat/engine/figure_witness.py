@@ -279,10 +279,6 @@ def _polygon_exact(vertices, f, coords):
     return sum(k * raw[m] for m, k in poly.terms())
 
 
-_NODES = ((-sp.sqrt(sp.Rational(3, 5)), sp.Rational(5, 9)), (sp.Integer(0), sp.Rational(8, 9)),
-          (sp.sqrt(sp.Rational(3, 5)), sp.Rational(5, 9)))
-
-
 def _enclosed_integral(figure, f, bits, at):
     """∫∫ f over a figure of strips (∫ f over an interval) as a ball, *at* the balls of :data:`CENTROID`."""
     if figure.kind == "interval":
@@ -296,11 +292,19 @@ def _enclosed_integral(figure, f, bits, at):
             degree = None
         if degree is None or degree > 5:
             raise Unsupported(f"the integrand {f} is no polynomial of degree at most 5 across the chords")
-        half, mid = (ends[1] - ends[0]) / 2, (ends[1] + ends[0]) / 2
-        integrand = half * sum(w * sp.sympify(f).xreplace({across: mid + half * u}) for u, w in _NODES)
+        antiderivative = sp.integrate(sp.Poly(f, across).as_expr(), across)     # a polynomial's: exact
+        integrand = antiderivative.xreplace({across: ends[1]}) - antiderivative.xreplace({across: ends[0]})
     points = sorted([lo, *breaks, hi], key=lambda e: float(e))
     with working_precision(bits):
-        return sum((integral(integrand, var, a, b, bits, at) for a, b in zip(points, points[1:])), arb(0))
+        return sum((integral(_signed(integrand, var, a, b), var, a, b, bits, at) for a, b in zip(points, points[1:])),
+                   arb(0))
+
+
+def _signed(expr, var, a, b):
+    """*expr* on the piece ``[a, b]`` with ``|var|`` written as ``var`` or ``-var`` where the piece fixes its sign
+    (a break at 0 is there for that): holomorphic then, where ``|var|`` is not at the piece's end 0."""
+    sign = 1 if a >= 0 else -1 if b <= 0 else 0
+    return expr.xreplace({sp.Abs(var): sign * var}) if sign else expr
 
 
 def _at_deep(x, params):

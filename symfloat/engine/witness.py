@@ -196,14 +196,7 @@ def _scale(case, values, prec) -> float:
 CERTIFIED = "Arb ball arithmetic"   # the certified method's name in a record
 
 
-def _start_bits(methods) -> int:
-    """The certified method's first precision: 128 bits, or enough to measure the finest method's error
-    (its digits in bits and 32 more, 3.33 dps + 32, rounded up to a power of two)."""
-    need = max((3.33 * getattr(m, "dps", 15) + 32 for m in methods), default=0)
-    bits = 128
-    while bits < need:
-        bits *= 2
-    return bits
+START_BITS = 128    # the certified method's first precision; doubled up to 8 times it while undecided
 
 
 @dataclass(frozen=True)
@@ -225,12 +218,13 @@ class MeasuredWitness:
       rounding ``t`` (half a unit in the last printed digit, from ``allowances``; 0 for an exact formula),
       agreeing when ``|d| <= t + width`` with ``width = scale * 2^(-bits/2)`` (``scale`` the magnitude of
       the case's parameters, the reading and the quantity: half the working bits must survive), else
-      **undecided**: the precision is doubled (from :func:`_start_bits` up to 8 times it) and the
+      **undecided**: the precision is doubled (from :data:`START_BITS` up to 8 times it) and the
       formula decided anew; still undecided at the cap, the record says so;
     * records the certified decision (``method`` :data:`CERTIFIED`, ``certified``, ``bits``, the proven
       bounds ``abs_error_lower <= |d| <= abs_error``, ``width``, ``abs_tolerance``) and, for each other
-      method, its **proven error** against the enclosure, ``|value - mid| + rad`` (``proven``), held to the
-      method's ``rel_tolerance`` (a method that misses its own accuracy fails its self-check).
+      method, its **proven error** against the enclosure, ``|value - mid| + rad`` (``proven``; a method
+      finer than the enclosure shows about its radius), held to the method's accuracy plus twice the
+      enclosure's relative radius, ``rel_tolerance`` (a method that misses it fails its self-check).
 
     A kind without ``enclose`` (it returns ``None``) keeps the former comparison: each method's
     measurement against the reading at :data:`REFERENCE_DIGITS`, under the method's ``rel_tolerance``."""
@@ -294,7 +288,7 @@ class MeasuredWitness:
     def _certified(self, exact_readings, allowances):
         """target -> (its certified record, the enclosures it was decided with, their bits); ``None`` when the
         kind has no rigorous method."""
-        first = _start_bits(self.methods)
+        first = START_BITS
         pending, done, seconds = set(exact_readings), {}, 0.0
         bits = first
         while pending and bits <= 8 * first:
@@ -358,7 +352,7 @@ class MeasuredWitness:
         cases and components (absolute, and relative to the quantity's magnitude)."""
         records = []
         for method, (values, seconds) in measured.items():
-            worst_abs = worst_rel = 0.0
+            worst_abs = worst_rel = resolution = 0.0
             with working_precision(bits):
                 for value, enclosure in zip(values, enclosures):
                     for v, e in zip(_components(value), _components(enclosure)):
@@ -367,9 +361,10 @@ class MeasuredWitness:
                         size = lower(e)
                         worst_abs = max(worst_abs, err)
                         worst_rel = max(worst_rel, err / size if size else err)
+                        resolution = max(resolution, upper(e.rad()) / size if size else upper(e.rad()))
             records.append({"method": method.name, "abs_error": worst_abs, "rel_error": worst_rel, "seconds": seconds,
                             "cases": len(self.instances), "proven": True,
-                            "rel_tolerance": max(method.tolerance, 1e-50)})
+                            "rel_tolerance": max(method.tolerance, 1e-50) + 2 * resolution})
         return records
 
     def _compared(self, reading, measured):

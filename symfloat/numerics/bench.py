@@ -22,7 +22,7 @@ method that applies to its kind:
   highest-precision one the reference where no exact reference exists.
 
 Every witness kind with a certified method (``enclose``, issue 29) is also measured in Arb ball arithmetic
-at 128 and 256 bits (:class:`Enclosure`).
+at 64 and 128 bits (:class:`Enclosure`).
 
 The reference of a targeted formula is the exact value of its valid reading
 (the reading as printed when no erratum is declared, the corrected reading
@@ -59,8 +59,8 @@ __all__ = ["Measurement", "Bench", "methods_for", "newton_cotes", "run_bench", "
 
 DIGITS = (15, 30, 50, 100)
 REFERENCE_DPS = 100
-REFERENCE_BITS = 512          # the Arb enclosure a formula without a closed exact reading is measured against
-ARB_BITS = (128, 256)
+REFERENCE_BITS = 256          # the Arb enclosure a formula without a closed exact reading is measured against
+ARB_BITS = (64, 128)
 FLOAT64_ORDERS = (2, 3, 4, 6, 8, 12, 16)
 PANELS = (2, 4, 8, 16, 32, 64)
 FAMILIES = {
