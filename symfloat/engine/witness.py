@@ -223,8 +223,9 @@ class MeasuredWitness:
     * records the certified decision (``method`` :data:`CERTIFIED`, ``certified``, ``bits``, the proven
       bounds ``abs_error_lower <= |d| <= abs_error``, ``width``, ``abs_tolerance``) and, for each other
       method, its **proven error** against the enclosure, ``|value - mid| + rad`` (``proven``; a method
-      finer than the enclosure shows about its radius), held to the method's accuracy plus twice the
-      enclosure's relative radius, ``rel_tolerance`` (a method that misses it fails its self-check).
+      finer than the enclosure shows about its radius), held to ``rel_tolerance``: the method's accuracy
+      plus what the enclosure resolves, twice its relative radius (``|true - mid| + rad``) and ``2^(2-bits)``
+      for the rounding of the difference (a method that misses it fails its self-check).
 
     A kind without ``enclose`` (it returns ``None``) keeps the former comparison: each method's
     measurement against the reading at :data:`REFERENCE_DIGITS`, under the method's ``rel_tolerance``."""
@@ -364,7 +365,7 @@ class MeasuredWitness:
                         resolution = max(resolution, upper(e.rad()) / size if size else upper(e.rad()))
             records.append({"method": method.name, "abs_error": worst_abs, "rel_error": worst_rel, "seconds": seconds,
                             "cases": len(self.instances), "proven": True,
-                            "rel_tolerance": max(method.tolerance, 1e-50) + 2 * resolution})
+                            "rel_tolerance": max(method.tolerance, 1e-50) + 2 * resolution + math.ldexp(1, 2 - bits)})
         return records
 
     def _compared(self, reading, measured):
