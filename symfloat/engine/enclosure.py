@@ -38,6 +38,12 @@ from flint import acb, arb, ctx
 __all__ = ["Unsupported", "ball", "integral", "real_function", "sign_change_root", "working_precision", "exact", "upper", "lower"]
 
 
+# The integrator's effort: at most this many evaluations of the integrand per bit of precision.  A holomorphic
+# integrand with square-root ends (a chord through its vertex) needs about 30; an integrand unbounded at an
+# end (an integrable singularity, (1 - u)^(-1/4)) exhausts any limit, and the enclosure is then not finite.
+EVALUATIONS = 64
+
+
 class Unsupported(ValueError):
     """A SymPy node the enclosure walker has no rigorous rule for (its message names it)."""
 
@@ -243,13 +249,14 @@ def sign_change_root(f, lo: float, hi: float, prec: int) -> arb:
 def integral(expr, var, lo, hi, prec: int, at: dict | None = None) -> arb:
     """``∫_lo^hi expr dvar`` (*expr* closed but for *var* and the symbols of *at*, given as balls; *lo*, *hi*
     closed SymPy numbers or balls) as a ball at *prec* bits, by ``acb.integral`` with its goal ``2^-prec``
-    relative; non-finite when the integrand is not holomorphic near the path (see the module)."""
+    relative and at most ``EVALUATIONS * prec`` evaluations; non-finite when the integrand is not holomorphic
+    near the path or the evaluations run out (see the module)."""
     constants = tuple(at or ())
     f = _compile(sp.sympify(expr), (var, *constants))
     with working_precision(prec):
         fixed = tuple(acb(at[c]) for c in constants)
         a, b = (x if isinstance(x, arb) else ball(x, prec) for x in (lo, hi))
-        value = acb.integral(lambda z, analytic: f((z, *fixed), analytic), a, b)
+        value = acb.integral(lambda z, analytic: f((z, *fixed), analytic), a, b, eval_limit=EVALUATIONS * prec)
         if not value.is_finite():
             return arb.nan()
         return _real(value, f"the integral of {expr}")
