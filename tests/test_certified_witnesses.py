@@ -209,4 +209,5 @@ def test_a_reading_without_a_rigorous_rule_is_undecided_and_still_compared():
     out = SPHERE.run({"v": chain(sp.gamma(sp.Rational(1, 2), evaluate=False) ** 2 * sp.Rational(4, 3) * r ** 3)})["v"]
     record = _certified(out)
     assert "gamma" in record["unsupported"] and record_decision(record) == "undecided" and out.undecided
+    assert record["bits"] == 128                  # no precision raised for a node no precision can enclose
     assert [record_decision(r) for r in out.records[1:]] == ["agrees"] * len(SPHERE.methods)    # the former route

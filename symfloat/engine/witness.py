@@ -307,7 +307,7 @@ class MeasuredWitness:
             for target in sorted(pending):
                 record = self._decision(exact_readings[target], enclosures, bits, allowances.get(target.split("#")[0]),
                                         seconds, failure)
-                if record_decision(record) != "undecided" or bits * 2 > 8 * first or failure:
+                if record_decision(record) != "undecided" or bits * 2 > 8 * first or "unsupported" in record:
                     done[target] = (record, enclosures, bits)
             pending -= set(done)
             if failure:
