@@ -6,7 +6,7 @@ import sympy as sp
 
 from symfloat.engine.construction_witness import (Along, Area, Centroid, ConstructionWitness, Coordinates, Length,
                                                   Meet, Mid, Ratio, Sum)
-from symfloat.engine.witness import Case
+from symfloat.engine.witness import CERTIFIED, Case, record_decision
 
 TETRAHEDRON = [(0, 0, 0), (4, 0, 0), (0, 6, 0), (0, 0, 8)]      # A B C D
 NAMES = ("A", "B", "C", "D")
@@ -47,9 +47,11 @@ def test_lines_meet_where_they_cross():
 
 
 def test_a_wrong_reading_disagrees():
-    # mutation: the area of ABC read as 13 instead of 12 is refused by both methods
+    # mutation: the area of ABC read as 13 instead of 12 is refuted by the enclosure; the methods' own errors
+    # (proven against it) stay within their accuracy
     w = ConstructionWitness("t", "test", ("t",), (Case({}, TETRAHEDRON),), names=NAMES, points=(),
                             quantity=Area("A", "B", "C"))
     assert w.run({"t": (sp.Symbol("S"), sp.Integer(12))})["t"].agrees
     out = w.run({"t": (sp.Symbol("S"), sp.Integer(13))})["t"]
-    assert not out.agrees and [r["method"] for r in out.records] == ["float64", "mpmath, 50 digits"]
+    assert not out.agrees and [r["method"] for r in out.records] == [CERTIFIED, "float64", "mpmath, 50 digits"]
+    assert [record_decision(r) for r in out.records] == ["refuted", "agrees", "agrees"]

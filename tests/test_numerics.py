@@ -59,7 +59,8 @@ def test_every_witness_is_measured_with_every_applicable_method(graefe_bench):
             names = {m.method for m in graefe_bench.measurements if m.witness == w.name}
             assert {"Simpson, 4 panels, float64", "trapezoid, 16 panels, float64", "tanh-sinh, 30 digits",
                     "Gauss-Legendre n=8, float64"} <= names
-            assert len(methods_for(w, d)) == 27   # 4 + 4 mpmath precisions, 7 float64 orders, 12 composite rules
+            # 4 + 4 mpmath precisions, 7 float64 orders, 12 composite rules, Arb at 64 and 128 bits
+            assert len(methods_for(w, d)) == 29 and "Arb ball arithmetic, 128 bits" in names
 
 
 def test_accuracy_of_the_methods_against_exact_references(graefe_bench):
@@ -72,6 +73,8 @@ def test_accuracy_of_the_methods_against_exact_references(graefe_bench):
             assert worst < 1e-28, (m.witness, m.method, worst)
         if m.method.startswith("Simpson") and m.witness.startswith("slab"):
             assert worst < 1e-14    # the slabs' sections are cubic: Simpson is exact
+        if m.method == "Arb ball arithmetic, 128 bits":
+            assert worst < 2.0 ** -100, (m.witness, worst)     # a proven bound: midpoint error plus radius
 
 
 def test_gauss_legendre_is_exact_to_degree_2n_minus_1():
@@ -176,10 +179,12 @@ def test_straightedge_constructions_are_benchmarked_like_computations():
     bench = run_bench("graefe-s3", quick=True)
     ms = [m for m in bench.measurements if m.family == "straightedge constructions"]
     assert {"lines-construction", "lines-oc", "triangles-ratio-1"} <= {m.witness for m in ms}
-    assert {m.method for m in ms} == {"float64", "mpmath, 30 digits"}
+    assert {m.method for m in ms} == {"float64", "mpmath, 30 digits", "Arb ball arithmetic, 64 bits",
+                                      "Arb ball arithmetic, 128 bits"}
     for m in ms:
         worst = max(e for e in m.errors.values() if e is not None)
-        assert worst < (1e-12 if m.method == "float64" else 1e-26), (m.witness, m.method, worst)
+        bound = {"float64": 1e-12, "mpmath, 30 digits": 1e-26, "Arb ball arithmetic, 64 bits": 2.0 ** -40}
+        assert worst < bound.get(m.method, 2.0 ** -100), (m.witness, m.method, worst)
 
 
 def test_a_combined_witness_is_listed_with_its_parts():

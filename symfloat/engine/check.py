@@ -33,7 +33,7 @@ from .print_corrections import print_corrections
 from .identity import Domain, IdentityResult, check_identity, check_rounded
 from .proofs import ProofBook
 from .relation import check_relation
-from .witness import record_agrees
+from .witness import record_decision
 
 __all__ = ["StepReport", "FormulaReport", "DerivationReport", "check_derivation", "judge", "step_failure",
            "rejudged", "Unsound"]
@@ -261,8 +261,9 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
 
     t_witnesses = time.perf_counter()
     outcomes: dict = {}
+    allowances = {p.name: sp.Rational(p.tolerance) for p in d.printed if p.tolerance is not None}
     for w in d.witnesses:
-        for target, out in w.run(readings).items():
+        for target, out in w.run(readings, allowances).items():
             outcomes.setdefault(target, []).append(out)
     route = DefinitionRoute(d.steps, domain, d.id)       # every formula no declared witness measures
     targeted = {t for w in d.witnesses for t in w.targets}
@@ -281,10 +282,11 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
         if p.tolerance is not None:
             for target in (p.name, p.name + "#corrected"):
                 for out in outcomes.get(target, []):
-                    for r in out.records:
-                        r["abs_tolerance"] = float(p.tolerance) * (1 + 1e-9)
-                    out.agrees = all(record_agrees(r) for r in out.records)
-                    out.note = "" if out.agrees else f"{out.witness}: differs by more than the printed precision"
+                    for r in out.records:      # a certified record carries the print's rounding already
+                        if not r.get("certified") and not r.get("proven"):
+                            r["abs_tolerance"] = float(p.tolerance) * (1 + 1e-9)
+                    out.judged()
+                    out.note = "" if out.agrees else out.note or f"{out.witness}: differs by more than the printed precision"
 
     def correction(p) -> str:           # the smallest edit of a refuted print that makes it hold
         found = print_corrections(p, results, domain, f"{d.id}/{p.name}", lambda chain: _check_chain(
@@ -317,13 +319,17 @@ def _proof_failures(derivation_id: str, proofs: dict) -> list[str]:
 def judge(f: FormulaReport, erratum_declared: bool) -> tuple[str, str | None, list[str]]:
     """The verdict, evidence and failures that the recorded evidence of *f* gives: the check of its
     reading (``f.identity``), of the declared correction (``f.corrected_identity``), the witness records
-    (each within the bound it carries, :func:`~symfloat.engine.witness.record_agrees`) and the witnesses
+    (each decided by the bound it carries, :func:`~symfloat.engine.witness.record_decision`: an undecided
+    record neither agrees nor refutes) and the witnesses
     found at odds (``f.against``, ``f.against_correction``).  The checker decides every verdict here, and
     a cached report is judged again by the same function when it is read (:func:`rejudged`)."""
     ident = IdentityResult.from_json(f.identity) if f.identity else None
     corr = IdentityResult.from_json(f.corrected_identity) if f.corrected_identity else None
-    printed_agree = not f.against and all(record_agrees(r) for r in f.numeric)
-    corrected_agree = not f.against_correction and all(record_agrees(r) for r in f.corrected_numeric)
+    printed = {record_decision(r) for r in f.numeric}
+    corrected = {record_decision(r) for r in f.corrected_numeric}
+    printed_refuted = bool(f.against) or "refuted" in printed      # undecided records neither agree nor refute
+    printed_agree = not printed_refuted and printed <= {"agrees"}
+    corrected_refuted = bool(f.against_correction) or "refuted" in corrected
     if f.lost:
         return "unverifiable", None, []
     if ident is not None and ident.status == "trivial":
@@ -335,7 +341,7 @@ def judge(f: FormulaReport, erratum_declared: bool) -> tuple[str, str | None, li
     if ident is not None and ident.holds:
         if erratum_declared:
             failures.append("an erratum is declared but the print holds")
-        if not printed_agree:
+        if printed_refuted:
             failures.append("derived and printed agree but a witness disagrees")
         return "verified", ident.evidence, failures
     if not erratum_declared:       # refuted (or unreadable) print
@@ -349,7 +355,7 @@ def judge(f: FormulaReport, erratum_declared: bool) -> tuple[str, str | None, li
     elif corr is not None and not corr.holds:
         failures.append(f"the declared correction does not hold ({corr.status}: "
                         f"{corr.counterexample or corr.residual})")
-    if f.corrected_numeric and not corrected_agree:
+    if corrected_refuted:
         failures.append("a witness disagrees with the declared correction")
     return "erratum", corr.evidence if corr is not None and corr.holds else "sampled", failures
 
@@ -374,8 +380,8 @@ def _verdict(d, p, ident, corr, outcomes, failures, correction) -> FormulaReport
                         witness_notes=[o.note for o in every if o.note],
                         numeric_content=bool(printed_out or corrected_out) or all(o.measurable for o in every),
                         lost=p.lost or "", corrected_identity=corr.to_json() if corr else None,
-                        against=[o.witness for o in printed_out if not o.agrees],
-                        against_correction=[o.witness for o in corrected_out if not o.agrees])
+                        against=[o.witness for o in printed_out if not o.agrees and not o.undecided],
+                        against_correction=[o.witness for o in corrected_out if not o.agrees and not o.undecided])
     rep.verdict, rep.evidence, found = judge(rep, p.erratum is not None)
     if p.erratum is None and rep.verdict == "erratum":       # a refuted print: its sides labelled, a correction offered
         shown = _refutation(ident.counterexample) if ident is not None and ident.counterexample else ""
@@ -411,7 +417,14 @@ def _erratum(p, ident, corr, corrected_out) -> dict:
         found.append(f"the correction is {'proved' if corr.status == 'proved' else 'confirmed by sampling'}"
                      + (f" ({corr.strategy})" if corr.strategy else ""))
     for o in corrected_out:
-        if o.records:
+        certified = [r for r in o.records if r.get("certified")]
+        if certified and record_decision(certified[0]) == "undecided":
+            found.append(f"{o.witness} cannot decide the correction (its enclosure is too wide at "
+                         f"{certified[0]['bits']} bits)")
+        elif certified:
+            found.append(f"{o.witness} agrees with the correction to {certified[0]['rel_error']:.1e}, proven "
+                         f"({certified[0]['method']}, {certified[0]['bits']} bits)")
+        elif o.records:
             best = min(o.records, key=lambda r: r["rel_error"])
             found.append(f"{o.witness} agrees with the correction to {best['rel_error']:.1e} "
                          f"({best['method']})")

@@ -31,8 +31,10 @@ from fractions import Fraction
 
 import mpmath
 import sympy as sp
+from flint import arb
 
 from ..geometry.construction import heron_area, line_meet
+from .enclosure import exact, working_precision
 from .witness import MeasuredWitness, Precision
 
 __all__ = ["ConstructionWitness", "CONSTRUCTION_METHODS", "Mid", "Along", "Meet", "Centroid", "Length", "Area",
@@ -68,7 +70,7 @@ class Along:
     t: object
 
     def point(self, at):
-        return at[self.p] + _mpf(self.t) * (at[self.q] - at[self.p])
+        return at[self.p] + at.number(self.t) * (at[self.q] - at[self.p])
 
 
 @dataclass(frozen=True)
@@ -81,7 +83,7 @@ class Meet:
     q2: str
 
     def point(self, at):
-        return line_meet(at[self.p1], at[self.p2], at[self.q1], at[self.q2])
+        return at.meet(at[self.p1], at[self.p2], at[self.q1], at[self.q2])
 
 
 @dataclass(frozen=True)
@@ -93,7 +95,7 @@ class Centroid:
     r: str
 
     def point(self, at):
-        return line_meet(at[self.p], (at[self.q] + at[self.r]) / 2, at[self.q], (at[self.p] + at[self.r]) / 2)
+        return at.meet(at[self.p], (at[self.q] + at[self.r]) / 2, at[self.q], (at[self.p] + at[self.r]) / 2)
 
 
 # ---- measurements -------------------------------------------------------------------------------------------
@@ -106,7 +108,7 @@ class Length:
     q: str
 
     def values(self, at):
-        return (mpmath.norm(at[self.p] - at[self.q]),)
+        return (at.norm(at[self.p] - at[self.q]),)
 
 
 @dataclass(frozen=True)
@@ -118,7 +120,7 @@ class Area:
     r: str
 
     def values(self, at):
-        return (heron_area(at[self.p], at[self.q], at[self.r]),)
+        return (at.area(at[self.p], at[self.q], at[self.r]),)
 
 
 @dataclass(frozen=True)
@@ -166,9 +168,80 @@ class ConstructionWitness(MeasuredWitness):
 
     def measure(self, case, method):
         with mpmath.workdps(method.dps):
-            at = {name: mpmath.matrix([_mpf(v) for v in p]) for name, p in zip(self.names, case.data)}
-            for name, op in self.points:
-                at[name] = op.point(at)
-            items = self.quantity if isinstance(self.quantity, tuple) else (self.quantity,)
-            values = tuple(v for item in items for v in item.values(at))
+            return self._built(case, _Points(_mpf, lambda p: mpmath.matrix([_mpf(v) for v in p]), line_meet,
+                                             heron_area, mpmath.norm))
+
+    def enclose(self, case, bits):
+        """The construction in Arb balls: every point, length and area an enclosure."""
+        with working_precision(bits):
+            return self._built(case, _Points(_exact, lambda p: _Vector(_exact(v) for v in p), _ball_meet,
+                                             _ball_heron, _ball_norm))
+
+    def _built(self, case, at):
+        for name, p in zip(self.names, case.data):
+            at[name] = at.vector(p)
+        for name, op in self.points:
+            at[name] = op.point(at)
+        items = self.quantity if isinstance(self.quantity, tuple) else (self.quantity,)
+        values = tuple(v for item in items for v in item.values(at))
         return values if isinstance(self.quantity, tuple) or len(values) > 1 else values[0]
+
+
+class _Points(dict):
+    """The points of a construction by name, with the arithmetic they are measured in: ``number`` (an exact
+    coordinate or parameter as a number), ``vector``, ``meet`` (two lines' meeting point), ``area`` (Heron's
+    formula) and ``norm``."""
+
+    def __init__(self, number, vector, meet, area, norm):
+        super().__init__()
+        self.number, self.vector, self.meet, self.area, self.norm = number, vector, meet, area, norm
+
+
+class _Vector(tuple):
+    """A point in space as three Arb balls, with the vector arithmetic the operations use."""
+
+    def __new__(cls, items):
+        return super().__new__(cls, tuple(items))
+
+    def __add__(self, other):
+        return _Vector(a + b for a, b in zip(self, other))
+
+    def __sub__(self, other):
+        return _Vector(a - b for a, b in zip(self, other))
+
+    def __mul__(self, k):
+        return _Vector(a * k for a in self)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, k):
+        return _Vector(a / k for a in self)
+
+
+def _exact(v):
+    return exact(Fraction(v) if not isinstance(v, sp.Basic) else Fraction(int(v.p), int(v.q)))
+
+
+def _dot(u, v):
+    return sum((a * b for a, b in zip(u, v)), arb(0))
+
+
+def _ball_norm(v):
+    return _dot(v, v).sqrt()
+
+
+def _ball_heron(p, q, r):
+    """Heron's formula (:func:`~symfloat.geometry.construction.heron_area`) in balls."""
+    x, y, w = _ball_norm(p - q), _ball_norm(q - r), _ball_norm(r - p)
+    half = (x + y + w) / 2
+    return (half * (half - x) * (half - y) * (half - w)).sqrt()
+
+
+def _ball_meet(p1, p2, q1, q2):
+    """The least-squares meeting point of the lines p1 p2 and q1 q2 (:func:`~symfloat.geometry.construction.line_meet`)
+    in balls: ``p1 + s d`` with ``d = p2 - p1``, ``e = q2 - q1``, ``w = q1 - p1`` and
+    ``s = ((d·w)(e·e) - (e·w)(d·e)) / ((d·d)(e·e) - (d·e)²)``, the normal equations solved by Cramer's rule."""
+    d, e, w = p2 - p1, q2 - q1, q1 - p1
+    de = _dot(d, e)
+    s = (_dot(d, w) * _dot(e, e) - _dot(e, w) * de) / (_dot(d, d) * _dot(e, e) - de * de)
+    return p1 + d * s

@@ -34,15 +34,19 @@ parameters, or a tuple of them:
 from __future__ import annotations
 
 import functools
+import math
+from fractions import Fraction
 from dataclasses import dataclass
 
 import mpmath
 import numpy as np
 import sympy as sp
+from flint import arb
 
 from ..geometry.floating import polygon_moments
 from .floating_witness import _real, number
 from .roots import grid_roots
+from .enclosure import Unsupported, ball, integral, real_function, sign_change_root, working_precision
 from .witness import MeasuredWitness, Precision
 
 __all__ = ["Figure", "Over", "CENTROID", "FigureWitness", "FIGURE_METHODS", "CurveRoot"]
@@ -235,6 +239,74 @@ class FigureWitness(MeasuredWitness):
         return values if isinstance(self.quantity, tuple) else values[0]
 
 
+    def enclose(self, case, bits):
+        """The quantity in Arb: a polygon's integrals and centroid exact (:func:`polygon_moments` in SymPy
+        numbers), a strip figure's or an interval's by ``acb.integral`` along (the chord by the three-node
+        Gauss–Legendre rule with the exact nodes 0, ±√(3/5), exact for an integrand of degree at most five
+        across; another integrand is :class:`~symfloat.engine.enclosure.Unsupported`: undecided)."""
+        figure = Figure(self.figure.kind, tuple(_at_deep(x, case.params) for x in self.figure.data),
+                        self.figure.smooth)
+        items = self.quantity if isinstance(self.quantity, tuple) else (self.quantity,)
+        values = tuple(self._enclosed_item(sp.sympify(q).xreplace(case.params), figure, bits) for q in items)
+        return values if isinstance(self.quantity, tuple) else values[0]
+
+    def _enclosed_item(self, q, figure, bits):
+        if figure.kind == "polygon":          # exact: every integral a SymPy number
+            centroid = dict(zip(CENTROID, polygon_moments([tuple(p) for p in figure.data])[1]))
+            exact_q = q.xreplace({atom: _polygon_exact(figure.data, atom.args[0].xreplace(centroid), self.coords)
+                                  for atom in q.atoms(Over)}).xreplace(centroid)
+            return Fraction(int(exact_q.p), int(exact_q.q)) if exact_q.is_Rational else ball(exact_q, bits)
+        at = {}
+        if q.free_symbols & set(CENTROID) or any(a.free_symbols & set(CENTROID) for a in q.atoms(Over)):
+            area = _enclosed_integral(figure, sp.Integer(1), bits, {})
+            with working_precision(bits):
+                at = {s: _enclosed_integral(figure, c, bits, {}) / area for s, c in zip(CENTROID, self.coords)}
+        over = {atom: sp.Dummy() for atom in q.atoms(Over)}
+        values = {over[atom]: _enclosed_integral(figure, atom.args[0], bits, at) for atom in over}
+        return ball(q.xreplace(over), bits, {**at, **values})
+
+
+def _polygon_exact(vertices, f, coords):
+    """∫∫ f over the polygon, exactly (f a polynomial of degree <= 2 in *coords*, see :func:`_polygon_integral`)."""
+    area, (cx, cy), ((jxx, jxy), (_, jyy)) = polygon_moments([tuple(p) for p in vertices])
+    if area < 0:
+        area, jxx, jxy, jyy = -area, -jxx, -jxy, -jyy
+    raw = {(0, 0): area, (1, 0): area * cx, (0, 1): area * cy, (2, 0): jxx + area * cx * cx,
+           (1, 1): jxy + area * cx * cy, (0, 2): jyy + area * cy * cy}
+    poly = sp.Poly(sp.expand(f), *coords)
+    if poly.total_degree() > 2:
+        raise ValueError(f"a polygon's integrals are exact up to degree 2, not for {f}")
+    return sum(k * raw[m] for m, k in poly.terms())
+
+
+def _enclosed_integral(figure, f, bits, at):
+    """∫∫ f over a figure of strips (∫ f over an interval) as a ball, *at* the balls of :data:`CENTROID`."""
+    if figure.kind == "interval":
+        var, lo, hi, breaks = figure.data
+        integrand = f
+    else:
+        across, var, lo, hi, ends, breaks = figure.data
+        try:
+            degree = sp.Poly(f, across).degree()
+        except sp.PolynomialError:
+            degree = None
+        if degree is None or degree > 5:
+            raise Unsupported(f"the integrand {f} is no polynomial of degree at most 5 across the chords")
+        antiderivative = sp.integrate(sp.Poly(f, across).as_expr(), across)     # a polynomial's: exact
+        integrand = antiderivative.xreplace({across: ends[1]}) - antiderivative.xreplace({across: ends[0]})
+    points = sorted([lo, *breaks, hi], key=lambda e: float(e))
+    with working_precision(bits):
+        return sum((integral(_signed(integrand, var, a, b), var, a, b, bits, at) for a, b in zip(points, points[1:])),
+                   arb(0))
+
+
+def _signed(expr, var, a, b):
+    """*expr* on the piece ``[a, b]`` with ``|var|`` written as ``var`` or ``-var`` where the piece fixes its sign
+    (a break at 0 is there for that): holomorphic then, where ``|var|`` is not at the piece's end 0."""
+    sign = 1 if a >= 0 else -1 if b <= 0 else 0
+    return expr.xreplace({sp.Abs(var): sign * var}) if sign else expr
+
+
 def _at_deep(x, params):
     """*x* (an expression, a symbol naming a coordinate, or nested tuples of them) at the case's parameters."""
     if isinstance(x, tuple):
@@ -270,4 +342,13 @@ class CurveRoot(MeasuredWitness):
             raise ValueError(f"witness {self.name}: no root of {self.equation} on {self.bracket}")
         with mpmath.workdps(max(dps, 15)):
             return float(roots[0]) if dps <= 15 else +mpmath.mpf(roots[0])
+
+    def enclose(self, case, bits):
+        """The float64 root (which root: the scan's first) proven by a sign change of the equation in balls
+        at ``±2^-40 (1 + |root|)`` around it and narrowed by bisection
+        (:func:`~symfloat.engine.enclosure.sign_change_root`); non-finite (undecided) without that sign change."""
+        root = self.measure(case, FIGURE_METHODS[0])
+        f = real_function(_at(self.equation, case.params), (self.variable,))
+        step = math.ldexp(1 + abs(root), -40)
+        return sign_change_root(f, root - step, root + step, bits)
 

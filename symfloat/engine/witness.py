@@ -14,6 +14,7 @@ by itself whether the formula agrees with the witness.
 """
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -22,11 +23,14 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from flint import arb
+
 from ..geometry.convex import hull_volume_centroid, section_area, side_faces, side_faces_by_sections
 from ..model.claim import members
+from .enclosure import Unsupported, ball, exact, integral, lower, upper, working_precision
 from .quadrature import DEFAULT_METHODS, TANH_SINH_15, TANH_SINH_50
 
-__all__ = ["Case", "Outcome", "record_agrees", "MeasuredWitness", "Precision", "SectionIntegral", "PlaneSections", "SECTION",
+__all__ = ["Case", "Outcome", "record_agrees", "record_decision", "CERTIFIED", "MeasuredWitness", "Precision", "SectionIntegral", "PlaneSections", "SECTION",
            "HullWitness", "SideFaces",
            "ExactHull", "HullSlices", "FaceSections", "ConvergenceOrder"]
 
@@ -48,35 +52,75 @@ class Case:
 
 @dataclass
 class Outcome:
-    """What one witness found for one targeted formula."""
+    """What one witness found for one targeted formula: ``agrees`` when every record agrees, ``undecided``
+    when none refutes but a certified enclosure was too wide to decide (shown and counted, never passed)."""
 
     witness: str
     records: list = field(default_factory=list)
     agrees: bool = True
     note: str = ""
     measurable: bool = True     # False: the formula has nothing a number could check (it restates a definition)
+    undecided: bool = False
+
+    def judged(self):
+        """``agrees``, ``undecided`` and a note set from the records' decisions (:func:`record_decision`)."""
+        decisions = {record_decision(r) for r in self.records}
+        self.agrees = decisions <= {"agrees"}
+        self.undecided = "undecided" in decisions and "refuted" not in decisions
+        return self
+
+
+def record_decision(record: dict) -> str:
+    """``agrees``, ``refuted`` or ``undecided``: what a witness record says of the formula it was made for.
+
+    A certified record (``certified``: Arb's enclosure of the difference *reading - quantity*, see
+    :class:`MeasuredWitness`) is **refuted** when the difference is proven larger than the print's own
+    rounding, ``abs_error_lower > abs_tolerance``; it **agrees** when it is proven within that rounding
+    plus ``width`` (the narrowness the working precision asks, 0 for exact arithmetic),
+    ``abs_error <= abs_tolerance + width``; else it is **undecided** (``abs_error`` is ``null`` for a
+    non-finite enclosure).  Any other record lies within or beyond the bound it carries:
+    ``abs_tolerance`` (a printed number's precision; 0 for a count, which must be exact), else
+    ``rel_tolerance`` (the method's), else a measured convergence ``order`` within ``slack`` of
+    ``expected_order``.  A record with none of them agrees with nothing.
+
+    >>> record_decision({"certified": True, "abs_error": 3e-80, "abs_error_lower": 0.0, "width": 1e-77,
+    ...                  "abs_tolerance": 0.0})
+    'agrees'
+    >>> record_decision({"certified": True, "abs_error": 2e-3, "abs_error_lower": 1e-3, "width": 1e-77,
+    ...                  "abs_tolerance": 5e-4})
+    'refuted'
+    >>> record_decision({"certified": True, "abs_error": None, "abs_error_lower": 0.0, "width": 1e-77,
+    ...                  "abs_tolerance": 0.0})
+    'undecided'
+    >>> record_decision({"abs_error": 1e-3, "rel_error": 2e-2, "rel_tolerance": 1e-10})
+    'refuted'
+    >>> record_decision({"order": 3.96, "expected_order": 4, "slack": 0.15})
+    'agrees'
+    """
+    if record.get("certified"):
+        if record["abs_error_lower"] > record["abs_tolerance"]:
+            return "refuted"
+        if record["abs_error"] is not None and record["abs_error"] <= record["abs_tolerance"] + record["width"]:
+            return "agrees"
+        return "undecided"
+    if "abs_tolerance" in record:
+        within = record["abs_error"] <= record["abs_tolerance"]
+    elif "rel_tolerance" in record:
+        within = record["rel_error"] <= record["rel_tolerance"]
+    elif "expected_order" in record:
+        within = record["order"] is not None and abs(record["order"] - record["expected_order"]) <= record["slack"]
+    else:
+        within = False
+    return "agrees" if within else "refuted"
 
 
 def record_agrees(record: dict) -> bool:
-    """Whether a witness record lies within the bound it carries: ``abs_tolerance`` (a printed number's
-    precision; 0 for a count, which must be exact), else ``rel_tolerance`` (the method's), else a
-    measured convergence ``order`` within ``slack`` of ``expected_order``.  A record with none of them
-    agrees with nothing.
+    """Whether a witness record agrees with its formula (:func:`record_decision`).
 
-    >>> record_agrees({"abs_error": 1e-3, "rel_error": 2e-2, "rel_tolerance": 1e-10})
-    False
     >>> record_agrees({"abs_error": 1e-3, "rel_error": 2e-2, "abs_tolerance": 5e-3})
     True
-    >>> record_agrees({"order": 3.96, "expected_order": 4, "slack": 0.15})
-    True
     """
-    if "abs_tolerance" in record:
-        return record["abs_error"] <= record["abs_tolerance"]
-    if "rel_tolerance" in record:
-        return record["rel_error"] <= record["rel_tolerance"]
-    if "expected_order" in record:
-        return record["order"] is not None and abs(record["order"] - record["expected_order"]) <= record["slack"]
-    return False
+    return record_decision(record) == "agrees"
 
 
 def _expected(reading, params):
@@ -92,6 +136,17 @@ def _expected(reading, params):
         v = sp.sympify(sp.sympify(m).xreplace(params))
         if not v.free_symbols:
             values.append([sp.N(v, REFERENCE_DIGITS)])
+    return values
+
+
+def _exact_members(reading, params):
+    """The chain members that become numbers at *params*, each the list of its components (SymPy numbers,
+    exact where the member is)."""
+    values = []
+    for m in members(reading):
+        v = m.xreplace(params) if isinstance(m, sp.MatrixBase) else sp.sympify(sp.sympify(m).xreplace(params))
+        if not v.free_symbols:
+            values.append(list(v) if isinstance(v, sp.MatrixBase) else [v])
     return values
 
 
@@ -111,12 +166,69 @@ def _errors(measured, expected):
     return float(ab), float(rel)
 
 
+def _components(value) -> tuple:
+    return tuple(value) if isinstance(value, (tuple, list)) else (value,)
+
+
+def _as_ball(value, prec):
+    """A reading's component (a SymPy number) or a measured one (a ball, or an exact Fraction) as a ball."""
+    if isinstance(value, arb):
+        return value
+    if isinstance(value, (Fraction, int)):
+        return exact(Fraction(value))
+    return ball(value, prec)
+
+
+def _difference(reading, measured, prec):
+    """The ball of *reading* - *measured*: exact (radius 0 when they are equal) where both are exact rationals."""
+    if isinstance(measured, (Fraction, int)) and isinstance(reading, sp.Rational):
+        return exact(Fraction(int(reading.p), int(reading.q)) - Fraction(measured))
+    return _as_ball(reading, prec) - _as_ball(measured, prec)
+
+
+def _scale(case, values, prec) -> float:
+    """The magnitude of the numbers a case computes with: its parameters, the reading, the measurement."""
+    sizes = [upper(_as_ball(v, prec)) for v in values]
+    sizes += [abs(float(v)) for v in case.params.values() if getattr(v, "is_number", False) and v.is_real]
+    return max(sizes, default=0.0)
+
+
+CERTIFIED = "Arb ball arithmetic"   # the certified method's name in a record
+
+
+START_BITS = 128    # the certified method's first precision; doubled up to 8 times it while undecided
+
+
 @dataclass(frozen=True)
 class MeasuredWitness:
-    """Common machinery: time each method over the cases, compare targets.
+    """Common machinery: measure the cases by each method, enclose them in Arb, decide by the ball.
 
-    ``cases`` is a tuple of :class:`Case`, or a function returning one: it is
-    called on first use, so that declaring a witness costs nothing at import."""
+    ``cases`` is a tuple of :class:`Case`, or a function returning one: it is called on first use, so that
+    declaring a witness costs nothing at import.
+
+    **The protocol.**  A witness kind supplies ``measure(case, method)`` for each of its ``methods`` (float64,
+    mpmath at n digits: what the numerics report compares) and, where a rigorous method exists,
+    ``enclose(case, bits)``: the quantity at the case as an ``arb`` (a tuple of them for several values; an
+    exact :class:`fractions.Fraction` where the quantity is exact, a ball of radius 0) computed at ``bits``
+    bits (:mod:`symfloat.engine.enclosure`).  :meth:`run` then, for each targeted formula:
+
+    * encloses each member of its reading at the case (:func:`~symfloat.engine.enclosure.ball`; exact where
+      both sides are rational) and forms the ball *d* of reading - quantity;
+    * decides by *d* (:func:`record_decision`): refuted when ``|d|`` is proven larger than the print's own
+      rounding ``t`` (half a unit in the last printed digit, from ``allowances``; 0 for an exact formula),
+      agreeing when ``|d| <= t + width`` with ``width = scale * 2^(-bits/2)`` (``scale`` the magnitude of
+      the case's parameters, the reading and the quantity: half the working bits must survive), else
+      **undecided**: the precision is doubled (from :data:`START_BITS` up to 8 times it) and the
+      formula decided anew; still undecided at the cap, the record says so;
+    * records the certified decision (``method`` :data:`CERTIFIED`, ``certified``, ``bits``, the proven
+      bounds ``abs_error_lower <= |d| <= abs_error``, ``width``, ``abs_tolerance``) and, for each other
+      method, its **proven error** against the enclosure, ``|value - mid| + rad`` (``proven``; a method
+      finer than the enclosure shows about its radius), held to ``rel_tolerance``: the method's accuracy
+      plus what the enclosure resolves, twice its relative radius (``|true - mid| + rad``) and ``2^(2-bits)``
+      for the rounding of the difference (a method that misses it fails its self-check).
+
+    A kind without ``enclose`` (it returns ``None``) keeps the former comparison: each method's
+    measurement against the reading at :data:`REFERENCE_DIGITS`, under the method's ``rel_tolerance``."""
 
     name: str
     description: str
@@ -135,36 +247,156 @@ class MeasuredWitness:
     def measure(self, case: Case, method):
         raise NotImplementedError  # pragma: no cover - abstract
 
-    def run(self, readings: dict) -> dict:
+    def enclose(self, case: Case, bits: int):
+        """The quantity at *case* as a ball (or a tuple of balls, or exact), or ``None``: no rigorous method."""
+        return None
+
+    def run(self, readings: dict, allowances: dict | None = None) -> dict:
+        """An :class:`Outcome` for each targeted reading of *readings* (name -> reading); *allowances* gives
+        a printed number's rounding (name -> half a unit in its last digit)."""
         measured = {}
         for method in self.methods:
             t0 = time.perf_counter()
             values = [self.measure(case, method) for case in self.instances]
             measured[method] = (values, time.perf_counter() - t0)
+        targets = [t for t in readings if t.split("#")[0] in self.targets]
+        exact_readings = {t: [_exact_members(readings[t], case.params) for case in self.instances] for t in targets}
+        for t in targets:
+            for case, members_ in zip(self.instances, exact_readings[t]):
+                if not members_:
+                    raise ValueError(f"witness {self.name}: no member of {t} is a number at {case.label}")
+        certified = self._certified(exact_readings, allowances or {})
         outcomes = {}
-        for target in readings:
-            if target.split("#")[0] not in self.targets:
-                continue
-            expected_by_case = [_expected(readings[target], case.params) for case in self.instances]
-            for case, expected in zip(self.instances, expected_by_case):
-                if not expected:
-                    raise ValueError(f"witness {self.name}: no member of {target} is a number at {case.label}")
-            out = Outcome(self.name)
-            for method, (values, seconds) in measured.items():
-                worst_abs = worst_rel = 0.0
-                for value, expected in zip(values, expected_by_case):
-                    for e in expected:
-                        a, r = _errors(value, e)
-                        worst_abs, worst_rel = max(worst_abs, a), max(worst_rel, r)
-                out.records.append({"method": method.name, "abs_error": worst_abs,
-                                    "rel_error": worst_rel, "seconds": seconds,
-                                    "cases": len(self.instances), "rel_tolerance": max(method.tolerance, 1e-50)})
-                if not record_agrees(out.records[-1]):
-                    out.agrees = False
-            if not out.agrees:
-                out.note = f"{self.description}: disagrees beyond the methods' tolerances"
+        for target in targets:
+            if certified is None:
+                out = self._compared(readings[target], measured)
+            else:
+                record, enclosures, bits = certified[target]
+                if "unsupported" in record:   # a node without a rigorous rule: undecided, the methods compared
+                    out = self._compared(readings[target], measured)
+                    out.records.insert(0, record)
+                else:
+                    out = Outcome(self.name, [record] + self._proven(measured, enclosures, bits))
+            out.judged()
+            if out.undecided:
+                out.note = (f"{self.description}: undecided, the enclosure of the difference is too wide at "
+                            f"{out.records[0]['bits']} bits")
+            elif not out.agrees:
+                out.note = f"{self.description}: disagrees beyond the print's rounding or a method's accuracy"
             outcomes[target] = out
         return outcomes
+
+    def _certified(self, exact_readings, allowances):
+        """target -> (its certified record, the enclosures it was decided with, their bits); ``None`` when the
+        kind has no rigorous method."""
+        first = START_BITS
+        pending, done, seconds = set(exact_readings), {}, 0.0
+        bits = first
+        while pending and bits <= 8 * first:
+            t0 = time.perf_counter()
+            try:
+                enclosures = [self.enclose(case, bits) for case in self.instances]
+                failure = ""
+            except Unsupported as exc:
+                enclosures, failure = None, str(exc)
+            seconds += time.perf_counter() - t0
+            if enclosures is not None and any(e is None for e in enclosures):
+                return None
+            if enclosures is not None and not all(_finite(e) for e in enclosures):
+                enclosures, failure = None, f"no finite enclosure at {bits} bits"
+            for target in sorted(pending):
+                record = self._decision(exact_readings[target], enclosures, bits, allowances.get(target.split("#")[0]),
+                                        seconds, failure)
+                if record_decision(record) != "undecided" or bits * 2 > 8 * first or "unsupported" in record:
+                    done[target] = (record, enclosures, bits)
+            pending -= set(done)
+            if failure:
+                break
+            bits *= 2
+        return done
+
+    def _decision(self, readings_by_case, enclosures, bits, allowance, seconds, failure):
+        """The certified record of one target (see the class)."""
+        t = upper(exact(Fraction(int(allowance.p), int(allowance.q)))) if allowance is not None else 0.0
+        record = {"method": CERTIFIED, "certified": True, "bits": bits, "abs_error": None, "abs_error_lower": 0.0,
+                  "rel_error": 0.0, "width": 0.0, "abs_tolerance": t, "seconds": seconds, "cases": len(self.instances)}
+        if failure:
+            record["unsupported"] = failure
+            return record
+        try:
+            return self._bounds(record, readings_by_case, enclosures, bits)
+        except Unsupported as exc:         # the reading has a node without a rigorous rule
+            record["unsupported"] = str(exc)
+            return record
+
+    def _bounds(self, record, readings_by_case, enclosures, bits):
+        worst_upper = worst_lower = worst_rel = 0.0
+        width = float("inf")
+        with working_precision(bits):
+            for case, members_, value in zip(self.instances, readings_by_case, enclosures):
+                measured = _components(value)
+                pairs = [(r, m) for member in members_ for r, m in zip(member, measured)]
+                width = min(width, math.ldexp(_scale(case, [v for pair in pairs for v in pair], bits), -bits // 2))
+                for r, m in pairs:
+                    d = _difference(r, m, bits)
+                    worst_upper = max(worst_upper, upper(d))
+                    worst_lower = max(worst_lower, lower(d))
+                    size = upper(_as_ball(r, bits))
+                    worst_rel = max(worst_rel, upper(d) / size if size else upper(d))
+        finite = math.isfinite(worst_upper)
+        record.update(abs_error=worst_upper if finite else None, abs_error_lower=worst_lower,
+                      rel_error=worst_rel if finite else 0.0, width=width if math.isfinite(width) else 0.0)
+        return record
+
+    def _proven(self, measured, enclosures, bits):
+        """Each method's proven error against the enclosures: ``|value - mid| + rad``, the largest over the
+        cases and components (absolute, and relative to the quantity's magnitude)."""
+        records = []
+        for method, (values, seconds) in measured.items():
+            worst_abs = worst_rel = resolution = 0.0
+            with working_precision(bits):
+                for value, enclosure in zip(values, enclosures):
+                    for v, e in zip(_components(value), _components(enclosure)):
+                        e = _as_ball(e, bits)
+                        err = upper(_as_ball(_value_ball(v), bits) - e)
+                        size = lower(e)
+                        worst_abs = max(worst_abs, err)
+                        worst_rel = max(worst_rel, err / size if size else err)
+                        resolution = max(resolution, upper(e.rad()) / size if size else upper(e.rad()))
+            records.append({"method": method.name, "abs_error": worst_abs, "rel_error": worst_rel, "seconds": seconds,
+                            "cases": len(self.instances), "proven": True,
+                            "rel_tolerance": max(method.tolerance, 1e-50) + 2 * resolution + math.ldexp(1, 2 - bits)})
+        return records
+
+    def _compared(self, reading, measured):
+        """The former comparison (a kind without a rigorous method): each method against the reading."""
+        expected_by_case = [_expected(reading, case.params) for case in self.instances]
+        out = Outcome(self.name)
+        for method, (values, seconds) in measured.items():
+            worst_abs = worst_rel = 0.0
+            for value, expected in zip(values, expected_by_case):
+                for e in expected:
+                    a, r = _errors(value, e)
+                    worst_abs, worst_rel = max(worst_abs, a), max(worst_rel, r)
+            out.records.append({"method": method.name, "abs_error": worst_abs,
+                                "rel_error": worst_rel, "seconds": seconds,
+                                "cases": len(self.instances), "rel_tolerance": max(method.tolerance, 1e-50)})
+        return out
+
+
+def _finite(value) -> bool:
+    return all(not isinstance(v, arb) or v.is_finite() for v in _components(value))
+
+
+def _value_ball(v) -> arb:
+    """A method's measured value (an mpf, a float, an exact Fraction) as an exact ball (a binary number is
+    exact; a Fraction is rounded at the working precision)."""
+    if isinstance(v, (Fraction, int)):
+        return exact(Fraction(v))
+    if isinstance(v, float):
+        return arb(v)
+    sign, man, exp, _ = (v if isinstance(v, mpmath.mpf) else mpmath.mpf(v))._mpf_
+    return arb(-int(man) if sign else int(man)) * arb(2) ** int(exp)
 
 
 @dataclass(frozen=True)
@@ -228,6 +460,21 @@ class SectionIntegral(MeasuredWitness):
             moment, _ = method.integrate(g, [lo_n, hi_n])
             return moment if self.quantity == "moment" else moment / volume
 
+    def enclose(self, case, bits):
+        """The quantity by ``acb.integral`` (:func:`~symfloat.engine.enclosure.integral`), rigorous."""
+        return self.combined([self._enclosed(area, span, case, bits) for area, span in self.parts])
+
+    def _enclosed(self, area, bounds, case, bits):
+        lo, hi = (sp.sympify(b).xreplace(case.params) for b in bounds)
+        origin = lo if self.origin is None else sp.sympify(self.origin).xreplace(case.params)
+        area = area.xreplace(case.params)
+        volume = integral(area, self.z, lo, hi, bits)
+        if self.quantity == "volume":
+            return volume
+        moment = integral((self.z - origin) * area, self.z, lo, hi, bits)
+        with working_precision(bits):
+            return moment if self.quantity == "moment" else moment / volume
+
 
 SECTION = sp.symbols("section_area0:16")    # the areas of the planes of a PlaneSections witness, in order
 
@@ -276,6 +523,18 @@ class PlaneSections(MeasuredWitness):
                 lo, hi = (mpmath.mpf(sp.N(sp.sympify(e).xreplace(at), method.dps + 10)) for e in self.chord)
                 areas.append(method.integrate(f, [lo, hi])[0])
             return self.combined(areas, case)
+
+    def enclose(self, case, bits):
+        """The planes' areas by ``acb.integral`` of the chord widths, combined in ball arithmetic."""
+        areas = []
+        for plane in self.planes:
+            at = {**case.params, self.position: sp.sympify(plane).xreplace(case.params)}
+            lo, hi = (sp.sympify(e).xreplace(at) for e in self.chord)
+            areas.append(integral(self.width.xreplace(at), self.across, lo, hi, bits))
+        items = self.combine if isinstance(self.combine, tuple) else (self.combine,)
+        values = tuple(ball(sp.sympify(item).xreplace(case.params), bits, dict(zip(SECTION, areas)))
+                       for item in items)
+        return values if isinstance(self.combine, tuple) else values[0]
 
     def combined(self, areas, case):
         """The targets' quantity from the planes' *areas* at *case*, at the working precision."""
@@ -371,6 +630,16 @@ class HullWitness(MeasuredWitness):
             volume = method.integrate(pts, 0, 0)
             return tuple(method.integrate(pts, ax, 1) / volume for ax in range(3))
 
+    def enclose(self, case, bits):
+        """The exact hull's quantity as exact rationals (balls of radius 0)."""
+        volume, centroid = hull_volume_centroid(case.data)
+        if self.quantity == "volume":
+            return volume
+        height = centroid[self.axis] - min(p[self.axis] for p in case.data)
+        if self.quantity in ("height", "moment"):
+            return height if self.quantity == "height" else height * volume
+        return tuple(centroid)
+
 
 @dataclass(frozen=True)
 class FaceSections:
@@ -393,6 +662,10 @@ class SideFaces(MeasuredWitness):
         count = side_faces if isinstance(method, ExactHull) else side_faces_by_sections
         return tuple(_mpf(Fraction(n)) for n in count(case.data, self.axis))
 
+    def enclose(self, case, bits):
+        """The counts of the exact hull's faces, exact."""
+        return tuple(Fraction(n) for n in side_faces(case.data, self.axis))
+
 
 @dataclass(frozen=True)
 class ConvergenceOrder:
@@ -413,7 +686,9 @@ class ConvergenceOrder:
     slack: float = 0.15
     dps: int = 40
 
-    def run(self, readings):
+    def run(self, readings, allowances=None):
+        """An :class:`Outcome` for each targeted reading: the fitted order against ``order`` (a slope has no
+        enclosure, so no certified decision; *allowances* are not used)."""
         records, errors = [], []
         with mpmath.workdps(self.dps):
             for n in self.panels:

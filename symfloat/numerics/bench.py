@@ -21,38 +21,46 @@ method that applies to its kind:
   declares (their precisions and steps are tied to its limits and series, so no others apply), the
   highest-precision one the reference where no exact reference exists.
 
+Every witness kind with a certified method (``enclose``, issue 29) is also measured in Arb ball arithmetic
+at 64 and 128 bits (:class:`Enclosure`).
+
 The reference of a targeted formula is the exact value of its valid reading
 (the reading as printed when no erratum is declared, the corrected reading
 otherwise) at the case's parameters; where that reading is no closed number,
-the witness's 100-digit measurement.  Each measurement records the relative
-error against the reference (worst over the cases) and the wall time of all
-cases (median of repeats).
+the witness's Arb enclosure at :data:`REFERENCE_BITS` bits (a declared floating-body witness without one:
+its highest precision).  Each measurement records the relative error against the reference (worst over
+the cases) -- a proven bound, ``|value - mid| + rad`` of the reference's ball and the value's own, where
+the reference is exact or an enclosure -- and the wall time of all cases (median of repeats).
 """
 from __future__ import annotations
 
 import statistics
 import time
 from dataclasses import dataclass, field
+from fractions import Fraction
 
 import mpmath
 import sympy as sp
+from flint import arb
 
 from ..engine.check import _resolved, _substitute
 from ..engine.construction_witness import ConstructionWitness
 from ..engine.figure_witness import CurveRoot, FigureWitness
 from ..engine.floating_witness import Combined, FloatingWitness, Joined
 from ..engine.quadrature import Composite, GaussLegendre64, GaussLegendreMP, TanhSinh
-from ..engine.witness import (ConvergenceOrder, ExactHull, HullSlices, HullWitness, PlaneSections,
+from ..engine.witness import (ConvergenceOrder, ExactHull, HullSlices, HullWitness, MeasuredWitness, PlaneSections,
                               Precision, SectionIntegral, SideFaces)
 from ..model.claim import members
 from ..model.relation import is_relation
 from ..registry import load, select
 
 __all__ = ["Measurement", "Bench", "methods_for", "newton_cotes", "run_bench", "DIGITS", "REFERENCE_DPS",
-           "FAMILIES", "DECLARED", "family_of"]
+           "FAMILIES", "DECLARED", "family_of", "Enclosure", "REFERENCE_BITS", "certified"]
 
 DIGITS = (15, 30, 50, 100)
 REFERENCE_DPS = 100
+REFERENCE_BITS = 256          # the Arb enclosure a formula without a closed exact reading is measured against
+ARB_BITS = (64, 128)
 FLOAT64_ORDERS = (2, 3, 4, 6, 8, 12, 16)
 PANELS = (2, 4, 8, 16, 32, 64)
 FAMILIES = {
@@ -94,6 +102,22 @@ class Bench:
     locators: dict = field(default_factory=dict)     # "derivation/formula" -> source locator
 
 
+@dataclass(frozen=True)
+class Enclosure:
+    """The certified method as a benchmarked one: the witness's ``enclose`` at ``bits`` bits."""
+
+    bits: int
+
+    @property
+    def name(self):
+        return f"Arb ball arithmetic, {self.bits} bits"
+
+
+def certified(w) -> bool:
+    """Whether the witness kind of *w* has a certified method (its own ``enclose``)."""
+    return isinstance(w, MeasuredWitness) and type(w).enclose is not MeasuredWitness.enclose
+
+
 def family_of(w):
     """The witness family *w* is listed under (a :class:`Combined` witness under its first part's), or None."""
     if isinstance(w, Combined):
@@ -108,7 +132,11 @@ def newton_cotes(d) -> bool:
 
 
 def methods_for(w, d, digits=DIGITS, orders=FLOAT64_ORDERS, panels=PANELS) -> tuple:
-    """The methods a witness is measured with (see the module docstring)."""
+    """The methods a witness is measured with (see the module docstring), Arb's last where it applies."""
+    return _methods(w, d, digits, orders, panels) + (tuple(Enclosure(b) for b in ARB_BITS) if certified(w) else ())
+
+
+def _methods(w, d, digits, orders, panels) -> tuple:
     if isinstance(w, (SectionIntegral, PlaneSections)):
         ms = [TanhSinh(f"tanh-sinh, {p} digits", 0, "mpmath", p) for p in digits]
         ms += [GaussLegendreMP(f"Gauss-Legendre (mpmath), {p} digits", 0, "mpmath", p) for p in digits]
@@ -135,17 +163,33 @@ def _method_name(m):
     return m.name
 
 
+def _exact_mpf(x: arb):
+    man, exp = x.man_exp()
+    return mpmath.mpf((int(man), int(exp)))
+
+
+def _ball_pair(v):
+    """A measured value as ``(mid, rad)``: a ball's midpoint and radius, a number with radius 0."""
+    if isinstance(v, arb):
+        return _exact_mpf(v.mid()), _exact_mpf(v.rad())
+    if isinstance(v, Fraction):
+        return mpmath.mpf(v.numerator) / v.denominator, mpmath.mpf(0)
+    return (mpmath.mpf(v) if not isinstance(v, sp.Basic) else mpmath.mpf(sp.N(v, REFERENCE_DPS + 10))), mpmath.mpf(0)
+
+
 def _vector(value):
     values = value if isinstance(value, (tuple, list)) else [value]
-    return [mpmath.mpf(v) if not isinstance(v, sp.Basic) else mpmath.mpf(sp.N(v, REFERENCE_DPS + 10))
-            for v in values]
+    with mpmath.workdps(REFERENCE_DPS + 20):
+        return [_ball_pair(v) for v in values]
 
 
 def _rel_error(value, ref):
+    """The proven error of *value* against the reference balls *ref*: ``|mid - mid'| + rad + rad'``,
+    relative to the reference's size (absolute where it is 0)."""
     with mpmath.workdps(REFERENCE_DPS + 20):
         v = _vector(value)
-        scale = max(abs(r) for r in ref)
-        err = max(abs(a - b) for a, b in zip(v, ref))
+        scale = max(abs(m) for m, _ in ref)
+        err = max(abs(a - m) + ra + rm for (a, ra), (m, rm) in zip(v, ref))
         return float(err / scale if scale > mpmath.mpf(10) ** (20 - REFERENCE_DPS) else err)
 
 
@@ -165,7 +209,8 @@ def _exact_reference(chain, params):
         comps = list(v) if isinstance(v, sp.MatrixBase) else [v]
         with mpmath.workdps(REFERENCE_DPS + 20):
             try:
-                vals = [mpmath.mpf(sp.Float(sp.N(c, REFERENCE_DPS + 10), REFERENCE_DPS + 10)._mpf_) for c in comps]
+                vals = [(mpmath.mpf(sp.Float(sp.N(c, REFERENCE_DPS + 10), REFERENCE_DPS + 10)._mpf_), mpmath.mpf(0))
+                        for c in comps]
             except TypeError:
                 continue            # not a real number
         return vals
@@ -238,10 +283,12 @@ def _plane_sections(w, case):
 
 def _runner(w, case):
     if isinstance(w, SectionIntegral):
-        return _section_integral(w, case)
-    if isinstance(w, PlaneSections):
-        return _plane_sections(w, case)
-    return lambda method: w.measure(case, method)
+        inner = _section_integral(w, case)
+    elif isinstance(w, PlaneSections):
+        inner = _plane_sections(w, case)
+    else:
+        inner = lambda method: w.measure(case, method)  # noqa: E731
+    return lambda method: w.enclose(case, method.bits) if isinstance(method, Enclosure) else inner(method)
 
 
 def _measure(runners, method, repeats):
@@ -265,6 +312,8 @@ def _witness_targets(d, w, results):
 
 
 def _reference_run(w):
+    if certified(w):
+        return Enclosure(REFERENCE_BITS)
     if isinstance(w, ConstructionWitness):
         return Precision(REFERENCE_DPS, 0)
     if isinstance(w, (HullWitness, SideFaces)):
@@ -297,7 +346,8 @@ def bench_derivation(d, bench: Bench, digits=DIGITS, orders=FLOAT64_ORDERS, pane
         if missing:
             ref_values = runs[ref_method.name][0]
             for name, refs in targets.items():
-                kind = "exact" if all(r is not None for r in refs) else f"{getattr(ref_method, 'dps', REFERENCE_DPS)} digits"
+                kind = ("exact" if all(r is not None for r in refs) else f"Arb, {ref_method.bits} bits"
+                        if isinstance(ref_method, Enclosure) else f"{getattr(ref_method, 'dps', REFERENCE_DPS)} digits")
                 bench.references[f"{d.id}/{name}"] = kind
                 targets[name] = [r if r is not None else _vector(v) for r, v in zip(refs, ref_values)]
         else:

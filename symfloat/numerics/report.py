@@ -117,7 +117,7 @@ def cheapest(bench, threshold):
 def kind(method: str) -> str:
     """The family of a method name, for colours and legends."""
     for key in ("tanh-sinh", "Gauss-Legendre (mpmath)", "Gauss-Legendre n=", "Simpson", "trapezoid",
-                "exact hull", "slices"):
+                "exact hull", "slices", "Arb ball arithmetic"):
         if method.startswith(key):
             return key.rstrip("=").replace(" n", " float64")
     return f"own computation, {method}"

@@ -22,6 +22,7 @@ from ..model.symbol_names import latex
 from ..registry import load
 from .notebook_code import STRATEGY_WORDS
 from .prose import typeset
+from .witness_words import error_cells
 
 __all__ = ["NotebookView", "definitions_markdown", "step_markdown", "step_title", "step_titles", "reading_markdown",
            "correction_markdown", "named", "chain_latex"]
@@ -285,7 +286,8 @@ def _records(title, records) -> list[str]:
         return []
     rows = ["| method | cases | abs. error | rel. error |", "|---|---|---|---|"]
     for r in records:
-        rows.append(f"| {r['method']} | {r.get('cases', 1)} | {r['abs_error']:.1e} | {r['rel_error']:.1e} |")
+        abs_cell, rel_cell = error_cells(r)
+        rows.append(f"| {r['method']} | {r.get('cases', 1)} | {abs_cell} | {rel_cell} |")
     return [title, "\n".join(rows)]
 
 

@@ -6,7 +6,9 @@ from collections import Counter
 from pathlib import Path
 
 from ..engine.check import DerivationReport
+from ..engine.witness import record_decision
 from ..files import write_if_changed
+from .witness_words import best_error
 
 __all__ = ["verification_record", "verification_table", "record_differences", "record_json", "write_record",
            "VERDICTS"]
@@ -45,6 +47,8 @@ def verification_record(reports: list[DerivationReport]) -> dict:
             "evidence": dict(sorted(Counter(f["evidence"] or "none" for f in formulas).items())),
             "cross_checked": {"formulas": sum(bool(f.numeric or f.corrected_numeric) for f in numeric_content),
                               "with_numeric_content": len(numeric_content)},
+            "certified": dict(sorted(Counter(record_decision(r) for d in reports for f in d.formulas
+                                             for r in f.numeric + f.corrected_numeric if r.get("certified")).items())),
             "steps": dict(sorted(steps.items())),
             "derivations": [d.id for d in reports],
             "failures": [msg for d in reports for msg in d.failures],
@@ -70,13 +74,6 @@ def write_record(path, reports) -> bool:
     return write_if_changed(path, text)
 
 
-def _best(numeric):
-    if not numeric:
-        return "—"
-    r = min(numeric, key=lambda r: r["rel_error"])
-    return f"{r['rel_error']:.1e} ({len(numeric)} methods)"
-
-
 def verification_table(reports: list[DerivationReport], elapsed: float | None = None) -> str:
     """A readable plain-text table, one row per printed formula, then the summary; *elapsed* is how long
     this command took, shown beside the checking time recorded (which a cached report keeps from when it
@@ -85,7 +82,7 @@ def verification_table(reports: list[DerivationReport], elapsed: float | None = 
     for d in reports:
         for f in d.formulas:
             verdict = f.verdict + (f" ({f.erratum['kind']})" if f.erratum else "")
-            rows.append((f.id, f.locator, verdict, f.evidence or "—", _best(f.numeric)))
+            rows.append((f.id, f.locator, verdict, f.evidence or "—", best_error(f.numeric)))
     widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
     lines = ["  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows]
     lines.insert(1, "  ".join("-" * w for w in widths))
@@ -102,6 +99,10 @@ def verification_table(reports: list[DerivationReport], elapsed: float | None = 
     if x["with_numeric_content"]:
         lines.append(f"numeric cross-checks: {x['formulas']} of {x['with_numeric_content']} verified formulas and "
                      f"errata have a witness ({x['formulas'] / x['with_numeric_content']:.0%})")
+    if s["certified"]:
+        lines.append("certified witness decisions (Arb): " + ", ".join(f"{n} {k}" for k, n in s["certified"].items())
+                     + ("" if "undecided" not in s["certified"] else " (undecided: the enclosure stayed too wide to "
+                        "decide at the largest precision; not counted as agreement)"))
     for msg in s["failures"]:
         lines.append(f"FAILURE: {msg}")
     return "\n".join(lines) + "\n"

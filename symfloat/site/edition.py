@@ -26,6 +26,7 @@ from ..model.source import Source
 from ..model.span import math_intervals
 from ..report.labels import sections
 from ..report.ledger import REASONS, account, waivers
+from ..report.witness_words import error_cells
 from .difference import corrected_html
 from .names import typeset_names
 from .records import Records, slug
@@ -121,8 +122,8 @@ def places(text: str, fault: str, quote: tuple[int, int]) -> list[tuple[int, int
 
 def witness_line(numeric) -> str:
     """The witnesses in one line: method, cases, absolute and relative error, seconds."""
-    return "; ".join(f"{n['method']} ({n.get('cases', '?')} cases): abs {n['abs_error']:.1e}, "
-                     f"rel {n['rel_error']:.1e}, {n['seconds']:.3g} s" for n in numeric) or "no numeric witness"
+    return "; ".join(f"{n['method']} ({n.get('cases', '?')} cases): abs {error_cells(n)[0]}, "
+                     f"rel {error_cells(n)[1]}, {n['seconds']:.3g} s" for n in numeric) or "no numeric witness"
 
 
 def _title(f: dict, records: Records) -> str:
@@ -166,7 +167,8 @@ def _witness_table(numeric) -> str:
     if not numeric:
         return "<p>No numeric witness.</p>"
     rows = "".join(f"<tr><td>{html.escape(n['method'])}</td><td>{n.get('cases', '')}</td>"
-                   f"<td>{n['abs_error']:.1e}</td><td>{n['rel_error']:.1e}</td><td>{n['seconds']:.3g} s</td></tr>"
+                   f"<td>{html.escape(error_cells(n)[0])}</td><td>{html.escape(error_cells(n)[1])}</td>"
+                   f"<td>{n['seconds']:.3g} s</td></tr>"
                    for n in numeric)
     return ('<table class="witnesses"><tr><th>witness method</th><th>cases</th><th>abs. error</th>'
             f"<th>rel. error</th><th>time</th></tr>{rows}</table>")

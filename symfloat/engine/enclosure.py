@@ -1,0 +1,262 @@
+"""Enclosures: a SymPy number, or an integral of a SymPy integrand, as a ball of FLINT's Arb.
+
+:func:`ball` walks a closed SymPy expression (its symbols replaced by numbers) over a whitelist of node
+types and evaluates it in complex ball arithmetic (``acb``) at ``prec`` bits: the ball it returns contains
+the exact value.  The nodes: ``Integer``, ``Rational`` (exact numerator over exact denominator), ``Float``
+(its **exact binary value**, the number SymPy holds: a decimal written in a formula is the print's, and the
+print's own rounding is the allowance its witness gives it, not part of the enclosure), ``pi``, ``E``,
+``I``, ``Add``, ``Mul``, ``Pow`` (any exponent; an integer power is exact up to rounding, a half power a
+square root, another the principal branch ``exp(t log b)``), ``exp``, ``log``, ``sin``, ``cos``, ``tan``,
+``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``, ``tanh`` and ``Abs``.  Any other node raises
+:class:`Unsupported` naming it.
+
+:func:`integral` encloses ``∫_lo^hi f(v) dv`` by ``acb.integral`` (Petras' adaptive Gauss–Legendre with
+rigorous error bounds, FLINT's ``acb_calc_integrate``).  The integrand must be holomorphic on a
+neighbourhood of the path: each node with a branch cut (``sqrt``, ``log``, a fractional power, ``Abs``,
+``asin``, ``acos``, ``atan``) says so by returning a non-finite ball where the ball it is given touches the
+cut, and the integrator then bisects or, at its limits, returns a non-finite ball: an enclosure too wide to
+decide, never a guess.  A piecewise integrand is not on the whitelist: split it at its breakpoints first.
+
+>>> import sympy as sp
+>>> x = sp.Symbol("x")
+>>> b = ball(sp.sqrt(2) * sp.pi / 3, 128)
+>>> b.overlaps(arb(2).sqrt() * arb.pi() / 3), b.rad() < arb(2) ** -120
+(True, True)
+>>> v = integral(sp.pi * (4 - x ** 2), x, 0, 2, 128)     # 16 pi / 3, a half sphere of radius 2
+>>> with working_precision(128):
+...     (v - 16 * arb.pi() / 3).abs_upper() < arb(2) ** -100
+True
+"""
+from __future__ import annotations
+
+import math
+from contextlib import contextmanager
+
+import sympy as sp
+from flint import acb, arb, ctx
+
+__all__ = ["Unsupported", "ball", "integral", "real_function", "sign_change_root", "working_precision", "exact", "upper", "lower"]
+
+
+# The integrator's effort: at most this many evaluations of the integrand per bit of precision.  A holomorphic
+# integrand with square-root ends (a chord through its vertex) needs about 30; an integrand unbounded at an
+# end (an integrable singularity, (1 - u)^(-1/4)) exhausts any limit, and the enclosure is then not finite.
+EVALUATIONS = 64
+
+
+class Unsupported(ValueError):
+    """A SymPy node the enclosure walker has no rigorous rule for (its message names it)."""
+
+
+@contextmanager
+def working_precision(prec: int):
+    """Arb's working precision set to *prec* bits inside the block, restored after."""
+    saved = ctx.prec
+    ctx.prec = prec
+    try:
+        yield
+    finally:
+        ctx.prec = saved
+
+
+def exact(value) -> arb:
+    """An exact number (int, :class:`fractions.Fraction`, SymPy Integer/Rational) as a ball: radius 0 for an
+    integer or a dyadic fraction, else the quotient rounded at the working precision."""
+    num, den = (value.p, value.q) if isinstance(value, sp.Rational) else (value.numerator, value.denominator)
+    return arb(int(num)) / int(den)
+
+
+def upper(x: arb) -> float:
+    """A float no smaller than every ``|v|`` in the ball *x* (``inf`` for a non-finite ball)."""
+    if not x.is_finite():
+        return float("inf")
+    f = float(x.abs_upper())
+    return f if arb(f) >= x.abs_upper() else _next_up(f)
+
+
+def lower(x: arb) -> float:
+    """A float no larger than every ``|v|`` in the ball *x* (0 for a non-finite ball or one holding 0)."""
+    if not x.is_finite():
+        return 0.0
+    f = float(x.abs_lower())
+    return f if arb(f) <= x.abs_lower() else max(_next_down(f), 0.0)
+
+
+def _next_up(f):
+    return math.nextafter(f, float("inf"))
+
+
+def _next_down(f):
+    return math.nextafter(f, 0.0)
+
+
+# ---- the walker: a SymPy tree compiled to a function of the free variables' balls -------------------------
+
+def _cut_free(z: acb, crossing) -> bool:
+    """Whether the ball *z* keeps clear of a branch cut (``crossing(z)`` true where it may touch it)."""
+    return z.is_finite() and not crossing(z)
+
+
+def _guarded(f, crossing):
+    """*f* (an ``acb`` method without an ``analytic`` flag) made to say where it is not holomorphic."""
+    def g(z, analytic):
+        if analytic and not _cut_free(z, crossing):
+            return acb(arb.nan(), arb.nan())
+        return f(z)
+    return g
+
+
+def _on_real_cut(z):          # asin, acos: the real axis outside (-1, 1)
+    return z.imag.contains(0) and not (abs(z.real) < 1)
+
+
+def _on_imag_cut(z):          # atan: the imaginary axis outside (-i, i)
+    return z.real.contains(0) and not (abs(z.imag) < 1)
+
+
+_UNARY = {
+    sp.exp: lambda z, a: z.exp(),
+    sp.log: lambda z, a: z.log(analytic=a),
+    sp.sin: lambda z, a: z.sin(),
+    sp.cos: lambda z, a: z.cos(),
+    sp.tan: lambda z, a: z.tan(),
+    sp.sinh: lambda z, a: z.sinh(),
+    sp.cosh: lambda z, a: z.cosh(),
+    sp.tanh: lambda z, a: z.tanh(),
+    sp.asin: _guarded(acb.asin, _on_real_cut),
+    sp.acos: _guarded(acb.acos, _on_real_cut),
+    sp.atan: _guarded(acb.atan, _on_imag_cut),
+    sp.Abs: lambda z, a: z.real_abs(analytic=True) if a else acb(abs(z)),
+}
+
+
+def _constant(e):
+    """A number node as a function of the working precision: evaluated at ``ctx.prec`` when first called at
+    that precision, kept for the calls at the same precision (an integrand is evaluated thousands of times)."""
+    if isinstance(e, sp.Rational):           # Integer too: an exact integer, or p / q rounded once
+        make = lambda: acb(exact(e))  # noqa: E731
+    elif isinstance(e, sp.Float):
+        sign, man, exp, _ = e._mpf_
+        value = arb(-int(man) if sign else int(man)) * arb(2) ** int(exp)     # exact: a dyadic number
+        make = lambda: acb(value)  # noqa: E731
+    elif e is sp.pi:
+        make = lambda: acb(arb.pi())  # noqa: E731
+    elif e is sp.E:
+        make = lambda: acb(arb(1).exp())  # noqa: E731
+    elif e is sp.I:
+        make = lambda: acb(0, 1)  # noqa: E731
+    else:
+        raise Unsupported(f"no enclosure for the number {e} ({type(e).__name__})")
+    kept = {}
+
+    def at_precision():
+        if ctx.prec not in kept:
+            kept[ctx.prec] = make()
+        return kept[ctx.prec]
+    return at_precision
+
+
+def _compile(e, variables):
+    """*e* as ``f(values, analytic) -> acb``, *values* the balls of *variables* in order."""
+    if e.is_Number or e.is_NumberSymbol or e is sp.I:
+        c = _constant(e)
+        return lambda v, a: c()
+    if isinstance(e, sp.Symbol):
+        if e not in variables:
+            raise Unsupported(f"the expression still names the symbol {e}")
+        k = variables.index(e)
+        return lambda v, a: v[k]
+    if isinstance(e, (sp.Add, sp.Mul)):
+        parts = [_compile(t, variables) for t in e.args]
+        if isinstance(e, sp.Add):
+            def add(v, a):
+                total = parts[0](v, a)
+                for p in parts[1:]:
+                    total = total + p(v, a)
+                return total
+            return add
+
+        def mul(v, a):
+            total = parts[0](v, a)
+            for p in parts[1:]:
+                total = total * p(v, a)
+            return total
+        return mul
+    if isinstance(e, sp.Pow):
+        base, power = _compile(e.base, variables), e.exp
+        if power.is_Integer:
+            n = int(power)
+            return lambda v, a: base(v, a) ** n
+        if power == sp.S.Half:
+            return lambda v, a: base(v, a).sqrt(analytic=a)
+        if power == -sp.S.Half:
+            return lambda v, a: base(v, a).rsqrt(analytic=a)
+        t = _compile(power, variables)
+        return lambda v, a: base(v, a).pow(t(v, a), analytic=a)
+    if e.func in _UNARY and len(e.args) == 1:
+        f, arg = _UNARY[e.func], _compile(e.args[0], variables)
+        return lambda v, a: f(arg(v, a), a)
+    raise Unsupported(f"no enclosure for a {type(e).__name__} node ({e})")
+
+
+def _real(z: acb, what) -> arb:
+    """The real part of *z*, whose imaginary part must hold 0 (the value is real), else a clear error."""
+    if not z.imag.contains(0):
+        raise ValueError(f"{what} is not a real number (its enclosure is {z})")
+    return z.real
+
+
+def ball(expr, prec: int, at: dict | None = None) -> arb:
+    """The real number *expr* (a closed SymPy expression, or one in the symbols of *at*, given as balls) as a
+    ball at *prec* bits; see the module."""
+    e = sp.sympify(expr)
+    variables = tuple(at or ())
+    f = _compile(e, variables)
+    with working_precision(prec):
+        return _real(f(tuple(acb(at[v]) for v in variables), False), e)
+
+
+def real_function(expr, variables):
+    """*expr* (closed but for *variables*) as a function of their balls returning a real ball, at the
+    working precision of the call: compiled once, for an expression evaluated many times."""
+    f = _compile(sp.sympify(expr), tuple(variables))
+    return lambda *values: _real(f(tuple(acb(v) for v in values), False), expr)
+
+
+def sign_change_root(f, lo: float, hi: float, prec: int) -> arb:
+    """A root of the real function *f* (of a ball) in ``[lo, hi]``, where ``f(lo)`` and ``f(hi)`` are balls of
+    strictly opposite signs, as a ball of radius at most ``2^-prec (1 + |root|)`` or as narrow as the signs
+    of *f* allow: bisection with exact dyadic midpoints, each half kept where the sign change is proven
+    (intermediate value theorem).  Non-finite when the signs at the ends are not proven opposite."""
+    with working_precision(prec):
+        a, b = arb(lo), arb(hi)
+        fa, fb = f(a), f(b)
+        if not ((fa < 0 and fb > 0) or (fa > 0 and fb < 0)):
+            return arb.nan()
+        negative_at_a = fa < 0
+        while (b - a) > arb(2) ** -prec * (1 + abs(a)):
+            m = (a + b) / 2                 # exact: a dyadic midpoint of dyadic ends
+            fm = f(m)
+            if (fm < 0) == negative_at_a and (fm < 0 or fm > 0):
+                a = m
+            elif fm < 0 or fm > 0:
+                b = m
+            else:
+                break
+        return a.union(b)
+
+
+def integral(expr, var, lo, hi, prec: int, at: dict | None = None) -> arb:
+    """``∫_lo^hi expr dvar`` (*expr* closed but for *var* and the symbols of *at*, given as balls; *lo*, *hi*
+    closed SymPy numbers or balls) as a ball at *prec* bits, by ``acb.integral`` with its goal ``2^-prec``
+    relative and at most ``EVALUATIONS * prec`` evaluations; non-finite when the integrand is not holomorphic
+    near the path or the evaluations run out (see the module)."""
+    constants = tuple(at or ())
+    f = _compile(sp.sympify(expr), (var, *constants))
+    with working_precision(prec):
+        fixed = tuple(acb(at[c]) for c in constants)
+        a, b = (x if isinstance(x, arb) else ball(x, prec) for x in (lo, hi))
+        value = acb.integral(lambda z, analytic: f((z, *fixed), analytic), a, b, eval_limit=EVALUATIONS * prec)
+        if not value.is_finite():
+            return arb.nan()
+        return _real(value, f"the integral of {expr}")

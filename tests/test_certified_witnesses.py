@@ -1,0 +1,213 @@
+"""The certified method of the generic witness kinds (issue 29): readings and quantities enclosed in Arb balls,
+each formula decided by the ball of the difference, a print refuted by one unit in its last digit, an exact
+reading agreeing, an enclosure too wide undecided (never passed).
+
+References (by hand): the ball of radius r has the volume 4/3 pi r^3 and its section at height z above the
+lowest point the area pi (r^2 - (z - r)^2); at r = 1 the volume is 4.18879020478639... (4 pi / 3);
+∫_{-1}^{1} sqrt(1 - x^2) dx = pi / 2; ∫_{-1}^{1} |x| dx = 1; the tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1) has
+the volume 1/6 and the centroid height 1/4; the prismatoid of a square under a smaller square has 4 side faces,
+none of them triangles (each joins a side of the base to the parallel side of the top).
+"""
+from fractions import Fraction
+
+import pytest
+import sympy as sp
+from flint import arb
+
+from symfloat.engine.check import FormulaReport, judge
+from symfloat.engine.construction_witness import Area, Centroid, ConstructionWitness, Coordinates
+from symfloat.engine.enclosure import Unsupported, ball, integral, working_precision
+from symfloat.engine.figure_witness import CENTROID, CurveRoot, Figure, FigureWitness, Over
+from symfloat.engine.witness import (CERTIFIED, SECTION, Case, HullWitness, MeasuredWitness, PlaneSections,
+                                     SectionIntegral, SideFaces, record_decision)
+
+x, z, r, P, eta = sp.symbols("x z r P eta", real=True)
+UNIT = Case({r: 1}, label="r = 1")
+SPHERE = SectionIntegral("ball", "the ball by its sections", ("v",), (UNIT,), area=sp.pi * (r ** 2 - (z - r) ** 2),
+                         z=z, bounds=(0, 2 * r))
+
+
+def chain(value):
+    """A reading: the quantity's name equal to *value*."""
+    return (sp.Symbol("q"), value)
+
+
+def _certified(outcome):
+    record = outcome.records[0]
+    assert record["method"] == CERTIFIED and record["certified"]
+    return record
+
+
+# ---- the enclosure module ------------------------------------------------------------------------------------
+
+def test_a_ball_contains_the_value_and_is_as_narrow_as_the_precision():
+    b = ball(sp.sqrt(2) * sp.atan(sp.Rational(1, 3)) + sp.log(3) * sp.E ** 2, 200)
+    with working_precision(200):
+        exact = arb(2).sqrt() * (arb(1) / 3).atan() + arb(3).log() * arb(1).exp() ** 2
+        assert b.overlaps(exact) and b.rad() < arb(2) ** -190
+
+
+def test_a_float_is_its_exact_binary_value():
+    # 0.1 in binary is 0.1000000000000000055511151231257827...: the ball holds that number, not 1/10
+    b = ball(sp.Float(0.1), 128)
+    with working_precision(128):
+        assert not b.overlaps(arb(1) / 10)
+        assert b.overlaps(arb("0.1000000000000000055511151231257827021181583404541015625"))
+
+
+def test_an_unsupported_node_is_named():
+    with pytest.raises(Unsupported, match="Piecewise"):
+        integral(sp.Piecewise((x, x > 0), (0, True)), x, -1, 1, 64)
+    with pytest.raises(Unsupported, match="gamma"):
+        ball(sp.gamma(sp.Rational(1, 3)), 64)
+    with pytest.raises(Unsupported, match="symbol r"):
+        ball(r + 1, 64)
+
+
+def test_rigorous_quadrature_with_a_branch_point_and_a_kink():
+    with working_precision(128):
+        half_disc = integral(sp.sqrt(1 - x ** 2), x, -1, 1, 128)
+        assert half_disc.overlaps(arb.pi() / 2) and half_disc.rad() < arb(2) ** -100
+        assert integral(sp.Abs(x), x, -1, 1, 128).overlaps(arb(1))
+
+
+# ---- the decision by the ball ----------------------------------------------------------------------------------
+
+def test_an_exact_reading_agrees_and_a_coefficient_one_unit_off_is_refuted():
+    assert SPHERE.run({"v": chain(sp.Rational(4, 3) * sp.pi * r ** 3)})["v"].agrees
+    # the coefficient 1.333 (4/3 to three digits) changed by one unit in its last digit, 1.334: refuted
+    out = SPHERE.run({"v": chain(sp.Rational(1334, 1000) * sp.pi * r ** 3)})["v"]
+    assert not out.agrees and not out.undecided
+    assert record_decision(_certified(out)) == "refuted"
+
+
+def test_a_printed_decimal_is_held_to_its_own_rounding():
+    # 4 pi / 3 = 4.18879020...; printed 4.18879 (half a unit in the last digit: 5e-6) agrees, 4.18880 is refuted,
+    # and the same 4.18880 printed with one digit fewer (4.1888, 5e-5) agrees
+    half_unit = {"v": sp.Rational(5, 10 ** 6)}
+    assert SPHERE.run({"v": chain(sp.Rational("4.18879"))}, half_unit)["v"].agrees
+    refuted = SPHERE.run({"v": chain(sp.Rational("4.18880"))}, half_unit)["v"]
+    assert record_decision(_certified(refuted)) == "refuted"
+    assert SPHERE.run({"v": chain(sp.Rational("4.1888"))}, {"v": sp.Rational(5, 10 ** 5)})["v"].agrees
+
+
+def test_the_methods_errors_are_proven_bounds_against_the_enclosure():
+    out = SPHERE.run({"v": chain(sp.Rational(4, 3) * sp.pi * r ** 3)})["v"]
+    for record in out.records[1:]:
+        assert record["proven"]
+        method = next(m for m in SPHERE.methods if m.name == record["method"])
+        with working_precision(256):
+            true_error = abs(arb(float(SPHERE.measure(UNIT, method))) - 4 * arb.pi() / 3) if method.dps <= 15 \
+                else None
+        if true_error is not None:        # the bound holds the float64 methods' actual error
+            assert arb(record["abs_error"]) >= true_error.lower()
+        assert record["rel_error"] <= record["rel_tolerance"]      # each method within its accuracy
+
+
+def test_plane_sections_decide_by_the_ball():
+    # the sphere of radius r cut at the heights 0 and r/2 (areas pi r^2, 3 pi r^2 / 4): the radius and the ratio
+    w = PlaneSections("discs", "two sections", ("t",), (Case({r: sp.Rational(3, 2)}),),
+                      width=2 * (r ** 2 - P ** 2) * sp.cos(eta) ** 2, position=P, across=eta,
+                      chord=(-sp.pi / 2, sp.pi / 2), planes=(0, r / 2),
+                      combine=(sp.sqrt(SECTION[0] / sp.pi), SECTION[1] / SECTION[0]))
+    assert w.run({"t": chain(sp.Matrix([r, sp.Rational(3, 4)]))})["t"].agrees
+    out = w.run({"t": chain(sp.Matrix([r, sp.Rational(751, 1000)]))})["t"]       # 0.750 one unit off
+    assert record_decision(_certified(out)) == "refuted"
+
+
+TETRAHEDRON = Case({}, [(Fraction(0),) * 3, (Fraction(1), Fraction(0), Fraction(0)),
+                        (Fraction(0), Fraction(1), Fraction(0)), (Fraction(0), Fraction(0), Fraction(1))])
+
+
+def test_exact_geometry_stays_exact():
+    volume = HullWitness("tet", "a tetrahedron", ("v",), (TETRAHEDRON,), quantity="volume")
+    record = _certified(volume.run({"v": chain(sp.Rational(1, 6))})["v"])
+    assert record["abs_error"] == 0.0 and record_decision(record) == "agrees"     # a ball of radius 0
+    height = HullWitness("tet", "a tetrahedron", ("h",), (TETRAHEDRON,), quantity="height")
+    # 1/4 printed as 0.2500000000000000001 (a difference of 1e-19): exact arithmetic refutes it
+    off = height.run({"h": chain(sp.Rational(2500000000000000001, 10 ** 19))})["h"]
+    assert record_decision(_certified(off)) == "refuted"
+
+
+def test_a_count_one_off_is_refuted():
+    square = [(0, 0), (4, 0), (4, 4), (0, 4)]
+    top = [(1, 1), (3, 1), (3, 3), (1, 3)]
+    case = Case({}, [(Fraction(a), Fraction(b), Fraction(0)) for a, b in square]
+                + [(Fraction(a), Fraction(b), Fraction(1)) for a, b in top])
+    w = SideFaces("faces", "side faces", ("n",), (case,))
+    assert w.run({"n": chain(sp.Matrix([4, 0]))})["n"].agrees
+    assert record_decision(_certified(w.run({"n": chain(sp.Matrix([5, 0]))})["n"])) == "refuted"
+
+
+class _Blurred(MeasuredWitness):
+    """A witness whose enclosure never narrows: 1/3 within 10^-3 at every precision."""
+
+    methods = ()
+
+    def measure(self, case, method):  # pragma: no cover - it has no methods
+        raise AssertionError
+
+    def enclose(self, case, bits):
+        with working_precision(bits):
+            return arb(1) / 3 + arb(0, 1e-3)
+
+
+def test_an_enclosure_too_wide_is_undecided_and_never_passed():
+    w = _Blurred("blur", "a blurred third", ("t",), (Case({}),))
+    out = w.run({"t": chain(sp.Rational(1, 3))})["t"]
+    record = _certified(out)
+    assert record_decision(record) == "undecided" and out.undecided and not out.agrees
+    assert record["bits"] == 8 * 128                      # raised to the cap before giving up
+    assert "undecided" in out.note
+    # far enough off, the same wide ball refutes: the difference excludes 0
+    assert record_decision(_certified(w.run({"t": chain(sp.Rational(1, 2))})["t"])) == "refuted"
+    # the judge neither fails a verified formula for it nor counts it as agreement
+    identity = {"status": "proved"}
+    f = FormulaReport("d/t", "s", "l", "verified", "symbolic", [record], "", "", identity=identity)
+    verdict, evidence, failures = judge(f, False)
+    assert (verdict, failures) == ("verified", [])
+    f.identity = {"status": "refuted"}
+    assert "the print is refuted but the witnesses agree with it" not in judge(f, True)[2]
+
+
+def test_a_construction_is_enclosed_point_by_point():
+    # the right triangle (0,0,0), (3,0,0), (0,4,0): area 6 by Heron, centroid (1, 4/3, 0) where two medians meet
+    w = ConstructionWitness("s", "a right triangle", ("t",), (Case({}, [(0, 0, 0), (3, 0, 0), (0, 4, 0)]),),
+                            names=("P", "Q", "R"), points=(("S", Centroid("P", "Q", "R")),),
+                            quantity=(Area("P", "Q", "R"), Coordinates("S")))
+    assert w.run({"t": chain(sp.Matrix([6, 1, sp.Rational(4, 3), 0]))})["t"].agrees
+    off = w.run({"t": chain(sp.Matrix([6, 1, sp.Rational(1334, 1000), 0]))})["t"]     # 1.333 one unit off
+    assert record_decision(_certified(off)) == "refuted"
+
+
+def test_plane_figures_polygons_exact_strips_by_rigorous_quadrature():
+    X, Y, a, b = sp.symbols("X Y a b", positive=True)
+    case = Case({a: 3, b: 2})
+    ellipse = Figure.strips(Y, X, -a, a, (-b * sp.sqrt(1 - X ** 2 / a ** 2), b * sp.sqrt(1 - X ** 2 / a ** 2)))
+    # ∫∫ x² over the ellipse: pi a³ b / 4 (= 27 pi / 2 here); the coefficient 1/4 read 0.251 is refuted
+    w = FigureWitness("e", "the ellipse", ("m",), (case,), coords=(X, Y), figure=ellipse, quantity=Over(X ** 2))
+    assert w.run({"m": chain(sp.pi * a ** 3 * b / 4)})["m"].agrees
+    assert record_decision(_certified(w.run({"m": chain(sp.Rational(251, 1000) * sp.pi * a ** 3 * b)})["m"])) \
+        == "refuted"
+    # the triangle (0,0), (a,0), (0,b): centroid (a/3, b/3), exact: the difference is a ball of radius 0
+    tri = FigureWitness("t", "a triangle", ("c",), (case,), coords=(X, Y),
+                        figure=Figure.polygon([(0, 0), (a, 0), (0, b)]), quantity=(CENTROID[0], CENTROID[1]))
+    record = _certified(tri.run({"c": chain(sp.Matrix([a / 3, b / 3]))})["c"])
+    assert record_decision(record) == "agrees" and record["abs_error"] == 0.0
+
+
+def test_a_curve_root_is_proven_by_a_sign_change():
+    X, Y, a, b = sp.symbols("X Y a b", positive=True)
+    w = CurveRoot("y", "the ellipse's ordinate", ("y",), (Case({a: 2, b: 1, X: sp.Rational(1, 2)}),),
+                  equation=X ** 2 / a ** 2 + Y ** 2 / b ** 2 - 1, variable=Y, bracket=(0, b))
+    assert w.run({"y": chain(b * sp.sqrt(1 - X ** 2 / a ** 2))})["y"].agrees       # sqrt(15) / 4
+    assert record_decision(_certified(w.run({"y": chain(sp.Rational(9683, 10000))})["y"])) == "refuted"  # 0.9682 + 1
+
+
+def test_a_reading_without_a_rigorous_rule_is_undecided_and_still_compared():
+    # Gamma is not on the enclosure's whitelist: 4/3 pi r^3 written as Gamma(1/2)^2 4/3 r^3 (Gamma(1/2)^2 = pi)
+    out = SPHERE.run({"v": chain(sp.gamma(sp.Rational(1, 2), evaluate=False) ** 2 * sp.Rational(4, 3) * r ** 3)})["v"]
+    record = _certified(out)
+    assert "gamma" in record["unsupported"] and record_decision(record) == "undecided" and out.undecided
+    assert record["bits"] == 128                  # no precision raised for a node no precision can enclose
+    assert [record_decision(r) for r in out.records[1:]] == ["agrees"] * len(SPHERE.methods)    # the former route
