@@ -291,12 +291,14 @@ def _scene_args(p):
 def _scene(args) -> int:
     from .report.scene import scene_json, scene_plot, scene_record, scene_table
     from .solver import make_scene, solve
+    from .solver.certificate import certify
     from .comparison.coverage import cover
 
     start = time.perf_counter()
     scene = make_scene(args.body, args.density, args.dims, args.sides, args.polygon)
     plot = _plot_target(args.output)
     solution = solve(scene)
+    certify(solution)
     evaluated, unmatched = cover(solution)
     record = scene_record(solution, evaluated, unmatched, time.perf_counter() - start)
     print(scene_json(record) if args.format == "json" else scene_table(record))

@@ -78,6 +78,7 @@ class Equilibrium:
     decided: str = ""           # how the second variation's signs were decided where not in float64 (exact, digits)
     formulas: list = field(default_factory=list)
     predictions: list = field(default_factory=list)
+    certificate: object = None  # what ball arithmetic proved (symfloat.solver.certificate), where it was asked
 
 
 @dataclass
