@@ -111,6 +111,12 @@ def scene_table(record) -> str:
         lines.append(f"DISAGREEMENT: {p['derivation']} {', '.join(p['locators'])} predicts an equilibrium at up "
                      f"{[round(x, 6) for x in p['predicted_up']]} ({p['predicted_stability']}); "
                      f"{p['disagreement']}")
+    completeness = record["checks"].get("completeness")
+    if completeness:
+        lines.append(f"completeness: {completeness['statement']} ({completeness['squares_examined']} squares of the "
+                     f"sphere of up vectors: {completeness['squares_excluded']} without an equilibrium, "
+                     f"{completeness['squares_accounted']} holding exactly one reported; "
+                     f"{completeness['seconds']:.1f} s)")
     lines.append("")
     lines.append(f"derivations evaluated: {', '.join(record['derivations_evaluated']) or 'none'}; "
                  f"checks {record['checks']}; {record['seconds']['total']:.2f} s")

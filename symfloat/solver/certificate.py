@@ -43,7 +43,8 @@ from ..geometry.floating import draught
 from .bodies import polyhedron
 from .selfcheck import SelfCheckError
 
-__all__ = ["Certificate", "CertificateError", "certify", "certify_equilibrium", "ArbBody", "arb_body"]
+__all__ = ["Certificate", "CertificateError", "certify", "certify_equilibrium", "ArbBody", "arb_body", "evaluate",
+           "krawczyk", "exact_ball", "PRECISION"]
 
 AMBIGUOUS = 4           # vertices whose side of the water plane the box leaves open: each taken both ways
 PRECISION = 128         # bits of Arb's working precision
@@ -109,7 +110,8 @@ def _prism(polygon, length) -> ArbBody:
     return ArbBody(vertices, faces, volume, tuple(m / volume for m in moment), radius)
 
 
-def _exact(q) -> arb:
+def exact_ball(q) -> arb:
+    """The rational *q* as an Arb ball (exact where its denominator is a power of two, else one ulp wide)."""
     q = Fraction(q)
     return arb(q.numerator) / q.denominator
 
@@ -117,11 +119,11 @@ def _exact(q) -> arb:
 def arb_body(scene) -> ArbBody:
     """The :class:`ArbBody` of a cube, box or prism scene, from its exact dimensions."""
     if scene.body in ("cube", "box"):
-        a, b, c = (_exact(d) / 2 for d in scene.dims)
+        a, b, c = (exact_ball(d) / 2 for d in scene.dims)
         return _prism([(-a, -b), (a, -b), (a, b), (-a, b)], 2 * c)
     if scene.body == "prism":
         n = scene.sides
-        side, length = (_exact(d) for d in scene.dims)
+        side, length = (exact_ball(d) for d in scene.dims)
         R = side / (2 * arb(1 / arb(n)).sin_pi())
         return _prism([(R * arb(arb(2 * k) / n).cos_pi(), R * arb(arb(2 * k) / n).sin_pi()) for k in range(n)],
                       length)
@@ -293,7 +295,7 @@ def _hull(values):
     return out
 
 
-def _evaluate(body, s, centre, e1, e2, x, y, t):
+def evaluate(body, s, centre, e1, e2, x, y, t):
     """The values and Jacobian of the system over the box ``x, y, t`` (arb balls), the union over the vertices
     it leaves undecided; None and the reason where it cannot be made."""
     sides = _sides(body, centre, e1, e2, x, y, t)
@@ -323,14 +325,14 @@ def _evaluate(body, s, centre, e1, e2, x, y, t):
     return (values, jacobian), ""
 
 
-def _krawczyk(body, s, centre, e1, e2, t0, r, rt):
+def krawczyk(body, s, centre, e1, e2, t0, r, rt):
     """Whether ``K(Z)`` lies inside ``Z`` (``|x|, |y| <= r``, ``|t - t0| <= rt``), the Jacobian over ``Z``, and the
     reason where not."""
     Z = [arb(0, r), arb(0, r), arb(t0, rt)]
-    middle, why = _evaluate(body, s, centre, e1, e2, arb(0), arb(0), arb(t0))
+    middle, why = evaluate(body, s, centre, e1, e2, arb(0), arb(0), arb(t0))
     if middle is None:
         return False, None, why
-    over, why = _evaluate(body, s, centre, e1, e2, *Z)
+    over, why = evaluate(body, s, centre, e1, e2, *Z)
     if over is None:
         return False, None, why
     Fm, _ = middle
@@ -376,7 +378,7 @@ def certify_equilibrium(body: ArbBody, s, up, t0: float) -> Certificate:
     saved = ctx.prec
     ctx.prec = PRECISION
     try:
-        s = _exact(s)
+        s = exact_ball(s)
         submerged = body.volume * s
         centre = tuple(arb(float(c)) for c in up)
         c = np.array([float(v) for v in up])
@@ -389,7 +391,7 @@ def certify_equilibrium(body: ArbBody, s, up, t0: float) -> Certificate:
         why = ""
         for r in RADII:
             rt = body.radius * 2 * r + 1e-12 * body.radius
-            ok, J, why = _krawczyk(body, s, centre, e1, e2, float(t0), r, rt)
+            ok, J, why = krawczyk(body, s, centre, e1, e2, float(t0), r, rt)
             if ok:
                 values = _eigenvalues(J, submerged, centre, e1, e2, r)
                 if values is None:
