@@ -15,8 +15,8 @@ the other.  The thresholds and where each comes from:
   ``(1 - sqrt(2/3)) / 2``, the hexagonal 1 x 2 at ``(1 - sqrt(7/12)) / 2``).
 
 A scene that refuses (exit status 1, a failed self-check: the cube 1e-12 below its corner-up threshold 1/6,
-index sum 26) contradicts nothing; one that answers must agree.  The default run probes the cube's face-up pitchfork at delta = 1e-12 (two scenes); ``pytest -m slow`` every
-threshold at delta = 1e-12, 1e-9, 1e-6, 1e-3.
+index sum 26) contradicts nothing; one that answers must agree.  The default run probes the cube's face-up
+pitchfork at delta = 1e-12 (two scenes); ``pytest -m slow`` every threshold at delta = 1e-12, 1e-9, 1e-6, 1e-3.
 """
 import functools
 import json
@@ -75,7 +75,8 @@ def _prism_thresholds():
     out = []
     for n in range(3, 9):
         s1 = _axis_threshold(n, 2)
-        out += [("prism", "1,2", n, s1, "face z up", "stable below"), ("prism", "1,2", n, 1 - s1, "face z up", "stable above")]
+        out += [("prism", "1,2", n, s1, "face z up", "stable below"),
+                ("prism", "1,2", n, 1 - s1, "face z up", "stable above")]
     return out
 
 

@@ -19,9 +19,10 @@ clipped face by face (Sutherland-Hodgman, each crossing point ``a + (t - u.a)/(u
 edge from below to above) and its volume and moment are sums of tetrahedra from an apex on the water plane
 (the mean of the crossing points; the cap's tetrahedra vanish).  Their derivatives are the waterplane's
 integrals (``dV = A dt - C . du``, ``dM = C dt - Q du``: :func:`_waterplane`), enclosed over the box with far
-less overestimation than the volume's own sums would give.  Which vertices lie below is fixed where the box decides it; a vertex
-whose height the box does not separate from the plane is taken both ways (``V`` and ``M`` are continuously
-differentiable across, so the union of the Jacobians holds the true one), up to :data:`AMBIGUOUS` of them.
+less overestimation than the volume's own sums would give.  Which vertices lie below is fixed where the box
+decides it; a vertex whose height the box does not separate from the plane is taken both ways (``V`` and ``M``
+are continuously differentiable across, so the union of the Jacobians holds the true one), up to
+:data:`AMBIGUOUS` of them; a crossing point on an edge whose height may vanish is anywhere on that edge.
 
 Stability: on ``F3 = 0`` the Jacobian of ``F1, F2`` reduced by ``F3`` (its Schur complement,
 ``R = J_xx - J_xt J_tx / J_tt``) is ``|u|^3 V`` times the chart's Hessian of ``U`` at the equilibrium, which has
@@ -103,7 +104,7 @@ def _prism(polygon, length) -> ArbBody:
         a = vertices[ring[0]]
         for b, c in zip(ring[1:], ring[2:]):
             b, c = vertices[b], vertices[c]
-            v = _det([a[k] - o[k] for k in range(3)], [b[k] - o[k] for k in range(3)], [c[k] - o[k] for k in range(3)]) / 6
+            v = _det(*[[w[k] - o[k] for k in range(3)] for w in (a, b, c)]) / 6
             volume += v
             moment = tuple(moment[k] + v * (o[k] + a[k] + b[k] + c[k]) / 4 for k in range(3))
     radius = max(float(abs(_dot(p, p)).upper()) for p in vertices) ** 0.5 * (1 + 1e-12)
@@ -410,7 +411,9 @@ def certify_equilibrium(body: ArbBody, s, up, t0: float) -> Certificate:
 
 def certify(solution) -> None:
     """Attach a :class:`Certificate` to every equilibrium of a cube, box or prism *solution* (``certificate``);
-    families and the other bodies get one that says why there is none."""
+    families and the other bodies get one that says why there is none.  A stability the certificate proves that
+    contradicts the solver's (stable or unstable) is an error (:class:`CertificateError`); where the solver left it
+    indifferent the certificate's stands beside it."""
     scene = solution.scene
     if scene.body not in ("cube", "box", "prism"):
         for e in solution.equilibria:
@@ -424,7 +427,8 @@ def certify(solution) -> None:
         up = e.digits if e.digits else e.up
         t0, _ = draught(poly, tuple(float(x) for x in up), scene.density)
         e.certificate = certify_equilibrium(body, scene.density, up, t0)
-        if e.certificate.stability and e.certificate.stability != e.stability:
+        proved, reported = e.certificate.stability, e.stability
+        if proved and reported in ("stable", "unstable") and proved != reported:
             raise CertificateError(f"{scene.body} at density {scene.density}: the equilibrium at up "
                                    f"{tuple(round(float(x), 9) for x in e.up)} is {e.stability} by the solver but "
                                    f"{e.certificate.stability} by its certificate (eigenvalues enclosed in "
