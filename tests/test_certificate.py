@@ -111,3 +111,12 @@ def test_the_jacobian_is_the_derivative_of_the_system():
             difference = (float(plus[i].mid()) - float(minus[i].mid())) / (2 * h)
             assert abs(difference - float(J[i][j].mid())) <= 1e-6, (i, j)
             assert float(J[i][j].rad()) < 1e-12
+
+
+def test_a_certificate_stands_beside_an_indifferent_position():
+    # where the solver left a position indifferent, the certificate's decision is shown, no contradiction
+    sol = solve(make_scene("cube", "3/10"))
+    corner = _at(sol, (1 / math.sqrt(3),) * 3)
+    sol.equilibria[sol.equilibria.index(corner)] = replace(corner, stability="indifferent")
+    certify(sol)
+    assert _at(sol, (1 / math.sqrt(3),) * 3).certificate.stability == "stable"
