@@ -1,11 +1,12 @@
 """The exclusion search (issue 33, `symfloat scene --certify`): completeness is claimed only when every square
 of the sphere of up vectors is proved empty or to hold exactly one reported equilibrium."""
+import numpy as np
 import pytest
 
 from symfloat.report.scene import scene_record, scene_table
 from symfloat.solver import make_scene, solve
 from symfloat.solver.certificate import certify
-from symfloat.solver.exclusion import exclusion_search
+from symfloat.solver.exclusion import _in_domain, exclusion_search
 
 
 def _certified(body, density, dims=None, sides=None):
@@ -51,3 +52,21 @@ def test_a_missing_equilibrium_is_never_called_complete():
     assert len(sol.equilibria) == 2
     found = exclusion_search(sol)
     assert not found.complete and found.statement.startswith("not certified")
+
+
+def test_a_prism_is_searched_over_azimuths_0_to_pi_over_n():
+    # the hexagonal prism's rotations by 60 degrees and its mirror y -> -y leave the azimuths 0 .. 30 degrees
+    scene = make_scene("prism", "3/10", "1,2", 6)
+    x, y, z = np.eye(3)
+    assert _in_domain(scene, x, y, z, 0.25, 0.5, 0.01)          # azimuth atan(0.25) = 14 degrees
+    assert not _in_domain(scene, x, y, z, 0.75, 0.5, 0.01)      # 37 degrees
+    assert _in_domain(scene, x, y, z, 0.57, 0.5, 0.01)          # 29.7 .. 30.3 degrees: meets 30
+    assert _in_domain(scene, z, x, y, 0.0, 0.0, 0.1)            # round the axis
+    assert not _in_domain(scene, y, x, z, 0.0, 0.5, 0.1)        # azimuth 90 degrees
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("sides", [3, 6])
+def test_prisms_at_030_are_complete(sides):
+    found = exclusion_search(_certified("prism", "3/10", "1,2", sides))
+    assert found.complete and found.accounted >= 3

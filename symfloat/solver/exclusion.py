@@ -4,7 +4,8 @@ The sphere is covered by the six charts ``u = c + a f + b g`` (``c`` a coordinat
 the other two axes, ``|a|, |b| <= 1``: every direction lies in the chart of its largest component).  A symmetry
 of the body restricts the search: the mirror ``z -> -z`` (every box and prism) to ``u_z >= 0``, a box's mirrors
 ``x -> -x`` and ``y -> -y`` to ``u_x, u_y >= 0`` as well, a prism's mirror ``y -> -y`` (a vertex of its base on
-``x``) to ``u_y >= 0``, a cube's rotations to ``0 <= u_x <= u_y <= u_z``: every equilibrium has a copy there.
+``x``) and its rotations about its axis to the azimuths ``0 .. pi/n``, a cube's rotations to
+``0 <= u_x <= u_y <= u_z``: every equilibrium has a copy there.
 
 Each square of a chart, with the draught enclosed over it (``t(u_m) +- R |u - u_m|``: ``dt/du`` is the
 waterplane's centroid, inside the body, ``R`` the largest ``|p|`` of a vertex; ``1e-9 R`` more for the float64
@@ -24,6 +25,7 @@ or a position not certified (a family is no isolated zero).
 """
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import dataclass
 
@@ -90,9 +92,18 @@ def _squares(a, b):
     return [((a0 + a1) / 2, (b0 + b1) / 2, (a1 - a0) / 2)]
 
 
-def _in_domain(cube: bool, am, bm, half) -> bool:
-    """Whether the square meets the part of its chart searched: for a cube ``a <= b``, else all of it."""
-    return not cube or am - half <= bm + half
+def _in_domain(scene, c, f, g, am, bm, half) -> bool:
+    """Whether the square meets the part of its chart searched: for a cube ``a <= b``; for a prism of ``n`` sides
+    the azimuths ``0 .. pi/n`` (its rotations about the axis and its mirror ``y -> -y``): the azimuth along a
+    side of a square is monotone (a chart's straight line), so the square's lie between its corners' unless it
+    holds the axis; a box all of it."""
+    if scene.body == "cube":
+        return am - half <= bm + half
+    if scene.body != "prism" or (c[2] > 0 and abs(am) <= half and abs(bm) <= half):
+        return True
+    azimuths = [math.atan2(u[1], u[0]) for u in (c + (am + da * half) * f + (bm + db * half) * g
+                                                 for da in (-1, 1) for db in (-1, 1))]
+    return max(azimuths) >= -1e-12 and min(azimuths) <= math.pi / scene.sides + 1e-12
 
 
 def _excluded(body, s, centre, f, g, t0, half, rt) -> bool:
@@ -141,8 +152,8 @@ def exclusion_search(solution, limit: int = LIMIT) -> Completeness:
     ctx.prec = PRECISION
     try:
         s = exact_ball(scene.density)
-        cube = scene.body == "cube"
-        todo = [(c, f, g, sq) for c, f, g, a, b in _charts(halves, cube) for sq in _squares(a, b)]
+        todo = [(c, f, g, sq) for c, f, g, a, b in _charts(halves, scene.body == "cube") for sq in _squares(a, b)
+                if _in_domain(scene, c, f, g, *sq)]
         excluded = accounted = examined = 0
         while todo:
             if examined >= limit:
@@ -168,7 +179,7 @@ def exclusion_search(solution, limit: int = LIMIT) -> Completeness:
                                       f"proved to hold a reported equilibrium", excluded, accounted, examined)
             h = half / 2
             todo += [(c, f, g, (am + da * h, bm + db * h, h)) for da in (-1, 1) for db in (-1, 1)
-                     if _in_domain(cube, am + da * h, bm + db * h, h)]
+                     if _in_domain(scene, c, f, g, am + da * h, bm + db * h, h)]
         return outcome(True, "complete (certified)", excluded, accounted, examined)
     finally:
         ctx.prec = saved
