@@ -51,6 +51,7 @@ AMBIGUOUS = 4           # vertices whose side of the water plane the box leaves 
 PRECISION = 128         # bits of Arb's working precision
 RADII = (1e-9, 1e-7, 1e-5)      # chart half-widths tried in turn (radians, to first order)
 SINGULAR = 1e12         # the condition number of the Jacobian at the middle beyond which no box is tried
+UNIT = arb(0.5, 0.5)    # the interval [0, 1]
 
 
 class CertificateError(SelfCheckError):
@@ -129,9 +130,6 @@ def arb_body(scene) -> ArbBody:
         return _prism([(R * arb(arb(2 * k) / n).cos_pi(), R * arb(arb(2 * k) / n).sin_pi()) for k in range(n)],
                       length)
     raise ValueError(f"certificates are made for cubes, boxes and prisms, not {scene.body}")
-
-
-UNIT = arb(0.5, 0.5)        # [0, 1]
 
 
 def _fraction(rise, height):
