@@ -114,8 +114,8 @@ def scene_table(record) -> str:
     completeness = record["checks"].get("completeness")
     if completeness:
         lines.append(f"completeness: {completeness['statement']} ({completeness['squares_examined']} squares of the "
-                     f"sphere of up vectors: {completeness['squares_excluded']} without an equilibrium, "
-                     f"{completeness['squares_accounted']} holding exactly one reported; "
+                     f"sphere of up vectors examined: {completeness['squares_excluded']} without an equilibrium, "
+                     f"{completeness['squares_accounted']} holding exactly one reported, the others split; "
                      f"{completeness['seconds']:.1f} s)")
     lines.append("")
     lines.append(f"derivations evaluated: {', '.join(record['derivations_evaluated']) or 'none'}; "
