@@ -295,18 +295,26 @@ def _scene_args(p):
     p.add_argument("--format", choices=("table", "json"), default="table")
     p.add_argument("--output", "--plot", type=Path, dest="output",
                    help="draw the stable positions into this PNG file (--plot: the earlier name)")
+    p.add_argument("--certify", action="store_true",
+                   help="prove that no other equilibrium exists (an exclusion search over the sphere of up "
+                        "vectors in ball arithmetic; cube, box, prism; tens of seconds to minutes)")
     p.epilog = f"Supported inputs: {DOMAIN}. Numbers are ASCII decimals or p/q, kept exact. {EXIT_STATUS}."
 
 
 def _scene(args) -> int:
     from .report.scene import scene_json, scene_plot, scene_record, scene_table
     from .solver import make_scene, solve
+    from .solver.certificate import certify
+    from .solver.exclusion import exclusion_search
     from .comparison.coverage import cover
 
     start = time.perf_counter()
     scene = make_scene(args.body, args.density, args.dims, args.sides, args.polygon)
     plot = _plot_target(args.output)
     solution = solve(scene)
+    certify(solution)
+    if args.certify:
+        solution.checks["completeness"] = exclusion_search(solution).record()
     evaluated, unmatched = cover(solution)
     record = scene_record(solution, evaluated, unmatched, time.perf_counter() - start)
     print(scene_json(record) if args.format == "json" else scene_table(record))

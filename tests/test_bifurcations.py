@@ -307,9 +307,11 @@ def test_box_1_3half_1_just_below_1_12_short_arc_is_one_stable_class():
     arc = [e for e in sol.equilibria if e.up[0] == 0 and 0 < e.up[2] < e.up[1] < 1]
     assert len(arc) == 2                    # the arc, and the maximum beyond it where the base's edge emerges
     e = min(arc, key=lambda e: e.potential)
-    assert e.stability == "stable" and e.copies == 8 and e.family == "isolated"
+    # reported as the arc it is (issue 33), its length the chord between its ends on both sides of the mirror
+    assert e.stability == "stable" and e.copies == 8 and (e.family, e.ring_shape) == ("ring", "arc")
     assert abs(math.atan2(e.up[2], e.up[1]) - phi_1) <= 1e-8 <= e.error_rad
     assert e.error_rad == pytest.approx(half_chord, rel=1e-6)           # its extent: the whole arc
+    assert e.ring_length == pytest.approx(2 * half_chord, rel=1e-6)
     assert 1e-8 < omega < 2e-4                                          # shorter than a reported family
     # just above 1/12 no base-free azimuth is left: no equilibrium tilted by about phi_1 from y
     above = solve(make_scene("box", Fraction(1, 12) + Fraction(1, 10 ** 6), dims="1,3/2,1"))

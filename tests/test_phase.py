@@ -110,6 +110,7 @@ def test_no_threshold_at_the_look_density_next_to_a_ring_end():
     base = make_scene("box", "1/2", "1,3/2,1")
     sa, sb = Fraction(1, 12) - Fraction(1, 10 ** 6), Fraction(1, 12) + Fraction(1, 10 ** 6)
     a, b = _stable(make_scene("box", sa, "1,3/2,1")), _stable(make_scene("box", sb, "1,3/2,1"))
-    assert "tilted in the y-z plane" in set(a) - set(b)          # the scene's view: stable below, not above
+    # the scene's view: the short arc (a piece of the ring round y, labelled an arc) stable below, not above
+    assert "ring around y" in set(a) - set(b)
     found = _thresholds_between(box(*base.dims), box_group(base.dims), body_scale(base), a, b, float(sa), float(sb))
     assert not [t for t in found if abs(t.density - float(sa)) < 1e-9]

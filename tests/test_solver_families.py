@@ -274,3 +274,24 @@ def test_the_cube_just_past_the_end_of_its_whole_ring_has_its_diagonal_class(s):
     mirror = lambda t: (math.sin(t) / math.sqrt(2), math.sin(t) / math.sqrt(2), math.cos(t))  # noqa: E731
     assert abs(math.acos(abs(diagonal[0].up[2])) - _mirror_minimum((1, 1, 1), s, mirror, 0.25, 0.37)) <= 1e-6
     assert sol.checks["poincare_hopf_index_sum"] == 2 and sol.checks["family_indices"] == [-1]
+
+
+@pytest.mark.parametrize("body, dims, end, delta", [
+    ("cube", None, Fraction(1, 4), Fraction(1, 10 ** 6)),           # the end of the ring round z (phase cube)
+    ("cube", None, Fraction(1, 4), Fraction(1, 10 ** 9)),
+    ("box", "1,3/2,1", Fraction(1, 12), Fraction(1, 10 ** 6)),     # the end of the ring round y (phase box)
+])
+def test_a_short_arc_beside_a_ring_end_is_an_arc(body, dims, end, delta):
+    # issue 33: beside a ring's end, where the waterplane meets a vertex (the cube at 1/4, the box 1 x 3/2 x 1 at
+    # 1/12: the thresholds of their phase diagrams), only arcs of the ring remain, shorter than the walk reports
+    # as a family; they were reported as isolated stable points with a zero eigenvalue (the cube at 1/4 - 1e-6:
+    # eigenvalues [1.4e-49, 0.093], its error 3.6e-6 rad the arc's half length)
+    sol = solve(make_scene(body, end - delta, dims))
+    assert sol.checks["poincare_hopf_index_sum"] == 2
+    zero = [e for e in sol.equilibria if e.family == "isolated" and min(abs(x) for x in e.eigenvalues) < 1e-12]
+    arcs = [e for e in sol.equilibria if e.family == "ring"]
+    assert not zero and [(e.ring_shape, e.stability) for e in arcs] == [("arc", "stable")]
+    assert 0 < arcs[0].ring_length <= arcs[0].ring_length + arcs[0].ring_length_error < 0.1
+    if body == "cube" and delta == Fraction(1, 10 ** 6):
+        # its length, 16 delta sin(theta) at tilt theta = atan(1/2) (the issue's brute-force measurement), resolved
+        assert abs(arcs[0].ring_length - 16 * float(delta) / math.sqrt(5)) <= 1e-3 * arcs[0].ring_length

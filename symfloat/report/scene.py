@@ -54,6 +54,7 @@ def scene_record(solution, evaluated, unmatched, seconds) -> dict:
             "error_method": e.error_method,
             **({"stability_decided": e.decided} if e.decided else {}),
             "copies": e.copies,
+            **({"certificate": _certificate(e.certificate)} if e.certificate is not None else {}),
         } for e in solution.equilibria],
         "unmatched_predictions": _predictions(unmatched),
         "disagreements": sum(not p["agrees"] for e in solution.equilibria for p in e.predictions) + len(unmatched),
@@ -61,6 +62,15 @@ def scene_record(solution, evaluated, unmatched, seconds) -> dict:
         "derivations_evaluated": evaluated,
         "seconds": {"solver": solution.seconds, "total": seconds},
     }
+
+
+def _certificate(c) -> dict:
+    """The JSON of a :class:`~symfloat.solver.certificate.Certificate`."""
+    return {"certified": c.certified,
+            **({"box_radius_rad": c.radius,
+                "eigenvalue_enclosures": [list(pair) for pair in c.eigenvalues]} if c.certified else {}),
+            **({"stability": c.stability} if c.stability else {}),
+            **({"reason": c.reason} if c.reason else {})}
 
 
 def scene_json(record) -> str:
@@ -85,10 +95,28 @@ def scene_table(record) -> str:
         lines.append(f"{up:<34} {e['tilt_deg']:>8.4f}° {e['stability']:<12} {family:<9} "
                      f"{e['potential']:>12.9f} {e['waterplane']:<18} {e['error_rad']:>8.1e}  "
                      + ("; ".join(formulas) or "-"))
+    for e in record["equilibria"]:
+        c = e.get("certificate")
+        if c is None:
+            continue
+        up = "(" + ", ".join(f"{x:+.6f}" for x in e["up"]) + ")"
+        if c["certified"]:
+            eigen = ", ".join(f"[{lo:.6g}, {hi:.6g}]" for lo, hi in c["eigenvalue_enclosures"])
+            lines.append(f"certified: up {up} is the only equilibrium within {c['box_radius_rad']:.0e} rad "
+                         f"(Krawczyk, ball arithmetic); eigenvalues in {eigen}"
+                         + (f": {c['stability']}" if c.get("stability") else f"; {c['reason']}"))
+        else:
+            lines.append(f"not certified: up {up}: {c['reason']}")
     for p in record["unmatched_predictions"]:
         lines.append(f"DISAGREEMENT: {p['derivation']} {', '.join(p['locators'])} predicts an equilibrium at up "
                      f"{[round(x, 6) for x in p['predicted_up']]} ({p['predicted_stability']}); "
                      f"{p['disagreement']}")
+    completeness = record["checks"].get("completeness")
+    if completeness:
+        lines.append(f"completeness: {completeness['statement']} ({completeness['squares_examined']} squares of the "
+                     f"sphere of up vectors examined: {completeness['squares_excluded']} without an equilibrium, "
+                     f"{completeness['squares_accounted']} holding exactly one reported, the others split; "
+                     f"{completeness['seconds']:.1f} s)")
     lines.append("")
     lines.append(f"derivations evaluated: {', '.join(record['derivations_evaluated']) or 'none'}; "
                  f"checks {record['checks']}; {record['seconds']['total']:.2f} s")

@@ -109,7 +109,9 @@ def flat_cluster(c, points, group, scale: float, reach: float, flat: float):
     degenerate point of *points*, and every copy of *c* or of them, within *reach* radians of *c* whose
     potential equals c's to ``flat * scale``.  Returns ``(members, centre, extent)``: the points absorbed
     (not *c*), the most symmetric position within the cluster's extent (:func:`symmetric_point`; the
-    middle of an arc cut by a mirror) and the largest distance from it to a point of the cluster.  A
+    middle of an arc cut by a mirror), the largest distance from it to a point of the cluster, and the
+    cluster's length on the sphere ``2 asin(d / 2)``, ``d`` the largest distance between two of its points
+    (the arc's ends: about ``16 delta sin theta`` for the cube at ``1/4 - delta``).  A
     circle around the centre wider than the extent encloses the whole family, and its winding is the
     family's index; a circle around one of its points cuts the family, where the gradient vanishes."""
     u = np.asarray(c.u, dtype=float)
@@ -125,8 +127,9 @@ def flat_cluster(c, points, group, scale: float, reach: float, flat: float):
             near += close
     near = [v for v in near if np.linalg.norm(v - u) <= reach]
     if len(near) < 2:
-        return [], u, 0.0
+        return [], u, 0.0, 0.0
     extent = max(np.linalg.norm(v - u) for v in near)
     centre = symmetric_point(u, group, 2 * extent)
     extent = max(float(np.linalg.norm(v - centre)) for v in near)
-    return members, centre, extent
+    chord = max(float(np.linalg.norm(v - w)) for v in near for w in near)
+    return members, centre, extent, 2 * math.asin(min(chord / 2, 1.0))

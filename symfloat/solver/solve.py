@@ -78,6 +78,7 @@ class Equilibrium:
     decided: str = ""           # how the second variation's signs were decided where not in float64 (exact, digits)
     formulas: list = field(default_factory=list)
     predictions: list = field(default_factory=list)
+    certificate: object = None  # what ball arithmetic proved (symfloat.solver.certificate), where it was asked
 
 
 @dataclass
@@ -182,7 +183,7 @@ def _classified(poly, points, s, scale, group):
     second variation at the polished point (:func:`~symfloat.solver.critical.critical_points`) or,
     where an eigenvalue is zero to its error, from the higher orders (:mod:`~symfloat.solver.degenerate`).
     Degenerate points of one flat arc too short to be reported as a family (next to its birth or end:
-    the box 1 x 3/2 x 1 at s = 1/12 - 1e-6, Scheeffer VI (78d)) are one class
+    the box 1 x 3/2 x 1 at s = 1/12 - 1e-6, Scheeffer VI (78d)) are one class, an arc
     (:func:`~symfloat.solver.degenerate.flat_cluster`); the points returned are the classes."""
     out, absorbed = [], []
     for c in points:
@@ -194,8 +195,8 @@ def _classified(poly, points, s, scale, group):
             others = [g @ o.u for o in points if o is not c for g in group]
             others += [v for v in orbit(c.u, group) if np.linalg.norm(v - c.u) > 1e-9]
             c.index, stability, _ = degenerate_class(poly, c.u, s, scale, others)
-            members, centre, extent = flat_cluster(c, [o for o in points if not o.ring and o.exact is None], group, scale,
-                                                   2 * MIN_FAMILY, FLAT)
+            members, centre, extent, length = flat_cluster(c, [o for o in points if not o.ring and o.exact is None],
+                                                           group, scale, 2 * MIN_FAMILY, FLAT)
             if extent:
                 # a flat arc shorter than a reported family, found as several points: one class, its index
                 # from a circle around its symmetric middle enclosing all of it, its stability (as a
@@ -207,6 +208,13 @@ def _classified(poly, points, s, scale, group):
                     absorbed += members
                     across = stability_of(c.eigen, c.eigen_error, ring=True)
                     c.index, stability = index, family if across == "indifferent" else across
+                    # reported as the arc it is (the cube at 1/4 - delta: 16 delta sin(theta) long): it holds the
+                    # points found and lies inside the circle of radius rho round its middle (the gradient winds
+                    # there without vanishing), so its length lies between their distance and about 2 rho (the
+                    # circle's diameter, rho far below the radius of the ring the arc lies on); below float64's
+                    # resolution the points found need not be its ends (the cube at 1/4 - 1e-9: 2.4e-11 apart)
+                    c.shape, c.length = "arc", length
+                    c.length_error = max(2 * rho - length, 2 * max([c.error_rad] + [m.error_rad for m in members]))
                     c.digits = c.digits if np.linalg.norm(centre - c.u) == 0 else ()
                     c.u, c.error_rad = centre, max(c.error_rad, extent)
                     c.orbit = len(orbit(centre, group, 2 * extent + 1e-12))
@@ -393,7 +401,7 @@ def _polyhedral(scene: Scene, seeds, group):
     for c, stability, evidence in classified:
         loc = local(poly, c.u, s)
         out.append(Equilibrium(_clean(c.u), _tilt(c.u), stability,
-                               "ring" if c.ring else "isolated", c.U, _shape(waterplane_polygon(poly, loc.state), scale),
+                               "ring" if c.ring or c.shape == "arc" else "isolated", c.U, _shape(waterplane_polygon(poly, loc.state), scale),
                                tuple(float(e) for e in c.eigen), c.error_rad, c.error_method, c.orbit,
                                c.shape, c.length, c.length_error, evidence, digits=c.digits, decided=_decided(c)))
     return out, {"poincare_hopf_index_sum": index, "expected_index_sum": 2, "seeds": len(seeds),
