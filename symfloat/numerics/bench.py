@@ -177,6 +177,13 @@ def _ball_pair(v):
     return (mpmath.mpf(v) if not isinstance(v, sp.Basic) else mpmath.mpf(sp.N(v, REFERENCE_DPS + 10))), mpmath.mpf(0)
 
 
+def _finite(value) -> bool:
+    """Whether a measured value (or each of a tuple of them) is a finite number or ball: an enclosure
+    that came out unbounded measures nothing, so it has no error to report."""
+    values = value if isinstance(value, (tuple, list)) else [value]
+    return all(v.is_finite() for v in values if isinstance(v, arb))
+
+
 def _vector(value):
     values = value if isinstance(value, (tuple, list)) else [value]
     with mpmath.workdps(REFERENCE_DPS + 20):
@@ -359,7 +366,8 @@ def bench_derivation(d, bench: Bench, digits=DIGITS, orders=FLOAT64_ORDERS, pane
             values, seconds, note = runs[_method_name(m)]
             errors = {}
             for name, refs in targets.items():
-                errors[name] = None if values is None else max(_rel_error(v, r) for v, r in zip(values, refs))
+                errors[name] = (None if values is None or not all(map(_finite, values))
+                                else max(_rel_error(v, r) for v, r in zip(values, refs)))
             bench.measurements.append(Measurement(d.id, d.source, family, w.name, _method_name(m),
                                                   seconds, errors, note))
         if progress:
