@@ -174,6 +174,8 @@ def test_a_fault_printed_at_several_places_is_marked_at_each(records):
     # a fault printed once has no other place; a place inside its quote is not marked again
     assert fault_words(records.formula("scheeffer-vi-cf/78c"), records) == ""
     assert places("ab x ab", "ab", (0, 2)) == [(5, 7)] and places("$a + b$ c", "b", (8, 9)) == [(0, 7)]
+    # no words, no places: the empty pattern would match between every two characters of the page
+    assert places("ab x ab", "", (0, 2)) == []
 
 
 def test_lost_text_and_missing_figures_are_marked(records):

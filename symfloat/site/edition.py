@@ -114,7 +114,10 @@ def fault_words(f: dict, records: Records) -> str:
 
 def places(text: str, fault: str, quote: tuple[int, int]) -> list[tuple[int, int]]:
     """``(start, end)`` of every other place of a repeated fault: each occurrence of its words *fault* in
-    *text* outside its quote's stretch *quote*, widened to whole math spans."""
+    *text* outside its quote's stretch *quote*, widened to whole math spans; none for a fault printed once
+    (its words "")."""
+    if not fault:
+        return []
     maths = math_intervals(text)
     return [_widened(m.start(), m.end(), maths) for m in re.finditer(re.escape(fault), text)
             if not quote[0] <= m.start() < quote[1]]
