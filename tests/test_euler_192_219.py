@@ -106,7 +106,8 @@ def test_every_moment_formula_carries_two_quadrature_records(report):
     by_name = {f.id.split("/")[1]: f for f in report.formulas}
     for name in witnessed:
         methods = {rec["method"] for rec in by_name[name].numeric}
-        assert methods == {"float64", "mpmath, 50 digits"}, name
+        # the two quadratures, and the Arb enclosure where the witness kind has one (issue 29)
+        assert methods - {"Arb ball arithmetic"} == {"float64", "mpmath, 50 digits"}, name
         for rec in by_name[name].numeric:
             assert rec["seconds"] >= 0
 

@@ -102,7 +102,8 @@ def test_every_area_and_moment_carries_two_quadrature_records(report):
         name = f.id.split("/")[1]
         if name in unwitnessed:
             continue
-        assert {rec["method"] for rec in f.numeric} == {"float64", "mpmath, 50 digits"}, name
+        # the two quadratures, and the Arb enclosure where the witness kind has one (issue 29)
+        assert {rec["method"] for rec in f.numeric} - {"Arb ball arithmetic"} == {"float64", "mpmath, 50 digits"}, name
         assert all(rec["seconds"] >= 0 for rec in f.numeric)
         if f.verdict == "erratum":      # the correction agrees with the quadrature, the print does not
             assert all(rec["rel_error"] < 1e-10 for rec in f.corrected_numeric), name

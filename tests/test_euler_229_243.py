@@ -153,7 +153,8 @@ def test_every_moment_formula_carries_two_quadrature_records(report):
     for name in witnessed:
         f = by_name[name]
         records = f.corrected_numeric if f.verdict == "erratum" else f.numeric
-        assert {rec["method"] for rec in records} == {"float64", "mpmath, 50 digits"}, name
+        # the two quadratures, and the Arb enclosure where the witness kind has one (issue 29)
+        assert {rec["method"] for rec in records} - {"Arb ball arithmetic"} == {"float64", "mpmath, 50 digits"}, name
         assert all(rec["rel_error"] < 1e-10 and rec["seconds"] >= 0 for rec in records), name
 
 

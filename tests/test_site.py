@@ -199,7 +199,7 @@ def test_a_cut_quotation_in_a_notebook_is_widened_to_whole_formulas(records):
     # euler-220-228 quotes §224 from inside one formula into the middle of the next
     staged = json.loads(staged_notebook(NOTEBOOKS / "euler-220-228.ipynb", records, "euler-220-228",
                                         SOURCES["euler"].text()))
-    cell = next("".join(c["source"]) for c in staged["cells"] if "`Aa-Ace-product`" in "".join(c["source"]))
+    cell = next("".join(c["source"]) for c in staged["cells"] if c.get("id", "").startswith("formula-Aa-Ace-product-"))
     assert cell.startswith("(euler-220-228--formula-Aa-Ace-product-")
     assert '<blockquote class="printed">' in cell and "\n> " not in cell
     assert cell.count("<math") >= 2
@@ -236,7 +236,8 @@ def site(tmp_path_factory):
 
 
 class _Page(HTMLParser):
-    """Links, ids and the visible text of one page (scripts, styles and MathML left out)."""
+    """Links, ids and the visible text of one page (scripts, styles and MathML left out; so is a notebook's
+    code, ``<pre>``, where a symbol's name may be its TeX as SymPy takes it, e.g. ``Symbol('\\frac{..}{..}')``)."""
 
     def __init__(self):
         super().__init__()
@@ -249,11 +250,11 @@ class _Page(HTMLParser):
         for key in ("href", "src"):
             if a.get(key) and not (tag == "math" or key == "href" and tag == "link" and a.get("rel") == "search"):
                 self.links.append((tag, a[key]))
-        if tag in ("script", "style", "math"):
+        if tag in ("script", "style", "math", "pre"):
             self._hidden += 1
 
     def handle_endtag(self, tag):
-        if tag in ("script", "style", "math"):
+        if tag in ("script", "style", "math", "pre"):
             self._hidden -= 1
 
     def handle_data(self, data):
@@ -348,8 +349,10 @@ def _browser(playwright):
 
 
 def _visible_tex(page) -> list[str]:
-    """The TeX that the browser shows as text on *page* (none where MathML was made)."""
-    text = page.inner_text("body")
+    """The TeX that the browser shows as text on *page* (none where MathML was made), outside a notebook's
+    code (``<pre>``: a symbol's name may be its TeX there, as SymPy takes it)."""
+    text = page.evaluate("() => { const body = document.body.cloneNode(true);"
+                         " body.querySelectorAll('pre').forEach(e => e.remove()); return body.textContent; }")
     return [raw for raw in ("$$", "\\frac") if raw in text]
 
 
