@@ -201,7 +201,8 @@ def test_a_cut_quotation_in_a_notebook_is_widened_to_whole_formulas(records):
                                         SOURCES["euler"].text()))
     cell = next("".join(c["source"]) for c in staged["cells"] if c.get("id", "").startswith("formula-Aa-Ace-product-"))
     assert cell.startswith("(euler-220-228--formula-Aa-Ace-product-")
-    assert '<blockquote class="printed">' in cell and "\n> " not in cell
+    quoted = cell.split("</blockquote>")[0]                     # the quotation, before the reading's notes
+    assert '<blockquote class="printed">' in quoted and "\n> " not in quoted
     assert cell.count("<math") >= 2
 
 
@@ -351,8 +352,10 @@ def _browser(playwright):
 def _visible_tex(page) -> list[str]:
     """The TeX that the browser shows as text on *page* (none where MathML was made), outside a notebook's
     code (``<pre>``: a symbol's name may be its TeX there, as SymPy takes it)."""
-    text = page.evaluate("() => { const body = document.body.cloneNode(true);"
-                         " body.querySelectorAll('pre').forEach(e => e.remove()); return body.textContent; }")
+    text = page.evaluate("() => { const code = [...document.querySelectorAll('pre')];"
+                         " code.forEach(e => { e.dataset.shown = e.style.display; e.style.display = 'none'; });"
+                         " const text = document.body.innerText;"
+                         " code.forEach(e => { e.style.display = e.dataset.shown; }); return text; }")
     return [raw for raw in ("$$", "\\frac") if raw in text]
 
 
