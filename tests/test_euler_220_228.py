@@ -108,7 +108,7 @@ def test_every_area_and_moment_carries_two_quadrature_records(report):
         if f.verdict == "erratum":      # the correction agrees with the quadrature, the print does not
             assert all(rec["rel_error"] < 1e-10 for rec in f.corrected_numeric), name
             # (the Arb record of a printed reading may be undecided, with no error to compare)
-        assert all(rec["rel_error"] > 1e-3 for rec in f.numeric if rec["method"] != "Arb ball arithmetic"), name
+            assert all(rec["rel_error"] > 1e-3 for rec in f.numeric if rec["method"] != "Arb ball arithmetic"), name
         else:
             assert all(rec["rel_error"] < 1e-10 for rec in f.numeric), name
 
