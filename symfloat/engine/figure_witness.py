@@ -91,16 +91,25 @@ class Figure:
 def _polygon_integral(vertices, f, coords, dps):
     """∫∫ f over the polygon, f a polynomial of degree <= 2 in *coords* with numeric coefficients: from the
     area A, centroid c and central moments J of :func:`polygon_moments`, ∫∫ x^i y^j for i + j <= 2."""
-    ring = [tuple(_real(v, dps) for v in p) for p in vertices]
+    raw = _monomial_integrals([tuple(_real(v, dps) for v in p) for p in vertices])
+    return sum(_coefficient(k, dps) * raw[m] for m, k in _quadratic_terms(f, coords))
+
+
+def _monomial_integrals(ring):
+    """∫∫ x^i y^j over the polygon *ring* for i + j <= 2, keyed by (i, j), in the arithmetic of its vertices."""
     area, (cx, cy), ((jxx, jxy), (_, jyy)) = polygon_moments(ring)
     if area < 0:                                       # a clockwise ring: the same figure
         area, jxx, jxy, jyy = -area, -jxx, -jxy, -jyy
-    raw = {(0, 0): area, (1, 0): area * cx, (0, 1): area * cy, (2, 0): jxx + area * cx * cx,
-           (1, 1): jxy + area * cx * cy, (0, 2): jyy + area * cy * cy}
+    return {(0, 0): area, (1, 0): area * cx, (0, 1): area * cy, (2, 0): jxx + area * cx * cx,
+            (1, 1): jxy + area * cx * cy, (0, 2): jyy + area * cy * cy}
+
+
+def _quadratic_terms(f, coords):
+    """The terms ((i, j), coefficient) of f, a polynomial of degree <= 2 in *coords*."""
     poly = sp.Poly(sp.expand(f), *coords)
     if poly.total_degree() > 2:
         raise ValueError(f"a polygon's integrals are exact up to degree 2, not for {f}")
-    return sum(_coefficient(k, dps) * raw[m] for m, k in poly.terms())
+    return poly.terms()
 
 
 def _coefficient(k, dps):
@@ -268,15 +277,8 @@ class FigureWitness(MeasuredWitness):
 
 def _polygon_exact(vertices, f, coords):
     """∫∫ f over the polygon, exactly (f a polynomial of degree <= 2 in *coords*, see :func:`_polygon_integral`)."""
-    area, (cx, cy), ((jxx, jxy), (_, jyy)) = polygon_moments([tuple(p) for p in vertices])
-    if area < 0:
-        area, jxx, jxy, jyy = -area, -jxx, -jxy, -jyy
-    raw = {(0, 0): area, (1, 0): area * cx, (0, 1): area * cy, (2, 0): jxx + area * cx * cx,
-           (1, 1): jxy + area * cx * cy, (0, 2): jyy + area * cy * cy}
-    poly = sp.Poly(sp.expand(f), *coords)
-    if poly.total_degree() > 2:
-        raise ValueError(f"a polygon's integrals are exact up to degree 2, not for {f}")
-    return sum(k * raw[m] for m, k in poly.terms())
+    raw = _monomial_integrals([tuple(p) for p in vertices])
+    return sum(k * raw[m] for m, k in _quadratic_terms(f, coords))
 
 
 def _enclosed_integral(figure, f, bits, at):
