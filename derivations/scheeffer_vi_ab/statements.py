@@ -101,19 +101,21 @@ d.quote("isotropic", "VI", r"also aus 56:  $T = T_x = T_y$",
         reading=(Tx * sp.sin(om) ** 2 + Tx * sp.cos(om) ** 2, Tx), note="(56) with T_y = T_x")
 
 
-def ngon_moment(n, side):
-    """Exact second moment of the regular n-gon of edge ``side`` (vertex on the +x axis) about the
-    central axis with normal (cos omega, sin omega): sum over the fan triangles (O, V_k, V_k+1) of
-    area/6 (u_k^2 + u_k u_k+1 + u_k+1^2), u the ordinate of a vertex."""
+def fan_triangles(n, side):
+    """The fan triangles (O, V_k, V_k+1) of the regular n-gon of edge ``side`` (vertex on the +x axis): for each,
+    its area and its two vertices' coordinates (u across the axis with normal (cos omega, sin omega), v along it)."""
     R = side / (2 * sp.sin(pi / n))
     V = [(R * sp.cos(2 * pi * k / n), R * sp.sin(2 * pi * k / n)) for k in range(n)]
-    total = 0
     for k in range(n):
         (x1, y1), (x2, y2) = V[k], V[(k + 1) % n]
-        area = (x1 * y2 - x2 * y1) / 2
-        u1, u2 = x1 * sp.cos(om) + y1 * sp.sin(om), x2 * sp.cos(om) + y2 * sp.sin(om)
-        total += area / 6 * (u1 ** 2 + u1 * u2 + u2 ** 2)
-    return total
+        yield ((x1 * y2 - x2 * y1) / 2,
+               *((x * sp.cos(om) + y * sp.sin(om), -x * sp.sin(om) + y * sp.cos(om)) for x, y in ((x1, y1), (x2, y2))))
+
+
+def ngon_moment(n, side):
+    """Exact second moment of the regular n-gon of edge ``side`` about the central axis with normal
+    (cos omega, sin omega): sum over the fan triangles of area/6 (u_k^2 + u_k u_k+1 + u_k+1^2)."""
+    return sum(area / 6 * (u1 ** 2 + u1 * u2 + u2 ** 2) for area, (u1, _), (u2, _) in fan_triangles(n, side))
 
 
 NGONS = (3, 4, 6)
@@ -130,19 +132,10 @@ d.quote("regular-polygon-theorem", "VI",
 
 
 def ngon_product(n, side):
-    """Exact product moment int u v df of the regular n-gon of edge ``side`` (vertex on the +x axis), u across the
-    axis with normal (cos omega, sin omega), v along it: over each fan triangle (O, V_k, V_k+1) area/12
-    (2 u_k v_k + u_k v_k+1 + u_k+1 v_k + 2 u_k+1 v_k+1)."""
-    R = side / (2 * sp.sin(pi / n))
-    V = [(R * sp.cos(2 * pi * k / n), R * sp.sin(2 * pi * k / n)) for k in range(n)]
-    total = 0
-    for k in range(n):
-        (x1, y1), (x2, y2) = V[k], V[(k + 1) % n]
-        area = (x1 * y2 - x2 * y1) / 2
-        u1, u2 = x1 * sp.cos(om) + y1 * sp.sin(om), x2 * sp.cos(om) + y2 * sp.sin(om)
-        v1, v2 = -x1 * sp.sin(om) + y1 * sp.cos(om), -x2 * sp.sin(om) + y2 * sp.cos(om)
-        total += area / 12 * (2 * u1 * v1 + u1 * v2 + u2 * v1 + 2 * u2 * v2)
-    return total
+    """Exact product moment int u v df of the regular n-gon of edge ``side``, u across the axis with normal
+    (cos omega, sin omega), v along it: over each fan triangle area/12 (2 u_k v_k + u_k v_k+1 + u_k+1 v_k + 2 u_k+1 v_k+1)."""
+    return sum(area / 12 * (2 * u1 * v1 + u1 * v2 + u2 * v1 + 2 * u2 * v2)
+               for area, (u1, v1), (u2, v2) in fan_triangles(n, side))
 
 
 d.quote("regular-prism-law", "VI",
