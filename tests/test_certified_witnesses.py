@@ -211,3 +211,37 @@ def test_a_reading_without_a_rigorous_rule_is_undecided_and_still_compared():
     assert "gamma" in record["unsupported"] and record_decision(record) == "undecided" and out.undecided
     assert record["bits"] == 128                  # no precision raised for a node no precision can enclose
     assert [record_decision(r) for r in out.records[1:]] == ["agrees"] * len(SPHERE.methods)    # the former route
+
+
+# ---- functions of a derivation: enclosed by the closed form their rewrite in Γ gives ------------------------------
+
+class _Beta(sp.Function):
+    """∫₀¹ y^p (1 − y²)^q dy, rewritten as Γ((p + 1)/2) Γ(q + 1) / (2 Γ((p + 1)/2 + q + 1)) (Euler's Ib at n = 2, b = 1)."""
+    nargs = 2
+
+    def _eval_rewrite_as_gamma(self, p, q, **hints):
+        return sp.gamma((p + 1) / 2) * sp.gamma(q + 1) / (2 * sp.gamma((p + 1) / 2 + q + 1))
+
+
+def test_a_function_of_a_derivation_is_enclosed_by_its_gamma_form():
+    y = sp.Symbol("y")
+    by_gamma = ball(_Beta(sp.Integer(2), sp.Rational(1, 2)), 128)
+    by_quadrature = integral(y ** 2 * sp.sqrt(1 - y ** 2), y, 0, 1, 128)     # the independent route: pi / 16
+    with working_precision(128):
+        assert by_gamma.overlaps(by_quadrature) and by_gamma.overlaps(arb.pi() / 16)
+        assert not ball(_Beta(sp.Integer(3), sp.Rational(1, 2)), 128).overlaps(by_quadrature)   # mutated exponent
+    assert by_gamma.rad() < arb(2) ** -120
+    with pytest.raises(Unsupported):
+        ball(sp.Function("F")(sp.Integer(1)), 128)        # a function with no closed form: no guess
+
+
+def test_euler_s_own_functions_enclosed_as_the_quadrature_of_their_integrals():
+    from symfloat.derivations.euler_229_243.statements import IY, Ib
+    y = sp.Symbol("y")
+    # Ib(p, q, n, b) = ∫₀ᵇ yᵖ (1 − yⁿ/bⁿ)^q dy; IY(j, p, q, 0, n, b, c1, c2) = ∫₀ᵇ Y^j yᵖ (1 − yⁿ/bⁿ)^q dy, Y = c1 yⁿ/bⁿ + c2 y²ⁿ/b²ⁿ
+    b, c1, c2 = sp.Rational(3, 4), sp.Rational(-1, 4), sp.Rational(1, 8)
+    Y = c1 * y ** 2 / b ** 2 + c2 * y ** 4 / b ** 4
+    for value, integrand in ((Ib(sp.Integer(2), sp.Rational(1, 2), 2, b), y ** 2 * sp.sqrt(1 - y ** 2 / b ** 2)),
+                             (IY(2, 0, sp.Rational(1, 2), 0, 2, b, c1, c2), Y ** 2 * sp.sqrt(1 - y ** 2 / b ** 2))):
+        enclosed, quadrature = ball(value, 128), integral(integrand, y, 0, b, 128)
+        assert enclosed.overlaps(quadrature) and enclosed.rad() < arb(2) ** -100, value

@@ -36,6 +36,10 @@ class Ib(sp.Function):
             return None
         return sp.N(_beta_value(*self.args), _dps(prec))
 
+    def _eval_rewrite_as_gamma(self, *args, **hints):
+        """Its Beta closed form in Γ (step beta-integral proves it), for a rigorous enclosure."""
+        return _beta_value(*args)
+
     def _latex(self, printer, exp=None):
         P, Q, N_, B_ = (printer._print(t) for t in self.args)
         yp = {"0": "", "1": "y"}.get(P, "y^{%s}" % P)
@@ -64,7 +68,15 @@ class IY(sp.Function):
     def _eval_evalf(self, prec):
         if not all(t.is_number for t in self.args):
             return None
-        j, P, Q, dY, N_, B_, C1, C2 = self.args
+        return sp.N(self._beta_terms(*self.args), _dps(prec))
+
+    def _eval_rewrite_as_gamma(self, *args, **hints):
+        """Its expansion into Beta integrals in Γ (step Y-integrals proves it), for a rigorous enclosure; only
+        with numbers for its arguments (the power Y^j is expanded)."""
+        return self._beta_terms(*args) if all(t.is_number for t in args) else None
+
+    @staticmethod
+    def _beta_terms(j, P, Q, dY, N_, B_, C1, C2):
         t = sp.Dummy("t", positive=True)
         Yt = C1 * t ** N_ / B_ ** N_ + C2 * t ** (2 * N_) / B_ ** (2 * N_)
         w = sp.expand(Yt ** j * t ** P * (sp.diff(Yt, t) if dY else 1), power_base=False)
@@ -72,7 +84,7 @@ class IY(sp.Function):
         for term in sp.Add.make_args(w):
             coeff, e = term.as_coeff_exponent(t)
             total += coeff * _beta_value(e, Q, N_, B_)
-        return sp.N(total, _dps(prec))
+        return total
 
     def _latex(self, printer, exp=None):
         j, P, Q, dY, N_, B_, C1, C2 = self.args

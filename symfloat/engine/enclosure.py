@@ -7,8 +7,9 @@ the exact value.  The nodes: ``Integer``, ``Rational`` (exact numerator over exa
 print's own rounding is the allowance its witness gives it, not part of the enclosure), ``pi``, ``E``,
 ``I``, ``Add``, ``Mul``, ``Pow`` (any exponent; an integer power is exact up to rounding, a half power a
 square root, another the principal branch ``exp(t log b)``), ``exp``, ``log``, ``sin``, ``cos``, ``tan``,
-``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``, ``tanh`` and ``Abs``.  Any other node raises
-:class:`Unsupported` naming it.
+``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``, ``tanh``, ``gamma`` and ``Abs``; a function of a
+derivation (Euler's ``Ib``, ``IY``) by the closed form its ``rewrite(gamma)`` gives, which the derivation
+proves in a step.  Any other node raises :class:`Unsupported` naming it.
 
 :func:`integral` encloses ``∫_lo^hi f(v) dv`` by ``acb.integral`` (Petras' adaptive Gauss–Legendre with
 rigorous error bounds, FLINT's ``acb_calc_integrate``).  The integrand must be holomorphic on a
@@ -127,6 +128,7 @@ _UNARY = {
     sp.acos: _guarded(acb.acos, _on_real_cut),
     sp.atan: _guarded(acb.atan, _on_imag_cut),
     sp.Abs: lambda z, a: z.real_abs(analytic=True) if a else acb(abs(z)),
+    sp.gamma: lambda z, a: z.gamma(),
 }
 
 
@@ -196,6 +198,8 @@ def _compile(e, variables):
     if e.func in _UNARY and len(e.args) == 1:
         f, arg = _UNARY[e.func], _compile(e.args[0], variables)
         return lambda v, a: f(arg(v, a), a)
+    if isinstance(e, sp.Function) and (closed := e.rewrite(sp.gamma)) != e:
+        return _compile(closed, variables)
     raise Unsupported(f"no enclosure for a {type(e).__name__} node ({e})")
 
 
