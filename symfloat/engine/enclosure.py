@@ -17,6 +17,10 @@ neighbourhood of the path: each node with a branch cut (``sqrt``, ``log``, a fra
 ``asin``, ``acos``, ``atan``) says so by returning a non-finite ball where the ball it is given touches the
 cut, and the integrator then bisects or, at its limits, returns a non-finite ball: an enclosure too wide to
 decide, never a guess.  A piecewise integrand is not on the whitelist: split it at its breakpoints first.
+An integrand with a branch point at an end (a factor ``base**(p/q)``, ``p/q > -1`` not an integer, ``base``
+zero there: an integrable singularity as Euler's ``y²/√(b² − y²)`` at ``y = b``, or ``(1 − y)^(3/4)``) is
+first rewritten by the substitution that makes it holomorphic there (:func:`_desingularised`); one it
+cannot remove is integrated as it is, and an enclosure that is then not finite says so.
 
 >>> import sympy as sp
 >>> x = sp.Symbol("x")
@@ -255,8 +259,14 @@ def integral(expr, var, lo, hi, prec: int, at: dict | None = None) -> arb:
     closed SymPy numbers or balls) as a ball at *prec* bits, by ``acb.integral`` with its goal ``2^-prec``
     relative and at most ``EVALUATIONS * prec`` evaluations; non-finite when the integrand is not holomorphic
     near the path or the evaluations run out (see the module)."""
+    expr = sp.sympify(expr)
+    if not any(isinstance(x, arb) for x in (lo, hi)):
+        pieces = _desingularised(expr, var, sp.sympify(lo), sp.sympify(hi))
+        if pieces is not None:
+            with working_precision(prec):
+                return sum((integral(g, t, a, b, prec, at) for g, t, a, b in pieces), arb(0))
     constants = tuple(at or ())
-    f = _compile(sp.sympify(expr), (var, *constants))
+    f = _compile(expr, (var, *constants))
     with working_precision(prec):
         fixed = tuple(acb(at[c]) for c in constants)
         a, b = (x if isinstance(x, arb) else ball(x, prec) for x in (lo, hi))
@@ -264,3 +274,64 @@ def integral(expr, var, lo, hi, prec: int, at: dict | None = None) -> arb:
         if not value.is_finite():
             return arb.nan()
         return _real(value, f"the integral of {expr}")
+
+
+def _singular_factors(expr, var, end):
+    """The factors ``base**e`` of *expr* (a product) with ``e > -1`` rational, not an integer, and ``base`` zero
+    at *end*: a branch point there (an integrable singularity where ``e < 0``), where ``acb.integral`` cannot
+    bound the integrand or needs many evaluations to."""
+    return [f for f in sp.Mul.make_args(expr)
+            if isinstance(f, sp.Pow) and f.exp.is_Rational and not f.exp.is_Integer and f.exp > -1
+            and f.base.has(var) and sp.simplify(f.base.subs(var, end)) == 0]
+
+
+def _desingularised(expr, var, lo, hi, rooted=False):
+    """``∫_lo^hi expr dvar`` as pieces ``(integrand, t, a, b)`` without a branch point at an end, or ``None``
+    where *expr* has none.  At an end e with one factor ``base**(p/q)`` (``p/q > -1`` not an integer,
+    ``base = ±(var - e) h`` with ``h(e) != 0``) the substitution ``var = e ∓ t**q`` turns the factor into
+    ``t**p h**(p/q)`` and ``dvar`` into ``q t**(q-1) dt``: the integrand becomes ``t**(p+q-1)`` (a power
+    ``>= 0``) times a function holomorphic at ``t = 0``.  Branch points at both ends split the interval at
+    its midpoint; a sum is integrated term by term."""
+    nested = [x for x in expr.atoms(sp.Pow) for e in (lo, hi) if _singular_factors(x, var, e)]
+    if nested and not any(_singular_factors(t, var, e) for t in sp.Add.make_args(expr) for e in (lo, hi)):
+        expr = sp.expand(expr)                         # y²(1 − (1 − y)^(1/4)): the branch factor made a factor
+    if isinstance(expr, sp.Add):                       # term by term, where a term has a branch point at an end
+        if not any(_singular_factors(term, var, e) for term in expr.args for e in (lo, hi)):
+            return None
+        return [piece for term in expr.args
+                for piece in (_desingularised(term, var, lo, hi, rooted) or [(term, var, lo, hi)])]
+    ends = [e for e in (lo, hi) if _singular_factors(expr, var, e)]
+    if not ends:
+        return None
+    if len(ends) == 2:
+        mid = (lo + hi) / 2
+        return [*(_desingularised(expr, var, lo, mid, rooted) or [(expr, var, lo, mid)]),
+                *(_desingularised(expr, var, mid, hi, rooted) or [(expr, var, mid, hi)])]
+    end, other = (lo, hi) if ends[0] == lo else (hi, lo)
+    factors = _singular_factors(expr, var, end)
+    if len(factors) != 1:
+        return None
+    (factor,) = factors
+    roots = sp.ilcm(1, 1, *(x.exp.q for x in factor.base.atoms(sp.Pow) if x.base == var and x.exp.is_Rational))
+    if roots > 1 and lo >= 0 and not rooted:           # var = w**roots first: the base a polynomial in w
+        w = sp.Dummy("w", positive=True)
+        at_w = sp.powdenest(expr.subs(var, w ** roots), force=True) * roots * w ** (roots - 1)
+        return _desingularised(at_w, w, lo ** sp.Rational(1, roots), hi ** sp.Rational(1, roots), rooted=True)
+    side = 1 if end == lo else -1                      # var = end + side * t**q runs from the end inward
+    h = sp.cancel(factor.base / (side * (var - end)))
+    if not _finite_nonzero(h.subs(var, end)):
+        h = sp.simplify(h)                              # (1 - sqrt(u)) / (1 - u) = 1 / (1 + sqrt(u))
+        if not _finite_nonzero(h.subs(var, end)):
+            return None
+    p, q = factor.exp.p, factor.exp.q
+    t = sp.Dummy("t", positive=True)
+    rest = (expr / factor).subs(var, end + side * t ** q)
+    integrand = rest * h.subs(var, end + side * t ** q) ** factor.exp * q * t ** (p + q - 1)
+    reach = (side * (other - end)) ** sp.Rational(1, q)
+    return [(integrand, t, sp.Integer(0), reach)]
+
+
+def _finite_nonzero(value):
+    value = sp.simplify(value)
+    return value.is_finite is True and value.is_zero is False
+
