@@ -10,7 +10,7 @@ With ``n`` an integer direction (``u = n / sqrt N``, ``N = n . n``) the water pl
 Between two consecutive heights ``n . v`` of the vertices the submerged volume ``V(tau)`` is a cubic
 and the moments of the submerged part and of the waterplane are polynomials of degree at most 4 in
 ``tau`` with rational coefficients (the clipped vertices are affine in ``tau``); they are measured by
-clipping the body exactly (:class:`fractions.Fraction`) at five interior offsets and interpolated.
+clipping the body exactly (FLINT's rationals, ``fmpq``) at five interior offsets and interpolated.
 The draught ``tau0`` is the root of ``V(tau) - s V_body`` in its slab: rational or algebraic (the cube's
 corner up: a cube root).  On the waterplane, projected onto the coordinate plane across the largest
 component ``n_k`` of ``n`` (area scale ``sqrt N / |n_k|``) with central second moments ``J`` and the
@@ -75,9 +75,9 @@ class ExactSecondVariation:
 
 
 def rational_faces(scene):
-    """The faces of a cube or box scene with :class:`~fractions.Fraction` vertices (the body frame of
+    """The faces of a cube or box scene with exact rational vertices (FLINT's ``fmpq``; the body frame of
     :func:`~symfloat.solver.bodies.polyhedron`)."""
-    a, b, c = (Fraction(x) for x in scene.dims)
+    a, b, c = (_q(x) for x in scene.dims)
     polygon = [(-a / 2, -b / 2), (a / 2, -b / 2), (a / 2, b / 2), (-a / 2, b / 2)]
     h = c / 2
     n = len(polygon)
@@ -108,7 +108,7 @@ def integer_direction(u, limit: int = 10 ** 6) -> tuple | None:
 def _volume_moment(faces):
     """Volume and first moment ``int p dV`` of a closed polyhedron (faces counter-clockwise from outside),
     by fan tetrahedra from the origin: exact in the arithmetic of the coordinates."""
-    volume, moment = Fraction(0), [Fraction(0)] * 3
+    volume, moment = fmpq(0), [fmpq(0)] * 3
     for ring in faces:
         a = ring[0]
         for b, d in zip(ring[1:], ring[2:]):
@@ -134,16 +134,18 @@ def _below(faces, n, tau, k):
                      for m in range(1, len(cap) - 1))
         kept = list(kept) + [tuple(cap) if normal * n[k] > 0 else tuple(cap[::-1])]
     volume, moment = _volume_moment(kept)
-    area, centroid, J = polygon_moments(ring2) if len(ring2) >= 3 else (Fraction(0), None, None)
+    area, centroid, J = polygon_moments(ring2) if len(ring2) >= 3 else (fmpq(0), None, None)
     if centroid is None:
-        return volume, sum(n[m] * moment[m] for m in range(3)), (Fraction(0), (Fraction(0),) * 2, (Fraction(0),) * 3)
+        return volume, sum(n[m] * moment[m] for m in range(3)), (fmpq(0), (fmpq(0),) * 2, (fmpq(0),) * 3)
     cx, cy = centroid
     raw = (J[0][0] + area * cx * cx, J[0][1] + area * cx * cy, J[1][1] + area * cy * cy)
     return volume, sum(n[m] * moment[m] for m in range(3)), (area, (area * cx, area * cy), raw)
 
 
 def _q(x) -> fmpq:
-    """A :class:`~fractions.Fraction` (or int) as a FLINT rational."""
+    """A :class:`~fractions.Fraction` or an int as a FLINT rational (a FLINT rational as it is)."""
+    if isinstance(x, fmpq):
+        return x
     x = Fraction(x)
     return fmpq(x.numerator, x.denominator)
 
@@ -214,7 +216,7 @@ def exact_second_variation(scene, n) -> ExactSecondVariation:
     """The second variation at the up direction ``n / |n|`` (*n* integer) of a cube or box scene, decided
     exactly (module docstring)."""
     faces = rational_faces(scene)
-    s = Fraction(scene.density)
+    s = _q(scene.density)
     N = sum(x * x for x in n)
     k = max(range(3), key=lambda m: abs(n[m]))
     nk = abs(n[k])
@@ -227,7 +229,7 @@ def exact_second_variation(scene, n) -> ExactSecondVariation:
         if _below(faces, n, a, k)[0] <= target <= _below(faces, n, b, k)[0]:
             lo, hi = a, b
             break
-    samples = [lo + (hi - lo) * Fraction(m, 6) for m in range(1, 6)]
+    samples = [lo + (hi - lo) * fmpq(m, 6) for m in range(1, 6)]
     measured = [_below(faces, n, t, k) for t in samples]
     V = _interpolate(samples, [x[0] for x in measured])
     nM = _interpolate(samples, [x[1] for x in measured])
