@@ -36,3 +36,15 @@ def test_a_subcommands_help_lists_its_options():
     assert "--density" in ran["out"] and "Supported inputs" in ran["out"]
     assert "--density" not in _run("errata", "--help")["out"]
     assert "latex" in _run("errata", "--help")["out"]        # the formats come from the errata writer
+
+
+def test_a_scenes_arguments_and_solver_load_no_sympy():
+    """The scene's options (with the domain its epilog states) and the whole solver, its exact second
+    variation (FLINT) and its certificates included, are parsed and imported without SymPy; only the
+    comparison with the printed formulas needs it."""
+    ran = _run("scene", "--help")
+    assert "Supported inputs" in ran["out"] and "sympy" not in ran["modules"]
+    probe = ("import sys, symfloat.solver.solve, symfloat.solver.exact, symfloat.solver.certificate; "
+             "print('sympy' in sys.modules)")
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
+    assert done.stdout.strip() == "False"

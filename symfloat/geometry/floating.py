@@ -316,8 +316,8 @@ def _polygon_moments(ring2, zero):
 
 
 def _zero_like(values):
-    """The zero of the richest arithmetic among *values*: SymPy, then mpmath, then float; ints and Fractions
-    give an exact Fraction.  Every coordinate is lifted into it: the vertex mean of Python ints divided by
+    """The zero of the richest arithmetic among *values*: SymPy, then mpmath, then FLINT's exact rationals
+    (``fmpq``), then float; ints and Fractions give an exact Fraction.  Every coordinate is lifted into it: the vertex mean of Python ints divided by
     their count is a float (true division), and subtracting it made exact SymPy coordinates 15-digit Floats,
     the digits Scheeffer IV-V lost when it first used these moments (its rectangles have int coordinates)."""
     kinds = {type(v).__module__.split(".")[0] for v in values}
@@ -326,6 +326,9 @@ def _zero_like(values):
         return sympy.Integer(0)
     if "mpmath" in kinds:
         return mpmath.mpf(0)
+    if "flint" in kinds:
+        from flint import fmpq
+        return fmpq(0)
     if float in {type(v) for v in values}:
         return 0.0
     return Fraction(0)

@@ -10,7 +10,7 @@ With ``n`` an integer direction (``u = n / sqrt N``, ``N = n . n``) the water pl
 Between two consecutive heights ``n . v`` of the vertices the submerged volume ``V(tau)`` is a cubic
 and the moments of the submerged part and of the waterplane are polynomials of degree at most 4 in
 ``tau`` with rational coefficients (the clipped vertices are affine in ``tau``); they are measured by
-clipping the body exactly (:class:`fractions.Fraction`) at five interior offsets and interpolated.
+clipping the body exactly (FLINT's rationals, ``fmpq``) at five interior offsets and interpolated.
 The draught ``tau0`` is the root of ``V(tau) - s V_body`` in its slab: rational or algebraic (the cube's
 corner up: a cube root).  On the waterplane, projected onto the coordinate plane across the largest
 component ``n_k`` of ``n`` (area scale ``sqrt N / |n_k|``) with central second moments ``J`` and the
@@ -22,7 +22,8 @@ lift ``L`` (``p - c = L (q - c_q)``), the metacentric matrix ``T/V - U`` (Scheef
 ``M = L J L^T`` (rational), ``e2`` the sum of its principal 2 x 2 minors, ``d = n . (G - B)``.  Each sign
 is the sign of a polynomial in ``tau0`` with rational coefficients (positive denominators cleared): zero exactly when
 the minimal polynomial of ``tau0`` divides it, else decided on an isolating interval of ``tau0`` narrowed
-until the polynomial's Taylor bound there excludes zero (it terminates: the value is not zero).
+until the polynomial's Taylor bound there excludes zero (it terminates: the value is not zero).  The
+polynomials, their factors over QQ and the bisections are FLINT's exact rationals (``fmpq_poly``, ``fmpq``).
 
 A regular prism's vertices are not rational; its axis up is decided from the n-gon's polar moment
 ``J = n R^4 sin(2 pi/n) (2 + cos(2 pi/n)) / 12`` (the fan of triangles from the centre, each
@@ -40,7 +41,7 @@ from fractions import Fraction
 
 import mpmath
 import numpy as np
-import sympy as sp
+from flint import fmpq, fmpq_poly
 
 from ..geometry.convex import hull_2d
 from ..geometry.floating import Polyhedron, _clip, floating_state, polygon_moments
@@ -50,9 +51,6 @@ from .symmetry import same_class
 __all__ = ["ExactSecondVariation", "exact_second_variation", "prism_axis_second_variation", "lateral_second_variation",
            "symmetric_positions",
            "rational_faces", "integer_direction"]
-
-_TAU = sp.Symbol("tau")
-
 
 @dataclass(frozen=True)
 class ExactSecondVariation:
@@ -77,9 +75,9 @@ class ExactSecondVariation:
 
 
 def rational_faces(scene):
-    """The faces of a cube or box scene with :class:`~fractions.Fraction` vertices (the body frame of
+    """The faces of a cube or box scene with exact rational vertices (FLINT's ``fmpq``; the body frame of
     :func:`~symfloat.solver.bodies.polyhedron`)."""
-    a, b, c = (Fraction(x) for x in scene.dims)
+    a, b, c = (_q(x) for x in scene.dims)
     polygon = [(-a / 2, -b / 2), (a / 2, -b / 2), (a / 2, b / 2), (-a / 2, b / 2)]
     h = c / 2
     n = len(polygon)
@@ -110,7 +108,7 @@ def integer_direction(u, limit: int = 10 ** 6) -> tuple | None:
 def _volume_moment(faces):
     """Volume and first moment ``int p dV`` of a closed polyhedron (faces counter-clockwise from outside),
     by fan tetrahedra from the origin: exact in the arithmetic of the coordinates."""
-    volume, moment = Fraction(0), [Fraction(0)] * 3
+    volume, moment = fmpq(0), [fmpq(0)] * 3
     for ring in faces:
         a = ring[0]
         for b, d in zip(ring[1:], ring[2:]):
@@ -136,54 +134,81 @@ def _below(faces, n, tau, k):
                      for m in range(1, len(cap) - 1))
         kept = list(kept) + [tuple(cap) if normal * n[k] > 0 else tuple(cap[::-1])]
     volume, moment = _volume_moment(kept)
-    area, centroid, J = polygon_moments(ring2) if len(ring2) >= 3 else (Fraction(0), None, None)
+    area, centroid, J = polygon_moments(ring2) if len(ring2) >= 3 else (fmpq(0), None, None)
     if centroid is None:
-        return volume, sum(n[m] * moment[m] for m in range(3)), (Fraction(0), (Fraction(0),) * 2, (Fraction(0),) * 3)
+        return volume, sum(n[m] * moment[m] for m in range(3)), (fmpq(0), (fmpq(0),) * 2, (fmpq(0),) * 3)
     cx, cy = centroid
     raw = (J[0][0] + area * cx * cx, J[0][1] + area * cx * cy, J[1][1] + area * cy * cy)
     return volume, sum(n[m] * moment[m] for m in range(3)), (area, (area * cx, area * cy), raw)
 
 
-def _interpolate(points, values):
+def _q(x) -> fmpq:
+    """A :class:`~fractions.Fraction` or an int as a FLINT rational (a FLINT rational as it is)."""
+    if isinstance(x, fmpq):
+        return x
+    x = Fraction(x)
+    return fmpq(x.numerator, x.denominator)
+
+
+def _interpolate(points, values) -> fmpq_poly:
     """The polynomial in ``tau`` (over QQ) through ``(points[i], values[i])`` (Lagrange, exact)."""
-    return sp.Poly(sp.interpolate(list(zip([sp.Rational(p.numerator, p.denominator) for p in points],
-                                           [sp.Rational(v.numerator, v.denominator) for v in values])), _TAU),
-                   _TAU, domain=sp.QQ)
+    xs, ys = [_q(p) for p in points], [_q(v) for v in values]
+    out = fmpq_poly([])
+    for i, (xi, yi) in enumerate(zip(xs, ys)):
+        term = fmpq_poly([yi])
+        for j, xj in enumerate(xs):
+            if j != i:
+                term *= fmpq_poly([-xj, 1]) / (xi - xj)
+        out += term
+    return out
+
+
+def _sign_of(x) -> int:
+    return (x > 0) - (x < 0)
+
+
+def _narrowed(f, a, b):
+    """The half of the isolating interval ``[a, b]`` of the simple root of *f* that holds it (exact signs;
+    a midpoint that is the root is not possible: *f* is irreducible of degree at least 2)."""
+    m = (a + b) / 2
+    return (a, m) if _sign_of(f(a)) * _sign_of(f(m)) < 0 else (m, b)
 
 
 def _sign_at_root(p, root) -> int:
     """The sign of the polynomial *p* at the algebraic number *root* = ``(f, a, b)``: *f* irreducible
-    over QQ with exactly one root in the rational interval ``[a, b]``."""
+    over QQ with exactly one root in the rational interval ``[a, b]`` (a point where *f* is linear).
+    Zero exactly when *f* divides *p*; else the remainder ``r = p mod f`` (not zero at the root) is
+    expanded at the midpoint ``m`` of the interval (half-width ``h``) and its sign is that of ``r(m)``
+    once ``|r(m)|`` exceeds the Taylor bound ``sum |r_e| h^e`` (e >= 1), the interval halved (16 times a
+    round) until it does."""
     f, a, b = root
-    r = p.rem(f)
-    if r.is_zero:
+    r = p % f
+    if r.is_zero():
         return 0
     if f.degree() == 1:
-        value = r.eval(-f.nth(0) / f.nth(1))
-        return int(sp.sign(value))
-    width = (b - a)
+        return _sign_of(r(a))
     while True:
-        m = (a + b) / 2
-        h = (b - a) / 2
-        shifted = r.shift(m)            # r(m + x): its Taylor coefficients at m
-        coeffs = shifted.all_coeffs()[::-1]
-        bound = sum(abs(c) * h ** e for e, c in enumerate(coeffs) if e >= 1)
+        m, h = (a + b) / 2, (b - a) / 2
+        coeffs = r(fmpq_poly([m, 1])).coeffs()      # r(m + x): its Taylor coefficients at m
+        bound = sum((abs(c) * h ** e for e, c in enumerate(coeffs) if e >= 1), fmpq(0))
         if abs(coeffs[0]) > bound:
-            return 1 if coeffs[0] > 0 else -1
-        width /= 2 ** 16
-        a, b = f.refine_root(a, b, eps=width)
+            return _sign_of(coeffs[0])
+        for _ in range(16):
+            a, b = _narrowed(f, a, b)
 
 
 def _root_in(f_all, lo, hi):
-    """The root of *f_all* in ``[lo, hi]`` (exactly one, *f_all* increasing there): ``(f, a, b)`` with
-    *f* its irreducible factor over QQ and ``[a, b]`` an isolating interval."""
-    for f, _ in f_all.factor_list()[1]:
-        if f.count_roots(lo, hi) > 0:
-            if f.degree() == 1:
-                r = -f.nth(0) / f.nth(1)
+    """The root of *f_all* in ``[lo, hi]`` (exactly one, simple, *f_all* increasing there): ``(f, a, b)``
+    with *f* its irreducible factor over QQ and ``[a, b]`` an isolating interval (``a = b`` for a rational
+    root).  The factor is the linear one whose root lies in ``[lo, hi]`` or the one that changes sign
+    between *lo* and *hi* (a factor of degree 2 or more has no rational root, the others none inside)."""
+    for f, _ in f_all.factor()[1]:
+        if f.degree() == 1:
+            r = -f.coeffs()[0] / f.coeffs()[1]
+            if lo <= r <= hi:
                 return f, r, r
-            for (a, b), _ in f.intervals(inf=lo, sup=hi):
-                return f, sp.Rational(a), sp.Rational(b)
+        elif _sign_of(f(lo)) * _sign_of(f(hi)) < 0:
+            return f, lo, hi
     raise ArithmeticError("the draught is not in its slab")
 
 
@@ -191,7 +216,7 @@ def exact_second_variation(scene, n) -> ExactSecondVariation:
     """The second variation at the up direction ``n / |n|`` (*n* integer) of a cube or box scene, decided
     exactly (module docstring)."""
     faces = rational_faces(scene)
-    s = Fraction(scene.density)
+    s = _q(scene.density)
     N = sum(x * x for x in n)
     k = max(range(3), key=lambda m: abs(n[m]))
     nk = abs(n[k])
@@ -204,25 +229,25 @@ def exact_second_variation(scene, n) -> ExactSecondVariation:
         if _below(faces, n, a, k)[0] <= target <= _below(faces, n, b, k)[0]:
             lo, hi = a, b
             break
-    samples = [lo + (hi - lo) * Fraction(m, 6) for m in range(1, 6)]
+    samples = [lo + (hi - lo) * fmpq(m, 6) for m in range(1, 6)]
     measured = [_below(faces, n, t, k) for t in samples]
     V = _interpolate(samples, [x[0] for x in measured])
     nM = _interpolate(samples, [x[1] for x in measured])
     A = _interpolate(samples, [x[2][0] for x in measured])
     S1 = [_interpolate(samples, [x[2][1][m] for x in measured]) for m in range(2)]
     S2 = [_interpolate(samples, [x[2][2][m] for x in measured]) for m in range(3)]
-    Vs = sp.Rational(target.numerator, target.denominator)
-    root = _root_in(V - Vs, sp.Rational(lo.numerator, lo.denominator), sp.Rational(hi.numerator, hi.denominator))
+    Vs = _q(target)
+    root = _root_in(V - Vs, _q(lo), _q(hi))
     # A J = A S2 - S1 S1^T (the central moments times the area: polynomials)
     AJ = [[A * S2[0] - S1[0] * S1[0], A * S2[1] - S1[0] * S1[1]], [A * S2[1] - S1[0] * S1[1], A * S2[2] - S1[1] * S1[1]]]
     i, j = [x for x in range(3) if x != k]
     L = [[0, 0] for _ in range(3)]
     L[i][0], L[j][1] = 1, 1
-    L[k] = [sp.Rational(-n[i], n[k]), sp.Rational(-n[j], n[k])]
+    L[k] = [fmpq(-n[i], n[k]), fmpq(-n[j], n[k])]
     AM = [[sum(L[r][p] * AJ[p][q] * L[c][q] for p in range(2) for q in range(2)) for c in range(3)] for r in range(3)]
     trAM = AM[0][0] + AM[1][1] + AM[2][2]
     e2A2 = sum(AM[r][r] * AM[c][c] - AM[r][c] * AM[c][r] for r in range(3) for c in range(r + 1, 3))
-    dV = sp.Poly(nG * Vs, _TAU, domain=sp.QQ) - nM          # d Vs = n . (G - B) V
+    dV = fmpq_poly([_q(nG) * Vs]) - nM                        # d Vs = n . (G - B) V
     # sign(lambda1 + lambda2) = sign(N tr(AM) - 2 |n_k| A (d Vs)); product times N n_k^2 Vs^2 A^2 (module docstring)
     total_poly = N * trAM - 2 * nk * A * dV
     product_poly = N * N * e2A2 - N * nk * dV * trAM * A + nk * nk * dV * dV * A * A
@@ -230,16 +255,14 @@ def exact_second_variation(scene, n) -> ExactSecondVariation:
     sum_sign, product_sign = _sign_at_root(total_poly, root), _sign_at_root(product_poly, root)
     isotropic = _sign_at_root(discriminant, root) == 0
     f, a, b = root
+    while b - a > fmpq(1, 10 ** 45):
+        a, b = _narrowed(f, a, b)
     with mpmath.workdps(40):
-        if a == b:
-            t0 = mpmath.mpf(a.p) / a.q
-        else:
-            a, b = f.refine_root(a, b, eps=sp.Rational(1, 10 ** 45))
-            t0 = (mpmath.mpf(a.p) / a.q + mpmath.mpf(b.p) / b.q) / 2
+        t0 = (_mp(a) + _mp(b)) / 2
 
         def at(p):
-            return mpmath.polyval([mpmath.mpf(c.p) / c.q for c in p.all_coeffs()], t0)
-        Vf, Af, trf, e2f, df = mpmath.mpf(Vs.p) / Vs.q, at(A), at(trAM), at(e2A2), at(dV)
+            return mpmath.polyval([_mp(c) for c in reversed(p.coeffs())], t0)
+        Vf, Af, trf, e2f, df = _mp(Vs), at(A), at(trAM), at(e2A2), at(dV)
         scale_T = mpmath.sqrt(N) / nk                   # the waterplane's area scale
         tr_T, e2_T = scale_T * trf / Af, scale_T ** 2 * e2f / Af ** 2
         U = df / Vf / mpmath.sqrt(N)
@@ -252,6 +275,11 @@ def exact_second_variation(scene, n) -> ExactSecondVariation:
         eigen = (0.0, 0.0)
     kind = "rational" if f.degree() == 1 else f"algebraic of degree {f.degree()}"
     return ExactSecondVariation(eigen, sum_sign, product_sign, isotropic, kind)
+
+
+def _mp(x: fmpq):
+    """A FLINT rational in mpmath at the working precision."""
+    return mpmath.mpf(int(x.p)) / int(x.q)
 
 
 def prism_axis_second_variation(scene) -> ExactSecondVariation:
