@@ -265,10 +265,13 @@ class Derivation:
         words, not a hand-typed formula, decide what the engine checks."""
         if words not in excerpt:
             raise ValueError(f"{self.id}/{name}: the words {words!r} are not in the excerpt")
-        quantity = ("stability" if getattr(statement, "verdicts", False)
-                    else quantity_named(self.source, words))
-        meaning = vocabulary()[self.source]["quantities"][quantity]["meaning"]
-        said = f"'{words}' names {meaning}; the sentence is read from its definition. "
+        if getattr(statement, "verdicts", False):
+            meaning = vocabulary()[self.source]["quantities"]["stability"]["meaning"]
+            said = (f"'{words}' calls the equilibrium {verdict_named(self.source, words)}: the sentence is read "
+                    f"from the sign of {meaning}. ")
+        else:
+            meaning = vocabulary()[self.source]["quantities"][quantity_named(self.source, words)]["meaning"]
+            said = f"'{words}' names {meaning}; the sentence is read from its definition. "
         return self.quote(name, locator, excerpt, reading=self.reads(words, statement), erratum=erratum,
                           note=said + note, **options)
 
