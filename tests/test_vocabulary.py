@@ -6,6 +6,7 @@ import sympy as sp
 
 from symfloat import Derivation
 from symfloat.engine.check import check_derivation
+from symfloat.registry import statements
 from symfloat.model.vocabulary import (Called, Compares, DependsOn, IndependentOf, Is, StableIff, quantity_named,
                                        verdict_named)
 
@@ -112,3 +113,17 @@ def test_the_equality_case_is_read_where_no_sample_meets_it():
     dv.says("with-equality", "test", REGIONS, "System stabil", StableIff(b <= 4 * sp.tan(phi)))
     dv.says("strict", "test", REGIONS, "System stabil", StableIff(b < 4 * sp.tan(phi)))
     assert verdicts(dv) == {"with-equality": "erratum", "strict": "verified"}
+
+
+def test_the_library_reads_its_named_quantities_from_their_definitions():
+    # metazentrum line 187 names the tilted body's centroid where the lesson computes the displaced water's;
+    # Euler §212 names the stability where the value is the square's moment: the printed readings and their
+    # corrections are built from the definitions the words name, not typed
+    lesson_ = statements("metazentrum")
+    p = lesson_.get_printed("moving-centroid")
+    assert p.reading[0] == lesson_.definitions["centre of gravity"]
+    assert p.erratum.corrected_reading[0] == lesson_.definitions["centre of buoyancy"]
+    euler = statements("euler-192-219")
+    p = euler.get_printed("square-D")
+    assert p.reading[0].expr == euler.definitions["stability"]
+    assert p.erratum.corrected_reading[0].expr == euler.definitions["moment"]
