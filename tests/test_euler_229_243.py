@@ -102,6 +102,7 @@ EXPECTED_ERRATA = {
     ("excess-estimate", "transcription", "low"),     # §243
     ("EF-condition-241", "misprint", "medium"),      # §241 ν for μ, as at stability-AB-241
     ("AB-condition-241", "misprint", "medium"),      # §241 μ for ν and a stray D'
+    ("ratio-16", "misprint", "medium"),              # §241 both sides of the ratio of sixteen, the same swap
 }
 
 # Faults of the second review: (printed name, kind, line of the transcription, the wrong piece, the erratum
@@ -118,6 +119,7 @@ SECOND_PASS = [
     ("excess-estimate", "transcription", 294, "{vv}", "stability-CD"),
     ("EF-condition-241", "misprint", 288, r"{\nu v}", "stability-AB-241"),
     ("AB-condition-241", "misprint", 288, "D'", "stability-AB-241"),
+    ("ratio-16", "misprint", 288, r"{\mu v}", "stability-AB-241"),     # the fourth and fifth places of the swap
     ("kappa-1-acute", "claim", 272, "erunt acuti", ""),
 ]
 

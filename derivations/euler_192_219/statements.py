@@ -4,6 +4,7 @@ import sympy as sp
 from symfloat import Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
+from symfloat.model.vocabulary import Is
 
 x, y, w, s, r = sp.symbols("x y w s r", real=True)
 a, b, c = sp.symbols("a b c", positive=True)
@@ -128,6 +129,11 @@ d.step("sum-of-cubes-AB", Eq(Q, 3 * Iw), "definition", uses=("strip-moment",), r
             "moment I_w of the waterplane about AB (§202)")
 d.step("sum-of-cubes-EF", Eq(Q2, 3 * Kw), "definition", uses=("strip-moment",), result=Q2,
        note="the same with the ordinates QM, QN to EF")
+
+# the quantities §§192-219 name in words (symfloat/model/vocabulary.json), by the formulas that define them:
+# the stability about the axis AB (G below B; the sign of b is the sentence's), the moment I of the waterplane
+d.defines("stability", Slo)
+d.defines("moment", Iw)
 
 d.quote("stability-AB", "§201",
         r"$= M \left(\frac{\int (PM^3 + PN^3) Pp}{3V} \pm b \right)$",
@@ -580,10 +586,24 @@ d.quote("square-I", "§212", r"$= \frac{4a^4}{3} = \frac{AB^4}{12}$",
                    "axis through C."))
 d.quote("square-area", "§212", r"erit $AB^2 = 2D$", reading=Eq((2 * a) ** 2, 2 * Dsq),
         note=claim("the square's area 2D is AB²."))
-d.quote("square-D", "§212", r"$= \frac{AB^2 \cdot D}{6} =$", reading=(Isq, (2 * a) ** 2 * Dsq / 6),
-        note=claim("hence the quantity about every axis through C is AB²·D/6. Euler calls it the "
-                   "'stabilitas'; it is the moment of the waterplane (the stability is M(moment/V ± b)), "
-                   "read as the moment."))
+SQUARE_STABILITY = r"hincque stabilitas respectu cuiusuis axis per C transversantis erit $= \frac{AB^2 \cdot D}{6} =$"
+d.says("square-D", "§212", SQUARE_STABILITY, "stabilitas", Is((2 * a) ** 2 * Dsq / 6, at={Iw: Isq}),
+       erratum=Erratum("claim", "medium", r"\text{hincque momentum respectu cuiusuis axis per C transversantis erit } "
+                       r"= \frac{AB^2 \cdot D}{6}",
+                       "AB^2 D/6 = 4a^4/3 is the square's moment about every axis through C, the value of §212's "
+                       "'momentum respectu axis AB' two lines before; the stability about such an axis is, by "
+                       "Euler's own definition (§194, §201, §203), M(moment/V ± b), which has the weight M, the "
+                       "volume V and the distance b in it (a = 1, M = V = 1, b = 1/2: stability 11/6, moment 4/3). "
+                       "The next sentence goes on with 'in expressionem momenti': the word is the fault, not the "
+                       "value.",
+                       corrected_reading=d.reads("momentum", Is((2 * a) ** 2 * Dsq / 6, at={Iw: Isq})),
+                       fault="hincque stabilitas",
+                       objection="Euler may call the moment itself the stability where only ratios between figures "
+                                 "matter (M/V and b the same for all axes of one ship), as a measure of it.",
+                       answer="Within §§201-203 he keeps the two apart, M(I/V + b) against I, and §212 itself calls "
+                              "the same value 'momentum' before and after; a loose use cannot be excluded in a "
+                              "text of 1749, hence medium, not high."),
+       note="The value is the square's moment about every axis through C.")
 
 # ================================================================ §213 rectangle
 Dre, Ire, Kre = (symbol(f"{q}_{{re}}", rf"{q}_{{\text{{rectangle}}}}") for q in "DIK")

@@ -44,7 +44,7 @@ AB_CASES = rational_cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {
 Q_CASES = rational_cases(("a = 1, b = 1, c = 2", {a: 1, b: 1, c: 2}),
                          ("a = 5/2, b = 3/4, c = 3/2", {a: "5/2", b: "3/4", c: "3/2"}))
 
-figure_witness("square-moment", "∫∫ y^2 over the square", ("square-I", "square-D"), SQ, SQUARE, Over(y ** 2))
+figure_witness("square-moment", "∫∫ y^2 over the square", ("square-I",), SQ, SQUARE, Over(y ** 2))
 figure_witness("square-quadrant", "∫∫ y^2 and ∫∫ x^2 over the quadrant ACE of the square",
                ("square-quadrant-I", "square-quadrant-K"), SQ, Figure.polygon([(0, 0), (a, 0), (a, a), (0, a)]),
                Over(y ** 2))

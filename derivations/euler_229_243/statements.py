@@ -987,9 +987,28 @@ d.quote("AB-condition-241", "§241", r"multo magis erit $\frac{AB^2.D'}{\mu v} >
                                "booked with it, the scan's: D carries no prime anywhere else and the same fraction "
                                "stands with D in the next sentence."),
         note=claim("the condition for stability about EF is AB²D/(νV) > OG."))
+SIXTEEN = sp.Subs(Kw / Iw, (AB, nu), (4 * EF, mu))            # K/I with AB = 4EF and μ = ν, 'circiter'
 d.quote("ratio-16", "§241", r"$\frac{AB^2.D}{\mu v}$ circiter decies et sexies maius fit quam $\frac{EF^2.D}{\nu v}$",
-        reading=(sp.Subs((AB ** 2 * Dw / (mu * V)) / (EF ** 2 * Dw / (nu * V)), (AB, nu), (4 * EF, mu)), 16),
-        note=claim("with AB = 4EF and μ ≈ ν the quantity for EF is about 16 times that for AB (read at μ = ν)."))
+        reading=(sp.Matrix([Kw / V, Iw / V, SIXTEEN]), sp.Matrix([AB ** 2 * Dw / (mu * V), EF ** 2 * Dw / (nu * V), 16])),
+        erratum=Erratum("misprint", "medium", r"\frac{AB^2.D}{\nu V} \text{ circiter decies et sexies maius fit quam } "
+                        r"\frac{EF^2.D}{\mu V}",
+                        "The two quantities compared are K/V and I/V, K = AB²D/ν and I = EF²D/μ (§238); the sentence "
+                        "gives AB² the number μ and EF² the number ν, the swap of μ and ν booked at its first place "
+                        "('stability-AB-241'), at its fourth and fifth places. The claim itself stands with either "
+                        "lettering: with AB = 4EF and μ = ν the ratio is 16 (third entry), and the print's ratio is "
+                        "16ν/μ where the right one is 16μ/ν, both 'circiter' 16 as μ and ν 'nullo casu a se "
+                        "inuicem multum discrepant'.",
+                        corrected_reading=(sp.Matrix([Kw / V, Iw / V, SIXTEEN]),
+                                           sp.Matrix([AB ** 2 * Dw / (nu * V), EF ** 2 * Dw / (mu * V), 16])),
+                        same_as=NU_FOR_MU,
+                        objection="The sentence claims a ratio of about sixteen, which holds whichever letter stands "
+                                  "where, since Euler adds that μ and ν hardly differ: the letters do not matter to "
+                                  "what is said.",
+                        answer="The ratio holds, but the letters name the numbers of §238, and here each stands with "
+                               "the other's moment, as in the three places before in §241; the places are one fault,"
+                               " Euler's swap: misprint, medium, as at 'stability-AB-241'."),
+        note=claim("with AB = 4EF and μ ≈ ν the quantity for EF, AB²D/(νV) = K/V, is about 16 times that for AB, "
+                   "EF²D/(μV) = I/V (the ratio read at μ = ν)."))
 
 # ================================================================ §243: displacement
 d.step("pyramid", (Vpy, sp.Integral(2 * Dw * (s / CD) ** 2, (s, 0, CD)), 2 * Dw * CD / 3), "integration",

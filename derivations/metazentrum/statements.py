@@ -2,13 +2,14 @@
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum, Holds
+from symfloat.model.vocabulary import Is, StableIff
 
 a, b, c, d = sp.symbols("a b c d", positive=True)
 phi = sp.Symbol("phi", positive=True)
 rho_w, rho_s = sp.symbols("rho_w rho_s", positive=True)
 x, y, z = sp.symbols("x y z", real=True)
-V_b, M_b, M_s, z_B, z_G, z_M, I_w, A_q, A_t, x_t, shift, BM, e = sp.symbols(
-    "V_b M_b M_s z_B z_G z_M I_w A_q A_t x_t Delta BM e", real=True)
+V_b, M_b, M_s, z_B, z_G, z_M, I_w, A_q, A_t, x_t, shift, BM, e, y_G = sp.symbols(
+    "V_b M_b M_s z_B z_G z_M I_w A_q A_t x_t Delta BM e y_G", real=True)
 g, F_b, F_g, m_g, V_w, M_w = sp.symbols("g F_b F_g m_g V_w M_w", positive=True)
 
 DERIVATION = dv = Derivation(
@@ -63,6 +64,16 @@ dv.step("stability-function-value", (e, e_print), "algebra", uses=("stability-fu
 dv.step("criterion", (sp.sign(z_M - z_G), sp.sign(I_w / V_b - (z_G - z_B)), sp.sign(e)), "algebra",
         uses=("metacentre", "radius-inertia", "stability-function"),
         note="z_M >= z_G is Duhamel's criterion T1/V1 - e1 > 0 (Scheeffer (18)) for this body")
+
+dv.step("body-centroid-across", (y_G, sp.Integral(y, (y, -b, b), (z, -d, 2 * c - d))
+                                  / sp.Integral(1, (y, -b, b), (z, -d, 2 * c - d)), 0), "integration", result=y_G,
+        note="the tilted body's own centroid across the ship, in the body frame: the centre of its whole section "
+             "2b x 2c, on the centre line whatever the heel")
+# the quantities the lesson names in words (symfloat/model/vocabulary.json), by the formulas that define them here:
+# a centroid by its shift across the ship on a heel phi, the stability by the lesson's function e
+dv.defines("centre of gravity", y_G)
+dv.defines("centre of buoyancy", shift)
+dv.defines("stability", e)
 
 L1 = "Vereinfachtes Modell: gerades Parallelepiped"
 L2 = "Berechnung der Lage des Massenschwerpunktes des verdrängten Wassers"
@@ -130,7 +141,6 @@ dv.quote("vasa", L4, "Eine Lösung wäre gewesen, es tiefer zu versenken oder ei
 # ---- the words around the formulas (second pass) -----------------------------------------------------
 L5 = "Metazentrum unterhalb des Schwerpunkts"
 stable_margin = I_w / V_b - (z_G - z_B)                 # Duhamel's criterion for this hull (the step criterion)
-stable_sign = sp.sign(stable_margin)
 dv.quote("buoyancy-point", L4, "Daher ist mit die Höhe des Schwerpunkts ($z_G$)8670 als dem Angriffspunkt der "
          "gegebenen Auftriebskraft", reading=(z_B, c - d),
          erratum=Erratum("misprint", "high", r"z_G \text{ als dem Angriffspunkt der Schwerkraft}",
@@ -219,29 +229,28 @@ dv.quote("half-length", L_SHIP, "der Mittlere Länge des Parallelepipeds ($a$)86
                                 "excluded, hence medium."),
          note="read as: a, b, c are the box's length, half breadth and half height, its extents measured along x, y "
               "and z")
-dv.quote("moving-centroid", "Definition der Position des Metazentrums",
-         "Das Metazentrum wird berechnet, indem der Schwerpunkt des gekippten Körpers unter der Bedingung bestimmt "
-         "wird, dass die Fläche unter der Wasserlinie (blaue Linie) konstant bleibt:",
-         reading=(sp.Integral(y, (y, -b, b), (z, -d, 2 * c - d)) / sp.Integral(1, (y, -b, b), (z, -d, 2 * c - d)),
-                  shift),
-         erratum=Erratum("claim", "low",
-                         r"\text{indem der Schwerpunkt des verdrängten Wassers (des eingetauchten Querschnitts) "
-                         r"\ldots bestimmt wird}",
-                         "The centroid whose shift on heel gives the metacentre is that of the displaced water: the "
-                         "next section is 'Berechnung der Lage des Massenschwerpunktes des verdrängten Wassers' and "
-                         "moves the two wedge triangles of the immersed section, b^2 tg phi/(3d). The tilted body's "
-                         "own centroid is fixed in the body (z_G = c - d throughout the lesson): across the ship it "
-                         "stays on the centre line, shift 0, whatever the heel.",
-                         corrected_reading=(shift, x_t * A_t / A_q),
-                         objection="'Der Schwerpunkt des gekippten Körpers' may mean the centroid of the body's "
-                                   "immersed part, as the same sentence's condition 'die Fläche unter der Wasserlinie"
-                                   " ... konstant' concerns the immersed section.",
-                         answer="The page keeps 'Körper' for the hull (z_G) and the displaced water for z_B, and "
-                                "the next section is titled 'Massenschwerpunkt des verdrängten Wassers'; but the "
-                                "sentence's own condition supports the loose reading, so the objection is not fully"
-                                " answered: lowered to low."),
-         note="read as: the shift across the ship of the tilted body's centroid (in the body frame, the centroid of "
-              "its whole section 2b x 2c) is the shift the lesson computes, b^2 tg phi/(3d)")
+dv.says("moving-centroid", "Definition der Position des Metazentrums",
+        "Das Metazentrum wird berechnet, indem der Schwerpunkt des gekippten Körpers unter der Bedingung bestimmt "
+        "wird, dass die Fläche unter der Wasserlinie (blaue Linie) konstant bleibt:",
+        "Schwerpunkt des gekippten Körpers", Is(x_t * A_t / A_q),
+        erratum=Erratum("claim", "low",
+                        r"\text{indem der Schwerpunkt des verdrängten Wassers (des eingetauchten Querschnitts) "
+                        r"\ldots bestimmt wird}",
+                        "The centroid whose shift on heel gives the metacentre is that of the displaced water: the "
+                        "next section is 'Berechnung der Lage des Massenschwerpunktes des verdrängten Wassers' and "
+                        "moves the two wedge triangles of the immersed section, b^2 tg phi/(3d). The tilted body's "
+                        "own centroid is fixed in the body (z_G = c - d throughout the lesson): across the ship it "
+                        "stays on the centre line, shift 0, whatever the heel.",
+                        corrected_reading=dv.reads("Schwerpunkt des verdrängten Wassers", Is(x_t * A_t / A_q)),
+                        objection="'Der Schwerpunkt des gekippten Körpers' may mean the centroid of the body's "
+                                  "immersed part, as the same sentence's condition 'die Fläche unter der Wasserlinie"
+                                  " ... konstant' concerns the immersed section.",
+                        answer="The page keeps 'Körper' for the hull (z_G) and the displaced water for z_B, and "
+                               "the next section is titled 'Massenschwerpunkt des verdrängten Wassers'; but the "
+                               "sentence's own condition supports the loose reading, so the objection is not fully"
+                               " answered: lowered to low."),
+        note="Read as: the centroid named is the one whose shift across the ship the lesson computes by the moment "
+             "theorem, (2b/3) A_t/A_q.")
 
 dv.step("buoyancy-force", Eq(F_b, M_b * g), "definition", result=F_b, note="the weight of the displaced water")
 dv.step("gravity-force", Eq(F_g, M_s * g), "definition", result=F_g, note="the weight of the hull")
@@ -258,12 +267,37 @@ dv.quote("arc", L3, "Da dieser Abstand der Bogen des Kreises ist, der um das Met
          note="the shift of B is the arc BM * phi for small phi: the radius is the shift's rate at phi = 0")
 dv.quote("surface-origin", L3, "$d/2$", reading=(-z_B, d / 2),
          note="the origin on the water surface lies d/2 above the centre of buoyancy")
-dv.quote("criterion-words", L4, "Um sicherzustellen, dass der Quader stabil ist, muss die Höhe des Metazentrums "
-         "($z_M$)8671 immer größer oder gleich die Höhe des Schwerpunkts ($z_G$)8670 sein, das heißt",
-         reading=(sp.sign(z_M - z_G), stable_sign), note="the sentence that introduces z_M >= z_G")
-dv.quote("criterion-words-2", "formula list", "Damit das Objekt stabil ist, muss die Höhe des Metazentrums ($z_M$)8671 "
-         "immer größer oder gleich die Höhe des Schwerpunkts ($z_G$)8670 sein.",
-         reading=(sp.sign(z_M - z_G), stable_sign))
+GE_FAULT = "muss die Höhe des Metazentrums ($z_M$)8671 immer größer oder gleich die Höhe des Schwerpunkts"
+GE_EVIDENCE = ("The lesson's stability is its function e = d/(2c^2) (z_M - z_G) (the display after the sentence), "
+               "positive for a stable and negative for an unstable hull; where z_M = z_G it vanishes: the heeled "
+               "box has no righting moment to the lesson's order (the shift b^2 phi/(3d) with tg phi = phi), the "
+               "neutral case. 'größer oder gleich' counts that case as stable (e.g. b = c = 1, d = 1 - "
+               "sqrt(3)/3: z_M = z_G and e = 0), and the page's own split of the diagram 'stabil und in seinem "
+               "Komplement instabil' leaves it in neither part. The display z_M >= z_G that follows states the "
+               "same condition.")
+GE_OBJECTION = ("At z_M = z_G the wall-sided box still rights at a finite heel, GZ = (BM/2) tg^2 phi sin phi > 0 "
+                "(third order), so 'stable for z_M >= z_G' is right for the body; and 'muss' states a necessary "
+                "condition, which z_M >= z_G is.")
+GE_ANSWER = ("The lesson's stability is first order (the metacentre is defined by the small-heel shift, e by z_M - "
+             "z_G), where equality is neutral; and the page uses the condition as the criterion both ways (the "
+             "diagram's stable region and its complement). The higher-order reading is the page's due, so low.")
+dv.says("criterion-words", L4, "Um sicherzustellen, dass der Quader stabil ist, muss die Höhe des Metazentrums "
+        "($z_M$)8671 immer größer oder gleich die Höhe des Schwerpunkts ($z_G$)8670 sein, das heißt",
+        "stabil", StableIff(z_M >= z_G),
+        erratum=Erratum("claim", "low", r"\text{immer größer als die Höhe des Schwerpunkts}\ (z_M > z_G)",
+                        GE_EVIDENCE, corrected_reading=dv.reads("stabil", StableIff(z_M > z_G)),
+                        fault=GE_FAULT, places=("Stabilitätsbedingung", "Stabilitätsbedingung für das Parallelepiped"),
+                        objection=GE_OBJECTION, answer=GE_ANSWER),
+        note="Read as the page uses it, the criterion both ways: stable exactly when z_M >= z_G, the equality "
+             "case included.")
+dv.says("criterion-words-2", "formula list", "Damit das Objekt stabil ist, muss die Höhe des Metazentrums ($z_M$)8671 "
+        "immer größer oder gleich die Höhe des Schwerpunkts ($z_G$)8670 sein.",
+        "stabil", StableIff(z_M >= z_G),
+        erratum=Erratum("claim", "low", r"\text{immer größer als die Höhe des Schwerpunkts}\ (z_M > z_G)",
+                        GE_EVIDENCE, corrected_reading=dv.reads("stabil", StableIff(z_M > z_G)),
+                        same_as="metazentrum/criterion-words",
+                        objection=GE_OBJECTION, answer=GE_ANSWER),
+        note="The same criterion in the page's list of formulas.")
 BREADTH, HEIGHT, DRAUGHT = (sp.Integral(1, (y, -b, b)), sp.Integral(1, (z, -d, 2 * c - d)),
                             sp.Integral(1, (z, -d, 0)))
 dv.quote("diagram-axes", L4, "Das bedeutet, dass es im Diagramm $b/c$ (Breite/Tiefe) versus $d/2c$ (Tiefe/Höhe)",

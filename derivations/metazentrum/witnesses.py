@@ -29,7 +29,7 @@ def upright(name, description, targets, quantity):
 
 for name, description, targets, quantity in (
         ("stability-sign", "sign of the clipped upright box's metacentric height I_min/V - (G - B)",
-         ("criterion", "e-sign", "criterion-words", "criterion-words-2"), "stability sign"),
+         ("criterion", "e-sign"), "stability sign"),
         ("metacentre-inertia", "z_M = (I_min/V - (G - B)) + z_G of the clipped upright box", ("z_M",),
          M["metacentric height"] + M["G above water"]),
         ("stability-function", "e = d/(2c^2) (I_min/V - (G - B)) of the clipped box", ("e",),

@@ -20,7 +20,11 @@ the derived closed forms.  The route cross-checks it where its quantities have d
 inequality of its statement compares a difference ``lhs - rhs``, measured from the definitions and
 compared with the closed form the relation check used, at the relation check's counterexample (when
 it found one) and at seeded points of the domain, at 15 and 30 digits; with the definitions' values
-(their signs clearly away from zero) the statement must hold at those points.  A relation whose
+(their signs clearly away from zero) the statement must hold at those points.  Where a side is within
+its error of zero where the relation check refutes the statement (at its counterexample, or at every
+point the route takes: the neutral case of a condition stated with >=, where the stability vanishes),
+the route cannot read the statement there: it records nothing, so that it neither agrees with a
+refuted print nor refutes it.  A relation whose
 differences are, with the definitions in, the closed forms themselves has no numeric content.
 
 A root count (``RealRoots``, exact by Sturm sequences on the closed form in the relation check:
@@ -428,6 +432,8 @@ class DefinitionRoute:
             out.note = "definition route: no sample point satisfies the relation's and the derivation's conditions"
             return out
         failed, undecided, uncounted, differs = [], 0, {}, False
+        counterexample = points[0] if self._counterexample(check, symbols) == points[0] else None
+        unread_counterexample = False
         for method in ROUTE_METHODS:
             t0 = time.perf_counter()
             worst_abs = worst_rel = 0.0
@@ -460,6 +466,7 @@ class DefinitionRoute:
                         verdict = self._statement_at(parts, sides, counted, signs, point)
                         if verdict is None:
                             undecided += 1
+                            unread_counterexample |= point is counterexample
                         elif verdict:
                             failed.append((point, verdict))
             except (ValueError, TypeError, ArithmeticError, ZeroDivisionError, NotImplementedError) as exc:
@@ -496,6 +503,11 @@ class DefinitionRoute:
         if undecided:
             notes.append(f"at {undecided} of {len(points)} points a side is within its error of zero: the statement "
                          "is not read there")
+        refuted = check is not None and check.status == "refuted"
+        if unread_counterexample or (refuted and undecided == len(points)):
+            out.records, out.agrees = [], True
+            notes = ["where the relation check refutes the statement a side is within its error of zero (a "
+                     "neutral case), so the statement is not read there and nothing is recorded"]
         out.note = "definition route: " + "; ".join(notes) if notes else ""
         return out
 
@@ -504,12 +516,7 @@ class DefinitionRoute:
         points of the domain that satisfy the derivation's constraints and the relation's conditions, and for
         each of the *premises* the first such point where it holds: among the seeded draws (continued for up to
         :data:`PREMISE_DRAWS` more), else among the domain's boundary points the relation check starts from."""
-        points = []
-        if check is not None and check.counterexample:
-            try:
-                points.append({q: sp.Rational(check.counterexample["point"][q.name]) for q in symbols})
-            except (KeyError, TypeError, ValueError):
-                pass                    # a point not rational, or of other symbols: the samples only
+        points = [p for p in (self._counterexample(check, symbols),) if p is not None]
         intervals = relation_intervals(relation, symbols, self.domain, target)
         draws = random_points(sorted(symbols, key=lambda q: q.name), intervals,
                               f"{self.derivation_id}/{target} definition route")
@@ -534,6 +541,17 @@ class DefinitionRoute:
                 if not wanted:
                     break
         return points + sampled
+
+    @staticmethod
+    def _counterexample(check, symbols):
+        """The relation check's counterexample as a point of *symbols*, or None (none found, a point not
+        rational, or of other symbols: the samples only)."""
+        if check is None or not check.counterexample:
+            return None
+        try:
+            return {q: sp.Rational(check.counterexample["point"][q.name]) for q in symbols}
+        except (KeyError, TypeError, ValueError):
+            return None
 
     @staticmethod
     def _statement_at(parts, sides, counted, signs, point):

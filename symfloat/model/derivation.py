@@ -18,6 +18,7 @@ from .erratum import Erratum
 from .prediction import Predictor
 from .relation import is_relation
 from .source import get_source
+from .vocabulary import quantity_named, verdict_named, vocabulary
 
 __all__ = ["Step", "Printed", "Derivation", "JUSTIFICATIONS", "PRINTED_DIGITS", "printed_tolerance"]
 
@@ -171,6 +172,7 @@ class Derivation:
     predictor: Predictor | None = None
     names: list = field(default_factory=list)
     provided: dict = field(default_factory=dict)
+    definitions: dict = field(default_factory=dict)
 
     def __post_init__(self):
         get_source(self.source)
@@ -221,6 +223,57 @@ class Derivation:
                     not_compared)
         self.printed.append(p)
         return p
+
+    def defines(self, quantity, definition):
+        """Tie *quantity* of the source's vocabulary (:mod:`symfloat.model.vocabulary`) to the formula that
+        defines it here: a result symbol or an expression of them.  A sentence that names the quantity is
+        read from it (:meth:`says`)."""
+        known = vocabulary()[self.source]["quantities"]
+        if quantity not in known:
+            raise ValueError(f"{self.id}: {quantity!r} is not a quantity of {self.source}'s vocabulary; "
+                             f"known: {', '.join(known)}")
+        if quantity in self.definitions:
+            raise ValueError(f"{self.id}: {quantity!r} is defined twice")
+        self.definitions[quantity] = sp.sympify(definition)
+        return self.definitions[quantity]
+
+    def reads(self, words, statement):
+        """The reading of a sentence whose *words* name a quantity (or, for a verdict, the equilibrium's
+        stability) and say *statement* of it, built from the quantity's definition in this derivation."""
+        if getattr(statement, "verdicts", False):
+            quantity, verdict = "stability", verdict_named(self.source, words)
+        else:
+            quantity, verdict = quantity_named(self.source, words), None
+        if quantity not in self.definitions:
+            raise ValueError(f"{self.id}: the words {words!r} name the {quantity}, which this derivation does "
+                             f"not define (Derivation.defines)")
+        q = self.definitions[quantity]
+        results = self.results()
+
+        def derived(expr):
+            for _ in range(len(results) + 1):
+                done = expr.xreplace(results)
+                if done == expr:
+                    break
+                expr = done
+            return expr
+        return statement.reading(q, derived, verdict) if verdict else statement.reading(q, derived)
+
+    def says(self, name, locator, excerpt, words, statement, erratum=None, note="", **options):
+        """Quote a sentence whose *words* (verbatim in *excerpt*) name a quantity and say *statement* of it
+        (:mod:`symfloat.model.vocabulary`): its reading is built from the quantity's definition, so the
+        words, not a hand-typed formula, decide what the engine checks."""
+        if words not in excerpt:
+            raise ValueError(f"{self.id}/{name}: the words {words!r} are not in the excerpt")
+        if getattr(statement, "verdicts", False):
+            meaning = vocabulary()[self.source]["quantities"]["stability"]["meaning"]
+            said = (f"'{words}' calls the equilibrium {verdict_named(self.source, words)}: the sentence is read "
+                    f"from the sign of {meaning}. ")
+        else:
+            meaning = vocabulary()[self.source]["quantities"][quantity_named(self.source, words)]["meaning"]
+            said = f"'{words}' names {meaning}; the sentence is read from its definition. "
+        return self.quote(name, locator, excerpt, reading=self.reads(words, statement), erratum=erratum,
+                          note=said + note, **options)
 
     def name(self, symbol, value, text=""):
         """Name a helper expression (a vector, a triple product) for display: the notebook
