@@ -103,6 +103,7 @@ EXPECTED_ERRATA = {
     ("EF-condition-241", "misprint", "medium"),      # §241 ν for μ, as at stability-AB-241
     ("AB-condition-241", "misprint", "medium"),      # §241 μ for ν and a stray D'
     ("ratio-16", "misprint", "medium"),              # §241 both sides of the ratio of sixteen, the same swap
+    ("stability-EF-named", "misprint", "high"),      # §239 'momentum' for the stability M(AB²D/(νV) − OG)
 }
 
 # Faults of the second review: (printed name, kind, line of the transcription, the wrong piece, the erratum
@@ -121,6 +122,7 @@ SECOND_PASS = [
     ("AB-condition-241", "misprint", 288, "D'", "stability-AB-241"),
     ("ratio-16", "misprint", 288, r"{\mu v}", "stability-AB-241"),     # the fourth and fifth places of the swap
     ("kappa-1-acute", "claim", 272, "erunt acuti", ""),
+    ("stability-EF-named", "misprint", 280, "atque momentum respectu axis latitudinalis", ""),  # third pass
 ]
 
 

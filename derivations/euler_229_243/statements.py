@@ -1082,6 +1082,25 @@ d.quote("waterplane-area-grows", "§239", r"tum enim non solum area eius $z D$ e
                         answer="The same 'z D' for the area 2D (§212, §237), the digit 2 read as z: high, as at "
                                "'waterplane-area'."),
         note=claim("the waterplane's area 2D grows with the waterplane (read with the rectangle of §213)."))
+d.quote("stability-EF-named", "§239", r"atque momentum respectu axis latitudinalis",
+        reading=(Kw, M * (Kw / V - OG)),
+        erratum=Erratum("misprint", "high", r"\text{atque stabilitas respectu axis latitudinalis}",
+                        "The sentence gives two quantities in parallel, 'stabilitas nauis respectu axis longitudinalis "
+                        "AB = M(EF²D/(μV) − OG) atque momentum respectu axis latitudinalis = M(AB²D/(νV) − OG)'; the "
+                        "second, with the factor M and the term − OG, is the stability about EF (§201, §203), not the "
+                        "moment: the moment of the waterplane about EF is K = AB²D/ν (§238, the sentence before). "
+                        "Read as printed the moment K would equal M(K/V − OG), which it does not (K = 1, M = 2, "
+                        "V = 1, OG = 1/4: K = 1, M(K/V − OG) = 3/2). A scan does not turn 'stabilitas' into 'momentum': "
+                        "a word of the print.",
+                        corrected_reading=(SEF, M * (Kw / V - OG)),
+                        objection="'Momentum' may be meant in the older sense of the moment of the righting forces "
+                                  "(§194: 'momentum virium … quae ad restituendam nauem tendunt'), which is what "
+                                  "the stability measures.",
+                        answer="From §203 on Euler keeps 'momentum' for the waterplane's ∫y²dA (I, K, 'momenta "
+                               "earum figurarum') and 'stabilitas' for M(·/V ± b); the parallel clause of the same "
+                               "sentence and §241 ('stabilitas respectu axis latitudinalis') name this expression "
+                               "the stability."),
+        note=claim("the second quantity of the sentence, M(AB²D/(νV) − OG), is the stability about EF."))
 MU_AS_V = "euler-229-243/stability-CD"
 for excess_name, locator, excess_excerpt in (
         ("excess-maximal", "§242", r"excessus quantitatis $\frac{EF^2.D}{vv}$ supra OG"),
