@@ -386,8 +386,6 @@ _NAMES = sorted([g for g in GREEK if g[0].islower()] + ["sin", "cos", "tan", "co
                 key=len, reverse=True)
 
 
-@pytest.mark.xfail(reason="the SymPy notebooks' outputs still show symbol names as letters (M_{eta}, varphi_{lim}): "
-                          "left in the closing note of 2026-12-02", strict=False)
 def test_every_page_in_headless_chromium(site):
     sync_api = pytest.importorskip("playwright.sync_api", reason="playwright is not installed (test extra)")
     with sync_api.sync_playwright() as p:

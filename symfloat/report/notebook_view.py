@@ -318,8 +318,8 @@ class NotebookView:
     def _witnesses(self, target: str) -> str:
         """What the first-principles witnesses of *target* compute, in the derivation's words."""
         ws = [w for w in self.derivation.witnesses if target.split("#")[0] in w.targets]
-        return "; ".join(w.description + (f" ({len(w.instances)} cases)" if hasattr(w, "instances") else "")
-                         for w in ws)
+        return "; ".join(typeset(w.description) + (f" ({len(w.instances)} cases)" if hasattr(w, "instances")
+                                                   else "") for w in ws)
 
     def step_markdown(self, name: str) -> str:
         s = next(s for s in self.report.steps if s.name == name)
@@ -337,14 +337,14 @@ class NotebookView:
         if f.identity and f.verdict in ("verified", "erratum", "trivial"):
             out.append(f"The reading against the derivation: {_how(f.identity, f.identity['status'])}.")
         if f.reason:
-            out.append(f"Reason: {f.reason}")
+            out.append(f"Reason: {typeset(f.reason)}")
         if f.erratum:
             e = f.erratum
             why = self.derivation.get_printed(name).erratum.evidence
             head = (f"Correction of the transcription (confidence {e['confidence']}); the original very probably "
                     f"printed:" if apparatus(e["kind"]) == "transcription"
                     else f"Fault of the original ({e['kind']}, confidence {e['confidence']}). Corrected:")
-            out.append(f"{head}\n\n{correction_markdown(e['kind'], e['corrected'])}\n\n{why}")
+            out.append(f"{head}\n\n{correction_markdown(e['kind'], e['corrected'])}\n\n{typeset(why)}")
         what = self._witnesses(name) or ("the derivation's definitions evaluated at concrete values (no declared "
                                          "witness measures this formula)")
         out += _records(f"Witnesses against the printed formula — {what}:", f.numeric)
