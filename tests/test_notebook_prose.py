@@ -11,6 +11,7 @@ import pytest
 from symfloat import registry
 from symfloat.model.symbol_names import GREEK
 from symfloat.registry import load
+from symfloat.report.notebook_view import reading_markdown
 from symfloat.report.prose import typeset, without_program_names
 
 # the names the site's browser test looks for as runs of italic letters in a formula (tests/test_site.py)
@@ -82,3 +83,16 @@ def test_the_about_section_names_no_module_of_the_program():
     for derivation in registry.ids():
         text = without_program_names(inspect.cleandoc(load(derivation)[1].__doc__ or ""))
         assert not re.search(r"symfloat\.|\(``[a-z]+_[a-z_]+``\)", text), derivation
+
+
+def test_an_inequality_read_as_an_equation_says_so():
+    # Hasáb's printed condition "rho^2 - rho + 1/6 > 0" is read as the equal signs of two margins, its remark's
+    # "... < rho_viz" as the bound R_u; a formula printed as an equation is "read as printed"
+    d, _ = load("hasab")
+    shown = {p.name: reading_markdown(d, p) for p in d.printed}
+    assert "The print states an inequality; it is read as the equation below" in shown["condition"]
+    assert "The print states an inequality" in shown["remark"]
+    said = {p.name for p in d.printed if "The print states an inequality" in shown[p.name]}
+    equations = {p.name for p in d.printed if p.reading is not None and not re.search(r"[<>]|\\[lg]eq?\b", p.excerpt)}
+    assert equations and not said & equations
+    assert all("Read as printed:" in shown[name] for name in said | equations)     # the site finds the reading there

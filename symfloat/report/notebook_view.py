@@ -38,6 +38,9 @@ JUSTIFICATION = {
     "series": "a series expansion",
 }
 
+# an inequality sign of the print (TeX or Unicode)
+_INEQUALITY = re.compile(r"\\(?:geqq|leqq|geq|leq|ge|le|gtrless)(?![A-Za-z])|[<>≤≥]")
+
 
 # ---- the mathematics, rendered when the notebook is built ---------------------------------------------------------
 def named(names, expr):
@@ -219,7 +222,8 @@ def _derived_symbols(d, claims) -> str:
 
 def reading_markdown(d, p, findings: str = "") -> str:
     """A printed formula: its locator as heading (numbered when several share it), the verbatim quotation,
-    its reading as printed and the correction's, then what the engine found (*findings*)."""
+    its reading as printed (an inequality read as an equation says so) and the correction's, then what the
+    engine found (*findings*)."""
     same = [q for q in d.printed if q.locator == p.locator]
     head = f"### {p.locator}" + (f", formula {same.index(p) + 1} of {len(same)}" if len(same) > 1 else "")
     derived_by = [s for s in d.steps if s.name == p.name and s.note]
@@ -234,6 +238,9 @@ def reading_markdown(d, p, findings: str = "") -> str:
     if p.unreadable:
         out.append(f"Not readable as printed: {p.unreadable}")
     if p.reading is not None:
+        if not is_relation(p.reading) and _INEQUALITY.search(p.excerpt):
+            out.append("The print states an inequality; it is read as the equation below (its bound, its margin or "
+                       "its sign, as the note says).")
         out.append("Read as printed:\n\n" + chain_latex(d, p.reading, split=False))
     corrected = p.erratum.corrected_reading if p.erratum is not None else None
     if corrected is not None:
