@@ -46,6 +46,9 @@ def test_the_check_sees_a_name_set_as_letters():
     ("tg^2 phi_1 = -2 V_1 h_A / T_1", r"\operatorname{tg}^{2} \varphi_{1}"),     # Scheeffer's German tangent
     ("dT_mu/dmu of the tensor", r"dT_{\mu}/d\mu"),                    # Scheeffer VII-VIII (108)
     ("w = (cos phi, sin phi) in the plane", r"($\cos \varphi$, $\sin \varphi$)"),   # both, not only the second
+    # Scheeffer IX: an equation number is the source's, not a factor (read "6s(1-s)(123)" and "2(164a - 166)")
+    ("(a/b)^2 > 6s(1 - s) (123); cot^2 phi_3 = 2 (164a-166)", r"$(a/b)^{2} > 6s(1 - s)$ (123)"),
+    ("cot^2 phi_3 = 12(a/b)^2 s(1-s) - 2 (164a-166), and x = D/(2a)", r"- 2$ (164a-166), and $x = D/(2a)$"),
 ])
 def test_greek_names_and_functions_are_signs(text, tex):
     shown = typeset(text)

@@ -17,7 +17,11 @@ relation sign stays text (``a`` is an article, ``(i)`` a label).
 'the regular n-gon $F_{1} r^{2} (2 + \\\\cos 2\\\\pi/n)/12$'
 
 A Greek name or ``lim`` in an index is its sign, a star after a name is a superscript, degrees are
-degrees, and a bracket a run does not close ends the formula before it (the formula after it is set too):
+degrees, and a bracket a run does not close ends the formula before it (the formula after it is set too);
+an equation number in brackets is the source's, not a factor:
+
+>>> typeset("stable iff (a/b)^2 > 6s(1 - s) (123), F(1) (141, 142)")
+'stable iff $(a/b)^{2} > 6s(1 - s)$ (123), F(1) (141, 142)'
 
 >>> typeset("B = (M_xi, M_eta)/V_t and tan phi_lim(45 deg), int_0^alpha t dt, omega* the axis")
 'B = ($M_{\\\\xi}$, $M_{\\\\eta}$)$/V_{t}$ and $\\\\tan \\\\varphi_{\\\\lim}(45 ^{\\\\circ})$, $\\\\int_{0}^{\\\\alpha} t dt$, $\\\\omega^{*}$ the axis'
@@ -42,6 +46,7 @@ _SUPER = {"²": "2", "³": "3", "⁴": "4", "¹": "1", "⁰": "0", "⁵": "5", "
 
 _TOKEN = re.compile(r"""
     (?P<space>[ ]+)
+  | (?P<locator>(?<![^\s])\(\d{1,3}[a-z]?(?:[ ]?[-–,][ ]?\d{1,3}[a-z]?)*\)(?![\w(/^*²³]))       # (123), (164a-166)
   | (?P<degrees>(?:(?<=\d)|(?<=\d[ ]))deg\b)                                        # 45 deg
   | (?P<starred>\b[A-Za-z]+\*(?![\w(*]))                                           # omega*, s*
   | (?P<compound>\b[A-Za-z]-(?!(?:sin|cos|tan|cot|log|exp|sqrt)\b)[a-z]{3,}\b)        # n-gon, x-axis: a word
