@@ -136,6 +136,17 @@ def test_view_shows_justification_and_witnesses_without_timings(graefe_reports):
     assert not re.search(r"\b[0-9]+(\.[0-9]+)? (ms|s)\b|seconds|\btime\b", shown)
 
 
+def test_a_steps_witnesses_of_a_wrong_print_say_whose_errors_they_are(graefe_reports):
+    # Graefe §2's slab a-c is derived by a step and printed with an erratum (its committed notebook's verdict):
+    # the step's table measures the print (Scheeffer IX.A's T_1 showed a relative error of 0.5 under a step that
+    # holds, unexplained); §1's pyramid over g is printed right
+    s2 = "graefe-s2-volumes-simpson"
+    wrong = NotebookView(load(s2)[0], next(r for r in graefe_reports if r.id == s2)).step_markdown("slab-a-c")
+    assert "as printed, which has an erratum (the errors are the print's" in wrong and "| method |" in wrong
+    right = NotebookView(load(S1)[0], next(r for r in graefe_reports if r.id == S1)).step_markdown("pyramid-over-g")
+    assert "| method |" in right and "which has an erratum" not in right
+
+
 def test_a_failing_cell_is_one_line_and_a_failed_check(monkeypatch, tmp_path):
     # a notebook whose cell raises must stop the main job with exit status 1 and one line naming the
     # derivation and the error, not a kernel traceback

@@ -334,7 +334,9 @@ class NotebookView:
         for f in self.report.formulas:
             if f.id.endswith("/" + name):
                 p = self.derivation.get_printed(name)
-                out += _records(f"Witnesses of the printed formula {p.locator} — {self._witnesses(name)}:",
+                wrong = (" as printed, which has an erratum (the errors are the print's; its correction is checked "
+                         "with the formula below)" if f.verdict == "erratum" else "")
+                out += _records(f"Witnesses of the printed formula {p.locator}{wrong} — {self._witnesses(name)}:",
                                 f.numeric)
         return "\n\n".join(out)
 
