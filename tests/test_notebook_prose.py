@@ -35,6 +35,7 @@ def test_the_check_sees_a_name_set_as_letters():
     # what the Scheeffer VI.A-B and VI.C-F notebooks showed before (found by the browser test)
     assert _bare_names(r"B = (M_xi, $M_{eta}$) and $\tan^{2} \varphi_{lim}$") == ["eta", "lim"]
     assert _bare_names(r"$\int_{0}^{alpha} 2 \sin t\,dt$ and $I_{\text{rhomb}}$") == ["alpha"]
+    assert all(_DOUBLE.search(t) for t in ("y^{2}^{n}", "J_{1K}_{1}", "x_{3}^{1}'")) and not _DOUBLE.search("y^{2n}")
 
 
 @pytest.mark.parametrize("text, tex", [
@@ -49,6 +50,12 @@ def test_the_check_sees_a_name_set_as_letters():
     # Scheeffer IX: an equation number is the source's, not a factor (read "6s(1-s)(123)" and "2(164a - 166)")
     ("(a/b)^2 > 6s(1 - s) (123); cot^2 phi_3 = 2 (164a-166)", r"$(a/b)^{2} > 6s(1 - s)$ (123)"),
     ("cot^2 phi_3 = 12(a/b)^2 s(1-s) - 2 (164a-166), and x = D/(2a)", r"- 2$ (164a-166), and $x = D/(2a)$"),
+    # Euler §§229-243 writes κ, ⁿ and braced exponents: one formula each, not pieces between words
+    ("x = a + Y ± a(1 − yⁿ/bⁿ)^κ", r"$x = a + Y \pm a(1 - y^{n}/b^{n})^{\kappa }$"),
+    ("Y = c_1 yⁿ/bⁿ + c_2 y²ⁿ/b²ⁿ", r"y^{2n}/b^{2n}$"),
+    ("y = b t^{1/n} turns it into b^{p+1}/n", r"$y = b t^{1/n}$"),
+    ("int_{1/2 - c}^{1/2} z dz = (c - c^2)/2", r"$\int_{1/2 - c}^{1/2} z dz"),       # Scheeffer X, moment-z
+    ("J_1K_1 and x_3^1'", r"$J_{1}K_{1}$ and $x_{3}^{1\prime}$"),                  # VII-VIII: no double index
 ])
 def test_greek_names_and_functions_are_signs(text, tex):
     shown = typeset(text)
@@ -69,10 +76,18 @@ def _texts(derivation: str):
     yield from (("witness", w.description) for w in d.witnesses)
 
 
+# what TeX refuses: an index or exponent given twice (y^{2}^{n}, J_{1K}_{1}, x_{3}^{1}')
+_DOUBLE = re.compile(r"\^\{[^{}]*\}(?:\^|')|_\{[^{}]*\}_")
+
+
 @pytest.mark.parametrize("derivation", registry.ids())
 def test_no_formula_of_a_notebooks_words_spells_a_greek_letter(derivation):
-    bad = [(where, _bare_names(typeset(text))) for where, text in _texts(derivation) if _bare_names(typeset(text))]
+    shown = [(where, typeset(text)) for where, text in _texts(derivation)]
+    bad = [(where, _bare_names(text)) for where, text in shown if _bare_names(text)]
     assert not bad, bad[:5]
+    double = [(where, m.group(0)) for where, text in shown for math in _MATH.finditer(text)
+              for m in [_DOUBLE.search(math.group(0))] if m]
+    assert not double, double[:5]
 
 
 def test_the_about_section_names_no_module_of_the_program():

@@ -35,14 +35,21 @@ __all__ = ["typeset", "without_program_names"]
 GREEK = ("alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda", "mu",
          "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "varphi", "chi", "psi", "omega",
          "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega")
-FUNCTIONS = ("sin", "cos", "tan", "cot", "tg", "cotg", "sqrt", "arctan", "atan", "log", "exp", "int", "lim", "max", "min")
+FUNCTIONS = ("sin", "cos", "tan", "cot", "tg", "cotg", "sqrt", "arctan", "atan", "log", "exp", "int", "lim", "max",
+             "min")
 _TEX = {"phi": r"\varphi", "varphi": r"\varphi", "epsilon": r"\varepsilon", "atan": r"\arctan",
         "tg": r"\operatorname{tg}", "cotg": r"\operatorname{cotg}",
         "sqrt": r"\sqrt", "int": r"\int", "√": r"\sqrt", "∫": r"\int", "·": r"\cdot", "−": "-",
         "<=": r"\le", ">=": r"\ge", "≤": r"\le", "≥": r"\ge", "±": r"\pm", "+-": r"\pm", "oo": r"\infty",
         "*": r"\cdot", "π": r"\pi", "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu",
-        "≈": r"\approx", "→": r"\to", "∞": r"\infty"}
-_SUPER = {"²": "2", "³": "3", "⁴": "4", "¹": "1", "⁰": "0", "⁵": "5", "⁶": "6"}
+        "≈": r"\approx", "→": r"\to", "∞": r"\infty",
+        # Greek letters written as themselves (Euler's κ, μ, ν in the notes of §§229-243)
+        "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon", "κ": r"\kappa",
+        "λ": r"\lambda", "ν": r"\nu", "ξ": r"\xi", "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau", "ψ": r"\psi",
+        "Γ": r"\Gamma", "Δ": r"\Delta"}
+_SUPER = {"²": "2", "³": "3", "⁴": "4", "¹": "1", "⁰": "0", "⁵": "5", "⁶": "6", "⁷": "7", "⁸": "8", "⁹": "9",
+          "ⁿ": "n"}
+_SIGNS = "πθφωμαβγδεκλνξρστψΓΔ"      # the Greek letters above
 
 _TOKEN = re.compile(r"""
     (?P<space>[ ]+)
@@ -50,12 +57,13 @@ _TOKEN = re.compile(r"""
   | (?P<degrees>(?:(?<=\d)|(?<=\d[ ]))deg\b)                                        # 45 deg
   | (?P<starred>\b[A-Za-z]+\*(?![\w(*]))                                           # omega*, s*
   | (?P<compound>\b[A-Za-z]-(?!(?:sin|cos|tan|cot|log|exp|sqrt)\b)[a-z]{3,}\b)        # n-gon, x-axis: a word
-  | (?P<name>[A-Za-z][A-Za-z0-9]*(?:_\{?[A-Za-z0-9]+\}?|\^\{?[A-Za-z0-9*]+\}?)+'?)   # T_1^1, u_m', s^*
+  | (?P<name>[A-Za-z][A-Za-z0-9]*(?:[_^](?:\{[^{}$]+\}|\d+(?=[A-Z]\w*[_^])|[A-Za-z0-9*κν]+))+'?)   # T_1^1, y^{p+1}
   | (?P<word>[A-Za-z][A-Za-z]*'?(?:s\b)?)
-  | (?P<index>[_^]\{?[A-Za-z0-9*]+\}?)                                              # ∫_0^b, s^*
+  | (?P<index>[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))                                   # ∫_0^b, s^*, )^κ, )^{3κ-1}
   | (?P<number>\d+(?:\.\d+)?)
   | (?P<relation><=|>=|[=<>≤≥≈]|->|→)
-  | (?P<operator>\+-|[-+*/()±·−√∫²³⁴¹⁰πθφωμ∞])
+  | (?P<power>[²³⁴¹⁰⁵⁶⁷⁸⁹ⁿ]+)                                                       # y²ⁿ
+  | (?P<operator>\+-|[-+*/()±·−√∫∞πθφωμαβγδεκλνξρστψΓΔ])
   | (?P<other>.)
 """, re.X | re.S)
 
@@ -76,8 +84,10 @@ def _kind(token: str, group: str) -> str:
         if len(token) == 1 or re.fullmatch(r"d[A-Za-z]", token) or token == "oo" or _differential(token):
             return "weak"
         return "text"
+    if group == "power":
+        return "strong" if re.search("[²³⁴]", token) else "weak"
     if group in ("index", "number", "operator"):
-        return "strong" if token in ("√", "∫", "²", "³", "⁴") or group == "index" else "weak"
+        return "strong" if token in ("√", "∫", "²", "³", "⁴") or token in _SIGNS or group == "index" else "weak"
     return {"relation": "relation", "space": "space"}.get(group, "text")
 
 
@@ -93,8 +103,12 @@ def _script(text: str) -> str:
 
 
 def _scripts(text: str) -> str:
-    """``_1^alpha`` -> ``_{1}^{\\alpha}``."""
-    return re.sub(r"([_^])\{?([A-Za-z0-9*]+)\}?", lambda s: f"{s.group(1)}{{{_script(s.group(2))}}}", text)
+    """``_1^alpha`` -> ``_{1}^{\\alpha}``, ``^{3κ-1}`` -> ``^{3\\kappa -1}``."""
+    def one(m: re.Match) -> str:
+        inner = "".join(_TEX[ch] + " " if ch in _SIGNS else _TEX.get(ch, ch) if ch in "−·" else ch
+                        for ch in (m.group(2) or m.group(3)))
+        return f"{m.group(1)}{{{_script(inner) if m.group(3) else inner}}}"
+    return re.sub(r"([_^])(?:\{([^{}$]+)\}|([A-Za-z0-9*κν]+))", one, text)
 
 
 def _differential(token: str) -> bool:
@@ -107,18 +121,21 @@ def _tex(token: str) -> str:
         return "d" + _tex(token[1:])
     if token in _TEX:
         return _TEX[token]
-    if token in _SUPER:
-        return "^{" + _SUPER[token] + "}"
+    if all(ch in _SUPER for ch in token):
+        return "^{" + "".join(_SUPER[ch] for ch in token) + "}"
     if token == "deg":
         return r"^{\circ}"
     if re.fullmatch(r"[A-Za-z]+\*", token):
         return _tex(token[:-1]) + "^{*}"
-    m = re.fullmatch(r"([A-Za-z][A-Za-z0-9]*)((?:[_^]\{?[A-Za-z0-9*]+\}?)*)('?)", token)
+    m = re.fullmatch(r"([A-Za-z][A-Za-z0-9]*)((?:[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))*)('?)", token)
     if m and (m.group(2) or m.group(1) in GREEK or m.group(1) in FUNCTIONS):
         base = m.group(1)
         base = _TEX.get(base, "\\" + base if base in GREEK or base in FUNCTIONS else base)
-        return base + _scripts(m.group(2)) + m.group(3)
-    if re.fullmatch(r"[_^]\{?[A-Za-z0-9*]+\}?", token):
+        scripts = _scripts(m.group(2))
+        if m.group(3) and "^" in scripts:               # x_3^1': the prime joins the exponent
+            return base + scripts[:-1] + r"\prime}"
+        return base + scripts + m.group(3)
+    if re.fullmatch(r"[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+)", token):
         return _scripts(token)
     return token
 
@@ -183,7 +200,7 @@ def _attached(tokens: list) -> list:
     for i, (t, k, g) in enumerate(tokens):
         if k == "text" and g == "word" and len(t) <= 3:
             near = [tokens[j] for j in (i - 1, i + 1) if 0 <= j < len(tokens)]
-            if any(n[2] in ("operator", "index", "number") and n[0] not in "()" for n in near):
+            if any(n[2] in ("operator", "power", "index", "number") and n[0] not in "()" for n in near):
                 out[i] = (t, "weak", g)
     return out
 
