@@ -14,6 +14,8 @@ import sympy as sp
 from nbclient.exceptions import CellExecutionError
 
 from symfloat.engine.identity import Domain
+from symfloat import registry
+from symfloat.model.claim import members
 from symfloat.registry import load
 from symfloat.report.notebook_cells import CellWriter
 from symfloat.report.notebook_code import Code, bound_names, definitions_source, small_point
@@ -309,3 +311,16 @@ def test_the_declarations_run_and_give_every_symbol_ten_to_a_line():
     kernel: dict = {}
     exec("from sympy import Symbol, symbols\n" + text, kernel)            # noqa: S102 - code printed here
     assert all(kernel[code.names[s]] == s for s in syms)                  # a single symbol too (not 'b, = ...')
+
+
+@pytest.mark.parametrize("derivation", registry.ids())
+def test_every_symbol_is_declared_under_a_python_name_not_its_tex(derivation):
+    # Euler §§220-228 declared its integrals as Symbol('{\\int_{0}^{b} \\frac{yy\\,dy}{\\sqrt{bb-yy}}}') and
+    # Scheeffer I-III its wedge integrals as Symbol('\\int_3{x^2df}'): now int_y2_dy_over_R, int_x2_df_3, with
+    # the typeset name registered where the symbol is made
+    d, _ = load(derivation)
+    exprs = [m for s in d.steps for m in members(s.claim)]
+    code = Code({s for e in exprs if hasattr(e, "atoms") for s in e.atoms(sp.Symbol)} | set(d.domain))
+    tex = [line for line in code.declarations().splitlines() if "\\" in line]
+    assert not tex, tex[:3]
+
