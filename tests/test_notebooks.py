@@ -324,3 +324,15 @@ def test_every_symbol_is_declared_under_a_python_name_not_its_tex(derivation):
     tex = [line for line in code.declarations().splitlines() if "\\" in line]
     assert not tex, tex[:3]
 
+
+def test_a_product_sympy_would_multiply_out_is_kept_as_built_in_plain_sympy():
+    # Scheeffer VI.C-F (moment-derivative) integrates the print's 2 sin t (t - sin t); SymPy, run, distributes
+    # the 2 over t - sin t, so the step's cell was a comment: now that product alone is kept as built
+    t, n, F = sp.Symbol("t", real=True), sp.Symbol("n", positive=True), sp.Symbol("F", positive=True)
+    kept = sp.Mul(2, t - sp.sin(t), sp.sin(t), evaluate=False)
+    expr = -F ** 2 * sp.Integral(kept, (t, 0, 2 * sp.pi / n)) / (6 * n ** 2)
+    code = Code({t, n, F})
+    assert eval(str(kept), {"__builtins__": {}, **code.namespace}) != kept      # noqa: S307 - run, 2(t - sin t) is lost
+    text, evaluated = code.member(expr)
+    assert evaluated and "Mul(2, t - sin(t), sin(t), evaluate=False)" in text
+    assert eval(text, {"__builtins__": {}, **code.namespace}) == expr          # noqa: S307 - code printed here
