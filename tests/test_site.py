@@ -238,7 +238,8 @@ def site(tmp_path_factory):
 
 class _Page(HTMLParser):
     """Links, ids and the visible text of one page (scripts, styles and MathML left out; so is a notebook's
-    code, ``<pre>``, where a symbol's name may be its TeX as SymPy takes it, e.g. ``Symbol('\\frac{..}{..}')``)."""
+    code, ``<pre>``, where a function the derivation defines prints itself as TeX, e.g. Euler §§229-243's Beta
+    integral ``r"\\int_0^{%s} ... \\frac{y^{%s}}{%s^{%s}}"``)."""
 
     def __init__(self):
         super().__init__()
@@ -351,7 +352,7 @@ def _browser(playwright):
 
 def _visible_tex(page) -> list[str]:
     """The TeX that the browser shows as text on *page* (none where MathML was made), outside a notebook's
-    code (``<pre>``: a symbol's name may be its TeX there, as SymPy takes it)."""
+    code (``<pre>``: a function the derivation defines may print itself as TeX there)."""
     text = page.evaluate("() => { const code = [...document.querySelectorAll('pre')];"
                          " code.forEach(e => { e.dataset.shown = e.style.display; e.style.display = 'none'; });"
                          " const text = document.body.innerText;"
@@ -386,8 +387,6 @@ _NAMES = sorted([g for g in GREEK if g[0].islower()] + ["sin", "cos", "tan", "co
                 key=len, reverse=True)
 
 
-@pytest.mark.xfail(reason="the SymPy notebooks' outputs still show symbol names as letters (M_{eta}, varphi_{lim}): "
-                          "left in the closing note of 2026-12-02", strict=False)
 def test_every_page_in_headless_chromium(site):
     sync_api = pytest.importorskip("playwright.sync_api", reason="playwright is not installed (test extra)")
     with sync_api.sync_playwright() as p:

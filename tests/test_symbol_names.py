@@ -53,9 +53,10 @@ def test_a_derivation_names_a_symbol_where_it_makes_it():
 # the upright words are set: a digit run into letters in a braced index (V_{3cx 3}: V_3 x_3 of VIII; T_{1n}),
 # or two letters or more that are not points of a figure.  Points are capitals with at most the lower-case
 # letters Euler gives points (Cc, Nn, Pp in §202 and §217; the triangle Ace of §§220-228); uv and xy index a
-# product moment (Scheeffer's P_xy, I_uv), df is Scheeffer's element of area.
+# product moment (Scheeffer's P_xy, I_uv), df is Scheeffer's element of area; in Euler's integrals (§§220-228)
+# dx, dy, dY are differentials and a doubled letter is his square (bb - yy for b² - y², cyy for c y²).
 _RUN = re.compile(r"(?<![_^])\d+[A-Za-z]+|[A-Za-z]{2,}")
-_READABLE = re.compile(r"[A-Z][A-Za-z]*|uv|xy|df")
+_READABLE = re.compile(r"[A-Z][A-Za-z]*|uv|xy|df|d[xyY]|[a-z]?([a-z])\1")
 
 
 def _unreadable(tex: str) -> list[str]:
@@ -83,6 +84,8 @@ def test_the_check_of_a_name_sees_a_program_name():
     assert _unreadable(r"D_{sq}") == ["sq"]
     assert _unreadable(r"A_{IG_1H_1}") == _unreadable(r"I_{Ace}") == _unreadable(r"GM_{c}") == []
     assert _unreadable(r"(V_{3} x_{3})^{\text{VIII}}") == _unreadable(r"\tan\varphi_{\lim 45}") == []
+    assert _unreadable(r"{\int_{0}^{b} \left(a - \tfrac{cyy}{bb}\right) dy \sqrt{bb-yy}}") == []   # Euler §227
+    assert _unreadable(r"{\int_{0}^{b} y\,dz \sqrt{bb-yz}}") == ["dz", "yz"]
 
 
 @pytest.mark.parametrize("derivation", registry.ids())

@@ -3,6 +3,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum, Holds
 from symfloat.model.claim import as_printed
+from symfloat.model.symbol_names import symbol
 
 y = sp.Symbol("y", real=True)
 th = sp.Symbol("theta", real=True)
@@ -38,9 +39,10 @@ DERIVATION = d = Derivation(
 R = sp.sqrt(b ** 2 - y ** 2)
 
 
-def integral_symbol(latex):
-    """A symbol that prints as Euler's integral (taken from 0 to b); its value is stated by one step."""
-    return sp.Symbol(r"{\int_{0}^{b} " + latex + "}")   # braces: printed after the letters in products
+def integral_symbol(name, latex):
+    """The symbol *name* (``int_...``, what the integral integrates), typeset as Euler's integral taken from 0
+    to b; its value is stated by one step."""
+    return symbol(name, r"{\int_{0}^{b} " + latex + "}")
 
 
 # pairs (a strip's integrand, the same as written for integration): the step "integrands" checks each pair equal
@@ -60,10 +62,11 @@ def integral_step(name, S, f, integrand, value, note="", theta=None):
     return value
 
 
-def named(name, latex, f, integrand, value, note=""):
-    """A printed integral ∫_0^b f dy as a quantity of its own (its symbol prints as the integral), stated
-    once with its closed value; the readings use the symbol, the witnesses its value."""
-    S = sp.Symbol("{" + latex + "}") if latex.startswith(r"\left(") else integral_symbol(latex)
+def named(name, latex, f, integrand, value, note="", called=None):
+    """A printed integral ∫_0^b f dy as a quantity of its own (its symbol, *called* or the step's name, prints
+    as the integral), stated once with its closed value; the readings use the symbol, the witnesses its value."""
+    python = called or name.replace("-", "_")
+    S = symbol(python, "{" + latex + "}") if latex.startswith(r"\left(") else integral_symbol(python, latex)
     integral_step(name, S, f, integrand, value, note=note)
     return S
 
@@ -73,9 +76,11 @@ def claim(text):
 
 
 # ================================================================ the integrals with √(bb - yy), once each
-U0, U2, U4, V2, V4 = (integral_symbol(t) for t in (r"dy \sqrt{bb-yy}", r"yy\,dy \sqrt{bb-yy}",
-                                                   r"y^4 dy \sqrt{bb-yy}", r"\frac{yy\,dy}{\sqrt{bb-yy}}",
-                                                   r"\frac{y^4 dy}{\sqrt{bb-yy}}"))
+U0, U2, U4, V2, V4 = (integral_symbol(*t) for t in (("int_R_dy", r"dy \sqrt{bb-yy}"),
+                                                    ("int_y2_R_dy", r"yy\,dy \sqrt{bb-yy}"),
+                                                    ("int_y4_R_dy", r"y^4 dy \sqrt{bb-yy}"),
+                                                    ("int_y2_dy_over_R", r"\frac{yy\,dy}{\sqrt{bb-yy}}"),
+                                                    ("int_y4_dy_over_R", r"\frac{y^4 dy}{\sqrt{bb-yy}}")))
 D = sp.Symbol("D", positive=True)
 integral_step("U0", U0, R,
               -((y + b) * (y - b) / sp.sqrt(b ** 2 - y ** 2)),
@@ -295,7 +300,8 @@ integral_step("Aa-AEB", KAEB, (xR ** 3 - xL ** 3) / 3,
               a * b * (150 * sp.pi * a ** 2 + 15 * sp.pi * q ** 2 * b ** 4 + 30 * sp.pi * p ** 2 * b ** 2
               + 128 * p * q * b ** 3 + 320 * p * a * b + 60 * sp.pi * q * a * b ** 2) / 240)
 d.step("Aa-whole", Eq(Kwhole, 2 * KAEB), "definition", result=Kwhole, note="AFB mirrors AEB")
-T2, T4 = integral_symbol(r"y\,dY (a+Y) \sqrt{bb-yy}"), integral_symbol(r"\frac{yy\,dy (a+Y)^2}{\sqrt{bb-yy}}")
+T2 = integral_symbol("int_y_aY_R_dY", r"y\,dY (a+Y) \sqrt{bb-yy}")
+T4 = integral_symbol("int_y2_aY2_dy_over_R", r"\frac{yy\,dy (a+Y)^2}{\sqrt{bb-yy}}")
 integral_step("T2", T2, y * (a + Yg) * R * dYg,
               -(y * (p + 2 * q * y) * (y + b) * (y - b) * (a + p * y + q * y ** 2) / sp.sqrt(b ** 2 - y ** 2)),
               b ** 3 * (80 * p * a + 15 * sp.pi * b * p ** 2 + 15 * sp.pi * q ** 2 * b ** 3 + 96 * p * q * b ** 2
@@ -398,10 +404,12 @@ d.quote("Aa-Bce-expanded", "§224",
                    "powers of √(bb-yy) changed, from y = b to 0 (each read as -∫_0^b)."))
 
 # ================================================================ §225: AEB about aAa
-G2, S2 = integral_symbol(r"y\,d.(a+Y)^2 \sqrt{bb-yy}"), integral_symbol(r"(a+Y)^2 dy \sqrt{bb-yy}")
+G2 = integral_symbol("int_y_R_d_aY2", r"y\,d.(a+Y)^2 \sqrt{bb-yy}")
+S2 = integral_symbol("int_aY2_R_dy", r"(a+Y)^2 dy \sqrt{bb-yy}")
 E1 = named("int-E1", r"y\,dy (a+Y) \sqrt{bb-yy}", y * (a + Yg) * R,
               -(y * (y + b) * (y - b) * (a + p * y + q * y ** 2) / sp.sqrt(b ** 2 - y ** 2)),
-              b ** 3 * (80 * a + 32 * q * b ** 2 + 15 * sp.pi * p * b) / 240, note="the first integral of §225 as transcribed")
+              b ** 3 * (80 * a + 32 * q * b ** 2 + 15 * sp.pi * p * b) / 240, note="the first integral of §225 as transcribed",
+           called="int_y_aY_R_dy")
 integral_step("G2", G2, y * sp.diff((a + Yg) ** 2 * R, y),
               -(y * (a + p * y + q * y ** 2) * (y * a - 2 * p * b ** 2 + 3 * p * y ** 2 + 5 * q * y ** 3
               - 4 * q * y * b ** 2) / sp.sqrt(b ** 2 - y ** 2)),
@@ -490,8 +498,10 @@ d.quote("Aa-whole", "§225", r"$= \frac{aaD^3}{2} + \frac{2a}{b} \int (a+Y)^2 dy
 
 # ================================================================ §226: centroid and the moment about EF
 FAEB, AC, KEF = sp.symbols("F_{AEB} AC K_{EF}")
-W1, Z1, G1, S1 = (integral_symbol(t) for t in (r"\frac{y^2 dy (a+Y)}{\sqrt{bb-yy}}", r"y\,dY \sqrt{bb-yy}",
-                                               r"y\,d.(a+Y) \sqrt{bb-yy}", r"(a+Y) dy \sqrt{bb-yy}"))
+W1, Z1, G1, S1 = (integral_symbol(*t) for t in (("int_y2_aY_dy_over_R", r"\frac{y^2 dy (a+Y)}{\sqrt{bb-yy}}"),
+                                                ("int_y_R_dY", r"y\,dY \sqrt{bb-yy}"),
+                                                ("int_y_R_d_aY", r"y\,d.(a+Y) \sqrt{bb-yy}"),
+                                                ("int_aY_R_dy", r"(a+Y) dy \sqrt{bb-yy}")))
 integral_step("first-moment", FAEB, (xR ** 2 - xL ** 2) / 2,
               -2 * a * (y + b) * (y - b) * (a + p * y + q * y ** 2) / (b * sp.sqrt(b ** 2 - y ** 2)),
               a * b * (12 * sp.pi * a + 16 * p * b + 3 * sp.pi * q * b ** 2) / 24, note="∫∫ x over AEB (moment about aAa)")
@@ -531,7 +541,7 @@ XY = named("int-xy-dx", r"\left(\int_{0}^{b} xy\,dx_{Ace} - \int_{0}^{b} xy\,dx_
            note="∫xy dx along Ace from A to e and back along Bce from e to B")
 E0 = named("int-E0", r"y\,dy \sqrt{bb-yy}", y * R,
               -(y * (y + b) * (y - b) / sp.sqrt(b ** 2 - y ** 2)),
-              b ** 3 / 3, note="the second integral of §226 as transcribed")
+              b ** 3 / 3, note="the second integral of §226 as transcribed", called="int_y_R_dy")
 d.step("DAC-by-parts", (XY, FAEB), "integration",
        uses=("first-moment",), note="∫xy dx along Ace and back along Bce is the strip integral")
 d.step("parallel-axes", (KEF, Kwhole - 2 * D * AC ** 2), "algebra",
@@ -601,8 +611,8 @@ d.quote("reduce-U0", "§226", r"$\int dy V(bb-yy) = \frac{bD}{2a}.$", reading=(U
 # ================================================================ §227: Y = -cyy/bb
 xLc, xRc = a + Yc - a * R / b, a + Yc + a * R / b
 AEBc, FAEBc, ACc, KEFc = sp.symbols("A_{AEBc} F_{AEBc} AC_c K_{EFc}")
-S2c = integral_symbol(r"\left(a - \tfrac{cyy}{bb}\right)^2 dy \sqrt{bb-yy}")
-S1c = integral_symbol(r"\left(a - \tfrac{cyy}{bb}\right) dy \sqrt{bb-yy}")
+S2c = integral_symbol("int_a_cY2_R_dy", r"\left(a - \tfrac{cyy}{bb}\right)^2 dy \sqrt{bb-yy}")
+S1c = integral_symbol("int_a_cY_R_dy", r"\left(a - \tfrac{cyy}{bb}\right) dy \sqrt{bb-yy}")
 integral_step("S2c", S2c, (a + Yc) ** 2 * R,
               -((c * y ** 2 - a * b ** 2) ** 2 * (y + b) * (y - b) / (b ** 4 * sp.sqrt(b ** 2 - y ** 2))),
               sp.pi * b ** 2 * (c ** 2 + 8 * a ** 2 - 4 * a * c) / 32, note="∫(a+Y)²dy√(bb-yy) with Y = -cyy/bb")

@@ -3,6 +3,7 @@ import sympy as sp
 
 from symfloat import Derivation, Erratum, Holds, Iff
 from symfloat.model.source import get_source
+from symfloat.model.symbol_names import symbol
 
 rho, al, l, g = sp.symbols("varrho alpha l g", positive=True)
 xi, et, s0 = sp.symbols("xi eta s_0", real=True)
@@ -10,7 +11,8 @@ s, xs, ys, OF = sp.symbols("s x y OF", real=True)
 E0h, E0v, E0, E1h, E1v, E2v, E1 = sp.symbols(
     r"E_0^{hasab} E_0^{viz} E_0^{teljes} E_1^{hasab} E_{(1)}^{viz} E_2^{viz} E_1^{teljes}", real=True)
 c0, c2, GM, R1, R2, Ru = sp.symbols("c_0 c_2 GM R_1 R_2 R_u", real=True)
-OFa, A3, h3, d3 = sp.symbols(r"OF_\alpha A_{IG_1H_1} h_{IG_1H_1} d_{IG_1H_1}", real=True)
+OFa = symbol("OF_alpha", r"OF_{\alpha}", real=True)
+A3, h3, d3 = sp.symbols("A_{IG_1H_1} h_{IG_1H_1} d_{IG_1H_1}", real=True)
 T1, V1, e1 = sp.symbols("T_1 V_1 e_1", real=True)
 t = sp.tan(al)
 half = sp.Rational(1, 2)

@@ -15,7 +15,8 @@ x3, x4, y3, y4 = sp.symbols("x_3 x_4 y_3 y_4", positive=True)
 P1, P2, Hh = sp.symbols("P_1 P_2 H", positive=True)
 a, a0, c0, h0 = sp.symbols("a a_0 c_0 h_0", real=True)
 x, s, eta = sp.symbols("x s eta", real=True)
-T1, J3, J4 = sp.symbols(r"T_1 \int_3{x^2df} \int_4{x^2df}", positive=True)
+T1 = sp.Symbol("T_1", positive=True)
+J3, J4 = (symbol(f"int_x2_df_{i}", rf"\int_{i}{{x^2df}}", positive=True) for i in (3, 4))   # over the wedges V3, V4
 Mx3, My3, Mx4, My4 = (symbol(name, tex, real=True) for name, tex in (
     ("V_3x_3", r"V_{3} x_{3}"), ("V_3y_3", r"V_{3} y_{3}"), ("V_4x_4", r"V_{4} x_{4}"), ("V_4y_4", r"V_{4} y_{4}")))
 tg = sp.tan(phi)

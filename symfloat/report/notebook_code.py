@@ -182,7 +182,9 @@ class Code:
 
     def member(self, expr) -> tuple[str, bool]:
         """*expr* as SymPy source and whether it reads back as built when run as it is (``True``) or only
-        under ``with evaluate(False)`` (``False``: a member that keeps the print's arithmetic)."""
+        under ``with evaluate(False)`` (``False``: a member that keeps the print's arithmetic).  Tried in turn:
+        SymPy's printing, the same kept unevaluated, the expression tree, and SymPy's printing with the nodes
+        SymPy would rearrange kept as built (:class:`_Kept`)."""
         text = _FunctionNames(self.names, self.functions).doprint(expr)
         if isinstance(expr, sp.Integer):           # a SymPy integer, not Python's
             text = f"S({text})"
@@ -194,6 +196,9 @@ class Code:
         text = _Tree({**self.names, **self.functions}).doprint(expr)     # the expression tree, node by node
         if self._reads_back(text, expr, evaluate=False):
             return text, False
+        text = _Kept(self.names, self.functions, self.namespace).doprint(expr)
+        if self._reads_back(text, expr, evaluate=True):
+            return text, True
         raise ValueError(f"no SymPy source reads back as {sp.srepr(expr)[:200]}")
 
     def _reads_back(self, text: str, expr, evaluate: bool) -> bool:
@@ -250,6 +255,35 @@ class _FunctionNames(SymPyCode):
         if isinstance(expr, AppliedUndef) and expr.func in self.functions:
             return f"{self.functions[expr.func]}({', '.join(self._print(a) for a in expr.args)})"
         return super()._print_Function(expr)
+
+
+class _Kept(_FunctionNames):
+    """:class:`SymPyCode` that keeps a product, sum or power as built where SymPy would rearrange it when run:
+    ``Mul(2, t - sin(t), evaluate=False)`` for the print's 2(t - sin t), which SymPy multiplies out; everything
+    else is evaluated as usual, so that the rest reads as plain SymPy."""
+
+    def __init__(self, names, functions, namespace):
+        super().__init__(names, functions)
+        self.namespace = namespace
+
+    def _kept(self, expr, text: str) -> str:
+        try:
+            # the text was printed here from the derivation's SymPy objects, and runs with SymPy's names only
+            same = eval(text, {"__builtins__": {}, **self.namespace}) == expr      # noqa: S307
+        except Exception:                                   # a form SymPy cannot read back: keep the node
+            same = False
+        if same:
+            return text
+        return f"{type(expr).__name__}({', '.join(self._print(a) for a in expr.args)}, evaluate=False)"
+
+    def _print_Mul(self, expr):
+        return self._kept(expr, super()._print_Mul(expr))
+
+    def _print_Add(self, expr, order=None):
+        return self._kept(expr, super()._print_Add(expr, order))
+
+    def _print_Pow(self, expr, rational=False):
+        return self._kept(expr, super()._print_Pow(expr, rational))
 
 
 class _Tree(ReprPrinter):

@@ -38,6 +38,9 @@ JUSTIFICATION = {
     "series": "a series expansion",
 }
 
+# an inequality sign of the print (TeX or Unicode)
+_INEQUALITY = re.compile(r"\\(?:geqq|leqq|geq|leq|ge|le|gtrless)(?![A-Za-z])|[<>≤≥]")
+
 
 # ---- the mathematics, rendered when the notebook is built ---------------------------------------------------------
 def named(names, expr):
@@ -219,7 +222,8 @@ def _derived_symbols(d, claims) -> str:
 
 def reading_markdown(d, p, findings: str = "") -> str:
     """A printed formula: its locator as heading (numbered when several share it), the verbatim quotation,
-    its reading as printed and the correction's, then what the engine found (*findings*)."""
+    its reading as printed (an inequality read as an equation says so) and the correction's, then what the
+    engine found (*findings*)."""
     same = [q for q in d.printed if q.locator == p.locator]
     head = f"### {p.locator}" + (f", formula {same.index(p) + 1} of {len(same)}" if len(same) > 1 else "")
     derived_by = [s for s in d.steps if s.name == p.name and s.note]
@@ -234,6 +238,9 @@ def reading_markdown(d, p, findings: str = "") -> str:
     if p.unreadable:
         out.append(f"Not readable as printed: {p.unreadable}")
     if p.reading is not None:
+        if not is_relation(p.reading) and _INEQUALITY.search(p.excerpt):
+            out.append("The print states an inequality; it is read as the equation below (its bound, its margin or "
+                       "its sign, as the note says).")
         out.append("Read as printed:\n\n" + chain_latex(d, p.reading, split=False))
     corrected = p.erratum.corrected_reading if p.erratum is not None else None
     if corrected is not None:
@@ -318,8 +325,8 @@ class NotebookView:
     def _witnesses(self, target: str) -> str:
         """What the first-principles witnesses of *target* compute, in the derivation's words."""
         ws = [w for w in self.derivation.witnesses if target.split("#")[0] in w.targets]
-        return "; ".join(w.description + (f" ({len(w.instances)} cases)" if hasattr(w, "instances") else "")
-                         for w in ws)
+        return "; ".join(typeset(w.description) + (f" ({len(w.instances)} cases)" if hasattr(w, "instances")
+                                                   else "") for w in ws)
 
     def step_markdown(self, name: str) -> str:
         s = next(s for s in self.report.steps if s.name == name)
@@ -327,7 +334,9 @@ class NotebookView:
         for f in self.report.formulas:
             if f.id.endswith("/" + name):
                 p = self.derivation.get_printed(name)
-                out += _records(f"Witnesses of the printed formula {p.locator} — {self._witnesses(name)}:",
+                wrong = (" as printed, which has an erratum (the errors are the print's; its correction is checked "
+                         "with the formula below)" if f.verdict == "erratum" else "")
+                out += _records(f"Witnesses of the printed formula {p.locator}{wrong} — {self._witnesses(name)}:",
                                 f.numeric)
         return "\n\n".join(out)
 
@@ -337,14 +346,14 @@ class NotebookView:
         if f.identity and f.verdict in ("verified", "erratum", "trivial"):
             out.append(f"The reading against the derivation: {_how(f.identity, f.identity['status'])}.")
         if f.reason:
-            out.append(f"Reason: {f.reason}")
+            out.append(f"Reason: {typeset(f.reason)}")
         if f.erratum:
             e = f.erratum
             why = self.derivation.get_printed(name).erratum.evidence
             head = (f"Correction of the transcription (confidence {e['confidence']}); the original very probably "
                     f"printed:" if apparatus(e["kind"]) == "transcription"
                     else f"Fault of the original ({e['kind']}, confidence {e['confidence']}). Corrected:")
-            out.append(f"{head}\n\n{correction_markdown(e['kind'], e['corrected'])}\n\n{why}")
+            out.append(f"{head}\n\n{correction_markdown(e['kind'], e['corrected'])}\n\n{typeset(why)}")
         what = self._witnesses(name) or ("the derivation's definitions evaluated at concrete values (no declared "
                                          "witness measures this formula)")
         out += _records(f"Witnesses against the printed formula — {what}:", f.numeric)

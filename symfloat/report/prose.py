@@ -15,33 +15,55 @@ relation sign stays text (``a`` is an article, ``(i)`` a label).
 'a solution of the equation'
 >>> typeset("the regular n-gon F_1 r^2 (2 + cos 2pi/n)/12")
 'the regular n-gon $F_{1} r^{2} (2 + \\\\cos 2\\\\pi/n)/12$'
+
+A Greek name or ``lim`` in an index is its sign, a star after a name is a superscript, degrees are
+degrees, and a bracket a run does not close ends the formula before it (the formula after it is set too);
+an equation number in brackets is the source's, not a factor:
+
+>>> typeset("stable iff (a/b)^2 > 6s(1 - s) (123), F(1) (141, 142)")
+'stable iff $(a/b)^{2} > 6s(1 - s)$ (123), F(1) (141, 142)'
+
+>>> typeset("B = (M_xi, M_eta)/V_t and tan phi_lim(45 deg), int_0^alpha t dt, omega* the axis")
+'B = ($M_{\\\\xi}$, $M_{\\\\eta}$)$/V_{t}$ and $\\\\tan \\\\varphi_{\\\\lim}(45 ^{\\\\circ})$, $\\\\int_{0}^{\\\\alpha} t dt$, $\\\\omega^{*}$ the axis'
 """
 from __future__ import annotations
 
 import re
 
-__all__ = ["typeset"]
+__all__ = ["typeset", "without_program_names"]
 
 GREEK = ("alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda", "mu",
          "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "varphi", "chi", "psi", "omega",
          "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega")
-FUNCTIONS = ("sin", "cos", "tan", "cot", "sqrt", "arctan", "atan", "log", "exp", "int", "lim", "max", "min")
+FUNCTIONS = ("sin", "cos", "tan", "cot", "tg", "cotg", "sqrt", "arctan", "atan", "log", "exp", "int", "lim", "max",
+             "min")
 _TEX = {"phi": r"\varphi", "varphi": r"\varphi", "epsilon": r"\varepsilon", "atan": r"\arctan",
+        "tg": r"\operatorname{tg}", "cotg": r"\operatorname{cotg}",
         "sqrt": r"\sqrt", "int": r"\int", "√": r"\sqrt", "∫": r"\int", "·": r"\cdot", "−": "-",
         "<=": r"\le", ">=": r"\ge", "≤": r"\le", "≥": r"\ge", "±": r"\pm", "+-": r"\pm", "oo": r"\infty",
         "*": r"\cdot", "π": r"\pi", "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu",
-        "≈": r"\approx", "→": r"\to", "∞": r"\infty"}
-_SUPER = {"²": "2", "³": "3", "⁴": "4", "¹": "1", "⁰": "0", "⁵": "5", "⁶": "6"}
+        "≈": r"\approx", "→": r"\to", "∞": r"\infty",
+        # Greek letters written as themselves (Euler's κ, μ, ν in the notes of §§229-243)
+        "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon", "κ": r"\kappa",
+        "λ": r"\lambda", "ν": r"\nu", "ξ": r"\xi", "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau", "ψ": r"\psi",
+        "Γ": r"\Gamma", "Δ": r"\Delta"}
+_SUPER = {"²": "2", "³": "3", "⁴": "4", "¹": "1", "⁰": "0", "⁵": "5", "⁶": "6", "⁷": "7", "⁸": "8", "⁹": "9",
+          "ⁿ": "n"}
+_SIGNS = "πθφωμαβγδεκλνξρστψΓΔ"      # the Greek letters above
 
 _TOKEN = re.compile(r"""
     (?P<space>[ ]+)
+  | (?P<locator>(?<![^\s])\(\d{1,3}[a-z]?(?:[ ]?[-–,][ ]?\d{1,3}[a-z]?)*\)(?![\w(/^*²³]))       # (123), (164a-166)
+  | (?P<degrees>(?:(?<=\d)|(?<=\d[ ]))deg\b)                                        # 45 deg
+  | (?P<starred>\b[A-Za-z]+\*(?![\w(*]))                                           # omega*, s*
   | (?P<compound>\b[A-Za-z]-(?!(?:sin|cos|tan|cot|log|exp|sqrt)\b)[a-z]{3,}\b)        # n-gon, x-axis: a word
-  | (?P<name>[A-Za-z][A-Za-z0-9]*(?:_\{?[A-Za-z0-9]+\}?|\^\{?[A-Za-z0-9*]+\}?)+'?)   # T_1^1, u_m', s^*
+  | (?P<name>[A-Za-z][A-Za-z0-9]*(?:[_^](?:\{[^{}$]+\}|\d+(?=[A-Z]\w*[_^])|[A-Za-z0-9*κν]+))+'?)   # T_1^1, y^{p+1}
   | (?P<word>[A-Za-z][A-Za-z]*'?(?:s\b)?)
-  | (?P<index>[_^]\{?[A-Za-z0-9*]+\}?)                                              # ∫_0^b, s^*
+  | (?P<index>[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))                                   # ∫_0^b, s^*, )^κ, )^{3κ-1}
   | (?P<number>\d+(?:\.\d+)?)
   | (?P<relation><=|>=|[=<>≤≥≈]|->|→)
-  | (?P<operator>\+-|[-+*/()±·−√∫²³⁴¹⁰πθφωμ∞])
+  | (?P<power>[²³⁴¹⁰⁵⁶⁷⁸⁹ⁿ]+)                                                       # y²ⁿ
+  | (?P<operator>\+-|[-+*/()±·−√∫∞πθφωμαβγδεκλνξρστψΓΔ])
   | (?P<other>.)
 """, re.X | re.S)
 
@@ -49,33 +71,72 @@ _TOKEN = re.compile(r"""
 def _kind(token: str, group: str) -> str:
     """``strong`` (certainly mathematics), ``weak`` (mathematics inside a run), ``relation``, ``space`` or
     ``text``."""
+    if group == "starred":
+        return "strong" if token[:-1] in GREEK or len(token) == 2 else "text"
+    if group == "degrees":
+        return "weak"
     if group == "name":
         base = re.match(r"[A-Za-z][A-Za-z0-9]*", token).group(0)
         return "strong" if len(base) <= 3 or base in GREEK or base in FUNCTIONS else "text"
     if group == "word":
         if token in GREEK or token in FUNCTIONS:
             return "strong"
-        if len(token) == 1 or re.fullmatch(r"d[A-Za-z]", token) or token == "oo":
+        if len(token) == 1 or re.fullmatch(r"d[A-Za-z]", token) or token == "oo" or _differential(token):
             return "weak"
         return "text"
+    if group == "power":
+        return "strong" if re.search("[²³⁴]", token) else "weak"
     if group in ("index", "number", "operator"):
-        return "strong" if token in ("√", "∫", "²", "³", "⁴") or group == "index" else "weak"
+        return "strong" if token in ("√", "∫", "²", "³", "⁴") or token in _SIGNS or group == "index" else "weak"
     return {"relation": "relation", "space": "space"}.get(group, "text")
 
 
+def _script(text: str) -> str:
+    """An index or exponent as TeX: a Greek name or an operator name at its start as its sign
+    (``eta`` -> ``\\eta``, ``lim45`` -> ``\\lim 45``, ``omegac`` -> ``\\omega c``), a word upright (``rect`` ->
+    ``\\text{rect}``), anything else as written."""
+    for n in range(len(text), 1, -1):
+        word, rest = text[:n], text[n:]
+        if (word in GREEK or word in ("lim", "max", "min")) and re.fullmatch(r"\d*|[A-Za-z]", rest):
+            return _TEX.get(word, "\\" + word) + (" " + rest if rest else "")
+    return rf"\text{{{text}}}" if re.fullmatch(r"[a-z]{3,}", text) else text
+
+
+def _scripts(text: str) -> str:
+    """``_1^alpha`` -> ``_{1}^{\\alpha}``, ``^{3κ-1}`` -> ``^{3\\kappa -1}``."""
+    def one(m: re.Match) -> str:
+        inner = "".join(_TEX[ch] + " " if ch in _SIGNS else _TEX.get(ch, ch) if ch in "−·" else ch
+                        for ch in (m.group(2) or m.group(3)))
+        return f"{m.group(1)}{{{_script(inner) if m.group(3) else inner}}}"
+    return re.sub(r"([_^])(?:\{([^{}$]+)\}|([A-Za-z0-9*κν]+))", one, text)
+
+
+def _differential(token: str) -> bool:
+    """``dmu``, ``dphi``: the differential of a Greek variable."""
+    return token[0] == "d" and token[1:] in GREEK
+
+
 def _tex(token: str) -> str:
+    if _differential(token):
+        return "d" + _tex(token[1:])
     if token in _TEX:
         return _TEX[token]
-    if token in _SUPER:
-        return "^{" + _SUPER[token] + "}"
-    m = re.fullmatch(r"([A-Za-z][A-Za-z0-9]*)((?:[_^]\{?[A-Za-z0-9*]+\}?)*)('?)", token)
+    if all(ch in _SUPER for ch in token):
+        return "^{" + "".join(_SUPER[ch] for ch in token) + "}"
+    if token == "deg":
+        return r"^{\circ}"
+    if re.fullmatch(r"[A-Za-z]+\*", token):
+        return _tex(token[:-1]) + "^{*}"
+    m = re.fullmatch(r"([A-Za-z][A-Za-z0-9]*)((?:[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))*)('?)", token)
     if m and (m.group(2) or m.group(1) in GREEK or m.group(1) in FUNCTIONS):
         base = m.group(1)
         base = _TEX.get(base, "\\" + base if base in GREEK or base in FUNCTIONS else base)
-        scripts = re.sub(r"([_^])\{?([A-Za-z0-9*]+)\}?", lambda s: f"{s.group(1)}{{{s.group(2)}}}", m.group(2))
+        scripts = _scripts(m.group(2))
+        if m.group(3) and "^" in scripts:               # x_3^1': the prime joins the exponent
+            return base + scripts[:-1] + r"\prime}"
         return base + scripts + m.group(3)
-    if re.fullmatch(r"[_^]\{?[A-Za-z0-9*]+\}?", token):
-        return token[0] + "{" + token[1:].strip("{}") + "}"
+    if re.fullmatch(r"[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+)", token):
+        return _scripts(token)
     return token
 
 
@@ -139,7 +200,7 @@ def _attached(tokens: list) -> list:
     for i, (t, k, g) in enumerate(tokens):
         if k == "text" and g == "word" and len(t) <= 3:
             near = [tokens[j] for j in (i - 1, i + 1) if 0 <= j < len(tokens)]
-            if any(n[2] in ("operator", "index", "number") and n[0] not in "()" for n in near):
+            if any(n[2] in ("operator", "power", "index", "number") and n[0] not in "()" for n in near):
                 out[i] = (t, "weak", g)
     return out
 
@@ -160,11 +221,14 @@ def _typeset_plain(text: str) -> str:
         core = _trim(list(run))
         cut = _unmatched(core)
         if cut is not None:                      # a bracket the run does not close: the formula ends before it
-            rest = run[run.index(core[0]) + cut:]
-            run = run[:run.index(core[0]) + cut]
+            at = run.index(core[0]) + cut
+            bracket, rest = run[at][0], run[at + 1:] + [(t, "space") for t in tail]
+            run = run[:at]
             out.append("".join(lead))
             flush()
-            out.append("".join(t for t, _ in rest) + "".join(tail))
+            out.append(bracket)
+            run = rest                           # and the formula after it is one of its own
+            flush()
             return
         if core and (any(k == "strong" for _, k in core)
                      or any(k == "relation" for _, k in core) and len([k for _, k in core if k == "weak"]) >= 2):
@@ -205,3 +269,36 @@ def typeset(text: str) -> str:
         else:
             out.append(_typeset_plain(part))
     return "".join(out)
+
+
+# a name of the program: dotted (``symfloat.geometry.floating``, ``Body.cylinder``), or in a code span a word
+# of four letters or more, words joined by underscores or a slug (``crossing``, ``potential_slope``,
+# ``righting-moment-12``), with the word that says what it names
+_DOTTED = r"[A-Za-z_][A-Za-z0-9_]*(?:\.\n?[a-z_][A-Za-z0-9_]{2,})+"        # a line may break after a dot
+_PROGRAM = re.compile(rf"(?:(?:function|module|class|steps?|method)\s+)?"
+                      rf"(?:``?(?:{_DOTTED}|[A-Za-z]{{4,}}|[a-z]+(?:_[a-z]{{3,}})+|[a-z0-9]+(?:-[a-z0-9]+)+)``?"
+                      rf"|(?<![\w.`]){_DOTTED}(?![\w`]))")
+
+
+def _program_name(text: str) -> bool:
+    """Is *text* (a bracket's item) a name of the program, not mathematics (``Omega``) or words?"""
+    m = _PROGRAM.fullmatch(text.strip())
+    return m is not None and m.group(0).split()[-1].strip("`") not in GREEK + FUNCTIONS
+
+
+def without_program_names(text: str) -> str:
+    """*text* without the names of the program it cites (a module, a class, a function, a step): such a name
+    goes from the bracket that holds it, and a bracket left empty goes.
+
+    >>> without_program_names("clip the polyhedra (symfloat.geometry.floating) and the cylinder "
+    ...                        "(Body.cylinder, exact slices); (12) (section II, steps ``moment-12``, ``m-13``)")
+    'clip the polyhedra and the cylinder (exact slices); (12) (section II)'
+    """
+    def bracket(m: re.Match) -> str:
+        items = m.group(2).split(", ")
+        kept = [item for item in items if not _program_name(item)]
+        if len(kept) == len(items):
+            return m.group(0)
+        return f"{m.group(1)}({', '.join(kept)})" if kept else ""
+
+    return re.sub(r"(\s*)\(([^()]*)\)", bracket, text)

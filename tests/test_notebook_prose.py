@@ -1,0 +1,116 @@
+"""The words of the derivation notebooks (symfloat/report/prose.py): the ASCII mathematics of a derivation's
+notes, witnesses and errata typeset so that a Greek letter or a function is its sign, never its name set as
+italic letters, and the "About this section" text without the names of the program."""
+from __future__ import annotations
+
+import inspect
+import re
+
+import pytest
+
+from symfloat import registry
+from symfloat.model.symbol_names import GREEK
+from symfloat.registry import load
+from symfloat.report.notebook_view import reading_markdown
+from symfloat.report.prose import typeset, without_program_names
+
+# the names the site's browser test looks for as runs of italic letters in a formula (tests/test_site.py)
+_NAMES = sorted([g for g in GREEK if g[0].islower()] + ["sin", "cos", "tan", "cot", "tg", "log", "lim"],
+                key=len, reverse=True)
+_BARE = re.compile("(" + "|".join(_NAMES) + ")")
+_MATH = re.compile(r"\$\$(.+?)\$\$|\$([^$\n]+?)\$", re.S)
+
+
+def _bare_names(markdown: str) -> list[str]:
+    """The runs of letters in the formulas of *markdown* that spell a Greek letter or a function: what KaTeX
+    sets as italic letters once the commands and the upright words are set."""
+    found = []
+    for m in _MATH.finditer(markdown):
+        letters = re.sub(r"\\(?:text|operatorname|mathrm)\{[^{}]*\}|\\[A-Za-z]+", " ", m.group(1) or m.group(2))
+        found += [run for run in re.findall(r"[A-Za-z]+", letters) if _BARE.search(run)]
+    return found
+
+
+def test_the_check_sees_a_name_set_as_letters():
+    # what the Scheeffer VI.A-B and VI.C-F notebooks showed before (found by the browser test)
+    assert _bare_names(r"B = (M_xi, $M_{eta}$) and $\tan^{2} \varphi_{lim}$") == ["eta", "lim"]
+    assert _bare_names(r"$\int_{0}^{alpha} 2 \sin t\,dt$ and $I_{\text{rhomb}}$") == ["alpha"]
+    assert all(_DOUBLE.search(t) for t in ("y^{2}^{n}", "J_{1K}_{1}", "x_{3}^{1}'")) and not _DOUBLE.search("y^{2n}")
+
+
+@pytest.mark.parametrize("text, tex", [
+    ("B = (M_xi, M_eta, M_z)/V_t", r"$M_{\eta}$"),                    # Scheeffer VI.A-B, step righting-arm
+    ("S_omega = sin^2(45 deg + omega*)", r"$S_{\omega} = \sin^{2}(45 ^{\circ} + \omega^{*})$"),   # VI.C-F (78d)
+    ("(tan^2 phi_lim(45 deg) - tan^2 phi_1)/2", r"\varphi_{\lim}(45 ^{\circ})"),
+    ("= int_0^alpha 2 sin t (t - sin t) dt > 0", r"\int_{0}^{\alpha}"),
+    ("I_rhomb = ab^3/3", r"I_{\text{rhomb}}"),                        # Euler §§192-219, rhombus-twice: not rho·m·b
+    ("tg^2 phi_1 = -2 V_1 h_A / T_1", r"\operatorname{tg}^{2} \varphi_{1}"),     # Scheeffer's German tangent
+    ("dT_mu/dmu of the tensor", r"dT_{\mu}/d\mu"),                    # Scheeffer VII-VIII (108)
+    ("w = (cos phi, sin phi) in the plane", r"($\cos \varphi$, $\sin \varphi$)"),   # both, not only the second
+    # Scheeffer IX: an equation number is the source's, not a factor (read "6s(1-s)(123)" and "2(164a - 166)")
+    ("(a/b)^2 > 6s(1 - s) (123); cot^2 phi_3 = 2 (164a-166)", r"$(a/b)^{2} > 6s(1 - s)$ (123)"),
+    ("cot^2 phi_3 = 12(a/b)^2 s(1-s) - 2 (164a-166), and x = D/(2a)", r"- 2$ (164a-166), and $x = D/(2a)$"),
+    # Euler §§229-243 writes κ, ⁿ and braced exponents: one formula each, not pieces between words
+    ("x = a + Y ± a(1 − yⁿ/bⁿ)^κ", r"$x = a + Y \pm a(1 - y^{n}/b^{n})^{\kappa }$"),
+    ("Y = c_1 yⁿ/bⁿ + c_2 y²ⁿ/b²ⁿ", r"y^{2n}/b^{2n}$"),
+    ("y = b t^{1/n} turns it into b^{p+1}/n", r"$y = b t^{1/n}$"),
+    ("int_{1/2 - c}^{1/2} z dz = (c - c^2)/2", r"$\int_{1/2 - c}^{1/2} z dz"),       # Scheeffer X, moment-z
+    ("J_1K_1 and x_3^1'", r"$J_{1}K_{1}$ and $x_{3}^{1\prime}$"),                  # VII-VIII: no double index
+])
+def test_greek_names_and_functions_are_signs(text, tex):
+    shown = typeset(text)
+    assert tex in shown and not _bare_names(shown), shown
+
+
+def _texts(derivation: str):
+    """Every text of the derivation its notebook typesets: summary, assumptions, the About section, the notes
+    of steps and printed formulas, the errata's evidence and the witnesses' descriptions."""
+    d, module = load(derivation)
+    yield "about", without_program_names(inspect.cleandoc(module.__doc__ or ""))
+    yield "summary", d.summary
+    yield from (("assumption", a) for a in d.assumptions)
+    yield from ((f"step {s.name}", s.note) for s in d.steps if s.note)
+    yield from ((f"note {p.name}", p.note) for p in d.printed if p.note)
+    yield from ((f"erratum {p.name}", p.erratum.evidence) for p in d.printed
+                if p.erratum is not None and p.erratum.evidence)
+    yield from (("witness", w.description) for w in d.witnesses)
+
+
+# what TeX refuses: an index or exponent given twice (y^{2}^{n}, J_{1K}_{1}, x_{3}^{1}')
+_DOUBLE = re.compile(r"\^\{[^{}]*\}(?:\^|')|_\{[^{}]*\}_")
+
+
+@pytest.mark.parametrize("derivation", registry.ids())
+def test_no_formula_of_a_notebooks_words_spells_a_greek_letter(derivation):
+    shown = [(where, typeset(text)) for where, text in _texts(derivation)]
+    bad = [(where, _bare_names(text)) for where, text in shown if _bare_names(text)]
+    assert not bad, bad[:5]
+    double = [(where, m.group(0)) for where, text in shown for math in _MATH.finditer(text)
+              for m in [_DOUBLE.search(math.group(0))] if m]
+    assert not double, double[:5]
+
+
+def test_the_about_section_names_no_module_of_the_program():
+    # Scheeffer VI.A-B's About: "clip the real polyhedra (symfloat.geometry.floating) and float the real
+    # cylinder (Body.cylinder, quadrature of exact slices)"; IX's "(``crossing``)"; IV-V's steps by their slugs
+    about = without_program_names("clip the polyhedra (symfloat.geometry.floating) and float the cylinder "
+                                  "(Body.cylinder, quadrature of exact slices); to the water (``crossing``); "
+                                  "(12) (section II, module ``scheeffer-i-iii``, steps ``moment-13``); on (``Omega``)")
+    assert about == ("clip the polyhedra and float the cylinder (quadrature of exact slices); to the water; "
+                     "(12) (section II); on (``Omega``)")
+    for derivation in registry.ids():
+        text = without_program_names(inspect.cleandoc(load(derivation)[1].__doc__ or ""))
+        assert not re.search(r"symfloat\.|\(``[a-z]+_[a-z_]+``\)", text), derivation
+
+
+def test_an_inequality_read_as_an_equation_says_so():
+    # Hasáb's printed condition "rho^2 - rho + 1/6 > 0" is read as the equal signs of two margins, its remark's
+    # "... < rho_viz" as the bound R_u; a formula printed as an equation is "read as printed"
+    d, _ = load("hasab")
+    shown = {p.name: reading_markdown(d, p) for p in d.printed}
+    assert "The print states an inequality; it is read as the equation below" in shown["condition"]
+    assert "The print states an inequality" in shown["remark"]
+    said = {p.name for p in d.printed if "The print states an inequality" in shown[p.name]}
+    equations = {p.name for p in d.printed if p.reading is not None and not re.search(r"[<>]|\\[lg]eq?\b", p.excerpt)}
+    assert equations and not said & equations
+    assert all("Read as printed:" in shown[name] for name in said | equations)     # the site finds the reading there
