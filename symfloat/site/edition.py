@@ -35,7 +35,7 @@ from .typeset import typeset
 
 __all__ = ["MARKS", "EVIDENCE_WORDS", "mark_of", "badge", "quotes", "edition_page", "note", "formula_anchor",
            "cell_label", "notebook_anchor", "witness_line", "reason_of", "correction_html", "anchors", "citation_html",
-           "fault_words", "places"]
+           "fault_words", "places", "permalink"]
 
 # The marks of the edition, gravest first (a stretch quoted twice shows the first): mark -> (sign, words).
 # An erratum is a fault of the original or a correction of the transcription (docs/errata-kinds.md).
@@ -60,6 +60,12 @@ def mark_of(f: dict, records: Records) -> str:
 def badge(mark: str) -> str:
     sign, words = MARKS[mark]
     return f'<span class="badge v-{mark}"><span class="sign" aria-hidden="true">{sign}</span> {words}</span>'
+
+
+def permalink(anchor: str, label: str) -> str:
+    """A link to *anchor* on its own page, to copy and cite (as the DLMF gives each equation a permalink)."""
+    return (f'<a class="permalink" href="#{anchor}" title="a permanent link to {html.escape(label)} on this page: '
+            f'copy it to cite the place">¶</a>')
 
 
 def formula_anchor(fid: str) -> str:
@@ -186,7 +192,8 @@ def note(f: dict, records: Records, root: str, printed_html: str = "") -> str:
     cell = records.cells.get(f["id"])
     mark = mark_of(f, records)
     lines = [f'<details class="note v-{mark}" id="{formula_anchor(f["id"])}">',
-             f'<summary>{badge(mark)} {html.escape(f["locator"])}</summary>']
+             f'<summary>{badge(mark)} {html.escape(f["locator"])} {permalink(formula_anchor(f["id"]), f["locator"])}'
+             '</summary>']
     if erratum:
         lines.append(correction_html(erratum, printed_html))
     if f.get("reason"):
