@@ -234,20 +234,20 @@ d.quote("78c", "(78c)",
             "misprint", "medium",
             r"\left(\frac{a}{b}\right)^2 < \begin{cases} (1 - s)(7s - 1) & \text{für } s > \frac{1}{2} \\ "
             r"s(6 - 7s) & \text{für } s < \frac{1}{2} \end{cases}",
-            "(78c) is meant as the negation of the right half of (78a) (the text goes on: the prism can be turned "
-            "about its main axis only until a base face is cut), so its bounds must be those of (77)/(78a), "
-            "(1-s)(7s-1) for s > 1/2 and s(6-7s) for s < 1/2; the print attaches them to the opposite cases. "
-            "With the swap the condition is wrong, e.g. for s = 0.3 it gives the bound 0.77 instead of 1.17. "
-            "Both case labels are exchanged consistently, which a scan does not do; a misprint of the original "
-            "is the likelier cause (the scan cannot be excluded: medium).",
+            ("(78c) is meant as the negation of the right half of (78a) (the text goes on: the prism can be turned "
+             "about its main axis only until a base face is cut), so its bounds must be those of (77)/(78a), "
+             r"$(1-s)(7s-1)$ for $s > \tfrac12$ and $s(6-7s)$ for $s < \tfrac12$; the print attaches them to the "
+             "opposite cases. With the swap the condition is wrong, e.g. for $s = 0.3$ it gives the bound $0.77$ "
+             "instead of $1.17$. Both case labels are exchanged consistently, which a scan does not do; a misprint "
+             "of the original is the likelier cause (the scan cannot be excluded: medium)."),
             corrected_reading=(PW((1 - s) * (7 * s - 1), s * (6 - 7 * s)) - (a / b) ** 2, -Q77_sign),
                         objection="(78c) may be meant as printed, as a condition of its own for the second-region "
                                   "case rather than the negation of (78a)'s right half.",
-                        answer="The text goes on that the prism can be turned about its main axis only until a base "
-                               "face is cut, which is the negation of (78a); its bounds are those of (77)/(78a) with"
-                               " the cases as there, and the printed attachment gives at s = 0.3 the bound 0.77 "
-                               "instead of 1.17. Both labels exchanged together is no glyph fault of the scan; "
-                               "medium, since the transcriber may have set the cases in the wrong order."))
+                        answer=("The text goes on that the prism can be turned about its main axis only until a base "
+                                "face is cut, which is the negation of (78a); its bounds are those of (77)/(78a) "
+                                "with the cases as there, and the printed attachment gives at $s = 0.3$ the bound "
+                                "$0.77$ instead of $1.17$. Both labels exchanged together is no glyph fault of the "
+                                "scan; medium, since the transcriber may have set the cases in the wrong order.")))
 d.quote("78c-turn", "(78c)",
         "so kann das Prisma in der schiefen stabilen Lage nur soweit um die Hauptachse gedreht werden, bis eine der "
         "Grundflächen den Wasserspiegel durchschneidet.",
@@ -391,15 +391,17 @@ d.quote("81a", "(81a)", r"$$\operatorname{tg}^2 \varphi_1 = 2 \cdot \left\{ b s 
         reading=(tan2c, 2 * (b * s * (1 - s) - 1)),
         erratum=Erratum(
             "transcription", "high", r"\operatorname{tg}^2 \varphi_1 = 2 \cdot \left\{ 6 s (1 - s) - 1 \right\}",
-            r"(78b) with a = b gives $\tan^2\varphi_1 = 12 s(1-s) - 2 = 2\{6 s(1-s) - 1\}$. The printed 'b' makes the "
-            "formula depend on a length, which a cube's angle cannot; 'b' for '6' is a typical confusion of the "
-            "scan, and the same 'b s (1 - s) - 1' recurs in (82), where $6s(1-s) - 1$ is again required.",
+            (r"(78b) with $a = b$ gives $\tan^2\varphi_1 = 12 s(1-s) - 2 = 2\{6 s(1-s) - 1\}$. The printed '$b$' "
+             "makes the formula depend on a length, which a cube's angle cannot; '$b$' for '$6$' is a typical "
+             "confusion of the scan, and the same '$b s (1 - s) - 1$' recurs in (82), where $6s(1-s) - 1$ is again "
+             "required."),
             corrected_reading=(tan2c, 2 * (6 * s * (1 - s) - 1)),
-                        objection="b may be the prism's height, kept by the author in a formula written for the cube"
-                                  " before setting a = b.",
-                        answer="(78b) with a = b gives 12 s(1 - s) - 2 = 2{6 s(1 - s) - 1}, free of lengths; an "
-                               "angle of the cube cannot depend on its size, and (82) needs the same 6 (its value "
-                               "1/2 at s = 1/2 follows only with it). b for 6 is the scan's usual confusion."))
+                        objection=("$b$ may be the prism's height, kept by the author in a formula written for the "
+                                   "cube before setting $a = b$."),
+                        answer=(r"(78b) with $a = b$ gives $12 s(1 - s) - 2 = 2\{6 s(1 - s) - 1\}$, free of lengths; "
+                                "an angle of the cube cannot depend on its size, and (82) needs the same $6$ (its "
+                                r"value $\tfrac12$ at $s = \tfrac12$ follows only with it). $b$ for $6$ is the scan's "
+                                "usual confusion.")))
 d.quote("edge-axis-range", "VI.D",
         "zwischen 0,2265 und 0,7735,  \n so gelangt er ebenfalls aus der labilen aufrechten Lage in eine schiefe "
         "stabile (die auch aus Gleichung 81 zu bestimmen ist), wenn die Drehungsachse entweder mit einer Grundkante "
