@@ -17,6 +17,7 @@ from pathlib import Path
 from urllib.parse import unquote, urlsplit
 
 import pytest
+from PIL import Image
 
 pytest.importorskip("sphinx", reason="the site extra is not installed (pip install 'symfloat[site]')")
 pytest.importorskip("myst_nb", reason="the site extra is not installed (pip install 'symfloat[site]')")
@@ -446,17 +447,24 @@ def test_every_page_in_headless_chromium(site):
         note = f"#{formula_anchor('scheeffer-vi-cf/78c')}"
         page.locator(f'a.q[href="{note}"]').first.click()
         page.wait_for_function("id => document.getElementById(id).open", arg=note[1:], timeout=5000)
-        shots = [(page, "site-edition-scheeffer.png")]
-        page.locator(f'a.q[href="{note}"]').first.scroll_into_view_if_needed()
-        page.evaluate("window.scrollBy(0, -120)")
-        erratum = browser.new_page(viewport={"width": 1400, "height": 900})
-        erratum.goto((site / "errata" / "scheeffer-81a-1.html").as_uri())
-        shots.append((erratum, "site-erratum.png"))
-        narrow = browser.new_page(viewport={"width": 420, "height": 900})
-        narrow.goto((site / "edition" / "scheeffer.html").as_uri() + f"#{formula_anchor('scheeffer-vi-cf/81a')}")
-        shots.append((narrow, "site-edition-scheeffer-420.png"))
+        # screenshots for the README at 1400 and 420 px: the home page, the Scheeffer edition with the note
+        # of (78c) opened from its mark, an erratum's page and a notebook
         folder = DOCS / "figures" if os.environ.get("SYMFLOAT_SCREENSHOTS") else site.parent
-        for shot, name in shots:
-            shot.screenshot(path=str(folder / name))
-            assert (folder / name).stat().st_size > 20_000
+        for width, suffix in ((1400, ""), (420, "-420")):
+            for name, path in (("home", "index.html"), ("edition-scheeffer", "edition/scheeffer.html"),
+                               ("erratum", "errata/scheeffer-81a-1.html"), ("notebook", "notebooks/scheeffer-vi-cf.html")):
+                shot = browser.new_page(viewport={"width": width, "height": 900})
+                shot.goto((site / path).as_uri(), wait_until="load")
+                if name == "edition-scheeffer":
+                    shot.locator(f'a.q[href="{note}"]').first.click()
+                    shot.wait_for_function("id => document.getElementById(id).open", arg=note[1:], timeout=5000)
+                    shot.evaluate("id => document.getElementById(id).scrollIntoView()", note[1:])
+                    shot.evaluate("window.scrollBy(0, -160)")
+                file = folder / f"site-{name}{suffix}.png"
+                shot.screenshot(path=str(file))
+                assert file.stat().st_size > 20_000
+                if os.environ.get("SYMFLOAT_SCREENSHOTS"):      # the README's copies: 256 colours, tens of KB each
+                    Image.open(file).convert("RGB").quantize(256, method=Image.Quantize.MEDIANCUT,
+                                                             dither=Image.Dither.NONE).save(file, optimize=True)
+                shot.close()
         browser.close()

@@ -178,10 +178,10 @@ d.quote("pythagoras", "§205", r"erit tt + uu $= xx + yy$", reading=Eq(t ** 2 + 
 d.quote("sine", "§205", r"$\frac{xy+yt}{xx+yy} = m$", reading=Eq((x * y + y * t) / (x ** 2 + y ** 2), m),
         erratum=Erratum(
             "transcription", "medium", r"\frac{xu+yt}{xx+yy} = m",
-            "With t = nx + my, u = mx - ny (printed next) x u + y t = m(x^2 + y^2), whereas x y + y t is not "
-            "m(x^2 + y^2) (counterexample below). The companion formula (xt - yu)/(xx+yy) = n is printed "
-            "correctly with u; a u read as y by the OCR (the letters are close in the italic of 1749). A "
-            "printer's slip cannot be excluded from the transcription alone, hence medium.",
+            ("With $t = nx + my$, $u = mx - ny$ (printed next) $x u + y t = m(x^2 + y^2)$, whereas $x y + y t$ is "
+             "not $m(x^2 + y^2)$ (counterexample below). The companion formula $(xt - yu)/(xx+yy) = n$ is printed "
+             "correctly with $u$; a $u$ read as $y$ by the OCR (the letters are close in the italic of 1749). A "
+             "printer's slip cannot be excluded from the transcription alone, hence medium."),
             corrected_reading=Eq((x * u + y * t) / (x ** 2 + y ** 2), m),
                         objection="The y for u may be the print's, a compositor's italic y for u, or Euler's own "
                                   "slip in a line he then solves correctly; nothing shows the scan read it.",
@@ -283,17 +283,17 @@ d.quote("centroid", "§215", r"$Ce = \frac{ce(Bc^2 - Ac^2)}{3 AB \cdot ce} = \fr
         reading=(Ce, b * (c ** 2 - a ** 2) / (3 * (a + c) * b), (c - a) / 3),
         erratum=Erratum(
             "transcription", "medium", r"Cc = \frac{ce(Bc^2 - Ac^2)}{3 AB \cdot ce} = \frac{Bc - Ac}{3}",
-            "The quantity solved for is the distance Cc between the centroid C and the foot c of the "
-            "breadth ef (§217 ends with L - 2D·Cc^2, §218 uses it as the distance of EF from ef). Ce, the "
-            "distance from C to the vertex e, is sqrt(Cc^2 + ce^2), not (Bc - Ac)/3. An italic c read as e, "
-            "as in D·Ce^2/4 of §218 ('quad-K').",
+            ("The quantity solved for is the distance Cc between the centroid C and the foot c of the breadth ef "
+             r"(§217 ends with $L - 2D \cdot Cc^2$, §218 uses it as the distance of EF from ef). Ce, the distance "
+             r"from C to the vertex e, is $\sqrt{Cc^2 + ce^2}$, not $(Bc - Ac)/3$. An italic c read as e, as in $D "
+             r"\cdot Ce^2/4$ of §218."),
             corrected_reading=(Cc, b * (c ** 2 - a ** 2) / (3 * (a + c) * b), (c - a) / 3),
-                        objection="Ce stands again in §218 (D·Ce^2/4), so the letter may be the print's, Euler "
-                                  "naming the distance by a letter of the lost fig. 2.",
-                        answer="e is a vertex of the figure (ce = b in §216), and Ce, from C to it, is the square "
-                               "root of Cc^2 + ce^2, not (Bc - Ac)/3, so no lettering of the figure makes the print "
-                               "right; §217 names the distance Cc, and c read as e is a confusion of the scan. The "
-                               "print cannot be seen: medium."),
+                        objection=(r"Ce stands again in §218 ($D \cdot Ce^2/4$), so the letter may be the print's, "
+                                   "Euler naming the distance by a letter of the lost fig. 2."),
+                        answer=("e is a vertex of the figure ($ce = b$ in §216), and Ce, from C to it, is the square "
+                                "root of $Cc^2 + ce^2$, not $(Bc - Ac)/3$, so no lettering of the figure makes the "
+                                "print right; §217 names the distance Cc, and c read as e is a confusion of the "
+                                "scan. The print cannot be seen: medium.")),
         note=claim("the centroid C lies at the distance Cc = (Bc − Ac)/3 from c, towards the longer part."))
 
 integral_step("quad-I", Ik, kite(y ** 2),
@@ -325,15 +325,15 @@ d.quote("Ace-cubes", "§216", r"$\int y^2 dx = \frac{ab^3}{4}$",
         reading=(sp.Integral(h1 ** 2, (x, 0, a)), a * b ** 3 / 4),
         erratum=Erratum(
             "transcription", "low", r"\int y^3 dx = \frac{ab^3}{4}",
-            "With y = bx/a, ∫_0^a y^2 dx = ab^2/3, while ∫_0^a y^3 dx = ab^3/4, and a third of it is the "
-            "printed moment ab^3/12 of the next line (the moment of a quadrant about AB is (1/3)∫y^3dx, "
-            "§211). The exponent 3 read as 2, or a misprint of 1749: the transcription cannot tell, low.",
+            (r"With $y = bx/a$, $\int_0^a y^2 dx = ab^2/3$, while $\int_0^a y^3 dx = ab^3/4$, and a third of it is "
+             r"the printed moment $ab^3/12$ of the next line (the moment of a quadrant about AB is $\tfrac13\int y^3 "
+             "dx$, §211). The exponent 3 read as 2, or a misprint of 1749: the transcription cannot tell, low."),
             corrected_reading=(sp.Integral(h1 ** 3, (x, 0, a)), a * b ** 3 / 4),
-                        objection="The exponent 2 may be the print's, Euler's pen or the compositor dropping the 3 "
-                                  "of §214's ∫y^3dx.",
-                        answer="The value ab^3/4 and the moment ab^3/12 of the next line need ∫y^3dx, as §214 has "
-                               "it, so the correction stands; a 3 read as 2 and a 3 set as 2 cannot be told apart, "
-                               "hence low."),
+                        objection=("The exponent 2 may be the print's, Euler's pen or the compositor dropping the 3 "
+                                   r"of §214's $\int y^3 dx$."),
+                        answer=(r"The value $ab^3/4$ and the moment $ab^3/12$ of the next line need $\int y^3 dx$, as "
+                                "§214 has it, so the correction stands; a 3 read as 2 and a 3 set as 2 cannot be "
+                                "told apart, hence low.")),
         note=claim("for the triangle Ace, with PM = bx/a, ∫y³dx = ab³/4."))
 d.quote("Ace-I", "§216", r"$= \frac{ab^3}{12}$", reading=(IAce, a * b ** 3 / 12),
         note=claim("the triangle Ace has the moment ab³/12 about AB."))
@@ -351,17 +351,17 @@ d.quote("quad-L", "§216", r"$= \frac{a^3 b + c^3 b}{6} = \frac{D(ac + bc + cc)}
         reading=(Lk, (a ** 3 * b + c ** 3 * b) / 6, Dk * (a * c + b * c + c * c) / 3),
         erratum=Erratum(
             "transcription", "low", r"= \frac{a^3 b + c^3 b}{6} = \frac{D(aa - ac + cc)}{3}",
-            "(a^3 + c^3) b/6 = (a + c) b (a^2 - ac + c^2)/6 = D(a^2 - ac + c^2)/3 with 2D = (a + c) b. §218 "
-            "quotes this very result as D(aa-ac+cc)/3, so Euler had it right; 'ac + bc + cc' is a garbled "
-            "'aa - ac + cc' (a letter and a sign lost).",
+            ("$(a^3 + c^3) b/6 = (a + c) b (a^2 - ac + c^2)/6 = D(a^2 - ac + c^2)/3$ with $2D = (a + c) b$. §218 "
+             "quotes this very result as $D(aa-ac+cc)/3$, so Euler had it right; '$ac + bc + cc$' is a garbled '$aa "
+             "- ac + cc$' (a letter and a sign lost)."),
             corrected_reading=(Lk, (a ** 3 * b + c ** 3 * b) / 6, Dk * (a * a - a * c + c * c) / 3),
                         objection="'ac + bc + cc' differs from 'aa - ac + cc' by a letter and a sign: two changes "
                                   "are more than one glyph the scan confuses, and a compositor may have garbled the "
                                   "line.",
-                        answer="Euler had it right: (a^3 + c^3)b/6 = D(aa - ac + cc)/3 with 2D = (a + c)b, and §218 "
-                               "quotes the result so. But a letter and a sign changed together are no single "
-                               "confusion of the scan, and nothing in the text tells the compositor's garble from "
-                               "the scan's: lowered to low."),
+                        answer=("Euler had it right: $(a^3 + c^3)b/6 = D(aa - ac + cc)/3$ with $2D = (a + c)b$, and "
+                                "§218 quotes the result so. But a letter and a sign changed together are no single "
+                                "confusion of the scan, and nothing in the text tells the compositor's garble from "
+                                "the scan's: lowered to low.")),
         note=claim("the whole quadrilateral has the moment (a³b + c³b)/6 = D(a² − ac + c²)/3 about ef."))
 
 # ================================================================ §217: parallel axes (generic figure)
@@ -412,10 +412,9 @@ d.quote("Cc-again", "§218", r"$Cb = \frac{c-a}{3}$",
         unreadable="Cb names no distance of Tab. IX fig. 2: b is the length ce (§216), the figure has no point b",
         erratum=Erratum(
             "transcription", "low", r"Cc = \frac{c-a}{3}",
-            "The distance of the true latitudinal axis EF from ef is Cc, from the centroid C to the foot c of "
-            "ef: Cc = (Bc - Ac)/3 = (c - a)/3 (§215), and §217's rule L - 2D·Cc^2 is what the paragraph "
-            "applies next. The 'Cb' for Cc of the centroid equation of §215 ('centroid-equation'), read so by "
-            "the scan at this place too.",
+            ("The distance of the true latitudinal axis EF from ef is Cc, from the centroid C to the foot c of ef: "
+             r"$Cc = (Bc - Ac)/3 = (c - a)/3$ (§215), and §217's rule $L - 2D \cdot Cc^2$ is what the paragraph "
+             "applies next. The 'Cb' for Cc of the centroid equation of §215, read so by the scan at this place too."),
             corrected_reading=(Cc, (c - a) / 3), same_as="euler-192-219/centroid-equation",
                         objection="As at §215: Cb twice is the print's letter, not the scan's.",
                         answer="The distance of EF from ef is Cc = (c - a)/3 and §217's rule, applied next, writes "
@@ -430,16 +429,17 @@ d.quote("quad-K", "§218",
         erratum=Erratum(
             "transcription", "medium",
             r"= \frac{D \cdot AB^2}{12} + \frac{D \cdot Cc^2}{4}",
-            "D(c-a)^2/36 = D·Cc^2/4 with Cc = (c-a)/3; Ce (C to the vertex e) would add D·ce^2/4. The same "
-            "c read as e as in 'centroid' (Ce = (Bc - Ac)/3 of §215); all other members are right.",
+            (r"$D(c-a)^2/36 = D \cdot Cc^2/4$ with $Cc = (c-a)/3$; Ce (C to the vertex e) would add $D \cdot ce^2/4$. "
+             "The same c read as e as in the centroid's distance ($Ce = (Bc - Ac)/3$ of §215); all other members are "
+             "right."),
             corrected_reading=(K, Dk * (a * a - a * c + c * c) / 3 - 2 * Dk * (c - a) ** 2 / 9,
                                Dk * (a * a + a * c + c * c) / 9, Dk * (a + c) ** 2 / 12 + Dk * (c - a) ** 2 / 36,
                                Dk * (a + c) ** 2 / 12 + Dk * Cc ** 2 / 4), same_as="euler-192-219/centroid",
                         objection="As in §215, Ce may be the print's letter; or Euler may mean the distance to the "
                                   "vertex e.",
-                        answer="The member before, D(c - a)^2/36, is D·Cc^2/4 exactly, and with Ce the last member "
-                               "would add D·ce^2/4 to a chain of equal members; the same c read as e as in §215, and"
-                               " the print cannot be seen: medium."),
+                        answer=(r"The member before, $D(c - a)^2/36$, is $D \cdot Cc^2/4$ exactly, and with Ce the "
+                                r"last member would add $D \cdot ce^2/4$ to a chain of equal members; the same c read "
+                                "as e as in §215, and the print cannot be seen: medium.")),
         note=claim("by the rule of §217 the moment about EF is D(a² + ac + c²)/9 = D·AB²/12 + D·Cc²/4, larger "
                    "than for equal parts Ac = Bc."))
 
@@ -499,8 +499,8 @@ d.quote("moment-PQ-sine", "§208", r"$= l - m^2 (I - K)$",
         reading=(PS, l - m ** 2 * (Ik - K)),
         erratum=Erratum(
             "transcription", "high", r"= I - m^2 (I - K)",
-            "n^2 I + m^2 K with n^2 = 1 - m^2 is I - m^2 (I - K); the print's 'l' is the capital I read as a "
-            "lower-case l (the same letter in (l+K)/2 below; m = 0 gives I, as the text says).",
+            ("$n^2 I + m^2 K$ with $n^2 = 1 - m^2$ is $I - m^2 (I - K)$; the print's 'l' is the capital I read as a "
+             "lower-case l (the same letter in $(l+K)/2$ below; $m = 0$ gives $I$, as the text says)."),
             corrected_reading=(PS, Ik - m ** 2 * (Ik - K)),
                         objection="A compositor's lower-case l for the capital I is a slip of the print as well; and"
                                   " the same l stands twice in the paragraph, a repeat the criteria give to the "
@@ -515,10 +515,11 @@ d.quote("half-right", "§208", r"$m = \frac{1}{\sqrt{2}}$", reading=as_printed(l
 d.quote("moment-45", "§208", r"$= \frac{l+K}{2}$", reading=(P45, (l + K) / 2),
         erratum=Erratum(
             "transcription", "high", r"= \frac{I+K}{2}",
-            "I - (1/2)(I - K) = (I + K)/2, 'the arithmetic mean between the moments about the principal "
-            "axes' as the text says; 'l' is the I read as l, as in l - m^2(I - K) above.",
+            (r"$I - \tfrac12(I - K) = (I + K)/2$, 'the arithmetic mean between the moments about the principal axes' "
+             "as the text says; 'l' is the I read as l, as in $l - m^2(I - K)$ above."),
             corrected_reading=(P45, (Ik + K) / 2),
-                        objection="As above: the l may be the compositor's, and it repeats the l of l - m^2(I - K).",
+                        objection=("As above: the l may be the compositor's, and it repeats the l of $l - m^2(I - "
+                                   "K)$."),
                         answer="The text calls the value the arithmetic mean of the moments about the principal "
                                "axes, which are I and K, and I - (1/2)(I - K) = (I + K)/2; the scan reads the same "
                                "capital I as l at both places, while the print's I stands in (I - K) between them. "
@@ -666,20 +667,20 @@ d.quote("rhombus-twice", "§214",
             "the rhombus (4ab^3/3 against ab^3/3); the factor two (divisor 6 against 12) holds only at "
             "equal area 2D, which a rectangle and a rhombus of the same length and breadth do not have "
             "(4ab against 2ab).",
-            "Integrating over both figures with AC = a, CE = b: I_rect = 4ab^3/3, I_rhomb = ab^3/3, "
-            "K_rect = 4a^3b/3, K_rhomb = a^3b/3. Euler compared the coefficients of EF^2 D and AB^2 D and "
-            "forgot that D itself doubles; a wrong conclusion, not a misprint.",
+            (r"Integrating over both figures with $AC = a$, $CE = b$: $I_{\text{rect}} = 4ab^3/3$, $I_{\text{rhomb}} "
+             r"= ab^3/3$, $K_{\text{rect}} = 4a^3b/3$, $K_{\text{rhomb}} = a^3b/3$. Euler compared the coefficients "
+             "of $EF^2 D$ and $AB^2 D$ and forgot that $D$ itself doubles; a wrong conclusion, not a misprint."),
             corrected_reading=Eq(sp.Matrix([Ire / Irh, Kre / Krh]), sp.Matrix([4, 4])),
                         objection="Euler compares the formulas, as he says ('hic diuisum erat per 6, hic vero per "
                                   "12') and again in §219 ('excepto solo denominatore'), and §212 puts the area into"
                                   " the moment so that it can be divided by the displaced volume: per unit of area, "
                                   "which is what enters the stability, the rectangle's moment is indeed twice the "
                                   "rhombus's at the same length and breadth.",
-                        answer="The sentence says 'momenta' and keeps the length and the breadth, not the area, and "
-                               "on Euler's own values (4ab^3/3 in §213, ab^3/3 in §214) the moments are in the ratio"
-                               " four; the factor two needs the same area 2D, which the two figures do not have (4ab"
-                               " against 2ab). The reading per unit of area is left as one alternative: high -> "
-                               "medium."),
+                        answer=("The sentence says 'momenta' and keeps the length and the breadth, not the area, and "
+                                "on Euler's own values ($4ab^3/3$ in §213, $ab^3/3$ in §214) the moments are in the "
+                                "ratio four; the factor two needs the same area $2D$, which the two figures do not "
+                                "have ($4ab$ against $2ab$). The reading per unit of area is left as one "
+                                r"alternative: high $\to$ medium.")),
         note=claim("keeping the same length and breadth, the rectangle's moments are twice the rhombus'."))
 d.quote("rhombus-K", "§214", r"EF erit $= \frac{AB^2 \cdot D}{12}$", reading=(Krh, (2 * a) ** 2 * Drh / 12),
         note=claim("about EF it is AB²·D/12: the denominators 12 instead of the rectangle's 6."))
@@ -714,15 +715,15 @@ d.quote("ellipse-quadrant-K", "§219",
 d.quote("ellipse-quadrant-area", "§219", r"elliptici ACE = $\frac{\pi}{4}$", reading=(Aq, sp.pi / 4),
         erratum=Erratum(
             "transcription", "low", r"= \frac{\pi ab}{4} = \frac{D}{2}",
-            "b∫_0^a sqrt(1 - x^2/a^2) dx = pi ab/4 is the quadrant's area; the next line (moment a^2 D/8 = "
-            "(a^2/4)(D/2)) uses the quadrant area D/2 = pi ab/4. The factor ab (or the D/2 Euler may have "
-            "written) is missing from the transcription; what the print had cannot be told, low.",
+            (r"$b\int_0^a \sqrt{1 - x^2/a^2}\, dx = \pi ab/4$ is the quadrant's area; the next line (moment $a^2 D/8 "
+             r"= (a^2/4)(D/2)$) uses the quadrant area $D/2 = \pi ab/4$. The factor $ab$ (or the $D/2$ Euler may have "
+             "written) is missing from the transcription; what the print had cannot be told, low."),
             corrected_reading=(Aq, sp.pi * a * b / 4, Del / 2),
                         objection="π/4 may be what Euler printed, the quadrant of a unit circle, or with the factor "
                                   "ab written on the line before.",
-                        answer="The sentence names the area of the elliptic quadrant ACE, and the next member a^2D/8"
-                               " = (a^2/4)(D/2) uses it as πab/4 = D/2, so the factor is needed; whether the print "
-                               "or the scan lost it cannot be told: low stands."),
+                        answer=("The sentence names the area of the elliptic quadrant ACE, and the next member "
+                                r"$a^2D/8 = (a^2/4)(D/2)$ uses it as $\pi ab/4 = D/2$, so the factor is needed; "
+                                "whether the print or the scan lost it cannot be told: low stands.")),
         note=claim("b∫dx√(1 − x²/a²) is the area of the elliptic quadrant ACE, πab/4 = D/2."))
 d.quote("ellipse-quadrant-moment", "§219", r"erit = $\frac{a^2 D}{8}$", reading=(Kq, a ** 2 * Del / 8),
         note=claim("hence the quadrant's moment about EF is a²D/8."))

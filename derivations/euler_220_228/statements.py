@@ -384,15 +384,16 @@ d.quote("Aa-Ace-expanded", "§224",
         erratum=Erratum(
             "transcription", "high",
             r"\ldots + \frac{a}{b} \int \frac{yy\,dy\,(a+Y)^2}{\sqrt{bb-yy}} - \ldots",
-            "The fourth integral comes from (a/b)·y·y dy/√(bb-yy) times (a+Y)²: ∫yy dy (a+Y)²/√(bb-yy), "
-            "printed so for Bce in the same paragraph. 'yy^2 y' has no differential and reads as y⁴: the "
-            "'dy' garbled into '^2 y'. The other five terms are right.",
+            (r"The fourth integral comes from $(a/b) \cdot y \cdot y\, dy/\sqrt{bb-yy}$ times $(a+Y)^2$: $\int yy\, "
+             r"dy\, (a+Y)^2/\sqrt{bb-yy}$, printed so for Bce in the same paragraph. '$yy^2 y$' has no differential "
+             "and reads as $y^4$: the '$dy$' garbled into '${}^2 y$'. The other five terms are right."),
             corrected_reading=(KAce, six_terms(-1, False)),
                         objection="The slip may be the print's: a compositor setting the fourth integrand wrongly in"
                                   " one place.",
-                        answer="'yy^2 y' is a superscript 2 where the d of 'dy' stands, a glyph the scan confuses, "
-                               "not a sort a compositor would take; the same integral is printed right for Bce in "
-                               "the same paragraph, and §225 carries it on as ∫yydy(a+Y)²/√(bb-yy) with 2a/b. High."),
+                        answer=("'$yy^2 y$' is a superscript 2 where the d of 'dy' stands, a glyph the scan "
+                                "confuses, not a sort a compositor would take; the same integral is printed right "
+                                r"for Bce in the same paragraph, and §225 carries it on as $\int "
+                                r"yy\,dy\,(a+Y)^2/\sqrt{bb-yy}$ with $2a/b$. High.")),
         note=claim("the moment of Ace about aAa is the sum of the six integrals, taken from y = 0 to b "
                    "(the excerpt continues the product quoted above)."))
 d.quote("Aa-Bce-expanded", "§224",
@@ -749,11 +750,11 @@ d.quote("middle-named-C", "§228", r"a punto axis AB medio C distet",
         reading=(ACc, sp.Subs((xLc + xRc) / 2, y, 0)),
         erratum=Erratum(
             "transcription", "medium", r"\text{a puncto axis AB medio } O \text{ distet}",
-            "The midpoint of AB is O (§220: 'existente O puncto axis longitudinalis medio'; the same paragraph "
-            "ends 'a medio punto longitudinis O'), at AO = a; C is the centroid of the figure, at AC = a - c/4 "
-            "(§227), which is not the midpoint for c > 0: read as printed, C would be the midpoint of AB, "
-            "(x_A + x_B)/2 at y = 0. The moment AB²D/8 + ccD/8 grows with Oc = c, the distance of ef from O. "
-            "O and C are alike in the scan; medium.",
+            ("The midpoint of AB is O (§220: 'existente O puncto axis longitudinalis medio'; the same paragraph ends "
+             "'a medio punto longitudinis O'), at $AO = a$; C is the centroid of the figure, at $AC = a - c/4$ "
+             "(§227), which is not the midpoint for $c > 0$: read as printed, C would be the midpoint of $AB$, $(x_A "
+             "+ x_B)/2$ at $y = 0$. The moment $AB^2 D/8 + ccD/8$ grows with $Oc = c$, the distance of ef from O. O "
+             "and C are alike in the scan; medium."),
             corrected_reading=(sp.Subs((xLc + xRc) / 2, y, 0), a),
                         objection="Read with C the sentence is still true: ef stands at 3c/4 from the centroid C (AC"
                                   " = a - c/4, Ac = a - c), and the moment a²D/2 + c²D/8 grows with that distance "

@@ -201,41 +201,43 @@ d.quote("chord", "§229", "erit ergo $Mm =$\n $2a\\left(1 - \\frac{y^n}{b^n}\\ri
                         objection="The exponent is printed x in all seven formulas of §229–230 and never κ there; a "
                                   "letter that runs the same way through two paragraphs may be Euler's own in the "
                                   "print (κ first named in §231), not a glyph the scan lost once.",
-                        answer="The same sentence defines AP = x, and Euler would not give the exponent the letter "
-                               "of the abscissa in the very equation that defines it (x = a + Y − a(…)^x = AP); §231"
-                               " speaks of κ as a letter already in play ('et κ denotet vel numerum integrum vel "
-                               "fractum'), and §232–236 print κ where these formulas return. The old kappa ϰ has the"
-                               " shape of an x, a glyph the scan confuses, and one misread glyph repeats on "
-                               "consecutive lines: high."),
+                        answer=("The same sentence defines $AP = x$, and Euler would not give the exponent the "
+                                "letter of the abscissa in the very equation that defines it ($x = a + Y - "
+                                r"a(\dots)^x = AP$); §231 speaks of $\kappa$ as a letter already in play ('et "
+                                r"$\kappa$ denotet vel numerum integrum vel fractum'), and §232–236 print $\kappa$ "
+                                r"where these formulas return. The old form of the letter, $\varkappa$, has the shape of an $x$, a "
+                                "glyph the scan confuses, and one misread glyph repeats on consecutive lines: high.")),
         note=claim("the chord between the two portions is Mm = 2a(1 − yⁿ/bⁿ)^κ."))
 d.quote("area", "§229", r"area AEB prodibit $= 2a \int dy \left(1 - \frac{y^n}{b^n}\right)^x = D$",
         reading=(D, 2 * a * J(0, xk)),
         erratum=Erratum("transcription", "high", r"= 2a \int dy \left(1 - \frac{y^n}{b^n}\right)^\kappa = D",
                         "x for κ, as in the chord Mm.", corrected_reading=(D, 2 * a * J(0, k)),
                         objection="As for the chord: x may be the print's letter for the exponent in §229–230.",
-                        answer="D = 2a∫dy(1 − yⁿ/bⁿ)^κ returns with κ in §231 ('∫dy(1 − yⁿ/bⁿ)^κ = D/2a') and §233 "
-                               "('= ND/2a'), and x is the abscissa AP of the same sentence; the ϰ read as x, high."),
+                        answer=(r"$D = 2a\int dy\, (1 - y^n/b^n)^\kappa$ returns with $\kappa$ in §231 ('$\int dy\, "
+                                r"(1 - y^n/b^n)^\kappa = D/2a$') and §233 ('$= ND/2a$'), and $x$ is the abscissa AP "
+                                r"of the same sentence; the $\varkappa$ read as $x$, high.")),
         note=claim("the area of AEB is D = 2a∫dy(1 − yⁿ/bⁿ)^κ, whatever Y (the chord does not contain Y)."))
 
 KAPPA_AS_X = "euler-229-243/chord"
 d.quote("portion-Ace", "§229", r"$x = a + Y - a\left(1 - \frac{y^n}{b^n}\right)^x = AP$",
         reading=(XA, a + Ys - a * Rx),
         erratum=Erratum("transcription", "high", r"x = a + Y - a\left(1 - \frac{y^n}{b^n}\right)^\kappa = AP",
-                        "The exponent of the family is κ (§231–236 print it and tabulate κ = 1/2, 1, 3/2, …); x is "
-                        "the abscissa AP itself and cannot be its own exponent. Only with κ in both portions is "
-                        "Ap − AP the chord Mm = 2a(1 − yⁿ/bⁿ)^κ the text derives next. The Greek κ read as x, the "
-                        "fault booked at the chord Mm ('chord').",
+                        (r"The exponent of the family is $\kappa$ (§231–236 print it and tabulate $\kappa = \tfrac12, "
+                         r"1, \tfrac32, \dots$); $x$ is the abscissa $AP$ itself and cannot be its own exponent. Only "
+                         r"with $\kappa$ in both portions is $Ap - AP$ the chord $Mm = 2a(1 - y^n/b^n)^\kappa$ the "
+                         r"text derives next. The Greek $\kappa$ read as $x$, the fault booked at the chord $Mm$."),
                         corrected_reading=(XA, a + Ys - a * R), same_as=KAPPA_AS_X,
                         objection="As for the chord: x may be the print's letter for the exponent.",
-                        answer="Here x stands on both sides of one equation (x = … (…)^x = AP), which Euler would "
-                               "not write for an explicit curve; §231 and §236 treat κ as the exponent of these "
-                               "portions (cusps at e for κ > 1). The ϰ read as x, the fault booked at 'chord': high."),
+                        answer=(r"Here $x$ stands on both sides of one equation ($x = \dots (\dots)^x = AP$), which "
+                                r"Euler would not write for an explicit curve; §231 and §236 treat $\kappa$ as the "
+                                r"exponent of these portions (cusps at $e$ for $\kappa > 1$). The $\varkappa$ read as "
+                                "$x$, the fault booked at the chord: high.")),
         note=claim("the portion Ace is x = a + Y − a(1 − yⁿ/bⁿ)^κ = AP."))
 d.quote("portion-Bce", "§229", r"aequatio $x = a + Y + a\left(1 - \frac{y^n}{b^n}\right)^x = Ap$",
         reading=(XB, a + Ys + a * Rx),
         erratum=Erratum("transcription", "high", r"x = a + Y + a\left(1 - \frac{y^n}{b^n}\right)^\kappa = Ap",
-                        "κ read as x, the fault booked at the chord Mm ('chord'): the portion Bce is "
-                        "x = a + Y + a(1 − yⁿ/bⁿ)^κ, and Ap − AP = 2a(1 − yⁿ/bⁿ)^κ.",
+                        (r"$\kappa$ read as $x$, the fault booked at the chord $Mm$: the portion $Bce$ is $x = a + Y "
+                         r"+ a(1 - y^n/b^n)^\kappa$, and $Ap - AP = 2a(1 - y^n/b^n)^\kappa$."),
                         corrected_reading=(XB, a + Ys + a * R), same_as=KAPPA_AS_X,
                         objection="As for the chord: x may be the print's letter for the exponent.",
                         answer="As for the portion Ace: x on both sides of the equation, κ in §231–236 for this "
@@ -290,9 +292,10 @@ d.quote("moment-O", "§230",
         erratum=Erratum("transcription", "medium",
                         r"\frac{2n\kappa a^3}{b^n} \int y^n dy \left(1 - \frac{y^n}{b^n}\right)^{3\kappa-1} + "
                         r"2a \int Y^2 dy \left(1 - \frac{y^n}{b^n}\right)^\kappa",
-                        "(1/3)∫((pO)³ + (PO)³)dy = (2a³/3)∫R³dy + 2a∫Y²R dy, and by parts (2a³/3)∫R³dy = "
-                        "(2nκa³/bⁿ)∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy. κ read as n (twice) and as x; §232 prints the "
-                        "whole figure's term with the exponent 3κ−1.", corrected_reading=(MO, MO_val),
+                        (r"$\tfrac13\int((pO)^3 + (PO)^3)\,dy = \tfrac{2a^3}{3}\int R^3 dy + 2a\int Y^2 R\, dy$, and "
+                         r"by parts $\tfrac{2a^3}{3}\int R^3 dy = \tfrac{2n\kappa a^3}{b^n}\int y^n (1 - "
+                         r"y^n/b^n)^{3\kappa-1} dy$. $\kappa$ read as $n$ (twice) and as $x$; §232 prints the whole "
+                         r"figure's term with the exponent $3\kappa-1$."), corrected_reading=(MO, MO_val),
                         objection="n stands for κ four times in §230 (2nn and 3n − 1 in both lines) and again in "
                                   "§232 (n(n + 1) + 1): a letter wrong the same way in several places of Euler's "
                                   "working is his own, not the scan's.",
@@ -341,10 +344,11 @@ d.quote("centroid-moment", "§231",
         erratum=Erratum("transcription", "low",
                         r"D \cdot CO = 2a \int y dY (1 - \frac{y^n}{b^n})^{\kappa} - \frac{2n\kappa a}{b^n} \int "
                         r"y^n Y dy (1 - \frac{y^n}{b^n})^{\kappa-1} = -2a \int Y dy (1 - \frac{y^n}{b^n})^{\kappa}",
-                        "D·CO = −∫∫(x − a) = −2a∫YR dy; integrating by parts ∫yR dY − (nκ/bⁿ)∫yⁿY(…)^{κ−1}dy = "
-                        "−∫YR dy. So the first integral is ∫y dY (not ∫y dy, which has no Y and cannot give a "
-                        "Y-dependent centroid), the factor of the second is 2nκa, and α stands for a (as in "
-                        "CO = −2α∫…/D next). Several letters at once: low.",
+                        (r"$D \cdot CO = -\iint (x - a) = -2a\int YR\, dy$; integrating by parts $\int yR\, dY - "
+                         r"\tfrac{n\kappa}{b^n}\int y^n Y (\dots)^{\kappa-1} dy = -\int YR\, dy$. So the first "
+                         r"integral is $\int y\, dY$ (not $\int y\, dy$, which has no $Y$ and cannot give a "
+                         r"$Y$-dependent centroid), the factor of the second is $2n\kappa a$, and $\alpha$ stands for "
+                         r"$a$ (as in $CO = -2\alpha\int\dots/D$ next). Several letters at once: low."),
                         corrected_reading=(D * CO, 2 * a * JY(0, 1, k, 1) - 2 * n * k * a / b ** n * JY(1, n, k - 1),
                                            -2 * a * JY(1, 0, k)),
                         objection="The first integral ∫y dy R may be the print's (Euler's slip while integrating by "
@@ -375,10 +379,10 @@ d.quote("moment-EF", "§231",
         erratum=Erratum("transcription", "medium",
                         r"= \frac{4n\kappa a^3}{b^n} \int y^n dy (1 - \frac{y^n}{b^n})^{3\kappa-1} + 4a \int Y^2 dy "
                         r"(1 - \frac{y^n}{b^n})^{\kappa} - \frac{8aa}{D} (\int Y dy (1 - \frac{y^n}{b^n})^{\kappa})^2",
-                        "The moment about EF is the moment about the parallel through O, 2M_O, less 2D·CO² "
-                        "(§217) = 8a²(∫YR)²/D. Printed: α for κ and for a, the exponent κ−1 for 3κ−1 (§232 "
-                        "repeats the term with 3κ−1) and the divisor D of the last term lost (the term must "
-                        "be a fourth power of a length).", corrected_reading=(KEF, KEF_val),
+                        (r"The moment about EF is the moment about the parallel through $O$, $2M_O$, less $2D \cdot "
+                         r"CO^2$ (§217) $= 8a^2 (\int YR)^2/D$. Printed: $\alpha$ for $\kappa$ and for $a$, the "
+                         r"exponent $\kappa-1$ for $3\kappa-1$ (§232 repeats the term with $3\kappa-1$) and the "
+                         "divisor $D$ of the last term lost (the term must be a fourth power of a length)."), corrected_reading=(KEF, KEF_val),
                         objection="The fix needs three different changes (α for κ and a, κ − 1 for 3κ − 1, the "
                                   "divisor D lost), more than one slip of the scan: the line may be Euler's own "
                                   "wrong formula.",
@@ -391,12 +395,12 @@ d.quote("moment-EF", "§231",
 d.quote("axis-EF-named", "§230", r"Ad momentum autem huius figurae respectu axis longitudinalis EF",
         reading=(2 * IAB, 2 * MO - 2 * SO ** 2 / D),
         erratum=Erratum("misprint", "medium", r"\text{respectu axis latitudinalis EF}",
-                        "EF is the latitudinal axis throughout (§198, §203, §220; §231 'momentum totius figurae "
-                        "respectu axis latitudinalis EF'); the longitudinal axis is AB, whose moment the sentence "
-                        "before found. The moment determined next, from the normal to AB through O moved to the "
-                        "parallel through C, is the one about EF. Read as printed, the moment about the "
-                        "longitudinal axis (2·I_AEB) would be 2M_O − 2S_O²/D, which it is not. A word of the "
-                        "print (a scan does not exchange 'latitudinalis' for 'longitudinalis'); medium.",
+                        ("EF is the latitudinal axis throughout (§198, §203, §220; §231 'momentum totius figurae "
+                         "respectu axis latitudinalis EF'); the longitudinal axis is AB, whose moment the sentence "
+                         "before found. The moment determined next, from the normal to AB through O moved to the "
+                         "parallel through C, is the one about EF. Read as printed, the moment about the "
+                         "longitudinal axis ($2 I_{AEB}$) would be $2M_O - 2S_O^2/D$, which it is not. A word of the "
+                         "print (a scan does not exchange 'latitudinalis' for 'longitudinalis'); medium."),
                         corrected_reading=(KEF, 2 * MO - 2 * SO ** 2 / D),
                         objection="'Axis longitudinalis' may be the axis of longitudinal rotation: the moment about "
                                   "EF governs pitching, which later usage calls longitudinal stability; in that "
@@ -413,24 +417,25 @@ Y_corrected = aY * y ** n + bY * y ** (2 * n) + gY * y ** (3 * n)
 d.quote("Y-family", "§231", r"$Y = \alpha y^n + \beta y^{n-1} + \gamma y^{n-2} + \dots + \text{etc.}$",
         reading=(sp.Subs(Y_printed, (y, n), (0, 2)), 0),
         erratum=Erratum("transcription", "low", r"Y = \alpha y^n + \beta y^{2n} + \gamma y^{3n} + \dots",
-                        "The curve must meet AB at A and B: AP = Y(0) at y = 0, so Y vanishes there (§221: "
-                        "'quae euaneat posito y = 0'). The printed terms y^{n−1}, y^{n−2} do not: at n = 2 (the "
-                        "ellipse of §236) γy^{n−2} = γ at y = 0 (read so, the '+ etc.' dropped), at n = 1 βy⁰ = β "
-                        "and y^{−1} is infinite. Nor do they reduce to the area integral ∫dy(1 − yⁿ/bⁿ)^κ = "
-                        "D/(2a), as the sentence claims: at n = 2, κ = 1/2, ∫y(1 − y²/b²)^{1/2}dy / "
-                        "∫(1 − y²/b²)^{1/2}dy = (b²/3)/(πb/4) = 4b/(3π), no rational multiple of b, while the "
-                        "powers y^{jn} reduce by the rational factors of the recurrence (§232 uses y^n and y^{2n}). "
-                        "The exponents 2n, 3n read as the descending n − 1, n − 2 of an ordinary polynomial; the "
-                        "print cannot be seen (a slip of 1749 is not excluded): medium.",
+                        ("The curve must meet AB at A and B: $AP = Y(0)$ at $y = 0$, so $Y$ vanishes there (§221: "
+                         "'quae euaneat posito y = 0'). The printed terms $y^{n-1}$, $y^{n-2}$ do not: at $n = 2$ "
+                         r"(the ellipse of §236) $\gamma y^{n-2} = \gamma$ at $y = 0$ (read so, the '+ etc.' "
+                         r"dropped), at $n = 1$ $\beta y^0 = \beta$ and $y^{-1}$ is infinite. Nor do they reduce to "
+                         r"the area integral $\int dy\, (1 - y^n/b^n)^\kappa = D/(2a)$, as the sentence claims: at $n "
+                         r"= 2$, $\kappa = \tfrac12$, $\int y (1 - y^2/b^2)^{1/2} dy \big/ \int (1 - y^2/b^2)^{1/2} "
+                         r"dy = (b^2/3)/(\pi b/4) = 4b/(3\pi)$, no rational multiple of $b$, while the powers "
+                         "$y^{jn}$ reduce by the rational factors of the recurrence (§232 uses $y^n$ and $y^{2n}$). "
+                         "The exponents $2n$, $3n$ read as the descending $n - 1$, $n - 2$ of an ordinary "
+                         "polynomial; the print cannot be seen (a slip of 1749 is not excluded): medium."),
                         corrected_reading=(sp.Subs(Y_corrected, (y, n), (0, 2)), 0),
-                        objection="A descending polynomial αyⁿ + βy^{n−1} + γy^{n−2} + … is the most ordinary way of"
-                                  " writing a general function, and the change to y^{2n}, y^{3n} is no glyph the "
-                                  "scan confuses (2n does not look like n − 1): if wrong, the slip is as likely "
-                                  "Euler's own pen or the compositor's.",
-                        answer="The correction stands: Y must vanish at y = 0, and only powers y^{jn} reduce to "
-                               "∫dy(1 − yⁿ/bⁿ)^κ as the sentence claims (§232 uses yⁿ). But the fault is not a glyph"
-                               " confusion and Euler's later working shows only yⁿ, not y^{2n}, so print and scan "
-                               "cannot be told apart: lowered to low."),
+                        objection=(r"A descending polynomial $\alpha y^n + \beta y^{n-1} + \gamma y^{n-2} + \dots$ is "
+                                   "the most ordinary way of writing a general function, and the change to $y^{2n}$, "
+                                   "$y^{3n}$ is no glyph the scan confuses ($2n$ does not look like $n - 1$): if "
+                                   "wrong, the slip is as likely Euler's own pen or the compositor's."),
+                        answer=("The correction stands: $Y$ must vanish at $y = 0$, and only powers $y^{jn}$ reduce "
+                                r"to $\int dy\, (1 - y^n/b^n)^\kappa$ as the sentence claims (§232 uses $y^n$). But "
+                                "the fault is not a glyph confusion and Euler's later working shows only $y^n$, not "
+                                "$y^{2n}$, so print and scan cannot be told apart: lowered to low.")),
         note=claim("Y is a sum of powers of y vanishing at y = 0; read at n = 2, y = 0 (the point A)."))
 d.quote("area-integral", "§231", r"$\int dy (1 - \frac{y^n}{b^n})^{\kappa} = \frac{D}{2\alpha}$",
         reading=(J(0, k), D / (2 * al)),
@@ -438,9 +443,9 @@ d.quote("area-integral", "§231", r"$\int dy (1 - \frac{y^n}{b^n})^{\kappa} = \f
                         "α for a (§229: D = 2a∫R dy).", corrected_reading=(J(0, k), D / (2 * a)),
                         objection="α may be meant: §231 has just introduced α as the first coefficient of Y, and the"
                                   " print may write D/2α.",
-                        answer="D = 2a∫dy R (§229) gives D/2a, and §233 prints ∫dy(…)^κ = ND/2a with a; the "
-                               "coefficient α of Y has no place in the area. α for a, the scan's reading of this "
-                               "page: high."),
+                        answer=(r"$D = 2a\int dy\, R$ (§229) gives $D/2a$, and §233 prints $\int dy\, (\dots)^\kappa "
+                                r"= ND/2a$ with $a$; the coefficient $\alpha$ of $Y$ has no place in the area. "
+                                r"$\alpha$ for $a$, the scan's reading of this page: high.")),
         note=claim("the integral to which the others reduce is ∫dy R = D/(2a)."))
 
 # ================================================================ §232: Y = −c yⁿ/bⁿ
@@ -491,9 +496,10 @@ d.quote("Y-c-second", "§232",
         erratum=Erratum("transcription", "high",
                         r"= \frac{(n+1)cc}{(n(\kappa+1)+1)(n(\kappa+2)+1)} \int dy (1 - \frac{y^n}{b^n})^{\kappa} = "
                         r"\frac{(n+1)ccD}{2a(n(\kappa+1)+1)(n(\kappa+2)+1)}",
-                        "Two steps of the recurrence ∫y^{p+n}R = bⁿ(p+1)/(p+1+n(κ+1))∫y^pR. Read with the comma "
-                        "of the transcription as the product it interrupts; κ read as n (twice) and α for a, "
-                        "as in the line before; p. 118 prints (n(κ+1)+1)(n(κ+2)+1).",
+                        (r"Two steps of the recurrence $\int y^{p+n} R = \tfrac{b^n (p+1)}{p+1+n(\kappa+1)} \int y^p "
+                         r"R$. Read with the comma of the transcription as the product it interrupts; $\kappa$ read "
+                         r"as $n$ (twice) and $\alpha$ for $a$, as in the line before; p. 118 prints "
+                         r"$(n(\kappa+1)+1)(n(\kappa+2)+1)$."),
                         corrected_reading=(JY(2, 0, k, 0, -c, 0), c ** 2 / b ** (2 * n) * J(2 * n, k),
                                            (n + 1) * c ** 2 / (m1 * m2) * J(0, k),
                                            (n + 1) * c ** 2 * D / (2 * a * m1 * m2)),
@@ -547,10 +553,10 @@ d.quote("moment-EF-c-p118", "§232",
                                            Kc_val),
                         objection="a² may be the print's: §233 carries a² on (2nκa²ND/(1 + 3nκ)), so the square may "
                                   "be Euler's own through two places of his working.",
-                        answer="§233's a² is right there, since D = 2a∫R absorbs one a: 4nκa³/bⁿ∫yⁿ(…)^{3κ−1} = "
-                               "2nκa²ND/(1 + 3nκ) needs a³ in the line before. So the a² of p. 118 is not carried "
-                               "on; a 3 read as 2 (the scan) or set as 2 (the compositor) cannot be told apart: "
-                               "medium."),
+                        answer=(r"§233's $a^2$ is right there, since $D = 2a\int R$ absorbs one $a$: $\tfrac{4n\kappa "
+                                r"a^3}{b^n}\int y^n (\dots)^{3\kappa-1} = 2n\kappa a^2 ND/(1 + 3n\kappa)$ needs $a^3$ "
+                                "in the line before. So the $a^2$ of p. 118 is not carried on; a $3$ read as $2$ "
+                                "(the scan) or set as $2$ (the compositor) cannot be told apart: medium.")),
         note=claim("the two c-terms combine: the moment about EF is (4nκa³/bⁿ)∫yⁿ(…)^{3κ−1}dy + "
                    "2n²(κ+1)c²D/((n(κ+1)+1)²(n(κ+2)+1)) (read with the first term of the line before)."))
 d.quote("moment-grows-with-c", "§232",
@@ -578,16 +584,18 @@ d.quote("N-definition", "§233",
         erratum=Erratum("transcription", "medium",
                         r"\int dy \left(1 - \frac{y^n}{b^n}\right)^{3\kappa-1} = N \int dy "
                         r"\left(1 - \frac{y^n}{b^n}\right)^{\kappa} = \frac{ND}{2a}",
-                        "As transcribed N would be 1. The integral being replaced is the ∫dy(…)^{3κ−1} of the "
-                        "line before, and the table of N (κ = 1: 4n/(2+4n) = ∫(1−uⁿ)²/∫(1−uⁿ)) confirms it: the "
-                        "exponent 3κ−1 of the first integral is lost.",
+                        (r"As transcribed $N$ would be $1$. The integral being replaced is the $\int dy\, "
+                         r"(\dots)^{3\kappa-1}$ of the line before, and the table of $N$ ($\kappa = 1$: $4n/(2+4n) = "
+                         r"\int (1-u^n)^2 / \int (1-u^n)$) confirms it: the exponent $3\kappa-1$ of the first "
+                         "integral is lost."),
                         corrected_reading=(J(0, 3 * k - 1), N * J(0, k), N * D / (2 * a)),
                         objection="The print may have lost the exponent itself (a compositor's omission), the kind "
                                   "then the printer's.",
-                        answer="The line defines N, and as transcribed N would be 1, while the table of N that "
-                               "follows gives values other than 1 and §234's rows are built from them; the integral "
-                               "replaced is the ∫dy(…)^{3κ−1} of the line before. A lost superscript is the scan's "
-                               "commonest fault in displays and a printer's rarer one: medium."),
+                        answer=("The line defines $N$, and as transcribed $N$ would be $1$, while the table of $N$ "
+                                "that follows gives values other than $1$ and §234's rows are built from them; the "
+                                r"integral replaced is the $\int dy\, (\dots)^{3\kappa-1}$ of the line before. A lost "
+                                "superscript is the scan's commonest fault in displays and a printer's rarer one: "
+                                "medium.")),
         note=claim("N is defined by ∫dy(1 − yⁿ/bⁿ)^{3κ−1} = N∫dy(1 − yⁿ/bⁿ)^κ = ND/(2a)."))
 d.quote("moment-EF-N", "§233",
         "\\text{ erit momentum respectu axis EF} = \\frac{2n\\kappa a^2 ND}{1+3n\\kappa} \\\\ & + "
@@ -655,9 +663,9 @@ for kv in KAPPAS:
 
 N_PRINTED = {
     sp.Rational(1, 2): (r"$\kappa = \frac{1}{2}$	$N = \frac{1}{2}$", sp.Rational(1, 2), "low",
-                        "N = ∫(1−uⁿ)^{1/2}/∫(1−uⁿ)^{1/2} = 1 (3κ − 1 = κ), and the row κ = 1/2 of §234, "
-                        "2a²D·n/(2+3n) = 2nκa²ND/(1+3nκ), needs N = 1. Perhaps a 1 read as the 1/2 of the κ "
-                        "column beside it.",
+                        (r"$N = \int (1-u^n)^{1/2} \big/ \int (1-u^n)^{1/2} = 1$ ($3\kappa - 1 = \kappa$), and the row "
+                         r"$\kappa = \tfrac12$ of §234, $2a^2 D \cdot n/(2+3n) = 2n\kappa a^2 ND/(1+3n\kappa)$, needs $N = 1$. "
+                         r"Perhaps a $1$ read as the $\tfrac12$ of the $\kappa$ column beside it."),
                         "The 1/2 may be the print's: the compositor setting the κ column's 1/2 again in the N column "
                         "beside it, or Euler's slip, since nothing in §233 is computed from this row.",
                         "N = 1 here (3κ − 1 = κ), and §234's row κ = 1/2, 2a²D·n/(2 + 3n), is computed with N = 1, "
@@ -814,14 +822,15 @@ d.quote("kappa-1-acute", "§236", r"Quodsi autem sit $\kappa = 1$ anguli ad e et
         erratum=Erratum("claim", "low",
                         r"\text{anguli ad e et f erunt obtusi, si } (a - c)(a + c) > b^2 "
                         r"\text{ (omni figurae longae, } a > b, c = 0\text{)}",
-                        "For κ = 1 (n = 1) both portions are straight: eA from e = (a − c, b) to A, eB from e to B = "
-                        "(2a, 0) (Ac = a − c, Bc = a + c, ce = b). The interior angle at e is atan((a − c)/b) + "
-                        "atan((a + c)/b), which is less than a right angle exactly when (a − c)(a + c) < b^2: acute "
-                        "only for a figure broader than it is long. For every waterplane Euler considers, AB the "
-                        "longitudinal axis longer than EF (§241: AB four times EF), it is obtuse: the rhombus of "
-                        "this paragraph with a = 4b has 152° at e and f. A claim of the author; low, since 'acutus' "
-                        "may mean a sharp corner (against the cusps of κ > 1 and the smooth ends of κ < 1) rather "
-                        "than an angle below 90°.",
+                        (r"For $\kappa = 1$ ($n = 1$) both portions are straight: $eA$ from $e = (a - c, b)$ to $A$, "
+                         "$eB$ from $e$ to $B = (2a, 0)$ ($Ac = a - c$, $Bc = a + c$, $ce = b$). The interior angle "
+                         r"at $e$ is $\arctan((a - c)/b) + \arctan((a + c)/b)$, which is less than a right angle "
+                         "exactly when $(a - c)(a + c) < b^2$: acute only for a figure broader than it is long. For "
+                         "every waterplane Euler considers, AB the longitudinal axis longer than EF (§241: $AB$ four "
+                         r"times $EF$), it is obtuse: the rhombus of this paragraph with $a = 4b$ has $152^\circ$ at "
+                         "$e$ and $f$. A claim of the author; low, since 'acutus' may mean a sharp corner (against "
+                         r"the cusps of $\kappa > 1$ and the smooth ends of $\kappa < 1$) rather than an angle below "
+                         r"$90^\circ$."),
                         corrected_reading=Iff(ANGLE_E < sp.pi / 2, (a - c) * (a + c) < b ** 2),
                         objection="'Anguli ad e et f' may be the angles each straight portion makes with the breadth"
                                   " ef (or with AB), both acute for every quadrilateral; or 'acuti' may mean sharp "

@@ -241,17 +241,17 @@ d.quote("simpson-identical", "§2 Simpson's rule",
         erratum=Erratum("claim", "medium",
                         r"I = \frac{m}{3}\{a + 4b + 2c + 4d + 2e + 4f + g\} \text{ is identical with Simpson's rule; "
                         r"the printed } I = m\{\dots\} \text{ is three times it}",
-                        "'Diese Formel' is the one printed just above, I = m {a + 4b + 2c + 4d + 2e + 4f + g}. "
-                        "Simpson's rule for the ordinates y_0, ..., y_6 at the spacing m is "
-                        "m/3 (y_0 + 4y_1 + 2y_2 + 4y_3 + 2y_4 + 4y_5 + y_6); with the ordinates replaced by the "
-                        "section areas the printed formula is three times it, not identical with it (y = x^2 "
-                        "on [0, 6], m = 1: the area is 72, Simpson's rule gives 216/3 = 72, the printed form "
-                        "216; a prism of constant section A and length 6m: 6mA, printed 18mA). The sentence "
-                        "holds for the formula derived with the factor 1/3 of the prismatoid formula, which "
-                        "the print lost at I' (erratum 'slab-a-c', misprint, high) and carried down to "
-                        "'simpson-rule'; the claim fails only through that factor, so it is the author's "
-                        "statement about his misprinted line, not a fault of the scan. High: the printed "
-                        "factor m and Simpson's m/3 are both unambiguous.",
+                        (r"'Diese Formel' is the one printed just above, $I = m \{a + 4b + 2c + 4d + 2e + 4f + g\}$. "
+                         r"Simpson's rule for the ordinates $y_0, \dots, y_6$ at the spacing $m$ is $\tfrac{m}{3} "
+                         "(y_0 + 4y_1 + 2y_2 + 4y_3 + 2y_4 + 4y_5 + y_6)$; with the ordinates replaced by the "
+                         "section areas the printed formula is three times it, not identical with it ($y = x^2$ on "
+                         "$[0, 6]$, $m = 1$: the area is $72$, Simpson's rule gives $216/3 = 72$, the printed form "
+                         "$216$; a prism of constant section $A$ and length $6m$: $6mA$, printed $18mA$). The "
+                         r"sentence holds for the formula derived with the factor $\tfrac13$ of the prismatoid "
+                         "formula, which the print lost at $I'$ (an erratum of its own, misprint, high) and carried "
+                         "down to Simpson's rule; the claim fails only through that factor, so it is the author's "
+                         "statement about his misprinted line, not a fault of the scan. High: the printed factor $m$ "
+                         "and Simpson's $m/3$ are both unambiguous."),
                         corrected_reading=(I, simp_3, SIMPSON_AREAS),
                         objection="'identisch' may mean identical in form (the weights 1, 4, 2, 4, ..., 4, 1 that "
                                   "define Simpson's rule), not equal in value, the factor in front being a matter of"

@@ -95,15 +95,15 @@ d.quote("cone-frustum-1", "§4 cone frustum",
             "transcription", "low",
             r"X = h \left\{ \frac{\frac{r^2}{2} + \frac{(R+r)^2}{4}}{\frac{R^2 + r^2}{2} + \frac{(R+r)^2}{2}} "
             r"\right\}",
-            "The denominator of the formula is (G+g)/2 + 2D; with G = R^2, g = r^2 (pi omitted) its first part is "
-            "(R^2 + r^2)/2, not R^2 + r^2. The next printed line (h/2 times a fraction whose denominator is "
-            "R^2 + r^2 + R^2 + 2Rr + r^2) follows only from the corrected form, so the author had the half. A "
-            "lost fraction bar under R^2 + r^2, as in the first line of the truncated ellipsoid; from the "
-            "transcription alone a misprint of the 1866 print cannot be excluded, hence low confidence.",
+            (r"The denominator of the formula is $(G+g)/2 + 2D$; with $G = R^2$, $g = r^2$ ($\pi$ omitted) its first "
+             "part is $(R^2 + r^2)/2$, not $R^2 + r^2$. The next printed line ($h/2$ times a fraction whose "
+             "denominator is $R^2 + r^2 + R^2 + 2Rr + r^2$) follows only from the corrected form, so the author had "
+             "the half. A lost fraction bar under $R^2 + r^2$, as in the first line of the truncated ellipsoid; from "
+             "the transcription alone a misprint of the 1866 print cannot be excluded, hence low confidence."),
             corrected_reading=Eq(X_cf, h * ((r ** 2 / 2 + (R + r) ** 2 / 4)
                                                / ((R ** 2 + r ** 2) / 2 + (R + r) ** 2 / 2))),
-                        objection="The print itself may have lacked the half under R^2 + r^2, the fault being the "
-                                  "author's and not the scan's.",
+                        objection=("The print itself may have lacked the half under $R^2 + r^2$, the fault being the "
+                                   "author's and not the scan's."),
                         answer="The next printed line follows only from the corrected form, so the author had the "
                                "half; whether the 1866 print or the scan lost the bar cannot be told from the "
                                "transcription, hence low."))
@@ -234,12 +234,12 @@ d.quote("segment-2-2", "§4 spherical segment, two bases",
             "misprint", "medium",
             r"X = \frac{x' - x}{2} \left\{ \frac{2r^2 - 2x'^2 + 4r^2 - x'^2 - 2x'x - x^2}{6r^2 - x^2 - x'^2 - "
             r"x'^2 - 2x'x - x^2} \right\}",
-            "The numerator of the preceding line was multiplied by 4 and its denominator by 2 to reach this "
-            "fraction, so the prefactor must be 2(x' - x)/4 = (x' - x)/2; as printed the line is half the "
-            "centroid distance. The next line, whose denominator 3r^2 - x'^2 - x'x - x^2 is half of this one, "
-            "again carries (x' - x)/4 and is right, so the slip did not propagate: a fault of the printed "
-            "line (the factor 4 anticipates the next line), not of the scan, which renders the other factors "
-            "faithfully. The same value results if instead the denominator is halved.",
+            ("The numerator of the preceding line was multiplied by $4$ and its denominator by $2$ to reach this "
+             "fraction, so the prefactor must be $2(x' - x)/4 = (x' - x)/2$; as printed the line is half the "
+             "centroid distance. The next line, whose denominator $3r^2 - x'^2 - x'x - x^2$ is half of this one, "
+             "again carries $(x' - x)/4$ and is right, so the slip did not propagate: a fault of the printed line "
+             "(the factor $4$ anticipates the next line), not of the scan, which renders the other factors "
+             "faithfully. The same value results if instead the denominator is halved."),
             corrected_reading=Eq(X_s2, (xp - x) / 2 * frac_s2),
                         objection="The 4 may be the scan's reading of a 2, a fault of the transcription rather than "
                                   "of the print.",
@@ -357,12 +357,11 @@ d.quote("truncated-ellipsoid-1", "§4 truncated ellipsoid",
             "transcription", "low",
             r"X = \left\{ x' - x \right\} \left\{ \frac{\frac{a^2 - x'^2}{2} + a^2 - \frac{(x' + x)^2}{4}}"
             r"{\frac{a^2 - x^2 + a^2 - x'^2}{2} + \frac{4a^2 - (x' + x)^2}{2}} \right\}",
-            "The first part of the denominator is (G+g)/2 and needs the half: the same line for the "
-            "spherical zone prints (r^2 - x^2 + r^2 - x'^2)/2, and the triaxial stump, which the text calls "
-            "'derselbe Ausdruck', prints (a^2 - x^2 + a^2 - x'^2)/2. The final line of this body is right, "
-            "so the half was there when it was reduced. A fraction bar lost by the transcription, as in the "
-            "first line of the cone frustum; a misprint cannot be excluded from the transcription alone, "
-            "hence low confidence.",
+            ("The first part of the denominator is $(G+g)/2$ and needs the half: the same line for the spherical "
+             "zone prints $(r^2 - x^2 + r^2 - x'^2)/2$, and the triaxial stump, which the text calls 'derselbe "
+             "Ausdruck', prints $(a^2 - x^2 + a^2 - x'^2)/2$. The final line of this body is right, so the half was "
+             "there when it was reduced. A fraction bar lost by the transcription, as in the first line of the cone "
+             "frustum; a misprint cannot be excluded from the transcription alone, hence low confidence."),
             corrected_reading=Eq(X_te, (xp - x) * (num_te_1 / ((a ** 2 - x ** 2 + a ** 2 - xp ** 2) / 2
                                                                   + (4 * a ** 2 - (xp + x) ** 2) / 2))),
                         objection="The print itself may have lacked the half, the fault being the author's.",
@@ -510,22 +509,23 @@ d.quote("triaxial-stump-axes-D", "§4 triaxial ellipsoid stump",
                             b ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4)])),
         erratum=Erratum("misprint", "medium",
                         r"(Q p)^2 = \frac{c^2}{a^2} \left\{ a^2 - \frac{(x + x')^2}{4} \right\}",
-                        "The half great axes are named m A, p Q, o D in the text before the display, and the "
-                        "middle section is D = Q p. E p. pi after it: the first member of the middle line is "
-                        "(Q p)^2, the ordinate of the ellipse NMR at n p = (x + x')/2. A is the end of the half "
-                        "axis m A of the base AB, at the abscissa x: as printed, (A p)^2 is the squared slant "
-                        "distance from A to p, ((x' - x)/2)^2 + c^2/a^2 (a^2 - x^2) (read in the plane NMR), "
-                        "not the value printed. The value is right, the label contradicts both neighbours. "
-                        "Booked as the print's: the rest of the display is letter-perfect, and an existing "
-                        "letter of the figure in the wrong place (the A of '(m A)' in the line above) is a "
-                        "compositor's kind of slip; the scan cannot be excluded: medium.",
+                        ("The half great axes are named $m A$, $p Q$, $o D$ in the text before the display, and the "
+                         r"middle section is $D = Q p \cdot E p \cdot \pi$ after it: the first member of the middle "
+                         "line is $(Q p)^2$, the ordinate of the ellipse $NMR$ at $n p = (x + x')/2$. $A$ is the end "
+                         "of the half axis $m A$ of the base $AB$, at the abscissa $x$: as printed, $(A p)^2$ is the "
+                         r"squared slant distance from $A$ to $p$, $((x' - x)/2)^2 + c^2/a^2\, (a^2 - x^2)$ (read in "
+                         "the plane $NMR$), not the value printed. The value is right, the label contradicts both "
+                         "neighbours. Booked as the print's: the rest of the display is letter-perfect, and an "
+                         "existing letter of the figure in the wrong place (the A of '(m A)' in the line above) is a "
+                         "compositor's kind of slip; the scan cannot be excluded: medium."),
                         corrected_reading=(sp.Matrix(half_axes(ts_mid)).applyfunc(lambda e: e ** 2),
                                            sp.Matrix([c ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4),
                                                       b ** 2 / a ** 2 * (a ** 2 - (x + xp) ** 2 / 4)])),
                         objection="A may be another label of the same point as Q in the lost figure.",
-                        answer="The text names the half axes mA, pQ, oD and defines A as the end of mA at the "
-                               "abscissa x of the base AB; the middle section D = Qp.Ep.pi after the display uses "
-                               "Qp. (Ap)^2 as printed is the slant distance from A to p, not the value printed."),
+                        answer=("The text names the half axes $mA$, $pQ$, $oD$ and defines $A$ as the end of $mA$ at "
+                                r"the abscissa $x$ of the base $AB$; the middle section $D = Qp \cdot Ep \cdot \pi$ "
+                                "after the display uses $Qp$. $(Ap)^2$ as printed is the slant distance from $A$ to "
+                                "$p$, not the value printed.")),
         note="read with the printed label: A = (x, mA) and p = ((x + x')/2, 0) in the plane of the ellipse NMR")
 d.quote("triaxial-stump-axes-g", "§4 triaxial ellipsoid stump",
         r"(o D)^2 &= \frac{c^2}{a^2} \{ a^2 - x'^2 \}, (o F)^2 = \frac{b^2}{a^2} \{ a^2 - x'^2 \}.",

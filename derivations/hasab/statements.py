@@ -50,20 +50,20 @@ d.quote("OF", "solution, upright", r"$\overline{OF} = 1/2 - \varrho$", reading=(
 d.quote("E0-prism", "solution, upright", DISPLAYS[1], reading=(E0h, l * g * rho * (half - rho)))
 d.quote("E0-water", "solution, upright", DISPLAYS[2], reading=(E0v, l * g * rho / 2),
         erratum=Erratum("transcription", "medium", r"E_0^{\text{víz}} = l \cdot g \cdot \varrho^2/2",
-                        "The displaced water has weight l g rho and its centroid lies rho/2 below the surface, as "
-                        "the sentence before the formula says: l g rho * rho/2 = l g rho^2/2. The next line, "
-                        "E_0 = 1/2 l g (rho - rho^2), is the sum with rho^2/2 (with rho/2 it would be "
-                        "l g rho (1 - rho)), so the author had the square: an exponent lost in the "
-                        "transcription (or a misprint; the two cannot be told apart from the text).",
+                        (r"The displaced water has weight $l g \rho$ and its centroid lies $\rho/2$ below the "
+                         r"surface, as the sentence before the formula says: $l g \rho \cdot \rho/2 = l g \rho^2/2$. "
+                         r"The next line, $E_0 = \tfrac12 l g (\rho - \rho^2)$, is the sum with $\rho^2/2$ (with "
+                         r"$\rho/2$ it would be $l g \rho (1 - \rho)$), so the author had the square: an exponent "
+                         "lost in the transcription (or a misprint; the two cannot be told apart from the text)."),
                         corrected_reading=(E0v, l * g * rho ** 2 / 2),
-                        objection="The print may have lost the exponent itself (the kind would then be the "
-                                  "printer's, not the scan's); or l g rho/2 may be meant per unit of displaced "
-                                  "weight.",
-                        answer="The sentence before defines the energy as the displaced weight times its centroid's "
-                               "depth, l g rho times rho/2, and the next line's 1/2 l g (rho - rho^2) needs the "
-                               "square, so the author had it. A superscript lost is the scan's commonest fault in "
-                               "displays and a printer's rarer one, but the two cannot be told apart from the text: "
-                               "medium."))
+                        objection=("The print may have lost the exponent itself (the kind would then be the "
+                                   r"printer's, not the scan's); or $l g \rho/2$ may be meant per unit of displaced "
+                                   "weight."),
+                        answer=("The sentence before defines the energy as the displaced weight times its centroid's "
+                                r"depth, $l g \rho$ times $\rho/2$, and the next line's $\tfrac12 l g (\rho - "
+                                r"\rho^2)$ needs the square, so the author had it. A superscript lost is the scan's "
+                                "commonest fault in displays and a printer's rarer one, but the two cannot be told "
+                                "apart from the text: medium.")))
 d.quote("E0-total", "solution, upright", DISPLAYS[3], reading=(E0, half * l * g * (rho - rho ** 2)))
 
 # ---- heeled ------------------------------------------------------------------------------------
@@ -116,12 +116,14 @@ d.quote("E2-water", "solution, heeled", DISPLAYS[10],
         erratum=Erratum("misprint", "medium",
                         r"E_2^{\text{víz}} = l g \frac{x - y}{2} \frac{1}{3} (x - y) \cos\alpha = "
                         r"l g \frac{\text{tg}^2 \alpha}{6} \cos \alpha",
-                        "The last member drops the factor l g that the first member carries (x - y = tg alpha). "
-                        "From here on the text writes energies per l g (E_1 total, Delta E), so the slip is a "
-                        "change of unit in the middle of an equation, not a wrong value.",
+                        ("The last member drops the factor $l g$ that the first member carries ($x - y = "
+                         r"\operatorname{tg} \alpha$). From here on the text writes energies per $l g$ ($E_1$ total, "
+                         r"$\Delta E$), so the slip is a change of unit in the middle of an equation, not a wrong "
+                         "value."),
                         corrected_reading=(E2v, l * g * t ** 2 / 6 * sp.cos(al)),
-                        objection="From here on the text writes its energies per l g (E_1 total and Delta E carry no"
-                                  " l g), so the last member is in the new unit, a convention and not a fault.",
+                        objection=(r"From here on the text writes its energies per l g ($E_1$ total and $\Delta E$ "
+                                   "carry no $l g$), so the last member is in the new unit, a convention and not a "
+                                   "fault."),
                         answer="The change of unit happens inside one equation: its first member carries l g and its"
                                " last does not, so as printed the two members differ by the factor l g. The value in"
                                " the text's later unit is right, which is why the fault changes no result: medium."))
@@ -158,18 +160,19 @@ d.quote("ranges", "solution, stability", DISPLAYS[14],
         erratum=Erratum("transcription", "medium",
                         r"0 < \varrho < \frac{3 - \sqrt{3}}{6} \varrho_{\text{víz}} \quad \text{vagy} \quad "
                         r"\frac{3 + \sqrt{3}}{6} \varrho_{\text{víz}} < \varrho < \varrho_{\text{víz}}",
-                        "The second range has lost its middle '< rho': as transcribed it reads "
-                        "'(3 + sqrt 3)/6 rho_viz < rho_viz', a true statement without rho, which would make every "
-                        "density stable. The roots of rho^2 - rho + 1/6 are (3 -+ sqrt 3)/6 (printed right) and the "
-                        "condition holds outside them; the layout of the first range shows the intended form. "
-                        "Lost in the transcription rather than the print (the thresholds are correct).",
+                        (r"The second range has lost its middle '$< \rho$': as transcribed it reads '$(3 + \sqrt3)/6\ "
+                         r"\rho_{\text{viz}} < \rho_{\text{viz}}$', a true statement without $\rho$, which would make "
+                         r"every density stable. The roots of $\rho^2 - \rho + 1/6$ are $(3 \mp \sqrt3)/6$ (printed "
+                         "right) and the condition holds outside them; the layout of the first range shows the "
+                         "intended form. Lost in the transcription rather than the print (the thresholds are "
+                         "correct)."),
                         corrected_reading=Iff(quad > 0, (rho < R1) | (rho > R2), {rho: (0, 1)}),
-                        objection="'(3 + sqrt 3)/6 rho_viz < rho_viz' may be the author's elliptic style, the "
-                                  "variable being understood from the first range.",
-                        answer="The first range writes its variable ('0 < rho < ...'), and the condition to be "
-                               "solved, rho^2 - rho + 1/6 > 0, has rho on both sides of its upper root: the range "
-                               "needs '< rho <'. As printed the second statement is true for every density and says "
-                               "nothing. Print or scan cannot be told apart for a lost middle term: medium."),
+                        objection=(r"'$(3 + \sqrt3)/6\ \rho_{\text{viz}} < \rho_{\text{viz}}$' may be the author's "
+                                   "elliptic style, the variable being understood from the first range."),
+                        answer=(r"The first range writes its variable ('$0 < \rho < \dots$'), and the condition to be "
+                                r"solved, $\rho^2 - \rho + 1/6 > 0$, has $\rho$ on both sides of its upper root: the "
+                                r"range needs '$< \rho <$'. As printed the second statement is true for every density "
+                                "and says nothing. Print or scan cannot be told apart for a lost middle term: medium.")),
         note="read as: the condition holds exactly on the printed ranges, for 0 < rho < 1 (rho_viz = 1)")
 d.quote("thresholds", "solution, stability",
         r"\frac{3 - \sqrt{3}}{6} \cdot \varrho_{\text{víz}}, \quad \text{vagy} \quad \frac{3 + \sqrt{3}}{6}",
@@ -226,34 +229,36 @@ d.quote("remark", "Megjegyzés", DISPLAYS[15], reading=(Ru, (3 * l + 9 * l ** 2 
         erratum=Erratum("transcription", "low",
                         r"\frac{3l + \sqrt{9l^2 - 6}}{6l} \varrho_{\text{víz}} < \varrho < \varrho_{\text{víz}} "
                         r"(\text{and } 0 < \varrho < \frac{3l - \sqrt{9l^2 - 6}}{6l})",
-                        "The position meant is the prism standing upright (the OCR's '1 hosszúságú' is 'l "
-                        "hosszúságú': edges of length l vertical; edges of length 1 cannot all be vertical). Its "
-                        "metacentric height 1/(12 rho l) - l (1 - rho)/2 vanishes at rho = (3l +- sqrt(9l^2 - 6))/(6l). "
-                        "The print lost the radical over 9l^2 - 6 (as printed the bound exceeds 1 for every l > 1, "
-                        "no density would be stable) and, as in the main result, the '< rho' of the range; the "
-                        "lower range 0 < rho < (3l - sqrt(9l^2 - 6))/(6l) (about 1/(6 l^2)) is not printed.",
+                        ("The position meant is the prism standing upright (the OCR's '1 hosszúságú' is 'l "
+                         "hosszúságú': edges of length $l$ vertical; edges of length $1$ cannot all be vertical). "
+                         r"Its metacentric height $1/(12 \rho l) - l (1 - \rho)/2$ vanishes at $\rho = (3l \pm "
+                         r"\sqrt{9l^2 - 6})/(6l)$. The print lost the radical over $9l^2 - 6$ (as printed the bound "
+                         "exceeds $1$ for every $l > 1$, no density would be stable) and, as in the main result, the "
+                         r"'$< \rho$' of the range; the lower range $0 < \rho < (3l - \sqrt{9l^2 - 6})/(6l)$ (about "
+                         "$1/(6 l^2)$) is not printed."),
                         corrected_reading=(Ru, ru2),
-                        objection="Two changes (a radical and the middle '< rho') and a range left unprinted are "
-                                  "more than one slip of the scan: the author may have written the remark "
-                                  "carelessly, a fault of the print.",
-                        answer="The same middle '< rho' is lost in the main result above, a systematic loss of this "
-                               "transcription, and a radical over a long expression is often dropped by OCR; but the"
-                               " remark also omits the lower range, which no scan loses. Kind and correction both "
-                               "rest on two changes: lowered to low."),
+                        objection=(r"Two changes (a radical and the middle '$< \rho$') and a range left unprinted are "
+                                   "more than one slip of the scan: the author may have written the remark "
+                                   "carelessly, a fault of the print."),
+                        answer=(r"The same middle '$< \rho$' is lost in the main result above, a systematic loss of "
+                                "this transcription, and a radical over a long expression is often dropped by OCR; "
+                                "but the remark also omits the lower range, which no scan loses. Kind and correction "
+                                "both rest on two changes: lowered to low.")),
         note="read as the lower bound of the printed stable range")
 d.quote("remark-position", "Megjegyzés", "amikor az 1 hosszúságú élek függőlegesen állnak", reading=(Ru, R2),
         erratum=Erratum("transcription", "medium", r"\text{amikor az } l \text{ hosszúságú élek függőlegesen állnak}",
-                        "With the edges of length 1 vertical the prism lies on a face, the position already solved, "
-                        "whose upper threshold is (3 + sqrt 3)/6; the condition the remark prints next depends on l "
-                        "and is that of the prism standing on its square face, the edges of length l vertical "
-                        "(metacentric height 1/(12 rho l) - l (1 - rho)/2). The letter l read as the digit 1, the "
-                        "fault the remark's display erratum names in its evidence, booked here at its place.",
+                        ("With the edges of length $1$ vertical the prism lies on a face, the position already "
+                         r"solved, whose upper threshold is $(3 + \sqrt{3})/6$; the condition the remark prints next "
+                         "depends on $l$ and is that of the prism standing on its square face, the edges of length "
+                         r"$l$ vertical (metacentric height $1/(12 \rho l) - l (1 - \rho)/2$). The letter $l$ read as "
+                         "the digit $1$, the fault the remark's display erratum names in its evidence, booked here "
+                         "at its place."),
                         corrected_reading=(Ru, ru2),
                         objection="'az 1 hosszúságú élek függőlegesen' may be right as printed: the prism turned so "
                                   "that edges of length 1 stand vertical is a position of its own.",
-                        answer="With edges of length 1 vertical the long prism lies on a side face, the position the"
-                               " solution has just treated, whose threshold is (3 + sqrt 3)/6 and does not depend on"
-                               " l; the condition the remark prints depends on l, which is the prism standing on its"
-                               " square face with the edges of length l vertical."),
+                        answer=("With edges of length $1$ vertical the long prism lies on a side face, the position "
+                                r"the solution has just treated, whose threshold is $(3 + \sqrt{3})/6$ and does not "
+                                "depend on $l$; the condition the remark prints depends on $l$, which is the prism "
+                                "standing on its square face with the edges of length $l$ vertical.")),
         note="read as: the remark's position (edges of length 1 vertical) has the thresholds of the prism lying on a "
              "face; its printed condition (the upper threshold Ru) is compared with the lying prism's")

@@ -117,19 +117,20 @@ dv.quote("z_B", "formula list", r"$ z_B =-\displaystyle\frac{ d }{2}$", reading=
 dv.quote("e-sign", L6, "was größer als eins im Falle einer stabilen Situation und negativ im Falle von Instabilität ist.",
          reading=(sp.sign(z_M - z_G), sp.sign(e - 1)),
          erratum=Erratum("claim", "high", "e > 0 in the stable case, e < 0 in the unstable case",
-                         "e = d/(2c^2) (z_M - z_G) has the sign of z_M - z_G, so the boundary of stability is e = 0, "
-                         "not e = 1: e.g. b = c, d = c (half immersed) gives e = 1/6 - 1/4 < 0 (unstable), and "
-                         "b = 3c/2, d = c gives e = 3/8 - 1/4 = 1/8, between 0 and 1 and stable (z_M - z_G = "
-                         "c/4 > 0). e > 1 needs b > sqrt(6) c at least (e <= b^2/(6c^2)), so 'größer als eins' "
-                         "would declare most stable hulls unstable. Probably a slip for 'größer als null' (the German web "
-                         "page is a translation), so a claim fault of the lesson, not of the transcription.",
+                         ("$e = d/(2c^2) (z_M - z_G)$ has the sign of $z_M - z_G$, so the boundary of stability is "
+                          r"$e = 0$, not $e = 1$: e.g. $b = c$, $d = c$ (half immersed) gives $e = \tfrac16 - "
+                          r"\tfrac14 < 0$ (unstable), and $b = 3c/2$, $d = c$ gives $e = \tfrac38 - \tfrac14 = "
+                          r"\tfrac18$, between $0$ and $1$ and stable ($z_M - z_G = c/4 > 0$). $e > 1$ needs $b > "
+                          r"\sqrt6\, c$ at least ($e \le b^2/(6c^2)$), so 'größer als eins' would declare most stable "
+                          "hulls unstable. Probably a slip for 'größer als null' (the German web page is a "
+                          "translation), so a claim fault of the lesson, not of the transcription."),
                          corrected_reading=(sp.sign(z_M - z_G), sp.sign(e)),
-                         objection="The lesson might measure stability by a ratio (z_M/z_G, or a moment ratio), for "
-                                   "which 'greater than one' is the right boundary.",
-                         answer="The page defines e by the display just before, b^2/(6c^2) - d/(2c)(1 - d/(2c)): a "
-                                "difference whose sign is that of z_M - z_G, not a ratio; and the sentence itself "
-                                "pairs 'negativ' with instability, which leaves 0 < e <= 1 in neither case unless the"
-                                " threshold is 0."))
+                         objection=("The lesson might measure stability by a ratio ($z_M/z_G$, or a moment ratio), "
+                                    "for which 'greater than one' is the right boundary."),
+                         answer=("The page defines $e$ by the display just before, $b^2/(6c^2) - d/(2c)(1 - "
+                                 "d/(2c))$: a difference whose sign is that of $z_M - z_G$, not a ratio; and the "
+                                 r"sentence itself pairs 'negativ' with instability, which leaves $0 < e \le 1$ in "
+                                 "neither case unless the threshold is 0.")))
 dv.quote("vasa", L4, "Eine Lösung wäre gewesen, es tiefer zu versenken oder einen höheren $d/c$-Wert zu erreichen, "
          "um die Zone der Instabilität zu vermeiden.",
          reading=(sp.sign(sp.Limit(e, d, 2 * c, "-")), 1),
@@ -144,26 +145,27 @@ stable_margin = I_w / V_b - (z_G - z_B)                 # Duhamel's criterion fo
 dv.quote("buoyancy-point", L4, "Daher ist mit die Höhe des Schwerpunkts ($z_G$)8670 als dem Angriffspunkt der "
          "gegebenen Auftriebskraft", reading=(z_B, c - d),
          erratum=Erratum("misprint", "high", r"z_G \text{ als dem Angriffspunkt der Schwerkraft}",
-                         "The buoyancy acts at the centre of buoyancy z_B = -d/2, the centroid of the displaced water "
-                         "(the formula list says so); z_G = c - d, the centre of the hull, is where gravity acts. "
-                         "As printed the sentence puts the buoyancy at z_G = c - d (e.g. c = 1, d = 1/2: z_G = 1/2, "
-                         "z_B = -1/4). The sentence appears twice on the page, with the same words: a slip of the "
-                         "lesson, not of the transcription.",
+                         ("The buoyancy acts at the centre of buoyancy $z_B = -d/2$, the centroid of the displaced "
+                          "water (the formula list says so); $z_G = c - d$, the centre of the hull, is where gravity "
+                          "acts. As printed the sentence puts the buoyancy at $z_G = c - d$ (e.g. $c = 1$, $d = "
+                          r"\tfrac12$: $z_G = \tfrac12$, $z_B = -\tfrac14$). The sentence appears twice on the page, "
+                          "with the same words: a slip of the lesson, not of the transcription."),
                          corrected_reading=(z_G, c - d), places=(L6,),
                          objection="'Schwerpunkt' alone may mean the centroid of the displaced water, which is where "
                                    "the buoyancy acts.",
-                         answer="The sentence names it by the symbol z_G and gives it the value c - d, the page's "
-                                "symbols for the hull's centre of gravity; the displaced water's centroid is z_B = "
-                                "-d/2 on the same page."),
+                         answer=("The sentence names it by the symbol $z_G$ and gives it the value $c - d$, the "
+                                 "page's symbols for the hull's centre of gravity; the displaced water's centroid is "
+                                 "$z_B = -d/2$ on the same page.")),
          note="read as: the point where the buoyancy acts is at height c - d")
 dv.quote("below-G", L5, "Wenn der Metazentrum über oder unter dem Schwerpunkt liegt",
          reading=Holds(sp.Implies(sp.Ne(z_M, z_G), stable_margin < 0)),
          erratum=Erratum("misprint", "medium", r"\text{Wenn das Metazentrum unter dem Schwerpunkt liegt}",
-                         "The paragraph, headed 'Metazentrum unterhalb des Schwerpunkts', concludes that the system "
-                         "becomes unstable; by the lesson's own criterion z_M >= z_G that holds for M below G only. "
-                         "'über oder unter' makes every hull with M above G unstable too, against the paragraph "
-                         "'Stabile Situation' just before it (e.g. b = 3/2, c = 1, d = 1/2: z_M - z_G = 3/4 > 0, "
-                         "stable). Read: wherever M is not at G the hull is unstable.",
+                         ("The paragraph, headed 'Metazentrum unterhalb des Schwerpunkts', concludes that the system "
+                          r"becomes unstable; by the lesson's own criterion $z_M \ge z_G$ that holds for $M$ below "
+                          "$G$ only. 'über oder unter' makes every hull with $M$ above $G$ unstable too, against the "
+                          r"paragraph 'Stabile Situation' just before it (e.g. $b = \tfrac32$, $c = 1$, $d = "
+                          r"\tfrac12$: $z_M - z_G = \tfrac34 > 0$, stable). Read: wherever $M$ is not at $G$ the hull "
+                          "is unstable."),
                          corrected_reading=Holds(sp.Implies(z_M < z_G, stable_margin < 0)),
                          objection="'über oder unter' may open a case distinction ('whether above or below ...') of "
                                    "which the paragraph treats the 'below' case only.",
@@ -177,11 +179,11 @@ dv.quote("wide-hull", L4, "Mit anderen Worten: Stabilität wird mit großen Wert
          reading=Holds(sp.Implies(2 * b > d, stable_margin > 0)),
          erratum=Erratum("claim", "high", r"\text{Stabilität bei jedem Tiefgang, wenn } b/c > \sqrt{3/2} "
                          r"\text{ (Breite groß gegen die Höhe)}",
-                         "e = b^2/(6c^2) - s(1 - s) with s = d/(2c), and s(1 - s) <= 1/4: every draught is stable "
-                         "when b/c > sqrt(3/2), so what matters is the breadth against the height 2c, not against "
-                         "the draught. As printed ('breadth greater than draught' makes the hull stable) it fails: "
-                         "b = 0.9 c, d = 0.8 c has 2b > d but e = 0.135 - 0.24 < 0 (z_M - z_G = -0.2625 c), "
-                         "unstable. A claim of the lesson.",
+                         (r"$e = b^2/(6c^2) - s(1 - s)$ with $s = d/(2c)$, and $s(1 - s) \le 1/4$: every draught is "
+                          r"stable when $b/c > \sqrt{3/2}$, so what matters is the breadth against the height $2c$, "
+                          "not against the draught. As printed ('breadth greater than draught' makes the hull "
+                          r"stable) it fails: $b = 0.9\, c$, $d = 0.8\, c$ has $2b > d$ but $e = 0.135 - 0.24 < 0$ "
+                          r"($z_M - z_G = -0.2625\, c$), unstable. A claim of the lesson."),
                          corrected_reading=Holds(sp.Implies(b > sp.sqrt(sp.Rational(3, 2)) * c, stable_margin > 0)),
                          objection="'Große Werte von b/c' is right (e grows with b/c); the parenthesis is a loose "
                                    "gloss, and 'Tiefgang' may stand loosely for the hull's height.",
@@ -194,16 +196,17 @@ dv.quote("displaced-volume-claim", L6, "was bedeutet, dass das verdrängte Wasse
          reading=Holds(V_b >= 8 * a * b * c),
          erratum=Erratum("claim", "high", r"V_b \leq V_s: \text{das verdrängte Wasser nimmt ein kleineres oder "
                          r"gleiches Volumen ein}",
-                         "A floating body weighs less than water of its volume, rho_s <= rho_w; with M_b = M_s, "
-                         "rho_w V_b = rho_s V_s, so V_b / V_s = rho_s / rho_w <= 1: the displaced water takes at most "
-                         "the body's volume (for the box V_b / V_s = d/(2c) < 1, the draught below the height). "
-                         "'gleiches oder größeres' reverses the inequality; it would describe a body that sinks.",
+                         (r"A floating body weighs less than water of its volume, $\rho_s \le \rho_w$; with $M_b = "
+                          r"M_s$, $\rho_w V_b = \rho_s V_s$, so $V_b / V_s = \rho_s / \rho_w \le 1$: the displaced "
+                          "water takes at most the body's volume (for the box $V_b / V_s = d/(2c) < 1$, the draught "
+                          "below the height). 'gleiches oder größeres' reverses the inequality; it would describe a "
+                          "body that sinks."),
                          corrected_reading=Holds(V_b <= 8 * a * b * c),
                          objection="The sentence may speak loosely of the displaced water's weight, which equals the "
                                    "body's.",
-                         answer="It says 'Volumen' and compares the volumes; a floating body's displaced volume is "
-                                "a part of its own, V_b = (d/2c) V_s < V_s for the box, so 'gleiches oder größeres'"
-                                " is false as written."),
+                         answer=("It says 'Volumen' and compares the volumes; a floating body's displaced volume is "
+                                 "a part of its own, $V_b = (d/2c) V_s < V_s$ for the box, so 'gleiches oder "
+                                 "größeres' is false as written.")),
          note="the box: V_s = 8abc; read as V_b >= V_s, 'ein gleiches oder größeres Volumen'")
 
 dv.quote("half-length", L_SHIP, "der Mittlere Länge des Parallelepipeds ($a$)8673, der Halbe Breite des Parallelepipeds "
@@ -212,11 +215,12 @@ dv.quote("half-length", L_SHIP, "der Mittlere Länge des Parallelepipeds ($a$)86
          reading=(sp.Matrix([a, b, c]), sp.Matrix([sp.Integral(1, (x, -a, a)), sp.Integral(1, (y, -b, b)) / 2,
                                                      sp.Integral(1, (z, -d, 2 * c - d)) / 2])),
          erratum=Erratum("misprint", "medium", r"\text{der Halbe Länge des Parallelepipeds } (a)",
-                         "The box is 2a x 2b x 2c, so a is half its length, as b and c are the halves of the "
-                         "breadth and the height ('Halbe Breite', 'Halbe Höhe'), and the lesson's own formulas use "
-                         "it so: M_s = 8abc rho_s, V_b = 4abd. 'Mittlere Länge' (mean length) names the whole length "
-                         "2a of a box of constant length. The same name is the page's label of a in every list "
-                         "and sentence after it (the variable's glossary entry): one fault at eight places.",
+                         (r"The box is $2a \times 2b \times 2c$, so $a$ is half its length, as $b$ and $c$ are the "
+                          "halves of the breadth and the height ('Halbe Breite', 'Halbe Höhe'), and the lesson's own "
+                          r"formulas use it so: $M_s = 8abc \rho_s, V_b = 4abd$. 'Mittlere Länge' (mean length) names "
+                          "the whole length $2a$ of a box of constant length. The same name is the page's label of "
+                          "$a$ in every list and sentence after it (the variable's glossary entry): one fault at "
+                          "eight places."),
                          corrected_reading=(sp.Matrix([a, b, c]),
                                             sp.Matrix([sp.Integral(1, (x, -a, a)) / 2, sp.Integral(1, (y, -b, b)) / 2,
                                                        sp.Integral(1, (z, -d, 2 * c - d)) / 2])),
@@ -236,19 +240,20 @@ dv.says("moving-centroid", "Definition der Position des Metazentrums",
         erratum=Erratum("claim", "low",
                         r"\text{indem der Schwerpunkt des verdrängten Wassers (des eingetauchten Querschnitts) "
                         r"\ldots bestimmt wird}",
-                        "The centroid whose shift on heel gives the metacentre is that of the displaced water: the "
-                        "next section is 'Berechnung der Lage des Massenschwerpunktes des verdrängten Wassers' and "
-                        "moves the two wedge triangles of the immersed section, b^2 tg phi/(3d). The tilted body's "
-                        "own centroid is fixed in the body (z_G = c - d throughout the lesson): across the ship it "
-                        "stays on the centre line, shift 0, whatever the heel.",
+                        ("The centroid whose shift on heel gives the metacentre is that of the displaced water: the "
+                         "next section is 'Berechnung der Lage des Massenschwerpunktes des verdrängten Wassers' and "
+                         r"moves the two wedge triangles of the immersed section, $b^2 \operatorname{tg} "
+                         r"\varphi/(3d)$. The tilted body's own centroid is fixed in the body ($z_G = c - d$ "
+                         "throughout the lesson): across the ship it stays on the centre line, shift $0$, whatever "
+                         "the heel."),
                         corrected_reading=dv.reads("Schwerpunkt des verdrängten Wassers", Is(x_t * A_t / A_q)),
                         objection="'Der Schwerpunkt des gekippten Körpers' may mean the centroid of the body's "
                                   "immersed part, as the same sentence's condition 'die Fläche unter der Wasserlinie"
                                   " ... konstant' concerns the immersed section.",
-                        answer="The page keeps 'Körper' for the hull (z_G) and the displaced water for z_B, and "
-                               "the next section is titled 'Massenschwerpunkt des verdrängten Wassers'; but the "
-                               "sentence's own condition supports the loose reading, so the objection is not fully"
-                               " answered: lowered to low."),
+                        answer=("The page keeps 'Körper' for the hull ($z_G$) and the displaced water for $z_B$, "
+                                "and the next section is titled 'Massenschwerpunkt des verdrängten Wassers'; but "
+                                "the sentence's own condition supports the loose reading, so the objection is not "
+                                "fully answered: lowered to low.")),
         note="Read as: the centroid named is the one whose shift across the ship the lesson computes by the moment "
              "theorem, (2b/3) A_t/A_q.")
 
@@ -328,22 +333,22 @@ dv.quote("metacentre-from-radius", "formula list", "Die Berechnung von die Höhe
 dv.quote("F_b", "formula list", r"$ F_b = \rho_w V_b g $", reading=(F_b, rho_w * V_b * g))
 dv.quote("F_g", "formula list", r"$ F_g = m_g g $", reading=(F_g, m_g * g),
          erratum=Erratum("misprint", "low", "F_g = M_s g",
-                         "The sentence before introduces the weight with the mass of the floating object M_s; m_g is "
-                         "defined nowhere on the page (a symbol of the site's general gravity lesson). With M_s the "
-                         "chain F_b = M_b g = M_s g = F_g below closes.",
+                         ("The sentence before introduces the weight with the mass of the floating object $M_s$; "
+                          "$m_g$ is defined nowhere on the page (a symbol of the site's general gravity lesson). "
+                          "With $M_s$ the chain $F_b = M_b g = M_s g = F_g$ below closes."),
                          corrected_reading=(F_g, M_s * g),
-                         objection="m_g may be the site's general symbol for the gravitating mass, here the hull's "
-                                   "M_s: a correct formula.",
-                         answer="On this page the floating object's mass is M_s and m_g is defined nowhere; the "
-                                "formula holds only by identifying the two, which the page does not do (hence low)."))
+                         objection=("$m_g$ may be the site's general symbol for the gravitating mass, here the "
+                                    "hull's $M_s$: a correct formula."),
+                         answer=("On this page the floating object's mass is $M_s$ and $m_g$ is defined nowhere; the "
+                                 "formula holds only by identifying the two, which the page does not do (hence low).")))
 dv.quote("F_b=F_g", "formula list", r"$F_b = \rho_w V_w g = M_w g = M_s g = F_g$",
          reading=(F_b, rho_w * V_w * g, M_w * g, M_s * g, F_g),
          erratum=Erratum("misprint", "low", r"F_b = \rho_w V_b g = M_b g = M_s g = F_g",
-                         "The page names the displaced volume V_b and the displaced mass M_b (formula list); V_w and "
-                         "M_w are defined nowhere. With V_b and M_b the chain is Archimedes' principle, rho_w V_b g = "
-                         "M_b g, and M_b = M_s. A naming slip of the lesson.",
+                         ("The page names the displaced volume $V_b$ and the displaced mass $M_b$ (formula list); "
+                          "$V_w$ and $M_w$ are defined nowhere. With $V_b$ and $M_b$ the chain is Archimedes' "
+                          r"principle, $\rho_w V_b g = M_b g$, and $M_b = M_s$. A naming slip of the lesson."),
                          corrected_reading=(F_b, rho_w * V_b * g, M_b * g, M_s * g, F_g),
-                         objection="V_w and M_w may be the site's general names for the displaced water's volume and "
-                                   "mass.",
-                         answer="The page names them V_b and M_b in its formula list and never defines V_w, M_w; the "
-                                "chain holds by identifying them (hence low)."))
+                         objection=("$V_w$ and $M_w$ may be the site's general names for the displaced water's "
+                                    "volume and mass."),
+                         answer=("The page names them $V_b$ and $M_b$ in its formula list and never defines $V_w, "
+                                 "M_w$; the chain holds by identifying them (hence low).")))

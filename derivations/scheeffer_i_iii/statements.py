@@ -142,20 +142,20 @@ d.quote("fig3-labels", "I, Fig. 3",
         erratum=Erratum("transcription", "high",
                         r"\text{die durch die Schwimmachse } S S_1 \ldots \; A_1 B_1 \text{ sei die alte, } A B "
                         r"\text{ die neue Wasserlinie}",
-                        "The scan read the subscript 1 as a comma twice. 'S S ,' names no axis: the floating axis "
-                        "is S S_1 (section I: 'Die Schwimmachse S S_1', 'S S_1 werde mit e_1 ... bezeichnet'); "
-                        "'A, B, sei die alte, A B die neue Wasserlinie' gives the old and the new waterline the "
-                        "same letters, which the rotation by phi separates, while section II ('wie in Fig. 3') "
-                        "writes 'A B die neue, A_1 B_1 die alte Wasserlinie'. A comma for a subscript 1 after a "
-                        "letter is the scan's, not the printer's (high).",
+                        ("The scan read the subscript 1 as a comma twice. '$S S$ ,' names no axis: the floating axis "
+                         "is $S S_1$ (section I: 'Die Schwimmachse $S S_1$', '$S S_1$ werde mit $e_1$ ... "
+                         "bezeichnet'); '$A$, $B$, sei die alte, $A B$ die neue Wasserlinie' gives the old and the "
+                         r"new waterline the same letters, which the rotation by $\varphi$ separates, while section "
+                         "II ('wie in Fig. 3') writes '$A B$ die neue, $A_1 B_1$ die alte Wasserlinie'. A comma for "
+                         "a subscript 1 after a letter is the scan's, not the printer's (high)."),
                         corrected_reading=(sp.Matrix([SS1.dot(SS1), ev.dot(sp.Matrix([1, 0]))]),
                                            sp.Matrix([e1 ** 2, sp.cos(phi)])),
                         objection="The commas may be the print's punctuation: 'A, B,' a list of the two points, 'S "
                                   "S,' the axis named by S and a point of the figure.",
-                        answer="Read so, the old and the new waterline both are A B, which the rotation by phi "
-                               "separates; section II ('wie in Fig. 3') writes 'A B die neue, A_1 B_1 die alte "
-                               "Wasserlinie', and the floating axis is S S_1 throughout section I. A subscript 1 "
-                               "read as a comma is the scan's."))
+                        answer=("Read so, the old and the new waterline both are $A B$, which the rotation by "
+                                r"$\varphi$ separates; section II ('wie in Fig. 3') writes '$A B$ die neue, $A_1 B_1$ "
+                                "die alte Wasserlinie', and the floating axis is $S S_1$ throughout section I. A "
+                                "subscript 1 read as a comma is the scan's.")))
 d.quote("archimedes-3-4", "I",
         "Nach dem Archimedischen Gesetz muss das Volumen des neu eintauchenden Körperteils gleich dem Volumen des neu "
         "heraustretenden sein.", reading=(V3, V4), note="the wedge volumes of section II, integrated over the waterplane")
@@ -328,36 +328,37 @@ d.quote("stable-V1m", "(15)", "so muss (nach 9 und 12)  $V_1 m$  und folglich",
         note="read as: the condition the sentence puts on V1 m (as transcribed: none, every V1 m) is equivalent "
              "to (15), by (12): so (15) would hold everywhere",
         erratum=Erratum("transcription", "high", r"\text{so muss (nach 9 und 12) } V_1 m > 0 \text{ und folglich}",
-                        "The sentence has no predicate for V1 m: 'so muss V1 m und folglich (15) sein'. Stability "
-                        "is (2), V1 m > 0, and by (12) V1 m = sin(phi) times the bracket of (15) with sin(phi) > 0, "
-                        "so V1 m > 0 exactly when the bracket is positive: the lost words are '> 0' (or "
-                        "'positiv'). The parallel sentence of the labile case has lost its '< 0' in the same way; "
-                        "a relation sign dropped after an inline formula is the scan's (high). The reference "
-                        "'nach 9' is left as printed (the numbering has gaps and no display of the transcription "
-                        "carries (9)).",
+                        ("The sentence has no predicate for $V_1 m$: 'so muss V1 m und folglich (15) sein'. "
+                         r"Stability is (2), $V_1 m > 0$, and by (12) $V_1 m = \sin\varphi$ times the bracket of (15) "
+                         r"with $\sin\varphi > 0$, so $V_1 m > 0$ exactly when the bracket is positive: the lost "
+                         "words are '$> 0$' (or 'positiv'). The parallel sentence of the labile case has lost its "
+                         "'$< 0$' in the same way; a relation sign dropped after an inline formula is the scan's "
+                         "(high). The reference 'nach 9' is left as printed (the numbering has gaps and no display "
+                         "of the transcription carries (9))."),
                         corrected_reading=Iff(V1 * m > 0, crit15 > 0),
-                        objection="'so muss V_1 m und folglich ... sein' may be the author's ellipsis, the predicate"
-                                  " of V_1 m understood from the stability condition (2).",
-                        answer="'muss ... sein' asks for a predicate to each member, and the second member carries "
-                               "its '> 0' in (15); the stability condition (2) is V_1 m > 0, and by (12) V_1 m has "
-                               "the sign of the bracket of (15). The parallel labile sentence lost its '< 0' in the "
-                               "same place, after an inline formula, where this scan drops relation signs."))
+                        objection=("'so muss $V_1 m$ und folglich ... sein' may be the author's ellipsis, the "
+                                   "predicate of $V_1 m$ understood from the stability condition (2)."),
+                        answer=("'muss ... sein' asks for a predicate to each member, and the second member carries "
+                                "its '$> 0$' in (15); the stability condition (2) is $V_1 m > 0$, and by (12) $V_1 "
+                                "m$ has the sign of the bracket of (15). The parallel labile sentence lost its '$< "
+                                "0$' in the same place, after an inline formula, where this scan drops relation "
+                                "signs.")))
 d.quote("labile-V1m", "after (15)", "so ist  $V_1 m$  und daher",
         reading=Holds(crit15 < 0),
         note="read as: the condition the sentence puts on V1 m (as transcribed: none) is equivalent to the "
              "bracket being negative, by (12): so the bracket would be negative everywhere",
         erratum=Erratum("transcription", "high", r"\text{so ist } V_1 m < 0 \text{ und daher}",
-                        "As in the stable case the relation of V1 m is lost: 'so ist V1 m und daher ... < 0'. The "
-                        "labile position has V1 m < 0 ((2) fails), and by (12) V1 m < 0 exactly when the bracket "
-                        "(1 + tg^2(phi)/2) T1 - V1 e1 is negative (sin(phi) > 0): the lost words are '< 0' (or "
-                        "'negativ'). For the labile initial position this holds for the small rotations, below "
-                        "the zero phi_1 of the increasing bracket (IV (27)). The scan's loss, as in the stable "
-                        "case (high).",
+                        ("As in the stable case the relation of $V_1 m$ is lost: 'so ist V1 m und daher ... < 0'. "
+                         "The labile position has $V_1 m < 0$ ((2) fails), and by (12) $V_1 m < 0$ exactly when the "
+                         r"bracket $(1 + \operatorname{tg}^2\varphi/2)\, T_1 - V_1 e_1$ is negative ($\sin\varphi > "
+                         "0$): the lost words are '$< 0$' (or 'negativ'). For the labile initial position this holds "
+                         r"for the small rotations, below the zero $\varphi_1$ of the increasing bracket (IV (27)). "
+                         "The scan's loss, as in the stable case (high)."),
                         corrected_reading=Iff(V1 * m < 0, crit15 < 0),
                         objection="As in the stable case, an ellipsis of the author, the predicate understood.",
-                        answer="The second member carries its '< 0', and the labile position is the failure of (2), "
-                               "V_1 m < 0, which by (12) has the sign of the bracket; the same loss after an inline "
-                               "formula as in the stable sentence is the scan's."))
+                        answer=("The second member carries its '$< 0$', and the labile position is the failure of "
+                                "(2), $V_1 m < 0$, which by (12) has the sign of the bracket; the same loss after an "
+                                "inline formula as in the stable sentence is the scan's.")))
 d.quote("stable-15", "(15)",
         r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - V_1 e_1 > 0 \text{ sein.} \quad (15)$$",
         reading=(sp.sign(V1 * m), sp.sign(crit15)),
@@ -412,17 +413,18 @@ d.quote("general-body", "III, arbitrary body",
 d.quote("duhamel-18", "(18)", r"$$\frac{T_1}{V_1} = e_1 > 0. \quad (18)$$",
         reading=(T1 / V1, e1),
         erratum=Erratum("transcription", "high", r"\frac{T_1}{V_1} - e_1 > 0",
-                        "The condition follows from (16), m = phi (T1/V1 - e1), whose sign decides: T1/V1 - e1 > 0. "
-                        "The '=' is the scan's reading of a minus (a known fault of this transcription); printed "
-                        "as an equation the line would fix T1/V1 = e1, the boundary case, and '= e1 > 0' would "
-                        "make no condition. Duhamel's sentence quoted right after states the difference.",
+                        (r"The condition follows from (16), $m = \varphi\, (T_1/V_1 - e_1)$, whose sign decides: "
+                         "$T_1/V_1 - e_1 > 0$. The '$=$' is the scan's reading of a minus (a known fault of this "
+                         "transcription); printed as an equation the line would fix $T_1/V_1 = e_1$, the boundary "
+                         "case, and '$= e_1 > 0$' would make no condition. Duhamel's sentence quoted right after "
+                         "states the difference."),
                         corrected_reading=(sp.sign(m1), sp.sign(T1 / V1 - e1)),
-                        objection="'T_1/V_1 = e_1 > 0' may be a chain meant as printed: the boundary T_1/V_1 = e_1 "
-                                  "together with e_1 > 0.",
-                        answer="(16), m = phi (T_1/V_1 - e_1), makes the sign of the difference the condition, and "
-                               "Duhamel's sentence quoted next states the difference; an equation would fix the "
-                               "boundary case only. The scan reads the minus as '=' elsewhere in this "
-                               "transcription."))
+                        objection=("'$T_1/V_1 = e_1 > 0$' may be a chain meant as printed: the boundary $T_1/V_1 = "
+                                   "e_1$ together with $e_1 > 0$."),
+                        answer=(r"(16), $m = \varphi (T_1/V_1 - e_1)$, makes the sign of the difference the "
+                                "condition, and Duhamel's sentence quoted next states the difference; an equation "
+                                "would fix the boundary case only. The scan reads the minus as '$=$' elsewhere in "
+                                "this transcription.")))
 d.quote("duhamel-statement", "III, Duhamel",
         "nur muss dann die Entfernung dieser beiden Punkte kleiner sein als das kleinste der Trägheitsmomente der "
         "Schnittfläche des Körpers mit der Wasseroberfläche in Bezug auf die durch ihren Schwerpunkt gezogenen "

@@ -354,17 +354,17 @@ d.quote("32", "(32)", r"$$\left. \begin{aligned} T_1 \left( 1 + \frac{1}{2} \ope
         note="the two equilibrium moments over their factors sin phi_1, tan phi_1 must vanish",
         erratum=Erratum("transcription", "medium", r"T_1 \left(1 + \tfrac12 \operatorname{tg}^2\varphi_1\right) - "
                         r"V_1 e_1 = 0",
-                        "The transcription has V_1 e^1, a quantity never defined; the same condition two lines "
-                        "earlier (and (27), (34)) reads V_1 e_1. Scheeffer writes superscript 1 for a prime "
-                        "(T_1^1), so e^1 is a misplaced index of the scan rather than a new symbol; a slip of the "
-                        "printer cannot be excluded.",
+                        "The transcription has $V_1 e^1$, a quantity never defined; the same condition two lines "
+                        "earlier (and (27), (34)) reads $V_1 e_1$. Scheeffer writes superscript 1 for a prime "
+                        "($T_1^1$), so $e^1$ is a misplaced index of the scan rather than a new symbol; a slip of "
+                        "the printer cannot be excluded.",
                         corrected_reading=(sp.Matrix([V1 * res(m).subs(phi, phi1) / sp.sin(phi1), M2 / t1]),
                                            sp.Matrix([T1 * (1 + t1 ** 2 / 2) - V1 * e1, P])),
-                        objection="e^1 may be a symbol of its own: Scheeffer writes a superscript 1 for a prime "
-                                  "(T_1^1), so V_1 e^1 could name a second distance e' of the section.",
+                        objection="$e^1$ may be a symbol of its own: Scheeffer writes a superscript 1 for a prime "
+                                  "($T_1^1$), so $V_1 e^1$ could name a second distance $e'$ of the section.",
                         answer="No e with a superscript is defined anywhere, and the same condition two lines "
-                               "earlier, like (27) and (34), reads V_1 e_1; an index set high instead of low is the "
-                               "scan's usual fault, but the print may have had it, hence medium."))
+                               "earlier, like (27) and (34), reads $V_1 e_1$; an index set high instead of low is "
+                               "the scan's usual fault, but the print may have had it, hence medium."))
 d.quote("33-words", "(33)",
         "Soll nun die Gleichgewichtslage ( $\\varphi_1$ ) eine stabile sein, so muss nach dem Duhamel'schen Satze (18)",
         reading=(D2, sp.Min(T1 / c ** 3, T11 / c) - T1 / c),
@@ -397,41 +397,41 @@ d.quote("37", "(37)", r"$$\begin{aligned} T &= \int_2 \zeta^2 df_2 = \cos^2 \mu 
              "(df = df_2 cos phi_1, ratio-df), over the waterplane II: int_2 u_2 v_2 df = cos phi_1 int_2 u_2 v_2 df_2",
         erratum=Erratum("transcription", "low",
                         r"T = T_2 \cos^2 \mu + T_2^1 \sin^2 \mu + \sin 2\mu \int_2 u_2 v_2 \, df_2",
-                        "The first line of (37) has sin 2mu int_2 u_2 v_2 df_2; the second, which only renames "
-                        "int_2 u_2^2 df_2 and int_2 v_2^2 df_2 as T_2 and T_2^1, repeats the term with df. The text "
-                        "defines df as the element of the waterplane I, the projection of df_2 (next line; (38*) "
-                        "pairs int_2 with df_2 and int_1 with df throughout), so int_2 u_2 v_2 df differs from "
-                        "int_2 u_2 v_2 df_2 by the factor cos phi_1 unless the integral vanishes. Harmless for (39), "
-                        "(40), where it is zero. A lost subscript 2: more likely the scan's than the printer's, but "
-                        "the text cannot tell (low).",
+                        r"The first line of (37) has $\sin 2\mu \int_2 u_2 v_2 df_2$; the second, which only renames "
+                        r"$\int_2 u_2^2 df_2$ and $\int_2 v_2^2 df_2$ as $T_2$ and $T_2^1$, repeats the term with "
+                        "$df$. The text defines $df$ as the element of the waterplane I, the projection of $df_2$ "
+                        r"(next line; (38*) pairs $\int_2$ with $df_2$ and $\int_1$ with $df$ throughout), so $\int_2 "
+                        r"u_2 v_2 df$ differs from $\int_2 u_2 v_2 df_2$ by the factor $\cos \varphi_1$ unless the "
+                        "integral vanishes. Harmless for (39), (40), where it is zero. A lost subscript 2: more "
+                        "likely the scan's than the printer's, but the text cannot tell (low).",
                         corrected_reading=as_printed(lambda: (Tmu, sp.cos(mu) ** 2 * T2 + sp.sin(mu) ** 2 * T21 + sp.sin(2 * mu) * P2,
                                                               T2 * sp.cos(mu) ** 2 + T21 * sp.sin(mu) ** 2 + sp.sin(2 * mu) * P2)),
                         objection="df in the second line may be Scheeffer's loose writing for the element of "
-                                  "whatever plane the integral's index names, int_2 ... df meaning the integral over"
-                                  " plane II.",
-                        answer="The first line of (37) writes df_2 under int_2, and the next lines (38*) keep df_2 "
-                               "with int_2 and df with int_1 apart, the two differing by cos phi_1; so the print "
-                               "distinguishes them here too. Whether print or scan lost the subscript 2 cannot be "
-                               "told, and the term vanishes in (39), (40): low."))
+                                  r"whatever plane the integral's index names, $\int_2 \dots df$ meaning the integral "
+                                  "over plane II.",
+                        answer=r"The first line of (37) writes $df_2$ under $\int_2$, and the next lines (38*) keep "
+                               r"$df_2$ with $\int_2$ and $df$ with $\int_1$ apart, the two differing by $\cos "
+                               r"\varphi_1$; so the print distinguishes them here too. Whether print or scan lost the "
+                               "subscript 2 cannot be told, and the term vanishes in (39), (40): low."))
 d.quote("38-projection", "(38)", r"$$df = \frac{df_2}{\cos \varphi_1} \quad u = \frac{u_2}{\cos \varphi_1} \quad "
                                  r"v = \frac{v_2}{\cos \varphi_1}$$",
         reading=(sp.Matrix([rdf, ru, rv]), sp.Matrix([1 / sp.cos(phi1)] * 3)),
         note="read as the ratios df/df_2, u/u_2, v/v_2",
         erratum=Erratum("misprint", "medium",
                         r"df_2 = \frac{df}{\cos\varphi_1},\quad u_2 = \frac{u}{\cos\varphi_1},\quad v_2 = v",
-                        "The waterplane I is the projection of II along the prism axis: lengths across EF shrink "
-                        "by cos phi_1, lengths along EF are kept, so df = df_2 cos phi_1, u = u_2 cos phi_1, "
-                        "v = v_2. The printed relations invert the first two and wrongly scale v; the next lines "
-                        "(38*) are right and need exactly the corrected relations (int_1 v^2 df / cos phi_1 needs "
-                        "v_2 = v). Three consistent inversions are unlikely to be a scan fault: a slip of the "
-                        "author or printer (roles of the planes exchanged), medium confidence.",
+                        "The waterplane I is the projection of II along the prism axis: lengths across EF shrink by "
+                        r"$\cos \varphi_1$, lengths along EF are kept, so $df = df_2 \cos \varphi_1, u = u_2 \cos "
+                        r"\varphi_1, v = v_2$. The printed relations invert the first two and wrongly scale $v$; the "
+                        r"next lines (38*) are right and need exactly the corrected relations ($\int_1 v^2 df / \cos "
+                        r"\varphi_1$ needs $v_2 = v$). Three consistent inversions are unlikely to be a scan fault: a "
+                        "slip of the author or printer (roles of the planes exchanged), medium confidence.",
                         corrected_reading=(sp.Matrix([rdf, ru, rv]), sp.Matrix([sp.cos(phi1), sp.cos(phi1), 1])),
                         objection="The roles of the planes may be as printed if plane II, not I, is the projection; "
-                                  "then df = df_2/cos phi_1 and u = u_2/cos phi_1 would be right.",
-                        answer="v = v_2/cos phi_1 is wrong in either direction, since lengths along EF are kept by "
-                               "the projection, and (38*) that follows needs v_2 = v (int_1 v^2 df / cos phi_1) and "
-                               "df = df_2 cos phi_1. Three coherent inversions are no scan fault; author or printer "
-                               "cannot be told, hence medium."))
+                                  r"then $df = df_2/\cos \varphi_1$ and $u = u_2/\cos \varphi_1$ would be right.",
+                        answer=r"$v = v_2/\cos \varphi_1$ is wrong in either direction, since lengths along EF are "
+                               r"kept by the projection, and (38*) that follows needs $v_2 = v$ ($\int_1 v^2 df / "
+                               r"\cos \varphi_1$) and $df = df_2 \cos \varphi_1$. Three coherent inversions are no "
+                               "scan fault; author or printer cannot be told, hence medium."))
 d.quote("38", "(38)", r"$$\left. \begin{aligned} T_2 &= \int_2 u_2^2 df_2 = \int_1 \frac{u^2 \cdot df}{\cos^3 "
                       r"\varphi_1} = \frac{T_1}{\cos^3 \varphi_1} \\ T_2^1 &= \int_2 v_2^2 df_2 = \int_1 \frac{v^2 "
                       r"df}{\cos \varphi_1} = \frac{T_1^1}{\cos \varphi_1} \\ \int_2 u_2 v_2 df_2 &= \frac{1}"
@@ -485,17 +485,17 @@ d.quote("43a", "(43a)", r"$$\frac{T_1^1}{\cos \varphi_2} - \frac{T_1}{\cos \varp
         reading=(Tm1 - V1 * e2, T11 / sp.cos(phi2) - T1 / sp.cos(phi2)),
         note="read as the quantity whose sign decides, T = T_m^1",
         erratum=Erratum("misprint", "medium", r"\frac{T_1^1}{\cos\varphi_1} - \frac{T_1}{\cos\varphi_1} > 0",
-                        "phi_2 is never defined; the condition is (43) with T = T_m^1 = T_1^1/cos phi_1 from (42), "
-                        "so both denominators are cos phi_1. The index 2 appears twice, which points to the print "
-                        "(perhaps contaminated by T_2, e_2 nearby) rather than a scan confusion of 1 and 2; the "
-                        "conclusion T_1^1 > T_1 is unaffected.",
+                        r"$\varphi_2$ is never defined; the condition is (43) with $T = T_m^1 = T_1^1/\cos \varphi_1$ "
+                        r"from (42), so both denominators are $\cos \varphi_1$. The index 2 appears twice, which "
+                        "points to the print (perhaps contaminated by $T_2$, $e_2$ nearby) rather than a scan "
+                        "confusion of 1 and 2; the conclusion $T_1^1 > T_1$ is unaffected.",
                         corrected_reading=(Tm1 - V1 * e2, T11 / c - T1 / c),
-                        objection="The 2 of phi_2 may be the scan's reading of a 1, a fault of the transcription "
-                                  "rather than of the print.",
-                        answer="The same line reads the subscripts of T_1^1 and T_1 as 1 correctly, and 1 read as 2 "
-                               "is no usual confusion of this scan; the index 2 twice points to the print (T_2, e_2 "
-                               "stand nearby). The correction follows from (42), T = T_1^1/cos phi_1, but the print "
-                               "cannot be seen, so medium."))
+                        objection=r"The 2 of $\varphi_2$ may be the scan's reading of a 1, a fault of the "
+                                  "transcription rather than of the print.",
+                        answer="The same line reads the subscripts of $T_1^1$ and $T_1$ as 1 correctly, and 1 read "
+                               "as 2 is no usual confusion of this scan; the index 2 twice points to the print "
+                               r"($T_2$, $e_2$ stand nearby). The correction follows from (42), $T = T_1^1/\cos "
+                               r"\varphi_1$, but the print cannot be seen, so medium."))
 d.quote("43a-conclusion", "(43a)", r"\text{ oder } T_1^1 > T_1 \quad (43a)$$",
         reading=(Tm1 - V1 * e2, (T11 - T1) / c), note="cos phi_1 > 0: the condition is T_1^1 > T_1")
 d.quote("T-Tm1", "(43a)", r"Es bleibt also nur ( $T = T_m^1$  gesetzt)", reading=(Tm1, T11 / c),
@@ -602,14 +602,14 @@ d.quote("51-claim", "(51)",
 d.quote("52", "(52)", r"$$\operatorname{tg} \varphi_1 = \sqrt{2 \left( \frac{V_1 c_1}{T_1} - 1 \right)} \quad (52)$$",
         reading=(t1, sp.sqrt(2 * (V1 * c1 / T1 - 1))),
         erratum=Erratum("transcription", "high", r"\operatorname{tg}\varphi_1 = \sqrt{2\left(\frac{V_1 e_1}{T_1} - 1\right)}",
-                        "(52) is (27) repeated ('ist zu berechnen aus Gleichung 27'); c_1 is never defined and 'c' "
+                        "(52) is (27) repeated ('ist zu berechnen aus Gleichung 27'); $c_1$ is never defined and 'c' "
                         "for 'e' is a common scan confusion.",
                         corrected_reading=(t1, sp.sqrt(2 * (V1 * e1 / T1 - 1))),
-                        objection="c_1 may be a quantity of the author's, a distance c of the first section that the"
-                                  " transcription does not show defined.",
-                        answer="The text says (52) 'ist zu berechnen aus Gleichung 27', and (27) has V_1 e_1; no c_1"
-                               " is defined in sections I-V, and c read for e is a common glyph confusion of the "
-                               "scan."))
+                        objection="$c_1$ may be a quantity of the author's, a distance $c$ of the first section that "
+                                  "the transcription does not show defined.",
+                        answer="The text says (52) 'ist zu berechnen aus Gleichung 27', and (27) has $V_1 e_1$; no "
+                               "$c_1$ is defined in sections I-V, and c read for e is a common glyph confusion of "
+                               "the scan."))
 d.quote("52-condition", "(52)", r"$$\frac{T_1}{V_1} - e_1 < 0 \text{ ist.}$$",
         reading=(slope, T1 / V1 - e1), note="as stable-18")
 law_R = sp.Rational(1, 2) * (Tx - Ty) * sp.sin(2 * om)
@@ -624,16 +624,17 @@ d.quote("law", "V",
                         "Only for prisms whose base has equal principal moments (T_x = T_y: isotropic bases such as "
                         "squares, regular polygons); otherwise int_1 u v df = (T_x - T_y) sin 2 omega / 2 != 0 for "
                         "0 < omega < 90 deg and the turned position is no equilibrium at all.",
-                        "The law is stated for every obliquely stable right prism, but derived (just before) only for "
-                        "T_x = T_y. Counterexample: the 1 x 6/5 rectangle, b = 5/6, s = 1/2 floats stably tilted about "
-                        "its long axis (tan phi_1 = 1/(2 sqrt 3), T_1 = 1/10 < T_1^1 = 18/125, first rotation region); "
-                        "turned by 15 or 30 deg about its axis, the clipped geometry gives int u v df = tan^-1 phi "
-                        "times the moment of the submerged part about the vertical plane through OS = "
-                        "(T_x - T_y) sin 2 omega / 2, not 0. The text before the law (and section VI) means the "
-                        "isotropic case; the claim holds exactly there.",
+                        "The law is stated for every obliquely stable right prism, but derived (just before) only "
+                        r"for $T_x = T_y$. Counterexample: the $1 \times \tfrac65$ rectangle, $b = \tfrac56$, $s = "
+                        r"\tfrac12$ floats stably tilted about its long axis ($\tan \varphi_1 = 1/(2 \sqrt{3})$, $T_1 "
+                        r"= 1/10 < T_1^1 = 18/125$, first rotation region); turned by $15^\circ$ or $30^\circ$ about "
+                        r"its axis, the clipped geometry gives $\int u v\, df = \tan^{-1}\varphi$ times the moment of "
+                        r"the submerged part about the vertical plane through $OS$ $= (T_x - T_y) \sin 2\omega / 2$, "
+                        "not $0$. The text before the law (and section VI) means the isotropic case; the claim holds "
+                        "exactly there.",
                         corrected_reading=(res(Iuv).subs(J, Jsym), law_R),
                         objection="The law is drawn ('so ergibt sich daraus') from the paragraph's assumption 'nach "
-                                  "den obigen Voraussetzungen' that T_1 is the same for every axis through O, so "
+                                  "den obigen Voraussetzungen' that $T_1$ is the same for every axis through O, so "
                                   "'ein gerades Prisma' means a prism of that kind, and for it the law holds.",
                         answer="The law itself, set off in quotation marks, names every obliquely stable right "
                                "prism, and the next sentence compares 'ein gerades Prisma' with the circular "
@@ -653,19 +654,20 @@ d.quote("s-half", "(53)", r"Diese Formel giebt den Grenzwert von  $\varphi_1$  a
                         r"the upper base is reached first iff s > u_m'/(u_m + u_m'); this is s > 1/2 only when the "
                         r"base reaches equally far on both sides of EF (u_m = u_m', e.g. centrally symmetric bases, or "
                         r"EF perpendicular to a symmetry axis)",
-                        "Scheeffer himself distinguishes u_m of the upper (dipping side) and of the lower base (rising "
-                        "side) in (53a), but then decides by s alone. Counterexample: equilateral triangle of side 1, "
-                        "EF parallel to a side, apex dipping (u_m = 1/sqrt 3, u_m' = 1/(2 sqrt 3)), s = 2/5 < 1/2: "
-                        "the clipped prism touches the water with its upper base first (tan = b (1-s) sqrt 3 = 1.039 b "
-                        "< 2 sqrt 3 b s = 1.386 b). Regular prisms with odd n (section VI) are of this kind.",
+                        "Scheeffer himself distinguishes $u_m$ of the upper (dipping side) and of the lower base "
+                        "(rising side) in (53a), but then decides by $s$ alone. Counterexample: equilateral triangle "
+                        r"of side 1, EF parallel to a side, apex dipping ($u_m = 1/\sqrt{3}, u_m' = 1/(2 \sqrt{3})$), "
+                        r"$s = \tfrac25 < \tfrac12$: the clipped prism touches the water with its upper base first "
+                        r"($\tan = b (1-s) \sqrt{3} = 1.039 b < 2 \sqrt{3} b s = 1.386 b$). Regular prisms with odd "
+                        "$n$ (section VI) are of this kind.",
                         corrected_reading=(sstar, ubot / (utop + ubot)),
                         objection="Scheeffer may tacitly assume bases that reach equally far on both sides of EF "
-                                  "(u_m = u_m'), as his examples, the rectangle and the square, do; then s > 1/2 "
-                                  "decides.",
-                        answer="He distinguishes u_m of the dipping and of the rising side himself in (53a), so he "
-                               "does not assume them equal, and the regular prisms of odd n in section VI are his "
-                               "own examples with u_m != u_m' (the triangle at s = 2/5 touches the upper base "
-                               "first)."))
+                                  "($u_m = u_m'$), as his examples, the rectangle and the square, do; then $s > "
+                                  r"\tfrac12$ decides.",
+                        answer="He distinguishes $u_m$ of the dipping and of the rising side himself in (53a), so he "
+                               "does not assume them equal, and the regular prisms of odd $n$ in section VI are his "
+                               r"own examples with $u_m \ne u_m'$ (the triangle at $s = \tfrac25$ touches the upper "
+                               "base first)."))
 d.quote("V1-F1", "(54)", r"$V_1 = F_1 \cdot b s$", reading=(V1, F1 * b * s))
 d.quote("e1-b", "(54)", r"$S S_1 = e_1 = \frac{b}{2} - \frac{b s}{2} = \frac{b}{2}(1 - s)$",
         reading=(e1, b / 2 - b * s / 2, b / 2 * (1 - s)))
@@ -685,15 +687,16 @@ d.quote("55", "(55)", r"$$\operatorname{tg} \varphi_1 \leq \begin{cases} \frac{b
                         r"$\operatorname{tg}\varphi_1 \le \min\left(\frac{b(1-s)}{u_m}, \frac{b s}{u_m'}\right)$, "
                         r"$u_m$, $u_m'$ the farthest points of the base on the dipping and on the rising side of EF; "
                         r"the case split by s is right only for $u_m = u_m'$",
-                        "Both bases must stay out of the water, so both bounds apply; which one is smaller depends on "
-                        "s u_m versus (1-s) u_m', not on s alone. Counterexample (from the clipped geometry): "
-                        "equilateral triangle of side 1, EF parallel to a side, apex dipping, b = 17/25, s = 2/5: (55) "
-                        "admits tan phi_1 up to 2 sqrt 3 b s = 0.942, but the upper base is touched at tan = "
-                        "sqrt 3 b (1-s) = 0.707, and (54) gives tan phi_1 = 0.815 in between: the tilted position of "
-                        "(54) is not in the first rotation region although (55) says it is. Same with the apex "
-                        "rising and s = 3/5 > 1/2 (lower base first).",
+                        "Both bases must stay out of the water, so both bounds apply; which one is smaller depends "
+                        "on $s u_m$ versus $(1-s) u_m'$, not on $s$ alone. Counterexample (from the clipped "
+                        "geometry): equilateral triangle of side 1, EF parallel to a side, apex dipping, $b = "
+                        r"\tfrac{17}{25}$, $s = \tfrac25$: (55) admits $\tan \varphi_1 up to 2 \sqrt{3} b s = 0.942$, "
+                        r"but the upper base is touched at $\tan = \sqrt{3} b (1-s) = 0.707$, and (54) gives $\tan "
+                        r"\varphi_1 = 0.815$ in between: the tilted position of (54) is not in the first rotation "
+                        r"region although (55) says it is. Same with the apex rising and $s = \tfrac35 > \tfrac12$ "
+                        "(lower base first).",
                         corrected_reading=(Lim, sp.Min(b * (1 - s) / utop, b * s / ubot)),
-                        objection="As for s-half: with u_m = u_m' tacitly assumed, the case split by s is right.",
-                        answer="(53a) distinguishes u_m and u_m', and (55) is applied in section VI to regular "
-                               "prisms of odd n, where they differ; for the triangle at b = 17/25, s = 2/5 the tilt "
-                               "of (54) passes the bound that (55) allows."))
+                        objection="As for s-half: with $u_m = u_m'$ tacitly assumed, the case split by $s$ is right.",
+                        answer="(53a) distinguishes $u_m$ and $u_m'$, and (55) is applied in section VI to regular "
+                               r"prisms of odd $n$, where they differ; for the triangle at $b = \tfrac{17}{25}$, $s = "
+                               r"\tfrac25$ the tilt of (54) passes the bound that (55) allows."))

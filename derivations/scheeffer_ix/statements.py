@@ -95,15 +95,16 @@ d.quote("122-words", "(122)", "Nach dem Duhamelschen Satze schwimmt es in dieser
         reading=(sp.sign(GMa), sp.sign(T1 / V1 - e1)), note="the metacentric height of the upright box is (122)'s margin")
 d.quote("T1", "IX.A", r"$$T_1 = \frac{c a^2}{12}$$", reading=(T1, c * a ** 2 / 12),
         erratum=Erratum("transcription", "high", r"T_1 = \frac{c a^3}{12}",
-                        "the moment of the rectangle a x c about its axis parallel to c is c a^3/12; the next "
-                        "display and line 'da T_1 = c a^3/12' of the text use a^3, so the scan lost the exponent 3.",
+                        (r"the moment of the rectangle $a \times c$ about its axis parallel to $c$ is $c a^3/12$; the "
+                         "next display and line 'da $T_1 = c a^3/12$' of the text use $a^3$, so the scan lost the "
+                         "exponent 3."),
                         corrected_reading=(T1, c * a ** 3 / 12),
                         objection="The exponent 2 may be the print's, a compositor's 2 for 3, and then the fault is "
                                   "a misprint, not the scan's.",
-                        answer="The author computed with a^3: the next display divides c a^3 by 12 a b c s, and the "
-                               "text writes 'da T_1 = c a^3/12' again before (125) and in (127), beside T_1^1 = a "
-                               "c^3/12. A small superscript 3 read as 2 in one place, where the author's own later "
-                               "use shows the right form, is the scan's; high stands."))
+                        answer=("The author computed with $a^3$: the next display divides $c a^3$ by $12 a b c s$, "
+                                "and the text writes 'da $T_1 = c a^3/12$' again before (125) and in (127), beside "
+                                "$T_1^1 = a c^3/12$. A small superscript 3 read as 2 in one place, where the "
+                                "author's own later use shows the right form, is the scan's; high stands.")))
 d.quote("V1-e1", "IX.A", r"$V_1 = a b c \cdot s$  und  $e_1 = \frac{b}{2} (1 - s)$",
         reading=(sp.Matrix([V1, e1]), sp.Matrix([a * b * c * s, b / 2 * (1 - s)])))
 d.quote("stability-condition", "IX.A", r"$$\frac{c a^3}{12 a b c s} - \frac{b}{2} (1 - s) > 0.$$",
@@ -326,17 +327,18 @@ d.quote("133-first", "IX.B",
                                                     - 4 * (a / b) ** 2 * (1 - s) ** 2)),
         erratum=Erratum("transcription", "medium",
                         r"\frac{3 m_3}{b} \cdot \left(\frac{x}{b}\right)^3 = \sin \varphi_2 \cdot \left\{ \dots \right\}",
-                        "the centroid of the dry triangle gives 3 m_3 z^3/b = sin phi_2 F(z); the factor 3 is in (133) two "
-                        "lines below, written from this display, so the print most likely had it and the scan lost the "
-                        "leading 3 (medium: the print may also have dropped it). The '= 0' is the equilibrium condition.",
+                        (r"the centroid of the dry triangle gives $3 m_3 z^3/b = \sin \varphi_2 F(z)$; the factor 3 "
+                         "is in (133) two lines below, written from this display, so the print most likely had it "
+                         "and the scan lost the leading 3 (medium: the print may also have dropped it). The '= 0' is "
+                         "the equilibrium condition."),
                         corrected_reading=(3 * M3 / b * z ** 3, sp.sin(phi_z) * Fz),
-                        objection="The display ends in '= 0': at the equilibrium both sides vanish, so without the "
-                                  "factor 3 it is still a true equilibrium condition, and only the sign of m_3 "
-                                  "decides the stability that follows.",
-                        answer="The display first gives m_3 as a function of x, and (133), written from it two lines"
-                               " below, carries 3 m_3; as that identity it is false without the 3, though the factor"
-                               " changes neither the equilibrium nor the sign the text uses. Print or scan lost the "
-                               "leading 3, the scan the likelier: medium."),
+                        objection=("The display ends in '= 0': at the equilibrium both sides vanish, so without the "
+                                   "factor 3 it is still a true equilibrium condition, and only the sign of $m_3$ "
+                                   "decides the stability that follows."),
+                        answer=("The display first gives $m_3$ as a function of $x$, and (133), written from it two "
+                                "lines below, carries $3 m_3$; as that identity it is false without the 3, though "
+                                "the factor changes neither the equilibrium nor the sign the text uses. Print or "
+                                "scan lost the leading 3, the scan the likelier: medium.")),
         note="x/b = z; phi_2 the tilt belonging to z by (134)")
 d.quote("m3-zero", "IX.B", "In der Gleichgewichtslage muss  $m_3 = 0$  sein",
         reading=(sp.Derivative(Ez, phi), sg / (1 - sg) * h_dir.dot(S3phi)),
@@ -461,8 +463,9 @@ d.quote("143", "(143)", r"$$\left(\frac{a}{b}\right)^2 < 2(1-s)(4s-1) \quad (143
 d.quote("144", "(144)", r"$$\left(\frac{a}{b}\right)^2 > 2(1-s)4s-1 \quad (144)$$",
         reading=((a / b) ** 2 - (2 * (1 - s) * 4 * s - 1), F2s / (2 * sg ** 2)),
         erratum=Erratum("transcription", "medium", r"\left(\frac{a}{b}\right)^2 > 2(1-s)(4s-1)",
-                        "the converse of (143) needs the same bound 2(1-s)(4s-1) (F(2 sigma) > 0 by (141)); the scan "
-                        "lost the parentheses around 4s - 1, which changes the bound (e.g. by 1 - 2(1-s) at any s).",
+                        (r"the converse of (143) needs the same bound $2(1-s)(4s-1)$ ($F(2\sigma) > 0$ by (141)); the "
+                         "scan lost the parentheses around $4s - 1$, which changes the bound (e.g. by $1 - 2(1-s)$ "
+                         "at any $s$)."),
                         corrected_reading=((a / b) ** 2 - rho_s, F2s / (2 * sg ** 2)),
                         objection="The print may have set 2(1-s)4s-1 as it stands, the compositor dropping the "
                                   "parentheses, or the author relying on the reader to supply them from (143).",
@@ -501,16 +504,17 @@ d.quote("145", "(145)",
         erratum=Erratum("transcription", "low",
                         r"F(z) = z^4 - \frac{3}{2}z^3 + \sigma n 3z - 4\sigma^2 n = z^4 - \frac{3}{2}z^3 + 3\sigma n"
                         r"(z - \frac{2}{3} \cdot 2\sigma)",
-                        "the last term of F is -4 n sigma^2 (136), and the second form of the same line is right; the "
-                        "middle member lost '^2 n'. A scan that drops a superscript and the following letter is "
-                        "likelier than a misprint in a line whose other half is right, but both are possible (low).",
+                        (r"the last term of $F$ is $-4 n \sigma^2$ (136), and the second form of the same line is "
+                         "right; the middle member lost '${}^2 n$'. A scan that drops a superscript and the "
+                         "following letter is likelier than a misprint in a line whose other half is right, but both "
+                         "are possible (low)."),
                         corrected_reading=(Fz, z ** 4 - sp.Rational(3, 2) * z ** 3 + sg * n * 3 * z - 4 * sg ** 2 * n,
                                            z ** 4 - sp.Rational(3, 2) * z ** 3 + 3 * sg * n * (z - sp.Rational(2, 3) * 2 * sg)),
-                        objection="-4 sigma may be the print's slip, or the author's shorthand for the term he "
-                                  "writes out in the second member.",
-                        answer="(136) has -4 n sigma^2, and the second member of the same line, 3 sigma n(z - "
-                               "(2/3)·2 sigma), expands to it, so the author had the term; whether the print or the "
-                               "scan lost '^2 n' cannot be told: low stands."))
+                        objection=(r"$-4 \sigma$ may be the print's slip, or the author's shorthand for the term he "
+                                   "writes out in the second member."),
+                        answer=(r"(136) has $-4 n \sigma^2$, and the second member of the same line, $3\sigma n(z - "
+                                r"\tfrac23 \cdot 2\sigma)$, expands to it, so the author had the term; whether the "
+                                "print or the scan lost '${}^2 n$' cannot be told: low stands.")))
 d.quote("145-monotone", "IX.B",
         r"Daher muss  $F(z)$  für jeden Wert von  $z$  zwischen  $z = 2\sigma$  und  $z = \infty$  mit wachsendem  $n$  "
         r"zunehmen",
@@ -668,23 +672,25 @@ d.quote("positive-whole-region", "IX.B", r"so ist  $F(z)$  für  $n > n_1$  in d
         erratum=Erratum("claim", "medium",
                         r"\text{so ist } F(z) \text{ für } n > n_1 \text{ rechts von seinem Maximum positiv; links davon "
                         r"hat } F(z) = 0 \text{ eine Wurzel, wenn } F(2\sigma) < 0 \text{ (161, I)}",
-                        "'das ganze Gebiet' is the range z = 2 sigma ... infinity of the preceding sentence. F grows with "
-                        "n there, so for n > n_1 the minimum of F is positive and F > 0 from its maximum on; but left of "
-                        "the maximum F(2 sigma) = 2 sigma^2 (n - rho) (141) is negative for n < rho, and then F has a "
-                        "root in the region. At s = 73/100, n = 51/50 (n_1 = 1.00631 < n < rho = 1.0368 < 9/(32 sigma), "
-                        "so F has a maximum and a minimum): the exact real roots of (136) are -0.7403 and 0.5586, the "
-                        "second in 2 sigma = 0.54 < z < 1, left of the maximum z = 0.6857. The author's own table "
-                        "(161), case I (F(2 sigma) < 0, n > n_1: one equilibrium), uses the right statement; the "
-                        "sentence over-generalises it (medium: 'das ganze Gebiet' may be meant loosely as the "
-                        "neighbourhood of the minimum).",
+                        (r"'das ganze Gebiet' is the range $z = 2\sigma \dots \infty$ of the preceding sentence. $F$ "
+                         "grows with $n$ there, so for $n > n_1$ the minimum of $F$ is positive and $F > 0$ from its "
+                         r"maximum on; but left of the maximum $F(2 \sigma) = 2 \sigma^2 (n - \varrho)$ (141) is "
+                         r"negative for $n < \varrho$, and then $F$ has a root in the region. At $s = "
+                         r"\tfrac{73}{100}$, $n = \tfrac{51}{50}$ ($n_1 = 1.00631 < n < \varrho = 1.0368 < "
+                         r"9/(32\sigma)$, so $F$ has a maximum and a minimum): the exact real roots of (136) are "
+                         r"$-0.7403$ and $0.5586$, the second in $2\sigma = 0.54 < z < 1$, left of the maximum $z = "
+                         r"0.6857$. The author's own table (161), case I ($F(2\sigma) < 0$, $n > n_1$: one "
+                         "equilibrium), uses the right statement; the sentence over-generalises it (medium: 'das "
+                         "ganze Gebiet' may be meant loosely as the neighbourhood of the minimum)."),
                         corrected_reading=(sp.Matrix([NREG, NRIGHT, SGN1]), sp.Matrix([1, 0, 1])),
-                        objection="'In dem ganzen Gebiet' may be meant loosely, of the neighbourhood of the minimum "
-                                  "where the double root lies; the author's table (161) handles the left part with "
-                                  "F(2 sigma) and counts right.",
-                        answer="The sentence before names the range, 'für jeden Wert von z zwischen z = 2 sigma und "
-                               "z = ∞', and on it the statement fails: at s = 73/100, n = 51/50 (> n_1) F has the "
-                               "root 0.5586 left of its maximum. That (161) counts right shows the slip changes no "
-                               "result; the loose reading is the alternative behind medium."),
+                        objection=("'In dem ganzen Gebiet' may be meant loosely, of the neighbourhood of the minimum "
+                                   "where the double root lies; the author's table (161) handles the left part with "
+                                   r"$F(2 \sigma)$ and counts right."),
+                        answer=(r"The sentence before names the range, 'für jeden Wert von z zwischen $z = 2\sigma$ "
+                                r"und $z = \infty$', and on it the statement fails: at $s = \tfrac{73}{100}$, $n = "
+                                r"\tfrac{51}{50}$ ($> n_1$) $F$ has the root $0.5586$ left of its maximum. That (161) "
+                                "counts right shows the slip changes no result; the loose reading is the alternative "
+                                "behind medium.")),
         note="read at s = 73/100, n = 51/50: roots of F in z > 2 sigma, roots right of its maximum, sign(n - n_1)")
 Z_MAX3 = next(r_ for r_ in sp.Poly(sp.diff(quartic, z).subs({n: N_THREE, sg: 1 - S_CT}), z).real_roots()
               if 0 < r_ < sp.Rational(3, 4))
@@ -694,22 +700,23 @@ d.quote("two-below-n1", "IX.B", r"für  $n < n_1$  dagegen muss  $F(z) = 0$  zwe
         erratum=Erratum("claim", "medium",
                         r"\text{für } n < n_1 \text{ hat } F(z) = 0 \text{ rechts von seinem Maximum zwei Wurzeln, "
                         r"links davon eine weitere, wenn } F(2\sigma) < 0",
-                        "The same over-generalisation as for n > n_1 ('in dem ganzen Gebiet'): right of the maximum "
-                        "F has two roots for n < n_1, but left of it F(2 sigma) = 2 sigma^2 (n - rho) < 0 for n < rho "
-                        "adds a third in the region. At s = 73/100, n = 251/250 (< n_1 = 1.00631 < rho = 1.0368) the "
-                        "exact roots of (136) above 2 sigma = 0.54 are 0.5878, 0.7757, 0.8724: three, two of them right "
-                        "of the maximum. Table (161), case II, counts three.",
+                        ("The same over-generalisation as for $n > n_1$ ('in dem ganzen Gebiet'): right of the "
+                         r"maximum $F$ has two roots for $n < n_1$, but left of it $F(2 \sigma) = 2 \sigma^2 (n - "
+                         r"\varrho) < 0$ for $n < \varrho$ adds a third in the region. At $s = \tfrac{73}{100}$, $n = "
+                         r"\tfrac{251}{250}$ ($< n_1 = 1.00631 < \varrho = 1.0368$) the exact roots of (136) above "
+                         r"$2\sigma = 0.54$ are $0.5878$, $0.7757$, $0.8724$: three, two of them right of the "
+                         "maximum. Table (161), case II, counts three."),
                         corrected_reading=(sp.Matrix([_above(_roots136(N_THREE), 2 * (1 - S_CT)),
                                                       _above(_roots136(N_THREE), Z_MAX3)]), sp.Matrix([3, 2])),
                         same_as="scheeffer-ix/positive-whole-region",
                         objection="'muss F(z) = 0 zwei Wurzeln haben' may be an existence statement (at least two, "
                                   "the pair around the minimum), which holds.",
-                        answer="It is the counterpart of 'in dem ganzen Gebiet positiv' (no root in the range) and "
-                               "counts the roots of the same range, where there are three when F(2 sigma) < 0 (at s "
-                               "= 73/100, n = 251/250: 0.5878, 0.7757, 0.8724), as (161) II counts. Read as 'at "
-                               "least two' or as the pair around the minimum it holds; that reading is the "
-                               "alternative behind medium, as for the sentence before on n > n_1, whose booking this"
-                               " repeats."),
+                        answer=("It is the counterpart of 'in dem ganzen Gebiet positiv' (no root in the range) and "
+                                r"counts the roots of the same range, where there are three when $F(2\sigma) < 0$ (at "
+                                r"$s = \tfrac{73}{100}$, $n = \tfrac{251}{250}$: $0.5878$, $0.7757$, $0.8724$), as "
+                                "(161) II counts. Read as 'at least two' or as the pair around the minimum it holds; "
+                                "that reading is the alternative behind medium, as for the sentence before on $n > "
+                                "n_1$, whose booking this repeats.")),
         note="read at s = 73/100, n = 251/250: roots of F in z > 2 sigma, and right of its maximum")
 d.quote("maximum-reverse", "IX.B", "Liegt die Doppelwurzel im Maximum, so ist es umgekehrt.",
         reading=(sp.Derivative(quartic.subs(n, nu), nu), 3 * sg * (z - sp.Rational(2, 3) * 2 * sg)),
@@ -741,18 +748,19 @@ d.quote("162a", "(162a)",
                         r"\text{VI. wenn } \left(\frac{a}{b}\right)^2 < \varrho \ (> \tfrac{1}{\varrho}) \text{: eine "
                         r"Gleichgewichtslage (stabil)}; \quad \text{VII. wenn } \left(\frac{a}{b}\right)^2 > \varrho "
                         r"\text{: keine}",
-                        "for s <= 23/32 there is no root in the region iff F(2 sigma) > 0, i.e. n > rho (144); as the scan "
-                        "sets the table, VII reads n > 1/rho, which holds for every n >= 1 when rho >= 1 and would deny "
-                        "the equilibrium of VI. The bracketed (redundant) condition n > 1/rho of VI and the bound rho "
-                        "of VII were merged by the scan of the brace table.",
+                        (r"for $s \le \tfrac{23}{32}$ there is no root in the region iff $F(2\sigma) > 0$, i.e. $n > "
+                         r"\varrho$ (144); as the scan sets the table, VII reads $n > 1/\varrho$, which holds for "
+                         r"every $n \ge 1$ when $\varrho \ge 1$ and would deny the equilibrium of VI. The bracketed "
+                         r"(redundant) condition $n > 1/\varrho$ of VI and the bound $\varrho$ of VII were merged by "
+                         "the scan of the brace table."),
                         corrected_reading=(sp.Matrix([rho - n, n - rho]), sp.Matrix([-F2s / (2 * sg ** 2), F2s / (2 * sg ** 2)])),
                         objection="The print may itself have set VI and VII with one brace as transcribed, a "
                                   "compositor's or the author's table; the fault would then be the print's.",
-                        answer="The text says just above that conditions implied by the others are bracketed, and "
-                               "(141), (142) give no root in the region for s <= 23/32 iff n > rho; VII as "
-                               "transcribed (n > 1/rho) holds for every n >= 1 when rho >= 1 and would deny VI. A "
-                               "brace table merged by the scan is the likelier, but the print's table cannot be "
-                               "seen: low stands."),
+                        answer=("The text says just above that conditions implied by the others are bracketed, and "
+                                r"(141), (142) give no root in the region for $s \le \tfrac{23}{32}$ iff $n > "
+                                r"\varrho$; VII as transcribed ($n > 1/\varrho$) holds for every $n \ge 1$ when "
+                                r"$\varrho \ge 1$ and would deny VI. A brace table merged by the scan is the "
+                                "likelier, but the print's table cannot be seen: low stands.")),
         note="VI: one stable equilibrium iff n < rho, VII: none")
 HGz = (sp.sqrt(2 * a * b * sg * sp.tan(phi)) / sp.sin(phi)).subs(phi, phi_z)
 XLEG = "the print's x is the leg X of the dry triangle (step leg); the module's x is the free leg before it is solved"
@@ -899,25 +907,27 @@ d.quote("HG-complete", "IX.B",
                         r"\text{vollkommen stabil, wenn } H G \cdot c^3 > 12\, V \cdot \overline{B G}, \text{ d. i. } c^2 > "
                         r"\frac{12 a b s \cdot \overline{B G}}{H G} \;(< H G^2)\text{; } H G < c \text{ ist hinreichend, "
                         r"nicht notwendig}",
-                        "At an equilibrium of the second region the waterplane is the rectangle HG x c; turned about "
-                        "the horizontal axis across the c-axis the box is stable iff HG c^3/12 > V BG (V = s a b c, BG "
-                        "the height of G above B), i.e. c^2 > 12 s a b BG/HG. Stability about the c-axis itself is "
-                        "c HG^3/12 > V BG, so at every position stable about the axis this bound lies below HG^2: "
-                        "HG < c is sufficient, not the condition the text takes it for ('die Bedingung für vollkommene "
-                        "Stabilität', (163), and 'der genaue Grenzwert' of c/b after it). At s = 73/100, a/b = "
-                        "sqrt(51/50), c/b = 107/100 (case 162 I, the root z = 0.5586 of (136)) HG = 1.1248 b > c, yet "
-                        "the exact bound is c > 1.0256 b: the clipped box at its equilibrium tilt 0.51975 has the least "
-                        "metacentric height +0.0118 b (it changes sign at c = 1.0256 b), completely stable. Medium: "
-                        "'wenn' alone states a sufficient condition, which holds.",
+                        (r"At an equilibrium of the second region the waterplane is the rectangle $HG \times c$; "
+                         r"turned about the horizontal axis across the $c$-axis the box is stable iff $HG\, c^3/12 > "
+                         r"V \cdot BG$ ($V = s a b c$, $BG$ the height of $G$ above $B$), i.e. $c^2 > 12 s a b \cdot "
+                         r"BG/HG$. Stability about the $c$-axis itself is $c\, HG^3/12 > V \cdot BG$, so at every "
+                         "position stable about the axis this bound lies below $HG^2$: $HG < c$ is sufficient, not "
+                         "the condition the text takes it for ('die Bedingung für vollkommene Stabilität', (163), "
+                         r"and 'der genaue Grenzwert' of $c/b$ after it). At $s = \tfrac{73}{100}$, $a/b = "
+                         r"\sqrt{51/50}$, $c/b = \tfrac{107}{100}$ (case 162 I, the root $z = 0.5586$ of (136)) $HG = "
+                         r"1.1248\, b > c$, yet the exact bound is $c > 1.0256\, b$: the clipped box at its "
+                         r"equilibrium tilt $0.51975$ has the least metacentric height $+0.0118\, b$ (it changes sign "
+                         r"at $c = 1.0256\, b$), completely stable. Medium: 'wenn' alone states a sufficient "
+                         "condition, which holds."),
                         corrected_reading=(c ** 2 - 12 * s * a * b * BGz / HGz, 12 * D_perp / (c * HGz)),
                         objection="'wenn' states a sufficient condition, and the text says as much later ('Es findet"
                                   " aber sicher Stabilität statt, wenn c grösser als das maximum von H G ist'); HG <"
                                   " c is sufficient, so the sentence is right.",
-                        answer="The text calls (163) 'die Bedingung für vollkommene Stabilität' and says that 'der "
-                               "genaue Grenzwert' of c/b cannot be given in general, taking HG < c for the exact "
-                               "bound; at s = 73/100, a/b = sqrt(51/50), c/b = 107/100 the box is completely stable "
-                               "with HG = 1.1248 b > c. The sufficient reading of 'wenn' is the alternative behind "
-                               "medium."),
+                        answer=("The text calls (163) 'die Bedingung für vollkommene Stabilität' and says that 'der "
+                                "genaue Grenzwert' of $c/b$ cannot be given in general, taking $HG < c$ for the "
+                                r"exact bound; at $s = \tfrac{73}{100}$, $a/b = \sqrt{51/50}$, $c/b = "
+                                r"\tfrac{107}{100}$ the box is completely stable with $HG = 1.1248\, b > c$. The "
+                                "sufficient reading of 'wenn' is the alternative behind medium.")),
         note="read at s = 73/100, n = 51/50, c/b = 107/100 and the root z of (136) in the region (stable about the "
              "axis): the sign of c - HG against the sign of HG c^3/12 - V BG, the moment of the waterplane across the "
              "axis less V BG (the metacentric height across the axis times V); BG = E of the step 'potential'. The "
@@ -982,14 +992,15 @@ d.quote("164-reference", "IX.C", r"Ist aber die Bedingung 164 nicht erfüllt",
         erratum=Erratum("misprint", "low",
                         r"\text{Ist aber die Bedingung } \left(\frac{b}{a}\right)^2 > 6s(1-s) \text{ (oder 164a) nicht "
                         r"erfüllt}",
-                        "The negation the text writes next, (b/a)^2 < 6s(1-s), and its conclusion (the a-vertical "
-                        "position is unstable) belong to the condition (b/a)^2 > 6s(1-s) of the upright position in the "
-                        "third region, displayed four lines before (unnumbered, 's. 123'); (164) is "
-                        "(c/b)^2 > 4(1-s)^2 + (a/b)^2, the bound on c for complete stability in the second region, "
-                        "which neither decides nor follows from the upright stability in the third (e.g. a = 21/20, "
-                        "b = 1, c = 21/10, s = 1/20: (164) fails, yet (b/a)^2 = 0.907 > 6s(1-s) = 0.285). The reference is wrong; "
-                        "meant is the condition before (164a) or (164a) itself (which makes 6s(1-s) > 1 > (b/a)^2 when "
-                        "violated). Low: a lost 'a' of '164a' would be the scan's, a wrong number the print's.",
+                        ("The negation the text writes next, $(b/a)^2 < 6s(1-s)$, and its conclusion (the a-vertical "
+                         "position is unstable) belong to the condition $(b/a)^2 > 6s(1-s)$ of the upright position "
+                         "in the third region, displayed four lines before (unnumbered, 's. 123'); (164) is $(c/b)^2 "
+                         "> 4(1-s)^2 + (a/b)^2$, the bound on $c$ for complete stability in the second region, which "
+                         "neither decides nor follows from the upright stability in the third (e.g. $a = "
+                         r"\tfrac{21}{20}$, $b = 1$, $c = \tfrac{21}{10}$, $s = \tfrac{1}{20}$: (164) fails, yet "
+                         "$(b/a)^2 = 0.907 > 6s(1-s) = 0.285$). The reference is wrong; meant is the condition "
+                         "before (164a) or (164a) itself (which makes $6s(1-s) > 1 > (b/a)^2$ when violated). Low: a "
+                         "lost 'a' of '164a' would be the scan's, a wrong number the print's."),
                         corrected_reading=((b / a) ** 2 - 6 * s * (1 - s), 12 * s / a * GM3),
                         objection="'164' may be the scan's reading of '164a', the letter lost as in '162 a', and "
                                   "(164a) negated gives the same conclusion; the fault would then be the "
@@ -1052,17 +1063,19 @@ d.quote("table-first", "IX.C",
                  PWM(sp.Matrix([12 * s / b * GMa, Q130]), sp.zeros(2, 1))),
         erratum=Erratum("transcription", "high",
                         r"\left(\frac{a}{b}\right)^2 \gtrless \varrho \text{ (for } e \text{ throughout the table)}",
-                        "'e' is not defined in the section: the bound is rho = 2(1-s)(4s-1) of (161a) (the condition (130) "
-                        "for the oblique position of the first region); the scan read the Greek varrho as e.",
+                        (r"'e' is not defined in the section: the bound is $\varrho = 2(1-s)(4s-1)$ of (161a) (the "
+                         "condition (130) for the oblique position of the first region); the scan read the Greek "
+                         r"$\varrho$ as $e$."),
                         corrected_reading=(PWM(sp.Matrix([(a / b) ** 2 - 6 * s * (1 - s), (a / b) ** 2 - rho]), sp.zeros(2, 1)),
                                            PWM(sp.Matrix([12 * s / b * GMa, Q130]), sp.zeros(2, 1))),
-                        objection="'e' stands in every row of the table, the same letter five times: the print's own"
-                                  " letter for the bound, perhaps e_1 or a quantity of a lost line, not a glyph "
-                                  "misread.",
-                        answer="No e without index is defined in the section (e_1 is the distance of the centroids, "
-                               "not a bound on (a/b)^2), and the bound of the first region's oblique position is rho"
-                               " = 2(1-s)(4s-1) of (161a), with 1/rho in (165); the curly ϱ of the fount read as e "
-                               "is the scan's, consistent over one page as a scan is. High stands."),
+                        objection=("'e' stands in every row of the table, the same letter five times: the print's "
+                                   "own letter for the bound, perhaps $e_1$ or a quantity of a lost line, not a "
+                                   "glyph misread."),
+                        answer=("No $e$ without index is defined in the section ($e_1$ is the distance of the "
+                                "centroids, not a bound on $(a/b)^2$), and the bound of the first region's oblique "
+                                r"position is $\varrho = 2(1-s)(4s-1)$ of (161a), with $1/\varrho$ in (165); the "
+                                r"curly $\varrho$ of the fount read as $e$ is the scan's, consistent over one page as "
+                                "a scan is. High stands.")),
         note="for s > 1/2 (the mirror with 1 - s): I upright stable; II upright unstable and the oblique (125) stable; "
              "III upright unstable, the oblique beyond the region")
 d.quote("table-third", "IX.C",
@@ -1074,13 +1087,15 @@ d.quote("table-third", "IX.C",
         reading=(PWM(sp.Matrix([1 / (6 * s * (1 - s)) - (a / b) ** 2, 1 / e_print - (a / b) ** 2]), sp.zeros(2, 1)),
                  PWM(sp.Matrix([(a / b) ** 2 / (6 * s * (1 - s)) * 12 * s / a * GM3, (a / b) ** 2 / rho * Q3]), sp.zeros(2, 1))),
         erratum=Erratum("transcription", "high", r"\frac{1}{\varrho} \text{ for } \frac{1}{e}",
-                        "as in the table of the first region, e is the scan's varrho; 1/rho is the bound (165).",
+                        (r"as in the table of the first region, $e$ is the scan's $\varrho$; $1/\varrho$ is the bound "
+                         "(165)."),
                         corrected_reading=(PWM(sp.Matrix([1 / (6 * s * (1 - s)) - (a / b) ** 2, 1 / rho - (a / b) ** 2]), sp.zeros(2, 1)),
                                            PWM(sp.Matrix([(a / b) ** 2 / (6 * s * (1 - s)) * 12 * s / a * GM3, (a / b) ** 2 / rho * Q3]),
                                               sp.zeros(2, 1))),
                         objection="As in the first table: 1/e in every row may be the print's letter.",
-                        answer="1/e is the bound (165), (a/b)^2 <= 1/(2(1-s)(4s-1)) = 1/rho, written as the text "
-                               "names it in (161a); the same ϱ read as e as in the table of the first region: high."),
+                        answer=(r"$1/e$ is the bound (165), $(a/b)^2 \le 1/(2(1-s)(4s-1)) = 1/\varrho$, written as "
+                                r"the text names it in (161a); the same $\varrho$ read as $e$ as in the table of the "
+                                "first region: high.")),
         note="for s > 1/2 with rho > 0")
 
 

@@ -371,22 +371,23 @@ d.quote("60-one-base", "(60)",
             r"lower one is the sharper when $s \sin(30^\circ+\omega) < (1-s)\cos\omega$, i.e. for "
             r"1/2 < s < 2/3 and $\omega < \operatorname{arctg}\frac{2-3s}{\sqrt3\, s}$ (and symmetrically for "
             r"1/3 < s < 1/2); only for s >= 2/3 (s <= 1/3) does one base decide for every omega.",
-            "Section V derived (53)/(55) assuming the upper base is cut first when s > 1/2, which holds when the "
-            "farthest points on both sides of the axis are equally far (circle, square, centrally symmetric "
-            "bases). In the triangle they are not: the rising side holds the vertex A at (a/sqrt3) cos omega, "
-            "up to twice the distance (a/(2 sqrt3) at omega = 0) of the dipping edge BC. At a = b, s = 3/5, "
-            "omega = 0 the lower base meets the water at tan(phi) = 3 sqrt3/5 = 1.039, before the upper "
-            "one (4 sqrt3/5 = 1.386); the clipped prism confirms it.",
+            (r"Section V derived (53)/(55) assuming the upper base is cut first when $s > \tfrac12$, which holds when "
+             "the farthest points on both sides of the axis are equally far (circle, square, centrally symmetric "
+             r"bases). In the triangle they are not: the rising side holds the vertex A at $(a/\sqrt{3}) \cos "
+             r"\omega$, up to twice the distance ($a/(2\sqrt3)$ at $\omega = 0$) of the dipping edge BC. At $a = b$, "
+             r"$s = \tfrac35$, $\omega = 0$ the lower base meets the water at $\tan(\varphi) = 3 \sqrt{3}/5 = 1.039$, "
+             r"before the upper one ($4 \sqrt{3}/5 = 1.386$); the clipped prism confirms it."),
             corrected_reading=as_printed(lambda: (sp.Min(Ltop_cx, Lbot_cx), Lbot_cx)),
                         objection="The sentence only mirrors (55) of section V for s < 1/2, which is right as an "
                                   "instruction; and since the sense of the tilt is free, the prism may be turned so "
                                   "that the side whose base is cut later dips.",
-                        answer="With either sense of the tilt one base limits the tilt before (60) does: at a = b, s"
-                               " = 3/5, omega = 0 the lower base meets the water at tg phi = 3 sqrt3/5 = 1.039 (BC "
-                               "dipping) and the upper at sqrt3·2/5 = 0.693 (A dipping), both below the 4 sqrt3/5 = "
-                               "1.386 that (60) allows, as the clipped prism confirms; the text's own BS = (a/3) "
-                               "sqrt3 of (59) puts the vertex A at (a/sqrt3) cos omega on the rising side. Letting s"
-                               " alone choose the base fails for 1/3 < s < 2/3: high stands."))
+                        answer=("With either sense of the tilt one base limits the tilt before (60) does: at $a = "
+                                r"b$, $s = \tfrac35$, $\omega = 0$ the lower base meets the water at "
+                                r"$\operatorname{tg} \varphi = 3 \sqrt{3}/5 = 1.039$ (BC dipping) and the upper at "
+                                r"$\sqrt3 \cdot 2/5 = 0.693$ (A dipping), both below the $4 \sqrt{3}/5 = 1.386$ that "
+                                r"(60) allows, as the clipped prism confirms; the text's own $BS = (a/3) \sqrt{3}$ of "
+                                r"(59) puts the vertex A at $(a/\sqrt{3}) \cos \omega$ on the rising side. Letting "
+                                r"$s$ alone choose the base fails for $\tfrac13 < s < \tfrac23$: high stands.")))
 
 # ---- (61)-(65): limits of omega and of a/b ---------------------------------------------------------
 
@@ -542,21 +543,22 @@ d.quote("65-III-claim", "(65)",
             r"\operatorname{arctg}\frac{2-3s}{\sqrt3\,s}$ (the best axis); for s >= 2/3 the printed III is right. "
             r"At s = 0.55 no axis works for 1.755 <= (a/b)^2 < 2.455 (III as printed: 1.755 ... 2.666). For "
             r"s < 1/2 the same with s and 1-s exchanged.",
-            "At s = 11/20, (a/b)^2 = 11/5: t_1 = sqrt(24 s(1-s)/(a/b)^2 - 2) = 0.8367, but the best axis "
-            "(omega = 20.17 deg, where the top and bottom limits are equal) allows only tan(phi) <= 0.6842: for "
-            "every axis one base is cut before the equilibrium is reached: at that first contact the righting arm is "
-            "still -0.0109 b (capsizing), in the formula of (12) and in the clipped prism alike. The lower-base condition omitted in "
-            "(55)/(60) (see 60-one-base) decides here; (61) is necessary, not sufficient.",
+            (r"At $s = \tfrac{11}{20}$, $(a/b)^2 = \tfrac{11}{5}$: $t_1 = \sqrt{24 s(1-s)/(a/b)^2 - 2} = 0.8367$, but "
+             r"the best axis ($\omega = 20.17^\circ$, where the top and bottom limits are equal) allows only "
+             r"$\tan(\varphi) \le 0.6842$: for every axis one base is cut before the equilibrium is reached: at that "
+             r"first contact the righting arm is still $-0.0109\, b$ (capsizing), in the formula of (12) and in the "
+             "clipped prism alike. The lower-base condition omitted in (55)/(60) (see the erratum on (60): one base) "
+             "decides here; (61) is necessary, not sufficient."),
             corrected_reading=as_printed(lambda: (sp.Min(Delta3, 0), Delta3)),
                         objection="III only says the prism reaches an oblique stable position; one that capsizes "
                                   "past the first contact of a base may still come to rest where a base is cut, and "
                                   "the claim would then hold.",
-                        answer="III gives the position of II ('wie in II'), whose angle is tg^2 phi_1 = 24 (b/a)^2 "
-                               "s(1-s) - 2, restricts its axis by (61) so that the upper base does not dip, and IV "
-                               "closes the result with 'ohne dass eine der Grundflächen vom Wasserspiegel "
-                               "durchschnitten wird': the claim is of the first region. At s = 11/20, (a/b)^2 = 11/5"
-                               " no axis reaches that angle before a base is cut, where the righting arm is still "
-                               "-0.0109 b. High stands."))
+                        answer=(r"III gives the position of II ('wie in II'), whose angle is $\operatorname{tg}^2 "
+                                r"\varphi_1 = 24 (b/a)^2 s(1-s) - 2$, restricts its axis by (61) so that the upper "
+                                "base does not dip, and IV closes the result with 'ohne dass eine der Grundflächen "
+                                "vom Wasserspiegel durchschnitten wird': the claim is of the first region. At $s = "
+                                r"\tfrac{11}{20}$, $(a/b)^2 = \tfrac{11}{5}$ no axis reaches that angle before a base "
+                                r"is cut, where the righting arm is still $-0.0109\, b$. High stands.")))
 
 # ---- Examples 3 and 4 ------------------------------------------------------------------------------
 s3 = sp.Rational(2, 3)
@@ -616,19 +618,19 @@ d.quote("ex4-ratio", "Example 4", r"$$\frac{a}{b} = (1 - s) \sqrt{181} = \frac{4
         reading=as_printed(lambda: (q4, (1 - s4) * sp.sqrt(181), sp.Rational(4, 11) * sp.sqrt(181))),
         erratum=Erratum(
             "transcription", "medium", r"\frac{a}{b} = (1 - s) \sqrt{18} = \frac{4}{11} \cdot \sqrt{18}",
-            "From (68), a/b = sqrt(18) (1 - s) = 12 sqrt2 / 11 = 1.5428; the text itself continues 'angenaehert "
-            "a/b = 17/11' = 1.545, which fits sqrt 18 and not sqrt 181 (4.89). The same stray '1' after 18 in "
-            "both places looks like a scan artefact (a footnote mark or the next line's digit) rather than the "
-            "author's arithmetic; from the transcription alone a misprint cannot be excluded.",
+            (r"From (68), $a/b = \sqrt{18} (1 - s) = 12 \sqrt{2} / 11 = 1.5428$; the text itself continues "
+             r"'angenaehert a/b = 17/11' $= 1.545$, which fits $\sqrt{18}$ and not $\sqrt{181}$ ($4.89$). The same "
+             "stray '1' after 18 in both places looks like a scan artefact (a footnote mark or the next line's "
+             "digit) rather than the author's arithmetic; from the transcription alone a misprint cannot be excluded."),
             corrected_reading=as_printed(lambda: (q4, (1 - s4) * sp.sqrt(18), sp.Rational(4, 11) * sp.sqrt(18))),
-                        objection="sqrt 181 stands twice in one line, a repeat the criteria give to the print: the "
-                                  "author may have copied 18 as 181 and taken his approximation from the right "
-                                  "number.",
-                        answer="The line is (68) solved with s = 7/11, which gives (4/11) sqrt 18, and the "
-                               "approximation 17/11 = 1.545 that follows fits sqrt 18 (1.543) and not sqrt 181 "
-                               "(4.89); a digit added to the same radicand at both places of one line is one glyph "
-                               "under the radical read twice the same way, more like the scan than a compositor's "
-                               "slip. The print cannot be seen: medium."))
+                        objection=(r"$\sqrt{181}$ stands twice in one line, a repeat the criteria give to the print: "
+                                   "the author may have copied 18 as 181 and taken his approximation from the right "
+                                   "number."),
+                        answer=(r"The line is (68) solved with $s = \tfrac{7}{11}$, which gives "
+                                r"$\tfrac{4}{11}\sqrt{18}$, and the approximation $17/11 = 1.545$ that follows fits "
+                                r"$\sqrt{18} (1.543)$ and not $\sqrt{181} (4.89)$; a digit added to the same radicand "
+                                "at both places of one line is one glyph under the radical read twice the same way, "
+                                "more like the scan than a compositor's slip. The print cannot be seen: medium.")))
 d.quote("ex4-ratio-value", "Example 4", r"$$\text{d. i. angenähert } \frac{a}{b} = \frac{17}{11}$$",
         reading=(q4, sp.Rational(17, 11)), tolerance=sp.Rational(1, 22),
         note="a fraction with denominator 11: half a unit of the numerator, 1/22")
@@ -718,10 +720,10 @@ sq_ = {b: 2 * r}                                # square axial section: 2r = b
 d.quote("ex6-ratio", "Example 6", r"In 71 hat man  $\frac{2}{b} = 1$  zu setzen",
         reading=((2 / b).subs(sq_), 1), note="square axial section: b = 2r",
         erratum=Erratum("transcription", "medium", r"\frac{2r}{b} = 1",
-                        "The example sets the ratio of diameter to height, 2r/b, to 1 (square axial section); "
-                        "2/b = 1 would fix b = 2 whatever r is. The r is lost here and in the next line, which "
-                        "only gives sqrt(0.50) with 2r/b = 1. Probably the scan lost the letter; a misprint "
-                        "repeated twice is less likely.",
+                        ("The example sets the ratio of diameter to height, $2r/b$, to $1$ (square axial section); "
+                         "$2/b = 1$ would fix $b = 2$ whatever $r$ is. The r is lost here and in the next line, "
+                         r"which only gives $\sqrt{0.50}$ with $2r/b = 1$. Probably the scan lost the letter; a "
+                         "misprint repeated twice is less likely."),
                         corrected_reading=as_printed(lambda: ((2 * r / b).subs(sq_), 1)),
                         objection="The r is missing in two consecutive lines, a repeat the criteria give to the "
                                   "print: the author or the compositor may have written 2/b for the ratio in this "
@@ -737,8 +739,8 @@ d.quote("ex6-root", "Example 6", r"\sqrt{1 - \frac{1}{2} \cdot \left(\frac{2}{b}
                         corrected_reading=as_printed(lambda: (sp.sqrt(1 - (2 * r / b) ** 2 / 2).subs(sq_), sp.sqrt(sp.Rational(1, 2)))),
                         same_as="scheeffer-vi-ab/ex6-ratio",
                         objection="As in the line before, the print may have 2/b in both places.",
-                        answer="The radicand is (71)'s 1 - (1/2)(2r/b)^2, and 0,50 is its value at 2r/b = 1; the "
-                               "same lost r as in the line before, whose booking this repeats: medium."))
+                        answer=("The radicand is (71)'s $1 - (1/2)(2r/b)^2$, and 0,50 is its value at $2r/b = 1$; "
+                                "the same lost r as in the line before, whose booking this repeats: medium.")))
 sC_hi1, sC_lo1 = (e.subs(sq_) for e in (_rootsC[1], _rootsC[0]))
 for ex6_name, ex6_words, ex6_value, ex6_printed in (
         ("ex6-root-value", r"\sqrt{0,50} = 0,7071", 2 * sC_hi1 - 1, "0.7071"),
@@ -763,21 +765,21 @@ d.quote("72a-cited", "VI.B", "Diese ist durch die Bedingungen 55 bestimmt, wenn 
         note="read as: the tilt the cited (55) determines with u_m = r (it bounds tg phi_1 only; read at its bound) "
              "is the tilt of the cylinder's oblique equilibrium, whose tg^2 the next display gives",
         erratum=Erratum("misprint", "low", r"\text{Diese ist durch die Bedingungen 54 und 55 bestimmt}",
-                        "The tilt tg^2 phi_1 = 16 (b/2r)^2 s(1-s) - 2 of the next display is (54), tg^2 phi_1 = "
-                        "F_1 b^2 s(1-s)/T_1 - 2, with F_1 = pi r^2, T_1 = pi r^4/4; (55) contains neither F_1 nor T_1 "
-                        "and only bounds the tilt (the second line of (72a), with u_m = r). For the triangular prism "
-                        "the text cites rightly 'aus 54 und 55' (before (60)); here 54 is missing, and again in VI.C "
-                        "('wenn die Bedingungen 55 erfüllt sind', then F_1 b^2 s(1-s)/T_1). Low: the author may have "
-                        "meant the pair (54), (55) by 'Bedingungen 55'; the print, not the scan (a number dropped "
-                        "from a reference).",
+                        (r"The tilt $\operatorname{tg}^2 \varphi_1 = 16 (b/2r)^2 s(1-s) - 2$ of the next display is "
+                         r"(54), $\operatorname{tg}^2 \varphi_1 = F_1 b^2 s(1-s)/T_1 - 2$, with $F_1 = \pi r^2, T_1 = "
+                         r"\pi r^4/4$; (55) contains neither $F_1$ nor $T_1$ and only bounds the tilt (the second "
+                         "line of (72a), with $u_m = r$). For the triangular prism the text cites rightly 'aus 54 "
+                         "und 55' (before (60)); here 54 is missing, and again in VI.C ('wenn die Bedingungen 55 "
+                         "erfüllt sind', then $F_1 b^2 s(1-s)/T_1$). Low: the author may have meant the pair (54), "
+                         "(55) by 'Bedingungen 55'; the print, not the scan (a number dropped from a reference)."),
                         corrected_reading=(tanC ** 2, F1c * b ** 2 * s * (1 - s) / T1c - 2),
                         objection="'Bedingungen 55' in the plural may be the author's name for the pair (54), (55), "
                                   "which section V introduces together ('Bestimmungsgleichung (54) mit der Bedingung"
                                   " (55)'); VI.C uses the same words, so it is his usage, not a fault.",
-                        answer="The tilt of the next display is (54) with F_1 and T_1 put in, which (55) does not "
-                               "contain, and for the triangular prism the text cites 'aus 54 und 55'; the repeat in "
-                               "VI.C can be usage as well as a slip, so the reading as a name of the pair cannot be "
-                               "excluded: low stands."))
+                        answer=("The tilt of the next display is (54) with $F_1$ and $T_1$ put in, which (55) does "
+                                "not contain, and for the triangular prism the text cites 'aus 54 und 55'; the "
+                                "repeat in VI.C can be usage as well as a slip, so the reading as a name of the pair "
+                                "cannot be excluded: low stands.")))
 d.quote("72a-tan", "(72a)", r"$$\text{tg}^2 \varphi_1 = 16 \left( \frac{b}{2r} \right)^2 \cdot s (1-s) - 2$$",
         reading=Eq(tanC ** 2, 16 * Bc ** 2 * s * (1 - s) - 2))
 d.quote("72a", "(72a)",
@@ -946,19 +948,21 @@ DMS = lambda dg, mi, se: dg + sp.Rational(mi, 60) + sp.Rational(se, 3600)
 d.quote("ex10-angle", "Example 10", r"Die Ausführung der Rechnung ergibt angenähert  $\varphi_1 = 18^\circ 58' 13''$",
         reading=(phi10, DMS(18, 58, 13)), tolerance=sp.Rational(1, 7200),
         erratum=Erratum("calculation", "high", r"\varphi_1 = 30^\circ 22' 59''",
-                        "tg phi_1 = sqrt(11/32) = 0.58630 gives 30 deg 22' 59.4''. The printed 18 deg 58' 13'' is "
-                        "arctg(11/32) to the second (18 deg 58' 13.5''): the root was not taken. The limit "
-                        "tg phi_1 <= 2(1-s) b/(2r) = 0.625 still holds, so the position exists.",
+                        (r"$\operatorname{tg} \varphi_1 = \sqrt{11/32} = 0.58630$ gives $30^\circ\, 22'\, 59.4''$. "
+                         r"The printed $18^\circ\, 58'\, 13''$ is arctg(11/32) to the second ($18^\circ\, 58'\, "
+                         r"13.5''$): the root was not taken. The limit $\operatorname{tg} \varphi_1 \le 2(1-s) b/(2r) "
+                         "= 0.625$ still holds, so the position exists."),
                         corrected_reading=(phi10, DMS(30, 22, 59)),
                         objection="The printed angle may be a slip of the digits in copying a right result, a "
                                   "misprint, not wrong arithmetic.",
-                        answer="18° 58' 13'' is arctg(11/32) to the second (18° 58' 13.5''), which no slip of digits"
-                               " gives, and the next lines compute r tg phi = 1,6 · 11/32 = 0,55 with the unrooted "
-                               "tangent: the author's arithmetic carried on. High stands."))
-BS_EVIDENCE = ("The upright draught of the cylinder is b s, height times specific gravity (Archimedes: pi r^2 b s "
-               "= weight; IV, after (53a): 'b s nun die Höhe des ... unter dem Wasserspiegel befindlichen "
-               "Körperteils'); 'b_s' is defined nowhere, and the next line uses 1,5 = 2,5 * 0,6 = b s. The scan set "
-               "the s as a subscript (medium: a printer's subscript is not excluded).")
+                        answer=("18° 58' 13'' is arctg(11/32) to the second (18° 58' 13.5''), which no slip of "
+                                r"digits gives, and the next lines compute $r \operatorname{tg}\varphi = 1{,}6 \cdot "
+                                "11/32 = 0{,}55$ with the unrooted tangent: the author's arithmetic carried on. High "
+                                "stands.")))
+BS_EVIDENCE = ((r"The upright draught of the cylinder is b s, height times specific gravity (Archimedes: $\pi r^2 b s "
+                "= weight$; IV, after (53a): 'b s nun die Höhe des ... unter dem Wasserspiegel befindlichen "
+                r"Körperteils'); '$b_s$' is defined nowhere, and the next line uses $1{,}5 = 2{,}5 \cdot 0{,}6 = b "
+                "s$. The scan set the s as a subscript (medium: a printer's subscript is not excluded)."))
 _ax = sp.Matrix([sp.sin(sp.atan(tp)), sp.cos(sp.atan(tp))])       # the axis of the cylinder tilted by atan(tau)
 _base = sp.Matrix([sp.cos(sp.atan(tp)), -sp.sin(sp.atan(tp))])    # a diameter of its base in the drawing's plane
 d.quote("ex10-angle-meaning", "Example 10",
@@ -971,38 +975,40 @@ d.quote("ex10-angle-meaning", "Example 10",
 d.quote("upright-draught", "Example 10", r"In der aufrechten Schwimmlage ist diese  $b_s$",
         reading=(V1c / F1c, bs_), note="diese: the height to which the side surface is immersed; upright V_1/F_1",
         erratum=Erratum("transcription", "medium", r"b s \; (= b \cdot s)",
-                        "The same 'b_s' for b s as in the formula x = b_s + r tg phi (x-formula). " + BS_EVIDENCE,
+                        r"The same '$b_s$' for $b s$ as in the formula $x = b_s + r \operatorname{tg}\varphi$ (Example 10). " + BS_EVIDENCE,
                         corrected_reading=(V1c / F1c, b * s), same_as="scheeffer-vi-ab/x-formula",
-                        objection="b_s may be the author's own name for the upright draught, introduced in this very"
-                                  " sentence ('ist diese b_s'); a name is not a fault.",
-                        answer="The sentence states a value, not a name: section V writes the same draught 'b s', "
-                               "height times specific gravity, and the next line puts 1,5 = 2,5 · 0,6 for it; b_s is"
-                               " defined nowhere else. A product set as a subscript by the scan, as in the formula "
-                               "it repeats; the print's subscript cannot be excluded: medium."))
+                        objection=("$b_s$ may be the author's own name for the upright draught, introduced in this "
+                                   "very sentence ('ist diese $b_s$'); a name is not a fault."),
+                        answer=("The sentence states a value, not a name: section V writes the same draught 'b s', "
+                                r"height times specific gravity, and the next line puts $1{,}5 = 2{,}5 \cdot 0{,}6$ for it; $b_s$ "
+                                "is defined nowhere else. A product set as a subscript by the scan, as in the "
+                                "formula it repeats; the print's subscript cannot be excluded: medium.")))
 d.quote("x-formula", "Example 10", r"x &= b_s + r \operatorname{tg} \varphi",
         reading=Eq(xC, bs_ + r * tanC),
         note="phi: the tilt of the equilibrium, phi_1 (the formula holds for every tilt of the first region)",
         erratum=Erratum("transcription", "medium", r"x = b s + r \operatorname{tg} \varphi", BS_EVIDENCE,
                         corrected_reading=Eq(xC, b * s + r * tanC),
-                        objection="b_s may be a symbol of the author's for the upright draught, and the formula "
-                                  "right in his notation.",
-                        answer="No b_s is defined in the text; section V calls the same height 'b s' and the next "
-                               "line's 1,5 is 2,5 · 0,6 = b s. The scan sets a lower-case s after b as a subscript "
-                               "where the print had a product; a printed subscript cannot be excluded: medium."))
+                        objection=("$b_s$ may be a symbol of the author's for the upright draught, and the formula "
+                                   "right in his notation."),
+                        answer=("No $b_s$ is defined in the text; section V calls the same height 'b s' and the next "
+                                "line's 1,5 is 2,5 · 0,6 = b s. The scan sets a lower-case s after b as a subscript "
+                                "where the print had a product; a printed subscript cannot be excluded: medium.")))
 x10 = (b * s + r * tanC_e).subs(ex10)
-cons = "follows from the angle of ex10-angle: r tg phi_1 = 1.6 * 11/32 = 0.55 with the unrooted tangent"
+cons = (r"follows from the angle of Example 10: $r \operatorname{tg}\varphi_1 = 1.6 \cdot 11/32 = 0.55$ with the "
+        "unrooted tangent")
 d.quote("ex10-x-sum", "Example 10", r"x &= 1,5 + 0,55", reading=(x10, sp.Rational("1.5") + sp.Rational("0.55")),
         tolerance=sp.Rational(1, 200),
-        erratum=Erratum("consequential", "high", r"x = 1,5 + 0,94", cons + "; with tg phi_1 = sqrt(11/32) it is "
-                        "1.6 * 0.5863 = 0.938",
+        erratum=Erratum("consequential", "high", r"x = 1,5 + 0,94", cons + r"; with $\operatorname{tg}\varphi_1 = \sqrt{11/32}$ it is "
+                        r"$1.6 \cdot 0.5863 = 0.938$",
                         corrected_reading=(x10, sp.Rational("1.5") + sp.Rational("0.94")),
-                        objection="As printed the line is right: 0,55 = 1,6 · 11/32 is r tg phi for the tangent the "
-                                  "text has just used, so there is no new fault here.",
-                        answer="That is what consequential says: the line follows from the unrooted tangent of the "
-                               "angle above, and with tg phi_1 = sqrt(11/32) the term is 0,94; the line's own 0,55 "
-                               "shows which tangent was used. High."))
+                        objection=(r"As printed the line is right: $0{,}55 = 1{,}6 \cdot 11/32$ is $r "
+                                   r"\operatorname{tg}\varphi$ for the tangent the text has just used, so there is no "
+                                   "new fault here."),
+                        answer=("That is what consequential says: the line follows from the unrooted tangent of the "
+                                r"angle above, and with $\operatorname{tg} \varphi_1 = \sqrt{11/32}$ the term is "
+                                "0,94; the line's own 0,55 shows which tangent was used. High.")))
 d.quote("ex10-x", "Example 10", r"x &= 2,05", reading=(x10, sp.Rational("2.05")), tolerance=PRINTED_DIGITS,
-        erratum=Erratum("consequential", "high", r"x = 2,44", cons + "; x = 1.5 + 0.938 = 2.438 m",
+        erratum=Erratum("consequential", "high", r"x = 2,44", cons + "; $x = 1.5 + 0.938 = 2.438$ m",
                         corrected_reading=(x10, sp.Rational("2.44")),
                         objection="2,05 is the right sum of the line before, no fault of its own.",
                         answer="Consequential: it carries on the unrooted tangent of the angle above; with the root "
@@ -1010,7 +1016,7 @@ d.quote("ex10-x", "Example 10", r"x &= 2,05", reading=(x10, sp.Rational("2.05"))
 d.quote("ex10-fraction", "Example 10", r"$\frac{x}{b} = \frac{2,05}{2,50} = \frac{41}{50}$",
         reading=(x10 / sp.Rational(5, 2), sp.Rational(41, 50)), tolerance=sp.Rational(1, 100),
         erratum=Erratum("consequential", "high", r"\frac{x}{b} = \frac{2,44}{2,50} = \frac{49}{50} (0.9752)",
-                        cons + "; x/b = 2.438/2.5 = 0.9752", corrected_reading=(x10 / sp.Rational(5, 2), sp.Rational(49, 50)),
+                        cons + "; $x/b = 2.438/2.5 = 0.9752$", corrected_reading=(x10 / sp.Rational(5, 2), sp.Rational(49, 50)),
                         objection="2,05/2,50 = 41/50 is right arithmetic.",
                         answer="Consequential: it divides the x of the unrooted tangent; with the root x/b = "
                                "2,44/2,50 = 0,975, about 49/50. High."))
@@ -1018,23 +1024,23 @@ d.quote("ex10-deepest", "Example 10",
         r"Der am tiefsten eintauchende Teil der Mantelhöhe beträgt also  $\frac{41}{50}$",
         reading=(x10 / sp.Rational(5, 2), sp.Rational(41, 50)), tolerance=sp.Rational(1, 100),
         erratum=Erratum("consequential", "high", r"\frac{49}{50} \; (0{,}9752)",
-                        "The x/b = 41/50 of the line before (ex10-fraction) repeated in words; " + cons
+                        "The $x/b = 41/50$ of the line before repeated in words; " + cons
                         + "; x/b = 2.438/2.5 = 0.9752",
                         corrected_reading=(x10 / sp.Rational(5, 2), sp.Rational(49, 50)),
                         same_as="scheeffer-vi-ab/ex10-fraction",
                         objection="The sentence only repeats 41/50 of the line before in words.",
-                        answer="So it is booked as the repeat of the x/b of the line before, consequential on the "
-                               "unrooted tangent: 49/50 with tg phi_1 = sqrt(11/32). High."))
+                        answer=("So it is booked as the repeat of the x/b of the line before, consequential on the "
+                                r"unrooted tangent: 49/50 with $\operatorname{tg} \varphi_1 = \sqrt{11/32}$. High.")))
 d.quote("ex10-dry", "Example 10", r"der kürzeste über dem Wasser befindliche Teil  $\frac{9}{50}$",
         reading=(1 - x10 / sp.Rational(5, 2), sp.Rational(9, 50)), tolerance=sp.Rational(1, 100),
-        erratum=Erratum("consequential", "high", r"\frac{1}{50} (0.0248)", cons + "; 1 - 0.9752 = 0.0248",
+        erratum=Erratum("consequential", "high", r"\frac{1}{50} (0.0248)", cons + "; $1 - 0.9752 = 0.0248$",
                         corrected_reading=(1 - x10 / sp.Rational(5, 2), sp.Rational(1, 50)),
                         objection="9/50 = 1 - 41/50 is right arithmetic.",
                         answer="Consequential: the complement of the x/b of the unrooted tangent; with the root it "
                                "is 1 - 0,975 = 0,025, about 1/50. High."))
 d.quote("ex10-dry-cm", "Example 10", "der ganzen Höhe oder 45 cm",
         reading=(250 * (1 - x10 / sp.Rational(5, 2)), 45), tolerance=sp.Rational(1, 2),
-        erratum=Erratum("consequential", "high", "6 cm (6.2 cm)", cons + "; 250 cm * 0.0248 = 6.2 cm",
+        erratum=Erratum("consequential", "high", "6 cm (6.2 cm)", cons + r"; $250\,\text{cm} \cdot 0.0248 = 6.2\,\text{cm}$",
                         corrected_reading=(250 * (1 - x10 / sp.Rational(5, 2)), 6),
                         objection="45 cm = 9/50 of 250 cm is right arithmetic.",
                         answer="Consequential: with the root the dry part of the mantle is 250 cm · 0,0248 = 6 cm; "

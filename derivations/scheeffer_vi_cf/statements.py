@@ -234,20 +234,20 @@ d.quote("78c", "(78c)",
             "misprint", "medium",
             r"\left(\frac{a}{b}\right)^2 < \begin{cases} (1 - s)(7s - 1) & \text{für } s > \frac{1}{2} \\ "
             r"s(6 - 7s) & \text{für } s < \frac{1}{2} \end{cases}",
-            "(78c) is meant as the negation of the right half of (78a) (the text goes on: the prism can be turned "
-            "about its main axis only until a base face is cut), so its bounds must be those of (77)/(78a), "
-            "(1-s)(7s-1) for s > 1/2 and s(6-7s) for s < 1/2; the print attaches them to the opposite cases. "
-            "With the swap the condition is wrong, e.g. for s = 0.3 it gives the bound 0.77 instead of 1.17. "
-            "Both case labels are exchanged consistently, which a scan does not do; a misprint of the original "
-            "is the likelier cause (the scan cannot be excluded: medium).",
+            ("(78c) is meant as the negation of the right half of (78a) (the text goes on: the prism can be turned "
+             "about its main axis only until a base face is cut), so its bounds must be those of (77)/(78a), "
+             r"$(1-s)(7s-1)$ for $s > \tfrac12$ and $s(6-7s)$ for $s < \tfrac12$; the print attaches them to the "
+             "opposite cases. With the swap the condition is wrong, e.g. for $s = 0.3$ it gives the bound $0.77$ "
+             "instead of $1.17$. Both case labels are exchanged consistently, which a scan does not do; a misprint "
+             "of the original is the likelier cause (the scan cannot be excluded: medium)."),
             corrected_reading=(PW((1 - s) * (7 * s - 1), s * (6 - 7 * s)) - (a / b) ** 2, -Q77_sign),
                         objection="(78c) may be meant as printed, as a condition of its own for the second-region "
                                   "case rather than the negation of (78a)'s right half.",
-                        answer="The text goes on that the prism can be turned about its main axis only until a base "
-                               "face is cut, which is the negation of (78a); its bounds are those of (77)/(78a) with"
-                               " the cases as there, and the printed attachment gives at s = 0.3 the bound 0.77 "
-                               "instead of 1.17. Both labels exchanged together is no glyph fault of the scan; "
-                               "medium, since the transcriber may have set the cases in the wrong order."))
+                        answer=("The text goes on that the prism can be turned about its main axis only until a base "
+                                "face is cut, which is the negation of (78a); its bounds are those of (77)/(78a) "
+                                "with the cases as there, and the printed attachment gives at $s = 0.3$ the bound "
+                                "$0.77$ instead of $1.17$. Both labels exchanged together is no glyph fault of the "
+                                "scan; medium, since the transcriber may have set the cases in the wrong order.")))
 d.quote("78c-turn", "(78c)",
         "so kann das Prisma in der schiefen stabilen Lage nur soweit um die Hauptachse gedreht werden, bis eine der "
         "Grundflächen den Wasserspiegel durchschneidet.",
@@ -391,15 +391,17 @@ d.quote("81a", "(81a)", r"$$\operatorname{tg}^2 \varphi_1 = 2 \cdot \left\{ b s 
         reading=(tan2c, 2 * (b * s * (1 - s) - 1)),
         erratum=Erratum(
             "transcription", "high", r"\operatorname{tg}^2 \varphi_1 = 2 \cdot \left\{ 6 s (1 - s) - 1 \right\}",
-            "(78b) with a = b gives tan^2 phi_1 = 12 s(1-s) - 2 = 2{6 s(1-s) - 1}. The printed 'b' makes the "
-            "formula depend on a length, which a cube's angle cannot; 'b' for '6' is a typical confusion of "
-            "the scan, and the same 'b s (1 - s) - 1' recurs in (82), where 6s(1-s) - 1 is again required.",
+            (r"(78b) with $a = b$ gives $\tan^2\varphi_1 = 12 s(1-s) - 2 = 2\{6 s(1-s) - 1\}$. The printed '$b$' "
+             "makes the formula depend on a length, which a cube's angle cannot; '$b$' for '$6$' is a typical "
+             "confusion of the scan, and the same '$b s (1 - s) - 1$' recurs in (82), where $6s(1-s) - 1$ is again "
+             "required."),
             corrected_reading=(tan2c, 2 * (6 * s * (1 - s) - 1)),
-                        objection="b may be the prism's height, kept by the author in a formula written for the cube"
-                                  " before setting a = b.",
-                        answer="(78b) with a = b gives 12 s(1 - s) - 2 = 2{6 s(1 - s) - 1}, free of lengths; an "
-                               "angle of the cube cannot depend on its size, and (82) needs the same 6 (its value "
-                               "1/2 at s = 1/2 follows only with it). b for 6 is the scan's usual confusion."))
+                        objection=("$b$ may be the prism's height, kept by the author in a formula written for the "
+                                   "cube before setting $a = b$."),
+                        answer=(r"(78b) with $a = b$ gives $12 s(1 - s) - 2 = 2\{6 s(1 - s) - 1\}$, free of lengths; "
+                                "an angle of the cube cannot depend on its size, and (82) needs the same $6$ (its "
+                                r"value $\tfrac12$ at $s = \tfrac12$ follows only with it). $b$ for $6$ is the scan's "
+                                "usual confusion.")))
 d.quote("edge-axis-range", "VI.D",
         "zwischen 0,2265 und 0,7735,  \n so gelangt er ebenfalls aus der labilen aufrechten Lage in eine schiefe "
         "stabile (die auch aus Gleichung 81 zu bestimmen ist), wenn die Drehungsachse entweder mit einer Grundkante "
@@ -414,19 +416,21 @@ d.quote("edge-axis-range", "VI.D",
             "touches a face: an equilibrium but not stable, see the s = 1/2 claim; on the clipped unit cube at "
             "s = 3/4 turning by 0.1 about the main axis lowers the potential by 6.4e-7); for 1/4 < s < 3/4, s != 1/2, "
             "the first domain holds no oblique equilibrium for any axis direction",
-            "(82) at omega = 0 (sin^2 45 deg = 1/2) needs 2(1-s)^2 >= 6s(1-s) - 1, i.e. (2s-1)(4s-3) >= 0 for s > 1/2 "
-            "and (2s-1)(4s-1) >= 0 for s < 1/2: only s >= 3/4 or s <= 1/4. Counterexample s = 0.6: the bound of (82) "
-            "is 0.16/0.44 = 0.364 < 1/2 = sin^2(45 deg + omega) for omega = 0, so no axis works; on the clipped "
-            "cube the root of GZ at 43.2 deg lies beyond the tilt 38.7 deg at which the top face reaches the water for "
-            "an edge-parallel axis (GZ there is -0.0104 for the unit cube). Scheeffer's own case s = 1/2 (omega = 0 only) is the isolated root s = 1/2.",
+            r"(82) at $\omega = 0$ ($\sin^2 45^\circ = \tfrac12$) needs $2(1-s)^2 \ge 6s(1-s) - 1$, i.e. "
+            r"$(2s-1)(4s-3) \ge 0$ for $s > \tfrac12$ and $(2s-1)(4s-1) \ge 0$ for $s < \tfrac12$: only $s \ge "
+            r"\tfrac34$ or $s \le \tfrac14$. Counterexample $s = 0.6$: the bound of (82) is $0.16/0.44 = 0.364 < "
+            r"\tfrac12 = \sin^2(45^\circ + \omega)$ for $\omega = 0$, so no axis works; on the clipped cube the root "
+            r"of $GZ$ at $43.2^\circ$ lies beyond the tilt $38.7^\circ$ at which the top face reaches the water for "
+            r"an edge-parallel axis ($GZ$ there is $-0.0104$ for the unit cube). Scheeffer's own case $s = \tfrac12$ "
+            r"($\omega = 0$ only) is the isolated root $s = \tfrac12$.",
             corrected_reading=(sp.Matrix([sedhi, sedlo]), sp.Matrix([sp.Rational(3, 4), sp.Rational(1, 4)])),
                         objection="The range 0.2265 < s < 0.7735 may be meant for the existence of an oblique stable"
                                   " position by some rotation, 'ebenfalls' pointing back to the second region, not "
                                   "to the first domain alone.",
-                        answer="The sentence bounds the axis angle by (78d), (82), which are conditions of the first"
-                               " domain, and (82) itself at omega = 0 holds only for s >= 3/4 or s <= 1/4; at s = "
-                               "0.6 the edge-parallel tilt reaches the top face at 38.7 deg before the root of GZ at"
-                               " 43.2 deg."))
+                        answer="The sentence bounds the axis angle by (78d), (82), which are conditions of the first "
+                               r"domain, and (82) itself at $\omega = 0$ holds only for $s \ge \tfrac34$ or $s \le "
+                               r"\tfrac14$; at $s = 0.6$ the edge-parallel tilt reaches the top face at $38.7^\circ$ "
+                               r"before the root of $GZ$ at $43.2^\circ$."))
 d.quote("82", "(82)",
         r"$$\sin^2 (45^\circ + \omega) \leq \begin{cases} \frac{(1 - s)^2}{b s (1 - s) - 1} & \text{für } s > "
         r"\frac{1}{2} \\ \frac{s^2}{b s (1 - s) - 1} & \text{für } s < \frac{1}{2} \end{cases} \quad (82)$$",
@@ -435,15 +439,15 @@ d.quote("82", "(82)",
             "transcription", "high",
             r"\sin^2 (45^\circ + \omega) \leq \begin{cases} \frac{(1 - s)^2}{6 s (1 - s) - 1} & \text{für } s > "
             r"\frac{1}{2} \\ \frac{s^2}{6 s (1 - s) - 1} & \text{für } s < \frac{1}{2} \end{cases}",
-            "(78d) with a/b = 1 has the denominator 6s(1-s) - 1; the text's own evaluation at s = 1/2, "
-            "sin^2 = 1/2, follows only with 6 (with the letter b it would depend on the cube's size). The same "
-            "'6' read as 'b' as in (81a).",
+            r"(78d) with a/b = 1 has the denominator $6s(1-s) - 1$; the text's own evaluation at $s = \tfrac12$, "
+            r"$\sin^2 = \tfrac12$, follows only with 6 (with the letter b it would depend on the cube's size). The "
+            "same '6' read as 'b' as in (81a).",
             corrected_reading=(Swc, PW((1 - s) ** 2 / (6 * s * (1 - s) - 1),
                                                      s ** 2 / (6 * s * (1 - s) - 1))),
                         objection="b may be the prism's height kept in the formula, as for (81a).",
-                        answer="(78d) with a/b = 1 has the denominator 6 s(1 - s) - 1, and the text's own value "
-                               "sin^2 = 1/2 at s = 1/2 follows only with 6 (with b it would depend on the size). The"
-                               " same 6 read as b as in (81a)."))
+                        answer="(78d) with a/b = 1 has the denominator $6 s(1 - s) - 1$, and the text's own value "
+                               r"$\sin^2 = \tfrac12$ at $s = \tfrac12$ follows only with 6 (with b it would depend on "
+                               "the size). The same 6 read as b as in (81a)."))
 d.quote("82-half", "VI.D", r"$$\sin^2 (45^\circ + \omega) = \frac{1}{2}$$",
         reading=(sp.Subs(Sw, (a, s), (b, half)), half))
 d.quote("82-half-omega", "VI.D", r"$$\text{woraus } \sin (45^\circ + \omega) = \frac{1}{2} \sqrt{2}$$",
@@ -467,21 +471,21 @@ d.quote("half-stable", "VI.D",
             "the potential by sqrt(2) a d^4/(12 sin w cos w), d = (sin w + cos w - 1)/2 (about sqrt(2) a "
             "omega^3/192), because the corners of the top and bottom faces then dip through the water plane. "
             "The equilibrium tilt phi_1 = 45 deg and omega = 0 are right.",
-            "At s = 1/2 the allowed range of omega shrinks to the single value 0 (82), so the neutral rotation about "
-            "the main axis of the first domain immediately leaves it: the columns over the two corner triangles "
-            "with |xi| > a/2 are capped by the faces, and with the plane still through the centre the potential "
-            "changes by Delta = -sqrt(2) J/a^3 x 2 < 0 (steps half-cube-*). On the clipped unit cube: "
-            "Delta(0.1) = -6.0e-6, Delta(0.3) = -1.03e-4 (potential in units of the edge), agreeing with the closed "
-            "form; the metacentric height of that position is exactly 0. Counterexample to 'stabil': any omega "
-            "!= 0.",
+            r"At $s = \tfrac12$ the allowed range of $\omega$ shrinks to the single value 0 (82), so the neutral "
+            "rotation about the main axis of the first domain immediately leaves it: the columns over the two corner "
+            r"triangles with $|\xi| > a/2$ are capped by the faces, and with the plane still through the centre the "
+            r"potential changes by $\Delta = -2\sqrt2\, J/a^3 < 0$ (the steps on the cube at $s = \tfrac12$). On the "
+            r"clipped unit cube: $\Delta(0.1) = -6.0 \times 10^{-6}$, $\Delta(0.3) = -1.03 \times 10^{-4}$ (potential "
+            "in units of the edge), agreeing with the closed form; the metacentric height of that position is "
+            r"exactly 0. Counterexample to 'stabil': any $\omega \ne 0$.",
             corrected_reading=(Dlt, -sp.Abs(Dlt)),
             objection="Just before (52) Scheeffer calls the oblique equilibrium stable although the moment vanishes "
-                      "for the axis G_2 H_2: a position neutral in one direction counts as stable in his usage, so "
-                      "the cube at s = 1/2 is stable in his sense.",
+                      "for the axis $G_2 H_2$: a position neutral in one direction counts as stable in his usage, so "
+                      r"the cube at $s = \tfrac12$ is stable in his sense.",
             answer="His neutral direction is harmless because turning about the main axis leads through new "
                    "equilibria (the law of V); here it leaves the first domain at once and the potential falls (by "
-                   "about sqrt(2) a omega^3/192, -6.0e-6 at omega = 0.1 on the unit cube), so the position is not "
-                   "stable even in that sense."))
+                   r"about $\sqrt2\, a\, \omega^3/192$, $-6.0 \times 10^{-6}$ at $\omega = 0.1$ on the unit cube), so "
+                   "the position is not stable even in that sense."))
 d.quote("half-tilt", "VI.D", r"$\varphi_1 = 45^\circ$",
         reading=(sp.atan(sp.sqrt(sp.Subs(tan2, (a, s), (b, half)))), pi / 4))
 d.quote("half-waterplane", "VI.D",
@@ -556,15 +560,15 @@ Q_BOC = (sp.Matrix([sp.cos(alph / 2), sp.sin(alph / 2)]) + sp.Matrix([sp.cos(3 *
 d.quote("height-OV", "VI.E",
         r"so bildet für das Dreieck B O C die Achse M N mit der Höhe O V den Winkel  $\varphi = \alpha$",
         unreadable="V names no point of VI.E: the height of the triangle BOC is OQ (defined before (83), whose angle "
-                   "phi is measured from OQ); no point V is introduced",
+                   r"$\varphi$ is measured from OQ); no point V is introduced",
         erratum=Erratum("misprint", "low", r"\text{mit der Höhe } O Q \text{ den Winkel } \varphi = \alpha",
-                        "The paragraph defines the height of the isosceles triangle BCO as OQ = h and measures the "
-                        "angle phi of (83) between the axis L and OQ; the sentence applies (83) to BOC with L = MN, so "
-                        "the height meant is OQ, the only height of BOC the text names (the line OV occurs nowhere "
-                        "else in the section). With the vertices at the angles (k - 1/2) alpha from MN, OQ (Q the "
-                        "middle of BC) lies at the angle alpha from MN, as the sentence says. A Q printed as V "
-                        "(a letter of another drawing of Fig. 15, or the typesetter's); low, since the figure is lost "
-                        "and the scan may have misread the letter.",
+                        "The paragraph defines the height of the isosceles triangle BCO as $OQ = h$ and measures the "
+                        r"angle $\varphi$ of (83) between the axis L and OQ; the sentence applies (83) to BOC with $L "
+                        "= MN$, so the height meant is OQ, the only height of BOC the text names (the line OV occurs "
+                        r"nowhere else in the section). With the vertices at the angles $(k - \tfrac12)\alpha$ from "
+                        r"MN, OQ (Q the middle of BC) lies at the angle $\alpha$ from MN, as the sentence says. A Q "
+                        "printed as V (a letter of another drawing of Fig. 15, or the typesetter's); low, since the "
+                        "figure is lost and the scan may have misread the letter.",
                         corrected_reading=(sp.Matrix([Q_BOC[0] * sp.sin(alph) - Q_BOC[1] * sp.cos(alph),
                                                       Q_BOC[0] * sp.cos(alph) + Q_BOC[1] * sp.sin(alph)]),
                                            sp.Matrix([0, h_])),
@@ -597,15 +601,17 @@ d.quote("86-nA", "VI.E", r"$$T_1 = \frac{n A}{4} \left( \frac{a^2}{12} + h^2 \ri
 d.quote("apothem", "VI.E", r"$h = \frac{a}{2} \omega \operatorname{tg} \left( \frac{\pi}{n} \right)$",
         reading=(h_, aE / 2 * om * sp.tan(pi / n)),
         erratum=Erratum("transcription", "high", r"h = \frac{a}{2} \operatorname{cotg} \left( \frac{\pi}{n} \right)",
-                        "The apothem of the regular n-gon of side a is (a/2) cot(pi/n) (half the side over the tangent "
-                        "of half the central angle). 'cotg' read as 'omega tg' is a known confusion of the scan; "
-                        "omega (the axis angle) has no place here.",
+                        r"The apothem of the regular n-gon of side a is $(a/2) \cot(\pi/n)$ (half the side over the "
+                        r"tangent of half the central angle). '$\operatorname{cotg}$' read as '$\omega "
+                        r"\operatorname{tg}$' is a known confusion of the scan; $\omega$ (the axis angle) has no "
+                        "place here.",
                         corrected_reading=(h_, aE / 2 * sp.cot(pi / n)),
-                        objection="'omega tg' may be read as printed, the product of the axis angle omega and "
-                                  "tg(pi/n).",
-                        answer="omega, the angle of the axis, has no place in the apothem of the n-gon, (a/2) "
-                               "cot(pi/n); the examples after (86a) use cot^2 60 deg = 1/3 and cot^2 45 deg = 1, "
-                               "which only cotg gives. 'cotg' read as 'omega tg' is the scan's."))
+                        objection=r"'$\omega \operatorname{tg}$' may be read as printed, the product of the axis "
+                                  r"angle $\omega$ and $\operatorname{tg}(\pi/n)$.",
+                        answer=r"$\omega$, the angle of the axis, has no place in the apothem of the n-gon, $(a/2) "
+                               r"\cot(\pi/n)$; the examples after (86a) use $\cot^2 60^\circ = \tfrac13$ and $\cot^2 "
+                               r"45^\circ = 1$, which only $\operatorname{cotg}$ gives. '$\operatorname{cotg}$' read "
+                               r"as '$\omega \operatorname{tg}$' is the scan's."))
 d.quote("86a", "(86a)",
         r"$$T_1 = \frac{F_1 a^2}{16} \left\{ \frac{1}{3} + \omega \operatorname{tg}^2 \left( \frac{\pi}{n} \right) "
         r"\right\} \quad (86a)$$",
@@ -613,13 +619,15 @@ d.quote("86a", "(86a)",
         erratum=Erratum("transcription", "high",
                         r"T_1 = \frac{F_1 a^2}{16} \left\{ \frac{1}{3} + \operatorname{cotg}^2 \left( \frac{\pi}{n} "
                         r"\right) \right\}",
-                        "With h = (a/2) cot(pi/n), n A (a^2/12 + h^2)/4 = F_1 a^2 (1/3 + cot^2(pi/n))/16; the "
-                        "examples that follow use cot^2 60 deg = 1/3 and cot^2 45 deg = 1, and (87) follows only "
-                        "with cot. The same 'cotg' -> 'omega tg' of the scan as in h.",
+                        r"With $h = (a/2) \cot(\pi/n)$, $n A (a^2/12 + h^2)/4 = F_1 a^2 (\tfrac13 + "
+                        r"\cot^2(\pi/n))/16$; the examples that follow use $\cot^2 60^\circ = \tfrac13$ and $\cot^2 "
+                        r"45^\circ = 1$, and (87) follows only with $\cot$. The same '$\operatorname{cotg}$' read as "
+                        r"'$\omega \operatorname{tg}$' of the scan as in $h$.",
                         corrected_reading=(T1n, F1n * aE ** 2 / 16 * (sp.Rational(1, 3) + sp.cot(pi / n) ** 2)),
-                        objection="As for h: 'omega tg^2' read as the product of the axis angle and tg^2(pi/n).",
-                        answer="n A (a^2/12 + h^2)/4 with h = (a/2) cot(pi/n) gives the cotg; the examples' values "
-                               "1/3 and 1 and (87) follow only from it."))
+                        objection=r"As for h: '$\omega \operatorname{tg}^2$' read as the product of the axis angle "
+                                  r"and $\operatorname{tg}^2(\pi/n)$.",
+                        answer=r"$n A (a^2/12 + h^2)/4$ with $h = (a/2) \cot(\pi/n)$ gives the $\operatorname{cotg}$; "
+                               r"the examples' values $\tfrac13$ and $1$ and (87) follow only from it."))
 d.quote("side", "VI.E", r"$$a = 2 r \cdot \sin \left( \frac{\pi}{n} \right)$$", reading=(aE, 2 * r * sp.sin(pi / n)))
 d.quote("87", "(87)",
         r"$$T_1 = \frac{1}{12} \cdot F_1 r^2 \left\{ 1 + 2 \cos^2 \left( \frac{\pi}{n} \right) \right\} \quad (87)$$",
@@ -635,12 +643,14 @@ d.quote("triangle-data", "VI.E",
         note="pi/3 = 60 deg needs no check",
         erratum=Erratum("transcription", "high",
                         r"\operatorname{cotg}^2 \left( \frac{\pi}{n} \right) = \frac{1}{3}",
-                        "cot^2 60 deg = 1/3, whereas tan^2 60 deg = 3; 'cotg' read as 'omega tg' as in (86a).",
+                        r"$\cot^2 60^\circ = \tfrac13$, whereas $\tan^2 60^\circ = 3$; '$\operatorname{cotg}$' read "
+                        r"as '$\omega \operatorname{tg}$' as in (86a).",
                         corrected_reading=(sp.Matrix([sp.Subs(F1n, n, 3), sp.Subs(sp.cot(pi / n) ** 2, n, 3)]),
                                            sp.Matrix([sp.Subs(aE ** 2 / 4 * sp.sqrt(3), n, 3), sp.Rational(1, 3)])),
-                        objection="'omega tg^2(pi/n) = 1/3' may be read as printed, fixing omega for the triangle.",
-                        answer="tg^2 60 deg = 3 and cot^2 60 deg = 1/3; the value is the cotangent's, and omega is "
-                               "free in the section (the law of V)."))
+                        objection=r"'$\omega \operatorname{tg}^2(\pi/n) = \tfrac13$' may be read as printed, fixing "
+                                  r"$\omega$ for the triangle.",
+                        answer=r"$\operatorname{tg}^2 60^\circ = 3$ and $\cot^2 60^\circ = \tfrac13$; the value is "
+                               r"the cotangent's, and $\omega$ is free in the section (the law of V)."))
 d.quote("triangle-T1", "VI.E",
         r"$$T_1 = F_1 \cdot \frac{a^2}{24} = \frac{a^4}{96} \cdot \sqrt{3} = \frac{F_1^2}{6 \sqrt{3}}$$",
         reading=tuple(sp.Subs(e_, n, 3) for e_ in (T1n, F1n * aE ** 2 / 24, aE ** 4 / 96 * sp.sqrt(3),
@@ -651,13 +661,14 @@ d.quote("square-data", "VI.E",
         reading=(sp.Matrix([sp.Subs(F1n, n, 4), sp.Subs(om * sp.tan(pi / n) ** 2, n, 4)]),
                  sp.Matrix([sp.Subs(aE ** 2, n, 4), 1])),
         erratum=Erratum("transcription", "high", r"\operatorname{cotg}^2 \left( \frac{\pi}{n} \right) = 1",
-                        "cot^2 45 deg = 1; as printed the value would depend on the axis angle omega. 'cotg' read "
-                        "as 'omega tg' as in (86a).",
+                        r"$\cot^2 45^\circ = 1$; as printed the value would depend on the axis angle $\omega$. "
+                        r"'$\operatorname{cotg}$' read as '$\omega \operatorname{tg}$' as in (86a).",
                         corrected_reading=(sp.Matrix([sp.Subs(F1n, n, 4), sp.Subs(sp.cot(pi / n) ** 2, n, 4)]),
                                            sp.Matrix([sp.Subs(aE ** 2, n, 4), 1])),
-                        objection="'omega tg^2(pi/n) = 1' may be read as printed, fixing omega = 1 for the square.",
-                        answer="tg^2 45 deg = cot^2 45 deg = 1, so the value is the cotangent's, as in (86a); an "
-                               "axis angle of one radian has no role in the section."))
+                        objection=r"'$\omega \operatorname{tg}^2(\pi/n) = 1$' may be read as printed, fixing $\omega "
+                                  "= 1$ for the square.",
+                        answer=r"$\operatorname{tg}^2 45^\circ = \cot^2 45^\circ = 1$, so the value is the "
+                               "cotangent's, as in (86a); an axis angle of one radian has no role in the section."))
 d.quote("square-T1", "VI.E", r"$$T_1 = \frac{F_1 a^2}{12} = \frac{a^4}{12} = \frac{F_1^2}{12}$$",
         reading=tuple(sp.Subs(e_, n, 4) for e_ in (T1n, F1n * aE ** 2 / 12, aE ** 4 / 12, F1n ** 2 / 12)))
 d.quote("circle-data", "VI.E",
@@ -736,11 +747,12 @@ d.quote("54-again", "VI.F", r"$$\operatorname{tg}^2 \varphi_1 = \frac{F b^2 s (1
 d.quote("55-reference", "VI.F", r"Nach 55 ist ferner",
         reading=(tanF, (sp.Min(b * (1 - s), b * s) / sp.Subs(umn, r, sp.sqrt(2 * F / (n * sp.sin(2 * pi / n))))) ** 2),
         erratum=Erratum("misprint", "low", r"\text{Nach 54 ist ferner}",
-                        "The formula quoted after the words, tg^2 phi_1 = F b^2 s(1-s)/T_1 - 2, is (54), the oblique "
-                        "equilibrium of a prism whose base has equal moments about all central axes; (55) is the bound "
-                        "tg phi_1 <= b(1-s)/u_m (s > 1/2), b s/u_m (s < 1/2) of the first rotation region, which "
-                        "limits the tilt and does not determine it. A wrong equation number; 4 and 5 are close in "
-                        "print and in the scan alike (low).",
+                        r"The formula quoted after the words, $\operatorname{tg}^2\varphi_1 = F b^2 s(1-s)/T_1 - 2$, "
+                        "is (54), the oblique equilibrium of a prism whose base has equal moments about all central "
+                        r"axes; (55) is the bound $\operatorname{tg}\varphi_1 \le b(1-s)/u_m$ ($s > \tfrac12$), $b "
+                        r"s/u_m$ ($s < \tfrac12$) of the first rotation region, which limits the tilt and does not "
+                        "determine it. A wrong equation number; 4 and 5 are close in print and in the scan alike "
+                        "(low).",
                         corrected_reading=(tanF, sp.Subs(tan2g, (Fg, Tg), (F, T1F))),
                         objection="55 may be the scan's reading of a 54, the fault being the transcription's and not"
                                   " the print's.",

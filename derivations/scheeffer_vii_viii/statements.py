@@ -231,11 +231,11 @@ d.quote("s-upper", "VII", "Es soll dabei das spec. Gew.  $s > \\frac{1}{2}$\n\nv
                         "reaches equally far on both sides of the axis (u_m = u_m'); otherwise the second region "
                         "may begin with the lower base although s > 1/2 (and the formulas apply with dry and wet "
                         "parts exchanged)",
-                        "The same claim as in IV (53) (scheeffer-iv-v, 's-half'). Counterexample: equilateral "
-                        "triangular prism of side 1 and height 1, s = 3/5, turned about an axis parallel to a side with "
-                        "that side dipping (u_m = 1/(2 sqrt 3), u_m' = 1/sqrt 3, s^* = 2/3): the clipped prism's lower "
-                        "base reaches the water at tan phi = 1.0392 (= sqrt 3 s), the upper one only at 1.3856 "
-                        "(= 2 sqrt 3 (1 - s)).",
+                        (r"The same claim as in IV (53) (Scheeffer IV, the claim on $s > \tfrac12$). Counterexample: "
+                         r"equilateral triangular prism of side 1 and height 1, $s = \tfrac35$, turned about an axis "
+                         r"parallel to a side with that side dipping ($u_m = 1/(2 \sqrt{3}), u_m' = 1/\sqrt{3}, s^* = "
+                         r"2/3$): the clipped prism's lower base reaches the water at $\tan \varphi = 1.0392$ ($= "
+                         r"\sqrt{3} s$), the upper one only at $1.3856$ ($= 2 \sqrt{3} (1 - s)$)."),
                         corrected_reading=(sst, um1 / (um + um1)),
                         objection="'sodass also die obere Grundfläche zum Teil eintaucht' may be a stipulation of "
                                   "the case to be treated (s > 1/2 and the upper base cut), not an inference from s "
@@ -335,16 +335,16 @@ d.quote("100", "(100)", r"so ist das  $\frac{1}{2}$  Volumen des über dem Wasse
         "\n\n$$V_3 = V \\cdot (1 - s) = F_1 \\cdot b \\cdot (1 - s) \\quad (100)$$",
         reading=(V3 / 2, V * (1 - s), F1 * b * (1 - s)),
         erratum=Erratum("transcription", "medium", r"\text{das Volumen ... } V_3 = V (1 - s) = F_1 b (1 - s)",
-                        "The dry part's whole volume is V (1 - s) (the submerged part is s V); the text uses V_3 "
-                        "so in (103a), (121b). The '1/2' before 'Volumen' is a stray sign of the scan (perhaps a "
-                        "misread mark); a slip of the printer is possible (medium).",
+                        ("The dry part's whole volume is $V (1 - s)$ (the submerged part is $s V$); the text uses "
+                         r"$V_3$ so in (103a), (121b). The '$\tfrac12$' before 'Volumen' is a stray sign of the scan "
+                         "(perhaps a misread mark); a slip of the printer is possible (medium)."),
                         corrected_reading=(V3, V * (1 - s), F1 * b * (1 - s)),
                         objection="The '1/2' may be the print's own, e.g. a half of the volume meant in a sentence "
                                   "the scan has shortened.",
-                        answer="The display that follows is the whole dry volume V (1 - s), and (103a), (121b) use "
-                               "V_3 so; no half of it enters any later formula. A stray sign before 'Volumen' is "
-                               "more likely the scan's reading of a mark than a compositor's word, but the print "
-                               "cannot be seen: medium."))
+                        answer=("The display that follows is the whole dry volume $V (1 - s)$, and (103a), (121b) "
+                                "use $V_3$ so; no half of it enters any later formula. A stray sign before 'Volumen' "
+                                "is more likely the scan's reading of a mark than a compositor's word, but the print "
+                                "cannot be seen: medium.")))
 d.quote("101", "(101)",
         r"$$\left. \begin{aligned} V_3 z_3 &= \int \frac{1}{2} z^2 \cdot d f = \frac{1}{2} \operatorname{tg}^2 "
         r"\varphi_2 \cdot \int x^2 d f = \frac{1}{2} T \cdot \operatorname{tg}^2 \varphi_2 \\ V_3 x_3 &= \int z x \cdot "
@@ -391,22 +391,24 @@ d.quote("104", "(104)", r"$$T_m - V_3 e_3 > 0 \quad (104)$$", reading=(Tm - V3 *
         note="D = T_m - V_1 e_2 (Duhamel), V_1 e_2 = V_3 e_3 (step e2-e3); T_m the least moment at equilibrium")
 d.quote("104-balance", "VII", r"so ist  $V_1 e_2 = V_3 e_3$", reading=(V1 * e2, V3 * e3))
 d.quote("x-direction", "VII", r"Nimmt man  $S S^1$  als  $(+ x)$  Richtung",
-        unreadable="S is the centroid of the body (Fig. 17), no point of the water section of Fig. 19, whose points "
-                   "are O_1, H, N, E_1, S^1, L, J_1, K_1, P, Q: 'S S^1' names no direction in its plane",
+        unreadable=("$S$ is the centroid of the body (Fig. 17), no point of the water section of Fig. 19, whose "
+                    "points are $O_1$, $H$, $N$, $E_1$, $S^1$, $L$, $J_1$, $K_1$, $P$, $Q$: '$S S^1$' names no "
+                    "direction in its plane"),
         erratum=Erratum("misprint", "low", r"\text{Nimmt man } L S^1 \text{ als } (+ x) \text{ Richtung}",
-                        "The x axis of Fig. 19 runs through the centroid S^1 across the principal axis J_1 K_1, "
-                        "which is perpendicular to S^1 L: it lies along S^1 L. Its sense follows from the shift two "
-                        "sentences on, 'x - m statt x ... wenn S^1 L = m', which moves the origin to HN: the points "
-                        "of HN have x = -m, so +x points from L to S^1: measured from HN in that sense, the first "
-                        "moment of the water section is +m F_2 (its area F_2, pulled back to F: int x/cos phi_2 df "
-                        "over F, stretched by 1/cos phi_2). Neither 'S' for 'L' by the scan nor by the typesetter "
-                        "can be told without the figure; low.",
+                        ("The $x$ axis of Fig. 19 runs through the centroid $S^1$ across the principal axis $J_1 "
+                         "K_1$, which is perpendicular to $S^1 L$: it lies along $S^1 L$. Its sense follows from the "
+                         "shift two sentences on, '$x - m$ statt $x$ ... wenn $S^1 L = m$', which moves the origin "
+                         "to HN: the points of HN have $x = -m$, so $+x$ points from $L$ to $S^1$: measured from HN "
+                         "in that sense, the first moment of the water section is $+m F_2$ (its area $F_2$, pulled "
+                         r"back to $F$: $\int x/\cos\varphi_2\, df$ over $F$, stretched by $1/\cos\varphi_2$). "
+                         "Neither 'S' for 'L' by the scan nor by the typesetter can be told without the figure; low."),
                         corrected_reading=(termwise(x / c2 ** 2, MF), m_ * F2),
-                        objection="S S^1 may be right: S, the centroid of the body, projects onto the water section,"
-                                  " and the lost Fig. 19 may mark that projection on the line through S^1.",
-                        answer="The shift 'x - m statt x ... wenn S^1 L = m' fixes the axis along S^1 L and its "
-                               "sense from L to S^1; whether the figure also carried S on that line, and whether "
-                               "scan or print wrote S for L, cannot be told without the figure, so it stays low."),
+                        objection=("$S S^1$ may be right: $S$, the centroid of the body, projects onto the water "
+                                   "section, and the lost Fig. 19 may mark that projection on the line through $S^1$."),
+                        answer=("The shift '$x - m$ statt $x$ ... wenn $S^1 L = m$' fixes the axis along $S^1 L$ and "
+                                "its sense from $L$ to $S^1$; whether the figure also carried $S$ on that line, and "
+                                "whether scan or print wrote $S$ for $L$, cannot be told without the figure, so it "
+                                "stays low.")),
         note="x is measured in F from GH (the projection of HN) and stretched by 1/cos phi_2 in the waterplane")
 d.quote("105-def", "VII", r"$$T_\mu = \int_s (x \cos \mu - y \sin \mu)^2 \cdot d f$$",
         reading=(Tmu, termwise(((x / c2 - m_) * sp.cos(mu) - (y + n_) * sp.sin(mu)) ** 2 / c2, MF)),
@@ -445,19 +447,21 @@ d.quote("109", "(109)", r"$$T_\mu = \frac{1}{2} (T_2 + T_2^1) - \frac{1}{2} \cos
         erratum=Erratum("misprint", "medium",
                         r"T_\mu = \frac{1}{2} (T_2 + T_2^1) - \frac{1}{2} \cos 2 \mu \left\{ T_2^1 - T_2 + 2 k "
                         r"\operatorname{tg} 2 \mu \right\}",
-                        "From (107): T_2 cos^2 mu + T_2^1 sin^2 mu = (T_2 + T_2^1)/2 - cos 2mu (T_2^1 - T_2)/2 and "
-                        "-k sin 2mu = -(1/2) cos 2mu (2 k tg 2mu), so the brace has + 2 k tg 2mu. Only with + does "
-                        "the next step give (T_2 + T_2^1)/2 -+ sqrt((T_2 - T_2^1)^2 + 4k^2)/2 (with - the root would be "
-                        "of ((T_2^1 - T_2)^2 - 4k^2)^2/((T_2^1 - T_2)^2 + 4k^2)). A sign slip of the author or "
-                        "printer; a scan turning + into - is unusual (medium).",
+                        (r"From (107): $T_2 \cos^2\mu + T_2^1 \sin^2\mu = (T_2 + T_2^1)/2 - \cos 2\mu\, (T_2^1 - "
+                         r"T_2)/2$ and $-k \sin 2\mu = -\tfrac12 \cos 2\mu\, (2 k \operatorname{tg} 2\mu)$, so the "
+                         r"brace has $+ 2 k \operatorname{tg} 2\mu$. Only with $+$ does the next step give $(T_2 + "
+                         r"T_2^1)/2 \mp \sqrt{(T_2 - T_2^1)^2 + 4k^2}/2$ (with $-$ the root would be of $((T_2^1 - "
+                         "T_2)^2 - 4k^2)^2/((T_2^1 - T_2)^2 + 4k^2)$). A sign slip of the author or printer; a scan "
+                         "turning $+$ into $-$ is unusual (medium)."),
                         corrected_reading=(Tg, Sg - sp.cos(2 * mu) / 2 * (T21g - T2g + 2 * kg * sp.tan(2 * mu))),
-                        objection="The minus may be right if k is taken with the opposite sign, k = -int_2 u_2 v_2"
-                                  " df_2.",
-                        answer="(109) only rewrites (107), T_mu = T_2 cos^2 mu + T_2^1 sin^2 mu - k sin 2mu, with the"
-                               " same k, whatever its sign: -k sin 2mu is -(1/2) cos 2mu (2k tg 2mu), so the brace "
-                               "has + 2k tg 2mu, and with the tg 2mu of (108) only that gives the root of the next "
-                               "line. A plus read as minus is no usual scan fault, so the print's; medium, since "
-                               "author and printer cannot be told."))
+                        objection=(r"The minus may be right if $k$ is taken with the opposite sign, $k = -\int_2 u_2 "
+                                   "v_2 df_2$."),
+                        answer=(r"(109) only rewrites (107), $T_\mu = T_2 \cos^2 \mu + T_2^1 \sin^2 \mu - k \sin "
+                                r"2\mu$, with the same $k$, whatever its sign: $-k \sin 2\mu$ is $-\tfrac12 \cos "
+                                r"2\mu\, (2k \operatorname{tg} 2\mu)$, so the brace has $+ 2k \operatorname{tg} "
+                                r"2\mu$, and with the $\operatorname{tg} 2\mu$ of (108) only that gives the root of "
+                                "the next line. A plus read as minus is no usual scan fault, so the print's; medium, "
+                                "since author and printer cannot be told.")))
 d.quote("109-cos", "VII", r"$$\cos 2 \mu = \pm \frac{T_2^1 - T_2}{\sqrt{(T_2^1 - T_2)^2 + 4 k^2}}$$",
         reading=(sp.cos(2 * mus) ** 2, (T21g - T2g) ** 2 / ((T21g - T2g) ** 2 + 4 * kg ** 2)),
         note="the +- read through the square, at the root mu^* of (108)")
@@ -515,21 +519,22 @@ TAN_USED = F1 * b * (1 - s) / (F * xs)                            # tan phi_2 in
 d.quote("102a-reference", "VII", r"(nach 102 a)",
         reading=(sp.Matrix([sp.Derivative(Q102, x0), tg2]), sp.Matrix([sp.Derivative(TAN_USED, x0), TAN_USED])),
         erratum=Erratum("misprint", "medium", r"\text{(nach 103 a)}",
-                        "The relation cited, 1/cos^2 phi_2 = (F_1 b (1-s)/(F x_s))^2 + 1, is tan phi_2 = F_1 b (1-s)/"
-                        "(F x_s), i.e. (103a), which comes from the volume (100) and fixes the tilt whatever x_0. There "
-                        "is no (102a): (102) is the single moment equation T(1 + tg^2/2) - V_3 b/2 - V_3 x_0 cotg "
-                        "phi_2 = 0, which ties the tilt to x_0 (its derivative in x_0 is -F x_s, not 0) and cannot "
-                        "give it. '102 b' for (103b) before (116) is the same slip (not booked: (102) with (100) "
-                        "implies (116) as (103b) does). Two consistent numbers point to the print or an earlier "
-                        "numbering of the manuscript rather than the scan (medium).",
+                        (r"The relation cited, $1/\cos^2 \varphi_2 = (F_1 b (1-s)/(F x_s))^2 + 1$, is $\tan \varphi_2 "
+                         "= F_1 b (1-s)/(F x_s)$, i.e. (103a), which comes from the volume (100) and fixes the tilt "
+                         "whatever $x_0$. There is no (102a): (102) is the single moment equation $T(1 + "
+                         r"\operatorname{tg}^2/2) - V_3 b/2 - V_3 x_0 \operatorname{cotg} \varphi_2 = 0$, which ties "
+                         "the tilt to $x_0$ (its derivative in $x_0$ is $-F x_s$, not $0$) and cannot give it. '102 "
+                         "b' for (103b) before (116) is the same slip (not booked: (102) with (100) implies (116) as "
+                         "(103b) does). Two consistent numbers point to the print or an earlier numbering of the "
+                         "manuscript rather than the scan (medium)."),
                         corrected_reading=(sp.Matrix([sp.Derivative(V3 - V * (1 - s), x0), tg2]),
                                            sp.Matrix([sp.Derivative(TAN_USED, x0), TAN_USED])),
                         objection="The print may have numbered (102a), (102b) displays that the transcription lost, "
                                   "so that both references are right.",
-                        answer="The transcription carries (102), then (103a) and (103b), and the summary cites '95 "
-                               "a, 103 a, b und 117'; the relation cited is (103a) squared plus one, and (102) "
-                               "cannot give it (it ties the tilt to x_0). Both references off by one in the same way"
-                               " point to the print or an earlier numbering, hence medium."),
+                        answer=("The transcription carries (102), then (103a) and (103b), and the summary cites '95 "
+                                "a, 103 a, b und 117'; the relation cited is (103a) squared plus one, and (102) "
+                                "cannot give it (it ties the tilt to $x_0$). Both references off by one in the same "
+                                "way point to the print or an earlier numbering, hence medium.")),
         note="read as: the equation cited gives the tilt of the relation quoted after it, independent of x_0; the "
              "derivative in x_0 of the equation cited against that of the relation, and the tilt itself")
 d.quote("117-T", "VII", "$$T_1 = T - F \\cdot x_s^2$$\n\n$$T_1^1 = T^1 - F \\cdot y_s^2.$$",
@@ -588,19 +593,20 @@ def area21(labels):
 
 with sp.evaluate(False):
     F21 = area21("ABCD") - area21("BGH")  # the dry part of the upper base: the base less the wet triangle
-F_LABEL = ("F is the dry part AGHCD of the upper base, as in VII: the area whose moments F x_s, T (120)-(122) and "
-           "V_3 = (F x_s - f x_s^1) tg phi_3 (121b) use; VIII keeps the letters of VII, where G, H lie on the sides "
-           "at the wet corner B (int_2 df = BGH, the remark after (95a)). Checked on a square ABCD with G = (2/3, 1), "
-           "H = (1, 1/4): the dry part is 1 - 1/8 = 7/8")
+F_LABEL = (("$F$ is the dry part AGHCD of the upper base, as in VII: the area whose moments $F x_s$, $T$ (120)-(122) "
+            r"and $V_3 = (F x_s - f x_s^1) \operatorname{tg}\varphi_3$ (121b) use; VIII keeps the letters of VII, "
+            r"where $G$, $H$ lie on the sides at the wet corner $B$ ($\int_2 df = BGH$, the remark after (95a)). "
+            r"Checked on a square ABCD with $G = (\tfrac23, 1)$, $H = (1, \tfrac14)$: the dry part is $1 - \tfrac18 = "
+            r"\tfrac78$"))
 d.quote("118-domain", "(118)",
         r"wo das Zeichen  $\int$  auf die Fläche  $G H D = F$  und das Zeichen  $\int^1$  auf die Fläche  $D M L = f$  "
         r"auszudehnen ist.",
         reading=(area21("GHD"), F21),
         erratum=Erratum("misprint", "medium", r"\text{auf die Fläche } A G H C D = F",
-                        F_LABEL + ". GHD is a triangle with the vertex D, the corner where the dry part f = DML of the "
-                        "lower base lies; its area (5/12 on the square) is not F. Not a scan fault (two letters "
-                        "missing and none misread); medium, since Fig. 21 is lost but VII fixes F, and (118) "
-                        "integrates over F ((95a) over AGHCD).",
+                        F_LABEL + ". GHD is a triangle with the vertex D, the corner where the dry part $f = DML$ of the "
+                        r"lower base lies; its area ($\tfrac{5}{12}$ on the square) is not $F$. Not a scan fault (two letters "
+                        "missing and none misread); medium, since Fig. 21 is lost but VII fixes $F$, and (118) "
+                        "integrates over $F$ ((95a) over AGHCD).",
                         corrected_reading=(area21("AGHCD"), F21),
                         objection="In the third region the lost Fig. 21 may letter the points anew, so that GHD "
                                   "names the dry part of the upper base (G, H on the sides at D).",
@@ -635,17 +641,17 @@ d.quote("121-dry", "VIII", r"Das Volumen des nicht eintauchenden Körperteils ( 
 d.quote("prism-bases", "VIII", r"mit den Grundflächen  $G B H$  und  $M D L$",
         reading=(area21("GBH"), F21),
         erratum=Erratum("misprint", "low", r"\text{mit den Grundflächen } A G H C D \text{ und } M D L",
-                        F_LABEL + ". The dry part is the prism over F less the prism over the projected dry part "
+                        F_LABEL + ". The dry part is the prism over $F$ less the prism over the projected dry part "
                         "DML of the lower base; GBH is the wet triangle of the upper base, whose prism lies under "
-                        "water. Two labels of the same paragraph name F wrongly (GBH here, GHD in (118)'s domain: "
-                        "118-domain); the scan does not turn AGHCD into GBH; low, since Fig. 21 is lost.",
+                        "water. Two labels of the same paragraph name $F$ wrongly (GBH here, GHD in (118)'s domain);"
+                        " the scan does not turn AGHCD into GBH; low, since Fig. 21 is lost.",
                         corrected_reading=(area21("AGHCD"), F21),
                         objection="GBH may be meant: the prism over the wet triangle GBH of the upper base could be "
                                   "the body whose volume is taken.",
-                        answer="The volume built here is V_3 = (F x_s - f x_s^1) tg phi_3 (121b), the dry part, a "
-                               "prism over F less one over the dry part DML of the lower base; the prism over GBH "
-                               "lies under water. The letters differ from 118's GHD too, so which label the print "
-                               "had cannot be recovered: low."),
+                        answer=(r"The volume built here is $V_3 = (F x_s - f x_s^1) \operatorname{tg} \varphi_3$ "
+                                "(121b), the dry part, a prism over $F$ less one over the dry part DML of the lower "
+                                "base; the prism over GBH lies under water. The letters differ from 118's GHD too, "
+                                "so which label the print had cannot be recovered: low.")),
         note="read on a square base: the first prism's base has the area of the dry part F of the upper base")
 x31 = sp.Symbol("x_3^1", positive=True)      # the letter printed in the definition of the centroid distance of f
 d.domain.update({x31: (R(1, 20), R(3, 10))})
@@ -654,18 +660,18 @@ d.quote("xs1-definition", "VIII", r"$x_3^1$  die Entfernung des Schwerpunktes de
                                                   (T - tau) * tg3 - (x0 + x01) * x31 * f * tg3])),
         erratum=Erratum("transcription", "medium", r"x_s^1 \text{ die Entfernung des Schwerpunktes der Fläche } f "
                                                    r"\text{ von } M L",
-                        "The distance defined here is the one (120), (121), (121b), (122) use as x_s^1 (f x_s^1 is the "
-                        "first moment of f about ML, as F x_s that of F about GH); x_3^1 appears in no formula, and "
-                        "x_3 is the dry part's centroid, another quantity. Read with the printed letter as its own "
-                        "quantity, (120) fails; with x_s^1 it is the derived moment. The scan read s as 3 (medium: "
-                        "the print may have had the slip).",
+                        ("The distance defined here is the one (120), (121), (121b), (122) use as $x_s^1$ ($f x_s^1$ "
+                         "is the first moment of $f$ about $ML$, as $F x_s$ that of $F$ about $GH$); $x_3^1$ appears "
+                         "in no formula, and $x_3$ is the dry part's centroid, another quantity. Read with the "
+                         "printed letter as its own quantity, (120) fails; with $x_s^1$ it is the derived moment. "
+                         "The scan read $s$ as $3$ (medium: the print may have had the slip)."),
                         corrected_reading=(sp.Matrix([Z3c, X3c]), sp.Matrix([(T - tau) * tg3 ** 2 / 2 - b * f * xs1 * tg3,
                                                                             (T - tau) * tg3 - (x0 + x01) * xs1 * f * tg3])),
-                        objection="x_3^1 may be a quantity of its own, a distance of the dry part's centroid x_3 "
-                                  "carried to the lower base.",
-                        answer="x_3^1 occurs in no formula, while (120), (121), (121b), (122) use x_s^1 with f as F "
-                               "x_s with F; read as its own quantity (120) fails. s read as 3 is a glyph confusion "
-                               "of the scan, but the print may have had it: medium."),
+                        objection=("$x_3^1$ may be a quantity of its own, a distance of the dry part's centroid "
+                                   "$x_3$ carried to the lower base."),
+                        answer=("$x_3^1$ occurs in no formula, while (120), (121), (121b), (122) use $x_s^1$ with "
+                                "$f$ as $F x_s$ with $F$; read as its own quantity (120) fails. $s$ read as $3$ is a "
+                                "glyph confusion of the scan, but the print may have had it: medium.")),
         note="read through (120), the moments that use the distance defined here")
 zw3 = lambda xx: -xx * tg3 + b  # noqa: E731  (height of the water plane z = -x tan phi_3 above the lower base z = -b)
 d.quote("N1-lower-base", "VIII",
@@ -674,20 +680,21 @@ d.quote("N1-lower-base", "VIII",
         erratum=Erratum("transcription", "medium",
                         r"\text{bis auf den Punkt } N_1\text{, welcher hier (Fig. 20) in der unteren Grundfläche, dort "
                         r"in einer Seitenfläche liegt}",
-                        "N is the foot on GH of the perpendicular from O, in the upper base in both regions (Fig. 18; "
-                        "the origin of x in (118)-(121), and 'N N_2 = x_0 + x_0^1' of (121a) runs in the upper base). "
-                        "The point of the section's water line N_1 N (Fig. 17) that lies on a side face in the second "
-                        "region and in the lower base in the third is N_1: the same sentence projects it ('N_2 die "
-                        "Projektion von N_1') and (121a) uses N_1 N_2 = b. On the water plane z = -x tan phi_3 the "
-                        "point N (x = 0) lies b above the lower base, N_1 (x = x_0 + x_0^1) in it. A lost subscript "
-                        "(medium: the print may have dropped it).",
+                        ("$N$ is the foot on $GH$ of the perpendicular from $O$, in the upper base in both regions "
+                         "(Fig. 18; the origin of $x$ in (118)-(121), and '$N N_2 = x_0 + x_0^1$' of (121a) runs in "
+                         "the upper base). The point of the section's water line $N_1 N$ (Fig. 17) that lies on a "
+                         "side face in the second region and in the lower base in the third is $N_1$: the same "
+                         "sentence projects it ('$N_2$ die Projektion von $N_1$') and (121a) uses $N_1 N_2 = b$. On "
+                         r"the water plane $z = -x \tan\varphi_3$ the point $N$ ($x = 0$) lies $b$ above the lower "
+                         "base, $N_1$ ($x = x_0 + x_0^1$) in it. A lost subscript (medium: the print may have "
+                         "dropped it)."),
                         corrected_reading=(zw3(x0 + x01), 0),
                         objection="N may be right: the sentence may mean the foot N of the perpendicular, whose "
                                   "place changes with the region.",
-                        answer="(121a) measures 'N N_2 = x_0 + x_0^1' in the upper base, so N stays there; the point"
-                               " of the water line that moves from a side face to the lower base is N_1, which the "
-                               "same sentence projects ('N_2 die Projektion von N_1'). A lost subscript, scan or "
-                               "print: medium."),
+                        answer=("(121a) measures '$N N_2 = x_0 + x_0^1$' in the upper base, so $N$ stays there; the "
+                                "point of the water line that moves from a side face to the lower base is $N_1$, "
+                                "which the same sentence projects ('$N_2$ die Projektion von $N_1$'). A lost "
+                                "subscript, scan or print: medium.")),
         note="read as the height above the lower base z = -b of the point on the water line (x = 0 for N)")
 L122 = ((T - tau) * tg3 * (1 + tg3 ** 2 / 2) - F1 * b * (1 - s) * (x0 + b / 2 * tg3) - b * f * xs1 * (1 + tg3 ** 2))
 d.quote("122", "(122)", r"$$\left. \begin{aligned} (T - \tau) \operatorname{tg} \varphi_3 \left( 1 + \frac{1}{2} "

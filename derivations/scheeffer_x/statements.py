@@ -118,21 +118,24 @@ d.quote("104-reference", "X", r"Setzt man diese Werte in 104 ein",
         reading=(h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si)),
                  sp.Subs(Tm104 - Ve104, (Ul, Vl), (U_VAL, V_VAL))),
         erratum=Erratum("misprint", "medium", r"\text{Setzt man diese Werte in 167 ein}",
-                        "u and v, just computed, are the letters of (167), int x y df = h^3 {(v tg w - u cotg w)/6 + "
-                        "h (cotg^2 w - tg^2 w)/8}; inserted there they give (168) (derived: step 168). (104) is the "
-                        "stability condition T_m - V_3 e_3 > 0 of section VII, which contains neither u nor v and is "
-                        "no first equilibrium condition: inserting u, v into it leaves T_m - V_3 e_3, not (168). A "
-                        "wrong equation number; the scan would hardly turn 167 into 104, so the print's (medium).",
+                        (r"$u$ and $v$, just computed, are the letters of (167), $\int x y\, df = h^3 \{(v "
+                         r"\operatorname{tg} w - u \operatorname{cotg} w)/6 + h (\operatorname{cotg}^2 w - "
+                         r"\operatorname{tg}^2 w)/8\}$; inserted there they give (168) (derived in the step of "
+                         "(168)). (104) is the stability condition $T_m - V_3 e_3 > 0$ of section VII, which "
+                         "contains neither $u$ nor $v$ and is no first equilibrium condition: inserting $u$, $v$ "
+                         "into it leaves $T_m - V_3 e_3$, not (168). A wrong equation number; the scan would hardly "
+                         "turn 167 into 104, so the print's (medium)."),
                         corrected_reading=(h_ ** 3 * (co - si) / (24 * si * co ** 2) * (2 * a * co - rho * (co + si)),
                                            sp.Subs(h_ ** 3 * ((Vl * tg - Ul * ctg) / 6 + h_ / 8 * (ctg ** 2 - tg ** 2)),
                                                    (Ul, Vl), (U_VAL, V_VAL))),
-                        objection="(104) may be meant as printed: Scheeffer may refer back to the condition of "
-                                  "section VII that the second region's formulas are built on, the values of u and v"
-                                  " entering it through its moment T_m.",
-                        answer="(104) is T_m - V_3 e_3 > 0, an inequality without u and v, and inserting them leaves"
-                               " it unchanged; only (167), the integral written in u and v just before, turns into "
-                               "(168). A scan does not read 167 as 104 (two digits of three), so the slip is the "
-                               "print's; medium, since the author may have had an earlier numbering in mind."),
+                        objection=("(104) may be meant as printed: Scheeffer may refer back to the condition of "
+                                   "section VII that the second region's formulas are built on, the values of $u$ "
+                                   "and $v$ entering it through its moment $T_m$."),
+                        answer=("(104) is $T_m - V_3 e_3 > 0$, an inequality without $u$ and $v$, and inserting them "
+                                "leaves it unchanged; only (167), the integral written in $u$ and $v$ just before, "
+                                "turns into (168). A scan does not read 167 as 104 (two digits of three), so the "
+                                "slip is the print's; medium, since the author may have had an earlier numbering in "
+                                "mind.")),
         note="read as: (168) is the cited equation's left member with u, v inserted; (104)'s members T_m, V_3 e_3 "
              "are quantities of their own (not of u, v)")
 d.step("half-range", (P168.subs(h_, rho * si).subs({om: pi / 2 - om, rho: rho * tg}, simultaneous=True),
@@ -173,13 +176,13 @@ d.domain.update({phi19: (0.1, 1.4)})
 d.quote("fig19-reference", "X", "Da nun (s. Fig. 19)",
         reading=(sp.Matrix([n_.dot(Q - Hp) * sp.sin(phi19) for Q in (Bp, Hp, Gp)]), sp.zeros(3, 1)),
         erratum=Erratum("misprint", "low", r"\text{Da nun (s. Fig. 23)}",
-                        "The legs BH, BG are those of the corner triangle BHG that the top face loses: 'Es stelle "
-                        "Fig. 23 die obere Würfelfläche vor, von der das Dreieck BHG eintaucht'. Fig. 19 is the "
-                        "waterplane of section VII ('Fig. 19 stelle den Wasserschnitt dar'): it holds the water line "
-                        "GH but not the immersed corner B, which lies h sin phi below it (h = BP = rho sin w, phi the "
-                        "tilt about GH), so neither leg is in the figure cited. The figure that shows them is Fig. 23 "
-                        "(by analogy with VII, the top face of Fig. 18). The figures are lost and an 18 read as 19 "
-                        "cannot be excluded, hence low.",
+                        ("The legs BH, BG are those of the corner triangle BHG that the top face loses: 'Es stelle "
+                         "Fig. 23 die obere Würfelfläche vor, von der das Dreieck BHG eintaucht'. Fig. 19 is the "
+                         "waterplane of section VII ('Fig. 19 stelle den Wasserschnitt dar'): it holds the water "
+                         r"line GH but not the immersed corner B, which lies $h \sin\varphi$ below it ($h = BP = \rho "
+                         r"\sin w$, $\varphi$ the tilt about $GH$), so neither leg is in the figure cited. The figure "
+                         "that shows them is Fig. 23 (by analogy with VII, the top face of Fig. 18). The figures are "
+                         "lost and an 18 read as 19 cannot be excluded, hence low."),
                         corrected_reading=(sp.Matrix([sp.Subs(n_.dot(Q - Hp) * sp.sin(phi19), phi19, 0)
                                                       for Q in (Bp, Hp, Gp)]), sp.zeros(3, 1)),
                         objection="Fig. 19 may be right: the lost Fig. 19 (the waterplane of VII) may also draw the "
@@ -325,14 +328,15 @@ d.quote("172", "(172)",
             "(171) has exactly one root in 0 < x < 1 for 1/2 < s <= 0.7623, three for 0.7623 < s < (4 + sqrt 2)/7, "
             "two for (4 + sqrt 2)/7 <= s < 5/6 and none from 5/6 on; (4 + sqrt 2)/7 is where a root enters "
             "through x = 0 (f(0) = 0), not where the count of roots changes from one",
-            "Sturm counts of (171) (T and z inserted) in 0 < x < 1: one root at s = 1/2, 7/10, 0.762; three at "
-            "0.763, 0.77, 0.773 (at 0.77: x = 0.0858, 0.5684, 0.8768); two at 0.774, 0.8, 0.833; none at 0.834. "
-            "The count jumps from one to three at the fold of (171) (f = df/dx = 0 at x = 0.358, s = 0.762309, "
-            "a root of the resultant of f and df/dx in x), and the two roots left above (4 + sqrt 2)/7 meet at "
-            "x = 1 at s = 5/6 (f(1) = (5 - 6s)^2/432). What (4 + sqrt 2)/7 marks is f(0) = 0: the smallest root "
-            "leaves 0 < x through x = 0 (the corner B just touching). The author gives the result without the "
-            "discussion ('Aus Mangel an Raum'); read as 'one root if s < 0.7735' the sentence is false on "
-            "0.7623 < s < 0.7735; medium, since 'eine reelle Wurzel' may mean 'at least one', which holds.",
+            (r"Sturm counts of (171) ($T$ and $z$ inserted) in $0 < x < 1$: one root at $s = \tfrac12$, "
+             r"$\tfrac{7}{10}$, $0.762$; three at $0.763$, $0.77$, $0.773$ (at $0.77$: $x = 0.0858$, $0.5684$, "
+             "$0.8768$); two at $0.774$, $0.8$, $0.833$; none at $0.834$. The count jumps from one to three at the "
+             "fold of (171) ($f = df/dx = 0$ at $x = 0.358$, $s = 0.762309$, a root of the resultant of $f$ and "
+             r"$df/dx$ in $x$), and the two roots left above $(4 + \sqrt2)/7$ meet at $x = 1$ at $s = \tfrac56$ "
+             r"($f(1) = (5 - 6s)^2/432$). What $(4 + \sqrt2)/7$ marks is $f(0) = 0$: the smallest root leaves $0 < x$ "
+             "through $x = 0$ (the corner B just touching). The author gives the result without the discussion ('Aus "
+             "Mangel an Raum'); read as 'one root if $s < 0.7735$' the sentence is false on $0.7623 < s < 0.7735$; "
+             "medium, since 'eine reelle Wurzel' may mean 'at least one', which holds."),
             corrected_reading=Cases(((s <= S_FOLD_BELOW, sp.Eq(COUNT_171(0, 1), 1)),
                                      ((s >= S_FOLD_ABOVE) & (s < s172), sp.Eq(COUNT_171(0, 1), 3)),
                                      ((s >= s172) & (s < sp.Rational(5, 6)), sp.Eq(COUNT_171(0, 1), 2)),
@@ -340,10 +344,10 @@ d.quote("172", "(172)",
                                     {s: (half, 1)}, exhaustive=False),
                         objection="'eine reelle Wurzel' may mean 'at least one real root', and read so the sentence "
                                   "is true: (171) has a root in 0 < x < 1 for every s below 0.7735.",
-                        answer="Read so, the number 0.7735 marks nothing: roots exist up to 5/6, and the count "
-                               "changes at 0.7623 (the fold), not at (4 + sqrt 2)/7, where a root only enters "
-                               "through x = 0. The 'at least one' reading leaves the sentence true but its bound "
-                               "idle, hence medium."),
+                        answer=(r"Read so, the number 0.7735 marks nothing: roots exist up to $\tfrac56$, and the "
+                                r"count changes at $0.7623$ (the fold), not at $(4 + \sqrt2)/7$, where a root only "
+                                "enters through $x = 0$. The 'at least one' reading leaves the sentence true but its "
+                                "bound idle, hence medium.")),
         note="read on 1/2 < s < 1 as a root count (Sturm counts, T and z inserted): where s < (4 + sqrt 2)/7, (171) "
              "has one root in 0 < x < 1. The correction leaves out the fold, which lies in 0.7623 < s < 0.7624; "
              "f(0) < 0 <= f(1) there (steps end-0, end-1), so at least one root, as the sentence may also mean")
@@ -418,14 +422,14 @@ d.quote("one-or-both-faces", "X",
              "cube's faces are alike, so the 'Grundflächen' are that pair: for the trapezoid (a dry edge) the two "
              "faces at the ends of the edge, not the top and bottom of the turn, whose cuts are trapezoids")
 PENT_EVIDENCE = (
-    "(171) describes an equilibrium only while the bottom face stays uncut, "
-    "beta = (2 - x)(1 - s)/z < 1. For 1/2 < s < 0.7623 the root of (171) has beta > 1: at s = 3/5 it is "
-    "x = 0.5498, beta = 1.214, the bottom corner is dry and the waterplane a hexagon, so (171) does not apply; "
-    "the clipped cube has no pentagonal equilibrium there (a search over all orientations finds as its only stable "
-    "position the symmetric hexagon, the corner up). Pentagonal equilibria exist only for 0.7623 < s < 5/6 "
-    "(0.7623: the fold of (171), f = df/dx = 0 at x = 0.358); the one that starts at x = 0 at s = (4 + sqrt 2)/7 "
-    "and exists for 0.7623 < s < 0.7735 is stable, the other (0.7623 < s < 5/6) unstable. Scheeffer omitted the "
-    "discussion of (171) for want of space; the check of the bottom face is what is missing.")
+    (r"(171) describes an equilibrium only while the bottom face stays uncut, $\beta = (2 - x)(1 - s)/z < 1$. For "
+     r"$\tfrac12 < s < 0.7623$ the root of (171) has $\beta > 1$: at $s = \tfrac35$ it is $x = 0.5498$, $\beta = "
+     "1.214$, the bottom corner is dry and the waterplane a hexagon, so (171) does not apply; the clipped cube has "
+     "no pentagonal equilibrium there (a search over all orientations finds as its only stable position the "
+     r"symmetric hexagon, the corner up). Pentagonal equilibria exist only for $0.7623 < s < \tfrac56$ ($0.7623$: the "
+     r"fold of (171), $f = df/dx = 0$ at $x = 0.358$); the one that starts at $x = 0$ at $s = (4 + \sqrt2)/7$ and "
+     r"exists for $0.7623 < s < 0.7735$ is stable, the other ($0.7623 < s < \tfrac56$) unstable. Scheeffer omitted "
+     "the discussion of (171) for want of space; the check of the bottom face is what is missing."))
 d.quote("pentagon-exists", "X",
         "Hat also ein in aufrechter Lage labil schwimmender Würfel im ersten Drehungsgebiet keine neue "
         "Gleichgewichtslage, so hat er sicher eine im zweiten Gebiet (Fünfeckiger Wasserschnitt), wenn die obere "
@@ -438,10 +442,10 @@ d.quote("pentagon-exists", "X",
                         objection="The hypothesis 'keine neue Gleichgewichtslage im ersten Drehungsgebiet' may "
                                   "exclude exactly the densities where the root of (171) leaves the second domain, "
                                   "so that the claim is right within its hypothesis.",
-                        answer="For 1/4 < s < 3/4 the first domain holds no oblique equilibrium (scheeffer-vi-cf, "
-                               "edge-axis-range), so s = 3/5 meets the hypothesis; there the root x = 0.5498 of "
-                               "(171) has beta = 1.214 > 1, the waterplane is a hexagon, and the clipped cube has no"
-                               " pentagonal equilibrium. The word 'sicher' admits no exception."),
+                        answer=(r"For $\tfrac14 < s < \tfrac34$ the first domain holds no oblique equilibrium "
+                                r"(Scheeffer VI.D), so $s = \tfrac35$ meets the hypothesis; there the root $x = "
+                                r"0.5498$ of (171) has $\beta = 1.214 > 1$, the waterplane is a hexagon, and the "
+                                "clipped cube has no pentagonal equilibrium. The word 'sicher' admits no exception.")),
         note="read at s = 3/5 (upright unstable, no oblique position in the first domain): the print says the "
              "root of (171) is a pentagonal equilibrium")
 
@@ -458,15 +462,15 @@ d.quote("pentagon-stable", "X", "Es lässt sich auch zeigen, dass dieses Gleichg
         erratum=Erratum("claim", "medium",
                         "of the two pentagonal equilibria for 0.7623 < s < 0.7735 only the one with the smaller leg "
                         "(x -> 0 as s -> 0.7735) is stable; the other is unstable",
-                        "At s = 0.77 (171) has the pentagonal roots x = 0.0858 and x = 0.5684 (beta = 0.48, 0.71). "
-                        "d^2E/dt^2 along the diagonal plane has the sign of df/dx: + at 0.0858, - at 0.5684; the "
-                        "clipped cube confirms both equilibria (tan t = 0.3557, 0.7038), the second with a negative "
-                        "second derivative of the potential. The text proves nothing here ('worauf ich jedoch hier "
-                        "ebenfalls nicht näher eingehen kann'); medium, since 'dieses' may mean the small-leg branch "
-                        "alone.",
+                        (r"At $s = 0.77$ (171) has the pentagonal roots $x = 0.0858$ and $x = 0.5684$ ($\beta = "
+                         "0.48$, $0.71$). $d^2E/dt^2$ along the diagonal plane has the sign of $df/dx$: $+$ at "
+                         r"$0.0858$, $-$ at $0.5684$; the clipped cube confirms both equilibria ($\tan t = 0.3557$, "
+                         "$0.7038$), the second with a negative second derivative of the potential. The text proves "
+                         "nothing here ('worauf ich jedoch hier ebenfalls nicht näher eingehen kann'); medium, since "
+                         "'dieses' may mean the small-leg branch alone."),
                         corrected_reading=(SIG, sp.Matrix([1, -1])),
-                        objection="'dieses Gleichgewicht' may mean only the branch that enters at x = 0 as s passes "
-                                  "(4 + sqrt 2)/7, the one (172) points to, which is stable.",
+                        objection=("'dieses Gleichgewicht' may mean only the branch that enters at $x = 0$ as $s$ "
+                                   r"passes $(4 + \sqrt2)/7$, the one (172) points to, which is stable."),
                         answer="The sentence before speaks of the pentagonal equilibrium of the whole range s < "
                                "0.7735, and on 0.7623 < s < 0.7735 it is two equilibria of which the larger-leg one "
                                "is unstable (df/dx < 0 at x = 0.5684, s = 0.77). The narrow reading of 'dieses' is "

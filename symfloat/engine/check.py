@@ -27,6 +27,7 @@ import fastjsonschema
 
 from ..model.claim import as_latex, identical_links, members
 from ..model.derivation import Derivation, Printed
+from ..model.evidence_tex import shown_value, tex_error, tex_number, tex_point
 from ..model.relation import is_relation
 from .definitions import DefinitionRoute
 from .print_corrections import print_corrections
@@ -402,31 +403,44 @@ def _verdict(d, p, ident, corr, outcomes, failures, correction) -> FormulaReport
     return rep
 
 
+# How a proof strategy shows the claim: the identity check's (symfloat.engine.identity.STRATEGIES), the relation check's
+_PROOF_WORDS = {"cancel": "the difference cancels over a common denominator",
+                "squares": "both sides are non-negative and their squares agree",
+                "expand": "the difference expands to 0",
+                "radsimp": "the difference cancels once its roots are cleared from the denominators",
+                "simplify": "SymPy's general simplification takes the difference to 0",
+                "assumptions": "the statement follows from the derivation's assumptions",
+                "sign of factors": "the sign of each factor is fixed on the domain",
+                "sign cells": "it holds in every cell between the real roots of its numerators and denominators, and at the roots"}
+
+
 def _erratum(p, ident, corr, corrected_out) -> dict:
-    """The erratum's entry: its declaration, with what the engine found."""
+    """The erratum's entry: its declaration, with what the engine found, its mathematics in TeX between
+    dollars (:mod:`symfloat.model.evidence_tex`)."""
     found = []
     if ident is not None and ident.counterexample:
         cx = ident.counterexample
-        point = ", ".join(f"{k}={v}" for k, v in cx["point"].items())
-        where_ = f"at {point} " if point else ""
-        within = f" (allowed difference {cx['tolerance']})" if "tolerance" in cx else ""
-        found.append(f"{where_}the print gives {cx['rhs']} where the derivation gives {cx['lhs']}{within}")
+        where_ = f"at ${tex_point(cx['point'])}$ " if cx["point"] else ""
+        within = f" (allowed difference ${tex_number(cx['tolerance'])}$)" if "tolerance" in cx else ""
+        found.append(f"{where_}the print gives {shown_value(cx['rhs'])} where the derivation gives "
+                     f"{shown_value(cx['lhs'])}{within}")
     if p.unreadable:
         found.append(f"as printed: {p.unreadable}")
     if corr is not None and corr.holds:
         found.append(f"the correction is {'proved' if corr.status == 'proved' else 'confirmed by sampling'}"
-                     + (f" ({corr.strategy})" if corr.strategy else ""))
+                     + (f" ({_PROOF_WORDS[corr.strategy]})" if corr.strategy else ""))
     for o in corrected_out:
+        who = "the definition route" if o.witness == DefinitionRoute.name else "a first-principles witness"
         certified = [r for r in o.records if r.get("certified")]
         if certified and record_decision(certified[0]) == "undecided":
-            found.append(f"{o.witness} cannot decide the correction (its enclosure is too wide at "
+            found.append(f"{who} cannot decide the correction (its enclosure is too wide at "
                          f"{certified[0]['bits']} bits)")
         elif certified:
-            found.append(f"{o.witness} agrees with the correction to {certified[0]['rel_error']:.1e}, proven "
+            found.append(f"{who} agrees with the correction to ${tex_error(certified[0]['rel_error'])}$, proven "
                          f"({certified[0]['method']}, {certified[0]['bits']} bits)")
         elif o.records:
             best = min(o.records, key=lambda r: r["rel_error"])
-            found.append(f"{o.witness} agrees with the correction to {best['rel_error']:.1e} "
+            found.append(f"{who} agrees with the correction to ${tex_error(best['rel_error'])}$ "
                          f"({best['method']})")
     return {
         "kind": p.erratum.kind, "confidence": p.erratum.confidence, "corrected": p.erratum.corrected,

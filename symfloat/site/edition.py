@@ -30,12 +30,12 @@ from ..report.witness_words import error_cells
 from .difference import corrected_html
 from .names import typeset_names
 from .records import Records, slug
-from .text import excerpt_html, render
+from .text import excerpt_html, prose_html, render
 from .typeset import typeset
 
 __all__ = ["MARKS", "EVIDENCE_WORDS", "mark_of", "badge", "quotes", "edition_page", "note", "formula_anchor",
            "cell_label", "notebook_anchor", "witness_line", "reason_of", "correction_html", "anchors", "citation_html",
-           "fault_words", "places"]
+           "fault_words", "places", "permalink"]
 
 # The marks of the edition, gravest first (a stretch quoted twice shows the first): mark -> (sign, words).
 # An erratum is a fault of the original or a correction of the transcription (docs/errata-kinds.md).
@@ -60,6 +60,12 @@ def mark_of(f: dict, records: Records) -> str:
 def badge(mark: str) -> str:
     sign, words = MARKS[mark]
     return f'<span class="badge v-{mark}"><span class="sign" aria-hidden="true">{sign}</span> {words}</span>'
+
+
+def permalink(anchor: str, label: str) -> str:
+    """A link to *anchor* on its own page, to copy and cite (as the DLMF gives each equation a permalink)."""
+    return (f'<a class="permalink" href="#{anchor}" title="a permanent link to {html.escape(label)} on this page: '
+            f'copy it to cite the place">¶</a>')
 
 
 def formula_anchor(fid: str) -> str:
@@ -136,14 +142,14 @@ def _title(f: dict, records: Records) -> str:
     if erratum:
         head += f" ({erratum['kind']}, {erratum['confidence']} confidence)"
     parts = [head, EVIDENCE_WORDS.get(f["evidence"], f["evidence"])]
-    if erratum:
+    if erratum and "$" not in reason_of(erratum):       # a tooltip cannot typeset maths: left to the note
         parts.append(reason_of(erratum))
     if f.get("reason"):
         parts.append(f["reason"])
     return " — ".join(parts)
 
 
-_SENTENCE_END = re.compile(r"(?<=[a-z0-9)\]}'])(?<!i\.e)(?<!e\.g)\. (?=[A-Z(])")
+_SENTENCE_END = re.compile(r"(?<=[a-z0-9)\]}'$])(?<!i\.e)(?<!e\.g)\. (?=[A-Z(])")
 
 
 def reason_of(erratum: dict) -> str:
@@ -160,7 +166,7 @@ def correction_html(erratum: dict, printed_html: str) -> str:
         ("Printed", "Corrected")
     printed_tex = erratum["printed"].strip().strip("$")
     return (f'<div class="correction"><p class="reason"><strong>{erratum["kind"]}, {erratum["confidence"]} '
-            f'confidence.</strong> {html.escape(reason_of(erratum))}</p>'
+            f'confidence.</strong> {prose_html(reason_of(erratum))}</p>'
             f'<div class="printed"><span class="label">{shown}</span>{printed_html}</div>'
             f'<div class="corrected"><span class="label">{right}</span>'
             f'{corrected_html(erratum["corrected"], printed_tex)}</div></div>')
@@ -186,14 +192,15 @@ def note(f: dict, records: Records, root: str, printed_html: str = "") -> str:
     cell = records.cells.get(f["id"])
     mark = mark_of(f, records)
     lines = [f'<details class="note v-{mark}" id="{formula_anchor(f["id"])}">',
-             f'<summary>{badge(mark)} {html.escape(f["locator"])}</summary>']
+             f'<summary>{badge(mark)} {html.escape(f["locator"])} {permalink(formula_anchor(f["id"]), f["locator"])}'
+             '</summary>']
     if erratum:
         lines.append(correction_html(erratum, printed_html))
     if f.get("reason"):
-        lines.append(f'<p>{html.escape(f["reason"])}</p>')
+        lines.append(f'<p>{prose_html(f["reason"])}</p>')
     how = EVIDENCE_WORDS.get(f["evidence"], f["evidence"])
     lines += ['<details class="evidence"><summary>Evidence</summary>',
-              f"<p>{how[0].upper() + how[1:]}." + (f' {html.escape(erratum["evidence"])}' if erratum else "") + "</p>"]
+              f"<p>{how[0].upper() + how[1:]}." + (f' {prose_html(erratum["evidence"])}' if erratum else "") + "</p>"]
     if cell and cell.reading:
         lines.append(f'<p>Read as printed:</p><div class="reading">'
                      f'{typeset(typeset_names(f["derivation"], cell.reading), display=True)}</div>')

@@ -12,11 +12,12 @@ import html
 import re
 
 from ..model.erratum import APPARATUS, apparatus
+from ..model.evidence_tex import spans
 from ..model.source import SOURCES
 from .edition import (EVIDENCE_WORDS, badge, correction_html, formula_anchor, notebook_anchor, quotes, reason_of,
                       witness_line)
 from .records import Records, slug
-from .text import excerpt_html
+from .text import excerpt_html, prose_html
 
 __all__ = ["erratum_page", "facet_pages", "errata_index", "FACETS"]
 
@@ -46,7 +47,9 @@ def erratum_page(e: dict, records: Records) -> str:
         f'<p class="facts">{badge(mark)} {html.escape(source.author)}, <em>{html.escape(source.title)}</em>, '
         f'{html.escape(e["locator"])} · <a href="../errata-kinds.html">how the kind is decided</a></p>',
         correction_html(e, excerpt_html(text[a:b])),
-        '<h2>Evidence</h2>', f'<p class="evidence">{html.escape(e["evidence"])}</p>',
+        '<h2>Evidence</h2>', f'<p class="evidence">{prose_html(e["evidence"])}</p>',
+        *([f'<h2>The strongest objection</h2><p class="objection">{prose_html(e["objection"])}</p>',
+           f'<p class="answer"><strong>Answer.</strong> {prose_html(e["answer"])}</p>'] if e.get("objection") else []),
         f'<p>The printed formula: {EVIDENCE_WORDS.get(f["evidence"], f["evidence"])}. Witnesses: '
         f'{html.escape(witness_line(f["numeric"]))}.</p>',
         f'<p>See {" and ".join(links)}.</p>',
@@ -73,15 +76,28 @@ def _label(facet: str, value: str) -> str:
 
 
 def _line(e: dict) -> str:
-    first = reason_of(e).rstrip(".")
-    first = first if len(first) <= 160 else first[:159] + "…"
     author = SOURCES[e["source"]].author.split()[-1]
-    return f"- [{author}, {e['locator']}]({slug(e['id'])}.md) — {e['kind']}, {e['confidence']} confidence: {_plain(first)}"
+    return (f"- [{author}, {e['locator']}]({slug(e['id'])}.md) — {e['kind']}, {e['confidence']} confidence: "
+            f"{_plain(reason_of(e).rstrip('.'))}")
 
 
-def _plain(text: str) -> str:
-    """Prose for a MyST list line: Markdown's special characters escaped."""
-    return re.sub(r"([\\`*_{}\[\]<>#|$])", r"\\\1", text)
+_MARKDOWN = re.compile(r"([\\`*_{}\[\]<>#|$])")
+
+
+def _plain(text: str, limit: int = 160) -> str:
+    """Prose with its ``$...$`` mathematics for a MyST list line: the words' Markdown special characters
+    escaped, the math kept for MyST's dollar math; cut after *limit* characters, never inside a formula."""
+    out, length = [], 0
+    for kind, piece in spans(text):
+        cut = length + len(piece) > limit
+        if kind == "text":
+            out.append(_MARKDOWN.sub(r"\\\1", piece[:limit - length] if cut else piece))
+        elif not cut:
+            out.append(f"${piece}$")
+        if cut:
+            return "".join(out).rstrip() + "…"
+        length += len(piece)
+    return "".join(out)
 
 
 def facet_pages(records: Records) -> dict[str, str]:

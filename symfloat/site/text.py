@@ -7,6 +7,10 @@ the ``<sub>``/``<sup>`` the transcriptions use are honoured, and every math span
 that is only a web page's element number (``ID:(1610, 0)``) or a figure's file name is left out.  A
 reference to a figure (``Fig. 12``) is marked: the transcriptions have no figures.
 
+The words of the records (an erratum's evidence, reason, objection and answer) are prose with TeX
+inline math between dollars (:mod:`symfloat.model.evidence_tex`): :func:`prose_html` escapes the words
+and typesets the math.
+
 A caller marks stretches of the text: :func:`render` takes the offsets where a mark changes and a
 function that wraps a run of HTML in its mark, and calls ``after(block_start, block_end)`` to add
 what belongs below a block (the notes of the formulas quoted there).
@@ -16,10 +20,11 @@ from __future__ import annotations
 import html
 import re
 
+from ..model.evidence_tex import spans
 from ..model.span import math_intervals
 from .typeset import typeset
 
-__all__ = ["blocks", "inline_html", "render", "excerpt_html"]
+__all__ = ["blocks", "inline_html", "render", "excerpt_html", "prose_html"]
 
 _BLANK = re.compile(r"\n[ \t]*\n\s*")
 _ESCAPE = re.compile(r"\\([\\`*_{}\[\]()#+\-.!|>])")
@@ -132,3 +137,9 @@ def excerpt_html(excerpt: str) -> str:
     except ValueError:
         return f'<div class="p">{_prose(excerpt)}</div>'
 
+
+
+def prose_html(text: str) -> str:
+    """Words of the records as HTML: the prose escaped, each ``$...$`` typeset inline."""
+    return "".join(html.escape(piece, quote=False) if kind == "text" else typeset(piece)
+                   for kind, piece in spans(text))
