@@ -591,10 +591,11 @@ SQUARE_STABILITY = r"hincque stabilitas respectu cuiusuis axis per C transversan
 d.says("square-D", "§212", SQUARE_STABILITY, "stabilitas", Is((2 * a) ** 2 * Dsq / 6, at={Iw: Isq}),
        erratum=Erratum("claim", "medium", r"\text{hincque momentum respectu cuiusuis axis per C transversantis erit } "
                        r"= \frac{AB^2 \cdot D}{6}",
-                       "AB^2 D/6 = 4a^4/3 is the square's moment about every axis through C, the value of §212's "
+                       r"$AB^2 D/6 = 4a^4/3$ is the square's moment about every axis through C, the value of §212's "
                        "'momentum respectu axis AB' two lines before; the stability about such an axis is, by "
-                       "Euler's own definition (§194, §201, §203), M(moment/V ± b), which has the weight M, the "
-                       "volume V and the distance b in it (a = 1, M = V = 1, b = 1/2: stability 11/6, moment 4/3). "
+                       r"Euler's own definition (§194, §201, §203), $M(\text{moment}/V \pm b)$, which has the weight "
+                       r"$M$, the volume $V$ and the distance $b$ in it ($a = 1$, $M = V = 1$, $b = 1/2$: stability "
+                       r"$11/6$, moment $4/3$). "
                        "The next sentence goes on with 'in expressionem momenti': the word is the fault, not the "
                        "value.",
                        corrected_reading=d.reads("momentum", Is((2 * a) ** 2 * Dsq / 6, at={Iw: Isq})),

@@ -273,19 +273,19 @@ dv.quote("arc", L3, "Da dieser Abstand der Bogen des Kreises ist, der um das Met
 dv.quote("surface-origin", L3, "$d/2$", reading=(-z_B, d / 2),
          note="the origin on the water surface lies d/2 above the centre of buoyancy")
 GE_FAULT = "muss die Höhe des Metazentrums ($z_M$)8671 immer größer oder gleich die Höhe des Schwerpunkts"
-GE_EVIDENCE = ("The lesson's stability is its function e = d/(2c^2) (z_M - z_G) (the display after the sentence), "
-               "positive for a stable and negative for an unstable hull; where z_M = z_G it vanishes: the heeled "
-               "box has no righting moment to the lesson's order (the shift b^2 phi/(3d) with tg phi = phi), the "
-               "neutral case. 'größer oder gleich' counts that case as stable (e.g. b = c = 1, d = 1 - "
-               "sqrt(3)/3: z_M = z_G and e = 0), and the page's own split of the diagram 'stabil und in seinem "
-               "Komplement instabil' leaves it in neither part. The display z_M >= z_G that follows states the "
-               "same condition.")
-GE_OBJECTION = ("At z_M = z_G the wall-sided box still rights at a finite heel, GZ = (BM/2) tg^2 phi sin phi > 0 "
-                "(third order), so 'stable for z_M >= z_G' is right for the body; and 'muss' states a necessary "
-                "condition, which z_M >= z_G is.")
-GE_ANSWER = ("The lesson's stability is first order (the metacentre is defined by the small-heel shift, e by z_M - "
-             "z_G), where equality is neutral; and the page uses the condition as the criterion both ways (the "
-             "diagram's stable region and its complement). The higher-order reading is the page's due, so low.")
+GE_EVIDENCE = (r"The lesson's stability is its function $e = \frac{d}{2c^2}(z_M - z_G)$ (the display after the "
+               r"sentence), positive for a stable and negative for an unstable hull; where $z_M = z_G$ it vanishes: "
+               r"the heeled box has no righting moment to the lesson's order (the shift $b^2\varphi/(3d)$ with "
+               r"$\operatorname{tg}\varphi = \varphi$), the neutral case. 'größer oder gleich' counts that case as "
+               r"stable (e.g. $b = c = 1$, $d = 1 - \sqrt{3}/3$: $z_M = z_G$ and $e = 0$), and the page's own split "
+               r"of the diagram 'stabil und in seinem Komplement instabil' leaves it in neither part. The display "
+               r"$z_M \ge z_G$ that follows states the same condition.")
+GE_OBJECTION = (r"At $z_M = z_G$ the wall-sided box still rights at a finite heel, $GZ = \frac{BM}{2}"
+                r"\operatorname{tg}^2\varphi \sin\varphi > 0$ (third order), so 'stable for $z_M \ge z_G$' is right for "
+                r"the body; and 'muss' states a necessary condition, which $z_M \ge z_G$ is.")
+GE_ANSWER = (r"The lesson's stability is first order (the metacentre is defined by the small-heel shift, $e$ by "
+             r"$z_M - z_G$), where equality is neutral; and the page uses the condition as the criterion both ways "
+             r"(the diagram's stable region and its complement). The higher-order reading is the page's due, so low.")
 dv.says("criterion-words", L4, "Um sicherzustellen, dass der Quader stabil ist, muss die Höhe des Metazentrums "
         "($z_M$)8671 immer größer oder gleich die Höhe des Schwerpunkts ($z_G$)8670 sein, das heißt",
         "stabil", StableIff(z_M >= z_G),
