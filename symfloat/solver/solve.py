@@ -214,7 +214,8 @@ def _classified(poly, points, s, scale, group):
                     # points found and lies inside the circle of radius rho round its middle (the gradient winds
                     # there without vanishing), so its length lies between their distance and about 2 rho (the
                     # circle's diameter, rho far below the radius of the ring the arc lies on); below float64's
-                    # resolution the points found need not be its ends (the cube at 1/4 - 1e-9: 2.4e-11 apart)
+                    # resolution the points found need not be its ends (the cube at 1/4 - 1e-9: 2.4e-11 apart); an
+                    # arc of a ring round a prism's axis is then located on the body (:func:`lateral_arc`)
                     c.shape, c.length = "arc", length
                     c.length_error = max(2 * rho - length, 2 * max([c.error_rad] + [m.error_rad for m in members]))
                     c.digits = c.digits if np.linalg.norm(centre - c.u) == 0 else ()
