@@ -44,8 +44,8 @@ def _square_predictions(av, bv, sv, up_of, cube):
         # (82) itself at omega = 0 (sin^2 45 deg = 1/2) holds only for s <= 1/4 or s >= 3/4: where it fails, the
         # position is the print's claim alone, booked as an erratum (claim) at VI.D
         beyond = "" if bound >= Fraction(1, 2) else \
-            (f"; the print claims it for every s between 0.2265 and 0.7735, but its own (82) at omega = 0 needs a bound "
-             f"of at least 1/2, here {float(bound):.4f}: the claim is booked as an erratum at VI.D")
+            (f"; the print claims it for every s between 0.2265 and 0.7735, but its own (82) at omega = 0 needs a "
+             f"bound of at least 1/2, here {float(bound):.4f}: the claim is booked as an erratum at VI.D")
         out.append(Prediction(("edge-axis-range", "82", "81a"), up, "stable", "ring",
                               note="the arc |omega| <= omega* of (82) around the edge-parallel axis (omega = 0); "
                                    "81a and 82 read with 6 for the scan's b" + beyond))

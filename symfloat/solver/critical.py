@@ -269,8 +269,8 @@ def _symmetrised(u, group, dps: int, tol: float = 1e-9) -> list:
     v = np.asarray([float(x) for x in u])
     fixing = [g for g in group if np.linalg.norm(g @ v - v) <= tol] or [np.eye(3)]
     with mpmath.workdps(dps):
-        return [sum(mpmath.mpf(float(g[i, j])) * mpmath.mpf(float(v[j])) for g in fixing for j in range(3)) / len(fixing)
-                for i in range(3)]
+        return [sum(mpmath.mpf(float(g[i, j])) * mpmath.mpf(float(v[j])) for g in fixing for j in range(3))
+                / len(fixing) for i in range(3)]
 
 
 def _pinned(u, group) -> bool:

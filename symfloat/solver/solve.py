@@ -237,14 +237,16 @@ def _searched(poly, s, seeds, group, scale, fixed=(), event_dps: int = 0):
     past a vertex event (:func:`~symfloat.solver.vertex.event_digits`).  Returns the points with their classification, the
     searches made and the index sum (None where it cannot be made)."""
     searches = ["seeds"]
-    points = _symmetric(critical_points(poly, s, seeds, group, scale, event_dps=event_dps), fixed, poly, s, group, scale)
+    points = _symmetric(critical_points(poly, s, seeds, group, scale, event_dps=event_dps), fixed, poly, s, group,
+                        scale)
     classified = _classified(poly, points, s, scale, group)
     points = [c for c, _, _ in classified]
     index = _index_sum(poly, s, points, group, scale)
     if _holds(index, points, scale):
         return classified, searches, index
     extra = [c.u for c in points] + more_seeds(poly, s, points, group, scale) + _near_families(points)
-    points = _symmetric(critical_points(poly, s, extra, group, scale, event_dps=event_dps), fixed, poly, s, group, scale)
+    points = _symmetric(critical_points(poly, s, extra, group, scale, event_dps=event_dps), fixed, poly, s, group,
+                        scale)
     classified = _classified(poly, points, s, scale, group)
     points = [c for c, _, _ in classified]
     index = _index_sum(poly, s, points, group, scale)
@@ -256,7 +258,8 @@ def _searched(poly, s, seeds, group, scale, fixed=(), event_dps: int = 0):
         there = critical_points(poly, near, seeds, group, scale)
         found = [c.u for c in there] + more_seeds(poly, near, there, group, scale) + _near_families(there)
         extra += [-u for u in found] if near == 1 - s else found
-    points = _symmetric(critical_points(poly, s, extra, group, scale, event_dps=event_dps), fixed, poly, s, group, scale)
+    points = _symmetric(critical_points(poly, s, extra, group, scale, event_dps=event_dps), fixed, poly, s, group,
+                        scale)
     classified = _classified(poly, points, s, scale, group)
     points = [c for c, _, _ in classified]
     index = _index_sum(poly, s, points, group, scale)
@@ -426,15 +429,17 @@ def _polyhedral(scene: Scene, seeds, group):
 
 
 def _unbroken(scene: Scene, points, group) -> None:
-    """A self-check: past a vertex event (:mod:`~symfloat.solver.vertex`) the ring round that axis is arcs, so a
-    closed ring round it is a class between the arcs that the digits did not decide (an error, exit status 1)."""
+    """A self-check: past a vertex event (:mod:`~symfloat.solver.vertex`) the ring round that axis at its tilt
+    ``theta*`` is arcs, so a closed ring there (its length ``2 pi sin theta*`` to 1e-3) is a class between the arcs
+    that the digits did not decide (an error, exit status 1)."""
     G = np.asarray(group, dtype=float)
-    for axis, depth in vertex_depths(scene):
+    for axis, depth, theta in vertex_depths(scene):
         if depth <= 0:
             continue
         images = G @ np.asarray(axis, dtype=float)
         for c in points:
-            if c.ring and c.shape == "closed" and np.min(np.linalg.norm(images - c.axis, axis=1)) <= 1e-6:
+            if c.ring and c.shape == "closed" and np.min(np.linalg.norm(images - c.axis, axis=1)) <= 1e-6 \
+                    and abs(c.length - 2 * math.pi * math.sin(float(theta))) <= 1e-3:
                 raise IndexCheckError(f"{_name(scene)}: the ring round up {axis} is walked closed, but a vertex lies "
                                       f"{float(depth):.3g} beyond its waterplane (past the vertex event): the arcs "
                                       f"and the class between them are not resolved")

@@ -53,10 +53,10 @@ def ring_axes(scene: Scene) -> list[tuple[tuple[int, int, int], mpmath.mpf, mpma
     return out
 
 
-def vertex_depths(scene: Scene, dps: int = 50) -> list[tuple[tuple[int, int, int], mpmath.mpf]]:
-    """``(axis, depth)`` for every ring axis of *scene* where the ring exists (``tan^2 theta* > 0``): how far
-    (in the body's length units, at *dps* digits plus the density's) a base vertex lies beyond the waterplane
-    at the ring's tilt; negative before the vertex event, where the ring is closed."""
+def vertex_depths(scene: Scene, dps: int = 50) -> list[tuple[tuple[int, int, int], mpmath.mpf, mpmath.mpf]]:
+    """``(axis, depth, theta*)`` for every ring axis of *scene* where the ring exists (``tan^2 theta* > 0``): how
+    far (in the body's length units, at *dps* digits plus the density's) a base vertex lies beyond the waterplane
+    at the ring's tilt ``theta*``; negative before the vertex event, where the ring is closed."""
     s = scene.density
     with mpmath.workdps(dps + len(str(s.denominator))):
         t = mpmath.mpf(min(s, 1 - s).numerator) / min(s, 1 - s).denominator
@@ -64,7 +64,7 @@ def vertex_depths(scene: Scene, dps: int = 50) -> list[tuple[tuple[int, int, int
         for axis, area, second, r2, L in ring_axes(scene):
             tan2 = area * L ** 2 * t * (1 - t) / second - 2
             if tan2 > 0:
-                out.append((axis, +(mpmath.sqrt(r2 * tan2) - L * t)))
+                out.append((axis, +(mpmath.sqrt(r2 * tan2) - L * t), mpmath.atan(mpmath.sqrt(tan2))))
     return out
 
 
@@ -74,7 +74,7 @@ def event_digits(scene: Scene, scale: float) -> int:
     the residual at ``d`` digits, ``10^(2 - d) scale``, is below ``lambda^2 / (2 L)``: ``d = 20 - 6 log10(depth /
     scale)`` (20 digits to spare).  0 where no ring is past an event; the event is passed by less than the
     arithmetic resolves beyond :data:`EVENT_DIGITS`."""
-    depths = [d for _, d in vertex_depths(scene) if d > 0]
+    depths = [d for _, d, _ in vertex_depths(scene) if d > 0]
     if not depths:
         return 0
     return math.ceil(20 - 6 * float(mpmath.log10(min(depths) / scale)))
@@ -89,8 +89,8 @@ def lateral_arc(scene: Scene, u, tol: float) -> tuple[float, float] | None:
     (between two of them each vertex's margin is monotone in ``phi``, so the first change of sign is the only one)
     and bisected at :data:`ARC_DIGITS` digits to ``10^(10 - ARC_DIGITS)`` rad.  The length is ``sin theta*`` times
     the azimuths between the brackets' middles, its error ``sin theta*`` times half the two brackets' widths (the
-    margin's rounding, ``10^-ARC_DIGITS`` over its slope, is far below them) and the length's float64 rounding.  None where *u* lies on no such ring,
-    or the ring through it is closed."""
+    margin's rounding, ``10^-ARC_DIGITS`` over its slope, is far below them) and the length's float64 rounding.
+    None where *u* lies on no such ring, or the ring through it is closed."""
     s = scene.density
     body = polyhedron(scene, dps=ARC_DIGITS)
     with mpmath.workdps(ARC_DIGITS):
