@@ -292,3 +292,26 @@ def test_predictions_well_formed():
             for p in out:
                 assert isinstance(p, Prediction) and set(p.printed) <= names[m], (m, p.printed)
                 assert len(p.up) == 3 and abs(math.sqrt(sum(x * x for x in p.up)) - 1) < 1e-12
+
+
+@pytest.mark.parametrize("s, claimed", [("3/10", True), ("23/100", False)])
+def test_cube_positions_the_print_claims_beyond_their_geometry(s, claimed):
+    """Issue 33, item 3.  VI.D claims the edge-parallel oblique position for every s between 0.2265 and 0.7735 and
+    X (the dual of (172): s > 0.2265) the stable pentagon for s < 1/2; no printed range excludes s = 3/10, so the
+    predictors keep both, and the clipped cube has neither (the ring round z ends at 1/4, the pentagon at 0.2377:
+    errata VI.D and X).  Their notes say why: (82) at omega = 0 needs s^2 / (6 s (1 - s) - 1) >= 1/2, at 3/10
+    0.09 / 0.26 = 0.3462; the pentagon needs beta = (2 - x)(1 - s)/z < 1, at 1 - s = 7/10 beta = 1.160 (the root x =
+    0.7434 of (171), z = 1 - x + x^3/6).  At 23/100 both positions exist (0.0529 / 0.0626 = 0.845 >= 1/2; the
+    small-leg root of (171), the first, has beta < 1 on the stable branch 0.2265 < s < 0.2377) and their notes speak
+    of no erratum; a root beyond the pentagon (the third at 1 - s = 0.77, x = 0.8768) does, and is no equilibrium."""
+    cube, sc, sv = box(1, 1, 1), scene("cube", s, (1, 1, 1)), float(Fr(s))
+    (edge,) = _pick("scheeffer-vi-cf", sc, "edge-axis-range")
+    pentagons = [p for p in load("scheeffer-x")[0].predictor.predict(sc) if "171" in p.printed]
+    assert pentagons and all(p.up[2] > 0 for p in pentagons)      # the representative with the face +z up
+    assert ("erratum" in edge.note) == claimed and agrees(cube, edge, sv) != claimed
+    assert all("erratum" in p.note for p in pentagons) if claimed else "erratum" not in pentagons[0].note
+    assert all(not agrees(cube, p, sv) for p in pentagons if "erratum" in p.note)
+    if not claimed:
+        assert agrees(cube, pentagons[0], sv)
+    else:
+        assert "here 0.3462" in edge.note and "beta = (2 - x)(1 - s)/z = 1.160" in pentagons[0].note

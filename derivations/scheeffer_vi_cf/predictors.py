@@ -40,9 +40,15 @@ def _square_predictions(av, bv, sv, up_of, cube):
         out.append(Prediction(("half-stable", "half-tilt", "82-half-omega", "82-half"), up, "stable",
                               note="s = 1/2: the axis parallel to an edge only, phi_1 = 45 deg (the edge up)"))
     elif cube:                                           # the printed claim: 0.2265 < s < 0.7735, edge-parallel axis
+        # VI.D claims the edge-parallel axis throughout 0.2265 < s < 0.7735 (no narrower range is printed for it);
+        # (82) itself at omega = 0 (sin^2 45 deg = 1/2) holds only for s <= 1/4 or s >= 3/4: where it fails, the
+        # position is the print's claim alone, booked as an erratum (claim) at VI.D
+        beyond = "" if bound >= Fraction(1, 2) else \
+            (f"; the print claims it for every s between 0.2265 and 0.7735, but its own (82) at omega = 0 needs a "
+             f"bound of at least 1/2, here {float(bound):.4f}: the claim is booked as an erratum at VI.D")
         out.append(Prediction(("edge-axis-range", "82", "81a"), up, "stable", "ring",
                               note="the arc |omega| <= omega* of (82) around the edge-parallel axis (omega = 0); "
-                                   "81a and 82 read with 6 for the scan's b"))
+                                   "81a and 82 read with 6 for the scan's b" + beyond))
     elif bound >= Fraction(1, 2):                        # (78c)/(78d): the arc around the edge-parallel axis
         out.append(Prediction(("78d", "78c", "78b"), up, "stable", "ring",
                               note="the arc sin^2(45 deg + omega) <= (78d) around the edge-parallel axis "

@@ -42,10 +42,20 @@ def predict(scene):
         names = ("171", "172", "pentagon-exists", "pentagon-stable") if sv > half else \
             ("171", "dual-threshold", "dual-exists", "pentagon-stable")
         for xr in _roots_171_float(q):
-            pv = (1 - q) / (1 - xr + xr ** 3 / 6)
-            up = (-pv, -pv, 1.0) if sv > half else (pv, pv, -1.0)
+            z = 1 - xr + xr ** 3 / 6
+            pv = (1 - q) / z
+            # below 1/2 the cube at 1 - s turned over (up -> -up: wet and dry exchanged), then mirrored in its
+            # middle plane z = 0 (a symmetry of the cube, the same class): the face +z up, as above 1/2
+            up = (-pv, -pv, 1.0) if sv > half else (pv, pv, 1.0)
+            # (171) is a pentagon while the face opposite the dipping corner stays dry, beta = (2 - x)(1 - s)/z < 1
+            # (s the heavy cube's density); the print states no such bound and claims the pentagon for every s
+            # below 0.7735 (above 0.2265 turned over): beyond it the claim is booked as an erratum at X
+            beta = (2 - xr) * (1 - q) / z
+            beyond = "" if beta < 1 else \
+                (f"; beyond the pentagon (the opposite face cut: beta = (2 - x)(1 - s)/z = {beta:.3f} > 1), where the "
+                 f"print still claims it: booked as an erratum at X")
             out.append(Prediction(names, up, "stable" if q < S172 else None,
-                                  note=f"pentagonal waterplane, leg x = {xr:.6f} (root of (171))"))
+                                  note=f"pentagonal waterplane, leg x = {xr:.6f} (root of (171))" + beyond))
     return out
 
 

@@ -110,7 +110,7 @@ def scene_table(record) -> str:
     for p in record["unmatched_predictions"]:
         lines.append(f"DISAGREEMENT: {p['derivation']} {', '.join(p['locators'])} predicts an equilibrium at up "
                      f"{[round(x, 6) for x in p['predicted_up']]} ({p['predicted_stability']}); "
-                     f"{p['disagreement']}")
+                     f"{p['disagreement']}" + (f" ({p['note']})" if p.get("note") else ""))
     completeness = record["checks"].get("completeness")
     if completeness:
         lines.append(f"completeness: {completeness['statement']} ({completeness['squares_examined']} squares of the "

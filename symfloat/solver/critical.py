@@ -197,7 +197,8 @@ def _lipschitz(poly, loc, s) -> float:
     return lipschitz
 
 
-def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), others=()) -> tuple[float, str, float]:
+def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), others=(),
+                    event_dps: int = 0) -> tuple[float, str, float]:
     """Distance bound (radians) to the true equilibrium (:func:`equilibrium_error`, the gradient
     re-evaluated at *refine_dps* digits) and the Hessian's Lipschitz constant (central differences
     along the two eigenvectors).  Where that bound is not Kantorovich's, exceeds 1e-13 rad, or the
@@ -207,7 +208,8 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), ot
     tried at the symmetric position: its up vector, gradient and eigenvalues are then those of that
     point, whose bound is the Kantorovich radius from a residual near ``10^-refine_dps`` (plus the
     float64 rounding of the vector), and its eigenvalues are exact to ``L * distance +
-    10^(5 - refine_dps) * scale``, so that they still decide the stability.  A ring keeps its
+    10^(5 - refine_dps) * scale``, so that they still decide the stability (undecided, at twice the digits and
+    then at *event_dps*, :func:`_decided`).  A ring keeps its
     float64 point (the slope across it)."""
     exact = polyhedron_at(poly, refine_dps)
     lipschitz = _lipschitz(poly, local(poly, c.u, s), s)       # eigenvectors at the representative itself
@@ -227,11 +229,16 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), ot
     u, residual, eigen = polish(exact, c.u, s, scale, steps=0 if pinned else 40)
     residual += arithmetic          # at 30 digits a residual below the arithmetic's error may round to 0
     err, method = equilibrium_error(float(residual), float(min(abs(e) for e in eigen)), lipschitz, scale)
-    if not pinned and min(abs(float(e)) for e in eigen) <= lipschitz * max(err - ROUNDING, 0.0) + arithmetic:
-        # still undecided: once more at twice the digits (closer still to the bifurcation)
-        refine_dps, exact = 2 * refine_dps, polyhedron_at(poly, 2 * refine_dps)
+    for more in (2 * refine_dps, event_dps):
+        if pinned or more <= refine_dps or min(abs(float(e)) for e in eigen) > lipschitz * max(err - ROUNDING, 0.0) \
+                + arithmetic:
+            break
+        # still undecided: once more at twice the digits (closer still to the bifurcation), and just past a
+        # vertex event at its digits
+        start = _symmetrised(c.u, group, more) if more == event_dps else u
+        refine_dps, exact = more, polyhedron_at(poly, more)
         arithmetic = 10.0 ** (5 - refine_dps) * scale
-        u, residual, eigen = polish(exact, u, s, scale)
+        u, residual, eigen = polish(exact, start, s, scale)
         residual += arithmetic
         err, method = equilibrium_error(float(residual), float(min(abs(e) for e in eigen)), lipschitz, scale)
     # the most symmetric position within the error: where the polished point's error spans a mirror or
@@ -239,11 +246,8 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), ot
     v = symmetric_point([float(x) for x in u], group, 2 * err + 1e-12)
     if any(abs(a - float(b)) > 0 for a, b in zip(v, u)) and not any(
             o is not c and same_class(o.u, v, group, 2 * o.error_rad + 1e-12) for o in others):
-        with mpmath.workdps(refine_dps):        # the symmetric point in mpmath (its float64 is not exactly symmetric)
-            fixing = [g for g in group if np.linalg.norm(g @ v - v) <= 1e-12]
-            mean = [sum(mpmath.mpf(float(g[i, j])) * mpmath.mpf(float(v[j])) for g in fixing for j in range(3))
-                    for i in range(3)]
-        w, size, values = polish(exact, mean, s, scale, steps=0)
+        # the symmetric point in mpmath (its float64 is not exactly symmetric)
+        w, size, values = polish(exact, _symmetrised(v, group, refine_dps, 1e-12), s, scale, steps=0)
         size += arithmetic
         if size <= residual:
             u, residual, eigen = w, size, values
@@ -254,6 +258,19 @@ def _error_estimate(poly, c: "Critical", s, scale, refine_dps: int, group=(), ot
     c.eigen = tuple(float(e) for e in eigen)
     c.eigen_error = lipschitz * max(err - ROUNDING, 0.0) + 10.0 ** (5 - refine_dps) * scale
     return err, method, lipschitz
+
+
+def _symmetrised(u, group, dps: int, tol: float = 1e-9) -> list:
+    """The float unit vector *u* made exactly symmetric at *dps* digits: the mean of its images under the
+    elements of *group* that fix it to *tol* (mpf).  A float64 point on a mirror is symmetric to its rounding only,
+    and Newton's method at many digits from a point polished at fewer drifts along a soft direction off the mirror
+    (the cube's diagonal class 1e-12 past its vertex event stalled at a residual 6.7e-38 at 60 and 88 digits; from
+    the symmetrised point: 1.9e-60 and 4.4e-90)."""
+    v = np.asarray([float(x) for x in u])
+    fixing = [g for g in group if np.linalg.norm(g @ v - v) <= tol] or [np.eye(3)]
+    with mpmath.workdps(dps):
+        return [sum(mpmath.mpf(float(g[i, j])) * mpmath.mpf(float(v[j])) for g in fixing for j in range(3))
+                / len(fixing) for i in range(3)]
 
 
 def _pinned(u, group) -> bool:
@@ -413,7 +430,7 @@ def _joined(poly, a, b, s, scale, potential) -> bool:
                 and np.linalg.norm(settled.u - middle / np.linalg.norm(middle)) <= np.linalg.norm(np.subtract(b, a)) / 4)
 
 
-def _decided(poly, loc, s, scale, refine_dps: int = 30) -> float:
+def _decided(poly, loc, s, scale, refine_dps: int = 30, event_dps: int = 0, group=()) -> float:
     """The soft eigenvalue of an isolated equilibrium next to *loc* where it is decided not to be zero (along a
     family of equilibria the potential is constant and that eigenvalue vanishes), else 0.0.  Decided where Newton–Kantorovich holds
     with the soft eigenvalue, ``h = L |grad| / lambda^2 <= 1/2``, and the eigenvalue exceeds ten times its error
@@ -422,7 +439,10 @@ def _decided(poly, loc, s, scale, refine_dps: int = 30) -> float:
     is polished by Newton's method when float64 does not decide).  The long square log at 1 - 0.0105465, 7e-8 in s past its
     vertex event: the stable diagonal class (1.1e-8 at 30 digits, 1.2e-12 at 3.2e-9 past the event) was walked
     as a point of one closed ring; a point of a family polishes to an eigenvalue near 1e-18 with a residual
-    1e-23 and decides nothing.  Above s = 1/2 the Hessian is the dual body's at 1 - s, up ``-u``
+    1e-23 and decides nothing.  Where the scene is just past a vertex event, the second time at *event_dps* digits
+    (:func:`~symfloat.solver.vertex.event_digits`: the cube 1e-12 past 3/7 - sqrt(2)/7, its diagonal class's soft
+    eigenvalue 8.1e-33, decided at 88 digits), from the point made symmetric at them (:func:`_symmetrised`).
+    Above s = 1/2 the Hessian is the dual body's at 1 - s, up ``-u``
     (:func:`~symfloat.solver.families._gradient`): the same up to the factor (1 - s) / s, with the same
     rounding in absolute terms (and its sign)."""
     if s > 0.5:
@@ -437,15 +457,17 @@ def _decided(poly, loc, s, scale, refine_dps: int = 30) -> float:
     if isolated(float(np.linalg.norm(loc.gradient)), soft, 1e-12 * scale):
         return soft
     u = loc.u
-    for dps in (refine_dps, 2 * refine_dps):      # once more at twice the digits, closer still to the event
-        u, residual, eigen = polish(polyhedron_at(poly, dps), u, s, scale, steps=12)
+    ladder = (refine_dps, event_dps) if event_dps > 2 * refine_dps else (refine_dps, 2 * refine_dps)
+    for dps in ladder:      # once more at twice the digits, closer still to the event
+        start = _symmetrised(loc.u, group, dps) if dps == event_dps else u
+        u, residual, eigen = polish(polyhedron_at(poly, dps), start, s, scale, steps=12)
         soft = float(min(eigen, key=abs))
         if isolated(float(residual) + 10.0 ** (5 - dps) * scale, soft, 10.0 ** (5 - dps) * scale):
             return soft
     return 0.0
 
 
-def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
+def _is_ring(poly, loc, pairs, s, scale, group, event_dps: int = 0) -> bool:
     """Step along the null direction (by less than the distance to the nearest symmetric copy of
     the point, so a small ring around an axis is not jumped over) and let Newton settle: on a
     ring it lands on another equilibrium of the same potential, not in the same class."""
@@ -464,7 +486,7 @@ def _is_ring(poly, loc, pairs, s, scale, group) -> bool:
         if ok and np.linalg.norm(other.u - loc.u) > delta / 3 and abs(other.U - loc.U) <= FLAT * scale \
                 and not same_class(other.u, loc.u, group, delta / 10) and _joined(poly, loc.u, other.u, s, scale, loc.U):
             # unless its soft eigenvalue, small as it is, is decided: a minimum just born beside the family
-            return not _decided(poly, loc, s, scale)
+            return not _decided(poly, loc, s, scale, event_dps=event_dps, group=group)
     return False
 
 
@@ -568,7 +590,7 @@ def _mirror_points(c, group) -> list[np.ndarray]:
     return out
 
 
-def _broken_rings(poly, found, s, scale, group) -> None:
+def _broken_rings(poly, found, s, scale, group, event_dps: int = 0) -> None:
     """A family cannot pass through a point where the potential is strictly convex or concave along it: a
     closed ring is walked again, with such points as barriers, where it passes through an isolated class found
     with a decided second variation (:func:`_decided`), or where one of its points on a mirror plane of the
@@ -592,7 +614,8 @@ def _broken_rings(poly, found, s, scale, group) -> None:
                 continue
             across = max(o.eigen, key=abs)
             for image in G @ np.asarray(o.u):
-                soft = on_family(image, c, group, 1e-6) and _decided(poly, local(poly, image, s), s, scale)
+                soft = on_family(image, c, group, 1e-6) and _decided(poly, local(poly, image, s), s, scale,
+                                                                     event_dps=event_dps, group=group)
                 if soft:
                     bar(o.u, soft, across)
                     break
@@ -601,7 +624,8 @@ def _broken_rings(poly, found, s, scale, group) -> None:
                     or any(np.linalg.norm(q - b) <= 1e-6 for b in barriers):
                 continue
             loc, ok = symmetric_newton(poly, q, s, scale, group)
-            soft = ok and abs(loc.U - c.U) <= FLAT * scale and _decided(poly, loc, s, scale)
+            soft = ok and abs(loc.U - c.U) <= FLAT * scale and _decided(poly, loc, s, scale, event_dps=event_dps,
+                                                                         group=group)
             if soft:
                 pairs = _tangent_eigen(loc)
                 g = float(np.linalg.norm(loc.gradient))
@@ -655,8 +679,10 @@ def family_copies(shape: str, points, group, tol: float) -> int:
     return len(images)
 
 
-def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps: int = 30) -> list[Critical]:
-    """Every symmetry class of critical points reached by Newton from *seeds*, sorted by potential."""
+def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps: int = 30,
+                    event_dps: int = 0) -> list[Critical]:
+    """Every symmetry class of critical points reached by Newton from *seeds*, sorted by potential; *event_dps*:
+    the digits that decide a class beside a ring just past a vertex event (:func:`_decided`)."""
     found: list[Critical] = []
     for loc, ok in newton_all(poly, seeds, s, scale):
         if not ok:
@@ -671,7 +697,7 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
         if lam_min < 1e-6 * scale and any(c.ring and abs(c.U - loc.U) <= 1e-10 * scale
                                           and on_family(loc.u, c, group, 1e-2 if unresolved else 5e-5) for c in found):
             continue
-        ring = lam_min < 1e-6 * scale and _is_ring(poly, loc, pairs, s, scale, group)
+        ring = lam_min < 1e-6 * scale and _is_ring(poly, loc, pairs, s, scale, group, event_dps)
         g = float(np.linalg.norm(loc.gradient))
         err = 0.0 if ring else min(g / max(lam_min, 1e-300), (g / scale) ** (1 / 3))
         match = [c for c in found if not c.ring and same_class(c.u, loc.u, group, 1e-7 + 2 * (err + c.error_rad))]
@@ -689,10 +715,11 @@ def critical_points(poly: Polyhedron, s, seeds, group, scale: float, refine_dps:
             else:
                 c.shape, c.length, c.length_error, c.path = "", 0.0, 0.0, ()
         found.append(c)
-    _broken_rings(poly, found, s, scale, group)
+    _broken_rings(poly, found, s, scale, group, event_dps)
     for c in found:
         # a ring's error is across it (its tilt): the bound with its transverse eigenvalue
-        c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps, group, found)
+        c.error_rad, c.error_method, c.lipschitz = _error_estimate(poly, c, s, scale, refine_dps, group, found,
+                                                                    event_dps)
         if c.ring:      # a family's length scales with its radius, known to the error across it
             radius = c.length / (2 * math.pi) if c.shape == "closed" else math.sin(_nearest_axis(c.u, group))
             c.length_error += c.length * c.error_rad / max(radius, c.error_rad)

@@ -51,6 +51,7 @@ from .planar import roots
 from .refine import planar_potential, planar_residual, polish_planar
 from .selfcheck import IndexCheckError
 from .symmetry import box_group, orbit, planar_group, prism_group, representative, same_class
+from .vertex import EVENT_DIGITS, event_digits, lateral_arc, vertex_depths
 
 __all__ = ["Equilibrium", "Solution", "solve", "stability_of", "body_scale"]
 
@@ -72,7 +73,8 @@ class Equilibrium:
     copies: int | None          # symmetric copies of the position; None for a continuous orbit
     ring_shape: str = ""        # a ring: "closed" (all the way round) or "arc" (a piece of one)
     ring_length: float = 0.0    # its length on the unit sphere of up vectors (radians)
-    ring_length_error: float = 0.0  # the error of that length (the walk's step at the ends, chords)
+    ring_length_error: float = 0.0  # the error of that length (the brackets of its ends: bisected on the body where
+                                    # it is a piece of a ring round a prism's axis, else the walk's last step, chords)
     stability_evidence: str = "second variation"     # or "higher orders", or "undecided"
     digits: tuple = ()          # the up vector at 30 digits (mpf) where the solver polished it (next to a bifurcation)
     decided: str = ""           # how the second variation's signs were decided where not in float64 (exact, digits)
@@ -212,7 +214,8 @@ def _classified(poly, points, s, scale, group):
                     # points found and lies inside the circle of radius rho round its middle (the gradient winds
                     # there without vanishing), so its length lies between their distance and about 2 rho (the
                     # circle's diameter, rho far below the radius of the ring the arc lies on); below float64's
-                    # resolution the points found need not be its ends (the cube at 1/4 - 1e-9: 2.4e-11 apart)
+                    # resolution the points found need not be its ends (the cube at 1/4 - 1e-9: 2.4e-11 apart); an
+                    # arc of a ring round a prism's axis is then located on the body (:func:`lateral_arc`)
                     c.shape, c.length = "arc", length
                     c.length_error = max(2 * rho - length, 2 * max([c.error_rad] + [m.error_rad for m in members]))
                     c.digits = c.digits if np.linalg.norm(centre - c.u) == 0 else ()
@@ -225,22 +228,25 @@ def _classified(poly, points, s, scale, group):
     return [x for x in out if not any(x[0] is a for a in absorbed)]
 
 
-def _searched(poly, s, seeds, group, scale, fixed=()):
+def _searched(poly, s, seeds, group, scale, fixed=(), event_dps: int = 0):
     """Critical points from *seeds*; when the Poincaré–Hopf sum fails, a second search (separatrices,
     soft directions, small gradient: :func:`more_seeds`; next to every family, across it and past its ends:
     :func:`family_seeds`), then continuation from the neighbouring densities ``s +- 1e-4 s(1 - s)`` (every
     critical point there, tracked to *s* by Newton's method) and from the dual scene (the equilibria at
-    ``1 - s``, turned upside down: ``u -> -u``).  Returns the points with their classification, the
+    ``1 - s``, turned upside down: ``u -> -u``); *event_dps*: the digits that decide a class beside a ring just
+    past a vertex event (:func:`~symfloat.solver.vertex.event_digits`).  Returns the points with their classification, the
     searches made and the index sum (None where it cannot be made)."""
     searches = ["seeds"]
-    points = _symmetric(critical_points(poly, s, seeds, group, scale), fixed, poly, s, group, scale)
+    points = _symmetric(critical_points(poly, s, seeds, group, scale, event_dps=event_dps), fixed, poly, s, group,
+                        scale)
     classified = _classified(poly, points, s, scale, group)
     points = [c for c, _, _ in classified]
     index = _index_sum(poly, s, points, group, scale)
     if _holds(index, points, scale):
         return classified, searches, index
     extra = [c.u for c in points] + more_seeds(poly, s, points, group, scale) + _near_families(points)
-    points = _symmetric(critical_points(poly, s, extra, group, scale), fixed, poly, s, group, scale)
+    points = _symmetric(critical_points(poly, s, extra, group, scale, event_dps=event_dps), fixed, poly, s, group,
+                        scale)
     classified = _classified(poly, points, s, scale, group)
     points = [c for c, _, _ in classified]
     index = _index_sum(poly, s, points, group, scale)
@@ -252,7 +258,8 @@ def _searched(poly, s, seeds, group, scale, fixed=()):
         there = critical_points(poly, near, seeds, group, scale)
         found = [c.u for c in there] + more_seeds(poly, near, there, group, scale) + _near_families(there)
         extra += [-u for u in found] if near == 1 - s else found
-    points = _symmetric(critical_points(poly, s, extra, group, scale), fixed, poly, s, group, scale)
+    points = _symmetric(critical_points(poly, s, extra, group, scale, event_dps=event_dps), fixed, poly, s, group,
+                        scale)
     classified = _classified(poly, points, s, scale, group)
     points = [c for c, _, _ in classified]
     index = _index_sum(poly, s, points, group, scale)
@@ -372,7 +379,13 @@ def _polyhedral(scene: Scene, seeds, group):
     seeds = distinct_seeds(seeds, group)
     fixed = [(u, exact, born_families(scene, poly, u, exact, group, scale, _prism_axis(scene, n)), _prism_axis(scene, n))
              for u, n, exact in symmetric_positions(scene, group)]
-    classified, searches, index = _searched(poly, s, seeds, group, scale, fixed)
+    digits = event_digits(scene, scale)
+    if digits > EVENT_DIGITS:
+        raise IndexCheckError(f"{_name(scene)}: a ring of equilibria is past the density where a vertex reaches its "
+                              f"waterplane by less than {EVENT_DIGITS} digits resolve: the class between its arcs "
+                              f"cannot be decided")
+    classified, searches, index = _searched(poly, s, seeds, group, scale, fixed, digits)
+    _unbroken(scene, [c for c, _, _ in classified], group)
     if index is None and any(c.flat for c, _, _ in classified):
         flat = next(c for c, _, _ in classified if c.flat)
         raise IndexCheckError(f"{_name(scene)}: the index of the degenerate equilibrium at up "
@@ -399,6 +412,12 @@ def _polyhedral(scene: Scene, seeds, group):
                               f"missing or mis-classified{near}{named}")
     out = []
     for c, stability, evidence in classified:
+        # from the middle of the walk (its start, the representative, may lie past an end by more than the walk's
+        # last step: the potential falls there by the cut corner's cube, below float64; the cube at 1/4 - 1e-3)
+        middle = c.path[len(c.path) // 2] if len(c.path) > 2 else c.u
+        located = lateral_arc(scene, middle, 2 * c.error_rad + 1e-9) if c.shape == "arc" else None
+        if located:
+            c.length, c.length_error = located      # its ends located on the body, not by the walk's last step
         loc = local(poly, c.u, s)
         out.append(Equilibrium(_clean(c.u), _tilt(c.u), stability,
                                "ring" if c.ring or c.shape == "arc" else "isolated", c.U, _shape(waterplane_polygon(poly, loc.state), scale),
@@ -407,6 +426,23 @@ def _polyhedral(scene: Scene, seeds, group):
     return out, {"poincare_hopf_index_sum": index, "expected_index_sum": 2, "seeds": len(seeds),
                  "searches": searches,
                  **({"family_indices": [c.index for c in families]} if families else {})}
+
+
+def _unbroken(scene: Scene, points, group) -> None:
+    """A self-check: past a vertex event (:mod:`~symfloat.solver.vertex`) the ring round that axis at its tilt
+    ``theta*`` is arcs, so a closed ring there (its length ``2 pi sin theta*`` to 1e-3) is a class between the arcs
+    that the digits did not decide (an error, exit status 1)."""
+    G = np.asarray(group, dtype=float)
+    for axis, depth, theta in vertex_depths(scene):
+        if depth <= 0:
+            continue
+        images = G @ np.asarray(axis, dtype=float)
+        for c in points:
+            if c.ring and c.shape == "closed" and np.min(np.linalg.norm(images - c.axis, axis=1)) <= 1e-6 \
+                    and abs(c.length - 2 * math.pi * math.sin(float(theta))) <= 1e-3:
+                raise IndexCheckError(f"{_name(scene)}: the ring round up {axis} is walked closed, but a vertex lies "
+                                      f"{float(depth):.3g} beyond its waterplane (past the vertex event): the arcs "
+                                      f"and the class between them are not resolved")
 
 
 def _decided(c) -> str:
