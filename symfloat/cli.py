@@ -47,7 +47,7 @@ from .engine.cache import ReportCache
 from .errors import (EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, EnvironmentProblem, InputError,
                      SymfloatError)
 from .files import write_atomic, write_if_changed, writable_folder, writable_target
-from .project import GOLDEN, in_outputs, in_project, library_folders, outputs_root
+from .project import GOLDEN, in_outputs, in_project, library_folders, outputs_root, project_root
 from .registry import provided, select
 
 EXIT_STATUS = ("Exit status: 0 success; 1 a check failed (verdict, index sum, duality, coverage); "
@@ -499,7 +499,8 @@ def _site_args(p):
 def _site(args) -> int:
     from .site.build import build_site          # Sphinx and MyST-NB: only when the site is built
     out = writable_folder(args.output) if args.output else in_outputs("build/site")
-    changed, warnings = build_site(out, in_project("docs"), in_project("notebooks"),
+    kinds = in_project("docs/errata-kinds.md") if project_root() is not None else None
+    changed, warnings = build_site(out, in_outputs("docs"), in_outputs("notebooks"), kinds,
                                    progress=lambda msg: _say(args, msg))
     for w in warnings:
         _say(args, f"sphinx: {w}")

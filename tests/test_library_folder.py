@@ -9,11 +9,13 @@ import sys
 from pathlib import Path
 
 import nbformat
+import pytest
 from nbclient import NotebookClient
 
 from symfloat.engine.cache import ReportCache
 from symfloat.model import span
 from symfloat.project import in_outputs, project_root
+from symfloat.site import typeset
 
 TUTORIAL = Path(__file__).resolve().parents[1] / "docs" / "tutorial"
 
@@ -72,3 +74,48 @@ def test_a_librarys_notebook_and_cache_stay_in_its_folder_and_rerun_there(tmp_pa
             os.environ["SYMFLOAT_LIBRARY"] = env_before
     errors = [o for c in nb.cells if c.cell_type == "code" for o in c.outputs if o.output_type == "error"]
     assert errors == []
+
+
+_RECORDS = """
+import sys
+from pathlib import Path
+from symfloat.engine.check import check_derivation
+from symfloat.registry import load, select
+from symfloat.report.errata import errata_json
+from symfloat.report.record import write_record
+reports = [check_derivation(load(d)[0]) for d in select("cap")]
+docs = Path(sys.argv[1]) / "docs"
+docs.mkdir()
+write_record(docs / "verification.json", reports)
+(docs / "errata.json").write_text(errata_json(reports), encoding="utf-8")
+"""
+
+
+def test_a_librarys_site_is_built_from_its_own_records_under_its_folder(tmp_path):
+    pytest.importorskip("sphinx", reason="the site extra is not installed (pip install 'symfloat[site]')")
+    pytest.importorskip("myst_nb", reason="the site extra is not installed (pip install 'symfloat[site]')")
+    try:
+        typeset.katex_dist()
+    except typeset.TypesetterMissing as exc:
+        pytest.skip(str(exc))
+    library = tmp_path / "library"
+    shutil.copytree(TUTORIAL, library)
+    env = {k: v for k, v in os.environ.items() if k != "SYMFLOAT_CACHE"}
+    env.update(SYMFLOAT_LIBRARY=str(library))
+    made = subprocess.run([sys.executable, "-c", _RECORDS, str(library)], env=env, capture_output=True, text=True,
+                          check=False, cwd=tmp_path)
+    assert made.returncode == 0, made.stderr
+    assert _symfloat(library, "notebooks", "cap", cwd=tmp_path).returncode == 0
+    checkout = project_root()
+    before = (checkout / "build" / "site").is_dir() and sorted((checkout / "build" / "site").rglob("*"))
+    out = _symfloat(library, "site", cwd=tmp_path)
+    assert out.returncode == 0, out.stderr
+    site = library / "build" / "site"
+    assert (site / "index.html").is_file()
+    assert ((checkout / "build" / "site").is_dir() and sorted((checkout / "build" / "site").rglob("*"))) == before
+    index = (site / "index.html").read_text(encoding="utf-8")
+    # the library's one source and its one erratum; none of the project's sources, its numerics or its about page
+    assert "edition/cap.html" in index and "edition/scheeffer.html" not in index
+    assert not (site / "numerics.html").exists() and not (site / "about.html").exists()
+    assert (site / "errata" / "cap-centroid-1.html").is_file() and (site / "errata-kinds.html").is_file()
+    assert (site / "notebooks" / "cap-centroid.html").is_file()

@@ -30,7 +30,7 @@ from ..model.derivation import Derivation, Printed
 from ..model.evidence_tex import shown_value, tex_error, tex_number, tex_point
 from ..model.relation import is_relation
 from .definitions import DefinitionRoute
-from .print_corrections import print_corrections
+from .print_corrections import print_corrections, smallest_correction
 from .identity import Domain, IdentityResult, check_identity, check_rounded
 from .proofs import ProofBook
 from .relation import check_relation
@@ -297,8 +297,13 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
         c = found[0]
         return f"the smallest correction found is {c.text} ({c.change}: {c.what}, {c.kind}; {c.status})"
 
-    formulas = [_verdict(d, p, identities.get(p.name), corrected.get(p.name), outcomes, failures, correction)
-                for p in d.printed]
+    def searched(p) -> str:     # a declared erratum's refuted print: the search's sentence, decided by sampling
+        return smallest_correction(p, results, domain, f"{d.id}/{p.name}", lambda chain: _check_chain(
+            chain, set(), results, domain, f"{d.id}/{p.name}#edit", None, {}, p.tolerance, False),
+            p.erratum.corrected)
+
+    formulas = [_verdict(d, p, identities.get(p.name), corrected.get(p.name), outcomes, failures, correction,
+                         searched) for p in d.printed]
     failures += [f"{d.source} {d.locator}: {m}" for m in _proof_failures(d.id, proofs)]
     return DerivationReport(d.id, d.source, d.title, d.locator, key, time.perf_counter() - t0,
                             step_reports, formulas, failures, proofs=proofs, timing=timing)
@@ -368,7 +373,7 @@ def _refutation(cx: dict) -> str:
     return f"{'at ' + point + ' ' if point else ''}(printed: {cx['rhs']}, derived: {cx['lhs']}{within})"
 
 
-def _verdict(d, p, ident, corr, outcomes, failures, correction) -> FormulaReport:
+def _verdict(d, p, ident, corr, outcomes, failures, correction, searched) -> FormulaReport:
     where = f"{d.source} {p.locator} ({p.name})"
     # an outcome without records (the definition route found nothing to measure) only adds its note
     printed_out = [o for o in outcomes.get(p.name, []) if o.records]
@@ -400,6 +405,9 @@ def _verdict(d, p, ident, corr, outcomes, failures, correction) -> FormulaReport
                       f"search found no symbolic proof (details in the identity record)")
     elif rep.verdict == "erratum" and p.erratum is not None:
         rep.erratum = _erratum(p, ident, corr, corrected_out)
+        sentence = searched(p) if ident is not None and ident.status == "refuted" else ""
+        if sentence:            # the correction search's sentence, after the engine's findings
+            rep.erratum["evidence"] += " " + sentence
     return rep
 
 

@@ -5,7 +5,10 @@ reader with the hand reading's symbol names, its symbols matched by name, and it
 the derivation: first at two seeded points of the domain in 30-digit arithmetic, the derived quantities
 inserted (a fast sieve; a quote of printed numbers within its printed precision), then, for an edit that passes, by the identity check of the printed formulas
 (exact sampling and proof).  Used by ``symfloat verify``'s message for a refuted print without an
-erratum and by the benchmark of the errata (``benchmarks/corrections.py``).
+erratum, by the evidence of a declared erratum (:func:`smallest_correction`: the
+:data:`EVIDENCE_BUDGET` likeliest edits, each read once, the search stopped at the first that holds)
+and by the benchmark of the errata (``benchmarks/corrections.py``).  An excerpt of prose (no math
+span, a word of four small letters) is not searched: one edit of a sentence never makes a formula.
 """
 from __future__ import annotations
 
@@ -19,19 +22,26 @@ from ..model.symbol_match import formula_symbols, match_symbols
 from .corrections import Correction, corrections
 from .identity import Domain
 
-__all__ = ["excerpt_math", "print_corrections", "print_test"]
+__all__ = ["excerpt_math", "print_corrections", "print_test", "same_reading", "smallest_correction",
+           "EVIDENCE_BUDGET"]
 
 _SIEVE_POINTS = 2
 _SIEVE_DIGITS = 30
+EVIDENCE_BUDGET = 60        # the likeliest edits an erratum's evidence tries (the benchmark measures what it finds)
 _MATH = re.compile(r"\$\$(.+?)\$\$|\$(.+?)\$", re.S)
+_WORD = re.compile(r"(?<![\\A-Za-z])[a-zäöüß]{4,}")
 
 
 def excerpt_math(excerpt: str) -> str | None:
-    """The one formula of an excerpt: its only math span (or the whole excerpt when it has no dollars);
-    ``None`` when it has several."""
+    """The one formula of an excerpt: its only math span (or the whole excerpt when it has no dollars and
+    no word of four small letters); ``None`` when it has several, or is prose.
+
+    >>> excerpt_math("und $V = a b c$ ist"), excerpt_math("V = a b c"), excerpt_math("Nach 55 ist ferner")
+    ('V = a b c', 'V = a b c', None)
+    """
     spans = [a or b for a, b in _MATH.findall(excerpt)]
     if not spans:
-        return excerpt if "$" not in excerpt else None
+        return excerpt if "$" not in excerpt and not _WORD.search(excerpt) else None
     return spans[0].strip() if len(spans) == 1 else None
 
 
@@ -135,3 +145,31 @@ def print_test(printed, results: dict, domain: Domain, seed: str, decide):
         return r.status if r.status in ("proved", "sampled") else None
 
     return holds
+
+
+def same_reading(text: str, other: str) -> bool:
+    """Whether *text* and *other* (LaTeX, or an excerpt with one math span) read to the same rows of
+    SymPy expressions (the allow-list reader, no vocabulary): how an edit is recognised as a booked
+    correction."""
+    try:
+        rows = [[tuple(r[0]) for r in read(excerpt_math(t) or t).rows] for t in (text, other)]
+    except (Unreadable, RecursionError, ValueError, TypeError):
+        return False
+    return rows[0] == rows[1]
+
+
+def smallest_correction(printed, results: dict, domain: Domain, seed: str, decide, booked: str) -> str:
+    """The erratum's evidence sentence on the search: the likeliest of the :data:`EVIDENCE_BUDGET` likeliest
+    edits of *printed*'s excerpt that makes it hold, and whether it is the *booked* correction; ``""`` when
+    the search cannot run (no one formula in the excerpt, no hand reading that is a chain)."""
+    tex = excerpt_math(printed.excerpt)
+    holds = print_test(printed, results, domain, seed, decide) if tex is not None else None
+    if holds is None:
+        return ""
+    found = corrections(tex, holds, limit=1, budget=EVIDENCE_BUDGET)
+    if not found:
+        return f"The correction search: no edit among the {EVIDENCE_BUDGET} likeliest makes the print hold."
+    c = found[0]
+    how = "confirmed by sampling" if c.status == "sampled" else c.status
+    return (f"The smallest correction found: {c.text} ({c.change}: {c.what}, {c.kind}; {how}); it is "
+            f"{'' if same_reading(c.text, booked) else 'not '}the booked one.")

@@ -7,6 +7,11 @@ Mathematics is typeset by KaTeX at build time (:mod:`symfloat.site.typeset`; its
 copied into the site); the theme is Sphinx's own
 ``alabaster``; nothing on a page loads from the network.
 
+A library of texts (``SYMFLOAT_LIBRARY``) gets its own site from its own records: the pages
+``about`` (``site.md``) and ``numerics`` (``numerics.md``) are shown when its ``docs/`` has them, and
+the criteria of the errata's kinds (``errata-kinds.md``, written once for every erratum) are its own
+or else the project's.
+
 Determinism: the pages are staged and built in a temporary folder (Sphinx's environment pickles
 and doctrees stay there), the build stamp ``.buildinfo`` is dropped, no date is printed, and the
 result is synced into the output folder file by file: an unchanged file is not rewritten, a file
@@ -38,6 +43,7 @@ __all__ = ["build_site", "stage", "MARKER", "SiteError"]
 
 MARKER = ".symfloat-site"
 _LEFT_OUT = {".buildinfo"}
+_OPTIONAL = {"about": "site.md", "numerics": "numerics.md"}     # a page shown when the records' docs have it
 
 
 class SiteError(EnvironmentProblem):
@@ -74,7 +80,7 @@ def _asset(name: str) -> str:
     return resources.files("symfloat.site").joinpath("assets", name).read_text(encoding="utf-8")
 
 
-def _index(records: Records, with_figures: bool) -> str:
+def _index(records: Records, with_figures: bool, pages: list[str]) -> str:
     s = records.summary
     rows, total = [], Counter()
     for key, source in SOURCES.items():
@@ -97,7 +103,7 @@ def _index(records: Records, with_figures: bool) -> str:
         "|---|---:|" + "---:|" * len(MARKS), *rows, "",
         "```{toctree}", ":maxdepth: 1", "", "edition/index", "errata/index", "notebooks/index",
         *([FIGURES] if with_figures else []),
-        *(Path(name).stem for name in records.reports), "numerics", "errata-kinds", "about", "```", ""])
+        *(Path(name).stem for name in records.reports), *pages, "```", ""])
 
 
 def _reports(docs: Path) -> tuple[str, ...]:
@@ -108,19 +114,23 @@ def _reports(docs: Path) -> tuple[str, ...]:
                  if r.filename.endswith(".md") and (docs / r.filename).is_file())
 
 
-def stage(folder: Path, docs: Path, notebooks: Path) -> Records:
-    """Write the Sphinx source tree of the site into *folder*; return the records it shows."""
+def stage(folder: Path, docs: Path, notebooks: Path, kinds: Path | None) -> Records:
+    """Write the Sphinx source tree of the site into *folder*; return the records it shows (*kinds*: the
+    criteria of the errata's kinds where *docs* has none)."""
     records = load_records(docs, notebooks)
     slugs = [slug(e["id"]) for e in records.errata]
     if len(set(slugs)) != len(slugs):
         raise SiteError("two errata ids give the same page name")
     records.reports = _reports(docs)
     found = pictures(docs)
-    files = {"conf.py": _CONF, "index.md": _index(records, bool(found)), "_static/symfloat.css": _asset("symfloat.css"),
-             "_static/symfloat.js": _asset("symfloat.js"),
-             "about.md": (docs / "site.md").read_text(encoding="utf-8"),
-             "errata-kinds.md": (docs / "errata-kinds.md").read_text(encoding="utf-8"),
-             "numerics.md": (docs / "numerics.md").read_text(encoding="utf-8")}
+    pages = {page: (docs / name).read_text(encoding="utf-8") for page, name in _OPTIONAL.items()
+             if (docs / name).is_file()}
+    pages["errata-kinds"] = (docs / "errata-kinds.md" if (docs / "errata-kinds.md").is_file() else kinds).read_text(
+        encoding="utf-8")
+    order = [page for page in ("numerics", "errata-kinds", "about") if page in pages]
+    files = {"conf.py": _CONF, "index.md": _index(records, bool(found), order),
+             "_static/symfloat.css": _asset("symfloat.css"), "_static/symfloat.js": _asset("symfloat.js"),
+             **{f"{page}.md": text for page, text in pages.items()}}
     if found:
         files[f"{FIGURES}.md"] = figures_page(found, records.notebooks)
     for name in records.reports:
@@ -204,25 +214,27 @@ def _check_tools() -> None:
     katex_dist()                        # node and KaTeX, or one line saying how to install them
 
 
-def build_site(out: Path, docs: Path, notebooks: Path, progress=None) -> tuple[list[str], list[str]]:
-    """Build the site into *out*; (the files changed there, Sphinx's warnings)."""
+def build_site(out: Path, docs: Path, notebooks: Path, kinds: Path | None, progress=None) -> tuple[list[str], list[str]]:
+    """Build the site into *out* from the records of *docs* and *notebooks* (*kinds*: the criteria of the
+    errata's kinds where *docs* has none); (the files changed there, Sphinx's warnings)."""
     _check_tools()
     out = Path(out)
     if out.exists() and not out.is_dir():
         raise InputError(f"{out} is a file: the site is written into a folder")
     if out.exists() and any(out.iterdir()) and not (out / MARKER).is_file():
         raise InputError(f"{out} is not empty and holds no earlier site ({MARKER}): give a new or empty folder")
-    for needed in (docs / "verification.json", docs / "errata.json", docs / "site.md", docs / "numerics.md",
-                   docs / "errata-kinds.md"):
+    for needed in (docs / "verification.json", docs / "errata.json"):
         if not needed.is_file():
             raise InputError(f"no {needed}: the site is built from the committed records")
+    if not (docs / "errata-kinds.md").is_file() and (kinds is None or not Path(kinds).is_file()):
+        raise InputError(f"no {docs / 'errata-kinds.md'}: the errata's pages link to the criteria of their kinds")
     sweep_orphans(tempfile.gettempdir(), "symfloat-site-")      # the build folders of killed builds
     with tempfile.TemporaryDirectory(prefix=f"symfloat-site-{os.getpid()}-") as tmp:
         src, html, doctrees = Path(tmp, "src"), Path(tmp, "html"), Path(tmp, "doctrees")
         src.mkdir()
         progress and progress("staging the pages from the records")
         try:
-            stage(src, docs, notebooks)
+            stage(src, docs, notebooks, kinds)
         except ValueError as exc:           # an excerpt not in its transcription, a stale waiver
             raise SiteError(f"the records do not match the transcriptions: {exc}") from None
         progress and progress("building with Sphinx")
