@@ -28,7 +28,7 @@ def _evidence(printed: str, reading, booked: str) -> str:
 def test_a_one_digit_booked_correction_is_the_smallest_correction_found():
     # 4/5 for 4/3: the one-digit edit 5 -> 3 is the booked correction
     evidence = _evidence(r"$$V = \frac{4r^3\pi}{5}.$$", sp.Eq(V, 4 * r**3 * sp.pi / 5), r"V = \frac{4r^3\pi}{3}")
-    assert (r"The smallest correction found: V = \frac{4r^3\pi}{3}. (5 → 3: digit, print-like; confirmed by "
+    assert (r"The smallest correction found: $V = \frac{4r^3\pi}{3}$ (5 → 3: digit, print-like; confirmed by "
             r"sampling); it is the booked one.") in evidence
 
 

@@ -171,5 +171,5 @@ def smallest_correction(printed, results: dict, domain: Domain, seed: str, decid
         return f"The correction search: no edit among the {EVIDENCE_BUDGET} likeliest makes the print hold."
     c = found[0]
     how = "confirmed by sampling" if c.status == "sampled" else c.status
-    return (f"The smallest correction found: {c.text} ({c.change}: {c.what}, {c.kind}; {how}); it is "
+    return (f"The smallest correction found: ${c.text.rstrip('. ')}$ ({c.change}: {c.what}, {c.kind}; {how}); it is "
             f"{'' if same_reading(c.text, booked) else 'not '}the booked one.")
