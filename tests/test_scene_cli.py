@@ -73,6 +73,14 @@ def test_a_disagreement_is_shown():
     assert any(p["derivation"] == "scheeffer-vi-cf" for p in disagreeing)
 
 
+def test_a_disagreement_without_a_claimed_stability_says_so_in_words(run):
+    # Scheeffer X (171) at s = 0.22 (below its printed 0.2265) gives a pentagon whose stability the text leaves
+    # open (the predictor's stability None): the line must say so, never print a Python None
+    code, out, err = run("scene", "cube", "--density", "0.22")
+    lines = [line for line in out.splitlines() if line.startswith("DISAGREEMENT: scheeffer-x")]
+    assert code == 0 and lines and all("(no stability claimed)" in line and "None" not in line for line in lines)
+
+
 def test_scene_table_and_plot(run, tmp_path):
     png = tmp_path / "cube.png"
     code, out, err = run("scene", "box", "--dims", "1,2,3", "--density", "1/2", "--plot", str(png), "--quiet")

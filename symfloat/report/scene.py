@@ -109,7 +109,7 @@ def scene_table(record) -> str:
             lines.append(f"not certified: up {up}: {c['reason']}")
     for p in record["unmatched_predictions"]:
         lines.append(f"DISAGREEMENT: {p['derivation']} {', '.join(p['locators'])} predicts an equilibrium at up "
-                     f"{[round(x, 6) for x in p['predicted_up']]} ({p['predicted_stability']}); "
+                     f"{[round(x, 6) for x in p['predicted_up']]} ({p['predicted_stability'] or 'no stability claimed'}); "
                      f"{p['disagreement']}" + (f" ({p['note']})" if p.get("note") else ""))
     completeness = record["checks"].get("completeness")
     if completeness:
