@@ -38,10 +38,11 @@ def test_references_resolve_or_are_flagged():
 
 
 def test_the_booked_wrong_references_are_found_as_wrong():
-    # each is an erratum of a derivation module: VI.B, VI.F, VII, IX.C, X (two)
+    # each is an erratum of a derivation module: VI.B, VI.D (two), VI.F, VII, IX.C, X (two)
     wrong = {(r["line"], r["number"]) for r in references("scheeffer") if r["status"] == "wrong"}
     assert wrong == {(705, "55"), (1068, "55"), (1279, "102a"), (1735, "164"), (1817, "104"), (1833, "19"),
-                     (1270, "102b")}     # "nach 102 b)": judged, the slip booked once with "nach 102 a)"
+                     (1270, "102b"),     # "nach 102 b)": judged, the second place of the "nach 102 a)" erratum
+                     (948, "81"), (960, "81")}   # "Gleichung 81", "(nach 81)": (81) is the upright law, meant (81a)
     assert check([r for s in ("scheeffer", "euler", "graefe") for r in references(s)]) == []
 
 

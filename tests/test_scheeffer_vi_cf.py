@@ -48,6 +48,8 @@ EXPECTED_ERRATA = {
     ("55-reference", "misprint", "low"),      # transcription line 1068: 'Nach 55' for (54); low: 4 and 5 are
                                               # close in print and scan, which erred cannot be told (issue 31)
     ("height-OV", "misprint", "low"),         # line 980: the height 'O V' of BOC, defined as OQ (line 968)
+    ("81-reference", "misprint", "low"),      # line 948: 'Gleichung 81', the upright law, for (81a); low: (81)
+    ("81-reference-half", "misprint", "low"), # line 960: '(nach 81)'   may number the whole law of the cube
 }
 
 
@@ -219,6 +221,20 @@ def test_the_78c_correction_must_hold():
     rep = check_derivation(_mutated("78c", erratum=wrong), prove=False, trust_steps=True)
     assert any("correction does not hold" in f for f in rep.failures)
 
+
+
+def test_the_81_references_are_errata_and_their_correction_must_hold():
+    # transcription line 931: '(81)' stands alone after the law of the upright cube (line 929), which holds no
+    # angle; lines 948 'Gleichung 81' and 960 '(nach 81) phi_1 = 45 deg' take a tilt from it, which (81a) gives
+    assert TEXT.splitlines()[930] == "(81)" and "in aufrechter Lage stabil" in TEXT.splitlines()[928]
+    for name in ("81-reference", "81-reference-half"):
+        rep = check_derivation(_mutated(name), prove=False, trust_steps=True)
+        (f,) = rep.formulas
+        assert f.verdict == "erratum" and rep.failures == []
+        p = next(q for q in D.printed if q.name == name)
+        kept = dataclasses.replace(p.erratum, corrected_reading=p.reading)      # (81) kept as the equation cited
+        rep = check_derivation(_mutated(name, erratum=kept), prove=False, trust_steps=True)
+        assert any("correction does not hold" in x for x in rep.failures)
 
 
 def test_the_55_reference_is_an_erratum_on_its_own():

@@ -262,6 +262,15 @@ def test_second_review_faults_are_errata(name, kind, confidence):
     assert (f.erratum["kind"], f.erratum["confidence"]) == (kind, confidence)
 
 
+def test_the_102_references_are_one_erratum_with_two_places():
+    # transcription lines 1270 'also nach 102 b):' and 1279 '(nach 102 a)': (103b) and (103a) meant, the same slip
+    # twice; the erratum quotes the second and lists the first as a place of its words 'nach 102'
+    p = next(q for q in STATEMENTS.d.printed if q.name == "102a-reference")
+    assert (p.erratum.fault, p.erratum.places) == ("nach 102", ("VII",))
+    assert [i + 1 for i, line in enumerate(TEXT.splitlines()) if "nach 102" in line] == [1270, 1279]
+    assert "(102a)" not in TEXT and "(102b)" not in TEXT and "(103b)" in TEXT
+
+
 def test_the_labels_of_F_in_VIII_against_the_dry_part_of_VII():
     # transcription lines 1084/1092 (VII): F = AGHCD, the wet triangle BGH; VIII keeps the letters (line 1295).
     # On the unit square A(0,1) B(1,1) C(1,0) D(0,0), G = (2/3, 1) on AB, H = (1, 1/4) on BC (shoelace by hand):

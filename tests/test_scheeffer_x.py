@@ -17,7 +17,7 @@ from symfloat.engine.cache import ReportCache
 from symfloat.engine.check import check_derivation
 from symfloat.engine.runner import verify
 from symfloat.geometry.floating import box, floating_state, submerged
-from symfloat import Cases
+from symfloat import Holds
 from symfloat.model.prediction import Scene
 from symfloat.model.source import SOURCES
 from symfloat.registry import load
@@ -59,7 +59,7 @@ EXPECTED_ERRATA = {
     ("dual-exists", "consequential", "high"),    # the same for s < 1/2
     ("104-reference", "misprint", "medium"),     # transcription line 1817: 'in 104 ein' for (167)
     ("fig19-reference", "misprint", "low"),      # line 1833: '(s. Fig. 19)', the waterplane of VII, for Fig. 23
-    ("172", "claim", "medium"),                  # lines 1857-1859: 'eine reelle Wurzel': three for 0.7623 < s < 0.7735
+    ("heading", "misprint", "medium"),           # line 1779 and the contents, line 1947: 'Gewichtslagen'
 }
 
 
@@ -393,7 +393,7 @@ def test_root_counts_of_171(sv, count):
     assert len(companion) == count
 
 
-def test_the_fold_of_171_lies_between_the_bounds_of_the_172_correction():
+def test_the_fold_of_171_lies_between_0_7623_and_0_7624():
     # the count jumps where f and df/dx vanish together: a root of the resultant in x, between 0.7623 and 0.7624
     s_ = sp.Symbol("s")
     xx_ = _poly_171(s_).gens[0]
@@ -401,42 +401,59 @@ def test_the_fold_of_171_lies_between_the_bounds_of_the_172_correction():
     res = sp.Poly(sp.resultant(f, sp.diff(f, xx_), xx_), s_)
     assert res.count_roots(sp.Rational("0.7623"), sp.Rational("0.7624")) == 1
     assert res.count_roots(sp.Rational("0.7624"), sp.Rational("0.7734")) == 0     # (4 + sqrt 2)/7 = 0.77346
-    assert STATEMENTS.S_FOLD_BELOW == sp.Rational("0.7623") and STATEMENTS.S_FOLD_ABOVE == sp.Rational("0.7624")
 
 
-def test_172_is_a_claim_erratum_on_the_root_count():
-    # transcription lines 1857-1859: 'eine reelle Wurzel, wenn s < (4 + sqrt 2)/7': three roots at 0.7623 < s < 0.7735
+def _checked_172(reading=None):
     p = next(q for q in D.printed if q.name == "172")
-    assert p.locator == "(172)"
+    p = p if reading is None else dataclasses.replace(p, reading=reading)
     rep = check_derivation(dataclasses.replace(D, printed=[p], witnesses=[]), prove=False, trust_steps=True)
     (f,) = rep.formulas
-    assert f.verdict == "erratum" and rep.failures == []
-    assert (f.erratum["kind"], f.erratum["confidence"]) == ("claim", "medium")
-    point = sp.Rational(f.identity["counterexample"]["point"]["s"])       # where the print fails: three roots
+    return f, rep.failures
+
+
+def test_172_is_an_existence_statement_verified_as_printed():
+    # transcription lines 1857-1859: 'eine reelle Wurzel, wenn s < (4 + sqrt 2)/7': a real root, which (171) has on
+    # 1/2 < s < 0.7735 (one, or three between the fold and the bound); read as 'exactly one' it would fail there
+    f, failures = _checked_172()
+    assert f.verdict == "verified" and failures == [] and f.erratum is None
+    s, count = STATEMENTS.s, STATEMENTS.COUNT_171(0, 1)
+    exactly_one = Holds(sp.Implies(s < STATEMENTS.s172, sp.Eq(count, 1)), {s: (sp.Rational(1, 2), 1)})
+    f, failures = _checked_172(exactly_one)
+    assert f.verdict == "erratum" and any("no erratum" in x for x in failures)
+    point = sp.Rational(f.identity["counterexample"]["point"]["s"])       # where 'one' fails: three roots
     assert sp.Rational("0.7623") < point < (4 + sp.sqrt(2)) / 7
 
 
 def test_the_172_root_counts_are_counted_again_numerically():
     # the definition route counts the roots of (171) from its coefficients' values (polyroots and inclusion
-    # discs) at the relation check's counterexample and at seeded densities: the counts agree with Sturm's, and the
-    # print fails at its counterexample by them too (three roots where it says one)
-    p = next(q for q in D.printed if q.name == "172")
+    # discs) at seeded densities: the counts agree with Sturm's
+    f, failures = _checked_172()
+    assert failures == [] and f.numeric_content
+    methods = [f"root count, polyroots and inclusion discs, {n} digits" for n in (15, 30)]
+    assert [r["method"] for r in f.numeric] == methods
+    assert all(r["abs_error"] == 0 and r["cases"] >= 3 for r in f.numeric)
+
+
+def test_an_existence_bound_beyond_five_sixths_is_refuted():
+    # (171) has no root in 0 < x < 1 from s = 5/6 on (f(1) = (5 - 6s)^2/432, COUNTS_171 at 0.834): a root
+    # promised up to s = 9/10 must fail
+    s, count = STATEMENTS.s, STATEMENTS.COUNT_171(0, 1)
+    f, failures = _checked_172(
+        Holds(sp.Implies(s < sp.Rational(9, 10), count >= 1), {s: (sp.Rational(1, 2), 1)}))
+    assert f.verdict == "erratum" and any("no erratum" in x for x in failures)
+
+
+def test_the_heading_word_is_one_erratum_with_its_contents_line():
+    # transcription line 1779 '### Die Gewichtslagen eines schwimmenden Würfels.' and the contents, line 1947; the
+    # text says 'Gleichgewichtslage' 56 times (counted here), 'Gewichtslage' nowhere else
+    p = next(q for q in D.printed if q.name == "heading")
+    assert (p.erratum.fault, p.erratum.places) == ("Gewichtslagen", ("Inhalt",))
+    assert [i + 1 for i, line in enumerate(TEXT.splitlines()) if "Gewichtslage" in line] == [1779, 1947]
+    assert TEXT.count("Gleichgewichtslage") == 56
     rep = check_derivation(dataclasses.replace(D, printed=[p], witnesses=[]), prove=False, trust_steps=True)
     (f,) = rep.formulas
-    assert rep.failures == [] and f.numeric_content
-    methods = [f"root count, polyroots and inclusion discs, {n} digits" for n in (15, 30)]
-    assert [r["method"] for r in f.numeric] == methods == [r["method"] for r in f.corrected_numeric]
-    assert all(r["abs_error"] == 0 and r["cases"] >= 4 for r in f.numeric + f.corrected_numeric)
-    assert any("relation fails at" in n and "(condition)" in n for n in f.witness_notes)
-
-
-def test_a_wrong_count_in_the_172_correction_is_refuted():
-    # the correction with 'one root' kept between the fold and (4 + sqrt 2)/7 (the print's count) must not hold
-    p = next(q for q in D.printed if q.name == "172")
-    rows = list(p.erratum.corrected_reading.rows)
-    rows[1] = (rows[1][0], sp.Eq(rows[1][1].lhs, 1))
-    wrong = dataclasses.replace(p.erratum, corrected_reading=Cases(rows, {STATEMENTS.s: (sp.Rational(1, 2), 1)},
-                                                                   exhaustive=False))
-    rep = check_derivation(dataclasses.replace(D, printed=[dataclasses.replace(p, erratum=wrong)], witnesses=[]),
+    assert f.verdict == "erratum" and rep.failures == []
+    kept = dataclasses.replace(p.erratum, corrected_reading=p.reading)      # 'positions of the weight' kept
+    rep = check_derivation(dataclasses.replace(D, printed=[dataclasses.replace(p, erratum=kept)], witnesses=[]),
                            prove=False, trust_steps=True)
-    assert any("correction does not hold" in f for f in rep.failures)
+    assert any("correction does not hold" in x for x in rep.failures)

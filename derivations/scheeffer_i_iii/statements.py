@@ -1,7 +1,7 @@
 """What Scheeffer's sections I-III say and how each formula is derived (see the package's docstring)."""
 import sympy as sp
 
-from symfloat import Derivation, Eq, Erratum, Holds, Iff
+from symfloat import Derivation, Eq, Erratum, Iff
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
 
@@ -323,42 +323,19 @@ d.step("sign-15", (sp.sign(V1 * m), sp.sign(crit15)), "algebra", uses=("righting
        note="sin phi > 0 for 0 < phi < pi/2: V1 m and the bracket of (12) have the same sign")
 
 
-d.quote("stable-V1m", "(15)", "so muss (nach 9 und 12)  $V_1 m$  und folglich",
-        reading=Holds(crit15 > 0),
-        note="read as: the condition the sentence puts on V1 m (as transcribed: none, every V1 m) is equivalent "
-             "to (15), by (12): so (15) would hold everywhere",
-        erratum=Erratum("transcription", "high", r"\text{so muss (nach 9 und 12) } V_1 m > 0 \text{ und folglich}",
-                        ("The sentence has no predicate for $V_1 m$: 'so muss V1 m und folglich (15) sein'. "
-                         r"Stability is (2), $V_1 m > 0$, and by (12) $V_1 m = \sin\varphi$ times the bracket of (15) "
-                         r"with $\sin\varphi > 0$, so $V_1 m > 0$ exactly when the bracket is positive: the lost "
-                         "words are '$> 0$' (or 'positiv'). The parallel sentence of the labile case has lost its "
-                         "'$< 0$' in the same way; a relation sign dropped after an inline formula is the scan's "
-                         "(high). The reference 'nach 9' is left as printed (the numbering has gaps and no display "
-                         "of the transcription carries (9))."),
-                        corrected_reading=Iff(V1 * m > 0, crit15 > 0),
-                        objection=("'so muss $V_1 m$ und folglich ... sein' may be the author's ellipsis, the "
-                                   "predicate of $V_1 m$ understood from the stability condition (2)."),
-                        answer=("'muss ... sein' asks for a predicate to each member, and the second member carries "
-                                "its '$> 0$' in (15); the stability condition (2) is $V_1 m > 0$, and by (12) $V_1 "
-                                "m$ has the sign of the bracket of (15). The parallel labile sentence lost its '$< "
-                                "0$' in the same place, after an inline formula, where this scan drops relation "
-                                "signs.")))
-d.quote("labile-V1m", "after (15)", "so ist  $V_1 m$  und daher",
-        reading=Holds(crit15 < 0),
-        note="read as: the condition the sentence puts on V1 m (as transcribed: none) is equivalent to the "
-             "bracket being negative, by (12): so the bracket would be negative everywhere",
-        erratum=Erratum("transcription", "high", r"\text{so ist } V_1 m < 0 \text{ und daher}",
-                        ("As in the stable case the relation of $V_1 m$ is lost: 'so ist V1 m und daher ... < 0'. "
-                         "The labile position has $V_1 m < 0$ ((2) fails), and by (12) $V_1 m < 0$ exactly when the "
-                         r"bracket $(1 + \operatorname{tg}^2\varphi/2)\, T_1 - V_1 e_1$ is negative ($\sin\varphi > "
-                         "0$): the lost words are '$< 0$' (or 'negativ'). For the labile initial position this holds "
-                         r"for the small rotations, below the zero $\varphi_1$ of the increasing bracket (IV (27)). "
-                         "The scan's loss, as in the stable case (high)."),
-                        corrected_reading=Iff(V1 * m < 0, crit15 < 0),
-                        objection="As in the stable case, an ellipsis of the author, the predicate understood.",
-                        answer=("The second member carries its '$< 0$', and the labile position is the failure of "
-                                "(2), $V_1 m < 0$, which by (12) has the sign of the bracket; the same loss after an "
-                                "inline formula as in the stable sentence is the scan's.")))
+D15 = r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - V_1 e_1"     # the bracket as (15) prints it
+d.quote("stable-V1m", "(15)",
+        "so muss (nach 9 und 12)  $V_1 m$  und folglich\n\n" + D15 + r" > 0 \text{ sein.} \quad (15)$$",
+        reading=Iff(V1 * m > 0, crit15 > 0),
+        note="the complete sentence: one predicate, '> 0 sein', after two subjects joined by 'und folglich' (V1 m, "
+             "and consequently the bracket, must be positive); read as the equivalence it draws from (12): V1 m > 0 "
+             "exactly when the bracket is positive. The reference 'nach 9' is left as printed (no display of the "
+             "transcription carries (9); the stability condition is (2))")
+d.quote("labile-V1m", "after (15)", "so ist  $V_1 m$  und daher\n\n" + D15 + " < 0$$",
+        reading=Iff(V1 * m < 0, crit15 < 0),
+        note="the complete sentence: one predicate, '< 0', after two subjects joined by 'und daher'; read as the "
+             "equivalence of the signs by (12). For the labile initial position it holds for the small rotations, "
+             "below the zero phi_1 of the increasing bracket (IV (27))")
 d.quote("stable-15", "(15)",
         r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - V_1 e_1 > 0 \text{ sein.} \quad (15)$$",
         reading=(sp.sign(V1 * m), sp.sign(crit15)),
@@ -368,7 +345,7 @@ d.quote("stable-15", "(15)",
 d.quote("labile-15", "after (15)",
         r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi \right) T_1 - V_1 e_1 < 0$$",
         reading=(sp.sign(V1 * m), sp.sign(crit15)),
-        note="'so ist V1 m [negativ] und daher ... < 0': the same equivalence for the labile case")
+        note="'so ist V1 m und daher ... < 0' (one predicate for both): the same equivalence for the labile case")
 
 # ---- III. small angles: (16), Duhamel (18) ----------------------------------------------------
 m1 = sp.Subs(sp.Derivative(m, phi), phi, 0)

@@ -488,6 +488,43 @@ d.quote("half-stable", "VI.D",
                    "the position is not stable even in that sense."))
 d.quote("half-tilt", "VI.D", r"$\varphi_1 = 45^\circ$",
         reading=(sp.atan(sp.sqrt(sp.Subs(tan2, (a, s), (b, half)))), pi / 4))
+E_TILT = sp.tan(phi) ** 2 - tan2c                 # the oblique cube's tilt equation, zero at phi_1
+E_81A = sp.tan(phi) ** 2 - 2 * (6 * s * (1 - s) - 1)   # (81a) as left minus right side, with the 6 of its erratum
+d.quote("81-reference", "VI.D", "(die auch aus Gleichung 81 zu bestimmen ist)",
+        reading=(sp.Derivative(GMc, phi), sp.Derivative(E_TILT, phi)),
+        erratum=Erratum(
+            "misprint", "low", r"\text{(die auch aus Gleichung 81 a zu bestimmen ist)}",
+            ("(81) is the law of the upright cube, 'Ein Würfel schwimmt in aufrechter Lage stabil, wenn sein spec. "
+             "Gewicht s > 0,7887 oder s < 0,2113 ist', its number standing alone after the closing quotation mark: a "
+             r"condition on $s$ (the upright metacentric height $b(1 - 6s(1-s))/(12 s)$ positive) that holds no angle "
+             r"and determines no oblique position. The tilt of the oblique position is (81a), $\operatorname{tg}^2 "
+             r"\varphi_1 = 2\{6 s(1-s) - 1\}$, (78b) with $a = b$, displayed a few lines before; with it $s = 1/2$ "
+             r"gives the $45^\circ$ of the second place, '(nach 81) $\varphi_1 = 45^\circ$'. The same number twice "
+             "for (81a) is no fault a scan makes twice: the print's (or the author's), low since the number may cite "
+             "the group of (81) and (81a)."),
+            corrected_reading=(E_81A, E_TILT),
+            objection="(81) may number the whole law of the cube, its three cases with (81a) among them, as (66) "
+                      "numbers the whole law of the triangular prism after its closing quotation mark, so that "
+                      "'Gleichung 81' cites the law that contains (81a).",
+            answer="The transcription sets '(81)' after the closing quotation mark of the first case alone, and the "
+                   "two cases after it stand outside the quotation, with (81a) numbered on its own; but the page "
+                   "layout of the print is lost and (66) shows the author numbering a whole law, so the reference "
+                   "may be loose rather than wrong: low."),
+        note="read as: the equation cited determines the tilt of the oblique position: as left minus right side it "
+             "varies with phi as the cube's tilt equation tg^2 phi - tg^2 phi_1 does; (81) read as its condition, "
+             "the upright metacentric height of the cube, which contains no angle")
+d.quote("81-reference-half", "VI.D", r"(nach 81)  $\varphi_1 = 45^\circ$",
+        reading=(sp.Subs(sp.Derivative(GMc, phi), s, half), sp.Subs(sp.Derivative(E_TILT, phi), s, half)),
+        erratum=Erratum(
+            "misprint", "low", r"\text{(nach 81 a) } \varphi_1 = 45^\circ",
+            (r"The second place of 'Gleichung 81' for (81a): at $s = 1/2$, (81a) gives $\operatorname{tg}^2\varphi_1 "
+             r"= 2(6/4 - 1) = 1$, $\varphi_1 = 45^\circ$; (81), the law of the upright cube, gives no angle."),
+            corrected_reading=(sp.Subs(E_81A, s, half), sp.Subs(E_TILT, s, half)),
+            same_as="scheeffer-vi-cf/81-reference",
+            objection="As at the first place, (81) may number the whole law of the cube, (81a) among its cases.",
+            answer="As at the first place: the transcription numbers the upright law alone, but the layout of the "
+                   "print is lost, so low."),
+        note="read at s = 1/2 as the first place is read: the equation cited determines the tilt")
 d.quote("half-waterplane", "VI.D",
         "der Wasserschnitt fällt also mit einem rechteckigen Diagonalschnitt des Würfels zusammen",
         reading=(sp.Subs(AII, (a, phi), (b, pi / 4)), b * sp.sqrt(2) * b),

@@ -518,17 +518,19 @@ Q102 = T * (1 + tg2 ** 2 / 2) - V3 * b / 2 - V3 * x0 / tg2     # the bracket of 
 TAN_USED = F1 * b * (1 - s) / (F * xs)                            # tan phi_2 in the relation quoted after it
 d.quote("102a-reference", "VII", r"(nach 102 a)",
         reading=(sp.Matrix([sp.Derivative(Q102, x0), tg2]), sp.Matrix([sp.Derivative(TAN_USED, x0), TAN_USED])),
-        erratum=Erratum("misprint", "medium", r"\text{(nach 103 a)}",
+        erratum=Erratum("misprint", "medium", r"\text{(nach 103 a); before (116): nach 103 b)}",
                         (r"The relation cited, $1/\cos^2 \varphi_2 = (F_1 b (1-s)/(F x_s))^2 + 1$, is $\tan \varphi_2 "
                          "= F_1 b (1-s)/(F x_s)$, i.e. (103a), which comes from the volume (100) and fixes the tilt "
                          "whatever $x_0$. There is no (102a): (102) is the single moment equation $T(1 + "
                          r"\operatorname{tg}^2/2) - V_3 b/2 - V_3 x_0 \operatorname{cotg} \varphi_2 = 0$, which ties "
-                         "the tilt to $x_0$ (its derivative in $x_0$ is $-F x_s$, not $0$) and cannot give it. '102 "
-                         "b' for (103b) before (116) is the same slip (not booked: (102) with (100) implies (116) as "
-                         "(103b) does). Two consistent numbers point to the print or an earlier numbering of the "
-                         "manuscript rather than the scan (medium)."),
+                         "the tilt to $x_0$ (its derivative in $x_0$ is $-F x_s$, not $0$) and cannot give it. The "
+                         "same slip stands before (116), 'also nach 102 b)' for (103b): $F x_s x_0 = T(1 + "
+                         r"\operatorname{tg}^2/2) - F_1 b^2 (1-s)/2$ turns $V_3 e_3 \cos\varphi_2 = \{F_1 b^2 (1-s) - "
+                         r"T \operatorname{tg}^2\}/2$ into (116), and no (102b) exists either. Two consistent numbers "
+                         "point to the print or an earlier numbering of the manuscript rather than the scan (medium)."),
                         corrected_reading=(sp.Matrix([sp.Derivative(V3 - V * (1 - s), x0), tg2]),
                                            sp.Matrix([sp.Derivative(TAN_USED, x0), TAN_USED])),
+                        fault="nach 102", places=("VII",),
                         objection="The print may have numbered (102a), (102b) displays that the transcription lost, "
                                   "so that both references are right.",
                         answer=("The transcription carries (102), then (103a) and (103b), and the summary cites '95 "

@@ -18,9 +18,9 @@ Second condition, pentagonal waterplane (171), (172).  With omega = 45 deg, a = 
 cut triangle, the dry part is the set of columns over the dry part F of the top face down to the water
 plane; its volume 1 - s fixes the tilt, and B below G gives (171) (derived: 2T(z^2 + (1-s)^2) - z^3(1-x)
 - z^2(1-s) is a positive multiple of the derivative of the potential along the diagonal plane).  (171)
-has a root in 0 < x < 1 for (4 - sqrt 2)/7 < s < (4 + sqrt 2)/7, but not one alone as (172) says: for
-s > 1/2 one up to the fold s = 0.7623, three from there to (4 + sqrt 2)/7 (where a root leaves through
-x = 0), two up to 5/6 (Sturm counts; claim erratum 172).  The text's conclusion, a stable pentagonal
+has a root in 0 < x < 1 for (4 - sqrt 2)/7 < s < (4 + sqrt 2)/7, as (172) says (an existence statement,
+verified): for s > 1/2 one up to the fold s = 0.7623, three from there to (4 + sqrt 2)/7 (where a root
+leaves through x = 0), two up to 5/6 (Sturm counts).  The text's conclusion, a stable pentagonal
 equilibrium for every 1/2 < s < 0.7735, is wrong: below s = 0.7623 the root of (171) lies where the
 bottom face is already cut (the waterplane there is a hexagon, the clipped cube has no pentagonal
 equilibrium at all), and where two pentagonal roots exist (0.7623 < s < 0.7735) one of them is unstable.
@@ -33,6 +33,10 @@ sqrt 3 L^3 (L - 1)/(12 s) < 0, L < 1 the leg).  With two parallel faces cut, the
 omega = 45 deg; the regular hexagon at s = 1/2 is stable (metacentric height sqrt 3/48).  Derived by
 integrating over the two triangles with the water plane through both water lines, and measured on the
 clipped cube.
+
+Heading.  'Die Gewichtslagen eines schwimmenden Würfels' (so also in the contents) for Gleichgewichtslagen:
+on the diagonal family of (171) the cube displaces its weight at every leg x, but is in equilibrium only at
+the roots of (171) (misprint, medium).
 
 Witnesses (``symfloat.geometry.floating``): moments of the clipped dry part, waterplane polygons and their
 vertex counts, metacentric heights of the clipped cube, and equilibria found as roots of the derivative

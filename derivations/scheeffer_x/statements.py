@@ -1,7 +1,7 @@
 """What Scheeffer's section X says and how each formula is derived (see the package's docstring)."""
 import sympy as sp
 
-from symfloat import PRINTED_DIGITS, Cases, Derivation, Eq, Erratum, Holds, RealRoots
+from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum, Holds, Iff, RealRoots
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
 
@@ -317,40 +317,17 @@ d.step("end-1", (F1v, f_at(sp.Integer(1), s), (6 * (1 - s) - 1) ** 2 / 432), "al
 d.step("172-root", Eq(s172, (4 + r2) / 7), "definition", result=s172, uses=("end-0",),
        note="f(0, s) = 0 on s > 1/2: a root of (171) enters 0 < x through x = 0 (the corner B just touching)")
 d.step("172-check", (f_at(sp.Integer(0), s172), 0), "algebra", uses=("172-root",))
-S_FOLD_BELOW, S_FOLD_ABOVE = sp.Rational("0.7623"), sp.Rational("0.7624")   # the fold of (171) lies between
 COUNT_171 = lambda lo, hi: RealRoots(F171(2 * Tq, zq, xl, s), xl, lo, hi)  # noqa: E731  (T, z of (171) inserted)
 d.quote("172", "(172)",
         r"Die Gleichung 171 hat (zwischen  $x = 0$  und  $x = 1$ ) eine reelle Wurzel, wenn" "\n\n" r"$$s < "
         r"\frac{4 + \sqrt{2}}{7} \quad \text{oder} < 0,7735. \quad (172)$$",
-        reading=Holds(sp.Implies(s < s172, sp.Eq(COUNT_171(0, 1), 1)), {s: (half, 1)}),
-        erratum=Erratum(
-            "claim", "medium",
-            "(171) has exactly one root in 0 < x < 1 for 1/2 < s <= 0.7623, three for 0.7623 < s < (4 + sqrt 2)/7, "
-            "two for (4 + sqrt 2)/7 <= s < 5/6 and none from 5/6 on; (4 + sqrt 2)/7 is where a root enters "
-            "through x = 0 (f(0) = 0), not where the count of roots changes from one",
-            (r"Sturm counts of (171) ($T$ and $z$ inserted) in $0 < x < 1$: one root at $s = \tfrac12$, "
-             r"$\tfrac{7}{10}$, $0.762$; three at $0.763$, $0.77$, $0.773$ (at $0.77$: $x = 0.0858$, $0.5684$, "
-             "$0.8768$); two at $0.774$, $0.8$, $0.833$; none at $0.834$. The count jumps from one to three at the "
-             "fold of (171) ($f = df/dx = 0$ at $x = 0.358$, $s = 0.762309$, a root of the resultant of $f$ and "
-             r"$df/dx$ in $x$), and the two roots left above $(4 + \sqrt2)/7$ meet at $x = 1$ at $s = \tfrac56$ "
-             r"($f(1) = (5 - 6s)^2/432$). What $(4 + \sqrt2)/7$ marks is $f(0) = 0$: the smallest root leaves $0 < x$ "
-             "through $x = 0$ (the corner B just touching). The author gives the result without the discussion ('Aus "
-             "Mangel an Raum'); read as 'one root if $s < 0.7735$' the sentence is false on $0.7623 < s < 0.7735$; "
-             "medium, since 'eine reelle Wurzel' may mean 'at least one', which holds."),
-            corrected_reading=Cases(((s <= S_FOLD_BELOW, sp.Eq(COUNT_171(0, 1), 1)),
-                                     ((s >= S_FOLD_ABOVE) & (s < s172), sp.Eq(COUNT_171(0, 1), 3)),
-                                     ((s >= s172) & (s < sp.Rational(5, 6)), sp.Eq(COUNT_171(0, 1), 2)),
-                                     (s >= sp.Rational(5, 6), sp.Eq(COUNT_171(0, 1), 0))),
-                                    {s: (half, 1)}, exhaustive=False),
-                        objection="'eine reelle Wurzel' may mean 'at least one real root', and read so the sentence "
-                                  "is true: (171) has a root in 0 < x < 1 for every s below 0.7735.",
-                        answer=(r"Read so, the number 0.7735 marks nothing: roots exist up to $\tfrac56$, and the "
-                                r"count changes at $0.7623$ (the fold), not at $(4 + \sqrt2)/7$, where a root only "
-                                "enters through $x = 0$. The 'at least one' reading leaves the sentence true but its "
-                                "bound idle, hence medium.")),
-        note="read on 1/2 < s < 1 as a root count (Sturm counts, T and z inserted): where s < (4 + sqrt 2)/7, (171) "
-             "has one root in 0 < x < 1. The correction leaves out the fold, which lies in 0.7623 < s < 0.7624; "
-             "f(0) < 0 <= f(1) there (steps end-0, end-1), so at least one root, as the sentence may also mean")
+        reading=Holds(sp.Implies(s < s172, COUNT_171(0, 1) >= 1), {s: (half, 1)}),
+        note="read on 1/2 < s < 1 as the existence statement it is ('eine reelle Wurzel', a real root; Sturm counts, "
+             "T and z inserted): where s < (4 + sqrt 2)/7, (171) has a root in 0 < x < 1. The bound is where the "
+             "sign change f(0) < 0 <= f(1) ends (steps end-0, end-1): a root enters through x = 0 there. The "
+             "sentence counts no roots: one up to the fold of (171) (0.7623 < s < 0.7624), three from there to "
+             "(4 + sqrt 2)/7, two up to 5/6. That the root is a pentagonal equilibrium only above the fold is "
+             "the fault of the conclusion drawn from it ('so hat er sicher eine im zweiten Gebiet')")
 d.quote("172-number", "(172)", r"\frac{4 + \sqrt{2}}{7} \quad \text{oder} < 0,7735",
         reading=(s172, sp.Rational("0.7735")), tolerance=PRINTED_DIGITS)
 d.step("first-domain-82", Eq(Sw45, (1 - s) ** 2 / (6 * s * (1 - s) - 1)), "lemma",
@@ -627,3 +604,32 @@ d.quote("hex-half", "X",
         r"Für  $s = \frac{1}{2}$  ist das Sechseck ein regelmässiges und Schülen\*) hat bereits gezeigt, dass das "
         r"Gleichgewicht in diesem Falle stabil ist.",
         reading=(sp.sign(GMh), 1))
+
+# the heading of X, read on the diagonal family of (171): the tilt fixed by the volume 1 - s (the cube displaces its
+# weight at every leg x), the bottom face uncut (4/5 < s < 5/6, x < 4/5)
+HEADING_FAMILY = {s: (sp.Rational(4, 5), sp.Rational(5, 6)), xl: (0, sp.Rational(4, 5))}
+d.quote("heading", "X", "Die Gewichtslagen eines schwimmenden Würfels.",
+        reading=Holds(sp.Eq(dE, 0), HEADING_FAMILY),
+        erratum=Erratum(
+            "misprint", "medium", r"\text{Die Gleichgewichtslagen eines schwimmenden Würfels.}",
+            "The section determines the positions in which the floating cube is in equilibrium: the first condition "
+            "of equilibrium (98), int x y df = 0, gives (170), the second gives (171), and its sentences speak of "
+            "'keine neue Gleichgewichtslage'; the parallel heading of IX reads 'Die Gleichgewichtslagen eines "
+            "rechtwinkligen Parallelepipeds'. The text writes 'Gleichgewichtslage' 56 times and 'Gewichtslage' "
+            "nowhere but here and in the contents line of X. Read as it stands, a position of the weight is one in "
+            "which the cube displaces its weight, as it does at every leg x of the diagonal family (the tilt fixed "
+            "by the volume 1 - s), where the potential is not stationary; the equilibrium positions are its roots "
+            "of (171). The same word in the heading and in the contents, which the compositor set from the "
+            "heading, is no fault a scan repeats: the print's (or the author's) dropped syllable.",
+            corrected_reading=Iff(sp.Eq(dE, 0), sp.Eq(F171(2 * Tq, zq, xl, s), 0), HEADING_FAMILY),
+            fault="Gewichtslagen", places=("Inhalt",),
+            objection="'Gewichtslage' may be the author's own short word for an equilibrium position, used in a "
+                      "heading where the meaning is plain.",
+            answer="The author writes 'Gleichgewichtslage' in the sentences of this section and in the heading of "
+                   "IX, and 'Gewichtslage' nowhere else; a short word found only in one heading and in the contents "
+                   "line copied from it is a dropped syllable. That the author may have written it so keeps it "
+                   "medium."),
+        note="read as the positions the heading names, on the diagonal family of (171) where the cube displaces its "
+             "weight at every leg x: as printed, positions of the weight, at which the potential would be "
+             "stationary throughout (dE/dt = 0 at every x); corrected, the equilibrium positions, at which it is "
+             "stationary: the roots of (171)")
