@@ -49,4 +49,4 @@ def predict(scene):
     return out
 
 
-d.predicts(("cube", "box"), predict)
+d.predicts(("cube",), predict)
