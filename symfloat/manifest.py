@@ -11,6 +11,11 @@ Every derivation is a package (``derivations/<name>/``) with a ``manifest.toml``
     report = "outputs"
     tables = "predictors"
 
+A body in ``predicts`` is a kind of scene (:data:`KINDS`): ``cube`` is a cube or a box with three equal
+edges, ``square-box`` a box with two equal edges (the cube included), ``box`` any box.  A scene is of every
+kind :func:`body_kinds` lists for it, so a derivation that speaks only about the cube is not read for a box
+that is no cube.
+
 Selecting, ordering, keying the cache and finding the derivations that speak about a body read the
 manifests alone; :func:`symfloat.registry.load` imports a package and confirms that what its modules
 declare is what the manifest says.
@@ -22,11 +27,11 @@ import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
-__all__ = ["Manifest", "ManifestError", "PARTS", "PROVIDED_KINDS", "read_manifest"]
+__all__ = ["KINDS", "Manifest", "ManifestError", "PARTS", "PROVIDED_KINDS", "body_kinds", "read_manifest"]
 
 PROVIDED_KINDS = ("thresholds", "forms", "report", "figure", "tables")   # see Derivation.provides
 PARTS = ("statements", "witnesses", "predictors", "outputs")    # the modules of a package, by concern
-_BODIES = ("cube", "box", "prism", "cylinder", "section")
+KINDS = ("cube", "square-box", "box", "prism", "cylinder", "section")     # the bodies a predictor speaks about
 _ID = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 _KEYS = {"id", "source", "requires", "predicts", "provides"}
 
@@ -56,6 +61,15 @@ class Manifest:
         return (self.folder / f"{part}.py").is_file()
 
 
+def body_kinds(body: str, dims=()) -> tuple[str, ...]:
+    """The kinds of :data:`KINDS` a scene of *body* with edges *dims* is: a box is also a ``square-box``
+    when two of its edges are equal and a ``cube`` when all three are; any other body is its own kind."""
+    if body != "box":
+        return (body,)
+    equal = len(dims) - len(set(dims))
+    return ("box",) + (("square-box",) if equal >= 1 else ()) + (("cube",) if equal == 2 else ())
+
+
 def read_manifest(folder: Path) -> Manifest:
     """The manifest of the derivation package in *folder*, checked field by field."""
     path = folder / "manifest.toml"
@@ -80,8 +94,8 @@ def read_manifest(folder: Path) -> Manifest:
     requires, predicts = data.get("requires", []), data.get("predicts", [])
     if not (isinstance(requires, list) and all(isinstance(r, str) and _ID.match(r) for r in requires)):
         fail("requires must be a list of derivation ids")
-    if not (isinstance(predicts, list) and all(b in _BODIES for b in predicts)):
-        fail(f"predicts must be a list of bodies among {', '.join(_BODIES)}")
+    if not (isinstance(predicts, list) and all(b in KINDS for b in predicts)):
+        fail(f"predicts must be a list of bodies among {', '.join(KINDS)}")
     provides = data.get("provides", {})
     if not isinstance(provides, dict):
         fail("provides must be a table kind = module")

@@ -17,7 +17,7 @@ from functools import cache
 from pathlib import Path
 
 from .errors import InputError
-from .manifest import PARTS, Manifest, read_manifest
+from .manifest import PARTS, Manifest, body_kinds, read_manifest
 
 __all__ = ["ids", "manifest", "files", "requires", "providing", "predicting", "provided", "predictor", "statements",
            "load", "part", "select", "cross_use_problems", "SelectorError"]
@@ -75,9 +75,11 @@ def providing(kind: str) -> tuple[str, ...]:
     return tuple(did for did, m in _manifests().items() if kind in m.provides)
 
 
-def predicting(body: str) -> list[str]:
-    """Ids of the derivations whose manifest says they predict equilibria of *body*."""
-    return [did for did, m in _manifests().items() if body in m.predicts]
+def predicting(body: str, dims=()) -> list[str]:
+    """Ids of the derivations whose manifest says they predict equilibria of *body* with edges *dims*
+    (of one of its kinds, :func:`~symfloat.manifest.body_kinds`)."""
+    kinds = set(body_kinds(body, dims))
+    return [did for did, m in _manifests().items() if kinds & set(m.predicts)]
 
 
 @cache

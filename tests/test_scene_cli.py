@@ -1,6 +1,8 @@
 """`symfloat scene` and `symfloat phase`: the JSON contract, the coverage by the sources, bad input."""
 import json
 import math
+import subprocess
+import sys
 
 import pytest
 
@@ -46,6 +48,20 @@ def test_a_scene_evaluates_only_the_derivations_that_speak_about_its_body():
     evaluated, _ = cover(solve(make_scene("cylinder", "0.3", dims="1,2")))
     assert "scheeffer-vi-ab" in evaluated
     assert not any(d.startswith(("graefe", "euler", "scheeffer-vi-cf", "metazentrum")) for d in evaluated)
+
+
+def test_a_box_reads_the_derivations_of_the_cube_only_when_it_is_one():
+    # their manifests: Scheeffer X speaks about the cube, VI.C-F about a square cross-section (the predict of
+    # each returns nothing for another box); a box with three equal edges is a cube
+    assert not {"scheeffer-x", "scheeffer-vi-cf"} & set(predicting("box", (1, 2, 3)))
+    assert "scheeffer-vi-cf" in predicting("box", (1, 1, 4)) and "scheeffer-x" not in predicting("box", (1, 1, 4))
+    assert set(predicting("cube", (1,))) <= set(predicting("box", (1, 1, 1)))
+    probe = ("import sys; from symfloat.solver import make_scene, solve; from symfloat.comparison.coverage import "
+             "cover; evaluated, _ = cover(solve(make_scene('box', '0.3', dims='1,2,3'))); "
+             "print(sorted(m for m in sys.modules if m.endswith(('scheeffer_x', 'scheeffer_vi_cf')))); print(evaluated)")
+    imported, evaluated = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                                         check=True).stdout.splitlines()
+    assert imported == "[]" and "scheeffer-x" not in evaluated and "scheeffer-ix" in evaluated
 
 
 def test_a_scene_checks_no_derivation(monkeypatch):

@@ -114,4 +114,4 @@ def predict(scene):
     return []
 
 
-d.predicts(("cube", "box", "prism"), predict)
+d.predicts(("cube", "square-box", "prism"), predict)

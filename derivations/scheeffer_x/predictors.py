@@ -59,4 +59,4 @@ def predict(scene):
     return out
 
 
-d.predicts(("cube", "box"), predict)
+d.predicts(("cube",), predict)

@@ -59,7 +59,7 @@ def cover(solution: Solution) -> tuple[list[str], list[dict]]:
     """Attach the predicting formulas to *solution*'s equilibria; returns the derivations
     read and the predictions that match no equilibrium."""
     scene = solution.scene
-    ids = predicting(scene.body)
+    ids = predicting(scene.body, scene.dims)
     group = symmetry_group(scene)
     unmatched = []
     for did in ids:

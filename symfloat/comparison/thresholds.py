@@ -51,7 +51,7 @@ def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
     group = box_group(dims)
     closed = _closed_forms()
     out = []
-    for did in predicting(body):
+    for did in predicting(body, dims):
         d = predictor(did)
         at = lambda s: _predicted(d, make_scene(body, s, dims), group)
         densities = [Fraction(k, grid) for k in range(1, grid)]

@@ -20,6 +20,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from fractions import Fraction
 
+from ..manifest import KINDS
+
 __all__ = ["BODIES", "STABILITIES", "FAMILIES", "Scene", "Prediction", "Predictor", "box_uprights"]
 
 BODIES = ("cube", "box", "prism", "cylinder", "section")
@@ -75,9 +77,9 @@ class Predictor:
     predict: object
 
     def __post_init__(self):
-        unknown = [b for b in self.bodies if b not in BODIES]
+        unknown = [b for b in self.bodies if b not in KINDS]
         if unknown:
-            raise ValueError(f"unknown bodies {unknown}; known: {BODIES}")
+            raise ValueError(f"unknown bodies {unknown}; known: {KINDS}")
 
 
 def box_uprights(dims):

@@ -14,6 +14,7 @@ Scheeffer IX with a = b and of the hasáb problem (which asks for a length l wit
 from __future__ import annotations
 
 import json
+from fractions import Fraction
 from pathlib import Path
 
 from .stamp import digest, package_digest
@@ -24,15 +25,16 @@ PHASES = {"cube": ("cube", None), "square-log": ("box", "1,1,4")}
 STEPS = 24
 
 
-def _derivation_files(body: str) -> list[Path]:
+def _derivation_files(body: str, dims: str | None) -> list[Path]:
     from ..registry import files, predicting, providing
-    ids = sorted(set(predicting(body)) | set(providing("thresholds")))
+    edges = tuple(Fraction(x) for x in dims.split(",")) if dims else ()
+    ids = sorted(set(predicting(body, edges)) | set(providing("thresholds")))
     return [f for did in ids for f in files(did) if f.suffix == ".py"]
 
 
 def phase_stamp(name: str) -> str:
     body, dims = PHASES[name]
-    return digest(package_digest("solver", "geometry", "model"), *_derivation_files(body), Path(__file__),
+    return digest(package_digest("solver", "geometry", "model"), *_derivation_files(body, dims), Path(__file__),
                   Path(__file__).with_name("phase.py"), repr((body, dims, STEPS)))
 
 
