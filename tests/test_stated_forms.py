@@ -59,3 +59,23 @@ def test_stated_roots_hold_and_a_slip_in_one_is_refuted():
     assert _statuses("scheeffer-vi-ab", {"Q60", "Q60-check"})["Q60-check"] == "sampled"
     slipped = _statuses("scheeffer-vi-ab", {"Q60", "Q60-check"}, "Q60", lambda v: v.subs(s, s + sp.Rational(1, 50)))
     assert slipped["Q60-check"] == "refuted"
+
+
+def _reading_verdict(derivation_id, name, slip=None):
+    """The verdict on the printed formula *name* checked by sampling alone, its first member replaced by
+    ``slip(first member)``."""
+    d = statements(derivation_id)
+    [p] = [p for p in d.printed if p.name == name]
+    if slip is not None:
+        p = dataclasses.replace(p, reading=(slip(p.reading[0]), *p.reading[1:]))
+    report = check_derivation(dataclasses.replace(d, steps=[], printed=[p], witnesses=[]), prove=False)
+    return report.formulas[0].verdict
+
+
+def test_a_stated_root_count_holds_and_a_slip_in_it_is_refuted():
+    # Scheeffer IX states the count of the real roots of (136) at s = 73/100, n = 2 in z > 0 unevaluated
+    # (the check counts it): one; on the whole line it has two (-0.9537 and 0.4049, nroots), so the slip is refuted
+    assert _reading_verdict("scheeffer-ix", "monotone-one") == "verified"
+    widened = _reading_verdict("scheeffer-ix", "monotone-one",
+                               lambda c: c.func(c.args[0], c.args[1], -sp.oo, c.args[3], evaluate=False))
+    assert widened == "erratum"            # refuted: the count stated no longer matches the print's one

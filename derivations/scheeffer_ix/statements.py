@@ -388,11 +388,10 @@ d.quote("F1-stays-positive", "IX.B",
                  (z - sp.Rational(3, 4)) ** 2 * (4 * z + sp.Rational(3, 2))),
         note="F'(z) - F'(3/4) = (z - 3/4)^2 (4z + 3/2) >= 0 for z >= 0: F' >= F'(3/4) beyond the inflection")
 F1_34 = sp.diff(F_def, z).subs(z, sp.Rational(3, 4))
-def _count(sv, nv, lo, hi=None):
-    """How many real roots of (136) at s = sv, n = nv lie above lo (and not above hi): exact root isolation."""
-    roots = sp.Poly(quartic.subs({n: nv, sg: 1 - sv}), z).real_roots()
-    steps = [(1 + sp.sign(r_ - lo)) / 2 - (0 if hi is None else (1 + sp.sign(r_ - hi)) / 2) for r_ in roots]
-    return sp.Add(*steps, evaluate=False)
+def _count(sv, nv, lo, hi=sp.oo):
+    """How many real roots of (136) at s = sv, n = nv lie between lo and hi: stated unevaluated, the check
+    counts them (Sturm sequences, and the roots' inclusion discs on the definition route)."""
+    return RealRoots(quartic.subs({n: nv, sg: 1 - sv}), z, lo, hi, evaluate=False)
 
 
 S_LOW = sp.Rational(7, 10)                # s <= 23/32: sigma = 3/10, rho = 27/25
@@ -634,11 +633,11 @@ def _above(roots, lo):
 
 Z_MAX = next(r_ for r_ in sp.Poly(sp.diff(quartic, z).subs({n: N_ONE, sg: 1 - S_CT}), z).real_roots()
              if 0 < r_ < sp.Rational(3, 4))
-d.step("count-positive", Eq(NPOS, _above(_roots136(N_THREE), 0)), "definition", uses=("F-quartic",), result=NPOS,
+d.step("count-positive", Eq(NPOS, _count(S_CT, N_THREE, 0)), "definition", uses=("F-quartic",), result=NPOS,
        note="real roots z > 0 of F at s = 73/100, n = 251/250 (0.5878, 0.7757, 0.8724; the fourth is -0.7360)")
-d.step("count-negative", Eq(NNEG, len(_roots136(N_THREE)) - _above(_roots136(N_THREE), 0)), "definition",
+d.step("count-negative", Eq(NNEG, _count(S_CT, N_THREE, -sp.oo, 0)), "definition",
        uses=("F-quartic",), result=NNEG, note="real roots z < 0 at the same point (F(0) < 0, so none is 0)")
-d.step("count-region", Eq(NREG, _above(_roots136(N_ONE), 2 * (1 - S_CT))), "definition", uses=("F-quartic",),
+d.step("count-region", Eq(NREG, _count(S_CT, N_ONE, 2 * (1 - S_CT))), "definition", uses=("F-quartic",),
        result=NREG, note="real roots z > 2 sigma = 27/50 of F at s = 73/100, n = 51/50 (the root 0.5586; the other is "
                          "-0.7403)")
 d.step("count-right", Eq(NRIGHT, _above(_roots136(N_ONE), Z_MAX)), "definition", uses=("F-quartic", "F1"),

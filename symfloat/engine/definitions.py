@@ -28,7 +28,8 @@ refuted print nor refutes it.  A relation whose
 differences are, with the definitions in, the closed forms themselves has no numeric content.
 
 A root count (``RealRoots``, exact by Sturm sequences on the closed form in the relation check:
-Scheeffer IX's case tables, X (172)) is counted by another method at the same points, and for a case
+Scheeffer IX's case tables, X (172)) is counted by another method at the same points (and so is a count
+an identity states, IX's counts at exact points), and for a case
 table or an implication also at a point where each row's condition holds (if one is drawn): the
 polynomial's coefficients evaluated there at 15 and 30 digits, its roots by ``mpmath.polyroots`` with
 inclusion discs (:mod:`symfloat.engine.root_count`); a count the discs do not decide leaves the point
@@ -270,7 +271,8 @@ def _difference(measured, value, claimed, point, method):
     ab = abs(value - c)
     scale = max(abs(value), abs(c))
     if ab > method.tolerance * scale:
-        scale = max(scale, *(abs(_numeric(_magnitude(e), point, 10, _RoughQuadPrinter)) for e in (measured, claimed)))
+        scale = max([scale, *(abs(_numeric(_magnitude(e), point, 10, _RoughQuadPrinter)) for e in (measured, claimed)
+                              if not e.has(RealRoots))])     # a root count is its own magnitude
     return float(ab), float(ab / scale) if scale else float(ab)
 
 
@@ -321,6 +323,17 @@ def _counted(closed, point, dps):
     return _numeric(closed.xreplace(counts), point, dps), pairs, widest
 
 
+def _measured(expr, point, dps):
+    """*expr* at *point* to *dps* digits, its root counts counted from their roots' inclusion discs
+    (:func:`_counted`)."""
+    if not expr.has(RealRoots):
+        return _numeric(expr, point, dps)
+    value, _, radius = _counted(expr, point, dps)
+    if value is None:
+        raise ArithmeticError(f"a root count the inclusion discs (radius {radius:.1e}) do not decide")
+    return value
+
+
 @dataclass
 class DefinitionRoute:
     """The definition-route witness of one derivation (built by the checker, not declared)."""
@@ -367,7 +380,7 @@ class DefinitionRoute:
             worst_abs = worst_rel = 0.0
             try:
                 for point in cases:
-                    values = [_numeric(c, point, method.dps) for c in measured]
+                    values = [_measured(c, point, method.dps) for c in measured]
                     for claimed in claims:
                         for e, v, c in zip(measured, values, claimed):
                             ab, rel = _difference(e, v, c, point, method)

@@ -21,6 +21,7 @@ from fractions import Fraction
 
 import sympy as sp
 
+from ..model.relation import RealRoots
 from .proofs import Certificate, ProofBook, claim_digest, slowdown
 from .timelimit import TimeLimitExceeded, time_limit
 
@@ -154,9 +155,9 @@ def _flatten(a, b):
 
 
 def _evaluate(expr):
-    """Carry out the integrals, limits and derivatives a claim contains."""
+    """Carry out the integrals, limits, derivatives and root counts (Sturm sequences) a claim contains."""
     expr = sp.sympify(expr)
-    if expr.has(sp.Integral, sp.Limit, sp.Derivative, sp.Subs):
+    if expr.has(sp.Integral, sp.Limit, sp.Derivative, sp.Subs, RealRoots):
         expr = expr.doit()
     return expr
 
