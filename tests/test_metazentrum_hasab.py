@@ -54,6 +54,9 @@ def test_metazentrum_checks_clean(meta_report):
         ("moving-centroid", "claim", "low"),             # the body's centroid named for the displaced water's
         # the vocabulary (issue 31, item 2): stable for z_M >= z_G, where equality (e = 0) is neutral
         ("criterion-words", "claim", "low"), ("criterion-words-2", "claim", "low"),
+        # the third reading (line 243): the displaced water's shift said to depend on the length a, which its
+        # formula b² tg φ/(3d) does not contain
+        ("shift-depends-on", "claim", "medium"),
     }
     assert all(f.verdict == "verified" for f in meta_report.formulas if not f.erratum)
 

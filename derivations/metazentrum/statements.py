@@ -2,7 +2,7 @@
 import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum, Holds
-from symfloat.model.vocabulary import Is, StableIff
+from symfloat.model.vocabulary import DependsOn, Is, StableIff
 
 a, b, c, d = sp.symbols("a b c d", positive=True)
 phi = sp.Symbol("phi", positive=True)
@@ -352,3 +352,24 @@ dv.quote("F_b=F_g", "formula list", r"$F_b = \rho_w V_w g = M_w g = M_s g = F_g$
                                     "volume and mass."),
                          answer=("The page names them $V_b$ and $M_b$ in its formula list and never defines $V_w, "
                                  "M_w$; the chain holds by identifying them (hence low).")))
+dv.says("shift-depends-on", L3,
+        r"Wenn ein Schiff bei der Krängungswinkel ($\phi$)10285 krängt, verschiebt sich der Schwerpunkt des "
+        r"verdrängten Wassers um der Halbe Breite des Parallelepipeds ($b$)8674 und der Mittlere Länge des "
+        r"Parallelepipeds ($a$)8673 um eine Distanz von:",
+        "Schwerpunkt des verdrängten Wassers", DependsOn(b, a),
+        erratum=Erratum("claim", "medium",
+                        r"\text{verschiebt sich der Schwerpunkt \ldots um eine von der Halben Breite } (b) "
+                        r"\text{ und dem Tiefgang } (d) \text{ abhängige Distanz von:}",
+                        (r"The distance the sentence introduces is the next display, $b^2 \varphi/(3d)$ (the "
+                         r"lesson's shift $\frac{2b}{3} \frac{A_t}{A_q} = \frac{b^2 \operatorname{tg}\varphi}{3d}$): "
+                         r"the length $a$ cancels (the wedges' moment and the displaced volume both carry the factor "
+                         r"$2a$), and the draught $d$, on which it does depend, is not named. The sentence lists $b$ "
+                         r"and $a$ as the dimensions the distance is computed from."),
+                        corrected_reading=dv.reads("Schwerpunkt des verdrängten Wassers", DependsOn(b, d)),
+                        objection=(r"'um der Halbe Breite ($b$) und der Mittlere Länge ($a$)' may only name the hull "
+                                   r"the computation is for, a box of half breadth $b$ and length $a$, not claim "
+                                   r"that the distance depends on both."),
+                        answer=(r"The construction 'verschiebt sich … um $b$ und $a$ um eine Distanz von' ties the "
+                                r"two to the shift, and the page gives no other place where $a$ would enter; but a "
+                                r"loose naming of the hull cannot be excluded, hence medium, not high.")),
+        note="Read as: the displaced water's shift across the ship changes with the half breadth b and with a.")
