@@ -159,7 +159,9 @@ class Code:
         self.defined = {f.__name__: f for f in defined}     # the derivation's own function classes, by name
         taken: set = set(self.defined)
         self.names: dict = {}
-        ordered = sorted(symbols, key=lambda s: (s.name, str(s.assumptions0)))
+        # a dummy after the symbol of its name, dummies by creation: the same names whatever the sets' order
+        ordered = sorted(symbols, key=lambda s: (s.name, str(s.assumptions0), isinstance(s, sp.Dummy),
+                                                 getattr(s, "dummy_index", 0)))
         for s in ordered:                      # names that are identifiers already keep them
             if s.name.isidentifier() and s not in preferred:
                 self.names[s] = _python_name(s.name, taken)
