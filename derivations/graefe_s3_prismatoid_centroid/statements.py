@@ -3,10 +3,12 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
+from symfloat.model.vocabulary import Is
 
 G, g, D, h, z = sp.symbols("G g D h z", positive=True)
 al, be, ga = sp.symbols("alpha beta gamma", real=True)
 V1, V2, V3, I, X, Z1, Z2, Z3 = sp.symbols("V_1 V_2 V_3 I X z_1 z_2 z_3", positive=True)
+I_A, M_A, X_A = sp.symbols("I_A M_A X_A", real=True)   # volume, moment about G and centroid of a body of sections A(z)
 PB, PC, PD = (sp.Matrix(sp.symbols(f"x_{n} y_{n} z_{n}", real=True)) for n in "BCD")
 PA = sp.zeros(3, 1)  # A at the origin: every claim here is invariant under translation
 coords = [c for v in (PB, PC, PD) for c in v]
@@ -160,6 +162,20 @@ d.step("centroid-quadratic-sections",
        "integration", note="the formula is exact for every body whose section area A(z) is a quadratic "
                            "polynomial of the height: G = A(0), D = A(h/2), g = A(h)")
 
+# ---- the words: volume, moment and centroid of the prismatoid by their definitions -------------------------
+# A prismatoid's section area is a quadratic polynomial of the height (A above), so its volume, its moment about
+# the base G and its centroid are the integrals of A; the sections G, g, D are A(0), A(h), A(h/2).
+d.step("body-volume", (I_A, sp.Integral(A, (z, 0, h)), h / 3 * ((A.subs(z, 0) + A.subs(z, h)) / 2 + 2 * A.subs(z, h / 2))),
+       "integration", result=I_A, note="the volume of the body of sections A(z): the integral of its sections")
+d.step("body-moment", (M_A, sp.Integral(z * A, (z, 0, h)), h ** 2 / 3 * (A.subs(z, h) / 2 + A.subs(z, h / 2))),
+       "integration", result=M_A, note="its moment about the base G (the 'Momenten-Ebene'): each section times its "
+                                       "height z")
+d.step("body-centroid", Eq(X_A, M_A / I_A), "definition", result=X_A, uses=("body-volume", "body-moment"),
+       note="the distance of its centroid from G: the moment over the volume")
+d.defines("moment", M_A)
+d.defines("centre of gravity", X_A)
+SECTIONS = ((G, g, D), (A.subs(z, 0), A.subs(z, h), A.subs(z, h / 2)))
+
 d.quote("height-1", "§3 prismatoid centroid", r"a) Der Schwerpunkt von 1) liegt auf  $\frac{1}{4}$  der Höhe von  $g$  aus",
         reading=(Z1, h - h / 4), note="the pyramid ABCDO (base g at the height h, apex O in G): its centroid "
                                       "a quarter of the height below g")
@@ -203,3 +219,17 @@ d.quote("volume", "§3 prismatoid centroid",
 d.quote("centroid", "§3 prismatoid centroid",
         r"$$X = h \left\{ \frac{\frac{g}{2} + D}{\frac{G+g}{2} + 2D} \right\}.$$",
         reading=Eq(X, h * (g / 2 + D) / ((G + g) / 2 + 2 * D)))
+
+d.says("moment-theorem", "§3 prismatoid centroid",
+       "Nun ist nach dem bekannten Momentensatze: das Moment der Summe der einzelnen Theile gleich der Summe der "
+       "Momente derselben.", "Moment der Summe der einzelnen Theile",
+       Is(sp.Subs(V1 * Z1 + V2 * Z2 + V3 * Z3, *SECTIONS)),
+       note="Read for the prismatoid and its three groups of bodies (a, b, c above, their moments about G): the "
+            "moment of the whole, the integral of z A(z) over the height, is the sum of the three groups' moments, "
+            "their volumes times the heights of their centroids, with G, g, D the sections A(0), A(h), A(h/2).")
+d.says("centroid-words", "§3 prismatoid centroid",
+       r"Dies ist die Formel für den senkrechten Abstand des Schwerpunktes des Prismatoids von der Grundfläche  $G$",
+       "Schwerpunktes des Prismatoids", Is(sp.Subs(h * (g / 2 + D) / ((G + g) / 2 + 2 * D), *SECTIONS)),
+       note="Read as: the formula just printed, X = h (g/2 + D)/((G+g)/2 + 2D), is the distance from G of the "
+            "prismatoid's centroid, its moment over its volume, for every body whose section area is quadratic in "
+            "the height (G = A(0), D = A(h/2), g = A(h)).")
