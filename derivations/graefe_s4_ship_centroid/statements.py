@@ -3,6 +3,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
+from symfloat.model.vocabulary import Is
 
 from ..graefe_s1_prismatoid_volume.statements import DERIVATION as PRISMATOID_VOLUME
 from ..graefe_s3_prismatoid_centroid.statements import DERIVATION as PRISMATOID_CENTROID
@@ -97,6 +98,29 @@ d.step("centroid-equal-sections", (sp.Subs(m * NUM / DEN, (b, c, dd, e, f, g), (
        "algebra", uses=("centroid-value",),
        note="check of the rule: with all sections equal (a prism of length 6m) the centroid lies in the "
             "middle, 3m from ABC")
+
+# ---- the words: a slab's volume and moment about ABC by their definitions ---------------------------------------
+# A slab between two sections 2m apart is a prismatoid: its section area is the quadratic in the distance xi from
+# ABC through its three sections S_0, S_1, S_2 at xi_0, xi_0 + m, xi_0 + 2m.  Its volume and its moment about the
+# plane ABC are the integrals of that area; a sentence names the slab by its sections and its place (at=).
+xi, xi0 = sp.symbols("xi xi_0", real=True)
+S0, S1, S2 = sp.symbols("S_0 S_1 S_2", positive=True)
+A_sl, V_sl, M_sl = sp.symbols("A_slab V_slab M_slab", real=True)
+d.domain.update({xi0: (0, 10), **{q: (1, 20) for q in (S0, S1, S2)}})
+d.step("slab-section", Eq(A_sl, S0 * (xi - xi0 - m) * (xi - xi0 - 2 * m) / (2 * m ** 2)
+                         - S1 * (xi - xi0) * (xi - xi0 - 2 * m) / m ** 2
+                         + S2 * (xi - xi0) * (xi - xi0 - m) / (2 * m ** 2)), "definition", result=A_sl,
+       note="the quadratic section area through S_0, S_1, S_2 at the distances xi_0, xi_0 + m, xi_0 + 2m from ABC")
+d.step("slab-volume", (V_sl, sp.Integral(A_sl, (xi, xi0, xi0 + 2 * m)), 2 * m / 3 * ((S0 + S2) / 2 + 2 * S1)),
+       "integration", result=V_sl, uses=("slab-section",))
+d.step("slab-moment", (M_sl, sp.Integral(xi * A_sl, (xi, xi0, xi0 + 2 * m)),
+                       xi0 * 2 * m / 3 * ((S0 + S2) / 2 + 2 * S1) + 4 * m ** 2 / 3 * (S2 / 2 + S1)),
+       "integration", result=M_sl, uses=("slab-section",),
+       note="each section times its distance from the plane ABC")
+d.defines("volume", V_sl)
+d.defines("moment", M_sl)
+SLAB_1, SLAB_2, SLAB_3 = ({xi0: 0, S0: a, S1: b, S2: c}, {xi0: 2 * m, S0: c, S1: dd, S2: e},
+                          {xi0: 4 * m, S0: e, S1: f, S2: g})
 
 # ---- the hull of Fig. 9 (lost): base AUWC in the plane z = 0, the end sections ABC at x = 0 and UVW at x = L
 # across the base, each symmetric about the midpoint (B', V') of its base line AC, UW at the same y = mu
@@ -235,3 +259,27 @@ d.quote("centroid", "§4 ship displacement centroid",
                         answer="With all sections equal the body is a prism of length 6m, whose centroid lies at 3m "
                                "from the first section; the print gives m. Whatever the unit, the quotient of the "
                                "moment by the volume must give 3m there, and it does only with the factor m."))
+
+# the sentences that name a slab's volume or its moment about ABC, read from their definitions (the values are
+# the displays that follow each sentence)
+d.says("v1-words", "§4 ship displacement centroid",
+       "Da nun das Volumen dieses Theiles nach der Formel für den Inhalt des Prismatoids", "Volumen dieses Theiles",
+       Is(2 * m / 3 * ((a + c) / 2 + 2 * b), at=SLAB_1),
+       note="Read as: the volume of the slab from a to c is the v' printed next, 2m/3 {(a + c)/2 + 2b}.")
+d.says("m1-words", "§4 ship displacement centroid", "so ist das Moment dieses Theiles in Bezug",
+       "Moment dieses Theiles", Is(4 * m ** 2 / 3 * (c / 2 + b), at=SLAB_1),
+       note="Read as: the moment of the slab from a to c about the plane ABC is the m' printed next, "
+            "4m²/3 {c/2 + b}.")
+d.says("v2-words", "§4 ship displacement centroid", "und da das Volumen dieses Körpertheiles:",
+       "Volumen dieses Körpertheiles", Is(2 * m / 3 * ((c + e) / 2 + 2 * dd), at=SLAB_2),
+       note="Read as: the volume of the slab from c to e is the v'' printed next.")
+d.says("m2-words", "§4 ship displacement centroid", "so ist sein Moment in Bezug auf die Ebene  $ABC$ :",
+       "sein Moment", Is(m2_v, at=SLAB_2),
+       note="Read as: the moment of the slab from c to e about ABC is the m'' printed next, 4m²/3 {(c + e)/2 + 2d "
+            "+ e/2 + d}.")
+d.says("v3-words", "§4 ship displacement centroid", "Da nun das Volumen dieses letzten Körpertheiles:",
+       "Volumen dieses letzten Körpertheiles", Is(2 * m / 3 * ((e + g) / 2 + 2 * f), at=SLAB_3),
+       note="Read as: the volume of the slab from e to g is the v''' printed next.")
+d.says("m3-words", "§4 ship displacement centroid", r"\text{ so ist sein Moment in Bezug auf die}",
+       "sein Moment", Is(m3_v, at=SLAB_3),
+       note="Read as: the moment of the slab from e to g about ABC is the m''' printed after the words 'Ebene ABC'.")
