@@ -4,6 +4,7 @@ import sympy as sp
 from symfloat import Derivation, Erratum, Holds, Iff
 from symfloat.model.source import get_source
 from symfloat.model.symbol_names import symbol
+from symfloat.model.vocabulary import Is, StableIff
 
 rho, al, l, g = sp.symbols("varrho alpha l g", positive=True)
 xi, et, s0 = sp.symbols("xi eta s_0", real=True)
@@ -262,3 +263,61 @@ d.quote("remark-position", "Megjegyzés", "amikor az 1 hosszúságú élek függ
                                 "standing on its square face with the edges of length $l$ vertical.")),
         note="read as: the remark's position (edges of length 1 vertical) has the thresholds of the prism lying on a "
              "face; its printed condition (the upper threshold Ru) is compared with the lying prism's")
+
+# ---- the words: the quantities the solution names, by their definitions ---------------------------------------
+zG, zB = sp.symbols("z_G z_B", real=True)
+d.step("prism-centroid-height", (zG, sec(-dep, 0, 1) / sec(1, 0, 1), (half - rho) * sp.cos(al)), "integration",
+       result=zG, note="the height of the prism's centroid above the water line: the mean height of the square's "
+                       "points above it (the prism heeled by alpha, draught rho)")
+d.step("immersed-centroid-depth", (zB, sec(dep, 0, rho + xi * t) / sec(1, 0, rho + xi * t),
+                                   (rho / 2 + t ** 2 / (24 * rho)) * sp.cos(al)), "integration", result=zB,
+       note="the depth of the immersed part's centroid below the water line: the mean depth of its points")
+d.defines("centre of gravity", zG)
+d.defines("centre of buoyancy", zB)
+d.defines("energy", E1)
+d.defines("stability", GM)
+UPRIGHT = {al: 0}
+d.says("OF-words", "solution, upright", "Így a súlypont távolsága a vízszinttől", "súlypont",
+       Is(half - rho, at=UPRIGHT), note="Read as: upright, the prism's centroid lies 1/2 - rho above the water.")
+d.says("immersed-centroid-words", "solution, upright",
+       "a kiszorított víz súlya szorozva a bemerülő rész súlypontjának a felszíntől mért távolságával",
+       "bemerülő rész súlypontjának", Is(E0v / (l * g * rho), at=UPRIGHT),
+       note="Read as: the displaced water's energy E_0 is its weight l g rho times the depth of the immersed part's "
+            "centroid below the surface, so that depth is E_0 / (l g rho); E_0 as derived (l g rho^2/2, the erratum "
+            "of the next display).")
+d.says("E0-words", "solution, upright", "Azaz a teljes helyzeti energia kezdetben:", "teljes helyzeti energia",
+       Is(half * l * g * (rho - rho ** 2), at=UPRIGHT),
+       note="Read as: the total energy of the upright position is the display that follows.")
+d.says("G-height-words", "solution, heeled", "Az ábra alapján a súlypont távolsága a víz felszínétől", "súlypont",
+       Is((half - rho) * sp.cos(al)),
+       note="Read as: heeled by alpha, the prism's centroid lies (1/2 - rho) cos alpha above the water, the value "
+            "printed next.")
+# an equilibrium: the energy stationary at alpha = 0, which the upright prism's is at every density, its energy being
+# even in alpha (the same for a heel alpha to either side)
+stationary = sp.Eq(sp.Subs(E1, al, -al), E1, evaluate=False)
+d.quote("equilibrium-condition", "solution, stability",
+        "Az egyensúlyi feltétel, hogy tetszőlegesen kis α -ra növekedjék az energia",
+        reading=Iff(stationary, quad > 0, {rho: (0, 1)}),
+        erratum=Erratum("claim", "low", r"\text{A stabil egyensúly feltétele, hogy tetszőlegesen kis } \alpha"
+                                        r"\text{-ra növekedjék az energia}",
+                        (r"An equilibrium is a position where the energy is stationary, $dE/d\alpha = 0$; the upright "
+                         r"prism is one at every density, its energy having no term linear in $\alpha$ (step c1: "
+                         r"$\Delta E = \tfrac14 (\rho^2 - \rho + \tfrac16)\alpha^2$ is even in $\alpha$). That the "
+                         r"energy increase for every small $\alpha$, $\rho^2 - \rho + 1/6 > 0$, is the condition of "
+                         r"a stable equilibrium, the minimum the solution names two paragraphs before ('Stabil "
+                         r"egyensúlyi helyzetben a rendszer helyzeti energiája minimális'). As written the sentence "
+                         r"calls it the condition of equilibrium: at $\rho = \tfrac12$ the upright prism is in "
+                         r"equilibrium, unstable ($\Delta E = -\tfrac{1}{48}\alpha^2$). A word of the solution, not "
+                         "of the transcription."),
+                        corrected_reading=d.reads("stabil", StableIff(quad > 0, {rho: (0, 1)})),
+                        objection=("'Az egyensúlyi feltétel' is short for the condition of the stable equilibrium "
+                                   "named two paragraphs before, and the sentence says at once what it means: the "
+                                   "energy increases for every small heel. No reader takes it for the condition "
+                                   "that an equilibrium exist."),
+                        answer=("The words name the equilibrium, which the upright prism has at every density; the "
+                                "condition that follows is its stability's. The sentence's own gloss shows what "
+                                "was meant, so the fault is one of naming, not of mathematics: low.")),
+        note="Read as the words say: the upright position is an equilibrium (the energy stationary, the same for a "
+             "heel to either side) exactly when the energy increases for every small alpha, which is rho^2 - rho + "
+             "1/6 > 0 (the display that follows; 'condition'). The correction is read through the vocabulary: the "
+             "stable equilibrium, the metacentric height positive, exactly there.")
