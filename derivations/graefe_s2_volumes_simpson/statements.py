@@ -172,9 +172,19 @@ MISSING_THIRD = ("The prismatoid formula I = h/3 ((G+g)/2 + 2D) with G = a, D = 
                  "2m/3 {...}; the print has 2m {...}. The factor 1/3 is missing from all three slabs, from both "
                  "sums and from the final I = m {...}, and §4 divides by the same V = m {...} (its printed "
                  "centroid carries m/3 instead of m), while §4 itself writes v' = 2m/3 {...} correctly: the "
-                 "omission is the author's (or the printer's), not the scan's.")
-CONSEQUENTIAL = ("Follows from the misprint of I' (factor 2m instead of 2m/3, see 'slab-a-c'); the algebra "
-                 "from line to line is right.")
+                 "omission is the author's (or the printer's), not the scan's. I'' and I''' ('Ebenso') apply the "
+                 "prismatoid formula anew to their own slabs, not I', and print the same 2m {...}: further places of "
+                 "this fault, booked as its repeats; the sums below follow from the three wrong slabs.")
+CONSEQUENTIAL = ("Follows from the misprinted slabs I', I'', I''' (factor 2m instead of 2m/3, see 'slab-a-c'); "
+                 "the algebra from line to line is right.")
+REPEAT = ("The omission of the factor 1/3 of I' again. This slab is the prismatoid formula applied anew ('Ebenso'), "
+          "with its own sections for G, D, g and h = 2m, not a result computed from I': the same misprint at a "
+          "further place (booked as a repeat of slab-a-c), not a consequence of I'.")
+REPEAT_OBJECTION = ("The slab follows I' with 'Ebenso' and copies its pattern: a consequence of the first slip, "
+                    "hence consequential.")
+REPEAT_ANSWER = ("A consequential fault uses an earlier wrong result; this slab uses none, only the prismatoid formula "
+                 "with its own sections, which the print applies wrongly again. As for I', m is the spacing and §4 "
+                 "writes the same slabs with 2m/3.")
 d.quote("slab-a-c", "§2 Simpson's rule", r"$$I' = 2m \left\{ \frac{a+c}{2} + 2b \right\}.$$",
         reading=Eq(I1, 2 * m * ((a + c) / 2 + 2 * b)),
         erratum=Erratum("misprint", "high", r"I' = \frac{2m}{3} \left\{ \frac{a+c}{2} + 2b \right\}",
@@ -186,19 +196,16 @@ d.quote("slab-a-c", "§2 Simpson's rule", r"$$I' = 2m \left\{ \frac{a+c}{2} + 2b
                                "three times the prismatoid formula's value."))
 d.quote("slab-c-e", "§2 Simpson's rule", r"$$I'' = 2m \left\{ \frac{c+e}{2} + 2d \right\}.$$",
         reading=Eq(I2, 2 * m * ((c + e) / 2 + 2 * dd)),
-        erratum=Erratum("consequential", "high", r"I'' = \frac{2m}{3} \left\{ \frac{c+e}{2} + 2d \right\}",
-                        "The same omission of the factor 1/3 as in I' ('Ebenso').",
-                        corrected_reading=Eq(I2, 2 * m / 3 * ((c + e) / 2 + 2 * dd)),
-                        objection="As for I': a convention absorbing the 1/3.",
-                        answer="The same m as for I', whose value §4 writes with the 2m/3; 'Ebenso' repeats the "
-                               "omission."))
+        erratum=Erratum("misprint", "high", r"I'' = \frac{2m}{3} \left\{ \frac{c+e}{2} + 2d \right\}",
+                        REPEAT, corrected_reading=Eq(I2, 2 * m / 3 * ((c + e) / 2 + 2 * dd)),
+                        same_as="graefe-s2-volumes-simpson/slab-a-c", objection=REPEAT_OBJECTION,
+                        answer=REPEAT_ANSWER))
 d.quote("slab-e-g", "§2 Simpson's rule", r"$$I''' = 2m \left\{ \frac{e+g}{2} + 2f \right\}.$$",
         reading=Eq(I3, 2 * m * ((e + g) / 2 + 2 * f)),
-        erratum=Erratum("consequential", "high", r"I''' = \frac{2m}{3} \left\{ \frac{e+g}{2} + 2f \right\}",
-                        "The same omission of the factor 1/3 as in I'.",
-                        corrected_reading=Eq(I3, 2 * m / 3 * ((e + g) / 2 + 2 * f)),
-                        objection="As for I': a convention absorbing the 1/3.",
-                        answer="The same m as for I', whose value §4 writes with the 2m/3."))
+        erratum=Erratum("misprint", "high", r"I''' = \frac{2m}{3} \left\{ \frac{e+g}{2} + 2f \right\}",
+                        REPEAT, corrected_reading=Eq(I3, 2 * m / 3 * ((e + g) / 2 + 2 * f)),
+                        same_as="graefe-s2-volumes-simpson/slab-a-c", objection=REPEAT_OBJECTION,
+                        answer=REPEAT_ANSWER))
 d.quote("sum-1", "§2 Simpson's rule",
         r"$$I = 2m \left\{ \frac{a+c}{2} + 2b + \frac{c+e}{2} + 2d + \frac{e+g}{2} + 2f \right\}$$",
         reading=Eq(I, 3 * simp_1),
@@ -207,7 +214,7 @@ d.quote("sum-1", "§2 Simpson's rule",
                         CONSEQUENTIAL, corrected_reading=Eq(I, simp_1),
                         objection="As for I': a convention absorbing the 1/3.",
                         answer="The sum of the three slabs carries their factor; the algebra is right and the fault "
-                               "is that of I'."))
+                               "is that of the slabs I', I'', I'''."))
 d.quote("sum-2", "§2 Simpson's rule",
         r"$$I = 2m \left\{ \frac{a+c+4b+c+e+4d+e+g+4f}{2} \right\}$$",
         reading=Eq(I, 3 * simp_2),
@@ -216,7 +223,7 @@ d.quote("sum-2", "§2 Simpson's rule",
                         CONSEQUENTIAL, corrected_reading=Eq(I, simp_2),
                         objection="As for I': a convention absorbing the 1/3.",
                         answer="The sum of the three slabs carries their factor; the algebra is right and the fault "
-                               "is that of I'."))
+                               "is that of the slabs I', I'', I'''."))
 d.quote("simpson-rule", "§2 Simpson's rule", r"$$I = m \{ a + 4b + 2c + 4d + 2e + 4f + g \}.$$",
         reading=Eq(I, 3 * simp_3),
         erratum=Erratum("consequential", "high", r"I = \frac{m}{3} \{ a + 4b + 2c + 4d + 2e + 4f + g \}",
