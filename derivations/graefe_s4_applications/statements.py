@@ -92,21 +92,24 @@ d.quote("cone-frustum-1", "§4 cone frustum",
         r"\text{ oder}$$",
         reading=Eq(X_cf, h * ((r ** 2 / 2 + (R + r) ** 2 / 4) / (R ** 2 + r ** 2 + (R + r) ** 2 / 2))),
         erratum=Erratum(
-            "transcription", "low",
+            "transcription", "medium",
             r"X = h \left\{ \frac{\frac{r^2}{2} + \frac{(R+r)^2}{4}}{\frac{R^2 + r^2}{2} + \frac{(R+r)^2}{2}} "
             r"\right\}",
             (r"The denominator of the formula is $(G+g)/2 + 2D$; with $G = R^2$, $g = r^2$ ($\pi$ omitted) its first "
              "part is $(R^2 + r^2)/2$, not $R^2 + r^2$. The next printed line ($h/2$ times a fraction whose "
              "denominator is $R^2 + r^2 + R^2 + 2Rr + r^2$) follows only from the corrected form, so the author had "
-             "the half. A lost fraction bar under $R^2 + r^2$, as in the first line of the truncated ellipsoid; from "
-             "the transcription alone a misprint of the 1866 print cannot be excluded, hence low confidence."),
+             "the half. A lost fraction bar under $R^2 + r^2$, as in the first line of the truncated ellipsoid: the "
+             "first fraction of a denominator inside a larger fraction, the nesting a scan flattens. The correction "
+             "is proved and the printed line reads unambiguously; only the cause is open (a misprint of the 1866 "
+             "print cannot be excluded from the transcription alone), hence medium."),
             corrected_reading=Eq(X_cf, h * ((r ** 2 / 2 + (R + r) ** 2 / 4)
                                                / ((R ** 2 + r ** 2) / 2 + (R + r) ** 2 / 2))),
                         objection=("The print itself may have lacked the half under $R^2 + r^2$, the fault being the "
                                    "author's and not the scan's."),
                         answer="The next printed line follows only from the corrected form, so the author had the "
-                               "half; whether the 1866 print or the scan lost the bar cannot be told from the "
-                               "transcription, hence low."))
+                               "half, and the same bar is lost at the same place of the truncated ellipsoid's first "
+                               "line, a nested fraction each time; whether the 1866 print or the scan lost it cannot "
+                               "be told from the transcription, hence medium, not high."))
 d.quote("cone-frustum-2", "§4 cone frustum",
         r"$$X = \frac{h}{2} \left\{ \frac{2r^2 + R^2 + 2Rr + r^2}{R^2 + r^2 + R^2 + 2Rr + r^2} \right\}, "
         r"\text{ also}$$",
@@ -354,20 +357,22 @@ d.quote("truncated-ellipsoid-1", "§4 truncated ellipsoid",
         reading=Eq(X_te, (xp - x) * (num_te_1 / (a ** 2 - x ** 2 + a ** 2 - xp ** 2
                                                     + (4 * a ** 2 - (xp + x) ** 2) / 2))),
         erratum=Erratum(
-            "transcription", "low",
+            "transcription", "medium",
             r"X = \left\{ x' - x \right\} \left\{ \frac{\frac{a^2 - x'^2}{2} + a^2 - \frac{(x' + x)^2}{4}}"
             r"{\frac{a^2 - x^2 + a^2 - x'^2}{2} + \frac{4a^2 - (x' + x)^2}{2}} \right\}",
             ("The first part of the denominator is $(G+g)/2$ and needs the half: the same line for the spherical "
              "zone prints $(r^2 - x^2 + r^2 - x'^2)/2$, and the triaxial stump, which the text calls 'derselbe "
              "Ausdruck', prints $(a^2 - x^2 + a^2 - x'^2)/2$. The final line of this body is right, so the half was "
              "there when it was reduced. A fraction bar lost by the transcription, as in the first line of the cone "
-             "frustum; a misprint cannot be excluded from the transcription alone, hence low confidence."),
+             "frustum (the first fraction of a denominator inside a larger fraction). The correction is proved and "
+             "the printed line reads unambiguously; a misprint cannot be excluded from the transcription alone, "
+             "hence medium."),
             corrected_reading=Eq(X_te, (xp - x) * (num_te_1 / ((a ** 2 - x ** 2 + a ** 2 - xp ** 2) / 2
                                                                   + (4 * a ** 2 - (xp + x) ** 2) / 2))),
                         objection="The print itself may have lacked the half, the fault being the author's.",
                         answer="The spherical zone's line and the triaxial stump ('derselbe Ausdruck') print the "
                                "half, and this body's final line is right; print or scan cannot be told apart, hence"
-                               " low."))
+                               " medium, not high."))
 d.quote("truncated-ellipsoid-2", "§4 truncated ellipsoid",
         r"$$X = \frac{x' - x}{4} \left\{ \frac{6a^2 - 3x'^2 - 2x'x - x^2}{3a^2 - x'^2 - x'x - x^2} \right\}.$$",
         reading=Eq(X_te, (xp - x) / 4 * (num_te / den_te)))

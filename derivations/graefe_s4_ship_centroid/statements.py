@@ -193,7 +193,10 @@ d.quote("substitution", "§4 ship displacement centroid",
                         objection="'e, d, e' may be the print's own slip, the author's, not the scan's.",
                         answer="The next display is x' with a, b, c replaced by c, d, e, so the author had the right"
                                " letters when he computed; c and e are among the letters the scan of this print "
-                               "confuses. Print or scan cannot be told apart: medium."))
+                               "confuses. Print or scan cannot be told apart: medium. Not high: the next display "
+                               "shows what the author computed with, not who changed the letter after him, and c "
+                               "for e is a slip of a compositor reading a manuscript as much as of a scan; no "
+                               "second printing of this sentence settles it."))
 d.quote("x2-local", "§4 ship displacement centroid",
         r"$$2m \left\{ \frac{\frac{e}{2} + d}{\frac{c+e}{2} + 2d} \right\}$$",
         reading=(x2l, 2 * m * ((e / 2 + dd) / ((c + e) / 2 + 2 * dd))))
