@@ -345,3 +345,32 @@ d.quote("parallel-sides", "§1 prismatoid faces", "Würden aber zwei der Seiten 
              "over them lie in one plane: the edge between them drops out and they make one trapezoid, so one "
              "face less and two triangles fewer (read for one such pair; parallel sides facing away from each "
              "other share no face and change nothing)")
+
+# ---- §1: the name of the body ------------------------------------------------------------------------------
+d.quote("prismatoid-name", "§1 prismatoid volume", "Ueber das Prismaoid und seinen cubischen Inhalt.",
+        unreadable="'Prismaoid' names no body: the word of the title and of Wittstein's treatise is Prismatoid",
+        erratum=Erratum("misprint", "medium", r"\text{Ueber das Prismatoid und seinen cubischen Inhalt.}",
+                        ("The body of §1, two parallel bases of any form closed by side faces, is Wittstein's "
+                         "Prismatoid, as the title ('aus der Lehre über das Wittstein'sche Prismatoid'), the preface "
+                         "('über das Prisma- und Prismatoid'), §1 itself two paragraphs on ('zum Beweise der obigen "
+                         "Formel für den cubischen Inhalt des Prismatoïds', 'sei ein Prismatoid') and §§2–4 "
+                         "throughout write it. 'Prismaoid' stands five times, all in §1 and always so: in this "
+                         "heading, in the definition ('Unter Prismaoid verstehen wir'), in 'Die Seitenebenen des "
+                         "Prismaoids', in 'aus denen das Prismaoid besteht' and in 'Formel für den Inhalt des "
+                         "Prismaoids'. A form repeated alike through a section is the compositor's, which a scan "
+                         "does not do (docs/errata-kinds.md): a misprint. Checked as what the heading announces: "
+                         "the cubic content of the prismatoid, the sum of its three groups of bodies, is the "
+                         "formula the section derives."),
+                        corrected_reading=(I, collected),
+                        fault="Prismaoid",
+                        places=("§1 prismatoid definition", "§1 prismatoid faces", "§1 prismatoid volume",
+                                "§1 prismatoid volume"),
+                        objection=("'Prismaoid' may be the author's own form of the word in §1, where he defines the "
+                                   "body ('Unter Prismaoid verstehen wir'); or the scan's, which garbles the same "
+                                   "word once more in §1 ('Prismaatoid')."),
+                        answer=("An author who defines a term does not spell it two ways on one page: §1 writes "
+                                "'Prismatoïds' and 'Prismatoid' between the places, and the title, the preface and "
+                                "§§2–4 keep Wittstein's word. The scan's 'Prismaatoid' is one garbled letter at one "
+                                "place; the same letter lost alike at five places, heading included, is the "
+                                "printer's pattern. The scan cannot be excluded: medium.")),
+        note="the heading of §1; the same name stands at four more places of §1, listed as the erratum's places")
