@@ -56,6 +56,7 @@ def test_the_check_sees_a_name_set_as_letters():
     ("y = b t^{1/n} turns it into b^{p+1}/n", r"$y = b t^{1/n}$"),
     ("int_{1/2 - c}^{1/2} z dz = (c - c^2)/2", r"$\int_{1/2 - c}^{1/2} z dz"),       # Scheeffer X, moment-z
     ("J_1K_1 and x_3^1'", r"$J_{1}K_{1}$ and $x_{3}^{1\prime}$"),                  # VII-VIII: no double index
+    ("x^1_3' and I^rect_1'", r"$x^{1\prime}_{3}$ and $I^{\text{rect}\prime}_{1}$"),   # the exponent's prime, not the index's
 ])
 def test_greek_names_and_functions_are_signs(text, tex):
     shown = typeset(text)
