@@ -126,3 +126,20 @@ def test_a_dummy_named_like_a_symbol_gets_the_same_python_name_whatever_the_orde
     k, kd = sp.Symbol("k", positive=True), sp.Dummy("k", positive=True)
     names = [Code(order).names for order in ([k, kd], [kd, k])]
     assert names[0] == names[1] and names[0][k] == "k" and names[0][kd] == "k_"
+
+
+def test_a_dummy_is_declared_as_a_dummy_not_as_the_symbol_of_its_name():
+    # Scheeffer IX's setup cell read "k_ = Symbol('k')" beside "k = symbols(...)": in the kernel k_ was k, so a
+    # swap of a and b through k_ (Subs(e, (a, b, k_), (k_, a, b))) would also have turned every k of e into b
+    import sympy as sp
+
+    from symfloat.report.notebook_code import Code
+    a, b, k, kd, lone = sp.Symbol("a"), sp.Symbol("b"), sp.Symbol("k"), sp.Dummy("k"), sp.Dummy("t", positive=True)
+    code = Code([a, b, k, kd, lone])
+    kernel: dict = {}
+    exec("from sympy import Symbol, symbols, Dummy, Subs\n" + code.declarations(), kernel)   # noqa: S102 - code printed here
+    ka, kk, t = kernel[code.names[kd]], kernel[code.names[k]], kernel[code.names[lone]]
+    assert isinstance(ka, sp.Dummy) and ka != kk and ka.name == "k"
+    assert isinstance(t, sp.Dummy) and t.is_positive and t != sp.Symbol("t", positive=True)
+    A, B = kernel[code.names[a]], kernel[code.names[b]]
+    assert sp.Subs(A * kk, (A, B, ka), (ka, A, B)).doit() == B * kk       # the swap leaves k alone
