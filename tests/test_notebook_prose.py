@@ -118,14 +118,18 @@ def test_an_inequality_read_as_an_equation_says_so():
 
 
 def test_a_dummy_named_like_a_symbol_gets_the_same_python_name_whatever_the_order():
-    # Scheeffer IX's swap of a and b goes through Dummy("k") beside the symbol k: the names must not follow the
-    # order of a set (the committed notebook read k_ in one process and k in another)
+    # Scheeffer IX swaps a and b (and a and c) through two dummies, both Dummy("k"): the names must not follow the
+    # order of a set (the committed notebook read k_ in one process and k in another); a dummy beside a symbol of
+    # its name comes after the symbol, two dummies in the order they were made
     import sympy as sp
 
     from symfloat.report.notebook_code import Code
     k, kd = sp.Symbol("k", positive=True), sp.Dummy("k", positive=True)
     names = [Code(order).names for order in ([k, kd], [kd, k])]
     assert names[0] == names[1] and names[0][k] == "k" and names[0][kd] == "k_"
+    first, second = sp.Dummy("k"), sp.Dummy("k")
+    names = [Code(order).names for order in ([first, second], [second, first])]
+    assert names[0] == names[1] and names[0][first] == "k" and names[0][second] == "k_"
 
 
 def test_a_dummy_is_declared_as_a_dummy_not_as_the_symbol_of_its_name():
