@@ -206,3 +206,15 @@ def test_a_scene_reports_the_located_length():
     assert len(arcs) == 1 and arcs[0].ring_shape == "arc"
     # the error: the float64 rounding of the length
     assert abs(arcs[0].ring_length - exact) <= arcs[0].ring_length_error < 1e-17
+
+
+def test_a_scene_closer_to_an_event_than_float64_bounds_hold_is_refused():
+    # 1e-55 past the cube's event the vertex lies 6.2e-55 beyond the plane: 346 digits, and the class's soft eigenvalue
+    # (about depth^3 / 30 = 8e-165) has a square below float64's smallest number, so the Kantorovich test divided by
+    # 0.0 (ZeroDivisionError, a traceback from `symfloat scene cube --density 0.2265409196609864...`); it refuses now,
+    # as it does a scene closer than EVENT_DIGITS digits resolve. 1e-40 past (255 digits) is within the bounds
+    near = make_scene("cube", _near(CUBE_EVENT, Fraction(1, 10 ** 55)))
+    assert event_digits(near, 1.0) == 346
+    with pytest.raises(IndexCheckError, match="by less than 300 digits resolve"):
+        solve(near)
+    assert event_digits(make_scene("cube", _near(CUBE_EVENT, Fraction(1, 10 ** 40))), 1.0) <= EVENT_DIGITS == 300

@@ -28,7 +28,11 @@ from .bodies import polyhedron
 
 __all__ = ["ring_axes", "vertex_depths", "event_digits", "lateral_arc", "EVENT_DIGITS", "ARC_DIGITS"]
 
-EVENT_DIGITS = 400      # the most digits spent on a class beside a vertex event; closer still, the scene refuses
+# the most digits spent on a class beside a vertex event; closer still, the scene refuses.  The bounds that decide
+# the class are float64 (critical._decided): at d digits the arithmetic's error 10^(5 - d) and the square of the soft
+# eigenvalue, about (depth^3 / 30)^2 = 10^(20 - d) / 900 by :func:`event_digits`, stay above float64's smallest normal
+# number 2.2e-308 up to about 300 digits (1e-55 past the cube's event, 346 digits, divided by a square that was 0.0)
+EVENT_DIGITS = 300
 ARC_DIGITS = 40         # the digits at which an arc's ends are located (bisected to 10^(10 - ARC_DIGITS) rad)
 
 
