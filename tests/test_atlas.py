@@ -294,3 +294,29 @@ def test_renamed_box_check():
     assert _check(run_checks(one + other, meta), "same box").ok
     other[0]["s_to"] = other[1]["s_from"] = 0.3 + 1e-8
     assert not _check(run_checks(one + other, meta), "same box").ok
+
+
+@pytest.mark.parametrize("changed", ["derivations/scheeffer_x/predictors.py", "symfloat/comparison/thresholds.py",
+                                     "symfloat/solver/vertex.py", "symfloat/manifest.py"])
+def test_the_code_stamp_changes_with_a_derivation_and_the_comparison(changed, monkeypatch):
+    # a part is computed again only when its code stamp changes: the stamp digested symfloat/derivations/, which a
+    # checkout does not have (the derivations are its top-level folder), and not symfloat/comparison/, so a changed
+    # predictor or threshold comparison kept every part of the atlas "current"
+    from pathlib import Path
+
+    from symfloat.atlas import dataset
+    target = (Path(__file__).resolve().parents[1] / changed).resolve()
+    assert target.is_file()
+
+    def stamp():
+        dataset.solver_stamp.cache_clear()
+        dataset.code_stamp.cache_clear()
+        return dataset.code_stamp()
+    before = stamp()
+    text, raw = Path.read_text, Path.read_bytes
+    monkeypatch.setattr(Path, "read_text",
+                        lambda self, *a, **k: text(self, *a, **k) + "#" * (self.resolve() == target))
+    monkeypatch.setattr(Path, "read_bytes", lambda self: raw(self) + b"#" * (self.resolve() == target))
+    after = stamp()
+    monkeypatch.undo()
+    assert stamp() == before != after

@@ -164,3 +164,51 @@ def test_a_figure_whose_data_are_missing_is_not_drawn(tmp_path):
     fig = Figure("x.png", ("nothing.json",), lambda data: None)
     assert figures.write_figures(tmp_path, figures=[fig]) == [] and not (tmp_path / "figures").exists()
     assert [f.filename for f in phase_figures()] == ["phase-cube.png", "phase-square-log.png"]
+
+
+_IMPORTS = """
+import sys
+from fractions import Fraction
+from symfloat.comparison.thresholds import _closed_forms, phase_with_sources
+from symfloat.registry import predicting, predictor
+from symfloat.report.phase import phase_record
+from symfloat.report.phase_data import PHASES
+from symfloat.solver import make_scene, solve
+for body, dims in PHASES.values():
+    edges = tuple(Fraction(x) for x in dims.split(",")) if dims else ()
+    scene = make_scene(body, Fraction(3, 10), dims)
+    for did in predicting(body, edges):
+        predictor(did).predictor.predict(scene)
+_closed_forms()
+print("\\n".join(sorted({m.__file__ for name, m in list(sys.modules.items())
+                        if name.startswith("symfloat") and getattr(m, "__file__", None)})))
+"""
+
+
+def test_the_phase_stamp_changes_with_every_module_a_phase_record_is_made_from(monkeypatch):
+    # the sweep, the sources' thresholds and predictions compared with it, and the manifests that choose the
+    # derivations: the stamp once left out symfloat/comparison/ (the thresholds and disagreements the record
+    # lists), manifest.py and registry.py (which derivations a body reads) and engine/roots.py (Scheeffer IX's,
+    # VII's and X's predictors), so a change there kept a stale diagram stamped current. Each module the record's
+    # computation loads (run in a fresh process) is changed by a comment, as read, and some stamp must change
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-c", _IMPORTS], capture_output=True, text=True, check=True)
+    root = DOCS.parent
+    loaded = sorted(f for f in (Path(x).resolve() for x in done.stdout.split()) if f.is_relative_to(root))
+    # what makes no record: the report package's docstring, the stamp's own digest, the derivations' docstring
+    exempt = {"symfloat/report/__init__.py", "symfloat/report/stamp.py", "derivations/__init__.py"}
+    before = {name: phase_stamp(name) for name in PHASES}
+    text, raw = Path.read_text, Path.read_bytes
+    missed = []
+    for f in loaded:
+        if str(f.relative_to(root)) in exempt:
+            continue
+        monkeypatch.setattr(Path, "read_text",
+                            lambda self, *a, f=f, **k: text(self, *a, **k) + "#" * (self.resolve() == f))
+        monkeypatch.setattr(Path, "read_bytes", lambda self, f=f: raw(self) + b"#" * (self.resolve() == f))
+        if all(phase_stamp(name) == before[name] for name in PHASES):
+            missed.append(str(f.relative_to(root)))
+        monkeypatch.undo()
+    assert len(loaded) > 40 and missed == [], missed

@@ -56,6 +56,7 @@ def test_the_check_sees_a_name_set_as_letters():
     ("y = b t^{1/n} turns it into b^{p+1}/n", r"$y = b t^{1/n}$"),
     ("int_{1/2 - c}^{1/2} z dz = (c - c^2)/2", r"$\int_{1/2 - c}^{1/2} z dz"),       # Scheeffer X, moment-z
     ("J_1K_1 and x_3^1'", r"$J_{1}K_{1}$ and $x_{3}^{1\prime}$"),                  # VII-VIII: no double index
+    ("x^1_3' and I^rect_1'", r"$x^{1\prime}_{3}$ and $I^{\text{rect}\prime}_{1}$"),   # the exponent's prime, not the index's
 ])
 def test_greek_names_and_functions_are_signs(text, tex):
     shown = typeset(text)
@@ -117,11 +118,32 @@ def test_an_inequality_read_as_an_equation_says_so():
 
 
 def test_a_dummy_named_like_a_symbol_gets_the_same_python_name_whatever_the_order():
-    # Scheeffer IX's swap of a and b goes through Dummy("k") beside the symbol k: the names must not follow the
-    # order of a set (the committed notebook read k_ in one process and k in another)
+    # Scheeffer IX swaps a and b (and a and c) through two dummies, both Dummy("k"): the names must not follow the
+    # order of a set (the committed notebook read k_ in one process and k in another); a dummy beside a symbol of
+    # its name comes after the symbol, two dummies in the order they were made
     import sympy as sp
 
     from symfloat.report.notebook_code import Code
     k, kd = sp.Symbol("k", positive=True), sp.Dummy("k", positive=True)
     names = [Code(order).names for order in ([k, kd], [kd, k])]
     assert names[0] == names[1] and names[0][k] == "k" and names[0][kd] == "k_"
+    first, second = sp.Dummy("k"), sp.Dummy("k")
+    names = [Code(order).names for order in ([first, second], [second, first])]
+    assert names[0] == names[1] and names[0][first] == "k" and names[0][second] == "k_"
+
+
+def test_a_dummy_is_declared_as_a_dummy_not_as_the_symbol_of_its_name():
+    # Scheeffer IX's setup cell read "k_ = Symbol('k')" beside "k = symbols(...)": in the kernel k_ was k, so a
+    # swap of a and b through k_ (Subs(e, (a, b, k_), (k_, a, b))) would also have turned every k of e into b
+    import sympy as sp
+
+    from symfloat.report.notebook_code import Code
+    a, b, k, kd, lone = sp.Symbol("a"), sp.Symbol("b"), sp.Symbol("k"), sp.Dummy("k"), sp.Dummy("t", positive=True)
+    code = Code([a, b, k, kd, lone])
+    kernel: dict = {}
+    exec("from sympy import Symbol, symbols, Dummy, Subs\n" + code.declarations(), kernel)   # noqa: S102 - code printed here
+    ka, kk, t = kernel[code.names[kd]], kernel[code.names[k]], kernel[code.names[lone]]
+    assert isinstance(ka, sp.Dummy) and ka != kk and ka.name == "k"
+    assert isinstance(t, sp.Dummy) and t.is_positive and t != sp.Symbol("t", positive=True)
+    A, B = kernel[code.names[a]], kernel[code.names[b]]
+    assert sp.Subs(A * kk, (A, B, ka), (ka, A, B)).doit() == B * kk       # the swap leaves k alone

@@ -25,7 +25,7 @@ from symfloat.solver.phase import _stable
 from symfloat.solver.selfcheck import IndexCheckError
 from symfloat.solver.solve import _unbroken, solve
 from symfloat.solver.symmetry import box_group
-from symfloat.solver.vertex import event_digits, lateral_arc, vertex_depths
+from symfloat.solver.vertex import EVENT_DIGITS, event_digits, lateral_arc, vertex_depths
 
 def CUBE_EVENT():
     return (3 - mpmath.sqrt(2)) / 7             # Scheeffer VI.D (80)
@@ -63,6 +63,47 @@ def test_the_depth_grows_as_derived_past_the_cubes_event():
         slope = 3 * (1 - 2 * CUBE_EVENT()) / CUBE_EVENT() - 1      # module docstring: 6.2398
         depth = _depth("cube", None, _near(CUBE_EVENT, Fraction(1, 10 ** 12)), (0, 0, 1))
         assert abs(depth / mpmath.mpf(10) ** -12 - slope) < 1e-9 * slope
+
+
+def _convergents(x, count):
+    """The first *count* convergents p/q of the continued fraction of the mpf *x* (at the working precision)."""
+    out, (p0, q0), (p1, q1) = [], (0, 1), (1, 0)
+    for _ in range(count):
+        a = int(mpmath.floor(x))
+        (p0, q0), (p1, q1) = (p1, q1), (a * p1 + p0, a * q1 + q0)
+        out.append(Fraction(p1, q1))
+        x = 1 / (x - a)
+    return out
+
+
+def test_the_depth_keeps_its_sign_at_a_density_next_to_the_event():
+    # a convergent p/q of the continued fraction of (3 - sqrt 2)/7 lies within about 1/q^2 of the event: the first
+    # past it with a denominator of 55 digits or more (58), where the depth is 2.3e-116, cancelled from lengths of
+    # order 1; at 50 digits plus the density's it came out -4.5e-109 (the ring taken for closed, the class between
+    # the arcs never looked for). Expected: the depth from the cube's closed form sqrt((12 t (1 - t) - 2)/2) - t
+    # (R = sqrt(2)/2, L = 1; module docstring) at 600 digits
+    with mpmath.workdps(600):
+        s = next(c for c in _convergents(CUBE_EVENT(), 200)
+                 if len(str(c.denominator)) >= 55 and mpmath.mpf(c.numerator) / c.denominator > CUBE_EVENT())
+        t = mpmath.mpf(s.numerator) / s.denominator
+        exact = mpmath.sqrt((12 * t * (1 - t) - 2) / 2) - t
+    assert 0 < exact < 1e-100
+    scene = make_scene("cube", s)
+    depth = _depth("cube", None, s, (0, 0, 1))
+    assert depth > 0 and abs(depth - exact) < 1e-6 * exact
+    assert event_digits(scene, 1.0) > EVENT_DIGITS          # closer than the solver resolves: the scene refuses
+
+
+@pytest.mark.parametrize("dims", ["3,3,4", "9,9,12", "3/7,3/7,4/7"])
+def test_a_rational_event_is_depth_zero_whatever_the_scale(dims):
+    # the box a x a x c about c has its event where 7 c^2 t^2 - 6 c^2 t + a^2 = 0 (R^2 = a^2/2, I/A = a^2/12): for
+    # a/c = 3/4 at t = 3/28 exactly (112 t^2 - 96 t + 9 = 0; tan^2 theta* = 2/49, R^2 tan^2 theta* = 9/49 = (L t)^2).
+    # The vertex is on the plane, the ring closed: the same for the body scaled by 3 or 1/7 (the rounding of a zero
+    # difference gave +2.7e-51 for 9 x 9 x 12 and 330 digits)
+    for s in (Fraction(3, 28), Fraction(25, 28)):
+        scene = make_scene("box", s, dims)
+        assert [float(d) for _, d, _ in vertex_depths(scene)] == [0.0] and event_digits(scene, 1.0) == 0
+    assert _depth("box", dims, Fraction(3, 28) + Fraction(1, 10 ** 6), (0, 0, 1)) > 0     # past it, beyond
 
 
 def test_the_digits_follow_from_the_depth():
@@ -165,3 +206,15 @@ def test_a_scene_reports_the_located_length():
     assert len(arcs) == 1 and arcs[0].ring_shape == "arc"
     # the error: the float64 rounding of the length
     assert abs(arcs[0].ring_length - exact) <= arcs[0].ring_length_error < 1e-17
+
+
+def test_a_scene_closer_to_an_event_than_float64_bounds_hold_is_refused():
+    # 1e-55 past the cube's event the vertex lies 6.2e-55 beyond the plane: 346 digits, and the class's soft eigenvalue
+    # (about depth^3 / 30 = 8e-165) has a square below float64's smallest number, so the Kantorovich test divided by
+    # 0.0 (ZeroDivisionError, a traceback from `symfloat scene cube --density 0.2265409196609864...`); it refuses now,
+    # as it does a scene closer than EVENT_DIGITS digits resolve. 1e-40 past (255 digits) is within the bounds
+    near = make_scene("cube", _near(CUBE_EVENT, Fraction(1, 10 ** 55)))
+    assert event_digits(near, 1.0) == 346
+    with pytest.raises(IndexCheckError, match="by less than 300 digits resolve"):
+        solve(near)
+    assert event_digits(make_scene("cube", _near(CUBE_EVENT, Fraction(1, 10 ** 40))), 1.0) <= EVENT_DIGITS == 300

@@ -20,7 +20,7 @@ import pyarrow as pa
 import pyarrow.parquet as pq
 
 from ..files import write_atomic
-from ..report.stamp import digest, package_digest
+from ..report.stamp import digest
 
 __all__ = ["SCHEMA", "FORMAT", "code_stamp", "solver_stamp", "part_path", "part_done", "write_part", "read_part", "write_combined",
            "read_atlas", "table_of"]
@@ -60,8 +60,16 @@ def part_path(out: Path, ba: Fraction, ca: Fraction) -> Path:
 
 @functools.cache
 def solver_stamp() -> str:
-    """Digest of the solver, the geometry, the model and the derivations (predictions, thresholds)."""
-    return package_digest("solver", "geometry", "model", "derivations")
+    """Digest of the code below the atlas that its rows depend on: the code of a phase record (the solver, the
+    geometry, the model, the comparison with the sources, the manifests and the registry:
+    :func:`symfloat.report.phase_data.code_files`) and every derivation's modules (predictions, thresholds),
+    read where the registry finds them (the checkout's top-level ``derivations/``, not under the package)."""
+    from ..registry import files, ids
+    from ..report.phase_data import code_files
+    root = Path(__file__).resolve().parents[1]
+    return digest(*(f"{f.relative_to(root)}\n{f.read_text(encoding='utf-8')}" for f in code_files()),
+                  *(f"{did}/{f.name}\n{f.read_text(encoding='utf-8')}" for did in ids() for f in sorted(files(did))
+                    if f.suffix == ".py"))
 
 
 @functools.cache

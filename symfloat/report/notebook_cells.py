@@ -104,7 +104,8 @@ class CellWriter:
     def setup(self) -> str:
         """The first code cell: SymPy's names the cells use, every symbol declared, the helpers."""
         used = sorted(self.code.used | self.calls | {"Symbol", "symbols", "Function", "MatrixBase", "evaluate",
-                                                     "S", "N", "Rational"})
+                                                     "S", "N", "Rational"}
+                      | ({"Dummy"} if any(isinstance(s, sp.Dummy) for s in self.code.names) else set()))
         names = textwrap.fill(", ".join(used), width=96, initial_indent="    ", subsequent_indent="    ")
         own = ("# the functions the derivation defines itself, as its package defines them (SymPy only)\n"
                + self.definitions + "\n\n") if self.definitions else ""

@@ -221,12 +221,13 @@ class Code:
         return set(self.names.values()) | set(self.functions.values()) | set(self.defined)
 
     def declarations(self) -> str:
-        """The cell that declares every symbol by name, with the assumptions the derivation gave it."""
+        """The cell that declares every symbol by name, with the assumptions the derivation gave it; a dummy
+        as a ``Dummy``, which is no other symbol (``Symbol('k')`` beside the symbol ``k`` would be ``k``)."""
         groups: dict = {}
         single = []
         for s, n in self.names.items():
             given = {k: v for k, v in sorted(s._assumptions_orig.items())}
-            if re.fullmatch(r"[A-Za-z]\w*", s.name) and n == s.name:
+            if re.fullmatch(r"[A-Za-z]\w*", s.name) and n == s.name and not isinstance(s, sp.Dummy):
                 groups.setdefault(tuple(given.items()), []).append(s)
             else:
                 single.append((s, n, given))
@@ -240,7 +241,7 @@ class Code:
                              f"{names} = symbols({' '.join(s.name for s in syms)!r}{kw})")
         for s, n, given in single:
             kw = "".join(f", {k}={v}" for k, v in given.items())
-            lines.append(f"{n} = Symbol({s.name!r}{kw})")
+            lines.append(f"{n} = {'Dummy' if isinstance(s, sp.Dummy) else 'Symbol'}({s.name!r}{kw})")
         for f, n in self.functions.items():
             lines.append(f"{n} = Function({f.__name__!r})")
         return "\n".join(lines)

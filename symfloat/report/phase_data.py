@@ -1,12 +1,14 @@
 """The phase diagrams the main job keeps: the cube, and the long square log.
 
 ``docs/figures/phase-<name>.json`` is the record of ``symfloat phase`` (:func:`symfloat.report.phase.
-phase_record`, without its time) plus the ``stamp`` of what it depends on: the solver, geometry and
-model packages, the derivations whose predictors and closed forms it compares with, this module
-and :mod:`symfloat.report.phase`, and the body and sweep.  The main job computes a diagram again only
-when that stamp differs (about 25 s for the cube and 40 s for the long square log, processor time);
-the pictures are drawn from these files
-(:func:`symfloat.report.phase_figure.phase_figure`, through :mod:`symfloat.report.figures`).
+phase_record`, without its time) plus the ``stamp`` of what it depends on: the code it is made from
+(:func:`code_files`: the solver, geometry and model packages, the comparison with the sources, the
+manifests and the registry that choose the derivations it reads, the engine's polynomial roots the
+predictors use, this module and :mod:`symfloat.report.phase`), the derivations whose predictors and
+closed forms it compares with, and the body and sweep.  The main job computes a diagram again only when
+that stamp differs (about 25 s for the cube and 40 s for the long square log, processor time); the
+pictures are drawn from these files (:func:`symfloat.report.phase_figure.phase_figure`, through
+:mod:`symfloat.report.figures`).
 
 The long square log is the box 1 × 1 × 4: its sections across the long axis are the unit square of
 Scheeffer IX with a = b and of the hasáb problem (which asks for a length l with l² > 3/2).
@@ -17,12 +19,23 @@ import json
 from fractions import Fraction
 from pathlib import Path
 
-from .stamp import digest, package_digest
+from .stamp import digest
 
-__all__ = ["PHASES", "STEPS", "phase_stamp", "phase_data", "write_phase_data", "phase_figures"]
+__all__ = ["PHASES", "STEPS", "code_files", "phase_stamp", "phase_data", "write_phase_data", "phase_figures"]
 
 PHASES = {"cube": ("cube", None), "square-log": ("box", "1,1,4")}
 STEPS = 24
+# the code of the symfloat package a record is made from: the sweep and the sources' thresholds, and the modules
+# that find and read the derivations (engine/roots.py: the polynomial roots of IX's, VII-VIII's and X's predictors)
+_PACKAGES = ("solver", "geometry", "model", "comparison")
+_MODULES = ("__init__.py", "errors.py", "project.py", "manifest.py", "registry.py", "engine/__init__.py",
+            "engine/roots.py", "report/phase.py", "report/phase_data.py")
+
+
+def code_files() -> list[Path]:
+    """The files of the ``symfloat`` package a phase record is made from (its derivations aside)."""
+    root = Path(__file__).resolve().parents[1]
+    return [f for name in _PACKAGES for f in sorted((root / name).rglob("*.py"))] + [root / f for f in _MODULES]
 
 
 def _derivation_files(body: str, dims: str | None) -> list[Path]:
@@ -34,8 +47,9 @@ def _derivation_files(body: str, dims: str | None) -> list[Path]:
 
 def phase_stamp(name: str) -> str:
     body, dims = PHASES[name]
-    return digest(package_digest("solver", "geometry", "model"), *_derivation_files(body, dims), Path(__file__),
-                  Path(__file__).with_name("phase.py"), repr((body, dims, STEPS)))
+    root = Path(__file__).resolve().parents[1]
+    return digest(*(f"{f.relative_to(root)}\n{f.read_text(encoding='utf-8')}" for f in code_files()),
+                  *_derivation_files(body, dims), repr((body, dims, STEPS)))
 
 
 def phase_data(name: str, progress=None) -> str:

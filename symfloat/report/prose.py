@@ -132,8 +132,9 @@ def _tex(token: str) -> str:
         base = m.group(1)
         base = _TEX.get(base, "\\" + base if base in GREEK or base in FUNCTIONS else base)
         scripts = _scripts(m.group(2))
-        if m.group(3) and "^" in scripts:               # x_3^1': the prime joins the exponent
-            return base + scripts[:-1] + r"\prime}"
+        if m.group(3) and "^" in scripts:               # x_3^1', x^1_3': the prime joins the exponent
+            exponent = list(re.finditer(r"\^\{(?:[^{}]|\{[^{}]*\})*\}", scripts))[-1]
+            return base + scripts[:exponent.end() - 1] + r"\prime}" + scripts[exponent.end():]
         return base + scripts + m.group(3)
     if re.fullmatch(r"[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+)", token):
         return _scripts(token)

@@ -449,9 +449,9 @@ def _decided(poly, loc, s, scale, refine_dps: int = 30, event_dps: int = 0, grou
         loc, s = local(poly, -np.asarray(loc.u), 1 - s), 1 - s
     lipschitz = _lipschitz(poly, loc, s)
 
-    def isolated(residual, soft, rounding):
+    def isolated(residual, soft, rounding):      # a soft eigenvalue whose square float64 cannot hold decides nothing
         soft = abs(soft)
-        return soft > 0 and lipschitz * residual / soft ** 2 <= 0.5 \
+        return soft ** 2 > 0 and lipschitz * residual / soft ** 2 <= 0.5 \
             and soft > 10 * (lipschitz * 2 * residual / soft + rounding)
     soft = float(min(loc.eigen()[0], key=abs))
     if isolated(float(np.linalg.norm(loc.gradient)), soft, 1e-12 * scale):

@@ -28,7 +28,11 @@ from .bodies import polyhedron
 
 __all__ = ["ring_axes", "vertex_depths", "event_digits", "lateral_arc", "EVENT_DIGITS", "ARC_DIGITS"]
 
-EVENT_DIGITS = 400      # the most digits spent on a class beside a vertex event; closer still, the scene refuses
+# the most digits spent on a class beside a vertex event; closer still, the scene refuses.  The bounds that decide
+# the class are float64 (critical._decided): at d digits the arithmetic's error 10^(5 - d) and the square of the soft
+# eigenvalue, about (depth^3 / 30)^2 = 10^(20 - d) / 900 by :func:`event_digits`, stay above float64's smallest normal
+# number 2.2e-308 up to about 300 digits (1e-55 past the cube's event, 346 digits, divided by a square that was 0.0)
+EVENT_DIGITS = 300
 ARC_DIGITS = 40         # the digits at which an arc's ends are located (bisected to 10^(10 - ARC_DIGITS) rad)
 
 
@@ -55,16 +59,35 @@ def ring_axes(scene: Scene) -> list[tuple[tuple[int, int, int], mpmath.mpf, mpma
 
 def vertex_depths(scene: Scene, dps: int = 50) -> list[tuple[tuple[int, int, int], mpmath.mpf, mpmath.mpf]]:
     """``(axis, depth, theta*)`` for every ring axis of *scene* where the ring exists (``tan^2 theta* > 0``): how
-    far (in the body's length units, at *dps* digits plus the density's) a base vertex lies beyond the waterplane
-    at the ring's tilt ``theta*``; negative before the vertex event, where the ring is closed."""
+    far (in the body's length units) a base vertex lies beyond the waterplane at the ring's tilt ``theta*``;
+    negative before the vertex event, where the ring is closed.  The depth is a difference of two lengths that
+    cancel at the event, and a density ``p/q`` can lie within about ``1/q^2`` of an irrational event (a convergent
+    of its continued fraction: depth 2.3e-116 at a density of 58 digits past the cube's): it is computed at *dps*
+    digits plus twice the density's, and at four times those digits where it is within their rounding of zero.  A
+    depth still within the rounding is the event itself (a rational event, the box 3 x 3 x 4 at s = 3/28): 0, the
+    vertex on the plane and the ring closed, whatever the body's scale."""
     s = scene.density
-    with mpmath.workdps(dps + len(str(s.denominator))):
+    digits = dps + 2 * len(str(s.denominator))
+    for _ in range(2):
+        out = _depths(scene, digits)
+        if all(abs(depth) > rounding for _, depth, _, rounding in out):
+            break
+        digits *= 4
+    return [(axis, depth if abs(depth) > rounding else mpmath.mpf(0), theta) for axis, depth, theta, rounding in out]
+
+
+def _depths(scene: Scene, digits: int) -> list:
+    """``(axis, depth, theta*, rounding)`` at *digits* digits, the rounding a bound of the depth's error
+    (``10^(5 - digits)`` times the length and the circumradius)."""
+    s = scene.density
+    with mpmath.workdps(digits):
         t = mpmath.mpf(min(s, 1 - s).numerator) / min(s, 1 - s).denominator
         out = []
         for axis, area, second, r2, L in ring_axes(scene):
             tan2 = area * L ** 2 * t * (1 - t) / second - 2
             if tan2 > 0:
-                out.append((axis, +(mpmath.sqrt(r2 * tan2) - L * t), mpmath.atan(mpmath.sqrt(tan2))))
+                rounding = mpmath.mpf(10) ** (5 - digits) * (L + mpmath.sqrt(r2))
+                out.append((axis, +(mpmath.sqrt(r2 * tan2) - L * t), mpmath.atan(mpmath.sqrt(tan2)), rounding))
     return out
 
 
