@@ -88,3 +88,11 @@ def test_two_confusions_at_two_places_are_one_candidate():
     found = {c.text: c for c in candidates(r"D = \nu v")}
     assert r"D = \mu V" in found and found[r"D = \mu V"].kind == "scan-like"
     assert r"D = \mu V" not in {c.text for c in candidates(r"D = \nu w")}      # mutated: w/V is no confusion
+
+
+def test_every_proof_strategy_has_its_words():
+    """An erratum's evidence says how the correction is proved in words (check._PROOF_WORDS); a strategy of the
+    identity check or the relation check without words would raise KeyError when an erratum is written."""
+    from symfloat.engine import check, identity
+    relation_strategies = ("assumptions", "sign of factors", "sign cells")   # symfloat/engine/relation.py
+    assert set(identity.STRATEGIES) | set(relation_strategies) <= set(check._PROOF_WORDS)

@@ -267,3 +267,20 @@ def test_the_checker_cross_checks_relations_and_confirms_a_counterexample():
                                                   corrected_reading=Holds(V < g / 3)))
     assert f.verdict == "erratum" and not failures and f.corrected_numeric
     assert any("fails at" in n for n in f.witness_notes)
+
+
+def test_a_neutral_counterexample_leaves_the_failures_elsewhere_standing():
+    # T > a b^3/12 + (a - 2)^2 with T = a b^3/12: the side is -(a - 2)^2, zero at the relation check's
+    # counterexample a = 2 (a neutral case: the statement is not read there) and negative at every other point,
+    # where the statement fails; the failures at the other points are evidence and stay (they were dropped when
+    # the route was left blank for the unread counterexample)
+    from types import SimpleNamespace
+
+    from symfloat.model.relation import Holds
+    _, r = triangle()
+    neutral = SimpleNamespace(status="refuted", counterexample={"point": {"a": "2", "b": "1"}})
+    out = r.relation_outcome("t", Holds(T > a * b ** 3 / 12 + (a - 2) ** 2), {T: a * b ** 3 / 12}, neutral)
+    assert not out.agrees and "fails at" in out.note and out.records
+    # where the statement holds at every point read, the unread counterexample still leaves nothing recorded
+    out = r.relation_outcome("t", Holds(T >= a * b ** 3 / 12 - (a - 2) ** 2), {T: a * b ** 3 / 12}, neutral)
+    assert out.records == [] and "neutral case" in out.note

@@ -330,8 +330,12 @@ def _measured(expr, point, dps):
         return _numeric(expr, point, dps)
     value, _, radius = _counted(expr, point, dps)
     if value is None:
-        raise ArithmeticError(f"a root count the inclusion discs (radius {radius:.1e}) do not decide")
+        raise UncountedRoots(f"a root count the inclusion discs (radius {radius:.1e}) do not decide")
     return value
+
+
+class UncountedRoots(ArithmeticError):
+    """A root count at one point that the inclusion discs do not decide: that point is not read."""
 
 
 @dataclass
@@ -375,12 +379,19 @@ class DefinitionRoute:
         if any(len(claimed) != len(measured) for claimed in claims):
             out.note = "definition route: not evaluated (members of different shapes)"
             return out
+        uncounted = 0
         for method in ROUTE_METHODS:
             t0 = time.perf_counter()
             worst_abs = worst_rel = 0.0
+            read = 0
             try:
                 for point in cases:
-                    values = [_measured(c, point, method.dps) for c in measured]
+                    try:
+                        values = [_measured(c, point, method.dps) for c in measured]
+                    except UncountedRoots:
+                        uncounted += method is ROUTE_METHODS[-1]
+                        continue
+                    read += 1
                     for claimed in claims:
                         for e, v, c in zip(measured, values, claimed):
                             ab, rel = _difference(e, v, c, point, method)
@@ -389,13 +400,22 @@ class DefinitionRoute:
                 out.records = []
                 out.note = f"definition route: not evaluated ({exc})"
                 return out
+            if not read:
+                out.records = []
+                out.note = ("definition route: not evaluated (at every point a root count the inclusion discs do "
+                            "not decide)")
+                return out
             out.records.append({"method": f"definitions, {method.dps} digits", "abs_error": worst_abs,
                                 "rel_error": worst_rel, "seconds": time.perf_counter() - t0,
-                                "cases": len(cases), "rel_tolerance": method.tolerance})
+                                "cases": read, "rel_tolerance": method.tolerance})
             if not record_agrees(out.records[-1]):
                 out.agrees = False
-        if not out.agrees:
-            out.note = "definition route: the definitions give another value"
+        notes = ["the definitions give another value"] if not out.agrees else []
+        if uncounted:
+            notes.append(f"at {uncounted} of {len(cases)} points a root count is not decided by its inclusion discs: "
+                         "not read there")
+        if notes:
+            out.note = "definition route: " + "; ".join(notes)
         return out
 
     def _cases(self, symbols, target):
@@ -436,8 +456,9 @@ class DefinitionRoute:
                               *(e.free_symbols for e in counted.values()))
         symbols |= {q for w in where if w.free_symbols & symbols for q in w.free_symbols}
         premises = [inserted(c, results) for c in _premises(relation)] if counted else []
+        counterexample = self._counterexample(check, symbols)
         try:
-            points = self._relation_points(target, relation, symbols, where, check, premises)
+            points = self._relation_points(target, relation, symbols, where, counterexample, premises)
         except ValueError as exc:
             out.note = f"definition route: not evaluated ({exc})"
             return out
@@ -445,7 +466,6 @@ class DefinitionRoute:
             out.note = "definition route: no sample point satisfies the relation's and the derivation's conditions"
             return out
         failed, undecided, uncounted, differs = [], 0, {}, False
-        counterexample = points[0] if self._counterexample(check, symbols) == points[0] else None
         unread_counterexample = False
         for method in ROUTE_METHODS:
             t0 = time.perf_counter()
@@ -517,19 +537,21 @@ class DefinitionRoute:
             notes.append(f"at {undecided} of {len(points)} points a side is within its error of zero: the statement "
                          "is not read there")
         refuted = check is not None and check.status == "refuted"
-        if unread_counterexample or (refuted and undecided == len(points)):
-            out.records, out.agrees = [], True
+        # A neutral case: the statement is not read where the relation check refutes it.  Only then is the route
+        # left blank; a value or a count that disagrees, or a failure at another point, stands.
+        if (unread_counterexample or (refuted and undecided == len(points))) and out.agrees and not failed:
+            out.records = []
             notes = ["where the relation check refutes the statement a side is within its error of zero (a "
                      "neutral case), so the statement is not read there and nothing is recorded"]
         out.note = "definition route: " + "; ".join(notes) if notes else ""
         return out
 
-    def _relation_points(self, target, relation, symbols, where, check, premises=()):
-        """The relation check's counterexample (when it is a rational point of these symbols), then seeded
+    def _relation_points(self, target, relation, symbols, where, counterexample, premises=()):
+        """The relation check's *counterexample* (when it is a rational point of these symbols), then seeded
         points of the domain that satisfy the derivation's constraints and the relation's conditions, and for
         each of the *premises* the first such point where it holds: among the seeded draws (continued for up to
         :data:`PREMISE_DRAWS` more), else among the domain's boundary points the relation check starts from."""
-        points = [p for p in (self._counterexample(check, symbols),) if p is not None]
+        points = [p for p in (counterexample,) if p is not None]
         intervals = relation_intervals(relation, symbols, self.domain, target)
         draws = random_points(sorted(symbols, key=lambda q: q.name), intervals,
                               f"{self.derivation_id}/{target} definition route")

@@ -9,6 +9,7 @@ numbers as numbers (:func:`tex_number`).
 """
 from __future__ import annotations
 
+import math
 import re
 from decimal import Decimal, InvalidOperation
 
@@ -64,11 +65,15 @@ def tex_number(text: str) -> str:
 def tex_error(value: float) -> str:
     r"""A relative error as TeX, two significant digits: ``2.9 \times 10^{-39}``, ``0``.
 
-    >>> tex_error(2.9e-39), tex_error(0.0), tex_error(0.24)
-    ('2.9 \\times 10^{-39}', '0', '2.4 \\times 10^{-1}')
+    >>> tex_error(2.9e-39), tex_error(0.0), tex_error(0.24), tex_error(float("inf"))
+    ('2.9 \\times 10^{-39}', '0', '2.4 \\times 10^{-1}', '\\infty')
     """
     if value == 0:
         return "0"
+    if math.isinf(value):
+        return r"\infty"
+    if math.isnan(value):
+        return r"\text{not a number}"
     mantissa, exponent = f"{value:.1e}".split("e")
     return rf"{mantissa} \times 10^{{{int(exponent)}}}"
 
