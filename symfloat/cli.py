@@ -586,7 +586,7 @@ def main(argv=None) -> int:
     with _Interrupts() as interrupts:
         try:
             library_folders()                 # a further library of texts that is not there: one line, exit 2
-            from .engine.runner import check_environment
+            from .engine.environment import check_environment
             check_environment()               # SYMFLOAT_WORKERS, SYMFLOAT_SLOWDOWN: likewise
             return COMMANDS[args.command].run(args)
         except KeyboardInterrupt:
