@@ -14,15 +14,18 @@ matching equilibrium is a disagreement of its own.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..model.derivation import Printed
-from ..registry import predicting, predictor
+from ..registry import predicting, reader
 from ..solver.bodies import polyhedron
 from ..solver.local import local
 from ..solver.solve import Solution, body_scale
 from ..solver.symmetry import symmetry_group
+
+if TYPE_CHECKING:
+    from ..model.derivation import Printed
 
 __all__ = ["predicting", "cover", "declared_verdict"]
 
@@ -50,9 +53,13 @@ def _on_ring(scene, predicted, eq) -> bool:
 
 def declared_verdict(p: Printed) -> str:
     """The verdict a derivation declares for printed formula *p* (what its proof checks confirm)."""
-    if p.erratum is not None:
+    return _declared(p.erratum is not None, p.lost)
+
+
+def _declared(erratum: bool, lost) -> str:
+    if erratum:
         return "erratum"
-    return "unverifiable" if p.lost else "verified"
+    return "unverifiable" if lost else "verified"
 
 
 def cover(solution: Solution) -> tuple[list[str], list[dict]]:
@@ -63,14 +70,14 @@ def cover(solution: Solution) -> tuple[list[str], list[dict]]:
     group = symmetry_group(scene)
     unmatched = []
     for did in ids:
-        d = predictor(did)
-        for pred in d.predictor.predict(scene):
-            printed = [p for p in d.printed if p.name in pred.printed]
-            entry = {"derivation": did, "printed": [d.formula_id(p) for p in printed],
-                     "locators": sorted({p.locator for p in printed}),
-                     "verdicts": sorted({declared_verdict(p) for p in printed}),
-                     "corrections": [{"locator": p.locator, "corrected": p.erratum.corrected}
-                                     for p in printed if p.erratum is not None],
+        d = reader(did)
+        for pred in d.predict(scene):
+            printed = [p for p in d.printed if p["name"] in pred.printed]
+            entry = {"derivation": did, "printed": [f"{did}/{p['name']}" for p in printed],
+                     "locators": sorted({p["locator"] for p in printed}),
+                     "verdicts": sorted({_declared(p["erratum"], p["lost"]) for p in printed}),
+                     "corrections": [{"locator": p["locator"], "corrected": p["corrected"]}
+                                     for p in printed if p["erratum"]],
                      "predicted_up": [float(x) for x in pred.up], "predicted_stability": pred.stability,
                      "predicted_family": pred.family, "note": pred.note}
             best = min(solution.equilibria, key=lambda e: _distance(scene, group, pred.up, e), default=None)
