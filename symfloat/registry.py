@@ -61,9 +61,12 @@ def manifest(derivation_id: str) -> Manifest:
 
 
 def files(derivation_id: str) -> list[Path]:
-    """The files of a derivation's package (its modules, manifest and proof certificates), sorted."""
+    """The files of a derivation's package (its modules, manifest and proof certificates), sorted; not its
+    compiled readings (``compiled.json``), which are generated from its statements and predictors and written
+    after the checks (a check's key would otherwise change when they are written)."""
     folder = manifest(derivation_id).folder
-    return sorted(p for p in folder.rglob("*") if p.is_file() and "__pycache__" not in p.parts)
+    return sorted(p for p in folder.rglob("*") if p.is_file() and "__pycache__" not in p.parts
+                  and p.name != "compiled.json")
 
 
 def requires(derivation_id: str) -> tuple[str, ...]:

@@ -122,3 +122,10 @@ def test_a_reading_is_refused_when_it_holds_an_unknown_node():
     with pytest.raises(compiled.CompiledError):
         compiled.compile_expr(sp.gamma(x), (x,))
     assert isinstance(compiled.compile_expr(sp.sqrt(x), (x,)), Compiled)
+
+
+def test_the_compiled_readings_are_no_part_of_a_checks_key():
+    # generated from the statements and predictors (which the key covers) and written after the checks: were
+    # they keyed, writing them would make the checks just done stale
+    folder = registry.manifest("scheeffer-ix").folder
+    assert (folder / "compiled.json").is_file() and folder / "compiled.json" not in registry.files("scheeffer-ix")
