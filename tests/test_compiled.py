@@ -129,3 +129,19 @@ def test_the_compiled_readings_are_no_part_of_a_checks_key():
     # they keyed, writing them would make the checks just done stale
     folder = registry.manifest("scheeffer-ix").folder
     assert (folder / "compiled.json").is_file() and folder / "compiled.json" not in registry.files("scheeffer-ix")
+
+
+def test_the_key_covers_what_compiling_runs_and_not_the_witnesses(tmp_path):
+    # a copy of Scheeffer IX's package: a witness edited keeps the key, a statement or predictor edited changes it
+    import shutil
+    folder = tmp_path / "scheeffer_ix"
+    shutil.copytree(registry.manifest("scheeffer-ix").folder, folder, ignore=shutil.ignore_patterns("__pycache__"))
+    before = compiled.key(folder)
+    for name, changes in (("witnesses.py", False), ("proofs.json", False), ("statements.py", True),
+                          ("predictors.py", True)):
+        path = folder / name
+        text = path.read_text(encoding="utf-8")
+        path.write_text(text + ("\n# edited\n" if name.endswith(".py") else " "), encoding="utf-8")
+        assert (compiled.key(folder) != before) == changes, name
+        path.write_text(text, encoding="utf-8")
+    assert compiled.key(folder) == before

@@ -490,37 +490,45 @@ class Compiled:
 
 
 # ==== the key and the two stores ======================================================================================
-def _sibling_statements(path: Path) -> list[Path]:
-    """The statements modules of sibling packages that *path* imports (``from ..pkg.statements import``)."""
+def _imported_files(path: Path) -> list[Path]:
+    """The files of the modules *path* imports that compiling can run: statements of sibling packages
+    (``from ..pkg.statements import``) and library modules (``symfloat.x.y``, an import inside a function too)."""
     out = []
     for node in ast.walk(ast.parse(path.read_bytes())):
+        names = []
         if isinstance(node, ast.ImportFrom) and node.level == 2 and node.module:
-            f = path.parent.parent.joinpath(*node.module.split(".")).with_suffix(".py")
-            if f.is_file():
-                out.append(f)
-    return out
+            out.append(path.parent.parent.joinpath(*node.module.split(".")).with_suffix(".py"))
+        elif isinstance(node, ast.ImportFrom) and not node.level and node.module:
+            names = [node.module] + [f"{node.module}.{a.name}" for a in node.names]
+        elif isinstance(node, ast.Import):
+            names = [a.name for a in node.names]
+        for name in names:
+            parts = name.split(".")
+            if parts[0] == "symfloat" and len(parts) > 1:
+                base = _LIBRARY.joinpath(*parts[1:])
+                out += [f for f in (base.with_suffix(".py"), base / "__init__.py")]
+    return [f for f in out if f.is_file()]
 
 
 def key(folder: Path) -> str:
-    """The key of the compiled readings of the derivation package in *folder*: its files (the shipped
-    ``compiled.json`` and caches excepted), the statements of other packages its statements import (followed to
-    the end), the formula model and the library's top modules the statements import, and :data:`FORMAT`."""
-    files, todo = set(), [folder]
+    """The key of the compiled readings of the derivation package in *folder*: what compiling runs, and nothing
+    a check alone reads (witnesses, certificates): its ``statements.py`` and ``predictors.py``, the statements of
+    other packages they import (followed to the end), the library modules any of these import (not followed
+    further), the whole formula model, and :data:`FORMAT`.  Editing a witness leaves the shipped readings
+    current."""
+    files, todo = set(), [folder / "statements.py", folder / "predictors.py"]
     while todo:
         f = todo.pop()
-        if f.is_dir():
-            new = [p for p in f.rglob("*") if p.is_file() and "__pycache__" not in p.parts and p.name != SHIPPED]
-        else:
-            new = [f]
-        for p in new:
-            if p not in files:
-                files.add(p)
-                if p.name == "statements.py":
-                    todo += _sibling_statements(p)
-    files |= {p for p in _MODEL.glob("*.py")} | {_LIBRARY / "__init__.py", _LIBRARY / "manifest.py"}
+        if f in files or not f.is_file():
+            continue
+        files.add(f)
+        if not f.is_relative_to(_LIBRARY):                  # a module of a derivation package: followed
+            todo += _imported_files(f)
+    files |= set(_MODEL.glob("*.py")) | {_LIBRARY / "__init__.py", _LIBRARY / "manifest.py"}
+    named = sorted((f"{p.parent.name}/{p.name}", p) for p in files)
     h = hashlib.sha256(FORMAT.encode())
-    for p in sorted(files, key=lambda p: (p.parent.name, p.name)):
-        h.update(f"{p.parent.name}/{p.name}".encode())
+    for name, p in named:
+        h.update(name.encode())
         h.update(p.read_bytes())
     return h.hexdigest()[:32]
 
