@@ -14,7 +14,6 @@ matching equilibrium is a disagreement of its own.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -23,9 +22,6 @@ from ..solver.bodies import polyhedron
 from ..solver.local import local
 from ..solver.solve import Solution, body_scale
 from ..solver.symmetry import symmetry_group
-
-if TYPE_CHECKING:
-    from ..model.derivation import Printed
 
 __all__ = ["predicting", "cover", "declared_verdict"]
 
@@ -51,12 +47,9 @@ def _on_ring(scene, predicted, eq) -> bool:
     return np.linalg.norm(loc.gradient) <= 1e-7 * scale and abs(loc.U - eq.potential) <= 1e-7 * scale
 
 
-def declared_verdict(p: Printed) -> str:
-    """The verdict a derivation declares for printed formula *p* (what its proof checks confirm)."""
-    return _declared(p.erratum is not None, p.lost)
-
-
-def _declared(erratum: bool, lost) -> str:
+def declared_verdict(erratum: bool, lost) -> str:
+    """The verdict a derivation declares for a printed formula with an erratum or not, lost or not (what its
+    proof checks confirm)."""
     if erratum:
         return "erratum"
     return "unverifiable" if lost else "verified"
@@ -75,7 +68,7 @@ def cover(solution: Solution) -> tuple[list[str], list[dict]]:
             printed = [p for p in d.printed if p["name"] in pred.printed]
             entry = {"derivation": did, "printed": [f"{did}/{p['name']}" for p in printed],
                      "locators": sorted({p["locator"] for p in printed}),
-                     "verdicts": sorted({_declared(p["erratum"], p["lost"]) for p in printed}),
+                     "verdicts": sorted({declared_verdict(p["erratum"], p["lost"]) for p in printed}),
                      "corrections": [{"locator": p["locator"], "corrected": p["corrected"]}
                                      for p in printed if p["erratum"]],
                      "predicted_up": [float(x) for x in pred.up], "predicted_stability": pred.stability,

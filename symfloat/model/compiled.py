@@ -364,7 +364,18 @@ def _func_exact(name, x):
     if isinstance(x, Fraction) and x == 0 and name in ("sin", "tan", "atan", "asin"):
         return Fraction(0)
     rx = _real(x)
-    return Real(lambda p: getattr(rx._ball(p), name)(), lambda: __import__("sympy").__dict__[name](rx._sym()))
+    return Real(lambda p: getattr(rx._ball(p), name)(), lambda: _sympy_function(name)(rx._sym()))
+
+
+def _arb_pi(prec):
+    from flint import arb
+    return arb.pi()
+
+
+def _sympy_function(name):
+    """SymPy's *name* (a function of :data:`FUNCTIONS`, or pi), imported only for the rare exact fallback."""
+    import sympy as sp
+    return getattr(sp, name)
 
 
 def _kind(args) -> str:
@@ -453,7 +464,7 @@ class Compiled:
         if op == "q":
             return Fraction(t[1], t[2])
         if op == "pi":
-            return Real(lambda p: __import__("flint").arb.pi(), lambda: __import__("sympy").pi)
+            return Real(_arb_pi, lambda: _sympy_function("pi"))
         if op == "f":
             return _func_exact(t[1], self._exact(t[2], args))
         if op in _LOGIC:
@@ -546,7 +557,8 @@ def _cache_root() -> Path:
 
 
 def _judged(path: Path, package: str, k: str):
-    """The parsed entry in *path* if it is one of *package* under key *k* whose payload parses, else ``None``."""
+    """``(readings, printed)`` of the entry in *path* if it is one of *package* under key *k* whose content hash
+    matches and whose payload parses under the whitelist, else ``None``."""
     try:
         entry = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError):
@@ -556,14 +568,9 @@ def _judged(path: Path, package: str, k: str):
             and entry.get("sha256") == _digest({"readings": entry["readings"], "printed": entry.get("printed")})):
         return None
     try:
-        return {name: _parse(p["value"], p["nargs"]) if isinstance(p, dict) and type(p.get("nargs")) is int
-                else _raise(name) for name, p in entry["readings"].items()}, _printed(entry.get("printed"))
+        return _parsed(entry)
     except (CompiledError, KeyError, TypeError, ValueError):
         return None
-
-
-def _raise(name):
-    raise CompiledError(f"reading {name!r} has no argument count")
 
 
 def _printed(p):
@@ -596,7 +603,7 @@ class Readings:
             self.source = "statements"
             entry = self.compile()
             self._store(self._cache_file(), entry)
-            found = _judged_entry(entry)
+            found = _parsed(entry)
         self.values, self.printed = found
 
     def __getitem__(self, name):
@@ -605,12 +612,9 @@ class Readings:
     def _cache_file(self) -> Path:
         return _cache_root() / f"{self.package.rpartition('.')[2]}.{self.key}.json"
 
-    def statements(self):
-        return importlib.import_module(f"{self.package}.statements")
-
     def compile(self) -> dict:
         """The entry: every reading of the spec built from the statements, and the printed formulas' metadata."""
-        st = self.statements()
+        st = importlib.import_module(f"{self.package}.statements")
         readings = {}
         for name, build in self.spec.items():
             value, symbols = build(st)
@@ -626,6 +630,7 @@ class Readings:
     def _store(path: Path, entry: dict) -> None:
         """Write *entry* to *path* atomically; a cache that cannot be written is left alone (the readings are
         compiled again next time)."""
+        tmp = None
         try:
             path.parent.mkdir(parents=True, exist_ok=True)
             fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
@@ -635,13 +640,22 @@ class Readings:
             os.umask(mask)
             os.chmod(tmp, 0o666 & ~mask)          # the umask's mode, not mkstemp's 0600
             os.replace(tmp, path)
+            tmp = None
         except OSError:
             pass
+        finally:
+            if tmp is not None:
+                Path(tmp).unlink(missing_ok=True)
 
 
-def _judged_entry(entry):
-    return ({name: _parse(p["value"], p["nargs"]) for name, p in entry["readings"].items()},
-            _printed(entry["printed"]))
+def _parsed(entry):
+    """``(readings, printed)`` of an entry, every payload parsed under the whitelist."""
+    readings = {}
+    for name, p in entry["readings"].items():
+        if not (isinstance(p, dict) and type(p.get("nargs")) is int and p["nargs"] >= 0):
+            raise CompiledError(f"reading {name!r}: no argument count")
+        readings[name] = _parse(p["value"], p["nargs"])
+    return readings, _printed(entry["printed"])
 
 
 def judged_current(readings: Readings) -> bool:
