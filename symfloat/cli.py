@@ -244,6 +244,7 @@ def _run_args(p):
 
 
 def _run(args) -> int:
+    from .registry import compiled_readings
     from .report.errata import errata_json, errata_markdown
     from .report.record import write_record
     from .report.stamp import stamp_of
@@ -254,6 +255,9 @@ def _run(args) -> int:
     cache = _cache(args)
     _kernels_share(cache)
     reports = _reports(args, cache=cache)
+    written = compiled_readings(write=True)          # the predictors' compiled readings, shipped with each package
+    if written and not _quiet(args):
+        print(f"compiled readings written: {', '.join(written)}", file=sys.stderr)
     write_record(docs / "verification.json", reports)
     write_if_changed(docs / "errata.json", errata_json(reports))
     write_if_changed(docs / "errata.md", errata_markdown(reports))
@@ -586,7 +590,7 @@ def main(argv=None) -> int:
     with _Interrupts() as interrupts:
         try:
             library_folders()                 # a further library of texts that is not there: one line, exit 2
-            from .engine.runner import check_environment
+            from .engine.environment import check_environment
             check_environment()               # SYMFLOAT_WORKERS, SYMFLOAT_SLOWDOWN: likewise
             return COMMANDS[args.command].run(args)
         except KeyboardInterrupt:

@@ -13,14 +13,15 @@ imports what a derivation says; :func:`load` the whole package, for checking it.
 from __future__ import annotations
 
 import importlib
+from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
 from .errors import InputError
 from .manifest import PARTS, Manifest, body_kinds, read_manifest
 
-__all__ = ["ids", "manifest", "files", "requires", "providing", "predicting", "provided", "predictor", "statements",
-           "load", "part", "select", "cross_use_problems", "SelectorError"]
+__all__ = ["ids", "manifest", "files", "requires", "providing", "predicting", "provided", "predictor", "reader",
+           "statements", "load", "part", "select", "cross_use_problems", "compiled_readings", "SelectorError", "Reader"]
 
 
 class SelectorError(InputError):
@@ -60,9 +61,12 @@ def manifest(derivation_id: str) -> Manifest:
 
 
 def files(derivation_id: str) -> list[Path]:
-    """The files of a derivation's package (its modules, manifest and proof certificates), sorted."""
+    """The files of a derivation's package (its modules, manifest and proof certificates), sorted; not its
+    compiled readings (``compiled.json``), which are generated from its statements and predictors and written
+    after the checks (a check's key would otherwise change when they are written)."""
     folder = manifest(derivation_id).folder
-    return sorted(p for p in folder.rglob("*") if p.is_file() and "__pycache__" not in p.parts)
+    return sorted(p for p in folder.rglob("*") if p.is_file() and "__pycache__" not in p.parts
+                  and p.name != "compiled.json")
 
 
 def requires(derivation_id: str) -> tuple[str, ...]:
@@ -92,7 +96,46 @@ def part(derivation_id: str, name: str):
     if not m.has(name):
         return None
     from . import derivations
-    return importlib.import_module(f"{derivations.__name__}.{m.package}.{name}")
+    module = importlib.import_module(f"{derivations.__name__}.{m.package}.{name}")
+    if name == "predictors" and hasattr(module, "READINGS"):
+        _register(derivation_id, module)
+    return module
+
+
+def _register(derivation_id: str, module) -> None:
+    """Join a predictors module of compiled readings (``BODIES``, ``predict``, ``PROVIDES``; it imports no
+    statements) to its derivation, as a predictor that registers itself would."""
+    d = statements(derivation_id)
+    d.predicts(module.BODIES, module.predict)
+    for kind, value in getattr(module, "PROVIDES", {}).items():
+        d.provides(kind, value)
+
+
+@dataclass(frozen=True)
+class Reader:
+    """What a scene reads of a derivation: the bodies it predicts, its ``predict(scene)`` and its printed
+    formulas' metadata (``{name, locator, erratum, lost, corrected}`` in its order)."""
+    id: str
+    bodies: tuple
+    predict: object
+    printed: tuple
+
+
+@cache
+def reader(derivation_id: str) -> Reader:
+    """A derivation as a scene reads it: a predictors module of compiled readings alone (no statements module,
+    no SymPy where its compiled readings are current, :mod:`symfloat.model.compiled`), else its predictor."""
+    m = manifest(derivation_id)
+    from . import derivations
+    module = importlib.import_module(f"{derivations.__name__}.{m.package}.predictors")
+    if hasattr(module, "READINGS"):
+        if set(module.BODIES) != set(m.predicts):
+            raise RuntimeError(f"{m.folder}: the predictors predict {module.BODIES}, the manifest says {m.predicts}")
+        return Reader(derivation_id, tuple(module.BODIES), module.predict, tuple(module.READINGS.printed))
+    d = predictor(derivation_id)
+    printed = tuple({"name": p.name, "locator": p.locator, "erratum": p.erratum is not None, "lost": bool(p.lost),
+                     "corrected": p.erratum.corrected if p.erratum is not None else None} for p in d.printed)
+    return Reader(derivation_id, tuple(d.predictor.bodies), d.predictor.predict, printed)
 
 
 @cache
@@ -135,6 +178,25 @@ def predictor(derivation_id: str):
         raise RuntimeError(f"{manifest(derivation_id).folder}: the predictors do not predict the bodies the "
                            f"manifest lists ({manifest(derivation_id).predicts})")
     return d
+
+
+def compiled_readings(write: bool = False) -> list[str]:
+    """Ids of the derivations whose predictors' shipped compiled readings (``compiled.json`` in the package,
+    :mod:`symfloat.model.compiled`) are not current; with *write*, written afresh from the statements (then the
+    ids of those written)."""
+    from .model.compiled import judged_current, write_shipped
+    from . import derivations
+    out = []
+    for did, m in _manifests().items():
+        if not m.has("predictors"):
+            continue
+        module = importlib.import_module(f"{derivations.__name__}.{m.package}.predictors")
+        readings = getattr(module, "READINGS", None)
+        if readings is not None and not judged_current(readings):
+            if write:
+                write_shipped(readings)
+            out.append(did)
+    return out
 
 
 def provided(kind: str) -> list[tuple[str, object]]:

@@ -121,8 +121,8 @@ def test_scheeffer_vii_viii_strips_from_103_117_121b_122_as_read():
     # top strip w = 1/2, A = 2 (w - x_0)): tan phi = 5/2
     assert v.DRY_121B(2, 3, Fraction(1, 4)) == Fraction(9, 2)
     p = package.witnesses._params("box3-eq")
-    A = float(2 * (sp.Rational(1, 2) - p[v.x0]))
-    assert any(abs(t - 5 / 2) < 1e-12 for t, _ in v._strip3(A, 1.0, 1.0, float(p[v.s])))
+    A = float(2 * (sp.Rational(1, 2) - p[package.statements.x0]))
+    assert any(abs(t - 5 / 2) < 1e-12 for t, _ in v._strip3(A, 1.0, 1.0, float(p[package.statements.s])))
 
 
 @pytest.mark.parametrize("offset, stability", [(Fraction(507, 10 ** 11), "stable"), (Fraction(1, 10 ** 10), "stable"),
@@ -134,7 +134,7 @@ def test_scheeffer_vii_viii_keeps_the_edge_up_root_next_to_its_pitchfork(offset,
     # section), where (103b) has a triple root.  A sign scan on a grid lost the root at 9/32 + 5.07e-9 and
     # 9/32 - 5e-9 (docs/atlas.md); exact isolation keeps it on both sides, with (117) deciding the change.
     scene = Scene(body="box", density=Fraction(9, 32) + offset, dims=(Fraction(1), Fraction(1), Fraction(2)))
-    edge_up = [p for p in v._predict(scene) if abs(abs(p.up[0]) - abs(p.up[1])) < 1e-12 and p.up[2] == 0]
+    edge_up = [p for p in v.predict(scene) if abs(abs(p.up[0]) - abs(p.up[1])) < 1e-12 and p.up[2] == 0]
     assert [p.stability for p in edge_up] == [stability]
     assert "117" in edge_up[0].printed
 
@@ -182,8 +182,9 @@ _IX_MUTATIONS = {
     "T_147": ("t-of-s", (s_,), 1, None, lambda m: (120 - 128 * s_) / 27, _tables(R(73, 100), R(501, 500))),
     # (156) n_1 - 1/100: the same change of row
     "N1_156": ("156", (t_,), 1, 0, lambda m: sp.Matrix([m[0] - sp.Rational(1, 100), m[1]]), _tables(R(73, 100), R(501, 500))),
-    # (136) -4 n sigma^2 -> -5 n sigma^2: the root z (and its tilt) at s = 7/10, a/b = 51/50 moves
-    "F_136": ("136", (z_, a_, b_, s_), 1, None, lambda m: m - IXS.n * IXS.sg ** 2, _tables(R(7, 10), R(51, 50))),
+    # (136) -4 n sigma^2 -> -5 n sigma^2: the root z (and its tilt) at s = 7/10, a/b = 51/50 moves (the quartic's
+    # terms, compiled from the reading)
+    "TERMS_136": ("136", (z_, a_, b_, s_), 1, None, lambda m: m - IXS.n * IXS.sg ** 2, _tables(R(7, 10), R(51, 50))),
     # (a/b)^2 > 1/(6 s(1-s)) -> 1/(5 s(1-s)): at s = 4/5, a/b = 21/20 (n = 1.1025) the oblique of the third region goes
     "UNSTABLE_3": ("unstable-3", (a_, b_, s_), 0, None, lambda m: (a_ / b_) ** 2 - 1 / (5 * s_ * (1 - s_)),
                    _tables(R(4, 5), R(21, 20))),
@@ -212,9 +213,10 @@ _IX_MUTATIONS = {
 def test_scheeffer_ix_tables_follow_a_mutated_reading(attribute, monkeypatch):
     name, symbols, member, row, change, predict = _IX_MUTATIONS[attribute]
     before = predict()
-    monkeypatch.setattr(IX, attribute, _ix_mutated(name, member, change).evaluator(name, symbols, member, row=row)
-                        if attribute != "BOUND_165" else IX._case_above_half(name, symbols, member,
-                                                                             _ix_mutated(name, member, change)))
+    mutated = _ix_mutated(name, member, change)
+    monkeypatch.setattr(IX, attribute, IX._case_above_half(name, symbols, member, mutated) if attribute == "BOUND_165"
+                        else IX._terms_of(mutated.evaluator(name, symbols, member)) if attribute == "TERMS_136"
+                        else mutated.evaluator(name, symbols, member, row=row))
     assert predict() != before
 
 

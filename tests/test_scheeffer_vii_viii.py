@@ -201,7 +201,7 @@ SCENES = [Scene("cube", Fraction(71, 98), (Fraction(1),) * 3), Scene("cube", Fra
 
 @pytest.mark.parametrize("scene", SCENES, ids=lambda sc: f"{sc.body}-{sc.density}")
 def test_predicted_positions_are_clipped_equilibria_with_the_predicted_stability(scene):
-    preds = STATEMENTS.d.predictor.predict(scene)
+    preds = PREDICTORS.predict(scene)
     assert preds and all(set(p.printed) <= {q.name for q in STATEMENTS.d.printed} for p in preds)
     body = box(*[float(q) for q in scene.dims])
     for p in preds:
@@ -216,12 +216,12 @@ def test_predicted_positions_are_clipped_equilibria_with_the_predicted_stability
 def test_predictions_pinned():
     # the cube at s = 71/98: the designed second-region position tan phi = 4/3 (one representative, here seen from
     # the x axis as tan phi = 3/4) and the diagonal one at 45 deg; both labile by (117)
-    ups = sorted(tuple(round(abs(q), 12) for q in p.up) for p in PREDICTORS._predict(SCENES[0]))
+    ups = sorted(tuple(round(abs(q), 12) for q in p.up) for p in PREDICTORS.predict(SCENES[0]))
     assert ups == [(0.707106781187, 0.707106781187, 0.0), (0.8, 0.6, 0.0)]
     # the box 9/10 x 1 x 1 at s = 2/3: the third-region position tan phi = 5/2 of (122), as designed (box3-eq)
-    third = [p for p in PREDICTORS._predict(SCENES[2]) if p.printed[0] == "118"]
+    third = [p for p in PREDICTORS.predict(SCENES[2]) if p.printed[0] == "118"]
     assert len(third) == 1 and third[0].up[0] == pytest.approx(5 / math.sqrt(29), rel=1e-12)
-    assert PREDICTORS._predict(Scene("prism", Fraction(1, 2), (Fraction(1), Fraction(1)), sides=6)) == []
+    assert PREDICTORS.predict(Scene("prism", Fraction(1, 2), (Fraction(1), Fraction(1)), sides=6)) == []
 
 
 def test_claim_s_upper_counterexample():

@@ -16,6 +16,13 @@ clipped immersed part and its two pieces at the lower end of the water line, the
 crosses them, the second-order coefficient interpolated from the clipped potential at small heels, the density
 thresholds as zeros of the clipped metacentric height.
 """
-from .statements import DERIVATION
-
 __all__ = ["DERIVATION"]
+
+
+def __getattr__(name):
+    """``DERIVATION`` from the statements, imported when first asked for: a scene imports the predictors (of
+    compiled readings) alone."""
+    if name == "DERIVATION":
+        from .statements import DERIVATION
+        return DERIVATION
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,14 +1,18 @@
-"""The Hasáb solution read at a scene's numbers: the long square prism lying on a face and standing upright."""
+"""The Hasáb solution read at a scene's numbers: the long square prism lying on a face and standing upright.
+
+Compiled readings (:mod:`symfloat.model.compiled`): a scene evaluates them without the statements."""
 import math
 from fractions import Fraction
 
-from symfloat import Prediction
-
-from .statements import d, l, rho
+from symfloat.model.compiled import Readings, reading
+from symfloat.model.prediction import Prediction
 
 # ---- predictions: the long square prism lying on a face, and standing upright (the remark) ---------------------
-CONDITION = d.evaluator("condition", (rho,), 1)        # sign(rho^2 - rho + 1/6), the printed condition
-REMARK = d.evaluator("remark", (l,), 1, corrected=True)  # (3l + sqrt(9l^2 - 6))/(6l), the radical restored
+READINGS = Readings(__file__, __package__, {
+    "CONDITION": reading("condition", ("rho",), 1),                # sign(rho^2 - rho + 1/6), the printed condition
+    "REMARK": reading("remark", ("l",), 1, corrected=True),       # (3l + sqrt(9l^2 - 6))/(6l), the radical restored
+})
+CONDITION, REMARK = READINGS["CONDITION"], READINGS["REMARK"]
 
 
 def _lying(rv, up):
@@ -54,4 +58,4 @@ def predict(scene):
     return []
 
 
-d.predicts(("section", "box"), predict)
+BODIES = ("section", "box")

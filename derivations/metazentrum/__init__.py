@@ -14,6 +14,13 @@ immersed volume, centres of buoyancy and gravity, the waterplane's I_min / V -
 (G - B) upright, the righting arm at small heels extrapolated to phi -> 0, and
 the share of the volume below the draught.
 """
-from .statements import DERIVATION
-
 __all__ = ["DERIVATION"]
+
+
+def __getattr__(name):
+    """``DERIVATION`` from the statements, imported when first asked for: a scene imports the predictors (of
+    compiled readings) alone."""
+    if name == "DERIVATION":
+        from .statements import DERIVATION
+        return DERIVATION
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,13 +1,15 @@
-"""The metacentre lesson read at a scene's numbers: the box upright on each edge, stable iff e > 0."""
+"""The metacentre lesson read at a scene's numbers: the box upright on each edge, stable iff e > 0 (compiled
+readings, :mod:`symfloat.model.compiled`)."""
 from fractions import Fraction
 
-from symfloat import Prediction
-from symfloat.model.prediction import box_uprights
-
-from .statements import b, c, d, dv
+from symfloat.model.compiled import Readings, reading
+from symfloat.model.prediction import Prediction, box_uprights
 
 # ---- predictions: the box floating upright ------------------------------------------------------------------------
-E_PRINTED = dv.evaluator("e", (b, c, d), 1)     # e = b^2/(6c^2) - d/(2c) (1 - d/(2c)) as printed
+READINGS = Readings(__file__, __package__, {
+    "E_PRINTED": reading("e", ("b", "c", "d"), 1),      # e = b^2/(6c^2) - d/(2c) (1 - d/(2c)) as printed
+})
+E_PRINTED = READINGS["E_PRINTED"]
 
 
 def predict(scene):
@@ -35,4 +37,4 @@ def predict(scene):
     return out
 
 
-dv.predicts(("box",), predict)
+BODIES = ("box",)

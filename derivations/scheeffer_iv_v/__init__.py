@@ -29,6 +29,13 @@ zeros of the righting arm or of a base's height above the water
 (``FloatingRootWitness``); the draught comes from the submerged volume, never from the
 plane through EF.
 """
-from .statements import DERIVATION
-
 __all__ = ["DERIVATION"]
+
+
+def __getattr__(name):
+    """``DERIVATION`` from the statements, imported when first asked for: a scene imports the predictors (of
+    compiled readings) alone."""
+    if name == "DERIVATION":
+        from .statements import DERIVATION
+        return DERIVATION
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,14 +1,16 @@
-"""Scheeffer IV-V read at a scene's numbers: the upright and the tilted positions of a right prism."""
+"""Scheeffer IV-V read at a scene's numbers: the upright and the tilted positions of a right prism (compiled
+readings, :mod:`symfloat.model.compiled`)."""
 import math
 from fractions import Fraction
 
-import sympy as sp
-
-from symfloat import Prediction
 from symfloat.geometry.floating import polygon_moments
-from symfloat.model.prediction import box_uprights
+from symfloat.model.compiled import Readings, exact_sqrt, reading
+from symfloat.model.prediction import Prediction, box_uprights
 
-from .statements import F1, T1, b, d, s, ubot, utop
+READINGS = Readings(__file__, __package__, {
+    "TAN2_54": reading("54", ("F1", "b", "T1", "s"), 1),        # (54) as read: tg^2 phi_1
+    "BOUND_55": reading("55", ("b", "s", "utop", "ubot"), 1),   # (55) as read: the bound on tg phi_1
+})
 
 
 # ---- predictions: the upright and the tilted positions of the first rotation region (IV, V) -------------------------
@@ -26,8 +28,7 @@ def _upright(T_min, V_, e_, up):
                       "stable" if g > 0 else "unstable" if g < 0 else None, note="upright, (18) with the least moment")
 
 
-TAN2_54 = d.evaluator("54", (F1, b, T1, s), 1)                 # (54) as read: tg^2 phi_1
-BOUND_55 = d.evaluator("55", (b, s, utop, ubot), 1)            # (55) as read: the bound on tg phi_1
+TAN2_54, BOUND_55 = READINGS["TAN2_54"], READINGS["BOUND_55"]
 
 
 def _first_region_tilt(F_, T_, h_, sv, um2):
@@ -35,7 +36,7 @@ def _first_region_tilt(F_, T_, h_, sv, um2):
     for s < 1/2), um2 = u_m^2, both evaluated from their readings (exactly for a box, whose numbers are
     Fractions): the tilt phi_1, or None when there is none in the first rotation region."""
     t2 = TAN2_54(F_, h_, T_, sv)
-    um = sp.sqrt(sp.Rational(um2.numerator, um2.denominator)) if isinstance(um2, Fraction) else math.sqrt(um2)
+    um = exact_sqrt(um2) if isinstance(um2, Fraction) else math.sqrt(um2)
     return math.atan(math.sqrt(float(t2))) if 0 < t2 and t2 <= BOUND_55(h_, sv, um, um) ** 2 else None
 
 
@@ -96,4 +97,4 @@ def predict(scene):
     return []
 
 
-d.predicts(("box", "prism"), predict)
+BODIES = ("box", "prism")

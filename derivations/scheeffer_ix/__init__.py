@@ -44,6 +44,13 @@ raises the corner D = (a/2, b/2); h = du/dphi.  The predictor (``tables_predicti
 printed tables for any box and any edge as axis: it decides with the readings of the printed conditions, tilts
 and the quartic (``Derivation.evaluator``), exactly.
 """
-from .statements import DERIVATION
-
 __all__ = ["DERIVATION"]
+
+
+def __getattr__(name):
+    """``DERIVATION`` from the statements, imported when first asked for: a scene imports the predictors (of
+    compiled readings) alone."""
+    if name == "DERIVATION":
+        from .statements import DERIVATION
+        return DERIVATION
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -11,6 +11,13 @@ F, whose volume, centroid and righting arm follow from the area, first and secon
 find equilibria as roots of the measured righting arm; the first-region model of the triangle (column
 heights not cut by the bases) is the clipped prism extended on either side with a neutral lower part.
 """
-from .statements import DERIVATION
-
 __all__ = ["DERIVATION"]
+
+
+def __getattr__(name):
+    """``DERIVATION`` from the statements, imported when first asked for: a scene imports the predictors (of
+    compiled readings) alone."""
+    if name == "DERIVATION":
+        from .statements import DERIVATION
+        return DERIVATION
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,10 +1,10 @@
-"""Scheeffer VI.A-B read at a scene's numbers: the regular triangular prism and the circular cylinder."""
+"""Scheeffer VI.A-B read at a scene's numbers: the regular triangular prism and the circular cylinder (compiled
+readings, :mod:`symfloat.model.compiled`)."""
 import math
 from fractions import Fraction
 
-from symfloat import Prediction
-
-from .statements import a, b, d, r, s
+from symfloat.model.compiled import Readings, reading
+from symfloat.model.prediction import Prediction
 
 
 # =====================================================================================================
@@ -15,13 +15,17 @@ def _tilted(phi_, toward_x):
     return (math.copysign(math.sin(phi_), toward_x), 0.0, math.cos(phi_))
 
 
-MARGIN_65 = d.evaluator("65-I", (a, b, s), 0)          # (65) I: (a/b)^2 - 12 s(1-s), equality counted stable
-TAN2_65 = d.evaluator("65-tan", (a, b, s), 1)          # (65): tg^2 phi_1 = 24 (b/a)^2 s(1-s) - 2
-RING_65 = d.evaluator("65-II", (a, b, s), 0)           # (65) II: rows 12s(1-s) - q, q - (62) upper, q - (62) lower
-ARC_64 = d.evaluator("64", (a, b, s), 0)               # (64): rows 6(1-s)(3s-1) - q, 6s(2-3s) - q
-MARGIN_70 = d.evaluator("70", (r, b, s), 0)            # (69)/(70): (2r/b)^2 - 8 s + 8 s^2
-LIMIT_73 = d.evaluator("73", (r, b, s), 0)             # (73): rows 8s(1-s) - K2, K2 - 2(1-s)(5s-1), K2 - 2s(4-5s)
-TAN2_72A = d.evaluator("72a-tan", (r, b, s), 1)        # (72a): tg^2 phi_1 = 16 (b/2r)^2 s(1-s) - 2
+READINGS = Readings(__file__, __package__, {
+    "MARGIN_65": reading("65-I", ("a", "b", "s"), 0),     # (65) I: (a/b)^2 - 12 s(1-s), equality counted stable
+    "TAN2_65": reading("65-tan", ("a", "b", "s"), 1),     # (65): tg^2 phi_1 = 24 (b/a)^2 s(1-s) - 2
+    "RING_65": reading("65-II", ("a", "b", "s"), 0),      # (65) II: rows 12s(1-s) - q, q - (62) upper, q - (62) lower
+    "ARC_64": reading("64", ("a", "b", "s"), 0),          # (64): rows 6(1-s)(3s-1) - q, 6s(2-3s) - q
+    "MARGIN_70": reading("70", ("r", "b", "s"), 0),       # (69)/(70): (2r/b)^2 - 8 s + 8 s^2
+    "LIMIT_73": reading("73", ("r", "b", "s"), 0),        # (73): rows 8s(1-s) - K2, K2 - 2(1-s)(5s-1), K2 - 2s(4-5s)
+    "TAN2_72A": reading("72a-tan", ("r", "b", "s"), 1),   # (72a): tg^2 phi_1 = 16 (b/2r)^2 s(1-s) - 2
+})
+MARGIN_65, TAN2_65, RING_65, ARC_64 = (READINGS[k] for k in ("MARGIN_65", "TAN2_65", "RING_65", "ARC_64"))
+MARGIN_70, LIMIT_73, TAN2_72A = (READINGS[k] for k in ("MARGIN_70", "LIMIT_73", "TAN2_72A"))
 
 
 def _triangle_predictions(av, bv, sv):
@@ -77,4 +81,4 @@ def predict(scene):
     return []
 
 
-d.predicts(("prism", "cylinder"), predict)
+BODIES = ("prism", "cylinder")

@@ -25,6 +25,13 @@ direction (cos w, sin w, 0), w (Scheeffer's omega) measured from a side, 0 < w <
 vector is u = (sin phi sin w, -sin phi cos w, cos phi) and xi = -x sin w + y cos w, so the points
 with large xi sink.  Angles are read in radians (45 deg = pi/4).
 """
-from .statements import DERIVATION
-
 __all__ = ["DERIVATION"]
+
+
+def __getattr__(name):
+    """``DERIVATION`` from the statements, imported when first asked for: a scene imports the predictors (of
+    compiled readings) alone."""
+    if name == "DERIVATION":
+        from .statements import DERIVATION
+        return DERIVATION
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

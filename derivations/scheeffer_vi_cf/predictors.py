@@ -1,10 +1,19 @@
-"""Scheeffer VI.C-F read at a scene's numbers: the square prism, the cube and the regular n-gon prism."""
+"""Scheeffer VI.C-F read at a scene's numbers: the square prism, the cube and the regular n-gon prism (compiled
+readings, :mod:`symfloat.model.compiled`)."""
 import math
 from fractions import Fraction
 
-from symfloat import Prediction
+from symfloat.model.compiled import Readings, reading
+from symfloat.model.prediction import Prediction
 
-from .statements import F, a, b, d, n, om, r, s
+READINGS = Readings(__file__, __package__, {
+    "MARGIN_75": reading("75", ("a", "b", "s"), 0),
+    "TAN_78B": reading("78b", ("a", "b", "s"), 1),
+    "BOUND_78D": reading("78d", ("a", "b", "s"), 1),
+    "T1_87": reading("87-cos2", ("r", "n"), 1),            # (87): T_1 of the regular n-gon of circumradius r
+    "TAN2_54": reading("54-again", ("F", "b", "s", "n"), 1),  # (54) again (VI.F): tg^2 phi_1 at the base area F
+    "UM_88": reading("88", ("r", "n", "om"), 1),            # (88): u_m at the axis angle omega
+})
 
 
 # ==== predictions: where the printed formulas put the square prism, the cube and the n-gon prism ======
@@ -56,14 +65,8 @@ def _square_predictions(av, bv, sv, up_of, cube):
     return out                                           # (78e): no oblique position in the first domain
 
 
-MARGIN_75 = d.evaluator("75", (a, b, s), 0)
-TAN_78B = d.evaluator("78b", (a, b, s), 1)
-BOUND_78D = d.evaluator("78d", (a, b, s), 1)
-
-
-T1_87 = d.evaluator("87-cos2", (r, n), 1)            # (87): T_1 of the regular n-gon of circumradius r
-TAN2_54 = d.evaluator("54-again", (F, b, s, n), 1)   # (54) again (VI.F): tg^2 phi_1 at the base area F
-UM_88 = d.evaluator("88", (r, n, om), 1)             # (88): u_m at the axis angle omega
+MARGIN_75, TAN_78B, BOUND_78D = READINGS["MARGIN_75"], READINGS["TAN_78B"], READINGS["BOUND_78D"]
+T1_87, TAN2_54, UM_88 = READINGS["T1_87"], READINGS["TAN2_54"], READINGS["UM_88"]
 
 
 def _ngon_predictions(n_, av, bv, sv):
@@ -114,4 +117,4 @@ def predict(scene):
     return []
 
 
-d.predicts(("cube", "square-box", "prism"), predict)
+BODIES = ("cube", "square-box", "prism")

@@ -47,6 +47,13 @@ Predictions: boxes and cubes turned about an axis parallel to an edge (the dry p
 second-region positions from (103a), (103b) with their stability from (117), the third-region ones from
 (121b), (122) (no stability: the text gives none); s < 1/2 by the exchange of dry and wet parts.
 """
-from .statements import DERIVATION
-
 __all__ = ["DERIVATION"]
+
+
+def __getattr__(name):
+    """``DERIVATION`` from the statements, imported when first asked for: a scene imports the predictors (of
+    compiled readings) alone."""
+    if name == "DERIVATION":
+        from .statements import DERIVATION
+        return DERIVATION
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

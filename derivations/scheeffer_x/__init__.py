@@ -43,6 +43,13 @@ vertex counts, metacentric heights of the clipped cube, and equilibria found as 
 of the clipped potential u.(G - B) along the diagonal plane (its derivative is (du/dtheta).(G - B)).
 Angles in radians.
 """
-from .statements import DERIVATION
-
 __all__ = ["DERIVATION"]
+
+
+def __getattr__(name):
+    """``DERIVATION`` from the statements, imported when first asked for: a scene imports the predictors (of
+    compiled readings) alone."""
+    if name == "DERIVATION":
+        from .statements import DERIVATION
+        return DERIVATION
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

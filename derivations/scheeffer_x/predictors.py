@@ -1,24 +1,37 @@
-"""Scheeffer X read at a scene's density: the triangle, the hexagon and the pentagons of (171) for the cube."""
+"""Scheeffer X read at a scene's density: the triangle, the hexagon and the pentagons of (171) for the cube
+(compiled readings, :mod:`symfloat.model.compiled`)."""
+from fractions import Fraction
+
 import numpy as np
-import sympy as sp
 
 from symfloat.engine.roots import illinois
+from symfloat.model.compiled import Readings, reading
 from symfloat.model.prediction import Prediction
 
-from .statements import d, half, s, xl
-
 # ==== prediction ==========================================================================================
-# (171) as read, left minus right side with the printed 2T and z, for numeric x, s: floats or numpy arrays alike
-f_num = d.evaluator("171", (xl, s), 1, row=2)
-S172 = float(d.evaluator("172-number", (), 0)())      # (172): (4 + sqrt 2)/7, as read
+READINGS = Readings(__file__, __package__, {
+    "f_num": reading("171", ("xl", "s"), 1, row=2),   # (171) as read, left minus right side with the printed 2T, z
+    "S172": reading("172-number", (), 0),             # (172): (4 + sqrt 2)/7, as read
+})
+f_num = READINGS["f_num"]                             # for numeric x, s: floats or numpy arrays alike
+S172 = float(READINGS["S172"]())
+half = Fraction(1, 2)
+
+
+GRID = np.arange(1, 201) / 200
+ROUNDING = 1e-12    # float64 rounds (171) on the grid by far less (terms below 10, a few dozen operations: < 1e-14)
 
 
 def _roots_171_float(q):
+    """The roots of (171) in x on a grid of 1/200 at the float density *q*, refined by Illinois: the sign of each
+    grid value decided in float64 beyond :data:`ROUNDING`, exactly (the float arguments by their binary values)
+    within it, so that a root on a grid point (x = 1 at s = 5/6) is decided by the print and not by rounding."""
     f = lambda t_: f_num(t_, q)  # noqa: E731
-    grid = np.arange(1, 201) / 200
-    positive = f_num(grid, q) > 0
-    return [illinois(f, float(grid[i]), float(grid[i + 1]), 1e-12)
-            for i in range(len(grid) - 1) if positive[i] != positive[i + 1]]
+    values = f_num(GRID, q)
+    positive = [bool(v > 0) if abs(v) > ROUNDING else f_num(Fraction(float(g)), Fraction(q)) > 0
+                for g, v in zip(GRID, values)]
+    return [illinois(f, float(GRID[i]), float(GRID[i + 1]), 1e-12)
+            for i in range(len(GRID) - 1) if positive[i] != positive[i + 1]]
 
 
 def predict(scene):
@@ -27,17 +40,17 @@ def predict(scene):
         return []
     sv = scene.density
     out = []
-    if sv > sp.Rational(5, 6) or sv < sp.Rational(1, 6):
+    if sv > Fraction(5, 6) or sv < Fraction(1, 6):
         out.append(Prediction(("five-sixths", "tri-symmetric", "tri-unstable"), (1.0, 1.0, 1.0), "unstable",
                               note="triangular waterplane across a diagonal, always unstable"))
-    elif sv == sp.Rational(1, 2):
+    elif sv == half:
         out.append(Prediction(("hex-symmetric", "hex-half"), (1.0, 1.0, 1.0), "stable",
                               note="regular hexagon, stable (Schülen)"))
     else:
         out.append(Prediction(("hex-symmetric", "173-only-45"), (1.0, 1.0, 1.0), None,
                               note="a hexagonal equilibrium lies across a diagonal; the text leaves its stability "
                                    "open"))
-    if sv != sp.Rational(1, 2):
+    if sv != half:
         q = float(sv) if sv > half else 1 - float(sv)
         names = ("171", "172", "pentagon-exists", "pentagon-stable") if sv > half else \
             ("171", "dual-threshold", "dual-exists", "pentagon-stable")
@@ -59,4 +72,4 @@ def predict(scene):
     return out
 
 
-d.predicts(("cube",), predict)
+BODIES = ("cube",)

@@ -17,8 +17,7 @@ import math
 
 import numpy as np
 
-from ..model.derivation import Printed
-from ..registry import predicting, predictor
+from ..registry import predicting, reader
 from ..solver.bodies import polyhedron
 from ..solver.local import local
 from ..solver.solve import Solution, body_scale
@@ -48,11 +47,12 @@ def _on_ring(scene, predicted, eq) -> bool:
     return np.linalg.norm(loc.gradient) <= 1e-7 * scale and abs(loc.U - eq.potential) <= 1e-7 * scale
 
 
-def declared_verdict(p: Printed) -> str:
-    """The verdict a derivation declares for printed formula *p* (what its proof checks confirm)."""
-    if p.erratum is not None:
+def declared_verdict(erratum: bool, lost) -> str:
+    """The verdict a derivation declares for a printed formula with an erratum or not, lost or not (what its
+    proof checks confirm)."""
+    if erratum:
         return "erratum"
-    return "unverifiable" if p.lost else "verified"
+    return "unverifiable" if lost else "verified"
 
 
 def cover(solution: Solution) -> tuple[list[str], list[dict]]:
@@ -63,14 +63,14 @@ def cover(solution: Solution) -> tuple[list[str], list[dict]]:
     group = symmetry_group(scene)
     unmatched = []
     for did in ids:
-        d = predictor(did)
-        for pred in d.predictor.predict(scene):
-            printed = [p for p in d.printed if p.name in pred.printed]
-            entry = {"derivation": did, "printed": [d.formula_id(p) for p in printed],
-                     "locators": sorted({p.locator for p in printed}),
-                     "verdicts": sorted({declared_verdict(p) for p in printed}),
-                     "corrections": [{"locator": p.locator, "corrected": p.erratum.corrected}
-                                     for p in printed if p.erratum is not None],
+        d = reader(did)
+        for pred in d.predict(scene):
+            printed = [p for p in d.printed if p["name"] in pred.printed]
+            entry = {"derivation": did, "printed": [f"{did}/{p['name']}" for p in printed],
+                     "locators": sorted({p["locator"] for p in printed}),
+                     "verdicts": sorted({declared_verdict(p["erratum"], p["lost"]) for p in printed}),
+                     "corrections": [{"locator": p["locator"], "corrected": p["corrected"]}
+                                     for p in printed if p["erratum"]],
                      "predicted_up": [float(x) for x in pred.up], "predicted_stability": pred.stability,
                      "predicted_family": pred.family, "note": pred.note}
             best = min(solution.equilibria, key=lambda e: _distance(scene, group, pred.up, e), default=None)

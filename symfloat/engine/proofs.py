@@ -26,7 +26,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from ..errors import EnvironmentProblem
+from .environment import slowdown
 
 __all__ = ["Certificate", "ProofBook", "claim_digest", "proofs_file", "slowdown"]
 
@@ -71,20 +71,6 @@ def claim_digest(pairs) -> str:
         h.update(sp.sstr(b).encode())
         h.update(b"\x00;\x00")
     return h.hexdigest()[:24]
-
-
-def slowdown() -> float:
-    """``$SYMFLOAT_SLOWDOWN``: a factor by which every search time limit is divided,
-    to try the engine as if on a machine that much slower (default 1).  Replayed
-    certificates use no time limit, so no verdict can depend on it."""
-    raw = os.environ.get("SYMFLOAT_SLOWDOWN", "")
-    try:
-        factor = float(raw) if raw and len(raw) <= 40 and raw.isascii() else 1.0 if not raw else None
-    except ValueError:
-        factor = None
-    if factor is None or not factor >= 1:
-        raise EnvironmentProblem(f"SYMFLOAT_SLOWDOWN must be a number >= 1, not {raw[:40]!r}")
-    return factor
 
 
 def proofs_file(derivation_id: str) -> Path:

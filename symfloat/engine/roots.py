@@ -15,7 +15,6 @@ from __future__ import annotations
 from fractions import Fraction
 
 import mpmath
-import sympy as sp
 
 __all__ = ["illinois", "grid_roots", "polynomial_roots", "polynomial_terms", "polynomial_at"]
 
@@ -98,6 +97,7 @@ def polynomial_roots(poly, eps) -> list:
     at the working precision: isolated exactly by SymPy's isolating intervals, rational roots exact, each
     other root refined by :func:`illinois` to relative tolerance *eps* in its interval.  Rational roots are
     divided out first, so that no root lies on an interval's end and every interval has a sign change."""
+    import sympy as sp                  # here, not at the top: a scene's predictors use illinois without SymPy
     mp = lambda q: mpmath.mpf(int(q.p)) / int(q.q)  # noqa: E731
     rational = [lo for (lo, hi), _ in poly.intervals() if lo == hi]
     for r in rational:
@@ -111,12 +111,14 @@ def polynomial_terms(expr, unknown, parameters) -> tuple:
     """The terms ``((k, e_1, ..., e_m), c)`` of *expr*, a polynomial in *unknown* and the symbols *parameters*
     with rational coefficients: ``c unknown^k p_1^e_1 ... p_m^e_m``, ``c`` a Fraction.  Built once; evaluated
     at exact parameter values by :func:`polynomial_at`."""
+    import sympy as sp
     return tuple((m, Fraction(int(c.p), int(c.q))) for m, c in sp.Poly(expr, unknown, *parameters).terms())
 
 
 def polynomial_at(terms, unknown, values):
     """The polynomial in *unknown* over QQ (a SymPy ``Poly``) of *terms* (:func:`polynomial_terms`) at the exact
     parameter *values* (ints or Fractions, in the order of the parameters)."""
+    import sympy as sp
     coefficients = {}
     for (k, *powers), c in terms:
         for q, e in zip(values, powers):

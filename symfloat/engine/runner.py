@@ -30,7 +30,8 @@ from ..registry import files, load, manifest, requires, select
 from .cache import CacheError, ReportCache
 from .check import DerivationReport, Unsound, check_derivation, rejudged
 from .key import derivation_key
-from .proofs import ProofBook, slowdown
+from .environment import MAX_WORKERS, check_environment, default_workers
+from .proofs import ProofBook
 
 __all__ = ["verify", "derivation_keys", "Progress", "default_workers", "check_environment", "worker_pool", "completed",
            "WorkerLost", "MAX_WORKERS"]
@@ -63,28 +64,6 @@ class Progress:
             how = "cached" if report.cached else f"{report.seconds:.1f} s"
             bad = f", {len(report.failures)} FAILURES" if report.failures else ""
             print(f" {how}{bad}", file=self.stream, flush=True)
-
-
-MAX_WORKERS = 64
-
-
-def default_workers() -> int:
-    """Processes for checking: ``$SYMFLOAT_WORKERS`` (1 to :data:`MAX_WORKERS`), else the usable cores
-    (at most 4).  Any other value of the variable is an environment problem (exit status 2)."""
-    env = os.environ.get("SYMFLOAT_WORKERS", "")
-    if env:
-        if not (env.isascii() and env.isdigit() and len(env) <= 2 and 1 <= int(env) <= MAX_WORKERS):
-            raise EnvironmentProblem(f"SYMFLOAT_WORKERS must be a whole number from 1 to {MAX_WORKERS}, "
-                                     f"not {env[:40]!r}")
-        return int(env)
-    return max(1, min(4, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1))
-
-
-def check_environment() -> None:
-    """The environment variables of checking (``SYMFLOAT_WORKERS``, ``SYMFLOAT_SLOWDOWN``) are usable, else
-    :class:`~symfloat.errors.EnvironmentProblem` (exit status 2): the command line asks before any work."""
-    default_workers()
-    slowdown()
 
 
 def _end_with_parent(parent: int) -> None:
