@@ -29,6 +29,8 @@ definition, e.g. the square's moment for the generic moment):
   exactly when a condition holds: both implications between the condition and the sign of the
   stability, and, for a condition stated with >= or <=, its equality case read at the point where it
   holds (the stability vanishes there, the position is neutral, so "stable if z_M >= z_G" is refuted);
+  ``at`` names the body the sentence speaks of where one definition serves several (Scheeffer VI's
+  T/V - e_1 with the triangle's or the cylinder's moment and displacement);
 * :class:`Called` -- the equilibrium at a stated position is called stable (neutral, unstable): the
   sign of the stability there, ``> 0``, ``= 0`` or ``< 0`` (stable where the stability vanishes is
   refuted: the position is neutral).
@@ -209,17 +211,21 @@ class DecreasesWith(GrowsWith):
 
 @dataclass(frozen=True, init=False)
 class StableIff:
-    """The equilibrium has the verdict of the sentence's words exactly when *condition* holds."""
+    """The equilibrium has the verdict of the sentence's words exactly when *condition* holds (*at*: the
+    sentence's particulars put into the stability, e.g. the body's moment and displacement)."""
 
     condition: object
     domain: tuple = ()
+    at: tuple = ()
     verdicts = True
 
-    def __init__(self, condition, domain=None):
+    def __init__(self, condition, domain=None, at=None):
         object.__setattr__(self, "condition", condition)
         object.__setattr__(self, "domain", tuple((domain or {}).items()))
+        object.__setattr__(self, "at", tuple((at or {}).items()))
 
     def reading(self, s, derived, verdict):
+        s = _at(s, dict(self.at))
         said = _signed(s, verdict)
         clauses = [sp.Implies(self.condition, said), sp.Implies(said, self.condition)]
         clauses += _equality_case(self.condition, s, verdict, derived)
