@@ -639,19 +639,25 @@ d.says("51-verdict", "(51)", SENTENCE_51, "Gleichgewicht stabil", Called(at={**I
                        objection=("A family of equilibria along which the body can be turned without work is the "
                                   "usual sense of 'stable' for a body that cannot capsize: no turn moves it away "
                                   "from an equilibrium, and the law after (52) calls every position of the family "
-                                  "'stabile Gleichgewichtslagen'. Scheeffer's 'stabil' is 'not labile', and the "
-                                  "sentence itself names the axis $G_2 H_2$ where the moment is zero."),
+                                  "'stabile Gleichgewichtslagen'. Scheeffer's 'stabil' is 'not labile', used so "
+                                  "throughout: the law of VI ('so bleibt es in allen Lagen im stabilen "
+                                  "Gleichgewicht') and VI.A ('ohne seine Stabilität zu verlieren') say the same of "
+                                  "the family; and the sentence itself names the axis $G_2 H_2$ where the moment is "
+                                  "zero."),
                        answer=("The sentence draws 'stabil' from the signs it has just stated, including the zero, "
                                "and section I defines stable by a couple that turns the body back ($V_1 m > 0$, "
                                "(2)), labile by one that turns it further; about $G_2 H_2$ there is neither, which "
-                               "is the neutral case the text never names. The reading 'not labile' is the period's "
-                               "loose usage and the sentence does state the zero, so medium, not high.")),
+                               "is the neutral case the text never names, and its own condition (43), 'für jedes "
+                               "der Trägheitsmomente T', is strict. The laws speak of the family's positions, stable "
+                               "against every turn that leaves the family; here the verdict is drawn from a list of "
+                               "signs that contains the zero. The reading 'not labile' is the author's consistent "
+                               "usage and the sentence does state the zero, so medium, not high.")),
        note="Read as the verdict about the axis G_2 H_2 (mu = 90 deg), where the sentence itself puts the zero: the "
             "sign of the stability there (the other axes: 51-claim, 51-moment).")
 d.says("51-moment", "(51)", SENTENCE_51, "Drehungsmoment", Compares(">", 0, at={phi: phi1}),
        erratum=Erratum("claim", "low",
                        r"\text{In der Gleichgewichtslage } (\varphi_1) \text{ ist also die Stabilität } T - "
-                       r"\frac{T_1}{\cos\varphi_1} \text{ für jede \ldots Drehungsachse positiv}",
+                       r"\frac{T_1}{\cos\varphi_1} \text{ für jede } \ldots \text{ Drehungsachse positiv}",
                        (r"The Drehungsmoment of IV is the righting moment (12), $V_1 m$, which the text has just set to "
                         r"zero to find the position: at an equilibrium it vanishes for every axis (the first "
                         r"condition (27) for EF, the second (31) for the axis across it). What the sentence finds "
