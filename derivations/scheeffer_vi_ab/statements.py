@@ -293,6 +293,12 @@ d.step("righting-arm", Eq(mA, (cphi * Mx + sphi * (Mz - Vt * b / 2)) / Vt), "def
             "w = (cos phi, sin phi) in the (xi, z) plane; positive = restoring", result=mA)
 d.step("righting-moment", (V1 * mA, sphi * ((1 + tp ** 2 / 2) * T1 - V1 * e1)), "algebra",
        uses=("righting-arm", "tilted-volume", "tilted-moment-xi", "tilted-moment-z"), note="(12)")
+BOUNDARY = b * sp.sqrt(12 * s * (1 - s))              # a on the boundary of (57): the stability T_1/V_1 - e_1 is 0
+d.step("boundary-restoring", (sp.Subs(V1 * mA, a, BOUNDARY), sp.Subs(sphi * T1 * tp ** 2 / 2, a, BOUNDARY)),
+       "algebra", uses=("righting-moment", "metacentric-height"),
+       note="on the boundary (a/b)^2 = 12 s (1 - s) the second variation vanishes, but the moment (12) is "
+            "sin(phi) T_1 tg^2(phi)/2 > 0 for every tilt of the first region: the upright position turns back "
+            "(at third order), stable, not neutral, as (65) I counts it with '>='")
 d.step("tilted-equilibrium", Eq(tan1, sp.sqrt(-2 * a ** 2 - 24 * b ** 2 * s ** 2 + 24 * s * b ** 2) / a), "definition",
        note="the positive root tau of the bracket of righting-moment (tau > 0 was assumed; the step "
             "tilted-equilibrium-check puts it back)",
@@ -492,7 +498,10 @@ d.quote("65-IV", "(65)",
         reading=(sp.Matrix([6 * (1 - s) * (3 * s - 1) - qq, 6 * s * (2 - 3 * s) - qq]), sp.Matrix([Q0 - qq, Q0l - qq])),
         note="margins: below Q0 the tilted equilibrium lies beyond the limit even at omega = 0, i.e. for every axis")
 d.quote("65-I-words", "(65)", "so schwimmt es in aufrechter Lage stabil.",
-        reading=(24 * s / b * hA, qq - 12 * s * (1 - s)), note="I: the margin of (57) is (24 s/b) h_A >= 0")
+        reading=(24 * s / b * hA, qq - 12 * s * (1 - s)),
+        note="I: the margin of (57) is (24 s/b) h_A >= 0; where it is 0 the second variation vanishes, and the "
+             "exact moment (12) decides: restoring (step boundary-restoring), so 'stabil' holds there too (a "
+             "StableIff reading, which counts that point neutral, would wrongly refute it)")
 d.quote("65-IV-words", "(65)",
         "so hat das Prisma ausser der aufrechten labilen keine Gleichgewichtslage weiter ohne dass eine der "
         "Grundflächen vom Wasserspiegel durchschnitten wird.",
@@ -501,7 +510,8 @@ d.quote("65-IV-words", "(65)",
              "harder for larger omega (less-satisfied): no axis gives a tilted position in the first region")
 d.quote("65-I", "(65)", r"$$I \quad \left(\frac{a}{b}\right)^2 \geq 12s(1-s)$$",
         reading=(qq - 12 * s * (1 - s), 24 * s / b * hA),
-        note="at equality h_A = 0 but the moment sin(phi) T_1 tan^2(phi)/2 is still restoring: stable")
+        note="at equality h_A = 0 but the moment sin(phi) T_1 tan^2(phi)/2 is still restoring (step "
+             "boundary-restoring): stable, so '>=' is right")
 d.quote("65-II", "(65)",
         r"$$II \quad \text{Wenn } 12s(1-s) > \left(\frac{a}{b}\right)^2 \geq \begin{cases} \frac{3}{2}(1-s)(9s-1) & "
         r"\text{für } s > \frac{1}{2} \\ \frac{3}{2}s(8-9s) & \text{für } s < \frac{1}{2} \end{cases}$$",
