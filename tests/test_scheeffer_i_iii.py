@@ -141,3 +141,27 @@ def test_the_sentences_of_15_are_complete_and_refute_their_mutants():
     assert status(d.get_printed("stable-V1m").reading) == "sampled"
     assert status(Iff(st.V1 * st.m > 0, st.crit15 < 0)) == "refuted"
     assert status(Holds(st.crit15 > 0)) == "refuted"
+
+
+def test_the_sentences_in_words_refute_their_mutants(loaded):
+    """The sentences read through the vocabulary (issue 31): 'Das Kraftmoment ist nun V_1 m' and 'Die erste dieser
+    Gleichungen giebt das Drehungsmoment an' hold as printed and are refuted with the stability named in place of the
+    moment; III's 'wenn sie für die des kleinsten Trägheitsmoments erfüllt ist' (the stability grows with the moment
+    of inertia of the axis) is proved, and refuted with the direction flipped or the moment named."""
+    from symfloat.model.vocabulary import DecreasesWith, GrowsWith, Is
+    d, m = loaded
+    st = m.statements
+
+    def verdict(name, reading):
+        p = d.get_printed(name)
+        rep = check_derivation(dataclasses.replace(d, printed=[dataclasses.replace(p, reading=reading, erratum=None)],
+                                                   witnesses=[]), prove=False, trust_steps=True)
+        return "refuted" if any("refuted" in f for f in rep.failures) else rep.formulas[0].verdict
+    assert verdict("couple-words", d.get_printed("couple-words").reading) == "verified"
+    assert verdict("couple-words", d.reads("Stabilität", Is(st.V1 * st.m))) == "refuted"
+    assert verdict("turning-moment-7", d.get_printed("turning-moment-7").reading) == "verified"
+    assert verdict("turning-moment-7", d.reads("Stabilität", Is(st.rhs7[0]))) == "refuted"
+    axis = {st.T1: st.T_axis}
+    assert verdict("least-moment", d.get_printed("least-moment").reading) == "verified"
+    assert verdict("least-moment", d.reads("Stabilität", DecreasesWith(st.T_axis, at=axis))) == "refuted"
+    assert verdict("least-moment", d.reads("Kraftmoment", GrowsWith(st.T_axis, at=axis))) == "refuted"

@@ -13,7 +13,7 @@ from symfloat.engine.check import check_derivation
 from symfloat.geometry.floating import floating_state, right_prism
 
 ERRATA = {"32": "transcription", "37": "transcription", "38-projection": "misprint", "43a": "misprint", "52": "transcription",
-          "law": "claim", "s-half": "claim", "55": "claim"}
+          "law": "claim", "s-half": "claim", "55": "claim", "51-verdict": "claim", "51-moment": "claim"}
 
 
 @pytest.fixture(scope="module")
@@ -125,7 +125,8 @@ def _perturbed(up, a, eps):
 def test_claim_51_stable_tilted_square_energy():
     # (51) claim "folglich das Gleichgewicht stabil": the potential energy V (z_G - z_B) of the clipped square
     # prism at its tilt is a (non-strict) minimum: no small turn lowers it, and turning about the prism axis
-    # (the spin family: same tilt, other EF) leaves it unchanged
+    # (the spin family: same tilt, other EF) leaves it unchanged: neutral in that direction, the erratum
+    # 51-verdict (stable about every other axis, neutral about G_2 H_2)
     body, s, frame = _tilted("square-0")
     up, h, ev = frame()
     U0 = _potential(body, s, up)
@@ -198,3 +199,38 @@ def test_mutated_coefficients_are_refuted():
     assert any("refuted" in f for f in rep.failures)
     rep = _check_only("27", (t1, sp.sqrt(3 * (M.V1 * M.e1 / M.T1 - 1))))                   # 2 -> 3
     assert any("refuted" in f for f in rep.failures)
+
+
+def _verdict(name, reading):
+    """The verdict on *name*'s sentence read as *reading* (no erratum: a refuted reading fails)."""
+    d = copy.copy(M.DERIVATION)
+    p = next(p for p in d.printed if p.name == name)
+    d.printed = [replace(p, reading=reading, erratum=None)]
+    d.witnesses = []
+    rep = check_derivation(d, prove=False, trust_steps=True)
+    return "refuted" if any("refuted" in f for f in rep.failures) else rep.formulas[0].verdict
+
+
+def test_the_sentences_in_words_refute_their_mutants():
+    """The sentences read through the vocabulary (issue 31): IV's 'das Drehungsmoment, dessen negativer Faktor
+    (absolut genommen) mit wachsendem phi kleiner wird' and 'für einen genügend grossen Drehungswinkel phi_1 gleich
+    Null' hold as printed and are refuted with the direction flipped or the stability named for the moment; after
+    (51) the verdict 'stabil' about G_2 H_2 is refuted (the stability is 0 there: neutral), 'indifferent' holds and
+    'labil' is refuted; the Drehungsmoment at the position phi_1 is 0, not positive, while the stability named in
+    its place is positive for every axis but G_2 H_2."""
+    from symfloat.model.vocabulary import Called, Compares, DecreasesWith, GrowsWith, Is
+    d, X, phi = M.DERIVATION, M.X, M.phi
+    along_tg = dict(per=-sp.sin(phi), at={phi: sp.atan(X)}, domain={X: (0, sp.oo)})
+    assert _verdict("Q-decreasing", d.get_printed("Q-decreasing").reading) == "verified"
+    assert _verdict("Q-decreasing", d.reads("Drehungsmoment", GrowsWith(X, **along_tg))) == "refuted"
+    assert _verdict("Q-decreasing", d.reads("Stabilität", DecreasesWith(X, **along_tg))) == "refuted"
+    assert _verdict("moment-zero-words", d.get_printed("moment-zero-words").reading) == "verified"
+    assert _verdict("moment-zero-words", d.reads("Stabilität", Is(0, at={phi: M.phi1}))) == "refuted"
+    G2H2 = Called(at={M.T11: M.T1, M.mu: sp.pi / 2})
+    assert d.get_printed("51-verdict").reading == d.reads("stabil", G2H2)
+    assert _verdict("51-verdict", d.reads("stabil", G2H2)) == "refuted"
+    assert _verdict("51-verdict", d.reads("indifferent", G2H2)) == "verified"
+    assert _verdict("51-verdict", d.reads("labil", G2H2)) == "refuted"
+    assert _verdict("51-verdict", d.reads("stabil", Called(at={M.T11: M.T1, M.mu: sp.pi / 3}))) == "verified"
+    assert _verdict("51-moment", d.get_printed("51-moment").reading) == "refuted"
+    assert _verdict("51-moment", d.get_printed("51-moment").erratum.corrected_reading) == "verified"

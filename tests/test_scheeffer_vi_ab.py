@@ -164,3 +164,31 @@ def test_mutated_coefficient_is_refuted():
     mutated.witnesses = [dataclasses.replace(w, targets=("57",)) for w in mutated.witnesses]
     rep = check_derivation(mutated, trust_steps=True)
     assert any("(57)" in f and "refuted" in f for f in rep.failures)
+
+
+def test_the_verdict_words_refute_their_mutants():
+    """The sentences that call the upright prism stable or labile are read through the vocabulary (issue 31): the
+    stability is Duhamel's T/V - e_1 of the body the sentence speaks of. Each holds as printed and is refuted
+    with its verdict word flipped, with the other body's stability, or with the neutral equality counted in."""
+    from symfloat.engine.check import _relation
+    from symfloat.engine.identity import Domain
+    from symfloat.model.vocabulary import StableIff
+    d, _ = load("scheeffer-vi-ab")
+    dom = Domain(d.domain, tuple(d.constraints))
+
+    def status(reading):
+        return _relation(reading, d.results(), dom, "mutant", {"proofs": 0.0, "sampling": 0.0}).status
+    triangle, cylinder = StableIff(M.T1 - M.V1 * M.e1 > 0, at=M.TRIANGLE), StableIff(M.T1c / M.V1c - M.e1 > 0,
+                                                                                    at=M.CYLINDER)
+    labile = (2 * M.r / M.b) ** 2 < 8 * M.s * (1 - M.s)                                        # (72) squared
+    assert d.get_printed("duhamel-VA-words").reading == d.reads("Lage stabil", triangle)
+    assert d.get_printed("cylinder-labile-words").reading == d.reads("Lage labil", StableIff(labile, at=M.CYLINDER))
+    assert status(d.reads("Lage stabil", triangle)) in ("proved", "sampled")
+    assert status(d.reads("Lage labil", triangle)) == "refuted"
+    assert status(d.reads("stabile", cylinder)) == "proved"
+    assert status(d.reads("stabile", StableIff(M.T1c / M.V1c - M.e1 > 0, at=M.TRIANGLE))) == "refuted"
+    assert status(d.reads("Lage labil", StableIff(labile, at=M.CYLINDER))) in ("proved", "sampled")
+    assert status(d.reads("Lage stabil", StableIff(labile, at=M.CYLINDER))) == "refuted"
+    assert status(d.reads("Lage labil", StableIff((2 * M.r / M.b) ** 2 <= 8 * M.s * (1 - M.s),
+                                                  at=M.CYLINDER))) == "refuted"                 # neutral at equality
+    assert status(d.get_printed("less-satisfied").reading) in ("proved", "sampled")

@@ -7,8 +7,8 @@ import sympy as sp
 from symfloat import Derivation
 from symfloat.engine.check import check_derivation
 from symfloat.registry import statements
-from symfloat.model.vocabulary import (Called, Compares, DependsOn, IndependentOf, Is, StableIff, quantity_named,
-                                       verdict_named)
+from symfloat.model.vocabulary import (Called, Compares, DecreasesWith, DependsOn, GrowsWith, IndependentOf, Is,
+                                       StableIff, quantity_named, verdict_named)
 
 b, c, d, phi = sp.symbols("b c d phi", positive=True)
 y_G, shift, e = sp.symbols("y_G Delta e", real=True)
@@ -84,6 +84,35 @@ def test_a_dependence_on_a_symbol_the_definition_lacks_is_refuted():
     dv.says("grows", "test", WIDE, "Stabilität", Compares(">", 0, at={b: 3 * c}))
     assert verdicts(dv) == {"depends-b": "verified", "depends-phi": "erratum", "free-of-phi": "verified",
                             "free-of-d": "erratum", "grows": "verified"}
+
+
+def test_grows_with_reads_the_sign_of_the_derivative_on_the_stated_domain():
+    # e = b^2/(6c^2) - d/(2c) (1 - d/(2c)): de/db = b/(3c^2) > 0 everywhere; de/dd = (d - c)/(2c^2) changes sign
+    # at d = c, so e decreases with d only where d < c (c > 1 on the domain d < 1); the wrong direction is refuted
+    dv = lesson()
+    dv.says("grows-b", "test", WIDE, "Stabilität", GrowsWith(b))
+    dv.says("decreases-b", "test", WIDE, "Stabilität", DecreasesWith(b))
+    dv.says("decreases-d-narrow", "test", WIDE, "Stabilität", DecreasesWith(d, domain={c: (1, 3)}))
+    dv.says("decreases-d", "test", WIDE, "Stabilität", DecreasesWith(d))
+    dv.says("grows-d", "test", WIDE, "Stabilität", GrowsWith(d))
+    # the wedge shift b^2 tg(phi)/(3d) over tg(phi) (per) is b^2/(3d): it no longer grows with phi
+    dv.says("shift-grows", "test", DISPLACED, "Schwerpunkt des verdrängten Wassers", GrowsWith(phi))
+    dv.says("shift-per-tg", "test", DISPLACED, "Schwerpunkt des verdrängten Wassers",
+            GrowsWith(phi, per=sp.tan(phi)))
+    assert verdicts(dv) == {"grows-b": "verified", "decreases-b": "erratum", "decreases-d-narrow": "verified",
+                            "decreases-d": "erratum", "grows-d": "erratum", "shift-grows": "verified",
+                            "shift-per-tg": "erratum"}
+
+
+def test_grows_with_is_decided_exactly_where_the_signs_decide():
+    from symfloat.engine.check import _relation
+    from symfloat.engine.identity import Domain
+    dv = lesson()
+    reading = dv.reads("Stabilität", GrowsWith(b))
+    assert reading.condition == sp.Gt(sp.Derivative(e, b), 0, evaluate=False)
+    status = _relation(reading, dv.results(), Domain(dv.domain, tuple(dv.constraints)), "grows",
+                       {"proofs": 0.0, "sampling": 0.0}).status
+    assert status == "proved"
 
 
 def test_stable_where_the_stability_vanishes_is_refuted_as_neutral():

@@ -4,6 +4,7 @@ import sympy as sp
 from symfloat import Derivation, Eq, Erratum, Iff
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
+from symfloat.model.vocabulary import GrowsWith, Is
 
 
 phi = sp.Symbol("varphi", positive=True)
@@ -86,6 +87,11 @@ d.step("moments-7", (sp.Matrix([V1 * m, V1 * n]), rhs7), "substitution", uses=("
 torque = as_printed(lambda: m * (-V1) - n * 0)
 d.step("couple", (-torque, V1 * m), "algebra", uses=("m-def",),
        note="the moment of the couple against the heel is V1 m: positive m turns the body back")
+# the quantities the text names in words (symfloat/model/vocabulary.json), by the formulas that define them here:
+# the Kraftmoment / Drehungsmoment by the moment of the couple against the heel, the stability by the second
+# variation of the potential, T1 - V1 e1 = V1 (T1/V1 - e1) (step energy-curvature, (16), (18))
+d.defines("righting moment", -torque)
+d.defines("stability", T1 - V1 * e1)
 
 d.quote("equilibrium-moments", "I",
         "Es müssen also die statischen Momente des eintauchenden Teils für zwei durch  $S$  gelegte Vertikalebene "
@@ -102,6 +108,8 @@ d.quote("M-side", "I", "Läge  $M$  aber auf der entgegengesetzten Seite von  $S
         reading=(sp.sign(sp.Subs(sp.Derivative(m, phi), phi, 0)), sp.sign(T1 / V1 - e1)),
         note="for small phi m = phi SM (M the metacentre on the axis, SM = T1/V1 - e1, III): m has the sign of the "
              "height of M above S")
+d.says("couple-words", "I", "Das Kraftmoment ist nun  $V_1 m$ , also die Bedingung für die Stabilität", "Kraftmoment",
+       Is(V1 * m), note="Read as: the moment of the couple of weight and buoyancy against the heel is V1 m.")
 d.quote("labile-words", "I", "Sein Gleichgewicht wäre dann labil.",
         reading=as_printed(lambda: (sp.sign(-torque), sp.sign(V1 * m))),
         note="with m < 0 the moment of the couple against the heel, V1 m, is negative: the couple turns the body "
@@ -169,6 +177,10 @@ d.quote("moments-7", "(7)",
         r"$$\begin{aligned} V_1 m &= V_3 e \cos \varphi + V_3 k \sin \varphi - V_1 e_1 \sin \varphi \\ V_1 n &= "
         r"V_3 e \sin \varphi - V_3 k \cos \varphi + V_1 e_1 \cos \varphi. \end{aligned} \quad (7)$$",
         reading=(sp.Matrix([V1 * m, V1 * n]), rhs7))
+
+d.says("turning-moment-7", "(7)", "Die erste dieser Gleichungen giebt das Drehungsmoment an.", "Drehungsmoment",
+       Is(rhs7[0]), note="Read as: the moment of the couple against the heel is the right side of the first line of "
+                         "(7).")
 
 # ---- II. the prismatic body: element integrals -------------------------------------------------
 d.step("element-volume", (sp.Integral(1, (eta, 0, x * tg)), x * tg), "integration",
@@ -402,6 +414,16 @@ d.quote("duhamel-18", "(18)", r"$$\frac{T_1}{V_1} = e_1 > 0. \quad (18)$$",
                                 "condition, and Duhamel's sentence quoted next states the difference; an equation "
                                 "would fix the boundary case only. The scan reads the minus as '$=$' elsewhere in "
                                 "this transcription.")))
+T_axis = sp.Symbol("T", positive=True)      # the moment of inertia of the waterplane about any axis through its centroid
+d.domain[T_axis] = (sp.Rational(1, 10), 10)
+d.says("least-moment", "III",
+       "Aus 16 folgt also als Bedingung für die Stabilität:\n\n$$\\frac{T_1}{V_1} = e_1 > 0. \\quad (18)$$\n\n\n\n"
+       "Diese Bedingung muss natürlich für jede durch den Schwerpunkt des Wasserschnitts gehende Drehungsachse "
+       "erfüllt sein, das ist aber der Fall, wenn sie für die des kleinsten Trägheitsmoments erfüllt ist.",
+       "Bedingung für die Stabilität", GrowsWith(T_axis, at={T1: T_axis}),
+       note="Read as: the stability for an axis through the waterplane's centroid grows with the moment of inertia T "
+            "about that axis (V1 and e1 are the same for every axis), so the axis of the least moment decides. The "
+            "display (18) inside the excerpt is booked at duhamel-18.")
 d.quote("duhamel-statement", "III, Duhamel",
         "nur muss dann die Entfernung dieser beiden Punkte kleiner sein als das kleinste der Trägheitsmomente der "
         "Schnittfläche des Körpers mit der Wasseroberfläche in Bezug auf die durch ihren Schwerpunkt gezogenen "

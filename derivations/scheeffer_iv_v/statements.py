@@ -4,6 +4,7 @@ import sympy as sp
 from symfloat import Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
+from symfloat.model.vocabulary import Called, Compares, DecreasesWith, Is
 
 
 # ---- symbols -------------------------------------------------------------------------------------------------
@@ -20,7 +21,7 @@ dfs = sp.Symbol("df", positive=True)
 V1, e1, zS, zS1, Mu, Mv, Mz = sp.symbols("V_1 e_1 z_S z_{S_1} M_u M_v M_z")
 m, n, wax, phi1, M2, M3, M4, e2 = sp.symbols("m n w varphi_1 M_2 M_3 M_4 e_2")
 rdf, ru, rv, T2, T21, P2, zeta = sp.symbols("r_{df} r_u r_v T_2 T_2^1 P_2 zeta")
-Tmu, Tm, Tm1, Tmin, D2, Q = sp.symbols("T(mu) T_m T_m^1 T_min D_2 Q")
+Tmu, Tm, Tm1, Tmin, D2, Q, Dmu = sp.symbols("T(mu) T_m T_m^1 T_min D_2 Q D(mu)")
 P2e, Tmue = symbol("P_2^{eq}", r"P_{2}^{\text{eq}}"), symbol("T_eq(mu)", r"T_{\text{eq}}(\mu)")
 Uw, Vw, T1w, T11w, Iuv, Jsym, T1s, T1iso, Tmi = sp.symbols(
     "u_omega v_omega T_1(omega) T_1^1(omega) I_uv J_sym T_1^s T_1^iso T_m^iso")
@@ -213,6 +214,14 @@ d.step("D2-value", (D2, sp.Min(T1 / c ** 3, T11 / c) - T1 / c), "substitution",
        uses=("D2", "Tm", "Tm1", "T2", "T21", "eq35"))
 d.step("D2-cases", (D2, sp.Min(T1 * sp.tan(phi1) ** 2, T11 - T1) / c), "algebra", uses=("D2-value",),
        note="T_1/cos^3 - T_1/cos = T_1 tan^2 phi_1/cos > 0, so D_2 < 0 exactly when T_1^1 < T_1")
+d.step("D-mu", Eq(Dmu, Tmue - V1 * e2), "definition", result=Dmu,
+       note="the stability of the position phi_1 about the axis through O at the angle mu with EF: the moment of "
+            "inertia of II about that axis minus V_1 e_2 (Duhamel (18) for one axis; D_2 is its least value)")
+# the quantities the text names in words (symfloat/model/vocabulary.json), by the formulas that define them here:
+# the Drehungsmoment by the righting moment V_1 m of the turn phi about EF (12), the stability of the tilted position
+# phi_1 by Duhamel's quantity for the axis at the angle mu
+d.defines("righting moment", V1 * m)
+d.defines("stability", Dmu)
 
 # ---- V  principal axes of the waterplane I ------------------------------------------------------------------
 d.step("rotation-44", (sp.Matrix([Uw, Vw]), sp.Matrix([y * sp.sin(om) + x * sp.cos(om),
@@ -283,12 +292,19 @@ d.quote("moment-12", "IV (12)",
 d.quote("moment-zero", "IV (27)",
         r"$$\left( 1 + \frac{1}{2} \operatorname{tg}^2 \varphi_1 \right) T_1 - V_1 e_1 = 0$$",
         reading=((1 + t1 ** 2 / 2) * T1 - V1 * e1, 0))
-d.quote("Q-decreasing", "IV",
-        "Dann wird aber das Drehungsmoment, dessen negativer Faktor (absolut genommen) mit wachsendem  $\\varphi$  "
-        "kleiner wird",
-        reading=(sp.Derivative(Q, phi), T1 * tph * (1 + tph ** 2)),
-        note="the factor (1 + tg^2/2) T_1 - V_1 e_1 of (12) grows with phi (positive derivative): while negative "
-             "its absolute value shrinks, and it vanishes once, at phi_1 (27)")
+d.says("Q-decreasing", "IV",
+       "Dann wird aber das Drehungsmoment, dessen negativer Faktor (absolut genommen) mit wachsendem  $\\varphi$  "
+       "kleiner wird", "Drehungsmoment",
+       DecreasesWith(X, per=-sp.sin(phi), at={phi: sp.atan(X)}, domain={X: (0, sp.oo)}),
+       note="Read as: the factor of sin(phi) in (12) taken with the opposite sign (its absolute value where it is "
+            "negative), V_1 e_1 - (1 + tg^2/2) T_1, decreases as phi grows from 0 to 90 deg, i.e. as X = tg(phi) "
+            "grows from 0 (tg increases there): its derivative in X is -T_1 X. So the factor vanishes once, at "
+            "phi_1 (27).")
+d.says("moment-zero-words", "IV",
+       "Dann wird aber das Drehungsmoment, dessen negativer Faktor (absolut genommen) mit wachsendem  $\\varphi$  "
+       "kleiner wird, für einen genügend grossen Drehungswinkel  $\\varphi_1$  gleich Null werden.",
+       "Drehungsmoment", Is(0, at={phi: phi1}),
+       note="Read as: the righting moment (12) vanishes at the tilt phi_1 of (27).")
 d.quote("small-negative", "IV", "für noch so kleines  $\\varphi$  negativ ist.",
         reading=(slope, T1 / V1 - e1), note="V_1 m = phi V_1 (T_1/V_1 - e_1) + O(phi^3): negative for every small phi "
                                             "when the criterion fails")
@@ -596,9 +612,74 @@ d.quote("51-claim", "(51)",
         "$G_2 H_2$  (Fig. 11) ist es Null, folglich das Gleichgewicht stabil.",
         reading=(res(Tmue).subs(T11, T1) - V1 * e2, T1 * t1 ** 2 * sp.cos(mu) ** 2 / c),
         note="for the axis at the angle mu with EF: T(mu) - V_1 e_2 = T_1 tan^2 phi_1 cos^2 mu / cos phi_1, positive "
-             "except at mu = 90 deg (G_2 H_2) where it is 0. The zero direction is the turn about the prism axis, "
-             "along which the isotropic prism stays in equilibrium at constant potential energy: a neutral, not "
-             "unstable, direction, so 'stabil' holds in the non-strict sense")
+             "except at mu = 90 deg (G_2 H_2) where it is 0: the values the sentence states. The zero direction is "
+             "the turn about the prism axis, along which the isotropic prism stays in equilibrium at constant "
+             "potential energy; the verdict 'stabil' drawn from these signs is read at 51-verdict, the word "
+             "'Drehungsmoment' at 51-moment")
+SENTENCE_51 = ("In der Gleichgewichtslage ( $\\varphi_1$ ) ist also das Drehungsmoment für jede durch den Schwerpunkt O "
+               "des Wasserschnitts gehende Drehungsachse positiv und nur für die zur ersten Drehungsachse EF senkrechte "
+               "Achse  $G_2 H_2$  (Fig. 11) ist es Null, folglich das Gleichgewicht stabil.")
+ISOTROPIC = {T11: T1}                       # the base of (48)-(51): T_1^1 = T_1 for every axis
+d.says("51-verdict", "(51)", SENTENCE_51, "Gleichgewicht stabil", Called(at={**ISOTROPIC, mu: sp.pi / 2}),
+       erratum=Erratum("claim", "medium",
+                       r"\text{folglich das Gleichgewicht für jede andere Achse stabil, für die Achse } G_2 H_2 "
+                       r"\text{ indifferent}",
+                       (r"The stability of the tilted position about an axis through O at the angle $\mu$ with EF "
+                        r"is $T(\mu) - V_1 e_2 = T_1 \operatorname{tg}^2\varphi_1 \cos^2\mu / \cos\varphi_1$ for "
+                        r"the base of (48) (Duhamel (33) for that axis, with (35), (40), (42)): positive for every "
+                        r"axis but $G_2 H_2$ ($\mu = 90^\circ$), where (51) makes it $T_m^1 - T_1/\cos\varphi_1 = "
+                        r"0$. The text's own condition (43) 'die für jedes der Trägheitsmomente T erfüllt sein muss' "
+                        r"is strict and fails there. The zero is not a vanishing second variation with a restoring "
+                        r"higher order: a turn about $G_2 H_2$ is, to first order, the turn about the prism's axis "
+                        r"that the law after (52) describes, through 'immer neue Gleichgewichtslagen' of the same "
+                        r"potential energy; about that axis the position is neutral, and 'stabil' holds for the "
+                        r"other axes only."),
+                       corrected_reading=d.reads("indifferent", Called(at={**ISOTROPIC, mu: sp.pi / 2})),
+                       fault="folglich das Gleichgewicht stabil",
+                       objection=("A family of equilibria along which the body can be turned without work is the "
+                                  "usual sense of 'stable' for a body that cannot capsize: no turn moves it away "
+                                  "from an equilibrium, and the law after (52) calls every position of the family "
+                                  "'stabile Gleichgewichtslagen'. Scheeffer's 'stabil' is 'not labile', used so "
+                                  "throughout: the law of VI ('so bleibt es in allen Lagen im stabilen "
+                                  "Gleichgewicht') and VI.A ('ohne seine Stabilität zu verlieren') say the same of "
+                                  "the family; and the sentence itself names the axis $G_2 H_2$ where the moment is "
+                                  "zero."),
+                       answer=("The sentence draws 'stabil' from the signs it has just stated, including the zero, "
+                               "and section I defines stable by a couple that turns the body back ($V_1 m > 0$, "
+                               "(2)), labile by one that turns it further; about $G_2 H_2$ there is neither, which "
+                               "is the neutral case the text never names, and its own condition (43), 'für jedes "
+                               "der Trägheitsmomente T', is strict. The laws speak of the family's positions, stable "
+                               "against every turn that leaves the family; here the verdict is drawn from a list of "
+                               "signs that contains the zero. The reading 'not labile' is the author's consistent "
+                               "usage and the sentence does state the zero, so medium, not high.")),
+       note="Read as the verdict about the axis G_2 H_2 (mu = 90 deg), where the sentence itself puts the zero: the "
+            "sign of the stability there (the other axes: 51-claim, 51-moment).")
+d.says("51-moment", "(51)", SENTENCE_51, "Drehungsmoment", Compares(">", 0, at={phi: phi1}),
+       erratum=Erratum("claim", "low",
+                       r"\text{In der Gleichgewichtslage } (\varphi_1) \text{ ist also die Stabilität } T - "
+                       r"\frac{T_1}{\cos\varphi_1} \text{ für jede } \ldots \text{ Drehungsachse positiv}",
+                       (r"The Drehungsmoment of IV is the righting moment (12), $V_1 m$, which the text has just set to "
+                        r"zero to find the position: at an equilibrium it vanishes for every axis (the first "
+                        r"condition (27) for EF, the second (31) for the axis across it). What the sentence finds "
+                        r"positive for every axis and zero for $G_2 H_2$ is the quantity of (43) and (51), $T - "
+                        r"T_1/\cos\varphi_1 = T - V_1 e_2$, Duhamel's stability (33) of the tilted position: "
+                        r"$T_1 \operatorname{tg}^2\varphi_1 \cos^2\mu/\cos\varphi_1$ for the axis at the angle "
+                        r"$\mu$ with EF."),
+                       corrected_reading=d.reads("Stabilität", Compares(">", 0, at=ISOTROPIC,
+                                                                         domain={mu: (0, sp.pi / 2)})),
+                       fault="ist also das Drehungsmoment für jede durch den Schwerpunkt O des Wasserschnitts "
+                             "gehende Drehungsachse positiv",
+                       objection=("'Das Drehungsmoment für eine Achse' may mean the moment that a small turn about "
+                                  r"that axis calls up, $\delta\,(T - V_1 e_2)$ to first order ((16) for the tilted "
+                                  "position); it is positive exactly where the stability is, so the sentence names "
+                                  "the moment by the sign it takes after the turn, as IV does with 'für noch so "
+                                  r"kleines $\varphi$ negativ'."),
+                       answer=("In IV the word names $V_1 m$ at the position itself ('weil (nach 12) das "
+                               r"Drehungsmoment $V_1 m = \ldots$'), and 'in der Gleichgewichtslage' places this one "
+                               r"at $\varphi_1$, where that moment is zero; the values the sentence compares are "
+                               "those of (43) and (51). The loose reading, a moment per unit turn, is a usage of the "
+                               "period and cannot be excluded: low.")),
+       note="Read as the words say: the righting moment (12) at the position phi_1 is positive.")
 d.quote("52", "(52)", r"$$\operatorname{tg} \varphi_1 = \sqrt{2 \left( \frac{V_1 c_1}{T_1} - 1 \right)} \quad (52)$$",
         reading=(t1, sp.sqrt(2 * (V1 * c1 / T1 - 1))),
         erratum=Erratum("transcription", "high", r"\operatorname{tg}\varphi_1 = \sqrt{2\left(\frac{V_1 e_1}{T_1} - 1\right)}",

@@ -3,6 +3,8 @@ import sympy as sp
 
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
+from symfloat.model.relation import Holds
+from symfloat.model.vocabulary import StableIff
 
 
 def printed_fraction(p, q):
@@ -183,6 +185,11 @@ d.step("metacentric-height", (hA, T1 / V1 - e1, (a ** 2 - 12 * b ** 2 * s * (1 -
        uses=("triangle-moment", "displacement", "centre-distance"),
        note="the upright position is stable when h_A > 0 (Duhamel, (18))", result=hA)
 
+# the stability the text names in words (symfloat/model/vocabulary.json): Duhamel's (18) for the upright prism,
+# T/V - e_1 with the moment T and the displacement V of the body a sentence speaks of (at=TRIANGLE, CYLINDER)
+Tb, Vb = sp.symbols("T_b V_b", positive=True)
+d.defines("stability", Tb / Vb - e1)
+TRIANGLE = {Tb: T1, Vb: V1}
 d.quote("triangle-data", "VI.A",
         r"$$T_1 = F_1 \cdot \frac{a^2}{24} \quad V_1 = F_1 b \cdot s \quad e_1 = \frac{b(1-s)}{2}$$",
         reading=(sp.Matrix([T1, V1, e1]), sp.Matrix([F1 * a ** 2 / 24, F1 * b * s, b * (1 - s) / 2])))
@@ -190,8 +197,10 @@ d.quote("triangle-condition", "VI.A",
         r"$$F_1 \cdot \frac{a^2}{24} - F_1 \cdot \frac{b^2}{2} s (1-s) > 0$$",
         reading=(F1 * a ** 2 / 24 - F1 * b ** 2 / 2 * s * (1 - s), V1 * hA),
         note="the left side is V_1 h_A, V_1 > 0")
-d.quote("duhamel-VA-words", "VI.A", "Nach dem Duhamelschen Satze schwimmt das Prisma in der aufrechten Lage stabil, wenn",
-        reading=(sp.sign(V1 * hA), sp.sign(T1 - V1 * e1)), note="(18) times V_1 > 0")
+d.says("duhamel-VA-words", "VI.A", "Nach dem Duhamelschen Satze schwimmt das Prisma in der aufrechten Lage stabil, wenn",
+       "Lage stabil", StableIff(T1 - V1 * e1 > 0, at=TRIANGLE),
+       note="Read as: the upright triangular prism is stable exactly when T_1 - V_1 e_1 > 0 (the display after the "
+            "words), Duhamel's (18) times V_1 > 0.")
 d.quote("duhamel-VA", "VI.A", r"$$T_1 - V_1 e_1 > 0$$", reading=(T1 - V1 * e1, V1 * hA),
         note="Duhamel (18) times V_1 > 0: the margin is V_1 h_A")
 d.quote("57", "(57)", r"$$\left(\frac{a}{b}\right)^2 > 12 s \cdot (1-s) \tag{57}$$",
@@ -284,6 +293,12 @@ d.step("righting-arm", Eq(mA, (cphi * Mx + sphi * (Mz - Vt * b / 2)) / Vt), "def
             "w = (cos phi, sin phi) in the (xi, z) plane; positive = restoring", result=mA)
 d.step("righting-moment", (V1 * mA, sphi * ((1 + tp ** 2 / 2) * T1 - V1 * e1)), "algebra",
        uses=("righting-arm", "tilted-volume", "tilted-moment-xi", "tilted-moment-z"), note="(12)")
+BOUNDARY = b * sp.sqrt(12 * s * (1 - s))              # a on the boundary of (57): the stability T_1/V_1 - e_1 is 0
+d.step("boundary-restoring", (sp.Subs(V1 * mA, a, BOUNDARY), sp.Subs(sphi * T1 * tp ** 2 / 2, a, BOUNDARY)),
+       "algebra", uses=("righting-moment", "metacentric-height"),
+       note="on the boundary (a/b)^2 = 12 s (1 - s) the second variation vanishes, but the moment (12) is "
+            "sin(phi) T_1 tg^2(phi)/2 > 0 for every tilt of the first region: the upright position turns back "
+            "(at third order), stable, not neutral, as (65) I counts it with '>='")
 d.step("tilted-equilibrium", Eq(tan1, sp.sqrt(-2 * a ** 2 - 24 * b ** 2 * s ** 2 + 24 * s * b ** 2) / a), "definition",
        note="the positive root tau of the bracket of righting-moment (tau > 0 was assumed; the step "
             "tilted-equilibrium-check puts it back)",
@@ -423,9 +438,9 @@ d.quote("60-deg-limit", "VI.A",
              "tilt is within it there, it is within it for every axis (the upper base; the lower base: 60-one-base)")
 d.quote("less-satisfied", "VI.A",
         "so ist sie für grössere Werte von  $\\omega$  um so weniger erfüllt",
-        reading=(sp.Derivative(sp.sin(30 * deg + om), om), sp.cos(pi / 6 + om)),
-        note="sin(30 deg + omega) increases on 0 <= omega <= 60 deg (positive derivative): (61) fails for larger "
-             "omega once it fails at omega = 0")
+        reading=Holds(sp.Derivative(sp.sin(30 * deg + om), om) > 0, {om: (0, pi / 3)}),
+        note="the left side sin(30 deg + omega) of (61) increases on 0 < omega < 60 deg (the sign of its derivative) "
+             "and the right side does not contain omega: (61) fails for larger omega once it fails at omega = 0")
 D61 = sp.sqrt(24 * s * (1 - s) - 2 * (a / b) ** 2)
 d.quote("61-from-60", "VI.A",
         r"$$\sqrt{24 \cdot \frac{b^2}{a^2} s (1-s) - 2} \leq \frac{b}{a} \frac{(1-s) \sqrt{3}}{\sin(30^\circ + \omega)}$$",
@@ -483,7 +498,10 @@ d.quote("65-IV", "(65)",
         reading=(sp.Matrix([6 * (1 - s) * (3 * s - 1) - qq, 6 * s * (2 - 3 * s) - qq]), sp.Matrix([Q0 - qq, Q0l - qq])),
         note="margins: below Q0 the tilted equilibrium lies beyond the limit even at omega = 0, i.e. for every axis")
 d.quote("65-I-words", "(65)", "so schwimmt es in aufrechter Lage stabil.",
-        reading=(24 * s / b * hA, qq - 12 * s * (1 - s)), note="I: the margin of (57) is (24 s/b) h_A >= 0")
+        reading=(24 * s / b * hA, qq - 12 * s * (1 - s)),
+        note="I: the margin of (57) is (24 s/b) h_A >= 0; where it is 0 the second variation vanishes, and the "
+             "exact moment (12) decides: restoring (step boundary-restoring), so 'stabil' holds there too (a "
+             "StableIff reading, which counts that point neutral, would wrongly refute it)")
 d.quote("65-IV-words", "(65)",
         "so hat das Prisma ausser der aufrechten labilen keine Gleichgewichtslage weiter ohne dass eine der "
         "Grundflächen vom Wasserspiegel durchschnitten wird.",
@@ -492,7 +510,8 @@ d.quote("65-IV-words", "(65)",
              "harder for larger omega (less-satisfied): no axis gives a tilted position in the first region")
 d.quote("65-I", "(65)", r"$$I \quad \left(\frac{a}{b}\right)^2 \geq 12s(1-s)$$",
         reading=(qq - 12 * s * (1 - s), 24 * s / b * hA),
-        note="at equality h_A = 0 but the moment sin(phi) T_1 tan^2(phi)/2 is still restoring: stable")
+        note="at equality h_A = 0 but the moment sin(phi) T_1 tan^2(phi)/2 is still restoring (step "
+             "boundary-restoring): stable, so '>=' is right")
 d.quote("65-II", "(65)",
         r"$$II \quad \text{Wenn } 12s(1-s) > \left(\frac{a}{b}\right)^2 \geq \begin{cases} \frac{3}{2}(1-s)(9s-1) & "
         r"\text{für } s > \frac{1}{2} \\ \frac{3}{2}s(8-9s) & \text{für } s < \frac{1}{2} \end{cases}$$",
@@ -673,9 +692,12 @@ d.step("immersion-height", Eq(xC, b * s + r * tanC), "definition",
        note="the water height on the dipping generator (xi = r) in the tilted equilibrium", result=xC)
 
 K2 = (2 * r / b) ** 2
-d.quote("cylinder-duhamel", "VI.B",
-        "also nach dem Duhamelschen Satze die Bedingung für eine stabile aufrechte Gleichgewichtslage",
-        reading=(sp.sign(hC), sp.sign(T1c / V1c - e1)), note="(18) for the cylinder")
+CYLINDER = {Tb: T1c, Vb: V1c}
+d.says("cylinder-duhamel", "VI.B",
+       "also nach dem Duhamelschen Satze die Bedingung für eine stabile aufrechte Gleichgewichtslage",
+       "stabile aufrechte", StableIff(T1c / V1c - e1 > 0, at=CYLINDER),
+       note="Read as: the upright cylinder is stable exactly when T_1/V_1 - e_1 > 0 (the first line of the display "
+            "after the words), Duhamel's (18) with its T_1 and V_1.")
 d.quote("cylinder-data", "VI.B", r"$$T_1 = \frac{\pi}{4} r^4 \quad F_1 = \pi r^2 \quad u_m = r \quad e_1 = \frac{b}{2} (1 - s)$$",
         reading=(sp.Matrix([T1c, F1c, e1]), sp.Matrix([pi / 4 * r ** 4, pi * r ** 2, b / 2 * (1 - s)])))
 d.quote("cylinder-condition", "VI.B",
@@ -755,6 +777,12 @@ d.quote("cylinder-turns", "VI.B",
         "so ist der Cylinder in der aufrechten Lage labil und dreht sich um eine horizontale Achse, bis er in eine "
         "stabile Gleichgewichtslage gelangt.", reading=(tanC ** 2, -2 * V1c * hC / T1c),
         note="labile (h_C < 0) exactly when the tilted equilibrium is real: tg^2 phi_1 = -2 V_1 h_C / T_1")
+d.says("cylinder-labile-words", "VI.B",
+       "so ist der Cylinder in der aufrechten Lage labil und dreht sich um eine horizontale Achse, bis er in eine "
+       "stabile Gleichgewichtslage gelangt.", "aufrechten Lage labil",
+       StableIff((2 * r / b) ** 2 < 8 * s * (1 - s), at=CYLINDER),
+       note="Read as: the upright cylinder is labile exactly when (72) holds, 2r/b < sqrt(8 s (1 - s)), squared "
+            "(both sides positive); the tilted position it turns to: cylinder-turns.")
 d.quote("72", "(72)", r"$$\text{Ist aber} \quad \frac{2r}{b} < \sqrt{8s(1-s)} \quad (72)$$",
         reading=((sp.sqrt(8 * s * (1 - s)) - 2 * r / b) * (sp.sqrt(8 * s * (1 - s)) + 2 * r / b), -16 * s / b * hC))
 d.quote("cylinder-data-72", "VI.B", r"$$F_1 = \pi r^2 \quad T_1 = \frac{\pi r^4}{4} \quad u_m = r$$",

@@ -18,10 +18,19 @@ definition, e.g. the square's moment for the generic moment):
 * :class:`IndependentOf` -- q does not change with b: ``dq/db = 0``, an identity;
 * :class:`DependsOn` -- q changes with a: ``dq/da != 0`` on the domain (a quantity that depends on a
   only away from an extremum is stated with :class:`Compares` on a range instead);
+* :class:`GrowsWith`, :class:`DecreasesWith` -- q grows (decreases) with a on a stated domain: the sign
+  of the derivative, ``Holds(dq/da > 0)`` (``< 0``) at every point of the domain, decided by the relation
+  check (a proof where the signs or one variable decide, else exact sampling; a point where the sign is
+  wrong refutes).  ``per`` reads the part of q the sentence speaks of, q divided by a factor that does not
+  vanish on the domain: Scheeffer IV's "das Drehungsmoment, dessen negativer Faktor (absolut genommen) mit
+  wachsendem phi kleiner wird" is the moment (12) V1 m over -sin(phi), the absolute value of the bracket
+  where it is negative, decreasing with phi;
 * :class:`StableIff` -- the equilibrium is stable (neutral, unstable: the sentence's verdict word)
   exactly when a condition holds: both implications between the condition and the sign of the
   stability, and, for a condition stated with >= or <=, its equality case read at the point where it
   holds (the stability vanishes there, the position is neutral, so "stable if z_M >= z_G" is refuted);
+  ``at`` names the body the sentence speaks of where one definition serves several (Scheeffer VI's
+  T/V - e_1 with the triangle's or the cylinder's moment and displacement);
 * :class:`Called` -- the equilibrium at a stated position is called stable (neutral, unstable): the
   sign of the stability there, ``> 0``, ``= 0`` or ``< 0`` (stable where the stability vanishes is
   refuted: the position is neutral).
@@ -39,7 +48,7 @@ import sympy as sp
 from .relation import Holds
 
 __all__ = ["vocabulary", "quantity_named", "verdict_named", "Is", "Compares", "IndependentOf", "DependsOn",
-           "StableIff", "Called", "VERDICT_SIGNS"]
+           "GrowsWith", "DecreasesWith", "StableIff", "Called", "VERDICT_SIGNS"]
 
 VERDICT_SIGNS = {"stable": 1, "neutral": 0, "unstable": -1}     # the sign of the stability each verdict states
 
@@ -174,18 +183,49 @@ class DependsOn:
 
 
 @dataclass(frozen=True, init=False)
+class GrowsWith:
+    """The named quantity (divided by *per*) grows with *symbol* on the domain: ``d(q/per)/da > 0`` there."""
+
+    symbol: object
+    per: object = 1
+    at: tuple = ()
+    domain: tuple = ()
+    sense = ">"
+
+    def __init__(self, symbol, per=1, at=None, domain=None):
+        object.__setattr__(self, "symbol", symbol)
+        object.__setattr__(self, "per", sp.sympify(per))
+        object.__setattr__(self, "at", tuple((at or {}).items()))
+        object.__setattr__(self, "domain", tuple((domain or {}).items()))
+
+    def reading(self, q, derived):
+        rate = sp.Derivative(_at(q / self.per, dict(self.at)), self.symbol)
+        return Holds((sp.Gt if self.sense == ">" else sp.Lt)(rate, 0, evaluate=False), dict(self.domain))
+
+
+class DecreasesWith(GrowsWith):
+    """The named quantity (divided by *per*) decreases with *symbol* on the domain: ``d(q/per)/da < 0`` there."""
+
+    sense = "<"
+
+
+@dataclass(frozen=True, init=False)
 class StableIff:
-    """The equilibrium has the verdict of the sentence's words exactly when *condition* holds."""
+    """The equilibrium has the verdict of the sentence's words exactly when *condition* holds (*at*: the
+    sentence's particulars put into the stability, e.g. the body's moment and displacement)."""
 
     condition: object
     domain: tuple = ()
+    at: tuple = ()
     verdicts = True
 
-    def __init__(self, condition, domain=None):
+    def __init__(self, condition, domain=None, at=None):
         object.__setattr__(self, "condition", condition)
         object.__setattr__(self, "domain", tuple((domain or {}).items()))
+        object.__setattr__(self, "at", tuple((at or {}).items()))
 
     def reading(self, s, derived, verdict):
+        s = _at(s, dict(self.at))
         said = _signed(s, verdict)
         clauses = [sp.Implies(self.condition, said), sp.Implies(said, self.condition)]
         clauses += _equality_case(self.condition, s, verdict, derived)
