@@ -528,11 +528,12 @@ d.says("half-stable", "VI.D",
        erratum=Erratum(
            "claim", "high",
            r"\text{in eine schiefe Gleichgewichtslage, die in zweiter Ordnung indifferent und in dritter labil ist}",
-           (r"The stability of the position for the turn about the axis $G_2 H_2$ vanishes: at $a = b$, $s = "
-            r"\tfrac12$, $\varphi_1 = 45^\circ$ the waterplane's moment about $G_2 H_2$ over the volume, $T_1/(V_1 "
-            r"\cos\varphi_1) = \sqrt2\, a/6$, equals the height of $G$ above $B$, so the second variation of the "
-            r"potential is $0$ and 'stabil' is refuted as neutral, as at every oblique position of the first domain "
-            r"((51)). There the neutral turn about the main axis leads through equilibria at constant potential; here "
+           (r"The position is neutral to second order and unstable at the third: its stability for the turn about "
+            r"$G_2 H_2$ vanishes, and the turn about the main axis, which leaves the first domain at once, lowers "
+            r"the potential as $|\omega|^3$. At $a = b$, $s = \tfrac12$, $\varphi_1 = 45^\circ$ the waterplane's "
+            r"moment about $G_2 H_2$ over the volume, $T_1/(V_1 \cos\varphi_1) = \sqrt2\, a/6$, equals the height "
+            r"of $G$ above $B$, so the second variation of the potential is $0$ and 'stabil' is refuted as neutral, "
+            r"as at every oblique position of the first domain ((51)). There the neutral turn about the main axis leads through equilibria at constant potential; here "
             r"the allowed range of $\omega$ shrinks to the single value $0$ (82), so the turn leaves the first domain "
             r"at once: the columns over the two corner triangles with $|\xi| > a/2$ are capped by the faces, and "
             r"with the plane still through the centre the potential changes by $\Delta = -2\sqrt2\, J/a^3 = "
