@@ -4,10 +4,11 @@ import sympy as sp
 from symfloat import PRINTED_DIGITS, Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
+from symfloat.model.vocabulary import Called, IndependentOf, Is
 
 
 a, b, s, F = sp.symbols("a b s F", positive=True)
-phi, om, psi = sp.symbols("varphi omega psi", positive=True)
+phi, om, psi, mu = sp.symbols("varphi omega psi mu", positive=True)
 x, y, z, X, Y, t_, al_, be_ = sp.symbols("x y z X Y t alpha_t beta_t", real=True)
 n, r = sp.symbols("n r", positive=True)
 half = sp.Rational(1, 2)
@@ -35,11 +36,13 @@ DERIVATION = d = Derivation(
             "n-gon F_1 r^2 (2 + cos 2pi/n)/12 and its decrease with n at equal area.",
     domain={a: (0.5, 2), b: (0.5, 2), s: (0.05, 0.95), phi: (0.05, 1.2), om: (0.01, 0.78), psi: (0.01, 1.5),
             n: (3, 12), r: (0.5, 2), F: (0.5, 3), x: (-1, 1), y: (-1, 1), t_: (0, 1), X: (-1, 2),
-            al_: (0.1, 3), Fg: (0.5, 3), Tg: (0.1, 2)},
+            al_: (0.1, 3), Fg: (0.5, 3), Tg: (0.1, 2), mu: (0, 1.57)},
     constraints=(),
     assumptions=("a: base edge (square prism; the cube has a = b), b: height (side edge), 0 < s < 1: density "
                  "relative to the water, the body homogeneous",
                  "first rotation domain: the water plane cuts no base face (the text's standing assumption)",
+                 "mu: angle of a horizontal turning axis through the waterplane's centroid with the tilt axis EF "
+                 "(the stability of a position is read for the turn about it; mu = 90 deg is the axis G_2 H_2 of (51))",
                  "omega: angle of the horizontal tilt axis with a side of the base, 0 < omega < 45 deg "
                  "(other directions follow by the symmetry of the square)",
                  "n-gon: circumradius r, n >= 3 sides; n is sampled as a real number in the identities that hold "
@@ -102,6 +105,20 @@ d.step("potential-independent-of-omega", (sp.Derivative(Ez, om), 0), "integratio
 d.step("upright-metacentric-height", (GM, sp.Limit(GZ / phi, phi, 0), T1 / V1 - e1,
                                       a ** 2 / (12 * b * s) - b * (1 - s) / 2), "limit",
        uses=("righting-arm-value",), result=GM, note="Duhamel's condition (18): stable upright iff GM > 0")
+Tw, Sd = sp.symbols("T_w S_d")
+d.step("waterplane-moment", (Tw, over_square((xi / sp.cos(phi) * sp.cos(mu) - eta * sp.sin(mu)) ** 2 / sp.cos(phi)),
+                             T1 * (sp.cos(mu) ** 2 / sp.cos(phi) ** 3 + sp.sin(mu) ** 2 / sp.cos(phi))), "integration",
+       uses=("square-inertia", "square-product-moment"), result=Tw,
+       note="moment of the waterplane z = xi tan(phi) about the horizontal axis through its centroid O at the angle "
+            "mu to the tilt axis EF: a base point (xi, eta) lies xi/cos(phi) across EF and eta along it in the plane, "
+            "area element df/cos(phi) (VII's T_2 = T_1/cos^3 and T_2^1 = T_1^1/cos of the tilted section)")
+d.step("stability", Eq(Sd, Tw / V1 - Ez), "definition", result=Sd,
+       note="Duhamel's condition (18), (43): at a position of equilibrium the metacentric height for the turn about "
+            "that axis, moment over volume minus the height E of G above B, is the second variation of the "
+            "potential over the weight: > 0 stable, = 0 neutral, < 0 unstable for the turn. Upright (phi = 0) it is "
+            "GM for every mu; at the oblique position it is T_1 tan^2 phi_1 cos^2 mu/(V_1 cos phi_1), zero for the "
+            "axis G_2 H_2 (mu = 90 deg) as (51) says")
+d.defines("stability", Sd)
 d.step("oblique-equilibrium", Eq(tan2, 2 * (V1 * e1 / T1 - 1)), "definition", result=tan2,
        note="the non-zero root of GZ: T_1 (1 + tan^2 phi/2) = V_1 e_1 (Scheeffer's (27))")
 d.step("oblique-equilibrium-check", (T1 * (1 + tan2 / 2) - V1 * e1, 0), "algebra", uses=("oblique-equilibrium",))
@@ -114,6 +131,16 @@ d.step("oblique-stable-in-phi", (sp.diff(sp.sin(phi) / V1 * (T1 * (1 + sp.tan(ph
        uses=("righting-arm-value", "oblique-equilibrium"),
        note="E'' = GZ' = T_1 tan^2 phi_1/(V_1 cos phi_1) > 0 at phi_1: stable against tilting; with the "
             "omega-independence the position is stable, neutral about the main axis ((43), (51))")
+d.step("stability-upright", (sp.Subs(Sd, phi, 0), GM), "substitution",
+       uses=("stability", "waterplane-moment", "potential", "moment-xi", "moment-z", "upright-metacentric-height"),
+       note="upright the stability is the metacentric height GM for the turn about every horizontal axis")
+d.step("stability-oblique", (sp.Subs(Sd, phi, sp.atan(tan1)),
+                             T1 * tan2 * sp.cos(mu) ** 2 / (V1 * sp.cos(sp.atan(tan1)))), "algebra",
+       uses=("stability", "waterplane-moment", "potential", "moment-xi", "moment-z", "oblique-tan",
+             "oblique-equilibrium"),
+       note="at the oblique position: positive for the tilt axis (mu = 0, as oblique-stable-in-phi), zero for the "
+            "axis G_2 H_2 (mu = 90 deg), along which the turn about the main axis leads through equilibria at "
+            "constant potential (potential-independent-of-omega): (51)")
 corners = [(sx * a / 2, sy * a / 2) for sx in (-1, 1) for sy in (-1, 1)]
 d.step("corner-distance", (OB, as_printed(lambda: sp.sqrt((a / 2) ** 2 + (a / 2) ** 2)), sp.sqrt(2) * a / 2), "geometry",
        result=OB)
@@ -158,6 +185,11 @@ d.quote("e1", "VI.C", r"$e_1 = \frac{b}{2} (1 - s)$", reading=(e1, b / 2 * (1 - 
 d.quote("upright-condition", "VI.C", r"$\frac{a^2}{12 b s} - \frac{b}{2} (1 - s) > 0$",
         reading=(a ** 2 / (12 * b * s) - b / 2 * (1 - s), GM),
         note="the left side is the upright metacentric height")
+d.says("upright-duhamel", "VI.C",
+       r"Für die Stabilität der aufrechten Lage ist also nach dem Duhamelschen Satz die Bedingung  "
+       r"$\frac{T_1}{V_1} - e_1 > 0$", "Stabilität der aufrechten Lage", Is(T1 / V1 - e1, at={phi: 0, mu: 0}),
+       note="Read as: the stability of the upright position, whose sign the condition states, is T_1/V_1 - e_1 "
+            "(the same for every turning axis, stability-upright).")
 d.quote("75", "(75)", r"oder  $\left(\frac{a}{b}\right)^2 > 6 s (1 - s)^*$  (75)",
         reading=((a / b) ** 2 - 6 * s * (1 - s), 12 * s / b * GM),
         note="sign identity, factor 12 s/b > 0; the asterisk is the footnote mark (Schülen)")
@@ -226,6 +258,12 @@ d.quote("78a-words", "(78a)",
 d.quote("78b", "(78b)",
         r"$$\operatorname{tg} \varphi_1 = \sqrt{12 \cdot \left(\frac{b}{a}\right)^2 s (1 - s) - 2} \quad (78b)$$",
         reading=(tan1, sp.sqrt(12 * (b / a) ** 2 * s * (1 - s) - 2)))
+d.says("78b-turn", "(78b)",
+       "Im letzteren Falle bleibt die Stabilität in jeder Lage, die das Prisma durch Drehung um seine Hauptachse "
+       "erhält.", "Stabilität", IndependentOf(om),
+       note="Read for every tilt of the first domain, the oblique position of (78b) among them: the stability, for "
+            "every turning axis mu, does not change with the direction omega of the tilt axis, i.e. as the prism is "
+            "turned about its main axis; under (78a) the tilt stays within the first domain for every omega (77).")
 d.quote("78c", "(78c)",
         r"$$\text{Ist jedoch } \left(\frac{a}{b}\right)^2 < \begin{cases} (1 - s)(7s - 1) & \text{für } s < "
         r"\frac{1}{2} \\ s(6 - 7s) & \text{für } s > \frac{1}{2} \end{cases} \quad (78c)$$",
@@ -380,6 +418,27 @@ d.quote("81-upper", "(81)",
         reading=(shi, sp.Rational("0.7887")), tolerance=PRINTED_DIGITS)
 d.quote("81-lower", "(81)", r"$s > 0,7887$  oder  $s < 0,2113$  ist.",
         reading=(slo, sp.Rational("0.2113")), tolerance=PRINTED_DIGITS)
+# the cube's upright position named stable or unstable: the stability at phi = 0 (the metacentric height, the same
+# for every turning axis by stability-upright, read for mu = 0) on the density ranges the sentences give, bounded by
+# the closed forms the printed decimals round (79-*, 80-*)
+UPRIGHT_CUBE = {a: b, phi: 0, mu: 0}
+LAW_81 = "Ein Würfel schwimmt in aufrechter Lage stabil, wenn sein spec. Gewicht  $s > 0,7887$  oder  $s < 0,2113$  ist."
+d.says("81-stable-heavy", "(81)", LAW_81, "stabil", Called(at=UPRIGHT_CUBE, domain={s: (rp, 1)}),
+       note="Read on s > 1/2 + sqrt(1/12) = 0.78868 (79), which the printed 0.7887 rounds.")
+d.says("81-stable-light", "(81)", LAW_81, "stabil", Called(at=UPRIGHT_CUBE, domain={s: (0, rm)}),
+       note="Read on s < 1/2 - sqrt(1/12) = 0.21132 (79), which the printed 0.2113 rounds.")
+d.says("81a-unstable-heavy", "VI.D", "so schwimmt er in aufrechter Lage labil",
+       "labil", Called(at=UPRIGHT_CUBE, domain={s: (r8p, rp)}),
+       note="Read between (4 + sqrt 2)/7 = 0.7735 (80) and 1/2 + sqrt(1/12) = 0.7887 (79), the first range of the "
+            "sentence ('zwischen 0,7735 und 0,7887').")
+d.says("81a-unstable-light", "VI.D", "so schwimmt er in aufrechter Lage labil",
+       "labil", Called(at=UPRIGHT_CUBE, domain={s: (rm, r8m)}),
+       note="Read between 1/2 - sqrt(1/12) = 0.2113 (79) and (3 - sqrt 2)/7 = 0.2265 (80), the second range of the "
+            "sentence ('oder zwischen 0,2113 und 0,2265').")
+d.says("82-unstable", "VI.D", "so gelangt er ebenfalls aus der labilen aufrechten Lage in eine schiefe",
+       "labilen", Called(at=UPRIGHT_CUBE, domain={s: (r8m, r8p)}),
+       note="Read between (3 - sqrt 2)/7 = 0.2265 and (4 + sqrt 2)/7 = 0.7735 (80), the range of the sentence "
+            "('zwischen 0,2265 und 0,7735').")
 d.quote("81-oblique-upper", "VI.D", "zwischen 0,7735 und 0,7887",
         reading=(s80hi, sp.Rational("0.7735")), tolerance=PRINTED_DIGITS,
         note="the range of the claim 'aufrecht labil, ... durch Drehung um eine beliebige horizontale Achse in eine "
@@ -457,35 +516,47 @@ d.quote("82-half-zero", "VI.D", "also  $\\omega = 0$  folgt.",
         reading=as_printed(lambda: (sp.asin(sp.sqrt(sp.Subs(Sw, (a, s), (b, half)))) - pi / 4, 0)),
         note="sin(45 deg + omega) grows on 0 <= omega <= 45 deg: the one solution of sin(45 deg + omega) = "
              "sqrt(2)/2 there is omega = 0")
-d.quote("half-stable", "VI.D",
-        r"D. h. ein Würfel vom spec. Gew.  $\frac{1}{2}$  kann aus der aufrechten labilen Lage nur durch Drehung um "
-        r"eine horizontale Achse, die einer Kante parallel ist, in eine schiefe stabile Lage gelangen.",
-        reading=(Dlt, sp.Abs(Dlt)),
-        note="read as: the potential does not decrease when the cube (s = 1/2, phi = 45 deg) is turned about its "
-             "main axis by omega (Delta(omega) >= 0), the only direction in which the second-order test is "
-             "neutral ((51)); every other direction is stable by oblique-stable-in-phi",
-        erratum=Erratum(
-            "claim", "high",
-            "The 45-deg position of the cube with s = 1/2 (axis parallel to an edge, waterplane the diagonal "
-            "rectangle) is an equilibrium but not stable: turning the cube about its main axis by omega lowers "
-            "the potential by sqrt(2) a d^4/(12 sin w cos w), d = (sin w + cos w - 1)/2 (about sqrt(2) a "
-            "omega^3/192), because the corners of the top and bottom faces then dip through the water plane. "
-            "The equilibrium tilt phi_1 = 45 deg and omega = 0 are right.",
-            r"At $s = \tfrac12$ the allowed range of $\omega$ shrinks to the single value 0 (82), so the neutral "
-            "rotation about the main axis of the first domain immediately leaves it: the columns over the two corner "
-            r"triangles with $|\xi| > a/2$ are capped by the faces, and with the plane still through the centre the "
-            r"potential changes by $\Delta = -2\sqrt2\, J/a^3 < 0$ (the steps on the cube at $s = \tfrac12$). On the "
-            r"clipped unit cube: $\Delta(0.1) = -6.0 \times 10^{-6}$, $\Delta(0.3) = -1.03 \times 10^{-4}$ (potential "
-            "in units of the edge), agreeing with the closed form; the metacentric height of that position is "
-            r"exactly 0. Counterexample to 'stabil': any $\omega \ne 0$.",
-            corrected_reading=(Dlt, -sp.Abs(Dlt)),
-            objection="Just before (52) Scheeffer calls the oblique equilibrium stable although the moment vanishes "
-                      "for the axis $G_2 H_2$: a position neutral in one direction counts as stable in his usage, so "
-                      r"the cube at $s = \tfrac12$ is stable in his sense.",
-            answer="His neutral direction is harmless because turning about the main axis leads through new "
-                   "equilibria (the law of V); here it leaves the first domain at once and the potential falls (by "
-                   r"about $\sqrt2\, a\, \omega^3/192$, $-6.0 \times 10^{-6}$ at $\omega = 0.1$ on the unit cube), so "
-                   "the position is not stable even in that sense."))
+HALF_CUBE = {a: b, s: half, phi: pi / 4, mu: pi / 2}      # the 45-deg position, turned about the axis G_2 H_2
+d.says("half-stable", "VI.D",
+       r"D. h. ein Würfel vom spec. Gew.  $\frac{1}{2}$  kann aus der aufrechten labilen Lage nur durch Drehung um "
+       r"eine horizontale Achse, die einer Kante parallel ist, in eine schiefe stabile Lage gelangen.",
+       "schiefe stabile Lage", Called(at=HALF_CUBE),
+       note="Read at the position the sentence names (a = b, s = 1/2, phi_1 = 45 deg, the tilt axis parallel to an "
+            "edge) for the turn about the axis G_2 H_2 across the tilt axis (mu = 90 deg), the one direction in "
+            "which the second variation can vanish ((51)); for the tilt axis itself (mu = 0) it is positive "
+            "(stability-oblique).",
+       erratum=Erratum(
+           "claim", "high",
+           r"\text{in eine schiefe Gleichgewichtslage, die in zweiter Ordnung indifferent und in dritter labil ist}",
+           (r"The position is neutral to second order and unstable at the third: its stability for the turn about "
+            r"$G_2 H_2$ vanishes, and the turn about the main axis, which leaves the first domain at once, lowers "
+            r"the potential as $|\omega|^3$. At $a = b$, $s = \tfrac12$, $\varphi_1 = 45^\circ$ the waterplane's "
+            r"moment about $G_2 H_2$ over the volume, $T_1/(V_1 \cos\varphi_1) = \sqrt2\, a/6$, equals the height "
+            r"of $G$ above $B$, so the second variation of the potential is $0$ and 'stabil' is refuted as neutral, "
+            r"as at every oblique position of the first domain ((51)). There the neutral turn about the main axis leads through equilibria at constant potential; here "
+            r"the allowed range of $\omega$ shrinks to the single value $0$ (82), so the turn leaves the first domain "
+            r"at once: the columns over the two corner triangles with $|\xi| > a/2$ are capped by the faces, and "
+            r"with the plane still through the centre the potential changes by $\Delta = -2\sqrt2\, J/a^3 = "
+            r"-\sqrt2\, a\, d^4/(12 \sin\omega \cos\omega) < 0$, $d = (\sin\omega + \cos\omega - 1)/2$, "
+            r"about $-\sqrt2\, a\, |\omega|^3/192$ for either sign of $\omega$ (the steps on the cube at $s = "
+            r"\tfrac12$). On the clipped unit cube: $\Delta(0.1) = -6.0 \times 10^{-6}$, $\Delta(0.3) = -1.03 "
+            r"\times 10^{-4}$ (potential in units of the edge), agreeing with the closed form. Neutral to second "
+            r"order, unstable at the third: the equilibrium tilt $\varphi_1 = 45^\circ$ and $\omega = 0$ are "
+            r"right, the word 'stabile' is not."),
+           corrected_reading=(Dlt, -sp.Abs(Dlt)),
+           objection=(r"Scheeffer calls every oblique position of the first domain stable although its stability "
+                      r"vanishes for the axis $G_2 H_2$ ((51): 'nur für die ... Achse $G_2 H_2$ ... ist es Null, "
+                      r"folglich das Gleichgewicht stabil'): a position neutral in one direction counts as stable in "
+                      r"his usage, so the cube at $s = \tfrac12$ is stable in his sense, or at worst neutral, and "
+                      r"the sentence is right by the same standard as (78a)."),
+           answer=(r"His neutral direction is harmless because the turn about the main axis leads through new "
+                   r"equilibria at the same potential (the law of V, the potential independent of $\omega$ in the "
+                   r"first domain); at $s = \tfrac12$ it leaves the first domain at once and the third-order term "
+                   r"decides: the potential falls by about $\sqrt2\, a\, |\omega|^3/192$ for every turn $\omega "
+                   r"\ne 0$ ($-6.0 \times 10^{-6}$ at $\omega = 0.1$ on the unit cube). So the position is neither "
+                   r"stable in his sense nor merely neutral: neutral to second order (the stability $0$, which refutes "
+                   r"'stabile' as printed), unstable at the third (the potential's fall, which the correction "
+                   r"reads).")))
 d.quote("half-tilt", "VI.D", r"$\varphi_1 = 45^\circ$",
         reading=(sp.atan(sp.sqrt(sp.Subs(tan2, (a, s), (b, half)))), pi / 4))
 E_TILT = sp.tan(phi) ** 2 - tan2c                 # the oblique cube's tilt equation, zero at phi_1

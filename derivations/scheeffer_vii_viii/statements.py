@@ -3,6 +3,7 @@ import sympy as sp
 
 from symfloat import Derivation, Eq, Erratum
 from symfloat.model.symbol_names import symbol
+from symfloat.model.vocabulary import StableIff
 
 R = sp.Rational
 b, s, F1, F, xs, T, Tp, f, xs1, tau = sp.symbols("b s F_1 F x_s T T^1 f x_s^1 tau", positive=True)
@@ -186,6 +187,7 @@ d.step("Tm", (Tm, sp.Subs(Tmg, (T2g, T21g, kg), (T2, T21, k_)), (T2 + T21) / 2 -
        note="the least moment of the waterplane at an equilibrium (its central product is k there)")
 d.step("D", Eq(D, Tm - V1 * e2), "definition", result=D,
        note="Duhamel: V_1 times the metacentric height of the position; stable iff D > 0 (scheeffer-iv-v (33))")
+d.defines("stability", D)
 d.step("e3-cos", (e3 * c2, b / 2 - Z3 / V3 + sn2 * M3 / V3), "algebra", uses=("e3", "M3"),
        note="so e_3 cos phi_2 = b/2 - z_3 wherever M_3 = 0")
 M2h, M2y = symbol("M_2h", r"M_{2,h}"), symbol("M_2y", r"M_{2,y}")
@@ -389,6 +391,10 @@ d.quote("106-first", "VII", r"folglich auch  $\int_1",
         note="int_1 x y df = 0 at the first condition (the line break of the transcription splits the formula)")
 d.quote("104", "(104)", r"$$T_m - V_3 e_3 > 0 \quad (104)$$", reading=(Tm - V3 * e3, D),
         note="D = T_m - V_1 e_2 (Duhamel), V_1 e_2 = V_3 e_3 (step e2-e3); T_m the least moment at equilibrium")
+d.says("104-words", "(104)", "so ist das Gleichgewicht stabil, wenn\n\n$$T_m - V_3 e_3 > 0 \\quad (104)$$",
+       "stabil", StableIff(Tm - V3 * e3 > 0),
+       note="Read as Duhamel's criterion both ways: stable exactly when (104) holds; V_3 e_3 = V_1 e_2 (104-balance) "
+            "makes it the sign of the stability D.")
 d.quote("104-balance", "VII", r"so ist  $V_1 e_2 = V_3 e_3$", reading=(V1 * e2, V3 * e3))
 d.quote("x-direction", "VII", r"Nimmt man  $S S^1$  als  $(+ x)$  Richtung",
         unreadable=("$S$ is the centroid of the body (Fig. 17), no point of the water section of Fig. 19, whose "
