@@ -176,3 +176,25 @@ def test_a_recorded_key_is_not_believed_when_what_it_covers_changed(tmp_path):
                    entry["covers"] + ["../../etc/passwd"]):
         shipped.write_text(json.dumps({**entry, "covers": covers}), encoding="utf-8")
         assert compiled._recorded_key(shipped, folder) is None, covers
+
+
+THRESHOLDS_PROBE = """
+import json, sys
+from symfloat.comparison.thresholds import source_thresholds
+from symfloat.registry import provided
+found = source_thresholds("cube", (1, 1, 1), grid=8)
+(did, tables), = provided("tables")
+print(json.dumps({"derivations": sorted({t["derivation"] for t in found}), "tables": did,
+                  "statements": sorted(m for m in sys.modules if m.endswith(".statements"))}))
+"""
+
+
+def test_the_phase_thresholds_and_the_atlas_tables_read_the_compiled_readings(tmp_path):
+    # the sources' thresholds of a phase diagram sweep the predictors as a scene reads them; only the closed forms
+    # (results of VI.C-F's steps, no reading) import a statements module, and the atlas's tables (IX) none
+    env = {**os.environ, "SYMFLOAT_CACHE": str(tmp_path)}
+    done = subprocess.run([sys.executable, "-c", THRESHOLDS_PROBE], capture_output=True, text=True, check=True,
+                          env=env, cwd=tmp_path)
+    ran = json.loads(done.stdout.strip().splitlines()[-1])
+    assert {"scheeffer-ix", "scheeffer-vi-cf"} <= set(ran["derivations"]) and ran["tables"] == "scheeffer-ix"
+    assert ran["statements"] == ["symfloat.derivations.scheeffer_vi_cf.statements"]
