@@ -152,7 +152,7 @@ def test_a_shipped_entry_is_judged_without_parsing_a_module(monkeypatch):
     # predictors to find them from their imports (tenths of a second a derivation): the same key
     for did in ("hasab", "scheeffer-ix", "scheeffer-vii-viii"):
         folder = registry.manifest(did).folder
-        assert compiled._recorded_key(folder / "compiled.json", folder) == compiled.key(folder), did
+        assert compiled._recorded_key(compiled._entry(folder / "compiled.json"), folder) == compiled.key(folder), did
     module = registry.part("hasab", "predictors")
     monkeypatch.setattr(compiled, "_imported_files", lambda path: pytest.fail(f"{path} parsed"))
     assert Readings(module.__file__, module.__package__, module.READINGS.spec).source == "shipped"
@@ -163,11 +163,11 @@ def test_a_recorded_key_is_not_believed_when_what_it_covers_changed(tmp_path):
     folder = tmp_path / "scheeffer_ix"
     shutil.copytree(registry.manifest("scheeffer-ix").folder, folder, ignore=shutil.ignore_patterns("__pycache__"))
     shipped = folder / "compiled.json"
-    assert compiled._recorded_key(shipped, folder) == compiled.key(folder)
+    assert compiled._recorded_key(compiled._entry(shipped), folder) == compiled.key(folder)
     statements = folder / "statements.py"
     text = statements.read_text(encoding="utf-8")
     statements.write_text(text + "\nfrom symfloat.solver import cylinder\n", encoding="utf-8")   # a new import
-    assert compiled._recorded_key(shipped, folder) is None and compiled.key(folder) != compiled.key(
+    assert compiled._recorded_key(compiled._entry(shipped), folder) is None and compiled.key(folder) != compiled.key(
         registry.manifest("scheeffer-ix").folder)
     statements.write_text(text, encoding="utf-8")
     entry = json.loads(shipped.read_text(encoding="utf-8"))
@@ -175,7 +175,7 @@ def test_a_recorded_key_is_not_believed_when_what_it_covers_changed(tmp_path):
                    [c for c in entry["covers"] if c != "symfloat/engine/roots.py"],        # the key no longer matches
                    entry["covers"] + ["../../etc/passwd"]):
         shipped.write_text(json.dumps({**entry, "covers": covers}), encoding="utf-8")
-        assert compiled._recorded_key(shipped, folder) is None, covers
+        assert compiled._recorded_key(compiled._entry(shipped), folder) is None, covers
 
 
 THRESHOLDS_PROBE = """

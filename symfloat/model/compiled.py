@@ -568,16 +568,21 @@ def _covers(files, folder: Path) -> list[str]:
                   else p.relative_to(folder.parent).as_posix() for p in files)
 
 
-def _recorded_key(path: Path, folder: Path) -> str | None:
-    """The key of the entry in *path*, hashed again over the files it records it covers (``covers``), when that
-    gives its key and the set is complete (every file any key covers, the formula model as it is now); else
-    ``None``.  Then the sources are those :func:`key` would find, without parsing a module: the files it follows
-    imports from are among them, byte for byte as when the key was made, so their imports are too."""
+def _entry(path: Path):
+    """The JSON in *path*, or ``None`` where there is none (an entry is judged by :func:`_judged`)."""
     try:
-        entry = json.loads(path.read_text(encoding="utf-8"))
-        covers = entry["covers"]
-    except (OSError, ValueError, TypeError, KeyError):
+        return json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
         return None
+
+
+def _recorded_key(entry, folder: Path) -> str | None:
+    """The key of *entry* (of the package in *folder*), hashed again over the files it records it covers
+    (``covers``), when that gives its key and the set is complete (every file any key covers, the formula model as
+    it is now); else ``None``.  Then the sources are those :func:`key` would find, without parsing a module: the
+    files it follows imports from are among them, byte for byte as when the key was made, so their imports are
+    too."""
+    covers = entry.get("covers") if isinstance(entry, dict) else None
     if not (isinstance(covers, list) and all(isinstance(c, str) and ".." not in c.split("/") for c in covers)):
         return None
     files = {_LIBRARY.joinpath(c.partition("/")[2]) if c.startswith("symfloat/") else folder.parent / c
@@ -601,13 +606,9 @@ def _cache_root() -> Path:
     return (outputs_root() or Path.cwd()) / ".symfloat-cache" / "compiled"
 
 
-def _judged(path: Path, package: str, k: str):
-    """``(readings, printed)`` of the entry in *path* if it is one of *package* under key *k* whose content hash
-    matches and whose payload parses under the whitelist, else ``None``."""
-    try:
-        entry = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return None
+def _judged(entry, package: str, k: str):
+    """``(readings, printed)`` of *entry* (:func:`_entry`) if it is one of *package* under key *k* whose content
+    hash matches and whose payload parses under the whitelist, else ``None``."""
     if not (isinstance(entry, dict) and entry.get("format") == FORMAT and entry.get("package") == package
             and entry.get("key") == k and isinstance(entry.get("readings"), dict)
             and entry.get("sha256") == _digest({"readings": entry["readings"], "printed": entry.get("printed")})):
@@ -638,12 +639,13 @@ class Readings:
 
     def __init__(self, module_file, package: str, spec: dict):
         self.folder, self.package, self.spec = Path(module_file).resolve().parent, package, spec
-        self.key = _recorded_key(self.folder / SHIPPED, self.folder) or key(self.folder)
+        shipped = _entry(self.folder / SHIPPED)
+        self.key = _recorded_key(shipped, self.folder) or key(self.folder)
         self.source = "shipped"
-        found = _judged(self.folder / SHIPPED, self.package.rpartition(".")[2], self.key)
+        found = _judged(shipped, self.package.rpartition(".")[2], self.key)
         if found is None:
             self.source = "cache"
-            found = _judged(self._cache_file(), self.package.rpartition(".")[2], self.key)
+            found = _judged(_entry(self._cache_file()), self.package.rpartition(".")[2], self.key)
         if found is None:
             self.source = "statements"
             entry = self.compile()
@@ -706,7 +708,7 @@ def _parsed(entry):
 
 def judged_current(readings: Readings) -> bool:
     """Whether the package's shipped ``compiled.json`` is current (its key) and parses."""
-    return _judged(readings.folder / SHIPPED, readings.package.rpartition(".")[2], readings.key) is not None
+    return _judged(_entry(readings.folder / SHIPPED), readings.package.rpartition(".")[2], readings.key) is not None
 
 
 def write_shipped(readings: Readings) -> None:
