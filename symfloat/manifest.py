@@ -63,7 +63,11 @@ class Manifest:
 
 def body_kinds(body: str, dims=()) -> tuple[str, ...]:
     """The kinds of :data:`KINDS` a scene of *body* with edges *dims* is: a box is also a ``square-box``
-    when two of its edges are equal and a ``cube`` when all three are; any other body is its own kind."""
+    when two of its edges are equal and a ``cube`` when all three are, and a cube is all three kinds (a cube
+    scene reads what the box 1,1,1 reads); any other body is its own kind (a prism's dimensions are no box's
+    edges, so a square prism reads the predictors of prisms alone)."""
+    if body == "cube":
+        return ("box", "square-box", "cube")
     if body != "box":
         return (body,)
     equal = len(dims) - len(set(dims))

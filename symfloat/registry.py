@@ -121,13 +121,18 @@ class Reader:
     printed: tuple
 
 
+def _predictors(derivation_id: str):
+    """The predictors module of a derivation, imported alone (nothing registered with its statements)."""
+    from . import derivations
+    return importlib.import_module(f"{derivations.__name__}.{manifest(derivation_id).package}.predictors")
+
+
 @cache
 def reader(derivation_id: str) -> Reader:
     """A derivation as a scene reads it: a predictors module of compiled readings alone (no statements module,
     no SymPy where its compiled readings are current, :mod:`symfloat.model.compiled`), else its predictor."""
     m = manifest(derivation_id)
-    from . import derivations
-    module = importlib.import_module(f"{derivations.__name__}.{m.package}.predictors")
+    module = _predictors(derivation_id)
     if hasattr(module, "READINGS"):
         if set(module.BODIES) != set(m.predicts):
             raise RuntimeError(f"{m.folder}: the predictors predict {module.BODIES}, the manifest says {m.predicts}")
@@ -185,13 +190,11 @@ def compiled_readings(write: bool = False) -> list[str]:
     :mod:`symfloat.model.compiled`) are not current; with *write*, written afresh from the statements (then the
     ids of those written)."""
     from .model.compiled import judged_current, write_shipped
-    from . import derivations
     out = []
     for did, m in _manifests().items():
         if not m.has("predictors"):
             continue
-        module = importlib.import_module(f"{derivations.__name__}.{m.package}.predictors")
-        readings = getattr(module, "READINGS", None)
+        readings = getattr(_predictors(did), "READINGS", None)
         if readings is not None and not judged_current(readings):
             if write:
                 write_shipped(readings)
@@ -201,10 +204,16 @@ def compiled_readings(write: bool = False) -> list[str]:
 
 def provided(kind: str) -> list[tuple[str, object]]:
     """``(derivation id, value)`` for every value the derivations provide as *kind*, in id order; imports
-    only the module each manifest names for it."""
+    only the module each manifest names for it (a predictors module of compiled readings alone, as a scene reads
+    it: no statements module)."""
     out = []
     for did in providing(kind):
-        part(did, manifest(did).provides[kind])
+        name = manifest(did).provides[kind]
+        module = _predictors(did) if name == "predictors" else None
+        if hasattr(module, "READINGS"):
+            out.append((did, module.PROVIDES[kind]))
+            continue
+        part(did, name)
         out += [(did, value) for value in statements(did).provided.get(kind, ())]
     return out
 

@@ -48,3 +48,18 @@ def test_a_scenes_arguments_and_solver_load_no_sympy():
              "print('sympy' in sys.modules)")
     done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
     assert done.stdout.strip() == "False"
+
+
+def test_a_scene_loads_no_module_only_other_bodies_use(tmp_path):
+    """A cube's or a box's scene imports neither the cylinder's slice quadrature (its nodes computed on import) nor
+    the statements of a derivation; a cylinder's does import the quadrature."""
+    import os
+    env = {**os.environ, "SYMFLOAT_CACHE": str(tmp_path), "SYMFLOAT_QUIET": "1"}
+    for argv in (["scene", "cube", "--density", "0.3"], ["scene", "box", "--dims", "1,2,3", "--density", "0.3"]):
+        done = subprocess.run([sys.executable, "-c", PROBE, *argv, "--format", "json"], capture_output=True, text=True,
+                              check=True, env=env, cwd=tmp_path)
+        modules = set(json.loads(done.stdout)["modules"])
+        assert "symfloat.geometry.cylinder" not in modules, argv
+        assert not {m for m in modules if m.endswith(".statements")}, argv
+    ran = _run("scene", "cylinder", "--dims", "1,2", "--density", "0.3", "--format", "json")
+    assert "symfloat.geometry.cylinder" in ran["modules"]

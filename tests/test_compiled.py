@@ -145,3 +145,56 @@ def test_the_key_covers_what_compiling_runs_and_not_the_witnesses(tmp_path):
         assert (compiled.key(folder) != before) == changes, name
         path.write_text(text, encoding="utf-8")
     assert compiled.key(folder) == before
+
+
+def test_a_shipped_entry_is_judged_without_parsing_a_module(monkeypatch):
+    # the entry records the files its key covers; a scene hashes them again instead of parsing the statements and
+    # predictors to find them from their imports (tenths of a second a derivation): the same key
+    for did in ("hasab", "scheeffer-ix", "scheeffer-vii-viii"):
+        folder = registry.manifest(did).folder
+        assert compiled._recorded_key(compiled._entry(folder / "compiled.json"), folder) == compiled.key(folder), did
+    module = registry.part("hasab", "predictors")
+    monkeypatch.setattr(compiled, "_imported_files", lambda path: pytest.fail(f"{path} parsed"))
+    assert Readings(module.__file__, module.__package__, module.READINGS.spec).source == "shipped"
+
+
+def test_a_recorded_key_is_not_believed_when_what_it_covers_changed(tmp_path):
+    import shutil
+    folder = tmp_path / "scheeffer_ix"
+    shutil.copytree(registry.manifest("scheeffer-ix").folder, folder, ignore=shutil.ignore_patterns("__pycache__"))
+    shipped = folder / "compiled.json"
+    assert compiled._recorded_key(compiled._entry(shipped), folder) == compiled.key(folder)
+    statements = folder / "statements.py"
+    text = statements.read_text(encoding="utf-8")
+    statements.write_text(text + "\nfrom symfloat.solver import cylinder\n", encoding="utf-8")   # a new import
+    assert compiled._recorded_key(compiled._entry(shipped), folder) is None and compiled.key(folder) != compiled.key(
+        registry.manifest("scheeffer-ix").folder)
+    statements.write_text(text, encoding="utf-8")
+    entry = json.loads(shipped.read_text(encoding="utf-8"))
+    for covers in ([c for c in entry["covers"] if c != "scheeffer_ix/statements.py"],     # a file left out
+                   [c for c in entry["covers"] if c != "symfloat/engine/roots.py"],        # the key no longer matches
+                   entry["covers"] + ["../../etc/passwd"]):
+        shipped.write_text(json.dumps({**entry, "covers": covers}), encoding="utf-8")
+        assert compiled._recorded_key(compiled._entry(shipped), folder) is None, covers
+
+
+THRESHOLDS_PROBE = """
+import json, sys
+from symfloat.comparison.thresholds import source_thresholds
+from symfloat.registry import provided
+found = source_thresholds("cube", (1, 1, 1), grid=8)
+(did, tables), = provided("tables")
+print(json.dumps({"derivations": sorted({t["derivation"] for t in found}), "tables": did,
+                  "statements": sorted(m for m in sys.modules if m.endswith(".statements"))}))
+"""
+
+
+def test_the_phase_thresholds_and_the_atlas_tables_read_the_compiled_readings(tmp_path):
+    # the sources' thresholds of a phase diagram sweep the predictors as a scene reads them; only the closed forms
+    # (results of VI.C-F's steps, no reading) import a statements module, and the atlas's tables (IX) none
+    env = {**os.environ, "SYMFLOAT_CACHE": str(tmp_path)}
+    done = subprocess.run([sys.executable, "-c", THRESHOLDS_PROBE], capture_output=True, text=True, check=True,
+                          env=env, cwd=tmp_path)
+    ran = json.loads(done.stdout.strip().splitlines()[-1])
+    assert {"scheeffer-ix", "scheeffer-vi-cf"} <= set(ran["derivations"]) and ran["tables"] == "scheeffer-ix"
+    assert ran["statements"] == ["symfloat.derivations.scheeffer_vi_cf.statements"]

@@ -61,3 +61,41 @@ def test_a_stamp_does_not_depend_on_where_the_checkout_lies(tmp_path):
     assert digest(a) == digest(b)
     b.write_text("x = 2\n")
     assert digest(a) != digest(b)
+
+
+_GRID_IMPORTS = """
+import sys
+from fractions import Fraction
+from symfloat.derivations.scheeffer_ix import grid
+grid.grid_rows([Fraction(1, 2), Fraction(4, 5)], [Fraction(2)], extra=grid.boundary_cells([Fraction(4, 5)]))
+print("\\n".join(sorted({m.__file__ for name, m in list(sys.modules.items())
+                        if name.startswith("symfloat") and getattr(m, "__file__", None)})))
+"""
+
+
+def test_the_grid_stamp_changes_with_every_module_the_grid_is_made_from(monkeypatch):
+    # the stamp once listed the solver, geometry and model packages and left out what IX's predictors import
+    # (engine/roots.py, which compiling runs): editing it kept a stale grid stamped current. Each module a grid
+    # computation loads (run in a fresh process), and the two its predictors compile with, is changed by a
+    # comment, as read, and the stamp must change
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-c", _GRID_IMPORTS], capture_output=True, text=True, check=True)
+    root = Path(__file__).resolve().parents[1]
+    loaded = {f for f in (Path(x).resolve() for x in done.stdout.split()) if f.is_relative_to(root)}
+    loaded |= {root / "symfloat" / "engine" / "roots.py", root / "symfloat" / "model" / "compiled.py"}
+    exempt = {"derivations/__init__.py"}            # the derivations' docstring and folder mapping
+    before = ix_grid.grid_stamp()
+    text, raw = Path.read_text, Path.read_bytes
+    missed = []
+    for f in sorted(loaded):
+        if str(f.relative_to(root)) in exempt:
+            continue
+        monkeypatch.setattr(Path, "read_text",
+                            lambda self, *a, f=f, **k: text(self, *a, **k) + "#" * (self.resolve() == f))
+        monkeypatch.setattr(Path, "read_bytes", lambda self, f=f: raw(self) + b"#" * (self.resolve() == f))
+        if ix_grid.grid_stamp() == before:
+            missed.append(str(f.relative_to(root)))
+        monkeypatch.undo()
+    assert len(loaded) > 30 and missed == [], missed

@@ -42,7 +42,7 @@ def predict(scene):
         n_ = (float(y1 - y0), float(x0 - x1))            # outward normal of the first side (counter-clockwise)
         norm = math.hypot(*n_)
         return [_lying(rv, (n_[0] / norm, n_[1] / norm, 0.0))]
-    if scene.body != "box":
+    if scene.body not in ("box", "cube"):                # a cube is a box
         return []
     dims = [Fraction(x_) for x_ in scene.dims]
     for k in range(3):

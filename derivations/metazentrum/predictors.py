@@ -17,7 +17,7 @@ def predict(scene):
     the other two edges, draught d = 2c s): stable iff e = b^2/(6c^2) - d/(2c)(1 - d/(2c)) > 0 (the criterion
     z_M >= z_G, decided in exact arithmetic); where 0 < e <= 1 the closing sentence ('größer als eins' when
     stable) says otherwise."""
-    if scene.body != "box":
+    if scene.body not in ("box", "cube"):                # a cube is a box
         return []
     sv = Fraction(scene.density)
     dims = [Fraction(x_) for x_ in scene.dims]

@@ -90,7 +90,7 @@ def predict(scene):
     """A right prism floating with its axis vertical (boxes: each edge direction in turn, decided in exact
     arithmetic; regular n-gon prisms): the upright position (18) and the tilted ones of the first rotation region
     (27)/(54), (43a), (51), (55)."""
-    if scene.body == "box":
+    if scene.body in ("box", "cube"):                    # a cube is a box
         return _box_predictions([Fraction(x_) for x_ in scene.dims], Fraction(scene.density))
     if scene.body == "prism":
         return _ngon_predictions(scene.sides, float(scene.dims[0]), float(scene.dims[1]), float(scene.density))

@@ -14,21 +14,22 @@ picture's data: :mod:`.figure`), rebuilt when their stamp changes.
 """
 from __future__ import annotations
 
+import ast
 import json
 import math
 import time
 from fractions import Fraction
-
 from pathlib import Path
 
 import sympy as sp
 
-from symfloat.report.stamp import digest, package_digest, stamp_line
+import symfloat
+from symfloat.report.stamp import digest, stamp_line
 from symfloat.solver import make_scene, solve
 
 from . import predictors, statements
 
-__all__ = ["DENSITIES", "RATIOS", "grid_rows", "report_rows", "grid_markdown", "grid_data", "grid_stamp"]
+__all__ = ["DENSITIES", "RATIOS", "grid_rows", "report_rows", "grid_markdown", "grid_data", "grid_stamp", "code_files"]
 
 DENSITIES = [Fraction(k, 40) for k in range(1, 40)]
 RATIOS = [Fraction(x) for x in ("1.02", "1.1", "1.25", "1.5", "1.75", "2", "2.5", "3", "4", "6")]
@@ -115,11 +116,71 @@ def report_rows(progress=None) -> list[dict]:
     return _REPORT_ROWS[stamp]
 
 
+_LIBRARY = Path(symfloat.__file__).resolve().parent
+
+
+def _imported(path: Path, module: str) -> list[str]:
+    """The modules *path* (the module *module*) imports, an import inside a function too, with each ``from`` name
+    as a possible submodule; relative imports made absolute.  A library package that imports its names when first
+    asked for (a module-level ``__getattr__``: the formula model) imports every module of its folder; the
+    library's root does so too, for the model's names (reached by the statements' own imports) and the checker's
+    ``check`` (which the grid never runs), so it is left at its own imports."""
+    package = module if path.name == "__init__.py" else module.rpartition(".")[0]
+    tree = ast.parse(path.read_bytes())
+    lazy = path.name == "__init__.py" and module.startswith("symfloat.") and any(
+        isinstance(node, ast.FunctionDef) and node.name == "__getattr__" for node in tree.body)
+    names = [f"{module}.{f.stem}" for f in sorted(path.parent.glob("*.py"))] if lazy else []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            names += [a.name for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            stem = node.module or ""
+            if node.level:
+                base = package.split(".")[:len(package.split(".")) - node.level + 1]
+                stem = ".".join(base + ([node.module] if node.module else []))
+            names += [stem] + [f"{stem}.{a.name}" for a in node.names]
+    return names
+
+
+def _file(module: str) -> Path | None:
+    """The file of *module* when it is one of a derivation package (``scheeffer_ix.x``, relative to the folder of
+    the derivation packages) or of the library (``symfloat.x``)."""
+    first, *rest = module.split(".")
+    packages = Path(__file__).parent.parent
+    if first != "symfloat" and (packages / first / "manifest.toml").is_file():
+        base = packages.joinpath(first, *rest)
+    elif first == "symfloat" and rest[:1] != ["derivations"]:
+        base = _LIBRARY.joinpath(*rest)
+    else:
+        return None
+    return next((f for f in (base.with_suffix(".py"), base / "__init__.py") if f.is_file()), None)
+
+
+def code_files() -> list[Path]:
+    """The files the grid is computed from, found from the imports rather than listed: this module, the modules of
+    its package it imports (the statements and predictors whose tables it reads) and every library module any of
+    them imports, followed to the end, with the packages they sit in (so that the polynomial roots and compiled
+    readings IX's predictors use are in, as is whatever they come to use; :func:`_imported`)."""
+    own = __package__.rpartition(".")[2]
+    seen: dict[str, Path] = {}
+    todo = [f"{own}.grid"]
+    while todo:
+        name = todo.pop()
+        parts = name.split(".")
+        for n in (".".join(parts[:i]) for i in range(1, len(parts) + 1)):
+            f = _file(n)
+            if n not in seen and f is not None:
+                seen[n] = f
+                todo += _imported(f, n)
+    return sorted(set(seen.values()))
+
+
 def grid_stamp() -> str:
-    """The content stamp of the grid: the solver, geometry and model sources, this module and
-    the statements and predictors whose tables it reads (see :mod:`symfloat.report.stamp`)."""
-    return digest(package_digest("solver", "geometry", "model"), Path(__file__), Path(statements.__file__),
-                  Path(predictors.__file__), repr((DENSITIES, RATIOS, MATCH_RAD)))
+    """The content stamp of the grid: the files it is computed from (:func:`code_files`; library modules by their
+    path in the package, the package's own by name) and the grid (see :mod:`symfloat.report.stamp`)."""
+    files = [f"{f.relative_to(_LIBRARY).as_posix()}\n{f.read_text(encoding='utf-8')}" if f.is_relative_to(_LIBRARY)
+             else f for f in code_files()]
+    return digest(*files, repr((DENSITIES, RATIOS, MATCH_RAD)))
 
 
 def grid_data(rows, stamp: str) -> str:

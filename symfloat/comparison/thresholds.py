@@ -1,7 +1,7 @@
 """The thresholds the sources print, and phase diagrams compared with them.
 
 A derivation that predicts a body's equilibria (its manifest's ``predicts``) is read at densities on a
-grid; where its predicted set of stable positions changes, the density is bisected to ``1e-15``
+grid, as a scene reads it (:func:`symfloat.registry.reader`: its compiled readings, no statements module); where its predicted set of stable positions changes, the density is bisected to ``1e-15``
 (:func:`source_thresholds`).  :func:`phase_with_sources` hands these to the solver's phase diagram,
 which looks for each one the sweep missed and matches every threshold it finds with them.
 """
@@ -12,7 +12,7 @@ from fractions import Fraction
 import numpy as np
 import sympy as sp
 
-from ..registry import predicting, predictor, provided, statements
+from ..registry import predicting, provided, reader, statements
 from ..solver.bodies import make_scene
 from ..solver.phase import PhaseDiagram, phase_diagram, position_label
 from ..solver.symmetry import box_group, representative
@@ -28,10 +28,11 @@ def phase_with_sources(body: str, dims=None, steps: int = 48, progress=None, den
 
 
 def _predicted(d, scene, group, stability=("stable",)) -> dict:
-    """Label -> names of the printed formulas by which the derivation *d* predicts a position at this scene
-    with a stability in *stability* (``"stable"``, ``"unstable"``, ``None`` for no claim)."""
+    """Label -> names of the printed formulas by which the derivation *d* (a :class:`~symfloat.registry.Reader`)
+    predicts a position at this scene with a stability in *stability* (``"stable"``, ``"unstable"``, ``None``
+    for no claim)."""
     out = {}
-    for p in d.predictor.predict(scene):
+    for p in d.predict(scene):
         if p.stability not in stability:
             continue
         label = position_label(representative(np.asarray(p.up, dtype=float) / np.linalg.norm(p.up), group), p.family)
@@ -52,7 +53,7 @@ def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
     closed = _closed_forms()
     out = []
     for did in predicting(body, dims):
-        d = predictor(did)
+        d = reader(did)
         at = lambda s: _predicted(d, make_scene(body, s, dims), group)
         densities = [Fraction(k, grid) for k in range(1, grid)]
         states = [at(s) for s in densities]
@@ -69,9 +70,9 @@ def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
                         hi = mid
                 value = float((lo + hi) / 2)
                 names = states[k].get(label, set()) | states[k + 1].get(label, set())
-                printed = [x for x in d.printed if x.name in names]
-                locators = sorted({x.locator for x in printed})
-                errata = sorted({x.locator for x in printed if x.erratum is not None})
+                printed = [x for x in d.printed if x["name"] in names]
+                locators = sorted({x["locator"] for x in printed})
+                errata = sorted({x["locator"] for x in printed if x["erratum"]})
                 expression = next((e for v, e in closed if abs(v - value) <= 1e-12), "")
                 same = [o for o in out if o["derivation"] == did and o["label"] == label
                         and abs(o["value"] - value) <= 1e-13]
@@ -88,7 +89,9 @@ def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
 
 def _closed_forms() -> list[tuple[float, str]]:
     """Closed-form thresholds the derivations establish as results (value, expression): the results each
-    derivation names with ``provides("thresholds", names)``."""
+    derivation names with ``provides("thresholds", names)``.  These are results of the statements' steps, not
+    readings of printed formulas, so they are no compiled reading: the statements that provide them are
+    imported (with SymPy) here."""
     out = []
     for did, group in provided("thresholds"):
         d = statements(did)

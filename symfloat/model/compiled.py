@@ -19,7 +19,9 @@ excepted), the sibling statements the package imports and the formula model (:fu
 package's ``compiled.json`` (shipped, written by ``symfloat run``, held current by ``tests/test_compiled.py``)
 and the cache (``$SYMFLOAT_CACHE/compiled/``).  An entry is judged when read: its key must match the current
 sources and its payload (with its SHA-256) must parse under the whitelist; otherwise it is compiled again from
-the statements, and the scene reads what the statements say.
+the statements, and the scene reads what the statements say.  An entry records the files its key covers
+(``covers``), so that a scene judges it by hashing them again rather than by parsing the modules whose imports
+found them (:func:`_recorded_key`).
 """
 from __future__ import annotations
 
@@ -527,6 +529,11 @@ def key(folder: Path) -> str:
     other packages they import (followed to the end), the library modules any of these import (not followed
     further), the whole formula model, and :data:`FORMAT`.  Editing a witness leaves the shipped readings
     current."""
+    return _hash(_key_files(folder))
+
+
+def _key_files(folder: Path) -> list[Path]:
+    """The files :func:`key` covers, sorted (finding them parses every module followed: tenths of a second)."""
     files, todo = set(), [folder / "statements.py", folder / "predictors.py"]
     while todo:
         f = todo.pop()
@@ -535,13 +542,56 @@ def key(folder: Path) -> str:
         files.add(f)
         if not f.is_relative_to(_LIBRARY):                  # a module of a derivation package: followed
             todo += _imported_files(f)
-    files |= set(_MODEL.glob("*.py")) | {_LIBRARY / "__init__.py", _LIBRARY / "manifest.py"}
+    files |= _fixed(folder)
+    return sorted(files)
+
+
+def _fixed(folder: Path) -> set[Path]:
+    """The files every key of the package in *folder* covers, whatever it imports."""
+    return set(_MODEL.glob("*.py")) | {_LIBRARY / "__init__.py", _LIBRARY / "manifest.py", folder / "statements.py",
+                                       folder / "predictors.py"}
+
+
+def _hash(files) -> str:
     named = sorted((f"{p.parent.name}/{p.name}", p) for p in files)
     h = hashlib.sha256(FORMAT.encode())
     for name, p in named:
         h.update(name.encode())
         h.update(p.read_bytes())
     return h.hexdigest()[:32]
+
+
+def _covers(files, folder: Path) -> list[str]:
+    """Where the files of a key lie, as an entry records them: ``symfloat/...`` in the library, else relative to
+    the folder of the derivation packages."""
+    return sorted(f"symfloat/{p.relative_to(_LIBRARY).as_posix()}" if p.is_relative_to(_LIBRARY)
+                  else p.relative_to(folder.parent).as_posix() for p in files)
+
+
+def _entry(path: Path):
+    """The JSON in *path*, or ``None`` where there is none (an entry is judged by :func:`_judged`)."""
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+
+
+def _recorded_key(entry, folder: Path) -> str | None:
+    """The key of *entry* (of the package in *folder*), hashed again over the files it records it covers
+    (``covers``), when that gives its key and the set is complete (every file any key covers, the formula model as
+    it is now); else ``None``.  Then the sources are those :func:`key` would find, without parsing a module: the
+    files it follows imports from are among them, byte for byte as when the key was made, so their imports are
+    too."""
+    covers = entry.get("covers") if isinstance(entry, dict) else None
+    if not (isinstance(covers, list) and all(isinstance(c, str) and ".." not in c.split("/") for c in covers)):
+        return None
+    files = {_LIBRARY.joinpath(c.partition("/")[2]) if c.startswith("symfloat/") else folder.parent / c
+             for c in covers}
+    if not (all(f.is_file() for f in files) and _fixed(folder) <= files
+            and {f for f in files if f.parent == _MODEL} == set(_MODEL.glob("*.py"))):
+        return None
+    k = _hash(files)
+    return k if k == entry.get("key") else None
 
 
 def _digest(payload) -> str:
@@ -556,13 +606,9 @@ def _cache_root() -> Path:
     return (outputs_root() or Path.cwd()) / ".symfloat-cache" / "compiled"
 
 
-def _judged(path: Path, package: str, k: str):
-    """``(readings, printed)`` of the entry in *path* if it is one of *package* under key *k* whose content hash
-    matches and whose payload parses under the whitelist, else ``None``."""
-    try:
-        entry = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return None
+def _judged(entry, package: str, k: str):
+    """``(readings, printed)`` of *entry* (:func:`_entry`) if it is one of *package* under key *k* whose content
+    hash matches and whose payload parses under the whitelist, else ``None``."""
     if not (isinstance(entry, dict) and entry.get("format") == FORMAT and entry.get("package") == package
             and entry.get("key") == k and isinstance(entry.get("readings"), dict)
             and entry.get("sha256") == _digest({"readings": entry["readings"], "printed": entry.get("printed")})):
@@ -593,12 +639,13 @@ class Readings:
 
     def __init__(self, module_file, package: str, spec: dict):
         self.folder, self.package, self.spec = Path(module_file).resolve().parent, package, spec
-        self.key = key(self.folder)
+        shipped = _entry(self.folder / SHIPPED)
+        self.key = _recorded_key(shipped, self.folder) or key(self.folder)
         self.source = "shipped"
-        found = _judged(self.folder / SHIPPED, self.package.rpartition(".")[2], self.key)
+        found = _judged(shipped, self.package.rpartition(".")[2], self.key)
         if found is None:
             self.source = "cache"
-            found = _judged(self._cache_file(), self.package.rpartition(".")[2], self.key)
+            found = _judged(_entry(self._cache_file()), self.package.rpartition(".")[2], self.key)
         if found is None:
             self.source = "statements"
             entry = self.compile()
@@ -623,6 +670,7 @@ class Readings:
                     "corrected": p.erratum.corrected if p.erratum is not None else None}
                    for p in st.DERIVATION.printed]
         return {"format": FORMAT, "package": self.package.rpartition(".")[2], "key": self.key,
+                "covers": _covers(_key_files(self.folder), self.folder),
                 "sha256": _digest({"readings": readings, "printed": printed}), "readings": readings,
                 "printed": printed}
 
@@ -660,7 +708,7 @@ def _parsed(entry):
 
 def judged_current(readings: Readings) -> bool:
     """Whether the package's shipped ``compiled.json`` is current (its key) and parses."""
-    return _judged(readings.folder / SHIPPED, readings.package.rpartition(".")[2], readings.key) is not None
+    return _judged(_entry(readings.folder / SHIPPED), readings.package.rpartition(".")[2], readings.key) is not None
 
 
 def write_shipped(readings: Readings) -> None:

@@ -38,7 +38,6 @@ import numpy as np
 
 from ..model.prediction import Scene
 from .bodies import centred_polygon, polyhedron
-from ..geometry.cylinder import cylinder_slice
 from .born import SOFT_AXIS, born_families
 from .critical import Critical, critical_points, distinct_seeds, more_seeds, poincare_hopf_sum, sphere_seeds
 from .errors import ROUNDING, STEP, eigenvalue_error, equilibrium_error
@@ -564,6 +563,7 @@ def _fundamental_arc(group) -> tuple[float, float, bool]:
 
 
 def _cylinder(scene: Scene):
+    from ..geometry.cylinder import cylinder_slice      # its quadrature nodes are computed on import: cylinders only
     r, L = (float(x) for x in scene.dims)
     s = float(scene.density)
     scale = max(r, L)
