@@ -344,3 +344,26 @@ def test_polygon_moments_keep_the_arithmetic_of_the_coordinates():
     tri = polygon_moments([(F(0), F(0)), (F(2), F(0)), (F(0), F(1))])
     assert tri[0] == 1 and tri[1] == (F(2, 3), F(1, 3))   # the triangle's centroid, exactly
     assert isinstance(polygon_moments([(0.0, 0), (1, 0), (0, 1)])[0], float)
+
+
+def test_an_mpmath_draught_starts_from_float64_and_keeps_its_bracket(monkeypatch):
+    # a box with a corner out of the water (its volume a cubic in the offset): from the float64 draught Newton
+    # needs two 40-digit clippings and the certifying bracket two more (from the mean offset it needed 5 to 12);
+    # the result lies within its returned error of the 70-digit draught
+    import symfloat.geometry.floating as floating
+    calls = []
+    clip = floating._volume_and_area
+    monkeypatch.setattr(floating, "_volume_and_area", lambda poly, *a: calls.append(poly.dps) or clip(poly, *a))
+    rng = random.Random(3)
+    for _ in range(12):
+        with mpmath.workdps(40):
+            body = box(mpmath.mpf(3) / 2, 1, 2, 40)
+            u = tuple(mpmath.mpf(rng.uniform(-1, 1)) for _ in range(3))
+            s = mpmath.mpf(rng.choice(("0.02", "0.3", "0.8", "0.97")))
+            del calls[:]
+            t, err = draught(body, u, s)
+            assert calls.count(40) <= 5
+            assert 0 < err <= 10 * tol(40)
+        with mpmath.workdps(70):
+            fine = draught(box(mpmath.mpf(3) / 2, 1, 2, 70), u, s)[0]
+        assert abs(t - fine) <= err

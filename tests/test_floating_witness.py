@@ -665,3 +665,22 @@ def test_a_number_at_a_trial_value_is_computed_to_the_method_digits():
     assert number(x ** 2 + 1, params, 40) == Fraction(58, 49)
     with pytest.raises(ValueError, match="needs a number"):
         number(x + sp.Symbol("z"), params, 15)
+
+
+def test_a_root_read_only_by_a_later_grid_is_found_in_float64():
+    # the tilt of the upper base's contact bounds the grid of the arm's zero and nothing else reads it: at 40
+    # digits it is found in float64, the arm's zero (the quantity reads it) at 40 digits, to 1e-35 as before
+    from symfloat.engine.floating_witness import _SOLVED
+    top = sp.Symbol("psi_top")
+    roots = ((top, Root.scan(-MEASURED["upper base above water"], PSI, sp.Rational(1, 50), sp.Rational(7, 5), 28)),
+             (PSI, Root.scan("righting arm", PSI, sp.Rational(1, 50), top, 28)))
+    found = FloatingRootWitness("root", "root", ("f",), (LOG,), body=Body.box(L_, W_, H_),
+                                up=(0, sp.sin(PSI), sp.cos(PSI)), density=S, reference=(0, 0, 1),
+                                quantity=sp.tan(PSI) ** 2, roots=roots)
+    with mpmath.workdps(50):
+        assert abs(found.measure(LOG, found.methods[1]) - mpmath.mpf(43) / 100) < 1e-35
+    digits = {key[6]: key[-1] for key in _SOLVED if (key[6], key[7]) in roots}
+    assert digits == {top: 15, PSI: 40}
+    read = FloatingRootWitness(**{**found.__dict__, "quantity": sp.tan(top)})   # now the quantity reads it
+    with mpmath.workdps(50):
+        assert abs(read.measure(LOG, read.methods[1]) - mpmath.mpf(9) / 10) < 1e-35

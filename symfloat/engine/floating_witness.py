@@ -45,10 +45,10 @@ def number(expr, params, dps):
     then works with the exact value), else a float (``dps`` 15) or an mpf at ``dps`` digits.  Where a parameter
     it depends on is a float (a trial value of a root search), the expression is evaluated by its compiled form
     (:func:`_compiled`) at ``dps + 10`` digits, not by SymPy."""
-    expr = sp.sympify(expr)
-    symbols = expr.free_symbols
+    expr = expr if isinstance(expr, sp.Basic) else sp.sympify(expr)
+    symbols = _parameters(expr)
     if not any(isinstance(params.get(x), sp.Float) for x in symbols):
-        value = _exact(expr, tuple(sorted(((x, params[x]) for x in symbols if x in params), key=str)), dps)
+        value = _exact(expr, tuple((x, params[x]) for x in symbols if x in params), dps)
         return +value if isinstance(value, mpmath.mpf) else value
     names, f = _compiled(expr)
     missing = [x for x in names if x not in params]
@@ -57,6 +57,13 @@ def number(expr, params, dps):
     with mpmath.workdps(max(dps, 15) + 10):
         value = f(*(_mp(params[x], dps) for x in names))
     return float(value) if dps <= 15 else +value
+
+
+@functools.lru_cache(maxsize=4096)
+def _parameters(expr):
+    """The free symbols of *expr* sorted by name: :func:`number` asks for them at every trial value of a root
+    search, and SymPy walks the expression for them each time."""
+    return tuple(sorted(expr.free_symbols, key=str))
 
 
 @functools.lru_cache(maxsize=4096)
@@ -498,6 +505,31 @@ class At:
 
 
 _SOLVED = {}     # (witness geometry, symbol, Root or At, parameters, digits) -> value: shared by the witnesses
+_NOT_READ = ("name", "description", "targets", "cases", "methods", "roots")   # a witness's fields that read no root
+
+
+def _read(x) -> frozenset:
+    """The symbols whose values *x* (an expression, a :class:`Root`, :class:`At`, :class:`Difference`, a body, a
+    tuple of them) reads at the method's digits.  A Root's ``grid`` is not among them: it is rounded to float64
+    before the search (:meth:`FloatingRootWitness._solve_one`)."""
+    if isinstance(x, sp.Basic):
+        return frozenset(x.free_symbols)
+    if isinstance(x, Root):
+        return _read((x.quantity, x.variable, x.at, x.roots, x.guard))
+    if isinstance(x, (tuple, list)):
+        return frozenset().union(*(_read(y) for y in x))
+    if isinstance(x, dict):
+        return _read(tuple(x.items()))
+    if hasattr(x, "__dataclass_fields__") and not isinstance(x, type):
+        return _read(tuple(getattr(x, f) for f in x.__dataclass_fields__))
+    return frozenset(getattr(x, "free_symbols", ()))      # a matrix; a name of a measured quantity reads no root
+
+
+@functools.lru_cache(maxsize=1024)
+def _exactly_read(fields, body, later):
+    """:func:`_read` of a witness's *fields*, its *body* and the *later* roots, kept (the same witness solves its
+    roots at every trial value of an outer search)."""
+    return _read((fields, body, later))
 
 
 @dataclass(frozen=True)
@@ -510,13 +542,25 @@ class FloatingRootWitness(FloatingWitness):
 
     roots: tuple = ()
 
-    def _solve(self, params, body, roots, dps):
+    def _solve(self, params, body, roots, dps, reads=()):
+        """*params* completed by *roots* at *dps* digits.  A Root whose symbol nothing after it reads at those
+        digits (not the quantity, the up vector, the density, a later root's quantity; *reads* too, a guard's
+        items) but only a later search's grid, which is float64, is found in float64: in Scheeffer IX's double
+        roots the tilts at which the corners reach the water bound the grid of the arm's extremum, and a
+        40-digit search for them at every trial edge was half of all its 40-digit floating states."""
         params = dict(params)
-        for symbol, root in roots:
+        fields = None
+        for i, (symbol, root) in enumerate(roots):
+            digits = dps
+            if dps > 15 and isinstance(root, Root):
+                if fields is None:
+                    fields = tuple(getattr(self, f) for f in self.__dataclass_fields__ if f not in _NOT_READ)
+                if symbol not in _exactly_read(fields + (reads,), body, tuple(r for _, r in roots[i + 1:])):
+                    digits = 15
             key = (type(self), body, self.up, self.density, self.reference, getattr(self, "through", None), symbol,
-                   root, tuple(sorted(params.items(), key=str)), dps)
+                   root, tuple(sorted(params.items(), key=lambda item: str(item[0]))), digits)
             if key not in _SOLVED:
-                _SOLVED[key] = self._solve_one(params, body, symbol, root, dps)
+                _SOLVED[key] = self._solve_one(params, body, symbol, root, digits)
             params[symbol] = _SOLVED[key]
         return params
 
@@ -543,7 +587,7 @@ class FloatingRootWitness(FloatingWitness):
             raise ValueError(f"witness {self.name}: no root of {root.quantity} in {root.variable} on its grid")
         value = sp.Float(found[0], max(dps, 15) + 5)
         if root.guard:
-            there = probe._solve({**at, root.variable: value}, body, root.roots, dps)
+            there = probe._solve({**at, root.variable: value}, body, root.roots, dps, reads=root.guard)
             for item in root.guard:
                 if not replace(probe, quantity=item)._values(there, body, dps)[0] > 0:
                     raise ValueError(f"witness {self.name}: {item} is not positive at the root {root.variable} = "
