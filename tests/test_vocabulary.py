@@ -7,8 +7,8 @@ import sympy as sp
 from symfloat import Derivation
 from symfloat.engine.check import check_derivation
 from symfloat.registry import statements
-from symfloat.model.vocabulary import (Called, Compares, DependsOn, IndependentOf, Is, StableIff, quantity_named,
-                                       verdict_named)
+from symfloat.model.vocabulary import (Called, Compares, DependsOn, Grows, IndependentOf, Is, StableIff,
+                                       quantity_named, verdict_named)
 
 b, c, d, phi = sp.symbols("b c d phi", positive=True)
 y_G, shift, e = sp.symbols("y_G Delta e", real=True)
@@ -84,6 +84,24 @@ def test_a_dependence_on_a_symbol_the_definition_lacks_is_refuted():
     dv.says("grows", "test", WIDE, "Stabilität", Compares(">", 0, at={b: 3 * c}))
     assert verdicts(dv) == {"depends-b": "verified", "depends-phi": "erratum", "free-of-phi": "verified",
                             "free-of-d": "erratum", "grows": "verified"}
+
+
+def test_growth_in_words_is_the_sign_of_the_derivative():
+    # de/db = b/(3c^2) > 0: e grows with b; 'falls with b' and 'grows with phi' (de/dphi = 0) are refuted
+    dv = lesson()
+    dv.says("grows-b", "test", WIDE, "Stabilität", Grows(b))
+    dv.says("falls-b", "test", WIDE, "Stabilität", Grows(b, falls=True))
+    dv.says("grows-phi", "test", WIDE, "Stabilität", Grows(phi))
+    assert verdicts(dv) == {"grows-b": "verified", "falls-b": "erratum", "grows-phi": "erratum"}
+
+
+def test_euler_names_the_stability_also_by_equally_stable():
+    # §210 (line 68): 'aequa sit stabilis', 'aequa erit stabile' compare the stability about two axes
+    assert quantity_named("euler", "secundum omnes plagas aequa erit stabile") == "stability"
+    assert quantity_named("euler", "ut respectu binorum axium principalium aequa sit stabilis") == "stability"
+    assert quantity_named("euler", "tum centrum grauitatis in ipsum") == "centre of gravity"
+    with pytest.raises(ValueError, match="name no quantity"):
+        quantity_named("euler", "erit stabile")        # a verdict word alone names no quantity
 
 
 def test_stable_where_the_stability_vanishes_is_refuted_as_neutral():

@@ -18,6 +18,8 @@ definition, e.g. the square's moment for the generic moment):
 * :class:`IndependentOf` -- q does not change with b: ``dq/db = 0``, an identity;
 * :class:`DependsOn` -- q changes with a: ``dq/da != 0`` on the domain (a quantity that depends on a
   only away from an extremum is stated with :class:`Compares` on a range instead);
+* :class:`Grows` -- q grows with a (falls, for "the more ..., the less"): ``dq/da > 0`` (``< 0``) on the
+  domain, Euler's "eo maior, quo magis ...";
 * :class:`StableIff` -- the equilibrium is stable (neutral, unstable: the sentence's verdict word)
   exactly when a condition holds: both implications between the condition and the sign of the
   stability, and, for a condition stated with >= or <=, its equality case read at the point where it
@@ -39,7 +41,7 @@ import sympy as sp
 from .relation import Holds
 
 __all__ = ["vocabulary", "quantity_named", "verdict_named", "Is", "Compares", "IndependentOf", "DependsOn",
-           "StableIff", "Called", "VERDICT_SIGNS"]
+           "Grows", "StableIff", "Called", "VERDICT_SIGNS"]
 
 VERDICT_SIGNS = {"stable": 1, "neutral": 0, "unstable": -1}     # the sign of the stability each verdict states
 
@@ -171,6 +173,28 @@ class DependsOn:
     def reading(self, q, derived):
         q = _at(q, dict(self.at))
         return Holds(sp.And(*(sp.Ne(sp.Derivative(q, x), 0) for x in self.symbols)), dict(self.domain))
+
+
+@dataclass(frozen=True, init=False)
+class Grows:
+    """The named quantity grows with each of *symbols* (falls with them, ``falls=True``): each derivative is
+    positive (negative) everywhere on the domain."""
+
+    symbols: tuple
+    falls: bool = False
+    at: tuple = ()
+    domain: tuple = ()
+
+    def __init__(self, *symbols, falls=False, at=None, domain=None):
+        object.__setattr__(self, "symbols", symbols)
+        object.__setattr__(self, "falls", falls)
+        object.__setattr__(self, "at", tuple((at or {}).items()))
+        object.__setattr__(self, "domain", tuple((domain or {}).items()))
+
+    def reading(self, q, derived):
+        q = _at(q, dict(self.at))
+        rel = sp.Lt if self.falls else sp.Gt
+        return Holds(sp.And(*(rel(sp.Derivative(q, x), 0) for x in self.symbols)), dict(self.domain))
 
 
 @dataclass(frozen=True, init=False)
