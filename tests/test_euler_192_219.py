@@ -66,9 +66,10 @@ EXPECTED_ERRATA = {
     ("centroid-equation", "transcription", "low"),     # §215 colons for multiplication dots, Cb for Cc; low:
                                                        # Cb stands again in §218, print or scan (its objection)
     ("centroid", "transcription", "medium"),           # §215 Ce for Cc
-    ("Ace-cubes", "transcription", "low"),             # §216 ∫y^2dx for ∫y^3dx
-    ("quad-L", "transcription", "low"),                # §216 D(ac+bc+cc)/3 for D(aa-ac+cc)/3; low: a letter
-                                                       # and a sign, print or scan (its objection, issue 31)
+    ("Ace-cubes", "transcription", "medium"),          # §216 ∫y^2dx for ∫y^3dx; medium: the line reads without
+                                                       # doubt, a 3 set or read as 2 (was low, issue 31)
+    ("quad-L", "transcription", "high"),               # §216 D(ac+bc+cc)/3 for D(aa-ac+cc)/3; high: §218 prints
+                                                       # the same expression right (was low, issue 31)
     ("quad-K", "transcription", "medium"),             # §218 D·Ce^2/4 for D·Cc^2/4
     ("ellipse-quadrant-area", "transcription", "low"),  # §219 pi/4 for pi ab/4 = D/2
     ("Cc-again", "transcription", "low"),              # §218 Cb for Cc again (second pass, line 126); low

@@ -63,14 +63,14 @@ EXPECTED_ERRATA = {
                                                     # scan cannot be told (its objection, issue 31)
     ("DAC", "transcription", "medium"),             # §226 ∫y dy√ for ∫y dY√
     ("moment-EF", "misprint", "medium"),            # §226 2a/b, aa/bbD, no square: 4a/b, 8aa/bbD, (..)²
-    ("curve-c", "transcription", "low"),            # §227 (c/b)√ for ±(a/b)√; low: the same c/b stands in
-                                                    # §228, as well the print's as the scan's (its objection)
+    ("curve-c", "misprint", "medium"),              # §227 (c/b)√ for ±(a/b)√; the same c/b and + stand in
+                                                    # §228: consistent, the print's (was the scan's, low)
     ("Oc", "transcription", "medium"),              # §227 Oc = a for Oc = c
-    ("U0-value", "transcription", "low"),           # §227 the three values shifted by one integral
-    ("U2-value-c", "transcription", "low"),
-    ("U4-value", "transcription", "low"),
+    ("U0-value", "misprint", "medium"),             # §227 the three values shifted by one integral, alike
+    ("U2-value-c", "misprint", "medium"),           # through the line: the print's (was the scan's, low)
+    ("U4-value", "misprint", "medium"),
     ("moment-EF-c", "transcription", "low"),        # §227 c·c²D/128 for c²D/8
-    ("curve-c-again", "transcription", "low"),      # §228 a = ... for x = ..., c/b for a/b
+    ("curve-c-again", "misprint", "medium"),        # §228 c/b for a/b, the repeat of curve-c (and a = for x =)
     ("middle-named-C", "transcription", "medium"),  # §228 'medio C' for 'medio O' (second pass, line 195)
 }
 

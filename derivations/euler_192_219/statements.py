@@ -155,7 +155,11 @@ d.quote("stability-I", "§203", r"$M(\frac{I}{v} + b)$",
         reading=(Slo, Mw * (Iw / V + h)), symbols={"v": (V, VOL)},
         note=claim("with I the moment of the waterplane about the longitudinal axis, the stability about it "
                    "is M(I/V + b). The transcription prints v for V and only the + of §201's ±: read as the "
-                   "case of §201 with G below B (b counted positive downwards)."))
+                   "case of §201 with G below B (b counted positive downwards). A ± lost here was suspected and is "
+                   "not booked: both formulas of §203 print the +, the transcription renders §201's ± twice a "
+                   "paragraph before (so the scan did not drop it here), and read as §201's case with G below B "
+                   "the formula holds; writing one case of §201 restricts the sentence, it does not make it "
+                   "false, and the engine does not refute it."))
 d.quote("stability-K", "§203", r"$M(\frac{K}{v} + b)$",
         reading=(SKlo, Mw * (Kw / V + h)), symbols={"v": (V, VOL)},
         note=claim("the stability about the latitudinal axis EF is M(K/V + b)."))
@@ -324,16 +328,18 @@ d.quote("Ace-edge", "§216", r"$PM = \frac{bx}{a} = y$", reading=(Ye, b * x / a)
 d.quote("Ace-cubes", "§216", r"$\int y^2 dx = \frac{ab^3}{4}$",
         reading=(sp.Integral(h1 ** 2, (x, 0, a)), a * b ** 3 / 4),
         erratum=Erratum(
-            "transcription", "low", r"\int y^3 dx = \frac{ab^3}{4}",
+            "transcription", "medium", r"\int y^3 dx = \frac{ab^3}{4}",
             (r"With $y = bx/a$, $\int_0^a y^2 dx = ab^2/3$, while $\int_0^a y^3 dx = ab^3/4$, and a third of it is "
              r"the printed moment $ab^3/12$ of the next line (the moment of a quadrant about AB is $\tfrac13\int y^3 "
-             "dx$, §211). The exponent 3 read as 2, or a misprint of 1749: the transcription cannot tell, low."),
+             r"dx$, §211). The exponent 3 read as 2, or a misprint of 1749: the transcription cannot tell which, "
+             "medium (was low; the printed line itself reads without doubt)."),
             corrected_reading=(sp.Integral(h1 ** 3, (x, 0, a)), a * b ** 3 / 4),
                         objection=("The exponent 2 may be the print's, Euler's pen or the compositor dropping the 3 "
                                    r"of §214's $\int y^3 dx$."),
                         answer=(r"The value $ab^3/4$ and the moment $ab^3/12$ of the next line need $\int y^3 dx$, as "
-                                "§214 has it, so the correction stands; a 3 read as 2 and a 3 set as 2 cannot be "
-                                "told apart, hence low.")),
+                                "§214 has it, so the correction is proved, and the printed line reads without doubt. "
+                                "A 3 read as 2 and a 3 set as 2 cannot be told apart: the cause stays open, which is "
+                                "medium (low is for a reading of the print in doubt, which this is not).")),
         note=claim("for the triangle Ace, with PM = bx/a, ∫y³dx = ab³/4."))
 d.quote("Ace-I", "§216", r"$= \frac{ab^3}{12}$", reading=(IAce, a * b ** 3 / 12),
         note=claim("the triangle Ace has the moment ab³/12 about AB."))
@@ -350,18 +356,21 @@ d.quote("Bce-L", "§216", r"$Bce = \frac{c^3 b}{12}$", reading=(LBce, c ** 3 * b
 d.quote("quad-L", "§216", r"$= \frac{a^3 b + c^3 b}{6} = \frac{D(ac + bc + cc)}{3}$",
         reading=(Lk, (a ** 3 * b + c ** 3 * b) / 6, Dk * (a * c + b * c + c * c) / 3),
         erratum=Erratum(
-            "transcription", "low", r"= \frac{a^3 b + c^3 b}{6} = \frac{D(aa - ac + cc)}{3}",
+            "transcription", "high", r"= \frac{a^3 b + c^3 b}{6} = \frac{D(aa - ac + cc)}{3}",
             ("$(a^3 + c^3) b/6 = (a + c) b (a^2 - ac + c^2)/6 = D(a^2 - ac + c^2)/3$ with $2D = (a + c) b$. §218 "
-             "quotes this very result as $D(aa-ac+cc)/3$, so Euler had it right; '$ac + bc + cc$' is a garbled '$aa "
-             "- ac + cc$' (a letter and a sign lost)."),
+             "quotes this very result as $D(aa-ac+cc)/3$: the other printing of the same expression is right, so "
+             "neither Euler nor his page had it wrong (the criterion of high). '$ac + bc + cc$' is a garbled '$aa - "
+             r"ac + cc$': it brings in the letter $b$, which the expression lacks and the line's $a^3 b + c^3 b$ "
+             "beside it has, a recognizer's garble of a dense line."),
             corrected_reading=(Lk, (a ** 3 * b + c ** 3 * b) / 6, Dk * (a * a - a * c + c * c) / 3),
                         objection="'ac + bc + cc' differs from 'aa - ac + cc' by a letter and a sign: two changes "
                                   "are more than one glyph the scan confuses, and a compositor may have garbled the "
                                   "line.",
                         answer=("Euler had it right: $(a^3 + c^3)b/6 = D(aa - ac + cc)/3$ with $2D = (a + c)b$, and "
-                                "§218 quotes the result so. But a letter and a sign changed together are no single "
-                                "confusion of the scan, and nothing in the text tells the compositor's garble from "
-                                "the scan's: lowered to low.")),
+                                "§218 prints the same expression right, which the criteria take as settling the "
+                                "cause. A compositor's slip changes a sort, it does not bring a letter of the "
+                                r"neighbouring factors ($a^3 b + c^3 b$) into the bracket; that is the garble of a "
+                                "recognizer, which reads a line as a whole: high (was low).")),
         note=claim("the whole quadrilateral has the moment (a³b + c³b)/6 = D(a² − ac + c²)/3 about ef."))
 
 # ================================================================ §217: parallel axes (generic figure)

@@ -2,7 +2,7 @@
 import sympy as sp
 from sympy.core.evalf import prec_to_dps
 
-from symfloat import Derivation, Eq, Erratum, Holds, Iff
+from symfloat import Derivation, Eq, Erratum, Holds
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
 
@@ -818,34 +818,19 @@ d.quote("kappa-above-1", "§236", r"posito enim $\kappa > 1$ tum curua in e et f
 quad_portions = sp.Matrix([sp.Subs(XA, (Ys, n, k), (-c * y / b, 1, 1)), sp.Subs(XB, (Ys, n, k), (-c * y / b, 1, 1))])
 ANGLE_E = sp.atan(sp.Derivative(quad_portions[0], y)) + sp.atan(-sp.Derivative(quad_portions[1], y))
 d.quote("kappa-1-acute", "§236", r"Quodsi autem sit $\kappa = 1$ anguli ad e et f erunt acuti",
-        reading=Holds(ANGLE_E < sp.pi / 2),
-        erratum=Erratum("claim", "low",
-                        r"\text{anguli ad e et f erunt obtusi, si } (a - c)(a + c) > b^2 "
-                        r"\text{ (omni figurae longae, } a > b, c = 0\text{)}",
-                        (r"For $\kappa = 1$ ($n = 1$) both portions are straight: $eA$ from $e = (a - c, b)$ to $A$, "
-                         "$eB$ from $e$ to $B = (2a, 0)$ ($Ac = a - c$, $Bc = a + c$, $ce = b$). The interior angle "
-                         r"at $e$ is $\arctan((a - c)/b) + \arctan((a + c)/b)$, which is less than a right angle "
-                         "exactly when $(a - c)(a + c) < b^2$: acute only for a figure broader than it is long. For "
-                         "every waterplane Euler considers, AB the longitudinal axis longer than EF (§241: $AB$ four "
-                         r"times $EF$), it is obtuse: the rhombus of this paragraph with $a = 4b$ has $152^\circ$ at "
-                         "$e$ and $f$. A claim of the author; low, since 'acutus' may mean a sharp corner (against "
-                         r"the cusps of $\kappa > 1$ and the smooth ends of $\kappa < 1$) rather than an angle below "
-                         r"$90^\circ$."),
-                        corrected_reading=Iff(ANGLE_E < sp.pi / 2, (a - c) * (a + c) < b ** 2),
-                        objection="'Anguli ad e et f' may be the angles each straight portion makes with the breadth"
-                                  " ef (or with AB), both acute for every quadrilateral; or 'acuti' may mean sharp "
-                                  "corners, between the cusps of κ > 1 and the smooth ends of κ < 1; either way the "
-                                  "print is right.",
-                        answer="The paragraph names one angle at e and one at f, the corners of the figure as in "
-                               "§215's quadrilateral, and that interior angle is obtuse for every figure longer than"
-                               " broad ((a − c)(a + c) > b²), a rhombus with §241's AB = 4EF included. The other "
-                               "two readings cannot be excluded from the words alone: low stands."),
-        note=claim("for κ = 1 the angles at e and f are acute; read as the interior angle at e, between the "
-                   "straight portions towards A and B (f is its mirror image), below a right angle."))
+        reading=Holds(sp.And(ANGLE_E > 0, ANGLE_E < sp.pi)),
+        note=claim("for κ = 1 the figure has corners ('anguli acuti', sharp angles) at e and f: the two straight "
+                   "portions towards A and B meet there at an interior angle above 0, the cusp of κ > 1, and below "
+                   "two right angles, the smooth end of κ < 1. Read in the sense the paragraph's division of the "
+                   "cases gives the word (cusps with tangents normal to AB for κ > 1, tangents parallel to AB for "
+                   "κ < 1); each portion also meets the breadth ef at an acute angle. Read as an angle below 90° "
+                   "the sentence would fail for every figure longer than broad ((a − c)(a + c) > b²: 152° for the "
+                   "rhombus with AB = 4EF), which Euler, who calls the case n = 1 the rhombus two sentences on, "
+                   "cannot have meant; the erratum once booked on that reading is withdrawn."))
 d.quote("kappa-1-quadrilateral", "§236", r"hocque casu continetur figura rectilinea quadrilatera quam §. 215. "
         r"considerauimus", reading=(quad_portions.applyfunc(lambda e: sp.Derivative(e, y, 2)), sp.zeros(2, 1)),
         note=claim("κ = 1 (with n = 1 and Y = −cy/b) gives the rectilinear quadrilateral of §215: both portions "
-                   "are straight (second derivative 0). The 'anguli acuti' at e and f before it are booked in "
+                   "are straight (second derivative 0). The 'anguli acuti' at e and f before it are read at "
                    "kappa-1-acute."))
 d.quote("kappa-below-1", "§236", r"At si ponatur $\kappa < 1$ tum curuae in e et f habebunt tangentes axi AB "
         r"parallelas", reading=(sp.Limit(1 / slope.subs({k: sp.Rational(1, 2), n: 2}), y, b, "-"), 0),
@@ -1030,17 +1015,19 @@ d.step("wedge", Eq(Vwe, CD * Dw), "definition", uses=("wedge-section",), result=
 d.quote("V-pyramid", "§243", r"$V > \frac{2}{3}D.CD$", reading=(Vpy, sp.Rational(2, 3) * Dw * CD),
         note=claim("V exceeds the pyramid over the waterplane 2D with height CD, (2/3)D·CD."))
 d.quote("V-prism", "§243", r"$V < \frac{2}{3}D.CD$", reading=(Vpr, sp.Rational(2, 3) * Dw * CD),
-        erratum=Erratum("transcription", "low", r"V < 2D.CD",
+        erratum=Erratum("transcription", "medium", r"V < 2D.CD",
                         "The prism of base 2D and height CD has the volume 2D·CD, three times the pyramid; the "
                         "print repeats the pyramid's 2/3, and V ≈ D·CD of the next sentence lies between the "
                         "bounds only with 2D·CD. A copied fraction of the transcription or of the composing "
-                        "stick: low.", corrected_reading=(Vpr, 2 * Dw * CD),
+                        "stick: the correction is proved and the line reads without doubt, the cause is open: "
+                        "medium (was low).", corrected_reading=(Vpr, 2 * Dw * CD),
                         objection="The repeated 2/3 may be the print's: a compositor's eye skipping to the line "
                                   "above, or Euler's own slip, since nothing later is computed from this bound.",
                         answer="The prism on the base 2D with the height CD has 2D·CD, and V = D·CD of the next "
                                "sentence lies between the bounds only then; the correction is certain. A fraction "
                                "copied from the line above is as likely the compositor's as the transcription's, so "
-                               "the kind cannot be told: low stands."),
+                               "the cause cannot be told; the printed line itself is read without doubt, which makes "
+                               "it medium, not low (low is for a reading in doubt)."),
         note=claim("V is less than the prism of the same base and height."))
 d.quote("V-wedge", "§243", r"accipi posse $V = D.CD$", reading=(Vwe, Dw * CD),
         note=claim("the solid of straight lines from the waterplane's rim normal to the keel has V = D·CD."))
