@@ -13,6 +13,7 @@ from symfloat.engine.check import check_derivation
 from symfloat.engine.floating_witness import FloatingWitness
 from symfloat.engine.witness import Case, Precision
 from symfloat.model.source import SOURCES
+from symfloat.model.vocabulary import Compares, Grows, IndependentOf, Is
 from symfloat.registry import load
 
 D, PACKAGE = load("euler-192-219")
@@ -219,3 +220,51 @@ def test_negative_stability_ends_in_a_stable_heeled_equilibrium():
         assert _arm(hv, sp.Rational(1, 20), 30) < 0
         assert abs(_arm(hv, sp.N(phi0, 60), 30)) < mpmath.mpf(10) ** -25
         assert _arm(hv, sp.N(phi0, 60) + sp.Rational(1, 100), 30) > 0
+
+
+# ---- sentences read through the vocabulary (issue 31): each holds, and is refuted when its words are mutated
+# (the wrong quantity named, the dependence or the comparison turned); the mutant is read from the same
+# definitions by the same words-to-reading route (Derivation.reads)
+
+def _says_verdict(name, words, statement):
+    p = D.get_printed(name)
+    q = dataclasses.replace(p, reading=D.reads(words, statement), erratum=None)
+    rep = check_derivation(dataclasses.replace(D, printed=[q], witnesses=[]), prove=False, trust_steps=True)
+    return rep.formulas[0].verdict
+
+
+def _sentences():
+    M = MODULE
+    a, b, m, n, Iw, Kw = M.a, M.b, M.m, M.n, M.Iw, M.Kw
+    unequal = dict(at={Iw: sp.Subs(M.K, (a, M.c), (M.Lq - M.tq, M.Lq + M.tq))},
+                   domain={M.tq: (sp.Rational(1, 10), 1), M.Lq: (sp.Rational(11, 10), 3)})
+    inverse = Is(M.Kre * (2 * b) ** 2 / (2 * a) ** 2, at={Iw: M.Ire})
+    return [
+        # §209: stable about both principal axes, stable about every axis; G above the metacentre of AB, not
+        ("stable-about-every-axis", "stabilitatem",
+         Compares(">", 0, at=M.BOTH_STABLE, domain={M.gm: (sp.Rational(1, 10), 1), M.dK: (0, 4)}),
+         "stabilitatem", Compares(">", 0, at=M.BOTH_STABLE, domain={M.gm: (-1, -sp.Rational(1, 10)), M.dK: (0, 4)})),
+        # §210: equal principal moments (K = I) make the stability the same about every axis; K left free it is not
+        ("equal-stability-all-axes", "eandem stabilitatem", IndependentOf(m, at={Iw: sp.Subs(M.MOMENT_PQ, Kw, Iw)}),
+         "eandem stabilitatem", IndependentOf(m, at={Iw: M.MOMENT_PQ})),
+        # §210: the square is equally stable in every direction; the rectangle (a != b) is not
+        ("square-equally-stable", "aequa erit stabile", IndependentOf(m, at={Iw: M.Psq}),
+         "aequa erit stabile", IndependentOf(m, at={Iw: n ** 2 * M.Ire + m ** 2 * M.Kre})),
+        # §213: I : K inversely as AB² : EF²; directly is refuted
+        ("rect-inverse-ratio", "momentum", inverse,
+         "momentum", Is(M.Kre * (2 * a) ** 2 / (2 * b) ** 2, at={Iw: M.Ire})),
+        # §213: the same words with the stability named for the moment are refuted (M(I/V + b) is not K·EF²/AB²)
+        ("rect-inverse-ratio", "momentum", inverse, "stabilitas", inverse),
+        # §218: the moment about EF grows with the inequality of Ac and Bc; 'falls' is refuted
+        ("unequal-parts-larger", "momentum", Grows(M.tq, **unequal), "momentum", Grows(M.tq, falls=True, **unequal)),
+    ]
+
+
+@pytest.mark.parametrize("name, words, statement, mutant_words, mutant", _sentences(),
+                         ids=[f"{s[0]}-{s[3]}" for s in _sentences()])
+def test_a_sentence_read_through_the_vocabulary_holds_and_its_mutant_is_refuted(name, words, statement,
+                                                                                 mutant_words, mutant):
+    p = D.get_printed(name)
+    assert p.reading == D.reads(words, statement)          # the module's reading is the words' reading
+    assert _says_verdict(name, words, statement) == "verified"
+    assert _says_verdict(name, mutant_words, mutant) == "erratum"

@@ -12,6 +12,7 @@ import sympy as sp
 from symfloat import Holds
 from symfloat.engine.check import check_derivation
 from symfloat.model.source import SOURCES
+from symfloat.model.vocabulary import Compares, Grows, Is
 from symfloat.registry import load
 
 D, PACKAGE = load("euler-229-243")
@@ -338,3 +339,53 @@ def test_the_angle_at_e_of_the_kappa_1_figure_is_a_corner_obtuse_for_a_long_figu
     assert rep.formulas[0].verdict == "erratum"
     rep = check_derivation(dataclasses.replace(D, printed=[p], witnesses=[]), prove=False, trust_steps=True)
     assert rep.formulas[0].verdict == "verified"
+
+
+# ---- sentences read through the vocabulary (issue 31): each holds, and is refuted when its words are mutated
+
+def _says_verdict(name, words, statement):
+    p = D.get_printed(name)
+    q = dataclasses.replace(p, reading=D.reads(words, statement), erratum=None)
+    rep = check_derivation(dataclasses.replace(D, printed=[q], witnesses=[]), prove=False, trust_steps=True)
+    return rep.formulas[0].verdict
+
+
+def _sentences():
+    M = MODULE
+    OG, EF, AB, Dw, mu, nu = M.OG, M.EF, M.AB, M.Dw, M.mu, M.nu
+    stability_EF = Is(M.M * (M.Kw / M.V - OG), at={EF: AB, mu: nu})
+    freeboard = dict(at={M.fb: 0, M.Hh: M.Tq + M.hf}, domain={M.hf: (sp.Rational(1, 10), 2)})
+    return [
+        # §239: with G below O the stability is positive; with G above O (OG kept) it is not always
+        ("G-below-positive", "stabilitatem", Compares(">", 0, at={OG: -OG}), "stabilitatem", Compares(">", 0)),
+        # §239: the stability grows with the waterplane (D and EF); 'falls' is refuted, and so is growth with μ
+        ("wider-waterplane-more-stable", "stabilitas", Grows(Dw, EF), "stabilitas", Grows(Dw, EF, falls=True)),
+        ("wider-waterplane-more-stable", "stabilitas", Grows(Dw, EF), "stabilitas", Grows(mu)),
+        # §240: mass spread evenly through the carina (H = T) puts G at B; through the whole hull (H > T) it does not
+        ("even-load-G-at-B", "centrum grauitatis", Is(M.yBs, at={M.fb: 0, M.Hh: M.Tq}),
+         "centrum grauitatis", Is(M.yBs, at={M.fb: 0})),
+        # §240: the part above the water raises G above B; 'lower' is refuted
+        ("freeboard-raises-G", "centrum gravitatis", Compares(">", M.yBs, **freeboard),
+         "centrum gravitatis", Compares("<", M.yBs, **freeboard)),
+        # §239: M(AB²D/(νV) − OG) is the stability about EF; the print's 'momentum' is refuted (its erratum)
+        ("stability-EF-named", "stabilitas", stability_EF, "momentum", stability_EF),
+    ]
+
+
+@pytest.mark.parametrize("name, words, statement, mutant_words, mutant", _sentences(),
+                         ids=[f"{s[0]}-{s[3]}-{i}" for i, s in enumerate(_sentences())])
+def test_a_sentence_read_through_the_vocabulary_holds_and_its_mutant_is_refuted(name, words, statement,
+                                                                                 mutant_words, mutant):
+    assert _says_verdict(name, words, statement) == "verified"
+    assert _says_verdict(name, mutant_words, mutant) == "erratum"
+
+
+def test_the_printed_readings_of_239_and_240_are_their_words_readings():
+    p = D.get_printed("stability-EF-named")
+    assert p.reading == D.reads("momentum", Is(MODULE.M * (MODULE.Kw / MODULE.V - MODULE.OG),
+                                                at={MODULE.EF: MODULE.AB, MODULE.mu: MODULE.nu}))
+    assert p.reading[0].expr == D.definitions["moment"]
+    assert p.erratum.corrected_reading[0].expr == D.definitions["stability"]
+    assert D.get_printed("freeboard-raises-G").reading == D.reads(
+        "centrum gravitatis", Compares(">", MODULE.yBs, at={MODULE.fb: 0, MODULE.Hh: MODULE.Tq + MODULE.hf},
+                                       domain={MODULE.hf: (sp.Rational(1, 10), 2)}))

@@ -4,7 +4,7 @@ import sympy as sp
 from symfloat import Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
-from symfloat.model.vocabulary import Is
+from symfloat.model.vocabulary import Compares, Grows, IndependentOf, Is
 
 x, y, w, s, r = sp.symbols("x y w s r", real=True)
 a, b, c = sp.symbols("a b c", positive=True)
@@ -457,6 +457,15 @@ d.quote("quad-K-larger", "§218", "Maius igitur est momentum huius figurae respe
         note=claim("the moment about EF exceeds that of the figure with Ac = Bc (the rhombus of the same "
                    "length and breadth, D·AB²/12) by D(c − a)²/36 ≥ 0; read as this excess, a square."))
 
+tq, Lq = sp.symbols("t_q L_q", positive=True)        # half the difference of Bc and Ac, half the length AB
+d.says("unequal-parts-larger", "§218", "momentum respectu\n axis latitudinalis eo erit maius, quo magis fuerint partes\n"
+       " Ac et Bc inter se inaequales.", "momentum",
+       Grows(tq, at={Iw: sp.Subs(K, (a, c), (Lq - tq, Lq + tq))},
+             domain={tq: (sp.Rational(1, 10), 1), Lq: (sp.Rational(11, 10), 3)}),
+       note=claim("among the quadrilaterals of the same length AB = Ac + Bc = 2L and breadth ef, the moment about "
+                  "EF grows with the inequality of the parts: with Ac = L - t, Bc = L + t it grows with t (read for "
+                  "t > 0, Bc the longer part; the figure is symmetric in the exchange of the parts)."))
+
 # ================================================================ §207–210: symmetric figure (the quadrilateral about C)
 PS, RS_, P45 = sp.symbols("P_S R_S P_{45}")
 Xc = x - xC
@@ -549,11 +558,22 @@ d.quote("AB-least-EF-greatest", "§209", "omnium est minimum, momentum vero resp
                  sp.Matrix([m ** 2 * (K - Ik), n ** 2 * (K - Ik)])),
         note=claim("I about AB is the least moment and K about EF the greatest: the moment about PQ is I + m²(K − I) "
                    "= K − n²(K − I), n² = 1 − m², both differences non-negative for K > I."))
-d.quote("equal-stability-all-axes", "§210", "Quare si nauis eius modi habeat figuram, ut respectu binorum axium "
-        "principalium aequa sit stabilis, tum eandem stabilitatem habebit respectu aliis cuiusvis axis horizontalis.",
-        reading=(sp.Subs(Ik + m ** 2 * (K - Ik), K, Ik), Ik),
-        note=claim("equal moments about the principal axes (K = I) make the moment, hence the stability, the same "
-                   "about every horizontal axis through C."))
+MOMENT_PQ = n ** 2 * Iw + m ** 2 * Kw          # §207: the moment about PQ of a waterplane symmetric about AB
+gm, dK = sp.Symbol("g_m", real=True), sp.Symbol("d_K", positive=True)   # §209: 1 - b/(I/V), K - I
+BOTH_STABLE = {Iw: n ** 2 * Iw + m ** 2 * (Iw + dK), h: -(1 - gm) * Iw / V}
+d.says("stable-about-every-axis", "§209", "Quodsi ergo nauis habeat stabilitatem respectu axium binorum principalium, "
+       "ea respectu omnium omnino axium firmiter in situ aequilibrii persistet", "stabilitatem",
+       Compares(">", 0, at=BOTH_STABLE, domain={gm: (sp.Rational(1, 10), 1), dK: (0, 4)}),
+       note=claim("a ship stable about both principal axes is stable about every axis through C: G the height "
+                  "b = (1 - g)·I/V above B (0 < g ≤ 1, so M(I/V - b) = MgI/V > 0 about AB) and K = I + d ≥ I (§209: "
+                  "K > I, so the stability about EF is positive too); about PQ the moment is n²I + m²K (§207) and "
+                  "the stability M((n²I + m²K)/V - b) = M(gI + m²d)/V > 0 (read for g ≥ 1/10)."))
+d.says("equal-stability-all-axes", "§210", "Quare si nauis eius modi habeat figuram, ut respectu binorum axium "
+       "principalium aequa sit stabilis, tum eandem stabilitatem habebit respectu aliis cuiusvis axis horizontalis.",
+       "eandem stabilitatem", IndependentOf(m, at={Iw: sp.Subs(MOMENT_PQ, Kw, Iw)}),
+       note=claim("a ship equally stable about the two principal axes (the same M, V and b for all axes, so K = I, "
+                  "§200) has the same stability about every horizontal axis: the stability M(moment/V + b) about PQ, "
+                  "with the moment n²I + m²K of §207 and K = I, does not change with m = sin ACP."))
 d.quote("equal-moments-any-figure", "§210", "Eadem vero proprietas locum habebit si sectio aquae fuerit quaecunque "
         "alia figura, dummodo ea ita sit comparaata, ut eius momenta respectu binorum axium principalium sint inter "
         "se aequalia.",
@@ -616,6 +636,13 @@ d.says("square-D", "§212", SQUARE_STABILITY, "stabilitas", Is((2 * a) ** 2 * Ds
                               "text of 1749, hence medium, not high."),
        note="The value is the square's moment about every axis through C.")
 
+d.says("square-equally-stable", "§210", "hincque corpus aquae innatans, cuius sectio aquae est quadratum, secundum "
+       "omnes plagas aequa erit stabile, atque aequali vi inclinationibus resistet.",
+       "aequa erit stabile", IndependentOf(m, at={Iw: Psq}),
+       note=claim("a body whose waterplane is a square is equally stable in every direction: the stability "
+                  "M(moment/V + b) with the square's moment about the axis PQ at the angle ACP (sine m), integrated "
+                  "over the square, does not change with m."))
+
 # ================================================================ §213 rectangle
 Dre, Ire, Kre = (symbol(f"{q}_{{re}}", rf"{q}_{{\text{{rectangle}}}}") for q in "DIK")
 integral_step("rect-area", Dre, rect(1, a, b) / 2,
@@ -637,6 +664,12 @@ d.quote("rect-I", "§213", r"$= \frac{4ab^3}{3} = \frac{2D \cdot bb}{3} = \frac{
         note=claim("the rectangle's moment about AB is 4ab³/3 = 2D·b²/3 = EF²·D/6."))
 d.quote("rect-K", "§213", r"latitudinalis $= \frac{AB^2 \cdot D}{6}$", reading=(Kre, (2 * a) ** 2 * Dre / 6),
         note=claim("and about EF it is AB²·D/6, so the two moments are inversely as the squares of the axes."))
+d.says("rect-inverse-ratio", "§213", "ex quo momentum huius sectionis aquae respectu axis longitudinalis AB se habebit "
+       "ad momentum axis latitudinalis EF inuersè vt quadratum axis longitudinalis AB ad quadratum axis "
+       "latitudinalis EF.", "momentum huius sectionis aquae respectu axis longitudinalis AB",
+       Is(Kre * (2 * b) ** 2 / (2 * a) ** 2, at={Iw: Ire}),
+       note=claim("the rectangle's moment about AB is to its moment about EF inversely as AB² to EF²: "
+                  "I = K·EF²/AB² (AB = 2a, EF = 2b), the moments integrated over the rectangle."))
 
 # ================================================================ §214 rhombus
 Drh, Irh, Krh = (symbol(f"{q}_{{rh}}", rf"{q}_{{\text{{rhombus}}}}") for q in "DIK")

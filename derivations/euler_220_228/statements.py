@@ -4,6 +4,7 @@ import sympy as sp
 from symfloat import Derivation, Eq, Erratum, Holds
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
+from symfloat.model.vocabulary import IndependentOf
 
 y = sp.Symbol("y", real=True)
 th = sp.Symbol("theta", real=True)
@@ -257,6 +258,14 @@ d.quote("AB-AEB", "§223", r"$= \frac{2a}{3b} \int y^4 dy \sqrt{bb-yy}$, in quo 
                                "of the whole figure is twice (2a/3b)∫y⁴dy/√(bb-yy) = πab³/8 (D = πab/2), and the "
                                "product does not give it. Medium, since the print cannot be seen."),
         note=claim("AEB has the moment (2a/3b)∫y⁴dy/√(bb-yy) about AB, free of Y."))
+# the quantity §223 names in words (symfloat/model/vocabulary.json): the figure's moment about AB, the two
+# portions of the half AEB taken apart and AFB its mirror image, so that Y enters each portion's part
+d.defines("moment", 2 * (IAce + IBce))
+d.says("AB-free-of-Y", "§223", "Deinde dico huius figurae momentum respectu axis longitudinalis AB idem prodire, "
+       "quicquid sit functio Y", "momentum", IndependentOf(p, q),
+       note=claim("the moment of the figure about AB is the same whatever the function Y: the moments of the "
+                  "portions Ace and Bce each change with Y = p|y| + qy², their sum does not (derivatives in p and "
+                  "q zero)."))
 d.quote("AB-whole", "§223", r"$= \frac{Dbb}{2} = \frac{ef^2 D}{8}$",
         reading=as_printed(lambda: (Iwhole, D * b ** 2 / 2, (2 * b) ** 2 * D / 8)),
         note=claim("the whole figure has, like the ellipse, the moment Db²/2 = ef²D/8 about AB (ef = 2b)."))

@@ -5,6 +5,7 @@ from sympy.core.evalf import prec_to_dps
 from symfloat import Derivation, Eq, Erratum, Holds
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
+from symfloat.model.vocabulary import Compares, Grows, Is
 
 y, s, m = sp.symbols("y s m", positive=True)
 a, b, c, n, k = sp.symbols("a b c n kappa", positive=True)
@@ -904,6 +905,11 @@ d.step("stability-AB", Eq(SAB, M * (Iw / V - OG)), "lemma", result=SAB,
        note="§201/§203: M(I/V − b) with b = OG, G above O")
 d.step("stability-EF", Eq(SEF, M * (Kw / V - OG)), "lemma", result=SEF,
        uses=(E192 + "stability-definition-EF-G-above", E192 + "metacentric-height-EF-G-above"))
+# the quantities §§238-240 name in words (symfloat/model/vocabulary.json), by the formulas that define them: the
+# stability about AB (G the height OG above O; a sentence on G below O puts -OG for OG), the moment I = EF²D/μ of
+# the waterplane about AB (a sentence on the axis EF puts AB for EF and ν for μ: the moment K = AB²D/ν)
+d.defines("stability", SAB)
+d.defines("moment", Iw)
 d.step("stability-AB-G-below", Eq(SABp, M * (Iw / V + OG)), "lemma", result=SABp,
        uses=(E192 + "stability-definition", E192 + "metacentric-height-G-below"))
 d.quote("stability-AB", "§239", r"$AB = M (\frac{EF^2 \cdot D}{\mu v} - OG)$",
@@ -948,6 +954,14 @@ d.quote("EF-exceeds-AB", "§241", r"$\frac{EF^2.D}{\nu v} > OG$ multo magis erit
         reading=(sp.Subs(AB ** 2 * Dw / (mu * V) - EF ** 2 * Dw / (nu * V), nu, mu), Dw * (AB ** 2 - EF ** 2) / (mu * V)),
         note=claim("if the quantity for AB exceeds OG, the one for EF does so much more, AB being much longer than "
                    "EF: at μ = ν (the numbers 'differ little') the excess is D(AB² − EF²)/(μV) > 0 (D' read as D)."))
+d.says("G-below-positive", "§239", "hocque casu nauis semper haberet stabilitatem affirmativam",
+       "stabilitatem", Compares(">", 0, at={OG: -OG}),
+       note=claim("with G below O (−OG written +OG) the stability about AB is positive for every ship: "
+                  "M(EF²D/(μV) + OG) > 0."))
+d.says("wider-waterplane-more-stable", "§239", "Ratione autem sectionis aquae stabilitas augebitur quo amplior ea "
+       "accipiatur", "stabilitas", Grows(Dw, EF),
+       note=claim("the stability about AB grows with the waterplane: M(EF²D/(μV) − OG) grows with its half area D "
+                  "and with its breadth EF, the 'duplex ratio' the sentence goes on to give."))
 d.quote("deeper-G-more-stable", "§239",
         r"Stabilitas porro hoc casu eo erit maior, quo profundius centrum grauitatis G infra centrum magnitudinis O cadet.",
         reading=(sp.Derivative(SABp, OG), M),
@@ -1078,25 +1092,26 @@ d.quote("waterplane-area-grows", "§239", r"tum enim non solum area eius $z D$ e
                         answer="The same 'z D' for the area 2D (§212, §237), the digit 2 read as z: high, as at "
                                "'waterplane-area'."),
         note=claim("the waterplane's area 2D grows with the waterplane (read with the rectangle of §213)."))
-d.quote("stability-EF-named", "§239", r"atque momentum respectu axis latitudinalis",
-        reading=(Kw, M * (Kw / V - OG)),
-        erratum=Erratum("misprint", "high", r"\text{atque stabilitas respectu axis latitudinalis}",
-                        "The sentence gives two quantities in parallel, 'stabilitas nauis respectu axis longitudinalis "
-                        "AB = M(EF²D/(μV) − OG) atque momentum respectu axis latitudinalis = M(AB²D/(νV) − OG)'; the "
-                        "second, with the factor M and the term − OG, is the stability about EF (§201, §203), not the "
-                        "moment: the moment of the waterplane about EF is K = AB²D/ν (§238, the sentence before). "
-                        "Read as printed the moment K would equal M(K/V − OG), which it does not (K = 1, M = 2, "
-                        "V = 1, OG = 1/4: K = 1, M(K/V − OG) = 3/2). A scan does not turn 'stabilitas' into 'momentum': "
-                        "a word of the print.",
-                        corrected_reading=(SEF, M * (Kw / V - OG)),
-                        objection="'Momentum' may be meant in the older sense of the moment of the righting forces "
-                                  "(§194: 'momentum virium … quae ad restituendam nauem tendunt'), which is what "
-                                  "the stability measures.",
-                        answer="From §203 on Euler keeps 'momentum' for the waterplane's ∫y²dA (I, K, 'momenta "
-                               "earum figurarum') and 'stabilitas' for M(·/V ± b); the parallel clause of the same "
-                               "sentence and §241 ('stabilitas respectu axis latitudinalis') name this expression "
-                               "the stability."),
-        note=claim("the second quantity of the sentence, M(AB²D/(νV) − OG), is the stability about EF."))
+d.says("stability-EF-named", "§239", r"atque momentum respectu axis latitudinalis", "momentum",
+       Is(M * (Kw / V - OG), at={EF: AB, mu: nu}),
+       erratum=Erratum("misprint", "high", r"\text{atque stabilitas respectu axis latitudinalis}",
+                       "The sentence gives two quantities in parallel, 'stabilitas nauis respectu axis longitudinalis "
+                       "AB = M(EF²D/(μV) − OG) atque momentum respectu axis latitudinalis = M(AB²D/(νV) − OG)'; the "
+                       "second, with the factor M and the term − OG, is the stability about EF (§201, §203), not the "
+                       "moment: the moment of the waterplane about EF is K = AB²D/ν (§238, the sentence before). "
+                       "Read as printed the moment K would equal M(K/V − OG), which it does not (K = 1, M = 2, "
+                       "V = 1, OG = 1/4: K = 1, M(K/V − OG) = 3/2). A scan does not turn 'stabilitas' into 'momentum': "
+                       "a word of the print.",
+                       corrected_reading=d.reads("stabilitas", Is(M * (Kw / V - OG), at={EF: AB, mu: nu})),
+                       objection="'Momentum' may be meant in the older sense of the moment of the righting forces "
+                                 "(§194: 'momentum virium … quae ad restituendam nauem tendunt'), which is what "
+                                 "the stability measures.",
+                       answer="From §203 on Euler keeps 'momentum' for the waterplane's ∫y²dA (I, K, 'momenta "
+                              "earum figurarum') and 'stabilitas' for M(·/V ± b); the parallel clause of the same "
+                              "sentence and §241 ('stabilitas respectu axis latitudinalis') name this expression "
+                              "the stability."),
+       note=claim("the second quantity of the sentence, M(AB²D/(νV) − OG), is the stability about EF (read "
+                  "about the axis EF: AB for EF and ν for μ, so the moment K = AB²D/ν for I = EF²D/μ)."))
 MU_AS_V = "euler-229-243/stability-CD"
 for excess_name, locator, excess_excerpt in (
         ("excess-maximal", "§242", r"excessus quantitatis $\frac{EF^2.D}{vv}$ supra OG"),
@@ -1153,6 +1168,19 @@ d.step("ballast-G", (yGs, fb * 0 + (1 - fb) * sp.Integral(s, (s, 0, Hh)) / Hh, (
                         "height H; heights above the keel")
 d.step("box-B", (yBs, sp.Integral(s, (s, 0, Tq)) / Tq, Tq / 2), "integration", result=yBs,
        note="the centre of buoyancy of the wall-sided hull at the draught T")
+d.defines("centre of gravity", yGs)
+d.says("even-load-G-at-B", "§240", "si enim tota nauis moles per carinam aequabiliter distribuatur, tum centrum "
+       "grauitatis in ipsum centrum magnitudinis caderet", "centrum grauitatis",
+       Is(yBs, at={fb: 0, Hh: Tq}),
+       note=claim("a ship whose whole mass is spread evenly through the carina, the immersed part (§238: 'carinam "
+                  "nauis seu partem aquae immersam'), has its G at the centre of buoyancy: no ballast (f = 0) and "
+                  "the height H the draught T give y_G = T/2 = y_B."))
+hf = sp.Symbol("h_f", positive=True)             # §240: the height of the hull above the water, H - T
+d.says("freeboard-raises-G", "§240", "spicuum est ob partem extra aquam eminentem centrum gravitatis altius esse "
+       "positum", "centrum gravitatis", Compares(">", yBs, at={fb: 0, Hh: Tq + hf}, domain={hf: (sp.Rational(1, 10), 2)}),
+       note=claim("the part of the hull above the water raises G above the centre of buoyancy: with the mass spread "
+                  "evenly over the height H = T + h (h > 0 above the water) and no ballast, y_G = (T + h)/2 > T/2 = "
+                  "y_B."))
 d.quote("ballast-lowers-G", "§240", r"Quamuis enim maxime ponderosis oneribus in imum carinae collocandis centrum "
         r"gravitatis deorsum et quidem infra centrum magnitudinis deduci posset",
         reading=(yGs - yBs, ((1 - fb) * Hh - Tq) / 2),
