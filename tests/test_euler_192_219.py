@@ -13,6 +13,7 @@ from symfloat.engine.check import check_derivation
 from symfloat.engine.floating_witness import FloatingWitness
 from symfloat.engine.witness import Case, Precision
 from symfloat.model.source import SOURCES
+from symfloat.model.vocabulary import Compares, DecreasesWith, GrowsWith, IndependentOf, Is
 from symfloat.registry import load
 
 D, PACKAGE = load("euler-192-219")
@@ -66,9 +67,10 @@ EXPECTED_ERRATA = {
     ("centroid-equation", "transcription", "low"),     # §215 colons for multiplication dots, Cb for Cc; low:
                                                        # Cb stands again in §218, print or scan (its objection)
     ("centroid", "transcription", "medium"),           # §215 Ce for Cc
-    ("Ace-cubes", "transcription", "low"),             # §216 ∫y^2dx for ∫y^3dx
-    ("quad-L", "transcription", "low"),                # §216 D(ac+bc+cc)/3 for D(aa-ac+cc)/3; low: a letter
-                                                       # and a sign, print or scan (its objection, issue 31)
+    ("Ace-cubes", "transcription", "medium"),          # §216 ∫y^2dx for ∫y^3dx; medium: the line reads without
+                                                       # doubt, a 3 set or read as 2 (was low, issue 31)
+    ("quad-L", "transcription", "high"),               # §216 D(ac+bc+cc)/3 for D(aa-ac+cc)/3; high: §218 prints
+                                                       # the same expression right (was low, issue 31)
     ("quad-K", "transcription", "medium"),             # §218 D·Ce^2/4 for D·Cc^2/4
     ("ellipse-quadrant-area", "transcription", "low"),  # §219 pi/4 for pi ab/4 = D/2
     ("Cc-again", "transcription", "low"),              # §218 Cb for Cc again (second pass, line 126); low
@@ -218,3 +220,51 @@ def test_negative_stability_ends_in_a_stable_heeled_equilibrium():
         assert _arm(hv, sp.Rational(1, 20), 30) < 0
         assert abs(_arm(hv, sp.N(phi0, 60), 30)) < mpmath.mpf(10) ** -25
         assert _arm(hv, sp.N(phi0, 60) + sp.Rational(1, 100), 30) > 0
+
+
+# ---- sentences read through the vocabulary (issue 31): each holds, and is refuted when its words are mutated
+# (the wrong quantity named, the dependence or the comparison turned); the mutant is read from the same
+# definitions by the same words-to-reading route (Derivation.reads)
+
+def _says_verdict(name, words, statement):
+    p = D.get_printed(name)
+    q = dataclasses.replace(p, reading=D.reads(words, statement), erratum=None)
+    rep = check_derivation(dataclasses.replace(D, printed=[q], witnesses=[]), prove=False, trust_steps=True)
+    return rep.formulas[0].verdict
+
+
+def _sentences():
+    M = MODULE
+    a, b, m, n, Iw, Kw = M.a, M.b, M.m, M.n, M.Iw, M.Kw
+    unequal = dict(at={Iw: sp.Subs(M.K, (a, M.c), (M.Lq - M.tq, M.Lq + M.tq))},
+                   domain={M.tq: (sp.Rational(1, 10), 1), M.Lq: (sp.Rational(11, 10), 3)})
+    inverse = Is(M.Kre * (2 * b) ** 2 / (2 * a) ** 2, at={Iw: M.Ire})
+    return [
+        # §209: stable about both principal axes, stable about every axis; G above the metacentre of AB, not
+        ("stable-about-every-axis", "stabilitatem",
+         Compares(">", 0, at=M.BOTH_STABLE, domain={M.gm: (sp.Rational(1, 10), 1), M.dK: (0, 4)}),
+         "stabilitatem", Compares(">", 0, at=M.BOTH_STABLE, domain={M.gm: (-1, -sp.Rational(1, 10)), M.dK: (0, 4)})),
+        # §210: equal principal moments (K = I) make the stability the same about every axis; K left free it is not
+        ("equal-stability-all-axes", "eandem stabilitatem", IndependentOf(m, at={Iw: sp.Subs(M.MOMENT_PQ, Kw, Iw)}),
+         "eandem stabilitatem", IndependentOf(m, at={Iw: M.MOMENT_PQ})),
+        # §210: the square is equally stable in every direction; the rectangle (a != b) is not
+        ("square-equally-stable", "aequa erit stabile", IndependentOf(m, at={Iw: M.Psq}),
+         "aequa erit stabile", IndependentOf(m, at={Iw: n ** 2 * M.Ire + m ** 2 * M.Kre})),
+        # §213: I : K inversely as AB² : EF²; directly is refuted
+        ("rect-inverse-ratio", "momentum", inverse,
+         "momentum", Is(M.Kre * (2 * a) ** 2 / (2 * b) ** 2, at={Iw: M.Ire})),
+        # §213: the same words with the stability named for the moment are refuted (M(I/V + b) is not K·EF²/AB²)
+        ("rect-inverse-ratio", "momentum", inverse, "stabilitas", inverse),
+        # §218: the moment about EF grows with the inequality of Ac and Bc; 'falls' is refuted
+        ("unequal-parts-larger", "momentum", GrowsWith(M.tq, **unequal), "momentum", DecreasesWith(M.tq, **unequal)),
+    ]
+
+
+@pytest.mark.parametrize("name, words, statement, mutant_words, mutant", _sentences(),
+                         ids=[f"{s[0]}-{s[3]}" for s in _sentences()])
+def test_a_sentence_read_through_the_vocabulary_holds_and_its_mutant_is_refuted(name, words, statement,
+                                                                                 mutant_words, mutant):
+    p = D.get_printed(name)
+    assert p.reading == D.reads(words, statement)          # the module's reading is the words' reading
+    assert _says_verdict(name, words, statement) == "verified"
+    assert _says_verdict(name, mutant_words, mutant) == "erratum"

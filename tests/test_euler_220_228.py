@@ -63,14 +63,14 @@ EXPECTED_ERRATA = {
                                                     # scan cannot be told (its objection, issue 31)
     ("DAC", "transcription", "medium"),             # §226 ∫y dy√ for ∫y dY√
     ("moment-EF", "misprint", "medium"),            # §226 2a/b, aa/bbD, no square: 4a/b, 8aa/bbD, (..)²
-    ("curve-c", "transcription", "low"),            # §227 (c/b)√ for ±(a/b)√; low: the same c/b stands in
-                                                    # §228, as well the print's as the scan's (its objection)
+    ("curve-c", "misprint", "medium"),              # §227 (c/b)√ for ±(a/b)√; the same c/b and + stand in
+                                                    # §228: consistent, the print's (was the scan's, low)
     ("Oc", "transcription", "medium"),              # §227 Oc = a for Oc = c
-    ("U0-value", "transcription", "low"),           # §227 the three values shifted by one integral
-    ("U2-value-c", "transcription", "low"),
-    ("U4-value", "transcription", "low"),
+    ("U0-value", "misprint", "medium"),             # §227 the three values shifted by one integral, alike
+    ("U2-value-c", "misprint", "medium"),           # through the line: the print's (was the scan's, low)
+    ("U4-value", "misprint", "medium"),
     ("moment-EF-c", "transcription", "low"),        # §227 c·c²D/128 for c²D/8
-    ("curve-c-again", "transcription", "low"),      # §228 a = ... for x = ..., c/b for a/b
+    ("curve-c-again", "misprint", "medium"),        # §228 c/b for a/b, the repeat of curve-c (and a = for x =)
     ("middle-named-C", "transcription", "medium"),  # §228 'medio C' for 'medio O' (second pass, line 195)
 }
 
@@ -98,7 +98,8 @@ def test_every_area_and_moment_carries_two_quadrature_records(report):
                    "middle-named-C",   # the midpoint of AB (x = a at y = 0) against the centroid: no integral
                    "curve", "portions", "Y-c",   # the defining branches, their ends, Oc: no integral
                    "Aa-Ace-product",   # its printed reading has loose terms in y: no number to compare
-                   "even-Y"}           # the mirror condition on the branches: no integral
+                   "even-Y",           # the mirror condition on the branches: no integral
+                   "AB-free-of-Y"}     # read through the vocabulary: its records are the definition route's
     for f in report.formulas:
         name = f.id.split("/")[1]
         if name in unwitnessed:
@@ -251,3 +252,22 @@ def test_growth_in_words_is_a_relation_that_refutes_its_mutant():
     status = _relation(p.reading, d.results(), dom, "t", {"proofs": 0.0, "sampling": 0.0}).status
     falls = _relation(Holds(sp.Derivative(m.KEFc, m.c) < 0), d.results(), dom, "t", {"proofs": 0.0, "sampling": 0.0})
     assert (status, falls.status) == ("proved", "refuted")
+
+
+def test_the_moment_about_AB_free_of_Y_is_read_through_the_vocabulary_and_its_mutant_is_refuted():
+    """§223 'momentum respectu axis longitudinalis AB idem prodire, quicquid sit functio Y', read from the moment
+    2(I_Ace + I_Bce) the module defines (issue 31): it holds; the dependence turned (the moment said to change
+    with Y, or to be free of the half length a) is refuted."""
+    from symfloat.model.vocabulary import DependsOn, IndependentOf
+
+    p_, q_ = MODULE.p, MODULE.q
+    printed = D.get_printed("AB-free-of-Y")
+    assert printed.reading == D.reads("momentum", IndependentOf(p_, q_))
+
+    def verdict(statement):
+        q = dataclasses.replace(printed, reading=D.reads("momentum", statement), erratum=None)
+        rep = check_derivation(dataclasses.replace(D, printed=[q], witnesses=[]), prove=False, trust_steps=True)
+        return rep.formulas[0].verdict
+    assert verdict(IndependentOf(p_, q_)) == "verified"
+    assert verdict(DependsOn(p_)) == "erratum"
+    assert verdict(IndependentOf(MODULE.a)) == "erratum"

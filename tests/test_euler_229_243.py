@@ -9,8 +9,10 @@ import mpmath
 import pytest
 import sympy as sp
 
+from symfloat import Holds
 from symfloat.engine.check import check_derivation
 from symfloat.model.source import SOURCES
+from symfloat.model.vocabulary import Compares, DecreasesWith, GrowsWith, Is
 from symfloat.registry import load
 
 D, PACKAGE = load("euler-229-243")
@@ -86,13 +88,13 @@ EXPECTED_ERRATA = {
     ("stability-EF", "transcription", "low"),        # §239 μ for ν (low: Euler mixes μ and ν in §241 too)
     ("stability-AB-241", "misprint", "medium"),      # §241 ν for μ: the swap runs through all five places
                                                      # of §241, Euler's (was the scan's, low)
-    ("V-prism", "transcription", "low"),             # §243 (2/3)D·CD for 2D·CD
+    ("V-prism", "transcription", "medium"),          # §243 (2/3)D·CD for 2D·CD; medium: the line reads without
+                                                     # doubt, print or scan open (was low, issue 31)
     ("stability-CD", "transcription", "low"),        # §243 v for μ (low: the v may be a ν of §241's swap)
     # second pass (lines of 002_9b5669e726e363a9.txt in SECOND_PASS)
     ("portion-Ace", "transcription", "high"),        # §229 x for κ, as in the chord
     ("portion-Bce", "transcription", "high"),
     ("axis-EF-named", "misprint", "medium"),         # §230 'longitudinalis EF' for latitudinalis
-    ("kappa-1-acute", "claim", "low"),               # §236 'anguli ad e et f erunt acuti': obtuse for a > b
     ("Y-family", "transcription", "low"),            # §231 y^{n-1}, y^{n-2} for y^{2n}, y^{3n} (low: no
                                                      # glyph the scan confuses, print or scan undecided)
     ("waterplane-area", "transcription", "high"),    # §238 z D for 2D
@@ -121,7 +123,6 @@ SECOND_PASS = [
     ("EF-condition-241", "misprint", 288, r"{\nu v}", "stability-AB-241"),
     ("AB-condition-241", "misprint", 288, "D'", "stability-AB-241"),
     ("ratio-16", "misprint", 288, r"{\mu v}", "stability-AB-241"),     # the fourth and fifth places of the swap
-    ("kappa-1-acute", "claim", 272, "erunt acuti", ""),
     ("stability-EF-named", "misprint", 280, "atque momentum respectu axis latitudinalis", ""),  # third pass
 ]
 
@@ -310,9 +311,12 @@ def test_the_derivative_of_IY_in_c1_and_c2_is_the_integral_of_the_derivative():
             assert abs(exact - (up - down) / (2 * h)) < 1e-20, (dY, var)
 
 
-def test_the_angle_at_e_of_the_kappa_1_figure_is_obtuse_for_a_long_figure():
+def test_the_angle_at_e_of_the_kappa_1_figure_is_a_corner_obtuse_for_a_long_figure():
     # §236 (transcription line 272) and §215: the straight portions from e = (a - c, b) to A = (0, 0) and to
-    # B = (2a, 0); the angle between the vectors e->A and e->B by the dot product, independent of the module
+    # B = (2a, 0); the angle between the vectors e->A and e->B by the dot product, independent of the module.
+    # 'anguli ... acuti' is read as sharp corners (between the cusp of κ > 1 and the smooth end of κ < 1): the
+    # reading holds; read as angles below 90° it is refuted (obtuse for every figure longer than broad), the
+    # sense the withdrawn erratum took (issue 31)
     import math
 
     def angle(a_, b_, c_):
@@ -322,15 +326,66 @@ def test_the_angle_at_e_of_the_kappa_1_figure_is_obtuse_for_a_long_figure():
     assert angle(1, 2, 0) < 90 and angle(2, 1, sp.Rational(1, 2)) > 90
     module = MODULE
     p = next(q for q in D.printed if q.name == "kappa-1-acute")
+    assert p.erratum is None
     res = D.results()
     at = {module.a: 4, module.b: 1, module.c: sp.Rational(1, 100)}
     e = module.ANGLE_E
     for _ in range(4):
         e = e.xreplace(res)
     assert float(sp.deg(e.doit().subs(at))) == pytest.approx(angle(4, 1, 0.01), abs=1e-9)
-    # mutation: the correction with the inequality reversed ((a - c)(a + c) > b^2 for acute) must be refuted
-    wrong = dataclasses.replace(p.erratum, corrected_reading=type(p.erratum.corrected_reading)(
-        p.erratum.corrected_reading.a, (module.a - module.c) * (module.a + module.c) > module.b ** 2))
-    rep = check_derivation(dataclasses.replace(D, printed=[dataclasses.replace(p, erratum=wrong)], witnesses=[]),
-                           prove=False, trust_steps=True)
-    assert any("correction does not hold" in f for f in rep.failures)
+    below_right = dataclasses.replace(p, reading=Holds(module.ANGLE_E < sp.pi / 2))
+    rep = check_derivation(dataclasses.replace(D, printed=[below_right], witnesses=[]), prove=False,
+                           trust_steps=True)
+    assert rep.formulas[0].verdict == "erratum"
+    rep = check_derivation(dataclasses.replace(D, printed=[p], witnesses=[]), prove=False, trust_steps=True)
+    assert rep.formulas[0].verdict == "verified"
+
+
+# ---- sentences read through the vocabulary (issue 31): each holds, and is refuted when its words are mutated
+
+def _says_verdict(name, words, statement):
+    p = D.get_printed(name)
+    q = dataclasses.replace(p, reading=D.reads(words, statement), erratum=None)
+    rep = check_derivation(dataclasses.replace(D, printed=[q], witnesses=[]), prove=False, trust_steps=True)
+    return rep.formulas[0].verdict
+
+
+def _sentences():
+    M = MODULE
+    OG, EF, AB, Dw, mu, nu = M.OG, M.EF, M.AB, M.Dw, M.mu, M.nu
+    stability_EF = Is(M.M * (M.Kw / M.V - OG), at={EF: AB, mu: nu})
+    freeboard = dict(at={M.fb: 0, M.Hh: M.Tq + M.hf}, domain={M.hf: (sp.Rational(1, 10), 2)})
+    return [
+        # §239: with G below O the stability is positive; with G above O (OG kept) it is not always
+        ("G-below-positive", "stabilitatem", Compares(">", 0, at={OG: -OG}), "stabilitatem", Compares(">", 0)),
+        # §239: the stability grows with the waterplane (D and EF); 'falls' is refuted, and so is growth with μ
+        ("wider-waterplane-more-stable", "stabilitas", GrowsWith(Dw, EF), "stabilitas", DecreasesWith(Dw, EF)),
+        ("wider-waterplane-more-stable", "stabilitas", GrowsWith(Dw, EF), "stabilitas", GrowsWith(mu)),
+        # §240: mass spread evenly through the carina (H = T) puts G at B; through the whole hull (H > T) it does not
+        ("even-load-G-at-B", "centrum grauitatis", Is(M.yBs, at={M.fb: 0, M.Hh: M.Tq}),
+         "centrum grauitatis", Is(M.yBs, at={M.fb: 0})),
+        # §240: the part above the water raises G above B; 'lower' is refuted
+        ("freeboard-raises-G", "centrum gravitatis", Compares(">", M.yBs, **freeboard),
+         "centrum gravitatis", Compares("<", M.yBs, **freeboard)),
+        # §239: M(AB²D/(νV) − OG) is the stability about EF; the print's 'momentum' is refuted (its erratum)
+        ("stability-EF-named", "stabilitas", stability_EF, "momentum", stability_EF),
+    ]
+
+
+@pytest.mark.parametrize("name, words, statement, mutant_words, mutant", _sentences(),
+                         ids=[f"{s[0]}-{s[3]}-{i}" for i, s in enumerate(_sentences())])
+def test_a_sentence_read_through_the_vocabulary_holds_and_its_mutant_is_refuted(name, words, statement,
+                                                                                 mutant_words, mutant):
+    assert _says_verdict(name, words, statement) == "verified"
+    assert _says_verdict(name, mutant_words, mutant) == "erratum"
+
+
+def test_the_printed_readings_of_239_and_240_are_their_words_readings():
+    p = D.get_printed("stability-EF-named")
+    assert p.reading == D.reads("momentum", Is(MODULE.M * (MODULE.Kw / MODULE.V - MODULE.OG),
+                                                at={MODULE.EF: MODULE.AB, MODULE.mu: MODULE.nu}))
+    assert p.reading[0].expr == D.definitions["moment"]
+    assert p.erratum.corrected_reading[0].expr == D.definitions["stability"]
+    assert D.get_printed("freeboard-raises-G").reading == D.reads(
+        "centrum gravitatis", Compares(">", MODULE.yBs, at={MODULE.fb: 0, MODULE.Hh: MODULE.Tq + MODULE.hf},
+                                       domain={MODULE.hf: (sp.Rational(1, 10), 2)}))

@@ -115,6 +115,23 @@ def test_grows_with_is_decided_exactly_where_the_signs_decide():
     assert status == "proved"
 
 
+def test_growth_with_several_symbols_is_the_sign_of_each_derivative():
+    # de/db = b/(3c^2) > 0: e grows with b; 'grows with b and phi' fails by de/dphi = 0
+    dv = lesson()
+    dv.says("grows-b", "test", WIDE, "Stabilität", GrowsWith(b))
+    dv.says("grows-b-phi", "test", WIDE, "Stabilität", GrowsWith(b, phi))
+    assert verdicts(dv) == {"grows-b": "verified", "grows-b-phi": "erratum"}
+
+
+def test_euler_names_the_stability_also_by_equally_stable():
+    # §210 (line 68): 'aequa sit stabilis', 'aequa erit stabile' compare the stability about two axes
+    assert quantity_named("euler", "secundum omnes plagas aequa erit stabile") == "stability"
+    assert quantity_named("euler", "ut respectu binorum axium principalium aequa sit stabilis") == "stability"
+    assert quantity_named("euler", "tum centrum grauitatis in ipsum") == "centre of gravity"
+    with pytest.raises(ValueError, match="name no quantity"):
+        quantity_named("euler", "erit stabile")        # a verdict word alone names no quantity
+
+
 def test_stable_where_the_stability_vanishes_is_refuted_as_neutral():
     # c = 1, d = 1/2: e = b^2/6 - 3/16 vanishes at b = 3 sqrt(2)/4 (z_M = z_G), positive at b = 2
     neutral = {b: 3 * sp.sqrt(2) / 4, c: 1, d: sp.Rational(1, 2)}

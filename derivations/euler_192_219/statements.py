@@ -4,7 +4,7 @@ import sympy as sp
 from symfloat import Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
-from symfloat.model.vocabulary import Is
+from symfloat.model.vocabulary import Compares, DecreasesWith, GrowsWith, IndependentOf, Is
 
 x, y, w, s, r = sp.symbols("x y w s r", real=True)
 a, b, c = sp.symbols("a b c", positive=True)
@@ -155,7 +155,11 @@ d.quote("stability-I", "§203", r"$M(\frac{I}{v} + b)$",
         reading=(Slo, Mw * (Iw / V + h)), symbols={"v": (V, VOL)},
         note=claim("with I the moment of the waterplane about the longitudinal axis, the stability about it "
                    "is M(I/V + b). The transcription prints v for V and only the + of §201's ±: read as the "
-                   "case of §201 with G below B (b counted positive downwards)."))
+                   "case of §201 with G below B (b counted positive downwards). A ± lost here was suspected and is "
+                   "not booked: both formulas of §203 print the +, the transcription renders §201's ± twice a "
+                   "paragraph before (so the scan did not drop it here), and read as §201's case with G below B "
+                   "the formula holds; writing one case of §201 restricts the sentence, it does not make it "
+                   "false, and the engine does not refute it."))
 d.quote("stability-K", "§203", r"$M(\frac{K}{v} + b)$",
         reading=(SKlo, Mw * (Kw / V + h)), symbols={"v": (V, VOL)},
         note=claim("the stability about the latitudinal axis EF is M(K/V + b)."))
@@ -324,16 +328,18 @@ d.quote("Ace-edge", "§216", r"$PM = \frac{bx}{a} = y$", reading=(Ye, b * x / a)
 d.quote("Ace-cubes", "§216", r"$\int y^2 dx = \frac{ab^3}{4}$",
         reading=(sp.Integral(h1 ** 2, (x, 0, a)), a * b ** 3 / 4),
         erratum=Erratum(
-            "transcription", "low", r"\int y^3 dx = \frac{ab^3}{4}",
+            "transcription", "medium", r"\int y^3 dx = \frac{ab^3}{4}",
             (r"With $y = bx/a$, $\int_0^a y^2 dx = ab^2/3$, while $\int_0^a y^3 dx = ab^3/4$, and a third of it is "
              r"the printed moment $ab^3/12$ of the next line (the moment of a quadrant about AB is $\tfrac13\int y^3 "
-             "dx$, §211). The exponent 3 read as 2, or a misprint of 1749: the transcription cannot tell, low."),
+             r"dx$, §211). The exponent 3 read as 2, or a misprint of 1749: the transcription cannot tell which, "
+             "medium (was low; the printed line itself reads without doubt)."),
             corrected_reading=(sp.Integral(h1 ** 3, (x, 0, a)), a * b ** 3 / 4),
                         objection=("The exponent 2 may be the print's, Euler's pen or the compositor dropping the 3 "
                                    r"of §214's $\int y^3 dx$."),
                         answer=(r"The value $ab^3/4$ and the moment $ab^3/12$ of the next line need $\int y^3 dx$, as "
-                                "§214 has it, so the correction stands; a 3 read as 2 and a 3 set as 2 cannot be "
-                                "told apart, hence low.")),
+                                "§214 has it, so the correction is proved, and the printed line reads without doubt. "
+                                "A 3 read as 2 and a 3 set as 2 cannot be told apart: the cause stays open, which is "
+                                "medium (low is for a reading of the print in doubt, which this is not).")),
         note=claim("for the triangle Ace, with PM = bx/a, ∫y³dx = ab³/4."))
 d.quote("Ace-I", "§216", r"$= \frac{ab^3}{12}$", reading=(IAce, a * b ** 3 / 12),
         note=claim("the triangle Ace has the moment ab³/12 about AB."))
@@ -350,18 +356,21 @@ d.quote("Bce-L", "§216", r"$Bce = \frac{c^3 b}{12}$", reading=(LBce, c ** 3 * b
 d.quote("quad-L", "§216", r"$= \frac{a^3 b + c^3 b}{6} = \frac{D(ac + bc + cc)}{3}$",
         reading=(Lk, (a ** 3 * b + c ** 3 * b) / 6, Dk * (a * c + b * c + c * c) / 3),
         erratum=Erratum(
-            "transcription", "low", r"= \frac{a^3 b + c^3 b}{6} = \frac{D(aa - ac + cc)}{3}",
+            "transcription", "high", r"= \frac{a^3 b + c^3 b}{6} = \frac{D(aa - ac + cc)}{3}",
             ("$(a^3 + c^3) b/6 = (a + c) b (a^2 - ac + c^2)/6 = D(a^2 - ac + c^2)/3$ with $2D = (a + c) b$. §218 "
-             "quotes this very result as $D(aa-ac+cc)/3$, so Euler had it right; '$ac + bc + cc$' is a garbled '$aa "
-             "- ac + cc$' (a letter and a sign lost)."),
+             "quotes this very result as $D(aa-ac+cc)/3$: the other printing of the same expression is right, so "
+             "neither Euler nor his page had it wrong (the criterion of high). '$ac + bc + cc$' is a garbled '$aa - "
+             r"ac + cc$': it brings in the letter $b$, which the expression lacks and the line's $a^3 b + c^3 b$ "
+             "beside it has, a recognizer's garble of a dense line."),
             corrected_reading=(Lk, (a ** 3 * b + c ** 3 * b) / 6, Dk * (a * a - a * c + c * c) / 3),
                         objection="'ac + bc + cc' differs from 'aa - ac + cc' by a letter and a sign: two changes "
                                   "are more than one glyph the scan confuses, and a compositor may have garbled the "
                                   "line.",
                         answer=("Euler had it right: $(a^3 + c^3)b/6 = D(aa - ac + cc)/3$ with $2D = (a + c)b$, and "
-                                "§218 quotes the result so. But a letter and a sign changed together are no single "
-                                "confusion of the scan, and nothing in the text tells the compositor's garble from "
-                                "the scan's: lowered to low.")),
+                                "§218 prints the same expression right, which the criteria take as settling the "
+                                "cause. A compositor's slip changes a sort, it does not bring a letter of the "
+                                r"neighbouring factors ($a^3 b + c^3 b$) into the bracket; that is the garble of a "
+                                "recognizer, which reads a line as a whole: high (was low).")),
         note=claim("the whole quadrilateral has the moment (a³b + c³b)/6 = D(a² − ac + c²)/3 about ef."))
 
 # ================================================================ §217: parallel axes (generic figure)
@@ -447,6 +456,15 @@ d.quote("quad-K-larger", "§218", "Maius igitur est momentum huius figurae respe
         reading=(K - Dk * (a + c) ** 2 / 12, Dk * (c - a) ** 2 / 36),
         note=claim("the moment about EF exceeds that of the figure with Ac = Bc (the rhombus of the same "
                    "length and breadth, D·AB²/12) by D(c − a)²/36 ≥ 0; read as this excess, a square."))
+
+tq, Lq = sp.symbols("t_q L_q", positive=True)        # half the difference of Bc and Ac, half the length AB
+d.says("unequal-parts-larger", "§218", "momentum respectu\n axis latitudinalis eo erit maius, quo magis fuerint partes\n"
+       " Ac et Bc inter se inaequales.", "momentum",
+       GrowsWith(tq, at={Iw: sp.Subs(K, (a, c), (Lq - tq, Lq + tq))},
+             domain={tq: (sp.Rational(1, 10), 1), Lq: (sp.Rational(11, 10), 3)}),
+       note=claim("among the quadrilaterals of the same length AB = Ac + Bc = 2L and breadth ef, the moment about "
+                  "EF grows with the inequality of the parts: with Ac = L - t, Bc = L + t it grows with t (read for "
+                  "t > 0, Bc the longer part; the figure is symmetric in the exchange of the parts)."))
 
 # ================================================================ §207–210: symmetric figure (the quadrilateral about C)
 PS, RS_, P45 = sp.symbols("P_S R_S P_{45}")
@@ -540,11 +558,22 @@ d.quote("AB-least-EF-greatest", "§209", "omnium est minimum, momentum vero resp
                  sp.Matrix([m ** 2 * (K - Ik), n ** 2 * (K - Ik)])),
         note=claim("I about AB is the least moment and K about EF the greatest: the moment about PQ is I + m²(K − I) "
                    "= K − n²(K − I), n² = 1 − m², both differences non-negative for K > I."))
-d.quote("equal-stability-all-axes", "§210", "Quare si nauis eius modi habeat figuram, ut respectu binorum axium "
-        "principalium aequa sit stabilis, tum eandem stabilitatem habebit respectu aliis cuiusvis axis horizontalis.",
-        reading=(sp.Subs(Ik + m ** 2 * (K - Ik), K, Ik), Ik),
-        note=claim("equal moments about the principal axes (K = I) make the moment, hence the stability, the same "
-                   "about every horizontal axis through C."))
+MOMENT_PQ = n ** 2 * Iw + m ** 2 * Kw          # §207: the moment about PQ of a waterplane symmetric about AB
+gm, dK = sp.Symbol("g_m", real=True), sp.Symbol("d_K", positive=True)   # §209: 1 - b/(I/V), K - I
+BOTH_STABLE = {Iw: n ** 2 * Iw + m ** 2 * (Iw + dK), h: -(1 - gm) * Iw / V}
+d.says("stable-about-every-axis", "§209", "Quodsi ergo nauis habeat stabilitatem respectu axium binorum principalium, "
+       "ea respectu omnium omnino axium firmiter in situ aequilibrii persistet", "stabilitatem",
+       Compares(">", 0, at=BOTH_STABLE, domain={gm: (sp.Rational(1, 10), 1), dK: (0, 4)}),
+       note=claim("a ship stable about both principal axes is stable about every axis through C: G the height "
+                  "b = (1 - g)·I/V above B (0 < g ≤ 1, so M(I/V - b) = MgI/V > 0 about AB) and K = I + d ≥ I (§209: "
+                  "K > I, so the stability about EF is positive too); about PQ the moment is n²I + m²K (§207) and "
+                  "the stability M((n²I + m²K)/V - b) = M(gI + m²d)/V > 0 (read for g ≥ 1/10)."))
+d.says("equal-stability-all-axes", "§210", "Quare si nauis eius modi habeat figuram, ut respectu binorum axium "
+       "principalium aequa sit stabilis, tum eandem stabilitatem habebit respectu aliis cuiusvis axis horizontalis.",
+       "eandem stabilitatem", IndependentOf(m, at={Iw: sp.Subs(MOMENT_PQ, Kw, Iw)}),
+       note=claim("a ship equally stable about the two principal axes (the same M, V and b for all axes, so K = I, "
+                  "§200) has the same stability about every horizontal axis: the stability M(moment/V + b) about PQ, "
+                  "with the moment n²I + m²K of §207 and K = I, does not change with m = sin ACP."))
 d.quote("equal-moments-any-figure", "§210", "Eadem vero proprietas locum habebit si sectio aquae fuerit quaecunque "
         "alia figura, dummodo ea ita sit comparaata, ut eius momenta respectu binorum axium principalium sint inter "
         "se aequalia.",
@@ -607,6 +636,13 @@ d.says("square-D", "§212", SQUARE_STABILITY, "stabilitas", Is((2 * a) ** 2 * Ds
                               "text of 1749, hence medium, not high."),
        note="The value is the square's moment about every axis through C.")
 
+d.says("square-equally-stable", "§210", "hincque corpus aquae innatans, cuius sectio aquae est quadratum, secundum "
+       "omnes plagas aequa erit stabile, atque aequali vi inclinationibus resistet.",
+       "aequa erit stabile", IndependentOf(m, at={Iw: Psq}),
+       note=claim("a body whose waterplane is a square is equally stable in every direction: the stability "
+                  "M(moment/V + b) with the square's moment about the axis PQ at the angle ACP (sine m), integrated "
+                  "over the square, does not change with m."))
+
 # ================================================================ §213 rectangle
 Dre, Ire, Kre = (symbol(f"{q}_{{re}}", rf"{q}_{{\text{{rectangle}}}}") for q in "DIK")
 integral_step("rect-area", Dre, rect(1, a, b) / 2,
@@ -628,6 +664,12 @@ d.quote("rect-I", "§213", r"$= \frac{4ab^3}{3} = \frac{2D \cdot bb}{3} = \frac{
         note=claim("the rectangle's moment about AB is 4ab³/3 = 2D·b²/3 = EF²·D/6."))
 d.quote("rect-K", "§213", r"latitudinalis $= \frac{AB^2 \cdot D}{6}$", reading=(Kre, (2 * a) ** 2 * Dre / 6),
         note=claim("and about EF it is AB²·D/6, so the two moments are inversely as the squares of the axes."))
+d.says("rect-inverse-ratio", "§213", "ex quo momentum huius sectionis aquae respectu axis longitudinalis AB se habebit "
+       "ad momentum axis latitudinalis EF inuersè vt quadratum axis longitudinalis AB ad quadratum axis "
+       "latitudinalis EF.", "momentum huius sectionis aquae respectu axis longitudinalis AB",
+       Is(Kre * (2 * b) ** 2 / (2 * a) ** 2, at={Iw: Ire}),
+       note=claim("the rectangle's moment about AB is to its moment about EF inversely as AB² to EF²: "
+                  "I = K·EF²/AB² (AB = 2a, EF = 2b), the moments integrated over the rectangle."))
 
 # ================================================================ §214 rhombus
 Drh, Irh, Krh = (symbol(f"{q}_{{rh}}", rf"{q}_{{\text{{rhombus}}}}") for q in "DIK")

@@ -4,6 +4,7 @@ import sympy as sp
 from symfloat import Derivation, Eq, Erratum, Holds
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
+from symfloat.model.vocabulary import IndependentOf
 
 y = sp.Symbol("y", real=True)
 th = sp.Symbol("theta", real=True)
@@ -257,6 +258,14 @@ d.quote("AB-AEB", "§223", r"$= \frac{2a}{3b} \int y^4 dy \sqrt{bb-yy}$, in quo 
                                "of the whole figure is twice (2a/3b)∫y⁴dy/√(bb-yy) = πab³/8 (D = πab/2), and the "
                                "product does not give it. Medium, since the print cannot be seen."),
         note=claim("AEB has the moment (2a/3b)∫y⁴dy/√(bb-yy) about AB, free of Y."))
+# the quantity §223 names in words (symfloat/model/vocabulary.json): the figure's moment about AB, the two
+# portions of the half AEB taken apart and AFB its mirror image, so that Y enters each portion's part
+d.defines("moment", 2 * (IAce + IBce))
+d.says("AB-free-of-Y", "§223", "Deinde dico huius figurae momentum respectu axis longitudinalis AB idem prodire, "
+       "quicquid sit functio Y", "momentum", IndependentOf(p, q),
+       note=claim("the moment of the figure about AB is the same whatever the function Y: the moments of the "
+                  "portions Ace and Bce each change with Y = p|y| + qy², their sum does not (derivatives in p and "
+                  "q zero)."))
 d.quote("AB-whole", "§223", r"$= \frac{Dbb}{2} = \frac{ef^2 D}{8}$",
         reading=as_printed(lambda: (Iwhole, D * b ** 2 / 2, (2 * b) ** 2 * D / 8)),
         note=claim("the whole figure has, like the ellipse, the moment Db²/2 = ef²D/8 about AB (ef = 2b)."))
@@ -646,18 +655,23 @@ d.quote("Y-c", "§227", r"Ponamus esse $Y = \frac{-cyy}{bb},$",
 d.quote("curve-c", "§227", r"seu $x = a - \frac{cyy}{bb} + \frac{c}{b} V(bb-yy),$",
         reading=(xRc, a - c * y ** 2 / b ** 2 + c / b * R),
         erratum=Erratum(
-            "transcription", "low", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
+            "misprint", "medium", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
             "Y = -cyy/bb put into x = a + Y ± a√(1 - yy/bb) of §221 gives a - cyy/bb ± (a/b)√(bb-yy); with "
-            "(c/b)√ the curve would not end at B (x = a + c at y = 0, not 2a). The letters a and c are "
-            "confused again in 'Oc = a' next to it; the ± of §221 shortened to the branch of Bce. Low.",
+            "(c/b)√ the curve would not end at B (x = a + c at y = 0, not 2a). The same c/b, with the same + for "
+            "the ±, stands in §228's 'aequatio assumta' ('curve-c-again'): a fault repeated alike at two places a "
+            "paragraph apart is the print's, not a confusion of the scan (the consistency criterion of "
+            "docs/errata-kinds.md). Medium: the scan confuses a and c beside it ('Oc = a').",
             corrected_reading=as_printed(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
                                                       a - c * y ** 2 / b ** 2 + a / b * R]))),
-                        objection="The same c/b stands again in §228's 'aequatio assumta', so the print may have had"
-                                  " it in both places, Euler copying his own line or the compositor repeating it.",
-                        answer="Euler's working does not use it: x = a + Y ± a√(1 - yy/bb) of §221 with Y = -cyy/bb "
-                               "gives his ∫(a+Y)²dy√ and AC = a - c/4, and with c/b the curve would not end at B. "
-                               "But a slip repeated in §228 is as well the print's as the scan's a/c confusion of "
-                               "these lines; the transcription cannot tell them apart. Lowered to low."),
+                        objection="The scan confuses a and c in the very next clause ('Oc = a' for Oc = c), so c/b "
+                                  "may be the same confusion of the scan, and §228's line, damaged at its head ('a =' "
+                                  "for 'x ='), may repeat it by the same confusion.",
+                        answer="A confusion of glyphs does not set the same wrong letter at the same place of two "
+                               "lines a paragraph apart and shorten the ± to + at both; §228 calls the line the "
+                               "'aequatio assumta', the equation of §227 set again. Euler's working does not use "
+                               "it (x = a + Y ± a√(1 - yy/bb) of §221 with Y = -cyy/bb gives his ∫(a+Y)²dy√ and "
+                               "AC = a - c/4), so the slip is the print's: misprint (was the scan's, low). The a/c "
+                               "confusion beside it keeps the cause at medium."),
         note=claim("with Y = -cyy/bb the curve is x = a - cyy/bb + (c/b)√(bb-yy); read as the branch Bce."))
 d.quote("Oc", "§227", r"ex qua fit $Oc = a$ vti assumsumus",
         reading=(sp.Subs(a - xLc, y, b), a),
@@ -669,9 +683,9 @@ d.quote("Oc", "§227", r"ex qua fit $Oc = a$ vti assumsumus",
                         objection="'Oc = a' may be the print's (a compositor's a for c), or Oc may name another "
                                   "segment of the lost figure.",
                         answer="§221 closes with the same words, 'quo fiat interuallum Oc = c uti assumimus', and "
-                               "§232 has 'Oc = c'; at y = b the curve gives Ac = a - c, so Oc = c. The a for c in a "
-                               "line where the scan confuses a, c and x is the likelier reading; medium, since the "
-                               "print cannot be seen."),
+                               "§232 has 'Oc = c'; at y = b the curve gives Ac = a - c, so Oc = c. One letter, "
+                               "printed right at the two other places, is the scan's by the criteria; medium, since "
+                               "a single a for c may as well be the compositor's and the print cannot be seen."),
         note=claim("the breadth ef stands at Oc = c from the middle O, as assumed."))
 d.quote("S2c-expanded", "§227",
         "$\\int (a+Y)^2 dy V(bb-yy) = a^2 \\int dy V(bb-yy) - \\frac{2ac}{bb} \\int yy dy$\n "
@@ -680,32 +694,37 @@ d.quote("S2c-expanded", "§227",
         note=claim("∫(a+Y)²dy√ = a²∫dy√ - (2ac/bb)∫yy dy√ + (cc/b⁴)∫y⁴dy√ for Y = -cyy/bb."))
 SHIFT = ("From y = 0 to b: ∫dy√(bb-yy) = πb²/4 = bD/2a, ∫yy dy√ = πb⁴/16 = b³D/8a, ∫y⁴dy√ = πb⁶/32 = "
          "b⁵D/16a (D = πab/2; the first two as printed in §226). The line that follows, abD/2 - bcD/4 + "
-         "bccD/16a, is made of exactly these values, so Euler had them. The transcription gives "
-         "b³D/8a, b⁵D/16a, b⁹D/16a: each value moved one integral on, the last exponent garbled. The "
-         "printed page cannot be seen; low.")
+         "bccD/16a, is made of exactly these values, so Euler had them. The print gives b³D/8a, b⁵D/16a, "
+         "b⁹D/16a: each value moved one integral on, consistently through the three equations of the line, "
+         "and the last filled with a power that belongs to none. A scan misreads glyphs; it does not move "
+         "values from one equation to the next: the consistency criterion of docs/errata-kinds.md makes it the "
+         "print's (the compositor setting the values against the wrong integrals). Medium, since the printed "
+         "page cannot be seen (was the scan's, low).")
+SHIFT_OBJECTION = ("A scan can lose a line (a fault of the transcription by the criteria): with the first value "
+                   "dropped, the others would each move one place on.")
+SHIFT_ANSWER = ("A lost value leaves an integral without its value; here all three equations stand, each with a "
+                "value of the right form for its neighbour, and the last with b⁹D/16a, which no line of the page "
+                "holds. The shift is the print's; the page cannot be seen, hence medium.")
 d.quote("U0-value", "§227", r"Verum est $\int dy V(bb-yy) = \frac{b^3 D}{8a}$",
         reading=(U0, b ** 3 * D / (8 * a)),
-        erratum=Erratum("transcription", "low", r"\int dy \sqrt{bb-yy} = \frac{bD}{2a}", SHIFT,
+        erratum=Erratum("misprint", "medium", r"\int dy \sqrt{bb-yy} = \frac{bD}{2a}", SHIFT,
                         corrected_reading=(U0, b * D / (2 * a)),
-                        objection="The shift of three values by one integral is no glyph an OCR confuses; it may be "
-                                  "the print's, a compositor setting the values against the wrong integrals.",
-                        answer="The line after is made of the right values, so Euler had them; whether the print or "
-                               "the transcription moved them cannot be told, which is why the erratum is low. The "
-                               "kind is the likelier, not a certainty."),
+                        objection=SHIFT_OBJECTION, answer=SHIFT_ANSWER),
         note=claim("∫dy√(bb-yy) = b³D/8a (as printed)."))
 d.quote("U2-value-c", "§227", r"$\int yy dy V(bb-yy) = \frac{b^5 D}{16a}$", reading=(U2, b ** 5 * D / (16 * a)),
-        erratum=Erratum("transcription", "low", r"\int yy dy \sqrt{bb-yy} = \frac{b^3 D}{8a}", SHIFT,
+        erratum=Erratum("misprint", "medium", r"\int yy dy \sqrt{bb-yy} = \frac{b^3 D}{8a}", SHIFT,
                         corrected_reading=(U2, b ** 3 * D / (8 * a)),
-                        objection="As for ∫dy√(bb-yy): the shift may be the print's.",
-                        answer="abD/2 - bcD/4 + bccD/16a uses b³D/8a for this integral, as §226 prints it; print or "
-                               "scan cannot be told, hence low."),
+                        objection=SHIFT_OBJECTION,
+                        answer="abD/2 - bcD/4 + bccD/16a uses b³D/8a for this integral, as §226 prints it; the value "
+                               "printed here is the next integral's, the shift of the line. " + SHIFT_ANSWER),
         note=claim("∫yy dy√(bb-yy) = b⁵D/16a (as printed)."))
 d.quote("U4-value", "§227", r"$\int y^4 dy V(bb-yy) = \frac{b^9 D}{16a}$", reading=(U4, b ** 9 * D / (16 * a)),
-        erratum=Erratum("transcription", "low", r"\int y^4 dy \sqrt{bb-yy} = \frac{b^5 D}{16a}", SHIFT,
+        erratum=Erratum("misprint", "medium", r"\int y^4 dy \sqrt{bb-yy} = \frac{b^5 D}{16a}", SHIFT,
                         corrected_reading=(U4, b ** 5 * D / (16 * a)),
-                        objection="As for ∫dy√(bb-yy): the shift may be the print's; b⁹ may be Euler's own.",
-                        answer="The term bccD/16a of the next line is (cc/b⁴)·b⁵D/16a, so Euler had b⁵; print or "
-                               "scan cannot be told, hence low."),
+                        objection=SHIFT_OBJECTION + " And b⁹ may be a 5 the scan read as 9.",
+                        answer="The term bccD/16a of the next line is (cc/b⁴)·b⁵D/16a, so Euler had b⁵; a 9 for a 5 "
+                               "would leave the value right in place, not shifted with its neighbours. "
+                               + SHIFT_ANSWER),
         note=claim("∫y⁴dy√(bb-yy) = b⁹D/16a (as printed)."))
 d.quote("S2c-value", "§227",
         r"$\int (a+Y)^2 dy V(bb-yy) = \frac{abD}{2} - \frac{bcD}{4} + \frac{bccD}{16a} = \frac{bD}{16a} (8aa - 4ac + cc)$",
@@ -768,16 +787,21 @@ d.quote("middle-named-C", "§228", r"a punto axis AB medio C distet",
 d.quote("curve-c-again", "§228", r"$a = a - \frac{cyy}{bb} + \frac{c}{b}$ $V(bb-yy)$",
         reading=Eq(a, a - c * y ** 2 / b ** 2 + c / b * R),
         erratum=Erratum(
-            "transcription", "low", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
-            "The assumed equation is the curve of §227, x = a - cyy/bb ± (a/b)√(bb-yy); the transcription "
-            "has a for x and repeats the c/b of §227. Low: three letters differ.",
+            "misprint", "medium", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
+            "The assumed equation is the curve of §227, x = a - cyy/bb ± (a/b)√(bb-yy); the print repeats the "
+            "c/b and the + of §227, the fault booked there ('curve-c'), which runs alike through both places: the "
+            "print's. The a for x at the head of the line is a second, smaller fault booked with it, the scan's "
+            "(the curve's abscissa is x throughout).",
             corrected_reading=as_printed(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
                                                       a - c * y ** 2 / b ** 2 + a / b * R]))),
-                        objection="The same c/b as in §227 repeated here suggests the print had it; and 'a =' may be"
-                                  " a heading letter run into the equation.",
-                        answer="The assumed equation is §227's, whose right form Euler's working shows; the excerpt "
-                               "differs in three letters, so neither a single slip nor a single glyph explains it, "
-                               "and print and scan cannot be told apart: low, as booked."),
+                        same_as="euler-220-228/curve-c",
+                        objection="The line differs from the right one in three letters ('a =' for 'x =', c for a, "
+                                  "+ for ±), which no single slip explains; the scan, which confuses a and c in "
+                                  "these lines, may have made all of them.",
+                        answer="The c/b and the + are §227's, set alike at both places, which the scan does not do: "
+                               "the print's, as at 'curve-c' (medium there, for the scan's a/c confusion beside "
+                               "it). The 'a =' is the scan's and booked with it, as the stray prime of §241 is "
+                               "booked with the swap of μ and ν; misprint, medium (was the scan's, low)."),
         note=claim("the assumed equation (of §227)."))
 d.quote("c-limit", "§228",
         r"non permittit, vt capiatur $c > \frac{1}{2}a$, alias enim curua ultra rectam aa excurreret",

@@ -2,9 +2,10 @@
 import sympy as sp
 from sympy.core.evalf import prec_to_dps
 
-from symfloat import Derivation, Eq, Erratum, Holds, Iff
+from symfloat import Derivation, Eq, Erratum, Holds
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
+from symfloat.model.vocabulary import Compares, DecreasesWith, GrowsWith, Is
 
 y, s, m = sp.symbols("y s m", positive=True)
 a, b, c, n, k = sp.symbols("a b c n kappa", positive=True)
@@ -818,34 +819,19 @@ d.quote("kappa-above-1", "§236", r"posito enim $\kappa > 1$ tum curua in e et f
 quad_portions = sp.Matrix([sp.Subs(XA, (Ys, n, k), (-c * y / b, 1, 1)), sp.Subs(XB, (Ys, n, k), (-c * y / b, 1, 1))])
 ANGLE_E = sp.atan(sp.Derivative(quad_portions[0], y)) + sp.atan(-sp.Derivative(quad_portions[1], y))
 d.quote("kappa-1-acute", "§236", r"Quodsi autem sit $\kappa = 1$ anguli ad e et f erunt acuti",
-        reading=Holds(ANGLE_E < sp.pi / 2),
-        erratum=Erratum("claim", "low",
-                        r"\text{anguli ad e et f erunt obtusi, si } (a - c)(a + c) > b^2 "
-                        r"\text{ (omni figurae longae, } a > b, c = 0\text{)}",
-                        (r"For $\kappa = 1$ ($n = 1$) both portions are straight: $eA$ from $e = (a - c, b)$ to $A$, "
-                         "$eB$ from $e$ to $B = (2a, 0)$ ($Ac = a - c$, $Bc = a + c$, $ce = b$). The interior angle "
-                         r"at $e$ is $\arctan((a - c)/b) + \arctan((a + c)/b)$, which is less than a right angle "
-                         "exactly when $(a - c)(a + c) < b^2$: acute only for a figure broader than it is long. For "
-                         "every waterplane Euler considers, AB the longitudinal axis longer than EF (§241: $AB$ four "
-                         r"times $EF$), it is obtuse: the rhombus of this paragraph with $a = 4b$ has $152^\circ$ at "
-                         "$e$ and $f$. A claim of the author; low, since 'acutus' may mean a sharp corner (against "
-                         r"the cusps of $\kappa > 1$ and the smooth ends of $\kappa < 1$) rather than an angle below "
-                         r"$90^\circ$."),
-                        corrected_reading=Iff(ANGLE_E < sp.pi / 2, (a - c) * (a + c) < b ** 2),
-                        objection="'Anguli ad e et f' may be the angles each straight portion makes with the breadth"
-                                  " ef (or with AB), both acute for every quadrilateral; or 'acuti' may mean sharp "
-                                  "corners, between the cusps of κ > 1 and the smooth ends of κ < 1; either way the "
-                                  "print is right.",
-                        answer="The paragraph names one angle at e and one at f, the corners of the figure as in "
-                               "§215's quadrilateral, and that interior angle is obtuse for every figure longer than"
-                               " broad ((a − c)(a + c) > b²), a rhombus with §241's AB = 4EF included. The other "
-                               "two readings cannot be excluded from the words alone: low stands."),
-        note=claim("for κ = 1 the angles at e and f are acute; read as the interior angle at e, between the "
-                   "straight portions towards A and B (f is its mirror image), below a right angle."))
+        reading=Holds(sp.And(ANGLE_E > 0, ANGLE_E < sp.pi)),
+        note=claim("for κ = 1 the figure has corners ('anguli acuti', sharp angles) at e and f: the two straight "
+                   "portions towards A and B meet there at an interior angle above 0, the cusp of κ > 1, and below "
+                   "two right angles, the smooth end of κ < 1. Read in the sense the paragraph's division of the "
+                   "cases gives the word (cusps with tangents normal to AB for κ > 1, tangents parallel to AB for "
+                   "κ < 1); each portion also meets the breadth ef at an acute angle. Read as an angle below 90° "
+                   "the sentence would fail for every figure longer than broad ((a − c)(a + c) > b²: 152° for the "
+                   "rhombus with AB = 4EF), which Euler, who calls the case n = 1 the rhombus two sentences on, "
+                   "cannot have meant; the erratum once booked on that reading is withdrawn."))
 d.quote("kappa-1-quadrilateral", "§236", r"hocque casu continetur figura rectilinea quadrilatera quam §. 215. "
         r"considerauimus", reading=(quad_portions.applyfunc(lambda e: sp.Derivative(e, y, 2)), sp.zeros(2, 1)),
         note=claim("κ = 1 (with n = 1 and Y = −cy/b) gives the rectilinear quadrilateral of §215: both portions "
-                   "are straight (second derivative 0). The 'anguli acuti' at e and f before it are booked in "
+                   "are straight (second derivative 0). The 'anguli acuti' at e and f before it are read at "
                    "kappa-1-acute."))
 d.quote("kappa-below-1", "§236", r"At si ponatur $\kappa < 1$ tum curuae in e et f habebunt tangentes axi AB "
         r"parallelas", reading=(sp.Limit(1 / slope.subs({k: sp.Rational(1, 2), n: 2}), y, b, "-"), 0),
@@ -919,6 +905,11 @@ d.step("stability-AB", Eq(SAB, M * (Iw / V - OG)), "lemma", result=SAB,
        note="§201/§203: M(I/V − b) with b = OG, G above O")
 d.step("stability-EF", Eq(SEF, M * (Kw / V - OG)), "lemma", result=SEF,
        uses=(E192 + "stability-definition-EF-G-above", E192 + "metacentric-height-EF-G-above"))
+# the quantities §§238-240 name in words (symfloat/model/vocabulary.json), by the formulas that define them: the
+# stability about AB (G the height OG above O; a sentence on G below O puts -OG for OG), the moment I = EF²D/μ of
+# the waterplane about AB (a sentence on the axis EF puts AB for EF and ν for μ: the moment K = AB²D/ν)
+d.defines("stability", SAB)
+d.defines("moment", Iw)
 d.step("stability-AB-G-below", Eq(SABp, M * (Iw / V + OG)), "lemma", result=SABp,
        uses=(E192 + "stability-definition", E192 + "metacentric-height-G-below"))
 d.quote("stability-AB", "§239", r"$AB = M (\frac{EF^2 \cdot D}{\mu v} - OG)$",
@@ -963,6 +954,14 @@ d.quote("EF-exceeds-AB", "§241", r"$\frac{EF^2.D}{\nu v} > OG$ multo magis erit
         reading=(sp.Subs(AB ** 2 * Dw / (mu * V) - EF ** 2 * Dw / (nu * V), nu, mu), Dw * (AB ** 2 - EF ** 2) / (mu * V)),
         note=claim("if the quantity for AB exceeds OG, the one for EF does so much more, AB being much longer than "
                    "EF: at μ = ν (the numbers 'differ little') the excess is D(AB² − EF²)/(μV) > 0 (D' read as D)."))
+d.says("G-below-positive", "§239", "hocque casu nauis semper haberet stabilitatem affirmativam",
+       "stabilitatem", Compares(">", 0, at={OG: -OG}),
+       note=claim("with G below O (−OG written +OG) the stability about AB is positive for every ship: "
+                  "M(EF²D/(μV) + OG) > 0."))
+d.says("wider-waterplane-more-stable", "§239", "Ratione autem sectionis aquae stabilitas augebitur quo amplior ea "
+       "accipiatur", "stabilitas", GrowsWith(Dw, EF),
+       note=claim("the stability about AB grows with the waterplane: M(EF²D/(μV) − OG) grows with its half area D "
+                  "and with its breadth EF, the 'duplex ratio' the sentence goes on to give."))
 d.quote("deeper-G-more-stable", "§239",
         r"Stabilitas porro hoc casu eo erit maior, quo profundius centrum grauitatis G infra centrum magnitudinis O cadet.",
         reading=(sp.Derivative(SABp, OG), M),
@@ -1030,17 +1029,19 @@ d.step("wedge", Eq(Vwe, CD * Dw), "definition", uses=("wedge-section",), result=
 d.quote("V-pyramid", "§243", r"$V > \frac{2}{3}D.CD$", reading=(Vpy, sp.Rational(2, 3) * Dw * CD),
         note=claim("V exceeds the pyramid over the waterplane 2D with height CD, (2/3)D·CD."))
 d.quote("V-prism", "§243", r"$V < \frac{2}{3}D.CD$", reading=(Vpr, sp.Rational(2, 3) * Dw * CD),
-        erratum=Erratum("transcription", "low", r"V < 2D.CD",
+        erratum=Erratum("transcription", "medium", r"V < 2D.CD",
                         "The prism of base 2D and height CD has the volume 2D·CD, three times the pyramid; the "
                         "print repeats the pyramid's 2/3, and V ≈ D·CD of the next sentence lies between the "
                         "bounds only with 2D·CD. A copied fraction of the transcription or of the composing "
-                        "stick: low.", corrected_reading=(Vpr, 2 * Dw * CD),
+                        "stick: the correction is proved and the line reads without doubt, the cause is open: "
+                        "medium (was low).", corrected_reading=(Vpr, 2 * Dw * CD),
                         objection="The repeated 2/3 may be the print's: a compositor's eye skipping to the line "
                                   "above, or Euler's own slip, since nothing later is computed from this bound.",
                         answer="The prism on the base 2D with the height CD has 2D·CD, and V = D·CD of the next "
                                "sentence lies between the bounds only then; the correction is certain. A fraction "
                                "copied from the line above is as likely the compositor's as the transcription's, so "
-                               "the kind cannot be told: low stands."),
+                               "the cause cannot be told; the printed line itself is read without doubt, which makes "
+                               "it medium, not low (low is for a reading in doubt)."),
         note=claim("V is less than the prism of the same base and height."))
 d.quote("V-wedge", "§243", r"accipi posse $V = D.CD$", reading=(Vwe, Dw * CD),
         note=claim("the solid of straight lines from the waterplane's rim normal to the keel has V = D·CD."))
@@ -1091,25 +1092,26 @@ d.quote("waterplane-area-grows", "§239", r"tum enim non solum area eius $z D$ e
                         answer="The same 'z D' for the area 2D (§212, §237), the digit 2 read as z: high, as at "
                                "'waterplane-area'."),
         note=claim("the waterplane's area 2D grows with the waterplane (read with the rectangle of §213)."))
-d.quote("stability-EF-named", "§239", r"atque momentum respectu axis latitudinalis",
-        reading=(Kw, M * (Kw / V - OG)),
-        erratum=Erratum("misprint", "high", r"\text{atque stabilitas respectu axis latitudinalis}",
-                        "The sentence gives two quantities in parallel, 'stabilitas nauis respectu axis longitudinalis "
-                        "AB = M(EF²D/(μV) − OG) atque momentum respectu axis latitudinalis = M(AB²D/(νV) − OG)'; the "
-                        "second, with the factor M and the term − OG, is the stability about EF (§201, §203), not the "
-                        "moment: the moment of the waterplane about EF is K = AB²D/ν (§238, the sentence before). "
-                        "Read as printed the moment K would equal M(K/V − OG), which it does not (K = 1, M = 2, "
-                        "V = 1, OG = 1/4: K = 1, M(K/V − OG) = 3/2). A scan does not turn 'stabilitas' into 'momentum': "
-                        "a word of the print.",
-                        corrected_reading=(SEF, M * (Kw / V - OG)),
-                        objection="'Momentum' may be meant in the older sense of the moment of the righting forces "
-                                  "(§194: 'momentum virium … quae ad restituendam nauem tendunt'), which is what "
-                                  "the stability measures.",
-                        answer="From §203 on Euler keeps 'momentum' for the waterplane's ∫y²dA (I, K, 'momenta "
-                               "earum figurarum') and 'stabilitas' for M(·/V ± b); the parallel clause of the same "
-                               "sentence and §241 ('stabilitas respectu axis latitudinalis') name this expression "
-                               "the stability."),
-        note=claim("the second quantity of the sentence, M(AB²D/(νV) − OG), is the stability about EF."))
+d.says("stability-EF-named", "§239", r"atque momentum respectu axis latitudinalis", "momentum",
+       Is(M * (Kw / V - OG), at={EF: AB, mu: nu}),
+       erratum=Erratum("misprint", "high", r"\text{atque stabilitas respectu axis latitudinalis}",
+                       "The sentence gives two quantities in parallel, 'stabilitas nauis respectu axis longitudinalis "
+                       "AB = M(EF²D/(μV) − OG) atque momentum respectu axis latitudinalis = M(AB²D/(νV) − OG)'; the "
+                       "second, with the factor M and the term − OG, is the stability about EF (§201, §203), not the "
+                       "moment: the moment of the waterplane about EF is K = AB²D/ν (§238, the sentence before). "
+                       "Read as printed the moment K would equal M(K/V − OG), which it does not (K = 1, M = 2, "
+                       "V = 1, OG = 1/4: K = 1, M(K/V − OG) = 3/2). A scan does not turn 'stabilitas' into 'momentum': "
+                       "a word of the print.",
+                       corrected_reading=d.reads("stabilitas", Is(M * (Kw / V - OG), at={EF: AB, mu: nu})),
+                       objection="'Momentum' may be meant in the older sense of the moment of the righting forces "
+                                 "(§194: 'momentum virium … quae ad restituendam nauem tendunt'), which is what "
+                                 "the stability measures.",
+                       answer="From §203 on Euler keeps 'momentum' for the waterplane's ∫y²dA (I, K, 'momenta "
+                              "earum figurarum') and 'stabilitas' for M(·/V ± b); the parallel clause of the same "
+                              "sentence and §241 ('stabilitas respectu axis latitudinalis') name this expression "
+                              "the stability."),
+       note=claim("the second quantity of the sentence, M(AB²D/(νV) − OG), is the stability about EF (read "
+                  "about the axis EF: AB for EF and ν for μ, so the moment K = AB²D/ν for I = EF²D/μ)."))
 MU_AS_V = "euler-229-243/stability-CD"
 for excess_name, locator, excess_excerpt in (
         ("excess-maximal", "§242", r"excessus quantitatis $\frac{EF^2.D}{vv}$ supra OG"),
@@ -1166,6 +1168,19 @@ d.step("ballast-G", (yGs, fb * 0 + (1 - fb) * sp.Integral(s, (s, 0, Hh)) / Hh, (
                         "height H; heights above the keel")
 d.step("box-B", (yBs, sp.Integral(s, (s, 0, Tq)) / Tq, Tq / 2), "integration", result=yBs,
        note="the centre of buoyancy of the wall-sided hull at the draught T")
+d.defines("centre of gravity", yGs)
+d.says("even-load-G-at-B", "§240", "si enim tota nauis moles per carinam aequabiliter distribuatur, tum centrum "
+       "grauitatis in ipsum centrum magnitudinis caderet", "centrum grauitatis",
+       Is(yBs, at={fb: 0, Hh: Tq}),
+       note=claim("a ship whose whole mass is spread evenly through the carina, the immersed part (§238: 'carinam "
+                  "nauis seu partem aquae immersam'), has its G at the centre of buoyancy: no ballast (f = 0) and "
+                  "the height H the draught T give y_G = T/2 = y_B."))
+hf = sp.Symbol("h_f", positive=True)             # §240: the height of the hull above the water, H - T
+d.says("freeboard-raises-G", "§240", "spicuum est ob partem extra aquam eminentem centrum gravitatis altius esse "
+       "positum", "centrum gravitatis", Compares(">", yBs, at={fb: 0, Hh: Tq + hf}, domain={hf: (sp.Rational(1, 10), 2)}),
+       note=claim("the part of the hull above the water raises G above the centre of buoyancy: with the mass spread "
+                  "evenly over the height H = T + h (h > 0 above the water) and no ballast, y_G = (T + h)/2 > T/2 = "
+                  "y_B."))
 d.quote("ballast-lowers-G", "§240", r"Quamuis enim maxime ponderosis oneribus in imum carinae collocandis centrum "
         r"gravitatis deorsum et quidem infra centrum magnitudinis deduci posset",
         reading=(yGs - yBs, ((1 - fb) * Hh - Tq) / 2),

@@ -18,8 +18,8 @@ definition, e.g. the square's moment for the generic moment):
 * :class:`IndependentOf` -- q does not change with b: ``dq/db = 0``, an identity;
 * :class:`DependsOn` -- q changes with a: ``dq/da != 0`` on the domain (a quantity that depends on a
   only away from an extremum is stated with :class:`Compares` on a range instead);
-* :class:`GrowsWith`, :class:`DecreasesWith` -- q grows (decreases) with a on a stated domain: the sign
-  of the derivative, ``Holds(dq/da > 0)`` (``< 0``) at every point of the domain, decided by the relation
+* :class:`GrowsWith`, :class:`DecreasesWith` -- q grows (decreases) with a (with each of several symbols:
+  Euler's "eo maior, quo magis ...") on a stated domain: the sign of each derivative, ``Holds(dq/da > 0)`` (``< 0``) at every point of the domain, decided by the relation
   check (a proof where the signs or one variable decide, else exact sampling; a point where the sign is
   wrong refutes).  ``per`` reads the part of q the sentence speaks of, q divided by a factor that does not
   vanish on the domain: Scheeffer IV's "das Drehungsmoment, dessen negativer Faktor (absolut genommen) mit
@@ -184,27 +184,30 @@ class DependsOn:
 
 @dataclass(frozen=True, init=False)
 class GrowsWith:
-    """The named quantity (divided by *per*) grows with *symbol* on the domain: ``d(q/per)/da > 0`` there."""
+    """The named quantity (divided by *per*) grows with each of *symbols* on the domain: ``d(q/per)/da > 0``
+    there for each."""
 
-    symbol: object
+    symbols: tuple
     per: object = 1
     at: tuple = ()
     domain: tuple = ()
     sense = ">"
 
-    def __init__(self, symbol, per=1, at=None, domain=None):
-        object.__setattr__(self, "symbol", symbol)
+    def __init__(self, *symbols, per=1, at=None, domain=None):
+        object.__setattr__(self, "symbols", symbols)
         object.__setattr__(self, "per", sp.sympify(per))
         object.__setattr__(self, "at", tuple((at or {}).items()))
         object.__setattr__(self, "domain", tuple((domain or {}).items()))
 
     def reading(self, q, derived):
-        rate = sp.Derivative(_at(q / self.per, dict(self.at)), self.symbol)
-        return Holds((sp.Gt if self.sense == ">" else sp.Lt)(rate, 0, evaluate=False), dict(self.domain))
+        q = _at(q / self.per, dict(self.at))
+        rel = sp.Gt if self.sense == ">" else sp.Lt
+        return Holds(sp.And(*(rel(sp.Derivative(q, x), 0, evaluate=False) for x in self.symbols)), dict(self.domain))
 
 
 class DecreasesWith(GrowsWith):
-    """The named quantity (divided by *per*) decreases with *symbol* on the domain: ``d(q/per)/da < 0`` there."""
+    """The named quantity (divided by *per*) decreases with each of *symbols* on the domain: ``d(q/per)/da < 0``
+    there for each."""
 
     sense = "<"
 
