@@ -271,3 +271,29 @@ def test_a_singularity_it_cannot_remove_stays_undecided():
     y = sp.Symbol("y", positive=True)
     # log(1 - y) is unbounded at y = 1 but is no power: no substitution, no finite enclosure, no guess
     assert not integral(sp.log(1 - y), y, 0, 1, 64).is_finite()
+
+
+# ---- Min and Max: a reading clipped to bounds ------------------------------------------------------------------
+
+def test_min_and_max_are_enclosed_and_in_an_integrand_only_where_one_side_is_proven_the_extreme():
+    # min(max(√2, 6), 12) = 6 exactly; max(1/3, π/10) = 1/3 (π/10 = 0.314...)
+    assert ball(sp.Min(sp.Max(sp.sqrt(2), 6), 12), 128) == 6
+    with working_precision(128):
+        assert ball(sp.Max(sp.Rational(1, 3), sp.pi / 10), 128).overlaps(arb(1) / 3)
+        # ∫₀¹ min(x, 1 − x) dx = 1/4: the kink at 1/2 is bisected around, each piece one side
+        tent = integral(sp.Min(x, 1 - x), x, 0, 1, 128)
+        assert tent.overlaps(arb(1) / 4) and tent.rad() < arb(2) ** -60
+
+
+def test_euler_mu_bounds_clipped_by_min_and_max_is_decided_and_a_mutated_bound_refuted():
+    # §237: μ clipped to [6, 12] is μ on the admissible family; the member n = 1, κ = 1 (the rhombus: half area
+    # ab, moment of the half about AB ab³/6) has μ_AB = (2b)² ab / (2 ab³/6) = 12 exactly, so the bound 12
+    # changed to 11.9 clips it: refuted by the ball, not undecided
+    from symfloat.registry import load
+    derivation, _ = load("euler-229-243")
+    witness = next(w for w in derivation.witnesses if w.name == "mu-bounds")
+    clipped, mu = next(p for p in derivation.printed if p.name == "mu-bounds").reading
+    assert record_decision(_certified(witness.run({"mu-bounds": (clipped, mu)})["mu-bounds"])) == "agrees"
+    lowered = clipped.xreplace({sp.Integer(12): sp.Rational(119, 10)})
+    out = witness.run({"mu-bounds": (lowered, mu)})["mu-bounds"]
+    assert record_decision(_certified(out)) == "refuted" and not out.agrees and not out.undecided

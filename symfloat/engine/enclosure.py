@@ -7,14 +7,15 @@ the exact value.  The nodes: ``Integer``, ``Rational`` (exact numerator over exa
 print's own rounding is the allowance its witness gives it, not part of the enclosure), ``pi``, ``E``,
 ``I``, ``Add``, ``Mul``, ``Pow`` (any exponent; an integer power is exact up to rounding, a half power a
 square root, another the principal branch ``exp(t log b)``), ``exp``, ``log``, ``sin``, ``cos``, ``tan``,
-``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``, ``tanh``, ``gamma`` and ``Abs``; a function of a
+``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``, ``tanh``, ``gamma``, ``Abs``, ``Min`` and ``Max`` (of real
+arguments, :func:`_extreme`); a function of a
 derivation (Euler's ``Ib``, ``IY``) by the closed form its ``rewrite(gamma)`` gives, which the derivation
 proves in a step.  Any other node raises :class:`Unsupported` naming it.
 
 :func:`integral` encloses ``∫_lo^hi f(v) dv`` by ``acb.integral`` (Petras' adaptive Gauss–Legendre with
 rigorous error bounds, FLINT's ``acb_calc_integrate``).  The integrand must be holomorphic on a
 neighbourhood of the path: each node with a branch cut (``sqrt``, ``log``, a fractional power, ``Abs``,
-``asin``, ``acos``, ``atan``) says so by returning a non-finite ball where the ball it is given touches the
+``asin``, ``acos``, ``atan``, ``Min``, ``Max``) says so by returning a non-finite ball where the ball it is given touches the
 cut, and the integrator then bisects or, at its limits, returns a non-finite ball: an enclosure too wide to
 decide, never a guess.  A piecewise integrand is not on the whitelist: split it at its breakpoints first.
 An integrand with a branch point at an end (a factor ``base**(p/q)``, ``p/q > -1`` not an integer, ``base``
@@ -199,12 +200,37 @@ def _compile(e, variables):
             return lambda v, a: base(v, a).rsqrt(analytic=a)
         t = _compile(power, variables)
         return lambda v, a: base(v, a).pow(t(v, a), analytic=a)
+    if isinstance(e, (sp.Min, sp.Max)):
+        return _extreme(e, [_compile(t, variables) for t in e.args])
     if e.func in _UNARY and len(e.args) == 1:
         f, arg = _UNARY[e.func], _compile(e.args[0], variables)
         return lambda v, a: f(arg(v, a), a)
     if isinstance(e, sp.Function) and (closed := e.rewrite(sp.gamma)) != e:
         return _compile(closed, variables)
     raise Unsupported(f"no enclosure for a {type(e).__name__} node ({e})")
+
+
+def _extreme(e, parts):
+    """``Min`` or ``Max`` of the compiled *parts*: of real values, ``arb.min`` / ``arb.max`` (the ball of the
+    least or the greatest); in an integrand (``analytic``) the part whose real part is proven below (``Min``)
+    or above (``Max``) every other one over the whole ball, a holomorphic function that equals the extreme on
+    the real points there; where no part is, the extreme may switch inside the ball and is not holomorphic:
+    a non-finite ball."""
+    lesser = isinstance(e, sp.Min)
+
+    def extreme(v, a):
+        values = [p(v, a) for p in parts]
+        if a:
+            for k, z in enumerate(values):
+                if all((z.real < w.real) if lesser else (z.real > w.real) for j, w in enumerate(values) if j != k):
+                    return z
+            return acb(arb.nan(), arb.nan())
+        reals = [_real(z, e) for z in values]
+        out = reals[0]
+        for x in reals[1:]:
+            out = out.min(x) if lesser else out.max(x)
+        return acb(out)
+    return extreme
 
 
 def _real(z: acb, what) -> arb:
