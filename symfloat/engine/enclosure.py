@@ -35,6 +35,7 @@ True
 """
 from __future__ import annotations
 
+import functools
 import math
 from contextlib import contextmanager
 
@@ -302,31 +303,56 @@ def integral(expr, var, lo, hi, prec: int, at: dict | None = None) -> arb:
         return _real(value, f"the integral of {expr}")
 
 
-def _singular_factors(expr, var, end):
-    """The factors ``base**e`` of *expr* (a product) with ``e > -1`` rational, not an integer, and ``base`` zero
-    at *end*: a branch point there (an integrable singularity where ``e < 0``), where ``acb.integral`` cannot
-    bound the integrand or needs many evaluations to."""
-    return [f for f in sp.Mul.make_args(expr)
-            if isinstance(f, sp.Pow) and f.exp.is_Rational and not f.exp.is_Integer and f.exp > -1
-            and f.base.has(var) and sp.simplify(f.base.subs(var, end)) == 0]
+def _branch_points(expr, var, ends) -> frozenset:
+    """The pairs ``(factor, end)``: each power ``base**e`` in *expr* (at any depth) with ``e > -1`` rational, not
+    an integer, and ``base`` zero at the *end* (one of *ends*): a branch point there (an integrable singularity
+    where ``e < 0``), where ``acb.integral`` cannot bound the integrand or needs many evaluations to.  Collected
+    once per integrand, each base tested at each end once (:func:`_vanishes`)."""
+    return frozenset((f, end) for f in expr.atoms(sp.Pow)
+                     if f.exp.is_Rational and not f.exp.is_Integer and f.exp > -1 and f.base.has(var)
+                     for end in ends if _vanishes(f.base, var, end))
 
 
-def _desingularised(expr, var, lo, hi, rooted=False):
+@functools.lru_cache(maxsize=4096)
+def _vanishes(base, var, end) -> bool:
+    """Whether *base* is zero at ``var = end`` (``sp.simplify`` decides; the same base is met at every
+    precision the witness tries)."""
+    return sp.simplify(base.subs(var, end)) == 0
+
+
+def _singular_factors(expr, var, end, branch):
+    """The factors of *expr* (a product) that are branch points at *end* (in *branch*, :func:`_branch_points`)."""
+    return [f for f in sp.Mul.make_args(expr) if (f, end) in branch]
+
+
+def _desingularised(expr, var, lo, hi, rooted=False, known=None):
     """``∫_lo^hi expr dvar`` as pieces ``(integrand, t, a, b)`` without a branch point at an end, or ``None``
     where *expr* has none.  At an end e with one factor ``base**(p/q)`` (``p/q > -1`` not an integer,
     ``base = ±(var - e) h`` with ``h(e) != 0``) the substitution ``var = e ∓ t**q`` turns the factor into
     ``t**p h**(p/q)`` and ``dvar`` into ``q t**(q-1) dt``: the integrand becomes ``t**(p+q-1)`` (a power
     ``>= 0``) times a function holomorphic at ``t = 0``.  Branch points at both ends split the interval at
-    its midpoint; a sum is integrated term by term."""
-    nested = [x for x in expr.atoms(sp.Pow) for e in (lo, hi) if _singular_factors(x, var, e)]
-    if nested and not any(_singular_factors(t, var, e) for t in sp.Add.make_args(expr) for e in (lo, hi)):
-        expr = sp.expand(expr)                         # y²(1 − (1 − y)^(1/4)): the branch factor made a factor
+    its midpoint; a sum is integrated term by term.  *known*: the :func:`_branch_points` at *lo* and *hi* of a
+    sum that *expr* is a term of (its own are among them)."""
+    if known is None:
+        branch = _branch_points(expr, var, (lo, hi))
+    else:
+        powers = expr.atoms(sp.Pow)
+        branch = frozenset(pair for pair in known if pair[0] in powers)
+    if not branch:
+        return None
+
+    def singular_at(term, e):
+        return bool(_singular_factors(term, var, e, branch))
+    if not any(singular_at(t, e) for t in sp.Add.make_args(expr) for e in (lo, hi)):
+        expanded = sp.expand(expr)                     # y²(1 − (1 − y)^(1/4)): the branch factor made a factor
+        if expanded != expr:
+            expr, branch = expanded, _branch_points(expanded, var, (lo, hi))
     if isinstance(expr, sp.Add):                       # term by term, where a term has a branch point at an end
-        if not any(_singular_factors(term, var, e) for term in expr.args for e in (lo, hi)):
+        if not any(singular_at(term, e) for term in expr.args for e in (lo, hi)):
             return None
         return [piece for term in expr.args
-                for piece in (_desingularised(term, var, lo, hi, rooted) or [(term, var, lo, hi)])]
-    ends = [e for e in (lo, hi) if _singular_factors(expr, var, e)]
+                for piece in (_desingularised(term, var, lo, hi, rooted, branch) or [(term, var, lo, hi)])]
+    ends = [e for e in (lo, hi) if singular_at(expr, e)]
     if not ends:
         return None
     if len(ends) == 2:
@@ -334,7 +360,7 @@ def _desingularised(expr, var, lo, hi, rooted=False):
         return [*(_desingularised(expr, var, lo, mid, rooted) or [(expr, var, lo, mid)]),
                 *(_desingularised(expr, var, mid, hi, rooted) or [(expr, var, mid, hi)])]
     end, other = (lo, hi) if ends[0] == lo else (hi, lo)
-    factors = _singular_factors(expr, var, end)
+    factors = _singular_factors(expr, var, end, branch)
     if len(factors) != 1:
         return None
     (factor,) = factors
