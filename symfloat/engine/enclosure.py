@@ -7,8 +7,8 @@ the exact value.  The nodes: ``Integer``, ``Rational`` (exact numerator over exa
 print's own rounding is the allowance its witness gives it, not part of the enclosure), ``pi``, ``E``,
 ``I``, ``Add``, ``Mul``, ``Pow`` (any exponent; an integer power is exact up to rounding, a half power a
 square root, another the principal branch ``exp(t log b)``), ``exp``, ``log``, ``sin``, ``cos``, ``tan``,
-``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``, ``tanh``, ``gamma``, ``Abs``, ``Min`` and ``Max`` (of real
-arguments, :func:`_extreme`); a function of a
+``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``, ``tanh``, ``gamma``, ``Abs``, ``sign`` (decided where the
+ball excludes 0), ``Min`` and ``Max`` (of real arguments, :func:`_extreme`); a function of a
 derivation (Euler's ``Ib``, ``IY``) by the closed form its ``rewrite(gamma)`` gives, which the derivation
 proves in a step.  Any other node raises :class:`Unsupported` naming it.
 
@@ -135,7 +135,17 @@ _UNARY = {
     sp.atan: _guarded(acb.atan, _on_imag_cut),
     sp.Abs: lambda z, a: z.real_abs(analytic=True) if a else acb(abs(z)),
     sp.gamma: lambda z, a: z.gamma(),
+    sp.sign: lambda z, a: _sign(z),
 }
+
+
+def _sign(z):
+    """The sign of a real ball: 1, -1, or 0 for an exact 0; non-finite where the ball holds 0 and more (a
+    constant on a ball that excludes 0, so holomorphic there)."""
+    x = z.real
+    if x > 0 or x < 0:
+        return acb(1 if x > 0 else -1)
+    return acb(0) if x == 0 and z.imag == 0 else acb(arb.nan(), arb.nan())
 
 
 def _constant(e):
