@@ -55,6 +55,11 @@ GUARD_BITS = 32        # the state is computed with these bits more than its dra
 NEWTON_STEPS = 12      # from float64 (about 50 bits) to 1024 bits takes 5 quadratic steps; the rest is margin
 
 
+class Unrealisable(ValueError):
+    """An assignment of sides to the vertices that no plane makes (a face cut twice, a water line in two
+    pieces): left out of the join (:func:`_assignments`)."""
+
+
 class Ambiguous(ValueError):
     """The water plane may pass through a vertex of the body within the enclosure (or a bracket's signs are not
     proven): no enclosure at this precision."""
@@ -162,6 +167,8 @@ def clipped(body, w, tau, side):
             if side[i] != side[j]:
                 key = cross(i, j)
                 out.append(crossing[key])
+                if (exit_ if side[i] < 0 else entry) is not None:
+                    raise Unrealisable("a plane meets a convex face's boundary twice at most")
                 if side[i] < 0:
                     exit_ = key
                 else:
@@ -173,13 +180,13 @@ def clipped(body, w, tau, side):
     cap = []
     if cap_next:
         start = key = next(iter(cap_next))
-        while True:
+        while len(cap) <= len(cap_next):
             cap.append(crossing[key])
-            key = cap_next[key]
+            key = cap_next.get(key)
             if key == start:
                 break
-        if len(cap) != len(cap_next):
-            raise ValueError("the water line of a convex body is one polygon")
+        if key != start or len(cap) != len(cap_next):
+            raise Unrealisable("the water line of a convex body is one polygon")
     return faces, cap
 
 
@@ -251,7 +258,7 @@ def _draught(body, w, norm, s, whole, c, bits):
     tau = arb(tau.mid())
     step = arb(2) ** (4 - bits) * size
     for _ in range(NEWTON_STEPS):
-        (volume, _), cap = _volume_below(body, w, tau, c, _assignments(body, w, tau)[0])
+        (volume, _), cap = _realised(lambda side: _volume_below(body, w, tau, c, side), _assignments(body, w, tau))[0]
         area = _area(cap, w) / norm                      # dV/dtau = A / |w|
         nxt = arb((tau - (volume - target) / (area / norm)).mid())
         done = (nxt - tau).abs_upper() < step / 4
@@ -267,7 +274,20 @@ def _draught(body, w, norm, s, whole, c, bits):
 
 def _volume_at(body, w, tau, c):
     """The volume below ``w . p = tau``, joined over the assignments of the vertices on the plane."""
-    return _joined([_volume_below(body, w, tau, c, side)[0][0] for side in _assignments(body, w, tau)])
+    return _joined(_realised(lambda side: _volume_below(body, w, tau, c, side)[0][0], _assignments(body, w, tau)))
+
+
+def _realised(f, assignments):
+    """``f(side)`` for each assignment that a plane can make (:class:`Unrealisable` ones left out)."""
+    out = []
+    for side in assignments:
+        try:
+            out.append(f(side))
+        except Unrealisable:
+            continue
+    if not out:
+        raise Ambiguous("no assignment of the vertices on the plane is realised by a plane")
+    return out
 
 
 def _root_of_square_sum(x):
@@ -300,7 +320,7 @@ def floating_state(body, up, s, bits) -> BallState:
         whole, moment = _volume_moment(faces, c)
         G = tuple(c[k] + moment[k] / whole for k in range(3)) if body.G is None else tuple(body.G)
         tau = _draught(body, w, norm, s, whole, c, bits)
-        states = [_state(body, w, norm, tau, side, c, G, points) for side in _assignments(body, w, tau)]
+        states = _realised(lambda side: _state(body, w, norm, tau, side, c, G, points), _assignments(body, w, tau))
         names = [f.name for f in fields(BallState)]
         return BallState(**{name: _joined([getattr(st, name) for st in states]) if name not in ("vertices", "exact")
                             else getattr(states[0], name) for name in names})
@@ -316,7 +336,10 @@ def _state(body, w, norm, tau, side, c, G, points):
     o = tuple(t * x for x in u)
     ring2 = [(_dot([p[k] - o[k] for k in range(3)], e1), _dot([p[k] - o[k] for k in range(3)], e2))
              for p in cap]
-    area, (cx, cy), J = _polygon_moments(ring2, arb(0))
+    area, centre, J = _polygon_moments(ring2, arb(0))
+    if J is None:
+        raise Ambiguous("the waterplane is degenerate (fewer than three corners, or no area)")
+    cx, cy = centre
     centroid = tuple(o[k] + cx * e1[k] + cy * e2[k] for k in range(3))
     mean = (J[0][0] + J[1][1]) / 2
     half = (J[0][0] - J[1][1]) / 2
