@@ -485,6 +485,8 @@ def enclosed_values(witness, case, bits):
     enclosure that cannot be had at *bits* raises :class:`~symfloat.engine.enclosure.Unsupported` (undecided)."""
     from .floating_witness import MEASURED
     body = witness.body if witness.body is not None else case.data["body"]
+    if not _has_method(witness, body, case):
+        return None
     single = isinstance(witness.quantity, (str, sp.Expr))
     items = (witness.quantity,) if single else tuple(witness.quantity)
     params = dict(case.params)
@@ -501,6 +503,38 @@ def enclosed_values(witness, case, bits):
     if values is None:
         return None
     return values[0] if single else values
+
+
+def _readable(quantity) -> bool:
+    """Whether a quantity (a name, or an expression in :data:`MEASURED`) is read off a :class:`BallState`."""
+    from .floating_witness import MEASURED
+    names = {quantity} if isinstance(quantity, str) else {n for n, s in MEASURED.items() if s in quantity.free_symbols}
+    return names <= set(FIELDS) | set(EXTREMES)
+
+
+def _has_method(witness, body, case) -> bool:
+    """Whether the witness has a ball method at *case*, judged before any work: no limit, series or tilt from a
+    reference, a box or prism whose dimensions the case fixes, each root an expression, an ``At`` or a ``Root``
+    without nested roots, each quantity read off the state (:func:`_readable`)."""
+    from .floating_witness import MEASURED, At, Body, Loaded, Marked, Root
+    if witness.limit is not None or witness.reference is not None or getattr(witness, "series", None) is not None:
+        return False
+    if type(body) not in (Body, Loaded, Marked) or body.kind not in ("box", "prism"):
+        return False
+    dims = body.dims if body.kind == "box" else (*(c for p in body.dims[0] for c in p), body.dims[1])
+    if any(sp.sympify(x).free_symbols - set(case.params) for x in dims):
+        return False
+    for _, root in getattr(witness, "roots", ()):
+        if isinstance(root, (Root, At)):
+            if (isinstance(root, Root) and root.roots) or not _readable(root.quantity):
+                return False
+            if isinstance(root, Root) and not all(_readable(g) for g in root.guard):
+                return False
+        elif not isinstance(root, (sp.Basic, int, Fraction)):
+            return False
+    items = (witness.quantity,) if isinstance(witness.quantity, (str, sp.Expr)) else tuple(witness.quantity)
+    measured = [q for q in items if isinstance(q, str) or q.free_symbols & set(MEASURED.values())]
+    return all(_readable(q) for q in measured)
 
 
 ROOT_BRACKETS = (2.0 ** -30, 2.0 ** -20)   # the float64 root's brackets, relative to 1 + |root|, tried in turn
@@ -548,7 +582,7 @@ def _root_balls(witness, case, body, bits):
         try:
             for share in ROOT_BRACKETS:
                 reach = share * (1 + abs(centre))
-                value = sign_change_root(f, centre - reach, centre + reach, bits)
+                value = _secant_root(f, centre - reach, centre + reach, bits)
                 if value.is_finite():
                     break
             for item in root.guard:
@@ -564,6 +598,44 @@ def _root_balls(witness, case, body, bits):
             raise Ambiguous(f"no proven sign change of {root.quantity} about the float64 root {root.variable}")
         extra[symbol] = value
     return extra
+
+
+def _secant_root(f, lo, hi, bits):
+    """A root of *f* in ``[lo, hi]`` (floats whose values of *f* are balls of proven opposite signs) as a ball
+    about ``2^-bits (1 + |root|)`` wide: secant steps on the balls' midpoints at exact dyadic points, then a
+    bracket about the last one whose ends' signs are proven opposite (the intermediate value theorem), widened
+    by 2^8 at a time up to ``2^-(bits/2)``; where none is proven, bisection on ``[lo, hi]``
+    (:func:`~symfloat.engine.enclosure.sign_change_root`); non-finite where the signs at *lo*, *hi* are not
+    proven opposite."""
+    with working_precision(bits + GUARD_BITS):
+        a, b = arb(lo), arb(hi)
+        fa, fb = f(a), f(b)
+        if not ((fa < 0 and fb > 0) or (fa > 0 and fb < 0)):
+            return arb.nan()
+        negative_at_lo = fa < 0
+        x, fx, y, fy = a, fa.mid(), b, fb.mid()
+        for _ in range(SECANT_STEPS):
+            if fy == fx:
+                break
+            z = arb((y - fy * (y - x) / (fy - fx)).mid())
+            if not (a < z < b):
+                z = (a + b) / 2
+            done = (z - y).abs_upper() < arb(2) ** -bits * (1 + abs(z))
+            x, fx, y, fy = y, fy, z, f(z).mid()
+            if done:
+                break
+        step = arb(2) ** (4 - bits) * (1 + abs(y))
+        for widen in range(0, bits // 2 - 8, 8):
+            left, right = y - step * 2 ** widen, y + step * 2 ** widen
+            if not (a <= left and right <= b):
+                break
+            fl, fr = f(left), f(right)
+            if (fl < 0 if negative_at_lo else fl > 0) and (fr > 0 if negative_at_lo else fr < 0):
+                return left.union(right)
+    return sign_change_root(f, lo, hi, bits)
+
+
+SECANT_STEPS = 40
 
 
 class _NoMethod(Exception):
