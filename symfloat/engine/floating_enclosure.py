@@ -429,8 +429,9 @@ def ball_body(body, params):
 
 
 def closed_ball(expr, params, extra, bits):
-    """*expr* at the exact *params* and the balls *extra* (symbol -> arb), as a ball at *bits* bits."""
-    e = sp.sympify(expr).xreplace(params)
+    """*expr* at the exact *params* and the balls *extra* (symbol -> arb: a root, which overrides the case's
+    value of its symbol), as a ball at *bits* bits."""
+    e = sp.sympify(expr).xreplace({k: v for k, v in params.items() if k not in extra})
     return ball(e, bits, {s: extra[s] for s in e.free_symbols if s in extra})
 
 
@@ -522,8 +523,9 @@ def _has_method(witness, body, case) -> bool:
     if type(body) not in (Body, Loaded, Marked) or body.kind not in ("box", "prism"):
         return False
     dims = body.dims if body.kind == "box" else (*(c for p in body.dims[0] for c in p), body.dims[1])
-    if any(sp.sympify(x).free_symbols - set(case.params) for x in dims):
-        return False
+    roots = {symbol for symbol, _ in getattr(witness, "roots", ())}
+    if any(sp.sympify(x).free_symbols - (set(case.params) - roots) for x in dims):
+        return False                                            # a dimension a root sets: no exact vertices
     for _, root in getattr(witness, "roots", ()):
         if isinstance(root, (Root, At)):
             if (isinstance(root, Root) and root.roots) or not _readable(root.quantity):
