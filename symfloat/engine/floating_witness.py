@@ -709,13 +709,14 @@ class Combined(MeasuredWitness):
 
     def enclose(self, case, bits):
         """The parts' enclosures combined in ball arithmetic, or ``None`` where a part has none."""
-        from .enclosure import ball, exact
+        from .enclosure import ball, exact, working_precision
         got = {}
         for i, part in enumerate(self.parts):
             value = part.enclose(case, bits)
             if value is None or isinstance(value, tuple):
                 return None
-            got[PART[i]] = value if isinstance(value, arb) else exact(Fraction(value))
+            with working_precision(bits):                   # an exact part (a hull's Fraction) rounded at bits
+                got[PART[i]] = value if isinstance(value, arb) else exact(Fraction(value))
         out = tuple(ball(sp.sympify(e).xreplace(case.params), bits, got) for e in self.values)
         return out[0] if len(out) == 1 else out
 
