@@ -455,7 +455,7 @@ def quantity_balls(witness, params, extra, body, bits):
     if exact_body.G is not None:
         exact_body = BallBody(exact_body.faces, exact_body.exact,
                               tuple(closed_ball(x, params, extra, fine) for x in exact_body.G))
-    up = tuple(closed_ball(x, params, extra, fine) for x in witness.up)
+    up = tuple(closed_ball(x, params, extra, fine) for x in _rational_direction(witness.up, params, extra))
     density = _density(witness, params, extra, exact_body, up, fine)
     st = floating_state(exact_body, up, density, bits)
     from .floating_witness import QUANTITIES
@@ -464,6 +464,20 @@ def quantity_balls(witness, params, extra, body, bits):
         return tuple(read[q] if isinstance(q, str) else
                      closed_ball(q, params, {**extra, **{MEASURED[n]: v for n, v in read.items()}}, fine)
                      for q in items)
+
+
+def _rational_direction(up, params, extra):
+    """*up* scaled by a positive number to rational components where it can be ((sin 45°, cos 45°, 0) is
+    (1, 1, 0)): the vertices' heights are then exact, and a plane through a vertex an exact tie, not an
+    ambiguity.  Unchanged where a component depends on a root's ball or a ratio is irrational."""
+    values = [sp.sympify(x).xreplace(params) for x in up]
+    if any(v.free_symbols for v in values):
+        return up
+    ref = next((v for v in values if v != 0), None)
+    if ref is None or ref.is_Rational or ref.is_positive is not True and ref.is_negative is not True:
+        return up
+    ratios = [sp.nsimplify(sp.simplify(v / abs(ref))) if v != 0 else sp.Integer(0) for v in values]
+    return tuple(ratios) if all(r.is_Rational for r in ratios) else up
 
 
 def _density(witness, params, extra, body, up, fine):
@@ -492,9 +506,10 @@ def enclosed_values(witness, case, bits):
     items = (witness.quantity,) if single else tuple(witness.quantity)
     params = dict(case.params)
     try:
-        extra = _root_balls(witness, case, body, bits) if getattr(witness, "roots", ()) else {}
-        if extra is None:
+        solved = _root_balls(witness, case, body, bits) if getattr(witness, "roots", ()) else (params, {})
+        if solved is None:
             return None
+        params, extra = solved
         if not any(isinstance(q, str) or q.free_symbols & set(MEASURED.values()) for q in items):
             values = tuple(closed_ball(q, params, extra, bits + GUARD_BITS) for q in items)  # the roots alone
         else:
@@ -543,7 +558,9 @@ ROOT_BRACKETS = (2.0 ** -30, 2.0 ** -20)   # the float64 root's brackets, relati
 
 
 def _root_balls(witness, case, body, bits):
-    """The witness's ``roots`` (symbol -> ball): an expression in what is known, ``At`` a quantity at other
+    """The witness's ``roots``: ``(params, extra)``, the case's parameters with the roots that are exact numbers
+    (an expression in exact values, kept exact) and the others as balls (symbol -> ball): an expression in what
+    is known, ``At`` a quantity at other
     parameters, ``Root`` a root of a quantity in a variable, proven by a sign change on a bracket about the
     float64 root (the first of :data:`ROOT_BRACKETS` whose signs are proven) and narrowed by bisection (:func:`~symfloat.engine.enclosure.sign_change_root`),
     each ``guard`` proven positive there; ``None`` for a root without a rigorous method (a root whose search
@@ -556,7 +573,12 @@ def _root_balls(witness, case, body, bits):
         if not isinstance(root, (Root, At)):
             if not isinstance(root, (sp.Basic, int, Fraction)):
                 return None                                     # a derivative by differences
-            extra[symbol] = closed_ball(root, params, extra, fine)
+            value = sp.sympify(root).xreplace({k: v for k, v in params.items() if k not in extra})
+            if value.free_symbols:
+                extra[symbol] = closed_ball(root, params, extra, fine)
+            else:                                               # exact (pi/4): kept exact, a case parameter
+                params[symbol] = value
+                extra.pop(symbol, None)
             continue
         here_params, here = dict(params), dict(extra)
         for k, v in root.at:
@@ -599,7 +621,7 @@ def _root_balls(witness, case, body, bits):
         if not value.is_finite():
             raise Ambiguous(f"no proven sign change of {root.quantity} about the float64 root {root.variable}")
         extra[symbol] = value
-    return extra
+    return params, extra
 
 
 def _secant_root(f, lo, hi, bits):
