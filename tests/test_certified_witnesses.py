@@ -271,3 +271,107 @@ def test_a_singularity_it_cannot_remove_stays_undecided():
     y = sp.Symbol("y", positive=True)
     # log(1 - y) is unbounded at y = 1 but is no power: no substitution, no finite enclosure, no guess
     assert not integral(sp.log(1 - y), y, 0, 1, 64).is_finite()
+
+
+# ---- Min and Max: a reading clipped to bounds ------------------------------------------------------------------
+
+def test_min_and_max_are_enclosed_and_in_an_integrand_only_where_one_side_is_proven_the_extreme():
+    # min(max(√2, 6), 12) = 6 exactly; max(1/3, π/10) = 1/3 (π/10 = 0.314...)
+    assert ball(sp.Min(sp.Max(sp.sqrt(2), 6), 12), 128) == 6
+    with working_precision(128):
+        assert ball(sp.Max(sp.Rational(1, 3), sp.pi / 10), 128).overlaps(arb(1) / 3)
+        # ∫₀¹ min(x, 1 − x) dx = 1/4: the kink at 1/2 is bisected around, each piece one side
+        tent = integral(sp.Min(x, 1 - x), x, 0, 1, 128)
+        assert tent.overlaps(arb(1) / 4) and tent.rad() < arb(2) ** -60
+
+
+def test_euler_mu_bounds_clipped_by_min_and_max_is_decided_and_a_mutated_bound_refuted():
+    # §237: μ clipped to [6, 12] is μ on the admissible family; the member n = 1, κ = 1 (the rhombus: half area
+    # ab, moment of the half about AB ab³/6) has μ_AB = (2b)² ab / (2 ab³/6) = 12 exactly, so the bound 12
+    # changed to 11.9 clips it: refuted by the ball, not undecided
+    from symfloat.registry import load
+    derivation, _ = load("euler-229-243")
+    witness = next(w for w in derivation.witnesses if w.name == "mu-bounds")
+    clipped, mu = next(p for p in derivation.printed if p.name == "mu-bounds").reading
+    assert record_decision(_certified(witness.run({"mu-bounds": (clipped, mu)})["mu-bounds"])) == "agrees"
+    lowered = clipped.xreplace({sp.Integer(12): sp.Rational(119, 10)})
+    out = witness.run({"mu-bounds": (lowered, mu)})["mu-bounds"]
+    assert record_decision(_certified(out)) == "refuted" and not out.agrees and not out.undecided
+
+
+# ---- the floating witnesses: the clipped body in ball arithmetic --------------------------------------------------
+# References (by hand): the box a x b x c floating upright at the density ratio s has the draught s c and, for a
+# ≥ b, the metacentric height b²/(12 s c) - (1 - s) c / 2 (I = a b³/12 over V = a b s c, G - B = (c - s c)/2): at
+# 2 x 1 x 1 and s = 1/2, 1/6 - 1/4 = -1/12.  The unit square log lying flat has the metacentric height
+# 1/(12 s) - (1 - s)/2, zero at s² - s + 1/6 = 0: the lower threshold s = (3 - √3)/6 = 0.21132486540518...  The
+# unit cube cut by the plane x + y = 0 (through four of its vertices) has half its volume below.
+
+def _floating():
+    from symfloat.engine.floating_witness import (Body, Combined, CutWitness, FloatingRootWitness, FloatingWitness,
+                                                  Joined, PART, Root)
+    return Body, Combined, CutWitness, FloatingRootWitness, FloatingWitness, Joined, PART, Root
+
+
+def test_a_floating_box_is_enclosed_and_a_quantity_off_by_1e_12_refuted():
+    Body, _, _, _, FloatingWitness, _, _, _ = _floating()
+    s = sp.Symbol("s", positive=True)
+    box = FloatingWitness("box", "the clipped box", ("draught", "gm"), (Case({s: sp.Rational(1, 2)}, label="s = 1/2"),),
+                          body=Body.box(2, 1, 1), up=(0, 0, 1), density=s, quantity=("draught", "metacentric height"))
+    assert isinstance(box.enclose(box.instances[0], 128)[1], arb)
+    out = box.run({"draught": chain(sp.Matrix([s, -sp.Rational(1, 12)]))})["draught"]
+    assert record_decision(_certified(out)) == "agrees" and out.agrees
+    off = box.run({"draught": chain(sp.Matrix([s, -sp.Rational(1, 12) + sp.Rational(1, 10 ** 12)]))})["draught"]
+    assert record_decision(_certified(off)) == "refuted" and not off.agrees and not off.undecided
+    # the methods' errors are proven against the ball
+    assert all(r.get("proven") for r in out.records[1:])
+
+
+def test_a_density_threshold_is_a_proven_sign_change_and_its_last_printed_digit_counts():
+    Body, _, _, FloatingRootWitness, _, _, _, Root = _floating()
+    rho, s0 = sp.symbols("rho s0", positive=True)
+    threshold = FloatingRootWitness(
+        "threshold", "the lower zero of the clipped log's metacentric height", ("s0",), (Case({}, label="unit log"),),
+        body=Body.box(1, 1, 4), up=(0, 1, 0), density=rho, quantity=s0,
+        roots=((s0, Root.scan("metacentric height", rho, sp.Rational(1, 20), sp.Rational(1, 2), 9)),))
+    exact_root = (3 - sp.sqrt(3)) / 6
+    assert record_decision(_certified(threshold.run({"s0": chain(exact_root)})["s0"])) == "agrees"
+    assert record_decision(_certified(threshold.run({"s0": chain(exact_root + sp.Rational(1, 10 ** 12))})["s0"])) \
+        == "refuted"
+    # printed 0.2113 (half a unit in the last digit allowed): agrees; 0.2114, one unit off, refuted
+    half_unit = {"s0": sp.Rational(5, 10 ** 5)}
+    assert record_decision(_certified(threshold.run({"s0": chain(sp.Rational(2113, 10 ** 4))}, half_unit)["s0"])) \
+        == "agrees"
+    assert record_decision(_certified(threshold.run({"s0": chain(sp.Rational(2114, 10 ** 4))}, half_unit)["s0"])) \
+        == "refuted"
+
+
+def test_a_cut_through_vertices_joins_both_sides_and_stays_exact_enough():
+    Body, Combined, CutWitness, _, FloatingWitness, Joined, PART, _ = _floating()
+    from symfloat.engine.floating_witness import MEASURED
+    one = Case({}, label="unit cube")
+    cut = CutWitness("cut", "the unit cube below x + y = 0", ("half",), (one,), body=Body.box(1, 1, 1), up=(1, 1, 0),
+                     through=(sp.Rational(1, 2), -sp.Rational(1, 2), 0), quantity=MEASURED["immersed volume"])
+    assert record_decision(_certified(cut.run({"half": chain(sp.Rational(1, 2))})["half"])) == "agrees"
+    assert record_decision(_certified(cut.run({"half": chain(sp.Rational(1, 2) + sp.Rational(1, 10 ** 12))})["half"])) \
+        == "refuted"
+    # parts joined and combined: the draughts of the cube at 1/3 and 2/3, and their difference 1/3
+    parts = tuple(FloatingWitness("", "", (), (), body=Body.box(1, 1, 1), density=sp.Rational(k, 3)) for k in (1, 2))
+    joined = Joined("both", "both draughts", ("both",), (one,), parts=parts)
+    assert record_decision(_certified(joined.run({"both": chain(sp.Matrix([sp.Rational(1, 3),
+                                                                            sp.Rational(2, 3)]))})["both"])) == "agrees"
+    difference = Combined("diff", "their difference", ("diff",), (one,), parts=parts, values=(PART[1] - PART[0],))
+    assert record_decision(_certified(difference.run({"diff": chain(sp.Rational(1, 3) - sp.Rational(1, 10 ** 12))})
+                                      ["diff"])) == "refuted"
+
+
+def test_a_floating_kind_without_a_rigorous_method_keeps_its_former_comparison():
+    Body, _, _, _, FloatingWitness, _, _, _ = _floating()
+    psi = sp.Symbol("psi", real=True)
+    from symfloat.engine.floating_witness import LIMIT_METHODS, potential_slope
+    heel = (0, sp.sin(psi), sp.cos(psi))
+    limit = FloatingWitness("arm", "the arm over the heel, extrapolated", ("m",), (Case({}, label="unit cube"),),
+                            body=Body.box(2, 1, 1), up=heel, density=sp.Rational(1, 2),
+                            quantity=potential_slope(heel, psi), limit=(psi, 1), methods=LIMIT_METHODS)
+    assert limit.enclose(limit.instances[0], 128) is None
+    out = limit.run({"m": chain(-sp.Rational(1, 12))})["m"]
+    assert out.agrees and not any(r.get("certified") for r in out.records)

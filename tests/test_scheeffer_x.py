@@ -77,11 +77,13 @@ def test_numeric_displays_carry_witness_records_at_both_precisions(report):
                  "pentagon-stable", "dual-exists"}
     by = {f.id.split("/")[1]: f for f in report.formulas}
     for name in witnessed:
-        methods = {r["method"] for r in by[name].numeric}
+        methods = {r["method"] for r in by[name].numeric} - {"Arb ball arithmetic"}    # the certified decision
         assert methods in ({"float64", "mpmath, 50 digits"}, {"float64", "mpmath, 40 digits"}), name
     for name in ("168", "171", "173"):
         assert max(r["rel_error"] for r in by[name].numeric if r["method"] == "float64") < 1e-10
-        assert max(r["rel_error"] for r in by[name].numeric if r["method"] != "float64") < 1e-35   # 40 digits
+        # 40 digits, its error proven against the Arb enclosure: bounded by what the ball resolves at 128 bits
+        # (171, a root, about 1e-29), no longer by a 60-digit evaluation of the reading
+        assert max(r["rel_error"] for r in by[name].numeric if r["method"].startswith("mpmath")) < 1e-28
 
 
 # ---- the clipped cube: gradient, Hessian, all equilibria -------------------------------------------------

@@ -7,14 +7,15 @@ the exact value.  The nodes: ``Integer``, ``Rational`` (exact numerator over exa
 print's own rounding is the allowance its witness gives it, not part of the enclosure), ``pi``, ``E``,
 ``I``, ``Add``, ``Mul``, ``Pow`` (any exponent; an integer power is exact up to rounding, a half power a
 square root, another the principal branch ``exp(t log b)``), ``exp``, ``log``, ``sin``, ``cos``, ``tan``,
-``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``, ``tanh``, ``gamma`` and ``Abs``; a function of a
+``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``, ``tanh``, ``gamma``, ``Abs``, ``sign`` (decided where the
+ball excludes 0), ``Min`` and ``Max`` (of real arguments, :func:`_extreme`); a function of a
 derivation (Euler's ``Ib``, ``IY``) by the closed form its ``rewrite(gamma)`` gives, which the derivation
 proves in a step.  Any other node raises :class:`Unsupported` naming it.
 
 :func:`integral` encloses ``∫_lo^hi f(v) dv`` by ``acb.integral`` (Petras' adaptive Gauss–Legendre with
 rigorous error bounds, FLINT's ``acb_calc_integrate``).  The integrand must be holomorphic on a
 neighbourhood of the path: each node with a branch cut (``sqrt``, ``log``, a fractional power, ``Abs``,
-``asin``, ``acos``, ``atan``) says so by returning a non-finite ball where the ball it is given touches the
+``asin``, ``acos``, ``atan``, ``Min``, ``Max``) says so by returning a non-finite ball where the ball it is given touches the
 cut, and the integrator then bisects or, at its limits, returns a non-finite ball: an enclosure too wide to
 decide, never a guess.  A piecewise integrand is not on the whitelist: split it at its breakpoints first.
 An integrand with a branch point at an end (a factor ``base**(p/q)``, ``p/q > -1`` not an integer, ``base``
@@ -34,6 +35,7 @@ True
 """
 from __future__ import annotations
 
+import functools
 import math
 from contextlib import contextmanager
 
@@ -133,7 +135,17 @@ _UNARY = {
     sp.atan: _guarded(acb.atan, _on_imag_cut),
     sp.Abs: lambda z, a: z.real_abs(analytic=True) if a else acb(abs(z)),
     sp.gamma: lambda z, a: z.gamma(),
+    sp.sign: lambda z, a: _sign(z),
 }
+
+
+def _sign(z):
+    """The sign of a real ball: 1, -1, or 0 for an exact 0; non-finite where the ball holds 0 and more (a
+    constant on a ball that excludes 0, so holomorphic there)."""
+    x = z.real
+    if x > 0 or x < 0:
+        return acb(1 if x > 0 else -1)
+    return acb(0) if x == 0 and z.imag == 0 else acb(arb.nan(), arb.nan())
 
 
 def _constant(e):
@@ -199,12 +211,37 @@ def _compile(e, variables):
             return lambda v, a: base(v, a).rsqrt(analytic=a)
         t = _compile(power, variables)
         return lambda v, a: base(v, a).pow(t(v, a), analytic=a)
+    if isinstance(e, (sp.Min, sp.Max)):
+        return _extreme(e, [_compile(t, variables) for t in e.args])
     if e.func in _UNARY and len(e.args) == 1:
         f, arg = _UNARY[e.func], _compile(e.args[0], variables)
         return lambda v, a: f(arg(v, a), a)
     if isinstance(e, sp.Function) and (closed := e.rewrite(sp.gamma)) != e:
         return _compile(closed, variables)
     raise Unsupported(f"no enclosure for a {type(e).__name__} node ({e})")
+
+
+def _extreme(e, parts):
+    """``Min`` or ``Max`` of the compiled *parts*: of real values, ``arb.min`` / ``arb.max`` (the ball of the
+    least or the greatest); in an integrand (``analytic``) the part whose real part is proven below (``Min``)
+    or above (``Max``) every other one over the whole ball, a holomorphic function that equals the extreme on
+    the real points there; where no part is, the extreme may switch inside the ball and is not holomorphic:
+    a non-finite ball."""
+    lesser = isinstance(e, sp.Min)
+
+    def extreme(v, a):
+        values = [p(v, a) for p in parts]
+        if a:
+            for k, z in enumerate(values):
+                if all((z.real < w.real) if lesser else (z.real > w.real) for j, w in enumerate(values) if j != k):
+                    return z
+            return acb(arb.nan(), arb.nan())
+        reals = [_real(z, e) for z in values]
+        out = reals[0]
+        for x in reals[1:]:
+            out = out.min(x) if lesser else out.max(x)
+        return acb(out)
+    return extreme
 
 
 def _real(z: acb, what) -> arb:
@@ -276,31 +313,56 @@ def integral(expr, var, lo, hi, prec: int, at: dict | None = None) -> arb:
         return _real(value, f"the integral of {expr}")
 
 
-def _singular_factors(expr, var, end):
-    """The factors ``base**e`` of *expr* (a product) with ``e > -1`` rational, not an integer, and ``base`` zero
-    at *end*: a branch point there (an integrable singularity where ``e < 0``), where ``acb.integral`` cannot
-    bound the integrand or needs many evaluations to."""
-    return [f for f in sp.Mul.make_args(expr)
-            if isinstance(f, sp.Pow) and f.exp.is_Rational and not f.exp.is_Integer and f.exp > -1
-            and f.base.has(var) and sp.simplify(f.base.subs(var, end)) == 0]
+def _branch_points(expr, var, ends) -> frozenset:
+    """The pairs ``(factor, end)``: each power ``base**e`` in *expr* (at any depth) with ``e > -1`` rational, not
+    an integer, and ``base`` zero at the *end* (one of *ends*): a branch point there (an integrable singularity
+    where ``e < 0``), where ``acb.integral`` cannot bound the integrand or needs many evaluations to.  Collected
+    once per integrand, each base tested at each end once (:func:`_vanishes`)."""
+    return frozenset((f, end) for f in expr.atoms(sp.Pow)
+                     if f.exp.is_Rational and not f.exp.is_Integer and f.exp > -1 and f.base.has(var)
+                     for end in ends if _vanishes(f.base, var, end))
 
 
-def _desingularised(expr, var, lo, hi, rooted=False):
+@functools.lru_cache(maxsize=4096)
+def _vanishes(base, var, end) -> bool:
+    """Whether *base* is zero at ``var = end`` (``sp.simplify`` decides; the same base is met at every
+    precision the witness tries)."""
+    return sp.simplify(base.subs(var, end)) == 0
+
+
+def _singular_factors(expr, var, end, branch):
+    """The factors of *expr* (a product) that are branch points at *end* (in *branch*, :func:`_branch_points`)."""
+    return [f for f in sp.Mul.make_args(expr) if (f, end) in branch]
+
+
+def _desingularised(expr, var, lo, hi, rooted=False, known=None):
     """``∫_lo^hi expr dvar`` as pieces ``(integrand, t, a, b)`` without a branch point at an end, or ``None``
     where *expr* has none.  At an end e with one factor ``base**(p/q)`` (``p/q > -1`` not an integer,
     ``base = ±(var - e) h`` with ``h(e) != 0``) the substitution ``var = e ∓ t**q`` turns the factor into
     ``t**p h**(p/q)`` and ``dvar`` into ``q t**(q-1) dt``: the integrand becomes ``t**(p+q-1)`` (a power
     ``>= 0``) times a function holomorphic at ``t = 0``.  Branch points at both ends split the interval at
-    its midpoint; a sum is integrated term by term."""
-    nested = [x for x in expr.atoms(sp.Pow) for e in (lo, hi) if _singular_factors(x, var, e)]
-    if nested and not any(_singular_factors(t, var, e) for t in sp.Add.make_args(expr) for e in (lo, hi)):
-        expr = sp.expand(expr)                         # y²(1 − (1 − y)^(1/4)): the branch factor made a factor
+    its midpoint; a sum is integrated term by term.  *known*: the :func:`_branch_points` at *lo* and *hi* of a
+    sum that *expr* is a term of (its own are among them)."""
+    if known is None:
+        branch = _branch_points(expr, var, (lo, hi))
+    else:
+        powers = expr.atoms(sp.Pow)
+        branch = frozenset(pair for pair in known if pair[0] in powers)
+    if not branch:
+        return None
+
+    def singular_at(term, e):
+        return bool(_singular_factors(term, var, e, branch))
+    if not any(singular_at(t, e) for t in sp.Add.make_args(expr) for e in (lo, hi)):
+        expanded = sp.expand(expr)                     # y²(1 − (1 − y)^(1/4)): the branch factor made a factor
+        if expanded != expr:
+            expr, branch = expanded, _branch_points(expanded, var, (lo, hi))
     if isinstance(expr, sp.Add):                       # term by term, where a term has a branch point at an end
-        if not any(_singular_factors(term, var, e) for term in expr.args for e in (lo, hi)):
+        if not any(singular_at(term, e) for term in expr.args for e in (lo, hi)):
             return None
         return [piece for term in expr.args
-                for piece in (_desingularised(term, var, lo, hi, rooted) or [(term, var, lo, hi)])]
-    ends = [e for e in (lo, hi) if _singular_factors(expr, var, e)]
+                for piece in (_desingularised(term, var, lo, hi, rooted, branch) or [(term, var, lo, hi)])]
+    ends = [e for e in (lo, hi) if singular_at(expr, e)]
     if not ends:
         return None
     if len(ends) == 2:
@@ -308,7 +370,7 @@ def _desingularised(expr, var, lo, hi, rooted=False):
         return [*(_desingularised(expr, var, lo, mid, rooted) or [(expr, var, lo, mid)]),
                 *(_desingularised(expr, var, mid, hi, rooted) or [(expr, var, mid, hi)])]
     end, other = (lo, hi) if ends[0] == lo else (hi, lo)
-    factors = _singular_factors(expr, var, end)
+    factors = _singular_factors(expr, var, end, branch)
     if len(factors) != 1:
         return None
     (factor,) = factors

@@ -23,6 +23,7 @@ from fractions import Fraction
 
 import mpmath
 import sympy as sp
+from flint import arb
 
 from ..geometry.floating import (FloatingState, _dot, _sub, _unit, body_volume_centroid, box, clip_below, draught,
                                  floating_state, regular_prism, right_prism, submerged, volume_centroid)
@@ -330,6 +331,13 @@ class FloatingWitness(MeasuredWitness):
             values = tuple(float(v) if method.dps <= 15 else +v for v in values)   # rounded to the method's digits
         return values[0] if isinstance(self.quantity, (str, sp.Expr)) else values
 
+    def enclose(self, case, bits):
+        """The quantity in ball arithmetic (:func:`symfloat.engine.floating_enclosure.enclosed_values`: exact
+        clipping with proven sides, the draught and each root a proven bracket), or ``None`` where it has no
+        rigorous method (a limit, a tilt's wedges, a cylinder, a nested root search)."""
+        from .floating_enclosure import enclosed_values
+        return enclosed_values(self, case, bits)
+
 
 # ---- the waterplane's moments in the body frame, a prism's bases ---------------------------------------------
 def _waterplane_moment(i, j):
@@ -385,6 +393,16 @@ class Joined(MeasuredWitness):
         out = []
         for part in self.parts:
             value = part.measure(case, method)
+            out.extend(value if isinstance(value, tuple) else (value,))
+        return tuple(out)
+
+    def enclose(self, case, bits):
+        """The parts' enclosures joined, or ``None`` where a part has none."""
+        out = []
+        for part in self.parts:
+            value = part.enclose(case, bits)
+            if value is None:
+                return None
             out.extend(value if isinstance(value, tuple) else (value,))
         return tuple(out)
 
@@ -731,6 +749,19 @@ class Combined(MeasuredWitness):
                 out.append(f(*(got[x] if x in got else _real(number(case.params[x], case.params, method.dps),
                                                                 method.dps) for x in symbols)))
             out = tuple(float(v) if method.dps <= 15 else +v for v in out)
+        return out[0] if len(out) == 1 else out
+
+    def enclose(self, case, bits):
+        """The parts' enclosures combined in ball arithmetic, or ``None`` where a part has none."""
+        from .enclosure import ball, exact, working_precision
+        got = {}
+        for i, part in enumerate(self.parts):
+            value = part.enclose(case, bits)
+            if value is None or isinstance(value, tuple):
+                return None
+            with working_precision(bits):                   # an exact part (a hull's Fraction) rounded at bits
+                got[PART[i]] = value if isinstance(value, arb) else exact(Fraction(value))
+        out = tuple(ball(sp.sympify(e).xreplace(case.params), bits, got) for e in self.values)
         return out[0] if len(out) == 1 else out
 
 
