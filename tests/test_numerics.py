@@ -161,12 +161,16 @@ def test_declared_witnesses_are_measured_with_their_own_methods():
     d, _ = load("metazentrum")
     bench = run_bench("metazentrum", quick=True)
     declared = {w.name: w for w in d.witnesses if isinstance(w, DECLARED)}
-    for w in declared.values():
-        assert methods_for(w, d) == tuple(w.methods)
+    for w in declared.values():             # the declared methods, then the ball methods where the kind has one
+        own = methods_for(w, d)
+        assert own[:len(w.methods)] == tuple(w.methods)
+        assert all(m.name.startswith("Arb") for m in own[len(w.methods):])
     ms = [m for m in bench.measurements if m.family == "floating bodies by exact clipping"]
     assert len({m.witness for m in ms}) >= 8 and all(m.witness in declared for m in ms)
     assert all(v == "exact" for v in bench.references.values())
     for m in ms:
+        if m.method.startswith("Arb"):      # the bench's ball runs of the floating bodies measure no error yet
+            continue
         tolerance = next(x.tolerance for x in declared[m.witness].methods if x.name == m.method)
         worst = max(e for e in m.errors.values() if e is not None)
         assert worst < tolerance, (m.witness, m.method, worst)

@@ -61,10 +61,13 @@ def test_every_witnessed_formula_has_float_and_40_digit_records(report):
     own = {"float64", "mpmath, 40 digits"}
     route = {"definitions, 15 digits", "definitions, 30 digits"}
     counted = {f"root count, polyroots and inclusion discs, {n} digits" for n in (15, 30)}
+    # beside them a witness with a ball method adds its certified record (Arb, symfloat/engine/floating_enclosure.py)
     witnessed = [f for f in report.formulas if f.numeric]
-    assert len([f for f in witnessed if {r["method"] for r in f.numeric} == own]) >= 60
+    methods = {f.id: {r["method"] for r in f.numeric} - {"Arb ball arithmetic"} for f in witnessed}
+    assert len([f for f in witnessed if methods[f.id] == own]) >= 60
+    assert len([f for f in witnessed if any(r.get("certified") for r in f.numeric)]) >= 40
     for f in witnessed:
-        assert {r["method"] for r in f.numeric} in (own, route, counted), f.id
+        assert methods[f.id] in (own, route, counted), f.id
     rows = {f.id.split("/")[1]: f for f in report.formulas if f.id.split("/")[1].startswith("161-")}
     assert len(rows) == 5 and all({r["method"] for r in f.numeric} == counted for f in rows.values())
 

@@ -179,9 +179,10 @@ def _ball_pair(v):
 
 def _finite(value) -> bool:
     """Whether a measured value (or each of a tuple of them) is a finite number or ball: an enclosure
-    that came out unbounded measures nothing, so it has no error to report."""
+    that came out unbounded (or none at all: an undecided enclosure) measures nothing, so it has no error to
+    report."""
     values = value if isinstance(value, (tuple, list)) else [value]
-    return all(v.is_finite() for v in values if isinstance(v, arb))
+    return all(v is not None and (not isinstance(v, arb) or v.is_finite()) for v in values)
 
 
 def _vector(value):
