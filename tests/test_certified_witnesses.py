@@ -236,6 +236,12 @@ def test_a_function_of_a_derivation_is_enclosed_by_its_gamma_form():
     with pytest.raises(Unsupported):
         ball(sp.Function("F")(sp.Integer(1)), 128)        # a function with no closed form: no guess
 
+    class _Looping(sp.Function):                           # its gamma form still contains itself
+        def _eval_rewrite_as_gamma(self, *args, **kwargs):
+            return 2 * _Looping(*args)
+    with pytest.raises(Unsupported, match="_Looping"):
+        ball(_Looping(sp.Integer(1)), 128)
+
 
 def test_euler_s_own_functions_enclosed_as_the_quadrature_of_their_integrals():
     from symfloat.derivations.euler_229_243.statements import IY, Ib

@@ -161,6 +161,15 @@ def test_the_equality_case_is_read_where_no_sample_meets_it():
     assert verdicts(dv) == {"with-equality": "erratum", "strict": "verified"}
 
 
+def test_the_equality_case_is_taken_inside_the_domain():
+    # b^2 <= 4 on b in (1/2, 3) has its equality case at b = 2, not at the first solution sympy lists, b = -2:
+    # 'unstable exactly when b^2 <= 4' for a stability b - 2 is neutral at b = 2, which refutes it; at b = -2
+    # the stability -4 would have agreed
+    from symfloat.model.vocabulary import _equality_case
+    (case,) = _equality_case(b ** 2 <= 4, b - 2, "unstable", lambda e: e, {b: (sp.Rational(1, 2), 3)})
+    assert case.lhs.doit() == 0 and case.doit() is sp.false
+
+
 def test_the_library_reads_its_named_quantities_from_their_definitions():
     # metazentrum line 187 names the tilted body's centroid where the lesson computes the displaced water's;
     # Euler §212 names the stability where the value is the square's moment: the printed readings and their

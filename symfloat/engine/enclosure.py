@@ -216,8 +216,8 @@ def _compile(e, variables):
     if e.func in _UNARY and len(e.args) == 1:
         f, arg = _UNARY[e.func], _compile(e.args[0], variables)
         return lambda v, a: f(arg(v, a), a)
-    if isinstance(e, sp.Function) and (closed := e.rewrite(sp.gamma)) != e:
-        return _compile(closed, variables)
+    if isinstance(e, sp.Function) and (closed := e.rewrite(sp.gamma)) != e and not closed.has(e.func):
+        return _compile(closed, variables)       # a rewrite that keeps its own function would recurse
     raise Unsupported(f"no enclosure for a {type(e).__name__} node ({e})")
 
 

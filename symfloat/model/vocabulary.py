@@ -231,22 +231,32 @@ class StableIff:
         s = _at(s, dict(self.at))
         said = _signed(s, verdict)
         clauses = [sp.Implies(self.condition, said), sp.Implies(said, self.condition)]
-        clauses += _equality_case(self.condition, s, verdict, derived)
+        clauses += _equality_case(self.condition, s, verdict, derived, dict(self.domain))
         return Holds(sp.And(*clauses), dict(self.domain))
 
 
-def _equality_case(condition, s, verdict, derived) -> list:
+def _equality_case(condition, s, verdict, derived, domain) -> list:
     """For a condition ``A >= B`` (or ``<=``) of a stable or an unstable verdict: the verdict at the points
-    where ``A = B``, found by solving ``A = B`` (derived values inserted) for its first symbol that has a
-    solution; there the stability vanishes where the equality is the neutral case, which refutes it."""
+    where ``A = B``, found by solving ``A = B`` (derived values inserted) for its first symbol with a solution
+    that may lie in the domain (not provably complex, nor provably outside the symbol's interval); there the
+    stability vanishes where the equality is the neutral case, which refutes it."""
     if verdict == "neutral" or not isinstance(condition, (sp.GreaterThan, sp.LessThan)):
         return []
     gap = derived(condition.lhs - condition.rhs)
     for x in sorted(gap.free_symbols, key=lambda q: q.name):
-        roots = sp.solve(gap, x)
+        roots = [r for r in sp.solve(gap, x) if _may_lie_in(r, domain.get(x))]
         if roots:
             return [_signed(sp.Subs(s, x, roots[0]), verdict)]
-    raise ValueError(f"the equality case of {condition} has no solution for any of its symbols")
+    raise ValueError(f"the equality case of {condition} has no solution in the domain for any of its symbols")
+
+
+def _may_lie_in(root, interval) -> bool:
+    """False when *root* is provably not real, or provably outside *interval* (``(lo, hi)``, either end
+    ``None`` for unbounded)."""
+    if root.is_extended_real is False:
+        return False
+    lo, hi = interval if interval is not None else (None, None)
+    return not ((lo is not None and (root - lo).is_negative) or (hi is not None and (root - hi).is_positive))
 
 
 @dataclass(frozen=True, init=False)
