@@ -28,6 +28,7 @@ from __future__ import annotations
 import ast
 import hashlib
 import importlib
+import importlib.metadata
 import json
 import math
 import os
@@ -553,8 +554,10 @@ def _fixed(folder: Path) -> set[Path]:
 
 
 def _hash(files) -> str:
+    """The hash of *files* (by name and content), :data:`FORMAT` and the SymPy version (another SymPy may shape
+    a compiled tree otherwise; read from the installed metadata, so that no scene imports SymPy)."""
     named = sorted((f"{p.parent.name}/{p.name}", p) for p in files)
-    h = hashlib.sha256(FORMAT.encode())
+    h = hashlib.sha256(f"{FORMAT} sympy {importlib.metadata.version('sympy')}".encode())
     for name, p in named:
         h.update(name.encode())
         h.update(p.read_bytes())
