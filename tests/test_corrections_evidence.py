@@ -49,3 +49,10 @@ def test_prose_is_not_searched():
     # the print as words: the search cannot read one formula in it and adds no sentence
     evidence = _evidence("Das Volumen ist vier Fünftel", sp.Eq(V, 4 * r**3 * sp.pi / 5), r"V = \frac{4r^3\pi}{3}")
     assert "The correction search" not in evidence and "smallest correction found" not in evidence
+
+
+def test_a_booked_correction_that_cannot_be_read_is_not_called_another():
+    # a booked text the reader cannot read (a macro it does not know): the search neither claims nor denies that
+    # its correction is the booked one
+    evidence = _evidence(r"$$V = \frac{4r^3\pi}{5}.$$", sp.Eq(V, 4 * r**3 * sp.pi / 5), r"V = \frob{r^3}")
+    assert "(5 → 3: digit, print-like; confirmed by sampling); whether it is the booked one cannot be read." in evidence

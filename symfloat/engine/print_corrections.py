@@ -147,14 +147,14 @@ def print_test(printed, results: dict, domain: Domain, seed: str, decide):
     return holds
 
 
-def same_reading(text: str, other: str) -> bool:
+def same_reading(text: str, other: str) -> bool | None:
     """Whether *text* and *other* (LaTeX, or an excerpt with one math span) read to the same rows of
     SymPy expressions (the allow-list reader, no vocabulary): how an edit is recognised as a booked
-    correction."""
+    correction; ``None`` when either cannot be read (then no one can say)."""
     try:
         rows = [[tuple(r[0]) for r in read(excerpt_math(t) or t).rows] for t in (text, other)]
     except (Unreadable, RecursionError, ValueError, TypeError):
-        return False
+        return None
     return rows[0] == rows[1]
 
 
@@ -171,5 +171,7 @@ def smallest_correction(printed, results: dict, domain: Domain, seed: str, decid
         return f"The correction search: no edit among the {EVIDENCE_BUDGET} likeliest makes the print hold."
     c = found[0]
     how = "confirmed by sampling" if c.status == "sampled" else c.status
-    return (f"The smallest correction found: ${c.text.rstrip('. ')}$ ({c.change}: {c.what}, {c.kind}; {how}); it is "
-            f"{'' if same_reading(c.text, booked) else 'not '}the booked one.")
+    same = same_reading(c.text, booked)
+    verdict = {True: "it is the booked one", False: "it is not the booked one",
+               None: "whether it is the booked one cannot be read"}[same]
+    return f"The smallest correction found: ${c.text.rstrip('. ')}$ ({c.change}: {c.what}, {c.kind}; {how}); {verdict}."
