@@ -16,6 +16,8 @@ from symfloat.model.source import SOURCES
 from symfloat.model.vocabulary import Compares, DecreasesWith, GrowsWith, IndependentOf, Is
 from symfloat.registry import load
 
+from one_formula import verdict_alone
+
 D, PACKAGE = load("euler-192-219")
 MODULE, WITNESSES = PACKAGE.statements, PACKAGE.witnesses
 TEXT = SOURCES["euler"].text()
@@ -226,13 +228,6 @@ def test_negative_stability_ends_in_a_stable_heeled_equilibrium():
 # (the wrong quantity named, the dependence or the comparison turned); the mutant is read from the same
 # definitions by the same words-to-reading route (Derivation.reads)
 
-def _says_verdict(name, words, statement):
-    p = D.get_printed(name)
-    q = dataclasses.replace(p, reading=D.reads(words, statement), erratum=None)
-    rep = check_derivation(dataclasses.replace(D, printed=[q], witnesses=[]), prove=False, trust_steps=True)
-    return rep.formulas[0].verdict
-
-
 def _sentences():
     M = MODULE
     a, b, m, n, Iw, Kw = M.a, M.b, M.m, M.n, M.Iw, M.Kw
@@ -266,5 +261,5 @@ def test_a_sentence_read_through_the_vocabulary_holds_and_its_mutant_is_refuted(
                                                                                  mutant_words, mutant):
     p = D.get_printed(name)
     assert p.reading == D.reads(words, statement)          # the module's reading is the words' reading
-    assert _says_verdict(name, words, statement) == "verified"
-    assert _says_verdict(name, mutant_words, mutant) == "erratum"
+    assert verdict_alone(D, name, D.reads(words, statement)) == "verified"
+    assert verdict_alone(D, name, D.reads(mutant_words, mutant)) == "erratum"

@@ -13,6 +13,8 @@ from symfloat.engine.witness import record_decision
 from symfloat.model.source import SOURCES
 from symfloat.registry import load
 
+from one_formula import verdict_alone
+
 D, PACKAGE = load("euler-220-228")
 MODULE = PACKAGE.statements              # the symbols and quantities of the statements
 TEXT = SOURCES["euler"].text()
@@ -265,9 +267,7 @@ def test_the_moment_about_AB_free_of_Y_is_read_through_the_vocabulary_and_its_mu
     assert printed.reading == D.reads("momentum", IndependentOf(p_, q_))
 
     def verdict(statement):
-        q = dataclasses.replace(printed, reading=D.reads("momentum", statement), erratum=None)
-        rep = check_derivation(dataclasses.replace(D, printed=[q], witnesses=[]), prove=False, trust_steps=True)
-        return rep.formulas[0].verdict
+        return verdict_alone(D, "AB-free-of-Y", D.reads("momentum", statement))
     assert verdict(IndependentOf(p_, q_)) == "verified"
     assert verdict(DependsOn(p_)) == "erratum"
     assert verdict(IndependentOf(MODULE.a)) == "erratum"

@@ -15,6 +15,8 @@ from symfloat.model.source import SOURCES
 from symfloat.model.vocabulary import Compares, DecreasesWith, GrowsWith, Is
 from symfloat.registry import load
 
+from one_formula import verdict_alone
+
 D, PACKAGE = load("euler-229-243")
 MODULE = PACKAGE.statements                      # the statements: symbols, the tables rebuilt, the Beta integrals
 TEXT = SOURCES["euler"].text()
@@ -343,13 +345,6 @@ def test_the_angle_at_e_of_the_kappa_1_figure_is_a_corner_obtuse_for_a_long_figu
 
 # ---- sentences read through the vocabulary (issue 31): each holds, and is refuted when its words are mutated
 
-def _says_verdict(name, words, statement):
-    p = D.get_printed(name)
-    q = dataclasses.replace(p, reading=D.reads(words, statement), erratum=None)
-    rep = check_derivation(dataclasses.replace(D, printed=[q], witnesses=[]), prove=False, trust_steps=True)
-    return rep.formulas[0].verdict
-
-
 def _sentences():
     M = MODULE
     OG, EF, AB, Dw, mu, nu = M.OG, M.EF, M.AB, M.Dw, M.mu, M.nu
@@ -376,8 +371,8 @@ def _sentences():
                          ids=[f"{s[0]}-{s[3]}-{i}" for i, s in enumerate(_sentences())])
 def test_a_sentence_read_through_the_vocabulary_holds_and_its_mutant_is_refuted(name, words, statement,
                                                                                  mutant_words, mutant):
-    assert _says_verdict(name, words, statement) == "verified"
-    assert _says_verdict(name, mutant_words, mutant) == "erratum"
+    assert verdict_alone(D, name, D.reads(words, statement)) == "verified"
+    assert verdict_alone(D, name, D.reads(mutant_words, mutant)) == "erratum"
 
 
 def test_the_printed_readings_of_239_and_240_are_their_words_readings():
