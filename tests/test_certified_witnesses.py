@@ -8,6 +8,7 @@ lowest point the area pi (r^2 - (z - r)^2); at r = 1 the volume is 4.18879020478
 the volume 1/6 and the centroid height 1/4; the prismatoid of a square under a smaller square has 4 side faces,
 none of them triangles (each joins a side of the base to the parallel side of the top).
 """
+from dataclasses import replace
 from fractions import Fraction
 
 import pytest
@@ -377,7 +378,9 @@ def test_a_cut_through_vertices_joins_both_sides_and_stays_exact_enough():
 # by psi with no base cut, B - G = (-tan(psi) r^2/(4 s L), 0, -(1 - s) L/2 + tan^2(psi) r^2/(8 s L)) (the column
 # over the disc up to the tilted plane, int x^2 dA = pi r^4/4), so the arm, -cos(psi) (B - G)_x + sin(psi)
 # (B - G)_z up to a factor sin(psi), vanishes where tan^2(psi) = 4 s (1 - s) L^2/r^2 - 2: 11/32 at r = 8/5,
-# L = 5/2, s = 3/5 (the water line's ends (s - 1/2) L +- r tan(psi) = 0.25 +- 0.94 stay between the bases).  The
+# L = 5/2, s = 3/5 (the water line's ends (s - 1/2) L +- r tan(psi) = 0.25 +- 0.94 stay between the bases); the
+# upper base meets the water where (s - 1/2) L + r tan(psi) = L/2, tan(psi) = (1 - s) L/r = 5/8 there (the lower
+# end, 0.25 - 1, still above the lower base): a root where the plane passes through the rim.  The
 # waterplane of that tilt is an ellipse with semi-axes r/cos(psi), r: I max = pi r^4/(4 cos^3 psi).  Lying at
 # s = 1/2 the waterplane is the rectangle L x 2r (I min = L (2r)^3/12), B the centroid of a half disc, 4r/(3 pi)
 # below the water, and the metacentric height 0.
@@ -439,6 +442,13 @@ def test_a_cylinder_s_density_threshold_and_tilted_equilibrium_are_proven_roots(
     assert record_decision(_certified(tilt.run({"t2": chain(sp.Rational(11, 32))})["t2"])) == "agrees"
     assert record_decision(_certified(tilt.run({"t2": chain(sp.Rational(11, 32) - sp.Rational(1, 10 ** 12))})
                                       ["t2"])) == "refuted"
+    # at the contact the water plane passes through the upper rim: the branches of a cut base are joined
+    contact = replace(tilt, name="contact", targets=("tc",), quantity=sp.tan(PSI_C),
+                      roots=((PSI_C, Root.scan(MEASURED["upper base above water"], PSI_C, sp.Rational(1, 50),
+                                               sp.Rational(3, 2), 30)),))
+    assert record_decision(_certified(contact.run({"tc": chain(sp.Rational(5, 8))})["tc"])) == "agrees"
+    assert record_decision(_certified(contact.run({"tc": chain(sp.Rational(5, 8) + sp.Rational(1, 10 ** 12))})
+                                      ["tc"])) == "refuted"
 
 
 def test_a_floating_kind_without_a_rigorous_method_keeps_its_former_comparison():

@@ -26,7 +26,7 @@ a bracket whose signs are not proven at the precision gives :class:`Ambiguous`.
 
 >>> from fractions import Fraction as F
 >>> from flint import arb
->>> from .enclosure import working_precision
+>>> from symfloat.engine.enclosure import working_precision
 >>> with working_precision(128 + GUARD_BITS):              # lying: half immersed at s = 1/2, t = 0
 ...     st = cylinder_state(arb(1), F(2), (arb(1), arb(0), arb(0)), arb(1) / 2, 128)
 ...     st.t.abs_upper() < arb(2) ** -100
