@@ -412,6 +412,15 @@ def test_the_cylinder_upright_tilted_and_lying_is_enclosed_about_its_closed_form
         assert isinstance(value, arb) and value.overlaps(ball(exact, 160)) and value.rad() < arb(2) ** -100
 
 
+def test_a_cylinder_s_draught_is_bracketed_about_a_density_ball_wider_than_the_precision():
+    # lying at s = 1/2 +- 2^-70 (a density found as a root): the bracket holds the axis's draught 0 at s = 1/2
+    from symfloat.engine.cylinder_enclosure import cylinder_state
+    with working_precision(160):
+        s = (arb(1) / 2).union(arb(1) / 2 + arb(2) ** -70).union(arb(1) / 2 - arb(2) ** -70)
+        st = cylinder_state(arb(1), Fraction(2), (arb(1), arb(0), arb(0)), s, 128)
+        assert st.t.overlaps(arb(0)) and st.t.rad() < arb(2) ** -60
+
+
 def test_a_cylinder_quantity_is_enclosed_and_a_value_off_by_1e_12_refuted():
     w = _cylinder("metacentric height", (0, 0, 1), sp.Rational(3, 10))
     gm = sp.Rational(1, 16) / sp.Rational(3, 10) - sp.Rational(7, 5)

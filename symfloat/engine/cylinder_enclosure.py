@@ -21,7 +21,8 @@ ends of its chords ``max(w_lo, z_lo)``, ``min(w_hi, z_hi)``.
 
 **The draught** ``t``: closed upright (``t = (s - 1/2) L``); else Newton's steps at exact dyadic points from
 the float64 draught (``dV/dt`` is the waterplane area), then a bracket ``[t - d, t + d]``, ``d`` about
-``2^-bits`` of ``r + L``, **proven** by the signs of ``V - s V_total`` at its ends (``V`` grows with ``t``);
+``2^-bits`` of ``r + L`` plus twice what the data's balls move the draught (a density found as a root),
+**proven** by the signs of ``V - s V_total`` at its ends (``V`` grows with ``t``);
 a bracket whose signs are not proven at the precision gives :class:`Ambiguous`.
 
 >>> from fractions import Fraction as F
@@ -176,6 +177,9 @@ def _draught(r, L, st, ct, s, bits):
         t = nxt
         if done:
             break
+    # the bracket at least twice as wide as the balls of the data move the draught (a density's ball: dt = dV / A)
+    step += 2 * arb(target.rad() + (_volume_moments(r, L, st, ct, t)[0]).rad()) / _waterplane(r, L, st, ct, t,
+                                                                                                   area_only=True)
     for widen in range(0, bits // 2 - 8, 8):
         lo, hi = t - step * 2 ** widen, t + step * 2 ** widen
         if _volume_moments(r, L, st, ct, lo)[0] < target and _volume_moments(r, L, st, ct, hi)[0] > target:
