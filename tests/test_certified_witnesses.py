@@ -8,6 +8,7 @@ lowest point the area pi (r^2 - (z - r)^2); at r = 1 the volume is 4.18879020478
 the volume 1/6 and the centroid height 1/4; the prismatoid of a square under a smaller square has 4 side faces,
 none of them triangles (each joins a side of the base to the parallel side of the top).
 """
+from dataclasses import replace
 from fractions import Fraction
 
 import pytest
@@ -368,6 +369,95 @@ def test_a_cut_through_vertices_joins_both_sides_and_stays_exact_enough():
     difference = Combined("diff", "their difference", ("diff",), (one,), parts=parts, values=(PART[1] - PART[0],))
     assert record_decision(_certified(difference.run({"diff": chain(sp.Rational(1, 3) - sp.Rational(1, 10 ** 12))})
                                       ["diff"])) == "refuted"
+
+
+# The circular cylinder (radius r, length L, axis z) against closed forms derived by hand (as in
+# tests/test_floating_witness.py): upright at density s the draught is s L from the bottom (Archimedes), the
+# waterplane a disc (area pi r^2, second moment pi r^4/4), so the metacentric height is r^2/(4 L s) - (1 - s) L/2;
+# it vanishes where s (1 - s) = r^2/(2 L^2), at r = 1/2, L = 1 where s = (2 - sqrt 2)/4 (the lower root).  Tilted
+# by psi with no base cut, B - G = (-tan(psi) r^2/(4 s L), 0, -(1 - s) L/2 + tan^2(psi) r^2/(8 s L)) (the column
+# over the disc up to the tilted plane, int x^2 dA = pi r^4/4), so the arm, -cos(psi) (B - G)_x + sin(psi)
+# (B - G)_z up to a factor sin(psi), vanishes where tan^2(psi) = 4 s (1 - s) L^2/r^2 - 2: 11/32 at r = 8/5,
+# L = 5/2, s = 3/5 (the water line's ends (s - 1/2) L +- r tan(psi) = 0.25 +- 0.94 stay between the bases); the
+# upper base meets the water where (s - 1/2) L + r tan(psi) = L/2, tan(psi) = (1 - s) L/r = 5/8 there (the lower
+# end, 0.25 - 1, still above the lower base): a root where the plane passes through the rim.  The
+# waterplane of that tilt is an ellipse with semi-axes r/cos(psi), r: I max = pi r^4/(4 cos^3 psi).  Lying at
+# s = 1/2 the waterplane is the rectangle L x 2r (I min = L (2r)^3/12), B the centroid of a half disc, 4r/(3 pi)
+# below the water, and the metacentric height 0.
+def _cylinder(quantity, up, s, radius=1, length=4, **kw):
+    Body, _, _, _, FloatingWitness, _, _, _ = _floating()
+    return FloatingWitness("cylinder", "the floating cylinder", ("q",), (Case({}, label="cylinder"),),
+                           body=Body.cylinder(radius, length), up=up, density=s, quantity=quantity, **kw)
+
+
+PSI_C = sp.Symbol("psi", positive=True)
+
+
+@pytest.mark.parametrize("quantity, up, s, exact", [
+    ("draught", (0, 0, 1), sp.Rational(3, 10), sp.Rational(6, 5)),
+    ("metacentric height", (0, 0, 1), sp.Rational(3, 10), sp.Rational(1, 16) / sp.Rational(3, 10) - sp.Rational(7, 5)),
+    ("metacentric height", (0, 0, -1), sp.Rational(3, 10), sp.Rational(1, 16) / sp.Rational(3, 10) - sp.Rational(7, 5)),
+    ("I max", (sp.sin(sp.atan(sp.Rational(1, 4))), 0, sp.cos(sp.atan(sp.Rational(1, 4)))), sp.Rational(1, 2),
+     sp.pi / (4 * sp.cos(sp.atan(sp.Rational(1, 4))) ** 3)),
+    ("B - G, x", (sp.sin(sp.atan(sp.Rational(1, 4))), 0, sp.cos(sp.atan(sp.Rational(1, 4)))), sp.Rational(1, 2),
+     -sp.Rational(1, 4) / (4 * sp.Rational(1, 2) * 4)),
+    ("I min", (1, 0, 0), sp.Rational(1, 2), 4 * sp.Integer(2) ** 3 / 12),
+    ("B below water", (1, 0, 0), sp.Rational(1, 2), 4 / (3 * sp.pi)),
+    ("metacentric height", (0, 1, 0), sp.Rational(1, 2), sp.Integer(0)),
+])
+def test_the_cylinder_upright_tilted_and_lying_is_enclosed_about_its_closed_forms(quantity, up, s, exact):
+    w = _cylinder(quantity, up, s)
+    value = w.enclose(w.instances[0], 128)
+    with working_precision(160):
+        assert isinstance(value, arb) and value.overlaps(ball(exact, 160)) and value.rad() < arb(2) ** -100
+
+
+def test_a_cylinder_s_draught_is_bracketed_about_a_density_ball_wider_than_the_precision():
+    # lying at s = 1/2 +- 2^-70 (a density found as a root): the bracket holds the axis's draught 0 at s = 1/2
+    from symfloat.engine.cylinder_enclosure import cylinder_state
+    with working_precision(160):
+        s = (arb(1) / 2).union(arb(1) / 2 + arb(2) ** -70).union(arb(1) / 2 - arb(2) ** -70)
+        st = cylinder_state(arb(1), Fraction(2), (arb(1), arb(0), arb(0)), s, 128)
+        assert st.t.overlaps(arb(0)) and st.t.rad() < arb(2) ** -60
+
+
+def test_a_cylinder_quantity_is_enclosed_and_a_value_off_by_1e_12_refuted():
+    w = _cylinder("metacentric height", (0, 0, 1), sp.Rational(3, 10))
+    gm = sp.Rational(1, 16) / sp.Rational(3, 10) - sp.Rational(7, 5)
+    out = w.run({"q": chain(gm)})["q"]
+    assert record_decision(_certified(out)) == "agrees" and out.agrees
+    off = w.run({"q": chain(gm + sp.Rational(1, 10 ** 12))})["q"]
+    assert record_decision(_certified(off)) == "refuted" and not off.agrees and not off.undecided
+
+
+def test_a_cylinder_s_density_threshold_and_tilted_equilibrium_are_proven_roots():
+    Body, _, _, FloatingRootWitness, _, _, _, Root = _floating()
+    from symfloat.engine.floating_witness import MEASURED
+    rho, s0 = sp.symbols("rho s0", positive=True)
+    threshold = FloatingRootWitness(
+        "threshold", "the lower zero of the upright cylinder's metacentric height", ("s0",), (Case({}, label="2r = L"),),
+        body=Body.cylinder(sp.Rational(1, 2), 1), up=(0, 0, 1), density=rho, quantity=s0,
+        roots=((s0, Root.scan("metacentric height", rho, sp.Rational(1, 100), sp.Rational(49, 100), 24)),))
+    lower = (2 - sp.sqrt(2)) / 4
+    assert record_decision(_certified(threshold.run({"s0": chain(lower)})["s0"])) == "agrees"
+    assert record_decision(_certified(threshold.run({"s0": chain(lower + sp.Rational(1, 10 ** 12))})["s0"])) \
+        == "refuted"
+    arm = -sp.cos(PSI_C) * MEASURED["B - G, x"] + sp.sin(PSI_C) * MEASURED["B - G, z"]
+    tilt = FloatingRootWitness(
+        "tilt", "tan^2 of the cylinder's tilted equilibrium", ("t2",), (Case({}, label="example 10"),),
+        body=Body.cylinder(sp.Rational(8, 5), sp.Rational(5, 2)), up=(sp.sin(PSI_C), 0, sp.cos(PSI_C)),
+        density=sp.Rational(3, 5), quantity=sp.tan(PSI_C) ** 2,
+        roots=((PSI_C, Root.scan(arm, PSI_C, sp.Rational(1, 50), sp.Rational(3, 2), 30)),))
+    assert record_decision(_certified(tilt.run({"t2": chain(sp.Rational(11, 32))})["t2"])) == "agrees"
+    assert record_decision(_certified(tilt.run({"t2": chain(sp.Rational(11, 32) - sp.Rational(1, 10 ** 12))})
+                                      ["t2"])) == "refuted"
+    # at the contact the water plane passes through the upper rim: the branches of a cut base are joined
+    contact = replace(tilt, name="contact", targets=("tc",), quantity=sp.tan(PSI_C),
+                      roots=((PSI_C, Root.scan(MEASURED["upper base above water"], PSI_C, sp.Rational(1, 50),
+                                               sp.Rational(3, 2), 30)),))
+    assert record_decision(_certified(contact.run({"tc": chain(sp.Rational(5, 8))})["tc"])) == "agrees"
+    assert record_decision(_certified(contact.run({"tc": chain(sp.Rational(5, 8) + sp.Rational(1, 10 ** 12))})
+                                      ["tc"])) == "refuted"
 
 
 def test_a_floating_kind_without_a_rigorous_method_keeps_its_former_comparison():

@@ -438,8 +438,9 @@ def closed_ball(expr, params, extra, bits):
 def quantity_balls(witness, params, extra, body, bits):
     """The quantities of the floating *witness* (its ``quantity``, one or a tuple) of *body* at *params*
     (exact) and *extra* (balls), as a tuple of balls; ``None`` where a quantity or the body has no rigorous
-    method here (a tilt's wedges, a limit, a sign, a count, a split part, a cylinder); :class:`Ambiguous`
-    where the enclosure cannot be had at *bits*."""
+    method here (a tilt's wedges, a limit, a sign, a count, a split part); a cylinder's state is
+    :func:`symfloat.engine.cylinder_enclosure.cylinder_state`; :class:`Ambiguous` where the enclosure cannot be
+    had at *bits*."""
     from .floating_witness import MEASURED
     if witness.limit is not None or witness.reference is not None or getattr(witness, "series", None) is not None:
         return None
@@ -448,17 +449,44 @@ def quantity_balls(witness, params, extra, body, bits):
     names |= {n for q in items if not isinstance(q, str) for n, s in MEASURED.items() if s in q.free_symbols}
     if not names <= set(FIELDS) | set(EXTREMES):
         return None
+    fine = bits + GUARD_BITS
+    if body.kind == "cylinder":
+        st = _cylinder(witness, params, extra, body, bits)
+        if st is None:
+            return None
+        return _read_state(witness, st, items, names, params, extra, fine)
     exact_body = ball_body(body, params)
     if exact_body is None:
         return None
-    fine = bits + GUARD_BITS
     if exact_body.G is not None:
         exact_body = BallBody(exact_body.faces, exact_body.exact,
                               tuple(closed_ball(x, params, extra, fine) for x in exact_body.G))
     up = tuple(closed_ball(x, params, extra, fine) for x in _rational_direction(witness.up, params, extra))
     density = _density(witness, params, extra, exact_body, up, fine)
     st = floating_state(exact_body, up, density, bits)
-    from .floating_witness import QUANTITIES
+    return _read_state(witness, st, items, names, params, extra, fine)
+
+
+def _cylinder(witness, params, extra, body, bits):
+    """The :class:`BallState` of a cylinder witness's body (radius a ball, possibly a root's; length exact),
+    or ``None`` where its length is not rational at *params* or the body is a ``Loaded`` or ``Marked`` one."""
+    from .cylinder_enclosure import cylinder_state
+    from .floating_witness import Body
+    if type(body) is not Body:
+        return None
+    fine = bits + GUARD_BITS
+    length = sp.sympify(body.dims[1]).xreplace(params)
+    if not length.is_Rational:
+        return None
+    radius = closed_ball(body.dims[0], params, extra, fine)
+    up = tuple(closed_ball(x, params, extra, fine) for x in _rational_direction(witness.up, params, extra))
+    density = closed_ball(witness.density, params, extra, fine)
+    return cylinder_state(radius, Fraction(int(length.p), int(length.q)), up, density, bits)
+
+
+def _read_state(witness, st, items, names, params, extra, fine):
+    """The witness's quantities *items* (the measured *names* among them) read off the ball state *st*."""
+    from .floating_witness import MEASURED, QUANTITIES
     with working_precision(fine):
         read = {n: (EXTREMES[n](st) if n in EXTREMES else QUANTITIES[n][1](st, None)) for n in names}
         return tuple(read[q] if isinstance(q, str) else
@@ -530,15 +558,21 @@ def _readable(quantity) -> bool:
 
 def _has_method(witness, body, case) -> bool:
     """Whether the witness has a ball method at *case*, judged before any work: no limit, series or tilt from a
-    reference, a box or prism whose dimensions the case fixes, each root an expression, an ``At`` or a ``Root``
-    without nested roots, each quantity read off the state (:func:`_readable`)."""
+    reference, a box or prism whose dimensions the case fixes or a cylinder whose length it fixes (its radius
+    may be a root), each root an expression, an ``At`` or a ``Root`` without nested roots, each quantity read
+    off the state (:func:`_readable`)."""
     from .floating_witness import MEASURED, At, Body, Loaded, Marked, Root
     if witness.limit is not None or witness.reference is not None or getattr(witness, "series", None) is not None:
         return False
-    if type(body) not in (Body, Loaded, Marked) or body.kind not in ("box", "prism"):
-        return False
-    dims = body.dims if body.kind == "box" else (*(c for p in body.dims[0] for c in p), body.dims[1])
     roots = {symbol for symbol, _ in getattr(witness, "roots", ())}
+    if type(body) is Body and body.kind == "cylinder":
+        if getattr(witness, "through", None) is not None:
+            return False                                        # a cut's share of a cylinder: not ported
+        dims = (body.dims[1],)
+    elif type(body) not in (Body, Loaded, Marked) or body.kind not in ("box", "prism"):
+        return False
+    else:
+        dims = body.dims if body.kind == "box" else (*(c for p in body.dims[0] for c in p), body.dims[1])
     if any(sp.sympify(x).free_symbols - (set(case.params) - roots) for x in dims):
         return False                                            # a dimension a root sets: no exact vertices
     for _, root in getattr(witness, "roots", ()):

@@ -333,8 +333,9 @@ class FloatingWitness(MeasuredWitness):
 
     def enclose(self, case, bits):
         """The quantity in ball arithmetic (:func:`symfloat.engine.floating_enclosure.enclosed_values`: exact
-        clipping with proven sides, the draught and each root a proven bracket), or ``None`` where it has no
-        rigorous method (a limit, a tilt's wedges, a cylinder, a nested root search)."""
+        clipping with proven sides, a cylinder's slice integrals by their primitives in balls
+        (:mod:`symfloat.engine.cylinder_enclosure`), the draught and each root a proven bracket), or ``None`` where
+        it has no rigorous method (a limit, a tilt's wedges, a nested root search)."""
         from .floating_enclosure import enclosed_values
         return enclosed_values(self, case, bits)
 
