@@ -370,6 +370,22 @@ def test_a_cut_through_vertices_joins_both_sides_and_stays_exact_enough():
                                       ["diff"])) == "refuted"
 
 
+def test_vertices_of_one_height_reach_the_water_together():
+    # the unit cube heeled by phi = 1/3 about its z-axis (up (sin phi, cos phi, 0), no rational direction) at the
+    # density 1 - tan(phi)/2 floats with the edge x = -1/2, y = 1/2 in the water plane: its two ends have one height
+    # for every up vector of the balls (the z-component an exact 0), so they lie on one side together; split, the
+    # crossing on that edge divided by a ball holding 0 and nothing was enclosed.  The waterplane: 1/cos(phi) by 1.
+    Body, _, _, _, FloatingWitness, _, _, _ = _floating()
+    phi = sp.Rational(1, 3)
+    edge = FloatingWitness("edge", "the heeled cube with an edge at the water", ("a",), (Case({}, label="unit cube"),),
+                           body=Body.box(1, 1, 1), up=(sp.sin(phi), sp.cos(phi), 0), density=1 - sp.tan(phi) / 2,
+                           quantity="waterplane area")
+    out = edge.run({"a": chain(1 / sp.cos(phi))})["a"]
+    assert record_decision(_certified(out)) == "agrees" and out.agrees and not out.undecided
+    assert record_decision(_certified(edge.run({"a": chain(1 / sp.cos(phi) + sp.Rational(1, 10 ** 12))})["a"])) \
+        == "refuted"
+
+
 def test_a_floating_kind_without_a_rigorous_method_keeps_its_former_comparison():
     Body, _, _, _, FloatingWitness, _, _, _ = _floating()
     psi = sp.Symbol("psi", real=True)
