@@ -204,6 +204,15 @@ def test_a_curve_root_is_proven_by_a_sign_change():
     assert record_decision(_certified(w.run({"y": chain(sp.Rational(9683, 10000))})["y"])) == "refuted"  # 0.9682 + 1
 
 
+def test_cot_is_enclosed():
+    # cot(1/2) = cos(1/2)/sin(1/2) = 1.8304877217124519...; Scheeffer IX's (cot) prints cot phi_2
+    with working_precision(128):
+        by_sine = (arb(1) / 2).cos() / (arb(1) / 2).sin()
+        assert ball(sp.cot(sp.Rational(1, 2)), 128).overlaps(by_sine)
+        assert not ball(sp.cot(sp.Rational(1, 2)) + sp.Rational(1, 10 ** 12), 128).overlaps(by_sine)
+    assert not ball(sp.cot(x), 128, {x: arb(0, 1e-3)}).is_finite()         # a ball holding the pole at 0
+
+
 def test_a_reading_without_a_rigorous_rule_is_undecided_and_still_compared():
     # Lambert's W is not on the enclosure's whitelist: 4/3 pi r^3 written with W(1) e^W(1) = 1 (W(1) is the omega
     # constant, e^-W(1) = W(1))
