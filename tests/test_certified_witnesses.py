@@ -204,6 +204,18 @@ def test_a_curve_root_is_proven_by_a_sign_change():
     assert record_decision(_certified(w.run({"y": chain(sp.Rational(9683, 10000))})["y"])) == "refuted"  # 0.9682 + 1
 
 
+def test_a_root_that_touches_zero_is_exact():
+    # the ordinate of the ellipse at X = a is 0, a double root of the equation (no sign change to prove): exact
+    # where the equation vanishes at the float64 root in exact arithmetic (Graefe's triaxial stump cut at x' = a)
+    X, Y, a, b = sp.symbols("X Y a b", positive=True)
+    w = CurveRoot("y", "the ellipse's ordinate at its vertex", ("y",), (Case({a: 2, b: 1, X: 2}),),
+                  equation=X ** 2 / a ** 2 + Y ** 2 / b ** 2 - 1, variable=Y, bracket=(0, b))
+    assert w.enclose(w.instances[0], 128) == 0
+    record = _certified(w.run({"y": chain(b * sp.sqrt(1 - X ** 2 / a ** 2))})["y"])
+    assert record_decision(record) == "agrees" and record["abs_error"] == 0.0
+    assert record_decision(_certified(w.run({"y": chain(sp.Rational(1, 10 ** 12))})["y"])) == "refuted"
+
+
 def test_cot_is_enclosed():
     # cot(1/2) = cos(1/2)/sin(1/2) = 1.8304877217124519...; Scheeffer IX's (cot) prints cot phi_2
     with working_precision(128):
