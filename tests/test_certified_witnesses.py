@@ -232,6 +232,7 @@ def test_a_reading_without_a_rigorous_rule_is_undecided_and_still_compared():
     out = SPHERE.run({"v": chain(omega * sp.exp(omega) * sp.pi * sp.Rational(4, 3) * r ** 3)})["v"]
     record = _certified(out)
     assert "LambertW" in record["unsupported"] and record_decision(record) == "undecided" and out.undecided
+    assert out.note.endswith("undecided, no finite enclosure of the difference at 128 bits")    # not 'too wide'
     assert record["bits"] == 128                  # no precision raised for a node no precision can enclose
     assert [record_decision(r) for r in out.records[1:]] == ["agrees"] * len(SPHERE.methods)    # the former route
 
