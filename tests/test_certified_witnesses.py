@@ -205,6 +205,27 @@ def test_a_curve_root_is_proven_by_a_sign_change():
     assert record_decision(_certified(w.run({"y": chain(sp.Rational(9683, 10000))})["y"])) == "refuted"  # 0.9682 + 1
 
 
+def test_a_root_that_touches_zero_is_exact():
+    # the ordinate of the ellipse at X = a is 0, a double root of the equation (no sign change to prove): exact
+    # where the equation vanishes at the float64 root in exact arithmetic (Graefe's triaxial stump cut at x' = a)
+    X, Y, a, b = sp.symbols("X Y a b", positive=True)
+    w = CurveRoot("y", "the ellipse's ordinate at its vertex", ("y",), (Case({a: 2, b: 1, X: 2}),),
+                  equation=X ** 2 / a ** 2 + Y ** 2 / b ** 2 - 1, variable=Y, bracket=(0, b))
+    assert w.enclose(w.instances[0], 128) == 0
+    record = _certified(w.run({"y": chain(b * sp.sqrt(1 - X ** 2 / a ** 2))})["y"])
+    assert record_decision(record) == "agrees" and record["abs_error"] == 0.0
+    assert record_decision(_certified(w.run({"y": chain(sp.Rational(1, 10 ** 12))})["y"])) == "refuted"
+
+
+def test_cot_is_enclosed():
+    # cot(1/2) = cos(1/2)/sin(1/2) = 1.8304877217124519...; Scheeffer IX's (cot) prints cot phi_2
+    with working_precision(128):
+        by_sine = (arb(1) / 2).cos() / (arb(1) / 2).sin()
+        assert ball(sp.cot(sp.Rational(1, 2)), 128).overlaps(by_sine)
+        assert not ball(sp.cot(sp.Rational(1, 2)) + sp.Rational(1, 10 ** 12), 128).overlaps(by_sine)
+    assert not ball(sp.cot(x), 128, {x: arb(0, 1e-3)}).is_finite()         # a ball holding the pole at 0
+
+
 def test_a_reading_without_a_rigorous_rule_is_undecided_and_still_compared():
     # Lambert's W is not on the enclosure's whitelist: 4/3 pi r^3 written with W(1) e^W(1) = 1 (W(1) is the omega
     # constant, e^-W(1) = W(1))
@@ -212,6 +233,7 @@ def test_a_reading_without_a_rigorous_rule_is_undecided_and_still_compared():
     out = SPHERE.run({"v": chain(omega * sp.exp(omega) * sp.pi * sp.Rational(4, 3) * r ** 3)})["v"]
     record = _certified(out)
     assert "LambertW" in record["unsupported"] and record_decision(record) == "undecided" and out.undecided
+    assert out.note.endswith("undecided, no finite enclosure of the difference at 128 bits")    # not 'too wide'
     assert record["bits"] == 128                  # no precision raised for a node no precision can enclose
     assert [record_decision(r) for r in out.records[1:]] == ["agrees"] * len(SPHERE.methods)    # the former route
 
@@ -458,6 +480,22 @@ def test_a_cylinder_s_density_threshold_and_tilted_equilibrium_are_proven_roots(
     assert record_decision(_certified(contact.run({"tc": chain(sp.Rational(5, 8))})["tc"])) == "agrees"
     assert record_decision(_certified(contact.run({"tc": chain(sp.Rational(5, 8) + sp.Rational(1, 10 ** 12))})
                                       ["tc"])) == "refuted"
+
+
+def test_vertices_of_one_height_reach_the_water_together():
+    # the unit cube heeled by phi = 1/3 about its z-axis (up (sin phi, cos phi, 0), no rational direction) at the
+    # density 1 - tan(phi)/2 floats with the edge x = -1/2, y = 1/2 in the water plane: its two ends have one height
+    # for every up vector of the balls (the z-component an exact 0), so they lie on one side together; split, the
+    # crossing on that edge divided by a ball holding 0 and nothing was enclosed.  The waterplane: 1/cos(phi) by 1.
+    Body, _, _, _, FloatingWitness, _, _, _ = _floating()
+    phi = sp.Rational(1, 3)
+    edge = FloatingWitness("edge", "the heeled cube with an edge at the water", ("a",), (Case({}, label="unit cube"),),
+                           body=Body.box(1, 1, 1), up=(sp.sin(phi), sp.cos(phi), 0), density=1 - sp.tan(phi) / 2,
+                           quantity="waterplane area")
+    out = edge.run({"a": chain(1 / sp.cos(phi))})["a"]
+    assert record_decision(_certified(out)) == "agrees" and out.agrees and not out.undecided
+    assert record_decision(_certified(edge.run({"a": chain(1 / sp.cos(phi) + sp.Rational(1, 10 ** 12))})["a"])) \
+        == "refuted"
 
 
 def test_a_floating_kind_without_a_rigorous_method_keeps_its_former_comparison():

@@ -113,6 +113,17 @@ def test_threshold_23_32_on_the_clipped_square_section():
     assert abs(below - 0.01) < 1e-12 and abs(above + 0.01) < 1e-12
 
 
+def test_the_clipped_quantity_where_corner_c_reaches_the_water_is_enclosed():
+    # (141) at a = 6/5, b = 1, s = 7/10: F(2 sigma) = 2 (3/10)^2 ((6/5)^2 - 2 (3/10)(9/5)) = (9/50)(36/100) = 0.0648.
+    # At that tilt the two ends of the edge through C (z = -1 and z = 1) reach the water together; their heights
+    # are balls (the tilt is a root), and the witness is enclosed only because they lie on one side together
+    from flint import arb
+    w = _witness("F-low")
+    value = w.enclose(Case({ST.a: sp.Rational(6, 5), ST.b: 1, ST.c: 2, ST.s: sp.Rational(7, 10)}), 128)
+    assert value.is_finite() and value.overlaps(arb(648) / 10000)
+    assert not value.overlaps(arb(648) / 10000 + arb(10) ** -12)
+
+
 def test_the_measured_slope_is_the_derivative_of_the_clipped_potential():
     # the module's SLOPE_C (potential_slope of its turn about c) against a central difference of G above B
     from symfloat.engine.floating_witness import Body, FloatingWitness

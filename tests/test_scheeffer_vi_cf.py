@@ -188,6 +188,22 @@ def test_half_density_cube_at_45_degrees_is_not_stable():
         assert abs(potential(CUBE, math.pi / 4, w, 0.5) - e0 - closed) < 1e-15 and closed < 0
 
 
+def test_half_density_cube_turned_is_enclosed_at_the_closed_form():
+    # the witness of the same change (a = 1, omega = 1/10) in balls: its upright reference, omega = 0, floats with
+    # two edges in the water plane, whose ends have heights that are balls (sin 45 deg) but one height each; only
+    # with each pair on one side together is it enclosed.  Closed form as above: -5.998391737295090614e-6
+    from flint import arb
+    from symfloat.engine.enclosure import ball
+    from symfloat.engine.witness import Case
+    w = next(x for x in D.witnesses if x.name == "half-cube-turned")
+    omega = sp.Rational(1, 10)
+    d = (sp.sin(omega) + sp.cos(omega) - 1) / 2
+    closed = ball(-sp.sqrt(2) * d ** 4 / (12 * sp.sin(omega) * sp.cos(omega)), 128)
+    value = w.enclose(Case({PACKAGE.statements.a: 1, PACKAGE.statements.om: omega}), 128)
+    assert value.is_finite() and value.overlaps(closed) and value.rad() < arb(2) ** -100
+    assert not value.overlaps(closed + arb(10) ** -15)
+
+
 def test_moment_of_regular_polygons_of_equal_area_decreases_with_n():
     # VI.F: T_1/F_1^2 from the clipped waterplane of regular prisms, n = 3..12, between 1/(4 pi) and 1/(6 sqrt 3).
     vals = []

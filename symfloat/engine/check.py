@@ -34,7 +34,7 @@ from .print_corrections import print_corrections, smallest_correction
 from .identity import Domain, IdentityResult, check_identity, check_rounded
 from .proofs import ProofBook
 from .relation import check_relation
-from .witness import record_decision
+from .witness import record_decision, undecided_reason
 
 __all__ = ["StepReport", "FormulaReport", "DerivationReport", "check_derivation", "judge", "step_failure",
            "rejudged", "Unsound"]
@@ -441,8 +441,7 @@ def _erratum(p, ident, corr, corrected_out) -> dict:
         who = "the definition route" if o.witness == DefinitionRoute.name else "a first-principles witness"
         certified = [r for r in o.records if r.get("certified")]
         if certified and record_decision(certified[0]) == "undecided":
-            found.append(f"{who} cannot decide the correction (its enclosure is too wide at "
-                         f"{certified[0]['bits']} bits)")
+            found.append(f"{who} cannot decide the correction ({undecided_reason(certified[0])})")
         elif certified:
             found.append(f"{who} agrees with the correction to ${tex_error(certified[0]['rel_error'])}$, proven "
                          f"({certified[0]['method']}, {certified[0]['bits']} bits)")

@@ -7,10 +7,11 @@ the exact value.  The nodes: ``Integer``, ``Rational`` (exact numerator over exa
 print's own rounding is the allowance its witness gives it, not part of the enclosure), ``pi``, ``E``,
 ``I``, ``Add``, ``Mul``, ``Pow`` (any exponent; an integer power is exact up to rounding, a half power a
 square root, another the principal branch ``exp(t log b)``), ``exp``, ``log``, ``sin``, ``cos``, ``tan``,
-``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``, ``tanh``, ``gamma``, ``Abs``, ``sign`` (decided where the
-ball excludes 0), ``Min`` and ``Max`` (of real arguments, :func:`_extreme`); a function of a
-derivation (Euler's ``Ib``, ``IY``) by the closed form its ``rewrite(gamma)`` gives, which the derivation
-proves in a step.  Any other node raises :class:`Unsupported` naming it.
+``cot`` (a ball that holds a pole gives a non-finite one), ``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``,
+``tanh``, ``gamma``, ``Abs``, ``sign`` (decided where the ball excludes 0), ``Min`` and ``Max`` (of real
+arguments, :func:`_extreme`); a function of a derivation (Euler's ``Ib``, ``IY``) by the closed form its
+``rewrite(gamma)`` gives, which the derivation proves in a step.  Any other node raises :class:`Unsupported`
+naming it.
 
 :func:`integral` encloses ``∫_lo^hi f(v) dv`` by ``acb.integral`` (Petras' adaptive Gauss–Legendre with
 rigorous error bounds, FLINT's ``acb_calc_integrate``).  The integrand must be holomorphic on a
@@ -127,6 +128,7 @@ _UNARY = {
     sp.sin: lambda z, a: z.sin(),
     sp.cos: lambda z, a: z.cos(),
     sp.tan: lambda z, a: z.tan(),
+    sp.cot: lambda z, a: z.cot(),
     sp.sinh: lambda z, a: z.sinh(),
     sp.cosh: lambda z, a: z.cosh(),
     sp.tanh: lambda z, a: z.tanh(),

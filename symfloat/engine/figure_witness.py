@@ -346,11 +346,17 @@ class CurveRoot(MeasuredWitness):
             return float(roots[0]) if dps <= 15 else +mpmath.mpf(roots[0])
 
     def enclose(self, case, bits):
-        """The float64 root (which root: the scan's first) proven by a sign change of the equation in balls
-        at ``±2^-40 (1 + |root|)`` around it and narrowed by bisection
+        """The float64 root (which root: the scan's first) exact where the equation vanishes there in exact
+        arithmetic (its binary value substituted into an equation without Floats, whose SymPy arithmetic would
+        round): a root that touches zero without a sign change, the section through the vertex of a body,
+        ``(x'/a)^2 + (t/c)^2 - 1`` at ``x' = a``, ``t = 0``.  Else proven by a sign change of the equation in
+        balls at ``±2^-40 (1 + |root|)`` around it and narrowed by bisection
         (:func:`~symfloat.engine.enclosure.sign_change_root`); non-finite (undecided) without that sign change."""
         root = self.measure(case, FIGURE_METHODS[0])
-        f = real_function(_at(self.equation, case.params), (self.variable,))
+        equation = _at(self.equation, case.params)
+        if not equation.has(sp.Float) and equation.xreplace({self.variable: sp.Rational(root)}) == 0:
+            return Fraction(root)
+        f = real_function(equation, (self.variable,))
         step = math.ldexp(1 + abs(root), -40)
         return sign_change_root(f, root - step, root + step, bits)
 

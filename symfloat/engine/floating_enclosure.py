@@ -121,16 +121,19 @@ MAX_OPEN = 6          # vertices that may lie on either side of the plane: at mo
 def _assignments(body, w, tau):
     """The sides (-1 below, 1 above) that the vertices may have.  A vertex exactly on the plane (its height and
     *tau* exact and equal) counts as above: the edges from below reach it, so it is a corner of the cap.  Each
-    vertex whose height's ball meets *tau*'s otherwise may lie either way, vertices of one exact height together
-    (at most :data:`MAX_OPEN` such groups, else :class:`Ambiguous`); an assignment with no vertex below or none
-    above is left out (a floating body, ``0 < s < 1``, has both)."""
-    fixed, groups = [], {}
+    vertex whose height's ball meets *tau*'s otherwise may lie either way, vertices of one height together
+    (:func:`_same_height`; at most :data:`MAX_OPEN` such groups, else :class:`Ambiguous`); an assignment with no
+    vertex below or none above is left out (a floating body, ``0 < s < 1``, has both)."""
+    fixed, free = [], []
     for i, p in enumerate(body.points()):
         h = _dot(w, p)
         fixed.append(-1 if h < tau else 1 if h > tau or h == tau else None)      # ==: two exact equal numbers
         if fixed[-1] is None:
-            groups.setdefault(h.mid() if h.rad() == 0 else -1 - i, []).append(i)
-    free = list(groups.values())
+            group = next((g for g in free if _same_height(w, body.exact[g[0]], body.exact[i])), None)
+            if group is None:
+                free.append([i])
+            else:
+                group.append(i)
     if len(free) > MAX_OPEN:
         raise Ambiguous(f"the water plane may pass through {len(free)} vertices within the enclosure")
     out = []
@@ -142,6 +145,17 @@ def _assignments(body, w, tau):
         if -1 in sides and 1 in sides:
             out.append(sides)
     return out
+
+
+def _same_height(w, p, q) -> bool:
+    """Whether the vertices *p* and *q* (Fraction triples) have the same height ``w . p = w . q`` for every up
+    vector in the balls *w*: ``w . (p - q)``, the difference taken exactly, is an exact 0 (radius 0), which
+    ball arithmetic gives only where each term is exact, a component of *w* with a radius multiplied by an
+    exact 0 (the two ends of an edge along the tilt axis, ``w = (sin phi, cos phi, 0)``, at the tilt where
+    they reach the water together).  Split between the two sides, such a pair would be a plane's cut between
+    two points of one height, and the crossing on their edge a division by a ball that holds 0."""
+    d = _dot(w, tuple(exact(p[k] - q[k]) for k in range(3)))
+    return d.rad() == 0 and d.mid() == 0
 
 
 def clipped(body, w, tau, side):

@@ -30,7 +30,7 @@ from ..model.claim import members
 from .enclosure import Unsupported, ball, exact, integral, lower, upper, working_precision
 from .quadrature import DEFAULT_METHODS, TANH_SINH_15, TANH_SINH_50
 
-__all__ = ["Case", "Outcome", "record_agrees", "record_decision", "CERTIFIED", "MeasuredWitness", "Precision", "SectionIntegral", "PlaneSections", "SECTION",
+__all__ = ["Case", "Outcome", "record_agrees", "record_decision", "undecided_reason", "CERTIFIED", "MeasuredWitness", "Precision", "SectionIntegral", "PlaneSections", "SECTION",
            "HullWitness", "SideFaces",
            "ExactHull", "HullSlices", "FaceSections", "ConvergenceOrder"]
 
@@ -112,6 +112,22 @@ def record_decision(record: dict) -> str:
     else:
         within = False
     return "agrees" if within else "refuted"
+
+
+def undecided_reason(record: dict) -> str:
+    """Why a certified record is undecided, in words without formulas (an erratum's evidence quotes them): no
+    finite enclosure (``abs_error`` is ``null``: a node without a rigorous rule, a quantity or a root not
+    enclosed; the record's ``unsupported`` says which), else the width of the ball at its precision.
+
+    >>> undecided_reason({"certified": True, "bits": 1024, "abs_error": 1e-3})
+    'the enclosure of the difference is too wide at 1024 bits'
+    >>> undecided_reason({"certified": True, "bits": 128, "abs_error": None,
+    ...                   "unsupported": "no enclosure for a LambertW node (LambertW(1))"})
+    'no finite enclosure of the difference at 128 bits'
+    """
+    if record["abs_error"] is None:
+        return f"no finite enclosure of the difference at {record['bits']} bits"
+    return f"the enclosure of the difference is too wide at {record['bits']} bits"
 
 
 def record_agrees(record: dict) -> bool:
@@ -279,8 +295,7 @@ class MeasuredWitness:
                     out = Outcome(self.name, [record] + self._proven(measured, enclosures, bits))
             out.judged()
             if out.undecided:
-                out.note = (f"{self.description}: undecided, the enclosure of the difference is too wide at "
-                            f"{out.records[0]['bits']} bits")
+                out.note = f"{self.description}: undecided, {undecided_reason(out.records[0])}"
             elif not out.agrees:
                 out.note = f"{self.description}: disagrees beyond the print's rounding or a method's accuracy"
             outcomes[target] = out

@@ -101,8 +101,8 @@ def verification_table(reports: list[DerivationReport], elapsed: float | None = 
                      f"errata have a witness ({x['formulas'] / x['with_numeric_content']:.0%})")
     if s["certified"]:
         lines.append("certified witness decisions (Arb): " + ", ".join(f"{n} {k}" for k, n in s["certified"].items())
-                     + ("" if "undecided" not in s["certified"] else " (undecided: the enclosure stayed too wide to "
-                        "decide at the largest precision; not counted as agreement)"))
+                     + ("" if "undecided" not in s["certified"] else " (undecided: no finite enclosure, or one "
+                        "still too wide to decide at the largest precision; not counted as agreement)"))
     for msg in s["failures"]:
         lines.append(f"FAILURE: {msg}")
     return "\n".join(lines) + "\n"
