@@ -8,7 +8,7 @@ lowest point the area pi (r^2 - (z - r)^2); at r = 1 the volume is 4.18879020478
 the volume 1/6 and the centroid height 1/4; the prismatoid of a square under a smaller square has 4 side faces,
 none of them triangles (each joins a side of the base to the parallel side of the top).
 """
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from fractions import Fraction
 
 import pytest
@@ -105,6 +105,51 @@ def test_the_methods_errors_are_proven_bounds_against_the_enclosure():
         assert record["rel_error"] <= record["rel_tolerance"]      # each method within its accuracy
 
 
+_MEASURED = []      # the methods a _CountedBall measured, in order
+
+
+@dataclass(frozen=True)
+class _CountedBall(SectionIntegral):
+    """The ball of :data:`SPHERE` noting each method it measures; ``blur`` widens its enclosure by that much."""
+
+    blur: float = 0.0
+
+    def measure(self, case, method):
+        _MEASURED.append(method.name)
+        return super().measure(case, method)
+
+    def enclose(self, case, bits):
+        with working_precision(bits):
+            return super().enclose(case, bits) + arb(0, self.blur)
+
+
+def _counted(blur=0.0):
+    return _CountedBall("ball", "the ball by its sections", ("v",), (UNIT,), area=sp.pi * (r ** 2 - (z - r) ** 2),
+                        z=z, bounds=(0, 2 * r), blur=blur)
+
+
+def test_a_decided_formula_measures_only_the_cheapest_method_beside_the_ball():
+    # agreeing (4/3 pi r^3) and refuted (4.18880, one unit off in the last of six digits): the ball decides, so
+    # the finer methods (tanh-sinh at 50 digits, Gauss-Legendre) are not measured; the first of the least digits
+    # (tanh-sinh at 15) is, once for both formulas, and its proven error stands beside the certified record
+    w = _counted()
+    _MEASURED.clear()
+    out = w.run({"v": chain(sp.Rational(4, 3) * sp.pi * r ** 3), "v#off": chain(sp.Rational("4.18880"))},
+                {"v": sp.Rational(5, 10 ** 6)})
+    assert w.cheapest == (SPHERE.methods[0],) and _MEASURED == [SPHERE.methods[0].name]
+    assert out["v"].agrees and record_decision(_certified(out["v#off"])) == "refuted"
+    for o in out.values():
+        assert [r["method"] for r in o.records] == [CERTIFIED, SPHERE.methods[0].name] and o.records[1]["proven"]
+
+
+def test_an_undecided_formula_measures_every_method():
+    # an enclosure 10^-3 wide at every precision cannot decide 4/3 pi r^3: every method's proven error is recorded
+    _MEASURED.clear()
+    out = _counted(1e-3).run({"v": chain(sp.Rational(4, 3) * sp.pi * r ** 3)})["v"]
+    assert out.undecided and _MEASURED == [m.name for m in SPHERE.methods]
+    assert [r["method"] for r in out.records] == [CERTIFIED] + [m.name for m in SPHERE.methods]
+
+
 def test_plane_sections_decide_by_the_ball():
     # the sphere of radius r cut at the heights 0 and r/2 (areas pi r^2, 3 pi r^2 / 4): the radius and the ratio
     w = PlaneSections("discs", "two sections", ("t",), (Case({r: sp.Rational(3, 2)}),),
@@ -169,6 +214,13 @@ def test_an_enclosure_too_wide_is_undecided_and_never_passed():
     assert (verdict, failures) == ("verified", [])
     f.identity = {"status": "refuted"}
     assert "the print is refuted but the witnesses agree with it" not in judge(f, True)[2]
+
+
+def test_the_cheapest_method_is_the_first_of_the_least_digits():
+    hull = HullWitness("tet", "a tetrahedron", ("v",), (TETRAHEDRON,))
+    assert [m.name for m in hull.cheapest] == ["slices, Gauss-Legendre n=3, 15 digits"]    # not the exact hull
+    assert SideFaces("f", "faces", ("n",), ()).cheapest == (SideFaces.methods[0],)      # both exact: the first
+    assert _Blurred("blur", "a blurred third", ("t",), ()).cheapest == ()
 
 
 def test_a_construction_is_enclosed_point_by_point():

@@ -10,7 +10,9 @@ Each comparison becomes a record ``{method, abs_error, rel_error, seconds}``:
 the error of the formula's value against that method's measurement (maximum
 over the cases) and the time the method took (sum over the cases), with the
 bound it is held to (:func:`record_agrees`), so that a record read back says
-by itself whether the formula agrees with the witness.
+by itself whether the formula agrees with the witness.  Where a certified
+enclosure decides, the records are its decision and the cheapest method's
+proven error (:class:`MeasuredWitness`).
 """
 from __future__ import annotations
 
@@ -237,14 +239,18 @@ class MeasuredWitness:
       **undecided**: the precision is doubled (from :data:`START_BITS` up to 8 times it) and the
       formula decided anew; still undecided at the cap, the record says so;
     * records the certified decision (``method`` :data:`CERTIFIED`, ``certified``, ``bits``, the proven
-      bounds ``abs_error_lower <= |d| <= abs_error``, ``width``, ``abs_tolerance``) and, for each other
-      method, its **proven error** against the enclosure, ``|value - mid| + rad`` (``proven``; a method
-      finer than the enclosure shows about its radius), held to ``rel_tolerance``: the method's accuracy
-      plus what the enclosure resolves, twice its relative radius (``|true - mid| + rad``) and ``2^(2-bits)``
-      for the rounding of the difference (a method that misses it fails its self-check).
+      bounds ``abs_error_lower <= |d| <= abs_error``, ``width``, ``abs_tolerance``) and, for the
+      :attr:`cheapest` method, its **proven error** against the enclosure, ``|value - mid| + rad``
+      (``proven``; a method finer than the enclosure shows about its radius), held to ``rel_tolerance``: the
+      method's accuracy plus what the enclosure resolves, twice its relative radius (``|true - mid| + rad``)
+      and ``2^(2-bits)`` for the rounding of the difference (a method that misses it fails its self-check).
+      Where the ball decides, the finer methods would add nothing to the verdict and are not measured
+      (``symfloat bench`` measures every method for the numerics report); a formula left **undecided**
+      gets the proven error of every method.
 
-    A kind without ``enclose`` (it returns ``None``) keeps the former comparison: each method's
-    measurement against the reading at :data:`REFERENCE_DIGITS`, under the method's ``rel_tolerance``."""
+    A kind without ``enclose`` (it returns ``None``), and a formula whose reading or quantity has no rigorous
+    rule (``unsupported``), keep the former comparison: every method's measurement against the reading at
+    :data:`REFERENCE_DIGITS`, under the method's ``rel_tolerance``."""
 
     name: str
     description: str
@@ -260,6 +266,13 @@ class MeasuredWitness:
             object.__setattr__(self, "cases", tuple(self.cases()))
         return self.cases
 
+    @property
+    def cheapest(self) -> tuple:
+        """The method a decided check measures beside the enclosure, as a tuple (empty for a kind without
+        methods): the first of the least working digits (``dps``; a method without them, exact rational
+        arithmetic, after every other)."""
+        return tuple(sorted(self.methods, key=lambda m: getattr(m, "dps", math.inf))[:1])
+
     def measure(self, case: Case, method):
         raise NotImplementedError  # pragma: no cover - abstract
 
@@ -271,10 +284,17 @@ class MeasuredWitness:
         """An :class:`Outcome` for each targeted reading of *readings* (name -> reading); *allowances* gives
         a printed number's rounding (name -> half a unit in its last digit)."""
         measured = {}
-        for method in self.methods:
-            t0 = time.perf_counter()
-            values = [self.measure(case, method) for case in self.instances]
-            measured[method] = (values, time.perf_counter() - t0)
+
+        def by(methods):
+            """Each of *methods* -> (its values at the cases, the seconds they took), each measured once."""
+            for method in methods:
+                if method not in measured:
+                    t0 = time.perf_counter()
+                    values = [self.measure(case, method) for case in self.instances]
+                    measured[method] = (values, time.perf_counter() - t0)
+            return {method: measured[method] for method in methods}
+
+        by(self.cheapest)       # first: an enclosure may be seeded from its measurement (a float64 root, cached)
         targets = [t for t in readings if t.split("#")[0] in self.targets]
         exact_readings = {t: [_exact_members(readings[t], case.params) for case in self.instances] for t in targets}
         for t in targets:
@@ -285,14 +305,15 @@ class MeasuredWitness:
         outcomes = {}
         for target in targets:
             if certified is None:
-                out = self._compared(readings[target], measured)
+                out = self._compared(readings[target], by(self.methods))
             else:
                 record, enclosures, bits = certified[target]
                 if "unsupported" in record:   # a node without a rigorous rule: undecided, the methods compared
-                    out = self._compared(readings[target], measured)
+                    out = self._compared(readings[target], by(self.methods))
                     out.records.insert(0, record)
-                else:
-                    out = Outcome(self.name, [record] + self._proven(measured, enclosures, bits))
+                else:                         # decided by the ball: the cheapest method's proven error beside it
+                    methods = self.methods if record_decision(record) == "undecided" else self.cheapest
+                    out = Outcome(self.name, [record] + self._proven(by(methods), enclosures, bits))
             out.judged()
             if out.undecided:
                 out.note = f"{self.description}: undecided, {undecided_reason(out.records[0])}"
