@@ -10,6 +10,7 @@ software or date metadata: the same atlas gives the same bytes.
 """
 from __future__ import annotations
 
+import functools
 import io
 import math
 from fractions import Fraction
@@ -30,10 +31,16 @@ def _edges(values: list[float]) -> list[float]:
     return [values[0] ** 2 / mids[0]] + mids + [values[-1] ** 2 / mids[-1]]
 
 
-def _ix_counts(ratios, densities):
+@functools.lru_cache(maxsize=4)
+def _ix_counts(ratios: tuple, densities: tuple) -> np.ndarray:
+    """The number of stable positions Scheeffer IX's tables give at each density (rows) and b/a (columns);
+    read-only and remembered: the slices of one atlas share their b/a columns and densities as a rule, and the
+    160 x 161 points cost seconds."""
     from .checks import _ix_tables
     tables = _ix_tables()
-    return np.array([[sum(p["stability"] == "stable" for p in tables(s, r)) for r in ratios] for s in densities])
+    counts = np.array([[sum(p["stability"] == "stable" for p in tables(s, r)) for r in ratios] for s in densities])
+    counts.flags.writeable = False
+    return counts
 
 
 def slice_png(rows, meta, ca: Fraction, reference=None) -> bytes:
@@ -57,7 +64,7 @@ def slice_png(rows, meta, ca: Fraction, reference=None) -> bytes:
                                facecolor=cmap(norm(r["stable_classes"])), edgecolor="none"))
     ratios = np.geomspace(edges[0], edges[-1], 160)
     densities = np.linspace(lo, hi, 161)
-    counts = _ix_counts([float(x) for x in ratios], [float(s) for s in densities])
+    counts = _ix_counts(tuple(float(x) for x in ratios), tuple(float(s) for s in densities))
     if counts.max() > counts.min():
         ax.contour(ratios, densities, counts, levels=[k + 0.5 for k in range(int(counts.min()), int(counts.max()))],
                    colors="white", linewidths=1.0)
