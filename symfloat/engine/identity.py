@@ -13,6 +13,7 @@ certificate.  The clock can end a search; it never decides a replayed check.
 """
 from __future__ import annotations
 
+import functools
 import hashlib
 import random
 import time
@@ -163,8 +164,11 @@ def _flatten(a, b):
     return [(a, b)]
 
 
+@functools.lru_cache(maxsize=8192, typed=True)
 def _evaluate(expr):
-    """Carry out the integrals, limits, derivatives and root counts (Sturm sequences) a claim contains."""
+    """Carry out the integrals, limits, derivatives and root counts (Sturm sequences) a claim contains;
+    once per expression (a chain's middle member is met by two links, and an integral SymPy cannot
+    carry out would be tried again at every check of a claim that still holds it)."""
     expr = sp.sympify(expr)
     if expr.has(sp.Integral, sp.Limit, sp.Derivative, sp.Subs, RealRoots):
         expr = expr.doit()
