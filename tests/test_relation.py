@@ -127,3 +127,18 @@ def test_sign_of_factors_proves_in_several_variables():
     assert (proved.status, proved.strategy) == ("proved", "sign of factors")
     assert check_relation(Holds(c * (a - 1) > 0), {}, dom, "t").status == "sampled"
     assert check_relation(Holds(c * (a - sp.Rational(3, 2)) > 0), {}, dom, "t").status == "refuted"
+
+
+@pytest.mark.parametrize("kind", [sp.StrictLessThan, sp.LessThan, sp.StrictGreaterThan, sp.GreaterThan,
+                                  sp.Equality, sp.Unequality])
+def test_sign_at_60_digits_agrees_with_the_exact_truth(kind):
+    """The 60-digit sign (symfloat.engine.sign) gives SymPy's exact truth wherever it answers, and leaves a
+    difference that is zero to the exact evaluation: tan(1/3) = 0.3463... < 2/3, tan(3/2) = 14.10... > 3,
+    and a difference that is exactly zero (s + 1 against itself at s = 1), where the sign must not answer."""
+    from symfloat.engine.sign import decided
+    for lhs, rhs, at in ((sp.tan(s), 2 * s, sp.Rational(1, 3)), (sp.tan(s), 2 * s, sp.Rational(3, 2)),
+                         (s + 1, s + 1, sp.Integer(1))):
+        rel = kind(lhs, rhs, evaluate=False)
+        exact = bool(kind(lhs.subs(s, at), rhs.subs(s, at)))
+        known = decided(rel, {s: at})
+        assert known is (None if lhs.subs(s, at) == rhs.subs(s, at) else exact)

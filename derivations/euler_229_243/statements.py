@@ -1,4 +1,6 @@
 """What Euler's §§229-243 say and how each formula is derived (see the package's docstring)."""
+import functools
+
 import sympy as sp
 from sympy.core.evalf import prec_to_dps
 
@@ -26,6 +28,22 @@ def _beta_value(P, Q, N_, B_):
 
 def _dps(prec):
     return prec_to_dps(prec) + 5
+
+
+_t = sp.Dummy("t", positive=True)       # the variable of integration of IY's expansion (one for every call)
+
+
+@functools.lru_cache(maxsize=4096, typed=True)
+def _beta_terms(j, P, Q, dY, N_, B_, C1, C2):
+    """IY's expansion into Beta integrals, once per argument list: a claim's two sides, and the links of a
+    chain, meet the same integrals at the same sampled point."""
+    Yt = C1 * _t ** N_ / B_ ** N_ + C2 * _t ** (2 * N_) / B_ ** (2 * N_)
+    w = sp.expand(Yt ** j * _t ** P * (sp.diff(Yt, _t) if dY else 1), power_base=False)
+    total = 0
+    for term in sp.Add.make_args(w):
+        coeff, e = term.as_coeff_exponent(_t)
+        total += coeff * _beta_value(e, Q, N_, B_)
+    return total
 
 
 class Ib(sp.Function):
@@ -78,14 +96,7 @@ class IY(sp.Function):
 
     @staticmethod
     def _beta_terms(j, P, Q, dY, N_, B_, C1, C2):
-        t = sp.Dummy("t", positive=True)
-        Yt = C1 * t ** N_ / B_ ** N_ + C2 * t ** (2 * N_) / B_ ** (2 * N_)
-        w = sp.expand(Yt ** j * t ** P * (sp.diff(Yt, t) if dY else 1), power_base=False)
-        total = 0
-        for term in sp.Add.make_args(w):
-            coeff, e = term.as_coeff_exponent(t)
-            total += coeff * _beta_value(e, Q, N_, B_)
-        return total
+        return _beta_terms(j, P, Q, dY, N_, B_, C1, C2)
 
     def _latex(self, printer, exp=None):
         j, P, Q, dY, N_, B_, C1, C2 = self.args

@@ -19,7 +19,7 @@ from __future__ import annotations
 import json
 import time
 from dataclasses import asdict, dataclass, field
-from functools import cache
+from functools import cache, lru_cache
 from importlib.resources import files
 
 import sympy as sp
@@ -121,8 +121,19 @@ def _substitute(expr, results):
 
 def _evaluated(expr):
     """*expr* with its arithmetic carried out: a reading keeps the print's arithmetic
-    unevaluated (``evaluate=False``, ``UnevaluatedExpr``) until it is compared."""
+    unevaluated (``evaluate=False``, ``UnevaluatedExpr``) until it is compared.  A SymPy expression
+    is carried out once (:func:`_carried_out`): a printed formula's members are met again by the
+    witnesses' readings, by the next link of a chain and by every edit the correction search tries."""
+    if isinstance(expr, sp.Basic):
+        return _carried_out(expr)
     return expr.doit() if hasattr(expr, "doit") else expr
+
+
+@lru_cache(maxsize=8192, typed=True)
+def _carried_out(expr):
+    """``expr.doit()``, once per expression (SymPy expressions are immutable and ``doit`` gives the same
+    result every time)."""
+    return expr.doit()
 
 
 def _resolved(chain, results, closed=None):

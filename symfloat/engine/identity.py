@@ -13,6 +13,7 @@ certificate.  The clock can end a search; it never decides a replayed check.
 """
 from __future__ import annotations
 
+import functools
 import hashlib
 import random
 import time
@@ -23,6 +24,7 @@ import sympy as sp
 
 from ..model.relation import RealRoots
 from .proofs import Certificate, ProofBook, claim_digest, slowdown
+from .sign import decided
 from .timelimit import TimeLimitExceeded, time_limit
 
 __all__ = ["IdentityResult", "check_identity", "check_rounded", "Domain", "DIGITS", "STRATEGIES",
@@ -123,13 +125,16 @@ class Domain:
     def sampler(self, seed_text: str):
         seed = int.from_bytes(hashlib.sha256(seed_text.encode()).digest()[:8], "big")
         rng = random.Random(seed)
+        bounds = {}         # symbol -> its interval's ends as fractions, read once per sampler
 
         def draw(symbols):
             point = {}
             for s in sorted(symbols, key=lambda s: s.name):
                 if s not in self.intervals:
                     raise ValueError(f"symbol {s} has no sampling interval in the derivation's domain")
-                lo, hi = (Fraction(str(v)) for v in self.intervals[s])
+                if s not in bounds:
+                    bounds[s] = tuple(Fraction(str(v)) for v in self.intervals[s])
+                lo, hi = bounds[s]
                 den = rng.randint(7, 97)
                 t = Fraction(rng.randint(1, den - 1), den)
                 point[s] = sp.Rational(lo + (hi - lo) * t)
@@ -138,9 +143,14 @@ class Domain:
         return draw
 
     def admits(self, point) -> bool:
+        """Every constraint on the symbols of *point* holds there: by its sign at 60 digits where that is
+        clearly decided (:func:`~symfloat.engine.sign.decided`), else exactly."""
         for c in self.constraints:
             c = sp.sympify(c)
-            if c.free_symbols <= point.keys() and not c.xreplace(point):
+            if not c.free_symbols <= point.keys():
+                continue
+            known = decided(c, point) if isinstance(c, sp.core.relational.Relational) else None
+            if not (known if known is not None else c.xreplace(point)):
                 return False
         return True
 
@@ -154,8 +164,11 @@ def _flatten(a, b):
     return [(a, b)]
 
 
+@functools.lru_cache(maxsize=8192, typed=True)
 def _evaluate(expr):
-    """Carry out the integrals, limits, derivatives and root counts (Sturm sequences) a claim contains."""
+    """Carry out the integrals, limits, derivatives and root counts (Sturm sequences) a claim contains;
+    once per expression (a chain's middle member is met by two links, and an integral SymPy cannot
+    carry out would be tried again at every check of a claim that still holds it)."""
     expr = sp.sympify(expr)
     if expr.has(sp.Integral, sp.Limit, sp.Derivative, sp.Subs, RealRoots):
         expr = expr.doit()

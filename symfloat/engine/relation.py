@@ -39,11 +39,11 @@ import sympy as sp
 from ..model.relation import Cases, Holds, Iff, RealRoots, Relation
 from .identity import Domain, IdentityResult
 from .roots import grid_roots
+from .sign import decided
 
 __all__ = ["check_relation", "statement", "truth", "inserted", "relation_intervals", "random_points", "boundary_points",
            "SAMPLES"]
 
-DIGITS = 60            # working precision of the numeric sign of a relation
 SAMPLES = 40           # random points after the boundary points
 LINES = 16             # at most so many lines through boundary and random points
 SLICES = 3             # random points through which the statement is followed along each symbol
@@ -69,47 +69,13 @@ def statement(r: Relation) -> list[tuple[str, sp.Basic]]:
     return out
 
 
-@functools.lru_cache(maxsize=4096)
-def _compiled(rel):
-    """The two sides of *rel* as one mpmath function of its free symbols (sorted by name), or None."""
-    if rel.has(RealRoots):
-        return None
-    symbols = tuple(sorted(rel.free_symbols, key=lambda q: q.name))
-    try:
-        return symbols, sp.lambdify(symbols, [rel.lhs, rel.rhs], "mpmath")
-    except (TypeError, ValueError, NameError, SyntaxError):
-        return None
-
-
-def _numeric(rel, point):
-    """*rel* at a rational *point* by the signs of its sides' difference at 60 digits, when that
-    difference is clearly away from zero (else None: the exact evaluation decides)."""
-    compiled = _compiled(rel)
-    if compiled is None or not all(point.get(q, sp.S.Half).is_Rational for q in compiled[0]):
-        return None
-    symbols, f = compiled
-    if any(q not in point for q in symbols):
-        return None
-    with mpmath.workdps(DIGITS):
-        try:
-            lhs, rhs = f(*(mpmath.mpf(point[q].p) / point[q].q for q in symbols))
-            lhs, rhs = mpmath.mpf(lhs), mpmath.mpf(rhs)
-        except (ArithmeticError, TypeError, ValueError, ZeroDivisionError, NameError):
-            return None
-        if not (mpmath.isfinite(lhs) and mpmath.isfinite(rhs)):
-            return None
-        d = lhs - rhs
-        if abs(d) <= mpmath.mpf(10) ** (15 - DIGITS) * max(1, abs(lhs), abs(rhs)):
-            return None
-        return bool(type(rel)(sp.Float(d, 20), 0))
-
-
 def truth(expr, point):
     """True/False of a boolean statement at *point*, or None when SymPy cannot decide it.  Each
-    relation is decided by :func:`_numeric` where its difference is clearly not zero, else exactly."""
+    relation is decided by its sign at 60 digits (:func:`~symfloat.engine.sign.decided`) where its
+    difference is clearly not zero, else exactly."""
     known = {}
     for rel in expr.atoms(sp.core.relational.Relational):
-        v = _numeric(rel, point)
+        v = decided(rel, point)
         if v is not None:
             known[rel] = sp.true if v else sp.false
     if known:
@@ -145,7 +111,7 @@ def _valid(point, where) -> bool | None:
 def _finite_ok(expr, point) -> bool:
     """The relations of the statement are defined at *point* (no division by zero)."""
     for rel in expr.atoms(sp.core.relational.Relational):
-        if rel.has(RealRoots) or _numeric(rel, point) is not None:
+        if rel.has(RealRoots) or decided(rel, point) is not None:
             continue                    # a root count is always a number
         for side in (rel.lhs, rel.rhs):
             v = sp.sympify(side).xreplace(point)
