@@ -3,10 +3,10 @@ from dataclasses import replace
 
 import sympy as sp
 
+from symfloat.engine.declare import cases_of, declarer
 from symfloat.engine.floating_witness import (At, Body, Difference, FloatingRootWitness, Joined, Root, crossing,
                                               potential_curvature, potential_slope)
 from symfloat.engine.measured import measured
-from symfloat.engine.witness import Case
 
 from .statements import a, b, c, d, phi, rho_s, s, t, z
 
@@ -44,9 +44,7 @@ ph1w, phtw, phCw, phAw, FCw, FAw, HCw, HAw, dFw = sp.symbols("varphi_1w varphi_t
                                                               "HG_Cw HG_Aw dF_w")
 
 
-def floating(name, description, targets, cases, quantity, up=UP_C, body=BOX, roots=(), density=s):
-    d.witness(FloatingRootWitness(name, description, tuple(targets), tuple(cases), body=body, up=up, density=density,
-                                  quantity=quantity, roots=roots))
+floating = declarer(d, FloatingRootWitness, up=UP_C, body=BOX, density=s)
 
 
 def part(quantity, up, roots=()):
@@ -54,9 +52,7 @@ def part(quantity, up, roots=()):
     return FloatingRootWitness("part", "", (), (), body=BOX, up=up, density=s, quantity=quantity, roots=roots)
 
 
-def C(label, **kw):
-    syms = {"a": a, "b": b, "c": c, "s": s, "z": z, "varphi_2": phi, "t": t}
-    return Case({syms[k]: sp.Rational(v) for k, v in kw.items()}, label=label)
+C = cases_of(a, b, c, s, z, phi, t)
 
 
 UP = (C("a = 1, b = 2, c = 3, s = 3/10", a=1, b=2, c=3, s="0.3"), C("a = 3/2, b = 1, c = 2, s = 4/5", a="1.5", b=1, c=2, s="0.8"),

@@ -3,6 +3,7 @@ from dataclasses import replace
 
 import sympy as sp
 
+from symfloat.engine.declare import cases_of, declarer
 from symfloat.engine.floating_witness import At, Body, FloatingRootWitness, Root, potential_slope
 from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
@@ -20,14 +21,10 @@ TOUCH = Root("face clearance", phi, PHIT_GRID)     # the tilt at which an end fa
 ph1, pht, ws, gm0 = sp.symbols("varphi_1w varphi_tw omega_w GM_0w")    # measured: the roots and the upright GM
 
 
-def floating(name, description, targets, cases, quantity, body=PRISM, up=UPV, density=s, roots=()):
-    d.witness(FloatingRootWitness(name, description, tuple(targets), tuple(cases), body=body, up=up,
-                                  density=density, quantity=quantity, roots=roots))
+floating = declarer(d, FloatingRootWitness, body=PRISM, up=UPV, density=s)
 
 
-def C(label, body=None, **kw):
-    syms = {"a": a, "b": b, "s": s, "omega": om, "psi": psi, "n": n, "r": r, "F": F}
-    return Case({syms[k]: sp.Rational(v) for k, v in kw.items()}, None if body is None else {"body": body}, label)
+C = cases_of(a, b, s, om, psi, n, r, F)
 
 
 UPRIGHT = (0, 0, 1)

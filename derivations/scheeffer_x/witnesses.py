@@ -2,6 +2,7 @@
 import mpmath
 import sympy as sp
 
+from symfloat.engine.declare import cases_of, declarer
 from symfloat.engine.floating_witness import (At, Body, CutWitness, FloatingRootWitness, Root, potential_slope)
 from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
@@ -23,14 +24,10 @@ def cut(name, description, targets, cases, quantity, up, through, body=CUBE, roo
                          quantity=quantity, roots=roots))
 
 
-def floating(name, description, targets, cases, quantity, up=UD, density=s, body=UNIT, roots=()):
-    d.witness(FloatingRootWitness(name, description, tuple(targets), cases if callable(cases) else tuple(cases),
-                                  body=body, up=up, density=density, quantity=quantity, roots=roots))
+floating = declarer(d, FloatingRootWitness, up=UD, density=s, body=UNIT)
 
 
-def C(label, **kw):
-    syms = {"a": a, "omega": om, "rho": rho, "rho1": rho1, "x": xl, "s": s, "L": L}
-    return Case({syms[q]: sp.Rational(v) for q, v in kw.items()}, label=label)
+C = cases_of(a, om, rho, rho1, xl, s, L)
 
 
 def dry_moment(K):
@@ -52,8 +49,8 @@ cut("dry-moment-45", "the same with the axis along a face diagonal", ("170",),
     *dry_moment(sp.Rational(1, 4)), H_POINT, roots=((om, pi / 4),))
 cut("dry-moment-third", "moment of the clipped dry part / tan phi, water plane through both water lines",
     ("173", "118-form", "173-only-45"),
-    (C("a = 1, omega = 0.3, rho = 0.6, rho_1 = 0.4", a=1, omega="0.3", rho="0.6", rho1="0.4"),
-     C("a = 3/2, omega = 0.5, rho = 0.7, rho_1 = 0.9", a="1.5", omega="0.5", rho="0.7", rho1="0.9")),
+    (C("a = 1, omega = 0.3, rho = 0.6, rho_1 = 0.4", a=1, omega="0.3", rho="0.6", rho_1="0.4"),
+     C("a = 3/2, omega = 0.5, rho = 0.7, rho_1 = 0.9", a="1.5", omega="0.5", rho="0.7", rho_1="0.9")),
     *dry_moment(a / (a * (si + co) - (rho + rho1) * si)), H_POINT)
 
 
