@@ -684,3 +684,19 @@ def test_a_root_read_only_by_a_later_grid_is_found_in_float64():
     read = FloatingRootWitness(**{**found.__dict__, "quantity": sp.tan(top)})   # now the quantity reads it
     with mpmath.workdps(50):
         assert abs(read.measure(LOG, read.methods[1]) - mpmath.mpf(9) / 10) < 1e-35
+
+
+def test_a_whole_measures_its_parts_at_their_methods_or_the_least_precise_of_them():
+    """Combined and Joined name no methods: the parts' own, or, where they differ, those of the part whose float64
+    method is the least precise (a limit's LIMIT_METHODS beside a plain quantity's FLOATING_METHODS)."""
+    from symfloat.engine.floating_witness import (FLOATING_METHODS, LIMIT_METHODS, Body, Combined, FloatingWitness,
+                                                  Joined)
+    psi = sp.Symbol("psi")
+    plain = FloatingWitness("", "", (), (), body=Body.box(2, 1, 1), density=sp.Rational(1, 2))
+    limit = FloatingWitness("", "", (), (), body=Body.box(2, 1, 1), density=sp.Rational(1, 2),
+                            up=(sp.sin(psi), 0, sp.cos(psi)), quantity="draught",
+                            limit=(psi, 0), methods=LIMIT_METHODS)
+    assert Joined("j", "", (), (), parts=(plain, plain)).methods == FLOATING_METHODS
+    assert Combined("c", "", (), (), parts=(plain, limit), values=(measured("part 1"),)).methods == LIMIT_METHODS
+    assert Joined("j", "", (), (), parts=(limit, plain)).methods == LIMIT_METHODS
+    assert Joined("j", "", (), (), parts=(plain,), methods=LIMIT_METHODS).methods == LIMIT_METHODS

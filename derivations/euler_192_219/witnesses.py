@@ -2,7 +2,7 @@
 boxes of §§192-203 floating, heeled or pitched, clipped exactly (:mod:`symfloat.engine.floating_witness`)."""
 import sympy as sp
 
-from symfloat.engine.figure_witness import FIGURE_METHODS, CurveRoot, Figure, FigureWitness
+from symfloat.engine.figure_witness import CurveRoot, Figure, FigureWitness
 from symfloat.engine.floating_witness import (LIMIT_METHODS, SERIES_METHODS, Body, Combined, FloatingRootWitness,
                                               FloatingWitness, Joined, Loaded, Root, SeriesWitness, potential_slope)
 from symfloat.engine.measured import measured
@@ -108,9 +108,9 @@ d.witness(Combined("rect-rhombus-ratios", "the rectangle's moments over the rhom
                    AB_CASES, parts=(figure_part(RECTANGLE, I_YY), figure_part(RHOMBUS, I_YY),
                                     figure_part(RECTANGLE, I_XX), figure_part(RHOMBUS, I_XX)),
                    values=(measured("part 1") / measured("part 2"),
-                           measured("part 3") / measured("part 4")), methods=FIGURE_METHODS))
+                           measured("part 3") / measured("part 4"))))
 KITE_EXCESS = dict(parts=(figure_part(KITE, measured("integral", of=(x - XC) ** 2)), figure_part(RHOMBUS_OF_KITE, I_XX)),
-                   values=(measured("part 1") - measured("part 2"),), methods=FIGURE_METHODS)
+                   values=(measured("part 1") - measured("part 2"),))
 d.witness(Combined("quad-K-excess", "∫∫ (x - x_C)^2 over the quadrilateral minus that of the rhombus with the same "
                    "AB and ef", ("quad-K-larger",), Q_CASES, **KITE_EXCESS))
 
@@ -142,13 +142,13 @@ B_CASES = (Case({Mw: 1, V: 1, Iw: sp.Rational(1, 6), Kw: sp.Rational(2, 3), h: s
            Case({Mw: sp.Rational(3, 2), V: sp.Rational(3, 2), Iw: sp.Rational(1, 6), Kw: sp.Rational(2, 3),
                  h: sp.Rational(1, 20), sw: sp.Rational(3, 4)}, label="box 1 x 1 x 2, s = 3/4, b = 1/20"))
 d.witness(Joined("stability-AB-box", "M GZ/phi of a heeled box by exact clipping (G below, G above B)",
-                 ("stability-AB",), B_CASES, parts=(stability(HEEL, -h), stability(HEEL, h)), methods=LIMIT_METHODS))
+                 ("stability-AB",), B_CASES, parts=(stability(HEEL, -h), stability(HEEL, h))))
 d.witness(Joined("stability-EF-box", "M GZ/phi of a pitched box by exact clipping (G below, G above B)",
-                 ("stability-EF",), B_CASES, parts=(stability(PITCH, -h), stability(PITCH, h)), methods=LIMIT_METHODS))
+                 ("stability-EF",), B_CASES, parts=(stability(PITCH, -h), stability(PITCH, h))))
 d.witness(Joined("stability-I-box", "M GZ/phi of a heeled box by exact clipping, G below B",
-                 ("stability-I",), B_CASES, parts=(stability(HEEL, -h),), methods=LIMIT_METHODS))
+                 ("stability-I",), B_CASES, parts=(stability(HEEL, -h),)))
 d.witness(Joined("stability-K-box", "M GZ/phi of a pitched box by exact clipping, G below B",
-                 ("stability-K",), B_CASES, parts=(stability(PITCH, -h),), methods=LIMIT_METHODS))
+                 ("stability-K",), B_CASES, parts=(stability(PITCH, -h),)))
 
 # ---- second pass: the strip, the oblique axes and the areas, by the moments of the figures themselves ----------
 STRIP_CASES = rational_cases(("PM = 2, Pp = 1/2", {PM: 2, Pp: "1/2"}), ("PM = 5/3, Pp = 3/10", {PM: "5/3", Pp: "3/10"}))
@@ -210,13 +210,12 @@ def _box_case(s_, hv, label):
 ONE_WAY = (Case({sw: sp.Rational(1, 2)}, label="box 1 x 1 x 2, s = 1/2, G 1/3 above B"),)
 d.witness(Joined("stable-one-way-box", "M GZ/phi of the heeled and the pitched box by exact clipping",
                  ("stable-one-way",), ONE_WAY,
-                 parts=tuple(stability(up, sp.Rational(1, 3), 1) for up in (HEEL, PITCH)), methods=LIMIT_METHODS))
+                 parts=tuple(stability(up, sp.Rational(1, 3), 1) for up in (HEEL, PITCH))))
 d.witness(Combined("pitch-minus-roll-box", "M GZ/phi pitched minus heeled, the box 1 x 1 x 2 by exact clipping",
                    ("pitch-exceeds-roll",),
                    (_box_case(sp.Rational(1, 2), sp.Rational(1, 10), "s = 1/2, b = 1/10"),
                     _box_case(sp.Rational(3, 4), sp.Rational(1, 20), "s = 3/4, b = 1/20")),
-                   parts=(stability(PITCH, h), stability(HEEL, h)), values=(measured("part 1") - measured("part 2"),),
-                   methods=LIMIT_METHODS))
+                   parts=(stability(PITCH, h), stability(HEEL, h)), values=(measured("part 1") - measured("part 2"),)))
 d.witness(Combined("quad-K-excess-220", "∫∫ (x - x_C)^2 over the quadrilateral minus that of the rhombus with the "
                    "same AB and ef", ("unlike-parts-larger",), Q_CASES, **KITE_EXCESS))
 
@@ -239,14 +238,13 @@ d.witness(SeriesWitness("moment-times-angle-box", "M GZ/phi of the heeled box by
 d.witness(Combined("same-ratio-box", "the ratio of the heeled box's GZ/phi at two heights of G, by clipping",
                    ("same-ratio",), (Case({**BOX_E, hb1: sp.Rational(1, 40), hb2: sp.Rational(1, 50)},
                                           label="b_1 = 1/40, b_2 = 1/50"),),
-                   parts=(arm_series(hb1, 1), arm_series(hb2, 1)), values=(measured("part 1") / measured("part 2"),),
-                   methods=SERIES_METHODS))
+                   parts=(arm_series(hb1, 1), arm_series(hb2, 1)), values=(measured("part 1") / measured("part 2"),)))
 d.witness(SeriesWitness("small-angles-box", "M (GZ - phi GM)/phi^3 of the heeled box by clipping, phi -> 0",
                         ("small-angles-only",), (Case({**BOX_E, Mw: 1, h: sp.Rational(1, 10)}, label="b = 1/10"),),
                         body=box_with_G(h), up=HEEL, density=sw, quantity=Mw * ARM[HEEL], series=(phi, 3), odd=True))
 d.witness(Joined("zero-indifferent-box", "GZ/phi and GZ/phi^3 of the box with b = I/V = 1/6, by clipping",
                  ("zero-indifferent",), (Case(dict(BOX_E), label="e = T = 1/2, b = 1/6"),),
-                 parts=(arm_series(sp.Rational(1, 6), 1), arm_series(sp.Rational(1, 6), 3)), methods=SERIES_METHODS))
+                 parts=(arm_series(sp.Rational(1, 6), 1), arm_series(sp.Rational(1, 6), 3))))
 phi_eq = sp.Symbol("phi_*", positive=True)         # the heeled equilibrium
 HEELED = Root(ARM[HEEL], phi, tuple(sp.Rational(k, 20) for k in range(1, 15)))     # beyond the upright position
 d.witness(Joined("negative-unstable-box", "the box with G 1/100 above the metacentre: M GZ/phi upright, and its "
@@ -256,5 +254,4 @@ d.witness(Joined("negative-unstable-box", "the box with G 1/100 above the metace
                  parts=(arm_series(sp.Rational(1, 6) + gneg, 1, Mw),
                         FloatingRootWitness("", "", (), (), body=box_with_G(sp.Rational(1, 6) + gneg), up=HEEL,
                                             density=sw, quantity=ARM[HEEL], roots=((phi, HEELED),)),
-                        arm_series(sp.Rational(1, 6) + gneg, 1, centre=phi_eq, roots=((phi_eq, HEELED),))),
-                 methods=SERIES_METHODS))
+                        arm_series(sp.Rational(1, 6) + gneg, 1, centre=phi_eq, roots=((phi_eq, HEELED),)))))

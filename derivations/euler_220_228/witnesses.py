@@ -2,7 +2,7 @@
 (:mod:`symfloat.engine.figure_witness`); the integrals of §§225-227 by quadrature of their integrands."""
 import sympy as sp
 
-from symfloat.engine.figure_witness import FIGURE_METHODS, Figure, FigureWitness
+from symfloat.engine.figure_witness import Figure, FigureWitness
 from symfloat.engine.floating_witness import Combined
 from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
@@ -75,7 +75,7 @@ d.witness(Combined("sixteenth", "(K(c = a/2) - K(c = 0))/K(c = 0), both moments 
                    parts=tuple(FigureWitness("", "", (), (), figure=curve_figure(Yc.subs(c, cv), "AEB", whole=True),
                                              coords=(x_, y), quantity=measured("integral", of=(x_ - XC) ** 2))
                                 for cv in (a / 2, 0)),
-                   values=((measured("part 1") - measured("part 2")) / measured("part 2"),), methods=FIGURE_METHODS))
+                   values=((measured("part 1") - measured("part 2")) / measured("part 2"),)))
 
 
 def line_witness(name, targets, cases, g, text):

@@ -4,7 +4,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from symfloat.engine.figure_witness import FIGURE_METHODS, Figure, FigureWitness
+from symfloat.engine.figure_witness import Figure, FigureWitness
 from symfloat.engine.floating_witness import (LIMIT_METHODS, Body, Combined, FloatingWitness, Joined, Loaded,
                                               potential_slope)
 from symfloat.engine.measured import measured
@@ -73,13 +73,12 @@ _w("c-first", "∫Y R dy = −D·CO/(2a) from ∫∫(x − a) over AEB (Y = −c
 d.witness(Combined("c-second", "∫Y²R dy = (∫∫(x − a)² at c minus at c = 0)/(2a) over AEB", ("Y-c-second",), CFAM,
                    parts=(part(family(Y_C), measured("integral", of=(XP - a) ** 2)),
                           part(family(0), measured("integral", of=(XP - a) ** 2))),
-                   values=((measured("part 1") - measured("part 2")) / (2 * a),), methods=FIGURE_METHODS))
+                   values=((measured("part 1") - measured("part 2")) / (2 * a),)))
 _w("c-moment-EF", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
    ("moment-EF-c", "moment-EF-c-p118", "moment-EF-N"), CFAM, family(Y_C), K_WHOLE)
 d.witness(Combined("c-excess", "K at c minus K at c = 0, both measured", ("unequal-halves",), CFAM,
                    parts=(part(family(Y_C), K_WHOLE), part(family(0), K_WHOLE)),
-                   values=(measured("part 1") - measured("part 2"),),
-                   methods=FIGURE_METHODS))
+                   values=(measured("part 1") - measured("part 2"),)))
 
 u = sp.Symbol("u", positive=True)
 for kv in KAPPAS:
@@ -176,9 +175,9 @@ def _v_case(W, T, L, s, og):
 V_CASES = (_v_case(1, 2, 3, "1/4", "1/10"), _v_case(1, 2, 2, "9/16", "1/20"))
 d.witness(Joined("stability-V-prism", "M·GZ/φ of the heeled V-prism by exact clipping, G above O",
                  ("stability-AB", "stability-CD", "stability-AB-241"), V_CASES,
-                 parts=(heeled_stability(v_prism, HEEL, 1),), methods=LIMIT_METHODS))
+                 parts=(heeled_stability(v_prism, HEEL, 1),)))
 d.witness(Joined("stability-V-prism-G-below", "M·GZ/φ of the heeled V-prism by exact clipping, G below O",
-                 ("stability-G-below",), V_CASES, parts=(heeled_stability(v_prism, HEEL, -1),), methods=LIMIT_METHODS))
+                 ("stability-G-below",), V_CASES, parts=(heeled_stability(v_prism, HEEL, -1),)))
 
 
 # §239 about EF: an upright right prism over the quadrilateral of §215 (A = (0, 0), e = (1, 1), B = (3, 0),
@@ -197,8 +196,7 @@ KITE_CASES = tuple(Case({M: 3, V: 3, AB: 3, Dw: sp.Rational(3, 2), mu: 12, nu: s
                          sv: sp.Rational(1, 2)}, label=f"kite prism, s = 1/2, OG = {og}")
                    for og in (sp.Rational(1, 10), sp.Rational(1, 4)))
 d.witness(Joined("stability-kite-prism-EF", "M·GZ/φ of the upright kite prism pitched about EF, by exact clipping, "
-                 "G above O", ("stability-EF",), KITE_CASES, parts=(heeled_stability(kite_prism, TILT, 1),),
-                 methods=LIMIT_METHODS))
+                 "G above O", ("stability-EF",), KITE_CASES, parts=(heeled_stability(kite_prism, TILT, 1),)))
 
 # second pass: the moment named 'about the longitudinal axis EF' of §230 is the one about the latitudinal EF
 _w("family-axis-EF-named", "∫∫(x − x_C)² over the whole figure, x_C its centroid", ("axis-EF-named",), GENERIC,

@@ -2,7 +2,7 @@
 measured across their chords, the triaxial stump's half axes found as roots on the principal ellipses."""
 import sympy as sp
 
-from symfloat.engine.figure_witness import FIGURE_METHODS, CurveRoot
+from symfloat.engine.figure_witness import CurveRoot
 from symfloat.engine.floating_witness import Combined
 from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case, PlaneSections, SectionIntegral
@@ -199,7 +199,7 @@ for axes_name, axes_at in (("G", x), ("D", (x + xp) / 2), ("g", xp)):
                        parts=tuple(CurveRoot(f"{axes_name}-ordinate-{semi}", "", (), (), equation=(axes_at / a) ** 2
                                              + (t / semi) ** 2 - 1, variable=t, bracket=(0, semi))
                                    for semi in (c, b)),
-                       values=(measured("part 1") ** 2, measured("part 2") ** 2), methods=FIGURE_METHODS))
+                       values=(measured("part 1") ** 2, measured("part 2") ** 2)))
 planes_witness("pyramid-frustum-side-D-section", "the mid-section of trapezoid frusta by quadrature of its widths",
                ("pyramid-frustum-side-D",), pyramid_sections, (h / 2,), sp.sqrt(measured("section 1") / k),
                *pyramid_cases)

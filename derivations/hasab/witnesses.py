@@ -1,7 +1,7 @@
 """The Hasáb solution's witnesses: the prism clipped exactly (:mod:`symfloat.engine.floating_witness`)."""
 import sympy as sp
 
-from symfloat.engine.floating_witness import (QUANTITIES, SERIES_METHODS, Body, Combined, FloatingRootWitness,
+from symfloat.engine.floating_witness import (QUANTITIES, Body, Combined, FloatingRootWitness,
                                               FloatingWitness, Marked, Root, SeriesWitness, crossing)
 from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
@@ -67,10 +67,9 @@ C2 = SeriesWitness("", "", (), (), body=LYING, up=(-sp.sin(psi), sp.cos(psi), 0)
                    series=(psi, 2))
 d.witness(Combined("second-order-energy", "c0 + c2 alpha^2: the clipped prism's energy upright and its alpha^2 "
                    "coefficient interpolated at small heels", ("E1-total",), ECASES, parts=(C0, C2),
-                   values=(measured("part 1") + measured("part 2") * al ** 2,), methods=SERIES_METHODS))
+                   values=(measured("part 1") + measured("part 2") * al ** 2,)))
 d.witness(Combined("energy-change", "c2 alpha^2: the alpha^2 coefficient of the clipped prism's energy, interpolated "
-                   "at small heels", ("Delta-E",), ECASES, parts=(C2,), values=(measured("part 1") * al ** 2,),
-                   methods=SERIES_METHODS))
+                   "at small heels", ("Delta-E",), ECASES, parts=(C2,), values=(measured("part 1") * al ** 2,)))
 
 # the density thresholds: zeros in rho of the clipped metacentric height, lying (heel about the long axis) and
 # standing upright (the remark)

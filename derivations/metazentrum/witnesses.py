@@ -47,11 +47,9 @@ ARM = FloatingWitness("", "", (), (), body=HULL, up=HEEL, density=d / (2 * c), q
                       limit=(psi, 1), methods=LIMIT_METHODS)
 dv.witness(Combined("metacentre-heel", "z_M = lim m/phi + z_G: righting arm of the clipped heeled box, extrapolated",
                     ("z_M",), CASES, parts=(ARM, upright("", "", (), "G above water")),
-                    values=(measured("part 1") + measured("part 2"),),
-                    methods=LIMIT_METHODS))
+                    values=(measured("part 1") + measured("part 2"),)))
 dv.witness(Combined("radius-heel", "BM = lim m/phi + (z_G - z_B) from the clipped heeled box", ("radius",), CASES,
-                    parts=(ARM, upright("", "", (), "G above B")), values=(measured("part 1") + measured("part 2"),),
-                    methods=LIMIT_METHODS))
+                    parts=(ARM, upright("", "", (), "G above B")), values=(measured("part 1") + measured("part 2"),)))
 # the density at which the box floats with draught d: the share of its volume below the plane d above its bottom
 dv.witness(CutWitness("density-ratio", "clipped volume below depth d over the box volume", ("density",), CASES,
                       body=HULL, up=UPRIGHT_UP, through=(0, 0, d - c),

@@ -379,13 +379,25 @@ def waterplane_moment(n, m):
                     for i in range(3) for j in range(3)))
 
 
+def parts_methods(parts) -> tuple:
+    """The methods a whole measures its *parts* at, where it names none: the parts' own, or, where they differ,
+    those of the part whose float64 method is the least precise (a limit's or a series' beside a plain
+    quantity's: the whole is no more precise than that part)."""
+    return max((part.methods for part in parts), key=lambda methods: methods[0].tolerance)
+
+
 @dataclass(frozen=True)
 class Joined(MeasuredWitness):
     """Several floating witnesses (``parts``, each with its own body) measured at the same case, their values
-    joined into one tuple: for a reading that lists quantities of different bodies."""
+    joined into one tuple: for a reading that lists quantities of different bodies.  ``methods`` defaults to
+    :func:`parts_methods`."""
 
     parts: tuple = ()
-    methods: tuple = FLOATING_METHODS
+    methods: tuple = None
+
+    def __post_init__(self):
+        if self.methods is None:
+            object.__setattr__(self, "methods", parts_methods(self.parts))
 
     def measure(self, case, method):
         out = []
@@ -728,13 +740,15 @@ def _floating_state(body, up, density):
 class Combined(MeasuredWitness):
     """Witnesses measured at the same case (``parts``, one value each) and combined: ``values``, SymPy
     expressions in ``measured("part 1")``, ``measured("part 2")``, ... (the value of each part, in order) and
-    the case's parameters, such as the difference of two roots."""
+    the case's parameters, such as the difference of two roots.  ``methods`` defaults to :func:`parts_methods`."""
 
     parts: tuple = ()
     values: tuple = ()
-    methods: tuple = FLOATING_METHODS
+    methods: tuple = None
 
     def __post_init__(self):
+        if self.methods is None:
+            object.__setattr__(self, "methods", parts_methods(self.parts))
         known = {s.name for s in numbered("part", len(self.parts))}
         for e in self.values:
             if not measured_names(e) <= known:
