@@ -213,8 +213,7 @@ class FigureWitness(MeasuredWitness):
         items = self.quantity if isinstance(self.quantity, tuple) else (self.quantity,)
         known = {s.name for s in _CENTROID}
         for q in items:
-            names = measured_names(q)
-            names |= {n for a in sp.sympify(q).atoms(MeasuredIntegral) for n in measured_names(a.args[0])}
+            names = measured_names(q)                   # an integrand's among them
             if not names <= known:
                 raise ValueError(f"witness {self.name}: {sorted(names - known)} are not measured on a figure; "
                                  f"known: measured('integral', of=f), {', '.join(sorted(known))}")
