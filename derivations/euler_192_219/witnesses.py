@@ -2,6 +2,7 @@
 boxes of §§192-203 floating, heeled or pitched, clipped exactly (:mod:`symfloat.engine.floating_witness`)."""
 import sympy as sp
 
+from symfloat.engine.declare import part_of
 from symfloat.engine.figure_witness import CurveRoot, Figure, FigureWitness
 from symfloat.engine.floating_witness import (LIMIT_METHODS, SERIES_METHODS, Body, Combined, FloatingRootWitness,
                                               FloatingWitness, Joined, Loaded, Root, SeriesWitness, potential_slope)
@@ -100,16 +101,17 @@ figure_witness("ellipse-quadrant-area", "a quarter of ∫∫ 1 over the ellipse"
                ELLIPSE, AREA / 4)
 
 
-def figure_part(figure, quantity):
-    return FigureWitness("", "", (), (), figure=figure, coords=(x, y), quantity=quantity)
+figure_part = part_of(FigureWitness, coords=(x, y))
 
 
 d.witness(Combined("rect-rhombus-ratios", "the rectangle's moments over the rhombus' (same a, b)", ("rhombus-twice",),
-                   AB_CASES, parts=(figure_part(RECTANGLE, I_YY), figure_part(RHOMBUS, I_YY),
-                                    figure_part(RECTANGLE, I_XX), figure_part(RHOMBUS, I_XX)),
+                   AB_CASES, parts=(figure_part(figure=RECTANGLE, quantity=I_YY), figure_part(figure=RHOMBUS, quantity=I_YY),
+                                    figure_part(figure=RECTANGLE, quantity=I_XX),
+                                    figure_part(figure=RHOMBUS, quantity=I_XX)),
                    values=(measured("part 1") / measured("part 2"),
                            measured("part 3") / measured("part 4"))))
-KITE_EXCESS = dict(parts=(figure_part(KITE, measured("integral", of=(x - XC) ** 2)), figure_part(RHOMBUS_OF_KITE, I_XX)),
+KITE_EXCESS = dict(parts=(figure_part(figure=KITE, quantity=measured("integral", of=(x - XC) ** 2)),
+                          figure_part(figure=RHOMBUS_OF_KITE, quantity=I_XX)),
                    values=(measured("part 1") - measured("part 2"),))
 d.witness(Combined("quad-K-excess", "∫∫ (x - x_C)^2 over the quadrilateral minus that of the rhombus with the same "
                    "AB and ef", ("quad-K-larger",), Q_CASES, **KITE_EXCESS))

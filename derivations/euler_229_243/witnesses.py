@@ -4,6 +4,7 @@ from fractions import Fraction
 
 import sympy as sp
 
+from symfloat.engine.declare import part_of
 from symfloat.engine.figure_witness import Figure, FigureWitness
 from symfloat.engine.floating_witness import (LIMIT_METHODS, Body, Combined, FloatingWitness, Joined, Loaded,
                                               potential_slope)
@@ -38,8 +39,7 @@ def _w(name, description, targets, cases, figure, quantity):
     d.witness(FigureWitness(name, description, tuple(targets), cases, figure=figure, coords=(XP, y), quantity=quantity))
 
 
-def part(figure, quantity):
-    return FigureWitness("", "", (), (), figure=figure, coords=(XP, y), quantity=quantity)
+part = part_of(FigureWitness, coords=(XP, y))
 
 
 Y_GENERIC = c1 * (y / b) ** n + c2 * (y / b) ** (2 * n)
@@ -71,13 +71,13 @@ CFAM = (Case({a: 1, b: 1, n: 2, k: sp.Rational(1, 2), c: sp.Rational(1, 4), al: 
 _w("c-first", "∫Y R dy = −D·CO/(2a) from ∫∫(x − a) over AEB (Y = −cyⁿ/bⁿ)", ("Y-c-first",), CFAM, family(Y_C),
    measured("integral", of=XP - a) / (2 * a))
 d.witness(Combined("c-second", "∫Y²R dy = (∫∫(x − a)² at c minus at c = 0)/(2a) over AEB", ("Y-c-second",), CFAM,
-                   parts=(part(family(Y_C), measured("integral", of=(XP - a) ** 2)),
-                          part(family(0), measured("integral", of=(XP - a) ** 2))),
+                   parts=(part(figure=family(Y_C), quantity=measured("integral", of=(XP - a) ** 2)),
+                          part(figure=family(0), quantity=measured("integral", of=(XP - a) ** 2))),
                    values=((measured("part 1") - measured("part 2")) / (2 * a),)))
 _w("c-moment-EF", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
    ("moment-EF-c", "moment-EF-c-p118", "moment-EF-N"), CFAM, family(Y_C), K_WHOLE)
 d.witness(Combined("c-excess", "K at c minus K at c = 0, both measured", ("unequal-halves",), CFAM,
-                   parts=(part(family(Y_C), K_WHOLE), part(family(0), K_WHOLE)),
+                   parts=(part(figure=family(Y_C), quantity=K_WHOLE), part(figure=family(0), quantity=K_WHOLE)),
                    values=(measured("part 1") - measured("part 2"),)))
 
 u = sp.Symbol("u", positive=True)

@@ -3,7 +3,7 @@ from dataclasses import replace
 
 import sympy as sp
 
-from symfloat.engine.declare import cases_of, declarer
+from symfloat.engine.declare import cases_of, declarer, part_of
 from symfloat.engine.floating_witness import (At, Body, Difference, FloatingRootWitness, Joined, Root, crossing,
                                               potential_curvature, potential_slope)
 from symfloat.engine.measured import measured
@@ -47,9 +47,7 @@ ph1w, phtw, phCw, phAw, FCw, FAw, HCw, HAw, dFw = sp.symbols("varphi_1w varphi_t
 floating = declarer(d, FloatingRootWitness, up=UP_C, body=BOX, density=s)
 
 
-def part(quantity, up, roots=()):
-    """A witness measured as a part of :class:`Joined` (its name, targets and cases are the whole's)."""
-    return FloatingRootWitness("part", "", (), (), body=BOX, up=up, density=s, quantity=quantity, roots=roots)
+part = part_of(FloatingRootWitness, body=BOX, density=s)     # a part of a Joined witness
 
 
 C = cases_of(a, b, c, s, z, phi, t)
@@ -96,7 +94,8 @@ floating("oblique-c-32", "I_min (1 + tan^2 phi_1/2) - V e_1 with the clipped upr
 floating("oblique-a", "tan^2 of the clipped equilibrium tilt about the a-axis", ("128",), R1, sp.tan(ph) ** 2, up=UP_A,
          roots=((ph, EQ_A),))
 d.witness(Joined("touch", "tan of the clipped tilt at which the top face reaches the water, about c and about a",
-                 ("129",), R1U, parts=(part(sp.tan(ph), UP_C, ((ph, TOUCH_C),)), part(sp.tan(ph), UP_A, ((ph, TOUCH_A),)))))
+                 ("129",), R1U, parts=(part(quantity=sp.tan(ph), up=UP_C, roots=((ph, TOUCH_C),)),
+                                       part(quantity=sp.tan(ph), up=UP_A, roots=((ph, TOUCH_A),)))))
 floating("touch-2", "tan^2 of the clipped touching tilt about c", ("129-squared",), R1U, sp.tan(ph) ** 2,
          roots=((ph, TOUCH_C),))
 MARGIN = sp.tan(phtw) ** 2 - sp.tan(ph1w) ** 2
@@ -105,8 +104,9 @@ floating("margin", "tan^2(touch) - tan^2(equilibrium) about c, clipped", ("130-p
 floating("margin-130", "(a/b)^2/2 (tan^2 touch - tan^2 equilibrium) about c, clipped", ("130",), R1U,
          (a / b) ** 2 / 2 * MARGIN, roots=TILTS_C)
 # -12 s/b GM upright and the margin of the oblique tilt, about c (I_min) and about a (I_max)
-REGION_C = part((-12 * s / b * measured("metacentric height"), (a / b) ** 2 / 2 * MARGIN), UP_C, TILTS_C)
-REGION_A = part((-12 * s / b * GM_MAX, (c / b) ** 2 / 2 * MARGIN), UP_A, TILTS_A)
+REGION_C = part(quantity=(-12 * s / b * measured("metacentric height"), (a / b) ** 2 / 2 * MARGIN), up=UP_C,
+                roots=TILTS_C)
+REGION_A = part(quantity=(-12 * s / b * GM_MAX, (c / b) ** 2 / 2 * MARGIN), up=UP_A, roots=TILTS_A)
 d.witness(Joined("region-131", "-12 s/b GM and the margins, both axes, clipped", ("131",), R1U,
                  parts=(REGION_C, REGION_A)))
 d.witness(Joined("region-132b", "-12 s/b GM about c and the margin, clipped", ("132b",), R1, parts=(REGION_C,)))

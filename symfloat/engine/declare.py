@@ -1,12 +1,14 @@
-"""What a witnesses module says many times, said once: its cases by parameter name, its witnesses with the
-module's defaults.
+"""What a witnesses module says many times, said once: its cases by parameter name, its witnesses and the parts
+of its joined or combined witnesses with the module's defaults.
 
 ``cases_of(*parameters)`` makes exact cases: ``case(label, body=None, **values)``, each value a number or a
 decimal string taken exactly (``s="0.3"`` is 3/10), keyed by the parameter's name; a body, where given, is the
 case's own (``Case(..., {"body": body})``).  ``declarer(derivation, kind, **defaults)`` declares witnesses of
 one kind with the module's fields: ``declare(name, description, targets, cases, quantity, **fields)`` is
 ``derivation.witness(kind(name, description, targets, cases, quantity=quantity, **defaults, **fields))``, a field
-given at the call overriding the module's.
+given at the call overriding the module's.  ``part_of(kind, **defaults)`` makes the parts of a ``Joined`` or
+``Combined`` witness: ``part(**fields)`` is ``kind("", "", (), (), **defaults, **fields)`` (a part's name,
+targets and cases are the whole's).
 
 >>> import sympy as sp
 >>> a, s = sp.symbols("a s", positive=True)
@@ -21,7 +23,7 @@ import sympy as sp
 
 from .witness import Case
 
-__all__ = ["cases_of", "declarer"]
+__all__ = ["cases_of", "declarer", "part_of"]
 
 
 def cases_of(*parameters):
@@ -44,3 +46,10 @@ def declarer(derivation, kind, **defaults):
         derivation.witness(kind(name, description, tuple(targets), cases if callable(cases) else tuple(cases),
                                 quantity=quantity, **{**defaults, **fields}))
     return declare
+
+
+def part_of(kind, **defaults):
+    """A maker of parts of *kind* with the module's *defaults* (see the module)."""
+    def part(**fields):
+        return kind("", "", (), (), **{**defaults, **fields})
+    return part
