@@ -18,9 +18,10 @@ from flint import arb
 from symfloat.engine.check import FormulaReport, judge
 from symfloat.engine.construction_witness import Area, Centroid, ConstructionWitness, Coordinates
 from symfloat.engine.enclosure import Unsupported, ball, integral, working_precision
-from symfloat.engine.figure_witness import CENTROID, CurveRoot, Figure, FigureWitness, Over
-from symfloat.engine.witness import (CERTIFIED, SECTION, Case, HullWitness, MeasuredWitness, PlaneSections,
-                                     SectionIntegral, SideFaces, record_decision)
+from symfloat.engine.figure_witness import CurveRoot, Figure, FigureWitness
+from symfloat.engine.measured import measured
+from symfloat.engine.witness import (CERTIFIED, Case, HullWitness, MeasuredWitness, PlaneSections, SectionIntegral,
+                                     SideFaces, record_decision)
 
 x, z, r, P, eta = sp.symbols("x z r P eta", real=True)
 UNIT = Case({r: 1}, label="r = 1")
@@ -155,7 +156,7 @@ def test_plane_sections_decide_by_the_ball():
     w = PlaneSections("discs", "two sections", ("t",), (Case({r: sp.Rational(3, 2)}),),
                       width=2 * (r ** 2 - P ** 2) * sp.cos(eta) ** 2, position=P, across=eta,
                       chord=(-sp.pi / 2, sp.pi / 2), planes=(0, r / 2),
-                      combine=(sp.sqrt(SECTION[0] / sp.pi), SECTION[1] / SECTION[0]))
+                      combine=(sp.sqrt(measured("section 1") / sp.pi), measured("section 2") / measured("section 1")))
     assert w.run({"t": chain(sp.Matrix([r, sp.Rational(3, 4)]))})["t"].agrees
     out = w.run({"t": chain(sp.Matrix([r, sp.Rational(751, 1000)]))})["t"]       # 0.750 one unit off
     assert record_decision(_certified(out)) == "refuted"
@@ -238,13 +239,15 @@ def test_plane_figures_polygons_exact_strips_by_rigorous_quadrature():
     case = Case({a: 3, b: 2})
     ellipse = Figure.strips(Y, X, -a, a, (-b * sp.sqrt(1 - X ** 2 / a ** 2), b * sp.sqrt(1 - X ** 2 / a ** 2)))
     # ∫∫ x² over the ellipse: pi a³ b / 4 (= 27 pi / 2 here); the coefficient 1/4 read 0.251 is refuted
-    w = FigureWitness("e", "the ellipse", ("m",), (case,), coords=(X, Y), figure=ellipse, quantity=Over(X ** 2))
+    w = FigureWitness("e", "the ellipse", ("m",), (case,), coords=(X, Y), figure=ellipse,
+                      quantity=measured("integral", of=X ** 2))
     assert w.run({"m": chain(sp.pi * a ** 3 * b / 4)})["m"].agrees
     assert record_decision(_certified(w.run({"m": chain(sp.Rational(251, 1000) * sp.pi * a ** 3 * b)})["m"])) \
         == "refuted"
     # the triangle (0,0), (a,0), (0,b): centroid (a/3, b/3), exact: the difference is a ball of radius 0
     tri = FigureWitness("t", "a triangle", ("c",), (case,), coords=(X, Y),
-                        figure=Figure.polygon([(0, 0), (a, 0), (0, b)]), quantity=(CENTROID[0], CENTROID[1]))
+                        figure=Figure.polygon([(0, 0), (a, 0), (0, b)]),
+                        quantity=(measured("centroid, 1"), measured("centroid, 2")))
     record = _certified(tri.run({"c": chain(sp.Matrix([a / 3, b / 3]))})["c"])
     assert record_decision(record) == "agrees" and record["abs_error"] == 0.0
 
@@ -389,12 +392,12 @@ def test_euler_mu_bounds_clipped_by_min_and_max_is_decided_and_a_mutated_bound_r
 
 def _floating():
     from symfloat.engine.floating_witness import (Body, Combined, CutWitness, FloatingRootWitness, FloatingWitness,
-                                                  Joined, PART, Root)
-    return Body, Combined, CutWitness, FloatingRootWitness, FloatingWitness, Joined, PART, Root
+                                                  Joined, Root)
+    return Body, Combined, CutWitness, FloatingRootWitness, FloatingWitness, Joined, Root
 
 
 def test_a_floating_box_is_enclosed_and_a_quantity_off_by_1e_12_refuted():
-    Body, _, _, _, FloatingWitness, _, _, _ = _floating()
+    Body, _, _, _, FloatingWitness, _, _ = _floating()
     s = sp.Symbol("s", positive=True)
     box = FloatingWitness("box", "the clipped box", ("draught", "gm"), (Case({s: sp.Rational(1, 2)}, label="s = 1/2"),),
                           body=Body.box(2, 1, 1), up=(0, 0, 1), density=s, quantity=("draught", "metacentric height"))
@@ -408,7 +411,7 @@ def test_a_floating_box_is_enclosed_and_a_quantity_off_by_1e_12_refuted():
 
 
 def test_a_density_threshold_is_a_proven_sign_change_and_its_last_printed_digit_counts():
-    Body, _, _, FloatingRootWitness, _, _, _, Root = _floating()
+    Body, _, _, FloatingRootWitness, _, _, Root = _floating()
     rho, s0 = sp.symbols("rho s0", positive=True)
     threshold = FloatingRootWitness(
         "threshold", "the lower zero of the clipped log's metacentric height", ("s0",), (Case({}, label="unit log"),),
@@ -427,11 +430,10 @@ def test_a_density_threshold_is_a_proven_sign_change_and_its_last_printed_digit_
 
 
 def test_a_cut_through_vertices_joins_both_sides_and_stays_exact_enough():
-    Body, Combined, CutWitness, _, FloatingWitness, Joined, PART, _ = _floating()
-    from symfloat.engine.floating_witness import MEASURED
+    Body, Combined, CutWitness, _, FloatingWitness, Joined, _ = _floating()
     one = Case({}, label="unit cube")
     cut = CutWitness("cut", "the unit cube below x + y = 0", ("half",), (one,), body=Body.box(1, 1, 1), up=(1, 1, 0),
-                     through=(sp.Rational(1, 2), -sp.Rational(1, 2), 0), quantity=MEASURED["immersed volume"])
+                     through=(sp.Rational(1, 2), -sp.Rational(1, 2), 0), quantity=measured("immersed volume"))
     assert record_decision(_certified(cut.run({"half": chain(sp.Rational(1, 2))})["half"])) == "agrees"
     assert record_decision(_certified(cut.run({"half": chain(sp.Rational(1, 2) + sp.Rational(1, 10 ** 12))})["half"])) \
         == "refuted"
@@ -440,7 +442,8 @@ def test_a_cut_through_vertices_joins_both_sides_and_stays_exact_enough():
     joined = Joined("both", "both draughts", ("both",), (one,), parts=parts)
     assert record_decision(_certified(joined.run({"both": chain(sp.Matrix([sp.Rational(1, 3),
                                                                             sp.Rational(2, 3)]))})["both"])) == "agrees"
-    difference = Combined("diff", "their difference", ("diff",), (one,), parts=parts, values=(PART[1] - PART[0],))
+    difference = Combined("diff", "their difference", ("diff",), (one,), parts=parts,
+                          values=(measured("part 2") - measured("part 1"),))
     assert record_decision(_certified(difference.run({"diff": chain(sp.Rational(1, 3) - sp.Rational(1, 10 ** 12))})
                                       ["diff"])) == "refuted"
 
@@ -506,7 +509,7 @@ def test_a_cylinder_quantity_is_enclosed_and_a_value_off_by_1e_12_refuted():
 
 def test_a_cylinder_s_density_threshold_and_tilted_equilibrium_are_proven_roots():
     Body, _, _, FloatingRootWitness, _, _, _, Root = _floating()
-    from symfloat.engine.floating_witness import MEASURED
+    from symfloat.engine.measured import measured
     rho, s0 = sp.symbols("rho s0", positive=True)
     threshold = FloatingRootWitness(
         "threshold", "the lower zero of the upright cylinder's metacentric height", ("s0",), (Case({}, label="2r = L"),),
@@ -516,7 +519,7 @@ def test_a_cylinder_s_density_threshold_and_tilted_equilibrium_are_proven_roots(
     assert record_decision(_certified(threshold.run({"s0": chain(lower)})["s0"])) == "agrees"
     assert record_decision(_certified(threshold.run({"s0": chain(lower + sp.Rational(1, 10 ** 12))})["s0"])) \
         == "refuted"
-    arm = -sp.cos(PSI_C) * MEASURED["B - G, x"] + sp.sin(PSI_C) * MEASURED["B - G, z"]
+    arm = -sp.cos(PSI_C) * measured("B - G, x") + sp.sin(PSI_C) * measured("B - G, z")
     tilt = FloatingRootWitness(
         "tilt", "tan^2 of the cylinder's tilted equilibrium", ("t2",), (Case({}, label="example 10"),),
         body=Body.cylinder(sp.Rational(8, 5), sp.Rational(5, 2)), up=(sp.sin(PSI_C), 0, sp.cos(PSI_C)),
@@ -527,7 +530,7 @@ def test_a_cylinder_s_density_threshold_and_tilted_equilibrium_are_proven_roots(
                                       ["t2"])) == "refuted"
     # at the contact the water plane passes through the upper rim: the branches of a cut base are joined
     contact = replace(tilt, name="contact", targets=("tc",), quantity=sp.tan(PSI_C),
-                      roots=((PSI_C, Root.scan(MEASURED["upper base above water"], PSI_C, sp.Rational(1, 50),
+                      roots=((PSI_C, Root.scan(measured("upper base above water"), PSI_C, sp.Rational(1, 50),
                                                sp.Rational(3, 2), 30)),))
     assert record_decision(_certified(contact.run({"tc": chain(sp.Rational(5, 8))})["tc"])) == "agrees"
     assert record_decision(_certified(contact.run({"tc": chain(sp.Rational(5, 8) + sp.Rational(1, 10 ** 12))})
@@ -551,7 +554,7 @@ def test_vertices_of_one_height_reach_the_water_together():
 
 
 def test_a_floating_kind_without_a_rigorous_method_keeps_its_former_comparison():
-    Body, _, _, _, FloatingWitness, _, _, _ = _floating()
+    Body, _, _, _, FloatingWitness, _, _ = _floating()
     psi = sp.Symbol("psi", real=True)
     from symfloat.engine.floating_witness import LIMIT_METHODS, potential_slope
     heel = (0, sp.sin(psi), sp.cos(psi))

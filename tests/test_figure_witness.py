@@ -10,8 +10,9 @@ import mpmath
 import pytest
 import sympy as sp
 
-from symfloat.engine.figure_witness import CENTROID, CurveRoot, Figure, FigureWitness, Over
-from symfloat.engine.floating_witness import PART, Combined
+from symfloat.engine.figure_witness import CurveRoot, Figure, FigureWitness
+from symfloat.engine.floating_witness import Combined
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
 
 x, y, t = sp.symbols("x y t", real=True)
@@ -32,11 +33,12 @@ def _close(value, exact, method, scale=1):
 
 
 @pytest.mark.parametrize("quantity, exact", [
-    (Over(1), sp.Rational(3 * 5, 2)),
-    (Over(x ** 2), sp.Rational(8 + 1, 3) * sp.Rational(5, 2)),
-    (Over(x * y), sp.Rational(4 - 1, 2) * (9 - sp.Rational(1, 4)) / 2),
-    (Over((x - CENTROID[0]) ** 2), 3 ** 3 * sp.Rational(5, 2) / 12),          # about the centroidal axis
-    (CENTROID[1], (sp.Rational(1, 2) + 3) / 2),
+    (measured("integral", of=1), sp.Rational(3 * 5, 2)),
+    (measured("integral", of=x ** 2), sp.Rational(8 + 1, 3) * sp.Rational(5, 2)),
+    (measured("integral", of=x * y), sp.Rational(4 - 1, 2) * (9 - sp.Rational(1, 4)) / 2),
+    (measured("integral", of=(x - measured("centroid, 1")) ** 2),
+     3 ** 3 * sp.Rational(5, 2) / 12),                                       # about the centroidal axis
+    (measured("centroid, 2"), (sp.Rational(1, 2) + 3) / 2),
 ])
 def test_the_rectangle_off_the_origin(quantity, exact):
     for method, value in _measure(RECT, quantity, RECT_CASE):
@@ -46,19 +48,20 @@ def test_the_rectangle_off_the_origin(quantity, exact):
 def test_a_clockwise_triangle_is_the_same_figure():
     case = Case({a: 3, h: 2})
     for ring in ([(0, 0), (a, 0), (0, h)], [(0, 0), (0, h), (a, 0)]):
-        for method, (yy, cx) in _measure(Figure.polygon(ring), (Over(y ** 2), CENTROID[0]), case):
+        quantity = (measured("integral", of=y ** 2), measured("centroid, 1"))
+        for method, (yy, cx) in _measure(Figure.polygon(ring), quantity, case):
             assert _close(yy, sp.Rational(3 * 8, 12), method) and _close(cx, 1, method)
 
 
 def test_a_polygon_refuses_an_integrand_of_degree_three():
     with pytest.raises(ValueError, match="degree 2"):
-        _measure(RECT, Over(x ** 3), RECT_CASE)
+        _measure(RECT, measured("integral", of=x ** 3), RECT_CASE)
 
 
 def test_the_ellipse_by_its_chords():
     E = Figure.strips(y, x, -a, a, (-b * sp.sqrt(1 - x ** 2 / a ** 2), b * sp.sqrt(1 - x ** 2 / a ** 2)))
     case = Case({a: 3, b: 2})
-    for method, (area, kxx) in _measure(E, (Over(1), Over(x ** 2)), case):
+    for method, (area, kxx) in _measure(E, (measured("integral", of=1), measured("integral", of=x ** 2)), case):
         assert _close(area, 6 * sp.pi, method) and _close(kxx, sp.pi * 27 * 2 / 4, method)
     # mutation: the rectangle's divisor (AB² D/6 instead of /8) is refuted
     assert not _close(kxx, sp.pi * 27 * 2 / 4 * 8 / 6, method)
@@ -66,7 +69,7 @@ def test_the_ellipse_by_its_chords():
 
 def test_the_quarter_disc_along_y_with_a_square_root_end():
     Q = Figure.strips(x, y, 0, r, (0, sp.sqrt(r ** 2 - y ** 2)))
-    for method, value in _measure(Q, Over(y ** 2), Case({r: sp.Rational(3, 2)})):
+    for method, value in _measure(Q, measured("integral", of=y ** 2), Case({r: sp.Rational(3, 2)})):
         assert _close(value, sp.pi * sp.Rational(3, 2) ** 4 / 16, method)
 
 
@@ -77,16 +80,18 @@ def test_the_quarter_disc_along_y_with_a_square_root_end():
      sp.gamma(sp.Rational(1, 2)) * sp.gamma(sp.Rational(5, 4)) / (2 * sp.gamma(sp.Rational(7, 4)))),
 ])
 def test_an_interval_with_an_algebraic_end(integrand, smooth, exact):
-    for method, value in _measure(Figure.interval(t, 0, 1, smooth=smooth), Over(integrand), Case({})):
+    for method, value in _measure(Figure.interval(t, 0, 1, smooth=smooth), measured("integral", of=integrand),
+                                  Case({})):
         assert _close(value, exact, method), (integrand, method.name)
 
 
 def test_two_figures_combined():
     rect = FigureWitness("", "", (), (), figure=Figure.polygon([(-a, -b), (a, -b), (a, b), (-a, b)]), coords=(x, y),
-                         quantity=Over(y ** 2))
+                         quantity=measured("integral", of=y ** 2))
     rhomb = FigureWitness("", "", (), (), figure=Figure.polygon([(-a, 0), (0, -b), (a, 0), (0, b)]), coords=(x, y),
-                          quantity=Over(y ** 2))
-    w = Combined("ratio", "", (), (Case({a: 2, b: 1}),), parts=(rect, rhomb), values=(PART[0] / PART[1],),
+                          quantity=measured("integral", of=y ** 2))
+    w = Combined("ratio", "", (), (Case({a: 2, b: 1}),), parts=(rect, rhomb),
+                 values=(measured("part 1") / measured("part 2"),),
                  methods=FigureWitness.methods)
     for method in w.methods:
         assert _close(w.measure(w.instances[0], method), 4, method)      # 4ab³/3 over ab³/3

@@ -12,6 +12,7 @@ import pytest
 import sympy as sp
 
 from symfloat.engine.floating_witness import QUANTITIES, Body, FloatingWitness, number
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
 
 A, B, C, S = sp.symbols("a b c s", positive=True)
@@ -117,7 +118,7 @@ def test_rational_dimensions_reach_the_geometry_exactly():
 # (W/2, W/2 tan psi) times L: volume L W^2 tan psi / 8 = 1/8, centroid W/3 from the axis and W tan psi/6 from
 # the old water plane (moments 1/12 and 1/96).  The righting arm of a wall-sided body is
 # sin psi (GM + BM tan^2 psi / 2), BM = W^2/(6H) = 2/9, GM = BM - H/4 = -19/36: -75/(144 sqrt 17).
-from symfloat.engine.floating_witness import LIMIT_METHODS, MEASURED, TILT_QUANTITIES  # noqa: E402
+from symfloat.engine.floating_witness import LIMIT_METHODS, TILT_QUANTITIES  # noqa: E402
 
 W_, H_, L_ = sp.symbols("W H L", positive=True)
 TILTED = Case({W_: 2, H_: 3, L_: 1, S: sp.Rational(1, 2)}, label="box 2 x 3 x 1, half immersed, tan psi = 1/4")
@@ -149,9 +150,8 @@ def test_the_wedges_and_the_arm_of_a_tilted_box_agree_with_their_closed_forms(qu
 
 def test_an_expression_in_measured_quantities():
     # V B_z: the immersed volume (3, upright) times the height of B above G (-3/4): -9/4
-    m = MEASURED
     w = FloatingWitness("VB", "VB", ("f",), (TILTED,), body=Body.box(L_, W_, H_), density=S,
-                        quantity=(m["immersed volume"] * m["B - G, z"], m["immersed volume"]))
+                        quantity=(measured("immersed volume") * measured("B - G, z"), measured("immersed volume")))
     assert [float(v) for v in w.measure(TILTED, w.methods[1])] == [-2.25, 3.0]
     with pytest.raises(ValueError, match="needs the reference"):
         FloatingWitness("x", "x", ("f",), (TILTED,), body=Body.box(L_, W_, H_), density=S, quantity="righting arm")
@@ -186,7 +186,7 @@ def test_the_waterplane_moments_of_a_tilted_box_in_the_body_frame():
     r17 = sp.sqrt(17)
     n, x = (0, -4 / r17, 1 / r17), (1, 0, 0)
     w = tilted((waterplane_moment(n, n), waterplane_moment(x, x), waterplane_moment(x, n),
-                MEASURED["waterplane moment, yz"]))
+                measured("waterplane moment, yz")))
     exact = (17 * r17 / 96, r17 / 24, 0, -r17 / 24)      # yz = n_y n_z I_nn = -4/17 * 17 sqrt 17/96
     for method in w.methods:
         assert all(abs(float(v - e)) < 1e-12 for v, e in zip(w.measure(TILTED, method), exact)), method.name
@@ -210,7 +210,7 @@ def rooted(quantity, vanish, case=LOG, guard=(), at=None):
 
 def test_the_zero_of_the_righting_arm_and_the_contact_of_a_base():
     arm = rooted(sp.tan(PSI) ** 2, "righting arm")
-    contact = rooted(sp.tan(PSI), -MEASURED["upper base above water"])
+    contact = rooted(sp.tan(PSI), -measured("upper base above water"))
     for w, exact in ((arm, sp.Rational(43, 100)), (contact, sp.Rational(9, 10))):
         assert abs(float(w.measure(LOG, w.methods[0]) - exact)) < 1e-13
         with mpmath.workdps(50):
@@ -227,14 +227,14 @@ def test_a_root_along_the_density_a_guard_and_a_position_found_elsewhere():
     # the draught s H of the upright box equals 27/100 at s = 3/20; the grid's ends are expressions in the case
     # (from H/180 to H/2: 1/100 ... 9/10)
     w = FloatingRootWitness("s", "s", ("f",), (LOG,), body=Body.box(L_, W_, H_), density=S, quantity=S,
-                            roots=((S, Root.scan(MEASURED["draught"] - sp.Rational(27, 100), S, H_ / 180, H_ / 2,
+                            roots=((S, Root.scan(measured("draught") - sp.Rational(27, 100), S, H_ / 180, H_ / 2,
                                                  30)),))
     assert abs(float(w.measure(LOG, w.methods[0])) - 0.15) < 1e-15
     with mpmath.workdps(50):
         assert abs(w.measure(LOG, w.methods[1]) - mpmath.mpf(3) / 20) < 1e-35
     # the lower base stays under water at the zero of the arm: a guard asking it to be above is refused
     with pytest.raises(ValueError, match="not positive at the root"):
-        rooted(sp.tan(PSI), "righting arm", guard=(MEASURED["lower base above water"],)).measure(LOG, w.methods[0])
+        rooted(sp.tan(PSI), "righting arm", guard=(measured("lower base above water"),)).measure(LOG, w.methods[0])
     # the zero found for L = 1, the volume read for L = 2 (the arm does not depend on L): 2 * 2 * 9/5 / 2
     twice = Case({**LOG.params, L_: 2})
     w = rooted("immersed volume", "righting arm", case=twice, at={L_: 1})
@@ -255,7 +255,7 @@ def test_a_zero_found_inside_another():
     inner = Root.scan("righting arm", PSI, sp.Rational(1, 50), sp.Rational(7, 5), 28)
     outer = FloatingRootWitness("H", "H", ("f",), (LOG,), body=Body.box(L_, W_, H_), up=(0, sp.sin(PSI), sp.cos(PSI)),
                                 density=S, reference=(0, 0, 1), quantity=H_,
-                                roots=((H_, Root.scan(MEASURED["upper base above water"], H_, sp.Rational(17, 10),
+                                roots=((H_, Root.scan(measured("upper base above water"), H_, sp.Rational(17, 10),
                                                       sp.Rational(23, 10), 6, roots=((PSI, inner),))),))
     assert abs(float(outer.measure(LOG, outer.methods[0])) - 2) < 1e-12
     with mpmath.workdps(50):
@@ -350,9 +350,9 @@ def test_the_corners_of_a_cube_corner_up_at_half_density():
 def test_a_quantity_at_other_parameters_beside_a_root():
     # the upright metacentric height BM - h (1 - s)/2 (closed form above) beside the tilt where the top face
     # reaches the water, both in one measurement
-    from symfloat.engine.floating_witness import MEASURED, At, Root
+    from symfloat.engine.floating_witness import At, Root
     gm = sp.Symbol("gm_r")
-    w, case = _root_witness((gm, sp.tan(PHI)), ((gm, At(MEASURED["metacentric height"], {PHI: 0})),
+    w, case = _root_witness((gm, sp.tan(PHI)), ((gm, At(measured("metacentric height"), {PHI: 0})),
                                                 (PHI, Root("face clearance", PHI, [0.05 * k for k in range(1, 25)]))),
                             params={DENS: sp.Rational(9, 10)})
     h, s_ = sp.Rational(137, 100), sp.Rational(9, 10)
@@ -380,7 +380,7 @@ def test_the_waterplane_tensor_of_a_heeled_box_is_the_rectangle_turned():
     # (0, cos phi, -sin phi): T_yy = cos^2 phi * 3 (2/cos phi)^3 / 12, T_yz = -sin phi cos phi * the same / cos^2 phi
     q = ("waterplane tensor, yy", "waterplane tensor, yz", "waterplane tensor, xx")
     w = FloatingWitness("t", "t", ("f",), (CASE,), body=Body.box(3, 2, 4), up=(0, 3, 4), density=sp.Rational(1, 2),
-                        quantity=tuple(MEASURED[n] for n in q))
+                        quantity=tuple(measured(n) for n in q))
     c, s_ = sp.Rational(4, 5), sp.Rational(3, 5)
     along = 3 * (2 / c) ** 3 / 12                   # second moment along the heeled side
     exact = (c ** 2 * along, -s_ * c * along, (2 / c) * 27 / 12)
@@ -450,9 +450,9 @@ def test_the_cylinder_with_a_base_cut_keeps_its_volume():
 
 def test_witnesses_combined_by_an_expression():
     # the draughts of the box upright (2/5) and on its side (6/5): their difference and the ratio to c
-    from symfloat.engine.floating_witness import PART, Combined
+    from symfloat.engine.floating_witness import Combined
     w = Combined("c", "c", ("f",), (CASE,), parts=(witness("draught"), witness("draught", up=(1, 0, 0))),
-                 values=(PART[1] - PART[0], PART[0] / C))
+                 values=(measured("part 2") - measured("part 1"), measured("part 1") / C))
     assert [float(v) for v in w.measure(CASE, w.methods[0])] == pytest.approx([0.8, 0.4], abs=1e-14)
 
 
@@ -579,9 +579,9 @@ def test_the_immersed_part_of_a_tilted_box_split_at_the_lowest_point_of_its_wate
 
 def test_the_split_parts_make_up_the_immersed_part():
     from symfloat.engine.floating_witness import Marked
-    parts = (MEASURED["lower part moment"] + MEASURED["upper part moment"]
-             - MEASURED["immersed volume"] * MEASURED["B below water"],
-             MEASURED["lower part volume"] + MEASURED["upper part volume"] - MEASURED["immersed volume"])
+    parts = (measured("lower part moment") + measured("upper part moment")
+             - measured("immersed volume") * measured("B below water"),
+             measured("lower part volume") + measured("upper part volume") - measured("immersed volume"))
     w = FloatingWitness("sum", "", ("f",), (TILTED,), body=Marked.of(Body.box(L_, W_, H_), (0, 0, 1)),
                         up=(0, sp.Rational(1, 4), 1), density=S, quantity=parts)
     assert max(abs(v) for v in w.measure(TILTED, w.methods[1])) < 1e-35
@@ -672,7 +672,7 @@ def test_a_root_read_only_by_a_later_grid_is_found_in_float64():
     # digits it is found in float64, the arm's zero (the quantity reads it) at 40 digits, to 1e-35 as before
     from symfloat.engine.floating_witness import _SOLVED
     top = sp.Symbol("psi_top")
-    roots = ((top, Root.scan(-MEASURED["upper base above water"], PSI, sp.Rational(1, 50), sp.Rational(7, 5), 28)),
+    roots = ((top, Root.scan(-measured("upper base above water"), PSI, sp.Rational(1, 50), sp.Rational(7, 5), 28)),
              (PSI, Root.scan("righting arm", PSI, sp.Rational(1, 50), top, 28)))
     found = FloatingRootWitness("root", "root", ("f",), (LOG,), body=Body.box(L_, W_, H_),
                                 up=(0, sp.sin(PSI), sp.cos(PSI)), density=S, reference=(0, 0, 1),
@@ -684,3 +684,19 @@ def test_a_root_read_only_by_a_later_grid_is_found_in_float64():
     read = FloatingRootWitness(**{**found.__dict__, "quantity": sp.tan(top)})   # now the quantity reads it
     with mpmath.workdps(50):
         assert abs(read.measure(LOG, read.methods[1]) - mpmath.mpf(9) / 10) < 1e-35
+
+
+def test_a_whole_measures_its_parts_at_their_methods_or_the_least_precise_of_them():
+    """Combined and Joined name no methods: the parts' own, or, where they differ, those of the part whose float64
+    method is the least precise (a limit's LIMIT_METHODS beside a plain quantity's FLOATING_METHODS)."""
+    from symfloat.engine.floating_witness import (FLOATING_METHODS, LIMIT_METHODS, Body, Combined, FloatingWitness,
+                                                  Joined)
+    psi = sp.Symbol("psi")
+    plain = FloatingWitness("", "", (), (), body=Body.box(2, 1, 1), density=sp.Rational(1, 2))
+    limit = FloatingWitness("", "", (), (), body=Body.box(2, 1, 1), density=sp.Rational(1, 2),
+                            up=(sp.sin(psi), 0, sp.cos(psi)), quantity="draught",
+                            limit=(psi, 0), methods=LIMIT_METHODS)
+    assert Joined("j", "", (), (), parts=(plain, plain)).methods == FLOATING_METHODS
+    assert Combined("c", "", (), (), parts=(plain, limit), values=(measured("part 1"),)).methods == LIMIT_METHODS
+    assert Joined("j", "", (), (), parts=(limit, plain)).methods == LIMIT_METHODS
+    assert Joined("j", "", (), (), parts=(plain,), methods=LIMIT_METHODS).methods == LIMIT_METHODS

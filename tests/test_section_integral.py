@@ -3,6 +3,7 @@ against its exact integral, with every method within its tolerance, and a wrong 
 import mpmath
 import sympy as sp
 
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case, SectionIntegral
 
 z, h, r = sp.symbols("z h r", positive=True)
@@ -41,11 +42,12 @@ def test_a_tuple_of_bounds_gives_one_value_per_pair_and_the_witness_refutes_a_wr
 def test_plane_sections_combined_by_an_expression_in_the_areas():
     # the disc of radius r cut at the heights 0 and r/2 of a sphere of radius r: areas pi r^2 and 3 pi r^2/4 (by
     # hand); the combination sqrt(A_0/pi), A_1/A_0 is the radius r and 3/4, and 2 r a parameter carried through
-    from symfloat.engine.witness import SECTION, PlaneSections
+    from symfloat.engine.witness import PlaneSections
     P, eta = sp.symbols("P eta", real=True)
     w = PlaneSections("discs", "two sections", ("t",), (CASE,), width=2 * (r ** 2 - P ** 2) * sp.cos(eta) ** 2,
                       position=P, across=eta, chord=(-sp.pi / 2, sp.pi / 2), planes=(0, r / 2),
-                      combine=(sp.sqrt(SECTION[0] / sp.pi), SECTION[1] / SECTION[0], 2 * r))
+                      combine=(sp.sqrt(measured("section 1") / sp.pi), measured("section 2") / measured("section 1"),
+                               2 * r))
     for method in w.methods:
         got = w.measure(CASE, method)
         assert all(abs(g - e) < max(method.tolerance, 1e-45) for g, e in zip(got, (1.5, 0.75, 3.0))), method.name

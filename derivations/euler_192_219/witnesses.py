@@ -2,9 +2,11 @@
 boxes of §§192-203 floating, heeled or pitched, clipped exactly (:mod:`symfloat.engine.floating_witness`)."""
 import sympy as sp
 
-from symfloat.engine.figure_witness import CENTROID, FIGURE_METHODS, CurveRoot, Figure, FigureWitness, Over
-from symfloat.engine.floating_witness import (LIMIT_METHODS, PART, SERIES_METHODS, Body, Combined, FloatingRootWitness,
+from symfloat.engine.declare import part_of
+from symfloat.engine.figure_witness import CurveRoot, Figure, FigureWitness
+from symfloat.engine.floating_witness import (LIMIT_METHODS, SERIES_METHODS, Body, Combined, FloatingRootWitness,
                                               FloatingWitness, Joined, Loaded, Root, SeriesWitness, potential_slope)
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
 
 from .statements import (Iw, Kw, Mw, PM, PN, Pp, Tb, V, X1, X2, Y1, Y2, Yel, a, b, c, d, eb, gneg, h, hb1, hb2, m, phi,
@@ -25,7 +27,10 @@ def figure_witness(name, description, targets, cases, figure, quantity):
     d.witness(FigureWitness(name, description, tuple(targets), cases, figure=figure, coords=(x, y), quantity=quantity))
 
 
-XC = CENTROID[0]
+XC = measured("centroid, 1")
+AREA = measured("integral", of=1)                  # the figure's area
+I_YY = measured("integral", of=y ** 2)             # its moments about the axes
+I_XX = measured("integral", of=x ** 2)
 N_OF_M = sp.sqrt(1 - m ** 2)                       # n, the cosine of the angle whose sine is m (§205)
 SQUARE = Figure.polygon([(-a, -a), (a, -a), (a, a), (-a, a)])
 RECTANGLE = Figure.polygon([(-a, -b), (a, -b), (a, b), (-a, b)])
@@ -44,32 +49,34 @@ AB_CASES = rational_cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {
 Q_CASES = rational_cases(("a = 1, b = 1, c = 2", {a: 1, b: 1, c: 2}),
                          ("a = 5/2, b = 3/4, c = 3/2", {a: "5/2", b: "3/4", c: "3/2"}))
 
-figure_witness("square-moment", "∫∫ y^2 over the square", ("square-I",), SQ, SQUARE, Over(y ** 2))
+figure_witness("square-moment", "∫∫ y^2 over the square", ("square-I",), SQ, SQUARE, I_YY)
 figure_witness("square-quadrant", "∫∫ y^2 and ∫∫ x^2 over the quadrant ACE of the square",
                ("square-quadrant-I", "square-quadrant-K"), SQ, Figure.polygon([(0, 0), (a, 0), (a, a), (0, a)]),
-               Over(y ** 2))
-figure_witness("rect-I", "∫∫ y^2 over the rectangle", ("rect-I",), AB_CASES, RECTANGLE, Over(y ** 2))
-figure_witness("rect-K", "∫∫ x^2 over the rectangle", ("rect-K",), AB_CASES, RECTANGLE, Over(x ** 2))
-figure_witness("rhombus-I", "∫∫ y^2 over the rhombus", ("rhombus-I",), AB_CASES, RHOMBUS, Over(y ** 2))
-figure_witness("rhombus-K", "∫∫ x^2 over the rhombus", ("rhombus-K",), AB_CASES, RHOMBUS, Over(x ** 2))
-figure_witness("quad-I", "∫∫ y^2 over the quadrilateral AeBf", ("quad-I",), Q_CASES, KITE, Over(y ** 2))
-figure_witness("Ace-I", "∫∫ y^2 over the triangle Ace", ("Ace-I",), Q_CASES, ACE, Over(y ** 2))
-figure_witness("Ace-L", "∫∫ (x - a)^2 over the triangle Ace", ("Ace-L",), Q_CASES, ACE, Over((x - a) ** 2))
-figure_witness("Bce-I", "∫∫ y^2 over the triangle Bce", ("Bce-I",), Q_CASES, BCE, Over(y ** 2))
-figure_witness("Bce-L", "∫∫ (x - a)^2 over the triangle Bce", ("Bce-L",), Q_CASES, BCE, Over((x - a) ** 2))
+               I_YY)
+figure_witness("rect-I", "∫∫ y^2 over the rectangle", ("rect-I",), AB_CASES, RECTANGLE, I_YY)
+figure_witness("rect-K", "∫∫ x^2 over the rectangle", ("rect-K",), AB_CASES, RECTANGLE, I_XX)
+figure_witness("rhombus-I", "∫∫ y^2 over the rhombus", ("rhombus-I",), AB_CASES, RHOMBUS, I_YY)
+figure_witness("rhombus-K", "∫∫ x^2 over the rhombus", ("rhombus-K",), AB_CASES, RHOMBUS, I_XX)
+figure_witness("quad-I", "∫∫ y^2 over the quadrilateral AeBf", ("quad-I",), Q_CASES, KITE, I_YY)
+figure_witness("Ace-I", "∫∫ y^2 over the triangle Ace", ("Ace-I",), Q_CASES, ACE, I_YY)
+figure_witness("Ace-L", "∫∫ (x - a)^2 over the triangle Ace", ("Ace-L",), Q_CASES, ACE,
+               measured("integral", of=(x - a) ** 2))
+figure_witness("Bce-I", "∫∫ y^2 over the triangle Bce", ("Bce-I",), Q_CASES, BCE, I_YY)
+figure_witness("Bce-L", "∫∫ (x - a)^2 over the triangle Bce", ("Bce-L",), Q_CASES, BCE,
+               measured("integral", of=(x - a) ** 2))
 figure_witness("quad-L", "∫∫ (x - a)^2 over the quadrilateral, ef at x = a", ("quad-L", "quad-L-again"), Q_CASES,
-               KITE, Over((x - a) ** 2))
+               KITE, measured("integral", of=(x - a) ** 2))
 figure_witness("quad-centroid", "Cc = x_C - a, x_C the quadrilateral's centroid", ("centroid", "Cc-again"), Q_CASES,
                KITE, XC - a)
 figure_witness("quad-K", "∫∫ (x - x_C)^2 over the quadrilateral, x_C its centroid", ("quad-K",), Q_CASES, KITE,
-               Over((x - XC) ** 2))
+               measured("integral", of=(x - XC) ** 2))
 QM_CASES = rational_cases(("a = 1, b = 1, c = 2, m = 3/5", {a: 1, b: 1, c: 2, m: "3/5"}),
                           ("a = 5/2, b = 3/4, c = 3/2, m = 1/3", {a: "5/2", b: "3/4", c: "3/2", m: "1/3"}))
 figure_witness("quad-PQ", "∫∫ (m X - n y)^2 over the quadrilateral about its centroid",
                ("moment-PQ-symmetric", "moment-PQ-increasing"), QM_CASES, KITE,
-               Over((m * (x - XC) - N_OF_M * y) ** 2))
+               measured("integral", of=(m * (x - XC) - N_OF_M * y) ** 2))
 figure_witness("quad-RS", "∫∫ (n X + m y)^2 over the quadrilateral about its centroid",
-               ("moment-RS-symmetric",), QM_CASES, KITE, Over((N_OF_M * (x - XC) + m * y) ** 2))
+               ("moment-RS-symmetric",), QM_CASES, KITE, measured("integral", of=(N_OF_M * (x - XC) + m * y) ** 2))
 
 T_CASES = rational_cases(
     ("rectangle [-3/2, 5/2] x [-1/2, 5/2], m = 3/5, x_e = 2",
@@ -77,33 +84,35 @@ T_CASES = rational_cases(
     ("rectangle [-1, 1] x [1/4, 2], m = 1/4, x_e = -1/2",
      {X1: -1, Y1: "1/4", X2: 1, Y2: 2, m: "1/4", xe: "-1/2"}))
 figure_witness("generic-PQ", "∫∫ (m x - n y)^2 over the generic rectangle", ("moment-PQ-IK", "moment-PQ-restated"),
-               T_CASES, GENERIC, Over((m * x - N_OF_M * y) ** 2))
+               T_CASES, GENERIC, measured("integral", of=(m * x - N_OF_M * y) ** 2))
 figure_witness("generic-RS", "∫∫ (n x + m y)^2 over the generic rectangle", ("moment-RS-IK",), T_CASES, GENERIC,
-               Over((N_OF_M * x + m * y) ** 2))
+               measured("integral", of=(N_OF_M * x + m * y) ** 2))
 figure_witness("generic-sum", "∫∫ (x^2 + y^2) over the generic rectangle (polar moment about the origin)",
-               ("sum-invariant",), T_CASES, GENERIC, Over(x ** 2 + y ** 2))
+               ("sum-invariant",), T_CASES, GENERIC, measured("integral", of=x ** 2 + y ** 2))
 figure_witness("generic-parallel", "∫∫ (x - x_C)^2 over the generic rectangle, x_C its centroid",
-               ("parallel-axis-rule",), T_CASES, GENERIC, Over((x - XC) ** 2))
+               ("parallel-axis-rule",), T_CASES, GENERIC, measured("integral", of=(x - XC) ** 2))
 
 E_CASES = rational_cases(("a = 3, b = 2", {a: 3, b: 2}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
-figure_witness("ellipse-K", "∫∫ x^2 over the ellipse", ("ellipse-K",), E_CASES, ELLIPSE, Over(x ** 2))
-figure_witness("ellipse-I", "∫∫ y^2 over the ellipse", ("ellipse-I",), E_CASES, ELLIPSE, Over(y ** 2))
+figure_witness("ellipse-K", "∫∫ x^2 over the ellipse", ("ellipse-K",), E_CASES, ELLIPSE, I_XX)
+figure_witness("ellipse-I", "∫∫ y^2 over the ellipse", ("ellipse-I",), E_CASES, ELLIPSE, I_YY)
 figure_witness("ellipse-quadrant", "a quarter of ∫∫ x^2 over the ellipse (the quadrants are congruent)",
-               ("ellipse-quadrant-K", "ellipse-quadrant-moment"), E_CASES, ELLIPSE, Over(x ** 2) / 4)
+               ("ellipse-quadrant-K", "ellipse-quadrant-moment"), E_CASES, ELLIPSE, I_XX / 4)
 figure_witness("ellipse-quadrant-area", "a quarter of ∫∫ 1 over the ellipse", ("ellipse-quadrant-area",), E_CASES,
-               ELLIPSE, Over(1) / 4)
+               ELLIPSE, AREA / 4)
 
 
-def figure_part(figure, quantity):
-    return FigureWitness("", "", (), (), figure=figure, coords=(x, y), quantity=quantity)
+figure_part = part_of(FigureWitness, coords=(x, y))
 
 
 d.witness(Combined("rect-rhombus-ratios", "the rectangle's moments over the rhombus' (same a, b)", ("rhombus-twice",),
-                   AB_CASES, parts=(figure_part(RECTANGLE, Over(y ** 2)), figure_part(RHOMBUS, Over(y ** 2)),
-                                    figure_part(RECTANGLE, Over(x ** 2)), figure_part(RHOMBUS, Over(x ** 2))),
-                   values=(PART[0] / PART[1], PART[2] / PART[3]), methods=FIGURE_METHODS))
-KITE_EXCESS = dict(parts=(figure_part(KITE, Over((x - XC) ** 2)), figure_part(RHOMBUS_OF_KITE, Over(x ** 2))),
-                   values=(PART[0] - PART[1],), methods=FIGURE_METHODS)
+                   AB_CASES, parts=(figure_part(figure=RECTANGLE, quantity=I_YY), figure_part(figure=RHOMBUS, quantity=I_YY),
+                                    figure_part(figure=RECTANGLE, quantity=I_XX),
+                                    figure_part(figure=RHOMBUS, quantity=I_XX)),
+                   values=(measured("part 1") / measured("part 2"),
+                           measured("part 3") / measured("part 4"))))
+KITE_EXCESS = dict(parts=(figure_part(figure=KITE, quantity=measured("integral", of=(x - XC) ** 2)),
+                          figure_part(figure=RHOMBUS_OF_KITE, quantity=I_XX)),
+                   values=(measured("part 1") - measured("part 2"),))
 d.witness(Combined("quad-K-excess", "∫∫ (x - x_C)^2 over the quadrilateral minus that of the rhombus with the same "
                    "AB and ef", ("quad-K-larger",), Q_CASES, **KITE_EXCESS))
 
@@ -135,64 +144,65 @@ B_CASES = (Case({Mw: 1, V: 1, Iw: sp.Rational(1, 6), Kw: sp.Rational(2, 3), h: s
            Case({Mw: sp.Rational(3, 2), V: sp.Rational(3, 2), Iw: sp.Rational(1, 6), Kw: sp.Rational(2, 3),
                  h: sp.Rational(1, 20), sw: sp.Rational(3, 4)}, label="box 1 x 1 x 2, s = 3/4, b = 1/20"))
 d.witness(Joined("stability-AB-box", "M GZ/phi of a heeled box by exact clipping (G below, G above B)",
-                 ("stability-AB",), B_CASES, parts=(stability(HEEL, -h), stability(HEEL, h)), methods=LIMIT_METHODS))
+                 ("stability-AB",), B_CASES, parts=(stability(HEEL, -h), stability(HEEL, h))))
 d.witness(Joined("stability-EF-box", "M GZ/phi of a pitched box by exact clipping (G below, G above B)",
-                 ("stability-EF",), B_CASES, parts=(stability(PITCH, -h), stability(PITCH, h)), methods=LIMIT_METHODS))
+                 ("stability-EF",), B_CASES, parts=(stability(PITCH, -h), stability(PITCH, h))))
 d.witness(Joined("stability-I-box", "M GZ/phi of a heeled box by exact clipping, G below B",
-                 ("stability-I",), B_CASES, parts=(stability(HEEL, -h),), methods=LIMIT_METHODS))
+                 ("stability-I",), B_CASES, parts=(stability(HEEL, -h),)))
 d.witness(Joined("stability-K-box", "M GZ/phi of a pitched box by exact clipping, G below B",
-                 ("stability-K",), B_CASES, parts=(stability(PITCH, -h),), methods=LIMIT_METHODS))
+                 ("stability-K",), B_CASES, parts=(stability(PITCH, -h),)))
 
 # ---- second pass: the strip, the oblique axes and the areas, by the moments of the figures themselves ----------
 STRIP_CASES = rational_cases(("PM = 2, Pp = 1/2", {PM: 2, Pp: "1/2"}), ("PM = 5/3, Pp = 3/10", {PM: "5/3", Pp: "3/10"}))
 figure_witness("strip-moment", "∫∫ y^2 over the strip Pp wide from AB up to M", ("strip-moment",), STRIP_CASES,
-               STRIP, Over(y ** 2))
+               STRIP, I_YY)
 # the generic rectangle off the origin, at angles whose sine and cosine are rational (3-4-5, 5-12-13)
 GEN_CASES = rational_cases(("m = 3/5, [-1, 2] x [0, 3]", {m: "3/5", X1: -1, Y1: 0, X2: 2, Y2: 3}),
                            ("m = 5/13, [-3/2, 5/2] x [1/2, 5/2]",
                             {m: "5/13", X1: "-3/2", Y1: "1/2", X2: "5/2", Y2: "5/2"}))
 figure_witness("moment-PQ-rectangle", "∫∫ u^2 over a rectangle off the origin, u the distance from PQ",
-               ("moment-PQ",), GEN_CASES, GENERIC, Over((m * x - N_OF_M * y) ** 2))
+               ("moment-PQ",), GEN_CASES, GENERIC, measured("integral", of=(m * x - N_OF_M * y) ** 2))
 figure_witness("moment-RS-rectangle", "∫∫ t^2 over a rectangle off the origin, t the distance from RS",
-               ("moment-RS",), GEN_CASES, GENERIC, Over((N_OF_M * x + m * y) ** 2))
-figure_witness("generic-area", "∫∫ 1 over the rectangle off the origin", ("area-2D",), GEN_CASES, GENERIC, Over(1))
-figure_witness("square-area-quadrature", "∫∫ 1 over the square", ("square-area",), SQ, SQUARE, Over(1))
-figure_witness("rect-area-quadrature", "∫∫ 1 over the rectangle", ("rect-area",), AB_CASES, RECTANGLE, Over(1))
-figure_witness("rhombus-area-quadrature", "∫∫ 1 over the rhombus", ("rhombus-area",), AB_CASES, RHOMBUS, Over(1))
+               ("moment-RS",), GEN_CASES, GENERIC, measured("integral", of=(N_OF_M * x + m * y) ** 2))
+figure_witness("generic-area", "∫∫ 1 over the rectangle off the origin", ("area-2D",), GEN_CASES, GENERIC, AREA)
+figure_witness("square-area-quadrature", "∫∫ 1 over the square", ("square-area",), SQ, SQUARE, AREA)
+figure_witness("rect-area-quadrature", "∫∫ 1 over the rectangle", ("rect-area",), AB_CASES, RECTANGLE, AREA)
+figure_witness("rhombus-area-quadrature", "∫∫ 1 over the rhombus", ("rhombus-area",), AB_CASES, RHOMBUS, AREA)
 ELLIPSE_POINTS = rational_cases(("a = 2, b = 1, x = 1/2", {a: 2, b: 1, x: "1/2"}),
                                 ("a = 5/2, b = 3/4, x = 2", {a: "5/2", b: "3/4", x: 2}))
 d.witness(CurveRoot("ellipse-ordinate-root", "the ordinate of the ellipse by root-finding", ("ellipse-ordinate",),
                     ELLIPSE_POINTS, equation=x ** 2 / a ** 2 + y ** 2 / b ** 2 - 1, variable=y, bracket=(0, b)))
 
 figure_witness("I-K-rectangle", "∫∫ y^2 and ∫∫ x^2 over a rectangle off the origin", ("I-K-definitions",), GEN_CASES,
-               GENERIC, (Over(y ** 2), Over(x ** 2)))
+               GENERIC, (I_YY, I_XX))
 figure_witness("polar-rectangle", "∫∫ (x^2 + y^2) over a rectangle off the origin", ("polar-sum",), GEN_CASES,
-               GENERIC, Over(x ** 2 + y ** 2))
-figure_witness("xy-quadrilateral", "∫∫ xy over the quadrilateral AeBf", ("xy-vanishes",), Q_CASES, KITE, Over(x * y))
+               GENERIC, measured("integral", of=x ** 2 + y ** 2))
+figure_witness("xy-quadrilateral", "∫∫ xy over the quadrilateral AeBf", ("xy-vanishes",), Q_CASES, KITE,
+               measured("integral", of=x * y))
 SQ_ANGLES = rational_cases(("a = 1, m = 3/5", {a: 1, m: "3/5"}), ("a = 3/2, m = 5/13", {a: "3/2", m: "5/13"}))
 figure_witness("square-oblique", "∫∫ u^2 over the square, u the distance from an oblique axis through C",
-               ("square-all-axes",), SQ_ANGLES, SQUARE, Over((m * x - N_OF_M * y) ** 2))
+               ("square-all-axes",), SQ_ANGLES, SQUARE, measured("integral", of=(m * x - N_OF_M * y) ** 2))
 STRIP2_CASES = rational_cases(("PM = 2, PN = 1, Pp = 1/2", {PM: 2, PN: 1, Pp: "1/2"}),
                               ("PM = 5/3, PN = 7/4, Pp = 3/10", {PM: "5/3", PN: "7/4", Pp: "3/10"}))
 figure_witness("strip-both-sides", "∫∫ y^2 over the strip Pp wide from N to M", ("strip-sum-of-squares",),
-               STRIP2_CASES, STRIP_NM, Over(y ** 2))
+               STRIP2_CASES, STRIP_NM, I_YY)
 figure_witness("quadrant-xy", "∫∫ xy over the lower half of the quadrilateral AeBf", ("quadrants-cancel",), Q_CASES,
-               KITE_LOWER, Over(x * y))
-figure_witness("quad-area-quadrature", "∫∫ 1 over the quadrilateral AeBf", ("quad-area-2D",), Q_CASES, KITE, Over(1))
+               KITE_LOWER, measured("integral", of=x * y))
+figure_witness("quad-area-quadrature", "∫∫ 1 over the quadrilateral AeBf", ("quad-area-2D",), Q_CASES, KITE, AREA)
 figure_witness("ellipse-quadrant-quadrature", "a quarter of ∫∫ 1 over the ellipse", ("quadrant-area-integral",),
-               AB_CASES, ELLIPSE, Over(1) / 4)
+               AB_CASES, ELLIPSE, AREA / 4)
 GEN_E_CASES = rational_cases(("[-1, 2] x [0, 3], x_e = 5/2", {X1: -1, Y1: 0, X2: 2, Y2: 3, xe: "5/2"}),
                              ("[-3/2, 5/2] x [1/2, 5/2], x_e = -1", {X1: "-3/2", Y1: "1/2", X2: "5/2", Y2: "5/2", xe: -1}))
 figure_witness("L-rectangle", "∫∫ (x - x_e)^2 over a rectangle off the origin", ("L-definition",), GEN_E_CASES,
-               GENERIC, Over((x - xe) ** 2))
+               GENERIC, measured("integral", of=(x - xe) ** 2))
 figure_witness("EF-rectangle", "∫∫ (x - x_C)^2 over a rectangle off the origin, x_C its centroid",
-               ("EF-moment-definition",), GEN_E_CASES, GENERIC, Over((x - XC) ** 2))
+               ("EF-moment-definition",), GEN_E_CASES, GENERIC, measured("integral", of=(x - XC) ** 2))
 figure_witness("sum-of-cubes-strip", "3 ∫∫ y^2 over the strip Pp wide from N to M", ("sum-of-cubes",), STRIP2_CASES,
-               STRIP_NM, 3 * Over(y ** 2))
+               STRIP_NM, 3 * I_YY)
 figure_witness("aggregate-strip", "∫∫ y^2 over the strip Pp wide from N to M", ("aggregate",), STRIP2_CASES,
-               STRIP_NM, Over(y ** 2))
+               STRIP_NM, I_YY)
 figure_witness("lower-half-moment", "∫∫ y^2 over the half of the quadrilateral below AB", ("equal-quadrants",), Q_CASES,
-               KITE_LOWER, Over(y ** 2))
+               KITE_LOWER, I_YY)
 
 
 def _box_case(s_, hv, label):
@@ -202,12 +212,12 @@ def _box_case(s_, hv, label):
 ONE_WAY = (Case({sw: sp.Rational(1, 2)}, label="box 1 x 1 x 2, s = 1/2, G 1/3 above B"),)
 d.witness(Joined("stable-one-way-box", "M GZ/phi of the heeled and the pitched box by exact clipping",
                  ("stable-one-way",), ONE_WAY,
-                 parts=tuple(stability(up, sp.Rational(1, 3), 1) for up in (HEEL, PITCH)), methods=LIMIT_METHODS))
+                 parts=tuple(stability(up, sp.Rational(1, 3), 1) for up in (HEEL, PITCH))))
 d.witness(Combined("pitch-minus-roll-box", "M GZ/phi pitched minus heeled, the box 1 x 1 x 2 by exact clipping",
                    ("pitch-exceeds-roll",),
                    (_box_case(sp.Rational(1, 2), sp.Rational(1, 10), "s = 1/2, b = 1/10"),
                     _box_case(sp.Rational(3, 4), sp.Rational(1, 20), "s = 3/4, b = 1/20")),
-                   parts=(stability(PITCH, h), stability(HEEL, h)), values=(PART[0] - PART[1],), methods=LIMIT_METHODS))
+                   parts=(stability(PITCH, h), stability(HEEL, h)), values=(measured("part 1") - measured("part 2"),)))
 d.witness(Combined("quad-K-excess-220", "∫∫ (x - x_C)^2 over the quadrilateral minus that of the rhombus with the "
                    "same AB and ef", ("unlike-parts-larger",), Q_CASES, **KITE_EXCESS))
 
@@ -230,14 +240,13 @@ d.witness(SeriesWitness("moment-times-angle-box", "M GZ/phi of the heeled box by
 d.witness(Combined("same-ratio-box", "the ratio of the heeled box's GZ/phi at two heights of G, by clipping",
                    ("same-ratio",), (Case({**BOX_E, hb1: sp.Rational(1, 40), hb2: sp.Rational(1, 50)},
                                           label="b_1 = 1/40, b_2 = 1/50"),),
-                   parts=(arm_series(hb1, 1), arm_series(hb2, 1)), values=(PART[0] / PART[1],),
-                   methods=SERIES_METHODS))
+                   parts=(arm_series(hb1, 1), arm_series(hb2, 1)), values=(measured("part 1") / measured("part 2"),)))
 d.witness(SeriesWitness("small-angles-box", "M (GZ - phi GM)/phi^3 of the heeled box by clipping, phi -> 0",
                         ("small-angles-only",), (Case({**BOX_E, Mw: 1, h: sp.Rational(1, 10)}, label="b = 1/10"),),
                         body=box_with_G(h), up=HEEL, density=sw, quantity=Mw * ARM[HEEL], series=(phi, 3), odd=True))
 d.witness(Joined("zero-indifferent-box", "GZ/phi and GZ/phi^3 of the box with b = I/V = 1/6, by clipping",
                  ("zero-indifferent",), (Case(dict(BOX_E), label="e = T = 1/2, b = 1/6"),),
-                 parts=(arm_series(sp.Rational(1, 6), 1), arm_series(sp.Rational(1, 6), 3)), methods=SERIES_METHODS))
+                 parts=(arm_series(sp.Rational(1, 6), 1), arm_series(sp.Rational(1, 6), 3))))
 phi_eq = sp.Symbol("phi_*", positive=True)         # the heeled equilibrium
 HEELED = Root(ARM[HEEL], phi, tuple(sp.Rational(k, 20) for k in range(1, 15)))     # beyond the upright position
 d.witness(Joined("negative-unstable-box", "the box with G 1/100 above the metacentre: M GZ/phi upright, and its "
@@ -247,5 +256,4 @@ d.witness(Joined("negative-unstable-box", "the box with G 1/100 above the metace
                  parts=(arm_series(sp.Rational(1, 6) + gneg, 1, Mw),
                         FloatingRootWitness("", "", (), (), body=box_with_G(sp.Rational(1, 6) + gneg), up=HEEL,
                                             density=sw, quantity=ARM[HEEL], roots=((phi, HEELED),)),
-                        arm_series(sp.Rational(1, 6) + gneg, 1, centre=phi_eq, roots=((phi_eq, HEELED),))),
-                 methods=SERIES_METHODS))
+                        arm_series(sp.Rational(1, 6) + gneg, 1, centre=phi_eq, roots=((phi_eq, HEELED),)))))

@@ -2,8 +2,9 @@
 (:mod:`symfloat.engine.figure_witness`); the integrals of §§225-227 by quadrature of their integrands."""
 import sympy as sp
 
-from symfloat.engine.figure_witness import CENTROID, FIGURE_METHODS, Figure, FigureWitness, Over
-from symfloat.engine.floating_witness import PART, Combined
+from symfloat.engine.figure_witness import Figure, FigureWitness
+from symfloat.engine.floating_witness import Combined
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
 
 from .statements import R, Yc, Yg, a, b, c, d, p, q, y
@@ -15,8 +16,11 @@ from .statements import R, Yc, Yg, a, b, c, d, p, q, y
 # for an integrand of degree <= 2 in x, across the chords by quadrature in float64 and at 50 digits.  The
 # one-dimensional integrals of §§225-227 are integrals over the segment 0 <= y <= b.  Nothing of the formulas
 # under test is used.
-XC = CENTROID[0]
+XC = measured("centroid, 1")
 x_ = sp.Symbol("x", real=True)                    # the abscissa AP of the figures
+AREA = measured("integral", of=1)                  # the figure's area
+I_XX = measured("integral", of=x_ ** 2)            # its moments about the axes
+I_YY = measured("integral", of=y ** 2)
 
 
 def _cases(*rows):
@@ -44,37 +48,39 @@ AB_ONLY = _cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {a: "5/2",
 
 for _region in ("Ace", "Bce", "AEB"):
     figure_witness(f"area-{_region}", f"∫∫ 1 over {_region}", (f"area-{_region}",), GEN,
-                   curve_figure(Yg, _region), Over(1))
+                   curve_figure(Yg, _region), AREA)
     figure_witness(f"AB-{_region}", f"∫∫ y² over {_region}", (f"AB-{_region}",), GEN,
-                   curve_figure(Yg, _region), Over(y ** 2))
+                   curve_figure(Yg, _region), I_YY)
 figure_witness("area-whole", "∫∫ 1 over the whole figure AEBF", ("area-ellipse",), GEN,
-               curve_figure(Yg, "AEB", whole=True), Over(1))
+               curve_figure(Yg, "AEB", whole=True), AREA)
 figure_witness("AB-whole", "∫∫ y² over the whole figure AEBF", ("AB-whole",), GEN,
-               curve_figure(Yg, "AEB", whole=True), Over(y ** 2))
+               curve_figure(Yg, "AEB", whole=True), I_YY)
 figure_witness("Aa-Ace", "∫∫ x² over Ace (moment about aAa, x = 0)", ("Aa-Ace-expanded",), GEN,
-               curve_figure(Yg, "Ace"), Over(x_ ** 2))
-figure_witness("Aa-Bce", "∫∫ x² over Bce", ("Aa-Bce-expanded",), GEN, curve_figure(Yg, "Bce"), Over(x_ ** 2))
-figure_witness("Aa-AEB", "∫∫ x² over AEB", ("Aa-AEB", "Aa-AEB-value"), GEN, curve_figure(Yg, "AEB"), Over(x_ ** 2))
+               curve_figure(Yg, "Ace"), I_XX)
+figure_witness("Aa-Bce", "∫∫ x² over Bce", ("Aa-Bce-expanded",), GEN, curve_figure(Yg, "Bce"), I_XX)
+figure_witness("Aa-AEB", "∫∫ x² over AEB", ("Aa-AEB", "Aa-AEB-value"), GEN, curve_figure(Yg, "AEB"), I_XX)
 figure_witness("Aa-whole", "∫∫ x² over the whole figure", ("Aa-whole",), GEN,
-               curve_figure(Yg, "AEB", whole=True), Over(x_ ** 2))
+               curve_figure(Yg, "AEB", whole=True), I_XX)
 figure_witness("first-moment", "∫∫ x over AEB (D·AC)", ("DAC-definition", "DAC"), GEN, curve_figure(Yg, "AEB"),
-               Over(x_))
+               measured("integral", of=x_))
 figure_witness("centroid", "x_C of AEB", ("AC",), GEN, curve_figure(Yg, "AEB"), XC)
 figure_witness("moment-EF", "∫∫ (x - x_C)² over the whole figure, x_C its centroid", ("moment-EF",), GEN,
-               curve_figure(Yg, "AEB", whole=True), Over((x_ - XC) ** 2))
+               curve_figure(Yg, "AEB", whole=True), measured("integral", of=(x_ - XC) ** 2))
 figure_witness("centroid-c", "x_C of AEB, Y = -cy²/b²", ("AC-c",), CFIG, curve_figure(Yc, "AEB"), XC)
 figure_witness("moment-EF-c", "∫∫ (x - x_C)² over the whole figure, Y = -cy²/b²", ("moment-EF-c",), CFIG,
-               curve_figure(Yc, "AEB", whole=True), Over((x_ - XC) ** 2))
+               curve_figure(Yc, "AEB", whole=True), measured("integral", of=(x_ - XC) ** 2))
 figure_witness("moment-EF-half", "∫∫ (x - x_C)² over the figure with c = a/2", ("moment-EF-half",), AB_ONLY,
-               curve_figure(Yc.subs(c, a / 2), "AEB", whole=True), Over((x_ - XC) ** 2))
+               curve_figure(Yc.subs(c, a / 2), "AEB", whole=True), measured("integral", of=(x_ - XC) ** 2))
 d.witness(Combined("sixteenth", "(K(c = a/2) - K(c = 0))/K(c = 0), both moments measured", ("sixteenth",), AB_ONLY,
                    parts=tuple(FigureWitness("", "", (), (), figure=curve_figure(Yc.subs(c, cv), "AEB", whole=True),
-                                             coords=(x_, y), quantity=Over((x_ - XC) ** 2)) for cv in (a / 2, 0)),
-                   values=((PART[0] - PART[1]) / PART[1],), methods=FIGURE_METHODS))
+                                             coords=(x_, y), quantity=measured("integral", of=(x_ - XC) ** 2))
+                                for cv in (a / 2, 0)),
+                   values=((measured("part 1") - measured("part 2")) / measured("part 2"),)))
 
 
 def line_witness(name, targets, cases, g, text):
-    figure_witness(name, f"∫_0^b {text} dy by quadrature", targets, cases, Figure.interval(y, 0, b), Over(g))
+    figure_witness(name, f"∫_0^b {text} dy by quadrature", targets, cases, Figure.interval(y, 0, b),
+                   measured("integral", of=g))
 
 
 line_witness("U0", ("reduce-U0", "U0-value"), AB_ONLY, R, "√(b² - y²)")

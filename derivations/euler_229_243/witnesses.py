@@ -4,9 +4,11 @@ from fractions import Fraction
 
 import sympy as sp
 
-from symfloat.engine.figure_witness import CENTROID, FIGURE_METHODS, Figure, FigureWitness, Over
-from symfloat.engine.floating_witness import (LIMIT_METHODS, PART, Body, Combined, FloatingWitness, Joined, Loaded,
+from symfloat.engine.declare import part_of
+from symfloat.engine.figure_witness import Figure, FigureWitness
+from symfloat.engine.floating_witness import (LIMIT_METHODS, Body, Combined, FloatingWitness, Joined, Loaded,
                                               potential_slope)
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case, HullWitness
 from symfloat.geometry.floating import polygon_moments
 
@@ -22,7 +24,9 @@ from .statements import (AB, CASES236, CD, Dw, EF, KAPPAS, M, OG, V, _label, a, 
 # the parabola by its chords across AB; N by quadrature of its two integrals.  Nothing of the formulas under test
 # is used.
 XP = sp.Symbol("x_P", real=True)                   # the abscissa AP of the figures
-XC = CENTROID[0]
+XC = measured("centroid, 1")
+AREA = measured("integral", of=1)                  # the figure's area
+I_YY = measured("integral", of=y ** 2)             # its moment about AB
 
 
 def family(Y, N_=n, K_=k):
@@ -35,27 +39,27 @@ def _w(name, description, targets, cases, figure, quantity):
     d.witness(FigureWitness(name, description, tuple(targets), cases, figure=figure, coords=(XP, y), quantity=quantity))
 
 
-def part(figure, quantity):
-    return FigureWitness("", "", (), (), figure=figure, coords=(XP, y), quantity=quantity)
+part = part_of(FigureWitness, coords=(XP, y))
 
 
 Y_GENERIC = c1 * (y / b) ** n + c2 * (y / b) ** (2 * n)
 Y_C = -c * (y / b) ** n
-K_WHOLE = 2 * Over((XP - XC) ** 2)                  # the moment of the whole figure about EF through C
+K_WHOLE = 2 * measured("integral", of=(XP - XC) ** 2)    # the moment of the whole figure about EF through C
 GENERIC = (Case({a: 1, b: 1, n: 2, k: sp.Rational(1, 2), c1: sp.Rational(-1, 4), c2: sp.Rational(1, 8),
                  al: sp.Rational(3, 2), xk: 2}, label="n = 2, κ = 1/2, Y = −y²/4 + y⁴/8, a = b = 1"),
            Case({a: sp.Rational(3, 2), b: sp.Rational(1, 2), n: 3, k: sp.Rational(3, 2), c1: sp.Rational(1, 3),
                  c2: sp.Rational(-1, 5), al: 2, xk: sp.Rational(1, 2)},
                 label="n = 3, κ = 3/2, Y = y³/3·8 − y⁶·64/5, a = 3/2, b = 1/2"))
-_w("family-area", "the half area ∫∫1 over AEB", ("area",), GENERIC, family(Y_GENERIC), Over(1))
+_w("family-area", "the half area ∫∫1 over AEB", ("area",), GENERIC, family(Y_GENERIC), AREA)
 _w("family-area-integral", "∫∫1 over AEB divided by 2a", ("area-integral",), GENERIC, family(Y_GENERIC),
-   Over(1) / (2 * a))
-_w("family-moment-AB", "∫∫y² over AEB", ("moment-AB",), GENERIC, family(Y_GENERIC), Over(y ** 2))
-_w("family-moment-O", "∫∫(x − a)² over AEB", ("moment-O",), GENERIC, family(Y_GENERIC), Over((XP - a) ** 2))
+   AREA / (2 * a))
+_w("family-moment-AB", "∫∫y² over AEB", ("moment-AB",), GENERIC, family(Y_GENERIC), I_YY)
+_w("family-moment-O", "∫∫(x − a)² over AEB", ("moment-O",), GENERIC, family(Y_GENERIC),
+   measured("integral", of=(XP - a) ** 2))
 _w("family-moment-O-whole", "∫∫(x − a)² over the whole figure (both halves)", ("moment-O-whole",), GENERIC,
-   family(Y_GENERIC), 2 * Over((XP - a) ** 2))
+   family(Y_GENERIC), 2 * measured("integral", of=(XP - a) ** 2))
 _w("family-centroid-moment", "D·CO = −∫∫(x − a) over AEB", ("centroid-moment",), GENERIC, family(Y_GENERIC),
-   -Over(XP - a))
+   -measured("integral", of=XP - a))
 _w("family-CO", "CO = a − x_C, x_C the centroid of AEB", ("CO",), GENERIC, family(Y_GENERIC), a - XC)
 _w("family-moment-EF", "∫∫(x − x_C)² over the whole figure, x_C its centroid", ("moment-EF",), GENERIC,
    family(Y_GENERIC), K_WHOLE)
@@ -65,15 +69,16 @@ CFAM = (Case({a: 1, b: 1, n: 2, k: sp.Rational(1, 2), c: sp.Rational(1, 4), al: 
         Case({a: sp.Rational(3, 2), b: sp.Rational(1, 2), n: 3, k: sp.Rational(3, 2), c: sp.Rational(1, 3), al: 2},
              label="n = 3, κ = 3/2, c = 1/3, a = 3/2, b = 1/2"))
 _w("c-first", "∫Y R dy = −D·CO/(2a) from ∫∫(x − a) over AEB (Y = −cyⁿ/bⁿ)", ("Y-c-first",), CFAM, family(Y_C),
-   Over(XP - a) / (2 * a))
+   measured("integral", of=XP - a) / (2 * a))
 d.witness(Combined("c-second", "∫Y²R dy = (∫∫(x − a)² at c minus at c = 0)/(2a) over AEB", ("Y-c-second",), CFAM,
-                   parts=(part(family(Y_C), Over((XP - a) ** 2)), part(family(0), Over((XP - a) ** 2))),
-                   values=((PART[0] - PART[1]) / (2 * a),), methods=FIGURE_METHODS))
+                   parts=(part(figure=family(Y_C), quantity=measured("integral", of=(XP - a) ** 2)),
+                          part(figure=family(0), quantity=measured("integral", of=(XP - a) ** 2))),
+                   values=((measured("part 1") - measured("part 2")) / (2 * a),)))
 _w("c-moment-EF", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
    ("moment-EF-c", "moment-EF-c-p118", "moment-EF-N"), CFAM, family(Y_C), K_WHOLE)
 d.witness(Combined("c-excess", "K at c minus K at c = 0, both measured", ("unequal-halves",), CFAM,
-                   parts=(part(family(Y_C), K_WHOLE), part(family(0), K_WHOLE)), values=(PART[0] - PART[1],),
-                   methods=FIGURE_METHODS))
+                   parts=(part(figure=family(Y_C), quantity=K_WHOLE), part(figure=family(0), quantity=K_WHOLE)),
+                   values=(measured("part 1") - measured("part 2"),)))
 
 u = sp.Symbol("u", positive=True)
 for kv in KAPPAS:
@@ -82,7 +87,8 @@ for kv in KAPPAS:
     _w("K-table-%s" % _label(kv), "∫∫(x − x_C)² over the figure κ = %s, c = 0" % kv, ("K-table-%s" % _label(kv),),
        grid, family(0, K_=kv), K_WHOLE)
     _w("N-table-%s" % _label(kv), "N for κ = %s by quadrature of its two integrals" % kv, ("N-table-%s" % _label(kv),),
-       grid, Figure.interval(u, 0, 1, smooth=4), Over((1 - u ** n) ** (3 * kv - 1)) / Over((1 - u ** n) ** kv))
+       grid, Figure.interval(u, 0, 1, smooth=4),
+       measured("integral", of=(1 - u ** n) ** (3 * kv - 1)) / measured("integral", of=(1 - u ** n) ** kv))
 
 AB1 = (Case({a: 1, b: sp.Rational(3, 4)}, label="a = 1, b = 3/4"), Case({a: 2, b: 1}, label="a = 2, b = 1"))
 for case_name, case_kv, case_nv, *_ in CASES236:
@@ -90,8 +96,8 @@ for case_name, case_kv, case_nv, *_ in CASES236:
        family(0, case_nv, case_kv), K_WHOLE)
 
 # μ about AB and about EF, EF²D/I and AB²D/K (2D the area, EF = 2b, AB = 2a), for figures symmetric about both axes
-MU_OF_FIGURE = ((2 * b) ** 2 * Over(1) / 2 / Over(y ** 2), (2 * a) ** 2 * Over(1) / 2 / Over(XP ** 2))
-MU_OF_HALF = ((2 * b) ** 2 * Over(1) / (2 * Over(y ** 2)), (2 * a) ** 2 * Over(1) / K_WHOLE)   # from the half AEB
+MU_OF_FIGURE = ((2 * b) ** 2 * AREA / 2 / I_YY, (2 * a) ** 2 * AREA / 2 / measured("integral", of=XP ** 2))
+MU_OF_HALF = ((2 * b) ** 2 * AREA / (2 * I_YY), (2 * a) ** 2 * AREA / K_WHOLE)   # from the half AEB
 MU = (Case({a: 2, b: 1}, label="a = 2, b = 1"), Case({a: 3, b: sp.Rational(1, 2)}, label="a = 3, b = 1/2"))
 PARABOLA = Figure.strips(y, XP, -a, a, (-b * (1 - XP ** 2 / a ** 2), b * (1 - XP ** 2 / a ** 2)))
 _w("mu-rectangle", "μ of the rectangle from its moments", ("mu-rectangle",), MU,
@@ -169,9 +175,9 @@ def _v_case(W, T, L, s, og):
 V_CASES = (_v_case(1, 2, 3, "1/4", "1/10"), _v_case(1, 2, 2, "9/16", "1/20"))
 d.witness(Joined("stability-V-prism", "M·GZ/φ of the heeled V-prism by exact clipping, G above O",
                  ("stability-AB", "stability-CD", "stability-AB-241"), V_CASES,
-                 parts=(heeled_stability(v_prism, HEEL, 1),), methods=LIMIT_METHODS))
+                 parts=(heeled_stability(v_prism, HEEL, 1),)))
 d.witness(Joined("stability-V-prism-G-below", "M·GZ/φ of the heeled V-prism by exact clipping, G below O",
-                 ("stability-G-below",), V_CASES, parts=(heeled_stability(v_prism, HEEL, -1),), methods=LIMIT_METHODS))
+                 ("stability-G-below",), V_CASES, parts=(heeled_stability(v_prism, HEEL, -1),)))
 
 
 # §239 about EF: an upright right prism over the quadrilateral of §215 (A = (0, 0), e = (1, 1), B = (3, 0),
@@ -190,8 +196,7 @@ KITE_CASES = tuple(Case({M: 3, V: 3, AB: 3, Dw: sp.Rational(3, 2), mu: 12, nu: s
                          sv: sp.Rational(1, 2)}, label=f"kite prism, s = 1/2, OG = {og}")
                    for og in (sp.Rational(1, 10), sp.Rational(1, 4)))
 d.witness(Joined("stability-kite-prism-EF", "M·GZ/φ of the upright kite prism pitched about EF, by exact clipping, "
-                 "G above O", ("stability-EF",), KITE_CASES, parts=(heeled_stability(kite_prism, TILT, 1),),
-                 methods=LIMIT_METHODS))
+                 "G above O", ("stability-EF",), KITE_CASES, parts=(heeled_stability(kite_prism, TILT, 1),)))
 
 # second pass: the moment named 'about the longitudinal axis EF' of §230 is the one about the latitudinal EF
 _w("family-axis-EF-named", "∫∫(x − x_C)² over the whole figure, x_C its centroid", ("axis-EF-named",), GENERIC,
@@ -199,6 +204,6 @@ _w("family-axis-EF-named", "∫∫(x − x_C)² over the whole figure, x_C its c
 _w("by-parts-quadrature", "∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy/bⁿ by 1-D quadrature", ("by-parts-3k",),
    tuple(Case({b: sp.Rational(bv), n: nv, k: sp.Rational(kv)}, label=f"b = {bv}, n = {nv}, κ = {kv}")
          for bv, nv, kv in (("1", 2, "1/2"), ("3/4", 3, "3/2"), ("2", 1, "1"))),
-   Figure.interval(y, 0, b, smooth=4), Over(y ** n * (1 - (y / b) ** n) ** (3 * k - 1)) / b ** n)
+   Figure.interval(y, 0, b, smooth=4), measured("integral", of=y ** n * (1 - (y / b) ** n) ** (3 * k - 1)) / b ** n)
 _w("c-zero-suffices-quadrature", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
    ("c-zero-suffices",), CFAM, family(Y_C), K_WHOLE)

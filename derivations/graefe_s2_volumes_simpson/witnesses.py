@@ -3,8 +3,9 @@ their chords, composite Simpson's order of convergence measured."""
 import mpmath
 import sympy as sp
 
+from symfloat.engine.measured import measured
 from symfloat.engine.quadrature import composite_simpson
-from symfloat.engine.witness import SECTION, Case, ConvergenceOrder, PlaneSections, SectionIntegral
+from symfloat.engine.witness import Case, ConvergenceOrder, PlaneSections, SectionIntegral
 
 from .statements import A3, A_sec, D, G, ZERO_BASE_AREAS, a, b, d, h, k, m, p, pi, r, x, z
 
@@ -89,14 +90,16 @@ def _round(rho2):
 
 d.witness(PlaneSections("sphere-section-areas", "sections of the sphere at both poles and the centre",
                         ("sphere-sections",), SPHERE_CASES, planes=(r, 0, 2 * r),   # a non-empty section first
-                        combine=(SECTION[1], SECTION[2], SECTION[0]), **_round(r ** 2 - (zp - r) ** 2)))
+                        combine=(measured("section 2"), measured("section 3"),
+                                 measured("section 1")), **_round(r ** 2 - (zp - r) ** 2)))
 for radius_name, plane in (("paraboloid-base-radius", 0), ("paraboloid-mid-radius", x / 2)):
     d.witness(PlaneSections(f"{radius_name}-section", "section of the paraboloid y² = 2pt (t from the vertex, t = x - z)",
                             (radius_name,), PARABOLOID_CASES, planes=(plane,),
-                            combine=SECTION[0] / pi, **_round(2 * p * (x - zp))))
+                            combine=measured("section 1") / pi, **_round(2 * p * (x - zp))))
 d.witness(PlaneSections("ellipse-chords", "the ellipsoid's sections at the base and the mid-section, over pi",
                         ("ellipsoid-radii",), ELLIPSOID_CASES, planes=(0, x / 2),
-                        combine=(SECTION[0] / pi, SECTION[1] / pi), **_round(A_e_centre.subs(z, zp) / pi)))
+                        combine=(measured("section 1") / pi, measured("section 2") / pi),
+                        **_round(A_e_centre.subs(z, zp) / pi)))
 d.witness(SectionIntegral("half-ellipsoid-segment", "∫ π b² (1 - (t - a)²/a²) dt over the segment of height a",
                           ("half-ellipsoid-x-a",), tuple(Case({a: c_.params[a], b: c_.params[b], x: c_.params[a]},
                                                                label=f"a = {c_.params[a]}, b = {c_.params[b]}")

@@ -2,9 +2,10 @@
 measured across their chords, the triaxial stump's half axes found as roots on the principal ellipses."""
 import sympy as sp
 
-from symfloat.engine.figure_witness import FIGURE_METHODS, CurveRoot
-from symfloat.engine.floating_witness import PART, Combined
-from symfloat.engine.witness import SECTION, Case, PlaneSections, SectionIntegral
+from symfloat.engine.figure_witness import CurveRoot
+from symfloat.engine.floating_witness import Combined
+from symfloat.engine.measured import measured
+from symfloat.engine.witness import Case, PlaneSections, SectionIntegral
 
 from .statements import (P, R, S, a, area_cf, area_eb, area_es, area_he, area_hs, area_ht, area_p1, area_p2, area_pf,
                         area_s1, area_s2, area_sp, area_te, area_ts, b, c, d, eta, h, k, m, p, pi, r, s, t, u, x, xp,
@@ -50,11 +51,13 @@ pyramid_cases = (("square frustum S = 3, s = 1, h = 2", {k: 1, S: 3, s: 1, h: 2}
                  ("trapezoid frustum k = 3/4, S = 2, s = 5/4, h = 3",
                   {k: sp.Rational(3, 4), S: 2, s: sp.Rational(5, 4), h: 3}))
 for target, combine in (
-        ("pyramid-frustum-ratio-G", (SECTION[0] / SECTION[1], sp.sqrt(SECTION[0] / SECTION[1]))),
-        ("pyramid-frustum-ratio-g", (SECTION[2] / SECTION[1], sp.sqrt(SECTION[2] / SECTION[1]))),
-        ("pyramid-frustum-roots", (sp.sqrt(SECTION[0]), sp.sqrt(SECTION[2]))),
-        ("pyramid-frustum-root-sum", sp.sqrt(SECTION[0]) + sp.sqrt(SECTION[2])),
-        ("pyramid-frustum-D", SECTION[1])):
+        ("pyramid-frustum-ratio-G", (measured("section 1") / measured("section 2"),
+                                     sp.sqrt(measured("section 1") / measured("section 2")))),
+        ("pyramid-frustum-ratio-g", (measured("section 3") / measured("section 2"),
+                                     sp.sqrt(measured("section 3") / measured("section 2")))),
+        ("pyramid-frustum-roots", (sp.sqrt(measured("section 1")), sp.sqrt(measured("section 3")))),
+        ("pyramid-frustum-root-sum", sp.sqrt(measured("section 1")) + sp.sqrt(measured("section 3"))),
+        ("pyramid-frustum-D", measured("section 2"))):
     planes_witness(f"{target}-sections", "sections G, D, g of trapezoid frusta by quadrature of their widths",
                    (target,), pyramid_sections, (0, h / 2, h), combine, *pyramid_cases)
 sections_witness("hemisphere", "centroid of the hemisphere from its circular sections", ("hemisphere",),
@@ -64,7 +67,8 @@ sections_witness("segment-1", "centroid of the spherical segment from its circul
                  ("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
 
 planes_witness("segment-1-G-sections", "sections of the sphere at distances m and r from the centre",
-               ("segment-1-G",), round_sections(r ** 2 - P ** 2), (m, r), (SECTION[0], SECTION[1], r - m),
+               ("segment-1-G",), round_sections(r ** 2 - P ** 2), (m, r),
+               (measured("section 1"), measured("section 2"), r - m),
                ("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
 sections_witness("segment-2", "centroid of the spherical zone from its circular sections",
                  ("segment-2-1", "segment-2-2", "segment-2-3"), area_s2, xp - x,
@@ -76,7 +80,7 @@ sections_witness("paraboloid-1", "centroid of the paraboloid from its circular s
 
 planes_witness("paraboloid-1-radii-sections", "sections of the paraboloid y^2 = 2 p P (P from the vertex)",
                ("paraboloid-1-radii",), round_sections(2 * p * P), (x, x / 2, 0),
-               (SECTION[0] / pi, SECTION[1] / pi, SECTION[2]),
+               (measured("section 1") / pi, measured("section 2") / pi, measured("section 3")),
                ("p = 1, x = 2", {p: 1, x: 2}), ("p = 5/2, x = 3/2", {p: sp.Rational(5, 2), x: sp.Rational(3, 2)}))
 sections_witness("paraboloid-2", "centroid of the paraboloid frustum from its circular sections",
                  ("paraboloid-2-1", "paraboloid-2-2"), area_p2, xv - xvp,
@@ -85,7 +89,7 @@ sections_witness("paraboloid-2", "centroid of the paraboloid frustum from its ci
 
 planes_witness("paraboloid-2-radii-sections", "sections of the paraboloid y^2 = 2 p P (P from the vertex)",
                ("paraboloid-2-radii",), round_sections(2 * p * P), (xv, xvp, (xv + xvp) / 2),
-               (SECTION[0] / pi, SECTION[1] / pi, SECTION[2] / pi),
+               (measured("section 1") / pi, measured("section 2") / pi, measured("section 3") / pi),
                ("p = 1, x = 4, x' = 1", {p: 1, xv: 4, xvp: 1}),
                ("p = 3/2, x = 3, x' = 2", {p: sp.Rational(3, 2), xv: 3, xvp: 2}))
 sections_witness("ellipsoid-segment", "centroid of the ellipsoidal segment from its circular sections",
@@ -95,7 +99,7 @@ sections_witness("ellipsoid-segment", "centroid of the ellipsoidal segment from 
 ellipsoid_sections = round_sections(b ** 2 / a ** 2 * (a ** 2 - P ** 2))
 planes_witness("ellipsoid-segment-radii-sections", "sections of the ellipsoid of revolution",
                ("ellipsoid-segment-radii",), ellipsoid_sections, (x, (a + x) / 2),
-               (SECTION[0] / pi, SECTION[1] / pi),
+               (measured("section 1") / pi, measured("section 2") / pi),
                ("a = 5, b = 3, x = 1", {a: 5, b: 3, x: 1}), ("a = 4, b = 1, x = 2", {a: 4, b: 1, x: 2}))
 sections_witness("half-ellipsoid", "centroid of the half ellipsoid of revolution from its circular sections",
                  ("half-ellipsoid",), area_he, a,
@@ -109,10 +113,10 @@ truncated_cases = (("a = 5, b = 2, x = 1, x' = 4", {a: 5, b: 2, x: 1, xp: 4}),
                    ("a = 6, b = 3, x = 1/2, x' = 3", {a: 6, b: 3, x: sp.Rational(1, 2), xp: 3}))
 planes_witness("truncated-ellipsoid-radii-1-sections", "sections of the ellipsoid of revolution",
                ("truncated-ellipsoid-radii-1",), ellipsoid_sections, (x, xp),
-               (SECTION[0] / pi, SECTION[1] / pi), *truncated_cases)
+               (measured("section 1") / pi, measured("section 2") / pi), *truncated_cases)
 planes_witness("truncated-ellipsoid-radii-2-sections", "sections of the ellipsoid of revolution",
                ("truncated-ellipsoid-radii-2",), ellipsoid_sections, ((x + xp) / 2,),
-               SECTION[0] / pi, *truncated_cases)
+               measured("section 1") / pi, *truncated_cases)
 sections_witness("elliptic-body", "centroid of the elliptic body from its elliptic sections",
                  ("elliptic-body",), area_eb, h,
                  ("a = 5, b = 3, h = 4", {a: 5, b: 3, h: 4}),
@@ -125,13 +129,13 @@ elliptic_cases = (("a = 5, b = 3, h = 4, m = 2, x = 1", {a: 5, b: 3, h: 4, m: 2,
 planes_witness("elliptic-body-ratio-sections", "sections of the elliptic body at the heights 0 and h/m",
                ("elliptic-body-ratio",),
                {"width": 2 * a * b * sp.cos(eta) ** 2 * (1 - P / h), "chord": (-pi / 2, pi / 2)},
-               (0, h / m), SECTION[0] / SECTION[1], *elliptic_cases)
+               (0, h / m), measured("section 1") / measured("section 2"), *elliptic_cases)
 # the triangle perpendicular to the major axis at abscissa P: width 2 b/a sqrt(a^2 - P^2) (1 - eta/h) at height
 # eta; its area is y h
 planes_witness("elliptic-body-base-sections", "the triangular section at abscissa x",
                ("elliptic-body-base",),
                {"width": 2 * b / a * sp.sqrt(a ** 2 - P ** 2) * (1 - eta / h), "chord": (0, h)},
-               (x,), (SECTION[0] / h) ** 2, *elliptic_cases)
+               (x,), (measured("section 1") / h) ** 2, *elliptic_cases)
 sections_witness("triaxial-stump", "centroid of the triaxial ellipsoid stump from its elliptic sections",
                  ("triaxial-stump-1", "triaxial-stump-2"), area_ts, xp - x,
                  ("a = 5, b = 3, c = 2, x = 1, x' = 4", {a: 5, b: 3, c: 2, x: 1, xp: 4}),
@@ -146,31 +150,32 @@ sections_witness("half-triaxial", "centroid of the half triaxial ellipsoid from 
 SPHERE_CASES = (("r = 3", {r: 3}), ("r = 7/2", {r: sp.Rational(7, 2)}))
 planes_witness("sphere-sections-areas", "sections of the sphere at both poles and at the centre",
                ("sphere-sections",), round_sections(r ** 2 - P ** 2), (0, r, -r),   # a non-empty section first
-               (SECTION[1], SECTION[2], SECTION[0], 2 * r), *SPHERE_CASES)
+               (measured("section 2"), measured("section 3"), measured("section 1"), 2 * r), *SPHERE_CASES)
 planes_witness("hemisphere-sections-areas", "sections of the sphere at the pole, the centre and half the radius",
                ("hemisphere-sections",), round_sections(r ** 2 - P ** 2), (0, r, r / 2),
-               (SECTION[1], SECTION[0], SECTION[2]), *SPHERE_CASES)
+               (measured("section 2"), measured("section 1"), measured("section 3")), *SPHERE_CASES)
 SEGMENT_CASES = (("r = 3, m = 3/2", {r: 3, m: sp.Rational(3, 2)}), ("r = 5, m = 2", {r: 5, m: 2}))
 planes_witness("segment-1-D-area", "section of the sphere halfway between the base (distance m) and the pole",
-               ("segment-1-D",), round_sections(r ** 2 - P ** 2), ((r + m) / 2,), SECTION[0],
+               ("segment-1-D",), round_sections(r ** 2 - P ** 2), ((r + m) / 2,), measured("section 1"),
                *SEGMENT_CASES)
 SEGMENT2_CASES = (("r = 5, x = 1, x' = 3", {r: 5, x: 1, xp: 3}),
                   ("r = 9/2, x = 1/2, x' = 4", {r: sp.Rational(9, 2), x: sp.Rational(1, 2), xp: 4}))
 planes_witness("segment-2-radii-areas", "sections of the sphere at x, x' and halfway between",
                ("segment-2-radii",), round_sections(r ** 2 - P ** 2), (x, xp, (x + xp) / 2),
-               (SECTION[0] / pi, SECTION[1] / pi, SECTION[2] / pi), *SEGMENT2_CASES)
+               (measured("section 1") / pi, measured("section 2") / pi, measured("section 3") / pi), *SEGMENT2_CASES)
 ELLIPSOID_SEGMENT_CASES = (("a = 5, b = 3, x = 1", {a: 5, b: 3, x: 1}), ("a = 4, b = 1, x = 2", {a: 4, b: 1, x: 2}))
 planes_witness("ellipsoid-segment-D-area", "section of the ellipsoid of revolution halfway between x and the vertex",
-               ("ellipsoid-segment-D",), ellipsoid_sections, ((a + x) / 2,), SECTION[0] / pi,
+               ("ellipsoid-segment-D",), ellipsoid_sections, ((a + x) / 2,), measured("section 1") / pi,
                *ELLIPSOID_SEGMENT_CASES)
 # the elliptic body: the section at height P is bounded by the generators, chord 2 b/a sqrt(a^2 - xi^2) (1 - P/h)
 ELLIPTIC_BODY_CASES = (("a = 5, b = 3, h = 4", {a: 5, b: 3, h: 4}), ("a = 2, b = 1, h = 7/2", {a: 2, b: 1, h: sp.Rational(7, 2)}))
 elliptic_body_width = {"width": 2 * a * b * sp.cos(eta) ** 2 * (1 - P / h), "chord": (-pi / 2, pi / 2)}
 planes_witness("elliptic-body-sections-areas", "sections of the elliptic body at the heights 0, h/2 and h",
-               ("elliptic-body-sections",), elliptic_body_width, (0, h / 2, h), (SECTION[0], SECTION[1], SECTION[2]),
+               ("elliptic-body-sections",), elliptic_body_width, (0, h / 2, h),
+               (measured("section 1"), measured("section 2"), measured("section 3")),
                *ELLIPTIC_BODY_CASES)
 planes_witness("elliptic-body-D-axis-area", "the section at h/2 over pi a: its small half axis",
-               ("elliptic-body-D-axis",), elliptic_body_width, (h / 2,), SECTION[0] / (pi * a),
+               ("elliptic-body-D-axis",), elliptic_body_width, (h / 2,), measured("section 1") / (pi * a),
                *ELLIPTIC_BODY_CASES)
 # the triaxial ellipsoid P^2/a^2 + t^2/c^2 + s^2/b^2 <= 1: at the abscissa P the chord in s over t = c sqrt(1 -
 # P^2/a^2) sin(eta) is 2 b sqrt(1 - P^2/a^2) cos(eta), times dt
@@ -180,7 +185,7 @@ triaxial_width = {"width": 2 * b * c * (1 - P ** 2 / a ** 2) * sp.cos(eta) ** 2,
 for plane_name, plane_at in (("G", x), ("D", (x + xp) / 2), ("g", xp)):
     planes_witness(f"triaxial-stump-{plane_name}-area",
                    f"section of the triaxial ellipsoid at the abscissa of {plane_name}",
-                   (f"triaxial-stump-{plane_name}",), triaxial_width, (plane_at,), SECTION[0], *TRIAXIAL_CASES)
+                   (f"triaxial-stump-{plane_name}",), triaxial_width, (plane_at,), measured("section 1"), *TRIAXIAL_CASES)
 
 
 # the half axes of the section at an abscissa: the ordinates there of the principal ellipses NMR (half axes a, c)
@@ -194,9 +199,9 @@ for axes_name, axes_at in (("G", x), ("D", (x + xp) / 2), ("g", xp)):
                        parts=tuple(CurveRoot(f"{axes_name}-ordinate-{semi}", "", (), (), equation=(axes_at / a) ** 2
                                              + (t / semi) ** 2 - 1, variable=t, bracket=(0, semi))
                                    for semi in (c, b)),
-                       values=(PART[0] ** 2, PART[1] ** 2), methods=FIGURE_METHODS))
+                       values=(measured("part 1") ** 2, measured("part 2") ** 2)))
 planes_witness("pyramid-frustum-side-D-section", "the mid-section of trapezoid frusta by quadrature of its widths",
-               ("pyramid-frustum-side-D",), pyramid_sections, (h / 2,), sp.sqrt(SECTION[0] / k),
+               ("pyramid-frustum-side-D",), pyramid_sections, (h / 2,), sp.sqrt(measured("section 1") / k),
                *pyramid_cases)
 sections_witness("half-ellipsoid-as-segment", "centroid of the half ellipsoid from its circular sections",
                  ("half-ellipsoid-from-segment",), area_he, a, ("a = 5, b = 3", {a: 5, b: 3}),
@@ -205,7 +210,7 @@ sections_witness("half-triaxial-as-stump", "centroid of the half triaxial ellips
                  ("half-triaxial-from-stump",), area_ht, a, ("a = 5, b = 3, c = 2", {a: 5, b: 3, c: 2}),
                  ("a = 3, b = 2, c = 1", {a: 3, b: 2, c: 1}))
 planes_witness("cone-frustum-D-section", "the mid-section of the cone frustum across its chords", ("cone-frustum-D",),
-               round_sections((R + (r - R) * P / h) ** 2), (h / 2,), sp.sqrt(SECTION[0] / pi),
+               round_sections((R + (r - R) * P / h) ** 2), (h / 2,), sp.sqrt(measured("section 1") / pi),
                ("R = 3, r = 1, h = 4", {R: 3, r: 1, h: 4}), ("R = 5/2, r = 2, h = 3/2", {R: sp.Rational(5, 2), r: 2, h: sp.Rational(3, 2)}))
 sections_witness("elliptic-body-claims", "centroid of the elliptic body from its elliptic sections",
                  ("elliptic-body-triangles", "elliptic-body-paraboloid"), area_eb, h,

@@ -1,9 +1,9 @@
 """The Hasáb solution's witnesses: the prism clipped exactly (:mod:`symfloat.engine.floating_witness`)."""
 import sympy as sp
 
-from symfloat.engine.floating_witness import (MEASURED, PART, QUANTITIES, SERIES_METHODS, Body, Combined,
-                                              FloatingRootWitness, FloatingWitness, Marked, Root, SeriesWitness,
-                                              crossing)
+from symfloat.engine.floating_witness import (QUANTITIES, Body, Combined, FloatingRootWitness,
+                                              FloatingWitness, Marked, Root, SeriesWitness, crossing)
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
 
 from .statements import R1, R2, Ru, al, d, g, half, l, rho
@@ -13,12 +13,11 @@ from .statements import R1, R2, Ru, al, d, g, half, l, rho
 # tg alpha the side xi = +1/2 dips.  Marked with its upright up, its immersed part splits at the lower end of the
 # water line (the side xi = -1/2) into the rectangle ABG1I and the triangle IG1H1.  Energies: weight times the height
 # of the centre of gravity above the water, or weight of a part of the displaced water times its depth (its moment).
-M = MEASURED
 LYING = Body.box(1, 1, l)
 HEELED = Marked.of(LYING, (0, 1, 0))
 UPRIGHT_UP, UP = (0, 1, 0), (-sp.tan(al), 1, 0)
-PRISM = g * l * rho * M["G above water"]               # the prism's weight l g rho times the height of G
-WATER = g * M["immersed volume"] * M["B below water"]  # the displaced water's weight times the depth of B
+PRISM = g * l * rho * measured("G above water")               # the prism's weight l g rho times the height of G
+WATER = g * measured("immersed volume") * measured("B below water")  # the displaced water's weight times the depth of B
 SIDE_X = crossing(UP, (half, -half, 0), (0, 1, 0))     # the water line on the dipping side, above the bottom
 SIDE_Y = crossing(UP, (-half, -half, 0), (0, 1, 0))    # on the rising side
 ECASES = tuple(Case({rho: r, l: 4, g: sp.Rational(981, 100), al: sp.atan(q)},
@@ -35,9 +34,9 @@ for name, description, targets, cases, up, quantity in (
         ("water-energy", "displaced water's weight times the depth of the clipped immersed part's centroid",
          ("E0-water",), UPRIGHT, UPRIGHT_UP, WATER),
         ("water-rectangle", "g times the moment of the clipped immersed part below the lower end of the water line",
-         ("E1-water",), ECASES, UP, g * M["lower part moment"]),
+         ("E1-water",), ECASES, UP, g * measured("lower part moment")),
         ("water-triangle", "g times the moment of the clipped immersed part above the lower end of the water line",
-         ("E2-water",), ECASES, UP, g * M["upper part moment"]),
+         ("E2-water",), ECASES, UP, g * measured("upper part moment")),
         ("total-energy", "prism and water energies of the clipped upright prism", ("E0-total",), UPRIGHT, UPRIGHT_UP,
          PRISM + WATER),
         ("side-x", "immersed length of the dipping side, clipped plane", ("x",), ECASES, UP, SIDE_X),
@@ -62,16 +61,15 @@ d.witness(FloatingWitness("stability-sign-energy", "sign of the clipped lying pr
 # the energy per l g is rho times the height of G above B (weight times it, Scheeffer's V1 n): its value upright and
 # its coefficient of psi^2 interpolated at small heels psi
 psi = sp.Symbol("psi", real=True)
-ENERGY = rho * M["G above B"]
+ENERGY = rho * measured("G above B")
 C0 = FloatingWitness("", "", (), (), body=LYING, up=UPRIGHT_UP, density=rho, quantity=ENERGY)
 C2 = SeriesWitness("", "", (), (), body=LYING, up=(-sp.sin(psi), sp.cos(psi), 0), density=rho, quantity=ENERGY,
                    series=(psi, 2))
 d.witness(Combined("second-order-energy", "c0 + c2 alpha^2: the clipped prism's energy upright and its alpha^2 "
                    "coefficient interpolated at small heels", ("E1-total",), ECASES, parts=(C0, C2),
-                   values=(PART[0] + PART[1] * al ** 2,), methods=SERIES_METHODS))
+                   values=(measured("part 1") + measured("part 2") * al ** 2,)))
 d.witness(Combined("energy-change", "c2 alpha^2: the alpha^2 coefficient of the clipped prism's energy, interpolated "
-                   "at small heels", ("Delta-E",), ECASES, parts=(C2,), values=(PART[0] * al ** 2,),
-                   methods=SERIES_METHODS))
+                   "at small heels", ("Delta-E",), ECASES, parts=(C2,), values=(measured("part 1") * al ** 2,)))
 
 # the density thresholds: zeros in rho of the clipped metacentric height, lying (heel about the long axis) and
 # standing upright (the remark)

@@ -1,14 +1,14 @@
 """Scheeffer I-III's witnesses: floating prisms clipped exactly (:mod:`symfloat.engine.floating_witness`)."""
 import sympy as sp
 
-from symfloat.engine.floating_witness import LIMIT_METHODS, MEASURED, Body, FloatingWitness
+from symfloat.engine.floating_witness import LIMIT_METHODS, Body, FloatingWitness
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case, Precision
 
 from .statements import Hh, P1, P2, V1, c0, d, e1, h0, phi
 
 # ---- witnesses: the clipped body, named (symfloat.engine.floating_witness) --------------------------------
 
-M = MEASURED
 EXACT = (Precision(15, 1e-10), Precision(50, 1e-40))
 TRAPEZOID = Body.prism(((0, -P1 / 2), (Hh, -P2 / 2), (Hh, P2 / 2), (0, P1 / 2)), 4)
 
@@ -34,8 +34,8 @@ def _w(name, description, targets, quantity):
 
 _w("wedges-e-k", "V3 e = V3 x3 + V4 x4 and V3 k = V3 y3 + V4 y4 of the clipped wedges",
    ("moments-10", "moments-sum", "moments-11"),
-   (M["immersed wedge moment, horizontal"] + M["emerged wedge moment, horizontal"],
-    M["immersed wedge moment, vertical"] + M["emerged wedge moment, vertical"]))
+   (measured("immersed wedge moment, horizontal") + measured("emerged wedge moment, horizontal"),
+    measured("immersed wedge moment, vertical") + measured("emerged wedge moment, vertical")))
 _w("wedge-3", "static moments of the clipped immersed wedge", ("moments-10a",),
    ("immersed wedge moment, vertical", "immersed wedge moment, horizontal"))
 _w("wedge-4", "static moments of the clipped emerged wedge", ("moments-10b",),
@@ -43,18 +43,20 @@ _w("wedge-4", "static moments of the clipped emerged wedge", ("moments-10b",),
 _w("wedge-volume-3", "volume of the clipped immersed wedge", ("volume-V3",), "immersed wedge volume")
 _w("wedge-volume-4", "volume of the clipped emerged wedge", ("volume-V4",), "emerged wedge volume")
 _w("wedge-volume-over-tg", "clipped wedge volumes over tg phi (both wedges)", ("moments-equal",),
-   M["emerged wedge volume"] / sp.tan(phi))
+   measured("emerged wedge volume") / sp.tan(phi))
 _w("axis-position", "where the tilted water plane meets the old one (clipping, draught)", ("axis-centroid",),
    "axis position")
 _w("buoyancy-body-frame", "centre of buoyancy of the clipped tilted body in the body frame, times V1",
-   ("moments-raw", "moments-6"), (M["immersed volume"] * M["B - G, x"], -M["immersed volume"] * M["B - G, z"]))
+   ("moments-raw", "moments-6"), (measured("immersed volume") * measured("B - G, x"),
+                                  -measured("immersed volume") * measured("B - G, z")))
 _w("buoyancy-world-frame", "centre of buoyancy of the clipped tilted body in the world frame", ("rotation-5",),
    ("righting arm", "G above B"))
 _w("righting-moment", "V1 m, V1 n of the clipped tilted body", ("moments-7",),
-   (M["immersed volume"] * M["righting arm"], M["immersed volume"] * M["G above B"]))
-_w("righting-moment-m", "V1 m of the clipped tilted body", ("moment-12",), M["immersed volume"] * M["righting arm"])
+   (measured("immersed volume") * measured("righting arm"), measured("immersed volume") * measured("G above B")))
+_w("righting-moment-m", "V1 m of the clipped tilted body", ("moment-12",),
+   measured("immersed volume") * measured("righting arm"))
 _w("righting-moment-n", "V1 n (weight times height of S above S2) of the clipped tilted body", ("moment-13",),
-   M["immersed volume"] * M["G above B"])
+   measured("immersed volume") * measured("G above B"))
 
 
 # -- small-angle limits: horizontal prisms heeled by psi about their axis z (the side -x dips) --------------
@@ -87,6 +89,6 @@ def _limit(name, description, targets, quantity):
 _limit("righting-arm-limit", "lim m(psi)/psi from the clipped heeled body (extrapolated)",
        ("duhamel-16", "general-body"), "righting arm")
 _limit("wedge-limits", "leading terms of the clipped immersed wedge's moments (extrapolated)", ("series-3",),
-       (M["immersed wedge moment, horizontal"], M["immersed wedge moment, vertical"] / psi))
+       (measured("immersed wedge moment, horizontal"), measured("immersed wedge moment, vertical") / psi))
 _limit("wedge-limits-4", "leading terms of the clipped emerged wedge's moments (extrapolated)", ("series-4",),
-       (M["emerged wedge moment, horizontal"], M["emerged wedge moment, vertical"] / psi))
+       (measured("emerged wedge moment, horizontal"), measured("emerged wedge moment, vertical") / psi))

@@ -1,8 +1,8 @@
 """Scheeffer IV-V's witnesses: the clipped prism (:mod:`symfloat.engine.floating_witness`)."""
 import sympy as sp
 
-from symfloat.engine.floating_witness import (MEASURED, Body, FloatingRootWitness, FloatingWitness, Root,
-                                              waterplane_moment)
+from symfloat.engine.floating_witness import (Body, FloatingRootWitness, FloatingWitness, Root, waterplane_moment)
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
 from symfloat.geometry.floating import polygon_moments
 
@@ -67,9 +67,9 @@ EV = sp.Matrix([sp.cos(ALPHA), sp.sin(ALPHA), 0])
 NN = sp.Matrix([sp.sin(ALPHA), -sp.cos(ALPHA), 0])
 UP = sp.cos(PSI) * sp.Matrix([0, 0, 1]) - sp.sin(PSI) * NN
 HOR = sp.cos(PSI) * NN + sp.sin(PSI) * sp.Matrix([0, 0, 1])
-V_, GB = MEASURED["immersed volume"], MEASURED["G above B"]
-BG = sp.Matrix([MEASURED[f"B - G, {k}"] for k in "xyz"])
-TOP, BOT = MEASURED["upper base above water"], MEASURED["lower base above water"]
+V_, GB = measured("immersed volume"), measured("G above B")
+BG = sp.Matrix([measured(f"B - G, {k}") for k in "xyz"])
+TOP, BOT = measured("upper base above water"), measured("lower base above water")
 ARM = HOR.dot(BG)                                       # the righting arm: B - G across EF, towards the dip
 T2_, T21_, P2_ = waterplane_moment(HOR, HOR), waterplane_moment(EV, EV), waterplane_moment(HOR, EV)
 
@@ -142,7 +142,7 @@ _tilted("Tmu", "moment of the clipped waterplane II about the axis at the angle 
         waterplane_moment(MU_AXIS, MU_AXIS),
         (("rect-long", R(1, 3), {mu: R(1, 3)}), ("quad-p", R(6, 5), {mu: R(6, 5)}), ("tri", R(7, 10), {mu: R(7, 10)})))
 _tilted("D2", "V times the metacentric height of the clipped tilted prism", ("33", "43", "43-again"),
-        V_ * MEASURED["metacentric height"], EQ)
+        V_ * measured("metacentric height"), EQ)
 _tilted("D2-sign", "sign of the metacentric height of the clipped tilted prism", ("claim-43a",), "stability sign",
         NONISO)
 _tilted("Tm-excess", "moment of II about EF minus V times the height of G over B (clipped)", ("43-Tm",),

@@ -3,9 +3,10 @@ from dataclasses import replace
 
 import sympy as sp
 
-from symfloat.engine.floating_witness import (MEASURED, At, Body, Difference, FloatingRootWitness, Joined, Root,
-                                              crossing, potential_curvature, potential_slope)
-from symfloat.engine.witness import Case
+from symfloat.engine.declare import cases_of, declarer, part_of
+from symfloat.engine.floating_witness import (At, Body, Difference, FloatingRootWitness, Joined, Root, crossing,
+                                              potential_curvature, potential_slope)
+from symfloat.engine.measured import measured
 
 from .statements import a, b, c, d, phi, rho_s, s, t, z
 
@@ -17,7 +18,6 @@ from .statements import a, b, c, d, phi, rho_s, s, t, z
 # rising corner D over the water along the side b, m_3 the offset of the centroid of the clipped dry part,
 # F', F'' central differences of the clipped quantity in z, the double roots extrema of the clipped righting arm
 # at which it vanishes.
-M_ = MEASURED
 ph = sp.Symbol("varphi_w")                           # a witness's tilt from the position with b vertical
 UP_C = (sp.sin(ph), sp.cos(ph), 0)                   # turned about the c-axis, raising the corner D = (a/2, b/2)
 UP_A = (0, sp.cos(ph), sp.sin(ph))                   # turned about the a-axis
@@ -38,34 +38,29 @@ TOUCH_A = Root(sp.Min(crossing(UP_A, (0, b / 2, -c / 2), DOWN), crossing(UP_A, (
 LEG = crossing(UP_C, (a / 2, b / 2, 0), DOWN)       # x: from the rising corner D down the side b to the water
 M3_W = s / (1 - s) * SLOPE_C                       # m_3 = h.S_3 = -(s/sigma) h.(B - G), G at the origin
 G_W = 3 * M3_W * (LEG / b) ** 3 / (b * sp.sin(ph))   # 3 m_3 z^3/(b sin phi_2), z the measured x/b
-HG_W = M_["waterplane area"] / 2                   # the waterplane's width across the axis (SECTION)
+HG_W = measured("waterplane area") / 2                   # the waterplane's width across the axis (SECTION)
 TILT_Z = Root(LEG / b - z, ph, PHI)                # the tilt at which x/b = z
 ph1w, phtw, phCw, phAw, FCw, FAw, HCw, HAw, dFw = sp.symbols("varphi_1w varphi_tw varphi_Cw varphi_Aw F_Cw F_Aw "
                                                               "HG_Cw HG_Aw dF_w")
 
 
-def floating(name, description, targets, cases, quantity, up=UP_C, body=BOX, roots=(), density=s):
-    d.witness(FloatingRootWitness(name, description, tuple(targets), tuple(cases), body=body, up=up, density=density,
-                                  quantity=quantity, roots=roots))
+floating = declarer(d, FloatingRootWitness, up=UP_C, body=BOX, density=s)
 
 
-def part(quantity, up, roots=()):
-    """A witness measured as a part of :class:`Joined` (its name, targets and cases are the whole's)."""
-    return FloatingRootWitness("part", "", (), (), body=BOX, up=up, density=s, quantity=quantity, roots=roots)
+part = part_of(FloatingRootWitness, body=BOX, density=s)     # a part of a Joined witness
 
 
-def C(label, **kw):
-    syms = {"a": a, "b": b, "c": c, "s": s, "z": z, "varphi_2": phi, "t": t}
-    return Case({syms[k]: sp.Rational(v) for k, v in kw.items()}, label=label)
+C = cases_of(a, b, c, s, z, phi, t)
 
 
 UP = (C("a = 1, b = 2, c = 3, s = 3/10", a=1, b=2, c=3, s="0.3"), C("a = 3/2, b = 1, c = 2, s = 4/5", a="1.5", b=1, c=2, s="0.8"),
       C("a = 1, b = 1, c = 5/4, s = 1/2", a=1, b=1, c="1.25", s="0.5"))
-GM_MAX = M_["I max"] / M_["immersed volume"] - M_["G above B"]     # the metacentric height about the a-axis
+GM_MAX = measured("I max") / measured("immersed volume") - measured("G above B")     # the metacentric height about the a-axis
 UPRIGHT = (0, 1, 0)
 floating("upright-min", "metacentric height about the axis parallel to c, upright (clipped, I_min for c > a)",
          ("122", "stability-condition"), UP, "metacentric height", up=UPRIGHT)
-floating("upright-min-12", "12 s/b x the same", ("123", "132a"), UP, 12 * s / b * M_["metacentric height"], up=UPRIGHT)
+floating("upright-min-12", "12 s/b x the same", ("123", "132a"), UP, 12 * s / b * measured("metacentric height"),
+         up=UPRIGHT)
 floating("upright-max", "metacentric height about the axis parallel to a (I_max), upright (clipped)", ("T11-V1",), UP,
          GM_MAX, up=UPRIGHT)
 floating("upright-max-12", "12 s/b x the same", ("124",), UP, 12 * s / b * GM_MAX, up=UPRIGHT)
@@ -74,11 +69,13 @@ floating("largest", "largest waterplane moment, upright (clipped)", ("largest-mo
 floating("volume-height", "submerged volume and height of G above B, upright (clipped)", ("V1-e1",), UP,
          ("immersed volume", "G above B"), up=UPRIGHT)
 floating("moment-volume-height", "I_min and volume x height of G above B, upright (clipped)", ("T1-V1e1",), UP,
-         ("I min", M_["immersed volume"] * M_["G above B"]), up=UPRIGHT)
+         ("I min", measured("immersed volume") * measured("G above B")), up=UPRIGHT)
 floating("moment-difference", "I_max - I_min and the moments, upright (clipped)", ("127",), UP,
-         ("I max", "I min", M_["I max"] - M_["I min"]), up=UPRIGHT)
-floating("moment-difference-2", "I_max - I_min, upright (clipped)", ("126",), UP, M_["I max"] - M_["I min"], up=UPRIGHT)
-floating("moment-difference-3", "I_min - I_max, upright (clipped)", ("128-unstable",), UP, M_["I min"] - M_["I max"],
+         ("I max", "I min", measured("I max") - measured("I min")), up=UPRIGHT)
+floating("moment-difference-2", "I_max - I_min, upright (clipped)", ("126",), UP,
+         measured("I max") - measured("I min"), up=UPRIGHT)
+floating("moment-difference-3", "I_min - I_max, upright (clipped)", ("128-unstable",), UP,
+         measured("I min") - measured("I max"),
          up=UPRIGHT)
 
 # first region: both oblique positions inside the region (6s(1-s) > (a/b)^2, (c/b)^2 >= rho)
@@ -91,12 +88,14 @@ floating("oblique-c", "tan^2 of the clipped equilibrium tilt about the c-axis (r
 floating("oblique-c-pre", "1 + tan^2/2 of the clipped equilibrium tilt about the c-axis", ("125-pre",), R1,
          1 + sp.tan(ph) ** 2 / 2, roots=((ph, EQ_C),))
 floating("oblique-c-32", "I_min (1 + tan^2 phi_1/2) - V e_1 with the clipped upright moment, volume, height and tilt",
-         ("32",), R1, M_["I min"] * (1 + sp.tan(ph1w) ** 2 / 2) - M_["immersed volume"] * M_["G above B"],
+         ("32",), R1,
+         measured("I min") * (1 + sp.tan(ph1w) ** 2 / 2) - measured("immersed volume") * measured("G above B"),
          roots=((ph1w, EQ_C), (ph, 0)))
 floating("oblique-a", "tan^2 of the clipped equilibrium tilt about the a-axis", ("128",), R1, sp.tan(ph) ** 2, up=UP_A,
          roots=((ph, EQ_A),))
 d.witness(Joined("touch", "tan of the clipped tilt at which the top face reaches the water, about c and about a",
-                 ("129",), R1U, parts=(part(sp.tan(ph), UP_C, ((ph, TOUCH_C),)), part(sp.tan(ph), UP_A, ((ph, TOUCH_A),)))))
+                 ("129",), R1U, parts=(part(quantity=sp.tan(ph), up=UP_C, roots=((ph, TOUCH_C),)),
+                                       part(quantity=sp.tan(ph), up=UP_A, roots=((ph, TOUCH_A),)))))
 floating("touch-2", "tan^2 of the clipped touching tilt about c", ("129-squared",), R1U, sp.tan(ph) ** 2,
          roots=((ph, TOUCH_C),))
 MARGIN = sp.tan(phtw) ** 2 - sp.tan(ph1w) ** 2
@@ -105,8 +104,9 @@ floating("margin", "tan^2(touch) - tan^2(equilibrium) about c, clipped", ("130-p
 floating("margin-130", "(a/b)^2/2 (tan^2 touch - tan^2 equilibrium) about c, clipped", ("130",), R1U,
          (a / b) ** 2 / 2 * MARGIN, roots=TILTS_C)
 # -12 s/b GM upright and the margin of the oblique tilt, about c (I_min) and about a (I_max)
-REGION_C = part((-12 * s / b * M_["metacentric height"], (a / b) ** 2 / 2 * MARGIN), UP_C, TILTS_C)
-REGION_A = part((-12 * s / b * GM_MAX, (c / b) ** 2 / 2 * MARGIN), UP_A, TILTS_A)
+REGION_C = part(quantity=(-12 * s / b * measured("metacentric height"), (a / b) ** 2 / 2 * MARGIN), up=UP_C,
+                roots=TILTS_C)
+REGION_A = part(quantity=(-12 * s / b * GM_MAX, (c / b) ** 2 / 2 * MARGIN), up=UP_A, roots=TILTS_A)
 d.witness(Joined("region-131", "-12 s/b GM and the margins, both axes, clipped", ("131",), R1U,
                  parts=(REGION_C, REGION_A)))
 d.witness(Joined("region-132b", "-12 s/b GM about c and the margin, clipped", ("132b",), R1, parts=(REGION_C,)))
@@ -181,9 +181,9 @@ MARGIN_3 = (b / a) ** 2 / 2 * (1 / sp.tan(phAw) ** 2 - 1 / sp.tan(ph) ** 2)   # 
 floating("oblique-3", "cot^2 of the clipped equilibrium tilt next to the a-vertical position (last root of the slope)",
          ("166",), R3M, 1 / sp.tan(ph) ** 2, roots=((ph, EQ_3),))
 floating("upright-3", "12 s/a x metacentric height with a vertical (clipped)", ("upright-3",), R3M,
-         12 * s / a * M_["metacentric height"], up=(1, 0, 0))
+         12 * s / a * measured("metacentric height"), up=(1, 0, 0))
 floating("unstable-3", "-(a/b)^2/(6s(1-s)) 12 s/a x metacentric height with a vertical (clipped)", ("unstable-3",), R3M,
-         -(a / b) ** 2 / (6 * s * (1 - s)) * 12 * s / a * M_["metacentric height"], up=(1, 0, 0))
+         -(a / b) ** 2 / (6 * s * (1 - s)) * 12 * s / a * measured("metacentric height"), up=(1, 0, 0))
 floating("margin-3", "(b/a)^2/2 (tan^2 touch - tan^2 equilibrium) next to the a-vertical position (clipped)",
          ("165-pre",), R3, MARGIN_3, roots=((phAw, CORNER_A), (ph, EQ_3)))
 floating("margin-165", "(a/b)^2/rho x the same (clipped)", ("165",), R3, (a / b) ** 2 / rho_s * MARGIN_3,

@@ -1,8 +1,9 @@
 """Scheeffer VI.A-B's witnesses: clipped polyhedra and the floating cylinder (symfloat.engine.floating_witness)."""
 import sympy as sp
 
-from symfloat.engine.floating_witness import (FLOATING_METHODS, MEASURED, PART, Body, Combined, FloatingRootWitness,
-                                              FloatingWitness, Joined, Loaded, Root, waterplane_moment)
+from symfloat.engine.floating_witness import (FLOATING_METHODS, Body, Combined, FloatingRootWitness, FloatingWitness,
+                                              Joined, Loaded, Root, waterplane_moment)
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case, Precision
 from symfloat.geometry.floating import polygon_moments
 
@@ -19,9 +20,9 @@ U_OM = sp.Matrix([sp.cos(om), sp.sin(om), 0])           # the normal of the axis
 N_DIP = sp.Matrix([-sp.sin(om), -sp.cos(om), 0])
 UP = sp.cos(PSI) * sp.Matrix([0, 0, 1]) - sp.sin(PSI) * N_DIP
 ARM = (sp.cos(PSI) * N_DIP + sp.sin(PSI) * sp.Matrix([0, 0, 1])).dot(
-    sp.Matrix([MEASURED[f"B - G, {k}"] for k in "xyz"]))  # B - G horizontally towards the dip: the righting arm
-TOP, BOT = MEASURED["upper base above water"], MEASURED["lower base above water"]
-GM, VOL = MEASURED["metacentric height"], MEASURED["immersed volume"]
+    sp.Matrix([measured(f"B - G, {k}") for k in "xyz"]))  # B - G horizontally towards the dip: the righting arm
+TOP, BOT = measured("upper base above water"), measured("lower base above water")
+GM, VOL = measured("metacentric height"), measured("immersed volume")
 HALF = sp.Rational(1, 2)
 
 
@@ -101,7 +102,7 @@ tilted("triangle-first-contact", "tan of the tilt at which either base of the cl
 # ---- the cylinder: Body.cylinder (quadrature of exact slices, symfloat.engine.floating_witness) --------------
 # axis z, centred, tilted by psi towards +x: the side -x dips, the righting arm is B - G horizontally towards it
 UP_C = (sp.sin(PSI), 0, sp.cos(PSI))
-ARM_C = -sp.cos(PSI) * MEASURED["B - G, x"] + sp.sin(PSI) * MEASURED["B - G, z"]
+ARM_C = -sp.cos(PSI) * measured("B - G, x") + sp.sin(PSI) * measured("B - G, z")
 R = sp.Symbol("R", positive=True)                   # a radius sought, b = 1
 
 
@@ -276,7 +277,7 @@ def _model(edge, height):
 
 
 def _top(height):
-    return 2 * height - MEASURED["draught"] / sp.cos(PSI)
+    return 2 * height - measured("draught") / sp.cos(PSI)
 
 
 def _bottom(height):
@@ -321,12 +322,13 @@ def _model_boundaries(omega):
 Q0_M, Q60_M = _model_boundaries(0), _model_boundaries(pi / 3)
 d.witness(Combined("model-omega0-63", "half of the (a/b)^2 at which the model's equilibrium meets the upper (B "
                    "dipping) / lower (B rising) base contact at omega = 0, minus half of (a/b)^2", ("63",), q60_cases,
-                   parts=Q0_M, values=((PART[0] - QQ) / 2, (PART[1] - QQ) / 2)))
+                   parts=Q0_M, values=((measured("part 1") - QQ) / 2, (measured("part 2") - QQ) / 2)))
 d.witness(Combined("model-omega0-64", "the same margins, not halved", ("64",), q60_cases, parts=Q0_M,
-                   values=(PART[0] - QQ, PART[1] - QQ)))
+                   values=(measured("part 1") - QQ, measured("part 2") - QQ)))
 d.witness(Combined("model-region-III", "the model's boundaries at omega = 60 deg and 0 against (a/b)^2", ("65-III",),
                    q60_cases, parts=(*Q60_M, *Q0_M),
-                   values=(PART[0] - QQ, QQ - PART[2], PART[1] - QQ, QQ - PART[3])))
+                   values=(measured("part 1") - QQ, QQ - measured("part 3"), measured("part 2") - QQ,
+                           QQ - measured("part 4"))))
 
 
 # ---- the cylinder: the limits (72a), (73) and examples 8, 9 ------------------------------------------------
@@ -340,13 +342,15 @@ d.witness(Joined("cylinder-contacts", "tangents of the tilts at which the upper 
                  ("72a",), tiltc_cases[:1], parts=CONTACTS))
 d.witness(Combined("cylinder-contact-margins", "squared contact tangents minus the squared equilibrium tangent",
                    ("72a-squared",), tiltc_cases[:1], parts=(*CONTACTS, EQUILIBRIUM),
-                   values=(PART[0] ** 2 - PART[2] ** 2, PART[1] ** 2 - PART[2] ** 2)))
+                   values=(measured("part 1") ** 2 - measured("part 3") ** 2,
+                           measured("part 2") ** 2 - measured("part 3") ** 2)))
 d.witness(Combined("cylinder-73", "-16 s/b times the upright metacentric height, and (2r/b)^2/2 times the "
                    "squared-tangent margins", ("73",), tiltc_cases[:1],
                    parts=(FloatingWitness("upright", "", (), (), body=Body.cylinder(r, b), density=s, quantity=GM),
                           *CONTACTS, EQUILIBRIUM),
-                   values=(-16 * s / b * PART[0], (PART[1] ** 2 - PART[3] ** 2) * K2_ / 2,
-                           (PART[2] ** 2 - PART[3] ** 2) * K2_ / 2)))
+                   values=(-16 * s / b * measured("part 1"),
+                           (measured("part 2") ** 2 - measured("part 4") ** 2) * K2_ / 2,
+                           (measured("part 3") ** 2 - measured("part 4") ** 2) * K2_ / 2)))
 d.witness(Joined("cylinder-71", "densities at which the upright cylinder's metacentric height vanishes", ("71",),
                  (Case({r: sp.Rational(3, 5), b: 1}), Case({r: 1, b: 3})),
                  parts=tuple(cyl_root(f"root {k}", "", (), (), s, GM, up=(0, 0, 1), along=s, bracket=bracket,

@@ -3,7 +3,9 @@ from dataclasses import replace
 
 import sympy as sp
 
-from symfloat.engine.floating_witness import MEASURED, At, Body, FloatingRootWitness, Root, potential_slope
+from symfloat.engine.declare import cases_of, declarer
+from symfloat.engine.floating_witness import At, Body, FloatingRootWitness, Root, potential_slope
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
 
 from .statements import F, a, b, d, half, n, om, phi, pi, psi, r, s
@@ -17,17 +19,12 @@ PHIT_GRID = tuple(0.005 + 0.1 * k for k in range(16))   # the clearance decrease
 EQUILIBRIUM = Root(GZW, phi, PHI_GRID)             # the oblique equilibrium: the first zero of GZ in phi
 TOUCH = Root("face clearance", phi, PHIT_GRID)     # the tilt at which an end face reaches the water
 ph1, pht, ws, gm0 = sp.symbols("varphi_1w varphi_tw omega_w GM_0w")    # measured: the roots and the upright GM
-M_ = MEASURED
 
 
-def floating(name, description, targets, cases, quantity, body=PRISM, up=UPV, density=s, roots=()):
-    d.witness(FloatingRootWitness(name, description, tuple(targets), tuple(cases), body=body, up=up,
-                                  density=density, quantity=quantity, roots=roots))
+floating = declarer(d, FloatingRootWitness, body=PRISM, up=UPV, density=s)
 
 
-def C(label, body=None, **kw):
-    syms = {"a": a, "b": b, "s": s, "omega": om, "psi": psi, "n": n, "r": r, "F": F}
-    return Case({syms[k]: sp.Rational(v) for k, v in kw.items()}, None if body is None else {"body": body}, label)
+C = cases_of(a, b, s, om, psi, n, r, F)
 
 
 UPRIGHT = (0, 0, 1)
@@ -51,11 +48,11 @@ floating("e1-clipped", "height of G above B, upright (clipped)", ("e1",), UP, "G
 floating("metacentric-height", "metacentric height I_min/V - BG, upright (clipped)", ("upright-condition",), UP,
          "metacentric height", up=UPRIGHT)
 floating("duhamel-75", "12 s/b x metacentric height, upright (clipped)", ("75", "78"), UP,
-         12 * s / b * M_["metacentric height"], up=UPRIGHT)
+         12 * s / b * measured("metacentric height"), up=UPRIGHT)
 floating("duhamel-75-unstable", "-12 s/b x metacentric height, upright (clipped)", ("75-unstable",), UP,
-         -12 * s / b * M_["metacentric height"], up=UPRIGHT)
+         -12 * s / b * measured("metacentric height"), up=UPRIGHT)
 floating("area-b2-over-T", "F_1 b^2 s(1-s)/T_1 from the clipped upright waterplane", ("Fb2-over-T1",), UP,
-         M_["waterplane area"] * b ** 2 * s * (1 - s) / M_["I min"], up=UPRIGHT)
+         measured("waterplane area") * b ** 2 * s * (1 - s) / measured("I min"), up=UPRIGHT)
 TOP = (C("a = 1, b = 1, s = 7/10, omega = 0.3", a=1, b=1, s="0.7", omega="0.3"),
        C("a = 6/5, b = 1, s = 9/10, omega = 0.7", a="1.2", b=1, s="0.9", omega="0.7"))
 floating("touch-top", "tan of the tilt at which the top face reaches the clipped water plane", ("limit-top",), TOP,
@@ -97,9 +94,9 @@ floating("limit-omega", "sin^2(45 deg + omega*), omega* the clipped root of the 
 # ---- the cube
 CUBE = (C("b = 1, s = 0.3", b=1, s="0.3"), C("b = 2, s = 0.8", b=2, s="0.8"), C("b = 1/2, s = 0.1", b="0.5", s="0.1"))
 floating("cube-duhamel", "12 s/b x metacentric height of the upright cube (clipped)", ("cube-78",), CUBE,
-         12 * s / b * M_["metacentric height"], body=CUBE_BODY, up=UPRIGHT)
+         12 * s / b * measured("metacentric height"), body=CUBE_BODY, up=UPRIGHT)
 floating("cube-duhamel-2", "2 s/b x metacentric height of the upright cube (clipped)", ("cube-78-square",), CUBE,
-         2 * s / b * M_["metacentric height"], body=CUBE_BODY, up=UPRIGHT)
+         2 * s / b * measured("metacentric height"), body=CUBE_BODY, up=UPRIGHT)
 ONE = (Case({}, label="unit cube"),)
 s_up, s_lo = sp.symbols("s_+w s_-w")
 UPRIGHT_S = tuple((sym, Root("metacentric height", s, tuple(0.5 + sg * 0.01 * k for k in range(1, 50))))
@@ -145,7 +142,7 @@ floating("cube-limit-omega", "sin^2(45 deg + omega*) for the clipped cube", ("82
 floating("half-cube-turned", "potential change of the clipped cube (s = 1/2, phi = 45 deg) turned by omega about "
          "its main axis", ("half-stable",), (C("a = 1, omega = 0.1", a=1, omega="0.1"),
                                              C("a = 2, omega = 0.3", a=2, omega="0.3")),
-         M_["G above B"] - gm0, body=Body.box(a, a, a), density=half,
+         measured("G above B") - gm0, body=Body.box(a, a, a), density=half,
          roots=((phi, pi / 4), (gm0, At("G above B", {om: 0}))))
 floating("half-tilt-clipped", "clipped equilibrium tilt of the cube at s = 1/2 (root of GZ)", ("half-tilt",), ONE,
          phi, body=UNIT_CUBE, density=half, roots=((om, 0), (phi, EQUILIBRIUM)))
@@ -175,16 +172,16 @@ NG = (by_radius("r = 1, n = 3, omega = 0.3", 3, r=1, omega="0.3"),
 floating("polygon-moment", "moment of the regular polygon about an axis through its centre (clipped waterplane)",
          ("84", "85", "86-nA", "87", "87-cos2", "89", "89a", "86a"), NG, "I min", body=None, up=UPRIGHT, density=half)
 floating("polygon-moment-2", "2 T_1 and T_1 of the regular polygon (clipped waterplane)", ("86",), NG,
-         (2 * M_["I min"], M_["I min"]), body=None, up=UPRIGHT, density=half)
+         (2 * measured("I min"), measured("I min")), body=None, up=UPRIGHT, density=half)
 floating("polygon-area", "area of the regular polygon (clipped waterplane)", ("area",), NG, "waterplane area",
          body=None, up=UPRIGHT, density=half)
 # the largest distance of a vertex from a line through the centre: the freeboard above a water plane normal to
 # that line plus the water plane's height above the centre (any density)
 floating("polygon-radius", "squared distance of the vertices from the centre (reach towards vertex 0)", ("radius",),
-         NG, (M_["freeboard"] + M_["water level"]) ** 2, body=None, up=(1, 0, 0), density=half)
+         NG, (measured("freeboard") + measured("water level")) ** 2, body=None, up=(1, 0, 0), density=half)
 floating("polygon-apothem", "distance of the centre from the midpoint of a side (reach across the side 0-1)",
-         ("apothem",), NG, M_["freeboard"] + M_["water level"], body=None, up=(sp.cos(pi / n), sp.sin(pi / n), 0),
-         density=half)
+         ("apothem",), NG, measured("freeboard") + measured("water level"), body=None,
+         up=(sp.cos(pi / n), sp.sin(pi / n), 0), density=half)
 NG34 = {k: (by_radius("r = 1", k, r=1), by_radius(f"r = {v}", k, r=v)) for k, v in ((3, "3/2"), (4, "2/3"))}
 floating("triangle-moment", "moment of the equilateral triangle (clipped waterplane)", ("triangle-T1",), NG34[3],
          "I min", body=None, up=UPRIGHT, density=half)
@@ -194,7 +191,8 @@ floating("polygon-ordinate", "largest distance of a vertex from the axis on the 
          ("88",), (by_radius("r = 1, n = 3, omega = 0.7", 3, r=1, omega="0.7"),
                    by_radius("r = 3/2, n = 6, omega = 0.3", 6, r="1.5", omega="0.3"),
                    by_radius("r = 1, n = 4, omega = 0.2", 4, r=1, omega="0.2")),
-         M_["freeboard"] + M_["water level"], body=None, up=(sp.cos(pi / n + om), sp.sin(pi / n + om), 0), density=half)
+         measured("freeboard") + measured("water level"), body=None,
+         up=(sp.cos(pi / n + om), sp.sin(pi / n + om), 0), density=half)
 floating("triangle-at-area", "moment of the equilateral triangle of area F (clipped waterplane)",
          ("triangle-largest",), (by_area("F = 1", 3, F=1), by_area("F = 5/2", 3, F="2.5")), "I min", body=None,
          up=UPRIGHT, density=half)
@@ -213,11 +211,11 @@ def triangle_BOC(label, k, turned, **kw):
     return C(label, Body.prism(corners, 1), n=k, **kw)
 
 
-ABOUT_O = (M_["waterplane tensor, yy"] + M_["waterplane area"] * M_["waterplane centroid, y"] ** 2,
-           M_["waterplane tensor, xx"] + M_["waterplane area"] * M_["waterplane centroid, x"] ** 2)
+ABOUT_O = (measured("waterplane tensor, yy") + measured("waterplane area") * measured("waterplane centroid, y") ** 2,
+           measured("waterplane tensor, xx") + measured("waterplane area") * measured("waterplane centroid, x") ** 2)
 floating("polygon-side", "distance of adjacent vertices (twice the reach of C across OQ)", ("side",),
          tuple(triangle_BOC(c.label, int(c.params[n]), False, r=c.params[r], omega=c.params[om]) for c in NG),
-         2 * (M_["freeboard"] + M_["water level"]), body=None, up=(0, 1, 0), density=half)
+         2 * (measured("freeboard") + measured("water level")), body=None, up=(0, 1, 0), density=half)
 TRI = (("r = 1, n = 3, psi = 0.4", 3, "1", "0.4"), ("r = 3/2, n = 7, psi = 1.1", 7, "1.5", "1.1"))
 floating("triangle-axis", "moment of the triangle BOC turned by -psi about the x axis through O (clipped waterplane)",
          ("triangle-axis", "83"), tuple(triangle_BOC(lb, k, True, r=rv, psi=pv) for lb, k, rv, pv in TRI),

@@ -3,7 +3,8 @@ import functools
 
 import sympy as sp
 
-from symfloat.engine.floating_witness import MEASURED, Body, FloatingRootWitness, FloatingWitness, Root, potential_slope
+from symfloat.engine.floating_witness import Body, FloatingRootWitness, FloatingWitness, Root, potential_slope
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
 from symfloat.geometry.floating import polygon_moments
 
@@ -117,19 +118,18 @@ def _generic(name):
 
 # the configurations measured: the prism over the case's base, tilted by tan phi = t_w towards NE = (n_x, n_y)
 NX, NY, TT, AV, A1 = sp.symbols("n_x^w n_y^w t_phi^w alpha^w alpha_1^w", real=True)
-M_ = MEASURED
 CPH, SPH = 1 / sp.sqrt(1 + TT ** 2), TT / sp.sqrt(1 + TT ** 2)
 NV, EV = sp.Matrix([NX, NY, 0]), sp.Matrix([-NY, NX, 0])         # NE, and the axis GH (body frame)
 HV = sp.Matrix([CPH * NX, CPH * NY, -SPH])                       # the horizontal across GH, towards the dry side
 UP = (TT * NX, TT * NY, sp.Integer(1))
-V1M = M_["immersed volume"]
-BG = sp.Matrix([M_[f"B - G, {axis}"] for axis in "xyz"])
+V1M = measured("immersed volume")
+BG = sp.Matrix([measured(f"B - G, {axis}") for axis in "xyz"])
 V3M = F1 * b - V1M                                               # the dry volume
 DRY = -V1M * BG                      # V_3 (S_3 - S): V S = V_1 S_2 + V_3 S_3 with S = G the origin
-X0M = -(M_["water level"] * sp.sqrt(1 + TT ** 2) - b / 2) / TT    # O from N along NE: the water line in the upper base
-TW = sp.Matrix(3, 3, lambda i, j: M_[f"waterplane tensor, {'xyz'[min(i, j)]}{'xyz'[max(i, j)]}"])
-CW = sp.Matrix([M_[f"waterplane centroid, {axis}"] for axis in "xyz"]) - sp.Matrix([-X0M * NX, -X0M * NY, b / 2])
-AW = M_["waterplane area"]
+X0M = -(measured("water level") * sp.sqrt(1 + TT ** 2) - b / 2) / TT    # O from N along NE: the water line in the upper base
+TW = sp.Matrix(3, 3, lambda i, j: measured(f"waterplane tensor, {'xyz'[min(i, j)]}{'xyz'[max(i, j)]}"))
+CW = sp.Matrix([measured(f"waterplane centroid, {axis}") for axis in "xyz"]) - sp.Matrix([-X0M * NX, -X0M * NY, b / 2])
+AW = measured("waterplane area")
 turned = lambda a_: sp.cos(a_) * HV - sp.sin(a_) * EV  # noqa: E731  (the direction at a_ to the axis through S^1)
 SLOPE_T = 2 * (-sp.sin(AV) * HV - sp.cos(AV) * EV).dot(TW * turned(AV))   # dT_alpha/dalpha
 
@@ -144,18 +144,18 @@ MEASURE = {
     "balance": (V1M * BG.dot(HV), V1M * BG.dot(EV)),
     "M3": DRY.dot(HV), "M3sin": DRY.dot(HV) / SPH,
     "ZX": (V3M * b / 2 - DRY[2], DRY.dot(NV) + V3M * X0M),
-    "V3zeta": DRY[2], "V1e2": V1M * M_["G above B"], "offsets": (DRY.dot(NV) / V3M, DRY[2] / V3M),
-    "flip-product": V1M * BG.dot(EV) / TT, "flip": V1M * M_["G above B"],      # the turned body (see _w)
+    "V3zeta": DRY[2], "V1e2": V1M * measured("G above B"), "offsets": (DRY.dot(NV) / V3M, DRY[2] / V3M),
+    "flip-product": V1M * BG.dot(EV) / TT, "flip": V1M * measured("G above B"),      # the turned body (see _w)
     # the water lines in the upper and the lower base lie b cot phi apart along NE
     "x0x01": (-(X0M - b / TT) + X0M) * TT,
     "122": (DRY.dot(HV) / SPH * TT, (-(X0M - b / TT) + X0M) * TT - b, V3M - F1 * b * (1 - s)),
     "Tmu": quad(turned(mu), turned(mu)), "T2": (quad(HV, HV), quad(EV, EV)), "Ks": quad(HV, EV),
     "dT": (SLOPE_T.subs(AV, mu), sp.tan(2 * A1)), "cos2": sp.cos(2 * A1) ** 2,
     "wp-int": (AW * CW.dot(EV), AW * CW.dot(HV)), "mnF2": (CW.dot(HV), -CW.dot(EV), AW),
-    "Imin": "I min", "extremes": ((M_["I min"] - TW.trace() / 2) ** 2, (M_["I max"] - TW.trace() / 2) ** 2),
-    "D": V1M * M_["metacentric height"], "cD": CPH * V1M * M_["metacentric height"],
-    "2cD": 2 * CPH * V1M * M_["metacentric height"], "Iminc": CPH * M_["I min"],
-    "V3e3c": CPH * V1M * M_["G above B"],
+    "Imin": "I min", "extremes": ((measured("I min") - TW.trace() / 2) ** 2, (measured("I max") - TW.trace() / 2) ** 2),
+    "D": V1M * measured("metacentric height"), "cD": CPH * V1M * measured("metacentric height"),
+    "2cD": 2 * CPH * V1M * measured("metacentric height"), "Iminc": CPH * measured("I min"),
+    "V3e3c": CPH * V1M * measured("G above B"),
 }
 PRINCIPAL = ((A1, Root(SLOPE_T.subs(AV, AV), AV, tuple(-0.8 + 0.02 * k for k in range(81)))),)   # a root of dT/dalpha
 

@@ -2,19 +2,19 @@
 import mpmath
 import sympy as sp
 
-from symfloat.engine.floating_witness import (MEASURED, At, Body, CutWitness, FloatingRootWitness, Root,
-                                              potential_slope)
+from symfloat.engine.declare import cases_of, declarer
+from symfloat.engine.floating_witness import (At, Body, CutWitness, FloatingRootWitness, Root, potential_slope)
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
 from symfloat.geometry.floating import polygon_moments
 
 from .statements import L, a, co, d, half, om, pi, r2, rho, rho1, s, si, tg, xl
 
 # ==== witnesses: the clipped cube ========================================================================
-M_ = MEASURED
 th = sp.Symbol("theta_w")                              # the tilt in the diagonal plane
 UD = (-sp.sin(th) / r2, -sp.sin(th) / r2, sp.cos(th))  # up, turned from the top face towards the corner B
 SLOPE = potential_slope(UD, th)                        # dE/dtheta of the clipped potential u.(G - B)
-LEG = -r2 * M_["top clearance"] / sp.sin(th)           # leg of the corner triangle cut at B: B lies u_x leg below
+LEG = -r2 * measured("top clearance") / sp.sin(th)           # leg of the corner triangle cut at B: B lies u_x leg below
 CUBE, UNIT = Body.box(a, a, a), Body.box(1, 1, 1)
 
 
@@ -24,21 +24,18 @@ def cut(name, description, targets, cases, quantity, up, through, body=CUBE, roo
                          quantity=quantity, roots=roots))
 
 
-def floating(name, description, targets, cases, quantity, up=UD, density=s, body=UNIT, roots=()):
-    d.witness(FloatingRootWitness(name, description, tuple(targets), cases if callable(cases) else tuple(cases),
-                                  body=body, up=up, density=density, quantity=quantity, roots=roots))
+floating = declarer(d, FloatingRootWitness, up=UD, density=s, body=UNIT)
 
 
-def C(label, **kw):
-    syms = {"a": a, "omega": om, "rho": rho, "rho1": rho1, "x": xl, "s": s, "L": L}
-    return Case({syms[q]: sp.Rational(v) for q, v in kw.items()}, label=label)
+C = cases_of(a, om, rho, rho1, xl, s, L)
 
 
 def dry_moment(K):
     """The water plane rising towards B with slope K across GH (up (-K sin w, -K cos w, 1)): the moment of the
     clipped dry part about the vertical plane through G across the axis (along (cos w, -sin w, 0)) over K, i.e.
     minus that of the submerged part, G being the origin."""
-    return (-M_["immersed volume"] * (co * M_["B - G, x"] - si * M_["B - G, y"]) / K, (-K * si, -K * co, 1))
+    return (-measured("immersed volume") * (co * measured("B - G, x") - si * measured("B - G, y")) / K,
+            (-K * si, -K * co, 1))
 
 
 FACE = (C("a = 1, omega = 0.3, rho = 0.6", a=1, omega="0.3", rho="0.6"),
@@ -52,8 +49,8 @@ cut("dry-moment-45", "the same with the axis along a face diagonal", ("170",),
     *dry_moment(sp.Rational(1, 4)), H_POINT, roots=((om, pi / 4),))
 cut("dry-moment-third", "moment of the clipped dry part / tan phi, water plane through both water lines",
     ("173", "118-form", "173-only-45"),
-    (C("a = 1, omega = 0.3, rho = 0.6, rho_1 = 0.4", a=1, omega="0.3", rho="0.6", rho1="0.4"),
-     C("a = 3/2, omega = 0.5, rho = 0.7, rho_1 = 0.9", a="1.5", omega="0.5", rho="0.7", rho1="0.9")),
+    (C("a = 1, omega = 0.3, rho = 0.6, rho_1 = 0.4", a=1, omega="0.3", rho="0.6", rho_1="0.4"),
+     C("a = 3/2, omega = 0.5, rho = 0.7, rho_1 = 0.9", a="1.5", omega="0.5", rho="0.7", rho_1="0.9")),
     *dry_moment(a / (a * (si + co) - (rho + rho1) * si)), H_POINT)
 
 
@@ -69,8 +66,9 @@ def _frame(q):
 H2, G2, B2 = (_frame(q) for q in ((a / 2 - rho, a / 2), (a / 2, a / 2 - rho * tg), (a / 2, a / 2)))
 P2 = (0, B2[1])
 HPB, GPB, BHG = Body.prism((H2, B2, P2), 1), Body.prism((G2, P2, B2), 1), Body.prism((H2, B2, G2), 1)  # counter-clockwise
-INT_XY = M_["waterplane tensor, xy"] + M_["waterplane area"] * M_["waterplane centroid, x"] * M_["waterplane centroid, y"]
-REACH = M_["freeboard"] + M_["water level"]
+INT_XY = (measured("waterplane tensor, xy")
+          + measured("waterplane area") * measured("waterplane centroid, x") * measured("waterplane centroid, y"))
+REACH = measured("freeboard") + measured("water level")
 floating("frame-u", "distance NH from the square's corners (reach of BHG along -y)", ("u",), FACE, REACH, up=(0, -1, 0),
          density=half, body=BHG)
 floating("frame-v", "distance NG from the square's corners (reach of BHG along +y)", ("v",), FACE, REACH, up=(0, 1, 0),
@@ -147,13 +145,14 @@ floating("pentagon-stiffness", "signs of the clipped second derivative of the po
 # ---- the cube turned corner up: the plane through three face diagonals, triangles and hexagons
 DIAGONAL = (1, 1, 1)
 cut("tetra-dry", "dry volume of the clipped cube above the plane through three face diagonals", ("tetra",),
-    (C("a = 1", a=1), C("a = 3/2", a="1.5")), a ** 3 - M_["immersed volume"], DIAGONAL, (a / 2, a / 2, -a / 2))
+    (C("a = 1", a=1), C("a = 3/2", a="1.5")), a ** 3 - measured("immersed volume"), DIAGONAL, (a / 2, a / 2, -a / 2))
 cut("five-sixths", "submerged fraction of the unit cube below the plane through three face diagonals",
     ("five-sixths",), ONE, "immersed volume", DIAGONAL, (half, half, -half), body=UNIT)
 floating("tri-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1 - L^3/6", ("tri-unstable",),
          (C("L = 1/2", L="0.5"), C("L = 4/5", L="0.8")), "stability sign", up=DIAGONAL, density=1 - L ** 3 / 6)
 floating("diagonal-shape", "+1 if the clipped waterplane of the cube turned corner up is a hexagon, -1 if a triangle",
-         ("hex-follows",), (C("s = 4/5", s="0.8"), C("s = 9/10", s="0.9")), (2 * M_["waterplane corners"] - 9) / 3,
+         ("hex-follows",), (C("s = 4/5", s="0.8"), C("s = 9/10", s="0.9")),
+         (2 * measured("waterplane corners") - 9) / 3,
          up=DIAGONAL)
 floating("hex-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1/2", ("hex-half",), ONE,
          "stability sign", up=DIAGONAL, density=half)

@@ -19,15 +19,18 @@ ends: ends like ``√(b - y)`` or ``1/√(b - y)`` become smooth with ``smooth=2
 multiple of 1/4 with ``smooth=4``, at the price of the digits of ``b - y`` lost next to the end), and mpmath
 at 50 digits (strips by tanh-sinh).
 
-A quantity is a SymPy expression in ``Over(f)`` (the integral of ``f``, an expression in the figure's
-coordinates ``coords`` and the case's parameters, over the figure), the centroid ``CENTROID`` and the case's
-parameters, or a tuple of them:
+A quantity is a SymPy expression in ``measured("integral", of=f)`` (the integral of ``f``, an expression in
+the figure's coordinates ``coords``, the case's parameters and the centroid, over the figure), the centroid
+``measured("centroid, 1")``, ``measured("centroid, 2")`` (along ``coords[0]``, ``coords[1]``) and the case's
+parameters, or a tuple of them (:mod:`symfloat.engine.measured`):
 
 >>> import sympy as sp
+>>> from symfloat.engine.measured import measured
 >>> from symfloat.engine.witness import Case
 >>> x, y, a = sp.symbols("x y a")
 >>> w = FigureWitness("I", "∫∫ y² over the square", ("t",), (Case({a: 1}),), coords=(x, y),
-...                   figure=Figure.polygon([(-a, -a), (a, -a), (a, a), (-a, a)]), quantity=Over(y ** 2))
+...                   figure=Figure.polygon([(-a, -a), (a, -a), (a, a), (-a, a)]),
+...                   quantity=measured("integral", of=y ** 2))
 >>> [round(float(w.measure(w.instances[0], m)), 14) for m in w.methods]     # 4 a⁴/3
 [1.33333333333333, 1.33333333333333]
 """
@@ -45,20 +48,15 @@ from flint import arb
 
 from ..geometry.floating import polygon_moments
 from .floating_witness import _real, number
+from .measured import Measured, MeasuredIntegral, measured_names
 from .roots import grid_roots
 from .enclosure import Unsupported, ball, integral, real_function, sign_change_root, working_precision
 from .witness import MeasuredWitness, Precision
 
-__all__ = ["Figure", "Over", "CENTROID", "FigureWitness", "FIGURE_METHODS", "CurveRoot"]
+__all__ = ["Figure", "FigureWitness", "FIGURE_METHODS", "CurveRoot"]
 
 FIGURE_METHODS = (Precision(15, 1e-10), Precision(50, 1e-40))
-CENTROID = (sp.Symbol("figure centroid, 1"), sp.Symbol("figure centroid, 2"))   # along coords[0], coords[1]
-
-
-class Over(sp.Function):
-    """``Over(f)``: the integral of *f* over the witness's figure (kept unevaluated in a quantity)."""
-
-    nargs = 1
+_CENTROID = (Measured("centroid, 1"), Measured("centroid, 2"))     # along coords[0], coords[1]
 
 
 @dataclass(frozen=True)
@@ -82,7 +80,7 @@ class Figure:
 
     @classmethod
     def interval(cls, var, lo, hi, breaks=(), smooth=2):
-        """The segment ``lo <= var <= hi``: ``Over(f)`` is the one-dimensional ``∫ f dvar``."""
+        """The segment ``lo <= var <= hi``: the integral of ``f`` over it is the one-dimensional ``∫ f dvar``."""
         return cls("interval", (var, sp.sympify(lo), sp.sympify(hi), tuple(sp.sympify(b) for b in breaks)), smooth)
 
 
@@ -202,13 +200,23 @@ def _at(expr, params):
 
 @dataclass(frozen=True)
 class FigureWitness(MeasuredWitness):
-    """The quantity (an expression in ``Over(f)``, :data:`CENTROID` and the case's parameters, or a tuple of
-    them) of ``figure`` at each case, in the plane of ``coords``: see the module."""
+    """The quantity (an expression in ``measured("integral", of=f)``, ``measured("centroid, 1")``,
+    ``measured("centroid, 2")`` and the case's parameters, or a tuple of them) of ``figure`` at each case, in
+    the plane of ``coords``: see the module."""
 
     figure: Figure = None
     coords: tuple = ()
     quantity: object = None
     methods: tuple = FIGURE_METHODS
+
+    def __post_init__(self):
+        items = self.quantity if isinstance(self.quantity, tuple) else (self.quantity,)
+        known = {s.name for s in _CENTROID}
+        for q in items:
+            names = measured_names(q)                   # an integrand's among them
+            if not names <= known:
+                raise ValueError(f"witness {self.name}: {sorted(names - known)} are not measured on a figure; "
+                                 f"known: measured('integral', of=f), {', '.join(sorted(known))}")
 
     def _integral(self, figure, f, dps):
         key = (figure, f, dps)
@@ -228,9 +236,9 @@ class FigureWitness(MeasuredWitness):
     def _item(self, q, figure, params, dps):
         q = sp.sympify(q)
         values = {}
-        if q.free_symbols & set(CENTROID):
-            values.update({s: sp.Float(v, max(dps, 15) + 5) for s, v in zip(CENTROID, self._centroid(figure, dps))})
-        for atom in q.atoms(Over):
+        if q.free_symbols & set(_CENTROID):
+            values.update({s: sp.Float(v, max(dps, 15) + 5) for s, v in zip(_CENTROID, self._centroid(figure, dps))})
+        for atom in q.atoms(MeasuredIntegral):
             values[atom] = sp.Float(self._integral(figure, _at(_at(atom.args[0], params), values), dps),
                                     max(dps, 15) + 5)
         value = _at(_at(q, values), params)
@@ -261,16 +269,16 @@ class FigureWitness(MeasuredWitness):
 
     def _enclosed_item(self, q, figure, bits):
         if figure.kind == "polygon":          # exact: every integral a SymPy number
-            centroid = dict(zip(CENTROID, polygon_moments([tuple(p) for p in figure.data])[1]))
+            centroid = dict(zip(_CENTROID, polygon_moments([tuple(p) for p in figure.data])[1]))
             exact_q = q.xreplace({atom: _polygon_exact(figure.data, atom.args[0].xreplace(centroid), self.coords)
-                                  for atom in q.atoms(Over)}).xreplace(centroid)
+                                  for atom in q.atoms(MeasuredIntegral)}).xreplace(centroid)
             return Fraction(int(exact_q.p), int(exact_q.q)) if exact_q.is_Rational else ball(exact_q, bits)
         at = {}
-        if q.free_symbols & set(CENTROID) or any(a.free_symbols & set(CENTROID) for a in q.atoms(Over)):
+        if q.free_symbols & set(_CENTROID) or any(a.free_symbols & set(_CENTROID) for a in q.atoms(MeasuredIntegral)):
             area = _enclosed_integral(figure, sp.Integer(1), bits, {})
             with working_precision(bits):
-                at = {s: _enclosed_integral(figure, c, bits, {}) / area for s, c in zip(CENTROID, self.coords)}
-        over = {atom: sp.Dummy() for atom in q.atoms(Over)}
+                at = {s: _enclosed_integral(figure, c, bits, {}) / area for s, c in zip(_CENTROID, self.coords)}
+        over = {atom: sp.Dummy() for atom in q.atoms(MeasuredIntegral)}
         values = {over[atom]: _enclosed_integral(figure, atom.args[0], bits, at) for atom in over}
         return ball(q.xreplace(over), bits, {**at, **values})
 
@@ -282,7 +290,7 @@ def _polygon_exact(vertices, f, coords):
 
 
 def _enclosed_integral(figure, f, bits, at):
-    """∫∫ f over a figure of strips (∫ f over an interval) as a ball, *at* the balls of :data:`CENTROID`."""
+    """∫∫ f over a figure of strips (∫ f over an interval) as a ball, *at* the balls of the centroid."""
     if figure.kind == "interval":
         var, lo, hi, breaks = figure.data
         integrand = f

@@ -47,6 +47,7 @@ from flint import arb
 
 from ..geometry.floating import _polygon_moments, draught as float_draught, right_prism
 from .enclosure import Unsupported, ball, exact, sign_change_root, working_precision
+from .measured import Measured, measured_names
 
 __all__ = ["Ambiguous", "BallBody", "BallState", "prism_body", "floating_state", "clipped", "basis", "ball_body",
            "quantity_balls", "closed_ball", "enclosed_values"]
@@ -455,12 +456,11 @@ def quantity_balls(witness, params, extra, body, bits):
     method here (a tilt's wedges, a limit, a sign, a count, a split part); a cylinder's state is
     :func:`symfloat.engine.cylinder_enclosure.cylinder_state`; :class:`Ambiguous` where the enclosure cannot be
     had at *bits*."""
-    from .floating_witness import MEASURED
     if witness.limit is not None or witness.reference is not None or getattr(witness, "series", None) is not None:
         return None
     items = (witness.quantity,) if isinstance(witness.quantity, (str, sp.Expr)) else tuple(witness.quantity)
     names = {q for q in items if isinstance(q, str)}
-    names |= {n for q in items if not isinstance(q, str) for n, s in MEASURED.items() if s in q.free_symbols}
+    names |= {n for q in items if not isinstance(q, str) for n in measured_names(q)}
     if not names <= set(FIELDS) | set(EXTREMES):
         return None
     fine = bits + GUARD_BITS
@@ -500,11 +500,11 @@ def _cylinder(witness, params, extra, body, bits):
 
 def _read_state(witness, st, items, names, params, extra, fine):
     """The witness's quantities *items* (the measured *names* among them) read off the ball state *st*."""
-    from .floating_witness import MEASURED, QUANTITIES
+    from .floating_witness import QUANTITIES
     with working_precision(fine):
         read = {n: (EXTREMES[n](st) if n in EXTREMES else QUANTITIES[n][1](st, None)) for n in names}
         return tuple(read[q] if isinstance(q, str) else
-                     closed_ball(q, params, {**extra, **{MEASURED[n]: v for n, v in read.items()}}, fine)
+                     closed_ball(q, params, {**extra, **{Measured(n): v for n, v in read.items()}}, fine)
                      for q in items)
 
 
@@ -540,7 +540,6 @@ def enclosed_values(witness, case, bits):
     """The floating *witness*'s quantity at *case* as a ball (a tuple of balls for several), its ``roots`` first
     (:func:`_root_balls`); ``None`` where there is no rigorous method (see :func:`quantity_balls`); an
     enclosure that cannot be had at *bits* raises :class:`~symfloat.engine.enclosure.Unsupported` (undecided)."""
-    from .floating_witness import MEASURED
     body = witness.body if witness.body is not None else case.data["body"]
     if not _has_method(witness, body, case):
         return None
@@ -552,7 +551,7 @@ def enclosed_values(witness, case, bits):
         if solved is None:
             return None
         params, extra = solved
-        if not any(isinstance(q, str) or q.free_symbols & set(MEASURED.values()) for q in items):
+        if not any(measured_names(q) for q in items):
             values = tuple(closed_ball(q, params, extra, bits + GUARD_BITS) for q in items)  # the roots alone
         else:
             values = quantity_balls(witness, params, extra, body, bits)
@@ -564,9 +563,8 @@ def enclosed_values(witness, case, bits):
 
 
 def _readable(quantity) -> bool:
-    """Whether a quantity (a name, or an expression in :data:`MEASURED`) is read off a :class:`BallState`."""
-    from .floating_witness import MEASURED
-    names = {quantity} if isinstance(quantity, str) else {n for n, s in MEASURED.items() if s in quantity.free_symbols}
+    """Whether a quantity (a name, or an expression in ``measured(name)``) is read off a :class:`BallState`."""
+    names = measured_names(quantity)
     return names <= set(FIELDS) | set(EXTREMES)
 
 
@@ -575,7 +573,7 @@ def _has_method(witness, body, case) -> bool:
     reference, a box or prism whose dimensions the case fixes or a cylinder whose length it fixes (its radius
     may be a root), each root an expression, an ``At`` or a ``Root`` without nested roots, each quantity read
     off the state (:func:`_readable`)."""
-    from .floating_witness import MEASURED, At, Body, Loaded, Marked, Root
+    from .floating_witness import At, Body, Loaded, Marked, Root
     if witness.limit is not None or witness.reference is not None or getattr(witness, "series", None) is not None:
         return False
     roots = {symbol for symbol, _ in getattr(witness, "roots", ())}
@@ -598,7 +596,7 @@ def _has_method(witness, body, case) -> bool:
         elif not isinstance(root, (sp.Basic, int, Fraction)):
             return False
     items = (witness.quantity,) if isinstance(witness.quantity, (str, sp.Expr)) else tuple(witness.quantity)
-    measured = [q for q in items if isinstance(q, str) or q.free_symbols & set(MEASURED.values())]
+    measured = [q for q in items if measured_names(q)]
     return all(_readable(q) for q in measured)
 
 

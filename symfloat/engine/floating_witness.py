@@ -28,9 +28,10 @@ from flint import arb
 from ..geometry.floating import (FloatingState, _dot, _sub, _unit, body_volume_centroid, box, clip_below, draught,
                                  floating_state, regular_prism, right_prism, submerged, volume_centroid)
 from ..geometry.cylinder import cylinder_state
+from .measured import Measured, measured, measured_names, numbered
 from .witness import MeasuredWitness, Precision
 
-__all__ = ["Body", "FloatingWitness", "QUANTITIES", "TILT_QUANTITIES", "MEASURED", "FLOATING_METHODS",
+__all__ = ["Body", "FloatingWitness", "QUANTITIES", "TILT_QUANTITIES", "FLOATING_METHODS",
            "LIMIT_METHODS"]
 
 FLOATING_METHODS = (Precision(15, 1e-9), Precision(40, 1e-30))
@@ -236,8 +237,6 @@ TILT_QUANTITIES = {
     "emerged wedge moment, vertical": ("its static moment about the old water plane, downwards",
                                        lambda w: w.V4 * (w.t0 - _dot(w.c4, w.r))),
 }
-# a symbol per quantity, for a witness that measures an expression in several of them (V B_x, a ratio)
-MEASURED = {name: sp.Symbol(name) for name in (*QUANTITIES, *TILT_QUANTITIES)}
 
 
 def _neville_at_zero(f, h, levels):
@@ -254,9 +253,9 @@ def _neville_at_zero(f, h, levels):
 class FloatingWitness(MeasuredWitness):
     """A quantity of :data:`QUANTITIES` of ``body`` floating at ``density`` with ``up`` (body frame, SymPy
     expressions in the case's parameters) pointing up.  ``quantity`` may also be a tuple, for targets whose
-    reading lists several numbers, and each item a SymPy expression in the symbols of :data:`MEASURED` and
-    the case's parameters (a product with the immersed volume, a ratio).  Without ``body`` each case names
-    its own (``Case(..., {"body": Body...})``).  With ``reference`` (the up vector of the position the body
+    reading lists several numbers, and each item a SymPy expression in ``measured(name)``
+    (:mod:`symfloat.engine.measured`) and the case's parameters (a product with the immersed volume, a ratio).
+    Without ``body`` each case names its own (``Case(..., {"body": Body...})``).  With ``reference`` (the up vector of the position the body
     is tilted from, at the same density) the quantities of :data:`TILT_QUANTITIES` are measured too.  With
     ``limit = (psi, k)``, ``up`` depends on the tilt ``psi`` and the witness measures the limit of the
     quantity over psi^k as psi -> 0, by extrapolation (:data:`LIMIT_METHODS`)."""
@@ -276,7 +275,7 @@ class FloatingWitness(MeasuredWitness):
             if isinstance(q, str):
                 names.add(q)
             else:                   # its other symbols are the case's parameters (checked when measured)
-                names |= {n for n, s in MEASURED.items() if s in q.free_symbols}
+                names |= measured_names(q)
         for q in names:
             if q not in QUANTITIES and q not in TILT_QUANTITIES:
                 raise ValueError(f"witness {self.name}: unknown quantity {q!r}; known: "
@@ -294,7 +293,7 @@ class FloatingWitness(MeasuredWitness):
         st = _floating_state(body, up, density)
         tilt = []
 
-        def measured(name):
+        def value_of(name):
             if name in QUANTITIES:
                 return QUANTITIES[name][1](st, body)
             if not tilt:
@@ -303,12 +302,12 @@ class FloatingWitness(MeasuredWitness):
 
         def item(q):
             if isinstance(q, str):
-                return measured(q)
+                return value_of(q)
             symbols, f = _compiled(q)
-            unknown = [str(s) for s in symbols if MEASURED.get(str(s)) != s and s not in params]
+            unknown = [str(s) for s in symbols if not isinstance(s, Measured) and s not in params]
             if unknown:
                 raise ValueError(f"witness {self.name}: {unknown} are neither measured nor given by the case")
-            return f(*(_real(number(params[s], params, dps), dps) if s in params else measured(str(s))
+            return f(*(_real(number(params[s], params, dps), dps) if s in params else value_of(str(s))
                        for s in symbols))
         if isinstance(self.quantity, (str, sp.Expr)):
             return (item(self.quantity),)
@@ -369,7 +368,6 @@ BODY_FRAME_QUANTITIES = {
                                lambda st, body: max(_dot(st.u, p) for p in _base_vertices(body, -1)) - st.t),
 }
 QUANTITIES.update(BODY_FRAME_QUANTITIES)
-MEASURED.update({name: sp.Symbol(name) for name in BODY_FRAME_QUANTITIES})
 
 
 def waterplane_moment(n, m):
@@ -378,17 +376,29 @@ def waterplane_moment(n, m):
     waterplane, the waterplane's moment of inertia about that line; with n, m the normal and the direction of
     the line, its product moment in those axes."""
     k = "xyz"
-    return sp.Add(*(n[i] * m[j] * MEASURED[f"waterplane moment, {k[min(i, j)]}{k[max(i, j)]}"]
+    return sp.Add(*(n[i] * m[j] * measured(f"waterplane moment, {k[min(i, j)]}{k[max(i, j)]}")
                     for i in range(3) for j in range(3)))
+
+
+def parts_methods(parts) -> tuple:
+    """The methods a whole measures its *parts* at, where it names none: the parts' own, or, where they differ,
+    those of the part whose float64 method is the least precise (a limit's or a series' beside a plain
+    quantity's: the whole is no more precise than that part)."""
+    return max((part.methods for part in parts), key=lambda methods: methods[0].tolerance)
 
 
 @dataclass(frozen=True)
 class Joined(MeasuredWitness):
     """Several floating witnesses (``parts``, each with its own body) measured at the same case, their values
-    joined into one tuple: for a reading that lists quantities of different bodies."""
+    joined into one tuple: for a reading that lists quantities of different bodies.  ``methods`` defaults to
+    :func:`parts_methods`."""
 
     parts: tuple = ()
-    methods: tuple = FLOATING_METHODS
+    methods: tuple = None
+
+    def __post_init__(self):
+        if self.methods is None:
+            object.__setattr__(self, "methods", parts_methods(self.parts))
 
     def measure(self, case, method):
         out = []
@@ -467,21 +477,20 @@ QUANTITIES.update({
         "normal to v",
         lambda st, body, i=i, j=j: _tensor3(st, i, j)) for i in range(3) for j in range(i, 3)},
 })
-MEASURED.update({name: sp.Symbol(name) for name in QUANTITIES if name not in MEASURED})
 
 
 def potential_slope(up, variable):
     """dE/d(variable) of the potential E = u.(G - B) (height of G above B) along a family of up vectors
-    ``up(variable)``, as an expression in :data:`MEASURED`: -(du/dvariable).(B - G), u = up/|up|; B moves
+    ``up(variable)``, as an expression in ``measured(name)``: -(du/dvariable).(B - G), u = up/|up|; B moves
     perpendicular to u to first order, so only u is differentiated (the righting arm of a tilt)."""
     up = sp.Matrix(up)
     u = up / sp.sqrt(up.dot(up))
-    return -sum(sp.diff(u[k], variable) * MEASURED[f"B - G, {axis}"] for k, axis in enumerate("xyz"))
+    return -sum(sp.diff(u[k], variable) * measured(f"B - G, {axis}") for k, axis in enumerate("xyz"))
 
 
 @dataclass(frozen=True)
 class Root:
-    """A root in ``variable`` of ``quantity`` (a name of :data:`QUANTITIES` or an expression in :data:`MEASURED`),
+    """A root in ``variable`` of ``quantity`` (a name of :data:`QUANTITIES` or an expression in ``measured(name)``),
     the others of the witness's body, up vector and density: the sign changes on ``grid`` (numbers, or SymPy
     expressions in the case's parameters) refined by :func:`symfloat.engine.roots.grid_roots` in float64 and at
     the method's digits; ``which`` is ``"first"``, ``"last"`` or an index into all of them.  ``at`` overrides
@@ -619,7 +628,7 @@ class FloatingRootWitness(FloatingWitness):
             params = self._solve(case.params, body, self.roots, method.dps)
             single = isinstance(self.quantity, (str, sp.Expr))
             items = (self.quantity,) if single else self.quantity
-            if not any(isinstance(q, str) or q.free_symbols & set(MEASURED.values()) for q in items):
+            if not any(measured_names(q) for q in items):
                 # the roots alone: no floating state at the end
                 values = tuple(_real(number(q, params, method.dps), method.dps) for q in items)
                 values = tuple(float(v) if method.dps <= 15 else +v for v in values)
@@ -728,21 +737,27 @@ def _floating_state(body, up, density):
     return floating_state(body, up, density)
 
 
-PART = sp.symbols("part0:8")
-
-
 @dataclass(frozen=True)
 class Combined(MeasuredWitness):
     """Witnesses measured at the same case (``parts``, one value each) and combined: ``values``, SymPy
-    expressions in ``PART[i]`` (the value of part i) and the case's parameters, such as the difference of
-    two roots."""
+    expressions in ``measured("part 1")``, ``measured("part 2")``, ... (the value of each part, in order) and
+    the case's parameters, such as the difference of two roots.  ``methods`` defaults to :func:`parts_methods`."""
 
     parts: tuple = ()
     values: tuple = ()
-    methods: tuple = FLOATING_METHODS
+    methods: tuple = None
+
+    def __post_init__(self):
+        if self.methods is None:
+            object.__setattr__(self, "methods", parts_methods(self.parts))
+        known = {s.name for s in numbered("part", len(self.parts))}
+        for e in self.values:
+            if not measured_names(e) <= known:
+                raise ValueError(f"witness {self.name}: {sorted(measured_names(e) - known)} are not among the "
+                                 f"parts measured: {', '.join(sorted(known))}")
 
     def measure(self, case, method):
-        got = {PART[i]: part.measure(case, method) for i, part in enumerate(self.parts)}
+        got = {p: part.measure(case, method) for p, part in zip(numbered("part", len(self.parts)), self.parts)}
         with mpmath.workdps(max(method.dps, 15)):
             out = []
             for expr in self.values:
@@ -756,12 +771,12 @@ class Combined(MeasuredWitness):
         """The parts' enclosures combined in ball arithmetic, or ``None`` where a part has none."""
         from .enclosure import ball, exact, working_precision
         got = {}
-        for i, part in enumerate(self.parts):
+        for p, part in zip(numbered("part", len(self.parts)), self.parts):
             value = part.enclose(case, bits)
             if value is None or isinstance(value, tuple):
                 return None
             with working_precision(bits):                   # an exact part (a hull's Fraction) rounded at bits
-                got[PART[i]] = value if isinstance(value, arb) else exact(Fraction(value))
+                got[p] = value if isinstance(value, arb) else exact(Fraction(value))
         out = tuple(ball(sp.sympify(e).xreplace(case.params), bits, got) for e in self.values)
         return out[0] if len(out) == 1 else out
 
@@ -837,11 +852,11 @@ __all__ += ["SeriesWitness", "SERIES_METHODS", "series_coefficient"]
 
 def crossing(up, point, direction):
     """The parameter lam at which the water plane meets the body-frame line ``point + lam direction``, as an
-    expression in ``MEASURED["water level"]`` (t) and the up vector: u . (point + lam direction) = t with
+    expression in ``measured("water level")`` (t) and the up vector: u . (point + lam direction) = t with
     u = up/|up| gives lam = (|up| t - up . point)/(up . direction).  From a bottom corner up a side of a heeled
     prism, the immersed length of that side."""
     up, point, direction = (sp.Matrix(v) for v in (up, point, direction))
-    return (sp.sqrt(up.dot(up)) * MEASURED["water level"] - up.dot(point)) / up.dot(direction)
+    return (sp.sqrt(up.dot(up)) * measured("water level") - up.dot(point)) / up.dot(direction)
 
 
 @dataclass(frozen=True)
@@ -899,7 +914,6 @@ SPLIT_QUANTITIES = {
                           lambda st, body: _split_part(st, body, True)[1]),
 }
 QUANTITIES.update(SPLIT_QUANTITIES)
-MEASURED.update({name: sp.Symbol(name) for name in SPLIT_QUANTITIES})
 
 __all__ += ["crossing", "Marked", "SPLIT_QUANTITIES"]
 
@@ -908,7 +922,7 @@ __all__ += ["crossing", "Marked", "SPLIT_QUANTITIES"]
 def potential_curvature(up, variable):
     """d^2E/d(variable)^2 of the potential E = u.(G - B) along a turn of the body about a fixed horizontal axis
     at unit rate (``up(variable)`` a unit vector turning in a plane, so that h = du/dvariable is a unit vector
-    and dh/dvariable = -u), as an expression in :data:`MEASURED`: I_h/V - E, I_h the waterplane's moment about
+    and dh/dvariable = -u), as an expression in ``measured(name)``: I_h/V - E, I_h the waterplane's moment about
     its centroidal line along the axis (normal to h).  dE/dvariable = h.(G - B) (:func:`potential_slope`); B
     moves by the wedges, V dB/dvariable = -I_h h along h, so the slope of the righting arm is the metacentric
     height for that axis, at any tilt (an extremum of the arm is a root of it)."""
@@ -916,7 +930,7 @@ def potential_curvature(up, variable):
     h = sp.diff(up, variable)
     if sp.simplify(up.dot(up) - 1) != 0 or sp.simplify(sp.diff(h, variable) + up) != sp.zeros(3, 1):
         raise ValueError(f"potential_curvature needs a unit up vector turning at unit rate in {variable}, not {tuple(up)}")
-    return waterplane_moment(h, h) / MEASURED["immersed volume"] - MEASURED["G above B"]
+    return waterplane_moment(h, h) / measured("immersed volume") - measured("G above B")
 
 
 _STENCILS = {1: ((-2, 1), (-1, -8), (1, 8), (2, -1)), 2: ((-2, -1), (-1, 16), (0, -30), (1, 16), (2, -1))}

@@ -30,9 +30,10 @@ from flint import arb
 from ..geometry.convex import hull_volume_centroid, section_area, side_faces, side_faces_by_sections
 from ..model.claim import members
 from .enclosure import Unsupported, ball, exact, integral, lower, upper, working_precision
+from .measured import numbered
 from .quadrature import DEFAULT_METHODS, TANH_SINH_15, TANH_SINH_50
 
-__all__ = ["Case", "Outcome", "record_agrees", "record_decision", "undecided_reason", "CERTIFIED", "MeasuredWitness", "Precision", "SectionIntegral", "PlaneSections", "SECTION",
+__all__ = ["Case", "Outcome", "record_agrees", "record_decision", "undecided_reason", "CERTIFIED", "MeasuredWitness", "Precision", "SectionIntegral", "PlaneSections",
            "HullWitness", "SideFaces",
            "ExactHull", "HullSlices", "FaceSections", "ConvergenceOrder"]
 
@@ -512,20 +513,18 @@ class SectionIntegral(MeasuredWitness):
             return moment if self.quantity == "moment" else moment / volume
 
 
-SECTION = sp.symbols("section_area0:16")    # the areas of the planes of a PlaneSections witness, in order
-
-
 def _combined(expr, areas, params):
-    """*expr* (an expression or a tuple of them in :data:`SECTION` and the case's parameters) with the measured
-    *areas* and the exact parameter values, in mpmath at the working precision."""
+    """*expr* (an expression or a tuple of them in ``measured("section 1")``, ... and the case's parameters)
+    with the measured *areas* and the exact parameter values, in mpmath at the working precision."""
     items = expr if isinstance(expr, tuple) else (expr,)
     out = []
     for item in items:
         e = sp.sympify(item).xreplace(params)
         args = sorted(e.free_symbols, key=lambda q: q.name)
-        if any(q not in SECTION[:len(areas)] for q in args):
+        sections = numbered("section", len(areas))
+        if any(q not in sections for q in args):
             raise ValueError(f"{item} names {args}, not only the section areas and the case's parameters")
-        value = sp.lambdify(args, e, "mpmath")(*(areas[SECTION.index(q)] for q in args))
+        value = sp.lambdify(args, e, "mpmath")(*(areas[sections.index(q)] for q in args))
         out.append(value if isinstance(value, mpmath.mpf) else mpmath.mpf(sp.Float(sp.N(value, mpmath.mp.dps + 10),
                                                                                      mpmath.mp.dps + 10)._mpf_))
     return tuple(out) if isinstance(expr, tuple) else out[0]
@@ -538,8 +537,8 @@ class PlaneSections(MeasuredWitness):
     the chord coordinate ``across``) integrated over ``chord``, for each plane of
     ``planes``;
     ``combine`` turns the areas into the quantity the targets state: an expression (or a tuple) in
-    ``SECTION[i]``, the area of the i-th plane, and the case's parameters (``sp.sqrt(SECTION[0] / pi)``, a
-    radius).
+    ``measured("section 1")``, ``measured("section 2")``, ... (the area of each plane, in order) and the case's
+    parameters (``sp.sqrt(measured("section 1") / pi)``, a radius).
     Witnesses the value-free displays (radii, section areas, their ratios)."""
 
     width: sp.Expr = None
@@ -568,7 +567,8 @@ class PlaneSections(MeasuredWitness):
             lo, hi = (sp.sympify(e).xreplace(at) for e in self.chord)
             areas.append(integral(self.width.xreplace(at), self.across, lo, hi, bits))
         items = self.combine if isinstance(self.combine, tuple) else (self.combine,)
-        values = tuple(ball(sp.sympify(item).xreplace(case.params), bits, dict(zip(SECTION, areas)))
+        sections = dict(zip(numbered("section", len(areas)), areas))
+        values = tuple(ball(sp.sympify(item).xreplace(case.params), bits, sections)
                        for item in items)
         return values if isinstance(self.combine, tuple) else values[0]
 

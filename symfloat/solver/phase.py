@@ -734,8 +734,8 @@ def _why_not_found(k, seen, thresholds) -> dict:
     ``seen`` is ``stable on neither side`` or ``stable on both sides`` (no change of the stable set
     there: the print and the solver disagree), ``change not located`` (the solver's stable set does
     change there, but its bisection found no threshold: a failure of the machinery) or ``not looked at``."""
-    near = min((t for t in thresholds if t.label == k["label"]), key=lambda t: abs(t.density - k["value"]),
-               default=None)
+    near = min((t for t in thresholds if t.label == k["label"]),          # of two as near (to 12 digits), the lower
+               key=lambda t: (round(abs(t.density - k["value"]), 12), t.density), default=None)
     nearest = (f"; the nearest change of this position found is at {near.density:.13g} ({near.change})"
                if near is not None else "; the solver finds no change of this position")
     if seen is None:
