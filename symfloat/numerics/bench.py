@@ -246,12 +246,20 @@ def _vector(value):
 
 def _rel_error(value, ref):
     """The proven error of *value* against the reference balls *ref*: ``|mid - mid'| + rad + rad'``,
-    relative to the reference's size (absolute where it is 0)."""
+    relative to the reference's size, the least magnitude of its largest ball (absolute where every ball
+    holds 0 or is below 1e-80: a quantity that is 0, such as a product moment at an equilibrium)."""
     with mpmath.workdps(REFERENCE_DPS + 20):
         v = _vector(value)
-        scale = max(abs(m) for m, _ in ref)
         err = max(abs(a - m) + ra + rm for (a, ra), (m, rm) in zip(v, ref))
-        return float(err / scale if scale > mpmath.mpf(10) ** (20 - REFERENCE_DPS) else err)
+        scale = _size(ref)
+        return float(err / scale if scale else err)
+
+
+def _size(ref):
+    """The least magnitude of the largest of the reference balls *ref*, 0 where it holds 0 or is below 1e-80."""
+    with mpmath.workdps(REFERENCE_DPS + 20):
+        scale = max(abs(m) - rm for m, rm in ref)
+        return scale if scale > mpmath.mpf(10) ** (20 - REFERENCE_DPS) else 0
 
 
 def _valid_reading(p):
@@ -481,7 +489,7 @@ def self_check(did, w, values, reference):
                                       f"{REFERENCE_BITS} bits at {case.label or case.params}")
             elif name in tolerance:
                 with mpmath.workdps(REFERENCE_DPS + 20):
-                    scale = max(abs(m) for m, _ in balls)
+                    scale = _size(balls)
                     resolution = max(rm for _, rm in balls) / scale if scale else max(rm for _, rm in balls)
                 err = _rel_error(v, balls)
                 if err > tolerance[name] + 2 * float(resolution):
