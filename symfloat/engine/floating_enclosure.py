@@ -50,7 +50,7 @@ from .enclosure import Unsupported, ball, exact, sign_change_root, working_preci
 from .measured import Measured, measured_names
 
 __all__ = ["Ambiguous", "BallBody", "BallState", "prism_body", "floating_state", "clipped", "basis", "ball_body",
-           "quantity_balls", "closed_ball", "enclosed_values"]
+           "quantity_balls", "closed_ball", "enclosed_values", "missing_method"]
 
 GUARD_BITS = 32        # the state is computed with these bits more than its draught's bracket is wide
 NEWTON_STEPS = 12      # from float64 (about 50 bits) to 1024 bits takes 5 quadratic steps; the rest is margin
@@ -541,7 +541,7 @@ def enclosed_values(witness, case, bits):
     (:func:`_root_balls`); ``None`` where there is no rigorous method (see :func:`quantity_balls`); an
     enclosure that cannot be had at *bits* raises :class:`~symfloat.engine.enclosure.Unsupported` (undecided)."""
     body = witness.body if witness.body is not None else case.data["body"]
-    if not _has_method(witness, body, case):
+    if missing_method(witness, body, case):
         return None
     single = isinstance(witness.quantity, (str, sp.Expr))
     items = (witness.quantity,) if single else tuple(witness.quantity)
@@ -562,42 +562,59 @@ def enclosed_values(witness, case, bits):
     return values[0] if single else values
 
 
-def _readable(quantity) -> bool:
-    """Whether a quantity (a name, or an expression in ``measured(name)``) is read off a :class:`BallState`."""
-    names = measured_names(quantity)
-    return names <= set(FIELDS) | set(EXTREMES)
+def _unreadable(quantity) -> str:
+    """Why a quantity (a name, or an expression in ``measured(name)``) is not read off a :class:`BallState`, in
+    words; ``""`` where it is."""
+    from .floating_witness import SPLIT_QUANTITIES, TILT_QUANTITIES
+    missing = measured_names(quantity) - set(FIELDS) - set(EXTREMES)
+    if not missing:
+        return ""
+    if missing & set(TILT_QUANTITIES):
+        return "a tilt's wedges from a reference position"
+    if missing & set(SPLIT_QUANTITIES):
+        return "the split parts of a marked body"
+    if "waterplane corners" in missing:
+        return "a count of the waterplane's corners in float points"
+    return f"a quantity read off no ball state ({', '.join(sorted(missing))})"
 
 
-def _has_method(witness, body, case) -> bool:
-    """Whether the witness has a ball method at *case*, judged before any work: no limit, series or tilt from a
-    reference, a box or prism whose dimensions the case fixes or a cylinder whose length it fixes (its radius
-    may be a root), each root an expression, an ``At`` or a ``Root`` without nested roots, each quantity read
-    off the state (:func:`_readable`)."""
+def missing_method(witness, body, case) -> str:
+    """Why the floating *witness* has no ball method at *case*, in words, judged before any work; ``""`` where it
+    has one: no limit, series or tilt from a reference, a box or prism whose dimensions the case fixes or a
+    cylinder whose length it fixes (its radius may be a root), each root an expression, an ``At`` or a ``Root``
+    without nested roots, each quantity read off the state (:func:`_unreadable`).  (A dimension that is not
+    rational at the case leaves the body without exact vertices: :func:`ball_body` says so by ``None``.)"""
     from .floating_witness import At, Body, Loaded, Marked, Root
-    if witness.limit is not None or witness.reference is not None or getattr(witness, "series", None) is not None:
-        return False
+    if witness.limit is not None:
+        return "a limit in the tilt (Neville extrapolation: no bound)"
+    if getattr(witness, "series", None) is not None:
+        return "a series coefficient in the tilt (interpolated: no bound)"
+    if witness.reference is not None:
+        return "a tilt's wedges from a reference position"
     roots = {symbol for symbol, _ in getattr(witness, "roots", ())}
     if type(body) is Body and body.kind == "cylinder":
         if getattr(witness, "through", None) is not None:
-            return False                                        # a cut's share of a cylinder: not ported
+            return "a cut's share of a cylinder"
         dims = (body.dims[1],)
     elif type(body) not in (Body, Loaded, Marked) or body.kind not in ("box", "prism"):
-        return False
+        return {"cylinder": "a cylinder with a given centre of gravity or split parts",
+                "regular": "a regular prism (irrational vertices)"}.get(body.kind, f"a body of kind {body.kind}")
     else:
         dims = body.dims if body.kind == "box" else (*(c for p in body.dims[0] for c in p), body.dims[1])
     if any(sp.sympify(x).free_symbols - (set(case.params) - roots) for x in dims):
-        return False                                            # a dimension a root sets: no exact vertices
+        return "a dimension that a root sets (no exact vertices)"
     for _, root in getattr(witness, "roots", ()):
         if isinstance(root, (Root, At)):
-            if (isinstance(root, Root) and root.roots) or not _readable(root.quantity):
-                return False
-            if isinstance(root, Root) and not all(_readable(g) for g in root.guard):
-                return False
+            if isinstance(root, Root) and root.roots:
+                return "a nested root search"
+            for item in (root.quantity, *(root.guard if isinstance(root, Root) else ())):
+                if _unreadable(item):
+                    return _unreadable(item)
         elif not isinstance(root, (sp.Basic, int, Fraction)):
-            return False
+            return "a derivative by finite differences (no bound)"
     items = (witness.quantity,) if isinstance(witness.quantity, (str, sp.Expr)) else tuple(witness.quantity)
     measured = [q for q in items if measured_names(q)]
-    return all(_readable(q) for q in measured)
+    return next((_unreadable(q) for q in measured if _unreadable(q)), "")
 
 
 ROOT_BRACKETS = (2.0 ** -30, 2.0 ** -20)   # the float64 root's brackets, relative to 1 + |root|, tried in turn

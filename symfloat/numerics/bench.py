@@ -21,16 +21,24 @@ method that applies to its kind:
   declares (their precisions and steps are tied to its limits and series, so no others apply), the
   highest-precision one the reference where no exact reference exists.
 
-Every witness kind with a certified method (``enclose``, issue 29) is also measured in Arb ball arithmetic
-at 64 and 128 bits (:class:`Enclosure`).
+Every witness with a certified method (``enclose``, issue 29) is enclosed in Arb ball arithmetic at
+:data:`REFERENCE_BITS` bits; where every case has a finite enclosure, that enclosure is the reference of all
+its targets, and the witness is also measured in Arb at 64 and 128 bits (:class:`Enclosure`).  A witness of
+such a kind without an enclosure (a limit, a series, a cylinder, a regular prism, a tilt's wedges, split parts,
+a nested root search, finite differences: :func:`no_enclosure`) is recorded with the reason in words
+(:attr:`Bench.unenclosed`) and has no Arb rows.
 
-The reference of a targeted formula is the exact value of its valid reading
-(the reading as printed when no erratum is declared, the corrected reading
-otherwise) at the case's parameters; where that reading is no closed number,
-the witness's Arb enclosure at :data:`REFERENCE_BITS` bits (a declared floating-body witness without one:
-its highest precision).  Each measurement records the relative error against the reference (worst over
-the cases) -- a proven bound, ``|value - mid| + rad`` of the reference's ball and the value's own, where
-the reference is exact or an enclosure -- and the wall time of all cases (median of repeats).
+The reference of a targeted formula is that enclosure; without one, the exact value of the formula's valid
+reading (the reading as printed when no erratum is declared, the corrected reading otherwise) at the case's
+parameters; where that reading is no closed number, the witness's most precise method (a measured reference,
+not a proven one).  Each measurement records the relative error against the reference (worst over the
+cases) -- a proven bound, ``|value - mid| + rad`` of the reference's ball and the value's own, where the
+reference is an enclosure or exact (``proven``) -- and the wall time of all cases (median of repeats).
+
+**Self-check** (:func:`self_check`, a failure is :class:`~symfloat.errors.CheckFailed`): every Arb ball of a
+witness meets its reference enclosure (both contain the quantity), and every method the witness declares is
+within its own tolerance of the enclosure, plus twice the enclosure's relative radius: an enclosure that
+misses the value fails it.
 """
 from __future__ import annotations
 
@@ -45,21 +53,26 @@ from flint import arb
 
 from ..engine.check import _resolved, _substitute
 from ..engine.construction_witness import ConstructionWitness
+from ..engine.enclosure import Unsupported, exact, working_precision
 from ..engine.figure_witness import CurveRoot, FigureWitness
+from ..engine.floating_enclosure import ball_body, missing_method
 from ..engine.floating_witness import Combined, FloatingWitness, Joined
 from ..engine.quadrature import Composite, GaussLegendre64, GaussLegendreMP, TanhSinh
-from ..engine.witness import (ConvergenceOrder, ExactHull, HullSlices, HullWitness, MeasuredWitness, PlaneSections,
+from ..engine.witness import (CERTIFIED, ConvergenceOrder, ExactHull, HullSlices, HullWitness, MeasuredWitness, PlaneSections,
                               Precision, SectionIntegral, SideFaces)
+from ..errors import CheckFailed
 from ..model.claim import members
 from ..model.relation import is_relation
 from ..registry import load, select
 
 __all__ = ["Measurement", "Bench", "methods_for", "newton_cotes", "run_bench", "DIGITS", "REFERENCE_DPS",
-           "FAMILIES", "DECLARED", "family_of", "Enclosure", "REFERENCE_BITS", "certified"]
+           "FAMILIES", "DECLARED", "family_of", "Enclosure", "REFERENCE_BITS", "certified", "no_enclosure",
+           "self_check", "UNBOUNDED"]
 
 DIGITS = (15, 30, 50, 100)
 REFERENCE_DPS = 100
-REFERENCE_BITS = 256          # the Arb enclosure a formula without a closed exact reading is measured against
+REFERENCE_BITS = 256          # the Arb enclosure every method of a certified witness is measured against
+UNBOUNDED = float("inf")      # the error of an Arb run whose ball is not finite (undecided at its bits)
 ARB_BITS = (64, 128)
 FLOAT64_ORDERS = (2, 3, 4, 6, 8, 12, 16)
 PANELS = (2, 4, 8, 16, 32, 64)
@@ -81,7 +94,8 @@ DECLARED = (FloatingWitness, Joined, Combined, FigureWitness, CurveRoot)   # mea
 class Measurement:
     """One witness measured with one method: relative errors per targeted
     formula (worst over the cases; absolute where the reference is 0; ``None``
-    when the method failed) and the median wall time of all cases."""
+    when the method failed; :data:`UNBOUNDED` for an Arb ball that is not finite) and the median wall time
+    of all cases; ``proven`` when the reference is an enclosure or exact (the error a bound)."""
 
     derivation: str
     source: str
@@ -91,6 +105,7 @@ class Measurement:
     seconds: float
     errors: dict
     note: str = ""
+    proven: bool = True
 
 
 @dataclass
@@ -98,8 +113,9 @@ class Bench:
     """All measurements, with the reference kind of every formula."""
 
     measurements: list = field(default_factory=list)
-    references: dict = field(default_factory=dict)   # "derivation/formula" -> "exact" | "100 digits"
+    references: dict = field(default_factory=dict)   # "derivation/formula" -> "Arb, 256 bits" | "exact" | ...
     locators: dict = field(default_factory=dict)     # "derivation/formula" -> source locator
+    unenclosed: dict = field(default_factory=dict)   # "derivation/witness" -> (family, why it has no enclosure)
 
 
 @dataclass(frozen=True)
@@ -132,7 +148,8 @@ def newton_cotes(d) -> bool:
 
 
 def methods_for(w, d, digits=DIGITS, orders=FLOAT64_ORDERS, panels=PANELS) -> tuple:
-    """The methods a witness is measured with (see the module docstring), Arb's last where it applies."""
+    """The methods a witness's kind is measured with (see the module docstring), Arb's last where the kind has a
+    certified method (:func:`bench_derivation` leaves them out for a witness without an enclosure)."""
     return _methods(w, d, digits, orders, panels) + (tuple(Enclosure(b) for b in ARB_BITS) if certified(w) else ())
 
 
@@ -168,6 +185,42 @@ def _exact_mpf(x: arb):
     return mpmath.mpf((int(man), int(exp)))
 
 
+def no_enclosure(w, case) -> str:
+    """Why the certified witness *w* has no enclosure at *case*, in words (judged from its declaration): a
+    floating witness by :func:`~symfloat.engine.floating_enclosure.missing_method`, a joined or combined one by
+    its first part without one."""
+    return _missing(w, case) or "no rigorous method at this case"
+
+
+def _missing(w, case) -> str:
+    if isinstance(w, (Combined, Joined)):
+        if not all(certified(p) for p in w.parts):
+            return "a part of a kind without a rigorous method"
+        found = next((r for r in (_missing(p, case) for p in w.parts) if r), "")
+        return found or ("a part with several values" if isinstance(w, Combined) else "")
+    if isinstance(w, FloatingWitness):
+        body = w.body if w.body is not None else case.data["body"]
+        return missing_method(w, body, case) or (
+            "an irrational dimension (no exact vertices)" if ball_body(body, case.params) is None else "")
+    return ""
+
+
+def _enclosures(w, bits):
+    """``(values, "")``: the enclosure of every case of *w* at *bits*, each finite; ``(None, why)`` otherwise."""
+    try:
+        values = [w.enclose(case, bits) for case in w.instances]
+    except Unsupported as exc:
+        return None, f"undecided at {bits} bits ({exc})"
+    except (ValueError, ArithmeticError) as exc:
+        return None, f"no enclosure at {bits} bits ({type(exc).__name__}: {exc})"
+    missing = next((case for case, v in zip(w.instances, values) if v is None), None)
+    if missing is not None:
+        return None, no_enclosure(w, missing)
+    if not all(map(_finite, values)):
+        return None, f"no finite enclosure at {bits} bits"
+    return values, ""
+
+
 def _ball_pair(v):
     """A measured value as ``(mid, rad)``: a ball's midpoint and radius, a number with radius 0."""
     if isinstance(v, arb):
@@ -193,12 +246,20 @@ def _vector(value):
 
 def _rel_error(value, ref):
     """The proven error of *value* against the reference balls *ref*: ``|mid - mid'| + rad + rad'``,
-    relative to the reference's size (absolute where it is 0)."""
+    relative to the reference's size, the least magnitude of its largest ball (absolute where every ball
+    holds 0 or is below 1e-80: a quantity that is 0, such as a product moment at an equilibrium)."""
     with mpmath.workdps(REFERENCE_DPS + 20):
         v = _vector(value)
-        scale = max(abs(m) for m, _ in ref)
         err = max(abs(a - m) + ra + rm for (a, ra), (m, rm) in zip(v, ref))
-        return float(err / scale if scale > mpmath.mpf(10) ** (20 - REFERENCE_DPS) else err)
+        scale = _size(ref)
+        return float(err / scale if scale else err)
+
+
+def _size(ref):
+    """The least magnitude of the largest of the reference balls *ref*, 0 where it holds 0 or is below 1e-80."""
+    with mpmath.workdps(REFERENCE_DPS + 20):
+        scale = max(abs(m) - rm for m, rm in ref)
+        return scale if scale > mpmath.mpf(10) ** (20 - REFERENCE_DPS) else 0
 
 
 def _valid_reading(p):
@@ -296,7 +357,15 @@ def _runner(w, case):
         inner = _plane_sections(w, case)
     else:
         inner = lambda method: w.measure(case, method)  # noqa: E731
-    return lambda method: w.enclose(case, method.bits) if isinstance(method, Enclosure) else inner(method)
+    return lambda method: _ball_run(w, case, method.bits) if isinstance(method, Enclosure) else inner(method)
+
+
+def _ball_run(w, case, bits):
+    """The enclosure of *case* at *bits*; a not finite ball where it is undecided there."""
+    try:
+        return w.enclose(case, bits)
+    except (ValueError, ArithmeticError):          # Unsupported among them: undecided at these bits
+        return arb.nan()
 
 
 def _measure(runners, method, repeats):
@@ -320,8 +389,7 @@ def _witness_targets(d, w, results):
 
 
 def _reference_run(w):
-    if certified(w):
-        return Enclosure(REFERENCE_BITS)
+    """The method a witness without an enclosure is measured against where no reading is exact."""
     if isinstance(w, ConstructionWitness):
         return Precision(REFERENCE_DPS, 0)
     if isinstance(w, (HullWitness, SideFaces)):
@@ -333,7 +401,7 @@ def _reference_run(w):
 
 def bench_derivation(d, bench: Bench, digits=DIGITS, orders=FLOAT64_ORDERS, panels=PANELS, repeats=3,
                      progress=None):
-    """Measure every witness of derivation *d* into *bench*."""
+    """Measure every witness of derivation *d* into *bench* (see the module)."""
     results = _results(d)
     for w in d.witnesses:
         family = family_of(w)
@@ -342,8 +410,12 @@ def bench_derivation(d, bench: Bench, digits=DIGITS, orders=FLOAT64_ORDERS, pane
         targets = _witness_targets(d, w, results)
         if not targets:
             continue
-        methods = list(methods_for(w, d, digits, orders, panels))
-        missing = any(r is None for refs in targets.values() for r in refs)
+        reference, why = _enclosures(w, REFERENCE_BITS) if certified(w) else (None, "")
+        if why:
+            bench.unenclosed[f"{d.id}/{w.name}"] = (family, why)
+        methods = list(_methods(w, d, digits, orders, panels))
+        methods += [Enclosure(b) for b in ARB_BITS] if reference is not None else []
+        missing = reference is None and any(r is None for refs in targets.values() for r in refs)
         ref_method = _reference_run(w)
         runs, runners = {}, [_runner(w, case) for case in w.instances]
         for m in methods + ([ref_method] if missing and ref_method.name not in map(_method_name, methods) else []):
@@ -351,28 +423,78 @@ def bench_derivation(d, bench: Bench, digits=DIGITS, orders=FLOAT64_ORDERS, pane
                 runs[_method_name(m)] = _measure(runners, m, repeats) + ("",)
             except (ZeroDivisionError, ValueError, ArithmeticError, mpmath.libmp.NoConvergence) as exc:
                 runs[_method_name(m)] = (None, 0.0, f"{type(exc).__name__}: {exc}"[:80])
-        if missing:
-            ref_values = runs[ref_method.name][0]
+        if reference is not None:
+            balls = [_vector(v) for v in reference]
+            for name in targets:
+                _reference(bench, f"{d.id}/{name}", f"Arb, {REFERENCE_BITS} bits")
+                targets[name] = balls
+        elif missing:
+            ref_values = runs[_method_name(ref_method)][0]
             for name, refs in targets.items():
-                kind = ("exact" if all(r is not None for r in refs) else f"Arb, {ref_method.bits} bits"
-                        if isinstance(ref_method, Enclosure) else f"{getattr(ref_method, 'dps', REFERENCE_DPS)} digits")
-                bench.references[f"{d.id}/{name}"] = kind
+                _reference(bench, f"{d.id}/{name}", "exact" if all(r is not None for r in refs)
+                           else f"{getattr(ref_method, 'dps', REFERENCE_DPS)} digits")
                 targets[name] = [r if r is not None else _vector(v) for r, v in zip(refs, ref_values)]
         else:
             for name in targets:
-                bench.references[f"{d.id}/{name}"] = "exact"
+                _reference(bench, f"{d.id}/{name}", "exact")
         for name in targets:
             bench.locators[f"{d.id}/{name}"] = next(p.locator for p in d.printed if p.name == name)
+        proven = not missing            # against an enclosure or exact readings: the errors are bounds
+        if reference is not None:
+            self_check(d.id, w, {_method_name(m): runs[_method_name(m)][0] for m in methods}, reference)
         for m in methods:
             values, seconds, note = runs[_method_name(m)]
             errors = {}
             for name, refs in targets.items():
-                errors[name] = (None if values is None or not all(map(_finite, values))
+                errors[name] = (None if values is None else UNBOUNDED if not all(map(_finite, values))
                                 else max(_rel_error(v, r) for v, r in zip(values, refs)))
-            bench.measurements.append(Measurement(d.id, d.source, family, w.name, _method_name(m),
-                                                  seconds, errors, note))
+            if isinstance(m, Enclosure) and any(e == UNBOUNDED for e in errors.values()):
+                note = f"no finite ball at {m.bits} bits"
+            bench.measurements.append(Measurement(d.id, d.source, family, w.name, _method_name(m), seconds, errors,
+                                                  note, proven))
         if progress:
             progress(f"{d.id}: {w.name} ({len(methods)} methods)")
+
+
+def _parts(value):
+    return tuple(value) if isinstance(value, (tuple, list)) else (value,)
+
+
+def _meet(a, b) -> bool:
+    """Whether two enclosures of one number (balls, or exact Fractions) have a point in common."""
+    with working_precision(4 * REFERENCE_BITS):
+        a, b = (x if isinstance(x, arb) else exact(Fraction(x)) for x in (a, b))
+        return a.overlaps(b)
+
+
+def _reference(bench, key, kind):
+    """Add *kind* to the references of the formula *key* (several witnesses may target it)."""
+    kinds = bench.references[key].split(" and ") if key in bench.references else []
+    bench.references[key] = " and ".join(sorted({*kinds, kind}))
+
+
+def self_check(did, w, values, reference):
+    """Raise :class:`~symfloat.errors.CheckFailed` unless every Arb ball of *values* (method name -> the values
+    of the cases) meets the *reference* enclosure of its case, and every method *w* declares is within its
+    tolerance (relative to the largest component) plus twice the reference's relative radius of it."""
+    tolerance = {m.name: m.tolerance for m in getattr(w, "methods", ()) if getattr(m, "tolerance", 0) > 0}
+    for name, vals in values.items():
+        if vals is None or not all(map(_finite, vals)):
+            continue                    # a method that failed, an undecided ball: measured, nothing to check
+        for case, v, ref in zip(w.instances, vals, reference):
+            balls = _vector(ref)
+            if name.startswith(CERTIFIED):
+                if not all(_meet(a, b) for a, b in zip(_parts(v), _parts(ref))):
+                    raise CheckFailed(f"{did}: {w.name}: the enclosure by {name} misses the one at "
+                                      f"{REFERENCE_BITS} bits at {case.label or case.params}")
+            elif name in tolerance:
+                with mpmath.workdps(REFERENCE_DPS + 20):
+                    scale = _size(balls)
+                    resolution = max(rm for _, rm in balls) / scale if scale else max(rm for _, rm in balls)
+                err = _rel_error(v, balls)
+                if err > tolerance[name] + 2 * float(resolution):
+                    raise CheckFailed(f"{did}: {w.name}: {name} is {err:.2e} from the enclosure at "
+                                      f"{case.label or case.params}, beyond its tolerance {tolerance[name]:g}")
 
 
 def run_bench(selector=None, *, quick=False, progress=None) -> Bench:

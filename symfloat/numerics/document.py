@@ -23,8 +23,8 @@ from .conditioning import CASES, conditioning_markdown, conditioning_rows
 from .discriminant import table_markdown as discriminant_markdown
 from .forms import CATASTROPHIC, STABLE_TOLERANCE, evaluate, forms, scan
 from .orders import HEELS, PANELS, convergence_witnesses, gauss_legendre_degrees, kink_study, registry_orders
-from .report import (THRESHOLDS, cheapest, family_figure, fingerprint, fmt_err, fmt_time, method_rows,
-                     write_png_if_changed)
+from .report import (THRESHOLDS, cheapest, family_figure, fingerprint, fmt_err, fmt_proven, fmt_time,
+                     method_rows, write_png_if_changed)
 
 __all__ = ["generate", "quick_selection"]
 
@@ -63,45 +63,70 @@ def _table(head, rows):
     return "\n".join(out)
 
 
+def _unenclosed_words(bench, family, ms) -> list:
+    """The paragraph of a family that names its witnesses without an Arb enclosure and why, in words."""
+    witnesses = {f"{m.derivation}/{m.witness}" for m in ms}
+    missing = {k: why for k, (f, why) in bench.unenclosed.items() if f == family and k in witnesses}
+    if not missing:
+        return [f"Arb encloses all {len(witnesses)} witnesses of this family.", ""]
+    by_reason = {}
+    for key, why in sorted(missing.items()):
+        by_reason.setdefault(why, []).append(key)
+    reasons = "; ".join(f"{why}: {', '.join(keys)}" for why, keys in by_reason.items())
+    return [f"Arb encloses {len(witnesses) - len(missing)} of the {len(witnesses)} witnesses of this family. "
+            f"The other {len(missing)} have no rigorous method, so no Arb rows, and their methods are measured "
+            f"against the exact reading (else their most precise method) — {reasons}.", ""]
+
+
+def _rows(ms):
+    return [(r[0], r[1], fmt_err(r[2]), fmt_err(r[3]), fmt_time(r[4]), fmt_proven(r[5], r[1]))
+            for r in method_rows(ms)]
+
+
 def _section_bench(bench, figures):
-    n_exact = sum(v == "exact" for v in bench.references.values())
+    kinds = list(bench.references.values())
+    n_ball, n_exact = sum(v.startswith("Arb") for v in kinds), kinds.count("exact")
     lines = ["## 1. Error against run time", "",
              "Every witness of every derivation is re-run with every method that applies to it: mpmath tanh-sinh "
              "and Gauss–Legendre at 15, 30, 50 and 100 digits and fixed-order Gauss–Legendre in float64 for "
              "section integrals and plane sections (plus composite Simpson and trapezoid in float64 where the "
              "source's own method is Simpson's rule); exact hull faces and Gauss–Legendre slices for hulls; the "
-             "witness's own computation at 15 (float64), 30 and 50 digits for straightedge constructions; the methods a declared witness of a floating body or a plane figure "
-             "names (float64 and 40 or 50 digits, tied to its limit and series steps); and, for every witness kind "
-             "with a certified method, Arb ball arithmetic (FLINT) at 64 and 128 bits, the witness's own "
-             "enclosure. The error is relative and proven: the distance of the value from the exact value of the "
-             "formula's valid reading (the print, or its correction where an erratum is declared) at the case's "
-             "parameters, else from the midpoint of the witness's Arb enclosure at 256 bits plus that ball's "
-             "radius (and, for an Arb value, its own radius), so that the true error is at most the figure shown; "
-             "a declared floating-body witness, which has no enclosure yet, against its most precise measurement "
-             "(which then shows error 0): "
-             f"{n_exact} formulas have an exact reference, {len(bench.references) - n_exact} an enclosure or a "
-             "measured one (the reference column of the tables below says which). Times are "
-             "wall times of all cases of a witness, median of repeats (they vary from run to run, and so may "
-             "the choice of the cheapest method; nothing "
-             "else does). A worst error that does not fall with the precision is the witness's own approximation "
-             "(the cylinder as a polygon of many sides, a limit by Richardson extrapolation) or the printed "
-             "number's own rounding (Scheeffer's worked examples print four or five digits; the verdict allows "
-             "for them by the printed digits), not the method's rounding.", ""]
+             "witness's own computation at 15 (float64), 30 and 50 digits for straightedge constructions; the "
+             "methods a declared witness of a floating body or a plane figure names (float64 and 40 or 50 digits, "
+             "tied to its limit and series steps). Every witness whose kind has a certified method is enclosed in "
+             "Arb ball arithmetic (FLINT) at 256 bits, its own rigorous enclosure of the quantity; where every case "
+             "has a finite enclosure, that ball is the reference of every method of the witness, and Arb at 64 and "
+             "128 bits is a row of its own (its time, and as error its proven width: its radius plus the distance "
+             "of its midpoint from the 256-bit ball's, the ball's radius included; 'no bound' where the ball is not "
+             "finite at those bits). The error of every other method is relative and proven, |value − mid| + rad "
+             "against that ball, so that the true error is at most the figure shown. A witness without an "
+             "enclosure is measured against the exact value of its formula's valid reading (the print, or its "
+             "correction where an erratum is declared) at the case's parameters, also a proven error, else against "
+             "its most precise method, a measured error (the column 'error proven' counts the witnesses whose "
+             "errors are proven bounds); each family names its witnesses without an enclosure and why, in words. "
+             f"{n_ball} formulas are measured against an enclosure, {n_exact} against an exact reading and "
+             f"{len(kinds) - n_ball - n_exact} against a measured reference (the reference column of the tables "
+             "below says which). Self-check: every Arb ball of a witness meets its 256-bit enclosure, and every "
+             "method the witness declares lies within its own tolerance of it; a miss stops the benchmark with an "
+             "error. Times are wall times of all cases of a witness, median of repeats (they vary from run to run, "
+             "and so may the choice of the cheapest method; nothing else does). A worst error that does not fall "
+             "with the precision is the witness's own approximation (the cylinder as a polygon of many sides, a "
+             "limit by Richardson extrapolation) or, against an exact reading, the printed number's own rounding "
+             "(Scheeffer's worked examples print four or five digits; the verdict allows for them by the printed "
+             "digits), not the method's rounding.", ""]
+    head = ("method", "witnesses", "worst rel. error", "median rel. error", "median time", "error proven")
     for family in dict.fromkeys(FAMILIES.values()):
         ms = [m for m in bench.measurements if m.family == family]
         if not ms:
             continue
         name = f"numerics-{_slug(family)}.png"
         figures[name] = family_figure(family, ms)
-        lines += [f"### {family}", "", f"![{family}](figures/{name})", "",
-                  _table(("method", "witnesses", "worst rel. error", "median rel. error", "median time"),
-                         [(r[0], r[1], fmt_err(r[2]), fmt_err(r[3]), fmt_time(r[4])) for r in method_rows(ms)]), ""]
+        lines += [f"### {family}", "", f"![{family}](figures/{name})", "", _table(head, _rows(ms)), ""]
+        lines += _unenclosed_words(bench, family, ms)
     lines += ["### Per source", ""]
     for source in dict.fromkeys(m.source for m in bench.measurements):
         ms = [m for m in bench.measurements if m.source == source]
-        lines += [f"#### {source}", "",
-                  _table(("method", "witnesses", "worst rel. error", "median rel. error", "median time"),
-                         [(r[0], r[1], fmt_err(r[2]), fmt_err(r[3]), fmt_time(r[4])) for r in method_rows(ms)]), ""]
+        lines += [f"#### {source}", "", _table(head, _rows(ms)), ""]
     lines += ["### Cheapest method per formula", "",
               "The fastest measurement (method and witness) whose relative error is within 1e-12 and 1e-30 "
               "(methods compared by their median time over the witness family; among those within a factor 2 "
@@ -250,6 +275,7 @@ def generate(docs=Path("docs"), *, quick=False, progress=lambda msg: None) -> li
         bench.measurements += [m for m in part.measurements if (m.derivation, m.witness) not in seen]
         bench.references.update(part.references)
         bench.locators.update(part.locators)
+        bench.unenclosed.update(part.unenclosed)
     figures = {}
     lines = ["# Numerics of the witnesses", "",
              "Generated by `symfloat bench`" + (" --quick" if quick else "") + ". How fast each "

@@ -22,7 +22,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from PIL import Image  # noqa: E402
 
 __all__ = ["pareto", "method_rows", "cheapest", "family_figure", "write_png_if_changed", "fmt_time",
-           "fmt_err", "FLOOR"]
+           "fmt_err", "fmt_proven", "FLOOR"]
 
 FLOOR = 1e-110   # exact results are plotted here
 THRESHOLDS = (1e-12, 1e-30)
@@ -34,9 +34,17 @@ def fmt_time(seconds: float) -> str:
 
 
 def fmt_err(e) -> str:
+    """An error as ``1.2e-15``; ``failed`` where the method raised, ``no bound`` for a ball that is not finite."""
     if e is None:
         return "failed"
+    if e == math.inf:
+        return "no bound"
     return "0" if e == 0 else f"{e:.1e}"
+
+
+def fmt_proven(n, total) -> str:
+    """Whether the errors of a row are proven bounds: ``yes``, ``no`` or ``n of total`` witnesses."""
+    return "yes" if n == total else "no" if n == 0 else f"{n} of {total}"
 
 
 def pareto(points):
@@ -57,7 +65,8 @@ def _worst(m):
 
 
 def method_rows(measurements):
-    """Per method, in first-seen order: (method, witnesses, worst error, median error, median time)."""
+    """Per method, in first-seen order: (method, witnesses, worst error, median error, median time, witnesses
+    whose error is proven)."""
     by = defaultdict(list)
     for m in measurements:
         by[m.method].append(m)
@@ -67,7 +76,7 @@ def method_rows(measurements):
         ok = [e for e in errs if e is not None]
         worst = None if len(ok) < len(errs) else max(ok)
         rows.append((method, len(ms), worst, statistics.median(ok) if ok else None,
-                     statistics.median(m.seconds for m in ms)))
+                     statistics.median(m.seconds for m in ms), sum(m.proven for m in ms)))
     return rows
 
 
@@ -156,13 +165,13 @@ def family_figure(family, measurements):
     colours = dict(zip(kinds, plt.cm.tab10.colors))
     for m in measurements:
         e = _worst(m)
-        if e is not None:
+        if e is not None and math.isfinite(e):
             ax.scatter(max(m.seconds, 1e-6), max(e, FLOOR), s=6, alpha=0.25, color=colours[kind(m.method)])
-    rows = [r for r in method_rows(measurements) if r[3] is not None]
+    rows = [r for r in method_rows(measurements) if r[3] is not None and math.isfinite(r[3])]
     pts = [(r[4], max(r[3], FLOOR)) for r in rows]
     for r, (t, e) in zip(rows, pts):
         ax.scatter(t, e, s=40, color=colours[kind(r[0])], edgecolor="black", linewidth=0.5, zorder=3)
-        if r[2] is not None:
+        if r[2] is not None and math.isfinite(r[2]):
             ax.plot([t, t], [e, max(r[2], FLOOR)], color=colours[kind(r[0])], lw=0.8, zorder=2)
     front = pareto(pts)
     ax.plot([pts[i][0] for i in front], [pts[i][1] for i in front], "k--", lw=1, zorder=2, label="Pareto front")
