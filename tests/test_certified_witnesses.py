@@ -462,7 +462,7 @@ def test_a_cut_through_vertices_joins_both_sides_and_stays_exact_enough():
 # s = 1/2 the waterplane is the rectangle L x 2r (I min = L (2r)^3/12), B the centroid of a half disc, 4r/(3 pi)
 # below the water, and the metacentric height 0.
 def _cylinder(quantity, up, s, radius=1, length=4, **kw):
-    Body, _, _, _, FloatingWitness, _, _, _ = _floating()
+    Body, _, _, _, FloatingWitness, _, _ = _floating()
     return FloatingWitness("cylinder", "the floating cylinder", ("q",), (Case({}, label="cylinder"),),
                            body=Body.cylinder(radius, length), up=up, density=s, quantity=quantity, **kw)
 
@@ -508,7 +508,7 @@ def test_a_cylinder_quantity_is_enclosed_and_a_value_off_by_1e_12_refuted():
 
 
 def test_a_cylinder_s_density_threshold_and_tilted_equilibrium_are_proven_roots():
-    Body, _, _, FloatingRootWitness, _, _, _, Root = _floating()
+    Body, _, _, FloatingRootWitness, _, _, Root = _floating()
     from symfloat.engine.measured import measured
     rho, s0 = sp.symbols("rho s0", positive=True)
     threshold = FloatingRootWitness(
@@ -542,7 +542,7 @@ def test_vertices_of_one_height_reach_the_water_together():
     # density 1 - tan(phi)/2 floats with the edge x = -1/2, y = 1/2 in the water plane: its two ends have one height
     # for every up vector of the balls (the z-component an exact 0), so they lie on one side together; split, the
     # crossing on that edge divided by a ball holding 0 and nothing was enclosed.  The waterplane: 1/cos(phi) by 1.
-    Body, _, _, _, FloatingWitness, _, _, _ = _floating()
+    Body, _, _, _, FloatingWitness, _, _ = _floating()
     phi = sp.Rational(1, 3)
     edge = FloatingWitness("edge", "the heeled cube with an edge at the water", ("a",), (Case({}, label="unit cube"),),
                            body=Body.box(1, 1, 1), up=(sp.sin(phi), sp.cos(phi), 0), density=1 - sp.tan(phi) / 2,
