@@ -178,12 +178,13 @@ def test_why_a_printed_threshold_is_not_found():
     assert booked["seen"] == "stable on neither side, erratum declared" and "VI.D" in booked["why"]
     assert _why_not_found(k, (1e-6, True, False), near)["seen"] == "change not located"
     assert _why_not_found(k, None, near)["seen"] == "not looked at"
-    # of two changes as near (the cube's ring ends 1/4 and 3/4 about a print's 1/2), the lower is named, in
-    # whichever order the sweep found them: the message does not depend on the sweep's steps
-    ends = [Threshold(0.7500000000000002, 1e-14, "ring", "stable above"), Threshold(0.25, 1e-14, "ring", "stable below")]
+    # of two changes as near to 12 digits (the cube's ring ends 1/4 and 3/4 about a print's 1/2, each located
+    # to its bracket), the lower is named, in whichever order the sweep found them: the message does not depend
+    # on the sweep's steps
+    ends = [Threshold(0.75, 1e-13, "ring", "stable above"), Threshold(0.2499999999999, 1e-13, "ring", "stable below")]
     half = {**k, "value": 0.5, "label": "ring"}
     for order in (ends, ends[::-1]):
-        assert "found is at 0.25 (stable below)" in _why_not_found(half, (1e-6, False, False), order)["why"]
+        assert "found is at 0.2499999999999 (stable below)" in _why_not_found(half, (1e-6, False, False), order)["why"]
 
 
 def _one_scene_cell(ba, ca, densities):
