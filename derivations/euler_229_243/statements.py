@@ -1,7 +1,7 @@
 """What Euler's §§229-243 say and how each formula is derived (see the package's docstring)."""
-import functools
 
 import sympy as sp
+from sympy.core.cache import cacheit
 from sympy.core.evalf import prec_to_dps
 
 from symfloat import Derivation, Eq, Erratum, Holds
@@ -33,7 +33,7 @@ def _dps(prec):
 _t = sp.Dummy("t", positive=True)       # the variable of integration of IY's expansion (one for every call)
 
 
-@functools.lru_cache(maxsize=4096, typed=True)
+@cacheit
 def _beta_terms(j, P, Q, dY, N_, B_, C1, C2):
     """IY's expansion into Beta integrals, once per argument list: a claim's two sides, and the links of a
     chain, meet the same integrals at the same sampled point."""
