@@ -257,3 +257,12 @@ def test_a_combined_witness_is_listed_with_its_parts():
     stump = next(w for w in graefe.witnesses if isinstance(w, Combined) and w.name.startswith("triaxial-stump"))
     heel = next(w for w in meta.witnesses if w.name == "metacentre-heel")
     assert family_of(stump) == "plane figures" and family_of(heel) == "floating bodies by exact clipping"
+
+
+def test_a_derivations_cost_is_measured_with_its_witnesses_timed_where_they_run():
+    # `symfloat bench --derivations` times each witness by wrapping its run; the wrapper must take what the
+    # checker passes (the readings and the print's rounding), or the derivation cannot be checked at all
+    from symfloat.numerics.cost import measure
+    row = measure("graefe-s2-volumes-simpson")
+    assert row["failures"] == 0 and row["witness_seconds"] and row["cold"] > 0
+    assert row["formulas"] == 21

@@ -40,9 +40,9 @@ d = load(did)[0]
 t3 = time.perf_counter()
 witness_seconds = {}
 for w in d.witnesses:                                   # each witness timed where it runs
-    def timed(readings, run=w.run, name=w.name):
+    def timed(readings, allowances=None, *, run=w.run, name=w.name):
         t = time.perf_counter()
-        out = run(readings)
+        out = run(readings, allowances)
         witness_seconds[name] = witness_seconds.get(name, 0.0) + time.perf_counter() - t
         return out
     object.__setattr__(w, "run", timed)
