@@ -50,6 +50,7 @@ from sympy.printing.pycode import MpmathPrinter
 from ..model.claim import members
 from ..model.relation import Cases, Holds, RealRoots
 from .identity import Domain
+from .quadrature import gauss_legendre
 from .relation import boundary_points, inserted, random_points, relation_intervals, statement, truth
 from .root_count import count_real_roots
 from .witness import Outcome, Precision, record_agrees
@@ -113,14 +114,14 @@ class _NestedQuadPrinter(MpmathPrinter):
         # tanh-sinh copes with a root or logarithm singular at an endpoint (1/sqrt(b^2 - y^2) at
         # y = b) but costs hundreds of nodes per dimension; Gauss-Legendre is exact after a few
         # refinements for the polynomial and trigonometric integrands of moments
-        rule = "tanh-sinh" if _singular(e.function, e.variables) else "gauss-legendre"
+        rule = "'tanh-sinh'" if _singular(e.function, e.variables) else "gauss_legendre"
         cap = f", maxdegree={self.maxdegree}" if self.maxdegree else ""
         body = self._print(e.function)
         for lim in e.limits:
             if len(lim) != 3:
                 raise ValueError(f"an integral over {lim[0]} without both limits has no value")
             v, lo, hi = (self._print(t) for t in lim)
-            body = f"{self._module_format('mpmath.quad')}(lambda {v}: {body}, ({lo}, {hi}), method='{rule}'{cap})"
+            body = f"{self._module_format('mpmath.quad')}(lambda {v}: {body}, ({lo}, {hi}), method={rule}{cap})"
         return body
 
     def _print_NumericLimit(self, e):
@@ -200,7 +201,8 @@ def _compiled(expr, printer):
     """*expr* as a function of its free symbols (sorted by name), integrals as nested quadrature.
     Compiled before the numbers go in: a printer ordering a closed sum's terms would evaluate them."""
     args = sorted(expr.free_symbols, key=lambda q: q.name)
-    return args, sp.lambdify(args, expr, modules=[{"mpmath": mpmath}, "mpmath"], printer=printer)
+    return args, sp.lambdify(args, expr, modules=[{"mpmath": mpmath, "gauss_legendre": gauss_legendre}, "mpmath"],
+                             printer=printer)
 
 
 def _numeric(expr, point, dps, printer=_NestedQuadPrinter):
