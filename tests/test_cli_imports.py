@@ -1,6 +1,7 @@
 """The command line loads what a command needs (issue 28, item 4): ``symfloat --help`` and ``--version`` import
 neither SymPy nor NumPy nor the checking engine (measured by the modules a fresh process holds, not by a clock);
 a subcommand's own help builds its options."""
+import functools
 import json
 import subprocess
 import sys
@@ -19,7 +20,10 @@ print(json.dumps({"modules": sorted(sys.modules), "out": out.getvalue()}))
 """
 
 
+@functools.cache
 def _run(*argv):
+    """The modules a fresh process holds after ``symfloat *argv*``, and what it printed (each command line run
+    once per test run: the tests below ask some of them twice)."""
     done = subprocess.run([sys.executable, "-c", PROBE, *argv], capture_output=True, text=True, check=True)
     return json.loads(done.stdout)
 

@@ -77,7 +77,8 @@ def test_the_grid_stamp_changes_with_every_module_the_grid_is_made_from(monkeypa
     # the stamp once listed the solver, geometry and model packages and left out what IX's predictors import
     # (engine/roots.py, which compiling runs): editing it kept a stale grid stamped current. Each module a grid
     # computation loads (run in a fresh process), and the two its predictors compile with, is changed by a
-    # comment, as read, and the stamp must change
+    # comment, as read, and the stamp must change. The files the stamp is made from are found once: a comment
+    # changes no import, so it cannot change them; a module they miss is still missed, its stamp unchanged
     import subprocess
     import sys
 
@@ -87,11 +88,13 @@ def test_the_grid_stamp_changes_with_every_module_the_grid_is_made_from(monkeypa
     loaded |= {root / "symfloat" / "engine" / "roots.py", root / "symfloat" / "model" / "compiled.py"}
     exempt = {"derivations/__init__.py"}            # the derivations' docstring and folder mapping
     before = ix_grid.grid_stamp()
+    files = ix_grid.code_files()
     text, raw = Path.read_text, Path.read_bytes
     missed = []
     for f in sorted(loaded):
         if str(f.relative_to(root)) in exempt:
             continue
+        monkeypatch.setattr(ix_grid, "code_files", lambda: files)
         monkeypatch.setattr(Path, "read_text",
                             lambda self, *a, f=f, **k: text(self, *a, **k) + "#" * (self.resolve() == f))
         monkeypatch.setattr(Path, "read_bytes", lambda self, f=f: raw(self) + b"#" * (self.resolve() == f))

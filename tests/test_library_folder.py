@@ -53,16 +53,26 @@ def _symfloat(library, *argv, cwd):
                           check=False, cwd=cwd)
 
 
-def test_a_librarys_notebook_and_cache_stay_in_its_folder_and_rerun_there(tmp_path):
-    library = tmp_path / "library"
+@pytest.fixture(scope="module")
+def library(tmp_path_factory):
+    """The tutorial's library copied to a folder of its own, its notebook written there by ``symfloat notebooks``
+    run from outside it (once for both tests below: the command checks the library's derivation first);
+    the library's folder, and the checkout's notebooks before and after the command."""
+    where = tmp_path_factory.mktemp("library")
+    library = where / "library"
     shutil.copytree(TUTORIAL, library)
-    checkout = project_root()
-    before = sorted(p.name for p in (checkout / "notebooks").iterdir())
-    out = _symfloat(library, "notebooks", "cap", cwd=tmp_path)
+    notebooks = project_root() / "notebooks"
+    before = sorted(p.name for p in notebooks.iterdir())
+    out = _symfloat(library, "notebooks", "cap", cwd=where)
     assert out.returncode == 0, out.stderr
+    return library, before, sorted(p.name for p in notebooks.iterdir())
+
+
+def test_a_librarys_notebook_and_cache_stay_in_its_folder_and_rerun_there(library):
+    library, before, after = library
     written = library / "notebooks" / "cap-centroid.ipynb"
     assert written.is_file() and (library / ".symfloat-cache").is_dir()
-    assert sorted(p.name for p in (checkout / "notebooks").iterdir()) == before       # nothing in the checkout
+    assert after == before                                                             # nothing in the checkout
     # re-run where it lies, without SYMFLOAT_LIBRARY: the notebook finds its library from its folder
     nb = nbformat.read(written, as_version=4)
     env_before = os.environ.pop("SYMFLOAT_LIBRARY", None)
@@ -91,21 +101,19 @@ write_record(docs / "verification.json", reports)
 """
 
 
-def test_a_librarys_site_is_built_from_its_own_records_under_its_folder(tmp_path):
+def test_a_librarys_site_is_built_from_its_own_records_under_its_folder(library, tmp_path):
     pytest.importorskip("sphinx", reason="the site extra is not installed (pip install 'symfloat[site]')")
     pytest.importorskip("myst_nb", reason="the site extra is not installed (pip install 'symfloat[site]')")
     try:
         typeset.katex_dist()
     except typeset.TypesetterMissing as exc:
         pytest.skip(str(exc))
-    library = tmp_path / "library"
-    shutil.copytree(TUTORIAL, library)
+    library = library[0]                            # with its notebook written
     env = {k: v for k, v in os.environ.items() if k != "SYMFLOAT_CACHE"}
     env.update(SYMFLOAT_LIBRARY=str(library))
     made = subprocess.run([sys.executable, "-c", _RECORDS, str(library)], env=env, capture_output=True, text=True,
                           check=False, cwd=tmp_path)
     assert made.returncode == 0, made.stderr
-    assert _symfloat(library, "notebooks", "cap", cwd=tmp_path).returncode == 0
     checkout = project_root()
     before = (checkout / "build" / "site").is_dir() and sorted((checkout / "build" / "site").rglob("*"))
     out = _symfloat(library, "site", cwd=tmp_path)

@@ -13,6 +13,27 @@ from symfloat.report.references import (STATUSES, check, judged, paragraphs, ref
 ROOT = Path(__file__).resolve().parents[1]
 
 
+@pytest.fixture(scope="module")
+def found():
+    """Every source's references as the judged entries decide them, found once for the tests that read them
+    unchanged (finding Scheeffer's costs about a second each time)."""
+    return {s: references(s) for s in refs_module.SOURCES}
+
+
+@pytest.fixture(scope="module")
+def unjudged():
+    """The references of Scheeffer, Graefe and Euler as the rules alone decide them (no judged entry)."""
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(refs_module, "judged", lambda source: ())
+        return {s: references(s) for s in ("scheeffer", "graefe", "euler")}
+
+
+@pytest.fixture(scope="module")
+def failed_checks(found):
+    """The failed self-checks of every source's references (each reference's and each source's judged entries)."""
+    return check([r for s in refs_module.SOURCES for r in found[s]])
+
+
 def test_tags_are_the_display_numbers():
     t = tags("scheeffer")
     # (2) closes the display "V_1 m > 0. \quad (2)" (line 60 of the transcription); (175) is the last number
@@ -26,8 +47,8 @@ def test_eulers_paragraphs_include_those_set_after_a_plate_number():
     assert paragraphs("euler")["217"][0] == 105 and paragraphs("euler")["192"][0] == 7
 
 
-def test_references_resolve_or_are_flagged():
-    refs = references("scheeffer")
+def test_references_resolve_or_are_flagged(found):
+    refs = found["scheeffer"]
     by = {(r["line"], r["number"]): r for r in refs}
     # "(s. 7 u. 8)": no display carries (8) (judged in symfloat/sources/scheeffer.references.json)
     assert by[(88, "7")]["status"] in ("resolved", "plausible") and by[(88, "8")]["status"] == "target lost"
@@ -37,18 +58,18 @@ def test_references_resolve_or_are_flagged():
     assert all(r["target_line"] is not None or r["status"] in ("target lost", "figure lost", "wrong") for r in refs)
 
 
-def test_the_booked_wrong_references_are_found_as_wrong():
+def test_the_booked_wrong_references_are_found_as_wrong(found, failed_checks):
     # each is an erratum of a derivation module: VI.B, VI.D (two), VI.F, VII, IX.C, X (two)
-    wrong = {(r["line"], r["number"]) for r in references("scheeffer") if r["status"] == "wrong"}
+    wrong = {(r["line"], r["number"]) for r in found["scheeffer"] if r["status"] == "wrong"}
     assert wrong == {(705, "55"), (1068, "55"), (1279, "102a"), (1735, "164"), (1817, "104"), (1833, "19"),
                      (1270, "102b"),     # "nach 102 b)": judged, the second place of the "nach 102 a)" erratum
                      (948, "81"), (960, "81")}   # "Gleichung 81", "(nach 81)": (81) is the upright law, meant (81a)
-    assert check([r for s in ("scheeffer", "euler", "graefe") for r in references(s)]) == []
+    assert failed_checks == []          # none unbooked (the check of every source's references, these among them)
 
 
-def test_eulers_paragraph_references():
+def test_eulers_paragraph_references(found):
     # "(§. 222.)" in §225 (line 183) and "quam §. 215. considerauimus" in §236 (line 272)
-    refs = {(r["line"], r["number"]): r for r in references("euler")}
+    refs = {(r["line"], r["number"]): r for r in found["euler"]}
     assert refs[(183, "222")]["target_line"] == 172 and refs[(272, "215")]["target_line"] == 99
     assert all(r["status"] == "resolved" for r in refs.values())
     # the heading of §221 set at the end of line 166 is no reference; nor is "acceptis." before a page number
@@ -135,40 +156,37 @@ def test_a_cited_formula_the_citing_steps_do_not_use_is_suspect(monkeypatch):
     assert refs.uses_target(refs.anchors("fake", SimpleNamespace(name="cites-1", reading=(X, a))), target) is None
 
 
-def test_references_whose_citing_steps_miss_the_target_are_suspect_until_judged(monkeypatch):
-    monkeypatch.setattr(refs_module, "judged", lambda source: ())
-    missed = [r for s in ("scheeffer", "graefe", "euler") for r in references(s) if "do not rest on" in r["reason"]]
+def test_references_whose_citing_steps_miss_the_target_are_suspect_until_judged(unjudged):
+    missed = [r for s in ("scheeffer", "graefe", "euler") for r in unjudged[s] if "do not rest on" in r["reason"]]
     assert missed and all(r["status"] == "suspect" for r in missed)
-    monkeypatch.undo()
     decided = {(j["line"], j["number"]) for j in judged("scheeffer")}
     assert {(r["line"], r["number"]) for r in missed} <= decided
 
 
-def test_no_reference_is_left_undecided():
-    everything = [r for s in refs_module.SOURCES for r in references(s)]
+def test_no_reference_is_left_undecided(found, failed_checks):
+    everything = [r for s in refs_module.SOURCES for r in found[s]]
     assert not [r for r in everything if r["status"] == "suspect"]
-    assert check(everything) == []
-    counts = status_counts(references("scheeffer"))
+    assert failed_checks == []
+    counts = status_counts(found["scheeffer"])
     assert counts["references"] == sum(counts[st] for st in STATUSES)
 
 
-def test_figures_are_lost_not_suspect():
-    graefe = references("graefe")
+def test_figures_are_lost_not_suspect(found):
+    graefe = found["graefe"]
     # "Fig. 1." on line 54 stands alone where the figure was: a caption, not a reference
     assert [(r["line"], r["status"], r["target_line"]) for r in graefe] == [(51, "figure lost", 54),
                                                                             (141, "figure lost", 144)]
-    by = {(r["line"], r["number"]): r for r in references("scheeffer")}
+    by = {(r["line"], r["number"]): r for r in found["scheeffer"]}
     assert by[(50, "1")]["status"] == "figure lost" and "neither the figure nor its caption" in by[(50, "1")]["reason"]
     assert by[(1891, "21")]["status"] == "figure lost" and by[(1891, "21")]["target_line"] == 1997
     # "(s. Fig. 19)" in X: the legs BH, BG of the cube's face are in Fig. 23, not in the waterplane of VII
     assert by[(1833, "19")]["status"] == "wrong" and "scheeffer-x/fig19-reference" in by[(1833, "19")]["reason"]
 
 
-def test_a_back_reference_naming_labels_foreign_to_the_figure_is_suspect(monkeypatch):
+def test_a_back_reference_naming_labels_foreign_to_the_figure_is_suspect(unjudged):
     # "wie in Fig. 3" (line 88, section II) names the old water line A_1 B_1, which section I writes "$A, B$ ,"
     # (the subscripts lost by the scan): the label check finds it; a judged entry explains it
-    monkeypatch.setattr(refs_module, "judged", lambda source: ())
-    r = next(r for r in references("scheeffer") if (r["line"], r["number"]) == (88, "3"))
+    r = next(r for r in unjudged["scheeffer"] if (r["line"], r["number"]) == (88, "3"))
     assert r["status"] == "suspect" and "A1, B1" in r["reason"]
 
 
@@ -221,16 +239,14 @@ def test_a_judged_plausible_reference_must_name_its_target(monkeypatch, line, nu
     assert (found == []) if message is None else any(message in m for m in found), found
 
 
-def test_plausible_references_are_judged(monkeypatch):
+def test_plausible_references_are_judged(found, unjudged):
     # a side unquoted by the derivations: each use judged against its target in scheeffer.references.json
-    monkeypatch.setattr(refs_module, "judged", lambda source: ())
-    plausible = {(r["line"], r["number"], r["reference"]) for r in references("scheeffer")
+    plausible = {(r["line"], r["number"], r["reference"]) for r in unjudged["scheeffer"]
                  if r["status"] == "plausible"}
-    monkeypatch.undo()
     assert plausible and plausible <= {(j["line"], j["number"], j["reference"]) for j in judged("scheeffer")}
-    by = {(r["line"], r["number"], r["reference"]): r for r in references("scheeffer")}
+    by = {(r["line"], r["number"], r["reference"]): r for r in found["scheeffer"]}
     assert all(by[k]["status"] in ("resolved", "wrong") for k in plausible)
-    assert status_counts(references("scheeffer"))["plausible"] == 0
+    assert status_counts(found["scheeffer"])["plausible"] == 0
     # "also aus 86" (line 1020) reads (86) in its form (86a), the display with cotg^2(pi/n) it evaluates
     assert by[(1020, "86", "aus 86")]["target_line"] == 1002
 
@@ -255,10 +271,10 @@ def test_coverage_json_counts_the_references_by_status(capsys, monkeypatch):
     assert counts == status_counts(references("euler")) and counts["references"] == 2 and counts["resolved"] == 2
 
 
-def test_a_caption_naming_a_point_the_text_does_not_give_the_figure_is_suspect(monkeypatch):
+def test_a_caption_naming_a_point_the_text_does_not_give_the_figure_is_suspect(monkeypatch, found):
     real = refs_module._captions("scheeffer")
     assert real["5"][0] == 1979                                   # "Fig. 5" alone on its line: no labels
-    by = {(r["line"], r["number"]): r for r in references("scheeffer")}
+    by = {(r["line"], r["number"]): r for r in found["scheeffer"]}
     assert by[(98, "5")]["status"] == "figure lost"
     # mutation: the caption of Fig. 5 read from the line that names the cube's triangle BHG (line 1785)
     text = refs_module.get_source("scheeffer").text()

@@ -1,4 +1,5 @@
-"""The proof checks under load: every core busy, the check pinned to one core, and every search time
+"""The proof checks under load: the check pinned to one core and a busy loop pinned beside it (every core
+busy where ``taskset`` is missing, the check then unpinned), and every search time
 limit divided by 1e9 (``SYMFLOAT_SLOWDOWN``) — the errata come out identical to the committed ones
 byte for byte but for timings, and the verification record with every verdict, evidence and witness
 the same (float64 witness errors to their own reproducibility, see ``record_differences``)
@@ -23,14 +24,20 @@ SELECTIONS = ("metazentrum", pytest.param("hasab", marks=pytest.mark.slow),
               pytest.param("graefe-s3", marks=pytest.mark.slow))
 
 
+def _pinned(cmd):
+    """*cmd* run on core 0 alone, where ``taskset`` can pin it."""
+    return ["taskset", "-c", "0", *cmd] if shutil.which("taskset") else cmd
+
+
 def _busy_loops():
-    return [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range(os.cpu_count() or 2)]
+    """The check's core kept busy: one loop on core 0 beside the pinned check (a loop on another core would not
+    compete with it), or one on every core where nothing is pinned."""
+    count = 1 if shutil.which("taskset") else os.cpu_count() or 2
+    return [subprocess.Popen(_pinned([sys.executable, "-c", "while True: pass"])) for _ in range(count)]
 
 
 def _symfloat(*argv, env):
-    cmd = [sys.executable, "-m", "symfloat", *argv, "--quiet"]
-    if shutil.which("taskset"):
-        cmd = ["taskset", "-c", "0", *cmd]
+    cmd = _pinned([sys.executable, "-m", "symfloat", *argv, "--quiet"])
     return subprocess.run(cmd, capture_output=True, text=True, env=env, cwd=ROOT, timeout=1800)
 
 
