@@ -42,6 +42,19 @@ def records():
     return load_records(DOCS, NOTEBOOKS)
 
 
+@pytest.fixture(scope="module")
+def edition(records):
+    """The edition page of a source (by key), made once for this module's tests: the page depends on the
+    records alone, and Scheeffer's takes seconds."""
+    made = {}
+
+    def page(key: str) -> str:
+        if key not in made:
+            made[key] = edition_page(SOURCES[key], records)
+        return made[key]
+    return page
+
+
 # ---------------------------------------------------------------- pages, without Sphinx
 
 _KATEX = '<span class="katex'
@@ -85,14 +98,16 @@ def test_an_aligned_display_is_set_in_rows():
     assert html.count("<mtr>") == 2
 
 
-def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
-    page = edition_page(SOURCES["scheeffer"], records)
+def test_the_edition_marks_every_quoted_formula_by_its_verdict(records, edition):
+    page = edition("scheeffer")
     formulas = [f for f in records.formulas if f["source"] == "scheeffer"]
     assert len(formulas) > 400
+    ids = set(re.findall(r'id="([^"]*)"', page))                              # the page read once, not per formula
+    marks = set(re.findall(r'<a class="(?:q|more) v-(\w+)" href="#([^"]*)"', page))
     for f in formulas:
         anchor = formula_anchor(f["id"])
-        assert f'id="{anchor}"' in page, f["id"]
-        assert re.search(rf'<a class="(?:q|more) v-{mark_of(f, records)}" href="#{anchor}"', page), f["id"]
+        assert anchor in ids, f["id"]
+        assert (mark_of(f, records), anchor) in marks, f["id"]
     # (78c) is a misprint of the original (the record's erratum), Scheeffer's square moments (VI.C) are verified
     assert f'<a class="q v-fault" href="#{formula_anchor("scheeffer-vi-cf/78c")}"' in page
     assert f'<a class="q v-verified" href="#{formula_anchor("scheeffer-vi-cf/square-moments")}"' in page
@@ -105,9 +120,9 @@ def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
     assert "\\frac" not in re.sub(r'<annotation.*?</annotation>|title="[^"]*"', "", page, flags=re.S)
 
 
-def test_the_two_apparatus_are_marked_apart(records):
+def test_the_two_apparatus_are_marked_apart(records, edition):
     # docs/errata.json: (81a) is the scan's "b" for "6" (transcription), (78c) a misprint of the print
-    page = edition_page(SOURCES["scheeffer"], records)
+    page = edition("scheeffer")
     scan, printer = formula_anchor("scheeffer-vi-cf/81a"), formula_anchor("scheeffer-vi-cf/78c")
     assert f'<a class="q v-transcription" href="#{scan}"' in page and f'<a class="q v-fault" href="#{printer}"' in page
     legend = page[page.index('<p class="legend">'):]
@@ -126,8 +141,8 @@ def test_the_two_apparatus_are_marked_apart(records):
     assert "[Scheeffer, (81a)]" not in index[original:transcription]
 
 
-def test_the_correction_is_shown_in_place(records):
-    page = edition_page(SOURCES["scheeffer"], records)
+def test_the_correction_is_shown_in_place(edition):
+    page = edition("scheeffer")
     at = page.index(f'id="{formula_anchor("scheeffer-vi-cf/81a")}"')
     note = page[at:page.index("</details>\n</details>", at)]
     evidence = note.index('<details class="evidence">')
@@ -146,24 +161,24 @@ def test_the_correction_is_shown_in_place(records):
     assert misprint.index("Printed</span>") < misprint.index("Corrected</span>") < misprint.index('class="evidence"')
 
 
-def test_places_have_anchors_and_the_sources_a_citation(records):
-    euler, scheeffer = edition_page(SOURCES["euler"], records), edition_page(SOURCES["scheeffer"], records)
+def test_places_have_anchors_and_the_sources_a_citation(edition):
+    euler, scheeffer = edition("euler"), edition("scheeffer")
     assert 'id="s-224"' in euler and 'href="#s-224"' in euler                # Euler's paragraph §224
     assert "Eneström E110" in euler and "Petropoli" in euler and "1749" in euler
     for anchor in ("eq-78c", "eq-81a", "eq-5", "s-ix", "example-1"):        # Scheeffer (78c), (81 a), (5), IX, Example 1
         assert f'id="{anchor}"' in scheeffer and f'href="#{anchor}"' in scheeffer, anchor
     assert scheeffer.count('id="eq-78c"') == 1
-    hasab, web = edition_page(SOURCES["hasab"], records), edition_page(SOURCES["metazentrum"], records)
+    hasab, web = edition("hasab"), edition("metazentrum")
     assert "1987-04-183-1.eps" not in hasab.split('<div class="edition">')[1]     # a file name, not the text's words
     assert "ID:(1610, 0)" not in web and "(web lesson)" not in web
 
 
-def test_a_fault_printed_at_several_places_is_marked_at_each(records):
+def test_a_fault_printed_at_several_places_is_marked_at_each(records, edition):
     # metazentrum half-length: 'der Mittlere Länge des Parallelepipeds' stands at eight places of the lesson
     # (symfloat/sources/003_02a33f8f897eb570.txt, lines 155, 168, 243, 540, 578, 616, 677, 683;
     # tests/test_repeated_faults.py), one erratum with its places; the place of line 243 lies inside the quote of
     # another erratum (shift-depends-on, the sentence that makes the shift depend on a), whose mark covers it
-    page = edition_page(SOURCES["metazentrum"], records)
+    page = edition("metazentrum")
     fid = "metazentrum/half-length"
     anchor = formula_anchor(fid)
     assert fault_words(records.formula(fid), records) == "der Mittlere Länge des Parallelepipeds"
@@ -184,8 +199,8 @@ def test_a_fault_printed_at_several_places_is_marked_at_each(records):
     assert places("ab x ab", "", (0, 2)) == []
 
 
-def test_lost_text_and_missing_figures_are_marked(records):
-    page = edition_page(SOURCES["graefe"], records)
+def test_lost_text_and_missing_figures_are_marked(edition):
+    page = edition("graefe")
     # the lemma of Graefe §1 is lost in the transcription: its formula is unverifiable, with that reason
     anchor = formula_anchor("graefe-s1-prismatoid-volume/lemma-statement")
     assert re.search(rf'<a class="q v-unverifiable" href="#{anchor}" title="[^"]*text lost in the transcription',
@@ -270,7 +285,10 @@ class _Page(HTMLParser):
             self.text.append(data)
 
 
-def _pages(site: Path) -> dict[str, _Page]:
+@pytest.fixture(scope="module")
+def pages(site) -> dict[str, _Page]:
+    """Every page of the built site, parsed once for the tests that read them (a notebook's or an edition's
+    page runs to megabytes)."""
     pages = {}
     for path in sorted(site.rglob("*.html")):
         page = _Page()
@@ -279,8 +297,7 @@ def _pages(site: Path) -> dict[str, _Page]:
     return pages
 
 
-def test_the_site_has_its_pages_and_every_internal_link_resolves(site, records):
-    pages = _pages(site)
+def test_the_site_has_its_pages_and_every_internal_link_resolves(site, pages, records):
     for key in ("scheeffer", "graefe", "euler", "metazentrum", "hasab"):
         assert f"edition/{key}.html" in pages
     assert all(f"errata/{slug(e['id'])}.html" in pages for e in records.errata)
@@ -313,8 +330,8 @@ def test_the_site_has_its_pages_and_every_internal_link_resolves(site, records):
     assert not broken, broken[:10]
 
 
-def test_no_tex_is_left_where_mathematics_should_be(site):
-    for name, page in _pages(site).items():
+def test_no_tex_is_left_where_mathematics_should_be(pages):
+    for name, page in pages.items():
         text = "".join(page.text)
         for raw in ("$$", "\\frac", "\\left", "\\begin{"):
             assert raw not in text, (name, raw, text[max(text.find(raw) - 80, 0):text.find(raw) + 80])
