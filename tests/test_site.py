@@ -42,6 +42,19 @@ def records():
     return load_records(DOCS, NOTEBOOKS)
 
 
+@pytest.fixture(scope="module")
+def edition(records):
+    """The edition page of a source (by key), made once for this module's tests: the page depends on the
+    records alone, and Scheeffer's takes seconds."""
+    made = {}
+
+    def page(key: str) -> str:
+        if key not in made:
+            made[key] = edition_page(SOURCES[key], records)
+        return made[key]
+    return page
+
+
 # ---------------------------------------------------------------- pages, without Sphinx
 
 _KATEX = '<span class="katex'
@@ -85,14 +98,16 @@ def test_an_aligned_display_is_set_in_rows():
     assert html.count("<mtr>") == 2
 
 
-def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
-    page = edition_page(SOURCES["scheeffer"], records)
+def test_the_edition_marks_every_quoted_formula_by_its_verdict(records, edition):
+    page = edition("scheeffer")
     formulas = [f for f in records.formulas if f["source"] == "scheeffer"]
     assert len(formulas) > 400
+    ids = set(re.findall(r'id="([^"]*)"', page))                              # the page read once, not per formula
+    marks = set(re.findall(r'<a class="(?:q|more) v-(\w+)" href="#([^"]*)"', page))
     for f in formulas:
         anchor = formula_anchor(f["id"])
-        assert f'id="{anchor}"' in page, f["id"]
-        assert re.search(rf'<a class="(?:q|more) v-{mark_of(f, records)}" href="#{anchor}"', page), f["id"]
+        assert anchor in ids, f["id"]
+        assert (mark_of(f, records), anchor) in marks, f["id"]
     # (78c) is a misprint of the original (the record's erratum), Scheeffer's square moments (VI.C) are verified
     assert f'<a class="q v-fault" href="#{formula_anchor("scheeffer-vi-cf/78c")}"' in page
     assert f'<a class="q v-verified" href="#{formula_anchor("scheeffer-vi-cf/square-moments")}"' in page
@@ -105,9 +120,9 @@ def test_the_edition_marks_every_quoted_formula_by_its_verdict(records):
     assert "\\frac" not in re.sub(r'<annotation.*?</annotation>|title="[^"]*"', "", page, flags=re.S)
 
 
-def test_the_two_apparatus_are_marked_apart(records):
+def test_the_two_apparatus_are_marked_apart(records, edition):
     # docs/errata.json: (81a) is the scan's "b" for "6" (transcription), (78c) a misprint of the print
-    page = edition_page(SOURCES["scheeffer"], records)
+    page = edition("scheeffer")
     scan, printer = formula_anchor("scheeffer-vi-cf/81a"), formula_anchor("scheeffer-vi-cf/78c")
     assert f'<a class="q v-transcription" href="#{scan}"' in page and f'<a class="q v-fault" href="#{printer}"' in page
     legend = page[page.index('<p class="legend">'):]
@@ -126,8 +141,8 @@ def test_the_two_apparatus_are_marked_apart(records):
     assert "[Scheeffer, (81a)]" not in index[original:transcription]
 
 
-def test_the_correction_is_shown_in_place(records):
-    page = edition_page(SOURCES["scheeffer"], records)
+def test_the_correction_is_shown_in_place(edition):
+    page = edition("scheeffer")
     at = page.index(f'id="{formula_anchor("scheeffer-vi-cf/81a")}"')
     note = page[at:page.index("</details>\n</details>", at)]
     evidence = note.index('<details class="evidence">')
@@ -146,24 +161,24 @@ def test_the_correction_is_shown_in_place(records):
     assert misprint.index("Printed</span>") < misprint.index("Corrected</span>") < misprint.index('class="evidence"')
 
 
-def test_places_have_anchors_and_the_sources_a_citation(records):
-    euler, scheeffer = edition_page(SOURCES["euler"], records), edition_page(SOURCES["scheeffer"], records)
+def test_places_have_anchors_and_the_sources_a_citation(edition):
+    euler, scheeffer = edition("euler"), edition("scheeffer")
     assert 'id="s-224"' in euler and 'href="#s-224"' in euler                # Euler's paragraph §224
     assert "Eneström E110" in euler and "Petropoli" in euler and "1749" in euler
     for anchor in ("eq-78c", "eq-81a", "eq-5", "s-ix", "example-1"):        # Scheeffer (78c), (81 a), (5), IX, Example 1
         assert f'id="{anchor}"' in scheeffer and f'href="#{anchor}"' in scheeffer, anchor
     assert scheeffer.count('id="eq-78c"') == 1
-    hasab, web = edition_page(SOURCES["hasab"], records), edition_page(SOURCES["metazentrum"], records)
+    hasab, web = edition("hasab"), edition("metazentrum")
     assert "1987-04-183-1.eps" not in hasab.split('<div class="edition">')[1]     # a file name, not the text's words
     assert "ID:(1610, 0)" not in web and "(web lesson)" not in web
 
 
-def test_a_fault_printed_at_several_places_is_marked_at_each(records):
+def test_a_fault_printed_at_several_places_is_marked_at_each(records, edition):
     # metazentrum half-length: 'der Mittlere Länge des Parallelepipeds' stands at eight places of the lesson
     # (symfloat/sources/003_02a33f8f897eb570.txt, lines 155, 168, 243, 540, 578, 616, 677, 683;
     # tests/test_repeated_faults.py), one erratum with its places; the place of line 243 lies inside the quote of
     # another erratum (shift-depends-on, the sentence that makes the shift depend on a), whose mark covers it
-    page = edition_page(SOURCES["metazentrum"], records)
+    page = edition("metazentrum")
     fid = "metazentrum/half-length"
     anchor = formula_anchor(fid)
     assert fault_words(records.formula(fid), records) == "der Mittlere Länge des Parallelepipeds"
@@ -184,8 +199,8 @@ def test_a_fault_printed_at_several_places_is_marked_at_each(records):
     assert places("ab x ab", "", (0, 2)) == []
 
 
-def test_lost_text_and_missing_figures_are_marked(records):
-    page = edition_page(SOURCES["graefe"], records)
+def test_lost_text_and_missing_figures_are_marked(edition):
+    page = edition("graefe")
     # the lemma of Graefe §1 is lost in the transcription: its formula is unverifiable, with that reason
     anchor = formula_anchor("graefe-s1-prismatoid-volume/lemma-statement")
     assert re.search(rf'<a class="q v-unverifiable" href="#{anchor}" title="[^"]*text lost in the transcription',
@@ -270,7 +285,10 @@ class _Page(HTMLParser):
             self.text.append(data)
 
 
-def _pages(site: Path) -> dict[str, _Page]:
+@pytest.fixture(scope="module")
+def pages(site) -> dict[str, _Page]:
+    """Every page of the built site, parsed once for the tests that read them (a notebook's or an edition's
+    page runs to megabytes)."""
     pages = {}
     for path in sorted(site.rglob("*.html")):
         page = _Page()
@@ -279,8 +297,7 @@ def _pages(site: Path) -> dict[str, _Page]:
     return pages
 
 
-def test_the_site_has_its_pages_and_every_internal_link_resolves(site, records):
-    pages = _pages(site)
+def test_the_site_has_its_pages_and_every_internal_link_resolves(site, pages, records):
     for key in ("scheeffer", "graefe", "euler", "metazentrum", "hasab"):
         assert f"edition/{key}.html" in pages
     assert all(f"errata/{slug(e['id'])}.html" in pages for e in records.errata)
@@ -313,8 +330,8 @@ def test_the_site_has_its_pages_and_every_internal_link_resolves(site, records):
     assert not broken, broken[:10]
 
 
-def test_no_tex_is_left_where_mathematics_should_be(site):
-    for name, page in _pages(site).items():
+def test_no_tex_is_left_where_mathematics_should_be(pages):
+    for name, page in pages.items():
         text = "".join(page.text)
         for raw in ("$$", "\\frac", "\\left", "\\begin{"):
             assert raw not in text, (name, raw, text[max(text.find(raw) - 80, 0):text.find(raw) + 80])
@@ -356,14 +373,22 @@ def _browser(playwright):
         return None
 
 
-def _visible_tex(page) -> list[str]:
-    """The TeX that the browser shows as text on *page* (none where MathML was made), outside a notebook's
-    code (``<pre>``: a function the derivation defines may print itself as TeX there)."""
-    text = page.evaluate("() => { const code = [...document.querySelectorAll('pre')];"
-                         " code.forEach(e => { e.dataset.shown = e.style.display; e.style.display = 'none'; });"
-                         " const text = document.body.innerText;"
-                         " code.forEach(e => { e.style.display = e.dataset.shown; }); return text; }")
-    return [raw for raw in ("$$", "\\frac") if raw in text]
+# The TeX that the browser shows as text on a page (none where MathML was made), outside a notebook's code
+# (``<pre>``: a function the derivation defines may print itself as TeX there).  The text is read from the
+# rendered text nodes (those innerText takes: not under display: none, visibility: hidden or a closed
+# <details>), joined without separators, so nothing on the page changes and it is not laid out again.  A text
+# that is a closed <details>'s own child lies in its hidden part, though the <details> (its summary) is seen.
+_VISIBLE_TEX = r"""() => {
+  const seen = [];
+  const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+  for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+    const parent = node.parentElement;
+    if (parent.closest("pre") || parent.localName === "details" && !parent.open) continue;
+    if (parent.checkVisibility({visibilityProperty: true})) seen.push(node.data);
+  }
+  const text = seen.join("");
+  return ["$$", "\\frac"].filter(raw => text.includes(raw));
+}"""
 
 
 # Runs of single-letter identifiers in a formula's MathML (KaTeX's, beside the glyphs) that spell the name of a
@@ -392,6 +417,12 @@ _BARE_NAMES = r"""names => {
 _NAMES = sorted([g for g in GREEK if g[0].islower()] + ["sin", "cos", "tan", "cot", "tg", "log", "lim"],
                 key=len, reverse=True)
 
+# How far the page scrolls sideways at the viewport's width (it never should: a long formula scrolls in its box).
+_OVERFLOW = "() => document.documentElement.scrollWidth - window.innerWidth"
+# All three in one call: the visible TeX, the bare names (given the names) and the overflow.
+_SEEN = f"names => ({{tex: ({_VISIBLE_TEX})(), bare: ({_BARE_NAMES})(names), overflow: ({_OVERFLOW})()}})"
+_WIDTHS = (1400, 420)       # a desktop's and a phone's; the text is read at the first
+
 
 def test_every_page_in_headless_chromium(site):
     sync_api = pytest.importorskip("playwright.sync_api", reason="playwright is not installed (test extra)")
@@ -405,27 +436,43 @@ def test_every_page_in_headless_chromium(site):
         page.on("pageerror", lambda e: errors.append((page.url, str(e))))
         page.on("requestfailed", lambda r: errors.append((page.url, f"failed to load {r.url}")))
         names = sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html"))
-        bare, wide = [], []
+        bare, wide, order = [], [], _WIDTHS
         for name in names:
+            # laid out once at each width, the first the width the page before ended with (a notebook's page
+            # takes seconds to lay out)
             page.goto((site / name).as_uri(), wait_until="load")
-            assert not _visible_tex(page), (name, _visible_tex(page))
-            bare += [(name, b) for b in page.evaluate(_BARE_NAMES, _NAMES)]
-            for width in (1400, 420):           # the page never scrolls sideways; a long formula scrolls in its box
-                page.set_viewport_size({"width": width, "height": 900})
-                overflow = page.evaluate("document.documentElement.scrollWidth - window.innerWidth")
+            for width in order:
+                if page.viewport_size["width"] != width:
+                    page.set_viewport_size({"width": width, "height": 900})
+                if width == _WIDTHS[0]:
+                    seen = page.evaluate(_SEEN, _NAMES)
+                    assert not seen["tex"], (name, seen["tex"])
+                    bare += [(name, b) for b in seen["bare"]]
+                    overflow = seen["overflow"]
+                else:
+                    overflow = page.evaluate(_OVERFLOW)
                 if overflow > 0:
                     wide.append((name, width, overflow))
-            page.set_viewport_size({"width": 1400, "height": 900})
+            order = order[::-1]
         assert not errors, errors[:5]
         assert not bare, bare[:5]
         assert not wide, wide[:10]
         # every mark of the edition carries a sign and words besides its colour
+        page.set_viewport_size({"width": _WIDTHS[0], "height": 900})
         page.goto((site / "edition" / "scheeffer.html").as_uri())
         legend = page.inner_text("p.legend")
         assert all(f"{sign} {words}" in legend for sign, words in
                    (("✗", "fault of the original"), ("✎", "transcription corrected"), ("✓", "verified")))
         badges = page.evaluate("Array.from(document.querySelectorAll('.badge')).map(b => b.textContent)")
         assert badges and all(re.fullmatch(r"\S \w.+", b) for b in badges), badges[:3]
+        # KaTeX laid the formulas out: a fraction of (78c) has height, and following a mark opens its note
+        # (on the same visit: the page is 15 MB)
+        heights = page.evaluate("Array.from(document.querySelectorAll('.katex-html .mfrac')).slice(0, 50)"
+                                ".map(e => e.getBoundingClientRect().height)")
+        assert heights and max(heights) > 10, heights[:5]
+        note = f"#{formula_anchor('scheeffer-vi-cf/78c')}"
+        page.locator(f'a.q[href="{note}"]').first.click()
+        page.wait_for_function("id => document.getElementById(id).open", arg=note[1:], timeout=5000)
         # search from disk: hits listed, no error (Sphinx's summaries, which would fetch each page, are off)
         page.goto((site / "search.html").as_uri() + "?q=Schwerpunkt")
         page.wait_for_selector("#search-results li", timeout=20000)
@@ -435,23 +482,31 @@ def test_every_page_in_headless_chromium(site):
             page.goto((site / name).as_uri(), wait_until="load")
             widths = page.evaluate("Array.from(document.images).map(i => [i.getAttribute('src'), i.naturalWidth])")
             assert len(widths) == count and all(w > 0 for _, w in widths), (name, widths)
-        # the same checks see a page that shows raw TeX and logs an error
+        # the same checks see a page that shows raw TeX, logs an error and scrolls sideways on a phone
         control = site.parent / "control.html"
         control.write_text("<p>$$\\frac{a}{b}$$</p><script>console.error('control')</script>"
                            '<span class="katex"><span class="katex-mathml"><math><mrow><mi>x</mi><mi>t</mi><mi>a</mi>'
                            '<mi>n</mi><mo>=</mo><mi>t</mi><mi>a</mi><mi>u</mi></mrow></math></span>'
-                           '<span class="katex-html">x &amp; y</span></span>', encoding="utf-8")
+                           '<span class="katex-html">x &amp; y</span></span><div style="width: 600px">wide</div>',
+                           encoding="utf-8")
         page.goto(control.as_uri(), wait_until="load")
-        assert _visible_tex(page) == ["$$", "\\frac"] and errors == [(control.as_uri(), "control")]
-        assert [b.split(" ")[0] for b in page.evaluate(_BARE_NAMES, _NAMES)] == ["xtan", "tau", "a"]
-        # KaTeX laid the formulas out: a fraction of (78c) has height, and following a mark opens its note.
-        page.goto((site / "edition" / "scheeffer.html").as_uri())
-        heights = page.evaluate("Array.from(document.querySelectorAll('.katex-html .mfrac')).slice(0, 50)"
-                                ".map(e => e.getBoundingClientRect().height)")
-        assert heights and max(heights) > 10, heights[:5]
-        note = f"#{formula_anchor('scheeffer-vi-cf/78c')}"
-        page.locator(f'a.q[href="{note}"]').first.click()
-        page.wait_for_function("id => document.getElementById(id).open", arg=note[1:], timeout=5000)
+        seen = page.evaluate(_SEEN, _NAMES)
+        assert seen["tex"] == ["$$", "\\frac"] and errors == [(control.as_uri(), "control")]
+        assert [b.split(" ")[0] for b in seen["bare"]] == ["xtan", "tau", "a"] and seen["overflow"] <= 0
+        page.set_viewport_size({"width": _WIDTHS[1], "height": 900})
+        assert page.evaluate(_OVERFLOW) > 0
+        page.set_viewport_size({"width": _WIDTHS[0], "height": 900})
+        # and no TeX where the reader sees none: a notebook's code, hidden text, a closed note, MathML's annotation
+        hidden = site.parent / "control-hidden.html"
+        hidden.write_text("<pre>$$\\frac{a}{b}$$</pre><p style='display: none'>$$\\frac{a}{b}$$</p>"
+                          "<p style='visibility: hidden'>$$\\frac{a}{b}$$</p>"
+                          "<details><summary>note</summary>$$\\frac{a}{b}$$</details>"
+                          '<math><semantics><mi>x</mi><annotation encoding="application/x-tex">\\frac{a}{b}'
+                          "</annotation></semantics></math><p id='shown'>$$ and \\frac{a}{b}</p>", encoding="utf-8")
+        page.goto(hidden.as_uri(), wait_until="load")
+        assert page.evaluate(_VISIBLE_TEX) == ["$$", "\\frac"]            # the last paragraph's
+        page.evaluate("document.getElementById('shown').remove()")
+        assert page.evaluate(_VISIBLE_TEX) == []
         # screenshots for the README at 1400 and 420 px: the home page, the Scheeffer edition with the note
         # of (78c) opened from its mark, an erratum's page and a notebook
         folder = DOCS / "figures" if os.environ.get("SYMFLOAT_SCREENSHOTS") else site.parent
