@@ -89,12 +89,12 @@ def test_the_grid_stamp_changes_with_every_module_the_grid_is_made_from(monkeypa
     exempt = {"derivations/__init__.py"}            # the derivations' docstring and folder mapping
     before = ix_grid.grid_stamp()
     files = ix_grid.code_files()
+    monkeypatch.setattr(ix_grid, "code_files", lambda: files)
     text, raw = Path.read_text, Path.read_bytes
     missed = []
     for f in sorted(loaded):
         if str(f.relative_to(root)) in exempt:
             continue
-        monkeypatch.setattr(ix_grid, "code_files", lambda: files)
         monkeypatch.setattr(Path, "read_text",
                             lambda self, *a, f=f, **k: text(self, *a, **k) + "#" * (self.resolve() == f))
         monkeypatch.setattr(Path, "read_bytes", lambda self, f=f: raw(self) + b"#" * (self.resolve() == f))
