@@ -24,6 +24,7 @@ import sympy as sp
 
 from ..model.relation import RealRoots
 from .proofs import Certificate, ProofBook, claim_digest, slowdown
+from .rational import rational_value
 from .sign import decided
 from .timelimit import TimeLimitExceeded, time_limit
 
@@ -185,6 +186,12 @@ def _value(expr):
     return v, False
 
 
+def _at(expr, point):
+    """*expr* at *point*: a rational function by exact rational arithmetic, anything else by SymPy."""
+    value = rational_value(expr, point)
+    return expr.xreplace(point) if value is None else value
+
+
 def _sample(pairs, domain: Domain, seed_text: str, samples: int):
     symbols = set()
     for a, b in pairs:
@@ -202,7 +209,7 @@ def _sample(pairs, domain: Domain, seed_text: str, samples: int):
         if not domain.admits(point):
             continue
         try:
-            values = [(_value(a.xreplace(point)), _value(b.xreplace(point))) for a, b in pairs]
+            values = [(_value(_at(a, point)), _value(_at(b, point))) for a, b in pairs]
         except (ArithmeticError, ZeroDivisionError, TypeError):
             continue
         good += 1
