@@ -400,7 +400,7 @@ def test_a_floating_box_is_enclosed_and_a_quantity_off_by_1e_12_refuted():
     Body, _, _, _, FloatingWitness, _, _ = _floating()
     s = sp.Symbol("s", positive=True)
     box = FloatingWitness("box", "the clipped box", ("draught", "gm"), (Case({s: sp.Rational(1, 2)}, label="s = 1/2"),),
-                          body=Body.box(2, 1, 1), up=(0, 0, 1), density=s, quantity=("draught", "metacentric height"))
+                          body=Body.box(2, 1, 1), up=(0, 0, 1), density=s, quantity=(measured("draught"), measured("metacentric height")))
     assert isinstance(box.enclose(box.instances[0], 128)[1], arb)
     out = box.run({"draught": chain(sp.Matrix([s, -sp.Rational(1, 12)]))})["draught"]
     assert record_decision(_certified(out)) == "agrees" and out.agrees
@@ -416,7 +416,7 @@ def test_a_density_threshold_is_a_proven_sign_change_and_its_last_printed_digit_
     threshold = FloatingRootWitness(
         "threshold", "the lower zero of the clipped log's metacentric height", ("s0",), (Case({}, label="unit log"),),
         body=Body.box(1, 1, 4), up=(0, 1, 0), density=rho, quantity=s0,
-        roots=((s0, Root.scan("metacentric height", rho, sp.Rational(1, 20), sp.Rational(1, 2), 9)),))
+        roots=((s0, Root.scan(measured("metacentric height"), rho, sp.Rational(1, 20), sp.Rational(1, 2), 9)),))
     exact_root = (3 - sp.sqrt(3)) / 6
     assert record_decision(_certified(threshold.run({"s0": chain(exact_root)})["s0"])) == "agrees"
     assert record_decision(_certified(threshold.run({"s0": chain(exact_root + sp.Rational(1, 10 ** 12))})["s0"])) \
@@ -461,10 +461,10 @@ def test_a_cut_through_vertices_joins_both_sides_and_stays_exact_enough():
 # waterplane of that tilt is an ellipse with semi-axes r/cos(psi), r: I max = pi r^4/(4 cos^3 psi).  Lying at
 # s = 1/2 the waterplane is the rectangle L x 2r (I min = L (2r)^3/12), B the centroid of a half disc, 4r/(3 pi)
 # below the water, and the metacentric height 0.
-def _cylinder(quantity, up, s, radius=1, length=4, **kw):
+def _cylinder(name, up, s, radius=1, length=4, **kw):
     Body, _, _, _, FloatingWitness, _, _ = _floating()
     return FloatingWitness("cylinder", "the floating cylinder", ("q",), (Case({}, label="cylinder"),),
-                           body=Body.cylinder(radius, length), up=up, density=s, quantity=quantity, **kw)
+                           body=Body.cylinder(radius, length), up=up, density=s, quantity=measured(name), **kw)
 
 
 PSI_C = sp.Symbol("psi", positive=True)
@@ -514,7 +514,7 @@ def test_a_cylinder_s_density_threshold_and_tilted_equilibrium_are_proven_roots(
     threshold = FloatingRootWitness(
         "threshold", "the lower zero of the upright cylinder's metacentric height", ("s0",), (Case({}, label="2r = L"),),
         body=Body.cylinder(sp.Rational(1, 2), 1), up=(0, 0, 1), density=rho, quantity=s0,
-        roots=((s0, Root.scan("metacentric height", rho, sp.Rational(1, 100), sp.Rational(49, 100), 24)),))
+        roots=((s0, Root.scan(measured("metacentric height"), rho, sp.Rational(1, 100), sp.Rational(49, 100), 24)),))
     lower = (2 - sp.sqrt(2)) / 4
     assert record_decision(_certified(threshold.run({"s0": chain(lower)})["s0"])) == "agrees"
     assert record_decision(_certified(threshold.run({"s0": chain(lower + sp.Rational(1, 10 ** 12))})["s0"])) \
@@ -546,7 +546,7 @@ def test_vertices_of_one_height_reach_the_water_together():
     phi = sp.Rational(1, 3)
     edge = FloatingWitness("edge", "the heeled cube with an edge at the water", ("a",), (Case({}, label="unit cube"),),
                            body=Body.box(1, 1, 1), up=(sp.sin(phi), sp.cos(phi), 0), density=1 - sp.tan(phi) / 2,
-                           quantity="waterplane area")
+                           quantity=measured("waterplane area"))
     out = edge.run({"a": chain(1 / sp.cos(phi))})["a"]
     assert record_decision(_certified(out)) == "agrees" and out.agrees and not out.undecided
     assert record_decision(_certified(edge.run({"a": chain(1 / sp.cos(phi) + sp.Rational(1, 10 ** 12))})["a"])) \

@@ -5,6 +5,7 @@ import sympy as sp
 
 from symfloat.engine.declare import cases_of, declarer, part_of
 from symfloat.engine.floating_witness import Body, FloatingWitness
+from symfloat.engine.measured import measured
 
 
 class _Derivation:
@@ -30,11 +31,11 @@ def test_declared_witnesses_take_the_module_defaults_unless_told():
     s = sp.Symbol("s", positive=True)
     d = _Derivation()
     floating = declarer(d, FloatingWitness, body=Body.box(2, 1, 1), density=s)
-    floating("draught", "", ("t",), (), "draught")
-    floating("lying", "", ["t"], (), "draught", up=(0, 1, 0))
+    floating("draught", "", ("t",), (), measured("draught"))
+    floating("lying", "", ["t"], (), measured("draught"), up=(0, 1, 0))
     first, second = d.witnesses
     assert first.up == (0, 0, 1) and second.up == (0, 1, 0) and second.targets == ("t",)
     assert first.body == second.body == Body.box(2, 1, 1) and first.density == s
     part = part_of(FloatingWitness, body=Body.box(2, 1, 1), density=s)
-    p = part(quantity="draught", density=sp.Rational(1, 2))
+    p = part(quantity=measured("draught"), density=sp.Rational(1, 2))
     assert (p.name, p.targets, p.cases, p.density) == ("", (), (), sp.Rational(1, 2))

@@ -57,9 +57,9 @@ EXACT = {                                               # closed forms at the ca
 }
 
 
-def witness(quantity, case=CASE, up=(0, 0, 1)):
-    return FloatingWitness(quantity, quantity, ("f",), (case,), body=Body.box(A, B, C), up=up, density=S,
-                           quantity=quantity)
+def witness(name, case=CASE, up=(0, 0, 1)):
+    return FloatingWitness(name, name, ("f",), (case,), body=Body.box(A, B, C), up=up, density=S,
+                           quantity=measured(name))
 
 
 def test_every_quantity_is_tested():
@@ -96,7 +96,7 @@ def test_a_sign_at_a_threshold_is_refused():
     # the square log at s = (3 - sqrt 3)/6 has metacentric height 0 (hasab, the thresholds)
     at = Case({A: 1, B: 4, C: 1, S: (3 - sp.sqrt(3)) / 6})
     w = FloatingWitness("sign", "sign", ("f",), (at,), body=Body.box(A, B, C), up=(1, 0, 0), density=S,
-                        quantity="stability sign")
+                        quantity=measured("stability sign"))
     with pytest.raises(ValueError, match="cannot decide the sign"):
         w.measure(at, w.methods[1])
 
@@ -132,9 +132,11 @@ TILT_EXACT = {
 
 
 def tilted(quantity, **kw):
+    """The tilted box's *quantity* (a name of TILT_QUANTITIES, or an expression in measured ones)."""
     kw.setdefault("up", (0, sp.Rational(1, 4), 1))
     return FloatingWitness("tilt", "tilt", ("f",), (TILTED,), body=Body.box(L_, W_, H_), density=S,
-                           reference=(0, 0, 1), quantity=quantity, **kw)
+                           reference=(0, 0, 1), quantity=measured(quantity) if isinstance(quantity, str) else quantity,
+                           **kw)
 
 
 def test_every_tilt_quantity_is_tested():
@@ -154,7 +156,7 @@ def test_an_expression_in_measured_quantities():
                         quantity=(measured("immersed volume") * measured("B - G, z"), measured("immersed volume")))
     assert [float(v) for v in w.measure(TILTED, w.methods[1])] == [-2.25, 3.0]
     with pytest.raises(ValueError, match="needs the reference"):
-        FloatingWitness("x", "x", ("f",), (TILTED,), body=Body.box(L_, W_, H_), density=S, quantity="righting arm")
+        FloatingWitness("x", "x", ("f",), (TILTED,), body=Body.box(L_, W_, H_), density=S, quantity=measured("righting arm"))
 
 
 def test_the_limit_of_the_arm_over_the_tilt_is_the_metacentric_height():
@@ -201,11 +203,13 @@ LOG = Case({W_: 2, H_: sp.Rational(9, 5), L_: 1, S: sp.Rational(1, 2)}, label="b
 
 
 def rooted(quantity, vanish, case=LOG, guard=(), at=None):
-    """*quantity* at the first zero of *vanish* as the tilt psi grows (scanned in 28 steps over [1/50, 7/5])."""
+    """*quantity* (a name, or an expression in measured ones) at the first zero of the quantity named *vanish* as the
+    tilt psi grows (scanned in 28 steps over [1/50, 7/5])."""
     return FloatingRootWitness("root", "root", ("f",), (case,), body=Body.box(L_, W_, H_),
-                               up=(0, sp.sin(PSI), sp.cos(PSI)), density=S, reference=(0, 0, 1), quantity=quantity,
-                               roots=((PSI, Root.scan(vanish, PSI, sp.Rational(1, 50), sp.Rational(7, 5), 28,
-                                                      guard=guard, at=at)),))
+                               up=(0, sp.sin(PSI), sp.cos(PSI)), density=S, reference=(0, 0, 1),
+                               quantity=measured(quantity) if isinstance(quantity, str) else quantity,
+                               roots=((PSI, Root.scan(measured(vanish) if isinstance(vanish, str) else vanish, PSI,
+                                                      sp.Rational(1, 50), sp.Rational(7, 5), 28, guard=guard, at=at)),))
 
 
 def test_the_zero_of_the_righting_arm_and_the_contact_of_a_base():
@@ -252,7 +256,7 @@ def test_witnesses_of_several_bodies_joined():
 def test_a_zero_found_inside_another():
     # the height H at which the zero of the arm (tan^2 = 3 H^2/4 - 2 by the wall-sided formula, W = 2) reaches the
     # upper base's contact (tan = H/2): 3 H^2/4 - 2 = H^2/4, H = 2 (the inner zero along the tilt, the outer along H)
-    inner = Root.scan("righting arm", PSI, sp.Rational(1, 50), sp.Rational(7, 5), 28)
+    inner = Root.scan(measured("righting arm"), PSI, sp.Rational(1, 50), sp.Rational(7, 5), 28)
     outer = FloatingRootWitness("H", "H", ("f",), (LOG,), body=Body.box(L_, W_, H_), up=(0, sp.sin(PSI), sp.cos(PSI)),
                                 density=S, reference=(0, 0, 1), quantity=H_,
                                 roots=((H_, Root.scan(measured("upper base above water"), H_, sp.Rational(17, 10),
@@ -301,7 +305,7 @@ def _root_witness(quantity, roots, density=DENS, params=None, methods=None):
 
 def test_the_tilt_at_which_the_top_face_reaches_the_water():
     from symfloat.engine.floating_witness import Root
-    w, case = _root_witness(sp.tan(PHI), ((PHI, Root("top clearance", PHI, [0.05 * k for k in range(1, 25)])),),
+    w, case = _root_witness(sp.tan(PHI), ((PHI, Root(measured("top clearance"), PHI, [0.05 * k for k in range(1, 25)])),),
                             params={DENS: sp.Rational(9, 10)})
     exact = 2 * sp.Rational(137, 100) * sp.Rational(1, 10)
     for method, tol in zip(w.methods, (1e-12, 1e-30)):
@@ -321,7 +325,7 @@ def test_an_oblique_equilibrium_is_a_root_of_the_potential_slope():
 
 def test_the_density_where_the_equilibrium_reaches_the_top_face_by_nested_roots():
     from symfloat.engine.floating_witness import Root, potential_slope
-    touch = Root("top clearance", PHI, [0.05 * k for k in range(1, 25)])
+    touch = Root(measured("top clearance"), PHI, [0.05 * k for k in range(1, 25)])
     slope_at_touch = Root(potential_slope(TILT_UP, PHI), DENS, [0.86 + 0.02 * k for k in range(6)],
                           roots=((PHI, touch),))
     from symfloat.engine.floating_witness import FLOATING_METHODS
@@ -335,7 +339,7 @@ def test_the_density_where_the_equilibrium_reaches_the_top_face_by_nested_roots(
 
 def test_a_root_that_is_not_on_its_grid_is_one_clear_error():
     from symfloat.engine.floating_witness import Root
-    w, case = _root_witness(PHI, ((PHI, Root("top clearance", PHI, [0.01, 0.02])),), params={DENS: sp.Rational(9, 10)})
+    w, case = _root_witness(PHI, ((PHI, Root(measured("top clearance"), PHI, [0.01, 0.02])),), params={DENS: sp.Rational(9, 10)})
     with pytest.raises(ValueError, match="no root"):
         w.measure(case, w.methods[0])
 
@@ -343,7 +347,7 @@ def test_a_root_that_is_not_on_its_grid_is_one_clear_error():
 def test_the_corners_of_a_cube_corner_up_at_half_density():
     # the plane through the centre normal to a body diagonal cuts the cube in a regular hexagon
     w = FloatingWitness("corners", "corners", ("f",), (CASE,), body=Body.box(1, 1, 1), up=(1, 1, 1),
-                        density=sp.Rational(1, 2), quantity="waterplane corners")
+                        density=sp.Rational(1, 2), quantity=measured("waterplane corners"))
     assert [w.measure(CASE, m) for m in w.methods] == [6, 6]
 
 
@@ -353,7 +357,7 @@ def test_a_quantity_at_other_parameters_beside_a_root():
     from symfloat.engine.floating_witness import At, Root
     gm = sp.Symbol("gm_r")
     w, case = _root_witness((gm, sp.tan(PHI)), ((gm, At(measured("metacentric height"), {PHI: 0})),
-                                                (PHI, Root("face clearance", PHI, [0.05 * k for k in range(1, 25)]))),
+                                                (PHI, Root(measured("face clearance"), PHI, [0.05 * k for k in range(1, 25)]))),
                             params={DENS: sp.Rational(9, 10)})
     h, s_ = sp.Rational(137, 100), sp.Rational(9, 10)
     exact = (1 / (12 * s_ * h) - h * (1 - s_) / 2, 2 * h * (1 - s_))
@@ -368,7 +372,7 @@ def test_a_water_plane_through_given_vertices():
     from symfloat.engine.floating_witness import CutWitness
     w = CutWitness("cut", "cut", ("f",), (CASE,), body=Body.box(1, 1, 1), up=(1, 1, 1),
                    through=(sp.Rational(1, 2), sp.Rational(1, 2), -sp.Rational(1, 2)),
-                   quantity=("immersed volume", "draught"))
+                   quantity=(measured("immersed volume"), measured("draught")))
     for method, tol in zip(w.methods, (1e-14, 1e-35)):
         volume, depth = w.measure(CASE, method)
         assert abs(volume - sp.N(sp.Rational(5, 6), 50)) <= tol and abs(depth - sp.N(2 / sp.sqrt(3), 50)) <= tol, method.name
@@ -405,10 +409,10 @@ R_, L2_, PHI_ = sp.symbols("r L phi", positive=True)
 UPRIGHT_GM = sp.Rational(1, 4 * 4) / sp.Rational(3, 10) - sp.Rational(7, 10) * 4 / 2    # r = 1, L = 4, s = 3/10
 
 
-def cylinder(quantity, up, s):
+def cylinder(name, up, s):
     case = Case({R_: 1, L2_: 4, S: s, PHI_: sp.atan(sp.Rational(1, 4))})
-    w = FloatingWitness(quantity, quantity, ("f",), (case,), body=Body.cylinder(R_, L2_), up=up, density=S,
-                        quantity=quantity)
+    w = FloatingWitness(name, name, ("f",), (case,), body=Body.cylinder(R_, L2_), up=up, density=S,
+                        quantity=measured(name))
     return [w.measure(case, m) for m in w.methods]
 
 
@@ -463,7 +467,7 @@ def test_a_body_with_a_given_centre_of_gravity():
     for q, exact in (("G above B", Fraction(1, 5)), ("metacentric height", Fraction(5, 6) - Fraction(1, 5)),
                      ("B below water", Fraction(1, 5))):
         w = FloatingWitness(q, q, ("f",), (CASE,), body=Loaded.of(Body.box(A, B, C), (0, 0, -C / 10)), density=S,
-                            quantity=q)
+                            quantity=measured(q))
         assert float(w.measure(CASE, w.methods[0])) == pytest.approx(float(exact), abs=1e-13)
         with mpmath.workdps(40):
             assert abs(w.measure(CASE, w.methods[1]) - mpmath.mpf(exact.numerator) / exact.denominator) < 1e-35
@@ -570,7 +574,7 @@ SPLIT_EXACT = {
 def test_the_immersed_part_of_a_tilted_box_split_at_the_lowest_point_of_its_water_line(quantity):
     from symfloat.engine.floating_witness import Marked
     w = FloatingWitness(quantity, quantity, ("f",), (TILTED,), body=Marked.of(Body.box(L_, W_, H_), (0, 0, 1)),
-                        up=(0, sp.Rational(1, 4), 1), density=S, quantity=quantity)
+                        up=(0, sp.Rational(1, 4), 1), density=S, quantity=measured(quantity))
     for method in w.methods:
         with mpmath.workdps(50):
             err = abs(w.measure(TILTED, method) - mpmath.mpf(sp.N(SPLIT_EXACT[quantity], 50)))
@@ -587,7 +591,7 @@ def test_the_split_parts_make_up_the_immersed_part():
     assert max(abs(v) for v in w.measure(TILTED, w.methods[1])) < 1e-35
     # marked along the tilted up vector itself, the plane is the water plane: nothing lies above it
     w = FloatingWitness("up", "", ("f",), (TILTED,), body=Marked.of(Body.box(L_, W_, H_), (0, sp.Rational(1, 4), 1)),
-                        up=(0, sp.Rational(1, 4), 1), density=S, quantity="upper part volume")
+                        up=(0, sp.Rational(1, 4), 1), density=S, quantity=measured("upper part volume"))
     assert abs(w.measure(TILTED, w.methods[1])) < 1e-35
 
 
@@ -631,21 +635,21 @@ def test_derivatives_along_a_parameter_by_central_differences():
     # I max of the upright 3 x 2 x 1 box is B A^3/12 (the waterplane A x B, A > B): d/dA = B A^2/4, d2/dA2 = B A/2
     from symfloat.engine.floating_witness import FloatingRootWitness
     w = FloatingRootWitness("d", "d", ("f",), (CASE,), body=Body.box(A, B, C), up=(0, 0, 1), density=S,
-                            quantity=(d1, d2), roots=((d1, Difference("I max", A, sp.Rational(1, 10))),
-                                                      (d2, Difference("I max", A, sp.Rational(1, 10), order=2))))
+                            quantity=(d1, d2), roots=((d1, Difference(measured("I max"), A, sp.Rational(1, 10))),
+                                                      (d2, Difference(measured("I max"), A, sp.Rational(1, 10), order=2))))
     for method, tol in zip(w.methods, (1e-12, 1e-28)):
         assert all(abs(v - sp.N(e, 50)) <= tol for v, e in zip(w.measure(CASE, method), (sp.Rational(9, 2), 3))), \
             method.name
     # with a root at each point: the tilt at which the top face reaches the water, tan phi_t = 2 h (1 - s), so
     # d tan(phi_t)/ds = -2 h
-    touch = Root("top clearance", PHI, [0.05 * k for k in range(1, 25)])
+    touch = Root(measured("top clearance"), PHI, [0.05 * k for k in range(1, 25)])
     w, case = _root_witness(d1, ((d1, Difference(sp.tan(PHI), DENS, sp.Rational(1, 100), roots=((PHI, touch),))),),
                             params={DENS: sp.Rational(9, 10)})
     for method, tol in zip(w.methods, (1e-9, 1e-28)):
         assert abs(w.measure(case, method) - sp.N(-2 * sp.Rational(137, 100), 50)) <= tol, method.name
     with pytest.raises(ValueError, match="order 1 or 2"):
-        Difference("I max", A, 1, order=3)
-    w, case = _root_witness(d1, ((d1, Difference("I max", A, 1)),), params={DENS: sp.Rational(9, 10)})
+        Difference(measured("I max"), A, 1, order=3)
+    w, case = _root_witness(d1, ((d1, Difference(measured("I max"), A, 1)),), params={DENS: sp.Rational(9, 10)})
     with pytest.raises(ValueError, match="needs its value"):
         w.measure(case, w.methods[0])
 
@@ -673,7 +677,7 @@ def test_a_root_read_only_by_a_later_grid_is_found_in_float64():
     from symfloat.engine.floating_witness import _SOLVED
     top = sp.Symbol("psi_top")
     roots = ((top, Root.scan(-measured("upper base above water"), PSI, sp.Rational(1, 50), sp.Rational(7, 5), 28)),
-             (PSI, Root.scan("righting arm", PSI, sp.Rational(1, 50), top, 28)))
+             (PSI, Root.scan(measured("righting arm"), PSI, sp.Rational(1, 50), top, 28)))
     found = FloatingRootWitness("root", "root", ("f",), (LOG,), body=Body.box(L_, W_, H_),
                                 up=(0, sp.sin(PSI), sp.cos(PSI)), density=S, reference=(0, 0, 1),
                                 quantity=sp.tan(PSI) ** 2, roots=roots)
@@ -694,7 +698,7 @@ def test_a_whole_measures_its_parts_at_their_methods_or_the_least_precise_of_the
     psi = sp.Symbol("psi")
     plain = FloatingWitness("", "", (), (), body=Body.box(2, 1, 1), density=sp.Rational(1, 2))
     limit = FloatingWitness("", "", (), (), body=Body.box(2, 1, 1), density=sp.Rational(1, 2),
-                            up=(sp.sin(psi), 0, sp.cos(psi)), quantity="draught",
+                            up=(sp.sin(psi), 0, sp.cos(psi)), quantity=measured("draught"),
                             limit=(psi, 0), methods=LIMIT_METHODS)
     assert Joined("j", "", (), (), parts=(plain, plain)).methods == FLOATING_METHODS
     assert Combined("c", "", (), (), parts=(plain, limit), values=(measured("part 1"),)).methods == LIMIT_METHODS

@@ -28,12 +28,30 @@ def test_a_measured_quantity_is_a_word_and_no_parameter():
         measured("draught", of=x)                     # only an integral takes an integrand
 
 
+def test_a_floating_quantity_has_one_spelling():
+    # the bare string is refused wherever a floating quantity is named: alone, in a tuple, a root's, a guard's
+    from symfloat.engine.floating_witness import At, Difference, Root
+    for wrong in ("draught", (measured("draught"), "immersed volume")):
+        with pytest.raises(ValueError, match=r"measured\('(draught|immersed volume)'\)"):
+            _cube(wrong)
+    with pytest.raises(ValueError, match="measured"):
+        Root("face clearance", x, (0, 1))
+    with pytest.raises(ValueError, match="measured"):
+        Root(measured("face clearance"), x, (0, 1), guard=("top clearance",))
+    with pytest.raises(ValueError, match="measured"):
+        At("G above B", {x: 0})
+    with pytest.raises(ValueError, match="measured"):
+        Difference("I max", x, 1)
+    assert _cube(measured("draught")).quantity == measured("draught") == FloatingWitness(
+        "", "", (), ONE, body=Body.box(1, 1, 1), density=sp.Rational(1, 2)).quantity      # the default
+
+
 def test_each_kind_reads_its_names_and_refuses_the_others():
     w = _cube(2 * measured("immersed volume") - measured("draught"))
     assert float(w.measure(w.instances[0], w.methods[0])) == pytest.approx(0.5, abs=1e-12)
     with pytest.raises(ValueError, match="unknown quantity"):
         _cube(measured("part 1"))
-    parts = (_cube("draught"), _cube("draught", sp.Rational(1, 4)))
+    parts = (_cube(measured("draught")), _cube(measured("draught"), sp.Rational(1, 4)))
     both = Combined("both", "", (), ONE, parts=parts, values=(measured("part 1") - measured("part 2"),))
     assert float(both.measure(both.instances[0], both.methods[0])) == pytest.approx(0.25, abs=1e-12)
     with pytest.raises(ValueError, match="part 3"):

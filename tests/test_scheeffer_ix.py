@@ -12,6 +12,7 @@ import pytest
 import sympy as sp
 
 from symfloat.engine.check import check_derivation
+from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case, record_decision
 from symfloat.geometry.floating import box, floating_state
 from symfloat.model.prediction import Scene
@@ -136,7 +137,7 @@ def test_the_measured_slope_is_the_derivative_of_the_clipped_potential():
             w = FloatingWitness("slope", "", (), (), body=WIT.SECTION, up=WIT.UP_C, density=ST.s, quantity=quantity)
             return w.measure(Case({**params, WIT.ph: q}), w.methods[0])
         h = sp.Rational(1, 10 ** 6)
-        quotient = (at(ph + h, "G above B") - at(ph - h, "G above B")) / (2 * float(h))
+        quotient = (at(ph + h, measured("G above B")) - at(ph - h, measured("G above B"))) / (2 * float(h))
         assert abs(quotient - at(ph, WIT.SLOPE_C)) < 1e-8
 
 
@@ -329,7 +330,7 @@ def test_first_region_oblique_stability_on_the_clipped_box():
     from symfloat.engine.floating_witness import FloatingRootWitness
     case = Case({ST.a: sp.Rational(21, 20), ST.b: 1, ST.c: sp.Rational(11, 10), ST.s: sp.Rational(7, 10)})
     for up, equilibrium, sign in ((WIT.UP_C, WIT.EQ_C, 1), (WIT.UP_A, WIT.EQ_A, -1)):
-        w = FloatingRootWitness("oblique", "", (), (), body=WIT.BOX, up=up, density=ST.s, quantity="stability sign",
+        w = FloatingRootWitness("oblique", "", (), (), body=WIT.BOX, up=up, density=ST.s, quantity=measured("stability sign"),
                                 roots=((WIT.ph, equilibrium),))
         assert w.measure(case, w.methods[0]) == sign
 

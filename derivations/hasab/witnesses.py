@@ -51,12 +51,12 @@ for lying_name, lying_targets, named in (("draught", ("s",), "draught"), ("G-abo
                                         ("stability-sign", ("condition",), "stability sign"),
                                         ("stable-upright", ("ranges",), "stable")):
     d.witness(FloatingWitness(lying_name, f"{QUANTITIES[named][0]}, clipped prism lying", lying_targets, DENSITIES,
-                              body=LYING, up=UPRIGHT_UP, density=rho, quantity=named))
+                              body=LYING, up=UPRIGHT_UP, density=rho, quantity=measured(named)))
 d.witness(FloatingWitness("G-height-heeled", "height of G above the heeled water plane, clipped prism",
-                          ("G-height",), ECASES, body=LYING, up=UP, density=rho, quantity="G above water"))
+                          ("G-height",), ECASES, body=LYING, up=UP, density=rho, quantity=measured("G above water")))
 d.witness(FloatingWitness("stability-sign-energy", "sign of the clipped lying prism's metacentric height",
                           ("energy-principle",), DENSITIES, body=LYING, up=UPRIGHT_UP, density=rho,
-                          quantity="stability sign"))
+                          quantity=measured("stability sign")))
 
 # the energy per l g is rho times the height of G above B (weight times it, Scheeffer's V1 n): its value upright and
 # its coefficient of psi^2 interpolated at small heels psi
@@ -75,7 +75,7 @@ d.witness(Combined("energy-change", "c2 alpha^2: the alpha^2 coefficient of the 
 # standing upright (the remark)
 def gm_zero(lo, hi, which):
     """The first or last zero in rho of the clipped metacentric height, scanned from lo to hi in 18 steps."""
-    return Root.scan("metacentric height", rho, lo, hi, 18, which=which)
+    return Root.scan(measured("metacentric height"), rho, lo, hi, 18, which=which)
 
 
 d.witness(FloatingRootWitness("thresholds-lying", "zeros of the clipped metacentric height of the lying prism in rho",

@@ -29,14 +29,14 @@ def upright(name, description, targets, quantity):
 
 for name, description, targets, quantity in (
         ("stability-sign", "sign of the clipped upright box's metacentric height I_min/V - (G - B)",
-         ("criterion", "e-sign"), "stability sign"),
+         ("criterion", "e-sign"), measured("stability sign")),
         ("metacentre-inertia", "z_M = (I_min/V - (G - B)) + z_G of the clipped upright box", ("z_M",),
          measured("metacentric height") + measured("G above water")),
         ("stability-function", "e = d/(2c^2) (I_min/V - (G - B)) of the clipped box", ("e",),
          d / (2 * c ** 2) * measured("metacentric height")),
-        ("centre-of-gravity", "height of G above the water plane, clipped box", ("z_G",), "G above water"),
+        ("centre-of-gravity", "height of G above the water plane, clipped box", ("z_G",), measured("G above water")),
         ("centre-of-buoyancy", "height of B above the water plane, clipped box", ("z_B",), -measured("B below water")),
-        ("displaced-volume", "volume of the clipped immersed part", ("V_b",), "immersed volume"),
+        ("displaced-volume", "volume of the clipped immersed part", ("V_b",), measured("immersed volume")),
         ("displaced-mass", "rho_w times the clipped immersed volume", ("M_b", "M_s", "M_b=M_s"),
          rho_w * measured("immersed volume")),
         ("section-area", "clipped immersed volume over the length 2a", ("section",),
@@ -46,10 +46,10 @@ for name, description, targets, quantity in (
 ARM = FloatingWitness("", "", (), (), body=HULL, up=HEEL, density=d / (2 * c), quantity=potential_slope(HEEL, psi),
                       limit=(psi, 1), methods=LIMIT_METHODS)
 dv.witness(Combined("metacentre-heel", "z_M = lim m/phi + z_G: righting arm of the clipped heeled box, extrapolated",
-                    ("z_M",), CASES, parts=(ARM, upright("", "", (), "G above water")),
+                    ("z_M",), CASES, parts=(ARM, upright("", "", (), measured("G above water"))),
                     values=(measured("part 1") + measured("part 2"),)))
 dv.witness(Combined("radius-heel", "BM = lim m/phi + (z_G - z_B) from the clipped heeled box", ("radius",), CASES,
-                    parts=(ARM, upright("", "", (), "G above B")), values=(measured("part 1") + measured("part 2"),)))
+                    parts=(ARM, upright("", "", (), measured("G above B"))), values=(measured("part 1") + measured("part 2"),)))
 # the density at which the box floats with draught d: the share of its volume below the plane d above its bottom
 dv.witness(CutWitness("density-ratio", "clipped volume below depth d over the box volume", ("density",), CASES,
                       body=HULL, up=UPRIGHT_UP, through=(0, 0, d - c),

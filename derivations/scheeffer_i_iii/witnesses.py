@@ -37,20 +37,20 @@ _w("wedges-e-k", "V3 e = V3 x3 + V4 x4 and V3 k = V3 y3 + V4 y4 of the clipped w
    (measured("immersed wedge moment, horizontal") + measured("emerged wedge moment, horizontal"),
     measured("immersed wedge moment, vertical") + measured("emerged wedge moment, vertical")))
 _w("wedge-3", "static moments of the clipped immersed wedge", ("moments-10a",),
-   ("immersed wedge moment, vertical", "immersed wedge moment, horizontal"))
+   (measured("immersed wedge moment, vertical"), measured("immersed wedge moment, horizontal")))
 _w("wedge-4", "static moments of the clipped emerged wedge", ("moments-10b",),
-   ("emerged wedge moment, vertical", "emerged wedge moment, horizontal"))
-_w("wedge-volume-3", "volume of the clipped immersed wedge", ("volume-V3",), "immersed wedge volume")
-_w("wedge-volume-4", "volume of the clipped emerged wedge", ("volume-V4",), "emerged wedge volume")
+   (measured("emerged wedge moment, vertical"), measured("emerged wedge moment, horizontal")))
+_w("wedge-volume-3", "volume of the clipped immersed wedge", ("volume-V3",), measured("immersed wedge volume"))
+_w("wedge-volume-4", "volume of the clipped emerged wedge", ("volume-V4",), measured("emerged wedge volume"))
 _w("wedge-volume-over-tg", "clipped wedge volumes over tg phi (both wedges)", ("moments-equal",),
    measured("emerged wedge volume") / sp.tan(phi))
 _w("axis-position", "where the tilted water plane meets the old one (clipping, draught)", ("axis-centroid",),
-   "axis position")
+   measured("axis position"))
 _w("buoyancy-body-frame", "centre of buoyancy of the clipped tilted body in the body frame, times V1",
    ("moments-raw", "moments-6"), (measured("immersed volume") * measured("B - G, x"),
                                   -measured("immersed volume") * measured("B - G, z")))
 _w("buoyancy-world-frame", "centre of buoyancy of the clipped tilted body in the world frame", ("rotation-5",),
-   ("righting arm", "G above B"))
+   (measured("righting arm"), measured("G above B")))
 _w("righting-moment", "V1 m, V1 n of the clipped tilted body", ("moments-7",),
    (measured("immersed volume") * measured("righting arm"), measured("immersed volume") * measured("G above B")))
 _w("righting-moment-m", "V1 m of the clipped tilted body", ("moment-12",),
@@ -87,7 +87,7 @@ def _limit(name, description, targets, quantity):
 
 
 _limit("righting-arm-limit", "lim m(psi)/psi from the clipped heeled body (extrapolated)",
-       ("duhamel-16", "general-body"), "righting arm")
+       ("duhamel-16", "general-body"), measured("righting arm"))
 _limit("wedge-limits", "leading terms of the clipped immersed wedge's moments (extrapolated)", ("series-3",),
        (measured("immersed wedge moment, horizontal"), measured("immersed wedge moment, vertical") / psi))
 _limit("wedge-limits-4", "leading terms of the clipped emerged wedge's moments (extrapolated)", ("series-4",),

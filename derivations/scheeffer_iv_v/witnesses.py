@@ -143,7 +143,7 @@ _tilted("Tmu", "moment of the clipped waterplane II about the axis at the angle 
         (("rect-long", R(1, 3), {mu: R(1, 3)}), ("quad-p", R(6, 5), {mu: R(6, 5)}), ("tri", R(7, 10), {mu: R(7, 10)})))
 _tilted("D2", "V times the metacentric height of the clipped tilted prism", ("33", "43", "43-again"),
         V_ * measured("metacentric height"), EQ)
-_tilted("D2-sign", "sign of the metacentric height of the clipped tilted prism", ("claim-43a",), "stability sign",
+_tilted("D2-sign", "sign of the metacentric height of the clipped tilted prism", ("claim-43a",), measured("stability sign"),
         NONISO)
 _tilted("Tm-excess", "moment of II about EF minus V times the height of G over B (clipped)", ("43-Tm",),
         T2_ - V_ * GB, EQ)

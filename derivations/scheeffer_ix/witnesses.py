@@ -58,20 +58,20 @@ UP = (C("a = 1, b = 2, c = 3, s = 3/10", a=1, b=2, c=3, s="0.3"), C("a = 3/2, b 
 GM_MAX = measured("I max") / measured("immersed volume") - measured("G above B")     # the metacentric height about the a-axis
 UPRIGHT = (0, 1, 0)
 floating("upright-min", "metacentric height about the axis parallel to c, upright (clipped, I_min for c > a)",
-         ("122", "stability-condition"), UP, "metacentric height", up=UPRIGHT)
+         ("122", "stability-condition"), UP, measured("metacentric height"), up=UPRIGHT)
 floating("upright-min-12", "12 s/b x the same", ("123", "132a"), UP, 12 * s / b * measured("metacentric height"),
          up=UPRIGHT)
 floating("upright-max", "metacentric height about the axis parallel to a (I_max), upright (clipped)", ("T11-V1",), UP,
          GM_MAX, up=UPRIGHT)
 floating("upright-max-12", "12 s/b x the same", ("124",), UP, 12 * s / b * GM_MAX, up=UPRIGHT)
-floating("moments", "smallest waterplane moment, upright (clipped)", ("T1",), UP, "I min", up=UPRIGHT)
-floating("largest", "largest waterplane moment, upright (clipped)", ("largest-moment",), UP, "I max", up=UPRIGHT)
+floating("moments", "smallest waterplane moment, upright (clipped)", ("T1",), UP, measured("I min"), up=UPRIGHT)
+floating("largest", "largest waterplane moment, upright (clipped)", ("largest-moment",), UP, measured("I max"), up=UPRIGHT)
 floating("volume-height", "submerged volume and height of G above B, upright (clipped)", ("V1-e1",), UP,
-         ("immersed volume", "G above B"), up=UPRIGHT)
+         (measured("immersed volume"), measured("G above B")), up=UPRIGHT)
 floating("moment-volume-height", "I_min and volume x height of G above B, upright (clipped)", ("T1-V1e1",), UP,
-         ("I min", measured("immersed volume") * measured("G above B")), up=UPRIGHT)
+         (measured("I min"), measured("immersed volume") * measured("G above B")), up=UPRIGHT)
 floating("moment-difference", "I_max - I_min and the moments, upright (clipped)", ("127",), UP,
-         ("I max", "I min", measured("I max") - measured("I min")), up=UPRIGHT)
+         (measured("I max"), measured("I min"), measured("I max") - measured("I min")), up=UPRIGHT)
 floating("moment-difference-2", "I_max - I_min, upright (clipped)", ("126",), UP,
          measured("I max") - measured("I min"), up=UPRIGHT)
 floating("moment-difference-3", "I_min - I_max, upright (clipped)", ("128-unstable",), UP,

@@ -381,5 +381,5 @@ for claim_name, example, r_, s_ in (("example-8-claim", "ex8-claim", 30, sp.Rati
     body_ = Body.cylinder(r_, 40)
     d.witness(Joined(claim_name, "signs of the upright metacentric height and of the righting arm where the upper "
                      "base meets the water (positive: no tilted equilibrium before)", (example,), one,
-                     parts=(FloatingWitness("upright", "", (), (), body=body_, density=s_, quantity="stability sign"),
+                     parts=(FloatingWitness("upright", "", (), (), body=body_, density=s_, quantity=measured("stability sign")),
                             cyl_root("arm", "", (), (), sp.sign(ARM_C), TOP, body=body_, density=s_))))

@@ -17,7 +17,7 @@ PRISM, CUBE_BODY, UNIT_CUBE = Body.box(a, a, b), Body.box(b, b, b), Body.box(1, 
 PHI_GRID = tuple(0.005 + 0.025 * k for k in range(62))
 PHIT_GRID = tuple(0.005 + 0.1 * k for k in range(16))   # the clearance decreases monotonically in the first domain
 EQUILIBRIUM = Root(GZW, phi, PHI_GRID)             # the oblique equilibrium: the first zero of GZ in phi
-TOUCH = Root("face clearance", phi, PHIT_GRID)     # the tilt at which an end face reaches the water
+TOUCH = Root(measured("face clearance"), phi, PHIT_GRID)     # the tilt at which an end face reaches the water
 ph1, pht, ws, gm0 = sp.symbols("varphi_1w varphi_tw omega_w GM_0w")    # measured: the roots and the upright GM
 
 
@@ -31,22 +31,22 @@ UPRIGHT = (0, 0, 1)
 UP = (C("a = 1, b = 2, s = 3/10", a=1, b=2, s="0.3"), C("a = 3/2, b = 1, s = 4/5", a="1.5", b=1, s="0.8"),
       C("a = 1, b = 1, s = 1/2", a=1, b=1, s="0.5"))
 floating("square-moments", "waterplane moment and area of the upright square prism (clipped)", ("square-moments",),
-         UP, ("I min", "waterplane area"), up=UPRIGHT)
+         UP, (measured("I min"), measured("waterplane area")), up=UPRIGHT)
 # a centred, centrally symmetric body at s = 1/2 has its water plane through the centre: the draught is then the
 # largest distance of a point from the plane through the centre normal to up
 floating("corner-distance", "largest distance of a vertex of the base from the axis (draught at s = 1/2 with up "
-         "towards a corner)", ("OB",), UP, "draught", body=Body.box(a, a, 1), up=(1, 1, 0), density=half)
+         "towards a corner)", ("OB",), UP, measured("draught"), body=Body.box(a, a, 1), up=(1, 1, 0), density=half)
 OMC = (C("a = 1, omega = 0.3", a=1, omega="0.3"), C("a = 3/2, omega = 0.7", a="1.5", omega="0.7"),
        C("a = 2, omega = 0.05", a=2, omega="0.05"))
 floating("largest-ordinate", "largest distance xi of a base vertex on the sinking side (draught at s = 1/2, up "
-         "along xi)", ("u-m",), OMC, "draught", body=Body.box(a, a, 1), up=(-sp.sin(om), sp.cos(om), 0), density=half)
+         "along xi)", ("u-m",), OMC, measured("draught"), body=Body.box(a, a, 1), up=(-sp.sin(om), sp.cos(om), 0), density=half)
 floating("displacement-tilted", "submerged volume of the clipped prism heeled by 0.2 about an axis at omega = 0.3",
-         ("V1",), UP, "immersed volume", up=tuple(u.subs({phi: sp.Rational(1, 5), om: sp.Rational(3, 10)}) for u in UPV))
-floating("T-over-V", "I_min / submerged volume, upright (clipped)", ("T1-over-V1",), UP, "metacentric radius",
+         ("V1",), UP, measured("immersed volume"), up=tuple(u.subs({phi: sp.Rational(1, 5), om: sp.Rational(3, 10)}) for u in UPV))
+floating("T-over-V", "I_min / submerged volume, upright (clipped)", ("T1-over-V1",), UP, measured("metacentric radius"),
          up=UPRIGHT)
-floating("e1-clipped", "height of G above B, upright (clipped)", ("e1",), UP, "G above B", up=UPRIGHT)
+floating("e1-clipped", "height of G above B, upright (clipped)", ("e1",), UP, measured("G above B"), up=UPRIGHT)
 floating("metacentric-height", "metacentric height I_min/V - BG, upright (clipped)", ("upright-condition",), UP,
-         "metacentric height", up=UPRIGHT)
+         measured("metacentric height"), up=UPRIGHT)
 floating("duhamel-75", "12 s/b x metacentric height, upright (clipped)", ("75", "78"), UP,
          12 * s / b * measured("metacentric height"), up=UPRIGHT)
 floating("duhamel-75-unstable", "-12 s/b x metacentric height, upright (clipped)", ("75-unstable",), UP,
@@ -76,7 +76,7 @@ floating("oblique-77", "(a/b)^2/2 (tan^2 phi_t(45 deg) - tan^2 phi_1), clipped",
          Q2 / 2 * (sp.tan(pht) ** 2 - sp.tan(phi) ** 2), roots=AT_45)
 floating("oblique-78a", "-12 s/b GM upright and (a/b)^2/2 (tan^2 phi_t(45 deg) - tan^2 phi_1), clipped", ("78a",),
          R78A, (-12 * s / b * gm0, Q2 / 2 * (sp.tan(pht) ** 2 - sp.tan(phi) ** 2)),
-         roots=((gm0, At("metacentric height", {phi: 0})),) + AT_45)
+         roots=((gm0, At(measured("metacentric height"), {phi: 0})),) + AT_45)
 # the region of (78c): 2(1-s)(4s-1) <= (a/b)^2 < (1-s)(7s-1) (s > 1/2) and its mirror
 R78C = (C("a = 53/50, b = 1, s = 7/10", a="1.06", b=1, s="0.7"),
         C("a = 53/50, b = 1, s = 3/10", a="1.06", b=1, s="0.3"),
@@ -87,7 +87,7 @@ floating("oblique-78c", "(a/b)^2/2 (tan^2 phi_1 - tan^2 phi_t(45 deg)), phi_1 at
 floating("oblique-78e", "(a/b)^2/2 (tan^2 phi_1 - tan^2 phi_t(0)), clipped", ("78e",), R78C + R78A[:1],
          Q2 / 2 * (sp.tan(ph1) ** 2 - sp.tan(pht) ** 2), roots=EDGE + ((om, 0), (pht, TOUCH)))
 # omega*: the axis direction at which an end face reaches the water at the equilibrium tilt phi_1(omega = 0)
-OMEGA_STAR = EDGE + ((phi, ph1), (om, Root("face clearance", om, tuple(0.001 + 0.02 * k for k in range(40)))))
+OMEGA_STAR = EDGE + ((phi, ph1), (om, Root(measured("face clearance"), om, tuple(0.001 + 0.02 * k for k in range(40)))))
 floating("limit-omega", "sin^2(45 deg + omega*), omega* the clipped root of the face clearance at phi_1",
          ("78d",), R78C, sp.sin(pi / 4 + om) ** 2, roots=OMEGA_STAR)
 
@@ -99,7 +99,7 @@ floating("cube-duhamel-2", "2 s/b x metacentric height of the upright cube (clip
          2 * s / b * measured("metacentric height"), body=CUBE_BODY, up=UPRIGHT)
 ONE = (Case({}, label="unit cube"),)
 s_up, s_lo = sp.symbols("s_+w s_-w")
-UPRIGHT_S = tuple((sym, Root("metacentric height", s, tuple(0.5 + sg * 0.01 * k for k in range(1, 50))))
+UPRIGHT_S = tuple((sym, Root(measured("metacentric height"), s, tuple(0.5 + sg * 0.01 * k for k in range(1, 50))))
                   for sym, sg in ((s_up, 1), (s_lo, -1)))          # scanned from 1/2 outwards
 floating("cube-upright-thresholds", "densities where the clipped upright cube's metacentric height vanishes",
          ("79",), ONE, (s_up, s_lo), body=UNIT_CUBE, up=UPRIGHT, roots=UPRIGHT_S)
@@ -143,11 +143,11 @@ floating("half-cube-turned", "potential change of the clipped cube (s = 1/2, phi
          "its main axis", ("half-stable",), (C("a = 1, omega = 0.1", a=1, omega="0.1"),
                                              C("a = 2, omega = 0.3", a=2, omega="0.3")),
          measured("G above B") - gm0, body=Body.box(a, a, a), density=half,
-         roots=((phi, pi / 4), (gm0, At("G above B", {om: 0}))))
+         roots=((phi, pi / 4), (gm0, At(measured("G above B"), {om: 0}))))
 floating("half-tilt-clipped", "clipped equilibrium tilt of the cube at s = 1/2 (root of GZ)", ("half-tilt",), ONE,
          phi, body=UNIT_CUBE, density=half, roots=((om, 0), (phi, EQUILIBRIUM)))
 floating("half-waterplane", "waterplane area of the clipped cube at s = 1/2, phi = 45 deg", ("half-waterplane",),
-         (C("b = 1", b=1), C("b = 3/2", b="1.5")), "waterplane area", body=CUBE_BODY, density=half,
+         (C("b = 1", b=1), C("b = 3/2", b="1.5")), measured("waterplane area"), body=CUBE_BODY, density=half,
          roots=((phi, pi / 4), (om, 0)))
 
 
@@ -170,10 +170,10 @@ NG = (by_radius("r = 1, n = 3, omega = 0.3", 3, r=1, omega="0.3"),
       by_radius("r = 3/2, n = 5, omega = 0.5", 5, r="1.5", omega="0.5"),
       by_radius("r = 1, n = 8, omega = 0.7", 8, r=1, omega="0.7"))   # omega only enters the misread 'omega tg' prints
 floating("polygon-moment", "moment of the regular polygon about an axis through its centre (clipped waterplane)",
-         ("84", "85", "86-nA", "87", "87-cos2", "89", "89a", "86a"), NG, "I min", body=None, up=UPRIGHT, density=half)
+         ("84", "85", "86-nA", "87", "87-cos2", "89", "89a", "86a"), NG, measured("I min"), body=None, up=UPRIGHT, density=half)
 floating("polygon-moment-2", "2 T_1 and T_1 of the regular polygon (clipped waterplane)", ("86",), NG,
          (2 * measured("I min"), measured("I min")), body=None, up=UPRIGHT, density=half)
-floating("polygon-area", "area of the regular polygon (clipped waterplane)", ("area",), NG, "waterplane area",
+floating("polygon-area", "area of the regular polygon (clipped waterplane)", ("area",), NG, measured("waterplane area"),
          body=None, up=UPRIGHT, density=half)
 # the largest distance of a vertex from a line through the centre: the freeboard above a water plane normal to
 # that line plus the water plane's height above the centre (any density)
@@ -184,8 +184,8 @@ floating("polygon-apothem", "distance of the centre from the midpoint of a side 
          up=(sp.cos(pi / n), sp.sin(pi / n), 0), density=half)
 NG34 = {k: (by_radius("r = 1", k, r=1), by_radius(f"r = {v}", k, r=v)) for k, v in ((3, "3/2"), (4, "2/3"))}
 floating("triangle-moment", "moment of the equilateral triangle (clipped waterplane)", ("triangle-T1",), NG34[3],
-         "I min", body=None, up=UPRIGHT, density=half)
-floating("square-moment", "moment of the square (clipped waterplane)", ("square-T1",), NG34[4], "I min", body=None,
+         measured("I min"), body=None, up=UPRIGHT, density=half)
+floating("square-moment", "moment of the square (clipped waterplane)", ("square-T1",), NG34[4], measured("I min"), body=None,
          up=UPRIGHT, density=half)
 floating("polygon-ordinate", "largest distance of a vertex from the axis on the sinking side (reach along xi)",
          ("88",), (by_radius("r = 1, n = 3, omega = 0.7", 3, r=1, omega="0.7"),
@@ -194,7 +194,7 @@ floating("polygon-ordinate", "largest distance of a vertex from the axis on the 
          measured("freeboard") + measured("water level"), body=None,
          up=(sp.cos(pi / n + om), sp.sin(pi / n + om), 0), density=half)
 floating("triangle-at-area", "moment of the equilateral triangle of area F (clipped waterplane)",
-         ("triangle-largest",), (by_area("F = 1", 3, F=1), by_area("F = 5/2", 3, F="2.5")), "I min", body=None,
+         ("triangle-largest",), (by_area("F = 1", 3, F=1), by_area("F = 5/2", 3, F="2.5")), measured("I min"), body=None,
          up=UPRIGHT, density=half)
 floating("ngon-tilt", "tan^2 of the clipped equilibrium tilt of regular n-gon prisms of area F", ("54-again",),
          (by_area("F = 1, n = 6, b = 9/10, s = 7/10", 6, F=1, b="0.9", s="0.7"),

@@ -152,7 +152,7 @@ MEASURE = {
     "Tmu": quad(turned(mu), turned(mu)), "T2": (quad(HV, HV), quad(EV, EV)), "Ks": quad(HV, EV),
     "dT": (SLOPE_T.subs(AV, mu), sp.tan(2 * A1)), "cos2": sp.cos(2 * A1) ** 2,
     "wp-int": (AW * CW.dot(EV), AW * CW.dot(HV)), "mnF2": (CW.dot(HV), -CW.dot(EV), AW),
-    "Imin": "I min", "extremes": ((measured("I min") - TW.trace() / 2) ** 2, (measured("I max") - TW.trace() / 2) ** 2),
+    "Imin": measured("I min"), "extremes": ((measured("I min") - TW.trace() / 2) ** 2, (measured("I max") - TW.trace() / 2) ** 2),
     "D": V1M * measured("metacentric height"), "cD": CPH * V1M * measured("metacentric height"),
     "2cD": 2 * CPH * V1M * measured("metacentric height"), "Iminc": CPH * measured("I min"),
     "V3e3c": CPH * V1M * measured("G above B"),
@@ -263,4 +263,4 @@ def _dry_face(nm):
 d.witness(FloatingWitness("F-moments", "central moments of F (clipped upright prism over the dry part of the base)",
                           ("113", "117-T"), lambda: tuple(_dry_face(nm) for nm in ("rect", "tri", "pent-eq")),
                           body=None, up=(0, 0, 1), density=R(1, 2),
-                          quantity=("waterplane tensor, xx", "waterplane tensor, yy")))
+                          quantity=(measured("waterplane tensor, xx"), measured("waterplane tensor, yy"))))

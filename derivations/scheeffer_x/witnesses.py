@@ -78,7 +78,7 @@ floating("xy-HPB", "int xy df over HPB (clipped waterplane of the prism over it)
 floating("xy-GPB", "int xy df over GPB (clipped waterplane of the prism over it)", ("GPB",), FACE, INT_XY,
          up=(0, 0, 1), density=half, body=GPB)
 floating("area-BHG", "area of the triangle BHG (clipped waterplane of the prism over it)", ("area",), FACE,
-         "waterplane area", up=(0, 0, 1), density=half, body=BHG)
+         measured("waterplane area"), up=(0, 0, 1), density=half, body=BHG)
 
 
 # ---- (171): the dry part F of the top face (exact polygon moments) and the clipped potential's slope where the
@@ -104,7 +104,7 @@ floating("171-clipped", "moments of the dry face part F; clipped dE/dtheta at th
                     _face_F("x = 1/10, s = 3/4", "0.1", "0.75")),
          (2 * T_F, z_F, r2 * s * z_F ** 3 * sp.sqrt(1 + sp.tan(th) ** 2) / (1 - s) * SLOPE),
          roots=((th, Root(LEG - xl, th, TH_GRID)),))
-TOUCH_B = Root("top clearance", th, tuple(0.2 + 0.05 * j for j in range(9)))     # the corner B at the water
+TOUCH_B = Root(measured("top clearance"), th, tuple(0.2 + 0.05 * j for j in range(9)))     # the corner B at the water
 floating("172-clipped", "density where the clipped equilibrium in the diagonal plane has its corner B at the water",
          ("172-number",), (Case({}, label="unit cube"),), s,
          roots=((s, Root(SLOPE, s, (0.765, 0.77, 0.775, 0.78), roots=((th, TOUCH_B),))),))
@@ -127,10 +127,10 @@ def _root_slope(sv, flip):
 p_w = sp.Symbol("p_w")
 ONE = (Case({}, label="unit cube"),)
 floating("pentagon-count", "vertices of the clipped waterplane at the root of (171), s = 3/5", ("pentagon-exists",),
-         lambda: (Case({p_w: _root_slope(sp.Rational(3, 5), False)}, label="unit cube"),), "waterplane corners",
+         lambda: (Case({p_w: _root_slope(sp.Rational(3, 5), False)}, label="unit cube"),), measured("waterplane corners"),
          up=(-p_w, -p_w, 1), density=sp.Rational(3, 5))
 floating("pentagon-count-dual", "vertices of the clipped waterplane at the dual root, s = 2/5", ("dual-exists",),
-         lambda: (Case({p_w: _root_slope(sp.Rational(2, 5), True)}, label="unit cube"),), "waterplane corners",
+         lambda: (Case({p_w: _root_slope(sp.Rational(2, 5), True)}, label="unit cube"),), measured("waterplane corners"),
          up=(p_w, p_w, -1), density=sp.Rational(2, 5))
 t1_, t2_, e1p, e1m, e2p, e2m = sp.symbols("theta_1w theta_2w E_1p E_1m E_2p E_2m")
 EQ_GRID = tuple(0.25 + 0.05 * j for j in range(10))
@@ -147,12 +147,12 @@ DIAGONAL = (1, 1, 1)
 cut("tetra-dry", "dry volume of the clipped cube above the plane through three face diagonals", ("tetra",),
     (C("a = 1", a=1), C("a = 3/2", a="1.5")), a ** 3 - measured("immersed volume"), DIAGONAL, (a / 2, a / 2, -a / 2))
 cut("five-sixths", "submerged fraction of the unit cube below the plane through three face diagonals",
-    ("five-sixths",), ONE, "immersed volume", DIAGONAL, (half, half, -half), body=UNIT)
+    ("five-sixths",), ONE, measured("immersed volume"), DIAGONAL, (half, half, -half), body=UNIT)
 floating("tri-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1 - L^3/6", ("tri-unstable",),
-         (C("L = 1/2", L="0.5"), C("L = 4/5", L="0.8")), "stability sign", up=DIAGONAL, density=1 - L ** 3 / 6)
+         (C("L = 1/2", L="0.5"), C("L = 4/5", L="0.8")), measured("stability sign"), up=DIAGONAL, density=1 - L ** 3 / 6)
 floating("diagonal-shape", "+1 if the clipped waterplane of the cube turned corner up is a hexagon, -1 if a triangle",
          ("hex-follows",), (C("s = 4/5", s="0.8"), C("s = 9/10", s="0.9")),
          (2 * measured("waterplane corners") - 9) / 3,
          up=DIAGONAL)
 floating("hex-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1/2", ("hex-half",), ONE,
-         "stability sign", up=DIAGONAL, density=half)
+         measured("stability sign"), up=DIAGONAL, density=half)

@@ -458,9 +458,8 @@ def quantity_balls(witness, params, extra, body, bits):
     had at *bits*."""
     if witness.limit is not None or witness.reference is not None or getattr(witness, "series", None) is not None:
         return None
-    items = (witness.quantity,) if isinstance(witness.quantity, (str, sp.Expr)) else tuple(witness.quantity)
-    names = {q for q in items if isinstance(q, str)}
-    names |= {n for q in items if not isinstance(q, str) for n in measured_names(q)}
+    items = (witness.quantity,) if isinstance(witness.quantity, sp.Expr) else tuple(witness.quantity)
+    names = {n for q in items for n in measured_names(q)}
     if not names <= set(FIELDS) | set(EXTREMES):
         return None
     fine = bits + GUARD_BITS
@@ -503,7 +502,7 @@ def _read_state(witness, st, items, names, params, extra, fine):
     from .floating_witness import QUANTITIES
     with working_precision(fine):
         read = {n: (EXTREMES[n](st) if n in EXTREMES else QUANTITIES[n][1](st, None)) for n in names}
-        return tuple(read[q] if isinstance(q, str) else
+        return tuple(read[q.name] if isinstance(q, Measured) else
                      closed_ball(q, params, {**extra, **{Measured(n): v for n, v in read.items()}}, fine)
                      for q in items)
 
@@ -543,7 +542,7 @@ def enclosed_values(witness, case, bits):
     body = witness.body if witness.body is not None else case.data["body"]
     if missing_method(witness, body, case):
         return None
-    single = isinstance(witness.quantity, (str, sp.Expr))
+    single = isinstance(witness.quantity, sp.Expr)
     items = (witness.quantity,) if single else tuple(witness.quantity)
     params = dict(case.params)
     try:
@@ -612,7 +611,7 @@ def missing_method(witness, body, case) -> str:
                     return _unreadable(item)
         elif not isinstance(root, (sp.Basic, int, Fraction)):
             return "a derivative by finite differences (no bound)"
-    items = (witness.quantity,) if isinstance(witness.quantity, (str, sp.Expr)) else tuple(witness.quantity)
+    items = (witness.quantity,) if isinstance(witness.quantity, sp.Expr) else tuple(witness.quantity)
     measured = [q for q in items if measured_names(q)]
     return next((_unreadable(q) for q in measured if _unreadable(q)), "")
 

@@ -10,7 +10,7 @@ most 1e-12 of the body's size, see the geometry module) and 40-digit mpmath.
 >>> from symfloat.engine.witness import Case
 >>> rho = sp.Symbol("rho", positive=True)
 >>> w = FloatingWitness("draught", "draught of the unit cube", ("t",), (Case({rho: sp.Rational(1, 3)}),),
-...                     body=Body.box(1, 1, 1), up=(0, 0, 1), density=rho, quantity="draught")
+...                     body=Body.box(1, 1, 1), up=(0, 0, 1), density=rho, quantity=measured("draught"))
 >>> [round(float(w.measure(w.instances[0], m)), 12) for m in w.methods]     # Archimedes: s * 1 / 1
 [0.333333333333, 0.333333333333]
 """
@@ -28,7 +28,7 @@ from flint import arb
 from ..geometry.floating import (FloatingState, _dot, _sub, _unit, body_volume_centroid, box, clip_below, draught,
                                  floating_state, regular_prism, right_prism, submerged, volume_centroid)
 from ..geometry.cylinder import cylinder_state
-from .measured import Measured, measured, measured_names, numbered
+from .measured import Measured, in_words, measured, measured_names, numbered
 from .witness import MeasuredWitness, Precision
 
 __all__ = ["Body", "FloatingWitness", "QUANTITIES", "TILT_QUANTITIES", "FLOATING_METHODS",
@@ -263,19 +263,16 @@ class FloatingWitness(MeasuredWitness):
     body: Body = None
     up: tuple = (0, 0, 1)
     density: object = None
-    quantity: object = "draught"
+    quantity: object = measured("draught")
     methods: tuple = FLOATING_METHODS
     reference: tuple = None
     limit: tuple = None
 
     def __post_init__(self):
-        items = (self.quantity,) if isinstance(self.quantity, (str, sp.Expr)) else self.quantity
+        items = self.quantity if isinstance(self.quantity, tuple) else (self.quantity,)
         names = set()
-        for q in items:
-            if isinstance(q, str):
-                names.add(q)
-            else:                   # its other symbols are the case's parameters (checked when measured)
-                names |= measured_names(q)
+        for q in items:             # its other symbols are the case's parameters (checked when measured)
+            names |= measured_names(in_words(q, self.name))
         for q in names:
             if q not in QUANTITIES and q not in TILT_QUANTITIES:
                 raise ValueError(f"witness {self.name}: unknown quantity {q!r}; known: "
@@ -301,15 +298,15 @@ class FloatingWitness(MeasuredWitness):
             return TILT_QUANTITIES[name][1](tilt[0])
 
         def item(q):
-            if isinstance(q, str):
-                return value_of(q)
+            if isinstance(q, Measured):
+                return value_of(q.name)
             symbols, f = _compiled(q)
             unknown = [str(s) for s in symbols if not isinstance(s, Measured) and s not in params]
             if unknown:
                 raise ValueError(f"witness {self.name}: {unknown} are neither measured nor given by the case")
             return f(*(_real(number(params[s], params, dps), dps) if s in params else value_of(str(s))
                        for s in symbols))
-        if isinstance(self.quantity, (str, sp.Expr)):
+        if isinstance(self.quantity, sp.Expr):
             return (item(self.quantity),)
         return tuple(item(q) for q in self.quantity)
 
@@ -328,7 +325,7 @@ class FloatingWitness(MeasuredWitness):
                                                                          body, dps)), step, levels)
         with mpmath.workdps(max(method.dps, 15)):
             values = tuple(float(v) if method.dps <= 15 else +v for v in values)   # rounded to the method's digits
-        return values[0] if isinstance(self.quantity, (str, sp.Expr)) else values
+        return values[0] if isinstance(self.quantity, sp.Expr) else values
 
     def enclose(self, case, bits):
         """The quantity in ball arithmetic (:func:`symfloat.engine.floating_enclosure.enclosed_values`: exact
@@ -508,9 +505,10 @@ class Root:
     guard: tuple = ()
 
     def __post_init__(self):
+        in_words(self.quantity, f"Root in {self.variable}")
         object.__setattr__(self, "grid", tuple(self.grid))
         object.__setattr__(self, "at", tuple(sorted(dict(self.at or {}).items(), key=str)))
-        object.__setattr__(self, "guard", tuple(self.guard))
+        object.__setattr__(self, "guard", tuple(in_words(g, f"Root in {self.variable}") for g in self.guard))
 
     @classmethod
     def scan(cls, quantity, variable, lo, hi, steps, **kw):
@@ -529,6 +527,7 @@ class At:
     at: dict = None
 
     def __post_init__(self):
+        in_words(self.quantity, "At")
         object.__setattr__(self, "at", tuple(sorted(dict(self.at or {}).items(), key=str)))
 
 
@@ -626,7 +625,7 @@ class FloatingRootWitness(FloatingWitness):
         body = self.body if self.body is not None else case.data["body"]
         with mpmath.workdps(max(method.dps, 15)):
             params = self._solve(case.params, body, self.roots, method.dps)
-            single = isinstance(self.quantity, (str, sp.Expr))
+            single = isinstance(self.quantity, sp.Expr)
             items = (self.quantity,) if single else self.quantity
             if not any(measured_names(q) for q in items):
                 # the roots alone: no floating state at the end
@@ -953,6 +952,7 @@ class Difference:
     roots: tuple = ()
 
     def __post_init__(self):
+        in_words(self.quantity, f"Difference in {self.variable}")
         if self.order not in _STENCILS:
             raise ValueError(f"a Difference is of order 1 or 2, not {self.order}")
 

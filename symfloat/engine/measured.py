@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["Measured", "MeasuredIntegral", "measured", "numbered", "measured_names"]
+__all__ = ["Measured", "MeasuredIntegral", "measured", "numbered", "measured_names", "in_words"]
 
 
 class Measured(sp.Symbol):
@@ -59,8 +59,15 @@ def numbered(word: str, count: int) -> tuple:
     return tuple(Measured(f"{word} {i}") for i in range(1, count + 1))
 
 
+def in_words(quantity, where: str):
+    """*quantity*, refused when it is a bare string: a measured quantity is written ``measured(name)`` (one
+    spelling, whether it stands alone or in an expression)."""
+    if isinstance(quantity, str):
+        raise ValueError(f"{where or 'a witness'}: write the measured quantity as measured({quantity!r}), not as "
+                         f"the string {quantity!r}")
+    return quantity
+
+
 def measured_names(expr) -> set:
-    """The names of the measured quantities *expr* (an expression, or a name) reads."""
-    if isinstance(expr, str):
-        return {expr}
+    """The names of the measured quantities *expr* reads."""
     return {s.name for s in sp.sympify(expr).free_symbols if isinstance(s, Measured)}
