@@ -114,3 +114,22 @@ def test_no_threshold_at_the_look_density_next_to_a_ring_end():
     assert "ring around y" in set(a) - set(b)
     found = _thresholds_between(box(*base.dims), box_group(base.dims), body_scale(base), a, b, float(sa), float(sb))
     assert not [t for t in found if abs(t.density - float(sa)) < 1e-9]
+
+
+def test_each_density_is_solved_once(monkeypatch):
+    # two printed thresholds at 1/2 that the solver does not find: each is looked for at 1/2 -+ 1e-6 and
+    # 1/2 -+ 1e-3, the same four densities; the diagram solves every density once and both looks still decide
+    from collections import Counter
+
+    from symfloat.solver import phase
+    solve, solved = phase.solve, Counter()
+
+    def counting(scene):
+        solved[scene.density] += 1
+        return solve(scene)
+    monkeypatch.setattr(phase, "solve", counting)
+    known = [{"value": 0.5, "label": label, "change": "stable above", "claim": "unstable beyond", "locators": ["X"],
+              "errata": [], "derivation": "d", "expression": ""} for label in ("corner up", "edge up (xz)")]
+    diagram = phase.phase_diagram("cube", densities=[0.4, 0.6], known=known)
+    assert len(solved) == 6 and set(solved.values()) == {1}
+    assert [k["seen"] for k in diagram.unmatched_sources] == ["stable on both sides", "stable on neither side"]

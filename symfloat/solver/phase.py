@@ -668,11 +668,22 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None, densitie
     scale = body_scale(base)
     densities = ([Fraction(k, steps + 1) for k in range(1, steps + 1)] if densities is None
                  else [Fraction(s) for s in densities])
+    solved = {}                             # exact density -> the scene's solution: each density is solved once
+
+    def solution_at(s):
+        s = Fraction(s)
+        if s not in solved:
+            solved[s] = solve(make_scene(body, s, base.dims))
+        return solved[s]
+
+    def stable_at(s):
+        return _stable_of(solution_at(s))
+
     stable, solutions = [], []
     for i, s in enumerate(densities, 1):
         if progress:
             progress(f"[{i}/{len(densities)}] density {float(s):.4f}")
-        solutions.append(solve(make_scene(body, s, base.dims)))
+        solutions.append(solution_at(s))
         stable.append(_stable_of(solutions[-1]))
     thresholds = []
     for k in range(len(densities) - 1):
@@ -699,7 +710,7 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None, densitie
             sa, sb = Fraction(k["value"] - width), Fraction(k["value"] + width)
             if not 0 < sa < sb < 1:
                 continue
-            a, b = _stable(make_scene(body, sa, base.dims)), _stable(make_scene(body, sb, base.dims))
+            a, b = stable_at(sa), stable_at(sb)
             seen.setdefault(id(k), (width, k["label"] in a, k["label"] in b))
             new = _thresholds_between(poly, group, scale, a, b, float(sa), float(sb))
             thresholds += [t for t in new if not any(abs(t.density - u.density) <= 1e-9 and t.label == u.label
@@ -707,8 +718,7 @@ def phase_diagram(body: str, dims=None, steps: int = 48, progress=None, densitie
             if any(t.label == k["label"] for t in new):
                 break
     _annotate_families(thresholds)          # pitchforks snapped first: a branch is followed from its birth
-    thresholds += _follow(poly, group, scale, thresholds, [float(s) for s in densities],
-                          lambda s: _stable(make_scene(body, Fraction(s), base.dims)))
+    thresholds += _follow(poly, group, scale, thresholds, [float(s) for s in densities], stable_at)
     _annotate_families(thresholds)
     unique = []
     for t in thresholds:                     # one entry per position and density (after the families' snapping)
