@@ -422,6 +422,36 @@ _OVERFLOW = "() => document.documentElement.scrollWidth - window.innerWidth"
 # All three in one call: the visible TeX, the bare names (given the names) and the overflow.
 _SEEN = f"names => ({{tex: ({_VISIBLE_TEX})(), bare: ({_BARE_NAMES})(names), overflow: ({_OVERFLOW})()}})"
 _WIDTHS = (1400, 420)       # a desktop's and a phone's; the text is read at the first
+# The pages photographed for the README at both widths (site-NAME.png, site-NAME-420.png), on the loop's visit
+_SHOTS = {"index.html": "home", "edition/scheeffer.html": "edition-scheeffer",
+          "errata/scheeffer-81a-1.html": "erratum", "notebooks/scheeffer-vi-cf.html": "notebook"}
+_EDITION = "edition/scheeffer.html"
+_PICTURES = {"figures.html": 3, "scheeffer-ix-grid.html": 1}    # page -> the pictures of the derivations it shows
+
+
+def _screenshot(page, folder: Path, name: str) -> None:
+    """The viewport of *page* as ``site-NAME.png`` (``-420`` at the phone's width) in *folder*; with
+    ``SYMFLOAT_SCREENSHOTS`` the README's copy, 256 colours, tens of KB."""
+    width = page.viewport_size["width"]
+    file = folder / f"site-{name}{'' if width == _WIDTHS[0] else f'-{width}'}.png"
+    page.screenshot(path=str(file))
+    assert file.stat().st_size > 20_000
+    if os.environ.get("SYMFLOAT_SCREENSHOTS"):
+        Image.open(file).convert("RGB").quantize(256, method=Image.Quantize.MEDIANCUT,
+                                                 dither=Image.Dither.NONE).save(file, optimize=True)
+
+
+def _edition_marks(page) -> None:
+    """Every mark of the edition carries a sign and words besides its colour; KaTeX laid the formulas out
+    (a fraction of (78c) has height)."""
+    legend = page.inner_text("p.legend")
+    assert all(f"{sign} {words}" in legend for sign, words in
+               (("✗", "fault of the original"), ("✎", "transcription corrected"), ("✓", "verified")))
+    badges = page.evaluate("Array.from(document.querySelectorAll('.badge')).map(b => b.textContent)")
+    assert badges and all(re.fullmatch(r"\S \w.+", b) for b in badges), badges[:3]
+    heights = page.evaluate("Array.from(document.querySelectorAll('.katex-html .mfrac')).slice(0, 50)"
+                            ".map(e => e.getBoundingClientRect().height)")
+    assert heights and max(heights) > 10, heights[:5]
 
 
 def test_every_page_in_headless_chromium(site):
@@ -435,13 +465,19 @@ def test_every_page_in_headless_chromium(site):
         page.on("console", lambda m: m.type == "error" and errors.append((page.url, m.text)))
         page.on("pageerror", lambda e: errors.append((page.url, str(e))))
         page.on("requestfailed", lambda r: errors.append((page.url, f"failed to load {r.url}")))
+        # screenshots for the README at 1400 and 420 px, taken where the loop lays their pages out: the home
+        # page, the Scheeffer edition with the note of (78c) opened from its mark, an erratum's page, a notebook
+        folder = DOCS / "figures" if os.environ.get("SYMFLOAT_SCREENSHOTS") else site.parent
+        note = f"#{formula_anchor('scheeffer-vi-cf/78c')}"
         names = sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html"))
-        bare, wide, order = [], [], _WIDTHS
+        assert {*_SHOTS, *_PICTURES} <= set(names)
+        bare, wide = [], []
         for name in names:
             # laid out once at each width, the first the width the page before ended with (a notebook's page
-            # takes seconds to lay out)
+            # takes seconds to lay out, the edition's 15 MB more): every check and picture of a page is taken
+            # on this one visit
             page.goto((site / name).as_uri(), wait_until="load")
-            for width in order:
+            for width in sorted(_WIDTHS, key=lambda w: w != page.viewport_size["width"]):
                 if page.viewport_size["width"] != width:
                     page.set_viewport_size({"width": width, "height": 900})
                 if width == _WIDTHS[0]:
@@ -449,39 +485,33 @@ def test_every_page_in_headless_chromium(site):
                     assert not seen["tex"], (name, seen["tex"])
                     bare += [(name, b) for b in seen["bare"]]
                     overflow = seen["overflow"]
+                    if name == _EDITION:
+                        _edition_marks(page)
                 else:
                     overflow = page.evaluate(_OVERFLOW)
                 if overflow > 0:
                     wide.append((name, width, overflow))
-            order = order[::-1]
+                if name in _SHOTS and name != _EDITION:
+                    _screenshot(page, folder, _SHOTS[name])
+            if name in _PICTURES:       # the pictures of the derivations load: the browser decoded each one
+                widths = page.evaluate("Array.from(document.images).map(i => [i.getAttribute('src'), i.naturalWidth])")
+                assert len(widths) == _PICTURES[name] and all(w > 0 for _, w in widths), (name, widths)
+            if name == _EDITION:        # following a mark opens its note, shown at both widths
+                page.locator(f'a.q[href="{note}"]').first.click()
+                page.wait_for_function("id => document.getElementById(id).open", arg=note[1:], timeout=5000)
+                for width in sorted(_WIDTHS, key=lambda w: w != page.viewport_size["width"]):
+                    page.set_viewport_size({"width": width, "height": 900})
+                    page.evaluate("id => document.getElementById(id).scrollIntoView()", note[1:])
+                    page.evaluate("window.scrollBy(0, -160)")
+                    _screenshot(page, folder, _SHOTS[name])
         assert not errors, errors[:5]
         assert not bare, bare[:5]
         assert not wide, wide[:10]
-        # every mark of the edition carries a sign and words besides its colour
-        page.set_viewport_size({"width": _WIDTHS[0], "height": 900})
-        page.goto((site / "edition" / "scheeffer.html").as_uri())
-        legend = page.inner_text("p.legend")
-        assert all(f"{sign} {words}" in legend for sign, words in
-                   (("✗", "fault of the original"), ("✎", "transcription corrected"), ("✓", "verified")))
-        badges = page.evaluate("Array.from(document.querySelectorAll('.badge')).map(b => b.textContent)")
-        assert badges and all(re.fullmatch(r"\S \w.+", b) for b in badges), badges[:3]
-        # KaTeX laid the formulas out: a fraction of (78c) has height, and following a mark opens its note
-        # (on the same visit: the page is 15 MB)
-        heights = page.evaluate("Array.from(document.querySelectorAll('.katex-html .mfrac')).slice(0, 50)"
-                                ".map(e => e.getBoundingClientRect().height)")
-        assert heights and max(heights) > 10, heights[:5]
-        note = f"#{formula_anchor('scheeffer-vi-cf/78c')}"
-        page.locator(f'a.q[href="{note}"]').first.click()
-        page.wait_for_function("id => document.getElementById(id).open", arg=note[1:], timeout=5000)
         # search from disk: hits listed, no error (Sphinx's summaries, which would fetch each page, are off)
+        page.set_viewport_size({"width": _WIDTHS[0], "height": 900})
         page.goto((site / "search.html").as_uri() + "?q=Schwerpunkt")
         page.wait_for_selector("#search-results li", timeout=20000)
         assert page.locator("#search-results li").count() > 3 and not errors, errors[:3]
-        # the pictures of the derivations load: the browser decoded each one (its natural width)
-        for name, count in (("figures.html", 3), ("scheeffer-ix-grid.html", 1)):
-            page.goto((site / name).as_uri(), wait_until="load")
-            widths = page.evaluate("Array.from(document.images).map(i => [i.getAttribute('src'), i.naturalWidth])")
-            assert len(widths) == count and all(w > 0 for _, w in widths), (name, widths)
         # the same checks see a page that shows raw TeX, logs an error and scrolls sideways on a phone
         control = site.parent / "control.html"
         control.write_text("<p>$$\\frac{a}{b}$$</p><script>console.error('control')</script>"
@@ -507,24 +537,4 @@ def test_every_page_in_headless_chromium(site):
         assert page.evaluate(_VISIBLE_TEX) == ["$$", "\\frac"]            # the last paragraph's
         page.evaluate("document.getElementById('shown').remove()")
         assert page.evaluate(_VISIBLE_TEX) == []
-        # screenshots for the README at 1400 and 420 px: the home page, the Scheeffer edition with the note
-        # of (78c) opened from its mark, an erratum's page and a notebook
-        folder = DOCS / "figures" if os.environ.get("SYMFLOAT_SCREENSHOTS") else site.parent
-        for width, suffix in ((1400, ""), (420, "-420")):
-            for name, path in (("home", "index.html"), ("edition-scheeffer", "edition/scheeffer.html"),
-                               ("erratum", "errata/scheeffer-81a-1.html"), ("notebook", "notebooks/scheeffer-vi-cf.html")):
-                shot = browser.new_page(viewport={"width": width, "height": 900})
-                shot.goto((site / path).as_uri(), wait_until="load")
-                if name == "edition-scheeffer":
-                    shot.locator(f'a.q[href="{note}"]').first.click()
-                    shot.wait_for_function("id => document.getElementById(id).open", arg=note[1:], timeout=5000)
-                    shot.evaluate("id => document.getElementById(id).scrollIntoView()", note[1:])
-                    shot.evaluate("window.scrollBy(0, -160)")
-                file = folder / f"site-{name}{suffix}.png"
-                shot.screenshot(path=str(file))
-                assert file.stat().st_size > 20_000
-                if os.environ.get("SYMFLOAT_SCREENSHOTS"):      # the README's copies: 256 colours, tens of KB each
-                    Image.open(file).convert("RGB").quantize(256, method=Image.Quantize.MEDIANCUT,
-                                                             dither=Image.Dither.NONE).save(file, optimize=True)
-                shot.close()
         browser.close()

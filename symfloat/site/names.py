@@ -15,7 +15,7 @@ import sympy as sp
 
 from ..model.claim import expressions
 from ..model.symbol_names import tex_name
-from ..registry import load
+from ..registry import statements
 
 __all__ = ["renaming", "typeset_names"]
 
@@ -33,8 +33,9 @@ def _claims(d):
 @cache
 def renaming(derivation: str):
     """A function that writes, in the math spans of a Markdown text, the derivation's symbols under their
-    typeset names where SymPy's printing of the program name differs (None when none does)."""
-    d, _ = load(derivation)
+    typeset names where SymPy's printing of the program name differs (None when none does).  The symbols are
+    those of its statements (steps, readings, names): no other module of the package declares any."""
+    d = statements(derivation)
     found = {sym for claim in _claims(d) if claim is not None for m in expressions(claim)
              if hasattr(m, "atoms") for sym in m.atoms(sp.Symbol)}
     found |= {sym for sym, _, _ in d.names}
