@@ -57,6 +57,11 @@ EXACT = {                                               # closed forms at the ca
 }
 
 
+def _named(quantity):
+    """A quantity the tests' helpers take by its name, or as an expression in measured ones."""
+    return measured(quantity) if isinstance(quantity, str) else quantity
+
+
 def witness(name, case=CASE, up=(0, 0, 1)):
     return FloatingWitness(name, name, ("f",), (case,), body=Body.box(A, B, C), up=up, density=S,
                            quantity=measured(name))
@@ -135,8 +140,7 @@ def tilted(quantity, **kw):
     """The tilted box's *quantity* (a name of TILT_QUANTITIES, or an expression in measured ones)."""
     kw.setdefault("up", (0, sp.Rational(1, 4), 1))
     return FloatingWitness("tilt", "tilt", ("f",), (TILTED,), body=Body.box(L_, W_, H_), density=S,
-                           reference=(0, 0, 1), quantity=measured(quantity) if isinstance(quantity, str) else quantity,
-                           **kw)
+                           reference=(0, 0, 1), quantity=_named(quantity), **kw)
 
 
 def test_every_tilt_quantity_is_tested():
@@ -203,13 +207,13 @@ LOG = Case({W_: 2, H_: sp.Rational(9, 5), L_: 1, S: sp.Rational(1, 2)}, label="b
 
 
 def rooted(quantity, vanish, case=LOG, guard=(), at=None):
-    """*quantity* (a name, or an expression in measured ones) at the first zero of the quantity named *vanish* as the
-    tilt psi grows (scanned in 28 steps over [1/50, 7/5])."""
+    """*quantity* at the first zero of *vanish* (each a name, or an expression in measured ones) as the tilt psi
+    grows (scanned in 28 steps over [1/50, 7/5])."""
     return FloatingRootWitness("root", "root", ("f",), (case,), body=Body.box(L_, W_, H_),
                                up=(0, sp.sin(PSI), sp.cos(PSI)), density=S, reference=(0, 0, 1),
-                               quantity=measured(quantity) if isinstance(quantity, str) else quantity,
-                               roots=((PSI, Root.scan(measured(vanish) if isinstance(vanish, str) else vanish, PSI,
-                                                      sp.Rational(1, 50), sp.Rational(7, 5), 28, guard=guard, at=at)),))
+                               quantity=_named(quantity),
+                               roots=((PSI, Root.scan(_named(vanish), PSI, sp.Rational(1, 50), sp.Rational(7, 5), 28,
+                                                      guard=guard, at=at)),))
 
 
 def test_the_zero_of_the_righting_arm_and_the_contact_of_a_base():

@@ -549,7 +549,7 @@ def _read(x) -> frozenset:
         return _read(tuple(x.items()))
     if hasattr(x, "__dataclass_fields__") and not isinstance(x, type):
         return _read(tuple(getattr(x, f) for f in x.__dataclass_fields__))
-    return frozenset(getattr(x, "free_symbols", ()))      # a matrix; a name of a measured quantity reads no root
+    return frozenset(getattr(x, "free_symbols", ()))      # a matrix; a number or a word (``which``) reads none
 
 
 @functools.lru_cache(maxsize=1024)
