@@ -218,6 +218,16 @@ def _quotes(source: str) -> list[tuple[int, int, str, object]]:
     return out
 
 
+@cache
+def _quotes_by_line(source: str) -> dict[int, list]:
+    """The quotes of *source* (:func:`_quotes`) by the line they begin on."""
+    text = get_source(source).text()
+    out: dict[int, list] = {}
+    for q in _quotes(source):
+        out.setdefault(line_of(text, q[0])[0], []).append(q)
+    return out
+
+
 def _symbols(claim) -> set:
     if claim is None:
         return set()
@@ -290,7 +300,6 @@ def _judged(number: str, lead: str, covering) -> tuple[str, str, str]:
 def _automatic(source: str, kind: str, a: int, b: int, matched: str, number: str, line: int, quotes,
                target) -> tuple[str, str]:
     """The status the rules of the module docstring give a reference, and why."""
-    text = get_source(source).text()
     covering = [q for q in quotes if q[0] < b and a < q[1]]
     verdict, by, why = _judged(number, matched.split()[0], covering)
     if verdict == "wrong":
@@ -304,7 +313,7 @@ def _automatic(source: str, kind: str, a: int, b: int, matched: str, number: str
     if target[0] > line and not (kind == "paragraph" and target[1] < a):
         return "suspect", "the target comes later"
     targets = [q for q in quotes if q[0] < target[2] and target[1] < q[1]]
-    uses = covering or [q for q in quotes if line_of(text, q[0])[0] == line]
+    uses = covering or _quotes_by_line(source).get(line, [])
     at_target, at_use = [q[2] for q in targets], [q[2] for q in uses]
     reached = [uses_target(_anchors(u), set().union(*(_anchors(t) for t in targets))) for u in uses] \
         if targets else []
