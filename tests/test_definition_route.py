@@ -284,3 +284,26 @@ def test_a_neutral_counterexample_leaves_the_failures_elsewhere_standing():
     # where the statement holds at every point read, the unread counterexample still leaves nothing recorded
     out = r.relation_outcome("t", Holds(T >= a * b ** 3 / 12 - (a - 2) ** 2), {T: a * b ** 3 / 12}, neutral)
     assert out.records == [] and "neutral case" in out.note
+
+
+def test_an_integral_inside_a_sign_is_left_to_quadrature():
+    # SymPy's sign(...).doit drops doit's hints: the integral inside was carried out by SymPy, so the route
+    # compared closed forms where it promises quadrature of the definitions
+    from symfloat.engine.definitions import _carried_out
+    inner = sp.Integral(x ** 2 - a, (x, 0, 1))
+    done = _carried_out(sp.sign(inner + sp.Derivative(x ** 3, x).subs(x, a)))
+    assert done == sp.sign(3 * a ** 2 + inner) and done.has(sp.Integral)
+
+
+def test_the_15_digit_route_is_float64_and_keeps_its_digits_at_a_vanishing_square_root():
+    # the 15-digit method computes in mpmath's float context; a quarter circle's area (the square root
+    # vanishes at x = 1) keeps well within the method's 10^-6.5, and a changed coefficient is refuted
+    import math
+    from symfloat.engine.definitions import _quadrature, _NestedQuadPrinter
+    quarter = sp.Integral(sp.sqrt(a ** 2 - x ** 2), (x, 0, a))
+    v15 = _quadrature(quarter, {a: sp.Integer(2)}, 15, _NestedQuadPrinter)
+    assert abs(float(v15) - math.pi) < 1e-12
+    _, r = route([((T, quarter), T)], {a: (1, 3)})
+    assert r.outcome("q", (T, sp.pi * a ** 2 / 4)).agrees
+    wrong = r.outcome("q", (T, sp.Rational(79, 100) * a ** 2))
+    assert not wrong.agrees and wrong.records[0]["method"] == "definitions, 15 digits"

@@ -7,8 +7,10 @@ this witness compares it with the *definitions*: every quantity of the reading i
 defining member (recursively, in the order the steps introduce them), derivatives and
 substitutions are carried out exactly, and what remains -- defining integrals included -- is
 evaluated numerically at seeded sample points of the derivation's domain: integrals by nested
-tanh-sinh quadrature (``mpmath.quad``), at 15 and at 30 digits.  The first member of the chain
-is the measured quantity, every other member a value the print (or its correction) claims.
+quadrature (``mpmath.quad``), at 15 digits in hardware doubles (mpmath's float context, its
+quadrature and extrapolation without mpmath's software numbers) and at 30 digits.  The first
+member of the chain is the measured quantity, every other member a value the print (or its
+correction) claims.
 
 It runs for every formula that no declared witness targets, so a numeric cross-check does not
 depend on someone writing one.  A member that is, once the definitions are in, the same SymPy
@@ -167,10 +169,17 @@ def _carried_out(m):
     if not m.has(sp.Derivative, sp.Subs, sp.Sum, sp.Limit):
         return m
     m = m.replace(lambda e: isinstance(e, sp.Subs), _substituted)
+    # SymPy's sign drops the hints of doit, so the integrals inside a sign would be carried out by SymPy
+    # instead of quadrature: a sign is held as an undefined function while the rest is done
+    m = m.replace(sp.sign, _HeldSign)
     try:
-        return m.doit(integrals=False)
+        done = m.doit(integrals=False)
     except NotImplementedError:              # "Don't know how to calculate the mrv of Integral(...)"
-        return m.replace(lambda e: isinstance(e, sp.Limit), _numeric_limit).doit(integrals=False)
+        done = m.replace(lambda e: isinstance(e, sp.Limit), _numeric_limit).doit(integrals=False)
+    return done.replace(_HeldSign, sp.sign)
+
+
+_HeldSign = sp.Function("held_sign")
 
 
 def _collapsed(expr) -> bool:
@@ -196,12 +205,27 @@ def _components(m):
     return list(m) if isinstance(m, sp.MatrixBase) else [m]
 
 
+class _Float64:
+    """mpmath's float64 context (``mpmath.fp``: its quadrature and extrapolation in hardware doubles) as the
+    compiled code calls it; a number the printer writes as an mpf's tuple is read as a double."""
+
+    def __getattr__(self, name):
+        return getattr(mpmath.fp, name)
+
+    @staticmethod
+    def mpf(value):
+        return float(mpmath.mpf(value))
+
+
+FLOAT64 = _Float64()
+
+
 @functools.lru_cache(maxsize=512)
-def _compiled(expr, printer):
-    """*expr* as a function of its free symbols (sorted by name), integrals as nested quadrature.
-    Compiled before the numbers go in: a printer ordering a closed sum's terms would evaluate them."""
+def _compiled(expr, printer, ctx=mpmath.mp):
+    """*expr* as a function of its free symbols (sorted by name), integrals as nested quadrature, in mpmath's
+    context *ctx*.  Compiled before the numbers go in: a printer ordering a closed sum's terms would evaluate them."""
     args = sorted(expr.free_symbols, key=lambda q: q.name)
-    return args, sp.lambdify(args, expr, modules=[{"mpmath": mpmath, "gauss_legendre": gauss_legendre}, "mpmath"],
+    return args, sp.lambdify(args, expr, modules=[{"mpmath": ctx, "gauss_legendre": gauss_legendre}, "mpmath"],
                              printer=printer)
 
 
@@ -228,16 +252,18 @@ def _numeric(expr, point, dps, printer=_NestedQuadPrinter):
 
 
 def _quadrature(expr, point, dps, printer):
-    args, f = _compiled(expr, printer)
+    # an extrapolated limit keeps mpmath's numbers: Richardson's differences in doubles lose every digit
+    ctx = FLOAT64 if dps <= 15 and not expr.has(NumericLimit) else mpmath.mp
+    args, f = _compiled(expr, printer, ctx)
     missing = [q for q in args if q not in point]
     if missing:
         raise ValueError(f"free symbols {sorted(map(str, missing))} remain")
     with mpmath.workdps(dps):
-        v = f(*(mpmath.mpf(point[q].p) / point[q].q if point[q].is_Rational else mpmath.mpf(sp.N(point[q], dps + 5))
+        v = f(*(ctx.mpf(point[q].p) / point[q].q if point[q].is_Rational else ctx.mpf(sp.N(point[q], dps + 5))
                 for q in args))
         # a node rounded past an endpoint where a square root vanishes gives an imaginary part
         # of the order of the square root of the unit roundoff
-        if isinstance(v, mpmath.mpc):
+        if isinstance(v, (mpmath.mpc, complex)):
             if abs(v.imag) > mpmath.mpf(10) ** (2 - dps // 2) * max(1, abs(v.real)):
                 raise ValueError(f"the definitions give the complex value {v}")
             v = v.real

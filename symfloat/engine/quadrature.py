@@ -36,6 +36,8 @@ class ArbGaussLegendre(GaussLegendre):
         n = 3 * 2 ** (degree - 1)
         with flint.ctx.workprec(int(prec * 1.5)):        # the precision mpmath computes its own nodes at
             nodes = [flint.arb.legendre_p_root(n, k, weight=True) for k in range(n)]
+        if self.ctx is mpmath.fp:                       # float64: the nodes rounded to doubles
+            return [(float(x.mid()), float(w.mid())) for x, w in nodes]
         return [(_mpf(x), _mpf(w)) for x, w in nodes]
 
 
