@@ -3,6 +3,8 @@ sides of every table boundary agree, and a table with one stability flipped is c
 from fractions import Fraction
 from pathlib import Path
 
+import pytest
+
 from symfloat.registry import load
 from symfloat.derivations.scheeffer_ix import grid as ix_grid
 
@@ -95,10 +97,10 @@ def test_the_grid_stamp_changes_with_every_module_the_grid_is_made_from(monkeypa
     for f in sorted(loaded):
         if str(f.relative_to(root)) in exempt:
             continue
-        monkeypatch.setattr(Path, "read_text",
-                            lambda self, *a, f=f, **k: text(self, *a, **k) + "#" * (self.resolve() == f))
-        monkeypatch.setattr(Path, "read_bytes", lambda self, f=f: raw(self) + b"#" * (self.resolve() == f))
-        if ix_grid.grid_stamp() == before:
-            missed.append(str(f.relative_to(root)))
-        monkeypatch.undo()
+        with pytest.MonkeyPatch.context() as edited:      # undone alone: the files found once stay patched in
+            edited.setattr(Path, "read_text",
+                           lambda self, *a, f=f, **k: text(self, *a, **k) + "#" * (self.resolve() == f))
+            edited.setattr(Path, "read_bytes", lambda self, f=f: raw(self) + b"#" * (self.resolve() == f))
+            if ix_grid.grid_stamp() == before:
+                missed.append(str(f.relative_to(root)))
     assert len(loaded) > 30 and missed == [], missed
