@@ -57,3 +57,18 @@ def test_time_limit_interrupts():
     except TimeLimitExceeded:
         return
     raise AssertionError("the time limit did not fire")
+
+
+def test_the_cancel_strategy_is_zero_exactly_where_sympys_cancel_is():
+    from symfloat.engine.identity import _strategy
+    x, y = sp.symbols("x y", positive=True)
+    cancel = _strategy("cancel")
+    proved = x / (x + 1) + 1 / (x + 1) - 1 + (x ** 2 - y ** 2) / (x - y) - x - y
+    assert cancel(proved) == 0 == sp.cancel(sp.together(proved))
+    changed = proved + sp.Rational(1, 3) / (x + 1)                # a coefficient changed: not zero
+    assert cancel(changed) != 0 and sp.simplify(cancel(changed) - sp.cancel(sp.together(changed))) == 0
+    # where the numerator expands to a nonzero polynomial the result is SymPy's cancel
+    a, b = sp.symbols("a b")                                      # no sign known: sqrt(a) sqrt(b) != sqrt(a b)
+    roots = sp.sqrt(a) * sp.sqrt(b) - sp.sqrt(a * b)
+    assert roots != 0
+    assert cancel(roots) == sp.cancel(sp.together(roots))

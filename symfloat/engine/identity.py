@@ -103,10 +103,20 @@ def _squares(pair):
     return sp.cancel(sp.together(sp.expand(a ** 2 - b ** 2)))
 
 
+def _cancelled(e):
+    """``cancel(together(e))``, which is 0 exactly when the numerator of ``together(e)`` is the zero polynomial
+    in its generators: that numerator expanded is tried first (no greatest common divisor with the denominator
+    to compute), and cancelled only where it is not 0."""
+    combined = sp.together(e)
+    if sp.expand(sp.fraction(combined)[0]) == 0:
+        return sp.Integer(0)
+    return sp.cancel(combined)
+
+
 def _strategy(name):
     return {
         "squares": _squares,
-        "cancel": lambda e: sp.cancel(sp.together(e)),
+        "cancel": _cancelled,
         "expand": lambda e: sp.expand(sp.powsimp(sp.expand(e), force=True)),
         "radsimp": lambda e: sp.cancel(sp.radsimp(sp.together(e))),
         "simplify": sp.simplify,
