@@ -257,14 +257,35 @@ def site(tmp_path_factory):
     return out
 
 
+# The names a formula must not spell in italic letters (t·a·n·v·a·r·p·h·i for tan φ): the lower-case Greek
+# letters and the functions, longest first.  Read from the static HTML by _Page and in the browser by _BARE_NAMES.
+_NAMES = sorted([g for g in GREEK if g[0].islower()] + ["sin", "cos", "tan", "cot", "tg", "log", "lim"],
+                key=len, reverse=True)
+_BARE = re.compile("|".join(_NAMES))
+_LETTER = re.compile("[A-Za-z]")
+_RUNS = ("math", "mrow", "mtd", "mstyle", "mpadded")     # the MathML elements whose children are read as runs
+
+
 class _Page(HTMLParser):
     """Links, ids and the visible text of one page (scripts, styles and MathML left out; so is a notebook's
     code, ``<pre>``, where a function the derivation defines prints itself as TeX, e.g. Euler §§229-243's Beta
-    integral ``r"\\int_0^{%s} ... \\frac{y^{%s}}{%s^{%s}}"``)."""
+    integral ``r"\\int_0^{%s} ... \\frac{y^{%s}}{%s^{%s}}"``).
+
+    Also what the browser's ``_BARE_NAMES`` finds, read from the MathML KaTeX wrote at build time (``bare``:
+    a run of single-letter ``<mi>`` children of a ``<math>``, ``<mrow>``, ``<mtd>``, ``<mstyle>`` or ``<mpadded>``
+    inside a ``katex-mathml`` span that spells a name, and a ``&`` in a ``katex-html`` span's text), and the
+    measures by which the browser test chooses erratum pages: ``formulas``, ``widest_display`` (the characters
+    of the widest display formula's MathML, its TeX annotation left out), ``widest_row`` (the visible characters
+    of the longest table row) and ``longest_word`` (the longest run of prose or link text without a space)."""
 
     def __init__(self):
         super().__init__()
         self.links, self.ids, self.text, self._hidden = [], set(), [], 0
+        self.bare, self.formulas, self.widest_display, self.widest_row, self._prose = [], 0, 0, 0, []
+        self._spans = []        # the open <span>s: "katex-mathml", "katex-html" or ""
+        self._shown = []        # the text of each open katex-html span
+        self._math = []         # the open elements of a formula's MathML: [tag, run of letters, text]
+        self._found, self._annotation, self._display, self._row = [], "", False, None
 
     def handle_starttag(self, tag, attrs):
         a = dict(attrs)
@@ -275,14 +296,74 @@ class _Page(HTMLParser):
                 self.links.append((tag, a[key]))
         if tag in ("script", "style", "math", "pre"):
             self._hidden += 1
+        if self._math or tag == "math" and "katex-mathml" in self._spans:
+            if not self._math:
+                self.formulas += 1
+                self._found, self._annotation, self._display = [], "", a.get("display") == "block"
+            self._math.append([tag, "", ""])
+        elif tag == "span":
+            classes = (a.get("class") or "").split()
+            kind = next((k for k in ("katex-mathml", "katex-html") if k in classes), "")
+            self._spans.append(kind)
+            if kind == "katex-html":
+                self._shown.append([])
+        elif tag == "tr":
+            self._row = 0
 
     def handle_endtag(self, tag):
         if tag in ("script", "style", "math", "pre"):
             self._hidden -= 1
+        if self._math:
+            self._end_of_mathml(tag)
+        elif tag == "span" and self._spans:
+            if self._spans.pop() == "katex-html":
+                shown = "".join(self._shown.pop())
+                if "&" in shown:
+                    self.bare.append(f"a visible & in {shown}")
+        elif tag == "tr" and self._row is not None:
+            self.widest_row, self._row = max(self.widest_row, self._row), None
+
+    def _end_of_mathml(self, tag):
+        """An element of a formula's MathML ends: a single letter <mi> lengthens its parent's run, any other
+        child ends it, and so does the parent's own end (the browser's run over children and a final null)."""
+        element, run, text = self._math.pop()
+        if element in _RUNS:
+            self._end_of_run(run)
+        if self._math:
+            parent = self._math[-1]
+            parent[2] += text
+            if parent[0] in _RUNS:
+                if element == "mi" and _LETTER.fullmatch(text):
+                    parent[1] += text
+                else:
+                    self._end_of_run(parent[1])
+                    parent[1] = ""
+        if element == "annotation":
+            self._annotation = text
+        if not self._math:          # the <math> ended
+            self.bare += [f"{run} in {self._annotation or text}" for run in self._found]
+            if self._display:
+                self.widest_display = max(self.widest_display, len(text) - len(self._annotation))
+
+    def _end_of_run(self, run):
+        if _BARE.search(run):
+            self._found.append(run)
 
     def handle_data(self, data):
+        if self._math:
+            self._math[-1][2] += data
+        for shown in self._shown:
+            shown.append(data)
         if not self._hidden:
             self.text.append(data)
+            if self._row is not None:
+                self._row += len(data)
+            if not self._shown:
+                self._prose.append(data)
+
+    @property
+    def longest_word(self) -> int:
+        return max(map(len, "".join(self._prose).split()), default=0)
 
 
 @pytest.fixture(scope="module")
@@ -335,6 +416,16 @@ def test_no_tex_is_left_where_mathematics_should_be(pages):
         text = "".join(page.text)
         for raw in ("$$", "\\frac", "\\left", "\\begin{"):
             assert raw not in text, (name, raw, text[max(text.find(raw) - 80, 0):text.find(raw) + 80])
+
+
+def test_no_name_is_spelled_in_italic_letters(pages):
+    # the browser's bare-name check (_BARE_NAMES) read from the static HTML of every page, shown to fail on its control
+    bare = [(name, b) for name, page in pages.items() for b in page.bare]
+    assert not bare, bare[:5]
+    control = _Page()
+    control.feed(_CONTROL)
+    assert sorted(b.split(" ")[0] for b in control.bare) == ["a", "tau", "xtan"]
+    assert control.bare[0] == "xtan in xtan=tau" and control.formulas == 1
 
 
 @pytest.mark.slow     # a second full build (about 25 s of CPU); the default run checks _sync's determinism above
@@ -393,6 +484,7 @@ _VISIBLE_TEX = r"""() => {
 
 # Runs of single-letter identifiers in a formula's MathML (KaTeX's, beside the glyphs) that spell the name of a
 # Greek letter or a function: a name set as italic letters (t·a·n·v·a·r·p·h·i) instead of its sign (tan φ).
+# _Page reads the same from the static HTML of every page (test_no_name_is_spelled_in_italic_letters).
 _BARE_NAMES = r"""names => {
   const bare = new RegExp("(" + names.join("|") + ")");
   const found = [];
@@ -414,8 +506,6 @@ _BARE_NAMES = r"""names => {
   }
   return found;
 }"""
-_NAMES = sorted([g for g in GREEK if g[0].islower()] + ["sin", "cos", "tan", "cot", "tg", "log", "lim"],
-                key=len, reverse=True)
 
 # How far the page scrolls sideways at the viewport's width (it never should: a long formula scrolls in its box).
 _OVERFLOW = "() => document.documentElement.scrollWidth - window.innerWidth"
@@ -426,6 +516,12 @@ _WIDTHS = (1400, 420)       # a desktop's and a phone's; the text is read at the
 _SHOTS = {"index.html": "home", "edition/scheeffer.html": "edition-scheeffer",
           "errata/scheeffer-81a-1.html": "erratum", "notebooks/scheeffer-vi-cf.html": "notebook"}
 _EDITION = "edition/scheeffer.html"
+# A page that shows raw TeX, logs an error, spells names in italic letters (x·t·a·n, t·a·u) and a visible &, and
+# scrolls sideways on a phone: the checks in the browser and the static one must find each.
+_CONTROL = ("<p>$$\\frac{a}{b}$$</p><script>console.error('control')</script>"
+            '<span class="katex"><span class="katex-mathml"><math><mrow><mi>x</mi><mi>t</mi><mi>a</mi>'
+            '<mi>n</mi><mo>=</mo><mi>t</mi><mi>a</mi><mi>u</mi></mrow></math></span>'
+            '<span class="katex-html">x &amp; y</span></span><div style="width: 600px">wide</div>')
 _PICTURES = {"figures.html": 3, "scheeffer-ix-grid.html": 1}    # page -> the pictures of the derivations it shows
 
 
@@ -454,7 +550,10 @@ def _edition_marks(page) -> None:
     assert heights and max(heights) > 10, heights[:5]
 
 
-def test_every_page_in_headless_chromium(site):
+def _in_chromium(site: Path, names: list[str]) -> None:
+    """Open the pages *names* of the built site in headless Chromium at both widths and check each (no console
+    error or failed load, no visible TeX, no bare name, no sideways overflow), take the README's screenshots and
+    check the pictures, the edition's marks and search; then show that the checks fail on control pages."""
     sync_api = pytest.importorskip("playwright.sync_api", reason="playwright is not installed (test extra)")
     with sync_api.sync_playwright() as p:
         browser = _browser(p)
@@ -469,7 +568,6 @@ def test_every_page_in_headless_chromium(site):
         # page, the Scheeffer edition with the note of (78c) opened from its mark, an erratum's page, a notebook
         folder = DOCS / "figures" if os.environ.get("SYMFLOAT_SCREENSHOTS") else site.parent
         note = f"#{formula_anchor('scheeffer-vi-cf/78c')}"
-        names = sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html"))
         assert {*_SHOTS, *_PICTURES} <= set(names)
         bare, wide = [], []
         for name in names:
@@ -514,11 +612,7 @@ def test_every_page_in_headless_chromium(site):
         assert page.locator("#search-results li").count() > 3 and not errors, errors[:3]
         # the same checks see a page that shows raw TeX, logs an error and scrolls sideways on a phone
         control = site.parent / "control.html"
-        control.write_text("<p>$$\\frac{a}{b}$$</p><script>console.error('control')</script>"
-                           '<span class="katex"><span class="katex-mathml"><math><mrow><mi>x</mi><mi>t</mi><mi>a</mi>'
-                           '<mi>n</mi><mo>=</mo><mi>t</mi><mi>a</mi><mi>u</mi></mrow></math></span>'
-                           '<span class="katex-html">x &amp; y</span></span><div style="width: 600px">wide</div>',
-                           encoding="utf-8")
+        control.write_text(_CONTROL, encoding="utf-8")
         page.goto(control.as_uri(), wait_until="load")
         seen = page.evaluate(_SEEN, _NAMES)
         assert seen["tex"] == ["$$", "\\frac"] and errors == [(control.as_uri(), "control")]
@@ -538,3 +632,29 @@ def test_every_page_in_headless_chromium(site):
         page.evaluate("document.getElementById('shown').remove()")
         assert page.evaluate(_VISIBLE_TEX) == []
         browser.close()
+
+
+def _erratum_sample(pages: dict[str, _Page], errata: list[str]) -> set[str]:
+    """The erratum pages most likely to show what the browser catches, chosen from the built HTML: the first and
+    the last by name and the top three by each measure (ties by name; pages that measure 0 are not ranked) of
+    sideways overflow at 420 px (the widest display formula, the longest word or link, the widest table row) and
+    of bare names and visible TeX (the most formulas)."""
+    chosen = {min(errata), max(errata)}
+    for measure in ("widest_display", "longest_word", "widest_row", "formulas"):
+        ranked = sorted((-getattr(pages[name], measure), name) for name in errata)
+        chosen.update(name for size, name in ranked[:3] if size < 0)
+    return chosen
+
+
+def test_every_page_but_a_sample_of_errata_in_headless_chromium(site, pages, records):
+    # the pages of one erratum each, made from one template: a sample is laid out (their bare names are read
+    # from the HTML of every page by test_no_name_is_spelled_in_italic_letters); every other page is visited
+    errata = sorted(f"errata/{slug(e['id'])}.html" for e in records.errata)
+    sample = _erratum_sample(pages, errata) | {name for name in _SHOTS if name in errata}
+    assert len(errata) > 100 and len(sample) < 20
+    _in_chromium(site, sorted(set(pages) - set(errata) | sample))
+
+
+@pytest.mark.slow     # every erratum page too (about 25 s more); the default run visits a sample of them
+def test_every_page_in_headless_chromium(site, pages):
+    _in_chromium(site, sorted(pages))
