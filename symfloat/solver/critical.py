@@ -619,14 +619,18 @@ def _broken_rings(poly, found, s, scale, group, event_dps: int = 0) -> None:
                 if soft:
                     bar(o.u, soft, across)
                     break
+        undecided = []          # mirror points whose second variation is not decided: their copies are not either
         for q in _mirror_points(c, group):
             if any(same_class(q, o.u, group, 1e-6) for o in found if not o.ring) \
                     or any(np.linalg.norm(q - b) <= 1e-6 for b in barriers):
                 continue
             loc, ok = symmetric_newton(poly, q, s, scale, group)
-            soft = ok and abs(loc.U - c.U) <= FLAT * scale and _decided(poly, loc, s, scale, event_dps=event_dps,
-                                                                         group=group)
-            if soft:
+            if not (ok and abs(loc.U - c.U) <= FLAT * scale) or any(same_class(loc.u, w, group, 1e-6) for w in undecided):
+                continue
+            soft = _decided(poly, loc, s, scale, event_dps=event_dps, group=group)
+            if not soft:
+                undecided.append(loc.u)
+            else:
                 pairs = _tangent_eigen(loc)
                 g = float(np.linalg.norm(loc.gradient))
                 found.append(Critical(representative(loc.u, group), loc.U, (float(pairs[0][0]), float(pairs[1][0])),
