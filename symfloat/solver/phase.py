@@ -505,7 +505,7 @@ def _follow(poly, group, scale, thresholds, densities, stable_at=None) -> list[T
     from the ring the solver finds at the first density past the birth (*stable_at*: density -> the
     stable positions by label).  Positions born where a followed ring breaks (:func:`_ring_breaks`) are
     followed in turn."""
-    out, born = [], []
+    out, born, followed = [], [], set()
     for t in thresholds:
         if not t.up:
             continue
@@ -537,6 +537,12 @@ def _follow(poly, group, scale, thresholds, densities, stable_at=None) -> list[T
                 break
         if u0 is None:
             continue
+        # what follows depends on these alone: a threshold found twice (by the sweep and by the source's look,
+        # each with its own tracked point) that starts from one point is followed once
+        start_point = (t.density, t.label, t.change, start, np.asarray(u0, dtype=float).tobytes())
+        if start_point in followed:
+            continue
+        followed.add(start_point)
         value, err, tilt, note, u = _locate_tracked(poly, group, scale, t.label, _Tracked(tuple(u0), family),
                                                     start, s_end)
         if family == "ring" and stable_at is not None:
