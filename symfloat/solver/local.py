@@ -23,6 +23,7 @@ a source.
 """
 from __future__ import annotations
 
+from collections import OrderedDict
 from dataclasses import dataclass
 
 import mpmath
@@ -51,8 +52,32 @@ class Local:
         return w, (self.basis @ vecs).T
 
 
+MEMO = 4096      # evaluations remembered: Newton's method restarted from a point it reached, and a family walked
+                 # again from a point walked before (the second search), ask for the same ones
+_remembered: OrderedDict = OrderedDict()    # (id of the body, bits of u, type and value of s) -> (body, Local)
+
+
 def local(poly, u, s) -> Local:
-    """Potential, gradient and metacentric Hessian of *poly* at up vector *u* and density *s*."""
+    """Potential, gradient and metacentric Hessian of *poly* at up vector *u* and density *s*.  At a float64
+    *u* on a float64 body the result is remembered (:data:`MEMO`), keyed by the body itself (held, so its id
+    is not reused), the bits of *u* and the exact density with its type; its arrays are read-only."""
+    v = np.asarray(u)
+    if poly.dps is not None or v.dtype != np.float64 or v.shape != (3,):
+        return _evaluated(poly, u, s)
+    key = (id(poly), v.tobytes(), type(s), s)
+    if key in _remembered:
+        _remembered.move_to_end(key)
+        return _remembered[key][1]
+    loc = _evaluated(poly, u, s)
+    for a in (loc.u, loc.basis, loc.gradient, loc.hessian):
+        a.flags.writeable = False
+    _remembered[key] = (poly, loc)
+    if len(_remembered) > MEMO:
+        _remembered.popitem(last=False)
+    return loc
+
+
+def _evaluated(poly, u, s) -> Local:
     st = floating_state(poly, tuple(u), s)
     e1, e2 = (np.array([float(x) for x in e]) for e in st.basis)
     d = np.array([float(g - b) for g, b in zip(st.G, st.B)])
