@@ -235,3 +235,20 @@ def test_prism_sides_are_checked():
         make_scene("prism", "0.5", dims="1,2", sides="2")
     with pytest.raises(SceneError):
         make_scene("prism", "0.5", dims="1,2", sides="3.5")
+
+
+def test_a_remembered_evaluation_is_the_evaluation_of_its_own_body_direction_and_density():
+    # local() remembers float64 evaluations: a repeat is the same object, read-only; another body of the same
+    # shape, another direction or another density (also 1/3 given as a float) is evaluated for itself
+    from symfloat.solver.local import _evaluated
+    cube, long_box = box(1, 1, 1), box(1, 1, 3)
+    u = np.array([0.3, 0.2, 0.9])
+    first = local(cube, u, Fraction(1, 3))
+    assert local(cube, u.copy(), Fraction(1, 3)) is first
+    with pytest.raises(ValueError):
+        first.gradient[0] = 1.0
+    for poly, v, s in ((long_box, u, Fraction(1, 3)), (cube, u + [0, 0, 1e-12], Fraction(1, 3)),
+                       (cube, u, Fraction(2, 5)), (cube, u, 1 / 3)):
+        got, fresh = local(poly, v, s), _evaluated(poly, v, s)
+        assert got is not first and got.U == fresh.U and np.array_equal(got.gradient, fresh.gradient)
+    assert local(long_box, u, Fraction(1, 3)).U != first.U
