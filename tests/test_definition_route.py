@@ -295,13 +295,22 @@ def test_an_integral_inside_a_sign_is_left_to_quadrature():
     assert done == sp.sign(3 * a ** 2 + inner) and done.has(sp.Integral)
 
 
-def test_the_15_digit_route_is_float64_and_keeps_its_digits_at_a_vanishing_square_root():
-    # the 15-digit method computes in mpmath's float context; a quarter circle's area (the square root
-    # vanishes at x = 1) keeps well within the method's 10^-6.5, and a changed coefficient is refuted
+def test_the_15_digit_route_is_float64_and_keeps_its_digits_at_a_vanishing_square_root(monkeypatch):
+    # the 15-digit method integrates in mpmath's float context (its quad called, not mpmath's), the 30-digit one
+    # in mpmath's numbers; a quarter circle's area (the square root vanishes at x = a) keeps well within the
+    # method's 10^-6.5, and a changed coefficient is refuted
     import math
+    import mpmath
     from symfloat.engine.definitions import _quadrature, _NestedQuadPrinter
+    calls = []
+    for name, ctx in (("float64", mpmath.fp), ("mpmath", mpmath.mp)):
+        monkeypatch.setattr(ctx, "quad", lambda *a, real=ctx.quad, name=name, **k: calls.append(name) or real(*a, **k))
     quarter = sp.Integral(sp.sqrt(a ** 2 - x ** 2), (x, 0, a))
     v15 = _quadrature(quarter, {a: sp.Integer(2)}, 15, _NestedQuadPrinter)
+    assert calls == ["float64"]
+    _quadrature(quarter, {a: sp.Integer(2)}, 30, _NestedQuadPrinter)
+    assert calls == ["float64", "mpmath"]
+    monkeypatch.undo()
     assert abs(float(v15) - math.pi) < 1e-12
     _, r = route([((T, quarter), T)], {a: (1, 3)})
     assert r.outcome("q", (T, sp.pi * a ** 2 / 4)).agrees
