@@ -126,7 +126,7 @@ def ngon():
 
 
 def test_a_limit_sympy_cannot_take_is_extrapolated_numerically():
-    # SymPy raises on Limit(Integral with n in its bounds, n, oo); mpmath.limit extrapolates f(2^k + 1).
+    # SymPy raises on Limit(Integral with n in its bounds, n, oo); the route extrapolates f(2^k + 1) in 1/n.
     # Expected: pi r^4/4, the disc's polar-free second moment about a diameter (Scheeffer VI.B/VI.E).
     ((_, r_route), n, r) = ngon()
     out = r_route.outcome("circle", (sp.Limit(T, n, sp.oo), sp.pi * r ** 4 / 4))
@@ -316,3 +316,38 @@ def test_the_15_digit_route_is_float64_and_keeps_its_digits_at_a_vanishing_squar
     assert r.outcome("q", (T, sp.pi * a ** 2 / 4)).agrees
     wrong = r.outcome("q", (T, sp.Rational(79, 100) * a ** 2))
     assert not wrong.agrees and wrong.records[0]["method"] == "definitions, 15 digits"
+
+
+def test_a_limit_is_extrapolated_in_h_and_says_when_it_does_not_settle():
+    # Neville's table in h = 1/(2^k + 1): (sin z)/z -> 1 at 0 and n sin(pi/n) -> pi at infinity (the regular
+    # n-gon's half perimeter over r) to 1e-10 in float64 and 1e-25 at 30 digits; a limit with no power series
+    # in h (1 + sqrt(h)) or none at all (sin(1/h)) does not settle and says so
+    import math
+    import mpmath
+    import pytest
+    from symfloat.engine.definitions import FLOAT64, UnsettledLimit, extrapolated_limit
+    assert abs(extrapolated_limit(FLOAT64, lambda z: math.sin(z) / z, 0, 1) - 1) < 1e-10
+    assert abs(extrapolated_limit(FLOAT64, lambda n: n * math.sin(math.pi / n), mpmath.fp.inf, -1) - math.pi) < 1e-10
+    with mpmath.workdps(30):
+        pi = extrapolated_limit(mpmath.mp, lambda n: n * mpmath.sin(mpmath.pi / n), mpmath.inf, -1)
+        assert abs(pi - mpmath.pi) < mpmath.mpf(10) ** -25
+        assert abs(extrapolated_limit(mpmath.mp, lambda z: mpmath.sin(z) / z, 0, -1) - 1) < mpmath.mpf(10) ** -25
+    for f in (lambda z: 1 + math.sqrt(z), lambda z: math.sin(1 / z)):
+        with pytest.raises(UnsettledLimit):
+            extrapolated_limit(FLOAT64, f, 0, 1)
+
+
+def test_a_limit_that_cancels_past_float64_is_taken_in_mpmaths_numbers():
+    # (sin z - z + z^3/6)/z^5 -> 1/120 (the sine's next Taylor coefficient): in doubles its values near 0 lose
+    # digits as 1/h^5, so the estimates do not settle to 1e-10 and the 15-digit method takes the limit in
+    # mpmath's numbers, to 1e-12 of 1/120; a claim of 1/121 is refuted
+    import mpmath
+    import pytest
+    from symfloat.engine.definitions import FLOAT64, NumericLimit, UnsettledLimit, extrapolated_limit, _quadrature, \
+        _NestedQuadPrinter
+    with pytest.raises(UnsettledLimit):
+        extrapolated_limit(FLOAT64, lambda z: (mpmath.fp.sin(z) - z + z ** 3 / 6) / z ** 5, 0, 1)
+    z = sp.Symbol("z", positive=True)
+    limit = NumericLimit((sp.sin(z) - z + z ** 3 / 6) / z ** 5 * a, z, sp.Integer(0), sp.Integer(1))
+    v = _quadrature(limit, {a: sp.Integer(1)}, 15, _NestedQuadPrinter)
+    assert abs(v - sp.Rational(1, 120)) < 1e-14 and abs(v - sp.Rational(1, 121)) > 1e-5

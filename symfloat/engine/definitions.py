@@ -40,6 +40,7 @@ and the statement is read with the numeric counts.
 """
 from __future__ import annotations
 
+import contextlib
 import functools
 import itertools
 import time
@@ -129,10 +130,9 @@ class _NestedQuadPrinter(MpmathPrinter):
     def _print_NumericLimit(self, e):
         expr, z, z0, direction = e.args
         body = f"lambda {self._print(z)}: {self._print(expr)}"
-        lim = self._module_format("mpmath.limit")
-        if z0 in (sp.oo, -sp.oo):
-            return f"{lim}({body}, {'+' if z0 == sp.oo else '-'}{self._module_format('mpmath.inf')}, exp=True)"
-        return f"{lim}({body}, {self._print(z0)}, direction={int(direction)}, exp=True)"
+        # "mpmath" is the compiled code's context (mpmath.mp, or the float64 one)
+        at = f"{'' if z0 == sp.oo else '-'}mpmath.inf" if z0 in (sp.oo, -sp.oo) else self._print(z0)
+        return f"extrapolated_limit(mpmath, {body}, {at}, {int(direction)})"
 
 
 class _RoughQuadPrinter(_NestedQuadPrinter):
@@ -141,8 +141,8 @@ class _RoughQuadPrinter(_NestedQuadPrinter):
 
 class NumericLimit(sp.Expr):
     """``Limit(expr, z, z0, dir)`` that SymPy cannot take (a limit of an integral whose limits depend on
-    ``z``: the regular n-gon as n -> oo), left to numeric extrapolation: ``mpmath.limit`` (Richardson
-    and Shanks) from the values at z = 2^k + 1 towards infinity, z0 +- 1/(2^k + 1) towards a point."""
+    ``z``: the regular n-gon as n -> oo, a section that collapses at zero tilt), left to numeric
+    extrapolation (:func:`extrapolated_limit`)."""
 
     is_extended_real = True                 # the limit of a real quantity (a moment, an area)
 
@@ -153,6 +153,40 @@ class NumericLimit(sp.Expr):
     def free_symbols(self):
         expr, z, z0, _ = self.args
         return (expr.free_symbols - {z}) | z0.free_symbols
+
+
+class UnsettledLimit(ArithmeticError):
+    """The extrapolation of a limit did not settle at the working precision."""
+
+
+LIMIT_STEPS = 30            # h down to 1/(2^30 + 1), about 1e-9
+
+
+def extrapolated_limit(ctx, f, z0, direction):
+    """lim f(z) as z -> z0 from the side of *direction* (z0 = +-inf: z -> +-inf) in mpmath's context *ctx*:
+    f at z = z0 + direction h (at infinity z = +-1/h) for h = 1/(2^k + 1), k = 1, 2, ..., extrapolated to
+    h = 0 by Neville's table, the polynomial in h through the values so far (Richardson's extrapolation,
+    for a quantity with a power series in h: a collapsing section's integrals in its tilt, the regular
+    n-gon's in 1/n).  It stops when two successive estimates agree to 10^(5 - dps) of the larger of the
+    estimate and the last value, at least four values in; values near the limit cancel (0/0), so in
+    mpmath's numbers they are taken at twice the digits.  Raises :class:`UnsettledLimit` if the
+    estimates have not settled at h = 1/(2^30 + 1) (in float64: the caller takes mpmath's numbers)."""
+    fixed = not hasattr(ctx, "extradps")
+    dps = 15 if fixed else ctx.dps
+    tol = ctx.mpf(10) ** (5 - dps)
+    with (contextlib.nullcontext() if fixed else ctx.extradps(dps)):
+        nodes, row = [], []
+        for k in range(1, LIMIT_STEPS + 1):
+            h = ctx.mpf(1) / (2 ** k + 1)
+            value = f(z0 + direction * h if not ctx.isinf(z0) else (1 if z0 > 0 else -1) / h)
+            nodes.append(h)
+            new = [value]
+            for j in range(1, len(row) + 1):        # nodes k - j .. k: from nodes k - j + 1 .. k and k - j .. k - 1
+                new.append(new[j - 1] + (new[j - 1] - row[j - 1]) * h / (nodes[-1 - j] - h))
+            if k >= 4 and abs(new[-1] - row[-1]) <= tol * max(abs(new[-1]), abs(value)):
+                return +new[-1]
+            row = new
+    raise UnsettledLimit(f"the extrapolated limit did not settle to 1e{5 - dps} by h = 1/(2^{LIMIT_STEPS} + 1)")
 
 
 def _numeric_limit(e: sp.Limit):
@@ -225,7 +259,8 @@ def _compiled(expr, printer, ctx=mpmath.mp):
     """*expr* as a function of its free symbols (sorted by name), integrals as nested quadrature, in mpmath's
     context *ctx*.  Compiled before the numbers go in: a printer ordering a closed sum's terms would evaluate them."""
     args = sorted(expr.free_symbols, key=lambda q: q.name)
-    return args, sp.lambdify(args, expr, modules=[{"mpmath": ctx, "gauss_legendre": gauss_legendre}, "mpmath"],
+    return args, sp.lambdify(args, expr, modules=[{"mpmath": ctx, "gauss_legendre": gauss_legendre,
+                                                         "extrapolated_limit": extrapolated_limit}, "mpmath"],
                              printer=printer)
 
 
@@ -252,8 +287,15 @@ def _numeric(expr, point, dps, printer=_NestedQuadPrinter):
 
 
 def _quadrature(expr, point, dps, printer):
-    # an extrapolated limit keeps mpmath's numbers: Richardson's differences in doubles lose every digit
-    ctx = FLOAT64 if dps <= 15 and not expr.has(NumericLimit) else mpmath.mp
+    if dps <= 15:
+        try:
+            return _quadrature_in(FLOAT64, expr, point, dps, printer)
+        except UnsettledLimit:      # a limit whose values cancel more than doubles can carry
+            pass
+    return _quadrature_in(mpmath.mp, expr, point, dps, printer)
+
+
+def _quadrature_in(ctx, expr, point, dps, printer):
     args, f = _compiled(expr, printer, ctx)
     missing = [q for q in args if q not in point]
     if missing:
