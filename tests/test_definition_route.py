@@ -325,7 +325,8 @@ def test_a_limit_is_extrapolated_in_h_and_says_when_it_does_not_settle():
     import math
     import mpmath
     import pytest
-    from symfloat.engine.definitions import FLOAT64, UnsettledLimit, extrapolated_limit
+    from symfloat.engine.definitions import FLOAT64
+    from symfloat.engine.extrapolation import UnsettledLimit, extrapolated_limit
     assert abs(extrapolated_limit(FLOAT64, lambda z: math.sin(z) / z, 0, 1) - 1) < 1e-10
     assert abs(extrapolated_limit(FLOAT64, lambda n: n * math.sin(math.pi / n), mpmath.fp.inf, -1) - math.pi) < 1e-10
     with mpmath.workdps(30):
@@ -343,8 +344,8 @@ def test_a_limit_that_cancels_past_float64_is_taken_in_mpmaths_numbers():
     # mpmath's numbers, to 1e-12 of 1/120; a claim of 1/121 is refuted
     import mpmath
     import pytest
-    from symfloat.engine.definitions import FLOAT64, NumericLimit, UnsettledLimit, extrapolated_limit, _quadrature, \
-        _NestedQuadPrinter
+    from symfloat.engine.definitions import FLOAT64, NumericLimit, _quadrature, _NestedQuadPrinter
+    from symfloat.engine.extrapolation import UnsettledLimit, extrapolated_limit
     with pytest.raises(UnsettledLimit):
         extrapolated_limit(FLOAT64, lambda z: (mpmath.fp.sin(z) - z + z ** 3 / 6) / z ** 5, 0, 1)
     z = sp.Symbol("z", positive=True)

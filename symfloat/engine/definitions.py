@@ -40,7 +40,6 @@ and the statement is read with the numeric counts.
 """
 from __future__ import annotations
 
-import contextlib
 import functools
 import itertools
 import time
@@ -52,6 +51,7 @@ from sympy.printing.pycode import MpmathPrinter
 
 from ..model.claim import members
 from ..model.relation import Cases, Holds, RealRoots
+from .extrapolation import UnsettledLimit, extrapolated_limit
 from .identity import Domain
 from .quadrature import gauss_legendre
 from .relation import boundary_points, inserted, random_points, relation_intervals, statement, truth
@@ -153,40 +153,6 @@ class NumericLimit(sp.Expr):
     def free_symbols(self):
         expr, z, z0, _ = self.args
         return (expr.free_symbols - {z}) | z0.free_symbols
-
-
-class UnsettledLimit(ArithmeticError):
-    """The extrapolation of a limit did not settle at the working precision."""
-
-
-LIMIT_STEPS = 30            # h down to 1/(2^30 + 1), about 1e-9
-
-
-def extrapolated_limit(ctx, f, z0, direction):
-    """lim f(z) as z -> z0 from the side of *direction* (z0 = +-inf: z -> +-inf) in mpmath's context *ctx*:
-    f at z = z0 + direction h (at infinity z = +-1/h) for h = 1/(2^k + 1), k = 1, 2, ..., extrapolated to
-    h = 0 by Neville's table, the polynomial in h through the values so far (Richardson's extrapolation,
-    for a quantity with a power series in h: a collapsing section's integrals in its tilt, the regular
-    n-gon's in 1/n).  It stops when two successive estimates agree to 10^(5 - dps) of the larger of the
-    estimate and the last value, at least four values in; values near the limit cancel (0/0), so in
-    mpmath's numbers they are taken at twice the digits.  Raises :class:`UnsettledLimit` if the
-    estimates have not settled at h = 1/(2^30 + 1) (in float64: the caller takes mpmath's numbers)."""
-    fixed = not hasattr(ctx, "extradps")
-    dps = 15 if fixed else ctx.dps
-    tol = ctx.mpf(10) ** (5 - dps)
-    with (contextlib.nullcontext() if fixed else ctx.extradps(dps)):
-        nodes, row = [], []
-        for k in range(1, LIMIT_STEPS + 1):
-            h = ctx.mpf(1) / (2 ** k + 1)
-            value = f(z0 + direction * h if not ctx.isinf(z0) else (1 if z0 > 0 else -1) / h)
-            nodes.append(h)
-            new = [value]
-            for j in range(1, len(row) + 1):        # nodes k - j .. k: from nodes k - j + 1 .. k and k - j .. k - 1
-                new.append(new[j - 1] + (new[j - 1] - row[j - 1]) * h / (nodes[-1 - j] - h))
-            if k >= 4 and abs(new[-1] - row[-1]) <= tol * max(abs(new[-1]), abs(value)):
-                return +new[-1]
-            row = new
-    raise UnsettledLimit(f"the extrapolated limit did not settle to 1e{5 - dps} by h = 1/(2^{LIMIT_STEPS} + 1)")
 
 
 def _numeric_limit(e: sp.Limit):

@@ -28,6 +28,7 @@ from flint import arb
 from ..geometry.floating import (FloatingState, _dot, _sub, _unit, body_volume_centroid, box, clip_below, draught,
                                  floating_state, regular_prism, right_prism, submerged, volume_centroid)
 from ..geometry.cylinder import cylinder_state
+from .extrapolation import at_zero
 from .measured import Measured, in_words, measured, measured_names, numbered
 from .witness import MeasuredWitness, Precision
 
@@ -243,10 +244,7 @@ def _neville_at_zero(f, h, levels):
     """Neville extrapolation to 0 of f at h, h/2, ..., h/2^levels (a polynomial in the step), componentwise."""
     xs = [h / 2 ** j for j in range(levels + 1)]
     ps = [f(x) for x in xs]
-    for j in range(1, levels + 1):
-        ps = [tuple((xs[i + j] * a - xs[i] * b) / (xs[i + j] - xs[i]) for a, b in zip(ps[i], ps[i + 1]))
-              for i in range(len(ps) - 1)]
-    return ps[0]
+    return tuple(at_zero(xs, [p[i] for p in ps]) for i in range(len(ps[0])))
 
 
 @dataclass(frozen=True)
