@@ -78,7 +78,7 @@ def test_a_proved_step_calls_the_strategy_of_its_certificate(s1_notebook, s1_rep
     code = by_id[cell_id("step-check", "mid-sections")].source
     strategy = s1_report.proofs[f"step {S1}/mid-sections#0"]["strategy"]
     call = {"cancel": "cancel(together(", "expand": "expand(powsimp(expand(", "simplify": "simplify(",
-            "radsimp": "cancel(radsimp(together("}[strategy]
+            "radsimp": "cancel(radsimp(together(", "pythagoras": "pythagoras("}[strategy]
     assert f"proof = {call}values[0] - values[1]" in code and "assert proof == 0" in code
     assert "g*(UnevaluatedExpr(Rational(1, 2)))**2" in code    # the print's arithmetic (1/2)^2 kept as printed
 

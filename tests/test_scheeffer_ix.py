@@ -314,14 +314,15 @@ def test_alternation_of_stable_and_unstable_positions():
 
 def test_third_region_oblique_needs_s_above_three_quarters():
     # the corrected reading of 's < 3/4': the oblique position of the third region exists only for s > 3/4
-    ratios = np.linspace(1, 5, 2001)
+    # below 3/4 on a grid of ratios and at the middle of the window of (165), where the position exists above 3/4
+    ratios = np.linspace(1, 5, 401)
     for s in np.linspace(0.51, 0.99, 48):                      # 3/4 itself (the boundary) is not on the grid
         ss, rho = s * (1 - s), 2 * (1 - s) * (4 * s - 1)
+        r = math.sqrt((max(1, 1 / (6 * ss)) + 1 / rho) / 2)   # inside the window of (165), and >= 1
         if s < 0.75:
-            assert not any(e["region"] == 3 and e["phi"] < math.pi / 2 for r in ratios
-                           for e in PRED.tables_prediction(s, r)), s
+            assert not any(e["region"] == 3 and e["phi"] < math.pi / 2 for q in (*ratios, r)
+                           for e in PRED.tables_prediction(s, q)), s
         else:
-            r = math.sqrt((max(1, 1 / (6 * ss)) + 1 / rho) / 2)  # inside the window of (165), and >= 1
             assert r >= 1 and any(e["region"] == 3 and e["phi"] < math.pi / 2 for e in PRED.tables_prediction(s, r)), s
 
 

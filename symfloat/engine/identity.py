@@ -24,6 +24,7 @@ import sympy as sp
 
 from ..model.compiled import CompiledError, compile_expr
 from ..model.relation import RealRoots
+from .pythagoras import pythagoras
 from .proofs import Certificate, ProofBook, claim_digest, slowdown
 from .sign import decided
 from .timelimit import TimeLimitExceeded, time_limit
@@ -119,11 +120,12 @@ def _strategy(name):
         "cancel": _cancelled,
         "expand": lambda e: sp.expand(sp.powsimp(sp.expand(e), force=True)),
         "radsimp": lambda e: sp.cancel(sp.radsimp(sp.together(e))),
+        "pythagoras": pythagoras,
         "simplify": sp.simplify,
     }[name]
 
 
-STRATEGIES = ("cancel", "squares", "expand", "radsimp", "simplify")
+STRATEGIES = ("cancel", "squares", "expand", "radsimp", "pythagoras", "simplify")
 
 
 @dataclass(frozen=True)

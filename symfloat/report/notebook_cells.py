@@ -23,7 +23,7 @@ from ..engine.identity import Domain
 from ..model.claim import identical_links, members
 from ..model.relation import is_relation
 from .notebook_code import HELPERS, STRATEGY_WORDS, Code, agree, bound_names, defined_functions, \
-    definitions_source, finite, functions_of, point_source, proof_source, small_point
+    definitions_source, finite, functions_of, point_source, proof_source, small_point, strategy_helper
 
 __all__ = ["CellWriter"]
 
@@ -75,6 +75,7 @@ class CellWriter:
         self.missing: dict = {}     # symbol -> the number of the step that established it without SymPy source
         self.number = {st.name: i for i, st in enumerate(d.steps, 1)}
         self.calls: set = set()     # the SymPy functions the checks call
+        self.helpers: dict = {}     # strategy -> the definition its proofs call (``pythagoras``)
         self._values: dict = {}     # (value, point) -> the value at the point (:meth:`at`)
 
     # -- the notebook's helpers, mirrored at build time --------------------------------------------------------------
@@ -111,7 +112,8 @@ class CellWriter:
                + self.definitions + "\n\n") if self.definitions else ""
         return ("from sympy import (\n" + names + ",\n)\n" + own + "\n"
                 + "# the symbols of the derivation, with the assumptions it states\n"
-                + self.code.declarations() + "\n\n" + HELPERS)
+                + self.code.declarations() + "\n\n" + HELPERS
+                + "".join("\n\n" + self.helpers[k] for k in sorted(self.helpers)))
 
     # -- one chain ---------------------------------------------------------------------------------------------------
     def _chain(self, ms, name: str = "chain") -> list[str]:
@@ -171,6 +173,10 @@ class CellWriter:
             if strategy:
                 call = proof_source(strategy, a, b, matrix)
                 self.calls |= {n for n in re.findall(r"([a-z]+)\(", call) if n in self.code.namespace}
+                helper, names = strategy_helper(strategy)
+                if helper:
+                    self.helpers[strategy] = helper
+                    self.calls |= names
                 lines.append(f"proof = {call}")
                 lines.append(f"print({label + ', ' + STRATEGY_WORDS[strategy] + ':'!r}, proof)")
                 lines.append("assert proof.is_zero_matrix" if matrix else "assert proof == 0")

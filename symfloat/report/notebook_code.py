@@ -26,7 +26,7 @@ from sympy.printing.str import StrPrinter
 
 from ..engine.identity import AGREEMENT, DIGITS
 
-__all__ = ["SymPyCode", "Code", "HELPERS", "STRATEGY_WORDS", "proof_source", "small_point", "point_source", "agree",
+__all__ = ["SymPyCode", "Code", "HELPERS", "STRATEGY_WORDS", "proof_source", "strategy_helper", "small_point", "point_source", "agree",
            "finite", "functions_of", "defined_functions", "definitions_source", "bound_names"]
 
 HELPERS = '''\
@@ -71,6 +71,7 @@ _STRATEGY_CODE = {
     "cancel": "cancel(together({d}))",
     "expand": "expand(powsimp(expand({d}), force=True))",
     "radsimp": "cancel(radsimp(together({d})))",
+    "pythagoras": "pythagoras({d})",
     "simplify": "simplify({d})",
     "squares": "cancel(together(expand({a}**2 - {b}**2)))",
 }
@@ -79,9 +80,21 @@ STRATEGY_WORDS = {
     "cancel": "brought over one denominator and cancelled",
     "expand": "expanded",
     "radsimp": "rationalised and cancelled",
+    "pythagoras": "reduced by the Pythagorean identity (the squares of a sine and its cosine add up to 1)",
     "simplify": "simplified by SymPy's simplify",
     "squares": "squared (both members are non-negative, so equal squares mean equal members) and cancelled",
 }
+
+
+def strategy_helper(strategy: str) -> tuple[str, set]:
+    """The definition a notebook needs before it can call *strategy* (``""`` for a SymPy call), with the SymPy
+    names it uses: ``pythagoras``'s own source (:mod:`symfloat.engine.pythagoras`), so the notebook runs the
+    very function the engine runs."""
+    if strategy != "pythagoras":
+        return "", set()
+    from ..engine import pythagoras as module
+    source = inspect.getsource(module.pythagoras)
+    return source, {n for n in re.findall(r"[A-Za-z_]+", source) if n in module.__dict__ and n != "pythagoras"}
 
 
 def proof_source(strategy: str, a: str, b: str, matrix: bool) -> str:
