@@ -2,6 +2,7 @@
 
 The readings are compiled (:mod:`symfloat.model.compiled`): the strip conditions' polynomials are built from the
 statements once, and a scene isolates their roots exactly (FLINT) without SymPy."""
+import functools
 import itertools
 import math
 from fractions import Fraction
@@ -61,11 +62,13 @@ def _real_roots(unknown, box, valid):
     return [v for v in roots if v > 0 and valid(v)]
 
 
+@functools.lru_cache(maxsize=1024)
 def _strip2(A, C, H, sv):
     """Second region, base A x C, height H, the dry part F of the upper base a strip of width w across the side C
     (F = C w, x_s = w/2, T = C w^3/3, T^1 = w C^3/12, y_s = 0, x_0 = w - A/2): the tilt of (103a), the widths where
     (103b) vanishes, the stability of (117) (k = 0 by symmetry).  Exact arguments (int or Fraction); the roots with
-    tan phi in (0.01, 100), each as (tan phi, 'stable' or 'unstable') with (117) decided at 40 digits."""
+    tan phi in (0.01, 100), each as (tan phi, 'stable' or 'unstable') with (117) decided at 40 digits.  Kept per
+    arguments: a cube asks the same of each of its six choices of axis and edge."""
     A, C, H, sv = map(Fraction, (A, C, H, sv))
     out = []
     with mpmath.workdps(40):
@@ -74,19 +77,20 @@ def _strip2(A, C, H, sv):
         for w in _real_roots("w", (A, C, H, sv), lambda w: w < a and 0.01 < tilt(w) < 100 and w * tilt(w) < h):
             lhs = STABLE_117(c * w ** 3 / 3, w * c ** 3 / 12, c * w, w / 2, mpmath.mpf(0), a * c, h, s_)
             out.append((float(tilt(w)), "stable" if lhs > 0 else "unstable"))
-    return sorted(out)
+    return tuple(sorted(out))
 
 
+@functools.lru_cache(maxsize=1024)
 def _strip3(A, C, H, sv):
     """Third region, dry strips of widths w and w_2 = w - H/t in the two bases, t = tan phi from (122) with w from
-    the dry volume V_3 of (121b); exact as in :func:`_strip2`.  Each root as (tan phi, None): the text gives no
-    stability here."""
+    the dry volume V_3 of (121b); exact and kept as in :func:`_strip2`.  Each root as (tan phi, None): the text
+    gives no stability here."""
     A, C, H, sv = map(Fraction, (A, C, H, sv))
     with mpmath.workdps(40):
         a, c, h, s_ = (mpmath.mpf(q.numerator) / q.denominator for q in (A, C, H, sv))
         w = lambda t: DRY_121B(a * c, h, s_) / (c * h) + h / (2 * t)  # noqa: E731
         valid = lambda t: 0.01 < t < 100 and w(t) - h / t > 0 and w(t) < a  # noqa: E731
-        return [(float(t), None) for t in _real_roots("t", (A, C, H, sv), valid)]
+        return tuple((float(t), None) for t in _real_roots("t", (A, C, H, sv), valid))
 
 
 def predict(scene):
