@@ -18,7 +18,7 @@ from symfloat import registry
 from symfloat.model.claim import members
 from symfloat.registry import load
 from symfloat.report.notebook_cells import CellWriter
-from symfloat.report.notebook_code import Code, bound_names, definitions_source, small_point
+from symfloat.report.notebook_code import Code, bound_names, definitions_source, small_point, strategy_helper
 from symfloat.report.notebook_view import NotebookView, correction_markdown, named
 from symfloat.report.notebooks import build_notebook, cell_id, execute_notebook
 
@@ -81,6 +81,18 @@ def test_a_proved_step_calls_the_strategy_of_its_certificate(s1_notebook, s1_rep
             "radsimp": "cancel(radsimp(together(", "pythagoras": "pythagoras("}[strategy]
     assert f"proof = {call}values[0] - values[1]" in code and "assert proof == 0" in code
     assert "g*(UnevaluatedExpr(Rational(1, 2)))**2" in code    # the print's arithmetic (1/2)^2 kept as printed
+
+
+def test_a_notebook_defines_pythagoras_as_the_engine_runs_it():
+    # the first cell of a notebook whose proofs replay pythagoras holds the engine's own source with the SymPy
+    # names it uses; run alone with those names, it proves sin^2 + cos^2 = 1 and leaves sin 2x - sin x cos x
+    source, names = strategy_helper("pythagoras")
+    space = {name: getattr(sp, name) for name in names}
+    exec(source, space)                                 # the project's own source, as the notebook holds it
+    x = sp.Symbol("x")
+    assert space["pythagoras"](sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1) == 0
+    assert space["pythagoras"](sp.sin(2 * x) - sp.sin(x) * sp.cos(x)) != 0
+    assert strategy_helper("cancel") == ("", set())
 
 
 def test_cell_ids_follow_content_not_position(s1_notebook, s1_report):
