@@ -5,8 +5,8 @@ happens only for a claim without one, and the clock can end a search, never a re
 import sympy as sp
 
 from symfloat import Derivation
-from symfloat.engine.check import check_derivation
 from symfloat.engine import identity
+from symfloat.engine.check import check_derivation
 from symfloat.engine.identity import Domain, check_identity
 from symfloat.engine.proofs import Certificate, ProofBook, claim_digest
 

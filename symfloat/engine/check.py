@@ -427,8 +427,8 @@ _PROOF_WORDS = {"cancel": "the difference cancels over a common denominator",
                 "squares": "both sides are non-negative and their squares agree",
                 "expand": "the difference expands to 0",
                 "radsimp": "the difference cancels once its roots are cleared from the denominators",
-                "pythagoras": ("with tangents as sines over cosines and multiple angles expanded, the difference is 0 once "
-                               "$\\sin^2 x + \\cos^2 x = 1$ is used"),
+                "pythagoras": ("with tangents as sines over cosines and multiple angles expanded, the difference is 0 "
+                               "once $\\sin^2 x + \\cos^2 x = 1$ is used"),
                 "simplify": "SymPy's general simplification takes the difference to 0",
                 "assumptions": "the statement follows from the derivation's assumptions",
                 "sign of factors": "the sign of each factor is fixed on the domain",

@@ -4,7 +4,8 @@ The difference of the members, its tangents and cotangents written as sines over
 and angle sums expanded (``sin 2x = 2 sin x cos x``), is brought over one denominator; its numerator, a polynomial
 in the sine ``s_k`` and cosine ``c_k`` of each angle, is divided by ``s_k^2 + c_k^2 - 1`` (these divisors are a
 Groebner basis: their leading terms share no variable).  A remainder 0 proves the identity.  The notebooks run
-this very function (:data:`symfloat.report.notebook_code.HELPERS` takes its source), so it uses SymPy's names only.
+this very function (:func:`symfloat.report.notebook_code.strategy_helper` copies its source into their first
+cell), so it uses SymPy's names only.
 
 >>> from sympy import symbols
 >>> x = symbols("x")

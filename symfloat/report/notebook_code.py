@@ -26,8 +26,8 @@ from sympy.printing.str import StrPrinter
 
 from ..engine.identity import AGREEMENT, DIGITS
 
-__all__ = ["SymPyCode", "Code", "HELPERS", "STRATEGY_WORDS", "proof_source", "strategy_helper", "small_point", "point_source", "agree",
-           "finite", "functions_of", "defined_functions", "definitions_source", "bound_names"]
+__all__ = ["SymPyCode", "Code", "HELPERS", "STRATEGY_WORDS", "proof_source", "strategy_helper", "small_point",
+           "point_source", "agree", "finite", "functions_of", "defined_functions", "definitions_source", "bound_names"]
 
 HELPERS = '''\
 derived = {}   # symbol -> the value a step established for it (its last member)
