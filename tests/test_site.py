@@ -550,6 +550,33 @@ def _edition_marks(page) -> None:
     assert heights and max(heights) > 10, heights[:5]
 
 
+# A display formula shown (not in a closed note) that scrolls in its box without the shade that says so
+_UNMARKED = """() => Array.from(document.querySelectorAll('.katex-display'))
+  .filter(b => !b.closest('details:not([open])') && b.scrollLeft + b.clientWidth < b.scrollWidth - 1
+               && !b.classList.contains('scrolls')).length"""
+
+
+def _displays_fit(page) -> None:
+    """At the phone's width a display wider than its column is set smaller (symfloat.js): the printed (78c), a
+    third wider than the column at its full size, is seen whole; one still too wide is shaded at its right edge,
+    and the shade goes when it is scrolled to its end.  Waited for, not timed: the page fits its displays when
+    it loads and after a change of width settles."""
+    from playwright.sync_api import TimeoutError as Unsettled
+    try:
+        page.wait_for_function(f"() => ({_UNMARKED})() === 0", timeout=20000)
+    except Unsettled:
+        pass
+    unmarked = page.evaluate(_UNMARKED)
+    assert unmarked == 0, f"{unmarked} displays scroll in their box with no shade"
+    mark = page.locator(f'a.q[href="#{formula_anchor("scheeffer-vi-cf/78c")}"] .katex-display').first
+    whole, size = mark.evaluate("b => [b.scrollWidth <= b.clientWidth + 1, b.style.fontSize]")
+    assert whole and size.endswith("px"), (whole, size)
+    shaded = page.locator(".katex-display.scrolls")
+    assert shaded.count() > 0
+    first = shaded.first.element_handle()
+    first.evaluate("b => { b.scrollLeft = b.scrollWidth; }")
+    page.wait_for_function("b => !b.classList.contains('scrolls')", arg=first, timeout=5000)
+
 def _in_chromium(site: Path, names: list[str], both: set[str] | None = None) -> None:
     """Open the pages *names* of the built site in headless Chromium and check each (no console error or failed
     load, no visible TeX, no bare name, no sideways overflow), take the README's screenshots and check the
@@ -593,6 +620,8 @@ def _in_chromium(site: Path, names: list[str], both: set[str] | None = None) -> 
                         _edition_marks(page)
                 else:
                     overflow = page.evaluate(_OVERFLOW)
+                if name == _EDITION and width == _WIDTHS[1]:
+                    _displays_fit(page)
                 if overflow > 0:
                     wide.append((name, width, overflow))
                 if name in _SHOTS and name != _EDITION:
@@ -607,6 +636,7 @@ def _in_chromium(site: Path, names: list[str], both: set[str] | None = None) -> 
                     page.set_viewport_size({"width": width, "height": 900})
                     page.evaluate("id => document.getElementById(id).scrollIntoView()", note[1:])
                     page.evaluate("window.scrollBy(0, -160)")
+                    page.wait_for_function(f"() => ({_UNMARKED})() === 0", timeout=20000)   # the note's fitted
                     _screenshot(page, folder, _SHOTS[name])
         assert not errors, errors[:5]
         assert not bare, bare[:5]
