@@ -2,7 +2,7 @@
 boxes of §§192-203 floating, heeled or pitched, clipped exactly (:mod:`symfloat.engine.floating_witness`)."""
 import sympy as sp
 
-from symfloat.engine.declare import part_of
+from symfloat.engine.declare import declarer, part_of
 from symfloat.engine.figure_witness import CurveRoot, Figure, FigureWitness
 from symfloat.engine.floating_witness import (LIMIT_METHODS, SERIES_METHODS, Body, Combined, FloatingRootWitness,
                                               FloatingWitness, Joined, Loaded, Root, SeriesWitness, potential_slope)
@@ -23,8 +23,7 @@ def rational_cases(*rows):
     return tuple(Case({k: sp.Rational(v) for k, v in params.items()}, label=label) for label, params in rows)
 
 
-def figure_witness(name, description, targets, cases, figure, quantity):
-    d.witness(FigureWitness(name, description, tuple(targets), cases, figure=figure, coords=(x, y), quantity=quantity))
+figure_witness = declarer(d, FigureWitness, coords=(x, y))      # the moments of a plane figure
 
 
 XC = measured("centroid, 1")
@@ -49,34 +48,34 @@ AB_CASES = rational_cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {
 Q_CASES = rational_cases(("a = 1, b = 1, c = 2", {a: 1, b: 1, c: 2}),
                          ("a = 5/2, b = 3/4, c = 3/2", {a: "5/2", b: "3/4", c: "3/2"}))
 
-figure_witness("square-moment", "∫∫ y^2 over the square", ("square-I",), SQ, SQUARE, I_YY)
+figure_witness("square-moment", "∫∫ y^2 over the square", ("square-I",), SQ, I_YY, figure=SQUARE)
 figure_witness("square-quadrant", "∫∫ y^2 and ∫∫ x^2 over the quadrant ACE of the square",
-               ("square-quadrant-I", "square-quadrant-K"), SQ, Figure.polygon([(0, 0), (a, 0), (a, a), (0, a)]),
-               I_YY)
-figure_witness("rect-I", "∫∫ y^2 over the rectangle", ("rect-I",), AB_CASES, RECTANGLE, I_YY)
-figure_witness("rect-K", "∫∫ x^2 over the rectangle", ("rect-K",), AB_CASES, RECTANGLE, I_XX)
-figure_witness("rhombus-I", "∫∫ y^2 over the rhombus", ("rhombus-I",), AB_CASES, RHOMBUS, I_YY)
-figure_witness("rhombus-K", "∫∫ x^2 over the rhombus", ("rhombus-K",), AB_CASES, RHOMBUS, I_XX)
-figure_witness("quad-I", "∫∫ y^2 over the quadrilateral AeBf", ("quad-I",), Q_CASES, KITE, I_YY)
-figure_witness("Ace-I", "∫∫ y^2 over the triangle Ace", ("Ace-I",), Q_CASES, ACE, I_YY)
-figure_witness("Ace-L", "∫∫ (x - a)^2 over the triangle Ace", ("Ace-L",), Q_CASES, ACE,
-               measured("integral", of=(x - a) ** 2))
-figure_witness("Bce-I", "∫∫ y^2 over the triangle Bce", ("Bce-I",), Q_CASES, BCE, I_YY)
-figure_witness("Bce-L", "∫∫ (x - a)^2 over the triangle Bce", ("Bce-L",), Q_CASES, BCE,
-               measured("integral", of=(x - a) ** 2))
+               ("square-quadrant-I", "square-quadrant-K"), SQ, I_YY,
+               figure=Figure.polygon([(0, 0), (a, 0), (a, a), (0, a)]))
+figure_witness("rect-I", "∫∫ y^2 over the rectangle", ("rect-I",), AB_CASES, I_YY, figure=RECTANGLE)
+figure_witness("rect-K", "∫∫ x^2 over the rectangle", ("rect-K",), AB_CASES, I_XX, figure=RECTANGLE)
+figure_witness("rhombus-I", "∫∫ y^2 over the rhombus", ("rhombus-I",), AB_CASES, I_YY, figure=RHOMBUS)
+figure_witness("rhombus-K", "∫∫ x^2 over the rhombus", ("rhombus-K",), AB_CASES, I_XX, figure=RHOMBUS)
+figure_witness("quad-I", "∫∫ y^2 over the quadrilateral AeBf", ("quad-I",), Q_CASES, I_YY, figure=KITE)
+figure_witness("Ace-I", "∫∫ y^2 over the triangle Ace", ("Ace-I",), Q_CASES, I_YY, figure=ACE)
+figure_witness("Ace-L", "∫∫ (x - a)^2 over the triangle Ace", ("Ace-L",), Q_CASES,
+               measured("integral", of=(x - a) ** 2), figure=ACE)
+figure_witness("Bce-I", "∫∫ y^2 over the triangle Bce", ("Bce-I",), Q_CASES, I_YY, figure=BCE)
+figure_witness("Bce-L", "∫∫ (x - a)^2 over the triangle Bce", ("Bce-L",), Q_CASES,
+               measured("integral", of=(x - a) ** 2), figure=BCE)
 figure_witness("quad-L", "∫∫ (x - a)^2 over the quadrilateral, ef at x = a", ("quad-L", "quad-L-again"), Q_CASES,
-               KITE, measured("integral", of=(x - a) ** 2))
+               measured("integral", of=(x - a) ** 2), figure=KITE)
 figure_witness("quad-centroid", "Cc = x_C - a, x_C the quadrilateral's centroid", ("centroid", "Cc-again"), Q_CASES,
-               KITE, XC - a)
-figure_witness("quad-K", "∫∫ (x - x_C)^2 over the quadrilateral, x_C its centroid", ("quad-K",), Q_CASES, KITE,
-               measured("integral", of=(x - XC) ** 2))
+               XC - a, figure=KITE)
+figure_witness("quad-K", "∫∫ (x - x_C)^2 over the quadrilateral, x_C its centroid", ("quad-K",), Q_CASES,
+               measured("integral", of=(x - XC) ** 2), figure=KITE)
 QM_CASES = rational_cases(("a = 1, b = 1, c = 2, m = 3/5", {a: 1, b: 1, c: 2, m: "3/5"}),
                           ("a = 5/2, b = 3/4, c = 3/2, m = 1/3", {a: "5/2", b: "3/4", c: "3/2", m: "1/3"}))
 figure_witness("quad-PQ", "∫∫ (m X - n y)^2 over the quadrilateral about its centroid",
-               ("moment-PQ-symmetric", "moment-PQ-increasing"), QM_CASES, KITE,
-               measured("integral", of=(m * (x - XC) - N_OF_M * y) ** 2))
-figure_witness("quad-RS", "∫∫ (n X + m y)^2 over the quadrilateral about its centroid",
-               ("moment-RS-symmetric",), QM_CASES, KITE, measured("integral", of=(N_OF_M * (x - XC) + m * y) ** 2))
+               ("moment-PQ-symmetric", "moment-PQ-increasing"), QM_CASES,
+               measured("integral", of=(m * (x - XC) - N_OF_M * y) ** 2), figure=KITE)
+figure_witness("quad-RS", "∫∫ (n X + m y)^2 over the quadrilateral about its centroid", ("moment-RS-symmetric",),
+               QM_CASES, measured("integral", of=(N_OF_M * (x - XC) + m * y) ** 2), figure=KITE)
 
 T_CASES = rational_cases(
     ("rectangle [-3/2, 5/2] x [-1/2, 5/2], m = 3/5, x_e = 2",
@@ -84,21 +83,21 @@ T_CASES = rational_cases(
     ("rectangle [-1, 1] x [1/4, 2], m = 1/4, x_e = -1/2",
      {X1: -1, Y1: "1/4", X2: 1, Y2: 2, m: "1/4", xe: "-1/2"}))
 figure_witness("generic-PQ", "∫∫ (m x - n y)^2 over the generic rectangle", ("moment-PQ-IK", "moment-PQ-restated"),
-               T_CASES, GENERIC, measured("integral", of=(m * x - N_OF_M * y) ** 2))
-figure_witness("generic-RS", "∫∫ (n x + m y)^2 over the generic rectangle", ("moment-RS-IK",), T_CASES, GENERIC,
-               measured("integral", of=(N_OF_M * x + m * y) ** 2))
+               T_CASES, measured("integral", of=(m * x - N_OF_M * y) ** 2), figure=GENERIC)
+figure_witness("generic-RS", "∫∫ (n x + m y)^2 over the generic rectangle", ("moment-RS-IK",), T_CASES,
+               measured("integral", of=(N_OF_M * x + m * y) ** 2), figure=GENERIC)
 figure_witness("generic-sum", "∫∫ (x^2 + y^2) over the generic rectangle (polar moment about the origin)",
-               ("sum-invariant",), T_CASES, GENERIC, measured("integral", of=x ** 2 + y ** 2))
+               ("sum-invariant",), T_CASES, measured("integral", of=x ** 2 + y ** 2), figure=GENERIC)
 figure_witness("generic-parallel", "∫∫ (x - x_C)^2 over the generic rectangle, x_C its centroid",
-               ("parallel-axis-rule",), T_CASES, GENERIC, measured("integral", of=(x - XC) ** 2))
+               ("parallel-axis-rule",), T_CASES, measured("integral", of=(x - XC) ** 2), figure=GENERIC)
 
 E_CASES = rational_cases(("a = 3, b = 2", {a: 3, b: 2}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
-figure_witness("ellipse-K", "∫∫ x^2 over the ellipse", ("ellipse-K",), E_CASES, ELLIPSE, I_XX)
-figure_witness("ellipse-I", "∫∫ y^2 over the ellipse", ("ellipse-I",), E_CASES, ELLIPSE, I_YY)
+figure_witness("ellipse-K", "∫∫ x^2 over the ellipse", ("ellipse-K",), E_CASES, I_XX, figure=ELLIPSE)
+figure_witness("ellipse-I", "∫∫ y^2 over the ellipse", ("ellipse-I",), E_CASES, I_YY, figure=ELLIPSE)
 figure_witness("ellipse-quadrant", "a quarter of ∫∫ x^2 over the ellipse (the quadrants are congruent)",
-               ("ellipse-quadrant-K", "ellipse-quadrant-moment"), E_CASES, ELLIPSE, I_XX / 4)
+               ("ellipse-quadrant-K", "ellipse-quadrant-moment"), E_CASES, I_XX / 4, figure=ELLIPSE)
 figure_witness("ellipse-quadrant-area", "a quarter of ∫∫ 1 over the ellipse", ("ellipse-quadrant-area",), E_CASES,
-               ELLIPSE, AREA / 4)
+               AREA / 4, figure=ELLIPSE)
 
 
 figure_part = part_of(FigureWitness, coords=(x, y))
@@ -154,55 +153,56 @@ d.witness(Joined("stability-K-box", "M GZ/phi of a pitched box by exact clipping
 
 # ---- second pass: the strip, the oblique axes and the areas, by the moments of the figures themselves ----------
 STRIP_CASES = rational_cases(("PM = 2, Pp = 1/2", {PM: 2, Pp: "1/2"}), ("PM = 5/3, Pp = 3/10", {PM: "5/3", Pp: "3/10"}))
-figure_witness("strip-moment", "∫∫ y^2 over the strip Pp wide from AB up to M", ("strip-moment",), STRIP_CASES,
-               STRIP, I_YY)
+figure_witness("strip-moment", "∫∫ y^2 over the strip Pp wide from AB up to M", ("strip-moment",), STRIP_CASES, I_YY,
+               figure=STRIP)
 # the generic rectangle off the origin, at angles whose sine and cosine are rational (3-4-5, 5-12-13)
 GEN_CASES = rational_cases(("m = 3/5, [-1, 2] x [0, 3]", {m: "3/5", X1: -1, Y1: 0, X2: 2, Y2: 3}),
                            ("m = 5/13, [-3/2, 5/2] x [1/2, 5/2]",
                             {m: "5/13", X1: "-3/2", Y1: "1/2", X2: "5/2", Y2: "5/2"}))
-figure_witness("moment-PQ-rectangle", "∫∫ u^2 over a rectangle off the origin, u the distance from PQ",
-               ("moment-PQ",), GEN_CASES, GENERIC, measured("integral", of=(m * x - N_OF_M * y) ** 2))
-figure_witness("moment-RS-rectangle", "∫∫ t^2 over a rectangle off the origin, t the distance from RS",
-               ("moment-RS",), GEN_CASES, GENERIC, measured("integral", of=(N_OF_M * x + m * y) ** 2))
-figure_witness("generic-area", "∫∫ 1 over the rectangle off the origin", ("area-2D",), GEN_CASES, GENERIC, AREA)
-figure_witness("square-area-quadrature", "∫∫ 1 over the square", ("square-area",), SQ, SQUARE, AREA)
-figure_witness("rect-area-quadrature", "∫∫ 1 over the rectangle", ("rect-area",), AB_CASES, RECTANGLE, AREA)
-figure_witness("rhombus-area-quadrature", "∫∫ 1 over the rhombus", ("rhombus-area",), AB_CASES, RHOMBUS, AREA)
+figure_witness("moment-PQ-rectangle", "∫∫ u^2 over a rectangle off the origin, u the distance from PQ", ("moment-PQ",),
+               GEN_CASES, measured("integral", of=(m * x - N_OF_M * y) ** 2), figure=GENERIC)
+figure_witness("moment-RS-rectangle", "∫∫ t^2 over a rectangle off the origin, t the distance from RS", ("moment-RS",),
+               GEN_CASES, measured("integral", of=(N_OF_M * x + m * y) ** 2), figure=GENERIC)
+figure_witness("generic-area", "∫∫ 1 over the rectangle off the origin", ("area-2D",), GEN_CASES, AREA, figure=GENERIC)
+figure_witness("square-area-quadrature", "∫∫ 1 over the square", ("square-area",), SQ, AREA, figure=SQUARE)
+figure_witness("rect-area-quadrature", "∫∫ 1 over the rectangle", ("rect-area",), AB_CASES, AREA, figure=RECTANGLE)
+figure_witness("rhombus-area-quadrature", "∫∫ 1 over the rhombus", ("rhombus-area",), AB_CASES, AREA, figure=RHOMBUS)
 ELLIPSE_POINTS = rational_cases(("a = 2, b = 1, x = 1/2", {a: 2, b: 1, x: "1/2"}),
                                 ("a = 5/2, b = 3/4, x = 2", {a: "5/2", b: "3/4", x: 2}))
 d.witness(CurveRoot("ellipse-ordinate-root", "the ordinate of the ellipse by root-finding", ("ellipse-ordinate",),
                     ELLIPSE_POINTS, equation=x ** 2 / a ** 2 + y ** 2 / b ** 2 - 1, variable=y, bracket=(0, b)))
 
 figure_witness("I-K-rectangle", "∫∫ y^2 and ∫∫ x^2 over a rectangle off the origin", ("I-K-definitions",), GEN_CASES,
-               GENERIC, (I_YY, I_XX))
+               (I_YY, I_XX), figure=GENERIC)
 figure_witness("polar-rectangle", "∫∫ (x^2 + y^2) over a rectangle off the origin", ("polar-sum",), GEN_CASES,
-               GENERIC, measured("integral", of=x ** 2 + y ** 2))
-figure_witness("xy-quadrilateral", "∫∫ xy over the quadrilateral AeBf", ("xy-vanishes",), Q_CASES, KITE,
-               measured("integral", of=x * y))
+               measured("integral", of=x ** 2 + y ** 2), figure=GENERIC)
+figure_witness("xy-quadrilateral", "∫∫ xy over the quadrilateral AeBf", ("xy-vanishes",), Q_CASES,
+               measured("integral", of=x * y), figure=KITE)
 SQ_ANGLES = rational_cases(("a = 1, m = 3/5", {a: 1, m: "3/5"}), ("a = 3/2, m = 5/13", {a: "3/2", m: "5/13"}))
 figure_witness("square-oblique", "∫∫ u^2 over the square, u the distance from an oblique axis through C",
-               ("square-all-axes",), SQ_ANGLES, SQUARE, measured("integral", of=(m * x - N_OF_M * y) ** 2))
+               ("square-all-axes",), SQ_ANGLES, measured("integral", of=(m * x - N_OF_M * y) ** 2), figure=SQUARE)
 STRIP2_CASES = rational_cases(("PM = 2, PN = 1, Pp = 1/2", {PM: 2, PN: 1, Pp: "1/2"}),
                               ("PM = 5/3, PN = 7/4, Pp = 3/10", {PM: "5/3", PN: "7/4", Pp: "3/10"}))
-figure_witness("strip-both-sides", "∫∫ y^2 over the strip Pp wide from N to M", ("strip-sum-of-squares",),
-               STRIP2_CASES, STRIP_NM, I_YY)
+figure_witness("strip-both-sides", "∫∫ y^2 over the strip Pp wide from N to M", ("strip-sum-of-squares",), STRIP2_CASES,
+               I_YY, figure=STRIP_NM)
 figure_witness("quadrant-xy", "∫∫ xy over the lower half of the quadrilateral AeBf", ("quadrants-cancel",), Q_CASES,
-               KITE_LOWER, measured("integral", of=x * y))
-figure_witness("quad-area-quadrature", "∫∫ 1 over the quadrilateral AeBf", ("quad-area-2D",), Q_CASES, KITE, AREA)
+               measured("integral", of=x * y), figure=KITE_LOWER)
+figure_witness("quad-area-quadrature", "∫∫ 1 over the quadrilateral AeBf", ("quad-area-2D",), Q_CASES, AREA,
+               figure=KITE)
 figure_witness("ellipse-quadrant-quadrature", "a quarter of ∫∫ 1 over the ellipse", ("quadrant-area-integral",),
-               AB_CASES, ELLIPSE, AREA / 4)
+               AB_CASES, AREA / 4, figure=ELLIPSE)
 GEN_E_CASES = rational_cases(("[-1, 2] x [0, 3], x_e = 5/2", {X1: -1, Y1: 0, X2: 2, Y2: 3, xe: "5/2"}),
                              ("[-3/2, 5/2] x [1/2, 5/2], x_e = -1", {X1: "-3/2", Y1: "1/2", X2: "5/2", Y2: "5/2", xe: -1}))
 figure_witness("L-rectangle", "∫∫ (x - x_e)^2 over a rectangle off the origin", ("L-definition",), GEN_E_CASES,
-               GENERIC, measured("integral", of=(x - xe) ** 2))
+               measured("integral", of=(x - xe) ** 2), figure=GENERIC)
 figure_witness("EF-rectangle", "∫∫ (x - x_C)^2 over a rectangle off the origin, x_C its centroid",
-               ("EF-moment-definition",), GEN_E_CASES, GENERIC, measured("integral", of=(x - XC) ** 2))
+               ("EF-moment-definition",), GEN_E_CASES, measured("integral", of=(x - XC) ** 2), figure=GENERIC)
 figure_witness("sum-of-cubes-strip", "3 ∫∫ y^2 over the strip Pp wide from N to M", ("sum-of-cubes",), STRIP2_CASES,
-               STRIP_NM, 3 * I_YY)
-figure_witness("aggregate-strip", "∫∫ y^2 over the strip Pp wide from N to M", ("aggregate",), STRIP2_CASES,
-               STRIP_NM, I_YY)
+               3 * I_YY, figure=STRIP_NM)
+figure_witness("aggregate-strip", "∫∫ y^2 over the strip Pp wide from N to M", ("aggregate",), STRIP2_CASES, I_YY,
+               figure=STRIP_NM)
 figure_witness("lower-half-moment", "∫∫ y^2 over the half of the quadrilateral below AB", ("equal-quadrants",), Q_CASES,
-               KITE_LOWER, I_YY)
+               I_YY, figure=KITE_LOWER)
 
 
 def _box_case(s_, hv, label):

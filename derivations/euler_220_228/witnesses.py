@@ -2,6 +2,7 @@
 (:mod:`symfloat.engine.figure_witness`); the integrals of §§225-227 by quadrature of their integrands."""
 import sympy as sp
 
+from symfloat.engine.declare import declarer
 from symfloat.engine.figure_witness import Figure, FigureWitness
 from symfloat.engine.floating_witness import Combined
 from symfloat.engine.measured import measured
@@ -36,8 +37,7 @@ def curve_figure(Y, region, whole=False):
     return Figure.strips(x_, y, -b if whole else 0, b, ends, breaks=(0,) if whole else ())
 
 
-def figure_witness(name, description, targets, cases, figure, quantity):
-    d.witness(FigureWitness(name, description, tuple(targets), cases, figure=figure, coords=(x_, y), quantity=quantity))
+figure_witness = declarer(d, FigureWitness, coords=(x_, y))      # the moments of a plane figure
 
 
 GEN = _cases(("a = 2, b = 1, Y = |y|/4 + y²/8", {a: 2, b: 1, p: "1/4", q: "1/8"}),
@@ -47,30 +47,30 @@ CFIG = _cases(("a = 2, b = 1, c = 1/2", {a: 2, b: 1, c: "1/2"}),
 AB_ONLY = _cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
 
 for _region in ("Ace", "Bce", "AEB"):
-    figure_witness(f"area-{_region}", f"∫∫ 1 over {_region}", (f"area-{_region}",), GEN,
-                   curve_figure(Yg, _region), AREA)
-    figure_witness(f"AB-{_region}", f"∫∫ y² over {_region}", (f"AB-{_region}",), GEN,
-                   curve_figure(Yg, _region), I_YY)
-figure_witness("area-whole", "∫∫ 1 over the whole figure AEBF", ("area-ellipse",), GEN,
-               curve_figure(Yg, "AEB", whole=True), AREA)
-figure_witness("AB-whole", "∫∫ y² over the whole figure AEBF", ("AB-whole",), GEN,
-               curve_figure(Yg, "AEB", whole=True), I_YY)
-figure_witness("Aa-Ace", "∫∫ x² over Ace (moment about aAa, x = 0)", ("Aa-Ace-expanded",), GEN,
-               curve_figure(Yg, "Ace"), I_XX)
-figure_witness("Aa-Bce", "∫∫ x² over Bce", ("Aa-Bce-expanded",), GEN, curve_figure(Yg, "Bce"), I_XX)
-figure_witness("Aa-AEB", "∫∫ x² over AEB", ("Aa-AEB", "Aa-AEB-value"), GEN, curve_figure(Yg, "AEB"), I_XX)
-figure_witness("Aa-whole", "∫∫ x² over the whole figure", ("Aa-whole",), GEN,
-               curve_figure(Yg, "AEB", whole=True), I_XX)
-figure_witness("first-moment", "∫∫ x over AEB (D·AC)", ("DAC-definition", "DAC"), GEN, curve_figure(Yg, "AEB"),
-               measured("integral", of=x_))
-figure_witness("centroid", "x_C of AEB", ("AC",), GEN, curve_figure(Yg, "AEB"), XC)
+    figure_witness(f"area-{_region}", f"∫∫ 1 over {_region}", (f"area-{_region}",), GEN, AREA,
+                   figure=curve_figure(Yg, _region))
+    figure_witness(f"AB-{_region}", f"∫∫ y² over {_region}", (f"AB-{_region}",), GEN, I_YY,
+                   figure=curve_figure(Yg, _region))
+figure_witness("area-whole", "∫∫ 1 over the whole figure AEBF", ("area-ellipse",), GEN, AREA,
+               figure=curve_figure(Yg, "AEB", whole=True))
+figure_witness("AB-whole", "∫∫ y² over the whole figure AEBF", ("AB-whole",), GEN, I_YY,
+               figure=curve_figure(Yg, "AEB", whole=True))
+figure_witness("Aa-Ace", "∫∫ x² over Ace (moment about aAa, x = 0)", ("Aa-Ace-expanded",), GEN, I_XX,
+               figure=curve_figure(Yg, "Ace"))
+figure_witness("Aa-Bce", "∫∫ x² over Bce", ("Aa-Bce-expanded",), GEN, I_XX, figure=curve_figure(Yg, "Bce"))
+figure_witness("Aa-AEB", "∫∫ x² over AEB", ("Aa-AEB", "Aa-AEB-value"), GEN, I_XX, figure=curve_figure(Yg, "AEB"))
+figure_witness("Aa-whole", "∫∫ x² over the whole figure", ("Aa-whole",), GEN, I_XX,
+               figure=curve_figure(Yg, "AEB", whole=True))
+figure_witness("first-moment", "∫∫ x over AEB (D·AC)", ("DAC-definition", "DAC"), GEN, measured("integral", of=x_),
+               figure=curve_figure(Yg, "AEB"))
+figure_witness("centroid", "x_C of AEB", ("AC",), GEN, XC, figure=curve_figure(Yg, "AEB"))
 figure_witness("moment-EF", "∫∫ (x - x_C)² over the whole figure, x_C its centroid", ("moment-EF",), GEN,
-               curve_figure(Yg, "AEB", whole=True), measured("integral", of=(x_ - XC) ** 2))
-figure_witness("centroid-c", "x_C of AEB, Y = -cy²/b²", ("AC-c",), CFIG, curve_figure(Yc, "AEB"), XC)
+               measured("integral", of=(x_ - XC) ** 2), figure=curve_figure(Yg, "AEB", whole=True))
+figure_witness("centroid-c", "x_C of AEB, Y = -cy²/b²", ("AC-c",), CFIG, XC, figure=curve_figure(Yc, "AEB"))
 figure_witness("moment-EF-c", "∫∫ (x - x_C)² over the whole figure, Y = -cy²/b²", ("moment-EF-c",), CFIG,
-               curve_figure(Yc, "AEB", whole=True), measured("integral", of=(x_ - XC) ** 2))
+               measured("integral", of=(x_ - XC) ** 2), figure=curve_figure(Yc, "AEB", whole=True))
 figure_witness("moment-EF-half", "∫∫ (x - x_C)² over the figure with c = a/2", ("moment-EF-half",), AB_ONLY,
-               curve_figure(Yc.subs(c, a / 2), "AEB", whole=True), measured("integral", of=(x_ - XC) ** 2))
+               measured("integral", of=(x_ - XC) ** 2), figure=curve_figure(Yc.subs(c, a / 2), "AEB", whole=True))
 d.witness(Combined("sixteenth", "(K(c = a/2) - K(c = 0))/K(c = 0), both moments measured", ("sixteenth",), AB_ONLY,
                    parts=tuple(FigureWitness("", "", (), (), figure=curve_figure(Yc.subs(c, cv), "AEB", whole=True),
                                              coords=(x_, y), quantity=measured("integral", of=(x_ - XC) ** 2))
@@ -79,8 +79,8 @@ d.witness(Combined("sixteenth", "(K(c = a/2) - K(c = 0))/K(c = 0), both moments 
 
 
 def line_witness(name, targets, cases, g, text):
-    figure_witness(name, f"∫_0^b {text} dy by quadrature", targets, cases, Figure.interval(y, 0, b),
-                   measured("integral", of=g))
+    figure_witness(name, f"∫_0^b {text} dy by quadrature", targets, cases, measured("integral", of=g),
+                   figure=Figure.interval(y, 0, b))
 
 
 line_witness("U0", ("reduce-U0", "U0-value"), AB_ONLY, R, "√(b² - y²)")

@@ -4,7 +4,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from symfloat.engine.declare import part_of
+from symfloat.engine.declare import declarer, part_of
 from symfloat.engine.figure_witness import Figure, FigureWitness
 from symfloat.engine.floating_witness import (LIMIT_METHODS, Body, Combined, FloatingWitness, Joined, Loaded,
                                               potential_slope)
@@ -35,8 +35,7 @@ def family(Y, N_=n, K_=k):
     return Figure.strips(XP, y, 0, b, (a + Y - a * R_, a + Y + a * R_), smooth=4)
 
 
-def _w(name, description, targets, cases, figure, quantity):
-    d.witness(FigureWitness(name, description, tuple(targets), cases, figure=figure, coords=(XP, y), quantity=quantity))
+figure_witness = declarer(d, FigureWitness, coords=(XP, y))      # the moments of a plane figure
 
 
 part = part_of(FigureWitness, coords=(XP, y))
@@ -50,32 +49,32 @@ GENERIC = (Case({a: 1, b: 1, n: 2, k: sp.Rational(1, 2), c1: sp.Rational(-1, 4),
            Case({a: sp.Rational(3, 2), b: sp.Rational(1, 2), n: 3, k: sp.Rational(3, 2), c1: sp.Rational(1, 3),
                  c2: sp.Rational(-1, 5), al: 2, xk: sp.Rational(1, 2)},
                 label="n = 3, κ = 3/2, Y = y³/3·8 − y⁶·64/5, a = 3/2, b = 1/2"))
-_w("family-area", "the half area ∫∫1 over AEB", ("area",), GENERIC, family(Y_GENERIC), AREA)
-_w("family-area-integral", "∫∫1 over AEB divided by 2a", ("area-integral",), GENERIC, family(Y_GENERIC),
-   AREA / (2 * a))
-_w("family-moment-AB", "∫∫y² over AEB", ("moment-AB",), GENERIC, family(Y_GENERIC), I_YY)
-_w("family-moment-O", "∫∫(x − a)² over AEB", ("moment-O",), GENERIC, family(Y_GENERIC),
-   measured("integral", of=(XP - a) ** 2))
-_w("family-moment-O-whole", "∫∫(x − a)² over the whole figure (both halves)", ("moment-O-whole",), GENERIC,
-   family(Y_GENERIC), 2 * measured("integral", of=(XP - a) ** 2))
-_w("family-centroid-moment", "D·CO = −∫∫(x − a) over AEB", ("centroid-moment",), GENERIC, family(Y_GENERIC),
-   -measured("integral", of=XP - a))
-_w("family-CO", "CO = a − x_C, x_C the centroid of AEB", ("CO",), GENERIC, family(Y_GENERIC), a - XC)
-_w("family-moment-EF", "∫∫(x − x_C)² over the whole figure, x_C its centroid", ("moment-EF",), GENERIC,
-   family(Y_GENERIC), K_WHOLE)
+figure_witness("family-area", "the half area ∫∫1 over AEB", ("area",), GENERIC, AREA, figure=family(Y_GENERIC))
+figure_witness("family-area-integral", "∫∫1 over AEB divided by 2a", ("area-integral",), GENERIC, AREA / (2 * a),
+               figure=family(Y_GENERIC))
+figure_witness("family-moment-AB", "∫∫y² over AEB", ("moment-AB",), GENERIC, I_YY, figure=family(Y_GENERIC))
+figure_witness("family-moment-O", "∫∫(x − a)² over AEB", ("moment-O",), GENERIC, measured("integral", of=(XP - a) ** 2),
+               figure=family(Y_GENERIC))
+figure_witness("family-moment-O-whole", "∫∫(x − a)² over the whole figure (both halves)", ("moment-O-whole",), GENERIC,
+               2 * measured("integral", of=(XP - a) ** 2), figure=family(Y_GENERIC))
+figure_witness("family-centroid-moment", "D·CO = −∫∫(x − a) over AEB", ("centroid-moment",), GENERIC,
+               -measured("integral", of=XP - a), figure=family(Y_GENERIC))
+figure_witness("family-CO", "CO = a − x_C, x_C the centroid of AEB", ("CO",), GENERIC, a - XC, figure=family(Y_GENERIC))
+figure_witness("family-moment-EF", "∫∫(x − x_C)² over the whole figure, x_C its centroid", ("moment-EF",), GENERIC,
+               K_WHOLE, figure=family(Y_GENERIC))
 
 CFAM = (Case({a: 1, b: 1, n: 2, k: sp.Rational(1, 2), c: sp.Rational(1, 4), al: sp.Rational(3, 2)},
              label="n = 2, κ = 1/2, c = 1/4, a = b = 1"),
         Case({a: sp.Rational(3, 2), b: sp.Rational(1, 2), n: 3, k: sp.Rational(3, 2), c: sp.Rational(1, 3), al: 2},
              label="n = 3, κ = 3/2, c = 1/3, a = 3/2, b = 1/2"))
-_w("c-first", "∫Y R dy = −D·CO/(2a) from ∫∫(x − a) over AEB (Y = −cyⁿ/bⁿ)", ("Y-c-first",), CFAM, family(Y_C),
-   measured("integral", of=XP - a) / (2 * a))
+figure_witness("c-first", "∫Y R dy = −D·CO/(2a) from ∫∫(x − a) over AEB (Y = −cyⁿ/bⁿ)", ("Y-c-first",), CFAM,
+               measured("integral", of=XP - a) / (2 * a), figure=family(Y_C))
 d.witness(Combined("c-second", "∫Y²R dy = (∫∫(x − a)² at c minus at c = 0)/(2a) over AEB", ("Y-c-second",), CFAM,
                    parts=(part(figure=family(Y_C), quantity=measured("integral", of=(XP - a) ** 2)),
                           part(figure=family(0), quantity=measured("integral", of=(XP - a) ** 2))),
                    values=((measured("part 1") - measured("part 2")) / (2 * a),)))
-_w("c-moment-EF", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
-   ("moment-EF-c", "moment-EF-c-p118", "moment-EF-N"), CFAM, family(Y_C), K_WHOLE)
+figure_witness("c-moment-EF", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
+               ("moment-EF-c", "moment-EF-c-p118", "moment-EF-N"), CFAM, K_WHOLE, figure=family(Y_C))
 d.witness(Combined("c-excess", "K at c minus K at c = 0, both measured", ("unequal-halves",), CFAM,
                    parts=(part(figure=family(Y_C), quantity=K_WHOLE), part(figure=family(0), quantity=K_WHOLE)),
                    values=(measured("part 1") - measured("part 2"),)))
@@ -84,37 +83,38 @@ u = sp.Symbol("u", positive=True)
 for kv in KAPPAS:
     grid = tuple(Case({n: nv, a: 1, b: sp.Rational(3, 4)}, label="κ = %s, n = %s, a = 1, b = 3/4" % (kv, nv))
                  for nv in (1, 2, 3))
-    _w("K-table-%s" % _label(kv), "∫∫(x − x_C)² over the figure κ = %s, c = 0" % kv, ("K-table-%s" % _label(kv),),
-       grid, family(0, K_=kv), K_WHOLE)
-    _w("N-table-%s" % _label(kv), "N for κ = %s by quadrature of its two integrals" % kv, ("N-table-%s" % _label(kv),),
-       grid, Figure.interval(u, 0, 1, smooth=4),
-       measured("integral", of=(1 - u ** n) ** (3 * kv - 1)) / measured("integral", of=(1 - u ** n) ** kv))
+    figure_witness("K-table-%s" % _label(kv), "∫∫(x − x_C)² over the figure κ = %s, c = 0" % kv,
+                   ("K-table-%s" % _label(kv),), grid, K_WHOLE, figure=family(0, K_=kv))
+    figure_witness("N-table-%s" % _label(kv), "N for κ = %s by quadrature of its two integrals" % kv,
+                   ("N-table-%s" % _label(kv),), grid,
+                   measured("integral", of=(1 - u ** n) ** (3 * kv - 1)) / measured("integral", of=(1 - u ** n) ** kv),
+                   figure=Figure.interval(u, 0, 1, smooth=4))
 
 AB1 = (Case({a: 1, b: sp.Rational(3, 4)}, label="a = 1, b = 3/4"), Case({a: 2, b: 1}, label="a = 2, b = 1"))
 for case_name, case_kv, case_nv, *_ in CASES236:
-    _w("case-" + case_name, "∫∫(x − x_C)² over the figure κ = %s, n = %s" % (case_kv, case_nv), ("case-" + case_name,), AB1,
-       family(0, case_nv, case_kv), K_WHOLE)
+    figure_witness("case-" + case_name, "∫∫(x − x_C)² over the figure κ = %s, n = %s" % (case_kv, case_nv),
+                   ("case-" + case_name,), AB1, K_WHOLE, figure=family(0, case_nv, case_kv))
 
 # μ about AB and about EF, EF²D/I and AB²D/K (2D the area, EF = 2b, AB = 2a), for figures symmetric about both axes
 MU_OF_FIGURE = ((2 * b) ** 2 * AREA / 2 / I_YY, (2 * a) ** 2 * AREA / 2 / measured("integral", of=XP ** 2))
 MU_OF_HALF = ((2 * b) ** 2 * AREA / (2 * I_YY), (2 * a) ** 2 * AREA / K_WHOLE)   # from the half AEB
 MU = (Case({a: 2, b: 1}, label="a = 2, b = 1"), Case({a: 3, b: sp.Rational(1, 2)}, label="a = 3, b = 1/2"))
 PARABOLA = Figure.strips(y, XP, -a, a, (-b * (1 - XP ** 2 / a ** 2), b * (1 - XP ** 2 / a ** 2)))
-_w("mu-rectangle", "μ of the rectangle from its moments", ("mu-rectangle",), MU,
-   Figure.polygon([(-a, -b), (a, -b), (a, b), (-a, b)]), MU_OF_FIGURE)
-_w("mu-rhombus", "μ of the rhombus from its moments", ("mu-rhombus",), MU,
-   Figure.polygon([(-a, 0), (0, -b), (a, 0), (0, b)]), MU_OF_FIGURE)
-_w("mu-parabola-AB", "μ about AB of the parabola y = b(1 − x²/a²)", ("mu-parabola-AB",), MU, PARABOLA,
-   MU_OF_FIGURE[0])
-_w("mu-parabola-EF", "μ about EF of the parabola y = b(1 − x²/a²)", ("mu-parabola-EF",), MU, PARABOLA,
-   MU_OF_FIGURE[1])
-_w("mu-ellipse", "μ of the ellipse (the member n = 2, κ = 1/2) from its moments", ("mu-ellipse",), MU,
-   family(0, 2, sp.Rational(1, 2)), MU_OF_HALF)
+figure_witness("mu-rectangle", "μ of the rectangle from its moments", ("mu-rectangle",), MU, MU_OF_FIGURE,
+               figure=Figure.polygon([(-a, -b), (a, -b), (a, b), (-a, b)]))
+figure_witness("mu-rhombus", "μ of the rhombus from its moments", ("mu-rhombus",), MU, MU_OF_FIGURE,
+               figure=Figure.polygon([(-a, 0), (0, -b), (a, 0), (0, b)]))
+figure_witness("mu-parabola-AB", "μ about AB of the parabola y = b(1 − x²/a²)", ("mu-parabola-AB",), MU,
+               MU_OF_FIGURE[0], figure=PARABOLA)
+figure_witness("mu-parabola-EF", "μ about EF of the parabola y = b(1 − x²/a²)", ("mu-parabola-EF",), MU,
+               MU_OF_FIGURE[1], figure=PARABOLA)
+figure_witness("mu-ellipse", "μ of the ellipse (the member n = 2, κ = 1/2) from its moments", ("mu-ellipse",), MU,
+               MU_OF_HALF, figure=family(0, 2, sp.Rational(1, 2)))
 MU_ADM = tuple(Case({a: 1, b: 1, n1: nv, k1: kv}, label="n = %s, κ = %s" % (nv, kv))
                for nv, kv in ((1, sp.Rational(1, 4)), (1, 1), (2, sp.Rational(1, 4)), (3, sp.Rational(1, 2)),
                               (4, sp.Rational(3, 4))))
-_w("mu-bounds", "μ about AB and EF of admissible members of the family from their moments", ("mu-bounds",), MU_ADM,
-   family(0, n1, k1), MU_OF_HALF)
+figure_witness("mu-bounds", "μ about AB and EF of admissible members of the family from their moments", ("mu-bounds",),
+               MU_ADM, MU_OF_HALF, figure=family(0, n1, k1))
 
 
 # ---------------------------------------------------------------- §243: the three solids, exact hulls
@@ -199,11 +199,12 @@ d.witness(Joined("stability-kite-prism-EF", "M·GZ/φ of the upright kite prism 
                  "G above O", ("stability-EF",), KITE_CASES, parts=(heeled_stability(kite_prism, TILT, 1),)))
 
 # second pass: the moment named 'about the longitudinal axis EF' of §230 is the one about the latitudinal EF
-_w("family-axis-EF-named", "∫∫(x − x_C)² over the whole figure, x_C its centroid", ("axis-EF-named",), GENERIC,
-   family(Y_GENERIC), K_WHOLE)
-_w("by-parts-quadrature", "∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy/bⁿ by 1-D quadrature", ("by-parts-3k",),
-   tuple(Case({b: sp.Rational(bv), n: nv, k: sp.Rational(kv)}, label=f"b = {bv}, n = {nv}, κ = {kv}")
-         for bv, nv, kv in (("1", 2, "1/2"), ("3/4", 3, "3/2"), ("2", 1, "1"))),
-   Figure.interval(y, 0, b, smooth=4), measured("integral", of=y ** n * (1 - (y / b) ** n) ** (3 * k - 1)) / b ** n)
-_w("c-zero-suffices-quadrature", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
-   ("c-zero-suffices",), CFAM, family(Y_C), K_WHOLE)
+figure_witness("family-axis-EF-named", "∫∫(x − x_C)² over the whole figure, x_C its centroid", ("axis-EF-named",),
+               GENERIC, K_WHOLE, figure=family(Y_GENERIC))
+figure_witness("by-parts-quadrature", "∫yⁿ(1 − yⁿ/bⁿ)^{3κ−1}dy/bⁿ by 1-D quadrature", ("by-parts-3k",),
+               tuple(Case({b: sp.Rational(bv), n: nv, k: sp.Rational(kv)}, label=f"b = {bv}, n = {nv}, κ = {kv}")
+                     for bv, nv, kv in (("1", 2, "1/2"), ("3/4", 3, "3/2"), ("2", 1, "1"))),
+               measured("integral", of=y ** n * (1 - (y / b) ** n) ** (3 * k - 1)) / b ** n,
+               figure=Figure.interval(y, 0, b, smooth=4))
+figure_witness("c-zero-suffices-quadrature", "∫∫(x − x_C)² over the whole figure with Y = −cyⁿ/bⁿ",
+               ("c-zero-suffices",), CFAM, K_WHOLE, figure=family(Y_C))

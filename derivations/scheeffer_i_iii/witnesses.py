@@ -1,6 +1,7 @@
 """Scheeffer I-III's witnesses: floating prisms clipped exactly (:mod:`symfloat.engine.floating_witness`)."""
 import sympy as sp
 
+from symfloat.engine.declare import declarer
 from symfloat.engine.floating_witness import LIMIT_METHODS, Body, FloatingWitness
 from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case, Precision
@@ -25,38 +26,36 @@ TRAP = (_trap_case(3, 3, 2, sp.Rational(1, 5)), _trap_case(2, 1, 2, sp.Rational(
         _trap_case(2, sp.Rational(1, 2), sp.Rational(3, 2), sp.Rational(3, 4)))
 
 
-def _w(name, description, targets, quantity):
-    """The trapezoid prism tilted from upright (both water planes clipped from the body, the axis where they
-    meet found, not assumed at the centroid)."""
-    d.witness(FloatingWitness(name, description, targets, TRAP, body=TRAPEZOID, up=(-sp.tan(phi), 0, 1),
-                              reference=(0, 0, 1), density=sp.Rational(1, 2), quantity=quantity, methods=EXACT))
-
-
-_w("wedges-e-k", "V3 e = V3 x3 + V4 x4 and V3 k = V3 y3 + V4 y4 of the clipped wedges",
-   ("moments-10", "moments-sum", "moments-11"),
-   (measured("immersed wedge moment, horizontal") + measured("emerged wedge moment, horizontal"),
-    measured("immersed wedge moment, vertical") + measured("emerged wedge moment, vertical")))
-_w("wedge-3", "static moments of the clipped immersed wedge", ("moments-10a",),
-   (measured("immersed wedge moment, vertical"), measured("immersed wedge moment, horizontal")))
-_w("wedge-4", "static moments of the clipped emerged wedge", ("moments-10b",),
-   (measured("emerged wedge moment, vertical"), measured("emerged wedge moment, horizontal")))
-_w("wedge-volume-3", "volume of the clipped immersed wedge", ("volume-V3",), measured("immersed wedge volume"))
-_w("wedge-volume-4", "volume of the clipped emerged wedge", ("volume-V4",), measured("emerged wedge volume"))
-_w("wedge-volume-over-tg", "clipped wedge volumes over tg phi (both wedges)", ("moments-equal",),
-   measured("emerged wedge volume") / sp.tan(phi))
-_w("axis-position", "where the tilted water plane meets the old one (clipping, draught)", ("axis-centroid",),
-   measured("axis position"))
-_w("buoyancy-body-frame", "centre of buoyancy of the clipped tilted body in the body frame, times V1",
-   ("moments-raw", "moments-6"), (measured("immersed volume") * measured("B - G, x"),
-                                  -measured("immersed volume") * measured("B - G, z")))
-_w("buoyancy-world-frame", "centre of buoyancy of the clipped tilted body in the world frame", ("rotation-5",),
-   (measured("righting arm"), measured("G above B")))
-_w("righting-moment", "V1 m, V1 n of the clipped tilted body", ("moments-7",),
-   (measured("immersed volume") * measured("righting arm"), measured("immersed volume") * measured("G above B")))
-_w("righting-moment-m", "V1 m of the clipped tilted body", ("moment-12",),
-   measured("immersed volume") * measured("righting arm"))
-_w("righting-moment-n", "V1 n (weight times height of S above S2) of the clipped tilted body", ("moment-13",),
-   measured("immersed volume") * measured("G above B"))
+# the trapezoid prism tilted from upright (both water planes clipped from the body, the axis where they meet found,
+# not assumed at the centroid)
+tilted = declarer(d, FloatingWitness, body=TRAPEZOID, up=(-sp.tan(phi), 0, 1), reference=(0, 0, 1),
+                  density=sp.Rational(1, 2), methods=EXACT)
+tilted("wedges-e-k", "V3 e = V3 x3 + V4 x4 and V3 k = V3 y3 + V4 y4 of the clipped wedges",
+       ("moments-10", "moments-sum", "moments-11"), TRAP,
+       (measured("immersed wedge moment, horizontal") + measured("emerged wedge moment, horizontal"),
+        measured("immersed wedge moment, vertical") + measured("emerged wedge moment, vertical")))
+tilted("wedge-3", "static moments of the clipped immersed wedge", ("moments-10a",), TRAP,
+       (measured("immersed wedge moment, vertical"), measured("immersed wedge moment, horizontal")))
+tilted("wedge-4", "static moments of the clipped emerged wedge", ("moments-10b",), TRAP,
+       (measured("emerged wedge moment, vertical"), measured("emerged wedge moment, horizontal")))
+tilted("wedge-volume-3", "volume of the clipped immersed wedge", ("volume-V3",), TRAP,
+       measured("immersed wedge volume"))
+tilted("wedge-volume-4", "volume of the clipped emerged wedge", ("volume-V4",), TRAP, measured("emerged wedge volume"))
+tilted("wedge-volume-over-tg", "clipped wedge volumes over tg phi (both wedges)", ("moments-equal",), TRAP,
+       measured("emerged wedge volume") / sp.tan(phi))
+tilted("axis-position", "where the tilted water plane meets the old one (clipping, draught)", ("axis-centroid",), TRAP,
+       measured("axis position"))
+tilted("buoyancy-body-frame", "centre of buoyancy of the clipped tilted body in the body frame, times V1",
+       ("moments-raw", "moments-6"), TRAP,
+       (measured("immersed volume") * measured("B - G, x"), -measured("immersed volume") * measured("B - G, z")))
+tilted("buoyancy-world-frame", "centre of buoyancy of the clipped tilted body in the world frame", ("rotation-5",),
+       TRAP, (measured("righting arm"), measured("G above B")))
+tilted("righting-moment", "V1 m, V1 n of the clipped tilted body", ("moments-7",), TRAP,
+       (measured("immersed volume") * measured("righting arm"), measured("immersed volume") * measured("G above B")))
+tilted("righting-moment-m", "V1 m of the clipped tilted body", ("moment-12",), TRAP,
+       measured("immersed volume") * measured("righting arm"))
+tilted("righting-moment-n", "V1 n (weight times height of S above S2) of the clipped tilted body", ("moment-13",), TRAP,
+       measured("immersed volume") * measured("G above B"))
 
 
 # -- small-angle limits: horizontal prisms heeled by psi about their axis z (the side -x dips) --------------
@@ -80,15 +79,11 @@ SMALL = (
 )
 
 
-def _limit(name, description, targets, quantity):
-    d.witness(FloatingWitness(name, description, targets, SMALL, body=None, up=(sp.sin(psi), sp.cos(psi), 0),
-                              reference=(0, 1, 0), density=s_body, quantity=quantity, limit=(psi, 1),
-                              methods=LIMIT_METHODS))
-
-
-_limit("righting-arm-limit", "lim m(psi)/psi from the clipped heeled body (extrapolated)",
-       ("duhamel-16", "general-body"), measured("righting arm"))
-_limit("wedge-limits", "leading terms of the clipped immersed wedge's moments (extrapolated)", ("series-3",),
+heeled = declarer(d, FloatingWitness, body=None, up=(sp.sin(psi), sp.cos(psi), 0), reference=(0, 1, 0),
+                  density=s_body, limit=(psi, 1), methods=LIMIT_METHODS)      # a body of each case's own
+heeled("righting-arm-limit", "lim m(psi)/psi from the clipped heeled body (extrapolated)",
+       ("duhamel-16", "general-body"), SMALL, measured("righting arm"))
+heeled("wedge-limits", "leading terms of the clipped immersed wedge's moments (extrapolated)", ("series-3",), SMALL,
        (measured("immersed wedge moment, horizontal"), measured("immersed wedge moment, vertical") / psi))
-_limit("wedge-limits-4", "leading terms of the clipped emerged wedge's moments (extrapolated)", ("series-4",),
+heeled("wedge-limits-4", "leading terms of the clipped emerged wedge's moments (extrapolated)", ("series-4",), SMALL,
        (measured("emerged wedge moment, horizontal"), measured("emerged wedge moment, vertical") / psi))

@@ -1,7 +1,8 @@
 """Scheeffer IV-V's witnesses: the clipped prism (:mod:`symfloat.engine.floating_witness`)."""
 import sympy as sp
 
-from symfloat.engine.floating_witness import (Body, FloatingRootWitness, FloatingWitness, Root, waterplane_moment)
+from symfloat.engine.declare import declarer
+from symfloat.engine.floating_witness import Body, FloatingRootWitness, FloatingWitness, Root, waterplane_moment
 from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
 from symfloat.geometry.floating import polygon_moments
@@ -75,38 +76,30 @@ T2_, T21_, P2_ = waterplane_moment(HOR, HOR), waterplane_moment(EV, EV), waterpl
 
 
 def _cases(names, extra=None):
-    """A case per body name (or (name, argument, parameters)): its exact parameters and the axis angle, the
-    clipped prism of its base and height."""
-    out = []
-    for nm in names:
-        arg, ex = None, {}
-        if isinstance(nm, tuple):
-            nm, arg, ex = nm
-        poly, bb, _, alpha = BODIES[nm]
-        out.append(Case({**_params(nm, {**(extra or {}), **ex}), ALPHA: alpha}, {"body": Body.prism(poly, bb)},
-                        nm + (f", {arg}" if arg is not None else "")))
-    return tuple(out)
+    """The cases of the named bodies (a name, or (name, argument, parameters)), built when first measured: each
+    body's exact parameters and axis angle, and the clipped prism of its base and height."""
+    def build():
+        out = []
+        for nm in names:
+            arg, ex = None, {}
+            if isinstance(nm, tuple):
+                nm, arg, ex = nm
+            poly, bb, _, alpha = BODIES[nm]
+            out.append(Case({**_params(nm, {**(extra or {}), **ex}), ALPHA: alpha}, {"body": Body.prism(poly, bb)},
+                            nm + (f", {arg}" if arg is not None else "")))
+        return tuple(out)
+    return build
+
+
+def _contact(vanish):
+    """The first tilt at which *vanish* (a base's height above the water, or its depth) reaches zero."""
+    return ((PSI, Root.scan(vanish, PSI, R(1, 50), R(3, 2), 30)),)
 
 
 # the tilted equilibrium: the first zero of the clipped righting arm as the tilt grows, no base cut there
 EQUILIBRIUM = Root.scan(ARM, PSI, R(1, 50), R(7, 5), 28, guard=(TOP, -BOT))
-
-
-def _tilted(name, description, targets, quantity, names, extra=None):
-    """The quantity at the tilted equilibrium: the first zero of the clipped righting arm, no base cut there."""
-    d.witness(FloatingRootWitness(name, description, tuple(targets), lambda: _cases(names, extra), up=tuple(UP),
-                                  density=s, quantity=quantity, roots=((PSI, EQUILIBRIUM),)))
-
-
-def _floating(name, description, targets, quantity, names, extra=None, up=(0, 0, 1)):
-    d.witness(FloatingWitness(name, description, tuple(targets), lambda: _cases(names, extra), up=tuple(up),
-                              density=s, quantity=quantity))
-
-
-def _contact(name, description, targets, vanish, names):
-    """tan of the first tilt at which a base reaches the water (the clipped prism's draught, not EF)."""
-    d.witness(FloatingRootWitness(name, description, tuple(targets), lambda: _cases(names), up=tuple(UP), density=s,
-                                  quantity=sp.tan(PSI), roots=((PSI, Root.scan(vanish, PSI, R(1, 50), R(3, 2), 30)),)))
+upright = declarer(d, FloatingWitness, up=(0, 0, 1), density=s)
+tilted = declarer(d, FloatingRootWitness, up=tuple(UP), density=s, roots=((PSI, EQUILIBRIUM),))    # at the equilibrium
 
 
 EQ = ("rect-long", "rect-short", "tri", "quad-p", "square-0", "tri-eq")
@@ -114,76 +107,77 @@ NONISO = ("rect-long", "rect-short", "tri", "quad-p")
 ISO = ("square-0", "square-30", "tri-eq")
 LIM = ("tri-eq-apex", "tri-eq-apex-up", "square-lim", "rect-long", "rect-heavy")
 MU_AXIS = sp.cos(mu) * HOR + sp.sin(mu) * EV            # normal of the axis at the angle mu with EF
-_tilted("tilt", "tan of the tilt where the righting arm of the clipped prism vanishes", ("27",), sp.tan(PSI), EQ)
-_tilted("tilt-squared", "tan^2 of the tilt where the righting arm of the clipped prism vanishes", ("54",),
-        sp.tan(PSI) ** 2, EQ + ("square-30",))
-_tilted("Ve2", "V times the height of G above B at that tilt (clipped prism)", ("34", "35"), V_ * GB, EQ)
-_floating("Ve1", "V times the height of G above B, upright (clipped prism)", ("32-restated",), V_ * GB, EQ)
-_floating("upright-slope", "T about EF / V minus the height of G above B, upright clipped prism",
-          ("stable-18", "unstable-18", "52-condition"), waterplane_moment(NN, NN) / V_ - GB,
-          ("rect-long", "tri", "quad-x"))
+AT_MU = (("rect-long", R(1, 3), {mu: R(1, 3)}), ("quad-p", R(6, 5), {mu: R(6, 5)}), ("tri", R(7, 10), {mu: R(7, 10)}))
+ISO_AT_MU = (("square-0", R(1, 3), {mu: R(1, 3)}), ("tri-eq", R(5, 4), {mu: R(5, 4)}),
+             ("square-30", R(1, 2), {mu: R(1, 2)}))
+tilted("tilt", "tan of the tilt where the righting arm of the clipped prism vanishes", ("27",), _cases(EQ), sp.tan(PSI))
+tilted("tilt-squared", "tan^2 of the tilt where the righting arm of the clipped prism vanishes", ("54",),
+       _cases(EQ + ("square-30",)), sp.tan(PSI) ** 2)
+tilted("Ve2", "V times the height of G above B at that tilt (clipped prism)", ("34", "35"), _cases(EQ), V_ * GB)
+upright("Ve1", "V times the height of G above B, upright (clipped prism)", ("32-restated",), _cases(EQ), V_ * GB)
+upright("upright-slope", "T about EF / V minus the height of G above B, upright clipped prism",
+        ("stable-18", "unstable-18", "52-condition"), _cases(("rect-long", "tri", "quad-x")),
+        waterplane_moment(NN, NN) / V_ - GB)
 AT_PHI = (("quad-x", R(3, 10), {phi: R(3, 10)}), ("quad-x", R(1, 2), {phi: R(1, 2)}), ("tri", R(1, 5), {phi: R(1, 5)}))
-_floating("arm", "V times the righting arm of the clipped prism at a given tilt", ("moment-12",),
-          V_ * ARM.subs(PSI, phi), AT_PHI, up=UP.subs(PSI, phi))
-_floating("height", "V times the height of G above B of the clipped prism at a given tilt", ("13-restated",), V_ * GB,
-          AT_PHI, up=UP.subs(PSI, phi))
-_tilted("M2", "V times the offset of B from G along EF, clipped prism at the zero of the arm",
-        ("31", "28", "M2-difference"), V_ * EV.dot(BG), ("quad-x", "rect-long", "tri"), {P3: R(1, 3)})
-_tilted("Q", "V times the arm over sin phi at the zero of the arm (clipped prism)", ("moment-zero",),
-        V_ * ARM / sp.sin(PSI), EQ)
-_tilted("wp2", "second moments of the clipped waterplane II about EF, across it, and the product", ("38",),
-        (T2_, T21_, P2_), ("quad-x", "rect-long", "tri", "quad-p"))
-_tilted("wp2-ext", "the moments of the clipped waterplane II about EF and across it", ("41", "42"), (T2_, T21_), EQ)
-_tilted("P2", "product moment of the clipped waterplane II at the equilibrium tilt", ("39",), P2_,
-        ("rect-long", "tri", "quad-p"))
+upright("arm", "V times the righting arm of the clipped prism at a given tilt", ("moment-12",), _cases(AT_PHI),
+        V_ * ARM.subs(PSI, phi), up=tuple(UP.subs(PSI, phi)))
+upright("height", "V times the height of G above B of the clipped prism at a given tilt", ("13-restated",),
+        _cases(AT_PHI), V_ * GB, up=tuple(UP.subs(PSI, phi)))
+tilted("M2", "V times the offset of B from G along EF, clipped prism at the zero of the arm",
+       ("31", "28", "M2-difference"), _cases(("quad-x", "rect-long", "tri"), {P3: R(1, 3)}), V_ * EV.dot(BG))
+tilted("Q", "V times the arm over sin phi at the zero of the arm (clipped prism)", ("moment-zero",), _cases(EQ),
+       V_ * ARM / sp.sin(PSI))
+tilted("wp2", "second moments of the clipped waterplane II about EF, across it, and the product", ("38",),
+       _cases(("quad-x", "rect-long", "tri", "quad-p")), (T2_, T21_, P2_))
+tilted("wp2-ext", "the moments of the clipped waterplane II about EF and across it", ("41", "42"), _cases(EQ),
+       (T2_, T21_))
+tilted("P2", "product moment of the clipped waterplane II at the equilibrium tilt", ("39",),
+       _cases(("rect-long", "tri", "quad-p")), P2_)
 # not (37): its cases lie at the tilted equilibrium, where int_2 u_2 v_2 df_2 = 0 and the print of (37) (df for
 # df_2 in that term) and its correction coincide
-_tilted("Tmu", "moment of the clipped waterplane II about the axis at the angle mu with EF", ("40",),
-        waterplane_moment(MU_AXIS, MU_AXIS),
-        (("rect-long", R(1, 3), {mu: R(1, 3)}), ("quad-p", R(6, 5), {mu: R(6, 5)}), ("tri", R(7, 10), {mu: R(7, 10)})))
-_tilted("D2", "V times the metacentric height of the clipped tilted prism", ("33", "43", "43-again"),
-        V_ * measured("metacentric height"), EQ)
-_tilted("D2-sign", "sign of the metacentric height of the clipped tilted prism", ("claim-43a",), measured("stability sign"),
-        NONISO)
-_tilted("Tm-excess", "moment of II about EF minus V times the height of G over B (clipped)", ("43-Tm",),
-        T2_ - V_ * GB, EQ)
-_tilted("Tm-excess-sign", "its sign", ("43-always",), sp.sign(T2_ - V_ * GB), EQ)
-_tilted("Tm1-excess", "moment across EF minus V times the height of G over B (clipped)", ("43a-conclusion",),
-        T21_ - V_ * GB, NONISO)
-_tilted("iso-wp2", "moments of the clipped waterplane II, isotropic bases", ("50-Tm",), (T2_, T21_), ISO)
-_tilted("iso-ratio", "T_m cos^2 phi from the clipped waterplane II, isotropic bases", ("50-ratio",),
-        T2_ * sp.cos(PSI) ** 2, ISO)
-_tilted("iso-order", "which moment of the clipped waterplane II is larger, isotropic bases", ("50",),
-        sp.sign(T2_ - T21_), ISO)
-_tilted("iso-Tm1-value", "moment of the clipped waterplane II across EF, isotropic bases", ("Tm1-min",), T21_, ISO)
-_tilted("iso-Tm1", "moment across EF minus V e_2 of the clipped waterplane II, isotropic bases", ("51",),
-        T21_ - V_ * GB, ISO)
-_tilted("iso-Tmu", "moment about the axis at mu minus V e_2, clipped, isotropic bases", ("51-claim",),
-        waterplane_moment(MU_AXIS, MU_AXIS) - V_ * GB,
-        (("square-0", R(1, 3), {mu: R(1, 3)}), ("tri-eq", R(5, 4), {mu: R(5, 4)}),
-         ("square-30", R(1, 2), {mu: R(1, 2)})))
+tilted("Tmu", "moment of the clipped waterplane II about the axis at the angle mu with EF", ("40",), _cases(AT_MU),
+       waterplane_moment(MU_AXIS, MU_AXIS))
+tilted("D2", "V times the metacentric height of the clipped tilted prism", ("33", "43", "43-again"), _cases(EQ),
+       V_ * measured("metacentric height"))
+tilted("D2-sign", "sign of the metacentric height of the clipped tilted prism", ("claim-43a",), _cases(NONISO),
+       measured("stability sign"))
+tilted("Tm-excess", "moment of II about EF minus V times the height of G over B (clipped)", ("43-Tm",), _cases(EQ),
+       T2_ - V_ * GB)
+tilted("Tm-excess-sign", "its sign", ("43-always",), _cases(EQ), sp.sign(T2_ - V_ * GB))
+tilted("Tm1-excess", "moment across EF minus V times the height of G over B (clipped)", ("43a-conclusion",),
+       _cases(NONISO), T21_ - V_ * GB)
+tilted("iso-wp2", "moments of the clipped waterplane II, isotropic bases", ("50-Tm",), _cases(ISO), (T2_, T21_))
+tilted("iso-ratio", "T_m cos^2 phi from the clipped waterplane II, isotropic bases", ("50-ratio",), _cases(ISO),
+       T2_ * sp.cos(PSI) ** 2)
+tilted("iso-order", "which moment of the clipped waterplane II is larger, isotropic bases", ("50",), _cases(ISO),
+       sp.sign(T2_ - T21_))
+tilted("iso-Tm1-value", "moment of the clipped waterplane II across EF, isotropic bases", ("Tm1-min",), _cases(ISO),
+       T21_)
+tilted("iso-Tm1", "moment across EF minus V e_2 of the clipped waterplane II, isotropic bases", ("51",), _cases(ISO),
+       T21_ - V_ * GB)
+tilted("iso-Tmu", "moment about the axis at mu minus V e_2, clipped, isotropic bases", ("51-claim",), _cases(ISO_AT_MU),
+       waterplane_moment(MU_AXIS, MU_AXIS) - V_ * GB)
 QUAD_OM = (("quad-x", R(1, 3), {om: R(1, 3)}), ("quad-x", R(6, 5), {om: R(6, 5)}))
+SYM_OM = (("rect-long", R(1, 3), {om: R(1, 3), Tx: R(2, 3), Ty: R(1, 6)}),
+          ("tri", R(6, 5), {om: R(6, 5), Tx: R(2, 9), Ty: R(1, 24)}))
 EF_OM = sp.Matrix([-sp.sin(om), sp.cos(om), 0])         # EF at the angle omega with AB (the y axis), (44)
 U_OM = sp.Matrix([sp.cos(om), sp.sin(om), 0])           # u across it
-_floating("base-T1", "moment of the clipped upright waterplane about the axis EF at the angle omega",
-          ("T1-expanded", "T1-def"), waterplane_moment(U_OM, U_OM), QUAD_OM, {Tx: QYY, Ty: QXX, J: QXY})
-_floating("base-T1-sym", "moment of the clipped upright waterplane about EF, symmetric bases", ("T1-symmetric",),
-          waterplane_moment(U_OM, U_OM), (("rect-long", R(1, 3), {om: R(1, 3), Tx: R(2, 3), Ty: R(1, 6)}),
-                                          ("tri", R(6, 5), {om: R(6, 5), Tx: R(2, 9), Ty: R(1, 24)})))
-_floating("base-Iuv", "product moment of the clipped upright waterplane in the axes EF, GH", ("45", "second-condition"),
-          waterplane_moment(U_OM, EF_OM), QUAD_OM, {Tx: QYY, Ty: QXX, J: QXY})
+upright("base-T1", "moment of the clipped upright waterplane about the axis EF at the angle omega",
+        ("T1-expanded", "T1-def"), _cases(QUAD_OM, {Tx: QYY, Ty: QXX, J: QXY}), waterplane_moment(U_OM, U_OM))
+upright("base-T1-sym", "moment of the clipped upright waterplane about EF, symmetric bases", ("T1-symmetric",),
+        _cases(SYM_OM), waterplane_moment(U_OM, U_OM))
+upright("base-Iuv", "product moment of the clipped upright waterplane in the axes EF, GH", ("45", "second-condition"),
+        _cases(QUAD_OM, {Tx: QYY, Ty: QXX, J: QXY}), waterplane_moment(U_OM, EF_OM))
 TURNED = {ALPHA: ALPHA + om}                            # the tilt found about EF, the prism then turned by omega
-d.witness(FloatingRootWitness("law", "int u v df of the stable tilt turned about the prism axis by omega (clipped)",
-                              ("law",), lambda: _cases((("rect-law", sp.pi / 12, {om: sp.pi / 12}),
-                                                        ("rect-law", sp.pi / 6, {om: sp.pi / 6})),
-                                                       {Tx: R(18, 125), Ty: R(1, 10)}),
-                              up=tuple(UP.xreplace(TURNED)), density=s,
-                              quantity=V_ * EV.xreplace(TURNED).dot(BG) / sp.tan(PSI),
-                              roots=((PSI, Root.scan(ARM.xreplace(TURNED), PSI, R(1, 50), R(7, 5), 28, at={om: 0},
-                                                     guard=(TOP, -BOT))),)))
+LAW = (("rect-law", sp.pi / 12, {om: sp.pi / 12}), ("rect-law", sp.pi / 6, {om: sp.pi / 6}))
+tilted("law", "int u v df of the stable tilt turned about the prism axis by omega (clipped)", ("law",),
+       _cases(LAW, {Tx: R(18, 125), Ty: R(1, 10)}), V_ * EV.xreplace(TURNED).dot(BG) / sp.tan(PSI),
+       up=tuple(UP.xreplace(TURNED)),
+       roots=((PSI, Root.scan(ARM.xreplace(TURNED), PSI, R(1, 50), R(7, 5), 28, at={om: 0}, guard=(TOP, -BOT))),))
 # (53) and (53a) hold for the base reached first (afterwards the water plane no longer passes through EF)
-_contact("top", "tan of the tilt where the clipped prism's upper base reaches the water, reached first", ("53",), -TOP,
-         ("tri-eq-apex", "rect-heavy"))
-_contact("bot", "tan of the tilt where the clipped prism's lower base reaches the water, reached first", ("53a",), BOT,
-         ("tri-eq-apex-up", "square-lim", "rect-long"))
-_contact("first", "tan of the first contact of either base (clipped prism)", ("55",), sp.Max(-TOP, BOT), LIM)
+tilted("top", "tan of the tilt where the clipped prism's upper base reaches the water, reached first", ("53",),
+       _cases(("tri-eq-apex", "rect-heavy")), sp.tan(PSI), roots=_contact(-TOP))
+tilted("bot", "tan of the tilt where the clipped prism's lower base reaches the water, reached first", ("53a",),
+       _cases(("tri-eq-apex-up", "square-lim", "rect-long")), sp.tan(PSI), roots=_contact(BOT))
+tilted("first", "tan of the first contact of either base (clipped prism)", ("55",), _cases(LIM), sp.tan(PSI),
+       roots=_contact(sp.Max(-TOP, BOT)))

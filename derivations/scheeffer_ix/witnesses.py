@@ -214,24 +214,23 @@ DRC = (C("t = 1/2", t="1/2"),)
 S_T = 1 - 9 * (1 + 3 * t) / 128                       # s of t by (150)
 
 
-def double(name, description, targets, quantity):
-    d.witness(FloatingRootWitness(name, description, tuple(targets), DRC, body=Body.box(a, 1, 2), up=UP_C, density=S_T,
-                                  quantity=quantity, roots=DOUBLE))
+# the quantities at the double roots of the arm
+double = declarer(d, FloatingRootWitness, body=Body.box(a, 1, 2), up=UP_C, density=S_T, roots=DOUBLE)
 
 
-double("double-root-plus", "x/b at the clipped double root (minimum of the arm, a > b)", ("158",), z_p)
+double("double-root-plus", "x/b at the clipped double root (minimum of the arm, a > b)", ("158",), DRC, z_p)
 double("double-roots", "x/b at the clipped double roots (minimum, a > b; maximum, a < b)", ("157", "155", "155-pre"),
-       (z_p, z_m))
-double("double-root-n", "(a/b)^2 at the clipped double roots and their product", ("153",),
+       DRC, (z_p, z_m))
+double("double-root-n", "(a/b)^2 at the clipped double roots and their product", ("153",), DRC,
        (a_p ** 2, a_m ** 2, a_p ** 2 * a_m ** 2))
-double("double-root-n-156", "(a/b)^2 at the clipped double roots", ("156",), (a_p ** 2, a_m ** 2))
-double("double-root-n-156b", "n (1 + 3t)/(1 - t^2) at the clipped double roots", ("156-b",),
+double("double-root-n-156", "(a/b)^2 at the clipped double roots", ("156",), DRC, (a_p ** 2, a_m ** 2))
+double("double-root-n-156b", "n (1 + 3t)/(1 - t^2) at the clipped double roots", ("156-b",), DRC,
        tuple(e ** 2 * (1 + 3 * t) / (1 - t ** 2) for e in (a_p, a_m)))
 S_W = a_p ** 2 + 1 / a_p ** 2
-double("double-root-S", "n + 1/n at the clipped double root", ("151", "152", "n-sum", "n-sum-t", "156-S"), S_W)
-double("double-root-S-154", "S - 2, S + 2, S^2 - 4 with S = n + 1/n at the clipped double root", ("154",),
+double("double-root-S", "n + 1/n at the clipped double root", ("151", "152", "n-sum", "n-sum-t", "156-S"), DRC, S_W)
+double("double-root-S-154", "S - 2, S + 2, S^2 - 4 with S = n + 1/n at the clipped double root", ("154",), DRC,
        (S_W - 2, S_W + 2, S_W ** 2 - 4))
-double("double-root-order", "z_+ - z_-, 4 z_+ - 3, 3 - 4 z_- at the clipped double roots", ("minimum",),
+double("double-root-order", "z_+ - z_-, 4 z_+ - 3, 3 - 4 z_- at the clipped double roots", ("minimum",), DRC,
        (z_p - z_m, 4 * z_p - 3, 3 - 4 * z_m))
-double("double-root-159", "1 - z_+ at the clipped double root", ("159",), 1 - z_p)
-double("double-root-160", "16 (1 - z_+) at the clipped double root", ("160",), 16 * (1 - z_p))
+double("double-root-159", "1 - z_+ at the clipped double root", ("159",), DRC, 1 - z_p)
+double("double-root-160", "16 (1 - z_+) at the clipped double root", ("160",), DRC, 16 * (1 - z_p))

@@ -1,6 +1,7 @@
 """Scheeffer VI.A-B's witnesses: clipped polyhedra and the floating cylinder (symfloat.engine.floating_witness)."""
 import sympy as sp
 
+from symfloat.engine.declare import declarer
 from symfloat.engine.floating_witness import (FLOATING_METHODS, Body, Combined, FloatingRootWitness, FloatingWitness,
                                               Joined, Loaded, Root, waterplane_moment)
 from symfloat.engine.measured import measured
@@ -28,12 +29,6 @@ HALF = sp.Rational(1, 2)
 
 def _triangle(edge, height):
     return Body.prism(((-edge / 2, -edge / (2 * sq3)), (edge / 2, -edge / (2 * sq3)), (0, edge / sq3)), height)
-
-
-def fw(name, description, targets, cases, quantity, body=None, up=(0, 0, 1), density=s):
-    """A quantity of the floating prism (upright unless *up* is given)."""
-    d.witness(FloatingWitness(name, description, tuple(targets), tuple(cases), body=body or _triangle(a, b),
-                              up=tuple(up), density=density, quantity=quantity))
 
 
 def tilted(name, description, targets, cases, quantity, vanish=ARM, body=None, **kw):
@@ -65,9 +60,10 @@ def _root_witness(name, description, targets, cases, quantity, vanish, body=None
 TRAP = ((-2, 0), (2, 0), (1, 3), (-1, 3))
 TRAP_MOMENTS = polygon_moments([(sp.Integer(x_), sp.Integer(y_)) for x_, y_ in TRAP])[2]
 TRAP_TY, TRAP_TX = TRAP_MOMENTS[0][0], TRAP_MOMENTS[1][1]
-fw("trapezoid-moments", "moment of a symmetric trapezoid about axes through its centroid (clipped waterplane)",
-   ("56",), [Case({Tx: TRAP_TX, Ty: TRAP_TY, om: w_}, label=f"omega = {w_}") for w_ in (sp.Rational(2, 5), 1)],
-   waterplane_moment(U_OM, U_OM), body=Body.prism(TRAP, 1), density=HALF)
+upright = declarer(d, FloatingWitness, body=_triangle(a, b), up=(0, 0, 1), density=s)     # the upright prism
+upright("trapezoid-moments", "moment of a symmetric trapezoid about axes through its centroid (clipped waterplane)",
+        ("56",), [Case({Tx: TRAP_TX, Ty: TRAP_TY, om: w_}, label=f"omega = {w_}") for w_ in (sp.Rational(2, 5), 1)],
+        waterplane_moment(U_OM, U_OM), body=Body.prism(TRAP, 1), density=HALF)
 d.witness(Joined("regular-polygon-moments", "moments of regular polygons about a turned axis (clipped waterplane)",
                  ("regular-polygon-theorem",),
                  (Case({a: 1, om: sp.Rational(1, 3)}), Case({a: sp.Rational(3, 2), om: 1})),
@@ -76,12 +72,12 @@ d.witness(Joined("regular-polygon-moments", "moments of regular polygons about a
 
 up_cases = [Case({a: 1, b: 1, s: sp.Rational(1, 2)}, label="labile"), Case({a: 2, b: 1, s: sp.Rational(4, 5)}, label="stable"),
             Case({a: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 4)})]
-fw("triangle-upright-57", "24 s/b times the metacentric height of the clipped upright prism", ("57", "65-I"), up_cases,
-   24 * s / b * GM)
-fw("triangle-upright-58", "2 s/b times the metacentric height of the clipped upright prism", ("58",), up_cases,
-   2 * s / b * GM)
-fw("triangle-upright-moment", "displacement times metacentric height (clipped upright prism)",
-   ("triangle-condition",), up_cases, VOL * GM)
+upright("triangle-upright-57", "24 s/b times the metacentric height of the clipped upright prism", ("57", "65-I"),
+        up_cases, 24 * s / b * GM)
+upright("triangle-upright-58", "2 s/b times the metacentric height of the clipped upright prism", ("58",), up_cases,
+        2 * s / b * GM)
+upright("triangle-upright-moment", "displacement times metacentric height (clipped upright prism)",
+        ("triangle-condition",), up_cases, VOL * GM)
 
 tilt_cases = [Case({a: sp.Rational(83, 50), b: 1, s: sp.Rational(11, 20), om: sp.Rational(1, 5)}, label="II, s > 1/2"),
               Case({a: sp.Rational(33, 20), b: 1, s: sp.Rational(2, 5), om: sp.Rational(9, 10)}, label="II, s < 1/2")]
@@ -106,12 +102,6 @@ ARM_C = -sp.cos(PSI) * measured("B - G, x") + sp.sin(PSI) * measured("B - G, z")
 R = sp.Symbol("R", positive=True)                   # a radius sought, b = 1
 
 
-def cyl(name, description, targets, cases, quantity, body=Body.cylinder(r, b), density=s):
-    """A quantity of the upright cylinder."""
-    d.witness(FloatingWitness(name, description, tuple(targets), tuple(cases), body=body, density=density,
-                              quantity=quantity))
-
-
 def cyl_root(name, description, targets, cases, quantity, vanish=ARM_C, body=Body.cylinder(r, b), up=UP_C,
              density=s, along=PSI, bracket=TILTS, steps=30, roots=(), **kw):
     """A quantity of the cylinder at the first zero of *vanish* (the righting arm: the tilted equilibrium) as the
@@ -123,10 +113,11 @@ def cyl_root(name, description, targets, cases, quantity, vanish=ARM_C, body=Bod
 
 cyl_cases = [Case({r: 1, b: 1, s: sp.Rational(1, 2)}), Case({r: sp.Rational(3, 2), b: 2, s: sp.Rational(1, 5)}),
              Case({r: sp.Rational(1, 2), b: 2, s: sp.Rational(9, 10)})]
-cyl("cylinder-upright-69", "16 s/b times the metacentric height of the upright cylinder", ("69", "70"), cyl_cases,
-    16 * s / b * GM)
-cyl("cylinder-upright-72", "-16 s/b times the metacentric height", ("72",), cyl_cases, -16 * s / b * GM)
-cyl("cylinder-upright-gm", "metacentric height of the upright cylinder", ("cylinder-condition",), cyl_cases, GM)
+cylinder = declarer(d, FloatingWitness, body=Body.cylinder(r, b), density=s)     # the upright cylinder
+cylinder("cylinder-upright-69", "16 s/b times the metacentric height of the upright cylinder", ("69", "70"), cyl_cases,
+         16 * s / b * GM)
+cylinder("cylinder-upright-72", "-16 s/b times the metacentric height", ("72",), cyl_cases, -16 * s / b * GM)
+cylinder("cylinder-upright-gm", "metacentric height of the upright cylinder", ("cylinder-condition",), cyl_cases, GM)
 d.witness(FloatingWitness("cylinder-polygon-gm", "metacentric height of the inscribed regular 256-gon prism (exact "
                           "clipping; its area and moment fall short by (2 pi/256)^2/6 = 1e-4)", ("cylinder-condition",),
                           tuple(cyl_cases), body=Body.regular(256, 2 * r * sp.sin(pi / 256), b), density=s,

@@ -3,6 +3,7 @@ import functools
 
 import sympy as sp
 
+from symfloat.engine.declare import declarer
 from symfloat.engine.floating_witness import Body, FloatingRootWitness, FloatingWitness, Root, potential_slope
 from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case
@@ -166,74 +167,89 @@ def _case(nm, extra=None, generic=False):
     return Case({**p, **(extra or {}), NX: nx, NY: ny, TT: t}, {"body": Body.prism(poly, bb)}, nm)
 
 
-def _w(wname, description, targets, names, what, extra=None, generic=False):
-    flip = what.startswith("flip")       # density 1 - s with -u up: dry and wet parts exchanged
-    d.witness(FloatingRootWitness(wname, description, tuple(targets),
-                                  lambda: tuple(_case(nm, extra, generic) for nm in names), body=None,
-                                  up=tuple(-u for u in UP) if flip else UP, density=1 - s if flip else s,
-                                  quantity=MEASURE[what], roots=PRINCIPAL if what in ("dT", "cos2") else ()))
+def _cases(names, extra=None, generic=False):
+    """The cases of the named bodies, built when first measured."""
+    return lambda: tuple(_case(nm, extra, generic) for nm in names)
+
+
+floating = declarer(d, FloatingRootWitness, body=None, up=UP, density=s)     # a body of each case's own
+UPSIDE_DOWN = tuple(-u for u in UP)     # with density 1 - s: dry and wet parts exchanged
 
 
 G2 = ("rect", "tri", "square", "pent-eq", "box-eq")
 E2 = ("pent-eq", "box-eq")
 G3 = ("rect-3", "tri-3", "box3-eq")
-_w("dry-volume", "volume of the clipped body above the water plane", ("V3-F", "100"), G2, "V3")
-_w("dry-moment-y", "V_3 times the offset of the clipped dry part's centroid from the plane through S across GH",
-   ("95", "95-moment"), G2, "My")
-_w("dry-product", "the same over tan phi (int x y df of F by the clipped dry part)",
-   ("95a", "95a-split", "96", "97", "106-projection"), G2, "Pxy")
-_w("dry-offsets", "offsets of the clipped dry part's centroid from S along NE and along the axis", ("S3-offsets",),
-   G2, "offsets")
-_w("flip-product", "int x y df from the turned body (density 1 - s, -u up): its submerged part's offset along GH",
-   ("s-below-half-95",), G2, "flip-product")
-_w("balance-complete", "V_1 times the horizontal offsets of the clipped centre of buoyancy from G", ("complete",), G2,
-   "balance")
-_w("dry-product-regular", "int x y df by the clipped dry part, regular bases", ("98",), ("square", "eqtri"), "Pxy")
-_w("balance", "V_1 times the horizontal offsets of the clipped centre of buoyancy from G", ("95-S3",), G2, "balance")
-_w("M3", "V_3 times the horizontal distance of the clipped dry part's centroid from S across GH",
-   ("99", "99-transformation", "102-pre", "102"), G2, "M3")
-_w("M3-sin", "the same over sin phi", ("103b",), G2, "M3sin")
-_w("dry-moments", "V_3 z_3 and V_3 x_3 of the clipped dry part (depth below the upper base, distance from GH)",
-   ("101",), G2, "ZX")
-_w("dry-height", "V_3 times the height of the clipped dry part's centroid above S along the axis", ("116-pre",), G2,
-   "V3zeta")
-_w("x0", "x_0 where the clipped water plane meets EF in the upper base", ("x0-sign",), G2, "x0")
-_w("V1e2", "V_1 times the height of G above the clipped centre of buoyancy", ("104-balance",), G2, "V1e2")
-_w("flip", "the same for density 1 - s with the body upside down (-u up)", ("s-below-half",), G2, "flip")
+floating("dry-volume", "volume of the clipped body above the water plane", ("V3-F", "100"), _cases(G2), MEASURE["V3"])
+floating("dry-moment-y", "V_3 times the offset of the clipped dry part's centroid from the plane through S across GH",
+         ("95", "95-moment"), _cases(G2), MEASURE["My"])
+floating("dry-product", "the same over tan phi (int x y df of F by the clipped dry part)",
+         ("95a", "95a-split", "96", "97", "106-projection"), _cases(G2), MEASURE["Pxy"])
+floating("dry-offsets", "offsets of the clipped dry part's centroid from S along NE and along the axis",
+         ("S3-offsets",), _cases(G2), MEASURE["offsets"])
+floating("flip-product", "int x y df from the turned body (density 1 - s, -u up): its submerged part's offset along GH",
+         ("s-below-half-95",), _cases(G2), MEASURE["flip-product"], up=UPSIDE_DOWN, density=1 - s)
+floating("balance-complete", "V_1 times the horizontal offsets of the clipped centre of buoyancy from G", ("complete",),
+         _cases(G2), MEASURE["balance"])
+floating("dry-product-regular", "int x y df by the clipped dry part, regular bases", ("98",),
+         _cases(("square", "eqtri")), MEASURE["Pxy"])
+floating("balance", "V_1 times the horizontal offsets of the clipped centre of buoyancy from G", ("95-S3",), _cases(G2),
+         MEASURE["balance"])
+floating("M3", "V_3 times the horizontal distance of the clipped dry part's centroid from S across GH",
+         ("99", "99-transformation", "102-pre", "102"), _cases(G2), MEASURE["M3"])
+floating("M3-sin", "the same over sin phi", ("103b",), _cases(G2), MEASURE["M3sin"])
+floating("dry-moments", "V_3 z_3 and V_3 x_3 of the clipped dry part (depth below the upper base, distance from GH)",
+         ("101",), _cases(G2), MEASURE["ZX"])
+floating("dry-height", "V_3 times the height of the clipped dry part's centroid above S along the axis", ("116-pre",),
+         _cases(G2), MEASURE["V3zeta"])
+floating("x0", "x_0 where the clipped water plane meets EF in the upper base", ("x0-sign",), _cases(G2), MEASURE["x0"])
+floating("V1e2", "V_1 times the height of G above the clipped centre of buoyancy", ("104-balance",), _cases(G2),
+         MEASURE["V1e2"])
+floating("flip", "the same for density 1 - s with the body upside down (-u up)", ("s-below-half",), _cases(G2),
+         MEASURE["flip"], up=UPSIDE_DOWN, density=1 - s)
 for nm_, mv in (("rect", R(2, 5)), ("tri", R(6, 5)), ("pent-eq", R(7, 10))):
-    _w(f"Tmu-{nm_}", "moment of the clipped waterplane about the centroidal axis at mu to GH", ("105", "105-def"),
-       (nm_,), "Tmu", {mu: mv})
-    _w(f"Tg-{nm_}", "the same (T_2, T_2^1, k the clipped waterplane's)", ("109",), (nm_,), "Tmu", {mu: mv},
-       generic=True)
+    floating(f"Tmu-{nm_}", "moment of the clipped waterplane about the centroidal axis at mu to GH", ("105", "105-def"),
+             _cases((nm_,), {mu: mv}), MEASURE["Tmu"])
+    floating(f"Tg-{nm_}", "the same (T_2, T_2^1, k the clipped waterplane's)", ("109",),
+             _cases((nm_,), {mu: mv}, generic=True), MEASURE["Tmu"])
 for nm_dt, mu_dt in (("rect", R(2, 5)), ("pent-eq", R(7, 10))):
-    _w(f"dT-{nm_dt}", "dT_mu/dmu of the clipped waterplane's tensor and tan 2mu at its root (secant method)", ("108",),
-       (nm_dt,), "dT", {mu: mu_dt}, generic=True)
-_w("cos2", "cos^2 2mu at the root of dT_mu/dmu of the clipped waterplane's tensor", ("109-cos",), G2, "cos2",
-   generic=True)
-_w("Tmu-eq", "moment of the clipped waterplane about the axis at mu, at the equilibria", ("107",), E2, "Tmu",
-   {mu: R(1, 3)})
-_w("Ks", "central product moment of the clipped waterplane (axes along h and GH)", ("106-shift", "106-sum"), G2, "Ks")
-_w("Ks-eq", "the same at the equilibria", ("106",), E2, "Ks")
-_w("wp-integrals", "int_1 y df, int_1 x df of the clipped waterplane from N", ("106-moments",), G2, "wp-int")
-_w("wp-mn", "distances m, n of the clipped waterplane's centroid from HN, from N along HN, and its area",
-   ("112-mn",), G2, "mnF2")
-_w("wp-T2", "moments of the clipped waterplane about the centroidal axes along GH and across it", ("111",), G2, "T2")
-_w("k-eq", "central product of the clipped waterplane at the equilibria", ("112",), E2, "Ks")
-_w("Imin", "least moment of the clipped waterplane", ("110",), G2, "Imin", generic=True)
-_w("extremes", "squared deviations of the clipped waterplane's principal moments from their mean",
-   ("109-extremes",), G2, "extremes", generic=True)
-_w("Imin-eq", "least moment of the clipped waterplane times cos phi, equilibria", ("115",), E2, "Iminc")
-_w("D", "V_1 times the metacentric height of the clipped position, equilibria", ("104",), E2, "D")
-_w("cD", "cos phi times V_1 times the metacentric height, equilibria", ("114",), E2, "cD")
-_w("2cD", "2 cos phi times V_1 times the metacentric height, equilibria", ("117",), E2, "2cD")
-_w("e3", "V_3 e_3 cos phi of the clipped dry part, equilibria", ("116", "116-geometry"), E2, "V3e3c")
-_w("dry-volume-3", "volume of the clipped body above the water plane, third region", ("121b", "121-dry"), G3, "V3")
-_w("dry-product-3", "int x y df - int^1 x y df by the clipped dry part, third region", ("118",), G3, "Pxy")
-_w("dry-moments-3", "V_3 z_3, V_3 x_3 of the clipped dry part, third region", ("120",), G3, "ZX")
-_w("M3-3", "M_3 of the clipped dry part, third region", ("119",), G3, "M3")
-_w("M3-3-sin", "M_3/sin phi of the clipped dry part, third region", ("121",), G3, "M3sin")
-_w("x0x01", "(x_0 + x_0^1) tan phi from the clipped water lines in both bases", ("121a",), G3, "x0x01")
-_w("122", "tan phi M_3/sin phi, (x_0 + x_0^1) tan phi - b and V_3 - F_1 b (1 - s), clipped", ("122",), G3, "122")
+    floating(f"dT-{nm_dt}", "dT_mu/dmu of the clipped waterplane's tensor and tan 2mu at its root (secant method)",
+             ("108",), _cases((nm_dt,), {mu: mu_dt}, generic=True), MEASURE["dT"], roots=PRINCIPAL)
+floating("cos2", "cos^2 2mu at the root of dT_mu/dmu of the clipped waterplane's tensor", ("109-cos",),
+         _cases(G2, generic=True), MEASURE["cos2"], roots=PRINCIPAL)
+floating("Tmu-eq", "moment of the clipped waterplane about the axis at mu, at the equilibria", ("107",),
+         _cases(E2, {mu: R(1, 3)}), MEASURE["Tmu"])
+floating("Ks", "central product moment of the clipped waterplane (axes along h and GH)", ("106-shift", "106-sum"),
+         _cases(G2), MEASURE["Ks"])
+floating("Ks-eq", "the same at the equilibria", ("106",), _cases(E2), MEASURE["Ks"])
+floating("wp-integrals", "int_1 y df, int_1 x df of the clipped waterplane from N", ("106-moments",), _cases(G2),
+         MEASURE["wp-int"])
+floating("wp-mn", "distances m, n of the clipped waterplane's centroid from HN, from N along HN, and its area",
+         ("112-mn",), _cases(G2), MEASURE["mnF2"])
+floating("wp-T2", "moments of the clipped waterplane about the centroidal axes along GH and across it", ("111",),
+         _cases(G2), MEASURE["T2"])
+floating("k-eq", "central product of the clipped waterplane at the equilibria", ("112",), _cases(E2), MEASURE["Ks"])
+floating("Imin", "least moment of the clipped waterplane", ("110",), _cases(G2, generic=True), MEASURE["Imin"])
+floating("extremes", "squared deviations of the clipped waterplane's principal moments from their mean",
+         ("109-extremes",), _cases(G2, generic=True), MEASURE["extremes"])
+floating("Imin-eq", "least moment of the clipped waterplane times cos phi, equilibria", ("115",), _cases(E2),
+         MEASURE["Iminc"])
+floating("D", "V_1 times the metacentric height of the clipped position, equilibria", ("104",), _cases(E2),
+         MEASURE["D"])
+floating("cD", "cos phi times V_1 times the metacentric height, equilibria", ("114",), _cases(E2), MEASURE["cD"])
+floating("2cD", "2 cos phi times V_1 times the metacentric height, equilibria", ("117",), _cases(E2), MEASURE["2cD"])
+floating("e3", "V_3 e_3 cos phi of the clipped dry part, equilibria", ("116", "116-geometry"), _cases(E2),
+         MEASURE["V3e3c"])
+floating("dry-volume-3", "volume of the clipped body above the water plane, third region", ("121b", "121-dry"),
+         _cases(G3), MEASURE["V3"])
+floating("dry-product-3", "int x y df - int^1 x y df by the clipped dry part, third region", ("118",), _cases(G3),
+         MEASURE["Pxy"])
+floating("dry-moments-3", "V_3 z_3, V_3 x_3 of the clipped dry part, third region", ("120",), _cases(G3), MEASURE["ZX"])
+floating("M3-3", "M_3 of the clipped dry part, third region", ("119",), _cases(G3), MEASURE["M3"])
+floating("M3-3-sin", "M_3/sin phi of the clipped dry part, third region", ("121",), _cases(G3), MEASURE["M3sin"])
+floating("x0x01", "(x_0 + x_0^1) tan phi from the clipped water lines in both bases", ("121a",), _cases(G3),
+         MEASURE["x0x01"])
+floating("122", "tan phi M_3/sin phi, (x_0 + x_0^1) tan phi - b and V_3 - F_1 b (1 - s), clipped", ("122",), _cases(G3),
+         MEASURE["122"])
 
 
 # ---- the stability remark on clipped boxes, the tilt (103a) by root finding, the moments of F (113)

@@ -18,10 +18,7 @@ LEG = -r2 * measured("top clearance") / sp.sin(th)           # leg of the corner
 CUBE, UNIT = Body.box(a, a, a), Body.box(1, 1, 1)
 
 
-def cut(name, description, targets, cases, quantity, up, through, body=CUBE, roots=()):
-    """The dry part above a water plane drawn through a point (a water line of the figure, three vertices)."""
-    d.witness(CutWitness(name, description, tuple(targets), tuple(cases), body=body, up=up, through=through,
-                         quantity=quantity, roots=roots))
+cut = declarer(d, CutWitness, body=CUBE)    # the dry part above a water plane drawn through a point (``through``)
 
 
 floating = declarer(d, FloatingRootWitness, up=UD, density=s, body=UNIT)
@@ -33,9 +30,9 @@ C = cases_of(a, om, rho, rho1, xl, s, L)
 def dry_moment(K):
     """The water plane rising towards B with slope K across GH (up (-K sin w, -K cos w, 1)): the moment of the
     clipped dry part about the vertical plane through G across the axis (along (cos w, -sin w, 0)) over K, i.e.
-    minus that of the submerged part, G being the origin."""
-    return (-measured("immersed volume") * (co * measured("B - G, x") - si * measured("B - G, y")) / K,
-            (-K * si, -K * co, 1))
+    minus that of the submerged part, G being the origin: the witness's quantity and up vector."""
+    return {"quantity": -measured("immersed volume") * (co * measured("B - G, x") - si * measured("B - G, y")) / K,
+            "up": (-K * si, -K * co, 1)}
 
 
 FACE = (C("a = 1, omega = 0.3, rho = 0.6", a=1, omega="0.3", rho="0.6"),
@@ -43,15 +40,16 @@ FACE = (C("a = 1, omega = 0.3, rho = 0.6", a=1, omega="0.3", rho="0.6"),
         C("a = 1, omega = 0.7, rho = 0.9", a=1, omega="0.7", rho="0.9"))
 H_POINT = (a / 2 - rho, a / 2, a / 2)                  # H on the top edge, rho from the corner B
 cut("dry-moment", "moment of the clipped dry part about the vertical plane across the axis / tan phi (tan phi = 1/4)",
-    ("98", "167-sum", "167", "168", "174", "diagonal-claim"), FACE, *dry_moment(sp.Rational(1, 4)), H_POINT)
+    ("98", "167-sum", "167", "168", "174", "diagonal-claim"), FACE, **dry_moment(sp.Rational(1, 4)),
+    through=H_POINT)
 cut("dry-moment-45", "the same with the axis along a face diagonal", ("170",),
     (C("a = 1, rho = 0.6", a=1, rho="0.6"), C("a = 3/2, rho = 1/5", a="1.5", rho="0.2")),
-    *dry_moment(sp.Rational(1, 4)), H_POINT, roots=((om, pi / 4),))
+    **dry_moment(sp.Rational(1, 4)), through=H_POINT, roots=((om, pi / 4),))
 cut("dry-moment-third", "moment of the clipped dry part / tan phi, water plane through both water lines",
     ("173", "118-form", "173-only-45"),
     (C("a = 1, omega = 0.3, rho = 0.6, rho_1 = 0.4", a=1, omega="0.3", rho="0.6", rho_1="0.4"),
      C("a = 3/2, omega = 0.5, rho = 0.7, rho_1 = 0.9", a="1.5", omega="0.5", rho="0.7", rho_1="0.9")),
-    *dry_moment(a / (a * (si + co) - (rho + rho1) * si)), H_POINT)
+    **dry_moment(a / (a * (si + co) - (rho + rho1) * si)), through=H_POINT)
 
 
 # ---- the triangle BHG of the top face in the frame of the text (origin N, x towards B, y along GH towards G), built
@@ -145,9 +143,10 @@ floating("pentagon-stiffness", "signs of the clipped second derivative of the po
 # ---- the cube turned corner up: the plane through three face diagonals, triangles and hexagons
 DIAGONAL = (1, 1, 1)
 cut("tetra-dry", "dry volume of the clipped cube above the plane through three face diagonals", ("tetra",),
-    (C("a = 1", a=1), C("a = 3/2", a="1.5")), a ** 3 - measured("immersed volume"), DIAGONAL, (a / 2, a / 2, -a / 2))
-cut("five-sixths", "submerged fraction of the unit cube below the plane through three face diagonals",
-    ("five-sixths",), ONE, measured("immersed volume"), DIAGONAL, (half, half, -half), body=UNIT)
+    (C("a = 1", a=1), C("a = 3/2", a="1.5")), a ** 3 - measured("immersed volume"), up=DIAGONAL,
+    through=(a / 2, a / 2, -a / 2))
+cut("five-sixths", "submerged fraction of the unit cube below the plane through three face diagonals", ("five-sixths",),
+    ONE, measured("immersed volume"), up=DIAGONAL, through=(half, half, -half), body=UNIT)
 floating("tri-GM", "sign of the metacentric height of the clipped cube, corner up, s = 1 - L^3/6", ("tri-unstable",),
          (C("L = 1/2", L="0.5"), C("L = 4/5", L="0.8")), measured("stability sign"), up=DIAGONAL, density=1 - L ** 3 / 6)
 floating("diagonal-shape", "+1 if the clipped waterplane of the cube turned corner up is a hexagon, -1 if a triangle",

@@ -6,7 +6,8 @@ decimal string taken exactly (``s="0.3"`` is 3/10), keyed by the parameter's nam
 case's own (``Case(..., {"body": body})``).  ``declarer(derivation, kind, **defaults)`` declares witnesses of
 one kind with the module's fields: ``declare(name, description, targets, cases, quantity, **fields)`` is
 ``derivation.witness(kind(name, description, targets, cases, quantity=quantity, **defaults, **fields))``, a field
-given at the call overriding the module's.  ``part_of(kind, **defaults)`` makes the parts of a ``Joined`` or
+given at the call overriding the module's; without ``quantity`` the module's, if it gives one (a kind that
+measures no ``quantity``, like ``PlaneSections`` with its ``combine``, takes none).  ``part_of(kind, **defaults)`` makes the parts of a ``Joined`` or
 ``Combined`` witness: ``part(**fields)`` is ``kind("", "", (), (), **defaults, **fields)`` (a part's name,
 targets and cases are the whole's).
 
@@ -42,9 +43,11 @@ def cases_of(*parameters):
 def declarer(derivation, kind, **defaults):
     """A function declaring witnesses of *kind* on *derivation* with the module's *defaults* (see the module);
     ``cases`` may be a tuple or a function returning one (built when first measured)."""
-    def declare(name, description, targets, cases, quantity, **fields):
+    def declare(name, description, targets, cases, quantity=None, **fields):
+        if quantity is not None:                        # else the module's, or the kind's own measure
+            fields["quantity"] = quantity
         derivation.witness(kind(name, description, tuple(targets), cases if callable(cases) else tuple(cases),
-                                quantity=quantity, **{**defaults, **fields}))
+                                **{**defaults, **fields}))
     return declare
 
 
