@@ -56,7 +56,7 @@ def _measured(witness, label, cases=None):
     """The float64 value of the derivation's witness at its case *label* (or at the cases of other bodies)."""
     w = next(w for w in M.DERIVATION.witnesses if w.name == witness)
     if cases is not None:
-        w = replace(w, cases=lambda: W._cases(cases))
+        w = replace(w, cases=W._cases(cases))
     return w.measure(next(c for c in w.instances if c.label == label), w.methods[0])
 
 
