@@ -160,6 +160,9 @@ def _numeric_limit(e: sp.Limit):
     return NumericLimit(_carried_out(expr), z, z0, sp.Integer(-1 if str(direction) == "-" else 1))
 
 
+_HeldSign = sp.Function("held_sign")      # a sign kept from doit while the rest is carried out (below)
+
+
 def _carried_out(m):
     """Derivatives, substitutions, sums and limits of *m* carried out exactly (integrals are left to
     quadrature): they must be done before a sample point replaces their variables.  A limit SymPy
@@ -177,9 +180,6 @@ def _carried_out(m):
     except NotImplementedError:              # "Don't know how to calculate the mrv of Integral(...)"
         done = m.replace(lambda e: isinstance(e, sp.Limit), _numeric_limit).doit(integrals=False)
     return done.replace(_HeldSign, sp.sign)
-
-
-_HeldSign = sp.Function("held_sign")
 
 
 def _collapsed(expr) -> bool:
