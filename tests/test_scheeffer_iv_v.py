@@ -218,7 +218,7 @@ def test_the_sentences_in_words_refute_their_mutants():
     (51) the verdict 'stabil' about G_2 H_2 is refuted (the stability is 0 there: neutral), 'indifferent' holds and
     'labil' is refuted; the Drehungsmoment at the position phi_1 is 0, not positive, while the stability named in
     its place is positive for every axis but G_2 H_2."""
-    from symfloat.model.vocabulary import Called, Compares, DecreasesWith, GrowsWith, Is
+    from symfloat.model.vocabulary import Called, DecreasesWith, GrowsWith, Is
     d, X, phi = M.DERIVATION, M.X, M.phi
     along_tg = dict(per=-sp.sin(phi), at={phi: sp.atan(X)}, domain={X: (0, sp.oo)})
     assert _verdict("Q-decreasing", d.get_printed("Q-decreasing").reading) == "verified"

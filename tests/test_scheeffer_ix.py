@@ -130,7 +130,7 @@ def test_the_clipped_quantity_where_corner_c_reaches_the_water_is_enclosed():
 
 def test_the_measured_slope_is_the_derivative_of_the_clipped_potential():
     # the module's SLOPE_C (potential_slope of its turn about c) against a central difference of G above B
-    from symfloat.engine.floating_witness import Body, FloatingWitness
+    from symfloat.engine.floating_witness import FloatingWitness
     params = {ST.a: sp.Rational(3, 2), ST.b: 1, ST.s: sp.Rational(4, 5)}
     for ph in (sp.Rational(3, 10), sp.Rational(9, 10)):
         def at(q, quantity):

@@ -557,8 +557,8 @@ _UNMARKED = """() => Array.from(document.querySelectorAll('.katex-display'))
 
 
 def _displays_fit(page) -> None:
-    """At the phone's width a display wider than its column is set smaller (symfloat.js): the printed (78c), a
-    third wider than the column at its full size, is seen whole; one still too wide is shaded at its right edge,
+    """At the phone's width a display wider than its column is set smaller (symfloat.js): the display of (78c),
+    wider than the column at its full size, is seen whole; one still too wide is shaded at its right edge,
     and the shade goes when it is scrolled to its end.  Waited for, not timed: the page fits its displays when
     it loads and after a change of width settles."""
     from playwright.sync_api import TimeoutError as Unsettled
@@ -576,6 +576,7 @@ def _displays_fit(page) -> None:
     first = shaded.first.element_handle()
     first.evaluate("b => { b.scrollLeft = b.scrollWidth; }")
     page.wait_for_function("b => !b.classList.contains('scrolls')", arg=first, timeout=5000)
+
 
 def _in_chromium(site: Path, names: list[str], both: set[str] | None = None) -> None:
     """Open the pages *names* of the built site in headless Chromium and check each (no console error or failed

@@ -4,7 +4,7 @@ import sympy as sp
 from symfloat import Derivation, Eq, Erratum
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
-from symfloat.model.vocabulary import Compares, DecreasesWith, GrowsWith, IndependentOf, Is
+from symfloat.model.vocabulary import Compares, GrowsWith, IndependentOf, Is
 
 x, y, w, s, r = sp.symbols("x y w s r", real=True)
 a, b, c = sp.symbols("a b c", positive=True)

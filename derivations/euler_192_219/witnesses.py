@@ -4,7 +4,7 @@ import sympy as sp
 
 from symfloat.engine.declare import declarer, part_of
 from symfloat.engine.figure_witness import CurveRoot, Figure, FigureWitness
-from symfloat.engine.floating_witness import (LIMIT_METHODS, SERIES_METHODS, Body, Combined, FloatingRootWitness,
+from symfloat.engine.floating_witness import (LIMIT_METHODS, Body, Combined, FloatingRootWitness,
                                               FloatingWitness, Joined, Loaded, Root, SeriesWitness, potential_slope)
 from symfloat.engine.measured import measured
 from symfloat.engine.witness import Case

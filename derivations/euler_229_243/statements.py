@@ -7,7 +7,7 @@ from sympy.core.evalf import prec_to_dps
 from symfloat import Derivation, Eq, Erratum, Holds
 from symfloat.model.claim import as_printed
 from symfloat.model.symbol_names import symbol
-from symfloat.model.vocabulary import Compares, DecreasesWith, GrowsWith, Is
+from symfloat.model.vocabulary import Compares, GrowsWith, Is
 
 y, s, m = sp.symbols("y s m", positive=True)
 a, b, c, n, k = sp.symbols("a b c n kappa", positive=True)

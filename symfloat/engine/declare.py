@@ -7,9 +7,9 @@ case's own (``Case(..., {"body": body})``).  ``declarer(derivation, kind, **defa
 one kind with the module's fields: ``declare(name, description, targets, cases, quantity, **fields)`` is
 ``derivation.witness(kind(name, description, targets, cases, quantity=quantity, **defaults, **fields))``, a field
 given at the call overriding the module's; without ``quantity`` the module's, if it gives one (a kind that
-measures no ``quantity``, like ``PlaneSections`` with its ``combine``, takes none).  ``part_of(kind, **defaults)`` makes the parts of a ``Joined`` or
-``Combined`` witness: ``part(**fields)`` is ``kind("", "", (), (), **defaults, **fields)`` (a part's name,
-targets and cases are the whole's).
+measures no ``quantity``, like ``PlaneSections`` with its ``combine``, takes none).  ``part_of(kind, **defaults)``
+makes the parts of a ``Joined`` or ``Combined`` witness: ``part(**fields)`` is ``kind("", "", (), (), **defaults,
+**fields)`` (a part's name, targets and cases are the whole's).
 
 >>> import sympy as sp
 >>> a, s = sp.symbols("a s", positive=True)

@@ -263,8 +263,7 @@ class Real:
                 return 1
             if b < 0:
                 return -1
-        import sympy as sp                          # exactly at (or within 2^-1000 of) zero: SymPy decides
-        e = self._sym()
+        e = self._sym()                             # exactly at (or within 2^-1000 of) zero: SymPy decides
         if e.equals(0):
             return 0
         return 1 if e.is_positive else -1 if e.is_negative else _undecided(e)
