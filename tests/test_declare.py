@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from symfloat.engine.declare import cases_of, declarer, part_of
+from symfloat.engine.declare import cases_of, declarer, part_of, rational_cases
 from symfloat.engine.floating_witness import Body, FloatingWitness
 from symfloat.engine.measured import measured
 
@@ -30,6 +30,10 @@ def test_cases_are_exact_and_named_by_their_parameters():
     assert case("own body", box, a=1).data == {"body": box}
     with pytest.raises(ValueError, match="rho"):
         case("a typo", rho="0.3")
+    xp = sp.Symbol("x'", positive=True)                 # a name no keyword can spell
+    (row,) = rational_cases(("x' = 1/4", {xp: "1/4", a: 2}))
+    assert row.params == {xp: sp.Rational(1, 4), a: 2} and isinstance(row.params[xp], sp.Rational)
+    assert row.label == "x' = 1/4"
 
 
 def test_declared_witnesses_take_the_module_defaults_unless_told():

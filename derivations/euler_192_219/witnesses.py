@@ -2,7 +2,7 @@
 boxes of §§192-203 floating, heeled or pitched, clipped exactly (:mod:`symfloat.engine.floating_witness`)."""
 import sympy as sp
 
-from symfloat.engine.declare import declarer, part_of
+from symfloat.engine.declare import declarer, part_of, rational_cases
 from symfloat.engine.figure_witness import CurveRoot, Figure, FigureWitness
 from symfloat.engine.floating_witness import (LIMIT_METHODS, Body, Combined, FloatingRootWitness,
                                               FloatingWitness, Joined, Loaded, Root, SeriesWitness, potential_slope)
@@ -17,10 +17,6 @@ from .statements import (Iw, Kw, Mw, PM, PN, Pp, Tb, V, X1, X2, Y1, Y2, Yel, a, 
 # witnesses (symfloat.engine.figure_witness): exact polygon integrals in float64 and at 50 digits, the ellipse by
 # quadrature of its chords.  The boxes of §§192-203 float, heeled or pitched, by exact clipping
 # (symfloat.engine.floating_witness).  Nothing of the formulas under test is used.
-
-
-def rational_cases(*rows):
-    return tuple(Case({k: sp.Rational(v) for k, v in params.items()}, label=label) for label, params in rows)
 
 
 figure_witness = declarer(d, FigureWitness, coords=(x, y))      # the moments of a plane figure

@@ -2,11 +2,10 @@
 (:mod:`symfloat.engine.figure_witness`); the integrals of §§225-227 by quadrature of their integrands."""
 import sympy as sp
 
-from symfloat.engine.declare import declarer
+from symfloat.engine.declare import declarer, rational_cases
 from symfloat.engine.figure_witness import Figure, FigureWitness
 from symfloat.engine.floating_witness import Combined
 from symfloat.engine.measured import measured
-from symfloat.engine.witness import Case
 
 from .statements import R, Yc, Yg, a, b, c, d, p, q, y
 
@@ -24,10 +23,6 @@ I_XX = measured("integral", of=x_ ** 2)            # its moments about the axes
 I_YY = measured("integral", of=y ** 2)
 
 
-def _cases(*rows):
-    return tuple(Case({k: sp.Rational(v) for k, v in params.items()}, label=label) for label, params in rows)
-
-
 def curve_figure(Y, region, whole=False):
     """The region ('Ace', 'Bce' or 'AEB') of the half y >= 0 of the figure with the function Y (of y >= 0), or
     the whole figure (y from -b to b, Y taken at |y|)."""
@@ -40,11 +35,11 @@ def curve_figure(Y, region, whole=False):
 figure_witness = declarer(d, FigureWitness, coords=(x_, y))      # the moments of a plane figure
 
 
-GEN = _cases(("a = 2, b = 1, Y = |y|/4 + y²/8", {a: 2, b: 1, p: "1/4", q: "1/8"}),
+GEN = rational_cases(("a = 2, b = 1, Y = |y|/4 + y²/8", {a: 2, b: 1, p: "1/4", q: "1/8"}),
              ("a = 5/2, b = 3/4, Y = |y|/10 - y²/3", {a: "5/2", b: "3/4", p: "1/10", q: "-1/3"}))
-CFIG = _cases(("a = 2, b = 1, c = 1/2", {a: 2, b: 1, c: "1/2"}),
+CFIG = rational_cases(("a = 2, b = 1, c = 1/2", {a: 2, b: 1, c: "1/2"}),
               ("a = 5/2, b = 3/4, c = 1", {a: "5/2", b: "3/4", c: 1}))
-AB_ONLY = _cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
+AB_ONLY = rational_cases(("a = 2, b = 1", {a: 2, b: 1}), ("a = 5/2, b = 3/4", {a: "5/2", b: "3/4"}))
 
 for _region in ("Ace", "Bce", "AEB"):
     figure_witness(f"area-{_region}", f"∫∫ 1 over {_region}", (f"area-{_region}",), GEN, AREA,

@@ -3,7 +3,8 @@ of its joined or combined witnesses with the module's defaults.
 
 ``cases_of(*parameters)`` makes exact cases: ``case(label, body=None, **values)``, each value a number or a
 decimal string taken exactly (``s="0.3"`` is 3/10), keyed by the parameter's name; a body, where given, is the
-case's own (``Case(..., {"body": body})``).  ``declarer(derivation, kind, **defaults)`` declares witnesses of
+case's own (``Case(..., {"body": body})``); ``rational_cases((label, {symbol: value}), ...)`` the same by symbol.
+``declarer(derivation, kind, **defaults)`` declares witnesses of
 one kind with the module's fields: ``declare(name, description, targets, cases, quantity, **fields)`` is
 ``derivation.witness(kind(name, description, targets, cases, quantity=quantity, **defaults, **fields))``, a field
 given at the call overriding the module's; without ``quantity`` the module's, if it gives one (a kind that
@@ -24,7 +25,7 @@ import sympy as sp
 
 from .witness import Case
 
-__all__ = ["cases_of", "declarer", "part_of"]
+__all__ = ["cases_of", "rational_cases", "declarer", "part_of"]
 
 
 def cases_of(*parameters):
@@ -38,6 +39,12 @@ def cases_of(*parameters):
         return Case({by_name[k]: sp.Rational(v) for k, v in values.items()},
                     None if body is None else {"body": body}, label)
     return case
+
+
+def rational_cases(*rows):
+    """Cases from ``(label, {symbol: value})`` rows, each value made an exact SymPy rational (``"1/4"`` is 1/4):
+    for parameters whose names are not Python names (``x'``), which :func:`cases_of` cannot take as keywords."""
+    return tuple(Case({q: sp.Rational(v) for q, v in params.items()}, label=label) for label, params in rows)
 
 
 def declarer(derivation, kind, **defaults):
