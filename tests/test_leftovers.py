@@ -15,7 +15,7 @@ import pytest
 import symfloat.cli as cli
 import symfloat.report.notebooks as notebooks
 from symfloat.engine.cache import CacheError, ReportCache
-from symfloat.engine.runner import _cached_report, verify
+from symfloat.engine.runner import WorkerLost, _cached_report, completed, verify, worker_pool
 from symfloat.leftovers import STALE_SECONDS, sweep_orphans, sweep_stale
 from symfloat.files import write_atomic
 
@@ -185,3 +185,20 @@ def test_an_atlas_too_large_or_with_too_many_workers_is_refused_before_any_work(
     assert cli.main([*grid[:5], str(tmp_path / ("a" * 300)), "--quiet", "--ba", "2", "--ca", "3"]) == 2
     assert "File name too long" in capsys.readouterr().err                  # not OSError 36
     assert not (tmp_path / "a").exists()
+
+
+def _die():
+    os.kill(os.getpid(), 9)                   # SIGKILL, as the out-of-memory killer sends
+
+
+def test_a_broken_pool_is_ended_before_the_command_returns():
+    # The random test above once printed CPython 3.11's "Bad file descriptor" traceback: the pool's
+    # manager thread, left running, closed its wake-up pipe while the interpreter's exit wrote to it.
+    # Waiting for that thread in _kill closes the race; with shutdown(wait=False) it is still alive here.
+    with pytest.raises(WorkerLost):
+        with worker_pool(2) as pool:
+            futures = {pool.submit(_die): "the victim"}
+            manager = pool._executor_manager_thread
+            for _ in completed(futures, "checks"):
+                pass
+    assert not manager.is_alive()

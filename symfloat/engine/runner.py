@@ -85,13 +85,16 @@ def _end_with_parent(parent: int) -> None:
 
 def _kill(pool: ProcessPoolExecutor) -> None:
     """End the pool's workers now (they may be deep in a symbolic check): ``kill_workers`` where
-    the standard library has it (Python 3.14), else each of the pool's processes."""
+    the standard library has it (Python 3.14), else each of the pool's processes.  The pool's
+    manager thread is then waited for: with dead workers it ends at once, and left running it
+    could be closing its wake-up pipe just as the interpreter's exit writes to it (a traceback
+    on stderr, "Bad file descriptor", CPython 3.11)."""
     if hasattr(pool, "kill_workers"):
         pool.kill_workers()
     else:
         for process in list((getattr(pool, "_processes", None) or {}).values()):
             process.kill()
-    pool.shutdown(wait=False, cancel_futures=True)
+    pool.shutdown(wait=True, cancel_futures=True)
 
 
 class WorkerLost(EnvironmentProblem):
