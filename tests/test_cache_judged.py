@@ -54,11 +54,19 @@ def _every_step_refuted(report):
 
 
 def _witness_off_by_2e_2(report):
+    # a method's record (a certified one is decided by its bounds, not by rel_error)
     f = next(f for f in report["formulas"] if f["verdict"] == "verified" and f["numeric"])
-    f["numeric"][0]["rel_error"] = 2e-2
+    next(r for r in f["numeric"] if not r.get("certified"))["rel_error"] = 2e-2
+
+
+def _ball_moved_off(report):
+    # a certified record (the definition route's, in balls) whose difference is made proven beyond its rounding
+    f = next(f for f in report["formulas"] if f["verdict"] == "verified" and any(r.get("certified") for r in f["numeric"]))
+    next(r for r in f["numeric"] if r.get("certified")).update(abs_error=1e-3, abs_error_lower=1e-3)
 
 
 FORGERIES = {
+    "a certified difference moved off 0": (_ball_moved_off, "a witness disagrees"),
     "nine errata turned verified": (_errata_to_verified, "recorded 'verified'"),
     "verdict banana": (lambda r: r["formulas"][0].update(verdict="banana"), "the report.formulas[0].verdict must be one of"),
     "every step refuted": (_every_step_refuted, "is refuted"),
@@ -106,7 +114,8 @@ def test_judge_refuses_what_the_checker_refuses(checked_once):
     assert judge(erratum, True)[:2] == ("erratum", erratum.evidence) and judge(erratum, True)[2] == []
     assert "no erratum is declared" in judge(erratum, False)[2][0]
     assert judge(verified, True)[2] == ["an erratum is declared but the print holds"]
-    verified.numeric[0] = {**verified.numeric[0], "rel_error": 2e-2}
+    k = next(k for k, r in enumerate(verified.numeric) if not r.get("certified"))
+    verified.numeric[k] = {**verified.numeric[k], "rel_error": 2e-2}
     assert judge(verified, False)[2] == ["derived and printed agree but a witness disagrees"]
 
 

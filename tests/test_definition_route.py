@@ -90,13 +90,13 @@ def test_the_checker_runs_the_route_on_unwitnessed_formulas():
         d.quote("mid", "§1", MID, reading=reading, erratum=erratum)
         return check_derivation(d).formulas[0]
 
-    f = check((V, g / 4))
-    assert f.verdict == "verified" and [r["method"] for r in f.numeric] == ["definitions, 15 digits",
-                                                                            "definitions, 30 digits"]
-    # mutation: g/3 printed; the route measures the print's error (1/3 of g/4) and the correction
+    f = check((V, g / 4))          # a single integral: decided in balls, the 30-digit method not run
+    assert f.verdict == "verified" and [r["method"] for r in f.numeric] == ["Arb ball arithmetic",
+                                                                            "definitions, 15 digits"]
+    # mutation: g/3 printed; the route measures the print's error (1/4 of g/3, proven) and the correction
     f = check((V, g / 3), Erratum("calculation", "high", "g/4", "mutation", corrected_reading=(V, g / 4)))
     assert f.verdict == "erratum" and abs(f.numeric[0]["rel_error"] - 0.25) < 1e-12
-    assert f.corrected_numeric[1]["rel_error"] < 1e-28
+    assert f.numeric[0]["abs_error_lower"] > 0 and f.corrected_numeric[0]["rel_error"] < 1e-28
 
 
 def test_a_substitution_at_a_point_where_a_term_is_singular_takes_the_limit():
@@ -315,7 +315,10 @@ def test_the_15_digit_route_is_float64_and_keeps_its_digits_at_a_vanishing_squar
     _, r = route([((T, quarter), T)], {a: (1, 3)})
     assert r.outcome("q", (T, sp.pi * a ** 2 / 4)).agrees
     wrong = r.outcome("q", (T, sp.Rational(79, 100) * a ** 2))
-    assert not wrong.agrees and wrong.records[0]["method"] == "definitions, 15 digits"
+    assert not wrong.agrees and [rec["method"] for rec in wrong.records] == ["Arb ball arithmetic",
+                                                                            "definitions, 15 digits"]
+    assert wrong.records[0]["abs_error_lower"] > 0          # the ball refutes; float64 measured the quarter circle
+    assert wrong.records[1]["proven"] and wrong.records[1]["rel_error"] < 1e-12
 
 
 def test_a_limit_is_extrapolated_in_h_and_says_when_it_does_not_settle():
@@ -352,3 +355,41 @@ def test_a_limit_that_cancels_past_float64_is_taken_in_mpmaths_numbers():
     limit = NumericLimit((sp.sin(z) - z + z ** 3 / 6) / z ** 5 * a, z, sp.Integer(0), sp.Integer(1))
     v = _quadrature(limit, {a: sp.Integer(1)}, 15, _NestedQuadPrinter)
     assert abs(v - sp.Rational(1, 120)) < 1e-14 and abs(v - sp.Rational(1, 121)) > 1e-5
+
+
+# ---------------------------------------------------------------- in ball arithmetic (definition_enclosure.py)
+
+def test_a_single_integral_is_decided_in_balls_and_the_30_digit_method_is_not_run(monkeypatch):
+    # the quarter circle's area: Arb's acb.integral after the substitution that removes the square root's branch
+    # point at x = a; the 15-digit method's error is proven against the enclosure
+    _, r = route([((T, sp.Integral(sp.sqrt(a ** 2 - x ** 2), (x, 0, a))), T)], {a: (1, 3)})
+    out = r.outcome("q", (T, sp.pi * a ** 2 / 4))
+    assert out.agrees and [rec["method"] for rec in out.records] == ["Arb ball arithmetic", "definitions, 15 digits"]
+    arb_, float64 = out.records
+    assert arb_["certified"] and arb_["bits"] == 128 and arb_["abs_error"] <= arb_["width"] < 1e-15
+    assert float64["proven"] and float64["rel_error"] < 1e-13 <= float64["rel_tolerance"]
+    # mutation: a coefficient one unit off in its 12th digit is still refuted, by a proven bound
+    off = r.outcome("q", (T, sp.pi * a ** 2 / 4 * (1 + sp.Rational(1, 10 ** 12))))
+    assert not off.agrees and off.records[0]["abs_error_lower"] > 0
+
+
+def test_a_method_that_misses_the_enclosure_fails_its_proven_error(monkeypatch):
+    # the 15-digit method's value pushed off by 1e-5 relative: its error against the enclosure is seen
+    import symfloat.engine.definitions as definitions_module
+    real = definitions_module._measured
+    monkeypatch.setattr(definitions_module, "_measured", lambda e, p, dps: real(e, p, dps) * (1 + sp.Float(1e-5)))
+    _, r = route([((T, sp.Integral(sp.sqrt(a ** 2 - x ** 2), (x, 0, a))), T)], {a: (1, 3)})
+    out = r.outcome("q", (T, sp.pi * a ** 2 / 4))
+    assert not out.agrees and out.records[0]["abs_error"] <= out.records[0]["width"]
+    assert abs(out.records[1]["rel_error"] - 1e-5) < 1e-9
+
+
+def test_what_has_no_rule_in_balls_is_compared_at_both_precisions():
+    # a double integral (the triangle) and an integral nested in another's integrand: no enclosure, both methods
+    _, r = triangle()
+    assert [rec["method"] for rec in r.outcome("t", (T, a * b ** 3 / 12)).records] == ["definitions, 15 digits",
+                                                                                    "definitions, 30 digits"]
+    nested = sp.Integral(sp.Integral(y, (y, 0, x)), (x, 0, a))
+    _, r = route([((T, nested), T)], {a: (1, 3)})
+    out = r.outcome("n", (T, a ** 3 / 6))
+    assert out.agrees and [rec["method"] for rec in out.records] == ["definitions, 15 digits", "definitions, 30 digits"]

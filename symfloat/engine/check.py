@@ -288,7 +288,7 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
                 check = identities.get(p.name) if target == p.name else corrected.get(p.name)
                 outcomes.setdefault(target, []).append(route.relation_outcome(target, reading, results, check))
             elif reading is not None:
-                outcomes.setdefault(target, []).append(route.outcome(target, reading))
+                outcomes.setdefault(target, []).append(route.outcome(target, reading, p.tolerance))
     timing["witnesses"] = time.perf_counter() - t_witnesses
     for p in d.printed:          # printed numbers agree with a witness to their printed precision
         if p.tolerance is not None:

@@ -42,6 +42,7 @@ from __future__ import annotations
 
 import functools
 import itertools
+import math
 import time
 from dataclasses import dataclass
 
@@ -51,12 +52,14 @@ from sympy.printing.pycode import MpmathPrinter
 
 from ..model.claim import members
 from ..model.relation import Cases, Holds, RealRoots
+from .definition_enclosure import route_enclosure
+from .enclosure import Unsupported, ball, lower, upper, working_precision
 from .extrapolation import UnsettledLimit, extrapolated_limit
 from .identity import Domain
 from .quadrature import gauss_legendre
 from .relation import boundary_points, inserted, random_points, relation_intervals, statement, truth
 from .root_count import count_real_roots
-from .witness import Outcome, Precision, record_agrees
+from .witness import Outcome, Precision, record_agrees, record_decision, undecided_reason
 
 __all__ = ["DefinitionRoute", "definitions", "ROUTE_METHODS"]
 
@@ -312,6 +315,38 @@ def _difference(measured, value, claimed, point, method):
     return float(ab), float(ab / scale) if scale else float(ab)
 
 
+def _certified(measured, claims, cases, allowance):
+    """``(record, balls)`` of the claims against the measured components in ball arithmetic
+    (:func:`~symfloat.engine.definition_enclosure.route_enclosure`), or ``None`` where the members have no
+    rigorous rule, no finite enclosure, or one SymPy cannot build at a point (a pole of a member there): the route
+    then compares its methods as before, and they say what they find."""
+    try:
+        return route_enclosure(measured, claims, cases, allowance)
+    except (Unsupported, ValueError, TypeError, ArithmeticError, NotImplementedError):
+        return None
+
+
+def _proven(measured, value, enclosure, point, method, bits):
+    """A method's proven error at one point: ``|value - m| + rad`` against the enclosure *m* (at *bits*) of the measured
+    quantity, relative to the larger of the two, or, where the quantity cancels (an equilibrium condition), to
+    the magnitude of the terms whose sums produce it (as :func:`_difference`)."""
+    with working_precision(bits):
+        ab = upper(ball(value, bits) - enclosure)
+    scale = max(abs(float(value)), upper(enclosure))
+    if ab > method.tolerance * scale and not measured.has(RealRoots):
+        scale = max(scale, abs(float(_numeric(_magnitude(measured), point, 10, _RoughQuadPrinter))))
+    return ab, ab / scale if scale else ab
+
+
+def _proven_tolerance(method, certified) -> float:
+    """What a method's proven error is held to: its accuracy, plus twice what the enclosures resolve (their
+    relative radius) and the rounding of the difference at the enclosure's bits."""
+    record, balls = certified
+    resolution = max((upper(m.rad()) / lower(m) if lower(m) else upper(m.rad()) for row in balls for m in row),
+                     default=0.0)
+    return method.tolerance + 2 * resolution + math.ldexp(1, 2 - record["bits"])
+
+
 def _premises(relation) -> list:
     """The conditions under which a relation claims something: the premise of ``Holds(Implies(a, b))``, the
     rows' conditions of a case table (a point where each holds is sampled too)."""
@@ -388,10 +423,11 @@ class DefinitionRoute:
         self._defs = definitions(self.steps)
         self._memo: dict = {}
 
-    def outcome(self, target: str, reading) -> Outcome:
+    def outcome(self, target: str, reading, allowance=None) -> Outcome:
         """Compare the members of *reading* with its first member, measured from the definitions.
         Where the chain offers nothing to compare, or cannot be evaluated, the outcome has no
-        records and a note saying why."""
+        records and a note saying why.  *allowance*: a printed number's rounding (half a unit in its last digit),
+        which the certified record carries (the checker gives the other records theirs)."""
         out = Outcome(self.name)
         try:
             ms = [_carried_out(_expanded(m, self._defs, self._memo)) for m in members(reading)]
@@ -416,18 +452,29 @@ class DefinitionRoute:
             out.note = "definition route: not evaluated (members of different shapes)"
             return out
         uncounted = 0
-        for method in ROUTE_METHODS:
+        certified = _certified(measured, claims, cases, allowance)
+        methods = ROUTE_METHODS
+        if certified is not None:
+            out.records.append(certified[0])
+            if record_decision(certified[0]) != "undecided":
+                methods = ROUTE_METHODS[:1]         # the ball decides: the finer method adds nothing
+        for method in methods:
             t0 = time.perf_counter()
             worst_abs = worst_rel = 0.0
             read = 0
             try:
-                for point in cases:
+                for k, point in enumerate(cases):
                     try:
                         values = [_measured(c, point, method.dps) for c in measured]
                     except UncountedRoots:
                         uncounted += method is ROUTE_METHODS[-1]
                         continue
                     read += 1
+                    if methods is not ROUTE_METHODS:     # its proven error against the enclosure
+                        for e, v, m in zip(measured, values, certified[1][k]):
+                            ab, rel = _proven(e, v, m, point, method, certified[0]["bits"])
+                            worst_abs, worst_rel = max(worst_abs, ab), max(worst_rel, rel)
+                        continue
                     for claimed in claims:
                         for e, v, c in zip(measured, values, claimed):
                             ab, rel = _difference(e, v, c, point, method)
@@ -441,12 +488,16 @@ class DefinitionRoute:
                 out.note = ("definition route: not evaluated (at every point a root count the inclusion discs do "
                             "not decide)")
                 return out
-            out.records.append({"method": f"definitions, {method.dps} digits", "abs_error": worst_abs,
-                                "rel_error": worst_rel, "seconds": time.perf_counter() - t0,
-                                "cases": read, "rel_tolerance": method.tolerance})
-            if not record_agrees(out.records[-1]):
-                out.agrees = False
-        notes = ["the definitions give another value"] if not out.agrees else []
+            record = {"method": f"definitions, {method.dps} digits", "abs_error": worst_abs, "rel_error": worst_rel,
+                      "seconds": time.perf_counter() - t0, "cases": read, "rel_tolerance": method.tolerance}
+            if methods is not ROUTE_METHODS:
+                record.update(proven=True, rel_tolerance=_proven_tolerance(method, certified))
+            out.records.append(record)
+        out.judged()
+        if out.undecided:
+            notes = [f"undecided, {undecided_reason(out.records[0])}"]
+        else:
+            notes = ["the definitions give another value"] if not out.agrees else []
         if uncounted:
             notes.append(f"at {uncounted} of {len(cases)} points a root count is not decided by its inclusion discs: "
                          "not read there")

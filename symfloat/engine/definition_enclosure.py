@@ -1,0 +1,155 @@
+"""The definition route in ball arithmetic: a reading's members, the definitions inserted, as Arb balls.
+
+At each sample point of the route (exact rationals) every member is evaluated by
+:func:`~symfloat.engine.enclosure.ball`, each defining integral closed at the point by
+:func:`~symfloat.engine.enclosure.integral` (``acb.integral``, rigorous error bounds) and inserted as a
+ball, the smallest first (a centroid inside a moment's integrand).  The enclosure of each difference
+*claimed - measured* decides the formula as a declared witness's does
+(:func:`~symfloat.engine.witness.record_decision`): agreed when it is proven within the width the
+precision asks, refuted when proven away from 0, else the precision is doubled from
+:data:`~symfloat.engine.witness.START_BITS` up to 8 times it.
+
+There is no rigorous rule (:class:`~symfloat.engine.enclosure.Unsupported`, the route then compares its
+methods as before) for a limit left to extrapolation, a root count, an integral nested in another's
+integrand, a multiple integral, a node without a ball rule (a piecewise function), and for an integrand
+that is not holomorphic near its path at every precision tried (no finite ball).
+
+>>> import sympy as sp
+>>> x, a = sp.symbols("x a", positive=True)
+>>> area = sp.Integral(2 * sp.sqrt(a ** 2 - x ** 2), (x, -a, a))     # a disc of radius a
+>>> record, balls = route_enclosure([area], [[sp.pi * a ** 2]], [{a: sp.Rational(1, 2)}])
+>>> record["method"], record["bits"], record["abs_error"] < 1e-30
+('Arb ball arithmetic', 128, True)
+>>> route_enclosure([area], [[3 * a ** 2]], [{a: sp.Rational(1, 2)}])[0]["abs_error_lower"] > 0.03
+True
+"""
+from __future__ import annotations
+
+import math
+import time
+from fractions import Fraction
+
+import sympy as sp
+from flint import arb, ctx
+
+from ..model.relation import RealRoots
+from .enclosure import Unsupported, ball, exact, integral, lower, upper, working_precision
+from .witness import CERTIFIED, START_BITS, record_decision
+
+__all__ = ["route_enclosure", "definition_ball"]
+
+GUARD_BITS = 32         # each ball is computed with these bits more than the decision asks
+
+
+def definition_ball(expr, point: dict, bits: int) -> arb:
+    """*expr* (a member with the definitions inserted, derivatives carried out) at *point* as a ball, its closed
+    integrals by ``acb.integral`` (see the module); non-finite where an integral has no finite enclosure."""
+    from .definitions import NumericLimit
+    e = _replaced(_bound_apart(sp.sympify(expr)), point)
+    if e.has(NumericLimit):
+        raise Unsupported("a limit left to extrapolation")
+    if e.has(RealRoots):
+        raise Unsupported("a root count")
+    prec = bits + GUARD_BITS
+    balls: dict = {}
+    while e.has(sp.Integral):
+        closed = [i for i in e.atoms(sp.Integral)
+                  if not i.function.has(sp.Integral) and i.free_symbols <= set(balls)]
+        if not closed:
+            raise Unsupported("an integral nested in another's integrand")
+        for i in sorted(closed, key=sp.count_ops):
+            if len(i.limits) != 1 or len(i.limits[0]) != 3:
+                raise Unsupported("a multiple integral")
+            var, lo, hi = i.limits[0]
+            if (lo.free_symbols | hi.free_symbols) & set(balls):
+                raise Unsupported("an integral whose bounds are integrals")
+            value = integral(i.function, var, lo, hi, prec, at={d: balls[d] for d in i.function.free_symbols - {var}})
+            if not value.is_finite():
+                return arb.nan()
+            d = sp.Symbol(f"·integral {len(balls)}")
+            balls[d] = value
+            e = _replaced(e, {i: d})
+    try:
+        return ball(e, prec, at=balls)
+    except ValueError as exc:          # a complex value: the 30-digit quadrature's own check reads it
+        if isinstance(exc, Unsupported):
+            raise
+        raise Unsupported(str(exc)) from exc
+
+
+def _replaced(expr, mapping: dict):
+    """*expr* with the nodes of *mapping* replaced and nothing evaluated: a sum, product, power or function is
+    rebuilt with ``evaluate=False`` (SymPy's arithmetic on the exact point would factor a rational under a root;
+    the balls do the arithmetic).  The flag is passed to each constructor, never set globally with
+    ``sp.evaluate``: SymPy's cache would keep those unevaluated nodes and hand them to later callers."""
+    if expr in mapping:
+        return mapping[expr]
+    if not expr.args or not any(expr.has(k) for k in mapping):
+        return expr
+    args = [_replaced(a, mapping) for a in expr.args]
+    if isinstance(expr, (sp.Add, sp.Mul, sp.Pow, sp.Function)):
+        return expr.func(*args, evaluate=False)
+    return expr.func(*args)
+
+
+def _bound_apart(expr):
+    """*expr* with each integral's variable renamed, so that a point naming the same symbol as a parameter does
+    not replace it (the definition of a section integrates over a symbol the derivation also samples).  Named
+    symbols, not SymPy's ``Dummy``: a new dummy would move the order of every later one, and with it the order
+    in which other witnesses' sums are evaluated in balls (their radii in the last digits)."""
+    def apart(i):
+        return i.xreplace({lim[0]: sp.Symbol(f"{lim[0].name}·bound", **lim[0].assumptions0) for lim in i.limits})
+    return expr.replace(lambda e: isinstance(e, sp.Integral), apart) if expr.has(sp.Integral) else expr
+
+
+def route_enclosure(measured: list, claims: list, points: list, allowance=None):
+    """``(record, balls)``: the certified record of the claims against the measured components at *points*
+    (``balls[k][j]`` the measured component *j* at point *k*), at the first precision that decides (or the
+    last tried), *allowance* (a printed number's rounding, a SymPy rational) its ``abs_tolerance``; ``None``
+    where there is no finite enclosure at any precision tried.  Raises
+    :class:`~symfloat.engine.enclosure.Unsupported` for a member without a rigorous rule."""
+    t0 = time.perf_counter()
+    bits = START_BITS
+    try:
+        while True:
+            record, balls = _at(measured, claims, points, bits, allowance)
+            if record is not None and record_decision(record) != "undecided" or bits * 2 > 8 * START_BITS:
+                break
+            bits *= 2
+    finally:
+        # FLINT keeps pi and the integrator's Gauss-Legendre nodes at the highest precision asked so far, and
+        # rounds later requests from them: left filled at this route's precisions, they would change the last
+        # bits of the next derivation's enclosures with the order in which a worker checks derivations
+        ctx.cleanup()
+    if record is None:
+        return None
+    record["seconds"] = time.perf_counter() - t0
+    return record, balls
+
+
+def _at(measured, claims, points, bits, allowance):
+    worst_upper = worst_lower = worst_rel = 0.0
+    width = math.inf
+    balls = []
+    with working_precision(bits):
+        for point in points:
+            here = [definition_ball(e, point, bits) for e in measured]
+            if not all(m.is_finite() for m in here):
+                return None, None
+            balls.append(here)
+            for claimed in claims:
+                values = [definition_ball(c, point, bits) for c in claimed]
+                if not all(c.is_finite() for c in values):
+                    return None, None
+                sizes = [upper(abs(v)) for v in (*here, *values)]
+                sizes += [abs(float(v)) for v in point.values()]
+                width = min(width, math.ldexp(max(sizes, default=0.0), -bits // 2))
+                for m, c in zip(here, values):
+                    d = c - m
+                    worst_upper, worst_lower = max(worst_upper, upper(d)), max(worst_lower, lower(d))
+                    size = upper(abs(c))
+                    worst_rel = max(worst_rel, upper(d) / size if size else upper(d))
+    return {"method": CERTIFIED, "certified": True, "bits": bits, "abs_error": worst_upper,
+            "abs_error_lower": worst_lower, "rel_error": worst_rel, "width": width if math.isfinite(width) else 0.0,
+            "abs_tolerance": 0.0 if allowance is None else upper(exact(Fraction(int(allowance.p), int(allowance.q)))),
+            "cases": len(points)}, balls
