@@ -393,3 +393,16 @@ def test_what_has_no_rule_in_balls_is_compared_at_both_precisions():
     _, r = route([((T, nested), T)], {a: (1, 3)})
     out = r.outcome("n", (T, a ** 3 / 6))
     assert out.agrees and [rec["method"] for rec in out.records] == ["definitions, 15 digits", "definitions, 30 digits"]
+
+
+def test_an_integral_without_a_finite_enclosure_is_not_asked_again_at_more_bits(monkeypatch):
+    # 1/sqrt|x - a/2| is unbounded inside the path: acb.integral gives no finite ball at 128 bits, and more bits
+    # would ask the integrator more; the route gives up at once (its two methods are then compared as before)
+    import symfloat.engine.definition_enclosure as de
+    tried = []
+    real = de._at
+    monkeypatch.setattr(de, "_at", lambda *args: tried.append(args[3]) or real(*args))
+    spike = sp.Integral(1 / sp.sqrt(sp.Abs(x - a / 2)), (x, 0, a))
+    value = 2 * sp.sqrt(2) * sp.sqrt(a)
+    assert de.route_enclosure([spike], [[value]], [{a: sp.Integer(1)}]) is None
+    assert tried == [128]

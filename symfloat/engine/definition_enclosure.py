@@ -12,7 +12,8 @@ precision asks, refuted when proven away from 0, else the precision is doubled f
 There is no rigorous rule (:class:`~symfloat.engine.enclosure.Unsupported`, the route then compares its
 methods as before) for a limit left to extrapolation, a root count, an integral nested in another's
 integrand, a multiple integral, a node without a ball rule (a piecewise function), and for an integrand
-that is not holomorphic near its path at every precision tried (no finite ball).
+that has no finite enclosure at the first precision (not holomorphic near its path, or the integrator's
+evaluations run out).
 
 >>> import sympy as sp
 >>> x, a = sp.symbols("x a", positive=True)
@@ -106,14 +107,17 @@ def route_enclosure(measured: list, claims: list, points: list, allowance=None):
     """``(record, balls)``: the certified record of the claims against the measured components at *points*
     (``balls[k][j]`` the measured component *j* at point *k*), at the first precision that decides (or the
     last tried), *allowance* (a printed number's rounding, a SymPy rational) its ``abs_tolerance``; ``None``
-    where there is no finite enclosure at any precision tried.  Raises
+    where an integral has no finite enclosure at the first precision (its integrand not holomorphic near the
+    path, or the integrator's evaluations run out: more bits would not help).  Raises
     :class:`~symfloat.engine.enclosure.Unsupported` for a member without a rigorous rule."""
     t0 = time.perf_counter()
     bits = START_BITS
     try:
         while True:
             record, balls = _at(measured, claims, points, bits, allowance)
-            if record is not None and record_decision(record) != "undecided" or bits * 2 > 8 * START_BITS:
+            if record is None:      # an integral with no finite enclosure: more bits ask it more, not less
+                return None
+            if record_decision(record) != "undecided" or bits * 2 > 8 * START_BITS:
                 break
             bits *= 2
     finally:
@@ -121,8 +125,6 @@ def route_enclosure(measured: list, claims: list, points: list, allowance=None):
         # rounds later requests from them: left filled at this route's precisions, they would change the last
         # bits of the next derivation's enclosures with the order in which a worker checks derivations
         ctx.cleanup()
-    if record is None:
-        return None
     record["seconds"] = time.perf_counter() - t0
     return record, balls
 
