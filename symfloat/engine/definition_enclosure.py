@@ -72,9 +72,9 @@ def definition_ball(expr, point: dict, bits: int) -> arb:
             e = _replaced(e, {i: d})
     try:
         return ball(e, prec, at=balls)
+    except Unsupported:
+        raise
     except ValueError as exc:          # a complex value: the 30-digit quadrature's own check reads it
-        if isinstance(exc, Unsupported):
-            raise
         raise Unsupported(str(exc)) from exc
 
 
@@ -94,10 +94,9 @@ def _replaced(expr, mapping: dict):
 
 
 def _bound_apart(expr):
-    """*expr* with each integral's variable renamed, so that a point naming the same symbol as a parameter does
-    not replace it (the definition of a section integrates over a symbol the derivation also samples).  Named
-    symbols, not SymPy's ``Dummy``: a new dummy would move the order of every later one, and with it the order
-    in which other witnesses' sums are evaluated in balls (their radii in the last digits)."""
+    """*expr* with each integral's variable renamed (``y·bound``, a name no derivation writes), so that a point
+    naming the same symbol as a parameter does not replace it (the definition of a section integrates over a
+    symbol the derivation also samples)."""
     def apart(i):
         return i.xreplace({lim[0]: sp.Symbol(f"{lim[0].name}·bound", **lim[0].assumptions0) for lim in i.limits})
     return expr.replace(lambda e: isinstance(e, sp.Integral), apart) if expr.has(sp.Integral) else expr
@@ -130,6 +129,9 @@ def route_enclosure(measured: list, claims: list, points: list, allowance=None):
 
 
 def _at(measured, claims, points, bits, allowance):
+    """The certified record and the measured balls at *bits* (see :func:`route_enclosure`); ``(None, None)`` where
+    a member has no finite ball.  The width allowed is ``2^(-bits/2)`` of the largest number met, as for a
+    declared witness (:meth:`~symfloat.engine.witness.MeasuredWitness._bounds`)."""
     worst_upper = worst_lower = worst_rel = 0.0
     width = math.inf
     balls = []
