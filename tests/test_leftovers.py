@@ -5,6 +5,7 @@ and a worker killed at a random moment is one line naming what was lost."""
 import json
 import os
 import random
+import signal
 import subprocess
 import sys
 import time
@@ -188,7 +189,7 @@ def test_an_atlas_too_large_or_with_too_many_workers_is_refused_before_any_work(
 
 
 def _die():
-    os.kill(os.getpid(), 9)                   # SIGKILL, as the out-of-memory killer sends
+    os.kill(os.getpid(), signal.SIGKILL)        # as the out-of-memory killer does
 
 
 def test_a_broken_pool_is_ended_before_the_command_returns():
