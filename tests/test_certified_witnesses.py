@@ -553,6 +553,27 @@ def test_vertices_of_one_height_reach_the_water_together():
         == "refuted"
 
 
+# Irrational vertices, by hand.  The regular hexagonal prism of side 1 and length 3 (axis z, a corner on the x-axis,
+# so its flat sides lie at y = +-sqrt(3)/2) floating at s = 1/2 with y up: the water plane y = 0 passes through the
+# corners (+-1, 0), the waterplane is 2 by 3 (I min = 3 * 2^3/12 = 2), the volume below half the prism's,
+# 3 * (3 sqrt(3)/2)/2 = 9 sqrt(3)/4, and B the centroid of the half hexagon, a trapezoid of parallel sides 2 (at
+# the water) and 1 (at depth h = sqrt(3)/2), h (2 + 2 * 1)/(3 (2 + 1)) = 2 sqrt(3)/9 below the water, G at it: so
+# the metacentric height is 2/(9 sqrt(3)/4) - 2 sqrt(3)/9 = 2 sqrt(3)/27.  The box sqrt(2) x 1 x 1 with y up at
+# s = 3/10: the waterplane sqrt(2) x 1, I min = sqrt(2)/12, V = 3 sqrt(2)/10, B G = (1 - s)/2, so the metacentric
+# height is 1/(12 s) - (1 - s)/2 = -13/180.
+@pytest.mark.parametrize("body, s, exact", [(("regular", 6, 1, 3), sp.Rational(1, 2), 2 * sp.sqrt(3) / 27),
+                                            (("box", sp.sqrt(2), 1, 1), sp.Rational(3, 10), -sp.Rational(13, 180))])
+def test_irrational_vertices_are_enclosed_and_a_value_off_by_1e_12_refuted(body, s, exact):
+    Body, _, _, _, FloatingWitness, _, _ = _floating()
+    kind, *dims = body
+    gm = FloatingWitness("gm", "the metacentric height", ("gm",), (Case({}, label="the prism"),),
+                         body=getattr(Body, kind)(*dims), up=(0, 1, 0), density=s,
+                         quantity=measured("metacentric height"))
+    out = gm.run({"gm": chain(exact)})["gm"]
+    assert record_decision(_certified(out)) == "agrees" and out.agrees and not out.undecided
+    assert record_decision(_certified(gm.run({"gm": chain(exact + sp.Rational(1, 10 ** 12))})["gm"])) == "refuted"
+
+
 def test_a_floating_kind_without_a_rigorous_method_keeps_its_former_comparison():
     Body, _, _, _, FloatingWitness, _, _ = _floating()
     psi = sp.Symbol("psi", real=True)

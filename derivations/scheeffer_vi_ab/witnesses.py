@@ -118,10 +118,6 @@ cylinder("cylinder-upright-69", "16 s/b times the metacentric height of the upri
          16 * s / b * GM)
 cylinder("cylinder-upright-72", "-16 s/b times the metacentric height", ("72",), cyl_cases, -16 * s / b * GM)
 cylinder("cylinder-upright-gm", "metacentric height of the upright cylinder", ("cylinder-condition",), cyl_cases, GM)
-d.witness(FloatingWitness("cylinder-polygon-gm", "metacentric height of the inscribed regular 256-gon prism (exact "
-                          "clipping; its area and moment fall short by (2 pi/256)^2/6 = 1e-4)", ("cylinder-condition",),
-                          tuple(cyl_cases), body=Body.regular(256, 2 * r * sp.sin(pi / 256), b), density=s,
-                          quantity=GM, methods=(Precision(15, 1e-3),)))
 tiltc_cases = [Case({r: sp.Rational(8, 5), b: sp.Rational(5, 2), s: sp.Rational(3, 5)}, label="example 10"),
                Case({r: sp.Rational(1, 2), b: 1, s: sp.Rational(3, 20)}, label="square section, s = 0.15")]
 d.witness(cyl_root("cylinder-tilted-equilibrium", "tan^2 of the tilt where the cylinder's righting arm vanishes",

@@ -1,7 +1,8 @@
 """A floating prism in ball arithmetic: the certified method of the floating witnesses (issue 29).
 
-The body is a right prism (a box, or a prism over a polygon) with **exact rational** dimensions, its vertices
-exact :class:`fractions.Fraction` triples; the up vector ``w`` and the density ratio ``s`` are balls (exact where
+The body is a right prism (a box, a prism over a polygon, a regular prism) with **exact** dimensions, its vertices
+exact triples (:class:`fractions.Fraction`, or SymPy numbers where a dimension is irrational: ``sqrt(2)/2``,
+``cos(2 pi/7)``, each a ball at the working precision); the up vector ``w`` and the density ratio ``s`` are balls (exact where
 they are rational).  The water plane is ``w . p = tau`` with ``w`` not normalised, so that a vertex's height
 ``w . p`` is exact for a rational ``w``.
 
@@ -41,9 +42,10 @@ from __future__ import annotations
 import itertools
 from dataclasses import dataclass, fields
 from fractions import Fraction
+from functools import lru_cache
 
 import sympy as sp
-from flint import arb
+from flint import arb, ctx
 
 from ..geometry.floating import _polygon_moments, draught as float_draught, right_prism
 from .enclosure import Unsupported, ball, exact, sign_change_root, working_precision
@@ -69,8 +71,8 @@ class Ambiguous(ValueError):
 @dataclass(frozen=True)
 class BallBody:
     """A convex polyhedron with exact vertices: ``faces`` rings of vertex indices (counter-clockwise seen from
-    outside), ``exact`` the vertices as Fraction triples, ``G`` its centre of gravity (exact, or ``None``: the
-    centroid)."""
+    outside), ``exact`` the vertices as exact triples (:func:`coordinate`), ``G`` its centre of gravity (balls,
+    or ``None``: the centroid)."""
 
     faces: tuple
     exact: tuple
@@ -78,14 +80,30 @@ class BallBody:
 
     def points(self):
         """The vertices as balls at the working precision."""
-        return [tuple(exact(c) for c in p) for p in self.exact]
+        return [tuple(coordinate(c) for c in p) for p in self.exact]
+
+
+def coordinate(x) -> arb:
+    """An exact coordinate as a ball at the working precision: a rational exactly (radius 0 where dyadic), an
+    irrational SymPy number (``sqrt(3)/2``, ``cos(2 pi/7)``) enclosed by :func:`~symfloat.engine.enclosure.ball`."""
+    if isinstance(x, (int, Fraction, sp.Rational)):
+        return exact(x)
+    return _irrational(x, ctx.prec)
+
+
+@lru_cache(maxsize=4096)
+def _irrational(x, prec):
+    return ball(x, prec)
 
 
 def prism_body(polygon, length, G=None) -> BallBody:
-    """The right prism over the convex counter-clockwise *polygon* (Fraction pairs), axis ``z`` from
-    ``-length/2`` to ``length/2``: the faces of :func:`symfloat.geometry.floating.right_prism`, exact."""
-    n, h = len(polygon), Fraction(length) / 2
-    exact_points = tuple((Fraction(x), Fraction(y), z) for z in (-h, h) for x, y in polygon)
+    """The right prism over the convex counter-clockwise *polygon* (pairs of exact numbers: Fractions, or SymPy
+    numbers throughout), axis ``z`` from ``-length/2`` to ``length/2``: the faces of
+    :func:`symfloat.geometry.floating.right_prism`, exact."""
+    n = len(polygon)
+    h = length / 2 if isinstance(length, sp.Expr) else Fraction(length) / 2
+    exact_points = tuple((x if isinstance(x, sp.Expr) else Fraction(x), y if isinstance(y, sp.Expr) else Fraction(y), z)
+                         for z in (-h, h) for x, y in polygon)
     bottom = tuple(reversed(range(n)))
     top = tuple(n + i for i in range(n))
     sides = tuple((i, (i + 1) % n, n + (i + 1) % n, n + i) for i in range(n))
@@ -149,13 +167,13 @@ def _assignments(body, w, tau):
 
 
 def _same_height(w, p, q) -> bool:
-    """Whether the vertices *p* and *q* (Fraction triples) have the same height ``w . p = w . q`` for every up
+    """Whether the vertices *p* and *q* (exact triples) have the same height ``w . p = w . q`` for every up
     vector in the balls *w*: ``w . (p - q)``, the difference taken exactly, is an exact 0 (radius 0), which
     ball arithmetic gives only where each term is exact, a component of *w* with a radius multiplied by an
     exact 0 (the two ends of an edge along the tilt axis, ``w = (sin phi, cos phi, 0)``, at the tilt where
     they reach the water together).  Split between the two sides, such a pair would be a plane's cut between
     two points of one height, and the crossing on their edge a division by a ball that holds 0."""
-    d = _dot(w, tuple(exact(p[k] - q[k]) for k in range(3)))
+    d = _dot(w, tuple(coordinate(p[k] - q[k]) for k in range(3)))
     return d.rad() == 0 and d.mid() == 0
 
 
@@ -329,8 +347,8 @@ def floating_state(body, up, s, bits) -> BallState:
     with working_precision(bits + GUARD_BITS):
         w = tuple(up)
         norm = _dot(w, w).sqrt()
-        c = _mean([tuple(exact(x) for x in p) for p in body.exact])
         points = body.points()
+        c = _mean(points)
         faces = [tuple(points[i] for i in ring) for ring in body.faces]
         whole, moment = _volume_moment(faces, c)
         G = tuple(c[k] + moment[k] / whole for k in range(3)) if body.G is None else tuple(body.G)
@@ -419,27 +437,31 @@ FIELDS = ("immersed volume", "G above water", "B below water", "G above B", "wat
 
 
 def ball_body(body, params):
-    """*body* (a :class:`~symfloat.engine.floating_witness.Body` box or prism, a ``Loaded`` or a ``Marked`` one:
-    its direction is read by the split parts alone, which have no ball method) at *params* as a
-    :class:`BallBody`, or ``None`` where a dimension is not rational there (no exact vertices) or the body is of
-    another kind (a cylinder, a regular prism)."""
+    """*body* (a :class:`~symfloat.engine.floating_witness.Body` box, prism or regular prism, a ``Loaded`` or a
+    ``Marked`` one: its direction is read by the split parts alone, which have no ball method) at *params* as a
+    :class:`BallBody`, its vertices exact (Fractions, or SymPy numbers throughout where a dimension or a
+    regular polygon's corner is irrational); ``None`` where a dimension is not a number there (a root sets it)
+    or the body is of another kind (a cylinder)."""
     from .floating_witness import Body, Loaded, Marked
-    if type(body) not in (Body, Loaded, Marked) or body.kind not in ("box", "prism"):
+    if type(body) not in (Body, Loaded, Marked) or body.kind not in ("box", "prism", "regular"):
         return None
-
-    def rational(e):
-        v = sp.sympify(e).xreplace(params)
-        return Fraction(int(v.p), int(v.q)) if v.is_Rational else None
+    at = lambda e: sp.sympify(e).xreplace(params)      # noqa: E731
     if body.kind == "box":
-        a, b, c = (rational(x) for x in body.dims)
-        if None in (a, b, c):
-            return None
+        a, b, c = (at(x) for x in body.dims)
         polygon, length = [(-a / 2, -b / 2), (a / 2, -b / 2), (a / 2, b / 2), (-a / 2, b / 2)], c
-    else:
-        polygon = [(rational(x), rational(y)) for x, y in body.dims[0]]
-        length = rational(body.dims[1])
-        if length is None or any(None in p for p in polygon):
-            return None
+    elif body.kind == "prism":
+        polygon, length = [(at(x), at(y)) for x, y in body.dims[0]], at(body.dims[1])
+    else:               # the corners of geometry.floating.regular_prism: circumradius side / (2 sin(pi/n))
+        n, side, length = body.dims
+        radius = at(side) / (2 * sp.sin(sp.pi / n))
+        polygon, length = [(radius * sp.cos(2 * sp.pi * k / n), radius * sp.sin(2 * sp.pi * k / n))
+                           for k in range(n)], at(length)
+    values = [length, *(x for p in polygon for x in p)]
+    if not all(v.is_number and v.is_real for v in values):
+        return None
+    if all(v.is_Rational for v in values):
+        rational = lambda v: Fraction(int(v.p), int(v.q))      # noqa: E731
+        polygon, length = [(rational(x), rational(y)) for x, y in polygon], rational(length)
     return prism_body(polygon, length, getattr(body, "G", None))
 
 
@@ -529,8 +551,8 @@ def _density(witness, params, extra, body, up, fine):
         return closed_ball(witness.density, params, extra, fine)
     with working_precision(fine):
         point = tuple(closed_ball(x, params, extra, fine) for x in through)
-        c = _mean([tuple(exact(x) for x in p) for p in body.exact])
         points = body.points()
+        c = _mean(points)
         whole = _volume_moment([tuple(points[i] for i in ring) for ring in body.faces], c)[0]
         return _volume_at(body, up, _dot(up, point), c) / whole
 
@@ -579,10 +601,9 @@ def _unreadable(quantity) -> str:
 
 def missing_method(witness, body, case) -> str:
     """Why the floating *witness* has no ball method at *case*, in words, judged before any work; ``""`` where it
-    has one: no limit, series or tilt from a reference, a box or prism whose dimensions the case fixes or a
-    cylinder whose length it fixes (its radius may be a root), each root an expression, an ``At`` or a ``Root``
-    without nested roots, each quantity read off the state (:func:`_unreadable`).  (A dimension that is not
-    rational at the case leaves the body without exact vertices: :func:`ball_body` says so by ``None``.)"""
+    has one: no limit, series or tilt from a reference, a box, prism or regular prism whose dimensions the case
+    fixes or a cylinder whose length it fixes (its radius may be a root), each root an expression, an ``At`` or a
+    ``Root`` without nested roots, each quantity read off the state (:func:`_unreadable`)."""
     from .floating_witness import At, Body, Loaded, Marked, Root
     if witness.limit is not None:
         return "a limit in the tilt (Neville extrapolation: no bound)"
@@ -595,11 +616,13 @@ def missing_method(witness, body, case) -> str:
         if getattr(witness, "through", None) is not None:
             return "a cut's share of a cylinder"
         dims = (body.dims[1],)
-    elif type(body) not in (Body, Loaded, Marked) or body.kind not in ("box", "prism"):
-        return {"cylinder": "a cylinder with a given centre of gravity or split parts",
-                "regular": "a regular prism (irrational vertices)"}.get(body.kind, f"a body of kind {body.kind}")
+    elif type(body) not in (Body, Loaded, Marked) or body.kind not in ("box", "prism", "regular"):
+        return {"cylinder": "a cylinder with a given centre of gravity or split parts"}.get(
+            body.kind, f"a body of kind {body.kind}")
+    elif body.kind == "prism":
+        dims = (*(c for p in body.dims[0] for c in p), body.dims[1])
     else:
-        dims = body.dims if body.kind == "box" else (*(c for p in body.dims[0] for c in p), body.dims[1])
+        dims = body.dims if body.kind == "box" else body.dims[1:]
     if any(sp.sympify(x).free_symbols - (set(case.params) - roots) for x in dims):
         return "a dimension that a root sets (no exact vertices)"
     for _, root in getattr(witness, "roots", ()):

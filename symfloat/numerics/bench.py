@@ -201,7 +201,7 @@ def _missing(w, case) -> str:
     if isinstance(w, FloatingWitness):
         body = w.body if w.body is not None else case.data["body"]
         return missing_method(w, body, case) or (
-            "an irrational dimension (no exact vertices)" if ball_body(body, case.params) is None else "")
+            "a dimension that is no number at the case" if ball_body(body, case.params) is None else "")
     return ""
 
 

@@ -110,8 +110,7 @@ def _section_bench(bench, figures):
              "method the witness declares lies within its own tolerance of it; a miss stops the benchmark with an "
              "error. Times are wall times of all cases of a witness, median of repeats (they vary from run to run, "
              "and so may the choice of the cheapest method; nothing else does). A worst error that does not fall "
-             "with the precision is the witness's own approximation (the cylinder as a polygon of many sides, a "
-             "limit by Richardson extrapolation) or, against an exact reading, the printed number's own rounding "
+             "with the precision is the witness's own approximation (a limit by Richardson extrapolation) or, against an exact reading, the printed number's own rounding "
              "(Scheeffer's worked examples print four or five digits; the verdict allows for them by the printed "
              "digits), not the method's rounding.", ""]
     head = ("method", "witnesses", "worst rel. error", "median rel. error", "median time", "error proven")
