@@ -40,7 +40,7 @@ True
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 from fractions import Fraction
 from functools import lru_cache
 
@@ -72,22 +72,27 @@ class Ambiguous(ValueError):
 class BallBody:
     """A convex polyhedron with exact vertices: ``faces`` rings of vertex indices (counter-clockwise seen from
     outside), ``exact`` the vertices as exact triples (:func:`coordinate`), ``G`` its centre of gravity (balls,
-    or ``None``: the centroid)."""
+    or ``None``: the centroid); ``at`` the balls of the symbols its vertices name (a root that sets a dimension:
+    ``((Q, ball),)``)."""
 
     faces: tuple
     exact: tuple
     G: tuple = None
+    at: tuple = ()
 
     def points(self):
         """The vertices as balls at the working precision."""
-        return [tuple(coordinate(c) for c in p) for p in self.exact]
+        return [tuple(coordinate(c, self.at) for c in p) for p in self.exact]
 
 
-def coordinate(x) -> arb:
+def coordinate(x, at=()) -> arb:
     """An exact coordinate as a ball at the working precision: a rational exactly (radius 0 where dyadic), an
-    irrational SymPy number (``sqrt(3)/2``, ``cos(2 pi/7)``) enclosed by :func:`~symfloat.engine.enclosure.ball`."""
+    irrational SymPy number (``sqrt(3)/2``, ``cos(2 pi/7)``) enclosed by :func:`~symfloat.engine.enclosure.ball`,
+    an expression in the symbols of *at* (pairs symbol, ball) at their balls."""
     if isinstance(x, (int, Fraction, sp.Rational)):
         return exact(x)
+    if x.free_symbols:
+        return ball(x, ctx.prec, dict(at))
     return _irrational(x, ctx.prec)
 
 
@@ -96,10 +101,10 @@ def _irrational(x, prec):
     return ball(x, prec)
 
 
-def prism_body(polygon, length, G=None) -> BallBody:
+def prism_body(polygon, length, G=None, at=()) -> BallBody:
     """The right prism over the convex counter-clockwise *polygon* (pairs of exact numbers: Fractions, or SymPy
-    numbers throughout), axis ``z`` from ``-length/2`` to ``length/2``: the faces of
-    :func:`symfloat.geometry.floating.right_prism`, exact."""
+    numbers throughout, which may name the symbols of *at*), axis ``z`` from ``-length/2`` to ``length/2``: the
+    faces of :func:`symfloat.geometry.floating.right_prism`, exact, its ``n`` lower vertices first."""
     n = len(polygon)
     h = length / 2 if isinstance(length, sp.Expr) else Fraction(length) / 2
     exact_points = tuple((x if isinstance(x, sp.Expr) else Fraction(x), y if isinstance(y, sp.Expr) else Fraction(y), z)
@@ -107,7 +112,7 @@ def prism_body(polygon, length, G=None) -> BallBody:
     bottom = tuple(reversed(range(n)))
     top = tuple(n + i for i in range(n))
     sides = tuple((i, (i + 1) % n, n + (i + 1) % n, n + i) for i in range(n))
-    return BallBody((bottom, top) + sides, exact_points, G)
+    return BallBody((bottom, top) + sides, exact_points, G, tuple(at))
 
 
 def _dot(a, b):
@@ -148,7 +153,7 @@ def _assignments(body, w, tau):
         h = _dot(w, p)
         fixed.append(-1 if h < tau else 1 if h > tau or h == tau else None)      # ==: two exact equal numbers
         if fixed[-1] is None:
-            group = next((g for g in free if _same_height(w, body.exact[g[0]], body.exact[i])), None)
+            group = next((g for g in free if _same_height(w, body.exact[g[0]], body.exact[i], body.at)), None)
             if group is None:
                 free.append([i])
             else:
@@ -166,14 +171,14 @@ def _assignments(body, w, tau):
     return out
 
 
-def _same_height(w, p, q) -> bool:
+def _same_height(w, p, q, at=()) -> bool:
     """Whether the vertices *p* and *q* (exact triples) have the same height ``w . p = w . q`` for every up
     vector in the balls *w*: ``w . (p - q)``, the difference taken exactly, is an exact 0 (radius 0), which
     ball arithmetic gives only where each term is exact, a component of *w* with a radius multiplied by an
     exact 0 (the two ends of an edge along the tilt axis, ``w = (sin phi, cos phi, 0)``, at the tilt where
     they reach the water together).  Split between the two sides, such a pair would be a plane's cut between
     two points of one height, and the crossing on their edge a division by a ball that holds 0."""
-    d = _dot(w, tuple(coordinate(p[k] - q[k]) for k in range(3)))
+    d = _dot(w, tuple(coordinate(p[k] - q[k], at) for k in range(3)))
     return d.rad() == 0 and d.mid() == 0
 
 
@@ -280,12 +285,14 @@ def _area(cap, u):
 def _draught(body, w, norm, s, whole, c, bits):
     """The offset ``tau`` of the water plane ``w . p = tau`` with ``V(tau) = s V`` as a proven bracket (see the
     module)."""
-    polygon = [(float(x), float(y)) for x, y, z in body.exact if z < 0]
-    length = float(2 * max(p[2] for p in body.exact))
+    points = body.points()
+    n = len(points) // 2                                 # prism_body's lower vertices first
+    polygon = [(float(p[0].mid()), float(p[1].mid())) for p in points[:n]]
+    length = float((points[n][2] - points[0][2]).mid())
     u_float = tuple(float(x.mid()) for x in w)
     t0, _ = float_draught(right_prism(polygon, length), u_float, float(s.mid()))
     target = s * whole
-    heights = [_dot(w, p) for p in body.points()]
+    heights = [_dot(w, p) for p in points]
     size = max(abs(float(h.mid())) for h in heights) + 1
     tau = arb(t0) * norm
     tau = arb(tau.mid())
@@ -387,9 +394,12 @@ def _state(body, w, norm, tau, side, c, G, points):
 # Read off a BallState as the float geometry's FloatingState is read (QUANTITIES), except those taking an extreme
 # over vertices, which take it in ball arithmetic (arb min/max: no comparison of two balls decides).
 
-def _heights(st, select=None):
-    """``u . p - t`` of the vertices (those whose exact z *select* accepts), as balls."""
-    return [_dot(st.u, p) - st.t for p, q in zip(st.vertices, st.exact) if select is None or select(q[2])]
+def _heights(st, base=0):
+    """``u . p - t`` of the vertices as balls: all, or (*base* 1 or -1) those of the base on that side of z (the
+    body centred: a vertex's z is proven positive or negative)."""
+    if base and not all(p[2] > 0 or p[2] < 0 for p in st.vertices):
+        raise Ambiguous("a vertex's base is not proven (its z holds 0)")
+    return [_dot(st.u, p) - st.t for p in st.vertices if base == 0 or (p[2] > 0 if base > 0 else p[2] < 0)]
 
 
 def _least(values):
@@ -403,17 +413,12 @@ def _greatest(values):
     return -_least([-v for v in values])
 
 
-def _end(st, sign):
-    """The exact z of the base on the side *sign* of z."""
-    return max(sign * q[2] for q in st.exact) * sign
-
-
 EXTREMES = {
     "draught": lambda st: -_least(_heights(st)),
-    "top clearance": lambda st: _least(_heights(st, lambda z: z == _end(st, 1))),
-    "upper base above water": lambda st: _least(_heights(st, lambda z: z == _end(st, 1))),
-    "bottom clearance": lambda st: -_greatest(_heights(st, lambda z: z == _end(st, -1))),
-    "lower base above water": lambda st: _greatest(_heights(st, lambda z: z == _end(st, -1))),
+    "top clearance": lambda st: _least(_heights(st, 1)),
+    "upper base above water": lambda st: _least(_heights(st, 1)),
+    "bottom clearance": lambda st: -_greatest(_heights(st, -1)),
+    "lower base above water": lambda st: _greatest(_heights(st, -1)),
     "face clearance": lambda st: EXTREMES["top clearance"](st).min(EXTREMES["bottom clearance"](st)),
     "freeboard": lambda st: _greatest(_heights(st)),
     "stability sign": lambda st: _sign(st.metacentric_height),
@@ -436,16 +441,19 @@ FIELDS = ("immersed volume", "G above water", "B below water", "G above B", "wat
             for i in range(3) for j in range(i, 3)))
 
 
-def ball_body(body, params):
+def ball_body(body, params, extra=None):
     """*body* (a :class:`~symfloat.engine.floating_witness.Body` box, prism or regular prism, a ``Loaded`` or a
-    ``Marked`` one: its direction is read by the split parts alone, which have no ball method) at *params* as a
+    ``Marked`` one: its direction is read by the split parts alone, which have no ball method) at the exact
+    *params* and the balls *extra* (symbol -> arb: a root that sets a dimension, overriding the case's value) as a
     :class:`BallBody`, its vertices exact (Fractions, or SymPy numbers throughout where a dimension or a
-    regular polygon's corner is irrational); ``None`` where a dimension is not a number there (a root sets it)
-    or the body is of another kind (a cylinder)."""
+    regular polygon's corner is irrational or names a root of *extra*); ``None`` where a dimension is fixed by
+    neither or the body is of another kind (a cylinder)."""
     from .floating_witness import Body, Loaded, Marked
     if type(body) not in (Body, Loaded, Marked) or body.kind not in ("box", "prism", "regular"):
         return None
-    at = lambda e: sp.sympify(e).xreplace(params)      # noqa: E731
+    extra = extra or {}
+    known = {k: v for k, v in params.items() if k not in extra}
+    at = lambda e: sp.sympify(e).xreplace(known)      # noqa: E731
     if body.kind == "box":
         a, b, c = (at(x) for x in body.dims)
         polygon, length = [(-a / 2, -b / 2), (a / 2, -b / 2), (a / 2, b / 2), (-a / 2, b / 2)], c
@@ -457,12 +465,13 @@ def ball_body(body, params):
         polygon, length = [(radius * sp.cos(2 * sp.pi * k / n), radius * sp.sin(2 * sp.pi * k / n))
                            for k in range(n)], at(length)
     values = [length, *(x for p in polygon for x in p)]
-    if not all(v.is_number and v.is_real for v in values):
+    named = set().union(*(v.free_symbols for v in values))
+    if not named <= set(extra) or not all(v.is_real is not False for v in values):
         return None
     if all(v.is_Rational for v in values):
         rational = lambda v: Fraction(int(v.p), int(v.q))      # noqa: E731
         polygon, length = [(rational(x), rational(y)) for x, y in polygon], rational(length)
-    return prism_body(polygon, length, getattr(body, "G", None))
+    return prism_body(polygon, length, getattr(body, "G", None), tuple((k, extra[k]) for k in sorted(named, key=str)))
 
 
 def closed_ball(expr, params, extra, bits):
@@ -490,12 +499,11 @@ def quantity_balls(witness, params, extra, body, bits):
         if st is None:
             return None
         return _read_state(witness, st, items, names, params, extra, fine)
-    exact_body = ball_body(body, params)
+    exact_body = ball_body(body, params, extra)
     if exact_body is None:
         return None
     if exact_body.G is not None:
-        exact_body = BallBody(exact_body.faces, exact_body.exact,
-                              tuple(closed_ball(x, params, extra, fine) for x in exact_body.G))
+        exact_body = replace(exact_body, G=tuple(closed_ball(x, params, extra, fine) for x in exact_body.G))
     up = tuple(closed_ball(x, params, extra, fine) for x in _rational_direction(witness.up, params, extra))
     density = _density(witness, params, extra, exact_body, up, fine)
     st = floating_state(exact_body, up, density, bits)
@@ -602,7 +610,7 @@ def _unreadable(quantity) -> str:
 def missing_method(witness, body, case) -> str:
     """Why the floating *witness* has no ball method at *case*, in words, judged before any work; ``""`` where it
     has one: no limit, series or tilt from a reference, a box, prism or regular prism whose dimensions the case
-    fixes or a cylinder whose length it fixes (its radius may be a root), each root an expression, an ``At`` or a
+    or a root fixes or a cylinder whose length the case fixes (its radius may be a root), each root an expression, an ``At`` or a
     ``Root`` without nested roots, each quantity read off the state (:func:`_unreadable`)."""
     from .floating_witness import At, Body, Loaded, Marked, Root
     if witness.limit is not None:
@@ -615,7 +623,9 @@ def missing_method(witness, body, case) -> str:
     if type(body) is Body and body.kind == "cylinder":
         if getattr(witness, "through", None) is not None:
             return "a cut's share of a cylinder"
-        dims = (body.dims[1],)
+        if sp.sympify(body.dims[1]).free_symbols - (set(case.params) - roots):
+            return "a cylinder's length that the case does not fix"
+        dims = ()
     elif type(body) not in (Body, Loaded, Marked) or body.kind not in ("box", "prism", "regular"):
         return {"cylinder": "a cylinder with a given centre of gravity or split parts"}.get(
             body.kind, f"a body of kind {body.kind}")
@@ -623,8 +633,8 @@ def missing_method(witness, body, case) -> str:
         dims = (*(c for p in body.dims[0] for c in p), body.dims[1])
     else:
         dims = body.dims if body.kind == "box" else body.dims[1:]
-    if any(sp.sympify(x).free_symbols - (set(case.params) - roots) for x in dims):
-        return "a dimension that a root sets (no exact vertices)"
+    if any(sp.sympify(x).free_symbols - set(case.params) - roots for x in dims):
+        return "a dimension that neither the case nor a root fixes"
     for _, root in getattr(witness, "roots", ()):
         if isinstance(root, (Root, At)):
             if isinstance(root, Root) and root.roots:
@@ -650,7 +660,6 @@ def _root_balls(witness, case, body, bits):
     float64 root (the first of :data:`ROOT_BRACKETS` whose signs are proven) and narrowed by bisection (:func:`~symfloat.engine.enclosure.sign_change_root`),
     each ``guard`` proven positive there; ``None`` for a root without a rigorous method (a root whose search
     solves nested roots, a derivative by differences)."""
-    from dataclasses import replace
     from .floating_witness import At, Root
     fine = bits + GUARD_BITS
     params, extra, centres = dict(case.params), {}, None
