@@ -574,6 +574,21 @@ def test_irrational_vertices_are_enclosed_and_a_value_off_by_1e_12_refuted(body,
     assert record_decision(_certified(gm.run({"gm": chain(exact + sp.Rational(1, 10 ** 12))})["gm"])) == "refuted"
 
 
+def test_a_dimension_that_a_root_sets_is_enclosed_at_the_root_s_ball():
+    # the box Q x 1 x 1 upright (z up) at s = 1/10, Q < 1: the waterplane Q x 1 (I min = Q^3/12), V = Q s,
+    # B G = (1 - s)/2, so the metacentric height Q^2/(12 s) - (1 - s)/2 vanishes at Q^2 = 6 s (1 - s) = 27/50; the
+    # waterplane's area there is Q = sqrt(27/50)
+    Body, _, _, FloatingRootWitness, _, _, Root = _floating()
+    Q = sp.Symbol("Q", positive=True)
+    edge = FloatingRootWitness(
+        "edge", "the waterplane where the box's metacentric height vanishes", ("A",), (Case({}, label="box"),),
+        body=Body.box(Q, 1, 1), up=(0, 0, 1), density=sp.Rational(1, 10), quantity=measured("waterplane area"),
+        roots=((Q, Root.scan(measured("metacentric height"), Q, sp.Rational(1, 2), sp.Rational(19, 20), 9)),))
+    exact_area = sp.sqrt(sp.Rational(27, 50))
+    assert record_decision(_certified(edge.run({"A": chain(exact_area)})["A"])) == "agrees"
+    assert record_decision(_certified(edge.run({"A": chain(exact_area + sp.Rational(1, 10 ** 12))})["A"])) == "refuted"
+
+
 def test_a_floating_kind_without_a_rigorous_method_keeps_its_former_comparison():
     Body, _, _, _, FloatingWitness, _, _ = _floating()
     psi = sp.Symbol("psi", real=True)
