@@ -6,7 +6,8 @@ from PIL import Image
 
 from symfloat.cli import main
 from symfloat.engine.witness import SectionIntegral
-from symfloat.numerics.bench import DECLARED, methods_for, newton_cotes, run_bench
+from symfloat.errors import CheckFailed
+from symfloat.numerics.bench import DECLARED, Bench, methods_for, newton_cotes, run_bench
 from symfloat.numerics.forms import CATASTROPHIC, STABLE_TOLERANCE, evaluate, forms, scan
 from symfloat.numerics.orders import (HEELS, convergence_witnesses, gauss_legendre_degrees, kink_study,
                                       registry_orders)
@@ -178,10 +179,12 @@ def test_declared_witnesses_are_measured_with_their_own_methods():
     # the heeled metacentre and radius are limits in the tilt (Neville extrapolation): no enclosure, said in words,
     # their methods against the exact reading; every other witness against its 256-bit enclosure, Arb a row
     limits = {"metacentre-heel", "radius-heel"}
-    assert {k: why for k, (_, why) in bench.unenclosed.items()} == {
+    assert {k: why for k, (f, why) in bench.unenclosed.items() if f == "floating bodies by exact clipping"} == {
         f"metazentrum/{w}": "a limit in the tilt (Neville extrapolation: no bound)" for w in limits}
     enclosed = {m.witness for m in ms} - limits
     for name, kind in bench.references.items():    # a formula's reference kinds, from each witness targeting it
+        if not any(name.split("/")[1] in w.targets for w in declared.values()):
+            continue                                # a formula the definition route measures
         kinds = {"exact" if w.name in limits else "Arb, 256 bits" for w in declared.values()
                  if name.split("/")[1] in w.targets and w.name in {m.witness for m in ms}}
         assert kind == " and ".join(sorted(kinds)), (name, kind)
@@ -266,3 +269,28 @@ def test_a_derivations_cost_is_measured_with_its_witnesses_timed_where_they_run(
     row = measure("graefe-s2-volumes-simpson")
     assert row["failures"] == 0 and row["witness_seconds"] and row["cold"] > 0
     assert row["formulas"] == 21
+
+
+def test_the_definition_route_is_a_family_measured_against_its_enclosure(monkeypatch):
+    """Every formula the definition route measures in Graefe §1 (no declared witness targets it) is measured in
+    Arb at 64 and 128 bits and by its definitions at 15 and 30 digits, against its enclosure at 256 bits: each
+    error a proven bound, falling with the precision; an Arb ball moved off the reference stops the bench."""
+    from symfloat.numerics import route_bench
+    from symfloat.numerics.route_bench import ROUTE_FAMILY, bench_route
+    d, _ = load("graefe-s1-prismatoid-volume")
+    bench = Bench()
+    bench_route(d, bench, digits=(15, 30), repeats=1)
+    ms = [m for m in bench.measurements if m.family == ROUTE_FAMILY]
+    formulas = {m.witness for m in ms}
+    assert formulas and all(bench.references[f"{d.id}/{f}"] == "Arb, 256 bits" for f in formulas)
+    assert {m.method for m in ms} == {"Arb ball arithmetic, 64 bits", "Arb ball arithmetic, 128 bits",
+                                      "definitions, 15 digits", "definitions, 30 digits"}
+    worst = {method: max(e for m in ms if m.method == method for e in m.errors.values()) for method in
+             ("definitions, 15 digits", "definitions, 30 digits")}
+    assert worst["definitions, 15 digits"] < 1e-12 and worst["definitions, 30 digits"] < 1e-27
+    assert all(m.proven for m in ms)
+    ball = route_bench.definition_ball
+    monkeypatch.setattr(route_bench, "definition_ball",
+                        lambda e, point, bits: ball(e, point, bits) + (1e-10 if bits == 64 else 0))
+    with pytest.raises(CheckFailed, match="misses the one at 256 bits"):
+        bench_route(d, Bench(), digits=(15,), repeats=1)

@@ -61,7 +61,7 @@ from .relation import boundary_points, inserted, random_points, relation_interva
 from .root_count import count_real_roots
 from .witness import Outcome, Precision, record_agrees, record_decision, undecided_reason
 
-__all__ = ["DefinitionRoute", "definitions", "ROUTE_METHODS"]
+__all__ = ["DefinitionRoute", "NothingToMeasure", "definitions", "ROUTE_METHODS"]
 
 # A defining integral may have a square root vanishing at an endpoint (Euler's ellipse, 1/sqrt(b^2 - y^2));
 # tanh-sinh nodes rounded past it lose half the working digits.  So each precision is trusted to half
@@ -409,6 +409,15 @@ class UncountedRoots(ArithmeticError):
     """A root count at one point that the inclusion discs do not decide: that point is not read."""
 
 
+class NothingToMeasure(ValueError):
+    """Why the definition route measures nothing for a reading, in words; *measurable* false where nothing
+    numeric is left (the members one expression once the definitions are in)."""
+
+    def __init__(self, why: str, measurable: bool = True):
+        super().__init__(why)
+        self.measurable = measurable
+
+
 @dataclass
 class DefinitionRoute:
     """The definition-route witness of one derivation (built by the checker, not declared)."""
@@ -430,26 +439,9 @@ class DefinitionRoute:
         which the certified record carries (the checker gives the other records theirs)."""
         out = Outcome(self.name)
         try:
-            ms = [_carried_out(_expanded(m, self._defs, self._memo)) for m in members(reading)]
-        except (ValueError, NotImplementedError) as exc:     # SymPy cannot carry out a limit, say
-            out.note = f"definition route: not evaluated ({exc})"
-            return out
-        first = ms[0]
-        rest = [m for m in ms[1:] if m != first]
-        if not rest:
-            out.note = ("definition route: with the derivation's definitions inserted the members are one "
-                        "SymPy expression, so nothing is left for a number to check")
-            out.measurable = False
-            return out
-        symbols = set().union(*(sp.sympify(c).free_symbols for m in ms for c in _components(m)))
-        cases = self._cases(symbols, target)
-        if cases is None:
-            out.note = "definition route: no sample point satisfies the derivation's constraints"
-            return out
-        measured = [sp.sympify(c) for c in _components(first)]
-        claims = [[sp.sympify(c) for c in _components(m)] for m in rest]
-        if any(len(claimed) != len(measured) for claimed in claims):
-            out.note = "definition route: not evaluated (members of different shapes)"
+            measured, claims, cases = self.members_at(target, reading)
+        except NothingToMeasure as why:
+            out.note, out.measurable = f"definition route: {why}", why.measurable
             return out
         uncounted = 0
         certified = _certified(measured, claims, cases, allowance)
@@ -504,6 +496,29 @@ class DefinitionRoute:
         if notes:
             out.note = "definition route: " + "; ".join(notes)
         return out
+
+    def members_at(self, target: str, reading):
+        """``(measured, claims, points)``: the components of *reading*'s first member with the derivation's
+        definitions inserted (what is measured), those of each other member (the claims), and the seeded sample
+        points; :class:`NothingToMeasure` says why there is nothing to measure."""
+        try:
+            ms = [_carried_out(_expanded(m, self._defs, self._memo)) for m in members(reading)]
+        except (ValueError, NotImplementedError) as exc:     # SymPy cannot carry out a limit, say
+            raise NothingToMeasure(f"not evaluated ({exc})") from exc
+        first = ms[0]
+        rest = [m for m in ms[1:] if m != first]
+        if not rest:
+            raise NothingToMeasure("with the derivation's definitions inserted the members are one SymPy "
+                                   "expression, so nothing is left for a number to check", measurable=False)
+        symbols = set().union(*(sp.sympify(c).free_symbols for m in ms for c in _components(m)))
+        cases = self._cases(symbols, target)
+        if cases is None:
+            raise NothingToMeasure("no sample point satisfies the derivation's constraints")
+        measured = [sp.sympify(c) for c in _components(first)]
+        claims = [[sp.sympify(c) for c in _components(m)] for m in rest]
+        if any(len(claimed) != len(measured) for claimed in claims):
+            raise NothingToMeasure("not evaluated (members of different shapes)")
+        return measured, claims, cases
 
     def _cases(self, symbols, target):
         if not symbols:

@@ -24,8 +24,8 @@ method that applies to its kind:
 Every witness with a certified method (``enclose``, issue 29) is enclosed in Arb ball arithmetic at
 :data:`REFERENCE_BITS` bits; where every case has a finite enclosure, that enclosure is the reference of all
 its targets, and the witness is also measured in Arb at 64 and 128 bits (:class:`Enclosure`).  A witness of
-such a kind without an enclosure (a limit, a series, a cylinder, a regular prism, a tilt's wedges, split parts,
-a nested root search, finite differences: :func:`no_enclosure`) is recorded with the reason in words
+such a kind without an enclosure (a limit, a series, a tilt's wedges, split parts, a nested root search, finite
+differences: :func:`no_enclosure`) is recorded with the reason in words
 (:attr:`Bench.unenclosed`) and has no Arb rows.
 
 The reference of a targeted formula is that enclosure; without one, the exact value of the formula's valid
@@ -498,11 +498,15 @@ def self_check(did, w, values, reference):
 
 
 def run_bench(selector=None, *, quick=False, progress=None) -> Bench:
-    """Benchmark every witness of the derivations *selector* picks; ``quick``
-    measures fewer methods (15 and 30 digits, three float64 orders, two panel counts)."""
+    """Benchmark every witness of the derivations *selector* picks, and the formulas their definition route
+    measures (:mod:`symfloat.numerics.route_bench`); ``quick`` measures fewer methods (15 and 30 digits, three
+    float64 orders, two panel counts)."""
+    from .route_bench import ROUTE_DIGITS, bench_route
     bench = Bench()
     kwargs = dict(digits=(15, 30), orders=(2, 4, 8), panels=(4, 16), repeats=1) if quick else {}
     for did in select(selector):
         d, _ = load(did)
         bench_derivation(d, bench, progress=progress, **kwargs)
+        bench_route(d, bench, digits=(15, 30) if quick else ROUTE_DIGITS, repeats=1 if quick else 3,
+                    progress=progress)
     return bench

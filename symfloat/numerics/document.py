@@ -12,6 +12,7 @@ derivation is benchmarked without being named here.
 from __future__ import annotations
 
 import math
+from collections import Counter
 from pathlib import Path
 
 import matplotlib.pyplot as plt
@@ -25,6 +26,7 @@ from .forms import CATASTROPHIC, STABLE_TOLERANCE, evaluate, forms, scan
 from .orders import HEELS, PANELS, convergence_witnesses, gauss_legendre_degrees, kink_study, registry_orders
 from .report import (THRESHOLDS, cheapest, family_figure, fingerprint, fmt_err, fmt_proven, fmt_time,
                      method_rows, write_png_if_changed)
+from .route_bench import ROUTE_FAMILY
 
 __all__ = ["generate", "quick_selection"]
 
@@ -78,6 +80,22 @@ def _unenclosed_words(bench, family, ms) -> list:
             f"against the exact reading (else their most precise method) — {reasons}.", ""]
 
 
+def _route_words(bench, ms) -> list:
+    """The paragraph of the definition route: what it measures, and how many formulas have no enclosure, by
+    reason."""
+    formulas = {f"{m.derivation}/{m.witness}" for m in ms}
+    missing = [why for f, why in bench.unenclosed.values() if f == ROUTE_FAMILY]
+    counts = "; ".join(f"{why}: {n}" for why, n in sorted(Counter(missing).items(), key=lambda x: (-x[1], x[0])))
+    words = (f"The route measures every formula no declared witness targets, from the derivation's own "
+             f"definitions at its seeded points (a relation's sides are read elsewhere and not shown here). Arb "
+             f"encloses {len(formulas)} of the {len(formulas) + len(missing)} formulas it measures; each of their "
+             f"methods is measured against the enclosure at 256 bits (its bits are those the route asks for, the "
+             f"integrals' guard bits above them).")
+    if missing:
+        words += f" The other {len(missing)} have no enclosure and are left out here — {counts}."
+    return [words, ""]
+
+
 def _rows(ms):
     return [(r[0], r[1], fmt_err(r[2]), fmt_err(r[3]), fmt_time(r[4]), fmt_proven(r[5], r[1]))
             for r in method_rows(ms)]
@@ -93,7 +111,9 @@ def _section_bench(bench, figures):
              "source's own method is Simpson's rule); exact hull faces and Gauss–Legendre slices for hulls; the "
              "witness's own computation at 15 (float64), 30 and 50 digits for straightedge constructions; the "
              "methods a declared witness of a floating body or a plane figure names (float64 and 40 or 50 digits, "
-             "tied to its limit and series steps). Every witness whose kind has a certified method is enclosed in "
+             "tied to its limit and series steps); the formulas the definition route measures, from the derivation's "
+             "own definitions at its seeded points, in Arb at 64 and 128 bits and by mpmath at 15, 30 and 50 "
+             "digits. Every witness whose kind has a certified method is enclosed in "
              "Arb ball arithmetic (FLINT) at 256 bits, its own rigorous enclosure of the quantity; where every case "
              "has a finite enclosure, that ball is the reference of every method of the witness, and Arb at 64 and "
              "128 bits is a row of its own (its time, and as error its proven width: its radius plus the distance "
@@ -114,14 +134,14 @@ def _section_bench(bench, figures):
              "(Scheeffer's worked examples print four or five digits; the verdict allows for them by the printed "
              "digits), not the method's rounding.", ""]
     head = ("method", "witnesses", "worst rel. error", "median rel. error", "median time", "error proven")
-    for family in dict.fromkeys(FAMILIES.values()):
+    for family in (*dict.fromkeys(FAMILIES.values()), ROUTE_FAMILY):
         ms = [m for m in bench.measurements if m.family == family]
         if not ms:
             continue
         name = f"numerics-{_slug(family)}.png"
         figures[name] = family_figure(family, ms)
         lines += [f"### {family}", "", f"![{family}](figures/{name})", "", _table(head, _rows(ms)), ""]
-        lines += _unenclosed_words(bench, family, ms)
+        lines += _route_words(bench, ms) if family == ROUTE_FAMILY else _unenclosed_words(bench, family, ms)
     lines += ["### Per source", ""]
     for source in dict.fromkeys(m.source for m in bench.measurements):
         ms = [m for m in bench.measurements if m.source == source]
