@@ -589,6 +589,23 @@ def test_a_dimension_that_a_root_sets_is_enclosed_at_the_root_s_ball():
     assert record_decision(_certified(edge.run({"A": chain(exact_area + sp.Rational(1, 10 ** 12))})["A"])) == "refuted"
 
 
+def test_a_nested_root_search_is_enclosed_trial_by_trial():
+    # the box 1 x Q x 1 upright (z up, Q < 1) at density rho: the metacentric height Q^2/(12 rho) - (1 - rho)/2
+    # has its lower zero s0 where s0 (1 - s0) = Q^2/6 (the inner search, at every trial Q); s0 = 1/5 where
+    # Q^2/6 = 4/25, Q = 2 sqrt(6)/5 (the outer search; the case's rho, which the inner search sets, is nominal)
+    Body, _, _, FloatingRootWitness, _, _, Root = _floating()
+    Q, rho, s0 = sp.symbols("Q rho s0", positive=True)
+    lower_zero = Root.scan(measured("metacentric height"), rho, sp.Rational(1, 20), sp.Rational(1, 2), 9)
+    edge = FloatingRootWitness(
+        "edge", "the edge at which the box's lower zero is 1/5", ("Q",), (Case({rho: sp.Rational(1, 2)}, label="box"),),
+        body=Body.box(1, Q, 1), up=(0, 0, 1), density=rho, quantity=Q,
+        roots=((Q, Root.scan(s0 - sp.Rational(1, 5), Q, sp.Rational(4, 5), sp.Rational(99, 100), 5,
+                             roots=((s0, lower_zero),))),))
+    exact_edge = 2 * sp.sqrt(6) / 5
+    assert record_decision(_certified(edge.run({"Q": chain(exact_edge)})["Q"])) == "agrees"
+    assert record_decision(_certified(edge.run({"Q": chain(exact_edge + sp.Rational(1, 10 ** 12))})["Q"])) == "refuted"
+
+
 def test_a_floating_kind_without_a_rigorous_method_keeps_its_former_comparison():
     Body, _, _, _, FloatingWitness, _, _ = _floating()
     psi = sp.Symbol("psi", real=True)

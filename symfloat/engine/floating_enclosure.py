@@ -611,7 +611,7 @@ def missing_method(witness, body, case) -> str:
     """Why the floating *witness* has no ball method at *case*, in words, judged before any work; ``""`` where it
     has one: no limit, series or tilt from a reference, a box, prism or regular prism whose dimensions the case
     or a root fixes or a cylinder whose length the case fixes (its radius may be a root), each root an expression, an ``At`` or a
-    ``Root`` without nested roots, each quantity read off the state (:func:`_unreadable`)."""
+    ``Root`` (nested roots without a guard), each quantity read off the state (:func:`_unreadable`)."""
     from .floating_witness import At, Body, Loaded, Marked, Root
     if witness.limit is not None:
         return "a limit in the tilt (Neville extrapolation: no bound)"
@@ -637,8 +637,8 @@ def missing_method(witness, body, case) -> str:
         return "a dimension that neither the case nor a root fixes"
     for _, root in getattr(witness, "roots", ()):
         if isinstance(root, (Root, At)):
-            if isinstance(root, Root) and root.roots:
-                return "a nested root search"
+            if isinstance(root, Root) and root.roots and root.guard:
+                return "a nested root search with a guard"
             for item in (root.quantity, *(root.guard if isinstance(root, Root) else ())):
                 if _unreadable(item):
                     return _unreadable(item)
@@ -658,8 +658,10 @@ def _root_balls(witness, case, body, bits):
     is known, ``At`` a quantity at other
     parameters, ``Root`` a root of a quantity in a variable, proven by a sign change on a bracket about the
     float64 root (the first of :data:`ROOT_BRACKETS` whose signs are proven) and narrowed by bisection (:func:`~symfloat.engine.enclosure.sign_change_root`),
-    each ``guard`` proven positive there; ``None`` for a root without a rigorous method (a root whose search
-    solves nested roots, a derivative by differences)."""
+    each ``guard`` proven positive there; a ``Root`` with nested ``roots`` the same, its quantity at each trial
+    value (the midpoint of its ball, exact) read with the nested roots enclosed there (:func:`_nested_point`);
+    ``None`` for a root without a rigorous method (a derivative by differences, a nested search that reads a
+    root enclosed before it or has a guard)."""
     from .floating_witness import At, Root
     fine = bits + GUARD_BITS
     params, extra, centres = dict(case.params), {}, None
@@ -685,15 +687,24 @@ def _root_balls(witness, case, body, bits):
                 return None
             extra[symbol] = values[0]
             continue
+        nested = None
         if root.roots:
-            return None
+            nested = _nested_point(root, params, extra, witness, body)
+            if nested is None or root.guard:
+                return None
         if centres is None:
             centres = witness._solve(case.params, body, witness.roots, 15)     # the float64 search, cached
         centre = float(centres[symbol])
         here_params.pop(root.variable, None)
 
-        def f(x, probe=probe, here_params=here_params, here=here, variable=root.variable):
-            values = quantity_balls(probe, here_params, {**here, variable: x}, body, bits)
+        def f(x, probe=probe, here_params=here_params, here=here, variable=root.variable, root=root, nested=nested):
+            if nested is None:
+                values = quantity_balls(probe, here_params, {**here, variable: x}, body, bits)
+            else:               # the nested roots at the trial value, then the quantity there
+                from .witness import Case
+                trial = Case({**nested, variable: _dyadic(x.mid())})
+                solved = _root_balls(replace(probe, roots=root.roots), trial, body, bits)
+                values = None if solved is None else quantity_balls(probe, *solved, body, bits)
             if values is None:
                 raise _NoMethod
             return values[0]
@@ -716,6 +727,40 @@ def _root_balls(witness, case, body, bits):
             raise Ambiguous(f"no proven sign change of {root.quantity} about the float64 root {root.variable}")
         extra[symbol] = value
     return params, extra
+
+
+def _nested_point(root, params, extra, witness, body):
+    """The exact parameters at which a nested search's roots are found at each trial value: the case's, with the
+    root's ``at`` where it is exact; ``None`` where a value of ``at`` or anything the nested search reads (its
+    quantity, the nested roots, the up vector, the density, the body) depends on a root enclosed before it."""
+    from .floating_witness import At, Root
+    known = {k: v for k, v in params.items() if k not in extra}
+    point = dict(known)
+    for k, v in root.at:
+        value = sp.sympify(v).xreplace(known)
+        if value.free_symbols:
+            return None
+        point[k] = value
+    read = [root.quantity, *witness.up, witness.density, *_flat(body.dims)]
+    for _, inner in root.roots:
+        read += ([inner.quantity, *(v for _, v in inner.at), *getattr(inner, "grid", ()), *getattr(inner, "guard", ())]
+                 if isinstance(inner, (Root, At)) else [inner])
+    named = set().union(*(sp.sympify(e).free_symbols for e in read if isinstance(e, (sp.Basic, int, float))))
+    return None if named & set(extra) else point
+
+
+def _flat(items):
+    for x in items:
+        if isinstance(x, (tuple, list)):
+            yield from _flat(x)
+        else:
+            yield x
+
+
+def _dyadic(x: arb) -> sp.Rational:
+    """The exact value of the midpoint *x* (a dyadic number)."""
+    man, exp = x.man_exp()
+    return sp.Integer(int(man)) * sp.Rational(2) ** int(exp)
 
 
 def _secant_root(f, lo, hi, bits):
