@@ -617,3 +617,37 @@ def test_a_floating_kind_without_a_rigorous_method_keeps_its_former_comparison()
     assert limit.enclose(limit.instances[0], 128) is None
     out = limit.run({"m": chain(-sp.Rational(1, 12))})["m"]
     assert out.agrees and not any(r.get("certified") for r in out.records)
+
+
+def test_an_up_vector_of_a_rational_direction_is_made_rational_and_a_trial_value_s_is_left():
+    # (sin 45°, cos 45°, 0) is (1, 1, 0) scaled, so vertex heights are exact; at an exact trial angle of a nested
+    # search (a dyadic with a long denominator) no ratio is rational and SymPy's simplification is not asked
+    from symfloat.engine.floating_enclosure import _rational_direction
+    phi = sp.Symbol("phi")
+    up = (sp.sin(phi), sp.cos(phi), 0)
+    assert _rational_direction(up, {phi: sp.pi / 4}, {}) == (1, 1, 0)
+    assert _rational_direction(up, {phi: sp.pi / 6}, {}) == up        # tan 30° = 1/sqrt 3: irrational
+    trial = sp.Rational(3602879701896397, 2 ** 55)                    # 0.1 as a double, exactly
+    assert _rational_direction(up, {phi: trial}, {}) == up
+
+
+def test_a_derivation_s_enclosures_do_not_depend_on_what_the_process_computed_before():
+    # FLINT keeps pi and its Gauss-Legendre nodes at the highest precision asked so far and rounds later requests
+    # from them; a check empties those caches first, so Graefe §2's certified records come out the same after a
+    # computation at 4096 bits as before it (a test worker runs other tests first)
+    from flint import acb, arb, ctx
+    from symfloat.engine.check import check_derivation
+    from symfloat.registry import load
+
+    def certified_records():
+        d, _ = load("graefe-s2-volumes-simpson")
+        report = check_derivation(d)
+        return [(f["id"], r) for f in report.to_json()["formulas"] for r in f.get("numeric", ())
+                if r.get("certified")]
+    before = certified_records()
+    with ctx.workprec(4096):
+        acb.integral(lambda x, _: (1 - x * x).sqrt(), 0, 1)
+        arb.pi()
+    after = certified_records()
+    assert before and [(n, {k: v for k, v in r.items() if k != "seconds"}) for n, r in before] == \
+        [(n, {k: v for k, v in r.items() if k != "seconds"}) for n, r in after]

@@ -22,8 +22,9 @@ from dataclasses import asdict, dataclass, field
 from functools import cache, lru_cache
 from importlib.resources import files
 
-import sympy as sp
 import fastjsonschema
+import flint
+import sympy as sp
 
 from ..model.claim import as_latex, identical_links, members
 from ..model.derivation import Derivation, Printed
@@ -210,6 +211,9 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
     takes the steps as checked and judges the printed formulas alone (mutation
     tests of a printed formula, whose steps the full check covers)."""
     t0 = time.perf_counter()
+    # FLINT keeps pi and its quadrature nodes at the highest precision asked so far and rounds later requests
+    # from them: emptied, so that a derivation's enclosures do not depend on what the process computed before
+    flint.ctx.cleanup()
     book = book if book is not None else ProofBook.load(d.id)
     domain = Domain(d.domain, tuple(d.constraints))
     from ..registry import cross_use_problems       # the registry imports the derivations: only when checking

@@ -547,8 +547,17 @@ def _rational_direction(up, params, extra):
     ref = next((v for v in values if v != 0), None)
     if ref is None or ref.is_Rational or ref.is_positive is not True and ref.is_negative is not True:
         return up
+    if not all(_near_simple_fraction(float(v / abs(ref))) for v in values):
+        return up       # not worth SymPy's simplification (seconds at a nested search's exact trial values)
     ratios = [sp.nsimplify(sp.simplify(v / abs(ref))) if v != 0 else sp.Integer(0) for v in values]
     return tuple(ratios) if all(r.is_Rational for r in ratios) else up
+
+
+def _near_simple_fraction(x: float) -> bool:
+    """Whether *x* lies within 1e-12 of a fraction of denominator at most 1000: a ratio that may be rational, as
+    the tilts of the sources are (1, tan 30° = 1/sqrt 3 over cos 30°, ...); a number in general lies about 1e-6
+    from the nearest such fraction."""
+    return abs(x - float(Fraction(x).limit_denominator(1000))) <= 1e-12 * max(1.0, abs(x))
 
 
 def _density(witness, params, extra, body, up, fine):
