@@ -30,7 +30,7 @@ from ..model.claim import as_latex, identical_links, members
 from ..model.derivation import Derivation, Printed
 from ..model.evidence_tex import shown_value, tex_error, tex_number, tex_point
 from ..model.relation import is_relation
-from .definitions import DefinitionRoute
+from .definitions import DefinitionRoute, route_readings
 from .print_corrections import print_corrections, smallest_correction
 from .identity import Domain, IdentityResult, check_identity, check_rounded
 from .proofs import ProofBook
@@ -282,17 +282,12 @@ def check_derivation(d: Derivation, key: str = "", *, book: ProofBook | None = N
         for target, out in w.run(readings, allowances).items():
             outcomes.setdefault(target, []).append(out)
     route = DefinitionRoute(d.steps, domain, d.id)       # every formula no declared witness measures
-    targeted = {t for w in d.witnesses for t in w.targets}
-    for p in d.printed:
-        if p.name in targeted or p.lost:
-            continue
-        for target, reading in ((p.name, p.reading),
-                             (p.name + "#corrected", p.erratum.corrected_reading if p.erratum else None)):
-            if is_relation(reading):      # its sides from the definitions, at the relation check's counterexample too
-                check = identities.get(p.name) if target == p.name else corrected.get(p.name)
-                outcomes.setdefault(target, []).append(route.relation_outcome(target, reading, results, check))
-            elif reading is not None:
-                outcomes.setdefault(target, []).append(route.outcome(target, reading, p.tolerance))
+    for p, target, reading in route_readings(d):
+        if is_relation(reading):      # its sides from the definitions, at the relation check's counterexample too
+            check = identities.get(p.name) if target == p.name else corrected.get(p.name)
+            outcomes.setdefault(target, []).append(route.relation_outcome(target, reading, results, check))
+        else:
+            outcomes.setdefault(target, []).append(route.outcome(target, reading, p.tolerance))
     timing["witnesses"] = time.perf_counter() - t_witnesses
     for p in d.printed:          # printed numbers agree with a witness to their printed precision
         if p.tolerance is not None:

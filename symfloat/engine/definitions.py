@@ -61,7 +61,7 @@ from .relation import boundary_points, inserted, random_points, relation_interva
 from .root_count import count_real_roots
 from .witness import Outcome, Precision, record_agrees, record_decision, undecided_reason
 
-__all__ = ["DefinitionRoute", "NothingToMeasure", "definitions", "ROUTE_METHODS"]
+__all__ = ["DefinitionRoute", "NothingToMeasure", "definitions", "route_readings", "ROUTE_METHODS"]
 
 # A defining integral may have a square root vanishing at an endpoint (Euler's ellipse, 1/sqrt(b^2 - y^2));
 # tanh-sinh nodes rounded past it lose half the working digits.  So each precision is trusted to half
@@ -407,6 +407,20 @@ def _measured(expr, point, dps):
 
 class UncountedRoots(ArithmeticError):
     """A root count at one point that the inclusion discs do not decide: that point is not read."""
+
+
+def route_readings(d):
+    """``(printed, target, reading)`` for every reading the definition route measures in derivation *d*: the
+    print (target its name) and the correction of an erratum (``name#corrected``) of each formula that no
+    declared witness targets and whose text is not lost."""
+    targeted = {t for w in d.witnesses for t in w.targets}
+    for p in d.printed:
+        if p.name in targeted or p.lost:
+            continue
+        if p.reading is not None:
+            yield p, p.name, p.reading
+        if p.erratum is not None and p.erratum.corrected_reading is not None:
+            yield p, p.name + "#corrected", p.erratum.corrected_reading
 
 
 class NothingToMeasure(ValueError):

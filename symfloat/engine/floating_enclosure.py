@@ -46,6 +46,7 @@ from functools import lru_cache
 
 import sympy as sp
 from flint import arb, ctx
+from sympy.utilities.iterables import flatten
 
 from ..geometry.floating import _polygon_moments, draught as float_draught, right_prism
 from .enclosure import Unsupported, ball, exact, sign_change_root, working_precision
@@ -672,6 +673,7 @@ def _root_balls(witness, case, body, bits):
     ``None`` for a root without a rigorous method (a derivative by differences, a nested search that reads a
     root enclosed before it or has a guard)."""
     from .floating_witness import At, Root
+    from .witness import Case
     fine = bits + GUARD_BITS
     params, extra, centres = dict(case.params), {}, None
     for symbol, root in witness.roots:
@@ -710,7 +712,6 @@ def _root_balls(witness, case, body, bits):
             if nested is None:
                 values = quantity_balls(probe, here_params, {**here, variable: x}, body, bits)
             else:               # the nested roots at the trial value, then the quantity there
-                from .witness import Case
                 trial = Case({**nested, variable: _dyadic(x.mid())})
                 solved = _root_balls(replace(probe, roots=root.roots), trial, body, bits)
                 values = None if solved is None else quantity_balls(probe, *solved, body, bits)
@@ -750,20 +751,12 @@ def _nested_point(root, params, extra, witness, body):
         if value.free_symbols:
             return None
         point[k] = value
-    read = [root.quantity, *witness.up, witness.density, *_flat(body.dims)]
+    read = [root.quantity, *witness.up, witness.density, *flatten(body.dims)]
     for _, inner in root.roots:
         read += ([inner.quantity, *(v for _, v in inner.at), *getattr(inner, "grid", ()), *getattr(inner, "guard", ())]
                  if isinstance(inner, (Root, At)) else [inner])
     named = set().union(*(sp.sympify(e).free_symbols for e in read if isinstance(e, (sp.Basic, int, float))))
     return None if named & set(extra) else point
-
-
-def _flat(items):
-    for x in items:
-        if isinstance(x, (tuple, list)):
-            yield from _flat(x)
-        else:
-            yield x
 
 
 def _dyadic(x: arb) -> sp.Rational:

@@ -24,8 +24,8 @@ method that applies to its kind:
 Every witness with a certified method (``enclose``, issue 29) is enclosed in Arb ball arithmetic at
 :data:`REFERENCE_BITS` bits; where every case has a finite enclosure, that enclosure is the reference of all
 its targets, and the witness is also measured in Arb at 64 and 128 bits (:class:`Enclosure`).  A witness of
-such a kind without an enclosure (a limit, a series, a tilt's wedges, split parts, a nested root search, finite
-differences: :func:`no_enclosure`) is recorded with the reason in words
+such a kind without an enclosure (a limit, a series, a tilt's wedges, split parts, a nested root search with a
+guard, finite differences: :func:`no_enclosure`) is recorded with the reason in words
 (:attr:`Bench.unenclosed`) and has no Arb rows.
 
 The reference of a targeted formula is that enclosure; without one, the exact value of the formula's valid

@@ -22,7 +22,7 @@ from __future__ import annotations
 from flint import ctx
 
 from ..engine.definition_enclosure import definition_ball
-from ..engine.definitions import DefinitionRoute, NothingToMeasure, _measured
+from ..engine.definitions import DefinitionRoute, NothingToMeasure, _measured, route_readings
 from ..engine.enclosure import Unsupported
 from ..engine.identity import Domain
 from ..errors import CheckFailed
@@ -37,16 +37,11 @@ ROUTE_BITS = (64, 128)
 
 
 def _readings(d):
-    """``(target, formula, reading)`` for every formula the route measures: the valid reading of each printed
-    formula no declared witness targets, under the target name the check gives it (so its points are the
-    check's)."""
-    targeted = {t for w in d.witnesses for t in w.targets}
-    for p in d.printed:
-        if p.name in targeted or p.lost:
-            continue
-        target, reading = ((p.name, p.reading) if p.erratum is None
-                           else (p.name + "#corrected", p.erratum.corrected_reading))
-        if reading is not None and not is_relation(reading):
+    """``(target, formula, reading)`` for every formula the route measures: its valid reading (the correction
+    where an erratum is declared, else the print) under the target name the check gives it, so that its points
+    are the check's; relations left out."""
+    for p, target, reading in route_readings(d):
+        if target == (p.name if p.erratum is None else p.name + "#corrected") and not is_relation(reading):
             yield target, p, reading
 
 
