@@ -21,8 +21,6 @@ import time
 from collections import Counter
 from pathlib import Path
 
-import sympy as sp
-
 from symfloat.engine.check import _check_chain, _substitute
 from symfloat.engine.identity import Domain
 from symfloat.engine.print_corrections import excerpt_math, print_corrections, print_test

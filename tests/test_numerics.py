@@ -1,5 +1,6 @@
 """The numerics benchmark (`symfloat bench`): structure and accuracy, never timings."""
 import math
+import re
 
 import pytest
 from PIL import Image
@@ -11,8 +12,9 @@ from symfloat.numerics.bench import DECLARED, Bench, methods_for, newton_cotes, 
 from symfloat.numerics.forms import CATASTROPHIC, STABLE_TOLERANCE, evaluate, forms, scan
 from symfloat.numerics.orders import (HEELS, convergence_witnesses, gauss_legendre_degrees, kink_study,
                                       registry_orders)
-from symfloat.numerics.report import pareto, write_png_if_changed
-from symfloat.registry import load
+from symfloat.numerics.report import kind, pareto, write_png_if_changed
+from symfloat.registry import ids, load
+from symfloat.report.myst import inline
 
 
 @pytest.fixture(scope="module")
@@ -32,12 +34,35 @@ def test_quick_command_writes_the_document_and_figures(quick_docs):
         row = next(line for line in table.splitlines() if line.startswith("| Arb ball arithmetic, 128 bits |"))
         assert "failed" not in row and "no bound" not in row and row.endswith("| yes |"), (family, row)
         assert "failed" not in table, family
-    assert "a limit in the tilt (Neville extrapolation: no bound): metazentrum/metacentre-heel" in text
+    # the metacentre's limit, named by its derivation's title and what it measures, with the reason in words
+    assert ("| Metacentre and stability function of a rectangular hull | z\\_M = lim m/phi + z\\_G: righting arm of "
+            "the clipped heeled box, extrapolated | a limit in the tilt (Neville extrapolation: no bound) |") in text
     figures = sorted(p.name for p in (quick_docs / "figures").glob("numerics-*.png"))
     assert "numerics-orders.png" in figures and "numerics-section-area-quadrature.png" in figures
     for name in figures:
         assert f"figures/{name}" in text
         assert Image.open(quick_docs / "figures" / name).text["Fingerprint"]
+
+
+def test_the_document_names_sources_derivations_and_formulas_in_words(quick_docs):
+    """A reader of docs/numerics.md (and of the site's page made from it) sees no derivation's id, no witness's
+    or formula's name and no formula in Python's notation: sources by author and title, derivations by title,
+    formulas by their place and their print, typeset (provenance: the quick selection's Graefe §2 and the
+    metacentre, whose formulas, witnesses and closed forms appear in every section)."""
+    text = (quick_docs / "numerics.md").read_text(encoding="utf-8")
+    shown = re.sub(r"\(figures/[^)]*\)", "", text)             # a figure's file name is no text a reader sees
+    assert not [did for did in ids() if did in shown]
+    assert "**" not in shown.replace("**yes**", "").replace("**catastrophic**", "") and "`factor`" not in shown
+    assert "#### V. v. Graefe, *Ueber eine allgemeine Formel zur Bestimmung des Schwerpunctes von Körpern*" in text
+    assert "| §1 prismatoid volume: $I = \\frac{h}{3} \\left\\{ g + G = " in text        # place and print
+    assert "| Sphere, paraboloid, ellipsoid and Simpson's rule from the prismatoid formula | ∫ π (r² - (z - r)²) dz " \
+           "over the diameter | $\\pi \\left(1 - \\left(z - 1\\right)^{2}\\right)$ |" in text
+    assert "factored: $- \\frac{g l \\varrho \\left(\\varrho - 1\\right)}{2}$" in text
+
+
+def test_a_formula_in_a_table_cell_keeps_its_bars_out_of_the_tables_syntax():
+    assert inline("$|x| + \\|v\\|$ and a|b", None, cell=True) == "$\\vert x\\vert  + \\Vert v\\Vert$ and a\\|b"
+    assert kind("definitions, 15 digits") == "the derivation's definitions, 15 digits"
 
 
 def test_figure_with_the_same_fingerprint_is_not_rewritten(tmp_path):

@@ -27,7 +27,7 @@ import symfloat
 from symfloat.report.stamp import digest, stamp_line
 from symfloat.solver import make_scene, solve
 
-from . import predictors, statements
+from . import predictors
 
 __all__ = ["DENSITIES", "RATIOS", "grid_rows", "report_rows", "grid_markdown", "grid_data", "grid_stamp", "code_files"]
 

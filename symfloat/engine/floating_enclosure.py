@@ -613,7 +613,7 @@ def _unreadable(quantity) -> str:
     if missing & set(SPLIT_QUANTITIES):
         return "the split parts of a marked body"
     if "waterplane corners" in missing:
-        return "a count of the waterplane's corners in float points"
+        return "a count of the waterplane's corners, made in floating point"
     return f"a quantity read off no ball state ({', '.join(sorted(missing))})"
 
 

@@ -498,9 +498,11 @@ def draught(poly, u, s, tol=None):
             # Newton has converged: certify a bracket of width tol around it
             tn = t - step
             a, b = max(lo, tn - tol / 2), min(hi, tn + tol / 2)
-            if _volume_and_area(poly, u, a, basis)[0] <= target:
+            # V(lo) <= target <= V(hi) holds already: an end that is lo or hi is not evaluated again (in
+            # float64 one of them always is, t itself, which lies within tol/4 of tn)
+            if a != lo and _volume_and_area(poly, u, a, basis)[0] <= target:
                 lo = a
-            if _volume_and_area(poly, u, b, basis)[0] >= target:
+            if b != hi and _volume_and_area(poly, u, b, basis)[0] >= target:
                 hi = b
             if hi - lo <= tol:
                 t = tn if lo <= tn <= hi else (lo + hi) / 2

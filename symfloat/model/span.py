@@ -21,8 +21,8 @@ from pathlib import Path
 
 from .source import get_source
 
-__all__ = ["Span", "KINDS", "math_intervals", "math_spans", "is_quantitative", "quantitative_sentences", "spans",
-           "line_of", "claim_words"]
+__all__ = ["Span", "KINDS", "math_intervals", "widened", "math_spans", "is_quantitative", "quantitative_sentences",
+           "spans", "line_of", "claim_words"]
 
 KINDS = ("display", "inline", "sentence")
 
@@ -83,6 +83,20 @@ def math_intervals(text: str) -> list[tuple[int, int, str]]:
         at = rest.index("$")
         raise ValueError(f"unpaired $ at line {line_of(text, at)[0]}: {text[at:at + 60]!r}")
     return sorted(found)
+
+
+def widened(a: int, b: int, maths) -> tuple[int, int]:
+    """*a*..*b* widened to the whole math spans of *maths* (:func:`math_intervals`) it begins or ends in.
+
+    >>> widened(3, 7, math_intervals("a $x + y$ b"))
+    (2, 9)
+    """
+    for s, e, _ in maths:
+        if s < a < e:
+            a = s
+        if s < b < e:
+            b = e
+    return a, b
 
 
 @cache

@@ -114,7 +114,7 @@ class Bench:
 
     measurements: list = field(default_factory=list)
     references: dict = field(default_factory=dict)   # "derivation/formula" -> "Arb, 256 bits" | "exact" | ...
-    locators: dict = field(default_factory=dict)     # "derivation/formula" -> source locator
+    witnesses: dict = field(default_factory=dict)    # "derivation/witness" -> what it measures, in words
     unenclosed: dict = field(default_factory=dict)   # "derivation/witness" -> (family, why it has no enclosure)
 
 
@@ -410,6 +410,7 @@ def bench_derivation(d, bench: Bench, digits=DIGITS, orders=FLOAT64_ORDERS, pane
         targets = _witness_targets(d, w, results)
         if not targets:
             continue
+        bench.witnesses[f"{d.id}/{w.name}"] = w.description
         reference, why = _enclosures(w, REFERENCE_BITS) if certified(w) else (None, "")
         if why:
             bench.unenclosed[f"{d.id}/{w.name}"] = (family, why)
@@ -437,8 +438,6 @@ def bench_derivation(d, bench: Bench, digits=DIGITS, orders=FLOAT64_ORDERS, pane
         else:
             for name in targets:
                 _reference(bench, f"{d.id}/{name}", "exact")
-        for name in targets:
-            bench.locators[f"{d.id}/{name}"] = next(p.locator for p in d.printed if p.name == name)
         proven = not missing            # against an enclosure or exact readings: the errors are bounds
         if reference is not None:
             self_check(d.id, w, {_method_name(m): runs[_method_name(m)][0] for m in methods}, reference)

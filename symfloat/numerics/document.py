@@ -12,13 +12,20 @@ derivation is benchmarked without being named here.
 from __future__ import annotations
 
 import math
+import re
 from collections import Counter
+from functools import cache
 from pathlib import Path
 
 import matplotlib.pyplot as plt
 import sympy as sp
 
 from ..files import write_if_changed
+from ..model.source import SOURCES
+from ..model.symbol_names import latex
+from ..model.span import math_intervals, widened
+from ..registry import manifest, statements
+from ..report.myst import inline
 from .bench import FAMILIES, Bench, run_bench
 from .conditioning import CASES, conditioning_markdown, conditioning_rows
 from .discriminant import table_markdown as discriminant_markdown
@@ -65,19 +72,88 @@ def _table(head, rows):
     return "\n".join(out)
 
 
+def _source(key: str) -> str:
+    """A source by its author and title, for a heading."""
+    source = SOURCES[key]
+    return f"{source.author}, *{source.title}*"
+
+
+def _derivation(did: str) -> str:
+    """A derivation by its title (what its notebook's heading says); a reference integrand of the study as
+    such."""
+    return "a reference integrand" if did == "(reference)" else statements(did).title
+
+
+def _cell(text: str) -> str:
+    """Words with their ``$...$`` mathematics for a table cell, whole."""
+    return inline(text, None, cell=True)
+
+
+def _place(key: str) -> str:
+    """The printed formula *key* (``derivation/name``) by its derivation's title and its place in the source;
+    a step that is no printed formula by the title alone."""
+    did, name = key.split("/", 1)
+    p = next((p for p in statements(did).printed if p.name == name.split("#")[0]), None)
+    return _cell(_derivation(did) + ("" if p is None else f", {p.locator}"))
+
+
+_REWRITES = {"factor": "factored", "cancel": "cancelled", "together": "over one denominator", "expand": "expanded"}
+
+
+def _formula(key: str) -> str:
+    """The printed formula *key* (``derivation/name``, ``#corrected`` for its correction) for a table cell:
+    its place in the source and its print, typeset (:func:`_printed`); a step of a derivation that is no
+    printed formula by the derivation's title."""
+    did, name = key.split("/", 1)
+    p = next((p for p in statements(did).printed if p.name == name.split("#")[0]), None)
+    if p is None:
+        return _cell(_derivation(did))
+    corrected = " (as corrected)" if name.endswith("#corrected") else ""
+    return f"{_cell(p.locator)}{corrected}: {inline(_printed(manifest(did).source, p.excerpt), 160, cell=True)}"
+
+
+_TAG = re.compile(r"\\(?:tag|label)\{[^}]*\}")
+_UNESCAPE = re.compile(r"\\([\\`*_{}\[\]()#+\-.!|>])")    # the transcription's Markdown escapes: its words as words
+
+
+def _printed(source: str, excerpt: str) -> str:
+    """The excerpt as the transcription prints it, widened to whole formulas (an excerpt may begin or end
+    inside one, as the edition quotes it), each formula inline: a table cell is no place for a display (its
+    ``\\tag``, which inline mathematics does not take, left out; the place is in the cell already); the words
+    without the transcription's Markdown escapes (:func:`~symfloat.report.myst.inline` escapes them again)."""
+    text = SOURCES[source].text()
+    at = text.find(excerpt)
+    if at < 0:
+        return excerpt
+    maths = _maths(source)
+    a, b = widened(at, at + len(excerpt), maths)
+    out, last = [], a
+    for s, e, kind in maths:
+        if a <= s and e <= b:
+            width = 2 if kind == "display" and text.startswith("$$", s) else 1
+            out += [_UNESCAPE.sub(r"\1", text[last:s]), "$", _TAG.sub("", text[s + width:e - width]).strip(), "$"]
+            last = e
+    return "".join(out + [_UNESCAPE.sub(r"\1", text[last:b])])
+
+
+@cache
+def _maths(source: str):
+    return math_intervals(SOURCES[source].text())
+
+
 def _unenclosed_words(bench, family, ms) -> list:
-    """The paragraph of a family that names its witnesses without an Arb enclosure and why, in words."""
+    """The paragraph of a family that counts its witnesses without an Arb enclosure, and the table that
+    names them and says why, in words."""
     witnesses = {f"{m.derivation}/{m.witness}" for m in ms}
     missing = {k: why for k, (f, why) in bench.unenclosed.items() if f == family and k in witnesses}
     if not missing:
         return [f"Arb encloses all {len(witnesses)} witnesses of this family.", ""]
-    by_reason = {}
-    for key, why in sorted(missing.items()):
-        by_reason.setdefault(why, []).append(key)
-    reasons = "; ".join(f"{why}: {', '.join(keys)}" for why, keys in by_reason.items())
+    rows = [(inline(_derivation(key.split("/")[0]), None, cell=True), inline(bench.witnesses[key], None, cell=True),
+             why) for key, why in sorted(missing.items(), key=lambda kv: (kv[1], kv[0]))]
     return [f"Arb encloses {len(witnesses) - len(missing)} of the {len(witnesses)} witnesses of this family. "
             f"The other {len(missing)} have no rigorous method, so no Arb rows, and their methods are measured "
-            f"against the exact reading (else their most precise method) — {reasons}.", ""]
+            f"against the exact reading (else their most precise method):", "",
+            _table(("derivation", "what the witness measures", "why it has no enclosure"), rows), ""]
 
 
 def _route_words(bench, ms) -> list:
@@ -139,18 +215,18 @@ def _section_bench(bench, figures):
         if not ms:
             continue
         name = f"numerics-{_slug(family)}.png"
-        figures[name] = family_figure(family, ms)
+        figures[name] = family_figure(family, ms, "formula" if family == ROUTE_FAMILY else "witness")
         lines += [f"### {family}", "", f"![{family}](figures/{name})", "", _table(head, _rows(ms)), ""]
         lines += _route_words(bench, ms) if family == ROUTE_FAMILY else _unenclosed_words(bench, family, ms)
     lines += ["### Per source", ""]
     for source in dict.fromkeys(m.source for m in bench.measurements):
         ms = [m for m in bench.measurements if m.source == source]
-        lines += [f"#### {source}", "", _table(head, _rows(ms)), ""]
+        lines += [f"#### {_source(source)}", "", _table(head, _rows(ms)), ""]
     lines += ["### Cheapest method per formula", "",
-              "The fastest measurement (method and witness) whose relative error is within 1e-12 and 1e-30 "
+              "The fastest method whose relative error is within 1e-12 and 1e-30 "
               "(methods compared by their median time over the witness family; among those within a factor 2 "
               "of the fastest, the lowest precision and fewest nodes, so that timing noise does not change the "
-              "choice); the time shown is the witness's own; "
+              "choice); the time shown is that of the witness whose method it is; "
               "'none' when no method reaches it (float64-only witnesses, or a 100-digit reference that is itself "
               "the only run at that precision).", ""]
     best = {t: cheapest(bench, t) for t in THRESHOLDS}
@@ -159,12 +235,12 @@ def _section_bench(bench, figures):
                                   for n in m.errors))
         rows = []
         for key in keys:
-            cells = [key, bench.locators.get(key, ""), bench.references.get(key, "")]
+            cells = [_formula(key), bench.references.get(key, "")]
             for t in THRESHOLDS:
                 b = best[t][key]
-                cells.append("none" if b is None else f"{b[0]} ({b[1]}, {fmt_time(b[2])})")
+                cells.append("none" if b is None else f"{b[0]}, {fmt_time(b[2])}")
             rows.append(cells)
-        lines += [f"#### {source}", "", _table(("formula", "locator", "reference", "≤ 1e-12", "≤ 1e-30"), rows), ""]
+        lines += [f"#### {_source(source)}", "", _table(("formula", "reference", "≤ 1e-12", "≤ 1e-30"), rows), ""]
     return lines
 
 
@@ -209,12 +285,13 @@ def _section_orders(selector, figures, progress, quick):
              _table(("nodes n", "highest degree integrated exactly (50 digits)", "theory 2n − 1"),
                     [(n, k, 2 * n - 1) for n, k in degrees]), "",
              "### The registry's convergence witnesses", "",
-             _table(("derivation", "witness", "integrand", "Simpson: theory", "Simpson: measured",
+             _table(("derivation", "what the witness measures", "Simpson: theory", "Simpson: measured",
                      "trapezoid (theory 2): measured"),
-                    [(c[0], c[1], c[2], c[3], f"{c[4]:.2f}", _fo(c[5])) for c in conv]), "",
+                    [(_cell(_derivation(c[0])), _cell(c[2]), c[3], f"{c[4]:.2f}", _fo(c[5])) for c in conv]), "",
              "### Simpson and trapezoid on every quadrature witness's integrand (first case)", "",
-             _table(("derivation", "witness", "integrand", "theory", "Simpson", "trapezoid"),
-                    [(r.derivation, r.witness, f"`{r.integrand}`", r.theory, _fo(r.simpson), _fo(r.trapezoid))
+             _table(("derivation", "what the witness measures", "integrand", "theory", "Simpson", "trapezoid"),
+                    [(_cell(_derivation(r.derivation)), _cell(r.measures), _cell(f"${r.integrand}$"), _cell(r.theory),
+                      _fo(r.simpson), _fo(r.trapezoid))
                      for r in rows]), "",
              "### Kinks: the water plane passing a vertex", "",
              "A unit cube turned by a rational rotation; its displacement below a draught by quadrature of the "
@@ -256,26 +333,28 @@ def _section_forms(selector, progress):
         for label, (e, p) in r.naive.items():
             lost = max(0.0, math.log10(e / 2.0 ** -53)) if e > 0 else 0.0
             st = r.stable.get(label)
-            rows.append((f.name, f.locator, label, fmt_err(e), f"{lost:.1f}",
+            rows.append((f.name, _place(f.locator), label, fmt_err(e), f"{lost:.1f}",
                          "**yes**" if e > CATASTROPHIC else "no",
                          ", ".join(f"{v:.17g}" for v in p) if p else "",
                          f.stable_text or "—", fmt_err(st[0]) if st else "—"))
-    lines += [_table(("form", "source", "sweep", "worst rel. error (printed)", "digits lost", "catastrophic",
+    lines += [_table(("form", "where", "sweep", "worst rel. error (printed)", "digits lost", "catastrophic",
                       "worst at", "stable form", "worst rel. error (stable)"), rows), ""]
     progress("stiff cases: scanning every closed form in the density")
     found = scan(selector)
     flagged = [r for r in found if r.worst > CATASTROPHIC]
     lines += ["### Every closed form in the density, found in the derivations", "",
-              f"All {len(found)} distinct closed forms in the density (s, rho) among the valid readings of the "
-              "derivations (with derived quantities inserted, as the library stores them: SymPy distributes "
-              "rational factors, so b(1 - s)/2 is held as b/2 - b s/2), evaluated with the density 1e-15 ... 1e-1 "
+              f"All {len(found)} distinct closed forms in the density ($s$, $\\varrho$) among the valid readings "
+              "of the derivations (with derived quantities inserted, as the library stores them: SymPy distributes "
+              "rational factors, so $b(1 - s)/2$ is held as $b/2 - bs/2$), evaluated with the density 1e-15 … 1e-1 "
               "from 0 and from 1 and the other parameters at the middle of their sampling intervals. "
               f"{len(found) - len(flagged)} lose at most 6 digits; the {len(flagged)} below lose more, and the first "
               "of SymPy's factor, cancel, together, expand that stays within the stable tolerance is given.", "",
               _table(("derivation", "formula", "form as stored", "worst rel. error", "at density", "stable rewrite",
                       "its worst rel. error"),
-                     [(r.derivation, r.formula, f"`{sp.sstr(r.expr)}`", fmt_err(r.worst), f"{r.at:.17g}",
-                       r.rewrite and f"`{r.rewrite}`: `{sp.sstr(getattr(sp, r.rewrite)(r.expr))}`" or "none found",
+                     [(_cell(_derivation(r.derivation)), _formula(f"{r.derivation}/{r.formula}"),
+                       _cell(f"${latex(r.expr)}$"), fmt_err(r.worst), f"{r.at:.17g}",
+                       r.rewrite and _cell(f"{_REWRITES[r.rewrite]}: ${latex(getattr(sp, r.rewrite)(r.expr))}$")
+                       or "none found",
                        fmt_err(r.rewrite_worst) if r.rewrite else "—") for r in flagged]), ""]
     return lines
 
@@ -293,7 +372,7 @@ def generate(docs=Path("docs"), *, quick=False, progress=lambda msg: None) -> li
         seen = {(m.derivation, m.witness) for m in bench.measurements}
         bench.measurements += [m for m in part.measurements if (m.derivation, m.witness) not in seen]
         bench.references.update(part.references)
-        bench.locators.update(part.locators)
+        bench.witnesses.update(part.witnesses)
         bench.unenclosed.update(part.unenclosed)
     figures = {}
     lines = ["# Numerics of the witnesses", "",

@@ -29,6 +29,7 @@ import sympy as sp
 from ..engine.quadrature import composite_simpson, composite_trapezoid
 from ..engine.witness import ConvergenceOrder, PlaneSections, SectionIntegral
 from ..geometry.convex import hull_volume_centroid, section_area, section_polygon
+from ..model.symbol_names import latex
 from ..registry import load, select
 
 __all__ = ["OrderRow", "fit_order", "registry_orders", "convergence_witnesses", "gauss_legendre_degrees",
@@ -59,27 +60,28 @@ class OrderRow:
 
     derivation: str
     witness: str
-    integrand: str
+    integrand: str                # TeX
     simpson: float | None
     trapezoid: float | None
     theory: str
     simpson_errors: list
     trapezoid_errors: list
+    measures: str = ""            # what the witness measures, in words
 
 
 def _theory(expr, var, lo, hi):
     if expr.is_polynomial(var):
         deg = sp.degree(expr, var)
         return (f"polynomial of degree {deg}: Simpson exact" + ("" if deg <= 3 else " only up to degree 3")
-                + (", trapezoid exact" if deg <= 1 else ", trapezoid h^2"))
+                + (", trapezoid exact" if deg <= 1 else ", trapezoid $h^2$"))
     period = sp.periodicity(expr, var)
     if period and ((hi - lo) / period).is_integer:
         return "periodic over whole periods: both rules converge geometrically"
     roots = any(p.exp == sp.Rational(1, 2) for p in expr.atoms(sp.Pow))
     ends = [sp.simplify(expr.subs(var, v)) for v in (lo, hi)]
     if roots and any(e == 0 for e in ends):
-        return "square-root zero at an end: h^1.5 for both rules"
-    return "smooth: Simpson h^4, trapezoid h^2"
+        return "square-root zero at an end: $h^{1.5}$ for both rules"
+    return "smooth: Simpson $h^4$, trapezoid $h^2$"
 
 
 def _integrand(w, case):
@@ -93,16 +95,17 @@ def _integrand(w, case):
     return w.width.xreplace(at), w.across, lo, hi
 
 
-def _order_row(did, name, expr, var, lo, hi, panels):
+def _order_row(did, name, expr, var, lo, hi, panels, measures=""):
     with mpmath.workdps(DPS):
         f = sp.lambdify(var, expr, "mpmath")
         a, b = (mpmath.mpf(sp.N(v, DPS + 10)) for v in (lo, hi))
         exact = mpmath.quad(f, [a, b], method="tanh-sinh")
         errs = {rule: [abs(rule(f, a, b, n) - exact) / abs(exact) for n in panels]
                 for rule in (composite_simpson, composite_trapezoid)}
-    return OrderRow(did, name, sp.sstr(expr), fit_order(panels, errs[composite_simpson]),
+    return OrderRow(did, name, latex(expr), fit_order(panels, errs[composite_simpson]),
                     fit_order(panels, errs[composite_trapezoid]), _theory(expr, var, lo, hi),
-                    [float(e) for e in errs[composite_simpson]], [float(e) for e in errs[composite_trapezoid]])
+                    [float(e) for e in errs[composite_simpson]], [float(e) for e in errs[composite_trapezoid]],
+                    measures or name)
 
 
 def registry_orders(selector=None, panels=PANELS) -> list[OrderRow]:
@@ -113,7 +116,7 @@ def registry_orders(selector=None, panels=PANELS) -> list[OrderRow]:
         d, _ = load(did)
         for w in d.witnesses:
             if isinstance(w, (SectionIntegral, PlaneSections)):
-                rows.append(_order_row(d.id, w.name, *_integrand(w, w.instances[0]), panels))
+                rows.append(_order_row(d.id, w.name, *_integrand(w, w.instances[0]), panels, w.description))
     y = sp.Symbol("y")
     rows.append(_order_row("(reference)", "exponential", sp.exp(y), y, 0, 1, panels))
     rows.append(_order_row("(reference)", "circle chord", 2 * sp.sqrt(1 - y ** 2), y, -1, 1, panels))

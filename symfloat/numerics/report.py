@@ -129,6 +129,8 @@ def kind(method: str) -> str:
                 "exact hull", "slices", "Arb ball arithmetic"):
         if method.startswith(key):
             return key.rstrip("=").replace(" n", " float64")
+    if method.startswith("definitions, "):          # the definition route: the derivation's definitions by mpmath
+        return f"the derivation's definitions, {method.removeprefix('definitions, ')}"
     return f"own computation, {method}"
 
 
@@ -155,8 +157,8 @@ def write_png_if_changed(path, fig, fp: str) -> bool:
     return True
 
 
-def family_figure(family, measurements):
-    """Error against time for one witness family: faint points per witness and
+def family_figure(family, measurements, unit="witness"):
+    """Error against time for one witness family: faint points per witness (per *unit*) and
     method (worst error over its formulas), large markers per method (median
     time, median error, a line up to the worst error), the Pareto front of the
     large markers."""
@@ -184,7 +186,7 @@ def family_figure(family, measurements):
     ax.set_ylim(FLOOR / 10, 10)
     ax.axhline(1e-12, color="grey", lw=0.5)
     ax.axhline(1e-30, color="grey", lw=0.5)
-    ax.set_xlabel("wall time per witness (s; large markers: median over the family)")
+    ax.set_xlabel(f"wall time per {unit} (s; large markers: median over the family)")
     ax.set_ylabel(f"relative error (large markers: median, line up to the worst; exact at {FLOOR:g})")
     ax.set_title(f"{family}: error against run time")
     ax.legend(fontsize=7, loc="upper right")

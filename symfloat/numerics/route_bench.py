@@ -88,7 +88,6 @@ def bench_route(d, bench: Bench, digits=ROUTE_DIGITS, repeats=3, progress=None) 
             continue
         refs = [_vector(v) for v in reference]
         bench.references[key] = f"Arb, {REFERENCE_BITS} bits"
-        bench.locators[key] = p.locator
         for bits in ROUTE_BITS:
             values, seconds = _timed(lambda bits=bits: _balls(measured, points, bits), repeats)
             if values is not None and not all(_meet(a, b) for v, r in zip(values, reference) for a, b in zip(v, r)):

@@ -24,7 +24,7 @@ from functools import lru_cache
 from ..registry import statements
 from ..model.erratum import apparatus
 from ..model.source import Source
-from ..model.span import math_intervals
+from ..model.span import math_intervals, widened
 from ..report.labels import sections
 from ..report.ledger import REASONS, account, waivers
 from ..report.witness_words import error_cells
@@ -86,16 +86,6 @@ def notebook_anchor(derivation: str, cell: str) -> str:
     return make_id(cell_label(derivation, cell))
 
 
-def _widened(a: int, b: int, maths) -> tuple[int, int]:
-    """*a*..*b* widened to the whole math spans it begins or ends in."""
-    for s, e, _ in maths:
-        if s < a < e:
-            a = s
-        if s < b < e:
-            b = e
-    return a, b
-
-
 @lru_cache(maxsize=8)
 def _maths(text: str) -> tuple[tuple[int, int, str], ...]:
     """The math spans of *text* (:func:`math_intervals`), found once per text: a notebook's page quotes its
@@ -111,7 +101,7 @@ def quotes(text: str, formulas) -> list[tuple[int, int, str]]:
         at = text.find(f["printed"])
         if at < 0:
             raise ValueError(f"{f['id']}: the printed excerpt is not in the transcription")
-        out.append((*_widened(at, at + len(f["printed"]), maths), f["id"]))
+        out.append((*widened(at, at + len(f["printed"]), maths), f["id"]))
     return out
 
 
@@ -133,7 +123,7 @@ def places(text: str, fault: str, quote: tuple[int, int]) -> list[tuple[int, int
     if not fault:
         return []
     maths = _maths(text)
-    return [_widened(m.start(), m.end(), maths) for m in re.finditer(re.escape(fault), text)
+    return [widened(m.start(), m.end(), maths) for m in re.finditer(re.escape(fault), text)
             if not quote[0] <= m.start() < quote[1]]
 
 

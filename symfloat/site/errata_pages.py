@@ -9,11 +9,10 @@ evidence and links to the passage in the annotated edition and to the derivation
 from __future__ import annotations
 
 import html
-import re
 
 from ..model.erratum import APPARATUS, apparatus
-from ..model.evidence_tex import spans
 from ..model.source import SOURCES
+from ..report.myst import inline
 from .edition import (EVIDENCE_WORDS, badge, correction_html, formula_anchor, notebook_anchor, quotes, reason_of,
                       witness_line)
 from .records import Records, slug
@@ -78,26 +77,7 @@ def _label(facet: str, value: str) -> str:
 def _line(e: dict) -> str:
     author = SOURCES[e["source"]].author.split()[-1]
     return (f"- [{author}, {e['locator']}]({slug(e['id'])}.md) — {e['kind']}, {e['confidence']} confidence: "
-            f"{_plain(reason_of(e).rstrip('.'))}")
-
-
-_MARKDOWN = re.compile(r"([\\`*_{}\[\]<>#|$])")
-
-
-def _plain(text: str, limit: int = 160) -> str:
-    """Prose with its ``$...$`` mathematics for a MyST list line: the words' Markdown special characters
-    escaped, the math kept for MyST's dollar math; cut after *limit* characters, never inside a formula."""
-    out, length = [], 0
-    for kind, piece in spans(text):
-        cut = length + len(piece) > limit
-        if kind == "text":
-            out.append(_MARKDOWN.sub(r"\\\1", piece[:limit - length] if cut else piece))
-        elif not cut:
-            out.append(f"${piece}$")
-        if cut:
-            return "".join(out).rstrip() + "…"
-        length += len(piece)
-    return "".join(out)
+            f"{inline(reason_of(e).rstrip('.'))}")
 
 
 def facet_pages(records: Records) -> dict[str, str]:
