@@ -57,6 +57,15 @@ def test_a_float_is_its_exact_binary_value():
         assert b.overlaps(arb("0.1000000000000000055511151231257827021181583404541015625"))
 
 
+def test_a_float_of_60_digits_is_a_ball_of_its_60_digits():
+    # a root a case gives at 60 digits (Scheeffer X's slope at the root of (171)): its 202-bit binary value at
+    # 160 bits, not rounded to a double where the expression was compiled (a ball 1.1e-16 wide before)
+    v = sp.Float("0.837010147138576977603184974107131203016108675526823193618151", 60)
+    b = ball(-v, 160)
+    with working_precision(256):
+        assert b.rad() < arb(2) ** -150 and b.overlaps(-arb("0.837010147138576977603184974107131203016108675526823193618151"))
+
+
 def test_an_unsupported_node_is_named():
     with pytest.raises(Unsupported, match="Piecewise"):
         integral(sp.Piecewise((x, x > 0), (0, True)), x, -1, 1, 64)
@@ -509,7 +518,6 @@ def test_a_cylinder_quantity_is_enclosed_and_a_value_off_by_1e_12_refuted():
 
 def test_a_cylinder_s_density_threshold_and_tilted_equilibrium_are_proven_roots():
     Body, _, _, FloatingRootWitness, _, _, Root = _floating()
-    from symfloat.engine.measured import measured
     rho, s0 = sp.symbols("rho s0", positive=True)
     threshold = FloatingRootWitness(
         "threshold", "the lower zero of the upright cylinder's metacentric height", ("s0",), (Case({}, label="2r = L"),),
@@ -604,6 +612,21 @@ def test_a_nested_root_search_is_enclosed_trial_by_trial():
     exact_edge = 2 * sp.sqrt(6) / 5
     assert record_decision(_certified(edge.run({"Q": chain(exact_edge)})["Q"])) == "agrees"
     assert record_decision(_certified(edge.run({"Q": chain(exact_edge + sp.Rational(1, 10 ** 12))})["Q"])) == "refuted"
+
+
+def test_the_waterplanes_corners_are_counted_in_balls_where_no_vertex_may_lie_on_the_plane():
+    # the unit cube, corner up (1, 1, 1): the plane of s = 1/2 through the centre cuts six edges (the regular
+    # hexagon), that of s = 1/48 three (a triangle round the lowest corner: volume h^3 sqrt 3 / 2 below it);
+    # at s = 1/6 the plane passes through three vertices exactly: no count, undecided
+    Body, _, _, _, FloatingWitness, _, _ = _floating()
+    corners = FloatingWitness("corners", "corners of the waterplane, corner up", ("n",),
+                              (Case({}, label="s = 1/2"), Case({}, label="s = 1/48")), body=Body.box(1, 1, 1),
+                              up=(1, 1, 1), density=sp.Symbol("s"), quantity=measured("waterplane corners"))
+    at = [Case({sp.Symbol("s"): sp.Rational(1, 2)}, label="s = 1/2"),
+          Case({sp.Symbol("s"): sp.Rational(1, 48)}, label="s = 1/48")]
+    assert [corners.enclose(case, 128) for case in at] == [6, 3]
+    with pytest.raises(Unsupported, match="may pass through a vertex"):
+        corners.enclose(Case({sp.Symbol("s"): sp.Rational(1, 6)}, label="s = 1/6"), 128)
 
 
 def test_a_floating_kind_without_a_rigorous_method_keeps_its_former_comparison():

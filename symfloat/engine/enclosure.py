@@ -3,8 +3,9 @@
 :func:`ball` walks a closed SymPy expression (its symbols replaced by numbers) over a whitelist of node
 types and evaluates it in complex ball arithmetic (``acb``) at ``prec`` bits: the ball it returns contains
 the exact value.  The nodes: ``Integer``, ``Rational`` (exact numerator over exact denominator), ``Float``
-(its **exact binary value**, the number SymPy holds: a decimal written in a formula is the print's, and the
-print's own rounding is the allowance its witness gives it, not part of the enclosure), ``pi``, ``E``,
+(its **binary value**, the number SymPy holds, rounded once at the working precision, so exact wherever that holds
+its mantissa: a decimal written in a formula is the print's, and the print's own rounding is the allowance its
+witness gives it, not part of the enclosure; a root a case gives at 60 digits is a ball of its 60 digits), ``pi``, ``E``,
 ``I``, ``Add``, ``Mul``, ``Pow`` (any exponent; an integer power is exact up to rounding, a half power a
 square root, another the principal branch ``exp(t log b)``), ``exp``, ``log``, ``sin``, ``cos``, ``tan``,
 ``cot`` (a ball that holds a pole gives a non-finite one), ``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``,
@@ -155,10 +156,10 @@ def _constant(e):
     that precision, kept for the calls at the same precision (an integrand is evaluated thousands of times)."""
     if isinstance(e, sp.Rational):           # Integer too: an exact integer, or p / q rounded once
         make = lambda: acb(exact(e))  # noqa: E731
-    elif isinstance(e, sp.Float):
+    elif isinstance(e, sp.Float):            # a dyadic number, rounded once at the working precision
         sign, man, exp, _ = e._mpf_
-        value = arb(-int(man) if sign else int(man)) * arb(2) ** int(exp)     # exact: a dyadic number
-        make = lambda: acb(value)  # noqa: E731
+        mantissa, exp = -int(man) if sign else int(man), int(exp)
+        make = lambda: acb(arb(mantissa) * arb(2) ** exp)  # noqa: E731
     elif e is sp.pi:
         make = lambda: acb(arb.pi())  # noqa: E731
     elif e is sp.E:

@@ -246,7 +246,8 @@ class BallState:
     witness reads: ``u`` unit up, ``t`` the water plane ``u . p = t``, ``volume``, ``B``, ``G``,
     ``waterplane_area``, ``waterplane_centroid``, ``tensor`` (in ``basis``), ``I_min``, ``I_max``,
     ``potential`` = u . (G - B), ``metacentric_height`` = I_min / volume - potential; ``vertices`` the body's
-    (balls) and ``exact`` (Fractions)."""
+    (balls) and ``exact`` (Fractions); ``corners`` the number of the waterplane's corners, where the water plane
+    is proven to pass through no vertex (each edge it crosses is then one corner), else ``None``."""
 
     u: tuple
     t: arb
@@ -263,6 +264,7 @@ class BallState:
     metacentric_height: arb
     vertices: tuple
     exact: tuple
+    corners: int | None = None
 
 
 def _volume_below(body, w, tau, c, side):
@@ -362,9 +364,11 @@ def floating_state(body, up, s, bits) -> BallState:
         G = tuple(c[k] + moment[k] / whole for k in range(3)) if body.G is None else tuple(body.G)
         tau = _draught(body, w, norm, s, whole, c, bits)
         states = _realised(lambda side: _state(body, w, norm, tau, side, c, G, points), _assignments(body, w, tau))
-        names = [f.name for f in fields(BallState)]
+        apart = all(h < tau or h > tau for h in (_dot(w, p) for p in points))   # no vertex on the plane
+        names = [f.name for f in fields(BallState) if f.name != "corners"]
         return BallState(**{name: _joined([getattr(st, name) for st in states]) if name not in ("vertices", "exact")
-                            else getattr(states[0], name) for name in names})
+                            else getattr(states[0], name) for name in names},
+                         corners=states[0].corners if apart and len(states) == 1 else None)
 
 
 def _state(body, w, norm, tau, side, c, G, points):
@@ -388,7 +392,7 @@ def _state(body, w, norm, tau, side, c, G, points):
     potential = _dot(u, tuple(G[k] - B[k] for k in range(3)))
     I_min = mean - rad
     return BallState(u, t, volume, B, G, area, centroid, J, (e1, e2), I_min, mean + rad, potential,
-                     I_min / volume - potential, tuple(points), body.exact)
+                     I_min / volume - potential, tuple(points), body.exact, len(cap))
 
 
 # ---- the floating witnesses' certified method: their quantities at a case as balls ----------------------------
@@ -401,6 +405,13 @@ def _heights(st, base=0):
     if base and not all(p[2] > 0 or p[2] < 0 for p in st.vertices):
         raise Ambiguous("a vertex's base is not proven (its z holds 0)")
     return [_dot(st.u, p) - st.t for p in st.vertices if base == 0 or (p[2] > 0 if base > 0 else p[2] < 0)]
+
+
+def _corners(st):
+    """The number of the waterplane's corners, exact: where the water plane is proven to pass through no vertex."""
+    if getattr(st, "corners", None) is None:
+        raise Ambiguous("the water plane may pass through a vertex: its corners are not counted")
+    return arb(st.corners)
 
 
 def _least(values):
@@ -423,6 +434,7 @@ EXTREMES = {
     "face clearance": lambda st: EXTREMES["top clearance"](st).min(EXTREMES["bottom clearance"](st)),
     "freeboard": lambda st: _greatest(_heights(st)),
     "stability sign": lambda st: _sign(st.metacentric_height),
+    "waterplane corners": lambda st: _corners(st),
     "stable": lambda st: (1 + _sign(st.metacentric_height)) / 2,
 }
 
@@ -612,8 +624,6 @@ def _unreadable(quantity) -> str:
         return "a tilt's wedges from a reference position"
     if missing & set(SPLIT_QUANTITIES):
         return "the split parts of a marked body"
-    if "waterplane corners" in missing:
-        return "a count of the waterplane's corners, made in floating point"
     return f"a quantity read off no ball state ({', '.join(sorted(missing))})"
 
 
