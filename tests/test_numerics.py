@@ -14,7 +14,7 @@ from symfloat.numerics.orders import (HEELS, convergence_witnesses, gauss_legend
                                       registry_orders)
 from symfloat.numerics.report import kind, pareto, write_png_if_changed
 from symfloat.registry import ids, load
-from symfloat.report.myst import inline
+from symfloat.model.myst import inline
 
 
 @pytest.fixture(scope="module")

@@ -25,7 +25,7 @@ from ..model.source import SOURCES
 from ..model.symbol_names import latex
 from ..model.span import math_intervals, widened
 from ..registry import manifest, statements
-from ..report.myst import inline
+from ..model.myst import inline
 from .bench import FAMILIES, Bench, run_bench
 from .conditioning import CASES, conditioning_markdown, conditioning_rows
 from .discriminant import table_markdown as discriminant_markdown

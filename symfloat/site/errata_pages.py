@@ -12,7 +12,7 @@ import html
 
 from ..model.erratum import APPARATUS, apparatus
 from ..model.source import SOURCES
-from ..report.myst import inline
+from ..model.myst import inline
 from .edition import (EVIDENCE_WORDS, badge, correction_html, formula_anchor, notebook_anchor, quotes, reason_of,
                       witness_line)
 from .records import Records, slug

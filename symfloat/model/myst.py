@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 
-from ..model.evidence_tex import spans
+from .evidence_tex import spans
 
 __all__ = ["inline"]
 
