@@ -3,9 +3,10 @@
 :func:`ball` walks a closed SymPy expression (its symbols replaced by numbers) over a whitelist of node
 types and evaluates it in complex ball arithmetic (``acb``) at ``prec`` bits: the ball it returns contains
 the exact value.  The nodes: ``Integer``, ``Rational`` (exact numerator over exact denominator), ``Float``
-(its **binary value**, the number SymPy holds, rounded once at the working precision, so exact wherever that holds
-its mantissa: a decimal written in a formula is the print's, and the print's own rounding is the allowance its
-witness gives it, not part of the enclosure; a root a case gives at 60 digits is a ball of its 60 digits), ``pi``, ``E``,
+(its **binary value**, the number SymPy holds, rounded once at the working precision, so exact wherever
+that holds its mantissa: a decimal written in a formula is the print's, and the print's own rounding is the
+allowance its witness gives it, not part of the enclosure; a root a case gives at 60 digits is a ball of its
+60 digits), ``pi``, ``E``,
 ``I``, ``Add``, ``Mul``, ``Pow`` (any exponent; an integer power is exact up to rounding, a half power a
 square root, another the principal branch ``exp(t log b)``), ``exp``, ``log``, ``sin``, ``cos``, ``tan``,
 ``cot`` (a ball that holds a pole gives a non-finite one), ``asin``, ``acos``, ``atan``, ``sinh``, ``cosh``,

@@ -409,7 +409,7 @@ def _heights(st, base=0):
 
 def _corners(st):
     """The number of the waterplane's corners, exact: where the water plane is proven to pass through no vertex."""
-    if getattr(st, "corners", None) is None:
+    if st.corners is None:
         raise Ambiguous("the water plane may pass through a vertex: its corners are not counted")
     return arb(st.corners)
 

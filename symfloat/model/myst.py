@@ -10,10 +10,20 @@ import re
 
 from .evidence_tex import spans
 
-__all__ = ["inline"]
+__all__ = ["inline", "unescaped"]
 
 _MARKDOWN = re.compile(r"([\\`*_{}\[\]<>#|$])")
+_ESCAPED = re.compile(r"\\([\\`*_{}\[\]()#+\-.!|>])")       # Markdown's backslash escapes
 _BARS = re.compile(r"\\\||\|")
+
+
+def unescaped(text: str) -> str:
+    r"""*text* (Markdown, as the transcriptions are written) without its backslash escapes: ``\*`` is ``*``.
+
+    >>> unescaped(r"Schülen\*) and 3\.")
+    'Schülen*) and 3.'
+    """
+    return _ESCAPED.sub(r"\1", text)
 
 
 def inline(text: str, limit: int | None = 160, cell: bool = False) -> str:

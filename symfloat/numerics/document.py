@@ -14,18 +14,17 @@ from __future__ import annotations
 import math
 import re
 from collections import Counter
-from functools import cache
 from pathlib import Path
 
 import matplotlib.pyplot as plt
 import sympy as sp
 
 from ..files import write_if_changed
+from ..model.myst import inline, unescaped
 from ..model.source import SOURCES
+from ..model.span import math_spans, widened
 from ..model.symbol_names import latex
-from ..model.span import math_intervals, widened
 from ..registry import manifest, statements
-from ..model.myst import inline
 from .bench import FAMILIES, Bench, run_bench
 from .conditioning import CASES, conditioning_markdown, conditioning_rows
 from .discriminant import table_markdown as discriminant_markdown
@@ -89,11 +88,20 @@ def _cell(text: str) -> str:
     return inline(text, None, cell=True)
 
 
-def _place(key: str) -> str:
-    """The printed formula *key* (``derivation/name``) by its derivation's title and its place in the source;
-    a step that is no printed formula by the title alone."""
+def _printed_of(key: str):
+    """``(derivation id, its Printed formula)`` of *key* (``derivation/name``, ``name#corrected`` for the
+    correction's reading); ``None`` for the formula where *name* is a step of the derivation, no printed one."""
     did, name = key.split("/", 1)
-    p = next((p for p in statements(did).printed if p.name == name.split("#")[0]), None)
+    try:
+        return did, statements(did).get_printed(name.split("#")[0])
+    except KeyError:
+        return did, None
+
+
+def _place(key: str) -> str:
+    """The printed formula *key* by its derivation's title and its place in the source; a step that is no
+    printed formula by the title alone."""
+    did, p = _printed_of(key)
     return _cell(_derivation(did) + ("" if p is None else f", {p.locator}"))
 
 
@@ -101,44 +109,35 @@ _REWRITES = {"factor": "factored", "cancel": "cancelled", "together": "over one 
 
 
 def _formula(key: str) -> str:
-    """The printed formula *key* (``derivation/name``, ``#corrected`` for its correction) for a table cell:
-    its place in the source and its print, typeset (:func:`_printed`); a step of a derivation that is no
-    printed formula by the derivation's title."""
-    did, name = key.split("/", 1)
-    p = next((p for p in statements(did).printed if p.name == name.split("#")[0]), None)
+    """The printed formula *key* for a table cell: its place in the source and its print, typeset
+    (:func:`_printed`); a step of a derivation that is no printed formula by the derivation's title."""
+    did, p = _printed_of(key)
     if p is None:
         return _cell(_derivation(did))
-    corrected = " (as corrected)" if name.endswith("#corrected") else ""
+    corrected = " (as corrected)" if key.endswith("#corrected") else ""
     return f"{_cell(p.locator)}{corrected}: {inline(_printed(manifest(did).source, p.excerpt), 160, cell=True)}"
 
 
 _TAG = re.compile(r"\\(?:tag|label)\{[^}]*\}")
-_UNESCAPE = re.compile(r"\\([\\`*_{}\[\]()#+\-.!|>])")    # the transcription's Markdown escapes: its words as words
 
 
 def _printed(source: str, excerpt: str) -> str:
     """The excerpt as the transcription prints it, widened to whole formulas (an excerpt may begin or end
     inside one, as the edition quotes it), each formula inline: a table cell is no place for a display (its
     ``\\tag``, which inline mathematics does not take, left out; the place is in the cell already); the words
-    without the transcription's Markdown escapes (:func:`~symfloat.report.myst.inline` escapes them again)."""
+    without the transcription's Markdown escapes (:func:`~symfloat.model.myst.inline` escapes them again)."""
     text = SOURCES[source].text()
     at = text.find(excerpt)
     if at < 0:
         return excerpt
-    maths = _maths(source)
-    a, b = widened(at, at + len(excerpt), maths)
+    spans = math_spans(source)
+    a, b = widened(at, at + len(excerpt), [(m.start, m.end, m.kind) for m in spans])
     out, last = [], a
-    for s, e, kind in maths:
-        if a <= s and e <= b:
-            width = 2 if kind == "display" and text.startswith("$$", s) else 1
-            out += [_UNESCAPE.sub(r"\1", text[last:s]), "$", _TAG.sub("", text[s + width:e - width]).strip(), "$"]
-            last = e
-    return "".join(out + [_UNESCAPE.sub(r"\1", text[last:b])])
-
-
-@cache
-def _maths(source: str):
-    return math_intervals(SOURCES[source].text())
+    for m in spans:
+        if a <= m.start and m.end <= b:
+            out += [unescaped(text[last:m.start]), "$", _TAG.sub("", m.math).strip(), "$"]
+            last = m.end
+    return "".join(out + [unescaped(text[last:b])])
 
 
 def _unenclosed_words(bench, family, ms) -> list:
@@ -148,8 +147,8 @@ def _unenclosed_words(bench, family, ms) -> list:
     missing = {k: why for k, (f, why) in bench.unenclosed.items() if f == family and k in witnesses}
     if not missing:
         return [f"Arb encloses all {len(witnesses)} witnesses of this family.", ""]
-    rows = [(inline(_derivation(key.split("/")[0]), None, cell=True), inline(bench.witnesses[key], None, cell=True),
-             why) for key, why in sorted(missing.items(), key=lambda kv: (kv[1], kv[0]))]
+    rows = [(_cell(_derivation(key.split("/")[0])), _cell(bench.witnesses[key]), why)
+            for key, why in sorted(missing.items(), key=lambda kv: (kv[1], kv[0]))]
     return [f"Arb encloses {len(witnesses) - len(missing)} of the {len(witnesses)} witnesses of this family. "
             f"The other {len(missing)} have no rigorous method, so no Arb rows, and their methods are measured "
             f"against the exact reading (else their most precise method):", "",

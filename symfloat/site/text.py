@@ -21,13 +21,13 @@ import html
 import re
 
 from ..model.evidence_tex import spans
+from ..model.myst import unescaped
 from ..model.span import math_intervals
 from .typeset import typeset
 
 __all__ = ["blocks", "inline_html", "render", "excerpt_html", "prose_html"]
 
 _BLANK = re.compile(r"\n[ \t]*\n\s*")
-_ESCAPE = re.compile(r"\\([\\`*_{}\[\]()#+\-.!|>])")
 _TAGS = re.compile(r"&lt;(/?)(sub|sup)&gt;")
 # The web page's element numbers and a figure's file name, alone on their line: not the text's words
 _BOILERPLATE = re.compile(r"ID:\(\d+, \d+\)|[\w-]+\.(?:eps|png|jpe?g|gif)")
@@ -54,7 +54,7 @@ def _prose(text: str) -> str:
     out = _TAGS.sub(r"<\1\2>", out)
     out = re.sub(r"\*\*(\S(?:.*?\S)?)\*\*", r"<strong>\1</strong>", out, flags=re.S)
     out = re.sub(r"(?<![*\\])\*(\S(?:[^*]*?\S)?)\*(?!\*)", r"<em>\1</em>", out, flags=re.S)
-    out = _ESCAPE.sub(r"\1", out)
+    out = unescaped(out)
     out = _FIGURE.sub(r'<span class="figure-missing" title="the figure is not in the transcription">\1</span>', out)
     out = re.sub(r" {2,}\n|\\\n", "<br>\n", out)
     return re.sub(r"\n(?=[-*] |&gt;)", "<br>\n", out)
