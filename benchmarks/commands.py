@@ -1,7 +1,8 @@
 """Benchmark: what the commands cost a user, from an empty directory with no cache.
 
     python benchmarks/commands.py [--skip-run] [--skip-test]    (writes a section of docs/performance.md)
-    python benchmarks/commands.py --quick     (--help and the scenes only: their rows of the section, the rest kept)
+    python benchmarks/commands.py --quick     (--help and the scenes only)
+A row the run does not measure (skipped, or left out by --quick) is kept as the section had it.
 
 Each command runs once as a user would run it (``python -m symfloat ...``) in a new empty working
 directory with an empty cache (``SYMFLOAT_CACHE``); ``make run`` is the main job, timed cold (empty
@@ -167,15 +168,15 @@ def write(path: Path, text: str) -> None:
 
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--skip-run", action="store_true", help="leave out the main job (minutes)")
-    p.add_argument("--skip-test", action="store_true", help="leave out make test (minutes)")
+    p.add_argument("--skip-run", action="store_true", help="leave out the main job (minutes); its rows are kept")
+    p.add_argument("--skip-test", action="store_true", help="leave out make test (minutes); its row is kept")
     p.add_argument("--quick", action="store_true",
                    help="only --help and the scenes (seconds): their rows are replaced, the others kept")
     p.add_argument("--output", type=Path, default=ROOT / "docs" / "performance.md")
     args = p.parse_args(argv)
     measured = rows(args.skip_run, args.skip_test, args.quick)
     old = args.output.read_text(encoding="utf-8") if args.output.exists() else ""
-    write(args.output, section(kept(measured, old) if args.quick else measured))
+    write(args.output, section(kept(measured, old)))
     for label, sec, target, *note in measured:
         print(f"{label}: {sec:.1f} s (target {target:g} s)" + (f"; {note[0]}" if note else ""))
     return 0
