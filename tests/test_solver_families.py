@@ -34,16 +34,23 @@ DIAGONAL = np.array([0.123210, 0.984702, 0.123210])     # the stable class of th
 
 
 def _mirror_minimum(dims, s, mirror, lo: float, hi: float) -> float:
-    """The angle t of the potential's minimum along the mirror curve ``mirror(t)`` (golden-section search)."""
-    body = box(*dims)
-    potential = lambda t: float(floating_state(body, tuple(mirror(t)), s).potential)  # noqa: E731
+    """The angle t of the potential's minimum along the mirror curve ``mirror(t)`` (golden-section search), the
+    potential of a 30-digit body: where the minimum is flat (curvature c about 1e-10), float64's rounding of the
+    potential (about 1e-16) would move it by sqrt(1e-16 / c), 1e-3; at 30 digits by about 1e-9."""
+    body = box(*dims, dps=30)
+    potential = lambda t: floating_state(body, tuple(mirror(t)), s).potential  # noqa: E731
     golden = (math.sqrt(5) - 1) / 2
+    a, b = hi - golden * (hi - lo), lo + golden * (hi - lo)
+    pa, pb = potential(a), potential(b)
     for _ in range(60):
-        a, b = hi - golden * (hi - lo), lo + golden * (hi - lo)
-        if potential(a) < potential(b):
-            hi = b
+        if pa < pb:
+            hi, b, pb = b, a, pa
+            a = hi - golden * (hi - lo)
+            pa = potential(a)
         else:
-            lo = a
+            lo, a, pa = a, b, pb
+            b = lo + golden * (hi - lo)
+            pb = potential(b)
     return (lo + hi) / 2
 
 

@@ -40,7 +40,7 @@ True
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, fields, replace
+from dataclasses import dataclass, field, fields, replace
 from fractions import Fraction
 from functools import lru_cache
 
@@ -80,10 +80,15 @@ class BallBody:
     exact: tuple
     G: tuple = None
     at: tuple = ()
+    _balls: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
-    def points(self):
-        """The vertices as balls at the working precision."""
-        return [tuple(coordinate(c, self.at) for c in p) for p in self.exact]
+    def points(self) -> tuple:
+        """The vertices as balls at the working precision (made once per precision: a state asks for them at
+        every step of its draught)."""
+        balls = self._balls.get(ctx.prec)
+        if balls is None:
+            balls = self._balls[ctx.prec] = tuple(tuple(coordinate(c, self.at) for c in p) for p in self.exact)
+        return balls
 
 
 def coordinate(x, at=()) -> arb:
@@ -124,9 +129,10 @@ def _mean(points):
     return tuple(sum(p[k] for p in points) / len(points) for k in range(3))
 
 
-def _volume_moment(rings, c):
-    """Volume and first moment about *c* (``sum V_k (a + b + d - 3c) / 4``) of the closed polyhedron whose faces
-    are *rings* of ball points."""
+def _volume_moment(rings, c, moments=True):
+    """Volume and first moment about *c* (``sum V_k (a + b + d - 3c) / 4``; ``None`` without *moments*: the
+    draught's steps and bracket need the volume alone) of the closed polyhedron whose faces are *rings* of ball
+    points."""
     volume, moment = arb(0), [arb(0)] * 3
     for ring in rings:
         a = tuple(ring[0][k] - c[k] for k in range(3))
@@ -136,8 +142,9 @@ def _volume_moment(rings, c):
             v = (a[0] * (b[1] * d[2] - b[2] * d[1]) + a[1] * (b[2] * d[0] - b[0] * d[2])
                  + a[2] * (b[0] * d[1] - b[1] * d[0])) / 6
             volume += v
-            moment = [moment[k] + v * (a[k] + b[k] + d[k]) / 4 for k in range(3)]
-    return volume, moment
+            if moments:
+                moment = [moment[k] + v * (a[k] + b[k] + d[k]) / 4 for k in range(3)]
+    return volume, moment if moments else None
 
 
 MAX_OPEN = 6          # vertices that may lie on either side of the plane: at most 2^6 assignments are joined
@@ -267,11 +274,11 @@ class BallState:
     corners: int | None = None
 
 
-def _volume_below(body, w, tau, c, side):
+def _volume_below(body, w, tau, c, side, moments=True):
     faces, cap = clipped(body, w, tau, side)
     if len(cap) >= 3:
         faces.append(tuple(cap))
-    return _volume_moment(faces, c), cap
+    return _volume_moment(faces, c, moments), cap
 
 
 def _area(cap, u):
@@ -301,7 +308,8 @@ def _draught(body, w, norm, s, whole, c, bits):
     tau = arb(tau.mid())
     step = arb(2) ** (4 - bits) * size
     for _ in range(NEWTON_STEPS):
-        (volume, _), cap = _realised(lambda side: _volume_below(body, w, tau, c, side), _assignments(body, w, tau))[0]
+        (volume, _), cap = _realised(lambda side: _volume_below(body, w, tau, c, side, moments=False),
+                                     _assignments(body, w, tau))[0]
         area = _area(cap, w) / norm                      # dV/dtau = A / |w|
         nxt = arb((tau - (volume - target) / (area / norm)).mid())
         done = (nxt - tau).abs_upper() < step / 4
@@ -317,7 +325,8 @@ def _draught(body, w, norm, s, whole, c, bits):
 
 def _volume_at(body, w, tau, c):
     """The volume below ``w . p = tau``, joined over the assignments of the vertices on the plane."""
-    return _joined(_realised(lambda side: _volume_below(body, w, tau, c, side)[0][0], _assignments(body, w, tau)))
+    return _joined(_realised(lambda side: _volume_below(body, w, tau, c, side, moments=False)[0][0],
+                             _assignments(body, w, tau)))
 
 
 def _realised(f, assignments):

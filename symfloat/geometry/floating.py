@@ -433,14 +433,32 @@ def submerged(poly, u, t):
     return Submerged(volume, centroid, wp)
 
 
-def _volume_and_area(poly, u, t, basis):
-    faces, on_plane = _clip(poly, u, t)
-    e1, e2 = basis
-    ring, ring2 = _cap(on_plane, u, e1, e2, t)
-    area = _polygon_moments(ring2, _num(0, poly.dps))[0]
-    if len(ring) >= 3:
-        faces.append(tuple(ring))
-    return volume_centroid(Polyhedron(tuple(faces), poly.dps))[0], area
+def _volume_and_area(poly, u, t):
+    """The volume below the plane ``u . p = t`` and the waterplane's area, by the divergence theorem over the
+    clipped faces alone, measured from the point ``o = t u`` of the plane:
+
+    ``V = sum_f (p_f - o) . N_f / 3``,  ``A = -u . sum_f N_f``,  ``N_f = sum_i (p_i - o) x (p_(i+1) - o) / 2``
+
+    (``N_f`` the vector area of a clipped face ``f``, ``p_f`` any of its points).  The cap lies in the plane
+    through ``o``, so it adds nothing to ``V``, and the closed surface's vector areas sum to zero, so its area
+    ``A`` (normal ``u``) is minus the others' along ``u``.  No hull of the waterplane, no vertex mean: the
+    draught's Newton steps need only these two numbers (:func:`draught`)."""
+    faces, _ = _clip(poly, u, t)
+    u0, u1, u2 = u
+    o0, o1, o2 = t * u0, t * u1, t * u2
+    volume = n0 = n1 = n2 = _num(0, poly.dps)
+    for ring in faces:          # _sub, _cross and _dot inlined
+        x0, y0, z0 = ring[-1][0] - o0, ring[-1][1] - o1, ring[-1][2] - o2
+        f0 = f1 = f2 = 0
+        for p in ring:
+            x1, y1, z1 = p[0] - o0, p[1] - o1, p[2] - o2
+            f0 += y0 * z1 - z0 * y1
+            f1 += z0 * x1 - x0 * z1
+            f2 += x0 * y1 - y0 * x1
+            x0, y0, z0 = x1, y1, z1
+        volume += x0 * f0 + y0 * f1 + z0 * f2
+        n0, n1, n2 = n0 + f0, n1 + f1, n2 + f2
+    return volume / 6, -(u0 * n0 + u1 * n1 + u2 * n2) / 2
 
 
 @_at_body_precision
@@ -483,9 +501,8 @@ def draught(poly, u, s, tol=None):
         start = _float_start(poly, u, s)
         if start is not None and lo < start < hi:
             t = mpmath.mpf(start)
-    basis = waterplane_basis(u, dps)                  # the same for every offset t
     for _ in range(400):
-        volume, area = _volume_and_area(poly, u, t, basis)
+        volume, area = _volume_and_area(poly, u, t)
         f = volume - target
         if f < 0:
             lo = t
@@ -500,9 +517,9 @@ def draught(poly, u, s, tol=None):
             a, b = max(lo, tn - tol / 2), min(hi, tn + tol / 2)
             # V(lo) <= target <= V(hi) holds already: an end that is lo or hi is not evaluated again (in
             # float64 one of them always is, t itself, which lies within tol/4 of tn)
-            if a != lo and _volume_and_area(poly, u, a, basis)[0] <= target:
+            if a != lo and _volume_and_area(poly, u, a)[0] <= target:
                 lo = a
-            if b != hi and _volume_and_area(poly, u, b, basis)[0] >= target:
+            if b != hi and _volume_and_area(poly, u, b)[0] >= target:
                 hi = b
             if hi - lo <= tol:
                 t = tn if lo <= tn <= hi else (lo + hi) / 2

@@ -12,7 +12,8 @@ opposite signs.  ``f(theta) / theta`` is evaluated at ``dps`` digits (enough for
 at the smallest ``theta`` scanned to exceed the rounding by 1e10) on a geometric grid (ratio 2) from
 ``1e-3 sqrt(|lambda_d| / size)`` out, and its first change of sign is bracketed and narrowed by false
 position to 1e-18 of itself: the root is then an equilibrium (a change of sign of the slope on an invariant curve)
-located to the bracket (its error: that and the rounding of the float64 up vector), however small the family is (a ring of radius 8e-5 rad 1e-9 past the
+located to the bracket (its error: that, the reach of the rounding of ``f`` at ``dps`` digits, ``10^(5 - dps)
+size / |f'|``, and the rounding of the float64 up vector), however small the family is (a ring of radius 8e-5 rad 1e-9 past the
 cube's face-up pitchfork, whose potential differs from the axis's by 1e-17, below float64).
 
 Around an axis of order 3 or more (the two eigenvalues equal exactly) the position's rotations make
@@ -85,8 +86,11 @@ def _slope(poly, a, d, theta, s):
 
 
 def _root(poly, a, d, s, lam, scale):
-    """``(theta*, bracket, f'(theta*), state)`` of the first change of sign of ``f(theta)/theta`` away from
-    the sign of *lam*, or None within :data:`REACH`."""
+    """``(theta*, error, f'(theta*), state)`` of the first change of sign of ``f(theta)/theta`` away from
+    the sign of *lam*, or None within :data:`REACH`.  The error is the bracket's width plus the reach of the
+    arithmetic, ``10^(5 - dps) scale / |f'|``: narrowed to 1e-18 of ``theta``, the ends' values fall to the
+    rounding of ``f`` at the body's digits, whose sign is then not known (1e-11 past the box 1 x 2 x 3's
+    pitchfork, at 34 digits, the true root lay 2e-24 from a bracket 7e-25 wide)."""
     theta = 1e-3 * math.sqrt(abs(lam) / scale)
     sign = 1 if lam > 0 else -1
     with mpmath.workdps(poly.dps):
@@ -126,7 +130,9 @@ def _root(poly, a, d, s, lam, scale):
         root = (lo + hi) / 2
         h = root * mpmath.mpf(10) ** -6
         slope = (_slope(poly, a, d, root + h, s)[0] - _slope(poly, a, d, root - h, s)[0]) / (2 * h)
-        return root, float(hi - lo), float(slope), _slope(poly, a, d, root, s)[1]
+        rounding = mpmath.mpf(10) ** (5 - poly.dps) * scale
+        reach = rounding / abs(slope) if slope else mpmath.inf
+        return root, float(hi - lo + reach), float(slope), _slope(poly, a, d, root, s)[1]
 
 
 def _hessian(st):
