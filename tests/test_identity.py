@@ -72,3 +72,43 @@ def test_the_cancel_strategy_is_zero_exactly_where_sympys_cancel_is():
     roots = sp.sqrt(a) * sp.sqrt(b) - sp.sqrt(a * b)
     assert roots != 0
     assert cancel(roots) == sp.cancel(sp.together(roots))
+
+
+# ---- sampled values from balls (symfloat.engine.identity._sample) ------------------------------------------------
+
+def _count_sympy_values(monkeypatch) -> list:
+    """Count the values SymPy's substitution-and-N path gives (the rest came from balls)."""
+    import symfloat.engine.identity as identity
+    asked, value = [], identity._value
+
+    def counted(expr):
+        asked.append(expr)
+        return value(expr)
+    monkeypatch.setattr(identity, "_value", counted)
+    return asked
+
+
+def test_an_irrational_value_is_read_from_its_ball_and_agrees_as_sympy_says(monkeypatch):
+    from symfloat.engine.identity import _sample
+    pairs = [(sp.sqrt(2) * sp.sqrt(3) * x * y, sp.sqrt(6) * y * x)]
+    asked = _count_sympy_values(monkeypatch)
+    by_sympy = _sample(pairs, DOMAIN, "b1", 6, balls=False)
+    assert len(asked) == 12
+    # from balls: one value asked of SymPy, whether the first value a ball gave was rational after all (no)
+    assert _sample(pairs, DOMAIN, "b1", 6) == by_sympy == ("sampled", 6, False, None) and len(asked) == 13
+
+
+def test_a_difference_in_the_40th_digit_is_refuted_from_balls_and_reported_as_sympy_reports_it():
+    from symfloat.engine.identity import _sample
+    pairs = [(sp.sqrt(2) * x, sp.sqrt(2) * x * (1 + sp.Rational(1, 10**40)))]
+    refuted = _sample(pairs, DOMAIN, "b2", 6)
+    assert refuted[0] == "refuted" and refuted == _sample(pairs, DOMAIN, "b2", 6, balls=False)
+
+
+def test_a_rational_value_a_ball_cannot_see_is_found_exact_by_sympy():
+    # log(exp(z)) for a symbol z without assumptions: no compiled reading gives its rational value, its ball is a
+    # 60-digit float; SymPy's substitution gives the rational, so the sampling is exact, as it was without balls
+    from symfloat.engine.identity import _sample
+    z = sp.Symbol("z")
+    result = _sample([(sp.log(sp.exp(z)) + x, z + x)], Domain({z: (1, 2), x: (1, 2)}), "b3", 6)
+    assert result == ("sampled", 6, True, None)

@@ -22,8 +22,11 @@ from fractions import Fraction
 
 import sympy as sp
 
+from flint import arb
+
 from ..model.compiled import CompiledError, compile_expr
 from ..model.relation import RealRoots
+from .enclosure import Unsupported, exact, real_function, working_precision
 from .pythagoras import pythagoras
 from .proofs import Certificate, ProofBook, claim_digest, slowdown
 from .sign import decided
@@ -213,6 +216,12 @@ def value_at(expr, point):
     (:class:`~symfloat.model.compiled.Compiled`: the rational SymPy's substitution reaches, without rebuilding
     the expression, about twenty times faster); anything else (an irrational value, a zero denominator, a
     symbol without a rational value) by SymPy's ``xreplace``."""
+    v = _rational_at(expr, point)
+    return v if v is not None else expr.xreplace(point)
+
+
+def _rational_at(expr, point):
+    """*expr*'s rational value at *point* by its compiled reading, or ``None`` (see :func:`value_at`)."""
     form = _exact_form(expr)
     if form is not None:
         symbols, compiled = form
@@ -224,10 +233,52 @@ def value_at(expr, point):
                 v = None
             if isinstance(v, Fraction):
                 return sp.Rational(v.numerator, v.denominator)
-    return expr.xreplace(point)
+    return None
 
 
-def _sample(pairs, domain: Domain, seed_text: str, samples: int):
+_BALL_BITS = 256        # a sampled value's ball: its midpoint is the 60-digit value where its radius allows
+
+
+@functools.lru_cache(maxsize=4096)
+def _ball_form(expr):
+    """*expr* compiled for ball arithmetic in its free symbols (sorted by name), or ``None`` outside the
+    enclosure's whitelist (:mod:`~symfloat.engine.enclosure`)."""
+    symbols = tuple(sorted(expr.free_symbols, key=lambda q: q.name))
+    try:
+        return symbols, real_function(expr, symbols)
+    except Unsupported:
+        return None
+
+
+def _ball_value(expr, point):
+    """*expr* at the rational *point* from its ball at 256 bits: the midpoint as a 60-digit float where the ball
+    is finite and narrower than ``2^-200`` of it (the value to 60 digits, proven), else ``None``."""
+    form = _ball_form(expr)
+    if form is None:
+        return None
+    symbols, f = form
+    try:
+        with working_precision(_BALL_BITS):
+            b = f(*(exact(point[q]) for q in symbols))
+            if b.is_finite() and b.rad() <= abs(b.mid()) * arb(2) ** -200:
+                return sp.Float(b.mid().str(70, radius=False), DIGITS)
+    except (KeyError, ValueError, ArithmeticError):
+        pass
+    return None
+
+
+def _sympy_value(expr, point):
+    """``(value, exact)`` as SymPy gives it: a rational where the value is one, else a 60-digit float."""
+    v = _rational_at(expr, point)
+    return (v, True) if v is not None else _value(expr.xreplace(point))
+
+
+def _sample(pairs, domain: Domain, seed_text: str, samples: int, balls: bool = True):
+    """Compare the pairs at rational points drawn from *domain*: ``(status, good points, exact, counterexample)``,
+    *exact* where every value was rational.  A value the compiled reading does not give as a rational is taken
+    from its ball (*balls*, :func:`_ball_value`; SymPy's substitution and ``N`` cost about a millisecond a
+    value), which may be a rational SymPy would have found (``log(exp(z))`` at a rational z): where that could change the outcome
+    (every other value exact, or a disagreement to report) the points are sampled again with SymPy's values."""
     symbols = set()
     for a, b in pairs:
         symbols |= a.free_symbols | b.free_symbols
@@ -236,7 +287,15 @@ def _sample(pairs, domain: Domain, seed_text: str, samples: int):
         if sp.sympify(c).free_symbols & symbols:
             symbols |= sp.sympify(c).free_symbols
     draw = domain.sampler(seed_text)
-    good, exact = 0, True
+    good, exact, by_ball = 0, True, None        # by_ball: a value taken from a ball, (expression, point)
+
+    def value(expr, point):
+        nonlocal by_ball
+        if balls and _rational_at(expr, point) is None and (v := _ball_value(expr, point)) is not None:
+            by_ball = by_ball or (expr, point)
+            return v, None
+        return _sympy_value(expr, point)
+
     for _ in range(samples * 20):
         if good >= samples:
             break
@@ -244,7 +303,7 @@ def _sample(pairs, domain: Domain, seed_text: str, samples: int):
         if not domain.admits(point):
             continue
         try:
-            values = [(_value(value_at(a, point)), _value(value_at(b, point))) for a, b in pairs]
+            values = [(value(a, point), value(b, point)) for a, b in pairs]
         except (ArithmeticError, ZeroDivisionError, TypeError):
             continue
         good += 1
@@ -256,10 +315,16 @@ def _sample(pairs, domain: Domain, seed_text: str, samples: int):
                 scale = max(abs(va), abs(vb), 1)
                 agree = abs(va - vb) <= AGREEMENT * scale
             if not agree:
+                if by_ball:
+                    return _sample(pairs, domain, seed_text, samples, balls=False)
                 return "refuted", good, exact, {
                     "point": {str(k): str(v) for k, v in sorted(point.items(), key=lambda kv: kv[0].name)
                               if k in own},
                     "lhs": _show(va), "rhs": _show(vb)}
+    if exact is None:       # inexact only where a ball gave a value: SymPy's says whether that one was rational
+        if _sympy_value(*by_ball)[1]:
+            return _sample(pairs, domain, seed_text, samples, balls=False)
+        exact = False
     return ("sampled" if good else "undecided"), good, exact, None
 
 
