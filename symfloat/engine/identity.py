@@ -269,16 +269,16 @@ def _ball_value(expr, point):
 
 def _sympy_value(expr, point):
     """``(value, exact)`` as SymPy gives it: a rational where the value is one, else a 60-digit float."""
-    v = _rational_at(expr, point)
-    return (v, True) if v is not None else _value(expr.xreplace(point))
+    return _value(value_at(expr, point))
 
 
 def _sample(pairs, domain: Domain, seed_text: str, samples: int, balls: bool = True):
     """Compare the pairs at rational points drawn from *domain*: ``(status, good points, exact, counterexample)``,
     *exact* where every value was rational.  A value the compiled reading does not give as a rational is taken
     from its ball (*balls*, :func:`_ball_value`; SymPy's substitution and ``N`` cost about a millisecond a
-    value), which may be a rational SymPy would have found (``log(exp(z))`` at a rational z): where that could change the outcome
-    (every other value exact, or a disagreement to report) the points are sampled again with SymPy's values."""
+    value), which may be a rational SymPy would have found (``log(exp(z))`` at a rational z): where that could
+    change the outcome (every other value exact, or a disagreement to report) the points are sampled again with
+    SymPy's values."""
     symbols = set()
     for a, b in pairs:
         symbols |= a.free_symbols | b.free_symbols
