@@ -674,3 +674,26 @@ def test_a_derivation_s_enclosures_do_not_depend_on_what_the_process_computed_be
     after = certified_records()
     assert before and [(n, {k: v for k, v in r.items() if k != "seconds"}) for n, r in before] == \
         [(n, {k: v for k, v in r.items() if k != "seconds"}) for n, r in after]
+
+
+def test_a_root_is_narrowed_from_the_float64_root_and_proven_by_a_sign_change():
+    # f(x) = x^2 - 2 on [1.4, 1.5]: from the float64 root the secant needs no values at the bracket's ends, and
+    # the ball it returns is proven (a sign change at its own ends) to hold sqrt(2), as the one from the ends does
+    from symfloat.engine.floating_enclosure import _secant_root
+    counted = []
+
+    def f(x):
+        counted.append(x)
+        return x * x - 2
+    from_ends = _secant_root(f, 1.4, 1.5, 128)
+    ends = len(counted)
+    from_root = _secant_root(f, 1.4, 1.5, 128, start=2 ** 0.5)
+    with working_precision(160):
+        root = arb(2).sqrt()
+        for found in (from_ends, from_root):
+            assert found.contains(root) and found.rad() < arb(2) ** -110
+    assert len(counted) - ends < ends
+    # a start the secant leaves (a point where f is far from 0) still ends in a proven bracket about the root
+    far = _secant_root(f, 1.4, 1.5, 128, start=1.4000001)
+    with working_precision(160):
+        assert far.contains(arb(2).sqrt()) and far.rad() < arb(2) ** -110

@@ -740,7 +740,7 @@ def _root_balls(witness, case, body, bits):
         try:
             for share in ROOT_BRACKETS:
                 reach = share * (1 + abs(centre))
-                value = _secant_root(f, centre - reach, centre + reach, bits)
+                value = _secant_root(f, centre - reach, centre + reach, bits, centre)
                 if value.is_finite():
                     break
             for item in root.guard:
@@ -784,39 +784,57 @@ def _dyadic(x: arb) -> sp.Rational:
     return sp.Integer(int(man)) * sp.Rational(2) ** int(exp)
 
 
-def _secant_root(f, lo, hi, bits):
-    """A root of *f* in ``[lo, hi]`` (floats whose values of *f* are balls of proven opposite signs) as a ball
-    about ``2^-bits (1 + |root|)`` wide: secant steps on the balls' midpoints at exact dyadic points, then a
+def _secant_root(f, lo, hi, bits, start=None):
+    """A root of *f* in ``[lo, hi]`` as a ball about ``2^-bits (1 + |root|)`` wide: secant steps on the balls'
+    midpoints at exact dyadic points (from *start*, the float64 root, and a point ``2^-40`` from it), then a
     bracket about the last one whose ends' signs are proven opposite (the intermediate value theorem), widened
-    by 2^8 at a time up to ``2^-(bits/2)``; where none is proven, bisection on ``[lo, hi]``
+    by 2^8 at a time up to ``2^-(bits/2)``.  Where that proves nothing, the same from the ends *lo*, *hi* (floats
+    whose values of *f* must be balls of proven opposite signs), and then bisection on ``[lo, hi]``
     (:func:`~symfloat.engine.enclosure.sign_change_root`); non-finite where the signs at *lo*, *hi* are not
     proven opposite."""
     with working_precision(bits + GUARD_BITS):
         a, b = arb(lo), arb(hi)
+        if start is not None and a < arb(start) < b:
+            x = arb(start)
+            y = arb((x + arb(2) ** -40 * (1 + abs(x))).mid())
+            try:
+                root = _narrowed(f, a, b, x, f(x).mid(), y, f(y).mid(), bits)
+            except Ambiguous:
+                root = None
+            if root is not None:
+                return root
         fa, fb = f(a), f(b)
         if not ((fa < 0 and fb > 0) or (fa > 0 and fb < 0)):
             return arb.nan()
-        negative_at_lo = fa < 0
-        x, fx, y, fy = a, fa.mid(), b, fb.mid()
-        for _ in range(SECANT_STEPS):
-            if fy == fx:
-                break
-            z = arb((y - fy * (y - x) / (fy - fx)).mid())
-            if not (a < z < b):
-                z = (a + b) / 2
-            done = (z - y).abs_upper() < arb(2) ** -bits * (1 + abs(z))
-            x, fx, y, fy = y, fy, z, f(z).mid()
-            if done:
-                break
-        step = arb(2) ** (4 - bits) * (1 + abs(y))
-        for widen in range(0, bits // 2 - 8, 8):
-            left, right = y - step * 2 ** widen, y + step * 2 ** widen
-            if not (a <= left and right <= b):
-                break
-            fl, fr = f(left), f(right)
-            if (fl < 0 if negative_at_lo else fl > 0) and (fr > 0 if negative_at_lo else fr < 0):
-                return left.union(right)
+        root = _narrowed(f, a, b, a, fa.mid(), b, fb.mid(), bits)
+        if root is not None:
+            return root
     return sign_change_root(f, lo, hi, bits)
+
+
+def _narrowed(f, a, b, x, fx, y, fy, bits):
+    """Secant steps inside ``[a, b]`` from ``(x, fx)``, ``(y, fy)`` (midpoints), then the first bracket about the
+    last point, ``2^(4 - bits) (1 + |y|)`` wide and widened by 2^8 at a time, whose ends' signs are proven
+    opposite; ``None`` where none within ``[a, b]`` is."""
+    for _ in range(SECANT_STEPS):
+        if fy == fx:
+            break
+        z = arb((y - fy * (y - x) / (fy - fx)).mid())
+        if not (a < z < b):
+            z = (a + b) / 2
+        if (z - y).abs_upper() < arb(2) ** -bits * (1 + abs(z)):
+            y = z               # converged: the bracket's ends are evaluated, not z itself
+            break
+        x, fx, y, fy = y, fy, z, f(z).mid()
+    step = arb(2) ** (4 - bits) * (1 + abs(y))
+    for widen in range(0, bits // 2 - 8, 8):
+        left, right = y - step * 2 ** widen, y + step * 2 ** widen
+        if not (a <= left and right <= b):
+            break
+        fl, fr = f(left), f(right)
+        if (fl < 0 and fr > 0) or (fl > 0 and fr < 0):
+            return left.union(right)
+    return None
 
 
 SECANT_STEPS = 40
