@@ -201,14 +201,20 @@ def _value(expr):
     return v, False
 
 
-@functools.lru_cache(maxsize=4096)
-def _exact_form(expr):
-    """*expr* as a compiled reading of its free symbols (sorted by name), or ``None`` outside its whitelist."""
+def _compiled(expr, compile_in, outside):
+    """``(symbols, function)``: *expr* compiled by *compile_in* in its free symbols (sorted by name), or ``None``
+    where the compiler raises *outside* (a node off its whitelist)."""
     symbols = tuple(sorted(expr.free_symbols, key=lambda q: q.name))
     try:
-        return symbols, compile_expr(expr, symbols)
-    except CompiledError:
+        return symbols, compile_in(expr, symbols)
+    except outside:
         return None
+
+
+@functools.lru_cache(maxsize=4096)
+def _exact_form(expr):
+    """*expr* as a compiled reading of its free symbols (exact rational arithmetic), or ``None``."""
+    return _compiled(expr, compile_expr, CompiledError)
 
 
 def value_at(expr, point):
@@ -241,13 +247,8 @@ _BALL_BITS = 256        # a sampled value's ball: its midpoint is the 60-digit v
 
 @functools.lru_cache(maxsize=4096)
 def _ball_form(expr):
-    """*expr* compiled for ball arithmetic in its free symbols (sorted by name), or ``None`` outside the
-    enclosure's whitelist (:mod:`~symfloat.engine.enclosure`)."""
-    symbols = tuple(sorted(expr.free_symbols, key=lambda q: q.name))
-    try:
-        return symbols, real_function(expr, symbols)
-    except Unsupported:
-        return None
+    """*expr* compiled for ball arithmetic in its free symbols (:mod:`~symfloat.engine.enclosure`), or ``None``."""
+    return _compiled(expr, real_function, Unsupported)
 
 
 def _ball_value(expr, point):
