@@ -89,8 +89,8 @@ def _root(poly, a, d, s, lam, scale):
     """``(theta*, error, f'(theta*), state)`` of the first change of sign of ``f(theta)/theta`` away from
     the sign of *lam*, or None within :data:`REACH`.  The error is the bracket's width plus the reach of the
     arithmetic, ``10^(5 - dps) scale / |f'|``: narrowed to 1e-18 of ``theta``, the ends' values fall to the
-    rounding of ``f`` at the body's digits, whose sign is then not known (1e-11 past the box 1 x 2 x 3's
-    pitchfork, at 34 digits, the true root lay 2e-24 from a bracket 7e-25 wide)."""
+    rounding of ``f`` at the body's digits, whose sign is then not known (1e-13 past the box 1 x 2 x 3's
+    pitchfork, at 34 digits, the true root lay 2.3e-24 from a bracket 7e-25 wide)."""
     theta = 1e-3 * math.sqrt(abs(lam) / scale)
     sign = 1 if lam > 0 else -1
     with mpmath.workdps(poly.dps):
