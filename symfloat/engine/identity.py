@@ -288,14 +288,18 @@ def _sample(pairs, domain: Domain, seed_text: str, samples: int, balls: bool = T
         if sp.sympify(c).free_symbols & symbols:
             symbols |= sp.sympify(c).free_symbols
     draw = domain.sampler(seed_text)
-    good, exact, by_ball = 0, True, None        # by_ball: a value taken from a ball, (expression, point)
+    good, exact = 0, True
+    by_ball = None          # the first value of a point kept that was taken from a ball: (expression, point)
+    irrational = False      # a value of a point kept that SymPy gave was not rational
 
     def value(expr, point):
-        nonlocal by_ball
-        if balls and _rational_at(expr, point) is None and (v := _ball_value(expr, point)) is not None:
-            by_ball = by_ball or (expr, point)
-            return v, None
-        return _sympy_value(expr, point)
+        """``(value, exact, from a ball)``."""
+        v = _rational_at(expr, point)
+        if v is not None:
+            return v, True, False
+        if balls and (v := _ball_value(expr, point)) is not None:
+            return v, False, True
+        return (*_value(expr.xreplace(point)), False)
 
     for _ in range(samples * 20):
         if good >= samples:
@@ -308,7 +312,10 @@ def _sample(pairs, domain: Domain, seed_text: str, samples: int, balls: bool = T
         except (ArithmeticError, ZeroDivisionError, TypeError):
             continue
         good += 1
-        for ((va, ea), (vb, eb)) in values:
+        for (a, b), ((va, ea, ball_a), (vb, eb, ball_b)) in zip(pairs, values):
+            for expr, e, ball in ((a, ea, ball_a), (b, eb, ball_b)):
+                by_ball = by_ball or ((expr, point) if ball else None)
+                irrational = irrational or not (e or ball)
             exact = exact and ea and eb
             if ea and eb:
                 agree = va == vb
@@ -322,10 +329,9 @@ def _sample(pairs, domain: Domain, seed_text: str, samples: int, balls: bool = T
                     "point": {str(k): str(v) for k, v in sorted(point.items(), key=lambda kv: kv[0].name)
                               if k in own},
                     "lhs": _show(va), "rhs": _show(vb)}
-    if exact is None:       # inexact only where a ball gave a value: SymPy's says whether that one was rational
-        if _sympy_value(*by_ball)[1]:
-            return _sample(pairs, domain, seed_text, samples, balls=False)
-        exact = False
+    if by_ball and not exact and not irrational and _sympy_value(*by_ball)[1]:
+        # inexact only where a ball gave a value, and SymPy's value of the first of them is rational
+        return _sample(pairs, domain, seed_text, samples, balls=False)
     return ("sampled" if good else "undecided"), good, exact, None
 
 
