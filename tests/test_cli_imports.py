@@ -3,6 +3,7 @@ neither SymPy nor NumPy nor the checking engine (measured by the modules a fresh
 a subcommand's own help builds its options."""
 import functools
 import json
+import os
 import subprocess
 import sys
 
@@ -67,3 +68,12 @@ def test_a_scene_loads_no_module_only_other_bodies_use(tmp_path):
         assert not {m for m in modules if m.endswith(".statements")}, argv
     ran = _run("scene", "cylinder", "--dims", "1,2", "--density", "0.3", "--format", "json")
     assert "symfloat.geometry.cylinder" in ran["modules"]
+
+
+def test_sympy_keeps_the_cache_symfloat_sizes_unless_the_environment_sizes_it():
+    # symfloat/__init__.py sets SYMPY_CACHE_SIZE before SymPy is imported (SymPy reads it once, at its import)
+    probe = "import symfloat, sympy.core.cache as c; print(c.SYMPY_CACHE_SIZE)"
+    env = {k: v for k, v in os.environ.items() if k != "SYMPY_CACHE_SIZE"}
+    sizes = [subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True,
+                            env={**env, **extra}).stdout.strip() for extra in ({}, {"SYMPY_CACHE_SIZE": "500"})]
+    assert sizes == ["100000", "500"]
