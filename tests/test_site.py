@@ -671,28 +671,31 @@ def _in_chromium(site: Path, names: list[str], both: set[str] | None = None) -> 
         browser.close()
 
 
-def _erratum_sample(pages: dict[str, _Page], errata: list[str]) -> set[str]:
-    """The erratum pages most likely to show what the browser catches, chosen from the built HTML: the first and
-    the last by name and the top three by each measure (ties by name; pages that measure 0 are not ranked) of
-    sideways overflow at 420 px (the widest display formula, the longest word or link, the widest table row) and
-    of bare names and visible TeX (the most formulas)."""
-    chosen = {min(errata), max(errata)}
+def _sample(pages: dict[str, _Page], made: list[str]) -> set[str]:
+    """The pages of one template (*made*: the errata's, the notebooks') most likely to show what the browser
+    catches, chosen from the built HTML: the first and the last by name and the top three by each measure (ties by
+    name; pages that measure 0 are not ranked) of sideways overflow at 420 px (the widest display formula, the
+    longest word or link, the widest table row) and of bare names and visible TeX (the most formulas)."""
+    chosen = {min(made), max(made)}
     for measure in ("widest_display", "longest_word", "widest_row", "formulas"):
-        ranked = sorted((-getattr(pages[name], measure), name) for name in errata)
+        ranked = sorted((-getattr(pages[name], measure), name) for name in made)
         chosen.update(name for size, name in ranked[:3] if size < 0)
     return chosen
 
 
-def test_every_page_but_a_sample_of_errata_in_headless_chromium(site, pages, records):
-    # the pages of one erratum each, made from one template: a sample is laid out (their bare names are read
-    # from the HTML of every page by test_no_name_is_spelled_in_italic_letters); every other page is visited
+def test_every_page_but_a_sample_of_errata_and_notebooks_in_headless_chromium(site, pages, records):
+    # the pages of one erratum each, and of one notebook each, are made from one template apiece: a sample of each
+    # is laid out (their bare names and TeX are read from the HTML of every page by the static tests above);
+    # every other page is visited
     errata = sorted(f"errata/{slug(e['id'])}.html" for e in records.errata)
-    sample = _erratum_sample(pages, errata) | {name for name in _SHOTS if name in errata}
-    assert len(errata) > 100 and len(sample) < 20
+    notebooks = sorted(f"notebooks/{d}.html" for d in records.notebooks)
+    sample = _sample(pages, errata) | _sample(pages, notebooks) | {name for name in _SHOTS if name in pages}
+    assert len(errata) > 100 and len(notebooks) > 15 and len(sample & set(errata)) < 20
+    assert len(sample & set(notebooks)) < len(notebooks)
     # at both widths the pages photographed at both; every other page at the phone's width alone
-    _in_chromium(site, sorted(set(pages) - set(errata) | sample), both=set(_SHOTS))
+    _in_chromium(site, sorted(set(pages) - set(errata) - set(notebooks) | sample), both=set(_SHOTS))
 
 
-@pytest.mark.slow     # every erratum page too, and every page at both widths (about 60 s more)
+@pytest.mark.slow     # every erratum and notebook page too, and every page at both widths (about 80 s more)
 def test_every_page_in_headless_chromium(site, pages):
     _in_chromium(site, sorted(pages))

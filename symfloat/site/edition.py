@@ -29,7 +29,6 @@ from ..report.labels import sections
 from ..report.ledger import REASONS, account, waivers
 from ..report.witness_words import error_cells
 from .difference import corrected_html
-from .names import typeset_names
 from .records import Records, slug
 from .text import excerpt_html, prose_html, render
 from .typeset import typeset
@@ -201,7 +200,7 @@ def note(f: dict, records: Records, root: str, printed_html: str = "") -> str:
               f"<p>{how[0].upper() + how[1:]}." + (f' {prose_html(erratum["evidence"])}' if erratum else "") + "</p>"]
     if cell and cell.reading:
         lines.append(f'<p>Read as printed:</p><div class="reading">'
-                     f'{typeset(typeset_names(f["derivation"], cell.reading), display=True)}</div>')
+                     f'{typeset(cell.reading, display=True)}</div>')
     lines.append(_witness_table(f["numeric"]))
     links = []
     if erratum:

@@ -6,10 +6,9 @@ heading (an anchor the edition and the errata link to), the quotations (``> exce
 transcription shows them, and the fractions a note writes in TeX without dollars (``\\frac{a}{b}``
 in a line ``Note: ...``) put between dollars, so that they are rendered.  A quotation is an excerpt verbatim, and an excerpt may begin or
 end inside a formula (its dollars then do not pair up); found in the transcription, it is widened to
-whole math spans and rendered like the edition, typeset included.  And a symbol the notebook wrote in
-SymPy's printing of its program name (``tan^{2varphi}_{1}``) is written under its typeset name
-(:mod:`.names`), in the text and in the outputs; a correction in words that the notebook displayed
-as one formula (``$$ $a$ if ... $$``) is shown as the words it is.
+whole math spans and rendered like the edition, typeset included.  A correction in words that the notebook
+displayed as one formula (``$$ $a$ if ... $$``) is shown as the words it is.  The symbols are shown as the
+notebook wrote them: under their typeset names (:mod:`symfloat.model.symbol_names`).
 """
 from __future__ import annotations
 
@@ -19,7 +18,6 @@ from pathlib import Path
 
 
 from .edition import cell_label, quotes
-from .names import renaming
 from .records import Records
 from .text import excerpt_html
 
@@ -75,16 +73,13 @@ def staged_notebook(path: Path, records: Records, derivation: str, text: str, pi
         nb["cells"].insert(1, {"cell_type": "markdown", "id": "symfloat-site-pictures", "metadata": {},
                                "source": f"In pictures: {links}."})
     anchors = {c.cell for fid, c in records.cells.items() if fid.startswith(derivation + "/")}
-    rename = renaming(derivation) or (lambda text: text)
     for cell in nb["cells"]:
         for output in cell.get("outputs", ()):
             if "text/markdown" in output.get("data", {}):
-                output["data"]["text/markdown"] = rename(_WORDS_DISPLAYED.sub(
-                    r"\1", "".join(output["data"]["text/markdown"])))
+                output["data"]["text/markdown"] = _WORDS_DISPLAYED.sub(r"\1", "".join(output["data"]["text/markdown"]))
         if cell["cell_type"] != "markdown":
             continue
         source = _QUOTE.sub(lambda m: _quotation(m, text), "".join(cell["source"]))
-        source = rename(source)
         source = re.sub(r"(?m)^Note: .*$", lambda m: _dollar_fractions(m.group(0)), source)
         if cell.get("id") in anchors:
             source = f"({cell_label(derivation, cell['id'])})=\n" + source
