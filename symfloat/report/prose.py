@@ -23,6 +23,11 @@ an equation number in brackets is the source's, not a factor:
 >>> typeset("stable iff (a/b)^2 > 6s(1 - s) (123), F(1) (141, 142)")
 'stable iff $(a/b)^{2} > 6s(1 - s)$ (123), F(1) (141, 142)'
 
+Arrows are arrows (``->`` a limit or a map, ``<->`` an exchange):
+
+>>> typeset("phi -> 0, the duality s <-> 1 - s")
+'$\\\\varphi \\\\to 0$, the duality $s \\\\leftrightarrow 1 - s$'
+
 >>> typeset("B = (M_xi, M_eta)/V_t and tan phi_lim(45 deg), int_0^alpha t dt, omega* the axis")
 'B = ($M_{\\\\xi}$, $M_{\\\\eta}$)$/V_{t}$ and $\\\\tan \\\\varphi_{\\\\lim}(45 ^{\\\\circ})$, $\\\\int_{0}^{\\\\alpha} t dt$, $\\\\omega^{*}$ the axis'
 """
@@ -42,7 +47,7 @@ _TEX = {"phi": r"\varphi", "varphi": r"\varphi", "epsilon": r"\varepsilon", "ata
         "sqrt": r"\sqrt", "int": r"\int", "√": r"\sqrt", "∫": r"\int", "·": r"\cdot", "−": "-",
         "<=": r"\le", ">=": r"\ge", "≤": r"\le", "≥": r"\ge", "±": r"\pm", "+-": r"\pm", "oo": r"\infty",
         "*": r"\cdot", "π": r"\pi", "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu",
-        "≈": r"\approx", "→": r"\to", "∞": r"\infty",
+        "≈": r"\approx", "→": r"\to", "->": r"\to", "<->": r"\leftrightarrow", "↔": r"\leftrightarrow", "∞": r"\infty",
         # Greek letters written as themselves (Euler's κ, μ, ν in the notes of §§229-243)
         "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon", "κ": r"\kappa",
         "λ": r"\lambda", "ν": r"\nu", "ξ": r"\xi", "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau", "ψ": r"\psi",
@@ -61,7 +66,7 @@ _TOKEN = re.compile(r"""
   | (?P<word>[A-Za-z][A-Za-z]*'?(?:s\b)?)
   | (?P<index>[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))                                   # ∫_0^b, s^*, )^κ, )^{3κ-1}
   | (?P<number>\d+(?:\.\d+)?)
-  | (?P<relation><=|>=|[=<>≤≥≈]|->|→)
+  | (?P<relation><->|<=|>=|[=<>≤≥≈↔]|->|→)
   | (?P<power>[²³⁴¹⁰⁵⁶⁷⁸⁹ⁿ]+)                                                       # y²ⁿ
   | (?P<operator>\+-|[-+*/()±·−√∫∞πθφωμαβγδεκλνξρστψΓΔ])
   | (?P<other>.)
