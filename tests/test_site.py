@@ -28,7 +28,7 @@ from symfloat.model.span import math_intervals  # noqa: E402
 from symfloat.site import typeset  # noqa: E402
 from symfloat.site.build import MARKER, _sync  # noqa: E402
 from symfloat.site.edition import edition_page, fault_words, formula_anchor, mark_of, places  # noqa: E402
-from symfloat.site.errata_pages import errata_index  # noqa: E402
+from symfloat.site.errata_pages import errata_index, facet_pages  # noqa: E402
 from symfloat.site.difference import corrected_html  # noqa: E402
 from symfloat.site.notebooks import staged_notebook  # noqa: E402
 from symfloat.site.records import load_records, slug  # noqa: E402
@@ -139,6 +139,17 @@ def test_the_two_apparatus_are_marked_apart(records, edition):
     assert index.index("[Scheeffer, (81a)]", transcription) > transcription
     assert original < index.index("[Scheeffer, (78c)]") < transcription
     assert "[Scheeffer, (81a)]" not in index[original:transcription]
+
+
+def test_the_errata_lists_name_sources_as_a_reader_cites_them(records):
+    # symfloat/sources/*.source.json: Scheeffer 1902, Graefe 1866, Euler 1749; the lesson and the long prism are
+    # anonymous, named by their titles
+    index, facets = errata_index(records), facet_pages(records)
+    by_source = next(line for line in index.splitlines() if line.startswith("- source: "))
+    assert "[Scheeffer 1902](source-scheeffer.md)" in by_source and "[Hasáb úszása](source-hasab.md)" in by_source
+    assert "[scheeffer]" not in by_source and "Anonymous" not in index
+    assert facets["source-euler.md"].startswith("# Errata: Euler 1749\n")
+    assert "- [Auftrieb Stabilität, " in facets["source-metazentrum.md"]
 
 
 def test_the_correction_is_shown_in_place(edition):

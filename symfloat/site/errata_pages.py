@@ -54,7 +54,7 @@ def erratum_page(e: dict, records: Records) -> str:
         f'<p>See {" and ".join(links)}.</p>',
     ]
     what = "Correction of the transcription" if mark == "transcription" else "Fault of the original"
-    return "\n".join([f"# {what}: {source.author.split()[-1]}, {e['locator']}", "",
+    return "\n".join([f"# {what}: {_short(e['source'])}, {e['locator']}", "",
                       "````{raw} html", *body, "````", ""])
 
 
@@ -70,13 +70,26 @@ def _value(e: dict, facet: str) -> str:
     return _apparatus(e) if facet == "apparatus" else e[facet]
 
 
+def _short(key: str) -> str:
+    """A source as a reader cites it briefly: its author's surname (Scheeffer), or for an anonymous text its
+    title without a gloss (Hasáb úszása)."""
+    source = SOURCES[key]
+    return source.title.split(" (")[0] if source.author == "Anonymous" else source.author.split()[-1]
+
+
 def _label(facet: str, value: str) -> str:
-    return _APPARATUS_WORDS[value] if facet == "apparatus" else value
+    """A facet's value in words: an apparatus by its name, a source by its short name and year (Scheeffer 1902),
+    a kind or a confidence as it is."""
+    if facet == "apparatus":
+        return _APPARATUS_WORDS[value]
+    if facet == "source" and value in SOURCES:
+        year = SOURCES[value].year
+        return f"{_short(value)} {year}" if year else _short(value)
+    return value
 
 
 def _line(e: dict) -> str:
-    author = SOURCES[e["source"]].author.split()[-1]
-    return (f"- [{author}, {e['locator']}]({slug(e['id'])}.md) — {e['kind']}, {e['confidence']} confidence: "
+    return (f"- [{_short(e['source'])}, {e['locator']}]({slug(e['id'])}.md) — {e['kind']}, {e['confidence']} confidence: "
             f"{inline(reason_of(e).rstrip('.'))}")
 
 
@@ -87,7 +100,8 @@ def facet_pages(records: Records) -> dict[str, str]:
         for value in _facet_values(records, facet):
             chosen = [e for e in records.errata if _value(e, facet) == value]
             pages[f"{facet}-{slug(value)}.md"] = "\n".join(
-                [f"# Errata: {_label(facet, value)}" if facet == "apparatus" else f"# Errata: {facet} {value}", "",
+                [f"# Errata: {_label(facet, value)}" if facet in ("apparatus", "source") else
+                 f"# Errata: {facet} {value}", "",
                  f"{len(chosen)} of {len(records.errata)} errata.", "", *(_line(e) for e in chosen), ""])
     return pages
 
