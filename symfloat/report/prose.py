@@ -47,7 +47,8 @@ _TEX = {"phi": r"\varphi", "varphi": r"\varphi", "epsilon": r"\varepsilon", "ata
         "sqrt": r"\sqrt", "int": r"\int", "√": r"\sqrt", "∫": r"\int", "·": r"\cdot", "−": "-",
         "<=": r"\le", ">=": r"\ge", "≤": r"\le", "≥": r"\ge", "±": r"\pm", "+-": r"\pm", "oo": r"\infty",
         "*": r"\cdot", "π": r"\pi", "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu",
-        "≈": r"\approx", "→": r"\to", "->": r"\to", "<->": r"\leftrightarrow", "↔": r"\leftrightarrow", "∞": r"\infty",
+        "≈": r"\approx", "→": r"\to", "->": r"\to", "<->": r"\leftrightarrow", "↔": r"\leftrightarrow",
+        "∞": r"\infty",
         # Greek letters written as themselves (Euler's κ, μ, ν in the notes of §§229-243)
         "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon", "κ": r"\kappa",
         "λ": r"\lambda", "ν": r"\nu", "ξ": r"\xi", "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau", "ψ": r"\psi",

@@ -89,8 +89,8 @@ def _label(facet: str, value: str) -> str:
 
 
 def _line(e: dict) -> str:
-    return (f"- [{_short(e['source'])}, {e['locator']}]({slug(e['id'])}.md) — {e['kind']}, {e['confidence']} confidence: "
-            f"{inline(reason_of(e).rstrip('.'))}")
+    return (f"- [{_short(e['source'])}, {e['locator']}]({slug(e['id'])}.md) — {e['kind']}, {e['confidence']} "
+            f"confidence: {inline(reason_of(e).rstrip('.'))}")
 
 
 def facet_pages(records: Records) -> dict[str, str]:
