@@ -20,7 +20,7 @@ from symfloat.site import typeset
 from symfloat.site.edition import reason_of
 from symfloat.site.errata_pages import erratum_page
 from symfloat.site.records import Records, load_records
-from symfloat.site.text import prose_html
+from symfloat.site.text import dollars_html, prose_html
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -50,8 +50,9 @@ class _Words(HTMLParser):
 
 
 def ascii_maths(text: str) -> list[str]:
-    """The ASCII maths in the words of *text* as the site renders it (its formulas typeset by KaTeX)."""
-    rendered = prose_html(text)
+    """The ASCII maths in the words of *text* as the site renders its dollars (typeset by KaTeX), before the site
+    sets what ASCII maths is left (``prose_html``): an erratum's words are written in TeX."""
+    rendered = dollars_html(text)
     parser = _Words()
     parser.feed(rendered)
     return [m.group(0) for m in ASCII_MATHS.finditer("".join(parser.words))] + \
@@ -74,6 +75,8 @@ def test_the_check_sees_ascii_maths_and_passes_typeset_maths():
     assert ascii_maths(r"at $\omega = 0$ ($\sin^2 45^\circ = \tfrac12$), so $(2s-1)(4s-3) \ge 0$: only "
                        r"$s \ge \tfrac34$; $\operatorname{tg}\varphi_1 = \sqrt{11/32}$, $1.6 \cdot 11/32$") == []
     assert ascii_maths(r"a stray environment: $\frac{a}{b} \end{cases}$") == ["a formula KaTeX could not typeset"]
+    # what an author left in ASCII the site still sets as a formula (Graefe §2's "factor 2m instead of 2m/3")
+    assert 'class="katex' in prose_html("factor 2m instead of 2m/3") and "2m/3" in dollars_html("2m/3")
 
 
 def test_the_engine_writes_the_point_under_typeset_names_and_its_numbers_as_numbers():

@@ -1,4 +1,4 @@
-"""The words of the derivation notebooks (symfloat/report/prose.py): the ASCII mathematics of a derivation's
+"""The words of the derivation notebooks (symfloat/prose.py): the ASCII mathematics of a derivation's
 notes, witnesses and errata typeset so that a Greek letter or a function is its sign, never its name set as
 italic letters, and the "About this section" text without the names of the program."""
 from __future__ import annotations
@@ -12,7 +12,7 @@ from symfloat import registry
 from symfloat.model.symbol_names import GREEK
 from symfloat.registry import load
 from symfloat.report.notebook_view import reading_markdown
-from symfloat.report.prose import typeset, without_program_names
+from symfloat.prose import typeset, without_program_names
 
 # the names the site's browser test looks for as runs of italic letters in a formula (tests/test_site.py)
 _NAMES = sorted([g for g in GREEK if g[0].islower()] + ["sin", "cos", "tan", "cot", "tg", "log", "lim"],
@@ -39,14 +39,14 @@ def test_the_check_sees_a_name_set_as_letters():
 
 
 @pytest.mark.parametrize("text, tex", [
-    ("B = (M_xi, M_eta, M_z)/V_t", r"$M_{\eta}$"),                    # Scheeffer VI.A-B, step righting-arm
+    ("B = (M_xi, M_eta, M_z)/V_t", r"$B = (M_{\xi}, M_{\eta}, M_{z})/V_{t}$"),   # Scheeffer VI.A-B: one formula
     ("S_omega = sin^2(45 deg + omega*)", r"$S_{\omega} = \sin^{2}(45 ^{\circ} + \omega^{*})$"),   # VI.C-F (78d)
     ("(tan^2 phi_lim(45 deg) - tan^2 phi_1)/2", r"\varphi_{\lim}(45 ^{\circ})"),
     ("= int_0^alpha 2 sin t (t - sin t) dt > 0", r"\int_{0}^{\alpha}"),
     ("I_rhomb = ab^3/3", r"I_{\text{rhomb}}"),                        # Euler §§192-219, rhombus-twice: not rho·m·b
     ("tg^2 phi_1 = -2 V_1 h_A / T_1", r"\operatorname{tg}^{2} \varphi_{1}"),     # Scheeffer's German tangent
     ("dT_mu/dmu of the tensor", r"dT_{\mu}/d\mu"),                    # Scheeffer VII-VIII (108)
-    ("w = (cos phi, sin phi) in the plane", r"($\cos \varphi$, $\sin \varphi$)"),   # both, not only the second
+    ("w = (cos phi, sin phi) in the plane", r"$w = (\cos \varphi, \sin \varphi)$"),   # both, one formula
     # Scheeffer IX: an equation number is the source's, not a factor (read "6s(1-s)(123)" and "2(164a - 166)")
     ("(a/b)^2 > 6s(1 - s) (123); cot^2 phi_3 = 2 (164a-166)", r"$(a/b)^{2} > 6s(1 - s)$ (123)"),
     ("cot^2 phi_3 = 12(a/b)^2 s(1-s) - 2 (164a-166), and x = D/(2a)", r"- 2$ (164a-166), and $x = D/(2a)$"),
@@ -75,6 +75,34 @@ def _texts(derivation: str):
     yield from ((f"erratum {p.name}", p.erratum.evidence) for p in d.printed
                 if p.erratum is not None and p.erratum.evidence)
     yield from (("witness", w.description) for w in d.witnesses)
+
+
+@pytest.mark.parametrize("text, shown", [
+    # a segment named by its two points is a name inside a formula (Euler §§192-219's notes, Scheeffer X's BH)
+    ("M (GZ - phi GM)/phi^3 of the heeled box", r"$M (GZ - \varphi GM)/\varphi^{3}$ of the heeled box"),
+    ("the distance BH = ρ < a", r"the distance $BH = \rho < a$"),
+    ("EF lies at the distance Cc = (c - a)/3 from ef", r"EF lies at the distance $Cc = (c - a)/3$ from ef"),
+    # a sum, difference or quotient of letters is a formula without a Greek letter or an index (Scheeffer IX)
+    ("n + 1/n, the same at both double roots", r"$n + 1/n$, the same at both double roots"),
+    ("z_+ - z_-, 4 z_+ - 3 at the roots", r"$z_+ - z_-$, $4 z_+ - 3$ at the roots"),
+    # a product written with a dot, a Python power and a comma inside a formula's bracket
+    ("the product u.(G - B)", r"the product $u\cdot(G - B)$"),
+    ("the moment is (2*a**2)/6", r"the moment is $(2\cdot a^{2})/6$"),
+    ("'sqrt{2}^1': a stray mark", r"'$\sqrt{2}^{1}$': a stray mark"),
+    ("its derivative is (du/dtheta).(G - B)", r"its derivative is $(du/d\theta)\cdot(G - B)$"),
+    ("b^{p+1}/n · B((p+1)/n, q+1), the Beta function", r"$b^{p+1}/n \cdot B((p+1)/n, q+1)$, the Beta function"),
+    # what stays words: a segment alone, a chapter's numeral, a sign in brackets, a range of pages, a coordinate
+    # pair of numbers, and a quotation of the source, kept verbatim
+    ("from AB up to M, by Scheeffer IX and VI, sections I-III", "from AB up to M, by Scheeffer IX and VI, sections I-III"),
+    ("G lies below (+) or above (-) B", "G lies below (+) or above (-) B"),
+    ("the slab a-c, (step e2-e3), (sign-of-P)", "the slab a-c, (step e2-e3), (sign-of-P)"),
+    ("('Ac = a - c et Oc = c')", "('Ac = a - c et Oc = c')"),
+    ("pages 3 - 5, the points (0, 0) and (G below, G above B)", "pages 3 - 5, the points (0, 0) and (G below, G above B)"),
+    ("quoted in §3 ('zusammen fanden h/3{2D - (G+g)/2}'), so", "quoted in §3 ('zusammen fanden h/3{2D - (G+g)/2}'), so"),
+    ("the rectangle's moments over the rhombus' (same a, b)", "the rectangle's moments over the rhombus' (same a, b)"),
+])
+def test_formulas_and_words_are_told_apart(text, shown):
+    assert typeset(text) == shown
 
 
 # what TeX refuses: an index or exponent given twice (y^{2}^{n}, J_{1K}_{1}, x_{3}^{1}')

@@ -758,7 +758,7 @@ for kappa in KAPPAS:
                                                       corrected_reading=(Nk[kappa], n_value),
                                                       objection=n_objection, answer=n_answer),
             note=claim("for κ = %s, N = ∫(1 − yⁿ/bⁿ)^{3κ−1}dy / ∫(1 − yⁿ/bⁿ)^κ dy is the printed entry; rebuilt "
-                       "from the Beta integrals: N = %s." % (kappa, n_tex)))
+                       "from the Beta integrals: N = $%s$." % (kappa, n_tex)))
     k_excerpt, k_printed = K_PRINTED[kappa]
     k_value, k_tex = K0_rebuilt(kappa)
     d.quote("K-table-%s" % _label(kappa), "§234", k_excerpt, reading=(Kk[kappa], 2 * a ** 2 * Dk[kappa] * k_printed),
@@ -778,7 +778,7 @@ for kappa in KAPPAS:
                        "the row κ = 1), which a compositor following a right manuscript would not add to every "
                        "fraction and a transcription that continues a pattern does; the print cannot be seen: "
                        "medium."),
-            note=claim("for c = 0 and κ = %s the moment about EF is the printed entry; rebuilt: 2a²D·%s."
+            note=claim("for c = 0 and κ = %s the moment about EF is the printed entry; rebuilt: $2a^2 D \\cdot %s$."
                        % (kappa, k_tex)))
 
 # ================================================================ §235: n → ∞, the rectangle
@@ -822,7 +822,7 @@ for case_name, case_kv, case_nv, case_excerpt, f1, f2 in CASES236:
     d.quote("case-" + case_name, "§236", case_excerpt,
             reading=(sp.Subs(Kk[case_kv], n, case_nv), *as_printed(lambda: (sp.Subs(f1 * Dk[case_kv], n, case_nv), sp.Subs(f2 * Dk[case_kv], n, case_nv)))),
             note=claim("for κ = %s, n = %s (c = 0) the moment about EF is %s·D, D the half area of that figure."
-                       % (case_kv, case_nv, sp.sstr(f1))))
+                       % (case_kv, case_nv, sp.sstr(f1).replace("**", "^").replace("*", " "))))
 d.quote("kappa-above-1", "§236", r"posito enim $\kappa > 1$ tum curua in e et f habebit cuspides ac tangentes "
         r"ad AB normales", reading=(sp.Limit(slope.subs({k: 2, n: 2}), y, b, "-"), 0),
         note=claim("for κ > 1 the two portions meet at e with dx/dy → 0, a common tangent normal to AB: a cusp "

@@ -16,6 +16,7 @@ import unicodedata
 from collections import Counter
 
 from ..engine.check import DerivationReport
+from .cross_references import readable_in
 from ..model.erratum import APPARATUS, apparatus
 from ..model.source import get_source
 
@@ -51,9 +52,10 @@ def errata_entries(reports: list[DerivationReport]) -> list[dict]:
                 "alias": f"{f.source}-{f.locator}-{counter[(f.source, f.locator)]}",
                 "source": f.source, "locator": f.locator, "printed": f.excerpt,
                 "corrected": f.erratum["corrected"], "kind": f.erratum["kind"],
-                "confidence": f.erratum["confidence"], "evidence": f.erratum["evidence"],
+                "confidence": f.erratum["confidence"], "evidence": readable_in(d.id, f.erratum["evidence"]),
                 "derivation": d.id, "formula": f.id, "apparatus": apparatus(f.erratum["kind"]),
-                **{k: f.erratum[k] for k in ("places", "objection", "answer") if f.erratum.get(k)},
+                **{k: f.erratum[k] for k in ("places",) if f.erratum.get(k)},
+                **{k: readable_in(d.id, f.erratum[k]) for k in ("objection", "answer") if f.erratum.get(k)},
             })
     return entries
 

@@ -21,7 +21,8 @@ from ..model.relation import is_relation, relation_latex
 from ..model.symbol_names import latex
 from ..registry import load
 from .notebook_code import STRATEGY_WORDS
-from .prose import typeset
+from ..prose import typeset
+from .cross_references import readable_in
 from .witness_words import error_cells
 
 __all__ = ["NotebookView", "definitions_markdown", "step_markdown", "step_title", "step_titles", "reading_markdown",
@@ -109,8 +110,14 @@ def _capital(text: str) -> str:
     return text[0].upper() + text[1:]
 
 
-def _sentence(text: str) -> str:
-    text = typeset(text.strip())
+def words(d, text: str) -> str:
+    """Words of derivation *d* for a reader: the steps and formulas they cite by their notebook's numbering
+    (:func:`~symfloat.report.cross_references.readable_in`), the mathematics typeset."""
+    return typeset(readable_in(d.id, text))
+
+
+def _sentence(d, text: str) -> str:
+    text = words(d, text.strip())
     return _capital(text) + ("" if text.endswith((".", "?", "!")) else ".")
 
 
@@ -122,7 +129,7 @@ def step_title(d, step) -> str:
     (not a locator's bracket, "in (12)") that leaves at least three words; a longer phrase is cut at a space
     outside its formulas before 70 characters."""
     if step.note:
-        note = typeset(step.note.strip())
+        note = words(d, step.note.strip())
         outside = _outside_formulas(note)
         cuts = [m.start() for m in re.finditer(r"[;:]\s|\s\((?![\d§])|,\s", note)
                 if outside[m.start()] and len(note[:m.start()].split()) >= 3
@@ -195,7 +202,7 @@ def step_markdown(d, index: int, step, findings: str = "", title: str = "") -> s
                  if p.erratum is not None else "")
         out.append(f"The source ({p.locator}){fault}:\n\n{_quoted(p.excerpt)}")
     if step.note:
-        out.append(f"In our words ({d.locator}): {_sentence(step.note)}")
+        out.append(f"In our words ({d.locator}): {_sentence(d, step.note)}")
     out.append(("Definition:" if step.why == "definition" else "Before and after:") + "\n\n"
                + chain_latex(d, step.claim))
     if step.result is not None:
@@ -249,7 +256,7 @@ def reading_markdown(d, p, findings: str = "") -> str:
     if derived:
         out.append(derived)
     if p.note:
-        out.append(f"Note: {_sentence(p.note)}")
+        out.append(f"Note: {_sentence(d, p.note)}")
     if findings:
         out.append(findings)
     return "\n\n".join(out)
@@ -325,8 +332,8 @@ class NotebookView:
     def _witnesses(self, target: str) -> str:
         """What the first-principles witnesses of *target* compute, in the derivation's words."""
         ws = [w for w in self.derivation.witnesses if target.split("#")[0] in w.targets]
-        return "; ".join(typeset(w.description) + (f" ({len(w.instances)} cases)" if hasattr(w, "instances")
-                                                   else "") for w in ws)
+        return "; ".join(words(self.derivation, w.description)
+                         + (f" ({len(w.instances)} cases)" if hasattr(w, "instances") else "") for w in ws)
 
     def step_markdown(self, name: str) -> str:
         s = next(s for s in self.report.steps if s.name == name)
@@ -346,14 +353,14 @@ class NotebookView:
         if f.identity and f.verdict in ("verified", "erratum", "trivial"):
             out.append(f"The reading against the derivation: {_how(f.identity, f.identity['status'])}.")
         if f.reason:
-            out.append(f"Reason: {typeset(f.reason)}")
+            out.append(f"Reason: {words(self.derivation, f.reason)}")
         if f.erratum:
             e = f.erratum
             why = self.derivation.get_printed(name).erratum.evidence
             head = (f"Correction of the transcription (confidence {e['confidence']}); the original very probably "
                     f"printed:" if apparatus(e["kind"]) == "transcription"
                     else f"Fault of the original ({e['kind']}, confidence {e['confidence']}). Corrected:")
-            out.append(f"{head}\n\n{correction_markdown(e['kind'], e['corrected'])}\n\n{typeset(why)}")
+            out.append(f"{head}\n\n{correction_markdown(e['kind'], e['corrected'])}\n\n{words(self.derivation, why)}")
         what = self._witnesses(name) or ("the derivation's definitions evaluated at concrete values (no declared "
                                          "witness measures this formula)")
         out += _records(f"Witnesses against the printed formula — {what}:", f.numeric)

@@ -34,8 +34,8 @@ from ..leftovers import sweep_orphans
 from ..model.source import get_source
 from ..registry import load
 from .notebook_cells import CellWriter
-from .notebook_view import NotebookView, definitions_markdown, reading_markdown, step_markdown, step_titles
-from .prose import typeset, without_program_names
+from .notebook_view import NotebookView, definitions_markdown, reading_markdown, step_markdown, step_titles, words
+from ..prose import without_program_names
 from .stamp import digest
 
 __all__ = ["build_notebook", "execute_notebook", "kernel_files", "write_notebooks", "notebook_stamp", "recorded_stamp"]
@@ -121,11 +121,11 @@ def build_notebook(derivation_id: str, report=None) -> nbformat.NotebookNode:
     cells = [
         (cell_id("title"), md(
             f"# {d.title}\n\n{src.author}, *{src.title}*{', ' + str(src.year) if src.year else ''} — "
-            f"{d.locator}.\n\n{typeset(d.summary)}\n\n"
+            f"{d.locator}.\n\n{words(d, d.summary)}\n\n"
             + (f"Building on {', '.join(_work(r) for r in d.requires)}.\n\n" if d.requires else "")
             + f"Checked by `symfloat verify {d.id}`.\n\n**Assumptions**\n\n"
-            + "\n".join(f"- {typeset(a)}" for a in d.assumptions))),
-        *([(cell_id("about"), md("## About this section\n\n" + typeset(without_program_names(about))))]
+            + "\n".join(f"- {words(d, a)}" for a in d.assumptions))),
+        *([(cell_id("about"), md("## About this section\n\n" + words(d, without_program_names(about))))]
           if about else []),
         (cell_id("engine"), md("## What the engine found\n\n" + view.summary_markdown())),
         (cell_id("reading"), md(READING)),
@@ -187,8 +187,9 @@ def notebook_stamp(derivation_id: str, keys: dict) -> str:
     import sympy
 
     here = Path(__file__).resolve().parent
-    return digest(keys[derivation_id], *(here / f for f in ("notebooks.py", "notebook_view.py", "notebook_cells.py",
-                                                            "notebook_code.py", "prose.py")), sympy.__version__)
+    code = [here / f for f in ("notebooks.py", "notebook_view.py", "notebook_cells.py", "notebook_code.py",
+                               "cross_references.py")]
+    return digest(keys[derivation_id], *code, here.parent / "prose.py", sympy.__version__)
 
 
 def write_notebooks(ids, folder: str | os.PathLike = "notebooks", progress=None, *, force: bool = False) -> list[Path]:

@@ -8,6 +8,7 @@ from pathlib import Path
 from ..engine.check import DerivationReport
 from ..engine.witness import record_decision
 from ..files import write_if_changed
+from .cross_references import readable_in
 from .witness_words import best_error
 
 __all__ = ["verification_record", "verification_table", "record_differences", "record_json", "write_record",
@@ -20,7 +21,7 @@ def _formula_entry(d: DerivationReport, f) -> dict:
     entry = {"id": f.id, "source": f.source, "locator": f.locator, "verdict": f.verdict,
              "evidence": f.evidence, "numeric": f.numeric, "derivation": d.id, "printed": f.excerpt}
     if f.reason:
-        entry["reason"] = f.reason
+        entry["reason"] = readable_in(d.id, f.reason)
     if not f.numeric_content:
         entry["numeric_content"] = False
     if f.erratum:

@@ -23,6 +23,7 @@ import re
 from ..model.evidence_tex import spans
 from ..model.myst import unescaped
 from ..model.span import math_intervals
+from ..prose import typeset as ascii_mathematics
 from .typeset import typeset
 
 __all__ = ["blocks", "inline_html", "render", "excerpt_html", "prose_html"]
@@ -140,6 +141,12 @@ def excerpt_html(excerpt: str) -> str:
 
 
 def prose_html(text: str) -> str:
-    """Words of the records as HTML: the prose escaped, each ``$...$`` typeset inline."""
+    """Words of the records as HTML: what ASCII mathematics they still hold set as formulas (as the notebooks set
+    it, :func:`symfloat.prose.typeset`), then :func:`dollars_html`."""
+    return dollars_html(ascii_mathematics(text))
+
+
+def dollars_html(text: str) -> str:
+    """Words with their mathematics in dollars as HTML: the prose escaped, each ``$...$`` typeset inline."""
     return "".join(html.escape(piece, quote=False) if kind == "text" else typeset(piece)
                    for kind, piece in spans(text))

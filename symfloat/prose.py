@@ -23,13 +23,19 @@ an equation number in brackets is the source's, not a factor:
 >>> typeset("stable iff (a/b)^2 > 6s(1 - s) (123), F(1) (141, 142)")
 'stable iff $(a/b)^{2} > 6s(1 - s)$ (123), F(1) (141, 142)'
 
+A segment named by its points is a name inside a formula (``GZ``, ``BH``; ``Cc`` from a point to its
+companion), but alone it stays text, as does a chapter's numeral:
+
+>>> typeset("M (GZ - phi GM)/phi^3 from AB, by Scheeffer IX")
+'$M (GZ - \\\\varphi GM)/\\\\varphi^{3}$ from AB, by Scheeffer IX'
+
 Arrows are arrows (``->`` a limit or a map, ``<->`` an exchange):
 
 >>> typeset("phi -> 0, the duality s <-> 1 - s")
 '$\\\\varphi \\\\to 0$, the duality $s \\\\leftrightarrow 1 - s$'
 
 >>> typeset("B = (M_xi, M_eta)/V_t and tan phi_lim(45 deg), int_0^alpha t dt, omega* the axis")
-'B = ($M_{\\\\xi}$, $M_{\\\\eta}$)$/V_{t}$ and $\\\\tan \\\\varphi_{\\\\lim}(45 ^{\\\\circ})$, $\\\\int_{0}^{\\\\alpha} t dt$, $\\\\omega^{*}$ the axis'
+'$B = (M_{\\\\xi}, M_{\\\\eta})/V_{t}$ and $\\\\tan \\\\varphi_{\\\\lim}(45 ^{\\\\circ})$, $\\\\int_{0}^{\\\\alpha} t dt$, $\\\\omega^{*}$ the axis'
 """
 from __future__ import annotations
 
@@ -48,7 +54,7 @@ _TEX = {"phi": r"\varphi", "varphi": r"\varphi", "epsilon": r"\varepsilon", "ata
         "<=": r"\le", ">=": r"\ge", "≤": r"\le", "≥": r"\ge", "±": r"\pm", "+-": r"\pm", "oo": r"\infty",
         "*": r"\cdot", "π": r"\pi", "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu",
         "≈": r"\approx", "→": r"\to", "->": r"\to", "<->": r"\leftrightarrow", "↔": r"\leftrightarrow",
-        "∞": r"\infty",
+        "∞": r"\infty", "...": r"\ldots", "…": r"\ldots", "{": r"\{", "}": r"\}",
         # Greek letters written as themselves (Euler's κ, μ, ν in the notes of §§229-243)
         "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon", "κ": r"\kappa",
         "λ": r"\lambda", "ν": r"\nu", "ξ": r"\xi", "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau", "ψ": r"\psi",
@@ -56,6 +62,8 @@ _TEX = {"phi": r"\varphi", "varphi": r"\varphi", "epsilon": r"\varepsilon", "ata
 _SUPER = {"²": "2", "³": "3", "⁴": "4", "¹": "1", "⁰": "0", "⁵": "5", "⁶": "6", "⁷": "7", "⁸": "8", "⁹": "9",
           "ⁿ": "n"}
 _SIGNS = "πθφωμαβγδεκλνξρστψΓΔ"      # the Greek letters above
+_SECTION = re.compile(r"[IVX]+\.[A-Z](?:[-–][A-Z])?")        # a section of a chapter: VI.C, VI.C-F
+_ROMAN = ("I", "II", "III", "IV", "V", "VI", "VII", "VIII", "IX", "X", "XI", "XII")      # a chapter's numeral
 
 _TOKEN = re.compile(r"""
     (?P<space>[ ]+)
@@ -63,18 +71,19 @@ _TOKEN = re.compile(r"""
   | (?P<degrees>(?:(?<=\d)|(?<=\d[ ]))deg\b)                                        # 45 deg
   | (?P<starred>\b[A-Za-z]+\*(?![\w(*]))                                           # omega*, s*
   | (?P<compound>\b[A-Za-z]-(?!(?:sin|cos|tan|cot|log|exp|sqrt)\b)[a-z]{3,}\b)        # n-gon, x-axis: a word
-  | (?P<name>[A-Za-z][A-Za-z0-9]*(?:[_^](?:\{[^{}$]+\}|\d+(?=[A-Z]\w*[_^])|[A-Za-z0-9*κν]+))+'?)   # T_1^1, y^{p+1}
+  | (?P<name>[A-Za-z][A-Za-z0-9]*(?:[_^](?:\{[^{}$]+\}|\d+(?=[A-Z]\w*[_^])|[A-Za-z0-9*κν]+|[+-](?![\w(])))+'?)
+                                                                          # T_1^1, y^{p+1}, z_+
   | (?P<word>[A-Za-z][A-Za-z]*'?(?:s\b)?)
   | (?P<index>[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))                                   # ∫_0^b, s^*, )^κ, )^{3κ-1}
   | (?P<number>\d+(?:\.\d+)?)
   | (?P<relation><->|<=|>=|[=<>≤≥≈↔]|->|→)
   | (?P<power>[²³⁴¹⁰⁵⁶⁷⁸⁹ⁿ]+)                                                       # y²ⁿ
-  | (?P<operator>\+-|[-+*/()±·−√∫∞πθφωμαβγδεκλνξρστψΓΔ])
+  | (?P<operator>\+-|\.\.\.|…|[-+*/(){}±·−√∫∞πθφωμαβγδεκλνξρστψΓΔ])                  # a + ... + g, {a + b}
   | (?P<other>.)
 """, re.X | re.S)
 
 
-def _kind(token: str, group: str) -> str:
+def _kind(token: str, group: str, quoted: bool = False) -> str:
     """``strong`` (certainly mathematics), ``weak`` (mathematics inside a run), ``relation``, ``space`` or
     ``text``."""
     if group == "starred":
@@ -87,7 +96,8 @@ def _kind(token: str, group: str) -> str:
     if group == "word":
         if token in GREEK or token in FUNCTIONS:
             return "strong"
-        if len(token) == 1 or re.fullmatch(r"d[A-Za-z]", token) or token == "oo" or _differential(token):
+        if len(token) == 1 or re.fullmatch(r"d[A-Za-z]", token) or token == "oo" or _differential(token) \
+                or _points(token) and not quoted:
             return "weak"
         return "text"
     if group == "power":
@@ -95,6 +105,13 @@ def _kind(token: str, group: str) -> str:
     if group in ("index", "number", "operator"):
         return "strong" if token in ("√", "∫", "²", "³", "⁴") or token in _SIGNS or group == "index" else "weak"
     return {"relation": "relation", "space": "space"}.get(group, "text")
+
+
+def _points(token: str) -> bool:
+    """A segment or a length named by its two points (``GZ``, ``BH``; ``Cc``, ``Pp`` from a point to its
+    companion), not a chapter's Roman numeral (``IX``)."""
+    return bool(re.fullmatch(r"[A-Z]{2}", token) and token not in _ROMAN
+                or len(token) == 2 and token[0].isupper() and token[1] == token[0].lower())
 
 
 def _script(text: str) -> str:
@@ -212,8 +229,37 @@ def _attached(tokens: list) -> list:
     return out
 
 
-def _typeset_plain(text: str) -> str:
-    tokens = [(m.group(0), _kind(m.group(0), m.lastgroup), m.lastgroup) for m in _TOKEN.finditer(text)]
+_ARITHMETIC = ("+", "-", "*", "/", "·", "−")
+
+
+def _arithmetic(run: list) -> bool:
+    """A sum, difference, product or quotient with a letter among its terms (``n + 1/n``, ``x/b``, ``S - 2``,
+    ``b(1-s)``); a hyphen between words (the slab ``a-c``, sections ``I-III``, ``e2-e3``) is no minus: a minus is
+    spaced or inside the formula's bracket."""
+    letters = [t for t, _ in run if re.fullmatch("[A-Za-z]+", t)]
+    if not any(len(t) == 1 for t in letters) or all(t in _ROMAN for t in letters) and any(len(t) > 1 for t in letters):
+        return False
+    depth = 0
+    for i, (t, k) in enumerate(run):
+        depth += {"(": 1, ")": -1}.get(t, 0)
+        if t not in _ARITHMETIC or not 0 < i < len(run) - 1:
+            continue
+        left = next((u for u, j in run[i - 1::-1] if j != "space"), "(")
+        right = next((u for u, j in run[i + 1:] if j != "space"), ")")
+        spaced = run[i - 1][1] == "space" and run[i + 1][1] == "space"
+        if left not in ("(", *_ARITHMETIC) and right not in (")", *_ARITHMETIC) and (
+                t not in ("-", "−") or spaced or depth > 0):
+            return True
+    return False
+
+
+def _typeset_plain(text: str, quoted: bool = False) -> str:
+    """*text* typeset; *quoted*: the source's words in quotation marks, where a segment's name or a difference of
+    letters stays as the source wrote it (``'h/3{2D - (G+g)/2}'``, ``'Ac = a - c'``)."""
+    text = re.sub(r"((?<![\w.])[A-Za-z]|\))\.(?=\()", r"\1·", text)     # u.(G - B), (du).(G - B): a product
+    text = re.sub(r"(?<=[\w)])\*\*(?=[\w(])", "^", text)                 # a**2: a power
+    text = re.sub(r"\bsqrt\{([^{}$]*)\}", r"sqrt(\1)", text)              # sqrt{2}: a root
+    tokens = [(m.group(0), _kind(m.group(0), m.lastgroup, quoted), m.lastgroup) for m in _TOKEN.finditer(text)]
     tokens = [(t, k) for t, k, _ in _attached(tokens)]
     out, run = [], []
 
@@ -223,7 +269,7 @@ def _typeset_plain(text: str) -> str:
         while run and (run[0][1] in ("space", "relation") or run[0][0] == ")"):
             lead.append(run.pop(0)[0])
         tail = []
-        while run and (run[-1][1] in ("space", "relation") or run[-1][0] == "("):
+        while run and (run[-1][1] in ("space", "relation") or run[-1][0] in ("(", ",")):
             tail.insert(0, run.pop()[0])
         core = _trim(list(run))
         cut = _unmatched(core)
@@ -237,7 +283,7 @@ def _typeset_plain(text: str) -> str:
             run = rest                           # and the formula after it is one of its own
             flush()
             return
-        if core and (any(k == "strong" for _, k in core)
+        if core and (any(k == "strong" for _, k in core) or not quoted and _arithmetic(core)
                      or any(k == "relation" for _, k in core) and len([k for _, k in core if k == "weak"]) >= 2):
             start = run.index(core[0])
             end = start + len(core)
@@ -250,7 +296,9 @@ def _typeset_plain(text: str) -> str:
         run = []
 
     for token, kind in tokens:
-        if kind == "text":
+        if token == "," and sum({"(": 1, ")": -1}.get(t, 0) for t, _ in run) > 0:
+            run.append((token, "weak"))          # B((p+1)/n, q+1): a comma inside the formula's bracket
+        elif kind == "text":
             flush()
             out.append(token)
         else:
@@ -260,13 +308,18 @@ def _typeset_plain(text: str) -> str:
 
 
 def typeset(text: str) -> str:
-    """*text* with its ASCII mathematics typeset as ``$…$``; existing ``$…$`` spans and code spans are
-    left alone, except a code span holding mathematics (````tan phi_1````), which becomes a formula."""
-    parts = re.split(r"(\$[^$]*\$|``[^`]+``|`[^`]+`)", text)
+    """*text* with its ASCII mathematics typeset as ``$…$``; existing ``$…$`` spans and code spans are left alone,
+    except a code span holding mathematics (````tan phi_1````), which becomes a formula; in a quotation (``'…'``,
+    the source's words) only what is certainly mathematics is set."""
+    parts = re.split(r"(\$[^$]*\$|``[^`]+``|`[^`]+`|(?:(?<=[\s(\[])|^)'[^'\n]+?'(?![\w'])"
+                     r"|\b[IVX]+\.[A-Z](?:[-–][A-Z])?\b)", text)
     out = []
     for part in parts:
-        if part.startswith("$"):
+        if part.startswith("$") or _SECTION.fullmatch(part):      # mathematics, a section (VI.C-F): as they are
             out.append(part)
+        elif part.startswith("'"):                  # the marks are no prime of the quotation's last name
+            out.append("'" + "".join(piece if piece.startswith("$") else _typeset_plain(piece, quoted=True)
+                                     for piece in re.split(r"(\$[^$]*\$)", part[1:-1])) + "'")
         elif part.startswith("`"):
             inner = part.strip("`")
             done = _typeset_plain(inner)
