@@ -34,8 +34,10 @@ def test_quick_command_writes_the_document_and_figures(quick_docs):
         row = next(line for line in table.splitlines() if line.startswith("| Arb ball arithmetic, 128 bits |"))
         assert "failed" not in row and "no bound" not in row and row.endswith("| yes |"), (family, row)
         assert "failed" not in table, family
-    # the metacentre's limit, named by its derivation's title and what it measures, with the reason in words
-    assert ("| Metacentre and stability function of a rectangular hull | z\\_M = lim m/phi + z\\_G: righting arm of "
+    # the metacentre's limit, named by its derivation's title and what it measures, its mathematics typeset, with
+    # the reason in words
+    assert ("| Metacentre and stability function of a rectangular hull | $z_{M} = \\lim m/\\varphi + z_{G}$: "
+            "righting arm of "
             "the clipped heeled box, extrapolated | a limit in the tilt (Neville extrapolation: no bound) |") in text
     figures = sorted(p.name for p in (quick_docs / "figures").glob("numerics-*.png"))
     assert "numerics-orders.png" in figures and "numerics-section-area-quadrature.png" in figures
@@ -55,8 +57,8 @@ def test_the_document_names_sources_derivations_and_formulas_in_words(quick_docs
     assert "**" not in shown.replace("**yes**", "").replace("**catastrophic**", "") and "`factor`" not in shown
     assert "#### V. v. Graefe, *Ueber eine allgemeine Formel zur Bestimmung des Schwerpunctes von Körpern*" in text
     assert "| §1 prismatoid volume: $I = \\frac{h}{3} \\left\\{ g + G = " in text        # place and print
-    assert "| Sphere, paraboloid, ellipsoid and Simpson's rule from the prismatoid formula | ∫ π (r² - (z - r)²) dz " \
-           "over the diameter | $\\pi \\left(1 - \\left(z - 1\\right)^{2}\\right)$ |" in text
+    assert "| Sphere, paraboloid, ellipsoid and Simpson's rule from the prismatoid formula | " \
+           "$\\int \\pi (r^{2} - (z - r)^{2}) dz$ over the diameter | $\\pi \\left(1 - \\left(z - 1\\right)^{2}\\right)$ |" in text
     assert "factored: $- \\frac{g l \\varrho \\left(\\varrho - 1\\right)}{2}$" in text
 
 

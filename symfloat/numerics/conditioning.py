@@ -121,20 +121,22 @@ def conditioning_rows(cases=CASES, deltas=(1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12)
 def conditioning_markdown(rows) -> str:
     """The rows as a Markdown section of docs/numerics.md."""
     lines = ["## 4. The solver near bifurcation densities", "",
-             "For densities s* ± δ next to a bifurcation, every isolated equilibrium the solver reports (not fixed by "
-             "symmetry) is refined by Newton's method at 50 digits on the exactly clipped body; the true error of the "
-             "float64 position is compared with the error the solver reports (a Newton–Kantorovich bound, or next to "
-             "the bifurcation an estimate marked as such). The error grows like 1/λ as the second variation λ → 0. "
-             "The Kantorovich radius is evaluated as 2η/(1 + √(1 − 2h)), not (1 − √(1 − 2h))/(Lβ), which cancels to "
-             "0 for small h (the triangle next to full density claimed 5e-16 where the true error was 3.4e-13). "
-             "The box 1,2,3 just above s_z is the case whose stable class was missed before the failed index sum "
-             "triggered a second search. Where the smallest eigenvalue is within ten times its float64 error of "
-             "zero, or the float64 bound is not Kantorovich's or exceeds 1e-13 rad, the solver polishes the "
-             "position by Newton's method at 30 digits: its bound is then the Kantorovich radius of the 30-digit "
-             "point (its residual including the 1e-25 error of the 30-digit clipping) plus the rounding of the "
-             "float64 vector (5e-16), and its eigenvalues decide the stability while they exceed the Lipschitz "
-             "constant times that radius (the rows at δ = 1e-10 and 1e-12, where float64 alone decided nothing).",
-             "", "| case | s* | δ | tilt (°) | stability | true error (rad) | reported (rad) | how | bounded |",
+             r"For densities $s^* \pm \delta$ next to a bifurcation, every isolated equilibrium the solver reports "
+             "(not fixed by symmetry) is refined by Newton's method at 50 digits on the exactly clipped body; the true "
+             "error of the float64 position is compared with the error the solver reports (a Newton–Kantorovich "
+             r"bound, or next to the bifurcation an estimate marked as such). The error grows like $1/\lambda$ as the "
+             r"second variation $\lambda \to 0$. The Kantorovich radius is evaluated as $2\eta/(1 + \sqrt{1 - 2h})$, "
+             r"not $(1 - \sqrt{1 - 2h})/(L\beta)$, which cancels to 0 for small $h$ (the triangle next to full density "
+             r"claimed $5 \cdot 10^{-16}$ where the true error was $3.4 \cdot 10^{-13}$). The box $1 \times 2 \times 3$ "
+             r"just above $s_z$ is the case whose stable class was missed before the failed index sum triggered a "
+             "second search. Where the smallest eigenvalue is within ten times its float64 error of zero, or the "
+             r"float64 bound is not Kantorovich's or exceeds $10^{-13}$ rad, the solver polishes the position by "
+             "Newton's method at 30 digits: its bound is then the Kantorovich radius of the 30-digit point (its "
+             r"residual including the $10^{-25}$ error of the 30-digit clipping) plus the rounding of the float64 "
+             r"vector ($5 \cdot 10^{-16}$), and its eigenvalues decide the stability while they exceed the Lipschitz "
+             r"constant times that radius (the rows at $\delta = 10^{-10}$ and $10^{-12}$, where float64 alone decided "
+             "nothing).",
+             "", r"| case | $s^*$ | $\delta$ | tilt (°) | stability | true error (rad) | reported (rad) | how | bounded |",
              "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append(f"| {r.case} | {r.closed_form} | {r.delta:+.0e} | {r.tilt_deg:.6f} | {r.stability} | "

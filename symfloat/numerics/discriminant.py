@@ -34,6 +34,9 @@ from typing import Callable
 import mpmath
 import sympy as sp
 
+from ..model.myst import inline
+from ..prose import typeset
+
 UNIT_ROUNDOFF = 2.0 ** -53
 CATASTROPHIC_DIGITS = 6.0
 REFERENCE_DIGITS = 50
@@ -242,14 +245,15 @@ def worst_rows(rows: list[Row]) -> dict[tuple[str, str, str], Row]:
 def table_markdown(rows: list[Row] | None = None) -> str:
     """The stiffness table as Markdown: a summary per form, then every row."""
     rows = stiffness_table() if rows is None else rows
-    lines = ["| form | locator | point | worst s | s - point | printed rel. error | stable rel. error | digits lost |",
+    lines = ["| form | locator | point | worst $s$ | distance | printed rel. error | stable rel. error | digits lost |",
              "|---|---|---|---|---|---|---|---|"]
     for r in worst_rows(rows).values():
         lines.append(_md_row(r))
     lines += ["", f"Max relative error of the stable forms over the sweep: {max(r.stable_error for r in rows):.2e}.",
-              f"Digits lost = log10(error / 2^-53); more than {CATASTROPHIC_DIGITS:g} is flagged **catastrophic**; "
-              "an error inf means the float64 radicand S^2 - 4 rounded negative (no real value, all digits lost).",
-              "", "| form | locator | point | s | s - point | printed rel. error | stable rel. error | digits lost |",
+              rf"Digits lost = $\log_{{10}}$(error / $2^{{-53}}$); more than {CATASTROPHIC_DIGITS:g} is flagged "
+              r"**catastrophic**; an error inf means the float64 radicand $S^2 - 4$ rounded negative (no real value, "
+              "all digits lost).",
+              "", "| form | locator | point | $s$ | distance | printed rel. error | stable rel. error | digits lost |",
               "|---|---|---|---|---|---|---|---|"]
     lines += [_md_row(r) for r in rows]
     return "\n".join(lines) + "\n"
@@ -257,5 +261,7 @@ def table_markdown(rows: list[Row] | None = None) -> str:
 
 def _md_row(r: Row) -> str:
     flag = " **catastrophic**" if r.catastrophic else ""
-    return (f"| {r.form} | {r.locator} | {r.point} | {r.s!r} | {r.distance:+.0e} | {r.printed_error:.2e} | "
+    form = f"${r.form}$" if len(r.form) == 1 else typeset(r.form)        # S, n_1, 1 - t: typeset
+    return (f"| {inline(form, None, cell=True)} | {r.locator} | {inline(typeset(r.point), None, cell=True)} "
+            f"| {r.s!r} | {r.distance:+.0e} | {r.printed_error:.2e} | "
             f"{r.stable_error:.2e} | {r.digits_lost:.1f}{flag} |")

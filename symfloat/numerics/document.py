@@ -21,6 +21,7 @@ import sympy as sp
 
 from ..files import write_if_changed
 from ..model.myst import inline, unescaped
+from ..prose import typeset
 from ..model.source import SOURCES
 from ..model.span import math_spans, widened
 from ..model.symbol_names import latex
@@ -80,12 +81,18 @@ def _source(key: str) -> str:
 def _derivation(did: str) -> str:
     """A derivation by its title (what its notebook's heading says); a reference integrand of the study as
     such."""
-    return "a reference integrand" if did == "(reference)" else statements(did).title
+    return "a reference integrand" if did == "(reference)" else typeset(statements(did).title)
 
 
 def _cell(text: str) -> str:
     """Words with their ``$...$`` mathematics for a table cell, whole."""
     return inline(text, None, cell=True)
+
+
+def _measures(description: str) -> str:
+    """What a witness measures, as its declaration says it in words and ASCII mathematics, for a table cell
+    with the mathematics typeset (:func:`~symfloat.prose.typeset`, as the notebooks show it)."""
+    return _cell(typeset(description))
 
 
 def _printed_of(key: str):
@@ -147,7 +154,7 @@ def _unenclosed_words(bench, family, ms) -> list:
     missing = {k: why for k, (f, why) in bench.unenclosed.items() if f == family and k in witnesses}
     if not missing:
         return [f"Arb encloses all {len(witnesses)} witnesses of this family.", ""]
-    rows = [(_cell(_derivation(key.split("/")[0])), _cell(bench.witnesses[key]), why)
+    rows = [(_cell(_derivation(key.split("/")[0])), _measures(bench.witnesses[key]), why)
             for key, why in sorted(missing.items(), key=lambda kv: (kv[1], kv[0]))]
     return [f"Arb encloses {len(witnesses) - len(missing)} of the {len(witnesses)} witnesses of this family. "
             f"The other {len(missing)} have no rigorous method, so no Arb rows, and their methods are measured "
@@ -286,10 +293,10 @@ def _section_orders(selector, figures, progress, quick):
              "### The registry's convergence witnesses", "",
              _table(("derivation", "what the witness measures", "Simpson: theory", "Simpson: measured",
                      "trapezoid (theory 2): measured"),
-                    [(_cell(_derivation(c[0])), _cell(c[2]), c[3], f"{c[4]:.2f}", _fo(c[5])) for c in conv]), "",
+                    [(_cell(_derivation(c[0])), _measures(c[2]), c[3], f"{c[4]:.2f}", _fo(c[5])) for c in conv]), "",
              "### Simpson and trapezoid on every quadrature witness's integrand (first case)", "",
              _table(("derivation", "what the witness measures", "integrand", "theory", "Simpson", "trapezoid"),
-                    [(_cell(_derivation(r.derivation)), _cell(r.measures), _cell(f"${r.integrand}$"), _cell(r.theory),
+                    [(_cell(_derivation(r.derivation)), _measures(r.measures), _cell(f"${r.integrand}$"), _cell(r.theory),
                       _fo(r.simpson), _fo(r.trapezoid))
                      for r in rows]), "",
              "### Kinks: the water plane passing a vertex", "",
@@ -323,7 +330,8 @@ def _section_forms(selector, progress):
     progress("stiff cases: closed forms, float64 against 50 digits")
     lines = ["## 3. Stiff and extreme cases of the closed forms", "",
              "Each closed form is evaluated as printed in float64 and at 50 digits (the same float64 inputs, taken "
-             "exactly), over the sweeps shown. 'digits lost' is log10(worst relative error / 2^-53); more than 6 is "
+             r"exactly), over the sweeps shown. 'digits lost' is $\log_{10}$(worst relative error / $2^{-53}$); more "
+             "than 6 is "
              f"flagged catastrophic (relative error above {CATASTROPHIC:.1e}). Each flagged form has a stable "
              f"equivalent, tested to stay within {STABLE_TOLERANCE:g} over every sweep.", ""]
     rows = []
@@ -332,10 +340,10 @@ def _section_forms(selector, progress):
         for label, (e, p) in r.naive.items():
             lost = max(0.0, math.log10(e / 2.0 ** -53)) if e > 0 else 0.0
             st = r.stable.get(label)
-            rows.append((f.name, _place(f.locator), label, fmt_err(e), f"{lost:.1f}",
+            rows.append((_cell(f.name), _place(f.locator), _cell(label), fmt_err(e), f"{lost:.1f}",
                          "**yes**" if e > CATASTROPHIC else "no",
                          ", ".join(f"{v:.17g}" for v in p) if p else "",
-                         f.stable_text or "—", fmt_err(st[0]) if st else "—"))
+                         _cell(f.stable_text) if f.stable_text else "—", fmt_err(st[0]) if st else "—"))
     lines += [_table(("form", "where", "sweep", "worst rel. error (printed)", "digits lost", "catastrophic",
                       "worst at", "stable form", "worst rel. error (stable)"), rows), ""]
     progress("stiff cases: scanning every closed form in the density")
@@ -344,7 +352,8 @@ def _section_forms(selector, progress):
     lines += ["### Every closed form in the density, found in the derivations", "",
               f"All {len(found)} distinct closed forms in the density ($s$, $\\varrho$) among the valid readings "
               "of the derivations (with derived quantities inserted, as the library stores them: SymPy distributes "
-              "rational factors, so $b(1 - s)/2$ is held as $b/2 - bs/2$), evaluated with the density 1e-15 … 1e-1 "
+              r"rational factors, so $b(1 - s)/2$ is held as $b/2 - bs/2$), evaluated with the density $10^{-15} \ldots "
+              r"10^{-1}$ "
               "from 0 and from 1 and the other parameters at the middle of their sampling intervals. "
               f"{len(found) - len(flagged)} lose at most 6 digits; the {len(flagged)} below lose more, and the first "
               "of SymPy's factor, cancel, together, expand that stays within the stable tolerance is given.", "",
@@ -386,9 +395,10 @@ def generate(docs=Path("docs"), *, quick=False, progress=lambda msg: None) -> li
     progress("the solver near bifurcation densities")
     lines += [conditioning_markdown(conditioning_rows(CASES[:1], (1e-4, 1e-8)) if quick else conditioning_rows())]
     lines += ["## 5. The discriminant forms of Scheeffer IX", "",
-              "The double-root machinery (146)–(160) with t = (128σ − 9)/27, σ = 1 − s, evaluated as printed in "
-              "float64 against 50 digits, towards its singular points s → 23/32 (t → 1), s → 1 (t → −1/3) and "
-              "s → 119/128 (t → 0), beside the stable forms of `symfloat/numerics/discriminant.py`.", "",
+              r"The double-root machinery (146)–(160) with $t = (128\sigma - 9)/27$, $\sigma = 1 - s$, evaluated as "
+              r"printed in float64 against 50 digits, towards its singular points $s \to 23/32$ ($t \to 1$), "
+              r"$s \to 1$ ($t \to -1/3$) and $s \to 119/128$ ($t \to 0$), beside stable forms of the same "
+              "quantities.", "",
               discriminant_markdown()]
     written = []
     if write_if_changed(docs / "numerics.md", "\n".join(lines).rstrip() + "\n"):
