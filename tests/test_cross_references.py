@@ -8,7 +8,7 @@ import pytest
 
 from symfloat import registry
 from symfloat.registry import load
-from symfloat.report.cross_references import _ARTICLE, _pattern, readable_in
+from symfloat.report.cross_references import _ARTICLE, _pattern, labels, readable
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -17,7 +17,11 @@ def _step(derivation: str, name: str) -> int:
     return [s.name for s in load(derivation)[0].steps].index(name) + 1
 
 
-def test_a_cited_step_or_formula_is_named_by_the_notebooks_numbering():
+def readable_in(derivation: str, text: str) -> str:
+    return readable(load(derivation)[0], text)
+
+
+def test_a_cited_step_or_formula_is_named_by_the_notebooks_numbering(check):
     # Scheeffer VII-VIII's note "(step moment-y)": the notebook's "### Step N"; Graefe §2's "see 'slab-a-c'": the
     # heading of the printed formula, numbered among those at §2 Simpson's rule
     n = _step("scheeffer-vii-viii", "moment-y")
@@ -27,8 +31,11 @@ def test_a_cited_step_or_formula_is_named_by_the_notebooks_numbering():
     assert readable_in("graefe-s2-volumes-simpson", "(factor 2m, see 'slab-a-c'); the algebra") == \
         "(factor 2m, see formula 1 of §2 Simpson's rule); the algebra"
     # another derivation by its source and place, and its formula (Scheeffer (13))
-    assert readable_in("scheeffer-iv-v", "agrees with scheeffer-i-iii:moment-13.") == \
+    reports = {r.id: r for r in check("scheeffer-iv-v")}
+    assert readable(reports["scheeffer-iv-v"], "agrees with scheeffer-i-iii:moment-13.", reports) == \
         "agrees with Scheeffer I-III, formula (13)."
+    assert readable(reports["scheeffer-iv-v"], "(scheeffer-i-iii:no-such-step)", reports) == \
+        "(scheeffer-i-iii:no-such-step)"                             # a name the other does not have stays
 
 
 @pytest.mark.parametrize("text", [
@@ -53,7 +60,7 @@ def _texts(d):
 @pytest.mark.parametrize("derivation", registry.ids())
 def test_no_program_name_is_left_in_a_derivations_words(derivation):
     d, _ = load(derivation)
-    pattern = _pattern(derivation)
+    pattern = _pattern(frozenset(labels(d)))
     left = []
     for text in filter(None, _texts(d)):
         shown = readable_in(derivation, text)
@@ -61,6 +68,13 @@ def test_no_program_name_is_left_in_a_derivations_words(derivation):
             left += [m.group(0) for m in pattern.finditer(piece)         # a hyphenated noun after an article stays
                      if m.group("q") or m.group("step") or not _ARTICLE.search(piece, 0, m.start())]
     assert not left, left[:5]
+
+
+def test_the_engines_report_and_the_derivation_give_the_same_labels(check):
+    # the record and the errata label from the report, the notebooks from the derivation: the same numbering
+    for derivation in ("graefe-s2-volumes-simpson", "scheeffer-vii-viii", "euler-229-243"):
+        report = next(r for r in check(derivation) if r.id == derivation)
+        assert labels(report) == labels(load(derivation)[0]) != {}
 
 
 def test_the_records_and_notebooks_show_no_cited_name():

@@ -16,7 +16,7 @@ import unicodedata
 from collections import Counter
 
 from ..engine.check import DerivationReport
-from .cross_references import readable_in
+from .cross_references import readable
 from ..model.erratum import APPARATUS, apparatus
 from ..model.source import get_source
 
@@ -40,6 +40,7 @@ def errata_entries(reports: list[DerivationReport]) -> list[dict]:
     ``source-locator-n`` kept as ``alias``."""
     counter: Counter = Counter()
     slugs: Counter = Counter()
+    by_id = {r.id: r for r in reports}
     entries = []
     for d in reports:
         for f in d.formulas:
@@ -52,10 +53,10 @@ def errata_entries(reports: list[DerivationReport]) -> list[dict]:
                 "alias": f"{f.source}-{f.locator}-{counter[(f.source, f.locator)]}",
                 "source": f.source, "locator": f.locator, "printed": f.excerpt,
                 "corrected": f.erratum["corrected"], "kind": f.erratum["kind"],
-                "confidence": f.erratum["confidence"], "evidence": readable_in(d.id, f.erratum["evidence"]),
+                "confidence": f.erratum["confidence"], "evidence": readable(d, f.erratum["evidence"], by_id),
                 "derivation": d.id, "formula": f.id, "apparatus": apparatus(f.erratum["kind"]),
                 **{k: f.erratum[k] for k in ("places",) if f.erratum.get(k)},
-                **{k: readable_in(d.id, f.erratum[k]) for k in ("objection", "answer") if f.erratum.get(k)},
+                **{k: readable(d, f.erratum[k], by_id) for k in ("objection", "answer") if f.erratum.get(k)},
             })
     return entries
 

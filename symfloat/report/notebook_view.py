@@ -22,7 +22,7 @@ from ..model.symbol_names import latex
 from ..registry import load
 from .notebook_code import STRATEGY_WORDS
 from ..prose import typeset
-from .cross_references import readable_in
+from .cross_references import readable
 from .witness_words import error_cells
 
 __all__ = ["NotebookView", "definitions_markdown", "step_markdown", "step_title", "step_titles", "reading_markdown",
@@ -112,8 +112,8 @@ def _capital(text: str) -> str:
 
 def words(d, text: str) -> str:
     """Words of derivation *d* for a reader: the steps and formulas they cite by their notebook's numbering
-    (:func:`~symfloat.report.cross_references.readable_in`), the mathematics typeset."""
-    return typeset(readable_in(d.id, text))
+    (:func:`~symfloat.report.cross_references.readable`), the mathematics typeset."""
+    return typeset(readable(d, text))
 
 
 def _sentence(d, text: str) -> str:

@@ -8,7 +8,7 @@ from pathlib import Path
 from ..engine.check import DerivationReport
 from ..engine.witness import record_decision
 from ..files import write_if_changed
-from .cross_references import readable_in
+from .cross_references import readable
 from .witness_words import best_error
 
 __all__ = ["verification_record", "verification_table", "record_differences", "record_json", "write_record",
@@ -17,11 +17,11 @@ __all__ = ["verification_record", "verification_table", "record_differences", "r
 VERDICTS = ("verified", "erratum", "unverifiable", "trivial")
 
 
-def _formula_entry(d: DerivationReport, f) -> dict:
+def _formula_entry(d: DerivationReport, f, by_id: dict) -> dict:
     entry = {"id": f.id, "source": f.source, "locator": f.locator, "verdict": f.verdict,
              "evidence": f.evidence, "numeric": f.numeric, "derivation": d.id, "printed": f.excerpt}
     if f.reason:
-        entry["reason"] = readable_in(d.id, f.reason)
+        entry["reason"] = readable(d, f.reason, by_id)
     if not f.numeric_content:
         entry["numeric_content"] = False
     if f.erratum:
@@ -35,7 +35,8 @@ def verification_record(reports: list[DerivationReport]) -> dict:
 
     ``summary.seconds`` is the checking time of the derivations (as recorded
     when they were checked, also for those now read from the cache)."""
-    formulas = [_formula_entry(d, f) for d in reports for f in d.formulas]
+    by_id = {d.id: d for d in reports}
+    formulas = [_formula_entry(d, f, by_id) for d in reports for f in d.formulas]
     steps = Counter(s.status for d in reports for s in d.steps)
     verdicts = Counter(f["verdict"] for f in formulas)
     numeric_content = [f for d in reports for f in d.formulas
