@@ -63,6 +63,8 @@ _SUPER = {"²": "2", "³": "3", "⁴": "4", "¹": "1", "⁰": "0", "⁵": "5", "
           "ⁿ": "n"}
 _SIGNS = "πθφωμαβγδεκλνξρστψΓΔ"      # the Greek letters above
 _SECTION = re.compile(r"[IVX]+\.[A-Z](?:[-–][A-Z])?")        # a section of a chapter: VI.C, VI.C-F
+# what typeset() does not set as ASCII: mathematics already in dollars, a code span, a quotation, a section
+_KEPT = re.compile(rf"(\$[^$]*\$|``[^`]+``|`[^`]+`|(?:(?<=[\s(\[])|^)'[^'\n]+?'(?![\w'])|\b{_SECTION.pattern}\b)")
 _ROMAN = ("I", "II", "III", "IV", "V", "VI", "VII", "VIII", "IX", "X", "XI", "XII")      # a chapter's numeral
 
 _TOKEN = re.compile(r"""
@@ -311,8 +313,7 @@ def typeset(text: str) -> str:
     """*text* with its ASCII mathematics typeset as ``$…$``; existing ``$…$`` spans and code spans are left alone,
     except a code span holding mathematics (````tan phi_1````), which becomes a formula; in a quotation (``'…'``,
     the source's words) only what is certainly mathematics is set."""
-    parts = re.split(r"(\$[^$]*\$|``[^`]+``|`[^`]+`|(?:(?<=[\s(\[])|^)'[^'\n]+?'(?![\w'])"
-                     r"|\b[IVX]+\.[A-Z](?:[-–][A-Z])?\b)", text)
+    parts = _KEPT.split(text)
     out = []
     for part in parts:
         if part.startswith("$") or _SECTION.fullmatch(part):      # mathematics, a section (VI.C-F): as they are

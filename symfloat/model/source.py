@@ -37,6 +37,12 @@ class Source:
     citation: tuple = ()        # (field, text) pairs of the bibliographic record beyond author, title, year
     provenance: str = ""        # where the transcription comes from
 
+    @property
+    def short(self) -> str:
+        """The source as a reader cites it briefly: its author's surname (Scheeffer), or for an anonymous text its
+        title without a gloss (Hasáb úszása)."""
+        return self.title.split(" (")[0] if self.author == "Anonymous" else self.author.split()[-1]
+
     def text(self) -> str:
         """The full transcription, exactly as shipped."""
         return _read(self.filename)

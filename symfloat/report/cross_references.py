@@ -24,6 +24,7 @@ run) stays.
 from __future__ import annotations
 
 import re
+from collections import Counter
 from functools import cache
 
 from ..model.source import SOURCES
@@ -44,15 +45,15 @@ def labels(of) -> dict:
     else:
         printed = [(p.name, p.locator) for p in of.printed]
     steps = {s.name: f"step {i}" for i, s in enumerate(of.steps, 1)}
-    formulas = {}
+    sharing, seen, formulas = Counter(place for _, place in printed), Counter(), {}
     for name, place in printed:
-        same = [n for n, other in printed if other == place]
-        formulas[name] = f"formula {place}" if len(same) == 1 else f"formula {same.index(name) + 1} of {place}"
+        seen[place] += 1
+        formulas[name] = f"formula {place}" if sharing[place] == 1 else f"formula {seen[place]} of {place}"
     return {name: (steps.get(name), formulas.get(name)) for name in {*steps, *formulas} if "-" in name}
 
 
 def _derivation_label(report) -> str:
-    return f"{SOURCES[report.source].author.split()[-1]} {report.locator}"
+    return f"{SOURCES[report.source].short} {report.locator}"
 
 
 def _alternatives(names) -> str:
@@ -63,7 +64,8 @@ def _alternatives(names) -> str:
 def _pattern(own: frozenset) -> re.Pattern:
     """A cited name: of another derivation (its id, then ``:`` or ``/`` and a name), or of this one."""
     return re.compile(rf"(?<![\w-])(?P<step>(?:the )?steps? )?(?P<q>'?)(?:(?P<other>{_alternatives(ids())})"
-                      rf"(?:[:/](?P<name>[A-Za-z0-9]+(?:-[A-Za-z0-9]+)*))?|(?P<own>{_alternatives(own) or '(?!)'}))(?P=q)(?![\w-])")
+                      rf"(?:[:/](?P<name>[A-Za-z0-9]+(?:-[A-Za-z0-9]+)*))?|(?P<own>{_alternatives(own) or '(?!)'}))"
+                      r"(?P=q)(?![\w-])")
 
 
 def _label(both: tuple, step: str | None) -> str:

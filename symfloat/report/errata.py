@@ -55,7 +55,7 @@ def errata_entries(reports: list[DerivationReport]) -> list[dict]:
                 "corrected": f.erratum["corrected"], "kind": f.erratum["kind"],
                 "confidence": f.erratum["confidence"], "evidence": readable(d, f.erratum["evidence"], by_id),
                 "derivation": d.id, "formula": f.id, "apparatus": apparatus(f.erratum["kind"]),
-                **{k: f.erratum[k] for k in ("places",) if f.erratum.get(k)},
+                **({"places": f.erratum["places"]} if f.erratum.get("places") else {}),
                 **{k: readable(d, f.erratum[k], by_id) for k in ("objection", "answer") if f.erratum.get(k)},
             })
     return entries

@@ -54,7 +54,7 @@ def erratum_page(e: dict, records: Records) -> str:
         f'<p>See {" and ".join(links)}.</p>',
     ]
     what = "Correction of the transcription" if mark == "transcription" else "Fault of the original"
-    return "\n".join([f"# {what}: {_short(e['source'])}, {e['locator']}", "",
+    return "\n".join([f"# {what}: {SOURCES[e['source']].short}, {e['locator']}", "",
                       "````{raw} html", *body, "````", ""])
 
 
@@ -70,13 +70,6 @@ def _value(e: dict, facet: str) -> str:
     return _apparatus(e) if facet == "apparatus" else e[facet]
 
 
-def _short(key: str) -> str:
-    """A source as a reader cites it briefly: its author's surname (Scheeffer), or for an anonymous text its
-    title without a gloss (Hasáb úszása)."""
-    source = SOURCES[key]
-    return source.title.split(" (")[0] if source.author == "Anonymous" else source.author.split()[-1]
-
-
 def _label(facet: str, value: str) -> str:
     """A facet's value in words: an apparatus by its name, a source by its short name and year (Scheeffer 1902),
     a kind or a confidence as it is."""
@@ -84,12 +77,12 @@ def _label(facet: str, value: str) -> str:
         return _APPARATUS_WORDS[value]
     if facet == "source" and value in SOURCES:
         year = SOURCES[value].year
-        return f"{_short(value)} {year}" if year else _short(value)
+        return f"{SOURCES[value].short} {year}" if year else SOURCES[value].short
     return value
 
 
 def _line(e: dict) -> str:
-    return (f"- [{_short(e['source'])}, {e['locator']}]({slug(e['id'])}.md) — {e['kind']}, {e['confidence']} "
+    return (f"- [{SOURCES[e['source']].short}, {e['locator']}]({slug(e['id'])}.md) — {e['kind']}, {e['confidence']} "
             f"confidence: {inline(reason_of(e).rstrip('.'))}")
 
 
