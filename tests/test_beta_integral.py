@@ -1,0 +1,79 @@
+"""The Beta rule for integrals over a quarter of a circle or an ellipse (symfloat.engine.beta_integral) against
+quadrature, and the integrals it leaves to SymPy."""
+import mpmath
+import pytest
+import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from symfloat.engine.beta_integral import beta_closed
+from symfloat.engine.check import _carried_out
+
+y, b, a, p, q = sp.symbols("y b a p q", positive=True)
+
+
+def _quadrature(integral, point):
+    f = sp.lambdify(y, integral.function.subs(point), "mpmath")
+    end = integral.limits[0][2].subs(point)
+    with mpmath.workdps(40):
+        return mpmath.quad(f, [0, mpmath.mpf(end.p) / end.q], method="tanh-sinh")
+
+
+# Euler's integrands (Scientia navalis §§220-228: the ellipse's quarter, its ordinate a + p y + q y^2 beside it)
+EULER = [
+    y ** 4 * (a + p * y + q * y ** 2) ** 2 / sp.sqrt(b ** 2 - y ** 2),
+    -y ** 4 * (-b + y) * (b + y) / sp.sqrt(b ** 2 - y ** 2),
+    y * (a * y / (b * sp.sqrt(b ** 2 - y ** 2)) + p + 2 * q * y) * (a + p * y + q * y ** 2),
+    2 * a * sp.sqrt(1 - y ** 2 / b ** 2) * y ** 2,
+    (b ** 2 - y ** 2) ** sp.Rational(3, 2) * y ** 3,
+]
+
+
+@pytest.mark.parametrize("integrand", EULER, ids=range(len(EULER)))
+def test_the_rule_agrees_with_quadrature_and_with_sympy(integrand):
+    integral = sp.Integral(integrand, (y, 0, b))
+    closed = beta_closed(integral)
+    assert closed is not None and not closed.has(sp.Integral, sp.gamma)
+    point = {a: sp.Rational(3, 7), b: sp.Rational(5, 3), p: sp.Rational(-2, 9), q: sp.Rational(4, 11)}
+    value = sp.N(closed.subs(point), 40)
+    assert abs(value - _quadrature(integral, point)) < 1e-15 * max(1, abs(value))     # the end singular: 18 digits
+    by_sympy = integral.doit()
+    if by_sympy.has(sp.Integral):   # SymPy 1.14 leaves the ellipse's 2 a y^2 sqrt(1 - y^2/b^2) unevaluated:
+        assert integrand == EULER[3] and closed == sp.pi * a * b ** 3 / 8     # int_0^b y^2 sqrt(b^2 - y^2) = pi b^4/16
+    else:
+        assert sp.expand(closed - by_sympy) == 0                          # SymPy's own result, exactly
+
+
+@settings(max_examples=30, deadline=None)
+@given(k=st.integers(0, 6), twice_a=st.sampled_from([-1, 1, 3, 5]))
+def test_every_power_and_exponent_in_range(k, twice_a):
+    integral = sp.Integral(y ** k * (b ** 2 - y ** 2) ** sp.Rational(twice_a, 2), (y, 0, b))
+    point = {b: sp.Rational(7, 5)}
+    assert abs(sp.N(beta_closed(integral).subs(point), 40) - _quadrature(integral, point)) < 1e-15
+
+
+def test_a_changed_exponent_or_end_gives_another_value():
+    # the mutants of the rule's inputs: the exponent of y one higher, the upper end not the radicand's root
+    base = sp.Integral(y ** 2 / sp.sqrt(b ** 2 - y ** 2), (y, 0, b))
+    assert beta_closed(base) == sp.pi * b ** 2 / 4
+    assert beta_closed(sp.Integral(y ** 3 / sp.sqrt(b ** 2 - y ** 2), (y, 0, b))) == 2 * b ** 3 / 3
+    assert beta_closed(sp.Integral(y ** 2 / sp.sqrt(b ** 2 - y ** 2), (y, 0, b / 2))) is None
+
+
+@pytest.mark.parametrize("integral", [
+    sp.Integral(sp.sqrt(y), (y, 0, b)),                                  # a root of y, not of b^2 - y^2
+    sp.Integral(1 / (b ** 2 - y ** 2), (y, 0, b)),                        # diverges: a = -1
+    sp.Integral(sp.sqrt(b ** 2 - y ** 2) / y, (y, 0, b)),                 # diverges: k = -1
+    sp.Integral(sp.sqrt(b ** 2 + y ** 2), (y, 0, b)),                     # g < 0: no root at the end
+    sp.Integral(sp.sqrt(b ** 2 - y ** 2), (y, -b, b)),                    # not from 0
+    sp.Integral(sp.sqrt(b ** 2 - y ** 2) * sp.sqrt(a ** 2 - y ** 2), (y, 0, b)),   # two radicands
+    sp.Integral(sp.sqrt(sp.Symbol("c") ** 2 - y ** 2), (y, 0, sp.Symbol("c"))),    # an end not known positive
+    sp.Integral(y ** 2, (y, 0, b)),                                       # no root at all: SymPy's
+], ids=range(8))
+def test_what_is_not_of_its_form_is_left_to_sympy(integral):
+    assert beta_closed(integral) is None
+
+
+def test_the_check_carries_integrals_out_by_the_rule():
+    claim = sp.Integral(y ** 2 / sp.sqrt(b ** 2 - y ** 2), (y, 0, b)) + sp.Integral(y, (y, 0, a))
+    assert _carried_out(claim) == sp.pi * b ** 2 / 4 + a ** 2 / 2
