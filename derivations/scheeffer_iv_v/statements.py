@@ -32,7 +32,7 @@ DERIVATION = d = Derivation(
     id="scheeffer-iv-v",
     source="scheeffer",
     title="The tilted equilibrium of a right prism in the first rotation region; prisms with a symmetric base",
-    locator="IV",
+    locator="IV-V",
     summary="tan phi_1 = sqrt(2 (V_1 e_1/T_1 - 1)) with int u v df = 0; waterplane II has T_1/cos^3 and "
             "T_1^1/cos; the tilted position is stable iff T_1^1 > T_1; isotropic bases tilt in every direction "
             "(neutral about the axis across EF); the face limits tan phi <= b(1-s)/u_m, b s/u_m'.",
