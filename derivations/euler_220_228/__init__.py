@@ -26,7 +26,7 @@ English summary, paragraph by paragraph:
   C is the moment about aAa less 2D·AC², a²D/2 + (4a/b)∫(a+Y)²dy√ − (8a²/b²D)(∫(a+Y)dy√)² (printed
   with 2a/b, aa/bbD and no square).  For even Y the integrals reduce to ∫y²dy/√(b² − y²) = bD/2a,
   ∫y²dy√(b² − y²) = b³D/8a, ∫dy√(b² − y²) = bD/2a.
-* §227: Y = −cy²/b²: ∫(a+Y)²dy√ = bD(8a² − 4ac + c²)/16a, ∫(a+Y)dy√ = bD(4a − c)/8a, AC = a − c/4,
+* §227: Y = −cy²/b²: $\\int (a+Y)^2 dy \\surd = bD(8a^2 - 4ac + c^2)/16a$, $\\int (a+Y) dy \\surd = bD(4a - c)/8a$, AC = a − c/4,
   and the moment about EF is a²D/2 + c²D/8 = AB²D/8 + c²D/8.
 * §228: so, as for the quadrilaterals, the moment about EF grows as ef moves away from the middle O
   (the text says C).  The

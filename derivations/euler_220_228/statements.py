@@ -730,10 +730,10 @@ d.quote("S2c-value", "§227",
         r"$\int (a+Y)^2 dy V(bb-yy) = \frac{abD}{2} - \frac{bcD}{4} + \frac{bccD}{16a} = \frac{bD}{16a} (8aa - 4ac + cc)$",
         reading=(S2c, a * b * D / 2 - b * c * D / 4 + b * c * c * D / (16 * a),
                  b * D / (16 * a) * (8 * a * a - 4 * a * c + c * c)),
-        note=claim("hence ∫(a+Y)²dy√(bb-yy) = abD/2 - bcD/4 + bc²D/16a = bD(8a² - 4ac + c²)/16a."))
+        note=claim(r"hence $\int (a+Y)^2 dy \sqrt{bb-yy} = abD/2 - bcD/4 + bc^2D/16a = bD(8a^2 - 4ac + c^2)/16a$."))
 d.quote("S1c-value", "§227", r"$\int (a+Y) dy V(bb-yy) = \frac{bD}{2} - \frac{bcD}{8a} = \frac{bD}{8a} (4a - c)$",
         reading=(S1c, b * D / 2 - b * c * D / (8 * a), b * D / (8 * a) * (4 * a - c)),
-        note=claim("likewise ∫(a+Y)dy√(bb-yy) = bD/2 - bcD/8a = bD(4a - c)/8a."))
+        note=claim(r"likewise $\int (a+Y) dy \sqrt{bb-yy} = bD/2 - bcD/8a = bD(4a - c)/8a$."))
 d.quote("AC-c", "§227", r"$AC = a - \frac{c}{4}$", reading=(ACc, a - c / 4),
         note=claim("the centroid lies at AC = a - c/4."))
 d.quote("moment-EF-c", "§227",

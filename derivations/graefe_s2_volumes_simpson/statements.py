@@ -175,7 +175,7 @@ MISSING_THIRD = ("The prismatoid formula I = h/3 ((G+g)/2 + 2D) with G = a, D = 
                  "omission is the author's (or the printer's), not the scan's. I'' and I''' ('Ebenso') apply the "
                  "prismatoid formula anew to their own slabs, not I', and print the same 2m {...}: further places of "
                  "this fault, booked as its repeats; the sums below follow from the three wrong slabs.")
-CONSEQUENTIAL = ("Follows from the misprinted slabs I', I'', I''' (factor 2m instead of 2m/3, see 'slab-a-c'); "
+CONSEQUENTIAL = ("Follows from the misprinted slabs I', I'', I''' (factor $2m$ instead of $2m/3$, see 'slab-a-c'); "
                  "the algebra from line to line is right.")
 REPEAT = ("The omission of the factor 1/3 of I' again. This slab is the prismatoid formula applied anew ('Ebenso'), "
           "with its own sections for G, D, g and h = 2m, not a result computed from I': the same misprint at a "

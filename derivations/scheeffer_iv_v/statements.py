@@ -179,7 +179,7 @@ d.step("coords-II", (sp.Matrix([pt.dot(hor1), pt.dot(ev)]), sp.Matrix([u / sp.co
        note="coordinates of that point in II: u_2 across EF, v_2 along EF")
 jac = sp.Matrix([1, 0, sp.tan(phi1)]).cross(sp.Matrix([0, 1, 0]))
 d.step("area-II", (sp.sqrt(jac.dot(jac)), 1 / sp.cos(phi1)), "geometry",
-       note="area element: df_2 = |d p/du x d p/dv| df = df / cos phi_1")
+       note=r"area element: $df_2 = |\partial p/\partial u \times \partial p/\partial v| \, df = df/\cos \varphi_1$")
 d.step("ratio-df", Eq(rdf, sp.cos(phi1)), "definition", uses=("area-II",), result=rdf, note="df/df_2")
 d.step("ratio-u", Eq(ru, sp.cos(phi1)), "definition", uses=("coords-II",), result=ru, note="u/u_2")
 d.step("ratio-v", Eq(rv, 1), "definition", uses=("coords-II",), result=rv, note="v/v_2")
