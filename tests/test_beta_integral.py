@@ -69,7 +69,10 @@ def test_a_changed_exponent_or_end_gives_another_value():
     sp.Integral(sp.sqrt(b ** 2 - y ** 2) * sp.sqrt(a ** 2 - y ** 2), (y, 0, b)),   # two radicands
     sp.Integral(sp.sqrt(sp.Symbol("c") ** 2 - y ** 2), (y, 0, sp.Symbol("c"))),    # an end not known positive
     sp.Integral(y ** 2, (y, 0, b)),                                       # no root at all: SymPy's
-], ids=range(8))
+    sp.Integral(sp.sin(y) * sp.sqrt(b ** 2 - y ** 2), (y, 0, b)),         # a factor not a power of y
+    sp.Integral(sp.sqrt(b ** 2 - y ** 2) / (1 + y), (y, 0, b)),
+    sp.Integral(y ** p * sp.sqrt(b ** 2 - y ** 2), (y, 0, b)),            # a power not a whole number
+], ids=range(11))
 def test_what_is_not_of_its_form_is_left_to_sympy(integral):
     assert beta_closed(integral) is None
 

@@ -245,7 +245,7 @@ d.witness(Joined("zero-indifferent-box", "GZ/phi and GZ/phi^3 of the box with b 
                  parts=(arm_series(sp.Rational(1, 6), 1), arm_series(sp.Rational(1, 6), 3))))
 phi_eq = sp.Symbol("phi_*", positive=True)         # the heeled equilibrium
 HEELED = Root(ARM[HEEL], phi, tuple(sp.Rational(k, 20) for k in range(1, 15)))     # beyond the upright position
-d.witness(Joined("negative-unstable-box", "the box with G 1/100 above the metacentre: M GZ/phi upright, and its "
+d.witness(Joined("negative-unstable-box", "the box with $G$ a distance $1/100$ above the metacentre: M GZ/phi upright, and its "
                  "heeled equilibrium, the first root of the clipped arm beyond the upright position, with the arm's "
                  "slope there", ("negative-unstable",),
                  (Case({**BOX_E, Mw: 1, gneg: sp.Rational(1, 100)}, label="g = 1/100"),),
