@@ -14,6 +14,13 @@ def test_unit_tetrahedron():
     assert hull_volume_centroid(pts) == (F(1, 6), (F(1, 4), F(1, 4), F(1, 4)))
 
 
+def test_a_tetrahedron_with_coordinates_of_several_denominators():
+    # the hull's planes are found on the points scaled by the common denominator 30: volume (1/2)(1/3)(1/5)/6 and
+    # centroid the vertices' mean (1/8, 1/12, 1/20); a point given as an int and as a Fraction is one point
+    pts = [(0, 0, 0), (F(1, 2), 0, 0), (0, F(1, 3), 0), (0, 0, F(1, 5)), (F(0), F(0), F(0)), (F(1, 10), F(1, 12), 0)]
+    assert hull_volume_centroid(pts) == (F(1, 180), (F(1, 8), F(1, 12), F(1, 20)))
+
+
 def test_interior_points_do_not_change_the_hull():
     cube = [(x, y, z) for x in (0, 2) for y in (0, 2) for z in (0, 2)]
     assert hull_volume_centroid(cube + [(1, 1, 1), (1, 0, 1)]) == (F(8), (F(1), F(1), F(1)))

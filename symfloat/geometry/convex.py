@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 from itertools import combinations
+from math import lcm
 
 __all__ = ["hull_2d", "polygon_area", "hull_faces", "hull_volume_centroid", "section_polygon", "section_area",
            "side_faces", "side_faces_by_sections"]
@@ -65,14 +66,19 @@ def _dot(a, b):
 
 def _faces(points):
     """Supporting planes of the hull, each with its vertices in outward
-    counter-clockwise order."""
+    counter-clockwise order.  The planes are found on the points scaled by
+    the common denominator of their coordinates, in integers (a positive
+    scale keeps every sign, order and orientation; Fractions cost about
+    twenty times as much), and the rings given in the points themselves."""
     pts = [tuple(Fraction(c) for c in p) for p in set(map(tuple, points))]
+    scale = lcm(*(c.denominator for p in pts for c in p))
+    grid = [tuple(c.numerator * (scale // c.denominator) for c in p) for p in pts]
     seen, faces = set(), []
     for i, j, k in combinations(range(len(pts)), 3):
-        n = _cross(_sub(pts[j], pts[i]), _sub(pts[k], pts[i]))
+        n = _cross(_sub(grid[j], grid[i]), _sub(grid[k], grid[i]))
         if n == (0, 0, 0):
             continue
-        side = [_dot(n, _sub(p, pts[i])) for p in pts]
+        side = [_dot(n, _sub(p, grid[i])) for p in grid]
         if all(s <= 0 for s in side):
             normal = n
         elif all(s >= 0 for s in side):
@@ -85,7 +91,7 @@ def _faces(points):
         seen.add(on)
         drop = max(range(3), key=lambda c: abs(normal[c]))
         keep = [c for c in range(3) if c != drop]
-        proj = {(pts[q][keep[0]], pts[q][keep[1]]): pts[q] for q in on}
+        proj = {(grid[q][keep[0]], grid[q][keep[1]]): pts[q] for q in on}
         ring = [proj[p] for p in hull_2d(list(proj))]
         # hull_2d is counter-clockwise in the projected plane; flip when that
         # plane is seen from behind by the outward normal.
