@@ -68,8 +68,8 @@ def _faces(points):
     """Supporting planes of the hull, each with its vertices in outward
     counter-clockwise order.  The planes are found on the points scaled by
     the common denominator of their coordinates, in integers (a positive
-    scale keeps every sign, order and orientation; Fractions cost about
-    twenty times as much), and the rings given in the points themselves."""
+    scale keeps every sign, order and orientation; in Fractions the search
+    took nine times as long), and the rings given in the points themselves."""
     pts = [tuple(Fraction(c) for c in p) for p in set(map(tuple, points))]
     scale = lcm(*(c.denominator for p in pts for c in p))
     grid = [tuple(c.numerator * (scale // c.denominator) for c in p) for p in pts]
