@@ -17,7 +17,7 @@ from flint import arb
 
 from symfloat.engine.check import FormulaReport, judge
 from symfloat.engine.construction_witness import Area, Centroid, ConstructionWitness, Coordinates
-from symfloat.engine.enclosure import Unsupported, ball, integral, working_precision
+from symfloat.engine.enclosure import Unsupported, ball, integral, iterated_integral, working_precision
 from symfloat.engine.figure_witness import CurveRoot, Figure, FigureWitness
 from symfloat.engine.measured import measured
 from symfloat.engine.witness import (CERTIFIED, Case, HullWitness, MeasuredWitness, PlaneSections, SectionIntegral,
@@ -367,6 +367,50 @@ def test_a_singularity_it_cannot_remove_stays_undecided():
 
 
 # ---- Min and Max: a reading clipped to bounds ------------------------------------------------------------------
+
+_y = sp.Symbol("y", real=True)
+
+
+@pytest.mark.parametrize("integrand, limits, exact", [
+    # the right triangle 0 <= x <= 2, |y| <= x/2: its area 2 and its moment of inertia about the x axis,
+    # int_0^2 2 (x/2)^3 / 3 dx = 1/3 (the inner ends depend on the outer variable)
+    (1, ((_y, -x / 2, x / 2), (x, 0, 2)), Fraction(2)),
+    (_y ** 2, ((_y, -x / 2, x / 2), (x, 0, 2)), Fraction(1, 3)),
+    # the unit tetrahedron's volume, three deep: 1/6
+    (1, ((z, 0, 1 - x - _y), (_y, 0, 1 - x), (x, 0, 1)), Fraction(1, 6)),
+])
+def test_an_iterated_integral_is_enclosed_and_a_value_off_by_1e_12_refuted(integrand, limits, exact):
+    v = iterated_integral(integrand, limits, 128)
+    with working_precision(128):
+        assert v.overlaps(arb(exact.numerator) / exact.denominator) and v.rad() < arb(2) ** -100
+        assert not v.overlaps(arb(exact.numerator) / exact.denominator * (1 + arb(10) ** -12))
+
+
+def test_an_iterated_integral_not_holomorphic_in_its_outer_variable_has_no_finite_enclosure():
+    # the inner end sqrt(1 - x^2) has a branch point at the outer end x = 1: the outer integrator asks for
+    # holomorphy there, the inner integrand is asked too, and the enclosure is not finite (never a guess)
+    v = iterated_integral(1, ((_y, 0, sp.sqrt(1 - x ** 2)), (x, 0, 1)), 128)
+    assert not v.is_finite()
+
+
+def test_an_iterated_integral_stops_at_its_budget_of_evaluations(monkeypatch):
+    # an inner integrand that is never finite: every outer evaluation would integrate anew until the outer
+    # integrator's own limit; past the budget (a count) the inner integrals stop at once
+    import symfloat.engine.enclosure as enclosure
+    calls, depth = [], [0]
+    real = enclosure._compile
+
+    def counted(e, variables):         # the integrand's evaluations, not its nodes'
+        depth[0] += 1
+        try:
+            f = real(e, variables)
+        finally:
+            depth[0] -= 1
+        return (lambda v, a: calls.append(1) or f(v, a)) if depth[0] == 0 else f
+    monkeypatch.setattr(enclosure, "_compile", counted)
+    v = iterated_integral(1 / sp.sqrt(sp.Abs(_y - sp.Rational(1, 2))), ((_y, 0, 1), (x, 0, 1)), 64)
+    assert not v.is_finite() and len(calls) <= enclosure.ITERATED_EVALUATIONS * 64 + 2     # and its two ends' balls
+
 
 def test_min_and_max_are_enclosed_and_in_an_integrand_only_where_one_side_is_proven_the_extreme():
     # min(max(√2, 6), 12) = 6 exactly; max(1/3, π/10) = 1/3 (π/10 = 0.314...)

@@ -33,7 +33,14 @@ def test_the_definition_is_the_first_stated_member():
     assert definitions(d.steps)[T].has(sp.Integral)      # not the closed form established later
 
 
-def test_a_right_formula_agrees_at_two_precisions():
+def _without_balls(monkeypatch):
+    """The route as for a member without a rule in balls: its two methods compared against the reading."""
+    import symfloat.engine.definitions as definitions_module
+    monkeypatch.setattr(definitions_module, "_certified", lambda *args: None)
+
+
+def test_a_right_formula_agrees_at_two_precisions(monkeypatch):
+    _without_balls(monkeypatch)
     _, r = triangle()
     out = r.outcome("t", (T, a * b ** 3 / 12))
     assert out.agrees and [rec["method"] for rec in out.records] == ["definitions, 15 digits",
@@ -42,9 +49,10 @@ def test_a_right_formula_agrees_at_two_precisions():
     assert all(rec["cases"] == 3 and rec["seconds"] >= 0 for rec in out.records)
 
 
-def test_a_mutated_coefficient_is_refuted():
+def test_a_mutated_coefficient_is_refuted(monkeypatch):
     # mutation: 1/12 -> 1/10; the quadrature of the definition sees a difference of 1/60 a b^3,
     # relative to the larger value, a b^3/10: 1/6
+    _without_balls(monkeypatch)
     _, r = triangle()
     out = r.outcome("t", (T, a * b ** 3 / 10))
     assert not out.agrees and abs(out.records[1]["rel_error"] - 1 / 6) < 1e-12
@@ -384,14 +392,33 @@ def test_a_method_that_misses_the_enclosure_fails_its_proven_error(monkeypatch):
     assert abs(out.records[1]["rel_error"] - 1e-5) < 1e-9
 
 
-def test_what_has_no_rule_in_balls_is_compared_at_both_precisions():
-    # a double integral (the triangle) and an integral nested in another's integrand: no enclosure, both methods
+def test_a_double_integral_is_decided_in_balls_and_a_mutated_coefficient_refuted():
+    # the triangle's moment of inertia, a double integral whose inner end depends on the outer variable:
+    # nested acb.integral (the inner variable carried to [0, 1]), the 15-digit method's proven error beside it
     _, r = triangle()
-    assert [rec["method"] for rec in r.outcome("t", (T, a * b ** 3 / 12)).records] == ["definitions, 15 digits",
-                                                                                    "definitions, 30 digits"]
-    nested = sp.Integral(sp.Integral(y, (y, 0, x)), (x, 0, a))
+    out = r.outcome("t", (T, a * b ** 3 / 12))
+    assert out.agrees and [rec["method"] for rec in out.records] == ["Arb ball arithmetic", "definitions, 15 digits"]
+    assert out.records[0]["bits"] == 128 and out.records[1]["proven"]
+    off = r.outcome("t", (T, a * b ** 3 / 12 * (1 + sp.Rational(1, 10 ** 12))))
+    assert not off.agrees and off.records[0]["abs_error_lower"] > 0
+
+
+def test_a_vanishing_moment_at_a_point_without_parameters_is_decided_against_the_numbers_it_writes():
+    # the triangle's static moment about its centroid's axis is 0: no parameter and no value gives a scale, the
+    # 1/3 it writes does (the width 2^-64 of it), and a moment one part in 10^12 of it off is refuted
+    p, q = sp.symbols("p q", positive=True)
+    moment = sp.Integral(q - sp.Rational(1, 3), (q, 0, 1 - p), (p, 0, 1))
+    _, r = route([((T, moment), T)], {})
+    out = r.outcome("m", (T, 0))
+    assert out.agrees and out.records[0]["method"] == "Arb ball arithmetic" and 0 < out.records[0]["width"] < 1e-19
+    assert not r.outcome("m", (T, sp.Rational(1, 3 * 10 ** 12))).agrees
+
+
+def test_what_has_no_rule_in_balls_is_compared_at_both_precisions():
+    # an integral nested in another's integrand, a factor of it: no enclosure, both methods
+    nested = sp.Integral(x * sp.Integral(y, (y, 0, x)), (x, 0, a))
     _, r = route([((T, nested), T)], {a: (1, 3)})
-    out = r.outcome("n", (T, a ** 3 / 6))
+    out = r.outcome("n", (T, a ** 4 / 8))
     assert out.agrees and [rec["method"] for rec in out.records] == ["definitions, 15 digits", "definitions, 30 digits"]
 
 

@@ -2,18 +2,17 @@
 
 At each sample point of the route (exact rationals) every member is evaluated by
 :func:`~symfloat.engine.enclosure.ball`, each defining integral closed at the point by
-:func:`~symfloat.engine.enclosure.integral` (``acb.integral``, rigorous error bounds) and inserted as a
-ball, the smallest first (a centroid inside a moment's integrand).  The enclosure of each difference
-*claimed - measured* decides the formula as a declared witness's does
+:func:`~symfloat.engine.enclosure.iterated_integral` (``acb.integral``, rigorous error bounds; a multiple
+integral as nested ones) and inserted as a ball, the smallest first (a centroid inside a moment's integrand).
+The enclosure of each difference *claimed - measured* decides the formula as a declared witness's does
 (:func:`~symfloat.engine.witness.record_decision`): agreed when it is proven within the width the
 precision asks, refuted when proven away from 0, else the precision is doubled from
 :data:`~symfloat.engine.witness.START_BITS` up to 8 times it.
 
 There is no rigorous rule (:class:`~symfloat.engine.enclosure.Unsupported`, the route then compares its
 methods as before) for a limit left to extrapolation, a root count, an integral nested in another's
-integrand, a multiple integral, a node without a ball rule (a piecewise function), and for an integrand
-that has no finite enclosure at the first precision (not holomorphic near its path, or the integrator's
-evaluations run out).
+integrand, a node without a ball rule (a piecewise function), and for an integrand that has no finite
+enclosure at the first precision (not holomorphic near its path, or the integrator's evaluations run out).
 
 >>> import sympy as sp
 >>> x, a = sp.symbols("x a", positive=True)
@@ -34,7 +33,7 @@ import sympy as sp
 from flint import arb, ctx
 
 from ..model.relation import RealRoots
-from .enclosure import Unsupported, ball, exact, integral, lower, upper, working_precision
+from .enclosure import Unsupported, ball, exact, iterated_integral, lower, upper, working_precision
 from .witness import CERTIFIED, START_BITS, record_decision
 
 __all__ = ["route_enclosure", "definition_ball"]
@@ -59,12 +58,11 @@ def definition_ball(expr, point: dict, bits: int) -> arb:
         if not closed:
             raise Unsupported("an integral nested in another's integrand")
         for i in sorted(closed, key=sp.count_ops):
-            if len(i.limits) != 1 or len(i.limits[0]) != 3:
-                raise Unsupported("a multiple integral")
-            var, lo, hi = i.limits[0]
-            if (lo.free_symbols | hi.free_symbols) & set(balls):
+            if any(len(limit) != 3 for limit in i.limits):
+                raise Unsupported("an integral without its ends")
+            if any((lo.free_symbols | hi.free_symbols) & set(balls) for _, lo, hi in i.limits):
                 raise Unsupported("an integral whose bounds are integrals")
-            value = integral(i.function, var, lo, hi, prec, at={d: balls[d] for d in i.function.free_symbols - {var}})
+            value = iterated_integral(i.function, i.limits, prec, at={d: balls[d] for d in i.free_symbols})
             if not value.is_finite():
                 return arb.nan()
             d = sp.Symbol(f"·integral {len(balls)}")
@@ -131,10 +129,14 @@ def route_enclosure(measured: list, claims: list, points: list, allowance=None):
 def _at(measured, claims, points, bits, allowance):
     """The certified record and the measured balls at *bits* (see :func:`route_enclosure`); ``(None, None)`` where
     a member has no finite ball.  The width allowed is ``2^(-bits/2)`` of the largest number met, as for a
-    declared witness (:meth:`~symfloat.engine.witness.MeasuredWitness._bounds`)."""
+    declared witness (:meth:`~symfloat.engine.witness.MeasuredWitness._bounds`): the point's, the members'
+    values, and the numbers the members write (a moment that vanishes at a point without parameters,
+    ``∫∫ (q - 1/3) dq dp = 0``, is still measured against its ``1/3``)."""
     worst_upper = worst_lower = worst_rel = 0.0
     width = math.inf
     balls = []
+    written = [abs(float(n)) for e in (*measured, *(c for claimed in claims for c in claimed))
+               for n in sp.sympify(e).atoms(sp.Number)]
     with working_precision(bits):
         for point in points:
             here = [definition_ball(e, point, bits) for e in measured]
@@ -146,7 +148,7 @@ def _at(measured, claims, points, bits, allowance):
                 if not all(c.is_finite() for c in values):
                     return None, None
                 sizes = [upper(abs(v)) for v in (*here, *values)]
-                sizes += [abs(float(v)) for v in point.values()]
+                sizes += [abs(float(v)) for v in point.values()] + written
                 width = min(width, math.ldexp(max(sizes, default=0.0), -bits // 2))
                 for m, c in zip(here, values):
                     d = c - m
