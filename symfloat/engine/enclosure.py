@@ -25,6 +25,8 @@ An integrand with a branch point at an end (a factor ``base**(p/q)``, ``p/q > -1
 zero there: an integrable singularity as Euler's ``y²/√(b² − y²)`` at ``y = b``, or ``(1 − y)^(3/4)``) is
 first rewritten by the substitution that makes it holomorphic there (:func:`_desingularised`); one it
 cannot remove is integrated as it is, and an enclosure that is then not finite says so.
+:func:`iterated_integral` nests ``acb.integral`` for a multiple integral, each inner variable carried to
+``[0, 1]``.
 
 >>> import sympy as sp
 >>> x = sp.Symbol("x")
