@@ -2,8 +2,10 @@
 package as ``symfloat.derivations`` (mapped by ``package_dir``), so that no module named ``derivations``
 lands at the top of site-packages; setuptools' package discovery cannot look under a mapped folder, so
 the derivation packages are listed here."""
-from setuptools import find_packages, setup
+from setuptools import find_namespace_packages, find_packages, setup
 
-setup(packages=[*find_packages(include=["symfloat", "symfloat.*"]), "symfloat.derivations",
-                *(f"symfloat.derivations.{name}" for name in find_packages("derivations"))],
+# the package's folders of data (sources, schemas, the site's assets, nbconvert's template) are listed as
+# packages too, so that setuptools installs their files without warning that they are in no package
+setup(packages=[*find_namespace_packages(include=["symfloat", "symfloat.*"], exclude=["*.__pycache__"]),
+                "symfloat.derivations", *(f"symfloat.derivations.{name}" for name in find_packages("derivations"))],
       package_dir={"symfloat.derivations": "derivations"})
