@@ -414,11 +414,20 @@ def test_a_vanishing_moment_at_a_point_without_parameters_is_decided_against_the
     assert not r.outcome("m", (T, sp.Rational(1, 3 * 10 ** 12))).agrees
 
 
-def test_what_has_no_rule_in_balls_is_compared_at_both_precisions():
-    # an integral nested in another's integrand, a factor of it: no enclosure, both methods
-    nested = sp.Integral(x * sp.Integral(y, (y, 0, x)), (x, 0, a))
+def test_an_integral_in_another_s_integrand_is_one_iterated_integral_with_it():
+    # int_0^a (1 + x int_0^x y dy) dx = a + a^4/8: the inner integral depends on x, one factor of a term
+    nested = sp.Integral(1 + x * sp.Integral(y, (y, 0, x)), (x, 0, a))
     _, r = route([((T, nested), T)], {a: (1, 3)})
-    out = r.outcome("n", (T, a ** 4 / 8))
+    out = r.outcome("n", (T, a + a ** 4 / 8))
+    assert out.agrees and [rec["method"] for rec in out.records] == ["Arb ball arithmetic", "definitions, 15 digits"]
+    assert not r.outcome("n", (T, a + a ** 4 / 8 * (1 + sp.Rational(1, 10 ** 12)))).agrees
+
+
+def test_what_has_no_rule_in_balls_is_compared_at_both_precisions():
+    # an integral nested in another's integrand, squared: no enclosure, both methods
+    nested = sp.Integral(sp.Integral(y, (y, 0, x)) ** 2, (x, 0, a))
+    _, r = route([((T, nested), T)], {a: (1, 3)})
+    out = r.outcome("n", (T, a ** 5 / 20))
     assert out.agrees and [rec["method"] for rec in out.records] == ["definitions, 15 digits", "definitions, 30 digits"]
 
 

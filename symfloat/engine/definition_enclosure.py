@@ -9,10 +9,12 @@ The enclosure of each difference *claimed - measured* decides the formula as a d
 precision asks, refuted when proven away from 0, else the precision is doubled from
 :data:`~symfloat.engine.witness.START_BITS` up to 8 times it.
 
-There is no rigorous rule (:class:`~symfloat.engine.enclosure.Unsupported`, the route then compares its
-methods as before) for a limit left to extrapolation, a root count, an integral nested in another's
-integrand, a node without a ball rule (a piecewise function), and for an integrand that has no finite
-enclosure at the first precision (not holomorphic near its path, or the integrator's evaluations run out).
+An integral in another's integrand that depends on the outer variable, one factor of a term, is made one
+iterated integral with it (:func:`_merged`).  There is no rigorous rule
+(:class:`~symfloat.engine.enclosure.Unsupported`, the route then compares its methods as before) for a limit
+left to extrapolation, a root count, an integral nested in another's integrand otherwise, a node without a
+ball rule (a piecewise function), and for an integrand that has no finite enclosure at the first precision
+(not holomorphic near its path, or the integrator's evaluations run out).
 
 >>> import sympy as sp
 >>> x, a = sp.symbols("x a", positive=True)
@@ -55,8 +57,12 @@ def definition_ball(expr, point: dict, bits: int) -> arb:
     while e.has(sp.Integral):
         closed = [i for i in e.atoms(sp.Integral)
                   if not i.function.has(sp.Integral) and i.free_symbols <= set(balls)]
-        if not closed:
-            raise Unsupported("an integral nested in another's integrand")
+        if not closed:          # an integral in another's integrand that depends on the outer variable
+            merged = {i: m for i in e.atoms(sp.Integral) if i.function.has(sp.Integral) and (m := _merged(i)) is not None}
+            if not merged:
+                raise Unsupported("an integral nested in another's integrand")
+            e = _replaced(e, merged)
+            continue
         for i in sorted(closed, key=sp.count_ops):
             if any(len(limit) != 3 for limit in i.limits):
                 raise Unsupported("an integral without its ends")
@@ -74,6 +80,24 @@ def definition_ball(expr, point: dict, bits: int) -> arb:
         raise
     except ValueError as exc:          # a complex value: the 30-digit quadrature's own check reads it
         raise Unsupported(str(exc)) from exc
+
+
+def _merged(i: sp.Integral):
+    """``∫ Σ c_k(s) J_k(s) ds``, each ``J_k = ∫ h_k(η, s) dη`` an integral whose integrand holds none (or absent),
+    as the sum of the iterated integrals ``∫∫ c_k h_k dη ds`` (SymPy's multiple integral, the inner ends as they
+    were); ``None`` where a term holds an integral otherwise than as one such factor."""
+    parts = []
+    for term in sp.Add.make_args(i.function):
+        factors = sp.Mul.make_args(term)
+        inner = [f for f in factors if isinstance(f, sp.Integral)]
+        rest = [f for f in factors if not isinstance(f, sp.Integral)]
+        if len(inner) > 1 or any(f.has(sp.Integral) for f in (*rest, *(j.function for j in inner))):
+            return None
+        if inner:
+            parts.append(sp.Integral(sp.Mul(*rest, inner[0].function, evaluate=False), *inner[0].limits, *i.limits))
+        else:
+            parts.append(sp.Integral(term, *i.limits))
+    return sp.Add(*parts, evaluate=False) if len(parts) > 1 else parts[0]
 
 
 def _replaced(expr, mapping: dict):
