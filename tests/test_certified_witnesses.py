@@ -366,7 +366,7 @@ def test_a_singularity_it_cannot_remove_stays_undecided():
     assert not integral(sp.log(1 - y), y, 0, 1, 64).is_finite()
 
 
-# ---- Min and Max: a reading clipped to bounds ------------------------------------------------------------------
+# ---- iterated integrals: a multiple integral as nested ones ---------------------------------------------------
 
 _y = sp.Symbol("y", real=True)
 
@@ -411,6 +411,8 @@ def test_an_iterated_integral_stops_at_its_budget_of_evaluations(monkeypatch):
     v = iterated_integral(1 / sp.sqrt(sp.Abs(_y - sp.Rational(1, 2))), ((_y, 0, 1), (x, 0, 1)), 64)
     assert not v.is_finite() and len(calls) <= enclosure.ITERATED_EVALUATIONS * 64 + 2     # and its two ends' balls
 
+
+# ---- Min and Max: a reading clipped to bounds ------------------------------------------------------------------
 
 def test_min_and_max_are_enclosed_and_in_an_integrand_only_where_one_side_is_proven_the_extreme():
     # min(max(√2, 6), 12) = 6 exactly; max(1/3, π/10) = 1/3 (π/10 = 0.314...)

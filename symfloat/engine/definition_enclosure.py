@@ -58,7 +58,8 @@ def definition_ball(expr, point: dict, bits: int) -> arb:
         closed = [i for i in e.atoms(sp.Integral)
                   if not i.function.has(sp.Integral) and i.free_symbols <= set(balls)]
         if not closed:          # an integral in another's integrand that depends on the outer variable
-            merged = {i: m for i in e.atoms(sp.Integral) if i.function.has(sp.Integral) and (m := _merged(i)) is not None}
+            merged = {i: m for i in e.atoms(sp.Integral)
+                      if i.function.has(sp.Integral) and (m := _merged(i)) is not None}
             if not merged:
                 raise Unsupported("an integral nested in another's integrand")
             e = _replaced(e, merged)
@@ -83,9 +84,9 @@ def definition_ball(expr, point: dict, bits: int) -> arb:
 
 
 def _merged(i: sp.Integral):
-    """``∫ Σ c_k(s) J_k(s) ds``, each ``J_k = ∫ h_k(η, s) dη`` an integral whose integrand holds none (or absent),
-    as the sum of the iterated integrals ``∫∫ c_k h_k dη ds`` (SymPy's multiple integral, the inner ends as they
-    were); ``None`` where a term holds an integral otherwise than as one such factor."""
+    """``∫ Σ c_k(s) J_k(s) ds``, each ``J_k = ∫ h_k(η, s) dη`` an integral whose integrand holds none (or
+    absent), as the sum of the iterated integrals ``∫∫ c_k h_k dη ds`` (SymPy's multiple integral, the inner ends
+    as they were); ``None`` where a term holds an integral otherwise than as one such factor."""
     parts = []
     for term in sp.Add.make_args(i.function):
         factors = sp.Mul.make_args(term)
