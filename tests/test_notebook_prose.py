@@ -11,7 +11,7 @@ import pytest
 from symfloat import registry
 from symfloat.model.symbol_names import GREEK
 from symfloat.registry import load
-from symfloat.report.notebook_view import reading_markdown
+from symfloat.report.notebook_view import reading_markdown, step_title
 from symfloat.prose import typeset, without_program_names
 
 # the names the site's browser test looks for as runs of italic letters in a formula (tests/test_site.py)
@@ -175,3 +175,17 @@ def test_a_dummy_is_declared_as_a_dummy_not_as_the_symbol_of_its_name():
     assert isinstance(t, sp.Dummy) and t.is_positive and t != sp.Symbol("t", positive=True)
     A, B = kernel[code.names[a]], kernel[code.names[b]]
     assert sp.Subs(A * kk, (A, B, ka), (ka, A, B)).doit() == B * kk       # the swap leaves k alone
+
+
+def test_a_label_before_its_formula_is_the_whole_title_and_a_cut_phrase_ends_with_an_ellipsis():
+    # Scheeffer IV-V's step noted "area element: $df_2 = |dp/du x dp/dv| df = df/cos phi_1$" was titled "Area
+    # element: …" (the note is longer than 70 characters and "area element" two words); Euler §§229-243's
+    # "Euler's N: ∫dy(1 − y^n/b^n)^κ ..." likewise
+    titles = {}
+    for did in ("scheeffer-iv-v", "euler-229-243", "graefe-s4-applications"):
+        d, _ = load(did)
+        titles.update({s.note.strip()[:12].lower(): step_title(d, s) for s in d.steps if s.note})
+    assert titles["area element"] == "Area element" and titles["euler's n: ∫"] == "Euler's N"
+    assert not [t for t in titles.values() if t.endswith((":", ": …"))]
+    # a long phrase with no label is still cut at a space and marked as cut
+    assert titles["the factor b"].startswith("The factor $b c/a^{2}") and titles["the factor b"].endswith(" …")

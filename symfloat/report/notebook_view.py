@@ -127,7 +127,8 @@ def step_title(d, step) -> str:
 
     The note, typeset, ends at the first ``;``, ``:``, comma or bracket outside its formulas and brackets
     (not a locator's bracket, "in (12)") that leaves at least three words; a longer phrase is cut at a space
-    outside its formulas before 70 characters."""
+    outside its formulas before 70 characters and ends with "…", unless what is left is a label before its
+    formula ("Area element: $df_2 = …$"), which is the title without its colon."""
     if step.note:
         note = words(d, step.note.strip())
         outside = _outside_formulas(note)
@@ -137,7 +138,9 @@ def step_title(d, step) -> str:
         phrase = note[:cuts[0]] if cuts else note
         if len(phrase) > 70:
             spaces = [i for i, ch in enumerate(phrase[:70]) if ch == " " and outside[i]]
-            phrase = phrase[:spaces[-1]] + " …" if spaces else phrase
+            if spaces:
+                head = phrase[:spaces[-1]]
+                phrase = head[:-1] if head.endswith(":") else head + " …"
         return _capital(phrase)
     quoted = [p for p in d.printed if p.name == step.name]
     if quoted:
