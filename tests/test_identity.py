@@ -74,6 +74,27 @@ def test_the_cancel_strategy_is_zero_exactly_where_sympys_cancel_is():
     assert cancel(roots) == sp.cancel(sp.together(roots))
 
 
+
+def test_a_replay_is_reused_for_the_very_same_claim_and_no_other():
+    """A certificate replayed once per claim (``_replayed``): a claim met again is proved by the same steps, but
+    claims that print alike (one digest) and differ in their symbols' assumptions are not the same claim."""
+    from symfloat.engine.identity import _replayed
+    from symfloat.engine.proofs import Certificate, ProofBook, claim_digest
+    # log(x y) = log x + log y: SymPy's expand splits the logarithm for positive x, y only
+    u, v = sp.symbols("u v", positive=True)
+    p, q = sp.symbols("u v")
+    domain = Domain({u: (1, 5), v: (1, 5), p: (1, 5), q: (1, 5)})
+    digest = claim_digest([(sp.log(u * v), sp.log(u) + sp.log(v))])
+    assert digest == claim_digest([(sp.log(p * q), sp.log(p) + sp.log(q))])
+    book = ProofBook("test", {k: Certificate(digest, "expand", ("expand",), "") for k in ("a", "b", "c")})
+    before = _replayed.cache_info().hits
+    first = check_identity(sp.log(u * v), sp.log(u) + sp.log(v), domain, "a", book=book)
+    again = check_identity(sp.log(u * v), sp.log(u) + sp.log(v), domain, "b", book=book)
+    assert first.status == again.status == "proved" and first.proof == again.proof == "replayed"
+    assert _replayed.cache_info().hits == before + 1
+    other = check_identity(sp.log(p * q), sp.log(p) + sp.log(q), domain, "c", book=book)
+    assert other.proof == "replay failed" and other.status == "sampled" and "log(u*v)" in other.residual
+
 # ---- sampled values from balls (symfloat.engine.identity._sample) ------------------------------------------------
 
 def _count_sympy_values(monkeypatch) -> list:

@@ -372,6 +372,23 @@ def _apply(name, pairs, diffs):
     return [fn(p) for p in pairs] if name == "squares" else [fn(d) for d in diffs]
 
 
+@functools.lru_cache(maxsize=4096)
+def _digest(stated: tuple) -> str:
+    """:func:`~symfloat.engine.proofs.claim_digest` once per claim as stated (printing it is the cost)."""
+    return claim_digest(stated)
+
+
+@functools.lru_cache(maxsize=4096)
+def _replayed(strategy: str, pairs: tuple):
+    """*strategy* replayed on *pairs*: ``None`` where it reduces every difference to 0, else the first residual
+    (printed, 300 characters).  Once per claim and strategy: a claim is met again (the reading of a printed
+    formula and the step that derives it, as built: a third of all certificates), and a replay has no time
+    limit and gives the same result every time.  Keyed by the pairs themselves, not their printed digest, which
+    does not tell symbols of one name and different assumptions apart."""
+    rest = _apply(strategy, list(pairs), [x - y for x, y in pairs])
+    return next((sp.sstr(r)[:300] for r in rest if r != 0), None)
+
+
 def check_identity(a, b, domain: Domain, seed_text: str, *, prove=True, book: ProofBook | None = None,
                    claim: str | None = None, limit: float = SEARCH_SECONDS, samples: int = SAMPLES,
                    strategies=STRATEGIES) -> IdentityResult:
@@ -389,20 +406,19 @@ def check_identity(a, b, domain: Domain, seed_text: str, *, prove=True, book: Pr
         result.seconds = time.perf_counter() - t0
         return result
     t_proof = time.perf_counter()
-    diffs = [x - y for x, y in pairs]
-    digest = claim_digest(stated)
+    digest = _digest(tuple(stated))
     cert = book.get(claim or seed_text, digest) if book is not None else None
     if cert is None:
-        strategy, tried, residual = _search(pairs, diffs, strategies, limit)
+        strategy, tried, residual = _search(pairs, [x - y for x, y in pairs], strategies, limit)
         cert, result.proof = Certificate(digest, strategy, tuple(tried), residual), "searched"
     else:
         result.proof = "replayed"
     result.residual = cert.residual
     if cert.strategy is not None and result.proof == "replayed":
-        rest = _apply(cert.strategy, pairs, diffs)
-        result.proof = "replayed" if all(r == 0 for r in rest) else "replay failed"
-        if result.proof == "replay failed":
-            result.residual = sp.sstr(next(r for r in rest if r != 0))[:300]
+        residual = _replayed(cert.strategy, tuple(pairs))
+        result.proof = "replayed" if residual is None else "replay failed"
+        if residual is not None:
+            result.residual = residual
     result.tried += list(cert.tried)
     result.certificate = cert.to_json()
     if cert.strategy is not None and result.proof != "replay failed":
