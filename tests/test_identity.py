@@ -74,7 +74,6 @@ def test_the_cancel_strategy_is_zero_exactly_where_sympys_cancel_is():
     assert cancel(roots) == sp.cancel(sp.together(roots))
 
 
-
 def test_a_replay_is_reused_for_the_very_same_claim_and_no_other():
     """A certificate replayed once per claim (``_replayed``): a claim met again is proved by the same steps, but
     claims that print alike (one digest) and differ in their symbols' assumptions are not the same claim."""
@@ -94,6 +93,7 @@ def test_a_replay_is_reused_for_the_very_same_claim_and_no_other():
     assert _replayed.cache_info().hits == before + 1
     other = check_identity(sp.log(p * q), sp.log(p) + sp.log(q), domain, "c", book=book)
     assert other.proof == "replay failed" and other.status == "sampled" and "log(u*v)" in other.residual
+
 
 # ---- sampled values from balls (symfloat.engine.identity._sample) ------------------------------------------------
 
