@@ -189,3 +189,10 @@ def test_a_label_before_its_formula_is_the_whole_title_and_a_cut_phrase_ends_wit
     assert not [t for t in titles.values() if t.endswith((":", ": …"))]
     # a long phrase with no label is still cut at a space and marked as cut
     assert titles["the factor b"].startswith("The factor $b c/a^{2}") and titles["the factor b"].endswith(" …")
+
+
+def test_a_ratios_colon_does_not_end_a_title():
+    # Euler §213's proportion "I : K = EF^2 : AB^2" was titled "§213: I : K = EF²" (and a space), half of it
+    d, _ = load("euler-192-219")
+    step = next(s for s in d.steps if s.note.startswith("§213: I : K"))
+    assert step_title(d, step) == "§213: I : $K = EF^{2}$ : $AB^{2}$"

@@ -126,13 +126,14 @@ def step_title(d, step) -> str:
     formula it derives, else what it does to its first member.
 
     The note, typeset, ends at the first ``;``, ``:``, comma or bracket outside its formulas and brackets
-    (not a locator's bracket, "in (12)") that leaves at least three words; a longer phrase is cut at a space
-    outside its formulas before 70 characters and ends with "…", unless what is left is a label before its
-    formula ("Area element: $df_2 = …$"), which is the title without its colon."""
+    (not a locator's bracket, "in (12)"; not a ratio's colon, spaced on both sides, "I : K = EF² : AB²") that
+    leaves at least three words; a longer phrase is cut at a space outside its formulas before 70 characters and
+    ends with "…", unless what is left is a label before its formula ("Area element: $df_2 = …$"), which is the
+    title without its colon."""
     if step.note:
         note = words(d, step.note.strip())
         outside = _outside_formulas(note)
-        cuts = [m.start() for m in re.finditer(r"[;:]\s|\s\((?![\d§])|,\s", note)
+        cuts = [m.start() for m in re.finditer(r";\s|(?<!\s):\s|\s\((?![\d§])|,\s", note)
                 if outside[m.start()] and len(note[:m.start()].split()) >= 3
                 and note[:m.start()].count("(") == note[:m.start()].count(")")]
         phrase = note[:cuts[0]] if cuts else note
