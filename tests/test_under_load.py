@@ -2,7 +2,7 @@
 busy where ``taskset`` is missing, the check then unpinned), and every search time
 limit divided by 1e9 (``SYMFLOAT_SLOWDOWN``) — the errata come out identical to the committed ones
 byte for byte but for timings, and the verification record with every verdict, evidence and witness
-the same (float64 witness errors to their own reproducibility, see ``record_differences``)
+the same (witness figures to what another machine reproduces, see ``record_differences``)
 (issue: proof checks that give the same verdicts on any machine)."""
 import json
 import os

@@ -110,28 +110,54 @@ def verification_table(reports: list[DerivationReport], elapsed: float | None = 
     return "\n".join(lines) + "\n"
 
 
-# A float64 witness's error figure is itself computed in float64: its last bits depend on the
-# processor's vector units and the numpy release (summation order), not on the mathematics.  Two
-# figures are the same when they differ by less than 64 units in the last place of the larger of
-# the numbers they are made from: the measured quantity and, where the print disagrees with it,
-# the disagreement itself (an erratum's witness measures an error far larger than the quantity).
+# What a witness record's figures may differ by between two machines.  A figure computed in hardware doubles
+# (float64, and the definition route's 15 digits) has last
+# bits that depend on the processor's vector units (numpy's AVX-512 routines for sin, cos and exp on one
+# machine and not on another) and on the numpy and BLAS releases (summation order), not on the mathematics;
+# so does an enclosure whose ball was started at a float64 root.  Three rules, one per kind of record:
+#
+# - a certified record (Arb) is a proven interval [abs_error_lower, abs_error] around one true difference:
+#   two of them are the same when they say the same (agrees, refuted, undecided) and the intervals meet;
+#   intervals that do not meet mean that one of them is wrong;
+# - a figure in hardware doubles that lies within its method's tolerance says "agrees", and its digits are
+#   the machine's; two such are the same, whatever their digits;
+# - a figure in hardware doubles beyond its tolerance (an erratum's witness measures the print's error, far larger than
+#   the quantity) is the same as another within 64 units in the last place of the larger of the numbers it
+#   is made from: the measured quantity and the disagreement itself.
+#
+# Every other figure (mpmath at n digits, exact arithmetic) is reproducible and compared exactly.
 FLOAT64_REPRODUCIBLE = 64 * 2.0 ** -52
+_FIGURES = ("abs_error", "abs_error_lower", "rel_error")
+_HARDWARE_DOUBLES = ("float64", "definitions, 15 digits")     # the route's 15 digits are mpmath's fp context
+
+
+def _in_hardware_doubles(record: dict) -> bool:
+    return any(name in str(record.get("method", "")) for name in _HARDWARE_DOUBLES)
 
 
 def _same_numeric(a: dict, b: dict) -> bool:
     a, b = {k: v for k, v in a.items() if k != "seconds"}, {k: v for k, v in b.items() if k != "seconds"}
-    if "float64" not in str(a.get("method", "")) or a.keys() != b.keys():
+    if a.keys() != b.keys():
+        return False
+    rest = {k: v for k, v in a.items() if k not in _FIGURES} == {k: v for k, v in b.items() if k not in _FIGURES}
+    if a.get("certified"):
+        if a["abs_error"] is None or b["abs_error"] is None:
+            return rest and a == b
+        meet = a["abs_error_lower"] <= b["abs_error"] and b["abs_error_lower"] <= a["abs_error"]
+        return rest and meet and record_decision(a) == record_decision(b)
+    if not _in_hardware_doubles(a):
         return a == b
+    if record_decision(a) == record_decision(b) == "agrees":
+        return rest
     scale = abs(a["abs_error"] / a["rel_error"]) if a["rel_error"] else 1.0     # the committed quantity's size
     close = (abs(a["abs_error"] - b["abs_error"]) <= FLOAT64_REPRODUCIBLE * max(scale, abs(a["abs_error"]))
              and abs(a["rel_error"] - b["rel_error"]) <= FLOAT64_REPRODUCIBLE * max(1.0, abs(a["rel_error"])))
-    rest = {k: v for k, v in a.items() if k not in ("abs_error", "rel_error")}
-    return close and rest == {k: v for k, v in b.items() if k not in ("abs_error", "rel_error")}
+    return close and rest
 
 
 def record_differences(committed: dict, fresh: dict) -> list[str]:
-    """Where two verification records differ in what must not change: everything but timings,
-    float64 witness errors compared to their own reproducibility (:data:`FLOAT64_REPRODUCIBLE`).
+    """Where two verification records differ in what must not change: everything but timings, witness
+    figures compared to what another machine reproduces (:func:`_same_numeric`).
 
     >>> e = {"method": "Gauss-Legendre n=8, float64", "abs_error": 1e-14, "rel_error": 1e-15, "seconds": 1}
     >>> rec = lambda n: {"formulas": [{"id": "f", "numeric": [n]}], "summary": {"seconds": 2}}
@@ -148,6 +174,23 @@ def record_differences(committed: dict, fresh: dict) -> list[str]:
     []
     >>> record_differences(rec(k), rec({**k, "rel_error": 23343.99999}))
     ['f: witness float64 differs']
+
+    A float64 figure within its tolerance agrees on every machine, its digits the machine's (Scheeffer
+    VI.A–B (72a): a root's error, 1.4e-13 on one processor and 8.1e-14 on another); two enclosures of one
+    difference must meet:
+
+    >>> t = {"method": "float64", "abs_error": 6.6e-15, "rel_error": 1.4e-13, "rel_tolerance": 1e-9}
+    >>> record_differences(rec(t), rec({**t, "abs_error": 3.8e-15, "rel_error": 8.1e-14}))
+    []
+    >>> record_differences(rec(t), rec({**t, "rel_error": 2e-9}))
+    ['f: witness float64 differs']
+    >>> c = {"method": "Arb", "certified": True, "abs_error": 2.1e-32, "abs_error_lower": 0.0, "rel_error": 1.7e-32,
+    ...      "width": 6.5e-20, "abs_tolerance": 0.0}
+    >>> record_differences(rec(c), rec({**c, "abs_error": 2.2e-32}))
+    []
+    >>> r = {**c, "abs_error": 2e-3, "abs_error_lower": 1e-3}
+    >>> record_differences(rec(r), rec({**r, "abs_error": 9e-4, "abs_error_lower": 8e-4}))
+    ['f: witness Arb differs']
     """
     out = []
     old = {f["id"]: f for f in committed["formulas"]}
