@@ -25,7 +25,7 @@ pytest.importorskip("myst_nb", reason="the site extra is not installed (pip inst
 from symfloat.model.source import SOURCES  # noqa: E402
 from symfloat.model.symbol_names import GREEK  # noqa: E402
 from symfloat.model.span import math_intervals  # noqa: E402
-from symfloat.site import typeset  # noqa: E402
+from symfloat.site import search, typeset  # noqa: E402
 from symfloat.site.build import MARKER, _sync  # noqa: E402
 from symfloat.site.edition import edition_page, fault_words, formula_anchor, mark_of, places  # noqa: E402
 from symfloat.site.errata_pages import errata_index, facet_pages  # noqa: E402
@@ -454,6 +454,33 @@ def test_no_tex_is_left_where_mathematics_should_be(pages):
         text = "".join(page.text)
         for raw in ("$$", "\\frac", "\\left", "\\begin{"):
             assert raw not in text, (name, raw, text[max(text.find(raw) - 80, 0):text.find(raw) + 80])
+
+
+def _search_index(site: Path) -> dict:
+    text = (site / "searchindex.js").read_text(encoding="utf-8")
+    return json.loads(text[text.index("(") + 1:text.rindex(")")])
+
+
+def test_the_search_index_holds_words_not_formulas(site):
+    index = _search_index(site)
+    terms = index["terms"]
+    assert {"schwerpunkt", "metazentrum", "ellipsi"} <= set(terms)     # German, Latin and English words, stemmed
+    # terms the index held before (KaTeX's glyphs, MathML's letters run together, TeX's commands); a notebook's
+    # code is shown as code and stays searchable ("sum_of_cubes_ab")
+    junk = {"nghnghngh", "dfu3v3tan", "y3y_3y3", "correctedwith", "readsco", "frac", "tfrac", "varphi", "mathrm"}
+    assert not junk & set(terms), sorted(junk & set(terms))
+    # the Scheeffer edition is found by a word of its transcription, which is in its raw HTML alone
+    found = terms["gleichgewichtslag"]
+    assert index["docnames"].index("edition/scheeffer") in (found if isinstance(found, list) else [found])
+
+
+def test_a_formula_is_cut_out_of_the_words_and_nothing_else():
+    page = ('<p>Die <span class="katex"><span class="katex-mathml"><math><mi>tan</mi></math></span>'
+            '<span class="katex-html"><span class="mord">nghngh</span></span></span> Neigung <code>x</code>'
+            '<code class="tex-unrendered" title="t">\\frac{a}{b</code> ist <span class="x">klein</span>.</p>')
+    assert search.words_of(page) == "Die Neigung x ist klein ."
+    with pytest.raises(ValueError, match="not closed"):
+        search.words_of('<span class="katex"><span>')
 
 
 def test_no_name_is_spelled_in_italic_letters(pages):
