@@ -41,7 +41,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["typeset", "without_program_names"]
+__all__ = ["typeset", "displayed", "without_program_names"]
 
 GREEK = ("alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda", "mu",
          "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "varphi", "chi", "psi", "omega",
@@ -345,6 +345,24 @@ def _program_name(text: str) -> bool:
     """Is *text* (a bracket's item) a name of the program, not mathematics (``Omega``) or words?"""
     m = _PROGRAM.fullmatch(text.strip())
     return m is not None and m.group(0).split()[-1].strip("`") not in GREEK + FUNCTIONS
+
+
+_INDENTED = re.compile(r"^[ \t]{4,}(\S.*)$", re.M)
+_ONE_FORMULA = re.compile(r"\$([^$]+)\$([.,;:]?)")
+
+
+def displayed(markdown: str) -> str:
+    r"""*markdown* (a docstring, typeset) with its indented lines, a formula set apart in plain text, made
+    displayed formulas: Markdown would show an indented line as code, its TeX as written.  A line that is one
+    formula becomes a display (its punctuation inside); a line of several is set in the text.
+
+    >>> displayed("their sum is\n\n    $X V = m^{2}/3$.\n\nwith\n\n    $G = A(0)$, $g = A(h)$,\n")
+    'their sum is\n\n$$X V = m^{2}/3 .$$\n\nwith\n\n$G = A(0)$, $g = A(h)$,\n'
+    """
+    def line(m: re.Match) -> str:
+        one = _ONE_FORMULA.fullmatch(m.group(1).rstrip())
+        return f"$${one.group(1)}{' ' + one.group(2) if one.group(2) else ''}$$" if one else m.group(1)
+    return _INDENTED.sub(line, markdown)
 
 
 def without_program_names(text: str) -> str:

@@ -5,14 +5,18 @@ from __future__ import annotations
 
 import inspect
 import re
+from pathlib import Path
 
+import nbformat
 import pytest
 
 from symfloat import registry
 from symfloat.model.symbol_names import GREEK
 from symfloat.registry import load
 from symfloat.report.notebook_view import reading_markdown, step_title
-from symfloat.prose import typeset, without_program_names
+from symfloat.prose import displayed, typeset, without_program_names
+
+ROOT = Path(__file__).resolve().parents[1]
 
 # the names the site's browser test looks for as runs of italic letters in a formula (tests/test_site.py)
 _NAMES = sorted([g for g in GREEK if g[0].islower()] + ["sin", "cos", "tan", "cot", "tg", "log", "lim"],
@@ -196,3 +200,13 @@ def test_a_ratios_colon_does_not_end_a_title():
     d, _ = load("euler-192-219")
     step = next(s for s in d.steps if s.note.startswith("§213: I : K"))
     assert step_title(d, step) == "§213: I : $K = EF^{2}$ : $AB^{2}$"
+
+
+def test_no_markdown_cell_shows_a_line_as_code():
+    # Graefe §4's "About this section" indented its formulas, and Markdown showed them as code, TeX as written
+    indented = [(path.name, line) for path in sorted((ROOT / "notebooks").glob("*.ipynb"))
+                for cell in nbformat.read(path, as_version=4).cells if cell.cell_type == "markdown"
+                for line in cell.source.splitlines() if re.match(r"( {4,}|\t)\S", line)]
+    assert not indented, indented[:3]
+    about = displayed(typeset(inspect.cleandoc(load("graefe-s4-ship-centroid")[1].__doc__)))
+    assert "$$X V = m^{2}/3" in about and not re.search(r"^ {4}", about, re.M)

@@ -35,7 +35,7 @@ from ..model.source import get_source
 from ..registry import load
 from .notebook_cells import CellWriter
 from .notebook_view import NotebookView, definitions_markdown, reading_markdown, step_markdown, step_titles, words
-from ..prose import without_program_names
+from ..prose import displayed, without_program_names
 from .stamp import digest
 
 __all__ = ["build_notebook", "execute_notebook", "kernel_files", "write_notebooks", "notebook_stamp", "recorded_stamp"]
@@ -125,7 +125,7 @@ def build_notebook(derivation_id: str, report=None) -> nbformat.NotebookNode:
             + (f"Building on {', '.join(_work(r) for r in d.requires)}.\n\n" if d.requires else "")
             + f"Checked by `symfloat verify {d.id}`.\n\n**Assumptions**\n\n"
             + "\n".join(f"- {words(d, a)}" for a in d.assumptions))),
-        *([(cell_id("about"), md("## About this section\n\n" + words(d, without_program_names(about))))]
+        *([(cell_id("about"), md("## About this section\n\n" + displayed(words(d, without_program_names(about)))))]
           if about else []),
         (cell_id("engine"), md("## What the engine found\n\n" + view.summary_markdown())),
         (cell_id("reading"), md(READING)),
