@@ -711,8 +711,12 @@ def _in_chromium(site: Path, names: list[str], both: set[str] | None = None) -> 
         # search from disk: hits listed, no error (Sphinx's summaries, which would fetch each page, are off)
         page.set_viewport_size({"width": _WIDTHS[0], "height": 900})
         page.goto((site / "search.html").as_uri() + "?q=Schwerpunkt")
-        page.wait_for_selector("#search-results li", timeout=20000)
-        assert page.locator("#search-results li").count() > 3 and not errors, errors[:3]
+        # Sphinx lists the hits one by one, 5 ms apart, and says so when it has listed them all: waited for, not timed
+        page.wait_for_function("() => (document.querySelector('#search-results .search-summary') || {}).innerText"
+                               "?.startsWith('Search finished')", timeout=20000)
+        hits = page.locator("#search-results li").count()
+        assert hits > 3 and f"found {hits} pages" in page.inner_text("#search-results .search-summary"), hits
+        assert not errors, errors[:3]
         # the same checks see a page that shows raw TeX, logs an error and scrolls sideways on a phone
         control = site.parent / "control.html"
         control.write_text(_CONTROL, encoding="utf-8")
