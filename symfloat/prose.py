@@ -309,6 +309,23 @@ def _typeset_plain(text: str, quoted: bool = False) -> str:
     return "".join(out)
 
 
+def _code_formula(code: str) -> str | None:
+    r"""A code span whose every token is mathematics, as one formula: a letter (``b``, ``x'``), a list of them
+    (``a, b, …, g``), points naming a plane (``ABC``), a coefficient and a letter (``2m``), a relation of them
+    (``x < x'``); ``None`` for anything with a word in it or a name of the program.
+
+    >>> [_code_formula(c) for c in ("a, b, …, g", "ABC", "2m", "x < x'", "A(u)", "graefe-s4-ship-centroid", "IX")]
+    ['$a, b, \\ldots, g$', '$ABC$', '$2m$', "$x < x'$", '$A(u)$', None, None]
+    """
+    if _program_name(code) or code.strip() in _ROMAN:
+        return None
+    tokens = [m.group(0) for m in _TOKEN.finditer(code)]
+    kinds = [_kind(m.group(0), m.lastgroup) for m in _TOKEN.finditer(code)]
+    mathematics = all(k != "text" or t in ",[]" or re.fullmatch(r"[A-Za-z]'|[A-Z]{2,4}", t)
+                      for t, k in zip(tokens, kinds))
+    return f"${_joined(tokens)}$" if mathematics and any(k != "space" for k in kinds) else None
+
+
 def typeset(text: str) -> str:
     """*text* with its ASCII mathematics typeset as ``$…$``; existing ``$…$`` spans and code spans are left alone,
     except a code span holding mathematics (````tan phi_1````), which becomes a formula; in a quotation (``'…'``,
@@ -324,9 +341,9 @@ def typeset(text: str) -> str:
         elif part.startswith("`"):
             inner = part.strip("`")
             done = _typeset_plain(inner)
-            if re.fullmatch(r"[A-Za-z]", inner):                    # ``b``: a letter of the mathematics
-                done = f"${inner}$"
-            out.append(done if done.startswith("$") and done.endswith("$") and done.count("$") == 2 else part)
+            if not (done.startswith("$") and done.endswith("$") and done.count("$") == 2):
+                done = _code_formula(inner) or part
+            out.append(done)
         else:
             out.append(_typeset_plain(part))
     return "".join(out)

@@ -210,3 +210,13 @@ def test_no_markdown_cell_shows_a_line_as_code():
     assert not indented, indented[:3]
     about = displayed(typeset(inspect.cleandoc(load("graefe-s4-ship-centroid")[1].__doc__)))
     assert "$$X V = m^{2}/3" in about and not re.search(r"^ {4}", about, re.M)
+
+
+def test_the_about_text_shows_no_code():
+    # Graefe §§2-4 showed ``a, b, c, d, e, f, g``, ``2m``, ``ABC`` and a derivation's id as code, Scheeffer IV-V
+    # ``F_1, 0, 0, T_1, T_1^1, P``: mathematics is typeset, and a name of the program is no reader's word
+    shown = [(path.name, m.group(0)) for path in sorted((ROOT / "notebooks").glob("*.ipynb"))
+             for cell in nbformat.read(path, as_version=4).cells if cell.source.startswith("## About this section")
+             for m in re.finditer(r"`[^`\n]+`", cell.source)]
+    assert not shown, shown[:5]
+    assert typeset("``a, b, …, g`` and ``ABC``, ``crossing``") == r"$a, b, \ldots, g$ and $ABC$, ``crossing``"

@@ -17,7 +17,7 @@ at spacing ``m``: ``I = m/3 (a + 4b + 2c + 4d + 2e + 4f + g)``.
 
 The print drops the factor 1/3 from the first slab ``I' = 2m/3 (…)`` on, and
 carries the omission through to ``I = m (a + 4b + … + g)``; §4 relies on the
-wrong factor (see ``graefe-s4-ship-centroid``).
+wrong factor (see the centroid of a ship's displacement at the end of §4).
 """
 from .statements import DERIVATION
 

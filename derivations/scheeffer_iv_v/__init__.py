@@ -15,8 +15,8 @@ limits (53)-(55).
 
 Everything is derived in the body frame ``(u, v, z)``: ``u`` across EF
 (positive on the side that dips), ``v`` along EF, ``z`` along the prism axis
-from the waterplane I.  The prism is ``Omega x [-b s, b (1 - s)]`` with the
-centroid of the base ``Omega`` at O; integrals over ``Omega`` of polynomials in
+from the waterplane I.  The prism is the base ``Omega`` times the interval
+``[-b s, b (1 - s)]`` of ``z``, with the centroid of the base ``Omega`` at O; integrals over ``Omega`` of polynomials in
 ``u, v`` are taken termwise with the area moments ``F_1, 0, 0, T_1, T_1^1, P``
 (function ``area_integral``).  Scheeffer's (12) and (13) (section II, module
 ``scheeffer-i-iii``, steps ``righting-moment-12``, ``moment-13``) are re-derived
