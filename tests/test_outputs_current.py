@@ -6,6 +6,7 @@ the outputs are regenerated (``make run``) and committed.
 """
 import json
 import math
+import re
 from pathlib import Path
 
 import nbformat
@@ -66,10 +67,37 @@ def test_a_changed_verdict_or_witness_is_a_difference():
     assert record_differences(committed, fresh) == [f"{f['id']}: witness {n['method']} differs"]
 
 
+# A witness's row whose figures are the machine's (symfloat.report.record: what another machine reproduces): in
+# hardware doubles, "| float64 | 2 | ≤ 7.9e-15 | ≤ 2.0e-13 |" (7.2e-15 and 1.8e-13 on a processor with AVX-512),
+# and an agreeing enclosure, whose ball may start at a float64 root
+_MACHINE_ROWS = (re.compile(r"(\| (?:float64|definitions, 15 digits) \| \d+ \|) ≤ [^|\n]* \| ≤ [^|\n]* \|"),
+                 re.compile(r"(\| Arb ball arithmetic \| \d+ \|) ≤ \S+ (\(agrees, \d+ bits\)) \| ≤ [^|\n]* \|"))
+
+
+def _machine_figures_masked(text: str) -> str:
+    """*text* with the figures of the rows above as ``F``.
+
+    >>> _machine_figures_masked("| float64 | 2 | ≤ 7.9e-15 | ≤ 2.0e-13 |\\n| mpmath, 50 digits | 1 | ≤ 1e-50 | ≤ 1e-50 |")
+    '| float64 | 2 | ≤ F | ≤ F |\\n| mpmath, 50 digits | 1 | ≤ 1e-50 | ≤ 1e-50 |'
+    """
+    text = _MACHINE_ROWS[0].sub(r"\1 ≤ F | ≤ F |", text)
+    return _MACHINE_ROWS[1].sub(r"\1 ≤ F \2 | ≤ F |", text)
+
+
 def _cells(path):
     nb = nbformat.read(path, as_version=4)
-    return [(c.id, c.cell_type, c.source, without_timings(json.dumps(c.get("outputs", []), sort_keys=True)))
+    return [(c.id, c.cell_type, c.source,
+             _machine_figures_masked(without_timings(json.dumps(c.get("outputs", []), sort_keys=True, ensure_ascii=False))))
             for c in nb.cells]
+
+
+def test_the_machines_figures_are_masked_and_nothing_else():
+    rows = ("| float64 | 2 | ≤ 7.9e-15 | ≤ 2.0e-13 |", "| definitions, 15 digits | 3 | ≤ 1.1e-16 | ≤ 4.2e-16 |",
+            "| Arb ball arithmetic | 3 | ≤ 1.4e-47 (agrees, 128 bits) | ≤ 2.2e-47 |",
+            "| Arb ball arithmetic | 1 | ≤ 0.52 (refuted, 128 bits) | ≤ 0.11 |", "| mpmath, 50 digits | 1 | ≤ 2e-50 | ≤ 3e-50 |")
+    assert [_machine_figures_masked(r) for r in rows] == [
+        "| float64 | 2 | ≤ F | ≤ F |", "| definitions, 15 digits | 3 | ≤ F | ≤ F |",
+        "| Arb ball arithmetic | 3 | ≤ F (agrees, 128 bits) | ≤ F |", *rows[3:]]
 
 
 def _assert_cells_rebuilt(did, report):
