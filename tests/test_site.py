@@ -28,7 +28,7 @@ from symfloat.model.span import math_intervals  # noqa: E402
 from symfloat.site import search, typeset  # noqa: E402
 from symfloat.site.build import MARKER, _sync  # noqa: E402
 from symfloat.site.edition import edition_page, fault_words, formula_anchor, mark_of, places  # noqa: E402
-from symfloat.site.errata_pages import errata_index, facet_pages  # noqa: E402
+from symfloat.site.errata_pages import errata_index, erratum_title, facet_pages  # noqa: E402
 from symfloat.site.difference import corrected_html  # noqa: E402
 from symfloat.site.notebooks import staged_notebook  # noqa: E402
 from symfloat.site.records import load_records, slug  # noqa: E402
@@ -217,6 +217,15 @@ def test_lost_text_and_missing_figures_are_marked(edition):
     assert re.search(rf'<a class="q v-unverifiable" href="#{anchor}" title="[^"]*text lost in the transcription',
                      page)
     assert '<span class="figure-missing"' in page
+
+
+def test_every_erratum_page_has_a_title_of_its_own(records):
+    # 134 of 191 pages shared their title with another ("Correction of the transcription: Euler, §223" three times)
+    titles = [erratum_title(e, records) for e in records.errata]
+    assert len(set(titles)) == len(titles) == len(records.errata)
+    euler = [t for t in titles if t.startswith("Correction of the transcription: Euler, §223")]
+    assert euler == [f"Correction of the transcription: Euler, §223 ({k} of 3)" for k in (1, 2, 3)]
+    assert any(re.fullmatch(r"Fault of the original: [^()]+", t) for t in titles)      # one alone: no count
 
 
 def test_corrections_are_formulas_or_words():

@@ -111,19 +111,19 @@ def verification_table(reports: list[DerivationReport], elapsed: float | None = 
 
 
 # What a witness record's figures may differ by between two machines.  A figure computed in hardware doubles
-# (float64, and the definition route's 15 digits) has last
-# bits that depend on the processor's vector units (numpy's AVX-512 routines for sin, cos and exp on one
-# machine and not on another) and on the numpy and BLAS releases (summation order), not on the mathematics;
-# so does an enclosure whose ball was started at a float64 root.  Three rules, one per kind of record:
+# (float64, and the definition route's 15 digits) has last bits that depend on the processor's vector units
+# (numpy's AVX-512 routines for sin, cos and exp on one machine and not on another) and on the numpy and BLAS
+# releases (summation order), not on the mathematics; so does an enclosure whose ball was started at a float64
+# root.  Three rules, one per kind of record:
 #
 # - a certified record (Arb) is a proven interval [abs_error_lower, abs_error] around one true difference:
 #   two of them are the same when they say the same (agrees, refuted, undecided) and the intervals meet;
 #   intervals that do not meet mean that one of them is wrong;
 # - a figure in hardware doubles that lies within its method's tolerance says "agrees", and its digits are
 #   the machine's; two such are the same, whatever their digits;
-# - a figure in hardware doubles beyond its tolerance (an erratum's witness measures the print's error, far larger than
-#   the quantity) is the same as another within 64 units in the last place of the larger of the numbers it
-#   is made from: the measured quantity and the disagreement itself.
+# - a figure in hardware doubles beyond its tolerance (an erratum's witness measures the print's error, far
+#   larger than the quantity) is the same as another within 64 units in the last place of the larger of the
+#   numbers it is made from: the measured quantity and the disagreement itself.
 #
 # Every other figure (mpmath at n digits, exact arithmetic) is reproducible and compared exactly.
 FLOAT64_REPRODUCIBLE = 64 * 2.0 ** -52

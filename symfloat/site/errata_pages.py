@@ -18,7 +18,7 @@ from .edition import (EVIDENCE_WORDS, badge, correction_html, formula_anchor, no
 from .records import Records, slug
 from .text import excerpt_html, prose_html
 
-__all__ = ["erratum_page", "facet_pages", "errata_index", "FACETS"]
+__all__ = ["erratum_page", "erratum_title", "facet_pages", "errata_index", "FACETS"]
 
 FACETS = ("apparatus", "source", "kind", "confidence")
 _APPARATUS_WORDS = {a: title for a, (title, _) in APPARATUS.items()}
@@ -53,9 +53,19 @@ def erratum_page(e: dict, records: Records) -> str:
         f'{html.escape(witness_line(f["numeric"]))}.</p>',
         f'<p>See {" and ".join(links)}.</p>',
     ]
-    what = "Correction of the transcription" if mark == "transcription" else "Fault of the original"
-    return "\n".join([f"# {what}: {SOURCES[e['source']].short}, {e['locator']}", "",
-                      "````{raw} html", *body, "````", ""])
+    return "\n".join([f"# {erratum_title(e, records)}", "", "````{raw} html", *body, "````", ""])
+
+
+def erratum_title(e: dict, records: Records) -> str:
+    """The title of erratum *e*'s page: its apparatus, source and place, and where several errata of one
+    apparatus sit at one place (Euler §223: three corrections of the transcription), which of them it is,
+    so that a search's hits and a browser's tabs tell them apart."""
+    apparatus = _apparatus(e)
+    what = "Correction of the transcription" if apparatus == "transcription" else "Fault of the original"
+    title = f"{what}: {SOURCES[e['source']].short}, {e['locator']}"
+    same = [x["id"] for x in records.errata
+            if (x["source"], x["locator"], _apparatus(x)) == (e["source"], e["locator"], apparatus)]
+    return title if len(same) == 1 else f"{title} ({same.index(e['id']) + 1} of {len(same)})"
 
 
 def _facet_values(records: Records, facet: str) -> list[str]:
