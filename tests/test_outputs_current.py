@@ -16,7 +16,8 @@ from symfloat.report.errata import errata_json, errata_markdown
 from symfloat.files import without_timings
 from symfloat.engine.runner import derivation_keys
 from symfloat.report.notebooks import build_notebook, notebook_stamp, recorded_stamp, write_notebooks
-from symfloat.report.record import record_differences, record_json, verification_record, write_record
+from symfloat.report.record import (HARDWARE_DOUBLES, record_differences, record_json, verification_record,
+                                    write_record)
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -70,7 +71,7 @@ def test_a_changed_verdict_or_witness_is_a_difference():
 # A witness's row whose figures are the machine's (symfloat.report.record: what another machine reproduces): in
 # hardware doubles, "| float64 | 2 | ≤ 7.9e-15 | ≤ 2.0e-13 |" (7.2e-15 and 1.8e-13 on a processor with AVX-512),
 # and an agreeing enclosure, whose ball may start at a float64 root
-_MACHINE_ROWS = (re.compile(r"(\| (?:float64|definitions, 15 digits) \| \d+ \|) ≤ [^|\n]* \| ≤ [^|\n]* \|"),
+_MACHINE_ROWS = (re.compile(rf"(\| (?:{'|'.join(map(re.escape, HARDWARE_DOUBLES))}) \| \d+ \|) ≤ [^|\n]* \| ≤ [^|\n]* \|"),
                  re.compile(r"(\| Arb ball arithmetic \| \d+ \|) ≤ \S+ (\(agrees, \d+ bits\)) \| ≤ [^|\n]* \|"))
 
 

@@ -387,7 +387,6 @@ class _Page(HTMLParser):
 
 
 _KATEX_HTML = re.compile(r'<span class="katex-html" aria-hidden="true">')
-_SPAN = re.compile(r"<span\b|</span>")
 _TAG = re.compile(r"<[^>]*>")
 
 
@@ -397,13 +396,7 @@ def _katex_html_as_text(html: str) -> str:
     parse takes 8 s instead of 17 with it out, and reads the same."""
     out, pos = [], 0
     while match := _KATEX_HTML.search(html, pos):
-        depth = 1
-        for tag in _SPAN.finditer(html, match.end()):
-            depth += 1 if tag.group() == "<span" else -1
-            if not depth:
-                break
-        else:
-            raise AssertionError(f"a katex-html span at {match.start()} is not closed")
+        tag = search.closing_span(html, match.end())
         out += [html[pos:match.start()], '<span class="katex-html">', _TAG.sub("", html[match.end():tag.start()]),
                 "</span>"]
         pos = tag.end()

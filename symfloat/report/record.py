@@ -12,7 +12,7 @@ from .cross_references import readable
 from .witness_words import best_error
 
 __all__ = ["verification_record", "verification_table", "record_differences", "record_json", "write_record",
-           "VERDICTS"]
+           "VERDICTS", "HARDWARE_DOUBLES"]
 
 VERDICTS = ("verified", "erratum", "unverifiable", "trivial")
 
@@ -128,11 +128,11 @@ def verification_table(reports: list[DerivationReport], elapsed: float | None = 
 # Every other figure (mpmath at n digits, exact arithmetic) is reproducible and compared exactly.
 FLOAT64_REPRODUCIBLE = 64 * 2.0 ** -52
 _FIGURES = ("abs_error", "abs_error_lower", "rel_error")
-_HARDWARE_DOUBLES = ("float64", "definitions, 15 digits")     # the route's 15 digits are mpmath's fp context
+HARDWARE_DOUBLES = ("float64", "definitions, 15 digits")     # the route's 15 digits are mpmath's fp context
 
 
 def _in_hardware_doubles(record: dict) -> bool:
-    return any(name in str(record.get("method", "")) for name in _HARDWARE_DOUBLES)
+    return any(name in str(record.get("method", "")) for name in HARDWARE_DOUBLES)
 
 
 def _same_numeric(a: dict, b: dict) -> bool:

@@ -14,12 +14,23 @@ import re
 
 from docutils import nodes
 
-__all__ = ["words_of", "setup"]
+__all__ = ["closing_span", "words_of", "setup"]
 
 _FORMULA = re.compile(r'<span class="katex">|<code class="tex-unrendered"[^>]*>.*?</code>', re.S)
 _SPAN = re.compile(r"<span\b|</span>")
 _HIDDEN = re.compile(r"<(style|script)\b.*?</\1>", re.S | re.I)
 _TAG = re.compile(r"<[^>]*>")
+
+
+def closing_span(markup: str, start: int) -> re.Match:
+    """The ``</span>`` that closes the span whose opening tag ends at *start* in *markup* (KaTeX nests spans
+    deep); ValueError if none does."""
+    depth = 1
+    for tag in _SPAN.finditer(markup, start):
+        depth += 1 if tag.group() == "<span" else -1
+        if not depth:
+            return tag
+    raise ValueError(f"a span opened before {start} is not closed")
 
 
 def words_of(markup: str) -> str:
@@ -37,14 +48,7 @@ def words_of(markup: str) -> str:
         out.append(markup[pos:match.start()])
         pos = match.end()
         if match.group().startswith("<span"):         # to the end of the formula's outermost span
-            depth = 1
-            for tag in _SPAN.finditer(markup, pos):
-                depth += 1 if tag.group() == "<span" else -1
-                if not depth:
-                    pos = tag.end()
-                    break
-            else:
-                raise ValueError(f"a KaTeX span at {match.start()} is not closed")
+            pos = closing_span(markup, pos).end()
     out.append(markup[pos:])
     return " ".join(html.unescape(_TAG.sub(" ", _HIDDEN.sub("", "".join(out)))).split())
 
