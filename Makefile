@@ -8,7 +8,7 @@ KATEX := node_modules/.installed
 
 .PHONY: run test clean
 
-$(STAMP): pyproject.toml setup.py
+$(STAMP): pyproject.toml setup.py symfloat/geometry/_clipped.c
 	@echo "make: creating $(VENV) and installing symfloat with its dependencies (once; a few minutes)"
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip

@@ -180,7 +180,8 @@ for body, dims in PHASES.values():
     for did in predicting(body, edges):
         predictor(did).predictor.predict(scene)
 _closed_forms()
-print("\\n".join(sorted({m.__file__ for name, m in list(sys.modules.items())
+from symfloat.report.stamp import source_file      # a compiled module by its C source
+print("\\n".join(sorted({str(source_file(m.__file__)) for name, m in list(sys.modules.items())
                         if name.startswith("symfloat") and getattr(m, "__file__", None)})))
 """
 

@@ -70,7 +70,8 @@ import sys
 from fractions import Fraction
 from symfloat.derivations.scheeffer_ix import grid
 grid.grid_rows([Fraction(1, 2), Fraction(4, 5)], [Fraction(2)], extra=grid.boundary_cells([Fraction(4, 5)]))
-print("\\n".join(sorted({m.__file__ for name, m in list(sys.modules.items())
+from symfloat.report.stamp import source_file      # a compiled module by its C source
+print("\\n".join(sorted({str(source_file(m.__file__)) for name, m in list(sys.modules.items())
                         if name.startswith("symfloat") and getattr(m, "__file__", None)})))
 """
 

@@ -125,6 +125,8 @@ def _imported(path: Path, module: str) -> list[str]:
     asked for (a module-level ``__getattr__``: the formula model) imports every module of its folder; the
     library's root does so too, for the model's names (reached by the statements' own imports) and the checker's
     ``check`` (which the grid never runs), so it is left at its own imports."""
+    if path.suffix != ".py":            # the C source of a compiled module imports nothing of the library
+        return []
     package = module if path.name == "__init__.py" else module.rpartition(".")[0]
     tree = ast.parse(path.read_bytes())
     lazy = path.name == "__init__.py" and module.startswith("symfloat.") and any(
@@ -153,7 +155,8 @@ def _file(module: str) -> Path | None:
         base = _LIBRARY.joinpath(*rest)
     else:
         return None
-    return next((f for f in (base.with_suffix(".py"), base / "__init__.py") if f.is_file()), None)
+    candidates = (base.with_suffix(".py"), base / "__init__.py", base.with_suffix(".c"))     # .c: a compiled module's
+    return next((f for f in candidates if f.is_file()), None)
 
 
 def code_files() -> list[Path]:

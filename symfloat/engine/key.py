@@ -32,7 +32,7 @@ def _module_file(name: str) -> Path | None:
     if parts[0] != "symfloat" or parts[1:2] == ["derivations"]:
         return None
     base = _LIBRARY.joinpath(*parts[1:])
-    for f in (base.with_suffix(".py"), base / "__init__.py"):
+    for f in (base.with_suffix(".py"), base / "__init__.py", base.with_suffix(".c")):     # .c: a compiled module's source
         if f.is_file():
             return f
     return None
@@ -40,7 +40,10 @@ def _module_file(name: str) -> Path | None:
 
 @cache
 def _imports(path: Path, module: str) -> frozenset[str]:
-    """The names *path* (the module *module*) imports, and each ``from`` name as a possible submodule."""
+    """The names *path* (the module *module*) imports, and each ``from`` name as a possible submodule (none for the C
+    source of a compiled module)."""
+    if path.suffix != ".py":
+        return frozenset()
     package = module if path.name == "__init__.py" else module.rpartition(".")[0]
     found = set()
     for node in ast.walk(ast.parse(path.read_bytes())):

@@ -30,12 +30,19 @@ import contextlib
 import functools
 import itertools
 import math
+from array import array
 from dataclasses import dataclass
 from fractions import Fraction
 
+import gmpy2
 import mpmath
 
 from .convex import hull_2d
+
+try:                # the float64 draught's step in C, built by setup.py where a compiler is at hand
+    from ._clipped import volume_and_area as _compiled_volume_and_area
+except ImportError:                                         # pragma: no cover - no compiler at install
+    _compiled_volume_and_area = None
 
 __all__ = [
     "Polyhedron", "Waterplane", "Submerged", "FloatingState", "CylinderState",
@@ -101,6 +108,21 @@ class Polyhedron:
     def vertices(self):
         """The distinct vertices (each face ring lists its own copies)."""
         return list(dict.fromkeys(itertools.chain.from_iterable(self.faces)))
+
+    @functools.cached_property
+    def packed(self) -> tuple[bytes, bytes]:
+        """A float64 body as the C step takes it (:func:`_volume_and_area`): the rings' vertices as doubles,
+        ring after ring, and the rings' lengths as 32-bit integers."""
+        points = array("d", (c for ring in self.faces for p in ring for c in p))
+        return points.tobytes(), array("i", (len(ring) for ring in self.faces)).tobytes()
+
+    def in_mpfr(self, prec: int) -> tuple:
+        """An mpmath body's face rings in MPFR's numbers of *prec* bits (:func:`_in_mpfr`), made once per precision."""
+        made = self.__dict__.setdefault("_in_mpfr", {})
+        if prec not in made:
+            with gmpy2.context(precision=prec):
+                made[prec] = tuple(tuple(tuple(_to_mpfr(c) for c in p) for p in ring) for ring in self.faces)
+        return made[prec]
 
 
 def right_prism(polygon, length, dps=None):
@@ -234,14 +256,14 @@ def _newell(ring):
     return tuple(sum(c[k] for c in crosses) for k in range(3))
 
 
-def _clip(poly, u, t):
-    """Sutherland-Hodgman on every face against ``u . p <= t``; returns the
+def _clip(rings, u, t):
+    """Sutherland-Hodgman on every face ring against ``u . p <= t``; returns the
     clipped face rings and the points lying on the plane.  A face lying in
     the plane with outward normal along ``+u`` is left out: the cap, built
     from the points on the plane, replaces it (one lying there facing ``-u``
     is kept and cancels the cap: the body is then flat)."""
     faces, on_plane = [], []
-    for ring in poly.faces:
+    for ring in rings:
         out = []
         n = len(ring)
         u0, u1, u2 = u
@@ -362,7 +384,7 @@ def clip_below(poly, u, t):
     lies below the body; the body itself when above it."""
     u = _unit(u, poly.dps)
     t = _num(t, poly.dps)
-    faces, on_plane = _clip(poly, u, t)
+    faces, on_plane = _clip(poly.faces, u, t)
     e1, e2 = waterplane_basis(u, poly.dps)
     ring, ring2 = _cap(on_plane, u, e1, e2, t)
     if len(ring) >= 3:
@@ -425,7 +447,7 @@ def submerged(poly, u, t):
     """
     u = _unit(u, poly.dps)
     t = _num(t, poly.dps)
-    faces, on_plane = _clip(poly, u, t)
+    faces, on_plane = _clip(poly.faces, u, t)
     wp = _waterplane(on_plane, u, t, poly.dps)
     if len(wp.polygon) >= 3:
         faces.append(wp.polygon)
@@ -442,11 +464,24 @@ def _volume_and_area(poly, u, t):
     (``N_f`` the vector area of a clipped face ``f``, ``p_f`` any of its points).  The cap lies in the plane
     through ``o``, so it adds nothing to ``V``, and the closed surface's vector areas sum to zero, so its area
     ``A`` (normal ``u``) is minus the others' along ``u``.  No hull of the waterplane, no vertex mean: the
-    draught's Newton steps need only these two numbers (:func:`draught`)."""
-    faces, _ = _clip(poly, u, t)
+    draught's Newton steps need only these two numbers (:func:`draught`).
+
+    A float64 body is measured by the C step (``_clipped.c``), an mpmath body in MPFR's numbers
+    (:func:`_in_mpfr`): the same operations in the same order, each rounded as Python's floats and mpmath's
+    numbers round it, so that each gives the same numbers bit for bit as the arithmetic of the body (tested)."""
+    if poly.dps is None and _compiled_volume_and_area is not None:
+        return _compiled_volume_and_area(*poly.packed, u[0], u[1], u[2], t)
+    if poly.dps is not None:
+        return _in_mpfr(poly, u, t)
+    return _clipped_volume_and_area(poly.faces, u, t, 0.0)
+
+
+def _clipped_volume_and_area(faces, u, t, zero):
+    """:func:`_volume_and_area` of the body with face rings *faces*, in the arithmetic of its numbers."""
+    faces, _ = _clip(faces, u, t)
     u0, u1, u2 = u
     o0, o1, o2 = t * u0, t * u1, t * u2
-    volume = n0 = n1 = n2 = _num(0, poly.dps)
+    volume = n0 = n1 = n2 = zero
     for ring in faces:          # _sub, _cross and _dot inlined
         x0, y0, z0 = ring[-1][0] - o0, ring[-1][1] - o1, ring[-1][2] - o2
         f0 = f1 = f2 = 0
@@ -459,6 +494,33 @@ def _volume_and_area(poly, u, t):
         volume += x0 * f0 + y0 * f1 + z0 * f2
         n0, n1, n2 = n0 + f0, n1 + f1, n2 + f2
     return volume / 6, -(u0 * n0 + u1 * n1 + u2 * n2) / 2
+
+
+def _in_mpfr(poly, u, t):
+    """:func:`_volume_and_area` of an mpmath body in MPFR's numbers (gmpy2) at mpmath's working precision, rounded
+    to nearest: mpmath's sums, products and quotients are correctly rounded to nearest as MPFR's are, so the
+    numbers are mpmath's, computed in C (the body converted once, :meth:`Polyhedron.in_mpfr`).  Where a number
+    has more bits than the working precision (the body made at other digits, an offset computed at more), MPFR
+    would round it on the way in and mpmath would not: mpmath's numbers serve."""
+    prec = mpmath.mp.prec
+    if prec != mpmath.libmp.dps_to_prec(poly.dps) or any(x._mpf_[3] > prec for x in (*u, t) if isinstance(x, mpmath.mpf)):
+        return _clipped_volume_and_area(poly.faces, u, t, mpmath.mpf(0))
+    with gmpy2.context(precision=prec, round=gmpy2.RoundToNearest):
+        volume, area = _clipped_volume_and_area(poly.in_mpfr(prec), tuple(map(_to_mpfr, u)), _to_mpfr(t), gmpy2.mpfr(0))
+    return _from_mpfr(volume), _from_mpfr(area)
+
+
+def _to_mpfr(x) -> gmpy2.mpfr:
+    """An mpf (or a number mpmath takes) of at most the context's precision as an MPFR number, exactly."""
+    sign, man, exp, _ = mpmath.mpf(x)._mpf_
+    value = gmpy2.mul_2exp(gmpy2.mpfr(man), exp)
+    return -value if sign else value
+
+
+def _from_mpfr(x) -> mpmath.mpf:
+    """An MPFR number as an mpf, exactly (at the precision it was computed at)."""
+    man, exp = x.as_mantissa_exp()
+    return mpmath.mpf((int(man), int(exp)))
 
 
 @_at_body_precision

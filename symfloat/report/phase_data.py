@@ -33,9 +33,11 @@ _MODULES = ("__init__.py", "errors.py", "project.py", "manifest.py", "registry.p
 
 
 def code_files() -> list[Path]:
-    """The files of the ``symfloat`` package a phase record is made from (its derivations aside)."""
+    """The files of the ``symfloat`` package a phase record is made from (its derivations aside): the packages'
+    modules and the C source of a compiled one."""
     root = Path(__file__).resolve().parents[1]
-    return [f for name in _PACKAGES for f in sorted((root / name).rglob("*.py"))] + [root / f for f in _MODULES]
+    return [f for name in _PACKAGES for f in sorted((root / name).rglob("*")) if f.suffix in (".py", ".c")] \
+        + [root / f for f in _MODULES]
 
 
 def _derivation_files(body: str, dims: str | None) -> list[Path]:

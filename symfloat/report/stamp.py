@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import hashlib
 import re
+from importlib.machinery import EXTENSION_SUFFIXES
 from pathlib import Path
 
-__all__ = ["digest", "package_digest", "stamp_line", "stamp_of"]
+__all__ = ["digest", "package_digest", "stamp_line", "stamp_of", "source_file"]
 
 _STAMP = re.compile(r'<!-- content stamp: ([0-9a-f]{16,64}) -->|^ "stamp": "([0-9a-f]{16,64})"', re.M)
 
@@ -31,6 +32,18 @@ def digest(*parts) -> str:
             h.update(str(part).encode())
         h.update(b"\0\0")
     return h.hexdigest()[:32]
+
+
+def source_file(module_file: str) -> Path:
+    """The file a module's code is read from, for a stamp: the module's own, or a compiled module's C source beside
+    it (``_clipped.cpython-311-x86_64-linux-gnu.so`` is made from ``_clipped.c``).
+
+    >>> source_file("/p/symfloat/geometry/_clipped.cpython-311-x86_64-linux-gnu.so").name
+    '_clipped.c'
+    """
+    path = Path(module_file)
+    compiled = next((s for s in EXTENSION_SUFFIXES if path.name.endswith(s)), None)
+    return path.with_name(path.name.removesuffix(compiled) + ".c") if compiled else path
 
 
 def package_digest(*folders: str) -> str:

@@ -44,7 +44,7 @@ import numpy as np
 from flint import fmpq, fmpq_poly
 
 from ..geometry.convex import hull_2d
-from ..geometry.floating import Polyhedron, _clip, floating_state, polygon_moments
+from ..geometry.floating import _clip, floating_state, polygon_moments
 from .bodies import polyhedron
 from .symmetry import same_class
 
@@ -123,7 +123,7 @@ def _volume_moment(faces):
 def _below(faces, n, tau, k):
     """The part of the body below ``n . p = tau`` (exact): volume, ``n . int p dV``, and the waterplane
     projected across axis *k*: area, first and raw second moments ``(A, (Sx, Sy), (Sxx, Sxy, Syy))``."""
-    kept, on_plane = _clip(Polyhedron(faces), n, tau)
+    kept, on_plane = _clip(faces, n, tau)
     i, j = [x for x in range(3) if x != k]
     coords = {(p[i], p[j]): p for p in on_plane}
     ring2 = hull_2d(list(coords))
