@@ -42,8 +42,8 @@ def source_file(module_file: str) -> Path:
     '_clipped.c'
     """
     path = Path(module_file)
-    compiled = next((s for s in EXTENSION_SUFFIXES if path.name.endswith(s)), None)
-    return path.with_name(path.name.removesuffix(compiled) + ".c") if compiled else path
+    compiled = path.name.endswith(tuple(EXTENSION_SUFFIXES))       # a module's name holds no dot: it ends at the first
+    return path.with_name(path.name.partition(".")[0] + ".c") if compiled else path
 
 
 def package_digest(*folders: str) -> str:
