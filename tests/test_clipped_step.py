@@ -88,7 +88,7 @@ def test_a_changed_rounding_would_be_seen():
         assert _bits(+volume) != _bits(volume)
 
 
-@pytest.mark.skipif(shutil.which(sysconfig.get_config_var("CC").split()[0]) is None, reason="no C compiler here")
+@pytest.mark.skipif(shutil.which((sysconfig.get_config_var("CC") or "cc").split()[0]) is None, reason="no C compiler here")
 def test_where_a_compiler_is_at_hand_the_c_step_is_built():
     # setup.py builds the module optionally: a failed build would leave the Python step serving in silence
     assert floating._compiled_volume_and_area is not None
