@@ -1,8 +1,10 @@
 """The draught's step (the volume below a plane and the waterplane's area) in C and in MPFR gives the numbers
 of the body's own arithmetic bit for bit: Python's floats for a float64 body, mpmath's for an mpmath body
-(symfloat/geometry/floating.py, ``_volume_and_area``).  Each is compared with the Python function it replaces,
-run in the body's arithmetic, on generated bodies and planes: tilted, through a vertex, along a face, outside
-the body."""
+(symfloat/geometry/floating.py, ``_volume_and_area``); so does the submerged part (its volume and centroid,
+the waterplane polygon and its moments, ``submerged``) in C and in MPFR.  Each is compared with the Python function it
+replaces, run in the body's arithmetic, on generated bodies and planes: tilted, through a vertex, along a face,
+outside the body."""
+import dataclasses
 import random
 import shutil
 import sysconfig
@@ -55,6 +57,55 @@ def test_the_c_step_gives_pythons_floats(kind, seed, u, where):
     assert list(map(_bits, floating._volume_and_area(body, u, t))) == list(map(_bits, python))
 
 
+def _all_bits(x):
+    """Every number of *x* (a dataclass, a tuple, a number or None) as its bits, in order."""
+    if dataclasses.is_dataclass(x):
+        return [_all_bits(getattr(x, f.name)) for f in dataclasses.fields(x)]
+    if isinstance(x, tuple):
+        return [_all_bits(v) for v in x]
+    return None if x is None else _bits(x)
+
+
+def _submerged_in_python(body, u, t):
+    """``submerged`` as the Python function gives it in the body's own numbers."""
+    u, t = floating._unit(u, body.dps), floating._num(t, body.dps)
+    basis = floating.waterplane_basis(u, body.dps)
+    volume, centroid, ring, area, c2, J = floating._submerged_part(body.faces, u, t, basis, floating._num(0, body.dps))
+    return floating.Submerged(volume, centroid, floating._waterplane(ring, area, c2, J, u, t, basis, body.dps))
+
+
+@pytest.mark.skipif(floating._compiled_submerged is None, reason="the C step is not built (no compiler)")
+@settings(max_examples=400, deadline=None)
+@given(BODIES, SEEDS, DIRECTIONS, WHERE)
+def test_the_c_submerged_part_gives_pythons_floats(kind, seed, u, where):
+    body = _body(kind, seed, None)
+    u, t = _plane(body, u, where)
+    assert _all_bits(floating.submerged(body, u, t)) == _all_bits(_submerged_in_python(body, u, t))
+
+
+@settings(max_examples=100, deadline=None)
+@given(BODIES, SEEDS, DIRECTIONS, WHERE, st.sampled_from([20, 40, 61]))
+def test_the_mpfr_submerged_part_gives_mpmaths_numbers(kind, seed, u, where, dps):
+    body = _body(kind, seed, dps)
+    with mpmath.workdps(dps):
+        u, t = _plane(body, u, where)
+        assert _all_bits(floating.submerged(body, u, t)) == _all_bits(_submerged_in_python(body, u, t))
+
+
+@pytest.mark.skipif(floating._compiled_submerged is None, reason="the C step is not built (no compiler)")
+def test_the_submerged_comparison_sees_a_changed_bit_and_a_turned_polygon():
+    body = box(1, 2, 3)
+    u, t = _plane(body, (0.3, 0.2, 0.9), 0.37)
+    sub = floating.submerged(body, u, t)
+    wp = sub.waterplane
+    nudged = dataclasses.replace(sub, volume=sub.volume * (1 + 2 ** -52))
+    turned = dataclasses.replace(sub, waterplane=dataclasses.replace(wp, polygon=wp.polygon[1:] + wp.polygon[:1]))
+    assert _all_bits(nudged) != _all_bits(sub) and _all_bits(turned) != _all_bits(sub)
+    # a top face lying in the plane is replaced by the cap, counter-clockwise from the lowest corner
+    top = floating.submerged(body, (0, 0, 1), 1.5).waterplane.polygon
+    assert top == ((-0.5, -1.0, 1.5), (0.5, -1.0, 1.5), (0.5, 1.0, 1.5), (-0.5, 1.0, 1.5))
+
+
 @settings(max_examples=150, deadline=None)
 @given(BODIES, SEEDS, DIRECTIONS, WHERE, st.sampled_from([20, 40, 61]))
 def test_the_mpfr_step_gives_mpmaths_numbers(kind, seed, u, where, dps):
@@ -91,4 +142,4 @@ def test_a_changed_rounding_would_be_seen():
 @pytest.mark.skipif(shutil.which((sysconfig.get_config_var("CC") or "cc").split()[0]) is None, reason="no C compiler here")
 def test_where_a_compiler_is_at_hand_the_c_step_is_built():
     # setup.py builds the module optionally: a failed build would leave the Python step serving in silence
-    assert floating._compiled_volume_and_area is not None
+    assert floating._compiled_volume_and_area is not None and floating._compiled_submerged is not None

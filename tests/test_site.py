@@ -451,6 +451,26 @@ def test_the_site_has_its_pages_and_every_internal_link_resolves(site, pages, re
     assert not broken, broken[:10]
 
 
+_NAVIGATION = re.compile(r"<h3>Navigation</h3>(.*?)</ul>", re.S)
+_CURRENT = re.compile(r'<li class="toctree-l1 current"><a class="[^"]*" href="([^"#]*)')
+
+
+def test_the_sidebar_marks_the_branch_that_holds_each_page(site, pages):
+    # symfloat.site.navigation resolves the sidebar's table once per folder and branch: every page's current
+    # top-level entry is still its own folder's index, or the page itself where it is a top-level page
+    unmarked = {"index.html", "genindex.html", "search.html"}
+    for name in pages:
+        listed = _NAVIGATION.search((site / name).read_text(encoding="utf-8")).group(1)
+        current = _CURRENT.findall(listed)
+        if name in unmarked:
+            assert current == [], name
+            continue
+        assert len(current) == 1, (name, current)
+        target = Path(os.path.normpath(Path(name).parent / (current[0] or Path(name).name))).as_posix()
+        assert target == (f"{name.split('/')[0]}/index.html" if "/" in name else name), (name, target)
+    assert len(pages) > 200
+
+
 def test_no_tex_is_left_where_mathematics_should_be(pages):
     for name, page in pages.items():
         text = "".join(page.text)

@@ -39,10 +39,11 @@ import mpmath
 
 from .convex import hull_2d
 
-try:                # the float64 draught's step in C, built by setup.py where a compiler is at hand
+try:                # the float64 clipping in C, built by setup.py where a compiler is at hand
+    from ._clipped import submerged as _compiled_submerged
     from ._clipped import volume_and_area as _compiled_volume_and_area
 except ImportError:                                         # pragma: no cover - no compiler at install
-    _compiled_volume_and_area = None
+    _compiled_volume_and_area = _compiled_submerged = None
 
 __all__ = [
     "Polyhedron", "Waterplane", "Submerged", "FloatingState", "CylinderState",
@@ -198,8 +199,12 @@ def volume_centroid(poly):
     ``V = sum det(a - c, b - c, d - c) / 6`` over fan triangles ``(a, b, d)`` of
     every face, centroid ``c + sum V_k (a + b + d - 3c) / 4 / V``.  An empty
     body gives ``(0, None)``."""
-    verts = poly.vertices
-    zero = _num(0, poly.dps)
+    return _volume_centroid(poly.faces, _num(0, poly.dps))
+
+
+def _volume_centroid(faces, zero):
+    """:func:`volume_centroid` of the body with face rings *faces*, in the arithmetic of *zero*."""
+    verts = list(dict.fromkeys(itertools.chain.from_iterable(faces)))     # Polyhedron.vertices
     if not verts:
         return zero, None
     s0 = s1 = s2 = 0                # the vertex mean, summed left to right
@@ -209,7 +214,7 @@ def volume_centroid(poly):
         s2 += v[2]
     c0, c1, c2 = s0 / len(verts), s1 / len(verts), s2 / len(verts)
     volume, m0, m1, m2 = zero, zero, zero, zero
-    for ring in poly.faces:     # _sub, _cross and _dot inlined (the same operations in the same order)
+    for ring in faces:          # _sub, _cross and _dot inlined (the same operations in the same order)
         a0, a1, a2 = ring[0][0] - c0, ring[0][1] - c1, ring[0][2] - c2
         for b, d in zip(ring[1:], ring[2:]):
             b0, b1, b2 = b[0] - c0, b[1] - c1, b[2] - c2
@@ -422,17 +427,17 @@ class Submerged:
     waterplane: Waterplane
 
 
-def _waterplane(on_plane, u, t, dps):
-    e1, e2 = waterplane_basis(u, dps)
-    ring, ring2 = _cap(on_plane, u, e1, e2, t)
-    zero = _num(0, dps)
-    area, c2, J = _polygon_moments(ring2, zero)
+def _waterplane(ring, area, c2, J, u, t, basis, dps):
+    """The :class:`Waterplane` of the cap *ring* (3-D points) with the moments *area*, *c2*, *J* of its plane
+    coordinates along *basis* (:func:`_polygon_moments`)."""
+    e1, e2 = basis
     if J is None:
-        return Waterplane(tuple(ring), area, None, (e1, e2), None, zero, zero)
+        zero = _num(0, dps)
+        return Waterplane(tuple(ring), area, None, basis, None, zero, zero)
     centroid = tuple(t * u[k] + c2[0] * e1[k] + c2[1] * e2[k] for k in range(3))
     mean = (J[0][0] + J[1][1]) / 2
     rad = _sqrt(((J[0][0] - J[1][1]) / 2) ** 2 + J[0][1] ** 2, dps)
-    return Waterplane(tuple(ring), area, centroid, (e1, e2), J, mean - rad, mean + rad)
+    return Waterplane(tuple(ring), area, centroid, basis, J, mean - rad, mean + rad)
 
 
 @_at_body_precision
@@ -441,18 +446,42 @@ def submerged(poly, u, t):
     its volume, its centroid ``B`` (:func:`volume_centroid` of
     :func:`clip_below`) and its :class:`Waterplane`.
 
+    A float64 body is clipped by the C step (``_clipped.c``), an mpmath body in MPFR's numbers (as
+    :func:`_in_mpfr` measures the draught's step): each gives the numbers of :func:`_submerged_part` in the
+    body's own arithmetic bit for bit (tested).
+
     >>> sub = submerged(box(2, 2, 2), (0, 0, 1), 0)
     >>> sub.volume, sub.centroid, sub.waterplane.area
     (4.0, (0.0, 0.0, -0.5), 4.0)
     """
     u = _unit(u, poly.dps)
     t = _num(t, poly.dps)
-    faces, on_plane = _clip(poly.faces, u, t)
-    wp = _waterplane(on_plane, u, t, poly.dps)
-    if len(wp.polygon) >= 3:
-        faces.append(wp.polygon)
-    volume, centroid = volume_centroid(Polyhedron(tuple(faces), poly.dps))
-    return Submerged(volume, centroid, wp)
+    basis = waterplane_basis(u, poly.dps)
+    if poly.dps is None and _compiled_submerged is not None:
+        part = _compiled_submerged(*poly.packed, u[0], u[1], u[2], t, *basis)
+    elif poly.dps is not None and _mpfr_serves(poly, (*u, t, *basis[0], *basis[1])):
+        prec = mpmath.mp.prec
+        with gmpy2.context(precision=prec, round=gmpy2.RoundToNearest):
+            to = lambda xs: tuple(map(_to_mpfr, xs))        # noqa: E731
+            part = _from_mpfr(_submerged_part(poly.in_mpfr(prec), to(u), _to_mpfr(t), (to(basis[0]), to(basis[1])),
+                                              gmpy2.mpfr(0)))
+    else:
+        part = _submerged_part(poly.faces, u, t, basis, _num(0, poly.dps))
+    volume, centroid, ring, area, c2, J = part
+    return Submerged(volume, centroid, _waterplane(ring, area, c2, J, u, t, basis, poly.dps))
+
+
+def _submerged_part(faces, u, t, basis, zero):
+    """The submerged part of the body with face rings *faces* below ``u . p = t`` (*u* a unit vector, *basis* its
+    :func:`waterplane_basis`), in the arithmetic of *zero*: its volume and centroid, the waterplane polygon
+    (3-D points) and its area, centroid and central second moments in plane coordinates
+    (:func:`_polygon_moments`)."""
+    faces, on_plane = _clip(faces, u, t)
+    ring, ring2 = _cap(on_plane, u, *basis, t)
+    area, c2, J = _polygon_moments(ring2, zero)
+    if len(ring) >= 3:
+        faces.append(tuple(ring))
+    return (*_volume_centroid(faces, zero), tuple(ring), area, c2, J)
 
 
 def _volume_and_area(poly, u, t):
@@ -500,14 +529,22 @@ def _in_mpfr(poly, u, t):
     """:func:`_volume_and_area` of an mpmath body in MPFR's numbers (gmpy2) at mpmath's working precision, rounded
     to nearest: mpmath's sums, products and quotients are correctly rounded to nearest as MPFR's are, so the
     numbers are mpmath's, computed in C (the body converted once, :meth:`Polyhedron.in_mpfr`).  Where a number
-    has more bits than the working precision (the body made at other digits, an offset computed at more), MPFR
-    would round it on the way in and mpmath would not: mpmath's numbers serve."""
-    prec = mpmath.mp.prec
-    if prec != mpmath.libmp.dps_to_prec(poly.dps) or any(x._mpf_[3] > prec for x in (*u, t) if isinstance(x, mpmath.mpf)):
+    has more bits than the working precision (:func:`_mpfr_serves`), mpmath's numbers serve."""
+    if not _mpfr_serves(poly, (*u, t)):
         return _clipped_volume_and_area(poly.faces, u, t, mpmath.mpf(0))
-    with gmpy2.context(precision=prec, round=gmpy2.RoundToNearest):
-        volume, area = _clipped_volume_and_area(poly.in_mpfr(prec), tuple(map(_to_mpfr, u)), _to_mpfr(t), gmpy2.mpfr(0))
+    with gmpy2.context(precision=mpmath.mp.prec, round=gmpy2.RoundToNearest):
+        volume, area = _clipped_volume_and_area(poly.in_mpfr(mpmath.mp.prec), tuple(map(_to_mpfr, u)), _to_mpfr(t),
+                                                gmpy2.mpfr(0))
     return _from_mpfr(volume), _from_mpfr(area)
+
+
+def _mpfr_serves(poly, numbers) -> bool:
+    """Whether MPFR at mpmath's working precision gives mpmath's numbers for *poly* and *numbers*: the body made
+    at this precision and no number wider than it (MPFR would round such a number on the way in, mpmath does
+    not: the body made at other digits, an offset computed at more)."""
+    prec = mpmath.mp.prec
+    return prec == mpmath.libmp.dps_to_prec(poly.dps) and not any(
+        x._mpf_[3] > prec for x in numbers if isinstance(x, mpmath.mpf))
 
 
 def _to_mpfr(x) -> gmpy2.mpfr:
@@ -517,8 +554,13 @@ def _to_mpfr(x) -> gmpy2.mpfr:
     return -value if sign else value
 
 
-def _from_mpfr(x) -> mpmath.mpf:
-    """An MPFR number as an mpf, exactly (at the precision it was computed at)."""
+def _from_mpfr(x):
+    """An MPFR number as an mpf, exactly (at the precision it was computed at); a tuple's numbers, and a tuple's
+    tuples', likewise (``None`` stays)."""
+    if isinstance(x, tuple):
+        return tuple(_from_mpfr(v) for v in x)
+    if x is None:
+        return None
     man, exp = x.as_mantissa_exp()
     return mpmath.mpf((int(man), int(exp)))
 

@@ -53,7 +53,7 @@ class SiteError(EnvironmentProblem):
 _CONF = '''\
 """Sphinx configuration written by symfloat site (symfloat/site/build.py)."""
 project = "symfloat"
-extensions = ["myst_nb", "symfloat.site.typeset", "symfloat.site.search"]
+extensions = ["myst_nb", "symfloat.site.typeset", "symfloat.site.search", "symfloat.site.navigation"]
 myst_enable_extensions = ["dollarmath", "amsmath"]
 myst_dmath_double_inline = True
 nb_execution_mode = "off"

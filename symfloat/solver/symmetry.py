@@ -93,9 +93,13 @@ def orbit(u, group, tol: float = 1e-9) -> list[np.ndarray]:
 
 
 def same_class(u, v, group, tol: float = 1e-7) -> bool:
-    """Whether *v* is (within *tol*) the image of *u* under some element of *group*."""
-    v = np.asarray(v, dtype=float)
-    return any(np.linalg.norm(g @ np.asarray(u, dtype=float) - v) <= tol for g in group)
+    """Whether *v* is (within *tol*) the image of *u* under some element of *group*: the distances
+    ``|g u - v|`` of all its elements at once, each a row's dot product with itself, as ``numpy.linalg.norm``
+    takes it for one vector."""
+    if len(group) == 0:
+        return False
+    d = np.asarray(group, dtype=float) @ np.asarray(u, dtype=float) - np.asarray(v, dtype=float)
+    return bool((np.sqrt(np.matmul(d[:, None, :], d[:, :, None])[:, 0, 0]) <= tol).any())
 
 
 def representative(u, group) -> np.ndarray:
