@@ -83,13 +83,19 @@ def planar_group(polygon, dps: int = 50) -> list[np.ndarray]:
 
 
 def orbit(u, group, tol: float = 1e-9) -> list[np.ndarray]:
-    """The distinct images ``g u`` (unit vectors) of *u* under *group*."""
-    images = []
-    for g in group:
-        v = g @ np.asarray(u, dtype=float)
-        if not any(np.linalg.norm(v - w) <= tol for w in images):
-            images.append(v)
-    return images
+    """The distinct images ``g u`` (unit vectors) of *u* under *group*: each image in the group's order, kept
+    where it lies farther than *tol* from every image kept before it (the distances all at once, as
+    :func:`same_class` takes them)."""
+    if len(group) == 0:
+        return []
+    images = np.asarray(group, dtype=float) @ np.asarray(u, dtype=float)
+    d = images[:, None, :] - images[None, :, :]
+    far = np.sqrt(np.matmul(d[..., None, :], d[..., :, None])[..., 0, 0]) > tol
+    kept: list[int] = []
+    for i in range(len(images)):
+        if far[i, kept].all():
+            kept.append(i)
+    return [images[i].copy() for i in kept]
 
 
 def same_class(u, v, group, tol: float = 1e-7) -> bool:
