@@ -1,8 +1,9 @@
 """What pyproject.toml cannot say: the checkout's top-level ``derivations/`` folder ships inside the
 package as ``symfloat.derivations`` (mapped by ``package_dir``), so that no module named ``derivations``
 lands at the top of site-packages; setuptools' package discovery cannot look under a mapped folder, so
-the derivation packages are listed here; and the one C module, the float64 draught's step
-(``symfloat/geometry/_clipped.c``), optional: where it cannot be built, its Python twin serves."""
+the derivation packages are listed here; and the one C module, the float64 body clipped by the water plane
+(``symfloat/geometry/_clipped.c``: the draught's step and the submerged part), optional: where it cannot be built,
+its Python twins serve."""
 from setuptools import Extension, find_namespace_packages, find_packages, setup
 
 # -ffp-contract=off: no fused multiply-add, so that the C step rounds as Python's floats do, bit for bit
