@@ -47,16 +47,6 @@ def _bits(x):
     return x._mpf_ if isinstance(x, mpmath.mpf) else x.hex()
 
 
-@pytest.mark.skipif(floating._compiled_volume_and_area is None, reason="the C step is not built (no compiler)")
-@settings(max_examples=400, deadline=None)
-@given(BODIES, SEEDS, DIRECTIONS, WHERE)
-def test_the_c_step_gives_pythons_floats(kind, seed, u, where):
-    body = _body(kind, seed, None)
-    u, t = _plane(body, u, where)
-    python = floating._clipped_volume_and_area(body.faces, u, t, 0.0)
-    assert list(map(_bits, floating._volume_and_area(body, u, t))) == list(map(_bits, python))
-
-
 def _all_bits(x):
     """Every number of *x* (a dataclass, a tuple, a number or None) as its bits, in order."""
     if dataclasses.is_dataclass(x):
@@ -64,6 +54,11 @@ def _all_bits(x):
     if isinstance(x, tuple):
         return [_all_bits(v) for v in x]
     return None if x is None else _bits(x)
+
+
+def _step_in_python(body, u, t):
+    """The draught's step as the Python function gives it in the body's own numbers."""
+    return floating._clipped_volume_and_area(body.faces, u, t, floating._num(0, body.dps))
 
 
 def _submerged_in_python(body, u, t):
@@ -74,25 +69,34 @@ def _submerged_in_python(body, u, t):
     return floating.Submerged(volume, centroid, floating._waterplane(ring, area, c2, J, u, t, basis, body.dps))
 
 
-@pytest.mark.skipif(floating._compiled_submerged is None, reason="the C step is not built (no compiler)")
+# each step as the solver calls it (in C or MPFR where it can), and as the Python function computes it
+STEPS = {"draught's step": (floating._volume_and_area, _step_in_python),
+         "submerged part": (floating.submerged, _submerged_in_python)}
+
+
+@pytest.mark.skipif(floating._compiled_submerged is None, reason="the C steps are not built (no compiler)")
+@pytest.mark.parametrize("step", sorted(STEPS))
 @settings(max_examples=400, deadline=None)
 @given(BODIES, SEEDS, DIRECTIONS, WHERE)
-def test_the_c_submerged_part_gives_pythons_floats(kind, seed, u, where):
+def test_the_c_steps_give_pythons_floats(step, kind, seed, u, where):
+    fast, python = STEPS[step]
     body = _body(kind, seed, None)
     u, t = _plane(body, u, where)
-    assert _all_bits(floating.submerged(body, u, t)) == _all_bits(_submerged_in_python(body, u, t))
+    assert _all_bits(fast(body, u, t)) == _all_bits(python(body, u, t))
 
 
-@settings(max_examples=100, deadline=None)
+@pytest.mark.parametrize("step", sorted(STEPS))
+@settings(max_examples=120, deadline=None)
 @given(BODIES, SEEDS, DIRECTIONS, WHERE, st.sampled_from([20, 40, 61]))
-def test_the_mpfr_submerged_part_gives_mpmaths_numbers(kind, seed, u, where, dps):
+def test_the_mpfr_steps_give_mpmaths_numbers(step, kind, seed, u, where, dps):
+    fast, python = STEPS[step]
     body = _body(kind, seed, dps)
     with mpmath.workdps(dps):
         u, t = _plane(body, u, where)
-        assert _all_bits(floating.submerged(body, u, t)) == _all_bits(_submerged_in_python(body, u, t))
+        assert _all_bits(fast(body, u, t)) == _all_bits(python(body, u, t))
 
 
-@pytest.mark.skipif(floating._compiled_submerged is None, reason="the C step is not built (no compiler)")
+@pytest.mark.skipif(floating._compiled_submerged is None, reason="the C steps are not built (no compiler)")
 def test_the_submerged_comparison_sees_a_changed_bit_and_a_turned_polygon():
     body = box(1, 2, 3)
     u, t = _plane(body, (0.3, 0.2, 0.9), 0.37)
@@ -104,16 +108,6 @@ def test_the_submerged_comparison_sees_a_changed_bit_and_a_turned_polygon():
     # a top face lying in the plane is replaced by the cap, counter-clockwise from the lowest corner
     top = floating.submerged(body, (0, 0, 1), 1.5).waterplane.polygon
     assert top == ((-0.5, -1.0, 1.5), (0.5, -1.0, 1.5), (0.5, 1.0, 1.5), (-0.5, 1.0, 1.5))
-
-
-@settings(max_examples=150, deadline=None)
-@given(BODIES, SEEDS, DIRECTIONS, WHERE, st.sampled_from([20, 40, 61]))
-def test_the_mpfr_step_gives_mpmaths_numbers(kind, seed, u, where, dps):
-    body = _body(kind, seed, dps)
-    with mpmath.workdps(dps):
-        u, t = _plane(body, u, where)
-        python = floating._clipped_volume_and_area(body.faces, u, t, mpmath.mpf(0))
-        assert list(map(_bits, floating._volume_and_area(body, u, t))) == list(map(_bits, python))
 
 
 def test_an_offset_wider_than_the_working_precision_gives_mpmaths_numbers():

@@ -12,7 +12,64 @@
 #include <math.h>
 #include <stdlib.h>
 
-#define MAX_RING 512        /* a clipped ring has at most one point more than its face */
+#define MAX_RING 512        /* the longest face ring taken; a clipped ring has at most twice its points */
+
+/* floating._clip for one face ring of n points: the clipped ring (Sutherland-Hodgman against u . p <= t) into
+ * out, its length returned, or -1 for a top face lying in the plane (Newell's normal along +u), which the cap
+ * replaces; where plane is not NULL, the points lying on the plane are appended to it (*on counts them) */
+static int
+clip_ring(const double *ring, int n, double u0, double u1, double u2, double t, double *out, double *plane,
+          Py_ssize_t *on)
+{
+    double heights[MAX_RING];
+    int in_plane = 1;
+    for (int i = 0; i < n; i++) {
+        heights[i] = u0 * ring[3 * i] + u1 * ring[3 * i + 1] + u2 * ring[3 * i + 2];
+        in_plane = in_plane && heights[i] == t;
+    }
+    if (in_plane) {
+        double c0 = 0.0, c1 = 0.0, c2 = 0.0;
+        for (int i = 0; i < n; i++) {
+            const double *a = ring + 3 * i, *b = ring + 3 * ((i + 1) % n);
+            c0 = c0 + (a[1] * b[2] - a[2] * b[1]);
+            c1 = c1 + (a[2] * b[0] - a[0] * b[2]);
+            c2 = c2 + (a[0] * b[1] - a[1] * b[0]);
+        }
+        if (c0 * u0 + c1 * u1 + c2 * u2 > 0) {
+            for (int i = 0; plane != NULL && i < n; i++, (*on)++)
+                for (int k = 0; k < 3; k++) plane[3 * *on + k] = ring[3 * i + k];
+            return -1;
+        }
+    }
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        int j = (i + 1) % n;
+        const double *q = ring + 3 * i, *r = ring + 3 * j;
+        double hp = heights[i], hq = heights[j];
+        if (hp <= t) {
+            for (int k = 0; k < 3; k++) out[3 * m + k] = q[k];
+            if (plane != NULL && hp == t) {
+                for (int k = 0; k < 3; k++) plane[3 * *on + k] = q[k];
+                (*on)++;
+            }
+            m++;
+        }
+        if ((hp <= t) != (hq <= t)) {   /* from the point below to the point above, as in Python */
+            const double *a = hp <= t ? q : r, *b = hp <= t ? r : q;
+            double ha = hp <= t ? hp : hq, hb = hp <= t ? hq : hp;
+            double s = (t - ha) / (hb - ha);
+            out[3 * m] = a[0] + s * (b[0] - a[0]);
+            out[3 * m + 1] = a[1] + s * (b[1] - a[1]);
+            out[3 * m + 2] = a[2] + s * (b[2] - a[2]);
+            if (plane != NULL) {
+                for (int k = 0; k < 3; k++) plane[3 * *on + k] = out[3 * m + k];
+                (*on)++;
+            }
+            m++;
+        }
+    }
+    return m;
+}
 
 static PyObject *
 volume_and_area(PyObject *self, PyObject *args)
@@ -24,7 +81,7 @@ volume_and_area(PyObject *self, PyObject *args)
     const double *p = (const double *)points.buf;
     const int *n_of = (const int *)sizes.buf;
     Py_ssize_t rings = sizes.len / (Py_ssize_t)sizeof(int);
-    double heights[MAX_RING], out[3 * (MAX_RING + 1)];
+    double out[3 * 2 * MAX_RING];
     double o0 = t * u0, o1 = t * u1, o2 = t * u2;
     double volume = 0.0, n0 = 0.0, n1 = 0.0, n2 = 0.0;
     Py_ssize_t start = 0;
@@ -38,41 +95,7 @@ volume_and_area(PyObject *self, PyObject *args)
             PyErr_SetString(PyExc_ValueError, "a face ring longer than the kernel takes, or the rings overrun the points");
             return NULL;
         }
-        int on_plane = 1;
-        for (int i = 0; i < n; i++) {
-            heights[i] = u0 * ring[3 * i] + u1 * ring[3 * i + 1] + u2 * ring[3 * i + 2];
-            on_plane = on_plane && heights[i] == t;
-        }
-        if (on_plane) {         /* a top face in the plane (Newell's normal along +u) is replaced by the cap */
-            double c0 = 0.0, c1 = 0.0, c2 = 0.0;
-            for (int i = 0; i < n; i++) {
-                const double *a = ring + 3 * i, *b = ring + 3 * ((i + 1) % n);
-                c0 = c0 + (a[1] * b[2] - a[2] * b[1]);
-                c1 = c1 + (a[2] * b[0] - a[0] * b[2]);
-                c2 = c2 + (a[0] * b[1] - a[1] * b[0]);
-            }
-            if (c0 * u0 + c1 * u1 + c2 * u2 > 0)
-                continue;
-        }
-        int m = 0;              /* the clipped ring (Sutherland-Hodgman against u . p <= t) */
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            const double *q = ring + 3 * i, *r = ring + 3 * j;
-            double hp = heights[i], hq = heights[j];
-            if (hp <= t) {
-                out[3 * m] = q[0]; out[3 * m + 1] = q[1]; out[3 * m + 2] = q[2];
-                m++;
-            }
-            if ((hp <= t) != (hq <= t)) {   /* from the point below to the point above, as in Python */
-                const double *a = hp <= t ? q : r, *b = hp <= t ? r : q;
-                double ha = hp <= t ? hp : hq, hb = hp <= t ? hq : hp;
-                double s = (t - ha) / (hb - ha);
-                out[3 * m] = a[0] + s * (b[0] - a[0]);
-                out[3 * m + 1] = a[1] + s * (b[1] - a[1]);
-                out[3 * m + 2] = a[2] + s * (b[2] - a[2]);
-                m++;
-            }
-        }
+        int m = clip_ring(ring, n, u0, u1, u2, t, out, NULL, NULL);
         if (m < 3)
             continue;
         double x0 = out[3 * (m - 1)] - o0, y0 = out[3 * (m - 1) + 1] - o1, z0 = out[3 * (m - 1) + 2] - o2;
@@ -185,58 +208,11 @@ submerged(PyObject *self, PyObject *args)
         PyErr_NoMemory();
         goto done;
     }
-    /* floating._clip: Sutherland-Hodgman on every ring; the points on the plane, in order */
-    double heights[MAX_RING];
+    /* floating._clip: every ring clipped; the points on the plane, in order */
     Py_ssize_t start = 0, used = 0, on = 0, kept = 0;
     for (Py_ssize_t f = 0; f < rings; f++) {
-        int n = n_of[f];
-        const double *ring = p + 3 * start;
-        start += n;
-        int in_plane = 1;
-        for (int i = 0; i < n; i++) {
-            heights[i] = u0 * ring[3 * i] + u1 * ring[3 * i + 1] + u2 * ring[3 * i + 2];
-            in_plane = in_plane && heights[i] == t;
-        }
-        if (in_plane) {         /* a top face in the plane (Newell's normal along +u) is replaced by the cap */
-            double c0 = 0.0, c1 = 0.0, c2 = 0.0;
-            for (int i = 0; i < n; i++) {
-                const double *a = ring + 3 * i, *b = ring + 3 * ((i + 1) % n);
-                c0 = c0 + (a[1] * b[2] - a[2] * b[1]);
-                c1 = c1 + (a[2] * b[0] - a[0] * b[2]);
-                c2 = c2 + (a[0] * b[1] - a[1] * b[0]);
-            }
-            if (c0 * u0 + c1 * u1 + c2 * u2 > 0) {
-                for (int i = 0; i < n; i++, on++)
-                    for (int k = 0; k < 3; k++) plane[3 * on + k] = ring[3 * i + k];
-                continue;
-            }
-        }
-        double *out = faces + 3 * used;
-        int m = 0;
-        for (int i = 0; i < n; i++) {
-            int j = (i + 1) % n;
-            const double *q = ring + 3 * i, *r = ring + 3 * j;
-            double hp = heights[i], hq = heights[j];
-            if (hp <= t) {
-                for (int k = 0; k < 3; k++) out[3 * m + k] = q[k];
-                m++;
-                if (hp == t) {
-                    for (int k = 0; k < 3; k++) plane[3 * on + k] = q[k];
-                    on++;
-                }
-            }
-            if ((hp <= t) != (hq <= t)) {   /* from the point below to the point above, as in Python */
-                const double *a = hp <= t ? q : r, *b = hp <= t ? r : q;
-                double ha = hp <= t ? hp : hq, hb = hp <= t ? hq : hp;
-                double s = (t - ha) / (hb - ha);
-                out[3 * m] = a[0] + s * (b[0] - a[0]);
-                out[3 * m + 1] = a[1] + s * (b[1] - a[1]);
-                out[3 * m + 2] = a[2] + s * (b[2] - a[2]);
-                for (int k = 0; k < 3; k++) plane[3 * on + k] = out[3 * m + k];
-                on++;
-                m++;
-            }
-        }
+        int m = clip_ring(p + 3 * start, n_of[f], u0, u1, u2, t, faces + 3 * used, plane, &on);
+        start += n_of[f];
         if (m >= 3) {
             face_n[kept++] = m;
             used += m;
