@@ -108,7 +108,7 @@ class Polyhedron:
     @property
     def vertices(self):
         """The distinct vertices (each face ring lists its own copies)."""
-        return list(dict.fromkeys(itertools.chain.from_iterable(self.faces)))
+        return _distinct_points(self.faces)
 
     @functools.cached_property
     def packed(self) -> tuple[bytes, bytes]:
@@ -122,8 +122,13 @@ class Polyhedron:
         made = self.__dict__.setdefault("_in_mpfr", {})
         if prec not in made:
             with gmpy2.context(precision=prec):
-                made[prec] = tuple(tuple(tuple(_to_mpfr(c) for c in p) for p in ring) for ring in self.faces)
+                made[prec] = _to_mpfr(self.faces)
         return made[prec]
+
+
+def _distinct_points(rings):
+    """The distinct points of the face *rings*, each where it first occurs."""
+    return list(dict.fromkeys(itertools.chain.from_iterable(rings)))
 
 
 def right_prism(polygon, length, dps=None):
@@ -204,7 +209,7 @@ def volume_centroid(poly):
 
 def _volume_centroid(faces, zero):
     """:func:`volume_centroid` of the body with face rings *faces*, in the arithmetic of *zero*."""
-    verts = list(dict.fromkeys(itertools.chain.from_iterable(faces)))     # Polyhedron.vertices
+    verts = _distinct_points(faces)
     if not verts:
         return zero, None
     s0 = s1 = s2 = 0                # the vertex mean, summed left to right
@@ -460,11 +465,8 @@ def submerged(poly, u, t):
     if poly.dps is None and _compiled_submerged is not None:
         part = _compiled_submerged(*poly.packed, u[0], u[1], u[2], t, *basis)
     elif poly.dps is not None and _mpfr_serves(poly, (*u, t, *basis[0], *basis[1])):
-        prec = mpmath.mp.prec
-        with gmpy2.context(precision=prec, round=gmpy2.RoundToNearest):
-            to = lambda xs: tuple(map(_to_mpfr, xs))        # noqa: E731
-            part = _from_mpfr(_submerged_part(poly.in_mpfr(prec), to(u), _to_mpfr(t), (to(basis[0]), to(basis[1])),
-                                              gmpy2.mpfr(0)))
+        with _mpfr_context():
+            part = _from_mpfr(_submerged_part(poly.in_mpfr(mpmath.mp.prec), *_to_mpfr((u, t, basis)), gmpy2.mpfr(0)))
     else:
         part = _submerged_part(poly.faces, u, t, basis, _num(0, poly.dps))
     volume, centroid, ring, area, c2, J = part
@@ -532,10 +534,13 @@ def _in_mpfr(poly, u, t):
     has more bits than the working precision (:func:`_mpfr_serves`), mpmath's numbers serve."""
     if not _mpfr_serves(poly, (*u, t)):
         return _clipped_volume_and_area(poly.faces, u, t, mpmath.mpf(0))
-    with gmpy2.context(precision=mpmath.mp.prec, round=gmpy2.RoundToNearest):
-        volume, area = _clipped_volume_and_area(poly.in_mpfr(mpmath.mp.prec), tuple(map(_to_mpfr, u)), _to_mpfr(t),
-                                                gmpy2.mpfr(0))
-    return _from_mpfr(volume), _from_mpfr(area)
+    with _mpfr_context():
+        return _from_mpfr(_clipped_volume_and_area(poly.in_mpfr(mpmath.mp.prec), *_to_mpfr((u, t)), gmpy2.mpfr(0)))
+
+
+def _mpfr_context():
+    """MPFR's arithmetic at mpmath's working precision, rounded to nearest as mpmath rounds."""
+    return gmpy2.context(precision=mpmath.mp.prec, round=gmpy2.RoundToNearest)
 
 
 def _mpfr_serves(poly, numbers) -> bool:
@@ -547,8 +552,11 @@ def _mpfr_serves(poly, numbers) -> bool:
         x._mpf_[3] > prec for x in numbers if isinstance(x, mpmath.mpf))
 
 
-def _to_mpfr(x) -> gmpy2.mpfr:
-    """An mpf (or a number mpmath takes) of at most the context's precision as an MPFR number, exactly."""
+def _to_mpfr(x):
+    """An mpf (or a number mpmath takes) of at most the context's precision as an MPFR number, exactly; a
+    tuple's numbers, and a tuple's tuples', likewise."""
+    if isinstance(x, tuple):
+        return tuple(_to_mpfr(v) for v in x)
     sign, man, exp, _ = mpmath.mpf(x)._mpf_
     value = gmpy2.mul_2exp(gmpy2.mpfr(man), exp)
     return -value if sign else value

@@ -84,13 +84,11 @@ def planar_group(polygon, dps: int = 50) -> list[np.ndarray]:
 
 def orbit(u, group, tol: float = 1e-9) -> list[np.ndarray]:
     """The distinct images ``g u`` (unit vectors) of *u* under *group*: each image in the group's order, kept
-    where it lies farther than *tol* from every image kept before it (the distances all at once, as
-    :func:`same_class` takes them)."""
+    where it lies farther than *tol* from every image kept before it (the distances all at once, :func:`_lengths`)."""
     if len(group) == 0:
         return []
     images = np.asarray(group, dtype=float) @ np.asarray(u, dtype=float)
-    d = images[:, None, :] - images[None, :, :]
-    far = np.sqrt(np.matmul(d[..., None, :], d[..., :, None])[..., 0, 0]) > tol
+    far = _lengths(images[:, None, :] - images[None, :, :]) > tol
     kept: list[int] = []
     for i in range(len(images)):
         if far[i, kept].all():
@@ -100,12 +98,17 @@ def orbit(u, group, tol: float = 1e-9) -> list[np.ndarray]:
 
 def same_class(u, v, group, tol: float = 1e-7) -> bool:
     """Whether *v* is (within *tol*) the image of *u* under some element of *group*: the distances
-    ``|g u - v|`` of all its elements at once, each a row's dot product with itself, as ``numpy.linalg.norm``
-    takes it for one vector."""
+    ``|g u - v|`` of all its elements at once (:func:`_lengths`)."""
     if len(group) == 0:
         return False
     d = np.asarray(group, dtype=float) @ np.asarray(u, dtype=float) - np.asarray(v, dtype=float)
-    return bool((np.sqrt(np.matmul(d[:, None, :], d[:, :, None])[:, 0, 0]) <= tol).any())
+    return bool((_lengths(d) <= tol).any())
+
+
+def _lengths(d: np.ndarray) -> np.ndarray:
+    """The lengths of the vectors along the last axis of *d*, each its dot product with itself as
+    ``numpy.linalg.norm`` takes it for one vector, bit for bit (a sum of the squares differs in the last bit)."""
+    return np.sqrt(np.matmul(d[..., None, :], d[..., :, None])[..., 0, 0])
 
 
 def representative(u, group) -> np.ndarray:
