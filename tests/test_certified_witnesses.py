@@ -660,6 +660,53 @@ def test_a_nested_root_search_is_enclosed_trial_by_trial():
     assert record_decision(_certified(edge.run({"Q": chain(exact_edge + sp.Rational(1, 10 ** 12))})["Q"])) == "refuted"
 
 
+def test_a_nested_search_seeks_each_trial_s_roots_from_the_last_ones(monkeypatch):
+    # the edge of the test above: the float64 search is asked for the inner zero at the first trial edge alone;
+    # at every later trial the zero is sought from the one before (the trial edges lie within 2^-20 of the
+    # float64 root), and the enclosure still agrees and refutes as before
+    Body, _, _, FloatingRootWitness, _, _, Root = _floating()
+    Q, rho, s0 = sp.symbols("Q rho s0", positive=True)
+    lower_zero = Root.scan(measured("metacentric height"), rho, sp.Rational(1, 20), sp.Rational(1, 2), 9)
+    case = Case({rho: sp.Rational(1, 2)}, label="box")
+    edge = FloatingRootWitness(
+        "edge", "the edge at which the box's lower zero is 1/5", ("Q",), (case,),
+        body=Body.box(1, Q, 1), up=(0, 0, 1), density=rho, quantity=Q,
+        roots=((Q, Root.scan(s0 - sp.Rational(1, 5), Q, sp.Rational(4, 5), sp.Rational(99, 100), 5,
+                             roots=((s0, lower_zero),))),))
+    searched, depth = [], [0]
+    solve = FloatingRootWitness._solve
+
+    def counted(self, params, body, roots, dps, reads=()):
+        if not depth[0]:            # a search the ball method asks for, not one inside the float64 search
+            searched.append(tuple(symbol for symbol, _ in roots))
+        depth[0] += 1
+        try:
+            return solve(self, params, body, roots, dps, reads)
+        finally:
+            depth[0] -= 1
+    monkeypatch.setattr(FloatingRootWitness, "_solve", counted)
+    with working_precision(160):
+        value = edge.enclose(case, 128)
+        assert value.contains(2 * arb(6).sqrt() / 5) and value.rad() < arb(2) ** -100
+    assert searched == [(Q,), (s0,)], searched
+
+
+def test_a_root_known_to_a_ball_is_bracketed_as_wide_as_the_ball_asks_at_once():
+    # f(x) = x^2 - 2 known only to +-2^-100 (a nested root's ball widens every value): the bracket about the
+    # secant's last point is first tried as wide as twice that radius over the slope (about 2^-101) calls for, and
+    # holds sqrt 2; a bracket 2^(4 - 128) wide, widened by 2^8 at a time, would take four tries (eight values)
+    from symfloat.engine.floating_enclosure import _secant_root
+    counted = []
+
+    def f(x):
+        counted.append(x)
+        return x * x - 2 + arb(0, arb(2) ** -100)
+    found = _secant_root(f, 1.4, 1.5, 128, start=2 ** 0.5)
+    with working_precision(160):
+        assert found.contains(arb(2).sqrt()) and found.rad() < arb(2) ** -96
+    assert len(counted) <= 2 + 3 + 2, counted    # the start and a point 2^-40 from it, three secant steps, two ends
+
+
 def test_the_waterplanes_corners_are_counted_in_balls_where_no_vertex_may_lie_on_the_plane():
     # the unit cube, corner up (1, 1, 1): the plane of s = 1/2 through the centre cuts six edges (the regular
     # hexagon), that of s = 1/48 three (a triangle round the lowest corner: volume h^3 sqrt 3 / 2 below it);

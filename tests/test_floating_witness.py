@@ -675,6 +675,25 @@ def test_a_number_at_a_trial_value_is_computed_to_the_method_digits():
         number(x + sp.Symbol("z"), params, 15)
 
 
+def test_a_number_that_is_a_float_or_a_rational_is_what_the_case_s_evaluation_gives():
+    # a trial value (a Float) or a dimension (a Rational) is read without SymPy's substitution: bit for bit what
+    # _exact gives it (a Float of more digits than _exact evaluates at is rounded there first, so it goes that way)
+    from symfloat.engine.floating_witness import _exact
+    values = [sp.Float("0.1", 20), sp.Float("-2.718281828459045235360287", 25), sp.pi.evalf(45),
+              sp.Float(sp.Rational(1, 3), 55), sp.sqrt(2).evalf(80), sp.Rational(-7, 3), sp.Integer(0)]
+    for dps in (15, 40):
+        for v in values:
+            with mpmath.workdps(max(dps, 15)):
+                fast, slow = number(v, {}, dps), _exact(v, (), dps)
+                slow = +slow if isinstance(slow, mpmath.mpf) else slow
+                assert type(fast) is type(slow) and fast == slow, (v, dps)
+    assert number(sp.Rational(3, 4), {}, 15) == Fraction(3, 4)
+    # 1 + 2^-53 + 2^-120 in 150 bits: rounded to a double at once it is 1 + 2^-52; _exact rounds it to 30 digits
+    # first (1 + 2^-53, a tie) and then to the even double 1, and so must number
+    twice_rounded = sp.Float(sp.Rational(2 ** 120 + 2 ** 67 + 1, 2 ** 120), precision=150)
+    assert float(twice_rounded) == 1 + 2 ** -52 and number(twice_rounded, {}, 15) == 1.0
+
+
 def test_a_root_read_only_by_a_later_grid_is_found_in_float64():
     # the tilt of the upper base's contact bounds the grid of the arm's zero and nothing else reads it: at 40
     # digits it is found in float64, the arm's zero (the quantity reads it) at 40 digits, to 1e-35 as before

@@ -40,6 +40,7 @@ True
 from __future__ import annotations
 
 import itertools
+import math
 from dataclasses import dataclass, field, fields, replace
 from fractions import Fraction
 from functools import lru_cache
@@ -681,16 +682,21 @@ def missing_method(witness, body, case) -> str:
 ROOT_BRACKETS = (2.0 ** -30, 2.0 ** -20)   # the float64 root's brackets, relative to 1 + |root|, tried in turn
 
 
-def _root_balls(witness, case, body, bits):
+def _root_balls(witness, case, body, bits, starts=None):
     """The witness's ``roots``: ``(params, extra)``, the case's parameters with the roots that are exact numbers
     (an expression in exact values, kept exact) and the others as balls (symbol -> ball): an expression in what
     is known, ``At`` a quantity at other
     parameters, ``Root`` a root of a quantity in a variable, proven by a sign change on a bracket about the
-    float64 root (the first of :data:`ROOT_BRACKETS` whose signs are proven) and narrowed by bisection (:func:`~symfloat.engine.enclosure.sign_change_root`),
-    each ``guard`` proven positive there; a ``Root`` with nested ``roots`` the same, its quantity at each trial
-    value (the midpoint of its ball, exact) read with the nested roots enclosed there (:func:`_nested_point`);
-    ``None`` for a root without a rigorous method (a derivative by differences, a nested search that reads a
-    root enclosed before it or has a guard)."""
+    float64 root (the first of :data:`ROOT_BRACKETS` whose signs are proven) and narrowed by secant steps
+    (:func:`_secant_root`), each ``guard`` proven positive there; a ``Root`` with nested ``roots`` the same, its
+    quantity at each trial value (the midpoint of its ball, exact) read with the nested roots enclosed there
+    (:func:`_nested_point`); ``None`` for a root without a rigorous method (a derivative by differences, a nested
+    search that reads a root enclosed before it or has a guard).
+
+    *starts* (symbol -> exact number, filled in as roots are found): a nested search's roots at its previous
+    trial value, from which the roots at the next are sought before the float64 search is asked.  The trial
+    values lie within ``2^-20`` of the float64 root, where the float64 search found the nested roots it did; a
+    root's proof is its bracket's signs either way."""
     from .floating_witness import At, Root
     from .witness import Case
     fine = bits + GUARD_BITS
@@ -722,27 +728,34 @@ def _root_balls(witness, case, body, bits):
             nested = _nested_point(root, params, extra, witness, body)
             if nested is None or root.guard:
                 return None
-        if centres is None:
-            centres = witness._solve(case.params, body, witness.roots, 15)     # the float64 search, cached
-        centre = float(centres[symbol])
         here_params.pop(root.variable, None)
+        continued: dict = {}        # the nested roots at the last trial value (*starts* of the nested search)
 
-        def f(x, probe=probe, here_params=here_params, here=here, variable=root.variable, root=root, nested=nested):
+        def f(x, probe=probe, here_params=here_params, here=here, variable=root.variable, root=root, nested=nested,
+              continued=continued):
             if nested is None:
                 values = quantity_balls(probe, here_params, {**here, variable: x}, body, bits)
             else:               # the nested roots at the trial value, then the quantity there
                 trial = Case({**nested, variable: _dyadic(x.mid())})
-                solved = _root_balls(replace(probe, roots=root.roots), trial, body, bits)
+                solved = _root_balls(replace(probe, roots=root.roots), trial, body, bits, continued)
                 values = None if solved is None else quantity_balls(probe, *solved, body, bits)
             if values is None:
                 raise _NoMethod
             return values[0]
-        try:
+
+        def enclosed(centre, f=f):
             for share in ROOT_BRACKETS:
                 reach = share * (1 + abs(centre))
                 value = _secant_root(f, centre - reach, centre + reach, bits, centre)
                 if value.is_finite():
                     break
+            return value
+        try:
+            value = enclosed(starts[symbol]) if starts and symbol in starts else arb.nan()
+            if not value.is_finite():
+                if centres is None:
+                    centres = witness._solve(case.params, body, witness.roots, 15)     # the float64 search, cached
+                value = enclosed(float(centres[symbol]))
             for item in root.guard:
                 g = quantity_balls(replace(probe, quantity=item), here_params, {**here, root.variable: value}, body,
                                    bits)
@@ -755,6 +768,8 @@ def _root_balls(witness, case, body, bits):
         if not value.is_finite():
             raise Ambiguous(f"no proven sign change of {root.quantity} about the float64 root {root.variable}")
         extra[symbol] = value
+        if starts is not None:
+            starts[symbol] = value.mid()
     return params, extra
 
 
@@ -787,18 +802,18 @@ def _dyadic(x: arb) -> sp.Rational:
 def _secant_root(f, lo, hi, bits, start=None):
     """A root of *f* in ``[lo, hi]`` as a ball about ``2^-bits (1 + |root|)`` wide: secant steps on the balls'
     midpoints at exact dyadic points (from *start*, the float64 root, and a point ``2^-40`` from it), then a
-    bracket about the last one whose ends' signs are proven opposite (the intermediate value theorem), widened
-    by 2^8 at a time up to ``2^-(bits/2)``.  Where that proves nothing, the same from the ends *lo*, *hi* (floats
-    whose values of *f* must be balls of proven opposite signs), and then bisection on ``[lo, hi]``
-    (:func:`~symfloat.engine.enclosure.sign_change_root`); non-finite where the signs at *lo*, *hi* are not
-    proven opposite."""
+    bracket about the last one whose ends' signs are proven opposite (the intermediate value theorem), as narrow
+    as the balls of *f* allow and widened by 2^8 at a time up to ``2^-(bits/2)`` (:func:`_narrowed`).  Where that
+    proves nothing, the same from the ends *lo*, *hi* (floats whose values of *f* must be balls of proven opposite
+    signs), and then bisection on ``[lo, hi]`` (:func:`~symfloat.engine.enclosure.sign_change_root`); non-finite
+    where the signs at *lo*, *hi* are not proven opposite."""
     with working_precision(bits + GUARD_BITS):
         a, b = arb(lo), arb(hi)
         if start is not None and a < arb(start) < b:
             x = arb(start)
             y = arb((x + arb(2) ** -40 * (1 + abs(x))).mid())
             try:
-                root = _narrowed(f, a, b, x, f(x).mid(), y, f(y).mid(), bits)
+                root = _narrowed(f, a, b, x, f(x), y, f(y), bits)
             except Ambiguous:
                 root = None
             if root is not None:
@@ -806,35 +821,50 @@ def _secant_root(f, lo, hi, bits, start=None):
         fa, fb = f(a), f(b)
         if not ((fa < 0 and fb > 0) or (fa > 0 and fb < 0)):
             return arb.nan()
-        root = _narrowed(f, a, b, a, fa.mid(), b, fb.mid(), bits)
+        root = _narrowed(f, a, b, a, fa, b, fb, bits)
         if root is not None:
             return root
     return sign_change_root(f, lo, hi, bits)
 
 
 def _narrowed(f, a, b, x, fx, y, fy, bits):
-    """Secant steps inside ``[a, b]`` from ``(x, fx)``, ``(y, fy)`` (midpoints), then the first bracket about the
-    last point, ``2^(4 - bits) (1 + |y|)`` wide and widened by 2^8 at a time, whose ends' signs are proven
-    opposite; ``None`` where none within ``[a, b]`` is."""
+    """Secant steps inside ``[a, b]`` from ``(x, fx)``, ``(y, fy)`` (balls; the steps on their midpoints), then
+    the first bracket about the last point whose ends' signs are proven opposite: ``2^(4 - bits) (1 + |y|)`` wide
+    times the least power of 2 that spans twice the radius of the last value along the secant's slope (a nested
+    root's ball, or the data's, widens every value), widened by 2^8 at a time; ``None`` where none within
+    ``[a, b]`` is."""
+    centre = y
     for _ in range(SECANT_STEPS):
-        if fy == fx:
+        if fy.mid() == fx.mid():
             break
-        z = arb((y - fy * (y - x) / (fy - fx)).mid())
+        z = arb((y - fy.mid() * (y - x) / (fy.mid() - fx.mid())).mid())
         if not (a < z < b):
             z = (a + b) / 2
         if (z - y).abs_upper() < arb(2) ** -bits * (1 + abs(z)):
-            y = z               # converged: the bracket's ends are evaluated, not z itself
+            centre = z          # converged: the bracket's ends are evaluated, not z itself
             break
-        x, fx, y, fy = y, fy, z, f(z).mid()
-    step = arb(2) ** (4 - bits) * (1 + abs(y))
-    for widen in range(0, bits // 2 - 8, 8):
-        left, right = y - step * 2 ** widen, y + step * 2 ** widen
+        x, fx, y, fy = y, fy, z, f(z)
+        centre = y
+    step = arb(2) ** (4 - bits) * (1 + abs(centre))
+    for widen in range(_spanned(fx, fy, x, y, step), bits // 2 - 8, 8):
+        left, right = centre - step * 2 ** widen, centre + step * 2 ** widen
         if not (a <= left and right <= b):
             break
         fl, fr = f(left), f(right)
         if (fl < 0 and fr > 0) or (fl > 0 and fr < 0):
             return left.union(right)
     return None
+
+
+def _spanned(fx, fy, x, y, step) -> int:
+    """The least ``k >= 0`` with ``step 2^k`` at least ``2 rad(fy) / |slope|``, the slope the secant's through
+    ``(x, fx)``, ``(y, fy)`` (their midpoints): a bracket that narrow has ends whose values are apart from 0 by
+    about twice their balls' radius; 0 where the slope is 0."""
+    slope = abs((fy.mid() - fx.mid()) / (y - x))
+    if not slope > 0:
+        return 0
+    mantissa, exponent = math.frexp(float((2 * fy.rad() / slope / step).upper()))
+    return max(0, exponent - (mantissa == 0.5))
 
 
 SECANT_STEPS = 40

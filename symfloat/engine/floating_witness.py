@@ -49,6 +49,10 @@ def number(expr, params, dps):
     it depends on is a float (a trial value of a root search), the expression is evaluated by its compiled form
     (:func:`_compiled`) at ``dps + 10`` digits, not by SymPy."""
     expr = expr if isinstance(expr, sp.Basic) else sp.sympify(expr)
+    if expr.is_Rational:                     # a dimension, a constant: what _exact gives, without its cache's keys
+        return Fraction(int(expr.p), int(expr.q))
+    if isinstance(expr, sp.Float) and _unrounded(expr, dps):
+        return float(expr) if dps <= 15 else +mpmath.mpf(expr)    # a trial value, as _exact gives it
     symbols = _parameters(expr)
     if not any(isinstance(params.get(x), sp.Float) for x in symbols):
         value = _exact(expr, tuple((x, params[x]) for x in symbols if x in params), dps)
@@ -60,6 +64,11 @@ def number(expr, params, dps):
     with mpmath.workdps(max(dps, 15) + 10):
         value = f(*(_mp(params[x], dps) for x in names))
     return float(value) if dps <= 15 else +value
+
+
+def _unrounded(x: sp.Float, dps) -> bool:
+    """Whether :func:`_exact` would take the Float *x* unrounded (its digits: 30 for float64, ``dps + 10``)."""
+    return x._prec <= mpmath.libmp.dps_to_prec(30 if dps <= 15 else dps + 10)
 
 
 @functools.lru_cache(maxsize=4096)
