@@ -2,6 +2,7 @@
 directory with the previous output intact, selections that never replace the record of everything,
 a cache verified by content hash, workers that end with their parent, Ctrl-C as exit status 130."""
 import errno
+import gc
 import json
 import os
 import shutil
@@ -169,11 +170,16 @@ def test_a_failed_self_check_is_exit_1_and_ctrl_c_is_130(monkeypatch, capsys, tm
     assert capsys.readouterr().err == "symfloat: interrupted (finished checks are kept in the cache)\n"
 
     def kernel_dies_of_ctrl_c(*a, **k):    # a notebook kernel turns Ctrl-C into its own error
-        try:
+        collecting = gc.isenabled()
+        gc.disable()        # no collection between the signal and its handler: a collector's callback (Hypothesis
+        try:                # times collections) would receive the KeyboardInterrupt and Python would ignore it
             os.kill(os.getpid(), signal.SIGINT)
             time.sleep(1)
         except KeyboardInterrupt:
             raise RuntimeError("Kernel died") from None
+        finally:
+            if collecting:
+                gc.enable()
     monkeypatch.setattr(cli, "verify", kernel_dies_of_ctrl_c)
     assert cli.main(["verify", "graefe-s1", "--quiet"]) == 130
 
