@@ -2,6 +2,8 @@
 defended, each erratum states the best case that the print is right and the answer to it."""
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from symfloat import registry
@@ -15,3 +17,17 @@ def test_every_erratum_of_a_defended_source_states_its_objection_and_answer(sour
     errata = {f"{did}/{p.name}": p.erratum for did in registry.ids() if registry.manifest(did).source == source
               for p in registry.statements(did).printed if p.erratum is not None}
     assert errata and [f for f, e in errata.items() if not (e.objection and e.answer)] == []
+
+
+# a word of the prose inside a formula is typeset as italic letters run together ("tan φ₁ upto 2√3bs")
+_MATH = re.compile(r"\$([^$]+)\$")
+_WORD = re.compile(r"(?<![A-Za-z\\])(?:up to|and|for|with|the|is|of|where|than)(?![A-Za-z])")
+
+
+def test_an_erratum_keeps_its_words_outside_its_formulas():
+    inside = [(f"{did}/{p.name}", field, m.group(0))
+              for did in registry.ids() for p in registry.statements(did).printed if p.erratum is not None
+              for field in ("evidence", "objection", "answer")
+              for m in _MATH.finditer(getattr(p.erratum, field))
+              if _WORD.search(re.sub(r"\\(?:text|mathrm|operatorname)\{[^}]*\}", "", m.group(1)))]
+    assert inside == []

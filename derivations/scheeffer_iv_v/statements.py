@@ -771,7 +771,7 @@ d.quote("55", "(55)", r"$$\operatorname{tg} \varphi_1 \leq \begin{cases} \frac{b
                         "Both bases must stay out of the water, so both bounds apply; which one is smaller depends "
                         "on $s u_m$ versus $(1-s) u_m'$, not on $s$ alone. Counterexample (from the clipped "
                         "geometry): equilateral triangle of side 1, EF parallel to a side, apex dipping, $b = "
-                        r"\tfrac{17}{25}$, $s = \tfrac25$: (55) admits $\tan \varphi_1 up to 2 \sqrt{3} b s = 0.942$, "
+                        r"\tfrac{17}{25}$, $s = \tfrac25$: (55) admits $\tan \varphi_1$ up to $2 \sqrt{3} b s = 0.942$, "
                         r"but the upper base is touched at $\tan = \sqrt{3} b (1-s) = 0.707$, and (54) gives $\tan "
                         r"\varphi_1 = 0.815$ in between: the tilted position of (54) is not in the first rotation "
                         r"region although (55) says it is. Same with the apex rising and $s = \tfrac35 > \tfrac12$ "
