@@ -643,18 +643,25 @@ def test_a_dimension_that_a_root_sets_is_enclosed_at_the_root_s_ball():
     assert record_decision(_certified(edge.run({"A": chain(exact_area + sp.Rational(1, 10 ** 12))})["A"])) == "refuted"
 
 
-def test_a_nested_root_search_is_enclosed_trial_by_trial():
-    # the box 1 x Q x 1 upright (z up, Q < 1) at density rho: the metacentric height Q^2/(12 rho) - (1 - rho)/2
-    # has its lower zero s0 where s0 (1 - s0) = Q^2/6 (the inner search, at every trial Q); s0 = 1/5 where
-    # Q^2/6 = 4/25, Q = 2 sqrt(6)/5 (the outer search; the case's rho, which the inner search sets, is nominal)
+Q_EDGE, S0 = sp.symbols("Q s0", positive=True)
+
+
+def _nested_edge():
+    """The box 1 x Q x 1 upright (z up, Q < 1) at density rho: the metacentric height Q^2/(12 rho) - (1 - rho)/2
+    has its lower zero s0 where s0 (1 - s0) = Q^2/6 (the inner search, at every trial Q); s0 = 1/5 where
+    Q^2/6 = 4/25, Q = 2 sqrt(6)/5 (the outer search; the case's rho, which the inner search sets, is nominal)."""
     Body, _, _, FloatingRootWitness, _, _, Root = _floating()
-    Q, rho, s0 = sp.symbols("Q rho s0", positive=True)
+    rho = sp.Symbol("rho", positive=True)
     lower_zero = Root.scan(measured("metacentric height"), rho, sp.Rational(1, 20), sp.Rational(1, 2), 9)
-    edge = FloatingRootWitness(
+    return FloatingRootWitness(
         "edge", "the edge at which the box's lower zero is 1/5", ("Q",), (Case({rho: sp.Rational(1, 2)}, label="box"),),
-        body=Body.box(1, Q, 1), up=(0, 0, 1), density=rho, quantity=Q,
-        roots=((Q, Root.scan(s0 - sp.Rational(1, 5), Q, sp.Rational(4, 5), sp.Rational(99, 100), 5,
-                             roots=((s0, lower_zero),))),))
+        body=Body.box(1, Q_EDGE, 1), up=(0, 0, 1), density=rho, quantity=Q_EDGE,
+        roots=((Q_EDGE, Root.scan(S0 - sp.Rational(1, 5), Q_EDGE, sp.Rational(4, 5), sp.Rational(99, 100), 5,
+                                  roots=((S0, lower_zero),))),))
+
+
+def test_a_nested_root_search_is_enclosed_trial_by_trial():
+    edge = _nested_edge()
     exact_edge = 2 * sp.sqrt(6) / 5
     assert record_decision(_certified(edge.run({"Q": chain(exact_edge)})["Q"])) == "agrees"
     assert record_decision(_certified(edge.run({"Q": chain(exact_edge + sp.Rational(1, 10 ** 12))})["Q"])) == "refuted"
@@ -663,16 +670,10 @@ def test_a_nested_root_search_is_enclosed_trial_by_trial():
 def test_a_nested_search_seeks_each_trial_s_roots_from_the_last_ones(monkeypatch):
     # the edge of the test above: the float64 search is asked for the inner zero at the first trial edge alone;
     # at every later trial the zero is sought from the one before (the trial edges lie within 2^-20 of the
-    # float64 root), and the enclosure still agrees and refutes as before
-    Body, _, _, FloatingRootWitness, _, _, Root = _floating()
-    Q, rho, s0 = sp.symbols("Q rho s0", positive=True)
-    lower_zero = Root.scan(measured("metacentric height"), rho, sp.Rational(1, 20), sp.Rational(1, 2), 9)
-    case = Case({rho: sp.Rational(1, 2)}, label="box")
-    edge = FloatingRootWitness(
-        "edge", "the edge at which the box's lower zero is 1/5", ("Q",), (case,),
-        body=Body.box(1, Q, 1), up=(0, 0, 1), density=rho, quantity=Q,
-        roots=((Q, Root.scan(s0 - sp.Rational(1, 5), Q, sp.Rational(4, 5), sp.Rational(99, 100), 5,
-                             roots=((s0, lower_zero),))),))
+    # float64 root), and the enclosure is the same edge's
+    FloatingRootWitness = _floating()[3]
+    edge = _nested_edge()
+    case = edge.cases[0]
     searched, depth = [], [0]
     solve = FloatingRootWitness._solve
 
@@ -688,7 +689,7 @@ def test_a_nested_search_seeks_each_trial_s_roots_from_the_last_ones(monkeypatch
     with working_precision(160):
         value = edge.enclose(case, 128)
         assert value.contains(2 * arb(6).sqrt() / 5) and value.rad() < arb(2) ** -100
-    assert searched == [(Q,), (s0,)], searched
+    assert searched == [(Q_EDGE,), (S0,)], searched
 
 
 def test_a_root_known_to_a_ball_is_bracketed_as_wide_as_the_ball_asks_at_once():
