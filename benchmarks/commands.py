@@ -155,11 +155,12 @@ def section(measured) -> str:
     return "\n".join(lines + ["", END]) + "\n"
 
 
-def write(path: Path, text: str) -> None:
+def write(path: Path, text: str, begin: str = BEGIN, end: str = END) -> None:
+    """*text* in place of *path*'s section between *begin* and *end*, or after its title where it has none."""
     old = path.read_text(encoding="utf-8") if path.exists() else "# Performance\n"
-    if BEGIN in old and END in old:
-        head, rest = old.split(BEGIN, 1)
-        new = head + text.rstrip("\n") + rest.split(END, 1)[1]
+    if begin in old and end in old:
+        head, rest = old.split(begin, 1)
+        new = head + text.rstrip("\n") + rest.split(end, 1)[1]
     else:
         title, _, body = old.partition("\n")
         new = title + "\n\n" + text + "\n" + body.lstrip("\n")

@@ -11,7 +11,11 @@ def _baseline():
     spec = importlib.util.spec_from_file_location("baseline", ROOT / "benchmarks" / "baseline.py")
     module = importlib.util.module_from_spec(spec)
     sys.modules[spec.name] = module             # its dataclasses look their module up by name
-    spec.loader.exec_module(module)
+    sys.path.insert(0, str(ROOT / "benchmarks"))          # it imports its neighbour commands.py, as when run
+    try:
+        spec.loader.exec_module(module)
+    finally:
+        sys.path.remove(str(ROOT / "benchmarks"))
     return module
 
 
@@ -43,3 +47,16 @@ def test_a_target_not_measured_keeps_its_row_and_note():
     assert "| 1000 | 500 | 0.50 | 0.35 | **no** |" in new and "- test, abc1234 against f44b998: then 1000 s wall" in new
     assert "| 900 | 80 | 0.09 | 0.24 | yes |" in new
     assert new.index("- clone, def5678") < new.index("- test, abc1234")            # in the order of the targets
+
+
+def test_the_section_is_replaced_in_place_and_the_commands_section_left_alone(tmp_path):
+    b = _baseline()
+    M = b.Measured
+    out = tmp_path / "performance.md"
+    out.write_text("# Performance\n\nthe commands' section\n", encoding="utf-8")
+    for wall in (500, 400):
+        b.write(out, b.section("f44b998", "abc1234", {"test": (M(1000, 1900, 1.0, ""), M(wall, 800, 1.0, ""))}),
+                b.BEGIN, b.END)
+    text = out.read_text(encoding="utf-8")
+    assert text.count(b.BEGIN) == 1 and "| 1000 | 400 | 0.40 |" in text and "| 1000 | 500 |" not in text
+    assert text.startswith("# Performance\n\n" + b.BEGIN) and text.endswith("the commands' section\n")
