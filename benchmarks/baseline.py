@@ -10,11 +10,11 @@ that commit (``git archive``) into a folder of its own, installs it into a virtu
 of this checkout's environment (``pip freeze`` as constraints, so only the project's code differs), and measures
 on both, one after the other, the checkout first:
 
-- *verify*: every derivation checked cold in one process (``symfloat verify`` with an empty cache), its CPU
-  seconds (user and system) and wall seconds;
-- *clone*: a fresh clone's ``make run`` (``git clone``, then the Makefile creates the environment, installs
-  the project and runs the main job), as the issue measured it; pip takes this environment's versions here too
-  (``PIP_CONSTRAINT``), from its cache where it has them;
+- *verify*: every derivation checked cold (``symfloat verify`` with an empty cache, on the worker processes it
+  starts), the CPU seconds (user and system) of all its processes and its wall seconds;
+- *clone*: a fresh clone's ``make run`` (``git clone`` of the commit, HEAD for this checkout, then the Makefile
+  creates the environment, installs the project and runs the main job), as the issue measured it; pip takes
+  this environment's versions here too (``PIP_CONSTRAINT``), from its cache where it has them;
 - *test*: the README's test command (``pytest -q -n 2 --dist loadfile``), every derivation checked from scratch.
 
 The ratio's target is the issue's target over the issue's own figure (60/326, 90/375, 180/510). The result goes
@@ -68,6 +68,7 @@ TARGETS = (
 
 @dataclass(frozen=True)
 class Measured:
+    """What one command cost: its seconds, the machine's load when it started, and what it said last."""
     wall: float
     cpu: float
     load: float             # one-minute load average when it started
