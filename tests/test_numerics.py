@@ -48,12 +48,15 @@ def test_quick_command_writes_the_document_and_figures(quick_docs):
 
 def test_the_document_names_sources_derivations_and_formulas_in_words(quick_docs):
     """A reader of docs/numerics.md (and of the site's page made from it) sees no derivation's id, no witness's
-    or formula's name and no formula in Python's notation: sources by author and title, derivations by title,
-    formulas by their place and their print, typeset (provenance: the quick selection's Graefe §2 and the
-    metacentre, whose formulas, witnesses and closed forms appear in every section)."""
+    or formula's name, no formula in Python's notation and none of the program's files, issues or exceptions:
+    sources by author and title, derivations by title, formulas by their place and their print, typeset
+    (provenance: the quick selection's Graefe §2 and the metacentre, whose formulas, witnesses and closed forms
+    appear in every section; section 4's prose named issue 14, two test files, a module and an exception)."""
     text = (quick_docs / "numerics.md").read_text(encoding="utf-8")
     shown = re.sub(r"\(figures/[^)]*\)", "", text)             # a figure's file name is no text a reader sees
     assert not [did for did in ids() if did in shown]
+    # nor the project's workings: an issue's number, a file of the program or its tests, an exception's name
+    assert not re.findall(r"\bissue \d+|\b(?:symfloat|tests)/[\w/]+\.py\b|\b[A-Z]\w*Error\b|`np\.", shown)
     assert "**" not in shown.replace("**yes**", "").replace("**catastrophic**", "") and "`factor`" not in shown
     assert "#### V. v. Graefe, *Ueber eine allgemeine Formel zur Bestimmung des Schwerpunctes von Körpern*" in text
     assert "| §1 prismatoid volume: $I = \\frac{h}{3} \\left\\{ g + G = " in text        # place and print

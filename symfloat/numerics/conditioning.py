@@ -55,9 +55,9 @@ CASES = [
          mpmath.mpf(23) / 32, lambda s: make_scene("section", s, polygon="0,0 1,0 1,1 0,1")),
     Case("long square log, double root of IX's quartic (n_1 -> 1)", "23/32", "scheeffer (140)",
          mpmath.mpf(23) / 32, lambda s: make_scene("section", s, polygon="0,0 1,0 1,1 0,1"), side=-1),
-    Case("box 1,2,3, tilted stable class born from face z up (issue 14)", "(1 - sqrt(25/27))/2", "scheeffer IV (18)",
+    Case("box 1,2,3, tilted stable class born from face z up", "(1 - sqrt(25/27))/2", "scheeffer IV (18)",
          _SZ, lambda s: make_scene("box", s, dims="1,2,3")),
-    Case("right isosceles triangle log next to full density (issue 14)", "1", "-", mpmath.mpf(1),
+    Case("right isosceles triangle log next to full density", "1", "-", mpmath.mpf(1),
          # next to full density, below the command line's input domain (issue 17): the solver is asked directly
          lambda s: dataclasses.replace(make_scene("section", "1/2", polygon="0,0 1,0 0,1"), density=s), side=-1),
 ]
@@ -148,7 +148,7 @@ def conditioning_markdown(rows) -> str:
 
 
 PITCHFORK_THRESHOLDS = (   # docs/numerics.md section 4: what was wrong next to a pitchfork, what holds now
-    'Thresholds next to a pitchfork (`symfloat phase`, issue 14): a threshold is located by bisection on '
+    'Thresholds next to a pitchfork (`symfloat phase`): a threshold is located by bisection on '
     'the density with the position tracked, and the predicate must not outlive the position. On the long '
     'square log (the box 1 × 1 × 4) the tilted position of the section dies at 9/32 into edge up (GM of '
     "the edge-up section, (4/3)√s − √2/2, vanishes there; Scheeffer IX's 23/32 read with 1 − s) at a "
@@ -168,7 +168,7 @@ PITCHFORK_THRESHOLDS = (   # docs/numerics.md section 4: what was wrong next to 
     '--dims 1,1,4` (48 densities) about 40 processor-seconds, as before the fix.')
 
 RING_SEEDS = (   # docs/numerics.md section 4: the ring of the long square log's end face (solve's second search)
-    "Rings born from a position on an axis of order ≥ 3 (issue 14): the long square log's ring around its"
+    "Rings born from a position on an axis of order ≥ 3: the long square log's ring around its"
     ' end face, born at 1/2 − √(1/4 − 1/96) = 0.0105275, has radius about 0.048 rad at s = 0.01054 (m² = '
     '12d(4 − d) − 2, d = 4s), inside the first ring of seeds (9°); its index is 0, so the sum closed '
     'without it and `scene` exited 0 with no stable ring. A ring of index 0 is seen by no index sum, so '
@@ -180,7 +180,7 @@ RING_SEEDS = (   # docs/numerics.md section 4: the ring of the long square log's
     'a saddle class on the diagonal mirror live up to a fold at about 0.0105474 (a scan of the gradient '
     'along the mirror): the scene finds the ring at 0.01054, the arcs with both diagonal classes at '
     "0.010547 and the arcs at 0.01056 (before: index sum 10, exit 1), each ring's tilt equal to atan m to"
-    ' 1e-9 rad (tests/test_solver_log.py). These seeds find the diagonal window; the index sum, the arcs '
+    ' 1e-9 rad (held by a test). These seeds find the diagonal window; the index sum, the arcs '
     'counted with the winding round them (−1 each, below), confirms it. How close to the vertex event this '
     'stays right (densities s and 1 − s, both solved): from 0.0105466, 2e-7 past it, to the fold both '
     'sides give the arcs and both diagonal classes (before: from 0.0105468; at 1 − 0.0105466 the walk '
@@ -191,10 +191,10 @@ RING_SEEDS = (   # docs/numerics.md section 4: the ring of the long square log's
     'eigenvalue below 1e-2 of the size) and the families with their indices in its message.')
 
 FAMILY_INDEX = (   # docs/numerics.md section 4: the index check with families (symfloat/solver/families.py)
-    'The index check with families (issue 14): a ring or an arc of equilibria used to switch the '
+    'The index check with families: a ring or an arc of equilibria used to switch the '
     'Poincaré–Hopf check off ("one-parameter families present"), and every silent miss left sat behind '
     'that. Now a family counts with the winding number of the gradient on a closed curve round it that '
-    'encloses no other equilibrium (`symfloat/solver/families.py`): round an arc a stadium, its walked '
+    'encloses no other equilibrium: round an arc a stadium, its walked '
     'points moved ρ to either side and joined by half circles round its ends, ρ a third of the distance '
     'to the nearest other equilibrium (every copy of every other class and of the family), at most 0.03 '
     'rad; a closed ring counts the winding on the curve ρ outside it less that on the curve ρ inside, 0 '
@@ -207,7 +207,7 @@ FAMILY_INDEX = (   # docs/numerics.md section 4: the index check with families (
     'families included, must be 2; when it is not, the search goes on next to every family (from up to 24 '
     'of its walked points 1e-3 … 3e-2 rad across it, along it past an arc\'s ends out to 6e-2 rad, a '
     "closed ring's axis), then by continuation from s ± 1e-4 s(1 − s) and from the dual scene (its "
-    'equilibria at 1 − s turned upside down); a sum that still fails is IndexCheckError naming the '
+    'equilibria at 1 − s turned upside down); a sum that still fails is an error naming the '
     'families. Two changes to the walk let the sum close: a step along a family (and the test that a '
     'point lies on one) needs the middle of the chord, settled across the family by Newton\'s method, to '
     "be an equilibrium of the family's potential within a quarter of the chord (across a gap the gradient "
@@ -221,7 +221,7 @@ FAMILY_INDEX = (   # docs/numerics.md section 4: the index check with families (
     '(before, both sides dropped it, an equilibrium by symmetry, as a point of the ring); and the cube at '
     '0.2266 and 0.7734, just past (3 − √2)/7, finds the stable class on the diagonal mirror between the '
     'arcs round z, which both sides missed (a miss the duality cannot see); each with the sum 2 '
-    '(tests/test_solver_families.py). What it costs: the curves round a family are one batched '
+    '(each held by a test). What it costs: the curves round a family are one batched '
     'evaluation of floating states (4 to 13 ms a family in these scenes); the middle of each chord one Newton run per step '
     'of the walk; a scene whose first sum fails runs the second search: 0.5 to 1.8 s of processor time '
     'for the scenes above (0.1 to 0.9 s before, with the wrong answers); the box and cube sweeps (19 '
@@ -230,7 +230,7 @@ FAMILY_INDEX = (   # docs/numerics.md section 4: the index check with families (
 IX_TRIPLE_ROOT = (   # docs/numerics.md section 4: Scheeffer IX's predictor next to the triple root of (136)
     "Scheeffer IX's predictor next to its triple root: at n = 1 the printed quartic (136) factors as (z² "
     '− 2σ)(z² − 3z/2 + 2σ), and at s = 23/32 its three positive roots are the triple root 3/4, which '
-    '`np.roots` returned 1.5e-8 off (a root of multiplicity k is perturbed by the k-th root of the '
+    "numpy's polynomial roots returned 1.5e-8 off (a root of multiplicity k is perturbed by the k-th root of the "
     "rounding), so the tables' threshold of the box 1 × 1 × 4 read 0.2812500189990 instead of 9/32. The "
     "roots now come from the factors at n = 1 and are polished by Newton's method at 40 digits elsewhere "
     '(linear convergence at a double root, 200 steps at most): the threshold reads 9/32 to 3e-16.')
