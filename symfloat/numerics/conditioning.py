@@ -10,6 +10,7 @@ For densities ``s* + delta`` the solver's equilibria are compared with a
 from __future__ import annotations
 
 import dataclasses
+import math
 import time
 from dataclasses import dataclass
 from fractions import Fraction
@@ -26,7 +27,8 @@ __all__ = ["Case", "CASES", "Row", "conditioning_rows", "conditioning_markdown"]
 @dataclass(frozen=True)
 class Case:
     """A bifurcation density ``s_star`` (a 50-digit mpmath value, with its closed form and locator)
-    and the scene family around it; ``side`` = +1 to approach from above, -1 from below."""
+    and the scene family around it; ``side`` = +1 to approach from above, -1 from below.  The label and the
+    closed form are what a reader sees: words and typeset formulas."""
     label: str
     closed_form: str
     locator: str
@@ -45,19 +47,20 @@ with mpmath.workdps(50):
     _SZ = (1 - mpmath.sqrt(mpmath.mpf(25) / 27)) / 2
 
 CASES = [
-    Case("long square log, tilted position born at s* (2-D)", "1/2 - sqrt(1/12)", "scheeffer (79)", _S79,
+    Case("long square log, tilted position born at $s^*$ (2-D)", r"$1/2 - \sqrt{1/12}$", "scheeffer (79)", _S79,
          lambda s: make_scene("section", s, polygon="0,0 1,0 1,1 0,1")),
-    Case("cube, ring born from the upright position", "1/2 - sqrt(1/12)", "scheeffer (79)", _S79,
+    Case("cube, ring born from the upright position", r"$1/2 - \sqrt{1/12}$", "scheeffer (79)", _S79,
          lambda s: make_scene("cube", s)),
-    Case("cube, oblique positions at the end of the whole ring", "(3 - sqrt 2)/7", "scheeffer (80)", _S80,
+    Case("cube, oblique positions at the end of the whole ring", r"$(3 - \sqrt{2})/7$", "scheeffer (80)", _S80,
          lambda s: make_scene("cube", s)),
-    Case("long square log, double root of IX's quartic (n_1 -> 1)", "23/32", "scheeffer (140)",
+    Case(r"long square log, double root of Scheeffer IX's quartic ($n_1 \to 1$)", "$23/32$", "scheeffer (140)",
          mpmath.mpf(23) / 32, lambda s: make_scene("section", s, polygon="0,0 1,0 1,1 0,1")),
-    Case("long square log, double root of IX's quartic (n_1 -> 1)", "23/32", "scheeffer (140)",
+    Case(r"long square log, double root of Scheeffer IX's quartic ($n_1 \to 1$)", "$23/32$", "scheeffer (140)",
          mpmath.mpf(23) / 32, lambda s: make_scene("section", s, polygon="0,0 1,0 1,1 0,1"), side=-1),
-    Case("box 1,2,3, tilted stable class born from face z up", "(1 - sqrt(25/27))/2", "scheeffer IV (18)",
+    Case(r"box $1 \times 2 \times 3$, tilted stable class born from face $z$ up", r"$(1 - \sqrt{25/27})/2$",
+         "scheeffer IV (18)",
          _SZ, lambda s: make_scene("box", s, dims="1,2,3")),
-    Case("right isosceles triangle log next to full density", "1", "-", mpmath.mpf(1),
+    Case("right isosceles triangle log next to full density", "$1$", "-", mpmath.mpf(1),
          # next to full density, below the command line's input domain (issue 17): the solver is asked directly
          lambda s: dataclasses.replace(make_scene("section", "1/2", polygon="0,0 1,0 0,1"), density=s), side=-1),
 ]
@@ -118,6 +121,16 @@ def conditioning_rows(cases=CASES, deltas=(1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12)
     return rows
 
 
+# how the solver bounded a position's error (its error_method), in words
+HOW = {"kantorovich": "Newton–Kantorovich", "near-bifurcation estimate": "estimate next to the bifurcation",
+       "sign change": "sign change along a mirror", "exact": "exact"}
+
+
+def _power(delta: float) -> str:
+    """``δ = ±10^k`` typeset: ``$+10^{-4}$``."""
+    return f"${'+' if delta > 0 else '-'}10^{{{round(math.log10(abs(delta)))}}}$"
+
+
 def conditioning_markdown(rows) -> str:
     """The rows as a Markdown section of docs/numerics.md."""
     lines = ["## 4. The solver near bifurcation densities", "",
@@ -139,8 +152,9 @@ def conditioning_markdown(rows) -> str:
              "", r"| case | $s^*$ | $\delta$ | tilt (°) | stability | true error (rad) | reported (rad) | how | bounded |",
              "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        lines.append(f"| {r.case} | {r.closed_form} | {r.delta:+.0e} | {r.tilt_deg:.6f} | {r.stability} | "
-                     f"{r.true_error:.1e} | {r.reported:.1e} | {r.method} | {'yes' if r.bounded else 'NO'} |")
+        lines.append(f"| {r.case} | {r.closed_form} | {_power(r.delta)} | {r.tilt_deg:.6f} | {r.stability} | "
+                     f"{r.true_error:.1e} | {r.reported:.1e} | {HOW[r.method]} | "
+                     f"{'yes' if r.bounded else 'NO'} |")
     bounded = sum(r.bounded for r in rows)
     lines += ["", f"The reported error bounds the true error in {bounded} of {len(rows)} rows.", "", PITCHFORK_THRESHOLDS, "",
               RING_SEEDS, "", FAMILY_INDEX, "", IX_TRIPLE_ROOT, ""]
