@@ -58,8 +58,7 @@ CASES = [
     Case(r"long square log, double root of Scheeffer IX's quartic ($n_1 \to 1$)", "$23/32$", "scheeffer (140)",
          mpmath.mpf(23) / 32, lambda s: make_scene("section", s, polygon="0,0 1,0 1,1 0,1"), side=-1),
     Case(r"box $1 \times 2 \times 3$, tilted stable class born from face $z$ up", r"$(1 - \sqrt{25/27})/2$",
-         "scheeffer IV (18)",
-         _SZ, lambda s: make_scene("box", s, dims="1,2,3")),
+         "scheeffer IV (18)", _SZ, lambda s: make_scene("box", s, dims="1,2,3")),
     Case("right isosceles triangle log next to full density", "$1$", "-", mpmath.mpf(1),
          # next to full density, below the command line's input domain (issue 17): the solver is asked directly
          lambda s: dataclasses.replace(make_scene("section", "1/2", polygon="0,0 1,0 0,1"), density=s), side=-1),
