@@ -66,9 +66,14 @@ def number(expr, params, dps):
     return float(value) if dps <= 15 else +value
 
 
+def _digits(dps) -> int:
+    """The digits at which :func:`_exact` evaluates for a method of *dps* digits: 30 for float64, ``dps + 10``."""
+    return 30 if dps <= 15 else dps + 10
+
+
 def _unrounded(x: sp.Float, dps) -> bool:
-    """Whether :func:`_exact` would take the Float *x* unrounded (its digits: 30 for float64, ``dps + 10``)."""
-    return x._prec <= mpmath.libmp.dps_to_prec(30 if dps <= 15 else dps + 10)
+    """Whether :func:`_exact` would take the Float *x* unrounded (no more bits than its :func:`_digits`)."""
+    return x._prec <= mpmath.libmp.dps_to_prec(_digits(dps))
 
 
 @functools.lru_cache(maxsize=4096)
@@ -88,9 +93,9 @@ def _exact(expr, params, dps):
     if value.is_Rational:
         return Fraction(int(value.p), int(value.q))
     if dps <= 15:
-        return float(sp.N(value, 30))
-    with mpmath.workdps(dps + 10):
-        return mpmath.mpf(sp.N(value, dps + 10))
+        return float(sp.N(value, _digits(dps)))
+    with mpmath.workdps(_digits(dps)):
+        return mpmath.mpf(sp.N(value, _digits(dps)))
 
 
 def _mp(x, dps):
