@@ -365,6 +365,38 @@ def test_a_limit_that_cancels_past_float64_is_taken_in_mpmaths_numbers():
     assert abs(v - sp.Rational(1, 120)) < 1e-14 and abs(v - sp.Rational(1, 121)) > 1e-5
 
 
+
+def test_a_limit_computes_each_of_its_integrals_once_per_node():
+    # a collapsing section's centroid: the quotient of two integrals in the tilt t, met twice in the expression
+    # (Scheeffer I-III's moments repeat twelve integrals 48 times); each is one quadrature per node, and the
+    # limit is the one the expression has: int_0^t x dx / int_0^t dx = t/2 -> 0, plus 3 (the quotient twice)
+    import mpmath
+    from symfloat.engine.definitions import NumericLimit, _NestedQuadPrinter, _quadrature
+    t = sp.Symbol("t", positive=True)
+    ratio = sp.Integral(x * a, (x, 0, t)) / sp.Integral(a, (x, 0, t))
+    limit = NumericLimit(ratio + 3 * a + (ratio + 1) ** 2 / a, t, sp.Integer(0), sp.Integer(1))
+    code = _NestedQuadPrinter({"fully_qualified_modules": False, "inline": True, "allow_unknown_functions": True}
+                              ).doprint(limit)
+    assert code.count("quad(") == 2                     # four occurrences, two distinct integrals
+    import symfloat.engine.definitions as definitions_module
+    quadratures, nodes = [], []
+    def counted(*args, **kwargs):
+        quadratures.append(1)
+        return mpmath.mp.__class__.quad(mpmath.mp, *args, **kwargs)
+    def limit_counted(ctx, f, z0, direction):
+        return extrapolated_limit(ctx, lambda z: nodes.append(1) or f(z), z0, direction)
+    from symfloat.engine.extrapolation import extrapolated_limit
+    mpmath.mp.quad = counted
+    saved, definitions_module.extrapolated_limit = definitions_module.extrapolated_limit, limit_counted
+    try:
+        v = _quadrature(limit, {a: sp.Integer(2)}, 30, _NestedQuadPrinter)
+    finally:
+        del mpmath.mp.quad
+        definitions_module.extrapolated_limit = saved
+    assert abs(v - sp.Rational(13, 2)) < 1e-25                     # 3 a + 1/a at a = 2
+    assert nodes and len(quadratures) == 2 * len(nodes)
+
+
 # ---------------------------------------------------------------- in ball arithmetic (definition_enclosure.py)
 
 def test_a_single_integral_is_decided_in_balls_and_the_30_digit_method_is_not_run(monkeypatch):

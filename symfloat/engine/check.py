@@ -128,6 +128,8 @@ def _evaluated(expr):
     witnesses' readings, by the next link of a chain and by every edit the correction search tries."""
     if isinstance(expr, sp.Basic):
         return _carried_out(expr)
+    if isinstance(expr, sp.MatrixBase):         # a vector's components, each carried out once
+        return expr.applyfunc(_carried_out)
     return expr.doit() if hasattr(expr, "doit") else expr
 
 

@@ -132,10 +132,25 @@ class _NestedQuadPrinter(MpmathPrinter):
 
     def _print_NumericLimit(self, e):
         expr, z, z0, direction = e.args
-        body = f"lambda {self._print(z)}: {self._print(expr)}"
+        # each integral once per value of z, however often the expression repeats it (a centroid's quotient
+        # in every term of a moment: twelve integrals met 48 times)
+        integrals = list(dict.fromkeys(_outermost_integrals(expr)))
+        names = [sp.Symbol(f"_integral_{k}") for k in range(len(integrals))]
+        inner = self._print(expr.xreplace(dict(zip(integrals, names))))
+        if integrals:
+            inner = (f"(lambda {', '.join(map(self._print, names))}: {inner})"
+                     f"({', '.join(map(self._print, integrals))})")
+        body = f"lambda {self._print(z)}: {inner}"
         # "mpmath" is the compiled code's context (mpmath.mp, or the float64 one)
         at = f"{'' if z0 == sp.oo else '-'}mpmath.inf" if z0 in (sp.oo, -sp.oo) else self._print(z0)
         return f"extrapolated_limit(mpmath, {body}, {at}, {int(direction)})"
+
+
+def _outermost_integrals(expr) -> list:
+    """The integrals of *expr* not inside another integral, in the order of a walk of its tree, repeats kept."""
+    if isinstance(expr, sp.Integral):
+        return [expr]
+    return [i for a in expr.args for i in _outermost_integrals(a)]
 
 
 class _RoughQuadPrinter(_NestedQuadPrinter):
@@ -172,6 +187,13 @@ def _carried_out(m):
     cannot take is left to :class:`NumericLimit`."""
     if isinstance(m, sp.MatrixBase):
         return m.applyfunc(_carried_out)
+    return _carried_out_once(m)
+
+
+@functools.lru_cache(maxsize=4096)
+def _carried_out_once(m):
+    """:func:`_carried_out` of an expression, once: a reading and its correction share their measured member, and
+    a definition's terms recur in the members of several readings."""
     if not m.has(sp.Derivative, sp.Subs, sp.Sum, sp.Limit):
         return m
     m = m.replace(lambda e: isinstance(e, sp.Subs), _substituted)
