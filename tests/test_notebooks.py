@@ -78,7 +78,7 @@ def test_a_proved_step_calls_the_strategy_of_its_certificate(s1_notebook, s1_rep
     code = by_id[cell_id("step-check", "mid-sections")].source
     strategy = s1_report.proofs[f"step {S1}/mid-sections#0"]["strategy"]
     call = {"cancel": "cancel(together(", "expand": "expand(powsimp(expand(", "simplify": "simplify(",
-            "radsimp": "cancel(radsimp(together(", "pythagoras": "pythagoras("}[strategy]
+            "radsimp": "cancel(radsimp(together(", "pythagoras": "pythagoras(", "branches": "branches("}[strategy]
     assert f"proof = {call}values[0] - values[1]" in code and "assert proof == 0" in code
     assert "g*(UnevaluatedExpr(Rational(1, 2)))**2" in code    # the print's arithmetic (1/2)^2 kept as printed
 
@@ -93,6 +93,19 @@ def test_a_notebook_defines_pythagoras_as_the_engine_runs_it():
     assert space["pythagoras"](sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1) == 0
     assert space["pythagoras"](sp.sin(2 * x) - sp.sin(x) * sp.cos(x)) != 0
     assert strategy_helper("cancel") == ("", set())
+
+
+def test_a_notebook_defines_branches_as_the_engine_runs_it():
+    # the same for the piecewise strategy: its source alone, with the SymPy names it uses, proves a claim by
+    # cases and not one whose second case differs
+    source, names = strategy_helper("branches")
+    assert names == {"Piecewise", "cancel", "piecewise_fold", "together"}
+    space = {name: getattr(sp, name) for name in names}
+    exec(source, space)
+    s = sp.Symbol("s")
+    cases = sp.Piecewise((s * (1 - s), s > sp.Rational(1, 2)), (0, True))
+    assert space["branches"](cases - sp.Piecewise((s - s**2, s > sp.Rational(1, 2)), (0, True))) == 0
+    assert space["branches"](cases - sp.Piecewise((s - s**2, s > sp.Rational(1, 2)), (s, True))) != 0
 
 
 def test_cell_ids_follow_content_not_position(s1_notebook, s1_report):

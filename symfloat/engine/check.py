@@ -434,6 +434,7 @@ _PROOF_WORDS = {"cancel": "the difference cancels over a common denominator",
                 "radsimp": "the difference cancels once its roots are cleared from the denominators",
                 "pythagoras": ("with tangents as sines over cosines and multiple angles expanded, the difference is 0 "
                                "once $\\sin^2 x + \\cos^2 x = 1$ is used"),
+                "branches": "in each case of its piecewise definition the difference cancels over a common denominator",
                 "simplify": "SymPy's general simplification takes the difference to 0",
                 "assumptions": "the statement follows from the derivation's assumptions",
                 "sign of factors": "the sign of each factor is fixed on the domain",

@@ -27,6 +27,7 @@ from flint import arb
 from ..model.compiled import CompiledError, compile_expr
 from ..model.relation import RealRoots
 from .enclosure import Unsupported, exact, real_function, working_precision
+from .branches import branches
 from .pythagoras import pythagoras
 from .proofs import Certificate, ProofBook, claim_digest, slowdown
 from .sign import decided
@@ -124,11 +125,12 @@ def _strategy(name):
         "expand": lambda e: sp.expand(sp.powsimp(sp.expand(e), force=True)),
         "radsimp": lambda e: sp.cancel(sp.radsimp(sp.together(e))),
         "pythagoras": pythagoras,
+        "branches": branches,
         "simplify": sp.simplify,
     }[name]
 
 
-STRATEGIES = ("cancel", "squares", "expand", "radsimp", "pythagoras", "simplify")
+STRATEGIES = ("cancel", "squares", "expand", "radsimp", "pythagoras", "branches", "simplify")
 
 
 @dataclass(frozen=True)

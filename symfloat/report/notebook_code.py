@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import ast
 import functools
+import importlib
 import inspect
 import itertools
 import keyword
@@ -72,6 +73,7 @@ _STRATEGY_CODE = {
     "expand": "expand(powsimp(expand({d}), force=True))",
     "radsimp": "cancel(radsimp(together({d})))",
     "pythagoras": "pythagoras({d})",
+    "branches": "branches({d})",
     "simplify": "simplify({d})",
     "squares": "cancel(together(expand({a}**2 - {b}**2)))",
 }
@@ -81,6 +83,7 @@ STRATEGY_WORDS = {
     "expand": "expanded",
     "radsimp": "rationalised and cancelled",
     "pythagoras": "reduced by the Pythagorean identity (the squares of a sine and its cosine add up to 1)",
+    "branches": "split into its cases, each brought over one denominator and cancelled",
     "simplify": "simplified by SymPy's simplify",
     "squares": "squared (both members are non-negative, so equal squares mean equal members) and cancelled",
 }
@@ -88,13 +91,13 @@ STRATEGY_WORDS = {
 
 def strategy_helper(strategy: str) -> tuple[str, set]:
     """The definition a notebook needs before it can call *strategy* (``""`` for a SymPy call), with the SymPy
-    names it uses: ``pythagoras``'s own source (:mod:`symfloat.engine.pythagoras`), so the notebook runs the
-    very function the engine runs."""
-    if strategy != "pythagoras":
+    names it uses: the own function's source of ``pythagoras`` (:mod:`symfloat.engine.pythagoras`) and of
+    ``branches`` (:mod:`symfloat.engine.branches`), so the notebook runs the very function the engine runs."""
+    if strategy not in ("pythagoras", "branches"):
         return "", set()
-    from ..engine import pythagoras as module
-    source = inspect.getsource(module.pythagoras)
-    return source, {n for n in re.findall(r"[A-Za-z_]+", source) if n in module.__dict__ and n != "pythagoras"}
+    module = importlib.import_module(f"symfloat.engine.{strategy}")
+    source = inspect.getsource(getattr(module, strategy))
+    return source, {n for n in re.findall(r"[A-Za-z_]+", source) if n in module.__dict__ and n != strategy}
 
 
 def proof_source(strategy: str, a: str, b: str, matrix: bool) -> str:
