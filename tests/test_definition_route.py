@@ -366,34 +366,29 @@ def test_a_limit_that_cancels_past_float64_is_taken_in_mpmaths_numbers():
 
 
 
-def test_a_limit_computes_each_of_its_integrals_once_per_node():
-    # a collapsing section's centroid: the quotient of two integrals in the tilt t, met twice in the expression
-    # (Scheeffer I-III's moments repeat twelve integrals 48 times); each is one quadrature per node, and the
-    # limit is the one the expression has: int_0^t x dx / int_0^t dx = t/2 -> 0, plus 3 (the quotient twice)
+def test_a_limit_computes_each_of_its_integrals_once_per_node(monkeypatch):
+    # a collapsing section's centroid, the quotient of two integrals in the tilt t, met twice in the expression
+    # (Scheeffer I-III's moments repeat twelve integrals 48 times): each integral is one quadrature per node of
+    # the extrapolation, and the limit is the expression's: the quotient a t^2/2 / (a t) = t/2 -> 0, so
+    # 0 + 3 a + (0 + 1)^2 / a = 13/2 at a = 2
     import mpmath
+
+    import symfloat.engine.definitions as definitions_module
     from symfloat.engine.definitions import NumericLimit, _NestedQuadPrinter, _quadrature
+    from symfloat.engine.extrapolation import extrapolated_limit
     t = sp.Symbol("t", positive=True)
     ratio = sp.Integral(x * a, (x, 0, t)) / sp.Integral(a, (x, 0, t))
     limit = NumericLimit(ratio + 3 * a + (ratio + 1) ** 2 / a, t, sp.Integer(0), sp.Integer(1))
     code = _NestedQuadPrinter({"fully_qualified_modules": False, "inline": True, "allow_unknown_functions": True}
                               ).doprint(limit)
     assert code.count("quad(") == 2                     # four occurrences, two distinct integrals
-    import symfloat.engine.definitions as definitions_module
     quadratures, nodes = [], []
-    def counted(*args, **kwargs):
-        quadratures.append(1)
-        return mpmath.mp.__class__.quad(mpmath.mp, *args, **kwargs)
-    def limit_counted(ctx, f, z0, direction):
-        return extrapolated_limit(ctx, lambda z: nodes.append(1) or f(z), z0, direction)
-    from symfloat.engine.extrapolation import extrapolated_limit
-    mpmath.mp.quad = counted
-    saved, definitions_module.extrapolated_limit = definitions_module.extrapolated_limit, limit_counted
-    try:
-        v = _quadrature(limit, {a: sp.Integer(2)}, 30, _NestedQuadPrinter)
-    finally:
-        del mpmath.mp.quad
-        definitions_module.extrapolated_limit = saved
-    assert abs(v - sp.Rational(13, 2)) < 1e-25                     # 3 a + 1/a at a = 2
+    quad = mpmath.mp.quad
+    monkeypatch.setattr(mpmath.mp, "quad", lambda *args, **kwargs: quadratures.append(1) or quad(*args, **kwargs))
+    monkeypatch.setattr(definitions_module, "extrapolated_limit", lambda ctx, f, z0, direction: extrapolated_limit(
+        ctx, lambda z: nodes.append(1) or f(z), z0, direction))
+    v = _quadrature(limit, {a: sp.Integer(2)}, 30, _NestedQuadPrinter)
+    assert abs(v - sp.Rational(13, 2)) < 1e-25
     assert nodes and len(quadratures) == 2 * len(nodes)
 
 

@@ -8,8 +8,9 @@ general algorithms, a third of a second each; every term is an instance of
 
 (substitute ``y = L sqrt(t)``; ``L > 0``, ``g > 0``, ``k > -1``, ``a > -1``), whose Beta function SymPy
 evaluates exactly at the half-integers that occur; over ``[-L, L]`` a term is twice that for an even power ``k``
-and 0 for an odd one (a half circle's moments, Scheeffer VI's cylinder: SymPy takes seconds for each).  The closed form is checked like SymPy's would be: the
-definition route measures the defining integral by quadrature, never by this rule.
+and 0 for an odd one (a half circle's moments, Scheeffer VI's cylinder: SymPy takes seconds for each).  The closed
+form is checked like SymPy's would be: the definition route measures the defining integral by quadrature, never by
+this rule.
 """
 from __future__ import annotations
 
