@@ -170,8 +170,11 @@ def section(rev: str, head: str, results: dict, old: str = "") -> str:
 
 
 def _said(line: str) -> str:
-    """``; it said: “...”`` with the line's first 120 characters, or nothing for no line."""
-    words = re.sub(r"\s+", " ", line)[:120]
+    """``; it said: “...”`` with the line's first 120 characters (an ellipsis where it goes on), or nothing for no
+    line."""
+    words = re.sub(r"\s+", " ", line).strip()
+    if len(words) > 120:
+        words = words[:120].rstrip(" ;,") + " …"
     return f"; it said: “{words}”" if line else ""
 
 

@@ -60,3 +60,12 @@ def test_the_section_is_replaced_in_place_and_the_commands_section_left_alone(tm
     text = out.read_text(encoding="utf-8")
     assert text.count(b.BEGIN) == 1 and "| 1000 | 400 | 0.40 |" in text and "| 1000 | 500 |" not in text
     assert text.startswith("# Performance\n\n" + b.BEGIN) and text.endswith("the commands' section\n")
+
+
+def test_what_a_command_said_is_cut_with_an_ellipsis_and_only_when_it_goes_on():
+    # the main job's last line, 140 characters: cut at 120 with "…" (it ended in "; " before, as if whole)
+    said = _baseline()._said
+    line = "wrote docs/verification.json, docs/errata.json, docs/errata.md, docs/scheeffer-ix-grid.md, " \
+           "docs/scheeffer-ix-grid.json; 17 notebooks changed"
+    assert said(line).endswith("grid.json …”") and len(said(line)) < len(line)
+    assert said("12 passed") == "; it said: “12 passed”" and said("") == ""
