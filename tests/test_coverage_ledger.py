@@ -28,6 +28,11 @@ def test_a_stray_dollar_is_an_error():
         math_intervals("a $x$ and $y\n")
 
 
+def test_a_texts_math_spans_are_found_once_and_cannot_be_changed():
+    text = "a $x$ b\n$$y = 1$$\n"
+    assert math_intervals(text) is math_intervals(text) == ((2, 5, "inline"), (8, 17, "display"))
+
+
 def test_span_counts_follow_the_dollars():
     # hasab: 16 lines are $$...$$ displays (grep -c '^\$\$' on the transcription); metazentrum has no $$
     # and writes its displays as $...$ alone on a line.

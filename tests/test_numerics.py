@@ -79,6 +79,23 @@ def test_figure_with_the_same_fingerprint_is_not_rewritten(tmp_path):
     assert write_png_if_changed(path, plt.figure(), "abd")
 
 
+def test_a_familys_faint_points_are_one_collection_whatever_their_number():
+    # a scatter per point made the figure take seconds to save; the points are one collection, in their order
+    import matplotlib.pyplot as plt
+    from symfloat.numerics.bench import Measurement
+    from symfloat.numerics.report import family_figure
+
+    def collections(n):
+        ms = [Measurement("d", "s", "f", f"w{i}", method, 10.0 ** -(1 + i % 5), {"x": 10.0 ** -(3 + i % 7)})
+              for i in range(n) for method in ("float64", "tanh-sinh, 30 digits")]
+        fig, _ = family_figure("f", ms)
+        count = len(fig.axes[0].collections)
+        plt.close(fig)
+        return count
+
+    assert collections(3) == collections(300)
+
+
 def test_pareto_front():
     pts = [(1.0, 1e-3), (2.0, 1e-10), (3.0, 1e-5), (0.5, 1e-1), (4.0, 1e-30)]
     assert pareto(pts) == [3, 0, 1, 4]

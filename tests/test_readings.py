@@ -121,6 +121,20 @@ def test_the_difference_form_is_compared():
     assert _status((xs - r_ - sp.tan(al), 0))["status"] == "differs"
 
 
+def test_a_hand_readings_integral_is_carried_out_as_the_checks_carry_it_out(monkeypatch):
+    # through the checks' remembered rule (the Beta function closes a quarter circle): the same closed form, and
+    # SymPy's integration, seconds for some of the readings, not paid again
+    from symfloat.report import readings
+    y = sp.Symbol("y", positive=True)
+    quarter = sp.Integral(sp.sqrt(1 - y ** 2), (y, 0, 1))
+    assert readings._hand_rows((xs, quarter)) == [[xs, sp.pi / 4]]
+
+    def again(self, **hints):
+        raise AssertionError("integrated again")
+    monkeypatch.setattr(sp.Integral, "doit", again)
+    assert readings._hand_rows((xs, quarter)) == [[xs, sp.pi / 4]]
+
+
 def test_context_index_maps_a_printed_letter_to_the_derivations_symbol():
     x_pf = sp.Symbol("x_{pf}")
     row = _status((x_pf, r_ + sp.tan(al) / 2))

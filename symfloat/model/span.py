@@ -16,7 +16,7 @@ from __future__ import annotations
 import json
 import re
 from dataclasses import dataclass
-from functools import cache
+from functools import cache, lru_cache
 from pathlib import Path
 
 from .source import get_source
@@ -64,11 +64,13 @@ def line_of(text: str, offset: int) -> tuple[int, int]:
     return text.count("\n", 0, offset) + 1, offset - text.rfind("\n", 0, offset)
 
 
-def math_intervals(text: str) -> list[tuple[int, int, str]]:
-    """(start, end, kind) of every math span; raises on a ``$`` that pairs with nothing.
+@lru_cache(maxsize=16)
+def math_intervals(text: str) -> tuple[tuple[int, int, str], ...]:
+    """(start, end, kind) of every math span; raises on a ``$`` that pairs with nothing.  Found once per text
+    (remembered: the readings and the site look up each quote's spans in its whole source, a thousand times).
 
     >>> math_intervals("a $x$ b\\n$$y = 1$$\\n$z$\\n")
-    [(2, 5, 'inline'), (8, 17, 'display'), (18, 21, 'display')]
+    ((2, 5, 'inline'), (8, 17, 'display'), (18, 21, 'display'))
     """
     found = [(m.start(), m.end(), "display") for m in _DISPLAY.finditer(text)]
     masked = _DISPLAY.sub(lambda m: " " * len(m.group(0)), text)
@@ -82,7 +84,7 @@ def math_intervals(text: str) -> list[tuple[int, int, str]]:
     if "$" in rest:
         at = rest.index("$")
         raise ValueError(f"unpaired $ at line {line_of(text, at)[0]}: {text[at:at + 60]!r}")
-    return sorted(found)
+    return tuple(sorted(found))
 
 
 def widened(a: int, b: int, maths) -> tuple[int, int]:

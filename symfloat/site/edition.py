@@ -19,7 +19,6 @@ from __future__ import annotations
 import html
 import re
 from collections import Counter
-from functools import lru_cache
 
 from ..registry import statements
 from ..model.erratum import apparatus
@@ -85,16 +84,9 @@ def notebook_anchor(derivation: str, cell: str) -> str:
     return make_id(cell_label(derivation, cell))
 
 
-@lru_cache(maxsize=8)
-def _maths(text: str) -> tuple[tuple[int, int, str], ...]:
-    """The math spans of *text* (:func:`math_intervals`), found once per text: a notebook's page quotes its
-    transcription once per quotation, some hundred times."""
-    return tuple(math_intervals(text))
-
-
 def quotes(text: str, formulas) -> list[tuple[int, int, str]]:
     """``(start, end, formula id)`` of each formula's excerpt in *text*, widened to whole math spans."""
-    maths = _maths(text)
+    maths = math_intervals(text)
     out = []
     for f in formulas:
         at = text.find(f["printed"])
@@ -121,7 +113,7 @@ def places(text: str, fault: str, quote: tuple[int, int]) -> list[tuple[int, int
     (its words "")."""
     if not fault:
         return []
-    maths = _maths(text)
+    maths = math_intervals(text)
     return [widened(m.start(), m.end(), maths) for m in re.finditer(re.escape(fault), text)
             if not quote[0] <= m.start() < quote[1]]
 
