@@ -253,6 +253,26 @@ def test_slice_figure_is_deterministic():
     assert b"Software" not in first and b"Creation" not in first
 
 
+def test_the_tables_overlay_counts_a_density_and_its_dual_once(monkeypatch):
+    """The printed tables read s below 1/2 as 1 - s: a grid symmetric about 1/2 asks them about half its rows,
+    and every row is what the tables say at its own density."""
+    from symfloat.atlas import checks, figure
+    from symfloat.registry import provided
+    (_, tables), = provided("tables")
+    asked = []
+
+    def counted(s, r):
+        asked.append(s)
+        return tables(s, r)
+    monkeypatch.setattr(checks, "_ix_tables", lambda: counted)
+    ratios = (1.25, 3.0)
+    densities = tuple(F(1, 10) + F(8, 10) * F(k, 8) for k in range(9))       # 1/10 .. 9/10, symmetric
+    counts = figure._ix_counts.__wrapped__(ratios, densities)
+    assert len(asked) == 5 * len(ratios) and min(asked) >= F(1, 2)
+    assert counts.tolist() == [[sum(p["stability"] == "stable" for p in tables(s, r)) for r in ratios]
+                               for s in densities]
+
+
 @pytest.mark.parametrize("lopsided, status", [(False, 0), (True, 1)])
 def test_command_fails_when_a_check_fails(lopsided, status, tmp_path, capsys):
     """Cells already written are not computed again; the checks run on them, are written to checks.md

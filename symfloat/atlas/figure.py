@@ -33,12 +33,20 @@ def _edges(values: list[float]) -> list[float]:
 
 @functools.lru_cache(maxsize=4)
 def _ix_counts(ratios: tuple, densities: tuple) -> np.ndarray:
-    """The number of stable positions Scheeffer IX's tables give at each density (rows) and b/a (columns);
+    """The number of stable positions Scheeffer IX's tables give at each density (rows, exact) and b/a (columns);
     read-only and remembered: the slices of one atlas share their b/a columns and densities as a rule, and the
-    160 x 161 points cost seconds."""
+    160 x 161 points cost seconds.  The tables read a density s below 1/2 as 1 - s (the text's rule), so a row
+    is counted once for s and 1 - s: half the rows of a grid symmetric about 1/2."""
     from .checks import _ix_tables
     tables = _ix_tables()
-    counts = np.array([[sum(p["stability"] == "stable" for p in tables(s, r)) for r in ratios] for s in densities])
+    rows: dict = {}
+
+    def row(s: Fraction) -> list[int]:
+        key = max(s, 1 - s)
+        if key not in rows:
+            rows[key] = [sum(p["stability"] == "stable" for p in tables(key, r)) for r in ratios]
+        return rows[key]
+    counts = np.array([row(s) for s in densities])
     counts.flags.writeable = False
     return counts
 
@@ -53,7 +61,8 @@ def slice_png(rows, meta, ca: Fraction, reference=None) -> bytes:
     mine = [r for r in rows if Fraction(r["c_a_exact"]) == ca and not r["failure"]]
     ba = sorted({Fraction(r["b_a_exact"]) for r in rows if Fraction(r["c_a_exact"]) == ca})
     edges = _edges([float(x) for x in ba])
-    lo, hi = float(Fraction(meta["densities"][0])), float(Fraction(meta["densities"][-1]))
+    exact_lo, exact_hi = Fraction(meta["densities"][0]), Fraction(meta["densities"][-1])
+    lo, hi = float(exact_lo), float(exact_hi)
     top = max([r["stable_classes"] for r in mine] + [3])
     cmap = ListedColormap(plt.get_cmap("viridis", top + 1)(range(top + 1)))
     norm = BoundaryNorm([k - 0.5 for k in range(top + 2)], top + 1)
@@ -63,10 +72,10 @@ def slice_png(rows, meta, ca: Fraction, reference=None) -> bytes:
         ax.add_patch(Rectangle((edges[k], r["s_from"]), edges[k + 1] - edges[k], r["s_to"] - r["s_from"],
                                facecolor=cmap(norm(r["stable_classes"])), edgecolor="none"))
     ratios = np.geomspace(edges[0], edges[-1], 160)
-    densities = np.linspace(lo, hi, 161)
-    counts = _ix_counts(tuple(float(x) for x in ratios), tuple(float(s) for s in densities))
+    densities = tuple(exact_lo + (exact_hi - exact_lo) * Fraction(k, 160) for k in range(161))
+    counts = _ix_counts(tuple(float(x) for x in ratios), densities)
     if counts.max() > counts.min():
-        ax.contour(ratios, densities, counts, levels=[k + 0.5 for k in range(int(counts.min()), int(counts.max()))],
+        ax.contour(ratios, [float(s) for s in densities], counts, levels=[k + 0.5 for k in range(int(counts.min()), int(counts.max()))],
                    colors="white", linewidths=1.0)
     ax.plot([], [], color="white", label="Scheeffer IX tables (turned about c: section 1 × b/a)")
     for t in (reference or {}).get("thresholds", []):
