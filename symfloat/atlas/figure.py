@@ -75,8 +75,8 @@ def slice_png(rows, meta, ca: Fraction, reference=None) -> bytes:
     densities = tuple(exact_lo + (exact_hi - exact_lo) * Fraction(k, 160) for k in range(161))
     counts = _ix_counts(tuple(float(x) for x in ratios), densities)
     if counts.max() > counts.min():
-        ax.contour(ratios, [float(s) for s in densities], counts, levels=[k + 0.5 for k in range(int(counts.min()), int(counts.max()))],
-                   colors="white", linewidths=1.0)
+        levels = [k + 0.5 for k in range(int(counts.min()), int(counts.max()))]
+        ax.contour(ratios, [float(s) for s in densities], counts, levels=levels, colors="white", linewidths=1.0)
     ax.plot([], [], color="white", label="Scheeffer IX tables (turned about c: section 1 × b/a)")
     for t in (reference or {}).get("thresholds", []):
         if lo < t["density"] < hi:
