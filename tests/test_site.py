@@ -29,7 +29,7 @@ from symfloat.site import search, typeset  # noqa: E402
 from symfloat.site.build import MARKER, _sync  # noqa: E402
 from symfloat.site.edition import edition_page, fault_words, formula_anchor, mark_of, places  # noqa: E402
 from symfloat.site.errata_pages import errata_index, erratum_title, facet_pages  # noqa: E402
-from symfloat.site.difference import corrected_html  # noqa: E402
+from symfloat.site.difference import corrected_html, highlighted  # noqa: E402
 from symfloat.site.notebooks import staged_notebook  # noqa: E402
 from symfloat.site.records import load_records, slug  # noqa: E402
 
@@ -234,6 +234,22 @@ def test_corrections_are_formulas_or_words():
     assert "<math" not in words and "stable case" in words
     mixed = corrected_html(r"wenn wir für  $a, b, c$  jetzt  $c, d, e$  setzen")
     assert mixed.count("<math") == 2 and "setzen" in mixed
+
+
+def test_a_correction_marks_whole_words_and_the_changed_part_of_a_formula():
+    # Scheeffer X's heading (scheeffer-x-6): one word changed in the scan; letter by letter the diff marked "leichg"
+    heading = highlighted("Die Gewichtslagen eines schwimmenden Würfels.",
+                          r"\text{Die Gleichgewichtslagen eines schwimmenden Würfels.}")
+    assert heading == r"\text{Die \htmlClass{changed}{Gleichgewichtslagen} eines schwimmenden Würfels.}"
+    # a sentence around a formula: its words whole, the formula's letters one by one (scheeffer-118-1)
+    area = highlighted(r"wo das Zeichen  $\int$  auf die Fläche  $G H D = F$  auszudehnen ist.",
+                       r"\text{auf die Fläche } A G H C D = F")
+    assert area == r"\text{auf die Fläche } \htmlClass{changed}{A} G H \htmlClass{changed}{C} D = F"
+    # a display between $$ is a formula (graefe-s2-simpson-s-rule-1): the new denominator is marked
+    simpson = highlighted(r"$$I' = 2m \left\{ \frac{a+c}{2} + 2b \right\}.$$",
+                          r"I' = \frac{2m}{3} \left\{ \frac{a+c}{2} + 2b \right\}")
+    assert simpson == r"I' = \frac{2m}{\htmlClass{changed}{3}} \left\{ \frac{a+c}{2} + 2b \right\}"
+    assert highlighted("Nach 55 ist ferner", r"\text{Nach 55 ist ferner}") == r"\text{Nach 55 ist ferner}"
 
 
 def test_a_cut_quotation_in_a_notebook_is_widened_to_whole_formulas(records):

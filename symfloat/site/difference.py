@@ -1,8 +1,9 @@
 r"""What a correction changes: the corrected TeX with the parts that differ from the printed TeX marked,
 and the correction rendered (:func:`corrected_html`).
 
-The two formulas are cut into TeX tokens (a command, a number, a letter, any other character); the
-runs of the correction that the print does not have, or has otherwise (:class:`difflib.SequenceMatcher`
+The two formulas are cut into TeX tokens (a command, a number, a letter, any other character), their
+words (a ``\text{...}`` group, a printed excerpt's prose between its ``$...$`` or a printed sentence) into whole words: a
+changed letter marks its word, never a piece of it.  The of the correction that the print does not have, or has otherwise (:class:`difflib.SequenceMatcher`
 on the tokens, spaces ignored), are wrapped in ``\htmlClass{changed}{...}``, which KaTeX sets as a
 ``<span class="changed">`` (the stylesheet frames and shades it).  A run is marked only where it
 is a whole TeX group: balanced braces, no ``&``, ``\\``, ``\left``, ``\right``, ``\begin`` or
@@ -11,6 +12,8 @@ its argument.  Changed letters of a name (``\\operatorname{cotg}``) mark the who
 
 >>> highlighted(r"\frac{b}{2} = b s (1 - s)", r"\frac{b}{2} = 6 s (1 - s)")
 '\\frac{b}{2} = \\htmlClass{changed}{6} s (1 - s)'
+>>> highlighted(r"Nach $4$ ist das Gleichgewichtlage", r"\text{Nach 54 ist die Gleichgewichtslage}")
+'\\text{Nach \\htmlClass{changed}{54} ist \\htmlClass{changed}{die Gleichgewichtslage}}'
 """
 from __future__ import annotations
 
@@ -24,13 +27,39 @@ __all__ = ["highlighted", "corrected_html"]
 
 _WORDS = re.compile(r"[A-Za-zäöüß]{3,}[ ,]+[A-Za-zäöüß]{3,}")
 _TOKEN = re.compile(r"\\[A-Za-z]+\*?|\\.|\d+(?:[.,]\d+)?|\S")
+_WORD_TOKEN = re.compile(r"\\[A-Za-z]+\*?|\\.|\d+(?:[.,]\d+)?|[^\W\d_]+|\S")     # a word of letters is one token
+_TEXT_GROUP = re.compile(r"\\(?:text|textrm|textit|mbox)\{")
 _UNSAFE = re.compile(r"&|\\\\|\\(?:left|right|middle|begin|end)\b")
 _ARGUMENT = re.compile(r"\\[A-Za-z]+$")
 _NAMED = re.compile(r"\\(?:operatorname|mathrm)\{[^{}]*$")
 
 
-def _tokens(tex: str) -> list[tuple[int, int, str]]:
-    return [(m.start(), m.end(), m.group(0)) for m in _TOKEN.finditer(tex)]
+def _prose(tex: str) -> list[tuple[int, int]]:
+    """The spans of *tex* that are words: the contents of its text groups and, where it holds ``$...$``, what
+    lies outside them."""
+    spans = []
+    if "$" in tex:          # words, formula, words, ...: between the dollars (``$`` or ``$$``)
+        ends = [0] + [i for m in re.finditer(r"\$\$?", tex) for i in m.span()] + [len(tex)]
+        spans += list(zip(ends[::4], ends[1::4]))
+    for m in _TEXT_GROUP.finditer(tex):
+        depth, end = 1, m.end()
+        while end < len(tex) and depth:
+            depth += {"{": 1, "}": -1}.get(tex[end], 0)
+            end += 1
+        spans.append((m.end(), end - 1))
+    return spans
+
+
+def _tokens(tex: str, prose: list[tuple[int, int]] | None = None) -> list[tuple[int, int, str]]:
+    """The TeX tokens of *tex*, a word of its *prose* (default :func:`_prose`) one token."""
+    tokens, pos = [], 0
+    for a, b in sorted(_prose(tex) if prose is None else prose) + [(len(tex), len(tex))]:
+        if a < pos:
+            continue
+        tokens += [(m.start(), m.end(), m.group(0)) for m in _TOKEN.finditer(tex, pos, a)]
+        tokens += [(m.start(), m.end(), m.group(0)) for m in _WORD_TOKEN.finditer(tex, a, b)]
+        pos = b
+    return [t for t in tokens if t[2] != "$"]
 
 
 def _whole(run: str) -> bool:
@@ -44,12 +73,23 @@ def _whole(run: str) -> bool:
 
 def highlighted(printed: str, corrected: str) -> str:
     """*corrected* with the runs that differ from *printed* in ``\\htmlClass{changed}{...}``."""
-    old, new = _tokens(printed), _tokens(corrected)
-    matcher = SequenceMatcher(None, [t for _, _, t in old], [t for _, _, t in new], autojunk=False)
+    new = _tokens(corrected)
+    # a print without dollars or commands may be a formula or a sentence: read as the correction resembles more
+    readings = [_tokens(printed)] + ([_tokens(printed, [(0, len(printed))])] if not re.search(r"[$\\]", printed)
+                                     else [])
+    matcher = max((SequenceMatcher(None, [t for _, _, t in old], [t for _, _, t in new], autojunk=False)
+                   for old in readings), key=SequenceMatcher.ratio)
     out, pos = [], 0
     for op, _, _, j1, j2 in matcher.get_opcodes():
         if op not in ("replace", "insert") or j1 == j2:
             continue
+        if not _whole(corrected[new[j1][0]:new[j2 - 1][1]]):   # a run that reaches over a group's brace: within
+            while j1 < j2 and (new[j1][2] in "{}" or _TEXT_GROUP.match(new[j1][2] + "{")):
+                j1 += 1
+            while j1 < j2 and new[j2 - 1][2] in "{}":
+                j2 -= 1
+            if j1 == j2:
+                continue
         a, b = new[j1][0], new[j2 - 1][1]
         inside = _NAMED.search(corrected, 0, a)          # letters of a name: the whole name is marked
         if inside and "}" in corrected[b:]:

@@ -153,12 +153,11 @@ def correction_html(erratum: dict, printed_html: str) -> str:
     scan = apparatus(erratum["kind"]) == "transcription"
     shown, right = ("The transcription reads", "The original very probably printed") if scan else \
         ("Printed", "Corrected")
-    printed_tex = erratum["printed"].strip().strip("$")
     return (f'<div class="correction"><p class="reason"><strong>{erratum["kind"]}, {erratum["confidence"]} '
             f'confidence.</strong> {prose_html(reason_of(erratum))}</p>'
             f'<div class="printed"><span class="label">{shown}</span>{printed_html}</div>'
             f'<div class="corrected"><span class="label">{right}</span>'
-            f'{corrected_html(erratum["corrected"], printed_tex)}</div></div>')
+            f'{corrected_html(erratum["corrected"], erratum["printed"].strip())}</div></div>')
 
 
 def _witness_table(numeric) -> str:
