@@ -652,6 +652,12 @@ def _edition_marks(page) -> None:
     heights = page.evaluate("Array.from(document.querySelectorAll('.katex-html .mfrac')).slice(0, 50)"
                             ".map(e => e.getBoundingClientRect().height)")
     assert heights and max(heights) > 10, heights[:5]
+    # Scheeffer IX.C's table of the third domain, a corrected transcription: its case tables reach far below the
+    # line, so they are shaded whole and underlined at their foot, not crossed by the line's underline (symfloat.js)
+    tall = page.evaluate("""id => Array.from(document.querySelectorAll(`a.q[href="#${id}"] .katex-html > .base.tall`))
+                              .map(b => getComputedStyle(b).borderBottomStyle)""",
+                         formula_anchor("scheeffer-ix/table-third"))
+    assert len(tall) >= 2 and set(tall) == {"dashed"}, tall
 
 
 # A display formula shown (not in a closed note) that scrolls in its box without the shade that says so

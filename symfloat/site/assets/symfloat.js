@@ -35,3 +35,29 @@ window.addEventListener("resize", function () {
   clearTimeout(symfloatResized);
   symfloatResized = setTimeout(function () { symfloatFit(); }, 100);
 });
+
+/* A mark's shade and underline belong to its lines of text, whose height is the font's: a formula reaching a
+   quarter of an em or more below the text (a case table, a fraction of fractions) would stand out of the shade,
+   the underline drawn through its lower half.  Each such formula (KaTeX sets each run of a formula in a box of
+   its own height) is marked "tall": the stylesheet shades it whole, which hides the line's underline behind it,
+   and underlines it at its own foot.  All boxes are read before any class is written. */
+function symfloatTallFormulas() {
+  var marks = Array.prototype.filter.call(document.querySelectorAll("a.q"), function (mark) {
+    return mark.querySelector(".katex-html") && !mark.closest("details:not([open])");
+  });
+  var bases = [];
+  marks.forEach(function (mark) {
+    var lines = Array.prototype.slice.call(mark.getClientRects());
+    mark.querySelectorAll(".katex-html > .base").forEach(function (base) {
+      var box = base.getBoundingClientRect(), middle = (box.top + box.bottom) / 2;
+      var line = lines.reduce(function (best, r) {
+        return Math.abs((r.top + r.bottom) / 2 - middle) < Math.abs((best.top + best.bottom) / 2 - middle) ? r : best;
+      }, lines[0]);
+      var quarter = 0.25 * parseFloat(getComputedStyle(mark).fontSize);
+      bases.push([base, Boolean(line) && box.bottom > line.bottom + quarter]);
+    });
+  });
+  bases.forEach(function (pair) { pair[0].classList.toggle("tall", pair[1]); });
+}
+window.addEventListener("DOMContentLoaded", symfloatTallFormulas);
+if (document.fonts) { document.fonts.ready.then(symfloatTallFormulas); }     /* the formulas set in their own fonts */
