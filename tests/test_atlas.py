@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction as F
+from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
@@ -347,3 +348,52 @@ def test_the_code_stamp_changes_with_a_derivation_and_the_comparison(changed, mo
     after = stamp()
     monkeypatch.undo()
     assert stamp() == before != after
+
+
+def _same_atlas_rows(committed: list[dict], rebuilt: list[dict]) -> list[str]:
+    """Where two atlases differ: cells, intervals, positions, counts, checks and predictions alike, an
+    interval's ends within the sum of both error bounds, every other number to 1e-8 of itself or of 1 (float64
+    searches whose last bits follow the processor; a tilt's error bound of 6e-16 or 0 is the same)."""
+    def same(a, b) -> bool:
+        if isinstance(a, float) and isinstance(b, float):
+            return abs(a - b) <= 1e-8 * max(1.0, abs(a), abs(b))
+        if isinstance(a, dict) and isinstance(b, dict):
+            return a.keys() == b.keys() and all(same(a[k], b[k]) for k in a)
+        if isinstance(a, list) and isinstance(b, list):
+            return len(a) == len(b) and all(map(same, a, b))
+        return a == b
+
+    differences = []
+    if len(committed) != len(rebuilt):
+        differences.append(f"{len(committed)} rows committed, {len(rebuilt)} rebuilt")
+    for a, b in zip(committed, rebuilt):
+        where = f"b/a = {a['b_a_exact']}, c/a = {a['c_a_exact']}, interval {a['interval']}"
+        for end in ("s_from", "s_to"):
+            if abs(a[end] - b[end]) > a[f"{end}_error"] + b[f"{end}_error"] + 1e-15:
+                differences.append(f"{where}: {end} {a[end]!r} committed, {b[end]!r} rebuilt")
+        rest = [k for k in a if k not in ("s_from", "s_to", "s_from_error", "s_to_error")]
+        for key in rest:
+            if not same(a[key], b[key]):
+                differences.append(f"{where}: {key} differs")
+    return differences
+
+
+def test_rows_that_differ_are_named():
+    row = _row(2, 20, 0, 0.1, 0.4, [FACE_X])
+    moved = {**row, "s_to": row["s_to"] + 1e-6}
+    assert _same_atlas_rows([row], [dict(row)]) == []
+    assert _same_atlas_rows([row], [moved]) == ["b/a = 2, c/a = 20, interval 0: s_to 0.4 committed, 0.400001 rebuilt"]
+    assert _same_atlas_rows([row], [row, row]) == ["1 rows committed, 2 rebuilt"]
+    assert _same_atlas_rows([row], [{**row, "stable_classes": 3}]) == [
+        "b/a = 2, c/a = 20, interval 0: stable_classes differs"]
+
+
+@pytest.mark.slow      # every cell of the committed grid computed again: about five minutes in one process
+def test_the_committed_atlas_is_what_the_present_code_computes(tmp_path):
+    committed = Path(__file__).resolve().parents[1] / "docs" / "atlas" / "atlas.parquet"
+    rows, meta = read_atlas(committed)
+    build(tmp_path, [F(x) for x in meta["b_a"]], [F(x) for x in meta["c_a"]], [F(x) for x in meta["densities"]],
+          workers=0)
+    rebuilt, rebuilt_meta = read_atlas(tmp_path / "atlas.parquet")
+    assert {k: v for k, v in rebuilt_meta.items() if k != "code"} == {k: v for k, v in meta.items() if k != "code"}
+    assert _same_atlas_rows(rows, rebuilt) == []
