@@ -25,9 +25,11 @@ from symfloat.site.text import dollars_html, prose_html
 ROOT = Path(__file__).resolve().parents[1]
 
 # ASCII maths in words: a power, a relation typed as two characters, a root, degrees, a Greek letter's name,
-# an index, a product star between numbers or letters, an integral's name, the old tangent.
+# an index, a product star between numbers or letters, an integral's name, the old tangent; and maths in Unicode
+# letters (y⁴dy/√(bb-yy), AB·ce, π/4, a ≤ b): a sign of the integral, a root, a superscript or subscript digit, a
+# centred dot, a relation, a minus sign, a Greek letter.
 ASCII_MATHS = re.compile(r"\^|>=|<=|!=|\bsqrt|\bdeg\b|\b(?:%s)(?![a-z])|[A-Za-z]_\w|\w ?\* ?\w|\bint_|\btg\b"
-                         % "|".join(GREEK))
+                         r"|[∫∑∏√∂∞⁰¹²³⁴⁵⁶⁷⁸⁹₀₁₂₃₄₅₆₇₈₉·±×÷≤≥≠≈−]|[α-ωΑ-Ω]" % "|".join(GREEK))
 
 
 class _Words(HTMLParser):
@@ -70,7 +72,7 @@ def _katex():
 def test_the_check_sees_ascii_maths_and_passes_typeset_maths():
     # mutations: each ASCII form is caught; the same maths between dollars is not
     for ascii_text in ("at omega = 0", "sin^2 45 deg = 1/2", "(2s-1)(4s-3) >= 0", "tg phi_1 = sqrt(11/32)",
-                       "r tg = 1.6 * 11/32", "s <= 1/4"):
+                       "r tg = 1.6 * 11/32", "s <= 1/4", "∫y⁴dy/√(bb-yy)", "area AB·ce", "π/4", "s ≤ 1/4"):
         assert ascii_maths(ascii_text), ascii_text
     assert ascii_maths(r"at $\omega = 0$ ($\sin^2 45^\circ = \tfrac12$), so $(2s-1)(4s-3) \ge 0$: only "
                        r"$s \ge \tfrac34$; $\operatorname{tg}\varphi_1 = \sqrt{11/32}$, $1.6 \cdot 11/32$") == []

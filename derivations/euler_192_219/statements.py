@@ -267,8 +267,9 @@ d.quote("centroid-equation", "§215",
         reading=Eq((a + c) * b / Cc, c * b / (c / 3) - a * b / (a / 3)),
         erratum=Erratum(
             "transcription", "low", r"AB \cdot ce \cdot Cc = Bc \cdot ce \cdot \frac{1}{3} Bc - Ac \cdot ce \cdot \frac{1}{3} Ac",
-            "The balance of first moments about ef (area AB·ce times Cc equals the triangle eBf, area "
-            "Bc·ce, times Bc/3 minus eAf times Ac/3) is what the next printed line solves for Cc. Read with "
+            r"The balance of first moments about $ef$ (area $AB \cdot ce$ times $Cc$ equals the triangle $eBf$, "
+            r"area $Bc \cdot ce$, times $Bc/3$ minus $eAf$ times $Ac/3$) is what the next printed line solves for "
+            "$Cc$. Read with "
             "the colons as divisions the print is false (its right side vanishes). The colons are the "
             "multiplication dots of the print read as ':' and 'Cb' is the distance Cc (there is no point b "
             "in Tab. IX fig. 2); low, since the same Cb stands in §218.",
@@ -762,8 +763,8 @@ d.quote("ellipse-quadrant-area", "§219", r"elliptici ACE = $\frac{\pi}{4}$", re
              r"= (a^2/4)(D/2)$) uses the quadrant area $D/2 = \pi ab/4$. The factor $ab$ (or the $D/2$ Euler may have "
              "written) is missing from the transcription; what the print had cannot be told, low."),
             corrected_reading=(Aq, sp.pi * a * b / 4, Del / 2),
-                        objection="π/4 may be what Euler printed, the quadrant of a unit circle, or with the factor "
-                                  "ab written on the line before.",
+                        objection=r"$\pi/4$ may be what Euler printed, the quadrant of a unit circle, or with the "
+                                  "factor $ab$ written on the line before.",
                         answer=("The sentence names the area of the elliptic quadrant ACE, and the next member "
                                 r"$a^2D/8 = (a^2/4)(D/2)$ uses it as $\pi ab/4 = D/2$, so the factor is needed; "
                                 "whether the print or the scan lost it cannot be told: low stands.")),

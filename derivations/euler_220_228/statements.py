@@ -211,11 +211,12 @@ CIB = named("int-y3-dx-Bce", r"y^3\,dx_{Bce}", y ** 3 * sp.diff(xR, y),
 d.step("AB-by-parts", (CIA / 3, IAce), "integration", uses=("AB-Ace",),
        note="(1/3)∫y³dx along the curve (vertical strips of height y) is the strip integral")
 d.step("AB-by-parts-Bce", (-CIB / 3, IBce), "integration", uses=("AB-Bce",))
-BAR = ("The integral is ∫y⁴dy/√(bb-yy), as the two lines before it require: dx = dY + (a/b)y dy/√(bb-yy) "
-       "on Ace, so (1/3)∫y³dx carries (a/3b)∫y⁴dy/√(bb-yy); and only with the division does the sum "
-       "(2a/3b)∫y⁴dy/√ = πab³/8 give the Dbb/2 Euler concludes with. The transcription writes the same "
-       "integral three times as a product with √(bb-yy): a fraction bar (or Euler's ':') lost each time, "
-       "while §222 and §225 keep theirs; medium, since only the transcription is available.")
+BAR = (r"The integral is $\int y^4\,dy/\sqrt{bb-yy}$, as the two lines before it require: $dx = dY + "
+       r"(a/b)\,y\,dy/\sqrt{bb-yy}$ on $Ace$, so $(1/3)\int y^3\,dx$ carries $(a/3b)\int y^4\,dy/\sqrt{bb-yy}$; and "
+       r"only with the division does the sum $(2a/3b)\int y^4\,dy/\surd = \pi ab^3/8$ give the $Dbb/2$ Euler concludes "
+       r"with. The transcription writes the same integral three times as a product with $\sqrt{bb-yy}$: a fraction bar "
+       "(or Euler's ':') lost each time, while §222 and §225 keep theirs; medium, since only the transcription is "
+       "available.")
 d.quote("ellipse-at-Y0", "§223", r"posito enim $Y = 0$ curua nostra habet in ellipsis",
         reading=(sp.Matrix([sp.Subs((e - a) ** 2 / a ** 2 + y ** 2 / b ** 2, (p, q), (0, 0)) for e in x21]),
                  sp.Matrix([1, 1])),
@@ -230,11 +231,11 @@ d.quote("AB-Ace", "§223",
                         objection="The product form stands three times in this paragraph, the same way each time; a "
                                   "form that runs through several places is the print's or Euler's own, not a glyph "
                                   "the scan lost once.",
-                        answer="Euler's own result needs the quotient: with y⁴dy/√(bb-yy) the moment of AEB is "
-                               "(2a/3b)·3πb⁴/16 = πab³/8, and twice it is the Dbb/2 he concludes with; with the "
-                               "product it is not. The three places are one integral carried from Ace to Bce to "
-                               "their sum, so one lost sign of division (a bar or Euler's ':') in the scan's reading"
-                               " explains all three; §222 keeps its bars. The print cannot be seen, so medium "
+                        answer=r"Euler's own result needs the quotient: with $y^4\,dy/\sqrt{bb-yy}$ the moment of AEB "
+                               r"is $(2a/3b) \cdot 3\pi b^4/16 = \pi ab^3/8$, and twice it is the $Dbb/2$ he concludes "
+                               "with; with the product it is not. The three places are one integral carried from Ace "
+                               "to Bce to their sum, so one lost sign of division (a bar or Euler's ':') in the scan's "
+                               "reading explains all three; §222 keeps its bars. The print cannot be seen, so medium "
                                "stands."),
         note=claim("the portion Ace has the moment (1/3)∫y³dx = (1/3)∫y³dY + (a/3b)∫y⁴dy/√(bb-yy) about AB."))
 d.quote("AB-Bce", "§223", r"$= \frac{1}{3} \int y^3 dY - \frac{a}{3b} \int y^4 dy \sqrt{bb-yy}$",
@@ -244,7 +245,7 @@ d.quote("AB-Bce", "§223", r"$= \frac{1}{3} \int y^3 dY - \frac{a}{3b} \int y^4 
                         corrected_reading=(IBce, -CIB / 3, -Yd3 / 3 - a / (3 * b) * (-V4)),
                         objection="As for Ace: the same product form three times in one paragraph may be the "
                                   "print's.",
-                        answer="The same integral as Ace's, with the opposite sign; the conclusion Dbb/2 needs the "
+                        answer="The same integral as Ace's, with the opposite sign; the conclusion $Dbb/2$ needs the "
                                "quotient, so Euler had it. Medium, since the print cannot be seen."),
         note=claim("the portion Bce has the moment (1/3)∫y³dY - (a/3b)∫y⁴dy/√(bb-yy), integrals from b to 0 (read "
                    "as -∫_0^b)."))
@@ -254,9 +255,10 @@ d.quote("AB-AEB", "§223", r"$= \frac{2a}{3b} \int y^4 dy \sqrt{bb-yy}$, in quo 
                         corrected_reading=(IAEB, 2 * a / (3 * b) * V4),
                         objection="As for Ace: the product may be the print's; and 'in quo quantitas Y non inest' is"
                                   " true of either form.",
-                        answer="The remark on Y holds for both forms, but the next sentence's moment Dbb/2 = ef²D/8 "
-                               "of the whole figure is twice (2a/3b)∫y⁴dy/√(bb-yy) = πab³/8 (D = πab/2), and the "
-                               "product does not give it. Medium, since the print cannot be seen."),
+                        answer="The remark on Y holds for both forms, but the next sentence's moment $Dbb/2 = ef^2D/8$ "
+                               r"of the whole figure is twice $(2a/3b)\int y^4\,dy/\sqrt{bb-yy} = \pi ab^3/8$ ($D = "
+                               r"\pi ab/2$), and the product does not give it. Medium, since the print cannot be "
+                               "seen."),
         note=claim("AEB has the moment (2a/3b)∫y⁴dy/√(bb-yy) about AB, free of Y."))
 # the quantity §223 names in words (symfloat/model/vocabulary.json): the figure's moment about AB, the two
 # portions of the half AEB taken apart and AFB its mirror image, so that Y enters each portion's part
@@ -370,19 +372,19 @@ d.quote("Aa-Ace-product", "§224",
         erratum=Erratum(
             "transcription", "medium",
             r"= \int y \left(dY + \frac{ay\,dy}{b\sqrt{bb-yy}}\right)\left((a+Y)^2 - \frac{2a(a+Y)}{b}\sqrt{bb-yy} + aa - \frac{aayy}{bb}\right)",
-            "The moment of Ace about aAa is ∫y x² dx, with dx = dY + ay dy/(b√(bb-yy)) and x² = (a+Y)² - "
-            "2a(a+Y)√(bb-yy)/b + aa - aayy/bb: the whole four-term square multiplies y dx, as the six "
-            "integrals that follow show. As transcribed only (a+Y)² stands under the integral and three "
-            "loose terms in y follow; the vinculum (or brackets) over the second factor is lost.",
+            r"The moment of Ace about aAa is $\int y\,x^2\,dx$, with $dx = dY + ay\,dy/(b\sqrt{bb-yy})$ and $x^2 = "
+            r"(a+Y)^2 - 2a(a+Y)\sqrt{bb-yy}/b + aa - aayy/bb$: the whole four-term square multiplies $y\,dx$, as the "
+            "six integrals that follow show. As transcribed only $(a+Y)^2$ stands under the integral and three loose "
+            "terms in $y$ follow; the vinculum (or brackets) over the second factor is lost.",
             corrected_reading=(KAce, sp.Integral(y * (dYg + a * y / (b * R)) * X2L, (y, 0, b))),
                         objection="Euler's page may set the second factor on its own line without brackets, the line"
                                   " break (and perhaps a vinculum the scan cannot render) showing the product, so "
                                   "that the print is right in its own notation.",
-                        answer="That is the reading the erratum makes: the six integrals that follow multiply y dx "
-                               "by all four terms of x², so Euler meant the product, and the fault is the "
+                        answer=r"That is the reading the erratum makes: the six integrals that follow multiply $y\,dx$ "
+                               "by all four terms of $x^2$, so Euler meant the product, and the fault is the "
                                "transcription's, which flattens the two lines into a sum with three loose terms. "
-                               "Whether the print marked the factor with a vinculum or by its layout cannot be seen;"
-                               " medium."),
+                               "Whether the print marked the factor with a vinculum or by its layout cannot be seen; "
+                               "medium."),
         note=claim("the portion Ace has the moment ∫y(dY + ay dy/(b√(bb-yy)))·x² about aAa, "
                    "x² = (a+Y)² - 2a(a+Y)√(bb-yy)/b + aa - aayy/bb."))
 d.quote("Aa-Ace-expanded", "§224",
@@ -442,66 +444,66 @@ d.quote("Aa-AEB", "§225",
         erratum=Erratum(
             "transcription", "medium",
             r"aAa = -\frac{4a}{b} \int y\,dY (a+Y) \sqrt{bb-yy} + \ldots",
-            "The first integral is the sum of the terms ∓(2a/b)∫y dY (a+Y)√(bb-yy) of Ace and Bce (§224 "
-            "prints dY there), and only with dY does -(4a/b)∫y dY(a+Y)√ + (2a/b)∫yy dy(a+Y)²/√ equal "
-            "-(2a/b)∫y d.(a+Y)²√(bb-yy), the next member. The capital Y of 'dY' read as a small y, as "
-            "again in §226; a misprint of 1749 cannot be excluded, hence medium. The other members hold.",
+            r"The first integral is the sum of the terms $\mp(2a/b)\int y\,dY\,(a+Y)\sqrt{bb-yy}$ of Ace and Bce (§224 "
+            r"prints $dY$ there), and only with $dY$ does $-(4a/b)\int y\,dY\,(a+Y)\surd + (2a/b)\int "
+            r"yy\,dy\,(a+Y)^2/\surd$ equal $-(2a/b)\int y\,d.(a+Y)^2\sqrt{bb-yy}$, the next member. The capital Y of "
+            "'$dY$' read as a small y, as again in §226; a misprint of 1749 cannot be excluded, hence medium. The "
+            "other members hold.",
             corrected_reading=(KAEB, -4 * a / b * T2 + 2 * a / b * T4 + 2 * a ** 3 / b ** 3 * U2,
                                2 * a ** 3 / b ** 3 * U2 - 2 * a / b * G2, 2 * a ** 3 / b ** 3 * U2 + 2 * a / b * S2),
-                        objection="dy for dY stands also in §226; the same swap in two paragraphs of Euler's working"
-                                  " would be his own (or the print's), not the scan's.",
-                        answer="In both places the very next member, -(2a/b)∫y d.(a+Y)²√ here and -(2a/b)∫y d.(a+Y)√"
-                               " in §226, equals the line only with dY, and the values Euler goes on to use hold, so"
-                               " the swap is not carried on in his working. Y and y of one italic fount differ by "
-                               "size, a confusion of the scan as of a compositor; medium."),
+                        objection="$dy$ for $dY$ stands also in §226; the same swap in two paragraphs of Euler's "
+                                  "working would be his own (or the print's), not the scan's.",
+                        answer=r"In both places the very next member, $-(2a/b)\int y\,d.(a+Y)^2\surd$ here and "
+                               r"$-(2a/b)\int y\,d.(a+Y)\surd$ in §226, equals the line only with $dY$, and the values "
+                               "Euler goes on to use hold, so the swap is not carried on in his working. Y and y of "
+                               "one italic fount differ by size, a confusion of the scan as of a compositor; medium."),
         note=claim("adding the two portions, AEB has the moment -(4a/b)∫y dY(a+Y)√ + (2a/b)∫yy dy(a+Y)²/√ "
                    "+ (2a³/b³)∫yy dy√ = (2a³/b³)∫yy dy√ - (2a/b)∫y d.(a+Y)²√ = (2a³/b³)∫yy dy√ "
                    "+ (2a/b)∫(a+Y)²dy√ about aAa (√ = √(bb-yy), integrals from 0 to b)."))
 d.quote("boundary-term", "§225", r"$y(a+Y)^2 V(bb-yy)$ fit $= 0;$ tam si $y=0,$ quam si $y=b.$",
         reading=(sp.Matrix([sp.Subs(F2, y, 0), sp.Subs(F2, y, b)]), sp.Matrix([0, 0])),
         note=claim("the integrated part y(a+Y)²√(bb-yy) vanishes at y = 0 and at y = b."))
-DCUBE = ("D³ cannot stand in an area or a length (the integral ∫yy dy√(bb-yy) = πb⁴/16 is of the fourth "
-         "dimension, b³D/8a with D = πab/2); §226 prints the same value as b³D/8a, and a²D/4 + ... follows. "
-         "The transcription turned D into D³ three times in this paragraph (a mark after D read as an "
-         "exponent); high.")
+DCUBE = (r"$D^3$ cannot stand in an area or a length (the integral $\int yy\,dy\sqrt{bb-yy} = \pi b^4/16$ is of the "
+         r"fourth dimension, $b^3D/8a$ with $D = \pi ab/2$); §226 prints the same value as $b^3D/8a$, and $a^2D/4 + "
+         r"\ldots$ follows. The transcription turned $D$ into $D^3$ three times in this paragraph (a mark after D read "
+         "as an exponent); high.")
 d.quote("U2-value", "§225",
         r"$\int yy dy V(bb-yy) = \frac{bb}{4} \int \frac{yydy}{\sqrt{bb-yy}} = \frac{b^3 D^3}{8a},$",
         reading=(U2, b * b / 4 * V2, b ** 3 * D ** 3 / (8 * a)),
         erratum=Erratum("transcription", "high",
                         r"\int yy dy \sqrt{bb-yy} = \frac{bb}{4} \int \frac{yydy}{\sqrt{bb-yy}} = \frac{b^3 D}{8a}",
                         DCUBE, corrected_reading=(U2, b * b / 4 * V2, b ** 3 * D / (8 * a)),
-                        objection="D³ may be the print's: a compositor's stray superscript, or a mark of Euler's "
+                        objection="$D^3$ may be the print's: a compositor's stray superscript, or a mark of Euler's "
                                   "after D.",
-                        answer="A compositor's slip does not recur, and D³ stands in three formulas of this "
-                               "paragraph; §226 prints the same value as b³D/8a and starts its moment about EF from "
-                               "aaD/2, twice the corrected aaD/4, so in Euler's working D carried no exponent. A "
+                        answer="A compositor's slip does not recur, and $D^3$ stands in three formulas of this "
+                               "paragraph; §226 prints the same value as $b^3D/8a$ and starts its moment about EF from "
+                               "$aaD/2$, twice the corrected $aaD/4$, so in Euler's working $D$ carried no exponent. A "
                                "mark after D read as an exponent is the scan's; high."),
         note=claim("from y = 0 to b, ∫yy dy√(bb-yy) = (bb/4)∫yy dy/√(bb-yy) = b³D/8a (by §222)."))
 d.quote("Aa-AEB-value", "§225", r"$= \frac{aaD^3}{4} + \frac{2a}{b} \int (a+Y)^2 dy V(bb-yy);$",
         reading=(KAEB, a * a * D ** 3 / 4 + 2 * a / b * S2),
         erratum=Erratum("transcription", "high", r"= \frac{aaD}{4} + \frac{2a}{b} \int (a+Y)^2 dy \sqrt{bb-yy}",
                         DCUBE, corrected_reading=(KAEB, a * a * D / 4 + 2 * a / b * S2),
-                        objection="As for the value of ∫yy dy√(bb-yy): D³ may be the print's.",
-                        answer="aaD/4 is (2a³/b³)·b³D/8a, the value §226 prints without the cube, and §226 starts "
-                               "its moment about EF from aaD/2, twice this; D³ in three formulas of one paragraph is"
-                               " the scan's reading of one mark; high."),
+                        objection=r"As for the value of $\int yy\,dy\sqrt{bb-yy}$: $D^3$ may be the print's.",
+                        answer=r"$aaD/4$ is $(2a^3/b^3) \cdot b^3D/8a$, the value §226 prints without the cube, and "
+                               "§226 starts its moment about EF from $aaD/2$, twice this; $D^3$ in three formulas of "
+                               "one paragraph is the scan's reading of one mark; high."),
         note=claim("AEB has the moment a²D/4 + (2a/b)∫(a+Y)²dy√(bb-yy) about aAa."))
 d.quote("Aa-whole", "§225", r"$= \frac{aaD^3}{2} + \frac{2a}{b} \int (a+Y)^2 dy V(bb-yy),$",
         reading=(Kwhole, a * a * D ** 3 / 2 + 2 * a / b * S2),
         erratum=Erratum(
             "misprint", "medium", r"= \frac{aaD}{2} + \frac{4a}{b} \int (a+Y)^2 dy \sqrt{bb-yy}",
-            "The whole figure has twice the moment of AEB, a²D/2 + (4a/b)∫(a+Y)²dy√(bb-yy): the first term "
-            "is doubled in the print, the second is not. D³ for D is the transcription's (as above); the "
-            "2a/b is repeated in the moment about EF of §226, so it stood in the print (or in Euler's "
-            "manuscript). §227's result a²D/2 + c²D/8 needs 4a/b, so the slip did not enter the "
-            "calculation; medium.",
+            r"The whole figure has twice the moment of AEB, $a^2D/2 + (4a/b)\int (a+Y)^2\,dy\sqrt{bb-yy}$: the first "
+            "term is doubled in the print, the second is not. $D^3$ for $D$ is the transcription's (as above); the "
+            "$2a/b$ is repeated in the moment about EF of §226, so it stood in the print (or in Euler's manuscript). "
+            "§227's result $a^2D/2 + c^2D/8$ needs $4a/b$, so the slip did not enter the calculation; medium.",
             corrected_reading=(Kwhole, a * a * D / 2 + 4 * a / b * S2),
-                        objection="The 2a/b is repeated in §226, so it runs through two places of Euler's working: a"
-                                  " fault of his calculation rather than a misprint.",
-                        answer="It is not carried on: §227's a²D/2 + c²D/8 follows only from 4a/b (with 2a/b and the"
-                               " rest corrected the moment about EF would be (ac - a²)D/2, negative for c < a), so "
-                               "Euler computed with the right factor and the 2a/b is a slip in writing the formula "
-                               "out, restated in §226; a fault of the original, the author's pen or the "
+                        objection="The $2a/b$ is repeated in §226, so it runs through two places of Euler's working: a "
+                                  "fault of his calculation rather than a misprint.",
+                        answer="It is not carried on: §227's $a^2D/2 + c^2D/8$ follows only from $4a/b$ (with $2a/b$ "
+                               "and the rest corrected the moment about EF would be $(ac - a^2)D/2$, negative for $c < "
+                               "a$), so Euler computed with the right factor and the $2a/b$ is a slip in writing the "
+                               "formula out, restated in §226; a fault of the original, the author's pen or the "
                                "compositor's, hence misprint at medium."),
         note=claim("with the half AFB equal to AEB, the whole figure has the moment a²D/2 + (2a/b)∫(a+Y)²dy√ "
                    "about aAa."))
@@ -560,15 +562,15 @@ d.quote("DAC-definition", "§226", r"$DAC = \int y dx$",
         reading=(D * AC, CA - CB),
         erratum=Erratum(
             "transcription", "low", r"D \cdot AC = \int xy\,dx",
-            "D·AC is the moment of AEB about aAa, ∫xy dx (the strip y dx at the distance x); ∫y dx over AEB "
-            "is the area D itself (§222), which would make AC = 1. The next member, (2a/b)∫yy dy(a+Y)/√ - "
-            "..., is the moment. An x lost in the transcription ('yx dx'), or omitted by the printer: "
-            "low.",
+            r"$D \cdot AC$ is the moment of AEB about aAa, $\int xy\,dx$ (the strip $y\,dx$ at the distance $x$); "
+            r"$\int y\,dx$ over AEB is the area $D$ itself (§222), which would make $AC = 1$. The next member, "
+            r"$(2a/b)\int yy\,dy\,(a+Y)/\surd - \ldots$, is the moment. An x lost in the transcription ('$yx\,dx$'), "
+            "or omitted by the printer: low.",
             corrected_reading=(D * AC, XY),
-                        objection="The x may have been lost in the print: a compositor dropping one letter of 'xy "
-                                  "dx' (or 'yx dx'), which the scan then read faithfully.",
-                        answer="The next member is the moment, so Euler meant ∫xy dx; but the loss of a whole letter"
-                               " is not a glyph the scan confuses, and nothing in the text tells the print's "
+                        objection="The x may have been lost in the print: a compositor dropping one letter of "
+                                  r"'$xy\,dx$' (or '$yx\,dx$'), which the scan then read faithfully.",
+                        answer=r"The next member is the moment, so Euler meant $\int xy\,dx$; but the loss of a whole "
+                               "letter is not a glyph the scan confuses, and nothing in the text tells the print's "
                                "omission from the scan's. Lowered to low."),
         note=claim("D·AC is the integral ∫y dx (as printed) extended over AEB."))
 d.quote("DAC", "§226",
@@ -578,15 +580,16 @@ d.quote("DAC", "§226",
                  2 * a / b * S1),
         erratum=Erratum(
             "transcription", "medium", r"DAC = \frac{2a}{b} \int \frac{y^2 dy(a+Y)}{\sqrt{bb-yy}} - \frac{2a}{b} \int y\,dY \sqrt{bb-yy} = \ldots",
-            "x dx = d(x²/2) on both branches gives (2a/b)∫yy dy(a+Y)/√(bb-yy) - (2a/b)∫y dY√(bb-yy), and "
-            "only so is it -(2a/b)∫y d.(a+Y)√(bb-yy), the next member (d.(a+Y)√ = dY√ - (a+Y)y dy/√). "
-            "dY read as dy, as in §225; the other members hold.",
+            r"$x\,dx = d(x^2/2)$ on both branches gives $(2a/b)\int yy\,dy\,(a+Y)/\sqrt{bb-yy} - (2a/b)\int "
+            r"y\,dY\sqrt{bb-yy}$, and only so is it $-(2a/b)\int y\,d.(a+Y)\sqrt{bb-yy}$, the next member "
+            r"($d.(a+Y)\surd = dY\surd - (a+Y)\,y\,dy/\surd$). $dY$ read as $dy$, as in §225; the other members hold.",
             corrected_reading=(D * AC, 2 * a / b * W1 - 2 * a / b * Z1, -2 * a / b * G1, 2 * a / b * S1),
-                        objection="As in §225: dy for dY in two paragraphs may be the same slip of Euler's or of the"
-                                  " print, not the scan's.",
-                        answer="The next member -(2a/b)∫y d.(a+Y)√(bb-yy) expands to dY√ - (a+Y)y dy/√ and equals "
-                               "the line only with dY, and AC = a - c/4 in §227 follows; the slip is not carried on."
-                               " The Y/y confusion of the scan is the likelier; medium."),
+                        objection="As in §225: $dy$ for $dY$ in two paragraphs may be the same slip of Euler's or of "
+                                  "the print, not the scan's.",
+                        answer=r"The next member $-(2a/b)\int y\,d.(a+Y)\sqrt{bb-yy}$ expands to $dY\surd - "
+                               r"(a+Y)\,y\,dy/\surd$ and equals the line only with $dY$, and $AC = a - c/4$ in §227 "
+                               "follows; the slip is not carried on. The Y/y confusion of the scan is the likelier; "
+                               "medium."),
         note=claim("D·AC = (2a/b)∫y²dy(a+Y)/√ - (2a/b)∫y dY√ = -(2a/b)∫y d.(a+Y)√ = (2a/b)∫(a+Y)dy√ "
                    "(√ = √(bb-yy), from 0 to b)."))
 d.quote("AC", "§226", r"$AC = \frac{2a}{bD} \int (a+Y) dy V(bb-yy).$", reading=(AC, 2 * a / (b * D) * S1),
@@ -597,17 +600,17 @@ d.quote("moment-EF", "§226",
         erratum=Erratum(
             "misprint", "medium",
             r"= \frac{aaD}{2} + \frac{4a}{b} \int (a+Y)^2 dy \sqrt{bb-yy} - \frac{8aa}{bbD} \left(\int (a+Y) dy \sqrt{bb-yy}\right)^2",
-            "The moment about aAa less 2D·AC² (area 2D, §217) with AC = (2a/bD)∫(a+Y)dy√ is "
-            "a²D/2 + (4a/b)∫(a+Y)²dy√ - (8a²/b²D)(∫(a+Y)dy√)². The print repeats the 2a/b of §225 and has "
-            "aa/bbD without the square of the integral (the last term then is not even a moment); the "
-            "square and the 8 may be the transcription's losses, the 2a/b is the print's. §227's value "
-            "a²D/2 + c²D/8 follows only from the corrected formula; medium.",
+            r"The moment about aAa less $2D \cdot AC^2$ (area $2D$, §217) with $AC = (2a/bD)\int (a+Y)\,dy\surd$ is "
+            r"$a^2D/2 + (4a/b)\int (a+Y)^2\,dy\surd - (8a^2/b^2D)(\int (a+Y)\,dy\surd)^2$. The print repeats the "
+            "$2a/b$ of §225 and has $aa/bbD$ without the square of the integral (the last term then is not even a "
+            "moment); the square and the 8 may be the transcription's losses, the $2a/b$ is the print's. §227's value "
+            "$a^2D/2 + c^2D/8$ follows only from the corrected formula; medium.",
             corrected_reading=(KEF, a * a * D / 2 + 4 * a / b * S2 - 8 * a * a / (b * b * D) * S1 ** 2),
-                        objection="The correction needs three changes (4a/b, the 8, the square); booked as one "
+                        objection="The correction needs three changes ($4a/b$, the 8, the square); booked as one "
                                   "misprint it claims more than one slip of the compositor.",
-                        answer="The kind rests on the 2a/b, which repeats §225's and so stood in the print; the 8 "
-                               "and the square are needed whoever lost them, since without the square the last term "
-                               "is not a moment and §227's a²D/2 + c²D/8 follows only from the corrected formula. "
+                        answer="The kind rests on the $2a/b$, which repeats §225's and so stood in the print; the 8 "
+                               "and the square are needed whoever lost them, since without the square the last term is "
+                               "not a moment and §227's $a^2D/2 + c^2D/8$ follows only from the corrected formula. "
                                "Which of the three the scan lost cannot be told; medium."),
         note=claim("about the latitudinal axis EF through C the whole figure has the moment "
                    "a²D/2 + (2a/b)∫(a+Y)²dy√ - (aa/bbD)(∫(a+Y)dy√)."))
@@ -656,55 +659,55 @@ d.quote("curve-c", "§227", r"seu $x = a - \frac{cyy}{bb} + \frac{c}{b} V(bb-yy)
         reading=(xRc, a - c * y ** 2 / b ** 2 + c / b * R),
         erratum=Erratum(
             "misprint", "medium", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
-            "Y = -cyy/bb put into x = a + Y ± a√(1 - yy/bb) of §221 gives a - cyy/bb ± (a/b)√(bb-yy); with "
-            "(c/b)√ the curve would not end at B (x = a + c at y = 0, not 2a). The same c/b, with the same + for "
-            "the ±, stands in §228's 'aequatio assumta' ('curve-c-again'): a fault repeated alike at two places a "
-            "paragraph apart is the print's, not a confusion of the scan (the consistency criterion of "
-            "docs/errata-kinds.md). Medium: the scan confuses a and c beside it ('Oc = a').",
+            r"$Y = -cyy/bb$ put into $x = a + Y \pm a\sqrt{1 - yy/bb}$ of §221 gives $a - cyy/bb \pm "
+            r"(a/b)\sqrt{bb-yy}$; with $(c/b)\surd$ the curve would not end at B ($x = a + c$ at $y = 0$, not $2a$). "
+            r"The same $c/b$, with the same $+$ for the $\pm$, stands in §228's 'aequatio assumta' ('curve-c-again'): "
+            "a fault repeated alike at two places a paragraph apart is the print's, not a confusion of the scan (the "
+            "consistency criterion of docs/errata-kinds.md). Medium: the scan confuses a and c beside it ('$Oc = a$').",
             corrected_reading=as_printed(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
                                                       a - c * y ** 2 / b ** 2 + a / b * R]))),
-                        objection="The scan confuses a and c in the very next clause ('Oc = a' for Oc = c), so c/b "
-                                  "may be the same confusion of the scan, and §228's line, damaged at its head ('a =' "
-                                  "for 'x ='), may repeat it by the same confusion.",
+                        objection="The scan confuses a and c in the very next clause ('$Oc = a$' for $Oc = c$), so "
+                                  "$c/b$ may be the same confusion of the scan, and §228's line, damaged at its head "
+                                  "('$a =$' for '$x =$'), may repeat it by the same confusion.",
                         answer="A confusion of glyphs does not set the same wrong letter at the same place of two "
-                               "lines a paragraph apart and shorten the ± to + at both; §228 calls the line the "
-                               "'aequatio assumta', the equation of §227 set again. Euler's working does not use "
-                               "it (x = a + Y ± a√(1 - yy/bb) of §221 with Y = -cyy/bb gives his ∫(a+Y)²dy√ and "
-                               "AC = a - c/4), so the slip is the print's: misprint (was the scan's, low). The a/c "
-                               "confusion beside it keeps the cause at medium."),
+                               r"lines a paragraph apart and shorten the $\pm$ to $+$ at both; §228 calls the line the "
+                               "'aequatio assumta', the equation of §227 set again. Euler's working does not use it "
+                               r"($x = a + Y \pm a\sqrt{1 - yy/bb}$ of §221 with $Y = -cyy/bb$ gives his $\int "
+                               r"(a+Y)^2\,dy\surd$ and $AC = a - c/4$), so the slip is the print's: misprint (was the "
+                               "scan's, low). The a/c confusion beside it keeps the cause at medium."),
         note=claim("with Y = -cyy/bb the curve is x = a - cyy/bb + (c/b)√(bb-yy); read as the branch Bce."))
 d.quote("Oc", "§227", r"ex qua fit $Oc = a$ vti assumsumus",
         reading=(sp.Subs(a - xLc, y, b), a),
         erratum=Erratum(
             "transcription", "medium", r"Oc = c",
-            "At y = b both branches give x = a - c, so Ac = a - c and Oc = AO - Ac = c, 'as we assumed' "
-            "(§220, §221, and §232: 'Ac = a - c et Oc = c'). a for c, the confusion of the line before.",
+            "At $y = b$ both branches give $x = a - c$, so $Ac = a - c$ and $Oc = AO - Ac = c$, 'as we assumed' (§220, "
+            "§221, and §232: '$Ac = a - c$ et $Oc = c$'). a for c, the confusion of the line before.",
             corrected_reading=(sp.Subs(a - xLc, y, b), c),
-                        objection="'Oc = a' may be the print's (a compositor's a for c), or Oc may name another "
+                        objection="'$Oc = a$' may be the print's (a compositor's a for c), or Oc may name another "
                                   "segment of the lost figure.",
-                        answer="§221 closes with the same words, 'quo fiat interuallum Oc = c uti assumimus', and "
-                               "§232 has 'Oc = c'; at y = b the curve gives Ac = a - c, so Oc = c. One letter, "
-                               "printed right at the two other places, is the scan's by the criteria; medium, since "
-                               "a single a for c may as well be the compositor's and the print cannot be seen."),
+                        answer="§221 closes with the same words, 'quo fiat interuallum $Oc = c$ uti assumimus', and "
+                               "§232 has '$Oc = c$'; at $y = b$ the curve gives $Ac = a - c$, so $Oc = c$. One letter, "
+                               "printed right at the two other places, is the scan's by the criteria; medium, since a "
+                               "single a for c may as well be the compositor's and the print cannot be seen."),
         note=claim("the breadth ef stands at Oc = c from the middle O, as assumed."))
 d.quote("S2c-expanded", "§227",
         "$\\int (a+Y)^2 dy V(bb-yy) = a^2 \\int dy V(bb-yy) - \\frac{2ac}{bb} \\int yy dy$\n "
         "$V(bb-yy) + \\frac{cc}{b^4} \\int y^4 dy V(bb-yy)$",
         reading=(S2c, a * a * U0 - 2 * a * c / b ** 2 * U2 + c * c / b ** 4 * U4),
         note=claim("∫(a+Y)²dy√ = a²∫dy√ - (2ac/bb)∫yy dy√ + (cc/b⁴)∫y⁴dy√ for Y = -cyy/bb."))
-SHIFT = ("From y = 0 to b: ∫dy√(bb-yy) = πb²/4 = bD/2a, ∫yy dy√ = πb⁴/16 = b³D/8a, ∫y⁴dy√ = πb⁶/32 = "
-         "b⁵D/16a (D = πab/2; the first two as printed in §226). The line that follows, abD/2 - bcD/4 + "
-         "bccD/16a, is made of exactly these values, so Euler had them. The print gives b³D/8a, b⁵D/16a, "
-         "b⁹D/16a: each value moved one integral on, consistently through the three equations of the line, "
-         "and the last filled with a power that belongs to none. A scan misreads glyphs; it does not move "
-         "values from one equation to the next: the consistency criterion of docs/errata-kinds.md makes it the "
-         "print's (the compositor setting the values against the wrong integrals). Medium, since the printed "
+SHIFT = (r"From $y = 0$ to $b$: $\int dy\sqrt{bb-yy} = \pi b^2/4 = bD/2a$, $\int yy\,dy\surd = \pi b^4/16 = b^3D/8a$, "
+         r"$\int y^4\,dy\surd = \pi b^6/32 = b^5D/16a$ ($D = \pi ab/2$; the first two as printed in §226). The line "
+         "that follows, $abD/2 - bcD/4 + bccD/16a$, is made of exactly these values, so Euler had them. The print "
+         "gives $b^3D/8a$, $b^5D/16a$, $b^9D/16a$: each value moved one integral on, consistently through the three "
+         "equations of the line, and the last filled with a power that belongs to none. A scan misreads glyphs; it "
+         "does not move values from one equation to the next: the consistency criterion of docs/errata-kinds.md makes "
+         "it the print's (the compositor setting the values against the wrong integrals). Medium, since the printed "
          "page cannot be seen (was the scan's, low).")
 SHIFT_OBJECTION = ("A scan can lose a line (a fault of the transcription by the criteria): with the first value "
                    "dropped, the others would each move one place on.")
-SHIFT_ANSWER = ("A lost value leaves an integral without its value; here all three equations stand, each with a "
-                "value of the right form for its neighbour, and the last with b⁹D/16a, which no line of the page "
-                "holds. The shift is the print's; the page cannot be seen, hence medium.")
+SHIFT_ANSWER = ("A lost value leaves an integral without its value; here all three equations stand, each with a value "
+                "of the right form for its neighbour, and the last with $b^9D/16a$, which no line of the page holds. "
+                "The shift is the print's; the page cannot be seen, hence medium.")
 d.quote("U0-value", "§227", r"Verum est $\int dy V(bb-yy) = \frac{b^3 D}{8a}$",
         reading=(U0, b ** 3 * D / (8 * a)),
         erratum=Erratum("misprint", "medium", r"\int dy \sqrt{bb-yy} = \frac{bD}{2a}", SHIFT,
@@ -715,15 +718,16 @@ d.quote("U2-value-c", "§227", r"$\int yy dy V(bb-yy) = \frac{b^5 D}{16a}$", rea
         erratum=Erratum("misprint", "medium", r"\int yy dy \sqrt{bb-yy} = \frac{b^3 D}{8a}", SHIFT,
                         corrected_reading=(U2, b ** 3 * D / (8 * a)),
                         objection=SHIFT_OBJECTION,
-                        answer="abD/2 - bcD/4 + bccD/16a uses b³D/8a for this integral, as §226 prints it; the value "
-                               "printed here is the next integral's, the shift of the line. " + SHIFT_ANSWER),
+                        answer="$abD/2 - bcD/4 + bccD/16a$ uses $b^3D/8a$ for this integral, as §226 prints it; the "
+                               "value printed here is the next integral's, the shift of the line. " + SHIFT_ANSWER),
         note=claim("∫yy dy√(bb-yy) = b⁵D/16a (as printed)."))
 d.quote("U4-value", "§227", r"$\int y^4 dy V(bb-yy) = \frac{b^9 D}{16a}$", reading=(U4, b ** 9 * D / (16 * a)),
         erratum=Erratum("misprint", "medium", r"\int y^4 dy \sqrt{bb-yy} = \frac{b^5 D}{16a}", SHIFT,
                         corrected_reading=(U4, b ** 5 * D / (16 * a)),
-                        objection=SHIFT_OBJECTION + " And b⁹ may be a 5 the scan read as 9.",
-                        answer="The term bccD/16a of the next line is (cc/b⁴)·b⁵D/16a, so Euler had b⁵; a 9 for a 5 "
-                               "would leave the value right in place, not shifted with its neighbours. "
+                        objection=SHIFT_OBJECTION + " And $b^9$ may be a 5 the scan read as 9.",
+                        answer=r"The term $bccD/16a$ of the next line is $(cc/b^4) \cdot b^5D/16a$, so Euler had "
+                               "$b^5$; a 9 for a 5 would leave the value right in place, not shifted with its "
+                               "neighbours. "
                                + SHIFT_ANSWER),
         note=claim("∫y⁴dy√(bb-yy) = b⁹D/16a (as printed)."))
 d.quote("S2c-value", "§227",
@@ -741,15 +745,15 @@ d.quote("moment-EF-c", "§227",
         reading=(KEFc, a * a * D / 2 + c * c * D / 8, (2 * a) ** 2 * D / 8 + c * c ** 2 * D / 128),
         erratum=Erratum(
             "transcription", "low", r"= \frac{AB^2 D}{8} + \frac{ccD}{8}",
-            "a²D/2 + c²D/8 (the member before, which holds) with AB = 2a is AB²D/8 + c²D/8; c·c²D/128 is "
-            "neither. The 128 belongs to §228's AB²D/128 (c = a/2); what the print had after '+' cannot be "
-            "told from the transcription, low.",
+            r"$a^2D/2 + c^2D/8$ (the member before, which holds) with $AB = 2a$ is $AB^2D/8 + c^2D/8$; $c \cdot "
+            "c^2D/128$ is neither. The 128 belongs to §228's $AB^2D/128$ ($c = a/2$); what the print had after '$+$' "
+            "cannot be told from the transcription, low.",
             corrected_reading=as_printed(lambda: (KEFc, a * a * D / 2 + c * c * D / 8, (2 * a) ** 2 * D / 8 + c * c * D / 8)),
-                        objection="The print may have had '+ ccD/128' or another form Euler meant for a special "
+                        objection="The print may have had '$+ ccD/128$' or another form Euler meant for a special "
                                   "case, anticipating §228.",
-                        answer="The member before, a²D/2 + c²D/8, holds and with AB = 2a is AB²D/8 + c²D/8; any "
-                               "other last term contradicts it for general c, and §228 sets c = a/2 only afterwards."
-                               " What the print had cannot be told, so low."),
+                        answer="The member before, $a^2D/2 + c^2D/8$, holds and with $AB = 2a$ is $AB^2D/8 + c^2D/8$; "
+                               "any other last term contradicts it for general $c$, and §228 sets $c = a/2$ only "
+                               "afterwards. What the print had cannot be told, so low."),
         note=claim("the whole figure AEBF has the moment a²D/2 + c²D/8 = AB²D/8 + ... about EF."))
 
 # ================================================================ §228: growth, the limit c <= a/2, c = a/2
@@ -775,33 +779,33 @@ d.quote("middle-named-C", "§228", r"a punto axis AB medio C distet",
              "+ x_B)/2$ at $y = 0$. The moment $AB^2 D/8 + ccD/8$ grows with $Oc = c$, the distance of ef from O. O "
              "and C are alike in the scan; medium."),
             corrected_reading=(sp.Subs((xLc + xRc) / 2, y, 0), a),
-                        objection="Read with C the sentence is still true: ef stands at 3c/4 from the centroid C (AC"
-                                  " = a - c/4, Ac = a - c), and the moment a²D/2 + c²D/8 grows with that distance "
-                                  "too; 'medio' may loosely mean the centre of the figure.",
+                        objection="Read with C the sentence is still true: ef stands at $3c/4$ from the centroid C "
+                                  "($AC = a - c/4$, $Ac = a - c$), and the moment $a^2D/2 + c^2D/8$ grows with that "
+                                  "distance too; 'medio' may loosely mean the centre of the figure.",
                         answer="The growth holds either way, but 'punctum axis AB medium' is Euler's own name for O "
-                               "(§220 'O puncto axis longitudinalis medio', §232 'punctum axis longitudinalis medium"
-                               " O'), and this paragraph ends 'a medio punto longitudinis O'; C is not the midpoint "
-                               "for c > 0. O and C are alike in the scan; the print's slip is the one alternative "
-                               "left, medium."),
+                               "(§220 'O puncto axis longitudinalis medio', §232 'punctum axis longitudinalis medium "
+                               "O'), and this paragraph ends 'a medio punto longitudinis O'; C is not the midpoint for "
+                               "$c > 0$. O and C are alike in the scan; the print's slip is the one alternative left, "
+                               "medium."),
         note=claim("the middle of the axis AB, from which the distance of ef is counted, is O (AO = a)."))
 d.quote("curve-c-again", "§228", r"$a = a - \frac{cyy}{bb} + \frac{c}{b}$ $V(bb-yy)$",
         reading=Eq(a, a - c * y ** 2 / b ** 2 + c / b * R),
         erratum=Erratum(
             "misprint", "medium", r"x = a - \frac{cyy}{bb} \pm \frac{a}{b}\sqrt{bb-yy}",
-            "The assumed equation is the curve of §227, x = a - cyy/bb ± (a/b)√(bb-yy); the print repeats the "
-            "c/b and the + of §227, the fault booked there ('curve-c'), which runs alike through both places: the "
-            "print's. The a for x at the head of the line is a second, smaller fault booked with it, the scan's "
-            "(the curve's abscissa is x throughout).",
+            r"The assumed equation is the curve of §227, $x = a - cyy/bb \pm (a/b)\sqrt{bb-yy}$; the print repeats the "
+            "$c/b$ and the $+$ of §227, the fault booked there ('curve-c'), which runs alike through both places: the "
+            "print's. The a for x at the head of the line is a second, smaller fault booked with it, the scan's (the "
+            "curve's abscissa is $x$ throughout).",
             corrected_reading=as_printed(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
                                                       a - c * y ** 2 / b ** 2 + a / b * R]))),
                         same_as="euler-220-228/curve-c",
-                        objection="The line differs from the right one in three letters ('a =' for 'x =', c for a, "
-                                  "+ for ±), which no single slip explains; the scan, which confuses a and c in "
+                        objection="The line differs from the right one in three letters ('$a =$' for '$x =$', c for a, "
+                                  r"$+$ for $\pm$), which no single slip explains; the scan, which confuses a and c in "
                                   "these lines, may have made all of them.",
-                        answer="The c/b and the + are §227's, set alike at both places, which the scan does not do: "
-                               "the print's, as at 'curve-c' (medium there, for the scan's a/c confusion beside "
-                               "it). The 'a =' is the scan's and booked with it, as the stray prime of §241 is "
-                               "booked with the swap of μ and ν; misprint, medium (was the scan's, low)."),
+                        answer="The $c/b$ and the $+$ are §227's, set alike at both places, which the scan does not "
+                               "do: the print's, as at 'curve-c' (medium there, for the scan's a/c confusion beside "
+                               "it). The '$a =$' is the scan's and booked with it, as the stray prime of §241 is "
+                               r"booked with the swap of $\mu$ and $\nu$; misprint, medium (was the scan's, low)."),
         note=claim("the assumed equation (of §227)."))
 d.quote("c-limit", "§228",
         r"non permittit, vt capiatur $c > \frac{1}{2}a$, alias enim curua ultra rectam aa excurreret",

@@ -207,12 +207,13 @@ d.step("area", (D, sp.Integral(2 * a * R, (y, 0, b)), 2 * a * J(0, k)), "integra
 d.quote("chord", "§229", "erit ergo $Mm =$\n $2a\\left(1 - \\frac{y^n}{b^n}\\right)^x$, vnde area",
         reading=(XB - XA, 2 * a * Rx),
         erratum=Erratum("transcription", "high", r"Mm = 2a\left(1 - \frac{y^n}{b^n}\right)^\kappa",
-                        "The portions are x = a + Y ∓ aR with the exponent κ (κ is printed in §231–236); the x "
-                        "of the transcription is the Greek κ misread (x is the abscissa AP).",
+                        r"The portions are $x = a + Y \mp aR$ with the exponent $\kappa$ ($\kappa$ is printed in "
+                        r"§231–236); the $x$ of the transcription is the Greek $\kappa$ misread ($x$ is the abscissa "
+                        "$AP$).",
                         corrected_reading=(XB - XA, 2 * a * R),
-                        objection="The exponent is printed x in all seven formulas of §229–230 and never κ there; a "
-                                  "letter that runs the same way through two paragraphs may be Euler's own in the "
-                                  "print (κ first named in §231), not a glyph the scan lost once.",
+                        objection=r"The exponent is printed $x$ in all seven formulas of §229–230 and never $\kappa$ "
+                                  "there; a letter that runs the same way through two paragraphs may be Euler's own in "
+                                  r"the print ($\kappa$ first named in §231), not a glyph the scan lost once.",
                         answer=("The same sentence defines $AP = x$, and Euler would not give the exponent the "
                                 "letter of the abscissa in the very equation that defines it ($x = a + Y - "
                                 r"a(\dots)^x = AP$); §231 speaks of $\kappa$ as a letter already in play ('et "
@@ -223,8 +224,8 @@ d.quote("chord", "§229", "erit ergo $Mm =$\n $2a\\left(1 - \\frac{y^n}{b^n}\\ri
 d.quote("area", "§229", r"area AEB prodibit $= 2a \int dy \left(1 - \frac{y^n}{b^n}\right)^x = D$",
         reading=(D, 2 * a * J(0, xk)),
         erratum=Erratum("transcription", "high", r"= 2a \int dy \left(1 - \frac{y^n}{b^n}\right)^\kappa = D",
-                        "x for κ, as in the chord Mm.", corrected_reading=(D, 2 * a * J(0, k)),
-                        objection="As for the chord: x may be the print's letter for the exponent in §229–230.",
+                        r"$x$ for $\kappa$, as in the chord $Mm$.", corrected_reading=(D, 2 * a * J(0, k)),
+                        objection="As for the chord: $x$ may be the print's letter for the exponent in §229–230.",
                         answer=(r"$D = 2a\int dy\, (1 - y^n/b^n)^\kappa$ returns with $\kappa$ in §231 ('$\int dy\, "
                                 r"(1 - y^n/b^n)^\kappa = D/2a$') and §233 ('$= ND/2a$'), and $x$ is the abscissa AP "
                                 r"of the same sentence; the $\varkappa$ read as $x$, high.")),
@@ -239,7 +240,7 @@ d.quote("portion-Ace", "§229", r"$x = a + Y - a\left(1 - \frac{y^n}{b^n}\right)
                          r"with $\kappa$ in both portions is $Ap - AP$ the chord $Mm = 2a(1 - y^n/b^n)^\kappa$ the "
                          r"text derives next. The Greek $\kappa$ read as $x$, the fault booked at the chord $Mm$."),
                         corrected_reading=(XA, a + Ys - a * R), same_as=KAPPA_AS_X,
-                        objection="As for the chord: x may be the print's letter for the exponent.",
+                        objection="As for the chord: $x$ may be the print's letter for the exponent.",
                         answer=(r"Here $x$ stands on both sides of one equation ($x = \dots (\dots)^x = AP$), which "
                                 r"Euler would not write for an explicit curve; §231 and §236 treat $\kappa$ as the "
                                 r"exponent of these portions (cusps at $e$ for $\kappa > 1$). The $\varkappa$ read as "
@@ -251,9 +252,9 @@ d.quote("portion-Bce", "§229", r"aequatio $x = a + Y + a\left(1 - \frac{y^n}{b^
                         (r"$\kappa$ read as $x$, the fault booked at the chord $Mm$: the portion $Bce$ is $x = a + Y "
                          r"+ a(1 - y^n/b^n)^\kappa$, and $Ap - AP = 2a(1 - y^n/b^n)^\kappa$."),
                         corrected_reading=(XB, a + Ys + a * R), same_as=KAPPA_AS_X,
-                        objection="As for the chord: x may be the print's letter for the exponent.",
-                        answer="As for the portion Ace: x on both sides of the equation, κ in §231–236 for this "
-                               "exponent; the ϰ read as x, high."),
+                        objection="As for the chord: $x$ may be the print's letter for the exponent.",
+                        answer=r"As for the portion Ace: $x$ on both sides of the equation, $\kappa$ in §231–236 for "
+                               r"this exponent; the $\varkappa$ read as $x$, high."),
         note=claim("the portion Bce is x = a + Y + a(1 − yⁿ/bⁿ)^κ = Ap."))
 
 # ================================================================ §230: moments about AB and about the normal through O
@@ -268,33 +269,33 @@ d.quote("moment-AB", "§230", "erit momentum respectu axis $AB = 2a \\int y dy$\
         "$\\left(1 - \\frac{y^n}{b^n}\\right)^x$",
         reading=(IAB, 2 * a * J(1, xk)),
         erratum=Erratum("transcription", "medium", r"= 2a \int yy dy \left(1 - \frac{y^n}{b^n}\right)^\kappa",
-                        "The chord Mm at the distance y from AB gives y²·Mm·dy; ∫y·Mm dy would be the first "
-                        "moment, which vanishes for the whole figure and is not what §237 calls momentum. A "
-                        "'yy' read as 'y' and κ read as x; the transcription alone cannot exclude a slip of "
-                        "1749, hence medium.", corrected_reading=(IAB, 2 * a * J(2, k)),
-                        objection="'Momentum' may mean the static moment here (weight times distance, the usual "
-                                  "sense in mechanics), and 2a∫y dy R is the first moment of AEB about AB, so the "
+                        r"The chord Mm at the distance $y$ from AB gives $y^2 \cdot Mm \cdot dy$; $\int y \cdot Mm\, "
+                        "dy$ would be the first moment, which vanishes for the whole figure and is not what §237 calls "
+                        r"momentum. A '$yy$' read as '$y$' and $\kappa$ read as $x$; the transcription alone cannot "
+                        "exclude a slip of 1749, hence medium.", corrected_reading=(IAB, 2 * a * J(2, k)),
+                        objection="'Momentum' may mean the static moment here (weight times distance, the usual sense "
+                                  r"in mechanics), and $2a\int y\, dy\, R$ is the first moment of AEB about AB, so the "
                                   "print is right in that sense.",
-                        answer="In this chapter 'momentum respectu axis' is the second moment: §237 gives it as "
-                               "EF²D/μ with μ = 6 for the rectangle, which only ∫y²·Mm dy gives, and §233's moment "
-                               "about EF is 2a²D times a number, a fourth power of a length. So one y of 'yy' is "
-                               "lost; a letter lost by the scan or by the compositor cannot be told apart from the "
-                               "text, and the correction itself is certain: medium."),
+                        answer="In this chapter 'momentum respectu axis' is the second moment: §237 gives it as $EF^2 "
+                               r"D/\mu$ with $\mu = 6$ for the rectangle, which only $\int y^2 \cdot Mm\, dy$ gives, "
+                               "and §233's moment about EF is $2a^2 D$ times a number, a fourth power of a length. So "
+                               "one $y$ of '$yy$' is lost; a letter lost by the scan or by the compositor cannot be "
+                               "told apart from the text, and the correction itself is certain: medium."),
         note=claim("the moment of AEB about AB is 2a∫y²dy(1 − yⁿ/bⁿ)^κ, independent of Y."))
 d.quote("PO", "§230", r"$PO = -Y + a\left(1 - \frac{y^n}{b^n}\right)^x$",
         reading=(a - XA, -Ys + a * Rx),
         erratum=Erratum("transcription", "high", r"PO = -Y + a\left(1 - \frac{y^n}{b^n}\right)^\kappa",
-                        "x for κ.", corrected_reading=(a - XA, -Ys + a * R),
-                        objection="As for the chord: x may be the print's letter for the exponent.",
-                        answer="PO = a − AP of the portion Ace, whose exponent §231–236 call κ; the ϰ read as x on "
-                               "the same line as the chord's, high."),
+                        r"$x$ for $\kappa$.", corrected_reading=(a - XA, -Ys + a * R),
+                        objection="As for the chord: $x$ may be the print's letter for the exponent.",
+                        answer=r"$PO = a - AP$ of the portion Ace, whose exponent §231–236 call $\kappa$; the "
+                               r"$\varkappa$ read as $x$ on the same line as the chord's, high."),
         note=claim("the distance of M (on Ace) from the normal through O is PO = −Y + aR."))
 d.quote("pO", "§230", "et $pO =$\n\n$Y + a\\left(1 - \\frac{y^n}{b^n}\\right)^x$",
         reading=(XB - a, Ys + a * Rx),
         erratum=Erratum("transcription", "high", r"pO = Y + a\left(1 - \frac{y^n}{b^n}\right)^\kappa",
-                        "x for κ.", corrected_reading=(XB - a, Ys + a * R),
-                        objection="As for the chord: x may be the print's letter for the exponent.",
-                        answer="pO = Ap − a of the portion Bce; the ϰ read as x, high."),
+                        r"$x$ for $\kappa$.", corrected_reading=(XB - a, Ys + a * R),
+                        objection="As for the chord: $x$ may be the print's letter for the exponent.",
+                        answer=r"$pO = Ap - a$ of the portion Bce; the $\varkappa$ read as $x$, high."),
         note=claim("and that of m (on Bce) is pO = Y + aR."))
 MO_print = (2 * n * n * a ** 3 / b ** n * Ib(n, 3 * n - 1, n, b) + 2 * a * JY(2, 0, xk))
 d.quote("moment-O", "§230",
@@ -308,14 +309,15 @@ d.quote("moment-O", "§230",
                          r"by parts $\tfrac{2a^3}{3}\int R^3 dy = \tfrac{2n\kappa a^3}{b^n}\int y^n (1 - "
                          r"y^n/b^n)^{3\kappa-1} dy$. $\kappa$ read as $n$ (twice) and as $x$; §232 prints the whole "
                          r"figure's term with the exponent $3\kappa-1$."), corrected_reading=(MO, MO_val),
-                        objection="n stands for κ four times in §230 (2nn and 3n − 1 in both lines) and again in "
-                                  "§232 (n(n + 1) + 1): a letter wrong the same way in several places of Euler's "
-                                  "working is his own, not the scan's.",
-                        answer="It is not carried on: §232 prints the same term with the exponent 3κ − 1 and p. 118 "
-                               "with 4nκ and 3κ − 1, and §233's 2nκa²ND/(1 + 3nκ) and the tables of §234 (checked "
-                               "against §236's rhombus and ellipse) need κ, so Euler computed with κ. The page also "
-                               "reads κ as x and α, the marks of a scan that cannot tell this glyph; but a lost κ in"
-                               " the print is not excluded: medium."),
+                        objection=r"$n$ stands for $\kappa$ four times in §230 ($2nn$ and $3n - 1$ in both lines) and "
+                                  "again in §232 ($n(n + 1) + 1$): a letter wrong the same way in several places of "
+                                  "Euler's working is his own, not the scan's.",
+                        answer=r"It is not carried on: §232 prints the same term with the exponent $3\kappa - 1$ and "
+                               r"p. 118 with $4n\kappa$ and $3\kappa - 1$, and §233's $2n\kappa a^2 ND/(1 + 3n\kappa)$ "
+                               r"and the tables of §234 (checked against §236's rhombus and ellipse) need $\kappa$, so "
+                               r"Euler computed with $\kappa$. The page also reads $\kappa$ as $x$ and $\alpha$, the "
+                               r"marks of a scan that cannot tell this glyph; but a lost $\kappa$ in the print is not "
+                               "excluded: medium."),
         note=claim("the moment of AEB about the normal to AB through O is (2nκa³/bⁿ)∫yⁿdy(1 − yⁿ/bⁿ)^{3κ−1} "
                    "+ 2a∫Y²dy(1 − yⁿ/bⁿ)^κ."))
 d.quote("moment-O-whole", "§230",
@@ -325,11 +327,11 @@ d.quote("moment-O-whole", "§230",
         erratum=Erratum("transcription", "medium",
                         r"= \frac{4n\kappa a^3}{b^n} \int y^n dy \left(1 - \frac{y^n}{b^n}\right)^{3\kappa-1} + "
                         r"4a \int Y^2 dy \left(1 - \frac{y^n}{b^n}\right)^\kappa",
-                        "Twice the half figure's moment (AFB is equal to AEB); the same κ read as n and x.",
+                        r"Twice the half figure's moment (AFB is equal to AEB); the same $\kappa$ read as $n$ and $x$.",
                         corrected_reading=(2 * MO, 2 * MO_val),
-                        objection="As for the half figure: n for κ recurs in Euler's working and may be his.",
-                        answer="Twice the half figure's moment, with the same letters; §232 and p. 118 print the "
-                               "term with κ and §233 builds on it, so the fault is not carried on: medium, as for "
+                        objection=r"As for the half figure: $n$ for $\kappa$ recurs in Euler's working and may be his.",
+                        answer="Twice the half figure's moment, with the same letters; §232 and p. 118 print the term "
+                               r"with $\kappa$ and §233 builds on it, so the fault is not carried on: medium, as for "
                                "the half figure."),
         note=claim("the whole figure's moment about the normal through O is twice that."))
 
@@ -363,26 +365,28 @@ d.quote("centroid-moment", "§231",
                          r"$a$ (as in $CO = -2\alpha\int\dots/D$ next). Several letters at once: low."),
                         corrected_reading=(D * CO, 2 * a * JY(0, 1, k, 1) - 2 * n * k * a / b ** n * JY(1, n, k - 1),
                                            -2 * a * JY(1, 0, k)),
-                        objection="The first integral ∫y dy R may be the print's (Euler's slip while integrating by "
-                                  "parts), and α may be a letter of the print, since §231 has just introduced α as "
-                                  "the first coefficient of Y.",
-                        answer="The line's own end, −2α∫Y dy R, and the next formula CO = −2α∫…/D need ∫y dY and the"
-                               " factor a: ∫y dy R has no Y and could not give a centroid that depends on Y. Several"
-                               " letters at once, some the scan's (α for a and κ) and the dY perhaps the print's, "
-                               "cannot be told apart: low stands."),
+                        objection=r"The first integral $\int y\, dy\, R$ may be the print's (Euler's slip while "
+                                  r"integrating by parts), and $\alpha$ may be a letter of the print, since §231 has "
+                                  r"just introduced $\alpha$ as the first coefficient of $Y$.",
+                        answer=r"The line's own end, $-2\alpha\int Y\, dy\, R$, and the next formula $CO = "
+                               r"-2\alpha\int\dots/D$ need $\int y\, dY$ and the factor $a$: $\int y\, dy\, R$ has no "
+                               "$Y$ and could not give a centroid that depends on $Y$. Several letters at once, some "
+                               r"the scan's ($\alpha$ for $a$ and $\kappa$) and the $dY$ perhaps the print's, cannot "
+                               "be told apart: low stands."),
         note=claim("the centroid C satisfies D·CO = 2a∫y dY R − (2nκa/bⁿ)∫yⁿY dy(1 − yⁿ/bⁿ)^{κ−1} = −2a∫Y dy R."))
 d.quote("CO", "§231", r"$CO = \frac{-2 \alpha \int Y dy (1 - \frac{y^n}{b^n})^{\kappa}}{D}$",
         reading=(CO, -2 * al * JY(1, 0, k) / D),
         erratum=Erratum("transcription", "high", r"CO = \frac{-2a \int Y dy (1 - \frac{y^n}{b^n})^{\kappa}}{D}",
-                        "α for a: the half-length a multiplies the chord 2aR; no α is defined before §231's "
-                        "Y = αyⁿ + ….", corrected_reading=(CO, -2 * a * JY(1, 0, k) / D),
-                        objection="α stands for a in seven formulas of §231–232, consistently: by the rule for a "
-                                  "fault running through the author's working, Euler's or the print's, not the "
-                                  "scan's; and α is a letter of the paragraph (Y = αyⁿ + …).",
-                        answer="It is not carried on: §233 writes ND/2a and 2nκa²ND/(1 + 3nκ), which need the "
-                               "half-length a, and the same pages print α also where κ belongs (4nαa³), where "
-                               "neither author nor compositor would set the coefficient of Y; italic a and α differ "
-                               "by a stroke. The scan's reading of p. 117, against the author's own later use: high."),
+                        r"$\alpha$ for $a$: the half-length $a$ multiplies the chord $2aR$; no $\alpha$ is defined "
+                        r"before §231's $Y = \alpha y^n + \dots$.", corrected_reading=(CO, -2 * a * JY(1, 0, k) / D),
+                        objection=r"$\alpha$ stands for $a$ in seven formulas of §231–232, consistently: by the rule "
+                                  "for a fault running through the author's working, Euler's or the print's, not the "
+                                  r"scan's; and $\alpha$ is a letter of the paragraph ($Y = \alpha y^n + \dots$).",
+                        answer=r"It is not carried on: §233 writes $ND/2a$ and $2n\kappa a^2 ND/(1 + 3n\kappa)$, which "
+                               r"need the half-length $a$, and the same pages print $\alpha$ also where $\kappa$ "
+                               r"belongs ($4n\alpha a^3$), where neither author nor compositor would set the "
+                               r"coefficient of $Y$; italic $a$ and $\alpha$ differ by a stroke. The scan's reading of "
+                               "p. 117, against the author's own later use: high."),
         note=claim("hence CO = −2a∫Y dy R / D."))
 d.quote("moment-EF", "§231",
         r"$= \frac{4n\alpha a^3}{b^n} \int y^n dy (1 - \frac{y^n}{b^n})^{\kappa-1} + 4 \alpha \int Y^2 dy "
@@ -395,13 +399,14 @@ d.quote("moment-EF", "§231",
                          r"CO^2$ (§217) $= 8a^2 (\int YR)^2/D$. Printed: $\alpha$ for $\kappa$ and for $a$, the "
                          r"exponent $\kappa-1$ for $3\kappa-1$ (§232 repeats the term with $3\kappa-1$) and the "
                          "divisor $D$ of the last term lost (the term must be a fourth power of a length)."), corrected_reading=(KEF, KEF_val),
-                        objection="The fix needs three different changes (α for κ and a, κ − 1 for 3κ − 1, the "
-                                  "divisor D lost), more than one slip of the scan: the line may be Euler's own "
-                                  "wrong formula.",
-                        answer="Euler's next results are computed from the right one: §232 repeats the first term "
-                               "with 3κ − 1, and its c-terms 2(n + 1)c²D/(…) − 2c²D/(n(κ + 1) + 1)² come from "
-                               "8a²(∫YR)²/D, so the divisor D was in his working. α for κ and a is the scan's fault "
-                               "of this page; a lost 3 and a lost fraction bar are faults of either. Medium."),
+                        objection=r"The fix needs three different changes ($\alpha$ for $\kappa$ and $a$, $\kappa - 1$ "
+                                  r"for $3\kappa - 1$, the divisor $D$ lost), more than one slip of the scan: the line "
+                                  "may be Euler's own wrong formula.",
+                        answer="Euler's next results are computed from the right one: §232 repeats the first term with "
+                               r"$3\kappa - 1$, and its $c$-terms $2(n + 1)c^2 D/(\dots) - 2c^2 D/(n(\kappa + 1) + "
+                               r"1)^2$ come from $8a^2(\int YR)^2/D$, so the divisor $D$ was in his working. $\alpha$ "
+                               r"for $\kappa$ and $a$ is the scan's fault of this page; a lost $3$ and a lost fraction "
+                               "bar are faults of either. Medium."),
         note=claim("the moment of the whole figure about EF through C is (4nκa³/bⁿ)∫yⁿ(…)^{3κ−1} + 4a∫Y²R "
                    "− 8a²(∫YR)²/D."))
 d.quote("axis-EF-named", "§230", r"Ad momentum autem huius figurae respectu axis longitudinalis EF",
@@ -430,15 +435,15 @@ d.quote("Y-family", "§231", r"$Y = \alpha y^n + \beta y^{n-1} + \gamma y^{n-2} 
         reading=(sp.Subs(Y_printed, (y, n), (0, 2)), 0),
         erratum=Erratum("transcription", "low", r"Y = \alpha y^n + \beta y^{2n} + \gamma y^{3n} + \dots",
                         ("The curve must meet AB at A and B: $AP = Y(0)$ at $y = 0$, so $Y$ vanishes there (§221: "
-                         "'quae euaneat posito y = 0'). The printed terms $y^{n-1}$, $y^{n-2}$ do not: at $n = 2$ "
-                         r"(the ellipse of §236) $\gamma y^{n-2} = \gamma$ at $y = 0$ (read so, the '+ etc.' "
-                         r"dropped), at $n = 1$ $\beta y^0 = \beta$ and $y^{-1}$ is infinite. Nor do they reduce to "
-                         r"the area integral $\int dy\, (1 - y^n/b^n)^\kappa = D/(2a)$, as the sentence claims: at $n "
-                         r"= 2$, $\kappa = \tfrac12$, $\int y (1 - y^2/b^2)^{1/2} dy \big/ \int (1 - y^2/b^2)^{1/2} "
-                         r"dy = (b^2/3)/(\pi b/4) = 4b/(3\pi)$, no rational multiple of $b$, while the powers "
-                         "$y^{jn}$ reduce by the rational factors of the recurrence (§232 uses $y^n$ and $y^{2n}$). "
-                         "The exponents $2n$, $3n$ read as the descending $n - 1$, $n - 2$ of an ordinary "
-                         "polynomial; the print cannot be seen (a slip of 1749 is not excluded): medium."),
+                         "'quae euaneat posito $y = 0$'). The printed terms $y^{n-1}$, $y^{n-2}$ do not: at $n = 2$ "
+                         r"(the ellipse of §236) $\gamma y^{n-2} = \gamma$ at $y = 0$ (read so, the '+ etc.' dropped), "
+                         r"at $n = 1$ $\beta y^0 = \beta$ and $y^{-1}$ is infinite. Nor do they reduce to the area "
+                         r"integral $\int dy\, (1 - y^n/b^n)^\kappa = D/(2a)$, as the sentence claims: at $n = 2$, "
+                         r"$\kappa = \tfrac12$, $\int y (1 - y^2/b^2)^{1/2} dy \big/ \int (1 - y^2/b^2)^{1/2} dy = "
+                         r"(b^2/3)/(\pi b/4) = 4b/(3\pi)$, no rational multiple of $b$, while the powers $y^{jn}$ "
+                         "reduce by the rational factors of the recurrence (§232 uses $y^n$ and $y^{2n}$). The "
+                         "exponents $2n$, $3n$ read as the descending $n - 1$, $n - 2$ of an ordinary polynomial; the "
+                         "print cannot be seen (a slip of 1749 is not excluded): medium."),
                         corrected_reading=(sp.Subs(Y_corrected, (y, n), (0, 2)), 0),
                         objection=(r"A descending polynomial $\alpha y^n + \beta y^{n-1} + \gamma y^{n-2} + \dots$ is "
                                    "the most ordinary way of writing a general function, and the change to $y^{2n}$, "
@@ -452,9 +457,9 @@ d.quote("Y-family", "§231", r"$Y = \alpha y^n + \beta y^{n-1} + \gamma y^{n-2} 
 d.quote("area-integral", "§231", r"$\int dy (1 - \frac{y^n}{b^n})^{\kappa} = \frac{D}{2\alpha}$",
         reading=(J(0, k), D / (2 * al)),
         erratum=Erratum("transcription", "high", r"\int dy (1 - \frac{y^n}{b^n})^{\kappa} = \frac{D}{2a}",
-                        "α for a (§229: D = 2a∫R dy).", corrected_reading=(J(0, k), D / (2 * a)),
-                        objection="α may be meant: §231 has just introduced α as the first coefficient of Y, and the"
-                                  " print may write D/2α.",
+                        r"$\alpha$ for $a$ (§229: $D = 2a\int R\, dy$).", corrected_reading=(J(0, k), D / (2 * a)),
+                        objection=r"$\alpha$ may be meant: §231 has just introduced $\alpha$ as the first coefficient "
+                                  r"of $Y$, and the print may write $D/2\alpha$.",
                         answer=(r"$D = 2a\int dy\, R$ (§229) gives $D/2a$, and §233 prints $\int dy\, (\dots)^\kappa "
                                 r"= ND/2a$ with $a$; the coefficient $\alpha$ of $Y$ has no place in the area. "
                                 r"$\alpha$ for $a$, the scan's reading of this page: high.")),
@@ -479,17 +484,18 @@ d.quote("Y-c-first", "§232",
                  -c * D / (2 * al * (n * (n + 1) + 1))),
         erratum=Erratum("transcription", "high",
                         r"= \frac{-c}{n(\kappa+1)+1} \int dy (1 - \frac{y^n}{b^n})^{\kappa} = \frac{-cD}{2a(n(\kappa+1)+1)}",
-                        "∫yⁿR dy/bⁿ = ∫R dy/(n(κ+1)+1) by parts; the display at the top of p. 118 prints "
-                        "n(κ+1)+1 in the same place: κ read as n, and α for a.",
+                        r"$\int y^n R\, dy/b^n = \int R\, dy/(n(\kappa+1)+1)$ by parts; the display at the top of p. "
+                        r"118 prints $n(\kappa+1)+1$ in the same place: $\kappa$ read as $n$, and $\alpha$ for $a$.",
                         corrected_reading=(JY(1, 0, k, 0, -c, 0), -c / b ** n * J(n, k), -c / m1 * J(0, k),
                                            -c * D / (2 * a * m1)),
-                        objection="n(n + 1) + 1 stands in four places of §232 (both integrals and their values), "
+                        objection="$n(n + 1) + 1$ stands in four places of §232 (both integrals and their values), "
                                   "consistently: by the rule for a repeated fault, Euler's working rather than the "
                                   "scan's.",
-                        answer="The display at the top of p. 118, which combines exactly these terms, prints n(κ + "
-                               "1) + 1 and n(κ + 2) + 1 and its combined c-term is right, so Euler computed with κ; "
-                               "the n is the scan's reading of κ on p. 117, where it also reads κ as x and α. High: "
-                               "the author's own next line shows the form."),
+                        answer="The display at the top of p. 118, which combines exactly these terms, prints "
+                               r"$n(\kappa + 1) + 1$ and $n(\kappa + 2) + 1$ and its combined $c$-term is right, so "
+                               r"Euler computed with $\kappa$; the $n$ is the scan's reading of $\kappa$ on p. 117, "
+                               r"where it also reads $\kappa$ as $x$ and $\alpha$. High: the author's own next line "
+                               "shows the form."),
         note=claim("with Y = −cyⁿ/bⁿ (Oc = c), ∫Y dy R = −cD/(2a(n(κ+1)+1))."))
 d.quote("Y-c", "§232", r"Sit primum antequam pro κ valores definitos accipiamus, $Y = \frac{-cy^n}{b^n}$",
         reading=(sp.Subs(a - XA, (Ys, y), (-c * y ** n / b ** n, b)), c),
@@ -515,14 +521,15 @@ d.quote("Y-c-second", "§232",
                         corrected_reading=(JY(2, 0, k, 0, -c, 0), c ** 2 / b ** (2 * n) * J(2 * n, k),
                                            (n + 1) * c ** 2 / (m1 * m2) * J(0, k),
                                            (n + 1) * c ** 2 * D / (2 * a * m1 * m2)),
-                        objection="The fix needs several changes (κ for n twice, a for α, the comma taken as part of"
-                                  " a product), more than the one slip that high asks for; and the comma may be the "
-                                  "print's, closing one equation and opening another.",
-                        answer="As separate equations the first ends in ∫Y²R = (n + 1)c²/(…), a square of a length "
-                               "where the integral is a cube, and the second makes ∫dy R depend on c; read as one "
-                               "product its value is the one p. 118 uses, (n + 1)c²D/(2a(…)(…)) times 4a = "
-                               "2(n + 1)c²D/((n(κ + 1) + 1)(n(κ + 2) + 1)). Each change is the page's known misreading "
-                               "(κ as n, a as α) and p. 118 prints the result: high."),
+                        objection=r"The fix needs several changes ($\kappa$ for $n$ twice, $a$ for $\alpha$, the comma "
+                                  "taken as part of a product), more than the one slip that high asks for; and the "
+                                  "comma may be the print's, closing one equation and opening another.",
+                        answer=r"As separate equations the first ends in $\int Y^2 R = (n + 1)c^2/(\dots)$, a square "
+                               r"of a length where the integral is a cube, and the second makes $\int dy\, R$ depend "
+                               "on $c$; read as one product its value is the one p. 118 uses, $(n + 1)c^2 "
+                               r"D/(2a(\dots)(\dots)) \text{ times } 4a = 2(n + 1)c^2 D/((n(\kappa + 1) + 1)(n(\kappa "
+                               r"+ 2) + 1))$. Each change is the page's known misreading ($\kappa$ as $n$, $a$ as "
+                               r"$\alpha$) and p. 118 prints the result: high."),
         note=claim("∫Y²dy R = (n+1)c²D/(2a(n(κ+1)+1)(n(κ+2)+1))."))
 d.quote("moment-EF-c", "§232",
         r"$= \frac{4n\alpha a^3}{b^n} \int y^n dy (1 - \frac{y^n}{b^n})^{3\kappa-1} + "
@@ -533,17 +540,19 @@ d.quote("moment-EF-c", "§232",
                         r"= \frac{4n\kappa a^3}{b^n} \int y^n dy (1 - \frac{y^n}{b^n})^{3\kappa-1} + "
                         r"\frac{2(n+1)ccD}{(n(\kappa+1)+1)(n(\kappa+2)+1)} - \frac{2ccD}{(n(\kappa+1)+1)^2}",
                         "The line breaks at the foot of p. 117 and the display heading p. 118 continues it with "
-                        "2(n+1)ccD/((n(κ+1)+1)(n(κ+2)+1)) − 2ccD/(n(κ+1)+1)²; the transcription's last fraction "
-                        "is a garbled start of that term (ccD lost, 2α and n for κ). α for κ in 4nκa³.",
+                        r"$2(n+1)ccD/((n(\kappa+1)+1)(n(\kappa+2)+1)) - 2ccD/(n(\kappa+1)+1)^2$; the transcription's "
+                        r"last fraction is a garbled start of that term ($ccD$ lost, $2\alpha$ and $n$ for $\kappa$). "
+                        r"$\alpha$ for $\kappa$ in $4n\kappa a^3$.",
                         corrected_reading=(Kc, 4 * n * k * a ** 3 / b ** n * J(n, 3 * k - 1)
                                            + 2 * (n + 1) * c ** 2 * D / (m1 * m2) - 2 * c ** 2 * D / m1 ** 2),
                         objection="The line ends the page; the print itself may break the formula there with an "
                                   "incomplete fraction, so that what stands is Euler's and only its continuation is "
                                   "on p. 118.",
-                        answer="That is the reading the erratum makes: p. 118 continues with 2(n + 1)ccD/(…)(…) − "
-                               "2ccD/(…)², so the page's last fraction is its start; but 2α in the denominator and "
-                               "the lost ccD are not a compositor's break, and α for κ in 4nαa³ is the scan's. "
-                               "Whether the print set the whole term on p. 117 cannot be seen: medium."),
+                        answer="That is the reading the erratum makes: p. 118 continues with $2(n + "
+                               r"1)ccD/(\dots)(\dots) - 2ccD/(\dots)^2$, so the page's last fraction is its start; but "
+                               r"$2\alpha$ in the denominator and the lost $ccD$ are not a compositor's break, and "
+                               r"$\alpha$ for $\kappa$ in $4n\alpha a^3$ is the scan's. Whether the print set the "
+                               "whole term on p. 117 cannot be seen: medium."),
         note=claim("for Y = −cyⁿ/bⁿ the moment about EF is (4nκa³/bⁿ)∫yⁿ(…)^{3κ−1}dy + "
                    "2(n+1)c²D/((n(κ+1)+1)(n(κ+2)+1)) − 2c²D/(n(κ+1)+1)², continued on p. 118."))
 d.quote("moment-EF-c-p118", "§232",
@@ -556,15 +565,15 @@ d.quote("moment-EF-c-p118", "§232",
         erratum=Erratum("transcription", "medium",
                         r"= \frac{4n\kappa a^3}{b^n} \int y^n dy \left(1 - \frac{y^n}{b^n}\right)^{3\kappa-1} + "
                         r"\frac{2nn(\kappa+1)ccD}{(n(\kappa+1)+1)^2(n(\kappa+2)+1)}",
-                        "The c-terms combine to 2n²(κ+1)c²D/((n(κ+1)+1)²(n(κ+2)+1)) (checked); the first term "
-                        "is carried unchanged from the line before, where it has a³ (a moment is a fourth power "
-                        "of a length; §233 turns it into 2nκa²ND/(1+3nκ) with D = 2a∫R). a² for a³: an "
-                        "exponent misread, or a misprint of 1749; medium.",
+                        r"The $c$-terms combine to $2n^2(\kappa+1)c^2 D/((n(\kappa+1)+1)^2(n(\kappa+2)+1))$ (checked); "
+                        "the first term is carried unchanged from the line before, where it has $a^3$ (a moment is a "
+                        r"fourth power of a length; §233 turns it into $2n\kappa a^2 ND/(1+3n\kappa)$ with $D = 2a\int "
+                        "R$). $a^2$ for $a^3$: an exponent misread, or a misprint of 1749; medium.",
                         corrected_reading=(Kc, 4 * n * k * a ** 3 / b ** n * J(n, 3 * k - 1)
                                            + 2 * (n + 1) * c ** 2 * D / (m1 * m2) - 2 * c ** 2 * D / m1 ** 2,
                                            Kc_val),
-                        objection="a² may be the print's: §233 carries a² on (2nκa²ND/(1 + 3nκ)), so the square may "
-                                  "be Euler's own through two places of his working.",
+                        objection=r"$a^2$ may be the print's: §233 carries $a^2$ on ($2n\kappa a^2 ND/(1 + "
+                                  r"3n\kappa)$), so the square may be Euler's own through two places of his working.",
                         answer=(r"§233's $a^2$ is right there, since $D = 2a\int R$ absorbs one $a$: $\tfrac{4n\kappa "
                                 r"a^3}{b^n}\int y^n (\dots)^{3\kappa-1} = 2n\kappa a^2 ND/(1 + 3n\kappa)$ needs $a^3$ "
                                 "in the line before. So the $a^2$ of p. 118 is not carried on; a $3$ read as $2$ "
@@ -678,45 +687,48 @@ N_PRINTED = {
                         (r"$N = \int (1-u^n)^{1/2} \big/ \int (1-u^n)^{1/2} = 1$ ($3\kappa - 1 = \kappa$), and the row "
                          r"$\kappa = \tfrac12$ of §234, $2a^2 D \cdot n/(2+3n) = 2n\kappa a^2 ND/(1+3n\kappa)$, needs $N = 1$. "
                          r"Perhaps a $1$ read as the $\tfrac12$ of the $\kappa$ column beside it."),
-                        "The 1/2 may be the print's: the compositor setting the κ column's 1/2 again in the N column "
-                        "beside it, or Euler's slip, since nothing in §233 is computed from this row.",
-                        "N = 1 here (3κ − 1 = κ), and §234's row κ = 1/2, 2a²D·n/(2 + 3n), is computed with N = 1, "
-                        "so Euler had the value. But a whole fraction copied from the next column is no glyph the "
-                        "scan confuses with 1, and the compositor's copy cannot be told from the transcription's: "
-                        "lowered to low."),
+                        r"The $1/2$ may be the print's: the compositor setting the $\kappa$ column's $1/2$ again in "
+                        "the $N$ column beside it, or Euler's slip, since nothing in §233 is computed from this row.",
+                        r"$N = 1$ here ($3\kappa - 1 = \kappa$), and §234's row $\kappa = 1/2$, $2a^2 D \cdot n/(2 + "
+                        "3n)$, is computed with $N = 1$, so Euler had the value. But a whole fraction copied from the "
+                        "next column is no glyph the scan confuses with $1$, and the compositor's copy cannot be told "
+                        "from the transcription's: lowered to low."),
     sp.Integer(1): (r"$\kappa = 1$	$N = \frac{4n}{2+4n}$", 4 * n / (2 + 4 * n), None, "", "", ""),
     sp.Rational(3, 2): (r"$\kappa = \frac{3}{2}$	$N = \frac{5n}{(2+1)n}(2+7n)$", 5 * n / ((2 + 1) * n) * (2 + 7 * n),
-                        "medium", "The rebuilt N is 5n·7n/((2+5n)(2+7n)); the transcription keeps 5n, 2+…n and "
-                        "(2+7n) of it but loses the factor 7n and scrambles the denominator.",
+                        "medium", r"The rebuilt $N$ is $5n \cdot 7n/((2+5n)(2+7n))$; the transcription keeps $5n$, "
+                                  r"$2+\dots n$ and $(2+7n)$ of it but loses the factor $7n$ and scrambles the "
+                                  "denominator.",
                         "The row may be garbled in the print itself, a compositor's muddle of a two-line fraction, "
                         "the kind then the printer's.",
-                        "§234's row κ = 3/2, 3n·5n·7n over (2 + 5n)(2 + 7n)(2 + 9n), is 3n/(2 + 9n) times this N "
-                        "rebuilt, so Euler had it; the pieces kept (5n, (2 + 7n), '(2+1)n' with a 5 read as 1) "
-                        "are those of a two-line fraction flattened. The compositor's muddle is the alternative "
-                        "left: medium."),
+                        r"§234's row $\kappa = 3/2$, $3n \cdot 5n \cdot 7n$ over $(2 + 5n)(2 + 7n)(2 + 9n)$, is $3n/(2 "
+                        "+ 9n)$ times this $N$ rebuilt, so Euler had it; the pieces kept ($5n$, $(2 + 7n)$, '$(2+1)n$' "
+                        "with a $5$ read as $1$) are those of a two-line fraction flattened. The compositor's muddle "
+                        "is the alternative left: medium."),
     sp.Integer(2): (r"$\kappa = 2$	$N = \frac{6n}{(2+6n)(2+8n)(2+10n)}$", 6 * n / ((2 + 6 * n) * (2 + 8 * n) * (2 + 10 * n)),
-                    "medium", "The denominator is right; the numerator 6n·8n·10n lost its last two factors "
-                              "(the pattern of every row: one factor jn over each 2 + jn).",
-                    "The same loss, only the first numerator factor kept, runs through the rows κ = 2, 5/2 and 3: "
-                    "a fault consistent through a table is the print's (Euler's abbreviation of the product by its "
-                    "first factor, or the compositor's), not the scan's.",
-                    "§234's row κ = 2, built from N, prints every factor: 4n·6n·8n·10n over (2 + 6n)(2 + 8n)"
-                    "(2 + 10n)(2 + 12n), 4n/(2 + 12n) times N rebuilt, so Euler had the whole product and the "
-                    "loss is not carried on; the row κ = 1, with one factor, is printed whole. Whether the print "
-                    "abbreviated or the transcription dropped the rest of a long numerator cannot be seen: "
-                    "medium."),
+                    "medium", r"The denominator is right; the numerator $6n \cdot 8n \cdot 10n$ lost its last two "
+                              "factors (the pattern of every row: one factor $jn$ over each $2 + jn$).",
+                    r"The same loss, only the first numerator factor kept, runs through the rows $\kappa = 2$, $5/2$ "
+                    "and $3$: a fault consistent through a table is the print's (Euler's abbreviation of the product "
+                    "by its first factor, or the compositor's), not the scan's.",
+                    r"§234's row $\kappa = 2$, built from $N$, prints every factor: $4n \cdot 6n \cdot 8n \cdot 10n$ "
+                    "over $(2 + 6n)(2 + 8n)(2 + 10n)(2 + 12n)$, $4n/(2 + 12n)$ times $N$ rebuilt, so Euler had the "
+                    r"whole product and the loss is not carried on; the row $\kappa = 1$, with one factor, is printed "
+                    "whole. Whether the print abbreviated or the transcription dropped the rest of a long numerator "
+                    "cannot be seen: medium."),
     sp.Rational(5, 2): (r"$\kappa = \frac{5}{2}$	$N = \frac{7n}{(2+7n)(2+9n)(2+11n)(2+13n)}$",
                         7 * n / ((2 + 7 * n) * (2 + 9 * n) * (2 + 11 * n) * (2 + 13 * n)), "medium",
-                        "Denominator right, numerator 7n·9n·11n·13n lost three factors.",
-                        "As for κ = 2: the same loss through three rows may be the print's abbreviation.",
-                        "§234's row κ = 5/2 prints the numerators 5n·7n·9n·11n·13n, 5n/(2 + 15n) times N rebuilt: "
-                        "Euler had the whole product; print or transcription cannot be seen, medium."),
+                        r"Denominator right, numerator $7n \cdot 9n \cdot 11n \cdot 13n$ lost three factors.",
+                        r"As for $\kappa = 2$: the same loss through three rows may be the print's abbreviation.",
+                        r"§234's row $\kappa = 5/2$ prints the numerators $5n \cdot 7n \cdot 9n \cdot 11n \cdot 13n$, "
+                        "$5n/(2 + 15n)$ times $N$ rebuilt: Euler had the whole product; print or transcription cannot "
+                        "be seen, medium."),
     sp.Integer(3): (r"$\kappa = 3$	$N = \frac{8n}{(2+8n)(2+10n)(2+12n)(2+14n)(2+16n)}$",
                     8 * n / ((2 + 8 * n) * (2 + 10 * n) * (2 + 12 * n) * (2 + 14 * n) * (2 + 16 * n)), "medium",
-                    "Denominator right, numerator 8n·10n·12n·14n·16n lost four factors.",
-                    "As for κ = 2: the same loss through three rows may be the print's abbreviation.",
-                    "§234's row κ = 3 prints the numerators 6n·8n·10n·12n·14n·16n, 6n/(2 + 18n) times N "
-                    "rebuilt: Euler had the whole product; print or transcription cannot be seen, medium."),
+                    r"Denominator right, numerator $8n \cdot 10n \cdot 12n \cdot 14n \cdot 16n$ lost four factors.",
+                    r"As for $\kappa = 2$: the same loss through three rows may be the print's abbreviation.",
+                    r"§234's row $\kappa = 3$ prints the numerators $6n \cdot 8n \cdot 10n \cdot 12n \cdot 14n \cdot "
+                    "16n$, $6n/(2 + 18n)$ times $N$ rebuilt: Euler had the whole product; print or transcription "
+                    "cannot be seen, medium."),
 }
 
 
@@ -764,20 +776,20 @@ for kappa in KAPPAS:
     d.quote("K-table-%s" % _label(kappa), "§234", k_excerpt, reading=(Kk[kappa], 2 * a ** 2 * Dk[kappa] * k_printed),
             erratum=None if kappa == sp.Rational(1, 2) else Erratum(
                 "transcription", "medium", r"2a^2 D \cdot " + k_tex,
-                "2nκa²ND/(1+3nκ) with the rebuilt N is 2a²D times the product of the printed numerators over "
-                "the first factor of each printed denominator pair. The transcription gives every fraction a "
-                "second factor, the first of the next fraction (a pattern, not arithmetic: with it κ = 1, n = 1 "
-                "would give 2a²D/480, against the rhombus' 2a²D/6 that §236 prints).",
+                r"$2n\kappa a^2 ND/(1+3n\kappa)$ with the rebuilt $N$ is $2a^2 D$ times the product of the printed "
+                "numerators over the first factor of each printed denominator pair. The transcription gives every "
+                r"fraction a second factor, the first of the next fraction (a pattern, not arithmetic: with it $\kappa "
+                "= 1$, $n = 1$ would give $2a^2 D/480$, against the rhombus' $2a^2 D/6$ that §236 prints).",
                 corrected_reading=(Kk[kappa], 2 * a ** 2 * Dk[kappa] * k_value),
                 objection="Every fraction of the five rows carries the same second factor, the first of the next "
                           "fraction: a pattern consistent through the whole table is the print's (Euler's or the "
                           "compositor's), not a glyph the scan confused.",
-                answer="Euler's later values are computed without it: §236's rhombus 2a²D/6 and 16a²D/35 are the "
-                       "row κ = 1 at n = 1 and 2 with one factor 2 + jn under each numerator (with the printed "
-                       "pairs n = 1 gives 2a²D/480). The pairs bring in factors foreign to the value (2 + 8n in "
-                       "the row κ = 1), which a compositor following a right manuscript would not add to every "
-                       "fraction and a transcription that continues a pattern does; the print cannot be seen: "
-                       "medium."),
+                answer="Euler's later values are computed without it: §236's rhombus $2a^2 D/6$ and $16a^2 D/35$ are "
+                       r"the row $\kappa = 1$ at $n = 1$ and $2$ with one factor $2 + jn$ under each numerator (with "
+                       "the printed pairs $n = 1$ gives $2a^2 D/480$). The pairs bring in factors foreign to the value "
+                       r"($2 + 8n$ in the row $\kappa = 1$), which a compositor following a right manuscript would not "
+                       "add to every fraction and a transcription that continues a pattern does; the print cannot be "
+                       "seen: medium."),
             note=claim("for c = 0 and κ = %s the moment about EF is the printed entry; rebuilt: $2a^2 D \\cdot %s$."
                        % (kappa, k_tex)))
 
@@ -930,16 +942,16 @@ d.quote("stability-AB", "§239", r"$AB = M (\frac{EF^2 \cdot D}{\mu v} - OG)$",
 d.quote("stability-EF", "§239", r"$= M (\frac{AB^2 \cdot D}{v \mu} - OG)$",
         reading=(SEF, M * (AB ** 2 * Dw / (V * mu) - OG)),
         erratum=Erratum("transcription", "low", r"= M (\frac{AB^2 \cdot D}{\nu V} - OG)",
-                        "About EF the moment is K = AB²D/ν (§238), so the number is ν; the μ may be the scan's "
-                        "or Euler's (he swaps the two letters in §241).",
+                        r"About EF the moment is $K = AB^2 D/\nu$ (§238), so the number is $\nu$; the $\mu$ may be the "
+                        "scan's or Euler's (he swaps the two letters in §241).",
                         corrected_reading=(SEF, M * (AB ** 2 * Dw / (nu * V) - OG)),
-                        objection="μ about EF may be the print's: §237 gave both moments with the one letter μ, and "
-                                  "Euler's own pen mixes μ and ν in §241 (five places), so the letter here may be "
-                                  "his slip rather than the scan's.",
-                        answer="The correction stands: §238, the sentence before, names the number of the moment "
-                               "about EF ν ('diversas autem litteras μ et v assumpsimus'). But the scan renders ν as"
-                               " v in §238 and Euler swaps the two letters in §241, so whether the print has μ here "
-                               "or the scan made it cannot be told: lowered to low."),
+                        objection=r"$\mu$ about EF may be the print's: §237 gave both moments with the one letter "
+                                  r"$\mu$, and Euler's own pen mixes $\mu$ and $\nu$ in §241 (five places), so the "
+                                  "letter here may be his slip rather than the scan's.",
+                        answer="The correction stands: §238, the sentence before, names the number of the moment about "
+                               r"EF $\nu$ ('diversas autem litteras $\mu$ et $v$ assumpsimus'). But the scan renders "
+                               r"$\nu$ as $v$ in §238 and Euler swaps the two letters in §241, so whether the print "
+                               r"has $\mu$ here or the scan made it cannot be told: lowered to low."),
         note=claim("the stability about EF is M(AB²D/(νV) − OG)."))
 d.quote("stability-G-below", "§239", r"$- OG$ scribi deberet $+ OG$",
         reading=(SABp, M * (EF ** 2 * Dw / (mu * V) + OG)),
@@ -949,17 +961,17 @@ d.quote("stability-G-below", "§239", r"$- OG$ scribi deberet $+ OG$",
 d.quote("stability-AB-241", "§241", r"$= M \left(\frac{EF^2.D}{\nu v} - OG \right)$",
         reading=(SAB, M * (EF ** 2 * Dw / (nu * V) - OG)),
         erratum=Erratum("misprint", "medium", r"= M \left(\frac{EF^2.D}{\mu V} - OG \right)",
-                        "The number of the moment about AB is μ (§238, §239); §241 has ν for it and μ for the "
-                        "latitudinal one consistently, in all five places of the paragraph: Euler's swap.",
+                        r"The number of the moment about AB is $\mu$ (§238, §239); §241 has $\nu$ for it and $\mu$ for "
+                        "the latitudinal one consistently, in all five places of the paragraph: Euler's swap.",
                         corrected_reading=(SAB, M * (EF ** 2 * Dw / (mu * V) - OG)),
-                        objection="Euler may mean ν here: from §241 on he writes ν for the number of the moment "
-                                  "about AB in every place (five in §241), a relettering of his own, not a fault; "
-                                  "and he says the two numbers hardly differ.",
-                        answer="§238 defines I = EF²D/μ and K = AB²D/ν and keeps the letters apart on purpose ('quia"
-                               " non semper aequales valores habent'); §239 uses them so. §241 swaps them "
-                               "consistently in five places (this stability, the two conditions and both sides of "
-                               "the ratio of sixteen), the author's slip and not a glyph the scan confuses: "
-                               "misprint, medium (was booked as the scan's at low)."),
+                        objection=r"Euler may mean $\nu$ here: from §241 on he writes $\nu$ for the number of the "
+                                  "moment about AB in every place (five in §241), a relettering of his own, not a "
+                                  "fault; and he says the two numbers hardly differ.",
+                        answer=r"§238 defines $I = EF^2 D/\mu$ and $K = AB^2 D/\nu$ and keeps the letters apart on "
+                               "purpose ('quia non semper aequales valores habent'); §239 uses them so. §241 swaps "
+                               "them consistently in five places (this stability, the two conditions and both sides of "
+                               "the ratio of sixteen), the author's slip and not a glyph the scan confuses: misprint, "
+                               "medium (was booked as the scan's at low)."),
         note=claim("the stability about AB is M(EF²D/(μV) − OG)."))
 d.quote("EF-exceeds-AB", "§241", r"$\frac{EF^2.D}{\nu v} > OG$ multo magis erit $\frac{AB^2.D'}{\mu v} > OG$",
         reading=(sp.Subs(AB ** 2 * Dw / (mu * V) - EF ** 2 * Dw / (nu * V), nu, mu), Dw * (AB ** 2 - EF ** 2) / (mu * V)),
@@ -982,47 +994,48 @@ NU_FOR_MU = "euler-229-243/stability-AB-241"
 d.quote("EF-condition-241", "§241", r"cum enim fuerit $\frac{EF^2.D}{\nu v} > OG$",
         reading=(SAB / M + OG, EF ** 2 * Dw / (nu * V)),
         erratum=Erratum("misprint", "medium", r"\frac{EF^2.D}{\mu V} > OG",
-                        "The stability about AB is positive when EF²D/(μV) exceeds OG (§239); §241 writes ν for "
-                        "the number of the longitudinal moment here, the swap of μ and ν booked at its first "
-                        "place ('stability-AB-241': consistent through §241, Euler's).",
+                        r"The stability about AB is positive when $EF^2 D/(\mu V)$ exceeds $OG$ (§239); §241 writes "
+                        r"$\nu$ for the number of the longitudinal moment here, the swap of $\mu$ and $\nu$ booked at "
+                        "its first place ('stability-AB-241': consistent through §241, Euler's).",
                         corrected_reading=(SAB / M + OG, EF ** 2 * Dw / (mu * V)), same_as=NU_FOR_MU,
-                        objection="As at 'stability-AB-241': ν may be Euler's relettering in §241.",
+                        objection=r"As at 'stability-AB-241': $\nu$ may be Euler's relettering in §241.",
                         answer="The condition is the one for the stability about AB just written, whose number §238 "
-                               "calls μ; the same swap as at 'stability-AB-241', running through §241, is Euler's: "
-                               "misprint, medium."),
+                               r"calls $\mu$; the same swap as at 'stability-AB-241', running through §241, is "
+                               "Euler's: misprint, medium."),
         note=claim("the condition for stability about AB is EF²D/(μV) > OG."))
 d.quote("AB-condition-241", "§241", r"multo magis erit $\frac{AB^2.D'}{\mu v} > OG$",
         reading=(SEF / M + OG, AB ** 2 * Dprime / (mu * V)),
         erratum=Erratum("misprint", "medium", r"\frac{AB^2.D}{\nu V} > OG",
-                        "About EF the number is ν (§238: K = AB²D/ν); §241 writes μ, the swap of μ and ν booked "
-                        "at 'stability-AB-241'. The prime of D' is the scan's: D (half the waterplane area) "
-                        "carries none anywhere else, and the same fraction is printed with D in the next "
-                        "sentence.",
+                        r"About EF the number is $\nu$ (§238: $K = AB^2 D/\nu$); §241 writes $\mu$, the swap of $\mu$ "
+                        r"and $\nu$ booked at 'stability-AB-241'. The prime of $D'$ is the scan's: $D$ (half the "
+                        "waterplane area) carries none anywhere else, and the same fraction is printed with $D$ in the "
+                        "next sentence.",
                         corrected_reading=(SEF / M + OG, AB ** 2 * Dw / (nu * V)), same_as=NU_FOR_MU,
-                        objection="As at 'stability-AB-241': μ may be Euler's relettering; and D' may be a mark of "
-                                  "the print (a second area).",
-                        answer="The number of the moment about EF is ν (§238), and §241 swaps the two letters in all"
-                               " five places: Euler's slip, misprint, medium. The prime is a second, smaller fault "
-                               "booked with it, the scan's: D carries no prime anywhere else and the same fraction "
-                               "stands with D in the next sentence."),
+                        objection=r"As at 'stability-AB-241': $\mu$ may be Euler's relettering; and $D'$ may be a mark "
+                                  "of the print (a second area).",
+                        answer=r"The number of the moment about EF is $\nu$ (§238), and §241 swaps the two letters in "
+                               "all five places: Euler's slip, misprint, medium. The prime is a second, smaller fault "
+                               "booked with it, the scan's: $D$ carries no prime anywhere else and the same fraction "
+                               "stands with $D$ in the next sentence."),
         note=claim("the condition for stability about EF is AB²D/(νV) > OG."))
 SIXTEEN = sp.Subs(Kw / Iw, (AB, nu), (4 * EF, mu))            # K/I with AB = 4EF and μ = ν, 'circiter'
 d.quote("ratio-16", "§241", r"$\frac{AB^2.D}{\mu v}$ circiter decies et sexies maius fit quam $\frac{EF^2.D}{\nu v}$",
         reading=(sp.Matrix([Kw / V, Iw / V, SIXTEEN]), sp.Matrix([AB ** 2 * Dw / (mu * V), EF ** 2 * Dw / (nu * V), 16])),
         erratum=Erratum("misprint", "medium", r"\frac{AB^2.D}{\nu V} \text{ circiter decies et sexies maius fit quam } "
                         r"\frac{EF^2.D}{\mu V}",
-                        "The two quantities compared are K/V and I/V, K = AB²D/ν and I = EF²D/μ (§238); the sentence "
-                        "gives AB² the number μ and EF² the number ν, the swap of μ and ν booked at its first place "
-                        "('stability-AB-241'), at its fourth and fifth places. The claim itself stands with either "
-                        "lettering: with AB = 4EF and μ = ν the ratio is 16 (third entry), and the print's ratio is "
-                        "16ν/μ where the right one is 16μ/ν, both 'circiter' 16 as μ and ν 'nullo casu a se "
-                        "inuicem multum discrepant'.",
+                        r"The two quantities compared are $K/V$ and $I/V$, $K = AB^2 D/\nu$ and $I = EF^2 D/\mu$ "
+                        r"(§238); the sentence gives $AB^2$ the number $\mu$ and $EF^2$ the number $\nu$, the swap of "
+                        r"$\mu$ and $\nu$ booked at its first place ('stability-AB-241'), at its fourth and fifth "
+                        r"places. The claim itself stands with either lettering: with $AB = 4EF$ and $\mu = \nu$ the "
+                        r"ratio is $16$ (third entry), and the print's ratio is $16\nu/\mu$ where the right one is "
+                        r"$16\mu/\nu$, both 'circiter' $16$ as $\mu$ and $\nu$ 'nullo casu a se inuicem multum "
+                        "discrepant'.",
                         corrected_reading=(sp.Matrix([Kw / V, Iw / V, SIXTEEN]),
                                            sp.Matrix([AB ** 2 * Dw / (nu * V), EF ** 2 * Dw / (mu * V), 16])),
                         same_as=NU_FOR_MU,
                         objection="The sentence claims a ratio of about sixteen, which holds whichever letter stands "
-                                  "where, since Euler adds that μ and ν hardly differ: the letters do not matter to "
-                                  "what is said.",
+                                  r"where, since Euler adds that $\mu$ and $\nu$ hardly differ: the letters do not "
+                                  "matter to what is said.",
                         answer="The ratio holds, but the letters name the numbers of §238, and here each stands with "
                                "the other's moment, as in the three places before in §241; the places are one fault,"
                                " Euler's swap: misprint, medium, as at 'stability-AB-241'."),
@@ -1041,34 +1054,35 @@ d.quote("V-pyramid", "§243", r"$V > \frac{2}{3}D.CD$", reading=(Vpy, sp.Rationa
         note=claim("V exceeds the pyramid over the waterplane 2D with height CD, (2/3)D·CD."))
 d.quote("V-prism", "§243", r"$V < \frac{2}{3}D.CD$", reading=(Vpr, sp.Rational(2, 3) * Dw * CD),
         erratum=Erratum("transcription", "medium", r"V < 2D.CD",
-                        "The prism of base 2D and height CD has the volume 2D·CD, three times the pyramid; the "
-                        "print repeats the pyramid's 2/3, and V ≈ D·CD of the next sentence lies between the "
-                        "bounds only with 2D·CD. A copied fraction of the transcription or of the composing "
-                        "stick: the correction is proved and the line reads without doubt, the cause is open: "
-                        "medium (was low).", corrected_reading=(Vpr, 2 * Dw * CD),
-                        objection="The repeated 2/3 may be the print's: a compositor's eye skipping to the line "
+                        r"The prism of base $2D$ and height $CD$ has the volume $2D \cdot CD$, three times the "
+                        r"pyramid; the print repeats the pyramid's $2/3$, and $V \approx D \cdot CD$ of the next "
+                        r"sentence lies between the bounds only with $2D \cdot CD$. A copied fraction of the "
+                        "transcription or of the composing stick: the correction is proved and the line reads without "
+                        "doubt, the cause is open: medium (was low).", corrected_reading=(Vpr, 2 * Dw * CD),
+                        objection="The repeated $2/3$ may be the print's: a compositor's eye skipping to the line "
                                   "above, or Euler's own slip, since nothing later is computed from this bound.",
-                        answer="The prism on the base 2D with the height CD has 2D·CD, and V = D·CD of the next "
-                               "sentence lies between the bounds only then; the correction is certain. A fraction "
-                               "copied from the line above is as likely the compositor's as the transcription's, so "
-                               "the cause cannot be told; the printed line itself is read without doubt, which makes "
-                               "it medium, not low (low is for a reading in doubt)."),
+                        answer=r"The prism on the base $2D$ with the height $CD$ has $2D \cdot CD$, and $V = D \cdot "
+                               "CD$ of the next sentence lies between the bounds only then; the correction is certain. "
+                               "A fraction copied from the line above is as likely the compositor's as the "
+                               "transcription's, so the cause cannot be told; the printed line itself is read without "
+                               "doubt, which makes it medium, not low (low is for a reading in doubt)."),
         note=claim("V is less than the prism of the same base and height."))
 d.quote("V-wedge", "§243", r"accipi posse $V = D.CD$", reading=(Vwe, Dw * CD),
         note=claim("the solid of straight lines from the waterplane's rim normal to the keel has V = D·CD."))
 d.quote("stability-CD", "§243", r"prodit $= M(\frac{EF^2}{vCD} - OG)$",
         reading=(M * (Iw / Vwe - OG), M * (EF ** 2 / (V * CD) - OG)),
         erratum=Erratum("transcription", "low", r"= M(\frac{EF^2}{\mu CD} - OG)",
-                        "With V = D·CD, EF²D/(μV) = EF²/(μ·CD): the v left in the denominator is μ (V is gone).",
+                        r"With $V = D \cdot CD$, $EF^2 D/(\mu V) = EF^2/(\mu \cdot CD)$: the $v$ left in the "
+                        r"denominator is $\mu$ ($V$ is gone).",
                         corrected_reading=(M * (Iw / Vwe - OG), M * (EF ** 2 / (mu * CD) - OG)),
-                        objection="The v may be a ν the scan renders as v (as it does in §238, 'μ et v numeros'): "
-                                  "the print would then have EF²/(ν·CD), Euler's own letter of §241 for the number "
-                                  "of the moment about AB, so the fault is his swap booked at 'stability-AB-241' and"
-                                  " not the scan's.",
-                        answer="The correction stands: with V = D·CD the stability about AB is M(EF²/(μ·CD) − OG), "
-                               "and v as the volume would leave V and CD both in the denominator. But the v is as "
-                               "well a ν carried on from §241 as a μ garbled by the scan, so which fault it is "
-                               "cannot be told: lowered to low."),
+                        objection=r"The $v$ may be a $\nu$ the scan renders as $v$ (as it does in §238, '$\mu$ et $v$ "
+                                  r"numeros'): the print would then have $EF^2/(\nu \cdot CD)$, Euler's own letter of "
+                                  "§241 for the number of the moment about AB, so the fault is his swap booked at "
+                                  "'stability-AB-241' and not the scan's.",
+                        answer=r"The correction stands: with $V = D \cdot CD$ the stability about AB is $M(EF^2/(\mu "
+                               r"\cdot CD) - OG)$, and $v$ as the volume would leave $V$ and $CD$ both in the "
+                               r"denominator. But the $v$ is as well a $\nu$ carried on from §241 as a $\mu$ garbled "
+                               "by the scan, so which fault it is cannot be told: lowered to low."),
         note=claim("with V = D·CD the stability about AB is M(EF²/(μ·CD) − OG)."))
 
 
@@ -1077,50 +1091,50 @@ rect_whole = sp.Integral(2 * b, (xx, -a, a))
 d.quote("waterplane-area", "§238", r"Denique sit area sectionis aquae $= z D$",
         reading=(sp.Matrix([rect_whole, Ir]), sp.Matrix([zl * Dr, (2 * b) ** 2 * (rect_whole / zl) / 6])),
         erratum=Erratum("transcription", "high", r"\text{Denique sit area sectionis aquae } = 2D",
-                        "D is half the waterplane area throughout (§212: 'aream ... ponamus = 2D, quam "
-                        "designationem semper ... adhibebimus'; §237: 'D semissim areae sectionis aquae'), and "
-                        "the same sentence's I = EF²D/μ with μ = 6 for the rectangle (§237) needs the area 2D: "
-                        "for the rectangle of §213 the area 4ab is 2·D, and with the area z·D, I = EF²D/6 would "
-                        "give (8/(3z))ab³ instead of (4/3)ab³ (read with the rectangle). No z is defined in the "
-                        "text: the digit 2 read as the letter z; high.",
+                        "$D$ is half the waterplane area throughout (§212: 'aream ... ponamus $= 2D$, quam "
+                        "designationem semper ... adhibebimus'; §237: '$D$ semissim areae sectionis aquae'), and the "
+                        r"same sentence's $I = EF^2 D/\mu$ with $\mu = 6$ for the rectangle (§237) needs the area "
+                        r"$2D$: for the rectangle of §213 the area $4ab$ is $2 \cdot D$, and with the area $z \cdot "
+                        "D$, $I = EF^2 D/6$ would give $(8/(3z))ab^3$ instead of $(4/3)ab^3$ (read with the "
+                        "rectangle). No $z$ is defined in the text: the digit $2$ read as the letter $z$; high.",
                         corrected_reading=(sp.Matrix([rect_whole, Ir]), sp.Matrix([2 * Dr, (2 * b) ** 2 * Dr / 6])),
-                        objection="z may be a number of Euler's own, the area being z times D for a z left open, and"
-                                  " I = EF²D/μ a second definition independent of it.",
-                        answer="No z is defined or used anywhere in the text; §212 names the area 2D 'quam "
+                        objection="$z$ may be a number of Euler's own, the area being $z$ times $D$ for a $z$ left "
+                                  r"open, and $I = EF^2 D/\mu$ a second definition independent of it.",
+                        answer="No $z$ is defined or used anywhere in the text; §212 names the area $2D$ 'quam "
                                "designationem semper ad aream cuiusvis sectionis aquae designandam adhibebimus' and "
-                               "§237 calls D half the area, and with the area zD the rectangle's μ = 6 of §237 would"
-                               " not hold. The digit 2 read as z, a glyph the scan confuses: high."),
+                               r"§237 calls $D$ half the area, and with the area $zD$ the rectangle's $\mu = 6$ of "
+                               "§237 would not hold. The digit $2$ read as $z$, a glyph the scan confuses: high."),
         note=claim("the waterplane has the area 2D (D half of it), I = EF²D/μ and K = AB²D/ν; read with the "
                    "rectangle of §213, for which μ = 6."))
 d.quote("waterplane-area-grows", "§239", r"tum enim non solum area eius $z D$ eo fiet maior",
         reading=(rect_whole, zl * Dr),
         erratum=Erratum("transcription", "high", r"\text{tum enim non solum area eius } 2D \text{ eo fiet maior}",
-                        "The area of the waterplane is 2D (§212, §237, and the sentence of §238 with the same "
-                        "'z D', booked at 'waterplane-area'): the digit 2 read as z. The claim itself holds: at "
-                        "fixed M and V a larger waterplane raises EF²D/(μV) through D and through EF.",
+                        "The area of the waterplane is $2D$ (§212, §237, and the sentence of §238 with the same '$z "
+                        "D$', booked at 'waterplane-area'): the digit $2$ read as $z$. The claim itself holds: at "
+                        r"fixed $M$ and $V$ a larger waterplane raises $EF^2 D/(\mu V)$ through $D$ and through $EF$.",
                         corrected_reading=(rect_whole, 2 * Dr), same_as="euler-229-243/waterplane-area",
-                        objection="As at 'waterplane-area': z may be a number of Euler's.",
-                        answer="The same 'z D' for the area 2D (§212, §237), the digit 2 read as z: high, as at "
-                               "'waterplane-area'."),
+                        objection="As at 'waterplane-area': $z$ may be a number of Euler's.",
+                        answer="The same '$z D$' for the area $2D$ (§212, §237), the digit $2$ read as $z$: high, as "
+                               "at 'waterplane-area'."),
         note=claim("the waterplane's area 2D grows with the waterplane (read with the rectangle of §213)."))
 d.says("stability-EF-named", "§239", r"atque momentum respectu axis latitudinalis", "momentum",
        Is(M * (Kw / V - OG), at={EF: AB, mu: nu}),
        erratum=Erratum("misprint", "high", r"\text{atque stabilitas respectu axis latitudinalis}",
                        "The sentence gives two quantities in parallel, 'stabilitas nauis respectu axis longitudinalis "
-                       "AB = M(EF²D/(μV) − OG) atque momentum respectu axis latitudinalis = M(AB²D/(νV) − OG)'; the "
-                       "second, with the factor M and the term − OG, is the stability about EF (§201, §203), not the "
-                       "moment: the moment of the waterplane about EF is K = AB²D/ν (§238, the sentence before). "
-                       "Read as printed the moment K would equal M(K/V − OG), which it does not (K = 1, M = 2, "
-                       "V = 1, OG = 1/4: K = 1, M(K/V − OG) = 3/2). A scan does not turn 'stabilitas' into 'momentum': "
-                       "a word of the print.",
+                       r"$AB = M(EF^2 D/(\mu V) - OG)$ atque momentum respectu axis latitudinalis $= M(AB^2 D/(\nu V) "
+                       "- OG)$'; the second, with the factor $M$ and the term $-OG$, is the stability about EF (§201, "
+                       r"§203), not the moment: the moment of the waterplane about EF is $K = AB^2 D/\nu$ (§238, the "
+                       "sentence before). Read as printed the moment $K$ would equal $M(K/V - OG)$, which it does not "
+                       "($K = 1$, $M = 2$, $V = 1$, $OG = 1/4$: $K = 1$, $M(K/V - OG) = 3/2$). A scan does not turn "
+                       "'stabilitas' into 'momentum': a word of the print.",
                        corrected_reading=d.reads("stabilitas", Is(M * (Kw / V - OG), at={EF: AB, mu: nu})),
                        objection="'Momentum' may be meant in the older sense of the moment of the righting forces "
                                  "(§194: 'momentum virium … quae ad restituendam nauem tendunt'), which is what "
                                  "the stability measures.",
-                       answer="From §203 on Euler keeps 'momentum' for the waterplane's ∫y²dA (I, K, 'momenta "
-                              "earum figurarum') and 'stabilitas' for M(·/V ± b); the parallel clause of the same "
-                              "sentence and §241 ('stabilitas respectu axis latitudinalis') name this expression "
-                              "the stability."),
+                       answer=r"From §203 on Euler keeps 'momentum' for the waterplane's $\int y^2\, dA$ ($I$, $K$, "
+                              r"'momenta earum figurarum') and 'stabilitas' for $M(\cdot/V \pm b)$; the parallel "
+                              "clause of the same sentence and §241 ('stabilitas respectu axis latitudinalis') name "
+                              "this expression the stability."),
        note=claim("the second quantity of the sentence, M(AB²D/(νV) − OG), is the stability about EF (read "
                   "about the axis EF: AB for EF and ν for μ, so the moment K = AB²D/ν for I = EF²D/μ)."))
 MU_AS_V = "euler-229-243/stability-CD"
@@ -1131,20 +1145,21 @@ for excess_name, locator, excess_excerpt in (
     d.quote(excess_name, locator, excess_excerpt,
             reading=(SAB / M + OG, EF ** 2 * Dw / (V * V)),
             erratum=Erratum("transcription", "low", r"\frac{EF^2.D}{\mu V}",
-                            "The quantity whose excess over OG is the stability about AB is EF²D/(μV) (§239: "
-                            "M(EF²D/(μV) − OG)). Read with v as the volume V (the module's reading of §239–243), 'vv' makes it "
-                            "EF²D/V², not even a length. The v stands for μ, the confusion of μ, ν and v booked "
-                            "at §243's EF²/(v·CD) ('stability-CD'); with V = D·CD the quantity becomes "
-                            "EF²/(μ·CD) there.",
+                            r"The quantity whose excess over $OG$ is the stability about AB is $EF^2 D/(\mu V)$ (§239: "
+                            r"$M(EF^2 D/(\mu V) - OG)$). Read with $v$ as the volume $V$ (the module's reading of "
+                            r"§239–243), '$vv$' makes it $EF^2 D/V^2$, not even a length. The $v$ stands for $\mu$, "
+                            r"the confusion of $\mu$, $\nu$ and $v$ booked at §243's $EF^2/(v \cdot CD)$ "
+                            r"('stability-CD'); with $V = D \cdot CD$ the quantity becomes $EF^2/(\mu \cdot CD)$ "
+                            "there.",
                             corrected_reading=(SAB / M + OG, EF ** 2 * Dw / (mu * V)), same_as=MU_AS_V,
-                            objection="'vv' may be the scan's rendering of 'νv' (it writes ν as v in §238): the "
-                                      "print would then have EF²D/(νV), Euler's letter of §241 for the number of "
-                                      "the moment about AB, and the fault his swap booked at 'stability-AB-241', "
-                                      "not the scan's.",
-                            answer="The correction stands: the quantity whose excess over OG is the stability about "
-                                   "AB is EF²D/(μV), and EF²D/V² is not even a length. But whether the first v is a "
-                                   "ν carried on from §241 or a μ the scan garbled cannot be told: low, as at "
-                                   "'stability-CD'."),
+                            objection=r"'$vv$' may be the scan's rendering of '$\nu v$' (it writes $\nu$ as $v$ in "
+                                      r"§238): the print would then have $EF^2 D/(\nu V)$, Euler's letter of §241 for "
+                                      "the number of the moment about AB, and the fault his swap booked at "
+                                      "'stability-AB-241', not the scan's.",
+                            answer="The correction stands: the quantity whose excess over $OG$ is the stability about "
+                                   r"AB is $EF^2 D/(\mu V)$, and $EF^2 D/V^2$ is not even a length. But whether the "
+                                   r"first $v$ is a $\nu$ carried on from §241 or a $\mu$ the scan garbled cannot be "
+                                   "told: low, as at 'stability-CD'."),
             note=claim("the stability about AB is M times the excess of EF²D/(μV) over OG."))
 d.quote("c-zero-suffices", "§234",
         r"Ponamus esse $c=0$, quia si hoc casu momentum respectu axis EF fuerit cognitum, ex eo idem momentum pro "

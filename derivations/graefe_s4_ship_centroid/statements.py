@@ -251,17 +251,17 @@ d.quote("centroid", "§4 ship displacement centroid",
         erratum=Erratum("consequential", "high",
                         r"x = m \left\{ \frac{a \times 0 + 4b \times 1 + 2c \times 2 + 4d \times 3 + 2e \times 4 + "
                         r"4f \times 5 + g \times 6}{a + 4b + 2c + 4d + 2e + 4f + g} \right\}",
-                        "x = XV / V with XV = m²/3 {...} and V = v' + v'' + v''' = m/3 {a + 4b + ... + g}; the "
-                        "print divides by the V = m {a + 4b + ... + g} printed in §2, where the factor 1/3 of "
-                        "Simpson's rule is lost (graefe-s2-volumes-simpson/simpson-rule): XV / (m {...}) is "
-                        "exactly the printed m/3 {...}. Check: with all sections equal the body is a prism of "
-                        "length 6m, its centroid lies at 3m; the print gives m.",
+                        r"$x = XV / V$ with $XV = m^2/3 \{\dots\}$ and $V = v' + v'' + v''' = m/3 \{a + 4b + \dots"
+                        r" + g\}$; the print divides by the $V = m \{a + 4b + \dots + g\}$ printed in §2, where the "
+                        "factor $1/3$ of Simpson's rule is lost (graefe-s2-volumes-simpson/simpson-rule): "
+                        r"$XV / (m \{\dots\})$ is exactly the printed $m/3 \{\dots\}$. Check: with all sections "
+                        "equal the body is a prism of length $6m$, its centroid lies at $3m$; the print gives $m$.",
                         corrected_reading=Eq(XS, m * (NUM / DEN)),
-                        objection="The printed x = m/3 {...} may be right in the author's own unit, if the factor "
-                                  "1/3 lost in §2 is a convention carried consistently.",
-                        answer="With all sections equal the body is a prism of length 6m, whose centroid lies at 3m "
-                               "from the first section; the print gives m. Whatever the unit, the quotient of the "
-                               "moment by the volume must give 3m there, and it does only with the factor m."))
+                        objection=r"The printed $x = m/3 \{\dots\}$ may be right in the author's own unit, if the "
+                                  "factor $1/3$ lost in §2 is a convention carried consistently.",
+                        answer="With all sections equal the body is a prism of length $6m$, whose centroid lies at "
+                               "$3m$ from the first section; the print gives $m$. Whatever the unit, the quotient of "
+                               "the moment by the volume must give $3m$ there, and it does only with the factor $m$."))
 
 # the sentences that name a slab's volume or its moment about ABC, read from their definitions (the values are
 # the displays that follow each sentence)

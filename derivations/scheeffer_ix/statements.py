@@ -648,23 +648,24 @@ d.quote("one-root-between", "IX.B", r"Zwischen  $z = \infty$  und  $z = 0$  lieg
         reading=(NPOS, 1),
         erratum=Erratum("transcription", "medium",
                         r"Zwischen $z = -\infty$ und $z = 0$ liegt aber nur eine Wurzel",
-                        "As transcribed (between z = +infinity and 0) the sentence is false: F'' = 3z(4z - 3) (138) is "
-                        "negative on (0, 3/4), so F' does not increase there, and F can have three positive roots, as "
-                        "the text itself says for s > 23/32 ('eine oder drei reelle Wurzeln') and tables (161, 162) "
-                        "count: at s = 73/100, n = 251/250 the exact real roots of (136) are -0.7360, 0.5878, 0.7757, "
-                        "0.8724. Between -infinity and 0, where F'' > 0 and F' increases, there is exactly one. The "
-                        "display just above lists z = -infinity, and the next sentence ('zwischen - infinity und 0 ein "
-                        "Minimum', its minus set outside the formula) names the same interval: the minus of -infinity "
-                        "is lost. Medium: most likely the scan (it mangles the same minus a line later), but the print "
-                        "may have dropped it.",
+                        r"As transcribed (between $z = +\infty$ and $0$) the sentence is false: $F'' = 3z(4z - 3)$ "
+                        r"(138) is negative on $(0, 3/4)$, so $F'$ does not increase there, and $F$ can have three "
+                        r"positive roots, as the text itself says for $s > 23/32$ ('eine oder drei reelle Wurzeln') "
+                        r"and tables (161, 162) count: at $s = 73/100$, $n = 251/250$ the exact real roots of (136) "
+                        r"are $-0.7360$, $0.5878$, $0.7757$, $0.8724$. Between $-\infty$ and $0$, where $F'' > 0$ and "
+                        r"$F'$ increases, there is exactly one. The display just above lists $z = -\infty$, and the "
+                        r"next sentence ('zwischen $- \infty$ und $0$ ein Minimum', its minus set outside the "
+                        r"formula) names the same interval: the minus of $-\infty$ is lost. Medium: most likely the "
+                        "scan (it mangles the same minus a line later), but the print may have dropped it.",
                         corrected_reading=(NNEG, 1),
-                        objection="The print may have dropped the minus; or 'zwischen z = ∞ und z = 0' may be the "
-                                  "author's loose way of naming the half-line on the other side of 0.",
-                        answer="On (0, ∞) the sentence is false: F'' = 3z(4z - 3) is negative on (0, 3/4), and the "
-                               "text itself later finds one or three roots there for s > 23/32; its reason, 'F'(z) "
-                               "beständig zunimmt', holds only for z < 0, and the display above lists z = -∞ while "
-                               "the next sentence names '- ∞ und 0', its minus set apart. The lost minus is most "
-                               "likely the scan's, which mangles the same minus a line later: medium."),
+                        objection=r"The print may have dropped the minus; or 'zwischen $z = \infty$ und $z = 0$' may "
+                                  "be the author's loose way of naming the half-line on the other side of $0$.",
+                        answer=r"On $(0, \infty)$ the sentence is false: $F'' = 3z(4z - 3)$ is negative on $(0, 3/4)$, "
+                               r"and the text itself later finds one or three roots there for $s > 23/32$; its reason, "
+                               r"'$F'(z)$ beständig zunimmt', holds only for $z < 0$, and the display above lists "
+                               r"$z = -\infty$ while the next sentence names '$- \infty$ und $0$', its minus set "
+                               "apart. The lost minus is most likely the scan's, which mangles the same minus a line "
+                               "later: medium."),
         note="read at s = 73/100, n = 251/250 (s > 23/32, 1 <= n < n_1): the number of real roots of F in (0, oo)")
 d.quote("positive-whole-region", "IX.B", r"so ist  $F(z)$  für  $n > n_1$  in dem ganzen Gebiet positiv",
         reading=(sp.Matrix([NREG, NRIGHT, SGN1]), sp.Matrix([0, 0, 1])),

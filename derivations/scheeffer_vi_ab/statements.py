@@ -1018,8 +1018,9 @@ d.quote("x-formula", "Example 10", r"x &= b_s + r \operatorname{tg} \varphi",
                         corrected_reading=Eq(xC, b * s + r * tanC),
                         objection=("$b_s$ may be a symbol of the author's for the upright draught, and the formula "
                                    "right in his notation."),
-                        answer=("No $b_s$ is defined in the text; section V calls the same height 'b s' and the next "
-                                "line's 1,5 is 2,5 · 0,6 = b s. The scan sets a lower-case s after b as a subscript "
+                        answer=("No $b_s$ is defined in the text; section V calls the same height '$b s$' and the "
+                                r"next line's $1{,}5$ is $2{,}5 \cdot 0{,}6 = b s$. The scan sets a lower-case $s$ "
+                                "after $b$ as a subscript "
                                 "where the print had a product; a printed subscript cannot be excluded: medium.")))
 x10 = (b * s + r * tanC_e).subs(ex10)
 cons = (r"follows from the angle of Example 10: $r \operatorname{tg}\varphi_1 = 1.6 \cdot 11/32 = 0.55$ with the "
@@ -1071,5 +1072,6 @@ d.quote("ex10-dry-cm", "Example 10", "der ganzen Höhe oder 45 cm",
         erratum=Erratum("consequential", "high", "6 cm (6.2 cm)", cons + r"; $250\,\text{cm} \cdot 0.0248 = 6.2\,\text{cm}$",
                         corrected_reading=(250 * (1 - x10 / sp.Rational(5, 2)), 6),
                         objection="45 cm = 9/50 of 250 cm is right arithmetic.",
-                        answer="Consequential: with the root the dry part of the mantle is 250 cm · 0,0248 = 6 cm; "
+                        answer="Consequential: with the root the dry part of the mantle is "
+                               r"$250\,\text{cm} \cdot 0{,}0248 = 6\,\text{cm}$; "
                                "the 45 cm follows only from the unrooted tangent. High."))

@@ -282,16 +282,17 @@ d.quote("98", "(98)", r"$$\int x y df = \int_2 x y df = 0 \quad (98)$$", reading
 d.quote("95a-split", "VII", r"$$\int x y \cdot = \int_1 x y df - \int_2 x y df$$",
         unreadable="the left member '\\int x y \\cdot' has no measure: an integral sign without its df",
         erratum=Erratum("transcription", "high", r"\int x y \cdot df = \int_1 x y df - \int_2 x y df",
-                        "The left member is the sum of (95a), written 'int x y . df' one display before and 'int x y df' "
-                        "in (96) two displays after; here the df after the dot is missing, so the member is no "
+                        r"The left member is the sum of (95a), written '$\int x y \cdot df$' one display before and "
+                        r"'$\int x y\, df$' in (96) two displays after; here the $df$ after the dot is missing, so the "
+                        "member is no "
                         "formula. A lost token of the scan (the dot it followed survived); the content is the "
-                        "additivity of int x y df over ABCD = AGHCD + BGH, which holds.",
+                        r"additivity of $\int x y\, df$ over $ABCD = AGHCD + BGH$, which holds.",
                         corrected_reading=(Pxy, Pwh - Pw),
-                        objection="'int x y ·' may be the author's abbreviation, the element df understood from the "
-                                  "right member.",
-                        answer="One display before and in (96) two displays after the same member is written 'int x "
-                               "y · df' and 'int x y df' in full; a dot followed by nothing is no notation of the "
-                               "text, and the dot that stood before df survived."),
+                        objection=r"'$\int x y \cdot$' may be the author's abbreviation, the element $df$ understood "
+                                  "from the right member.",
+                        answer=r"One display before and in (96) two displays after the same member is written "
+                               r"'$\int x y \cdot df$' and '$\int x y\, df$' in full; a dot followed by nothing is no "
+                               "notation of the text, and the dot that stood before $df$ survived."),
         note="int_2 over BGH still from N")
 d.quote("regular-Ps", "VII", r"so ist nach Abschnitt V auch  $\int_s x y df = 0$",
         reading=(sp.Subs(sp.Rational(1, 2) * (sp.Symbol("T_x") - sp.Symbol("T_y")) * sp.sin(2 * sp.Symbol("omega"))
