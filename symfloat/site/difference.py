@@ -1,9 +1,10 @@
 r"""What a correction changes: the corrected TeX with the parts that differ from the printed TeX marked,
 and the correction rendered (:func:`corrected_html`).
 
-The two formulas are cut into TeX tokens (a command, a number, a letter, any other character), their
-words (a ``\text{...}`` group, a printed excerpt's prose between its ``$...$`` or a printed sentence) into whole words: a
-changed letter marks its word, never a piece of it.  The of the correction that the print does not have, or has otherwise (:class:`difflib.SequenceMatcher`
+The two formulas are cut into TeX tokens (a command, a number, a letter, any other character), and
+their words (a ``\text{...}`` group, a printed excerpt's prose around its ``$...$``, a printed sentence)
+into whole words, so that a changed letter marks its word, never a piece of it.  The runs of the
+correction that the print does not have, or has otherwise (:class:`difflib.SequenceMatcher`
 on the tokens, spaces ignored), are wrapped in ``\htmlClass{changed}{...}``, which KaTeX sets as a
 ``<span class="changed">`` (the stylesheet frames and shades it).  A run is marked only where it
 is a whole TeX group: balanced braces, no ``&``, ``\\``, ``\left``, ``\right``, ``\begin`` or
