@@ -69,7 +69,8 @@ _ROMAN = ("I", "II", "III", "IV", "V", "VI", "VII", "VIII", "IX", "X", "XI", "XI
 
 _TOKEN = re.compile(r"""
     (?P<space>[ ]+)
-  | (?P<locator>(?<![^\s])\(\d{1,3}[a-z]?(?:[ ]?[-–,][ ]?\d{1,3}[a-z]?)*\)(?![\w(/^*²³]))       # (123), (164a-166)
+  | (?P<locator>(?<![^\s])\(\d{1,3}[a-z]?(?:[ ]?[-–,][ ]?\d{1,3}[a-z]?)*\)(?:/\(\d{1,3}[a-z]?\))*(?![\w(/^*²³]))
+                                                                        # (123), (164a-166), (77)/(78a)
   | (?P<degrees>(?:(?<=\d)|(?<=\d[ ]))deg\b)                                        # 45 deg
   | (?P<starred>\b[A-Za-z]+\*(?![\w(*]))                                           # omega*, s*
   | (?P<compound>\b[A-Za-z]-(?!(?:sin|cos|tan|cot|log|exp|sqrt)\b)[a-z]{3,}\b)        # n-gon, x-axis: a word

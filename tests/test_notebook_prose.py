@@ -54,6 +54,8 @@ def test_the_check_sees_a_name_set_as_letters():
     # Scheeffer IX: an equation number is the source's, not a factor (read "6s(1-s)(123)" and "2(164a - 166)")
     ("(a/b)^2 > 6s(1 - s) (123); cot^2 phi_3 = 2 (164a-166)", r"$(a/b)^{2} > 6s(1 - s)$ (123)"),
     ("cot^2 phi_3 = 12(a/b)^2 s(1-s) - 2 (164a-166), and x = D/(2a)", r"- 2$ (164a-166), and $x = D/(2a)$"),
+    # two equation numbers joined by a slash (Scheeffer VI.C-F's "(77)/(78a)") name two places, not a quotient
+    ("its bounds are those of (77)/(78a), (1 - s)(7s - 1) for s > 1/2", "those of (77)/(78a), $(1 - s)(7s - 1)"),
     # Euler §§229-243 writes κ, ⁿ and braced exponents: one formula each, not pieces between words
     ("x = a + Y ± a(1 − yⁿ/bⁿ)^κ", r"$x = a + Y \pm a(1 - y^{n}/b^{n})^{\kappa }$"),
     ("Y = c_1 yⁿ/bⁿ + c_2 y²ⁿ/b²ⁿ", r"y^{2n}/b^{2n}$"),
