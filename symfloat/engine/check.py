@@ -38,8 +38,8 @@ from .proofs import ProofBook
 from .relation import check_relation
 from .witness import record_decision, undecided_reason
 
-__all__ = ["StepReport", "FormulaReport", "DerivationReport", "check_derivation", "judge", "step_failure",
-           "rejudged", "Unsound"]
+__all__ = ["StepReport", "FormulaReport", "DerivationReport", "check_derivation", "carried_out", "judge",
+           "step_failure", "rejudged", "Unsound"]
 
 
 @dataclass
@@ -124,17 +124,17 @@ def _substitute(expr, results):
 def _evaluated(expr):
     """*expr* with its arithmetic carried out: a reading keeps the print's arithmetic
     unevaluated (``evaluate=False``, ``UnevaluatedExpr``) until it is compared.  A SymPy expression
-    is carried out once (:func:`_carried_out`): a printed formula's members are met again by the
+    is carried out once (:func:`carried_out`): a printed formula's members are met again by the
     witnesses' readings, by the next link of a chain and by every edit the correction search tries."""
     if isinstance(expr, sp.Basic):
-        return _carried_out(expr)
+        return carried_out(expr)
     if isinstance(expr, sp.MatrixBase):         # a vector's components, each carried out once
-        return expr.applyfunc(_carried_out)
+        return expr.applyfunc(carried_out)
     return expr.doit() if hasattr(expr, "doit") else expr
 
 
 @lru_cache(maxsize=8192, typed=True)
-def _carried_out(expr):
+def carried_out(expr):
     """``expr.doit()``, once per expression (SymPy expressions are immutable and ``doit`` gives the same
     result every time); an integral over a quarter of a circle or an ellipse closed by the Beta function first
     (:func:`~symfloat.engine.beta_integral.beta_closed`: SymPy takes a third of a second for each)."""

@@ -37,7 +37,7 @@ from functools import cache
 import mpmath
 import sympy as sp
 
-from ..engine.check import _carried_out
+from ..engine.check import carried_out
 from ..model.claim import members
 from ..model.latex import RULES, Unreadable, canonical, read
 from ..model.source import SOURCES
@@ -89,9 +89,9 @@ def _hand_rows(reading):
     if any(getattr(m, "has", lambda *a: False)(sp.Subs, sp.Limit, sp.Derivative) for m in ms):
         return "restated"
     if all(isinstance(m, sp.MatrixBase) and m.shape[1] == 1 for m in ms) and len({m.shape for m in ms}) == 1:
-        return [[_carried_out(m[i]) for m in ms] for i in range(ms[0].shape[0])]
+        return [[carried_out(m[i]) for m in ms] for i in range(ms[0].shape[0])]
     if all(isinstance(m, sp.Expr) and not isinstance(m, sp.MatrixBase) for m in ms):
-        return [[_carried_out(m) for m in ms]]
+        return [[carried_out(m) for m in ms]]
     return None
 
 
