@@ -1,22 +1,30 @@
 # Two entry points: `make run` (the main job) and `make test` (the tests).
-# Both create the local virtual environment .venv on first use.
+# Both create the local virtual environment .venv on first use (`make test` adds the test tools to it).
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
+TEST_STAMP := $(VENV)/.installed-test
 KATEX := node_modules/.installed
 
 .PHONY: run test clean
 
 $(STAMP): pyproject.toml setup.py symfloat/geometry/_clipped.c
-	@echo "make: creating $(VENV) and installing symfloat with its dependencies (once; a few minutes)"
+	@echo "make: creating $(VENV) and installing symfloat with what the main job needs (once; about half a minute)"
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	@echo "make: pip is installing sympy, mpmath, numpy, matplotlib, nbclient and the test tools ..."
-	$(BIN)/python -m pip install --quiet -e '.[test]'
+	@echo "make: pip is installing sympy, mpmath, python-flint, numpy, matplotlib, nbclient ..."
+	$(BIN)/python -m pip install --quiet -e .
 	$(BIN)/python -c "from symfloat.report.notebook_html import install; install()"
 	touch $(STAMP)
 	@echo "make: $(VENV) is ready"
+
+# The tests' own tools, added to the same environment by the first `make test`: pytest with xdist and
+# hypothesis, Sphinx and MyST-NB for the site, Dask and pyarrow for the atlas, Playwright for the browser.
+$(TEST_STAMP): $(STAMP)
+	@echo "make: pip is adding the test tools (pytest, hypothesis, Sphinx, MyST-NB, Dask, pyarrow, Playwright) ..."
+	$(BIN)/python -m pip install --quiet -e '.[test]'
+	touch $(TEST_STAMP)
 
 # KaTeX, which typesets the site's mathematics at build time (symfloat/site/typeset.py), pinned by
 # package-lock.json; without node the site's tests skip and say why.
@@ -28,7 +36,7 @@ run: $(STAMP)
 	@echo "make: symfloat run checks every derivation (finished checks are cached) and writes every record; one line per derivation follows"
 	$(BIN)/symfloat run
 
-test: $(STAMP) $(KATEX)
+test: $(TEST_STAMP) $(KATEX)
 	$(BIN)/python -m pytest -q -n 2 --dist loadfile
 
 clean:
