@@ -64,6 +64,8 @@ def test_the_document_names_sources_derivations_and_formulas_in_words(quick_docs
     assert "| Sphere, paraboloid, ellipsoid and Simpson's rule from the prismatoid formula | " \
            "$\\int \\pi (r^{2} - (z - r)^{2}) dz$ over the diameter | $\\pi \\left(1 - \\left(z - 1\\right)^{2}\\right)$ |" in text
     assert "factored: $- \\frac{g l \\varrho \\left(\\varrho - 1\\right)}{2}$" in text
+    # numbers as a reader writes them, with powers of ten, never a program's 1.2e-15 (every table of the document)
+    assert not re.findall(r"\d\.?\d*e[-+]\d", shown) and re.search(r"\d × 10[⁻⁰-⁹¹²³]+ \|", shown)
 
 
 def test_a_formula_in_a_table_cell_keeps_its_bars_out_of_the_tables_syntax():

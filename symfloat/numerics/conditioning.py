@@ -20,6 +20,7 @@ import mpmath
 from ..solver import make_scene, solve
 from ..solver.symmetry import symmetry_group
 from ..solver.refine import angle_between, refine_planar, refine_sphere
+from .report import scientific
 
 __all__ = ["Case", "CASES", "Row", "conditioning_rows", "conditioning_markdown"]
 
@@ -152,7 +153,7 @@ def conditioning_markdown(rows) -> str:
              "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append(f"| {r.case} | {r.closed_form} | {_power(r.delta)} | {r.tilt_deg:.6f} | {r.stability} | "
-                     f"{r.true_error:.1e} | {r.reported:.1e} | {HOW[r.method]} | "
+                     f"{scientific(r.true_error)} | {scientific(r.reported)} | {HOW[r.method]} | "
                      f"{'yes' if r.bounded else 'NO'} |")
     bounded = sum(r.bounded for r in rows)
     lines += ["", f"The reported error bounds the true error in {bounded} of {len(rows)} rows.", "", PITCHFORK_THRESHOLDS, "",
@@ -167,16 +168,16 @@ PITCHFORK_THRESHOLDS = (   # docs/numerics.md section 4: what was wrong next to 
     "the edge-up section, (4/3)√s − √2/2, vanishes there; Scheeffer IX's 23/32 read with 1 − s) at a "
     "distance 1.9 √(9/32 − s) rad from it. Past the fork Newton's method within the tilted position's "
     'mirror lands on the now stable edge-up position only to the rounding of the gradient over its soft '
-    'eigenvalue (7e-10 rad where that eigenvalue is 1.3e-7, 1e-7 past the fork), which a label tolerance '
-    'of 1e-9 took for a tilted position: the bisection ran 5e-8 to 1e-7 past the fork, from three '
-    'brackets three different values, each claimed to 4e-14, none with a dual. Now a tracked point within '
-    '1e-6 rad of a more symmetric equilibrium that is stable is that equilibrium (a stable child beside a '
-    'stable parent would need a third equilibrium between them), and a branch that ends within 1e-2 rad '
+    'eigenvalue (7 × 10⁻¹⁰ rad where that eigenvalue is 1.3 × 10⁻⁷, 10⁻⁷ past the fork), which a label tolerance '
+    'of 10⁻⁹ took for a tilted position: the bisection ran 5 × 10⁻⁸ to 10⁻⁷ past the fork, from three '
+    'brackets three different values, each claimed to 4 × 10⁻¹⁴, none with a dual. Now a tracked point within '
+    '10⁻⁶ rad of a more symmetric equilibrium that is stable is that equilibrium (a stable child beside a '
+    'stable parent would need a third equilibrium between them), and a branch that ends within 10⁻² rad '
     "of a more symmetric one ends at that parent's pitchfork, where the parent's soft eigenvalue crosses "
     "zero: a simple crossing on a branch that exists on both sides, found by Newton's method on λ(s) to "
-    "its stated error (9/32 ± 3e-14 and 23/32 ± 8e-14, each the other's dual). The tracking follows the "
-    "child to within about 1e-13 of the fork, where it is 6e-7 rad off the diagonal and Newton's method "
-    'in float64 resolves it only to a few 1e-6 rad on the flat potential (at 1e-9: 6e-5 rad, resolved); '
+    "its stated error (9/32 ± 3 × 10⁻¹⁴ and 23/32 ± 8 × 10⁻¹⁴, each the other's dual). The tracking follows the "
+    "child to within about 10⁻¹³ of the fork, where it is 6 × 10⁻⁷ rad off the diagonal and Newton's method "
+    'in float64 resolves it only to a few 10⁻⁶ rad on the flat potential (at 10⁻⁹: 6 × 10⁻⁵ rad, resolved); '
     'the threshold comes from the parent and does not depend on that. What it costs: `symfloat phase box '
     '--dims 1,1,4` (48 densities) about 40 processor-seconds, as before the fix.')
 
@@ -186,22 +187,22 @@ RING_SEEDS = (   # docs/numerics.md section 4: the ring of the long square log's
     '12d(4 − d) − 2, d = 4s), inside the first ring of seeds (9°); its index is 0, so the sum closed '
     'without it and `scene` exited 0 with no stable ring. A ring of index 0 is seen by no index sum, so '
     'the search does not wait for one: an isolated point whose two eigenvalues are equal (its Hessian '
-    'isotropic by the symmetry of the axis) and below 1e-2 times the size triggers the second search, '
-    'whose seeds go from it every 30° at 1e-3 … 0.1 rad. Past (96 − √8768)/224 = 0.0105464, where the '
+    'isotropic by the symmetry of the axis) and below 10⁻² times the size triggers the second search, '
+    'whose seeds go from it every 30° at 10⁻³ … 0.1 rad. Past (96 − √8768)/224 = 0.0105464, where the '
     "ring's diagonal points reach a bottom vertex, the ring keeps arcs about the faces' directions (to "
     '(96 − √8704)/256 = 0.0105655), and between them, as in the cube past (3 − √2)/7, a stable class and '
     'a saddle class on the diagonal mirror live up to a fold at about 0.0105474 (a scan of the gradient '
     'along the mirror): the scene finds the ring at 0.01054, the arcs with both diagonal classes at '
     "0.010547 and the arcs at 0.01056 (before: index sum 10, exit 1), each ring's tilt equal to atan m to"
-    ' 1e-9 rad (held by a test). These seeds find the diagonal window; the index sum, the arcs '
+    ' 10⁻⁹ rad (held by a test). These seeds find the diagonal window; the index sum, the arcs '
     'counted with the winding round them (−1 each, below), confirms it. How close to the vertex event this '
-    'stays right (densities s and 1 − s, both solved): from 0.0105466, 2e-7 past it, to the fold both '
+    'stays right (densities s and 1 − s, both solved): from 0.0105466, 2 × 10⁻⁷ past it, to the fold both '
     'sides give the arcs and both diagonal classes (before: from 0.0105468; at 1 − 0.0105466 the walk '
     'along an arc crossed the gap the diagonal classes open in the ring and took in the stable one, exit '
     '0); at 0.0105465 the walk on the 1 − s side still crosses it and reports the ring closed, with the '
     'stable and the saddle diagonal classes inside it, whose indices cancel (+8 − 8): no index sum sees '
     'that, not fixed. A sum that still fails names the positions next to a bifurcation (smallest '
-    'eigenvalue below 1e-2 of the size) and the families with their indices in its message.')
+    'eigenvalue below 10⁻² of the size) and the families with their indices in its message.')
 
 FAMILY_INDEX = (   # docs/numerics.md section 4: the index check with families (symfloat/solver/families.py)
     'The index check with families: a ring or an arc of equilibria used to switch the '
@@ -216,16 +217,16 @@ FAMILY_INDEX = (   # docs/numerics.md section 4: the index check with families (
     'the check cannot be made (an error). A transversally stable arc counts +1 where the potential rises '
     'past both its ends, −1 where it falls past both, 0 where it rises past one: the box 1 × 3/2 × 1 at '
     "0.081949 has eight arcs about the faces' directions round y, each −1 (8° past an arc's end the "
-    'potential is 3.5e-10 below the arc), and between them the stable diagonal class (+8). The sum, '
+    'potential is 3.5 × 10⁻¹⁰ below the arc), and between them the stable diagonal class (+8). The sum, '
     'families included, must be 2; when it is not, the search goes on next to every family (from up to 24 '
-    'of its walked points 1e-3 … 3e-2 rad across it, along it past an arc\'s ends out to 6e-2 rad, a '
-    "closed ring's axis), then by continuation from s ± 1e-4 s(1 − s) and from the dual scene (its "
+    'of its walked points 10⁻³ … 3 × 10⁻² rad across it, along it past an arc\'s ends out to 6 × 10⁻² rad, a '
+    "closed ring's axis), then by continuation from s ± 10⁻⁴ s(1 − s) and from the dual scene (its "
     'equilibria at 1 − s turned upside down); a sum that still fails is an error naming the '
     'families. Two changes to the walk let the sum close: a step along a family (and the test that a '
     'point lies on one) needs the middle of the chord, settled across the family by Newton\'s method, to '
     "be an equilibrium of the family's potential within a quarter of the chord (across a gap the gradient "
     'along the family does not vanish); and a soft point of the potential of a family is dropped as one '
-    'of its points only where it lies on the walked family (Newton\'s method unresolved: within 1e-2 rad '
+    'of its points only where it lies on the walked family (Newton\'s method unresolved: within 10⁻² rad '
     'of it), where before any such point was. The three scenes it was built for: the box 1 × 3/2 × 1 at '
     '0.918051 (was exit 0 with 6 classes, the atlas\'s failed duality) finds the stable diagonal class at '
     '(0.123210, 0.984702, 0.123210), as its dual 0.081949; the long square log at 1 − 0.0105466 keeps its '
@@ -243,7 +244,7 @@ FAMILY_INDEX = (   # docs/numerics.md section 4: the index check with families (
 IX_TRIPLE_ROOT = (   # docs/numerics.md section 4: Scheeffer IX's predictor next to the triple root of (136)
     "Scheeffer IX's predictor next to its triple root: at n = 1 the printed quartic (136) factors as (z² "
     '− 2σ)(z² − 3z/2 + 2σ), and at s = 23/32 its three positive roots are the triple root 3/4, which '
-    "numpy's polynomial roots returned 1.5e-8 off (a root of multiplicity k is perturbed by the k-th root of the "
+    "numpy's polynomial roots returned 1.5 × 10⁻⁸ off (a root of multiplicity k is perturbed by the k-th root of the "
     "rounding), so the tables' threshold of the box 1 × 1 × 4 read 0.2812500189990 instead of 9/32. The "
     "roots now come from the factors at n = 1 and are polished by Newton's method at 40 digits elsewhere "
-    '(linear convergence at a double root, 200 steps at most): the threshold reads 9/32 to 3e-16.')
+    '(linear convergence at a double root, 200 steps at most): the threshold reads 9/32 to 3 × 10⁻¹⁶.')

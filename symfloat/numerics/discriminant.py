@@ -36,6 +36,7 @@ import sympy as sp
 
 from ..model.myst import inline
 from ..prose import typeset
+from .report import scientific, written
 
 UNIT_ROUNDOFF = 2.0 ** -53
 CATASTROPHIC_DIGITS = 6.0
@@ -249,9 +250,10 @@ def table_markdown(rows: list[Row] | None = None) -> str:
              "|---|---|---|---|---|---|---|---|"]
     for r in worst_rows(rows).values():
         lines.append(_md_row(r))
-    lines += ["", f"Max relative error of the stable forms over the sweep: {max(r.stable_error for r in rows):.2e}.",
+    worst = max(r.stable_error for r in rows)
+    lines += ["", f"Max relative error of the stable forms over the sweep: {scientific(worst, 3)}.",
               rf"Digits lost = $\log_{{10}}$(error / $2^{{-53}}$); more than {CATASTROPHIC_DIGITS:g} is flagged "
-              r"**catastrophic**; an error inf means the float64 radicand $S^2 - 4$ rounded negative (no real value, "
+              r"**catastrophic**; an error ∞ means the float64 radicand $S^2 - 4$ rounded negative (no real value, "
               "all digits lost).",
               "", "| form | locator | point | $s$ | distance | printed rel. error | stable rel. error | digits lost |",
               "|---|---|---|---|---|---|---|---|"]
@@ -263,5 +265,5 @@ def _md_row(r: Row) -> str:
     flag = " **catastrophic**" if r.catastrophic else ""
     form = f"${r.form}$" if len(r.form) == 1 else typeset(r.form)        # S, n_1, 1 - t: typeset
     return (f"| {inline(form, None, cell=True)} | {r.locator} | {inline(typeset(r.point), None, cell=True)} "
-            f"| {r.s!r} | {r.distance:+.0e} | {r.printed_error:.2e} | "
-            f"{r.stable_error:.2e} | {r.digits_lost:.1f}{flag} |")
+            f"| {written(r.s)} | {'+' if r.distance > 0 else ''}{scientific(r.distance, 1)} | "
+            f"{scientific(r.printed_error, 3)} | {scientific(r.stable_error, 3)} | {r.digits_lost:.1f}{flag} |")

@@ -31,7 +31,8 @@ from .conditioning import CASES, conditioning_markdown, conditioning_rows
 from .discriminant import table_markdown as discriminant_markdown
 from .forms import CATASTROPHIC, STABLE_TOLERANCE, evaluate, forms, scan
 from .orders import HEELS, PANELS, convergence_witnesses, gauss_legendre_degrees, kink_study, registry_orders
-from .report import (THRESHOLDS, cheapest, family_figure, fingerprint, fmt_err, fmt_proven, fmt_time,
+from .report import (THRESHOLDS, cheapest, family_figure, fingerprint, fmt_err, fmt_proven, fmt_time, scientific,
+                     written,
                      method_rows, write_png_if_changed)
 from .route_bench import ROUTE_FAMILY
 
@@ -229,7 +230,7 @@ def _section_bench(bench, figures):
         ms = [m for m in bench.measurements if m.source == source]
         lines += [f"#### {_source(source)}", "", _table(head, _rows(ms)), ""]
     lines += ["### Cheapest method per formula", "",
-              "The fastest method whose relative error is within 1e-12 and 1e-30 "
+              f"The fastest method whose relative error is within {' and '.join(map(written, THRESHOLDS))} "
               "(methods compared by their median time over the witness family; among those within a factor 2 "
               "of the fastest, the lowest precision and fewest nodes, so that timing noise does not change the "
               "choice); the time shown is that of the witness whose method it is; "
@@ -246,7 +247,8 @@ def _section_bench(bench, figures):
                 b = best[t][key]
                 cells.append("none" if b is None else f"{b[0]}, {fmt_time(b[2])}")
             rows.append(cells)
-        lines += [f"#### {_source(source)}", "", _table(("formula", "reference", "≤ 1e-12", "≤ 1e-30"), rows), ""]
+        head = ("formula", "reference", *(f"≤ {written(t)}" for t in THRESHOLDS))
+        lines += [f"#### {_source(source)}", "", _table(head, rows), ""]
     return lines
 
 
@@ -332,8 +334,8 @@ def _section_forms(selector, progress):
              "Each closed form is evaluated as printed in float64 and at 50 digits (the same float64 inputs, taken "
              r"exactly), over the sweeps shown. 'digits lost' is $\log_{10}$(worst relative error / $2^{-53}$); more "
              "than 6 is "
-             f"flagged catastrophic (relative error above {CATASTROPHIC:.1e}). Each flagged form has a stable "
-             f"equivalent, tested to stay within {STABLE_TOLERANCE:g} over every sweep.", ""]
+             f"flagged catastrophic (relative error above {scientific(CATASTROPHIC)}). Each flagged form has a stable "
+             f"equivalent, tested to stay within {written(STABLE_TOLERANCE)} over every sweep.", ""]
     rows = []
     for f in forms():
         r = evaluate(f)
@@ -342,7 +344,7 @@ def _section_forms(selector, progress):
             st = r.stable.get(label)
             rows.append((_cell(f.name), _place(f.locator), _cell(label), fmt_err(e), f"{lost:.1f}",
                          "**yes**" if e > CATASTROPHIC else "no",
-                         ", ".join(f"{v:.17g}" for v in p) if p else "",
+                         ", ".join(written(v) for v in p) if p else "",
                          _cell(f.stable_text) if f.stable_text else "—", fmt_err(st[0]) if st else "—"))
     lines += [_table(("form", "where", "sweep", "worst rel. error (printed)", "digits lost", "catastrophic",
                       "worst at", "stable form", "worst rel. error (stable)"), rows), ""]
@@ -360,7 +362,7 @@ def _section_forms(selector, progress):
               _table(("derivation", "formula", "form as stored", "worst rel. error", "at density", "stable rewrite",
                       "its worst rel. error"),
                      [(_cell(_derivation(r.derivation)), _formula(f"{r.derivation}/{r.formula}"),
-                       _cell(f"${latex(r.expr)}$"), fmt_err(r.worst), f"{r.at:.17g}",
+                       _cell(f"${latex(r.expr)}$"), fmt_err(r.worst), written(r.at),
                        r.rewrite and _cell(f"{_REWRITES[r.rewrite]}: ${latex(getattr(sp, r.rewrite)(r.expr))}$")
                        or "none found",
                        fmt_err(r.rewrite_worst) if r.rewrite else "—") for r in flagged]), ""]

@@ -22,7 +22,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from PIL import Image  # noqa: E402
 
 __all__ = ["pareto", "method_rows", "cheapest", "family_figure", "write_png_if_changed", "fmt_time",
-           "fmt_err", "fmt_proven", "FLOOR"]
+           "fmt_err", "fmt_proven", "scientific", "written", "FLOOR"]
 
 FLOOR = 1e-110   # exact results are plotted here
 THRESHOLDS = (1e-12, 1e-30)
@@ -33,13 +33,52 @@ def fmt_time(seconds: float) -> str:
     return f"{seconds * 1e3:.2f} ms" if seconds < 1 else f"{seconds:.2f} s"
 
 
+_SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def _power(mantissa: str, exponent: int) -> str:
+    if exponent == 0:
+        return mantissa
+    power = "10" + str(exponent).translate(_SUPERSCRIPTS)
+    return power if mantissa == "1" else "-" + power if mantissa == "-1" else f"{mantissa} × {power}"
+
+
+def scientific(x: float, digits: int = 2) -> str:
+    """*x* to *digits* significant digits as a reader writes it, with a power of ten where it has one.
+
+    >>> scientific(1.234e-15), scientific(-0.5, 1), scientific(2.5), scientific(0.0), scientific(math.inf)
+    ('1.2 × 10⁻¹⁵', '-5 × 10⁻¹', '2.5', '0', '∞')
+    """
+    if x == 0:
+        return "0"
+    if not math.isfinite(x):
+        return "∞" if x > 0 else "-∞" if x < 0 else "undefined"
+    mantissa, exponent = f"{x:.{digits - 1}e}".split("e")
+    return _power(mantissa, int(exponent))
+
+
+def written(x: float) -> str:
+    """A float as Python writes it shortest (the digits that tell it from its neighbours), its power of ten as a
+    reader writes it.
+
+    >>> written(1e-12), written(1 - 1e-16), written(0.75), written(1.5e-8), written(1.0000000000000004e-05)
+    ('10⁻¹²', '0.9999999999999999', '0.75', '1.5 × 10⁻⁸', '1.0000000000000004 × 10⁻⁵')
+    """
+    text = repr(float(x))
+    if "e" not in text:
+        return text
+    mantissa, exponent = text.split("e")
+    return _power(mantissa, int(exponent))
+
+
 def fmt_err(e) -> str:
-    """An error as ``1.2e-15``; ``failed`` where the method raised, ``no bound`` for a ball that is not finite."""
+    """An error as ``1.2 × 10⁻¹⁵``; ``failed`` where the method raised, ``no bound`` for a ball that is not
+    finite."""
     if e is None:
         return "failed"
     if e == math.inf:
         return "no bound"
-    return "0" if e == 0 else f"{e:.1e}"
+    return scientific(e)
 
 
 def fmt_proven(n, total) -> str:
