@@ -121,6 +121,36 @@ def test_notebooks_are_stamped_with_their_present_inputs(all_reports):
     assert sorted(p.stem for p in (ROOT / "notebooks").glob("*.ipynb")) == sorted(ids)
 
 
+def test_the_notebook_stamp_changes_with_every_report_module_a_notebook_is_built_from(monkeypatch):
+    # the stamp once left out the witness tables' words (report/witness_words.py): their numbers changed form and
+    # `make run`, seeing every stamp current, left every notebook with the old tables.  Each module of
+    # symfloat/report that the notebook builder imports, directly or through another (read from the sources'
+    # relative imports), is changed by a byte as read, and the stamp must change
+    import ast
+    report = ROOT / "symfloat" / "report"
+    seen, todo = set(), ["notebooks"]
+    while todo:
+        name = todo.pop()
+        if name in seen or not (report / f"{name}.py").is_file():
+            continue
+        seen.add(name)
+        for node in ast.walk(ast.parse((report / f"{name}.py").read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom) and node.level == 1 and node.module:
+                todo.append(node.module.split(".")[0])
+    assert {"notebook_view", "witness_words", "numbers"} <= seen
+    keys = {"graefe-s2-volumes-simpson": "k"}
+    before = notebook_stamp("graefe-s2-volumes-simpson", keys)
+    raw = Path.read_bytes
+    missed = []
+    for name in sorted(seen - {"stamp"}):          # the digest itself makes no notebook
+        f = report / f"{name}.py"
+        monkeypatch.setattr(Path, "read_bytes", lambda self, f=f: raw(self) + b"#" * (self.resolve() == f))
+        if notebook_stamp("graefe-s2-volumes-simpson", keys) == before:
+            missed.append(name)
+        monkeypatch.undo()
+    assert missed == []
+
+
 # two cheap notebooks to build (2.4 s and 3.0 s at load 16, against 9 to 17 s for Scheeffer VI.C-F's) that still
 # take most kinds of cell: printed formulas refuted at a point and corrected, readings kept as printed
 # (evaluate(False)), proof strategies cancel, expand and simplify, integrals carried out at a point (hasab)

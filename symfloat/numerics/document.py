@@ -26,13 +26,13 @@ from ..model.source import SOURCES
 from ..model.span import math_spans, widened
 from ..model.symbol_names import latex
 from ..registry import manifest, statements
+from ..report.numbers import scientific, written
 from .bench import FAMILIES, Bench, run_bench
 from .conditioning import CASES, conditioning_markdown, conditioning_rows
 from .discriminant import table_markdown as discriminant_markdown
 from .forms import CATASTROPHIC, STABLE_TOLERANCE, evaluate, forms, scan
 from .orders import HEELS, PANELS, convergence_witnesses, gauss_legendre_degrees, kink_study, registry_orders
-from .report import (THRESHOLDS, cheapest, family_figure, fingerprint, fmt_err, fmt_proven, fmt_time, scientific,
-                     written,
+from .report import (THRESHOLDS, cheapest, family_figure, fingerprint, fmt_err, fmt_proven, fmt_time,
                      method_rows, write_png_if_changed)
 from .route_bench import ROUTE_FAMILY
 

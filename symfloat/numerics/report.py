@@ -21,8 +21,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from PIL import Image  # noqa: E402
 
+from ..report.numbers import scientific  # noqa: E402
+
 __all__ = ["pareto", "method_rows", "cheapest", "family_figure", "write_png_if_changed", "fmt_time",
-           "fmt_err", "fmt_proven", "scientific", "written", "FLOOR"]
+           "fmt_err", "fmt_proven", "FLOOR"]
 
 FLOOR = 1e-110   # exact results are plotted here
 THRESHOLDS = (1e-12, 1e-30)
@@ -31,44 +33,6 @@ THRESHOLDS = (1e-12, 1e-30)
 def fmt_time(seconds: float) -> str:
     """``0.25 ms`` or ``1.20 s`` (the timing forms write_if_changed ignores)."""
     return f"{seconds * 1e3:.2f} ms" if seconds < 1 else f"{seconds:.2f} s"
-
-
-_SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
-
-
-def _power(mantissa: str, exponent: int) -> str:
-    if exponent == 0:
-        return mantissa
-    power = "10" + str(exponent).translate(_SUPERSCRIPTS)
-    return power if mantissa == "1" else "-" + power if mantissa == "-1" else f"{mantissa} × {power}"
-
-
-def scientific(x: float, digits: int = 2) -> str:
-    """*x* to *digits* significant digits as a reader writes it, with a power of ten where it has one.
-
-    >>> scientific(1.234e-15), scientific(-0.5, 1), scientific(2.5), scientific(0.0), scientific(math.inf)
-    ('1.2 × 10⁻¹⁵', '-5 × 10⁻¹', '2.5', '0', '∞')
-    """
-    if x == 0:
-        return "0"
-    if not math.isfinite(x):
-        return "∞" if x > 0 else "-∞" if x < 0 else "undefined"
-    mantissa, exponent = f"{x:.{digits - 1}e}".split("e")
-    return _power(mantissa, int(exponent))
-
-
-def written(x: float) -> str:
-    """A float as Python writes it shortest (the digits that tell it from its neighbours), its power of ten as a
-    reader writes it.
-
-    >>> written(1e-12), written(1 - 1e-16), written(0.75), written(1.5e-8), written(1.0000000000000004e-05)
-    ('10⁻¹²', '0.9999999999999999', '0.75', '1.5 × 10⁻⁸', '1.0000000000000004 × 10⁻⁵')
-    """
-    text = repr(float(x))
-    if "e" not in text:
-        return text
-    mantissa, exponent = text.split("e")
-    return _power(mantissa, int(exponent))
 
 
 def fmt_err(e) -> str:

@@ -183,12 +183,13 @@ def _coalesced(outputs) -> list:
 
 def notebook_stamp(derivation_id: str, keys: dict) -> str:
     """The content stamp of a derivation's notebook: its cache key (module, proofs, library,
-    ancestors), the code that builds and shows the notebook, and the SymPy that renders it."""
+    ancestors), the code that builds and shows the notebook (the report modules it imports, its witness tables'
+    words and numbers among them), and the SymPy that renders it."""
     import sympy
 
     here = Path(__file__).resolve().parent
     code = [here / f for f in ("notebooks.py", "notebook_view.py", "notebook_cells.py", "notebook_code.py",
-                               "cross_references.py")]
+                               "cross_references.py", "witness_words.py", "numbers.py")]
     return digest(keys[derivation_id], *code, here.parent / "prose.py", sympy.__version__)
 
 

@@ -6,13 +6,14 @@ other record shows its error as measured.
 
 >>> error_cells({"method": "Arb ball arithmetic", "certified": True, "bits": 256, "abs_error": 0.0,
 ...              "abs_error_lower": 0.0, "rel_error": 0.0, "width": 1e-38, "abs_tolerance": 0.0})
-('≤ 0.0e+00 (agrees, 256 bits)', '≤ 0.0e+00')
+('≤ 0 (agrees, 256 bits)', '≤ 0')
 >>> error_cells({"method": "float64", "abs_error": 2e-14, "rel_error": 1e-16, "proven": True})
-('≤ 2.0e-14', '≤ 1.0e-16')
+('≤ 2.0 × 10⁻¹⁴', '≤ 1.0 × 10⁻¹⁶')
 """
 from __future__ import annotations
 
 from ..engine.witness import record_decision
+from .numbers import scientific
 
 __all__ = ["error_cells", "best_error"]
 
@@ -22,10 +23,10 @@ def error_cells(record: dict) -> tuple[str, str]:
     if record.get("certified"):
         if record["abs_error"] is None:
             return f"no finite bound ({record_decision(record)}, {record['bits']} bits)", "—"
-        return (f"≤ {record['abs_error']:.1e} ({record_decision(record)}, {record['bits']} bits)",
-                f"≤ {record['rel_error']:.1e}")
+        return (f"≤ {scientific(record['abs_error'])} ({record_decision(record)}, {record['bits']} bits)",
+                f"≤ {scientific(record['rel_error'])}")
     mark = "≤ " if record.get("proven") else ""
-    return f"{mark}{record['abs_error']:.1e}", f"{mark}{record['rel_error']:.1e}"
+    return f"{mark}{scientific(record['abs_error'])}", f"{mark}{scientific(record['rel_error'])}"
 
 
 def best_error(numeric: list) -> str:
@@ -37,6 +38,6 @@ def best_error(numeric: list) -> str:
     if any(record_decision(r) == "undecided" for r in certified):
         return f"undecided ({len(numeric)} methods)"
     if certified:
-        return f"≤ {max(r['rel_error'] for r in certified):.1e}, proven ({len(numeric)} methods)"
+        return f"≤ {scientific(max(r['rel_error'] for r in certified))}, proven ({len(numeric)} methods)"
     r = min(numeric, key=lambda r: r["rel_error"])
-    return f"{r['rel_error']:.1e} ({len(numeric)} methods)"
+    return f"{scientific(r['rel_error'])} ({len(numeric)} methods)"
