@@ -17,6 +17,7 @@ from symfloat.engine.witness import Outcome
 from symfloat.model.erratum import Erratum
 from symfloat.model.symbol_names import GREEK
 from symfloat.site import typeset
+from symfloat.site.difference import reads_as_words
 from symfloat.site.edition import reason_of
 from symfloat.site.errata_pages import erratum_page
 from symfloat.site.records import Records, load_records
@@ -105,8 +106,10 @@ def test_every_erratum_reads_as_mathematics(derivation):
         e = p.erratum
         if e is None:
             continue
+        # a correction in words (as the site shows it: with dollars, or sentences without commands) reads the same way
         for field, text in (("evidence", e.evidence), ("reason", reason_of({"evidence": e.evidence})),
-                            ("objection", e.objection), ("answer", e.answer), ("as printed", p.unreadable)):
+                            ("objection", e.objection), ("answer", e.answer), ("as printed", p.unreadable),
+                            ("correction", e.corrected if reads_as_words(e.corrected) else "")):
             found = ascii_maths(text)
             if found:
                 left[f"{p.name} ({field})"] = found

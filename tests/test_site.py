@@ -114,7 +114,7 @@ def test_the_edition_marks_every_quoted_formula_by_its_verdict(records, edition)
     note = page[page.index(f'id="{formula_anchor("scheeffer-vi-cf/78c")}"'):]
     note = note[:note.index("</details>")]
     witness = next(f for f in records.formulas if f["id"] == "scheeffer-vi-cf/78c")["numeric"][0]
-    assert "misprint, medium confidence" in note and "6.0e-01" in note      # the record's error of the print
+    assert "misprint, medium confidence" in note and "6.0 × 10⁻¹" in note     # the record's error of the print
     assert f'{witness["seconds"]:.3g} s' in note                            # and the witness's time, as recorded
     assert '../errata/scheeffer-78c-1.html' in note and "../notebooks/scheeffer-vi-cf.html#" in note
     assert "\\frac" not in re.sub(r'<annotation.*?</annotation>|title="[^"]*"', "", page, flags=re.S)

@@ -708,9 +708,9 @@ d.quote("rhombus-twice", "§214",
         erratum=Erratum(
             "claim", "medium",
             "With the same length AB and breadth EF the moments of the rectangle are four times those of "
-            "the rhombus (4ab^3/3 against ab^3/3); the factor two (divisor 6 against 12) holds only at "
-            "equal area 2D, which a rectangle and a rhombus of the same length and breadth do not have "
-            "(4ab against 2ab).",
+            "the rhombus ($4ab^3/3$ against $ab^3/3$); the factor two (divisor $6$ against $12$) holds only at "
+            "equal area $2D$, which a rectangle and a rhombus of the same length and breadth do not have "
+            "($4ab$ against $2ab$).",
             (r"Integrating over both figures with $AC = a$, $CE = b$: $I_{\text{rect}} = 4ab^3/3$, $I_{\text{rhomb}} "
              r"= ab^3/3$, $K_{\text{rect}} = 4a^3b/3$, $K_{\text{rhomb}} = a^3b/3$. Euler compared the coefficients "
              "of $EF^2 D$ and $AB^2 D$ and forgot that $D$ itself doubles; a wrong conclusion, not a misprint."),

@@ -116,7 +116,7 @@ dv.quote("V_b", "formula list", "$ V_b = 4 a b d $", reading=(V_b, 4 * a * b * d
 dv.quote("z_B", "formula list", r"$ z_B =-\displaystyle\frac{ d }{2}$", reading=(z_B, -d / 2))
 dv.quote("e-sign", L6, "was größer als eins im Falle einer stabilen Situation und negativ im Falle von Instabilität ist.",
          reading=(sp.sign(z_M - z_G), sp.sign(e - 1)),
-         erratum=Erratum("claim", "high", "e > 0 in the stable case, e < 0 in the unstable case",
+         erratum=Erratum("claim", "high", "$e > 0$ in the stable case, $e < 0$ in the unstable case",
                          ("$e = d/(2c^2) (z_M - z_G)$ has the sign of $z_M - z_G$, so the boundary of stability is "
                           r"$e = 0$, not $e = 1$: e.g. $b = c$, $d = c$ (half immersed) gives $e = \tfrac16 - "
                           r"\tfrac14 < 0$ (unstable), and $b = 3c/2$, $d = c$ gives $e = \tfrac38 - \tfrac14 = "

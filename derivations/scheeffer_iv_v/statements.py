@@ -702,9 +702,9 @@ d.quote("law", "V",
         note="read for a symmetric base turned by omega about its axis from a principal tilt: the second "
              "equilibrium moment int_1 u v df would have to vanish for every omega",
         erratum=Erratum("claim", "medium",
-                        "Only for prisms whose base has equal principal moments (T_x = T_y: isotropic bases such as "
-                        "squares, regular polygons); otherwise int_1 u v df = (T_x - T_y) sin 2 omega / 2 != 0 for "
-                        "0 < omega < 90 deg and the turned position is no equilibrium at all.",
+                        r"Only for prisms whose base has equal principal moments ($T_x = T_y$: isotropic bases such "
+                        r"as squares, regular polygons); otherwise $\int_1 u v\,df = (T_x - T_y) \sin 2\omega / 2 "
+                        r"\ne 0$ for $0 < \omega < 90^\circ$ and the turned position is no equilibrium at all.",
                         "The law is stated for every obliquely stable right prism, but derived (just before) only "
                         r"for $T_x = T_y$. Counterexample: the $1 \times \tfrac65$ rectangle, $b = \tfrac56$, $s = "
                         r"\tfrac12$ floats stably tilted about its long axis ($\tan \varphi_1 = 1/(2 \sqrt{3})$, $T_1 "
@@ -732,9 +732,9 @@ d.quote("s-half", "(53)", r"Diese Formel giebt den Grenzwert von  $\varphi_1$  a
         reading=(sstar, sp.Rational(1, 2)),
         note="read as the threshold of s above which the upper base is reached first",
         erratum=Erratum("claim", "high",
-                        r"the upper base is reached first iff s > u_m'/(u_m + u_m'); this is s > 1/2 only when the "
-                        r"base reaches equally far on both sides of EF (u_m = u_m', e.g. centrally symmetric bases, or "
-                        r"EF perpendicular to a symmetry axis)",
+                        r"the upper base is reached first iff $s > u_m'/(u_m + u_m')$; this is $s > 1/2$ only when the "
+                        r"base reaches equally far on both sides of EF ($u_m = u_m'$, e.g. centrally symmetric bases, "
+                        r"or EF perpendicular to a symmetry axis)",
                         "Scheeffer himself distinguishes $u_m$ of the upper (dipping side) and of the lower base "
                         "(rising side) in (53a), but then decides by $s$ alone. Counterexample: equilateral triangle "
                         r"of side 1, EF parallel to a side, apex dipping ($u_m = 1/\sqrt{3}, u_m' = 1/(2 \sqrt{3})$), "
@@ -767,7 +767,7 @@ d.quote("55", "(55)", r"$$\operatorname{tg} \varphi_1 \leq \begin{cases} \frac{b
         erratum=Erratum("claim", "high",
                         r"$\operatorname{tg}\varphi_1 \le \min\left(\frac{b(1-s)}{u_m}, \frac{b s}{u_m'}\right)$, "
                         r"$u_m$, $u_m'$ the farthest points of the base on the dipping and on the rising side of EF; "
-                        r"the case split by s is right only for $u_m = u_m'$",
+                        r"the case split by $s$ is right only for $u_m = u_m'$",
                         "Both bases must stay out of the water, so both bounds apply; which one is smaller depends "
                         "on $s u_m$ versus $(1-s) u_m'$, not on $s$ alone. Counterexample (from the clipped "
                         "geometry): equilateral triangle of side 1, EF parallel to a side, apex dipping, $b = "

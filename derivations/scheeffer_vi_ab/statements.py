@@ -382,10 +382,10 @@ d.quote("60-one-base", "(60)",
             "claim", "high",
             r"The first rotation region needs both conditions: $\operatorname{tg}\varphi_1 \le \frac{b}{a}"
             r"\frac{(1-s)\sqrt3}{\sin(30^\circ+\omega)}$ (upper base, vertex B dipping) and $\operatorname{tg}"
-            r"\varphi_1 \le \frac{b}{a}\frac{s\sqrt3}{\cos\omega}$ (lower base, vertex A rising). For s > 1/2 the "
-            r"lower one is the sharper when $s \sin(30^\circ+\omega) < (1-s)\cos\omega$, i.e. for "
-            r"1/2 < s < 2/3 and $\omega < \operatorname{arctg}\frac{2-3s}{\sqrt3\, s}$ (and symmetrically for "
-            r"1/3 < s < 1/2); only for s >= 2/3 (s <= 1/3) does one base decide for every omega.",
+            r"\varphi_1 \le \frac{b}{a}\frac{s\sqrt3}{\cos\omega}$ (lower base, vertex A rising). For $s > 1/2$ "
+            r"the lower one is the sharper when $s \sin(30^\circ+\omega) < (1-s)\cos\omega$, i.e. for "
+            r"$1/2 < s < 2/3$ and $\omega < \operatorname{arctg}\frac{2-3s}{\sqrt3\, s}$ (and symmetrically for "
+            r"$1/3 < s < 1/2$); only for $s \ge 2/3$ ($s \le 1/3$) does one base decide for every $\omega$.",
             (r"Section V derived (53)/(55) assuming the upper base is cut first when $s > \tfrac12$, which holds when "
              "the farthest points on both sides of the axis are equally far (circle, square, centrally symmetric "
              r"bases). In the triangle they are not: the rising side holds the vertex A at $(a/\sqrt{3}) \cos "
@@ -556,12 +556,13 @@ d.quote("65-III-claim", "(65)",
         erratum=Erratum(
             "claim", "high",
             r"In III a tilted position in the first region exists only if also the lower base stays under water: "
-            r"for s > 1/2 an axis $\omega$ must satisfy both $\sin(30^\circ+\omega) \le (1-s)K$ and $\cos\omega \le sK$, "
-            r"$K = \sqrt3\,b/(a\,\operatorname{tg}\varphi_1)$. For 1/2 < s < 2/3 such $\omega$ exist iff "
+            r"for $s > 1/2$ an axis $\omega$ must satisfy both $\sin(30^\circ+\omega) \le (1-s)K$ and "
+            r"$\cos\omega \le sK$, "
+            r"$K = \sqrt3\,b/(a\,\operatorname{tg}\varphi_1)$. For $1/2 < s < 2/3$ such $\omega$ exist iff "
             r"$(a/b)^2 \ge 12s(1-s) - \frac{3(1-s)^2}{2\sin^2(30^\circ+\omega_\times)}$, $\omega_\times = "
-            r"\operatorname{arctg}\frac{2-3s}{\sqrt3\,s}$ (the best axis); for s >= 2/3 the printed III is right. "
-            r"At s = 0.55 no axis works for 1.755 <= (a/b)^2 < 2.455 (III as printed: 1.755 ... 2.666). For "
-            r"s < 1/2 the same with s and 1-s exchanged.",
+            r"\operatorname{arctg}\frac{2-3s}{\sqrt3\,s}$ (the best axis); for $s \ge 2/3$ the printed III is right. "
+            r"At $s = 0.55$ no axis works for $1.755 \le (a/b)^2 < 2.455$ (III as printed: $1.755 \ldots 2.666$). "
+            r"For $s < 1/2$ the same with $s$ and $1-s$ exchanged.",
             (r"At $s = \tfrac{11}{20}$, $(a/b)^2 = \tfrac{11}{5}$: $t_1 = \sqrt{24 s(1-s)/(a/b)^2 - 2} = 0.8367$, but "
              r"the best axis ($\omega = 20.17^\circ$, where the top and bottom limits are equal) allows only "
              r"$\tan(\varphi) \le 0.6842$: for every axis one base is cut before the equilibrium is reached: at that "

@@ -471,10 +471,11 @@ d.quote("edge-axis-range", "VI.D",
              "interval through 1/2)",
         erratum=Erratum(
             "claim", "high",
-            "only for 3/4 < s < 0.7735 and 0.2265 < s < 1/4 (at s = 3/4, 1/4 and 1/2 the edge-parallel position "
-            "touches a face: an equilibrium but not stable, see the s = 1/2 claim; on the clipped unit cube at "
-            "s = 3/4 turning by 0.1 about the main axis lowers the potential by 6.4e-7); for 1/4 < s < 3/4, s != 1/2, "
-            "the first domain holds no oblique equilibrium for any axis direction",
+            r"only for $3/4 < s < 0.7735$ and $0.2265 < s < 1/4$ (at $s = 3/4$, $1/4$ and $1/2$ the edge-parallel "
+            r"position touches a face: an equilibrium but not stable, see the claim at $s = 1/2$; on the clipped unit "
+            r"cube at $s = 3/4$ turning by $0.1$ about the main axis lowers the potential by "
+            r"$6.4 \times 10^{-7}$); for $1/4 < s < 3/4$, $s \ne 1/2$, the first domain holds no oblique equilibrium "
+            r"for any axis direction",
             r"(82) at $\omega = 0$ ($\sin^2 45^\circ = \tfrac12$) needs $2(1-s)^2 \ge 6s(1-s) - 1$, i.e. "
             r"$(2s-1)(4s-3) \ge 0$ for $s > \tfrac12$ and $(2s-1)(4s-1) \ge 0$ for $s < \tfrac12$: only $s \ge "
             r"\tfrac34$ or $s \le \tfrac14$. Counterexample $s = 0.6$: the bound of (82) is $0.16/0.44 = 0.364 < "

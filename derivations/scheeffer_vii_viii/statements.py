@@ -229,10 +229,10 @@ d.quote("s-upper", "VII", "Es soll dabei das spec. Gew.  $s > \\frac{1}{2}$\n\nv
         "obere Grundfläche zum Teil eintaucht.", reading=(sst, R(1, 2)),
         note="read as: beyond the first region the upper base is cut when s > 1/2 (the threshold of s)",
         erratum=Erratum("claim", "high",
-                        "the upper base is cut first iff s > u_m'/(u_m + u_m'); that is s > 1/2 only when the base "
-                        "reaches equally far on both sides of the axis (u_m = u_m'); otherwise the second region "
-                        "may begin with the lower base although s > 1/2 (and the formulas apply with dry and wet "
-                        "parts exchanged)",
+                        "the upper base is cut first iff $s > u_m'/(u_m + u_m')$; that is $s > 1/2$ only when the "
+                        "base reaches equally far on both sides of the axis ($u_m = u_m'$); otherwise the second "
+                        "region may begin with the lower base although $s > 1/2$ (and the formulas apply with dry and "
+                        "wet parts exchanged)",
                         (r"The same claim as in IV (53) (Scheeffer IV, the claim on $s > \tfrac12$). Counterexample: "
                          r"equilateral triangular prism of side 1 and height 1, $s = \tfrac35$, turned about an axis "
                          r"parallel to a side with that side dipping ($u_m = 1/(2 \sqrt{3}), u_m' = 1/\sqrt{3}, s^* = "

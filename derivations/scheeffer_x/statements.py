@@ -413,8 +413,8 @@ d.quote("pentagon-exists", "X",
         "Fläche mit einer Ecke eintaucht.",
         reading=(NVp, 5),
         erratum=Erratum("claim", "high",
-                        "a pentagonal equilibrium exists only for 0.7623 < s < 5/6 (and 1/6 < s < 0.2377); for "
-                        "1/2 < s <= 0.7623 the root of (171) lies beyond the second domain (hexagonal waterplane)",
+                        r"a pentagonal equilibrium exists only for $0.7623 < s < 5/6$ (and $1/6 < s < 0.2377$); for "
+                        r"$1/2 < s \le 0.7623$ the root of (171) lies beyond the second domain (hexagonal waterplane)",
                         PENT_EVIDENCE, corrected_reading=(NVp, 6),
                         objection="The hypothesis 'keine neue Gleichgewichtslage im ersten Drehungsgebiet' may "
                                   "exclude exactly the densities where the root of (171) leaves the second domain, "
@@ -437,8 +437,8 @@ d.step("stiffness-sign", (SIG, sp.Matrix([sp.sign(fx.subs(x, XS[0]), evaluate=Fa
 d.quote("pentagon-stable", "X", "Es lässt sich auch zeigen, dass dieses Gleichgewicht stabil ist",
         reading=(SIG, sp.Matrix([1, 1])),
         erratum=Erratum("claim", "medium",
-                        "of the two pentagonal equilibria for 0.7623 < s < 0.7735 only the one with the smaller leg "
-                        "(x -> 0 as s -> 0.7735) is stable; the other is unstable",
+                        r"of the two pentagonal equilibria for $0.7623 < s < 0.7735$ only the one with the smaller leg "
+                        r"($x \to 0$ as $s \to 0.7735$) is stable; the other is unstable",
                         (r"At $s = 0.77$ (171) has the pentagonal roots $x = 0.0858$ and $x = 0.5684$ ($\beta = "
                          "0.48$, $0.71$). $d^2E/dt^2$ along the diagonal plane has the sign of $df/dx$: $+$ at "
                          r"$0.0858$, $-$ at $0.5684$; the clipped cube confirms both equilibria ($\tan t = 0.3557$, "
@@ -461,7 +461,7 @@ d.step("dual-vertices", Eq(NVd, NVp), "definition", result=NVd, uses=("pentagon-
 d.quote("dual-exists", "X",
         r"Für  $s < \frac{1}{2}$  tritt dieses stabile Gleichgewicht im zweiten Drehungsgebiet ein,",
         reading=(NVd, 5),
-        erratum=Erratum("consequential", "high", "only for 0.2265 < s < 0.2377 (stable) and 1/6 < s < 0.2377",
+        erratum=Erratum("consequential", "high", "only for $0.2265 < s < 0.2377$ (stable) and $1/6 < s < 0.2377$",
                         "The mirror image of pentagon-exists (s <-> 1 - s): at s = 2/5 the root of (171) at "
                         "1 - s = 3/5 "
                         "gives a hexagonal waterplane.",

@@ -24,7 +24,7 @@ from difflib import SequenceMatcher
 from .text import excerpt_html
 from .typeset import UNRENDERED, typeset
 
-__all__ = ["highlighted", "corrected_html"]
+__all__ = ["highlighted", "corrected_html", "reads_as_words"]
 
 _WORDS = re.compile(r"[A-Za-zäöüß]{3,}[ ,]+[A-Za-zäöüß]{3,}")
 _TOKEN = re.compile(r"\\[A-Za-z]+\*?|\\.|\d+(?:[.,]\d+)?|\S")
@@ -104,6 +104,16 @@ def highlighted(printed: str, corrected: str) -> str:
     return "".join(out) + corrected[pos:]
 
 
+def reads_as_words(corrected: str) -> bool:
+    """Whether a correction is words (its mathematics between dollars, or sentences with none), not one formula.
+
+    >>> reads_as_words("e > 0 in the stable case"), reads_as_words(r"x = \\frac{a}{b}"), reads_as_words("$s$ only")
+    (True, False, True)
+    """
+    return "$" in corrected or bool(_WORDS.search(re.sub(r"\\[A-Za-z]+(\{[^}]*\})?", " ", corrected))
+                                    and "\\" not in corrected)
+
+
 def corrected_html(corrected: str, printed: str = "") -> str:
     """A correction: words (with their dollars) as prose, a formula as a typeset display, its change
     from the *printed* TeX marked.
@@ -111,8 +121,7 @@ def corrected_html(corrected: str, printed: str = "") -> str:
     >>> corrected_html("x = 2,44")[:26]
     '<div class="math-display">'
     """
-    if "$" in corrected or (_WORDS.search(re.sub(r"\\[A-Za-z]+(\{[^}]*\})?", " ", corrected))
-                            and "\\" not in corrected):
+    if reads_as_words(corrected):
         return excerpt_html(corrected)
     marked = highlighted(printed, corrected) if printed else corrected
     shown = typeset(marked, display=True)
