@@ -20,7 +20,7 @@ import mpmath
 from ..solver import make_scene, solve
 from ..solver.symmetry import symmetry_group
 from ..solver.refine import angle_between, refine_planar, refine_sphere
-from ..report.numbers import scientific
+from ..numbers import scientific
 
 __all__ = ["Case", "CASES", "Row", "conditioning_rows", "conditioning_markdown"]
 

@@ -36,7 +36,7 @@ import sympy as sp
 
 from ..model.myst import inline
 from ..prose import typeset
-from ..report.numbers import scientific, written
+from ..numbers import scientific, written
 
 UNIT_ROUNDOFF = 2.0 ** -53
 CATASTROPHIC_DIGITS = 6.0

@@ -21,7 +21,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from PIL import Image  # noqa: E402
 
-from ..report.numbers import scientific  # noqa: E402
+from ..numbers import scientific, written  # noqa: E402
 
 __all__ = ["pareto", "method_rows", "cheapest", "family_figure", "write_png_if_changed", "fmt_time",
            "fmt_err", "fmt_proven", "FLOOR"]
@@ -191,7 +191,7 @@ def family_figure(family, measurements, unit="witness"):
     ax.axhline(1e-12, color="grey", lw=0.5)
     ax.axhline(1e-30, color="grey", lw=0.5)
     ax.set_xlabel(f"wall time per {unit} (s; large markers: median over the family)")
-    ax.set_ylabel(f"relative error (large markers: median, line up to the worst; exact at {FLOOR:g})")
+    ax.set_ylabel(f"relative error (large markers: median, line up to the worst; exact at {written(FLOOR)})")
     ax.set_title(f"{family}: error against run time")
     ax.legend(fontsize=7, loc="upper right")
     fig.tight_layout()

@@ -189,8 +189,8 @@ def notebook_stamp(derivation_id: str, keys: dict) -> str:
 
     here = Path(__file__).resolve().parent
     code = [here / f for f in ("notebooks.py", "notebook_view.py", "notebook_cells.py", "notebook_code.py",
-                               "cross_references.py", "witness_words.py", "numbers.py")]
-    return digest(keys[derivation_id], *code, here.parent / "prose.py", sympy.__version__)
+                               "cross_references.py", "witness_words.py")]
+    return digest(keys[derivation_id], *code, here.parent / "prose.py", here.parent / "numbers.py", sympy.__version__)
 
 
 def write_notebooks(ids, folder: str | os.PathLike = "notebooks", progress=None, *, force: bool = False) -> list[Path]:

@@ -13,7 +13,7 @@ other record shows its error as measured.
 from __future__ import annotations
 
 from ..engine.witness import record_decision
-from .numbers import scientific
+from ..numbers import scientific
 
 __all__ = ["error_cells", "best_error"]
 
