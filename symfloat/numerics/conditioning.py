@@ -17,10 +17,10 @@ from fractions import Fraction
 
 import mpmath
 
+from ..numbers import scientific
 from ..solver import make_scene, solve
 from ..solver.symmetry import symmetry_group
 from ..solver.refine import angle_between, refine_planar, refine_sphere
-from ..numbers import scientific
 
 __all__ = ["Case", "CASES", "Row", "conditioning_rows", "conditioning_markdown"]
 

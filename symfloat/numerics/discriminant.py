@@ -35,8 +35,8 @@ import mpmath
 import sympy as sp
 
 from ..model.myst import inline
-from ..prose import typeset
 from ..numbers import scientific, written
+from ..prose import typeset
 
 UNIT_ROUNDOFF = 2.0 ** -53
 CATASTROPHIC_DIGITS = 6.0
