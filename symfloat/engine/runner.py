@@ -14,8 +14,11 @@ import ctypes
 import ctypes.util
 import multiprocessing
 import os
+import pickle
+import shutil
 import signal
 import sys
+import tempfile
 import threading
 import time
 import traceback
@@ -26,6 +29,7 @@ from pathlib import Path
 
 from ..errors import DerivationError, EnvironmentProblem, SymfloatError
 from ..files import write_if_changed
+from ..leftovers import sweep_orphans
 from ..registry import files, load, manifest, requires, select
 from .cache import CacheError, ReportCache
 from .check import DerivationReport, Unsound, check_derivation, rejudged
@@ -34,7 +38,7 @@ from .environment import MAX_WORKERS, check_environment, default_workers
 from .proofs import ProofBook
 
 __all__ = ["verify", "derivation_keys", "Progress", "default_workers", "check_environment", "worker_pool", "completed",
-           "WorkerLost", "MAX_WORKERS"]
+           "WorkerPool", "WorkerLost", "MAX_WORKERS"]
 
 
 class Progress:
@@ -103,14 +107,18 @@ class WorkerLost(EnvironmentProblem):
 
 
 def completed(futures: dict, what: str):
-    """``(name, result)`` of each of *futures* (future -> name) as it completes.  When a worker process
-    dies, the pool breaks: :class:`WorkerLost` names the *what* (``checks``, ``notebooks``) left
-    unfinished, after the caller has kept every result yielded before."""
+    """``(name, result)`` of each of *futures* (future -> name) as it completes, its result read from the file the
+    worker left it in (:class:`WorkerPool`).  When a worker process dies, the pool breaks: :class:`WorkerLost`
+    names the *what* (``checks``, ``notebooks``) left unfinished, after the caller has kept every result yielded
+    before."""
     done = 0
     names = set(futures.values())
     try:
         for future in as_completed(futures):
-            result = future.result()
+            path = Path(future.result())
+            with path.open("rb") as f:
+                result = pickle.load(f)         # written by this run's own worker into this run's own folder
+            path.unlink()
             done += 1
             names.discard(futures[future])
             yield futures[future], result
@@ -120,18 +128,45 @@ def completed(futures: dict, what: str):
                          f"command again to do the rest") from None
 
 
+def _left_in_file(folder: str, fn, *args) -> str:
+    """``fn(*args)`` in a worker, its result pickled into a new file of *folder*; the file's name is what goes back."""
+    fd, path = tempfile.mkstemp(dir=folder, suffix=".pickle")
+    with os.fdopen(fd, "wb") as f:
+        pickle.dump(fn(*args), f, protocol=pickle.HIGHEST_PROTOCOL)
+    return path
+
+
+class WorkerPool:
+    """Forked worker processes whose results come back through files.  A result sent through the pool's pipe
+    is written in pieces when it is long (a report, an executed notebook: hundreds of kilobytes); a worker
+    killed between two pieces leaves half a message there, and CPython's pool then waits for the rest for
+    ever (``concurrent.futures.process``, 3.11: its manager reads the message before it looks at the dead
+    worker).  A file's name is one write the pipe takes whole; the file itself is read by :func:`completed`."""
+
+    def __init__(self, executor: ProcessPoolExecutor, folder: str):
+        self.executor, self.folder = executor, folder
+
+    def submit(self, fn, *args):
+        return self.executor.submit(_left_in_file, self.folder, fn, *args)
+
+
 @contextmanager
 def worker_pool(workers: int):
-    """A pool of *workers* forked processes that end with this one; on any exception, Ctrl-C
+    """A :class:`WorkerPool` of *workers* forked processes that end with this one; on any exception, Ctrl-C
     included, they are killed at once (finished results stay with the caller)."""
-    pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork"),
-                               initializer=_end_with_parent, initargs=(os.getpid(),))
+    executor = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork"),
+                                   initializer=_end_with_parent, initargs=(os.getpid(),))
+    sweep_orphans(tempfile.gettempdir(), "symfloat-results-")      # the results folders of killed runs
+    folder = tempfile.mkdtemp(prefix=f"symfloat-results-{os.getpid()}-")
     try:
-        yield pool
-    except BaseException:
-        _kill(pool)
-        raise
-    pool.shutdown()
+        try:
+            yield WorkerPool(executor, folder)
+        except BaseException:
+            _kill(executor)
+            raise
+        executor.shutdown()
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def _cached_report(cache: ReportCache, did: str, key: str) -> DerivationReport | None:
