@@ -1,8 +1,8 @@
 """The layers hold (issue 28, items 2 and 3): which package of the library may import which, what each part
 of a derivation package may import, and no module-level name of a derivation bound twice.
 
-The library, bottom up: ``errors``, ``manifest``, ``project``, ``files``, ``leftovers``, ``prose``, ``numbers`` (leaves); ``model``;
-``geometry``; the ``solver`` (found without any formula of a source); the ``registry`` of derivations; the checking
+The library, bottom up: ``errors``, ``manifest``, ``project``, ``files``, ``leftovers``, ``prose``, ``numbers``
+(leaves); ``model``; ``geometry``; the ``solver`` (found without any formula of a source); the ``registry`` of derivations; the checking
 ``engine``; ``comparison`` (the solver's answers against the sources); ``numerics``; the writers
 (``report``, ``site``, ``atlas``); the ``cli`` on top.  A derivation's statements import the formula model
 and SymPy only (and the statements of the derivations they build on, directly or not); its witnesses the engine; its
