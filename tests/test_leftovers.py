@@ -2,18 +2,23 @@
 swept by the next, kernels' connection files and site build folders of dead processes removed, cache
 entries get the umask's mode, finished notebooks and checks are kept when a worker or the disk fails,
 and a worker killed at a random moment is one line naming what was lost."""
+import errno
 import json
 import os
+import pickle
 import random
 import signal
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 
 import symfloat.cli as cli
+import symfloat.engine.runner as runner
 import symfloat.report.notebooks as notebooks
 from symfloat.engine.cache import CacheError, ReportCache
 from symfloat.engine.runner import WorkerLost, _cached_report, completed, verify, worker_pool
@@ -121,6 +126,28 @@ def test_a_full_cache_disk_keeps_the_checks_and_says_so_once(tmp_path, monkeypat
     assert not any(r.failures for r in reports)
     (line,) = capsys.readouterr().err.splitlines()
     assert "No space left on device; the results of this run are used but not kept" in line
+
+
+def _full(*args, **kwargs):
+    raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+
+def _a_quick_check(did, key, search):
+    return {"id": did}                           # the check is not what fails: writing its result is
+
+
+def test_a_full_temporary_directory_is_one_line_not_a_workers_traceback(tmp_path, monkeypatch, capsys):
+    # workers hand their results back through files of the temporary directory (WorkerPool); where it is full,
+    # the worker's OSError reached the command as a traceback from the pool
+    monkeypatch.setattr(runner, "pickle", SimpleNamespace(dump=_full, load=pickle.load, HIGHEST_PROTOCOL=5))
+    monkeypatch.setattr(runner, "_check_json", _a_quick_check)
+    monkeypatch.setenv("SYMFLOAT_WORKERS", "2")
+    monkeypatch.setenv("SYMFLOAT_CACHE", str(tmp_path))
+    assert cli.main(["verify", "graefe-s2", "--quiet"]) == 2
+    (line,) = capsys.readouterr().err.splitlines()
+    assert "cannot keep the workers' results in the temporary directory" in line
+    assert "No space left on device" in line and "TMPDIR" in line
+    assert not list(Path(tempfile.gettempdir()).glob(f"symfloat-results-{os.getpid()}-*"))   # nothing left
 
 
 # ------------------------------------------------------------------ a worker killed at a random moment

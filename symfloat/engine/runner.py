@@ -128,11 +128,28 @@ def completed(futures: dict, what: str):
                          f"command again to do the rest") from None
 
 
+class ResultsUnwritable(EnvironmentProblem):
+    """The temporary directory cannot take a worker's result (full, not writable): exit status 2, one line."""
+
+
+def _unwritable(directory, exc: OSError) -> ResultsUnwritable:
+    return ResultsUnwritable(f"cannot keep the workers' results in the temporary directory {directory} "
+                             f"({exc.strerror or exc}): free space there, or name another with TMPDIR")
+
+
 def _left_in_file(folder: str, fn, *args) -> str:
-    """``fn(*args)`` in a worker, its result pickled into a new file of *folder*; the file's name is what goes back."""
-    fd, path = tempfile.mkstemp(dir=folder, suffix=".pickle")
-    with os.fdopen(fd, "wb") as f:
-        pickle.dump(fn(*args), f, protocol=pickle.HIGHEST_PROTOCOL)
+    """``fn(*args)`` in a worker, its result pickled into a new file of *folder*; the file's name is what goes back.
+    A file that cannot be written (the temporary directory full) is removed and said in one line."""
+    result = fn(*args)
+    path = None
+    try:
+        fd, path = tempfile.mkstemp(dir=folder, suffix=".pickle")
+        with os.fdopen(fd, "wb") as f:
+            pickle.dump(result, f, protocol=pickle.HIGHEST_PROTOCOL)
+    except OSError as exc:
+        if path is not None:
+            Path(path).unlink(missing_ok=True)
+        raise _unwritable(Path(folder).parent, exc) from None
     return path
 
 
@@ -157,7 +174,11 @@ def worker_pool(workers: int):
     executor = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork"),
                                    initializer=_end_with_parent, initargs=(os.getpid(),))
     sweep_orphans(tempfile.gettempdir(), "symfloat-results-")      # the results folders of killed runs
-    folder = tempfile.mkdtemp(prefix=f"symfloat-results-{os.getpid()}-")
+    try:
+        folder = tempfile.mkdtemp(prefix=f"symfloat-results-{os.getpid()}-")
+    except OSError as exc:
+        executor.shutdown()
+        raise _unwritable(tempfile.gettempdir(), exc) from None
     try:
         try:
             yield WorkerPool(executor, folder)
