@@ -27,7 +27,8 @@ from symfloat.model.symbol_names import GREEK  # noqa: E402
 from symfloat.model.span import math_intervals  # noqa: E402
 from symfloat.site import search, typeset  # noqa: E402
 from symfloat.site.build import MARKER, _sync  # noqa: E402
-from symfloat.site.edition import edition_page, fault_words, formula_anchor, mark_of, places  # noqa: E402
+from symfloat.site.edition import (edition_page, fault_words, formula_anchor, mark_of, places,  # noqa: E402
+                                   replaced)
 from symfloat.site.errata_pages import errata_index, erratum_title, facet_pages  # noqa: E402
 from symfloat.site.difference import corrected_html, highlighted  # noqa: E402
 from symfloat.site.notebooks import staged_notebook  # noqa: E402
@@ -250,6 +251,24 @@ def test_a_correction_marks_whole_words_and_the_changed_part_of_a_formula():
                           r"I' = \frac{2m}{3} \left\{ \frac{a+c}{2} + 2b \right\}")
     assert simpson == r"I' = \frac{2m}{\htmlClass{changed}{3}} \left\{ \frac{a+c}{2} + 2b \right\}"
     assert highlighted("Nach 55 ist ferner", r"\text{Nach 55 ist ferner}") == r"\text{Nach 55 ist ferner}"
+    # a change that runs from one \text{} through a formula into the next is marked piece by piece (scheeffer-ix-b-3:
+    # the correction's added clause was not marked at all, being no whole group)
+    clause = highlighted(r"so ist  $F(z)$  positiv",
+                         r"\text{so ist } F(z) \text{ positiv; hat } G = 0 \text{ eine Wurzel}")
+    assert clause == (r"\text{so ist } F(z) \text{ positiv\htmlClass{changed}{; hat} } \htmlClass{changed}{G = 0} "
+                      r"\text{ \htmlClass{changed}{eine Wurzel}}")
+
+
+def test_a_correction_that_rewrites_its_fault_is_marked_against_the_fault(records):
+    # Scheeffer (51): the correction rewrites "folglich das Gleichgewicht stabil" and reuses words from earlier in
+    # the sentence; against the whole sentence "folglich" and "Gleichgewicht" were marked as new
+    (erratum,) = [e for e in records.errata if e["formula"] == "scheeffer-iv-v/51-verdict"]
+    assert replaced(erratum) == "folglich das Gleichgewicht stabil"
+    marked = highlighted(replaced(erratum), erratum["corrected"])
+    assert r"\text{folglich das Gleichgewicht \htmlClass{changed}{für jede andere Achse} stabil" in marked
+    # a correction that does not keep its fault's words (graefe's title: "Prismaoid") is read against the print
+    (title,) = [e for e in records.errata if e["formula"] == "graefe-s1-prismatoid-volume/prismatoid-name"]
+    assert replaced(title) == title["printed"].strip()
 
 
 def test_a_cut_quotation_in_a_notebook_is_widened_to_whole_formulas(records):

@@ -9,7 +9,8 @@ on the tokens, spaces ignored), are wrapped in ``\htmlClass{changed}{...}``, whi
 ``<span class="changed">`` (the stylesheet frames and shades it).  A run is marked only where it
 is a whole TeX group: balanced braces, no ``&``, ``\\``, ``\left``, ``\right``, ``\begin`` or
 ``\end`` inside, not starting with a sub- or superscript sign, not ending in a command that waits for
-its argument.  Changed letters of a name (``\\operatorname{cotg}``) mark the whole name.
+its argument; a run from the words of one ``\text{}`` through a formula into the next is marked piece by
+piece.  Changed letters of a name (``\\operatorname{cotg}``) mark the whole name.
 
 >>> highlighted(r"\frac{b}{2} = b s (1 - s)", r"\frac{b}{2} = 6 s (1 - s)")
 '\\frac{b}{2} = \\htmlClass{changed}{6} s (1 - s)'
@@ -81,16 +82,7 @@ def highlighted(printed: str, corrected: str) -> str:
     matcher = max((SequenceMatcher(None, [t for _, _, t in old], [t for _, _, t in new], autojunk=False)
                    for old in readings), key=SequenceMatcher.ratio)
     out, pos = [], 0
-    for op, _, _, j1, j2 in matcher.get_opcodes():
-        if op not in ("replace", "insert") or j1 == j2:
-            continue
-        if not _whole(corrected[new[j1][0]:new[j2 - 1][1]]):   # a run that reaches over a group's brace: within
-            while j1 < j2 and (new[j1][2] in "{}" or _TEXT_GROUP.match(new[j1][2] + "{")):
-                j1 += 1
-            while j1 < j2 and new[j2 - 1][2] in "{}":
-                j2 -= 1
-            if j1 == j2:
-                continue
+    for j1, j2 in _runs(matcher, new, corrected):
         a, b = new[j1][0], new[j2 - 1][1]
         inside = _NAMED.search(corrected, 0, a)          # letters of a name: the whole name is marked
         if inside and "}" in corrected[b:]:
@@ -102,6 +94,38 @@ def highlighted(printed: str, corrected: str) -> str:
             out += [corrected[pos:a], r"\htmlClass{changed}{", run, "}"]
             pos = b
     return "".join(out) + corrected[pos:]
+
+
+def _runs(matcher, new, corrected):
+    """``(j1, j2)``: the token runs of the correction the print does not have.  A run that reaches from the words
+    of one ``\\text{}`` through a formula into the next is cut at the groups' braces; one that reaches over
+    another group's brace is kept within it."""
+    closing = {b for a, b in _prose(corrected) if b < len(corrected) and corrected[b] == "}"}
+
+    def opens(j):
+        return j >= 0 and _TEXT_GROUP.match(new[j][2] + "{")
+
+    def cut(j):
+        return opens(j) or (new[j][2] == "{" and opens(j - 1)) or new[j][0] in closing
+
+    for op, _, _, j1, j2 in matcher.get_opcodes():
+        if op not in ("replace", "insert") or j1 == j2:
+            continue
+        if _whole(corrected[new[j1][0]:new[j2 - 1][1]]):
+            yield j1, j2
+            continue
+        pieces, start = [], j1
+        for j in range(j1, j2 + 1):
+            if j == j2 or cut(j):
+                pieces += [(start, j)] if start < j else []
+                start = j + 1
+        for j1, j2 in pieces:
+            while j1 < j2 and new[j1][2] in "{}":
+                j1 += 1
+            while j1 < j2 and new[j2 - 1][2] in "{}":
+                j2 -= 1
+            if j1 < j2:
+                yield j1, j2
 
 
 def reads_as_words(corrected: str) -> bool:

@@ -157,7 +157,20 @@ def correction_html(erratum: dict, printed_html: str) -> str:
             f'confidence.</strong> {prose_html(reason_of(erratum))}</p>'
             f'<div class="printed"><span class="label">{shown}</span>{printed_html}</div>'
             f'<div class="corrected"><span class="label">{right}</span>'
-            f'{corrected_html(erratum["corrected"], erratum["printed"].strip())}</div></div>')
+            f'{corrected_html(erratum["corrected"], replaced(erratum))}</div></div>')
+
+
+def replaced(erratum: dict) -> str:
+    """What the correction of *erratum* replaces, for marking its change: its declared fault where the correction
+    keeps every word of it in order (a part of a sentence rewritten: Scheeffer (51)'s 'folglich das Gleichgewicht
+    stabil', whose correction reuses words from elsewhere in the sentence), else the whole printed excerpt."""
+    printed = erratum["printed"].strip()
+    declared = next((p.erratum for p in statements(erratum["derivation"]).printed
+                     if f'{erratum["derivation"]}/{p.name}' == erratum["formula"]), None)
+    fault = declared.fault if declared is not None else ""
+    words = re.findall(r"\w+", fault)
+    kept = iter(re.findall(r"\w+", erratum["corrected"]))
+    return fault if fault in printed and words and all(w in kept for w in words) else printed
 
 
 def _witness_table(numeric) -> str:
