@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["scientific", "written"]
+__all__ = ["scientific", "written", "duration"]
 
 _SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
@@ -43,3 +43,15 @@ def written(x: float) -> str:
         return text
     mantissa, exponent = text.split("e")
     return _power(mantissa, int(exponent))
+
+
+def duration(seconds: float) -> str:
+    """A time to three significant digits in the unit that keeps it a plain number.
+
+    >>> duration(5.47e-05), duration(0.00388), duration(2.345), duration(123.4)
+    ('54.7 µs', '3.88 ms', '2.35 s', '123 s')
+    """
+    for unit, scale in (("s", 1), ("ms", 1e-3)):
+        if seconds >= scale:
+            return f"{seconds / scale:.3g} {unit}"
+    return f"{seconds * 1e6:.3g} µs"

@@ -64,7 +64,8 @@ _SUPER = {"²": "2", "³": "3", "⁴": "4", "¹": "1", "⁰": "0", "⁵": "5", "
 _SIGNS = "πθφωμαβγδεκλνξρστψΓΔ"      # the Greek letters above
 _SECTION = re.compile(r"[IVX]+\.[A-Z](?:[-–][A-Z])?")        # a section of a chapter: VI.C, VI.C-F
 # what typeset() does not set as ASCII: mathematics already in dollars, a code span, a quotation, a section
-_KEPT = re.compile(rf"(\$[^$]*\$|``[^`]+``|`[^`]+`|(?:(?<=[\s(\[])|^)'[^'\n]+?'(?![\w'])|\b{_SECTION.pattern}\b)")
+_KEPT = re.compile(rf"(\$[^$]*\$|``[^`]+``|`[^`]+`|(?:(?<=[\s(\[])|^)'(?:[^'\n$]|\$[^$]*\$)+?'(?![\w'])"
+                   rf"|\b{_SECTION.pattern}\b)")     # a quotation holds whole formulas: '$F'(z)$ zunimmt'
 _ROMAN = ("I", "II", "III", "IV", "V", "VI", "VII", "VIII", "IX", "X", "XI", "XII")      # a chapter's numeral
 
 _TOKEN = re.compile(r"""

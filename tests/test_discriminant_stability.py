@@ -49,7 +49,7 @@ def test_stable_forms_match_the_50_digit_reference(rows):
     ("S^2 - 4 from S", "(153) with (151)", "s -> 23/32", 15.9),  # radicand rounds negative at +1e-6: nothing left
     ("n_1", "(153)", "s -> 23/32", 15.9),                     # sqrt(S^2 - 4) is NaN at +1e-6; 7.1 digits at +1e-5
     ("n_2", "(153)", "s -> 23/32", 15.9),
-    ("z_1", "(155) with n_1 of (153)", "s -> 23/32", 15.9),   # 0/0 of (155) at t = 1
+    ("z_1", "(155) with n₁ of (153)", "s -> 23/32", 15.9),   # 0/0 of (155) at t = 1
     ("z_1", "(158)", "s -> 23/32", 6.0),                      # measured 6.1 at +1e-15 (sqrt of a lost 1 - t)
     # s -> 1 (t -> -1/3): 1 + 3t from the float t
     ("1 + 3t", "(147), (150)", "s -> 1", 10.5),               # measured 11.2 at 1 - s = 1e-13

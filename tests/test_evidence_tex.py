@@ -116,6 +116,16 @@ def test_every_erratum_reads_as_mathematics(derivation):
     assert left == {}
 
 
+@pytest.mark.parametrize("derivation", registry.ids())
+def test_every_erratums_words_end_their_sentence(derivation):
+    # the engine appends its own sentences ("Engine: at ...") to the evidence: an evidence without its full stop
+    # ran into them (Scheeffer's Example 10: "... = 0.938$ Engine: at ...")
+    unended = [f"{p.name} ({field})" for p in registry.statements(derivation).printed if p.erratum is not None
+               for field in ("evidence", "objection", "answer")
+               if (text := (getattr(p.erratum, field) or "").rstrip()) and not text.endswith((".", "?", "!", ".)"))]
+    assert unended == []
+
+
 def test_an_erratum_page_typesets_its_words_and_shows_the_objection():
     # a stand-in erratum of (81a) in the records' shape (docs/errata.json): evidence with TeX, an objection, its answer
     real = load_records(ROOT / "docs", ROOT / "notebooks")

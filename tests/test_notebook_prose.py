@@ -106,6 +106,9 @@ def _texts(derivation: str):
     ("pages 3 - 5, the points (0, 0) and (G below, G above B)", "pages 3 - 5, the points (0, 0) and (G below, G above B)"),
     ("quoted in §3 ('zusammen fanden h/3{2D - (G+g)/2}'), so", "quoted in §3 ('zusammen fanden h/3{2D - (G+g)/2}'), so"),
     ("the rectangle's moments over the rhombus' (same a, b)", "the rectangle's moments over the rhombus' (same a, b)"),
+    # a quotation holding a formula with a prime (Scheeffer IX.B's answer): its quote marks were read around '$F'
+    # and the dollars after it paired wrongly, a sentence set as one formula
+    ("its reason, '$F'(z)$ zunimmt', holds for $z < 0$, and", "its reason, '$F'(z)$ zunimmt', holds for $z < 0$, and"),
 ])
 def test_formulas_and_words_are_told_apart(text, shown):
     assert typeset(text) == shown

@@ -70,12 +70,12 @@ def _reciprocal(u):
     return 1 / (1 + u)
 
 
-d.witness(ConvergenceOrder("simpson-order-exp", "composite Simpson on ∫_0^1 exp",
+d.witness(ConvergenceOrder("simpson-order-exp", "composite Simpson on ∫₀¹ exp",
                            ("simpson-identical", "odd-number-of-sections"), composite_simpson, mpmath.exp,
                            (mpmath.mpf(0), mpmath.mpf(1)), mpmath.e - 1, 4))
 # (not 1/(1+z²) on [0, 1]: its third derivative vanishes at both ends, which cancels the h⁴ term
 # of the error and makes the measured order 6)
-d.witness(ConvergenceOrder("simpson-order-reciprocal", "composite Simpson on ∫_0^1 1/(1+z)",
+d.witness(ConvergenceOrder("simpson-order-reciprocal", "composite Simpson on ∫₀¹ 1/(1+z)",
                            ("simpson-identical", "odd-number-of-sections"), composite_simpson, _reciprocal,
                            (mpmath.mpf(0), mpmath.mpf(1)), mpmath.log(2), 4))
 

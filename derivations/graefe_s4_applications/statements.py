@@ -22,8 +22,8 @@ pi = sp.pi
 S3 = "graefe-s3-prismatoid-centroid"
 # the prismatoid centroid X = h (g/2 + D)/((G + g)/2 + 2D) above G at given (G, g, D, h): the reading of §3's print
 centroid = PRISMATOID_CENTROID.evaluator("centroid", (S3_G, S3_g, S3_D, S3_h), 1)
-QUADRATIC = ("A(u) is a polynomial of degree <= 2 in u, so the prismatoid formula of §3 is exact "
-             "for this body (§3, centroid-quadratic-sections)")
+QUADRATIC = (r"$A(u)$ is a polynomial of degree at most 2 in $u$, so the prismatoid formula of §3 is exact "
+             f"for this body ({S3}:centroid-quadratic-sections)")
 
 DERIVATION = d = Derivation(
     id="graefe-s4-applications",

@@ -138,7 +138,7 @@ def grid_caption(grid: dict) -> str:
     return (
         f"The long rectangular log (Scheeffer IX): its section a × b, density s against a/b. Each of the "
         f"{len(inner)} grid cells is coloured by the number of stable positions the solver finds in the section "
-        f"(one per symmetry class; the dots are the {len(cells) - len(inner)} cells a relative 1e-3 in (a/b)² "
+        f"(one per symmetry class; the dots are the {len(cells) - len(inner)} cells a relative 10⁻³ in (a/b)² "
         f"either side of a printed boundary). The black lines are the boundaries of the printed case tables, "
         f"evaluated from the derivation's readings of (132a), (132b), the condition of IX.C, (165) and n₁ of "
         f"(156) with t of (147); for s < 1/2 the text's rule (1 − s for s) where it prints one side only. "

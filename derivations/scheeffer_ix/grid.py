@@ -24,6 +24,7 @@ from pathlib import Path
 import sympy as sp
 
 import symfloat
+from symfloat.numbers import written
 from symfloat.report.stamp import digest, stamp_line
 from symfloat.solver import make_scene, solve
 
@@ -208,11 +209,11 @@ def grid_markdown(rows, stamp: str | None = None) -> str:
              "cross-section a × b (a/b ≥ 1). For each cell the equilibria of the printed tables (131)–(132b), "
              "(161), (162), (162a), (164a)–(166), as the derivation reads them, "
              "are matched with those the solver finds in the section (tilt from the position with b "
-             f"vertical within {MATCH_RAD:g} rad, same stability).", "",
+             f"vertical within {written(MATCH_RAD)} rad, same stability).", "",
              f"Grid: {len(densities)} densities s from {densities[0]:g} to {densities[-1]:g} in steps of "
              f"{densities[1] - densities[0]:g} × a/b ∈ "
              f"{{{', '.join(f'{x:g}' for x in ratios)}}} — {len(rows_grid)} cells; plus {len(boundary)} cells "
-             "a relative 1e-3 in n = (a/b)² inside and outside every boundary curve of the tables (n = 6s(1−s), "
+             "a relative 10⁻³ in n = (a/b)² inside and outside every boundary curve of the tables (n = 6s(1−s), "
              "1/(6s(1−s)), 2(1−s)(4s−1) and its inverse, n₁(s) of (156)) at every other density. "
              f"Of all {len(rows)} cells {len(rows) - len(bad)} agree, {len(bad)} disagree.", ""]
     lines.append("| a/b | " + " | ".join(f"{s:.3f}" for s in densities[::4]) + " |")

@@ -1029,7 +1029,7 @@ cons = (r"follows from the angle of Example 10: $r \operatorname{tg}\varphi_1 = 
 d.quote("ex10-x-sum", "Example 10", r"x &= 1,5 + 0,55", reading=(x10, sp.Rational("1.5") + sp.Rational("0.55")),
         tolerance=sp.Rational(1, 200),
         erratum=Erratum("consequential", "high", r"x = 1,5 + 0,94", cons + r"; with $\operatorname{tg}\varphi_1 = \sqrt{11/32}$ it is "
-                        r"$1.6 \cdot 0.5863 = 0.938$",
+                        r"$1.6 \cdot 0.5863 = 0.938$.",
                         corrected_reading=(x10, sp.Rational("1.5") + sp.Rational("0.94")),
                         objection=(r"As printed the line is right: $0{,}55 = 1{,}6 \cdot 11/32$ is $r "
                                    r"\operatorname{tg}\varphi$ for the tangent the text has just used, so there is no "
@@ -1038,24 +1038,24 @@ d.quote("ex10-x-sum", "Example 10", r"x &= 1,5 + 0,55", reading=(x10, sp.Rationa
                                 r"angle above, and with $\operatorname{tg} \varphi_1 = \sqrt{11/32}$ the term is "
                                 "0,94; the line's own 0,55 shows which tangent was used. High.")))
 d.quote("ex10-x", "Example 10", r"x &= 2,05", reading=(x10, sp.Rational("2.05")), tolerance=PRINTED_DIGITS,
-        erratum=Erratum("consequential", "high", r"x = 2,44", cons + "; $x = 1.5 + 0.938 = 2.438$ m",
+        erratum=Erratum("consequential", "high", r"x = 2,44", cons + "; $x = 1.5 + 0.938 = 2.438$ m.",
                         corrected_reading=(x10, sp.Rational("2.44")),
                         objection="2,05 is the right sum of the line before, no fault of its own.",
                         answer="Consequential: it carries on the unrooted tangent of the angle above; with the root "
-                               "x = 1,5 + 0,94 = 2,44 m. High."))
+                               r"$x = 1{,}5 + 0{,}94 = 2{,}44$ m. High."))
 d.quote("ex10-fraction", "Example 10", r"$\frac{x}{b} = \frac{2,05}{2,50} = \frac{41}{50}$",
         reading=(x10 / sp.Rational(5, 2), sp.Rational(41, 50)), tolerance=sp.Rational(1, 100),
         erratum=Erratum("consequential", "high", r"\frac{x}{b} = \frac{2,44}{2,50} = \frac{49}{50} (0.9752)",
-                        cons + "; $x/b = 2.438/2.5 = 0.9752$", corrected_reading=(x10 / sp.Rational(5, 2), sp.Rational(49, 50)),
-                        objection="2,05/2,50 = 41/50 is right arithmetic.",
-                        answer="Consequential: it divides the x of the unrooted tangent; with the root x/b = "
-                               "2,44/2,50 = 0,975, about 49/50. High."))
+                        cons + "; $x/b = 2.438/2.5 = 0.9752$.", corrected_reading=(x10 / sp.Rational(5, 2), sp.Rational(49, 50)),
+                        objection=r"$2{,}05/2{,}50 = 41/50$ is right arithmetic.",
+                        answer="Consequential: it divides the $x$ of the unrooted tangent; with the root $x/b = "
+                               r"2{,}44/2{,}50 = 0{,}975$, about $49/50$. High."))
 d.quote("ex10-deepest", "Example 10",
         r"Der am tiefsten eintauchende Teil der Mantelhöhe beträgt also  $\frac{41}{50}$",
         reading=(x10 / sp.Rational(5, 2), sp.Rational(41, 50)), tolerance=sp.Rational(1, 100),
         erratum=Erratum("consequential", "high", r"\frac{49}{50} \; (0{,}9752)",
                         "The $x/b = 41/50$ of the line before repeated in words; " + cons
-                        + "; x/b = 2.438/2.5 = 0.9752",
+                        + "; $x/b = 2.438/2.5 = 0.9752$.",
                         corrected_reading=(x10 / sp.Rational(5, 2), sp.Rational(49, 50)),
                         same_as="scheeffer-vi-ab/ex10-fraction",
                         objection="The sentence only repeats 41/50 of the line before in words.",
@@ -1063,14 +1063,14 @@ d.quote("ex10-deepest", "Example 10",
                                 r"unrooted tangent: 49/50 with $\operatorname{tg} \varphi_1 = \sqrt{11/32}$. High.")))
 d.quote("ex10-dry", "Example 10", r"der kürzeste über dem Wasser befindliche Teil  $\frac{9}{50}$",
         reading=(1 - x10 / sp.Rational(5, 2), sp.Rational(9, 50)), tolerance=sp.Rational(1, 100),
-        erratum=Erratum("consequential", "high", r"\frac{1}{50} (0.0248)", cons + "; $1 - 0.9752 = 0.0248$",
+        erratum=Erratum("consequential", "high", r"\frac{1}{50} (0.0248)", cons + "; $1 - 0.9752 = 0.0248$.",
                         corrected_reading=(1 - x10 / sp.Rational(5, 2), sp.Rational(1, 50)),
-                        objection="9/50 = 1 - 41/50 is right arithmetic.",
-                        answer="Consequential: the complement of the x/b of the unrooted tangent; with the root it "
-                               "is 1 - 0,975 = 0,025, about 1/50. High."))
+                        objection="$9/50 = 1 - 41/50$ is right arithmetic.",
+                        answer="Consequential: the complement of the $x/b$ of the unrooted tangent; with the root it "
+                               r"is $1 - 0{,}975 = 0{,}025$, about $1/50$. High."))
 d.quote("ex10-dry-cm", "Example 10", "der ganzen Höhe oder 45 cm",
         reading=(250 * (1 - x10 / sp.Rational(5, 2)), 45), tolerance=sp.Rational(1, 2),
-        erratum=Erratum("consequential", "high", "6 cm (6.2 cm)", cons + r"; $250\,\text{cm} \cdot 0.0248 = 6.2\,\text{cm}$",
+        erratum=Erratum("consequential", "high", "6 cm (6.2 cm)", cons + r"; $250\,\text{cm} \cdot 0.0248 = 6.2\,\text{cm}$.",
                         corrected_reading=(250 * (1 - x10 / sp.Rational(5, 2)), 6),
                         objection="45 cm = 9/50 of 250 cm is right arithmetic.",
                         answer="Consequential: with the root the dry part of the mantle is "

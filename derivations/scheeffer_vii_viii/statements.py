@@ -280,7 +280,7 @@ d.quote("97", "(97)", r"$$\int x y df = \int_s x y df + \int_2 x y df = 0. \quad
 d.quote("98", "(98)", r"$$\int x y df = \int_2 x y df = 0 \quad (98)$$", reading=(sp.Subs(res(Pxy), PO, 0), res(I2)),
         note="regular prism: P_O = 0 (step regular-product); " + EQN)
 d.quote("95a-split", "VII", r"$$\int x y \cdot = \int_1 x y df - \int_2 x y df$$",
-        unreadable="the left member '\\int x y \\cdot' has no measure: an integral sign without its df",
+        unreadable=r"the left member $\int x y \cdot$ has no measure: an integral sign without its $df$",
         erratum=Erratum("transcription", "high", r"\int x y \cdot df = \int_1 x y df - \int_2 x y df",
                         r"The left member is the sum of (95a), written '$\int x y \cdot df$' one display before and "
                         r"'$\int x y\, df$' in (96) two displays after; here the $df$ after the dot is missing, so the "

@@ -174,4 +174,23 @@ def smallest_correction(printed, results: dict, domain: Domain, seed: str, decid
     same = same_reading(c.text, booked)
     verdict = {True: "it is the booked one", False: "it is not the booked one",
                None: "whether it is the booked one cannot be read"}[same]
-    return f"The smallest correction found: ${c.text.rstrip('. ')}$ ({c.change}: {c.what}, {c.kind}; {how}); {verdict}."
+    return (f"The smallest correction found: ${c.text.rstrip('. ')}$ ({change_tex(c.change)}: {c.what}, {c.kind}; "
+            f"{how}); {verdict}.")
+
+
+def change_tex(change: str) -> str:
+    """An edit (:attr:`~symfloat.engine.corrections.Correction.change`) in words, its TeX between dollars.
+
+    >>> print(change_tex(r"\\nu → \\mu and v → V"))
+    $\\nu$ → $\\mu$ and $v$ → $V$
+    >>> print(change_tex(r"\\omega \\operatorname{tg} → \\operatorname{cotg} at all 2 places"))
+    $\\omega \\operatorname{tg}$ → $\\operatorname{cotg}$ at all 2 places
+    >>> change_tex("b and 2 exchanged across the fraction bar")
+    '$b$ and $2$ exchanged across the fraction bar'
+    """
+    exchanged = re.fullmatch(r"(.+) and (.+) exchanged across the fraction bar", change)
+    if exchanged:
+        return f"${exchanged[1]}$ and ${exchanged[2]}$ exchanged across the fraction bar"
+    core, places = re.fullmatch(r"(.+?)((?: at all \d+ places)?)", change).groups()
+    return " and ".join(" → ".join(f"${side}$" if side.strip() else "nothing" for side in edit.split(" → "))
+                        for edit in core.split(" and ")) + places

@@ -158,7 +158,7 @@ FORMS = (
                        + (1 - _t(s) ** 2) / (2 * (1 + 3 * _t(s))) * _root154(s, r)),
          _stable_n1, False),
     Form("n_2", "(153)", lambda s, r: (_s151(s) - _sq153(s, r)) / 2, lambda s, r: 1 / _stable_n1(s, r), False),
-    Form("z_1", "(155) with n_1 of (153)",
+    Form("z_1", "(155) with n₁ of (153)",
          lambda s, r: 3 * (1 + 3 * _t(s)) * ((_s151(s) + _sq153(s, r)) / 2 - _t(s)) / (8 * (1 - _t(s) ** 2)),
          _stable_z1, False),
     Form("z_1", "(158)", lambda s, r: 3 * (3 + _t(s) + _root154(s, r)) / 16, _stable_z1, False),

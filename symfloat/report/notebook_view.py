@@ -337,7 +337,7 @@ class NotebookView:
         """What the first-principles witnesses of *target* compute, in the derivation's words."""
         ws = [w for w in self.derivation.witnesses if target.split("#")[0] in w.targets]
         return "; ".join(words(self.derivation, w.description)
-                         + (f" ({len(w.instances)} cases)" if hasattr(w, "instances") else "") for w in ws)
+                         + (f" ({_cases(len(w.instances))})" if hasattr(w, "instances") else "") for w in ws)
 
     def step_markdown(self, name: str) -> str:
         s = next(s for s in self.report.steps if s.name == name)
@@ -371,3 +371,7 @@ class NotebookView:
         out += _records(f"Witnesses against the correction — {what}:", f.corrected_numeric)
         out += [f"> {n}" for n in f.witness_notes]
         return "\n\n".join(out)
+
+
+def _cases(n: int) -> str:
+    return "1 case" if n == 1 else f"{n} cases"

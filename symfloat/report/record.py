@@ -76,6 +76,13 @@ def write_record(path, reports) -> bool:
     return write_if_changed(path, text)
 
 
+def _steps_in_words(steps: dict) -> str:
+    """The steps' count by status in words, the most first: ``26 proved, 15 definitions, 6 applied``."""
+    plural = {"definition": "definitions"}
+    return ", ".join(f"{n} {plural.get(k, k) if n != 1 else k}"
+                     for k, n in sorted(steps.items(), key=lambda kv: (-kv[1], kv[0])))
+
+
 def verification_table(reports: list[DerivationReport], elapsed: float | None = None) -> str:
     """A readable plain-text table, one row per printed formula, then the summary; *elapsed* is how long
     this command took, shown beside the checking time recorded (which a cached report keeps from when it
@@ -92,8 +99,8 @@ def verification_table(reports: list[DerivationReport], elapsed: float | None = 
     cached = sum(d.cached for d in reports)
     lines.append("")
     now = f"took {elapsed:.1f} s now; " if elapsed is not None else ""
-    lines.append(f"{s['formulas']} printed formulas: {s['verified']} verified, {s['erratum']} errata, "
-                 f"{s['unverifiable']} unverifiable, {s['trivial']} trivial; steps {s['steps']}; {now}checking time "
+    lines.append(f"{s['formulas']} printed formulas: {s['verified']} verified, {s['erratum']} {'erratum' if s['erratum'] == 1 else 'errata'}, "
+                 f"{s['unverifiable']} unverifiable, {s['trivial']} trivial; steps: {_steps_in_words(s['steps'])}; {now}checking time "
                  f"{'recorded ' if cached else ''}{s['seconds']:.1f} s"
                  + (f" ({cached} of {len(s['derivations'])} derivations read from the cache, their time as "
                     f"recorded when they were checked)" if cached else ""))

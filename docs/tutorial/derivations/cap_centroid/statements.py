@@ -25,7 +25,7 @@ d.quote("centroid", "centroid", r"$$x_s = \frac{3 (2r - h)^2}{4 (3r + h)}.$$",
         reading=(X, 3 * (2 * r - h) ** 2 / (4 * (3 * r + h))),
         erratum=Erratum("misprint", "high", "x_s = 3 (2r - h)^2 / (4 (3r - h))",
                         r"$M/V = (\pi h^2 (2r - h)^2/4) / (\pi h^2 (3r - h)/3)$; the text's own hemisphere value "
-                        "$3r/8$ ($h = r$) needs $3r - h$: with $3r + h$ it would be $3r/16$",
+                        "$3r/8$ ($h = r$) needs $3r - h$: with $3r + h$ it would be $3r/16$.",
                         corrected_reading=(X, 3 * (2 * r - h) ** 2 / (4 * (3 * r - h)))))
 d.quote("hemisphere", "hemisphere", r"For the hemisphere, $h = r$, this gives $x_s = \frac{3}{8} r$.",
         reading=(sp.Subs(X, h, r), sp.Rational(3, 8) * r))
