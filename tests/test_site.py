@@ -26,6 +26,7 @@ from symfloat.model.source import SOURCES  # noqa: E402
 from symfloat.model.symbol_names import GREEK  # noqa: E402
 from symfloat.model.span import math_intervals  # noqa: E402
 from symfloat.site import search, typeset  # noqa: E402
+from symfloat.numbers import duration  # noqa: E402
 from symfloat.site.build import MARKER, _sync  # noqa: E402
 from symfloat.site.edition import (edition_page, fault_words, formula_anchor, mark_of, places,  # noqa: E402
                                    replaced)
@@ -116,7 +117,7 @@ def test_the_edition_marks_every_quoted_formula_by_its_verdict(records, edition)
     note = note[:note.index("</details>")]
     witness = next(f for f in records.formulas if f["id"] == "scheeffer-vi-cf/78c")["numeric"][0]
     assert "misprint, medium confidence" in note and "6.0 × 10⁻¹" in note     # the record's error of the print
-    assert f'{witness["seconds"]:.3g} s' in note                            # and the witness's time, as recorded
+    assert duration(witness["seconds"]) in note                # and the witness's time, as recorded (74 ms)
     assert '../errata/scheeffer-78c-1.html' in note and "../notebooks/scheeffer-vi-cf.html#" in note
     assert "\\frac" not in re.sub(r'<annotation.*?</annotation>|title="[^"]*"', "", page, flags=re.S)
 
@@ -679,8 +680,8 @@ def _edition_marks(page) -> None:
     assert len(tall) >= 2 and set(tall) == {"dashed"}, tall
 
 
-# A display formula shown (not in a closed note) that scrolls in its box without the shade that says so
-_UNMARKED = """() => Array.from(document.querySelectorAll('.katex-display'))
+# A display formula or a table shown (not in a closed note) that scrolls in its box without the shade that says so
+_UNMARKED = """() => Array.from(document.querySelectorAll('.katex-display, .body table, table.witnesses'))
   .filter(b => !b.closest('details:not([open])') && b.scrollLeft + b.clientWidth < b.scrollWidth - 1
                && !b.classList.contains('scrolls')).length"""
 

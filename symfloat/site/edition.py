@@ -26,6 +26,7 @@ from ..model.source import Source
 from ..model.span import math_intervals, widened
 from ..report.labels import sections
 from ..report.ledger import REASONS, account, waivers
+from ..numbers import duration
 from ..report.witness_words import error_cells
 from .difference import corrected_html
 from .records import Records, slug
@@ -120,8 +121,12 @@ def places(text: str, fault: str, quote: tuple[int, int]) -> list[tuple[int, int
 
 def witness_line(numeric) -> str:
     """The witnesses in one line: method, cases, absolute and relative error, seconds."""
-    return "; ".join(f"{n['method']} ({n.get('cases', '?')} cases): abs {error_cells(n)[0]}, "
-                     f"rel {error_cells(n)[1]}, {n['seconds']:.3g} s" for n in numeric) or "no numeric witness"
+    return "; ".join(f"{n['method']} ({_cases(n.get('cases', '?'))}): abs {error_cells(n)[0]}, "
+                     f"rel {error_cells(n)[1]}, {duration(n['seconds'])}" for n in numeric) or "no numeric witness"
+
+
+def _cases(n) -> str:
+    return "1 case" if n == 1 else f"{n} cases"
 
 
 def _title(f: dict, records: Records) -> str:
@@ -178,7 +183,7 @@ def _witness_table(numeric) -> str:
         return "<p>No numeric witness.</p>"
     rows = "".join(f"<tr><td>{html.escape(n['method'])}</td><td>{n.get('cases', '')}</td>"
                    f"<td>{html.escape(error_cells(n)[0])}</td><td>{html.escape(error_cells(n)[1])}</td>"
-                   f"<td>{n['seconds']:.3g} s</td></tr>"
+                   f"<td>{duration(n['seconds'])}</td></tr>"
                    for n in numeric)
     return ('<table class="witnesses"><tr><th>witness method</th><th>cases</th><th>abs. error</th>'
             f"<th>rel. error</th><th>time</th></tr>{rows}</table>")

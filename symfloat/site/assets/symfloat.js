@@ -25,15 +25,28 @@ function symfloatFit(root) {
   boxes.forEach(function (box, k) { box.classList.toggle("scrolls", more[k]); });
 }
 function symfloatHasMore(box) { return box.scrollLeft + box.clientWidth < box.scrollWidth - 1; }
-window.addEventListener("DOMContentLoaded", function () { symfloatFit(); });
-document.addEventListener("toggle", function (e) { if (e.target.open) { symfloatFit(e.target); } }, true);
+/* A table wider than its column scrolls in its own box too (the stylesheet sets it as a block): it is marked
+   "scrolls" the same way, so that a column cut off at the right is not taken for the table's end. */
+var SYMFLOAT_TABLES = ".body table, table.witnesses";
+function symfloatTables(root) {
+  var tables = Array.prototype.filter.call((root || document).querySelectorAll(SYMFLOAT_TABLES),
+                                           function (t) { return !t.closest("details:not([open])"); });
+  var more = tables.map(symfloatHasMore);
+  tables.forEach(function (t, k) { t.classList.toggle("scrolls", more[k]); });
+}
+function symfloatLaidOut(root) { symfloatFit(root); symfloatTables(root); }
+window.addEventListener("DOMContentLoaded", function () { symfloatLaidOut(); });
+document.addEventListener("toggle", function (e) { if (e.target.open) { symfloatLaidOut(e.target); } }, true);
 document.addEventListener("scroll", function (e) {
-  if (e.target.classList && e.target.classList.contains("katex-display")) { e.target.classList.toggle("scrolls", symfloatHasMore(e.target)); }
+  var box = e.target;
+  if (box.classList && (box.classList.contains("katex-display") || box.matches(SYMFLOAT_TABLES))) {
+    box.classList.toggle("scrolls", symfloatHasMore(box));
+  }
 }, true);
 var symfloatResized = null;
 window.addEventListener("resize", function () {
   clearTimeout(symfloatResized);
-  symfloatResized = setTimeout(function () { symfloatFit(); }, 100);
+  symfloatResized = setTimeout(function () { symfloatLaidOut(); }, 100);
 });
 
 /* A mark's shade and underline belong to its lines of text, whose height is the font's: a formula reaching a
