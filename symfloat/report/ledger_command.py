@@ -83,8 +83,9 @@ def run(args) -> int:
         print(ledger_table(sources, pending) + (readings_table(rows) if args.readings else ""), end="")
         for s in sources:
             counts = status_counts(references(s))
-            print(f"{s}: {counts.pop('references')} references — "
-                  + ", ".join(f"{n} {st}" for st, n in counts.items() if n))
+            total = counts.pop("references")
+            found = ", ".join(f"{n} {st}" for st, n in counts.items() if n)
+            print(f"{s}: {total} references" + (f" — {found}" if found else ""))
     if args.readings:
         if args.write:
             write_if_changed(docs_path("readings.md", args.output), readings_markdown(reading_rows(tuple(SOURCES))))
