@@ -258,31 +258,30 @@ def _run(args) -> int:
     written = compiled_readings(write=True)          # the predictors' compiled readings, shipped with each package
     if written and not _quiet(args):
         print(f"compiled readings written: {', '.join(written)}", file=sys.stderr)
-    write_record(docs / "verification.json", reports)
-    write_if_changed(docs / "errata.json", errata_json(reports))
-    write_if_changed(docs / "errata.md", errata_markdown(reports))
+    changed = [name for name, wrote in (("verification.json", write_record(docs / "verification.json", reports)),
+                                        ("errata.json", write_if_changed(docs / "errata.json", errata_json(reports))),
+                                        ("errata.md", write_if_changed(docs / "errata.md", errata_markdown(reports))))
+               if wrote]
     quiet = _quiet(args)
     from .report.notebooks import write_notebooks
 
     written = write_notebooks([r.id for r in reports], notebooks, None if quiet else
                               (lambda d: print(f"executed notebook {d}", file=sys.stderr, flush=True)))
-    documents = ["verification.json", "errata.json", "errata.md"]
     checked = {r.id for r in reports}
     for did, report in provided("report"):      # documents the derivations add (e.g. Scheeffer IX's grid)
-        if did in checked:
-            if stamp_of(docs / report.filename) != report.stamp():         # what it depends on changed
-                write_if_changed(docs / report.filename, report.build(
-                    progress=None if quiet else (lambda m, f=report.filename: print(f"{f}: {m}", file=sys.stderr))))
-            documents.append(report.filename)
+        if did in checked and stamp_of(docs / report.filename) != report.stamp():   # what it depends on changed
+            told = None if quiet else (lambda m, f=report.filename: print(f"{f}: {m}", file=sys.stderr))
+            if write_if_changed(docs / report.filename, report.build(progress=told)):
+                changed.append(report.filename)
     from .report.figures import write_figures      # the pictures, from the data above (matplotlib: only here)
     from .report.phase_data import write_phase_data
 
     say = None if quiet else (lambda m: print(m, file=sys.stderr))
-    documents += [f"figures/{name}" for name in write_phase_data(docs, say)]
+    changed += [f"figures/{name}" for name in write_phase_data(docs, say)]
     figures = write_figures(docs, say)
     print(_summary_by_source(reports))
-    print(f"wrote {', '.join('docs/' + f for f in documents)}; {len(written)} notebooks changed; "
-          f"{len(figures)} figures redrawn")
+    print(f"{'wrote ' + ', '.join('docs/' + f for f in changed) if changed else 'no document changed'}; "
+          f"{len(written)} notebooks changed; {len(figures)} figures redrawn")
     for r in reports:
         for msg in r.failures:
             print(f"FAILURE: {msg}")
