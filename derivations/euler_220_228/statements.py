@@ -663,7 +663,7 @@ d.quote("curve-c", "§227", r"seu $x = a - \frac{cyy}{bb} + \frac{c}{b} V(bb-yy)
             r"(a/b)\sqrt{bb-yy}$; with $(c/b)\surd$ the curve would not end at B ($x = a + c$ at $y = 0$, not $2a$). "
             r"The same $c/b$, with the same $+$ for the $\pm$, stands in §228's 'aequatio assumta' ('curve-c-again'): "
             "a fault repeated alike at two places a paragraph apart is the print's, not a confusion of the scan (the "
-            "consistency criterion of docs/errata-kinds.md). Medium: the scan confuses a and c beside it ('$Oc = a$').",
+            "consistency criterion of the errata's kinds). Medium: the scan confuses a and c beside it ('$Oc = a$').",
             corrected_reading=as_printed(lambda: (BRANCHES_C, sp.Matrix([a - c * y ** 2 / b ** 2 - a / b * R,
                                                       a - c * y ** 2 / b ** 2 + a / b * R]))),
                         objection="The scan confuses a and c in the very next clause ('$Oc = a$' for $Oc = c$), so "
@@ -700,7 +700,7 @@ SHIFT = (r"From $y = 0$ to $b$: $\int dy\sqrt{bb-yy} = \pi b^2/4 = bD/2a$, $\int
          "that follows, $abD/2 - bcD/4 + bccD/16a$, is made of exactly these values, so Euler had them. The print "
          "gives $b^3D/8a$, $b^5D/16a$, $b^9D/16a$: each value moved one integral on, consistently through the three "
          "equations of the line, and the last filled with a power that belongs to none. A scan misreads glyphs; it "
-         "does not move values from one equation to the next: the consistency criterion of docs/errata-kinds.md makes "
+         "does not move values from one equation to the next: the consistency criterion of the errata's kinds makes "
          "it the print's (the compositor setting the values against the wrong integrals). Medium, since the printed "
          "page cannot be seen (was the scan's, low).")
 SHIFT_OBJECTION = ("A scan can lose a line (a fault of the transcription by the criteria): with the first value "

@@ -358,7 +358,8 @@ d.quote("prismatoid-name", "§1 prismatoid volume", "Ueber das Prismaoid und sei
                          "heading, in the definition ('Unter Prismaoid verstehen wir'), in 'Die Seitenebenen des "
                          "Prismaoids', in 'aus denen das Prismaoid besteht' and in 'Formel für den Inhalt des "
                          "Prismaoids'. A form repeated alike through a section is the compositor's, which a scan "
-                         "does not do (docs/errata-kinds.md): a misprint. Checked as what the heading announces: "
+                         "does not do (the criteria of the errata's kinds): a misprint. Checked as what the "
+                         "heading announces: "
                          "the cubic content of the prismatoid, the sum of its three groups of bodies, is the "
                          "formula the section derives."),
                         corrected_reading=(I, collected),

@@ -891,7 +891,8 @@ for row162, row161, text162, signs162, stab in ROWS_162:
                      sp.Matrix(list(signs162) + [len(stab)] + list(stab))),
             note=f"read at s = {sv}, n = {nv} (row {row161} of (161)): the signs of n - rho, n - 1/rho, n - n_1, the "
                  "number of roots of (136) in (2 sigma, 1] and the signs of F' there in the order of the tilt "
-                 "(+1 stable, -1 labile about the axis); docs/scheeffer-ix-grid.md compares the whole table with the "
+                 "(+1 stable, -1 labile about the axis); the main job's grid of the case tables compares the "
+                 "whole table with the "
                  "solver")
 
 # complete stability in the second region: HG < c is sufficient, not the condition
@@ -1148,4 +1149,4 @@ d.quote("alternate", "IX.C",
         note="read at s = 73/100, n = 251/250 from 0 to 90 deg: upright labile, no oblique position in the first "
              "region (margin of 131 negative), stable, labile, stable in the second (signs of F'), none in the third "
              "(margin of 165 negative), a-vertical labile: the five equilibria alternate. The tests check the "
-             "alternation of the tables on the whole grid of docs/scheeffer-ix-grid.md")
+             "alternation of the tables on the whole grid of the case tables against the solver")
