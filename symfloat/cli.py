@@ -273,6 +273,7 @@ def _run(args) -> int:
             told = None if quiet else (lambda m, f=report.filename: print(f"{f}: {m}", file=sys.stderr))
             if write_if_changed(docs / report.filename, report.build(progress=told)):
                 changed.append(report.filename)
+    from .numbers import counted
     from .report.figures import write_figures      # the pictures, from the data above (matplotlib: only here)
     from .report.phase_data import write_phase_data
 
@@ -281,7 +282,7 @@ def _run(args) -> int:
     figures = write_figures(docs, say)
     print(_summary_by_source(reports))
     print(f"{'wrote ' + ', '.join('docs/' + f for f in changed) if changed else 'no document changed'}; "
-          f"{len(written)} notebooks changed; {len(figures)} figures redrawn")
+          f"{counted(len(written), 'notebook')} changed; {counted(len(figures), 'figure')} redrawn")
     for r in reports:
         for msg in r.failures:
             print(f"FAILURE: {msg}")

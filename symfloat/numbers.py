@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["scientific", "written", "duration"]
+__all__ = ["scientific", "written", "duration", "counted"]
 
 _SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
@@ -55,3 +55,12 @@ def duration(seconds: float) -> str:
         if seconds >= scale:
             return f"{seconds / scale:.3g} {unit}"
     return f"{seconds * 1e6:.3g} µs"
+
+
+def counted(n, noun: str, plural: str = "") -> str:
+    """*n* with its noun, singular for one.
+
+    >>> counted(1, "case"), counted(3, "case"), counted(1, "erratum", "errata"), counted(0, "erratum", "errata")
+    ('1 case', '3 cases', '1 erratum', '0 errata')
+    """
+    return f"{n} {noun if n == 1 else plural or noun + 's'}"

@@ -311,9 +311,9 @@ def _section_orders(selector, figures, progress, quick):
     lines += [f"Simpson measures {_fo(smooth.simpson)} on the smooth exp; across the kinks it falls to "
               + " and ".join(f"{_fo(k.simpson_order)} ({k.heel})" for k in kinks)
               + ": one panel pair straddles each kink, where the rule's error is of the order of the jump times "
-              "h^(j+1) for a jump in the j-th derivative. The trapezoid rule keeps its 2 (its own error is h^2 "
-              "already). Split at the vertex heights every piece is a quadratic, which Simpson integrates exactly "
-              "and Gauss–Legendre with n >= 2 to rounding.", ""]
+              "$h^{j+1}$ for a jump in the $j$-th derivative. The trapezoid rule keeps its 2 (its own error is "
+              "$h^2$ already). Split at the vertex heights every piece is a quadratic, which Simpson integrates "
+              "exactly and Gauss–Legendre with $n \\ge 2$ to rounding.", ""]
     for k in kinks:
         lines += [f"#### Cube {k.heel}", "",
                   f"Draught {k.draught} (heights from the cube's frame); vertex heights inside: "

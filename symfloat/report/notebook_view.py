@@ -19,6 +19,7 @@ from ..model.claim import expressions, members
 from ..model.erratum import APPARATUS, apparatus
 from ..model.relation import is_relation, relation_latex
 from ..model.symbol_names import latex
+from ..numbers import counted
 from ..registry import load
 from .notebook_code import STRATEGY_WORDS
 from ..prose import typeset
@@ -337,7 +338,7 @@ class NotebookView:
         """What the first-principles witnesses of *target* compute, in the derivation's words."""
         ws = [w for w in self.derivation.witnesses if target.split("#")[0] in w.targets]
         return "; ".join(words(self.derivation, w.description)
-                         + (f" ({_cases(len(w.instances))})" if hasattr(w, "instances") else "") for w in ws)
+                         + (f" ({counted(len(w.instances), 'case')})" if hasattr(w, "instances") else "") for w in ws)
 
     def step_markdown(self, name: str) -> str:
         s = next(s for s in self.report.steps if s.name == name)
@@ -372,6 +373,3 @@ class NotebookView:
         out += [f"> {n}" for n in f.witness_notes]
         return "\n\n".join(out)
 
-
-def _cases(n: int) -> str:
-    return "1 case" if n == 1 else f"{n} cases"

@@ -8,6 +8,7 @@ from pathlib import Path
 from ..engine.check import DerivationReport
 from ..engine.witness import record_decision
 from ..files import write_if_changed
+from ..numbers import counted
 from .cross_references import readable
 from .witness_words import best_error
 
@@ -79,8 +80,7 @@ def write_record(path, reports) -> bool:
 def _steps_in_words(steps: dict) -> str:
     """The steps' count by status in words, the most first: ``26 proved, 15 definitions, 6 applied``."""
     plural = {"definition": "definitions"}
-    return ", ".join(f"{n} {plural.get(k, k) if n != 1 else k}"
-                     for k, n in sorted(steps.items(), key=lambda kv: (-kv[1], kv[0])))
+    return ", ".join(counted(n, k, plural.get(k, k)) for k, n in sorted(steps.items(), key=lambda kv: (-kv[1], kv[0])))
 
 
 def verification_table(reports: list[DerivationReport], elapsed: float | None = None) -> str:
@@ -99,7 +99,7 @@ def verification_table(reports: list[DerivationReport], elapsed: float | None = 
     cached = sum(d.cached for d in reports)
     lines.append("")
     now = f"took {elapsed:.1f} s now; " if elapsed is not None else ""
-    lines.append(f"{s['formulas']} printed formulas: {s['verified']} verified, {s['erratum']} {'erratum' if s['erratum'] == 1 else 'errata'}, "
+    lines.append(f"{s['formulas']} printed formulas: {s['verified']} verified, {counted(s['erratum'], 'erratum', 'errata')}, "
                  f"{s['unverifiable']} unverifiable, {s['trivial']} trivial; steps: {_steps_in_words(s['steps'])}; {now}checking time "
                  f"{'recorded ' if cached else ''}{s['seconds']:.1f} s"
                  + (f" ({cached} of {len(s['derivations'])} derivations read from the cache, their time as "

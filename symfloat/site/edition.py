@@ -24,9 +24,9 @@ from ..registry import statements
 from ..model.erratum import apparatus
 from ..model.source import Source
 from ..model.span import math_intervals, widened
+from ..numbers import counted, duration
 from ..report.labels import sections
 from ..report.ledger import REASONS, account, waivers
-from ..numbers import duration
 from ..report.witness_words import error_cells
 from .difference import corrected_html
 from .records import Records, slug
@@ -121,12 +121,8 @@ def places(text: str, fault: str, quote: tuple[int, int]) -> list[tuple[int, int
 
 def witness_line(numeric) -> str:
     """The witnesses in one line: method, cases, absolute and relative error, seconds."""
-    return "; ".join(f"{n['method']} ({_cases(n.get('cases', '?'))}): abs {error_cells(n)[0]}, "
+    return "; ".join(f"{n['method']} ({counted(n.get('cases', '?'), 'case')}): abs {error_cells(n)[0]}, "
                      f"rel {error_cells(n)[1]}, {duration(n['seconds'])}" for n in numeric) or "no numeric witness"
-
-
-def _cases(n) -> str:
-    return "1 case" if n == 1 else f"{n} cases"
 
 
 def _title(f: dict, records: Records) -> str:
