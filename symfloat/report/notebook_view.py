@@ -372,4 +372,3 @@ class NotebookView:
         out += _records(f"Witnesses against the correction — {what}:", f.corrected_numeric)
         out += [f"> {n}" for n in f.witness_notes]
         return "\n\n".join(out)
-

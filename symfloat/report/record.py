@@ -99,8 +99,9 @@ def verification_table(reports: list[DerivationReport], elapsed: float | None = 
     cached = sum(d.cached for d in reports)
     lines.append("")
     now = f"took {elapsed:.1f} s now; " if elapsed is not None else ""
-    lines.append(f"{s['formulas']} printed formulas: {s['verified']} verified, {counted(s['erratum'], 'erratum', 'errata')}, "
-                 f"{s['unverifiable']} unverifiable, {s['trivial']} trivial; steps: {_steps_in_words(s['steps'])}; {now}checking time "
+    lines.append(f"{s['formulas']} printed formulas: {s['verified']} verified, "
+                 f"{counted(s['erratum'], 'erratum', 'errata')}, {s['unverifiable']} unverifiable, "
+                 f"{s['trivial']} trivial; steps: {_steps_in_words(s['steps'])}; {now}checking time "
                  f"{'recorded ' if cached else ''}{s['seconds']:.1f} s"
                  + (f" ({cached} of {len(s['derivations'])} derivations read from the cache, their time as "
                     f"recorded when they were checked)" if cached else ""))
