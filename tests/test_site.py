@@ -260,6 +260,19 @@ def test_a_correction_marks_whole_words_and_the_changed_part_of_a_formula():
                       r"\text{ \htmlClass{changed}{eine Wurzel}}")
 
 
+def test_a_correction_that_is_a_sentence_is_set_as_prose_and_wraps():
+    # a correction in \text{} with formulas between its words (Scheeffer IX.B's clause, 60 characters and more)
+    # was one line of KaTeX, cut off or set tiny on a phone; as prose with inline formulas it wraps
+    sentence = corrected_html(r"\text{so ist } F(z) \text{ positiv, wenn } s > 1 \text{ ist}",
+                              r"so ist  $F(z)$  negativ, wenn  $s > 1$  ist")
+    assert sentence.startswith('<p class="math-words">so ist ') and sentence.count("<math") == 2
+    assert '<span class="changed">positiv</span>' in sentence            # the change marked in the words
+    # a formula with words in it stays a display: a case table, a formula with a word or two
+    cases = corrected_html(r"x = \begin{cases} 1 & \text{für } s > 0 \\ 0 & \text{sonst} \end{cases}")
+    assert cases.startswith('<div class="math-display">')
+    assert corrected_html(r"\frac{a}{b} \text{ circa}").startswith('<div class="math-display">')
+
+
 def test_a_correction_that_rewrites_its_fault_is_marked_against_the_fault(records):
     # Scheeffer (51): the correction rewrites "folglich das Gleichgewicht stabil" and reuses words from earlier in
     # the sentence; against the whole sentence "folglich" and "Gleichgewicht" were marked as new

@@ -19,6 +19,7 @@ piece.  Changed letters of a name (``\\operatorname{cotg}``) mark the whole name
 """
 from __future__ import annotations
 
+import html
 import re
 from difflib import SequenceMatcher
 
@@ -138,6 +139,58 @@ def reads_as_words(corrected: str) -> bool:
                                     and "\\" not in corrected)
 
 
+_CHANGED = r"\htmlClass{changed}{"
+
+
+def _group(tex: str, at: int) -> int:
+    """The index after the brace group opening at *at* (``-1`` when it does not close)."""
+    depth = 0
+    for j in range(at, len(tex)):
+        depth += {"{": 1, "}": -1}.get(tex[j], 0)
+        if depth == 0:
+            return j + 1
+    return -1
+
+
+def _sentence_html(tex: str) -> str | None:
+    """A correction that is a sentence -- its top level ``\\text{}`` groups of words (its change marked inside
+    them) and formulas between them, more words than formula -- as HTML prose with the formulas typeset inline, so
+    that it wraps on a narrow screen; ``None`` for anything else (a formula with words in it, an environment, TeX
+    inside the words)."""
+    pieces, formula, at = [], "", 0
+    while at < len(tex):
+        changed = tex.startswith(_CHANGED, at)
+        opening = _TEXT_GROUP.match(tex, at + len(_CHANGED) if changed else at)
+        if opening is None:
+            formula += tex[at]
+            at += 1
+            continue
+        end = _group(tex, opening.end() - 1)
+        close = _group(tex, at + len(_CHANGED) - 1) if changed else end
+        if end < 0 or close != (end + 1 if changed else end):
+            return None                      # a mark around more than the one group: a formula
+        pieces += [("math", formula)] if formula.strip() else []
+        pieces.append(("changed" if changed else "text", tex[opening.end():end - 1]))
+        formula, at = "", close
+    pieces += [("math", formula)] if formula.strip() else []
+    words = "".join(t for kind, t in pieces if kind != "math")
+    maths = "".join(t for kind, t in pieces if kind == "math")
+    if len(re.findall(r"[^\W\d_]{2,}", words)) < 3 or len(words) < len(maths) or _UNSAFE.search(tex):
+        return None
+    out = []
+    for kind, text in pieces:
+        if kind == "math":
+            out.append(typeset(text))
+            continue
+        parts = re.split(r"(\\htmlClass\{changed\}\{[^{}\\]*\})", text)
+        if any("\\" in part or "{" in part for part in parts[::2]):
+            return None                      # TeX inside the words
+        shown = "".join(f'<span class="changed">{html.escape(part[len(_CHANGED):-1])}</span>' if k % 2
+                        else html.escape(part) for k, part in enumerate(parts))
+        out.append(f'<span class="changed">{shown}</span>' if kind == "changed" else shown)
+    return "".join(out)
+
+
 def corrected_html(corrected: str, printed: str = "") -> str:
     """A correction: words (with their dollars) as prose, a formula as a typeset display, its change
     from the *printed* TeX marked.
@@ -148,6 +201,9 @@ def corrected_html(corrected: str, printed: str = "") -> str:
     if reads_as_words(corrected):
         return excerpt_html(corrected)
     marked = highlighted(printed, corrected) if printed else corrected
+    words = _sentence_html(marked)
+    if words is not None:                   # a sentence in \text{} with formulas in it: set as prose, it wraps
+        return f'<p class="math-words">{words}</p>'
     shown = typeset(marked, display=True)
     if marked != corrected and shown.startswith("<code"):        # the marks made it untypesettable
         UNRENDERED.discard(marked)
