@@ -26,6 +26,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 from ..model.latex import token_spans
+from ..model.tex import braced_end
 
 __all__ = ["Correction", "candidates", "corrections", "CONFUSIONS"]
 
@@ -84,16 +85,6 @@ def _glyph_edits(tex, starts, ends):
             yield text, f"{o1} → {n1} and {o2} → {n2}", "glyph", "scan-like", c1 + c2
 
 
-def _braced_end(tex: str, at: int) -> int:
-    """The index after the brace group opening at *at* (``-1`` when it does not close)."""
-    depth = 0
-    for j in range(at, len(tex)):
-        depth += (tex[j] == "{") - (tex[j] == "}")
-        if depth == 0:
-            return j + 1
-    return -1
-
-
 def _token_edits(tex, spans):
     """Digits, signs, relations, exponents, subscripts, letters, fraction bars, swapped neighbours."""
     solid = [t for t in spans if t[0] != "space"]
@@ -138,9 +129,9 @@ def _token_edits(tex, spans):
                 if other != text:
                     yield _replace(tex, start, end, other), f"{text} → {other}", "letter", "print-like", _COST["letter"]
         if text in (r"\frac", r"\dfrac", r"\tfrac") and tex[end:end + 1] == "{":
-            middle = _braced_end(tex, end)
+            middle = braced_end(tex, end)
             if middle > 0 and tex[middle:middle + 1] == "{":
-                close = _braced_end(tex, middle)
+                close = braced_end(tex, middle)
                 if close > 0:
                     flipped = tex[:end] + tex[middle:close] + tex[end:middle] + tex[close:]
                     yield (flipped, f"{tex[end:middle]} and {tex[middle:close]} exchanged across the fraction bar",

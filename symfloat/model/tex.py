@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["normalise", "chains", "is_bare_symbol", "RELATIONS"]
+__all__ = ["normalise", "chains", "is_bare_symbol", "braced_end", "RELATIONS"]
 
 RELATIONS = ("=", "<", ">", r"\leq", r"\geq", r"\le", r"\ge", r"\neq", r"\approx", r"\cong", r"\equiv",
              r"\lessgtr", r"\gtrless", r"\sim")
@@ -97,3 +97,17 @@ def is_bare_symbol(tex: str) -> bool:
             return False
         pos = m.end()
     return True
+
+
+def braced_end(tex: str, at: int) -> int:
+    """The index after the brace group opening at *at* (``-1`` when it does not close).
+
+    >>> braced_end(r"\\frac{a}{b}", 5), braced_end("{a{b}", 0)
+    (8, -1)
+    """
+    depth = 0
+    for j in range(at, len(tex)):
+        depth += {"{": 1, "}": -1}.get(tex[j], 0)
+        if depth == 0:
+            return j + 1
+    return -1

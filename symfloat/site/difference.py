@@ -23,6 +23,7 @@ import html
 import re
 from difflib import SequenceMatcher
 
+from ..model.tex import braced_end
 from .text import excerpt_html
 from .typeset import UNRENDERED, typeset
 
@@ -45,11 +46,8 @@ def _prose(tex: str) -> list[tuple[int, int]]:
         ends = [0] + [i for m in re.finditer(r"\$\$?", tex) for i in m.span()] + [len(tex)]
         spans += list(zip(ends[::4], ends[1::4]))
     for m in _TEXT_GROUP.finditer(tex):
-        depth, end = 1, m.end()
-        while end < len(tex) and depth:
-            depth += {"{": 1, "}": -1}.get(tex[end], 0)
-            end += 1
-        spans.append((m.end(), end - 1))
+        end = braced_end(tex, m.end() - 1)
+        spans.append((m.end(), (end if end >= 0 else len(tex)) - 1))
     return spans
 
 
@@ -142,16 +140,6 @@ def reads_as_words(corrected: str) -> bool:
 _CHANGED = r"\htmlClass{changed}{"
 
 
-def _group(tex: str, at: int) -> int:
-    """The index after the brace group opening at *at* (``-1`` when it does not close)."""
-    depth = 0
-    for j in range(at, len(tex)):
-        depth += {"{": 1, "}": -1}.get(tex[j], 0)
-        if depth == 0:
-            return j + 1
-    return -1
-
-
 def _sentence_html(tex: str) -> str | None:
     """A correction that is a sentence -- its top level ``\\text{}`` groups of words (its change marked inside
     them) and formulas between them, more words than formula -- as HTML prose with the formulas typeset inline, so
@@ -165,8 +153,8 @@ def _sentence_html(tex: str) -> str | None:
             formula += tex[at]
             at += 1
             continue
-        end = _group(tex, opening.end() - 1)
-        close = _group(tex, at + len(_CHANGED) - 1) if changed else end
+        end = braced_end(tex, opening.end() - 1)
+        close = braced_end(tex, at + len(_CHANGED) - 1) if changed else end
         if end < 0 or close != (end + 1 if changed else end):
             return None                      # a mark around more than the one group: a formula
         pieces += [("math", formula)] if formula.strip() else []
