@@ -7,14 +7,22 @@ STAMP := $(VENV)/.installed
 TEST_STAMP := $(VENV)/.installed-test
 KATEX := node_modules/.installed
 
+# `install ARGS`: uv installs ARGS into .venv (the versions pip would choose, in about 5 s where pip takes
+# about 30: it resolves, downloads and unpacks in parallel); pip installs uv from PyPI first. Where uv cannot
+# be had or cannot reach the index, pip installs ARGS itself, and says so.
+define install
+	@$(BIN)/python -m pip install --quiet uv && $(BIN)/uv pip install --quiet --native-tls --python $(BIN)/python $(1) \
+	|| { echo "make: uv could not install $(1); pip installs it (about half a minute)"; \
+	     $(BIN)/python -m pip install --quiet --upgrade pip && $(BIN)/python -m pip install --quiet $(1); }
+endef
+
 .PHONY: run test clean
 
 $(STAMP): pyproject.toml setup.py symfloat/geometry/_clipped.c
-	@echo "make: creating $(VENV) and installing symfloat with what the main job needs (once; about half a minute)"
+	@echo "make: creating $(VENV) and installing symfloat with what the main job needs (once; a few seconds)"
 	$(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --upgrade pip
-	@echo "make: pip is installing sympy, mpmath, python-flint, numpy, matplotlib, nbclient ..."
-	$(BIN)/python -m pip install --quiet -e .
+	@echo "make: installing sympy, mpmath, python-flint, numpy, matplotlib, nbclient ..."
+	$(call install,-e .)
 	$(BIN)/python -c "from symfloat.report.notebook_html import install; install()"
 	touch $(STAMP)
 	@echo "make: $(VENV) is ready"
@@ -22,8 +30,8 @@ $(STAMP): pyproject.toml setup.py symfloat/geometry/_clipped.c
 # The tests' own tools, added to the same environment by the first `make test`: pytest with xdist and
 # hypothesis, Sphinx and MyST-NB for the site, Dask and pyarrow for the atlas, Playwright for the browser.
 $(TEST_STAMP): $(STAMP)
-	@echo "make: pip is adding the test tools (pytest, hypothesis, Sphinx, MyST-NB, Dask, pyarrow, Playwright) ..."
-	$(BIN)/python -m pip install --quiet -e '.[test]'
+	@echo "make: adding the test tools (pytest, hypothesis, Sphinx, MyST-NB, Dask, pyarrow, Playwright) ..."
+	$(call install,-e '.[test]')
 	touch $(TEST_STAMP)
 
 # KaTeX, which typesets the site's mathematics at build time (symfloat/site/typeset.py), pinned by
