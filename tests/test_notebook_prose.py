@@ -225,3 +225,26 @@ def test_the_about_text_shows_no_code():
              for m in re.finditer(r"`[^`\n]+`", cell.source)]
     assert not shown, shown[:5]
     assert typeset("``a, b, …, g`` and ``ABC``, ``crossing``") == r"$a, b, \ldots, g$ and $ABC$, ``crossing``"
+
+
+_ASCII_MATHS = re.compile(r"\^|∫∫|\b[A-Za-z]_[A-Za-z0-9{]")
+
+
+def _words_of(line: str) -> str:
+    """*line* without its formulas and code: what a reader sees set as words."""
+    return re.sub(r"`[^`]*`", "", re.sub(r"\$[^$]*\$", "", re.sub(r"\$\$.*?\$\$", "", line)))
+
+
+def test_no_words_of_a_notebook_write_mathematics_in_ascii():
+    # a witness's note ("> ∫∫ (x - x_C)^2 over the quadrilateral: disagrees ...", Euler §§192-219) and the helper
+    # names of Graefe §1 ("|(b - a) x (d - a)|^2") were shown as written, and Graefe §4's step titles said
+    # "Circle of radius^2 =": the source's quotations ("> " and no note) are verbatim and not looked at, nor the
+    # title ("# "), the derivation's name in plain text, which the site also puts in the page's title and sidebar
+    found = [(path.name, line) for path in sorted((ROOT / "notebooks").glob("*.ipynb"))
+             for cell in nbformat.read(path, as_version=4).cells if cell.cell_type == "markdown"
+             for line in re.sub(r"\$\$.*?\$\$", "", cell.source, flags=re.S).splitlines()
+             if (not line.startswith(">") or ": disagrees" in line or line.startswith("> definition route"))
+             and not line.startswith(("|", "# ")) and _ASCII_MATHS.search(_words_of(line))]
+    assert not found, found[:8]
+    assert _ASCII_MATHS.search(_words_of("> ∫∫ (x - x_C)^2 over the quadrilateral: disagrees"))
+    assert not _ASCII_MATHS.search(_words_of(r"> $\int\int (x - x_{C})^{2}$ over the quadrilateral: disagrees"))

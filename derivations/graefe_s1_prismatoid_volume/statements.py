@@ -80,19 +80,24 @@ triple_ABCD = (XB - XA).dot((XC - XA).cross(XD - XA))
 triple_ABCE = (XB - XA).dot((XC - XA).cross(XE - XA))
 # names for display (the notebook writes these sub-expressions by their names)
 for X, label in ((XA, "A"), (XB, "B"), (XC, "C"), (XD, "D")):
-    d.name(sp.Symbol(rf"\mathbf{{{label}}}"), X, f"the vertex {label} of the tetrahedron")
-d.name(sp.Symbol(r"\mathbf{E}"), XE, "E = B + (D - C): BE drawn parallel to CD")
-d.name(sp.Symbol(r"\vec{ab}"), ab, "b - a, a side of the mid-section abcd (a, b, c, d the midpoints of AC, BC, BD, "
-       "AD, so a = (A + C)/2 and b = (B + C)/2)")
-d.name(sp.Symbol(r"\vec{dc}"), dc, "c - d, the opposite side (d = (A + D)/2, c = (B + D)/2)")
-d.name(sp.Symbol(r"\tfrac{1}{2}\vec{AB}"), AB_half, "half the edge AB")
+    d.name(sp.Symbol(rf"\mathbf{{{label}}}"), X, f"the vertex ${label}$ of the tetrahedron")
+d.name(sp.Symbol(r"\mathbf{E}"), XE, "$E = B + (D - C)$: $BE$ drawn parallel to $CD$")
+d.name(sp.Symbol(r"\vec{ab}"), ab, "$b - a$, a side of the mid-section $abcd$ ($a, b, c, d$ the midpoints of "
+       "$AC, BC, BD, AD$, so $a = (A + C)/2$ and $b = (B + C)/2$)")
+d.name(sp.Symbol(r"\vec{dc}"), dc, "$c - d$, the opposite side ($d = (A + D)/2$, $c = (B + D)/2$)")
+d.name(sp.Symbol(r"\tfrac{1}{2}\vec{AB}"), AB_half, "half the edge $AB$")
 d.name(sp.Symbol(r"|[\vec{AB},\vec{AC},\vec{AD}]|"), sp.Abs(triple_ABCD),
-       "|AB . (AC x AD)|, the absolute triple product of the edges from A")
-d.name(sp.Symbol(r"|[\vec{AB},\vec{AC},\vec{AE}]|"), sp.Abs(triple_ABCE), "|AB . (AC x AE)|, the same with E for D")
-d.name(sp.Symbol(r"|\vec{ab}\times\vec{ad}|^2"), w.dot(w), "|(b - a) x (d - a)|^2, the squared area of the parallelogram abcd")
-d.name(sp.Symbol(r"|\vec{n}|^2"), n.dot(n), "n . n, n = AB x CD the common normal of the edges AB and CD")
-d.name(sp.Symbol(r"|\vec{AC}\cdot\vec{n}|"), sp.Abs((XC - XA).dot(n)), "|AC . n|, AC projected on the common normal")
-d.name(sp.Symbol(r"|\vec{AB}\times\vec{AE}|^2"), u.dot(u), "|AB x AE|^2, the squared double area of the triangle ABE")
+       r"$|\vec{AB} \cdot (\vec{AC} \times \vec{AD})|$, the absolute triple product of the edges from $A$")
+d.name(sp.Symbol(r"|[\vec{AB},\vec{AC},\vec{AE}]|"), sp.Abs(triple_ABCE),
+       r"$|\vec{AB} \cdot (\vec{AC} \times \vec{AE})|$, the same with $E$ for $D$")
+d.name(sp.Symbol(r"|\vec{ab}\times\vec{ad}|^2"), w.dot(w),
+       r"$|(b - a) \times (d - a)|^2$, the squared area of the parallelogram $abcd$")
+d.name(sp.Symbol(r"|\vec{n}|^2"), n.dot(n),
+       r"$\vec{n} \cdot \vec{n}$, $\vec{n} = \vec{AB} \times \vec{CD}$ the common normal of the edges $AB$ and $CD$")
+d.name(sp.Symbol(r"|\vec{AC}\cdot\vec{n}|"), sp.Abs((XC - XA).dot(n)),
+       r"$|\vec{AC} \cdot \vec{n}|$, $AC$ projected on the common normal")
+d.name(sp.Symbol(r"|\vec{AB}\times\vec{AE}|^2"), u.dot(u),
+       r"$|\vec{AB} \times \vec{AE}|^2$, the squared double area of the triangle $ABE$")
 
 d.step("volume-ABCD", Eq(Vt, sp.Abs(triple_ABCD) / 6), "definition",
        note="volume of a tetrahedron: one sixth of the absolute triple product", result=Vt)

@@ -257,8 +257,8 @@ d.quote("segment-2-3", "§4 spherical segment, two bases",
 # ---- paraboloid, one base ------------------------------------------------------------------------------
 area_p1 = pi * 2 * p * (x - u)
 G_p1, D_p1, g_p1, X_p1 = body("paraboloid-1", "p1", area_p1, x, 2 * pi * p * x, pi * p * x, 0,
-                              "circle of radius^2 = 2p (x - u) (vertex equation y^2 = 2 p xi, the vertex at "
-                              "height x above the base)")
+                              r"circle of radius $\sqrt{2p (x - u)}$ (vertex equation $y^2 = 2 p \xi$, the vertex at "
+                              r"height $x$ above the base)")
 d.quote("paraboloid-1-radii", "§4 paraboloid, one base",
         r"$$y^2 = 2px, \quad y'^2 = px \quad \text{und da } g = 0 \text{ mit Weglassung von } \pi:$$",
         reading=(sp.Matrix([G_p1 / pi, D_p1 / pi, g_p1]), sp.Matrix([2 * p * x, p * x, 0])),
@@ -271,7 +271,8 @@ d.quote("paraboloid-1", "§4 paraboloid, one base",
 area_p2 = pi * 2 * p * (xv - u)
 G_p2, D_p2, g_p2, X_p2 = body("paraboloid-2", "p2", area_p2, xv - xvp, 2 * pi * p * xv, pi * p * (xvp + xv),
                               2 * pi * p * xvp,
-                              "circle of radius^2 = 2p (x_v - u): G at abscissa x_v from the vertex, g at x'_v")
+                              r"circle of radius $\sqrt{2p (x_v - u)}$: $G$ at abscissa $x_v$ from the vertex, "
+                              r"$g$ at $x'_v$")
 d.step("paraboloid-2-reduced", (X_p2, (xv - xvp) / 3 * (2 * xvp + xv) / (xvp + xv)), "algebra",
        uses=("paraboloid-2-centroid",))
 d.quote("paraboloid-2-radii", "§4 paraboloid, two bases",
@@ -296,8 +297,8 @@ d.step("ellipsoid-segment-height", Eq(h_es, a - x), "definition", note="from the
 area_es = pi * b ** 2 / a ** 2 * (a ** 2 - (x + u) ** 2)
 G_es, D_es, g_es, X_es = body("ellipsoid-segment", "es", area_es, h_es, pi * b ** 2 / a ** 2 * (a ** 2 - x ** 2),
                               pi * b ** 2 / a ** 2 * (3 * a ** 2 - 2 * a * x - x ** 2) / 4, 0,
-                              "circle of radius^2 = b^2/a^2 (a^2 - (x + u)^2) (centre equation of the "
-                              "generating ellipse), the base at abscissa x")
+                              r"circle of radius $\frac{b}{a} \sqrt{a^2 - (x + u)^2}$ (centre equation of the "
+                              r"generating ellipse), the base at abscissa $x$")
 num_es = 3 * a ** 2 - 2 * a * x - x ** 2
 d.step("ellipsoid-segment-reduced", (X_es, (a - x) / 4 * num_es / (2 * a ** 2 - a * x - x ** 2),
                                      num_es / (4 * (2 * a + x))), "algebra", uses=("ellipsoid-segment-centroid",))
@@ -322,7 +323,7 @@ d.quote("ellipsoid-segment-2", "§4 ellipsoid segment",
 
 area_he = pi * b ** 2 / a ** 2 * (a ** 2 - u ** 2)
 X_he = body("half-ellipsoid", "he", area_he, a, pi * b ** 2, 3 * pi * b ** 2 / 4, 0,
-            "circle of radius^2 = b^2/a^2 (a^2 - u^2), u from the centre")[-1]
+            r"circle of radius $\frac{b}{a} \sqrt{a^2 - u^2}$, $u$ from the centre")[-1]
 d.step("half-ellipsoid-from-segment", (X_he, sp.Subs(X_es, x, 0), 3 * a / 8), "substitution",
        uses=("half-ellipsoid-centroid", "ellipsoid-segment-reduced"),
        note="the segment with x = 0 is the half ellipsoid")
@@ -336,7 +337,8 @@ G_te, D_te, g_te, X_te = body("truncated-ellipsoid", "te", area_te, xp - x,
                               pi * b ** 2 / a ** 2 * (a ** 2 - x ** 2),
                               pi * b ** 2 / a ** 2 * (a ** 2 - (xp + x) ** 2 / 4),
                               pi * b ** 2 / a ** 2 * (a ** 2 - xp ** 2),
-                              "circle of radius^2 = b^2/a^2 (a^2 - (x + u)^2): G at abscissa x, g at x' > x")
+                              r"circle of radius $\frac{b}{a} \sqrt{a^2 - (x + u)^2}$: $G$ at abscissa $x$, "
+                              r"$g$ at $x' > x$")
 num_te = 6 * a ** 2 - 3 * xp ** 2 - 2 * xp * x - x ** 2
 den_te = 3 * a ** 2 - xp ** 2 - xp * x - x ** 2
 d.step("truncated-ellipsoid-reduced", (X_te, (xp - x) / 4 * num_te / den_te), "algebra",

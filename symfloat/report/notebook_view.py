@@ -96,7 +96,7 @@ def definitions_markdown(d) -> str:
              "write them by these names.", ""]
     for i, (symbol, value, text) in enumerate(d.names):
         shown = latex(named(d.names[:i], value))
-        lines.append(f"- {text}: ${latex(symbol)} = {shown}$" if text else f"- ${latex(symbol)} = {shown}$")
+        lines.append(f"- {typeset(text)}: ${latex(symbol)} = {shown}$" if text else f"- ${latex(symbol)} = {shown}$")
     return "\n".join(lines)
 
 
@@ -370,5 +370,5 @@ class NotebookView:
                                          "witness measures this formula)")
         out += _records(f"Witnesses against the printed formula — {what}:", f.numeric)
         out += _records(f"Witnesses against the correction — {what}:", f.corrected_numeric)
-        out += [f"> {n}" for n in f.witness_notes]
+        out += [f"> {words(self.derivation, n)}" for n in f.witness_notes]
         return "\n\n".join(out)
