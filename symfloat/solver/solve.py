@@ -285,6 +285,11 @@ def _symmetric(points, fixed, poly, s, group, scale) -> list:
         out.append(Critical(representative(u, group), local(poly, u, s).U, exact.eigenvalues, 0.0, 0.0,
                             len(orbit(u, group)), error_method="exact", exact=exact))
         for b in born:
+            if not b.ring and any(same_class(b.u, v, group, 2 * b.error_rad + 1e-6) for v, _, _, _ in fixed):
+                # a change of sign that is another position symmetry fixes, whose exact second variation stands:
+                # the neighbour within reach of a soft one (the prism over a regular 32-gon lying, its face down
+                # and its edge down pi/32 apart, each found born at the other and counted twice)
+                continue
             # the float64 search's view of a family born here (points on it, pieces of it, or the ring walked
             # at float64's resolution) gives way to the family located at its exact radius
             if b.ring:
