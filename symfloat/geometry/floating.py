@@ -31,7 +31,8 @@ import functools
 import itertools
 import math
 from array import array
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Callable
 from fractions import Fraction
 
 import gmpy2
@@ -101,9 +102,11 @@ def _cross(a, b):
 class Polyhedron:
     """A convex polyhedron: each face a ring of 3-D points in counter-clockwise
     order seen from outside (outward normal by the right-hand rule).  ``dps``
-    is its arithmetic: ``None`` for float64, else mpmath digits."""
+    is its arithmetic: ``None`` for float64, else mpmath digits; ``at_digits(dps)``, where given, makes the same
+    body from its exact description at *dps* digits (not from its float64 vertices)."""
     faces: tuple
     dps: int | None = None
+    at_digits: Callable | None = field(default=None, compare=False, repr=False)
 
     @property
     def vertices(self):

@@ -23,6 +23,8 @@ closes, every position carries its error bound); it was measured, and the tests 
 """
 from __future__ import annotations
 
+import dataclasses
+import functools
 import math
 import re
 from fractions import Fraction
@@ -265,11 +267,14 @@ def centred_polygon(scene: Scene) -> list[tuple[Fraction, Fraction]]:
 
 
 def polyhedron(scene: Scene, dps=None):
-    """The convex polyhedron of a cube, box, prism or section scene (a section is a prism of length 1)."""
+    """The convex polyhedron of a cube, box, prism or section scene (a section is a prism of length 1); in float64
+    it makes itself again at any digits from the scene (``at_digits``)."""
     if scene.body in ("cube", "box"):
-        return box(*scene.dims, dps=dps)
-    if scene.body == "prism":
-        return regular_prism(scene.sides, scene.dims[0], scene.dims[1], dps=dps)
-    if scene.body == "section":
-        return right_prism(centred_polygon(scene), 1, dps=dps)
-    raise SceneError(f"{scene.body} is not a polyhedron")
+        body = box(*scene.dims, dps=dps)
+    elif scene.body == "prism":
+        body = regular_prism(scene.sides, scene.dims[0], scene.dims[1], dps=dps)
+    elif scene.body == "section":
+        body = right_prism(centred_polygon(scene), 1, dps=dps)
+    else:
+        raise SceneError(f"{scene.body} is not a polyhedron")
+    return body if dps is not None else dataclasses.replace(body, at_digits=functools.partial(polyhedron, scene))
