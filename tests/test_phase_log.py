@@ -227,7 +227,8 @@ def test_atlas_cell_3half_1_holds_its_duality_at_the_printed_thresholds():
     # look at 1/12 - 1e-6 failed the solver's index sum, and then four points of the ring at 0.91795 (null
     # eigenvalue 4e-14 to 7e-13, rounding) were taken for stable windows of "tilted (general)" without dual.
     # Since the ring past its vertex event is followed (issue 33), it breaks on its diagonal before 1/12, as the log's
-    # (issue 14), and the diagonal class folds before the ring's end; the short arc at 1/12 - 1e-6 is past that.
+    # (issue 14), and the diagonal class folds before the ring's end; the arc's end at 1/12 - 1e-6, which the
+    # diagram listed under its own label before, is no threshold of it now (the ring's end at 1/12 is).
     diagram = phase_with_sources("box", "1,3/2,1", densities=ATLAS_SWEEP)
     assert diagram.duality_ok and diagram.unpaired == []
     upright = (1 - math.sqrt(19 / 27)) / 2
