@@ -30,7 +30,7 @@ from functools import cache
 from ..model.source import SOURCES
 from ..registry import ids
 
-__all__ = ["readable"]
+__all__ = ["readable", "derivation_label"]
 
 # an article, and at most one word, before a name: the name is a word of the sentence (a hyphenated noun)
 _ARTICLE = re.compile(r"\b(?:[Tt]he|an?)\s+(?:[\w²³]+\s+)?$")
@@ -52,8 +52,9 @@ def labels(of) -> dict:
     return {name: (steps.get(name), formulas.get(name)) for name in {*steps, *formulas} if "-" in name}
 
 
-def _derivation_label(report) -> str:
-    return f"{SOURCES[report.source].short} {report.locator}"
+def derivation_label(of) -> str:
+    """A derivation (its report, or itself) as a reader finds it: its source and place, *Scheeffer IX*."""
+    return f"{SOURCES[of.source].short} {of.locator}"
 
 
 def _alternatives(names) -> str:
@@ -103,7 +104,7 @@ def readable(of, text: str, reports: dict | None = None) -> str:
         theirs = labels(other).get(name) if name else None
         if name and theirs is None:
             return m.group(0)
-        return (m.group("step") or "") + _derivation_label(other) + (f", {_label(theirs, None)}" if theirs else "")
+        return (m.group("step") or "") + derivation_label(other) + (f", {_label(theirs, None)}" if theirs else "")
 
     pieces = re.split(r"(``[^`]+``|`[^`]+`)", text)
     return "".join(piece if k % 2 else pattern.sub(one, piece) for k, piece in enumerate(pieces))

@@ -170,7 +170,7 @@ def _sentence_html(tex: str) -> str | None:
         if kind == "math":
             out.append(typeset(text))
             continue
-        parts = re.split(r"(\\htmlClass\{changed\}\{[^{}\\]*\})", text)
+        parts = re.split("(" + re.escape(_CHANGED) + r"[^{}\\]*\})", text)
         if any("\\" in part or "{" in part for part in parts[::2]):
             return None                      # TeX inside the words
         shown = "".join(f'<span class="changed">{html.escape(part[len(_CHANGED):-1])}</span>' if k % 2

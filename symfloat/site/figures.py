@@ -11,8 +11,8 @@ import json
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..model.source import SOURCES
 from ..registry import statements
+from ..report.cross_references import derivation_label
 
 __all__ = ["Picture", "pictures", "figures_page", "notebook_links", "PAGE"]
 
@@ -73,18 +73,13 @@ def figures_page(found: list[Picture], notebooks) -> str:
              "Drawn by `symfloat run` from the data it commits (the picture is redrawn only when its data or its "
              "drawing code change); this page shows them as committed.", ""]
     for p in found:
-        links = ", ".join(f"[{_named(d)}](notebooks/{d}.ipynb)" for d in p.derivations if d in notebooks)
+        links = ", ".join(f"[{derivation_label(statements(d))}](notebooks/{d}.ipynb)" for d in p.derivations
+                          if d in notebooks)
         lines += [f"({p.name})=", f"## {p.title}", "", f"```{{figure}} figures/{p.file}", f":alt: {p.title}", "",
                   p.caption, "```", ""]
         if links:
             lines += [f"The printed formulas drawn here: {links}.", ""]
     return "\n".join(lines)
-
-
-def _named(derivation_id: str) -> str:
-    """A derivation as a reader finds it: its source and place (*Scheeffer IX*)."""
-    d = statements(derivation_id)
-    return f"{SOURCES[d.source].short} {d.locator}"
 
 
 def notebook_links(found: list[Picture]) -> dict[str, list[Picture]]:
