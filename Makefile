@@ -9,9 +9,11 @@ KATEX := node_modules/.installed
 
 # `install ARGS`: uv installs ARGS into .venv (the versions pip would choose, in about 5 s where pip takes
 # about 30: it resolves, downloads and unpacks in parallel); pip installs uv from PyPI first. Where uv cannot
-# be had or cannot reach the index, pip installs ARGS itself, and says so.
+# be had or cannot reach the index, pip installs ARGS itself, and says so. uv compiles the bytecode as pip
+# does: where PYTHONDONTWRITEBYTECODE is set, Python cannot cache it on first import, and every process the
+# tests start would compile SymPy again (about 4 s each).
 define install
-	@$(BIN)/python -m pip install --quiet uv && $(BIN)/uv pip install --quiet --native-tls --python $(BIN)/python $(1) \
+	@$(BIN)/python -m pip install --quiet uv && $(BIN)/uv pip install --quiet --native-tls --compile-bytecode --python $(BIN)/python $(1) \
 	|| { echo "make: uv could not install $(1); pip installs it (about half a minute)"; \
 	     $(BIN)/python -m pip install --quiet --upgrade pip && $(BIN)/python -m pip install --quiet $(1); }
 endef
