@@ -11,6 +11,8 @@ relation sign stays text (``a`` is an article, ``(i)`` a label).
 'the arm grows like $\\\\varphi (T_{1}/V_{1} - e_{1})$'
 >>> typeset("stable iff T_1^1 > T_1")
 'stable iff $T_{1}^{1} > T_{1}$'
+>>> typeset("the volume V1, its centroid at u = e1; AA1 perpendicular to A1B1")
+'the volume $V_{1}$, its centroid at $u = e_{1}$; $AA_{1}$ perpendicular to $A_{1}B_{1}$'
 >>> typeset("a solution of the equation")
 'a solution of the equation'
 >>> typeset("the regular n-gon F_1 r^2 (2 + cos 2pi/n)/12")
@@ -77,6 +79,8 @@ _TOKEN = re.compile(r"""
   | (?P<compound>\b[A-Za-z]-(?!(?:sin|cos|tan|cot|log|exp|sqrt)\b)[a-z]{3,}\b)        # n-gon, x-axis: a word
   | (?P<name>[A-Za-z][A-Za-z0-9]*(?:[_^](?:\{[^{}$]+\}|\d+(?=[A-Z]\w*[_^])|[A-Za-z0-9*κν]+|[+-](?![\w(])))+'?)
                                                                           # T_1^1, y^{p+1}, z_+
+  | (?P<indexed>(?<![-\w])(?:[A-Za-z]\d|(?=[A-Z\d]*\d)[A-Z]\d?(?:[A-Z]\d?)+)\b(?!-\w)'?)
+                                                       # V1, x0': V_1, x_0'; AA1, A1B1 (not a step's name, e2-e3)
   | (?P<word>[A-Za-z][A-Za-z]*'?(?:s\b)?)
   | (?P<index>[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))                                   # ∫_0^b, s^*, )^κ, )^{3κ-1}
   | (?P<number>\d+(?:\.\d+)?)
@@ -97,6 +101,8 @@ def _kind(token: str, group: str, quoted: bool = False) -> str:
     if group == "name":
         base = re.match(r"[A-Za-z][A-Za-z0-9]*", token).group(0)
         return "strong" if len(base) <= 3 or base in GREEK or base in FUNCTIONS else "text"
+    if group == "indexed":
+        return "strong"
     if group == "word":
         if token in GREEK or token in FUNCTIONS:
             return "strong"
@@ -152,6 +158,8 @@ def _tex(token: str) -> str:
         return "^{" + "".join(_SUPER[ch] for ch in token) + "}"
     if token == "deg":
         return r"^{\circ}"
+    if re.fullmatch(r"(?:[A-Za-z]\d|[A-Z]\d?(?:[A-Z]\d?)+)'?", token) and re.search(r"\d", token):
+        return re.sub(r"([A-Za-z])(\d)", r"\1_{\2}", token)      # a name or points with indices: V1, A1B1
     if re.fullmatch(r"[A-Za-z]+\*", token):
         return _tex(token[:-1]) + "^{*}"
     m = re.fullmatch(r"([A-Za-z][A-Za-z0-9]*)((?:[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))*)('?)", token)

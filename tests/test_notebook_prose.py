@@ -227,7 +227,7 @@ def test_the_about_text_shows_no_code():
     assert typeset("``a, b, …, g`` and ``ABC``, ``crossing``") == r"$a, b, \ldots, g$ and $ABC$, ``crossing``"
 
 
-_ASCII_MATHS = re.compile(r"\^|∫∫|\b[A-Za-z]_[A-Za-z0-9{]")
+_ASCII_MATHS = re.compile(r"\^|∫∫|\b[A-Za-z]_[A-Za-z0-9{]|(?<![-\w])[A-Za-z]\d\b(?!-\w)")     # V1: V_1
 
 
 def _words_of(line: str) -> str:
@@ -248,3 +248,7 @@ def test_no_words_of_a_notebook_write_mathematics_in_ascii():
     assert not found, found[:8]
     assert _ASCII_MATHS.search(_words_of("> ∫∫ (x - x_C)^2 over the quadrilateral: disagrees"))
     assert not _ASCII_MATHS.search(_words_of(r"> $\int\int (x - x_{C})^{2}$ over the quadrilateral: disagrees"))
+    # Scheeffer I-III's notes wrote "the volume V1, centroid S1 at u = e1" and "T1/V1 - e1": names without their
+    # index set as an index (a step's name, e2-e3, is a name of the program, not mathematics)
+    assert _ASCII_MATHS.search(_words_of("the old submerged part (volume V1, centroid S1)"))
+    assert not _ASCII_MATHS.search(_words_of("the old submerged part (volume $V_{1}$, centroid $S_{1}$), step e2-e3"))

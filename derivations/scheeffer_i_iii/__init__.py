@@ -15,7 +15,7 @@ elements over the old waterplane: the element over df at distance x from the
 axis has height x tg phi.  The element integrals are done in general; the
 waterplane is then taken concretely as a trapezoid whose parallel sides P1,
 P2 (at s = 0 and s = Hh) run parallel to the rotation axis: P2 = P1 is a
-rectangle (the box), P2 -> 0 a triangle.  Its wedge volumes, moments and its
+rectangle (the box), P2 -> 0 gives a triangle.  Its wedge volumes, moments and its
 moment of inertia T1 are integrated symbolically, the axis is shown to pass
 through the centroid of the waterplane (V3 = V4), and (10)-(13) follow.
 
