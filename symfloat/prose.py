@@ -79,7 +79,7 @@ _TOKEN = re.compile(r"""
   | (?P<compound>\b[A-Za-z]-(?!(?:sin|cos|tan|cot|log|exp|sqrt)\b)[a-z]{3,}\b)        # n-gon, x-axis: a word
   | (?P<name>[A-Za-z][A-Za-z0-9]*(?:[_^](?:\{[^{}$]+\}|\d+(?=[A-Z]\w*[_^])|[A-Za-z0-9*κν]+|[+-](?![\w(])))+'?)
                                                                           # T_1^1, y^{p+1}, z_+
-  | (?P<indexed>(?<![-\w])(?:[A-Za-z]\d|(?=[A-Z\d]*\d)[A-Z]\d?(?:[A-Z]\d?)+)\b(?!-\w)'?)
+  | (?P<indexed>(?<!\w-)(?<!\w)(?:[A-Za-z]\d|(?=[A-Z\d]*\d)[A-Z]\d?(?:[A-Z]\d?)+)\b(?!-\w)'?)
                                                        # V1, x0': V_1, x_0'; AA1, A1B1 (not a step's name, e2-e3)
   | (?P<word>[A-Za-z][A-Za-z]*'?(?:s\b)?)
   | (?P<index>[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))                                   # ∫_0^b, s^*, )^κ, )^{3κ-1}
@@ -106,7 +106,7 @@ def _kind(token: str, group: str, quoted: bool = False) -> str:
     if group == "word":
         if token in GREEK or token in FUNCTIONS:
             return "strong"
-        if len(token) == 1 or re.fullmatch(r"d[A-Za-z]", token) or token == "oo" or _differential(token) \
+        if len(token.rstrip("'")) == 1 or re.fullmatch(r"d[A-Za-z]", token) or token == "oo" or _differential(token) \
                 or _points(token) and not quoted:
             return "weak"
         return "text"

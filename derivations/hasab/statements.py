@@ -194,14 +194,14 @@ d.step("energy-is-13", (E1 / g, T1 * sp.sin(al) * t / 2 + V1 * e1 * sp.cos(al)),
             "height of S above S2")
 d.step("energy-metacentric", (2 * l * c2, V1 * GM, l * rho * (1 / (12 * rho) - (1 - rho) / 2)), "algebra",
        uses=("c2", "GM", "T1", "V1", "e1"),
-       note="E''(0) = weight x metacentric height: the energy method and the metacentric criterion decide alike "
+       note="$E''(0)$ = weight times metacentric height: the energy method and the metacentric criterion decide alike "
             "(V1 > 0), and with energy-duhamel both equal Duhamel's (18)")
 d.step("energy-duhamel", (2 * l * c2, T1 - V1 * e1), "lemma", uses=("scheeffer-i-iii:energy-curvature", "c2"),
        note="Scheeffer: the curvature of V1 n at 0 is T1 - V1 e1 = V1 (T1/V1 - e1), criterion (18)")
 d.quote("energy-principle", "solution", "Stabil egyensúlyi helyzetben a rendszer helyzeti energiája minimális.",
         reading=(sp.sign(c2), sp.sign(GM)),
         note="read for this body: the energy has a minimum at alpha = 0 (c_2 > 0) exactly where the metacentric "
-             "criterion calls the position stable (GM > 0): E''(0) = weight x GM (the step energy-metacentric)")
+             "criterion calls the position stable (GM > 0): $E''(0)$ = weight times GM (the step energy-metacentric)")
 
 # ---- the statement: a long prism need not be checked about the axis across it -------------------------------
 Tp, GMp = sp.symbols("T_p GM_p", real=True)

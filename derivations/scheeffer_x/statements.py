@@ -432,7 +432,7 @@ fx = sp.diff(f_at(x, S_STAB), x)
 SIG = sp.Symbol("sigma")
 d.step("stiffness-sign", (SIG, sp.Matrix([sp.sign(fx.subs(x, XS[0]), evaluate=False), sp.sign(fx.subs(x, XS[1]), evaluate=False)])),
        "definition", uses=("171-derived", "tilt-grows"), result=SIG,
-       note="at a root of (171) d^2E/dt^2 has the sign of df/dx (f = positive factor x dE/dt, x grows with t); "
+       note="at a root of (171) d^2 E/dt^2 has the sign of df/dx (f = positive factor x dE/dt, x grows with t); "
             "the first two roots at s = 0.77 (both with beta < 1)")
 d.quote("pentagon-stable", "X", "Es lässt sich auch zeigen, dass dieses Gleichgewicht stabil ist",
         reading=(SIG, sp.Matrix([1, 1])),
