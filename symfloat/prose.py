@@ -13,6 +13,8 @@ relation sign stays text (``a`` is an article, ``(i)`` a label).
 'stable iff $T_{1}^{1} > T_{1}$'
 >>> typeset("the volume V1, its centroid at u = e1; AA1 perpendicular to A1B1")
 'the volume $V_{1}$, its centroid at $u = e_{1}$; $AA_{1}$ perpendicular to $A_{1}B_{1}$'
+>>> typeset("F'(3/4)/3 of the box, F'(z) - F'(3/4) >= 0 for S4 at v = -v4 (step e2-e3)")
+"$F'(3/4)/3$ of the box, $F'(z) - F'(3/4) \\\\ge 0$ for $S_{4}$ at $v = -v_{4}$ (step e2-e3)"
 >>> typeset("a solution of the equation")
 'a solution of the equation'
 >>> typeset("the regular n-gon F_1 r^2 (2 + cos 2pi/n)/12")
@@ -248,7 +250,7 @@ def _arithmetic(run: list) -> bool:
     """A sum, difference, product or quotient with a letter among its terms (``n + 1/n``, ``x/b``, ``S - 2``,
     ``b(1-s)``); a hyphen between words (the slab ``a-c``, sections ``I-III``, ``e2-e3``) is no minus: a minus is
     spaced or inside the formula's bracket."""
-    letters = [t for t, _ in run if re.fullmatch("[A-Za-z]+", t)]
+    letters = [t.rstrip("'") for t, _ in run if re.fullmatch("[A-Za-z]+'*", t)]      # F' is a letter
     if not any(len(t) == 1 for t in letters) or all(t in _ROMAN for t in letters) and any(len(t) > 1 for t in letters):
         return False
     depth = 0
