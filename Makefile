@@ -13,8 +13,9 @@ KATEX := node_modules/.installed
 # does: where PYTHONDONTWRITEBYTECODE is set, Python cannot cache it on first import, and every process the
 # tests start would compile SymPy again (about 4 s each).
 define install
-	@$(BIN)/python -m pip install --quiet uv && $(BIN)/uv pip install --quiet --native-tls --compile-bytecode --python $(BIN)/python $(1) \
-	|| { echo "make: uv could not install $(1); pip installs it (about half a minute)"; \
+	@$(BIN)/python -m pip install --quiet uv \
+	&& $(BIN)/uv pip install --quiet --native-tls --compile-bytecode --python $(BIN)/python $(1) \
+	|| { echo "make: uv could not install $(1); pip installs it (about a minute)"; \
 	     $(BIN)/python -m pip install --quiet --upgrade pip && $(BIN)/python -m pip install --quiet $(1); }
 endef
 

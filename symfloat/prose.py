@@ -160,8 +160,9 @@ def _tex(token: str) -> str:
         return "^{" + "".join(_SUPER[ch] for ch in token) + "}"
     if token == "deg":
         return r"^{\circ}"
-    if re.fullmatch(r"(?:[A-Za-z]\d|[A-Z]\d?(?:[A-Z]\d?)+)'?", token) and re.search(r"\d", token):
-        return re.sub(r"([A-Za-z])(\d)", r"\1_{\2}", token)      # a name or points with indices: V1, A1B1
+    indexed = _TOKEN.fullmatch(token)
+    if indexed and indexed.lastgroup == "indexed":                # a name or points with indices: V1, A1B1
+        return re.sub(r"([A-Za-z])(\d)", r"\1_{\2}", token)
     if re.fullmatch(r"[A-Za-z]+\*", token):
         return _tex(token[:-1]) + "^{*}"
     m = re.fullmatch(r"([A-Za-z][A-Za-z0-9]*)((?:[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))*)('?)", token)
