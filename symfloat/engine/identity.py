@@ -255,19 +255,38 @@ def _ball_form(expr):
 
 def _ball_value(expr, point):
     """*expr* at the rational *point* from its ball at 256 bits: the midpoint as a 60-digit float where the ball
-    is finite and narrower than ``2^-200`` of it (the value to 60 digits, proven), else ``None``."""
+    is finite and narrower than ``2^-200`` of it (the value to 60 digits, proven), else ``None``.  An expression
+    that has no ball form in its symbols (a function of a derivation whose rule needs numbers for its arguments:
+    Euler's ``IY``, whose expansion into Beta integrals expands a power) gets its ball at the point itself."""
     form = _ball_form(expr)
-    if form is None:
-        return None
-    symbols, f = form
     try:
         with working_precision(_BALL_BITS):
-            b = f(*(exact(point[q]) for q in symbols))
+            if form is not None:
+                symbols, f = form
+                b = f(*(exact(point[q]) for q in symbols))
+            elif (b := _point_ball(expr, point)) is None:
+                return None
             if b.is_finite() and b.rad() <= abs(b.mid()) * arb(2) ** -200:
                 return sp.Float(b.mid().str(70, radius=False), DIGITS)
     except (KeyError, ValueError, ArithmeticError):
         pass
     return None
+
+
+_NO_POINT_BALL: set = set()     # expressions with a node that has no ball at a point either (hyper, polygamma)
+
+
+def _point_ball(expr, point):
+    """The ball of *expr* with *point* put in, or ``None`` where one of its nodes has no rule at any point."""
+    closed = expr.xreplace(point)
+    if expr in _NO_POINT_BALL or closed.free_symbols:
+        return None
+    try:
+        return real_function(closed, ())()
+    except Unsupported:
+        if len(_NO_POINT_BALL) < 4096:
+            _NO_POINT_BALL.add(expr)
+        return None
 
 
 def _sympy_value(expr, point):
