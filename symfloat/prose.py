@@ -33,6 +33,13 @@ companion), but alone it stays text, as does a chapter's numeral:
 >>> typeset("M (GZ - phi GM)/phi^3 from AB, by Scheeffer IX")
 '$M (GZ - \\\\varphi GM)/\\\\varphi^{3}$ from AB, by Scheeffer IX'
 
+Euler names his segments by a capital and a small letter or by two small ones (``Oc``, ``ce``, ``wq``), and
+writes products the same way (``nx + my``); a word of two letters is a word, and a bracket after a space that
+holds a relation is an aside, not a factor:
+
+>>> typeset("at Oc = c from the middle O, if u = mx - ny and t = nx + my; so is ce (x = a), c = a/2 (Oc = AB/4)")
+'at $Oc = c$ from the middle O, if $u = mx - ny$ and $t = nx + my$; so is ce $(x = a)$, $c = a/2$ $(Oc = AB/4)$'
+
 Arrows are arrows (``->`` a limit or a map, ``<->`` an exchange):
 
 >>> typeset("phi -> 0, the duality s <-> 1 - s")
@@ -119,11 +126,17 @@ def _kind(token: str, group: str, quoted: bool = False) -> str:
     return {"relation": "relation", "space": "space"}.get(group, "text")
 
 
+# Words of two letters (English, the Latin and German of the sources), which a pair of points never is
+_TWO_LETTER_WORDS = frozenset("ad am an as at be by da de do du eg er es et ex go he ie if im in is it me my "
+                              "no ob of oh ok on or so to um up us ut vs we zu".split())
+
+
 def _points(token: str) -> bool:
     """A segment or a length named by its two points (``GZ``, ``BH``; ``Cc``, ``Pp`` from a point to its
-    companion), not a chapter's Roman numeral (``IX``)."""
+    companion; Euler's ``Oc``, ``ce``, ``wq``), not a chapter's Roman numeral (``IX``) nor a word of two
+    letters (``In``, ``of``).  Alone it stays text; beside a relation sign or a formula it is a name."""
     return bool(re.fullmatch(r"[A-Z]{2}", token) and token not in _ROMAN
-                or len(token) == 2 and token[0].isupper() and token[1] == token[0].lower())
+                or re.fullmatch(r"[A-Za-z]{2}", token) and token.lower() not in _TWO_LETTER_WORDS)
 
 
 def _script(text: str) -> str:
@@ -234,12 +247,15 @@ def _joined(tokens) -> str:
 
 
 def _attached(tokens: list) -> list:
-    """A short word written against an operator, an index or a number (``cy²``, ``-cy``) is mathematics."""
+    """A short word written against an operator, an index or a number (``cy²``, ``-cy``) is mathematics, and so is
+    one of two letters after a plus sign that follows mathematics (Euler's ``nx + my``; not ``from - to + at``)."""
     out = list(tokens)
     for i, (t, k, g) in enumerate(tokens):
         if k == "text" and g == "word" and len(t) <= 3:
             near = [tokens[j] for j in (i - 1, i + 1) if 0 <= j < len(tokens)]
-            if any(n[2] in ("operator", "power", "index", "number") and n[0] not in "()" for n in near):
+            before = [tokens[j] for j in range(i - 1, -1, -1) if tokens[j][2] != "space"][:2]
+            if any(n[2] in ("operator", "power", "index", "number") and n[0] not in "()" for n in near) \
+                    or len(t) == 2 and len(before) == 2 and before[0][0] == "+" and before[1][1] != "text":
                 out[i] = (t, "weak", g)
     return out
 
@@ -264,6 +280,19 @@ def _arithmetic(run: list) -> bool:
         spaced = run[i - 1][1] == "space" and run[i + 1][1] == "space"
         if left not in ("(", *_ARITHMETIC) and right not in (")", *_ARITHMETIC) and (
                 t not in ("-", "−") or spaced or depth > 0):
+            return True
+    return False
+
+
+def _aside(tokens: list, i: int) -> bool:
+    """Does the bracket opened at *tokens[i]* hold a relation (``(x = a)``, ``(Oc = AB/4)``)?  After a space such
+    a bracket is an aside to the formula before it, never a factor of it."""
+    depth = 0
+    for token, kind in tokens[i:]:
+        depth += {"(": 1, ")": -1}.get(token, 0)
+        if depth == 0:
+            return False
+        if kind == "relation" and depth == 1:
             return True
     return False
 
@@ -310,7 +339,9 @@ def _typeset_plain(text: str, quoted: bool = False) -> str:
             out.append("".join(lead) + "".join(t for t, _ in run) + "".join(tail))
         run = []
 
-    for token, kind in tokens:
+    for i, (token, kind) in enumerate(tokens):
+        if token == "(" and run and run[-1][1] == "space" and _aside(tokens, i):
+            flush()                              # ef (x = a), c = a/2 (Oc = AB/4): an aside, not a factor
         if token == "," and sum({"(": 1, ")": -1}.get(t, 0) for t, _ in run) > 0:
             run.append((token, "weak"))          # B((p+1)/n, q+1): a comma inside the formula's bracket
         elif kind == "text":

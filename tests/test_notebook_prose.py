@@ -227,7 +227,8 @@ def test_the_about_text_shows_no_code():
     assert typeset("``a, b, …, g`` and ``ABC``, ``crossing``") == r"$a, b, \ldots, g$ and $ABC$, ``crossing``"
 
 
-_ASCII_MATHS = re.compile(r"\^|∫∫|\b[A-Za-z]_[A-Za-z0-9{]|(?<![-\w])[A-Za-z]\d\b(?!-\w)")     # V1: V_1
+_ASCII_MATHS = re.compile(r"\^|∫∫|\b[A-Za-z]_[A-Za-z0-9{]|(?<![-\w])[A-Za-z]\d\b(?!-\w)"     # V1: V_1
+                          r"|(?<![\w$'])(?:[A-Z][a-z]|[a-z][A-Za-z]) [=<>] [A-Za-z0-9(]")     # Oc = c, ab = y
 
 
 def _words_of(line: str) -> str:
@@ -252,3 +253,6 @@ def test_no_words_of_a_notebook_write_mathematics_in_ascii():
     # index set as an index (a step's name, e2-e3, is a name of the program, not mathematics)
     assert _ASCII_MATHS.search(_words_of("the old submerged part (volume V1, centroid S1)"))
     assert not _ASCII_MATHS.search(_words_of("the old submerged part (volume $V_{1}$, centroid $S_{1}$), step e2-e3"))
+    # Euler's notes wrote his segments' lengths in words ("by Oc = c from the middle O", "since wn = wN - Nn")
+    assert _ASCII_MATHS.search(_words_of("by Oc = c from the middle O")) and _ASCII_MATHS.search("since wn = wN - Nn")
+    assert not _ASCII_MATHS.search(_words_of("by $Oc = c$ from the middle O, as it is"))

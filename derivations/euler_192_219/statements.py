@@ -477,7 +477,7 @@ d.step("quad-product", (kite(Xc * y), 0), "integration", uses=("symmetric-produc
 integral_step("sym-PQ", PS, kite((m * Xc - n * y) ** 2),
               b * (a + c) * (n ** 2 * b ** 2 + c ** 2 * m ** 2 + 3 * a ** 2 * m ** 2 + 6 * xC ** 2 * m ** 2
               - 8 * xC * a * m ** 2 - 4 * xC * c * m ** 2 + 3 * a * c * m ** 2) / 6,
-       note="moment of the quadrilateral about PQ through C (u = mX - ny, X = x - x_C)")
+       note="moment of the quadrilateral about PQ through C, with u = mX - ny and X = x - x_C")
 integral_step("sym-RS", RS_, kite((n * Xc + m * y) ** 2),
               b * (a + c) * (n ** 2 * c ** 2 + b ** 2 * m ** 2 + 3 * n ** 2 * a ** 2 + 6 * xC ** 2 * n ** 2
               - 8 * xC * a * n ** 2 - 4 * xC * c * n ** 2 + 3 * a * c * n ** 2) / 6)

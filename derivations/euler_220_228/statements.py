@@ -386,7 +386,7 @@ d.quote("Aa-Ace-product", "§224",
                                "Whether the print marked the factor with a vinculum or by its layout cannot be seen; "
                                "medium."),
         note=claim("the portion Ace has the moment ∫y(dY + ay dy/(b√(bb-yy)))·x² about aAa, "
-                   "x² = (a+Y)² - 2a(a+Y)√(bb-yy)/b + aa - aayy/bb."))
+                   "x² = (a+Y)² - 2a(a+Y)√(bb-yy)/b + aa - aa yy/bb."))
 d.quote("Aa-Ace-expanded", "§224",
         r"= \int y (a+Y)^2 dY - \frac{2a}{b} "
         r"\int y dY (a+Y) V(bb-yy) + \frac{aa}{bb} \int y dY (bb-yy) + \frac{a}{b} \int \frac{yy^2 y(a+Y)^2}"
@@ -654,7 +654,7 @@ d.step("integrands", (sp.Matrix([f for f, _ in REWRITTEN]), sp.Matrix([w for _, 
 BRANCHES_C = sp.Matrix([xLc, xRc])
 d.quote("Y-c", "§227", r"Ponamus esse $Y = \frac{-cyy}{bb},$",
         reading=(sp.Subs(a - (a + Yc), y, b), c),
-        note=claim("Y = −cyy/bb moves the greatest breadth ce (y = b, x = a + Y(b)) by Oc = c from the middle O."))
+        note=claim("Y = −cyy/bb moves the greatest breadth ce, at y = b and x = a + Y(b), by Oc = c from the middle O."))
 d.quote("curve-c", "§227", r"seu $x = a - \frac{cyy}{bb} + \frac{c}{b} V(bb-yy),$",
         reading=(xRc, a - c * y ** 2 / b ** 2 + c / b * R),
         erratum=Erratum(

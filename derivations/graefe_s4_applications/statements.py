@@ -432,7 +432,7 @@ d.quote("elliptic-body-generator", "§4 elliptic body, triangular sections",
 gen_a, gen_ap = sp.Matrix([x, 0, 0]), sp.Matrix([x, 0, h / m])     # a, a': the feet of the ordinates on GH's plane
 d.quote("elliptic-body-triangle", "§4 elliptic body, triangular sections", r"Nun ist im Dreieck  $ab'c$ ,",
         unreadable="a triangle a b' c has neither ordinate as a side (ab = y lies at the height 0, a'b' = y' at "
-                   "h/m), so the proportion y : y' = h : (h - h/m) that follows is not one between its sides",
+                   "h/m), so the proportion $y : y' = h : (h - h/m)$ that follows is not one between its sides",
         erratum=Erratum("transcription", "low", r"\text{Nun ist im Dreieck } abc",
                         "The proportion that follows compares the ordinate ab = y (height 0) with a'b' = y' "
                         "(height h/m) as the heights of c above them, h and h - h/m: the similar triangles abc and "

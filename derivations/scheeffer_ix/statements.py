@@ -867,7 +867,7 @@ d.quote("162-premise", "(162)",
         r"Das rechtwinklige Parallelepipid hat unter der Voraussetzung  $s \geq \frac{23}{32}$ , wenn es um eine mit  "
         r"$c$  parallele Achse gedreht wird, im zweiten Drehungsgebiet",
         reading=(sp.Subs(N1, t, t_s.subs(s, sp.Rational(23, 32))), 1),
-        note="at s = 23/32 (t = 1) n_1 = 1 <= n: n < n_1 is impossible, rows I and V of (162) are VI and VII of "
+        note="at s = 23/32 (t = 1), n_1 = 1 <= n: n < n_1 is impossible, rows I and V of (162) are VI and VII of "
              "(162a), so the boundary belongs to either table")
 # (162): the rows of (161) in n = (a/b)^2 against rho and 1/rho (141, 142), with the stabilities in the order of the tilt
 ROWS_162 = (("I", "I", r"I. wenn   | $\left(\frac{a}{b}\right)^2$ | $\left\{ \begin{array}{l} < \varrho \\ > "

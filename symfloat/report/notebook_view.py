@@ -246,9 +246,9 @@ def reading_markdown(d, p, findings: str = "") -> str:
         head += f": ${first}$"                     # what the formula gives, when the quotation is long to read
     out = [head, _quoted(p.excerpt)]
     if p.lost:
-        out.append(f"Text lost in the transcription: {p.lost}")
+        out.append(f"Text lost in the transcription: {words(d, p.lost)}")
     if p.unreadable:
-        out.append(f"Not readable as printed: {p.unreadable}")
+        out.append(f"Not readable as printed: {words(d, p.unreadable)}")
     if p.reading is not None:
         if not is_relation(p.reading) and _INEQUALITY.search(p.excerpt):
             out.append("The print states an inequality; it is read as the equation below (its bound, its margin or "
