@@ -346,7 +346,8 @@ d.step("CO", (CO, a - XC, -SO / D), "algebra", uses=("centroid",), result=CO,
        note="CO counted from O towards A")
 d.step("centroid-by-parts", (-2 * a * JY(1, 0, k),
                              2 * a * JY(0, 1, k, 1) - 2 * n * k * a / b ** n * JY(1, n, k - 1)), "integration",
-       uses=("Y-integrals",), note="∫yR dY = [yRY] − ∫Y(yR)'dy, (yR)' = R − (nκ/bⁿ)yⁿ(1 − yⁿ/bⁿ)^{κ−1}")
+       uses=("Y-integrals",),
+       note=r"$\int yR\,dY = [yRY] - \int Y (yR)'\,dy$, $(yR)' = R - (n\kappa/b^n) y^n (1 - y^n/b^n)^{\kappa - 1}$")
 KEF_val = 4 * n * k * a ** 3 / b ** n * J(n, 3 * k - 1) + 4 * a * JY(2, 0, k) - 8 * a ** 2 * JY(1, 0, k) ** 2 / D
 d.step("moment-EF", (KEF, 2 * (MO - 2 * (XC - a) * SO + (XC - a) ** 2 * D), 2 * MO - 2 * SO ** 2 / D, KEF_val),
        "integration", uses=("strip-moment-C", "moment-O", "first-moment-O", "centroid"), result=KEF,
@@ -1187,7 +1188,7 @@ d.quote("mu-near-cases", "§237", r"Provt igitur figura proposita ad aliquem hor
         reading=(sp.Matrix([sp.Limit(muAB_fam.subs(k, sp.Rational(1, 2)), n, 2),
                             sp.Limit(muEF_fam.subs(k, sp.Rational(1, 2)), n, 2)]), sp.Matrix([8, 8])),
         note=claim("a figure close to one of the four cases has μ close to that case's: in the family of "
-                   "§229–236 (c = 0, κ = 1/2) μ about both axes tends to the ellipse's 8 as n → 2."))
+                   "§229–236 with c = 0 and κ = 1/2, μ about both axes tends to the ellipse's 8 as n → 2."))
 yGs, yBs = sp.symbols("y_G y_B")
 d.step("ballast-G", (yGs, fb * 0 + (1 - fb) * sp.Integral(s, (s, 0, Hh)) / Hh, (1 - fb) * Hh / 2), "integration",
        result=yGs, note="§240: the share f of the weight on the keel (height 0), the rest spread evenly over the "

@@ -134,7 +134,7 @@ dv.quote("e-sign", L6, "was größer als eins im Falle einer stabilen Situation 
 dv.quote("vasa", L4, "Eine Lösung wäre gewesen, es tiefer zu versenken oder einen höheren $d/c$-Wert zu erreichen, "
          "um die Zone der Instabilität zu vermeiden.",
          reading=(sp.sign(sp.Limit(e, d, 2 * c, "-")), 1),
-         note="read as the lesson's model gives it: sunk towards full immersion (d -> 2c, d/c -> 2) e tends to "
+         note="read as the lesson's model gives it: sunk towards full immersion (d -> 2c, d/c -> 2), e tends to "
               "b^2/(6c^2) > 0, so every hull leaves the zone of instability when sunk deep enough. Not read as "
               "'e grows with d': below half immersion (d < c) e falls with d (de/dd = (d - c)/(2c^2)), and the "
               "sentence does not claim otherwise")
