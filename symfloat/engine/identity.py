@@ -278,8 +278,10 @@ _NO_POINT_BALL: set = set()     # expressions with a node that has no ball at a 
 
 def _point_ball(expr, point):
     """The ball of *expr* with *point* put in, or ``None`` where one of its nodes has no rule at any point."""
+    if expr in _NO_POINT_BALL:
+        return None
     closed = expr.xreplace(point)
-    if expr in _NO_POINT_BALL or closed.free_symbols:
+    if closed.free_symbols:
         return None
     try:
         return real_function(closed, ())()
