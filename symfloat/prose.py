@@ -50,6 +50,7 @@ Arrows are arrows (``->`` a limit or a map, ``<->`` an exchange):
 """
 from __future__ import annotations
 
+import itertools
 import re
 
 __all__ = ["typeset", "displayed", "without_program_names"]
@@ -253,11 +254,16 @@ def _attached(tokens: list) -> list:
     for i, (t, k, g) in enumerate(tokens):
         if k == "text" and g == "word" and len(t) <= 3:
             near = [tokens[j] for j in (i - 1, i + 1) if 0 <= j < len(tokens)]
-            before = [tokens[j] for j in range(i - 1, -1, -1) if tokens[j][2] != "space"][:2]
             if any(n[2] in ("operator", "power", "index", "number") and n[0] not in "()" for n in near) \
-                    or len(t) == 2 and len(before) == 2 and before[0][0] == "+" and before[1][1] != "text":
+                    or len(t) == 2 and _after_sum(tokens[:i]):
                 out[i] = (t, "weak", g)
     return out
+
+
+def _after_sum(tokens: list) -> bool:
+    """Do *tokens* end, spaces aside, in a plus sign after mathematics (``nx +``, not ``to +``)?"""
+    last = [(t, k) for t, k, g in itertools.islice(reversed(tokens), 4) if g != "space"][:2]
+    return len(last) == 2 and last[0][0] == "+" and last[1][1] != "text"
 
 
 _ARITHMETIC = ("+", "-", "*", "/", "·", "−")
