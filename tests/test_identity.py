@@ -2,7 +2,7 @@
 it cannot decide."""
 import sympy as sp
 
-from symfloat.engine.identity import Domain, check_identity
+from symfloat.engine.identity import Domain, _ball_value, check_identity
 from symfloat.engine.timelimit import TimeLimitExceeded, time_limit
 
 x, y, r = sp.symbols("x y r", positive=True)
@@ -133,3 +133,20 @@ def test_a_rational_value_a_ball_cannot_see_is_found_exact_by_sympy():
     z = sp.Symbol("z")
     result = _sample([(sp.log(sp.exp(z)) + x, z + x)], Domain({z: (1, 2), x: (1, 2)}), "b3", 6)
     assert result == ("sampled", 6, True, None)
+
+
+class _SquaredGamma(sp.Function):
+    """Gamma(x)^2 with a rule into Gamma only at a number, as Euler's IY (whose expansion expands a power)."""
+
+    def _eval_rewrite_as_gamma(self, x, **hints):
+        return sp.gamma(x) ** 2 if x.is_number else None
+
+
+def test_a_value_with_no_ball_form_in_its_symbols_gets_its_ball_at_the_point():
+    x = sp.Symbol("x", positive=True)
+    # Gamma(3/2)^2 + 1 = pi/4 + 1 (Gamma(3/2) = sqrt(pi)/2): the ball's midpoint to 60 digits
+    v = _ball_value(_SquaredGamma(x) + 1, {x: sp.Rational(3, 2)})
+    assert v is not None and abs(v - (sp.pi / 4 + 1).evalf(70)) < sp.Float(10) ** -55
+    assert abs(_ball_value(_SquaredGamma(x), {x: sp.Rational(5, 2)}) - (9 * sp.pi / 16).evalf(70)) < 1e-55
+    # a node with no ball rule at any point (hyper) gives none, and SymPy's N is left to value it
+    assert _ball_value(sp.hyper((x, 1), (2,), sp.Rational(1, 2)), {x: sp.Rational(1, 3)}) is None
