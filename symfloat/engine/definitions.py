@@ -10,7 +10,9 @@ evaluated numerically at seeded sample points of the derivation's domain: integr
 quadrature (``mpmath.quad``), at 15 digits in hardware doubles (mpmath's float context, its
 quadrature and extrapolation without mpmath's software numbers) and at 30 digits.  The first
 member of the chain is the measured quantity, every other member a value the print (or its
-correction) claims.
+correction) claims.  Where every member has a rule in ball arithmetic the route decides in Arb first
+(:func:`~symfloat.engine.definition_enclosure.route_enclosure`); where that ball decides, it is the route's
+only record, and neither method runs (``symfloat bench`` measures them against the enclosure).
 
 It runs for every formula that no declared witness targets, so a numeric cross-check does not
 depend on someone writing one.  A member that is, once the definitions are in, the same SymPy
@@ -42,7 +44,6 @@ from __future__ import annotations
 
 import functools
 import itertools
-import math
 import time
 from dataclasses import dataclass
 
@@ -53,7 +54,7 @@ from sympy.printing.pycode import MpmathPrinter
 from ..model.claim import members
 from ..model.relation import Cases, Holds, RealRoots
 from .definition_enclosure import route_enclosure
-from .enclosure import Unsupported, ball, lower, upper, working_precision
+from .enclosure import Unsupported
 from .extrapolation import UnsettledLimit, extrapolated_limit
 from .identity import Domain
 from .quadrature import gauss_legendre
@@ -348,27 +349,6 @@ def _certified(measured, claims, cases, allowance):
         return None
 
 
-def _proven(measured, value, enclosure, point, method, bits):
-    """A method's proven error at one point: ``|value - m| + rad`` against the enclosure *m* (at *bits*) of the measured
-    quantity, relative to the larger of the two, or, where the quantity cancels (an equilibrium condition), to
-    the magnitude of the terms whose sums produce it (as :func:`_difference`)."""
-    with working_precision(bits):
-        ab = upper(ball(value, bits) - enclosure)
-    scale = max(abs(float(value)), upper(enclosure))
-    if ab > method.tolerance * scale and not measured.has(RealRoots):
-        scale = max(scale, abs(float(_numeric(_magnitude(measured), point, 10, _RoughQuadPrinter))))
-    return ab, ab / scale if scale else ab
-
-
-def _proven_tolerance(method, certified) -> float:
-    """What a method's proven error is held to: its accuracy, plus twice what the enclosures resolve (their
-    relative radius) and the rounding of the difference at the enclosure's bits."""
-    record, balls = certified
-    resolution = max((upper(m.rad()) / lower(m) if lower(m) else upper(m.rad()) for row in balls for m in row),
-                     default=0.0)
-    return method.tolerance + 2 * resolution + math.ldexp(1, 2 - record["bits"])
-
-
 def _premises(relation) -> list:
     """The conditions under which a relation claims something: the premise of ``Holds(Implies(a, b))``, the
     rows' conditions of a case table (a point where each holds is sampled too)."""
@@ -479,30 +459,27 @@ class DefinitionRoute:
         except NothingToMeasure as why:
             out.note, out.measurable = f"definition route: {why}", why.measurable
             return out
-        uncounted = 0
         certified = _certified(measured, claims, cases, allowance)
-        methods = ROUTE_METHODS
+        if certified is not None and record_decision(certified[0]) != "undecided":
+            out.records.append(certified[0])    # the ball decides: a method would add nothing to the verdict
+            out.judged()
+            out.note = "" if out.agrees else "definition route: the definitions give another value"
+            return out
         if certified is not None:
             out.records.append(certified[0])
-            if record_decision(certified[0]) != "undecided":
-                methods = ROUTE_METHODS[:1]         # the ball decides: the finer method adds nothing
-        for method in methods:
+        uncounted = 0
+        for method in ROUTE_METHODS:
             t0 = time.perf_counter()
             worst_abs = worst_rel = 0.0
             read = 0
             try:
-                for k, point in enumerate(cases):
+                for point in cases:
                     try:
                         values = [_measured(c, point, method.dps) for c in measured]
                     except UncountedRoots:
                         uncounted += method is ROUTE_METHODS[-1]
                         continue
                     read += 1
-                    if methods is not ROUTE_METHODS:     # its proven error against the enclosure
-                        for e, v, m in zip(measured, values, certified[1][k]):
-                            ab, rel = _proven(e, v, m, point, method, certified[0]["bits"])
-                            worst_abs, worst_rel = max(worst_abs, ab), max(worst_rel, rel)
-                        continue
                     for claimed in claims:
                         for e, v, c in zip(measured, values, claimed):
                             ab, rel = _difference(e, v, c, point, method)
@@ -518,8 +495,6 @@ class DefinitionRoute:
                 return out
             record = {"method": f"definitions, {method.dps} digits", "abs_error": worst_abs, "rel_error": worst_rel,
                       "seconds": time.perf_counter() - t0, "cases": read, "rel_tolerance": method.tolerance}
-            if methods is not ROUTE_METHODS:
-                record.update(proven=True, rel_tolerance=_proven_tolerance(method, certified))
             out.records.append(record)
         out.judged()
         if out.undecided:
