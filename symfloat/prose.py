@@ -40,6 +40,11 @@ holds a relation is an aside, not a factor:
 >>> typeset("at Oc = c from the middle O, if u = mx - ny and t = nx + my; so is ce (x = a), c = a/2 (Oc = AB/4)")
 'at $Oc = c$ from the middle O, if $u = mx - ny$ and $t = nx + my$; so is ce $(x = a)$, $c = a/2$ $(Oc = AB/4)$'
 
+Names listed before a relation are set with it, and names listed beside one apart from it:
+
+>>> typeset("G, g, D, h > 0; the sections G, D, g and h = 2m; through A, x = 0; for x, y in the plane, z = 1")
+'$G, g, D, h > 0$; the sections $G, D, g$ and $h = 2m$; through A, $x = 0$; for x, y in the plane, $z = 1$'
+
 Arrows are arrows (``->`` a limit or a map, ``<->`` an exchange):
 
 >>> typeset("phi -> 0, the duality s <-> 1 - s")
@@ -356,7 +361,25 @@ def _typeset_plain(text: str, quoted: bool = False) -> str:
         else:
             run.append((token, kind))
     flush()
-    return "".join(out)
+    return "".join(out) if quoted else _listed("".join(out))
+
+
+# a list of one-letter names before a formula that starts with a name and a relation: ``a, b, $c > 0$`` (two names
+# at least: one is as likely the end of a phrase, ``through A, $x = 0$``)
+_LISTED = re.compile(r"(?<![\w$'’])((?:[A-Za-z], ){2,}|(?:[A-Za-z], )+(?=[A-Za-z] and ))"
+                     r"(?:(?<=, )\$|([A-Za-z]) and \$)"
+                     r"(?=(?:[A-Za-z]|\\[A-Za-z]+)(?:_\{[^{}$]*\}|_[A-Za-z0-9])?'? (?:[<>=]|\\(?:le|ge|ne)\b))")
+
+
+def _listed(text: str) -> str:
+    """The names listed before a relation set with it: ``a, b, $c > 0$`` is ``$a, b, c > 0$``; names joined to the
+    relation's by "and" are a formula of their own (``$G, D, g$ and $h = 2m$``).  A single letter followed by a
+    comma is no article."""
+    def one(m: re.Match) -> str:
+        if m.group(2) is None:
+            return "$" + m.group(1)
+        return "$" + m.group(1) + m.group(2) + "$ and $"
+    return _LISTED.sub(one, text)
 
 
 def _code_formula(code: str) -> str | None:

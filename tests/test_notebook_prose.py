@@ -239,14 +239,16 @@ def _words_of(line: str) -> str:
 def test_no_words_of_a_notebook_write_mathematics_in_ascii():
     # a witness's note ("> ∫∫ (x - x_C)^2 over the quadrilateral: disagrees ...", Euler §§192-219) and the helper
     # names of Graefe §1 ("|(b - a) x (d - a)|^2") were shown as written, and Graefe §4's step titles said
-    # "Circle of radius^2 =": the source's quotations ("> " and no note) are verbatim and not looked at, nor the
-    # title ("# "), the derivation's name in plain text, which the site also puts in the page's title and sidebar
+    # "Circle of radius^2 =": the source's quotations ("> " and no note) are verbatim and not looked at.  The title
+    # ("# ") is the derivation's name in plain text, which the site also puts in the page's title and sidebar: it
+    # has no ASCII mathematics either (Euler §§229-243's was "The family x = a + Y ± a(1 − yⁿ/bⁿ)^κ, ...")
     found = [(path.name, line) for path in sorted((ROOT / "notebooks").glob("*.ipynb"))
              for cell in nbformat.read(path, as_version=4).cells if cell.cell_type == "markdown"
              for line in re.sub(r"\$\$.*?\$\$", "", cell.source, flags=re.S).splitlines()
              if (not line.startswith(">") or ": disagrees" in line or line.startswith("> definition route"))
-             and not line.startswith(("|", "# ")) and _ASCII_MATHS.search(_words_of(line))]
+             and not line.startswith("|") and _ASCII_MATHS.search(_words_of(line))]
     assert not found, found[:8]
+    assert _ASCII_MATHS.search(_words_of("# The family x = a + Y ± a(1 − yⁿ/bⁿ)^κ, the number μ"))
     assert _ASCII_MATHS.search(_words_of("> ∫∫ (x - x_C)^2 over the quadrilateral: disagrees"))
     assert not _ASCII_MATHS.search(_words_of(r"> $\int\int (x - x_{C})^{2}$ over the quadrilateral: disagrees"))
     # Scheeffer I-III's notes wrote "the volume V1, centroid S1 at u = e1" and "T1/V1 - e1": names without their
@@ -256,3 +258,17 @@ def test_no_words_of_a_notebook_write_mathematics_in_ascii():
     # Euler's notes wrote his segments' lengths in words ("by Oc = c from the middle O", "since wn = wN - Nn")
     assert _ASCII_MATHS.search(_words_of("by Oc = c from the middle O")) and _ASCII_MATHS.search("since wn = wN - Nn")
     assert not _ASCII_MATHS.search(_words_of("by $Oc = c$ from the middle O, as it is"))
+
+
+_LISTED_APART = re.compile(r"(?<![\w$'])(?:[A-Za-z], ){2,}\$[A-Za-z] (?:[<>=]|\\(?:le|ge)\b)")
+
+
+def test_names_listed_before_a_relation_are_set_with_it():
+    # the assumptions of Graefe §1 and §3 and of Euler §§229-243 read "G, g, D, $h > 0$" and "a, b, $c > 0$":
+    # two names in words and the third in a formula
+    found = [(path.name, line) for path in sorted((ROOT / "notebooks").glob("*.ipynb"))
+             for cell in nbformat.read(path, as_version=4).cells if cell.cell_type == "markdown"
+             for line in cell.source.splitlines() if not line.startswith(">") and _LISTED_APART.search(line)]
+    assert not found, found[:8]
+    assert _LISTED_APART.search("- G, g, D, $h > 0$") and not _LISTED_APART.search("- $G, g, D, h > 0$")
+    assert not _LISTED_APART.search("(it runs through A, $x = 0$ at $y = 0$)")

@@ -134,7 +134,7 @@ fb, Hh, Tq = sp.symbols("f H T", positive=True)   # §240: the share of ballast,
 DERIVATION = d = Derivation(
     id="euler-229-243",
     source="euler",
-    title="The family x = a + Y ± a(1 − yⁿ/bⁿ)^κ, the number μ, stability and displacement "
+    title="Waterplanes whose breadth is a power of 1 − yⁿ/bⁿ: the number μ, stability and displacement "
           "(Euler, Scientia navalis III §§229–243)",
     locator="§229–§243",
     summary="Area, moments and centroid of the waterplanes x = a + Y ± a(1 − yⁿ/bⁿ)^κ (§229–232); the "

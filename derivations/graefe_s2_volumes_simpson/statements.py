@@ -178,7 +178,7 @@ MISSING_THIRD = ("The prismatoid formula I = h/3 ((G+g)/2 + 2D) with G = a, D = 
 CONSEQUENTIAL = ("Follows from the misprinted slabs I', I'', I''' (factor $2m$ instead of $2m/3$, see 'slab-a-c'); "
                  "the algebra from line to line is right.")
 REPEAT = ("The omission of the factor 1/3 of I' again. This slab is the prismatoid formula applied anew ('Ebenso'), "
-          "with its own sections for G, D, g and h = 2m, not a result computed from I': the same misprint at a "
+          "with its own sections for $G, D, g$ and $h = 2m$, not a result computed from I': the same misprint at a "
           "further place (booked as a repeat of slab-a-c), not a consequence of I'.")
 REPEAT_OBJECTION = ("The slab follows I' with 'Ebenso' and copies its pattern: a consequence of the first slip, "
                     "hence consequential.")
