@@ -45,6 +45,11 @@ Names listed before a relation are set with it, and names listed beside one apar
 >>> typeset("G, g, D, h > 0; the sections G, D, g and h = 2m; through A, x = 0; for x, y in the plane, z = 1")
 '$G, g, D, h > 0$; the sections $G, D, g$ and $h = 2m$; through A, $x = 0$; for x, y in the plane, $z = 1$'
 
+A range of whole numbers is a range:
+
+>>> typeset("checked for n = 3..12 (n = 1..4; the slabs pair off)")
+'checked for $n = 3, \\\\ldots, 12$ ($n = 1, \\\\ldots, 4$; the slabs pair off)'
+
 Arrows are arrows (``->`` a limit or a map, ``<->`` an exchange):
 
 >>> typeset("phi -> 0, the duality s <-> 1 - s")
@@ -98,6 +103,7 @@ _TOKEN = re.compile(r"""
                                                        # V1, x0': V_1, x_0'; AA1, A1B1 (not a step's name, e2-e3)
   | (?P<word>[A-Za-z][A-Za-z]*'?(?:s\b)?)
   | (?P<index>[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))                                   # ∫_0^b, s^*, )^κ, )^{3κ-1}
+  | (?P<range>(?<![\w.])\d+\.\.\d+(?![\w.]))                                        # n = 3..12
   | (?P<number>\d+(?:\.\d+)?)
   | (?P<relation><->|<=|>=|[=<>≤≥≈↔]|->|→)
   | (?P<power>[²³⁴¹⁰⁵⁶⁷⁸⁹ⁿ]+)                                                       # y²ⁿ
@@ -111,7 +117,7 @@ def _kind(token: str, group: str, quoted: bool = False) -> str:
     ``text``."""
     if group == "starred":
         return "strong" if token[:-1] in GREEK or len(token) == 2 else "text"
-    if group == "degrees":
+    if group in ("degrees", "range"):
         return "weak"
     if group == "name":
         base = re.match(r"[A-Za-z][A-Za-z0-9]*", token).group(0)
@@ -179,6 +185,8 @@ def _tex(token: str) -> str:
         return "^{" + "".join(_SUPER[ch] for ch in token) + "}"
     if token == "deg":
         return r"^{\circ}"
+    if re.fullmatch(r"\d+\.\.\d+", token):                    # 3..12: from 3 to 12
+        return token.replace("..", r", \ldots, ")
     indexed = _TOKEN.fullmatch(token)
     if indexed and indexed.lastgroup == "indexed":                # a name or points with indices: V1, A1B1
         return re.sub(r"([A-Za-z])(\d)", r"\1_{\2}", token)

@@ -228,7 +228,8 @@ def test_the_about_text_shows_no_code():
 
 
 _ASCII_MATHS = re.compile(r"\^|∫∫|\b[A-Za-z]_[A-Za-z0-9{]|(?<![-\w])[A-Za-z]\d\b(?!-\w)"     # V1: V_1
-                          r"|(?<![\w$'])(?:[A-Z][a-z]|[a-z][A-Za-z]) [=<>] [A-Za-z0-9(]")     # Oc = c, ab = y
+                          r"|(?<![\w$'])(?:[A-Z][a-z]|[a-z][A-Za-z]) [=<>] [A-Za-z0-9(]"     # Oc = c, ab = y
+                          r"|(?<!\.)\.\.\d")                                                 # $n = 3$..12
 
 
 def _words_of(line: str) -> str:
@@ -258,6 +259,9 @@ def test_no_words_of_a_notebook_write_mathematics_in_ascii():
     # Euler's notes wrote his segments' lengths in words ("by Oc = c from the middle O", "since wn = wN - Nn")
     assert _ASCII_MATHS.search(_words_of("by Oc = c from the middle O")) and _ASCII_MATHS.search("since wn = wN - Nn")
     assert not _ASCII_MATHS.search(_words_of("by $Oc = c$ from the middle O, as it is"))
+    # Scheeffer VI.C-F's ranges of n were cut after their first number ("checked for $n = 3$..12")
+    assert _ASCII_MATHS.search(_words_of("checked for $n = 3$..12"))
+    assert not _ASCII_MATHS.search(_words_of(r"checked for $n = 3, \ldots, 12$ and so on..."))
 
 
 _LISTED_APART = re.compile(r"(?<![\w$'])(?:[A-Za-z], ){2,}\$[A-Za-z] (?:[<>=]|\\(?:le|ge)\b)")

@@ -45,7 +45,7 @@ DERIVATION = d = Derivation(
                  "(the stability of a position is read for the turn about it; mu = 90 deg is the axis G_2 H_2 of (51))",
                  "omega: angle of the horizontal tilt axis with a side of the base, 0 < omega < 45 deg "
                  "(other directions follow by the symmetry of the square)",
-                 "n-gon: circumradius r, n >= 3 sides; n is sampled as a real number in the identities that hold "
+                 "n-gon: circumradius $r$, n >= 3 sides; n is sampled as a real number in the identities that hold "
                  "for real n (the cosine sums are checked for n = 3..12)",
                  "sign identities: a printed condition L > R is read as L - R = (positive factor) x (the "
                  "quantity whose sign decides: a metacentric height, or tan^2 of the limiting tilt minus "
@@ -631,8 +631,8 @@ k_ = sp.Symbol("k", integer=True, positive=True)
 d.step("cosine-sums", (sp.Matrix([sp.Sum(sp.cos(2 * k_ * al_), (k_, 1, m)).doit()
                                   - sp.sin(m * al_) * sp.cos((m + 1) * al_) / sp.sin(al_) for m in range(3, 7)]),
                        sp.zeros(4, 1)), "series",
-       note="Lagrange's sum cos 2x + cos 4x + ... + cos 2mx = sin(mx) cos((m+1)x)/sin x, checked for m = 3..6 at "
-            "any x (alpha_t)")
+       note="Lagrange's sum cos 2x + cos 4x + ... + cos 2mx = sin(mx) cos((m+1)x)/sin x, checked for m = 3..6 with "
+            "x = alpha_t arbitrary")
 d.step("cosine-sum", Eq(Sc, sp.sin(n * alph) * sp.cos((n + 1) * alph) / sp.sin(alph)), "definition", result=Sc,
        uses=("cosine-sums",), note="Sigma_c = cos 2 alpha + cos 4 alpha + ... + cos 2 n alpha (n terms)")
 d.step("cosine-sum-zero", (Sc, 0), "algebra", uses=("cosine-sum", "central-angle"), note="sin(n alpha) = sin 2 pi = 0")
