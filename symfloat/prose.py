@@ -185,9 +185,9 @@ def _tex(token: str) -> str:
         return "^{" + "".join(_SUPER[ch] for ch in token) + "}"
     if token == "deg":
         return r"^{\circ}"
-    if re.fullmatch(r"\d+\.\.\d+", token):                    # 3..12: from 3 to 12
-        return token.replace("..", r", \ldots, ")
     indexed = _TOKEN.fullmatch(token)
+    if indexed and indexed.lastgroup == "range":                  # 3..12: from 3 to 12
+        return token.replace("..", r", \ldots, ")
     if indexed and indexed.lastgroup == "indexed":                # a name or points with indices: V1, A1B1
         return re.sub(r"([A-Za-z])(\d)", r"\1_{\2}", token)
     if re.fullmatch(r"[A-Za-z]+\*", token):
@@ -375,7 +375,7 @@ def _typeset_plain(text: str, quoted: bool = False) -> str:
 # a list of one-letter names before a formula that starts with a name and a relation: ``a, b, $c > 0$`` (two names
 # at least: one is as likely the end of a phrase, ``through A, $x = 0$``)
 _LISTED = re.compile(r"(?<![\w$'’])((?:[A-Za-z], ){2,}|(?:[A-Za-z], )+(?=[A-Za-z] and ))"
-                     r"(?:(?<=, )\$|([A-Za-z]) and \$)"
+                     r"(?:\$|([A-Za-z]) and \$)"
                      r"(?=(?:[A-Za-z]|\\[A-Za-z]+)(?:_\{[^{}$]*\}|_[A-Za-z0-9])?'? (?:[<>=]|\\(?:le|ge|ne)\b))")
 
 

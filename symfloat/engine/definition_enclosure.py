@@ -19,10 +19,10 @@ ball rule (a piecewise function), and for an integrand that has no finite enclos
 >>> import sympy as sp
 >>> x, a = sp.symbols("x a", positive=True)
 >>> area = sp.Integral(2 * sp.sqrt(a ** 2 - x ** 2), (x, -a, a))     # a disc of radius a
->>> record, balls = route_enclosure([area], [[sp.pi * a ** 2]], [{a: sp.Rational(1, 2)}])
+>>> record = route_enclosure([area], [[sp.pi * a ** 2]], [{a: sp.Rational(1, 2)}])
 >>> record["method"], record["bits"], record["abs_error"] < 1e-30
 ('Arb ball arithmetic', 128, True)
->>> route_enclosure([area], [[3 * a ** 2]], [{a: sp.Rational(1, 2)}])[0]["abs_error_lower"] > 0.03
+>>> route_enclosure([area], [[3 * a ** 2]], [{a: sp.Rational(1, 2)}])["abs_error_lower"] > 0.03
 True
 """
 from __future__ import annotations
@@ -126,9 +126,8 @@ def _bound_apart(expr):
 
 
 def route_enclosure(measured: list, claims: list, points: list, allowance=None):
-    """``(record, balls)``: the certified record of the claims against the measured components at *points*
-    (``balls[k][j]`` the measured component *j* at point *k*), at the first precision that decides (or the
-    last tried), *allowance* (a printed number's rounding, a SymPy rational) its ``abs_tolerance``; ``None``
+    """The certified record of the claims against the measured components at *points*, at the first precision
+    that decides (or the last tried), *allowance* (a printed number's rounding, a SymPy rational) its ``abs_tolerance``; ``None``
     where an integral has no finite enclosure at the first precision (its integrand not holomorphic near the
     path, or the integrator's evaluations run out: more bits would not help).  Raises
     :class:`~symfloat.engine.enclosure.Unsupported` for a member without a rigorous rule."""
@@ -136,7 +135,7 @@ def route_enclosure(measured: list, claims: list, points: list, allowance=None):
     bits = START_BITS
     try:
         while True:
-            record, balls = _at(measured, claims, points, bits, allowance)
+            record = _at(measured, claims, points, bits, allowance)
             if record is None:      # an integral with no finite enclosure: more bits ask it more, not less
                 return None
             if record_decision(record) != "undecided" or bits * 2 > 8 * START_BITS:
@@ -148,30 +147,28 @@ def route_enclosure(measured: list, claims: list, points: list, allowance=None):
         # bits of the next derivation's enclosures with the order in which a worker checks derivations
         ctx.cleanup()
     record["seconds"] = time.perf_counter() - t0
-    return record, balls
+    return record
 
 
 def _at(measured, claims, points, bits, allowance):
-    """The certified record and the measured balls at *bits* (see :func:`route_enclosure`); ``(None, None)`` where
-    a member has no finite ball.  The width allowed is ``2^(-bits/2)`` of the largest number met, as for a
+    """The certified record at *bits* (see :func:`route_enclosure`); ``None`` where a member has no finite
+    ball.  The width allowed is ``2^(-bits/2)`` of the largest number met, as for a
     declared witness (:meth:`~symfloat.engine.witness.MeasuredWitness._bounds`): the point's, the members'
     values, and the numbers the members write (a moment that vanishes at a point without parameters,
     ``∫∫ (q - 1/3) dq dp = 0``, is still measured against its ``1/3``)."""
     worst_upper = worst_lower = worst_rel = 0.0
     width = math.inf
-    balls = []
     written = [abs(float(n)) for e in (*measured, *(c for claimed in claims for c in claimed))
                for n in sp.sympify(e).atoms(sp.Number)]
     with working_precision(bits):
         for point in points:
             here = [definition_ball(e, point, bits) for e in measured]
             if not all(m.is_finite() for m in here):
-                return None, None
-            balls.append(here)
+                return None
             for claimed in claims:
                 values = [definition_ball(c, point, bits) for c in claimed]
                 if not all(c.is_finite() for c in values):
-                    return None, None
+                    return None
                 sizes = [upper(abs(v)) for v in (*here, *values)]
                 sizes += [abs(float(v)) for v in point.values()] + written
                 width = min(width, math.ldexp(max(sizes, default=0.0), -bits // 2))
@@ -183,4 +180,4 @@ def _at(measured, claims, points, bits, allowance):
     return {"method": CERTIFIED, "certified": True, "bits": bits, "abs_error": worst_upper,
             "abs_error_lower": worst_lower, "rel_error": worst_rel, "width": width if math.isfinite(width) else 0.0,
             "abs_tolerance": 0.0 if allowance is None else upper(exact(Fraction(int(allowance.p), int(allowance.q)))),
-            "cases": len(points)}, balls
+            "cases": len(points)}

@@ -339,7 +339,7 @@ def _difference(measured, value, claimed, point, method):
 
 
 def _certified(measured, claims, cases, allowance):
-    """``(record, balls)`` of the claims against the measured components in ball arithmetic
+    """The certified record of the claims against the measured components in ball arithmetic
     (:func:`~symfloat.engine.definition_enclosure.route_enclosure`), or ``None`` where the members have no
     rigorous rule, no finite enclosure, or one SymPy cannot build at a point (a pole of a member there): the route
     then compares its methods as before, and they say what they find."""
@@ -460,13 +460,13 @@ class DefinitionRoute:
             out.note, out.measurable = f"definition route: {why}", why.measurable
             return out
         certified = _certified(measured, claims, cases, allowance)
-        if certified is not None and record_decision(certified[0]) != "undecided":
-            out.records.append(certified[0])    # the ball decides: a method would add nothing to the verdict
+        if certified is not None and record_decision(certified) != "undecided":
+            out.records.append(certified)       # the ball decides: a method would add nothing to the verdict
             out.judged()
             out.note = "" if out.agrees else "definition route: the definitions give another value"
             return out
         if certified is not None:
-            out.records.append(certified[0])
+            out.records.append(certified)
         uncounted = 0
         for method in ROUTE_METHODS:
             t0 = time.perf_counter()
