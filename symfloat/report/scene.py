@@ -118,9 +118,28 @@ def scene_table(record) -> str:
                      f"{completeness['squares_accounted']} holding exactly one reported, the others split; "
                      f"{completeness['seconds']:.1f} s)")
     lines.append("")
+    lines.append(f"self-check: {_self_check(record['checks'])}")
     lines.append(f"derivations evaluated: {', '.join(record['derivations_evaluated']) or 'none'}; "
-                 f"checks {record['checks']}; {record['seconds']['total']:.2f} s")
+                 f"{record['seconds']['total']:.2f} s")
     return "\n".join(lines)
+
+
+def _self_check(checks: dict) -> str:
+    """The solver's index sum in words: a body's Poincaré–Hopf sum over the equilibria on the sphere of up
+    vectors (it must be 2), a section's minima − maxima of the heel angle over its fundamental arc (0), and the
+    searches that reached it (the solver stops with an error where the sum is not what it must be)."""
+    searches = checks["searches"]
+    if "poincare_hopf_index_sum" in checks:
+        families = [("undecided" if i is None else str(i)) for i in checks.get("family_indices", ())]
+        named = "the family's index" if len(families) == 1 else "the families' indices"
+        indices = f"; {named} {', '.join(families)}" if families else ""
+        then = f", then: {'; '.join(searches[1:])}" if len(searches) > 1 else ""
+        return (f"the Poincaré–Hopf index sum of the equilibria is {checks['poincare_hopf_index_sum']}, as it must "
+                f"be (found from {checks['seeds']} seeds{then}){indices}")
+    lo, hi = (f"{x:g}°".replace("-", "−") for x in checks["arc_deg"])
+    coarser = f", after {len(searches) - 1} coarser" if len(searches) > 1 else ""
+    return (f"minima − maxima of the heel angle is {checks['minima_minus_maxima']}, as it must be, over the arc "
+            f"from {lo} to {hi} (a grid of {checks['grid']} points{coarser})")
 
 
 def _rotation_to_up(u) -> np.ndarray:
