@@ -31,13 +31,18 @@ def error_cells(record: dict) -> tuple[str, str]:
 
 def best_error(numeric: list) -> str:
     """One cell for a formula's witnesses: the certified decision's relative bound where there is one (the
-    largest, "undecided" when one is), else the smallest relative error of a method."""
+    largest, "undecided" when one is), else the smallest relative error of a method; and how many methods.
+
+    >>> best_error([{"method": "mpmath, 30 digits", "abs_error": 1e-31, "rel_error": 2e-31}])
+    '2.0 × 10⁻³¹ (1 method)'
+    """
     if not numeric:
         return "—"
+    methods = f"{len(numeric)} method{'s' * (len(numeric) != 1)}"
     certified = [r for r in numeric if r.get("certified")]
     if any(record_decision(r) == "undecided" for r in certified):
-        return f"undecided ({len(numeric)} methods)"
+        return f"undecided ({methods})"
     if certified:
-        return f"≤ {scientific(max(r['rel_error'] for r in certified))}, proven ({len(numeric)} methods)"
+        return f"≤ {scientific(max(r['rel_error'] for r in certified))}, proven ({methods})"
     r = min(numeric, key=lambda r: r["rel_error"])
-    return f"{scientific(r['rel_error'])} ({len(numeric)} methods)"
+    return f"{scientific(r['rel_error'])} ({methods})"
