@@ -34,7 +34,16 @@ def test_phase_outputs(box_phase, tmp_path):
     assert {"body", "dims", "sweep", "thresholds", "duality_holds"} <= set(record)
     from test_json_schemas import errors
     assert errors("phase", record) == []                  # symfloat/schemas/phase.schema.json
-    assert "duality s <-> 1 - s: holds" in phase_table(box_phase)
+    assert "duality s ↔ 1 − s: holds" in phase_table(box_phase)
+
+
+def test_the_table_shows_a_records_closed_forms_in_signs():
+    # the record keeps SymPy's text (docs/figures/phase-cube.json: "1/2 - sqrt(3)/6", "at s -+ 1e-06"); the table
+    # a reader sees writes their signs
+    from symfloat.report.phase import _signs
+    assert _signs("1/2 - sqrt(3)/6") == "1/2 − √3/6" and _signs("sqrt(2)/7 + 4/7") == "√2/7 + 4/7"
+    assert _signs("at s -+ 1e-06 the solver finds") == "at s ± 1e-06 the solver finds"
+    assert _signs("1/4") == "1/4"
 
 
 def _box_fold_xz():

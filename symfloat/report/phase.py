@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+import re
 from fractions import Fraction
 
 __all__ = ["phase_record", "phase_json", "phase_table", "phase_plot"]
@@ -25,6 +26,15 @@ def phase_json(diagram) -> str:
     return json.dumps(phase_record(diagram), indent=2)
 
 
+_ROOT = re.compile(r"sqrt\((\d+)\)")
+
+
+def _signs(text: str) -> str:
+    """*text* of a record (SymPy's closed forms, ``s -+ 1e-06``) as the table shows it: a square root, a minus
+    and a plus-or-minus as their signs (``1/2 − √3/6``, ``s ± 1e-06``); the record keeps its own text."""
+    return _ROOT.sub(r"√\1", text).replace(" -+ ", " ± ").replace(" - ", " − ")
+
+
 def phase_table(diagram) -> str:
     lines = [f"{diagram.body} ({','.join(diagram.dims)}): stable positions against density "
              f"({len(diagram.densities)} densities, {diagram.seconds:.1f} s)", ""]
@@ -36,17 +46,17 @@ def phase_table(diagram) -> str:
     lines += ["", "thresholds (bisection with tracking; ± = error bound):"]
     for t in diagram.thresholds:
         src = "; ".join(f"{k['derivation']} {', '.join(k['locators'])}"
-                        + (f" {k['expression']}" if k["expression"] else "") + f" = {k['value']:.13f}"
+                        + (f" {_signs(k['expression'])}" if k["expression"] else "") + f" = {k['value']:.13f}"
                         for k in t.source) or "no source prints this threshold"
         note = f" ({t.note})" if t.note else ""
         lines.append(f"  s = {t.density:.13f} ± {t.bracket:.0e}  {t.label}: {t.change}{note}  [{src}]")
     for k in diagram.unmatched_sources:
         lines.append(f"  DISAGREEMENT: {k['derivation']} {', '.join(k['locators'])} puts a threshold at s = "
-                     f"{k['value']:.13f} ({k['label']}: {k['change']}); the solver finds none there: {k['why']}")
+                     f"{k['value']:.13f} ({k['label']}: {k['change']}); the solver finds none there: {_signs(k['why'])}")
     lines.append("")
     for t in diagram.unpaired:
         lines.append(f"  NO DUAL: s = {t.density:.13f} ({t.label}: {t.change}) has no threshold at 1 - s")
-    lines.append("duality s <-> 1 - s: " + ("holds on the sweep and threshold by threshold" if diagram.duality_ok
+    lines.append("duality s ↔ 1 − s: " + ("holds on the sweep and threshold by threshold" if diagram.duality_ok
                                             else "VIOLATED"))
     return "\n".join(lines)
 
