@@ -212,6 +212,22 @@ def test_a_fault_printed_at_several_places_is_marked_at_each(records, edition):
     assert places("ab x ab", "", (0, 2)) == []
 
 
+def _note(page: str, fid: str) -> str:
+    note = page[page.index(f'id="{formula_anchor(fid)}"'):]
+    return note[:note.index("</details>\n</details>")]
+
+
+def test_a_reading_too_long_for_a_note_is_left_to_the_notebook(records, edition):
+    # Scheeffer X's range of x (a dry-corner count at four points, 6,673 characters of TeX in the notebook) was set
+    # in its note as 430 kB of KaTeX; the notebook shows it, and the note links there. A short reading is set.
+    page = edition("scheeffer")
+    assert len(records.cells["scheeffer-x/x-range"].reading) > 2000
+    long, short = _note(page, "scheeffer-x/x-range"), _note(page, "scheeffer-vi-cf/square-moments")
+    assert "a formula too long to set in a note; the derivation's notebook shows it" in long
+    assert '<div class="reading">' not in long and len(long) < 20_000 and "the derivation step by step" in long
+    assert '<div class="reading"><span class="katex-display">' in short
+
+
 def test_lost_text_and_missing_figures_are_marked(edition):
     page = edition("graefe")
     # the lemma of Graefe §1 is lost in the transcription: its formula is unverifiable, with that reason

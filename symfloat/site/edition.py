@@ -44,6 +44,10 @@ MARKS = {"fault": ("✗", "fault of the original"), "transcription": ("✎", "tr
          "trivial": ("=", "nothing to check: the print states its own definition")}
 EVIDENCE_WORDS = {"symbolic": "proved symbolically", "sampled": "checked exactly at sampled rational points",
              "numeric": "checked numerically", None: "no evidence could be obtained"}
+# A reading longer than this in TeX (a statement the derivation reads in coordinates or case by case, thousands of
+# characters) is not set in the note, which would grow by hundreds of kilobytes (KaTeX's markup is about 60 times
+# its TeX) for a display pages wide: the notebook, linked from the note, shows it in full.
+_LONGEST_READING = 2000
 _WAIVED = {"bare-symbol": "a lone symbol or label", "repeat": "repeats a checked formula",
            "figure-reference": "refers to a figure", "lost-text": "text lost in the transcription",
            "notation": "a naming or a construction"}
@@ -203,9 +207,12 @@ def note(f: dict, records: Records, root: str, printed_html: str = "") -> str:
     how = EVIDENCE_WORDS.get(f["evidence"], f["evidence"])
     lines += ['<details class="evidence"><summary>Evidence</summary>',
               f"<p>{how[0].upper() + how[1:]}." + (f' {prose_html(erratum["evidence"])}' if erratum else "") + "</p>"]
-    if cell and cell.reading:
+    if cell and cell.reading and len(cell.reading) <= _LONGEST_READING:
         lines.append(f'<p>Read as printed:</p><div class="reading">'
                      f'{typeset(cell.reading, display=True)}</div>')
+    elif cell and cell.reading:
+        lines.append("<p>Read as printed: a formula too long to set in a note; the derivation's notebook shows "
+                     "it.</p>")
     lines.append(_witness_table(f["numeric"]))
     links = []
     if erratum:
