@@ -158,14 +158,16 @@ def _write_plot(draw, subject, path: Path, args) -> None:
 
 def _summary_by_source(reports) -> str:
     from .model.erratum import apparatus
+    from .numbers import counted
     lines = []
     for source in dict.fromkeys(r.source for r in reports):
         fs = [f for r in reports if r.source == source for f in r.formulas]
         c = Counter(f.verdict for f in fs)
         faults = Counter(apparatus(f.erratum["kind"]) for f in fs if f.verdict == "erratum" and f.erratum)
         secs = sum(r.seconds for r in reports if r.source == source)
-        lines.append(f"{source}: {len(fs)} printed formulas — {c['verified']} verified, {faults['original']} "
-                     f"faults of the original, {faults['transcription']} transcription corrected, "
+        lines.append(f"{source}: {counted(len(fs), 'printed formula')} — {c['verified']} verified, "
+                     f"{counted(faults['original'], 'fault')} of the original, "
+                     f"{faults['transcription']} transcription corrected, "
                      f"{c['unverifiable']} unverifiable, {c['trivial']} trivial (checking time recorded {secs:.1f} s)")
     return "\n".join(lines)
 

@@ -310,8 +310,10 @@ def test_an_erratum_is_shown_in_its_apparatus(graefe_reports):
             seen.add(f.erratum["kind"] == "transcription")
         if errata:
             n = sum(f.erratum["kind"] == "transcription" for f in errata)
-            assert (f"{len(errata)} erratum ({len(errata) - n} faults of the original, {n} corrections of the "
-                    f"transcription)") in view.summary_markdown()
+            faults = f"{len(errata) - n} fault{'s' * (len(errata) - n != 1)}"
+            corrections = f"{n} correction{'s' * (n != 1)}"
+            named = f"{len(errata)} errat{'um' if len(errata) == 1 else 'a'}"
+            assert f"{named} ({faults} of the original, {corrections} of the transcription)" in view.summary_markdown()
     assert seen == {True, False}              # Graefe has both (docs/errata.md: misprints and transcriptions)
 
 

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["Erratum", "KINDS", "CONFIDENCES", "APPARATUS", "apparatus"]
+__all__ = ["Erratum", "KINDS", "CONFIDENCES", "APPARATUS", "apparatus", "apparatus_in_words"]
 
 KINDS = ("transcription", "misprint", "calculation", "consequential", "claim")
 CONFIDENCES = ("high", "medium", "low")
@@ -20,6 +20,21 @@ def apparatus(kind: str) -> str:
     ('original', 'transcription')
     """
     return next(a for a, (_, kinds) in APPARATUS.items() if kind in kinds)
+
+
+def apparatus_in_words(kinds) -> str:
+    """How many of the errata of *kinds* (a kind each) each apparatus holds, in words.
+
+    >>> apparatus_in_words(["misprint", "claim", "transcription"])
+    '2 faults of the original, 1 correction of the transcription'
+    """
+    found = [apparatus(k) for k in kinds]
+    out = []
+    for a, (title, _) in APPARATUS.items():
+        plural, rest = title.split(" ", 1)                 # "faults", "of the original"
+        n = found.count(a)
+        out.append(f"{n} {plural[:-1] if n == 1 else plural} {rest}")
+    return ", ".join(out)
 
 
 @dataclass(frozen=True)

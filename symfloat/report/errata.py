@@ -17,7 +17,8 @@ from collections import Counter
 
 from ..engine.check import DerivationReport
 from .cross_references import readable
-from ..model.erratum import APPARATUS, apparatus
+from ..model.erratum import APPARATUS, apparatus, apparatus_in_words
+from ..numbers import counted
 from ..model.source import get_source
 
 __all__ = ["errata_entries", "errata_json", "errata_markdown", "errata_csv", "errata_latex", "erratum_slug",
@@ -138,8 +139,7 @@ def _fence(text: str) -> str:
 
 def apparatus_counts(entries) -> str:
     """``"N faults of the original, M corrections of the transcription"`` of *entries*."""
-    n = Counter(apparatus(e["kind"]) for e in entries)
-    return ", ".join(f"{n[a]} {title}" for a, (title, _) in APPARATUS.items())
+    return apparatus_in_words(e["kind"] for e in entries)
 
 
 def errata_markdown(reports: list[DerivationReport]) -> str:
@@ -155,7 +155,7 @@ def errata_markdown(reports: list[DerivationReport]) -> str:
            "(`transcription`), with what the original very probably printed. The criteria for kind and",
            "confidence: `docs/errata-kinds.md`.", ""]
     kinds = Counter(e["kind"] for e in entries)
-    out.append(f"{len(entries)} errata: {apparatus_counts(entries)} ("
+    out.append(f"{counted(len(entries), 'erratum', 'errata')}: {apparatus_counts(entries)} ("
                + ", ".join(f"{n} {k}" for k, n in sorted(kinds.items())) + ").")
     for part, (key, (title, _)) in zip(("I", "II"), APPARATUS.items()):
         chosen = [e for e in entries if e["apparatus"] == key]

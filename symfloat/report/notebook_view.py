@@ -16,7 +16,7 @@ import re
 import sympy as sp
 
 from ..model.claim import expressions, members
-from ..model.erratum import APPARATUS, apparatus
+from ..model.erratum import apparatus, apparatus_in_words
 from ..model.relation import is_relation, relation_latex
 from ..model.symbol_names import latex
 from ..numbers import counted
@@ -326,13 +326,13 @@ class NotebookView:
         verdicts = {}
         for f in self.report.formulas:
             verdicts[f.verdict] = verdicts.get(f.verdict, 0) + 1
-        kinds = [apparatus(f.erratum["kind"]) for f in self.report.formulas if f.erratum]
-        apart = ", ".join(f"{kinds.count(a)} {title}" for a, (title, _) in APPARATUS.items())
+        kinds = [f.erratum["kind"] for f in self.report.formulas if f.erratum]
+        apart = apparatus_in_words(kinds)
         order = ("verified", "erratum", "unverifiable", "trivial")
-        return (f"{len(self.report.steps)} steps: " + ", ".join(f"{n} {k}" for k, n in sorted(steps.items()))
-                + f".\n\n{len(self.report.formulas)} printed formulas: "
-                + ", ".join(f"{verdicts.get(v, 0)} {v}" + (f" ({apart})" if v == "erratum" and kinds else "")
-                            for v in order) + ".")
+        return (f"{counted(len(self.report.steps), 'step')}: " + ", ".join(f"{n} {k}" for k, n in sorted(steps.items()))
+                + f".\n\n{counted(len(self.report.formulas), 'printed formula')}: "
+                + ", ".join(counted(verdicts.get(v, 0), v, "errata" if v == "erratum" else v)
+                            + (f" ({apart})" if v == "erratum" and kinds else "") for v in order) + ".")
 
     def _witnesses(self, target: str) -> str:
         """What the first-principles witnesses of *target* compute, in the derivation's words."""

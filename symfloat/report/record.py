@@ -99,7 +99,7 @@ def verification_table(reports: list[DerivationReport], elapsed: float | None = 
     cached = sum(d.cached for d in reports)
     lines.append("")
     now = f"took {elapsed:.1f} s now; " if elapsed is not None else ""
-    lines.append(f"{s['formulas']} printed formulas: {s['verified']} verified, "
+    lines.append(f"{counted(s['formulas'], 'printed formula')}: {s['verified']} verified, "
                  f"{counted(s['erratum'], 'erratum', 'errata')}, {s['unverifiable']} unverifiable, "
                  f"{s['trivial']} trivial; steps: {_steps_in_words(s['steps'])}; {now}checking time "
                  f"{'recorded ' if cached else ''}{s['seconds']:.1f} s"
