@@ -47,7 +47,7 @@ from .engine.cache import ReportCache
 from .errors import (EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFailed, EnvironmentProblem, InputError,
                      SymfloatError)
 from .files import write_atomic, write_if_changed, writable_folder, writable_target
-from .project import GOLDEN, in_outputs, in_project, library_folders, outputs_root, project_root
+from .project import GOLDEN, LIBRARY_VARIABLE, in_outputs, in_project, library_folders, outputs_root, project_root
 from .registry import provided, select
 
 EXIT_STATUS = ("Exit status: 0 success; 1 a check failed (verdict, index sum, duality, coverage); "
@@ -256,8 +256,9 @@ def _run(args) -> int:
         writable_folder(folder)
     cache = _cache(args)
     _kernels_share(cache)
-    reports = _reports(args, cache=cache)
-    written = compiled_readings(write=True)          # the predictors' compiled readings, shipped with each package
+    own = _library_derivations()
+    reports = _reports(args, cache=cache) if own is None else _reports_of(args, own, cache)
+    written = compiled_readings(write=True, among=own)   # the predictors' compiled readings, shipped in each package
     if written and not _quiet(args):
         print(f"compiled readings written: {', '.join(written)}", file=sys.stderr)
     changed = [name for name, wrote in (("verification.json", write_record(docs / "verification.json", reports)),
@@ -280,8 +281,10 @@ def _run(args) -> int:
     from .report.phase_data import write_phase_data
 
     say = None if quiet else (lambda m: print(m, file=sys.stderr))
-    changed += [f"figures/{name}" for name in write_phase_data(docs, say)]
-    figures = write_figures(docs, say)
+    figures = []
+    if own is None:                                # the project's phase diagrams and pictures, not a library's
+        changed += [f"figures/{name}" for name in write_phase_data(docs, say)]
+        figures = write_figures(docs, say)
     print(_summary_by_source(reports))
     print(f"{'wrote ' + ', '.join('docs/' + f for f in changed) if changed else 'no document changed'}; "
           f"{counted(len(written), 'notebook')} changed; {counted(len(figures), 'figure')} redrawn")
@@ -289,6 +292,29 @@ def _run(args) -> int:
         for msg in r.failures:
             print(f"FAILURE: {msg}")
     return _failed(reports)
+
+
+def _library_derivations() -> list[str] | None:
+    """The derivations a run records: those of the library ``SYMFLOAT_LIBRARY`` names first (its records and
+    notebooks are its own: the project's derivations they build on are checked, not recorded), or ``None``
+    (every derivation, into the checkout) without a library."""
+    from .registry import ids_in
+    library = library_folders()[:1]
+    if not library:
+        return None
+    own = ids_in(library[0])
+    if not own:
+        raise InputError(f"{LIBRARY_VARIABLE}: {library[0]} holds no derivation (derivations/<name>/manifest.toml), "
+                         f"so a run has nothing of its own to record")
+    return own
+
+
+def _reports_of(args, own: list[str], cache) -> list:
+    """The reports of the derivations *own*, in dependency order (each checked with its ancestors)."""
+    found = {}
+    for did in own:
+        found.update((r.id, r) for r in _reports(args, did, cache))
+    return [found[did] for did in select() if did in own]
 
 
 def _scene_args(p):

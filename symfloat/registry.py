@@ -20,8 +20,8 @@ from pathlib import Path
 from .errors import InputError
 from .manifest import PARTS, Manifest, body_kinds, read_manifest
 
-__all__ = ["ids", "manifest", "files", "requires", "providing", "predicting", "provided", "predictor", "reader",
-           "statements", "load", "part", "select", "cross_use_problems", "compiled_readings", "SelectorError", "Reader"]
+__all__ = ["ids", "ids_in", "manifest", "files", "requires", "providing", "predicting", "provided", "predictor",
+           "reader", "statements", "load", "part", "select", "cross_use_problems", "compiled_readings", "SelectorError", "Reader"]
 
 
 class SelectorError(InputError):
@@ -50,6 +50,11 @@ def _manifests() -> dict[str, Manifest]:
 def ids() -> list[str]:
     """All derivation ids, sorted."""
     return list(_manifests())
+
+
+def ids_in(folder: Path) -> list[str]:
+    """The ids of the derivations whose package lies in *folder* (a library of ``SYMFLOAT_LIBRARY``), sorted."""
+    return [did for did, m in _manifests().items() if folder.resolve() in m.folder.resolve().parents]
 
 
 def manifest(derivation_id: str) -> Manifest:
@@ -185,14 +190,14 @@ def predictor(derivation_id: str):
     return d
 
 
-def compiled_readings(write: bool = False) -> list[str]:
-    """Ids of the derivations whose predictors' shipped compiled readings (``compiled.json`` in the package,
-    :mod:`symfloat.model.compiled`) are not current; with *write*, written afresh from the statements (then the
-    ids of those written)."""
+def compiled_readings(write: bool = False, among=None) -> list[str]:
+    """Ids of the derivations (those of *among*, if given) whose predictors' shipped compiled readings
+    (``compiled.json`` in the package, :mod:`symfloat.model.compiled`) are not current; with *write*, written
+    afresh from the statements (then the ids of those written)."""
     from .model.compiled import judged_current, write_shipped
     out = []
     for did, m in _manifests().items():
-        if not m.has("predictors"):
+        if not m.has("predictors") or (among is not None and did not in among):
             continue
         readings = getattr(_predictors(did), "READINGS", None)
         if readings is not None and not judged_current(readings):

@@ -68,6 +68,12 @@ def library(tmp_path_factory):
     return library, before, sorted(p.name for p in notebooks.iterdir())
 
 
+def test_a_library_without_derivations_has_no_run(tmp_path):
+    out = _symfloat(tmp_path, "run", cwd=tmp_path)
+    assert out.returncode == 2 and out.stderr.startswith("symfloat: SYMFLOAT_LIBRARY: ")
+    assert "holds no derivation" in out.stderr and out.stderr.count("\n") == 1 and out.stdout == ""
+
+
 def test_a_librarys_notebook_and_cache_stay_in_its_folder_and_rerun_there(library):
     library, before, after = library
     written = library / "notebooks" / "cap-centroid.ipynb"
@@ -86,21 +92,6 @@ def test_a_librarys_notebook_and_cache_stay_in_its_folder_and_rerun_there(librar
     assert errors == []
 
 
-_RECORDS = """
-import sys
-from pathlib import Path
-from symfloat.engine.check import check_derivation
-from symfloat.registry import load, select
-from symfloat.report.errata import errata_json
-from symfloat.report.record import write_record
-reports = [check_derivation(load(d)[0]) for d in select("cap")]
-docs = Path(sys.argv[1]) / "docs"
-docs.mkdir()
-write_record(docs / "verification.json", reports)
-(docs / "errata.json").write_text(errata_json(reports), encoding="utf-8")
-"""
-
-
 def test_a_librarys_site_is_built_from_its_own_records_under_its_folder(library, tmp_path):
     pytest.importorskip("sphinx", reason="the site extra is not installed (pip install 'symfloat[site]')")
     pytest.importorskip("myst_nb", reason="the site extra is not installed (pip install 'symfloat[site]')")
@@ -109,12 +100,16 @@ def test_a_librarys_site_is_built_from_its_own_records_under_its_folder(library,
     except typeset.TypesetterMissing as exc:
         pytest.skip(str(exc))
     library = library[0]                            # with its notebook written
-    env = {k: v for k, v in os.environ.items() if k != "SYMFLOAT_CACHE"}
-    env.update(SYMFLOAT_LIBRARY=str(library))
-    made = subprocess.run([sys.executable, "-c", _RECORDS, str(library)], env=env, capture_output=True, text=True,
-                          check=False, cwd=tmp_path)
-    assert made.returncode == 0, made.stderr
     checkout = project_root()
+    records = sorted((checkout / "docs").rglob("*")), sorted((checkout / "notebooks").iterdir())
+    # the main job writes the library's records: its own derivation's alone (it once checked every derivation of
+    # the project too, four minutes, and wrote their notebooks and the project's phase diagrams into the library)
+    made = _symfloat(library, "run", cwd=tmp_path)
+    assert made.returncode == 0, made.stderr
+    assert json.loads((library / "docs" / "verification.json").read_text())["summary"]["derivations"] == ["cap-centroid"]
+    assert sorted(p.name for p in (library / "notebooks").iterdir()) == ["cap-centroid.ipynb"]
+    assert not (library / "docs" / "figures").exists()
+    assert (sorted((checkout / "docs").rglob("*")), sorted((checkout / "notebooks").iterdir())) == records
     before = (checkout / "build" / "site").is_dir() and sorted((checkout / "build" / "site").rglob("*"))
     out = _symfloat(library, "site", cwd=tmp_path)
     assert out.returncode == 0, out.stderr
