@@ -21,7 +21,8 @@ from .errors import InputError
 from .manifest import PARTS, Manifest, body_kinds, read_manifest
 
 __all__ = ["ids", "ids_in", "manifest", "files", "requires", "providing", "predicting", "provided", "predictor",
-           "reader", "statements", "load", "part", "select", "cross_use_problems", "compiled_readings", "SelectorError", "Reader"]
+           "reader", "statements", "load", "part", "select", "cross_use_problems", "compiled_readings", "SelectorError",
+           "Reader"]
 
 
 class SelectorError(InputError):

@@ -39,7 +39,8 @@ def test_the_markdown_lists_the_two_apparatus_apart():
     assert one < md.index("### (2)") < md.index("### (3)") < two < md.index("### (1)")    # the misprint in I, the scan's in II
     assert "The original very probably printed:" in md[two:] and "The original very probably printed:" not in md[:two]
     assert "3 errata: 2 faults of the original, 1 correction of the transcription" in md      # one: singular
-    assert apparatus_counts(json.loads(errata_json(REPORTS))) == "2 faults of the original, 1 correction of the transcription"
+    counts = apparatus_counts(json.loads(errata_json(REPORTS)))
+    assert counts == "2 faults of the original, 1 correction of the transcription"
 
 
 def test_the_run_summary_counts_the_apparatus_apart():

@@ -106,7 +106,8 @@ def test_a_librarys_site_is_built_from_its_own_records_under_its_folder(library,
     # the project too, four minutes, and wrote their notebooks and the project's phase diagrams into the library)
     made = _symfloat(library, "run", cwd=tmp_path)
     assert made.returncode == 0, made.stderr
-    assert json.loads((library / "docs" / "verification.json").read_text())["summary"]["derivations"] == ["cap-centroid"]
+    record = json.loads((library / "docs" / "verification.json").read_text())
+    assert record["summary"]["derivations"] == ["cap-centroid"]
     assert sorted(p.name for p in (library / "notebooks").iterdir()) == ["cap-centroid.ipynb"]
     assert not (library / "docs" / "figures").exists()
     assert (sorted((checkout / "docs").rglob("*")), sorted((checkout / "notebooks").iterdir())) == records

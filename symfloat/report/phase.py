@@ -52,7 +52,8 @@ def phase_table(diagram) -> str:
         lines.append(f"  s = {t.density:.13f} ± {t.bracket:.0e}  {t.label}: {t.change}{note}  [{src}]")
     for k in diagram.unmatched_sources:
         lines.append(f"  DISAGREEMENT: {k['derivation']} {', '.join(k['locators'])} puts a threshold at s = "
-                     f"{k['value']:.13f} ({k['label']}: {k['change']}); the solver finds none there: {_signs(k['why'])}")
+                     f"{k['value']:.13f} ({k['label']}: {k['change']}); the solver finds none there: "
+                     f"{_signs(k['why'])}")
     lines.append("")
     for t in diagram.unpaired:
         lines.append(f"  NO DUAL: s = {t.density:.13f} ({t.label}: {t.change}) has no threshold at 1 - s")
