@@ -314,6 +314,9 @@ def test_an_erratum_is_shown_in_its_apparatus(graefe_reports):
             corrections = f"{n} correction{'s' * (n != 1)}"
             named = f"{len(errata)} errat{'um' if len(errata) == 1 else 'a'}"
             assert f"{named} ({faults} of the original, {corrections} of the transcription)" in view.summary_markdown()
+        # the steps counted as the verify table counts them: "13 proved, 5 definitions" (it wrote "5 definition")
+        assert re.search(r"^\d+ steps: \d+ \w+", view.summary_markdown())
+        assert not re.search(r"\b(?!1\b)\d+ definition\b", view.summary_markdown())
     assert seen == {True, False}              # Graefe has both (docs/errata.md: misprints and transcriptions)
 
 

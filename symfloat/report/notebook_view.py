@@ -24,6 +24,7 @@ from ..registry import load
 from .notebook_code import STRATEGY_WORDS
 from ..prose import typeset
 from .cross_references import readable
+from .record import steps_in_words
 from .witness_words import error_cells
 
 __all__ = ["NotebookView", "definitions_markdown", "step_markdown", "step_title", "step_titles", "reading_markdown",
@@ -329,7 +330,7 @@ class NotebookView:
         kinds = [f.erratum["kind"] for f in self.report.formulas if f.erratum]
         apart = apparatus_in_words(kinds)
         order = ("verified", "erratum", "unverifiable", "trivial")
-        return (f"{counted(len(self.report.steps), 'step')}: " + ", ".join(f"{n} {k}" for k, n in sorted(steps.items()))
+        return (f"{counted(len(self.report.steps), 'step')}: " + steps_in_words(steps)
                 + f".\n\n{counted(len(self.report.formulas), 'printed formula')}: "
                 + ", ".join(counted(verdicts.get(v, 0), v, "errata" if v == "erratum" else v)
                             + (f" ({apart})" if v == "erratum" and kinds else "") for v in order) + ".")

@@ -13,7 +13,7 @@ from .cross_references import readable
 from .witness_words import best_error
 
 __all__ = ["verification_record", "verification_table", "record_differences", "record_json", "write_record",
-           "VERDICTS", "HARDWARE_DOUBLES"]
+           "VERDICTS", "HARDWARE_DOUBLES", "steps_in_words"]
 
 VERDICTS = ("verified", "erratum", "unverifiable", "trivial")
 
@@ -77,7 +77,7 @@ def write_record(path, reports) -> bool:
     return write_if_changed(path, text)
 
 
-def _steps_in_words(steps: dict) -> str:
+def steps_in_words(steps: dict) -> str:
     """The steps' count by status in words, the most first: ``26 proved, 15 definitions, 6 applied``."""
     plural = {"definition": "definitions"}
     return ", ".join(counted(n, k, plural.get(k, k)) for k, n in sorted(steps.items(), key=lambda kv: (-kv[1], kv[0])))
@@ -101,7 +101,7 @@ def verification_table(reports: list[DerivationReport], elapsed: float | None = 
     now = f"took {elapsed:.1f} s now; " if elapsed is not None else ""
     lines.append(f"{counted(s['formulas'], 'printed formula')}: {s['verified']} verified, "
                  f"{counted(s['erratum'], 'erratum', 'errata')}, {s['unverifiable']} unverifiable, "
-                 f"{s['trivial']} trivial; steps: {_steps_in_words(s['steps'])}; {now}checking time "
+                 f"{s['trivial']} trivial; steps: {steps_in_words(s['steps'])}; {now}checking time "
                  f"{'recorded ' if cached else ''}{s['seconds']:.1f} s"
                  + (f" ({cached} of {len(s['derivations'])} derivations read from the cache, their time as "
                     f"recorded when they were checked)" if cached else ""))
