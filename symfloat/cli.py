@@ -250,13 +250,13 @@ def _run(args) -> int:
     from .report.errata import errata_json, errata_markdown
     from .report.record import write_record
     from .report.stamp import stamp_of
+    own = _library_derivations()                   # before anything is made in the library's folder
     docs, notebooks = ((args.output / "docs", args.output / "notebooks") if args.output is not None
                        else (in_outputs("docs"), in_outputs("notebooks")))
     for folder in (docs, notebooks):
         writable_folder(folder)
     cache = _cache(args)
     _kernels_share(cache)
-    own = _library_derivations()
     reports = _reports(args, cache=cache) if own is None else _reports_of(args, own, cache)
     written = compiled_readings(write=True, among=own)   # the predictors' compiled readings, shipped in each package
     if written and not _quiet(args):

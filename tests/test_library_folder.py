@@ -72,6 +72,7 @@ def test_a_library_without_derivations_has_no_run(tmp_path):
     out = _symfloat(tmp_path, "run", cwd=tmp_path)
     assert out.returncode == 2 and out.stderr.startswith("symfloat: SYMFLOAT_LIBRARY: ")
     assert "holds no derivation" in out.stderr and out.stderr.count("\n") == 1 and out.stdout == ""
+    assert list(tmp_path.iterdir()) == []                  # refused before anything is made there (a cache folder was)
 
 
 def test_a_librarys_notebook_and_cache_stay_in_its_folder_and_rerun_there(library):
