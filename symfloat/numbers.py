@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["scientific", "written", "duration", "counted"]
+__all__ = ["scientific", "written", "duration", "counted", "steps_in_words"]
 
 _SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
@@ -64,3 +64,13 @@ def counted(n, noun: str, plural: str = "") -> str:
     ('1 case', '3 cases', '1 erratum', '0 errata')
     """
     return f"{n} {noun if n == 1 else plural or noun + 's'}"
+
+
+def steps_in_words(steps: dict) -> str:
+    """A derivation's steps counted by status (status -> number), the most first.
+
+    >>> steps_in_words({"applied": 6, "definition": 15, "proved": 26, "sampled": 1})
+    '26 proved, 15 definitions, 6 applied, 1 sampled'
+    """
+    plural = {"definition": "definitions"}
+    return ", ".join(counted(n, k, plural.get(k, k)) for k, n in sorted(steps.items(), key=lambda kv: (-kv[1], kv[0])))

@@ -8,12 +8,12 @@ from pathlib import Path
 from ..engine.check import DerivationReport
 from ..engine.witness import record_decision
 from ..files import write_if_changed
-from ..numbers import counted
+from ..numbers import counted, steps_in_words
 from .cross_references import readable
 from .witness_words import best_error
 
 __all__ = ["verification_record", "verification_table", "record_differences", "record_json", "write_record",
-           "VERDICTS", "HARDWARE_DOUBLES", "steps_in_words"]
+           "VERDICTS", "HARDWARE_DOUBLES"]
 
 VERDICTS = ("verified", "erratum", "unverifiable", "trivial")
 
@@ -75,12 +75,6 @@ def write_record(path, reports) -> bool:
     except (OSError, ValueError, KeyError):
         pass
     return write_if_changed(path, text)
-
-
-def steps_in_words(steps: dict) -> str:
-    """The steps' count by status in words, the most first: ``26 proved, 15 definitions, 6 applied``."""
-    plural = {"definition": "definitions"}
-    return ", ".join(counted(n, k, plural.get(k, k)) for k, n in sorted(steps.items(), key=lambda kv: (-kv[1], kv[0])))
 
 
 def verification_table(reports: list[DerivationReport], elapsed: float | None = None) -> str:
