@@ -127,9 +127,9 @@ def _bound_apart(expr):
 
 def route_enclosure(measured: list, claims: list, points: list, allowance=None):
     """The certified record of the claims against the measured components at *points*, at the first precision
-    that decides (or the last tried), *allowance* (a printed number's rounding, a SymPy rational) its ``abs_tolerance``; ``None``
-    where an integral has no finite enclosure at the first precision (its integrand not holomorphic near the
-    path, or the integrator's evaluations run out: more bits would not help).  Raises
+    that decides (or the last tried), *allowance* (a printed number's rounding, a SymPy rational) its
+    ``abs_tolerance``; ``None`` where an integral has no finite enclosure at the first precision (its integrand
+    not holomorphic near the path, or the integrator's evaluations run out: more bits would not help).  Raises
     :class:`~symfloat.engine.enclosure.Unsupported` for a member without a rigorous rule."""
     t0 = time.perf_counter()
     bits = START_BITS

@@ -13,7 +13,7 @@ other record shows its error as measured.
 from __future__ import annotations
 
 from ..engine.witness import record_decision
-from ..numbers import scientific
+from ..numbers import counted, scientific
 
 __all__ = ["error_cells", "best_error"]
 
@@ -38,7 +38,7 @@ def best_error(numeric: list) -> str:
     """
     if not numeric:
         return "—"
-    methods = f"{len(numeric)} method{'s' * (len(numeric) != 1)}"
+    methods = counted(len(numeric), "method")
     certified = [r for r in numeric if r.get("certified")]
     if any(record_decision(r) == "undecided" for r in certified):
         return f"undecided ({methods})"
