@@ -29,6 +29,7 @@ from ..model.relation import RealRoots
 from .enclosure import Unsupported, exact, real_function, working_precision
 from .branches import branches
 from .pythagoras import pythagoras
+from .rational_zero import is_zero_rational_function
 from .proofs import Certificate, ProofBook, claim_digest, slowdown
 from .sign import decided
 from .timelimit import TimeLimitExceeded, time_limit
@@ -110,8 +111,11 @@ def _squares(pair):
 
 def _cancelled(e):
     """``cancel(together(e))``, which is 0 exactly when the numerator of ``together(e)`` is the zero polynomial
-    in its generators: that numerator expanded is tried first (no greatest common divisor with the denominator
-    to compute), and cancelled only where it is not 0."""
+    in its generators: FLINT's polynomials ask that first (:mod:`~symfloat.engine.rational_zero`, a thousandth of
+    SymPy's time), then SymPy's numerator expanded (no greatest common divisor with the denominator to compute),
+    which is cancelled only where it is not 0."""
+    if is_zero_rational_function(e):
+        return sp.Integer(0)
     combined = sp.together(e)
     if sp.expand(sp.fraction(combined)[0]) == 0:
         return sp.Integer(0)
