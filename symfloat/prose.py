@@ -5,7 +5,12 @@ The notes, assumptions and summaries of the derivation modules write mathematics
 each maximal run of mathematical tokens — names with an index or exponent, Greek letters, the
 functions, numbers, operators and the one-letter names between them — becomes one inline formula
 in TeX; words stay words.  A run without a name with an index, a Greek letter, a function or a
-relation sign stays text (``a`` is an article, ``(i)`` a label).
+relation sign stays text (``(i)`` is a label, ``a - c`` a slab), but a letter alone between words is a name
+and a formula of its own, unless it is the article (``a box``, ``A`` opening a sentence), a chapter's numeral
+or a letter of an abbreviation:
+
+>>> typeset("A box with edges a, b, c; the centroid C of a face, the x axis, i.e. Scheeffer X")
+'A box with edges $a$, $b$, $c$; the centroid $C$ of a face, the $x$ axis, i.e. Scheeffer X'
 
 >>> typeset("the arm grows like phi (T_1/V_1 - e_1)")
 'the arm grows like $\\\\varphi (T_{1}/V_{1} - e_{1})$'
@@ -38,12 +43,12 @@ writes products the same way (``nx + my``); a word of two letters is a word, and
 holds a relation is an aside, not a factor:
 
 >>> typeset("at Oc = c from the middle O, if u = mx - ny and t = nx + my; so is ce (x = a), c = a/2 (Oc = AB/4)")
-'at $Oc = c$ from the middle O, if $u = mx - ny$ and $t = nx + my$; so is ce $(x = a)$, $c = a/2$ $(Oc = AB/4)$'
+'at $Oc = c$ from the middle $O$, if $u = mx - ny$ and $t = nx + my$; so is ce $(x = a)$, $c = a/2$ $(Oc = AB/4)$'
 
 Names listed before a relation are set with it, and names listed beside one apart from it:
 
 >>> typeset("G, g, D, h > 0; the sections G, D, g and h = 2m; through A, x = 0; for x, y in the plane, z = 1")
-'$G, g, D, h > 0$; the sections $G, D, g$ and $h = 2m$; through A, $x = 0$; for x, y in the plane, $z = 1$'
+'$G, g, D, h > 0$; the sections $G, D, g$ and $h = 2m$; through $A$, $x = 0$; for $x$, $y$ in the plane, $z = 1$'
 
 A range of whole numbers is a range:
 
@@ -73,10 +78,11 @@ FUNCTIONS = ("sin", "cos", "tan", "cot", "tg", "cotg", "sqrt", "arctan", "atan",
 _TEX = {"phi": r"\varphi", "varphi": r"\varphi", "epsilon": r"\varepsilon", "atan": r"\arctan",
         "tg": r"\operatorname{tg}", "cotg": r"\operatorname{cotg}",
         "sqrt": r"\sqrt", "int": r"\int", "√": r"\sqrt", "∫": r"\int", "·": r"\cdot", "−": "-",
-        "<=": r"\le", ">=": r"\ge", "≤": r"\le", "≥": r"\ge", "±": r"\pm", "+-": r"\pm", "oo": r"\infty",
+        "<=": r"\le", ">=": r"\ge", ">>": r"\gg", "<<": r"\ll", "≤": r"\le", "≥": r"\ge", "±": r"\pm",
+        "+-": r"\pm", "oo": r"\infty",
         "*": r"\cdot", "π": r"\pi", "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu",
         "≈": r"\approx", "→": r"\to", "->": r"\to", "<->": r"\leftrightarrow", "↔": r"\leftrightarrow",
-        "∞": r"\infty", "...": r"\ldots", "…": r"\ldots", "{": r"\{", "}": r"\}",
+        "≫": r"\gg", "≪": r"\ll", "∞": r"\infty", "...": r"\ldots", "…": r"\ldots", "{": r"\{", "}": r"\}",
         # Greek letters written as themselves (Euler's κ, μ, ν in the notes of §§229-243)
         "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon", "κ": r"\kappa",
         "λ": r"\lambda", "ν": r"\nu", "ξ": r"\xi", "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau", "ψ": r"\psi",
@@ -105,7 +111,8 @@ _TOKEN = re.compile(r"""
   | (?P<index>[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))                                   # ∫_0^b, s^*, )^κ, )^{3κ-1}
   | (?P<range>(?<![\w.])\d+\.\.\d+(?![\w.]))                                        # n = 3..12
   | (?P<number>\d+(?:\.\d+)?)
-  | (?P<relation><->|<=|>=|[=<>≤≥≈↔]|->|→)
+  | (?P<relation><->|<=|>=|>>|<<|[=<>≤≥≈↔≫≪]|->|→)
+  | (?P<ratio>(?<=[ ]):(?=[ ]))                                                    # I : K = EF^2 : AB^2
   | (?P<power>[²³⁴¹⁰⁵⁶⁷⁸⁹ⁿ]+)                                                       # y²ⁿ
   | (?P<operator>\+-|\.\.\.|…|[-+*/(){}±·−√∫∞πθφωμαβγδεκλνξρστψΓΔ])                  # a + ... + g, {a + b}
   | (?P<other>.)
@@ -117,7 +124,7 @@ def _kind(token: str, group: str, quoted: bool = False) -> str:
     ``text``."""
     if group == "starred":
         return "strong" if token[:-1] in GREEK or len(token) == 2 else "text"
-    if group in ("degrees", "range"):
+    if group in ("degrees", "range", "ratio"):
         return "weak"
     if group == "name":
         base = re.match(r"[A-Za-z][A-Za-z0-9]*", token).group(0)
@@ -316,14 +323,70 @@ def _aside(tokens: list, i: int) -> bool:
     return False
 
 
-def _typeset_plain(text: str, quoted: bool = False) -> str:
+_CHAPTER_WORDS = frozenset({"Scheeffer", "section", "sections", "Section", "chapter", "Chapter", "part", "row", "rows"})
+
+
+# what follows a name a, never the article ("edges a, b", "from a to c")
+_AFTER_A = frozenset(",;:.") | {"to"}
+# what follows a point A opening a sentence ("A lies on", "A at x = 0"), never the article
+_AFTER_A_POINT = frozenset(",;:.") | frozenset("and or is lies at to on in of has moves with from are".split())
+
+
+def _names(tokens: list, followed: bool = False) -> list:
+    """A letter alone between words is a name (the centroid C, the edges a, b, c, the x axis), a formula of its
+    own; not the article (``a box``, ``A`` opening a sentence), a chapter's numeral (Scheeffer X, section V), a
+    label in brackets (``(b)``), a letter of an abbreviation (``i.e.``) or the ``s`` after a curly apostrophe
+    (``Euler’s``).  *followed*: a formula follows the tokens (``a $Y$-dependent centroid``).  A name after a sign in
+    brackets and a space (``above (-) B``) is of kind ``name``: it starts a formula of its own."""
+    out = list(tokens)
+    solid = [i for i, (t, _, _) in enumerate(tokens) if not t.isspace()]
+    for n, i in enumerate(solid):
+        t, k, g = tokens[i]
+        if g != "word" or k != "weak" or len(t.rstrip("'")) != 1:
+            continue
+        before = out[solid[n - 1]] if n else None           # an article before it is a word
+        after = tokens[solid[n + 1]] if n + 1 < len(solid) else None
+        listed = after is not None and after[0] in ("and", "or") and n + 2 < len(solid) \
+            and re.fullmatch(r"[A-Za-z]'?", tokens[solid[n + 2]][0])          # a and c
+        among_words = (before is None or before[1] == "text" or before[0] == "(") and (
+            after is None and followed or after is not None and (after[1] == "text" or t == "A" and after[2] == "word"))
+        if t == "a" and among_words and not listed and (after is None or after[0] not in _AFTER_A):
+            out[i] = (t, "text", g)                      # the article: a box, a $Y$-dependent centroid
+            continue
+        if t == "A" and among_words and (before is None or before[0] in ".:;!?") and not listed and (
+                after is None or after[0] not in _AFTER_A_POINT):
+            out[i] = (t, "text", g)                      # the article opening a sentence: A box, A '$yy$'
+            continue
+        opens, closes = before is not None and before[0] == "(", after is not None and after[0] == ")"
+        aside = after is not None and after[0] == "(" and tokens[i + 1][0].isspace()       # c (density s)
+        behind = before is not None and before[0] == ")" and tokens[i - 1][0].isspace() and n >= 3 \
+            and tokens[solid[n - 2]][0] in "+-−±" and tokens[solid[n - 3]][0] == "("    # a sign: above (-) B
+        if opens and closes or any(x is not None and x[1] != "text" for x in (before, after)
+                                   if not (x is before and (opens or behind) or x is after and (closes or aside))):
+            continue                                     # a label (b); beside mathematics: in a run already
+        if i > 0 and not tokens[i - 1][0].isspace() and not opens:
+            continue                                     # Euler’s, —a
+        if i + 1 < len(tokens) and not tokens[i + 1][0].isspace() and not closes and (
+                tokens[i + 1][0] not in ",;:." or i + 2 < len(tokens) and not tokens[i + 2][0].isspace()):
+            continue                                     # i.e., a label a)
+        if t in _ROMAN:
+            words = [x[0] for x in tokens[:i] if x[2] in ("word", "name", "indexed")
+                     and x[0] not in ("and", "or") and x[0] not in _ROMAN]
+            if words and words[-1] in _CHAPTER_WORDS or after is not None and after[0] == ".":
+                continue                                 # Scheeffer 1902, X; section V; rows I and V; II. as a heading
+        out[i] = (t, "name" if behind else "strong", g)
+    return out
+
+
+def _typeset_plain(text: str, quoted: bool = False, followed: bool = False) -> str:
     """*text* typeset; *quoted*: the source's words in quotation marks, where a segment's name or a difference of
-    letters stays as the source wrote it (``'h/3{2D - (G+g)/2}'``, ``'Ac = a - c'``)."""
+    letters stays as the source wrote it (``'h/3{2D - (G+g)/2}'``, ``'Ac = a - c'``); *followed*: more of the
+    text (a formula, a quotation) follows it."""
     text = re.sub(r"((?<![\w.])[A-Za-z]|\))\.(?=\()", r"\1·", text)     # u.(G - B), (du).(G - B): a product
     text = re.sub(r"(?<=[\w)])\*\*(?=[\w(])", "^", text)                 # a**2: a power
     text = re.sub(r"\bsqrt\{([^{}$]*)\}", r"sqrt(\1)", text)              # sqrt{2}: a root
     tokens = [(m.group(0), _kind(m.group(0), m.lastgroup, quoted), m.lastgroup) for m in _TOKEN.finditer(text)]
-    tokens = [(t, k) for t, k, _ in _attached(tokens)]
+    tokens = [(t, k) for t, k, _ in (_attached(tokens) if quoted else _names(_attached(tokens), followed))]
     out, run = [], []
 
     def flush():
@@ -361,6 +424,9 @@ def _typeset_plain(text: str, quoted: bool = False) -> str:
     for i, (token, kind) in enumerate(tokens):
         if token == "(" and run and run[-1][1] == "space" and _aside(tokens, i):
             flush()                              # ef (x = a), c = a/2 (Oc = AB/4): an aside, not a factor
+        if kind == "name":                       # a name after a bracket and a space: above (-) B
+            flush()
+            kind = "strong"
         if token == "," and sum({"(": 1, ")": -1}.get(t, 0) for t, _ in run) > 0:
             run.append((token, "weak"))          # B((p+1)/n, q+1): a comma inside the formula's bracket
         elif kind == "text":
@@ -374,8 +440,9 @@ def _typeset_plain(text: str, quoted: bool = False) -> str:
 
 # a list of one-letter names before a formula that starts with a name and a relation: ``a, b, $c > 0$`` (two names
 # at least: one is as likely the end of a phrase, ``through A, $x = 0$``)
-_LISTED = re.compile(r"(?<![\w$'’])((?:[A-Za-z], ){2,}|(?:[A-Za-z], )+(?=[A-Za-z] and ))"
-                     r"(?:\$|([A-Za-z]) and \$)"
+_ONE = r"(?:[A-Za-z]|\$[A-Za-z]'?\$)"       # a one-letter name, set by _names as a formula of its own
+_LISTED = re.compile(rf"(?<![\w$'’])((?:{_ONE}, ){{2,}}|(?:{_ONE}, )+(?={_ONE} and ))"
+                     rf"(?:\$|({_ONE}) and \$)"
                      r"(?=(?:[A-Za-z]|\\[A-Za-z]+)(?:_\{[^{}$]*\}|_[A-Za-z0-9])?'? (?:[<>=]|\\(?:le|ge|ne)\b))")
 
 
@@ -384,9 +451,10 @@ def _listed(text: str) -> str:
     relation's by "and" are a formula of their own (``$G, D, g$ and $h = 2m$``).  A single letter followed by a
     comma is no article."""
     def one(m: re.Match) -> str:
+        names = m.group(1).replace("$", "")
         if m.group(2) is None:
-            return "$" + m.group(1)
-        return "$" + m.group(1) + m.group(2) + "$ and $"
+            return "$" + names
+        return "$" + names + m.group(2).replace("$", "") + "$ and $"
     return _LISTED.sub(one, text)
 
 
@@ -413,7 +481,7 @@ def typeset(text: str) -> str:
     the source's words) only what is certainly mathematics is set."""
     parts = _KEPT.split(text)
     out = []
-    for part in parts:
+    for i, part in enumerate(parts):
         if part.startswith("$") or _SECTION.fullmatch(part):      # mathematics, a section (VI.C-F): as they are
             out.append(part)
         elif part.startswith("'"):                  # the marks are no prime of the quotation's last name
@@ -426,7 +494,7 @@ def typeset(text: str) -> str:
                 done = _code_formula(inner) or part
             out.append(done)
         else:
-            out.append(_typeset_plain(part))
+            out.append(_typeset_plain(part, followed=i + 1 < len(parts) and bool(parts[i + 1])))
     return "".join(out)
 
 

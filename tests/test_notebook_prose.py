@@ -90,6 +90,8 @@ def _texts(derivation: str):
     ("EF lies at the distance Cc = (c - a)/3 from ef", r"EF lies at the distance $Cc = (c - a)/3$ from ef"),
     # a sum, difference or quotient of letters is a formula without a Greek letter or an index (Scheeffer IX)
     ("n + 1/n, the same at both double roots", r"$n + 1/n$, the same at both double roots"),
+    # much greater than (Hasab's long prism): a relation, not two signs ">" set side by side
+    ("length l >> 1, water density 1", r"length $l \gg 1$, water density 1"),
     ("z_+ - z_-, 4 z_+ - 3 at the roots", r"$z_+ - z_-$, $4 z_+ - 3$ at the roots"),
     # a product written with a dot, a Python power and a comma inside a formula's bracket
     ("the product u.(G - B)", r"the product $u\cdot(G - B)$"),
@@ -98,14 +100,26 @@ def _texts(derivation: str):
     ("its derivative is (du/dtheta).(G - B)", r"its derivative is $(du/d\theta)\cdot(G - B)$"),
     ("b^{p+1}/n · B((p+1)/n, q+1), the Beta function", r"$b^{p+1}/n \cdot B((p+1)/n, q+1)$, the Beta function"),
     # what stays words: a segment alone, a chapter's numeral, a sign in brackets, a range of pages, a coordinate
-    # pair of numbers, and a quotation of the source, kept verbatim
-    ("from AB up to M, by Scheeffer IX and VI, sections I-III", "from AB up to M, by Scheeffer IX and VI, sections I-III"),
-    ("G lies below (+) or above (-) B", "G lies below (+) or above (-) B"),
+    # pair of numbers, and a quotation of the source, kept verbatim; a point or a length named by one letter is a
+    # formula of its own (it was left as a word before, the point M in roman type beside $BM$)
+    ("from AB up to M, by Scheeffer IX and VI, sections I-III",
+     "from AB up to $M$, by Scheeffer IX and VI, sections I-III"),
+    ("G lies below (+) or above (-) B", "$G$ lies below (+) or above (-) $B$"),
     ("the slab a-c, (step e2-e3), (sign-of-P)", "the slab a-c, (step e2-e3), (sign-of-P)"),
     ("('Ac = a - c et Oc = c')", "('Ac = a - c et Oc = c')"),
-    ("pages 3 - 5, the points (0, 0) and (G below, G above B)", "pages 3 - 5, the points (0, 0) and (G below, G above B)"),
+    ("pages 3 - 5, the points (0, 0) and (G below, G above B)",
+     "pages 3 - 5, the points (0, 0) and ($G$ below, $G$ above $B$)"),
     ("quoted in §3 ('zusammen fanden h/3{2D - (G+g)/2}'), so", "quoted in §3 ('zusammen fanden h/3{2D - (G+g)/2}'), so"),
-    ("the rectangle's moments over the rhombus' (same a, b)", "the rectangle's moments over the rhombus' (same a, b)"),
+    ("the rectangle's moments over the rhombus' (same a, b)", "the rectangle's moments over the rhombus' (same $a$, $b$)"),
+    # the article is a word (a box, A opening a sentence, a before a formula), and so are a chapter's numeral, a
+    # label, an abbreviation and the s of a possessive
+    ("A box with edges a, b, c (density s) floats. A lies on B, the slab from a to c",
+     "A box with edges $a$, $b$, $c$ (density $s$) floats. $A$ lies on $B$, the slab from $a$ to $c$"),
+    ("A c read as o, a $Y$-dependent centroid, the scan confuses a and c",
+     "A $c$ read as $o$, a $Y$-dependent centroid, the scan confuses $a$ and $c$"),
+    ("Scheeffer 1902, X: rows I and V of (162); II. Body frame; case (b), i.e. Euler’s case",
+     "Scheeffer 1902, X: rows I and V of (162); II. Body frame; case (b), i.e. Euler’s case"),
+    ("x = (a + b) c, the x axis", "$x = (a + b) c$, the $x$ axis"),
     # a quotation holding a formula with a prime (Scheeffer IX.B's answer): its quote marks were read around '$F'
     # and the dollars after it paired wrongly, a sentence set as one formula
     ("its reason, '$F'(z)$ zunimmt', holds for $z < 0$, and", "its reason, '$F'(z)$ zunimmt', holds for $z < 0$, and"),
@@ -194,7 +208,7 @@ def test_a_label_before_its_formula_is_the_whole_title_and_a_cut_phrase_ends_wit
     for did in ("scheeffer-iv-v", "euler-229-243", "graefe-s4-applications"):
         d, _ = load(did)
         titles.update({s.note.strip()[:12].lower(): step_title(d, s) for s in d.steps if s.note})
-    assert titles["area element"] == "Area element" and titles["euler's n: ∫"] == "Euler's N"
+    assert titles["area element"] == "Area element" and titles["euler's n: ∫"] == "Euler's $N$"
     assert not [t for t in titles.values() if t.endswith((":", ": …"))]
     # a long phrase with no label is still cut at a space and marked as cut
     assert titles["the factor b"].startswith("The factor $b c/a^{2}") and titles["the factor b"].endswith(" …")
@@ -204,7 +218,7 @@ def test_a_ratios_colon_does_not_end_a_title():
     # Euler §213's proportion "I : K = EF^2 : AB^2" was titled "§213: I : K = EF²" (and a space), half of it
     d, _ = load("euler-192-219")
     step = next(s for s in d.steps if s.note.startswith("§213: I : K"))
-    assert step_title(d, step) == "§213: I : $K = EF^{2}$ : $AB^{2}$"
+    assert step_title(d, step) == "§213: $I : K = EF^{2} : AB^{2}$"        # a ratio's colon inside the formula
 
 
 def test_no_markdown_cell_shows_a_line_as_code():

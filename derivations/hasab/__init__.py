@@ -9,7 +9,7 @@ the depth of its centroid: the work to lift it to the surface), both integrated 
 The energy is then expanded to second order, the stability condition and its density ranges follow, and
 the energy method is shown equal to the metacentric criterion and to Duhamel's criterion (18) of Scheeffer
 (section III there): the exact energy of the heeled prism is Scheeffer's V1 n of (13).  The remark's second
-position is the prism standing upright (the edges of length l vertical).
+position is the prism standing upright (the edges of length $l$ vertical).
 
 Witnesses: exact clipping of the floating prism (``symfloat.engine.floating_witness``): energies from the
 clipped immersed part and its two pieces at the lower end of the water line, the sides where the water plane

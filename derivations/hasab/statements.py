@@ -24,7 +24,7 @@ DERIVATION = d = Derivation(
     source="hasab",
     title="The long square prism by the energy method",
     locator="solution",
-    summary="Delta E = (rho^2 - rho + 1/6) alpha^2 / 4 (per l g): stable for rho < (3 - sqrt 3)/6 or "
+    summary="Delta E = (rho^2 - rho + 1/6) alpha^2 / 4 (per $l g$): stable for rho < (3 - sqrt 3)/6 or "
             "rho > (3 + sqrt 3)/6, the same condition as the metacentric one and Duhamel's (18).",
     requires=("scheeffer-i-iii",),
     domain={rho: (sp.Rational(1, 20), sp.Rational(19, 20)), al: (sp.Rational(1, 50), sp.Rational(3, 10)),
@@ -32,7 +32,7 @@ DERIVATION = d = Derivation(
     constraints=(sp.tan(al) < 2 * rho, sp.tan(al) < 2 - 2 * rho),
     assumptions=("water density 1, edge of the square 1, l >> 1 so that only heel about the long axis matters",
                  "the water line cuts the two vertical sides: tg alpha < 2 rho and tg alpha < 2 (1 - rho)",
-                 "energies per l g from E_2 on, as the text writes them (see the erratum of E_2)"),
+                 "energies per $l g$ from E_2 on, as the text writes them (see the erratum of E_2)"),
 )
 depth = (s0 + xi * t - et) * sp.cos(al)      # depth of the body point (xi, eta) below the water line
 sec = lambda f, lo, hi: sp.Integral(sp.Integral(f, (et, lo, hi)), (xi, -half, half))
@@ -122,26 +122,26 @@ d.quote("E2-water", "solution, heeled", DISPLAYS[10],
                          r"$\Delta E$), so the slip is a change of unit in the middle of an equation, not a wrong "
                          "value."),
                         corrected_reading=(E2v, l * g * t ** 2 / 6 * sp.cos(al)),
-                        objection=(r"From here on the text writes its energies per l g ($E_1$ total and $\Delta E$ "
+                        objection=(r"From here on the text writes its energies per $l g$ ($E_1$ total and $\Delta E$ "
                                    "carry no $l g$), so the last member is in the new unit, a convention and not a "
                                    "fault."),
-                        answer="The change of unit happens inside one equation: its first member carries l g and its"
-                               " last does not, so as printed the two members differ by the factor l g. The value in"
+                        answer="The change of unit happens inside one equation: its first member carries $l g$ and its"
+                               " last does not, so as printed the two members differ by the factor $l g$. The value in"
                                " the text's later unit is right, which is why the fault changes no result: medium."))
 
 # ---- second order -------------------------------------------------------------------------------
 d.step("c0", (c0, sp.Subs(E1 / (l * g), al, 0), (rho - rho ** 2) / 2), "substitution", result=c0)
 d.step("c2", (c2, sp.Subs(sp.Derivative(E1 / (l * g), al, 2), al, 0) / 2,
               sp.Rational(1, 4) * (rho ** 2 - rho + sp.Rational(1, 6))), "series", result=c2,
-       note="cos alpha = 1 - alpha^2/2, tg alpha = alpha + O(alpha^3): the coefficient of alpha^2 per l g; "
+       note="cos alpha = 1 - alpha^2/2, tg alpha = alpha + O(alpha^3): the coefficient of alpha^2 per $l g$; "
             "the energy is even in alpha")
 d.step("c1", (sp.Subs(sp.Derivative(E1, al), al, 0), 0), "series", note="no linear term: the upright position is "
                                                                      "an equilibrium")
 d.quote("E1-total", "solution, second order", DISPLAYS[11],
         reading=(c0 + c2 * al ** 2, half * (rho - rho ** 2) + sp.Rational(1, 4) * (rho ** 2 - rho + sp.Rational(1, 6)) * al ** 2),
-        note="per l g, to second order in alpha")
+        note="per $l g$, to second order in alpha")
 d.quote("Delta-E", "solution, second order", DISPLAYS[12],
-        reading=(c2 * al ** 2, sp.Rational(1, 4) * (rho ** 2 - rho + sp.Rational(1, 6)) * al ** 2), note="per l g")
+        reading=(c2 * al ** 2, sp.Rational(1, 4) * (rho ** 2 - rho + sp.Rational(1, 6)) * al ** 2), note="per $l g$")
 d.quote("tg-approx", "solution, second order", r"$\text{tg } \alpha \cong \alpha$",
         reading=(sp.Subs(sp.Derivative(sp.tan(al), al), al, 0) * al, al),
         note="tg alpha to first order in alpha (the next term is alpha^3/3)")

@@ -1,4 +1,4 @@
-"""Scheeffer 1902, section VI (opening), A and B: the regular polygon, the regular triangular prism and
+"""Scheeffer 1902, section VI (opening) and VI.A-B: the regular polygon, the regular triangular prism and
 the circular cylinder floating with vertical axis, in the first rotation region (no base cut).
 
 Geometry (derived here, not quoted): a right prism (base F, height b, density s) floats upright with the

@@ -1038,7 +1038,7 @@ d.quote("ex10-x-sum", "Example 10", r"x &= 1,5 + 0,55", reading=(x10, sp.Rationa
                                 r"angle above, and with $\operatorname{tg} \varphi_1 = \sqrt{11/32}$ the term is "
                                 "0,94; the line's own 0,55 shows which tangent was used. High.")))
 d.quote("ex10-x", "Example 10", r"x &= 2,05", reading=(x10, sp.Rational("2.05")), tolerance=PRINTED_DIGITS,
-        erratum=Erratum("consequential", "high", r"x = 2,44", cons + "; $x = 1.5 + 0.938 = 2.438$ m.",
+        erratum=Erratum("consequential", "high", r"x = 2,44", cons + r"; $x = 1.5 + 0.938 = 2.438\ \mathrm{m}$.",
                         corrected_reading=(x10, sp.Rational("2.44")),
                         objection="2,05 is the right sum of the line before, no fault of its own.",
                         answer="Consequential: it carries on the unrooted tangent of the angle above; with the root "

@@ -24,13 +24,13 @@ cot phi_3): f, f x_s^1, tau = int x'^2, int x' y.
 Claims judged: S_3 lies vertically above S when S_2 lies below it (mass balance); M_3 = V_1 dE/dphi, so an
 equilibrium where M_3 passes from - to + is stable about the axis (shown on the rectangular strip, measured on
 clipped boxes by difference quotients of the potential); for s < 1/2 dry and wet parts exchange (V_1 E is the
-same for the turned body of density 1 - s); x_0 < 0 when N lies between O and E; 'No. 95a, 103a, b und 117
-enthalten die vollständigen Bedingungen' (the two horizontal offsets of S_2 are -sin phi (103b), -tan phi
-(95a)); 's > 1/2, sodass also die obere Grundfläche zum Teil eintaucht' holds only for bases reaching equally
-far on both sides of the axis (claim erratum, as in IV).  Errata: the stray '1/2' before 'Volumen' in (100)
-(scan), the sign of 2 k tg 2mu in (109) (print), the lost df of the split of (95a) (scan), 'nach 102 a' for
-(103a) (print), 'den Punkt N' for N_1 and 'x_3^1' for x_s^1 in VIII (scan), the labels 'G B H' (a base of the
-dry part) and 'G H D = F' ((118)'s domain) for F = AGHCD in VIII (print).
+same for the turned body of density 1 - s); x_0 < 0 when N lies between O and E;
+'No. 95a, 103a, b und 117 enthalten die vollständigen Bedingungen' (the two horizontal offsets of S_2 are -sin phi
+(103b), -tan phi (95a)); 's > 1/2, sodass also die obere Grundfläche zum Teil eintaucht' holds only for bases
+reaching equally far on both sides of the axis (claim erratum, as in IV).  Errata: the stray '1/2' before
+'Volumen' in (100) (scan), the sign of 2 k tg 2mu in (109) (print), the lost df of the split of (95a) (scan),
+'nach 102 a' for (103a) (print), 'den Punkt N' for N_1 and 'x_3^1' for x_s^1 in VIII (scan), the labels 'G B H' (a
+base of the dry part) and 'G H D = F' ((118)'s domain) for F = AGHCD in VIII (print).
 The references '102 a', '102 b' in (116), (117) mean (103a), (103b); '102 b' is not booked, since (102) with
 (100) gives (116) as well.
 

@@ -56,7 +56,7 @@ Bp = sp.Matrix([a / 2, a / 2])
 e_ = sp.Matrix([co, -si])                      # along GH, from H towards G
 n_ = sp.Matrix([si, co])                       # across GH, towards B
 d.step("NH", (u_, -Hp.dot(e_), (rho - a / 2) * co + a / 2 * si), "geometry", result=u_,
-       note="N = H + u e is the foot of the perpendicular from O (e.N = 0)")
+       note="N = H + u e is the foot of the perpendicular from O (e·N = 0)")
 d.step("NG", (v_, as_printed(lambda: Gp.dot(e_)), a / 2 * co - (a / 2 - rho * tg) * si), "geometry", result=v_)
 d.step("height", (h_, as_printed(lambda: n_.dot(Bp - Hp)), rho * si), "geometry", result=h_, note="h = BP, the distance of B from GH")
 d.step("HPB", (IH, sp.Integral(x * y, (y, -u_ + x * ctg, -u_ + h_ * ctg), (x, 0, h_)),
