@@ -107,7 +107,7 @@ _TOKEN = re.compile(r"""
                                                                           # T_1^1, y^{p+1}, z_+
   | (?P<indexed>(?<!\w-)(?<!\w)(?:[A-Za-z]\d|(?=[A-Z\d]*\d)[A-Z]\d?(?:[A-Z]\d?)+)\b(?!-\w)'?)
                                                        # V1, x0': V_1, x_0'; AA1, A1B1 (not a step's name, e2-e3)
-  | (?P<word>[A-Za-z][A-Za-z]*'?(?:s\b)?)
+  | (?P<word>[A-Za-z](?:'{2,3}(?![\w'])|[A-Za-z]*'?(?:s\b)?))                             # y'', v''' too
   | (?P<index>[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))                                   # ∫_0^b, s^*, )^κ, )^{3κ-1}
   | (?P<range>(?<![\w.])\d+\.\.\d+(?![\w.]))                                        # n = 3..12
   | (?P<number>\d+(?:\.\d+)?)

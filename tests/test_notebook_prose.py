@@ -120,6 +120,8 @@ def _texts(derivation: str):
     ("Scheeffer 1902, X: rows I and V of (162); II. Body frame; case (b), i.e. Euler’s case",
      "Scheeffer 1902, X: rows I and V of (162); II. Body frame; case (b), i.e. Euler’s case"),
     ("x = (a + b) c, the x axis", "$x = (a + b) c$, the $x$ axis"),
+    # two and three primes (Graefe §4's radii and slabs: y'' stayed a word beside $y'$)
+    ("y, y', y'' are the radii; the v''' printed next", "$y$, $y'$, $y''$ are the radii; the $v'''$ printed next"),
     # a quotation holding a formula with a prime (Scheeffer IX.B's answer): its quote marks were read around '$F'
     # and the dollars after it paired wrongly, a sentence set as one formula
     ("its reason, '$F'(z)$ zunimmt', holds for $z < 0$, and", "its reason, '$F'(z)$ zunimmt', holds for $z < 0$, and"),
