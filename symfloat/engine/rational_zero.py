@@ -24,10 +24,14 @@ __all__ = ["is_zero_rational_function"]
 
 
 class _NotRational(Exception):
-    """The expression holds a float, an infinity, or a denominator that is the zero polynomial."""
+    """The expression holds a float, an infinity, a power above :data:`_LARGEST_POWER`, or a denominator that is the
+    zero polynomial."""
 
 
 _NOT_NUMBERS = frozenset({sp.oo, -sp.oo, sp.zoo, sp.nan})
+# a larger integer power is left to SymPy: FLINT's expansion of it cannot be stopped by a search's time limit
+# (the claims' largest is far below; a replay has no time limit either way)
+_LARGEST_POWER = 64
 
 
 def _atom(x):
@@ -49,6 +53,8 @@ def _roots(e, found: dict) -> None:
         for a in e.args:
             _roots(a, found)
     elif e.is_Pow and e.exp.is_Integer:
+        if abs(e.exp) > _LARGEST_POWER:
+            raise _NotRational
         _roots(e.base, found)
     else:
         base, _, q = _atom(e)
