@@ -110,7 +110,8 @@ def _texts(derivation: str):
     ("pages 3 - 5, the points (0, 0) and (G below, G above B)",
      "pages 3 - 5, the points (0, 0) and ($G$ below, $G$ above $B$)"),
     ("quoted in §3 ('zusammen fanden h/3{2D - (G+g)/2}'), so", "quoted in §3 ('zusammen fanden h/3{2D - (G+g)/2}'), so"),
-    ("the rectangle's moments over the rhombus' (same a, b)", "the rectangle's moments over the rhombus' (same $a$, $b$)"),
+    ("the rectangle's moments over the rhombus' (same a, b)",
+     "the rectangle's moments over the rhombus' (same $a$, $b$)"),
     # the article is a word (a box, A opening a sentence, a before a formula), and so are a chapter's numeral, a
     # label, an abbreviation and the s of a possessive
     ("A box with edges a, b, c (density s) floats. A lies on B, the slab from a to c",

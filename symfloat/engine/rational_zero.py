@@ -8,10 +8,12 @@ a product multiplies, an integer power powers.  A power ``b**(p/q)`` is the gene
 ``pL/q``, L the least common multiple of the roots taken of ``b`` in ``e`` (``b`` itself is ``(b**(1/L))**L``), as
 SymPy's polynomials read it.
 
-"Yes" is a proof that ``e`` is 0 wherever it is defined: a polynomial identity in independent generators holds
-for any values of them.  "No" proves nothing: the generators are not independent (``sqrt(x)**2`` is ``x``, and
-``sin(t)**2 + cos(t)**2`` is 1), a float or an infinity has no exact place here, and a denominator that is the zero polynomial
-is a question for SymPy; the caller then asks SymPy's ``cancel``.
+"Yes" is a proof that ``e`` is 0 wherever it is defined: a polynomial identity in independent generators holds for
+any values of them, and ``(b**(1/L))**L = b`` holds for every ``b``, so a root of a number, a sum or a product is
+reduced by its radicand.  "No" proves nothing: the generators may be related in other ways (``sin(t)**2 +
+cos(t)**2`` is 1, ``sqrt(x*y)`` is ``sqrt(x)*sqrt(y)`` for positive x and y), a float or an infinity has no exact
+place here, a power above the 64th is not expanded, and a denominator that is the zero polynomial is a question for
+SymPy; the caller then asks SymPy's ``cancel``.
 """
 from __future__ import annotations
 
