@@ -27,10 +27,15 @@ or a letter of an abbreviation:
 
 A Greek name or ``lim`` in an index is its sign, a star after a name is a superscript, degrees are
 degrees, and a bracket a run does not close ends the formula before it (the formula after it is set too);
-an equation number in brackets is the source's, not a factor:
+an equation number in brackets is the source's, not a factor; a letter against a bracket is a function's value:
 
 >>> typeset("stable iff (a/b)^2 > 6s(1 - s) (123), F(1) (141, 142)")
-'stable iff $(a/b)^{2} > 6s(1 - s)$ (123), F(1) (141, 142)'
+'stable iff $(a/b)^{2} > 6s(1 - s)$ (123), $F(1)$ (141, 142)'
+
+A relation sign written in ASCII is never a word, nor is a sign named alone; an interval is a formula:
+
+>>> typeset("of degree <= 3, c != 0; it counts with '>=' (not >), xi in [-1/2, 1/2]")
+"of degree $\\\\le 3$, $c \\\\ne 0$; it counts with '$\\\\ge$' (not $>$), $\\\\xi$ in $[-1/2, 1/2]$"
 
 A segment named by its points is a name inside a formula (``GZ``, ``BH``; ``Cc`` from a point to its
 companion), but alone it stays text, as does a chapter's numeral:
@@ -78,8 +83,8 @@ FUNCTIONS = ("sin", "cos", "tan", "cot", "tg", "cotg", "sqrt", "arctan", "atan",
 _TEX = {"phi": r"\varphi", "varphi": r"\varphi", "epsilon": r"\varepsilon", "atan": r"\arctan",
         "tg": r"\operatorname{tg}", "cotg": r"\operatorname{cotg}",
         "sqrt": r"\sqrt", "int": r"\int", "√": r"\sqrt", "∫": r"\int", "·": r"\cdot", "−": "-",
-        "<=": r"\le", ">=": r"\ge", ">>": r"\gg", "<<": r"\ll", "≤": r"\le", "≥": r"\ge", "±": r"\pm",
-        "+-": r"\pm", "oo": r"\infty",
+        "<=": r"\le", ">=": r"\ge", "!=": r"\ne", ">>": r"\gg", "<<": r"\ll", "≤": r"\le", "≥": r"\ge",
+        "≠": r"\ne", "±": r"\pm", "+-": r"\pm", "oo": r"\infty",
         "*": r"\cdot", "π": r"\pi", "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu",
         "≈": r"\approx", "→": r"\to", "->": r"\to", "<->": r"\leftrightarrow", "↔": r"\leftrightarrow",
         "≫": r"\gg", "≪": r"\ll", "∞": r"\infty", "...": r"\ldots", "…": r"\ldots", "{": r"\{", "}": r"\}",
@@ -111,7 +116,7 @@ _TOKEN = re.compile(r"""
   | (?P<index>[_^](?:\{[^{}$]+\}|[A-Za-z0-9*κν]+))                                   # ∫_0^b, s^*, )^κ, )^{3κ-1}
   | (?P<range>(?<![\w.])\d+\.\.\d+(?![\w.]))                                        # n = 3..12
   | (?P<number>\d+(?:\.\d+)?)
-  | (?P<relation><->|<=|>=|>>|<<|[=<>≤≥≈↔≫≪]|->|→)
+  | (?P<relation><->|<=|>=|!=|>>|<<|[=<>≤≥≠≈↔≫≪]|->|→)
   | (?P<ratio>(?<=[ ]):(?=[ ]))                                                    # I : K = EF^2 : AB^2
   | (?P<power>[²³⁴¹⁰⁵⁶⁷⁸⁹ⁿ]+)                                                       # y²ⁿ
   | (?P<operator>\+-|\.\.\.|…|[-+*/(){}±·−√∫∞πθφωμαβγδεκλνξρστψΓΔ])                  # a + ... + g, {a + b}
@@ -213,8 +218,19 @@ def _tex(token: str) -> str:
     return token
 
 
+# Relation signs written in ASCII, never words: one before a number or a name opens a formula (degree <= 3)
+_ASCII_SIGNS = ("<=", ">=", "!=")
+_COMPARISONS = ("<", ">", "≤", "≥", "≠") + _ASCII_SIGNS     # a sign named alone (counts it with '>=') is set too
+
+
+def _leading_sign(run: list) -> bool:
+    """Does *run* open with an ASCII relation sign that a number or a name follows (``<= 3``, ``!= 0``)?"""
+    return bool(run) and run[0][0] in _ASCII_SIGNS and any(k not in ("space", "relation") for _, k in run[1:])
+
+
 def _trim(run: list) -> list:
-    """Drop spaces and unmatched brackets at the ends of a run, and a relation sign left at an end."""
+    """Drop spaces and unmatched brackets at the ends of a run, and a relation sign left at an end (but an ASCII
+    sign that opens the run before a number or a name, ``<= 3``)."""
     changed = True
     while run and changed:
         changed = False
@@ -222,7 +238,8 @@ def _trim(run: list) -> list:
         if run[-1][1] in ("space", "relation") or run[-1][0] == "(" or (run[-1][0] == ")" and opened < 0):
             run.pop()
             changed = True
-        elif run[0][1] in ("space", "relation") or run[0][0] == ")" or (run[0][0] == "(" and opened > 0):
+        elif (run[0][1] in ("space", "relation") and not _leading_sign(run) or run[0][0] == ")"
+              or (run[0][0] == "(" and opened > 0)):
             run.pop(0)
             changed = True
     return run
@@ -277,6 +294,24 @@ def _attached(tokens: list) -> list:
             if any(n[2] in ("operator", "power", "index", "number") and n[0] not in "()" for n in near) \
                     or len(t) == 2 and _after_sum(tokens[:i]):
                 out[i] = (t, "weak", g)
+    return out
+
+
+def _applied(tokens: list) -> list:
+    """A letter written against a bracket of mathematics is a function at its argument (``A(z)``, ``Y(y)``,
+    ``F(1)``, ``A(z + h)``): a name, not a word, as its bracket holds no word."""
+    out = list(tokens)
+    for i, (t, k, g) in enumerate(tokens):
+        if g != "word" or len(t.rstrip("'")) != 1 or i + 1 == len(tokens) or tokens[i + 1][0] != "(" \
+                or i and re.fullmatch(r"[\w']", tokens[i - 1][0][-1]):
+            continue
+        depth = 0
+        for u, kind, _ in tokens[i + 1:]:
+            depth += {"(": 1, ")": -1}.get(u, 0)
+            if depth == 0 or kind == "text" and u != ",":
+                break
+        if depth == 0 and u == ")" and any(kind not in ("space", "text") for _, kind, _ in tokens[i + 2:i + 3]):
+            out[i] = (t, "strong", g)
     return out
 
 
@@ -386,13 +421,18 @@ def _typeset_plain(text: str, quoted: bool = False, followed: bool = False) -> s
     text = re.sub(r"(?<=[\w)])\*\*(?=[\w(])", "^", text)                 # a**2: a power
     text = re.sub(r"\bsqrt\{([^{}$]*)\}", r"sqrt(\1)", text)              # sqrt{2}: a root
     tokens = [(m.group(0), _kind(m.group(0), m.lastgroup, quoted), m.lastgroup) for m in _TOKEN.finditer(text)]
-    tokens = [(t, k) for t, k, _ in (_attached(tokens) if quoted else _names(_attached(tokens), followed))]
+    tokens = _applied(_attached(tokens))
+    tokens = [(t, k) for t, k, _ in (tokens if quoted else _names(tokens, followed))]
     out, run = [], []
 
     def flush():
         nonlocal run
+        if [t for t, k in run if k != "space" and t not in "()"] in ([sign] for sign in _COMPARISONS):   # '>='
+            out.append("".join(f"${_tex(t)}$" if k == "relation" else t for t, k in run))
+            run = []
+            return
         lead = []
-        while run and (run[0][1] in ("space", "relation") or run[0][0] == ")"):
+        while run and (run[0][1] in ("space", "relation") or run[0][0] == ")") and not _leading_sign(run):
             lead.append(run.pop(0)[0])
         tail = []
         while run and (run[-1][1] in ("space", "relation") or run[-1][0] in ("(", ",")):
@@ -410,7 +450,8 @@ def _typeset_plain(text: str, quoted: bool = False, followed: bool = False) -> s
             flush()
             return
         if core and (any(k == "strong" for _, k in core) or not quoted and _arithmetic(core)
-                     or any(k == "relation" for _, k in core) and len([k for _, k in core if k == "weak"]) >= 2):
+                     or any(k == "relation" for _, k in core) and len([k for _, k in core if k == "weak"]) >= 2
+                     or any(t in _ASCII_SIGNS for t, _ in core)):
             start = run.index(core[0])
             end = start + len(core)
             before = "".join(t for t, _ in run[:start])
@@ -475,11 +516,40 @@ def _code_formula(code: str) -> str | None:
     return f"${_joined(tokens)}$" if mathematics and any(k != "space" for k in kinds) else None
 
 
+_MEMBER = r"(?:\$[^$\n]*\$|[^\[\]$,\n]){1,40}?"
+_INTERVAL = re.compile(rf"\[({_MEMBER}), ({_MEMBER})\](?!\()")         # [-1/2, 1/2], [$s_{-}$, $s_{+}$]
+_PRODUCT = re.compile(r"\$(\[[^$]*\])\$ x \$(\[[^$]*\])\$")                 # [-a, a] x [-b, b]: a product
+
+
+def _intervals(text: str) -> str:
+    """An interval written in brackets, both ends mathematics (numbers, names, formulas), as one formula; the
+    letter x between two intervals is their product:
+
+    >>> _intervals("xi in [-1/2, 1/2], outside [$s_{-}$, $s_{+}$], [x_1, x_2] x [y_1, y_2]; [see, §4], `[0, 1]`")
+    'xi in $[-1/2, 1/2]$, outside $[s_{-}, s_{+}]$, $[x_{1}, x_{2}] \\\\times [y_{1}, y_{2}]$; [see, §4], `[0, 1]`'
+    """
+    def member(piece: str) -> str | None:
+        if re.fullmatch(r"\$[^$]*\$", piece):
+            return piece[1:-1]
+        formula = _code_formula(piece)
+        return formula[1:-1] if formula else None
+
+    code = [c.span() for c in re.finditer(r"``[^`]+``|`[^`]+`", text)]
+
+    def one(m: re.Match) -> str:
+        if text[:m.start()].count("$") % 2 or any(a < m.end() and m.start() < b for a, b in code):
+            return m.group(0)                           # inside a formula or a code span already
+        ends = [member(piece) for piece in m.groups()]
+        return m.group(0) if None in ends else f"$[{ends[0]}, {ends[1]}]$"
+    done = _INTERVAL.sub(one, text)
+    return _PRODUCT.sub(lambda m: f"${m.group(1)} \\times {m.group(2)}$", done)
+
+
 def typeset(text: str) -> str:
     """*text* with its ASCII mathematics typeset as ``$…$``; existing ``$…$`` spans and code spans are left alone,
     except a code span holding mathematics (````tan phi_1````), which becomes a formula; in a quotation (``'…'``,
-    the source's words) only what is certainly mathematics is set."""
-    parts = _KEPT.split(text)
+    the source's words) only what is certainly mathematics is set; an interval in brackets is a formula."""
+    parts = _KEPT.split(_intervals(text))
     out = []
     for i, part in enumerate(parts):
         if part.startswith("$") or _SECTION.fullmatch(part):      # mathematics, a section (VI.C-F): as they are

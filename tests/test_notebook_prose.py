@@ -126,6 +126,19 @@ def _texts(derivation: str):
     # a quotation holding a formula with a prime (Scheeffer IX.B's answer): its quote marks were read around '$F'
     # and the dollars after it paired wrongly, a sentence set as one formula
     ("its reason, '$F'(z)$ zunimmt', holds for $z < 0$, and", "its reason, '$F'(z)$ zunimmt', holds for $z < 0$, and"),
+    # a relation sign in ASCII, alone or before a number, and a function's value (Graefe §2 and §3, Scheeffer VI.A-B
+    # and VII-VIII): "degree <= 3", "the sections A(0), A(h)", "counts it with '>='" were words
+    ("a polynomial of degree <= 3 in z; both terms >= 0", r"a polynomial of degree $\le 3$ in $z$; both terms $\ge 0$"),
+    ("unsymmetric, k != 0; the sections A(0), A(h/2) of A(z)",
+     r"unsymmetric, $k \ne 0$; the sections $A(0)$, $A(h/2)$ of $A(z)$"),
+    ("(65) counts it with '>=' (the example >)", r"(65) counts it with '$\ge$' (the example $>$)"),
+    # an interval in brackets (Hasáb's body coordinates, Scheeffer IX's (79), Euler's rectangle): the brackets and
+    # the numbers were words; a link, a citation and a code span stay as they are
+    ("xi in [-1/2, 1/2], eta in [0, 1]", r"$\xi$ in $[-1/2, 1/2]$, $\eta$ in $[0, 1]$"),
+    ("positive outside [s_1, s_2] (79)", r"positive outside $[s_{1}, s_{2}]$ (79)"),
+    ("a rectangle [x_1, x_2] x [y_1, y_2] placed", r"a rectangle $[x_{1}, x_{2}] \times [y_{1}, y_{2}]$ placed"),
+    ("the [notes](notes.html), [see, §4] and ``[-b s, b (1 - s)]``",
+     r"the [notes](notes.html), [see, §4] and $[-b s, b (1 - s)]$"),
 ])
 def test_formulas_and_words_are_told_apart(text, shown):
     assert typeset(text) == shown
@@ -246,7 +259,10 @@ def test_the_about_text_shows_no_code():
 
 _ASCII_MATHS = re.compile(r"\^|∫∫|\b[A-Za-z]_[A-Za-z0-9{]|(?<![-\w])[A-Za-z]\d\b(?!-\w)"     # V1: V_1
                           r"|(?<![\w$'])(?:[A-Z][a-z]|[a-z][A-Za-z]) [=<>] [A-Za-z0-9(]"     # Oc = c, ab = y
-                          r"|(?<!\.)\.\.\d")                                                 # $n = 3$..12
+                          r"|(?<!\.)\.\.\d"                                                  # $n = 3$..12
+                          r"|<=|>=|!="                                                       # degree <= 3
+                          r"|(?<![\w'])[A-Za-z]\([a-z0-9]\)"                                  # A(z), Y(y)
+                          r"|\[-?\d+(?:/\d+)?, -?\d+(?:/\d+)?\]")                              # [-1/2, 1/2]
 
 
 def _words_of(line: str) -> str:
@@ -279,6 +295,10 @@ def test_no_words_of_a_notebook_write_mathematics_in_ascii():
     # Scheeffer VI.C-F's ranges of n were cut after their first number ("checked for $n = 3$..12")
     assert _ASCII_MATHS.search(_words_of("checked for $n = 3$..12"))
     assert not _ASCII_MATHS.search(_words_of(r"checked for $n = 3, \ldots, 12$ and so on..."))
+    # Graefe §2 wrote "degree <= 3", Graefe §3 "the section area A(z)", Hasáb "xi in [-1/2, 1/2]" in words
+    for words in ("of degree <= 3 in $z$", "the section area A(z) is", r"$\xi$ in [-1/2, 1/2] (across)"):
+        assert _ASCII_MATHS.search(_words_of(words)), words
+    assert not _ASCII_MATHS.search(_words_of(r"of degree $\le 3$, the area $A(z)$, $\xi$ in $[-1/2, 1/2]$ (b)"))
 
 
 _LISTED_APART = re.compile(r"(?<![\w$'])(?:[A-Za-z], ){2,}\$[A-Za-z] (?:[<>=]|\\(?:le|ge)\b)")

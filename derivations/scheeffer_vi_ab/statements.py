@@ -341,8 +341,8 @@ d.step("dipping-vertex-farthest", (as_printed(lambda: (Bv[0] - Cv[0]) * nvec[0] 
        "geometry", note="B is at least as far as C on the dipping side for 0 <= omega <= 60 degrees (A lies on "
                         "the other side)")
 d.step("rising-distance", Eq(umr, -(Av[0] * nvec[0] + Av[1] * nvec[1])), "definition",
-       note="the vertex A is the farthest point on the rising side n' = -n (C: (a/sqrt 3) sin(omega - 30 deg) "
-            "<= A's distance for omega <= 60 deg)", result=umr)
+       note="the vertex A is the farthest point on the rising side n' = -n (C, at the distance "
+            "(a/sqrt 3) sin(omega - 30 deg), is no farther than A for omega <= 60 deg)", result=umr)
 d.step("rising-distance-value", (umr, a / sq3 * sp.cos(om)), "geometry", uses=("rising-distance",))
 d.quote("59", "(59)", r"$$u_m = \frac{a}{3} \sqrt{3} \cdot \sin(30^\circ + \omega) \quad (59)$$",
         reading=Eq(um, a / 3 * sq3 * sp.sin(30 * deg + om)))

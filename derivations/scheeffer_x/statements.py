@@ -305,7 +305,7 @@ d.quote("x-range", "X (171)", r"und  $x$  zwischen 0 und 1 liegen muss.",
         reading=as_printed(lambda: (sp.Matrix([_three(_top_dry(xx)) for xx in X_IN]), sp.Matrix([0, 1, 1, 0]))),
         note="read as: the top face has exactly three dry corners (the water line cuts off the corner triangle at B "
              "alone, the pentagon of (171)) for 0 < x < 1 and not beyond: at x = -1/10, 1/10, 9/10, 11/10 it has 4, "
-             "3, 3, 1 dry corners (xi < 0, the signed distance from GH of over_F)")
+             "3, 3, 1 dry corners (a corner is dry where xi < 0, xi its signed distance from GH towards B)")
 
 f_at = lambda xx, ss: F171(sp.Rational(1, 6) + (1 - xx) ** 2 - xx ** 4 / 12, 1 - xx + xx ** 3 / 6, xx, ss)  # noqa
 d.step("end-0", (F0, f_at(sp.Integer(0), s), *as_printed(lambda: ((7 * (1 - s) ** 2 - 6 * (1 - s) + 1) / 6,
