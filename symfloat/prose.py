@@ -85,7 +85,7 @@ _TEX = {"phi": r"\varphi", "varphi": r"\varphi", "epsilon": r"\varepsilon", "ata
         "sqrt": r"\sqrt", "int": r"\int", "√": r"\sqrt", "∫": r"\int", "·": r"\cdot", "−": "-",
         "<=": r"\le", ">=": r"\ge", "!=": r"\ne", ">>": r"\gg", "<<": r"\ll", "≤": r"\le", "≥": r"\ge",
         "≠": r"\ne", "±": r"\pm", "+-": r"\pm", "oo": r"\infty",
-        "*": r"\cdot", "π": r"\pi", "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu",
+        "*": r"\cdot", "×": r"\times", "π": r"\pi", "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu",
         "≈": r"\approx", "→": r"\to", "->": r"\to", "<->": r"\leftrightarrow", "↔": r"\leftrightarrow",
         "≫": r"\gg", "≪": r"\ll", "∞": r"\infty", "...": r"\ldots", "…": r"\ldots", "{": r"\{", "}": r"\}",
         # Greek letters written as themselves (Euler's κ, μ, ν in the notes of §§229-243)
@@ -119,7 +119,7 @@ _TOKEN = re.compile(r"""
   | (?P<relation><->|<=|>=|!=|>>|<<|[=<>≤≥≠≈↔≫≪]|->|→)
   | (?P<ratio>(?<=[ ]):(?=[ ]))                                                    # I : K = EF^2 : AB^2
   | (?P<power>[²³⁴¹⁰⁵⁶⁷⁸⁹ⁿ]+)                                                       # y²ⁿ
-  | (?P<operator>\+-|\.\.\.|…|[-+*/(){}±·−√∫∞πθφωμαβγδεκλνξρστψΓΔ])                  # a + ... + g, {a + b}
+  | (?P<operator>\+-|\.\.\.|…|[-+*/(){}±·×−√∫∞πθφωμαβγδεκλνξρστψΓΔ])                 # a + ... + g, {a + b}
   | (?P<other>.)
 """, re.X | re.S)
 
@@ -321,15 +321,16 @@ def _after_sum(tokens: list) -> bool:
     return len(last) == 2 and last[0][0] == "+" and last[1][1] != "text"
 
 
-_ARITHMETIC = ("+", "-", "*", "/", "·", "−")
+_ARITHMETIC = ("+", "-", "*", "/", "·", "×", "−")
 
 
 def _arithmetic(run: list) -> bool:
-    """A sum, difference, product or quotient with a letter among its terms (``n + 1/n``, ``x/b``, ``S - 2``,
-    ``b(1-s)``); a hyphen between words (the slab ``a-c``, sections ``I-III``, ``e2-e3``) is no minus: a minus is
-    spaced or inside the formula's bracket."""
+    """A sum, difference, product or quotient with a letter or a differential among its terms (``n + 1/n``,
+    ``x/b``, ``S - 2``, ``b(1-s)``, ``dE/dt``); a hyphen between words (the slab ``a-c``, sections ``I-III``,
+    ``e2-e3``) is no minus: a minus is spaced or inside the formula's bracket."""
     letters = [t.rstrip("'") for t, _ in run if re.fullmatch("[A-Za-z]+'*", t)]      # F' is a letter
-    if not any(len(t) == 1 for t in letters) or all(t in _ROMAN for t in letters) and any(len(t) > 1 for t in letters):
+    named = any(len(t) == 1 or re.fullmatch(r"d[A-Za-z]", t) and t not in _TWO_LETTER_WORDS for t in letters)
+    if not named or all(t in _ROMAN for t in letters) and any(len(t) > 1 for t in letters):
         return False
     depth = 0
     for i, (t, k) in enumerate(run):
@@ -432,10 +433,10 @@ def _typeset_plain(text: str, quoted: bool = False, followed: bool = False) -> s
             run = []
             return
         lead = []
-        while run and (run[0][1] in ("space", "relation") or run[0][0] == ")") and not _leading_sign(run):
+        while run and (run[0][1] in ("space", "relation") or run[0][0] in (")", "×")) and not _leading_sign(run):
             lead.append(run.pop(0)[0])
         tail = []
-        while run and (run[-1][1] in ("space", "relation") or run[-1][0] in ("(", ",")):
+        while run and (run[-1][1] in ("space", "relation") or run[-1][0] in ("(", ",", "×")):    # (a) × (words)
             tail.insert(0, run.pop()[0])
         core = _trim(list(run))
         cut = _unmatched(core)

@@ -139,6 +139,12 @@ def _texts(derivation: str):
     ("a rectangle [x_1, x_2] x [y_1, y_2] placed", r"a rectangle $[x_{1}, x_{2}] \times [y_{1}, y_{2}]$ placed"),
     ("the [notes](notes.html), [see, §4] and ``[-b s, b (1 - s)]``",
      r"the [notes](notes.html), [see, §4] and $[-b s, b (1 - s)]$"),
+    # a product of dimensions written with ×, and a quotient of differentials (Metazentrum's box, Scheeffer IX's
+    # base, Scheeffer X's dE/dt and IV-V's dT/dmu were words; "2a x 2b x 2c" read x as the variable)
+    ("a homogeneous box 2a × 2b × 2c; the base a × c about",
+     r"a homogeneous box $2a \times 2b \times 2c$; the base $a \times c$ about"),
+    ("L - R = (positive factor) × dE/dt, dividing dT/dmu, do/die",
+     r"$L - R$ = (positive factor) × $dE/dt$, dividing $dT/d\mu$, do/die"),
 ])
 def test_formulas_and_words_are_told_apart(text, shown):
     assert typeset(text) == shown

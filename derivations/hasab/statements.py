@@ -206,7 +206,7 @@ d.quote("energy-principle", "solution", "Stabil egyensúlyi helyzetben a rendsze
 # ---- the statement: a long prism need not be checked about the axis across it -------------------------------
 Tp, GMp = sp.symbols("T_p GM_p", real=True)
 d.step("T-pitch", (Tp, sp.Integral(xi ** 2, (xi, -l / 2, l / 2)), l ** 3 / 12), "integration", result=Tp,
-       note="the waterplane l x 1 about its axis across the prism (parallel to the square end faces)")
+       note="the waterplane l × 1 about its axis across the prism (parallel to the square end faces)")
 d.step("GM-pitch", (GMp, Tp / V1 - e1), "definition", result=GMp, uses=("T-pitch", "V1", "e1"),
        note="metacentric height for pitching: l^2/(12 rho) - (1 - rho)/2")
 d.quote("long-prism", "problem", r"Mivel a hasáb hosszú, azaz mivel $l \gg 1$, felesleges foglalkozni az alaplappal "
@@ -219,7 +219,7 @@ d.quote("long-prism", "problem", r"Mivel a hasáb hosszú, azaz mivel $l \gg 1$,
 # ---- remark: the upright prism --------------------------------------------------------------------
 GMu = (sp.Rational(1, 12)) / (rho * l) - (l / 2 - rho * l / 2)
 d.step("upright-GM", (GMu, (6 * l ** 2 * rho ** 2 - 6 * l ** 2 * rho + 1) / (12 * rho * l)), "algebra",
-       note="standing on its square face (edges l vertical): waterplane 1 x 1, I = 1/12, V = rho l, "
+       note="standing on its square face (edges l vertical): waterplane 1 × 1, I = 1/12, V = rho l, "
             "G at l/2, B at rho l/2")
 ru2 = (3 * l + sp.sqrt(9 * l ** 2 - 6)) / (6 * l)
 ru1 = (3 * l - sp.sqrt(9 * l ** 2 - 6)) / (6 * l)

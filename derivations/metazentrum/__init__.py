@@ -1,6 +1,6 @@
 """Web lesson "Auftrieb Stabilität": the metacentre of a rectangular hull.
 
-The hull is a homogeneous box 2a x 2b x 2c (length, breadth, height) floating
+The hull is a homogeneous box 2a × 2b × 2c (length, breadth, height) floating
 upright with draught d; heel about the long axis (a > b).  Coordinates: z up
 from the water surface, y across.  Volumes, centroids and the waterplane's
 moment of inertia are integrated; the shift of the centre of buoyancy on heel

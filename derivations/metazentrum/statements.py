@@ -22,7 +22,7 @@ DERIVATION = dv = Derivation(
             phi: (sp.Rational(1, 20), 1), rho_w: (sp.Rational(1, 2), 2), g: (1, 10), m_g: (1, 100),
             V_w: (1, 100), M_w: (1, 100)},
     constraints=(d < 2 * c, b < a),
-    assumptions=("homogeneous box 2a x 2b x 2c, centre of mass at its centre, floating upright with draught "
+    assumptions=("homogeneous box 2a × 2b × 2c, centre of mass at its centre, floating upright with draught "
                  "0 < d < 2c", "heel about the long axis (b < a), angle phi, 0 < phi < pi/2; the wedges stay within "
                  "the side faces (b tg phi < d and < 2c - d) for the exact wedge formulas",
                  "z up from the water surface"),
@@ -68,7 +68,7 @@ dv.step("criterion", (sp.sign(z_M - z_G), sp.sign(I_w / V_b - (z_G - z_B)), sp.s
 dv.step("body-centroid-across", (y_G, sp.Integral(y, (y, -b, b), (z, -d, 2 * c - d))
                                   / sp.Integral(1, (y, -b, b), (z, -d, 2 * c - d)), 0), "integration", result=y_G,
         note="the tilted body's own centroid across the ship, in the body frame: the centre of its whole section "
-             "2b x 2c, on the centre line whatever the heel")
+             "2b × 2c, on the centre line whatever the heel")
 # the quantities the lesson names in words (symfloat/model/vocabulary.json), by the formulas that define them here:
 # a centroid by its shift across the ship on a heel phi, the stability by the lesson's function e
 dv.defines("centre of gravity", y_G)

@@ -1,7 +1,7 @@
 """Scheeffer 1902, IX: the rectangular parallelepiped turned about an axis parallel to an edge.
 
 A box with edges a, b, c (density s) floats upright with b vertical; it is turned about a horizontal
-axis parallel to c (c > a).  Everything happens in the cross-section a x b, so the problem is plane.
+axis parallel to c (c > a).  Everything happens in the cross-section a × b, so the problem is plane.
 
 First region (A): the water plane cuts the two long side faces only, the first rotation domain of
 sections IV-V.  Upright stability is Duhamel's (a/b)^2 > 6s(1-s) (123); the oblique equilibrium is

@@ -41,7 +41,7 @@ DERIVATION = d = Derivation(
                  "upright position; from the second region on a > b (n = (a/b)^2 >= 1)",
                  "0 < s < 1 the density relative to the water, the body homogeneous; the second region is "
                  "written for s > 1/2 (dry triangle), s < 1/2 follows with 1 - s for s",
-                 "sign identities: a printed condition L > R is read as L - R = (positive factor) x (the "
+                 "sign identities: a printed condition L > R is read as L - R = (positive factor) × (the "
                  "quantity whose sign decides: a metacentric height, a value of F, or tan^2 of the limiting "
                  "tilt minus tan^2 of the equilibrium tilt)",
                  "t is sampled as a free symbol in (-1/3, 1) (s in (23/32, 1)), sigma = 9(1 + 3t)/128 where it "
@@ -57,7 +57,7 @@ def PWM(hi, lo):
 
 # ==== A. the first region ============================================================================
 d.step("T1", (T1, sp.Integral(x_ ** 2, (x_, -a / 2, a / 2), (zz, -c / 2, c / 2)), c * a ** 3 / 12), "integration",
-       result=T1, note="moment of the base a x c about the axis through its centroid parallel to c")
+       result=T1, note="moment of the base a × c about the axis through its centroid parallel to c")
 d.step("T11", (T11, sp.Integral(zz ** 2, (x_, -a / 2, a / 2), (zz, -c / 2, c / 2)), a * c ** 3 / 12),
        "integration", result=T11, note="about the perpendicular axis (parallel to a): the larger one for c > a")
 d.step("V1", (V1, sp.Integral(1, (x_, -a / 2, a / 2), (zz, -c / 2, c / 2), (y_, 0, b * s)), a * b * c * s),
@@ -133,12 +133,12 @@ d.quote("47-two-directions", "IX.A",
         r"Gleichgewichtslage nur dann möglich ist, wenn entweder  $\omega = 0$  oder  $\omega = \frac{\pi}{2}$  ist",
         reading=(sp.Integral(_u * _v, (x_, -a / 2, a / 2), (y_, -c / 2, c / 2)),
                  a * c * (c ** 2 - a ** 2) / 24 * sp.sin(2 * om_)),
-        note="the second condition (32) for the a x c base turned by omega: int u v df = a c (c^2 - a^2)/24 sin 2 omega, "
+        note="the second condition (32) for the a × c base turned by omega: int u v df = a c (c^2 - a^2)/24 sin 2 omega, "
              "for c > a zero only at omega = 0, 90 deg in 0 <= omega < 180 deg; (47) is the right reference")
 d.quote("Tx-Ty-excluded", "IX.A",
         r"Die dritte Lösung der Bedingungsgleichung (46)  $T_x = T_y$  ist hier ausgeschlossen, da  $c > a$  "
         r"vorausgesetzt ist.", reading=(T11 - T1, a * c * (c ** 2 - a ** 2) / 12),
-        note="the two central moments of the base a x c differ by a c (c^2 - a^2)/12, positive for c > a")
+        note="the two central moments of the base a × c differ by a c (c^2 - a^2)/12, positive for c > a")
 d.quote("32", "IX.A", r"$$T_1 \left(1 + \frac{1}{2} \operatorname{tg}^2 \varphi_1\right) - V_1 e_1 = 0$$",
         reading=(T1 * (1 + tan2a / 2) - V1 * e1, 0))
 d.quote("T1-V1e1", "IX.A", r"$T_1 = \frac{c a^3}{12}$ ,  $V_1 e_1 = \frac{a b^2 c}{2} s (1 - s)$",
@@ -1133,7 +1133,7 @@ d.quote("s-above-3-4", "IX.C", r"ist also nur für  $s > \frac{3}{4}$  erfüllt.
 _base3 = sp.Integral(zz ** 2 - x_ ** 2, (x_, -a / 2, a / 2), (zz, -c / 2, c / 2))
 d.quote("127-third", "IX.C", "Letzteres ist (nach 127) vollkommen stabil.",
         reading=(swap_ab(_base3), b * c * (c - b) * (c + b) / 12),
-        note="(127) for the base b x c of the a-vertical position: the moment across the axis exceeds the one about "
+        note="(127) for the base b × c of the a-vertical position: the moment across the axis exceeds the one about "
              "it (c > a > b), so the oblique position stable about the axis is stable in every direction")
 # the alternation at s = 73/100, n = 251/250 (b = 1): upright (b vertical), the three roots of the second region,
 # a vertical; the first and third regions hold no oblique position there (n < rho: 131; n > 1/rho: 165)

@@ -47,7 +47,7 @@ DERIVATION = d = Derivation(
                  "(other directions follow by the symmetry of the square)",
                  "n-gon: circumradius $r$, n >= 3 sides; n is sampled as a real number in the identities that hold "
                  "for real n (the cosine sums are checked for n = 3..12)",
-                 "sign identities: a printed condition L > R is read as L - R = (positive factor) x (the "
+                 "sign identities: a printed condition L > R is read as L - R = (positive factor) × (the "
                  "quantity whose sign decides: a metacentric height, or tan^2 of the limiting tilt minus "
                  "tan^2 of the equilibrium tilt); the factor is stated in each note"),
 )

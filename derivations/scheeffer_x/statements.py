@@ -45,7 +45,7 @@ DERIVATION = d = Derivation(
                  "the potential of a floating body is u.(G - B) (height of G above B); its derivative along a "
                  "turn of the up vector u is (du).(G - B), since u.dB = 0 (the waterplane is tangent to the "
                  "surface of buoyancy; checked on the clipped cube in the tests)",
-                 "sign identities: a printed inequality L > R is read as L - R = (positive factor) x (the "
+                 "sign identities: a printed inequality L > R is read as L - R = (positive factor) × (the "
                  "quantity whose sign decides); the factor is stated in the note"),
 )
 
@@ -210,7 +210,7 @@ d.quote("diagonal-claim", "X",
         "Es kann also für einen fünfeckigen oder dreieckigen Wasserschnitt nur Gleichgewicht stattfinden, wenn die "
         "Drehungsachse der Diagonale einer Fläche parallel ist",
         reading=(P, (co - si) * POS),
-        note="sign identity (sign-of-P): P = (cos w - sin w) x (a positive factor), zero only for the axis along a "
+        note="sign identity (sign-of-P): P = (cos w - sin w) × (a positive factor), zero only for the axis along a "
              "face diagonal")
 
 # ==== pentagonal waterplane: the second condition (171), (172) ========================================
@@ -261,7 +261,7 @@ d.quote("171", "(171)",
                  sp.Matrix([sp.Rational(1, 6) + (1 - xl) ** 2 - xl ** 4 / 12, 1 - xl + xl ** 3 / 6,
                             F171(sp.Rational(1, 6) + (1 - xl) ** 2 - xl ** 4 / 12, 1 - xl + xl ** 3 / 6, xl, s)]),
                  sp.Matrix([2 * Tq, zq, KF * dE])),
-        note="x of the text is x_l here; the equation read as left minus right side = (positive factor) x dE/dt")
+        note="x of the text is x_l here; the equation read as left minus right side = (positive factor) × dE/dt")
 
 # the cut faces: which corners of the unit cube lie above a water plane (dry); a face loses a triangle when an odd
 # number (1 or 3) of its four corners is dry, and the waterplane has as many vertices as edges join a dry corner
@@ -432,7 +432,7 @@ fx = sp.diff(f_at(x, S_STAB), x)
 SIG = sp.Symbol("sigma")
 d.step("stiffness-sign", (SIG, sp.Matrix([sp.sign(fx.subs(x, XS[0]), evaluate=False), sp.sign(fx.subs(x, XS[1]), evaluate=False)])),
        "definition", uses=("171-derived", "tilt-grows"), result=SIG,
-       note="at a root of (171) d^2 E/dt^2 has the sign of df/dx (f = positive factor x dE/dt, x grows with t); "
+       note="at a root of (171) d^2 E/dt^2 has the sign of df/dx (f = dE/dt times a positive factor, x grows with t); "
             "the first two roots at s = 0.77 (both with beta < 1)")
 d.quote("pentagon-stable", "X", "Es lässt sich auch zeigen, dass dieses Gleichgewicht stabil ist",
         reading=(SIG, sp.Matrix([1, 1])),
@@ -565,7 +565,7 @@ d.quote("factor-positive", "X", "man sieht leicht ein, dass er stets positiv ist
 d.quote("174-positive", "X",
         r"Die Summe  $\int x y \cdot d f$  ist also positiv und nur für  $\omega = 45^\circ$  gleich Null.",
         reading=(P, (co - si) * POS),
-        note="sign identity (sign-of-P): P = (cos w - sin w) x (a positive factor) for 0 < w <= 45 deg")
+        note="sign identity (sign-of-P): P = (cos w - sin w) × (a positive factor) for 0 < w <= 45 deg")
 d.quote("175-positive", "X",
         r"und dieser Ausdruck ist ebenfalls (wie 174) für alle Werte von  $\omega$  zwischen  $0$  und  $45^\circ$  "
         r"positiv und nur für  $\omega = 45^\circ$  gleich Null.",
@@ -584,8 +584,8 @@ d.quote("hex-symmetric", "X",
 cH = 1 / r2
 d.quote("hex-six", "X", "Da dies aber für alle sechs Dreiecke der Fall sein muss, so ergibt sich:",
         reading=(sp.Matrix([P + P1, P]), (co - si) * sp.Matrix([POS + POS.subs({h_: h1_, rho: rho1}), POS])),
-        note="as hex-symmetric: on every pair of parallel faces the first condition is (cos w - sin w) x a positive "
-             "factor, so w = 45 deg on each")
+        note="as hex-symmetric: on every pair of parallel faces the first condition is a positive factor times "
+             "(cos w - sin w), so w = 45 deg on each")
 d.quote("hex-range", "X",
         r"ebenso über den sechseckigen (wenn  $s$  zwischen  $\frac{1}{6}$  und  $\frac{5}{6}$  liegt)",
         reading=(sp.Matrix([Vt / a ** 3, s56]), sp.Matrix([sp.Rational(1, 6), sp.Rational(5, 6)])),
