@@ -159,6 +159,7 @@ def _points(token: str) -> bool:
     """A segment or a length named by its two points (``GZ``, ``BH``; ``Cc``, ``Pp`` from a point to its
     companion; Euler's ``Oc``, ``ce``, ``wq``), not a chapter's Roman numeral (``IX``) nor a word of two
     letters (``In``, ``of``).  Alone it stays text; beside a relation sign or a formula it is a name."""
+    token = token.rstrip("'")                            # GZ': a segment's derivative
     return bool(re.fullmatch(r"[A-Z]{2}", token) and token not in _ROMAN
                 or re.fullmatch(r"[A-Za-z]{2}", token) and token.lower() not in _TWO_LETTER_WORDS)
 
@@ -297,6 +298,23 @@ def _attached(tokens: list) -> list:
     return out
 
 
+def _three_points(tokens: list) -> list:
+    """A name of three points (Euler's angle ACP and arc AEB, Scheeffer's angle BHG) is mathematics after a
+    function (``cos ACP``) or before a relation sign (``AEB = ...``); alone it stays text, as a chapter's
+    numeral (``VII``) always does."""
+    out = list(tokens)
+    solid = [i for i, (t, _, _) in enumerate(tokens) if not t.isspace()]
+    for n, i in enumerate(solid):
+        t, k, g = tokens[i]
+        if k != "text" or not re.fullmatch(r"[A-Z]{3}'*", t) or t.rstrip("'") in _ROMAN:
+            continue
+        before = tokens[solid[n - 1]][0] if n else ""
+        after = tokens[solid[n + 1]] if n + 1 < len(solid) else ("", "", "")
+        if before in FUNCTIONS or after[1] == "relation":
+            out[i] = (t, "weak", g)
+    return out
+
+
 def _applied(tokens: list) -> list:
     """A letter written against a bracket of mathematics is a function at its argument (``A(z)``, ``Y(y)``,
     ``F(1)``, ``A(z + h)``): a name, not a word, as its bracket holds no word."""
@@ -422,7 +440,7 @@ def _typeset_plain(text: str, quoted: bool = False, followed: bool = False) -> s
     text = re.sub(r"(?<=[\w)])\*\*(?=[\w(])", "^", text)                 # a**2: a power
     text = re.sub(r"\bsqrt\{([^{}$]*)\}", r"sqrt(\1)", text)              # sqrt{2}: a root
     tokens = [(m.group(0), _kind(m.group(0), m.lastgroup, quoted), m.lastgroup) for m in _TOKEN.finditer(text)]
-    tokens = _applied(_attached(tokens))
+    tokens = _three_points(_applied(_attached(tokens)))
     tokens = [(t, k) for t, k, _ in (tokens if quoted else _names(tokens, followed))]
     out, run = [], []
 

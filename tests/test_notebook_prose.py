@@ -145,6 +145,10 @@ def _texts(derivation: str):
      r"a homogeneous box $2a \times 2b \times 2c$; the base $a \times c$ about"),
     ("L - R = (positive factor) × dE/dt, dividing dT/dmu, do/die",
      r"$L - R$ = (positive factor) × $dE/dt$, dividing $dT/d\mu$, do/die"),
+    # a name of three points after a function or before a relation (Euler's angle ACP, Scheeffer X's angle BHG) and a
+    # segment's derivative (Scheeffer VI.C-F's GZ'), which cut their formulas in two; alone, or a numeral, words
+    ("n = cos ACP = sqrt(1 - m^2), angle BHG = omega, E'' = GZ' = T_1; the arc AEB of section VII",
+     r"$n = \cos ACP = \sqrt{1 - m^{2}}$, angle $BHG = \omega$, $E'' = GZ' = T_{1}$; the arc AEB of section VII"),
 ])
 def test_formulas_and_words_are_told_apart(text, shown):
     assert typeset(text) == shown

@@ -771,7 +771,7 @@ for kappa in KAPPAS:
                                                       corrected_reading=(Nk[kappa], n_value),
                                                       objection=n_objection, answer=n_answer),
             note=claim("for κ = %s, N = ∫(1 − yⁿ/bⁿ)^{3κ−1}dy / ∫(1 − yⁿ/bⁿ)^κ dy is the printed entry; rebuilt "
-                       "from the Beta integrals: N = $%s$." % (kappa, n_tex)))
+                       "from the Beta integrals: $N = %s$." % (kappa, n_tex)))
     k_excerpt, k_printed = K_PRINTED[kappa]
     k_value, k_tex = K0_rebuilt(kappa)
     d.quote("K-table-%s" % _label(kappa), "§234", k_excerpt, reading=(Kk[kappa], 2 * a ** 2 * Dk[kappa] * k_printed),
