@@ -719,7 +719,7 @@ d.quote("law", "V",
                                   "'ein gerades Prisma' means a prism of that kind, and for it the law holds.",
                         answer="The law itself, set off in quotation marks, names every obliquely stable right "
                                "prism, and the next sentence compares 'ein gerades Prisma' with the circular "
-                               "cylinder without the restriction; for the 1 × 6/5 rectangle it is false. The "
+                               "cylinder without the restriction; for the $1 \\times 6/5$ rectangle it is false. The "
                                "contextual reading is a real alternative, so the claim is lowered to medium."))
 d.quote("QQ1", "(53)", r"$Q Q_1 = b(1 - s)$", reading=(b - b * s, b * (1 - s)),
         note="height above water of the upright prism: b minus the draught b s")

@@ -27,6 +27,7 @@ from ..model.span import math_spans, widened
 from ..model.symbol_names import latex
 from ..registry import manifest, statements
 from ..numbers import scientific, written
+from ..report.witness_words import method_words
 from .bench import FAMILIES, Bench, run_bench
 from .conditioning import CASES, conditioning_markdown, conditioning_rows
 from .discriminant import table_markdown as discriminant_markdown
@@ -180,7 +181,7 @@ def _route_words(bench, ms) -> list:
 
 
 def _rows(ms):
-    return [(r[0], r[1], fmt_err(r[2]), fmt_err(r[3]), fmt_time(r[4]), fmt_proven(r[5], r[1]))
+    return [(method_words(r[0]), r[1], fmt_err(r[2]), fmt_err(r[3]), fmt_time(r[4]), fmt_proven(r[5], r[1]))
             for r in method_rows(ms)]
 
 
@@ -245,7 +246,7 @@ def _section_bench(bench, figures):
             cells = [_formula(key), bench.references.get(key, "")]
             for t in THRESHOLDS:
                 b = best[t][key]
-                cells.append("none" if b is None else f"{b[0]}, {fmt_time(b[2])}")
+                cells.append("none" if b is None else f"{method_words(b[0])}, {fmt_time(b[2])}")
             rows.append(cells)
         head = ("formula", "reference", *(f"≤ {written(t)}" for t in THRESHOLDS))
         lines += [f"#### {_source(source)}", "", _table(head, rows), ""]

@@ -24,7 +24,7 @@ from ..registry import load
 from .notebook_code import STRATEGY_WORDS
 from ..prose import typeset
 from .cross_references import readable
-from .witness_words import error_cells
+from .witness_words import error_cells, method_words
 
 __all__ = ["NotebookView", "definitions_markdown", "step_markdown", "step_title", "step_titles", "reading_markdown",
            "correction_markdown", "named", "chain_latex"]
@@ -306,7 +306,7 @@ def _records(title, records) -> list[str]:
     rows = ["| method | cases | abs. error | rel. error |", "|---|---|---|---|"]
     for r in records:
         abs_cell, rel_cell = error_cells(r)
-        rows.append(f"| {r['method']} | {r.get('cases', 1)} | {abs_cell} | {rel_cell} |")
+        rows.append(f"| {method_words(r['method'])} | {r.get('cases', 1)} | {abs_cell} | {rel_cell} |")
     return [title, "\n".join(rows)]
 
 

@@ -27,7 +27,7 @@ from ..model.span import math_intervals, widened
 from ..numbers import counted, duration
 from ..report.labels import sections
 from ..report.ledger import REASONS, account, waivers
-from ..report.witness_words import error_cells
+from ..report.witness_words import error_cells, method_words
 from .difference import corrected_html
 from .records import Records, slug
 from .text import excerpt_html, prose_html, render
@@ -125,7 +125,7 @@ def places(text: str, fault: str, quote: tuple[int, int]) -> list[tuple[int, int
 
 def witness_line(numeric) -> str:
     """The witnesses in one line: method, cases, absolute and relative error, seconds."""
-    return "; ".join(f"{n['method']} ({counted(n.get('cases', '?'), 'case')}): abs {error_cells(n)[0]}, "
+    return "; ".join(f"{method_words(n['method'])} ({counted(n.get('cases', '?'), 'case')}): abs {error_cells(n)[0]}, "
                      f"rel {error_cells(n)[1]}, {duration(n['seconds'])}" for n in numeric) or "no numeric witness"
 
 
@@ -181,7 +181,7 @@ def replaced(erratum: dict) -> str:
 def _witness_table(numeric) -> str:
     if not numeric:
         return "<p>No numeric witness.</p>"
-    rows = "".join(f"<tr><td>{html.escape(n['method'])}</td><td>{n.get('cases', '')}</td>"
+    rows = "".join(f"<tr><td>{html.escape(method_words(n['method']))}</td><td>{n.get('cases', '')}</td>"
                    f"<td>{html.escape(error_cells(n)[0])}</td><td>{html.escape(error_cells(n)[1])}</td>"
                    f"<td>{duration(n['seconds'])}</td></tr>"
                    for n in numeric)
