@@ -400,8 +400,8 @@ def _names(tokens: list, followed: bool = False) -> list:
             continue
         before = out[solid[n - 1]] if n else None           # an article before it is a word
         after = tokens[solid[n + 1]] if n + 1 < len(solid) else None
-        listed = after is not None and after[0] in ("and", "or") and n + 2 < len(solid) \
-            and re.fullmatch(r"[A-Za-z]'?", tokens[solid[n + 2]][0])          # a and c
+        listed = after is not None and after[0] in ("and", "or", "for") and n + 2 < len(solid) \
+            and re.fullmatch(r"[A-Za-z]'?", tokens[solid[n + 2]][0])          # a and c; a for x (read instead)
         among_words = (before is None or before[1] == "text" or before[0] == "(") and (
             after is None and followed or after is not None and (after[1] == "text" or t == "A" and after[2] == "word"))
         if t == "a" and among_words and not listed and (after is None or after[0] not in _AFTER_A):

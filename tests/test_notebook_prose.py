@@ -147,6 +147,8 @@ def _texts(derivation: str):
      r"$L - R$ = (positive factor) × $dE/dt$, dividing $dT/d\mu$, do/die"),
     # a name of three points after a function or before a relation (Euler's angle ACP, Scheeffer X's angle BHG) and a
     # segment's derivative (Scheeffer VI.C-F's GZ'), which cut their formulas in two; alone, or a numeral, words
+    # a letter read for another (Euler §§220-228: "The a for x at the head of the line") is a name, not the article
+    ("The a for x at the head of the line; a for all", "The $a$ for $x$ at the head of the line; a for all"),
     ("n = cos ACP = sqrt(1 - m^2), angle BHG = omega, E'' = GZ' = T_1; the arc AEB of section VII",
      r"$n = \cos ACP = \sqrt{1 - m^{2}}$, angle $BHG = \omega$, $E'' = GZ' = T_{1}$; the arc AEB of section VII"),
 ])

@@ -31,7 +31,7 @@ DERIVATION = d = Derivation(
     title="The regular prism: isotropy of regular polygons, the triangular prism and the circular cylinder",
     locator="VI, VI.A, VI.B",
     summary="Inertia of a regular polygon about every central axis (56); upright stability, tilted "
-            "equilibrium and first-rotation-region limits of the regular triangular prism (57)-(68) and of "
+            "equilibrium and the limits of the first rotation region of the regular triangular prism (57)-(68) and of "
             "the circular cylinder (69)-(73), with the worked examples 1-10 recomputed.",
     requires=(),
     domain={x: (-1, 1), y: (-1, 1), om: (0, 1), Tx: (1, 2), Ty: (1, 2), Pxy: (-1, 1),
