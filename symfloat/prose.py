@@ -219,19 +219,22 @@ def _tex(token: str) -> str:
     return token
 
 
-# Relation signs written in ASCII, never words: one before a number or a name opens a formula (degree <= 3)
+# Relation signs written in ASCII, never words (degree <= 3); a comparison before a number or a name opens a
+# formula (and < 2c - d), and one named alone (counts it with '>=') is set too
 _ASCII_SIGNS = ("<=", ">=", "!=")
-_COMPARISONS = ("<", ">", "≤", "≥", "≠") + _ASCII_SIGNS     # a sign named alone (counts it with '>=') is set too
+_COMPARISONS = ("<", ">", "≤", "≥", "≠") + _ASCII_SIGNS
 
 
-def _leading_sign(run: list) -> bool:
-    """Does *run* open with an ASCII relation sign that a number or a name follows (``<= 3``, ``!= 0``)?"""
-    return bool(run) and run[0][0] in _ASCII_SIGNS and any(k not in ("space", "relation") for _, k in run[1:])
+def _leading_sign(run: list, equals: bool = True) -> bool:
+    """Does *run* open with a comparison or (*equals*) an equals sign that a number or a name follows (``<= 3``,
+    ``!= 0``, ``and < 2c - d``, ``= 0 neutral``)?"""
+    signs = (*_COMPARISONS, "=") if equals else _COMPARISONS
+    return bool(run) and run[0][0] in signs and any(k not in ("space", "relation") for _, k in run[1:])
 
 
-def _trim(run: list) -> list:
-    """Drop spaces and unmatched brackets at the ends of a run, and a relation sign left at an end (but an ASCII
-    sign that opens the run before a number or a name, ``<= 3``)."""
+def _trim(run: list, equals: bool = True) -> list:
+    """Drop spaces and unmatched brackets at the ends of a run, and a relation sign left at an end (but a sign
+    that opens the run before a number or a name, ``<= 3``: see :func:`_leading_sign`)."""
     changed = True
     while run and changed:
         changed = False
@@ -239,7 +242,7 @@ def _trim(run: list) -> list:
         if run[-1][1] in ("space", "relation") or run[-1][0] == "(" or (run[-1][0] == ")" and opened < 0):
             run.pop()
             changed = True
-        elif (run[0][1] in ("space", "relation") and not _leading_sign(run) or run[0][0] == ")"
+        elif (run[0][1] in ("space", "relation") and not _leading_sign(run, equals) or run[0][0] == ")"
               or (run[0][0] == "(" and opened > 0)):
             run.pop(0)
             changed = True
@@ -451,12 +454,15 @@ def _typeset_plain(text: str, quoted: bool = False, followed: bool = False) -> s
             run = []
             return
         lead = []
-        while run and (run[0][1] in ("space", "relation") or run[0][0] in (")", "×")) and not _leading_sign(run):
+        # in a quotation an equals sign opens a formula only where the quotation opens: '= 0', not 'Ac = a - c'
+        equals = not quoted or not "".join(out).strip()
+        while run and (run[0][1] in ("space", "relation") or run[0][0] in (")", "×")) \
+                and not _leading_sign(run, equals):
             lead.append(run.pop(0)[0])
         tail = []
         while run and (run[-1][1] in ("space", "relation") or run[-1][0] in ("(", ",", "×")):    # (a) × (words)
             tail.insert(0, run.pop()[0])
-        core = _trim(list(run))
+        core = _trim(list(run), equals)
         cut = _unmatched(core)
         if cut is not None:                      # a bracket the run does not close: the formula ends before it
             at = run.index(core[0]) + cut
@@ -470,7 +476,7 @@ def _typeset_plain(text: str, quoted: bool = False, followed: bool = False) -> s
             return
         if core and (any(k == "strong" for _, k in core) or not quoted and _arithmetic(core)
                      or any(k == "relation" for _, k in core) and len([k for _, k in core if k == "weak"]) >= 2
-                     or any(t in _ASCII_SIGNS for t, _ in core)):
+                     or any(t in _ASCII_SIGNS for t, _ in core) or _leading_sign(core, equals)):
             start = run.index(core[0])
             end = start + len(core)
             before = "".join(t for t, _ in run[:start])

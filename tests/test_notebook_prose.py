@@ -132,6 +132,10 @@ def _texts(derivation: str):
     ("unsymmetric, k != 0; the sections A(0), A(h/2) of A(z)",
      r"unsymmetric, $k \ne 0$; the sections $A(0)$, $A(h/2)$ of $A(z)$"),
     ("(65) counts it with '>=' (the example >)", r"(65) counts it with '$\ge$' (the example $>$)"),
+    # a sign that opens a formula after a word (Metazentrum's "b tg phi < d and < 2c - d", Scheeffer VI.C-F's
+    # "> 0 stable, = 0 neutral", the quoted "'= 0'" of IV-V and VII-VIII): the sign and its number were words
+    ("(b tg phi < d and < 2c - d); > 0 stable, = 0 neutral; the '= 0' is imposed",
+     r"($b \operatorname{tg} \varphi < d$ and $< 2c - d$); $> 0$ stable, $= 0$ neutral; the '$= 0$' is imposed"),
     # an interval in brackets (Hasáb's body coordinates, Scheeffer IX's (79), Euler's rectangle): the brackets and
     # the numbers were words; a link, a citation and a code span stay as they are
     ("xi in [-1/2, 1/2], eta in [0, 1]", r"$\xi$ in $[-1/2, 1/2]$, $\eta$ in $[0, 1]$"),
