@@ -4,8 +4,9 @@ alike on GitHub and in the site)."""
 from __future__ import annotations
 
 import math
+import re
 
-__all__ = ["scientific", "written", "duration", "counted", "steps_in_words"]
+__all__ = ["scientific", "written", "duration", "counted", "steps_in_words", "method_words"]
 
 _SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
@@ -74,3 +75,13 @@ def steps_in_words(steps: dict) -> str:
     """
     plural = {"definition": "definitions"}
     return ", ".join(counted(n, k, plural.get(k, k)) for k, n in sorted(steps.items(), key=lambda kv: (-kv[1], kv[0])))
+
+
+def method_words(method: str) -> str:
+    """A numeric method's name as a reader writes it, its nodes counted in words; the records keep the name the
+    method is made with (``Gauss-Legendre n=4``) as its key.
+
+    >>> method_words("slices, Gauss-Legendre n=4, 30 digits")
+    'slices, Gauss–Legendre with 4 nodes, 30 digits'
+    """
+    return re.sub(r"Gauss-Legendre n=(\d+)", r"Gauss–Legendre with \1 nodes", method).replace("Gauss-", "Gauss–")

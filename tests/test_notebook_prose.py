@@ -334,7 +334,7 @@ def test_names_listed_before_a_relation_are_set_with_it():
 def test_a_quadrature_rule_is_named_in_words():
     # the witnesses' tables (notebooks, the site, docs/numerics.md) named Gauss–Legendre's rule by its key in the
     # records, "Gauss-Legendre n=3, 15 digits"; the key stays in the records, the reader sees its nodes
-    from symfloat.report.witness_words import method_words
+    from symfloat.numbers import method_words
     assert method_words("Gauss-Legendre n=3, 15 digits") == "Gauss–Legendre with 3 nodes, 15 digits"
     assert method_words("Gauss-Legendre (mpmath), 30 digits") == "Gauss–Legendre (mpmath), 30 digits"
     shown = [path for path in [*sorted((ROOT / "notebooks").glob("*.ipynb")), ROOT / "docs" / "numerics.md"]

@@ -26,8 +26,7 @@ from ..model.source import SOURCES
 from ..model.span import math_spans, widened
 from ..model.symbol_names import latex
 from ..registry import manifest, statements
-from ..numbers import scientific, written
-from ..report.witness_words import method_words
+from ..numbers import method_words, scientific, written
 from .bench import FAMILIES, Bench, run_bench
 from .conditioning import CASES, conditioning_markdown, conditioning_rows
 from .discriminant import table_markdown as discriminant_markdown

@@ -19,12 +19,12 @@ from ..model.claim import expressions, members
 from ..model.erratum import apparatus, apparatus_in_words
 from ..model.relation import is_relation, relation_latex
 from ..model.symbol_names import latex
-from ..numbers import counted, steps_in_words
+from ..numbers import counted, method_words, steps_in_words
 from ..registry import load
 from .notebook_code import STRATEGY_WORDS
 from ..prose import typeset
 from .cross_references import readable
-from .witness_words import error_cells, method_words
+from .witness_words import error_cells
 
 __all__ = ["NotebookView", "definitions_markdown", "step_markdown", "step_title", "step_titles", "reading_markdown",
            "correction_markdown", "named", "chain_latex"]

@@ -12,21 +12,10 @@ other record shows its error as measured.
 """
 from __future__ import annotations
 
-import re
-
 from ..engine.witness import record_decision
 from ..numbers import counted, scientific
 
-__all__ = ["error_cells", "best_error", "method_words"]
-
-
-def method_words(method: str) -> str:
-    """A method's name as a reader reads it; the record keeps it as its key.
-
-    >>> method_words("slices, Gauss-Legendre n=4, 30 digits")
-    'slices, Gauss–Legendre with 4 nodes, 30 digits'
-    """
-    return re.sub(r"Gauss-Legendre n=(\d+)", r"Gauss–Legendre with \1 nodes", method).replace("Gauss-", "Gauss–")
+__all__ = ["error_cells", "best_error"]
 
 
 def error_cells(record: dict) -> tuple[str, str]:

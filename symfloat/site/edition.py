@@ -24,10 +24,10 @@ from ..registry import statements
 from ..model.erratum import apparatus
 from ..model.source import Source
 from ..model.span import math_intervals, widened
-from ..numbers import counted, duration
+from ..numbers import counted, duration, method_words
 from ..report.labels import sections
 from ..report.ledger import REASONS, account, waivers
-from ..report.witness_words import error_cells, method_words
+from ..report.witness_words import error_cells
 from .difference import corrected_html
 from .records import Records, slug
 from .text import excerpt_html, prose_html, render
