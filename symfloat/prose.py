@@ -97,7 +97,8 @@ _SUPER = {"²": "2", "³": "3", "⁴": "4", "¹": "1", "⁰": "0", "⁵": "5", "
 _SIGNS = "πθφωμαβγδεκλνξρστψΓΔ"      # the Greek letters above
 _SECTION = re.compile(r"[IVX]+\.[A-Z](?:[-–][A-Z])?")        # a section of a chapter: VI.C, VI.C-F
 # what typeset() does not set as ASCII: mathematics already in dollars, a code span, a quotation, a section
-_KEPT = re.compile(rf"(\$[^$]*\$|``[^`]+``|`[^`]+`|(?:(?<=[\s(\[])|^)'(?:[^'\n$]|\$[^$]*\$)+?'(?![\w'])"
+_CODE = r"``[^`]+``|`[^`]+`"                 # a code span
+_KEPT = re.compile(rf"(\$[^$]*\$|{_CODE}|(?:(?<=[\s(\[])|^)'(?:[^'\n$]|\$[^$]*\$)+?'(?![\w'])"
                    rf"|\b{_SECTION.pattern}\b)")     # a quotation holds whole formulas: '$F'(z)$ zunimmt'
 _ROMAN = ("I", "II", "III", "IV", "V", "VI", "VII", "VIII", "IX", "X", "XI", "XII")      # a chapter's numeral
 
@@ -559,7 +560,7 @@ def _intervals(text: str) -> str:
         formula = _code_formula(piece)
         return formula[1:-1] if formula else None
 
-    code = [c.span() for c in re.finditer(r"``[^`]+``|`[^`]+`", text)]
+    code = [c.span() for c in re.finditer(_CODE, text)]
 
     def one(m: re.Match) -> str:
         if text[:m.start()].count("$") % 2 or any(a < m.end() and m.start() < b for a, b in code):
