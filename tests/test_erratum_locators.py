@@ -46,3 +46,15 @@ def test_the_regions_are_the_places_the_locators_name():
     assert text[start:].startswith("Analyse der Stabilit") and "Um sicherzustellen" in text[start:end]
     assert "was größer als eins im Falle einer stabilen Situation" not in text[start:end]
     assert region("hasab", "solution, upright") is None
+
+
+def test_a_citation_lists_the_places_in_the_texts_order_each_once():
+    # sources/INDEX.md's locators as a reader cites them: Scheeffer's (95a) stands before (103a) in section VII
+    # although a predictor named it last, a section after its equations, a place named twice once, a heading in
+    # quotation marks; a mark of the print stays bare
+    from symfloat.model.locator import citation
+    assert citation("scheeffer", ["(103a)", "(117)", "(95a)", "(134)", "IX.C", "(103a)"]) == \
+        "Scheeffer 1902 (95a), (103a), (117), (134), IX.C"
+    assert citation("scheeffer", ["V", "(51)", "IV"]) == "Scheeffer 1902 IV, (51), V"
+    assert citation("euler", ["§216", "§200"]) == "Euler 1749 §200, §216"
+    assert citation("metazentrum", ["formula list"]) == "Auftrieb Stabilität “formula list”"

@@ -37,6 +37,17 @@ def test_phase_outputs(box_phase, tmp_path):
     assert "duality s ↔ 1 − s: holds" in phase_table(box_phase)
 
 
+def test_the_table_cites_each_closed_form_once_with_its_places(box_phase):
+    # the sources that print a threshold by the same closed form are one citation of their places (the record keeps
+    # one entry per derivation): the box's upright threshold is printed by the web lesson and by Scheeffer in
+    # several sections, and no derivation's id reaches the table
+    from symfloat import registry
+    table = phase_table(box_phase)
+    upright = next(line for line in table.splitlines() if "face z up: stable below" in line)
+    assert upright.count(" = ") == 1 and "Scheeffer 1902 IV, " in upright and "Auftrieb Stabilität “" in upright
+    assert not any(f"{i} " in table for i in registry.ids())
+
+
 def test_the_table_shows_a_records_closed_forms_in_signs():
     # the record keeps SymPy's text (docs/figures/phase-cube.json: "1/2 - sqrt(3)/6", "at s -+ 1e-06"); the table
     # a reader sees writes their signs

@@ -112,8 +112,22 @@ def test_a_disagreement_without_a_claimed_stability_says_so_in_words(run):
     # Scheeffer X (171) at s = 0.22 (below its printed 0.2265) gives a pentagon whose stability the text leaves
     # open (the predictor's stability None): the line must say so, never print a Python None
     code, out, err = run("scene", "cube", "--density", "0.22")
-    lines = [line for line in out.splitlines() if line.startswith("DISAGREEMENT: scheeffer-x")]
+    lines = [line for line in out.splitlines() if line.startswith("DISAGREEMENT: Scheeffer 1902 (171), X ")]
     assert code == 0 and lines and all("(no stability claimed)" in line and "None" not in line for line in lines)
+
+
+def test_the_table_cites_the_printed_places_not_the_derivations(run):
+    # "which printed formula says so?" is answered as a reader cites a source (sources/INDEX.md): the short name and
+    # year, then the places in the text's order, each once; the cube at 0.22 is read by seven derivations, four of
+    # them Scheeffer's, whose places for the ring around z (IV-V, VI.C-F, VII-VIII, IX) are one citation
+    from symfloat import registry
+    code, out, err = run("scene", "cube", "--density", "0.22", "--quiet")
+    rows = out.split("formulas\n", 1)[1].split("\n\n", 1)[0].splitlines()
+    assert code == 0 and not any(f"{i} " in row for i in registry.ids() for row in rows)
+    assert rows[0].endswith("Scheeffer 1902 (51), (54), (55), V, (80), (81a), VI.D, (118), (121a), (121b), (122), "
+                            "(125), (127), (132b), IX.C (agree)")
+    assert "Auftrieb Stabilität “Berechnung der Position des Metazentrums”" in rows[1]
+    assert rows[2].endswith("Scheeffer 1902 X (agrees)")
 
 
 def test_the_self_check_is_said_in_words(run):

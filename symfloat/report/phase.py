@@ -35,7 +35,19 @@ def _signs(text: str) -> str:
     return _ROOT.sub(r"√\1", text).replace(" -+ ", " ± ").replace(" - ", " − ")
 
 
+def _sources(entries) -> str:
+    """The places that print a threshold, cited together where they give the same value by the same closed form
+    (``Scheeffer 1902 IV, (79), VI.D, (123), (132a): 1/2 − √3/6 = 0.2113248654052``)."""
+    from .citations import cited            # the table's words only: a phase record is made without them
+    forms: dict[tuple, list] = {}
+    for k in entries:
+        forms.setdefault((k["expression"], f"{k['value']:.13f}"), []).append(k)
+    return "; ".join(cited(same) + (f": {_signs(expression)} = {value}" if expression else f": {value}")
+                     for (expression, value), same in forms.items())
+
+
 def phase_table(diagram) -> str:
+    from .citations import cited
     lines = [f"{diagram.body} ({','.join(diagram.dims)}): stable positions against density "
              f"({len(diagram.densities)} densities, {diagram.seconds:.1f} s)", ""]
     previous = None
@@ -45,13 +57,11 @@ def phase_table(diagram) -> str:
             previous = labels
     lines += ["", "thresholds (bisection with tracking; ± = error bound):"]
     for t in diagram.thresholds:
-        src = "; ".join(f"{k['derivation']} {', '.join(k['locators'])}"
-                        + (f" {_signs(k['expression'])}" if k["expression"] else "") + f" = {k['value']:.13f}"
-                        for k in t.source) or "no source prints this threshold"
+        src = _sources(t.source) or "no source prints this threshold"
         note = f" ({t.note})" if t.note else ""
         lines.append(f"  s = {t.density:.13f} ± {t.bracket:.0e}  {t.label}: {t.change}{note}  [{src}]")
     for k in diagram.unmatched_sources:
-        lines.append(f"  DISAGREEMENT: {k['derivation']} {', '.join(k['locators'])} puts a threshold at s = "
+        lines.append(f"  DISAGREEMENT: {cited([k])} puts a threshold at s = "
                      f"{k['value']:.13f} ({k['label']}: {k['change']}); the solver finds none there: "
                      f"{_signs(k['why'])}")
     lines.append("")

@@ -7,6 +7,8 @@ import math
 import mpmath
 import numpy as np
 
+from .citations import cited
+
 __all__ = ["scene_record", "scene_json", "scene_table", "scene_plot"]
 
 
@@ -73,6 +75,16 @@ def _certificate(c) -> dict:
             **({"reason": c.reason} if c.reason else {})}
 
 
+def _formulas(predictions) -> str:
+    """The formulas column: the places of the agreeing predictions cited together, each disagreeing one on its
+    own with its reason."""
+    agreeing = [p for p in predictions if p["agrees"]]
+    parts = [f"{cited(agreeing)} (agree{'s' if len(agreeing) == 1 and len(agreeing[0]['locators']) == 1 else ''})"
+             ] if agreeing else []
+    parts += [f"{cited([p])} (DISAGREES: {p['disagreement']})" for p in predictions if not p["agrees"]]
+    return "; ".join(parts) or "-"
+
+
 def scene_json(record) -> str:
     return json.dumps(record, indent=2)
 
@@ -87,14 +99,10 @@ def scene_table(record) -> str:
              f"{'waterplane':<18} {'error':>8}  formulas"]
     for e in record["equilibria"]:
         up = "(" + ", ".join(f"{x:+.6f}" for x in e["up"]) + ")"
-        formulas = []
-        for p in e["predictions"]:
-            mark = "agrees" if p["agrees"] else "DISAGREES: " + p["disagreement"]
-            formulas.append(f"{p['derivation']} {', '.join(p['locators'])} ({mark})")
         family = e["family"] if e["family"] != "ring" else ("ring" if e["ring_shape"] == "closed" else "arc")
         lines.append(f"{up:<34} {e['tilt_deg']:>8.4f}° {e['stability']:<12} {family:<9} "
                      f"{e['potential']:>12.9f} {e['waterplane']:<18} {e['error_rad']:>8.1e}  "
-                     + ("; ".join(formulas) or "-"))
+                     + _formulas(e["predictions"]))
     for e in record["equilibria"]:
         c = e.get("certificate")
         if c is None:
@@ -108,7 +116,7 @@ def scene_table(record) -> str:
         else:
             lines.append(f"not certified: up {up}: {c['reason']}")
     for p in record["unmatched_predictions"]:
-        lines.append(f"DISAGREEMENT: {p['derivation']} {', '.join(p['locators'])} predicts an equilibrium at up "
+        lines.append(f"DISAGREEMENT: {cited([p])} predicts an equilibrium at up "
                      f"{[round(x, 6) for x in p['predicted_up']]} ({p['predicted_stability'] or 'no stability claimed'}); "
                      f"{p['disagreement']}" + (f" ({p['note']})" if p.get("note") else ""))
     completeness = record["checks"].get("completeness")
