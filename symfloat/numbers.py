@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["scientific", "written", "duration", "counted", "steps_in_words", "method_words"]
+__all__ = ["scientific", "written", "duration", "counted", "steps_in_words", "method_words", "signs"]
 
 _SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
@@ -85,3 +85,16 @@ def method_words(method: str) -> str:
     'slices, Gauss–Legendre with 4 nodes, 30 digits'
     """
     return re.sub(r"Gauss-Legendre n=(\d+)", r"Gauss–Legendre with \1 nodes", method).replace("Gauss-", "Gauss–")
+
+
+_ROOT = re.compile(r"sqrt\((\d+)\)")
+
+
+def signs(text: str) -> str:
+    """*text* of a record (SymPy's closed forms, ``s -+ 1e-06``) as a table shows it: a square root, a minus and a
+    plus-or-minus as their signs; the record keeps its own text.
+
+    >>> signs("1/2 - sqrt(3)/6"), signs("at s -+ 1e-06")
+    ('1/2 − √3/6', 'at s ± 1e-06')
+    """
+    return _ROOT.sub(r"√\1", text).replace(" -+ ", " ± ").replace(" - ", " − ")

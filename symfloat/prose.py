@@ -84,7 +84,7 @@ _TEX = {"phi": r"\varphi", "varphi": r"\varphi", "epsilon": r"\varepsilon", "ata
         "tg": r"\operatorname{tg}", "cotg": r"\operatorname{cotg}",
         "sqrt": r"\sqrt", "int": r"\int", "√": r"\sqrt", "∫": r"\int", "·": r"\cdot", "−": "-",
         "<=": r"\le", ">=": r"\ge", "!=": r"\ne", ">>": r"\gg", "<<": r"\ll", "≤": r"\le", "≥": r"\ge",
-        "≠": r"\ne", "±": r"\pm", "+-": r"\pm", "oo": r"\infty",
+        "≠": r"\ne", "±": r"\pm", "+-": r"\pm", "-+": r"\mp", "∓": r"\mp", "oo": r"\infty",
         "*": r"\cdot", "×": r"\times", "π": r"\pi", "θ": r"\theta", "φ": r"\varphi", "ω": r"\omega", "μ": r"\mu",
         "≈": r"\approx", "→": r"\to", "->": r"\to", "<->": r"\leftrightarrow", "↔": r"\leftrightarrow",
         "≫": r"\gg", "≪": r"\ll", "∞": r"\infty", "...": r"\ldots", "…": r"\ldots", "{": r"\{", "}": r"\}",
@@ -120,7 +120,7 @@ _TOKEN = re.compile(r"""
   | (?P<relation><->|<=|>=|!=|>>|<<|[=<>≤≥≠≈↔≫≪]|->|→)
   | (?P<ratio>(?<=[ ]):(?=[ ]))                                                    # I : K = EF^2 : AB^2
   | (?P<power>[²³⁴¹⁰⁵⁶⁷⁸⁹ⁿ]+)                                                       # y²ⁿ
-  | (?P<operator>\+-|\.\.\.|…|[-+*/(){}±·×−√∫∞πθφωμαβγδεκλνξρστψΓΔ])                 # a + ... + g, {a + b}
+  | (?P<operator>\+-|-\+|\.\.\.|…|[-+*/(){}±∓·×−√∫∞πθφωμαβγδεκλνξρστψΓΔ])                 # a + ... + g, {a + b}
   | (?P<other>.)
 """, re.X | re.S)
 
@@ -430,8 +430,9 @@ def _names(tokens: list, followed: bool = False) -> list:
         if t in _ROMAN:
             words = [x[0] for x in tokens[:i] if x[2] in ("word", "name", "indexed")
                      and x[0] not in ("and", "or") and x[0] not in _ROMAN]
-            if words and words[-1] in _CHAPTER_WORDS or after is not None and after[0] == ".":
-                continue                                 # Scheeffer 1902, X; section V; rows I and V; II. as a heading
+            cited = n >= 2 and tokens[solid[n - 1]][0] == "of" and tokens[solid[n - 2]][2] in ("number", "locator")
+            if words and words[-1] in _CHAPTER_WORDS or cited or after is not None and after[0] == ".":
+                continue                    # Scheeffer 1902, X; section V; rows I and V; (171) of X; II. as a heading
         out[i] = (t, "name" if behind else "strong", g)
     return out
 

@@ -287,7 +287,7 @@ def test_command_fails_when_a_check_fails(lopsided, status, tmp_path, capsys):
     assert main(["atlas", "box", "--ba", "2", "--ca", "3", "--density", "1/10:9/10:3", "--out", str(tmp_path),
                  "--workers", "0", "--quiet"]) == status
     out = capsys.readouterr().out
-    assert ("| duality s <-> 1 - s | yes | FAILS |" in out) == lopsided
+    assert ("| duality s ↔ 1 − s | yes | FAILS |" in out) == lopsided
     assert (tmp_path / "checks.md").read_text(encoding="utf-8") == out
 
 

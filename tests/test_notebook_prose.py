@@ -155,6 +155,11 @@ def _texts(derivation: str):
     ("The a for x at the head of the line; a for all", "The $a$ for $x$ at the head of the line; a for all"),
     ("n = cos ACP = sqrt(1 - m^2), angle BHG = omega, E'' = GZ' = T_1; the arc AEB of section VII",
      r"$n = \cos ACP = \sqrt{1 - m^{2}}$, angle $BHG = \omega$, $E'' = GZ' = T_{1}$; the arc AEB of section VII"),
+    # a chapter's numeral after a numbered formula (the errata's "formula 17 of X", Scheeffer X being the chapter) is
+    # words, a letter after other words a name; an ASCII minus-or-plus (Scheeffer VI.A-B's 2r = b (0.4 -+ sqrt 0.06))
+    # is its sign
+    ("formula 17 of X and (171) of X; the value of X", "formula 17 of X and (171) of X; the value of $X$"),
+    ("the roots 1/2 -+ sqrt(1/12) and 1/2 +- c", r"the roots $1/2 \mp \sqrt{1/12}$ and $1/2 \pm c$"),
 ])
 def test_formulas_and_words_are_told_apart(text, shown):
     assert typeset(text) == shown
@@ -276,7 +281,7 @@ def test_the_about_text_shows_no_code():
 _ASCII_MATHS = re.compile(r"\^|∫∫|\b[A-Za-z]_[A-Za-z0-9{]|(?<![-\w])[A-Za-z]\d\b(?!-\w)"     # V1: V_1
                           r"|(?<![\w$'])(?:[A-Z][a-z]|[a-z][A-Za-z]) [=<>] [A-Za-z0-9(]"     # Oc = c, ab = y
                           r"|(?<!\.)\.\.\d"                                                  # $n = 3$..12
-                          r"|<=|>=|!="                                                       # degree <= 3
+                          r"|<=|>=|!=| -\+ "                                                  # degree <= 3, 0.4 -+ c
                           r"|(?<![\w'])[A-Za-z]\([a-z0-9]\)"                                  # A(z), Y(y)
                           r"|\[-?\d+(?:/\d+)?, -?\d+(?:/\d+)?\]")                              # [-1/2, 1/2]
 

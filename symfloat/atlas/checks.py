@@ -7,7 +7,7 @@ Failing checks (the command exits 1 when one fails):
 * **Poincaré–Hopf**: the index sum at every other sample is 2, families counted with the winding round them
   (a sample without a sum fails);
 * **sweep**: the stable set at an interval's midpoint is the one the sweep saw inside it;
-* **duality s <-> 1 - s**, per cell, inside the swept range: the sweep mirrors and every threshold has
+* **duality s ↔ 1 − s**, per cell, inside the swept range: the sweep mirrors and every threshold has
   its dual (the phase machinery's check), and the intervals mirror:
   boundary k at ``1 -`` boundary m-1-k within their errors, the same stable positions in
   interval k and in interval n-1-k (the box turned upside down is the same box);
@@ -30,11 +30,13 @@ sees beside it (the position stable on neither side, or on both: no change of th
 """
 from __future__ import annotations
 
-from collections import Counter
-
 import math
+from collections import Counter
 from dataclasses import dataclass, field
 from fractions import Fraction
+
+from ..numbers import signs
+from ..report.citations import cited, source_of
 
 __all__ = ["Check", "run_checks", "checks_markdown", "LONG", "MATCH_RAD"]
 
@@ -112,9 +114,9 @@ def _check_duality(cells) -> Check:
                 bad.append(f"{_cell_name(c)}: {_labels(r)} at s = {r['sample_density']:.6f} but {_labels(m)} at "
                            f"s = {m['sample_density']:.6f}")
             if k and abs(r["s_from"] - (1 - m["s_to"])) > r["s_from_error"] + m["s_to_error"] + 1e-12:
-                bad.append(f"{_cell_name(c)}: boundary {r['s_from']:.13f} has no dual (1 - {m['s_to']:.13f})")
+                bad.append(f"{_cell_name(c)}: boundary {r['s_from']:.13f} has no dual (1 − {m['s_to']:.13f})")
     good = _good(cells)
-    return Check("duality s <-> 1 - s", True, not bad, f"{len(good) - len({b.split(':')[0] for b in bad})} of "
+    return Check("duality s ↔ 1 − s", True, not bad, f"{len(good) - len({b.split(':')[0] for b in bad})} of "
                  f"{len(good)} cells dual", bad)
 
 
@@ -257,10 +259,10 @@ def _check_long(cells, lo, hi) -> Check:
                 bad.append(f"{_cell_name(c)}, s = {r['sample_density']:.6f}: the tables give stable tilts "
                            f"{[round(math.degrees(p), 4) for p in printed]}°, the atlas "
                            f"{[round(math.degrees(p), 4) for p in found]}°")
-    summary = (f"{cells_long} long cells (longest edge >= {LONG} x the middle one): {checked} interval samples "
+    summary = (f"{cells_long} long cells (longest edge ≥ {LONG} × the middle one): {checked} interval samples "
                f"and every threshold of the tables against the atlas, {len(bad)} disagreements" if checked
                else f"not applicable: no cell has its longest edge "
-               f">= {LONG} x the middle one")
+               f"≥ {LONG} × the middle one")
     return Check("long box (Scheeffer IX)", True, not bad, summary, bad)
 
 
@@ -271,7 +273,8 @@ def _predictions(cells, lo, hi) -> list[Check]:
     for c, rs in _good(cells).items():
         for r in rs:
             for p in r["predictions"]:
-                entry = by.setdefault(p["derivation"], {"agree": 0, "erratum": 0, "disagree": []})
+                entry = by.setdefault(p["derivation"], {"agree": 0, "erratum": 0, "disagree": [], "read": []})
+                entry["read"].append(p)
                 if p["agrees"]:
                     entry["agree"] += 1
                 elif "erratum" in p["verdicts"]:
@@ -283,10 +286,11 @@ def _predictions(cells, lo, hi) -> list[Check]:
     out = []
     for did in sorted(by):
         e = by[did]
-        out.append(Check(f"printed: {did}", False, not e["disagree"],
+        out.append(Check(f"printed: {cited(e['read'])}", False, not e["disagree"],
                          f"{e['agree']} predictions agree; {e['erratum']} disagree where an erratum is declared; "
                          f"{len(e['disagree'])} disagree otherwise", e["disagree"]))
-    missing = sorted({f"{_cell_name(c)}: {m}" for c, rs in _good(cells).items() for m in rs[0]["sources_not_found"]
+    missing = sorted({f"{_cell_name(c)}: {_cited_entry(m)}" for c, rs in _good(cells).items()
+                      for m in rs[0]["sources_not_found"]
                       if lo < _printed_value(m) < hi})
     kinds = Counter(_seen(m) for m in missing)
     explained = [m for m in missing if _seen(m).endswith(("the print silent beyond", "erratum declared"))]
@@ -301,6 +305,13 @@ def _predictions(cells, lo, hi) -> list[Check]:
                      f"{len(unlocated)} printed thresholds where the solver's stable set changes but no threshold "
                      f"was located", unlocated))
     return out
+
+
+def _cited_entry(entry: str) -> str:
+    """An entry of ``sources_not_found`` (``"scheeffer-x X: corner up ..."``, the derivation's id first) with the
+    source it reads named as a reader cites it (``"Scheeffer 1902 X: corner up ..."``)."""
+    derivation, rest = entry.split(" ", 1)
+    return f"{source_of(derivation)} {rest}"
 
 
 def _printed_value(entry: str) -> float:
@@ -332,7 +343,7 @@ def checks_markdown(checks, meta, limit: int = 40) -> str:
         lines.append(f"| {c.name} | {'yes' if c.fails_command else 'no (reported)'} | {result} | {c.summary} |")
     for c in checks:
         if c.details:
-            lines += ["", f"## {c.name}", ""] + [f"- {d}" for d in c.details[:limit]]
+            lines += ["", f"## {c.name}", ""] + [f"- {signs(d)}" for d in c.details[:limit]]
             if len(c.details) > limit:
                 lines.append(f"- … and {len(c.details) - limit} more")
     return "\n".join(lines) + "\n"

@@ -116,17 +116,18 @@ def _under_heading(text: str, locator: str) -> tuple[int, int] | None:
     return start, end.start() if end else len(text)
 
 
-_MARK = re.compile(r"^(?:\(\d+[a-z]?\)|[IVX]+(?:\.[A-F](?:–[A-F])?)?|§\s*\d+(?:–\d+)?|Example \d+)$")
+_MARK = re.compile(r"^(?:\(\d+[a-z]?\)|[IVX]+\b|§|Example \d|after \()")     # a place the print marks, not a name
 
 
 def citation(source_key: str, locators) -> str:
     """The places *locators* name in a source as a reader cites them: the source's short name and year, then the
-    places in the text's order, each once (``Scheeffer 1902 IV, (79), VI.D, (123)``); a heading or a name of a
-    formula in quotation marks (``Auftrieb Stabilität “formula list”``)."""
+    places in the text's order, each once (``Scheeffer 1902 IV, (79), VI.D, (123)``); a place named by a heading
+    or by the name of a formula, not by a mark of the print, in quotation marks (``Auftrieb Stabilität “formula
+    list”``)."""
     src = get_source(source_key)
     places = list(dict.fromkeys(locators))
     starts = {p: (region(source_key, p) or (len(src.text()), 0))[0] for p in places}
     numbers = {p: int(m.group(1)) if (m := _EQUATION.fullmatch(p)) else math.inf for p in places}
     ordered = sorted(places, key=lambda p: (starts[p], numbers[p], places.index(p)))
     named = f"{src.short} {src.year}" if src.year else src.short
-    return named + " " + ", ".join(p if _MARK.match(p) else f"“{p}”" for p in ordered)
+    return " ".join([named] + [", ".join(p if _MARK.match(p) else f"“{p}”" for p in ordered)] * bool(ordered))

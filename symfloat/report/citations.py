@@ -5,7 +5,7 @@ from __future__ import annotations
 from .. import registry
 from ..model.locator import citation
 
-__all__ = ["cited"]
+__all__ = ["cited", "source_of"]
 
 
 def cited(predictions) -> str:
@@ -16,3 +16,8 @@ def cited(predictions) -> str:
     for p in predictions:
         places.setdefault(registry.manifest(p["derivation"]).source, []).extend(p["locators"])
     return "; ".join(citation(source, locators) for source, locators in places.items())
+
+
+def source_of(derivation_id: str) -> str:
+    """The source a derivation reads, named as a reader cites it (``Scheeffer 1902``)."""
+    return citation(registry.manifest(derivation_id).source, ())

@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import json
-import re
 from fractions import Fraction
 
 __all__ = ["phase_record", "phase_json", "phase_table", "phase_plot"]
@@ -26,27 +25,20 @@ def phase_json(diagram) -> str:
     return json.dumps(phase_record(diagram), indent=2)
 
 
-_ROOT = re.compile(r"sqrt\((\d+)\)")
-
-
-def _signs(text: str) -> str:
-    """*text* of a record (SymPy's closed forms, ``s -+ 1e-06``) as the table shows it: a square root, a minus
-    and a plus-or-minus as their signs (``1/2 − √3/6``, ``s ± 1e-06``); the record keeps its own text."""
-    return _ROOT.sub(r"√\1", text).replace(" -+ ", " ± ").replace(" - ", " − ")
-
-
 def _sources(entries) -> str:
     """The places that print a threshold, cited together where they give the same value by the same closed form
     (``Scheeffer 1902 IV, (79), VI.D, (123), (132a): 1/2 − √3/6 = 0.2113248654052``)."""
-    from .citations import cited            # the table's words only: a phase record is made without them
+    from ..numbers import signs             # the table's words only: a phase record is made without them
+    from .citations import cited
     forms: dict[tuple, list] = {}
     for k in entries:
         forms.setdefault((k["expression"], f"{k['value']:.13f}"), []).append(k)
-    return "; ".join(cited(same) + (f": {_signs(expression)} = {value}" if expression else f": {value}")
+    return "; ".join(cited(same) + (f": {signs(expression)} = {value}" if expression else f": {value}")
                      for (expression, value), same in forms.items())
 
 
 def phase_table(diagram) -> str:
+    from ..numbers import signs
     from .citations import cited
     lines = [f"{diagram.body} ({','.join(diagram.dims)}): stable positions against density "
              f"({len(diagram.densities)} densities, {diagram.seconds:.1f} s)", ""]
@@ -63,10 +55,10 @@ def phase_table(diagram) -> str:
     for k in diagram.unmatched_sources:
         lines.append(f"  DISAGREEMENT: {cited([k])} puts a threshold at s = "
                      f"{k['value']:.13f} ({k['label']}: {k['change']}); the solver finds none there: "
-                     f"{_signs(k['why'])}")
+                     f"{signs(k['why'])}")
     lines.append("")
     for t in diagram.unpaired:
-        lines.append(f"  NO DUAL: s = {t.density:.13f} ({t.label}: {t.change}) has no threshold at 1 - s")
+        lines.append(f"  NO DUAL: s = {t.density:.13f} ({t.label}: {t.change}) has no threshold at 1 − s")
     lines.append("duality s ↔ 1 − s: " + ("holds on the sweep and threshold by threshold" if diagram.duality_ok
                                             else "VIOLATED"))
     return "\n".join(lines)
