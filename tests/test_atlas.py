@@ -397,3 +397,16 @@ def test_the_committed_atlas_is_what_the_present_code_computes(tmp_path):
     rebuilt, rebuilt_meta = read_atlas(tmp_path / "atlas.parquet")
     assert {k: v for k, v in rebuilt_meta.items() if k != "code"} == {k: v for k, v in meta.items() if k != "code"}
     assert _same_atlas_rows(rows, rebuilt) == []
+
+
+@pytest.mark.slow      # the long box's tables read at 2,000 densities per cell: about 15 s
+def test_the_committed_checks_are_what_the_present_code_writes_of_the_committed_atlas():
+    # docs/atlas/checks.md is a function of the committed rows (symfloat atlas writes it after the cells): its words
+    # follow the code that writes them without the cells computed again (their check is the slow test above)
+    import json
+    from symfloat.atlas.checks import checks_markdown
+    from symfloat.atlas.run import CUBE_REFERENCE
+    atlas = Path(__file__).resolve().parents[1] / "docs" / "atlas"
+    rows, meta = read_atlas(atlas / "atlas.parquet")
+    reference = json.loads((atlas / CUBE_REFERENCE).read_text(encoding="utf-8"))
+    assert checks_markdown(run_checks(rows, meta, reference), meta) == (atlas / "checks.md").read_text(encoding="utf-8")
