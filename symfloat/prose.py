@@ -120,7 +120,8 @@ _TOKEN = re.compile(r"""
   | (?P<relation><->|<=|>=|!=|>>|<<|[=<>≤≥≠≈↔≫≪]|->|→)
   | (?P<ratio>(?<=[ ]):(?=[ ]))                                                    # I : K = EF^2 : AB^2
   | (?P<power>[²³⁴¹⁰⁵⁶⁷⁸⁹ⁿ]+)                                                       # y²ⁿ
-  | (?P<operator>\+-|-\+|\.\.\.|…|[-+*/(){}±∓·×−√∫∞πθφωμαβγδεκλνξρστψΓΔ])                 # a + ... + g, {a + b}
+  | (?P<operator>\+-|-\+|\.\.\.|…|[-+*/(){}±∓·×−√∫∞πθφωμαβγδεκλνξρστψΓΔ]
+                 |\|(?=[A-Za-z0-9(√∫])|(?<=[A-Za-z0-9)'}])\|)          # |u_x|: a bar against what it holds                 # a + ... + g, {a + b}
   | (?P<other>.)
 """, re.X | re.S)
 
@@ -437,6 +438,21 @@ def _names(tokens: list, followed: bool = False) -> list:
     return out
 
 
+_SUBSCRIPTS = dict(zip("₀₁₂₃₄₅₆₇₈₉", "0123456789"))
+_LETTER_POWERS = dict(zip("ᵃᵇᶜᵈᵉᵏᵐᵖᵗˣʸ", "abcdekmptxy"))
+# a Unicode index or a power of letters written against a name (not a number's superscript digits, which
+# the tokenizer reads as powers): K₀, tan² φ₀, ∫₀ᵇ yᵖ dy
+_UNICODE_SCRIPT = re.compile(rf"(?<=[A-Za-z0-9)\u0370-\u03ff∫{''.join(_SUBSCRIPTS)}])(?:([{''.join(_SUBSCRIPTS)}]+)"
+                             rf"|([{''.join(_LETTER_POWERS)}]+))")
+
+
+def _ascii_script(m: re.Match) -> str:
+    """A Unicode index or letter power as the ASCII the tokenizer reads (``₀`` -> ``_0``, ``ᵇ`` -> ``^b``)."""
+    if m.group(1):
+        return "_" + "".join(_SUBSCRIPTS[c] for c in m.group(1))
+    return "^" + "".join(_LETTER_POWERS[c] for c in m.group(2))
+
+
 def _typeset_plain(text: str, quoted: bool = False, followed: bool = False) -> str:
     """*text* typeset; *quoted*: the source's words in quotation marks, where a segment's name or a difference of
     letters stays as the source wrote it (``'h/3{2D - (G+g)/2}'``, ``'Ac = a - c'``); *followed*: more of the
@@ -444,6 +460,7 @@ def _typeset_plain(text: str, quoted: bool = False, followed: bool = False) -> s
     text = re.sub(r"((?<![\w.])[A-Za-z]|\))\.(?=\()", r"\1·", text)     # u.(G - B), (du).(G - B): a product
     text = re.sub(r"(?<=[\w)])\*\*(?=[\w(])", "^", text)                 # a**2: a power
     text = re.sub(r"\bsqrt\{([^{}$]*)\}", r"sqrt(\1)", text)              # sqrt{2}: a root
+    text = _UNICODE_SCRIPT.sub(_ascii_script, text)                   # K₀, φ₀, ∫₀ᵇ yᵖ: an index, a power
     tokens = [(m.group(0), _kind(m.group(0), m.lastgroup, quoted), m.lastgroup) for m in _TOKEN.finditer(text)]
     tokens = _three_points(_applied(_attached(tokens)))
     tokens = [(t, k) for t, k, _ in (tokens if quoted else _names(tokens, followed))]
@@ -591,8 +608,15 @@ def typeset(text: str) -> str:
                 done = _code_formula(inner) or part
             out.append(done)
         else:
-            out.append(_typeset_plain(part, followed=i + 1 < len(parts) and bool(parts[i + 1])))
+            out.append(_degrees(_typeset_plain(part, followed=i + 1 < len(parts) and bool(parts[i + 1]))))
     return "".join(out)
+
+
+def _degrees(text: str) -> str:
+    """An angle in words (``at 45 deg``, ``20 deg 3' 34.50''``) with its sign, ``45°``; in a formula the degrees
+    are set as ``^{\\circ}``."""
+    return "".join(piece if piece.startswith("$") else re.sub(r"(?<=\d) deg\b", "°", piece)
+                   for piece in re.split(r"(\$[^$]*\$)", text))
 
 
 # a name of the program: dotted (``symfloat.geometry.floating``, ``Body.cylinder``), or in a code span a word

@@ -160,6 +160,14 @@ def _texts(derivation: str):
     # is its sign
     ("formula 17 of X and (171) of X; the value of X", "formula 17 of X and (171) of X; the value of $X$"),
     ("the roots 1/2 -+ sqrt(1/12) and 1/2 +- c", r"the roots $1/2 \mp \sqrt{1/12}$ and $1/2 \pm c$"),
+    # Unicode indices and letter powers written against a name are the formula's (Euler's tan² φ₀ and K₀, the
+    # integrals ∫₀ᵇ yᵖ), bars against what they hold are absolute values (Scheeffer X's |u_x| = |u_y|, IV-V's
+    # |S S_2|) while a table's bars stand apart; an angle in words has its sign
+    ("at tan² φ₀ = 2g, K₀ printed, ∫₀ᵇ yᵖ dy", r"at $\tan^{2} \varphi_{0} = 2g$, $K_{0}$ printed, $\int_{0}^{b} y^{p} dy$"),
+    ("makes |u_x| = |u_y|; so e_2 = |S S_2| | K₀ rebuilt |",
+     r"makes $|u_{x}| = |u_{y}|$; so $e_{2} = |S S_{2}|$ | $K_{0}$ rebuilt |"),
+    ("at 45 deg (the negation), exact 20 deg 3' 34.50'', tan phi(45 deg)",
+     r"at 45° (the negation), exact 20° 3' 34.50'', $\tan \varphi(45 ^{\circ})$"),
 ])
 def test_formulas_and_words_are_told_apart(text, shown):
     assert typeset(text) == shown
