@@ -409,8 +409,9 @@ def _names(tokens: list, followed: bool = False) -> list:
             and re.fullmatch(r"[A-Za-z]'?", tokens[solid[n + 2]][0])          # a and c; a for x (read instead)
         among_words = (before is None or before[1] == "text" or before[0] == "(") and (
             after is None and followed or after is not None and (after[1] == "text" or t == "A" and after[2] == "word"))
-        if t == "a" and among_words and not listed and (after is None or after[0] not in _AFTER_A):
-            out[i] = (t, "text", g)                      # the article: a box, a $Y$-dependent centroid
+        if t == "a" and not listed and (among_words and (after is None or after[0] not in _AFTER_A) or (
+                before is None or before[1] == "text") and after is not None and after[2] == "number"):
+            out[i] = (t, "text", g)                      # the article: a box, a $Y$-dependent centroid, a 3 × 3 grid
             continue
         if t == "A" and among_words and (before is None or before[0] in ".:;!?") and not listed and (
                 after is None or after[0] not in _AFTER_A_POINT):
@@ -461,6 +462,7 @@ def _typeset_plain(text: str, quoted: bool = False, followed: bool = False) -> s
     text = re.sub(r"(?<=[\w)])\*\*(?=[\w(])", "^", text)                 # a**2: a power
     text = re.sub(r"\bsqrt\{([^{}$]*)\}", r"sqrt(\1)", text)              # sqrt{2}: a root
     text = _UNICODE_SCRIPT.sub(_ascii_script, text)                   # K₀, φ₀, ∫₀ᵇ yᵖ: an index, a power
+    text = re.sub(r"(?<![\w.])(\d+(?:/\d+)?) x (?=\d)", r"\1 × ", text)     # the box 1 x 1 x 2: a product
     tokens = [(m.group(0), _kind(m.group(0), m.lastgroup, quoted), m.lastgroup) for m in _TOKEN.finditer(text)]
     tokens = _three_points(_applied(_attached(tokens)))
     tokens = [(t, k) for t, k, _ in (tokens if quoted else _names(tokens, followed))]
