@@ -262,7 +262,7 @@ d.quote("mid-section-triangles", "§1 prismatoid volume",
                         answer="The five triangles are the mid-sections of the pyramids over the faces of G, each "
                                "made of the midpoints of its three edges from the apex; the midpoint of BF is c (the"
                                " parallelograms aklb and lmde fix it), and no midpoint is called o."),
-        note="the triangles' vertices are ordered as the base triangles O E F, O F G, ... (blc as l b c)")
+        note="the triangles' vertices are ordered as the base triangles OEF, OFG, … (blc as lbc)")
 
 d.quote("mid-section-triangles-sum", "§1 prismatoid volume",
         r"ihr Inhalt beträgt also zusammen  $= \frac{G}{4}$",
