@@ -610,15 +610,21 @@ def typeset(text: str) -> str:
                 done = _code_formula(inner) or part
             out.append(done)
         else:
-            out.append(_degrees(_typeset_plain(part, followed=i + 1 < len(parts) and bool(parts[i + 1]))))
+            out.append(_signs_in_words(_typeset_plain(part, followed=i + 1 < len(parts) and bool(parts[i + 1]))))
     return "".join(out)
 
 
-def _degrees(text: str) -> str:
-    """An angle in words (``at 45 deg``, ``20 deg 3' 34.50''``) with its sign, ``45°``; in a formula the degrees
-    are set as ``^{\\circ}``."""
-    return "".join(piece if piece.startswith("$") else re.sub(r"(?<=\d) deg\b", "°", piece)
-                   for piece in re.split(r"(\$[^$]*\$)", text))
+_WORD_SIGNS = {"+-": "±", "-+": "∓"}
+
+
+def _signs_in_words(text: str) -> str:
+    """Signs written in ASCII among words, outside any formula: an angle (``at 45 deg``, ``20 deg 3' 34.50''``)
+    with its sign, ``45°`` (in a formula the degrees are ``^{\\circ}``), and a sign named alone (``the +- read
+    through the square``) as itself, ``±``."""
+    def words(piece: str) -> str:
+        piece = re.sub(r"(?<=\d) deg\b", "°", piece)
+        return re.sub(r"(?<!\S)(\+-|-\+)(?!\S)", lambda m: _WORD_SIGNS[m.group(1)], piece)
+    return "".join(piece if piece.startswith("$") else words(piece) for piece in re.split(r"(\$[^$]*\$)", text))
 
 
 # a name of the program: dotted (``symfloat.geometry.floating``, ``Body.cylinder``), or in a code span a word

@@ -168,6 +168,7 @@ def _texts(derivation: str):
      r"makes $|u_{x}| = |u_{y}|$; so $e_{2} = |S S_{2}|$ | $K_{0}$ rebuilt |"),
     ("at 45 deg (the negation), exact 20 deg 3' 34.50'', tan phi(45 deg)",
      r"at 45° (the negation), exact 20° 3' 34.50'', $\tan \varphi(45 ^{\circ})$"),
+    ("the +- read through the square (Scheeffer VII-VIII's note)", "the ± read through the square (Scheeffer VII-VIII's note)"),
     # an x between numbers is a product (Euler §§192-219's witness "the box 1 x 1 x 2"), and the a before a number
     # the article
     ("a 3 x 3 grid, the box 1 x 1 x 2 by exact clipping, x = 2 x 3",
