@@ -135,11 +135,11 @@ def scene_table(record) -> str:
 def _self_check(checks: dict) -> str:
     """The solver's index sum in words: a body's Poincaré–Hopf sum over the equilibria on the sphere of up
     vectors (it must be 2), a section's minima − maxima of the heel angle over its fundamental arc (0), and the
-    searches that reached it (the solver stops with an error where the sum is not what it must be); a cylinder
-    has none, and the line says so and how its tilts were searched."""
-    if "searches" not in checks:                    # a cylinder: its tilts on a grid, no index sum
-        return (f"none for a cylinder ({checks['note']}); its tilts from 0° to 90° searched on a grid of "
-                f"{checks['grid']} points")
+    searches that reached it (the solver stops with an error where the sum is not what it must be); a cylinder's
+    minima − maxima of its tilt over a whole turn in its meridian plane (0), its tilts searched on one grid."""
+    if "searches" not in checks:                    # a cylinder: its tilts on one grid
+        return (f"minima − maxima of the tilt over a whole turn is {checks['minima_minus_maxima']}, as it must be "
+                f"(the tilts from 0° to 90° on a grid of {checks['grid']} points; {checks['note']})")
     searches = checks["searches"]
     if "poincare_hopf_index_sum" in checks:
         families = [("undecided" if i is None else str(i)) for i in checks.get("family_indices", ())]

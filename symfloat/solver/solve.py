@@ -567,6 +567,16 @@ def _fundamental_arc(group) -> tuple[float, float, bool]:
     return axis, axis + math.pi / rotations, True
 
 
+def _folded_potential(r, L, theta, s, dps=None):
+    """The cylinder's potential at tilt *theta* (float64, or *dps* digits) for a tilt outside 0 … 90° too, by its
+    symmetries: turned about its axis by a half turn (tilt −θ) or end over end (tilt 180° − θ) it is the same
+    body.  The meridian's formulas hold on 0 … 90° only (beyond it the potential read 0: the lying cylinder at a
+    density where its second variation vanishes was called unstable)."""
+    from ..geometry.cylinder import cylinder_slice
+    theta = abs(theta)
+    return cylinder_slice(r, L, min(theta, math.pi - theta), s, dps=dps).U
+
+
 def _cylinder(scene: Scene):
     from ..geometry.cylinder import cylinder_slice      # its quadrature nodes are computed on import: cylinders only
     r, L = (float(x) for x in scene.dims)
@@ -590,17 +600,39 @@ def _cylinder(scene: Scene):
         up = _clean((math.sin(q.theta), 0.0, math.cos(q.theta)))
         tol = eigenvalue_error(lipschitz, err, scale)
         stability, evidence = stability_of((q.fprime,), tol), "second variation"
-        if stability == "indifferent":
-            stability = higher_order(null_sides(lambda eps: float(cylinder_slice(r, L, q.theta + eps, s).U)
-                                               - float(c.U), scale), [])
+        if stability == "indifferent":          # the potential beside it decides, or nothing does
+            # upright and lying are equilibria exactly (by symmetry), so the change beside them is read at 30
+            # digits; a tilted root is a float64 one, whose position's error float64's rounding floor covers
+            dps, rounding = (30, 1e-25) if q.theta in (0.0, math.pi / 2) else (None, 1e-13)
+            at = _folded_potential(r, L, q.theta, s, dps)
+            stability = higher_order(null_sides(lambda eps: float(_folded_potential(r, L, q.theta + eps, s, dps) - at),
+                                                scale, rounding), [])
             evidence = "higher orders" if stability != "indifferent" else "undecided"
         out.append(Equilibrium(up, math.degrees(q.theta), stability, "isolated", float(c.U),
                                c.shape, (q.fprime,), err, method, 2 if q.theta == 0.0 else None,
                                stability_evidence=evidence))
     out.sort(key=lambda e: (round(e.potential / scale, 12), e.tilt_deg))
+    index = _cylinder_index(out)
+    if index != 0:
+        found = f"is {index}, not 0" if index is not None else "cannot be made (a position's stability is undecided)"
+        raise IndexCheckError(f"{_name(scene)}: minima - maxima of the tilt {found}: an equilibrium is missing or "
+                              f"mis-classified")
     return out, {"note": "rotations about the axis are a continuous symmetry: each tilt is one class "
                          "(a circle of positions when tilted); stability is across the tilt",
-                 "grid": 180}
+                 "grid": 180, "minima_minus_maxima": index, "expected_index_sum": 0}
+
+
+def _cylinder_index(equilibria) -> int | None:
+    """Minima − maxima of the cylinder's potential over a whole turn of the tilt in its meridian plane, which
+    must be 0 (a function on a circle): the tilts 0 … 90° are a quarter of it, upright and lying its mirrors'
+    fixed points (each met twice in a turn), a tilted position four times; ``None`` when a position's stability
+    is undecided."""
+    index = 0
+    for e in equilibria:
+        if e.stability not in ("stable", "unstable"):
+            return None
+        index += (2 if e.tilt_deg in (0.0, 90.0) else 4) * (1 if e.stability == "stable" else -1)
+    return index
 
 
 def solve(scene: Scene) -> Solution:
