@@ -129,5 +129,5 @@ def citation(source_key: str, locators) -> str:
     starts = {p: (region(source_key, p) or (len(src.text()), 0))[0] for p in places}
     numbers = {p: int(m.group(1)) if (m := _EQUATION.fullmatch(p)) else math.inf for p in places}
     ordered = sorted(places, key=lambda p: (starts[p], numbers[p], places.index(p)))
-    named = f"{src.short} {src.year}" if src.year else src.short
-    return " ".join([named] + [", ".join(p if _MARK.match(p) else f"“{p}”" for p in ordered)] * bool(ordered))
+    cited = ", ".join(p if _MARK.match(p) else f"“{p}”" for p in ordered)
+    return f"{src.dated} {cited}" if cited else src.dated

@@ -43,6 +43,11 @@ class Source:
         title without a gloss (Hasáb úszása)."""
         return self.title.split(" (")[0] if self.author == "Anonymous" else self.author.split()[-1]
 
+    @property
+    def dated(self) -> str:
+        """The short name with the year where the text has one (Scheeffer 1902; Hasáb úszása)."""
+        return f"{self.short} {self.year}" if self.year else self.short
+
     def text(self) -> str:
         """The full transcription, exactly as shipped."""
         return _read(self.filename)

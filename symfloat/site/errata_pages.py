@@ -86,8 +86,7 @@ def _label(facet: str, value: str) -> str:
     if facet == "apparatus":
         return _APPARATUS_WORDS[value]
     if facet == "source" and value in SOURCES:
-        year = SOURCES[value].year
-        return f"{SOURCES[value].short} {year}" if year else SOURCES[value].short
+        return SOURCES[value].dated
     return value
 
 
