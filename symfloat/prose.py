@@ -98,6 +98,7 @@ _SIGNS = "πθφωμαβγδεκλνξρστψΓΔ"      # the Greek letters abo
 _SECTION = re.compile(r"[IVX]+\.[A-Z](?:[-–][A-Z])?")        # a section of a chapter: VI.C, VI.C-F
 # what typeset() does not set as ASCII: mathematics already in dollars, a code span, a quotation, a section
 _CODE = r"``[^`]+``|`[^`]+`"                 # a code span
+_FORMULA = re.compile(r"(\$[^$]*\$)")        # a formula already set: split on it, it stays as it is
 _KEPT = re.compile(rf"(\$[^$]*\$|{_CODE}|(?:(?<=[\s(\[])|^)'(?:[^'\n$]|\$[^$]*\$)+?'(?![\w'])"
                    rf"|\b{_SECTION.pattern}\b)")     # a quotation holds whole formulas: '$F'(z)$ zunimmt'
 _ROMAN = ("I", "II", "III", "IV", "V", "VI", "VII", "VIII", "IX", "X", "XI", "XII")      # a chapter's numeral
@@ -120,8 +121,8 @@ _TOKEN = re.compile(r"""
   | (?P<relation><->|<=|>=|!=|>>|<<|[=<>≤≥≠≈↔≫≪]|->|→)
   | (?P<ratio>(?<=[ ]):(?=[ ]))                                                    # I : K = EF^2 : AB^2
   | (?P<power>[²³⁴¹⁰⁵⁶⁷⁸⁹ⁿ]+)                                                       # y²ⁿ
-  | (?P<operator>\+-|-\+|\.\.\.|…|[-+*/(){}±∓·×−√∫∞πθφωμαβγδεκλνξρστψΓΔ]
-                 |\|(?=[A-Za-z0-9(√∫])|(?<=[A-Za-z0-9)'}])\|)          # |u_x|: a bar against what it holds                 # a + ... + g, {a + b}
+  | (?P<operator>\+-|-\+|\.\.\.|…|[-+*/(){}±∓·×−√∫∞πθφωμαβγδεκλνξρστψΓΔ]         # a + ... + g, {a + b}
+                 |\|(?=[A-Za-z0-9(√∫])|(?<=[A-Za-z0-9)'}])\|)                   # |u_x|: a bar against what it holds
   | (?P<other>.)
 """, re.X | re.S)
 
@@ -602,7 +603,7 @@ def typeset(text: str) -> str:
             out.append(part)
         elif part.startswith("'"):                  # the marks are no prime of the quotation's last name
             out.append("'" + "".join(piece if piece.startswith("$") else _typeset_plain(piece, quoted=True)
-                                     for piece in re.split(r"(\$[^$]*\$)", part[1:-1])) + "'")
+                                     for piece in _FORMULA.split(part[1:-1])) + "'")
         elif part.startswith("`"):
             inner = part.strip("`")
             done = _typeset_plain(inner)
@@ -624,7 +625,7 @@ def _signs_in_words(text: str) -> str:
     def words(piece: str) -> str:
         piece = re.sub(r"(?<=\d) deg\b", "°", piece)
         return re.sub(r"(?<!\S)(\+-|-\+)(?!\S)", lambda m: _WORD_SIGNS[m.group(1)], piece)
-    return "".join(piece if piece.startswith("$") else words(piece) for piece in re.split(r"(\$[^$]*\$)", text))
+    return "".join(piece if piece.startswith("$") else words(piece) for piece in _FORMULA.split(text))
 
 
 # a name of the program: dotted (``symfloat.geometry.floating``, ``Body.cylinder``), or in a code span a word
