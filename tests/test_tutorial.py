@@ -2,6 +2,7 @@
 through SYMFLOAT_LIBRARY, its one deliberate misprint found, and a wrong correction refused."""
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -26,6 +27,18 @@ def test_the_tutorial_finds_its_misprint(tmp_path):
                         "cap-centroid/centroid": "erratum", "cap-centroid/hemisphere": "verified"}
     errata = _symfloat(TUTORIAL, tmp_path, "errata", "cap")
     assert errata.returncode == 0 and "x_s = 3 (2r - h)^2 / (4 (3r - h))" in errata.stdout
+
+
+def test_the_tutorial_shows_what_the_command_prints(tmp_path):
+    # docs/tutorial.md's table of `symfloat verify cap`, row by row: everything but the figures' digits
+    # (the hemisphere's witness once said "2 methods" there, where the command says "1 method")
+    def rows(text):
+        return [re.sub(r"≤ [^,]*,", "≤ …,", line).split() for line in text.splitlines()
+                if line.startswith("cap-centroid/")]
+    shown = (TUTORIAL.parent / "tutorial.md").read_text(encoding="utf-8").split("symfloat verify cap\n", 1)[1]
+    out = _symfloat(TUTORIAL, tmp_path, "verify", "cap")
+    assert out.returncode == 0, out.stderr
+    assert rows(shown.split("```", 1)[0]) == rows(out.stdout) != []
 
 
 def test_a_wrong_correction_is_refused(tmp_path):
