@@ -15,7 +15,7 @@
     symfloat check PRINTED --against DEFINITION [--against ...] [--where INEQUALITIES] [--domain x=A:B,...]
                    [--format text|json] [--output FILE]
 
-Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET`` set to anything but ``0``) silences
+Progress goes to stderr; ``--quiet`` (or ``SYMFLOAT_QUIET`` set to anything but ``0`` or empty) silences
 it.  The default outputs (``docs/``, ``notebooks/``, ``build/site``) are those of the library of texts
 ``SYMFLOAT_LIBRARY`` names, else of the project checkout, wherever the command runs
 (:mod:`symfloat.project`); a path given with ``--output`` is taken as given, and checked before any work
