@@ -28,6 +28,8 @@ def _formula_entry(d: DerivationReport, f, by_id: dict) -> dict:
     if f.erratum:
         entry["erratum"] = {"kind": f.erratum["kind"], "confidence": f.erratum["confidence"],
                             "corrected": f.erratum["corrected"]}
+        if f.corrected_numeric:
+            entry["erratum"]["numeric"] = f.corrected_numeric     # the witnesses of the corrected reading
     return entry
 
 
@@ -157,6 +159,12 @@ def _same_numeric(a: dict, b: dict) -> bool:
     return close and rest
 
 
+def _witness_differences(name: str, committed: list, fresh: list) -> list[str]:
+    out = [f"{name}: {len(committed)} witness records committed, {len(fresh)} now"] if len(committed) != len(fresh) else []
+    return out + [f"{name}: witness {x.get('method')} differs" for x, y in zip(committed, fresh)
+                  if not _same_numeric(x, y)]
+
+
 def record_differences(committed: dict, fresh: dict) -> list[str]:
     """Where two verification records differ in what must not change: everything but timings, witness
     figures compared to what another machine reproduces (:func:`_same_numeric`).
@@ -201,13 +209,14 @@ def record_differences(committed: dict, fresh: dict) -> list[str]:
     out += [f"{i}: not in the committed record" for i in new.keys() - old.keys()]
     for i in sorted(old.keys() & new.keys()):
         a, b = old[i], new[i]
-        for key in sorted((a.keys() | b.keys()) - {"numeric"}):
+        for key in sorted((a.keys() | b.keys()) - {"numeric", "erratum"}):
             if a.get(key) != b.get(key):
                 out.append(f"{i}: {key} differs")
-        na, nb = a.get("numeric", []), b.get("numeric", [])
-        if len(na) != len(nb):
-            out.append(f"{i}: {len(na)} witness records committed, {len(nb)} now")
-        out += [f"{i}: witness {x.get('method')} differs" for x, y in zip(na, nb) if not _same_numeric(x, y)]
+        ea, eb = a.get("erratum") or {}, b.get("erratum") or {}
+        if {k: v for k, v in ea.items() if k != "numeric"} != {k: v for k, v in eb.items() if k != "numeric"}:
+            out.append(f"{i}: erratum differs")
+        out += _witness_differences(i, a.get("numeric", []), b.get("numeric", []))
+        out += _witness_differences(f"{i} (corrected)", ea.get("numeric", []), eb.get("numeric", []))
     sa = {k: v for k, v in committed["summary"].items() if k != "seconds"}
     sb = {k: v for k, v in fresh["summary"].items() if k != "seconds"}
     out += [f"summary: {k} differs" for k in sorted(sa.keys() | sb.keys()) if sa.get(k) != sb.get(k)]
