@@ -62,6 +62,8 @@ def parse_number(text, what: str) -> Fraction:
 
     >>> parse_number(" 2/9 ", "density")
     Fraction(2, 9)
+    >>> parse_number("0.5/2", "density")        # a decimal over a whole number
+    Fraction(1, 4)
     """
     t = str(text).strip()
     if t.lower().lstrip("+-") in ("nan", "inf", "infinity"):
@@ -72,10 +74,10 @@ def parse_number(text, what: str) -> Fraction:
                          f"{MAX_LITERAL} characters), not {_shown(text)}")
     if match.group(1) is not None and abs(int(match.group(1))) > MAX_EXPONENT:
         raise SceneError(f"{what} {_shown(text)} is out of range (exponent beyond ±{MAX_EXPONENT})")
-    try:
-        return Fraction(t)
-    except ZeroDivisionError:
-        raise SceneError(f"{what} {_shown(text)} divides by zero") from None
+    numerator, _, denominator = t.partition("/")
+    if denominator and int(denominator) == 0:
+        raise SceneError(f"{what} {_shown(text)} divides by zero")
+    return Fraction(numerator) / int(denominator or 1)
 
 
 def parse_whole(text, what: str, low: int, high: int) -> int:
