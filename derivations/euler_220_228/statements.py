@@ -699,30 +699,33 @@ SHIFT = (r"From $y = 0$ to $b$: $\int dy\sqrt{bb-yy} = \pi b^2/4 = bD/2a$, $\int
          r"$\int y^4\,dy\surd = \pi b^6/32 = b^5D/16a$ ($D = \pi ab/2$; the first two as printed in §226). The line "
          "that follows, $abD/2 - bcD/4 + bccD/16a$, is made of exactly these values, so Euler had them. The print "
          "gives $b^3D/8a$, $b^5D/16a$, $b^9D/16a$: each value moved one integral on, consistently through the three "
-         "equations of the line, and the last filled with a power that belongs to none. A scan misreads glyphs; it "
-         "does not move values from one equation to the next: the consistency criterion of the errata's kinds makes "
-         "it the print's (the compositor setting the values against the wrong integrals). Medium, since the printed "
-         "page cannot be seen (was the scan's, low).")
+         "equations of the line, and the last filled with a power that belongs to none. A scan of glyphs misreads "
+         "them; it does not move values from one equation to the next: the consistency criterion of the errata's "
+         "kinds makes it the print's (the compositor setting the values against the wrong integrals). But this "
+         "transcription is a model's reading, which continues patterns (the pairs of factors of §234's table are "
+         "booked as the transcription's) and may have moved the values itself; the printed page cannot be seen: "
+         "low.")
 SHIFT_OBJECTION = ("A scan can lose a line (a fault of the transcription by the criteria): with the first value "
                    "dropped, the others would each move one place on.")
 SHIFT_ANSWER = ("A lost value leaves an integral without its value; here all three equations stand, each with a value "
                 "of the right form for its neighbour, and the last with $b^9D/16a$, which no line of the page holds. "
-                "The shift is the print's; the page cannot be seen, hence medium.")
+                "Not a lost line, then: a shift, the compositor's or the transcription's (a model's reading that "
+                "continues patterns); the page cannot be seen, hence low.")
 d.quote("U0-value", "§227", r"Verum est $\int dy V(bb-yy) = \frac{b^3 D}{8a}$",
         reading=(U0, b ** 3 * D / (8 * a)),
-        erratum=Erratum("misprint", "medium", r"\int dy \sqrt{bb-yy} = \frac{bD}{2a}", SHIFT,
+        erratum=Erratum("misprint", "low", r"\int dy \sqrt{bb-yy} = \frac{bD}{2a}", SHIFT,
                         corrected_reading=(U0, b * D / (2 * a)),
                         objection=SHIFT_OBJECTION, answer=SHIFT_ANSWER),
         note=claim("∫dy√(bb-yy) = b³D/8a (as printed)."))
 d.quote("U2-value-c", "§227", r"$\int yy dy V(bb-yy) = \frac{b^5 D}{16a}$", reading=(U2, b ** 5 * D / (16 * a)),
-        erratum=Erratum("misprint", "medium", r"\int yy dy \sqrt{bb-yy} = \frac{b^3 D}{8a}", SHIFT,
+        erratum=Erratum("misprint", "low", r"\int yy dy \sqrt{bb-yy} = \frac{b^3 D}{8a}", SHIFT,
                         corrected_reading=(U2, b ** 3 * D / (8 * a)),
                         objection=SHIFT_OBJECTION,
                         answer="$abD/2 - bcD/4 + bccD/16a$ uses $b^3D/8a$ for this integral, as §226 prints it; the "
                                "value printed here is the next integral's, the shift of the line. " + SHIFT_ANSWER),
         note=claim("∫yy dy√(bb-yy) = b⁵D/16a (as printed)."))
 d.quote("U4-value", "§227", r"$\int y^4 dy V(bb-yy) = \frac{b^9 D}{16a}$", reading=(U4, b ** 9 * D / (16 * a)),
-        erratum=Erratum("misprint", "medium", r"\int y^4 dy \sqrt{bb-yy} = \frac{b^5 D}{16a}", SHIFT,
+        erratum=Erratum("misprint", "low", r"\int y^4 dy \sqrt{bb-yy} = \frac{b^5 D}{16a}", SHIFT,
                         corrected_reading=(U4, b ** 5 * D / (16 * a)),
                         objection=SHIFT_OBJECTION + " And $b^9$ may be a 5 the scan read as 9.",
                         answer=r"The term $bccD/16a$ of the next line is $(cc/b^4) \cdot b^5D/16a$, so Euler had "

@@ -444,7 +444,8 @@ d.quote("Y-family", "§231", r"$Y = \alpha y^n + \beta y^{n-1} + \gamma y^{n-2} 
                          r"(b^2/3)/(\pi b/4) = 4b/(3\pi)$, no rational multiple of $b$, while the powers $y^{jn}$ "
                          "reduce by the rational factors of the recurrence (§232 uses $y^n$ and $y^{2n}$). The "
                          "exponents $2n$, $3n$ read as the descending $n - 1$, $n - 2$ of an ordinary polynomial; the "
-                         "print cannot be seen (a slip of 1749 is not excluded): medium."),
+                         "change is no glyph a scan confuses, and the print cannot be seen (a slip of 1749 is not "
+                         "excluded): low."),
                         corrected_reading=(sp.Subs(Y_corrected, (y, n), (0, 2)), 0),
                         objection=(r"A descending polynomial $\alpha y^n + \beta y^{n-1} + \gamma y^{n-2} + \dots$ is "
                                    "the most ordinary way of writing a general function, and the change to $y^{2n}$, "
@@ -1120,14 +1121,17 @@ d.quote("waterplane-area-grows", "§239", r"tum enim non solum area eius $z D$ e
         note=claim("the waterplane's area 2D grows with the waterplane (read with the rectangle of §213)."))
 d.says("stability-EF-named", "§239", r"atque momentum respectu axis latitudinalis", "momentum",
        Is(M * (Kw / V - OG), at={EF: AB, mu: nu}),
-       erratum=Erratum("misprint", "high", r"\text{atque stabilitas respectu axis latitudinalis}",
+       erratum=Erratum("misprint", "medium", r"\text{atque stabilitas respectu axis latitudinalis}",
                        "The sentence gives two quantities in parallel, 'stabilitas nauis respectu axis longitudinalis "
                        r"$AB = M(EF^2 D/(\mu V) - OG)$ atque momentum respectu axis latitudinalis $= M(AB^2 D/(\nu V) "
                        "- OG)$'; the second, with the factor $M$ and the term $-OG$, is the stability about EF (§201, "
                        r"§203), not the moment: the moment of the waterplane about EF is $K = AB^2 D/\nu$ (§238, the "
                        "sentence before). Read as printed the moment $K$ would equal $M(K/V - OG)$, which it does not "
-                       "($K = 1$, $M = 2$, $V = 1$, $OG = 1/4$: $K = 1$, $M(K/V - OG) = 3/2$). A scan does not turn "
-                       "'stabilitas' into 'momentum': a word of the print.",
+                       "($K = 1$, $M = 2$, $V = 1$, $OG = 1/4$: $K = 1$, $M(K/V - OG) = 3/2$). A scan of glyphs does "
+                       "not turn 'stabilitas' into 'momentum': a word of the print. But this transcription is a "
+                       "model's reading, which writes words and may take one from the sentence before (§238's "
+                       "'momentum'), as §230's 'longitudinalis' for 'latitudinalis' may be (medium there too): "
+                       "medium.",
                        corrected_reading=d.reads("stabilitas", Is(M * (Kw / V - OG), at={EF: AB, mu: nu})),
                        objection="'Momentum' may be meant in the older sense of the moment of the righting forces "
                                  "(§194: 'momentum virium … quae ad restituendam nauem tendunt'), which is what "

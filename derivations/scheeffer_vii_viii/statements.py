@@ -611,18 +611,20 @@ d.quote("118-domain", "(118)",
         r"wo das Zeichen  $\int$  auf die Fläche  $G H D = F$  und das Zeichen  $\int^1$  auf die Fläche  $D M L = f$  "
         r"auszudehnen ist.",
         reading=(area21("GHD"), F21),
-        erratum=Erratum("misprint", "medium", r"\text{auf die Fläche } A G H C D = F",
+        erratum=Erratum("misprint", "low", r"\text{auf die Fläche } A G H C D = F",
                         F_LABEL + ". GHD is a triangle with the vertex D, the corner where the dry part $f = DML$ of the "
-                        r"lower base lies; its area ($\tfrac{5}{12}$ on the square) is not $F$. Not a scan fault (two letters "
-                        "missing and none misread); medium, since Fig. 21 is lost but VII fixes $F$, and (118) "
-                        "integrates over $F$ ((95a) over AGHCD).",
+                        r"lower base lies; its area ($\tfrac{5}{12}$ on the square) is not $F$. Two letters missing and none "
+                        "misread is no glyph a scan confuses, but this transcription is a model's reading, which "
+                        "drops and adds letters; VII fixes $F$ and (118) integrates over $F$ ((95a) over AGHCD), so "
+                        "the correction stands, and, as for GBH in VIII, the cause is open: low, Fig. 21 being "
+                        "lost.",
                         corrected_reading=(area21("AGHCD"), F21),
                         objection="In the third region the lost Fig. 21 may letter the points anew, so that GHD "
                                   "names the dry part of the upper base (G, H on the sides at D).",
                         answer="The section says the letters keep their meaning of Figs. 17, 18 ('dass auch die "
                                "Buchstaben hier dieselbe Bedeutung haben wie dort') except N, and there G, H lie at "
                                "the wet corner B and F is AGHCD; (121b) needs F to be the upper base's whole dry "
-                               "part. Medium, since Fig. 21 is lost."),
+                               "part. Low, since Fig. 21 is lost and the letters may be the transcription's."),
         note="read on a square base: the printed domain of int has the area of F, the dry part of the upper base; f = "
              "DML is the projected dry part of the lower base, as the section's construction says")
 d.quote("119", "(119)", r"$$M_3 = V_3 (x_3 - x_0) \cos \varphi_3 - V_3 \left( \frac{b}{2} - z_3 \right) \sin \varphi_3 = 0 "
