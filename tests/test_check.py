@@ -75,6 +75,7 @@ def test_command_line_text_json_and_exit_status(tmp_path, capsys):
     (["x = 1", "--against", "x = 1", "--domain", "y=0:1"], "--domain names y"),
     (["x = 1", "--against", "x = 1", "--domain", "x=2:1"], "--domain is name=low:high"),
     (["x = __import__('os')", "--against", "x = 1"], "symfloat:"),
+    (["x = h", "--against", "x = h", "--domain", "h=1/0:2"], "--domain divides by zero"),      # once a traceback
 ])
 def test_bad_input_is_one_line_and_exit_2(argv, says, capsys):
     assert main(["check", *argv]) == 2
@@ -96,3 +97,37 @@ def test_every_proof_strategy_has_its_words():
     from symfloat.engine import check, identity
     relation_strategies = ("assumptions", "sign of factors", "sign cells")   # symfloat/engine/relation.py
     assert set(identity.STRATEGIES) | set(relation_strategies) <= set(check._PROOF_WORDS)
+
+
+def test_a_bracketed_factor_at_the_end_is_no_equation_number():
+    # h(2) and sin(2h) once lost their last bracket as a tag (118) does: 'y = h(2)' was refuted against 2h
+    assert symfloat.check("y = h(2)", "y = 2h").verdict == "holds"
+    assert symfloat.check(r"y = \sin(2h)", r"y = 2 \sin(h) \cos(h)").verdict == "holds"
+    assert symfloat.check("y = h (2)", "y = 2h").verdict == "refuted"       # set apart, it is the number of y = h
+    assert read(r"V = abc \quad (12a)").rows == read("V = abc").rows
+
+
+def test_the_witness_reads_its_integral_and_skips_a_point_without_value():
+    # the integral's own x beside a free x (once "Invalid limits"); 0/0 at h = 1 (once a NaN comparison)
+    r = symfloat.check("y = x", r"y = \int_0^1 x \, dx")
+    assert r.verdict == "refuted" and r.witness["measured"] == "0.5" and r.witness["agrees_with"] == "derived"
+    r = symfloat.check(r"y = \frac{h^2-1}{h-1}", r"y = \int_0^h 1 \, dx + 1")
+    assert r.verdict == "holds" and r.witness["point"] == {"h": "2"} and r.witness["agrees_with"] == "printed"
+
+
+def test_the_simple_points_stay_few_whatever_the_symbols_and_the_domain():
+    # six symbols on (0, 4), or one on (0, 10^6), once built every grid point (minutes, or out of memory)
+    from symfloat.engine.formula_check import _GRID, _simple_points, _simple_values
+    from symfloat.engine.identity import Domain
+    import sympy as sp
+    names = sp.symbols("a b c d f g", positive=True)
+    points = list(_simple_points(names, Domain({s: (0, 4) for s in names}, ())))
+    assert 2 ** len(names) <= len(points) <= _GRID and points[0] == {s: 1 for s in names}
+    assert [str(v) for v in _simple_values(0, 10**6, 3)] == ["1", "2", "3"]
+    r = symfloat.check("y = a+b+c+d+f+g", "y = a+b+c+d+f+2g", propose=False)
+    assert r.verdict == "refuted" and r.counterexample["printed"] == "6" and r.counterexample["derived"] == "7"
+
+
+def test_a_correction_is_never_a_thing_equal_to_itself():
+    # 'y = h' against y = 2h once got 'h = h' and 'y = y' as corrections
+    assert [c.text for c in symfloat.check("y = h", "y = 2h").corrections] == []

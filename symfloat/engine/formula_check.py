@@ -39,6 +39,8 @@ __all__ = ["FormulaCheck", "check", "proposed", "parse_domain", "DEFAULT_INTERVA
 
 DEFAULT_INTERVAL = (0, 4)      # where a symbol without --domain is sampled: a positive length or ratio
 _SMALL_POINTS = 400            # at most this many simple points are tried for the shown counterexample
+_GRID = 20_000                 # at most this many points are ordered by simplicity, whatever the symbols' count
+_WITNESS_POINTS = 20           # the simple points tried for a witness of a print that holds
 _PROOF_SECONDS = 5.0           # the proof search of one link (the clock can end a search, never refute)
 _RELATIONS = {"<": sp.StrictLessThan, ">": sp.StrictGreaterThan, "<=": sp.LessThan, ">=": sp.GreaterThan}
 
@@ -80,6 +82,8 @@ def parse_domain(text: str | None) -> dict:
         if not part.strip():
             continue
         m = _INTERVAL.fullmatch(part)
+        if m and any(re.fullmatch(r"-?\d+/0+", bound) for bound in m.group(2, 3)):
+            raise InputError(f"--domain divides by zero in {part.strip()[:40]!r}")
         if not m or Fraction(m[2]) >= Fraction(m[3]):
             raise InputError(f"--domain is name=low:high, ... with low < high (r=1:3, h=0:1/2), not {part[:40]!r}")
         out[m[1]] = (Fraction(m[2]), Fraction(m[3]))
@@ -149,21 +153,29 @@ def _links(printed, defined, target):
     return [(a, b, la, lb) for (a, la), (b, lb) in zip(sides, sides[1:])]
 
 
-def _simple_values(lo, hi):
-    """The simplest rationals inside (lo, hi): whole numbers, then halves, thirds, quarters."""
+def _simple_values(lo, hi, count: int):
+    """The *count* simplest rationals inside (lo, hi): whole numbers, then halves, thirds, quarters, each
+    from the low end up.
+
+    >>> [str(v) for v in _simple_values(0, 10**9, 5)], [str(v) for v in _simple_values(0, 2, 6)]
+    (['1', '2', '3', '4', '5'], ['1', '1/2', '3/2', '1/3', '2/3', '4/3'])
+    """
     lo, hi = Fraction(str(lo)), Fraction(str(hi))
-    seen = []
+    seen = {}
     for q in range(1, 5):
-        for p in range(int(lo * q) - 1, int(hi * q) + 2):
-            v = Fraction(p, q)
-            if lo < v < hi and v not in seen:
-                seen.append(v)
-    return seen
+        p = (lo * q).__floor__()
+        while len(seen) < count and Fraction(p, q) < hi:
+            if lo < Fraction(p, q):
+                seen.setdefault(Fraction(p, q), None)
+            p += 1
+    return list(seen)
 
 
 def _simple_points(symbols, domain: Domain):
-    """Admissible points of *symbols*, simplest first (small denominators, then small values)."""
-    grids = [_simple_values(*domain.intervals[s]) for s in symbols]
+    """Admissible points of *symbols*, simplest first (small denominators, then small values); the
+    simplest values of each symbol are combined, at most :data:`_GRID` points in all."""
+    per_symbol = max(2, int(_GRID ** (1 / max(len(symbols), 1))))
+    grids = [_simple_values(*domain.intervals[s], per_symbol) for s in symbols]
     points = sorted(itertools.product(*grids), key=lambda p: (sum(v.denominator for v in p), sum(p)))
     for values in points[:_SMALL_POINTS]:
         point = {s: sp.Rational(v.numerator, v.denominator) for s, v in zip(symbols, values)}
@@ -207,9 +219,12 @@ def _witness(links, point) -> dict | None:
         if la == lb or not derived.has(sp.Integral):
             continue
         subs = {sp.Symbol(k): sp.Rational(v) for k, v in point.items()}
-        measured = sp.N(derived.xreplace(subs), 30)                # Integral.evalf: quadrature, not integration
-        claimed = sp.N(printed.xreplace(subs).doit(), 30)
-        closed = sp.N(derived.doit().xreplace(subs), 30)
+        # subs, not xreplace: an integral's own variable may share a name with a symbol of the point
+        measured = sp.N(derived.subs(subs), 30)                    # Integral.evalf: quadrature, not integration
+        claimed = sp.N(printed.subs(subs).doit(), 30)
+        closed = sp.N(derived.doit().subs(subs), 30)
+        if not all(v.is_real and v.is_finite for v in (measured, claimed, closed)):
+            return None                                            # no value there (0/0, a pole, a complex one)
         scale = max(abs(measured), 1)
         agree_printed = abs(measured - claimed) <= sp.Float(10) ** -20 * scale
         agree_derived = abs(measured - closed) <= sp.Float(10) ** -20 * scale
@@ -259,16 +274,16 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
         if propose:
             result.corrections = proposed(printed, defined, target, space)
     elif verdict == "holds":
-        point = _first_point(links, space)
-        result.witness = _witness(links, point) if point else None
+        witnesses = (_witness(links, point) for point in _first_points(links, space))
+        result.witness = next((w for w in witnesses if w is not None), None)
     return result
 
 
-def _first_point(links, domain):
-    """The simplest admissible point of the links' symbols (where a witness measures a print that holds)."""
+def _first_points(links, domain):
+    """The simplest admissible points of the links' symbols (where a witness measures a print that holds)."""
     symbols = sorted(set().union(*(a.free_symbols | b.free_symbols for a, b, *_ in links)), key=lambda s: s.name)
-    point = next(_simple_points(symbols, domain), {})
-    return {str(s): str(v) for s, v in point.items()}
+    for point in itertools.islice(_simple_points(symbols, domain), _WITNESS_POINTS):
+        yield {str(s): str(v) for s, v in point.items()}
 
 
 def proposed(printed: str, defined: dict, target, domain: Domain) -> list[Correction]:
@@ -282,6 +297,8 @@ def proposed(printed: str, defined: dict, target, domain: Domain) -> list[Correc
         if links is None or not set().union(*(a.free_symbols | b.free_symbols for a, b, *_ in links)) \
                 <= set(domain.intervals):
             return None
+        if all(a == b and la == lb for a, b, la, lb in links):
+            return None           # one side's thing equal to itself (h = h, y = y for y = h) proves nothing
         if _decide(links, domain, printed, prove=False)[0].status != "sampled":
             return None
         status = _decide(links, domain, printed)[0].status

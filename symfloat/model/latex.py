@@ -149,9 +149,32 @@ def token_spans(tex: str) -> list[tuple[str, str, int, int]]:
     return out
 
 
+_TAG = re.compile(r"\s+\(\d+\s?[a-z]?\)\s*$")                    # an equation's number at the end: (118), (78 c)
+_BEFORE_NO_TAG = re.compile(r"(?:[-=+*/<>(,]|\\cdot|\\times)$")     # what a factor (2), not a number, follows
+
+
+def _without_tag(s: str) -> str:
+    r"""*s* without its equation number: a bracketed number set apart by space at the end, after \quad or
+    after a formula that is complete (not after an operator: ``y = (2)``, ``h \cdot (2)`` keep it as a factor;
+    ``h(2)``, with no space, is a product).
+
+    >>> _without_tag(r"V = a b c \quad (12)"), _without_tag("V = abc (12a)"), _without_tag("y = h(2)")
+    ('V = a b c', 'V = abc', 'y = h(2)')
+    >>> print(_without_tag("y = (2)"), "|", _without_tag(r"y = h \cdot (2)"))
+    y = (2) | y = h \cdot (2)
+    """
+    m = _TAG.search(s)
+    if m is None:
+        return s
+    before = s[:m.start()].rstrip()
+    if before.endswith(r"\quad") or (before and not _BEFORE_NO_TAG.search(before)):
+        return re.sub(r"\\quad$", "", before).rstrip()
+    return s
+
+
 def _strip_layout(tex: str, rules: set[str]) -> str:
     s = tex.strip().strip("$").strip()
-    s2 = re.sub(r"\\quad\s*\(\d+\s?[a-z]?\)\s*$|\(\d+\s?[a-z]?\)\s*$", "", s).strip()
+    s2 = _without_tag(s).strip()
     s2 = re.sub(r"^(?:\\text\{[^{}]*\}\s*)+|(?:\s*\\text\{[^{}]*\})+$", "", s2).strip()
     s2 = re.sub(r"(?:\\quad|\\qquad|\\,|\\;|\s)*[.,;:]?\s*-?\s*$", "", s2)
     s2 = re.sub(r"\\left\.|\\right\.|(?<=\\end\{aligned\})\s*\\right\\\}", "", s2)
