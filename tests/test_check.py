@@ -76,6 +76,9 @@ def test_command_line_text_json_and_exit_status(tmp_path, capsys):
     (["x = 1", "--against", "x = 1", "--domain", "x=2:1"], "--domain is name=low:high"),
     (["x = __import__('os')", "--against", "x = 1"], "symfloat:"),
     (["x = h", "--against", "x = h", "--domain", "h=1/0:2"], "--domain divides by zero"),      # once a traceback
+    (["x = " + "(" * 200 + "h" + ")" * 200, "--against", "x = h"], "nested more than 50 deep"),  # RecursionError
+    (["x = h" + "^h" * 3000, "--against", "x = h"], "nests too deeply"),                          # RecursionError
+    (["x = " + "\\sqrt " * 3000 + "h", "--against", "x = h"], "nests too deeply"),              # RecursionError
 ])
 def test_bad_input_is_one_line_and_exit_2(argv, says, capsys):
     assert main(["check", *argv]) == 2

@@ -602,6 +602,34 @@ def _text_function(token: str):
     return _FUNCTIONS.get(word)
 
 
+MAX_DEPTH = 50         # brackets within brackets (the sources nest 3 deep at most); the parser recurses per level
+
+
+def _depth(tokens) -> int:
+    """The deepest nesting of (), [] and {} among *tokens*.
+
+    >>> _depth(_tokens("((a)+{b})"))
+    2
+    """
+    depth = deepest = 0
+    for _, t in tokens:
+        if t in ("(", "[", "{"):
+            depth += 1
+            deepest = max(deepest, depth)
+        elif t in (")", "]", "}"):
+            depth -= 1
+    return deepest
+
+
+def _tree_depth(expr) -> int:
+    """The depth of a SymPy expression's tree, counted without recursion (SymPy's own walks recurse)."""
+    deepest, level = 0, [expr]
+    while level:
+        deepest += 1
+        level = [a for e in level for a in getattr(e, "args", ())]
+    return deepest
+
+
 def read(tex: str, names=frozenset(), *, integrals=False) -> Reading:
     r"""Read *tex* (an excerpt's math, dollars allowed) into rows of members and relations.
 
@@ -634,7 +662,14 @@ def read(tex: str, names=frozenset(), *, integrals=False) -> Reading:
         continued = part.lstrip().startswith("&") and rows and rows[-1][1]
         part = part.replace("&", "").strip()
         for tokens in _split_list(_tokens(part)):
-            members, relations = _Parser(tokens, frozenset(names), rules, segments, integrals).chain()
+            if _depth(tokens) > MAX_DEPTH:
+                raise Unreadable(f"brackets nested more than {MAX_DEPTH} deep")
+            try:
+                members, relations = _Parser(tokens, frozenset(names), rules, segments, integrals).chain()
+            except RecursionError:                # powers of powers, roots of roots without brackets
+                raise Unreadable("the formula nests too deeply to be read") from None
+            if any(m is not None and _tree_depth(m) > 2 * MAX_DEPTH for m in members):
+                raise Unreadable("the formula nests too deeply to be checked")
             if continued and not relations and members[0] is not None:
                 rules.add("continued-row")        # "= a \\ & + b" is a + b, "= a \\ & b" is a b
                 last = rows[-1][0][-1]
