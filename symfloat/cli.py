@@ -492,6 +492,12 @@ def _coverage_args(p):
 
 def _coverage(args) -> int:
     from .report.ledger_command import run
+    if args.output is not None:
+        if args.write or args.update_baseline:
+            writable_folder(args.output)
+        elif not args.output.is_dir():
+            raise InputError(f"--output '{args.output}': " + ("not a folder" if args.output.exists() else
+                                                               "no such folder") + " to read the baselines from")
     return run(args)
 
 

@@ -192,3 +192,20 @@ def test_a_sentence_repeated_word_for_word_is_a_computed_repeat():
     from symfloat.report.ledger import ledger
     entries = [e for e in ledger("metazentrum") if e.span.kind == "sentence" and e.span.line in (274, 833)]
     assert [(e.span.line, e.status, e.reason) for e in entries] == [(274, "quoted", ""), (833, "waived", "repeat")]
+
+
+@pytest.mark.parametrize("baseline, says", [
+    ("garbage{", "cannot read the coverage baseline"),
+    ("[]", "is no coverage baseline"),
+    ('{"unaccounted": [1, 2]}', "is no coverage baseline"),
+])
+def test_a_bad_baseline_or_output_folder_is_one_line(tmp_path, capsys, baseline, says):
+    # each of these once ended in a traceback (JSONDecodeError, TypeError, NotADirectoryError)
+    (tmp_path / "coverage-baseline.json").write_text(baseline, encoding="utf-8")
+    assert main(["coverage", "hasab", "--output", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert says in err and err.count("\n") == 1
+    assert main(["coverage", "hasab", "--output", str(tmp_path / "coverage-baseline.json")]) == 2
+    assert "not a folder" in capsys.readouterr().err
+    assert main(["coverage", "hasab", "--write", "--output", str(tmp_path / "a" / "b")]) == 2
+    assert "creates one folder, not a tree" in capsys.readouterr().err and not (tmp_path / "a").exists()

@@ -22,6 +22,7 @@ import json
 import sys
 from pathlib import Path
 
+from ..errors import InputError
 from ..model.source import SOURCES
 from ..files import write_if_changed
 from ..project import in_outputs
@@ -39,11 +40,19 @@ def docs_path(name: str, folder: Path | None = None) -> Path:
 
 
 def load_baseline(path: Path) -> dict:
-    """A baseline file, or an empty one when there is none."""
+    """A baseline file, or an empty one when there is none; a file that is not one is an :class:`InputError`."""
     try:
-        return json.loads(path.read_text(encoding="utf-8"))
+        baseline = json.loads(path.read_text(encoding="utf-8"))
     except FileNotFoundError:
         return {"unaccounted": []}
+    except (OSError, ValueError) as exc:
+        raise InputError(f"cannot read the coverage baseline {path}: {exc}") from None
+    keys = ("source", "kind", "line", "column", "text")
+    if not (isinstance(baseline, dict) and isinstance(baseline.get("unaccounted"), list)
+            and all(isinstance(d, dict) and all(k in d for k in keys) for d in baseline["unaccounted"])):
+        raise InputError(f"{path} is no coverage baseline: an object whose 'unaccounted' lists spans, each with "
+                         f"{', '.join(keys)}")
+    return baseline
 
 
 def baseline_text(sources=tuple(SOURCES)) -> str:
