@@ -5,6 +5,7 @@ import mpmath
 import pytest
 
 from symfloat.report.phase import phase_record, phase_table
+from symfloat.cli import main
 from symfloat.comparison.thresholds import phase_with_sources
 
 
@@ -153,3 +154,10 @@ def test_each_density_is_solved_once(monkeypatch):
     diagram = phase.phase_diagram("cube", densities=[0.4, 0.6], known=known)
     assert len(solved) == 6 and set(solved.values()) == {1}
     assert [k["seen"] for k in diagram.unmatched_sources] == ["stable on both sides", "stable on neither side"]
+
+
+def test_a_thin_box_sweeps_only_the_densities_the_solver_handles(capsys):
+    # a box 1 x 0.03 x 1 is handled for min(s, 1 - s) >= 1e-4 / 0.03 = 0.0033; the sources' thresholds were
+    # swept from s = 1/400 all the same, and the command stopped on a density the user never gave (exit 2)
+    assert main(["phase", "box", "--dims", "1,0.03,1", "--steps", "4", "--quiet"]) == 0
+    assert "duality s ↔ 1 − s: holds" in capsys.readouterr().out

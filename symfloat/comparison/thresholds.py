@@ -13,7 +13,7 @@ import numpy as np
 import sympy as sp
 
 from ..registry import predicting, provided, reader, statements
-from ..solver.bodies import make_scene
+from ..solver.bodies import least_layer, make_scene
 from ..solver.phase import PhaseDiagram, phase_diagram, position_label
 from ..solver.symmetry import box_group, representative
 
@@ -51,11 +51,12 @@ def source_thresholds(body: str, dims, grid: int = 400) -> list[dict]:
     ``errata`` the locators among them whose printed formula carries an erratum."""
     group = box_group(dims)
     closed = _closed_forms()
+    layer = least_layer(make_scene(body, "1/2", dims))       # a thin body's densities near 0 and 1 are outside
+    densities = [Fraction(k, grid) for k in range(1, grid) if min(k, grid - k) / grid >= layer]
     out = []
     for did in predicting(body, dims):
         d = reader(did)
         at = lambda s: _predicted(d, make_scene(body, s, dims), group)
-        densities = [Fraction(k, grid) for k in range(1, grid)]
         states = [at(s) for s in densities]
         for k in range(len(densities) - 1):
             for label in sorted(set(states[k]) ^ set(states[k + 1])):

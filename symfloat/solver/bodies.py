@@ -36,7 +36,7 @@ from ..model.prediction import BODIES, Scene
 
 __all__ = ["SceneError", "parse_number", "parse_whole", "parse_dims", "parse_polygon", "make_scene",
            "thinness", "polyhedron", "centred_polygon", "MAX_SIDES", "MAX_VERTICES", "MAX_SIZE", "MIN_SIZE",
-           "MIN_LAYER", "DOMAIN"]
+           "MIN_LAYER", "DOMAIN", "least_layer"]
 
 _LITERAL = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE]([+-]?[0-9]+))?(?:/[0-9]+)?", re.ASCII)
 _WHOLE = re.compile(r"[0-9]+", re.ASCII)
@@ -193,6 +193,17 @@ def thinness(scene: Scene) -> tuple[float, float]:
     return float(min(scene.dims)), float(max(scene.dims))
 
 
+def least_layer(scene: Scene) -> float:
+    """The least ``min(s, 1 - s)`` the solver handles for the scene's shape: ``MIN_LAYER`` over
+    thinnest/longest (:data:`DOMAIN`).
+
+    >>> least_layer(Scene("box", Fraction(1, 2), (Fraction(1), Fraction(1, 100), Fraction(1))))
+    0.01
+    """
+    thinnest, longest = thinness(scene)
+    return MIN_LAYER * longest / thinnest
+
+
 def _in_domain(scene: Scene, density_text) -> Scene:
     """*scene* when the solver answers it to its stated accuracy, else :class:`SceneError`."""
     sizes = scene.dims
@@ -208,11 +219,12 @@ def _in_domain(scene: Scene, density_text) -> Scene:
         raise SceneError(f"the {scene.body} is too thin: thinnest/longest = {shown}; the solver handles "
                          f"{2 * MIN_LAYER:g} and more (min(s, 1 - s) x thinnest/longest >= {MIN_LAYER:g})")
     s = scene.density
-    if float(min(s, 1 - s)) * ratio < MIN_LAYER * (1 - 1e-12):      # the bound itself is inside
-        low = MIN_LAYER / ratio
+    if float(min(s, 1 - s)) < least_layer(scene) * (1 - 1e-12):      # the bound itself is inside
+        low = least_layer(scene)
+        allowed = "so only s = 1/2" if low >= 0.5 * (1 - 1e-12) else f"so {low:.3g} <= s <= 1 - {low:.3g}"
         raise SceneError(f"density {density_text} is outside the range the solver handles for this "
                          f"{scene.body}: min(s, 1 - s) x thinnest/longest must be at least {MIN_LAYER:g} "
-                         f"(thinnest/longest = {ratio:.3g}), so {low:.3g} <= s <= 1 - {low:.3g}")
+                         f"(thinnest/longest = {ratio:.3g}), {allowed}")
     return scene
 
 
