@@ -69,6 +69,10 @@ def test_table_is_readable(in_tmp, capsys):
     out = capsys.readouterr().out
     assert out.splitlines()[0].split()[:3] == ["formula", "locator", "verdict"]
     assert "printed formulas:" in out
+    # an erratum whose only witness measures its correction shows that witness (it showed "—", while the
+    # summary counted it as cross-checked): Graefe §1's list of tetrahedra
+    row = next(line for line in out.splitlines() if line.startswith("graefe-s1-prismatoid-volume/tetrahedra-list "))
+    assert row.endswith(", of the correction") and "proven" in row
 
 
 def test_unexpected_failure_gives_exit_status_1(in_tmp, monkeypatch, capsys, graefe_reports):

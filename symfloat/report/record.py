@@ -87,7 +87,9 @@ def verification_table(reports: list[DerivationReport], elapsed: float | None = 
     for d in reports:
         for f in d.formulas:
             verdict = f.verdict + (f" ({f.erratum['kind']})" if f.erratum else "")
-            rows.append((f.id, f.locator, verdict, f.evidence or "—", best_error(f.numeric)))
+            witness = (best_error(f.numeric) if f.numeric or not f.corrected_numeric
+                       else f"{best_error(f.corrected_numeric)}, of the correction")
+            rows.append((f.id, f.locator, verdict, f.evidence or "—", witness))
     widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
     lines = ["  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows]
     lines.insert(1, "  ".join("-" * w for w in widths))
