@@ -342,6 +342,8 @@ def _scene(args) -> int:
 
     start = time.perf_counter()
     scene = make_scene(args.body, args.density, args.dims, args.sides, args.polygon)
+    if args.certify and scene.body not in ("cube", "box", "prism"):
+        raise InputError(f"--certify: the exclusion search covers cubes, boxes and prisms, not a {scene.body}")
     plot = _plot_target(args.output)
     solution = solve(scene)
     certify(solution)
@@ -376,6 +378,7 @@ def _phase(args) -> int:
     if args.body not in ("cube", "box"):
         raise SceneError(f"phase diagrams are drawn for cube and box, not {args.body[:40]!r}")
     steps = parse_whole(args.steps, "--steps", 4, 2000)
+    make_scene(args.body, "1/2", args.dims)          # the body itself: its --dims are blamed, not --steps
     for s in (Fraction(1, steps + 1), Fraction(steps, steps + 1)):       # both ends of the sweep
         try:
             make_scene(args.body, s, args.dims)

@@ -172,8 +172,18 @@ def test_scene_table_and_plot(run, tmp_path):
     ("scene", "section", "--polygon", "0,0 2,0 1,1 2,2 0,2", "--density", "0.5"),
     ("scene", "section", "--polygon", "0,0 1,1 1,0 0,1", "--density", "0.5"),
     ("phase", "cylinder"), ("phase", "box", "--dims", "1,0,3"),
+    ("scene", "section", "--polygon", "0,0 1,0 0,1", "--density", "0.4", "--certify"),     # once accepted, 0 squares
+    ("scene", "cylinder", "--dims", "1,2", "--density", "0.4", "--certify"),
 ])
 def test_bad_input_exits_2_with_one_message(run, argv):
     code, out, err = run(*argv, "--quiet")
     assert code == 2 and out == ""
     assert err.startswith("symfloat: ") and err.count("\n") == 1 and "Traceback" not in err
+
+
+def test_a_bad_body_is_blamed_on_its_dims_not_on_the_sweep(run):
+    # `phase box` without --dims said "--steps 48: box needs --dims ..."
+    code, out, err = run("phase", "box", "--quiet")
+    assert code == 2 and err == "symfloat: box needs --dims with 3 positive numbers\n"
+    code, out, err = run("scene", "cube", "--dims", "1,1,1", "--density", "0.3", "--quiet")
+    assert code == 2 and "cube needs --dims with one number" in err

@@ -104,10 +104,12 @@ def _shown(text) -> str:
 def parse_dims(text: str | None, count: int, body: str) -> tuple[Fraction, ...]:
     """``count`` positive dimensions separated by commas."""
     if text is None:
-        raise SceneError(f"{body} needs --dims with {count} positive numbers")
+        raise SceneError(f"{body} needs --dims with " + ("one positive number" if count == 1 else
+                                                          f"{count} positive numbers"))
     parts = str(text).split(",")
     if len(parts) != count:
-        raise SceneError(f"{body} needs --dims with {count} comma-separated numbers, got {_shown(text)}")
+        wanted = "one number" if count == 1 else f"{count} comma-separated numbers"
+        raise SceneError(f"{body} needs --dims with {wanted}, got {_shown(text)}")
     dims = tuple(parse_number(p, f"{body} dimension") for p in parts)
     if any(d <= 0 for d in dims):
         raise SceneError(f"{body} dimensions must be positive, got {_shown(text)}")
