@@ -48,7 +48,7 @@ from .errors import (EXIT_CHECK, EXIT_INPUT, EXIT_INTERRUPTED, EXIT_OK, CheckFai
                      SymfloatError)
 from .files import write_atomic, write_if_changed, writable_folder, writable_target
 from .project import GOLDEN, LIBRARY_VARIABLE, in_outputs, in_project, library_folders, outputs_root, project_root
-from .registry import provided, select
+from .registry import matching, provided, select
 
 EXIT_STATUS = ("Exit status: 0 success; 1 a check failed (verdict, index sum, duality, coverage); "
                "2 bad input or an environment problem (an output whose folder is missing or takes no file: "
@@ -208,14 +208,15 @@ def _errata(args) -> int:
         out = _not_golden(writable_target(args.output)) if selector else writable_target(args.output)
     elif selector is None and args.format == "md":
         out = writable_folder(in_outputs("docs")) / "errata.md"     # the checkout's own folder may be made
-    reports = _reports(args, selector)
+    checked, named = _reports(args, selector), set(matching(selector))
+    reports = [r for r in checked if r.id in named]      # the selection's own errata, not its ancestors'
     text = ERRATA_FORMATS[args.format](reports)
     if out is None:
         print(text, end="")
     else:
         write_if_changed(out, text)
         _say(args, f"wrote {out}")
-    return _failed(reports)
+    return _failed(checked)
 
 
 def _notebooks_args(p):

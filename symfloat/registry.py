@@ -21,7 +21,7 @@ from .errors import InputError
 from .manifest import PARTS, Manifest, body_kinds, read_manifest
 
 __all__ = ["ids", "ids_in", "manifest", "files", "requires", "providing", "predicting", "provided", "predictor",
-           "reader", "statements", "load", "part", "select", "cross_use_problems", "compiled_readings", "SelectorError",
+           "reader", "statements", "load", "part", "select", "matching", "cross_use_problems", "compiled_readings", "SelectorError",
            "Reader"]
 
 
@@ -224,19 +224,24 @@ def provided(kind: str) -> list[tuple[str, object]]:
     return out
 
 
+def matching(selector: str | None = None) -> list[str]:
+    """Ids of the derivations a selector names itself (``None``: every one), without their ancestors."""
+    known = ids()
+    if not selector:
+        return known
+    picked = [i for i in known if i.startswith(selector)]
+    if not picked:
+        raise SelectorError(f"selector {selector!r} matches no derivation; known: {', '.join(known)}")
+    return picked
+
+
 def select(selector: str | None = None) -> list[str]:
     """Ids of the derivations a selector picks, ancestors first.
 
     ``None`` selects everything; a source key selects its derivations; any
     other string selects the ids that start with it.
     """
-    known = ids()
-    if selector:
-        picked = [i for i in known if i.startswith(selector)]
-        if not picked:
-            raise SelectorError(f"selector {selector!r} matches no derivation; known: {', '.join(known)}")
-    else:
-        picked = known
+    picked = matching(selector)
     ordered: list[str] = []
 
     def visit(i, trail=()):

@@ -37,6 +37,14 @@ def test_selector_computes_only_what_it_selects_and_its_ancestors(in_tmp, capsys
     assert derivations == ["graefe-s1-prismatoid-volume", "graefe-s3-prismatoid-centroid"]
 
 
+def test_a_selections_errata_are_its_own(in_tmp, capsys):
+    # graefe-s3 is checked with its ancestor graefe-s1, whose errata `errata graefe-s3` listed too (as
+    # `errata hasab` listed Scheeffer's)
+    assert main(["errata", "graefe-s3", "--format", "json", "--quiet"]) == 0
+    derivations = {e["derivation"] for e in json.loads(capsys.readouterr().out)}
+    assert derivations == {"graefe-s3-prismatoid-centroid"}
+
+
 def test_errata_json_contract(in_tmp, capsys):
     assert main(["errata", "graefe", "--format", "json", "--quiet"]) == 0
     entries = json.loads(capsys.readouterr().out)
