@@ -8,13 +8,24 @@ such a condition raises a subclass of :class:`SymfloatError`; the command line p
 """
 from __future__ import annotations
 
-__all__ = ["SymfloatError", "CheckFailed", "DerivationError", "InputError", "EnvironmentProblem", "EXIT_OK", "EXIT_CHECK",
-           "EXIT_INPUT", "EXIT_INTERRUPTED"]
+__all__ = ["SymfloatError", "CheckFailed", "DerivationError", "InputError", "EnvironmentProblem", "EXIT_OK",
+           "EXIT_CHECK", "EXIT_INPUT", "EXIT_INTERRUPTED", "quoted"]
 
 EXIT_OK = 0
 EXIT_CHECK = 1
 EXIT_INPUT = 2
 EXIT_INTERRUPTED = 130
+
+
+def quoted(text, limit: int = 60) -> str:
+    r"""*text* in quotation marks as the user typed it (no backslash doubled, as ``repr`` would), on one line
+    and cut at *limit* characters.
+
+    >>> print(quoted(r"\infty"), quoted("a" * 80, 10))
+    '\infty' 'aaaaaaaaaa…'
+    """
+    text = " ".join(str(text).split("\n"))
+    return "'" + (text if len(text) <= limit else text[:limit] + "…") + "'"
 
 
 class SymfloatError(Exception):

@@ -30,7 +30,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from ..errors import InputError
+from ..errors import InputError, quoted
 from ..model.latex import Unreadable, read
 from .corrections import Correction, corrections
 from .identity import Domain, check_identity
@@ -83,9 +83,9 @@ def parse_domain(text: str | None) -> dict:
             continue
         m = _INTERVAL.fullmatch(part)
         if m and any(re.fullmatch(r"-?\d+/0+", bound) for bound in m.group(2, 3)):
-            raise InputError(f"--domain divides by zero in {part.strip()[:40]!r}")
+            raise InputError(f"--domain divides by zero in {quoted(part.strip(), 40)}")
         if not m or Fraction(m[2]) >= Fraction(m[3]):
-            raise InputError(f"--domain is name=low:high, ... with low < high (r=1:3, h=0:1/2), not {part[:40]!r}")
+            raise InputError(f"--domain is name=low:high, ... with low < high (r=1:3, h=0:1/2), not {quoted(part, 40)}")
         out[m[1]] = (Fraction(m[2]), Fraction(m[3]))
     return out
 
@@ -103,13 +103,13 @@ def _definitions(against: list[str]):
     for tex in against:
         for members, relations in _reading(tex, "--against", integrals=True).rows:
             if any(r != "=" for r in relations) or members[0] is None:
-                raise InputError(f"--against: a definition is S = expression or an expression, not {tex[:60]!r}")
+                raise InputError(f"--against: a definition is S = expression or an expression, not {quoted(tex, 60)}")
             if len(members) == 1:
                 target = members[0]
             elif isinstance(members[0], sp.Symbol):
                 defined[members[0]] = members[-1]
             else:
-                raise InputError(f"--against: the left side of {tex[:60]!r} is not a symbol")
+                raise InputError(f"--against: the left side of {quoted(tex, 60)} is not a symbol")
     for _ in range(len(defined)):                                   # definitions may use earlier ones
         defined = {s: e.xreplace(defined) for s, e in defined.items()}
     return defined, target
@@ -122,7 +122,7 @@ def _constraints(where: str):
     out = []
     for members, relations in _reading(where, "--where").rows:
         if members[0] is None or any(r not in _RELATIONS for r in relations):
-            raise InputError(f"--where holds inequalities such as 0 < h < r, not {where[:60]!r}")
+            raise InputError(f"--where holds inequalities such as 0 < h < r, not {quoted(where, 60)}")
         out += [_RELATIONS[r](a, b) for a, b, r in zip(members, members[1:], relations)]
     return tuple(out)
 

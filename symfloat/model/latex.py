@@ -32,6 +32,8 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from ..errors import quoted
+
 __all__ = ["Unreadable", "Reading", "read", "canonical", "token_spans", "RULES", "RELATIONS", "MAX_DIGITS",
            "MAX_EXPONENT"]
 
@@ -123,7 +125,7 @@ def _tokens(tex: str) -> list[tuple[str, str]]:
     while pos < len(tex):
         m = _TOKEN.match(tex, pos)
         if not m:
-            raise Unreadable(f"unexpected character {tex[pos]!r}")
+            raise Unreadable(f"unexpected character {quoted(tex[pos])}")
         kind = m.lastgroup
         value = m.group(0)
         pos = m.end()
@@ -218,7 +220,7 @@ class _Parser:
     def take(self, value=None):
         tok = self.peek()
         if value is not None and tok[1] != value:
-            raise Unreadable(f"expected {value!r}, found {tok[1]!r}")
+            raise Unreadable(f"expected {quoted(value)}, found {quoted(tok[1])}")
         self.i += 1
         return tok
 
@@ -234,7 +236,7 @@ class _Parser:
             relations.append(RELATIONS[self.take()[1]])
             members.append(self.expr())
         if self.peek()[0] != "end":
-            raise Unreadable(f"cannot read on from {self.peek()[1]!r}")
+            raise Unreadable(f"cannot read on from {quoted(self.peek()[1])}")
         return members, relations
 
     def expr(self):
@@ -325,7 +327,7 @@ class _Parser:
             return sp.Integer(int(v[0]))
         if kind in ("letter", "command"):
             return self.primary(single=True)
-        raise Unreadable(f"cannot read an exponent from {v!r}")
+        raise Unreadable(f"cannot read an exponent from {quoted(v)}")
 
     def _number(self, v):
         if len(v) > MAX_DIGITS:
@@ -455,7 +457,7 @@ class _Parser:
             self.take()
             fn = _text_function(v)
             if fn is None:
-                raise Unreadable(f"words in the formula: {v!r}")
+                raise Unreadable(f"words in the formula: {quoted(v)}")
             self.rules.add("tg")
             return self.function(fn)
         if kind == "command":
@@ -498,7 +500,7 @@ class _Parser:
                 self.take(r"\}")
                 return inner
             if single:
-                raise Unreadable(f"cannot read {v!r} here")
+                raise Unreadable(f"cannot read {quoted(v)} here")
             raise Unreadable(f"{v} is not read" if name in _REFUSED else f"unknown command {v}")
         if v in ("(", "["):
             self.take()
@@ -507,7 +509,7 @@ class _Parser:
             return inner
         if v == "{":
             return self.braced()
-        raise Unreadable(f"cannot read {v!r}" if v else "the formula ends too early")
+        raise Unreadable(f"cannot read {quoted(v)}" if v else "the formula ends too early")
 
     def integral(self):
         """``\\int_3 x^2 df`` as one opaque symbol named by its text (``int_3x^2df``): the reader does not
