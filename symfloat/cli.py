@@ -576,6 +576,9 @@ COMMANDS = {
 }
 
 
+_CACHED = ("verify", "errata", "notebooks", "run")       # the commands that read checked reports from the cache
+
+
 def _command_in(argv) -> str | None:
     """The subcommand *argv* names (its first word that is not an option), or None."""
     return next((a for a in argv if not a.startswith("-")), None)
@@ -586,13 +589,14 @@ def _parser(only=None):
     what their options list, e.g. the errata formats or the scene's domain, which ``--help`` does not need)."""
     common = _Parser(add_help=False)
     common.add_argument("--quiet", action="store_true", help="no progress on stderr (or SYMFLOAT_QUIET=1)")
-    common.add_argument("--no-cache", action="store_true", help="re-check every derivation")
     p = _Parser(prog="symfloat", description="Machine-checked re-derivation of classical "
                 "texts on floating bodies and centroids.", epilog=EXIT_STATUS + ".")
     p.add_argument("--version", action="version", version=f"symfloat {__version__}")
     sub = p.add_subparsers(dest="command", required=True)
     for name, command in COMMANDS.items():
         sp = sub.add_parser(name, parents=[common], help=command.help, epilog=EXIT_STATUS + ".")
+        sp.add_argument("--no-cache", action="store_true",      # accepted everywhere, shown where it acts
+                        help="re-check every derivation" if name in _CACHED else argparse.SUPPRESS)
         if only is None or only == name:
             command.arguments(sp)
     return p
@@ -642,7 +646,8 @@ def main(argv=None) -> int:
         except Exception:
             if not interrupts.seen:
                 raise
-    print("symfloat: interrupted (finished checks are kept in the cache)", file=sys.stderr)
+    print("symfloat: interrupted" + (" (finished checks are kept in the cache)" if args.command in _CACHED else ""),
+          file=sys.stderr)
     return EXIT_INTERRUPTED
 
 

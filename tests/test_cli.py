@@ -92,3 +92,13 @@ def test_unexpected_failure_gives_exit_status_1(in_tmp, monkeypatch, capsys, gra
     monkeypatch.setattr(cli, "verify", lambda *a, **k: broken)
     assert cli.main(["verify", "graefe-s1", "--quiet"]) == 1
     assert "FAILURE: graefe §1 (x)" in capsys.readouterr().out
+
+
+def test_no_cache_is_offered_where_a_cache_is_read(capsys):
+    # --no-cache ("re-check every derivation") was offered by scene, phase, check, atlas, site and bench,
+    # which read no cache; it is still accepted there, so scripts that pass it keep working
+    from symfloat.cli import _parser
+    for name in ("verify", "errata", "notebooks", "run", "scene", "phase", "check"):
+        sub = _parser(name)._subparsers._group_actions[0].choices[name]
+        assert ("--no-cache" in sub.format_help()) == (name in ("verify", "errata", "notebooks", "run")), name
+    assert main(["scene", "cube", "--density", "0.3", "--no-cache", "--quiet"]) == 0
