@@ -76,9 +76,9 @@ EXPECTED_ERRATA = {
     ("curve-c", "misprint", "medium"),              # §227 (c/b)√ for ±(a/b)√; the same c/b and + stand in
                                                     # §228: consistent, the print's (was the scan's, low)
     ("Oc", "transcription", "medium"),              # §227 Oc = a for Oc = c
-    ("U0-value", "misprint", "medium"),             # §227 the three values shifted by one integral, alike
-    ("U2-value-c", "misprint", "medium"),           # through the line: the print's (was the scan's, low)
-    ("U4-value", "misprint", "medium"),
+    ("U0-value", "misprint", "low"),                # §227 the three values shifted by one integral, alike
+    ("U2-value-c", "misprint", "low"),              # through the line: the print's by the criteria, but a model's
+    ("U4-value", "misprint", "low"),                # transcription continues patterns too (§234): low
     ("moment-EF-c", "transcription", "low"),        # §227 c·c²D/128 for c²D/8
     ("curve-c-again", "misprint", "medium"),        # §228 c/b for a/b, the repeat of curve-c (and a = for x =)
     ("middle-named-C", "transcription", "medium"),  # §228 'medio C' for 'medio O' (second pass, line 195)

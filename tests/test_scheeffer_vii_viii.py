@@ -260,7 +260,7 @@ def test_claim_s_upper_counterexample():
     ("N1-lower-base", "transcription", "medium"),     # line 1295: 'den Punkt N' for N_1
     ("xs1-definition", "transcription", "medium"),    # line 1305: 'x_3^1' for x_s^1
     ("prism-bases", "misprint", "low"),               # line 1295: 'Grundflächen G B H' for AGHCD (F of VII)
-    ("118-domain", "misprint", "medium"),             # line 1299: 'G H D = F' for AGHCD = F
+    ("118-domain", "misprint", "low"),                # line 1299: 'G H D = F' for AGHCD = F (low, as GBH)
     ("x-direction", "misprint", "low"),               # line 1190: 'S S^1' (S not in Fig. 19) for L S^1
 ])
 def test_second_review_faults_are_errata(name, kind, confidence):
