@@ -47,11 +47,11 @@ def load_baseline(path: Path) -> dict:
         return {"unaccounted": []}
     except (OSError, ValueError) as exc:
         raise InputError(f"cannot read the coverage baseline {path}: {exc}") from None
-    keys = ("source", "kind", "line", "column", "text")
-    if not (isinstance(baseline, dict) and isinstance(baseline.get("unaccounted"), list)
-            and all(isinstance(d, dict) and all(k in d for k in keys) for d in baseline["unaccounted"])):
+    try:
+        baseline_keys(baseline)                     # each span must have what identifies it
+    except (KeyError, TypeError, IndexError):
         raise InputError(f"{path} is no coverage baseline: an object whose 'unaccounted' lists spans, each with "
-                         f"{', '.join(keys)}")
+                         f"source, kind, line, column and text") from None
     return baseline
 
 

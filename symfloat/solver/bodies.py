@@ -220,9 +220,8 @@ def _in_domain(scene: Scene, density_text) -> Scene:
         shown = f"{ratio:.3g}" if ratio > 0 else "below 1e-300"
         raise SceneError(f"the {scene.body} is too thin: thinnest/longest = {shown}; the solver handles "
                          f"{2 * MIN_LAYER:g} and more (min(s, 1 - s) x thinnest/longest >= {MIN_LAYER:g})")
-    s = scene.density
-    if float(min(s, 1 - s)) < least_layer(scene) * (1 - 1e-12):      # the bound itself is inside
-        low = least_layer(scene)
+    s, low = scene.density, least_layer(scene)
+    if float(min(s, 1 - s)) < low * (1 - 1e-12):      # the bound itself is inside
         allowed = "so only s = 1/2" if low >= 0.5 * (1 - 1e-12) else f"so {low:.3g} <= s <= 1 - {low:.3g}"
         raise SceneError(f"density {density_text} is outside the range the solver handles for this "
                          f"{scene.body}: min(s, 1 - s) x thinnest/longest must be at least {MIN_LAYER:g} "
