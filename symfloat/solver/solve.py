@@ -28,6 +28,7 @@ the check.  A check that still fails is an error (:class:`IndexCheckError`).
 """
 from __future__ import annotations
 
+import functools
 import math
 import time
 from dataclasses import dataclass, field
@@ -490,13 +491,21 @@ def _section(scene: Scene):
         g3, H3 = loc.basis @ loc.gradient, loc.basis @ loc.hessian @ loc.basis.T
         return float(e @ g3), float(e @ H3 @ e)
 
+    corners = np.array([[float(x) for x in v] for v in poly.vertices])
+
+    def submerged_corners(theta):
+        """Which corners lie under the water at heel *theta*: ``U'`` is smooth while they stay the same."""
+        state = local(poly, np.array([math.cos(theta), math.sin(theta), 0.0]), s).state
+        return tuple(corners @ np.array([float(x) for x in state.u]) < float(state.t))
+
     lo, hi, ends = _fundamental_arc(group)
     base = max(48, round(360 * (hi - lo) / (2 * math.pi)))
     searches = []
     for points in (base, 8 * base, 64 * base):      # a finer grid when minima - maxima fails
         searches.append(f"grid of {points}")
         out, index = _section_roots(scene, poly, group, evaluate, roots(evaluate, lo, hi, points, scale,
-                                                                         include_ends=ends), scale)
+                                                                         include_ends=ends,
+                                                                         regime=submerged_corners), scale)
         if index == 0:
             break
     else:
@@ -583,11 +592,20 @@ def _cylinder(scene: Scene):
     s = float(scene.density)
     scale = max(r, L)
 
+    @functools.lru_cache(maxsize=None)
+    def slice_at(theta):
+        return cylinder_slice(r, L, theta, s)
+
     def evaluate(theta):
-        c = cylinder_slice(r, L, theta, s)
+        c = slice_at(theta)
         return float(c.f), float(c.fprime)
 
-    found = roots(evaluate, 0.0, math.pi / 2, 180, scale, include_ends=True)
+    def waterplane_shape(theta):
+        """The waterplane's shape at tilt *theta* (circle, ellipse, truncated ellipse, ...): ``U'`` is smooth while
+        it stays the same."""
+        return slice_at(theta).shape
+
+    found = roots(evaluate, 0.0, math.pi / 2, 180, scale, include_ends=True, regime=waterplane_shape)
     out = []
     for q in found:
         c = cylinder_slice(r, L, q.theta, s)
