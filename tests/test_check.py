@@ -1,5 +1,6 @@
 """``symfloat check`` and ``symfloat.check``: one printed formula against a formula or a definition."""
 import json
+import re
 from importlib.resources import files
 
 import pytest
@@ -24,7 +25,8 @@ def test_a_misprinted_centroid_is_refuted_with_labelled_sides_and_corrected():
     assert r.verdict == "refuted"
     # at r = 2, h = 1 (the simplest admissible point): the print gives 3·9/(3·5) = 9/5, the moment over
     # the volume of the segment is 3·9/(4·5) = 27/20 (V = pi h^2 (3r - h)/3, M = pi h^2 (2r - h)^2/4)
-    assert r.counterexample == {"point": {"h": "1", "r": "2"}, "printed": "9/5", "derived": "27/20"}
+    assert r.counterexample == {"point": {"h": "1", "r": "2"}, "printed": "9/5", "derived": "27/20",
+                                "tex": {"point": {"h": "1", "r": "2"}, "printed": r"\frac{9}{5}", "derived": r"\frac{27}{20}"}}
     assert r.witness["agrees_with"] == "derived" and r.witness["measured"].startswith("1.35")
     best = r.corrections[0]
     assert best.text == r"\bar z = \frac{3(2r-h)^2}{4(3r-h)}" and best.status == "proved"
@@ -60,7 +62,7 @@ def test_several_definitions_chain():
 def test_command_line_text_json_and_exit_status(tmp_path, capsys):
     assert main(["check", r"\bar z = \frac{3(2r-h)^2}{3(3r-h)}", "--against", CAP_CENTROID, "--where", "h < r"]) == 1
     out = capsys.readouterr().out
-    assert "refuted at h = 1, r = 2: printed 9/5, derived 27/20" in out and "[3 → 4; digit" in out
+    assert r"refuted at h = 1, r = 2: printed \frac{9}{5}, derived \frac{27}{20}" in out and "[3 → 4; digit" in out
     target = tmp_path / "check.json"
     assert main(["check", r"V = \frac{\pi h^2}{3} (3r - h)", "--against", r"V = \int_{r-h}^{r} \pi (r^2 - x^2) \, dx",
                  "--format", "json", "--output", str(target), "--quiet"]) == 0
@@ -70,12 +72,28 @@ def test_command_line_text_json_and_exit_status(tmp_path, capsys):
     assert list(Draft202012Validator(SCHEMA).iter_errors(record))
 
 
+def test_the_text_report_speaks_tex_and_words_not_sympy(tmp_path, capsys):
+    # once "refuted at lambda = 1, rbar = 1: printed sqrt(2)*pi*..." and "holds: proved (cancel)"
+    assert main(["check", r"y = \sqrt{2} \pi \lambda \bar r", "--against", r"y = \sqrt{3} \pi \lambda \bar r"]) == 1
+    out = capsys.readouterr().out
+    assert r"refuted at \lambda = 1, \bar{r} = 1: printed \sqrt{2} \pi, derived \sqrt{3} \pi" in out
+    assert not re.search(r"sqrt\(|\*|(?<!\\)lambda|rbar", out)
+    target = tmp_path / "check.json"
+    assert main(["check", r"y = \sqrt{2} \lambda", "--against", r"y = 2 \lambda", "--format", "json", "--output",
+                 str(target), "--quiet"]) == 1
+    cx = json.loads(target.read_text(encoding="utf-8"))["counterexample"]
+    assert (cx["printed"], cx["tex"]["printed"], cx["tex"]["point"]) == ("sqrt(2)", r"\sqrt{2}", {r"\lambda": "1"})
+    assert main(["check", r"y = \frac{h^2 - 1}{h - 1}", "--against", "y = h + 1"]) == 0
+    assert "holds: proved (the difference cancels over a common denominator)" in capsys.readouterr().out
+
+
 @pytest.mark.parametrize("argv, says", [
     (["x = 1 +", "--against", "x = 1"], "the formula ends too early"),
     (["x = 1", "--against", "x = 1", "--domain", "y=0:1"], "--domain names y"),
     (["x = 1", "--against", "x = 1", "--domain", "x=2:1"], "--domain is name=low:high"),
     (["x = __import__('os')", "--against", "x = 1"], "symfloat:"),
     (["x = h", "--against", "x = h", "--domain", "h=1/0:2"], "--domain divides by zero"),      # once a traceback
+    (["x = h", "--against", "x = h", "--where", "0 < R"], "--where names R, which no formula has"),  # once ignored
     (["x = " + "(" * 200 + "h" + ")" * 200, "--against", "x = h"], "nested more than 50 deep"),  # RecursionError
     (["x = h" + "^h" * 3000, "--against", "x = h"], "nests too deeply"),                          # RecursionError
     (["x = " + "\\sqrt " * 3000 + "h", "--against", "x = h"], "nests too deeply"),              # RecursionError
@@ -95,11 +113,12 @@ def test_two_confusions_at_two_places_are_one_candidate():
 
 
 def test_every_proof_strategy_has_its_words():
-    """An erratum's evidence says how the correction is proved in words (check._PROOF_WORDS); a strategy of the
+    """An erratum's evidence says how the correction is proved in words (PROOF_WORDS); a strategy of the
     identity check or the relation check without words would raise KeyError when an erratum is written."""
-    from symfloat.engine import check, identity
+    from symfloat.engine import identity
+    from symfloat.engine.proof_words import PROOF_WORDS
     relation_strategies = ("assumptions", "sign of factors", "sign cells")   # symfloat/engine/relation.py
-    assert set(identity.STRATEGIES) | set(relation_strategies) <= set(check._PROOF_WORDS)
+    assert set(identity.STRATEGIES) | set(relation_strategies) <= set(PROOF_WORDS)
 
 
 def test_a_bracketed_factor_at_the_end_is_no_equation_number():

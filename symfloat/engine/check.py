@@ -34,6 +34,7 @@ from .beta_integral import beta_closed
 from .definitions import DefinitionRoute, route_readings
 from .print_corrections import print_corrections, smallest_correction
 from .identity import Domain, IdentityResult, check_identity, check_rounded
+from .proof_words import PROOF_WORDS
 from .proofs import ProofBook
 from .relation import check_relation
 from .witness import record_decision, undecided_reason
@@ -427,20 +428,6 @@ def _verdict(d, p, ident, corr, outcomes, failures, correction, searched) -> For
     return rep
 
 
-# How a proof strategy shows the claim: the identity check's (symfloat.engine.identity.STRATEGIES), the relation check's
-_PROOF_WORDS = {"cancel": "the difference cancels over a common denominator",
-                "squares": "both sides are non-negative and their squares agree",
-                "expand": "the difference expands to 0",
-                "radsimp": "the difference cancels once its roots are cleared from the denominators",
-                "pythagoras": ("with tangents as sines over cosines and multiple angles expanded, the difference is 0 "
-                               "once $\\sin^2 x + \\cos^2 x = 1$ is used"),
-                "branches": "in each case of its piecewise definition the difference cancels over a common denominator",
-                "simplify": "SymPy's general simplification takes the difference to 0",
-                "assumptions": "the statement follows from the derivation's assumptions",
-                "sign of factors": "the sign of each factor is fixed on the domain",
-                "sign cells": "it holds in every cell between the real roots of its numerators and denominators, and at the roots"}
-
-
 def _erratum(p, ident, corr, corrected_out) -> dict:
     """The erratum's entry: its declaration, with what the engine found, its mathematics in TeX between
     dollars (:mod:`symfloat.model.evidence_tex`)."""
@@ -455,7 +442,7 @@ def _erratum(p, ident, corr, corrected_out) -> dict:
         found.append(f"as printed: {p.unreadable}")
     if corr is not None and corr.holds:
         found.append(f"the correction is {'proved' if corr.status == 'proved' else 'confirmed by sampling'}"
-                     + (f" ({_PROOF_WORDS[corr.strategy]})" if corr.strategy else ""))
+                     + (f" ({PROOF_WORDS[corr.strategy]})" if corr.strategy else ""))
     for o in corrected_out:
         who = "the definition route" if o.witness == DefinitionRoute.name else "a first-principles witness"
         certified = [r for r in o.records if r.get("certified")]

@@ -32,6 +32,8 @@ import sympy as sp
 
 from ..errors import InputError, quoted
 from ..model.latex import Unreadable, read
+from ..model.evidence_tex import tex_number
+from ..model.symbol_names import tex_name
 from .corrections import Correction, corrections
 from .identity import Domain, check_identity
 
@@ -198,9 +200,31 @@ def _simplest_counterexample(a, b, domain: Domain):
 
 
 def _shown(point, va, vb, la, lb) -> dict:
-    values = {la: str(va), lb: str(vb)}
+    """The counterexample's point and sides as strings (SymPy's), and as TeX under ``tex`` for a reader."""
+    values = {la: va, lb: vb}
+    tex = {"point": {_tex(sp.Symbol(str(k))): _tex(v) for k, v in point.items()},
+           **{side: _tex(values[side]) if side in values else "" for side in ("printed", "derived")}}
     return {"point": {str(k): str(v) for k, v in point.items()},
-            "printed": values.get("printed", ""), "derived": values.get("derived", "")}
+            "printed": str(values.get("printed", "")), "derived": str(values.get("derived", "")), "tex": tex}
+
+
+def _tex(value) -> str:
+    r"""*value* (a SymPy expression, or a number as a string) as TeX, each symbol under its typeset name and a
+    symbol the reader made of ``\bar z`` (``zbar``) as ``\bar{z}``.
+
+    >>> _tex(sp.sqrt(2) * sp.pi * sp.Symbol("lambda") * sp.Symbol("rbar")), _tex("9/5")
+    ('\\sqrt{2} \\pi \\lambda \\bar{r}', '\\tfrac{9}{5}')
+    """
+    if isinstance(value, str):
+        try:
+            return tex_number(value)
+        except ValueError:
+            return value
+    names = {}
+    for s in value.free_symbols:
+        base = s.name[:-3] if s.name.endswith("bar") and len(s.name) > 3 else None
+        names[s] = rf"\bar{{{tex_name(base) or base}}}" if base else tex_name(s.name) or s.name
+    return sp.latex(value, symbol_names=names)
 
 
 def _counterexample(a, b, la, lb, domain, sampled: dict):
@@ -260,8 +284,10 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
         raise InputError("check one printed formula at a time")
     constraints = _constraints(where)
     links = _links(rows[0], defined, target)
-    symbols = set().union(*(a.free_symbols | b.free_symbols for a, b, *_ in links),
-                          *(c.free_symbols for c in constraints))
+    symbols = set().union(*(a.free_symbols | b.free_symbols for a, b, *_ in links))
+    stray = sorted(s.name for c in constraints for s in c.free_symbols - symbols)
+    if stray:
+        raise InputError(f"--where names {', '.join(stray)}, which no formula has (a misspelt symbol restricts nothing)")
     space = _domain(symbols, domain or {}, constraints)
     r, link = _decide(links, space, printed)
     verdict = {"proved": "holds", "sampled": "holds", "refuted": "refuted"}.get(r.status, "undecided")

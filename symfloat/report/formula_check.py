@@ -4,6 +4,8 @@ from __future__ import annotations
 import json
 
 from ..engine.formula_check import FormulaCheck
+from ..engine.proof_words import PROOF_WORDS
+from ..model.evidence_tex import tex_number
 
 __all__ = ["check_json", "check_text"]
 
@@ -20,20 +22,22 @@ def check_text(result: FormulaCheck) -> str:
     """The verdict, its evidence, the counterexample with labelled sides, the witness, the corrections."""
     lines = [f"printed:  {result.printed}"] + [f"against:  {a}" for a in result.against]
     if result.verdict == "holds":
-        how = f"proved ({result.strategy})" if result.evidence == "symbolic" else \
+        words = PROOF_WORDS.get(result.strategy, "").replace("$", "")
+        how = (f"proved ({words})" if words else "proved") if result.evidence == "symbolic" else \
             f"every one of {result.samples} exact samples agrees, no symbolic proof"
         lines.append(f"verdict:  holds: {how}")
     elif result.verdict == "refuted":
-        cx = result.counterexample
-        at = f" at {_point(cx['point'])}" if cx["point"] else ""
-        lines.append(f"verdict:  refuted{at}: printed {cx['printed']}, derived {cx['derived']}")
+        tex = result.counterexample["tex"]
+        at = f" at {_point(tex['point'])}" if tex["point"] else ""
+        lines.append(f"verdict:  refuted{at}: printed {tex['printed']}, derived {tex['derived']}")
     else:
         lines.append("verdict:  undecided: the samples could not be evaluated (see --format json, 'tried')")
     w = result.witness
     if w:
         agrees = {"printed": "agrees with the print", "derived": "agrees with the derivation, not the print",
                   "neither": "agrees with neither"}[w["agrees_with"]]
-        lines.append(f"witness:  {w['method']} at {_point(w['point'])}: {w['measured']} ({agrees})")
+        lines.append(f"witness:  {w['method']} at {_point(result.counterexample['tex']['point'])}: "
+                     f"{tex_number(w['measured'])} ({agrees})")
     if result.corrections:
         lines.append("corrections that make the print hold, likeliest first:")
         for i, c in enumerate(result.corrections, 1):
