@@ -114,6 +114,10 @@ def test_a_disagreement_without_a_claimed_stability_says_so_in_words(run):
     code, out, err = run("scene", "cube", "--density", "0.22")
     lines = [line for line in out.splitlines() if line.startswith("DISAGREEMENT: Scheeffer 1902 (171), X ")]
     assert code == 0 and lines and all("(no stability claimed)" in line and "None" not in line for line in lines)
+    # the up vector as the table writes it and the sentence in signs: once "[0.573933, 0.573933, 0.584125]" and
+    # "beta = (2 - x)(1 - s)/z"
+    assert all(" at up (+0." in line and "[" not in line for line in lines)
+    assert any("β = (2 − x)(1 − s)/z" in line for line in lines)
 
 
 def test_the_table_cites_the_printed_places_not_the_derivations(run):

@@ -1,6 +1,7 @@
 """The equilibrium solver: known cases from the sources, the duality s <-> 1 - s, invariance under
 the body's symmetries and under rotations of the frame, completeness, and honest error estimates."""
 import math
+import re
 from fractions import Fraction
 
 import numpy as np
@@ -245,6 +246,14 @@ def test_bad_scene_input_is_refused_with_a_message(args):
                                      "0,0 1,0 1,1 1,0", "0,0 1,0 x,1"])
 def test_bad_polygons_are_refused(polygon):
     with pytest.raises(SceneError):
+        make_scene("section", "0.5", polygon=polygon)
+
+
+@pytest.mark.parametrize("polygon, says", [("0,0 1,1 1,0 0,1", "self-intersecting"),       # once "zero area"
+                                           ("0,0 2,0 2,2 0,2 2,1", "not convex"),
+                                           ("0,0 1,1 2,2", "zero area (its vertices lie on one line)")])
+def test_a_bad_polygon_is_named_for_what_is_wrong(polygon, says):
+    with pytest.raises(SceneError, match=re.escape(says)):
         make_scene("section", "0.5", polygon=polygon)
 
 

@@ -3,10 +3,14 @@ from __future__ import annotations
 
 import json
 import math
+import re
+import unicodedata
 
 import mpmath
 import numpy as np
 
+from ..model.symbol_names import GREEK
+from ..numbers import signs
 from .citations import cited
 
 __all__ = ["scene_record", "scene_json", "scene_table", "scene_plot"]
@@ -75,6 +79,26 @@ def _certificate(c) -> dict:
             **({"reason": c.reason} if c.reason else {})}
 
 
+def _up(vector) -> str:
+    """An up vector as the table shows it: ``(+0.573933, +0.573933, +0.584125)``."""
+    return "(" + ", ".join(f"{x:+.6f}" for x in vector) + ")"
+
+
+_GREEK_WORD = re.compile(r"\b(" + "|".join(GREEK) + r")\b")
+
+
+def _words(text: str) -> str:
+    """A predictor's sentence as a reader sees it: its signs (:func:`symfloat.numbers.signs`) and a Greek
+    letter for a Greek name (``beta = (2 - x)(1 - s)/z`` as ``β = (2 − x)(1 − s)/z``); the record keeps its text.
+
+    >>> _words("beta = (2 - x)(1 - s)/z = 1.085 > 1")
+    'β = (2 − x)(1 − s)/z = 1.085 > 1'
+    """
+    return _GREEK_WORD.sub(lambda m: unicodedata.lookup(f"GREEK {'CAPITAL' if m[1][0].isupper() else 'SMALL'} "
+                                                         f"LETTER {m[1].removeprefix('var').upper().replace('LAMBDA', 'LAMDA')}"),
+                             signs(text))
+
+
 def _formulas(predictions) -> str:
     """The formulas column: the places of the agreeing predictions cited together, each disagreeing one on its
     own with its reason."""
@@ -98,7 +122,7 @@ def scene_table(record) -> str:
              f"{'up (body frame)':<34} {'tilt':>9} {'stability':<12} {'family':<9} {'G above B':>12} "
              f"{'waterplane':<18} {'error':>8}  formulas"]
     for e in record["equilibria"]:
-        up = "(" + ", ".join(f"{x:+.6f}" for x in e["up"]) + ")"
+        up = _up(e["up"])
         family = e["family"] if e["family"] != "ring" else ("ring" if e["ring_shape"] == "closed" else "arc")
         lines.append(f"{up:<34} {e['tilt_deg']:>8.4f}° {e['stability']:<12} {family:<9} "
                      f"{e['potential']:>12.9f} {e['waterplane']:<18} {e['error_rad']:>8.1e}  "
@@ -107,7 +131,7 @@ def scene_table(record) -> str:
         c = e.get("certificate")
         if c is None:
             continue
-        up = "(" + ", ".join(f"{x:+.6f}" for x in e["up"]) + ")"
+        up = _up(e["up"])
         if c["certified"]:
             eigen = ", ".join(f"[{lo:.6g}, {hi:.6g}]" for lo, hi in c["eigenvalue_enclosures"])
             lines.append(f"certified: up {up} is the only equilibrium within {c['box_radius_rad']:.0e} rad "
@@ -116,9 +140,9 @@ def scene_table(record) -> str:
         else:
             lines.append(f"not certified: up {up}: {c['reason']}")
     for p in record["unmatched_predictions"]:
-        lines.append(f"DISAGREEMENT: {cited([p])} predicts an equilibrium at up "
-                     f"{[round(x, 6) for x in p['predicted_up']]} ({p['predicted_stability'] or 'no stability claimed'}); "
-                     f"{p['disagreement']}" + (f" ({p['note']})" if p.get("note") else ""))
+        lines.append(f"DISAGREEMENT: {cited([p])} predicts an equilibrium at up {_up(p['predicted_up'])} "
+                     f"({p['predicted_stability'] or 'no stability claimed'}); {_words(p['disagreement'])}"
+                     + (f" ({_words(p['note'])})" if p.get("note") else ""))
     completeness = record["checks"].get("completeness")
     if completeness:
         lines.append(f"completeness: {completeness['statement']} ({completeness['squares_examined']} squares of the "

@@ -143,9 +143,10 @@ def _convex(points):
         raise SceneError(f"polygon coordinates must lie within ±{float(MAX_SIZE):g} (choose units so)")
     if polygon_area(points) < 0:
         points = points[::-1]
-    if polygon_area(points) == 0:
-        raise SceneError("the polygon has zero area")
     hull = hull_2d(points)
+    if polygon_area(points) == 0:
+        raise SceneError("the polygon has zero area (its vertices lie on one line)" if len(hull) < 3 else
+                         "the polygon is self-intersecting: give the vertices in order around it")
     if len(hull) != len(points):
         raise SceneError("the polygon is not convex (or has collinear vertices): the solver needs a "
                          "strictly convex cross-section")
