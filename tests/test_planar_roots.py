@@ -1,11 +1,14 @@
 """The search for equilibria of one angle (a long prism's section, a cylinder's meridian) where a grid is easily
 fooled: a stable and an unstable position a tenth of a degree apart just before they meet (a saddle-node), and a
-symmetric end whose second variation vanishes.
+symmetric end whose second variation vanishes or nearly vanishes (a pitchfork's partner closer to it than float64
+can tell).
 
 Each expectation is read off a search of its own: ``U'`` scanned on a dense grid by the clipped body's floating
 state (no interpolation, no Newton step), the sign changes counted; or the potential's change beside the end at
-40 digits. Each case was missed or refused by the search before the interpolant was cut at changes of the
-submerged corners and where it turns near 0 (``symfloat/solver/planar.py``).
+40 digits; or a pitchfork's partner placed by float64 alone, scaled by the square root of the distance from the
+pitchfork. Each case was missed, misplaced or refused by the search before the interpolant was cut at changes of
+the submerged corners and where it turns near 0, and roots beside a symmetric end were judged at 30 digits
+(``symfloat/solver/planar.py``).
 """
 import math
 from fractions import Fraction
@@ -96,3 +99,30 @@ def test_a_cylinder_whose_upright_second_variation_vanishes(density, quartic):
     assert abs(rise - mpmath.mpf(quartic.numerator) / quartic.denominator) < 1e-5
     solution = solve(make_scene("cylinder", density, dims="1,1.5"))
     assert sorted((e.tilt_deg, e.stability) for e in solution.equilibria) == [(0.0, "stable"), (90.0, "unstable")]
+
+
+def _partner_offset(density):
+    """The square's stable tilted class next to its diagonal below 9/32 (a pitchfork): its angle from the diagonal."""
+    solution = solve(make_scene("section", density, polygon="0,0 1,0 1,1 0,1"))
+    tilted = [e for e in solution.equilibria if e.copies == 8]        # on no mirror
+    assert len(solution.equilibria) == 3 and len(tilted) == 1 and tilted[0].stability == "stable"
+    return abs(math.atan2(abs(tilted[0].up[1]), abs(tilted[0].up[0])) - math.pi / 4), tilted[0].error_rad
+
+
+def test_a_pitchforks_partner_below_float64s_resolution_is_placed_at_30_digits():
+    # the square at 9/32 - 1e-13: the partner 6.0e-7 rad from the diagonal, found and placed by float64 alone;
+    # at 9/32 - 1e-18 it lies sqrt(1e-5) times as far (a pitchfork's partner at sqrt(-d/a), d the diagonal's second
+    # variation, linear in the density): 1.9e-9 rad, where float64's U' is rounding. It was reported 1.0e-5 rad out
+    # with a stated error of 9.1e-6, and at 9/32 - 1e-16 the command refused
+    seen, _ = _partner_offset("0.2812499999999")
+    close, error = _partner_offset("0.281249999999999999")
+    assert 5.9e-7 < seen < 6.0e-7
+    assert abs(close / seen - math.sqrt(1e-5)) <= 1e-4 * math.sqrt(1e-5) and error < 1e-12
+    assert _partner_offset("0.2812499999999999")[0] == pytest.approx(seen * math.sqrt(1e-3), rel=1e-4)
+
+
+@pytest.mark.parametrize("density", ["0.750000000000001", "0.750000000000000001"])
+def test_the_triangle_just_past_its_pitchfork_at_three_quarters_is_answered(density):
+    # the right isosceles triangle 1e-15 and 1e-18 past s = 3/4: the command refused (minima - maxima -2), the
+    # partner of the pitchfork 1e-7 rad or less from the mirror; the mirror's position and its partner now
+    assert len(solve(make_scene("section", density, polygon="0,0 1,0 0,1")).equilibria) == 4

@@ -9,13 +9,16 @@ polished by safeguarded Newton steps.  The interpolant is trusted only where
 submerged corners (or the waterplane's shape) change, since ``f``'s higher
 derivatives jump there, and where the interpolant turns near 0 ``f`` is
 measured at the turn (a stable and an unstable position a tenth of a degree
-apart, just before they meet, fit inside one cell of the grid).
+apart, just before they meet, fit inside one cell of the grid).  Beside a
+symmetric end, where ``f`` falls below float64's rounding, a root is judged
+at 30 digits (:func:`_beside_end`).
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
 
+import mpmath
 import numpy as np
 
 __all__ = ["Root", "roots"]
@@ -68,18 +71,15 @@ def _examined(evaluate, t0, t1, v0, v1, depth: int = 0):
 
 
 def _polish(evaluate, theta, lo, hi, scale) -> Root | None:
-    """Newton from *theta*, kept inside ``[lo, hi]``; bisection when the bracket has a sign change.  It goes on
-    while its steps shrink, even where ``f`` is already at rounding's level: next to a root of higher order
-    (a symmetric end whose second variation vanishes, ``f ~ eps^3``) ``f`` is that small far from the root, and
-    stopping there left a spurious root 1e-6 rad from the end."""
+    """Newton from *theta*, kept inside ``[lo, hi]``; bisection when the bracket has a sign change."""
     f_lo, f_hi = evaluate(lo)[0], evaluate(hi)[0]
     bracket = f_lo * f_hi < 0
-    best, last = None, math.inf
+    best = None
     for _ in range(60):
         f, fp = evaluate(theta)
         if best is None or abs(f) < abs(best.f):
             best = Root(theta, f, fp)
-        if f == 0:
+        if abs(f) <= 1e-15 * scale:
             break
         if bracket:
             if (f < 0) == (f_lo < 0):
@@ -92,20 +92,21 @@ def _polish(evaluate, theta, lo, hi, scale) -> Root | None:
             if not bracket:
                 return best if abs(best.f) <= 1e-12 * scale else None
             new = (lo + hi) / 2
-        if abs(new - theta) <= 1e-16 * max(1.0, abs(theta)) or (abs(f) <= 1e-15 * scale
-                                                                 and abs(new - theta) >= last):
-            break               # converged, or the steps no longer shrink where f is at rounding's level
-        theta, last = new, abs(new - theta)
+        if abs(new - theta) <= 1e-16 * max(1.0, abs(theta)):
+            break
+        theta = new
     return best if abs(best.f) <= 1e-12 * scale else None
 
 
 def roots(evaluate, lo: float, hi: float, points: int, scale: float, include_ends: bool = False,
-          regime=None) -> list[Root]:
+          regime=None, precise=None) -> list[Root]:
     """Every root of ``f`` on ``[lo, hi]``; ``evaluate(theta) -> (f, f')``.  With *include_ends*
     the ends are roots by symmetry and are returned as they are.  *regime* (``theta ->`` a hashable), where
     given, names the piece of ``f`` a tilt lies on (which vertices are under water): ``f`` is smooth within a
     piece and its higher derivatives jump between pieces, so a cell whose ends lie on different pieces is
-    cut where the piece changes (:func:`_cells`) before the interpolant is fitted."""
+    cut where the piece changes (:func:`_cells`) before the interpolant is fitted.  *precise* (``theta ->
+    (f, f')`` at 30 digits, mpf), where given with *include_ends*, judges a root found within :data:`NEAR` of an
+    end (:func:`_beside_end`)."""
     grid = [float(t) for t in np.linspace(lo, hi, points + 1)]
     values = [evaluate(t) for t in grid]
     width = grid[1] - grid[0]
@@ -119,17 +120,69 @@ def roots(evaluate, lo: float, hi: float, points: int, scale: float, include_end
     found: list[Root] = []
     if include_ends:
         found += [Root(lo, *values[0]), Root(hi, *values[-1])]
+    ends = found[:]                 # roots by symmetry, exactly where they are: no distance of their own
     for t, a, b in candidates:
         r = _polish(evaluate, t, a, b, scale)
         if r is None:
             continue
-        if include_ends and (abs(r.theta - lo) < 1e-7 or abs(r.theta - hi) < 1e-7):
+        judged = include_ends and precise is not None and min(abs(r.theta - lo), abs(r.theta - hi)) < NEAR
+        if judged:
+            r = _beside_end(precise, r, lo if abs(r.theta - lo) < abs(r.theta - hi) else hi, scale)
+            if r is None:
+                continue
+        elif include_ends and (abs(r.theta - lo) < 1e-7 or abs(r.theta - hi) < 1e-7):
             continue
-        if any(abs(r.theta - q.theta) <= 1e-9 + _distance(q, scale) + _distance(r, scale) for q in found):
+        # a root judged beside an end is not the end (f changes sign between them at 30 digits), however close
+        if any(abs(r.theta - q.theta) <= 1e-9 + (q not in ends and _distance(q, scale)) + _distance(r, scale)
+               for q in found if not (judged and q in ends)):
             continue
         found.append(r)
     found.sort(key=lambda r: r.theta)
     return found
+
+
+NEAR = 1e-4             # radians: beside a symmetric end, f ~ a eps^3 is at float64's rounding out to about here
+
+
+def _beside_end(precise, r: Root, end: float, scale: float) -> Root | None:
+    """The float64 root *r* beside the symmetric *end*, judged at 30 digits: ``None`` where no root lies between
+    the end and just beyond *r*, else that root.  Beside an end whose second variation nearly vanishes,
+    ``f ~ d eps + a eps^3`` (``d = f'(end)``) falls below float64's rounding long before it vanishes, and a float64
+    root there may be the end itself (the cylinder 1, 3/2 at s = 1/3: ``f ~ eps^3/4``, a 'root' 6.6e-7 rad out)
+    or the partner of a pitchfork (the square at 9/32 - 1e-13: the partner 6e-7 rad out, float64's 1e-5).
+    ``f`` has the sign of ``d eps`` right beside the end, so a root lies between the end and ``1.1 eps_r`` exactly
+    where ``f`` has the other sign there; it is at ``eps^2 = -d/a``, bisected where ``f`` is resolved at 30 digits
+    on both sides of it, else taken from that expansion (its error then follows from its residual).  An end whose
+    second variation is 0 at 30 digits has no partner that can be told from it: its higher orders decide it."""
+    if abs(r.theta - end) <= 4e-16 * max(1.0, abs(end)):
+        return None                 # the end itself, to float64's last digit
+    with mpmath.workdps(30):
+        e, noise = mpmath.mpf(end), mpmath.mpf(10) ** -25 * scale
+        side = 1 if r.theta > end else -1
+        d = precise(e)[1]
+        if abs(d) <= noise:
+            return None
+        linear = 1 if d * side > 0 else -1
+        reach = mpmath.mpf(1.1) * abs(mpmath.mpf(r.theta) - e)
+        f_reach = precise(e + side * reach)[0]
+        if abs(f_reach) <= noise or (1 if f_reach > 0 else -1) == linear:
+            return None
+        a = (f_reach * side - d * reach) / reach ** 3
+        delta = min(mpmath.sqrt(-d / a), reach)
+        lo, hi = delta / 2, min(2 * delta, reach)
+        f_lo, f_hi = precise(e + side * lo)[0], precise(e + side * hi)[0]
+        if min(abs(f_lo), abs(f_hi)) > noise and (1 if f_lo > 0 else -1) == linear != (1 if f_hi > 0 else -1):
+            for _ in range(100):
+                delta = (lo + hi) / 2
+                f_m = precise(e + side * delta)[0]
+                if f_m == 0 or hi - lo <= mpmath.mpf(10) ** -28:
+                    break
+                if (1 if f_m > 0 else -1) == linear:
+                    lo = delta
+                else:
+                    hi = delta
+        f, fprime = precise(e + side * delta)
+        return Root(float(e + side * delta), float(f), float(fprime))
 
 
 EDGE = 1e-7             # radians: an end's own piece may be degenerate (at a mirror a vertex can lie on the water;

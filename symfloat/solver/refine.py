@@ -11,7 +11,7 @@ import mpmath
 from ..geometry.floating import floating_state
 from .bodies import polyhedron
 
-__all__ = ["refine_sphere", "polish", "refine_planar", "polish_planar", "planar_potential", "planar_residual",
+__all__ = ["refine_sphere", "polish", "refine_planar", "polish_planar", "planar_slope", "planar_potential", "planar_residual",
            "angle_between"]
 
 
@@ -113,6 +113,12 @@ def _planar(poly, theta, s):
     st, g, H = _local_mp(poly, u, s)
     b = [sum(basis[k] * e[k] for k in range(3)) for basis in st.basis]
     return g[0] * b[0] + g[1] * b[1], sum(b[i] * H[i, j] * b[j] for i in range(2) for j in range(2))
+
+
+def planar_slope(poly, theta, s):
+    """``U'(theta)`` and ``U''(theta)`` of a section at *poly*'s precision (mpmath), under its digits."""
+    with mpmath.workdps(poly.dps):
+        return _planar(poly, mpmath.mpf(theta), s)
 
 
 def polish_planar(scene, theta, scale: float, dps: int = 30, steps: int = 40, cap: float = 1e-2):

@@ -48,7 +48,7 @@ from .degenerate import degenerate_class, flat_cluster
 from .families import family_index, family_seeds
 from .local import local, waterplane_polygon
 from .planar import roots
-from .refine import planar_potential, planar_residual, polish_planar
+from .refine import planar_potential, planar_residual, planar_slope, polish_planar
 from .selfcheck import IndexCheckError
 from .symmetry import box_group, orbit, planar_group, prism_group, representative, same_class
 from .vertex import EVENT_DIGITS, event_digits, lateral_arc, vertex_depths
@@ -498,6 +498,14 @@ def _section(scene: Scene):
         state = local(poly, np.array([math.cos(theta), math.sin(theta), 0.0]), s).state
         return tuple(corners @ np.array([float(x) for x in state.u]) < float(state.t))
 
+    @functools.cache
+    def at_digits():
+        return polyhedron(scene, dps=30)
+
+    def precise(theta):
+        """``U'`` and ``U''`` at 30 digits (beside a symmetric end, where float64 cannot tell)."""
+        return planar_slope(at_digits(), theta, s)
+
     lo, hi, ends = _fundamental_arc(group)
     base = max(48, round(360 * (hi - lo) / (2 * math.pi)))
     searches = []
@@ -505,7 +513,8 @@ def _section(scene: Scene):
         searches.append(f"grid of {points}")
         out, index = _section_roots(scene, poly, group, evaluate, roots(evaluate, lo, hi, points, scale,
                                                                          include_ends=ends,
-                                                                         regime=submerged_corners), scale)
+                                                                         regime=submerged_corners,
+                                                                         precise=precise), scale)
         if index == 0:
             break
     else:
@@ -517,6 +526,10 @@ def _section(scene: Scene):
                  "arc_deg": [math.degrees(lo), math.degrees(hi)]}
 
 
+ON_MIRROR = 1e-13   # radians: a section's images closer than this are one position (float64 rounds a unit vector turned
+                    # by the group's matrices by about 1e-16; a pitchfork's partner can lie 1e-12 from its mirror)
+
+
 def _section_roots(scene, poly, group, evaluate, found, scale):
     """The equilibria of a section from the roots of ``U'`` on the fundamental arc, one per class,
     and minima - maxima over the whole circle (a degenerate root counts by its higher orders)."""
@@ -524,19 +537,24 @@ def _section_roots(scene, poly, group, evaluate, found, scale):
     out, index = [], 0
     for r in found:
         u = np.array([math.cos(r.theta), math.sin(r.theta), 0.0])
-        if any(np.linalg.norm(g @ u - np.array(e.up)) <= 1e-7 for e in out for g in group):
+        lipschitz = abs(evaluate(r.theta + STEP)[1] - evaluate(r.theta - STEP)[1]) / (2 * STEP)
+        err, method = _off_mirror(equilibrium_error(planar_residual(scene, r.theta), abs(r.fprime), lipschitz, scale),
+                                  u, group)
+        # a copy of a class found already: within both errors of it (a pitchfork's partner can lie 1e-9 rad from
+        # the position on the mirror it was born from, and is another class)
+        if any(np.linalg.norm(g @ u - np.array(e.up)) <= min(1e-7, 2 * (err + e.error_rad) + 1e-12)
+               for e in out for g in group):
             continue
         loc = local(poly, u, s)
         rep = representative(u, group)
-        lipschitz = abs(evaluate(r.theta + STEP)[1] - evaluate(r.theta - STEP)[1]) / (2 * STEP)
-        err, method = equilibrium_error(planar_residual(scene, r.theta), abs(r.fprime), lipschitz, scale)
         tol = eigenvalue_error(lipschitz, err, scale)
         stability, evidence = stability_of((r.fprime,), tol), "second variation"
         side, fprime, digits = (1 if r.fprime > 0 else -1), r.fprime, ()
         if stability == "indifferent":
             # next to a bifurcation: the root polished at 30 digits decides where float64 does not
             theta, residual, second = polish_planar(scene, r.theta, scale)
-            err30, method30 = equilibrium_error(float(residual), abs(float(second)), lipschitz, scale)
+            err30, method30 = _off_mirror(equilibrium_error(float(residual), abs(float(second)), lipschitz, scale),
+                                          u, group)
             stability = stability_of((float(second),), lipschitz * max(err30 - ROUNDING, 0.0) + 1e-25 * scale)
             if stability != "indifferent":
                 u = np.array([float(mpmath.cos(theta)), float(mpmath.sin(theta)), 0.0])
@@ -555,12 +573,20 @@ def _section_roots(scene, poly, group, evaluate, found, scale):
             evidence = "higher orders" if stability != "indifferent" else "undecided"
         if side is None:
             return out, None            # a root whose index cannot be decided: the check cannot be made
-        index += len(orbit(u, group)) * side
+        index += len(orbit(u, group, ON_MIRROR)) * side
         out.append(Equilibrium(_clean(rep), 90.0, stability, "isolated",
                                loc.U, "rectangle", (fprime,),
-                               err, method, len(orbit(u, group)), stability_evidence=evidence, digits=digits))
+                               err, method, len(orbit(u, group, ON_MIRROR)), stability_evidence=evidence, digits=digits))
     out.sort(key=lambda e: (round(e.potential / scale, 12), e.up))
     return out, index
+
+
+def _off_mirror(error: tuple[float, str], u, group) -> tuple[float, str]:
+    """*error* of a section's root at *u*, where a residual of 0 at 30 digits off every mirror is float64's
+    rounding of the heel angle, not an exact position (only a mirror fixes one exactly)."""
+    if error[1] == "exact" and len(orbit(u, group, ON_MIRROR)) == len(group):
+        return ROUNDING, "rounding"
+    return error
 
 
 def _fundamental_arc(group) -> tuple[float, float, bool]:
@@ -605,7 +631,16 @@ def _cylinder(scene: Scene):
         it stays the same."""
         return slice_at(theta).shape
 
-    found = roots(evaluate, 0.0, math.pi / 2, 180, scale, include_ends=True, regime=waterplane_shape)
+    with mpmath.workdps(40):
+        exact_s = mpmath.mpf(scene.density.numerator) / scene.density.denominator
+
+    def precise(theta):
+        """``U'`` and ``U''`` at 30 digits at the scene's exact density (beside upright or lying)."""
+        c = cylinder_slice(r, L, theta, exact_s, dps=30)
+        return c.f, c.fprime
+
+    found = roots(evaluate, 0.0, math.pi / 2, 180, scale, include_ends=True, regime=waterplane_shape,
+                  precise=precise)
     out = []
     for q in found:
         c = cylinder_slice(r, L, q.theta, s)
