@@ -149,7 +149,7 @@ def _beside_end(precise, r: Root, end: float, scale: float) -> Root | None:
     the end and just beyond *r*, else that root.  Beside an end whose second variation nearly vanishes,
     ``f ~ d eps + a eps^3`` (``d = f'(end)``) falls below float64's rounding long before it vanishes, and a float64
     root there may be the end itself (the cylinder 1, 3/2 at s = 1/3: ``f ~ eps^3/4``, a 'root' 6.6e-7 rad out)
-    or the partner of a pitchfork (the square at 9/32 - 1e-13: the partner 6e-7 rad out, float64's 1e-5).
+    or the partner of a pitchfork (the square at 9/32 - 1e-18: the partner 1.9e-9 rad out, float64's 'root' 1e-5).
     ``f`` has the sign of ``d eps`` right beside the end, so a root lies between the end and ``1.1 eps_r`` exactly
     where ``f`` has the other sign there; it is at ``eps^2 = -d/a``, bisected where ``f`` is resolved at 30 digits
     on both sides of it, else taken from that expansion (its error then follows from its residual).  An end whose
