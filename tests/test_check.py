@@ -85,6 +85,9 @@ def test_the_text_report_speaks_tex_and_words_not_sympy(tmp_path, capsys):
     assert (cx["printed"], cx["tex"]["printed"], cx["tex"]["point"]) == ("sqrt(2)", r"\sqrt{2}", {r"\lambda": "1"})
     assert main(["check", r"y = \frac{h^2 - 1}{h - 1}", "--against", "y = h + 1"]) == 0
     assert "holds: proved (the difference cancels over a common denominator)" in capsys.readouterr().out
+    # a print that holds has a witness and no counterexample: its point is its own (once a TypeError)
+    assert main(["check", r"V = \frac{\pi h^2}{3} (3r - h)", "--against", r"V = \int_{r-h}^{r} \pi (r^2 - x^2) \, dx"]) == 0
+    assert "witness:  quadrature (mpmath tanh-sinh, 30 digits) at h = 1, r = 1: " in capsys.readouterr().out
 
 
 @pytest.mark.parametrize("argv, says", [

@@ -254,7 +254,8 @@ def _witness(links, point) -> dict | None:
         agree_derived = abs(measured - closed) <= sp.Float(10) ** -20 * scale
         return {"method": "quadrature (mpmath tanh-sinh, 30 digits)", "point": dict(point),
                 "measured": sp.sstr(measured, full_prec=False), "printed": sp.sstr(claimed, full_prec=False),
-                "agrees_with": "printed" if agree_printed else "derived" if agree_derived else "neither"}
+                "agrees_with": "printed" if agree_printed else "derived" if agree_derived else "neither",
+                "tex": {"point": {_tex(sp.Symbol(k)): _tex(v) for k, v in point.items()}}}
     return None
 
 

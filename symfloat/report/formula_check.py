@@ -36,7 +36,7 @@ def check_text(result: FormulaCheck) -> str:
     if w:
         agrees = {"printed": "agrees with the print", "derived": "agrees with the derivation, not the print",
                   "neither": "agrees with neither"}[w["agrees_with"]]
-        lines.append(f"witness:  {w['method']} at {_point(result.counterexample['tex']['point'])}: "
+        lines.append(f"witness:  {w['method']} at {_point(w['tex']['point'])}: "
                      f"{tex_number(w['measured'])} ({agrees})")
     if result.corrections:
         lines.append("corrections that make the print hold, likeliest first:")
