@@ -19,7 +19,7 @@ def _shown(name: str) -> str:
 def test_the_readme_session_is_what_the_commands_print(cache_dir, graefe_reports, monkeypatch):
     monkeypatch.setenv("SYMFLOAT_CACHE", str(cache_dir))
     fresh = session_text()
-    assert "refuted at h = 1, r = 2: printed 9/5, derived 27/20" in fresh      # the commands ran, and check's verdict
+    assert r"refuted at h = 1, r = 2: printed \frac{9}{5}, derived \frac{27}{20}" in fresh      # the commands ran, and check's verdict
     assert without_timings(_shown("")) == without_timings(fresh)
 
 
