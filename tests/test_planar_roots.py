@@ -41,7 +41,8 @@ def _tilted(solution):
 
 
 # the rectangle 3 x 2 a millionth below its saddle-node s* = 0.0834657892... (the density at which its tilted
-# pair is born; found by the same scan at densities 1e-7 apart)
+# pair is born, located by the solver audit's own scans of U' at densities 1e-7 apart; the test does not rest
+# on it: the scan below counts the pair at this density)
 RECTANGLE_BELOW = "0.083464789232282929955746824128"
 
 
@@ -76,7 +77,7 @@ def test_other_rectangles_below_their_saddle_nodes(polygon, density):
 
 def test_a_cylinder_just_below_its_saddle_node_keeps_its_tilted_pair():
     # the cylinder of radius 1 and length 3, 1e-8 below the density s* = 0.0601501663... at which its tilted
-    # pair is born (the scan at densities 1e-9 apart); the pair lies 0.015 degrees apart
+    # pair is born (the solver audit's scans at densities 1e-9 apart); the pair lies 0.015 degrees apart
     s = Fraction("0.060150156348571983887")
     scan = _sign_changes(lambda t: float(cylinder_slice(1.0, 3.0, t, float(s)).f), 10.85, 11.0, 300)
     assert len(scan) == 2

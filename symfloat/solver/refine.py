@@ -11,8 +11,8 @@ import mpmath
 from ..geometry.floating import floating_state
 from .bodies import polyhedron
 
-__all__ = ["refine_sphere", "polish", "refine_planar", "polish_planar", "planar_slope", "planar_potential", "planar_residual",
-           "angle_between"]
+__all__ = ["refine_sphere", "polish", "refine_planar", "polish_planar", "planar_slope", "planar_potential",
+           "planar_residual", "angle_between"]
 
 
 def _local_mp(poly, u, s):
