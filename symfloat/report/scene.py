@@ -9,8 +9,8 @@ import unicodedata
 import mpmath
 import numpy as np
 
-from ..model.symbol_names import GREEK
 from ..numbers import signs
+from ..prose import GREEK
 from .citations import cited
 
 __all__ = ["scene_record", "scene_json", "scene_table", "scene_plot"]
