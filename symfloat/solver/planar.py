@@ -127,7 +127,11 @@ def roots(evaluate, lo: float, hi: float, points: int, scale: float, include_end
             continue
         judged = include_ends and precise is not None and min(abs(r.theta - lo), abs(r.theta - hi)) < NEAR
         if judged:
-            r = _beside_end(precise, r, lo if abs(r.theta - lo) < abs(r.theta - hi) else hi, scale)
+            end = lo if abs(r.theta - lo) < abs(r.theta - hi) else hi
+            if any(q not in ends and (q.theta - end) * (r.theta - end) > 0
+                   and abs(q.theta - end) <= 1.1 * abs(r.theta - end) for q in found):
+                continue            # the root between the end and this one is judged already
+            r = _beside_end(precise, r, end, scale)
             if r is None:
                 continue
         elif include_ends and (abs(r.theta - lo) < 1e-7 or abs(r.theta - hi) < 1e-7):
