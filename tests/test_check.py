@@ -100,6 +100,8 @@ def test_the_text_report_speaks_tex_and_words_not_sympy(tmp_path, capsys):
     (["x = " + "(" * 200 + "h" + ")" * 200, "--against", "x = h"], "nested more than 50 deep"),  # RecursionError
     (["x = h" + "^h" * 3000, "--against", "x = h"], "nests too deeply"),                          # RecursionError
     (["x = " + "\\sqrt " * 3000 + "h", "--against", "x = h"], "nests too deeply"),              # RecursionError
+    (["y = a", "--against", "a = 1", "--against", "a = 2"], "--against defines 'a' twice"),     # once the last won
+    (["y = a", "--against", "1", "--against", "2"], "gives two values the print must have"),
 ])
 def test_bad_input_is_one_line_and_exit_2(argv, says, capsys):
     assert main(["check", *argv]) == 2
@@ -156,3 +158,39 @@ def test_the_simple_points_stay_few_whatever_the_symbols_and_the_domain():
 def test_a_correction_is_never_a_thing_equal_to_itself():
     # 'y = h' against y = 2h once got 'h = h' and 'y = y' as corrections
     assert [c.text for c in symfloat.check("y = h", "y = 2h").corrections] == []
+
+
+def test_a_power_too_large_to_compute_is_passed_over():
+    # h^h^...^h forty high once hung at the shown point h = 2, h^{h^{100}} in the sampling, h^{h^8} for 50 s in
+    # the corrections' sampling at h = 3/2 (SymPy raises 3/2 to 6561/256 by way of 3^6561 and factors it)
+    import sympy as sp
+    from fractions import Fraction
+    from symfloat.engine.identity import computable
+    from symfloat.model.compiled import _pow_exact
+    h = sp.Symbol("h")
+    assert computable(h ** h ** 3, {h: sp.Integer(2)}) and computable(h ** h ** 8, {h: sp.Integer(2)})
+    assert not computable(h ** h ** 100, {h: sp.Integer(2)})                   # 2^(2^100): by its size
+    assert not computable(h ** h ** 8, {h: sp.Rational(3, 2)})                 # 3^6561 on the way
+    assert not computable(h ** h ** 100, {h: sp.Rational(2, 3)})               # a 160-bit denominator
+    assert not isinstance(_pow_exact(Fraction(2), 2 ** 100), Fraction)         # a ball-backed real, not 2^(2^100)
+    assert _pow_exact(Fraction(3, 2), 3) == Fraction(27, 8)
+    r = symfloat.check("y = h" + "^h" * 40, "y = h", propose=False)
+    assert r.verdict == "refuted" and r.counterexample["point"] == {"h": "1/2"}
+    r = symfloat.check("y = h^{h^{8}}", "y = h", propose=True)
+    assert r.verdict == "refuted" and r.counterexample["printed"] == str(2 ** 256)
+    assert symfloat.check("y = h^{h^{100}}", "y = h").verdict == "undecided"
+
+
+def test_the_shown_point_is_one_where_the_formula_is_real():
+    # \sqrt{h-3} was shown at h = 1: printed \sqrt{2} i
+    r = symfloat.check(r"y = \sqrt{h-3}", r"y = \sqrt{h-3}+1", propose=False)
+    assert r.counterexample["point"] == {"h": "3"}
+    assert (r.counterexample["printed"], r.counterexample["derived"]) == ("0", "1")
+
+
+def test_a_greek_letter_typed_as_itself_is_its_command():
+    # 'π r^2' was refuted against '\pi r^2' at π = 1: the reader took π for a symbol of that name
+    import sympy as sp
+    assert symfloat.check("y = π r^2", r"y = \pi r^2").verdict == "holds"
+    assert read("V = α Δ").rows == read(r"V = \alpha \Delta").rows
+    assert sp.pi in read("y = π").rows[0][0]

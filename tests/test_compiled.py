@@ -50,10 +50,11 @@ def test_a_scene_imports_neither_sympy_nor_a_statements_module(argv, tmp_path):
 
 
 def _readings(monkeypatch, tmp_path):
-    """Hasáb's readings as a scene would load them with no shipped file, the cache in *tmp_path*."""
+    """Hasáb's readings as a scene would load them with no shipped file, the cache in *tmp_path* (the predictors
+    imported first: importing them loads their readings, which would fill the cache before the test looks)."""
+    module = registry.part("hasab", "predictors")
     monkeypatch.setenv("SYMFLOAT_CACHE", str(tmp_path))
     monkeypatch.setattr(compiled, "SHIPPED", "absent.json")
-    module = registry.part("hasab", "predictors")
     return lambda: Readings(module.__file__, module.__package__, module.READINGS.spec)
 
 

@@ -8,7 +8,7 @@ from types import SimpleNamespace
 
 from symfloat.model.erratum import APPARATUS, KINDS, apparatus
 from symfloat.cli import _summary_by_source
-from symfloat.report.errata import apparatus_counts, errata_json, errata_markdown
+from symfloat.report.errata import apparatus_counts, errata_json, errata_latex, errata_markdown
 
 
 def _formula(name, kind):
@@ -41,6 +41,16 @@ def test_the_markdown_lists_the_two_apparatus_apart():
     assert "3 errata: 2 faults of the original, 1 correction of the transcription" in md      # one: singular
     counts = apparatus_counts(json.loads(errata_json(REPORTS)))
     assert counts == "2 faults of the original, 1 correction of the transcription"
+
+
+def test_the_latex_list_keeps_the_two_apparatus_apart_too():
+    # it was one list per source, the scan's corrections first (source order), each labelled "Read:"
+    tex = errata_latex(REPORTS)
+    one = tex.index("\\section*{Part I: Faults of the original (2)}")
+    two = tex.index("\\section*{Part II: Corrections of the transcription (1)}")
+    assert one < tex.index("\\textbf{(2)}") < tex.index("\\textbf{(3)}") < two < tex.index("\\textbf{(1)}")
+    assert tex[one:two].count("Corrected:") == 2 and "The original very probably printed:" in tex[two:]
+    assert "\\\\" not in tex               # lines end with \par: \\ after a display \] is a LaTeX error
 
 
 def test_the_run_summary_counts_the_apparatus_apart():

@@ -42,7 +42,8 @@ for did in registry.select():
     profile.runcall(importlib.reload, module)
     out[did] = (pstats.Stats(profile).total_calls, size(d))
 # the control: a statement that integrates at import, as Scheeffer I-III's did
-CONTROL = "import sympy as sp\na, x = sp.symbols('a x', positive=True)\nV = sp.integrate(x**2 * sp.sin(x)**3, (x, 0, a))"
+CONTROL = ("import sympy as sp\na, x = sp.symbols('a x', positive=True)\n"
+           "V = sp.integrate(x**2 * sp.sin(x)**3, (x, 0, a))")
 for _ in range(2):                         # the second run counts, SymPy's caches filled by the first
     namespace, profile = {}, cProfile.Profile()
     profile.runcall(exec, CONTROL, namespace)

@@ -47,7 +47,8 @@ from contextlib import contextmanager
 import sympy as sp
 from flint import acb, arb, ctx
 
-__all__ = ["Unsupported", "ball", "integral", "iterated_integral", "real_function", "sign_change_root", "working_precision", "exact", "upper", "lower"]
+__all__ = ["Unsupported", "ball", "integral", "iterated_integral", "real_function", "sign_change_root",
+           "working_precision", "exact", "upper", "lower", "powers_bounded"]
 
 
 # The integrator's effort: at most this many evaluations of the integrand per bit of precision.  A holomorphic
@@ -250,10 +251,11 @@ def _extreme(e, parts):
     return extreme
 
 
-def _real(z: acb, what) -> arb:
-    """The real part of *z*, whose imaginary part must hold 0 (the value is real), else a clear error."""
+def _real(z: acb, what, prefix: str = "") -> arb:
+    """The real part of *z*, whose imaginary part must hold 0 (the value is real), else a clear error naming
+    *prefix* and *what* (printed only then: printing an expression costs more than the ball)."""
     if not z.imag.contains(0):
-        raise ValueError(f"{what} is not a real number (its enclosure is {z})")
+        raise ValueError(f"{prefix}{what} is not a real number (its enclosure is {z})")
     return z.real
 
 
@@ -265,6 +267,28 @@ def ball(expr, prec: int, at: dict | None = None) -> arb:
     f = _compile(e, variables)
     with working_precision(prec):
         return _real(f(tuple(acb(at[v]) for v in variables), False), e)
+
+
+def powers_bounded(expr, point: dict, bits: int) -> bool:
+    """Whether every power of *expr* whose exponent holds a symbol stays below ``2^bits`` in size at *point*
+    (symbol -> rational), judged on 64-bit balls before anything computes it exactly: ``h^{h^{h^h}}`` at h = 2
+    is 2^65536, one level more a number no memory holds, which SymPy would compute when the point is put in.
+    ``False`` also where a base or exponent has no finite ball there."""
+    at = {s: ball(v, 64) for s, v in point.items()}
+    for power in sp.preorder_traversal(expr):
+        if not (isinstance(power, sp.Pow) and power.exp.free_symbols):
+            continue
+        try:
+            base, exponent = abs(ball(power.base, 64, at)), ball(power.exp, 64, at)
+        except (Unsupported, ValueError, ArithmeticError, TypeError):
+            return False
+        if not (base.is_finite() and exponent.is_finite()):
+            return False
+        if base.contains(0) or base.contains(1):
+            continue
+        if (abs(exponent) * abs(base.log())).upper() > bits * math.log(2):     # |e ln b| against bits ln 2
+            return False
+    return True
 
 
 def real_function(expr, variables):
@@ -316,7 +340,7 @@ def integral(expr, var, lo, hi, prec: int, at: dict | None = None) -> arb:
         value = acb.integral(lambda z, analytic: f((z, *fixed), analytic), a, b, eval_limit=EVALUATIONS * prec)
         if not value.is_finite():
             return arb.nan()
-        return _real(value, f"the integral of {expr}")
+        return _real(value, expr, "the integral of ")
 
 
 # An iterated integral's budget: at most this many evaluations of its integrand, over all its nested integrals
@@ -377,7 +401,7 @@ def iterated_integral(expr, limits, prec: int, at: dict | None = None) -> arb:
                              eval_limit=EVALUATIONS * prec)
         if budget[0] <= 0 or not value.is_finite():
             return arb.nan()
-        return _real(value, f"the integral of {expr}")
+        return _real(value, expr, "the integral of ")
 
 
 def _branch_points(expr, var, ends) -> frozenset:

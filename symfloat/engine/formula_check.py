@@ -35,7 +35,7 @@ from ..model.latex import Unreadable, read
 from ..model.evidence_tex import tex_number
 from ..model.symbol_names import tex_name
 from .corrections import Correction, corrections
-from .identity import Domain, check_identity
+from .identity import Domain, check_identity, computable
 
 __all__ = ["FormulaCheck", "check", "proposed", "parse_domain", "DEFAULT_INTERVAL"]
 
@@ -107,8 +107,13 @@ def _definitions(against: list[str]):
             if any(r != "=" for r in relations) or members[0] is None:
                 raise InputError(f"--against: a definition is S = expression or an expression, not {quoted(tex, 60)}")
             if len(members) == 1:
+                if target is not None:
+                    raise InputError(f"--against gives two values the print must have: {quoted(tex, 60)} and "
+                                     "an earlier one")
                 target = members[0]
             elif isinstance(members[0], sp.Symbol):
+                if members[0] in defined:
+                    raise InputError(f"--against defines {quoted(members[0].name)} twice")
                 defined[members[0]] = members[-1]
             else:
                 raise InputError(f"--against: the left side of {quoted(tex, 60)} is not a symbol")
@@ -186,13 +191,19 @@ def _simple_points(symbols, domain: Domain):
 
 
 def _simplest_counterexample(a, b, domain: Domain):
-    """The first point, in order of simplicity, where *a* and *b* (evaluated) differ, with both values."""
+    """The first point, in order of simplicity, where *a* and *b* (evaluated) differ and are real, with both
+    values; a point where a power would be too large to compute (:func:`~symfloat.engine.identity.computable`) is
+    passed over."""
     for point in _simple_points(sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name), domain):
+        if not (computable(a, point) and computable(b, point)):
+            continue
         try:
             va, vb = sp.simplify(a.xreplace(point)), sp.simplify(b.xreplace(point))
         except (ArithmeticError, ZeroDivisionError, TypeError):
             continue
         if not (va.is_number and vb.is_number) or va.has(sp.zoo, sp.nan) or vb.has(sp.zoo, sp.nan):
+            continue
+        if va.is_real is False or vb.is_real is False:      # a point where the formula is not a real number
             continue
         if sp.simplify(va - vb) != 0:
             return point, va, vb

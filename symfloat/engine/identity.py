@@ -26,7 +26,7 @@ from flint import arb
 
 from ..model.compiled import CompiledError, compile_expr
 from ..model.relation import RealRoots
-from .enclosure import Unsupported, exact, real_function, working_precision
+from .enclosure import Unsupported, exact, powers_bounded, real_function, working_precision
 from .branches import branches
 from .pythagoras import pythagoras
 from .rational_zero import is_zero_rational_function
@@ -248,6 +248,8 @@ def _rational_at(expr, point):
     return None
 
 
+POWER_BITS = 4096       # a sampled value's powers are below 2^4096 (about 10^1233), or the point is passed over
+EXPONENT_BITS = 32      # and a fractional exponent's denominator below 2^32 (see computable)
 _BALL_BITS = 256        # a sampled value's ball: its midpoint is the 60-digit value where its radius allows
 
 
@@ -295,6 +297,27 @@ def _point_ball(expr, point):
         return None
 
 
+def computable(expr, point) -> bool:
+    """Whether SymPy can put the rational *point* into *expr* in bounded time and memory: every power whose
+    exponent holds a symbol is below ``2^POWER_BITS`` there (:func:`~symfloat.engine.enclosure.powers_bounded`);
+    where its exponent is a fraction ``p/q``, q is below ``2^EXPONENT_BITS`` and, where its base is a rational
+    b, ``b^p`` is below ``2^POWER_BITS`` too: SymPy raises a rational to ``p/q`` by way of its ``p``-th power
+    and factors it (``(20/9)^((20/9)^8)`` would build a number of 2e10 digits)."""
+    if not powers_bounded(expr, point, POWER_BITS):
+        return False
+    for power in sp.preorder_traversal(expr):
+        if not (isinstance(power, sp.Pow) and power.exp.free_symbols):
+            continue
+        e = _rational_at(power.exp, point)
+        if e is None or e.q == 1:
+            continue
+        b = _rational_at(power.base, point)
+        size = abs(e.p) * max(abs(b.p).bit_length(), b.q.bit_length()) if b is not None else 0
+        if e.q.bit_length() > EXPONENT_BITS or size > POWER_BITS:
+            return False
+    return True
+
+
 def _sympy_value(expr, point):
     """``(value, exact)`` as SymPy gives it: a rational where the value is one, else a 60-digit float."""
     return _value(value_at(expr, point))
@@ -326,6 +349,8 @@ def _sample(pairs, domain: Domain, seed_text: str, samples: int, balls: bool = T
             return v, True, False
         if balls and (v := _ball_value(expr, point)) is not None:
             return v, False, True
+        if not computable(expr, point):
+            raise ArithmeticError("a power too large to compute at this point")
         return (*_value(expr.xreplace(point)), False)
 
     for _ in range(samples * 20):

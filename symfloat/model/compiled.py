@@ -47,6 +47,7 @@ RELATIONS = {"<": lambda x, y: x < y, "<=": lambda x, y: x <= y, ">": lambda x, 
 _MODEL = Path(__file__).resolve().parent
 _LIBRARY = _MODEL.parent
 PRECISIONS = (64, 256, 1024)            # bits of the Arb balls tried before SymPy decides a sign
+EXACT_BITS = 1 << 16                    # a rational power larger than this (numerator or denominator) is a Real
 
 
 class CompiledError(ValueError):
@@ -333,11 +334,18 @@ def exact_sqrt(q):
     return _pow_exact(Fraction(q), Fraction(1, 2))
 
 
+def _huge(b: Fraction, e: int) -> bool:
+    """Whether ``b^e`` has more than :data:`EXACT_BITS` bits in its numerator or denominator (2^(2^100), the value
+    of ``h^{h^{100}}`` at h = 2, has more than any memory holds)."""
+    n, d = abs(b.numerator), b.denominator
+    return (n > 1 or d > 1) and abs(e) * max(n.bit_length(), d.bit_length()) > EXACT_BITS
+
+
 # the arithmetic of each kind of argument: ("exact": ints, Fractions, Reals; "mpmath"; "numpy"; "float")
 def _pow_exact(b, e):
     if isinstance(e, int) or (isinstance(e, Fraction) and e.denominator == 1):
         e = int(e)
-        if isinstance(b, Fraction) and (e >= 0 or b != 0):
+        if isinstance(b, Fraction) and (e >= 0 or b != 0) and not _huge(b, e):
             return b ** e
         return _real(b) ** e if e >= 0 else 1 / _real(b) ** -e
     if isinstance(b, Fraction) and isinstance(e, Fraction) and e.denominator == 2 and b >= 0:

@@ -131,8 +131,25 @@ def _tokens(tex: str) -> list[tuple[str, str]]:
         pos = m.end()
         if kind == "command" and value[1:] in _IGNORED:
             continue
+        if kind == "letter" and (command := _greek_command(value)) is not None:
+            kind, value = "command", command
         out.append((kind, value))
     return out
+
+
+def _greek_command(letter: str) -> str | None:
+    r"""The TeX command of a Greek letter typed as itself (π is ``\pi``, ς ``\varsigma``), or ``None`` for a
+    letter that is not one or has no command of its own (capital alpha is written A in TeX).
+
+    >>> _greek_command("π"), _greek_command("Δ"), _greek_command("ς"), _greek_command("Α"), _greek_command("x")
+    ('\\pi', '\\Delta', '\\varsigma', None, None)
+    """
+    words = unicodedata.name(letter, "").split()
+    if words[:1] != ["GREEK"] or len(words) < 4:
+        return None
+    name = "varsigma" if words[-2:] == ["FINAL", "SIGMA"] else words[-1].lower()
+    name = name.capitalize() if words[1] == "CAPITAL" else name
+    return "\\" + name if name in _GREEK else None
 
 
 def token_spans(tex: str) -> list[tuple[str, str, int, int]]:
