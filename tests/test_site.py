@@ -29,7 +29,7 @@ from symfloat.site import search, typeset  # noqa: E402
 from symfloat.numbers import duration  # noqa: E402
 from symfloat.site.build import MARKER, _sync  # noqa: E402
 from symfloat.site.edition import (edition_page, fault_words, formula_anchor, mark_of, places,  # noqa: E402
-                                   replaced)
+                                   reason_of, replaced)
 from symfloat.site.errata_pages import errata_index, erratum_title, facet_pages  # noqa: E402
 from symfloat.site.difference import corrected_html, highlighted  # noqa: E402
 from symfloat.site.notebooks import staged_notebook  # noqa: E402
@@ -235,6 +235,14 @@ def test_lost_text_and_missing_figures_are_marked(edition):
     assert re.search(rf'<a class="q v-unverifiable" href="#{anchor}" title="[^"]*text lost in the transcription',
                      page)
     assert '<span class="figure-missing"' in page
+
+
+def test_the_reason_in_one_sentence_does_not_end_inside_a_quotation():
+    # Scheeffer VI.D's third erratum read "... 'Ein Würfel schwimmt in aufrechter Lage stabil, wenn sein spec."
+    quoted = "(81) is the law, 'wenn sein spec. Gewicht s > 0,7887 ist', its number alone. The tilt is (81a)."
+    assert reason_of({"evidence": quoted}) == quoted.removesuffix(" The tilt is (81a).")
+    minutes = "$\\varphi_1 = 30^\\circ\\, 22'\\, 59''$ is right. The printed $18^\\circ\\, 58'$ is not."
+    assert reason_of({"evidence": minutes}) == "$\\varphi_1 = 30^\\circ\\, 22'\\, 59''$ is right."     # no quotation
 
 
 def test_every_erratum_page_has_a_title_of_its_own(records):

@@ -146,10 +146,18 @@ def _title(f: dict, records: Records) -> str:
 _SENTENCE_END = re.compile(r"(?<=[a-z0-9)\]}'$])(?<!i\.e)(?<!e\.g)\. (?=[A-Z(])")
 
 
+_QUOTATION = re.compile(r"(?<!\w)'[^']+'(?!\w)|‘[^’]+’|“[^”]+”|„[^“”]+[“”]")
+
+
 def reason_of(erratum: dict) -> str:
-    """The erratum's reason in one sentence: the first of its evidence."""
-    first = _SENTENCE_END.split(erratum["evidence"], maxsplit=1)[0].rstrip(".")
-    return first + "."
+    """The erratum's reason in one sentence: the first of its evidence, a full stop inside a quotation not ending
+    it (Scheeffer's 'wenn sein spec. Gewicht s > 0,7887 …')."""
+    text = erratum["evidence"]
+    words = re.sub(r"\$[^$]*\$", lambda m: " " * len(m[0]), text)      # a minute mark 22' in math quotes nothing
+    quotations = [m.span() for m in _QUOTATION.finditer(words)]
+    end = next((m.start() for m in _SENTENCE_END.finditer(text)
+                if not any(a < m.start() < b for a, b in quotations)), len(text))
+    return text[:end].rstrip(".") + "."
 
 
 def correction_html(erratum: dict, printed_html: str) -> str:
