@@ -324,7 +324,7 @@ def _scene_args(p):
     p.add_argument("--density", help="density s relative to water, 0 < s < 1 (decimal or p/q)")
     p.add_argument("--dims", help="box a,b,c; prism a,b (side, length); cylinder r,b; cube a (default 1)")
     p.add_argument("--sides", help="number of sides of the prism's regular base")
-    p.add_argument("--polygon", help='section: convex polygon "x1,y1 x2,y2 ..."')
+    p.add_argument("--polygon", help='section: convex polygon "x1,y1 x2,y2 ..." (vertices in order)')
     p.add_argument("--format", choices=("table", "json"), default="table")
     p.add_argument("--output", "--plot", type=Path, dest="output",
                    help="draw the stable positions into this PNG file (--plot: the earlier name)")

@@ -287,6 +287,16 @@ def test_the_prism_over_an_octagon_at_one_half_closes_its_index_check():
     assert [e.copies for e in stable] == [16] and stable[0].up[1] == 0.0      # on the mirror y = 0
 
 
+def test_a_ring_closed_by_its_first_vertex_is_the_polygon():
+    # "0,0 2,0 2,1 0,1 0,0", as GeoJSON closes a ring, was refused: "the polygon repeats a vertex"
+    assert make_scene("section", "3/10", polygon="0,0 2,0 2,1 0,1 0,0").polygon == \
+        make_scene("section", "3/10", polygon="0,0 2,0 2,1 0,1").polygon
+    with pytest.raises(SceneError, match="repeats a vertex"):              # a repetition elsewhere still is refused
+        make_scene("section", "3/10", polygon="0,0 2,0 2,1 2,0 0,1")
+    with pytest.raises(SceneError, match="repeats a vertex"):              # a closed segment is no polygon
+        make_scene("section", "3/10", polygon="0,0 2,0 0,0")
+
+
 def test_a_polygon_whose_vertices_round_to_one_float_is_refused_or_answered():
     # symfloat issue 32: both were ZeroDivisionError in _polygon_extent (float edges of length 0)
     with pytest.raises(SceneError, match="measures 0 across"):

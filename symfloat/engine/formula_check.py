@@ -35,7 +35,7 @@ from ..model.latex import Unreadable, read
 from ..model.evidence_tex import tex_number
 from ..model.symbol_names import tex_name
 from .corrections import Correction, corrections
-from .identity import Domain, check_identity, computable
+from .identity import DIGITS, Domain, check_identity, computable
 
 __all__ = ["FormulaCheck", "check", "proposed", "parse_domain", "DEFAULT_INTERVAL"]
 
@@ -49,8 +49,8 @@ _RELATIONS = {"<": sp.StrictLessThan, ">": sp.StrictGreaterThan, "<=": sp.LessTh
 
 @dataclass
 class FormulaCheck:
-    """The verdict on a printed formula: ``holds`` (with ``evidence`` ``symbolic`` or ``sampled``),
-    ``refuted`` (with the counterexample, its sides labelled) or ``undecided``; the witness's
+    """The verdict on a printed formula: ``holds`` (with ``evidence`` ``symbolic``, ``sampled (exact)`` or
+    ``sampled (60 digits)``), ``refuted`` (with the counterexample, its sides labelled) or ``undecided``; the witness's
     measurement where a definition is an integral; the corrections that make a refuted print hold."""
 
     printed: str
@@ -303,7 +303,8 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
     space = _domain(symbols, domain or {}, constraints)
     r, link = _decide(links, space, printed)
     verdict = {"proved": "holds", "sampled": "holds", "refuted": "refuted"}.get(r.status, "undecided")
-    evidence = r.evidence or ("counterexample (exact)" if r.exact else "counterexample (60 digits)")
+    digits = "exact" if r.exact else f"{DIGITS} digits"
+    evidence = "symbolic" if r.evidence == "symbolic" else f"{'sampled' if r.evidence else 'counterexample'} ({digits})"
     result = FormulaCheck(printed, against, verdict, evidence if verdict != "undecided" else "", r.strategy,
                           r.samples, tried=list(r.tried))
     if r.status == "refuted":

@@ -23,15 +23,17 @@ def check_text(result: FormulaCheck) -> str:
     lines = [f"printed:  {result.printed}"] + [f"against:  {a}" for a in result.against]
     if result.verdict == "holds":
         words = PROOF_WORDS.get(result.strategy, "").replace("$", "")
+        samples = "exact samples" if result.evidence == "sampled (exact)" else "samples at 60 digits"
         how = (f"proved ({words})" if words else "proved") if result.evidence == "symbolic" else \
-            f"every one of {result.samples} exact samples agrees, no symbolic proof"
+            f"every one of {result.samples} {samples} agrees, no symbolic proof"
         lines.append(f"verdict:  holds: {how}")
     elif result.verdict == "refuted":
         tex = result.counterexample["tex"]
         at = f" at {_point(tex['point'])}" if tex["point"] else ""
         lines.append(f"verdict:  refuted{at}: printed {tex['printed']}, derived {tex['derived']}")
     else:
-        lines.append("verdict:  undecided: the samples could not be evaluated (see --format json, 'tried')")
+        lines.append("verdict:  undecided: at no sampled point do both sides have a finite value (a division by "
+                     "zero, a power too large to compute)")
     w = result.witness
     if w:
         agrees = {"printed": "agrees with the print", "derived": "agrees with the derivation, not the print",

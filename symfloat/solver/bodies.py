@@ -117,7 +117,8 @@ def parse_dims(text: str | None, count: int, body: str) -> tuple[Fraction, ...]:
 
 
 def parse_polygon(text: str | None) -> tuple[tuple[Fraction, Fraction], ...]:
-    """``"x1,y1 x2,y2 ..."``: the vertices of a convex polygon in order (either orientation)."""
+    """``"x1,y1 x2,y2 ..."``: the vertices of a convex polygon in order (either orientation); a ring closed by
+    repeating its first vertex at the end (as GeoJSON writes one) is read without the repetition."""
     if not text or not str(text).strip():
         raise SceneError('section needs --polygon "x1,y1 x2,y2 ..." with at least 3 vertices')
     items = str(text).split()
@@ -129,6 +130,8 @@ def parse_polygon(text: str | None) -> tuple[tuple[Fraction, Fraction], ...]:
         if len(xy) != 2:
             raise SceneError(f"polygon vertex {_shown(item)} is not of the form x,y")
         points.append((parse_number(xy[0], "polygon coordinate"), parse_number(xy[1], "polygon coordinate")))
+    if len(points) > 3 and points[0] == points[-1]:
+        points.pop()
     return _convex(points)
 
 
