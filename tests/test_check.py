@@ -205,3 +205,14 @@ def test_a_print_that_holds_by_samples_names_their_arithmetic(capsys):
     assert "every one of 6 samples at 60 digits agrees" in capsys.readouterr().out
     assert main(["check", r"y = \frac{1}{0}", "--against", "y = 1"]) == 1
     assert "at no sampled point do both sides have a finite value" in capsys.readouterr().out
+
+
+def test_a_value_too_large_to_print_is_shown_from_its_logarithm():
+    # e^(e^(e^(e^h))) hung: SymPy printed a sampled value whose decimal exponent has 10^8 digits
+    import sympy as sp
+    from symfloat.engine.identity import _show
+    assert _show(sp.Float("-1.2345e+123456789", 30)) == "-1.2345e+123456789"
+    assert _show(sp.Float("1e300000", 30)) == "1.0e+300000" and _show(sp.Float("7.5e-9876543", 30)) == "7.5e-9876543"
+    assert _show(sp.Rational(3, 7)) == "3/7" and _show(sp.pi) == "3.1415926535897932385"
+    r = symfloat.check(r"y = \exp(\exp(\exp(\exp(h))))", "y = h", propose=False)
+    assert r.verdict == "refuted" and r.counterexample["point"] == {"h": "1"}

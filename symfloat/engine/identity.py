@@ -20,6 +20,7 @@ import time
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+import mpmath
 import sympy as sp
 
 from flint import arb
@@ -387,8 +388,33 @@ def _sample(pairs, domain: Domain, seed_text: str, samples: int, balls: bool = T
     return ("sampled" if good else "undecided"), good, exact, None
 
 
+_SHOWN_EXPONENT = 10 ** 5   # a value beyond 2^(10^5) in size is shown from its logarithm
+
+
 def _show(v):
-    return str(v) if v.is_Rational else sp.sstr(sp.N(v, 20))
+    """*v* as a counterexample shows it: a rational as it is, else to 20 digits; a value beyond 2^100000 in size
+    from its logarithm (SymPy would print every digit of its exponent: e^(e^(e^(e^3))) is about 10^(10^(2e8)))."""
+    if v.is_Rational:
+        return str(v)
+    f = sp.N(v, 20)
+    if isinstance(f, sp.Float) and f != 0 and abs(f._mpf_[2] + f._mpf_[3]) > _SHOWN_EXPONENT:
+        return _huge(f._to_mpmath(f._prec))
+    return sp.sstr(f)
+
+
+def _huge(x) -> str:
+    """The mpmath number *x*, far from 1 in size, as ``m e+k``, or as ``10^(...)`` where k itself is too long to
+    write (its logarithm shown the same way)."""
+    sign = "-" if x < 0 else ""
+    with mpmath.workprec(abs(mpmath.mpf(x).exp).bit_length() + 80):
+        log = mpmath.log10(abs(x))
+        if abs(log) < 10 ** 15:
+            k = int(mpmath.floor(log))
+            m = mpmath.nstr(mpmath.power(10, log - k), 15)
+            m, k = ("1.0", k + 1) if m.startswith("10") else (m, k)        # 9.99...9 rounded up to 10
+            return f"{sign}{m}e{k:+d}"
+        inner = _huge(log) if abs(log.exp + log.man.bit_length()) > _SHOWN_EXPONENT else mpmath.nstr(log, 15)
+        return f"{sign}10^({inner})"
 
 
 def _search(pairs, diffs, strategies, limit: float):
