@@ -23,7 +23,8 @@ def check_text(result: FormulaCheck) -> str:
     lines = [f"printed:  {result.printed}"] + [f"against:  {a}" for a in result.against]
     if result.verdict == "holds":
         words = PROOF_WORDS.get(result.strategy, "").replace("$", "")
-        samples = "exact samples" if result.evidence == "sampled (exact)" else "samples at 60 digits"
+        digits = result.evidence.removeprefix("sampled (").removesuffix(")")      # exact, or 60 digits
+        samples = "exact samples" if digits == "exact" else f"samples at {digits}"
         how = (f"proved ({words})" if words else "proved") if result.evidence == "symbolic" else \
             f"every one of {result.samples} {samples} agrees, no symbolic proof"
         lines.append(f"verdict:  holds: {how}")
