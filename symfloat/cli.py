@@ -514,8 +514,9 @@ def _check_args(p):
     p.add_argument("--domain", help="sampling intervals, e.g. 'r=1:3, h=0:1' (default 0:4 for every symbol)")
     p.add_argument("--format", choices=("text", "json"), default="text")
     p.add_argument("--output", type=Path, help="write the report to this file instead of stdout")
-    p.epilog = ("Exit status 0: the print holds; 1: it is refuted or undecided; 2: a formula the reader "
-                f"does not accept. {EXIT_STATUS}.")
+    p.epilog = ("Exit status: 0 the print holds; 1 it is refuted or undecided; 2 bad input (a formula the reader "
+                "does not accept, a definition the print does not use, an output whose folder is missing); "
+                "130 interrupted.")
 
 
 def _check(args) -> int:

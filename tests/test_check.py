@@ -26,7 +26,9 @@ def test_a_misprinted_centroid_is_refuted_with_labelled_sides_and_corrected():
     # at r = 2, h = 1 (the simplest admissible point): the print gives 3·9/(3·5) = 9/5, the moment over
     # the volume of the segment is 3·9/(4·5) = 27/20 (V = pi h^2 (3r - h)/3, M = pi h^2 (2r - h)^2/4)
     assert r.counterexample == {"point": {"h": "1", "r": "2"}, "printed": "9/5", "derived": "27/20",
-                                "tex": {"point": {"h": "1", "r": "2"}, "printed": r"\frac{9}{5}", "derived": r"\frac{27}{20}"}}
+                                "left": "27/20", "right": "9/5", "sides": ["derived", "printed"],    # \bar z first
+                                "tex": {"point": {"h": "1", "r": "2"}, "printed": r"\frac{9}{5}", "derived": r"\frac{27}{20}",
+                                        "left": r"\frac{27}{20}", "right": r"\frac{9}{5}"}}
     assert r.witness["agrees_with"] == "derived" and r.witness["measured"].startswith("1.35")
     best = r.corrections[0]
     assert best.text == r"\bar z = \frac{3(2r-h)^2}{4(3r-h)}" and best.status == "proved"
@@ -50,6 +52,35 @@ def test_an_ocr_confusion_is_proposed_as_scan_like():
                        domain={"s": (0, 1), "b": (0, 1)})
     assert r.verdict == "refuted"
     assert (r.corrections[0].change, r.corrections[0].kind) == ("b → 6", "scan-like")
+
+
+def test_the_definitions_are_put_into_the_printed_members():
+    # x_s = M/V printed, M and V defined: decided in a alone (it was refuted "at M = 1, V = 1, a = 2", the
+    # printed M/V read as two free symbols beside the definitions of both)
+    against = ["V = a^2", "M = a^3"]
+    assert symfloat.check("x_s = M/V", [*against, "x_s = M/V"]).verdict == "holds"
+    assert symfloat.check(r"x_s = \frac{M}{V}", [*against, "x_s = a"]).verdict == "holds"
+    wrong = symfloat.check(r"x_s = \frac{M}{V}", [*against, "x_s = 2a"])        # mutated: the derived side doubled
+    assert wrong.verdict == "refuted" and wrong.counterexample["point"] == {"a": "1"}
+    assert (wrong.counterexample["printed"], wrong.counterexample["derived"]) == ("1", "2")
+
+
+def test_a_definition_the_print_does_not_use_is_refused(capsys):
+    # e^x = 1 + x against "y = 1": the definition of y reached nothing and the print was refuted against itself
+    assert main(["check", "e^{x} = 1 + x", "--against", "y = 1"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--against defines y, which the printed formula does not use" in err
+    # a definition reached through another one is used
+    assert symfloat.check("x_s = M", ["M = 2 V", "V = a^2", "x_s = 2 a^2"]).verdict == "holds"
+
+
+def test_a_link_between_two_printed_members_shows_both(capsys):
+    # y = a b = a + b against y = a b: the print's second link compares two printed members, 1 and 2 at a = b = 1
+    r = symfloat.check("y = a b = a + b", "y = a b")
+    assert r.verdict == "refuted" and r.counterexample["sides"] == ["printed", "printed"]
+    assert (r.counterexample["left"], r.counterexample["right"], r.counterexample["derived"]) == ("1", "2", "")
+    assert main(["check", "y = a b = a + b", "--against", "y = a b"]) == 1
+    assert "verdict:  refuted at a = 1, b = 1: the printed sides are 1 and 2" in capsys.readouterr().out
 
 
 def test_several_definitions_chain():

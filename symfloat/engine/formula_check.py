@@ -100,7 +100,8 @@ def _reading(tex: str, what: str, integrals=False):
 
 
 def _definitions(against: list[str]):
-    """Symbol -> its definition, and the value a formula must have (``None`` if no row gives one)."""
+    """Symbol -> its definition (earlier definitions put in), the value a formula must have (``None`` if no
+    row gives one), and symbol -> its definition as given."""
     defined, target = {}, None
     for tex in against:
         for members, relations in _reading(tex, "--against", integrals=True).rows:
@@ -117,9 +118,22 @@ def _definitions(against: list[str]):
                 defined[members[0]] = members[-1]
             else:
                 raise InputError(f"--against: the left side of {quoted(tex, 60)} is not a symbol")
+    given = dict(defined)
     for _ in range(len(defined)):                                   # definitions may use earlier ones
         defined = {s: e.xreplace(defined) for s, e in defined.items()}
-    return defined, target
+    return defined, target, given
+
+
+def _unused(given: dict, printed) -> list[str]:
+    """The names of the definitions *given* that the *printed* formula's members do not reach, directly or through
+    another definition."""
+    reached, todo = set(), [s for m in printed[0] if m is not None for s in m.free_symbols if s in given]
+    while todo:
+        s = todo.pop()
+        if s not in reached:
+            reached.add(s)
+            todo += [t for t in given[s].free_symbols if t in given]
+    return sorted(s.name for s in set(given) - reached)
 
 
 def _constraints(where: str):
@@ -144,13 +158,13 @@ def _domain(symbols, intervals: dict, constraints) -> Domain:
 
 def _links(printed, defined, target):
     """The pairs to decide, each ``(a, b, label of a, label of b)``: a member that is a defined symbol
-    (or the target value) is *derived*, the others *printed*."""
+    (or the target value) is *derived*, the others *printed*, the definitions put into them."""
     members, relations = printed
     if any(r != "=" for r in relations) or members[0] is None:
         raise InputError("the printed formula is an equation (a = b, a chain a = b = c or an expression)")
 
     def side(m):
-        return (defined[m], "derived") if isinstance(m, sp.Symbol) and m in defined else (m, "printed")
+        return (defined[m], "derived") if isinstance(m, sp.Symbol) and m in defined else (m.xreplace(defined), "printed")
 
     sides = [side(m) for m in members]
     if target is not None:
@@ -211,12 +225,17 @@ def _simplest_counterexample(a, b, domain: Domain):
 
 
 def _shown(point, va, vb, la, lb) -> dict:
-    """The counterexample's point and sides as strings (SymPy's), and as TeX under ``tex`` for a reader."""
-    values = {la: va, lb: vb}
+    """The counterexample's point and sides as strings (SymPy's), and as TeX under ``tex`` for a reader: the
+    refuted link's ``left`` and ``right`` values with their labels (``sides``), and under ``printed`` and
+    ``derived`` the side so labelled (``""`` where the link has none: a link between two printed members, or
+    two defined symbols, compares sides of one kind)."""
+    values = {lb: vb, la: va}           # sides of one kind: the left one under its label
     tex = {"point": {_tex(sp.Symbol(str(k))): _tex(v) for k, v in point.items()},
-           **{side: _tex(values[side]) if side in values else "" for side in ("printed", "derived")}}
+           **{side: _tex(values[side]) if side in values else "" for side in ("printed", "derived")},
+           "left": _tex(va), "right": _tex(vb)}
     return {"point": {str(k): str(v) for k, v in point.items()},
-            "printed": str(values.get("printed", "")), "derived": str(values.get("derived", "")), "tex": tex}
+            "printed": str(values.get("printed", "")), "derived": str(values.get("derived", "")),
+            "left": str(va), "right": str(vb), "sides": [la, lb], "tex": tex}
 
 
 def _tex(value) -> str:
@@ -290,10 +309,14 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
     *where* (inequalities, ``0 < h < r``).  See the module docstring; *propose* searches the corrections
     of a refuted print."""
     against = [against] if isinstance(against, str) else list(against)
-    defined, target = _definitions(against)
+    defined, target, given = _definitions(against)
     rows = _reading(printed, "the printed formula").rows
     if len(rows) != 1:
         raise InputError("check one printed formula at a time")
+    unused = _unused(given, rows[0])
+    if unused:
+        raise InputError(f"--against defines {', '.join(unused)}, which the printed formula does not use "
+                         "(a misspelt name defines nothing)")
     constraints = _constraints(where)
     links = _links(rows[0], defined, target)
     symbols = set().union(*(a.free_symbols | b.free_symbols for a, b, *_ in links))

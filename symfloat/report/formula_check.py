@@ -31,7 +31,10 @@ def check_text(result: FormulaCheck) -> str:
     elif result.verdict == "refuted":
         tex = result.counterexample["tex"]
         at = f" at {_point(tex['point'])}" if tex["point"] else ""
-        lines.append(f"verdict:  refuted{at}: printed {tex['printed']}, derived {tex['derived']}")
+        left, right = result.counterexample["sides"]
+        sides = (f"printed {tex['printed']}, derived {tex['derived']}" if left != right else
+                 f"the {left} sides are {tex['left']} and {tex['right']}")    # a link within the print, say
+        lines.append(f"verdict:  refuted{at}: {sides}")
     else:
         lines.append("verdict:  undecided: at no sampled point do both sides have a finite value (a division by "
                      "zero, a power too large to compute)")
