@@ -65,6 +65,17 @@ def test_the_definitions_are_put_into_the_printed_members():
     assert (wrong.counterexample["printed"], wrong.counterexample["derived"]) == ("1", "2")
 
 
+def test_where_restricts_a_defined_symbol_through_its_definition_and_domain_refuses_it(capsys):
+    # --where 'M < 1' with M = a^3 keeps a below 1: the simplest failing point is a = 1/2, not a = 1 (it was
+    # refused: "--where names M, which no formula has"); an interval for M is refused, a is what is sampled
+    against = ["V = a^2", "M = a^3", "x_s = 2 a"]
+    assert symfloat.check("x_s = M/V", against).counterexample["point"] == {"a": "1"}
+    assert symfloat.check("x_s = M/V", against, where="M < 1").counterexample["point"] == {"a": "1/2"}
+    assert main(["check", "x_s = M/V", *(f"--against={a}" for a in against), "--domain", "M=0:1"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--domain gives M an interval, which --against defines" in err
+
+
 def test_a_definition_the_print_does_not_use_is_refused(capsys):
     # e^x = 1 + x against "y = 1": the definition of y reached nothing and the print was refuted against itself
     assert main(["check", "e^{x} = 1 + x", "--against", "y = 1"]) == 2

@@ -317,12 +317,16 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
     if unused:
         raise InputError(f"--against defines {', '.join(unused)}, which the printed formula does not use "
                          "(a misspelt name defines nothing)")
-    constraints = _constraints(where)
+    constraints = tuple(c.xreplace(defined) for c in _constraints(where))     # a defined symbol's definition put in
     links = _links(rows[0], defined, target)
     symbols = set().union(*(a.free_symbols | b.free_symbols for a, b, *_ in links))
     stray = sorted(s.name for c in constraints for s in c.free_symbols - symbols)
     if stray:
         raise InputError(f"--where names {', '.join(stray)}, which no formula has (a misspelt symbol restricts nothing)")
+    named = sorted(set(domain or {}) & {s.name for s in defined})
+    if named:
+        raise InputError(f"--domain gives {', '.join(named)} an interval, which --against defines: the symbols its "
+                         "definition uses are sampled")
     space = _domain(symbols, domain or {}, constraints)
     r, link = _decide(links, space, printed)
     verdict = {"proved": "holds", "sampled": "holds", "refuted": "refuted"}.get(r.status, "undecided")
