@@ -76,6 +76,26 @@ def test_where_restricts_a_defined_symbol_through_its_definition_and_domain_refu
     assert err.count("\n") == 1 and "--domain gives M an interval, which --against defines" in err
 
 
+def test_an_integral_in_the_print_is_read_as_an_integral():
+    # it was one opaque symbol named "int_{0}^{r2\pi \text{tdt}}", sampled as a number of its own
+    assert symfloat.check(r"V = \int_0^r 2 \pi t \, dt", r"V = \pi r^2").verdict == "holds"
+    wrong = symfloat.check(r"V = \int_0^r 3 \pi t \, dt", r"V = \int_0^r 2 \pi x \, dx")   # mutated: 2 -> 3
+    assert wrong.verdict == "refuted" and wrong.counterexample["point"] == {"r": "1"}
+    assert wrong.counterexample["tex"]["printed"] == r"\frac{3 \pi}{2}"
+    assert [c.text for c in wrong.corrections][:1] == [r"V = \int_0^r 2 \pi t \, dt"]
+
+
+@pytest.mark.parametrize("printed, against, said", [
+    (r"V = \int_0^r 2 \pi x \, dx", [r"V = \pi r^2", "x = 2"], "the printed formula integrates over x, which --against"),
+    (r"V = \pi r^2", [r"V = \int_0^r 2 \pi x \, dx", "x = 2"], "--against defines x, the variable of an integral"),
+])
+def test_a_definition_of_an_integrals_variable_is_refused(printed, against, said, capsys):
+    # both ended in a traceback ("Invalid limits given"), the definition put in for the variable of integration
+    assert main(["check", printed, *(f"--against={a}" for a in against)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and said in err, err
+
+
 def test_a_definition_the_print_does_not_use_is_refused(capsys):
     # e^x = 1 + x against "y = 1": the definition of y reached nothing and the print was refuted against itself
     assert main(["check", "e^{x} = 1 + x", "--against", "y = 1"]) == 2

@@ -1,7 +1,7 @@
 r"""Checking one formula of any text: a printed formula in LaTeX against another formula or a definition.
 
 ``check(printed, against)`` reads both with the allow-list reader (:mod:`symfloat.model.latex`;
-nothing is evaluated as code), the definitions with their integrals (``\int_a^b f \, dx``).  Each row
+nothing is evaluated as code), with their integrals (``\int_a^b f \, dx``).  Each row
 ``S = e`` of *against* whose left side is a symbol defines ``S``; a row without one is the value the
 printed formula must have.  The definitions are put into the printed formula and every link of its
 chain is decided by the engine's identity check (:func:`~symfloat.engine.identity.check_identity`):
@@ -119,6 +119,10 @@ def _definitions(against: list[str]):
             else:
                 raise InputError(f"--against: the left side of {quoted(tex, 60)} is not a symbol")
     given = dict(defined)
+    bound = sorted({v.name for e in defined.values() for i in e.atoms(sp.Integral) for v in i.variables} &
+                   {s.name for s in defined})
+    if bound:
+        raise InputError(f"--against defines {', '.join(bound)}, the variable of an integral in a definition")
     for _ in range(len(defined)):                                   # definitions may use earlier ones
         defined = {s: e.xreplace(defined) for s, e in defined.items()}
     return defined, target, given
@@ -164,7 +168,12 @@ def _links(printed, defined, target):
         raise InputError("the printed formula is an equation (a = b, a chain a = b = c or an expression)")
 
     def side(m):
-        return (defined[m], "derived") if isinstance(m, sp.Symbol) and m in defined else (m.xreplace(defined), "printed")
+        if isinstance(m, sp.Symbol) and m in defined:
+            return defined[m], "derived"
+        try:
+            return m.xreplace(defined), "printed"
+        except ValueError:          # an integral's variable that a definition gives a value
+            raise InputError("the printed formula integrates over a variable that --against defines") from None
 
     sides = [side(m) for m in members]
     if target is not None:
@@ -310,9 +319,13 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
     of a refuted print."""
     against = [against] if isinstance(against, str) else list(against)
     defined, target, given = _definitions(against)
-    rows = _reading(printed, "the printed formula").rows
+    rows = _reading(printed, "the printed formula", integrals=True).rows
     if len(rows) != 1:
         raise InputError("check one printed formula at a time")
+    bound = sorted({v.name for m in rows[0][0] if m is not None for i in m.atoms(sp.Integral) for v in i.variables}
+                   & {s.name for s in defined})
+    if bound:
+        raise InputError(f"the printed formula integrates over {', '.join(bound)}, which --against defines")
     unused = _unused(given, rows[0])
     if unused:
         raise InputError(f"--against defines {', '.join(unused)}, which the printed formula does not use "
@@ -356,7 +369,7 @@ def proposed(printed: str, defined: dict, target, domain: Domain) -> list[Correc
     """The likeliest edits of *printed* that make it hold against the same definitions."""
     def holds(text):
         try:
-            rows = read(text).rows
+            rows = read(text, integrals=True).rows
             links = _links(rows[0], defined, target) if len(rows) == 1 else None
         except (Unreadable, InputError):
             return None
