@@ -96,6 +96,25 @@ def test_a_definition_of_an_integrals_variable_is_refused(printed, against, said
     assert err.count("\n") == 1 and said in err, err
 
 
+def test_a_printed_decimal_stands_for_what_rounds_to_it(capsys):
+    # Scheeffer's "0,245" for sqrt(0.06) = 0.24495 (docs/errata.json keeps it as right): within 0.0005, half a unit
+    # in its last digit; it was refuted, "printed 49/200, derived sqrt(6)/10"
+    r = symfloat.check("y = 0,245", r"y = \sqrt{6/100}")
+    assert (r.verdict, r.evidence, r.rounding) == ("holds", "rounded (60 digits)", "0.0005")
+    assert main(["check", "y = 0.333", "--against", "y = 1/3"]) == 0
+    assert "holds: equal to within half a unit in the last printed digit, 0.0005" in capsys.readouterr().out
+    # mutated: the printer's transposition 0,254 is refuted, shown as printed, and corrected by the swap
+    wrong = symfloat.check("y = 0,254", r"y = \sqrt{6/100}")
+    assert (wrong.verdict, wrong.rounding, wrong.counterexample["tex"]["printed"]) == ("refuted", "0.0005", "0,254")
+    assert (wrong.corrections[0].text, wrong.corrections[0].what, wrong.corrections[0].status) == \
+        ("y = 0,245", "swap", "rounded")
+    # one more digit, a tighter rounding: 0.3333 is within 0.00005 of 1/3, 0.3334 is not
+    assert symfloat.check("y = 0.3333", "y = 1/3", propose=False).verdict == "holds"
+    assert symfloat.check("y = 0.3334", "y = 1/3", propose=False).verdict == "refuted"
+    # a decimal beside symbols is taken as written
+    assert symfloat.check("A = 3.14 r^2", r"A = \pi r^2", propose=False).verdict == "refuted"
+
+
 def test_a_definition_the_print_does_not_use_is_refused(capsys):
     # e^x = 1 + x against "y = 1": the definition of y reached nothing and the print was refuted against itself
     assert main(["check", "e^{x} = 1 + x", "--against", "y = 1"]) == 2

@@ -8,8 +8,10 @@ chain is decided by the engine's identity check (:func:`~symfloat.engine.identit
 exact sampling at seeded rational points of the domain, then a symbolic proof.  A refuted link is
 shown at the simplest point where it fails (small whole numbers and halves first), its sides labelled
 *printed* and *derived*.  Where a definition is an integral, a numeric witness integrates it by
-quadrature (mpmath's tanh-sinh, never the closed form) at that point.  A refuted print gets the
-likeliest small edits that make it hold (:mod:`symfloat.engine.corrections`), each proved or sampled.
+quadrature (mpmath's tanh-sinh, never the closed form) at that point.  A side printed as a number with
+decimals alone (``0,245``) stands for what rounds to it: against a closed value it holds within half a unit
+in its last digit.  A refuted print gets the likeliest small edits that make it hold
+(:mod:`symfloat.engine.corrections`), each proved, sampled or rounded.
 
 >>> r = check(r"\bar z = \frac{3(2r-h)^2}{3(3r-h)}",
 ...           r"\bar z = \frac{\int_{r-h}^{r} x \pi (r^2 - x^2) \, dx}{\int_{r-h}^{r} \pi (r^2 - x^2) \, dx}",
@@ -26,6 +28,7 @@ from __future__ import annotations
 import itertools
 import re
 from dataclasses import dataclass, field
+from decimal import Decimal, localcontext
 from fractions import Fraction
 
 import sympy as sp
@@ -35,7 +38,7 @@ from ..model.latex import Unreadable, read
 from ..model.evidence_tex import tex_number
 from ..model.symbol_names import tex_name
 from .corrections import Correction, corrections
-from .identity import DIGITS, Domain, check_identity, computable
+from .identity import DIGITS, Domain, check_identity, check_rounded, computable
 
 __all__ = ["FormulaCheck", "check", "proposed", "parse_domain", "DEFAULT_INTERVAL"]
 
@@ -49,9 +52,11 @@ _RELATIONS = {"<": sp.StrictLessThan, ">": sp.StrictGreaterThan, "<=": sp.LessTh
 
 @dataclass
 class FormulaCheck:
-    """The verdict on a printed formula: ``holds`` (with ``evidence`` ``symbolic``, ``sampled (exact)`` or
-    ``sampled (60 digits)``), ``refuted`` (with the counterexample, its sides labelled) or ``undecided``; the witness's
-    measurement where a definition is an integral; the corrections that make a refuted print hold."""
+    """The verdict on a printed formula: ``holds`` (with ``evidence`` ``symbolic``, ``sampled (exact)``,
+    ``sampled (60 digits)`` or ``rounded (60 digits)``), ``refuted`` (with the counterexample, its sides labelled)
+    or ``undecided``; the witness's measurement where a definition is an integral; the corrections that make a
+    refuted print hold; ``rounding``, where a printed number written with decimals was compared to its printed
+    digits, half a unit in its last digit."""
 
     printed: str
     against: list
@@ -63,6 +68,7 @@ class FormulaCheck:
     witness: dict | None = None
     corrections: list = field(default_factory=list)
     tried: list = field(default_factory=list)
+    rounding: str = ""
 
     def to_json(self) -> dict:
         data = dict(self.__dict__)
@@ -298,12 +304,46 @@ def _witness(links, point) -> dict | None:
     return None
 
 
-def _decide(links, domain, seed, prove=True):
-    """The weakest link's outcome: ``(status, result, link)``."""
-    order = {"refuted": 0, "undecided": 1, "sampled": 2, "proved": 3}
+_DECIMAL = re.compile(r"-?\d+(?:[.,]|\{,\})(\d+)")
+
+
+def _side_texts(printed: str, members, target) -> list[str]:
+    """The text of each side of :func:`_links` as typed (``""`` for the target value, and for every side where the
+    print does not split into its members at its equals signs)."""
+    texts = [t.strip() for t in printed.strip().strip("$").split("=")]
+    return ([""] if target is not None else []) + (texts if len(texts) == len(members) else [""] * len(members))
+
+
+def _roundings(printed: str, members, target) -> list:
+    """For each link of :func:`_links`, half a unit in the last digit of each of its printed sides written as a
+    decimal number alone (``0,245``: 1/2000), summed, or ``None`` where neither side is one.
+
+    >>> _roundings("y = 0,245", read("y = 0,245").rows[0][0], None), _roundings("y = 1/3", [None, None], None)
+    ([1/2000], [None])
+    """
+    texts = _side_texts(printed, members, target)
+    halves = [sp.Rational(1, 2 * 10 ** len(m.group(1))) if (m := _DECIMAL.fullmatch(t)) else None for t in texts]
+    return [None if a is None and b is None else (a or 0) + (b or 0) for a, b in zip(halves, halves[1:])]
+
+
+def _decimal(q) -> str:
+    """The rational *q*, whose denominator divides a power of ten, as a decimal (1/2000: ``0.0005``)."""
+    with localcontext() as ctx:
+        ctx.prec = 100
+        return format(Decimal(int(q.p)) / Decimal(int(q.q)), "f")
+
+
+def _decide(links, domain, seed, prove=True, roundings=()):
+    """The weakest link's outcome: ``(status, result, link)``.  A link of two closed numbers with a *rounding*
+    (:func:`_roundings`) agrees where they differ by at most that, at 60 digits."""
+    order = {"refuted": 0, "undecided": 1, "sampled": 2, "agrees": 2, "proved": 3}
     worst = None
-    for link in links:
-        r = check_identity(link[0], link[1], domain, seed, prove=prove, limit=_PROOF_SECONDS)
+    roundings = list(roundings) + [None] * (len(links) - len(roundings))
+    for link, rounding in zip(links, roundings):
+        if rounding is not None and not (link[0].free_symbols or link[1].free_symbols):
+            r = check_rounded(link[0], link[1], rounding, seed)
+        else:
+            r = check_identity(link[0], link[1], domain, seed, prove=prove, limit=_PROOF_SECONDS)
         if worst is None or order[r.status] < order[worst[0].status]:
             worst = (r, link)
         if r.status == "refuted":
@@ -341,14 +381,23 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
         raise InputError(f"--domain gives {', '.join(named)} an interval, which --against defines: the symbols its "
                          "definition uses are sampled")
     space = _domain(symbols, domain or {}, constraints)
-    r, link = _decide(links, space, printed)
-    verdict = {"proved": "holds", "sampled": "holds", "refuted": "refuted"}.get(r.status, "undecided")
+    roundings = _roundings(printed, rows[0][0], target)
+    r, link = _decide(links, space, printed, roundings=roundings)
+    verdict = {"proved": "holds", "sampled": "holds", "agrees": "holds", "refuted": "refuted"}.get(r.status, "undecided")
     digits = "exact" if r.exact else f"{DIGITS} digits"
-    evidence = "symbolic" if r.evidence == "symbolic" else f"{'sampled' if r.evidence else 'counterexample'} ({digits})"
+    kind = {"sampled": "sampled", "agrees": "rounded"}.get(r.status, "counterexample")
+    evidence = "symbolic" if r.evidence == "symbolic" else f"{kind} ({digits})"
+    rounding = roundings[links.index(link)]
+    rounded = rounding is not None and not (link[0].free_symbols or link[1].free_symbols)
     result = FormulaCheck(printed, against, verdict, evidence if verdict != "undecided" else "", r.strategy,
-                          r.samples, tried=list(r.tried))
+                          r.samples, tried=list(r.tried), rounding=_decimal(rounding) if rounded else "")
     if r.status == "refuted":
         result.counterexample = _counterexample(*link, space, r.counterexample)
+        if rounded:                 # a number compared to its printed digits is shown as printed
+            i = links.index(link)
+            for place, label, text in zip(("left", "right"), link[2:], _side_texts(printed, rows[0][0], target)[i:]):
+                if label == "printed" and _DECIMAL.fullmatch(text):
+                    result.counterexample["tex"][place] = result.counterexample["tex"]["printed"] = text
         result.witness = _witness(links, result.counterexample["point"])
         if propose:
             result.corrections = proposed(printed, defined, target, space)
@@ -378,9 +427,10 @@ def proposed(printed: str, defined: dict, target, domain: Domain) -> list[Correc
             return None
         if all(a == b and la == lb for a, b, la, lb in links):
             return None           # one side's thing equal to itself (h = h, y = y for y = h) proves nothing
-        if _decide(links, domain, printed, prove=False)[0].status != "sampled":
+        roundings = _roundings(text, rows[0][0], target)
+        if _decide(links, domain, printed, prove=False, roundings=roundings)[0].status not in ("sampled", "agrees"):
             return None
-        status = _decide(links, domain, printed)[0].status
-        return status if status in ("proved", "sampled") else None
+        status = _decide(links, domain, printed, roundings=roundings)[0].status
+        return {"agrees": "rounded"}.get(status, status) if status in ("proved", "sampled", "agrees") else None
 
     return corrections(printed, holds)

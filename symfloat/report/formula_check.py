@@ -23,10 +23,11 @@ def check_text(result: FormulaCheck) -> str:
     lines = [f"printed:  {result.printed}"] + [f"against:  {a}" for a in result.against]
     if result.verdict == "holds":
         words = PROOF_WORDS.get(result.strategy, "").replace("$", "")
-        digits = result.evidence.removeprefix("sampled (").removesuffix(")")      # exact, or 60 digits
+        digits = result.evidence.partition(" (")[2].removesuffix(")")      # exact, or 60 digits
         samples = "exact samples" if digits == "exact" else f"samples at {digits}"
         how = (f"proved ({words})" if words else "proved") if result.evidence == "symbolic" else \
-            f"every one of {result.samples} {samples} agrees, no symbolic proof"
+            f"equal to within half a unit in the last printed digit, {result.rounding} (compared at {digits})" \
+            if result.rounding else f"every one of {result.samples} {samples} agrees, no symbolic proof"
         lines.append(f"verdict:  holds: {how}")
     elif result.verdict == "refuted":
         tex = result.counterexample["tex"]
@@ -34,7 +35,9 @@ def check_text(result: FormulaCheck) -> str:
         left, right = result.counterexample["sides"]
         sides = (f"printed {tex['printed']}, derived {tex['derived']}" if left != right else
                  f"the {left} sides are {tex['left']} and {tex['right']}")    # a link within the print, say
-        lines.append(f"verdict:  refuted{at}: {sides}")
+        beyond = f"; they differ by more than half a unit in the last printed digit, {result.rounding}" \
+            if result.rounding else ""
+        lines.append(f"verdict:  refuted{at}: {sides}{beyond}")
     else:
         lines.append("verdict:  undecided: at no sampled point do both sides have a finite value (a division by "
                      "zero, a power too large to compute)")
