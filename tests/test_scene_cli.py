@@ -43,6 +43,15 @@ def test_scene_json_follows_the_contract(run):
     assert record["derivations_evaluated"] and "scheeffer-vi-ab" not in record["derivations_evaluated"]
 
 
+def test_the_table_names_the_sources_of_the_derivations_it_evaluated_not_their_ids(run):
+    # the footer listed the record's ids ("hasab, metazentrum, scheeffer-iv-v, ..."); a reader sees how many
+    # derivations of which source were read, the record keeps the ids
+    code, out, _ = run("scene", "cube", "--density", "0.3", "--quiet")
+    footer = out.strip().splitlines()[-1]
+    assert code == 0 and footer.startswith("derivations evaluated: 7 (5 of Scheeffer 1902, ")
+    assert "1 of Auftrieb Stabilität" in footer and "scheeffer" not in footer and "-" not in footer.split(";")[0]
+
+
 def test_a_scene_evaluates_only_the_derivations_that_speak_about_its_body():
     assert "scheeffer-vi-cf" not in predicting("cylinder")
     evaluated, _ = cover(solve(make_scene("cylinder", "0.3", dims="1,2")))
