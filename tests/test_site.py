@@ -12,6 +12,7 @@ import re
 import shutil
 import subprocess
 import sys
+from collections import Counter
 from html.parser import HTMLParser
 from pathlib import Path
 from urllib.parse import unquote, urlsplit
@@ -174,14 +175,29 @@ def test_the_correction_is_shown_in_place(edition):
     assert misprint.index("Printed</span>") < misprint.index("Corrected</span>") < misprint.index('class="evidence"')
 
 
+def test_the_home_page_counts_the_formulas_in_a_sentence(records):
+    # it read "82 fault of the original, 109 transcription corrected" (the marks' labels as counted nouns) and named
+    # the command and the record files that built it
+    from symfloat.site.build import _index
+    page = _index(records, False, [])
+    line = next(x for x in page.splitlines() if x.endswith(".") and "printed formulas:" in x)
+    marks = Counter(mark_of(f, records) for f in records.formulas)
+    assert line.startswith(f"{len(records.formulas)} printed formulas: {marks['verified']} verified, "
+                           f"{marks['fault']} with a fault of the original, "
+                           f"{marks['transcription']} with a correction of the transcription, ")
+    assert "symfloat site" not in page and "docs/" not in page
+
+
 def test_places_have_anchors_and_the_sources_a_citation(edition):
     euler, scheeffer = edition("euler"), edition("scheeffer")
     assert 'id="s-224"' in euler and 'href="#s-224"' in euler                # Euler's paragraph §224
     assert "Eneström E110" in euler and "Petropoli" in euler and "1749" in euler
-    for anchor in ("eq-78c", "eq-81a", "eq-5", "s-ix", "example-1"):        # Scheeffer (78c), (81 a), (5), IX, Example 1
+    for anchor in ("eq-78c", "eq-81a", "eq-5", "s-ix", "s-viii", "example-1"):     # (78c), (81 a), (5), IX, VIII, Ex. 1
         assert f'id="{anchor}"' in scheeffer and f'href="#{anchor}"' in scheeffer, anchor
-    assert scheeffer.count('id="eq-78c"') == 1
+    assert scheeffer.count('id="eq-78c"') == 1 and "Sections (10)" in scheeffer
     hasab, web = edition("hasab"), edition("metazentrum")
+    # a text without numbered places has no contents, and no empty box where they would be
+    assert '<nav class="contents"' in scheeffer and '<nav class="contents"' not in hasab + web
     assert "1987-04-183-1.eps" not in hasab.split('<div class="edition">')[1]     # a file name, not the text's words
     assert "ID:(1610, 0)" not in web and "(web lesson)" not in web
 
@@ -243,6 +259,19 @@ def test_the_reason_in_one_sentence_does_not_end_inside_a_quotation():
     assert reason_of({"evidence": quoted}) == quoted.removesuffix(" The tilt is (81a).")
     minutes = "$\\varphi_1 = 30^\\circ\\, 22'\\, 59''$ is right. The printed $18^\\circ\\, 58'$ is not."
     assert reason_of({"evidence": minutes}) == "$\\varphi_1 = 30^\\circ\\, 22'\\, 59''$ is right."     # no quotation
+
+
+def test_an_erratum_says_that_the_print_is_refuted_and_how_its_correction_holds(records):
+    # 145 of 191 erratum pages said "The printed formula: proved symbolically" beside a witness that refutes it:
+    # the record's evidence of an erratum is its correction's
+    from symfloat.site.errata_pages import erratum_page
+    fault = next(e for e in records.errata if e["id"] == "euler-s212-1")
+    transcription = next(e for e in records.errata if e["id"] == "euler-s223-3")
+    assert records.formula(fault["formula"])["evidence"] == "symbolic"
+    assert "<p>The verdict: the print refuted, its correction proved symbolically." in erratum_page(fault, records)
+    assert "<p>The verdict: the transcription refuted, its correction proved symbolically." in \
+        erratum_page(transcription, records)
+    assert not any("The printed formula: proved" in erratum_page(e, records) for e in records.errata[:40])
 
 
 def test_every_erratum_page_has_a_title_of_its_own(records):

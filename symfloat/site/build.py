@@ -44,6 +44,10 @@ __all__ = ["build_site", "stage", "MARKER", "SiteError"]
 MARKER = ".symfloat-site"
 _LEFT_OUT = {".buildinfo"}
 _OPTIONAL = {"about": "site.md", "numerics": "numerics.md"}     # a page shown when the records' docs have it
+# The printed formulas counted by their marks on the home page, in a sentence ("82 with a fault of the original")
+_COUNTED = {"verified": "verified", "fault": "with a fault of the original",
+            "transcription": "with a correction of the transcription", "unverifiable": "not decided",
+            "trivial": "with nothing to check"}
 
 
 class SiteError(EnvironmentProblem):
@@ -94,10 +98,9 @@ def _index(records: Records, with_figures: bool, pages: list[str]) -> str:
         "# symfloat: the sources, re-derived", "",
         "Every printed formula of the library's texts re-derived step by step, its verdict with the evidence "
         "and the independent numeric witnesses, and the errata in two apparatus: the faults of the original "
-        "print, and the corrections of the transcription. Built by `symfloat site` from the committed "
-        "records (`docs/verification.json`, `docs/errata.json`, the executed notebooks).", "",
-        f"{s['formulas']} printed formulas: " + ", ".join(f"{total[m]} {MARKS[m][1].split(':')[0]}" for m in MARKS)
-        + ".", "",
+        "print, and the corrections of the transcription.", "",
+        f"{s['formulas']} printed formulas: " + ", ".join(f"{total[m]} {_COUNTED[m]}" for m in _COUNTED
+                                                         if total[m]) + ".", "",
         "| source (annotated edition) | formulas | " + " | ".join(f"{MARKS[m][0]} {MARKS[m][1].split(':')[0]}"
                                                                 for m in MARKS) + " |",
         "|---|---:|" + "---:|" * len(MARKS), *rows, "",

@@ -16,6 +16,11 @@ piece.  Changed letters of a name (``\\operatorname{cotg}``) mark the whole name
 '\\frac{b}{2} = \\htmlClass{changed}{6} s (1 - s)'
 >>> highlighted(r"Nach $4$ ist das Gleichgewichtlage", r"\text{Nach 54 ist die Gleichgewichtslage}")
 '\\text{Nach \\htmlClass{changed}{54} ist \\htmlClass{changed}{die Gleichgewichtslage}}'
+
+A marked sub- or superscript is braced, the argument its sign takes (Scheeffer VIII's ``x_3^1`` for ``x_s^1``):
+
+>>> highlighted(r"$x_3^1$ die Entfernung", r"x_s^1 \text{ die Entfernung}")
+'x_{\\htmlClass{changed}{s}}^1 \\text{ die Entfernung}'
 """
 from __future__ import annotations
 
@@ -90,7 +95,8 @@ def highlighted(printed: str, corrected: str) -> str:
             continue
         run = corrected[a:b]
         if _whole(run):
-            out += [corrected[pos:a], r"\htmlClass{changed}{", run, "}"]
+            script = corrected[:a].rstrip().endswith(("_", "^"))     # x_\htmlClass{..}{s} is no TeX: braced
+            out += [corrected[pos:a], "{" * script, r"\htmlClass{changed}{", run, "}", "}" * script]
             pos = b
     return "".join(out) + corrected[pos:]
 

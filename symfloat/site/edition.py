@@ -33,7 +33,7 @@ from .records import Records, slug
 from .text import excerpt_html, prose_html, render
 from .typeset import typeset
 
-__all__ = ["MARKS", "EVIDENCE_WORDS", "mark_of", "badge", "quotes", "edition_page", "note", "formula_anchor",
+__all__ = ["MARKS", "EVIDENCE_WORDS", "evidence_words", "mark_of", "badge", "quotes", "edition_page", "note", "formula_anchor",
            "cell_label", "notebook_anchor", "witness_line", "reason_of", "correction_html", "anchors", "citation_html",
            "fault_words", "places", "permalink"]
 
@@ -123,6 +123,16 @@ def places(text: str, fault: str, quote: tuple[int, int]) -> list[tuple[int, int
             if not quote[0] <= m.start() < quote[1]]
 
 
+def evidence_words(f: dict, mark: str) -> str:
+    """What the verdict on formula *f* rests on, in words; for an erratum (*mark* ``fault`` or ``transcription``)
+    that the print (or the transcription) is refuted and how its correction holds: its record's evidence is that
+    of the correction."""
+    how = EVIDENCE_WORDS.get(f["evidence"], f["evidence"])
+    if mark in ("fault", "transcription") and f["evidence"] is not None:
+        return f"the {'print' if mark == 'fault' else 'transcription'} refuted, its correction {how}"
+    return how
+
+
 def witness_line(numeric) -> str:
     """The witnesses in one line: method, cases, absolute and relative error, seconds."""
     return "; ".join(f"{method_words(n['method'])} ({counted(n.get('cases', '?'), 'case')}): abs {error_cells(n)[0]}, "
@@ -135,7 +145,7 @@ def _title(f: dict, records: Records) -> str:
     head = f"{f['locator']} · {MARKS[mark][0]} {MARKS[mark][1]}"
     if erratum:
         head += f" ({erratum['kind']}, {erratum['confidence']} confidence)"
-    parts = [head, EVIDENCE_WORDS.get(f["evidence"], f["evidence"])]
+    parts = [head, evidence_words(f, mark)]
     if erratum and "$" not in reason_of(erratum):       # a tooltip cannot typeset maths: left to the note
         parts.append(reason_of(erratum))
     if f.get("reason"):
@@ -212,7 +222,7 @@ def note(f: dict, records: Records, root: str, printed_html: str = "") -> str:
         lines.append(correction_html(erratum, printed_html))
     if f.get("reason"):
         lines.append(f'<p>{prose_html(f["reason"])}</p>')
-    how = EVIDENCE_WORDS.get(f["evidence"], f["evidence"])
+    how = evidence_words(f, mark)
     lines += ['<details class="evidence"><summary>Evidence</summary>',
               f"<p>{how[0].upper() + how[1:]}." + (f' {prose_html(erratum["evidence"])}' if erratum else "") + "</p>"]
     if cell and cell.reading and len(cell.reading) <= _LONGEST_READING:
@@ -305,13 +315,14 @@ def _contents(found: dict[int, list[tuple[str, str]]]) -> str:
     groups = [("Sections", [x for x in flat if x[0].startswith("s-")]),
               ("Equations", [x for x in flat if x[0].startswith("eq-")]),
               ("Worked examples", [x for x in flat if x[0].startswith("example-")])]
-    out = ['<nav class="contents" aria-label="contents">']
+    out = []
     for title, items in groups:
         if items:
             links = " ".join(f'<a href="#{i}">{html.escape(label)}</a>' for i, label in items)
             out.append(f"<details{' open' if title == 'Sections' else ''}><summary>{title} ({len(items)})</summary>"
                        f"<p>{links}</p></details>")
-    return "\n".join(out + ["</nav>"])
+    # a text without numbered places has no contents: no empty box above the legend
+    return "\n".join(['<nav class="contents" aria-label="contents">', *out, "</nav>"]) if out else ""
 
 
 def edition_page(source: Source, records: Records) -> str:

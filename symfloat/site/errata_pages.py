@@ -13,7 +13,7 @@ import html
 from ..model.erratum import APPARATUS, apparatus
 from ..model.source import SOURCES
 from ..model.myst import inline
-from .edition import (EVIDENCE_WORDS, badge, correction_html, formula_anchor, notebook_anchor, quotes, reason_of,
+from .edition import (badge, correction_html, evidence_words, formula_anchor, notebook_anchor, quotes, reason_of,
                       witness_line)
 from .records import Records, slug
 from .text import excerpt_html, prose_html
@@ -49,7 +49,7 @@ def erratum_page(e: dict, records: Records) -> str:
         '<h2>Evidence</h2>', f'<p class="evidence">{prose_html(e["evidence"])}</p>',
         *([f'<h2>The strongest objection</h2><p class="objection">{prose_html(e["objection"])}</p>',
            f'<p class="answer"><strong>Answer.</strong> {prose_html(e["answer"])}</p>'] if e.get("objection") else []),
-        f'<p>The printed formula: {EVIDENCE_WORDS.get(f["evidence"], f["evidence"])}. Witnesses: '
+        f'<p>The verdict: {evidence_words(f, mark)}. Witnesses: '
         f'{html.escape(witness_line(f["numeric"]))}.</p>',
         f'<p>See {" and ".join(links)}.</p>',
     ]
