@@ -200,6 +200,8 @@ def test_places_have_anchors_and_the_sources_a_citation(edition):
     assert '<nav class="contents"' in scheeffer and '<nav class="contents"' not in hasab + web
     assert "1987-04-183-1.eps" not in hasab.split('<div class="edition">')[1]     # a file name, not the text's words
     assert "ID:(1610, 0)" not in web and "(web lesson)" not in web
+    # nor the element numbers the web page sets after a symbol ("die Höhe des Metazentrums ($z_M$)8671")
+    assert not re.search(r"\)(8671|8670|8674)\b", re.sub(r"<[^>]*>", "", web))
 
 
 def test_a_fault_printed_at_several_places_is_marked_at_each(records, edition):

@@ -399,8 +399,9 @@ def edition_page(source: Source, records: Records) -> str:
             "a sign and a shade for each (the legend below). Rest the pointer on a mark for the verdict in one "
             "line, or follow it to the note below its paragraph: for an erratum the printed and the corrected "
             "form with the change marked, the reason, its kind and confidence, then the evidence on demand. "
-            "Math spans and claims in words that no formula quotes are marked as the coverage ledger accounts "
-            "for them.</p>",
+            "Where two or more derivations read one printed formula, a small numbered mark after it, shaded by "
+            "its verdict, leads to each further reading. Math spans and claims in words that no formula quotes "
+            "are marked by how they are accounted for: waived with a reason, or not yet accounted for.</p>",
             _contents(found), _legend(counts, waived, unaccounted, "../"), '<div class="edition">',
             body.rstrip("\n"), "</div>", "````", ""]
     return "\n".join(head)

@@ -4,7 +4,8 @@ The transcriptions are Markdown with TeX dollars.  They are shown as text, fault
 between blank lines become headings (``#``), rules (``---``), tables (``|`` rows) or paragraphs;
 inside a block, ``**bold**`` and ``*italic*``, backslash escapes, hard line breaks, list lines and
 the ``<sub>``/``<sup>`` the transcriptions use are honoured, and every math span is typeset.  A block
-that is only a web page's element number (``ID:(1610, 0)``) or a figure's file name is left out.  A
+that is only a web page's element number (``ID:(1610, 0)``) or a figure's file name is left out, and so is
+the element number a web page sets after a quantity's symbol (``($z_M$)8671``).  A
 reference to a figure (``Fig. 12``) is marked: the transcriptions have no figures.
 
 The words of the records (an erratum's evidence, reason, objection and answer) are prose with TeX
@@ -32,6 +33,8 @@ _BLANK = re.compile(r"\n[ \t]*\n\s*")
 _TAGS = re.compile(r"&lt;(/?)(sub|sup)&gt;")
 # The web page's element numbers and a figure's file name, alone on their line: not the text's words
 _BOILERPLATE = re.compile(r"ID:\(\d+, \d+\)|[\w-]+\.(?:eps|png|jpe?g|gif)")
+# ... and the element number a web page sets after a quantity's symbol: "die Höhe des Metazentrums ($z_M$)8671"
+_ELEMENT_NUMBER = re.compile(r"(?<=\$\))\d{4,5}(?!\d)")
 _FIGURE = re.compile(r"\b(Fig(?:ur(?:en)?|\.)\s*\d+[a-z]?(?:\s*(?:und|u\.|et|,)\s*\d+[a-z]?)*)")
 
 
@@ -61,6 +64,15 @@ def _prose(text: str) -> str:
     return re.sub(r"\n(?=[-*] |&gt;)", "<br>\n", out)
 
 
+def _words(text: str, a: int, b: int) -> str:
+    """``text[a:b]`` (prose) as HTML, without a web page's element numbers (the pattern looks back before *a*)."""
+    kept, pos = [], a
+    for m in _ELEMENT_NUMBER.finditer(text, a, b):
+        kept.append(text[pos:m.start()])
+        pos = m.end()
+    return _prose("".join(kept) + text[pos:b])
+
+
 def inline_html(text: str, a: int, b: int, maths) -> str:
     """``text[a:b]`` as HTML: prose and MathML (the math spans *maths* lie inside or outside it)."""
     out, pos = [], a
@@ -68,14 +80,14 @@ def inline_html(text: str, a: int, b: int, maths) -> str:
         if e <= a or s >= b:
             continue
         s, e = max(s, a), min(e, b)
-        out.append(_prose(text[pos:s]))
+        out.append(_words(text, pos, s))
         tex = text[s:e]
         display = kind == "display" and tex.startswith("$$")
         out.append(typeset(tex.strip("$"), display=kind == "display"))
         if display:
             out[-1] = f'<span class="math-display">{out[-1]}</span>'
         pos = e
-    out.append(_prose(text[pos:b]))
+    out.append(_words(text, pos, b))
     return "".join(out)
 
 
