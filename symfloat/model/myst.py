@@ -28,18 +28,22 @@ def unescaped(text: str) -> str:
 
 def inline(text: str, limit: int | None = 160, cell: bool = False) -> str:
     """*text* (prose with ``$...$`` or ``$$...$$`` mathematics) as one line of MyST, cut after *limit*
-    characters (``None``: never), never inside a formula, and a formula it begins with shown whole; *cell*: for
-    a table cell.
+    characters (``None``: never) at the end of a word, never inside a formula, and a formula it begins with shown
+    whole; *cell*: for a table cell.
 
     >>> inline("where $|x| < 1$ and a*b", cell=True)
     'where $\\\\vert x\\\\vert  < 1$ and a\\\\*b'
+    >>> inline("the turn about the main axis, which leads back", limit=38)
+    'the turn about the main axis, which…'
     """
     out, length = [], 0
     for kind, piece in spans(re.sub(r"\$\$", "$", " ".join(text.split()))):
         room = None if limit is None else limit - length
         if kind == "text":
             if room is not None and len(piece) > room:
-                return ("".join(out) + _MARKDOWN.sub(r"\\\1", piece[:room])).rstrip() + "…"
+                cut = piece[:room] if piece[room].isspace() or " " not in piece[:room] else \
+                    piece[:piece.rindex(" ", 0, room)]          # a word is not cut
+                return ("".join(out) + _MARKDOWN.sub(r"\\\1", cut)).rstrip() + "…"
             out.append(_MARKDOWN.sub(r"\\\1", piece))
         else:
             if room is not None and len(piece) > room and out:      # never cut; the first shown whole
