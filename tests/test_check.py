@@ -1,13 +1,17 @@
 """``symfloat check`` and ``symfloat.check``: one printed formula against a formula or a definition."""
 import json
 import re
+from fractions import Fraction
 from importlib.resources import files
 
 import pytest
 from jsonschema import Draft202012Validator
 
+import sympy as sp
+
 import symfloat
 from symfloat.cli import main
+from symfloat.engine.formula_check import parse_domain
 from symfloat.model.latex import read
 
 CAP_CENTROID = r"\bar z = \frac{\int_{r-h}^{r} x \pi (r^2 - x^2) \, dx}{\int_{r-h}^{r} \pi (r^2 - x^2) \, dx}"
@@ -115,6 +119,67 @@ def test_a_printed_decimal_stands_for_what_rounds_to_it(capsys):
     assert symfloat.check("A = 3.14 r^2", r"A = \pi r^2", propose=False).verdict == "refuted"
 
 
+def test_a_divergent_integral_is_not_a_value(capsys):
+    # \int_0^a sin(a)/x dx diverges (SymPy: log(a) sin(a) + oo sign(sin a)); where sin a < 0 its value -oo passed
+    # the sampler's finiteness test (it excluded oo, not -oo) and "agreed" with 5: the print was said to hold
+    r = symfloat.check(r"A = \int_0^a \frac{\sin a}{x} \, dx", "A = 5")
+    assert r.verdict == "undecided" and "finite value" in r.reason
+
+
+def test_the_signs_a_keyboard_types_are_read(capsys):
+    # × and ÷ were read as quantities ("refuted at a = 1, b = 1, × = 2"), · and − refused
+    for printed, against in (("y = a × b", "y = ab"), ("y = a ÷ b", "y = a/b"), ("y = a · b − 1", "y = ab - 1")):
+        r = symfloat.check(printed, against, propose=False)
+        assert (r.verdict, r.printed) == ("holds", printed), printed
+    assert symfloat.check("y = a × b", "y = a + b", propose=False).verdict == "refuted"     # mutated
+
+
+def test_sides_that_differ_only_where_one_is_not_real_are_undecided():
+    # sqrt(x - 3) and sqrt(3 - x) are both real only at x = 3: the sampled disagreement was shown as the
+    # counterexample, "printed 0.9007...*I"; sqrt(-x) against 2 has no real point at all
+    for printed, against in ((r"y = \sqrt{x-3}", r"y = \sqrt{3-x}"), (r"y = \sqrt{-x}", "y = 2")):
+        r = symfloat.check(printed, against)
+        assert (r.verdict, r.counterexample) == ("undecided", None), printed
+        assert r.reason == "the sides differ only where one of them is not a real number"
+    # where a real point exists it is shown: sqrt(x - 3) against 1 at x = 7/2 (sqrt(1/2))
+    r = symfloat.check(r"y = \sqrt{x-3}", "y = 1", propose=False)
+    assert r.verdict == "refuted" and "I" not in r.counterexample["printed"]
+
+
+def test_a_value_without_a_closed_form_is_shown_at_the_simplest_point():
+    # \int_0^a sqrt(1 + x^3) dx has only a hypergeometric closed form (SymPy: not "a number"): the counterexample
+    # was a random point, a = 176/85; a = 1 fails already (1.1114... against 1)
+    r = symfloat.check(r"A = \int_0^a \sqrt{1 + x^3} \, dx", "A = a", propose=False)
+    assert r.verdict == "refuted" and r.counterexample["point"] == {"a": "1"}
+    assert r.counterexample["printed"].startswith("1.111447970532575")
+
+
+def test_a_correction_does_not_bring_a_defined_symbol_into_the_print():
+    # y = x^2 against y = 1 was "corrected" to y = y^2 (x -> y: holds once y = 1 is put in, and says nothing)
+    r = symfloat.check("y = x^2", "y = 1")
+    assert r.verdict == "refuted" and not any("y^2" in c.text for c in r.corrections)
+    r = symfloat.check(r"A = \int_0^a \frac{\sin x}{x} \, dx", "A = a")
+    assert not any(r"\sin A" in c.text for c in r.corrections)
+
+
+def test_many_symbols_are_sampled_without_listing_every_combination():
+    # twenty symbols: 2^20 combinations of their two simplest values were listed and sorted (42 s); fifty hung
+    from symfloat.engine.formula_check import _SMALL_POINTS, _simple_points
+    from symfloat.engine.identity import Domain
+    xs = [sp.Symbol(f"x_{i}") for i in range(50)]
+    points = list(_simple_points(xs, Domain({x: (0, 4) for x in xs})))
+    assert len(points) == _SMALL_POINTS and set(points[0].values()) == {1}
+    assert sorted(points[1].values()) == [1] * 49 + [2]
+    printed = "y = " + " + ".join(x.name for x in xs[:30])
+    assert symfloat.check(printed, printed.replace("y =", "y = 0 +"), propose=False).verdict == "holds"
+
+
+def test_domain_names_a_symbol_as_the_formulas_type_it_and_takes_decimals():
+    r = symfloat.check(r"y = \alpha", r"y = \alpha + 1/10", domain=parse_domain(r"\alpha=0.5:0.75"), propose=False)
+    assert r.counterexample["point"] == {"alpha": "2/3"}          # the simplest value inside (1/2, 3/4)
+    assert parse_domain(r"\bar z=1e-3:1, x_{1}=0:1") == {"zbar": (Fraction(1, 1000), 1), "x_1": (0, 1)}
+
+
 def test_a_definition_the_print_does_not_use_is_refused(capsys):
     # e^x = 1 + x against "y = 1": the definition of y reached nothing and the print was refuted against itself
     assert main(["check", "e^{x} = 1 + x", "--against", "y = 1"]) == 2
@@ -174,7 +239,11 @@ def test_the_text_report_speaks_tex_and_words_not_sympy(tmp_path, capsys):
 @pytest.mark.parametrize("argv, says", [
     (["x = 1 +", "--against", "x = 1"], "the formula ends too early"),
     (["x = 1", "--against", "x = 1", "--domain", "y=0:1"], "--domain names y"),
-    (["x = 1", "--against", "x = 1", "--domain", "x=2:1"], "--domain is name=low:high"),
+    (["x = 1", "--against", "x = 1", "--domain", "x=2:1"], "--domain needs low < high"),
+    (["x = 1", "--against", "x = 1", "--domain", "x=0:1, x=1:2"], "--domain gives x two intervals"),
+    (["x = 1", "--against", "x = 1", "--domain", "x=a:1"], "an interval's ends are numbers"),
+    (["x = 1", "--against", "x = 1", "--where", "x + 1"], "--where holds inequalities"),
+    (["y = a", "--against", "a = b + 1", "--against", "b = a", "--against", "y = 2 b"], "--against defines a, b by itself"),
     (["x = __import__('os')", "--against", "x = 1"], "symfloat:"),
     (["x = h", "--against", "x = h", "--domain", "h=1/0:2"], "--domain divides by zero"),      # once a traceback
     (["x = h", "--against", "x = h", "--where", "0 < R"], "--where names R, which no formula has"),  # once ignored

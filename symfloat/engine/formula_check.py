@@ -25,6 +25,7 @@ in its last digit.  A refuted print gets the likeliest small edits that make it 
 """
 from __future__ import annotations
 
+import heapq
 import itertools
 import re
 from dataclasses import dataclass, field
@@ -46,6 +47,7 @@ DEFAULT_INTERVAL = (0, 4)      # where a symbol without --domain is sampled: a p
 _SMALL_POINTS = 400            # at most this many simple points are tried for the shown counterexample
 _GRID = 20_000                 # at most this many points are ordered by simplicity, whatever the symbols' count
 _WITNESS_POINTS = 20           # the simple points tried for a witness of a print that holds
+_RANDOM_POINTS = 200           # then the seeded random points tried for a counterexample where both sides are real
 _PROOF_SECONDS = 5.0           # the proof search of one link (the clock can end a search, never refute)
 _RELATIONS = {"<": sp.StrictLessThan, ">": sp.StrictGreaterThan, "<=": sp.LessThan, ">=": sp.GreaterThan}
 
@@ -56,7 +58,7 @@ class FormulaCheck:
     ``sampled (60 digits)`` or ``rounded (60 digits)``), ``refuted`` (with the counterexample, its sides labelled)
     or ``undecided``; the witness's measurement where a definition is an integral; the corrections that make a
     refuted print hold; ``rounding``, where a printed number written with decimals was compared to its printed
-    digits, half a unit in its last digit."""
+    digits, half a unit in its last digit; ``reason``, why a print is undecided."""
 
     printed: str
     against: list
@@ -69,6 +71,7 @@ class FormulaCheck:
     corrections: list = field(default_factory=list)
     tried: list = field(default_factory=list)
     rounding: str = ""
+    reason: str = ""
 
     def to_json(self) -> dict:
         data = dict(self.__dict__)
@@ -76,31 +79,62 @@ class FormulaCheck:
         return data
 
 
-_INTERVAL = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*)\s*=\s*(-?\d+(?:/\d+)?)\s*:\s*(-?\d+(?:/\d+)?)\s*")
+_INTERVAL = re.compile(r"\s*(.+?)\s*=\s*([^:=]+?)\s*:\s*([^:=]+?)\s*")
 
 
 def parse_domain(text: str | None) -> dict:
-    """``--domain 'r=1:3, h=0:1'``: symbol name -> (low, high), numbers as whole numbers or p/q.
+    """``--domain 'r=1:3, h=0:1'``: symbol name -> (low, high); a name as the formulas type it (``\\alpha``,
+    ``x_{1}``, ``\\bar z``) or as the reader names it (``alpha``, ``zbar``), the ends whole numbers, p/q or
+    decimals, kept exact.
 
     >>> parse_domain("r=1:3, h=0:1/2")
     {'r': (Fraction(1, 1), Fraction(3, 1)), 'h': (Fraction(0, 1), Fraction(1, 2))}
+    >>> parse_domain(r"\\alpha=0.5:0.75, \\bar z = 1e-3:1")
+    {'alpha': (Fraction(1, 2), Fraction(3, 4)), 'zbar': (Fraction(1, 1000), Fraction(1, 1))}
     """
     out = {}
     for part in (text or "").split(","):
         if not part.strip():
             continue
         m = _INTERVAL.fullmatch(part)
-        if m and any(re.fullmatch(r"-?\d+/0+", bound) for bound in m.group(2, 3)):
-            raise InputError(f"--domain divides by zero in {quoted(part.strip(), 40)}")
-        if not m or Fraction(m[2]) >= Fraction(m[3]):
-            raise InputError(f"--domain is name=low:high, ... with low < high (r=1:3, h=0:1/2), not {quoted(part, 40)}")
-        out[m[1]] = (Fraction(m[2]), Fraction(m[3]))
+        if not m:
+            raise InputError(f"--domain is name=low:high, ... (r=1:3, h=0:1/2), not {quoted(part.strip(), 40)}")
+        name = _symbol_name(m[1])
+        try:
+            low, high = Fraction(m[2]), Fraction(m[3])
+        except ZeroDivisionError:
+            raise InputError(f"--domain divides by zero in {quoted(part.strip(), 40)}") from None
+        except ValueError:
+            raise InputError(f"--domain: an interval's ends are numbers (1, 1/2, 0.5, 1e-3), not "
+                             f"{quoted(part.strip(), 40)}") from None
+        if low >= high:
+            raise InputError(f"--domain needs low < high, not {quoted(part.strip(), 40)}")
+        if name in out:
+            raise InputError(f"--domain gives {name} two intervals")
+        out[name] = (low, high)
     return out
+
+
+def _symbol_name(text: str) -> str:
+    """The name of the symbol *text* types (``\\alpha``: ``alpha``), or *text* itself where it is already one."""
+    try:
+        rows = read(text).rows
+    except Unreadable:
+        rows = []
+    if len(rows) == 1 and len(rows[0][0]) == 1 and isinstance(rows[0][0][0], sp.Symbol):
+        return rows[0][0][0].name
+    if re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", text):
+        return text
+    raise InputError(f"--domain names a symbol (r, \\alpha, x_{{1}}), not {quoted(text, 40)}")
+
+
+# The signs of arithmetic a keyboard types as themselves, as the reader takes them
+_SIGNS = str.maketrans({"×": r" \times ", "÷": " / ", "·": r" \cdot ", "−": "-"})
 
 
 def _reading(tex: str, what: str, integrals=False):
     try:
-        return read(tex, integrals=integrals)
+        return read(tex.translate(_SIGNS), integrals=integrals)
     except Unreadable as exc:
         raise InputError(f"{what}: {exc}") from None
 
@@ -131,19 +165,28 @@ def _definitions(against: list[str]):
         raise InputError(f"--against defines {', '.join(bound)}, the variable of an integral in a definition")
     for _ in range(len(defined)):                                   # definitions may use earlier ones
         defined = {s: e.xreplace(defined) for s, e in defined.items()}
+    circular = sorted(s.name for s in given if s in _reached(given, s))
+    if circular:
+        raise InputError(f"--against defines {', '.join(circular)} by itself, directly or through another definition")
     return defined, target, given
 
 
-def _unused(given: dict, printed) -> list[str]:
-    """The names of the definitions *given* that the *printed* formula's members do not reach, directly or through
-    another definition."""
-    reached, todo = set(), [s for m in printed[0] if m is not None for s in m.free_symbols if s in given]
+def _reached(given: dict, *start) -> set:
+    """The defined symbols the definitions *given* of the symbols *start* use, directly or through others."""
+    reached, todo = set(), [t for s in start for t in given[s].free_symbols if t in given]
     while todo:
         s = todo.pop()
         if s not in reached:
             reached.add(s)
             todo += [t for t in given[s].free_symbols if t in given]
-    return sorted(s.name for s in set(given) - reached)
+    return reached
+
+
+def _unused(given: dict, printed) -> list[str]:
+    """The names of the definitions *given* that the *printed* formula's members do not reach, directly or through
+    another definition."""
+    named = {s for m in printed[0] if m is not None for s in m.free_symbols if s in given}
+    return sorted(s.name for s in set(given) - named - _reached(given, *named))
 
 
 def _constraints(where: str):
@@ -152,7 +195,7 @@ def _constraints(where: str):
         return ()
     out = []
     for members, relations in _reading(where, "--where").rows:
-        if members[0] is None or any(r not in _RELATIONS for r in relations):
+        if members[0] is None or not relations or any(r not in _RELATIONS for r in relations):
             raise InputError(f"--where holds inequalities such as 0 < h < r, not {quoted(where, 60)}")
         out += [_RELATIONS[r](a, b) for a, b, r in zip(members, members[1:], relations)]
     return tuple(out)
@@ -208,34 +251,86 @@ def _simple_values(lo, hi, count: int):
 
 
 def _simple_points(symbols, domain: Domain):
-    """Admissible points of *symbols*, simplest first (small denominators, then small values); the
-    simplest values of each symbol are combined, at most :data:`_GRID` points in all."""
+    """Admissible points of *symbols*, simplest first (small denominators, then small values), at most
+    :data:`_SMALL_POINTS`: the simplest values of each symbol (as many as :data:`_GRID` points of all of them
+    allow) combined best first, without listing every combination (2^20 of them for twenty symbols).
+
+    >>> x, y = sp.symbols("x y")
+    >>> [tuple(p.values()) for p in itertools.islice(_simple_points([x, y], Domain({x: (0, 4), y: (0, 4)})), 4)]
+    [(1, 1), (1, 2), (2, 1), (1, 3)]
+    """
     per_symbol = max(2, int(_GRID ** (1 / max(len(symbols), 1))))
     grids = [_simple_values(*domain.intervals[s], per_symbol) for s in symbols]
-    points = sorted(itertools.product(*grids), key=lambda p: (sum(v.denominator for v in p), sum(p)))
-    for values in points[:_SMALL_POINTS]:
-        point = {s: sp.Rational(v.numerator, v.denominator) for s, v in zip(symbols, values)}
+    if not all(grids):
+        return
+
+    def key(index):             # a point is simpler than another by this (its values' order in each grid agrees)
+        values = [g[i] for g, i in zip(grids, index)]
+        return sum(v.denominator for v in values), sum(values), index
+
+    first = (0,) * len(grids)
+    frontier, seen = [key(first)], {first}
+    for _ in range(_SMALL_POINTS):
+        if not frontier:
+            return
+        *_, index = heapq.heappop(frontier)
+        point = {s: sp.Rational(g[i].numerator, g[i].denominator) for s, g, i in zip(symbols, grids, index)}
         if domain.admits(point):
             yield point
+        for k in range(len(index)):
+            after = index[:k] + (index[k] + 1,) + index[k + 1:]
+            if index[k] + 1 < len(grids[k]) and after not in seen:
+                seen.add(after)
+                heapq.heappush(frontier, key(after))
 
 
-def _simplest_counterexample(a, b, domain: Domain):
-    """The first point, in order of simplicity, where *a* and *b* (evaluated) differ and are real, with both
-    values; a point where a power would be too large to compute (:func:`~symfloat.engine.identity.computable`) is
-    passed over."""
-    for point in _simple_points(sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name), domain):
-        if not (computable(a, point) and computable(b, point)):
-            continue
-        try:
-            va, vb = sp.simplify(a.xreplace(point)), sp.simplify(b.xreplace(point))
-        except (ArithmeticError, ZeroDivisionError, TypeError):
-            continue
-        if not (va.is_number and vb.is_number) or va.has(sp.zoo, sp.nan) or vb.has(sp.zoo, sp.nan):
-            continue
-        if va.is_real is False or vb.is_real is False:      # a point where the formula is not a real number
-            continue
-        if sp.simplify(va - vb) != 0:
-            return point, va, vb
+_NUMERIC = (sp.Integral, sp.hyper, sp.meijerg, sp.exp_polar)     # what a value is computed from, not shown in
+
+
+def _closed(value):
+    """*value* (closed) as shown: as it is, or where it holds an integral SymPy left or a hypergeometric function
+    its integration made (``\\int_0^1 \\sqrt{1 + x^3} \\, dx``), to 30 digits (real where its imaginary part is
+    below 10^-25 of it, the rounding of a real value computed through complex ones)."""
+    if not value.has(*_NUMERIC):
+        return value
+    v = sp.N(value, 30)
+    re, im = v.as_real_imag()
+    return sp.N(re, 30) if abs(im) <= sp.Float(10) ** -25 * max(abs(re), 1) else v
+
+
+def _differing(a, b, point):
+    """``(value of a, value of b)`` at *point* where both are real numbers that differ (by more than 10^-20 of
+    their size where a value is numeric: an integral without a closed form), else ``None``; a point where a power
+    would be too large to compute (:func:`~symfloat.engine.identity.computable`) is passed over."""
+    if not (computable(a, point) and computable(b, point)):
+        return None
+    try:
+        va, vb = (_closed(sp.simplify(x.xreplace(point))) for x in (a, b))
+    except (ArithmeticError, ZeroDivisionError, TypeError, ValueError):
+        return None
+    if va.free_symbols or vb.free_symbols or any(v.has(sp.zoo, sp.nan, sp.oo, -sp.oo, *_NUMERIC) for v in (va, vb)):
+        return None
+    if va.is_real is False or vb.is_real is False:      # a point where a side is not a real number
+        return None
+    difference = sp.simplify(va - vb)
+    if difference == 0 or difference.free_symbols:
+        return None
+    size = max(abs(sp.N(va, 30)), abs(sp.N(vb, 30)), 1)
+    return (va, vb) if abs(sp.N(difference, 30)) > sp.Float(10) ** -20 * size else None
+
+
+def _simplest_counterexample(a, b, domain: Domain, seed: str):
+    """The first point, in order of simplicity, where *a* and *b* (evaluated) are real numbers that differ (else the
+    first of 200 seeded random points), with both values, or ``None``."""
+    symbols = sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name)
+    for point in _simple_points(symbols, domain):
+        if (values := _differing(a, b, point)) is not None:
+            return (point, *values)
+    draw = domain.sampler(seed)
+    for _ in range(_RANDOM_POINTS):
+        point = draw(symbols)
+        if domain.admits(point) and (values := _differing(a, b, point)) is not None:
+            return (point, *values)
     return None
 
 
@@ -272,13 +367,12 @@ def _tex(value) -> str:
     return sp.latex(value, symbol_names=names)
 
 
-def _counterexample(a, b, la, lb, domain, sampled: dict):
-    """The counterexample shown: the simplest failing point, else the sampled one."""
-    ea, eb = a.doit(), b.doit()
-    simple = _simplest_counterexample(ea, eb, domain)
-    if simple is not None:
-        return _shown(*simple, la, lb)
-    return _shown({sp.Symbol(k): v for k, v in sampled["point"].items()}, sampled["lhs"], sampled["rhs"], la, lb)
+def _counterexample(a, b, la, lb, domain, seed: str):
+    """The counterexample shown: the simplest point where both sides are real numbers that differ, or ``None``
+    where no such point is found (the sides differ where one of them is not real: ``\\sqrt{x - 3}`` beside
+    ``\\sqrt{3 - x}``)."""
+    found = _simplest_counterexample(a.doit(), b.doit(), domain, seed)
+    return _shown(*found, la, lb) if found is not None else None
 
 
 def _witness(links, point) -> dict | None:
@@ -358,6 +452,7 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
     *where* (inequalities, ``0 < h < r``).  See the module docstring; *propose* searches the corrections
     of a refuted print."""
     against = [against] if isinstance(against, str) else list(against)
+    shown, printed = printed, printed.translate(_SIGNS)
     defined, target, given = _definitions(against)
     rows = _reading(printed, "the printed formula", integrals=True).rows
     if len(rows) != 1:
@@ -373,7 +468,7 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
     constraints = tuple(c.xreplace(defined) for c in _constraints(where))     # a defined symbol's definition put in
     links = _links(rows[0], defined, target)
     symbols = set().union(*(a.free_symbols | b.free_symbols for a, b, *_ in links))
-    stray = sorted(s.name for c in constraints for s in c.free_symbols - symbols)
+    stray = sorted({s.name for c in constraints for s in c.free_symbols - symbols})
     if stray:
         raise InputError(f"--where names {', '.join(stray)}, which no formula has (a misspelt symbol restricts nothing)")
     named = sorted(set(domain or {}) & {s.name for s in defined})
@@ -389,10 +484,14 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
     evidence = "symbolic" if r.evidence == "symbolic" else f"{kind} ({digits})"
     rounding = roundings[links.index(link)]
     rounded = rounding is not None and not (link[0].free_symbols or link[1].free_symbols)
-    result = FormulaCheck(printed, against, verdict, evidence if verdict != "undecided" else "", r.strategy,
+    result = FormulaCheck(shown, against, verdict, evidence if verdict != "undecided" else "", r.strategy,
                           r.samples, tried=list(r.tried), rounding=_decimal(rounding) if rounded else "")
     if r.status == "refuted":
-        result.counterexample = _counterexample(*link, space, r.counterexample)
+        result.counterexample = _counterexample(*link, space, printed)
+        if result.counterexample is None:
+            result.verdict, result.evidence = "undecided", ""
+            result.reason = "the sides differ only where one of them is not a real number"
+            return result
         if rounded:                 # a number compared to its printed digits is shown as printed
             i = links.index(link)
             for place, label, text in zip(("left", "right"), link[2:], _side_texts(printed, rows[0][0], target)[i:]):
@@ -401,6 +500,9 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
         result.witness = _witness(links, result.counterexample["point"])
         if propose:
             result.corrections = proposed(printed, defined, target, space)
+    elif verdict == "undecided":
+        result.reason = ("at no sampled point do both sides have a finite value (a division by zero, a power too "
+                         "large to compute)")
     elif verdict == "holds":
         witnesses = (_witness(links, point) for point in _first_points(links, space))
         result.witness = next((w for w in witnesses if w is not None), None)
@@ -415,7 +517,15 @@ def _first_points(links, domain):
 
 
 def proposed(printed: str, defined: dict, target, domain: Domain) -> list[Correction]:
-    """The likeliest edits of *printed* that make it hold against the same definitions."""
+    """The likeliest edits of *printed* that make it hold against the same definitions; an edit that brings a
+    defined symbol into a member of the print (where its definition would be put in: the print stated by what it
+    should equal) is not one."""
+    def _inside(members) -> set:
+        return {s for m in members if m is not None and not (isinstance(m, sp.Symbol) and m in defined)
+                for s in m.free_symbols if s in defined}
+
+    inside = _inside(read(printed, integrals=True).rows[0][0])
+
     def holds(text):
         try:
             rows = read(text, integrals=True).rows
@@ -427,6 +537,8 @@ def proposed(printed: str, defined: dict, target, domain: Domain) -> list[Correc
             return None
         if all(a == b and la == lb for a, b, la, lb in links):
             return None           # one side's thing equal to itself (h = h, y = y for y = h) proves nothing
+        if _inside(rows[0][0]) - inside:
+            return None           # a defined symbol brought into a printed member (y = y^2 for y = x^2, y = 1)
         roundings = _roundings(text, rows[0][0], target)
         if _decide(links, domain, printed, prove=False, roundings=roundings)[0].status not in ("sampled", "agrees"):
             return None

@@ -203,7 +203,7 @@ def _value(expr):
     if expr.is_Rational:
         return expr, True
     v = sp.N(expr, DIGITS)
-    if not v.is_number or v.has(sp.zoo, sp.nan, sp.oo):
+    if not v.is_number or v.has(sp.zoo, sp.nan, sp.oo, -sp.oo):        # -oo is not oo: both compare equal to all
         raise ArithmeticError("not a finite number")
     return v, False
 
@@ -398,11 +398,11 @@ def _show(v):
         return str(v)
     f = sp.N(v, 20)
     if isinstance(f, sp.Float) and f != 0 and abs(f._mpf_[2] + f._mpf_[3]) > _SHOWN_EXPONENT:
-        return _huge(f._to_mpmath(f._prec))
+        return _by_logarithm(f._to_mpmath(f._prec))
     return sp.sstr(f)
 
 
-def _huge(x) -> str:
+def _by_logarithm(x) -> str:
     """The mpmath number *x*, far from 1 in size, as ``m e+k``, or as ``10^(...)`` where k itself is too long to
     write (its logarithm shown the same way)."""
     sign = "-" if x < 0 else ""
@@ -413,7 +413,7 @@ def _huge(x) -> str:
             m = mpmath.nstr(mpmath.power(10, log - k), 15)
             m, k = ("1.0", k + 1) if m.startswith("10") else (m, k)        # 9.99...9 rounded up to 10
             return f"{sign}{m}e{k:+d}"
-        inner = _huge(log) if abs(log.exp + log.man.bit_length()) > _SHOWN_EXPONENT else mpmath.nstr(log, 15)
+        inner = _by_logarithm(log) if abs(log.exp + log.man.bit_length()) > _SHOWN_EXPONENT else mpmath.nstr(log, 15)
         return f"{sign}10^({inner})"
 
 

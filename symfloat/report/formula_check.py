@@ -39,8 +39,7 @@ def check_text(result: FormulaCheck) -> str:
             if result.rounding else ""
         lines.append(f"verdict:  refuted{at}: {sides}{beyond}")
     else:
-        lines.append("verdict:  undecided: at no sampled point do both sides have a finite value (a division by "
-                     "zero, a power too large to compute)")
+        lines.append(f"verdict:  undecided: {result.reason}")
     w = result.witness
     if w:
         agrees = {"printed": "agrees with the print", "derived": "agrees with the derivation, not the print",
