@@ -198,6 +198,7 @@ def test_places_have_anchors_and_the_sources_a_citation(edition):
     hasab, web = edition("hasab"), edition("metazentrum")
     # a text without numbered places has no contents, and no empty box where they would be
     assert '<nav class="contents"' in scheeffer and '<nav class="contents"' not in hasab + web
+    assert "n.d.." not in hasab + web and "n.d. " in web          # a record without a year: one full stop
     assert "1987-04-183-1.eps" not in hasab.split('<div class="edition">')[1]     # a file name, not the text's words
     assert "ID:(1610, 0)" not in web and "(web lesson)" not in web
     # nor the element numbers the web page sets after a symbol ("die Höhe des Metazentrums ($z_M$)8671")

@@ -297,7 +297,7 @@ def citation_html(source: Source) -> str:
         parts.append(html.escape(fields["series"]))
     imprint = ", ".join(html.escape(x) for x in (fields.get("place"), fields.get("publisher")) if x)
     parts.append(" ".join(x for x in (imprint, str(source.year) if source.year else "n.d.") if x))
-    record = ". ".join(parts) + "."
+    record = "".join(part + ("" if part.endswith(".") else ".") + " " for part in parts).rstrip()     # n.d. has its stop
     extra = [html.escape(fields[k]) for k in ("number", "edition") if fields.get(k)]
     if extra:
         record += " " + "; ".join(extra) + "."
