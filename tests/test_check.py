@@ -31,8 +31,8 @@ def test_a_misprinted_centroid_is_refuted_with_labelled_sides_and_corrected():
     # the volume of the segment is 3·9/(4·5) = 27/20 (V = pi h^2 (3r - h)/3, M = pi h^2 (2r - h)^2/4)
     assert r.counterexample == {"point": {"h": "1", "r": "2"}, "printed": "9/5", "derived": "27/20",
                                 "left": "27/20", "right": "9/5", "sides": ["derived", "printed"],    # \bar z first
-                                "tex": {"point": {"h": "1", "r": "2"}, "printed": r"\frac{9}{5}", "derived": r"\frac{27}{20}",
-                                        "left": r"\frac{27}{20}", "right": r"\frac{9}{5}"}}
+                                "tex": {"point": {"h": "1", "r": "2"}, "printed": r"\frac{9}{5}",
+                                        "derived": r"\frac{27}{20}", "left": r"\frac{27}{20}", "right": r"\frac{9}{5}"}}
     assert r.witness["agrees_with"] == "derived" and r.witness["measured"].startswith("1.35")
     best = r.corrections[0]
     assert best.text == r"\bar z = \frac{3(2r-h)^2}{4(3r-h)}" and best.status == "proved"
@@ -90,7 +90,8 @@ def test_an_integral_in_the_print_is_read_as_an_integral():
 
 
 @pytest.mark.parametrize("printed, against, said", [
-    (r"V = \int_0^r 2 \pi x \, dx", [r"V = \pi r^2", "x = 2"], "the printed formula integrates over x, which --against"),
+    (r"V = \int_0^r 2 \pi x \, dx", [r"V = \pi r^2", "x = 2"],
+     "the printed formula integrates over x, which --against"),
     (r"V = \pi r^2", [r"V = \int_0^r 2 \pi x \, dx", "x = 2"], "--against defines x, the variable of an integral"),
 ])
 def test_a_definition_of_an_integrals_variable_is_refused(printed, against, said, capsys):
@@ -243,7 +244,8 @@ def test_the_text_report_speaks_tex_and_words_not_sympy(tmp_path, capsys):
     (["x = 1", "--against", "x = 1", "--domain", "x=0:1, x=1:2"], "--domain gives x two intervals"),
     (["x = 1", "--against", "x = 1", "--domain", "x=a:1"], "an interval's ends are numbers"),
     (["x = 1", "--against", "x = 1", "--where", "x + 1"], "--where holds inequalities"),
-    (["y = a", "--against", "a = b + 1", "--against", "b = a", "--against", "y = 2 b"], "--against defines a, b by itself"),
+    (["y = a", "--against", "a = b + 1", "--against", "b = a", "--against", "y = 2 b"],
+     "--against defines a, b by itself"),
     (["x = __import__('os')", "--against", "x = 1"], "symfloat:"),
     (["x = h", "--against", "x = h", "--domain", "h=1/0:2"], "--domain divides by zero"),      # once a traceback
     (["x = h", "--against", "x = h", "--where", "0 < R"], "--where names R, which no formula has"),  # once ignored

@@ -478,7 +478,8 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
     space = _domain(symbols, domain or {}, constraints)
     roundings = _roundings(printed, rows[0][0], target)
     r, link = _decide(links, space, printed, roundings=roundings)
-    verdict = {"proved": "holds", "sampled": "holds", "agrees": "holds", "refuted": "refuted"}.get(r.status, "undecided")
+    verdict = {"proved": "holds", "sampled": "holds", "agrees": "holds", "refuted": "refuted"}.get(r.status,
+                                                                                                   "undecided")
     digits = "exact" if r.exact else f"{DIGITS} digits"
     kind = {"sampled": "sampled", "agrees": "rounded"}.get(r.status, "counterexample")
     evidence = "symbolic" if r.evidence == "symbolic" else f"{kind} ({digits})"

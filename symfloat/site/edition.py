@@ -33,7 +33,8 @@ from .records import Records, slug
 from .text import excerpt_html, prose_html, render
 from .typeset import typeset
 
-__all__ = ["MARKS", "EVIDENCE_WORDS", "evidence_words", "mark_of", "badge", "quotes", "edition_page", "note", "formula_anchor",
+__all__ = ["MARKS", "EVIDENCE_WORDS", "evidence_words", "mark_of", "badge", "quotes", "edition_page", "note",
+           "formula_anchor",
            "cell_label", "notebook_anchor", "witness_line", "reason_of", "correction_html", "anchors", "citation_html",
            "fault_words", "places", "permalink"]
 
@@ -297,7 +298,8 @@ def citation_html(source: Source) -> str:
         parts.append(html.escape(fields["series"]))
     imprint = ", ".join(html.escape(x) for x in (fields.get("place"), fields.get("publisher")) if x)
     parts.append(" ".join(x for x in (imprint, str(source.year) if source.year else "n.d.") if x))
-    record = "".join(part + ("" if part.endswith(".") else ".") + " " for part in parts).rstrip()     # n.d. has its stop
+    # the parts each end with a full stop: one of their own (n.d.) or one added
+    record = "".join(part + ("" if part.endswith(".") else ".") + " " for part in parts).rstrip()
     extra = [html.escape(fields[k]) for k in ("number", "edition") if fields.get(k)]
     if extra:
         record += " " + "; ".join(extra) + "."
