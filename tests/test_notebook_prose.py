@@ -264,6 +264,15 @@ def test_a_label_before_its_formula_is_the_whole_title_and_a_cut_phrase_ends_wit
     assert titles["the factor b"].startswith("The factor $b c/a^{2}") and titles["the factor b"].endswith(" …")
 
 
+def test_a_title_two_steps_share_does_not_point_to_its_own_step():
+    # "Step 7: The formula agrees with the centroid by its definition (step 7)": 40 headings named their own number
+    from symfloat.report.notebook_view import step_titles
+    d, _ = load("graefe-s4-applications")
+    titles = step_titles(d)
+    shared = [s.name for s in d.steps if step_title(d, s) == "The formula agrees with the centroid by its definition"]
+    assert len(shared) > 1 and not any("(step" in titles[name] for name in shared)
+
+
 def test_a_ratios_colon_does_not_end_a_title():
     # Euler §213's proportion "I : K = EF^2 : AB^2" was titled "§213: I : K = EF²" (and a space), half of it
     d, _ = load("euler-192-219")

@@ -367,6 +367,15 @@ def _tex(value) -> str:
     return sp.latex(value, symbol_names=names)
 
 
+def _admits_some(domain: Domain, symbols, seed: str) -> bool:
+    """Whether a simple point or one of :data:`_RANDOM_POINTS` seeded random points of *domain* meets its
+    constraints (``h < r < h`` meets none, and every sample would be passed over)."""
+    if any(True for _ in itertools.islice(_simple_points(symbols, domain), 1)):
+        return True
+    draw = domain.sampler(seed)
+    return any(domain.admits(draw(symbols)) for _ in range(_RANDOM_POINTS))
+
+
 def _counterexample(a, b, la, lb, domain, seed: str):
     """The counterexample shown: the simplest point where both sides are real numbers that differ, or ``None``
     where no such point is found (the sides differ where one of them is not real: ``\\sqrt{x - 3}`` beside
@@ -476,6 +485,8 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
         raise InputError(f"--domain gives {', '.join(named)} an interval, which --against defines: the symbols its "
                          "definition uses are sampled")
     space = _domain(symbols, domain or {}, constraints)
+    if constraints and not _admits_some(space, sorted(symbols, key=lambda s: s.name), printed):
+        raise InputError(f"--where admits no point of {_RANDOM_POINTS} drawn from the domain: {quoted(where, 60)}")
     roundings = _roundings(printed, rows[0][0], target)
     r, link = _decide(links, space, printed, roundings=roundings)
     verdict = {"proved": "holds", "sampled": "holds", "agrees": "holds", "refuted": "refuted"}.get(r.status,

@@ -169,15 +169,15 @@ def _outside_formulas(text: str) -> list[bool]:
 
 
 def step_titles(d) -> dict:
-    """Step name -> its title (:func:`step_title`); a title two steps share names what each establishes
-    (or its number) after it."""
+    """Step name -> its title (:func:`step_title`); a title two steps share names what each establishes after
+    it, where it establishes a quantity (the heading's step number tells the others apart)."""
     titles = {s.name: step_title(d, s) for s in d.steps}
     count: dict = {}
     for t in titles.values():
         count[t] = count.get(t, 0) + 1
-    for i, s in enumerate(d.steps, 1):
-        if count[titles[s.name]] > 1:
-            titles[s.name] += f": ${latex(s.result)}$" if s.result is not None else f" (step {i})"
+    for s in d.steps:
+        if count[titles[s.name]] > 1 and s.result is not None:
+            titles[s.name] += f": ${latex(s.result)}$"
     return titles
 
 
