@@ -159,8 +159,7 @@ def _definitions(against: list[str]):
             else:
                 raise InputError(f"--against: the left side of {quoted(tex, 60)} is not a symbol")
     given = dict(defined)
-    bound = sorted({v.name for e in defined.values() for i in e.atoms(sp.Integral) for v in i.variables} &
-                   {s.name for s in defined})
+    bound = _integrated(defined.values(), defined)
     if bound:
         raise InputError(f"--against defines {', '.join(bound)}, the variable of an integral in a definition")
     for _ in range(len(defined)):                                   # definitions may use earlier ones
@@ -169,6 +168,12 @@ def _definitions(against: list[str]):
     if circular:
         raise InputError(f"--against defines {', '.join(circular)} by itself, directly or through another definition")
     return defined, target, given
+
+
+def _integrated(exprs, defined) -> list[str]:
+    """The names of the *defined* symbols that an integral of *exprs* integrates over."""
+    return sorted({v.name for e in exprs if e is not None for i in e.atoms(sp.Integral) for v in i.variables}
+                  & {s.name for s in defined})
 
 
 def _reached(given: dict, *start) -> set:
@@ -319,17 +324,22 @@ def _differing(a, b, point):
     return (va, vb) if abs(sp.N(difference, 30)) > sp.Float(10) ** -20 * size else None
 
 
-def _simplest_counterexample(a, b, domain: Domain, seed: str):
-    """The first point, in order of simplicity, where *a* and *b* (evaluated) are real numbers that differ (else the
-    first of 200 seeded random points), with both values, or ``None``."""
-    symbols = sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name)
-    for point in _simple_points(symbols, domain):
-        if (values := _differing(a, b, point)) is not None:
-            return (point, *values)
+def _tried_points(symbols, domain: Domain, seed: str):
+    """The admissible points a counterexample is looked for at: the simple points (:func:`_simple_points`), then
+    those of :data:`_RANDOM_POINTS` seeded random points that *domain* admits."""
+    yield from _simple_points(symbols, domain)
     draw = domain.sampler(seed)
     for _ in range(_RANDOM_POINTS):
         point = draw(symbols)
-        if domain.admits(point) and (values := _differing(a, b, point)) is not None:
+        if domain.admits(point):
+            yield point
+
+
+def _simplest_counterexample(a, b, domain: Domain, seed: str):
+    """The first point, in order of simplicity, where *a* and *b* (evaluated) are real numbers that differ (else the
+    first such random point), with both values, or ``None``."""
+    for point in _tried_points(sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name), domain, seed):
+        if (values := _differing(a, b, point)) is not None:
             return (point, *values)
     return None
 
@@ -365,15 +375,6 @@ def _tex(value) -> str:
         base = s.name[:-3] if s.name.endswith("bar") and len(s.name) > 3 else None
         names[s] = rf"\bar{{{tex_name(base) or base}}}" if base else tex_name(s.name) or s.name
     return sp.latex(value, symbol_names=names)
-
-
-def _admits_some(domain: Domain, symbols, seed: str) -> bool:
-    """Whether a simple point or one of :data:`_RANDOM_POINTS` seeded random points of *domain* meets its
-    constraints (``h < r < h`` meets none, and every sample would be passed over)."""
-    if any(True for _ in itertools.islice(_simple_points(symbols, domain), 1)):
-        return True
-    draw = domain.sampler(seed)
-    return any(domain.admits(draw(symbols)) for _ in range(_RANDOM_POINTS))
 
 
 def _counterexample(a, b, la, lb, domain, seed: str):
@@ -466,8 +467,7 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
     rows = _reading(printed, "the printed formula", integrals=True).rows
     if len(rows) != 1:
         raise InputError("check one printed formula at a time")
-    bound = sorted({v.name for m in rows[0][0] if m is not None for i in m.atoms(sp.Integral) for v in i.variables}
-                   & {s.name for s in defined})
+    bound = _integrated(rows[0][0], defined)
     if bound:
         raise InputError(f"the printed formula integrates over {', '.join(bound)}, which --against defines")
     unused = _unused(given, rows[0])
@@ -485,7 +485,7 @@ def check(printed: str, against, *, where: str = "", domain: dict | None = None,
         raise InputError(f"--domain gives {', '.join(named)} an interval, which --against defines: the symbols its "
                          "definition uses are sampled")
     space = _domain(symbols, domain or {}, constraints)
-    if constraints and not _admits_some(space, sorted(symbols, key=lambda s: s.name), printed):
+    if constraints and next(_tried_points(sorted(symbols, key=lambda s: s.name), space, printed), None) is None:
         raise InputError(f"--where admits no point of {_RANDOM_POINTS} drawn from the domain: {quoted(where, 60)}")
     roundings = _roundings(printed, rows[0][0], target)
     r, link = _decide(links, space, printed, roundings=roundings)

@@ -5,6 +5,7 @@ import json
 import math
 import re
 import unicodedata
+from collections import Counter
 
 import mpmath
 import numpy as np
@@ -159,10 +160,7 @@ def scene_table(record) -> str:
 def _evaluated(ids) -> str:
     """How many derivations a scene evaluated, by the source each reads, the most first (``7 (5 of Scheeffer 1902,
     1 of ...)``); the record keeps their ids."""
-    by_source: dict[str, int] = {}
-    for d in ids:
-        by_source[source_of(d)] = by_source.get(source_of(d), 0) + 1
-    ranked = sorted(by_source.items(), key=lambda item: -item[1])          # stable: ties in the record's order
+    ranked = Counter(source_of(d) for d in ids).most_common()         # ties in the record's order
     return f"{len(ids)} ({', '.join(f'{n} of {s}' for s, n in ranked)})" if ids else "none"
 
 
